@@ -1,0 +1,18 @@
+# Turn Lua source files into a C table {name, text, length} so the binaries need no search path.
+# Called as: cmake -DOUT=file.c -DSYMBOL=name -DFILES="a.lua;b.lua" -P embed.cmake
+set(body "#include <stddef.h>\n#include \"pcl_embed.h\"\n")
+set(entries "")
+set(i 0)
+list(SORT FILES)
+foreach(f ${FILES})
+  get_filename_component(name ${f} NAME_WE)
+  file(READ ${f} hex HEX)
+  file(SIZE ${f} size)
+  string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," hex "${hex}")
+  string(APPEND body "static const char chunk${i}[] = {${hex}0};\n")
+  string(APPEND entries "  {\"${name}\", chunk${i}, ${size}},\n")
+  math(EXPR i "${i}+1")
+endforeach()
+string(APPEND body "const pc_chunk ${SYMBOL}[] = {\n${entries}  {NULL, NULL, 0}\n};\n")
+file(WRITE ${OUT}.tmp "${body}")
+file(RENAME ${OUT}.tmp ${OUT})

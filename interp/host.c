@@ -1,0 +1,163 @@
+/* The Lua state of the host: standard libraries, pointcalc in globals, tracebacks, loading of
+ * Lua and QBasic scripts. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <lauxlib.h>
+#include <lualib.h>
+#include "host.h"
+#include "pcl.h"
+#include "pcl_embed.h"
+
+int luaopen_pointcalc(lua_State *L);
+
+const char *host_progname = "pointcalc";
+
+static int load_embedded(lua_State *L) {
+    const pc_chunk *ch = lua_touserdata(L, lua_upvalueindex(1));
+    char chunkname[96];
+    snprintf(chunkname, sizeof chunkname, "=[pointcalc/%s.lua]", ch->name);
+    if (luaL_loadbuffer(L, ch->text, ch->len, chunkname) != LUA_OK) return lua_error(L);
+    lua_pushvalue(L, 1);
+    lua_call(L, 1, 1);
+    return 1;
+}
+
+lua_State *host_new_state(void) {
+    lua_State *L = luaL_newstate();
+    if (!L) return NULL;
+    /* scripts make many short-lived points: the generational collector suits them */
+    lua_gc(L, LUA_GCGEN, 0, 0);
+    luaL_openlibs(L);
+
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, LUA_PRELOAD_TABLE);
+    lua_pushcfunction(L, luaopen_pointcalc);
+    lua_setfield(L, -2, "pointcalc");
+    for (const pc_chunk *ch = pc_interp_chunks; ch->name; ch++) {
+        lua_pushlightuserdata(L, (void *)ch);
+        lua_pushcclosure(L, load_embedded, 1);
+        lua_setfield(L, -2, ch->name);
+    }
+    lua_pop(L, 1);
+
+    /* require "pointcalc" and copy every field into the globals */
+    lua_getglobal(L, "require");
+    lua_pushliteral(L, "pointcalc");
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+        fprintf(stderr, "%s: %s\n", host_progname, lua_tostring(L, -1));
+        lua_close(L);
+        return NULL;
+    }
+    lua_pushglobaltable(L);
+    lua_pushnil(L);
+    while (lua_next(L, -3)) {
+        lua_pushvalue(L, -2);
+        lua_insert(L, -2);
+        lua_settable(L, -4);
+    }
+    lua_pop(L, 1);
+    lua_setglobal(L, "pointcalc");
+    return L;
+}
+
+static int traceback(lua_State *L) {
+    const char *msg = lua_tostring(L, 1);
+    if (msg == NULL) {
+        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
+        msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+    }
+    luaL_traceback(L, L, msg, 1);
+    return 1;
+}
+
+int host_pcall(lua_State *L, int nargs) {
+    int base = lua_gettop(L) - nargs;
+    lua_pushcfunction(L, traceback);
+    lua_insert(L, base);
+    int status = lua_pcall(L, nargs, 0, base);
+    lua_remove(L, base);
+    if (status != LUA_OK) {
+        fprintf(stderr, "%s\n", lua_tostring(L, -1));
+        lua_pop(L, 1);
+        return 0;
+    }
+    return 1;
+}
+
+/* Read a whole file ("-" is standard input) into a Lua string on the stack. */
+static int push_file(lua_State *L, const char *path) {
+    FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
+    if (!f) {
+        fprintf(stderr, "%s: cannot open '%s': %s\n", host_progname, path, strerror(errno));
+        return 0;
+    }
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    char buf[8192];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) luaL_addlstring(&b, buf, n);
+    int bad = ferror(f);
+    if (f != stdin) fclose(f);
+    luaL_pushresult(&b);
+    if (bad) {
+        fprintf(stderr, "%s: cannot read '%s'\n", host_progname, path);
+        lua_pop(L, 1);
+        return 0;
+    }
+    return 1;
+}
+
+/* Translate the QBasic source on top of the stack; replaces it by the Lua text. */
+static int translate_qbasic(lua_State *L, const char *path) {
+    lua_getglobal(L, "require");
+    lua_pushliteral(L, "qbasic");
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+        fprintf(stderr, "%s: the QBasic front end failed to load: %s\n", host_progname,
+                lua_tostring(L, -1));
+        return 0;
+    }
+    lua_getfield(L, -1, "translate");
+    lua_pushvalue(L, -3);
+    lua_pushstring(L, strcmp(path, "-") ? path : "stdin");
+    if (lua_pcall(L, 2, 2, 0) != LUA_OK || lua_isnil(L, -2)) {
+        fprintf(stderr, "%s\n", lua_tostring(L, -1));
+        return 0;
+    }
+    lua_pop(L, 1);         /* second result */
+    lua_replace(L, -3);    /* Lua text over the source */
+    lua_pop(L, 1);         /* the qbasic module */
+    return 1;
+}
+
+int host_load_script(lua_State *L, const char *path, int qbasic) {
+    if (!push_file(L, path)) return 0;
+    if (qbasic && !translate_qbasic(L, path)) return 0;
+    size_t len;
+    const char *text = lua_tolstring(L, -1, &len);
+    if (!qbasic && len > 0 && text[0] == '#') {   /* skip a #! line, keeping line numbers */
+        size_t i = 0;
+        while (i < len && text[i] != '\n') i++;
+        text += i;
+        len -= i;
+    }
+    const char *chunkname = lua_pushfstring(L, "@%s", strcmp(path, "-") ? path : "stdin");
+    int status = luaL_loadbuffer(L, text, len, chunkname);
+    lua_remove(L, -2);     /* chunk name */
+    lua_remove(L, -2);     /* source text */
+    if (status != LUA_OK) {
+        fprintf(stderr, "%s\n", lua_tostring(L, -1));
+        lua_pop(L, 1);
+        return 0;
+    }
+    return 1;
+}
+
+int host_emit_lua(lua_State *L, const char *path) {
+    if (!push_file(L, path) || !translate_qbasic(L, path)) return 0;
+    size_t len;
+    const char *text = lua_tolstring(L, -1, &len);
+    fwrite(text, 1, len, stdout);
+    lua_pop(L, 1);
+    return 1;
+}

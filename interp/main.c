@@ -1,0 +1,206 @@
+/* pointcalc: run geometry scripts (Lua or QBasic), write the canvas, or explore in the REPL.
+ *
+ * Exit status: 0 success, 1 script error, 2 usage error. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <lauxlib.h>
+#include "host.h"
+#include "pcl.h"
+
+#define MAX_OUTPUTS 32
+#define MAX_CHUNKS 32
+
+static const char usage_text[] =
+    "usage: pointcalc [options] [script [args...]]\n"
+    "  script        a Lua script, or a QBasic program (.bas); '-' reads standard input\n"
+    "  -e CODE       run CODE (repeatable, before the script)\n"
+    "  -i            enter the interactive REPL after running the script\n"
+    "  -o FILE       write the canvas to FILE when done: .png, .svg or .ppm (repeatable)\n"
+    "  --paper       print theme for written files: white paper, dark ink\n"
+    "  --qbasic      treat the script as QBasic whatever its extension\n"
+    "  --emit-lua    print the Lua translation of a QBasic program and exit\n"
+    "  -v            print the version and exit\n"
+    "  -h, --help    print this help and exit\n"
+    "  --            end of options: everything after the script goes to it in `arg`\n"
+    "Options -o and --paper may also follow the script; other arguments there reach the\n"
+    "script in `arg`. With no script and a terminal on standard input, the REPL starts.\n"
+    "A script that draws but saves nothing writes SCRIPT.png in the current directory.\n";
+
+typedef struct {
+    const char *chunks[MAX_CHUNKS];
+    int nchunks;
+    const char *outputs[MAX_OUTPUTS];
+    int noutputs;
+    const char *script;
+    int script_index;      /* argv index of the script */
+    int interactive, paper, qbasic, emit_lua;
+} options;
+
+static int usage_error(const char *fmt, const char *what) {
+    fprintf(stderr, "%s: ", host_progname);
+    fprintf(stderr, fmt, what);
+    fprintf(stderr, "\ntry 'pointcalc -h' for help\n");
+    return 2;
+}
+
+static int ends_with(const char *s, const char *suffix) {
+    size_t n = strlen(s), m = strlen(suffix);
+    return n >= m && strcasecmp(s + n - m, suffix) == 0;
+}
+
+static int add_output(options *o, const char *path) {
+    if (!path) return usage_error("%s", "option -o needs a file name");
+    if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
+        return usage_error("cannot write '%s': the extension must be .png, .svg or .ppm", path);
+    if (o->noutputs == MAX_OUTPUTS) return usage_error("%s", "too many -o options");
+    o->outputs[o->noutputs++] = path;
+    return 0;
+}
+
+/* Returns -1 to go on, or an exit status. Script arguments are left in argv from script_index. */
+static int parse(int argc, char **argv, options *o) {
+    int i = 1;
+    for (; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--")) { i++; break; }
+        if (a[0] != '-' || !strcmp(a, "-")) break;
+        if (!strcmp(a, "-e")) {
+            if (++i == argc) return usage_error("%s", "option -e needs a chunk of code");
+            if (o->nchunks == MAX_CHUNKS) return usage_error("%s", "too many -e options");
+            o->chunks[o->nchunks++] = argv[i];
+        } else if (!strcmp(a, "-o")) {
+            int rc = add_output(o, i + 1 < argc ? argv[++i] : NULL);
+            if (rc) return rc;
+        } else if (!strcmp(a, "-i")) o->interactive = 1;
+        else if (!strcmp(a, "--paper")) o->paper = 1;
+        else if (!strcmp(a, "--qbasic")) o->qbasic = 1;
+        else if (!strcmp(a, "--emit-lua")) o->emit_lua = 1;
+        else if (!strcmp(a, "-v") || !strcmp(a, "--version")) {
+            printf("pointcalc %s (%s)\n", PCL_VERSION, LUA_RELEASE);
+            return 0;
+        } else if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            fputs(usage_text, stdout);
+            return 0;
+        } else return usage_error("unknown option '%s'", a);
+    }
+    if (i < argc) {
+        o->script = argv[i];
+        o->script_index = i;
+        /* -o and --paper after the script still belong to pointcalc, up to a "--" */
+        int out = i + 1;
+        for (int j = i + 1; j < argc; j++) {
+            if (!strcmp(argv[j], "--")) {
+                while (++j < argc) argv[out++] = argv[j];
+                break;
+            }
+            if (!strcmp(argv[j], "-o")) {
+                int rc = add_output(o, j + 1 < argc ? argv[++j] : NULL);
+                if (rc) return rc;
+            } else if (!strcmp(argv[j], "--paper")) o->paper = 1;
+            else argv[out++] = argv[j];
+        }
+        argv[out] = NULL;
+    }
+    if (o->script && (ends_with(o->script, ".bas"))) o->qbasic = 1;
+    if (o->emit_lua && !o->script) return usage_error("%s", "--emit-lua needs a QBasic program");
+    return -1;
+}
+
+/* The global `arg`, as lua.c builds it: arg[0] the script, arg[1..] its arguments. */
+static void set_arg(lua_State *L, char **argv, int script_index) {
+    int n = 0;
+    while (argv[script_index + n + 1]) n++;
+    lua_createtable(L, n, script_index + 1);
+    for (int i = 0; argv[i]; i++) {
+        lua_pushstring(L, argv[i]);
+        lua_rawseti(L, -2, i - script_index);
+    }
+    lua_setglobal(L, "arg");
+}
+
+static void push_script_args(lua_State *L, char **argv, int script_index, int *n) {
+    *n = 0;
+    for (int i = script_index + 1; argv[i]; i++, (*n)++) lua_pushstring(L, argv[i]);
+}
+
+/* The default output: the script's base name with .png, in the current directory. */
+static void default_output(const options *o, char *buf, size_t len) {
+    const char *name = "pointcalc";
+    if (o->script) name = strcmp(o->script, "-") ? o->script : "stdin";
+    const char *base = strrchr(name, '/');
+    base = base ? base + 1 : name;
+    const char *dot = strrchr(base, '.');
+    int n = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
+    snprintf(buf, len, "%.*s.png", n, base);
+}
+
+static int write_outputs(lua_State *L, const options *o, int repl_ran) {
+    pc_canvas *c = pcl_canvas(L);
+    pc_theme theme = pcl_theme(L);
+    char err[512];
+    int ok = 1;
+    for (int i = 0; i < o->noutputs; i++) {
+        if (pc_write_file(c, o->outputs[i], theme, err, sizeof err) != PC_DRAW_OK) {
+            fprintf(stderr, "%s: %s\n", host_progname, err);
+            ok = 0;
+        }
+    }
+    if (o->noutputs == 0 && c->dirty && !repl_ran) {
+        char path[512];
+        default_output(o, path, sizeof path);
+        if (pc_write_file(c, path, theme, err, sizeof err) != PC_DRAW_OK) {
+            fprintf(stderr, "%s: %s\n", host_progname, err);
+            ok = 0;
+        } else {
+            fprintf(stderr, "%s: wrote %s (the script drew but saved nothing; use -o to choose)\n",
+                    host_progname, path);
+        }
+    }
+    return ok;
+}
+
+int main(int argc, char **argv) {
+    options o = {0};
+    int rc = parse(argc, argv, &o);
+    if (rc >= 0) return rc;
+
+    lua_State *L = host_new_state();
+    if (!L) return 1;
+    if (o.paper) pcl_set_theme(L, PC_THEME_PAPER);
+
+    if (o.emit_lua) {
+        int ok = host_emit_lua(L, o.script);
+        lua_close(L);
+        return ok ? 0 : 1;
+    }
+
+    int ok = 1;
+    if (o.script) set_arg(L, argv, o.script_index);
+    for (int i = 0; ok && i < o.nchunks; i++) {
+        if (luaL_loadbuffer(L, o.chunks[i], strlen(o.chunks[i]), "=(command line)") != LUA_OK) {
+            fprintf(stderr, "%s\n", lua_tostring(L, -1));
+            lua_pop(L, 1);
+            ok = 0;
+        } else ok = host_pcall(L, 0);
+    }
+    int ran_something = o.nchunks > 0;
+    if (ok && o.script) {
+        ok = host_load_script(L, o.script, o.qbasic);
+        if (ok) {
+            int n;
+            push_script_args(L, argv, o.script_index, &n);
+            ok = host_pcall(L, n);
+        }
+        ran_something = 1;
+    } else if (ok && !ran_something && !isatty(STDIN_FILENO)) {
+        ok = host_load_script(L, "-", o.qbasic) && host_pcall(L, 0);   /* like lua: read stdin */
+        ran_something = 1;
+    }
+    int repl = ok && (o.interactive || !ran_something);
+    if (repl) host_repl(L);
+    if (ok) ok = write_outputs(L, &o, repl);
+    lua_close(L);
+    return ok ? 0 : 1;
+}

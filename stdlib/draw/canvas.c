@@ -1,0 +1,298 @@
+/* Canvas state: allocation, SCREEN modes, palettes, WINDOW/VIEW mapping and the display list.
+ * The rasterising statements themselves are in raster.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "canvas.h"
+#include "canvas_internal.h"
+
+/* VGA DAC values are 6-bit; widen them the way VGA hardware and emulators do. */
+static uint8_t dac8(int v) { return (uint8_t)((v << 2) | (v >> 4)); }
+
+static pc_rgb dac(int r, int g, int b) { return (pc_rgb){dac8(r), dac8(g), dac8(b)}; }
+
+/* The 16 EGA/VGA text colours (6-bit DAC levels 0, 21, 42, 63; brown is 42,21,0). */
+static const uint8_t ega16[16][3] = {
+    {0, 0, 0},    {0, 0, 42},   {0, 42, 0},   {0, 42, 42},  {42, 0, 0},   {42, 0, 42},
+    {42, 21, 0},  {42, 42, 42}, {21, 21, 21}, {21, 21, 63}, {21, 63, 21}, {21, 63, 63},
+    {63, 21, 21}, {63, 21, 63}, {63, 63, 21}, {63, 63, 63}};
+
+/* The default mode-13h palette: 16 EGA colours, 16 greys, then 3 intensities x 3 saturations
+ * of a 24-step hue wheel (blue, magenta, red, yellow, green, cyan and back), then 8 blacks. */
+static void vga256(pc_rgb *pal) {
+    static const int greys[16] = {0, 5, 8, 11, 14, 17, 20, 24, 28, 32, 36, 40, 45, 50, 56, 63};
+    /* per intensity and saturation: the five levels from "off" to "full" */
+    static const int levels[3][3][5] = {
+        {{0, 16, 31, 47, 63}, {31, 39, 47, 55, 63}, {45, 49, 54, 58, 63}},
+        {{0, 7, 14, 21, 28}, {14, 17, 21, 24, 28}, {20, 22, 24, 26, 28}},
+        {{0, 4, 8, 12, 16}, {8, 10, 12, 14, 16}, {11, 12, 13, 15, 16}}};
+    for (int i = 0; i < 16; i++) pal[i] = dac(ega16[i][0], ega16[i][1], ega16[i][2]);
+    for (int i = 0; i < 16; i++) pal[16 + i] = dac(greys[i], greys[i], greys[i]);
+    int k = 32;
+    for (int in = 0; in < 3; in++)
+        for (int sat = 0; sat < 3; sat++) {
+            const int *l = levels[in][sat];
+            /* hue wheel: each channel ramps up, holds, ramps down over 24 steps */
+            for (int h = 0; h < 24; h++) {
+                int r, g, b;
+                if (h < 4)       { r = l[h];      g = l[0];      b = l[4]; }
+                else if (h < 8)  { r = l[4];      g = l[0];      b = l[8 - h]; }
+                else if (h < 12) { r = l[4];      g = l[h - 8];  b = l[0]; }
+                else if (h < 16) { r = l[16 - h]; g = l[4];      b = l[0]; }
+                else if (h < 20) { r = l[0];      g = l[4];      b = l[h - 16]; }
+                else             { r = l[0];      g = l[24 - h]; b = l[4]; }
+                pal[k++] = dac(r, g, b);
+            }
+        }
+    while (k < 256) pal[k++] = dac(0, 0, 0);
+}
+
+void pc_palette_default(pc_rgb *pal, int ncolors) {
+    memset(pal, 0, 256 * sizeof *pal);
+    if (ncolors > 16) {
+        vga256(pal);
+        return;
+    }
+    for (int i = 0; i < 16; i++) pal[i] = dac(ega16[i][0], ega16[i][1], ega16[i][2]);
+}
+
+int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        return pc_fail(c, "screen size %dx%d out of range 1..16384", width, height);
+    if (ncolors != 2 && ncolors != 16 && ncolors != 256)
+        return pc_fail(c, "number of colours must be 2, 16 or 256, got %d", ncolors);
+    uint8_t *px = calloc((size_t)width * height, 1);
+    if (!px) return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for a %dx%d screen", width, height);
+    free(c->pixels);
+    c->pixels = px;
+    c->width = width;
+    c->height = height;
+    c->ncolors = ncolors;
+    pc_palette_default(c->palette, ncolors);
+    c->fg = ncolors - 1 < 15 ? ncolors - 1 : 15;
+    c->bg = 0;
+    c->has_window = c->window_screen = 0;
+    c->view = (pc_rect){0, 0, width - 1, height - 1};
+    c->view_screen = 0;
+    c->nops = c->nspans = c->nclips = 0;
+    c->dirty = 0;
+    c->error[0] = 0;
+    if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+    pc_reset_cursor(c);
+    return PC_DRAW_OK;
+}
+
+pc_canvas *pc_canvas_new(int width, int height, int ncolors) {
+    pc_canvas *c = calloc(1, sizeof *c);
+    if (!c) return NULL;
+    if (pc_canvas_reset(c, width, height, ncolors) != PC_DRAW_OK) {
+        pc_canvas_free(c);
+        return NULL;
+    }
+    return c;
+}
+
+pc_canvas *pc_canvas_new_mode(int mode) {
+    switch (mode) {
+    case 12: return pc_canvas_new(640, 480, 16);
+    case 13: return pc_canvas_new(320, 200, 256);
+    default: return NULL;
+    }
+}
+
+void pc_canvas_free(pc_canvas *c) {
+    if (!c) return;
+    free(c->pixels);
+    free(c->ops);
+    free(c->spans);
+    free(c->clips);
+    free(c);
+}
+
+/* ---- errors ------------------------------------------------------------------------------ */
+
+int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->error, sizeof c->error, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+int pc_check_color(pc_canvas *c, int *color, int dflt) {
+    if (*color < 0) *color = dflt;
+    if (*color >= c->ncolors)
+        return pc_fail(c, "colour %d out of range 0..%d", *color, c->ncolors - 1);
+    return PC_DRAW_OK;
+}
+
+/* ---- the display list -------------------------------------------------------------------- */
+
+static int grow(void **buf, size_t *cap, size_t need, size_t elem) {
+    if (need <= *cap) return 1;
+    size_t n = *cap ? *cap * 2 : 256;
+    while (n < need) n *= 2;
+    void *p = realloc(*buf, n * elem);
+    if (!p) return 0;
+    *buf = p;
+    *cap = n;
+    return 1;
+}
+
+pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
+    if (!grow((void **)&c->ops, &c->capops, c->nops + 1, sizeof *c->ops)) {
+        pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for the display list");
+        return NULL;
+    }
+    pc_op *op = &c->ops[c->nops++];
+    memset(op, 0, sizeof *op);
+    op->kind = kind;
+    op->color = (uint8_t)color;
+    op->clip = (uint16_t)(c->nclips - 1);
+    if (kind != PC_OP_CLEAR) c->dirty = 1;
+    return op;
+}
+
+int pc_push_span(pc_canvas *c, int y, int x0, int x1) {
+    if (!grow((void **)&c->spans, &c->capspans, c->nspans + 1, sizeof *c->spans))
+        return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for a painted region");
+    c->spans[c->nspans++] = (pc_span){(int16_t)y, (int16_t)x0, (int16_t)x1};
+    return PC_DRAW_OK;
+}
+
+int pc_push_clip(pc_canvas *c) {
+    if (c->nclips && memcmp(&c->clips[c->nclips - 1], &c->view, sizeof c->view) == 0)
+        return PC_DRAW_OK;
+    if (c->nclips >= 65535 ||
+        !grow((void **)&c->clips, &c->capclips, c->nclips + 1, sizeof *c->clips))
+        return pc_fail_code(c, PC_DRAW_ENOMEM, "too many VIEW changes");
+    c->clips[c->nclips++] = c->view;
+    return PC_DRAW_OK;
+}
+
+/* ---- WINDOW and VIEW ------------------------------------------------------------------- */
+
+/* QBasic puts the graphics cursor at the centre of the view after SCREEN, VIEW and WINDOW. */
+void pc_reset_cursor(pc_canvas *c) {
+    double sx = (c->view.x0 + c->view.x1) / 2.0, sy = (c->view.y0 + c->view.y1) / 2.0;
+    pc_screen_to_world(c, sx, sy, &c->last_x, &c->last_y);
+}
+
+void pc_world_to_screen(const pc_canvas *c, double wx, double wy, double *sx, double *sy) {
+    const pc_rect *v = &c->view;
+    if (c->has_window) {
+        *sx = v->x0 + (wx - c->wx1) * (v->x1 - v->x0) / (c->wx2 - c->wx1);
+        if (c->window_screen)
+            *sy = v->y0 + (wy - c->wy1) * (v->y1 - v->y0) / (c->wy2 - c->wy1);
+        else
+            *sy = v->y0 + (c->wy2 - wy) * (v->y1 - v->y0) / (c->wy2 - c->wy1);
+    } else if (c->view_screen) {
+        *sx = wx;
+        *sy = wy;
+    } else {
+        *sx = wx + v->x0;
+        *sy = wy + v->y0;
+    }
+}
+
+void pc_screen_to_world(const pc_canvas *c, double sx, double sy, double *wx, double *wy) {
+    const pc_rect *v = &c->view;
+    if (c->has_window) {
+        double w = v->x1 - v->x0, h = v->y1 - v->y0;
+        *wx = c->wx1 + (w ? (sx - v->x0) * (c->wx2 - c->wx1) / w : 0);
+        if (c->window_screen)
+            *wy = c->wy1 + (h ? (sy - v->y0) * (c->wy2 - c->wy1) / h : 0);
+        else
+            *wy = c->wy2 - (h ? (sy - v->y0) * (c->wy2 - c->wy1) / h : 0);
+    } else if (c->view_screen) {
+        *wx = sx;
+        *wy = sy;
+    } else {
+        *wx = sx - v->x0;
+        *wy = sy - v->y0;
+    }
+}
+
+double pc_world_xscale(const pc_canvas *c) {
+    if (!c->has_window) return 1.0;
+    return fabs((c->view.x1 - c->view.x0) / (c->wx2 - c->wx1));
+}
+
+int pc_window(pc_canvas *c, double x1, double y1, double x2, double y2, int screen) {
+    if (!(isfinite(x1) && isfinite(y1) && isfinite(x2) && isfinite(y2)))
+        return pc_fail(c, "window corners must be finite numbers");
+    if (x1 == x2 || y1 == y2)
+        return pc_fail(c, "window (%g, %g)-(%g, %g) has zero width or height", x1, y1, x2, y2);
+    /* QBasic orders the corners: the smaller x is left, the smaller y is bottom (top with SCREEN) */
+    c->wx1 = fmin(x1, x2);
+    c->wx2 = fmax(x1, x2);
+    c->wy1 = fmin(y1, y2);
+    c->wy2 = fmax(y1, y2);
+    c->has_window = 1;
+    c->window_screen = screen != 0;
+    pc_reset_cursor(c);
+    return PC_DRAW_OK;
+}
+
+void pc_window_reset(pc_canvas *c) {
+    c->has_window = 0;
+    pc_reset_cursor(c);
+}
+
+int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, int screen) {
+    pc_rect r = {x1 < x2 ? x1 : x2, y1 < y2 ? y1 : y2, x1 < x2 ? x2 : x1, y1 < y2 ? y2 : y1};
+    if (r.x0 < 0 || r.y0 < 0 || r.x1 >= c->width || r.y1 >= c->height)
+        return pc_fail(c, "view (%d, %d)-(%d, %d) is not inside the %dx%d screen", x1, y1, x2, y2,
+                       c->width, c->height);
+    if (fill >= c->ncolors || border >= c->ncolors)
+        return pc_fail(c, "view colour out of range 0..%d", c->ncolors - 1);
+    if (border >= 0) {
+        /* the border is drawn just outside the viewport, where there is room */
+        pc_rect full = {0, 0, c->width - 1, c->height - 1};
+        c->view = full;
+        if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+        int ok = pc_box_screen(c, r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1, border, 0);
+        if (ok != PC_DRAW_OK) return ok;
+    }
+    c->view = r;
+    c->view_screen = screen != 0;
+    if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+    if (fill >= 0) {
+        int ok = pc_fill_view(c, fill);
+        if (ok != PC_DRAW_OK) return ok;
+    }
+    pc_reset_cursor(c);
+    return PC_DRAW_OK;
+}
+
+void pc_view_reset(pc_canvas *c) {
+    c->view = (pc_rect){0, 0, c->width - 1, c->height - 1};
+    c->view_screen = 0;
+    pc_push_clip(c);
+    pc_reset_cursor(c);
+}
+
+/* ---- colours ------------------------------------------------------------------------------ */
+
+int pc_color(pc_canvas *c, int fg, int bg) {
+    if (fg < 0 || fg >= c->ncolors)
+        return pc_fail(c, "foreground colour %d out of range 0..%d", fg, c->ncolors - 1);
+    if (bg >= c->ncolors)
+        return pc_fail(c, "background colour %d out of range 0..%d", bg, c->ncolors - 1);
+    c->fg = fg;
+    if (bg >= 0) c->bg = bg;
+    return PC_DRAW_OK;
+}
+
+int pc_palette(pc_canvas *c, int attr, pc_rgb rgb) {
+    if (attr < 0 || attr >= c->ncolors)
+        return pc_fail(c, "palette attribute %d out of range 0..%d", attr, c->ncolors - 1);
+    c->palette[attr] = rgb;
+    return PC_DRAW_OK;
+}
+
+int pc_palette_reset(pc_canvas *c) {
+    pc_palette_default(c->palette, c->ncolors);
+    return PC_DRAW_OK;
+}

@@ -1,0 +1,24 @@
+/* Shared between the canvas files; not part of the public API. */
+#ifndef PC_CANVAS_INTERNAL_H
+#define PC_CANVAS_INTERNAL_H
+
+#include <stdarg.h>
+#include "canvas.h"
+
+int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+#define pc_fail(c, ...) pc_fail_code((c), PC_DRAW_EARG, __VA_ARGS__)
+
+/* Resolve a colour argument: <0 means dflt; out of range is an error. */
+int pc_check_color(pc_canvas *c, int *color, int dflt);
+
+pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color);
+int pc_push_span(pc_canvas *c, int y, int x0, int x1);
+int pc_push_clip(pc_canvas *c);
+void pc_reset_cursor(pc_canvas *c);
+
+/* Screen-pixel primitives used by VIEW's border and fill and by CLS. */
+int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int filled);
+int pc_fill_view(pc_canvas *c, int color);
+
+#endif

@@ -1,0 +1,377 @@
+/* The QBasic drawing statements: each rasterises into the pixel array at once and records one
+ * display-list operation.  Coordinates are world coordinates (see canvas.c for WINDOW/VIEW);
+ * pixels are the nearest integers (ties to even, as the x87 FPU rounds), clipped silently to
+ * the view. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "canvas.h"
+#include "canvas_internal.h"
+
+#define TWO_PI 6.283185307179586
+
+/* Far-away coordinates are clamped before conversion: the result is off screen either way and
+ * the conversion to int stays defined. */
+static long px(double v) {
+    if (v > 1e9) v = 1e9;
+    if (v < -1e9) v = -1e9;
+    return lrint(v);
+}
+
+static int finite2(double x, double y) { return isfinite(x) && isfinite(y); }
+
+static int finite_or_fail(pc_canvas *c, const char *stmt, double x, double y) {
+    if (finite2(x, y)) return PC_DRAW_OK;
+    return pc_fail(c, "%s: coordinates must be finite numbers, got (%g, %g)", stmt, x, y);
+}
+
+void pc_plot(pc_canvas *c, int x, int y, int color) {
+    const pc_rect *v = &c->view;
+    if (x < v->x0 || x > v->x1 || y < v->y0 || y > v->y1) return;
+    c->pixels[(size_t)y * c->width + x] = (uint8_t)color;
+}
+
+static void set_cursor(pc_canvas *c, double wx, double wy) {
+    c->last_x = wx;
+    c->last_y = wy;
+}
+
+/* ---- PSET, PRESET, POINT -------------------------------------------------------------- */
+
+static int dot(pc_canvas *c, double x, double y, int color, int dflt) {
+    int ok = pc_check_color(c, &color, dflt);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "pset", x, y);
+    if (ok != PC_DRAW_OK) return ok;
+    double sx, sy;
+    pc_world_to_screen(c, x, y, &sx, &sy);
+    pc_plot(c, (int)px(sx), (int)px(sy), color);
+    pc_op *op = pc_push_op(c, PC_OP_DOT, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->x1 = (float)sx;
+    op->y1 = (float)sy;
+    set_cursor(c, x, y);
+    return PC_DRAW_OK;
+}
+
+int pc_pset(pc_canvas *c, double x, double y, int color) { return dot(c, x, y, color, c->fg); }
+int pc_preset(pc_canvas *c, double x, double y, int color) { return dot(c, x, y, color, c->bg); }
+
+int pc_point(const pc_canvas *c, double x, double y) {
+    if (!finite2(x, y)) return -1;
+    double sx, sy;
+    pc_world_to_screen(c, x, y, &sx, &sy);
+    long ix = px(sx), iy = px(sy);
+    const pc_rect *v = &c->view;
+    if (ix < v->x0 || ix > v->x1 || iy < v->y0 || iy > v->y1) return -1;
+    return c->pixels[(size_t)iy * c->width + ix];
+}
+
+/* ---- LINE ------------------------------------------------------------------------------ */
+
+/* Clip the segment to the rectangle (Liang-Barsky); 0 if nothing is left. */
+static int clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
+                        double xmax, double ymax) {
+    double t0 = 0, t1 = 1, dx = *x1 - *x0, dy = *y1 - *y0;
+    double p[4] = {-dx, dx, -dy, dy};
+    double q[4] = {*x0 - xmin, xmax - *x0, *y0 - ymin, ymax - *y0};
+    for (int i = 0; i < 4; i++) {
+        if (p[i] == 0) {
+            if (q[i] < 0) return 0;
+        } else {
+            double r = q[i] / p[i];
+            if (p[i] < 0) { if (r > t1) return 0; if (r > t0) t0 = r; }
+            else          { if (r < t0) return 0; if (r < t1) t1 = r; }
+        }
+    }
+    double ox = *x0, oy = *y0;
+    *x0 = ox + t0 * dx; *y0 = oy + t0 * dy;
+    *x1 = ox + t1 * dx; *y1 = oy + t1 * dy;
+    return 1;
+}
+
+/* Bresenham between pixel centres.  The end points are put in a canonical order first, so a
+ * segment covers the same pixels whichever way it is drawn. */
+static void raster_line(pc_canvas *c, long x0, long y0, long x1, long y1, int color) {
+    long dx = labs(x1 - x0), dy = labs(y1 - y0);
+    int steep = dy > dx;
+    if ((steep && y0 > y1) || (!steep && x0 > x1)) {
+        long t = x0; x0 = x1; x1 = t;
+        t = y0; y0 = y1; y1 = t;
+    }
+    long sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+    long err = (steep ? dy : dx) / 2;
+    long n = steep ? dy : dx;
+    for (long i = 0; i <= n; i++) {
+        pc_plot(c, (int)x0, (int)y0, color);
+        if (steep) {
+            y0 += sy;
+            err -= dx;
+            if (err < 0) { x0 += sx; err += dy; }
+        } else {
+            x0 += sx;
+            err -= dy;
+            if (err < 0) { y0 += sy; err += dx; }
+        }
+    }
+}
+
+static void raster_line_f(pc_canvas *c, double x0, double y0, double x1, double y1, int color) {
+    /* segments reaching far off screen are cut first; nearby ones keep their exact pixels */
+    const double far = 32768;
+    if (fabs(x0) > far || fabs(y0) > far || fabs(x1) > far || fabs(y1) > far) {
+        if (!clip_segment(&x0, &y0, &x1, &y1, -4.0, -4.0, c->width + 4.0, c->height + 4.0))
+            return;
+    }
+    raster_line(c, px(x0), px(y0), px(x1), px(y1), color);
+}
+
+int pc_line(pc_canvas *c, double x1, double y1, double x2, double y2, int color) {
+    int ok = pc_check_color(c, &color, c->fg);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x1, y1);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x2, y2);
+    if (ok != PC_DRAW_OK) return ok;
+    double a, b, d, e;
+    pc_world_to_screen(c, x1, y1, &a, &b);
+    pc_world_to_screen(c, x2, y2, &d, &e);
+    raster_line_f(c, a, b, d, e, color);
+    pc_op *op = pc_push_op(c, PC_OP_LINE, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->x1 = (float)a; op->y1 = (float)b; op->x2 = (float)d; op->y2 = (float)e;
+    set_cursor(c, x2, y2);
+    return PC_DRAW_OK;
+}
+
+/* ---- boxes ------------------------------------------------------------------------------ */
+
+static void raster_box(pc_canvas *c, long x0, long y0, long x1, long y1, int color, int filled) {
+    if (x0 > x1) { long t = x0; x0 = x1; x1 = t; }
+    if (y0 > y1) { long t = y0; y0 = y1; y1 = t; }
+    /* only the visible part needs visiting */
+    const pc_rect *v = &c->view;
+    long cx0 = x0 < v->x0 ? v->x0 : x0, cx1 = x1 > v->x1 ? v->x1 : x1;
+    long cy0 = y0 < v->y0 ? v->y0 : y0, cy1 = y1 > v->y1 ? v->y1 : y1;
+    if (cx0 > cx1 || cy0 > cy1) return;
+    for (long y = cy0; y <= cy1; y++) {
+        if (filled || y == y0 || y == y1) {
+            memset(c->pixels + (size_t)y * c->width + cx0, color, (size_t)(cx1 - cx0 + 1));
+        } else {
+            pc_plot(c, (int)x0, (int)y, color);
+            pc_plot(c, (int)x1, (int)y, color);
+        }
+    }
+}
+
+int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int filled) {
+    raster_box(c, x0, y0, x1, y1, color, filled);
+    pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->x1 = (float)x0; op->y1 = (float)y0; op->x2 = (float)x1; op->y2 = (float)y1;
+    return PC_DRAW_OK;
+}
+
+int pc_box(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int filled) {
+    int ok = pc_check_color(c, &color, c->fg);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x1, y1);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x2, y2);
+    if (ok != PC_DRAW_OK) return ok;
+    double a, b, d, e;
+    pc_world_to_screen(c, x1, y1, &a, &b);
+    pc_world_to_screen(c, x2, y2, &d, &e);
+    raster_box(c, px(a), px(b), px(d), px(e), color, filled);
+    pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->x1 = (float)a; op->y1 = (float)b; op->x2 = (float)d; op->y2 = (float)e;
+    set_cursor(c, x2, y2);
+    return PC_DRAW_OK;
+}
+
+int pc_fill_view(pc_canvas *c, int color) {
+    const pc_rect *v = &c->view;
+    raster_box(c, v->x0, v->y0, v->x1, v->y1, color, 1);
+    pc_op *op = pc_push_op(c, PC_OP_CLEAR, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->x1 = (float)v->x0; op->y1 = (float)v->y0; op->x2 = (float)v->x1; op->y2 = (float)v->y1;
+    return PC_DRAW_OK;
+}
+
+/* CLS clears the view to the background colour.  A full-screen CLS also forgets the display
+ * list: nothing drawn before it can show in any output. */
+int pc_cls(pc_canvas *c) {
+    const pc_rect *v = &c->view;
+    if (v->x0 == 0 && v->y0 == 0 && v->x1 == c->width - 1 && v->y1 == c->height - 1) {
+        c->nops = c->nspans = 0;
+        c->nclips = 0;
+        pc_push_clip(c);
+        memset(c->pixels, c->bg, (size_t)c->width * c->height);
+        if (c->bg != 0) {
+            int ok = pc_fill_view(c, c->bg);
+            if (ok != PC_DRAW_OK) return ok;
+        }
+    } else {
+        int ok = pc_fill_view(c, c->bg);
+        if (ok != PC_DRAW_OK) return ok;
+    }
+    pc_reset_cursor(c);
+    return PC_DRAW_OK;
+}
+
+/* ---- CIRCLE ---------------------------------------------------------------------------- */
+
+/* Is the parametric angle th (0..2pi) on the arc from a0 to a1 (counter-clockwise)? */
+static int on_arc(double th, double a0, double a1) {
+    const double eps = 1e-9;
+    if (a0 <= a1) return th >= a0 - eps && th <= a1 + eps;
+    return th >= a0 - eps || th <= a1 + eps;
+}
+
+/* The outline of the ellipse with integer radii: for every column the nearest row and for
+ * every row the nearest column, in all four quadrants, so the outline is closed for any
+ * eccentricity.  Points off the arc (when full == 0) are skipped. */
+static void raster_ellipse(pc_canvas *c, long cx, long cy, long rx, long ry, int color, int full,
+                           double a0, double a1) {
+    if (rx > 100000) rx = 100000;
+    if (ry > 100000) ry = 100000;
+    for (int pass = 0; pass < 2; pass++) {
+        long n = pass ? ry : rx;
+        for (long i = 0; i <= n; i++) {
+            long x, y;
+            if (pass == 0) {
+                x = i;
+                y = rx ? lrint(ry * sqrt(fmax(0.0, 1.0 - (double)(i * i) / ((double)rx * rx)))) : ry;
+            } else {
+                y = i;
+                x = ry ? lrint(rx * sqrt(fmax(0.0, 1.0 - (double)(i * i) / ((double)ry * ry)))) : rx;
+            }
+            for (int q = 0; q < 4; q++) {
+                long dx = (q & 1) ? -x : x, dy = (q & 2) ? -y : y;
+                if (!full) {
+                    double th = atan2(rx ? -(double)dy / ry : -(double)dy, ry ? (double)dx / rx : (double)dx);
+                    if (rx == 0 || ry == 0) th = atan2(-(double)dy, (double)dx);
+                    if (th < 0) th += TWO_PI;
+                    if (!on_arc(th, a0, a1)) continue;
+                }
+                pc_plot(c, (int)(cx + dx), (int)(cy + dy), color);
+            }
+        }
+    }
+}
+
+int pc_circle(pc_canvas *c, double x, double y, double r, int color, double start, double end,
+              double aspect) {
+    int ok = pc_check_color(c, &color, c->fg);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "circle", x, y);
+    if (ok != PC_DRAW_OK) return ok;
+    if (!(r >= 0) || !isfinite(r)) return pc_fail(c, "circle: radius must be a non-negative number, got %g", r);
+    if (!isnan(start) && !(fabs(start) <= TWO_PI + 1e-6))
+        return pc_fail(c, "circle: start angle %g is outside -2*pi..2*pi", start);
+    if (!isnan(end) && !(fabs(end) <= TWO_PI + 1e-6))
+        return pc_fail(c, "circle: end angle %g is outside -2*pi..2*pi", end);
+    if (!isnan(aspect) && !(aspect > 0 && isfinite(aspect)))
+        return pc_fail(c, "circle: aspect must be a positive number, got %g", aspect);
+
+    int full = isnan(start) && isnan(end);
+    int flags = full ? PC_ARC_FULL : 0;
+    double a0 = isnan(start) ? 0 : start, a1 = isnan(end) ? TWO_PI : end;
+    /* a negative angle asks for a radius from the centre to that end of the arc */
+    if (a0 < 0 || (a0 == 0 && signbit(a0))) { flags |= PC_ARC_RADIUS0; a0 = -a0; }
+    if (a1 < 0 || (a1 == 0 && signbit(a1))) { flags |= PC_ARC_RADIUS1; a1 = -a1; }
+    if (a0 >= TWO_PI) a0 = TWO_PI;
+    if (a1 >= TWO_PI) a1 = TWO_PI;
+
+    /* QBasic's aspect rule: below 1 it shrinks the y radius, above 1 the x radius */
+    double rr = r * pc_world_xscale(c), rx = rr, ry = rr;
+    if (!isnan(aspect)) {
+        if (aspect < 1) ry = rr * aspect;
+        else rx = rr / aspect;
+    }
+    double sx, sy;
+    pc_world_to_screen(c, x, y, &sx, &sy);
+    long cx = px(sx), cy = px(sy), irx = px(rx), iry = px(ry);
+    raster_ellipse(c, cx, cy, irx, iry, color, full, a0, a1);
+    if (flags & PC_ARC_RADIUS0)
+        raster_line(c, cx, cy, cx + lrint(irx * cos(a0)), cy - lrint(iry * sin(a0)), color);
+    if (flags & PC_ARC_RADIUS1)
+        raster_line(c, cx, cy, cx + lrint(irx * cos(a1)), cy - lrint(iry * sin(a1)), color);
+
+    pc_op *op = pc_push_op(c, PC_OP_ARC, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->flags = (uint8_t)flags;
+    op->x1 = (float)sx; op->y1 = (float)sy;
+    op->rx = (float)rx; op->ry = (float)ry;
+    op->a0 = (float)a0; op->a1 = (float)a1;
+    set_cursor(c, x, y);
+    return PC_DRAW_OK;
+}
+
+/* ---- PAINT ------------------------------------------------------------------------------ */
+
+typedef struct { int x, y; } seed;
+
+/* Scanline flood fill of the region of non-border pixels connected (4-way) to the start,
+ * inside the view.  Each filled run becomes one span of the display-list operation. */
+int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
+    int ok = pc_check_color(c, &color, c->fg);
+    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "paint", x, y);
+    if (ok != PC_DRAW_OK) return ok;
+    if (border < 0) border = color;
+    if (border >= c->ncolors)
+        return pc_fail(c, "paint: border colour %d out of range 0..%d", border, c->ncolors - 1);
+    set_cursor(c, x, y);
+
+    double fx, fy;
+    pc_world_to_screen(c, x, y, &fx, &fy);
+    long sx = px(fx), sy = px(fy);
+    const pc_rect v = c->view;
+    if (sx < v.x0 || sx > v.x1 || sy < v.y0 || sy > v.y1) return PC_DRAW_OK;
+    const int w = c->width;
+    uint8_t *pix = c->pixels;
+    if (pix[(size_t)sy * w + sx] == border) return PC_DRAW_OK;
+
+    uint8_t *seen = calloc((size_t)w * c->height, 1);
+    size_t cap = 1024, n = 0;
+    seed *stack = malloc(cap * sizeof *stack);
+    if (!seen || !stack) {
+        free(seen);
+        free(stack);
+        return pc_fail_code(c, PC_DRAW_ENOMEM, "paint: out of memory");
+    }
+    uint32_t first = (uint32_t)c->nspans;
+    stack[n++] = (seed){(int)sx, (int)sy};
+#define FILLABLE(X, Y) (!seen[(size_t)(Y) * w + (X)] && pix[(size_t)(Y) * w + (X)] != border)
+    while (n > 0) {
+        seed s = stack[--n];
+        if (!FILLABLE(s.x, s.y)) continue;
+        int xl = s.x, xr = s.x;
+        while (xl > v.x0 && FILLABLE(xl - 1, s.y)) xl--;
+        while (xr < v.x1 && FILLABLE(xr + 1, s.y)) xr++;
+        memset(seen + (size_t)s.y * w + xl, 1, (size_t)(xr - xl + 1));
+        memset(pix + (size_t)s.y * w + xl, color, (size_t)(xr - xl + 1));
+        if (pc_push_span(c, s.y, xl, xr) != PC_DRAW_OK) { ok = PC_DRAW_ENOMEM; break; }
+        for (int dy = -1; dy <= 1; dy += 2) {
+            int yy = s.y + dy;
+            if (yy < v.y0 || yy > v.y1) continue;
+            for (int xx = xl; xx <= xr; xx++) {
+                if (!FILLABLE(xx, yy)) continue;
+                if (n == cap) {
+                    seed *grown = realloc(stack, 2 * cap * sizeof *stack);
+                    if (!grown) { ok = pc_fail_code(c, PC_DRAW_ENOMEM, "paint: out of memory"); goto done; }
+                    stack = grown;
+                    cap *= 2;
+                }
+                stack[n++] = (seed){xx, yy};
+                while (xx < xr && FILLABLE(xx + 1, yy)) xx++;   /* one seed per run */
+            }
+        }
+    }
+#undef FILLABLE
+done:
+    free(seen);
+    free(stack);
+    if (ok != PC_DRAW_OK) return ok;
+    pc_op *op = pc_push_op(c, PC_OP_FILL, color);
+    if (!op) return PC_DRAW_ENOMEM;
+    op->x1 = (float)fx; op->y1 = (float)fy;
+    op->span_first = first;
+    op->span_count = (uint32_t)(c->nspans - first);
+    return PC_DRAW_OK;
+}

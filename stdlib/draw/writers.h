@@ -1,0 +1,29 @@
+/* The three writers: PNG (libpng) and binary PPM render the raster; SVG renders the display
+ * list as vectors.  All write atomically: a temporary file in the target directory, renamed
+ * into place only when complete, so a failed save leaves no file behind. */
+#ifndef PC_WRITERS_H
+#define PC_WRITERS_H
+
+#include <stdio.h>
+#include "canvas.h"
+
+typedef enum { PC_THEME_SCREEN = 0, PC_THEME_PAPER = 1 } pc_theme;
+typedef enum { PC_FMT_UNKNOWN = -1, PC_FMT_PNG, PC_FMT_SVG, PC_FMT_PPM } pc_format;
+
+/* The colours a writer uses: the canvas palette, or its print version (white paper, dark ink). */
+void pc_theme_palette(const pc_canvas *c, pc_theme theme, pc_rgb out[256]);
+
+/* Format from the file name's extension (case-insensitive), PC_FMT_UNKNOWN otherwise. */
+pc_format pc_format_from_path(const char *path);
+
+/* Encode to an open stream.  Return PC_DRAW_OK or PC_DRAW_EIO. */
+int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out);
+int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out);
+int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
+
+/* Write to `path` in the format its extension names, atomically.  On failure returns
+ * PC_DRAW_EIO (or PC_DRAW_EARG for an unknown extension) and puts
+ * "cannot write 'PATH': REASON" into err. */
+int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen);
+
+#endif

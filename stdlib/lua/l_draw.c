@@ -1,0 +1,368 @@
+/* Binding of the QBasic drawing layer (stdlib/draw): screen cls color palette pset preset line
+ * line_to circle paint point window view save last_point.
+ *
+ * The canvas lives in a full userdata that every function holds as its first upvalue (a box
+ * around a pc_canvas pointer, so SCREEN can replace the canvas in place); the registry keeps
+ * it too, for the host.  Coordinate pairs may always be given as one 2-D point. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "pcl.h"
+
+#define CANVAS_KEY "pointcalc.canvas"
+#define THEME_KEY "pointcalc.theme"
+#define CANVAS_MT "pointcalc.Canvas"
+
+typedef struct { pc_canvas *c; } canvas_box;
+
+static pc_canvas *canvas(lua_State *L) {
+    canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
+    return b->c;
+}
+
+pc_canvas *pcl_canvas(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
+    canvas_box *b = lua_touserdata(L, -1);
+    lua_pop(L, 1);
+    return b ? b->c : NULL;
+}
+
+void pcl_set_theme(lua_State *L, pc_theme theme) {
+    lua_pushinteger(L, theme);
+    lua_setfield(L, LUA_REGISTRYINDEX, THEME_KEY);
+}
+
+pc_theme pcl_theme(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, THEME_KEY);
+    pc_theme t = (pc_theme)lua_tointeger(L, -1);
+    lua_pop(L, 1);
+    return t;
+}
+
+/* A core call failed: raise its message as a Lua error at the caller's line. */
+static int check(lua_State *L, pc_canvas *c, int rc) {
+    if (rc == PC_DRAW_OK) return 0;
+    lua_Debug ar;
+    const char *name = "draw";
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
+    /* core messages that already start with the statement's name keep it */
+    size_t n = strlen(name);
+    if (strncmp(c->error, name, n) == 0 && c->error[n] == ':') return luaL_error(L, "%s", c->error);
+    return luaL_error(L, "%s: %s", name, c->error);
+}
+
+/* An optional colour: none/nil means the default (-1 for the core). */
+static int opt_color(lua_State *L, int arg, pc_canvas *c) {
+    if (lua_isnoneornil(L, arg)) return -1;
+    int isint;
+    lua_Integer v = lua_tointegerx(L, arg, &isint);
+    if (!isint || v < 0 || v >= c->ncolors) {
+        char expected[40];
+        snprintf(expected, sizeof expected, "a colour number 0..%d", c->ncolors - 1);
+        return pcl_argerror(L, arg, "colour", expected);
+    }
+    return (int)v;
+}
+
+static double opt_number(lua_State *L, int arg, const char *what, double dflt) {
+    if (lua_isnoneornil(L, arg)) return dflt;
+    int isnum;
+    double v = lua_tonumberx(L, arg, &isnum);
+    if (!isnum) pcl_argerror(L, arg, what, "a number");
+    return v;
+}
+
+/* ---- the statements ---------------------------------------------------------------------- */
+
+static int l_screen(lua_State *L) {
+    canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
+    int w, h, colors = 16;
+    if (lua_istable(L, 1)) {
+        lua_getfield(L, 1, "width");
+        lua_getfield(L, 1, "height");
+        lua_getfield(L, 1, "colors");
+        int okw, okh;
+        w = (int)lua_tointegerx(L, -3, &okw);
+        h = (int)lua_tointegerx(L, -2, &okh);
+        if (!okw || w < 1 || w > 16384) pcl_argerror(L, 1, "width", "an integer 1..16384");
+        if (!okh || h < 1 || h > 16384) pcl_argerror(L, 1, "height", "an integer 1..16384");
+        if (!lua_isnil(L, -1)) {
+            colors = (int)lua_tointeger(L, -1);
+            if (colors != 16 && colors != 256) pcl_argerror(L, 1, "colors", "16 or 256");
+        }
+    } else {
+        int isint;
+        lua_Integer mode = lua_tointegerx(L, 1, &isint);
+        if (!isint || (mode != 12 && mode != 13))
+            return pcl_argerror(L, 1, "mode", "12 (640x480x16), 13 (320x200x256) or {width=, height=}");
+        w = mode == 12 ? 640 : 320;
+        h = mode == 12 ? 480 : 200;
+        colors = mode == 12 ? 16 : 256;
+    }
+    return check(L, b->c, pc_canvas_reset(b->c, w, h, colors));
+}
+
+static int l_cls(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    return check(L, c, pc_cls(c));
+}
+
+static int l_color(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    if (lua_isnoneornil(L, 1) && lua_isnoneornil(L, 2)) {   /* query */
+        lua_pushinteger(L, c->fg);
+        lua_pushinteger(L, c->bg);
+        return 2;
+    }
+    int fg = opt_color(L, 1, c), bg = opt_color(L, 2, c);
+    return check(L, c, pc_color(c, fg < 0 ? c->fg : fg, bg));
+}
+
+/* PALETTE attr, colour: the colour is QBasic's 65536*blue + 256*green + red with 6-bit
+ * components, a "#rrggbb" string, or a table {r, g, b} of 0..255. */
+static pc_rgb check_rgb(lua_State *L, int arg) {
+    if (lua_type(L, arg) == LUA_TSTRING) {
+        unsigned r, g, b;
+        const char *s = lua_tostring(L, arg);
+        if (strlen(s) == 7 && sscanf(s, "#%2x%2x%2x", &r, &g, &b) == 3)
+            return (pc_rgb){(uint8_t)r, (uint8_t)g, (uint8_t)b};
+    } else if (lua_istable(L, arg)) {
+        int v[3];
+        for (int i = 0; i < 3; i++) {
+            lua_geti(L, arg, i + 1);
+            int isint;
+            lua_Integer x = lua_tointegerx(L, -1, &isint);
+            lua_pop(L, 1);
+            if (!isint || x < 0 || x > 255) goto bad;
+            v[i] = (int)x;
+        }
+        return (pc_rgb){(uint8_t)v[0], (uint8_t)v[1], (uint8_t)v[2]};
+    } else {
+        int isint;
+        lua_Integer q = lua_tointegerx(L, arg, &isint);
+        int r = (int)(q & 0xff), g = (int)((q >> 8) & 0xff), b = (int)((q >> 16) & 0xff);
+        if (isint && q >= 0 && q <= 0x3f3f3f && r < 64 && g < 64 && b < 64)
+            return (pc_rgb){(uint8_t)((r << 2) | (r >> 4)), (uint8_t)((g << 2) | (g >> 4)),
+                            (uint8_t)((b << 2) | (b >> 4))};
+    }
+bad:
+    pcl_argerror(L, arg, "colour",
+                 "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}");
+    return (pc_rgb){0, 0, 0};
+}
+
+static int l_palette(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    if (lua_isnone(L, 1)) return check(L, c, pc_palette_reset(c));
+    int isint;
+    lua_Integer attr = lua_tointegerx(L, 1, &isint);
+    if (!isint || attr < 0 || attr >= c->ncolors) {
+        char expected[40];
+        snprintf(expected, sizeof expected, "an attribute 0..%d", c->ncolors - 1);
+        return pcl_argerror(L, 1, "attribute", expected);
+    }
+    return check(L, c, pc_palette(c, (int)attr, check_rgb(L, 2)));
+}
+
+static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
+    pc_canvas *c = canvas(L);
+    int arg = 1;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "");
+    return check(L, c, fn(c, x, y, opt_color(L, arg, c)));
+}
+
+static int l_pset(lua_State *L) { return dot(L, pc_pset); }
+static int l_preset(lua_State *L) { return dot(L, pc_preset); }
+
+/* The style argument of LINE: nil, "b" (box) or "bf" (filled box), any case. */
+static int line_style(lua_State *L, int arg) {
+    if (lua_isnoneornil(L, arg)) return 0;
+    const char *s = lua_tostring(L, arg);
+    if (s && lua_type(L, arg) == LUA_TSTRING) {
+        if (!strcmp(s, "b") || !strcmp(s, "B")) return 1;
+        if (!strcmp(s, "bf") || !strcmp(s, "BF") || !strcmp(s, "Bf") || !strcmp(s, "bF")) return 2;
+    }
+    return pcl_argerror(L, arg, "style", "\"b\" (box) or \"bf\" (filled box)");
+}
+
+static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, int arg) {
+    double x2, y2;
+    pcl_checkxy(L, &arg, &x2, &y2, "end");
+    int color = opt_color(L, arg, c);
+    int style = line_style(L, arg + 1);
+    if (style == 0) return check(L, c, pc_line(c, x1, y1, x2, y2, color));
+    return check(L, c, pc_box(c, x1, y1, x2, y2, color, style == 2));
+}
+
+static int l_line(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    int arg = 1;
+    double x1, y1;
+    pcl_checkxy(L, &arg, &x1, &y1, "start");
+    return draw_line(L, c, x1, y1, arg);
+}
+
+/* LINE -(x, y): from the graphics cursor (the last point referenced). */
+static int l_line_to(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    return draw_line(L, c, c->last_x, c->last_y, 1);
+}
+
+static int l_last_point(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    lua_pushnumber(L, c->last_x);
+    lua_pushnumber(L, c->last_y);
+    return 2;
+}
+
+static int l_circle(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    int arg = 1;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "centre");
+    int isnum;
+    double r = lua_tonumberx(L, arg, &isnum);
+    if (!isnum || !(r >= 0) || !isfinite(r))
+        return pcl_argerror(L, arg, "radius", "a non-negative number");
+    int color = opt_color(L, arg + 1, c);
+    double start = opt_number(L, arg + 2, "start angle", NAN);
+    double end = opt_number(L, arg + 3, "end angle", NAN);
+    double aspect = opt_number(L, arg + 4, "aspect", NAN);
+    if (!isnan(aspect) && !(aspect > 0 && isfinite(aspect)))
+        return pcl_argerror(L, arg + 4, "aspect", "a positive number");
+    if (!isnan(start) && !(fabs(start) <= 2 * M_PI + 1e-6))
+        return pcl_argerror(L, arg + 2, "start angle", "between -2*pi and 2*pi");
+    if (!isnan(end) && !(fabs(end) <= 2 * M_PI + 1e-6))
+        return pcl_argerror(L, arg + 3, "end angle", "between -2*pi and 2*pi");
+    return check(L, c, pc_circle(c, x, y, r, color, start, end, aspect));
+}
+
+static int l_paint(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    int arg = 1;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "");
+    int color = opt_color(L, arg, c);
+    int border = -1;
+    if (!lua_isnoneornil(L, arg + 1)) {
+        int isint;
+        lua_Integer b = lua_tointegerx(L, arg + 1, &isint);
+        if (!isint || b < 0 || b >= c->ncolors) {
+            char expected[40];
+            snprintf(expected, sizeof expected, "a colour number 0..%d", c->ncolors - 1);
+            return pcl_argerror(L, arg + 1, "border colour", expected);
+        }
+        border = (int)b;
+    }
+    return check(L, c, pc_paint(c, x, y, color, border));
+}
+
+static int l_point(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    int arg = 1;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "");
+    lua_pushinteger(L, pc_point(c, x, y));
+    return 1;
+}
+
+/* "screen" (string) or true as the last argument of WINDOW/VIEW means QBasic's SCREEN form. */
+static int screen_flag(lua_State *L, int arg) {
+    if (lua_isnoneornil(L, arg)) return 0;
+    if (lua_isboolean(L, arg)) return lua_toboolean(L, arg);
+    if (lua_type(L, arg) == LUA_TSTRING && !strcmp(lua_tostring(L, arg), "screen")) return 1;
+    return pcl_argerror(L, arg, "mode", "\"screen\", a boolean or nil");
+}
+
+static int l_window(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    if (lua_isnone(L, 1)) {
+        pc_window_reset(c);
+        return 0;
+    }
+    int arg = 1;
+    double x1, y1, x2, y2;
+    pcl_checkxy(L, &arg, &x1, &y1, "first corner");
+    pcl_checkxy(L, &arg, &x2, &y2, "second corner");
+    return check(L, c, pc_window(c, x1, y1, x2, y2, screen_flag(L, arg)));
+}
+
+static int l_view(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    if (lua_isnone(L, 1)) {
+        pc_view_reset(c);
+        return 0;
+    }
+    int arg = 1;
+    double x1, y1, x2, y2;
+    pcl_checkxy(L, &arg, &x1, &y1, "first corner");
+    pcl_checkxy(L, &arg, &x2, &y2, "second corner");
+    int fill = opt_color(L, arg, c), border = opt_color(L, arg + 1, c);
+    int screen = screen_flag(L, arg + 2);
+    return check(L, c, pc_view(c, (int)lrint(x1), (int)lrint(y1), (int)lrint(x2), (int)lrint(y2),
+                               fill, border, screen));
+}
+
+/* save(path [, theme]): the format follows the extension; theme "paper" or "screen". */
+static int l_save(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    const char *path = lua_tostring(L, 1);
+    if (!path || lua_type(L, 1) != LUA_TSTRING) return pcl_argerror(L, 1, "path", "a file name");
+    pc_theme theme = pcl_theme(L);
+    if (!lua_isnoneornil(L, 2)) {
+        const char *t = lua_tostring(L, 2);
+        if (t && !strcmp(t, "paper")) theme = PC_THEME_PAPER;
+        else if (t && !strcmp(t, "screen")) theme = PC_THEME_SCREEN;
+        else return pcl_argerror(L, 2, "theme", "\"paper\" or \"screen\"");
+    }
+    if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
+        return pcl_argerror(L, 1, "path", "a file name ending in .png, .svg or .ppm");
+    char err[512];
+    if (pc_write_file(c, path, theme, err, sizeof err) != PC_DRAW_OK)
+        return luaL_error(L, "save: %s", err);
+    c->dirty = 0;
+    return 0;
+}
+
+/* size() -> width, height, colours of the current screen */
+static int l_size(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    lua_pushinteger(L, c->width);
+    lua_pushinteger(L, c->height);
+    lua_pushinteger(L, c->ncolors);
+    return 3;
+}
+
+static int canvas_gc(lua_State *L) {
+    canvas_box *b = lua_touserdata(L, 1);
+    pc_canvas_free(b->c);
+    b->c = NULL;
+    return 0;
+}
+
+static const luaL_Reg draw_functions[] = {
+    {"screen", l_screen}, {"cls", l_cls},       {"color", l_color},   {"palette", l_palette},
+    {"pset", l_pset},     {"preset", l_preset}, {"line", l_line},     {"line_to", l_line_to},
+    {"circle", l_circle}, {"paint", l_paint},   {"point", l_point},   {"window", l_window},
+    {"view", l_view},     {"save", l_save},     {"size", l_size},     {"last_point", l_last_point},
+    {NULL, NULL}};
+
+void pcl_open_draw(lua_State *L) {
+    /* one canvas per Lua state: reuse it if the module is opened twice */
+    lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
+    if (lua_isnil(L, -1)) {
+        lua_pop(L, 1);
+        canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
+        b->c = NULL;
+        luaL_newmetatable(L, CANVAS_MT);
+        lua_pushcfunction(L, canvas_gc);
+        lua_setfield(L, -2, "__gc");
+        lua_setmetatable(L, -2);
+        b->c = pc_canvas_new_mode(12);
+        if (!b->c) luaL_error(L, "pointcalc: out of memory for the canvas");
+        lua_pushvalue(L, -1);
+        lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
+    }
+    luaL_setfuncs(L, draw_functions, 1);
+}

@@ -1,0 +1,39 @@
+/* Shared declarations of the Lua bindings.  Each module has one binding file l_NAME.c that
+ * adds its functions to the pointcalc table on top of the stack (pcl_open_NAME). A binding
+ * only checks arguments, calls the core, pushes results. */
+#ifndef PCL_H
+#define PCL_H
+
+#include <lua.h>
+#include <lauxlib.h>
+#include "canvas.h"
+#include "writers.h"
+
+#define PCL_MODULE "pointcalc"
+#define PCL_VERSION "0.1.0"
+
+/* module openers, called by luaopen_pointcalc in this order */
+void pcl_open_point(lua_State *L);
+void pcl_open_draw(lua_State *L);
+
+/* The canvas of this Lua state (created on first use as SCREEN 12). */
+pc_canvas *pcl_canvas(lua_State *L);
+/* The theme used by save() and the host's -o (set by --paper). */
+void pcl_set_theme(lua_State *L, pc_theme theme);
+pc_theme pcl_theme(lua_State *L);
+
+/* Coordinates at argument *arg: either a point (one argument) or two numbers.  On success
+ * advances *arg past what it consumed.  Raises an error naming fname and the argument. */
+void pcl_checkxy(lua_State *L, int *arg, double *x, double *y, const char *what);
+/* Same, but returns 0 without consuming anything if argument *arg is none or nil. */
+int pcl_optxy(lua_State *L, int *arg, double *x, double *y, const char *what);
+
+/* Implemented by the point binding: if the value at idx is a point userdata, store its first
+ * two coordinates and return 1 (raising the membership-condition error if its weight is not
+ * 1, or a dimension error if it is not 2-D); return 0 if it is not a point. */
+int pcl_topoint2(lua_State *L, int idx, double *x, double *y);
+
+/* Raise "NAME: argument #ARG (WHAT) must be EXPECTED, got TYPE" (the house error style). */
+int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected);
+
+#endif

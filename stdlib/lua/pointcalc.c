@@ -1,0 +1,26 @@
+/* luaopen_pointcalc: builds the module table from the binding files, then runs the Lua-side
+ * helpers embedded from the .lua files of stdlib/lua (each receives the table as its argument). */
+#include "pcl.h"
+#include <stdio.h>
+#include "pcl_embed.h"
+
+static void run_lua_helpers(lua_State *L) {
+    for (const pc_chunk *ch = pcl_stdlib_chunks; ch->name; ch++) {
+        char chunkname[96];
+        snprintf(chunkname, sizeof chunkname, "=[pointcalc/%s.lua]", ch->name);
+        if (luaL_loadbuffer(L, ch->text, ch->len, chunkname) != LUA_OK)
+            lua_error(L);
+        lua_pushvalue(L, -2);
+        lua_call(L, 1, 0);
+    }
+}
+
+int luaopen_pointcalc(lua_State *L) {
+    lua_newtable(L);
+    pcl_open_point(L);
+    pcl_open_draw(L);
+    run_lua_helpers(L);
+    lua_pushliteral(L, "pointcalc " PCL_VERSION);
+    lua_setfield(L, -2, "_VERSION");
+    return 1;
+}
