@@ -15,6 +15,7 @@
 /* module openers, called by luaopen_pointcalc in this order */
 void pcl_open_point(lua_State *L);
 void pcl_open_draw(lua_State *L);
+void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
 
 /* The canvas of this Lua state (created on first use as SCREEN 12). */
 pc_canvas *pcl_canvas(lua_State *L);

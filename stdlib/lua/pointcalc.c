@@ -19,6 +19,7 @@ int luaopen_pointcalc(lua_State *L) {
     lua_newtable(L);
     pcl_open_point(L);
     pcl_open_draw(L);
+    pcl_open_qb(L);
     run_lua_helpers(L);
     lua_pushliteral(L, "pointcalc " PCL_VERSION);
     lua_setfield(L, -2, "_VERSION");
