@@ -1,0 +1,21 @@
+/* Small dense linear algebra for the point calculus core (internal to stdlib/geom).
+ * Matrices are row-major arrays of doubles; sizes are at most PC_MAXDIM (+1). */
+#ifndef PC_LINALG_H
+#define PC_LINALG_H
+
+/* Orthonormalise the k edge vectors e (k rows of n) by modified Gram-Schmidt with one
+ * re-orthogonalisation pass: e = R^T Q, i.e. row i of e is sum_j r[j*k+i] q_j.
+ * q: k rows of n (orthonormal); r: k x k upper triangular with positive diagonal.
+ * Returns PC_OK, PC_ECOINCIDENT if an edge is zero, PC_ECOLLINEAR if an edge lies (within
+ * tol relative to its length) in the span of the previous ones, PC_EDIM if k > n.
+ * tol = PC_DEGEN_TOL detects degenerate simplices; tol = 0 fails only on exact dependence. */
+int pc_qr(int n, int k, const double *e, double *q, double *r, double tol);
+
+/* Solve m x = b in place (m: k x k, destroyed; b: k, overwritten by x) with partial
+ * pivoting.  PC_ESINGULAR if a pivot is below PC_DEGEN_TOL times the largest entry. */
+int pc_lu_solve(int k, double *m, double *b);
+
+/* Determinant of a k x k matrix (m is not modified). */
+double pc_det(int k, const double *m);
+
+#endif
