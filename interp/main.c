@@ -1,6 +1,7 @@
 /* pointcalc: run geometry scripts (Lua or QBasic), write the canvas, or explore in the REPL.
  *
  * Exit status: 0 success, 1 script error, 2 usage error. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -104,6 +105,10 @@ static int parse(int argc, char **argv, options *o) {
         argv[out] = NULL;
     }
     if (o->script && (ends_with(o->script, ".bas"))) o->qbasic = 1;
+    if (o->script && strcmp(o->script, "-") && access(o->script, R_OK) != 0) {
+        fprintf(stderr, "%s: cannot open '%s': %s\n", host_progname, o->script, strerror(errno));
+        return 2;
+    }
     if (o->emit_lua && !o->script) return usage_error("%s", "--emit-lua needs a QBasic program");
     return -1;
 }
