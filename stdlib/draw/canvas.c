@@ -77,6 +77,7 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->view_screen = 0;
     c->nops = c->nspans = c->nclips = 0;
     c->dirty = 0;
+    c->version++;
     c->error[0] = 0;
     if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
     pc_reset_cursor(c);
@@ -151,6 +152,7 @@ pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
     op->color = (uint8_t)color;
     op->clip = (uint16_t)(c->nclips - 1);
     if (kind != PC_OP_CLEAR) c->dirty = 1;
+    c->version++;
     return op;
 }
 
@@ -289,10 +291,12 @@ int pc_palette(pc_canvas *c, int attr, pc_rgb rgb) {
     if (attr < 0 || attr >= c->ncolors)
         return pc_fail(c, "palette attribute %d out of range 0..%d", attr, c->ncolors - 1);
     c->palette[attr] = rgb;
+    c->version++;
     return PC_DRAW_OK;
 }
 
 int pc_palette_reset(pc_canvas *c) {
     pc_palette_default(c->palette, c->ncolors);
+    c->version++;
     return PC_DRAW_OK;
 }

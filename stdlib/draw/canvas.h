@@ -79,6 +79,9 @@ typedef struct pc_canvas {
     pc_rect *clips; size_t nclips, capclips;
 
     int dirty;              /* something drawn since the last save */
+    uint64_t version;       /* bumped by every change of the picture (drawing, CLS, PALETTE,
+                               SCREEN); never reset, so a watcher can tell "changed since I
+                               last looked" without disturbing dirty */
     char error[160];
 } pc_canvas;
 
