@@ -1,0 +1,688 @@
+/* SVG: the display list as vectors, so a figure stays small and sharp when zoomed.
+ *
+ * Geometry is aligned with the raster: pixel (i, j) covers the square i..i+1, j..j+1, so a
+ * point at screen coordinate (x, y), which the raster puts in pixel (round(x), round(y)), is
+ * drawn centred at (x + 0.5, y + 0.5).  Strokes are 1 pixel wide with square caps, like the
+ * pixels at the ends of a rasterised line.  Numbers have at most two decimals.
+ *
+ *   runs of DOTs       consecutive dots of one colour and clip, each within DENSE px of the
+ *                      previous, become one polyline <path> (points closer than TOL px to the
+ *                      polyline are dropped: a million dots on an oval give a few hundred
+ *                      vertices).  Dots with no dense neighbour are exact 1x1 pixel squares,
+ *                      all those of one run in one filled <path>.
+ *   runs of LINEs      one <path> per run of one colour and clip; connected segments (LINE
+ *                      -(x, y), polygons) continue the same subpath.
+ *   BOX                <rect> stroked; FILLBOX and CLEAR: <rect> filled, on whole pixels.
+ *   ARC                full: <circle> or <ellipse>; partial: <path> with an A command, plus
+ *                      the radius lines that negative angles ask for.
+ *   FILL (PAINT)       one filled <path>: the outline of the painted pixels, traced along
+ *                      pixel edges (holes included), so it has no seams at any zoom.
+ *
+ * Colours are the theme's palette at write time.  VIEW clip rectangles other than the whole
+ * screen become <clipPath>s; what lies far outside the clip (more than MARGIN px) is left out.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "writers.h"
+
+#define DENSE 1.5    /* max distance between consecutive dots of one polyline, px */
+#define TOL 0.05     /* max distance of a dropped dot from the polyline, px */
+#define MARGIN 3.0   /* stroke geometry further than this outside the clip is invisible */
+#define TWO_PI 6.283185307179586
+
+typedef struct { long x, y; } hpt;      /* a point in hundredths of a pixel */
+
+typedef struct { uint32_t idx, seq; uint8_t color; } layer_px;
+
+typedef struct {
+    FILE *out;
+    const pc_canvas *c;
+    pc_rgb pal[256];
+    int group;                 /* clip index whose <g> is open, -1 for none */
+    unsigned char *clip_done; /* clipPath already written, per clip index */
+    int col;                   /* column within path data, to wrap long lines */
+    int numlast;               /* the path data so far ends with a number */
+    hpt cur;                   /* current point of the path data */
+    hpt *pts; size_t npts, cappts;     /* polyline being built */
+    layer_px *layer; size_t nlayer, caplayer;   /* isolated dots not yet written */
+    int nomem;
+} svgw;
+
+/* ---- numbers and path data ---------------------------------------------------------------- */
+
+static long hund(double v) {
+    if (v > 1e9) v = 1e9;
+    if (v < -1e9) v = -1e9;
+    return lrint(v * 100);
+}
+
+/* v hundredths -> "12", "12.5", "12.25", ".5", "-.05" */
+static int fmt_num(char *buf, long v) {
+    char *p = buf;
+    if (v < 0) { *p++ = '-'; v = -v; }
+    long ip = v / 100, fp = v % 100;
+    if (ip || !fp) p += sprintf(p, "%ld", ip);
+    if (fp) {
+        *p++ = '.';
+        *p++ = (char)('0' + fp / 10);
+        if (fp % 10) *p++ = (char)('0' + fp % 10);
+    }
+    *p = 0;
+    return (int)(p - buf);
+}
+
+static void put_attr_num(svgw *w, const char *name, long v) {
+    char b[32];
+    fmt_num(b, v);
+    fprintf(w->out, " %s=\"%s\"", name, b);
+}
+
+static void color_attr(svgw *w, const char *what, int color) {
+    pc_rgb p = w->pal[color];
+    fprintf(w->out, " %s=\"#%02x%02x%02x\"", what, p.r, p.g, p.b);
+}
+
+static void d_begin(svgw *w) {
+    fputs(" d=\"", w->out);
+    w->col = 0;
+    w->numlast = 0;
+}
+
+static void d_end(svgw *w) { fputs("\"/>\n", w->out); }
+
+static void d_cmd(svgw *w, char letter) {
+    if (w->col > 200) { fputc('\n', w->out); w->col = 0; }
+    fputc(letter, w->out);
+    w->col++;
+    w->numlast = 0;
+}
+
+/* a number, separated from the previous one by a space unless its sign separates it */
+static void d_num(svgw *w, long v) {
+    char b[32];
+    int n = fmt_num(b, v);
+    if (w->col > 200 && b[0] != '-') {
+        fputc('\n', w->out);
+        w->col = 0;
+    } else if (w->numlast && b[0] != '-') {
+        fputc(' ', w->out);
+        w->col++;
+    }
+    fputs(b, w->out);
+    w->col += n;
+    w->numlast = 1;
+}
+
+static void d_move(svgw *w, hpt p) {
+    d_cmd(w, 'M');
+    d_num(w, p.x);
+    d_num(w, p.y);
+    w->cur = p;
+}
+
+/* after d_cmd the next number needs no separator */
+static void d_letter(svgw *w, char letter) {
+    d_cmd(w, letter);
+}
+
+static void flush_layer(svgw *w);
+
+/* ---- clip groups -------------------------------------------------------------------------- */
+
+static int is_full(const svgw *w, int k) {
+    const pc_rect *r = &w->c->clips[k];
+    return r->x0 <= 0 && r->y0 <= 0 && r->x1 >= w->c->width - 1 && r->y1 >= w->c->height - 1;
+}
+
+static pc_rect clip_of(const svgw *w, const pc_op *op) {
+    if (op->clip < w->c->nclips) return w->c->clips[op->clip];
+    return (pc_rect){0, 0, w->c->width - 1, w->c->height - 1};
+}
+
+/* Make sure the elements that follow are inside the group clipping to op's clip. */
+static void enter_clip(svgw *w, const pc_op *op) {
+    int k = op->clip < w->c->nclips ? op->clip : 0;
+    if (w->c->nclips == 0 || is_full(w, k)) k = -1;
+    else {
+        /* the same rectangle may appear under several indices: use the first */
+        for (int i = 0; i < k; i++)
+            if (memcmp(&w->c->clips[i], &w->c->clips[k], sizeof(pc_rect)) == 0) { k = i; break; }
+    }
+    if (k == w->group) return;
+    flush_layer(w);
+    if (w->group >= 0) fputs("</g>\n", w->out);
+    w->group = k;
+    if (k < 0) return;
+    if (!w->clip_done[k]) {
+        const pc_rect *r = &w->c->clips[k];
+        fprintf(w->out, "<clipPath id=\"c%d\"><rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\"/></clipPath>\n",
+                k, r->x0, r->y0, r->x1 - r->x0 + 1, r->y1 - r->y0 + 1);
+        w->clip_done[k] = 1;
+    }
+    fprintf(w->out, "<g clip-path=\"url(#c%d)\">\n", k);
+}
+
+/* ---- growable point lists ----------------------------------------------------------------- */
+
+static void push(svgw *w, hpt **buf, size_t *n, size_t *cap, hpt p) {
+    if (*n == *cap) {
+        size_t nc = *cap ? *cap * 2 : 256;
+        hpt *g = realloc(*buf, nc * sizeof *g);
+        if (!g) { w->nomem = 1; return; }
+        *buf = g;
+        *cap = nc;
+    }
+    (*buf)[(*n)++] = p;
+}
+
+static void add_point(svgw *w, double x, double y) {
+    hpt p = {hund(x), hund(y)};
+    if (w->npts && w->pts[w->npts - 1].x == p.x && w->pts[w->npts - 1].y == p.y) return;
+    push(w, &w->pts, &w->npts, &w->cappts, p);
+}
+
+/* ---- the pixel layer ---------------------------------------------------------------------- */
+
+/* Isolated dots are exact pixels, as the raster has them.  Pixels do not overlap one another,
+ * so the dots collected since the last other element only need their final colour per pixel
+ * (the last dot wins) and can be written grouped by colour, one path per colour with
+ * horizontal runs of pixels merged.  The layer is written out before any other element, so
+ * the painter's order of the display list is kept exactly. */
+static void add_dot(svgw *w, double x, double y, int color, pc_rect clip) {
+    long ix = lrint(fmax(-1e9, fmin(1e9, x))), iy = lrint(fmax(-1e9, fmin(1e9, y)));
+    if (ix < clip.x0 || ix > clip.x1 || iy < clip.y0 || iy > clip.y1) return;
+    if (w->nlayer == w->caplayer) {
+        size_t nc = w->caplayer ? w->caplayer * 2 : 1024;
+        layer_px *g = realloc(w->layer, nc * sizeof *g);
+        if (!g) { w->nomem = 1; return; }
+        w->layer = g;
+        w->caplayer = nc;
+    }
+    w->layer[w->nlayer] = (layer_px){(uint32_t)(iy * w->c->width + ix), (uint32_t)w->nlayer,
+                                     (uint8_t)color};
+    w->nlayer++;
+}
+
+static int by_pixel_then_order(const void *a, const void *b) {
+    const layer_px *p = a, *q = b;
+    if (p->idx != q->idx) return p->idx < q->idx ? -1 : 1;
+    return p->seq < q->seq ? -1 : p->seq > q->seq;
+}
+
+static int by_color_then_pixel(const void *a, const void *b) {
+    const layer_px *p = a, *q = b;
+    if (p->color != q->color) return p->color < q->color ? -1 : 1;
+    return p->idx < q->idx ? -1 : p->idx > q->idx;
+}
+
+static void flush_layer(svgw *w) {
+    if (!w->nlayer) return;
+    layer_px *L = w->layer;
+    size_t n = w->nlayer;
+    qsort(L, n, sizeof *L, by_pixel_then_order);
+    size_t k = 0;   /* keep the last dot of each pixel */
+    for (size_t i = 0; i < n; i++) {
+        if (i + 1 < n && L[i + 1].idx == L[i].idx) continue;
+        L[k++] = L[i];
+    }
+    n = k;
+    qsort(L, n, sizeof *L, by_color_then_pixel);
+    long W = w->c->width;
+    for (size_t i = 0; i < n;) {
+        int color = L[i].color;
+        fputs("<path", w->out);
+        color_attr(w, "fill", color);
+        fputs(" shape-rendering=\"crispEdges\"", w->out);
+        d_begin(w);
+        int first = 1;
+        while (i < n && L[i].color == color) {
+            size_t j = i + 1;   /* a horizontal run of pixels of this colour */
+            while (j < n && L[j].color == color && L[j].idx == L[j - 1].idx + 1 &&
+                   (long)(L[j].idx % W) != 0)
+                j++;
+            hpt p = {(long)(L[i].idx % W) * 100, (long)(L[i].idx / W) * 100};
+            if (first) d_move(w, p);
+            else {
+                d_letter(w, 'm');
+                d_num(w, p.x - w->cur.x);
+                d_num(w, p.y - w->cur.y);
+                w->cur = p;
+            }
+            first = 0;
+            long len = (long)(j - i) * 100;
+            d_letter(w, 'h'); d_num(w, len);
+            d_letter(w, 'v'); d_num(w, 100);
+            d_letter(w, 'h'); d_num(w, -len);
+            d_letter(w, 'z');
+            i = j;
+        }
+        d_end(w);
+    }
+    w->nlayer = 0;
+}
+
+/* Every element other than the pixel layer starts here, after the layer is written. */
+static void open_el(svgw *w, const char *tag) {
+    flush_layer(w);
+    fprintf(w->out, "<%s", tag);
+}
+
+/* ---- runs of dots ------------------------------------------------------------------------- */
+
+/* Streaming polyline simplification by sleeve fitting: from the anchor, keep the wedge of
+ * directions that passes within TOL of every dot seen since; when a dot falls outside it (or
+ * the run turns back), the last dot that fitted becomes a vertex and the new anchor. */
+typedef struct {
+    double ax, ay;             /* anchor (already emitted) */
+    int has_cand; double cx, cy, maxd, lo, hi;
+    int has_pending; double px, py;
+} sleeve;
+
+static void sleeve_start(svgw *w, sleeve *s, double x, double y) {
+    memset(s, 0, sizeof *s);
+    s->ax = x;
+    s->ay = y;
+    w->npts = 0;
+    add_point(w, x, y);
+}
+
+static void sleeve_add(svgw *w, sleeve *s, double x, double y) {
+    for (;;) {
+        double dx = x - s->ax, dy = y - s->ay, d = hypot(dx, dy);
+        if (!s->has_cand) {
+            if (d <= TOL) {
+                s->has_pending = 1;
+                s->px = x;
+                s->py = y;
+                return;
+            }
+            double th = atan2(dy, dx), de = asin(TOL / d);
+            s->lo = th - de;
+            s->hi = th + de;
+            s->has_cand = 1;
+            s->has_pending = 0;
+            s->cx = x;
+            s->cy = y;
+            s->maxd = d;
+            return;
+        }
+        if (d > TOL && d >= s->maxd) {
+            double th = atan2(dy, dx), mid = (s->lo + s->hi) / 2;
+            th += TWO_PI * rint((mid - th) / TWO_PI);
+            if (th >= s->lo && th <= s->hi) {
+                double de = asin(TOL / d);
+                if (th - de > s->lo) s->lo = th - de;
+                if (th + de < s->hi) s->hi = th + de;
+                s->cx = x;
+                s->cy = y;
+                s->maxd = d;
+                return;
+            }
+        }
+        /* does not fit: the candidate becomes a vertex; try again from it */
+        add_point(w, s->cx, s->cy);
+        s->ax = s->cx;
+        s->ay = s->cy;
+        s->has_cand = s->has_pending = 0;
+    }
+}
+
+static void sleeve_end(svgw *w, sleeve *s) {
+    if (s->has_cand) add_point(w, s->cx, s->cy);
+    else if (s->has_pending) add_point(w, s->px, s->py);
+}
+
+static void emit_polyline(svgw *w, int color) {
+    open_el(w, "path");
+    color_attr(w, "stroke", color);
+    fputs(" stroke-linejoin=\"round\"", w->out);
+    d_begin(w);
+    d_move(w, w->pts[0]);
+    d_letter(w, 'l');
+    for (size_t i = 1; i < w->npts; i++) {
+        d_num(w, w->pts[i].x - w->cur.x);
+        d_num(w, w->pts[i].y - w->cur.y);
+        w->cur = w->pts[i];
+    }
+    d_end(w);
+}
+
+/* One dense subrun ops[i0..i1): a polyline, or an isolated dot if it has no extent. */
+static void dense_subrun(svgw *w, const pc_op *ops, size_t i0, size_t i1, pc_rect clip) {
+    sleeve s;
+    sleeve_start(w, &s, ops[i0].x1 + 0.5, ops[i0].y1 + 0.5);
+    for (size_t i = i0 + 1; i < i1; i++) sleeve_add(w, &s, ops[i].x1 + 0.5, ops[i].y1 + 0.5);
+    sleeve_end(w, &s);
+    if (w->nomem) return;
+    int extent = w->npts > 2 ||
+                 (w->npts == 2 && hypot((double)(w->pts[1].x - w->pts[0].x),
+                                        (double)(w->pts[1].y - w->pts[0].y)) > TOL * 100);
+    if (extent) emit_polyline(w, ops[i0].color);
+    else add_dot(w, ops[i0].x1, ops[i0].y1, ops[i0].color, clip);
+}
+
+static int far_outside(double x, double y, pc_rect r) {
+    /* x, y: pixel-centre coordinates; the clip covers r.x0 .. r.x1 + 1 */
+    return x < r.x0 - MARGIN || x > r.x1 + 1 + MARGIN || y < r.y0 - MARGIN || y > r.y1 + 1 + MARGIN;
+}
+
+static void emit_dots(svgw *w, const pc_op *ops, size_t n) {
+    pc_rect clip = clip_of(w, &ops[0]);
+    size_t i = 0;
+    while (i < n) {
+        if (far_outside(ops[i].x1 + 0.5, ops[i].y1 + 0.5, clip)) { i++; continue; }
+        size_t j = i + 1;
+        while (j < n && hypot(ops[j].x1 - ops[j - 1].x1, ops[j].y1 - ops[j - 1].y1) <= DENSE &&
+               !far_outside(ops[j].x1 + 0.5, ops[j].y1 + 0.5, clip))
+            j++;
+        if (j - i == 1) add_dot(w, ops[i].x1, ops[i].y1, ops[i].color, clip);
+        else dense_subrun(w, ops, i, j, clip);
+        i = j;
+    }
+}
+
+/* ---- runs of lines ------------------------------------------------------------------------ */
+
+/* Liang-Barsky: clip the segment to the rectangle; 0 if nothing is left. */
+static int clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
+                        double xmax, double ymax) {
+    double t0 = 0, t1 = 1, dx = *x1 - *x0, dy = *y1 - *y0;
+    double p[4] = {-dx, dx, -dy, dy};
+    double q[4] = {*x0 - xmin, xmax - *x0, *y0 - ymin, ymax - *y0};
+    for (int i = 0; i < 4; i++) {
+        if (p[i] == 0) {
+            if (q[i] < 0) return 0;
+        } else {
+            double r = q[i] / p[i];
+            if (p[i] < 0) { if (r > t1) return 0; if (r > t0) t0 = r; }
+            else          { if (r < t0) return 0; if (r < t1) t1 = r; }
+        }
+    }
+    double ox = *x0, oy = *y0;
+    *x0 = ox + t0 * dx; *y0 = oy + t0 * dy;
+    *x1 = ox + t1 * dx; *y1 = oy + t1 * dy;
+    return 1;
+}
+
+static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
+    pc_rect clip = clip_of(w, &ops[0]);
+    int open = 0;
+    for (size_t i = 0; i < n; i++) {
+        const pc_op *op = &ops[i];
+        if (op->x1 == op->x2 && op->y1 == op->y2) {   /* a zero-length line is one pixel */
+            add_dot(w, op->x1, op->y1, op->color, clip);
+            continue;
+        }
+        double x0 = op->x1 + 0.5, y0 = op->y1 + 0.5, x1 = op->x2 + 0.5, y1 = op->y2 + 0.5;
+        if (!clip_segment(&x0, &y0, &x1, &y1, clip.x0 - MARGIN, clip.y0 - MARGIN,
+                          clip.x1 + 1 + MARGIN, clip.y1 + 1 + MARGIN))
+            continue;
+        hpt a = {hund(x0), hund(y0)}, b = {hund(x1), hund(y1)};
+        if (a.x == b.x && a.y == b.y) {
+            add_dot(w, op->x1, op->y1, op->color, clip);
+            continue;
+        }
+        if (!open) {
+            open_el(w, "path");
+            color_attr(w, "stroke", op->color);
+            d_begin(w);
+            d_move(w, a);
+            d_letter(w, 'l');
+            open = 1;
+        } else if (a.x != w->cur.x || a.y != w->cur.y) {
+            d_letter(w, 'm');    /* the pairs after a relative move are relative lines */
+            d_num(w, a.x - w->cur.x);
+            d_num(w, a.y - w->cur.y);
+        }
+        d_num(w, b.x - a.x);
+        d_num(w, b.y - a.y);
+        w->cur = b;
+    }
+    if (open) d_end(w);
+}
+
+/* ---- boxes -------------------------------------------------------------------------------- */
+
+static long rnd(double v) {
+    if (v > 1e9) v = 1e9;
+    if (v < -1e9) v = -1e9;
+    return lrint(v);
+}
+
+static void fill_rect(svgw *w, long x0, long y0, long x1, long y1, int color) {
+    open_el(w, "rect");
+    fprintf(w->out, " x=\"%ld\" y=\"%ld\" width=\"%ld\" height=\"%ld\"", x0, y0, x1 - x0 + 1,
+            y1 - y0 + 1);
+    color_attr(w, "fill", color);
+    fputs(" shape-rendering=\"crispEdges\"/>\n", w->out);
+}
+
+/* BOX, FILLBOX and CLEAR cover whole pixels, exactly as rasterised. */
+static void emit_box(svgw *w, const pc_op *op) {
+    pc_rect clip = clip_of(w, op);
+    long x0 = rnd(op->x1), y0 = rnd(op->y1), x1 = rnd(op->x2), y1 = rnd(op->y2);
+    if (x0 > x1) { long t = x0; x0 = x1; x1 = t; }
+    if (y0 > y1) { long t = y0; y0 = y1; y1 = t; }
+    if (x1 < clip.x0 || x0 > clip.x1 || y1 < clip.y0 || y0 > clip.y1) return;
+    if (op->kind != PC_OP_BOX) {
+        if (x0 < clip.x0) x0 = clip.x0;
+        if (y0 < clip.y0) y0 = clip.y0;
+        if (x1 > clip.x1) x1 = clip.x1;
+        if (y1 > clip.y1) y1 = clip.y1;
+        fill_rect(w, x0, y0, x1, y1, op->color);
+        return;
+    }
+    /* sides far outside the clip move to just outside it: still invisible, numbers stay small */
+    if (x0 < clip.x0 - 2) x0 = clip.x0 - 2;
+    if (y0 < clip.y0 - 2) y0 = clip.y0 - 2;
+    if (x1 > clip.x1 + 2) x1 = clip.x1 + 2;
+    if (y1 > clip.y1 + 2) y1 = clip.y1 + 2;
+    if (x0 == x1 || y0 == y1) {   /* a flat box is a row or column of pixels */
+        fill_rect(w, x0, y0, x1, y1, op->color);
+        return;
+    }
+    open_el(w, "rect");
+    fprintf(w->out, " x=\"%ld.5\" y=\"%ld.5\" width=\"%ld\" height=\"%ld\"", x0, y0, x1 - x0,
+            y1 - y0);
+    color_attr(w, "stroke", op->color);
+    fputs("/>\n", w->out);
+}
+
+/* ---- circles, ellipses, arcs -------------------------------------------------------------- */
+
+static void emit_arc(svgw *w, const pc_op *op) {
+    pc_rect clip = clip_of(w, op);
+    double cx = op->x1 + 0.5, cy = op->y1 + 0.5, rx = fabs(op->rx), ry = fabs(op->ry);
+    if (!isfinite(cx) || !isfinite(cy) || !isfinite(rx) || !isfinite(ry)) return;
+    if (lrint(rx) == 0 && lrint(ry) == 0) {   /* radius 0: the centre pixel */
+        add_dot(w, op->x1, op->y1, op->color, clip);
+        return;
+    }
+    /* wholly outside the clip: nothing to draw */
+    if (cx + rx < clip.x0 - MARGIN || cx - rx > clip.x1 + 1 + MARGIN ||
+        cy + ry < clip.y0 - MARGIN || cy - ry > clip.y1 + 1 + MARGIN)
+        return;
+    long hcx = hund(cx), hcy = hund(cy), hrx = hund(rx), hry = hund(ry);
+    if (op->flags & PC_ARC_FULL) {
+        if (hrx == hry) {
+            open_el(w, "circle");
+            put_attr_num(w, "cx", hcx);
+            put_attr_num(w, "cy", hcy);
+            put_attr_num(w, "r", hrx);
+        } else {
+            open_el(w, "ellipse");
+            put_attr_num(w, "cx", hcx);
+            put_attr_num(w, "cy", hcy);
+            put_attr_num(w, "rx", hrx);
+            put_attr_num(w, "ry", hry);
+        }
+        color_attr(w, "stroke", op->color);
+        fputs("/>\n", w->out);
+        return;
+    }
+    /* counter-clockwise on the screen (y up sense) from a0 to a1: sweep-flag 0 in SVG */
+    double a0 = op->a0, a1 = op->a1;
+    double ext = a1 >= a0 ? a1 - a0 : a1 - a0 + TWO_PI;
+    hpt c = {hcx, hcy};
+    hpt p0 = {hund(cx + rx * cos(a0)), hund(cy - ry * sin(a0))};
+    hpt p1 = {hund(cx + rx * cos(a1)), hund(cy - ry * sin(a1))};
+    open_el(w, "path");
+    color_attr(w, "stroke", op->color);
+    d_begin(w);
+    if (op->flags & PC_ARC_RADIUS0) {
+        d_move(w, c);
+        d_letter(w, 'L');
+        d_num(w, p0.x);
+        d_num(w, p0.y);
+    } else {
+        d_move(w, p0);
+    }
+    /* an arc of (nearly) a whole turn is drawn as two halves: A needs distinct end points */
+    int halves = ext > TWO_PI - 1e-4 || (p0.x == p1.x && p0.y == p1.y && ext > 1);
+    double am = a0 + ext / 2;
+    hpt pm = {hund(cx + rx * cos(am)), hund(cy - ry * sin(am))};
+    for (int k = halves ? 0 : 1; k < 2; k++) {
+        hpt to = (halves && k == 0) ? pm : p1;
+        int large = !halves && ext > TWO_PI / 2;
+        d_letter(w, 'A');
+        d_num(w, hrx);
+        d_num(w, hry);
+        d_num(w, 0);
+        d_num(w, large * 100);
+        d_num(w, 0);
+        d_num(w, to.x);
+        d_num(w, to.y);
+    }
+    if (op->flags & PC_ARC_RADIUS1) {
+        if (op->flags & PC_ARC_RADIUS0) d_letter(w, 'Z');
+        else {
+            d_letter(w, 'L');
+            d_num(w, c.x);
+            d_num(w, c.y);
+        }
+    }
+    d_end(w);
+}
+
+/* ---- painted regions ---------------------------------------------------------------------- */
+
+/* The outline of the painted pixels.  Boundary edges run clockwise on the screen around the
+ * region (inside on the right), so holes run the other way and the nonzero rule leaves them
+ * empty.  At a vertex where two inside pixels touch only diagonally the trace turns right,
+ * hugging the pixel it follows.  Directions: 0 +x, 1 +y, 2 -x, 3 -y. */
+static void emit_fill(svgw *w, const pc_op *op) {
+    const pc_canvas *c = w->c;
+    if (op->span_count == 0 || (size_t)op->span_first + op->span_count > c->nspans) return;
+    const pc_span *sp = c->spans + op->span_first;
+    long minx = sp[0].x0, maxx = sp[0].x1, miny = sp[0].y, maxy = sp[0].y;
+    for (uint32_t i = 1; i < op->span_count; i++) {
+        if (sp[i].x0 < minx) minx = sp[i].x0;
+        if (sp[i].x1 > maxx) maxx = sp[i].x1;
+        if (sp[i].y < miny) miny = sp[i].y;
+        if (sp[i].y > maxy) maxy = sp[i].y;
+    }
+    /* the mask has a border of one empty pixel all round */
+    long W = maxx - minx + 3, H = maxy - miny + 3;
+    unsigned char *m = calloc((size_t)W * H, 1);
+    if (!m) { w->nomem = 1; return; }
+    for (uint32_t i = 0; i < op->span_count; i++)
+        if (sp[i].x1 >= sp[i].x0)
+            memset(m + (size_t)(sp[i].y - miny + 1) * W + (sp[i].x0 - minx + 1), 1,
+                   (size_t)(sp[i].x1 - sp[i].x0 + 1));
+#define IN(X, Y) (m[(size_t)(Y) * W + (X)] & 1)
+#define TOP_DONE 2
+    static const int DX[4] = {1, 0, -1, 0}, DY[4] = {0, 1, 0, -1};
+    open_el(w, "path");
+    color_attr(w, "fill", op->color);
+    fputs(" shape-rendering=\"crispEdges\"", w->out);
+    d_begin(w);
+    for (long y = 1; y < H - 1; y++)
+        for (long x = 1; x < W - 1; x++) {
+            if (!IN(x, y) || IN(x, y - 1) || (m[y * W + x] & TOP_DONE)) continue;
+            long vx = x, vy = y;
+            d_move(w, (hpt){(vx - 1 + minx) * 100, (vy - 1 + miny) * 100});
+            int dir = 0;
+            long len = 0;
+            for (;;) {
+                if (dir == 0) m[vy * W + vx] |= TOP_DONE;   /* top edge of pixel (vx, vy) */
+                vx += DX[dir];
+                vy += DY[dir];
+                len++;
+                int a = IN(vx - 1, vy - 1), b = IN(vx, vy - 1), cc = IN(vx - 1, vy), d = IN(vx, vy);
+                int exists[4] = {d && !b, cc && !d, a && !cc, b && !a};
+                int nd = -1;
+                for (int t = 1; t >= -1; t--) {   /* right, straight, left */
+                    int cand = (dir + t + 4) % 4;
+                    if (exists[cand]) { nd = cand; break; }
+                }
+                int closing = vx == x && vy == y && nd == 0;
+                if (nd != dir || closing) {
+                    if (!(closing && dir != 0)) {   /* the last side is drawn by z */
+                        d_letter(w, (dir & 1) ? 'v' : 'h');
+                        d_num(w, (dir >= 2 ? -len : len) * 100);
+                    }
+                    dir = nd;
+                    len = 0;
+                }
+                if (closing || nd < 0) break;
+            }
+            d_letter(w, 'z');
+        }
+#undef IN
+#undef TOP_DONE
+    d_end(w);
+    free(m);
+}
+
+/* ---- the document ------------------------------------------------------------------------- */
+
+int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
+    svgw w;
+    memset(&w, 0, sizeof w);
+    w.out = out;
+    w.c = c;
+    w.group = -1;
+    pc_theme_palette(c, theme, w.pal);
+    w.clip_done = calloc(c->nclips ? c->nclips : 1, 1);
+    if (!w.clip_done) return PC_DRAW_ENOMEM;
+
+    fprintf(out,
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%d\" height=\"%d\" "
+            "viewBox=\"0 0 %d %d\">\n",
+            c->width, c->height, c->width, c->height);
+    fprintf(out, "<rect width=\"%d\" height=\"%d\"", c->width, c->height);
+    color_attr(&w, "fill", 0);
+    fputs("/>\n", out);
+    fputs("<g fill=\"none\" stroke-width=\"1\" stroke-linecap=\"square\">\n", out);
+
+    size_t i = 0;
+    while (i < c->nops && !w.nomem && !ferror(out)) {
+        const pc_op *op = &c->ops[i];
+        enter_clip(&w, op);
+        size_t j = i + 1;
+        if (op->kind == PC_OP_DOT || op->kind == PC_OP_LINE) {
+            while (j < c->nops && c->ops[j].kind == op->kind && c->ops[j].color == op->color &&
+                   c->ops[j].clip == op->clip)
+                j++;
+            if (op->kind == PC_OP_DOT) emit_dots(&w, op, j - i);
+            else emit_lines(&w, op, j - i);
+        } else if (op->kind == PC_OP_ARC) {
+            emit_arc(&w, op);
+        } else if (op->kind == PC_OP_FILL) {
+            emit_fill(&w, op);
+        } else {
+            emit_box(&w, op);
+        }
+        i = j;
+    }
+    flush_layer(&w);
+    if (w.group >= 0) fputs("</g>\n", out);
+    fputs("</g>\n</svg>\n", out);
+    free(w.clip_done);
+    free(w.pts);
+    free(w.layer);
+    if (w.nomem) return PC_DRAW_ENOMEM;
+    return ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
+}
