@@ -71,5 +71,6 @@ int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out) {
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
     free(row);
-    return ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
+    /* flushed here so that a full disk shows as an error of this call */
+    return fflush(out) != 0 || ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
 }

@@ -21,6 +21,6 @@ int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out) {
         if (fwrite(row, 3, w, out) != w) ok = PC_DRAW_EIO;
     }
     free(row);
-    if (ok == PC_DRAW_OK && ferror(out)) ok = PC_DRAW_EIO;
+    if (ok == PC_DRAW_OK && (fflush(out) != 0 || ferror(out))) ok = PC_DRAW_EIO;
     return ok;
 }

@@ -684,5 +684,5 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
     free(w.pts);
     free(w.layer);
     if (w.nomem) return PC_DRAW_ENOMEM;
-    return ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
+    return fflush(out) != 0 || ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
 }

@@ -2,7 +2,7 @@
  * temporary file in the target's directory, which is renamed over the target only when it is
  * complete and closed without error.  Readers of the target never see a half-written file and
  * a failed save leaves nothing behind (and an existing file untouched). */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700   /* realpath, mkstemp, fchmod */
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -43,15 +43,8 @@ static mode_t new_file_mode(const char *target) {
 
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
     pc_format fmt = pc_format_from_path(path);
-    if (fmt == PC_FMT_UNKNOWN) {
-        const char *dot = strrchr(basename_of(path), '.');
-        char reason[128];
-        if (dot)
-            snprintf(reason, sizeof reason, "unknown file type '%.40s' (use .png, .svg or .ppm)", dot);
-        else
-            snprintf(reason, sizeof reason, "no file type given (use .png, .svg or .ppm)");
-        return fail(err, errlen, path, reason, PC_DRAW_EARG);
-    }
+    if (fmt == PC_FMT_UNKNOWN)
+        return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_DRAW_EARG);
 
     /* Write through a symbolic link to the file it names, as an in-place write would. */
     const char *target = path;
