@@ -1,0 +1,38 @@
+/* Shared by the point-calculus bindings (l_point.c, l_simplex.c, l_affine.c): the point
+ * userdata and its argument checks.  A value of dimension n is a full userdata holding n
+ * weighted coordinates and the weight (see stdlib/geom/point.h), with the point metatable. */
+#ifndef PCL_POINT_H
+#define PCL_POINT_H
+
+#include "pcl.h"
+#include "point.h"
+
+typedef struct {
+    int n;          /* dimension */
+    double h[];     /* h[0..n-1] weighted coordinates, h[n] the weight */
+} pcl_value;
+
+/* Push the point metatable. */
+void pcl_push_point_mt(lua_State *L);
+/* The value at idx, or NULL if it is not a point/vector. */
+pcl_value *pcl_tovalue(lua_State *L, int idx);
+/* Push a new value of dimension n (its doubles uninitialised). */
+pcl_value *pcl_newvalue(lua_State *L, int n);
+
+/* Argument checks in the house style; they raise errors naming the calling function.
+ * pcl_checkvalue: any value (point, vector or weighted).
+ * pcl_checkloc: a point (weight 1): its Cartesian coordinates go to out (n doubles);
+ *   a vector or weighted value raises the membership-condition error.
+ * pcl_checkvec: a vector (weight 0): its coordinates go to out.
+ * dim > 0 demands that dimension (the mixed-dimensions error names argument dim_arg). */
+pcl_value *pcl_checkvalue(lua_State *L, int arg, const char *what);
+int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
+int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
+/* "NAME: argument #ARG (WHAT) is 3-D, but argument #DIM_ARG is 2-D (mixed dimensions)" */
+int pcl_dimerror(lua_State *L, int arg, const char *what, int got, int dim, int dim_arg);
+/* The name of the running C function, as pcl_argerror uses it. */
+const char *pcl_fname(lua_State *L);
+/* A finite number at arg. */
+double pcl_checkfinite(lua_State *L, int arg, const char *what);
+
+#endif
