@@ -1,0 +1,78 @@
+/* Smoothsteps and half-splines (stepanov_examples.md examples 3-8, 20-22). */
+#include "smooth.h"
+#include <math.h>
+
+static const double PI = 3.14159265358979323846;
+
+const char *pc_tk_strerror(int status) {
+    switch (status) {
+    case PC_TK_OK: return "no error";
+    case PC_TK_EDOMAIN: return "parameter outside its domain";
+    case PC_TK_EZERO: return "zero vector where a direction is needed";
+    case PC_TK_ENOBRACKET: return "no sign change: the interval brackets no root";
+    case PC_TK_EPOLE: return "evaluated at the pole of the map";
+    case PC_TK_EDIM: return "dimensions do not fit";
+    case PC_TK_ENONFINITE: return "NaN or infinite value";
+    default: return "unknown error";
+    }
+}
+
+double pc_smooth_sine(double t) { return (1.0 - cos(PI * t)) / 2.0; }
+
+double pc_smooth_cubic(double t) { return t * t * (3.0 - 2.0 * t); }
+
+double pc_smooth_power(double n, double t) {
+    double c = pow(2.0, n - 1.0);
+    if (t < 0.5) return c * pow(t, n);
+    return 1.0 - c * pow(1.0 - t, n);
+}
+
+int pc_hspline_init(pc_hspline *h, double n, double m, double t0) {
+    if (!isfinite(n) || !isfinite(m) || !isfinite(t0)) return PC_TK_ENONFINITE;
+    if (n <= 0 || m <= 0 || t0 <= 0 || t0 >= 1) return PC_TK_EDOMAIN;
+    h->n = n;
+    h->m = m;
+    h->t0 = t0;
+    h->c1 = m / ((n - n * t0 + m * t0) * pow(t0, n - 1.0));
+    h->c2 = (1.0 - h->c1 * pow(t0, n)) / pow(1.0 - t0, m);
+    return PC_TK_OK;
+}
+
+double pc_hspline_eval(const pc_hspline *h, double t) {
+    if (t < h->t0) return h->c1 * pow(t, h->n);
+    return 1.0 - h->c2 * pow(1.0 - t, h->m);
+}
+
+double pc_hspline_deriv(const pc_hspline *h, double t) {
+    if (t < h->t0) return h->n * h->c1 * pow(t, h->n - 1.0);
+    return h->m * h->c2 * pow(1.0 - t, h->m - 1.0);
+}
+
+double pc_hspline_locus(double n, double m, double t0) {
+    return m * t0 / (n - n * t0 + m * t0);
+}
+
+double pc_smooth_clamp(double t) {
+    if (t <= 0) return 0.0;
+    if (t < 0.5) return 2.0 * t * t;
+    if (t < 1) return 1.0 - 2.0 * (1.0 - t) * (1.0 - t);
+    return 1.0;
+}
+
+double pc_smooth_clamp_qb(double t, double prev) {
+    double s = prev;
+    if (t < 0) s = 0.0;
+    if (t > 0 && t < 0.5) s = 2.0 * t * t;
+    if (t > 0.5 && t < 1) s = 1.0 - 2.0 * (1.0 - t) * (1.0 - t);
+    if (t > 1) s = 1.0;
+    return s;
+}
+
+double pc_gfun_eval(const pc_gfun *g, double t) {
+    switch (g->kind) {
+    case PC_G_HALF: return pc_hspline_eval(&g->h, t);
+    case PC_G_CUBIC: return pc_smooth_cubic(t);
+    case PC_G_SINE: return pc_smooth_sine(t);
+    case PC_G_LINEAR: default: return t;
+    }
+}

@@ -1,0 +1,123 @@
+/* Quadrilateral splines and one-stroke curves (stepanov_examples.md examples 5, 10, 33, 34). */
+#include "spline.h"
+#include <math.h>
+#include <string.h>
+
+void pc_dir2(double u, int ccw, double out[2]) {
+    out[0] = cos(u);
+    out[1] = ccw ? -sin(u) : sin(u);
+}
+
+void pc_dir3(double lon, double lat, double out[3]) {
+    out[0] = cos(lon) * cos(lat);
+    out[1] = sin(lon) * cos(lat);
+    out[2] = sin(lat);
+}
+
+void pc_qspline(int d, const double *a, const double *p, const double *q, const double *b,
+                double t, double g, double *out) {
+    for (int i = 0; i < d; i++) {
+        double m = a[i] + t * (p[i] - a[i]);
+        double n = q[i] + t * (b[i] - q[i]);
+        out[i] = m + g * (n - m);
+    }
+}
+
+void pc_piece_eval(int d, const pc_piece *pc, double t, double *out) {
+    pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, pc_gfun_eval(&pc->g, t), out);
+}
+
+int pc_stroke_npieces(int nnodes, int closed) {
+    if (nnodes < 2) return 0;
+    return closed ? nnodes : nnodes - 1;
+}
+
+static int has_nan(int d, const double *v) {
+    for (int i = 0; i < d; i++)
+        if (isnan(v[i])) return 1;
+    return 0;
+}
+
+/* unit vector of v (d doubles) into out; PC_TK_EZERO for a zero vector */
+static int unit(int d, const double *v, double *out) {
+    double s = 0;
+    for (int i = 0; i < d; i++) s += v[i] * v[i];
+    s = sqrt(s);
+    if (!isfinite(s)) return PC_TK_ENONFINITE;
+    if (s == 0) return PC_TK_EZERO;
+    for (int i = 0; i < d; i++) out[i] = v[i] / s;
+    return PC_TK_OK;
+}
+
+static double chord(int d, const double *a, const double *b) {
+    double s = 0;
+    for (int i = 0; i < d; i++) s += (b[i] - a[i]) * (b[i] - a[i]);
+    return sqrt(s);
+}
+
+/* the direction at node i: given (row of dir, unless NULL or NaN) or the chord tangent */
+static int direction(const pc_stroke_spec *s, const double *dir, int i, double *out) {
+    int d = s->d, k = s->nnodes;
+    if (dir && !has_nan(d, dir + i * d)) return unit(d, dir + i * d, out);
+    int prev = i - 1, next = i + 1;
+    if (s->closed) {
+        prev = (i + k - 1) % k;
+        next = (i + 1) % k;
+    } else {
+        if (prev < 0) prev = 0;
+        if (next > k - 1) next = k - 1;
+    }
+    double v[PC_CURVE_MAXDIM];
+    for (int j = 0; j < d; j++) v[j] = s->nodes[next * d + j] - s->nodes[prev * d + j];
+    return unit(d, v, out);
+}
+
+int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad) {
+    int d = s->d, k = s->nnodes;
+    if (bad) *bad = -1;
+    if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) return PC_TK_EDIM;
+    for (int i = 0; i < k * d; i++)
+        if (!isfinite(s->nodes[i])) {
+            if (bad) *bad = i / d;
+            return PC_TK_ENONFINITE;
+        }
+    int np = pc_stroke_npieces(k, s->closed);
+    for (int i = 0; i < np; i++) {
+        int j = (i + 1) % k;   /* the node the piece ends at */
+        const double *a = s->nodes + i * d, *b = s->nodes + j * d;
+        double eo[PC_CURVE_MAXDIM], ei[PC_CURVE_MAXDIM];
+        int st = direction(s, s->eout ? s->eout : s->ein, i, eo);
+        if (st) {
+            if (bad) *bad = i;
+            return st;
+        }
+        st = direction(s, s->ein, j, ei);
+        if (st) {
+            if (bad) *bad = j;
+            return st;
+        }
+        double c = chord(d, a, b);
+        double ro = (s->rout && !isnan(s->rout[i])) ? s->rout[i] : c / 3.0;
+        double ri = (s->rin && !isnan(s->rin[j])) ? s->rin[j] : c / 3.0;
+        if (!isfinite(ro) || !isfinite(ri)) {
+            if (bad) *bad = isfinite(ro) ? j : i;
+            return PC_TK_ENONFINITE;
+        }
+        pc_piece *pc = &out[i];
+        memset(pc, 0, sizeof *pc);
+        for (int x = 0; x < d; x++) {
+            pc->a[x] = a[x];
+            pc->b[x] = b[x];
+            pc->p[x] = a[x] + ro * eo[x];
+            pc->q[x] = b[x] - ri * ei[x];
+        }
+        pc->g.kind = PC_G_HALF;
+        st = pc_hspline_init(&pc->g.h, s->n ? s->n[i] : 2.0, s->m ? s->m[i] : 2.0,
+                             s->t0 ? s->t0[i] : 0.5);
+        if (st) {
+            if (bad) *bad = i;
+            return st;
+        }
+    }
+    return PC_TK_OK;
+}

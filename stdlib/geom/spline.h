@@ -1,0 +1,60 @@
+/* Stepanov's "quadrilateral spline" and the one-stroke curve through nodes
+ * (stepanov_examples.md §H rows 7, 8, 25; examples 5, 6, 9, 10, 11, 13, 17, 29, 32, 33, 34).
+ *
+ * A piece joins node A to node B.  Its quadrilateral is A, P, Q, B with P = A + rout*eout (the
+ * outgoing side) and Q = B - rin*ein (the incoming side at B).  For a parameter t:
+ *   M = A + t (P - A),   N = Q + t (B - Q),   X = M + g(t) (N - M)
+ * with a smoothstep g (g(0) = 0, g(1) = 1, g'(0) = g'(1) = 0), so X(0) = A with direction
+ * P - A and X(1) = B with direction B - Q.  t outside [0, 1] extrapolates (example 5).
+ * Points are plain arrays of d doubles, d <= PC_CURVE_MAXDIM. */
+#ifndef PC_SPLINE_H
+#define PC_SPLINE_H
+
+#include "smooth.h"
+
+#define PC_CURVE_MAXDIM 4
+
+/* Directions from angles in radians.  2-D: (cos u, -sin u) when ccw is nonzero, the article's
+ * w = y - r sin u, counter-clockwise on a y-down screen (examples 10, 11, 17, 32); else
+ * (cos u, sin u).  3-D (example 33): e(lon, lat) = (cos lon cos lat, sin lon cos lat, sin lat). */
+void pc_dir2(double u, int ccw, double out[2]);
+void pc_dir3(double lon, double lat, double out[3]);
+
+/* X = M + g (N - M) as above, for a given value g = g(t). */
+void pc_qspline(int d, const double *a, const double *p, const double *q, const double *b,
+                double t, double g, double *out);
+
+typedef struct {
+    double a[PC_CURVE_MAXDIM], p[PC_CURVE_MAXDIM], q[PC_CURVE_MAXDIM], b[PC_CURVE_MAXDIM];
+    pc_gfun g;
+} pc_piece;
+
+/* X(t) of one piece with its own smoothstep. */
+void pc_piece_eval(int d, const pc_piece *pc, double t, double *out);
+
+/* A one-stroke curve through nnodes nodes (example 10's program, any dimension):
+ *  - ein/eout: per node the incoming/outgoing direction (rows of d; normalised here).  NULL,
+ *    or a row containing a NaN, means the chord tangent N[i+1] - N[i-1] (cyclic when closed,
+ *    one-sided at the ends of an open curve), as in the reconstructions of examples 13, 29.
+ *    eout NULL means eout = ein.
+ *  - rin/rout: per node the side lengths; NULL or a NaN entry means a third of the chord of
+ *    the piece that uses it (rout[i]: chord i -> i+1; rin[i]: chord i-1 -> i).
+ *  - n, m, t0: per node, the half-spline of the piece leaving that node; NULL means 2, 2, 1/2.
+ * An open curve has nnodes - 1 pieces, a closed one nnodes (the last joins node nnodes-1 to
+ * node 0). */
+typedef struct {
+    int d, nnodes, closed;
+    const double *nodes;
+    const double *ein, *eout;
+    const double *rin, *rout;
+    const double *n, *m, *t0;
+} pc_stroke_spec;
+
+int pc_stroke_npieces(int nnodes, int closed);
+/* Fill out[0 .. npieces-1].  PC_TK_EDIM (d out of 1..PC_CURVE_MAXDIM, fewer than 2 nodes),
+ * PC_TK_EZERO (a zero direction, or coincident neighbours for a chord tangent),
+ * PC_TK_EDOMAIN (bad n, m, t0), PC_TK_ENONFINITE.  On error *bad (if not NULL) is the index
+ * of the offending node. */
+int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad);
+
+#endif

@@ -1,0 +1,72 @@
+/* The closed Fourier curve of example 12: it passes through its 2n points, reproduces a
+ * trigonometric polynomial exactly, and its coefficients are the listing's sums. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include "fourier.h"
+
+#define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
+
+/* example 12's points: astroid + .3 * (QBasic's first RND values) -- here a fixed pseudo-noise */
+static void test_interpolates(void **state) {
+    (void)state;
+    enum { N = 16 };
+    double x[2 * N], y[2 * N], ax[N + 1], bx[N + 1], ay[N + 1], by[N + 1];
+    for (int i = 0; i < 2 * N; i++) {
+        double u = i * M_PI / N;
+        x[i] = pow(cos(u), 3) + .3 * fmod(i * 0.7055475 + 0.123, 1.0);
+        y[i] = pow(sin(u), 3) + .3 * fmod(i * 0.5334240 + 0.456, 1.0);
+    }
+    assert_int_equal(pc_fourier_coef(N, x, 1, ax, bx), PC_TK_OK);
+    assert_int_equal(pc_fourier_coef(N, y, 1, ay, by), PC_TK_OK);
+    for (int i = 0; i < 2 * N; i++) {
+        double u = i * M_PI / N;
+        NEAR(pc_fourier_eval(N, ax, bx, u), x[i], 1e-12);
+        NEAR(pc_fourier_eval(N, ay, by, u), y[i], 1e-12);
+    }
+    /* closed: period 2 pi */
+    NEAR(pc_fourier_eval(N, ax, bx, 2 * M_PI + 0.3), pc_fourier_eval(N, ax, bx, 0.3), 1e-12);
+    /* the listing's sums */
+    double a3 = 0, b5 = 0;
+    for (int i = 0; i < 2 * N; i++) {
+        a3 += x[i] * cos(3 * i * M_PI / N) / N;
+        b5 += x[i] * sin(5 * i * M_PI / N) / N;
+    }
+    NEAR(ax[3], a3, 1e-13);
+    NEAR(bx[5], b5, 1e-13);
+    NEAR(bx[0], 0, 0);
+    NEAR(bx[N], 0, 0);
+}
+
+static void test_exact(void **state) {
+    (void)state;
+    /* samples of 1 + 2 cos u - 3 sin 2u + .5 cos 4u on 2n = 8 points: coefficients exact */
+    enum { N = 4 };
+    double f[2 * N * 2], a[N + 1], b[N + 1];
+    for (int i = 0; i < 2 * N; i++) {
+        double u = i * M_PI / N;
+        f[2 * i] = 1 + 2 * cos(u) - 3 * sin(2 * u) + .5 * cos(4 * u);
+        f[2 * i + 1] = -99;   /* stride 2: never read */
+    }
+    assert_int_equal(pc_fourier_coef(N, f, 2, a, b), PC_TK_OK);
+    NEAR(a[0], 2, 1e-14);
+    NEAR(a[1], 2, 1e-14);
+    NEAR(b[2], -3, 1e-14);
+    NEAR(a[2], 0, 1e-14);
+    NEAR(a[4], 1, 1e-14);   /* the Nyquist term enters as a_n / 2 */
+    for (double u = 0; u < 6.3; u += 0.1)
+        NEAR(pc_fourier_eval(N, a, b, u), 1 + 2 * cos(u) - 3 * sin(2 * u) + .5 * cos(4 * u), 1e-13);
+    assert_int_equal(pc_fourier_coef(0, f, 1, a, b), PC_TK_EDOMAIN);
+    f[2] = NAN;
+    assert_int_equal(pc_fourier_coef(N, f, 2, a, b), PC_TK_ENONFINITE);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_interpolates),
+        cmocka_unit_test(test_exact),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
