@@ -107,6 +107,34 @@ const char *pcl_fname(lua_State *L) {
     return "pointcalc";
 }
 
+int pcl_arg_shown(lua_State *L, int arg) {
+    lua_Debug ar;
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.namewhat &&
+        strcmp(ar.namewhat, "method") == 0)
+        return arg - 1;                                 /* A:dist(B): B is argument #1 */
+    return arg;
+}
+
+/* What the caller passed, as pcl_argerror shows it: numbers by value, else the type. */
+static const char *got(lua_State *L, int arg) {
+    if (lua_type(L, arg) == LUA_TNUMBER) {
+        if (lua_isinteger(L, arg)) return lua_pushfstring(L, "%I", lua_tointeger(L, arg));
+        return lua_pushfstring(L, "%f", lua_tonumber(L, arg));
+    }
+    if (luaL_getmetafield(L, arg, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
+    return luaL_typename(L, arg);
+}
+
+int pcl_arg_error(lua_State *L, int arg, const char *what, const char *expected) {
+    const char *name = pcl_fname(L);
+    int shown = pcl_arg_shown(L, arg);
+    const char *value = got(L, arg);
+    if (what && what[0])
+        return luaL_error(L, "%s: argument #%d (%s) must be %s, got %s", name, shown, what,
+                          expected, value);
+    return luaL_error(L, "%s: argument #%d must be %s, got %s", name, shown, expected, value);
+}
+
 static const char MEMBERSHIP[] =
     "the coefficients of a point equation must sum to 1 for a point and to 0 for a vector "
     "(the membership condition)";
@@ -125,30 +153,31 @@ static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
 }
 
 static const char *argctx(lua_State *L, int arg, const char *what) {
+    int shown = pcl_arg_shown(L, arg);
     if (what && what[0])
-        return lua_pushfstring(L, "%s: argument #%d (%s)", pcl_fname(L), arg, what);
-    return lua_pushfstring(L, "%s: argument #%d", pcl_fname(L), arg);
+        return lua_pushfstring(L, "%s: argument #%d (%s)", pcl_fname(L), shown, what);
+    return lua_pushfstring(L, "%s: argument #%d", pcl_fname(L), shown);
 }
 
-int pcl_dimerror(lua_State *L, int arg, const char *what, int got, int dim, int dim_arg) {
+int pcl_dimerror(lua_State *L, int arg, const char *what, int got_dim, int dim, int dim_arg) {
     const char *ctx = argctx(L, arg, what);
     if (dim_arg > 0)
         return luaL_error(L, "%s is %d-D, but argument #%d is %d-D: dimensions cannot be mixed",
-                          ctx, got, dim_arg, dim);
-    return luaL_error(L, "%s must be %d-D, got %d-D", ctx, dim, got);
+                          ctx, got_dim, pcl_arg_shown(L, dim_arg), dim);
+    return luaL_error(L, "%s must be %d-D, got %d-D", ctx, dim, got_dim);
 }
 
 double pcl_checkfinite(lua_State *L, int arg, const char *what) {
     int isnum;
     double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum || lua_type(L, arg) != LUA_TNUMBER) pcl_argerror(L, arg, what, "a number");
-    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
+    if (!isnum || lua_type(L, arg) != LUA_TNUMBER) pcl_arg_error(L, arg, what, "a number");
+    if (!isfinite(v)) pcl_arg_error(L, arg, what, "a finite number");
     return v;
 }
 
 pcl_value *pcl_checkvalue(lua_State *L, int arg, const char *what) {
     pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point or vector");
+    if (!p) pcl_arg_error(L, arg, what, "a point or vector");
     return p;
 }
 
@@ -161,7 +190,7 @@ static int loc_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim
 
 int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point");
+    if (!p) pcl_arg_error(L, arg, what, "a point");
     return loc_of(L, p, arg, what, dim, dim_arg, out);
 }
 
@@ -181,26 +210,26 @@ static int vec_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim
 
 int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a vector");
+    if (!p) pcl_arg_error(L, arg, what, "a vector");
     return vec_of(L, p, arg, what, dim, dim_arg, out);
 }
 
 /* Fast local variants using the upvalue metatable. */
 static inline pcl_value *checkval(lua_State *L, int arg, const char *what) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point or vector");
+    if (!p) pcl_arg_error(L, arg, what, "a point or vector");
     return p;
 }
 
 static int checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point");
+    if (!p) pcl_arg_error(L, arg, what, "a point");
     return loc_of(L, p, arg, what, dim, dim_arg, out);
 }
 
 static int checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a vector");
+    if (!p) pcl_arg_error(L, arg, what, "a vector");
     return vec_of(L, p, arg, what, dim, dim_arg, out);
 }
 
@@ -261,8 +290,8 @@ static int make(lua_State *L, double weight) {
         if (!isnum || !isfinite(v) || lua_type(L, i + 1) != LUA_TNUMBER) {
             char buf[24];
             const char *what = coord_name(i, buf, sizeof buf);
-            if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER) pcl_argerror(L, i + 1, what, "a number");
-            pcl_argerror(L, i + 1, what, "a finite number");
+            if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER) pcl_arg_error(L, i + 1, what, "a number");
+            pcl_arg_error(L, i + 1, what, "a finite number");
         }
         p->h[i] = v;
     }
@@ -473,8 +502,8 @@ static int l_lerp(lua_State *L) {
         lua_pushnumber(L, x * (1 - t) + y * t);
         return 1;
     }
-    if (!a) pcl_argerror(L, 1, "A", "a point or vector");
-    if (!b) pcl_argerror(L, 2, "B", "a point or vector");
+    if (!a) pcl_arg_error(L, 1, "A", "a point or vector");
+    if (!b) pcl_arg_error(L, 2, "B", "a point or vector");
     if (a->n != b->n) pcl_dimerror(L, 2, "B", b->n, a->n, 1);
     pcl_checkfinite(L, 3, "t");
     return 0;
@@ -489,7 +518,7 @@ static int l_bar(lua_State *L) {
 static int l_mid(lua_State *L) {
     int m = lua_gettop(L);
     pcl_value *a = checkval(L, 1, "A");
-    if (m < 2) pcl_argerror(L, 2, "B", "a point or vector");
+    if (m < 2) pcl_arg_error(L, 2, "B", "a point or vector");
     int n = a->n;
     for (int j = 2; j <= m; j++) {
         pcl_value *b = checkval(L, j, NULL);
@@ -614,7 +643,7 @@ static int l_sigma(lua_State *L) {
 /* A point or an improper point (weight 0) at arg, as a value of dimension n. */
 static pcl_value *check_proj(lua_State *L, int arg, const char *what, int n, int dim_arg) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point (or a point at infinity)");
+    if (!p) pcl_arg_error(L, arg, what, "a point (or a point at infinity)");
     if (p->n != n) pcl_dimerror(L, arg, what, p->n, n, dim_arg);
     if (pc_kind_of(p->h[n]) == PC_KIND_WEIGHTED) location_error(L, argctx(L, arg, what), p);
     return p;
@@ -650,8 +679,8 @@ static int l_divide(lua_State *L) {
     checkloc(L, 2, "Y", n, 1, y);
     int isnum;
     double lam = lua_tonumberx(L, 3, &isnum);
-    if (!isnum) pcl_argerror(L, 3, "lambda", "a number");
-    if (isnan(lam)) pcl_argerror(L, 3, "lambda", "a number, not NaN");
+    if (!isnum) pcl_arg_error(L, 3, "lambda", "a number");
+    if (isnan(lam)) pcl_arg_error(L, 3, "lambda", "a number, not NaN");
     double xh[PC_MAXDIM + 1], yh[PC_MAXDIM + 1];
     memcpy(xh, x, sizeof(double) * (size_t)n);
     memcpy(yh, y, sizeof(double) * (size_t)n);
@@ -807,7 +836,7 @@ static int l_near(lua_State *L) {
     double eps = 1e-9;
     if (!lua_isnoneornil(L, 3)) {
         eps = pcl_checkfinite(L, 3, "eps");
-        if (eps < 0) pcl_argerror(L, 3, "eps", "a non-negative number");
+        if (eps < 0) pcl_arg_error(L, 3, "eps", "a non-negative number");
     }
     if (lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
         double a = lua_tonumber(L, 1), b = lua_tonumber(L, 2);

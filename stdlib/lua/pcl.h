@@ -14,6 +14,8 @@
 
 /* module openers, called by luaopen_pointcalc in this order */
 void pcl_open_point(lua_State *L);
+void pcl_open_simplex(lua_State *L);   /* simplex() (l_simplex.c) */
+void pcl_open_affine(lua_State *L);    /* affine, affine.frame (l_affine.c) */
 void pcl_open_draw(lua_State *L);
 void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
 

@@ -18,6 +18,8 @@ static void run_lua_helpers(lua_State *L) {
 int luaopen_pointcalc(lua_State *L) {
     lua_newtable(L);
     pcl_open_point(L);
+    pcl_open_simplex(L);
+    pcl_open_affine(L);
     pcl_open_draw(L);
     pcl_open_qb(L);
     run_lua_helpers(L);
