@@ -148,7 +148,7 @@ static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
                           "add it to a point, e.g. P(0, 0) + v", ctx, text, MEMBERSHIP);
     const char *wt = push_num_text(L, w);
     return luaL_error(L, "%s has weight %s, so it is neither a point (weight 1) nor a vector "
-                      "(weight 0): %s; write offsets as vectors, e.g. V(x, y)*100 + P(320, 240), "
+                      "(weight 0): %s; write offsets with V(), e.g. V(x, y)*100 + P(320, 240), "
                       "or use normalize(p) for a projective point", ctx, wt, MEMBERSHIP);
 }
 

@@ -61,7 +61,7 @@ err(function() return (P(1, 2) * 100 + P(320, 240)).x end,
 err(function() return (P(1, 2) * 100 + P(320, 240)).x end,
     "the coefficients of a point equation must sum to 1 for a point and to 0 for a vector (the membership condition)",
     "membership condition named")
-err(function() return (P(1, 2) * 100 + P(320, 240)).x end, "e.g. V(x, y)*100 + P(320, 240)", "suggests V()")
+err(function() return (P(1, 2) * 100 + P(320, 240)).x end, "write offsets with V(), e.g. V(x, y)*100 + P(320, 240)", "suggests V()")
 err(function() return (A * 2)[2] end, "reading p[2]: the value 2*P(1, 2) has weight 2", "weighted p[i]")
 eq(normalize(A * 2 + B).x, 7 / 3, "normalize divides by the weight")
 eq(weight(A * 2 + B), 3, "weight()")
