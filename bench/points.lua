@@ -83,7 +83,7 @@ local function run(mode)
                       mode .. " GC:", tn, tl, tl / tn, to, to / tn))
 end
 
-print(string.format("Stepanov example 2, %d steps, 3 lerps per step (%s)", N, _VERSION))
+print(string.format("Stepanov example 2, %d steps, 3 lerps per step", N))
 run("generational")
 run("incremental")
 collectgarbage("generational")
