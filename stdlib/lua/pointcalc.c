@@ -22,6 +22,10 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_affine(L);
     pcl_open_draw(L);
     pcl_open_qb(L);
+    pcl_open_smooth(L);
+    pcl_open_curves(L);
+    pcl_open_cmap(L);
+    pcl_open_complex(L);
     run_lua_helpers(L);
     lua_pushliteral(L, "pointcalc " PCL_VERSION);
     lua_setfield(L, -2, "_VERSION");

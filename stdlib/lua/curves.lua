@@ -1,0 +1,367 @@
+-- The curve side of the curvilinear-coordinates toolkit (docs/toolkit.md): plot, stroke{...},
+-- and the drawing methods of the curve objects made by spline2, stroke and fourier
+-- (c:each{...}, c:draw{...}).  Also the helpers shared with curvilinear.lua, kept in the
+-- private table _tk: sampling ranges, brushes, map results.
+local M = ...
+local tk = M._tk
+local floor, cos, sin, pi = math.floor, math.cos, math.sin, math.pi
+local type, select, tostring = type, select, tostring
+
+-- ---- errors in the house style ------------------------------------------------------------
+
+local function shown(v)
+  if type(v) == "number" then
+    if math.type(v) == "integer" then return tostring(v) end
+    return string.format("%.14g", v)
+  end
+  local mt = getmetatable(v)
+  if type(mt) == "string" then return mt end
+  if type(mt) == "table" and type(mt.__name) == "string" then return mt.__name end
+  return type(v)
+end
+tk.shown = shown
+
+-- "FNAME: argument #N (WHAT) must be EXPECTED, got VALUE", raised at the caller's caller
+-- (level 3: the script line that called the toolkit function)
+function tk.argerror(fname, n, what, expected, value, level)
+  error(string.format("%s: argument #%d (%s) must be %s, got %s", fname, n, what, expected,
+    shown(value)), level or 3)
+end
+
+-- "FNAME: FIELD must be EXPECTED, got VALUE" for fields of an options table
+function tk.fielderror(fname, field, expected, value, level)
+  error(string.format("%s: %s must be %s, got %s", fname, field, expected, shown(value)),
+    level or 3)
+end
+
+local function ispoint(v) return getmetatable(v) == "point" end
+tk.ispoint = ispoint
+
+-- a curve object of spline2, stroke or fourier
+function tk.iscurve(v)
+  local mt = type(v) == "userdata" and getmetatable(v)
+  return type(mt) == "table" and mt.__name == "curve"
+end
+
+local function callable(f)
+  if type(f) == "function" then return true end
+  local mt = getmetatable(f)
+  return type(mt) == "table" and mt.__call ~= nil
+end
+tk.callable = callable
+
+-- ---- sampling ranges ------------------------------------------------------------------------
+
+-- An iterator over the parameter values of spec:
+--   nil                      lo .. hi with `step` (default (hi - lo)/1000)
+--   {a, b [, step] [, qb = true]}   like `for t = a, b, step` (step default (b - a)/1000);
+--                            qb = true runs the loop as QBasic does (float32, qb.range)
+--   a function               an iterator used as is (e.g. qb.range(0, 1, .001), one pass)
+-- qb (the option of the whole call) makes every table range QBasic-faithful.
+function tk.steps(spec, lo, hi, qb, fname, field)
+  local a, b, step
+  if spec == nil then
+    a, b = lo, hi
+  elseif type(spec) == "function" then
+    return spec
+  elseif type(spec) == "table" then
+    a, b, step = spec[1], spec[2], spec[3]
+    if spec.qb ~= nil then qb = spec.qb end
+    if type(a) ~= "number" or type(b) ~= "number" or (step ~= nil and type(step) ~= "number") then
+      tk.fielderror(fname or "draw", field or "t", "a range {a, b [, step]}", spec, 4)
+    end
+  else
+    tk.fielderror(fname or "draw", field or "t", "a range {a, b [, step]} or an iterator", spec, 4)
+  end
+  step = step or (b - a) / 1000
+  if step == 0 or step ~= step then
+    tk.fielderror(fname or "draw", (field or "t") .. " step", "a nonzero number", step, 4)
+  end
+  if qb then
+    if not (M.qb and M.qb.range) then error((fname or "draw") .. ": qb = true needs qb.range", 4) end
+    return M.qb.range(a, b, step)
+  end
+  -- exactly Lua's numeric for (the accumulation of a plain Lua port)
+  local t, first = a, true
+  if step > 0 then
+    return function()
+      if first then first = false else t = t + step end
+      if t <= b then return t end
+    end
+  end
+  return function()
+    if first then first = false else t = t + step end
+    if t >= b then return t end
+  end
+end
+
+-- ---- brushes ----------------------------------------------------------------------------------
+
+-- The plotting function of opts.brush: "pset" (one pixel, the default), "dot" (the listings'
+-- `circle (x, y), 1` brush, about 3 px wide), or function(x, y, color).
+function tk.brush(opts, fname)
+  local brush, color = opts.brush or "pset", opts.color
+  if brush == "pset" then
+    local pset = M.pset
+    if color == nil then return function(x, y) pset(x, y) end end
+    return function(x, y) pset(x, y, color) end
+  elseif brush == "dot" then
+    local circle = M.circle
+    return function(x, y) circle(x, y, 1, color) end
+  elseif callable(brush) then
+    return function(x, y) brush(x, y, color) end
+  end
+  tk.fielderror(fname or "draw", "brush", '"pset", "dot" or a function(x, y, color)', brush, 4)
+end
+
+-- x, y of a map's result: two numbers or a 2-D point
+local function xy(a, b)
+  if type(a) == "number" then return a, b end
+  if ispoint(a) then return a.x, a.y end
+  error("a map or curve must return a 2-D point or two numbers, got " .. shown(a), 3)
+end
+tk.xy = xy
+
+-- coordinates of a point or numbers, all of them
+local function coords(a, ...)
+  if type(a) == "number" then return a, ... end
+  if ispoint(a) then return a:coords() end
+  error("a curve must return a point or numbers, got " .. shown(a), 3)
+end
+tk.coords = coords
+
+-- A numeric post-map from opts.map: nil, a projection or system (anything with :xy), or a
+-- function(X) -> point or x, y called with a point.
+function tk.postmap(map, fname)
+  if map == nil then return nil end
+  local mt = getmetatable(map)
+  local okxy = (type(map) == "table" or (type(mt) == "table" and mt.__name == "projection"))
+    and map.xy
+  if okxy then return function(...) return map:xy(...) end end
+  if callable(map) then
+    local P = M.P
+    return function(...) return xy(map(P(...))) end
+  end
+  tk.fielderror(fname or "draw", "map", "a function, a projection or a coordinate system", map, 4)
+end
+
+-- Walk the samples of a curve: fn(x, y [, z ...]) for each.  curve is a function of t
+-- (returning a point or numbers), a curve object (each piece over opts.t, default its own
+-- range), or anything with :xy(t).
+function tk.walk(curve, opts, fname, fn)
+  local qb = opts.qb
+  if tk.iscurve(curve) then
+    local lo, hi = curve.lo, curve.hi
+    if curve.kind == "fourier" then
+      for t in tk.steps(opts.t, lo, hi, qb, fname) do fn(curve:xy(t)) end
+    else
+      for i = 1, curve.pieces do
+        for t in tk.steps(opts.t, lo, hi, qb, fname) do fn(curve:piece_xy(i, t)) end
+      end
+    end
+    return
+  end
+  if not callable(curve) then
+    tk.argerror(fname, 1, "curve", "a function of t or a curve", curve, 4)
+  end
+  local spec = opts.t
+  if spec == nil then error(fname .. ": give the parameter range t = {a, b, step}", 4) end
+  for t in tk.steps(spec, 0, 1, qb, fname) do fn(coords(curve(t))) end
+end
+
+-- ---- plot -------------------------------------------------------------------------------------
+
+-- plot(f, {t = {a, b, step}, brush = "pset"|"dot"|fn, color = c, map = m, qb = false})
+-- draws the curve t -> f(t) (a 2-D point or x, y); with map, f may be 3-D (map projects).
+function M.plot(f, opts)
+  opts = opts or {}
+  if type(opts) ~= "table" then tk.argerror("plot", 2, "opts", "a table", opts) end
+  local plot, post = tk.brush(opts, "plot"), tk.postmap(opts.map, "plot")
+  if post then
+    tk.walk(f, opts, "plot", function(...) plot(post(...)) end)
+  else
+    tk.walk(f, opts, "plot", plot)
+  end
+end
+
+-- ---- the curve objects' methods -------------------------------------------------------------
+
+local methods = tk.curve_methods
+
+-- c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t
+function methods.each(c, opts)
+  opts = opts or {}
+  local P = M.P
+  local lo, hi = c.lo, c.hi
+  local np = c.kind == "fourier" and 1 or c.pieces
+  local i, iter = 1, tk.steps(opts.t, lo, hi, opts.qb, "c:each")
+  return function()
+    while true do
+      local t = iter()
+      if t ~= nil then
+        if c.kind == "fourier" then return P(c:xy(t)), 1, t end
+        return P(c:piece_xy(i, t)), i, t
+      end
+      i = i + 1
+      if i > np then return nil end
+      iter = tk.steps(opts.t, lo, hi, opts.qb, "c:each")
+    end
+  end
+end
+
+-- c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn, color = c, map = m, qb = false}
+function methods.draw(c, opts)
+  opts = opts or {}
+  local plot, post = tk.brush(opts, "c:draw"), tk.postmap(opts.map, "c:draw")
+  if post then
+    tk.walk(c, opts, "c:draw", function(...) plot(post(...)) end)
+  else
+    if c.dim ~= 2 then
+      error(string.format("c:draw: a %d-D curve needs map = a projection (e.g. oblique(...))",
+        c.dim), 2)
+    end
+    tk.walk(c, opts, "c:draw", plot)
+  end
+end
+
+-- ---- stroke{...} ------------------------------------------------------------------------------
+
+local NAN = 0 / 0
+
+-- per-node numbers: a number (every node), a list (nil entries -> dflt), or nil (dflt)
+local function pernode(s, name, k, dflt)
+  local v = s[name]
+  local out = {}
+  if v == nil or type(v) == "number" then
+    local x = v == nil and dflt or v
+    for i = 1, k do out[i] = x end
+    return out
+  end
+  if type(v) ~= "table" then tk.fielderror("stroke", name, "a number or a list of numbers", v, 4) end
+  for i = 1, k do
+    local x = v[i]
+    if x == nil then x = dflt
+    elseif type(x) ~= "number" then tk.fielderror("stroke", name .. "[" .. i .. "]", "a number", x, 4) end
+    out[i] = x
+  end
+  return out
+end
+
+local function vectors(s, name, k, d)
+  local v = s[name]
+  if v == nil then return nil end
+  if type(v) ~= "table" then tk.fielderror("stroke", name, "a list of vectors", v, 4) end
+  local out = {}
+  for i = 1, k do
+    local e = v[i]
+    if e == nil then
+      for j = 1, d do out[(i - 1) * d + j] = NAN end
+    else
+      if not ispoint(e) or M.weight(e) ~= 0 then
+        tk.fielderror("stroke", name .. "[" .. i .. "]", "a vector V(...)", e, 4)
+      end
+      if #e ~= d then
+        tk.fielderror("stroke", name .. "[" .. i .. "]", "a " .. d .. "-D vector", e, 4)
+      end
+      for j = 1, d do out[(i - 1) * d + j] = e[j] end
+    end
+  end
+  return out
+end
+
+-- stroke{nodes = {P, ...} | x = {...}, y = {...} [, z = {...}],
+--        uin = ..., kink = ... [, uin2 = ..., kink2 = ...]   angles (turns unless radians = true)
+--        | ein = {V, ...} [, eout = {V, ...}]                explicit directions
+--        rin = ..., rout = ..., n = ..., m = ..., t0 = ...,  per node (number = every node)
+--        g = smoothstep, closed = false, ccw = true, radians = false}
+function M.stroke(s)
+  local fn = "stroke"
+  if type(s) ~= "table" then tk.argerror(fn, 1, "spec", "a table {nodes = {...}, ...}", s) end
+  -- the nodes
+  local nodes, d, k = {}, nil, nil
+  if s.nodes ~= nil then
+    if type(s.nodes) ~= "table" then tk.fielderror(fn, "nodes", "a list of points", s.nodes) end
+    k = #s.nodes
+    for i = 1, k do
+      local p = s.nodes[i]
+      if not ispoint(p) or M.weight(p) ~= 1 then
+        tk.fielderror(fn, "nodes[" .. i .. "]", "a point", p)
+      end
+      local n = #p
+      d = d or n
+      if n ~= d then
+        error(string.format("stroke: nodes[%d] is %d-D, but nodes[1] is %d-D: dimensions cannot be mixed",
+          i, n, d), 2)
+      end
+      for j = 1, d do nodes[(i - 1) * d + j] = p[j] end
+    end
+  elseif s.x ~= nil then
+    local cols = { s.x, s.y, s.z }
+    d = s.z ~= nil and 3 or 2
+    for j = 1, d do
+      if type(cols[j]) ~= "table" then
+        tk.fielderror(fn, ({ "x", "y", "z" })[j], "a list of numbers", cols[j])
+      end
+    end
+    k = #s.x
+    for i = 1, k do
+      for j = 1, d do
+        local v = cols[j][i]
+        if type(v) ~= "number" then
+          tk.fielderror(fn, ({ "x", "y", "z" })[j] .. "[" .. i .. "]", "a number", v)
+        end
+        nodes[(i - 1) * d + j] = v
+      end
+    end
+  else
+    error("stroke: give the nodes: nodes = {P(...), ...} or x = {...}, y = {...}", 2)
+  end
+  if k < 2 then error("stroke: a stroke needs at least 2 nodes, got " .. k, 2) end
+  if d > 4 then error("stroke: nodes must be 1-D to 4-D, got " .. d .. "-D", 2) end
+  -- the directions
+  local ein, eout
+  local angles = s.uin ~= nil or s.kink ~= nil or s.uin2 ~= nil or s.kink2 ~= nil
+  if s.ein ~= nil or s.eout ~= nil then
+    if angles then error("stroke: give the directions either as angles (uin, kink) or as vectors (ein, eout), not both", 2) end
+    ein = vectors(s, "ein", k, d)
+    eout = vectors(s, "eout", k, d) or ein
+  elseif angles then
+    if d ~= 2 and d ~= 3 then error("stroke: angles need 2-D or 3-D nodes, got " .. d .. "-D", 2) end
+    local unit = s.radians and 1 or 2 * pi
+    local uin, kink = pernode(s, "uin", k, NAN), pernode(s, "kink", k, 0)
+    ein, eout = {}, {}
+    if d == 2 then
+      local ys = (s.ccw == false) and 1 or -1
+      for i = 1, k do
+        local u, uo = uin[i] * unit, (uin[i] + kink[i]) * unit
+        ein[2 * i - 1], ein[2 * i] = cos(u), ys * sin(u)
+        eout[2 * i - 1], eout[2 * i] = cos(uo), ys * sin(uo)
+      end
+    else
+      local uin2, kink2 = pernode(s, "uin2", k, 0), pernode(s, "kink2", k, 0)
+      for i = 1, k do
+        local u1, u2 = uin[i] * unit, uin2[i] * unit
+        local o1, o2 = (uin[i] + kink[i]) * unit, (uin2[i] + kink2[i]) * unit
+        ein[3 * i - 2], ein[3 * i - 1], ein[3 * i] = cos(u1) * cos(u2), sin(u1) * cos(u2), sin(u2)
+        eout[3 * i - 2], eout[3 * i - 1], eout[3 * i] = cos(o1) * cos(o2), sin(o1) * cos(o2), sin(o2)
+      end
+    end
+  end
+  -- side lengths and half-splines
+  local rin = s.rin ~= nil and pernode(s, "rin", k, NAN) or nil
+  local rout = s.rout ~= nil and pernode(s, "rout", k, NAN) or nil
+  local n, m, t0 = pernode(s, "n", k, 2), pernode(s, "m", k, 2), pernode(s, "t0", k, .5)
+  local closed = s.closed and true or false
+  local last = closed and k or k - 1
+  for i = 1, last do
+    if not (n[i] > 0) then tk.fielderror(fn, "n[" .. i .. "]", "a positive number", n[i]) end
+    if not (m[i] > 0) then tk.fielderror(fn, "m[" .. i .. "]", "a positive number", m[i]) end
+    if not (t0[i] > 0 and t0[i] < 1) then
+      tk.fielderror(fn, "t0[" .. i .. "]", "a number in (0, 1)", t0[i])
+    end
+  end
+  if s.g ~= nil and not callable(s.g) then tk.fielderror(fn, "g", "a smoothstep (a function of t)", s.g) end
+  local c, _, bad, msg = tk.stroke(d, closed, nodes, ein, eout, rin, rout, n, m, t0, s.g)
+  if not c then error(string.format("stroke: node %d: %s", bad, msg), 2) end
+  return c
+end

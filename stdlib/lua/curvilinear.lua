@@ -1,0 +1,214 @@
+-- Curvilinear coordinate systems (docs/toolkit.md): a system is a map (t1, t2) -> point that
+-- draws its own coordinate grid and carries any curve given in (t1, t2) through it, "as a
+-- lens" (Stepanov's method).  Builders: curvilinear(f), bilinear(P0, P1, P2, P3), ruled(A, B),
+-- graphs(f, g), patch(S0, S1, S2, S3), with the helpers graph_on(A, B, f) and
+-- screenmap(x0, y0, a).  Runs after curves.lua (file-name order), whose helpers it uses.
+local M = ...
+local tk = M._tk
+local xy, steps = tk.xy, tk.steps
+
+local System = {}
+System.__index = System
+System.__name = "curvilinear system"
+
+local function new(f)
+  return setmetatable({ _xy = f }, System)
+end
+
+-- C(t1, t2) -> the point;  C:xy(t1, t2) -> its coordinates
+function System.__call(self, t1, t2) return M.P(self._xy(t1, t2)) end
+function System:xy(t1, t2) return self._xy(t1, t2) end
+function System.__tostring() return "curvilinear system" end
+
+local function issystem(v) return getmetatable(v) == System end
+
+-- curvilinear(f): f(t1, t2) returns a point or x, y (or is a system already)
+function M.curvilinear(f)
+  if issystem(f) then return f end
+  if not tk.callable(f) then
+    tk.argerror("curvilinear", 1, "f", "a function (t1, t2) -> point or x, y", f)
+  end
+  return new(function(t1, t2) return xy(f(t1, t2)) end)
+end
+
+local function plotter(opts, fname)
+  local plot, post = tk.brush(opts, fname), tk.postmap(opts.map, fname)
+  if post then return function(...) plot(post(...)) end end
+  return plot
+end
+
+local function checkrange(r, field, fname)
+  if type(r) ~= "table" or type(r[1]) ~= "number" or type(r[2]) ~= "number"
+      or type(r[3]) ~= "number" then
+    tk.fielderror(fname, field, "a range {a, b, step [, fine step]}", r, 4)
+  end
+  return { r[1], r[2], r[3], qb = r.qb }, { r[1], r[2], r[4] or (r[2] - r[1]) / 1000, qb = r.qb }
+end
+
+-- C:grid{t1 = {a, b, step [, fine]}, t2 = {a, b, step [, fine]}, family = "t1"|"t2",
+--        brush = "pset"|"dot"|fn, color = c, map = m, qb = false}
+-- draws the lines t1 = const (t1 = a, a + step, ..., each traced along t2 with t2's fine step)
+-- and the lines t2 = const likewise; family = "t1" draws only the lines t1 = const.
+-- The fine step defaults to a thousandth of the range.
+function System:grid(opts)
+  local fname = "C:grid"
+  if type(opts) ~= "table" then tk.argerror(fname, 1, "opts", "a table {t1 = ..., t2 = ...}", opts) end
+  local plot, f, qb, family = plotter(opts, fname), self._xy, opts.qb, opts.family
+  if family ~= nil and family ~= "t1" and family ~= "t2" then
+    tk.fielderror(fname, "family", '"t1", "t2" or nil (both)', family)
+  end
+  local c1, f1 = checkrange(opts.t1, "t1", fname)
+  local c2, f2 = checkrange(opts.t2, "t2", fname)
+  if family ~= "t2" then
+    for t1 in steps(c1, 0, 1, qb, fname, "t1") do
+      for t2 in steps(f2, 0, 1, qb, fname, "t2") do plot(f(t1, t2)) end
+    end
+  end
+  if family ~= "t1" then
+    for t2 in steps(c2, 0, 1, qb, fname, "t2") do
+      for t1 in steps(f1, 0, 1, qb, fname, "t1") do plot(f(t1, t2)) end
+    end
+  end
+end
+
+-- C:draw(curve, {t = {a, b, step}, brush, color, map, qb}): the curve given in the system's
+-- parameters (a function t -> t1, t2 or a 2-D point (t1, t2), or a curve object) seen
+-- through the system.
+function System:draw(curve, opts)
+  opts = opts or {}
+  local plot, f = plotter(opts, "C:draw"), self._xy
+  tk.walk(curve, opts, "C:draw", function(t1, t2) plot(f(t1, t2)) end)
+end
+
+-- C:pre(g): the system (t1, t2) -> C(g(t1, t2)), g returning two numbers or a 2-D point
+-- (a reparametrisation: a homothety, the plane -> square map squash01, ...)
+function System:pre(g)
+  if not tk.callable(g) then tk.argerror("C:pre", 1, "g", "a function (t1, t2) -> t1', t2'", g) end
+  local f = self._xy
+  return new(function(t1, t2) return f(xy(g(t1, t2))) end)
+end
+
+-- C:post(h): the system (t1, t2) -> h(C(t1, t2)), h(x, y) returning two numbers or a point
+-- (e.g. screenmap(320, 240, 100) from mathematical to screen coordinates)
+function System:post(h)
+  if not tk.callable(h) then tk.argerror("C:post", 1, "h", "a function (x, y) -> x', y'", h) end
+  local f = self._xy
+  return new(function(t1, t2) return xy(h(f(t1, t2))) end)
+end
+
+-- C:clamp{t1 = true, t2 = true, qb = false}: the system with the clamped smoothstep s(t)
+-- (examples 20-22) applied to the chosen parameters (both when none is named).  qb = true
+-- reproduces the listings' strict IF chain: at t exactly 0, 1/2 or 1 the previous s is kept
+-- (starting from 0, as QBasic's undeclared variables do).
+function System:clamp(opts)
+  opts = opts or {}
+  if type(opts) ~= "table" then tk.argerror("C:clamp", 1, "opts", "a table {t1 = ..., t2 = ...}", opts) end
+  local c1, c2 = opts.t1, opts.t2
+  if c1 == nil and c2 == nil then c1, c2 = true, true end
+  local f, clamp = self._xy, M.smooth.clamp
+  if opts.qb then
+    local q, s1, s2 = M.smooth.clamp_qb, 0, 0
+    return new(function(t1, t2)
+      if c1 then s1 = q(t1, s1); t1 = s1 end
+      if c2 then s2 = q(t2, s2); t2 = s2 end
+      return f(t1, t2)
+    end)
+  end
+  return new(function(t1, t2)
+    if c1 then t1 = clamp(t1) end
+    if c2 then t2 = clamp(t2) end
+    return f(t1, t2)
+  end)
+end
+
+-- ---- builders ---------------------------------------------------------------------------------
+
+-- bilinear(P0, P1, P2, P3): X = P0 + t1 (P1 - P0) + t2 (P3 - P0) + t1 t2 (P2 - P3 - P1 + P0)
+function M.bilinear(P0, P1, P2, P3)
+  return new(tk.bilinear(P0, P1, P2, P3))
+end
+
+-- ruled(A, B): C(t1, t2) = A(t1) + t2 (B(t1) - A(t1)); A, B return 2-D points or x, y
+function M.ruled(A, B)
+  if not tk.callable(A) then tk.argerror("ruled", 1, "A", "a curve (a function of t1)", A) end
+  if not tk.callable(B) then tk.argerror("ruled", 2, "B", "a curve (a function of t1)", B) end
+  return new(function(t1, t2)
+    local ax, ay = xy(A(t1))
+    local bx, by = xy(B(t1))
+    return ax + t2 * (bx - ax), ay + t2 * (by - ay)
+  end)
+end
+
+-- graphs(f, g): the system between the graphs y = f(x) and y = g(x): C(x, t) =
+-- (x, f(x) + t (g(x) - f(x))) (example 19)
+function M.graphs(f, g)
+  if not tk.callable(f) then tk.argerror("graphs", 1, "f", "a function of x", f) end
+  if not tk.callable(g) then tk.argerror("graphs", 2, "g", "a function of x", g) end
+  return new(function(x, t)
+    local fx = f(x)
+    return x, fx + t * (g(x) - fx)
+  end)
+end
+
+-- graph_on(A, B, f [, a, b]): the graph of f erected on the segment AB (example 23), a curve
+-- t -> A + t (B - A) + f(a + t (b - a)) perp(B - A), perp(x, y) = (y, -x), t in [0, 1]
+-- (on a y-down screen perp points to the left of A -> B, i.e. "up" when AB runs to the right).
+function M.graph_on(A, B, f, a, b)
+  local fname = "graph_on"
+  if not tk.ispoint(A) or #A ~= 2 then tk.argerror(fname, 1, "A", "a 2-D point", A) end
+  if not tk.ispoint(B) or #B ~= 2 then tk.argerror(fname, 2, "B", "a 2-D point", B) end
+  if not tk.callable(f) then tk.argerror(fname, 3, "f", "a function", f) end
+  a, b = a or 0, b or 1
+  if type(a) ~= "number" then tk.argerror(fname, 4, "a", "a number", a) end
+  if type(b) ~= "number" then tk.argerror(fname, 5, "b", "a number", b) end
+  local ox, oy, bx, by = A.x, A.y, B.x, B.y
+  local ex, ey = bx - ox, by - oy
+  local frame, P = tk.frame_point, M.P
+  return function(t)
+    return P(frame(ox, oy, ex, ey, t, f(a + t * (b - a))))
+  end
+end
+
+-- patch(S0, S1, S2, S3): the system inside the curvilinear quadrilateral with sides
+-- S0: A0 -> A1, S1: A1 -> A2, S2: A2 -> A3, S3: A3 -> A0 (curves over [0, 1]), by the
+-- blend of example 25: C(t1, 0) = S0(t1), C(1, t2) = S1(t2), C(t1, 1) = S2(1 - t1),
+-- C(0, t2) = S3(1 - t2).
+function M.patch(S0, S1, S2, S3)
+  local fname = "patch"
+  local sides = { S0, S1, S2, S3 }
+  for i = 1, 4 do
+    if not tk.callable(sides[i]) then
+      tk.argerror(fname, i, "S" .. (i - 1), "a curve (a function of t in [0, 1])", sides[i])
+    end
+  end
+  local a1x, a1y = xy(S1(0))
+  local a2x, a2y = xy(S1(1))
+  local a0x, a0y = xy(S3(1))
+  local a3x, a3y = xy(S3(0))
+  local e1x, e1y, e3x, e3y = a2x - a1x, a2y - a1y, a3x - a0x, a3y - a0y
+  if e1x == 0 and e1y == 0 then error("patch: side S1 starts and ends at the same point", 2) end
+  if e3x == 0 and e3y == 0 then error("patch: side S3 starts and ends at the same point", 2) end
+  local coords, blend = tk.frame_coords, tk.patch_blend
+  return new(function(t1, t2)
+    local u0x, u0y = xy(S0(t1))
+    local u2x, u2y = xy(S2(1 - t1))
+    local xi1, eta1 = coords(a1x, a1y, e1x, e1y, xy(S1(t2)))
+    local xi3, eta3 = coords(a0x, a0y, e3x, e3y, xy(S3(1 - t2)))
+    return blend(u0x, u0y, u2x, u2y, xi1, eta1, xi3, eta3, t1)
+  end)
+end
+
+-- screenmap(x0, y0, a [, b]): (x, y) -> (x0 + a x, y0 - b y), b = a: mathematical
+-- coordinates (y up) onto the screen, the listings' `xe = x0 + a*x: ye = y0 - a*y`
+function M.screenmap(x0, y0, a, b)
+  local fname = "screenmap"
+  if type(x0) ~= "number" then tk.argerror(fname, 1, "x0", "a number", x0) end
+  if type(y0) ~= "number" then tk.argerror(fname, 2, "y0", "a number", y0) end
+  if type(a) ~= "number" then tk.argerror(fname, 3, "a", "a number", a) end
+  b = b or a
+  if type(b) ~= "number" then tk.argerror(fname, 4, "b", "a number", b) end
+  return function(x, y)
+    if type(x) ~= "number" then x, y = xy(x) end
+    return x0 + a * x, y0 - b * y
+  end
+end

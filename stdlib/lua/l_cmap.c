@@ -1,0 +1,320 @@
+/* Binding of the coordinate maps and scalar numerics (stdlib/geom/cmap.h, numeric.h):
+ *   squash(p [, q])  squash01(p [, q])     the plane onto the open square (examples 26-28)
+ *   oblique(C0, r, k, u)                    the oblique projection of examples 32-34
+ *   projection(C0, C1, C2, C3)              the projection by four screen points
+ *   oresme(lambda [, m [, y0, y1]])         Oresme's lambda-function (example 31)
+ *   bisect(f, a, b [, tol])                 bisection (example 30)
+ * and, for stdlib/lua/curvilinear.lua, the numeric helpers _tk.bilinear, _tk.frame_point,
+ * _tk.frame_coords, _tk.patch_blend. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "pcl_tk.h"
+#include "cmap.h"
+#include "numeric.h"
+
+#define PROJ_MT "projection"
+#define ORESME_MT "oresme"
+
+/* ---- plane -> square ------------------------------------------------------------------------ */
+
+static int squash_with(lua_State *L, const char *fn, double (*f)(double)) {
+    int n = lua_gettop(L) < 2 ? 1 : 2;
+    for (int i = 1; i <= n; i++) {
+        if (lua_type(L, i) != LUA_TNUMBER) tk_argerror(L, fn, i, i == 1 ? "p" : "q", "a number");
+        lua_pushnumber(L, f(lua_tonumber(L, i)));
+    }
+    return n;
+}
+static int l_squash(lua_State *L) { return squash_with(L, "squash", pc_squash); }
+static int l_squash01(lua_State *L) { return squash_with(L, "squash01", pc_squash01); }
+
+/* ---- projections ---------------------------------------------------------------------------- */
+
+typedef struct { double c[8]; } proj;
+
+static proj *checkproj(lua_State *L, int idx, const char *fn) {
+    proj *p = luaL_testudata(L, idx, PROJ_MT);
+    if (!p) tk_argerror(L, fn, idx, "self", "a projection");
+    return p;
+}
+
+/* the 3-D point at arg (a point, or three numbers): returns the next argument */
+static int xyz_arg(lua_State *L, const char *fn, int arg, double *x) {
+    if (lua_type(L, arg) == LUA_TNUMBER) {
+        x[0] = tk_checknum(L, fn, arg, "x");
+        x[1] = tk_checknum(L, fn, arg + 1, "y");
+        x[2] = tk_checknum(L, fn, arg + 2, "z");
+        return arg + 3;
+    }
+    pcl_value *v = pcl_tovalue(L, arg);
+    if (!v) tk_argerror(L, fn, arg, "X", "a 3-D point or three numbers");
+    if (v->n != 3) pcl_dimerror(L, arg, "X", v->n, 3, 0);
+    pcl_checkloc(L, arg, "X", 3, 0, x);
+    return arg + 1;
+}
+
+static int proj_call(lua_State *L) {
+    proj *p = checkproj(L, 1, "projection");
+    double x[3], out[2];
+    xyz_arg(L, "projection", 2, x);
+    pc_project4(p->c, x[0], x[1], x[2], out);
+    tk_pushpoint(L, 2, out);
+    return 1;
+}
+
+static int proj_xy(lua_State *L) {
+    proj *p = checkproj(L, 1, "pr:xy");
+    double x[3], out[2];
+    xyz_arg(L, "pr:xy", 2, x);
+    pc_project4(p->c, x[0], x[1], x[2], out);
+    lua_pushnumber(L, out[0]);
+    lua_pushnumber(L, out[1]);
+    return 2;
+}
+
+static int proj_index(lua_State *L) {
+    proj *p = checkproj(L, 1, "projection");
+    const char *k = lua_tostring(L, 2);
+    if (!k) return 0;
+    if (k[0] == 'C' && k[1] >= '0' && k[1] <= '3' && !k[2]) {
+        tk_pushpoint(L, 2, p->c + 2 * (k[1] - '0'));
+        return 1;
+    }
+    if (!strcmp(k, "xy")) {
+        lua_pushcfunction(L, proj_xy);
+        return 1;
+    }
+    return 0;
+}
+
+static int proj_tostring(lua_State *L) {
+    proj *p = checkproj(L, 1, "projection");
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    luaL_addstring(&b, "projection(");
+    for (int i = 0; i < 4; i++) {
+        luaL_addstring(&b, i ? ", P(" : "P(");
+        tk_pushnum(L, p->c[2 * i]);
+        luaL_addvalue(&b);
+        luaL_addstring(&b, ", ");
+        tk_pushnum(L, p->c[2 * i + 1]);
+        luaL_addvalue(&b);
+        luaL_addstring(&b, ")");
+    }
+    luaL_addstring(&b, ")");
+    luaL_pushresult(&b);
+    return 1;
+}
+
+static proj *newproj(lua_State *L) {
+    proj *p = lua_newuserdatauv(L, sizeof *p, 0);
+    luaL_setmetatable(L, PROJ_MT);
+    return p;
+}
+
+static int l_oblique(lua_State *L) {
+    const char *fn = "oblique";
+    double c0[2];
+    pcl_checkloc(L, 1, "C0", 2, 0, c0);
+    double r = tk_checknum(L, fn, 2, "r"), k = tk_checknum(L, fn, 3, "k");
+    double u = tk_checknum(L, fn, 4, "u");
+    pc_oblique_axes(c0, r, k, u, newproj(L)->c);
+    return 1;
+}
+
+static int l_projection(lua_State *L) {
+    static const char *names[] = {"C0", "C1", "C2", "C3"};
+    proj *p = newproj(L);
+    for (int i = 0; i < 4; i++) pcl_checkloc(L, i + 1, names[i], 2, 1, p->c + 2 * i);
+    return 1;
+}
+
+/* ---- Oresme ----------------------------------------------------------------------------------- */
+
+typedef struct {
+    double lambda;
+    int m;
+    double y[];
+} oresme;
+
+static int oresme_call(lua_State *L) {
+    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    lua_pushnumber(L, pc_oresme_at(o->y, o->m, tk_checknum(L, "oresme", 2, "t")));
+    return 1;
+}
+
+static int oresme_index(lua_State *L) {
+    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    if (lua_isinteger(L, 2)) {
+        lua_Integer j = lua_tointeger(L, 2);
+        if (j < 0 || j > (1L << o->m)) return 0;
+        lua_pushnumber(L, o->y[j]);
+        return 1;
+    }
+    const char *k = lua_tostring(L, 2);
+    if (!k) return 0;
+    if (!strcmp(k, "lambda")) lua_pushnumber(L, o->lambda);
+    else if (!strcmp(k, "m")) lua_pushinteger(L, o->m);
+    else if (!strcmp(k, "n")) lua_pushinteger(L, 1L << o->m);
+    else return 0;
+    return 1;
+}
+
+static int oresme_len(lua_State *L) {
+    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    lua_pushinteger(L, 1L << o->m);
+    return 1;
+}
+
+static int oresme_tostring(lua_State *L) {
+    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    tk_pushnum(L, o->lambda);
+    lua_pushfstring(L, "oresme(%s, %d)", lua_tostring(L, -1), o->m);
+    return 1;
+}
+
+static int l_oresme(lua_State *L) {
+    const char *fn = "oresme";
+    double lambda = tk_checknum(L, fn, 1, "lambda");
+    lua_Integer m = 12;
+    if (!lua_isnoneornil(L, 2)) {
+        int isint;
+        m = lua_tointegerx(L, 2, &isint);
+        if (!isint || m < 0 || m > PC_ORESME_MAXLEVEL)
+            tk_argerror(L, fn, 2, "m", "an integer 0..24 (2^m cells)");
+    }
+    double y0 = tk_optnum(L, fn, 3, "y0", 0.0), y1 = tk_optnum(L, fn, 4, "y1", 1.0);
+    long n = 1L << m;
+    oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
+    o->lambda = lambda;
+    o->m = (int)m;
+    luaL_setmetatable(L, ORESME_MT);
+    int st = pc_oresme_fill(lambda, (int)m, y0, y1, o->y);
+    if (st != PC_TK_OK) return tk_statuserror(L, fn, st, NULL);
+    return 1;
+}
+
+/* ---- bisection --------------------------------------------------------------------------------- */
+
+static double call_f(double x, void *ud) {
+    lua_State *L = ud;
+    lua_pushvalue(L, 1);
+    lua_pushnumber(L, x);
+    lua_call(L, 1, 1);
+    int isnum;
+    double v = lua_tonumberx(L, -1, &isnum);
+    if (!isnum)
+        luaL_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x),
+                   luaL_typename(L, -2));
+    lua_pop(L, 1);
+    return v;
+}
+
+static int l_bisect(lua_State *L) {
+    const char *fn = "bisect";
+    lua_settop(L, 4);
+    if (!lua_isfunction(L, 1)) {
+        if (luaL_getmetafield(L, 1, "__call") == LUA_TNIL) tk_argerror(L, fn, 1, "f", "a function");
+        lua_pop(L, 1);
+    }
+    double a = tk_checknum(L, fn, 2, "a"), b = tk_checknum(L, fn, 3, "b");
+    double tol = tk_optnum(L, fn, 4, "tol", 1e-10);
+    double x;
+    int iters;
+    int st = pc_bisect(call_f, L, a, b, tol, &x, &iters);
+    if (st == PC_TK_ENOBRACKET)
+    {
+        double fa = call_f(a, L), fb = call_f(b, L);
+        return luaL_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
+                          "the interval brackets no root", tk_pushnum(L, a), tk_pushnum(L, fa),
+                          tk_pushnum(L, b), tk_pushnum(L, fb));
+    }
+    if (st != PC_TK_OK) return tk_statuserror(L, fn, st, "f returned NaN or an infinity");
+    lua_pushnumber(L, x);
+    lua_pushinteger(L, iters);
+    return 2;
+}
+
+/* ---- numeric helpers for the Lua side -------------------------------------------------------- */
+
+/* _tk.bilinear(P0, P1, P2, P3) -> function(t1, t2) -> x, y[, z ...] */
+static int bilinear_eval(lua_State *L) {
+    const double *c = lua_touserdata(L, lua_upvalueindex(1));
+    int d = (int)lua_tointeger(L, lua_upvalueindex(2));
+    double t1 = tk_checknum(L, "bilinear", 1, "t1"), t2 = tk_checknum(L, "bilinear", 2, "t2");
+    double out[PC_MAXDIM];
+    pc_bilinear(d, c, c + d, c + 2 * d, c + 3 * d, t1, t2, out);
+    for (int k = 0; k < d; k++) lua_pushnumber(L, out[k]);
+    return d;
+}
+
+static int l_bilinear(lua_State *L) {
+    static const char *names[] = {"P0", "P1", "P2", "P3"};
+    double p[PC_MAXDIM];
+    int d = pcl_checkloc(L, 1, names[0], 0, 0, p);
+    double *c = lua_newuserdatauv(L, sizeof(double) * 4 * (size_t)d, 0);
+    memcpy(c, p, sizeof(double) * (size_t)d);
+    for (int i = 1; i < 4; i++) pcl_checkloc(L, i + 1, names[i], d, 1, c + i * d);
+    lua_pushinteger(L, d);
+    lua_pushcclosure(L, bilinear_eval, 2);
+    return 1;
+}
+
+static int l_frame_point(lua_State *L) {
+    double o[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
+    double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)}, out[2];
+    pc_frame_point(o, e, luaL_checknumber(L, 5), luaL_checknumber(L, 6), out);
+    lua_pushnumber(L, out[0]);
+    lua_pushnumber(L, out[1]);
+    return 2;
+}
+
+static int l_frame_coords(lua_State *L) {
+    double o[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
+    double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)};
+    double x[2] = {luaL_checknumber(L, 5), luaL_checknumber(L, 6)}, xi, eta;
+    int st = pc_frame_coords(o, e, x, &xi, &eta);
+    if (st != PC_TK_OK) {
+        lua_pushnil(L);
+        lua_pushstring(L, pc_tk_strerror(st));
+        return 2;
+    }
+    lua_pushnumber(L, xi);
+    lua_pushnumber(L, eta);
+    return 2;
+}
+
+static int l_patch_blend(lua_State *L) {
+    double u0[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
+    double u2[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)}, out[2];
+    pc_patch_blend(u0, u2, luaL_checknumber(L, 5), luaL_checknumber(L, 6), luaL_checknumber(L, 7),
+                   luaL_checknumber(L, 8), luaL_checknumber(L, 9), out);
+    lua_pushnumber(L, out[0]);
+    lua_pushnumber(L, out[1]);
+    return 2;
+}
+
+void pcl_open_cmap(lua_State *L) {
+    int module = lua_gettop(L);
+    luaL_newmetatable(L, PROJ_MT);
+    static const luaL_Reg pmeta[] = {{"__call", proj_call}, {"__index", proj_index},
+                                     {"__tostring", proj_tostring}, {NULL, NULL}};
+    luaL_setfuncs(L, pmeta, 0);
+    luaL_newmetatable(L, ORESME_MT);
+    static const luaL_Reg ometa[] = {{"__call", oresme_call}, {"__index", oresme_index},
+                                     {"__len", oresme_len}, {"__tostring", oresme_tostring},
+                                     {NULL, NULL}};
+    luaL_setfuncs(L, ometa, 0);
+    lua_settop(L, module);
+    static const luaL_Reg fns[] = {
+        {"squash", l_squash}, {"squash01", l_squash01}, {"oblique", l_oblique},
+        {"projection", l_projection}, {"oresme", l_oresme}, {"bisect", l_bisect}, {NULL, NULL}};
+    luaL_setfuncs(L, fns, 0);
+    tk_private(L, module);
+    static const luaL_Reg priv[] = {{"bilinear", l_bilinear}, {"frame_point", l_frame_point},
+                                    {"frame_coords", l_frame_coords},
+                                    {"patch_blend", l_patch_blend}, {NULL, NULL}};
+    luaL_setfuncs(L, priv, 0);
+    lua_settop(L, module);
+}

@@ -1,0 +1,154 @@
+/* Binding of the smoothsteps (stdlib/geom/smooth.h): the table smooth with
+ *   smooth.sine(t)  smooth.cubic(t)  smooth.power(n [, t])  smooth.half(n, m, t0 [, t])
+ *   smooth.locus(n, m, t0)  smooth.clamp(t)  smooth.clamp_qb(t [, prev])
+ * smooth.power(n) and smooth.half(n, m, t0) without t return a half-spline object g: g(t)
+ * evaluates, g:deriv(t) is the slope, and g.n g.m g.t0 g.c1 g.c2 g.v (the junction ordinate
+ * v(t0)) are its parameters.  The curve builders accept these objects, smooth.sine and
+ * smooth.cubic as smoothsteps they evaluate natively. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "pcl_tk.h"
+#include "smooth.h"
+
+#define HSPLINE_MT "halfspline"
+
+static int l_sine(lua_State *L) {
+    lua_pushnumber(L, pc_smooth_sine(tk_checknum(L, "smooth.sine", 1, "t")));
+    return 1;
+}
+
+static int l_cubic(lua_State *L) {
+    lua_pushnumber(L, pc_smooth_cubic(tk_checknum(L, "smooth.cubic", 1, "t")));
+    return 1;
+}
+
+/* the smoothsteps the curve bindings recognise by identity */
+int pcl_smooth_isfunc(lua_CFunction f, int *kind) {
+    if (f == l_sine) *kind = PC_G_SINE;
+    else if (f == l_cubic) *kind = PC_G_CUBIC;
+    else return 0;
+    return 1;
+}
+
+static pc_hspline *newhs(lua_State *L) {
+    pc_hspline *h = lua_newuserdatauv(L, sizeof *h, 0);
+    luaL_setmetatable(L, HSPLINE_MT);
+    return h;
+}
+
+pc_hspline *pcl_tohspline(lua_State *L, int idx) {
+    return luaL_testudata(L, idx, HSPLINE_MT);
+}
+
+static void check_degree(lua_State *L, const char *fname, int arg, const char *what, double v) {
+    if (!(v > 0)) tk_argerror(L, fname, arg, what, "a positive number");
+}
+
+static int l_power(lua_State *L) {
+    const char *fn = "smooth.power";
+    double n = tk_checknum(L, fn, 1, "n");
+    check_degree(L, fn, 1, "n", n);
+    if (!lua_isnoneornil(L, 2)) {
+        lua_pushnumber(L, pc_smooth_power(n, tk_checknum(L, fn, 2, "t")));
+        return 1;
+    }
+    pc_hspline *h = newhs(L);
+    pc_hspline_init(h, n, n, 0.5);
+    return 1;
+}
+
+static int l_half(lua_State *L) {
+    const char *fn = "smooth.half";
+    double n = tk_checknum(L, fn, 1, "n"), m = tk_checknum(L, fn, 2, "m");
+    double t0 = tk_checknum(L, fn, 3, "t0");
+    check_degree(L, fn, 1, "n", n);
+    check_degree(L, fn, 2, "m", m);
+    if (!(t0 > 0 && t0 < 1)) tk_argerror(L, fn, 3, "t0", "a number in (0, 1)");
+    pc_hspline h;
+    pc_hspline_init(&h, n, m, t0);
+    if (!lua_isnoneornil(L, 4)) {
+        lua_pushnumber(L, pc_hspline_eval(&h, tk_checknum(L, fn, 4, "t")));
+        return 1;
+    }
+    *newhs(L) = h;
+    return 1;
+}
+
+static int l_locus(lua_State *L) {
+    const char *fn = "smooth.locus";
+    double n = tk_checknum(L, fn, 1, "n"), m = tk_checknum(L, fn, 2, "m");
+    double t0 = tk_checknum(L, fn, 3, "t0");
+    check_degree(L, fn, 1, "n", n);
+    check_degree(L, fn, 2, "m", m);
+    if (!(t0 >= 0 && t0 <= 1)) tk_argerror(L, fn, 3, "t0", "a number in [0, 1]");
+    lua_pushnumber(L, pc_hspline_locus(n, m, t0));
+    return 1;
+}
+
+static int l_clamp(lua_State *L) {
+    lua_pushnumber(L, pc_smooth_clamp(tk_checknum(L, "smooth.clamp", 1, "t")));
+    return 1;
+}
+
+static int l_clamp_qb(lua_State *L) {
+    const char *fn = "smooth.clamp_qb";
+    if (lua_type(L, 1) != LUA_TNUMBER) tk_argerror(L, fn, 1, "t", "a number");
+    double prev = tk_optnum(L, fn, 2, "prev", 0.0);
+    lua_pushnumber(L, pc_smooth_clamp_qb(lua_tonumber(L, 1), prev));
+    return 1;
+}
+
+/* ---- the half-spline object ------------------------------------------------------------- */
+
+static int hs_call(lua_State *L) {
+    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    lua_pushnumber(L, pc_hspline_eval(h, tk_checknum(L, "halfspline", 2, "t")));
+    return 1;
+}
+
+static int hs_deriv(lua_State *L) {
+    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    lua_pushnumber(L, pc_hspline_deriv(h, tk_checknum(L, "g:deriv", 2, "t")));
+    return 1;
+}
+
+static int hs_index(lua_State *L) {
+    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    const char *k = lua_tostring(L, 2);
+    if (!k) return 0;
+    if (!strcmp(k, "n")) lua_pushnumber(L, h->n);
+    else if (!strcmp(k, "m")) lua_pushnumber(L, h->m);
+    else if (!strcmp(k, "t0")) lua_pushnumber(L, h->t0);
+    else if (!strcmp(k, "c1")) lua_pushnumber(L, h->c1);
+    else if (!strcmp(k, "c2")) lua_pushnumber(L, h->c2);
+    else if (!strcmp(k, "v")) lua_pushnumber(L, pc_hspline_eval(h, h->t0));
+    else if (!strcmp(k, "deriv")) lua_pushcfunction(L, hs_deriv);
+    else return 0;
+    return 1;
+}
+
+static int hs_tostring(lua_State *L) {
+    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    tk_pushnum(L, h->n);
+    tk_pushnum(L, h->m);
+    tk_pushnum(L, h->t0);
+    lua_pushfstring(L, "smooth.half(%s, %s, %s)", lua_tostring(L, -3), lua_tostring(L, -2),
+                    lua_tostring(L, -1));
+    return 1;
+}
+
+void pcl_open_smooth(lua_State *L) {
+    int module = lua_gettop(L);
+    luaL_newmetatable(L, HSPLINE_MT);
+    static const luaL_Reg meta[] = {
+        {"__call", hs_call}, {"__index", hs_index}, {"__tostring", hs_tostring}, {NULL, NULL}};
+    luaL_setfuncs(L, meta, 0);
+    lua_pop(L, 1);
+    static const luaL_Reg fns[] = {
+        {"sine", l_sine},   {"cubic", l_cubic}, {"power", l_power},       {"half", l_half},
+        {"locus", l_locus}, {"clamp", l_clamp}, {"clamp_qb", l_clamp_qb}, {NULL, NULL}};
+    lua_newtable(L);
+    luaL_setfuncs(L, fns, 0);
+    lua_setfield(L, module, "smooth");
+}

@@ -1,0 +1,36 @@
+/* Shared by the toolkit bindings (l_smooth.c, l_curves.c, l_cmap.c, l_complex.c): argument
+ * checks in the house style with an explicit function name (the toolkit's functions live in
+ * sub-tables and objects, e.g. "smooth.half", "S:piece"), points in and out, and the private
+ * table _tk through which the Lua helpers of stdlib/lua reach core functions that are not API. */
+#ifndef PCL_TK_H
+#define PCL_TK_H
+
+#include "pcl_point.h"
+#include "toolkit.h"
+#include "smooth.h"
+
+/* "FNAME: argument #ARG (WHAT) must be EXPECTED, got VALUE" */
+int tk_argerror(lua_State *L, const char *fname, int arg, const char *what, const char *expected);
+/* A finite number at arg. */
+double tk_checknum(lua_State *L, const char *fname, int arg, const char *what);
+double tk_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt);
+/* The coordinates of the point at idx into out (at most maxdim): returns its dimension, 0 if
+ * the value is not a point/vector value at all; a vector or weighted value raises the
+ * membership-condition error (through pcl_checkloc). */
+int tk_topoint(lua_State *L, const char *fname, int idx, const char *what, double *out,
+               int maxdim);
+/* Push a point (weight 1) or a vector (weight 0) of dimension n. */
+void tk_pushpoint(lua_State *L, int n, const double *x);
+void tk_pushvector(lua_State *L, int n, const double *x);
+/* Push x as text the way points print their coordinates: %.14g, no "-0". */
+const char *tk_pushnum(lua_State *L, double x);
+/* Raise "FNAME: MESSAGE" for a core status. */
+int tk_statuserror(lua_State *L, const char *fname, int status, const char *context);
+/* Push the private table _tk of the module table at index module (created on first use). */
+void tk_private(lua_State *L, int module);
+
+/* From l_smooth.c, for the curve builders: is f smooth.sine or smooth.cubic (*kind is then a
+ * pc_gkind)?  The half-spline object at idx, or NULL. */
+int pcl_smooth_isfunc(lua_CFunction f, int *kind);
+pc_hspline *pcl_tohspline(lua_State *L, int idx);
+#endif

@@ -1,0 +1,80 @@
+/* Argument checks and point conversion shared by the toolkit bindings (see pcl_tk.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "pcl_tk.h"
+
+static const char *shown_value(lua_State *L, int arg) {
+    if (lua_type(L, arg) == LUA_TNUMBER) {
+        if (lua_isinteger(L, arg)) return lua_pushfstring(L, "%I", lua_tointeger(L, arg));
+        return lua_pushfstring(L, "%f", lua_tonumber(L, arg));
+    }
+    if (luaL_getmetafield(L, arg, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
+    return luaL_typename(L, arg);
+}
+
+int tk_argerror(lua_State *L, const char *fname, int arg, const char *what, const char *expected) {
+    const char *value = shown_value(L, arg);
+    if (what && what[0])
+        return luaL_error(L, "%s: argument #%d (%s) must be %s, got %s", fname, arg, what,
+                          expected, value);
+    return luaL_error(L, "%s: argument #%d must be %s, got %s", fname, arg, expected, value);
+}
+
+double tk_checknum(lua_State *L, const char *fname, int arg, const char *what) {
+    if (lua_type(L, arg) != LUA_TNUMBER) tk_argerror(L, fname, arg, what, "a number");
+    double v = lua_tonumber(L, arg);
+    if (!isfinite(v)) tk_argerror(L, fname, arg, what, "a finite number");
+    return v;
+}
+
+double tk_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt) {
+    if (lua_isnoneornil(L, arg)) return dflt;
+    return tk_checknum(L, fname, arg, what);
+}
+
+int tk_topoint(lua_State *L, const char *fname, int idx, const char *what, double *out,
+               int maxdim) {
+    idx = lua_absindex(L, idx);
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p) return 0;
+    if (p->n > maxdim)
+        return luaL_error(L, "%s: argument #%d (%s) must be at most %d-D, got %d-D", fname, idx,
+                          what, maxdim, p->n);
+    return pcl_checkloc(L, idx, what, 0, 0, out);
+}
+
+void tk_pushpoint(lua_State *L, int n, const double *x) {
+    pcl_value *p = pcl_newvalue(L, n);
+    memcpy(p->h, x, sizeof(double) * (size_t)n);
+    p->h[n] = 1.0;
+}
+
+void tk_pushvector(lua_State *L, int n, const double *x) {
+    pcl_value *p = pcl_newvalue(L, n);
+    memcpy(p->h, x, sizeof(double) * (size_t)n);
+    p->h[n] = 0.0;
+}
+
+const char *tk_pushnum(lua_State *L, double x) {
+    char buf[40];
+    if (x == 0) x = 0;   /* no "-0" */
+    snprintf(buf, sizeof buf, "%.14g", x);
+    return lua_pushstring(L, buf);
+}
+
+int tk_statuserror(lua_State *L, const char *fname, int status, const char *context) {
+    if (context && context[0])
+        return luaL_error(L, "%s: %s (%s)", fname, context, pc_tk_strerror(status));
+    return luaL_error(L, "%s: %s", fname, pc_tk_strerror(status));
+}
+
+void tk_private(lua_State *L, int module) {
+    module = lua_absindex(L, module);
+    if (lua_getfield(L, module, "_tk") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, module, "_tk");
+    }
+}
