@@ -20,8 +20,9 @@ int host_load_script(lua_State *L, const char *path, int qbasic);
 /* Print the Lua translation of a QBasic program to standard output. 0 on failure. */
 int host_emit_lua(lua_State *L, const char *path);
 
-/* The interactive loop. */
-void host_repl(lua_State *L);
+/* The interactive loop (repl.c).  watch: a file to rewrite whenever the canvas changes, or
+ * NULL. */
+void host_repl(lua_State *L, const char *watch);
 
 /* The program name used in messages. */
 extern const char *host_progname;

@@ -18,6 +18,7 @@ static const char usage_text[] =
     "  script        a Lua script, or a QBasic program (.bas); '-' reads standard input\n"
     "  -e CODE       run CODE (repeatable, before the script)\n"
     "  -i            enter the interactive REPL after running the script\n"
+    "  --watch FILE  REPL: rewrite FILE (.png, .svg or .ppm) whenever the canvas changes\n"
     "  -o FILE       write the canvas to FILE when done: .png, .svg or .ppm (repeatable)\n"
     "  --paper       print theme for written files: white paper, dark ink\n"
     "  --qbasic      treat the script as QBasic whatever its extension\n"
@@ -25,8 +26,9 @@ static const char usage_text[] =
     "  -v            print the version and exit\n"
     "  -h, --help    print this help and exit\n"
     "  --            end of options: everything after the script goes to it in `arg`\n"
-    "Options -o and --paper may also follow the script; other arguments there reach the\n"
-    "script in `arg`. With no script and a terminal on standard input, the REPL starts.\n"
+    "Options -o, --paper and --watch may also follow the script; other arguments there\n"
+    "reach the script in `arg`. With no script and a terminal on standard input, or with\n"
+    "-i or --watch, the REPL starts.\n"
     "A script that draws but saves nothing writes SCRIPT.png in the current directory.\n";
 
 typedef struct {
@@ -35,6 +37,7 @@ typedef struct {
     const char *outputs[MAX_OUTPUTS];
     int noutputs;
     const char *script;
+    const char *watch;     /* --watch FILE: implies the REPL */
     int script_index;      /* argv index of the script */
     int interactive, paper, qbasic, emit_lua;
 } options;
@@ -49,6 +52,15 @@ static int usage_error(const char *fmt, const char *what) {
 static int ends_with(const char *s, const char *suffix) {
     size_t n = strlen(s), m = strlen(suffix);
     return n >= m && strcasecmp(s + n - m, suffix) == 0;
+}
+
+static int set_watch(options *o, const char *path) {
+    if (!path) return usage_error("%s", "option --watch needs a file name");
+    if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
+        return usage_error("cannot watch '%s': the extension must be .png, .svg or .ppm", path);
+    o->watch = path;
+    o->interactive = 1;
+    return 0;
 }
 
 static int add_output(options *o, const char *path) {
@@ -74,6 +86,9 @@ static int parse(int argc, char **argv, options *o) {
         } else if (!strcmp(a, "-o")) {
             int rc = add_output(o, i + 1 < argc ? argv[++i] : NULL);
             if (rc) return rc;
+        } else if (!strcmp(a, "--watch")) {
+            int rc = set_watch(o, i + 1 < argc ? argv[++i] : NULL);
+            if (rc) return rc;
         } else if (!strcmp(a, "-i")) o->interactive = 1;
         else if (!strcmp(a, "--paper")) o->paper = 1;
         else if (!strcmp(a, "--qbasic")) o->qbasic = 1;
@@ -89,7 +104,7 @@ static int parse(int argc, char **argv, options *o) {
     if (i < argc) {
         o->script = argv[i];
         o->script_index = i;
-        /* -o and --paper after the script still belong to pointcalc, up to a "--" */
+        /* -o, --paper and --watch after the script still belong to pointcalc, up to a "--" */
         int out = i + 1;
         for (int j = i + 1; j < argc; j++) {
             if (!strcmp(argv[j], "--")) {
@@ -98,6 +113,9 @@ static int parse(int argc, char **argv, options *o) {
             }
             if (!strcmp(argv[j], "-o")) {
                 int rc = add_output(o, j + 1 < argc ? argv[++j] : NULL);
+                if (rc) return rc;
+            } else if (!strcmp(argv[j], "--watch")) {
+                int rc = set_watch(o, j + 1 < argc ? argv[++j] : NULL);
                 if (rc) return rc;
             } else if (!strcmp(argv[j], "--paper")) o->paper = 1;
             else argv[out++] = argv[j];
@@ -204,7 +222,7 @@ int main(int argc, char **argv) {
         ran_something = 1;
     }
     int repl = ok && (o.interactive || !ran_something);
-    if (repl) host_repl(L);
+    if (repl) host_repl(L, o.watch);
     if (ok) ok = write_outputs(L, &o, repl);
     lua_close(L);
     return ok ? 0 : 1;

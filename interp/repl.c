@@ -1,108 +1,465 @@
-/* The interactive loop: read a line (with line editing when libedit is there), run it as an
- * expression whose values are printed, or as a statement; an incomplete chunk continues on the
- * next line, as in lua5.4. */
+/* The interactive loop.
+ *
+ * A line is read (with line editing, persistent history and Tab completion when libedit is
+ * there, plain stdio otherwise).  A line starting with ':' is a REPL command (:help, :show,
+ * :save, ...), handled by the Lua side, interp/repl.lua.  Anything else is Lua: first tried as
+ * an expression whose values are printed, then as statements; a chunk the parser finds
+ * unfinished continues on the next line under the ">>" prompt, as in lua5.4.  Errors are
+ * printed and the session goes on; Ctrl-C interrupts a running statement.
+ *
+ * This file also holds the native side of the commands that need C (the braille preview,
+ * writing files, loading scripts, clearing the canvas) and --watch: after every statement that
+ * changed the canvas (its version counter moved) the watched file is rewritten, atomically. */
+#define _DEFAULT_SOURCE
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
 #include <lauxlib.h>
+#include "braille.h"
 #include "host.h"
+#include "pcl.h"
+#include "repl.h"
 #ifdef PC_HAVE_LIBEDIT
 #include <editline/readline.h>
 #endif
 
+#define HISTORY_FILE ".pointcalc_history"
+#define HISTORY_MAX 1000
+
+static struct {
+    char *watch;          /* the --watch / :watch file, or NULL */
+    uint64_t watched;     /* the canvas version last written to it */
+    char *history;        /* the history file, or NULL */
+} S;
+
+/* ---- reading lines ------------------------------------------------------------------------ */
+
+static volatile sig_atomic_t got_sigint;
+static lua_State *running;    /* the state executing a statement, for the Ctrl-C hook */
+
+static void stop_hook(lua_State *L, lua_Debug *ar) {
+    (void)ar;
+    lua_sethook(L, NULL, 0, 0);
+    luaL_error(L, "interrupted");
+}
+
+static void on_sigint(int sig) {
+    (void)sig;
+    got_sigint = 1;
+    if (running) lua_sethook(running, stop_hook, LUA_MASKCALL | LUA_MASKRET | LUA_MASKCOUNT, 1);
+}
+
+static void catch_sigint(struct sigaction *old) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, old);
+}
+
+/* A line without its newline (malloc'ed), or NULL at end of input. */
 static char *read_line(const char *prompt) {
 #ifdef PC_HAVE_LIBEDIT
-    char *line = readline(prompt);
-    if (line && *line) add_history(line);
-    return line;
+    return readline(prompt);
 #else
     fputs(prompt, stdout);
     fflush(stdout);
-    char buf[4096];
-    if (!fgets(buf, sizeof buf, stdin)) return NULL;
-    buf[strcspn(buf, "\n")] = 0;
-    return strdup(buf);
+    char *line = NULL;
+    size_t cap = 0;
+    ssize_t n = getline(&line, &cap, stdin);
+    if (n < 0) {
+        if (got_sigint) clearerr(stdin);
+        free(line);
+        return NULL;
+    }
+    if (n > 0 && line[n - 1] == '\n') line[n - 1] = 0;
+    return line;
 #endif
 }
 
-/* Is the load error an unfinished chunk (the parser reached <eof>)? */
+static void history_open(void) {
+#ifdef PC_HAVE_LIBEDIT
+    const char *home = getenv("HOME");
+    if (home && *home) {
+        size_t n = strlen(home) + sizeof HISTORY_FILE + 1;
+        S.history = malloc(n);
+        if (S.history) snprintf(S.history, n, "%s/%s", home, HISTORY_FILE);
+    }
+    using_history();
+    stifle_history(HISTORY_MAX);
+    if (S.history) read_history(S.history);
+#endif
+}
+
+/* Remember an entry (a whole chunk, newlines included) and save the history at once, so a
+ * session that is killed keeps it. */
+static void history_add(const char *entry) {
+#ifdef PC_HAVE_LIBEDIT
+    if (!*entry) return;
+    HIST_ENTRY *last = history_length > 0 ? history_get(history_base + history_length - 1) : NULL;
+    if (last && last->line && !strcmp(last->line, entry)) return;   /* no repeats */
+    add_history(entry);
+    if (S.history) write_history(S.history);
+#else
+    (void)entry;
+#endif
+}
+
+/* ---- the terminal --------------------------------------------------------------------------- */
+
+static void terminal_size(int *cols, int *rows) {
+    *cols = 80;
+    *rows = 24;
+    struct winsize ws;
+    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0 && ws.ws_row > 0) {
+        *cols = ws.ws_col;
+        *rows = ws.ws_row;
+        return;
+    }
+    const char *c = getenv("COLUMNS"), *r = getenv("LINES");
+    if (c && atoi(c) > 0) *cols = atoi(c);
+    if (r && atoi(r) > 0) *rows = atoi(r);
+}
+
+/* What colours the terminal takes: none when output is not a terminal, NO_COLOR is set
+ * (https://no-color.org) or TERM is dumb; 24-bit when COLORTERM says so; else by TERM. */
+static pc_term_colors terminal_colors(void) {
+    const char *no = getenv("NO_COLOR"), *term = getenv("TERM"), *ct = getenv("COLORTERM");
+    if (!isatty(STDOUT_FILENO) || (no && *no) || !term || !*term || !strcmp(term, "dumb"))
+        return PC_TERM_MONO;
+    if (ct && (!strcmp(ct, "truecolor") || !strcmp(ct, "24bit"))) return PC_TERM_RGB;
+    if (strstr(term, "256color")) return PC_TERM_256;
+    return PC_TERM_16;
+}
+
+/* ---- --watch --------------------------------------------------------------------------------- */
+
+/* Rewrite the watched file if the canvas changed since the last write (always when force). */
+static void watch_update(lua_State *L, int force) {
+    if (!S.watch) return;
+    pc_canvas *c = pcl_canvas(L);
+    if (!c || (!force && c->version == S.watched)) return;
+    char err[512];
+    S.watched = c->version;   /* a failure is reported once per change, not on every line */
+    if (pc_write_file(c, S.watch, pcl_theme(L), err, sizeof err) != PC_DRAW_OK) {
+        fflush(stdout);
+        fprintf(stderr, "watch: %s\n", err);
+    }
+}
+
+/* Start watching path (NULL: stop).  Returns 0 with a message for an unknown extension. */
+static int watch_set(lua_State *L, const char *path, char *err, size_t errlen) {
+    if (path && pc_format_from_path(path) == PC_FMT_UNKNOWN) {
+        snprintf(err, errlen, "cannot watch '%s': the extension must be .png, .svg or .ppm", path);
+        return 0;
+    }
+    free(S.watch);
+    S.watch = path ? strdup(path) : NULL;
+    watch_update(L, 1);
+    return 1;
+}
+
+/* ---- the native side of the commands (called from repl.lua) ----------------------------------- */
+
+/* show([columns]): the canvas in braille cells, fitted to the terminal or to `columns`. */
+static int n_show(lua_State *L) {
+    pc_canvas *c = pcl_canvas(L);
+    int tcols, trows;
+    terminal_size(&tcols, &trows);
+    int max_cols = tcols - 2, max_rows = trows - 4;   /* the frame, the caption, the prompt */
+    if (!lua_isnoneornil(L, 1)) {
+        lua_Integer w = luaL_checkinteger(L, 1);
+        luaL_argcheck(L, w >= 4 && w <= 2000, 1, "columns must be 4..2000");
+        max_cols = (int)w;
+        max_rows = 100000;
+    }
+    if (max_cols < 4) max_cols = 4;
+    if (max_rows < 2) max_rows = 2;
+    int cols, rows;
+    double scale = pc_braille_fit(c->width, c->height, max_cols, max_rows, &cols, &rows);
+    pc_braille_cell *cells = malloc((size_t)cols * rows * sizeof *cells);
+    if (!cells) return luaL_error(L, "out of memory");
+    pc_braille_render(c, c->bg, scale, cols, rows, cells);
+    pc_braille_print(stdout, cells, cols, rows, c->palette, terminal_colors(), 1);
+    free(cells);
+    printf(" %dx%d, %.3g pixel%s per dot\n", c->width, c->height, scale, scale == 1 ? "" : "s");
+    fflush(stdout);
+    return 0;
+}
+
+/* save(path [, "paper"|"screen"]) -> true | nil, message */
+static int n_save(lua_State *L) {
+    const char *path = luaL_checkstring(L, 1);
+    const char *t = luaL_optstring(L, 2, NULL);
+    pc_theme theme = pcl_theme(L);
+    if (t && !strcmp(t, "paper")) theme = PC_THEME_PAPER;
+    else if (t && !strcmp(t, "screen")) theme = PC_THEME_SCREEN;
+    else if (t) return luaL_error(L, "the theme must be paper or screen, got '%s'", t);
+    char err[512];
+    if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
+        snprintf(err, sizeof err, "cannot write '%s': the extension must be .png, .svg or .ppm", path);
+    else if (pc_write_file(pcl_canvas(L), path, theme, err, sizeof err) == PC_DRAW_OK) {
+        pcl_canvas(L)->dirty = 0;
+        lua_pushboolean(L, 1);
+        return 1;
+    }
+    lua_pushnil(L);
+    lua_pushstring(L, err);
+    return 2;
+}
+
+/* load(path) -> boolean: run a Lua script, or a QBasic program (.bas), in the session. */
+static int n_load(lua_State *L) {
+    const char *path = luaL_checkstring(L, 1);
+    size_t n = strlen(path);
+    int qbasic = n > 4 && !strcasecmp(path + n - 4, ".bas");
+    if (access(path, R_OK) != 0) {
+        lua_pushboolean(L, 0);
+        lua_pushfstring(L, "cannot open '%s'", path);
+        return 2;
+    }
+    fflush(stdout);
+    int ok = host_load_script(L, path, qbasic) && host_pcall(L, 0);
+    lua_pushboolean(L, ok);
+    return 1;
+}
+
+/* clear(): erase the drawing, keeping the screen's settings (size, colours, palette, window,
+ * view); the display list starts afresh. */
+static int n_clear(lua_State *L) {
+    pc_canvas *c = pcl_canvas(L);
+    pc_rect v = c->view;
+    int vs = c->view_screen;
+    int full = v.x0 == 0 && v.y0 == 0 && v.x1 == c->width - 1 && v.y1 == c->height - 1;
+    if (!full) pc_view_reset(c);
+    double lx = c->last_x, ly = c->last_y;
+    int rc = pc_cls(c);
+    if (rc == PC_DRAW_OK && !full) rc = pc_view(c, v.x0, v.y0, v.x1, v.y1, -1, -1, vs);
+    c->last_x = lx;
+    c->last_y = ly;
+    c->dirty = 0;
+    if (rc != PC_DRAW_OK) return luaL_error(L, "%s", c->error);
+    return 0;
+}
+
+/* watch([path | false]) -> the watched path or nil.  No argument: just the query. */
+static int n_watch(lua_State *L) {
+    if (!lua_isnone(L, 1)) {
+        const char *path = lua_toboolean(L, 1) ? luaL_checkstring(L, 1) : NULL;
+        char err[512];
+        if (!watch_set(L, path, err, sizeof err)) return luaL_error(L, "%s", err);
+    }
+    if (S.watch) lua_pushstring(L, S.watch);
+    else lua_pushnil(L);
+    return 1;
+}
+
+/* columns() -> the terminal's width, for wrapping help text */
+static int n_columns(lua_State *L) {
+    int cols, rows;
+    terminal_size(&cols, &rows);
+    lua_pushinteger(L, cols);
+    return 1;
+}
+
+static const luaL_Reg natives[] = {
+    {"show", n_show},   {"save", n_save},   {"load", n_load},       {"clear", n_clear},
+    {"watch", n_watch}, {"columns", n_columns}, {NULL, NULL}};
+
+/* ---- running chunks --------------------------------------------------------------------------- */
+
+int repl_push_module(lua_State *L) {
+    lua_getglobal(L, "require");
+    lua_pushliteral(L, "repl");
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+        fprintf(stderr, "%s: the REPL failed to load: %s\n", host_progname, lua_tostring(L, -1));
+        lua_pop(L, 1);
+        return 0;
+    }
+    return 1;
+}
+
+/* Print the message on top of the stack (an error) to stderr and pop it. */
+static void report(lua_State *L) {
+    fflush(stdout);
+    const char *msg = lua_tostring(L, -1);
+    fprintf(stderr, "%s\n", msg ? msg : "(error object is not a string)");
+    lua_pop(L, 1);
+}
+
+/* Call the function on top of the stack (nargs arguments below... above it) with the REPL's
+ * error handler, Ctrl-C armed; leaves nresults (or all) results.  0 on error (printed). */
+static int call(lua_State *L, int mod, int nargs, int nresults) {
+    int base = lua_gettop(L) - nargs;
+    lua_getfield(L, mod, "on_error");
+    lua_insert(L, base);
+    got_sigint = 0;
+    running = L;
+    int status = lua_pcall(L, nargs, nresults, base);
+    running = NULL;
+    lua_sethook(L, NULL, 0, 0);
+    lua_remove(L, base);
+    if (status != LUA_OK) {
+        if (got_sigint) fputc('\n', stderr);   /* after the terminal's "^C" */
+        report(L);
+        return 0;
+    }
+    return 1;
+}
+
+/* Compile src: first as an expression whose values are printed (`return src;`), then as
+ * statements.  Leaves the function or the error message on the stack. */
+static int compile(lua_State *L, const char *src) {
+    size_t n = strlen(src);
+    char *expr = malloc(n + 10);
+    if (!expr) return LUA_ERRMEM;
+    memcpy(expr, "return ", 7);
+    memcpy(expr + 7, src, n);
+    memcpy(expr + 7 + n, ";", 2);
+    int status = luaL_loadbuffer(L, expr, n + 8, "=stdin");
+    free(expr);
+    if (status == LUA_OK) return status;
+    lua_pop(L, 1);
+    return luaL_loadbuffer(L, src, n, "=stdin");
+}
+
+/* Is the message on top of the stack a syntax error at the end of the input? */
 static int incomplete(lua_State *L, int status) {
     if (status != LUA_ERRSYNTAX) return 0;
     size_t len;
     const char *msg = lua_tolstring(L, -1, &len);
-    return len >= 5 && strcmp(msg + len - 5, "<eof>") == 0;
+    return len >= 5 && !strcmp(msg + len - 5, "<eof>");
 }
 
-static void print_results(lua_State *L, int base) {
-    int n = lua_gettop(L) - base;
-    if (n == 0) return;
-    for (int i = 1; i <= n; i++) {
-        luaL_tolstring(L, base + i, NULL);
+/* Run the compiled chunk on top of the stack and print what it returns. */
+static void run_chunk(lua_State *L, int mod, const char *src) {
+    int base = lua_gettop(L);   /* the function */
+    if (!call(L, mod, 0, LUA_MULTRET)) return;
+    int n = lua_gettop(L) - base + 1;
+    lua_getfield(L, mod, "after_chunk");   /* results -> text, hints */
+    lua_pushstring(L, src);
+    lua_rotate(L, base, 2);
+    if (lua_pcall(L, n + 1, 1, 0) != LUA_OK) {
+        report(L);
+    } else if (lua_isstring(L, -1)) {
         fputs(lua_tostring(L, -1), stdout);
-        fputs(i < n ? "\t" : "\n", stdout);
-        lua_pop(L, 1);
+        fputc('\n', stdout);
     }
-    lua_settop(L, base);
+    lua_settop(L, base - 1);
 }
 
-static int run(lua_State *L, int base) {
-    lua_getglobal(L, "debug");
-    lua_getfield(L, -1, "traceback");
-    lua_remove(L, -2);
-    lua_insert(L, base + 1);
-    int status = lua_pcall(L, 0, LUA_MULTRET, base + 1);
-    lua_remove(L, base + 1);
-    if (status != LUA_OK) {
-        fprintf(stderr, "%s\n", lua_tostring(L, -1));
-        lua_settop(L, base);
-        return 0;
-    }
-    print_results(L, base);
-    return 1;
+static int is_command(const char *line) {
+    while (*line == ' ' || *line == '\t') line++;
+    return line[0] == ':' && line[1] != ':';   /* "::label::" is Lua */
 }
 
-void host_repl(lua_State *L) {
-    printf("pointcalc REPL (Lua 5.4): Ctrl-D to quit\n");
-    luaL_Buffer chunk;
-    char *line;
-    while ((line = read_line("> ")) != NULL) {
-        int base = lua_gettop(L);
-        lua_pushstring(L, line);
+/* A lone "help" or "?" when no such global exists: what a newcomer types first. */
+static int is_help_word(lua_State *L, const char *line) {
+    while (*line == ' ') line++;
+    size_t n = strcspn(line, " \t");
+    if (line[n + strspn(line + n, " \t")] != 0) return 0;
+    if (!(n == 1 && line[0] == '?') && !(n == 4 && !strncmp(line, "help", 4))) return 0;
+    int nil = lua_getglobal(L, "help") == LUA_TNIL;
+    lua_pop(L, 1);
+    return nil;
+}
+
+/* Handle one entry: a command, or a Lua chunk read to its end.  Returns 0 to quit. */
+static int step(lua_State *L, int mod, char *line) {
+    if (is_command(line) || is_help_word(L, line)) {
+        history_add(line);
+        lua_getfield(L, mod, "command");
+        lua_pushstring(L, is_command(line) ? line : ":help");
+        int quit = 0;
+        if (call(L, mod, 1, 1)) quit = lua_toboolean(L, -1);
+        lua_settop(L, mod);
+        watch_update(L, 0);
         free(line);
-        for (;;) {
-            /* first as an expression whose values are printed, then as statements */
-            const char *src = lua_tostring(L, base + 1);
-            const char *expr = lua_pushfstring(L, "return %s;", src);
-            int status = luaL_loadbuffer(L, expr, strlen(expr), "=stdin");
-            lua_remove(L, -2);
-            if (status != LUA_OK) {
-                lua_pop(L, 1);
-                status = luaL_loadbuffer(L, src, strlen(src), "=stdin");
-            }
-            if (incomplete(L, status)) {
-                lua_pop(L, 1);
-                char *more = read_line(">> ");
-                if (!more) break;
-                luaL_buffinit(L, &chunk);
-                lua_pushvalue(L, base + 1);
-                luaL_addvalue(&chunk);
-                luaL_addchar(&chunk, '\n');
-                luaL_addstring(&chunk, more);
-                free(more);
-                luaL_pushresult(&chunk);
-                lua_replace(L, base + 1);
-                continue;
-            }
-            if (status != LUA_OK) {
-                fprintf(stderr, "%s\n", lua_tostring(L, -1));
-                lua_pop(L, 1);
-            } else {
-                lua_remove(L, base + 1);   /* the source */
-                run(L, base);
-            }
+        return !quit;
+    }
+    char *src = line;
+    int status, more = 1;
+    while ((status = compile(L, src)) != LUA_OK && incomplete(L, status)) {
+        lua_pop(L, 1);
+        got_sigint = 0;
+        char *next = read_line(">> ");
+        if (!next && got_sigint) {   /* Ctrl-C drops the unfinished chunk */
+            fputs("^C\n", stdout);
+            lua_settop(L, mod);
+            free(src);
+            return 1;
+        }
+        if (!next) {   /* end of input inside a chunk: report what is missing, then leave */
+            more = 0;
+            status = compile(L, src);
             break;
         }
-        lua_settop(L, base);
+        size_t a = strlen(src), b = strlen(next);
+        char *joined = realloc(src, a + b + 2);
+        if (!joined) {
+            free(next);
+            break;
+        }
+        src = joined;
+        src[a] = '\n';
+        memcpy(src + a + 1, next, b + 1);
+        free(next);
     }
-    putchar('\n');
+    if (src[strspn(src, " \t")]) history_add(src);
+    if (status == LUA_OK) {
+        run_chunk(L, mod, src);
+        watch_update(L, 0);
+    } else {
+        report(L);
+    }
+    lua_settop(L, mod);
+    free(src);
+    return more;
+}
+
+void host_repl(lua_State *L, const char *watch) {
+    if (!repl_push_module(L)) return;
+    int mod = lua_gettop(L);
+    lua_getfield(L, mod, "init");
+    luaL_newlib(L, natives);
+    if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
+        report(L);
+        lua_settop(L, mod - 1);
+        return;
+    }
+    history_open();
+    repl_completion_init(L);
+    printf("pointcalc %s (%s). :help for help; Ctrl-D or :quit to leave.\n", PCL_VERSION,
+           LUA_RELEASE);
+    if (watch) {
+        char err[512];
+        if (watch_set(L, watch, err, sizeof err)) printf("watching %s\n", watch);
+        else fprintf(stderr, "%s\n", err);
+    }
+    struct sigaction old_int;
+    catch_sigint(&old_int);   /* Ctrl-C at the prompt drops the line */
+    for (;;) {
+        fflush(stdout);
+        got_sigint = 0;
+        char *line = read_line("> ");
+        if (!line && got_sigint) {
+            fputs("^C\n", stdout);
+            continue;
+        }
+        if (!line) {
+            putchar('\n');   /* Ctrl-D leaves the cursor after the prompt */
+            break;
+        }
+        if (!step(L, mod, line)) break;
+    }
+    sigaction(SIGINT, &old_int, NULL);
+    fflush(stdout);
+    free(S.watch);
+    free(S.history);
+    S.watch = S.history = NULL;
+    lua_settop(L, mod - 1);
 }
