@@ -604,7 +604,8 @@ static void emit_fill(svgw *w, const pc_op *op) {
             d_move(w, (hpt){(vx - 1 + minx) * 100, (vy - 1 + miny) * 100});
             int dir = 0;
             long len = 0;
-            for (;;) {
+            /* a loop has at most 4 edges per pixel: the bound only guards against a bug */
+            for (long steps = 0; steps <= 4 * W * H; steps++) {
                 if (dir == 0) m[vy * W + vx] |= TOP_DONE;   /* top edge of pixel (vx, vy) */
                 vx += DX[dir];
                 vy += DY[dir];
