@@ -1,0 +1,596 @@
+-- QBasic front end, part 4: the runtime of translated programs.
+--
+-- A translated program starts with
+--     local _ENV = require("qbasic_rt").new(_ENV, "prog.bas") return run(function() ...
+-- so its module variables are fields of the environment made here, next to the helpers below
+-- (QBasic semantics that plain Lua does not give: SINGLE rounding, CINT, "Division by zero",
+-- -1/0 truth values, arrays with QBasic bounds, DATA, PRINT formatting) and to wrappers of the
+-- pointcalc drawing layer that check arguments the way QBasic does.
+--
+-- Errors are QBasic's messages raised at the caller's level, so they read
+-- "prog.bas:LINE: Illegal function call" with the program's line.
+local M = {}
+
+-- every global name a translated program may use besides its own variables: the translator
+-- keeps user names clear of these
+M.names = {
+  "csng", "cint", "clng", "cdbl", "sin", "cos", "tan", "atn", "sqr", "exp", "log", "abs", "int",
+  "fix", "sgn", "rnd", "timer", "randomize", "div", "idiv", "mod", "pow", "band", "bor", "bxor",
+  "bnot", "beqv", "bimp", "truth", "both", "either", "for_test", "len", "left", "right", "mid",
+  "str", "val", "chr", "asc", "space", "string_", "lcase", "ucase", "ltrim", "rtrim", "instr",
+  "hex", "oct", "dim", "dim_str", "lbound", "ubound", "read_number", "read_string", "restore",
+  "qprint", "zone", "nonl", "tab", "spc", "dbl", "lng", "screen", "cls", "color", "palette",
+  "pset", "preset", "line", "line_to", "circle", "paint", "point", "window", "view", "step_xy",
+  "stop", "return_without_gosub", "on_index", "run", "case", "on", "start", "_ENV", "_",
+}
+
+local floor, huge = math.floor, math.huge
+local IFC = "Illegal function call"
+
+local function lua_f32(x) return (string.unpack("f", string.pack("f", x))) end
+
+-- QBasic's RND without the C core (stock Lua): same generator
+local function lua_rnd_state()
+  local seed = 327680
+  local st = {}
+  function st.rnd(n)
+    n = n or 1
+    local f = lua_f32(n)
+    if f ~= 0 then
+      if f < 0 then
+        local bits = string.unpack("<I4", string.pack("<f", f))
+        seed = ((bits & 0xFFFFFF) + (bits >> 24)) & 0xFFFFFF
+      end
+      seed = (seed * 16598013 + 12820163) & 0xFFFFFF
+    end
+    return seed / 16777216
+  end
+  function st.randomize(n)
+    local bits = string.unpack("<I8", string.pack("<d", n))
+    local hi = (bits >> 32) & 0xFFFFFFFF
+    hi = hi ~ (hi >> 16)
+    seed = ((hi & 0xFFFF) << 8) | (seed & 0xFF)
+  end
+  function st.seed(s) local old = seed; if s then seed = s end; return old end
+  return st
+end
+
+local function round_even(x)
+  local f = floor(x)
+  local d = x - f
+  if d > 0.5 or (d == 0.5 and f % 2 ~= 0) then f = f + 1 end
+  return f
+end
+
+-- ---- number formatting (PRINT, STR$) -------------------------------------------------------
+-- As QBasic: 7 significant digits for SINGLE, 16 for DOUBLE; fixed notation while the digits
+-- fit (exponent <= 6 and no more than 7 decimals for SINGLE), else 1.234568E+07 / D+ for DOUBLE.
+local function fmt_float(v, double)
+  if v == 0 then return "0" end
+  local a = math.abs(v)
+  local s = string.format(double and "%.15E" or "%.6E", a)
+  local mant, ex = s:match("^(%d%.%d+)E([%+%-]%d+)$")
+  if not mant then return tostring(v) end          -- inf, nan
+  if double and mant:sub(-1) == "9" then
+    s = string.format("%.14E", a)
+    mant, ex = s:match("^(%d%.%d+)E([%+%-]%d+)$")
+  end
+  local digits = (mant:gsub("%.", "")):gsub("0+$", "")
+  local nd = #digits
+  local e = tonumber(ex)
+  local maxe, mind = 6, -8
+  if double then maxe, mind = 15, -17 end
+  local body
+  if e <= maxe and e - nd >= mind then
+    local dec = nd - e - 1
+    if dec < 0 then dec = 0 end
+    body = string.format("%." .. dec .. "f", a)
+    if dec > 0 then body = body:gsub("0+$", "") end
+    body = body:gsub("^0%.", ".")
+  else
+    body = digits:sub(1, 1) .. (nd > 1 and ("." .. digits:sub(2)) or "")
+      .. (double and "D" or "E") .. (e < 0 and "-" or "+") .. string.format("%02d", math.abs(e))
+  end
+  return (v < 0 and "-" or "") .. body
+end
+M.fmt_float = fmt_float
+
+local function fmt_number(v, kind)
+  if kind == "long" or (kind == nil and math.type(v) == "integer") then
+    return string.format("%d", v)
+  end
+  if kind == "double" then return fmt_float(v, true) end
+  return fmt_float(lua_f32(v), false)
+end
+
+local STOP = setmetatable({}, { __tostring = function() return "END" end })
+
+function M.new(host, chunkname)
+  local pc = package.loaded.pointcalc
+  if not pc then
+    local ok, m = pcall(require, "pointcalc")
+    if ok then pc = m end
+  end
+  local qb = pc and pc.qb
+  local f32 = qb and qb.f32 or lua_f32
+  local R = qb or lua_rnd_state()
+  local function draw(name)
+    local f = host[name] or (pc and pc[name])
+    if not f then
+      return function() error("the pointcalc drawing layer is not loaded (" .. name .. ")", 3) end
+    end
+    return f
+  end
+
+  local env = {}
+  local E = env
+
+  -- ---- numbers --------------------------------------------------------------------------
+  function E.csng(x)
+    local r = f32(x)
+    if r - r ~= 0 then error("Overflow", 2) end
+    return r
+  end
+  function E.cdbl(x)
+    if x - x ~= 0 then error("Overflow", 2) end
+    return x
+  end
+  local function to_int(x, lo, hi, level)
+    if x ~= x then error("Overflow", level + 1) end
+    local r = round_even(x)
+    if r < lo or r > hi then error("Overflow", level + 1) end
+    return math.tointeger(r) or r
+  end
+  function E.cint(x) local r = to_int(x, -32768, 32767, 2) return r end
+  function E.clng(x) local r = to_int(x, -2147483648, 2147483647, 2) return r end
+  local function long(x, level) return to_int(x, -2147483648, 2147483647, level + 1) end
+
+  function E.div(a, b)
+    if b == 0 then error("Division by zero", 2) end
+    return a / b
+  end
+  function E.idiv(a, b)
+    a, b = long(a, 2), long(b, 2)
+    if b == 0 then error("Division by zero", 2) end
+    local q = a // b
+    if q < 0 and q * b ~= a then q = q + 1 end
+    return q
+  end
+  function E.mod(a, b)
+    a, b = long(a, 2), long(b, 2)
+    if b == 0 then error("Division by zero", 2) end
+    return math.fmod(a, b)
+  end
+  function E.pow(a, b)
+    if a == 0 and b < 0 then error("Division by zero", 2) end
+    if a < 0 and b ~= floor(b) then error(IFC, 2) end
+    return a ^ b
+  end
+  function E.band(a, b) return long(a, 2) & long(b, 2) end
+  function E.bor(a, b) return long(a, 2) | long(b, 2) end
+  function E.bxor(a, b) return long(a, 2) ~ long(b, 2) end
+  function E.beqv(a, b) return ~(long(a, 2) ~ long(b, 2)) end
+  function E.bimp(a, b) return (~long(a, 2)) | long(b, 2) end
+  function E.bnot(a) return ~long(a, 2) end
+  function E.truth(c) if c then return -1 end return 0 end
+  function E.both(a, b) return a and b end
+  function E.either(a, b) return a or b end
+  function E.for_test(v, limit, step)
+    if step >= 0 then return v <= limit end
+    return v >= limit
+  end
+
+  E.sin, E.cos, E.tan, E.atn, E.abs = math.sin, math.cos, math.tan, math.atan, math.abs
+  function E.sqr(x)
+    if x < 0 then error(IFC, 2) end
+    return math.sqrt(x)
+  end
+  function E.log(x)
+    if x <= 0 then error(IFC, 2) end
+    return math.log(x)
+  end
+  function E.exp(x)
+    local r = math.exp(x)
+    if r == huge then error("Overflow", 2) end
+    return r
+  end
+  function E.int(x) return floor(x) end
+  function E.fix(x) if x >= 0 then return floor(x) end return math.ceil(x) end
+  function E.sgn(x) if x > 0 then return 1 elseif x < 0 then return -1 end return 0 end
+  function E.rnd(n) return R.rnd(n or 1) end
+  function E.randomize(n) R.randomize(n) end
+  function E.timer()
+    local t = os.date("*t")
+    return f32(t.hour * 3600 + t.min * 60 + t.sec)
+  end
+  function E.on_index(v)
+    local r = to_int(v, -32768, 32767, 2)
+    if r < 0 or r > 255 then error(IFC, 2) end
+    return r
+  end
+
+  -- ---- strings ----------------------------------------------------------------------------
+  local function count(n, level)
+    local r = long(n, level + 1)
+    if r < 0 then error(IFC, level + 1) end
+    return r
+  end
+  function E.len(s) return #s end
+  function E.left(s, n) n = count(n, 2) return s:sub(1, n) end
+  function E.right(s, n) n = count(n, 2) if n == 0 then return "" end return s:sub(-n) end
+  function E.mid(s, start, n)
+    start = long(start, 2)
+    if start < 1 then error(IFC, 2) end
+    if n == nil then return s:sub(start) end
+    n = count(n, 2)
+    return s:sub(start, start + n - 1)
+  end
+  function E.str(x, kind)
+    local t = fmt_number(x, kind)
+    if t:sub(1, 1) ~= "-" then t = " " .. t end
+    return t
+  end
+  function E.val(s)
+    s = s:gsub("[ \t\n]", "")
+    local h = s:match("^&[Hh](%x+)")
+    if h then return tonumber(h, 16) end
+    local o = s:match("^&[Oo]?([0-7]+)")
+    if o then return tonumber(o, 8) end
+    local num = s:match("^[+-]?%d*%.?%d*[eEdD][+-]?%d+") or s:match("^[+-]?%d*%.?%d*")
+    num = num:gsub("[dD]", "e")
+    return tonumber(num) or 0
+  end
+  function E.chr(n)
+    n = long(n, 2)
+    if n < 0 or n > 255 then error(IFC, 2) end
+    return string.char(n)
+  end
+  function E.asc(s)
+    if s == "" then error(IFC, 2) end
+    return s:byte(1)
+  end
+  function E.space(n) n = count(n, 2) return string.rep(" ", n) end
+  function E.string_(n, c)
+    n = count(n, 2)
+    if type(c) == "string" then
+      if c == "" then error(IFC, 2) end
+      return string.rep(c:sub(1, 1), n)
+    end
+    c = long(c, 2)
+    if c < 0 or c > 255 then error(IFC, 2) end
+    return string.rep(string.char(c), n)
+  end
+  function E.lcase(s) return s:lower() end
+  function E.ucase(s) return s:upper() end
+  function E.ltrim(s) return (s:gsub("^ +", "")) end
+  function E.rtrim(s) return (s:gsub(" +$", "")) end
+  function E.instr(a, b, c)
+    local start, s, t = 1, a, b
+    if type(a) ~= "string" then
+      start = long(a, 2)
+      if start < 1 or start > 32767 then error(IFC, 2) end
+      s, t = b, c
+    end
+    if start > #s then return 0 end
+    if t == "" then return start end
+    return s:find(t, start, true) or 0
+  end
+  local function radix(n, fmt)
+    n = long(n, 3)
+    if n < 0 then n = n >= -32768 and n + 0x10000 or n + 0x100000000 end
+    return string.format(fmt, n)
+  end
+  function E.hex(n) local r = radix(n, "%X") return r end
+  function E.oct(n) local r = radix(n, "%o") return r end
+
+  -- ---- arrays -----------------------------------------------------------------------------
+  -- Tables prefilled over their bounds; a missing key means a fractional or out-of-range
+  -- subscript: fractional subscripts are rounded, the others are "Subscript out of range".
+  local function make_array(bounds, k, default)
+    local lo, hi = bounds[k][1], bounds[k][2]
+    local mt = { lo = lo, hi = hi }
+    function mt.__index(t, i)
+      if type(i) == "number" and i == i then
+        local r = round_even(i)
+        if r ~= i then
+          local v = rawget(t, math.tointeger(r) or r)
+          if v ~= nil then return v end
+        end
+      end
+      error("Subscript out of range", 2)
+    end
+    function mt.__newindex(t, i, v)
+      if type(i) == "number" and i == i then
+        local r = round_even(i)
+        r = math.tointeger(r) or r
+        if r ~= i and rawget(t, r) ~= nil then rawset(t, r, v) return end
+      end
+      error("Subscript out of range", 2)
+    end
+    local t = {}
+    if k == #bounds then
+      for i = lo, hi do t[i] = default end
+    else
+      for i = lo, hi do t[i] = make_array(bounds, k + 1, default) end
+    end
+    return setmetatable(t, mt)
+  end
+  local function dim(default, level, ...)
+    local bounds = {}
+    for i = 1, select("#", ...) do
+      local b = select(i, ...)
+      local lo, hi
+      if type(b) == "table" then lo, hi = b[1], b[2] else lo, hi = 0, b end
+      lo, hi = to_int(lo, -32768, 32767, level + 1), to_int(hi, -32768, 32767, level + 1)
+      if hi < lo then error("Subscript out of range", level + 1) end
+      bounds[i] = { lo, hi }
+    end
+    return make_array(bounds, 1, default)
+  end
+  function E.dim(...) local a = dim(0, 2, ...) return a end
+  function E.dim_str(...) local a = dim("", 2, ...) return a end
+  local function bound(a, n, which, level)
+    n = n and long(n, level + 1) or 1
+    local t = a
+    for _ = 2, n do
+      local mt = getmetatable(t)
+      if not mt or not mt.lo then error("Subscript out of range", level + 1) end
+      t = rawget(t, mt.lo)
+      if type(t) ~= "table" then error("Subscript out of range", level + 1) end
+    end
+    local mt = getmetatable(t)
+    if n < 1 or not mt or not mt.lo then error("Subscript out of range", level + 1) end
+    return mt[which]
+  end
+  function E.lbound(a, n) local r = bound(a, n, "lo", 2) return r end
+  function E.ubound(a, n) local r = bound(a, n, "hi", 2) return r end
+
+  -- ---- DATA -------------------------------------------------------------------------------
+  local data, data_lines, data_pos, data_labels = {}, {}, 1, {}
+  local function next_item(level)
+    local v = data[data_pos]
+    if v == nil then error("Out of DATA", level + 1) end
+    data_pos = data_pos + 1
+    return v, data_lines[data_pos - 1]
+  end
+  function E.read_number()
+    local v, line = next_item(2)
+    if type(v) ~= "number" then
+      -- QBasic reports a non-numeric item against the DATA line
+      error(chunkname .. ":" .. line .. ": Syntax error", 0)
+    end
+    return v
+  end
+  function E.read_string()
+    local v = next_item(2)
+    if type(v) == "number" then return (fmt_number(v)) end
+    return v
+  end
+  function E.restore(label)
+    if label == nil then data_pos = 1 return end
+    data_pos = data_labels[label] or (#data + 1)
+  end
+
+  -- ---- PRINT ------------------------------------------------------------------------------
+  local col = 0            -- 0-based output column
+  local out = io.stdout
+  local ZONE = setmetatable({}, { __name = "zone" })
+  local NONL = setmetatable({}, { __name = "nonl" })
+  local MARK = {}
+  E.zone, E.nonl = ZONE, NONL
+  function E.tab(n) return { [MARK] = "tab", n = n } end
+  function E.spc(n) return { [MARK] = "spc", n = n } end
+  function E.dbl(x) return { [MARK] = "double", v = x } end
+  function E.lng(x) return { [MARK] = "long", v = x } end
+  local function write(s)
+    out:write(s)
+    local nl = s:find("\n[^\n]*$")
+    if nl then col = #s - nl else col = col + #s end
+  end
+  function E.qprint(...)
+    local n = select("#", ...)
+    local newline = true
+    for i = 1, n do
+      local v = select(i, ...)
+      local tv = type(v)
+      if tv == "string" then
+        write(v)
+      elseif tv == "number" then
+        local s = fmt_number(v, math.type(v) == "integer" and "long" or "single")
+        write((v >= 0 and " " or "") .. s .. " ")
+      elseif v == ZONE then
+        write(string.rep(" ", 14 - col % 14))
+        if i == n then newline = false end
+      elseif v == NONL then
+        newline = false
+      elseif tv == "table" and v[MARK] then
+        local m = v[MARK]
+        if m == "tab" then
+          local c = long(v.n, 2)
+          if c < 1 then c = 1 end
+          if col > c - 1 then write("\n") end
+          write(string.rep(" ", c - 1 - col))
+        elseif m == "spc" then
+          local c = long(v.n, 2)
+          if c < 0 then c = 0 end
+          write(string.rep(" ", c))
+        else
+          local s = fmt_number(v.v, m)
+          write((v.v >= 0 and " " or "") .. s .. " ")
+        end
+      end
+    end
+    if newline then write("\n") end
+  end
+
+  -- ---- drawing ----------------------------------------------------------------------------
+  local h_screen, h_cls, h_color, h_palette = draw("screen"), draw("cls"), draw("color"), draw("palette")
+  local h_pset, h_preset, h_line, h_line_to = draw("pset"), draw("preset"), draw("line"), draw("line_to")
+  local h_circle, h_paint, h_point = draw("circle"), draw("paint"), draw("point")
+  local h_window, h_view, h_last_point = draw("window"), draw("view"), draw("last_point")
+  local mode = 0           -- SCREEN mode: 0 is text mode (no graphics), as when QBasic starts
+  local ncolors = 16
+  local function graphics(level)
+    if mode == 0 then error(IFC, level + 1) end
+  end
+  local function colour(c, level)
+    if c == nil then return nil end
+    if c ~= c then error(IFC, level + 1) end
+    local r = round_even(c)
+    if r < 0 or r >= ncolors then error(IFC, level + 1) end
+    return math.tointeger(r)
+  end
+  local function coord(x, level)
+    if x - x ~= 0 then error("Overflow", level + 1) end
+    return x
+  end
+
+  function E.screen(m)
+    m = to_int(m, -32768, 32767, 2)
+    if m == 0 then mode = 0 return end
+    if m == 12 or m == 13 then
+      h_screen(m)
+      mode = m
+      ncolors = m == 12 and 16 or 256
+      return
+    end
+    if m == 1 or m == 2 or (m >= 7 and m <= 11) then
+      error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 12 and 13 are)", 2)
+    end
+    error(IFC, 2)
+  end
+  function E.cls(n)
+    if n ~= nil then
+      n = to_int(n, -32768, 32767, 2)
+      if n < 0 or n > 2 then error(IFC, 2) end
+    end
+    if mode ~= 0 then h_cls() end
+  end
+  function E.color(fg, bg)
+    if mode == 0 then return end       -- text colours: PRINT goes to standard output
+    if bg ~= nil then error(IFC, 2) end
+    if fg ~= nil then h_color(colour(fg, 2)) end
+  end
+  function E.palette(attr, c)
+    if mode == 0 then return end
+    if attr == nil then h_palette() return end
+    attr = colour(attr, 2)
+    c = to_int(c, -2147483648, 2147483647, 2)
+    if c == -1 then return end
+    if c < 0 or c > 0x3F3F3F or (c & 0xC0C0C0) ~= 0 then error(IFC, 2) end
+    h_palette(attr, c)
+  end
+  function E.pset(x, y, c)
+    graphics(2)
+    h_pset(coord(x, 2), coord(y, 2), colour(c, 2))
+  end
+  function E.preset(x, y, c)
+    graphics(2)
+    h_preset(coord(x, 2), coord(y, 2), colour(c, 2))
+  end
+  function E.line(x1, y1, x2, y2, c, style)
+    graphics(2)
+    h_line(coord(x1, 2), coord(y1, 2), coord(x2, 2), coord(y2, 2), colour(c, 2), style)
+  end
+  function E.line_to(x2, y2, c, style)
+    graphics(2)
+    h_line_to(coord(x2, 2), coord(y2, 2), colour(c, 2), style)
+  end
+  local TWO_PI = 2 * math.pi + 1e-6
+  function E.circle(x, y, r, c, a0, a1, aspect)
+    graphics(2)
+    coord(r, 2)
+    if r < 0 then error(IFC, 2) end
+    if a0 ~= nil and math.abs(a0) > TWO_PI then error(IFC, 2) end
+    if a1 ~= nil and math.abs(a1) > TWO_PI then error(IFC, 2) end
+    if aspect ~= nil and (coord(aspect, 2) <= 0) then error(IFC, 2) end
+    h_circle(coord(x, 2), coord(y, 2), r, colour(c, 2), a0, a1, aspect)
+  end
+  function E.paint(x, y, c, border)
+    graphics(2)
+    h_paint(coord(x, 2), coord(y, 2), colour(c, 2), colour(border, 2))
+  end
+  function E.point(x, y)
+    graphics(2)
+    if y == nil then
+      local n = to_int(x, -32768, 32767, 2)
+      if n == 2 or n == 3 then
+        local lx, ly = h_last_point()
+        local r = (n == 2) and lx or ly
+        return r
+      end
+      if n == 0 or n == 1 then error("POINT(" .. n .. "): not supported by pointcalc", 2) end
+      error(IFC, 2)
+    end
+    local r = h_point(coord(x, 2), coord(y, 2))
+    return r
+  end
+  function E.window(x1, y1, x2, y2, screen)
+    graphics(2)
+    if x1 == nil then h_window() return end
+    if x1 == x2 or y1 == y2 then error(IFC, 2) end
+    h_window(coord(x1, 2), coord(y1, 2), coord(x2, 2), coord(y2, 2), screen)
+  end
+  function E.view(x1, y1, x2, y2, fill, border, screen)
+    graphics(2)
+    if x1 == nil then h_view() return end
+    local w, h = (mode == 12) and 640 or 320, (mode == 12) and 480 or 200
+    for _, v in ipairs({ x1, x2 }) do if v < 0 or v >= w then error(IFC, 2) end end
+    for _, v in ipairs({ y1, y2 }) do if v < 0 or v >= h then error(IFC, 2) end end
+    h_view(x1, y1, x2, y2, colour(fill, 2), colour(border, 2), screen)
+  end
+  function E.step_xy(dx, dy)
+    graphics(2)
+    local x, y = h_last_point()
+    return x + dx, y + dy
+  end
+
+  -- ---- control ----------------------------------------------------------------------------
+  function E.stop() error(STOP, 0) end
+  function E.return_without_gosub() error("RETURN without GOSUB", 2) end
+
+  -- run(program, info): info.data = {[line] = {items}}, info.data_labels = {label = index},
+  -- info.strings = {names}, info.arrays = {name = {rank [, "string"]}}
+  function E.run(program, info)
+    info = info or {}
+    if info.data then
+      local ls = {}
+      for l in pairs(info.data) do ls[#ls + 1] = l end
+      table.sort(ls)
+      for _, l in ipairs(ls) do
+        for _, v in ipairs(info.data[l]) do
+          data[#data + 1] = v
+          data_lines[#data] = l
+        end
+      end
+    end
+    data_labels = info.data_labels or {}
+    local strings = {}
+    for _, s in ipairs(info.strings or {}) do strings[s] = true end
+    local arrays = info.arrays or {}
+    setmetatable(env, { __index = function(t, k)
+      if strings[k] then return "" end
+      local a = arrays[k]
+      if a then
+        -- an array used without DIM has subscripts 0..10
+        local b = {}
+        for i = 1, a[1] do b[i] = 10 end
+        local arr = dim(a[2] == "string" and "" or 0, 1, table.unpack(b))
+        rawset(t, k, arr)
+        return arr
+      end
+      return 0
+    end })
+    if qb then qb.seed(327680) end
+    if info.stops then
+      local ok, err = pcall(program)
+      if not ok and err ~= STOP then error(err, 0) end
+    else
+      program()
+    end
+  end
+
+  return env
+end
+
+return M
