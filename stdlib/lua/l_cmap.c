@@ -42,15 +42,18 @@ static proj *checkproj(lua_State *L, int idx, const char *fn) {
 /* the 3-D point at arg (a point, or three numbers): returns the next argument */
 static int xyz_arg(lua_State *L, const char *fn, int arg, double *x) {
     if (lua_type(L, arg) == LUA_TNUMBER) {
-        x[0] = tk_checknum(L, fn, arg, "x");
-        x[1] = tk_checknum(L, fn, arg + 1, "y");
-        x[2] = tk_checknum(L, fn, arg + 2, "z");
+        x[0] = tk_checknum_m(L, fn, arg, "x");
+        x[1] = tk_checknum_m(L, fn, arg + 1, "y");
+        x[2] = tk_checknum_m(L, fn, arg + 2, "z");
         return arg + 3;
     }
     pcl_value *v = pcl_tovalue(L, arg);
-    if (!v) tk_argerror(L, fn, arg, "X", "a 3-D point or three numbers");
-    if (v->n != 3) pcl_dimerror(L, arg, "X", v->n, 3, 0);
-    pcl_checkloc(L, arg, "X", 3, 0, x);
+    if (!v) tk_argerror_at(L, fn, arg, arg - 1, "X", "a 3-D point or three numbers");
+    if (v->n != 3)
+        luaL_error(L, "%s: argument #%d (X) must be 3-D, got %d-D", fn, arg - 1, v->n);
+    if (pc_loc(3, v->h, x) != PC_OK)
+        luaL_error(L, "%s: argument #%d (X) must be a point (weight 1), got weight %s", fn,
+                   arg - 1, tk_pushnum(L, v->h[3]));
     return arg + 1;
 }
 
@@ -140,7 +143,7 @@ typedef struct {
 
 static int oresme_call(lua_State *L) {
     oresme *o = luaL_checkudata(L, 1, ORESME_MT);
-    lua_pushnumber(L, pc_oresme_at(o->y, o->m, tk_checknum(L, "oresme", 2, "t")));
+    lua_pushnumber(L, pc_oresme_at(o->y, o->m, tk_checknum_m(L, "oresme", 2, "t")));
     return 1;
 }
 
@@ -204,9 +207,10 @@ static double call_f(double x, void *ud) {
     lua_call(L, 1, 1);
     int isnum;
     double v = lua_tonumberx(L, -1, &isnum);
-    if (!isnum)
-        luaL_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x),
-                   luaL_typename(L, -2));
+    if (!isnum) {
+        const char *type = luaL_typename(L, -1);
+        luaL_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x), type);
+    }
     lua_pop(L, 1);
     return v;
 }
@@ -226,9 +230,10 @@ static int l_bisect(lua_State *L) {
     if (st == PC_TK_ENOBRACKET)
     {
         double fa = call_f(a, L), fb = call_f(b, L);
+        const char *ta = tk_pushnum(L, a), *tfa = tk_pushnum(L, fa);
+        const char *tb = tk_pushnum(L, b), *tfb = tk_pushnum(L, fb);
         return luaL_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
-                          "the interval brackets no root", tk_pushnum(L, a), tk_pushnum(L, fa),
-                          tk_pushnum(L, b), tk_pushnum(L, fb));
+                          "the interval brackets no root", ta, tfa, tb, tfb);
     }
     if (st != PC_TK_OK) return tk_statuserror(L, fn, st, "f returned NaN or an infinity");
     lua_pushnumber(L, x);

@@ -183,8 +183,10 @@ static mobius *checkm(lua_State *L, int idx, const char *fn) {
 static void apply(lua_State *L, const mobius *m, double re, double im, double *wre, double *wim) {
     int st = pc_mobius(m->z0re, m->z0im, m->phi, re, im, wre, wim);
     if (st == PC_TK_EPOLE)
-        luaL_error(L, "mobius: z = complex(%s, %s) is the pole 1/conj(z0) of the map",
-                   tk_pushnum(L, re), tk_pushnum(L, im));
+    {
+        const char *tre = tk_pushnum(L, re), *tim = tk_pushnum(L, im);
+        luaL_error(L, "mobius: z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
+    }
     if (st != PC_TK_OK) luaL_error(L, "mobius: %s", pc_tk_strerror(st));
 }
 
@@ -193,7 +195,7 @@ static int m_call(lua_State *L) {
     mobius *m = checkm(L, 1, fn);
     double w[2];
     if (lua_type(L, 2) == LUA_TNUMBER && !lua_isnoneornil(L, 3)) {
-        double re = tk_checknum(L, fn, 2, "x"), im = tk_checknum(L, fn, 3, "y");
+        double re = tk_checknum_m(L, fn, 2, "x"), im = tk_checknum_m(L, fn, 3, "y");
         apply(L, m, re, im, &w[0], &w[1]);
         lua_pushnumber(L, w[0]);
         lua_pushnumber(L, w[1]);
@@ -207,7 +209,7 @@ static int m_call(lua_State *L) {
         return 1;
     }
     double complex z;
-    if (!toc(L, 2, &z)) tk_argerror(L, fn, 1, "z", "a complex number, a 2-D point or x, y");
+    if (!toc(L, 2, &z)) tk_argerror_at(L, fn, 2, 1, "z", "a complex number, a 2-D point or x, y");
     apply(L, m, creal(z), cimag(z), &w[0], &w[1]);
     pushc(L, w[0], w[1]);
     return 1;

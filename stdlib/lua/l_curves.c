@@ -119,7 +119,7 @@ static int push_coords(lua_State *L, int d, const double *x) {
 static int c_call(lua_State *L) {
     curve *c = checkcurve(L, 1, "curve");
     double x[PC_CURVE_MAXDIM];
-    eval_global(L, c, tk_checknum(L, kind_names[c->kind], 2, "t"), x);
+    eval_global(L, c, tk_checknum_m(L, kind_names[c->kind], 2, "t"), x);
     tk_pushpoint(L, c->d, x);
     return 1;
 }
@@ -127,7 +127,7 @@ static int c_call(lua_State *L) {
 static int c_xy(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:xy");
     double x[PC_CURVE_MAXDIM];
-    eval_global(L, c, tk_checknum(L, "c:xy", 2, "t"), x);
+    eval_global(L, c, tk_checknum_m(L, "c:xy", 2, "t"), x);
     return push_coords(L, c->d, x);
 }
 
@@ -138,7 +138,7 @@ static int check_piece(lua_State *L, curve *c, const char *fname, int arg) {
     if (!isint || i < 1 || i > c->np) {
         char expected[48];
         snprintf(expected, sizeof expected, "a piece number 1..%d", c->np);
-        tk_argerror(L, fname, arg, "i", expected);
+        tk_argerror_at(L, fname, arg, arg - 1, "i", expected);
     }
     return (int)i - 1;
 }
@@ -147,7 +147,7 @@ static int c_piece(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:piece");
     int i = check_piece(L, c, "c:piece", 2);
     double x[PC_CURVE_MAXDIM];
-    eval_piece(L, c, i, tk_checknum(L, "c:piece", 3, "t"), x);
+    eval_piece(L, c, i, tk_checknum_m(L, "c:piece", 3, "t"), x);
     tk_pushpoint(L, c->d, x);
     return 1;
 }
@@ -156,7 +156,7 @@ static int c_piece_xy(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:piece_xy");
     int i = check_piece(L, c, "c:piece_xy", 2);
     double x[PC_CURVE_MAXDIM];
-    eval_piece(L, c, i, tk_checknum(L, "c:piece_xy", 3, "t"), x);
+    eval_piece(L, c, i, tk_checknum_m(L, "c:piece_xy", 3, "t"), x);
     return push_coords(L, c->d, x);
 }
 
@@ -348,7 +348,7 @@ static int c_coef(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:coef");
     if (c->kind != KIND_FOURIER) return luaL_error(L, "c:coef: not a Fourier curve");
     int k = (int)luaL_optinteger(L, 2, 1);
-    if (k < 1 || k > c->d) tk_argerror(L, "c:coef", 2, "k", "a coordinate number");
+    if (k < 1 || k > c->d) tk_argerror_at(L, "c:coef", 2, 1, "k", "a coordinate number");
     int m = c->n + 1;
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);

@@ -103,13 +103,13 @@ static int l_clamp_qb(lua_State *L) {
 
 static int hs_call(lua_State *L) {
     pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
-    lua_pushnumber(L, pc_hspline_eval(h, tk_checknum(L, "halfspline", 2, "t")));
+    lua_pushnumber(L, pc_hspline_eval(h, tk_checknum_m(L, "halfspline", 2, "t")));
     return 1;
 }
 
 static int hs_deriv(lua_State *L) {
     pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
-    lua_pushnumber(L, pc_hspline_deriv(h, tk_checknum(L, "g:deriv", 2, "t")));
+    lua_pushnumber(L, pc_hspline_deriv(h, tk_checknum_m(L, "g:deriv", 2, "t")));
     return 1;
 }
 

@@ -11,8 +11,13 @@
 
 /* "FNAME: argument #ARG (WHAT) must be EXPECTED, got VALUE" */
 int tk_argerror(lua_State *L, const char *fname, int arg, const char *what, const char *expected);
+/* The same for a method or __call: the value at stack index idx is shown as argument #shown. */
+int tk_argerror_at(lua_State *L, const char *fname, int idx, int shown, const char *what,
+                   const char *expected);
 /* A finite number at arg. */
 double tk_checknum(lua_State *L, const char *fname, int arg, const char *what);
+/* The same for a method or __call argument at stack index idx, shown as argument #idx - 1. */
+double tk_checknum_m(lua_State *L, const char *fname, int idx, const char *what);
 double tk_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt);
 /* The coordinates of the point at idx into out (at most maxdim): returns its dimension, 0 if
  * the value is not a point/vector value at all; a vector or weighted value raises the

@@ -14,7 +14,12 @@ static const char *shown_value(lua_State *L, int arg) {
 }
 
 int tk_argerror(lua_State *L, const char *fname, int arg, const char *what, const char *expected) {
-    const char *value = shown_value(L, arg);
+    return tk_argerror_at(L, fname, arg, arg, what, expected);
+}
+
+int tk_argerror_at(lua_State *L, const char *fname, int idx, int arg, const char *what,
+                   const char *expected) {
+    const char *value = shown_value(L, idx);
     if (what && what[0])
         return luaL_error(L, "%s: argument #%d (%s) must be %s, got %s", fname, arg, what,
                           expected, value);
@@ -25,6 +30,13 @@ double tk_checknum(lua_State *L, const char *fname, int arg, const char *what) {
     if (lua_type(L, arg) != LUA_TNUMBER) tk_argerror(L, fname, arg, what, "a number");
     double v = lua_tonumber(L, arg);
     if (!isfinite(v)) tk_argerror(L, fname, arg, what, "a finite number");
+    return v;
+}
+
+double tk_checknum_m(lua_State *L, const char *fname, int idx, const char *what) {
+    if (lua_type(L, idx) != LUA_TNUMBER) tk_argerror_at(L, fname, idx, idx - 1, what, "a number");
+    double v = lua_tonumber(L, idx);
+    if (!isfinite(v)) tk_argerror_at(L, fname, idx, idx - 1, what, "a finite number");
     return v;
 }
 
