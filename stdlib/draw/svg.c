@@ -51,9 +51,11 @@ typedef struct {
 
 /* ---- numbers and path data ---------------------------------------------------------------- */
 
+/* Coordinates are clamped to +-1e7 px (far beyond any screen), so hundredths fit in a long
+ * even where it has 32 bits. */
 static long hund(double v) {
-    if (v > 1e9) v = 1e9;
-    if (v < -1e9) v = -1e9;
+    if (v > 1e7) v = 1e7;
+    if (v < -1e7) v = -1e7;
     return lrint(v * 100);
 }
 
@@ -426,6 +428,7 @@ static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
         if (!open) {
             open_el(w, "path");
             color_attr(w, "stroke", op->color);
+            fputs(" stroke-linejoin=\"round\"", w->out);
             d_begin(w);
             d_move(w, a);
             d_letter(w, 'l');
