@@ -1,8 +1,9 @@
 # Turn Lua source files into a C table {name, text, length} so the binaries need no search path.
-# Called as: cmake -DOUT=file.c -DSYMBOL=name -DFILES="a.lua;b.lua" -P embed.cmake
+# Called as: cmake -DOUT=file.c -DSYMBOL=name -DFILES="a.lua|b.lua" -P embed.cmake
 set(body "#include <stddef.h>\n#include \"pcl_embed.h\"\n")
 set(entries "")
 set(i 0)
+string(REPLACE "|" ";" FILES "${FILES}")
 list(SORT FILES)
 foreach(f ${FILES})
   get_filename_component(name ${f} NAME_WE)

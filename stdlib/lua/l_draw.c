@@ -307,8 +307,8 @@ static int l_view(lua_State *L) {
 /* save(path [, theme]): the format follows the extension; theme "paper" or "screen". */
 static int l_save(lua_State *L) {
     pc_canvas *c = canvas(L);
+    if (lua_type(L, 1) != LUA_TSTRING) return pcl_argerror(L, 1, "path", "a file name");
     const char *path = lua_tostring(L, 1);
-    if (!path || lua_type(L, 1) != LUA_TSTRING) return pcl_argerror(L, 1, "path", "a file name");
     pc_theme theme = pcl_theme(L);
     if (!lua_isnoneornil(L, 2)) {
         const char *t = lua_tostring(L, 2);

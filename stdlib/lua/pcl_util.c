@@ -17,6 +17,7 @@ static const char *got(lua_State *L, int arg) {
         if (lua_isinteger(L, arg)) return lua_pushfstring(L, "%I", lua_tointeger(L, arg));
         return lua_pushfstring(L, "%f", lua_tonumber(L, arg));
     }
+    if (lua_isnone(L, arg)) return "nil";
     if (luaL_getmetafield(L, arg, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
     return luaL_typename(L, arg);
 }

@@ -21,7 +21,7 @@ run "$POINTCALC" syntax.lua;      expect_rc 1 "syntax error"; expect_in err.txt 
 printf 'screen(12)\n\ncircle(1, 2)\n' > badarg.lua
 run "$POINTCALC" badarg.lua;      expect_rc 1 "bad argument"
 expect_in err.txt "badarg.lua:3: circle: argument #3 (radius) must be a non-negative number, got nil" "argument error"
-run "$POINTCALC" -e 'pset(1)';    expect_rc 1 "-e error"; expect_in err.txt "(command line):1: pset: argument #2 (y) must be a number or a point, got no value" "-e error"
+run "$POINTCALC" -e 'pset(1)';    expect_rc 1 "-e error"; expect_in err.txt "(command line):1: pset: argument #2 (y) must be a number or a point, got nil" "-e error"
 expect_no_file pointcalc.png "no output after an error"
 
 # --- several -o at once; exact pixels through PPM ---
@@ -37,7 +37,7 @@ expect_eq "$(head -c 8 a.png | od -An -tx1 | tr -d ' ')" "89504e470d0a1a0a" "PNG
 expect_in a.svg "<svg" "SVG root"
 expect_no_file draw.png "no default output when -o is given"
 run "$POINTCALC" --paper -o paper.ppm draw.lua
-expect_eq "$(od -An -tx1 -j $((15 + 640 * 3 + 3)) -N 3 paper.ppm | tr -d ' ')" "ffffff" "paper background"
+expect_eq "$(od -An -tx1 -j $((15 + (5 * 640 + 5) * 3)) -N 3 paper.ppm | tr -d ' ')" "ffffff" "paper background"
 
 # --- the default output name ---
 mkdir sub && printf 'circle(320, 240, 100)\n' > sub/ring.lua

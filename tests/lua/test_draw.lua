@@ -92,7 +92,7 @@ check.err(function() circle(1, 2, 3, 1, nil, nil, 0) end, "circle: argument #7 (
 check.err(function() pset(1, 2, 16) end, "pset: argument #3 (colour) must be a colour number 0..15, got 16", "colour range")
 check.err(function() pset("a", 2) end, "pset: argument #1 (x) must be a number or a point, got string", "x type")
 check.err(function() pset(1, 0 / 0) end, "pset: argument #2 (y) must be a finite number", "NaN")
-check.err(function() line(1, 2, 3) end, "line: argument #4 (end y) must be a number or a point, got no value", "line end")
+check.err(function() line(1, 2, 3) end, "line: argument #4 (end y) must be a number or a point, got nil", "line end")
 check.err(function() line(1, 2, 3, 4, 1, "x") end, "line: argument #6 (style) must be \"b\" (box) or \"bf\" (filled box)", "line style")
 check.err(function() paint(1, 2, 3, 99) end, "paint: argument #4 (border colour) must be a colour number 0..15, got 99", "paint border")
 check.err(function() window(0, 0, 0, 5) end, "window: window (0, 0)-(0, 5) has zero width or height", "flat window")
