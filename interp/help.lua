@@ -99,8 +99,16 @@ def("p:method", {"p:lerp(B, t)  p:mid(B)  p:dist(B)  p:dot(v)  p:cross(v)  p:uni
                  "p:perp()  p:angle(...)  p:normalize()  p:weight()  p:coords()  p:near(q)"},
   "The one-receiver functions as methods: p:dist(B) is dist(p, B).", "method")
 
--- Fields that a value's __index computes (so Tab cannot find them in a table), by __name.
-H.fields_of = {point = {"x", "y", "z", "w"}}
+-- Fields and methods that a value's __index computes (so Tab cannot find them in a table), by
+-- the metatable's __name.
+H.fields_of = {
+  point = {"x", "y", "z", "w"},
+  complex = {"re", "im", "conj", "abs", "arg", "exp", "point"},
+  mobius = {"z0", "phi", "inverse"},
+  projection = {"xy"},
+  oresme = {"lambda", "m", "n"},
+  halfspline = {"n", "m", "t0", "c1", "c2", "v", "deriv"},
+}
 
 -- ---------------------------------------------------------------------------------------
 area("frames", "Simplices and affine maps",
@@ -131,6 +139,119 @@ def("f:compose", "f:compose(g) | f * g -> map",
   "The map applying g first, then f.", "method")
 def("f:inverse", "f:inverse() -> map",
   "The inverse map; a singular or non-square map is an error.", "method")
+
+-- ---------------------------------------------------------------------------------------
+area("smooth", "Smoothsteps (smooth.*)",
+  "Functions g on [0, 1] with g(0) = 0, g(1) = 1 and zero slope at both ends, which join two " ..
+  "curves smoothly; the curve builders take them as their g.",
+  "toolkit.md")
+
+def("smooth.sine", "smooth.sine(t) -> number",
+  "(1 - cos(pi t))/2, the smoothstep of examples 3 and 4.")
+def("smooth.cubic", "smooth.cubic(t) -> number",
+  "3t^2 - 2t^3, the smoothstep of examples 5, 6 and 9.")
+def("smooth.power", "smooth.power(n [, t]) -> number | g",
+  "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g.")
+def("smooth.half", "smooth.half(n, m, t0 [, t]) -> number | g",
+  "The asymmetric half-spline of example 8: c1 t^n before t0, 1 - c2 (1 - t)^m after, slope continuous; without t the object g (g(t), g:deriv(t), g.c1, g.c2, g.v).")
+def("smooth.locus", "smooth.locus(n, m, t0) -> number",
+  "The junction ordinate v(t0) = m t0/(n - n t0 + m t0) of the half-spline (n, m, t0): the locus of example 8.")
+def("smooth.clamp", "smooth.clamp(t) -> number",
+  "The clamped smoothstep of examples 20-22: 0 before 0, 2t^2 to 1/2, 1 - 2(1 - t)^2 to 1, then 1.")
+def("smooth.clamp_qb", "smooth.clamp_qb(t [, prev]) -> number",
+  "smooth.clamp as the listings' strict IF chain computes it: at t exactly 0, 1/2 or 1 it keeps prev.")
+
+-- ---------------------------------------------------------------------------------------
+area("curves", "Curves (Stepanov's toolkit)",
+  "Curves built from points, directions and smoothsteps; a curve c gives points c(t) and draws " ..
+  "itself with c:draw{...}.",
+  "toolkit.md")
+
+def("spline2", "spline2(A, a, B, b [, g]) -> curve",
+  "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): example 5.")
+def("stroke", "stroke{nodes = {P, ...}, uin = ..., kink = ... | ein = {V, ...}, rin =, rout =, n =, m =, t0 =, g =, closed = false} -> curve",
+  "The one-stroke curve through the nodes, one quadrilateral-spline piece per pair (examples 10, 11, 13).")
+def("fourier", "fourier({P1, P2, ..., P2n}) -> curve",
+  "The closed curve through 2n points by a finite Fourier series (example 12).")
+def("sphdir", "sphdir(u1, u2) -> vector",
+  "The unit vector of longitude u1 and latitude u2 (example 33).")
+def("plot", "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, color = c, map = m, qb = false})",
+  "Draw the curve t -> f(t) (a 2-D point or x, y); with map, f may be 3-D and map projects it.")
+def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
+  "The point of a curve at parameter t (a stroke's t runs over 0..number of pieces).", "method")
+def("c:each", "c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t",
+  "Walk a curve: for M, i, t in c:each{t = {0, 1, .01}} do ... end.", "method")
+def("c:draw", "c:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, color = c, map = m, qb = false}",
+  "Draw a curve (by default as the listings do: pset at a thousand parameter steps).", "method")
+def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
+  "A stroke's piece i at its own parameter t.", "method")
+def("c:controls", "c:controls(i) -> A, P, Q, B",
+  "The quadrilateral of a stroke's piece i: its nodes A, B and the side points P, Q.", "method")
+def("c:coef", "c:coef(k) -> a, b",
+  "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+
+-- ---------------------------------------------------------------------------------------
+area("curvilinear", "Curvilinear coordinates",
+  "A system C maps (t1, t2) to points, draws its own grid, and carries any curve given in " ..
+  "(t1, t2) through it \"as a lens\" (Stepanov's method).",
+  "toolkit.md")
+
+def("curvilinear", "curvilinear(f) -> C",
+  "The system of a function f(t1, t2) returning a point or x, y.")
+def("bilinear", "bilinear(P0, P1, P2, P3) -> C",
+  "The bilinear system of a quadrilateral: P0 + t1(P1 - P0) + t2(P3 - P0) + t1 t2(P2 - P3 - P1 + P0) (example 2).")
+def("ruled", "ruled(A, B) -> C",
+  "The ruled system between two curves: C(t1, t2) = A(t1) + t2(B(t1) - A(t1)).")
+def("graphs", "graphs(f, g) -> C",
+  "The system between the graphs y = f(x) and y = g(x): C(x, t) = (x, f(x) + t(g(x) - f(x))) (example 19).")
+def("patch", "patch(S0, S1, S2, S3) -> C",
+  "The system inside a curvilinear quadrilateral with sides S0..S3 (curves over [0, 1], end to end): example 25.")
+def("graph_on", "graph_on(A, B, f [, a, b]) -> function",
+  "The graph of f over [a, b] erected on the segment AB, as a curve t -> point for t in [0, 1] (example 23).")
+def("screenmap", "screenmap(x0, y0, a [, b]) -> function",
+  "(x, y) -> (x0 + a x, y0 - b y): mathematical coordinates (y up) onto the screen, as the listings' xe, ye.")
+def("C(t1, t2)", "C(t1, t2) -> point | C:xy(t1, t2) -> x, y",
+  "The point of a system with coordinates t1, t2.", "method")
+def("C:grid", "C:grid{t1 = {a, b, step [, fine]}, t2 = {...}, family = \"t1\"|\"t2\", brush =, color =, map =}",
+  "Draw the coordinate lines t1 = const and t2 = const of a system.", "method")
+def("C:draw", "C:draw(curve, opts)",
+  "Draw a curve given in (t1, t2) through the system, as through a lens.", "method")
+def("C:pre", "C:pre(g) -> C",
+  "The system (t1, t2) -> C(g(t1, t2)): a reparametrisation, such as squash01.", "method")
+def("C:post", "C:post(h) -> C",
+  "The system (t1, t2) -> h(C(t1, t2)), such as screenmap(320, 240, 100).", "method")
+def("C:clamp", "C:clamp{t1 = true, t2 = true, qb = false} -> C",
+  "The system with smooth.clamp applied to the chosen parameters (examples 20-22).", "method")
+
+-- ---------------------------------------------------------------------------------------
+area("maps", "Maps, projections and numerics",
+  "The plane onto a square, oblique projections, complex numbers and the Moebius map, " ..
+  "Oresme's function and bisection.",
+  "toolkit.md")
+
+def("squash", "squash(p [, q]) -> numbers",
+  "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28).")
+def("squash01", "squash01(p [, q]) -> numbers",
+  "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument.")
+def("oblique", "oblique(C0, r, k, u) -> projection",
+  "The oblique projection of examples 32-34: the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
+def("projection", "projection(C0, C1, C2, C3) -> projection",
+  "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points; pr(P) or pr:xy(x, y, z).")
+def("complex", "complex(re [, im]) | complex(P) -> z",
+  "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point().")
+def("complex.i", "complex.i", "The imaginary unit.", "value")
+def("complex.polar", "complex.polar(r, u) -> z",
+  "The complex number r e^(iu).")
+def("complex.exp", "complex.exp(z) -> z", "The complex exponential.")
+def("complex.abs", "complex.abs(z) -> number", "The modulus |z|.")
+def("complex.arg", "complex.arg(z) -> number", "The argument of z: atan2(im, re), in radians.")
+def("complex.conj", "complex.conj(z) -> z", "The complex conjugate.")
+def("mobius", "mobius(z0 [, phi]) -> M",
+  "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse().")
+def("oresme", "oresme(lambda [, m [, y0, y1]]) -> o",
+  "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o.")
+def("bisect", "bisect(f, a, b [, tol]) -> x, iterations",
+  "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default).")
 
 -- ---------------------------------------------------------------------------------------
 area("draw", "Drawing (QBasic SCREEN 12)",

@@ -61,6 +61,15 @@ static void catch_sigint(struct sigaction *old) {
     sigaction(SIGINT, &sa, old);
 }
 
+/* After Ctrl-C at a prompt: the terminal echoes "^C" itself unless the line editor has it. */
+static void show_interrupt(void) {
+#ifdef PC_HAVE_LIBEDIT
+    fputs("^C\n", stdout);
+#else
+    fputs("\n", stdout);
+#endif
+}
+
 /* A line without its newline (malloc'ed), or NULL at end of input. */
 static char *read_line(const char *prompt) {
 #ifdef PC_HAVE_LIBEDIT
@@ -388,7 +397,7 @@ static int step(lua_State *L, int mod, char *line) {
         got_sigint = 0;
         char *next = read_line(">> ");
         if (!next && got_sigint) {   /* Ctrl-C drops the unfinished chunk */
-            fputs("^C\n", stdout);
+            show_interrupt();
             lua_settop(L, mod);
             free(src);
             return 1;
@@ -447,7 +456,7 @@ void host_repl(lua_State *L, const char *watch) {
         got_sigint = 0;
         char *line = read_line("> ");
         if (!line && got_sigint) {
-            fputs("^C\n", stdout);
+            show_interrupt();
             continue;
         }
         if (!line) {

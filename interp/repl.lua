@@ -406,10 +406,11 @@ local function keys_of(v, methods_only, into)
     else
       if type(index) == "function" then
         local name = rawget(mt, "__name")
-        if not methods_only and help.fields_of[name] then
+        if help.fields_of[name] then
           local obj = v
           for _, k in ipairs(help.fields_of[name]) do   -- only those this value has (A.z in 3-D)
-            if pcall(function() return obj[k] end) then add(k, 0) end
+            local ok, x = pcall(function() return obj[k] end)
+            if ok and x ~= nil then add(k, x) end
           end
         end
         for i = 1, 8 do

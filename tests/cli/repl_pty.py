@@ -34,6 +34,10 @@ def expect(cond, what, detail=""):
         fail(what, detail)
 
 
+class Ended(Exception):
+    """The REPL exited when it should not have: nothing after that can be checked."""
+
+
 class Repl:
     """A pointcalc process on a pseudo-terminal of cols x rows."""
 
@@ -79,8 +83,7 @@ class Repl:
                     fail(what, "timed out; output so far: %r" % self.raw[self.mark:][-600:])
                     return None
             except EOFError:
-                fail(what, "the REPL ended; output: %r" % self.raw[self.mark:][-600:])
-                return None
+                raise Ended("%s: the REPL ended; output: %r" % (what, self.raw[-800:]))
         return rx.search(self.raw[self.mark:])
 
     def type(self, keys):
@@ -200,10 +203,22 @@ def main():
     out = r.line("x = = 1")
     expect(out.startswith("stdin:1:") and "near '='" in out, "a syntax error", repr(out))
     out = r.line("circle(1, 2)")
-    expect(out == "stdin:1: circle: argument #3 (radius) must be a non-negative number, got no value",
+    expect(out == "stdin:1: circle: argument #3 (radius) must be a non-negative number, got nil",
            "an argument error, without a useless traceback", repr(out))
     out = r.line("1 + 1")
     expect(out == "2", "the session goes on after errors", repr(out))
+
+    # Ctrl-C interrupts a running statement, and drops a half-typed line at the prompt
+    r.mark = len(r.raw)
+    r.type("while true do end\r")
+    time.sleep(0.3)
+    os.write(r.fd, b"\x03")
+    found = r.wait_for(rb"interrupted\r?\n> $", "Ctrl-C interrupts a statement")
+    expect(found is not None, "Ctrl-C interrupts a running statement")
+    out = r.answer("abc\x03")
+    expect(out == "" or out == "^C", "Ctrl-C drops the line being typed", repr(out))
+    out = r.line("2 + 2")
+    expect(out == "4", "the session goes on after Ctrl-C", repr(out))
 
     # Tab completion: a global name, a field after '.', a method after ':'
     out = r.answer("ler\t\r")
@@ -341,4 +356,9 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except Ended as e:
+        fail("session", str(e))
+        print(f"{checks} checks, {failures} failed (stopped early)")
+        sys.exit(1)

@@ -4,4 +4,13 @@
 # tests/cli/repl_pty.py (python3's pty module); it runs in lib.sh's scratch folder.
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/lib.sh"
-POINTCALC=$(command -v "$POINTCALC" || echo "$POINTCALC") python3 "$here/repl_pty.py"
+
+# --watch on the command line: a usage error for a file it cannot write
+run "$POINTCALC" --watch pic.gif; expect_rc 2 "--watch with an unknown extension"
+expect_in err.txt "cannot watch 'pic.gif': the extension must be .png, .svg or .ppm" "--watch message"
+run "$POINTCALC" --watch;         expect_rc 2 "--watch without a file"
+
+# the REPL itself, typed at through a pseudo-terminal
+checks=$((checks + 1))
+python3 "$here/repl_pty.py" || fail "the REPL session (see the FAIL lines above)"
+finish
