@@ -55,6 +55,7 @@ void pc_palette_default(pc_rgb *pal, int ncolors) {
         return;
     }
     for (int i = 0; i < 16; i++) pal[i] = dac(ega16[i][0], ega16[i][1], ega16[i][2]);
+    if (ncolors == 2) pal[1] = dac(63, 63, 63);   /* two colours: white ink, as SCREEN 2 */
 }
 
 int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {

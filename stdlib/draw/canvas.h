@@ -43,8 +43,8 @@ typedef struct {
     uint8_t color;        /* palette attribute */
     uint8_t flags;
     uint16_t clip;        /* index into pc_canvas.clips */
-    float x1, y1, x2, y2;
-    float rx, ry, a0, a1;
+    double x1, y1, x2, y2;   /* double: a float would move some dots across a pixel edge */
+    double rx, ry, a0, a1;
     uint32_t span_first, span_count;
 } pc_op;
 

@@ -47,8 +47,8 @@ static int dot(pc_canvas *c, double x, double y, int color, int dflt) {
     pc_plot(c, (int)px(sx), (int)px(sy), color);
     pc_op *op = pc_push_op(c, PC_OP_DOT, color);
     if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = (float)sx;
-    op->y1 = (float)sy;
+    op->x1 = sx;
+    op->y1 = sy;
     set_cursor(c, x, y);
     return PC_DRAW_OK;
 }
@@ -136,7 +136,7 @@ int pc_line(pc_canvas *c, double x1, double y1, double x2, double y2, int color)
     raster_line_f(c, a, b, d, e, color);
     pc_op *op = pc_push_op(c, PC_OP_LINE, color);
     if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = (float)a; op->y1 = (float)b; op->x2 = (float)d; op->y2 = (float)e;
+    op->x1 = a; op->y1 = b; op->x2 = d; op->y2 = e;
     set_cursor(c, x2, y2);
     return PC_DRAW_OK;
 }
@@ -165,7 +165,7 @@ int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int f
     raster_box(c, x0, y0, x1, y1, color, filled);
     pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
     if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = (float)x0; op->y1 = (float)y0; op->x2 = (float)x1; op->y2 = (float)y1;
+    op->x1 = x0; op->y1 = y0; op->x2 = x1; op->y2 = y1;
     return PC_DRAW_OK;
 }
 
@@ -180,7 +180,7 @@ int pc_box(pc_canvas *c, double x1, double y1, double x2, double y2, int color, 
     raster_box(c, px(a), px(b), px(d), px(e), color, filled);
     pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
     if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = (float)a; op->y1 = (float)b; op->x2 = (float)d; op->y2 = (float)e;
+    op->x1 = a; op->y1 = b; op->x2 = d; op->y2 = e;
     set_cursor(c, x2, y2);
     return PC_DRAW_OK;
 }
@@ -190,7 +190,7 @@ int pc_fill_view(pc_canvas *c, int color) {
     raster_box(c, v->x0, v->y0, v->x1, v->y1, color, 1);
     pc_op *op = pc_push_op(c, PC_OP_CLEAR, color);
     if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = (float)v->x0; op->y1 = (float)v->y0; op->x2 = (float)v->x1; op->y2 = (float)v->y1;
+    op->x1 = v->x0; op->y1 = v->y0; op->x2 = v->x1; op->y2 = v->y1;
     return PC_DRAW_OK;
 }
 
@@ -297,9 +297,9 @@ int pc_circle(pc_canvas *c, double x, double y, double r, int color, double star
     pc_op *op = pc_push_op(c, PC_OP_ARC, color);
     if (!op) return PC_DRAW_ENOMEM;
     op->flags = (uint8_t)flags;
-    op->x1 = (float)sx; op->y1 = (float)sy;
-    op->rx = (float)rx; op->ry = (float)ry;
-    op->a0 = (float)a0; op->a1 = (float)a1;
+    op->x1 = sx; op->y1 = sy;
+    op->rx = rx; op->ry = ry;
+    op->a0 = a0; op->a1 = a1;
     set_cursor(c, x, y);
     return PC_DRAW_OK;
 }
@@ -371,7 +371,7 @@ done:
     if (ok != PC_DRAW_OK) return ok;
     pc_op *op = pc_push_op(c, PC_OP_FILL, color);
     if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = (float)fx; op->y1 = (float)fy;
+    op->x1 = fx; op->y1 = fy;
     op->span_first = first;
     op->span_count = (uint32_t)(c->nspans - first);
     return PC_DRAW_OK;
