@@ -232,8 +232,12 @@ static int n_load(lua_State *L) {
         return 2;
     }
     fflush(stdout);
-    int ok = host_load_script(L, path, qbasic) && host_pcall(L, 0);
-    lua_pushboolean(L, ok);
+    if (!host_load_script(L, path, qbasic)) {   /* the message is printed */
+        lua_pushboolean(L, 0);
+        return 1;
+    }
+    lua_call(L, 0, 0);   /* a runtime error goes to the REPL's handler, with the script's lines */
+    lua_pushboolean(L, 1);
     return 1;
 }
 

@@ -167,16 +167,20 @@ function M.on_error(e)
   elseif has_tostring(e) then msg = safe_tostring(e)
   else msg = "(error object is a " .. type(e) .. " value)" end
   local tb = debug.traceback("", 2)
+  -- the frames of the user's code: up to the REPL's own machinery, without the chunk typed at
+  -- the prompt and the builtins around it
   local lines = {}
   for line in tb:gmatch("[^\n]+") do
+    if line:find("[pointcalc/repl.lua]", 1, true) then break end
     if not (line == "stack traceback:" or line:match("^%s*%[C%]: in %?$")
-            or line:match("^%s*stdin:%d+: in main chunk$")
-            or line:match("^%s*%[C%]: in function 'error'$")
-            or line:match("^%s*%(%.%.%.tail calls%.%.%.%)$")
-            or line:match("%[pointcalc/repl%.lua%]") or line:match("%[pointcalc/help%.lua%]")) then
+            or line:match("^%s*stdin:%d+: in main chunk$")) then
       lines[#lines + 1] = line
     end
   end
+  while #lines > 0 and (lines[#lines]:match("^%s*%[C%]:") or lines[#lines]:match("%(%.%.%.tail calls%.%.%.%)")) do
+    lines[#lines] = nil
+  end
+  if #lines > 0 and lines[1]:match("^%s*%[C%]: in function 'error'$") then table.remove(lines, 1) end
   local lua_frames = false
   for _, line in ipairs(lines) do
     if not line:match("^%s*%[C%]:") then lua_frames = true end

@@ -238,6 +238,8 @@ def main():
     out = r.line(":help")
     expect("Commands" in out and ":show [COLUMNS]" in out and "Drawing" in out and "pset" in out,
            ":help lists the commands and the API by area", repr(out[:300]))
+    out = r.line("?")
+    expect(out.startswith("Commands"), "a lone '?' is :help", repr(out[:80]))
     out = r.line(":nonsense")
     expect("unknown command ':nonsense'" in out, "an unknown command", repr(out))
 
@@ -275,6 +277,17 @@ def main():
     expect(out == "triangle drawn", ":load runs the script", repr(out))
     out = r.line("#T, point(150, 100)")
     expect(out == "3\t12", "the script's globals and drawing are in the session", repr(out))
+    with open("ring.bas", "w") as f:
+        f.write("' a QBasic program\r\nSCREEN 12\r\nCIRCLE (500, 400), 30, 10\r\n")
+    out = r.line(":load ring.bas")
+    expect(out == "", ":load runs a QBasic program", repr(out))
+    out = r.line("point(530, 400)")
+    expect(out == "10", "the QBasic program drew in the session", repr(out))
+    with open("bad.lua", "w") as f:
+        f.write("local function inner() error('bad script') end\ninner()\n")
+    out = r.line(":load bad.lua")
+    expect(out.startswith("bad.lua:1: bad script\nstack traceback:") and "bad.lua:2: in main chunk" in out
+           and "repl.lua" not in out, ":load shows the script's error and its lines only", repr(out))
     out = r.line(":load missing.lua")
     expect("cannot open 'missing.lua'" in out, ":load of a missing file", repr(out))
     r.line("window(0, 0, 64, 48)")
