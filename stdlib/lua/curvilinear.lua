@@ -37,19 +37,32 @@ local function plotter(opts, fname)
   return plot
 end
 
+-- a grid range {a, b, step [, fine step] [, fine = {a', b', step'}]}: the values of the lines
+-- (a, b, step) and the samples along the lines of the other family (the same range with the
+-- fine step, or the range `fine`)
 local function checkrange(r, field, fname)
   if type(r) ~= "table" or type(r[1]) ~= "number" or type(r[2]) ~= "number"
       or type(r[3]) ~= "number" then
     tk.fielderror(fname, field, "a range {a, b, step [, fine step]}", r, 4)
   end
-  return { r[1], r[2], r[3], qb = r.qb }, { r[1], r[2], r[4] or (r[2] - r[1]) / 1000, qb = r.qb }
+  local fine = r.fine
+  if fine ~= nil then
+    if type(fine) ~= "table" or type(fine[1]) ~= "number" or type(fine[2]) ~= "number" then
+      tk.fielderror(fname, field .. ".fine", "a range {a, b, step}", fine, 4)
+    end
+    fine = { fine[1], fine[2], fine[3] or (fine[2] - fine[1]) / 1000, qb = r.qb }
+  else
+    fine = { r[1], r[2], r[4] or (r[2] - r[1]) / 1000, qb = r.qb }
+  end
+  return { r[1], r[2], r[3], qb = r.qb }, fine
 end
 
 -- C:grid{t1 = {a, b, step [, fine]}, t2 = {a, b, step [, fine]}, family = "t1"|"t2",
 --        brush = "pset"|"dot"|fn, color = c, map = m, qb = false}
 -- draws the lines t1 = const (t1 = a, a + step, ..., each traced along t2 with t2's fine step)
 -- and the lines t2 = const likewise; family = "t1" draws only the lines t1 = const.
--- The fine step defaults to a thousandth of the range.
+-- The fine step defaults to a thousandth of the range; t1 = {a, b, step, fine = {a', b',
+-- step'}} traces the lines t2 = const over another range than the values of the lines t1.
 function System:grid(opts)
   local fname = "C:grid"
   if type(opts) ~= "table" then tk.argerror(fname, 1, "opts", "a table {t1 = ..., t2 = ...}", opts) end
