@@ -61,6 +61,23 @@ static void catch_sigint(struct sigaction *old) {
     sigaction(SIGINT, &sa, old);
 }
 
+/* The terminal was resized: the line editor learns the new width at the next prompt (it does
+ * not watch signals itself, so that Ctrl-C stays the REPL's). */
+static volatile sig_atomic_t resized;
+static void on_sigwinch(int sig) {
+    (void)sig;
+    resized = 1;
+}
+
+static void catch_sigwinch(struct sigaction *old) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigwinch;
+    sa.sa_flags = SA_RESTART;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGWINCH, &sa, old);
+}
+
 /* After Ctrl-C at a prompt: the terminal echoes "^C" itself unless the line editor has it. */
 static void show_interrupt(void) {
 #ifdef PC_HAVE_LIBEDIT
@@ -73,6 +90,10 @@ static void show_interrupt(void) {
 /* A line without its newline (malloc'ed), or NULL at end of input. */
 static char *read_line(const char *prompt) {
 #ifdef PC_HAVE_LIBEDIT
+    if (resized) {
+        resized = 0;
+        rl_resize_terminal();
+    }
     return readline(prompt);
 #else
     fputs(prompt, stdout);
@@ -97,6 +118,10 @@ static void history_open(void) {
         size_t n = strlen(home) + sizeof HISTORY_FILE + 1;
         S.history = malloc(n);
         if (S.history) snprintf(S.history, n, "%s/%s", home, HISTORY_FILE);
+    }
+    if (!isatty(STDIN_FILENO)) {   /* lines piped in are not the user's history */
+        free(S.history);
+        S.history = NULL;
     }
     using_history();
     stifle_history(HISTORY_MAX);
@@ -453,8 +478,9 @@ void host_repl(lua_State *L, const char *watch) {
         if (watch_set(L, watch, err, sizeof err)) printf("watching %s\n", watch);
         else fprintf(stderr, "%s\n", err);
     }
-    struct sigaction old_int;
+    struct sigaction old_int, old_winch;
     catch_sigint(&old_int);   /* Ctrl-C at the prompt drops the line */
+    catch_sigwinch(&old_winch);
     for (;;) {
         fflush(stdout);
         got_sigint = 0;
@@ -470,6 +496,7 @@ void host_repl(lua_State *L, const char *watch) {
         if (!step(L, mod, line)) break;
     }
     sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGWINCH, &old_winch, NULL);
     fflush(stdout);
     free(S.watch);
     free(S.history);
