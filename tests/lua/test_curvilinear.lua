@@ -45,6 +45,16 @@ eq(point(125, 112), 0, "inside a grid cell: empty")
 cls()
 R:grid{t1 = {0, 1, .5}, t2 = {0, 1, .5}, color = 9, family = "t1"}
 eq(point(150, 137), 9, "family t1: the line t1 = 1/2"); eq(point(173, 125), 0, "family t1: no line t2 = 1/2")
+-- the other family over its own range, and QBasic-faithful counts
+local hits = 0
+R:grid{t1 = {0, 1, .5, fine = {0, .5, .25}}, t2 = {0, 1, .5, .5}, brush = function() hits = hits + 1 end}
+eq(hits, 3 * 3 + 3 * 3, "fine = {0, .5, .25}: the lines t2 = const traced over t1 in [0, .5]")
+hits = 0
+R:grid{t1 = {0, 1, .5, .001}, t2 = {0, 1, .5, .001}, qb = true, brush = function() hits = hits + 1 end}
+eq(hits, 2 * 3 * 1001, "qb = true: 1001 samples per line, as QBasic's FOR")
+cls()
+R:grid{t1 = {0, 1, 1, fine = {0, .5, .01}}, t2 = {0, 1, 1}, color = 13, family = "t2"}
+eq(point(140, 100), 13, "fine range: the line t2 = 0 up to t1 = .5"); eq(point(155, 100), 0, "and no further")
 cls()
 -- a unit circle in (t1, t2) seen through R: an ellipse of radii 50, 25 around (150, 125)
 R:draw(function(u) return .5 + .5 * cos(u), .5 + .5 * sin(u) end, {t = {0, 2 * pi, .001}, color = 10})
@@ -152,6 +162,7 @@ same(Ppl(1e9, 0), Pt(1, .5), "far right to side 1", 1e-6)
 err(function() curvilinear(5) end, "curvilinear: argument #1 (f) must be a function (t1, t2) -> point or x, y, got 5", "not a map")
 err(function() R:grid{t1 = {0, 1, .1}} end, "C:grid: t2 must be a range {a, b, step [, fine step]}, got nil", "grid t2")
 err(function() R:grid{t1 = {0, 1, .1}, t2 = {0, 1, .1}, family = "x"} end, 'C:grid: family must be "t1", "t2" or nil (both), got string', "family")
+err(function() R:grid{t1 = {0, 1, .1, fine = 3}, t2 = {0, 1, .1}} end, "C:grid: t1.fine must be a range {a, b, step}, got 3", "fine")
 err(function() R:grid(3) end, "C:grid: argument #1 (opts) must be a table", "grid opts")
 err(function() R:draw(function(t) return t, t end) end, "C:draw: give the parameter range t = {a, b, step}", "draw without t")
 err(function() R:pre(1) end, "C:pre: argument #1 (g) must be a function", "pre")
