@@ -329,8 +329,8 @@ static void report(lua_State *L) {
     lua_pop(L, 1);
 }
 
-/* Call the function on top of the stack (nargs arguments below... above it) with the REPL's
- * error handler, Ctrl-C armed; leaves nresults (or all) results.  0 on error (printed). */
+/* Call the function below its nargs arguments on top of the stack, with the REPL's error
+ * handler and Ctrl-C armed; leaves nresults (or all) results.  0 on error (printed). */
 static int call(lua_State *L, int mod, int nargs, int nresults) {
     int base = lua_gettop(L) - nargs;
     lua_getfield(L, mod, "on_error");
@@ -354,7 +354,10 @@ static int call(lua_State *L, int mod, int nargs, int nresults) {
 static int compile(lua_State *L, const char *src) {
     size_t n = strlen(src);
     char *expr = malloc(n + 10);
-    if (!expr) return LUA_ERRMEM;
+    if (!expr) {
+        lua_pushliteral(L, "not enough memory");
+        return LUA_ERRMEM;
+    }
     memcpy(expr, "return ", 7);
     memcpy(expr + 7, src, n);
     memcpy(expr + 7 + n, ";", 2);

@@ -42,7 +42,7 @@ local function function_names()
 end
 
 local function has_tostring(v)
-  local mt = getmetatable(v)
+  local mt = debug.getmetatable(v)
   return type(mt) == "table" and rawget(mt, "__tostring") ~= nil
 end
 
