@@ -327,7 +327,7 @@ function M.generate(prog, chunkname)
       p.index = i
       proc.paramkeys[p.key] = p
     end
-    proc.locals, proc.local_list = {}, {}
+    proc.locals, proc.local_list, proc.global_refs = {}, {}, {}
   end
   local function is_shared(proc, node)
     local arr = node.k == "index" or node.k == "arrayref" or node.k == "dimarray"
@@ -363,6 +363,7 @@ function M.generate(prog, chunkname)
     local key, arr = key_of(node)
     local info
     if class == "global" then
+      if node.proc then node.proc.global_refs[key] = true end
       info = globals[key]
       if not info then
         info = { key = key, array = arr, ty = node.ty, text = node.text, name = node.name,
@@ -420,11 +421,12 @@ function M.generate(prog, chunkname)
     local ns = new_ns()
     for _, p in ipairs(prog.procs) do ns[p.lua:lower()] = true end
     for _, l in pairs(const_lua) do ns[l:lower()] = true end
-    for _, info in ipairs(global_list) do ns[info.lua:lower()] = true end
+    -- module variables this procedure uses (SHARED, or any for DEF FN) keep their names
+    for key in pairs(proc.global_refs) do ns[globals[key].lua:lower()] = true end
     for _, p in ipairs(proc.params) do
       p.lua = alloc(ns, { clean(p.text, p.name), clean(p.text, p.name) .. "_" .. SFX_NAME[p.ty] })
     end
-    if proc.kind ~= "sub" then proc.result = alloc(ns, { proc.lua .. "_result" }) end
+    if proc.kind ~= "sub" and not proc.expr then proc.result = alloc(ns, { proc.lua .. "_result" }) end
     for pass = 1, 3 do
       for _, info in ipairs(proc.local_list) do
         local want = (pass == 1 and not info.array and plain(info))
@@ -834,7 +836,9 @@ function M.generate(prog, chunkname)
     if k == "neg" then return exact_single(e.a) end
     if k == "call" then
       if e.fn == "rnd" or e.fn == "csng" or e.fn == "cint" or e.fn == "sgn" or e.fn == "point"
-          or e.fn == "len" or e.fn == "asc" then return true end
+          or e.fn == "len" or e.fn == "asc" or e.fn == "lbound" or e.fn == "ubound" then
+        return true
+      end
       if e.fn == "int" or e.fn == "fix" or e.fn == "abs" then return exact_single(e.args[1]) end
     end
     if k == "ucall" or k == "fncall" then return e.ty == "single" or e.ty == "int" end
@@ -846,7 +850,10 @@ function M.generate(prog, chunkname)
     if e.k == "var" or e.k == "index" or e.k == "result" or e.k == "ucall" or e.k == "fncall" then
       return e.ty == "int"
     end
-    if e.k == "call" then return e.fn == "cint" or e.fn == "sgn" or e.fn == "point" or e.fn == "asc" end
+    if e.k == "call" then
+      return e.fn == "cint" or e.fn == "sgn" or e.fn == "point" or e.fn == "asc" or e.fn == "lbound"
+        or e.fn == "ubound"
+    end
     if e.k == "rel" then return true end
     return false
   end

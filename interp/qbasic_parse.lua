@@ -422,8 +422,10 @@ function M.parse(source, opts)
 
   -- statements up to the end of the line, or up to ELSE (single-line IF)
   local function parse_stmt_list(list, stop_at_else)
+    -- list: where the statements go (a single-line IF branch), or nil for the current body
+    -- (a SUB or FUNCTION line switches the current body)
     local saved = body
-    body = list
+    if list then body = list end
     while true do
       local t = peek()
       if t.t == "eol" then break end
@@ -446,7 +448,7 @@ function M.parse(source, opts)
       end
       ::continue::
     end
-    body = saved
+    if list then body = saved end
   end
 
   local function coord_pair()
@@ -1042,7 +1044,7 @@ function M.parse(source, opts)
       pos = pos + 2
       record_label(t.v)
     end
-    parse_stmt_list(body, false)
+    parse_stmt_list(nil, false)
   end
   if cur_proc then
     err(cur_proc.kind == "sub" and "SUB without END SUB" or cur_proc.kind == "function"

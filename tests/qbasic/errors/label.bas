@@ -1,0 +1,2 @@
+' EXPECT: 2: Label not defined
+GOTO 999

@@ -1,0 +1,2 @@
+' EXPECT: 2: NEXT without FOR
+NEXT

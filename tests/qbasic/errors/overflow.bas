@@ -1,0 +1,2 @@
+' EXPECT: 2: Overflow
+i% = 40000

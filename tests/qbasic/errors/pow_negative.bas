@@ -1,0 +1,2 @@
+' EXPECT: 2: Illegal function call
+x = -8: y = x ^ (1 / 3)

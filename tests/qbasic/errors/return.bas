@@ -1,0 +1,3 @@
+' EXPECT: 3: RETURN without GOSUB
+PRINT 1
+RETURN

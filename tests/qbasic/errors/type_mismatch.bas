@@ -1,0 +1,2 @@
+' EXPECT: 2: Type mismatch
+a$ = 5

@@ -1,0 +1,3 @@
+' EXPECT: 3: LOCATE: not supported by pointcalc
+SCREEN 12
+LOCATE 1, 1

@@ -1,0 +1,2 @@
+' EXPECT: 2: INKEY$ function: not supported by pointcalc
+k$ = INKEY$
