@@ -219,8 +219,11 @@ static int n_show(lua_State *L) {
     if (!cells) return luaL_error(L, "out of memory");
     pc_braille_render(c, c->bg, scale, cols, rows, cells);
     pc_braille_print(stdout, cells, cols, rows, c->palette, terminal_colors(), 1);
+    int ink = 0;
+    for (int i = 0; i < cols * rows; i++) ink |= cells[i].bits;
     free(cells);
-    printf(" %dx%d, %.3g pixel%s per dot\n", c->width, c->height, scale, scale == 1 ? "" : "s");
+    printf(" %dx%d, %.3g pixel%s per dot%s\n", c->width, c->height, scale, scale == 1 ? "" : "s",
+           ink ? "" : " (nothing drawn)");
     fflush(stdout);
     return 0;
 }
