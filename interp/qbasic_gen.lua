@@ -748,8 +748,8 @@ function M.generate(prog, chunkname)
         if e.args[2] then code = code .. ", " .. emit_value(e.args[2], 0) end
         return code .. ")", 20
       end
-      if fn == "str$" and e.args[1].ty == "double" then
-        return "str(" .. emit_value(e.args[1], 0, true) .. ", \"double\")", 20
+      if fn == "str$" and (e.args[1].ty == "double" or e.args[1].ty == "long") then
+        return "str(" .. emit_value(e.args[1], 0, true) .. ", \"" .. e.args[1].ty .. "\")", 20
       end
       local ex = exact or e.ty == "double"
       return (FN_LUA[fn] or fn) .. "(" .. args_code(e.args, ex) .. ")", 20
@@ -858,8 +858,23 @@ function M.generate(prog, chunkname)
     return false
   end
 
+  -- an INTEGER/LONG literal stored in a SINGLE or DOUBLE variable is written as a Lua float
+  -- (320.0), so that the variable never holds a Lua integer (whose products would wrap around)
+  local function float_literal(e)
+    local s = strip(e)
+    local neg = false
+    if s.k == "neg" then neg = true; s = strip(s.a) end
+    if s.k == "num" and (s.ty == "int" or s.ty == "long") then
+      return (neg and "-" or "") .. string.format("%d", s.v) .. ".0"
+    end
+  end
+
   convert = function(e, ty)
     if ty == "string" then return (emit_value(e, 0)) end
+    if ty == "double" or (ty == "single" and exact_single(e)) then
+      local f = float_literal(e)
+      if f then return f end
+    end
     if ty == "double" then
       if e.ty == "single" and not exact_single(e) then
         return "csng(" .. emit_value(e, 0) .. ")"

@@ -96,7 +96,7 @@ end
 M.fmt_float = fmt_float
 
 local function fmt_number(v, kind)
-  if kind == "long" or (kind == nil and math.type(v) == "integer") then
+  if kind == "long" then
     return string.format("%d", v)
   end
   if kind == "double" then return fmt_float(v, true) end
@@ -363,7 +363,10 @@ function M.new(host, chunkname)
   end
   function E.read_string()
     local v = next_item(2)
-    if type(v) == "number" then return (fmt_number(v)) end
+    if type(v) == "number" then
+      local s = fmt_number(v, v == floor(v) and math.abs(v) < 2 ^ 31 and "long" or "double")
+      return s
+    end
     return v
   end
   function E.restore(label)
@@ -396,7 +399,8 @@ function M.new(host, chunkname)
       if tv == "string" then
         write(v)
       elseif tv == "number" then
-        local s = fmt_number(v, math.type(v) == "integer" and "long" or "single")
+        -- SINGLE (and INTEGER, which prints the same); LONG and DOUBLE come marked
+        local s = fmt_number(v, "single")
         write((v >= 0 and " " or "") .. s .. " ")
       elseif v == ZONE then
         write(string.rep(" ", 14 - col % 14))

@@ -26,7 +26,7 @@ done
 # readable Lua using the drawing layer
 expect_in graphics.lua 'circle(200, 200, 50, 14)' "graphics: CIRCLE becomes circle()"
 expect_in graphics.lua 'line(50, 50, 60, 60, 3, "b")' "graphics: LINE ... B"
-expect_in for_float32.lua 'do local _step = csng(.001) t = 0 while t <= 1 do' "FOR with a float32 step"
+expect_in for_float32.lua 'do local _step = csng(.001) t = 0.0 while t <= 1 do' "FOR with a float32 step"
 expect_in procs.lua 'x, y = swapit(x, y)' "SUB arguments copied back"
 
 # the host picks QBasic by extension, or by --qbasic

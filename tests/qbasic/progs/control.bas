@@ -40,3 +40,8 @@ PRINT CINT(x * 1000); : NEXT c: PRINT
 ON 2 GOTO 500, 600
 500 PRINT "five hundred"
 600 PRINT "six hundred"
+' leaving a FOR loop by GOTO; ON with an index past the list falls through
+FOR i = 1 TO 10: IF i = 3 THEN GOTO 700
+NEXT
+700 PRINT "left the loop at"; i
+ON 3 GOTO 500, 600: PRINT "fell through"

@@ -13,3 +13,5 @@ b(10) = 4: PRINT b(10); b(0)
 k = 2: DIM c$(k): c$(2) = "two": PRINT c$(2); c$(0); "|"
 DEFINT I-J: i = 2.6: PRINT i; i / 2
 SWAP x, y: PRINT x; y
+' SINGLE arithmetic never wraps around like integers: 100000^4 = 1E+20
+a = 100000: PRINT a * a * a * a; 12345678; STR$(12345678); STR$(1.5E+10)

@@ -1,0 +1,5 @@
+' EXPECT: 5: RETURN without GOSUB
+GOSUB 100
+PRINT "back"
+100 PRINT "in sub"
+RETURN
