@@ -61,8 +61,8 @@ local function numeric(ty) return NUM_RANK[ty] ~= nil end
 
 function M.parse(source, opts)
   opts = opts or {}
-  local P = {}
   local lines = {}
+  source = source:gsub("^\239\187\191", "")     -- a UTF-8 byte-order mark
   for l in (source .. "\n"):gmatch("([^\n]*)\n") do
     lines[#lines + 1] = l:gsub("\r", "")
   end
@@ -638,7 +638,8 @@ function M.parse(source, opts)
       return add(st)
     end
     expect_kw("then")
-    if peek().t == "eol" then
+    if peek().t == "eol" or is_kw("rem") then     -- only a comment after THEN: a block IF
+      while peek().t ~= "eol" do pos = pos + 1 end
       return add({ k = "ifblock", cond = cond })
     end
     local st = { k = "if1", cond = cond, then_body = {} }
