@@ -22,7 +22,8 @@ static int l_f32(lua_State *L) {
 static int push_rounded(lua_State *L, double (*fn)(double, int *)) {
     int ok;
     double r = fn(luaL_checknumber(L, 1), &ok);
-    lua_pushnumber(L, r);
+    if (ok) lua_pushinteger(L, (lua_Integer)r);
+    else lua_pushnumber(L, r);
     lua_pushboolean(L, ok);
     return 2;
 }
