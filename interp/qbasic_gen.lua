@@ -1593,6 +1593,8 @@ function M.generate(prog, chunkname)
     elseif code == "" then
       text = "-- " .. src
     else
+      -- the source's indentation, then the code, then the source line
+      if i > 1 then code = src:match("^[ \t]*") .. code end
       text = code .. "  -- " .. src
     end
     result[i] = text
