@@ -27,4 +27,6 @@ expect_eq "$(ppm_pixel graphics.ppm 20 21)" "ffffff" "PPM pixel (20,21) = colour
 expect_eq "$(ppm_pixel graphics.ppm 75 55)" "aa00aa" "PPM pixel (75,55) = colour 5"
 expect_eq "$(ppm_pixel graphics.ppm 200 200)" "0000aa" "PPM pixel (200,200) = colour 1"
 expect_eq "$(ppm_pixel graphics.ppm 11 10)" "000000" "PPM pixel (11,10) = background"
+# graphics2.bas redefined attribute 1 as PALETTE 1, 63 + 256 * 32 (6-bit red 63, green 32)
+expect_eq "$(ppm_pixel graphics2.ppm 5 5)" "ff8200" "PALETTE reaches the written picture"
 finish
