@@ -125,14 +125,19 @@ static const char *got(lua_State *L, int arg) {
     return luaL_typename(L, arg);
 }
 
+/* "argument #N", or "self" for the receiver of a method call */
+static const char *argname(lua_State *L, int arg) {
+    int shown = pcl_arg_shown(L, arg);
+    return shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+}
+
 int pcl_arg_error(lua_State *L, int arg, const char *what, const char *expected) {
     const char *name = pcl_fname(L);
-    int shown = pcl_arg_shown(L, arg);
-    const char *value = got(L, arg);
+    const char *value = got(L, arg);                    /* before anything is pushed */
+    const char *an = argname(L, arg);
     if (what && what[0])
-        return luaL_error(L, "%s: argument #%d (%s) must be %s, got %s", name, shown, what,
-                          expected, value);
-    return luaL_error(L, "%s: argument #%d must be %s, got %s", name, shown, expected, value);
+        return luaL_error(L, "%s: %s (%s) must be %s, got %s", name, an, what, expected, value);
+    return luaL_error(L, "%s: %s must be %s, got %s", name, an, expected, value);
 }
 
 static const char MEMBERSHIP[] =
@@ -153,17 +158,16 @@ static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
 }
 
 static const char *argctx(lua_State *L, int arg, const char *what) {
-    int shown = pcl_arg_shown(L, arg);
-    if (what && what[0])
-        return lua_pushfstring(L, "%s: argument #%d (%s)", pcl_fname(L), shown, what);
-    return lua_pushfstring(L, "%s: argument #%d", pcl_fname(L), shown);
+    const char *an = argname(L, arg);
+    if (what && what[0]) return lua_pushfstring(L, "%s: %s (%s)", pcl_fname(L), an, what);
+    return lua_pushfstring(L, "%s: %s", pcl_fname(L), an);
 }
 
 int pcl_dimerror(lua_State *L, int arg, const char *what, int got_dim, int dim, int dim_arg) {
     const char *ctx = argctx(L, arg, what);
     if (dim_arg > 0)
-        return luaL_error(L, "%s is %d-D, but argument #%d is %d-D: dimensions cannot be mixed",
-                          ctx, got_dim, pcl_arg_shown(L, dim_arg), dim);
+        return luaL_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed",
+                          ctx, got_dim, argname(L, dim_arg), dim);
     return luaL_error(L, "%s must be %d-D, got %d-D", ctx, dim, got_dim);
 }
 

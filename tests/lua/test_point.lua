@@ -138,6 +138,8 @@ err(function() return dist(A * 2, B) end, "dist: argument #1 (A) has weight 2, s
 err(function() return dist(A) end, "dist: with one argument it must be a vector (its length), got P(1, 2); for a distance pass two points, dist(A, B)", "dist(point)")
 err(function() return dist(A, P(1, 2, 3)) end, "dist: argument #2 (B) is 3-D, but argument #1 is 2-D: dimensions cannot be mixed", "dist dims")
 err(function() return A:dist(V(1, 1)) end, "dist: argument #1 (B) is a vector", "method arguments count from the first explicit one")
+err(function() return V(1, 1):dist(A) end, "dist: self (A) is a vector", "a bad receiver is 'self'")
+err(function() return A:dist(P(1, 2, 3)) end, "dist: argument #1 (B) is 3-D, but self is 2-D", "dimensions against self")
 err(function() return dot(A, B) end, "dot: argument #1 (u) must be a vector (weight 0), got P(1, 2) (weight 1); a difference of points is a vector, e.g. B - A", "dot points")
 err(function() return dot(V(1, 2), 3) end, "dot: argument #2 (v) must be a vector, got 3", "dot number")
 err(function() return cross(V(1, 2, 3, 4), V(1, 2, 3, 4)) end, "cross: vectors must be 2-D or 3-D, got 4-D", "cross 4-D")
@@ -243,5 +245,10 @@ err(function() pset(P(1, 2) * 100 + P(320, 240)) end, "e.g. V(x, y)*100 + P(320,
 err(function() pset(V(1, 2)) end, "pset: argument #1 is a vector V(1, 2) (weight 0), not a point", "pset vector")
 err(function() pset(P(1, 2, 3)) end, "pset: argument #1 must be a 2-D point, got the 3-D P(1, 2, 3)", "pset 3-D")
 err(function() line(P(0, 0), P(1, 1, 1)) end, "line: argument #2 must be a 2-D point", "line 3-D")
+
+-- the drawing was only a check: save it to a scratch file so the host does not write one
+local scratch = os.tmpname()
+save(scratch .. ".ppm")
+os.remove(scratch .. ".ppm"); os.remove(scratch)
 
 check.done()
