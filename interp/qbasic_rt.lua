@@ -444,7 +444,9 @@ function M.new(host, chunkname)
     if r < 0 or r >= ncolors then error(IFC, level + 1) end
     return math.tointeger(r)
   end
+  -- the drawing statements take SINGLE coordinates
   local function coord(x, level)
+    x = f32(x)
     if x - x ~= 0 then error("Overflow", level + 1) end
     return x
   end
@@ -503,11 +505,14 @@ function M.new(host, chunkname)
   local TWO_PI = 2 * math.pi + 1e-6
   function E.circle(x, y, r, c, a0, a1, aspect)
     graphics(2)
-    coord(r, 2)
+    r = coord(r, 2)
     if r < 0 then error(IFC, 2) end
     if a0 ~= nil and math.abs(a0) > TWO_PI then error(IFC, 2) end
     if a1 ~= nil and math.abs(a1) > TWO_PI then error(IFC, 2) end
-    if aspect ~= nil and (coord(aspect, 2) <= 0) then error(IFC, 2) end
+    if aspect ~= nil then
+      aspect = coord(aspect, 2)
+      if aspect <= 0 then error(IFC, 2) end
+    end
     h_circle(coord(x, 2), coord(y, 2), r, colour(c, 2), a0, a1, aspect)
   end
   function E.paint(x, y, c, border)
