@@ -871,6 +871,8 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
     }
     double loc[2];
     if (pc_loc(2, p->h, loc) != PC_OK) location_error(L, argctx(L, idx, NULL), p);
+    if (!isfinite(loc[0]) || !isfinite(loc[1]))        /* arithmetic overflowed */
+        return luaL_error(L, "%s has infinite or NaN coordinates", argctx(L, idx, NULL));
     *x = loc[0];
     *y = loc[1];
     return 1;
