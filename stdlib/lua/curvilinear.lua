@@ -163,6 +163,10 @@ function M.graphs(f, g)
   end)
 end
 
+-- the numeric form t -> x, y of each curve made by graph_on, which patch() evaluates in its
+-- inner loop instead of building a point per side and sample (weak keys: curves may be freed)
+local numeric = setmetatable({}, { __mode = "k" })
+
 -- graph_on(A, B, f [, a, b]): the graph of f erected on the segment AB (example 23), a curve
 -- t -> A + t (B - A) + f(a + t (b - a)) perp(B - A), perp(x, y) = (y, -x), t in [0, 1]
 -- (on a y-down screen perp points to the left of A -> B, i.e. "up" when AB runs to the right).
@@ -177,9 +181,10 @@ function M.graph_on(A, B, f, a, b)
   local ox, oy, bx, by = A.x, A.y, B.x, B.y
   local ex, ey = bx - ox, by - oy
   local frame, P = tk.frame_point, M.P
-  return function(t)
-    return P(frame(ox, oy, ex, ey, t, f(a + t * (b - a))))
-  end
+  local function gxy(t) return frame(ox, oy, ex, ey, t, f(a + t * (b - a))) end
+  local curve = function(t) return P(gxy(t)) end
+  numeric[curve] = gxy
+  return curve
 end
 
 -- patch(S0, S1, S2, S3): the system inside the curvilinear quadrilateral with sides
@@ -194,19 +199,21 @@ function M.patch(S0, S1, S2, S3)
       tk.argerror(fname, i, "S" .. (i - 1), "a curve (a function of t in [0, 1])", sides[i])
     end
   end
-  local a1x, a1y = xy(S1(0))
-  local a2x, a2y = xy(S1(1))
-  local a0x, a0y = xy(S3(1))
-  local a3x, a3y = xy(S3(0))
+  local function sidexy(S) return numeric[S] or function(t) return xy(S(t)) end end
+  local s0, s1, s2, s3 = sidexy(S0), sidexy(S1), sidexy(S2), sidexy(S3)
+  local a1x, a1y = s1(0)
+  local a2x, a2y = s1(1)
+  local a0x, a0y = s3(1)
+  local a3x, a3y = s3(0)
   local e1x, e1y, e3x, e3y = a2x - a1x, a2y - a1y, a3x - a0x, a3y - a0y
   if e1x == 0 and e1y == 0 then error("patch: side S1 starts and ends at the same point", 2) end
   if e3x == 0 and e3y == 0 then error("patch: side S3 starts and ends at the same point", 2) end
   local coords, blend = tk.frame_coords, tk.patch_blend
   return new(function(t1, t2)
-    local u0x, u0y = xy(S0(t1))
-    local u2x, u2y = xy(S2(1 - t1))
-    local xi1, eta1 = coords(a1x, a1y, e1x, e1y, xy(S1(t2)))
-    local xi3, eta3 = coords(a0x, a0y, e3x, e3y, xy(S3(1 - t2)))
+    local u0x, u0y = s0(t1)
+    local u2x, u2y = s2(1 - t1)
+    local xi1, eta1 = coords(a1x, a1y, e1x, e1y, s1(t2))
+    local xi3, eta3 = coords(a0x, a0y, e3x, e3y, s3(1 - t2))
     return blend(u0x, u0y, u2x, u2y, xi1, eta1, xi3, eta3, t1)
   end)
 end

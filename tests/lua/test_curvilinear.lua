@@ -153,6 +153,14 @@ for s = 0, 1, .1 do
   same(Pt(s, 0), Sd[1](s), "side 0"); same(Pt(1, s), Sd[2](s), "side 1")
   same(Pt(s, 1), Sd[3](1 - s), "side 2 reversed"); same(Pt(0, s), Sd[4](1 - s), "side 3 reversed")
 end
+-- sides that are any functions (points or x, y) give the same patch as graph_on's curves, which
+-- patch evaluates through their numeric form
+local Sx = {}
+for i = 1, 4 do Sx[i] = function(t) local p = Sd[i](t) return p.x, p.y end end
+local Px = patch(function(t) return Sd[1](t) end, Sx[2], function(t) return Sd[3](t) end, Sx[4])
+for a = 0, 1, .25 do
+  for b = 0, 1, .2 do same(Px(a, b), Pt(a, b), string.format("patch of plain functions at (%g, %g)", a, b)) end
+end
 -- example 28: the plane into the patch; a circle of radius 10 presses against the boundary
 local Ppl = Pt:pre(squash01)
 same(Ppl(0, 0), Pt(.5, .5), "the origin to the centre")
