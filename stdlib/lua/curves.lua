@@ -130,10 +130,15 @@ local function coords(a, ...)
 end
 tk.coords = coords
 
+-- Functions known to take coordinates (x, y) as well as a point and to return x, y (the maps
+-- of screenmap): a post-map may call them with numbers, building no point per sample.
+tk.numeric_maps = setmetatable({}, {__mode = "k"})
+
 -- A numeric post-map from opts.map: nil, a projection or system (anything with :xy), or a
 -- function(X) -> point or x, y called with a point.
 function tk.postmap(map, fname)
   if map == nil then return nil end
+  if tk.numeric_maps[map] then return map end
   local mt = getmetatable(map)
   local okxy = (type(map) == "table" or (type(mt) == "table" and mt.__name == "projection"))
     and map.xy

@@ -227,8 +227,10 @@ function M.screenmap(x0, y0, a, b)
   if type(a) ~= "number" then tk.argerror(fname, 3, "a", "a number", a) end
   b = b or a
   if type(b) ~= "number" then tk.argerror(fname, 4, "b", "a number", b) end
-  return function(x, y)
+  local f = function(x, y)
     if type(x) ~= "number" then x, y = xy(x) end
     return x0 + a * x, y0 - b * y
   end
+  tk.numeric_maps[f] = true     -- map = screenmap(...) is called with numbers (no point per sample)
+  return f
 end

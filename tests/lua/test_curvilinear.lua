@@ -80,6 +80,14 @@ local sx, sy = scr(1, 1)
 eq(sx, 420, "screenmap x"); eq(sy, 140, "screenmap y (y up)")
 local sx2, sy2 = screenmap(320, 300, 50, 25)(P(2, 2))
 eq(sx2, 420, "screenmap of a point, x"); eq(sy2, 250, "screenmap b")
+-- as a draw map it is called with numbers (no point per sample): the same pixels either way
+screen(12)
+plot(function(t) return t, t * t end, {t = {0, 1, .25}, map = scr, color = 5})
+plot(function(t) return P(t, -t) end, {t = {0, 1, .25}, map = scr, color = 6})
+for _, t in ipairs{.25, .5, .75, 1} do      -- (t = 0 is the origin of both)
+  eq(point(320 + 100 * t, 240 - 100 * t * t), 5, "plot through screenmap, t = " .. t)
+  eq(point(320 + 100 * t, 240 + 100 * t), 6, "plot of points through screenmap, t = " .. t)
+end
 
 -- ruled, graphs and the clamps: examples 18-22 ------------------------------------------------------------
 -- example 18: A(t1) = (v1, v1^3 - v1 - 1), B(t1) = (cos u, 1 + .5 sin u)
