@@ -15,8 +15,9 @@ screen(12)
 local pi, cos, sin = math.pi, math.cos, math.sin
 local f = function(x) return -1 - x^2/10 end
 local g = function(x) return 1 - x^6/(x^6 + 1) - x^2/20 end
-local A = function(t1) local x1 = -2.5 + 5*t1; return P(x1, f(x1)) end
-local B = function(t1) local x2 = -2 + 4*t1; return P(x2, g(x2)) end
+-- the points (x1, f(x1)) and (x2, g(x2)) of the two graphs, as coordinates (an inner loop)
+local A = function(t1) local x1 = -2.5 + 5*t1; return x1, f(x1) end
+local B = function(t1) local x2 = -2 + 4*t1; return x2, g(x2) end
 local C = ruled(A, B):post(screenmap(320, 240, 100))
 
 local lines = {0, 1.01, .1, fine = {0, 1, .001}}
