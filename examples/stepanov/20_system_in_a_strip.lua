@@ -11,7 +11,8 @@
 -- that; 20v_colour8_grid.lua draws them in dark grey to show the strip.
 -- The listing's IF chain uses strict inequalities, so at t exactly 0, .5 or 1 s keeps its last
 -- value (C:clamp{qb = true}, one memory for the whole program): every circle starts at u = 0,
--- t = .5, and the first one inherits s = 1 from the grid, a stray dot on the upper boundary.
+-- t = .5, and the first one inherits s = 1 from the grid, a stray dot on the upper boundary
+-- (it lands where the largest circle is pressed against g, so it does not show).
 
 screen(12)
 local pi, cos, sin, exp = math.pi, math.cos, math.sin, math.exp

@@ -8,7 +8,8 @@
 -- QBasic's loop counts matter: `for r = .2 to 1.8 step .2` accumulates in single precision and
 -- stops at r = 1.6, so there are 8 curves, not 9 (qb.range).  The listing's strict IF chain
 -- keeps s at t exactly .5 (every curve's first point), so the very first point takes QBasic's
--- initial s = 0: a stray dot on the floor (C:clamp{qb = true}).
+-- initial s = 0: a stray dot on the floor (C:clamp{qb = true}), hidden under the outer curves
+-- pressed against it.
 
 screen(12)
 local pi, cos, sin = math.pi, math.cos, math.sin

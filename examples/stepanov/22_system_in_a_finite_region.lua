@@ -9,7 +9,8 @@
 -- with both parameters clamped by the smoothstep s (0 / 2t^2 / 1 - 2(1 - t)^2 / 1), which keeps
 -- them inside the region: the larger ones are pressed into its boundary.
 -- Scale 100, origin (320, 240), y up.  The listing's strict IF chains keep s1, s2 at t exactly
--- 0, .5 or 1 (C:clamp{qb = true}): the first point takes s1 = 0, a stray dot on the left side.
+-- 0, .5 or 1 (C:clamp{qb = true}): the first point takes s1 = 0, a stray dot on the left side,
+-- hidden under the largest circle pressed against it.
 
 screen(12)
 local pi, cos, sin = math.pi, math.cos, math.sin
