@@ -2,8 +2,9 @@
 -- All green (colour 2, thick dots). The head: two curvilinear pentagons inscribed, as in
 -- Example 6, in two concentric ellipses about C = (320, 300) with vertical scale k = .8: every
 -- side is the two-point curve of Example 5 (§H block 7, `spline2`, cubic smoothstep) from
--- vertex i to vertex i + 1, tangent to the circle direction there, with sides k r. The outer
--- pentagon (rc = 140, r = 20) is nearly polygonal, the inner one (rc = 120, r = 50) rounder.
+-- vertex i to vertex i + 1, leaving and arriving along the circle's tangent direction at the
+-- vertex angle (not the ellipse's), with sides k r. The outer pentagon (rc = 140, r = 20) is
+-- nearly polygonal, the inner one (rc = 120, r = 50) rounder.
 -- The horns: the asymmetric half-spline of Example 8 (n = 3, m = 5, t0 = 1/3, §H block 5) in
 -- the degenerate quadrilateral V1 X0 X0 V2, whose middle vertices coincide at the bottom vertex
 -- X0 of the inner pentagon: M = V1 + t (X0 - V1), N = X0 + t (V2 - X0), X = M + g(t) (N - M).
