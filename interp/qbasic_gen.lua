@@ -36,7 +36,7 @@ local function take_trailing_labels(body, line)
   return moved
 end
 
-local function build(list, where)
+local function build(list)
   local root = {}
   local stack = { { kind = "root", body = root } }
   local function top() return stack[#stack] end
@@ -131,8 +131,8 @@ local function build(list, where)
       for _, l in ipairs(moved) do append(l) end
     elseif k == "if1" then
       local node = { k = "if1", cond = st.cond, line = st.line,
-        then_body = build(st.then_body, "IF"),
-        else_body = st.else_body and build(st.else_body, "IF") }
+        then_body = build(st.then_body),
+        else_body = st.else_body and build(st.else_body) }
       append(node)
     elseif k == "label" then
       -- a label in a SELECT before the first CASE: keep it before the SELECT
@@ -241,7 +241,6 @@ local function literal_text(e, exact)
   if t:find("&", 1, true) then return exact_text(e.v) end
   t = t:gsub("[!#%%&]$", ""):gsub("[dD]", "e"):gsub("E", "e")
   if t:match("e[+-]?$") then t = t .. "0" end
-  if t:match("^%.") and false then t = "0" .. t end
   if tonumber(t) ~= e.v then return exact_text(e.v) end
   return t
 end
@@ -260,7 +259,7 @@ function M.generate(prog, chunkname)
   local function E(line, s) local o = out[line]; o[#o + 1] = s end
 
   -- structure
-  local main_tree = build(prog.main, "main")
+  local main_tree = build(prog.main)
   for _, proc in ipairs(prog.procs) do
     if proc.kind ~= "deffn" or not proc.expr then
       -- the closing END SUB/FUNCTION/DEF is the last statement of the flat body
@@ -268,7 +267,7 @@ function M.generate(prog, chunkname)
       if b[#b] and (b[#b].k == "endsub" or b[#b].k == "endfunction" or b[#b].k == "enddef") then
         b[#b] = nil
       end
-      proc.tree = build(b, proc.kind)
+      proc.tree = build(b)
     end
   end
 
@@ -545,7 +544,6 @@ function M.generate(prog, chunkname)
     end
     if cur then qerr("GOSUB subroutine without RETURN", cur.line) end
     main_tree = newtop
-    for _, lbl in pairs(gosub_targets) do end
     -- a GOSUB target inside a block cannot be a subroutine
     for label, line in pairs(gosub_targets) do
       local found = false
@@ -669,7 +667,7 @@ function M.generate(prog, chunkname)
     return table.concat(t, ", ")
   end
 
-  local function emit_index(e, exact)
+  local function emit_index(e)
     local parts = { lua_name(e) }
     for _, a in ipairs(e.args) do parts[#parts + 1] = "[" .. emit_value(a, 0) .. "]" end
     return table.concat(parts)
@@ -686,13 +684,9 @@ function M.generate(prog, chunkname)
     elseif k == "paren" then
       return emit_value(e.a, min, exact)
     elseif k == "var" then
-      if e.proc and e.proc.kind ~= "sub" and e.name == e.proc.name and e.proc.kind == "function"
-          and false then
-        return e.proc.result, 20
-      end
       return lua_name(e), 20
     elseif k == "index" then
-      return emit_index(e, exact), 20
+      return emit_index(e), 20
     elseif k == "arrayref" then
       qerr("Syntax error", e.line)
     elseif k == "neg" then
@@ -743,7 +737,6 @@ function M.generate(prog, chunkname)
       local fn = e.fn
       if fn == "lbound" or fn == "ubound" then
         local arr = e.args[1]
-        local cls = classify(arr)
         local code = fn .. "(" .. lua_name(arr)
         if e.args[2] then code = code .. ", " .. emit_value(e.args[2], 0) end
         return code .. ")", 20
@@ -794,10 +787,8 @@ function M.generate(prog, chunkname)
   local RELOP_LUA = { ["="] = "==", ["<>"] = "~=", ["<"] = "<", [">"] = ">", ["<="] = "<=",
     [">="] = ">=" }
   -- operands of comparisons: single literals stand for their SINGLE value
-  local function rel_operand(e, other)
-    local s = strip(e)
-    local exact = true
-    return emit_value(e, 4, exact)
+  local function rel_operand(e)
+    return (emit_value(e, 4, true))
   end
 
   -- a Lua condition (boolean) for QBasic's "nonzero is true"
@@ -805,7 +796,7 @@ function M.generate(prog, chunkname)
     min = min or 0
     local s = strip(e)
     if s.k == "rel" then
-      local code = rel_operand(s.a, s.b) .. " " .. RELOP_LUA[s.op] .. " " .. rel_operand(s.b, s.a)
+      local code = rel_operand(s.a) .. " " .. RELOP_LUA[s.op] .. " " .. rel_operand(s.b)
       return wrap(code, 3, min), 3
     elseif s.k == "not" and boolish(s.a) then
       return wrap("not " .. emit_cond(s.a, 12), 12, min), 12
@@ -1076,8 +1067,6 @@ function M.generate(prog, chunkname)
     end
   end
 
-  local function for_var_step(var) return var.ty end
-
   -- the value of a numeric literal, possibly negated, or nil
   local function literal_num(e)
     e = strip(e)
@@ -1159,7 +1148,7 @@ function M.generate(prog, chunkname)
     open_block()
     loops[#loops + 1] = { kind = "while" }
     emit_block(node.body)
-    local lp = table.remove(loops)
+    table.remove(loops)
     close_block()
     E(node.end_line, "end")
   end
