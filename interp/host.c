@@ -49,9 +49,14 @@ lua_State *host_new_state(void) {
         lua_close(L);
         return NULL;
     }
+    /* every public field; names starting with '_' (_VERSION, private helpers) stay inside */
     lua_pushglobaltable(L);
     lua_pushnil(L);
     while (lua_next(L, -3)) {
+        if (lua_type(L, -2) == LUA_TSTRING && lua_tostring(L, -2)[0] == '_') {
+            lua_pop(L, 1);
+            continue;
+        }
         lua_pushvalue(L, -2);
         lua_insert(L, -2);
         lua_settable(L, -4);
