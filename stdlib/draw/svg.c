@@ -15,6 +15,10 @@
  *   BOX                <rect> stroked; FILLBOX and CLEAR: <rect> filled, on whole pixels.
  *   ARC                full: <circle> or <ellipse>; partial: <path> with an A command, plus
  *                      the radius lines that negative angles ask for.
+ *   runs of brushes    small full circles (radius up to BRUSH_R: the listings' "thick dot"
+ *                      circle (x, y), 1) of one colour, radius and clip, each centre within
+ *                      BRUSH_DENSE px of the previous, become one polyline stroked as wide as
+ *                      the ring (2r + 1 px) with round ends; sparse ones stay circles.
  *   FILL (PAINT)       one filled <path>: the outline of the painted pixels, traced along
  *                      pixel edges (holes included), so it has no seams at any zoom.
  *
@@ -30,6 +34,8 @@
 #define TOL 0.05     /* max distance of a dropped dot from the polyline, px */
 #define MARGIN 3.0   /* stroke geometry further than this outside the clip is invisible */
 #define TWO_PI 6.283185307179586
+#define BRUSH_R 2.0      /* largest circle radius treated as a brush, px */
+#define BRUSH_DENSE 2.0  /* max distance between consecutive brush centres of one stroke, px */
 
 typedef struct { long x, y; } hpt;      /* a point in hundredths of a pixel */
 
@@ -335,10 +341,15 @@ static void sleeve_end(svgw *w, sleeve *s) {
     else if (s->has_pending) add_point(w, s->px, s->py);
 }
 
-static void emit_polyline(svgw *w, int color) {
+static void emit_polyline(svgw *w, int color, double width) {
     open_el(w, "path");
     color_attr(w, "stroke", color);
     fputs(" stroke-linejoin=\"round\"", w->out);
+    if (width != 1) {
+        char buf[32];
+        fmt_num(buf, hund(width));
+        fprintf(w->out, " stroke-width=\"%s\" stroke-linecap=\"round\"", buf);
+    }
     d_begin(w);
     d_move(w, w->pts[0]);
     d_letter(w, 'l');
@@ -360,7 +371,7 @@ static void dense_subrun(svgw *w, const pc_op *ops, size_t i0, size_t i1, pc_rec
     int extent = w->npts > 2 ||
                  (w->npts == 2 && hypot((double)(w->pts[1].x - w->pts[0].x),
                                         (double)(w->pts[1].y - w->pts[0].y)) > TOL * 100);
-    if (extent) emit_polyline(w, ops[i0].color);
+    if (extent) emit_polyline(w, ops[i0].color, 1);
     else add_dot(w, ops[i0].x1, ops[i0].y1, ops[i0].color, clip);
 }
 
@@ -380,6 +391,42 @@ static void emit_dots(svgw *w, const pc_op *ops, size_t n) {
             j++;
         if (j - i == 1) add_dot(w, ops[i].x1, ops[i].y1, ops[i].color, clip);
         else dense_subrun(w, ops, i, j, clip);
+        i = j;
+    }
+}
+
+/* ---- runs of brushes ---------------------------------------------------------------------- */
+
+static int is_brush(const pc_op *op) {
+    return op->kind == PC_OP_ARC && (op->flags & PC_ARC_FULL) && op->rx == op->ry &&
+           op->rx > 0 && op->rx <= BRUSH_R;
+}
+
+static void emit_arc(svgw *w, const pc_op *op);
+
+/* ops[0..n): brushes of one colour, radius and clip. */
+static void emit_brushes(svgw *w, const pc_op *ops, size_t n) {
+    pc_rect clip = clip_of(w, &ops[0]);
+    /* the ring of radius r covers the pixels from the centre - round(r) to centre + round(r) */
+    double width = 2 * lrint(ops[0].rx) + 1;
+    size_t i = 0;
+    while (i < n) {
+        if (far_outside(ops[i].x1 + 0.5, ops[i].y1 + 0.5, clip)) { i++; continue; }
+        size_t j = i + 1;
+        while (j < n && hypot(ops[j].x1 - ops[j - 1].x1, ops[j].y1 - ops[j - 1].y1) <= BRUSH_DENSE &&
+               !far_outside(ops[j].x1 + 0.5, ops[j].y1 + 0.5, clip))
+            j++;
+        if (j - i < 3) {
+            for (size_t k = i; k < j; k++) emit_arc(w, &ops[k]);
+        } else {
+            sleeve s;
+            sleeve_start(w, &s, ops[i].x1 + 0.5, ops[i].y1 + 0.5);
+            for (size_t k = i + 1; k < j; k++) sleeve_add(w, &s, ops[k].x1 + 0.5, ops[k].y1 + 0.5);
+            sleeve_end(w, &s);
+            if (w->nomem) return;
+            if (w->npts == 1) add_point(w, ops[i].x1 + 0.5, ops[i].y1 + 0.5);
+            emit_polyline(w, ops[i].color, width);
+        }
         i = j;
     }
 }
@@ -672,6 +719,11 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
                 j++;
             if (op->kind == PC_OP_DOT) emit_dots(&w, op, j - i);
             else emit_lines(&w, op, j - i);
+        } else if (is_brush(op)) {
+            while (j < c->nops && is_brush(&c->ops[j]) && c->ops[j].color == op->color &&
+                   c->ops[j].rx == op->rx && c->ops[j].clip == op->clip)
+                j++;
+            emit_brushes(&w, op, j - i);
         } else if (op->kind == PC_OP_ARC) {
             emit_arc(&w, op);
         } else if (op->kind == PC_OP_FILL) {

@@ -691,6 +691,39 @@ static void test_far_away_dots_are_left_out(void **state) {
     pc_canvas_free(c);
 }
 
+
+/* The listings' thick dot, circle (x, y), 1: a dense run is one stroke 3 px wide, sparse dots
+ * and bigger circles (markers) stay circles. */
+static void test_brush_runs(void **state) {
+    (void)state;
+    pc_canvas *c = screen12();
+    for (int i = 0; i < 200; i++) {             /* dense: 0.8 px apart on a circle */
+        double t = PI * i / 199;
+        pc_circle(c, 300 + 50 * cos(t), 200 - 50 * sin(t), 1, 10, NAN, NAN, NAN);
+    }
+    for (int i = 0; i < 3; i++)                 /* sparse: 40 px apart */
+        pc_circle(c, 100 + 40 * i, 400, 1, 10, NAN, NAN, NAN);
+    pc_circle(c, 500, 400, 5, 10, NAN, NAN, NAN);   /* a marker */
+    doc d = svg_of(c, PC_THEME_SCREEN);
+    assert_int_equal(count(&d, "path", NULL), 1);
+    const elem *e = nth(&d, "path", NULL, 0);
+    assert_string_equal(attr(e, "stroke"), "#55ff55");
+    assert_string_equal(attr(e, "stroke-width"), "3");
+    assert_string_equal(attr(e, "stroke-linecap"), "round");
+    path pa = parse_path(attr(e, "d"));
+    assert_int_equal(pa.moves, 1);
+    assert_true(pa.n >= 4 && pa.n < 100);       /* simplified, yet on the curve */
+    for (int i = 0; i < pa.n; i++)
+        assert_float_equal(hypot(pa.v[i].x - 300.5, pa.v[i].y - 200.5), 50, 0.01);
+    assert_float_equal(pa.v[0].x, 350.5, 1e-9);
+    assert_float_equal(pa.v[pa.n - 1].x, 250.5, 0.006);
+    free(pa.v);
+    assert_int_equal(count(&d, "circle", NULL), 4);
+    assert_string_equal(attr(nth(&d, "circle", NULL, 3), "r"), "5");
+    doc_free(&d);
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_document),
@@ -705,6 +738,7 @@ int main(void) {
         cmocka_unit_test(test_clip_groups),
         cmocka_unit_test(test_palette_at_write_time_and_paper),
         cmocka_unit_test(test_far_away_dots_are_left_out),
+        cmocka_unit_test(test_brush_runs),
     };
     if (!xmllint_present()) fprintf(stderr, "note: xmllint not found; SVG checked by the built-in reader only\n");
     return cmocka_run_group_tests(tests, NULL, NULL);
