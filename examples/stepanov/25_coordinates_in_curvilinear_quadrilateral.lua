@@ -9,7 +9,7 @@
 -- Reconstructed: the article prints example 24's listing again under example 25, so the grid
 -- follows the prose with example 28's formulas, as the cleaned listing ex25.bas does: 11 + 11
 -- lines of 501 pixels in colour 15.  The sides use 1001 samples each instead of the listing's
--- 10000 (the dots are still dense, the ink is the same).
+-- 10 000: the thick stroke looks the same and renders faster (1% of its pixels differ).
 
 local A = {P(100, 100), P(300, 70), P(250, 400), P(150, 350)}
 for i = 1, 4 do line(A[i], A[i % 4 + 1]) end
