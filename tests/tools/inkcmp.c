@@ -68,6 +68,8 @@ int main(int argc, char **argv) {
     double sa = near_share(&a, &b, r, &na), sb = near_share(&b, &a, r, &nb);
     printf("ink: %ld px, %.1f%% within %d px of the other's; other: %ld px, %.1f%%\n", na,
            100 * sa, r, nb, 100 * sb);
+    free(a.ink);
+    free(b.ink);
     if (na == 0 || nb == 0) {
         printf("inkcmp: a picture has no ink\n");
         return 1;
