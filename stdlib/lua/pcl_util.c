@@ -29,24 +29,25 @@ int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected) 
                       value);
 }
 
-static double check_coord(lua_State *L, int arg, const char *what) {
+/* The coordinate at arg; `what` names the pair ("" or e.g. "centre"), axis is "x" or "y".
+ * The label is only built on the error path: this runs for every pset. */
+static double check_coord(lua_State *L, int arg, const char *what, const char *axis) {
     int isnum;
     double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum) pcl_argerror(L, arg, what, "a number or a point");
-    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
-    return v;
+    if (isnum && isfinite(v)) return v;
+    char label[48];
+    snprintf(label, sizeof label, "%s%s%s", what, what[0] ? " " : "", axis);
+    pcl_argerror(L, arg, label, isnum ? "a finite number" : "a number or a point");
+    return 0;
 }
 
 void pcl_checkxy(lua_State *L, int *arg, double *x, double *y, const char *what) {
-    if (pcl_topoint2(L, *arg, x, y)) {
+    if (lua_type(L, *arg) != LUA_TNUMBER && pcl_topoint2(L, *arg, x, y)) {
         *arg += 1;
         return;
     }
-    char wx[48], wy[48];
-    snprintf(wx, sizeof wx, "%s x", what);
-    snprintf(wy, sizeof wy, "%s y", what);
-    *x = check_coord(L, *arg, what[0] ? wx : "x");
-    *y = check_coord(L, *arg + 1, what[0] ? wy : "y");
+    *x = check_coord(L, *arg, what, "x");
+    *y = check_coord(L, *arg + 1, what, "y");
     *arg += 2;
 }
 
