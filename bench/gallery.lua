@@ -30,7 +30,8 @@ end
 
 -- the example script in a fresh environment on a fresh canvas
 local function run_script(path)
-  local chunk = assert(loadfile(path, "t", setmetatable({}, { __index = _G })))
+  local env = setmetatable({ arg = { [0] = path } }, { __index = _G })
+  local chunk = assert(loadfile(path, "t", env))
   return function()
     screen(12)
     chunk()

@@ -20,7 +20,7 @@ local f = function(x) return (x - exp(x - 1))/3 - 1 end
 local g = function(x) return sin(5*x)/2 + 3 end
 local strip = graphs(f, g):post(screenmap(320, 300, 50))
 local C = strip:clamp{t2 = true, qb = true}          -- t -> s(t), the listing's IF chain
-local hidden = 0                                     -- the listing's colour: the background
+local hidden = tonumber((...)) or 0                  -- the listing's colour: the background (20v passes 8)
 
 for _, t in ipairs{0, 1} do                          -- the boundary graphs f and g
   strip:draw(function(x) return x, t end, {t = {-3.2, 3.2, .01}, qb = true, brush = "dot", color = hidden})

@@ -16,7 +16,7 @@
 -- the cross's 7 x 110 and 81 x 11 pixels).
 
 local pi, cos, sin, abs = math.pi, math.cos, math.sin, math.abs
-local NET_COLOUR = 0                                -- as printed: the background
+local NET_COLOUR = tonumber((...)) or 0             -- as printed: the background (34v passes 8)
 
 local pr = oblique(P(320, 400), 60, .3, pi/5)
 local r = {.05, .05, .6, .3, .3}                    -- the circles of the dome and the drum:

@@ -21,4 +21,9 @@ void pc_reset_cursor(pc_canvas *c);
 int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int filled);
 int pc_fill_view(pc_canvas *c, int color);
 
+/* Clip the segment (x0,y0)-(x1,y1) to the rectangle, in place (Liang-Barsky); 0 if nothing of
+ * it is inside.  Used by the rasteriser and the SVG writer. */
+int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
+                    double xmax, double ymax);
+
 #endif

@@ -69,8 +69,8 @@ int pc_point(const pc_canvas *c, double x, double y) {
 /* ---- LINE ------------------------------------------------------------------------------ */
 
 /* Clip the segment to the rectangle (Liang-Barsky); 0 if nothing is left. */
-static int clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
-                        double xmax, double ymax) {
+int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
+                    double xmax, double ymax) {
     double t0 = 0, t1 = 1, dx = *x1 - *x0, dy = *y1 - *y0;
     double p[4] = {-dx, dx, -dy, dy};
     double q[4] = {*x0 - xmin, xmax - *x0, *y0 - ymin, ymax - *y0};
@@ -119,7 +119,7 @@ static void raster_line_f(pc_canvas *c, double x0, double y0, double x1, double 
     /* segments reaching far off screen are cut first; nearby ones keep their exact pixels */
     const double far = 32768;
     if (fabs(x0) > far || fabs(y0) > far || fabs(x1) > far || fabs(y1) > far) {
-        if (!clip_segment(&x0, &y0, &x1, &y1, -4.0, -4.0, c->width + 4.0, c->height + 4.0))
+        if (!pc_clip_segment(&x0, &y0, &x1, &y1, -4.0, -4.0, c->width + 4.0, c->height + 4.0))
             return;
     }
     raster_line(c, px(x0), px(y0), px(x1), px(y1), color);

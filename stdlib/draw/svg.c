@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "writers.h"
+#include "canvas_internal.h"
 
 #define DENSE 1.5    /* max distance between consecutive dots of one polyline, px */
 #define TOL 0.05     /* max distance of a dropped dot from the polyline, px */
@@ -433,27 +434,6 @@ static void emit_brushes(svgw *w, const pc_op *ops, size_t n) {
 
 /* ---- runs of lines ------------------------------------------------------------------------ */
 
-/* Liang-Barsky: clip the segment to the rectangle; 0 if nothing is left. */
-static int clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
-                        double xmax, double ymax) {
-    double t0 = 0, t1 = 1, dx = *x1 - *x0, dy = *y1 - *y0;
-    double p[4] = {-dx, dx, -dy, dy};
-    double q[4] = {*x0 - xmin, xmax - *x0, *y0 - ymin, ymax - *y0};
-    for (int i = 0; i < 4; i++) {
-        if (p[i] == 0) {
-            if (q[i] < 0) return 0;
-        } else {
-            double r = q[i] / p[i];
-            if (p[i] < 0) { if (r > t1) return 0; if (r > t0) t0 = r; }
-            else          { if (r < t0) return 0; if (r < t1) t1 = r; }
-        }
-    }
-    double ox = *x0, oy = *y0;
-    *x0 = ox + t0 * dx; *y0 = oy + t0 * dy;
-    *x1 = ox + t1 * dx; *y1 = oy + t1 * dy;
-    return 1;
-}
-
 static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
     pc_rect clip = clip_of(w, &ops[0]);
     int open = 0;
@@ -464,7 +444,7 @@ static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
             continue;
         }
         double x0 = op->x1 + 0.5, y0 = op->y1 + 0.5, x1 = op->x2 + 0.5, y1 = op->y2 + 0.5;
-        if (!clip_segment(&x0, &y0, &x1, &y1, clip.x0 - MARGIN, clip.y0 - MARGIN,
+        if (!pc_clip_segment(&x0, &y0, &x1, &y1, clip.x0 - MARGIN, clip.y0 - MARGIN,
                           clip.x1 + 1 + MARGIN, clip.y1 + 1 + MARGIN))
             continue;
         hpt a = {hund(x0), hund(y0)}, b = {hund(x1), hund(y1)};
