@@ -1,6 +1,6 @@
 -- The help registry: every public name of pointcalc with its area, signature and a one-line
 -- description.  It is the single source of the REPL's :help and of docs/api.md
--- (tools/gen_api.lua); tests/lua/test_help.lua checks that every function of the pointcalc
+-- (docs/gen_api.lua); tests/lua/test_help.lua checks that every function of the pointcalc
 -- module has an entry here and that every entry names something that exists.
 --
 -- Entries: name (as written in a script: "lerp", "qb.rnd", "A.x", ":show"), area, sig (one

@@ -1,5 +1,5 @@
 -- Generate docs/api.md from the help registry (interp/help.lua), the same text :help prints:
---   pointcalc tools/gen_api.lua > docs/api.md
+--   pointcalc docs/gen_api.lua > docs/api.md
 -- tests/cli/test_api_doc.sh fails when docs/api.md and the registry disagree.
 local help = require "help"
 
@@ -23,7 +23,7 @@ local function anchor(title)
 end
 
 put("# API reference\n\n")
-put("<!-- Generated from interp/help.lua by `pointcalc tools/gen_api.lua > docs/api.md`; ",
+put("<!-- Generated from interp/help.lua by `pointcalc docs/gen_api.lua > docs/api.md`; ",
     "do not edit by hand. -->\n\n")
 put("Every public name of pointcalc, by area. In the REPL, `:help NAME` prints the same ",
     "signature and description, and `:help AREA` a whole area.\n\n")
