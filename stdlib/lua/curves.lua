@@ -9,6 +9,22 @@ local type, select, tostring = type, select, tostring
 
 -- ---- errors in the house style ------------------------------------------------------------
 
+-- Raise msg located at the user's code: the innermost Lua function that is not one of these
+-- embedded helpers (so an error found deep inside c:draw points at the script's c:draw line).
+local getinfo, raw_error = debug.getinfo, error
+function tk.raise(msg)
+  local level = 2
+  while true do
+    local info = getinfo(level, "S")
+    if not info then return raw_error(msg, 0) end
+    if info.what ~= "C" and info.source:sub(1, 12) ~= "=[pointcalc/" then
+      return raw_error(msg, level)
+    end
+    level = level + 1
+  end
+end
+local error = tk.raise
+
 local function shown(v)
   if type(v) == "number" then
     if math.type(v) == "integer" then return tostring(v) end

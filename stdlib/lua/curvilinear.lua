@@ -5,6 +5,7 @@
 -- screenmap(x0, y0, a).  Runs after curves.lua (file-name order), whose helpers it uses.
 local M = ...
 local tk = M._tk
+local error = tk.raise        -- errors point at the user's line, not into this file
 local xy, steps = tk.xy, tk.steps
 
 local System = {}

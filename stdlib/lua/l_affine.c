@@ -34,24 +34,24 @@ static pc_affine *newmap(lua_State *L) {
 /* Points of a table (or a simplex) at arg into out; returns their count, *dim their dimension. */
 static int read_points(lua_State *L, int arg, const char *what, double *out, int *dim) {
     int t = lua_type(L, arg);                        /* a table, or a simplex */
-    if (t != LUA_TTABLE && t != LUA_TUSERDATA) return pcl_arg_error(L, arg, what, "a table of points");
+    if (t != LUA_TTABLE && t != LUA_TUSERDATA) return pcl_argerror(L, arg, what, "a table of points");
     int m = (int)luaL_len(L, arg);
     if (m > PC_MAXDIM + 1)
-        return luaL_error(L, "%s: argument #%d (%s) holds %d points; the largest dimension is %d",
+        return pcl_error(L, "%s: argument #%d (%s) holds %d points; the largest dimension is %d",
                           pcl_fname(L), arg, what, m, PC_MAXDIM);
     int n = 0;
     for (int i = 1; i <= m; i++) {
         lua_geti(L, arg, i);
         pcl_value *p = pcl_tovalue(L, -1);
         if (!p)
-            return luaL_error(L, "%s: argument #%d (%s) item [%d] must be a point, got %s",
+            return pcl_error(L, "%s: argument #%d (%s) item [%d] must be a point, got %s",
                               pcl_fname(L), arg, what, i, luaL_typename(L, -1));
         if (i == 1) n = p->n;
         if (p->n != n)
-            return luaL_error(L, "%s: argument #%d (%s) mixes dimensions: item [%d] is %d-D, item "
+            return pcl_error(L, "%s: argument #%d (%s) mixes dimensions: item [%d] is %d-D, item "
                               "[1] is %d-D", pcl_fname(L), arg, what, i, p->n, n);
         if (pc_loc(n, p->h, out + (i - 1) * n) != PC_OK)
-            return luaL_error(L, "%s: argument #%d (%s) item [%d] must be a point (weight 1), got "
+            return pcl_error(L, "%s: argument #%d (%s) item [%d] must be a point (weight 1), got "
                               "one of weight %f", pcl_fname(L), arg, what, i, p->h[n]);
         lua_pop(L, 1);
     }
@@ -67,20 +67,20 @@ static int l_affine(lua_State *L) {
     int m = read_points(L, 1, "source points", src, &nin);
     int m2 = read_points(L, 2, "image points", dst, &nout);
     if (m < 2 || m != nin + 1)
-        return luaL_error(L, "affine: argument #1 (source points) holds %d %d-D points; a map of "
+        return pcl_error(L, "affine: argument #1 (source points) holds %d %d-D points; a map of "
                           "%d-D needs %d (dimension + 1)", m, nin, nin, nin + 1);
     if (m2 != m)
-        return luaL_error(L, "affine: argument #2 (image points) holds %d points, argument #1 %d: "
+        return pcl_error(L, "affine: argument #2 (image points) holds %d points, argument #1 %d: "
                           "they must pair up", m2, m);
     pc_affine *f = newmap(L);
     int st = pc_affine_from_points(f, nin, nout, src, dst);
     if (st == PC_ECOINCIDENT || st == PC_ECOLLINEAR) {
         const char *how = nin == 1 ? "coincide" : nin == 2 ? "are collinear" :
                           nin == 3 ? "are coplanar" : "are dependent";
-        return luaL_error(L, "affine: the source points %s, so they do not fix an affine map",
+        return pcl_error(L, "affine: the source points %s, so they do not fix an affine map",
                           how);
     }
-    if (st != PC_OK) return luaL_error(L, "affine: %s", pc_strerror(st));
+    if (st != PC_OK) return pcl_error(L, "affine: %s", pc_strerror(st));
     return 1;
 }
 
@@ -88,9 +88,9 @@ static int l_frame(lua_State *L) {
     int m = lua_gettop(L);
     double o[PC_MAXDIM], axes[PC_MAXDIM * PC_MAXDIM];
     int n = pcl_checkloc(L, 1, "O", 0, 0, o);
-    if (m < 2) pcl_arg_error(L, 2, "X", "a point or vector");
+    if (m < 2) pcl_argerror(L, 2, "X", "a point or vector");
     if (m - 1 > PC_MAXDIM)
-        return luaL_error(L, "%s: %d axes; the largest dimension is %d", pcl_fname(L), m - 1,
+        return pcl_error(L, "%s: %d axes; the largest dimension is %d", pcl_fname(L), m - 1,
                           PC_MAXDIM);
     static const char *names[] = {"X", "Y", "Z"};
     for (int j = 2; j <= m; j++) {
@@ -116,7 +116,7 @@ static int l_identity(lua_State *L) {
     if (!isint || n < 1 || n > PC_MAXDIM) {
         char expected[48];
         snprintf(expected, sizeof expected, "a dimension 1..%d", PC_MAXDIM);
-        return pcl_arg_error(L, 1, "n", expected);
+        return pcl_argerror(L, 1, "n", expected);
     }
     pc_affine_identity(newmap(L), (int)n);
     return 1;
@@ -126,7 +126,7 @@ static pc_affine *checkself(lua_State *L) {
     pc_affine *f = tomap(L, 1);
     if (!f) {
         const char *name = pcl_fname(L);
-        luaL_error(L, "%s: must be called on an affine map, as f:%s(...)", name, name);
+        pcl_error(L, "%s: must be called on an affine map, as f:%s(...)", name, name);
     }
     return f;
 }
@@ -139,23 +139,23 @@ static int l_apply(lua_State *L) {
     pcl_value *p = m >= 1 ? pcl_tovalue(L, 1) : NULL;
     if (p) {
         if (m != 1)
-            return luaL_error(L, "%s: takes one point or vector, got %d arguments", pcl_fname(L), m);
+            return pcl_error(L, "%s: takes one point or vector, got %d arguments", pcl_fname(L), m);
         if (p->n != nin)
-            return luaL_error(L, "%s: argument #1 is %d-D, but the map takes %d-D: dimensions "
+            return pcl_error(L, "%s: argument #1 is %d-D, but the map takes %d-D: dimensions "
                               "cannot be mixed", pcl_fname(L), p->n, nin);
         pcl_value *r = pcl_newvalue(L, f->nout);
         pc_affine_apply(f, p->h, r->h);
         return 1;
     }
     if (m != nin || lua_type(L, 1) != LUA_TNUMBER)
-        return luaL_error(L, "%s: takes a %d-D point or vector, or %d coordinates; got %s", pcl_fname(L),
+        return pcl_error(L, "%s: takes a %d-D point or vector, or %d coordinates; got %s", pcl_fname(L),
                           nin, nin, m ? luaL_typename(L, 1) : "nothing");
     double in[PC_MAXDIM + 1];
     for (int i = 0; i < nin; i++) {
         int isnum;
         in[i] = lua_tonumberx(L, i + 1, &isnum);
         if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER || !isfinite(in[i]))
-            return luaL_error(L, "%s: argument #%d must be a finite number, got %s", pcl_fname(L),
+            return pcl_error(L, "%s: argument #%d must be a finite number, got %s", pcl_fname(L),
                               i + 1, luaL_typename(L, i + 1));
     }
     in[nin] = 1.0;
@@ -167,7 +167,7 @@ static int l_apply(lua_State *L) {
 static int compose(lua_State *L, pc_affine *f, pc_affine *g) {
     pc_affine h;
     if (pc_affine_compose(f, g, &h) != PC_OK)
-        return luaL_error(L, "cannot compose: the first map applied gives %d-D, the second takes "
+        return pcl_error(L, "cannot compose: the first map applied gives %d-D, the second takes "
                           "%d-D", g->nout, f->nin);
     *newmap(L) = h;
     return 1;
@@ -176,7 +176,7 @@ static int compose(lua_State *L, pc_affine *f, pc_affine *g) {
 static int l_mul(lua_State *L) {
     pc_affine *f = tomap(L, 1), *g = tomap(L, 2);
     if (!f || !g)
-        return luaL_error(L, "cannot multiply an affine map by a %s: f * g composes two maps, and "
+        return pcl_error(L, "cannot multiply an affine map by a %s: f * g composes two maps, and "
                           "f(p) applies one",
                           luaL_typename(L, f ? 2 : 1));
     return compose(L, f, g);
@@ -185,7 +185,7 @@ static int l_mul(lua_State *L) {
 static int l_compose(lua_State *L) {
     pc_affine *f = checkself(L);
     pc_affine *g = tomap(L, 2);
-    if (!g) return pcl_arg_error(L, 2, "g", "an affine map");
+    if (!g) return pcl_argerror(L, 2, "g", "an affine map");
     return compose(L, f, g);
 }
 
@@ -194,10 +194,10 @@ static int l_inverse(lua_State *L) {
     pc_affine inv;
     int st = pc_affine_inverse(f, &inv);
     if (st == PC_EDIM)
-        return luaL_error(L, "%s: a map from %d-D to %d-D (a projection or an embedding) has no "
+        return pcl_error(L, "%s: a map from %d-D to %d-D (a projection or an embedding) has no "
                           "inverse", pcl_fname(L), f->nin, f->nout);
     if (st != PC_OK)
-        return luaL_error(L, "%s: the map is singular (it flattens space), so it has no inverse",
+        return pcl_error(L, "%s: the map is singular (it flattens space), so it has no inverse",
                           pcl_fname(L));
     *newmap(L) = inv;
     return 1;
@@ -212,7 +212,7 @@ static void fmt_num(luaL_Buffer *b, double x) {
 
 static int l_tostring(lua_State *L) {
     pc_affine *f = tomap(L, 1);
-    if (!f) return luaL_error(L, "tostring: not an affine map");
+    if (!f) return pcl_error(L, "tostring: not an affine map");
     luaL_Buffer b;
     luaL_buffinit(L, &b);
     lua_pushfstring(L, "affine map %d-D -> %d-D [", f->nin, f->nout);

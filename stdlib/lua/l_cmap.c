@@ -50,9 +50,9 @@ static int xyz_arg(lua_State *L, const char *fn, int arg, double *x) {
     pcl_value *v = pcl_tovalue(L, arg);
     if (!v) tk_argerror_at(L, fn, arg, arg - 1, "X", "a 3-D point or three numbers");
     if (v->n != 3)
-        luaL_error(L, "%s: argument #%d (X) must be 3-D, got %d-D", fn, arg - 1, v->n);
+        pcl_error(L, "%s: argument #%d (X) must be 3-D, got %d-D", fn, arg - 1, v->n);
     if (pc_loc(3, v->h, x) != PC_OK)
-        luaL_error(L, "%s: argument #%d (X) must be a point (weight 1), got weight %s", fn,
+        pcl_error(L, "%s: argument #%d (X) must be a point (weight 1), got weight %s", fn,
                    arg - 1, tk_pushnum(L, v->h[3]));
     return arg + 1;
 }
@@ -209,7 +209,7 @@ static double call_f(double x, void *ud) {
     double v = lua_tonumberx(L, -1, &isnum);
     if (!isnum) {
         const char *type = luaL_typename(L, -1);
-        luaL_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x), type);
+        pcl_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x), type);
     }
     lua_pop(L, 1);
     return v;
@@ -232,7 +232,7 @@ static int l_bisect(lua_State *L) {
         double fa = call_f(a, L), fb = call_f(b, L);
         const char *ta = tk_pushnum(L, a), *tfa = tk_pushnum(L, fa);
         const char *tb = tk_pushnum(L, b), *tfb = tk_pushnum(L, fb);
-        return luaL_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
+        return pcl_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
                           "the interval brackets no root", ta, tfa, tb, tfb);
     }
     if (st != PC_TK_OK) return tk_statuserror(L, fn, st, "f returned NaN or an infinity");

@@ -58,14 +58,14 @@ static int arith(lua_State *L, char op) {
     case '-': r = a - b; break;
     case '*': r = a * b; break;
     case '/':
-        if (b == 0) return luaL_error(L, "complex /: division by zero");
+        if (b == 0) return pcl_error(L, "complex /: division by zero");
         r = a / b;
         break;
     default:
         if (cimag(b) == 0 && creal(b) == floor(creal(b)) && fabs(creal(b)) <= 64) {
             int k = (int)creal(b);   /* exact repeated multiplication for integer powers */
             double complex base = k < 0 ? 1 / a : a;
-            if (k < 0 && a == 0) return luaL_error(L, "complex ^: division by zero");
+            if (k < 0 && a == 0) return pcl_error(L, "complex ^: division by zero");
             r = 1;
             for (int i = 0; i < abs(k); i++) r *= base;
         } else {
@@ -185,9 +185,9 @@ static void apply(lua_State *L, const mobius *m, double re, double im, double *w
     if (st == PC_TK_EPOLE)
     {
         const char *tre = tk_pushnum(L, re), *tim = tk_pushnum(L, im);
-        luaL_error(L, "mobius: z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
+        pcl_error(L, "mobius: z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
     }
-    if (st != PC_TK_OK) luaL_error(L, "mobius: %s", pc_tk_strerror(st));
+    if (st != PC_TK_OK) pcl_error(L, "mobius: %s", pc_tk_strerror(st));
 }
 
 static int m_call(lua_State *L) {

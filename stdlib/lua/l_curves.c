@@ -80,7 +80,7 @@ static double lua_g(lua_State *L, double t) {
     lua_call(L, 1, 1);
     int isnum;
     double g = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) luaL_error(L, "curve: the smoothstep g must return a number, got %s",
+    if (!isnum) pcl_error(L, "curve: the smoothstep g must return a number, got %s",
                            luaL_typename(L, -1));
     lua_pop(L, 1);
     return g;
@@ -132,7 +132,7 @@ static int c_xy(lua_State *L) {
 }
 
 static int check_piece(lua_State *L, curve *c, const char *fname, int arg) {
-    if (c->kind == KIND_FOURIER) luaL_error(L, "%s: a Fourier curve has no pieces", fname);
+    if (c->kind == KIND_FOURIER) pcl_error(L, "%s: a Fourier curve has no pieces", fname);
     int isint;
     lua_Integer i = lua_tointegerx(L, arg, &isint);
     if (!isint || i < 1 || i > c->np) {
@@ -236,7 +236,7 @@ static int l_spline2(lua_State *L) {
 static double *read_numbers(lua_State *L, int arg, int count, double *buf, int optional) {
     if (lua_isnoneornil(L, arg)) {
         if (optional) return NULL;
-        luaL_error(L, "_tk.stroke: argument #%d missing", arg);
+        pcl_error(L, "_tk.stroke: argument #%d missing", arg);
     }
     luaL_checktype(L, arg, LUA_TTABLE);
     for (int i = 0; i < count; i++) {
@@ -258,7 +258,7 @@ static int l_stroke_raw(lua_State *L) {
     int closed = lua_toboolean(L, 2);
     luaL_checktype(L, 3, LUA_TTABLE);
     int k = (int)(luaL_len(L, 3) / (d > 0 ? d : 1));
-    if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) luaL_error(L, "_tk.stroke: bad dimension or count");
+    if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) pcl_error(L, "_tk.stroke: bad dimension or count");
     size_t sz = (size_t)k * (size_t)d;
     /* scratch space on the Lua heap (freed by the GC) */
     double *buf = lua_newuserdatauv(L, sizeof(double) * (sz * 3 + (size_t)k * 5), 0);
@@ -306,7 +306,7 @@ static int l_fourier(lua_State *L) {
     int count = (int)luaL_len(L, 1);
     if (count < 2 || count % 2) {
         lua_pushfstring(L, "a list of an even number (2n >= 2) of points, got %d", count);
-        return luaL_error(L, "%s: argument #1 (points) must be %s", fn, lua_tostring(L, -1));
+        return pcl_error(L, "%s: argument #1 (points) must be %s", fn, lua_tostring(L, -1));
     }
     int n = count / 2, d = 0;
     double *samples = lua_newuserdatauv(L, sizeof(double) * (size_t)count * PC_CURVE_MAXDIM, 0);
@@ -316,14 +316,14 @@ static int l_fourier(lua_State *L) {
         pcl_value *p = pcl_tovalue(L, -1);
         double loc[PC_MAXDIM];
         if (!p || pc_loc(p->n, p->h, loc) != PC_OK)
-            return luaL_error(L, "%s: points[%d] must be a point, got %s", fn, i + 1,
+            return pcl_error(L, "%s: points[%d] must be a point, got %s", fn, i + 1,
                               p ? "a vector or weighted value" : luaL_typename(L, -1));
         if (i == 0) {
             d = p->n;
             if (d > PC_CURVE_MAXDIM)
-                return luaL_error(L, "%s: points must be 1-D to 4-D, got %d-D", fn, d);
+                return pcl_error(L, "%s: points must be 1-D to 4-D, got %d-D", fn, d);
         } else if (p->n != d) {
-            return luaL_error(L, "%s: points[%d] is %d-D, but points[1] is %d-D: dimensions "
+            return pcl_error(L, "%s: points[%d] is %d-D, but points[1] is %d-D: dimensions "
                               "cannot be mixed", fn, i + 1, p->n, d);
         }
         for (int k = 0; k < d; k++) samples[i * PC_CURVE_MAXDIM + k] = loc[k];
@@ -346,7 +346,7 @@ static int l_fourier(lua_State *L) {
 /* c:coef(k) -> a, b: the Fourier coefficient lists of coordinate k (0-based index of a_0) */
 static int c_coef(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:coef");
-    if (c->kind != KIND_FOURIER) return luaL_error(L, "c:coef: not a Fourier curve");
+    if (c->kind != KIND_FOURIER) return pcl_error(L, "c:coef: not a Fourier curve");
     int k = (int)luaL_optinteger(L, 2, 1);
     if (k < 1 || k > c->d) tk_argerror_at(L, "c:coef", 2, 1, "k", "a coordinate number");
     int m = c->n + 1;

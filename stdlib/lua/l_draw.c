@@ -47,8 +47,8 @@ static int check(lua_State *L, pc_canvas *c, int rc) {
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
     /* core messages that already start with the statement's name keep it */
     size_t n = strlen(name);
-    if (strncmp(c->error, name, n) == 0 && c->error[n] == ':') return luaL_error(L, "%s", c->error);
-    return luaL_error(L, "%s: %s", name, c->error);
+    if (strncmp(c->error, name, n) == 0 && c->error[n] == ':') return pcl_error(L, "%s", c->error);
+    return pcl_error(L, "%s: %s", name, c->error);
 }
 
 /* An optional colour: none/nil means the default (-1 for the core). */
@@ -320,7 +320,7 @@ static int l_save(lua_State *L) {
         return pcl_argerror(L, 1, "path", "a file name ending in .png, .svg or .ppm");
     char err[512];
     if (pc_write_file(c, path, theme, err, sizeof err) != PC_DRAW_OK)
-        return luaL_error(L, "save: %s", err);
+        return pcl_error(L, "save: %s", err);
     c->dirty = 0;
     return 0;
 }
@@ -360,7 +360,7 @@ void pcl_open_draw(lua_State *L) {
         lua_setfield(L, -2, "__gc");
         lua_setmetatable(L, -2);
         b->c = pc_canvas_new_mode(12);
-        if (!b->c) luaL_error(L, "pointcalc: out of memory for the canvas");
+        if (!b->c) pcl_error(L, "pointcalc: out of memory for the canvas");
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }

@@ -101,43 +101,10 @@ static const char *push_num_text(lua_State *L, double x) {
 
 /* ---- errors -------------------------------------------------------------------------------- */
 
-const char *pcl_fname(lua_State *L) {
-    lua_Debug ar;
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
-    return "pointcalc";
-}
-
-int pcl_arg_shown(lua_State *L, int arg) {
-    lua_Debug ar;
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.namewhat &&
-        strcmp(ar.namewhat, "method") == 0)
-        return arg - 1;                                 /* A:dist(B): B is argument #1 */
-    return arg;
-}
-
-/* What the caller passed, as pcl_argerror shows it: numbers by value, else the type. */
-static const char *got(lua_State *L, int arg) {
-    if (lua_type(L, arg) == LUA_TNUMBER) {
-        if (lua_isinteger(L, arg)) return lua_pushfstring(L, "%I", lua_tointeger(L, arg));
-        return lua_pushfstring(L, "%f", lua_tonumber(L, arg));
-    }
-    if (luaL_getmetafield(L, arg, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
-    return luaL_typename(L, arg);
-}
-
 /* "argument #N", or "self" for the receiver of a method call */
 static const char *argname(lua_State *L, int arg) {
     int shown = pcl_arg_shown(L, arg);
     return shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
-}
-
-int pcl_arg_error(lua_State *L, int arg, const char *what, const char *expected) {
-    const char *name = pcl_fname(L);
-    const char *value = got(L, arg);                    /* before anything is pushed */
-    const char *an = argname(L, arg);
-    if (what && what[0])
-        return luaL_error(L, "%s: %s (%s) must be %s, got %s", name, an, what, expected, value);
-    return luaL_error(L, "%s: %s must be %s, got %s", name, an, expected, value);
 }
 
 static const char MEMBERSHIP[] =
@@ -149,10 +116,10 @@ static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
     const char *text = push_value_text(L, p);
     double w = p->h[p->n];
     if (pc_kind_of(w) == PC_KIND_VECTOR)
-        return luaL_error(L, "%s is a vector %s (weight 0), not a point: %s; to place a vector, "
+        return pcl_error(L, "%s is a vector %s (weight 0), not a point: %s; to place a vector, "
                           "add it to a point, e.g. P(0, 0) + v", ctx, text, MEMBERSHIP);
     const char *wt = push_num_text(L, w);
-    return luaL_error(L, "%s has weight %s, so it is neither a point (weight 1) nor a vector "
+    return pcl_error(L, "%s has weight %s, so it is neither a point (weight 1) nor a vector "
                       "(weight 0): %s; write offsets with V(), e.g. V(x, y)*100 + P(320, 240), "
                       "or use normalize(p) for a projective point", ctx, wt, MEMBERSHIP);
 }
@@ -166,22 +133,22 @@ static const char *argctx(lua_State *L, int arg, const char *what) {
 int pcl_dimerror(lua_State *L, int arg, const char *what, int got_dim, int dim, int dim_arg) {
     const char *ctx = argctx(L, arg, what);
     if (dim_arg > 0)
-        return luaL_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed",
+        return pcl_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed",
                           ctx, got_dim, argname(L, dim_arg), dim);
-    return luaL_error(L, "%s must be %d-D, got %d-D", ctx, dim, got_dim);
+    return pcl_error(L, "%s must be %d-D, got %d-D", ctx, dim, got_dim);
 }
 
 double pcl_checkfinite(lua_State *L, int arg, const char *what) {
     int isnum;
     double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum || lua_type(L, arg) != LUA_TNUMBER) pcl_arg_error(L, arg, what, "a number");
-    if (!isfinite(v)) pcl_arg_error(L, arg, what, "a finite number");
+    if (!isnum || lua_type(L, arg) != LUA_TNUMBER) pcl_argerror(L, arg, what, "a number");
+    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
     return v;
 }
 
 pcl_value *pcl_checkvalue(lua_State *L, int arg, const char *what) {
     pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a point or vector");
+    if (!p) pcl_argerror(L, arg, what, "a point or vector");
     return p;
 }
 
@@ -194,7 +161,7 @@ static int loc_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim
 
 int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a point");
+    if (!p) pcl_argerror(L, arg, what, "a point");
     return loc_of(L, p, arg, what, dim, dim_arg, out);
 }
 
@@ -205,7 +172,7 @@ static int vec_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim
         const char *ctx = argctx(L, arg, what);
         const char *text = push_value_text(L, p);
         const char *wt = push_num_text(L, p->h[p->n]);
-        return luaL_error(L, "%s must be a vector (weight 0), got %s (weight %s); a difference "
+        return pcl_error(L, "%s must be a vector (weight 0), got %s (weight %s); a difference "
                           "of points is a vector, e.g. B - A", ctx, text, wt);
     }
     memcpy(out, p->h, sizeof(double) * (size_t)p->n);
@@ -214,26 +181,26 @@ static int vec_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim
 
 int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a vector");
+    if (!p) pcl_argerror(L, arg, what, "a vector");
     return vec_of(L, p, arg, what, dim, dim_arg, out);
 }
 
 /* Fast local variants using the upvalue metatable. */
 static inline pcl_value *checkval(lua_State *L, int arg, const char *what) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a point or vector");
+    if (!p) pcl_argerror(L, arg, what, "a point or vector");
     return p;
 }
 
 static int checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a point");
+    if (!p) pcl_argerror(L, arg, what, "a point");
     return loc_of(L, p, arg, what, dim, dim_arg, out);
 }
 
 static int checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a vector");
+    if (!p) pcl_argerror(L, arg, what, "a vector");
     return vec_of(L, p, arg, what, dim, dim_arg, out);
 }
 
@@ -262,9 +229,9 @@ static int make(lua_State *L, double weight) {
     int n = lua_gettop(L);
     if (n == 1 && lua_type(L, 1) == LUA_TTABLE) {          /* P{1, 2} */
         n = (int)lua_rawlen(L, 1);
-        if (n < 1) return luaL_error(L, "%s: the table has no coordinates", pcl_fname(L));
+        if (n < 1) return pcl_error(L, "%s: the table has no coordinates", pcl_fname(L));
         if (n > PC_MAXDIM)
-            return luaL_error(L, "%s: %d coordinates, but the largest dimension is %d",
+            return pcl_error(L, "%s: %d coordinates, but the largest dimension is %d",
                               pcl_fname(L), n, PC_MAXDIM);
         pcl_value *p = newpt(L, n);
         for (int i = 0; i < n; i++) {
@@ -273,7 +240,7 @@ static int make(lua_State *L, double weight) {
             double v = lua_tonumberx(L, -1, &isnum);
             if (!isnum || !isfinite(v) || lua_type(L, -1) != LUA_TNUMBER) {
                 char buf[24];
-                return luaL_error(L, "%s: argument #1 (table) field [%d] (%s) must be a finite "
+                return pcl_error(L, "%s: argument #1 (table) field [%d] (%s) must be a finite "
                                   "number, got %s", pcl_fname(L), i + 1,
                                   coord_name(i, buf, sizeof buf), luaL_typename(L, -1));
             }
@@ -283,9 +250,9 @@ static int make(lua_State *L, double weight) {
         p->h[n] = weight;
         return 1;
     }
-    if (n < 1) return luaL_error(L, "%s: needs at least one coordinate", pcl_fname(L));
+    if (n < 1) return pcl_error(L, "%s: needs at least one coordinate", pcl_fname(L));
     if (n > PC_MAXDIM)
-        return luaL_error(L, "%s: %d coordinates, but the largest dimension is %d", pcl_fname(L),
+        return pcl_error(L, "%s: %d coordinates, but the largest dimension is %d", pcl_fname(L),
                           n, PC_MAXDIM);
     pcl_value *p = newpt(L, n);
     for (int i = 0; i < n; i++) {
@@ -294,8 +261,8 @@ static int make(lua_State *L, double weight) {
         if (!isnum || !isfinite(v) || lua_type(L, i + 1) != LUA_TNUMBER) {
             char buf[24];
             const char *what = coord_name(i, buf, sizeof buf);
-            if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER) pcl_arg_error(L, i + 1, what, "a number");
-            pcl_arg_error(L, i + 1, what, "a finite number");
+            if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER) pcl_argerror(L, i + 1, what, "a number");
+            pcl_argerror(L, i + 1, what, "a finite number");
         }
         p->h[i] = v;
     }
@@ -319,14 +286,14 @@ static const char *opnd_name(lua_State *L, int idx) {
 }
 
 static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const pcl_value *b) {
-    return luaL_error(L, "cannot %s a %d-D value and a %d-D value: dimensions cannot be mixed",
+    return pcl_error(L, "cannot %s a %d-D value and a %d-D value: dimensions cannot be mixed",
                       op, a->n, b->n);
 }
 
 static int l_add(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
     if (!a || !b)
-        return luaL_error(L, "cannot add %s and %s: points and vectors add only to points and "
+        return pcl_error(L, "cannot add %s and %s: points and vectors add only to points and "
                           "vectors; to shift a point write A + V(dx, dy)",
                           opnd_name(L, 1), opnd_name(L, 2));
     int n = a->n;
@@ -339,7 +306,7 @@ static int l_add(lua_State *L) {
 static int l_sub(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
     if (!a || !b)
-        return luaL_error(L, "cannot subtract %s from %s: points and vectors subtract only "
+        return pcl_error(L, "cannot subtract %s from %s: points and vectors subtract only "
                           "points and vectors; to shift a point write A - V(dx, dy)",
                           opnd_name(L, 2), opnd_name(L, 1));
     int n = a->n;
@@ -354,15 +321,15 @@ static int l_mul(lua_State *L) {
     int k_idx;
     if ((p = topt(L, 1)) != NULL) k_idx = 2;
     else if ((p = topt(L, 2)) != NULL) k_idx = 1;
-    else return luaL_error(L, "cannot multiply %s by %s", opnd_name(L, 1), opnd_name(L, 2));
+    else return pcl_error(L, "cannot multiply %s by %s", opnd_name(L, 1), opnd_name(L, 2));
     if (lua_type(L, k_idx) != LUA_TNUMBER) {
         if (topt(L, k_idx))
-            return luaL_error(L, "cannot multiply a point by a point: use dot(u, v) or "
+            return pcl_error(L, "cannot multiply a point by a point: use dot(u, v) or "
                               "cross(u, v) for products of vectors");
-        return luaL_error(L, "cannot multiply a point by %s", opnd_name(L, k_idx));
+        return pcl_error(L, "cannot multiply a point by %s", opnd_name(L, k_idx));
     }
     double k = lua_tonumber(L, k_idx);
-    if (!isfinite(k)) return luaL_error(L, "cannot multiply a point by %f", k);
+    if (!isfinite(k)) return pcl_error(L, "cannot multiply a point by %f", k);
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = p->h[i] * k;
@@ -371,12 +338,12 @@ static int l_mul(lua_State *L) {
 
 static int l_div(lua_State *L) {
     pcl_value *p = topt(L, 1);
-    if (!p) return luaL_error(L, "cannot divide %s by a point", opnd_name(L, 1));
+    if (!p) return pcl_error(L, "cannot divide %s by a point", opnd_name(L, 1));
     if (lua_type(L, 2) != LUA_TNUMBER)
-        return luaL_error(L, "cannot divide a point by %s", opnd_name(L, 2));
+        return pcl_error(L, "cannot divide a point by %s", opnd_name(L, 2));
     double k = lua_tonumber(L, 2);
-    if (k == 0) return luaL_error(L, "division of a point by zero");
-    if (!isfinite(k)) return luaL_error(L, "cannot divide a point by %f", k);
+    if (k == 0) return pcl_error(L, "division of a point by zero");
+    if (!isfinite(k)) return pcl_error(L, "cannot divide a point by %f", k);
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = p->h[i] / k;   /* the weight is divided too */
@@ -385,7 +352,7 @@ static int l_div(lua_State *L) {
 
 static int l_unm(lua_State *L) {
     pcl_value *p = topt(L, 1);
-    if (!p) return luaL_error(L, "cannot negate %s", opnd_name(L, 1));
+    if (!p) return pcl_error(L, "cannot negate %s", opnd_name(L, 1));
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = -p->h[i];
@@ -402,14 +369,14 @@ static int l_eq(lua_State *L) {
 
 static int l_len(lua_State *L) {
     pcl_value *p = lua_touserdata(L, 1);                /* only the VM calls it */
-    if (!p) return luaL_error(L, "#: not a point");
+    if (!p) return pcl_error(L, "#: not a point");
     lua_pushinteger(L, p->n);
     return 1;
 }
 
 static int l_tostring(lua_State *L) {
     pcl_value *p = topt(L, 1);
-    if (!p) return luaL_error(L, "tostring: not a point");
+    if (!p) return pcl_error(L, "tostring: not a point");
     push_value_text(L, p);
     return 1;
 }
@@ -447,7 +414,7 @@ static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key)
  * it (the metatable is protected by __metatable), always with a point as argument 1. */
 static int l_index(lua_State *L) {
     pcl_value *p = lua_touserdata(L, 1);
-    if (!p) return luaL_error(L, "index: not a point");
+    if (!p) return pcl_error(L, "index: not a point");
     int t = lua_type(L, 2);
     if (t == LUA_TSTRING) {
         size_t len;
@@ -464,7 +431,7 @@ static int l_index(lua_State *L) {
             if (i >= 0) {
                 if (i >= p->n) {
                     const char *text = push_value_text(L, p);
-                    return luaL_error(L, "%s is %d-D: it has no coordinate .%s", text, p->n, k);
+                    return pcl_error(L, "%s is %d-D: it has no coordinate .%s", text, p->n, k);
                 }
                 return push_coord(L, p, i, k);
             }
@@ -483,7 +450,7 @@ static int l_index(lua_State *L) {
 }
 
 static int l_newindex(lua_State *L) {
-    return luaL_error(L, "points are immutable: make a new one instead, e.g. P(x, p.y)");
+    return pcl_error(L, "points are immutable: make a new one instead, e.g. P(x, p.y)");
 }
 
 /* ---- helpers ----------------------------------------------------------------------------- */
@@ -506,8 +473,8 @@ static int l_lerp(lua_State *L) {
         lua_pushnumber(L, x * (1 - t) + y * t);
         return 1;
     }
-    if (!a) pcl_arg_error(L, 1, "A", "a point or vector");
-    if (!b) pcl_arg_error(L, 2, "B", "a point or vector");
+    if (!a) pcl_argerror(L, 1, "A", "a point or vector");
+    if (!b) pcl_argerror(L, 2, "B", "a point or vector");
     if (a->n != b->n) pcl_dimerror(L, 2, "B", b->n, a->n, 1);
     pcl_checkfinite(L, 3, "t");
     return 0;
@@ -522,7 +489,7 @@ static int l_bar(lua_State *L) {
 static int l_mid(lua_State *L) {
     int m = lua_gettop(L);
     pcl_value *a = checkval(L, 1, "A");
-    if (m < 2) pcl_arg_error(L, 2, "B", "a point or vector");
+    if (m < 2) pcl_argerror(L, 2, "B", "a point or vector");
     int n = a->n;
     for (int j = 2; j <= m; j++) {
         pcl_value *b = checkval(L, j, NULL);
@@ -543,7 +510,7 @@ static int l_dist(lua_State *L) {
     if (lua_isnoneornil(L, 2)) {
         pcl_value *p = checkval(L, 1, "v");
         if (pc_kind_of(p->h[p->n]) != PC_KIND_VECTOR)
-            return luaL_error(L, "%s: with one argument it must be a vector (its length), got %s; "
+            return pcl_error(L, "%s: with one argument it must be a vector (its length), got %s; "
                               "for a distance pass two points, dist(A, B)", pcl_fname(L),
                               push_value_text(L, p));
         int n = vec_of(L, p, 1, "v", 0, 0, a);
@@ -574,7 +541,7 @@ static int l_cross(lua_State *L) {
         return 1;
     }
     if (n != 3)
-        return luaL_error(L, "%s: vectors must be 2-D or 3-D, got %d-D", pcl_fname(L), n);
+        return pcl_error(L, "%s: vectors must be 2-D or 3-D, got %d-D", pcl_fname(L), n);
     double w[3];
     pc_cross3(u, v, w);
     push_vec(L, 3, w);
@@ -585,7 +552,7 @@ static int l_unit(lua_State *L) {
     double u[PC_MAXDIM], w[PC_MAXDIM];
     int n = checkvec(L, 1, "v", 0, 0, u);
     if (pc_unit(n, u, w) != PC_OK)
-        return luaL_error(L, "%s: the zero vector has no direction", pcl_fname(L));
+        return pcl_error(L, "%s: the zero vector has no direction", pcl_fname(L));
     push_vec(L, n, w);
     return 1;
 }
@@ -594,7 +561,7 @@ static int l_perp(lua_State *L) {
     double u[PC_MAXDIM], w[2];
     int n = checkvec(L, 1, "v", 0, 0, u);
     if (n != 2)
-        return luaL_error(L, "%s: argument #1 (v) must be a 2-D vector, got %d-D (in space "
+        return pcl_error(L, "%s: argument #1 (v) must be a 2-D vector, got %d-D (in space "
                           "a perpendicular is not unique: use cross(u, v))", pcl_fname(L), n);
     pc_perp2(u, w);
     push_vec(L, 2, w);
@@ -616,7 +583,7 @@ static int l_angle(lua_State *L) {
         for (int i = 0; i < n; i++) { b[i] -= a[i]; c[i] -= a[i]; }
     }
     if (pc_angle(n, b, c, &ang) != PC_OK)
-        return luaL_error(L, "%s: a side has zero length, so the angle is undefined", pcl_fname(L));
+        return pcl_error(L, "%s: a side has zero length, so the angle is undefined", pcl_fname(L));
     lua_pushnumber(L, ang);
     return 1;
 }
@@ -627,7 +594,7 @@ static int l_foot(lua_State *L) {
     checkloc(L, 2, "A", n, 1, a);
     checkloc(L, 3, "B", n, 1, b);
     if (pc_foot(n, c, a, b, h) != PC_OK)
-        return luaL_error(L, "%s: A and B coincide, so they do not define a line", pcl_fname(L));
+        return pcl_error(L, "%s: A and B coincide, so they do not define a line", pcl_fname(L));
     push_loc(L, n, h);
     return 1;
 }
@@ -647,7 +614,7 @@ static int l_sigma(lua_State *L) {
 /* A point or an improper point (weight 0) at arg, as a value of dimension n. */
 static pcl_value *check_proj(lua_State *L, int arg, const char *what, int n, int dim_arg) {
     pcl_value *p = topt(L, arg);
-    if (!p) pcl_arg_error(L, arg, what, "a point (or a point at infinity)");
+    if (!p) pcl_argerror(L, arg, what, "a point (or a point at infinity)");
     if (p->n != n) pcl_dimerror(L, arg, what, p->n, n, dim_arg);
     if (pc_kind_of(p->h[n]) == PC_KIND_WEIGHTED) location_error(L, argctx(L, arg, what), p);
     return p;
@@ -656,10 +623,10 @@ static pcl_value *check_proj(lua_State *L, int arg, const char *what, int n, int
 static int ratio_error(lua_State *L, int st) {
     const char *f = pcl_fname(L);
     switch (st) {
-    case PC_ECOINCIDENT: return luaL_error(L, "%s: the points coincide, so the ratio is undefined", f);
-    case PC_ENOTCOLLINEAR: return luaL_error(L, "%s: the points are not collinear", f);
-    case PC_EZERO: return luaL_error(L, "%s: a point at infinity with a zero direction", f);
-    default: return luaL_error(L, "%s: %s", f, pc_strerror(st));
+    case PC_ECOINCIDENT: return pcl_error(L, "%s: the points coincide, so the ratio is undefined", f);
+    case PC_ENOTCOLLINEAR: return pcl_error(L, "%s: the points are not collinear", f);
+    case PC_EZERO: return pcl_error(L, "%s: a point at infinity with a zero direction", f);
+    default: return pcl_error(L, "%s: %s", f, pc_strerror(st));
     }
 }
 
@@ -683,8 +650,8 @@ static int l_divide(lua_State *L) {
     checkloc(L, 2, "Y", n, 1, y);
     int isnum;
     double lam = lua_tonumberx(L, 3, &isnum);
-    if (!isnum) pcl_arg_error(L, 3, "lambda", "a number");
-    if (isnan(lam)) pcl_arg_error(L, 3, "lambda", "a number, not NaN");
+    if (!isnum) pcl_argerror(L, 3, "lambda", "a number");
+    if (isnan(lam)) pcl_argerror(L, 3, "lambda", "a number, not NaN");
     double xh[PC_MAXDIM + 1], yh[PC_MAXDIM + 1];
     memcpy(xh, x, sizeof(double) * (size_t)n);
     memcpy(yh, y, sizeof(double) * (size_t)n);
@@ -747,15 +714,15 @@ static int l_meet(lua_State *L) {
         lua_pushnumber(L, res);
         return 2;
     case PC_ESAME_LINE:
-        return luaL_error(L, "%s: the two lines coincide, so they have no single meet", f);
+        return pcl_error(L, "%s: the two lines coincide, so they have no single meet", f);
     case PC_ECOINCIDENT:
-        return luaL_error(L, "%s: %s", f, pc_dist(n, a1, a2) == 0
+        return pcl_error(L, "%s: %s", f, pc_dist(n, a1, a2) == 0
                           ? "A1 and A2 coincide, so they do not define a line"
                           : "B1 and B2 coincide, so they do not define a line");
     case PC_EDIM:
-        return luaL_error(L, "%s: lines in 1-D all coincide; meet needs 2-D or more", f);
+        return pcl_error(L, "%s: lines in 1-D all coincide; meet needs 2-D or more", f);
     }
-    return luaL_error(L, "%s: %s", f, pc_strerror(st));
+    return pcl_error(L, "%s: %s", f, pc_strerror(st));
 }
 
 /* area(A, B, C): signed in 2-D (counter-clockwise positive), unsigned in any dimension;
@@ -764,7 +731,7 @@ static int l_area(lua_State *L) {
     int m = lua_gettop(L);
     double a[PC_MAXDIM], b[PC_MAXDIM], c[PC_MAXDIM];
     int n = checkloc(L, 1, "A", 0, 0, a);
-    if (n < 2) return luaL_error(L, "%s: points must be 2-D or more, got 1-D", pcl_fname(L));
+    if (n < 2) return pcl_error(L, "%s: points must be 2-D or more, got 1-D", pcl_fname(L));
     checkloc(L, 2, "B", n, 1, b);
     checkloc(L, 3, "C", n, 1, c);
     if (n == 2) {
@@ -783,7 +750,7 @@ static int l_area(lua_State *L) {
         return 1;
     }
     if (m > 3)
-        return luaL_error(L, "%s: a polygon area needs 2-D points; in %d-D give a triangle",
+        return pcl_error(L, "%s: a polygon area needs 2-D points; in %d-D give a triangle",
                           pcl_fname(L), n);
     lua_pushnumber(L, pc_area(n, a, b, c));
     return 1;
@@ -795,7 +762,7 @@ static int l_volume(lua_State *L) {
     double v[4 * PC_MAXDIM];
     static const char *names[] = {"A", "B", "C", "D"};
     int n = checkloc(L, 1, "A", 0, 0, v);
-    if (n < 3) return luaL_error(L, "%s: points must be 3-D or more, got %d-D", pcl_fname(L), n);
+    if (n < 3) return pcl_error(L, "%s: points must be 3-D or more, got %d-D", pcl_fname(L), n);
     for (int j = 1; j < 4; j++) checkloc(L, j + 1, names[j], n, 1, v + j * n);
     if (n == 3) lua_pushnumber(L, pc_volume3(v, v + 3, v + 6, v + 9));
     else lua_pushnumber(L, pc_measure(n, 3, v));
@@ -809,7 +776,7 @@ static int l_normalize(lua_State *L) {
     int n = p->n;
     double out[PC_MAXDIM + 1];
     if (pc_normalize(n, p->h, out) != PC_OK)
-        return luaL_error(L, "%s: %s has weight 0 (a vector, or a point at infinity), so it has "
+        return pcl_error(L, "%s: %s has weight 0 (a vector, or a point at infinity), so it has "
                           "no finite location", pcl_fname(L), push_value_text(L, p));
     pcl_value *r = newpt(L, n);
     memcpy(r->h, out, sizeof(double) * (size_t)(n + 1));
@@ -840,7 +807,7 @@ static int l_near(lua_State *L) {
     double eps = 1e-9;
     if (!lua_isnoneornil(L, 3)) {
         eps = pcl_checkfinite(L, 3, "eps");
-        if (eps < 0) pcl_arg_error(L, 3, "eps", "a non-negative number");
+        if (eps < 0) pcl_argerror(L, 3, "eps", "a non-negative number");
     }
     if (lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
         double a = lua_tonumber(L, 1), b = lua_tonumber(L, 2);
@@ -866,13 +833,13 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
     if (!p) return 0;
     if (p->n != 2) {
         const char *text = push_value_text(L, p);
-        return luaL_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L),
+        return pcl_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L),
                           idx, p->n, text);
     }
     double loc[2];
     if (pc_loc(2, p->h, loc) != PC_OK) location_error(L, argctx(L, idx, NULL), p);
     if (!isfinite(loc[0]) || !isfinite(loc[1]))        /* arithmetic overflowed */
-        return luaL_error(L, "%s has infinite or NaN coordinates", argctx(L, idx, NULL));
+        return pcl_error(L, "%s has infinite or NaN coordinates", argctx(L, idx, NULL));
     *x = loc[0];
     *y = loc[1];
     return 1;

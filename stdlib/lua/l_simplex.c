@@ -26,7 +26,7 @@ static pc_simplex *checkself(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) {
         const char *f = pcl_fname(L);
-        luaL_error(L, "%s: must be called on a simplex, as S:%s(...)", f, f);
+        pcl_error(L, "%s: must be called on a simplex, as S:%s(...)", f, f);
     }
     return s;
 }
@@ -43,12 +43,12 @@ static const char *shape(int k) {
 static int l_simplex(lua_State *L) {
     int m = lua_gettop(L);
     double v[(PC_MAXDIM + 1) * PC_MAXDIM];
-    if (m < 1) pcl_arg_error(L, 1, "C", "a point");
+    if (m < 1) pcl_argerror(L, 1, "C", "a point");
     int n = pcl_checkloc(L, 1, "C", 0, 0, v);
-    if (m < 2) pcl_arg_error(L, 2, "A", "a point");
+    if (m < 2) pcl_argerror(L, 2, "A", "a point");
     int k = m - 1;
     if (k > n)
-        return luaL_error(L, "%s: %d points in %d-D are always dependent: a simplex has at most "
+        return pcl_error(L, "%s: %d points in %d-D are always dependent: a simplex has at most "
                           "dimension + 1 = %d vertices", pcl_fname(L), m, n, n + 1);
     for (int i = 1; i <= k; i++) pcl_checkloc(L, i + 1, NULL, n, 1, v + i * n);
     pc_simplex *s = lua_newuserdatauv(L, pc_simplex_size(n, k), 0);
@@ -56,15 +56,15 @@ static int l_simplex(lua_State *L) {
     if (st == PC_ECOINCIDENT) {
         for (int i = 1; i <= k; i++)
             if (pc_dist(n, v, v + i * n) == 0)
-                return luaL_error(L, "%s: argument #%d coincides with argument #1 (the initial "
+                return pcl_error(L, "%s: argument #%d coincides with argument #1 (the initial "
                                   "point): a degenerate simplex", pcl_fname(L), i + 1);
     }
     if (st == PC_ECOLLINEAR) {
         const char *how = k == 2 ? "collinear" : k == 3 ? "coplanar" : "dependent";
-        return luaL_error(L, "%s: the %d points are %s: a flat (degenerate) %s", pcl_fname(L), m,
+        return pcl_error(L, "%s: the %d points are %s: a flat (degenerate) %s", pcl_fname(L), m,
                           how, shape(k));
     }
-    if (st != PC_OK) return luaL_error(L, "%s: %s", pcl_fname(L), pc_strerror(st));
+    if (st != PC_OK) return pcl_error(L, "%s: %s", pcl_fname(L), pc_strerror(st));
     lua_pushvalue(L, SMT);
     lua_setmetatable(L, -2);
     return 1;
@@ -80,7 +80,7 @@ static int l_call(lua_State *L) {
     lua_rotate(L, 1, -1);
     int m = lua_gettop(L) - 1, k = s->k;
     if (m != k && m != k + 1)
-        return luaL_error(L, "%s: a %d-simplex takes %d natural parameters, got %d (for "
+        return pcl_error(L, "%s: a %d-simplex takes %d natural parameters, got %d (for "
                           "barycentric parameters use S:bary)", pcl_fname(L), k, k, m);
     double p[PC_MAXDIM + 1];
     for (int i = 0; i < m; i++) {
@@ -89,7 +89,7 @@ static int l_call(lua_State *L) {
         if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER || !isfinite(p[i])) {
             const char *got = lua_type(L, i + 1) == LUA_TNUMBER ? "a non-finite number"
                                                                  : luaL_typename(L, i + 1);
-            return luaL_error(L, "%s: argument #%d (parameter %d) must be a finite number, got %s",
+            return pcl_error(L, "%s: argument #%d (parameter %d) must be a finite number, got %s",
                               pcl_fname(L), i + 1, i + 1, got);
         }
     }
@@ -104,7 +104,7 @@ static int l_bary(lua_State *L) {
     pc_simplex *s = checkself(L);
     int k = s->k, m = lua_gettop(L) - 1;
     if (m != k + 1)
-        return luaL_error(L, "%s: a %d-simplex takes %d barycentric parameters, got %d",
+        return pcl_error(L, "%s: a %d-simplex takes %d barycentric parameters, got %d",
                           pcl_fname(L), k, k + 1, m);
     double c[PC_MAXDIM + 1];
     for (int i = 0; i <= k; i++) c[i] = pcl_checkfinite(L, i + 2, NULL);
@@ -118,7 +118,7 @@ static int l_params(lua_State *L) {
     double m[PC_MAXDIM], p[PC_MAXDIM], res;
     int n = pcl_checkloc(L, 2, "M", 0, 0, m);
     if (n != s->n)
-        return luaL_error(L, "%s: argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions "
+        return pcl_error(L, "%s: argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions "
                           "cannot be mixed", pcl_fname(L), n, s->n);
     pc_simplex_params(s, m, p, &res);
     luaL_checkstack(L, s->k + 1, NULL);
@@ -137,13 +137,13 @@ static int l_ratio(lua_State *L) {
     pc_simplex *s = checkself(L);
     int k = s->k, n = s->n, m = lua_gettop(L) - 1;
     if (m != k + 1)
-        return luaL_error(L, "%s: a %d-simplex compares with %d points, got %d", pcl_fname(L), k,
+        return pcl_error(L, "%s: a %d-simplex compares with %d points, got %d", pcl_fname(L), k,
                           k + 1, m);
     double pts[(PC_MAXDIM + 1) * PC_MAXDIM], res;
     for (int i = 0; i <= k; i++) {
         int d = pcl_checkloc(L, i + 2, NULL, 0, 0, pts + i * n);
         if (d != n)
-            return luaL_error(L, "%s: argument #%d is %d-D, but the simplex is in %d-D: dimensions "
+            return pcl_error(L, "%s: argument #%d is %d-D, but the simplex is in %d-D: dimensions "
                               "cannot be mixed", pcl_fname(L), i + 1, d, n);
     }
     lua_pushnumber(L, pc_simplex_ratio(s, pts, &res));
@@ -153,7 +153,7 @@ static int l_ratio(lua_State *L) {
 
 static int l_index(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
-    if (!s) return luaL_error(L, "index: not a simplex");
+    if (!s) return pcl_error(L, "index: not a simplex");
     if (lua_type(L, 2) == LUA_TNUMBER) {
         int isint;
         lua_Integer i = lua_tointegerx(L, 2, &isint);
@@ -173,14 +173,14 @@ static int l_index(lua_State *L) {
 
 static int l_len(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
-    if (!s) return luaL_error(L, "#: not a simplex");
+    if (!s) return pcl_error(L, "#: not a simplex");
     lua_pushinteger(L, s->k + 1);
     return 1;
 }
 
 static int l_tostring(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
-    if (!s) return luaL_error(L, "tostring: not a simplex");
+    if (!s) return pcl_error(L, "tostring: not a simplex");
     luaL_Buffer b;
     luaL_buffinit(L, &b);
     luaL_addstring(&b, "simplex(");

@@ -40,7 +40,17 @@ int pcl_optxy(lua_State *L, int *arg, double *x, double *y, const char *what);
  * 1, or a dimension error if it is not 2-D); return 0 if it is not a point. */
 int pcl_topoint2(lua_State *L, int idx, double *x, double *y);
 
-/* Raise "NAME: argument #ARG (WHAT) must be EXPECTED, got TYPE" (the house error style). */
+/* The house error style, one implementation for every binding:
+ * "NAME: argument #ARG (WHAT) must be EXPECTED, got VALUE" where NAME is the running function
+ * and ARG is counted as Lua counts it (in A:dist(B), B is argument #1; A is "self"). */
 int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected);
+/* The same with an explicit function name and shown argument number (methods, sub-tables). */
+int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
+                      const char *expected);
+/* The name of the running C function, and the number an argument index is shown as. */
+const char *pcl_fname(lua_State *L);
+int pcl_arg_shown(lua_State *L, int arg);
+/* luaL_error, but located at the user's code: frames of the embedded Lua helpers are skipped. */
+int pcl_error(lua_State *L, const char *fmt, ...);
 
 #endif

@@ -28,14 +28,8 @@ pcl_value *pcl_newvalue(lua_State *L, int n);
 pcl_value *pcl_checkvalue(lua_State *L, int arg, const char *what);
 int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
 int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
-/* pcl_argerror's message, but counting arguments as Lua does for method calls: in
- * A:dist(B), B is argument #1.  pcl_arg_shown gives that number for a stack index. */
-int pcl_arg_error(lua_State *L, int arg, const char *what, const char *expected);
-int pcl_arg_shown(lua_State *L, int arg);
 /* "NAME: argument #ARG (WHAT) is 3-D, but argument #DIM_ARG is 2-D (mixed dimensions)" */
 int pcl_dimerror(lua_State *L, int arg, const char *what, int got, int dim, int dim_arg);
-/* The name of the running C function, as pcl_argerror uses it. */
-const char *pcl_fname(lua_State *L);
 /* A finite number at arg. */
 double pcl_checkfinite(lua_State *L, int arg, const char *what);
 

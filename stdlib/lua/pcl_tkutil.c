@@ -4,26 +4,13 @@
 #include <string.h>
 #include "pcl_tk.h"
 
-static const char *shown_value(lua_State *L, int arg) {
-    if (lua_type(L, arg) == LUA_TNUMBER) {
-        if (lua_isinteger(L, arg)) return lua_pushfstring(L, "%I", lua_tointeger(L, arg));
-        return lua_pushfstring(L, "%f", lua_tonumber(L, arg));
-    }
-    if (luaL_getmetafield(L, arg, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
-    return luaL_typename(L, arg);
-}
-
 int tk_argerror(lua_State *L, const char *fname, int arg, const char *what, const char *expected) {
     return tk_argerror_at(L, fname, arg, arg, what, expected);
 }
 
 int tk_argerror_at(lua_State *L, const char *fname, int idx, int arg, const char *what,
                    const char *expected) {
-    const char *value = shown_value(L, idx);
-    if (what && what[0])
-        return luaL_error(L, "%s: argument #%d (%s) must be %s, got %s", fname, arg, what,
-                          expected, value);
-    return luaL_error(L, "%s: argument #%d must be %s, got %s", fname, arg, expected, value);
+    return pcl_argerror_full(L, fname, idx, arg, what, expected);
 }
 
 double tk_checknum(lua_State *L, const char *fname, int arg, const char *what) {
@@ -51,7 +38,7 @@ int tk_topoint(lua_State *L, const char *fname, int idx, const char *what, doubl
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p) return 0;
     if (p->n > maxdim)
-        return luaL_error(L, "%s: argument #%d (%s) must be at most %d-D, got %d-D", fname, idx,
+        return pcl_error(L, "%s: argument #%d (%s) must be at most %d-D, got %d-D", fname, idx,
                           what, maxdim, p->n);
     return pcl_checkloc(L, idx, what, 0, 0, out);
 }
@@ -77,8 +64,8 @@ const char *tk_pushnum(lua_State *L, double x) {
 
 int tk_statuserror(lua_State *L, const char *fname, int status, const char *context) {
     if (context && context[0])
-        return luaL_error(L, "%s: %s (%s)", fname, context, pc_tk_strerror(status));
-    return luaL_error(L, "%s: %s", fname, pc_tk_strerror(status));
+        return pcl_error(L, "%s: %s (%s)", fname, context, pc_tk_strerror(status));
+    return pcl_error(L, "%s: %s", fname, pc_tk_strerror(status));
 }
 
 void tk_private(lua_State *L, int module) {

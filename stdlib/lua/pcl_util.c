@@ -1,32 +1,73 @@
 /* Argument checking shared by all bindings: the house error style
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "pcl.h"
 
-static const char *function_name(lua_State *L) {
+const char *pcl_fname(lua_State *L) {
     lua_Debug ar;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
     return "pointcalc";
 }
 
-/* What the caller actually passed: numbers are shown by value, everything else by type. */
-static const char *got(lua_State *L, int arg) {
-    if (lua_type(L, arg) == LUA_TNUMBER) {
-        if (lua_isinteger(L, arg)) return lua_pushfstring(L, "%I", lua_tointeger(L, arg));
-        return lua_pushfstring(L, "%f", lua_tonumber(L, arg));
+int pcl_arg_shown(lua_State *L, int arg) {
+    lua_Debug ar;
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.namewhat &&
+        strcmp(ar.namewhat, "method") == 0)
+        return arg - 1;                                 /* A:dist(B): B is argument #1 */
+    return arg;
+}
+
+/* What the caller actually passed: numbers by value, userdata by type name, else the type;
+ * a missing argument reads "nil", as DESIGN.md's example has it. */
+static const char *got(lua_State *L, int idx) {
+    if (lua_type(L, idx) == LUA_TNUMBER) {
+        if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
+        return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
     }
-    if (lua_isnone(L, arg)) return "nil";
-    if (luaL_getmetafield(L, arg, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
-    return luaL_typename(L, arg);
+    if (lua_isnone(L, idx)) return "nil";
+    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
+    return luaL_typename(L, idx);
+}
+
+int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
+                      const char *expected) {
+    const char *value = got(L, idx);
+    const char *arg = shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+    if (what && what[0])
+        return pcl_error(L, "%s: %s (%s) must be %s, got %s", fname, arg, what, expected, value);
+    return pcl_error(L, "%s: %s must be %s, got %s", fname, arg, expected, value);
 }
 
 int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected) {
-    const char *name = function_name(L);
-    const char *value = got(L, arg);
-    return luaL_error(L, "%s: argument #%d (%s) must be %s, got %s", name, arg, what, expected,
-                      value);
+    return pcl_argerror_full(L, pcl_fname(L), arg, pcl_arg_shown(L, arg), what, expected);
+}
+
+/* Push "file:line: " of the code the error belongs to: the innermost Lua function that is not
+ * one of pointcalc's own embedded helpers, so an error raised in a toolkit function points at
+ * the user's line, not inside the toolkit. */
+static void push_where(lua_State *L) {
+    lua_Debug ar;
+    for (int level = 1; lua_getstack(L, level, &ar); level++) {
+        lua_getinfo(L, "Sl", &ar);
+        if (ar.currentline <= 0) continue;                          /* a C function */
+        if (strncmp(ar.source, "=[pointcalc/", 12) == 0) continue;  /* an embedded helper */
+        lua_pushfstring(L, "%s:%d: ", ar.short_src, ar.currentline);
+        return;
+    }
+    lua_pushliteral(L, "");
+}
+
+int pcl_error(lua_State *L, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    push_where(L);
+    lua_pushvfstring(L, fmt, ap);
+    va_end(ap);
+    lua_concat(L, 2);
+    return lua_error(L);
 }
 
 /* The coordinate at arg; `what` names the pair ("" or e.g. "centre"), axis is "x" or "y".

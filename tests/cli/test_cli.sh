@@ -21,6 +21,12 @@ run "$POINTCALC" syntax.lua;      expect_rc 1 "syntax error"; expect_in err.txt 
 printf 'screen(12)\n\ncircle(1, 2)\n' > badarg.lua
 run "$POINTCALC" badarg.lua;      expect_rc 1 "bad argument"
 expect_in err.txt "badarg.lua:3: circle: argument #3 (radius) must be a non-negative number, got nil" "argument error"
+# errors found inside the toolkit's Lua helpers point at the script's line, not into pointcalc
+printf 'local Q = bilinear(P(0, 0), P(1, 0), P(1, 1), P(0, 1))\n\nQ:draw(function(t) return "x" end, {t = {0, 1, .5}})\n' > lens.lua
+run "$POINTCALC" lens.lua;        expect_rc 1 "toolkit error"
+expect_in err.txt "lens.lua:3: a curve must return a point or numbers, got string" "toolkit error located in the script"
+printf 'local Q = bilinear(P(0, 0), 2, 3, 4)\n' > bil.lua
+run "$POINTCALC" bil.lua;         expect_in err.txt "bil.lua:1: bilinear: argument #2 (P1) must be a point, got 2" "binding error through a Lua helper"
 run "$POINTCALC" -e 'pset(1)';    expect_rc 1 "-e error"; expect_in err.txt "(command line):1: pset: argument #2 (y) must be a number or a point, got nil" "-e error"
 expect_no_file pointcalc.png "no output after an error"
 

@@ -83,7 +83,7 @@ err(function() return f * 2 end, "cannot multiply an affine map by a number: f *
 err(function() return F * F end, "cannot compose: the first map applied gives 2-D, the second takes 3-D", "compose dims")
 err(function() return f:compose(3) end, "compose: argument #1 (g) must be an affine map, got 3", "compose arg")
 err(function() return f.inverse(3) end, "inverse: must be called on an affine map, as f:inverse(...)", "bad self")
-err(function() return affine.frame(P(0, 0)) end, "frame: argument #2 (X) must be a point or vector, got no value", "frame without axes")
+err(function() return affine.frame(P(0, 0)) end, "frame: argument #2 (X) must be a point or vector, got nil", "frame without axes")
 err(function() return affine.frame(P(0, 0), P(1, 0, 0)) end, "frame: argument #2 (X) is 3-D, but argument #1 is 2-D", "frame dims")
 err(function() return affine.frame(P(0, 0), P(1, 0) * 2) end, "frame: argument #2 (X) has weight 2", "frame weighted axis")
 err(function() return affine.identity(0) end, "identity: argument #1 (n) must be a dimension 1..16, got 0", "identity")

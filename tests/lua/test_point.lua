@@ -109,10 +109,10 @@ same(mid(P(0, 0), P(3, 0), P(0, 3)), P(1, 1), "mid of three: the centroid")
 err(function() return lerp(A, 3, 0.5) end, "lerp: argument #2 (B) must be a point or vector, got 3", "lerp B")
 err(function() return lerp(nil, B, 0.5) end, "lerp: argument #1 (A) must be a point or vector, got nil", "lerp A")
 err(function() return lerp(A, P(1, 2, 3), 0.5) end, "lerp: argument #2 (B) is 3-D, but argument #1 is 2-D: dimensions cannot be mixed", "lerp dims")
-err(function() return lerp(A, B) end, "lerp: argument #3 (t) must be a number, got no value", "lerp t")
+err(function() return lerp(A, B) end, "lerp: argument #3 (t) must be a number, got nil", "lerp t")
 err(function() return lerp(A, B, 0/0) end, "lerp: argument #3 (t) must be a finite number", "lerp NaN")
 err(function() return bar("x") end, "bar: argument #1 (t) must be a number, got string", "bar")
-err(function() return mid(A) end, "mid: argument #2 (B) must be a point or vector, got no value", "mid one")
+err(function() return mid(A) end, "mid: argument #2 (B) must be a point or vector, got nil", "mid one")
 err(function() return mid(A, P(1, 2, 3)) end, "mid: argument #2 is 3-D, but argument #1 is 2-D", "mid dims")
 
 -- metric: dist dot cross unit perp angle foot Sigma --------------------------------------------
@@ -214,7 +214,7 @@ eq(volume(P(0, 0, 0), P(1, 3, 0), P(4, 0, 0), P(0, 0, 2)), -4, "left-handed is n
 approx(volume(P(0, 0, 0, 5), P(4, 0, 0, 5), P(1, 3, 0, 5), P(0, 0, 2, 5)), 4, 1e-12, "unsigned volume in 4-D")
 err(function() return area(P(0), P(1), P(2)) end, "area: points must be 2-D or more, got 1-D", "area 1-D")
 err(function() return area(P(0, 0, 0), P(1, 0, 0), P(0, 1, 0), P(1, 1, 0)) end, "area: a polygon area needs 2-D points; in 3-D give a triangle", "area polygon 3-D")
-err(function() return area(P(0, 0), P(1, 0)) end, "area: argument #3 (C) must be a point, got no value", "area two points")
+err(function() return area(P(0, 0), P(1, 0)) end, "area: argument #3 (C) must be a point, got nil", "area two points")
 err(function() return volume(P(0, 0), P(1, 0), P(0, 1), P(1, 1)) end, "volume: points must be 3-D or more, got 2-D", "volume 2-D")
 
 -- normalize, weight, coords, near ------------------------------------------------------------------

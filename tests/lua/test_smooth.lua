@@ -56,7 +56,7 @@ err(function() smooth.half(8, 2, 1) end, "smooth.half: argument #3 (t0) must be 
 err(function() smooth.half(0, 2, .5) end, "smooth.half: argument #1 (n) must be a positive number, got 0", "n = 0")
 err(function() smooth.half(2, "x", .5) end, "smooth.half: argument #2 (m) must be a number, got string", "m string")
 err(function() smooth.power(-1) end, "smooth.power: argument #1 (n) must be a positive number, got -1", "power n < 0")
-err(function() smooth.sine() end, "smooth.sine: argument #1 (t) must be a number, got no value", "sine()")
+err(function() smooth.sine() end, "smooth.sine: argument #1 (t) must be a number, got nil", "sine()")
 err(function() smooth.cubic(0 / 0) end, "smooth.cubic: argument #1 (t) must be a finite number", "cubic(NaN)")
 err(function() smooth.locus(2, 2, 2) end, "smooth.locus: argument #3 (t0) must be a number in [0, 1], got 2", "locus t0")
 err(function() g("x") end, "halfspline: argument #1 (t) must be a number, got string", "g(string)")
