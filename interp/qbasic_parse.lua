@@ -621,41 +621,32 @@ function M.parse(source, opts)
       base = prog.option_base }
   end
 
+  -- a branch of a single-line IF: a line number (THEN 20 means GOTO 20) or statements
+  local function parse_branch(stop_at_else)
+    local body = {}
+    if peek().t == "num" then
+      body[1] = { k = "goto", label = label_name(nexttok()), line = lineno }
+    else
+      parse_stmt_list(body, stop_at_else)
+    end
+    return body
+  end
+
   local function parse_if(stop_at_else)
     local cond = parse_expr()
     check_num(cond)
+    local st = { k = "if1", cond = cond }
     if accept_kw("goto") then
-      local lbl = label_name(nexttok())
-      local st = { k = "if1", cond = cond, then_body = { { k = "goto", label = lbl, line = lineno } } }
-      if accept_kw("else") then
-        st.else_body = {}
-        if peek().t == "num" then
-          st.else_body[1] = { k = "goto", label = label_name(nexttok()), line = lineno }
-        else
-          parse_stmt_list(st.else_body, stop_at_else)
-        end
-      end
-      return add(st)
-    end
-    expect_kw("then")
-    if peek().t == "eol" or is_kw("rem") then     -- only a comment after THEN: a block IF
-      while peek().t ~= "eol" do pos = pos + 1 end
-      return add({ k = "ifblock", cond = cond })
-    end
-    local st = { k = "if1", cond = cond, then_body = {} }
-    if peek().t == "num" then
-      st.then_body[1] = { k = "goto", label = label_name(nexttok()), line = lineno }
+      st.then_body = { { k = "goto", label = label_name(nexttok()), line = lineno } }
     else
-      parse_stmt_list(st.then_body, true)
-    end
-    if accept_kw("else") then
-      st.else_body = {}
-      if peek().t == "num" then
-        st.else_body[1] = { k = "goto", label = label_name(nexttok()), line = lineno }
-      else
-        parse_stmt_list(st.else_body, stop_at_else)
+      expect_kw("then")
+      if peek().t == "eol" or is_kw("rem") then     -- only a comment after THEN: a block IF
+        while peek().t ~= "eol" do pos = pos + 1 end
+        return add({ k = "ifblock", cond = cond })
       end
+      st.then_body = parse_branch(true)
     end
+    if accept_kw("else") then st.else_body = parse_branch(stop_at_else) end
     return add(st)
   end
 
