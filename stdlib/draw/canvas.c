@@ -76,7 +76,7 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->has_window = c->window_screen = 0;
     c->view = (pc_rect){0, 0, width - 1, height - 1};
     c->view_screen = 0;
-    c->nops = c->nspans = c->nclips = 0;
+    c->nops = c->nspans = c->ndots = c->nclips = 0;
     c->dirty = 0;
     c->version++;
     c->error[0] = 0;
@@ -108,6 +108,7 @@ void pc_canvas_free(pc_canvas *c) {
     free(c->pixels);
     free(c->ops);
     free(c->spans);
+    free(c->dots);
     free(c->clips);
     free(c);
 }
@@ -161,6 +162,25 @@ int pc_push_span(pc_canvas *c, int y, int x0, int x1) {
     if (!grow((void **)&c->spans, &c->capspans, c->nspans + 1, sizeof *c->spans))
         return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for a painted region");
     c->spans[c->nspans++] = (pc_span){(int16_t)y, (int16_t)x0, (int16_t)x1};
+    return PC_DRAW_OK;
+}
+
+int pc_push_dot(pc_canvas *c, double x, double y, int color) {
+    pc_op *last = c->nops ? &c->ops[c->nops - 1] : NULL;
+    if (!last || last->kind != PC_OP_DOTS || last->color != color ||
+        last->clip != c->nclips - 1) {
+        last = pc_push_op(c, PC_OP_DOTS, color);
+        if (!last) return PC_DRAW_ENOMEM;
+        last->first = (uint32_t)c->ndots;
+    } else {
+        c->dirty = 1;
+        c->version++;
+    }
+    if (c->ndots >= UINT32_MAX ||
+        !grow((void **)&c->dots, &c->capdots, c->ndots + 1, sizeof *c->dots))
+        return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for the display list");
+    c->dots[c->ndots++] = (pc_xy){x, y};
+    last->count++;
     return PC_DRAW_OK;
 }
 

@@ -26,13 +26,13 @@ typedef struct { uint8_t r, g, b; } pc_rgb;
 
 typedef enum {
     PC_OP_CLEAR,     /* fill the clip rectangle with colour (CLS, VIEW fill) */
-    PC_OP_DOT,       /* pset/preset: x1,y1 */
+    PC_OP_DOTS,      /* a run of PSET/PRESET dots of one colour: dots[first .. first+count) */
     PC_OP_LINE,      /* x1,y1 - x2,y2 */
     PC_OP_BOX,       /* outline of the box with corners x1,y1 and x2,y2 */
     PC_OP_FILLBOX,   /* filled box */
     PC_OP_ARC,       /* centre x1,y1, radii rx,ry; angles a0..a1 (radians, counter-clockwise
                         on screen); flags: PC_ARC_FULL, PC_ARC_RADIUS0, PC_ARC_RADIUS1 */
-    PC_OP_FILL       /* a PAINTed region: spans[span_first .. span_first+span_count) */
+    PC_OP_FILL       /* a PAINTed region: spans[first .. first+count) */
 } pc_op_kind;
 
 enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
@@ -45,8 +45,11 @@ typedef struct {
     uint16_t clip;        /* index into pc_canvas.clips */
     double x1, y1, x2, y2;   /* double: a float would move some dots across a pixel edge */
     double rx, ry, a0, a1;
-    uint32_t span_first, span_count;
+    uint32_t first, count;   /* DOTS: into dots[]; FILL: into spans[] */
 } pc_op;
+
+/* A dot of a DOTS run, in screen coordinates (16 bytes a dot: scripts plot millions). */
+typedef struct { double x, y; } pc_xy;
 
 /* One horizontal run of a painted region: pixels x0..x1 inclusive on row y. */
 typedef struct { int16_t y, x0, x1; } pc_span;
@@ -76,6 +79,7 @@ typedef struct pc_canvas {
     /* display list */
     pc_op *ops; size_t nops, capops;
     pc_span *spans; size_t nspans, capspans;
+    pc_xy *dots; size_t ndots, capdots;
     pc_rect *clips; size_t nclips, capclips;
 
     int dirty;              /* something drawn since the last save */

@@ -14,6 +14,8 @@ int pc_check_color(pc_canvas *c, int *color, int dflt);
 
 pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color);
 int pc_push_span(pc_canvas *c, int y, int x0, int x1);
+/* Append a dot to the DOTS run at the end of the list, or start a run (new colour or clip). */
+int pc_push_dot(pc_canvas *c, double x, double y, int color);
 int pc_push_clip(pc_canvas *c);
 void pc_reset_cursor(pc_canvas *c);
 

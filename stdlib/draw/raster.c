@@ -45,10 +45,8 @@ static int dot(pc_canvas *c, double x, double y, int color, int dflt) {
     double sx, sy;
     pc_world_to_screen(c, x, y, &sx, &sy);
     pc_plot(c, (int)px(sx), (int)px(sy), color);
-    pc_op *op = pc_push_op(c, PC_OP_DOT, color);
-    if (!op) return PC_DRAW_ENOMEM;
-    op->x1 = sx;
-    op->y1 = sy;
+    ok = pc_push_dot(c, sx, sy, color);
+    if (ok != PC_DRAW_OK) return ok;
     set_cursor(c, x, y);
     return PC_DRAW_OK;
 }
@@ -199,7 +197,7 @@ int pc_fill_view(pc_canvas *c, int color) {
 int pc_cls(pc_canvas *c) {
     const pc_rect *v = &c->view;
     if (v->x0 == 0 && v->y0 == 0 && v->x1 == c->width - 1 && v->y1 == c->height - 1) {
-        c->nops = c->nspans = 0;
+        c->nops = c->nspans = c->ndots = 0;
         c->nclips = 0;
         pc_push_clip(c);
         memset(c->pixels, c->bg, (size_t)c->width * c->height);
@@ -372,7 +370,7 @@ done:
     pc_op *op = pc_push_op(c, PC_OP_FILL, color);
     if (!op) return PC_DRAW_ENOMEM;
     op->x1 = fx; op->y1 = fy;
-    op->span_first = first;
-    op->span_count = (uint32_t)(c->nspans - first);
+    op->first = first;
+    op->count = (uint32_t)(c->nspans - first);
     return PC_DRAW_OK;
 }

@@ -5,7 +5,7 @@
  * drawn centred at (x + 0.5, y + 0.5).  Strokes are 1 pixel wide with square caps, like the
  * pixels at the ends of a rasterised line.  Numbers have at most two decimals.
  *
- *   runs of DOTs       consecutive dots of one colour and clip, each within DENSE px of the
+ *   DOTS runs          consecutive dots of one colour and clip, each within DENSE px of the
  *                      previous, become one polyline <path> (points closer than TOL px to the
  *                      polyline are dropped: a million dots on an oval give a few hundred
  *                      vertices).  Dots with no dense neighbour are exact 1x1 pixel squares,
@@ -362,18 +362,18 @@ static void emit_polyline(svgw *w, int color, double width) {
     d_end(w);
 }
 
-/* One dense subrun ops[i0..i1): a polyline, or an isolated dot if it has no extent. */
-static void dense_subrun(svgw *w, const pc_op *ops, size_t i0, size_t i1, pc_rect clip) {
+/* One dense subrun d[0..n): a polyline, or an isolated dot if it has no extent. */
+static void dense_subrun(svgw *w, const pc_xy *d, size_t n, int color, pc_rect clip) {
     sleeve s;
-    sleeve_start(w, &s, ops[i0].x1 + 0.5, ops[i0].y1 + 0.5);
-    for (size_t i = i0 + 1; i < i1; i++) sleeve_add(w, &s, ops[i].x1 + 0.5, ops[i].y1 + 0.5);
+    sleeve_start(w, &s, d[0].x + 0.5, d[0].y + 0.5);
+    for (size_t i = 1; i < n; i++) sleeve_add(w, &s, d[i].x + 0.5, d[i].y + 0.5);
     sleeve_end(w, &s);
     if (w->nomem) return;
     int extent = w->npts > 2 ||
                  (w->npts == 2 && hypot((double)(w->pts[1].x - w->pts[0].x),
                                         (double)(w->pts[1].y - w->pts[0].y)) > TOL * 100);
-    if (extent) emit_polyline(w, ops[i0].color, 1);
-    else add_dot(w, ops[i0].x1, ops[i0].y1, ops[i0].color, clip);
+    if (extent) emit_polyline(w, color, 1);
+    else add_dot(w, d[0].x, d[0].y, color, clip);
 }
 
 static int far_outside(double x, double y, pc_rect r) {
@@ -381,17 +381,20 @@ static int far_outside(double x, double y, pc_rect r) {
     return x < r.x0 - MARGIN || x > r.x1 + 1 + MARGIN || y < r.y0 - MARGIN || y > r.y1 + 1 + MARGIN;
 }
 
-static void emit_dots(svgw *w, const pc_op *ops, size_t n) {
-    pc_rect clip = clip_of(w, &ops[0]);
-    size_t i = 0;
+/* A DOTS run: split where consecutive dots are further apart than DENSE. */
+static void emit_dots(svgw *w, const pc_op *op) {
+    pc_rect clip = clip_of(w, op);
+    if ((size_t)op->first + op->count > w->c->ndots) return;
+    const pc_xy *d = w->c->dots + op->first;
+    size_t n = op->count, i = 0;
     while (i < n) {
-        if (far_outside(ops[i].x1 + 0.5, ops[i].y1 + 0.5, clip)) { i++; continue; }
+        if (far_outside(d[i].x + 0.5, d[i].y + 0.5, clip)) { i++; continue; }
         size_t j = i + 1;
-        while (j < n && hypot(ops[j].x1 - ops[j - 1].x1, ops[j].y1 - ops[j - 1].y1) <= DENSE &&
-               !far_outside(ops[j].x1 + 0.5, ops[j].y1 + 0.5, clip))
+        while (j < n && hypot(d[j].x - d[j - 1].x, d[j].y - d[j - 1].y) <= DENSE &&
+               !far_outside(d[j].x + 0.5, d[j].y + 0.5, clip))
             j++;
-        if (j - i == 1) add_dot(w, ops[i].x1, ops[i].y1, ops[i].color, clip);
-        else dense_subrun(w, ops, i, j, clip);
+        if (j - i == 1) add_dot(w, d[i].x, d[i].y, op->color, clip);
+        else dense_subrun(w, d + i, j - i, op->color, clip);
         i = j;
     }
 }
@@ -603,10 +606,10 @@ static void emit_arc(svgw *w, const pc_op *op) {
  * hugging the pixel it follows.  Directions: 0 +x, 1 +y, 2 -x, 3 -y. */
 static void emit_fill(svgw *w, const pc_op *op) {
     const pc_canvas *c = w->c;
-    if (op->span_count == 0 || (size_t)op->span_first + op->span_count > c->nspans) return;
-    const pc_span *sp = c->spans + op->span_first;
+    if (op->count == 0 || (size_t)op->first + op->count > c->nspans) return;
+    const pc_span *sp = c->spans + op->first;
     long minx = sp[0].x0, maxx = sp[0].x1, miny = sp[0].y, maxy = sp[0].y;
-    for (uint32_t i = 1; i < op->span_count; i++) {
+    for (uint32_t i = 1; i < op->count; i++) {
         if (sp[i].x0 < minx) minx = sp[i].x0;
         if (sp[i].x1 > maxx) maxx = sp[i].x1;
         if (sp[i].y < miny) miny = sp[i].y;
@@ -616,7 +619,7 @@ static void emit_fill(svgw *w, const pc_op *op) {
     long W = maxx - minx + 3, H = maxy - miny + 3;
     unsigned char *m = calloc((size_t)W * H, 1);
     if (!m) { w->nomem = 1; return; }
-    for (uint32_t i = 0; i < op->span_count; i++)
+    for (uint32_t i = 0; i < op->count; i++)
         if (sp[i].x1 >= sp[i].x0)
             memset(m + (size_t)(sp[i].y - miny + 1) * W + (sp[i].x0 - minx + 1), 1,
                    (size_t)(sp[i].x1 - sp[i].x0 + 1));
@@ -693,12 +696,13 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
         const pc_op *op = &c->ops[i];
         enter_clip(&w, op);
         size_t j = i + 1;
-        if (op->kind == PC_OP_DOT || op->kind == PC_OP_LINE) {
+        if (op->kind == PC_OP_DOTS) {
+            emit_dots(&w, op);
+        } else if (op->kind == PC_OP_LINE) {
             while (j < c->nops && c->ops[j].kind == op->kind && c->ops[j].color == op->color &&
                    c->ops[j].clip == op->clip)
                 j++;
-            if (op->kind == PC_OP_DOT) emit_dots(&w, op, j - i);
-            else emit_lines(&w, op, j - i);
+            emit_lines(&w, op, j - i);
         } else if (is_brush(op)) {
             while (j < c->nops && is_brush(&c->ops[j]) && c->ops[j].color == op->color &&
                    c->ops[j].rx == op->rx && c->ops[j].clip == op->clip)

@@ -269,9 +269,9 @@ static void test_paint_enclosed_region(void **state) {
     /* the region is recorded as 4 spans of 6 pixels */
     const pc_op *op = &c->ops[c->nops - 1];
     assert_int_equal(op->kind, PC_OP_FILL);
-    assert_int_equal(op->span_count, 4);
-    for (uint32_t i = 0; i < op->span_count; i++) {
-        const pc_span *s = &c->spans[op->span_first + i];
+    assert_int_equal(op->count, 4);
+    for (uint32_t i = 0; i < op->count; i++) {
+        const pc_span *s = &c->spans[op->first + i];
         assert_int_equal(s->x0, 3);
         assert_int_equal(s->x1, 8);
     }
@@ -377,6 +377,34 @@ static void test_view_and_point(void **state) {
     pc_canvas_free(c);
 }
 
+/* Dots of one colour share one DOTS operation (16 bytes a dot); a new colour, another
+ * operation or a VIEW change starts a new run. */
+static void test_dot_runs(void **state) {
+    (void)state;
+    pc_canvas *c = small(10, 10);
+    for (int i = 0; i < 5; i++) pc_pset(c, i, 1, 2);
+    pc_preset(c, 7.25, 3.5, 2);        /* same colour: same run, fractional position kept */
+    assert_int_equal(c->nops, 1);
+    assert_int_equal(c->ops[0].kind, PC_OP_DOTS);
+    assert_int_equal(c->ops[0].first, 0);
+    assert_int_equal(c->ops[0].count, 6);
+    assert_true(c->dots[5].x == 7.25 && c->dots[5].y == 3.5);
+    pc_pset(c, 1, 2, 3);               /* new colour */
+    pc_line(c, 0, 0, 1, 1, 3);
+    pc_pset(c, 2, 2, 3);               /* after a line: a new run */
+    pc_view(c, 1, 1, 8, 8, -1, -1, 0);
+    pc_pset(c, 3, 3, 3);               /* new clip: a new run */
+    assert_int_equal(c->nops, 5);
+    assert_int_equal(c->ops[1].count, 1);
+    assert_int_equal(c->ops[3].first, 7);
+    assert_int_equal(c->ops[4].clip, c->nclips - 1);
+    assert_int_equal(c->ndots, 9);
+    uint64_t v = c->version;
+    pc_pset(c, 4, 4, 3);               /* appending still counts as a change of the picture */
+    assert_true(c->version > v);
+    pc_canvas_free(c);
+}
+
 static void test_cls_and_display_list(void **state) {
     (void)state;
     pc_canvas *c = small(10, 10);
@@ -386,11 +414,12 @@ static void test_cls_and_display_list(void **state) {
     pc_circle(c, 5, 5, 2, 3, NAN, NAN, NAN);
     assert_true(c->dirty);
     assert_int_equal(c->nops, 3);
-    assert_int_equal(c->ops[0].kind, PC_OP_DOT);
+    assert_int_equal(c->ops[0].kind, PC_OP_DOTS);
     assert_int_equal(c->ops[1].kind, PC_OP_LINE);
     assert_true(c->ops[1].x2 == 3 && c->ops[1].y2 == 3);
     pc_cls(c);
     assert_int_equal(c->nops, 0);
+    assert_int_equal(c->ndots, 0);
     assert_int_equal(count(c, 0), 100);
     /* after CLS the cursor is the centre of the screen */
     assert_true(c->last_x == 4.5 && c->last_y == 4.5);
@@ -425,6 +454,7 @@ int main(void) {
         cmocka_unit_test(test_clipping),
         cmocka_unit_test(test_window_y_up),
         cmocka_unit_test(test_view_and_point),
+        cmocka_unit_test(test_dot_runs),
         cmocka_unit_test(test_cls_and_display_list),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
