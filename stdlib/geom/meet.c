@@ -33,15 +33,17 @@ int pc_meet(int n, const double *a1, const double *a2, const double *b1, const d
     double on_tol = PC_ON_TOL * scale + roundoff;
     if (residual) *residual = 0;
 
-    /* 2-D coordinates of u, v, w in an orthonormal frame (e1 along u, e2 in the plane) */
+    /* 2-D coordinates of the unit directions u/|u|, v/|v| and of w in an orthonormal frame
+     * (e1 along u, e2 in the plane).  Unit directions keep every cross product a sine times
+     * a length, so nothing overflows or underflows however large or small the figure. */
     double u2[2], v2[2], w2[2];
     int parallel;
     if (n == 2) {
-        u2[0] = u[0]; u2[1] = u[1];
-        v2[0] = v[0]; v2[1] = v[1];
+        u2[0] = u[0] / lu; u2[1] = u[1] / lu;
+        v2[0] = v[0] / lv; v2[1] = v[1] / lv;
         w2[0] = w[0]; w2[1] = w[1];
-        parallel = fabs(pc_cross2(u2, v2)) <= PC_DEGEN_TOL * lu * lv;
-        if (parallel && fabs(pc_cross2(u2, w2)) <= on_tol * lu) return PC_ESAME_LINE;
+        parallel = fabs(pc_cross2(u2, v2)) <= PC_DEGEN_TOL;
+        if (parallel && fabs(pc_cross2(u2, w2)) <= on_tol) return PC_ESAME_LINE;
     } else {
         double e1[PC_MAXDIM], e2[PC_MAXDIM], r[PC_MAXDIM];
         for (int i = 0; i < n; i++) e1[i] = u[i] / lu;
@@ -56,8 +58,8 @@ int pc_meet(int n, const double *a1, const double *a2, const double *b1, const d
             if (pc_norm(n, r) <= on_tol) return PC_ESAME_LINE;
         } else {
             for (int i = 0; i < n; i++) e2[i] /= le2;
-            u2[0] = lu; u2[1] = 0;
-            v2[0] = ve1; v2[1] = pc_dot(n, v, e2);
+            u2[0] = 1; u2[1] = 0;
+            v2[0] = ve1 / lv; v2[1] = pc_dot(n, v, e2) / lv;
             w2[0] = pc_dot(n, w, e1); w2[1] = pc_dot(n, w, e2);
             /* the part of w outside the plane of u, v is the common perpendicular */
             for (int i = 0; i < n; i++) r[i] = w[i] - w2[0] * e1[i] - w2[1] * e2[i];
@@ -75,9 +77,10 @@ int pc_meet(int n, const double *a1, const double *a2, const double *b1, const d
         if (mu) *mu = INFINITY;
         return PC_IMPROPER;
     }
+    /* with unit directions: lambda = (w x v)/(u x v) = (w x v2)/(den |u|), and likewise mu */
     double den = pc_cross2(u2, v2);
-    double lam = pc_cross2(w2, v2) / den;
-    double m = pc_cross2(w2, u2) / den;
+    double lam = pc_cross2(w2, v2) / (den * lu);
+    double m = pc_cross2(w2, u2) / (den * lv);
     for (int i = 0; i < n; i++) out[i] = a1[i] + u[i] * lam;
     out[n] = 1.0;
     if (lambda) *lambda = lam;

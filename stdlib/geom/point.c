@@ -126,9 +126,13 @@ int pc_angle(int n, const double *u, const double *v, double *out) {
 }
 
 int pc_foot(int n, const double *c, const double *a, const double *b, double *out) {
-    double bb = pc_sigma(n, a, b, b);
-    if (bb == 0) return PC_ECOINCIDENT;
-    double t = pc_sigma(n, a, b, c) / bb;
+    double len = pc_dist(n, a, b);
+    if (len == 0) return PC_ECOINCIDENT;
+    /* t = Σ^A_BC / Σ^A_BB, computed as ((C - A)·û)/|AB| with the unit û = (B - A)/|AB| so
+     * that neither sum of squares overflows or underflows for very large or small figures */
+    double t = 0;
+    for (int i = 0; i < n; i++) t += (c[i] - a[i]) * ((b[i] - a[i]) / len);
+    t /= len;
     for (int i = 0; i < n; i++) out[i] = a[i] + (b[i] - a[i]) * t;
     return PC_OK;
 }

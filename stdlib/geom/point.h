@@ -60,7 +60,8 @@ void pc_lerp(int n, const double *a, const double *b, double t, double *out);
 double pc_dot(int n, const double *u, const double *v);
 double pc_norm(int n, const double *u);
 double pc_dist(int n, const double *a, const double *b);
-/* Metric operator of three points (§1.4, Fig. 1.11): Σ^A_BC = (B - A)·(C - A). */
+/* Metric operator of three points (§1.4, Fig. 1.11): Σ^A_BC = AH·AB = (B - A)·(C - A), H the
+ * foot of the perpendicular from C to AB (the printed "AN·AB" is a misprint, digest §9). */
 double pc_sigma(int n, const double *a, const double *b, const double *c);
 int pc_unit(int n, const double *u, double *out);               /* PC_EZERO for 0 */
 void pc_perp2(const double *u, double *out);                    /* (-y, x): +90° */

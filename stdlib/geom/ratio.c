@@ -12,9 +12,10 @@ static double maxabs(int n, const double *a) {
 
 /* Is direction z parallel to the line direction u (both non-zero)? */
 static int parallel(int n, const double *u, const double *z) {
-    double lu = pc_norm(n, u), lz = pc_norm(n, z), r[PC_MAXDIM];
-    double c = pc_dot(n, u, z) / (lu * lu);
-    for (int i = 0; i < n; i++) r[i] = z[i] - c * u[i];
+    double lu = pc_norm(n, u), lz = pc_norm(n, z), uh[PC_MAXDIM], r[PC_MAXDIM];
+    for (int i = 0; i < n; i++) uh[i] = u[i] / lu;      /* unit: no |u|² to overflow */
+    double c = pc_dot(n, uh, z);
+    for (int i = 0; i < n; i++) r[i] = z[i] - c * uh[i];
     return pc_norm(n, r) <= PC_ON_TOL * lz;
 }
 
@@ -46,7 +47,11 @@ int pc_sr(int n, const double *x, const double *y, const double *z, double *lamb
         *lambda = INFINITY;                   /* Z = Y */
         return PC_OK;
     }
-    double lam = pc_dot(n, e, d) / pc_dot(n, d, d);
+    /* λ = (XZ·ZY)/(ZY·ZY), with ZY divided by its length first: the plain dot products
+     * overflow (or underflow to 0/0) for coordinates beyond about 1e154 (or below 1e-154) */
+    double dh[PC_MAXDIM];
+    for (int i = 0; i < n; i++) dh[i] = d[i] / ld;
+    double lam = pc_dot(n, e, dh) / ld;
     /* collinearity: XZ must be a multiple of ZY */
     double r[PC_MAXDIM];
     for (int i = 0; i < n; i++) r[i] = e[i] - lam * d[i];

@@ -38,7 +38,9 @@ double pc_simplex_measure(const pc_simplex *s);
 /* S- and V-theorem (§1.3.3-1.3.4): the signed ratio of the measure of the k-simplex pts
  * (k+1 rows of n, lying in the simplex's flat) to the simplex's own (vertices in the order
  * given, initial point first), as the determinant of the points' parameters bordered by a
- * column of 1s.  *residual: largest distance of a point from the flat. */
+ * column of 1s.  The printed V-theorem (L501) divides that determinant by itself; the ratio
+ * is the determinant alone, as the text says (misprint corrected, digest §9).
+ * *residual: largest distance of a point from the flat. */
 double pc_simplex_ratio(const pc_simplex *s, const double *pts, double *residual);
 
 #endif

@@ -130,6 +130,19 @@ static void test_meet_cases(void **state) {
     double h1[2] = {1e6, 1e6}, h2[2] = {1e6 + 1, 1e6}, h3[2] = {1e6, 1e6 + 1}, h4[2] = {1e6 + 1, 1e6 + 1.001};
     assert_int_equal(pc_meet(2, h1, h2, h3, h4, K, &l, NULL, NULL), PC_OK);
     NEARE(K[0], 1e6 - 1000, 1e-9); NEARE(K[1], 1e6, 1e-12);
+    /* the diagonals of a square of side 2k meet at (k, k) whatever the scale: products of
+     * two coordinates overflow at 1e200 and underflow at 1e-200, the meet must not */
+    for (double k = 1e-200; k < 1e201; k *= 1e200) {
+        double a2[2] = {0, 0}, b2[2] = {2 * k, 2 * k}, c2[2] = {0, 2 * k}, d2[2] = {2 * k, 0};
+        assert_int_equal(pc_meet(2, a2, b2, c2, d2, K, &l, &m, NULL), PC_OK);
+        NEAR(K[0] / k, 1); NEAR(K[1] / k, 1); NEAR(l, 0.5); NEAR(m, 0.5);
+        double a3[3] = {0, 0, k}, b3[3] = {2 * k, 2 * k, k}, c3[3] = {0, 2 * k, k},
+               d3[3] = {2 * k, 0, k};
+        assert_int_equal(pc_meet(3, a3, b3, c3, d3, K, &l, &m, NULL), PC_OK);
+        NEAR(K[0] / k, 1); NEAR(K[1] / k, 1); NEAR(K[2] / k, 1); NEAR(l, 0.5); NEAR(m, 0.5);
+        double e2[2] = {0, k}, f2[2] = {2 * k, 3 * k};           /* parallel to a2b2 */
+        assert_int_equal(pc_meet(2, a2, b2, e2, f2, K, NULL, NULL, NULL), PC_IMPROPER);
+    }
     /* 3-D: two lines in the plane z = x meet; skew lines report their distance */
     double p1[3] = {0, 0, 0}, p2[3] = {2, 2, 2}, p3[3] = {0, 2, 0}, p4[3] = {2, 0, 2};
     assert_int_equal(pc_meet(3, p1, p2, p3, p4, K, &l, &m, &res), PC_OK);

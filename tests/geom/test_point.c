@@ -57,8 +57,10 @@ static void test_sigma(void **state) {
     NEAR(pc_sigma(2, A, B, B), c * c);                 /* 2: Σ^A_BB = AB² */
     NEAR(pc_sigma(2, A, A, B), 0);                     /* 3 */
     NEAR(pc_sigma(2, B, A, B), 0);
-    NEAR(pc_sigma(2, A, B, C) + pc_sigma(2, B, A, C), c * c);  /* 4: Σ^A + Σ^B = AB² */
-    (void)sB; (void)sC;
+    NEAR(sA + sB, c * c);                              /* 4: Σ^A + Σ^B = AB², and round */
+    NEAR(sB + sC, a * a);                              /*    the triangle: Σ^B + Σ^C = BC² */
+    NEAR(sA + sC, b * b);                              /*    Σ^A + Σ^C = CA² */
+    NEAR(sB, 12); NEAR(sC, 6);                         /* BA·BH = 4·3, CA·CB = (-1,-3)·(3,-3) */
     /* 5: right angle at a vertex iff Σ there is 0 */
     double R[2] = {4, 5};
     NEAR(pc_sigma(2, B, A, R), 0);
@@ -67,6 +69,13 @@ static void test_sigma(void **state) {
     assert_int_equal(pc_foot(2, C, A, B, H), PC_OK);
     NEAR(H[0], 1); NEAR(H[1], 0);
     assert_int_equal(pc_foot(2, C, A, A, H), PC_ECOINCIDENT);
+    /* the same triangle scaled by 1e200 and by 1e-200: the squared lengths would overflow
+     * or underflow, the foot must not (it scales with the triangle) */
+    for (double k = 1e-200; k < 1e201; k *= 1e200) {
+        double Ak[2] = {0, 0}, Bk[2] = {4 * k, 0}, Ck[2] = {k, 3 * k};
+        assert_int_equal(pc_foot(2, Ck, Ak, Bk, H), PC_OK);
+        NEAR(H[0] / k, 1); NEAR(H[1] / k, 0);
+    }
     /* 3-D: AB ⟂ AC */
     double A3[3] = {1, 2, 0}, B3[3] = {4, 6, 0}, C3[3] = {1, 2, 5};
     NEAR(pc_sigma(3, A3, B3, C3), 0);
@@ -140,6 +149,15 @@ static void test_simple_ratio(void **state) {
     assert_int_equal(pc_sr(2, A, A, Ah, &r), PC_ECOINCIDENT);
     double W[3] = {4, 2, 2};
     assert_int_equal(pc_sr(2, A, B, W, &r), PC_EWEIGHT);
+    /* the ratio is scale-free: (XYZ) = -2 for X = 0, Y = k, Z = 2k whether k is 1e-300 or
+     * 1e200 (a dot product of the differences would underflow or overflow to 0/0) */
+    for (double k = 1e-300; k < 1e201; k *= 1e250) {
+        double Xk[2] = {0, 0}, Yk[2] = {k, 0}, Zk[3] = {2 * k, 0, 1};
+        assert_int_equal(pc_sr(2, Xk, Yk, Zk, &r), PC_OK);
+        NEAR(r, -2);
+        double Zoff[3] = {2 * k, k, 1};
+        assert_int_equal(pc_sr(2, Xk, Yk, Zoff, &r), PC_ENOTCOLLINEAR);
+    }
     /* "if AP/AC = t then (ACP) = t/t̄" (ch. 3) */
     double t = 0.3, P[3] = {6 * t, 3 * t, 1};
     pc_sr(2, A, B, P, &r); NEAR(r, t / (1 - t));
