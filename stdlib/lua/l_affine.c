@@ -59,14 +59,18 @@ static int read_points(lua_State *L, int arg, const char *what, double *out, int
     return m;
 }
 
-/* affine(src, dst), the __call of the affine table (which moves to the top of the stack). */
+/* affine(src, dst), the __call of the affine table: the table itself is dropped, so that
+ * src and dst are arguments #1 and #2 and a missing dst reads as nil. */
 static int l_affine(lua_State *L) {
-    lua_rotate(L, 1, -1);
+    lua_remove(L, 1);
     double src[(PC_MAXDIM + 1) * PC_MAXDIM], dst[(PC_MAXDIM + 1) * PC_MAXDIM];
     int nin, nout;
     int m = read_points(L, 1, "source points", src, &nin);
     int m2 = read_points(L, 2, "image points", dst, &nout);
-    if (m < 2 || m != nin + 1)
+    if (m < 2)
+        return pcl_error(L, "affine: argument #1 (source points) holds %d points; a map of n-D "
+                          "needs n + 1 (3 in the plane, 4 in space)", m);
+    if (m != nin + 1)
         return pcl_error(L, "affine: argument #1 (source points) holds %d %d-D points; a map of "
                           "%d-D needs %d (dimension + 1)", m, nin, nin, nin + 1);
     if (m2 != m)
@@ -151,13 +155,7 @@ static int l_apply(lua_State *L) {
         return pcl_error(L, "%s: takes a %d-D point or vector, or %d coordinates; got %s", pcl_fname(L),
                           nin, nin, m ? luaL_typename(L, 1) : "nothing");
     double in[PC_MAXDIM + 1];
-    for (int i = 0; i < nin; i++) {
-        int isnum;
-        in[i] = lua_tonumberx(L, i + 1, &isnum);
-        if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER || !isfinite(in[i]))
-            return pcl_error(L, "%s: argument #%d must be a finite number, got %s", pcl_fname(L),
-                              i + 1, luaL_typename(L, i + 1));
-    }
+    for (int i = 0; i < nin; i++) in[i] = pcl_checkfinite(L, i + 1, NULL);
     in[nin] = 1.0;
     pcl_value *r = pcl_newvalue(L, f->nout);
     pc_affine_apply(f, in, r->h);

@@ -458,8 +458,8 @@ static int l_newindex(lua_State *L) {
 /* lerp(A, B, t) = (B - A) t + A (Fig. 1.1), for points, vectors or numbers. */
 static int l_lerp(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    int isnum;
-    double t = lua_tonumberx(L, 3, &isnum);
+    int isnum = lua_type(L, 3) == LUA_TNUMBER;          /* no string coercion, as in P() */
+    double t = isnum ? lua_tonumber(L, 3) : 0;
     if (a && b && isnum && a->n == b->n && isfinite(t)) {       /* the hot path */
         int n = a->n;
         pcl_value *r = newpt(L, n);
@@ -504,15 +504,12 @@ static int l_mid(lua_State *L) {
     return 1;
 }
 
-/* dist(A, B) between points, or dist(v), the length of a vector. */
+/* dist(A, B) between points, or dist(v), the length of a vector.  The form follows the
+ * first argument, so that dist(A, nil) names the missing argument #2. */
 static int l_dist(lua_State *L) {
     double a[PC_MAXDIM], b[PC_MAXDIM];
-    if (lua_isnoneornil(L, 2)) {
-        pcl_value *p = checkval(L, 1, "v");
-        if (pc_kind_of(p->h[p->n]) != PC_KIND_VECTOR)
-            return pcl_error(L, "%s: with one argument it must be a vector (its length), got %s; "
-                              "for a distance pass two points, dist(A, B)", pcl_fname(L),
-                              push_value_text(L, p));
+    pcl_value *p = topt(L, 1);
+    if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
         int n = vec_of(L, p, 1, "v", 0, 0, a);
         lua_pushnumber(L, pc_norm(n, a));
         return 1;
@@ -569,11 +566,15 @@ static int l_perp(lua_State *L) {
 }
 
 /* angle(A, B, C): the angle at A of triangle ABC; angle(u, v): between two vectors.
- * Unsigned, in radians, in [0, pi]. */
+ * Unsigned, in radians, in [0, pi].  The form follows the first argument (a vector or not),
+ * so that angle(A, B, nil) names the missing argument #3. */
 static int l_angle(lua_State *L) {
     double a[PC_MAXDIM], b[PC_MAXDIM], c[PC_MAXDIM], ang;
     int n;
-    if (lua_isnoneornil(L, 3)) {
+    pcl_value *first = topt(L, 1);
+    int vectors = first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR
+                        : lua_isnoneornil(L, 3);
+    if (vectors) {
         n = checkvec(L, 1, "u", 0, 0, b);
         checkvec(L, 2, "v", n, 1, c);
     } else {
@@ -648,9 +649,8 @@ static int l_divide(lua_State *L) {
     double x[PC_MAXDIM], y[PC_MAXDIM];
     int n = checkloc(L, 1, "X", 0, 0, x);
     checkloc(L, 2, "Y", n, 1, y);
-    int isnum;
-    double lam = lua_tonumberx(L, 3, &isnum);
-    if (!isnum) pcl_argerror(L, 3, "lambda", "a number");
+    if (lua_type(L, 3) != LUA_TNUMBER) pcl_argerror(L, 3, "lambda", "a number");
+    double lam = lua_tonumber(L, 3);
     if (isnan(lam)) pcl_argerror(L, 3, "lambda", "a number, not NaN");
     double xh[PC_MAXDIM + 1], yh[PC_MAXDIM + 1];
     memcpy(xh, x, sizeof(double) * (size_t)n);

@@ -8,6 +8,7 @@
  *   S:ratio(P1, P2, P3)        S-/V-theorem: signed measure ratio of P1P2P3 to S, and a residual
  *   S[i], #S                   vertex i (1 = the initial point), number of vertices */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "pcl_point.h"
 #include "simplex.h"
@@ -84,13 +85,11 @@ static int l_call(lua_State *L) {
                           "barycentric parameters use S:bary)", pcl_fname(L), k, k, m);
     double p[PC_MAXDIM + 1];
     for (int i = 0; i < m; i++) {
-        int isnum;
-        p[i] = lua_tonumberx(L, i + 1, &isnum);
-        if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER || !isfinite(p[i])) {
-            const char *got = lua_type(L, i + 1) == LUA_TNUMBER ? "a non-finite number"
-                                                                 : luaL_typename(L, i + 1);
-            return pcl_error(L, "%s: argument #%d (parameter %d) must be a finite number, got %s",
-                              pcl_fname(L), i + 1, i + 1, got);
+        p[i] = lua_tonumber(L, i + 1);
+        if (lua_type(L, i + 1) != LUA_TNUMBER || !isfinite(p[i])) {
+            char what[24];                        /* the label only on the error path */
+            snprintf(what, sizeof what, "parameter %d", i + 1);
+            pcl_checkfinite(L, i + 1, what);
         }
     }
     pcl_value *r = pcl_newvalue(L, s->n);
