@@ -30,11 +30,14 @@ double pc_smooth_power(double n, double t) {
 int pc_hspline_init(pc_hspline *h, double n, double m, double t0) {
     if (!isfinite(n) || !isfinite(m) || !isfinite(t0)) return PC_TK_ENONFINITE;
     if (n <= 0 || m <= 0 || t0 <= 0 || t0 >= 1) return PC_TK_EDOMAIN;
+    double c1 = m / ((n - n * t0 + m * t0) * pow(t0, n - 1.0));
+    double c2 = (1.0 - c1 * pow(t0, n)) / pow(1.0 - t0, m);
+    if (!isfinite(c1) || !isfinite(c2)) return PC_TK_EDOMAIN;   /* t0^(n-1) or (1-t0)^m underflowed */
     h->n = n;
     h->m = m;
     h->t0 = t0;
-    h->c1 = m / ((n - n * t0 + m * t0) * pow(t0, n - 1.0));
-    h->c2 = (1.0 - h->c1 * pow(t0, n)) / pow(1.0 - t0, m);
+    h->c1 = c1;
+    h->c2 = c2;
     return PC_TK_OK;
 }
 
@@ -46,6 +49,12 @@ double pc_hspline_eval(const pc_hspline *h, double t) {
 double pc_hspline_deriv(const pc_hspline *h, double t) {
     if (t < h->t0) return h->n * h->c1 * pow(t, h->n - 1.0);
     return h->m * h->c2 * pow(1.0 - t, h->m - 1.0);
+}
+
+int pc_hspline_check(const pc_hspline *h, double t) {
+    if (t < 0 && h->n != floor(h->n)) return PC_TK_EDOMAIN;
+    if (t > 1 && h->m != floor(h->m)) return PC_TK_EDOMAIN;
+    return PC_TK_OK;
 }
 
 double pc_hspline_locus(double n, double m, double t0) {
@@ -75,4 +84,8 @@ double pc_gfun_eval(const pc_gfun *g, double t) {
     case PC_G_SINE: return pc_smooth_sine(t);
     case PC_G_LINEAR: default: return t;
     }
+}
+
+int pc_gfun_check(const pc_gfun *g, double t) {
+    return g->kind == PC_G_HALF ? pc_hspline_check(&g->h, t) : PC_TK_OK;
 }

@@ -1,7 +1,7 @@
 /* Smoothsteps: functions g on [0, 1] with g(0) = 0, g(1) = 1, g'(0) = g'(1) = 0, used to join
- * two curves smoothly (stepanov_examples.md §H rows 4-6).  All of them are defined for every
- * real t (outside [0, 1] the formulas extrapolate, as example 5 shows), except the clamps,
- * which are constant outside [0, 1]. */
+ * two curves smoothly (stepanov_examples.md §H rows 4-6).  Outside [0, 1] the formulas
+ * extrapolate, as example 5 shows, except the clamps, which are constant there; a power piece
+ * of fractional degree has no real value past its end (pc_hspline_check). */
 #ifndef PC_SMOOTH_H
 #define PC_SMOOTH_H
 
@@ -23,11 +23,17 @@ typedef struct {
     double c1, c2;     /* the coefficients above */
 } pc_hspline;
 
-/* PC_TK_EDOMAIN unless n > 0, m > 0, 0 < t0 < 1 (all finite); h is then untouched. */
+/* PC_TK_ENONFINITE for a NaN or infinite parameter; PC_TK_EDOMAIN unless n > 0, m > 0,
+ * 0 < t0 < 1, or when c1 or c2 overflows a double (degrees in the hundreds: t0^(n-1)
+ * underflows).  h is untouched on error. */
 int pc_hspline_init(pc_hspline *h, double n, double m, double t0);
 double pc_hspline_eval(const pc_hspline *h, double t);
 /* g'(t): n c1 t^(n-1) for t < t0, m c2 (1 - t)^(m-1) for t >= t0. */
 double pc_hspline_deriv(const pc_hspline *h, double t);
+/* Where the formulas extrapolate: t^n for t < 0 and (1 - t)^m for t > 1 are real only for a
+ * whole degree.  PC_TK_EDOMAIN when t < 0 and n is fractional, or t > 1 and m is (eval and
+ * deriv would give NaN there); PC_TK_OK otherwise. */
+int pc_hspline_check(const pc_hspline *h, double t);
 /* The locus of the junction points (example 8): v(t0) = m t0 / (n - n t0 + m t0). */
 double pc_hspline_locus(double n, double m, double t0);
 
@@ -48,5 +54,7 @@ typedef struct {
 } pc_gfun;
 
 double pc_gfun_eval(const pc_gfun *g, double t);
+/* pc_hspline_check for a half-spline, PC_TK_OK for the others (defined for every t). */
+int pc_gfun_check(const pc_gfun *g, double t);
 
 #endif

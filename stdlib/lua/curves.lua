@@ -30,6 +30,7 @@ local function shown(v)
     if math.type(v) == "integer" then return tostring(v) end
     return string.format("%.14g", v)
   end
+  if getmetatable(v) == "point" then return tostring(v) end   -- V(1, 1), not just "point"
   local mt = getmetatable(v)
   if type(mt) == "string" then return mt end
   if type(mt) == "table" and type(mt.__name) == "string" then return mt.__name end
@@ -249,11 +250,16 @@ end
 
 local NAN = 0 / 0
 
--- per-node numbers: a number (every node), a list (nil entries -> dflt), or nil (dflt)
+local huge = math.huge
+local function finite(x) return x == x and x ~= huge and x ~= -huge end
+
+-- per-node numbers: a number (every node), a list (nil entries -> dflt), or nil (dflt).
+-- The core reads NaN as "use the default", so a NaN or infinity given here is an error.
 local function pernode(s, name, k, dflt)
   local v = s[name]
   local out = {}
   if v == nil or type(v) == "number" then
+    if v ~= nil and not finite(v) then tk.fielderror("stroke", name, "a finite number", v, 4) end
     local x = v == nil and dflt or v
     for i = 1, k do out[i] = x end
     return out
@@ -262,7 +268,8 @@ local function pernode(s, name, k, dflt)
   for i = 1, k do
     local x = v[i]
     if x == nil then x = dflt
-    elseif type(x) ~= "number" then tk.fielderror("stroke", name .. "[" .. i .. "]", "a number", x, 4) end
+    elseif type(x) ~= "number" then tk.fielderror("stroke", name .. "[" .. i .. "]", "a number", x, 4)
+    elseif not finite(x) then tk.fielderror("stroke", name .. "[" .. i .. "]", "a finite number", x, 4) end
     out[i] = x
   end
   return out
@@ -328,8 +335,8 @@ function M.stroke(s)
     for i = 1, k do
       for j = 1, d do
         local v = cols[j][i]
-        if type(v) ~= "number" then
-          tk.fielderror(fn, ({ "x", "y", "z" })[j] .. "[" .. i .. "]", "a number", v)
+        if type(v) ~= "number" or not finite(v) then
+          tk.fielderror(fn, ({ "x", "y", "z" })[j] .. "[" .. i .. "]", "a finite number", v)
         end
         nodes[(i - 1) * d + j] = v
       end

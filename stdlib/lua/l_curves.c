@@ -82,33 +82,49 @@ static double lua_g(lua_State *L, double t) {
     double g = lua_tonumberx(L, -1, &isnum);
     if (!isnum) pcl_error(L, "curve: the smoothstep g must return a number, got %s",
                            luaL_typename(L, -1));
+    if (!isfinite(g)) {
+        const char *tt = tk_pushnum(L, t), *tg = tk_pushnum(L, g);
+        pcl_error(L, "curve: the smoothstep g must return a finite number, got g(%s) = %s", tt, tg);
+    }
     lua_pop(L, 1);
     return g;
 }
 
-/* Evaluate piece i (0-based) at t; the curve is at stack index 1. */
-static void eval_piece(lua_State *L, curve *c, int i, double t, double *out) {
+/* Evaluate piece i (0-based) at its own t; the curve is at stack index 1.  A half-spline of
+ * fractional degree has no value before its start (t < 0) or past its end (t > 1): the
+ * argument at idx (shown as #shown, whose value is the global parameter s) is then wrong,
+ * and must lie in [lo, hi]. */
+static void eval_piece(lua_State *L, curve *c, int i, double t, double *out, const char *fname,
+                       int idx, int shown, double lo, double hi) {
     pc_piece *pc = &pieces(c)[i];
-    if (c->lua_g) pc_qspline(c->d, pc->a, pc->p, pc->q, pc->b, t, lua_g(L, t), out);
-    else pc_piece_eval(c->d, pc, t, out);
+    if (c->lua_g) {
+        pc_qspline(c->d, pc->a, pc->p, pc->q, pc->b, t, lua_g(L, t), out);
+        return;
+    }
+    if (pc_gfun_check(&pc->g, t) != PC_TK_OK) {
+        int low = t < 0;
+        const char *deg = tk_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
+        const char *bound = tk_pushnum(L, low ? lo : hi);
+        lua_pushfstring(L, "%s %s (piece %d's half-spline has the fractional degree %s = %s and "
+                        "does not extrapolate)", low ? "at least" : "at most", bound, i + 1,
+                        low ? "n" : "m", deg);
+        tk_argerror_at(L, fname, idx, shown, "t", lua_tostring(L, -1));
+    }
+    pc_piece_eval(c->d, pc, t, out);
 }
 
 /* Evaluate at the global parameter: a stroke's s in [0, pieces] (piece floor(s), the first
  * and last pieces extrapolate), a spline2's t, a Fourier curve's u. */
-static void eval_global(lua_State *L, curve *c, double s, double *out) {
+static void eval_global(lua_State *L, curve *c, double s, double *out, const char *fname) {
     if (c->kind == KIND_FOURIER) {
         int m = c->n + 1;
         for (int k = 0; k < c->d; k++)
             out[k] = pc_fourier_eval(c->n, c->data + 2 * k * m, c->data + (2 * k + 1) * m, s);
         return;
     }
-    if (c->np == 1) {
-        eval_piece(L, c, 0, s, out);
-        return;
-    }
     double f = floor(s);
     int i = f < 0 ? 0 : (f > c->np - 1 ? c->np - 1 : (int)f);
-    eval_piece(L, c, i, s - i, out);
+    eval_piece(L, c, i, s - i, out, fname, 2, 1, 0, c->np);
 }
 
 static int push_coords(lua_State *L, int d, const double *x) {
@@ -119,7 +135,7 @@ static int push_coords(lua_State *L, int d, const double *x) {
 static int c_call(lua_State *L) {
     curve *c = checkcurve(L, 1, "curve");
     double x[PC_CURVE_MAXDIM];
-    eval_global(L, c, tk_checknum_m(L, kind_names[c->kind], 2, "t"), x);
+    eval_global(L, c, tk_checknum_m(L, kind_names[c->kind], 2, "t"), x, kind_names[c->kind]);
     tk_pushpoint(L, c->d, x);
     return 1;
 }
@@ -127,7 +143,7 @@ static int c_call(lua_State *L) {
 static int c_xy(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:xy");
     double x[PC_CURVE_MAXDIM];
-    eval_global(L, c, tk_checknum_m(L, "c:xy", 2, "t"), x);
+    eval_global(L, c, tk_checknum_m(L, "c:xy", 2, "t"), x, "c:xy");
     return push_coords(L, c->d, x);
 }
 
@@ -147,7 +163,7 @@ static int c_piece(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:piece");
     int i = check_piece(L, c, "c:piece", 2);
     double x[PC_CURVE_MAXDIM];
-    eval_piece(L, c, i, tk_checknum_m(L, "c:piece", 3, "t"), x);
+    eval_piece(L, c, i, tk_checknum_m(L, "c:piece", 3, "t"), x, "c:piece", 3, 2, 0, 1);
     tk_pushpoint(L, c->d, x);
     return 1;
 }
@@ -156,13 +172,14 @@ static int c_piece_xy(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:piece_xy");
     int i = check_piece(L, c, "c:piece_xy", 2);
     double x[PC_CURVE_MAXDIM];
-    eval_piece(L, c, i, tk_checknum_m(L, "c:piece_xy", 3, "t"), x);
+    eval_piece(L, c, i, tk_checknum_m(L, "c:piece_xy", 3, "t"), x, "c:piece_xy", 3, 2, 0, 1);
     return push_coords(L, c->d, x);
 }
 
 /* c:controls(i) -> A, P, Q, B: the quadrilateral of piece i */
 static int c_controls(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:controls");
+    if (c->kind == KIND_FOURIER) return pcl_error(L, "c:controls: a Fourier curve has no pieces");
     int i = c->np == 1 && lua_isnoneornil(L, 2) ? 0 : check_piece(L, c, "c:controls", 2);
     pc_piece *pc = &pieces(c)[i];
     tk_pushpoint(L, c->d, pc->a);
@@ -207,7 +224,8 @@ static int l_spline2(lua_State *L) {
     const char *fn = "spline2";
     double A[PC_MAXDIM], a[PC_MAXDIM], B[PC_MAXDIM], b[PC_MAXDIM];
     int d = pcl_checkloc(L, 1, "A", 0, 0, A);
-    if (d > PC_CURVE_MAXDIM) tk_argerror(L, fn, 1, "A", "a point of dimension 1..4");
+    if (d > PC_CURVE_MAXDIM)
+        return pcl_error(L, "%s: argument #1 (A) must be a point of dimension 1..4, got %d-D", fn, d);
     pcl_checkvec(L, 2, "a", d, 1, a);
     pcl_checkloc(L, 3, "B", d, 1, B);
     pcl_checkvec(L, 4, "b", d, 1, b);
@@ -347,8 +365,12 @@ static int l_fourier(lua_State *L) {
 static int c_coef(lua_State *L) {
     curve *c = checkcurve(L, 1, "c:coef");
     if (c->kind != KIND_FOURIER) return pcl_error(L, "c:coef: not a Fourier curve");
-    int k = (int)luaL_optinteger(L, 2, 1);
-    if (k < 1 || k > c->d) tk_argerror_at(L, "c:coef", 2, 1, "k", "a coordinate number");
+    int isint = 1;
+    lua_Integer k = lua_isnoneornil(L, 2) ? 1 : lua_tointegerx(L, 2, &isint);
+    if (!isint || k < 1 || k > c->d) {
+        lua_pushfstring(L, "a coordinate number 1..%d", c->d);
+        tk_argerror_at(L, "c:coef", 2, 1, "k", lua_tostring(L, -1));
+    }
     int m = c->n + 1;
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);

@@ -45,16 +45,45 @@ static void check_degree(lua_State *L, const char *fname, int arg, const char *w
     if (!(v > 0)) tk_argerror(L, fname, arg, what, "a positive number");
 }
 
+/* The half-spline (n, m, t0), its parameters already checked one by one; degrees in the
+ * hundreds make t0^(n-1) underflow, and the coefficients would be inf and NaN. */
+static void init_checked(lua_State *L, const char *fname, pc_hspline *h, double n, double m,
+                         double t0) {
+    if (pc_hspline_init(h, n, m, t0) == PC_TK_OK) return;
+    const char *tn = tk_pushnum(L, n), *tm = tk_pushnum(L, m), *tt = tk_pushnum(L, t0);
+    pcl_error(L, "%s: the degrees n = %s, m = %s are too large for t0 = %s: the coefficients "
+              "c1, c2 overflow a double", fname, tn, tm, tt);
+}
+
+/* g(t) at argument idx (shown as #shown), with the extrapolation domain of a fractional
+ * degree: t^n needs t >= 0, (1 - t)^m needs t <= 1 unless the degree is whole. */
+static double checked_t(lua_State *L, const pc_hspline *h, const char *fname, int idx,
+                        int shown) {
+    if (lua_type(L, idx) != LUA_TNUMBER) tk_argerror_at(L, fname, idx, shown, "t", "a number");
+    double t = lua_tonumber(L, idx);
+    if (!isfinite(t)) tk_argerror_at(L, fname, idx, shown, "t", "a finite number");
+    if (pc_hspline_check(h, t) != PC_TK_OK) {
+        int low = t < 0;
+        tk_pushnum(L, low ? h->n : h->m);
+        lua_pushfstring(L, "%s (the degree %s = %s is fractional, so the formula does not "
+                        "extrapolate past %s)", low ? "at least 0" : "at most 1", low ? "n" : "m",
+                        lua_tostring(L, -1), low ? "0" : "1");
+        tk_argerror_at(L, fname, idx, shown, "t", lua_tostring(L, -1));
+    }
+    return t;
+}
+
 static int l_power(lua_State *L) {
     const char *fn = "smooth.power";
     double n = tk_checknum(L, fn, 1, "n");
     check_degree(L, fn, 1, "n", n);
+    pc_hspline h;
+    init_checked(L, fn, &h, n, n, 0.5);
     if (!lua_isnoneornil(L, 2)) {
-        lua_pushnumber(L, pc_smooth_power(n, tk_checknum(L, fn, 2, "t")));
+        lua_pushnumber(L, pc_hspline_eval(&h, checked_t(L, &h, fn, 2, 2)));
         return 1;
     }
-    pc_hspline *h = newhs(L);
-    pc_hspline_init(h, n, n, 0.5);
+    *newhs(L) = h;
     return 1;
 }
 
@@ -66,9 +95,9 @@ static int l_half(lua_State *L) {
     check_degree(L, fn, 2, "m", m);
     if (!(t0 > 0 && t0 < 1)) tk_argerror(L, fn, 3, "t0", "a number in (0, 1)");
     pc_hspline h;
-    pc_hspline_init(&h, n, m, t0);
+    init_checked(L, fn, &h, n, m, t0);
     if (!lua_isnoneornil(L, 4)) {
-        lua_pushnumber(L, pc_hspline_eval(&h, tk_checknum(L, fn, 4, "t")));
+        lua_pushnumber(L, pc_hspline_eval(&h, checked_t(L, &h, fn, 4, 4)));
         return 1;
     }
     *newhs(L) = h;
@@ -103,13 +132,19 @@ static int l_clamp_qb(lua_State *L) {
 
 static int hs_call(lua_State *L) {
     pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
-    lua_pushnumber(L, pc_hspline_eval(h, tk_checknum_m(L, "halfspline", 2, "t")));
+    lua_pushnumber(L, pc_hspline_eval(h, checked_t(L, h, "halfspline", 2, 1)));
     return 1;
 }
 
 static int hs_deriv(lua_State *L) {
     pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
-    lua_pushnumber(L, pc_hspline_deriv(h, tk_checknum_m(L, "g:deriv", 2, "t")));
+    double t = checked_t(L, h, "g:deriv", 2, 1);
+    double d = pc_hspline_deriv(h, t);
+    /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
+    if (!isfinite(d))
+        return pcl_error(L, "g:deriv: the slope at t = %s is infinite (a degree below 1)",
+                         tk_pushnum(L, t));
+    lua_pushnumber(L, d);
     return 1;
 }
 

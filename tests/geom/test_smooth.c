@@ -111,6 +111,36 @@ static void test_hspline(void **state) {
     assert_true(h.c1 == 0);   /* untouched */
 }
 
+/* Outside [0, 1] the pieces extrapolate (example 5 shows the cubic doing so); with a
+ * fractional degree t^n (t < 0) or (1 - t)^m (t > 1) is not real, and the check says so
+ * instead of letting eval return NaN. */
+static void test_domain(void **state) {
+    (void)state;
+    pc_hspline h;
+    assert_int_equal(pc_hspline_init(&h, 2.5, 2, 0.5), PC_TK_OK);
+    assert_int_equal(pc_hspline_check(&h, -0.1), PC_TK_EDOMAIN);
+    assert_true(isnan(pc_hspline_eval(&h, -0.1)));   /* what the check guards against */
+    assert_int_equal(pc_hspline_check(&h, 0), PC_TK_OK);
+    assert_int_equal(pc_hspline_check(&h, 1.5), PC_TK_OK);   /* m = 2 is whole */
+    NEAR(pc_hspline_eval(&h, 1.5), 1 - h.c2 * 0.25, 1e-15);
+    assert_int_equal(pc_hspline_init(&h, 2, 3.5, 0.5), PC_TK_OK);
+    assert_int_equal(pc_hspline_check(&h, -2), PC_TK_OK);
+    NEAR(pc_hspline_eval(&h, -2), h.c1 * 4, 1e-15);
+    assert_int_equal(pc_hspline_check(&h, 1 + 1e-12), PC_TK_EDOMAIN);
+    pc_gfun g = {.kind = PC_G_HALF, .h = h};
+    assert_int_equal(pc_gfun_check(&g, 2), PC_TK_EDOMAIN);
+    g.kind = PC_G_CUBIC;
+    assert_int_equal(pc_gfun_check(&g, 2), PC_TK_OK);
+    /* degrees so large that t0^(n-1) underflows: c1 would be inf and c2 NaN */
+    pc_hspline big = {0};
+    assert_int_equal(pc_hspline_init(&big, 2000, 2, 0.5), PC_TK_EDOMAIN);
+    assert_int_equal(pc_hspline_init(&big, 2, 2000, 0.5), PC_TK_EDOMAIN);
+    assert_true(big.c1 == 0);   /* untouched */
+    assert_int_equal(pc_hspline_init(&big, 500, 2, 0.5), PC_TK_OK);   /* large but finite */
+    assert_true(isfinite(big.c1) && isfinite(big.c2));
+    NEAR(pc_hspline_eval(&big, 0.5), pc_hspline_locus(500, 2, 0.5), 1e-12);
+}
+
 static void test_clamp(void **state) {
     (void)state;
     NEAR(pc_smooth_clamp(-3), 0, 0);
@@ -148,7 +178,8 @@ static void test_gfun(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sine_cubic), cmocka_unit_test(test_power),
-        cmocka_unit_test(test_hspline),    cmocka_unit_test(test_clamp),
+        cmocka_unit_test(test_hspline),    cmocka_unit_test(test_domain),
+        cmocka_unit_test(test_clamp),
         cmocka_unit_test(test_gfun),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
