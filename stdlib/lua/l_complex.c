@@ -1,17 +1,17 @@
-/* Complex numbers and the Moebius map of the unit disc (stdlib/geom/cmap.h; examples 15, 16):
+/* Complex numbers and the Moebius map of the unit disc (stdlib/geom/cnum.h, cmap.h; examples 15, 16):
  *   complex(re [, im]) / complex(P)   a complex number (from a 2-D point: x + i y)
  *   complex.polar(r, u)  complex.exp(z)  complex.i
  *   z + w, z - w, z * w, z / w, -z, z ^ k (numbers mix in), z == w, tostring(z)
  *   z.re z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point()
  *   mobius(z0 [, phi])   w = e^(i phi) (z - z0) / (1 - conj(z0) z); the map M is called as
  *                        M(z) -> complex, M(x, y) -> x, y, M(P) -> P; M:inverse(); M.z0, M.phi
- * The arithmetic is C99's complex type; the Moebius map is the core's pc_mobius. */
+ * The arithmetic is the core's pc_cnum_arith, the Moebius map its pc_mobius. */
 #include <complex.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "pcl_tk.h"
 #include "cmap.h"
+#include "cnum.h"
 
 #define COMPLEX_MT "complex"
 #define MOBIUS_MT "mobius"
@@ -46,33 +46,21 @@ static int toc(lua_State *L, int idx, double complex *z) {
 static double complex checkc(lua_State *L, const char *fn, int idx, const char *what) {
     double complex z = 0;
     if (!toc(L, idx, &z)) tk_argerror(L, fn, idx, what, "a complex number or a number");
+    if (!isfinite(creal(z)) || !isfinite(cimag(z))) tk_argerror(L, fn, idx, what, "a finite number");
     return z;
 }
 
 static int arith(lua_State *L, char op) {
     static const char *names[] = {"complex +", "complex -", "complex *", "complex /", "complex ^"};
     const char *fn = names[op == '+' ? 0 : op == '-' ? 1 : op == '*' ? 2 : op == '/' ? 3 : 4];
-    double complex a = checkc(L, fn, 1, "left"), b = checkc(L, fn, 2, "right"), r;
-    switch (op) {
-    case '+': r = a + b; break;
-    case '-': r = a - b; break;
-    case '*': r = a * b; break;
-    case '/':
-        if (b == 0) return pcl_error(L, "complex /: division by zero");
-        r = a / b;
-        break;
-    default:
-        if (cimag(b) == 0 && creal(b) == floor(creal(b)) && fabs(creal(b)) <= 64) {
-            int k = (int)creal(b);   /* exact repeated multiplication for integer powers */
-            double complex base = k < 0 ? 1 / a : a;
-            if (k < 0 && a == 0) return pcl_error(L, "complex ^: division by zero");
-            r = 1;
-            for (int i = 0; i < abs(k); i++) r *= base;
-        } else {
-            r = cpow(a, b);
-        }
-    }
-    pushcc(L, r);
+    double complex a = checkc(L, fn, 1, "left"), b = checkc(L, fn, 2, "right");
+    pc_cnum r;
+    int st = pc_cnum_arith(op, (pc_cnum){creal(a), cimag(a)}, (pc_cnum){creal(b), cimag(b)}, &r);
+    if (st == PC_TK_EPOLE)
+        return pcl_error(L, "%s: division by zero%s", fn,
+                         op == '^' ? " (zero to a power whose real part is not positive)" : "");
+    if (st != PC_TK_OK) return pcl_error(L, "%s: the result overflows (not finite)", fn);
+    pushc(L, r.re, r.im);
     return 1;
 }
 static int c_add(lua_State *L) { return arith(L, '+'); }
@@ -115,7 +103,11 @@ static int c_arg(lua_State *L) {
     return 1;
 }
 static int c_exp(lua_State *L) {
-    pushcc(L, cexp(checkc(L, "complex.exp", 1, "z")));
+    double complex z = checkc(L, "complex.exp", 1, "z");
+    pc_cnum r;
+    if (pc_cnum_exp((pc_cnum){creal(z), cimag(z)}, &r) != PC_TK_OK)
+        return pcl_error(L, "complex.exp: the result overflows (not finite)");
+    pushc(L, r.re, r.im);
     return 1;
 }
 static int c_point(lua_State *L) {
@@ -157,11 +149,7 @@ static int c_new(lua_State *L) {
         return 1;
     }
     if (lua_type(L, 1) != LUA_TNUMBER) tk_argerror(L, fn, 1, "re", "a number or a 2-D point");
-    double re = lua_tonumber(L, 1), im = 0;
-    if (!lua_isnoneornil(L, 2)) {
-        if (lua_type(L, 2) != LUA_TNUMBER) tk_argerror(L, fn, 2, "im", "a number");
-        im = lua_tonumber(L, 2);
-    }
+    double re = tk_checknum(L, fn, 1, "re"), im = tk_optnum(L, fn, 2, "im", 0.0);
     pushc(L, re, im);
     return 1;
 }

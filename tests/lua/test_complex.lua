@@ -20,6 +20,16 @@ eq(complex(P(3, 4)), complex(3, 4), "complex(P)"); eq(complex(3, 4):point(), P(3
 eq(complex(5), complex(5, 0), "complex(re)")
 err(function() return z / 0 end, "complex /: division by zero", "division by zero")
 err(function() return z + "a" end, "complex +: argument #2 (right) must be a complex number or a number, got string", "z + string")
+err(function() return complex(0) ^ -1 end, "complex ^: division by zero", "0^-1")
+err(function() return complex(0) ^ -.5 end, "complex ^: division by zero", "0^-1/2 (was inf, NaN)")
+err(function() return complex(0) ^ complex(-1, 1) end, "complex ^: division by zero", "0^(-1 + i)")
+eq(complex(0) ^ .5, complex(0, 0), "0^(1/2) = 0"); eq(complex(-1, 0) ^ .5 == complex(0, 1), false, "principal root is not exact")
+near((complex(-1, 0) ^ .5).im, 1, 1e-15, "principal square root of -1")
+err(function() return complex(1e300, 0) * complex(1e300, 0) end, "complex *: the result overflows", "overflow")
+err(function() return complex.exp(complex(1000, 0)) end, "complex.exp: the result overflows", "exp overflow")
+err(function() complex(0 / 0) end, "complex: argument #1 (re) must be a finite number", "NaN re")
+err(function() complex(1, math.huge) end, "complex: argument #2 (im) must be a finite number, got inf", "inf im")
+err(function() return z + 0 / 0 end, "complex +: argument #2 (right) must be a finite number", "z + NaN")
 err(function() complex("a") end, "complex: argument #1 (re) must be a number or a 2-D point, got string", "complex(string)")
 
 -- example 15: z0 = r0 e^(i u0), r0 = 1/2, u0 = pi/4, phi = 0
