@@ -181,6 +181,9 @@ function M.graph_on(A, B, f, a, b)
   if type(b) ~= "number" then tk.argerror(fname, 5, "b", "a number", b) end
   local ox, oy, bx, by = A.x, A.y, B.x, B.y
   local ex, ey = bx - ox, by - oy
+  if ex == 0 and ey == 0 then   -- no axis: the frame, and the graph, would collapse onto A
+    tk.argerror(fname, 2, "B", "a point other than A (AB is the graph's axis)", B)
+  end
   local frame, P = tk.frame_point, M.P
   local function gxy(t) return frame(ox, oy, ex, ey, t, f(a + t * (b - a))) end
   local curve = function(t) return P(gxy(t)) end

@@ -22,7 +22,9 @@ static int squash_with(lua_State *L, const char *fn, double (*f)(double)) {
     int n = lua_gettop(L) < 2 ? 1 : 2;
     for (int i = 1; i <= n; i++) {
         if (lua_type(L, i) != LUA_TNUMBER) tk_argerror(L, fn, i, i == 1 ? "p" : "q", "a number");
-        lua_pushnumber(L, f(lua_tonumber(L, i)));
+        double p = lua_tonumber(L, i);   /* +-inf are the square's sides; NaN is no place */
+        if (isnan(p)) tk_argerror(L, fn, i, i == 1 ? "p" : "q", "a number other than NaN");
+        lua_pushnumber(L, f(p));
     }
     return n;
 }
@@ -210,6 +212,10 @@ static double call_f(double x, void *ud) {
     if (!isnum) {
         const char *type = luaL_typename(L, -1);
         pcl_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x), type);
+    }
+    if (!isfinite(v)) {   /* name the x (the core would only say that some f(x) was not finite) */
+        const char *tx = tk_pushnum(L, x), *tv = tk_pushnum(L, v);
+        pcl_error(L, "bisect: f(%s) must return a finite number, got %s", tx, tv);
     }
     lua_pop(L, 1);
     return v;

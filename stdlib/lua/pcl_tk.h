@@ -19,11 +19,6 @@ double tk_checknum(lua_State *L, const char *fname, int arg, const char *what);
 /* The same for a method or __call argument at stack index idx, shown as argument #idx - 1. */
 double tk_checknum_m(lua_State *L, const char *fname, int idx, const char *what);
 double tk_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt);
-/* The coordinates of the point at idx into out (at most maxdim): returns its dimension, 0 if
- * the value is not a point/vector value at all; a vector or weighted value raises the
- * membership-condition error (through pcl_checkloc). */
-int tk_topoint(lua_State *L, const char *fname, int idx, const char *what, double *out,
-               int maxdim);
 /* Push a point (weight 1) or a vector (weight 0) of dimension n. */
 void tk_pushpoint(lua_State *L, int n, const double *x);
 void tk_pushvector(lua_State *L, int n, const double *x);

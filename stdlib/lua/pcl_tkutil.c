@@ -32,17 +32,6 @@ double tk_optnum(lua_State *L, const char *fname, int arg, const char *what, dou
     return tk_checknum(L, fname, arg, what);
 }
 
-int tk_topoint(lua_State *L, const char *fname, int idx, const char *what, double *out,
-               int maxdim) {
-    idx = lua_absindex(L, idx);
-    pcl_value *p = pcl_tovalue(L, idx);
-    if (!p) return 0;
-    if (p->n > maxdim)
-        return pcl_error(L, "%s: argument #%d (%s) must be at most %d-D, got %d-D", fname, idx,
-                          what, maxdim, p->n);
-    return pcl_checkloc(L, idx, what, 0, 0, out);
-}
-
 void tk_pushpoint(lua_State *L, int n, const double *x) {
     pcl_value *p = pcl_newvalue(L, n);
     memcpy(p->h, x, sizeof(double) * (size_t)n);

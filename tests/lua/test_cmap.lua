@@ -21,6 +21,8 @@ near(squash(math.huge), 1, 0, "squash(inf) = 1")
 near(squash01(0), .5, 0, "squash01(0)"); near(squash01(-10), .0025, 2e-5, "example 28: radius 10 -> .0025")
 near(select(2, squash01(0, 10)), .9975, 2e-5, "squash01(p, q)")
 err(function() squash("x") end, "squash: argument #1 (p) must be a number, got string", "squash string")
+err(function() squash(0 / 0) end, "squash: argument #1 (p) must be a number other than NaN", "squash NaN")
+err(function() squash01(1, 0 / 0) end, "squash01: argument #2 (q) must be a number other than NaN", "squash01 NaN")
 
 -- oblique projection by four screen points
 local pr = oblique(P(320, 240), 150, .3, -pi / 3)
@@ -77,6 +79,8 @@ eq(bisect(function(x) return x ^ 3 + x end, 0, 0, .001), 0, "c = 0: the bracket 
 eq(bisect(function(x) return x ^ 3 + x + 2 end, -2, 0, .001), -1, "an exact zero at a midpoint")
 err(function() bisect(function(x) return x * x + 1 end, -1, 1) end, "bisect: f(a) and f(b) have the same sign (f(-1) = 2, f(1) = 2): the interval brackets no root", "no bracket")
 err(function() bisect(function(x) return "a" end, 0, 1) end, "bisect: f(0) must return a number, got string", "f result")
+err(function() bisect(function(x) return x > .3 and math.huge or -1 end, 0, 1) end, "bisect: f(1) must return a finite number, got inf", "f inf")
+err(function() bisect(function(x) return x < .5 and -1 or 0 / 0 end, 0, 1) end, "bisect: f(1) must return a finite number", "f NaN")
 err(function() bisect(5, 0, 1) end, "bisect: argument #1 (f) must be a function, got 5", "f")
 err(function() bisect(math.sin, 0) end, "bisect: argument #3 (b) must be a number, got nil", "b")
 check.done()

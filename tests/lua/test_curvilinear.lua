@@ -184,6 +184,7 @@ err(function() R:draw(function(t) return t, t end) end, "C:draw: give the parame
 err(function() R:pre(1) end, "C:pre: argument #1 (g) must be a function", "pre")
 err(function() ruled(1, 2) end, "ruled: argument #1 (A) must be a curve (a function of t1), got 1", "ruled")
 err(function() graph_on(P(0, 0), P(1, 0), 3) end, "graph_on: argument #3 (f) must be a function, got 3", "graph_on f")
+err(function() graph_on(P(1, 2), P(1, 2), math.sin) end, "graph_on: argument #2 (B) must be a point other than A (AB is the graph's axis), got P(1, 2)", "graph_on A = B")
 err(function() graph_on(P(0, 0, 0), P(1, 0), math.sin) end, "graph_on: argument #1 (A) must be a 2-D point", "graph_on 3-D")
 err(function() patch(Sd[1], Sd[2], Sd[3]) end, "patch: argument #4 (S3) must be a curve (a function of t in [0, 1]), got nil", "patch sides")
 err(function() patch(Sd[1], function() return P(0, 0) end, Sd[3], Sd[4]) end, "patch: side S1 starts and ends at the same point", "patch degenerate")
