@@ -6,13 +6,14 @@
 -- The image of the circle r = 100 is the "almost square" (120, 40)-(520, 440): a smooth
 -- parametrisation of the square that spends most of its points in the corners, so the middles
 -- of the sides come out dashed.  Example 27b traces it with the loop the article recommends.
--- Loops as QBasic runs them (qb.range): 50 circles of 100 points, and 99 884 points.
+-- The circles are drawn through example 26's system, the plane seen in the square as a lens.
+-- Loops as QBasic runs them (qb = true): 50 circles of 100 points, and 99 884 points.
 
 local pi, cos, sin = math.pi, math.cos, math.sin
-local toscreen = screenmap(320, 240, 200)
-local function image(p, q) return toscreen(squash(p, q)) end   -- plane -> square -> screen
+local C = curvilinear(squash):post(screenmap(320, 240, 200))   -- plane -> square -> screen
+local function circle_of(r) return function(u) return r*cos(u), r*sin(u) end end
 
 for r in qb.range(.1, 5, .1) do
-  for u in qb.range(0, 2*pi, pi/50) do pset(image(r*cos(u), r*sin(u))) end
+  C:draw(circle_of(r), {t = {0, 2*pi, pi/50}, qb = true})
 end
-for u in qb.range(0, 2*pi, pi/50000) do pset(image(100*cos(u), 100*sin(u))) end   -- r = 100
+C:draw(circle_of(100), {t = {0, 2*pi, pi/50000}, qb = true})   -- the almost square

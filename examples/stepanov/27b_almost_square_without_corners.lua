@@ -8,16 +8,16 @@
 -- the same square, solid toward the corners and dotted in the middles of the sides, where the
 -- parametrisation runs fastest.
 -- The limits +.35 / -.7 are asymmetric as printed (probably a slip for -.35; the only effect is
--- a small gap near one end of each side); kept.  Loops as QBasic runs them (qb.range).
+-- a small gap near one end of each side); kept.  Loops as QBasic runs them (qb = true).
 
 local pi, cos, sin = math.pi, math.cos, math.sin
-local toscreen = screenmap(320, 240, 200)
-local function image(p, q) return toscreen(squash(p, q)) end   -- plane -> square -> screen
+local C = curvilinear(squash):post(screenmap(320, 240, 200))   -- plane -> square -> screen
+local function circle_of(r) return function(u) return r*cos(u), r*sin(u) end end
 
 for r in qb.range(.1, 5, .1) do
-  for u in qb.range(0, 2*pi, pi/50) do pset(image(r*cos(u), r*sin(u))) end
+  C:draw(circle_of(r), {t = {0, 2*pi, pi/50}, qb = true})
 end
 for i = 0, 3 do
-  local u0 = -pi/4 + i*pi/2                                        -- a corner direction
-  for u in qb.range(u0 + .35, u0 + pi/2 - .7, pi/10000) do pset(image(100*cos(u), 100*sin(u))) end
+  local u0 = -pi/4 + i*pi/2                                      -- a corner direction
+  C:draw(circle_of(100), {t = {u0 + .35, u0 + pi/2 - .7, pi/10000}, qb = true})
 end

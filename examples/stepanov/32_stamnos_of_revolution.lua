@@ -7,8 +7,8 @@
 -- ellipse, screen = C0 + r (C1(a) - C0) + h (C2 - C0), which is the same map.
 -- White pixels: 50 meridians of 101 points per piece.  The base, a disc of radii from the axis
 -- to the foot ring; the belly widest about y = 250, the neck about y = 175 and the out-turned
--- lip above it; the meridians crowd at the silhouette.  The last node sits at the neck radius a3 (not on the axis, as in
--- example 11), so the mouth stays open.
+-- lip above it; the meridians crowd at the silhouette.  The last node sits at the neck radius
+-- a3 (not on the axis, as in example 11), so the mouth stays open.
 -- The printed kink DATA has 7 values for 8 nodes; the cleaned listing adds the 8th (0).
 -- Loops as QBasic runs them (qb = true: 50 angles a = 0, pi/25, ..., 101 points per piece).
 
