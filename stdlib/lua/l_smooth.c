@@ -122,9 +122,9 @@ static int l_clamp(lua_State *L) {
 
 static int l_clamp_qb(lua_State *L) {
     const char *fn = "smooth.clamp_qb";
-    if (lua_type(L, 1) != LUA_TNUMBER) tk_argerror(L, fn, 1, "t", "a number");
+    double t = tk_checknum(L, fn, 1, "t");   /* finite, as smooth.clamp's (QBasic has no NaN) */
     double prev = tk_optnum(L, fn, 2, "prev", 0.0);
-    lua_pushnumber(L, pc_smooth_clamp_qb(lua_tonumber(L, 1), prev));
+    lua_pushnumber(L, pc_smooth_clamp_qb(t, prev));
     return 1;
 }
 

@@ -58,6 +58,7 @@ err(function() smooth.half(2, "x", .5) end, "smooth.half: argument #2 (m) must b
 err(function() smooth.power(-1) end, "smooth.power: argument #1 (n) must be a positive number, got -1", "power n < 0")
 err(function() smooth.sine() end, "smooth.sine: argument #1 (t) must be a number, got nil", "sine()")
 err(function() smooth.cubic(0 / 0) end, "smooth.cubic: argument #1 (t) must be a finite number", "cubic(NaN)")
+err(function() smooth.clamp_qb(0 / 0, .7) end, "smooth.clamp_qb: argument #1 (t) must be a finite number", "clamp_qb(NaN) kept prev")
 err(function() smooth.locus(2, 2, 2) end, "smooth.locus: argument #3 (t0) must be a number in [0, 1], got 2", "locus t0")
 err(function() g("x") end, "halfspline: argument #1 (t) must be a number, got string", "g(string)")
 -- a fractional degree does not extrapolate: t^2.5 is not real for t < 0 (no NaN comes back)
