@@ -247,6 +247,8 @@ int pc_window(pc_canvas *c, double x1, double y1, double x2, double y2, int scre
         return pc_fail(c, "window corners must be finite numbers");
     if (x1 == x2 || y1 == y2)
         return pc_fail(c, "window (%g, %g)-(%g, %g) has zero width or height", x1, y1, x2, y2);
+    if (!isfinite(x2 - x1) || !isfinite(y2 - y1))   /* its width would be infinite */
+        return pc_fail(c, "window (%g, %g)-(%g, %g) is too large", x1, y1, x2, y2);
     /* QBasic orders the corners: the smaller x is left, the smaller y is bottom (top with SCREEN) */
     c->wx1 = fmin(x1, x2);
     c->wx2 = fmax(x1, x2);

@@ -23,6 +23,11 @@ void pc_reset_cursor(pc_canvas *c);
 int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int filled);
 int pc_fill_view(pc_canvas *c, int color);
 
+/* A screen coordinate to a whole pixel: nearest, ties to even; clamped to +-1e9 first (far off
+ * any screen either way) so the conversion is always defined.  Used by the rasteriser and the
+ * SVG writer, so both put a coordinate in the same pixel. */
+long pc_px(double v);
+
 /* Clip the segment (x0,y0)-(x1,y1) to the rectangle, in place (Liang-Barsky); 0 if nothing of
  * it is inside.  Used by the rasteriser and the SVG writer. */
 int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,

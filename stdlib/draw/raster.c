@@ -11,18 +11,36 @@
 #define TWO_PI 6.283185307179586
 
 /* Far-away coordinates are clamped before conversion: the result is off screen either way and
- * the conversion to int stays defined. */
-static long px(double v) {
-    if (v > 1e9) v = 1e9;
+ * the conversion stays defined (a NaN, which no statement lets through, lands far off screen
+ * too instead of wherever lrint would put it). */
+long pc_px(double v) {
+    if (!(v <= 1e9)) v = 1e9;
     if (v < -1e9) v = -1e9;
     return lrint(v);
 }
+#define px pc_px
+
+/* Up to this many pixels from the screen's origin a far end point still places a line, and a
+ * circle's centre and radii are exact (int64 offsets; products under a square root below
+ * 2^53): a double's step there is 1/8 pixel. */
+#define HUGE_PX 1e15
 
 static int finite2(double x, double y) { return isfinite(x) && isfinite(y); }
 
-static int finite_or_fail(pc_canvas *c, const char *stmt, double x, double y) {
-    if (finite2(x, y)) return PC_DRAW_OK;
-    return pc_fail(c, "%s: coordinates must be finite numbers, got (%g, %g)", stmt, x, y);
+static int too_far(pc_canvas *c, const char *stmt) {
+    return pc_fail(c, "%s: a segment with both ends beyond %g pixels from the screen cannot be "
+                      "placed to the pixel", stmt, HUGE_PX);
+}
+
+/* A statement's point on the screen.  Its coordinates must be finite, and so must their image:
+ * WINDOW can map a huge finite coordinate past the largest double. */
+static int to_screen(pc_canvas *c, const char *stmt, double x, double y, double *sx, double *sy) {
+    if (!finite2(x, y))
+        return pc_fail(c, "%s: coordinates must be finite numbers, got (%g, %g)", stmt, x, y);
+    pc_world_to_screen(c, x, y, sx, sy);
+    if (!finite2(*sx, *sy))
+        return pc_fail(c, "%s: coordinates (%g, %g) are too far outside the window", stmt, x, y);
+    return PC_DRAW_OK;
 }
 
 void pc_plot(pc_canvas *c, int x, int y, int color) {
@@ -39,11 +57,10 @@ static void set_cursor(pc_canvas *c, double wx, double wy) {
 /* ---- PSET, PRESET, POINT -------------------------------------------------------------- */
 
 static int dot(pc_canvas *c, double x, double y, int color, int dflt) {
-    int ok = pc_check_color(c, &color, dflt);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "pset", x, y);
-    if (ok != PC_DRAW_OK) return ok;
     double sx, sy;
-    pc_world_to_screen(c, x, y, &sx, &sy);
+    int ok = pc_check_color(c, &color, dflt);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "pset", x, y, &sx, &sy);
+    if (ok != PC_DRAW_OK) return ok;
     pc_plot(c, (int)px(sx), (int)px(sy), color);
     ok = pc_push_dot(c, sx, sy, color);
     if (ok != PC_DRAW_OK) return ok;
@@ -58,6 +75,7 @@ int pc_point(const pc_canvas *c, double x, double y) {
     if (!finite2(x, y)) return -1;
     double sx, sy;
     pc_world_to_screen(c, x, y, &sx, &sy);
+    if (!finite2(sx, sy)) return -1;
     long ix = px(sx), iy = px(sy);
     const pc_rect *v = &c->view;
     if (ix < v->x0 || ix > v->x1 || iy < v->y0 || iy > v->y1) return -1;
@@ -66,24 +84,55 @@ int pc_point(const pc_canvas *c, double x, double y) {
 
 /* ---- LINE ------------------------------------------------------------------------------ */
 
-/* Clip the segment to the rectangle (Liang-Barsky); 0 if nothing is left. */
-int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
-                    double xmax, double ymax) {
-    double t0 = 0, t1 = 1, dx = *x1 - *x0, dy = *y1 - *y0;
-    double p[4] = {-dx, dx, -dy, dy};
-    double q[4] = {*x0 - xmin, xmax - *x0, *y0 - ymin, ymax - *y0};
+/* Liang-Barsky: the parameters t0 <= t1 of the part of (x, y) + t (dx, dy), 0 <= t <= 1, inside
+ * the rectangle; 0 if none. */
+static int clip_params(double x, double y, double dx, double dy, double xmin, double ymin,
+                       double xmax, double ymax, double *t0, double *t1) {
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {x - xmin, xmax - x, y - ymin, ymax - y};
+    *t0 = 0;
+    *t1 = 1;
     for (int i = 0; i < 4; i++) {
         if (p[i] == 0) {
             if (q[i] < 0) return 0;
         } else {
             double r = q[i] / p[i];
-            if (p[i] < 0) { if (r > t1) return 0; if (r > t0) t0 = r; }
-            else          { if (r < t0) return 0; if (r < t1) t1 = r; }
+            if (p[i] < 0) { if (r > *t1) return 0; if (r > *t0) *t0 = r; }
+            else          { if (r < *t0) return 0; if (r < *t1) *t1 = r; }
         }
     }
-    double ox = *x0, oy = *y0;
-    *x0 = ox + t0 * dx; *y0 = oy + t0 * dy;
-    *x1 = ox + t1 * dx; *y1 = oy + t1 * dy;
+    return 1;
+}
+
+/* Clip the segment to the rectangle; 0 if nothing is left.  A cut end is computed from the
+ * original end nearer to it (the parameters are found from both sides), so its rounding error
+ * is a step of its distance to that end: a segment from the screen to 1e300 keeps its exact
+ * pixels.  Only a segment whose ends both lie far away is placed as roughly as they are. */
+int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
+                    double xmax, double ymax) {
+    double dx = *x1 - *x0, dy = *y1 - *y0;
+    if (!isfinite(dx) || !isfinite(dy)) {
+        /* the extent overflows (ends near +-DBL_MAX): clip at half scale, which is exact */
+        double a = *x0 / 2, b = *y0 / 2, d = *x1 / 2, e = *y1 / 2;
+        if (!pc_clip_segment(&a, &b, &d, &e, xmin / 2, ymin / 2, xmax / 2, ymax / 2)) return 0;
+        *x0 = a * 2; *y0 = b * 2; *x1 = d * 2; *y1 = e * 2;
+        return 1;
+    }
+    double t0, t1, r0, r1;   /* t from (x0, y0) forwards, r from (x1, y1) backwards */
+    if (!clip_params(*x0, *y0, dx, dy, xmin, ymin, xmax, ymax, &t0, &t1)) return 0;
+    if (!clip_params(*x1, *y1, -dx, -dy, xmin, ymin, xmax, ymax, &r0, &r1)) {
+        r0 = 1 - t1;   /* the two sides disagree only at a corner: the forward answer */
+        r1 = 1 - t0;
+    }
+    const double ax = *x0, ay = *y0, bx = *x1, by = *y1;
+    if (t0 > 0) {
+        if (t0 <= r1) { *x0 = ax + t0 * dx; *y0 = ay + t0 * dy; }
+        else          { *x0 = bx - r1 * dx; *y0 = by - r1 * dy; }
+    }
+    if (r0 > 0) {
+        if (r0 <= t1) { *x1 = bx - r0 * dx; *y1 = by - r0 * dy; }
+        else          { *x1 = ax + t1 * dx; *y1 = ay + t1 * dy; }
+    }
     return 1;
 }
 
@@ -113,25 +162,29 @@ static void raster_line(pc_canvas *c, long x0, long y0, long x1, long y1, int co
     }
 }
 
-static void raster_line_f(pc_canvas *c, double x0, double y0, double x1, double y1, int color) {
-    /* segments reaching far off screen are cut first; nearby ones keep their exact pixels */
+/* A segment in screen coordinates.  One reaching far off screen is cut first (nearby ones keep
+ * their exact pixels).  A cut is as exact as the nearer end is near (see pc_clip_segment): a
+ * segment crossing the screen between two ends both beyond HUGE_PX pixels cannot be placed to
+ * the pixel, and is refused (returns 0, nothing drawn). */
+static int raster_line_f(pc_canvas *c, double x0, double y0, double x1, double y1, int color) {
     const double far = 32768;
     if (fabs(x0) > far || fabs(y0) > far || fabs(x1) > far || fabs(y1) > far) {
+        int both_far = fmax(fabs(x0), fabs(y0)) > HUGE_PX && fmax(fabs(x1), fabs(y1)) > HUGE_PX;
         if (!pc_clip_segment(&x0, &y0, &x1, &y1, -4.0, -4.0, c->width + 4.0, c->height + 4.0))
-            return;
+            return 1;
+        if (both_far) return 0;
     }
     raster_line(c, px(x0), px(y0), px(x1), px(y1), color);
+    return 1;
 }
 
 int pc_line(pc_canvas *c, double x1, double y1, double x2, double y2, int color) {
-    int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x1, y1);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x2, y2);
-    if (ok != PC_DRAW_OK) return ok;
     double a, b, d, e;
-    pc_world_to_screen(c, x1, y1, &a, &b);
-    pc_world_to_screen(c, x2, y2, &d, &e);
-    raster_line_f(c, a, b, d, e, color);
+    int ok = pc_check_color(c, &color, c->fg);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x1, y1, &a, &b);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x2, y2, &d, &e);
+    if (ok != PC_DRAW_OK) return ok;
+    if (!raster_line_f(c, a, b, d, e, color)) return too_far(c, "line");
     pc_op *op = pc_push_op(c, PC_OP_LINE, color);
     if (!op) return PC_DRAW_ENOMEM;
     op->x1 = a; op->y1 = b; op->x2 = d; op->y2 = e;
@@ -168,13 +221,11 @@ int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int f
 }
 
 int pc_box(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int filled) {
-    int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x1, y1);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "line", x2, y2);
-    if (ok != PC_DRAW_OK) return ok;
     double a, b, d, e;
-    pc_world_to_screen(c, x1, y1, &a, &b);
-    pc_world_to_screen(c, x2, y2, &d, &e);
+    int ok = pc_check_color(c, &color, c->fg);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x1, y1, &a, &b);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x2, y2, &d, &e);
+    if (ok != PC_DRAW_OK) return ok;
     raster_box(c, px(a), px(b), px(d), px(e), color, filled);
     pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
     if (!op) return PC_DRAW_ENOMEM;
@@ -223,42 +274,89 @@ static int on_arc(double th, double a0, double a1) {
     return th >= a0 - eps || th <= a1 + eps;
 }
 
+static void plot64(pc_canvas *c, int64_t x, int64_t y, int color) {
+    const pc_rect *v = &c->view;
+    if (x < v->x0 || x > v->x1 || y < v->y0 || y > v->y1) return;
+    c->pixels[(size_t)y * c->width + (size_t)x] = (uint8_t)color;
+}
+
+/* The offsets i in 0..n for which c0 + i or c0 - i lies in lo..hi: the columns (or rows) of
+ * an outline that can be on screen, so that a circle far larger than the screen costs no more
+ * than one the size of the screen.  At most two ranges; returns how many. */
+typedef struct { int64_t lo, hi; } range;
+
+static int visible_offsets(int64_t c0, int64_t n, int lo, int hi, range out[2]) {
+    const range cand[2] = {{lo - c0, hi - c0}, {c0 - hi, c0 - lo}};
+    int k = 0;
+    for (int j = 0; j < 2; j++) {
+        range r = {cand[j].lo < 0 ? 0 : cand[j].lo, cand[j].hi > n ? n : cand[j].hi};
+        if (r.lo > r.hi) continue;
+        if (k == 1 && r.lo <= out[0].hi + 1 && out[0].lo <= r.hi + 1) {   /* overlap: merge */
+            if (r.lo < out[0].lo) out[0].lo = r.lo;
+            if (r.hi > out[0].hi) out[0].hi = r.hi;
+            continue;
+        }
+        out[k++] = r;
+    }
+    return k;
+}
+
 /* The outline of the ellipse with integer radii: for every column the nearest row and for
  * every row the nearest column, in all four quadrants, so the outline is closed for any
- * eccentricity.  Points off the arc (when full == 0) are skipped. */
-static void raster_ellipse(pc_canvas *c, long cx, long cy, long rx, long ry, int color, int full,
-                           double a0, double a1) {
-    if (rx > 100000) rx = 100000;
-    if (ry > 100000) ry = 100000;
+ * eccentricity.  Only columns and rows that can be visible are visited.  Points off the arc
+ * (when full == 0) are skipped.  r*sqrt(1 - i^2/R^2) is computed as r*sqrt((R - i)(R + i))/R,
+ * whose integer factors are exact, so a radius of millions of pixels keeps its pixels. */
+static void raster_ellipse(pc_canvas *c, int64_t cx, int64_t cy, int64_t rx, int64_t ry,
+                           int color, int full, double a0, double a1) {
+    const pc_rect *v = &c->view;
     for (int pass = 0; pass < 2; pass++) {
-        long n = pass ? ry : rx;
-        for (long i = 0; i <= n; i++) {
-            long x, y;
-            if (pass == 0) {
-                x = i;
-                y = rx ? lrint(ry * sqrt(fmax(0.0, 1.0 - (double)(i * i) / ((double)rx * rx)))) : ry;
-            } else {
-                y = i;
-                x = ry ? lrint(rx * sqrt(fmax(0.0, 1.0 - (double)(i * i) / ((double)ry * ry)))) : rx;
-            }
-            for (int q = 0; q < 4; q++) {
-                long dx = (q & 1) ? -x : x, dy = (q & 2) ? -y : y;
-                if (!full) {
-                    double th = atan2(rx ? -(double)dy / ry : -(double)dy, ry ? (double)dx / rx : (double)dx);
-                    if (rx == 0 || ry == 0) th = atan2(-(double)dy, (double)dx);
-                    if (th < 0) th += TWO_PI;
-                    if (!on_arc(th, a0, a1)) continue;
+        range r[2];
+        int nr = pass ? visible_offsets(cy, ry, v->y0, v->y1, r)
+                      : visible_offsets(cx, rx, v->x0, v->x1, r);
+        for (int k = 0; k < nr; k++)
+            for (int64_t i = r[k].lo; i <= r[k].hi; i++) {
+                int64_t x, y;
+                if (pass == 0) {
+                    x = i;
+                    y = rx ? llrint((double)ry * sqrt((double)(rx - i) * (double)(rx + i)) / (double)rx) : ry;
+                } else {
+                    y = i;
+                    x = ry ? llrint((double)rx * sqrt((double)(ry - i) * (double)(ry + i)) / (double)ry) : rx;
                 }
-                pc_plot(c, (int)(cx + dx), (int)(cy + dy), color);
+                for (int q = 0; q < 4; q++) {
+                    int64_t dx = (q & 1) ? -x : x, dy = (q & 2) ? -y : y;
+                    if (!full) {
+                        double th = rx == 0 || ry == 0 ? atan2(-(double)dy, (double)dx)
+                                                       : atan2(-(double)dy / (double)ry, (double)dx / (double)rx);
+                        if (th < 0) th += TWO_PI;
+                        if (!on_arc(th, a0, a1)) continue;
+                    }
+                    plot64(c, cx + dx, cy + dy, color);
+                }
             }
-        }
     }
+}
+
+/* Can the outline of the ellipse come within two pixels of the view (its pixels lie within a
+ * pixel of the true curve)?  The curve meets the grown view rectangle exactly when the
+ * rectangle holds points both inside and outside it: decided on the ellipse scaled to the
+ * unit circle, by the rectangle's nearest point and farthest corner. */
+static int outline_near_view(const pc_canvas *c, double cx, double cy, double rx, double ry) {
+    const pc_rect *v = &c->view;
+    double x0 = v->x0 - 2 - cx, x1 = v->x1 + 2 - cx, y0 = v->y0 - 2 - cy, y1 = v->y1 + 2 - cy;
+    if (rx < 1 || ry < 1)   /* a dot or a straight stroke: its bounding box */
+        return x0 <= rx && -rx <= x1 && y0 <= ry && -ry <= y1;
+    x0 /= rx; x1 /= rx; y0 /= ry; y1 /= ry;
+    double nx = x0 > 0 ? x0 : x1 < 0 ? x1 : 0, ny = y0 > 0 ? y0 : y1 < 0 ? y1 : 0;
+    double fx = fmax(fabs(x0), fabs(x1)), fy = fmax(fabs(y0), fabs(y1));
+    return nx * nx + ny * ny <= 1 && fx * fx + fy * fy >= 1;
 }
 
 int pc_circle(pc_canvas *c, double x, double y, double r, int color, double start, double end,
               double aspect) {
+    double sx, sy;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "circle", x, y);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "circle", x, y, &sx, &sy);
     if (ok != PC_DRAW_OK) return ok;
     if (!(r >= 0) || !isfinite(r)) return pc_fail(c, "circle: radius must be a non-negative number, got %g", r);
     if (!isnan(start) && !(fabs(start) <= TWO_PI + 1e-6))
@@ -279,18 +377,24 @@ int pc_circle(pc_canvas *c, double x, double y, double r, int color, double star
 
     /* QBasic's aspect rule: below 1 it shrinks the y radius, above 1 the x radius */
     double rr = r * pc_world_xscale(c), rx = rr, ry = rr;
+    if (!isfinite(rr)) return pc_fail(c, "circle: radius %g is too large for the window", r);
     if (!isnan(aspect)) {
         if (aspect < 1) ry = rr * aspect;
         else rx = rr / aspect;
     }
-    double sx, sy;
-    pc_world_to_screen(c, x, y, &sx, &sy);
-    long cx = px(sx), cy = px(sy), irx = px(rx), iry = px(ry);
-    raster_ellipse(c, cx, cy, irx, iry, color, full, a0, a1);
-    if (flags & PC_ARC_RADIUS0)
-        raster_line(c, cx, cy, cx + lrint(irx * cos(a0)), cy - lrint(iry * sin(a0)), color);
-    if (flags & PC_ARC_RADIUS1)
-        raster_line(c, cx, cy, cx + lrint(irx * cos(a1)), cy - lrint(iry * sin(a1)), color);
+    /* the pixel figure: centre and radii rounded to whole pixels */
+    double cx = rint(sx), cy = rint(sy), irx = rint(rx), iry = rint(ry);
+    if (outline_near_view(c, cx, cy, irx, iry)) {
+        if (fmax(fabs(cx), fabs(cy)) > HUGE_PX || fmax(irx, iry) > HUGE_PX)
+            return pc_fail(c, "circle: radius %g (%g pixels) is too large to draw", r, fmax(rx, ry));
+        raster_ellipse(c, (int64_t)cx, (int64_t)cy, (int64_t)irx, (int64_t)iry, color, full, a0, a1);
+    }
+    if ((flags & PC_ARC_RADIUS0) &&
+        !raster_line_f(c, cx, cy, cx + rint(irx * cos(a0)), cy - rint(iry * sin(a0)), color))
+        return too_far(c, "circle");
+    if ((flags & PC_ARC_RADIUS1) &&
+        !raster_line_f(c, cx, cy, cx + rint(irx * cos(a1)), cy - rint(iry * sin(a1)), color))
+        return too_far(c, "circle");
 
     pc_op *op = pc_push_op(c, PC_OP_ARC, color);
     if (!op) return PC_DRAW_ENOMEM;
@@ -309,16 +413,15 @@ typedef struct { int x, y; } seed;
 /* Scanline flood fill of the region of non-border pixels connected (4-way) to the start,
  * inside the view.  Each filled run becomes one span of the display-list operation. */
 int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
+    double fx, fy;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = finite_or_fail(c, "paint", x, y);
+    if (ok == PC_DRAW_OK) ok = to_screen(c, "paint", x, y, &fx, &fy);
     if (ok != PC_DRAW_OK) return ok;
     if (border < 0) border = color;
     if (border >= c->ncolors)
         return pc_fail(c, "paint: border colour %d out of range 0..%d", border, c->ncolors - 1);
     set_cursor(c, x, y);
 
-    double fx, fy;
-    pc_world_to_screen(c, x, y, &fx, &fy);
     long sx = px(fx), sy = px(fy);
     const pc_rect v = c->view;
     if (sx < v.x0 || sx > v.x1 || sy < v.y0 || sy > v.y1) return PC_DRAW_OK;

@@ -61,7 +61,7 @@ typedef struct {
 /* Coordinates are clamped to +-1e7 px (far beyond any screen), so hundredths fit in a long
  * even where it has 32 bits. */
 static long hund(double v) {
-    if (v > 1e7) v = 1e7;
+    if (!(v <= 1e7)) v = 1e7;   /* NaN too: never garbage from lrint */
     if (v < -1e7) v = -1e7;
     return lrint(v * 100);
 }
@@ -199,7 +199,7 @@ static void add_point(svgw *w, double x, double y) {
  * horizontal runs of pixels merged.  The layer is written out before any other element, so
  * the painter's order of the display list is kept exactly. */
 static void add_dot(svgw *w, double x, double y, int color, pc_rect clip) {
-    long ix = lrint(fmax(-1e9, fmin(1e9, x))), iy = lrint(fmax(-1e9, fmin(1e9, y)));
+    long ix = pc_px(x), iy = pc_px(y);
     if (ix < clip.x0 || ix > clip.x1 || iy < clip.y0 || iy > clip.y1) return;
     if (w->nlayer == w->caplayer) {
         size_t nc = w->caplayer ? w->caplayer * 2 : 1024;
@@ -477,12 +477,6 @@ static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
 
 /* ---- boxes -------------------------------------------------------------------------------- */
 
-static long rnd(double v) {
-    if (v > 1e9) v = 1e9;
-    if (v < -1e9) v = -1e9;
-    return lrint(v);
-}
-
 static void fill_rect(svgw *w, long x0, long y0, long x1, long y1, int color) {
     open_el(w, "rect");
     fprintf(w->out, " x=\"%ld\" y=\"%ld\" width=\"%ld\" height=\"%ld\"", x0, y0, x1 - x0 + 1,
@@ -494,7 +488,7 @@ static void fill_rect(svgw *w, long x0, long y0, long x1, long y1, int color) {
 /* BOX, FILLBOX and CLEAR cover whole pixels, exactly as rasterised. */
 static void emit_box(svgw *w, const pc_op *op) {
     pc_rect clip = clip_of(w, op);
-    long x0 = rnd(op->x1), y0 = rnd(op->y1), x1 = rnd(op->x2), y1 = rnd(op->y2);
+    long x0 = pc_px(op->x1), y0 = pc_px(op->y1), x1 = pc_px(op->x2), y1 = pc_px(op->y2);
     if (x0 > x1) { long t = x0; x0 = x1; x1 = t; }
     if (y0 > y1) { long t = y0; y0 = y1; y1 = t; }
     if (x1 < clip.x0 || x0 > clip.x1 || y1 < clip.y0 || y0 > clip.y1) return;

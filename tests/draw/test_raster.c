@@ -7,6 +7,7 @@
 #include <string.h>
 #include <cmocka.h>
 #include "canvas.h"
+#include "canvas_internal.h"
 
 #define PI 3.14159265358979
 
@@ -439,6 +440,100 @@ static void test_cls_and_display_list(void **state) {
     pc_canvas_free(c);
 }
 
+/* Far end points.  A cut end is computed from the nearer original end, so a segment from the
+ * screen to 1e300 keeps its exact pixels; one crossing the screen between two ends that are
+ * both too far to place it to the pixel is an error, not a guess. */
+static void test_lines_to_far_away(void **state) {
+    (void)state;
+    pc_canvas *c = small(10, 10);
+    assert_int_equal(pc_line(c, -1e300, -1e300, 5, 5, 2), PC_DRAW_OK);
+    for (int i = 0; i <= 5; i++) assert_int_equal(at(c, i, i), 2);
+    assert_int_equal(count(c, 2), 6);
+    assert_int_equal(pc_line(c, 7, 9, 7, -1e20, 3), PC_DRAW_OK);
+    for (int y = 0; y < 10; y++) assert_int_equal(at(c, 7, y), 3);
+    assert_int_equal(count(c, 3), 10);
+    pc_canvas *d = small(10, 10);
+    assert_int_equal(pc_line(d, -1e14, -1e14, 1e14, 1e14, 4), PC_DRAW_OK);
+    for (int i = 0; i < 10; i++) assert_int_equal(at(d, i, i), 4);
+    assert_int_equal(count(d, 4), 10);
+    assert_int_equal(pc_line(d, -1e308, -1e308, 1e308, 1e308, 5), PC_DRAW_EARG);
+    assert_non_null(strstr(d->error, "line: a segment with both ends beyond 1e+15 pixels"));
+    assert_int_equal(pc_line(d, -1.7e308, 5, 1.7e308, 5, 5), PC_DRAW_EARG);
+    assert_int_equal(count(d, 5), 0);
+    assert_int_equal(d->nops, 1);
+    /* both ends far but the segment nowhere near the screen: silently clipped */
+    assert_int_equal(pc_line(d, -1e300, -1e20, 1e300, -1e20, 5), PC_DRAW_OK);
+    /* the clipper itself survives an extent that overflows to infinity */
+    double x0 = -1e308, y0 = 0, x1 = 1e308, y1 = 0;
+    assert_int_equal(pc_clip_segment(&x0, &y0, &x1, &y1, 0, -1, 10, 1), 1);
+    assert_true(isfinite(x0) && isfinite(x1) && y0 == 0 && y1 == 0);
+    /* a radius line of a circle far larger than the screen is a line like any other */
+    pc_canvas *e = small(10, 10);
+    assert_int_equal(pc_circle(e, 5, 5, 1e12, 6, -PI / 2, -PI, NAN), PC_DRAW_OK);
+    for (int i = 0; i <= 5; i++) {
+        assert_int_equal(at(e, 5, i), 6);
+        assert_int_equal(at(e, i, 5), 6);
+    }
+    assert_int_equal(count(e, 6), 11);
+    pc_canvas_free(c);
+    pc_canvas_free(d);
+    pc_canvas_free(e);
+}
+
+/* Finite world coordinates that WINDOW maps beyond any double are an error naming the
+ * statement, never a pixel put somewhere arbitrary; so is a window too large to map. */
+static void test_window_overflow_is_an_error(void **state) {
+    (void)state;
+    pc_canvas *c = small(10, 10);
+    assert_int_equal(pc_window(c, -1e308, -1e308, 1e308, 1e308, 0), PC_DRAW_EARG);
+    assert_non_null(strstr(c->error, "too large"));
+    assert_int_equal(pc_window(c, 0, 0, 1, 1, 0), PC_DRAW_OK);
+    assert_int_equal(pc_pset(c, 1e308, 0, 1), PC_DRAW_EARG);
+    assert_non_null(strstr(c->error, "pset: coordinates (1e+308, 0) are too far outside the window"));
+    assert_int_equal(pc_line(c, 0, 0, 1e308, 1e308, 1), PC_DRAW_EARG);
+    assert_non_null(strstr(c->error, "line:"));
+    assert_int_equal(pc_box(c, 0, 0, -1e308, 1, 1, 1), PC_DRAW_EARG);
+    assert_int_equal(pc_paint(c, 1e308, 0, 1, -1), PC_DRAW_EARG);
+    assert_int_equal(pc_circle(c, 0.5, 0.5, 1e308, 1, NAN, NAN, NAN), PC_DRAW_EARG);
+    assert_non_null(strstr(c->error, "circle: radius"));
+    assert_int_equal(pc_point(c, 1e308, 0), -1);
+    assert_int_equal(count(c, 0), 100);          /* nothing was drawn */
+    assert_int_equal(c->nops, 0);
+    /* the largest coordinates that do map still clip silently */
+    assert_int_equal(pc_pset(c, 1e300, -1e300, 1), PC_DRAW_OK);
+    assert_int_equal(count(c, 0), 100);
+    pc_canvas_free(c);
+}
+
+/* A circle far larger than the screen: the visible part of its outline is exact.  Centre
+ * (-99995, 5), radius 100000 on a 10x10 canvas: the rightmost point is (5, 5) and over rows
+ * 0..9 the outline stays within 0.000125 px of column 5 (x = -99995 + sqrt(1e10 - dy^2)). */
+static void test_huge_circle_visible_arc(void **state) {
+    (void)state;
+    pc_canvas *c = small(10, 10);
+    assert_int_equal(pc_circle(c, -99995, 5, 100000, 4, NAN, NAN, NAN), PC_DRAW_OK);
+    for (int y = 0; y < 10; y++) assert_int_equal(at(c, 5, y), 4);
+    assert_int_equal(count(c, 4), 10);
+    /* ten times larger and off to the right: the leftmost point is (4, 5) */
+    pc_canvas *d = small(10, 10);
+    assert_int_equal(pc_circle(d, 1000004, 5, 1000000, 4, NAN, NAN, NAN), PC_DRAW_OK);
+    for (int y = 0; y < 10; y++) assert_int_equal(at(d, 4, y), 4);
+    assert_int_equal(count(d, 4), 10);
+    /* an arc of it: the upper half (0..pi) keeps rows 0..5 only */
+    pc_canvas *e = small(10, 10);
+    pc_circle(e, -99995, 5, 100000, 4, 0, PI, NAN);
+    for (int y = 0; y <= 5; y++) assert_int_equal(at(e, 5, y), 4);
+    assert_int_equal(count(e, 4), 6);
+    /* a radius beyond what a pixel grid can hold passing through the screen is an error */
+    assert_int_equal(pc_circle(e, -1e16, 5, 1e16 + 5, 4, NAN, NAN, NAN), PC_DRAW_EARG);
+    assert_non_null(strstr(e->error, "circle: radius"));
+    /* far away and small: nothing to draw, no error */
+    assert_int_equal(pc_circle(e, 1e300, 5, 3, 4, NAN, NAN, NAN), PC_DRAW_OK);
+    pc_canvas_free(c);
+    pc_canvas_free(d);
+    pc_canvas_free(e);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_screen_modes),
@@ -456,6 +551,9 @@ int main(void) {
         cmocka_unit_test(test_view_and_point),
         cmocka_unit_test(test_dot_runs),
         cmocka_unit_test(test_cls_and_display_list),
+        cmocka_unit_test(test_lines_to_far_away),
+        cmocka_unit_test(test_window_overflow_is_an_error),
+        cmocka_unit_test(test_huge_circle_visible_arc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
