@@ -64,11 +64,12 @@ static int opt_color(lua_State *L, int arg, pc_canvas *c) {
     return (int)v;
 }
 
+/* An optional number; NaN stands for "not given" in the core, so a NaN passed is refused. */
 static double opt_number(lua_State *L, int arg, const char *what, double dflt) {
     if (lua_isnoneornil(L, arg)) return dflt;
     int isnum;
     double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum) pcl_argerror(L, arg, what, "a number");
+    if (!isnum || isnan(v)) pcl_argerror(L, arg, what, isnum ? "a finite number" : "a number");
     return v;
 }
 
@@ -81,14 +82,17 @@ static int l_screen(lua_State *L) {
         lua_getfield(L, 1, "width");
         lua_getfield(L, 1, "height");
         lua_getfield(L, 1, "colors");
+        /* range-checked before narrowing to int, so 2^32 + 640 is not 640 */
         int okw, okh;
-        w = (int)lua_tointegerx(L, -3, &okw);
-        h = (int)lua_tointegerx(L, -2, &okh);
-        if (!okw || w < 1 || w > 16384) pcl_argerror(L, 1, "width", "an integer 1..16384");
-        if (!okh || h < 1 || h > 16384) pcl_argerror(L, 1, "height", "an integer 1..16384");
+        lua_Integer lw = lua_tointegerx(L, -3, &okw), lh = lua_tointegerx(L, -2, &okh);
+        if (!okw || lw < 1 || lw > 16384) pcl_argerror(L, 1, "width", "an integer 1..16384");
+        if (!okh || lh < 1 || lh > 16384) pcl_argerror(L, 1, "height", "an integer 1..16384");
+        w = (int)lw;
+        h = (int)lh;
         if (!lua_isnil(L, -1)) {
-            colors = (int)lua_tointeger(L, -1);
-            if (colors != 16 && colors != 256) pcl_argerror(L, 1, "colors", "16 or 256");
+            lua_Integer lc = lua_tointeger(L, -1);
+            if (lc != 16 && lc != 256) pcl_argerror(L, 1, "colors", "16 or 256");
+            colors = (int)lc;
         }
     } else {
         int isint;
@@ -267,6 +271,13 @@ static int l_point(lua_State *L) {
     return 1;
 }
 
+/* A number as the core's messages print it (%g). */
+static const char *num(lua_State *L, double v) {
+    char b[32];
+    snprintf(b, sizeof b, "%g", v);
+    return lua_pushstring(L, b);
+}
+
 /* "screen" (string) or true as the last argument of WINDOW/VIEW means QBasic's SCREEN form. */
 static int screen_flag(lua_State *L, int arg) {
     if (lua_isnoneornil(L, arg)) return 0;
@@ -300,6 +311,12 @@ static int l_view(lua_State *L) {
     pcl_checkxy(L, &arg, &x2, &y2, "second corner");
     int fill = opt_color(L, arg, c), border = opt_color(L, arg + 1, c);
     int screen = screen_flag(L, arg + 2);
+    /* the core takes whole pixels: corners beyond any screen are refused here, before the
+     * conversion to int could wrap them onto it */
+    const double lim = 1e6;
+    if (!(fabs(x1) <= lim && fabs(y1) <= lim && fabs(x2) <= lim && fabs(y2) <= lim))
+        return pcl_error(L, "view: view (%s, %s)-(%s, %s) is not inside the %dx%d screen",
+                         num(L, x1), num(L, y1), num(L, x2), num(L, y2), c->width, c->height);
     return check(L, c, pc_view(c, (int)lrint(x1), (int)lrint(y1), (int)lrint(x2), (int)lrint(y2),
                                fill, border, screen));
 }

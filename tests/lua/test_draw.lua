@@ -75,14 +75,32 @@ view()
 check.eq(point(600, 0), 4, "view offsets coordinates")
 check.eq(point(620, 20), 8, "view fill colour")
 
--- PALETTE and COLOR
+-- PALETTE and COLOR: what the written file shows for attributes 1, 2, 3 (read back from a PPM)
+local function ppm_rgb(path, x, y)
+  local f = assert(io.open(path, "rb"))
+  local data = f:read("a")
+  f:close()
+  local header = data:match("^P6\n%d+ %d+\n255\n")
+  local i = #header + (y * 640 + x) * 3 + 1
+  return string.format("%02x%02x%02x", data:byte(i, i + 2))
+end
+pset(1, 470, 1) pset(2, 470, 2) pset(3, 470, 3)
 palette(1, 63)                 -- QBasic: 65536*b + 256*g + r, 6 bits each: bright red
 palette(2, "#123456")
 palette(3, { 1, 2, 3 })
+local ppm = os.tmpname() .. ".ppm"
+save(ppm)
+check.eq(ppm_rgb(ppm, 1, 470), "ff0000", "palette(1, 63): red 63 widens to 255")
+check.eq(ppm_rgb(ppm, 2, 470), "123456", "palette(2, \"#123456\")")
+check.eq(ppm_rgb(ppm, 3, 470), "010203", "palette(3, {1, 2, 3})")
+palette(1, 65536 * 42)         -- blue 42 (0xaa), as VGA's default colour 1
+palette()
+save(ppm)
+check.eq(ppm_rgb(ppm, 2, 470), "00aa00", "palette() restores the default colour 2")
+os.remove(ppm)
 color(9)
 pset(5, 5)
 check.eq(point(5, 5), 9, "color sets the foreground")
-palette()
 
 -- errors name the function, the argument and what it must be
 check.err(function() circle(1, 2) end, "circle: argument #3 (radius) must be a non-negative number, got nil", "circle radius nil")
@@ -104,6 +122,20 @@ check.err(function() save(42) end, "save: argument #1 (path) must be a file name
 check.err(function() save("x.gif") end, "save: argument #1 (path) must be a file name ending in .png, .svg or .ppm", "save extension")
 check.err(function() save("no_such_dir/x.png") end, "save: cannot write 'no_such_dir/x.png': No such file or directory", "save unwritable")
 
+-- a NaN where a number is optional is still wrong, not "not given"
+check.err(function() circle(1, 2, 3, 1, 0 / 0) end, "circle: argument #5 (start angle) must be a finite number, got", "NaN start")
+check.err(function() circle(1, 2, 3, 1, 0, 0 / 0) end, "circle: argument #6 (end angle) must be a finite number, got", "NaN end")
+check.err(function() circle(1, 2, 3, 1, nil, nil, 0 / 0) end, "circle: argument #7 (aspect) must be a finite number, got", "NaN aspect")
+-- coordinates beyond any screen say so instead of wrapping around
+check.err(function() view(0, 0, 1e30, 1e30) end, "view: view (0, 0)-(1e+30, 1e+30) is not inside the 640x480 screen", "huge view")
+check.err(function() view(-1e30, 0, 10, 10) end, "is not inside the 640x480 screen", "huge negative view")
+check.eq(point(639, 479), 0, "the view is still the whole screen")
+-- a finite coordinate that WINDOW maps beyond any double: an error, no pixel anywhere
+window(0, 0, 1, 1)
+check.err(function() pset(1e308, 0) end, "pset: coordinates (1e+308, 0) are too far outside the window", "window overflow")
+check.err(function() window(-1e308, 0, 1e308, 1) end, "window: window (-1e+308, 0)-(1e+308, 1) is too large", "huge window")
+window()
+
 -- SCREEN 13 and custom sizes
 screen(13)
 w, h, n = size()
@@ -115,5 +147,9 @@ w, h, n = size()
 check.eq(w * 1000 + h, 100050, "screen{width=, height=}")
 check.eq(point(1, 1), 0, "screen clears")
 check.err(function() screen { width = 0, height = 5 } end, "screen: argument #1 (width) must be an integer 1..16384", "screen width")
+check.err(function() screen { width = 2 ^ 32 + 640, height = 480 } end, "screen: argument #1 (width) must be an integer 1..16384", "width beyond int")
+check.err(function() screen { width = 10, height = (1 << 32) + 48 } end, "screen: argument #1 (height) must be an integer 1..16384", "height beyond int")
+check.err(function() screen { width = 10, height = 10, colors = (1 << 32) + 16 } end, "screen: argument #1 (colors) must be 16 or 256", "colours beyond int")
+check.eq(select(1, size()), 100, "a refused screen leaves the canvas as it was")
 
 check.done()
