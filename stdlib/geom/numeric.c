@@ -26,6 +26,8 @@ double pc_oresme_at(const double *y, int m, double t) {
 int pc_bisect(pc_scalar_fn f, void *ud, double a, double b, double tol, double *x, int *iters) {
     int count = 0;
     if (iters) *iters = 0;
+    /* a NaN end never compares equal to the midpoint, so the loop below would not end */
+    if (!isfinite(a) || !isfinite(b)) return PC_TK_ENONFINITE;
     double fa = f(a, ud);
     if (!isfinite(fa)) return PC_TK_ENONFINITE;
     if (fa == 0) {

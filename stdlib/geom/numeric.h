@@ -19,8 +19,8 @@ double pc_oresme_at(const double *y, int m, double t);
 /* Bisection as example 30 writes it: x0 = a, x1 = b; repeat x = (x0 + x1)/2; if
  * f(x) f(x0) < 0 then x1 = x else x0 = x; until |x1 - x0| <= tol.  The result is the last
  * midpoint x.  If f(a) = 0 the result is a, if f(b) = 0 it is b (a = b is allowed).
- * PC_TK_ENOBRACKET if f(a) and f(b) are nonzero with the same sign, PC_TK_ENONFINITE if f
- * returns NaN or an infinity.  An exact zero f(x) = 0 ends the search at x (the listing would
+ * PC_TK_ENOBRACKET if f(a) and f(b) are nonzero with the same sign, PC_TK_ENONFINITE if a or
+ * b is not finite or f returns NaN or an infinity.  An exact zero f(x) = 0 ends the search at x (the listing would
  * go on bisecting the wrong half).  tol <= 0 bisects until the interval stops shrinking.
  * *iters (if not NULL) gets the number of midpoints evaluated. */
 typedef double (*pc_scalar_fn)(double x, void *ud);

@@ -51,6 +51,12 @@ static double bad(double x, void *ud) {
     return x > 0.3 ? NAN : x - 1;
 }
 
+/* a step that is finite everywhere, NaN included (NaN < .5 is false) */
+static double step(double x, void *ud) {
+    (void)ud;
+    return x < .5 ? -1 : 1;
+}
+
 static void test_bisect(void **state) {
     (void)state;
     double c = 1, x;
@@ -74,6 +80,11 @@ static void test_bisect(void **state) {
     assert_int_equal(pc_bisect(cubic, &c, 0, 1, .001, &x, NULL), PC_TK_ENOBRACKET);
     assert_int_equal(pc_bisect(bad, NULL, 0, 2, .001, &x, NULL), PC_TK_ENONFINITE);
     assert_int_equal(pc_bisect(bad, NULL, 0, .25, .001, &x, NULL), PC_TK_ENOBRACKET);
+    /* non-finite ends: NaN made the loop endless, inf came back as the "root" */
+    assert_int_equal(pc_bisect(step, NULL, 0, 1, 1e-9, &x, NULL), PC_TK_OK);
+    NEAR(x, .5, 1e-9);
+    assert_int_equal(pc_bisect(step, NULL, NAN, 0, .001, &x, NULL), PC_TK_ENONFINITE);
+    assert_int_equal(pc_bisect(step, NULL, 0, INFINITY, .001, &x, NULL), PC_TK_ENONFINITE);
 }
 
 int main(void) {
