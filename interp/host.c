@@ -146,8 +146,16 @@ int host_load_script(lua_State *L, const char *path, int qbasic) {
         text += i;
         len -= i;
     }
+    if (len > 0 && text[0] == LUA_SIGNATURE[0]) {
+        /* Lua does not verify bytecode: a damaged or hostile binary chunk crashes the
+         * interpreter, so scripts are source only (lua5.4 runs precompiled files if needed) */
+        fprintf(stderr, "%s: cannot run '%s': it is a precompiled Lua chunk; pointcalc runs source "
+                "scripts\n", host_progname, path);
+        lua_pop(L, 1);
+        return 0;
+    }
     const char *chunkname = lua_pushfstring(L, "@%s", strcmp(path, "-") ? path : "stdin");
-    int status = luaL_loadbuffer(L, text, len, chunkname);
+    int status = luaL_loadbufferx(L, text, len, chunkname, "t");
     lua_remove(L, -2);     /* chunk name */
     lua_remove(L, -2);     /* source text */
     if (status != LUA_OK) {

@@ -202,7 +202,7 @@ int main(int argc, char **argv) {
     int ok = 1;
     if (o.script) set_arg(L, argv, o.script_index);
     for (int i = 0; ok && i < o.nchunks; i++) {
-        if (luaL_loadbuffer(L, o.chunks[i], strlen(o.chunks[i]), "=(command line)") != LUA_OK) {
+        if (luaL_loadbufferx(L, o.chunks[i], strlen(o.chunks[i]), "=(command line)", "t") != LUA_OK) {
             fprintf(stderr, "%s\n", lua_tostring(L, -1));
             lua_pop(L, 1);
             ok = 0;

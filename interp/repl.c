@@ -364,11 +364,11 @@ static int compile(lua_State *L, const char *src) {
     memcpy(expr, "return ", 7);
     memcpy(expr + 7, src, n);
     memcpy(expr + 7 + n, ";", 2);
-    int status = luaL_loadbuffer(L, expr, n + 8, "=stdin");
+    int status = luaL_loadbufferx(L, expr, n + 8, "=stdin", "t");
     free(expr);
     if (status == LUA_OK) return status;
     lua_pop(L, 1);
-    return luaL_loadbuffer(L, src, n, "=stdin");
+    return luaL_loadbufferx(L, src, n, "=stdin", "t");   /* source only, as scripts (host.c) */
 }
 
 /* Is the message on top of the stack a syntax error at the end of the input? */

@@ -30,6 +30,17 @@ run "$POINTCALC" bil.lua;         expect_in err.txt "bil.lua:1: bilinear: argume
 run "$POINTCALC" -e 'pset(1)';    expect_rc 1 "-e error"; expect_in err.txt "(command line):1: pset: argument #2 (y) must be a number or a point, got nil" "-e error"
 expect_no_file pointcalc.png "no output after an error"
 
+# --- a precompiled chunk is refused, not run: Lua does not verify bytecode, and a damaged
+# binary file would crash the interpreter ---
+"$POINTCALC" -e 'local f = io.open("dumped.lua", "wb") f:write(string.dump(function() print("ran") end)) f:close()'
+run "$POINTCALC" dumped.lua;      expect_rc 1 "precompiled chunk"
+expect_in err.txt "cannot run 'dumped.lua': it is a precompiled Lua chunk; pointcalc runs source scripts" "precompiled chunk message"
+expect_eq "$(cat out.txt)" "" "a precompiled chunk does not run"
+run "$POINTCALC" -e "$(printf '\033Lua')"; expect_rc 1 "binary -e chunk"
+expect_in err.txt "binary chunk" "binary -e chunk message"
+head -c 2000 /dev/urandom > noise.lua
+run "$POINTCALC" noise.lua;       expect_rc 1 "binary garbage as a script"
+
 # --- several -o at once; exact pixels through PPM ---
 printf 'pset(3, 0, 14)\nline(0, 1, 639, 1, 4)\n' > draw.lua
 run "$POINTCALC" -o a.png -o a.svg draw.lua -o a.ppm
