@@ -217,8 +217,10 @@ int main(int argc, char **argv) {
             ok = host_pcall(L, n);
         }
         ran_something = 1;
-    } else if (ok && !ran_something && !isatty(STDIN_FILENO)) {
-        ok = host_load_script(L, "-", o.qbasic) && host_pcall(L, 0);   /* like lua: read stdin */
+    } else if (ok && !ran_something && !o.interactive && !isatty(STDIN_FILENO)) {
+        /* like lua: standard input is the script, unless -i (or --watch) asked for the REPL,
+         * which then reads it */
+        ok = host_load_script(L, "-", o.qbasic) && host_pcall(L, 0);
         ran_something = 1;
     }
     int repl = ok && (o.interactive || !ran_something);

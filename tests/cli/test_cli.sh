@@ -90,6 +90,11 @@ printf 'print(6 * 7)\n' | "$POINTCALC" - >out.txt 2>err.txt; rc=$?
 expect_rc 0 "script from stdin"; expect_eq "$(cat out.txt)" "42" "script from stdin"
 printf 'print(2 + 2)\n' | "$POINTCALC" >out.txt 2>err.txt
 expect_eq "$(cat out.txt)" "4" "stdin without a terminal"
+# -i asks for the REPL: it reads the piped lines (as lua5.4 -i does), not a script from them
+printf 'mid(P(0, 0), P(4, 2))\n:help lerp\n' | "$POINTCALC" -i >out.txt 2>err.txt; rc=$?
+expect_rc 0 "-i with piped input"
+expect_in out.txt "P(2, 1)" "-i with piped input: an expression prints its value"
+expect_in out.txt "lerp(A, B, t)" "-i with piped input: a command"
 
 # --- the Lua module in the stock interpreter ---
 # a sanitizer build of the module needs the sanitizer runtime loaded before lua5.4 starts
