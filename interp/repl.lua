@@ -22,15 +22,22 @@ local MAX_ITEMS = 8      -- elements shown of a table
 local MAX_WIDTH = 100    -- characters of a table summary
 local MAX_STRING = 40    -- characters of a string inside a summary
 
--- Names of the functions reachable from the globals (math.sin, qb.rnd, lerp), for printing.
+-- Names of the functions reachable from the globals (math.sin, qb.rnd, lerp), for printing:
+-- the documented name when there is one (a user's alias `f = lerp` still prints as lerp), else
+-- the shortest.
 local function function_names()
   local names = {}
+  local function better(name, old)
+    local documented, was = help.by_name[name] ~= nil, help.by_name[old] ~= nil
+    if documented ~= was then return documented end
+    return #name < #old
+  end
   local function scan(t, prefix, depth)
     for k, v in pairs(t) do
       if type(k) == "string" and k:match("^[%a_][%w_]*$") then
         local name = prefix .. k
         if type(v) == "function" then
-          if not names[v] or #name < #names[v] then names[v] = name end
+          if not names[v] or better(name, names[v]) then names[v] = name end
         elseif type(v) == "table" and depth > 0 and v ~= _G and k ~= "package" and k ~= "loaded" then
           scan(v, name .. ".", depth - 1)
         end

@@ -118,6 +118,10 @@ for i = 1, 100000 do big[i] = i end
 local text = repl.results(big)
 check.eq(text, "table: 100000 items {1, 2, 3, 4, 5, 6, 7, 8, ...}", "a huge table is summarised")
 check.truthy(repl.results(lerp):find("lerp(A, B, t)", 1, true), "a documented function shows its signature")
+fl = lerp   -- a user's shorter alias must not hide the documented name
+check.truthy(repl.results(lerp):find("^function lerp%(A, B, t%)"), "an aliased function keeps its signature")
+check.truthy(repl.results(fl):find("^function lerp%(A, B, t%)"), "the alias shows the documented function")
+fl = nil
 check.truthy(repl.results({P(1, 2), {1}}) == "table: 2 items {P(1, 2), {...}}", "nested values are brief")
 
 -- completion candidates (repl.complete(text, line_before_text))
