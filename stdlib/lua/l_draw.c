@@ -45,10 +45,12 @@ static int check(lua_State *L, pc_canvas *c, int rc) {
     lua_Debug ar;
     const char *name = "draw";
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
-    /* core messages that already start with the statement's name keep it */
-    size_t n = strlen(name);
-    if (strncmp(c->error, name, n) == 0 && c->error[n] == ':') return pcl_error(L, "%s", c->error);
-    return pcl_error(L, "%s: %s", name, c->error);
+    /* a core message may start with the core statement's name ("pset: coordinates ...");
+     * the caller's name replaces it, so preset reports as preset and line_to as line_to */
+    const char *msg = c->error, *colon = strstr(msg, ": ");
+    if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg))
+        msg = colon + 2;
+    return pcl_error(L, "%s: %s", name, msg);
 }
 
 /* An optional colour: none/nil means the default (-1 for the core). */

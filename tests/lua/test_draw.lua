@@ -133,6 +133,9 @@ check.eq(point(639, 479), 0, "the view is still the whole screen")
 -- a finite coordinate that WINDOW maps beyond any double: an error, no pixel anywhere
 window(0, 0, 1, 1)
 check.err(function() pset(1e308, 0) end, "pset: coordinates (1e+308, 0) are too far outside the window", "window overflow")
+check.err(function() preset(1e308, 0) end, ": preset: coordinates (1e+308, 0) are too far", "preset names itself")
+check.err(function() line_to(1e308, 0) end, ": line_to: coordinates (1e+308, 0) are too far", "line_to names itself")
+check.err(function() circle(0, 0, 1e308) end, ": circle: radius 1e+308 is too large for the window", "radius overflow")
 check.err(function() window(-1e308, 0, 1e308, 1) end, "window: window (-1e+308, 0)-(1e+308, 1) is too large", "huge window")
 window()
 
