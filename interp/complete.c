@@ -57,38 +57,58 @@ static char **finish(list *l) {
     return l->v;
 }
 
-/* File names.  libedit's word stops at '/' or '-', so the argument is taken whole from the
- * line (the text after the last blank) and the candidates are cut back to the part that
- * replaces `text`. */
+/* File names.  libedit's word stops at '/', '-', blanks and quotes, so the argument is taken
+ * whole from the line and the candidates are cut back to the part that replaces `text`.  The
+ * REPL's commands read a quoted argument as one (split_args in repl.lua), so an argument that
+ * starts with an open quote may hold blanks, and a name with a blank gets an opening quote
+ * when completion starts it (and a closing one when it is finished). */
 static char **files(const char *text, const char *before) {
-    const char *p = before + strlen(before);
-    while (p > before && p[-1] != ' ' && p[-1] != '\t') p--;
+    const char *arg = before;   /* the first argument: after the :command word */
+    while (*arg == ' ' || *arg == '\t') arg++;
+    while (*arg && *arg != ' ' && *arg != '\t') arg++;
+    while (*arg == ' ' || *arg == '\t') arg++;
+    char quote = (*arg == '"' || *arg == '\'') && !strchr(arg + 1, *arg) ? *arg : 0;
+    const char *p = quote ? arg + 1 : before + strlen(before);
+    if (!quote)
+        while (p > before && p[-1] != ' ' && p[-1] != '\t') p--;
     size_t plen = strlen(p);
     char *full = malloc(plen + strlen(text) + 1);
     if (!full) return NULL;
     memcpy(full, p, plen);
     strcpy(full + plen, text);
     list l = {0};
-    int dirs = 0;
+    int dirs = 0, blanks = 0;
     char *m;
     for (int i = 0; (m = rl_filename_completion_function(full, i)) != NULL; i++) {
         struct stat st;
         int dir = stat(m, &st) == 0 && S_ISDIR(st.st_mode);
         size_t n = strlen(m);
         if (n >= plen) {
-            char *s = malloc(n - plen + 2);
+            char *s = malloc(n - plen + 4);
             if (s) {
                 strcpy(s, m + plen);
                 if (dir && (n == 0 || m[n - 1] != '/')) strcat(s, "/");
                 push(&l, s);
+                blanks += strpbrk(m, " \t") != NULL;
             }
         }
         dirs += dir;
         free(m);
     }
     free(full);
-    /* a unique file is followed by a space, a unique folder is not: its files come next */
-    rl_completion_append_character = l.n == 1 && !dirs ? ' ' : 0;
+    /* a name with a blank, begun unquoted at the start of the argument: open a quote */
+    if (!quote && blanks && plen == 0 && p == arg) {
+        quote = '"';
+        for (int i = 1; i <= l.n; i++) {
+            memmove(l.v[i] + 1, l.v[i], strlen(l.v[i]) + 1);
+            l.v[i][0] = quote;
+        }
+    }
+    /* a unique file is finished (closing quote, then a space); a unique folder is not: its
+     * files come next */
+    int done = l.n == 1 && !dirs;
+    if (done && quote) strncat(l.v[1], &quote, 1);
+    rl_completion_append_character = done ? ' ' : 0;
     return finish(&l);
 }
 

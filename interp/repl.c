@@ -233,11 +233,13 @@ static int n_save(lua_State *L) {
     const char *path = luaL_checkstring(L, 1);
     const char *t = luaL_optstring(L, 2, NULL);
     pc_theme theme = pcl_theme(L);
+    char err[512];
     if (t && !strcmp(t, "paper")) theme = PC_THEME_PAPER;
     else if (t && !strcmp(t, "screen")) theme = PC_THEME_SCREEN;
-    else if (t) return luaL_error(L, "the theme must be paper or screen, got '%s'", t);
-    char err[512];
-    if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
+    if (t && strcmp(t, "paper") && strcmp(t, "screen"))
+        snprintf(err, sizeof err, "cannot write '%s': the theme must be paper or screen, got '%s'",
+                 path, t);
+    else if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
         snprintf(err, sizeof err, "cannot write '%s': the extension must be .png, .svg or .ppm", path);
     else if (pc_write_file(pcl_canvas(L), path, theme, err, sizeof err) == PC_DRAW_OK) {
         pcl_canvas(L)->dirty = 0;

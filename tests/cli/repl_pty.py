@@ -259,6 +259,9 @@ def main():
     expect(out == "wrote c.ppm" and os.path.exists("c.ppm"), ":save writes the file", repr(out))
     out = r.line(":save c.png")
     expect(open("c.png", "rb").read(8) == b"\x89PNG\r\n\x1a\n", ":save writes a PNG", repr(out))
+    out = r.line(":save c2.png blue")
+    expect(out == "cannot write 'c2.png': the theme must be paper or screen, got 'blue'"
+           and not os.path.exists("c2.png"), ":save with an unknown theme", repr(out))
     out = r.line(":show 40")
     lines = out.split("\n")
     want = braille_from_ppm("c.ppm", 40, 8.0)
@@ -298,6 +301,18 @@ def main():
     out = r.line(":load bad.lua")
     expect(out.startswith("bad.lua:1: bad script\nstack traceback:") and "bad.lua:2: in main chunk" in out
            and "repl.lua" not in out, ":load shows the script's error and its lines only", repr(out))
+    # Tab completes file names after :load and :save; a name with a blank gets a quote, which
+    # the command reads as one argument, also when the user typed the quote
+    out = r.answer(":load tr\t\r")
+    expect(out == "triangle drawn", "Tab completes a file name after :load", repr(out))
+    os.makedirs("my pics", exist_ok=True)
+    out = r.answer(":save my\tring.ppm\r")
+    expect(out == "wrote my pics/ring.ppm" and os.path.exists("my pics/ring.ppm"),
+           "Tab quotes a folder name with a blank", repr(out))
+    with open("my pics/tri 2.lua", "w") as f:
+        f.write("print('second triangle')\n")
+    out = r.answer(':load "my p\ttri\t\r')
+    expect(out == "second triangle", "Tab completes inside a quoted file name", repr(out))
     out = r.line(":load missing.lua")
     expect("cannot open 'missing.lua'" in out, ":load of a missing file", repr(out))
     r.line("window(0, 0, 64, 48)")
