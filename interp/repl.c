@@ -217,7 +217,7 @@ static int n_show(lua_State *L) {
     double scale = pc_braille_fit(c->width, c->height, max_cols, max_rows, &cols, &rows);
     pc_braille_cell *cells = malloc((size_t)cols * rows * sizeof *cells);
     if (!cells) return luaL_error(L, "out of memory");
-    pc_braille_render(c, c->bg, scale, cols, rows, cells);
+    pc_braille_render(c, c->paper, scale, cols, rows, cells);
     pc_braille_print(stdout, cells, cols, rows, c->palette, terminal_colors(), 1);
     int ink = 0;
     for (int i = 0; i < cols * rows; i++) ink |= cells[i].bits;

@@ -72,7 +72,7 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->ncolors = ncolors;
     pc_palette_default(c->palette, ncolors);
     c->fg = ncolors - 1 < 15 ? ncolors - 1 : 15;
-    c->bg = 0;
+    c->bg = c->paper = 0;
     c->has_window = c->window_screen = 0;
     c->view = (pc_rect){0, 0, width - 1, height - 1};
     c->view_screen = 0;

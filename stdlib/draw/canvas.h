@@ -63,6 +63,9 @@ typedef struct pc_canvas {
     uint8_t *pixels;        /* width*height attributes, row-major, y down */
     pc_rgb palette[256];    /* attribute -> colour */
     int fg, bg;             /* current foreground, background (CLS) attributes */
+    int paper;              /* the attribute the whole screen was last cleared to (SCREEN, a
+                               full-screen CLS): what a preview counts as empty.  COLOR's
+                               background only takes effect at the next CLS */
 
     /* the graphics cursor: last point referenced (QBasic LINE -(x,y), STEP), in world units */
     double last_x, last_y;

@@ -252,6 +252,7 @@ int pc_cls(pc_canvas *c) {
         c->nclips = 0;
         pc_push_clip(c);
         memset(c->pixels, c->bg, (size_t)c->width * c->height);
+        c->paper = c->bg;
         c->version++;   /* the picture changed even when no operation is recorded */
         if (c->bg != 0) {
             int ok = pc_fill_view(c, c->bg);

@@ -425,7 +425,9 @@ static void test_cls_and_display_list(void **state) {
     /* after CLS the cursor is the centre of the screen */
     assert_true(c->last_x == 4.5 && c->last_y == 4.5);
     pc_color(c, 9, 4);
+    assert_int_equal(c->paper, 0);      /* COLOR's background waits for the next CLS */
     pc_cls(c);
+    assert_int_equal(c->paper, 4);
     assert_int_equal(count(c, 4), 100);
     assert_int_equal(c->nops, 1);
     assert_int_equal(c->ops[0].kind, PC_OP_CLEAR);
