@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <lauxlib.h>
 #include "host.h"
@@ -123,9 +124,14 @@ static int parse(int argc, char **argv, options *o) {
         argv[out] = NULL;
     }
     if (o->script && (ends_with(o->script, ".bas"))) o->qbasic = 1;
-    if (o->script && strcmp(o->script, "-") && access(o->script, R_OK) != 0) {
-        fprintf(stderr, "%s: cannot open '%s': %s\n", host_progname, o->script, strerror(errno));
-        return 2;
+    if (o->script && strcmp(o->script, "-")) {
+        struct stat st;   /* a folder opens and then fails to read: say so now */
+        int e = access(o->script, R_OK) != 0 ? errno : 0;
+        if (!e && stat(o->script, &st) == 0 && S_ISDIR(st.st_mode)) e = EISDIR;
+        if (e) {
+            fprintf(stderr, "%s: cannot open '%s': %s\n", host_progname, o->script, strerror(e));
+            return 2;
+        }
     }
     if (o->emit_lua && !o->script) return usage_error("%s", "--emit-lua needs a QBasic program");
     return -1;

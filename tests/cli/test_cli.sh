@@ -10,6 +10,9 @@ expect_in err.txt "cannot write 'pic.gif': the extension must be .png, .svg or .
 run "$POINTCALC" -o;              expect_rc 2 "-o without a file"
 run "$POINTCALC" no_such_script.lua; expect_rc 2 "missing script"
 expect_in err.txt "cannot open 'no_such_script.lua'" "missing script"
+mkdir folder.lua
+run "$POINTCALC" folder.lua;      expect_rc 2 "a folder as the script"
+expect_in err.txt "cannot open 'folder.lua': Is a directory" "a folder as the script"
 
 # --- script errors: file:line: message and a traceback, exit 1 ---
 printf 'local a = 1\n\nerror("boom")\n' > err.lua
