@@ -704,6 +704,11 @@ function M.generate(prog, chunkname)
       if op == "+" or op == "-" then
         local code = emit_value(e.a, 10, ex) .. " " .. op .. " " .. emit_value(e.b, 11, ex)
         return wrap(code, 10, min), 10
+      elseif op == "*" and (e.ty == "int" or e.ty == "long") then
+        -- INTEGER and LONG products are checked as in QBasic (Overflow): unchecked, Lua's
+        -- 64-bit integers would wrap around (65536& ^ 4 gives 0)
+        local f = e.ty == "int" and "imul" or "lmul"
+        return f .. "(" .. emit_value(e.a, 0, ex) .. ", " .. emit_value(e.b, 0, ex) .. ")", 20
       elseif op == "*" then
         local code = emit_value(e.a, 11, ex) .. " * " .. emit_value(e.b, 12, ex)
         return wrap(code, 11, min), 11
@@ -1422,8 +1427,9 @@ function M.generate(prog, chunkname)
       if a.dimmed then
         decl = decl .. " local " .. a.lua
       else
+        -- an array used without DIM: subscripts OPTION BASE..10 in each dimension
         local dims = {}
-        for i = 1, a.rank or 1 do dims[i] = "10" end
+        for i = 1, a.rank or 1 do dims[i] = prog.option_base == 1 and "{1, 10}" or "10" end
         decl = decl .. " local " .. a.lua .. " = " .. (a.ty == "string" and "dim_str" or "dim")
           .. "(" .. table.concat(dims, ", ") .. ")"
       end
@@ -1520,11 +1526,16 @@ function M.generate(prog, chunkname)
             and tok[2].t == "num" then
           num = { v = tok[1].v == "-" and -tok[2].v or tok[2].v, text = d.text, ty = tok[2].ty }
         end
-        if d.text == "" then v = "0"
+        if d.text == "" then v = '{0, ""}'        -- 0 for READ n, "" for READ s$
         elseif num and tonumber((d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e"))) then
           v = d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e")
         elseif num then v = exact_text(num.v)
         else v = lua_string(d.text) end
+        -- READ s$ of a number gets its text as written (DATA 007, 1.50): keep the text when
+        -- the number's own text differs
+        if num and num.v - num.v == 0 and rt.data_text(num.v) ~= d.text then
+          v = "{" .. v .. ", " .. lua_string(d.text) .. "}"
+        end
       else
         v = lua_string(d.text)
       end
@@ -1563,6 +1574,7 @@ function M.generate(prog, chunkname)
   end
   if #strs > 0 then info[#info + 1] = "strings = {" .. table.concat(strs, ", ") .. "}" end
   if #arrs > 0 then info[#info + 1] = "arrays = {" .. table.concat(arrs, ", ") .. "}" end
+  if #arrs > 0 and prog.option_base == 1 then info[#info + 1] = "base = 1" end
   if uses_stop then info[#info + 1] = "stops = true" end
 
   local prelude = "local _ENV = require(\"qbasic_rt\").new(_ENV, " .. lua_string(chunkname)

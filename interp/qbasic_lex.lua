@@ -70,6 +70,20 @@ local function lex_data(s, i)
   end
 end
 
+-- The value of &H/&O digits worth v (long: written with the & suffix), as QBasic reads them in
+-- programs and in VAL: an INTEGER, where &H8000..&HFFFF are the negative integers, unless the
+-- value needs a LONG or has the suffix (&HFFFFFFFF is -1).  Returns value, type; nil beyond
+-- 32 bits (Overflow).
+function M.radix_value(v, long)
+  local ty = (long or v > 0xFFFF) and "long" or "int"
+  if ty == "int" and v >= 0x8000 then v = v - 0x10000 end
+  if ty == "long" and v >= 0x80000000 then
+    if v > 0xFFFFFFFF then return nil end
+    v = v - 0x100000000
+  end
+  return v, ty
+end
+
 -- a number literal at position i; returns the token and the next position
 local function lex_number(s, i)
   local col = i
@@ -86,18 +100,14 @@ local function lex_number(s, i)
     end
     if not digits then lex_error("Syntax error", col) end
     j = j + #digits
-    local v = tonumber(digits, base)
     local sfx = s:sub(j, j)
-    local ty = "int"
-    if sfx == "&" then ty = "long"; j = j + 1
-    elseif sfx == "%" then j = j + 1 end
-    -- &H8000..&HFFFF are the negative integers, as in QBasic
-    if ty == "int" and v > 0xFFFF then ty = "long" end
-    if ty == "int" and v >= 0x8000 then v = v - 0x10000 end
-    if ty == "long" and v >= 0x80000000 then
-      if v > 0xFFFFFFFF then lex_error("Overflow", col) end
-      v = v - 0x100000000
+    if sfx == "&" or sfx == "%" then j = j + 1 end
+    -- (more than 11 significant digits would wrap around in tonumber: certainly an Overflow)
+    local v, ty
+    if #(digits:gsub("^0+", "")) <= 11 then
+      v, ty = M.radix_value(tonumber(digits, base), sfx == "&")
     end
+    if not v then lex_error("Overflow", col) end
     return { t = "num", v = v, ty = ty, text = s:sub(col, j - 1), col = col }, j
   end
   local mant = s:match("^%d*%.?%d*", i)

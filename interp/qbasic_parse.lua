@@ -409,8 +409,9 @@ function M.parse(source, opts)
   end
 
   local function label_name(t)
+    -- QBasic's line numbers are 0..65529
     if t.t == "num" and (t.ty == "int" or t.ty == "long" or t.ty == "single" or t.ty == "double")
-        and t.v == math.floor(t.v) and t.v >= 0 then
+        and t.v == math.floor(t.v) and t.v >= 0 and t.v <= 65529 then
       return string.format("%d", t.v)
     elseif t.t == "id" and not t.sfx then
       return t.v
@@ -473,6 +474,8 @@ function M.parse(source, opts)
         repeat
           local t = nexttok()
           if t.t ~= "id" then err() end
+          -- a module CONST is visible in every procedure: a parameter may not reuse its name
+          if prog.consts[t.v] then err("Duplicate definition") end
           local p = { name = t.v, text = t.text, sfx = t.sfx }
           if accept_op("(") then expect_op(")"); p.array = true end
           if accept_kw("as") then

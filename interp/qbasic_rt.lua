@@ -15,15 +15,16 @@ local M = {}
 -- keeps user names clear of these
 M.names = {
   "csng", "cint", "clng", "cdbl", "sin", "cos", "tan", "atn", "sqr", "exp", "log", "abs", "int",
-  "fix", "sgn", "rnd", "timer", "randomize", "div", "idiv", "mod", "pow", "band", "bor", "bxor",
-  "bnot", "beqv", "bimp", "truth", "both", "either", "for_test", "len", "left", "right", "mid",
-  "str", "val", "chr", "asc", "space", "string_", "lcase", "ucase", "ltrim", "rtrim", "instr",
-  "hex", "oct", "dim", "dim_str", "lbound", "ubound", "read_number", "read_string", "restore",
+  "fix", "sgn", "rnd", "timer", "randomize", "div", "idiv", "mod", "pow", "imul", "lmul",
+  "band", "bor", "bxor", "bnot", "beqv", "bimp", "truth", "both", "either", "for_test", "len",
+  "left", "right", "mid", "str", "val", "chr", "asc", "space", "string_", "lcase", "ucase",
+  "ltrim", "rtrim", "instr", "hex", "oct", "dim", "dim_str", "lbound", "ubound", "read_number", "read_string", "restore",
   "qprint", "zone", "nonl", "tab", "spc", "dbl", "lng", "screen", "cls", "color", "palette",
   "pset", "preset", "line", "line_to", "circle", "paint", "point", "window", "view", "step_xy",
   "stop", "return_without_gosub", "on_index", "run", "case", "on", "start", "_ENV", "_",
 }
 
+local radix_value = require("qbasic_lex").radix_value
 local floor, huge = math.floor, math.huge
 local IFC = "Illegal function call"
 
@@ -95,13 +96,24 @@ local function fmt_float(v, double)
 end
 M.fmt_float = fmt_float
 
-local function fmt_number(v, kind)
+-- PRINT and STR$ text of v as kind ("single", "double", "long"); a value beyond its type's
+-- range is QBasic's Overflow (raised at `level` as error() counts from the caller), never "inf"
+local function fmt_number(v, kind, level)
   if kind == "long" then
     return string.format("%d", v)
   end
-  if kind == "double" then return fmt_float(v, true) end
-  return fmt_float(lua_f32(v), false)
+  if kind ~= "double" then v = lua_f32(v) end
+  if v - v ~= 0 then error("Overflow", level + 1) end
+  return fmt_float(v, kind == "double")
 end
+
+-- READ s$ of a numeric DATA item: its text.  DATA items are numbers in the translation; an
+-- item whose text is not data_text(value) (DATA 007, 1.50, 3.5E2, an empty item) also carries
+-- its text, as {value, text}.
+local function data_text(v, level)
+  return fmt_number(v, v == floor(v) and math.abs(v) < 2 ^ 31 and "long" or "double", level + 1)
+end
+M.data_text = function(v) return data_text(v, 1) end
 
 local STOP = setmetatable({}, { __tostring = function() return "END" end })
 
@@ -145,6 +157,18 @@ function M.new(host, chunkname)
   function E.clng(x) local r = to_int(x, -2147483648, 2147483647, 2) return r end
   local function long(x, level) return to_int(x, -2147483648, 2147483647, level + 1) end
 
+  -- INTEGER and LONG products: computed in floating point (never wrapping around) and
+  -- checked against the type's range, as QBasic does
+  function E.imul(a, b)
+    local r = (a + 0.0) * b
+    if not (r >= -32768 and r <= 32767) then error("Overflow", 2) end
+    return math.tointeger(r) or r
+  end
+  function E.lmul(a, b)
+    local r = (a + 0.0) * b
+    if not (r >= -2147483648 and r <= 2147483647) then error("Overflow", 2) end
+    return math.tointeger(r) or r
+  end
   function E.div(a, b)
     if b == 0 then error("Division by zero", 2) end
     return a / b
@@ -198,7 +222,10 @@ function M.new(host, chunkname)
   function E.fix(x) if x >= 0 then return floor(x) end return math.ceil(x) end
   function E.sgn(x) if x > 0 then return 1 elseif x < 0 then return -1 end return 0 end
   function E.rnd(n) return R.rnd(n or 1) end
-  function E.randomize(n) R.randomize(n) end
+  function E.randomize(n)
+    if n - n ~= 0 then error("Overflow", 2) end
+    R.randomize(n)
+  end
   function E.timer()
     local t = os.date("*t")
     return f32(t.hour * 3600 + t.min * 60 + t.sec)
@@ -210,8 +237,10 @@ function M.new(host, chunkname)
   end
 
   -- ---- strings ----------------------------------------------------------------------------
+  -- a length or count (LEFT$, SPACE$, STRING$...) is an INTEGER, as QBasic's strings are at
+  -- most 32767 characters: SPACE$(2000000000) is Overflow, not 2 GB of spaces
   local function count(n, level)
-    local r = long(n, level + 1)
+    local r = to_int(n, -32768, 32767, level + 1)
     if r < 0 then error(IFC, level + 1) end
     return r
   end
@@ -226,16 +255,24 @@ function M.new(host, chunkname)
     return s:sub(start, start + n - 1)
   end
   function E.str(x, kind)
-    local t = fmt_number(x, kind)
+    local t = fmt_number(x, kind, 2)
     if t:sub(1, 1) ~= "-" then t = " " .. t end
     return t
   end
   function E.val(s)
     s = s:gsub("[ \t\n]", "")
-    local h = s:match("^&[Hh](%x+)")
-    if h then return tonumber(h, 16) end
-    local o = s:match("^&[Oo]?([0-7]+)")
-    if o then return tonumber(o, 8) end
+    -- &H and &O numbers as in a program: VAL("&HFFFF") is -1, VAL("&HFFFF&") 65535
+    local digits, long = s:match("^&[Hh](%x+)(&?)")
+    local base = 16
+    if not digits then digits, long = s:match("^&[Oo]?([0-7]+)(&?)"); base = 8 end
+    if digits then
+      local v
+      if #(digits:gsub("^0+", "")) <= 11 then
+        v = radix_value(tonumber(digits, base), long == "&")
+      end
+      if not v then error("Overflow", 2) end
+      return v
+    end
     local num = s:match("^[+-]?%d*%.?%d*[eEdD][+-]?%d+") or s:match("^[+-]?%d*%.?%d*")
     num = num:gsub("[dD]", "e")
     return tonumber(num) or 0
@@ -355,16 +392,19 @@ function M.new(host, chunkname)
   end
   function E.read_number()
     local v, line = next_item(2)
+    if type(v) == "table" then v = v[1] end
     if type(v) ~= "number" then
       -- QBasic reports a non-numeric item against the DATA line
       error(chunkname .. ":" .. line .. ": Syntax error", 0)
     end
+    if v - v ~= 0 then error("Overflow", 2) end     -- DATA 1D400
     return v
   end
   function E.read_string()
     local v = next_item(2)
+    if type(v) == "table" then return v[2] end
     if type(v) == "number" then
-      local s = fmt_number(v, v == floor(v) and math.abs(v) < 2 ^ 31 and "long" or "double")
+      local s = data_text(v, 2)
       return s
     end
     return v
@@ -400,7 +440,7 @@ function M.new(host, chunkname)
         write(v)
       elseif tv == "number" then
         -- SINGLE (and INTEGER, which prints the same); LONG and DOUBLE come marked
-        local s = fmt_number(v, "single")
+        local s = fmt_number(v, "single", 2)
         write((v >= 0 and " " or "") .. s .. " ")
       elseif v == ZONE then
         write(string.rep(" ", 14 - col % 14))
@@ -419,7 +459,7 @@ function M.new(host, chunkname)
           if c < 0 then c = 0 end
           write(string.rep(" ", c))
         else
-          local s = fmt_number(v.v, m)
+          local s = fmt_number(v.v, m, 2)
           write((v.v >= 0 and " " or "") .. s .. " ")
         end
       end
@@ -559,7 +599,8 @@ function M.new(host, chunkname)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
 
   -- run(program, info): info.data = {[line] = {items}}, info.data_labels = {label = index},
-  -- info.strings = {names}, info.arrays = {name = {rank [, "string"]}}
+  -- info.strings = {names}, info.arrays = {name = {rank [, "string"]}}, info.base = 1 after
+  -- OPTION BASE 1
   function E.run(program, info)
     info = info or {}
     if info.data then
@@ -581,9 +622,9 @@ function M.new(host, chunkname)
       if strings[k] then return "" end
       local a = arrays[k]
       if a then
-        -- an array used without DIM has subscripts 0..10
+        -- an array used without DIM has subscripts 0..10 (1..10 after OPTION BASE 1)
         local b = {}
-        for i = 1, a[1] do b[i] = 10 end
+        for i = 1, a[1] do b[i] = { info.base or 0, 10 } end
         local arr = dim(a[2] == "string" and "" or 0, 1, table.unpack(b))
         rawset(t, k, arr)
         return arr

@@ -8,3 +8,5 @@ PRINT 1 + 2 = 3 AND 4 > 5; NOT 1 = 2; (1 < 2) + (2 < 3)
 PRINT -(-3); 2 * -3; -2 * -3; (-2) ^ 2; (-8) ^ (1 / 1)
 a = 3: b = 4: PRINT SQR(a * a + b * b); ABS(-2.5); INT(-2.5); FIX(-2.5); SGN(-7); CINT(2.5); CINT(3.5)
 PRINT "ab" + "cd"; "a" < "b"; "abc" = "abc"
+' INTEGER and LONG products up to the type's limits (beyond: Overflow, errors/overflow_product.bas)
+PRINT 181 * 181; -128 * 256; 46340& * 46340; 65536 * -32768; 3 * 2.5

@@ -7,3 +7,5 @@ PRINT CHR$(65); ASC("a"); UCASE$("abc"); LCASE$("DEF")
 PRINT INSTR(b$, "o"); INSTR(6, b$, "o"); HEX$(255); SPACE$(2); "|"; STRING$(3, "*"); STRING$(2, 66)
 PRINT LTRIM$("  x"); RTRIM$("y  "); "|"; OCT$(8); HEX$(-1)
 IF a$ < b$ THEN PRINT "shorter sorts first"
+' VAL reads &H and &O as a program does: &HFFFF is the INTEGER -1, &HFFFF& the LONG 65535
+PRINT VAL("&HFFFF"); VAL("&HFFFF&"); VAL("&h1F"); VAL("&H10000"); VAL("&O17"); VAL("&777")
