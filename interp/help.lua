@@ -298,7 +298,7 @@ area("qb", "QBasic numbers (qb.*)",
   nil)
 
 def("qb.f32", "qb.f32(x) -> number",
-  "x rounded to QBasic's SINGLE (IEEE float32).")
+  "x rounded to QBasic's SINGLE (IEEE float32); beyond the SINGLE range (about 3.4E+38) it is +-inf, as a float32 is (translated QBasic reports Overflow).")
 def("qb.cint", "qb.cint(x) -> integer, ok",
   "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow.")
 def("qb.clng", "qb.clng(x) -> integer, ok",

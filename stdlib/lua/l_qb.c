@@ -14,14 +14,28 @@
 #include "pcl.h"
 #include "qbnum.h"
 
+/* A number argument, or the house error naming it ("f32: argument #1 (x) must be a number"). */
+static double number_arg(lua_State *L, int arg, const char *what) {
+    int isnum;
+    double v = lua_tonumberx(L, arg, &isnum);
+    if (!isnum) pcl_argerror(L, arg, what, "a number");
+    return v;
+}
+
+static double finite_arg(lua_State *L, int arg, const char *what) {
+    double v = number_arg(L, arg, what);
+    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
+    return v;
+}
+
 static int l_f32(lua_State *L) {
-    lua_pushnumber(L, qb_f32(luaL_checknumber(L, 1)));
+    lua_pushnumber(L, qb_f32(number_arg(L, 1, "x")));
     return 1;
 }
 
 static int push_rounded(lua_State *L, double (*fn)(double, int *)) {
     int ok;
-    double r = fn(luaL_checknumber(L, 1), &ok);
+    double r = fn(number_arg(L, 1, "x"), &ok);
     if (ok) lua_pushinteger(L, (lua_Integer)r);
     else lua_pushnumber(L, r);
     lua_pushboolean(L, ok);
@@ -35,13 +49,13 @@ static qb_rnd_state *rnd_state(lua_State *L) {
 }
 
 static int l_rnd(lua_State *L) {
-    double n = luaL_optnumber(L, 1, 1.0);
+    double n = lua_isnoneornil(L, 1) ? 1.0 : number_arg(L, 1, "n");
     lua_pushnumber(L, qb_rnd(rnd_state(L), n));
     return 1;
 }
 
 static int l_randomize(lua_State *L) {
-    qb_randomize(rnd_state(L), luaL_checknumber(L, 1));
+    qb_randomize(rnd_state(L), finite_arg(L, 1, "n"));
     return 0;
 }
 
@@ -49,8 +63,9 @@ static int l_seed(lua_State *L) {
     qb_rnd_state *s = rnd_state(L);
     lua_pushinteger(L, s->seed);
     if (!lua_isnoneornil(L, 1)) {
-        lua_Integer v = luaL_checkinteger(L, 1);
-        if (v < 0 || v > 0xFFFFFF) return pcl_argerror(L, 1, "seed", "an integer 0..16777215");
+        double v = number_arg(L, 1, "seed");
+        if (!(v >= 0 && v <= 0xFFFFFF && v == floor(v)))
+            return pcl_argerror(L, 1, "seed", "an integer 0..16777215");
         s->seed = (uint32_t)v;
     }
     return 1;
@@ -62,14 +77,6 @@ static int range_iter(lua_State *L) {
     if (!qb_range_next(r, &v)) return 0;
     lua_pushnumber(L, v);
     return 1;
-}
-
-static double finite_arg(lua_State *L, int arg, const char *what) {
-    int isnum;
-    double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum) pcl_argerror(L, arg, what, "a number");
-    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
-    return v;
 }
 
 static int l_range(lua_State *L) {

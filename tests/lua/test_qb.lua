@@ -7,6 +7,7 @@ check.eq(qb.f32(0.5), 0.5, "f32 exact")
 check.eq(qb.f32(0.1), 0.10000000149011612, "f32(.1)")
 check.eq(qb.f32(4 * math.atan(1)), 3.1415927410125732, "f32(pi)")
 check.eq(qb.f32(16777217), 16777216.0, "f32 of 2^24 + 1")
+check.eq(qb.f32(-1e39), -math.huge, "f32 beyond the SINGLE range is -inf (documented)")
 
 -- cint/clng: ties to even, overflow flag
 local v, ok = qb.cint(2.5)
@@ -37,6 +38,20 @@ qb.seed(327680)
 qb.randomize(1)
 check.eq(qb.seed(), 0x3FF000, "RANDOMIZE 1")
 check.err(function() qb.seed(2 ^ 24) end, "seed", "seed out of range")
+
+-- arguments are checked in the house style, naming the argument and what is wrong
+check.err(function() qb.f32() end, "f32: argument #1 (x) must be a number, got nil", "f32()")
+check.err(function() qb.cint("x") end, "cint: argument #1 (x) must be a number, got string",
+  "cint of a string")
+check.err(function() qb.clng({}) end, "clng: argument #1 (x) must be a number", "clng of a table")
+check.err(function() qb.rnd("x") end, "rnd: argument #1 (n) must be a number, got string",
+  "rnd of a string")
+check.err(function() qb.randomize() end, "randomize: argument #1 (n) must be a number, got nil",
+  "randomize()")
+check.err(function() qb.randomize(1 / 0) end, "randomize: argument #1 (n) must be a finite number",
+  "randomize(inf)")
+check.err(function() qb.seed(1.5) end, "seed: argument #1 (seed) must be an integer 0..16777215",
+  "seed(1.5)")
 
 -- range: the float32 FOR loop of QBasic
 local n, lastt = 0, nil
