@@ -1,0 +1,2 @@
+' EXPECT: 2: COMMAND$ function: not supported by pointcalc
+a$ = COMMAND$
