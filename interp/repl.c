@@ -278,9 +278,9 @@ static int n_clear(lua_State *L) {
     pc_rect v = c->view;
     int vs = c->view_screen;
     int full = v.x0 == 0 && v.y0 == 0 && v.x1 == c->width - 1 && v.y1 == c->height - 1;
-    if (!full) pc_view_reset(c);
+    int rc = full ? PC_DRAW_OK : pc_view_reset(c);
     double lx = c->last_x, ly = c->last_y;
-    int rc = pc_cls(c);
+    if (rc == PC_DRAW_OK) rc = pc_cls(c);
     if (rc == PC_DRAW_OK && !full) rc = pc_view(c, v.x0, v.y0, v.x1, v.y1, -1, -1, vs);
     c->last_x = lx;
     c->last_y = ly;

@@ -265,6 +265,19 @@ void pc_window_reset(pc_canvas *c) {
     pc_reset_cursor(c);
 }
 
+/* Make r the view.  Its clip rectangle is recorded first: when the list of clips is full the
+ * view stays as it was, so the raster and the display list never disagree. */
+static int set_view(pc_canvas *c, pc_rect r, int screen) {
+    pc_rect old = c->view;
+    c->view = r;
+    if (pc_push_clip(c) != PC_DRAW_OK) {
+        c->view = old;
+        return PC_DRAW_ENOMEM;
+    }
+    c->view_screen = screen;
+    return PC_DRAW_OK;
+}
+
 int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, int screen) {
     pc_rect r = {x1 < x2 ? x1 : x2, y1 < y2 ? y1 : y2, x1 < x2 ? x2 : x1, y1 < y2 ? y2 : y1};
     if (r.x0 < 0 || r.y0 < 0 || r.x1 >= c->width || r.y1 >= c->height)
@@ -275,14 +288,11 @@ int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, 
     if (border >= 0) {
         /* the border is drawn just outside the viewport, where there is room */
         pc_rect full = {0, 0, c->width - 1, c->height - 1};
-        c->view = full;
-        if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+        if (set_view(c, full, c->view_screen) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
         int ok = pc_box_screen(c, r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1, border, 0);
         if (ok != PC_DRAW_OK) return ok;
     }
-    c->view = r;
-    c->view_screen = screen != 0;
-    if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+    if (set_view(c, r, screen != 0) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
     if (fill >= 0) {
         int ok = pc_fill_view(c, fill);
         if (ok != PC_DRAW_OK) return ok;
@@ -291,11 +301,11 @@ int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, 
     return PC_DRAW_OK;
 }
 
-void pc_view_reset(pc_canvas *c) {
-    c->view = (pc_rect){0, 0, c->width - 1, c->height - 1};
-    c->view_screen = 0;
-    pc_push_clip(c);
+int pc_view_reset(pc_canvas *c) {
+    if (set_view(c, (pc_rect){0, 0, c->width - 1, c->height - 1}, 0) != PC_DRAW_OK)
+        return PC_DRAW_ENOMEM;
     pc_reset_cursor(c);
+    return PC_DRAW_OK;
 }
 
 /* ---- colours ------------------------------------------------------------------------------ */

@@ -131,7 +131,9 @@ void pc_window_reset(pc_canvas *c);
 /* VIEW: viewport (x1,y1)-(x2,y2) in screen pixels; fill/border < 0 for none; screen != 0
  * keeps coordinates absolute. */
 int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, int screen);
-void pc_view_reset(pc_canvas *c);
+int pc_view_reset(pc_canvas *c);
+/* The display list holds at most 65535 clip rectangles (VIEW changes, deduplicated against
+ * the previous one); beyond, VIEW fails with PC_DRAW_ENOMEM and the view stays as it was. */
 
 /* Raw pixel access in screen pixels, clipped to the view: used by the rasteriser. */
 void pc_plot(pc_canvas *c, int x, int y, int color);

@@ -303,10 +303,7 @@ static int l_window(lua_State *L) {
 
 static int l_view(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (lua_isnone(L, 1)) {
-        pc_view_reset(c);
-        return 0;
-    }
+    if (lua_isnone(L, 1)) return check(L, c, pc_view_reset(c));
     int arg = 1;
     double x1, y1, x2, y2;
     pcl_checkxy(L, &arg, &x1, &y1, "first corner");

@@ -378,6 +378,26 @@ static void test_view_and_point(void **state) {
     pc_canvas_free(c);
 }
 
+/* The list of clip rectangles is bounded; when it is full, VIEW and its reset fail and leave
+ * the view as it was, so what is rasterised and what the display list records agree. */
+static void test_view_limit(void **state) {
+    (void)state;
+    pc_canvas *c = small(10, 10);
+    int ok = PC_DRAW_OK, i;
+    for (i = 0; ok == PC_DRAW_OK; i++) ok = pc_view(c, i % 2, 0, 5 + i % 2, 5, -1, -1, 0);
+    assert_int_equal(ok, PC_DRAW_ENOMEM);
+    assert_non_null(strstr(c->error, "too many VIEW changes"));
+    assert_int_equal(c->nclips, 65535);
+    const pc_rect last = c->clips[c->nclips - 1];
+    assert_memory_equal(&c->view, &last, sizeof last);     /* the failed VIEW changed nothing */
+    assert_int_equal(pc_view_reset(c), PC_DRAW_ENOMEM);
+    assert_memory_equal(&c->view, &last, sizeof last);
+    pc_pset(c, 0, 0, 3);                                   /* relative to the view in force */
+    assert_int_equal(at(c, last.x0, 0), 3);
+    assert_int_equal(c->ops[c->nops - 1].clip, c->nclips - 1);
+    pc_canvas_free(c);
+}
+
 /* Dots of one colour share one DOTS operation (16 bytes a dot); a new colour, another
  * operation or a VIEW change starts a new run. */
 static void test_dot_runs(void **state) {
@@ -551,6 +571,7 @@ int main(void) {
         cmocka_unit_test(test_clipping),
         cmocka_unit_test(test_window_y_up),
         cmocka_unit_test(test_view_and_point),
+        cmocka_unit_test(test_view_limit),
         cmocka_unit_test(test_dot_runs),
         cmocka_unit_test(test_cls_and_display_list),
         cmocka_unit_test(test_lines_to_far_away),
