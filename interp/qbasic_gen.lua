@@ -219,7 +219,7 @@ end
 
 -- ---- literals ----------------------------------------------------------------------------
 
-local function f32(x) return (string.unpack("f", string.pack("f", x))) end
+local f32 = require("pointcalc").qb.f32     -- SINGLE rounding (stdlib/geom/qbnum.c)
 
 -- the shortest decimal text that reads back as exactly v
 local function exact_text(v)

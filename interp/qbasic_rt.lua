@@ -28,33 +28,11 @@ local radix_value = require("qbasic_lex").radix_value
 local floor, huge = math.floor, math.huge
 local IFC = "Illegal function call"
 
-local function lua_f32(x) return (string.unpack("f", string.pack("f", x))) end
-
--- QBasic's RND without the C core (stock Lua): same generator
-local function lua_rnd_state()
-  local seed = 327680
-  local st = {}
-  function st.rnd(n)
-    n = n or 1
-    local f = lua_f32(n)
-    if f ~= 0 then
-      if f < 0 then
-        local bits = string.unpack("<I4", string.pack("<f", f))
-        seed = ((bits & 0xFFFFFF) + (bits >> 24)) & 0xFFFFFF
-      end
-      seed = (seed * 16598013 + 12820163) & 0xFFFFFF
-    end
-    return seed / 16777216
-  end
-  function st.randomize(n)
-    local bits = string.unpack("<I8", string.pack("<d", n))
-    local hi = (bits >> 32) & 0xFFFFFFFF
-    hi = hi ~ (hi >> 16)
-    seed = ((hi & 0xFFFF) << 8) | (seed & 0xFF)
-  end
-  function st.seed(s) local old = seed; if s then seed = s end; return old end
-  return st
-end
+-- SINGLE rounding and QBasic's RND generator are the C core's (stdlib/geom/qbnum.c, as the qb
+-- table of pointcalc): the translated program and Lua scripts share one generator
+local pc = require("pointcalc")
+local qb = pc.qb
+local f32 = qb.f32
 
 local function round_even(x)
   local f = floor(x)
@@ -102,7 +80,7 @@ local function fmt_number(v, kind, level)
   if kind == "long" then
     return string.format("%d", v)
   end
-  if kind ~= "double" then v = lua_f32(v) end
+  if kind ~= "double" then v = f32(v) end
   if v - v ~= 0 then error("Overflow", level + 1) end
   return fmt_float(v, kind == "double")
 end
@@ -118,16 +96,8 @@ M.data_text = function(v) return data_text(v, 1) end
 local STOP = setmetatable({}, { __tostring = function() return "END" end })
 
 function M.new(host, chunkname)
-  local pc = package.loaded.pointcalc
-  if not pc then
-    local ok, m = pcall(require, "pointcalc")
-    if ok then pc = m end
-  end
-  local qb = pc and pc.qb
-  local f32 = qb and qb.f32 or lua_f32
-  local R = qb or lua_rnd_state()
   local function draw(name)
-    local f = host[name] or (pc and pc[name])
+    local f = host[name] or pc[name]
     if not f then
       return function() error("the pointcalc drawing layer is not loaded (" .. name .. ")", 3) end
     end
@@ -221,10 +191,10 @@ function M.new(host, chunkname)
   function E.int(x) return floor(x) end
   function E.fix(x) if x >= 0 then return floor(x) end return math.ceil(x) end
   function E.sgn(x) if x > 0 then return 1 elseif x < 0 then return -1 end return 0 end
-  function E.rnd(n) return R.rnd(n or 1) end
+  function E.rnd(n) return qb.rnd(n or 1) end
   function E.randomize(n)
     if n - n ~= 0 then error("Overflow", 2) end
-    R.randomize(n)
+    qb.randomize(n)
   end
   function E.timer()
     local t = os.date("*t")
@@ -631,7 +601,7 @@ function M.new(host, chunkname)
       end
       return 0
     end })
-    if qb then qb.seed(327680) end
+    qb.seed(327680)
     if info.stops then
       local ok, err = pcall(program)
       if not ok and err ~= STOP then error(err, 0) end
