@@ -28,8 +28,8 @@ long pc_px(double v) {
 static int finite2(double x, double y) { return isfinite(x) && isfinite(y); }
 
 static int too_far(pc_canvas *c, const char *stmt) {
-    return pc_fail(c, "%s: a segment with both ends beyond %g pixels from the screen cannot be "
-                      "placed to the pixel", stmt, HUGE_PX);
+    return pc_fail(c, "%s: the segment's ends lie too far out (beyond %g pixels, on a slant) to "
+                      "place it to the pixel", stmt, HUGE_PX);
 }
 
 /* A statement's point on the screen.  Its coordinates must be finite, and so must their image:
@@ -85,29 +85,45 @@ int pc_point(const pc_canvas *c, double x, double y) {
 /* ---- LINE ------------------------------------------------------------------------------ */
 
 /* Liang-Barsky: the parameters t0 <= t1 of the part of (x, y) + t (dx, dy), 0 <= t <= 1, inside
- * the rectangle; 0 if none. */
+ * the rectangle, and the edges that cut there (0: x = xmin, 1: x = xmax, 2: y = ymin,
+ * 3: y = ymax; -1: not cut); 0 if nothing is inside. */
 static int clip_params(double x, double y, double dx, double dy, double xmin, double ymin,
-                       double xmax, double ymax, double *t0, double *t1) {
+                       double xmax, double ymax, double *t0, double *t1, int *e0, int *e1) {
     const double p[4] = {-dx, dx, -dy, dy};
     const double q[4] = {x - xmin, xmax - x, y - ymin, ymax - y};
     *t0 = 0;
     *t1 = 1;
+    *e0 = *e1 = -1;
     for (int i = 0; i < 4; i++) {
         if (p[i] == 0) {
             if (q[i] < 0) return 0;
         } else {
             double r = q[i] / p[i];
-            if (p[i] < 0) { if (r > *t1) return 0; if (r > *t0) *t0 = r; }
-            else          { if (r < *t0) return 0; if (r < *t1) *t1 = r; }
+            if (p[i] < 0) { if (r > *t1) return 0; if (r > *t0) { *t0 = r; *e0 = i; } }
+            else          { if (r < *t0) return 0; if (r < *t1) { *t1 = r; *e1 = i; } }
         }
     }
     return 1;
 }
 
-/* Clip the segment to the rectangle; 0 if nothing is left.  A cut end is computed from the
- * original end nearer to it (the parameters are found from both sides), so its rounding error
- * is a step of its distance to that end: a segment from the screen to 1e300 keeps its exact
- * pixels.  Only a segment whose ends both lie far away is placed as roughly as they are. */
+/* Where the line through (rx, ry) with direction (dx, dy) crosses edge e: the edge's own
+ * coordinate exactly, the other one along the slope from (rx, ry), kept within the rectangle
+ * (rounding can only move it along the edge). */
+static void cut_at_edge(int e, double rx, double ry, double dx, double dy, double xmin,
+                        double ymin, double xmax, double ymax, double *x, double *y) {
+    if (e < 2) {
+        *x = e == 0 ? xmin : xmax;
+        *y = fmin(fmax(ry + (*x - rx) * (dy / dx), ymin), ymax);
+    } else {
+        *y = e == 2 ? ymin : ymax;
+        *x = fmin(fmax(rx + (*y - ry) * (dx / dy), xmin), xmax);
+    }
+}
+
+/* Clip the segment to the rectangle; 0 if nothing is left.  A cut end lies on the
+ * rectangle's edge and is computed from the original end nearer to it, so a segment from the
+ * screen to 1e300 keeps its exact pixels.  Off the true line it is by about a rounding step
+ * of that end's coordinates (see raster_line_f for when that is too much). */
 int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
                     double xmax, double ymax) {
     double dx = *x1 - *x0, dy = *y1 - *y0;
@@ -118,21 +134,16 @@ int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin,
         *x0 = a * 2; *y0 = b * 2; *x1 = d * 2; *y1 = e * 2;
         return 1;
     }
-    double t0, t1, r0, r1;   /* t from (x0, y0) forwards, r from (x1, y1) backwards */
-    if (!clip_params(*x0, *y0, dx, dy, xmin, ymin, xmax, ymax, &t0, &t1)) return 0;
-    if (!clip_params(*x1, *y1, -dx, -dy, xmin, ymin, xmax, ymax, &r0, &r1)) {
-        r0 = 1 - t1;   /* the two sides disagree only at a corner: the forward answer */
-        r1 = 1 - t0;
-    }
+    double t0, t1;
+    int e0, e1;
+    if (!clip_params(*x0, *y0, dx, dy, xmin, ymin, xmax, ymax, &t0, &t1, &e0, &e1)) return 0;
     const double ax = *x0, ay = *y0, bx = *x1, by = *y1;
-    if (t0 > 0) {
-        if (t0 <= r1) { *x0 = ax + t0 * dx; *y0 = ay + t0 * dy; }
-        else          { *x0 = bx - r1 * dx; *y0 = by - r1 * dy; }
-    }
-    if (r0 > 0) {
-        if (r0 <= t1) { *x1 = bx - r0 * dx; *y1 = by - r0 * dy; }
-        else          { *x1 = ax + t1 * dx; *y1 = ay + t1 * dy; }
-    }
+    if (e0 >= 0)
+        cut_at_edge(e0, t0 <= 0.5 ? ax : bx, t0 <= 0.5 ? ay : by, dx, dy, xmin, ymin, xmax, ymax,
+                    x0, y0);
+    if (e1 >= 0)
+        cut_at_edge(e1, t1 <= 0.5 ? ax : bx, t1 <= 0.5 ? ay : by, dx, dy, xmin, ymin, xmax, ymax,
+                    x1, y1);
     return 1;
 }
 
@@ -163,16 +174,21 @@ static void raster_line(pc_canvas *c, long x0, long y0, long x1, long y1, int co
 }
 
 /* A segment in screen coordinates.  One reaching far off screen is cut first (nearby ones keep
- * their exact pixels).  A cut is as exact as the nearer end is near (see pc_clip_segment): a
- * segment crossing the screen between two ends both beyond HUGE_PX pixels cannot be placed to
- * the pixel, and is refused (returns 0, nothing drawn). */
+ * their exact pixels).  A cut end is off the true line by about a rounding step of the
+ * nearer end's coordinates, each weighted by how much it moves the line sideways: nothing for
+ * an axis-parallel line, at most ~0.2 px while that end lies within HUGE_PX.  A segment for
+ * which even the better end gives more (both ends far out on a slant, e.g. +-1e20 on a
+ * diagonal) cannot be placed to the pixel and is refused: returns 0, nothing drawn. */
 static int raster_line_f(pc_canvas *c, double x0, double y0, double x1, double y1, int color) {
     const double far = 32768;
     if (fabs(x0) > far || fabs(y0) > far || fabs(x1) > far || fabs(y1) > far) {
-        int both_far = fmax(fabs(x0), fabs(y0)) > HUGE_PX && fmax(fabs(x1), fabs(y1)) > HUGE_PX;
+        /* the unit direction's components (halves: no overflow) weigh each coordinate */
+        double hx = x1 / 2 - x0 / 2, hy = y1 / 2 - y0 / 2, hl = hypot(hx, hy);
+        double wx = fabs(hy) / hl, wy = fabs(hx) / hl;
+        double side0 = fabs(x0) * wx + fabs(y0) * wy, side1 = fabs(x1) * wx + fabs(y1) * wy;
         if (!pc_clip_segment(&x0, &y0, &x1, &y1, -4.0, -4.0, c->width + 4.0, c->height + 4.0))
             return 1;
-        if (both_far) return 0;
+        if (fmin(side0, side1) > HUGE_PX) return 0;
     }
     raster_line(c, px(x0), px(y0), px(x1), px(y1), color);
     return 1;
