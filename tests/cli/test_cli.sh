@@ -41,8 +41,9 @@ expect_in err.txt "cannot run 'dumped.lua': it is a precompiled Lua chunk; point
 expect_eq "$(cat out.txt)" "" "a precompiled chunk does not run"
 run "$POINTCALC" -e "$(printf '\033Lua')"; expect_rc 1 "binary -e chunk"
 expect_in err.txt "binary chunk" "binary -e chunk message"
-head -c 2000 /dev/urandom > noise.lua
+printf 'pset(1, 1)\n\000\001\377\376\211PNG\n' > noise.lua
 run "$POINTCALC" noise.lua;       expect_rc 1 "binary garbage as a script"
+expect_in err.txt "noise.lua:2:" "binary garbage: the line of the first bad byte"
 
 # --- several -o at once; exact pixels through PPM ---
 printf 'pset(3, 0, 14)\nline(0, 1, 639, 1, 4)\n' > draw.lua
