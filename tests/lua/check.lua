@@ -32,6 +32,18 @@ function check.err(fn, text, what)
   end
 end
 
+-- check.same_within(tol) gives same(p, q, what [, tol]): two points or vectors equal within
+-- tol (pointcalc's near), tol defaulting to the given one
+local pc_near = near or require("pointcalc").near
+function check.same_within(default_tol)
+  return function(p, q, what, tol)
+    check.count = check.count + 1
+    if not pc_near(p, q, tol or default_tol) then
+      error(string.format("%s: got %s, want %s", what or "same", tostring(p), tostring(q)), 2)
+    end
+  end
+end
+
 function check.truthy(v, what)
   check.count = check.count + 1
   if not v then error((what or "truthy") .. ": got " .. show(v), 2) end

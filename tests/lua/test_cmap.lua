@@ -1,16 +1,10 @@
 -- Maps and numerics through Lua (docs/toolkit.md): squash/squash01 (examples 26-28), oblique
 -- and projection (examples 32-34), oresme (example 31), bisect (example 30), and their errors.
 local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
-local close = near
 local eq, near, err, truthy = check.eq, check.near, check.err, check.truthy
 local pi = math.pi
 
-local function same(p, q, what, tol)
-  check.count = check.count + 1
-  if not close(p, q, tol or 1e-9) then
-    error(string.format("%s: got %s, want %s", what, tostring(p), tostring(q)), 2)
-  end
-end
+local same = check.same_within(1e-9)             -- points/vectors equal within tol
 
 -- the plane onto the open square
 near(squash(0), 0, 0, "squash(0)"); near(squash(1), 1 / math.sqrt(2), 1e-15, "squash(1)")

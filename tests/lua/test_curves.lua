@@ -2,16 +2,10 @@
 -- 13, 33, 34), fourier (example 12), plot, the objects' each/draw, exact pixels, QBasic-faithful
 -- sampling, and the argument errors.
 local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
-local close = near   -- pointcalc's near(p, q, eps) for points
 local eq, near, err, truthy = check.eq, check.near, check.err, check.truthy
 local pi, cos, sin = math.pi, math.cos, math.sin
 
-local function same(p, q, what, tol)
-  check.count = check.count + 1
-  if not close(p, q, tol or 1e-9) then
-    error(string.format("%s: got %s, want %s", what, tostring(p), tostring(q)), 2)
-  end
-end
+local same = check.same_within(1e-9)             -- points/vectors equal within tol
 
 -- spline2: example 5 with the listing's arithmetic, t from -1 to 3 -----------------------------
 local p5, r, u0, u1 = 3.14159, 100, 7 * 3.14159 / 15, .9 * 3.14159

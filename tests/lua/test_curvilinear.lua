@@ -2,16 +2,10 @@
 -- 2), ruled and graphs with the clamps (examples 18-22), graph_on and patch (examples 23-25, 28,
 -- compared with example 28's own arithmetic), pre/post, grids and lenses as exact pixels.
 local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
-local close = near
 local eq, near, err, truthy = check.eq, check.near, check.err, check.truthy
 local pi, cos, sin = math.pi, math.cos, math.sin
 
-local function same(p, q, what, tol)
-  check.count = check.count + 1
-  if not close(p, q, tol or 1e-9) then
-    error(string.format("%s: got %s, want %s", what, tostring(p), tostring(q)), 2)
-  end
-end
+local same = check.same_within(1e-9)             -- points/vectors equal within tol
 
 -- curvilinear(f): points or numbers ------------------------------------------------------------------
 local C = curvilinear(function(t1, t2) return P(t1 + t2, t1 - t2) end)

@@ -4,10 +4,7 @@
 local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
 local eq, approx, err, truthy = check.eq, check.near, check.err, check.truthy
 
-local function same(p, q, what, tol)
-  check.count = check.count + 1
-  if not near(p, q, tol or 1e-12) then error(string.format("%s: got %s, want %s", what, tostring(p), tostring(q)), 2) end
-end
+local same = check.same_within(1e-12)             -- points/vectors equal within tol
 
 -- simplex CAB: M = (A - C)p + (B - C)q + C ---------------------------------------------------------
 local C, A, B = P(1, 1), P(5, 2), P(2, 4)
