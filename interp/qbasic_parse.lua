@@ -292,16 +292,21 @@ function M.parse(source, opts)
     return "long"
   end
 
-  local parse_unary
-  local function parse_pow_operand()
-    if accept_op("-") then
-      local a = parse_pow_operand()
-      check_num(a)
-      return { k = "neg", a = a, ty = a.ty }
+  -- unary - and + in front of what `operand` parses; QBasic also allows them right after ^
+  -- (2 ^ -1), where they apply to the exponent only
+  local function signed(operand)
+    local function parse()
+      if accept_op("-") then
+        local a = parse()
+        check_num(a)
+        return { k = "neg", a = a, ty = a.ty }
+      end
+      if accept_op("+") then return parse() end
+      return operand()
     end
-    if accept_op("+") then return parse_pow_operand() end
-    return parse_atom()
+    return parse
   end
+  local parse_pow_operand = signed(parse_atom)
   local function parse_pow()
     local a = parse_atom()
     while is_op("^") do
@@ -311,15 +316,7 @@ function M.parse(source, opts)
     end
     return a
   end
-  parse_unary = function()
-    if accept_op("-") then
-      local a = parse_unary()
-      check_num(a)
-      return { k = "neg", a = a, ty = a.ty }
-    end
-    if accept_op("+") then return parse_unary() end
-    return parse_pow()
-  end
+  local parse_unary = signed(parse_pow)
   local function binary_level(sub, ops)
     return function()
       local a = sub()
