@@ -362,12 +362,17 @@ static void emit_polyline(svgw *w, int color, double width) {
     d_end(w);
 }
 
-/* One dense subrun d[0..n): a polyline, or an isolated dot if it has no extent. */
-static void dense_subrun(svgw *w, const pc_xy *d, size_t n, int color, pc_rect clip) {
+/* The simplified polyline through the pixel centres of d[0..n), into w->pts. */
+static void fit_polyline(svgw *w, const pc_xy *d, size_t n) {
     sleeve s;
     sleeve_start(w, &s, d[0].x + 0.5, d[0].y + 0.5);
     for (size_t i = 1; i < n; i++) sleeve_add(w, &s, d[i].x + 0.5, d[i].y + 0.5);
     sleeve_end(w, &s);
+}
+
+/* One dense subrun d[0..n): a polyline, or an isolated dot if it has no extent. */
+static void dense_subrun(svgw *w, const pc_xy *d, size_t n, int color, pc_rect clip) {
+    fit_polyline(w, d, n);
     if (w->nomem) return;
     int extent = w->npts > 2 ||
                  (w->npts == 2 && hypot((double)(w->pts[1].x - w->pts[0].x),
@@ -381,6 +386,16 @@ static int far_outside(double x, double y, pc_rect r) {
     return x < r.x0 - MARGIN || x > r.x1 + 1 + MARGIN || y < r.y0 - MARGIN || y > r.y1 + 1 + MARGIN;
 }
 
+/* The end of the dense run that starts at d[i] (not far outside the clip): consecutive
+ * points at most `dense` px apart, none of them far outside. */
+static size_t run_end(const pc_xy *d, size_t i, size_t n, double dense, pc_rect clip) {
+    size_t j = i + 1;
+    while (j < n && hypot(d[j].x - d[j - 1].x, d[j].y - d[j - 1].y) <= dense &&
+           !far_outside(d[j].x + 0.5, d[j].y + 0.5, clip))
+        j++;
+    return j;
+}
+
 /* A DOTS run: split where consecutive dots are further apart than DENSE. */
 static void emit_dots(svgw *w, const pc_op *op) {
     pc_rect clip = clip_of(w, op);
@@ -389,10 +404,7 @@ static void emit_dots(svgw *w, const pc_op *op) {
     size_t n = op->count, i = 0;
     while (i < n) {
         if (far_outside(d[i].x + 0.5, d[i].y + 0.5, clip)) { i++; continue; }
-        size_t j = i + 1;
-        while (j < n && hypot(d[j].x - d[j - 1].x, d[j].y - d[j - 1].y) <= DENSE &&
-               !far_outside(d[j].x + 0.5, d[j].y + 0.5, clip))
-            j++;
+        size_t j = run_end(d, i, n, DENSE, clip);
         if (j - i == 1) add_dot(w, d[i].x, d[i].y, op->color, clip);
         else dense_subrun(w, d + i, j - i, op->color, clip);
         i = j;
@@ -413,26 +425,25 @@ static void emit_brushes(svgw *w, const pc_op *ops, size_t n) {
     pc_rect clip = clip_of(w, &ops[0]);
     /* the ring of radius r covers the pixels from the centre - round(r) to centre + round(r) */
     double width = 2 * lrint(ops[0].rx) + 1;
+    /* the centres, so that runs split and fit exactly as dots do */
+    pc_xy *d = malloc(n * sizeof *d);
+    if (!d) { w->nomem = 1; return; }
+    for (size_t k = 0; k < n; k++) d[k] = (pc_xy){ops[k].x1, ops[k].y1};
     size_t i = 0;
-    while (i < n) {
-        if (far_outside(ops[i].x1 + 0.5, ops[i].y1 + 0.5, clip)) { i++; continue; }
-        size_t j = i + 1;
-        while (j < n && hypot(ops[j].x1 - ops[j - 1].x1, ops[j].y1 - ops[j - 1].y1) <= BRUSH_DENSE &&
-               !far_outside(ops[j].x1 + 0.5, ops[j].y1 + 0.5, clip))
-            j++;
+    while (i < n && !w->nomem) {
+        if (far_outside(d[i].x + 0.5, d[i].y + 0.5, clip)) { i++; continue; }
+        size_t j = run_end(d, i, n, BRUSH_DENSE, clip);
         if (j - i < 3) {
             for (size_t k = i; k < j; k++) emit_arc(w, &ops[k]);
         } else {
-            sleeve s;
-            sleeve_start(w, &s, ops[i].x1 + 0.5, ops[i].y1 + 0.5);
-            for (size_t k = i + 1; k < j; k++) sleeve_add(w, &s, ops[k].x1 + 0.5, ops[k].y1 + 0.5);
-            sleeve_end(w, &s);
-            if (w->nomem) return;
-            if (w->npts == 1) add_point(w, ops[i].x1 + 0.5, ops[i].y1 + 0.5);
+            fit_polyline(w, d + i, j - i);
+            if (w->nomem) break;
+            if (w->npts == 1) add_point(w, d[i].x + 0.5, d[i].y + 0.5);
             emit_polyline(w, ops[i].color, width);
         }
         i = j;
     }
+    free(d);
 }
 
 /* ---- runs of lines ------------------------------------------------------------------------ */
