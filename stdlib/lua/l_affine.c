@@ -16,13 +16,7 @@
 
 #define AMT lua_upvalueindex(1)
 
-static pc_affine *tomap(lua_State *L, int idx) {
-    pc_affine *f = lua_touserdata(L, idx);
-    if (f == NULL || !lua_getmetatable(L, idx)) return NULL;
-    int ok = lua_rawequal(L, -1, AMT);
-    lua_pop(L, 1);
-    return ok ? f : NULL;
-}
+static pc_affine *tomap(lua_State *L, int idx) { return pcl_testudata(L, idx, AMT); }
 
 static pc_affine *newmap(lua_State *L) {
     pc_affine *f = lua_newuserdatauv(L, sizeof(pc_affine), 0);

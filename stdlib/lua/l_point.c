@@ -17,13 +17,7 @@ static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the
 
 /* ---- recognising and making values ------------------------------------------------------- */
 
-static inline pcl_value *topt(lua_State *L, int idx) {
-    pcl_value *p = lua_touserdata(L, idx);
-    if (p == NULL || !lua_getmetatable(L, idx)) return NULL;
-    int ok = lua_rawequal(L, -1, MT);
-    lua_pop(L, 1);
-    return ok ? p : NULL;
-}
+static inline pcl_value *topt(lua_State *L, int idx) { return pcl_testudata(L, idx, MT); }
 
 static inline pcl_value *newpt(lua_State *L, int n) {
     pcl_value *p = lua_newuserdatauv(L, sizeof(pcl_value) + (size_t)(n + 1) * sizeof(double), 0);
@@ -36,12 +30,11 @@ static inline pcl_value *newpt(lua_State *L, int n) {
 void pcl_push_point_mt(lua_State *L) { lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY); }
 
 pcl_value *pcl_tovalue(lua_State *L, int idx) {
-    pcl_value *p = lua_touserdata(L, idx);
-    if (p == NULL || !lua_getmetatable(L, idx)) return NULL;
+    idx = lua_absindex(L, idx);
     pcl_push_point_mt(L);
-    int ok = lua_rawequal(L, -1, -2);
-    lua_pop(L, 2);
-    return ok ? p : NULL;
+    pcl_value *p = pcl_testudata(L, idx, lua_gettop(L));
+    lua_pop(L, 1);
+    return p;
 }
 
 pcl_value *pcl_newvalue(lua_State *L, int n) {

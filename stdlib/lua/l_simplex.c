@@ -15,13 +15,7 @@
 
 #define SMT lua_upvalueindex(1)
 
-static pc_simplex *tosimplex(lua_State *L, int idx) {
-    pc_simplex *s = lua_touserdata(L, idx);
-    if (s == NULL || !lua_getmetatable(L, idx)) return NULL;
-    int ok = lua_rawequal(L, -1, SMT);
-    lua_pop(L, 1);
-    return ok ? s : NULL;
-}
+static pc_simplex *tosimplex(lua_State *L, int idx) { return pcl_testudata(L, idx, SMT); }
 
 static pc_simplex *checkself(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);

@@ -12,6 +12,16 @@
 #define PCL_MODULE "pointcalc"
 #define PCL_VERSION "0.1.0"
 
+/* The userdata at idx if its metatable is the value at index mt (a pseudo-index such as an
+ * upvalue, or an absolute index), else NULL: how every binding recognises its own objects. */
+static inline void *pcl_testudata(lua_State *L, int idx, int mt) {
+    void *p = lua_touserdata(L, idx);
+    if (p == NULL || !lua_getmetatable(L, idx)) return NULL;
+    int ok = lua_rawequal(L, -1, mt);
+    lua_pop(L, 1);
+    return ok ? p : NULL;
+}
+
 /* module openers, called by luaopen_pointcalc in this order */
 void pcl_open_point(lua_State *L);
 void pcl_open_simplex(lua_State *L);   /* simplex() (l_simplex.c) */
