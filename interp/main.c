@@ -171,7 +171,7 @@ static int write_outputs(lua_State *L, const options *o, int repl_ran) {
     char err[512];
     int ok = 1;
     for (int i = 0; i < o->noutputs; i++) {
-        if (pc_write_file(c, o->outputs[i], theme, err, sizeof err) != PC_DRAW_OK) {
+        if (pc_write_file(c, o->outputs[i], theme, err, sizeof err) != PC_OK) {
             fprintf(stderr, "%s: %s\n", host_progname, err);
             ok = 0;
         }
@@ -179,7 +179,7 @@ static int write_outputs(lua_State *L, const options *o, int repl_ran) {
     if (o->noutputs == 0 && c->dirty && !repl_ran) {
         char path[512];
         default_output(o, path, sizeof path);
-        if (pc_write_file(c, path, theme, err, sizeof err) != PC_DRAW_OK) {
+        if (pc_write_file(c, path, theme, err, sizeof err) != PC_OK) {
             fprintf(stderr, "%s: %s\n", host_progname, err);
             ok = 0;
         } else {

@@ -179,7 +179,7 @@ static void watch_update(lua_State *L, int force) {
     if (!c || (!force && c->version == S.watched)) return;
     char err[512];
     S.watched = c->version;   /* a failure is reported once per change, not on every line */
-    if (pc_write_file(c, S.watch, pcl_theme(L), err, sizeof err) != PC_DRAW_OK) {
+    if (pc_write_file(c, S.watch, pcl_theme(L), err, sizeof err) != PC_OK) {
         fflush(stdout);
         fprintf(stderr, "watch: %s\n", err);
     }
@@ -241,7 +241,7 @@ static int n_save(lua_State *L) {
                  path, t);
     else if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
         snprintf(err, sizeof err, "cannot write '%s': the extension must be .png, .svg or .ppm", path);
-    else if (pc_write_file(pcl_canvas(L), path, theme, err, sizeof err) == PC_DRAW_OK) {
+    else if (pc_write_file(pcl_canvas(L), path, theme, err, sizeof err) == PC_OK) {
         pcl_canvas(L)->dirty = 0;
         lua_pushboolean(L, 1);
         return 1;
@@ -278,14 +278,14 @@ static int n_clear(lua_State *L) {
     pc_rect v = c->view;
     int vs = c->view_screen;
     int full = v.x0 == 0 && v.y0 == 0 && v.x1 == c->width - 1 && v.y1 == c->height - 1;
-    int rc = full ? PC_DRAW_OK : pc_view_reset(c);
+    int rc = full ? PC_OK : pc_view_reset(c);
     double lx = c->last_x, ly = c->last_y;
-    if (rc == PC_DRAW_OK) rc = pc_cls(c);
-    if (rc == PC_DRAW_OK && !full) rc = pc_view(c, v.x0, v.y0, v.x1, v.y1, -1, -1, vs);
+    if (rc == PC_OK) rc = pc_cls(c);
+    if (rc == PC_OK && !full) rc = pc_view(c, v.x0, v.y0, v.x1, v.y1, -1, -1, vs);
     c->last_x = lx;
     c->last_y = ly;
     c->dirty = 0;
-    if (rc != PC_DRAW_OK) return luaL_error(L, "%s", c->error);
+    if (rc != PC_OK) return luaL_error(L, "%s", c->error);
     return 0;
 }
 

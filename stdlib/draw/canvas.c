@@ -64,7 +64,7 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     if (ncolors != 2 && ncolors != 16 && ncolors != 256)
         return pc_fail(c, "number of colours must be 2, 16 or 256, got %d", ncolors);
     uint8_t *px = calloc((size_t)width * height, 1);
-    if (!px) return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for a %dx%d screen", width, height);
+    if (!px) return pc_fail_code(c, PC_ENOMEM, "out of memory for a %dx%d screen", width, height);
     free(c->pixels);
     c->pixels = px;
     c->width = width;
@@ -80,15 +80,15 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->dirty = 0;
     c->version++;
     c->error[0] = 0;
-    if (pc_push_clip(c) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+    if (pc_push_clip(c) != PC_OK) return PC_ENOMEM;
     pc_reset_cursor(c);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 pc_canvas *pc_canvas_new(int width, int height, int ncolors) {
     pc_canvas *c = calloc(1, sizeof *c);
     if (!c) return NULL;
-    if (pc_canvas_reset(c, width, height, ncolors) != PC_DRAW_OK) {
+    if (pc_canvas_reset(c, width, height, ncolors) != PC_OK) {
         pc_canvas_free(c);
         return NULL;
     }
@@ -127,7 +127,7 @@ int pc_check_color(pc_canvas *c, int *color, int dflt) {
     if (*color < 0) *color = dflt;
     if (*color >= c->ncolors)
         return pc_fail(c, "colour %d out of range 0..%d", *color, c->ncolors - 1);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* ---- the display list -------------------------------------------------------------------- */
@@ -145,7 +145,7 @@ static int grow(void **buf, size_t *cap, size_t need, size_t elem) {
 
 pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
     if (!grow((void **)&c->ops, &c->capops, c->nops + 1, sizeof *c->ops)) {
-        pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for the display list");
+        pc_fail_code(c, PC_ENOMEM, "out of memory for the display list");
         return NULL;
     }
     pc_op *op = &c->ops[c->nops++];
@@ -160,9 +160,9 @@ pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
 
 int pc_push_span(pc_canvas *c, int y, int x0, int x1) {
     if (!grow((void **)&c->spans, &c->capspans, c->nspans + 1, sizeof *c->spans))
-        return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for a painted region");
+        return pc_fail_code(c, PC_ENOMEM, "out of memory for a painted region");
     c->spans[c->nspans++] = (pc_span){(int16_t)y, (int16_t)x0, (int16_t)x1};
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_push_dot(pc_canvas *c, double x, double y, int color) {
@@ -170,7 +170,7 @@ int pc_push_dot(pc_canvas *c, double x, double y, int color) {
     if (!last || last->kind != PC_OP_DOTS || last->color != color ||
         last->clip != c->nclips - 1) {
         last = pc_push_op(c, PC_OP_DOTS, color);
-        if (!last) return PC_DRAW_ENOMEM;
+        if (!last) return PC_ENOMEM;
         last->first = (uint32_t)c->ndots;
     } else {
         c->dirty = 1;
@@ -178,20 +178,20 @@ int pc_push_dot(pc_canvas *c, double x, double y, int color) {
     }
     if (c->ndots >= UINT32_MAX ||
         !grow((void **)&c->dots, &c->capdots, c->ndots + 1, sizeof *c->dots))
-        return pc_fail_code(c, PC_DRAW_ENOMEM, "out of memory for the display list");
+        return pc_fail_code(c, PC_ENOMEM, "out of memory for the display list");
     c->dots[c->ndots++] = (pc_xy){x, y};
     last->count++;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_push_clip(pc_canvas *c) {
     if (c->nclips && memcmp(&c->clips[c->nclips - 1], &c->view, sizeof c->view) == 0)
-        return PC_DRAW_OK;
+        return PC_OK;
     if (c->nclips >= 65535 ||
         !grow((void **)&c->clips, &c->capclips, c->nclips + 1, sizeof *c->clips))
-        return pc_fail_code(c, PC_DRAW_ENOMEM, "too many VIEW changes");
+        return pc_fail_code(c, PC_ENOMEM, "too many VIEW changes");
     c->clips[c->nclips++] = c->view;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* ---- WINDOW and VIEW ------------------------------------------------------------------- */
@@ -257,7 +257,7 @@ int pc_window(pc_canvas *c, double x1, double y1, double x2, double y2, int scre
     c->has_window = 1;
     c->window_screen = screen != 0;
     pc_reset_cursor(c);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 void pc_window_reset(pc_canvas *c) {
@@ -270,12 +270,12 @@ void pc_window_reset(pc_canvas *c) {
 static int set_view(pc_canvas *c, pc_rect r, int screen) {
     pc_rect old = c->view;
     c->view = r;
-    if (pc_push_clip(c) != PC_DRAW_OK) {
+    if (pc_push_clip(c) != PC_OK) {
         c->view = old;
-        return PC_DRAW_ENOMEM;
+        return PC_ENOMEM;
     }
     c->view_screen = screen;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, int screen) {
@@ -288,24 +288,24 @@ int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, 
     if (border >= 0) {
         /* the border is drawn just outside the viewport, where there is room */
         pc_rect full = {0, 0, c->width - 1, c->height - 1};
-        if (set_view(c, full, c->view_screen) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+        if (set_view(c, full, c->view_screen) != PC_OK) return PC_ENOMEM;
         int ok = pc_box_screen(c, r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1, border, 0);
-        if (ok != PC_DRAW_OK) return ok;
+        if (ok != PC_OK) return ok;
     }
-    if (set_view(c, r, screen != 0) != PC_DRAW_OK) return PC_DRAW_ENOMEM;
+    if (set_view(c, r, screen != 0) != PC_OK) return PC_ENOMEM;
     if (fill >= 0) {
         int ok = pc_fill_view(c, fill);
-        if (ok != PC_DRAW_OK) return ok;
+        if (ok != PC_OK) return ok;
     }
     pc_reset_cursor(c);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_view_reset(pc_canvas *c) {
-    if (set_view(c, (pc_rect){0, 0, c->width - 1, c->height - 1}, 0) != PC_DRAW_OK)
-        return PC_DRAW_ENOMEM;
+    if (set_view(c, (pc_rect){0, 0, c->width - 1, c->height - 1}, 0) != PC_OK)
+        return PC_ENOMEM;
     pc_reset_cursor(c);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* ---- colours ------------------------------------------------------------------------------ */
@@ -317,7 +317,7 @@ int pc_color(pc_canvas *c, int fg, int bg) {
         return pc_fail(c, "background colour %d out of range 0..%d", bg, c->ncolors - 1);
     c->fg = fg;
     if (bg >= 0) c->bg = bg;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_palette(pc_canvas *c, int attr, pc_rgb rgb) {
@@ -325,11 +325,11 @@ int pc_palette(pc_canvas *c, int attr, pc_rgb rgb) {
         return pc_fail(c, "palette attribute %d out of range 0..%d", attr, c->ncolors - 1);
     c->palette[attr] = rgb;
     c->version++;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_palette_reset(pc_canvas *c) {
     pc_palette_default(c->palette, c->ncolors);
     c->version++;
-    return PC_DRAW_OK;
+    return PC_OK;
 }

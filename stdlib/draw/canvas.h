@@ -15,12 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-enum {
-    PC_DRAW_OK = 0,
-    PC_DRAW_EARG,    /* an argument is out of range (message says which) */
-    PC_DRAW_ENOMEM,
-    PC_DRAW_EIO      /* a writer could not write its file */
-};
+#include "status.h"   /* PC_OK, PC_EARG (the message in pc_canvas.error says which), PC_ENOMEM, PC_EIO */
 
 typedef struct { uint8_t r, g, b; } pc_rgb;
 
@@ -108,7 +103,7 @@ void pc_screen_to_world(const pc_canvas *c, double sx, double sy, double *wx, do
 double pc_world_xscale(const pc_canvas *c);       /* screen pixels per world x unit */
 
 /* The drawing statements.  color < 0 means "the default" (foreground, or background for
- * preset).  All return PC_DRAW_OK or PC_DRAW_EARG (with c->error set). */
+ * preset).  All return PC_OK or PC_EARG (with c->error set). */
 int pc_cls(pc_canvas *c);
 int pc_color(pc_canvas *c, int fg, int bg);       /* bg < 0: unchanged */
 int pc_palette(pc_canvas *c, int attr, pc_rgb rgb);
@@ -133,7 +128,7 @@ void pc_window_reset(pc_canvas *c);
 int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, int screen);
 int pc_view_reset(pc_canvas *c);
 /* The display list holds at most 65535 clip rectangles (VIEW changes, deduplicated against
- * the previous one); beyond, VIEW fails with PC_DRAW_ENOMEM and the view stays as it was. */
+ * the previous one); beyond, VIEW fails with PC_ENOMEM and the view stays as it was. */
 
 /* Raw pixel access in screen pixels, clipped to the view: used by the rasteriser. */
 void pc_plot(pc_canvas *c, int x, int y, int color);

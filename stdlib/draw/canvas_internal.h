@@ -7,7 +7,7 @@
 
 int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-#define pc_fail(c, ...) pc_fail_code((c), PC_DRAW_EARG, __VA_ARGS__)
+#define pc_fail(c, ...) pc_fail_code((c), PC_EARG, __VA_ARGS__)
 
 /* Resolve a colour argument: <0 means dflt; out of range is an error. */
 int pc_check_color(pc_canvas *c, int *color, int dflt);

@@ -38,14 +38,14 @@ int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out) {
     int depth = ncol <= 2 ? 1 : ncol <= 16 ? 4 : 8;
 
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, png_fail, png_warn);
-    if (!png) return PC_DRAW_ENOMEM;
+    if (!png) return PC_ENOMEM;
     png_infop info = png_create_info_struct(png);
     /* volatile: modified between setjmp and a possible longjmp */
     uint8_t *volatile row = NULL;
     if (!info || setjmp(png_jmpbuf(png))) {
         free(row);
         png_destroy_write_struct(&png, &info);
-        return PC_DRAW_EIO;
+        return PC_EIO;
     }
     row = malloc((size_t)c->width);
     if (!row) png_error(png, "out of memory");
@@ -72,5 +72,5 @@ int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out) {
     png_destroy_write_struct(&png, &info);
     free(row);
     /* flushed here so that a full disk shows as an error of this call */
-    return fflush(out) != 0 || ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
+    return fflush(out) != 0 || ferror(out) ? PC_EIO : PC_OK;
 }

@@ -40,7 +40,7 @@ static int to_screen(pc_canvas *c, const char *stmt, double x, double y, double 
     pc_world_to_screen(c, x, y, sx, sy);
     if (!finite2(*sx, *sy))
         return pc_fail(c, "%s: coordinates (%g, %g) are too far outside the window", stmt, x, y);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 void pc_plot(pc_canvas *c, int x, int y, int color) {
@@ -59,13 +59,13 @@ static void set_cursor(pc_canvas *c, double wx, double wy) {
 static int dot(pc_canvas *c, double x, double y, int color, int dflt) {
     double sx, sy;
     int ok = pc_check_color(c, &color, dflt);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "pset", x, y, &sx, &sy);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok == PC_OK) ok = to_screen(c, "pset", x, y, &sx, &sy);
+    if (ok != PC_OK) return ok;
     pc_plot(c, (int)px(sx), (int)px(sy), color);
     ok = pc_push_dot(c, sx, sy, color);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok != PC_OK) return ok;
     set_cursor(c, x, y);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_pset(pc_canvas *c, double x, double y, int color) { return dot(c, x, y, color, c->fg); }
@@ -197,15 +197,15 @@ static int raster_line_f(pc_canvas *c, double x0, double y0, double x1, double y
 int pc_line(pc_canvas *c, double x1, double y1, double x2, double y2, int color) {
     double a, b, d, e;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x1, y1, &a, &b);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x2, y2, &d, &e);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok == PC_OK) ok = to_screen(c, "line", x1, y1, &a, &b);
+    if (ok == PC_OK) ok = to_screen(c, "line", x2, y2, &d, &e);
+    if (ok != PC_OK) return ok;
     if (!raster_line_f(c, a, b, d, e, color)) return too_far(c, "line");
     pc_op *op = pc_push_op(c, PC_OP_LINE, color);
-    if (!op) return PC_DRAW_ENOMEM;
+    if (!op) return PC_ENOMEM;
     op->x1 = a; op->y1 = b; op->x2 = d; op->y2 = e;
     set_cursor(c, x2, y2);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* ---- boxes ------------------------------------------------------------------------------ */
@@ -231,32 +231,32 @@ static void raster_box(pc_canvas *c, long x0, long y0, long x1, long y1, int col
 int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int filled) {
     raster_box(c, x0, y0, x1, y1, color, filled);
     pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
-    if (!op) return PC_DRAW_ENOMEM;
+    if (!op) return PC_ENOMEM;
     op->x1 = x0; op->y1 = y0; op->x2 = x1; op->y2 = y1;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_box(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int filled) {
     double a, b, d, e;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x1, y1, &a, &b);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "line", x2, y2, &d, &e);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok == PC_OK) ok = to_screen(c, "line", x1, y1, &a, &b);
+    if (ok == PC_OK) ok = to_screen(c, "line", x2, y2, &d, &e);
+    if (ok != PC_OK) return ok;
     raster_box(c, px(a), px(b), px(d), px(e), color, filled);
     pc_op *op = pc_push_op(c, filled ? PC_OP_FILLBOX : PC_OP_BOX, color);
-    if (!op) return PC_DRAW_ENOMEM;
+    if (!op) return PC_ENOMEM;
     op->x1 = a; op->y1 = b; op->x2 = d; op->y2 = e;
     set_cursor(c, x2, y2);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 int pc_fill_view(pc_canvas *c, int color) {
     const pc_rect *v = &c->view;
     raster_box(c, v->x0, v->y0, v->x1, v->y1, color, 1);
     pc_op *op = pc_push_op(c, PC_OP_CLEAR, color);
-    if (!op) return PC_DRAW_ENOMEM;
+    if (!op) return PC_ENOMEM;
     op->x1 = v->x0; op->y1 = v->y0; op->x2 = v->x1; op->y2 = v->y1;
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* CLS clears the view to the background colour.  A full-screen CLS also forgets the display
@@ -272,14 +272,14 @@ int pc_cls(pc_canvas *c) {
         c->version++;   /* the picture changed even when no operation is recorded */
         if (c->bg != 0) {
             int ok = pc_fill_view(c, c->bg);
-            if (ok != PC_DRAW_OK) return ok;
+            if (ok != PC_OK) return ok;
         }
     } else {
         int ok = pc_fill_view(c, c->bg);
-        if (ok != PC_DRAW_OK) return ok;
+        if (ok != PC_OK) return ok;
     }
     pc_reset_cursor(c);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* ---- CIRCLE ---------------------------------------------------------------------------- */
@@ -373,8 +373,8 @@ int pc_circle(pc_canvas *c, double x, double y, double r, int color, double star
               double aspect) {
     double sx, sy;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "circle", x, y, &sx, &sy);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok == PC_OK) ok = to_screen(c, "circle", x, y, &sx, &sy);
+    if (ok != PC_OK) return ok;
     if (!(r >= 0) || !isfinite(r)) return pc_fail(c, "circle: radius must be a non-negative number, got %g", r);
     if (!isnan(start) && !(fabs(start) <= TWO_PI + 1e-6))
         return pc_fail(c, "circle: start angle %g is outside -2*pi..2*pi", start);
@@ -414,13 +414,13 @@ int pc_circle(pc_canvas *c, double x, double y, double r, int color, double star
         return too_far(c, "circle");
 
     pc_op *op = pc_push_op(c, PC_OP_ARC, color);
-    if (!op) return PC_DRAW_ENOMEM;
+    if (!op) return PC_ENOMEM;
     op->flags = (uint8_t)flags;
     op->x1 = sx; op->y1 = sy;
     op->rx = rx; op->ry = ry;
     op->a0 = a0; op->a1 = a1;
     set_cursor(c, x, y);
-    return PC_DRAW_OK;
+    return PC_OK;
 }
 
 /* ---- PAINT ------------------------------------------------------------------------------ */
@@ -432,8 +432,8 @@ typedef struct { int x, y; } seed;
 int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
     double fx, fy;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_DRAW_OK) ok = to_screen(c, "paint", x, y, &fx, &fy);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok == PC_OK) ok = to_screen(c, "paint", x, y, &fx, &fy);
+    if (ok != PC_OK) return ok;
     if (border < 0) border = color;
     if (border >= c->ncolors)
         return pc_fail(c, "paint: border colour %d out of range 0..%d", border, c->ncolors - 1);
@@ -441,10 +441,10 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
 
     long sx = px(fx), sy = px(fy);
     const pc_rect v = c->view;
-    if (sx < v.x0 || sx > v.x1 || sy < v.y0 || sy > v.y1) return PC_DRAW_OK;
+    if (sx < v.x0 || sx > v.x1 || sy < v.y0 || sy > v.y1) return PC_OK;
     const int w = c->width;
     uint8_t *pix = c->pixels;
-    if (pix[(size_t)sy * w + sx] == border) return PC_DRAW_OK;
+    if (pix[(size_t)sy * w + sx] == border) return PC_OK;
 
     uint8_t *seen = calloc((size_t)w * c->height, 1);
     size_t cap = 1024, n = 0;
@@ -452,7 +452,7 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
     if (!seen || !stack) {
         free(seen);
         free(stack);
-        return pc_fail_code(c, PC_DRAW_ENOMEM, "paint: out of memory");
+        return pc_fail_code(c, PC_ENOMEM, "paint: out of memory");
     }
     uint32_t first = (uint32_t)c->nspans;
     stack[n++] = (seed){(int)sx, (int)sy};
@@ -465,7 +465,7 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
         while (xr < v.x1 && FILLABLE(xr + 1, s.y)) xr++;
         memset(seen + (size_t)s.y * w + xl, 1, (size_t)(xr - xl + 1));
         memset(pix + (size_t)s.y * w + xl, color, (size_t)(xr - xl + 1));
-        if (pc_push_span(c, s.y, xl, xr) != PC_DRAW_OK) { ok = PC_DRAW_ENOMEM; break; }
+        if (pc_push_span(c, s.y, xl, xr) != PC_OK) { ok = PC_ENOMEM; break; }
         for (int dy = -1; dy <= 1; dy += 2) {
             int yy = s.y + dy;
             if (yy < v.y0 || yy > v.y1) continue;
@@ -473,7 +473,7 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
                 if (!FILLABLE(xx, yy)) continue;
                 if (n == cap) {
                     seed *grown = realloc(stack, 2 * cap * sizeof *stack);
-                    if (!grown) { ok = pc_fail_code(c, PC_DRAW_ENOMEM, "paint: out of memory"); goto done; }
+                    if (!grown) { ok = pc_fail_code(c, PC_ENOMEM, "paint: out of memory"); goto done; }
                     stack = grown;
                     cap *= 2;
                 }
@@ -486,11 +486,11 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
 done:
     free(seen);
     free(stack);
-    if (ok != PC_DRAW_OK) return ok;
+    if (ok != PC_OK) return ok;
     pc_op *op = pc_push_op(c, PC_OP_FILL, color);
-    if (!op) return PC_DRAW_ENOMEM;
+    if (!op) return PC_ENOMEM;
     op->x1 = fx; op->y1 = fy;
     op->first = first;
     op->count = (uint32_t)(c->nspans - first);
-    return PC_DRAW_OK;
+    return PC_OK;
 }

@@ -684,7 +684,7 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
     w.group = -1;
     pc_theme_palette(c, theme, w.pal);
     w.clip_done = calloc(c->nclips ? c->nclips : 1, 1);
-    if (!w.clip_done) return PC_DRAW_ENOMEM;
+    if (!w.clip_done) return PC_ENOMEM;
 
     fprintf(out,
             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -728,6 +728,6 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
     free(w.clip_done);
     free(w.pts);
     free(w.layer);
-    if (w.nomem) return PC_DRAW_ENOMEM;
-    return fflush(out) != 0 || ferror(out) ? PC_DRAW_EIO : PC_DRAW_OK;
+    if (w.nomem) return PC_ENOMEM;
+    return fflush(out) != 0 || ferror(out) ? PC_EIO : PC_OK;
 }

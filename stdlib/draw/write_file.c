@@ -44,7 +44,7 @@ static mode_t new_file_mode(const char *target) {
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
     pc_format fmt = pc_format_from_path(path);
     if (fmt == PC_FMT_UNKNOWN)
-        return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_DRAW_EARG);
+        return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_EARG);
 
     /* Write through a symbolic link to the file it names, as an in-place write would. */
     const char *target = path;
@@ -60,7 +60,7 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     char *tmp = malloc(dirlen + baselen + 16);
     if (!tmp) {
         free(resolved);
-        return fail(err, errlen, path, strerror(ENOMEM), PC_DRAW_ENOMEM);
+        return fail(err, errlen, path, strerror(ENOMEM), PC_ENOMEM);
     }
     memcpy(tmp, target, dirlen);
     snprintf(tmp + dirlen, baselen + 16, ".%.*s.XXXXXX", (int)baselen, base);
@@ -70,9 +70,9 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
         int e = errno;
         free(tmp);
         free(resolved);
-        return fail(err, errlen, path, strerror(e), PC_DRAW_EIO);
+        return fail(err, errlen, path, strerror(e), PC_EIO);
     }
-    int e = 0, code = PC_DRAW_OK;
+    int e = 0, code = PC_OK;
     FILE *f = fdopen(fd, "wb");
     if (!f) {
         e = errno;
@@ -84,7 +84,7 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
         case PC_FMT_SVG: code = pc_encode_svg(c, theme, f); break;
         default: code = pc_encode_ppm(c, theme, f); break;
         }
-        if (code != PC_DRAW_OK) e = errno ? errno : (code == PC_DRAW_ENOMEM ? ENOMEM : EIO);
+        if (code != PC_OK) e = errno ? errno : (code == PC_ENOMEM ? ENOMEM : EIO);
         if (!e && fflush(f) != 0) e = errno;
         if (!e && fchmod(fileno(f), new_file_mode(target)) != 0) e = errno;
         if (fclose(f) != 0 && !e) e = errno;
@@ -92,10 +92,10 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     if (!e && rename(tmp, target) != 0) e = errno;
     if (e) {
         unlink(tmp);
-        code = code == PC_DRAW_ENOMEM ? code : PC_DRAW_EIO;
+        code = code == PC_ENOMEM ? code : PC_EIO;
         fail(err, errlen, path, strerror(e), code);
     } else {
-        code = PC_DRAW_OK;
+        code = PC_OK;
         if (err && errlen) err[0] = 0;
     }
     free(tmp);

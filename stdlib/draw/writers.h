@@ -16,13 +16,13 @@ void pc_theme_palette(const pc_canvas *c, pc_theme theme, pc_rgb out[256]);
 /* Format from the file name's extension (case-insensitive), PC_FMT_UNKNOWN otherwise. */
 pc_format pc_format_from_path(const char *path);
 
-/* Encode to an open stream.  Return PC_DRAW_OK or PC_DRAW_EIO. */
+/* Encode to an open stream.  Return PC_OK or PC_EIO. */
 int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
 
 /* Write to `path` in the format its extension names, atomically.  On failure returns
- * PC_DRAW_EIO (or PC_DRAW_EARG for an unknown extension) and puts
+ * PC_EIO (or PC_EARG for an unknown extension) and puts
  * "cannot write 'PATH': REASON" into err. */
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen);
 

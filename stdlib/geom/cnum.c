@@ -8,15 +8,15 @@ static int is_finite(pc_cnum z) { return isfinite(z.re) && isfinite(z.im); }
 
 static int put(double complex r, pc_cnum *out) {
     pc_cnum z = {creal(r), cimag(r)};
-    if (!is_finite(z)) return PC_TK_ENONFINITE;
+    if (!is_finite(z)) return PC_ENONFINITE;
     *out = z;
-    return PC_TK_OK;
+    return PC_OK;
 }
 
 static int power(double complex a, double complex b, pc_cnum *out) {
     if (a == 0) {
         if (b == 0) return put(1, out);                     /* 0^0 = 1, as Lua's 0^0 */
-        return creal(b) > 0 ? put(0, out) : PC_TK_EPOLE;     /* 0^b: |a^b| = 0 or a pole */
+        return creal(b) > 0 ? put(0, out) : PC_EPOLE;     /* 0^b: |a^b| = 0 or a pole */
     }
     if (cimag(b) == 0 && creal(b) == floor(creal(b)) && fabs(creal(b)) <= 64) {
         int k = (int)creal(b);
@@ -28,19 +28,19 @@ static int power(double complex a, double complex b, pc_cnum *out) {
 }
 
 int pc_cnum_arith(char op, pc_cnum a, pc_cnum b, pc_cnum *out) {
-    if (!is_finite(a) || !is_finite(b)) return PC_TK_ENONFINITE;
+    if (!is_finite(a) || !is_finite(b)) return PC_ENONFINITE;
     double complex x = CMPLX(a.re, a.im), y = CMPLX(b.re, b.im);
     switch (op) {
     case '+': return put(x + y, out);
     case '-': return put(x - y, out);
     case '*': return put(x * y, out);
-    case '/': return y == 0 ? PC_TK_EPOLE : put(x / y, out);
+    case '/': return y == 0 ? PC_EPOLE : put(x / y, out);
     case '^': return power(x, y, out);
-    default: return PC_TK_EDOMAIN;
+    default: return PC_EDOMAIN;
     }
 }
 
 int pc_cnum_exp(pc_cnum z, pc_cnum *out) {
-    if (!is_finite(z)) return PC_TK_ENONFINITE;
+    if (!is_finite(z)) return PC_ENONFINITE;
     return put(cexp(CMPLX(z.re, z.im)), out);
 }

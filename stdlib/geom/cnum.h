@@ -4,19 +4,19 @@
 #ifndef PC_CNUM_H
 #define PC_CNUM_H
 
-#include "toolkit.h"
+#include "status.h"
 
 typedef struct {
     double re, im;
 } pc_cnum;
 
-/* out = a op b for op one of + - * / ^.  PC_TK_EPOLE for a division by zero and for zero
- * raised to a power whose real part is not positive; PC_TK_ENONFINITE when an operand or the
- * result is not finite (an overflow); PC_TK_EDOMAIN for an unknown op.  Integer powers
+/* out = a op b for op one of + - * / ^.  PC_EPOLE for a division by zero and for zero
+ * raised to a power whose real part is not positive; PC_ENONFINITE when an operand or the
+ * result is not finite (an overflow); PC_EDOMAIN for an unknown op.  Integer powers
  * |k| <= 64 are repeated multiplications, exact where the operands are (i^2 = -1, not
  * -1 + 1.2e-16 i); other powers are the principal value exp(b log a). */
 int pc_cnum_arith(char op, pc_cnum a, pc_cnum b, pc_cnum *out);
-/* e^z; PC_TK_ENONFINITE when it overflows. */
+/* e^z; PC_ENONFINITE when it overflows. */
 int pc_cnum_exp(pc_cnum z, pc_cnum *out);
 
 #endif

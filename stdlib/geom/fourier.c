@@ -5,9 +5,9 @@
 static const double PI = 3.14159265358979323846;
 
 int pc_fourier_coef(int n, const double *f, int stride, double *a, double *b) {
-    if (n < 1) return PC_TK_EDOMAIN;
+    if (n < 1) return PC_EDOMAIN;
     for (int i = 0; i < 2 * n; i++)
-        if (!isfinite(f[i * stride])) return PC_TK_ENONFINITE;
+        if (!isfinite(f[i * stride])) return PC_ENONFINITE;
     for (int k = 0; k <= n; k++) {
         double sa = 0, sb = 0;
         for (int i = 0; i < 2 * n; i++) {
@@ -18,7 +18,7 @@ int pc_fourier_coef(int n, const double *f, int stride, double *a, double *b) {
         a[k] = sa / n;
         b[k] = (k == 0 || k == n) ? 0.0 : sb / n;
     }
-    return PC_TK_OK;
+    return PC_OK;
 }
 
 double pc_fourier_eval(int n, const double *a, const double *b, double u) {

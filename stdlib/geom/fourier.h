@@ -8,10 +8,10 @@
 #ifndef PC_FOURIER_H
 #define PC_FOURIER_H
 
-#include "toolkit.h"
+#include "status.h"
 
 /* f: 2n samples, the i-th at f[i * stride]; a, b: n + 1 coefficients each.
- * PC_TK_EDOMAIN if n < 1, PC_TK_ENONFINITE for a NaN or infinite sample. */
+ * PC_EDOMAIN if n < 1, PC_ENONFINITE for a NaN or infinite sample. */
 int pc_fourier_coef(int n, const double *f, int stride, double *a, double *b);
 double pc_fourier_eval(int n, const double *a, const double *b, double u);
 

@@ -3,7 +3,7 @@
 #ifndef PC_NUMERIC_H
 #define PC_NUMERIC_H
 
-#include "toolkit.h"
+#include "status.h"
 
 #define PC_ORESME_MAXLEVEL 24
 
@@ -11,7 +11,7 @@
  * (s = 2^m / 2^i for i = 0..m-1, j = 0, s, 2s, ..., 2^m - s),
  *   y[j + s/2] = lambda y[j] + (1 - lambda) y[j + s].
  * For 0 < lambda < 1 it is increasing and, unless lambda = 1/2, nowhere differentiable.
- * y must hold 2^m + 1 doubles.  PC_TK_EDOMAIN unless 0 <= m <= PC_ORESME_MAXLEVEL. */
+ * y must hold 2^m + 1 doubles.  PC_EDOMAIN unless 0 <= m <= PC_ORESME_MAXLEVEL. */
 int pc_oresme_fill(double lambda, int m, double y0, double y1, double *y);
 /* The listing's lookup: y[INT(t 2^m)], the index clamped to 0..2^m. */
 double pc_oresme_at(const double *y, int m, double t);
@@ -19,7 +19,7 @@ double pc_oresme_at(const double *y, int m, double t);
 /* Bisection as example 30 writes it: x0 = a, x1 = b; repeat x = (x0 + x1)/2; if
  * f(x) f(x0) < 0 then x1 = x else x0 = x; until |x1 - x0| <= tol.  The result is the last
  * midpoint x.  If f(a) = 0 the result is a, if f(b) = 0 it is b (a = b is allowed).
- * PC_TK_ENOBRACKET if f(a) and f(b) are nonzero with the same sign, PC_TK_ENONFINITE if a or
+ * PC_ENOBRACKET if f(a) and f(b) are nonzero with the same sign, PC_ENONFINITE if a or
  * b is not finite or f returns NaN or an infinity.  An exact zero f(x) = 0 ends the search at x (the listing would
  * go on bisecting the wrong half).  tol <= 0 bisects until the interval stops shrinking.
  * *iters (if not NULL) gets the number of midpoints evaluated. */

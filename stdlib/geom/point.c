@@ -2,24 +2,6 @@
 #include "point.h"
 #include <math.h>
 
-const char *pc_strerror(int status) {
-    switch (status) {
-    case PC_OK: return "ok";
-    case PC_IMPROPER: return "the point is at infinity (weight 0)";
-    case PC_EZERO: return "zero vector";
-    case PC_ECOINCIDENT: return "the points coincide";
-    case PC_ENOTCOLLINEAR: return "the points are not collinear";
-    case PC_ECOLLINEAR: return "the points are dependent (degenerate simplex)";
-    case PC_ESAME_LINE: return "the lines coincide";
-    case PC_ESKEW: return "the lines are skew";
-    case PC_ESINGULAR: return "the map is singular";
-    case PC_EWEIGHT: return "the weight is neither 1 (a point) nor 0 (a vector)";
-    case PC_EDIM: return "dimensions do not fit";
-    case PC_ENONFINITE: return "NaN or infinite value";
-    }
-    return "unknown error";
-}
-
 pc_kind pc_kind_of(double w) {
     if (fabs(w - 1.0) <= PC_WEIGHT_TOL) return PC_KIND_POINT;
     if (fabs(w) <= PC_WEIGHT_TOL) return PC_KIND_VECTOR;

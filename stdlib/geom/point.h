@@ -21,21 +21,7 @@
 #define PC_DEGEN_TOL 1e-10    /* relative size (a sine) below which directions are dependent */
 #define PC_ON_TOL 1e-9        /* relative residual below which a point lies on a line */
 
-enum {
-    PC_OK = 0,
-    PC_IMPROPER,      /* not an error: the result is a point at infinity (weight 0) */
-    PC_EZERO,         /* a zero vector where a direction is needed */
-    PC_ECOINCIDENT,   /* points that must be distinct coincide */
-    PC_ENOTCOLLINEAR, /* points that must lie on one line do not */
-    PC_ECOLLINEAR,    /* points that must span a plane (or more) are dependent */
-    PC_ESAME_LINE,    /* two lines coincide: no single meet */
-    PC_ESKEW,         /* two lines in 3-D or more do not meet */
-    PC_ESINGULAR,     /* a singular linear map */
-    PC_EWEIGHT,       /* a weight neither 1 nor 0 where a location is needed */
-    PC_EDIM,          /* dimensions do not fit */
-    PC_ENONFINITE     /* a NaN or an infinity */
-};
-const char *pc_strerror(int status);
+#include "status.h"
 
 /* --- weights ------------------------------------------------------------------------------ */
 typedef enum { PC_KIND_POINT, PC_KIND_VECTOR, PC_KIND_WEIGHTED } pc_kind;

@@ -4,19 +4,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-const char *pc_tk_strerror(int status) {
-    switch (status) {
-    case PC_TK_OK: return "no error";
-    case PC_TK_EDOMAIN: return "parameter outside its domain";
-    case PC_TK_EZERO: return "zero vector where a direction is needed";
-    case PC_TK_ENOBRACKET: return "no sign change: the interval brackets no root";
-    case PC_TK_EPOLE: return "evaluated at the pole of the map";
-    case PC_TK_EDIM: return "dimensions do not fit";
-    case PC_TK_ENONFINITE: return "NaN or infinite value";
-    default: return "unknown error";
-    }
-}
-
 double pc_smooth_sine(double t) { return (1.0 - cos(PI * t)) / 2.0; }
 
 double pc_smooth_cubic(double t) { return t * t * (3.0 - 2.0 * t); }
@@ -28,17 +15,17 @@ double pc_smooth_power(double n, double t) {
 }
 
 int pc_hspline_init(pc_hspline *h, double n, double m, double t0) {
-    if (!isfinite(n) || !isfinite(m) || !isfinite(t0)) return PC_TK_ENONFINITE;
-    if (n <= 0 || m <= 0 || t0 <= 0 || t0 >= 1) return PC_TK_EDOMAIN;
+    if (!isfinite(n) || !isfinite(m) || !isfinite(t0)) return PC_ENONFINITE;
+    if (n <= 0 || m <= 0 || t0 <= 0 || t0 >= 1) return PC_EDOMAIN;
     double c1 = m / ((n - n * t0 + m * t0) * pow(t0, n - 1.0));
     double c2 = (1.0 - c1 * pow(t0, n)) / pow(1.0 - t0, m);
-    if (!isfinite(c1) || !isfinite(c2)) return PC_TK_EDOMAIN;   /* t0^(n-1) or (1-t0)^m underflowed */
+    if (!isfinite(c1) || !isfinite(c2)) return PC_EDOMAIN;   /* t0^(n-1) or (1-t0)^m underflowed */
     h->n = n;
     h->m = m;
     h->t0 = t0;
     h->c1 = c1;
     h->c2 = c2;
-    return PC_TK_OK;
+    return PC_OK;
 }
 
 double pc_hspline_eval(const pc_hspline *h, double t) {
@@ -52,9 +39,9 @@ double pc_hspline_deriv(const pc_hspline *h, double t) {
 }
 
 int pc_hspline_check(const pc_hspline *h, double t) {
-    if (t < 0 && h->n != floor(h->n)) return PC_TK_EDOMAIN;
-    if (t > 1 && h->m != floor(h->m)) return PC_TK_EDOMAIN;
-    return PC_TK_OK;
+    if (t < 0 && h->n != floor(h->n)) return PC_EDOMAIN;
+    if (t > 1 && h->m != floor(h->m)) return PC_EDOMAIN;
+    return PC_OK;
 }
 
 double pc_hspline_locus(double n, double m, double t0) {
@@ -87,5 +74,5 @@ double pc_gfun_eval(const pc_gfun *g, double t) {
 }
 
 int pc_gfun_check(const pc_gfun *g, double t) {
-    return g->kind == PC_G_HALF ? pc_hspline_check(&g->h, t) : PC_TK_OK;
+    return g->kind == PC_G_HALF ? pc_hspline_check(&g->h, t) : PC_OK;
 }

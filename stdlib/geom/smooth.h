@@ -5,7 +5,7 @@
 #ifndef PC_SMOOTH_H
 #define PC_SMOOTH_H
 
-#include "toolkit.h"
+#include "status.h"
 
 /* (1 - cos(pi t)) / 2, examples 3 and 4. */
 double pc_smooth_sine(double t);
@@ -23,7 +23,7 @@ typedef struct {
     double c1, c2;     /* the coefficients above */
 } pc_hspline;
 
-/* PC_TK_ENONFINITE for a NaN or infinite parameter; PC_TK_EDOMAIN unless n > 0, m > 0,
+/* PC_ENONFINITE for a NaN or infinite parameter; PC_EDOMAIN unless n > 0, m > 0,
  * 0 < t0 < 1, or when c1 or c2 overflows a double (degrees in the hundreds: t0^(n-1)
  * underflows).  h is untouched on error. */
 int pc_hspline_init(pc_hspline *h, double n, double m, double t0);
@@ -31,8 +31,8 @@ double pc_hspline_eval(const pc_hspline *h, double t);
 /* g'(t): n c1 t^(n-1) for t < t0, m c2 (1 - t)^(m-1) for t >= t0. */
 double pc_hspline_deriv(const pc_hspline *h, double t);
 /* Where the formulas extrapolate: t^n for t < 0 and (1 - t)^m for t > 1 are real only for a
- * whole degree.  PC_TK_EDOMAIN when t < 0 and n is fractional, or t > 1 and m is (eval and
- * deriv would give NaN there); PC_TK_OK otherwise. */
+ * whole degree.  PC_EDOMAIN when t < 0 and n is fractional, or t > 1 and m is (eval and
+ * deriv would give NaN there); PC_OK otherwise. */
 int pc_hspline_check(const pc_hspline *h, double t);
 /* The locus of the junction points (example 8): v(t0) = m t0 / (n - n t0 + m t0). */
 double pc_hspline_locus(double n, double m, double t0);
@@ -54,7 +54,7 @@ typedef struct {
 } pc_gfun;
 
 double pc_gfun_eval(const pc_gfun *g, double t);
-/* pc_hspline_check for a half-spline, PC_TK_OK for the others (defined for every t). */
+/* pc_hspline_check for a half-spline, PC_OK for the others (defined for every t). */
 int pc_gfun_check(const pc_gfun *g, double t);
 
 #endif

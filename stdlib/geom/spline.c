@@ -38,15 +38,15 @@ static int has_nan(int d, const double *v) {
     return 0;
 }
 
-/* unit vector of v (d doubles) into out; PC_TK_EZERO for a zero vector */
+/* unit vector of v (d doubles) into out; PC_EZERO for a zero vector */
 static int unit(int d, const double *v, double *out) {
     double s = 0;
     for (int i = 0; i < d; i++) s += v[i] * v[i];
     s = sqrt(s);
-    if (!isfinite(s)) return PC_TK_ENONFINITE;
-    if (s == 0) return PC_TK_EZERO;
+    if (!isfinite(s)) return PC_ENONFINITE;
+    if (s == 0) return PC_EZERO;
     for (int i = 0; i < d; i++) out[i] = v[i] / s;
-    return PC_TK_OK;
+    return PC_OK;
 }
 
 static double chord(int d, const double *a, const double *b) {
@@ -75,11 +75,11 @@ static int direction(const pc_stroke_spec *s, const double *dir, int i, double *
 int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad) {
     int d = s->d, k = s->nnodes;
     if (bad) *bad = -1;
-    if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) return PC_TK_EDIM;
+    if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) return PC_EDIM;
     for (int i = 0; i < k * d; i++)
         if (!isfinite(s->nodes[i])) {
             if (bad) *bad = i / d;
-            return PC_TK_ENONFINITE;
+            return PC_ENONFINITE;
         }
     int np = pc_stroke_npieces(k, s->closed);
     for (int i = 0; i < np; i++) {
@@ -101,7 +101,7 @@ int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad) {
         double ri = (s->rin && !isnan(s->rin[j])) ? s->rin[j] : c / 3.0;
         if (!isfinite(ro) || !isfinite(ri)) {
             if (bad) *bad = isfinite(ro) ? j : i;
-            return PC_TK_ENONFINITE;
+            return PC_ENONFINITE;
         }
         pc_piece *pc = &out[i];
         memset(pc, 0, sizeof *pc);
@@ -119,5 +119,5 @@ int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad) {
             return st;
         }
     }
-    return PC_TK_OK;
+    return PC_OK;
 }

@@ -51,9 +51,9 @@ typedef struct {
 } pc_stroke_spec;
 
 int pc_stroke_npieces(int nnodes, int closed);
-/* Fill out[0 .. npieces-1].  PC_TK_EDIM (d out of 1..PC_CURVE_MAXDIM, fewer than 2 nodes),
- * PC_TK_EZERO (a zero direction, or coincident neighbours for a chord tangent),
- * PC_TK_EDOMAIN (bad n, m, t0), PC_TK_ENONFINITE.  On error *bad (if not NULL) is the index
+/* Fill out[0 .. npieces-1].  PC_EDIM (d out of 1..PC_CURVE_MAXDIM, fewer than 2 nodes),
+ * PC_EZERO (a zero direction, or coincident neighbours for a chord tangent),
+ * PC_EDOMAIN (bad n, m, t0), PC_ENONFINITE.  On error *bad (if not NULL) is the index
  * of the offending node. */
 int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad);
 

@@ -1,4 +1,4 @@
-/* Complex numbers and the Moebius map of the unit disc (stdlib/geom/cnum.h, cmap.h; examples 15, 16):
+/* Complex numbers and the Moebius map of the unit disc (stdlib/geom/cnum.h, curvilinear.h; examples 15, 16):
  *   complex(re [, im]) / complex(P)   a complex number (from a 2-D point: x + i y)
  *   complex.polar(r, u)  complex.exp(z)  complex.i
  *   z + w, z - w, z * w, z / w, -z, z ^ k (numbers mix in), z == w, tostring(z)
@@ -10,7 +10,7 @@
 #include <math.h>
 #include <string.h>
 #include "pcl_tk.h"
-#include "cmap.h"
+#include "curvilinear.h"
 #include "cnum.h"
 
 #define COMPLEX_MT "complex"
@@ -56,10 +56,10 @@ static int arith(lua_State *L, char op) {
     double complex a = checkc(L, fn, 1, "left"), b = checkc(L, fn, 2, "right");
     pc_cnum r;
     int st = pc_cnum_arith(op, (pc_cnum){creal(a), cimag(a)}, (pc_cnum){creal(b), cimag(b)}, &r);
-    if (st == PC_TK_EPOLE)
+    if (st == PC_EPOLE)
         return pcl_error(L, "%s: division by zero%s", fn,
                          op == '^' ? " (zero to a power whose real part is not positive)" : "");
-    if (st != PC_TK_OK) return pcl_error(L, "%s: the result overflows (not finite)", fn);
+    if (st != PC_OK) return pcl_error(L, "%s: the result overflows (not finite)", fn);
     pushc(L, r.re, r.im);
     return 1;
 }
@@ -105,7 +105,7 @@ static int c_arg(lua_State *L) {
 static int c_exp(lua_State *L) {
     double complex z = checkc(L, "complex.exp", 1, "z");
     pc_cnum r;
-    if (pc_cnum_exp((pc_cnum){creal(z), cimag(z)}, &r) != PC_TK_OK)
+    if (pc_cnum_exp((pc_cnum){creal(z), cimag(z)}, &r) != PC_OK)
         return pcl_error(L, "complex.exp: the result overflows (not finite)");
     pushc(L, r.re, r.im);
     return 1;
@@ -170,12 +170,12 @@ static mobius *checkm(lua_State *L, int idx, const char *fn) {
 
 static void apply(lua_State *L, const mobius *m, double re, double im, double *wre, double *wim) {
     int st = pc_mobius(m->z0re, m->z0im, m->phi, re, im, wre, wim);
-    if (st == PC_TK_EPOLE)
+    if (st == PC_EPOLE)
     {
         const char *tre = tk_pushnum(L, re), *tim = tk_pushnum(L, im);
         pcl_error(L, "mobius: z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
     }
-    if (st != PC_TK_OK) pcl_error(L, "mobius: %s", pc_tk_strerror(st));
+    if (st != PC_OK) pcl_error(L, "mobius: %s", pc_strerror(st));
 }
 
 static int m_call(lua_State *L) {

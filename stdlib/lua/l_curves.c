@@ -101,7 +101,7 @@ static void eval_piece(lua_State *L, curve *c, int i, double t, double *out, con
         pc_qspline(c->d, pc->a, pc->p, pc->q, pc->b, t, lua_g(L, t), out);
         return;
     }
-    if (pc_gfun_check(&pc->g, t) != PC_TK_OK) {
+    if (pc_gfun_check(&pc->g, t) != PC_OK) {
         int low = t < 0;
         const char *deg = tk_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
         const char *bound = tk_pushnum(L, low ? lo : hi);
@@ -299,11 +299,11 @@ static int l_stroke_raw(lua_State *L) {
     c->closed = closed;
     int bad;
     int st = pc_stroke_build(&spec, pieces(c), &bad);
-    if (st != PC_TK_OK) {
+    if (st != PC_OK) {
         lua_pushnil(L);
         lua_pushinteger(L, st);
         lua_pushinteger(L, bad + 1);
-        lua_pushstring(L, pc_tk_strerror(st));
+        lua_pushstring(L, pc_strerror(st));
         return 4;
     }
     if (lua || g.kind != PC_G_HALF || !lua_isnoneornil(L, 11)) {
@@ -355,7 +355,7 @@ static int l_fourier(lua_State *L) {
     for (int k = 0; k < d; k++) {
         int st = pc_fourier_coef(n, samples + k, PC_CURVE_MAXDIM, c->data + 2 * k * m,
                                  c->data + (2 * k + 1) * m);
-        if (st != PC_TK_OK) return tk_statuserror(L, fn, st, "points");
+        if (st != PC_OK) return tk_statuserror(L, fn, st, "points");
     }
     lua_remove(L, scratch);
     return 1;

@@ -41,7 +41,7 @@ pc_theme pcl_theme(lua_State *L) {
 
 /* A core call failed: raise its message as a Lua error at the caller's line. */
 static int check(lua_State *L, pc_canvas *c, int rc) {
-    if (rc == PC_DRAW_OK) return 0;
+    if (rc == PC_OK) return 0;
     lua_Debug ar;
     const char *name = "draw";
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
@@ -335,7 +335,7 @@ static int l_save(lua_State *L) {
     if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
         return pcl_argerror(L, 1, "path", "a file name ending in .png, .svg or .ppm");
     char err[512];
-    if (pc_write_file(c, path, theme, err, sizeof err) != PC_DRAW_OK)
+    if (pc_write_file(c, path, theme, err, sizeof err) != PC_OK)
         return pcl_error(L, "save: %s", err);
     c->dirty = 0;
     return 0;

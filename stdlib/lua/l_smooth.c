@@ -49,7 +49,7 @@ static void check_degree(lua_State *L, const char *fname, int arg, const char *w
  * hundreds make t0^(n-1) underflow, and the coefficients would be inf and NaN. */
 static void init_checked(lua_State *L, const char *fname, pc_hspline *h, double n, double m,
                          double t0) {
-    if (pc_hspline_init(h, n, m, t0) == PC_TK_OK) return;
+    if (pc_hspline_init(h, n, m, t0) == PC_OK) return;
     const char *tn = tk_pushnum(L, n), *tm = tk_pushnum(L, m), *tt = tk_pushnum(L, t0);
     pcl_error(L, "%s: the degrees n = %s, m = %s are too large for t0 = %s: the coefficients "
               "c1, c2 overflow a double", fname, tn, tm, tt);
@@ -62,7 +62,7 @@ static double checked_t(lua_State *L, const pc_hspline *h, const char *fname, in
     if (lua_type(L, idx) != LUA_TNUMBER) tk_argerror_at(L, fname, idx, shown, "t", "a number");
     double t = lua_tonumber(L, idx);
     if (!isfinite(t)) tk_argerror_at(L, fname, idx, shown, "t", "a finite number");
-    if (pc_hspline_check(h, t) != PC_TK_OK) {
+    if (pc_hspline_check(h, t) != PC_OK) {
         int low = t < 0;
         tk_pushnum(L, low ? h->n : h->m);
         lua_pushfstring(L, "%s (the degree %s = %s is fractional, so the formula does not "

@@ -30,7 +30,7 @@ void pcl_open_draw(lua_State *L);
 void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
 void pcl_open_smooth(lua_State *L);  /* the curvilinear-coordinates toolkit (docs/toolkit.md): */
 void pcl_open_curves(lua_State *L);  /*   smooth, spline2 fourier sphdir (l_smooth.c, l_curves.c) */
-void pcl_open_cmap(lua_State *L);    /*   squash oblique projection oresme bisect (l_cmap.c) */
+void pcl_open_curvilinear(lua_State *L);    /*   squash oblique projection oresme bisect (l_curvilinear.c) */
 void pcl_open_complex(lua_State *L); /*   complex mobius (l_complex.c) */
 
 /* The canvas of this Lua state (created on first use as SCREEN 12). */

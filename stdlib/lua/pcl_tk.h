@@ -1,4 +1,4 @@
-/* Shared by the toolkit bindings (l_smooth.c, l_curves.c, l_cmap.c, l_complex.c): argument
+/* Shared by the toolkit bindings (l_smooth.c, l_curves.c, l_curvilinear.c, l_complex.c): argument
  * checks in the house style with an explicit function name (the toolkit's functions live in
  * sub-tables and objects, e.g. "smooth.half", "S:piece"), points in and out, and the private
  * table _tk through which the Lua helpers of stdlib/lua reach core functions that are not API. */
@@ -6,7 +6,7 @@
 #define PCL_TK_H
 
 #include "pcl_point.h"
-#include "toolkit.h"
+#include "status.h"
 #include "smooth.h"
 
 /* "FNAME: argument #ARG (WHAT) must be EXPECTED, got VALUE" */

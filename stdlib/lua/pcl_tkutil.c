@@ -53,8 +53,8 @@ const char *tk_pushnum(lua_State *L, double x) {
 
 int tk_statuserror(lua_State *L, const char *fname, int status, const char *context) {
     if (context && context[0])
-        return pcl_error(L, "%s: %s (%s)", fname, context, pc_tk_strerror(status));
-    return pcl_error(L, "%s: %s", fname, pc_tk_strerror(status));
+        return pcl_error(L, "%s: %s (%s)", fname, context, pc_strerror(status));
+    return pcl_error(L, "%s: %s", fname, pc_strerror(status));
 }
 
 void tk_private(lua_State *L, int module) {

@@ -24,7 +24,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_qb(L);
     pcl_open_smooth(L);
     pcl_open_curves(L);
-    pcl_open_cmap(L);
+    pcl_open_curvilinear(L);
     pcl_open_complex(L);
     run_lua_helpers(L);
     lua_pushliteral(L, "pointcalc " PCL_VERSION);

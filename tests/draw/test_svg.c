@@ -159,7 +159,7 @@ static doc svg_of(const pc_canvas *c, pc_theme theme) {
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     assert_non_null(f);
-    assert_int_equal(pc_encode_svg(c, theme, f), PC_DRAW_OK);
+    assert_int_equal(pc_encode_svg(c, theme, f), PC_OK);
     fclose(f);
     if (xmllint_present()) {
         char name[] = "/tmp/pc_svg_XXXXXX";

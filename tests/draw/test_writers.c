@@ -53,7 +53,7 @@ static void test_screen_theme_is_the_palette(void **state) {
     assert_rgb(pal[14], 0xff, 0xff, 0x55);
     assert_rgb(pal[15], 0xff, 0xff, 0xff);
     /* PALETTE after drawing: the writers use the colours of write time */
-    assert_int_equal(pc_palette(c, 4, (pc_rgb){1, 2, 3}), PC_DRAW_OK);
+    assert_int_equal(pc_palette(c, 4, (pc_rgb){1, 2, 3}), PC_OK);
     pc_theme_palette(c, PC_THEME_SCREEN, pal);
     assert_rgb(pal[4], 1, 2, 3);
     pc_canvas_free(c);
@@ -116,7 +116,7 @@ static unsigned char *encode(int (*enc)(const pc_canvas *, pc_theme, FILE *), co
     char *buf = NULL;
     FILE *f = open_memstream(&buf, len);
     assert_non_null(f);
-    assert_int_equal(enc(c, theme, f), PC_DRAW_OK);
+    assert_int_equal(enc(c, theme, f), PC_OK);
     assert_int_equal(fclose(f), 0);
     return (unsigned char *)buf;
 }
@@ -185,7 +185,7 @@ static png_pixels read_png(FILE *f) {
 static void assert_png_matches(const pc_canvas *c, pc_theme theme, int want_depth) {
     FILE *f = tmpfile();
     assert_non_null(f);
-    assert_int_equal(pc_encode_png(c, theme, f), PC_DRAW_OK);
+    assert_int_equal(pc_encode_png(c, theme, f), PC_OK);
     rewind(f);
     png_pixels p = read_png(f);
     fclose(f);
@@ -259,13 +259,13 @@ static void test_encoders_report_write_errors(void **state) {
     if (!f) skip();
     pc_canvas *c = pc_canvas_new_mode(12);
     draw_pattern(c);
-    assert_int_equal(pc_encode_ppm(c, PC_THEME_SCREEN, f), PC_DRAW_EIO);
+    assert_int_equal(pc_encode_ppm(c, PC_THEME_SCREEN, f), PC_EIO);
     fclose(f);
     f = fopen("/dev/full", "wb");
-    assert_int_equal(pc_encode_png(c, PC_THEME_SCREEN, f), PC_DRAW_EIO);
+    assert_int_equal(pc_encode_png(c, PC_THEME_SCREEN, f), PC_EIO);
     fclose(f);
     f = fopen("/dev/full", "wb");
-    assert_int_equal(pc_encode_svg(c, PC_THEME_SCREEN, f), PC_DRAW_EIO);
+    assert_int_equal(pc_encode_svg(c, PC_THEME_SCREEN, f), PC_EIO);
     fclose(f);
     pc_canvas_free(c);
 }
@@ -323,10 +323,10 @@ static void test_write_file_formats(void **state) {
     pc_pset(c, 1, 0, 4);
     char err[512] = "untouched";
     mode_t old = umask(022);
-    assert_int_equal(pc_write_file(c, in_dir(&t, "a.ppm"), PC_THEME_SCREEN, err, sizeof err), PC_DRAW_OK);
+    assert_int_equal(pc_write_file(c, in_dir(&t, "a.ppm"), PC_THEME_SCREEN, err, sizeof err), PC_OK);
     assert_string_equal(err, "");
-    assert_int_equal(pc_write_file(c, in_dir(&t, "b.PNG"), PC_THEME_PAPER, err, sizeof err), PC_DRAW_OK);
-    assert_int_equal(pc_write_file(c, in_dir(&t, "c.svg"), PC_THEME_SCREEN, err, sizeof err), PC_DRAW_OK);
+    assert_int_equal(pc_write_file(c, in_dir(&t, "b.PNG"), PC_THEME_PAPER, err, sizeof err), PC_OK);
+    assert_int_equal(pc_write_file(c, in_dir(&t, "c.svg"), PC_THEME_SCREEN, err, sizeof err), PC_OK);
     char names[512];
     list_dir(t.dir, names, sizeof names);
     assert_string_equal(names, "a.ppm b.PNG c.svg");   /* no temporary file is left */
@@ -350,7 +350,7 @@ static void test_write_file_formats(void **state) {
     /* an existing file is replaced, keeping its permissions */
     assert_int_equal(chmod(in_dir(&t, "a.ppm"), 0600), 0);
     pc_pset(c, 0, 0, 15);
-    assert_int_equal(pc_write_file(c, in_dir(&t, "a.ppm"), PC_THEME_SCREEN, err, sizeof err), PC_DRAW_OK);
+    assert_int_equal(pc_write_file(c, in_dir(&t, "a.ppm"), PC_THEME_SCREEN, err, sizeof err), PC_OK);
     assert_int_equal(stat(in_dir(&t, "a.ppm"), &st), 0);
     assert_int_equal(st.st_mode & 0777, 0600);
     f = fopen(in_dir(&t, "a.ppm"), "rb");
@@ -368,9 +368,9 @@ static void test_write_file_unknown_extension(void **state) {
     (void)state;
     pc_canvas *c = canvas(3, 2, 16);
     char err[256];
-    assert_int_equal(pc_write_file(c, "pic.gif", PC_THEME_SCREEN, err, sizeof err), PC_DRAW_EARG);
+    assert_int_equal(pc_write_file(c, "pic.gif", PC_THEME_SCREEN, err, sizeof err), PC_EARG);
     assert_string_equal(err, "cannot write 'pic.gif': the extension must be .png, .svg or .ppm");
-    assert_int_equal(pc_write_file(c, "picture", PC_THEME_SCREEN, err, sizeof err), PC_DRAW_EARG);
+    assert_int_equal(pc_write_file(c, "picture", PC_THEME_SCREEN, err, sizeof err), PC_EARG);
     assert_string_equal(err, "cannot write 'picture': the extension must be .png, .svg or .ppm");
     assert_int_equal(access("pic.gif", F_OK), -1);
     pc_canvas_free(c);
@@ -386,7 +386,7 @@ static void test_write_file_failures_leave_nothing(void **state) {
 
     /* a directory that does not exist */
     char *p = in_dir(&t, "missing/x.png");
-    assert_int_equal(pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err), PC_DRAW_EIO);
+    assert_int_equal(pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err), PC_EIO);
     snprintf(want, sizeof want, "cannot write '%s': No such file or directory", p);
     assert_string_equal(err, want);
 
@@ -394,7 +394,7 @@ static void test_write_file_failures_leave_nothing(void **state) {
     FILE *f = fopen(in_dir(&t, "plain"), "w");
     fclose(f);
     p = in_dir(&t, "plain/x.svg");
-    assert_int_equal(pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err), PC_DRAW_EIO);
+    assert_int_equal(pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err), PC_EIO);
     snprintf(want, sizeof want, "cannot write '%s': Not a directory", p);
     assert_string_equal(err, want);
 
@@ -402,7 +402,7 @@ static void test_write_file_failures_leave_nothing(void **state) {
      * fails, and the temporary file is removed again */
     assert_int_equal(mkdir(in_dir(&t, "d.ppm"), 0755), 0);
     p = in_dir(&t, "d.ppm");
-    assert_int_equal(pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err), PC_DRAW_EIO);
+    assert_int_equal(pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err), PC_EIO);
     snprintf(want, sizeof want, "cannot write '%s': Is a directory", p);
     assert_string_equal(err, want);
     list_dir(t.dir, names, sizeof names);
@@ -413,7 +413,7 @@ static void test_write_file_failures_leave_nothing(void **state) {
     p = in_dir(&t, "ro/x.png");
     int rc = pc_write_file(c, p, PC_THEME_SCREEN, err, sizeof err);
     if (geteuid() != 0) {
-        assert_int_equal(rc, PC_DRAW_EIO);
+        assert_int_equal(rc, PC_EIO);
         snprintf(want, sizeof want, "cannot write '%s': Permission denied", p);
         assert_string_equal(err, want);
         list_dir(in_dir(&t, "ro"), names, sizeof names);
@@ -421,7 +421,7 @@ static void test_write_file_failures_leave_nothing(void **state) {
     }
     /* a short err buffer is truncated, never overrun */
     char tiny[8];
-    assert_int_equal(pc_write_file(c, "x.gif", PC_THEME_SCREEN, tiny, sizeof tiny), PC_DRAW_EARG);
+    assert_int_equal(pc_write_file(c, "x.gif", PC_THEME_SCREEN, tiny, sizeof tiny), PC_EARG);
     assert_string_equal(tiny, "cannot ");
     pc_canvas_free(c);
     remove_tree(t.dir);

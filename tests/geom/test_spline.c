@@ -78,7 +78,7 @@ static void test_example10(void **state) {
     assert_int_equal(pc_stroke_npieces(4, 0), 3);
     pc_piece pcs[3];
     int bad;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_OK);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_OK);
     for (int i = 0; i < 3; i++) {
         /* the listing: v1 = x + rout cos(uout), w1 = y - rout sin(uout), ... */
         double uo = 2 * M_PI * ex10_uin[i], ui = 2 * M_PI * ex10_uin[i + 1];
@@ -128,7 +128,7 @@ static void test_closed_defaults(void **state) {
     pc_stroke_spec s = {.d = 2, .nnodes = 4, .closed = 1, .nodes = sq};
     assert_int_equal(pc_stroke_npieces(4, 1), 4);
     pc_piece pcs[4];
-    assert_int_equal(pc_stroke_build(&s, pcs, NULL), PC_TK_OK);
+    assert_int_equal(pc_stroke_build(&s, pcs, NULL), PC_OK);
     /* node 0: tangent parallel to N1 - N3 = (3, -3); side = chord/3 = 1 */
     NEAR(pcs[0].p[0], 1 / sqrt(2), 1e-15);
     NEAR(pcs[0].p[1], -1 / sqrt(2), 1e-15);
@@ -146,7 +146,7 @@ static void test_closed_defaults(void **state) {
     NEAR(X[1] + Y[1], 3, 1e-12);
     /* open: one-sided tangents at the ends */
     s.closed = 0;
-    assert_int_equal(pc_stroke_build(&s, pcs, NULL), PC_TK_OK);
+    assert_int_equal(pc_stroke_build(&s, pcs, NULL), PC_OK);
     NEAR(pcs[0].p[0], 1, 1e-15);
     NEAR(pcs[0].p[1], 0, 1e-15);
     NEAR(pcs[2].q[0], 1, 1e-15);   /* N3 - 1 * unit(N3 - N2) = (0, 3) - (-1, 0) */
@@ -166,7 +166,7 @@ static void test_3d(void **state) {
     pc_stroke_spec s = {.d = 3, .nnodes = 2, .nodes = nodes, .ein = ein, .eout = eout,
                         .rin = r, .rout = r};
     pc_piece pc;
-    assert_int_equal(pc_stroke_build(&s, &pc, NULL), PC_TK_OK);
+    assert_int_equal(pc_stroke_build(&s, &pc, NULL), PC_OK);
     NEAR(pc.p[2], .75, 1e-15);
     NEAR(pc.q[2], .35, 1e-15);
     NEAR(pc.p[0], 1, 1e-15);
@@ -181,7 +181,7 @@ static void test_3d(void **state) {
     double church[6] = {.05, 0, 3.9, .05, 0, 3.8};
     pc_stroke_spec c = {.d = 3, .nnodes = 2, .nodes = church, .ein = down, .rin = half,
                         .rout = half};
-    assert_int_equal(pc_stroke_build(&c, &pc, NULL), PC_TK_OK);
+    assert_int_equal(pc_stroke_build(&c, &pc, NULL), PC_OK);
     NEAR(pc.p[2], 3.4, 1e-15);
     NEAR(pc.q[2], 4.3, 1e-15);
 }
@@ -192,37 +192,37 @@ static void test_errors(void **state) {
     pc_piece pcs[2];
     int bad = 99;
     pc_stroke_spec s = {.d = 2, .nnodes = 2, .nodes = two};
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_EZERO);   /* coincident nodes */
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EZERO);   /* coincident nodes */
     assert_int_equal(bad, 0);
     double ok[4] = {0, 0, 1, 0};
     s.nodes = ok;
     s.nnodes = 1;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_EDIM);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EDIM);
     s.nnodes = 2;
     double t0[2] = {.5, 1.5};
     double t0bad[2] = {1.5, .5};
     s.t0 = t0;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_OK);   /* the last t0 is unused */
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_OK);   /* the last t0 is unused */
     s.t0 = t0bad;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_EDOMAIN);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EDOMAIN);
     assert_int_equal(bad, 0);
     s.t0 = NULL;
     double zero[4] = {0, 0, 1, 0};
     s.ein = zero;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_EZERO);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EZERO);
     assert_int_equal(bad, 0);
     double nan_row[4] = {NAN, 0, 1, 0};   /* NaN row: chord tangent */
     s.ein = nan_row;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_OK);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_OK);
     NEAR(pcs[0].p[0], 1.0 / 3, 1e-15);
     double inf[4] = {0, 0, INFINITY, 0};
     s.nodes = inf;
     s.ein = NULL;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_ENONFINITE);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_ENONFINITE);
     assert_int_equal(bad, 1);
     s.nodes = ok;
     s.d = 5;
-    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_TK_EDIM);
+    assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EDIM);
 }
 
 int main(void) {

@@ -1,4 +1,4 @@
-/* Binding of the coordinate maps and scalar numerics (stdlib/geom/cmap.h, numeric.h):
+/* Binding of the coordinate maps and scalar numerics (stdlib/geom/curvilinear.h, numeric.h):
  *   squash(p [, q])  squash01(p [, q])     the plane onto the open square (examples 26-28)
  *   oblique(C0, r, k, u)                    the oblique projection of examples 32-34
  *   projection(C0, C1, C2, C3)              the projection by four screen points
@@ -10,7 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "pcl_tk.h"
-#include "cmap.h"
+#include "curvilinear.h"
 #include "numeric.h"
 
 #define PROJ_MT "projection"
@@ -196,7 +196,7 @@ static int l_oresme(lua_State *L) {
     o->m = (int)m;
     luaL_setmetatable(L, ORESME_MT);
     int st = pc_oresme_fill(lambda, (int)m, y0, y1, o->y);
-    if (st != PC_TK_OK) return tk_statuserror(L, fn, st, NULL);
+    if (st != PC_OK) return tk_statuserror(L, fn, st, NULL);
     return 1;
 }
 
@@ -233,7 +233,7 @@ static int l_bisect(lua_State *L) {
     double x;
     int iters;
     int st = pc_bisect(call_f, L, a, b, tol, &x, &iters);
-    if (st == PC_TK_ENOBRACKET)
+    if (st == PC_ENOBRACKET)
     {
         double fa = call_f(a, L), fb = call_f(b, L);
         const char *ta = tk_pushnum(L, a), *tfa = tk_pushnum(L, fa);
@@ -241,7 +241,7 @@ static int l_bisect(lua_State *L) {
         return pcl_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
                           "the interval brackets no root", ta, tfa, tb, tfb);
     }
-    if (st != PC_TK_OK) return tk_statuserror(L, fn, st, "f returned NaN or an infinity");
+    if (st != PC_OK) return tk_statuserror(L, fn, st, "f returned NaN or an infinity");
     lua_pushnumber(L, x);
     lua_pushinteger(L, iters);
     return 2;
@@ -286,9 +286,9 @@ static int l_frame_coords(lua_State *L) {
     double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)};
     double x[2] = {luaL_checknumber(L, 5), luaL_checknumber(L, 6)}, xi, eta;
     int st = pc_frame_coords(o, e, x, &xi, &eta);
-    if (st != PC_TK_OK) {
+    if (st != PC_OK) {
         lua_pushnil(L);
-        lua_pushstring(L, pc_tk_strerror(st));
+        lua_pushstring(L, pc_strerror(st));
         return 2;
     }
     lua_pushnumber(L, xi);
@@ -306,7 +306,7 @@ static int l_patch_blend(lua_State *L) {
     return 2;
 }
 
-void pcl_open_cmap(lua_State *L) {
+void pcl_open_curvilinear(lua_State *L) {
     int module = lua_gettop(L);
     luaL_newmetatable(L, PROJ_MT);
     static const luaL_Reg pmeta[] = {{"__call", proj_call}, {"__index", proj_index},

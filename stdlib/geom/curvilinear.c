@@ -1,6 +1,6 @@
 /* Coordinate maps of the curvilinear-coordinates toolkit (stepanov_examples.md examples 2, 15,
  * 23-28, 32-34). */
-#include "cmap.h"
+#include "curvilinear.h"
 #include <math.h>
 
 static const double PI = 3.14159265358979323846;
@@ -20,12 +20,12 @@ void pc_frame_point(const double o[2], const double e[2], double xi, double eta,
 int pc_frame_coords(const double o[2], const double e[2], const double x[2], double *xi,
                     double *eta) {
     double l = e[0] * e[0] + e[1] * e[1];
-    if (!isfinite(l)) return PC_TK_ENONFINITE;
-    if (l == 0) return PC_TK_EZERO;
+    if (!isfinite(l)) return PC_ENONFINITE;
+    if (l == 0) return PC_EZERO;
     double dx = x[0] - o[0], dy = x[1] - o[1];
     *xi = (dx * e[0] + dy * e[1]) / l;
     *eta = (dx * e[1] - dy * e[0]) / l;
-    return PC_TK_OK;
+    return PC_OK;
 }
 
 void pc_patch_blend(const double u0[2], const double u2[2], double xi1, double eta1, double xi3,
@@ -65,13 +65,13 @@ int pc_mobius(double z0re, double z0im, double phi, double re, double im, double
     double p1 = re - z0re, q1 = im - z0im;
     double p2 = 1.0 - re * z0re - im * z0im, q2 = z0im * re - z0re * im;
     double den = p2 * p2 + q2 * q2;
-    if (den == 0) return PC_TK_EPOLE;
+    if (den == 0) return PC_EPOLE;
     double p3 = (p1 * p2 + q1 * q2) / den, q3 = (p2 * q1 - p1 * q2) / den;
     double c = cos(phi), s = sin(phi);
     *wre = p3 * c - q3 * s;
     *wim = p3 * s + q3 * c;
-    if (!isfinite(*wre) || !isfinite(*wim)) return PC_TK_ENONFINITE;
-    return PC_TK_OK;
+    if (!isfinite(*wre) || !isfinite(*wim)) return PC_ENONFINITE;
+    return PC_OK;
 }
 
 void pc_mobius_inverse(double z0re, double z0im, double phi, double *z0re_inv,

@@ -2,10 +2,10 @@
  * the bilinear quadrilateral map, the graph of a function erected on a segment, the blend of
  * four side curves into a patch, the plane -> open square compactification, the oblique
  * projection by screen points and the Moebius automorphism of the unit disc. */
-#ifndef PC_CMAP_H
-#define PC_CMAP_H
+#ifndef PC_CURVILINEAR_H
+#define PC_CURVILINEAR_H
 
-#include "toolkit.h"
+#include "status.h"
 
 /* X(t1, t2) = P0 + t1 (P1 - P0) + t2 (P3 - P0) + t1 t2 (P2 - P3 - P1 + P0) (example 2, §4):
  * P0, P1, P2, P3 at the corners (0,0), (1,0), (1,1), (0,1).  d doubles per point. */
@@ -14,7 +14,7 @@ void pc_bilinear(int d, const double *p0, const double *p1, const double *p2, co
 
 /* The frame of a segment in the plane (example 23): origin O, first axis e, second axis
  * perp(e) = (e_y, -e_x).  pc_frame_point gives O + xi e + eta perp(e); pc_frame_coords
- * inverts it (PC_TK_EZERO if e = 0). */
+ * inverts it (PC_EZERO if e = 0). */
 void pc_frame_point(const double o[2], const double e[2], double xi, double eta, double out[2]);
 int pc_frame_coords(const double o[2], const double e[2], const double x[2], double *xi,
                     double *eta);
@@ -48,7 +48,7 @@ void pc_project4(const double c[8], double x, double y, double z, double out[2])
 /* The Moebius automorphism of the unit disc (examples 15, 16):
  *   w = e^(i phi) (z - z0) / (1 - conj(z0) z)
  * on complex numbers given as (re, im) pairs.  It maps the disc onto itself, the circle to
- * itself and z0 to 0.  PC_TK_EPOLE when 1 - conj(z0) z = 0 (z = 1/conj(z0), outside the disc
+ * itself and z0 to 0.  PC_EPOLE when 1 - conj(z0) z = 0 (z = 1/conj(z0), outside the disc
  * when |z0| < 1). */
 int pc_mobius(double z0re, double z0im, double phi, double re, double im, double *wre,
               double *wim);
