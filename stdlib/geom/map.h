@@ -1,0 +1,87 @@
+/* The one map type of the core: a projective map of homogeneous coordinates.
+ *
+ * A map from nin-space to nout-space is an (nout+1) x (nin+1) matrix M acting on a value
+ * h = (x1 w, ..., xn w | w) as a column vector: h' = M h.  The last row makes the new weight,
+ * so a map whose last row is (0 ... 0 | 1) is affine (it keeps points points and vectors
+ * vectors), and any other is projective: a point at infinity (a vector) may go to a finite
+ * point, which is how a perspective sends a direction to its vanishing point.
+ *
+ * Affine maps by point correspondences (Konopatsky's change of simplex, §1.2.2), the
+ * textbook's matrices (Buimov: row vectors, p' = p T, composed left to right) and every
+ * 3-D -> 2-D projection are constructors of this one type, so any two maps of fitting
+ * dimensions compose.  No function here allocates. */
+#ifndef PC_MAP_H
+#define PC_MAP_H
+#include "point.h"
+
+typedef struct {
+    int nin, nout;                                   /* dimensions of the points in and out */
+    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];     /* (nout+1) rows of nin+1, row-major */
+} pc_map;
+#define PC_MAP_AT(f, i, j) ((f)->m[(i) * ((f)->nin + 1) + (j)])
+
+/* --- general ------------------------------------------------------------------------------ */
+void pc_map_identity(pc_map *f, int n);
+/* From a matrix of (nout+1) x (nin+1) numbers, row-major, in the column-vector convention
+ * above (rowvec = 0), or from the textbook's (nin+1) x (nout+1) matrix T of p' = p T
+ * (rowvec = 1; T is the transpose of M).  PC_EDIM on bad sizes, PC_ENONFINITE for NaN/inf,
+ * PC_ESINGULAR if the matrix sends everything to weight 0 and zero coordinates. */
+int pc_map_from_matrix(pc_map *f, int nin, int nout, const double *a, int rowvec);
+/* The matrix in either convention, into a ((nin+1) * (nout+1) doubles). */
+void pc_map_to_matrix(const pc_map *f, int rowvec, double *a);
+/* Is the last row (0 ... 0 | 1) (exactly)? */
+int pc_map_is_affine(const pc_map *f);
+
+/* Apply to a value: in has nin+1 doubles (weight last), out nout+1. */
+void pc_map_apply(const pc_map *f, const double *in, double *out);
+/* h = f o g (g first).  PC_EDIM unless g->nout == f->nin. */
+int pc_map_compose(const pc_map *f, const pc_map *g, pc_map *h);
+/* PC_EDIM unless nin == nout; PC_ESINGULAR for a singular matrix. */
+int pc_map_inverse(const pc_map *f, pc_map *inv);
+
+/* --- affine maps -------------------------------------------------------------------------- */
+/* The affine map sending src[i] to dst[i] for i = 0..nin (src: nin+1 rows of nin, dst: nin+1
+ * rows of nout): 3 pairs in the plane, 4 in space; nout may differ from nin (4 image points
+ * of a 3-D frame in the plane give an oblique projection).  PC_ECOINCIDENT/PC_ECOLLINEAR if
+ * the source points are dependent, PC_EDIM on bad sizes. */
+int pc_map_affine_points(pc_map *f, int nin, int nout, const double *src, const double *dst);
+/* The map of a frame: (x1, ..., xk) -> O + x1 a1 + ... + xk ak, with naxes vectors a_i (rows
+ * of nout).  No independence is required (a projection is a valid frame map). */
+int pc_map_frame(pc_map *f, int nout, int naxes, const double *o, const double *axes);
+/* x -> x + v in n-space. */
+void pc_map_translate(pc_map *f, int n, const double *v);
+/* x -> c + diag(k) (x - c); c NULL for the origin. */
+void pc_map_scale(pc_map *f, int n, const double *k, const double *c);
+/* The plane turned by angle (radians, counter-clockwise for y up) about c (NULL: origin). */
+void pc_map_rotate2(pc_map *f, double angle, const double *c);
+/* Space turned by angle about the axis through point a with direction d (right-hand rule).
+ * PC_EZERO for d = 0. */
+int pc_map_rotate3(pc_map *f, const double *a, const double *d, double angle);
+/* Reflection in the hyperplane through a with normal nrm (a line in the plane, a plane in
+ * space).  PC_EZERO for nrm = 0. */
+int pc_map_reflect(pc_map *f, int n, const double *a, const double *nrm);
+/* Shear: x_i += k x_j (0-based axes i != j).  PC_EDOMAIN for bad axes. */
+int pc_map_shear(pc_map *f, int n, int i, int j, double k);
+
+/* --- 3-D -> 2-D projections (Buimov ch. 2; the picture's x to the right, y up) ------------- */
+/* Orthographic projection along a coordinate axis, onto the plane where it is 0: 'z' keeps
+ * (x, y) (the textbook's Pz), 'y' keeps (x, z), 'x' keeps (y, z).  PC_EDOMAIN else. */
+int pc_map_orthographic(pc_map *f, char axis);
+/* Axonometric: turn about the y axis by phi, then about the x axis by theta, then drop z
+ * (the textbook's general axonometry). */
+void pc_map_axonometric(pc_map *f, double phi, double theta);
+/* Isometric: phi = 45 deg, theta = asin(tan 30 deg) = 35.26 deg; equal foreshortening
+ * sqrt(2/3) on all three axes. */
+void pc_map_isometric(pc_map *f);
+/* Dimetric with foreshortening fz of the z axis, the x and y axes equal (Buimov §2.8.3:
+ * sin^2 theta = fz^2/2, sin^2 phi = fz^2/(2 - fz^2)).  PC_EDOMAIN unless 0 < fz < 1. */
+int pc_map_dimetric(pc_map *f, double fz);
+/* Oblique: x' = x + k z cos(alpha), y' = y + k z sin(alpha); cavalier k = 1, cabinet k = 1/2. */
+void pc_map_oblique(pc_map *f, double k, double alpha);
+/* Central projection with the centre (eye) at e onto the picture plane through the point p0
+ * perpendicular to the line from e towards p0 (the principal ray); picture coordinates have
+ * their origin at p0, x to the right and y along the projection of `up` (NULL: the z axis)
+ * onto the plane.  PC_ECOINCIDENT if e = p0, PC_ECOLLINEAR if up is along the ray. */
+int pc_map_perspective(pc_map *f, const double *e, const double *p0, const double *up);
+
+#endif
