@@ -9,7 +9,12 @@
  * Affine maps by point correspondences (Konopatsky's change of simplex, §1.2.2), the
  * textbook's matrices (Buimov: row vectors, p' = p T, composed left to right) and every
  * 3-D -> 2-D projection are constructors of this one type, so any two maps of fitting
- * dimensions compose.  No function here allocates. */
+ * dimensions compose.  No function here allocates.
+ *
+ * A scale of the whole matrix does not change a projective map; the results of
+ * pc_map_from_matrix (for a last row (0 ... 0 | s), the textbook's overall scale), of
+ * pc_map_compose and of pc_map_inverse are divided by their corner entry when it is neither 0
+ * nor 1, so an affine map always has the last row (0 ... 0 | 1) exactly and keeps weights. */
 #ifndef PC_MAP_H
 #define PC_MAP_H
 #include "point.h"
@@ -25,15 +30,26 @@ void pc_map_identity(pc_map *f, int n);
 /* From a matrix of (nout+1) x (nin+1) numbers, row-major, in the column-vector convention
  * above (rowvec = 0), or from the textbook's (nin+1) x (nout+1) matrix T of p' = p T
  * (rowvec = 1; T is the transpose of M).  PC_EDIM on bad sizes, PC_ENONFINITE for NaN/inf,
- * PC_ESINGULAR if the matrix sends everything to weight 0 and zero coordinates. */
+ * PC_ESINGULAR for the zero matrix (it sends everything to weight 0 and zero coordinates).
+ * A last row (0 ... 0 | s), s != 0, is divided out (the textbook's overall scale: x* = x/s),
+ * which gives an affine map. */
 int pc_map_from_matrix(pc_map *f, int nin, int nout, const double *a, int rowvec);
 /* The matrix in either convention, into a ((nin+1) * (nout+1) doubles). */
 void pc_map_to_matrix(const pc_map *f, int rowvec, double *a);
 /* Is the last row (0 ... 0 | 1) (exactly)? */
 int pc_map_is_affine(const pc_map *f);
 
-/* Apply to a value: in has nin+1 doubles (weight last), out nout+1. */
+/* Apply to a value: in has nin+1 doubles (weight last), out nout+1: out = M in, raw (a
+ * projective map gives any weight). */
 void pc_map_apply(const pc_map *f, const double *in, double *out);
+/* The image of a value as the point calculus reads it (in place is fine).  An affine map:
+ * pc_map_apply (weights kept, vectors stay vectors).  A projective map: M in scaled so that
+ * the weight is that of `in` (a point stays a point, k A goes to k f(A)), and a direction
+ * whose image is finite gives its point, weight 1 (a vanishing point).  An image whose
+ * weight cancels to rounding (relative 1e-13) is a direction, weight exactly 0: PC_IMPROPER
+ * when `in` had a weight (a point sent to infinity), PC_OK for a direction.  PC_EPOLE if a
+ * nonzero value goes to the zero value (the centre of a central projection). */
+int pc_map_image(const pc_map *f, const double *in, double *out);
 /* h = f o g (g first).  PC_EDIM unless g->nout == f->nin. */
 int pc_map_compose(const pc_map *f, const pc_map *g, pc_map *h);
 /* PC_EDIM unless nin == nout; PC_ESINGULAR for a singular matrix. */
@@ -80,8 +96,13 @@ int pc_map_dimetric(pc_map *f, double fz);
 void pc_map_oblique(pc_map *f, double k, double alpha);
 /* Central projection with the centre (eye) at e onto the picture plane through the point p0
  * perpendicular to the line from e towards p0 (the principal ray); picture coordinates have
- * their origin at p0, x to the right and y along the projection of `up` (NULL: the z axis)
- * onto the plane.  PC_ECOINCIDENT if e = p0, PC_ECOLLINEAR if up is along the ray. */
+ * their origin at p0, x to the right as the eye sees it and y along the projection of `up`
+ * (NULL: the z axis) onto the plane; lengths in the picture plane are kept.  The eye goes to
+ * the zero value (pc_map_image: PC_EPOLE), points of the plane through the eye parallel to
+ * the picture to infinity, a direction to its vanishing point.  (The textbook's one-point
+ * perspective with its centre at (0, 0, -k) plots x* = x k/(z + k) unmirrored, which is this
+ * picture reflected in its y axis: Buimov convention 8.)  PC_ECOINCIDENT if e = p0, PC_EZERO
+ * for up = 0, PC_ECOLLINEAR if up is along the ray, PC_ENONFINITE for NaN or inf. */
 int pc_map_perspective(pc_map *f, const double *e, const double *p0, const double *up);
 
 #endif
