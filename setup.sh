@@ -2,7 +2,7 @@
 # Install the Debian packages pointcalc needs to build and test.
 # As root the missing ones are installed with apt-get; otherwise the exact command is printed.
 set -e
-PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3"
+PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

@@ -39,16 +39,20 @@ void pc_braille_render(const pc_canvas *c, int background, double scale, int col
     int ndx = 2 * cols, ndy = 4 * rows;
     int *xlo = malloc((size_t)(ndx + 1) * sizeof *xlo);
     int *ylo = malloc((size_t)(ndy + 1) * sizeof *ylo);
-    if (!xlo || !ylo) {
+    /* per attribute in use (palette and true colours): pixels of it in the cell */
+    size_t nattr = 256 + (size_t)c->ntrue;
+    int *counts = calloc(nattr, sizeof *counts);
+    uint16_t *seen = malloc(nattr * sizeof *seen);
+    if (!xlo || !ylo || !counts || !seen) {
         free(xlo);
         free(ylo);
+        free(counts);
+        free(seen);
         for (int i = 0; i < cols * rows; i++) cells[i] = (pc_braille_cell){0, -1};
         return;
     }
     dot_bounds(ndx, scale, c->width, xlo);
     dot_bounds(ndy, scale, c->height, ylo);
-    int counts[256] = {0};
-    uint8_t seen[256];
     for (int row = 0; row < rows; row++) {
         for (int col = 0; col < cols; col++) {
             pc_braille_cell cell = {0, -1};
@@ -58,7 +62,7 @@ void pc_braille_render(const pc_canvas *c, int background, double scale, int col
                     int gx = 2 * col + dx, gy = 4 * row + dy;
                     int ink = 0;
                     for (int y = ylo[gy]; y < ylo[gy + 1]; y++) {
-                        const uint8_t *p = c->pixels + (size_t)y * c->width;
+                        const uint16_t *p = c->pixels + (size_t)y * c->width;
                         for (int x = xlo[gx]; x < xlo[gx + 1]; x++) {
                             if (p[x] == background) continue;
                             ink = 1;
@@ -76,12 +80,14 @@ void pc_braille_render(const pc_canvas *c, int background, double scale, int col
                     best = a;
             }
             for (int i = 0; i < nseen; i++) counts[seen[i]] = 0;
-            cell.color = (int16_t)best;
+            cell.color = best;
             cells[row * cols + col] = cell;
         }
     }
     free(xlo);
     free(ylo);
+    free(counts);
+    free(seen);
 }
 
 /* ---- terminal colours ---------------------------------------------------------------------- */

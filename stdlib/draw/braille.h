@@ -22,7 +22,7 @@
  *     bit 6  bit 7 */
 typedef struct {
     uint8_t bits;
-    int16_t color;
+    int32_t color;
 } pc_braille_cell;
 
 /* The bit of the dot in column dx (0..1) and row dy (0..3) of a cell. */

@@ -63,20 +63,34 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
         return pc_fail(c, "screen size %dx%d out of range 1..16384", width, height);
     if (ncolors != 2 && ncolors != 16 && ncolors != 256)
         return pc_fail(c, "number of colours must be 2, 16 or 256, got %d", ncolors);
-    uint8_t *px = calloc((size_t)width * height, 1);
+    uint16_t *px = calloc((size_t)width * height, sizeof *px);
     if (!px) return pc_fail_code(c, PC_ENOMEM, "out of memory for a %dx%d screen", width, height);
+    if (!c->palette && !(c->palette = malloc(256 * sizeof *c->palette))) {
+        free(px);
+        return pc_fail_code(c, PC_ENOMEM, "out of memory for the palette");
+    }
+    if (!c->pens && !(c->pens = malloc(sizeof *c->pens))) {
+        free(px);
+        return pc_fail_code(c, PC_ENOMEM, "out of memory for the pens");
+    }
+    if (!c->cappens) c->cappens = 1;
     free(c->pixels);
     c->pixels = px;
     c->width = width;
     c->height = height;
     c->ncolors = ncolors;
     pc_palette_default(c->palette, ncolors);
+    c->ntrue = 0;
+    if (c->rgb_index) memset(c->rgb_index, 0, c->rgb_slots * sizeof *c->rgb_index);
+    c->pens[0] = (pc_stroke){.width = 1};
+    c->npens = 1;
+    c->pen = 0;
     c->fg = ncolors - 1 < 15 ? ncolors - 1 : 15;
     c->bg = c->paper = 0;
     c->has_window = c->window_screen = 0;
     c->view = (pc_rect){0, 0, width - 1, height - 1};
     c->view_screen = 0;
-    c->nops = c->nspans = c->ndots = c->nclips = 0;
+    c->nops = c->nspans = c->ndots = c->nclips = c->npts = c->ntext = 0;
     c->dirty = 0;
     c->version++;
     c->error[0] = 0;
@@ -110,6 +124,12 @@ void pc_canvas_free(pc_canvas *c) {
     free(c->spans);
     free(c->dots);
     free(c->clips);
+    free(c->pts);
+    free(c->tags);
+    free(c->text);
+    free(c->palette);
+    free(c->rgb_index);
+    free(c->pens);
     free(c);
 }
 
@@ -123,16 +143,20 @@ int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...) {
     return code;
 }
 
+int pc_valid_color(const pc_canvas *c, int color) {
+    return (color >= 0 && color < c->ncolors) || (color >= 256 && color < 256 + c->ntrue);
+}
+
 int pc_check_color(pc_canvas *c, int *color, int dflt) {
     if (*color < 0) *color = dflt;
-    if (*color >= c->ncolors)
+    if (!pc_valid_color(c, *color))
         return pc_fail(c, "colour %d out of range 0..%d", *color, c->ncolors - 1);
     return PC_OK;
 }
 
 /* ---- the display list -------------------------------------------------------------------- */
 
-static int grow(void **buf, size_t *cap, size_t need, size_t elem) {
+int pc_grow(void **buf, size_t *cap, size_t need, size_t elem) {
     if (need <= *cap) return 1;
     size_t n = *cap ? *cap * 2 : 256;
     while (n < need) n *= 2;
@@ -144,14 +168,14 @@ static int grow(void **buf, size_t *cap, size_t need, size_t elem) {
 }
 
 pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
-    if (!grow((void **)&c->ops, &c->capops, c->nops + 1, sizeof *c->ops)) {
+    if (!pc_grow((void **)&c->ops, &c->capops, c->nops + 1, sizeof *c->ops)) {
         pc_fail_code(c, PC_ENOMEM, "out of memory for the display list");
         return NULL;
     }
     pc_op *op = &c->ops[c->nops++];
     memset(op, 0, sizeof *op);
-    op->kind = kind;
-    op->color = (uint8_t)color;
+    op->kind = (uint8_t)kind;
+    op->color = (uint16_t)color;
     op->clip = (uint16_t)(c->nclips - 1);
     if (kind != PC_OP_CLEAR) c->dirty = 1;
     c->version++;
@@ -159,7 +183,7 @@ pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
 }
 
 int pc_push_span(pc_canvas *c, int y, int x0, int x1) {
-    if (!grow((void **)&c->spans, &c->capspans, c->nspans + 1, sizeof *c->spans))
+    if (!pc_grow((void **)&c->spans, &c->capspans, c->nspans + 1, sizeof *c->spans))
         return pc_fail_code(c, PC_ENOMEM, "out of memory for a painted region");
     c->spans[c->nspans++] = (pc_span){(int16_t)y, (int16_t)x0, (int16_t)x1};
     return PC_OK;
@@ -177,7 +201,7 @@ int pc_push_dot(pc_canvas *c, double x, double y, int color) {
         c->version++;
     }
     if (c->ndots >= UINT32_MAX ||
-        !grow((void **)&c->dots, &c->capdots, c->ndots + 1, sizeof *c->dots))
+        !pc_grow((void **)&c->dots, &c->capdots, c->ndots + 1, sizeof *c->dots))
         return pc_fail_code(c, PC_ENOMEM, "out of memory for the display list");
     c->dots[c->ndots++] = (pc_xy){x, y};
     last->count++;
@@ -188,7 +212,7 @@ int pc_push_clip(pc_canvas *c) {
     if (c->nclips && memcmp(&c->clips[c->nclips - 1], &c->view, sizeof c->view) == 0)
         return PC_OK;
     if (c->nclips >= 65535 ||
-        !grow((void **)&c->clips, &c->capclips, c->nclips + 1, sizeof *c->clips))
+        !pc_grow((void **)&c->clips, &c->capclips, c->nclips + 1, sizeof *c->clips))
         return pc_fail_code(c, PC_ENOMEM, "too many VIEW changes");
     c->clips[c->nclips++] = c->view;
     return PC_OK;
@@ -283,7 +307,7 @@ int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, 
     if (r.x0 < 0 || r.y0 < 0 || r.x1 >= c->width || r.y1 >= c->height)
         return pc_fail(c, "view (%d, %d)-(%d, %d) is not inside the %dx%d screen", x1, y1, x2, y2,
                        c->width, c->height);
-    if (fill >= c->ncolors || border >= c->ncolors)
+    if ((fill >= 0 && !pc_valid_color(c, fill)) || (border >= 0 && !pc_valid_color(c, border)))
         return pc_fail(c, "view colour out of range 0..%d", c->ncolors - 1);
     if (border >= 0) {
         /* the border is drawn just outside the viewport, where there is room */
@@ -311,9 +335,9 @@ int pc_view_reset(pc_canvas *c) {
 /* ---- colours ------------------------------------------------------------------------------ */
 
 int pc_color(pc_canvas *c, int fg, int bg) {
-    if (fg < 0 || fg >= c->ncolors)
+    if (!pc_valid_color(c, fg))
         return pc_fail(c, "foreground colour %d out of range 0..%d", fg, c->ncolors - 1);
-    if (bg >= c->ncolors)
+    if (bg >= 0 && !pc_valid_color(c, bg))
         return pc_fail(c, "background colour %d out of range 0..%d", bg, c->ncolors - 1);
     c->fg = fg;
     if (bg >= 0) c->bg = bg;
@@ -329,7 +353,102 @@ int pc_palette(pc_canvas *c, int attr, pc_rgb rgb) {
 }
 
 int pc_palette_reset(pc_canvas *c) {
-    pc_palette_default(c->palette, c->ncolors);
+    pc_palette_default(c->palette, c->ncolors);   /* the first 256: true colours stay */
     c->version++;
     return PC_OK;
 }
+
+/* ---- true colours ------------------------------------------------------------------------- */
+
+/* The true colours are found by an open-addressing hash of their rgb, so a script that uses
+ * thousands of colours pays the same per call as one that uses two. */
+static size_t rgb_slot(pc_rgb rgb, size_t slots) {
+    uint32_t key = (uint32_t)rgb.r << 16 | (uint32_t)rgb.g << 8 | rgb.b;
+    return (size_t)((key * 2654435761u) & (slots - 1));
+}
+
+static int same_rgb(pc_rgb a, pc_rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+
+static void rgb_insert(pc_canvas *c, int attr) {
+    size_t i = rgb_slot(c->palette[attr], c->rgb_slots);
+    while (c->rgb_index[i]) i = (i + 1) & (c->rgb_slots - 1);
+    c->rgb_index[i] = (uint16_t)attr;
+}
+
+/* Keep the hash at most half full. */
+static int rgb_reserve(pc_canvas *c) {
+    if ((size_t)(c->ntrue + 1) * 2 <= c->rgb_slots) return 1;
+    size_t slots = c->rgb_slots ? c->rgb_slots * 2 : 64;
+    uint16_t *idx = calloc(slots, sizeof *idx);
+    if (!idx) return 0;
+    free(c->rgb_index);
+    c->rgb_index = idx;
+    c->rgb_slots = slots;
+    for (int k = 0; k < c->ntrue; k++) rgb_insert(c, 256 + k);
+    return 1;
+}
+
+int pc_rgb_color(pc_canvas *c, pc_rgb rgb) {
+    if (c->rgb_slots) {
+        for (size_t i = rgb_slot(rgb, c->rgb_slots); c->rgb_index[i]; i = (i + 1) & (c->rgb_slots - 1))
+            if (same_rgb(c->palette[c->rgb_index[i]], rgb)) return c->rgb_index[i];
+    }
+    if (256 + c->ntrue > PC_MAX_ATTR) {
+        pc_fail(c, "too many colours: at most %d distinct \"#rrggbb\" colours", PC_MAX_ATTR - 255);
+        return -1;
+    }
+    pc_rgb *pal = realloc(c->palette, (size_t)(256 + c->ntrue + 1) * sizeof *pal);
+    if (!pal || !rgb_reserve(c)) {
+        if (pal) c->palette = pal;
+        pc_fail_code(c, PC_ENOMEM, "out of memory for a colour");
+        return -1;
+    }
+    c->palette = pal;
+    int attr = 256 + c->ntrue++;
+    c->palette[attr] = rgb;
+    rgb_insert(c, attr);
+    return attr;
+}
+
+/* ---- pens --------------------------------------------------------------------------------- */
+
+static int same_pen(const pc_stroke *a, const pc_stroke *b) {
+    if (a->width != b->width || a->ndash != b->ndash || a->style != b->style) return 0;
+    for (int i = 0; i < a->ndash; i++)
+        if (a->dash[i] != b->dash[i]) return 0;
+    return 1;
+}
+
+int pc_pen_index(pc_canvas *c, const pc_stroke *p) {
+    for (size_t i = 0; i < c->npens; i++)
+        if (same_pen(&c->pens[i], p)) return (int)i;
+    if (c->npens > UINT16_MAX ||
+        !pc_grow((void **)&c->pens, &c->cappens, c->npens + 1, sizeof *c->pens)) {
+        pc_fail_code(c, PC_ENOMEM, "too many different pens");
+        return -1;
+    }
+    c->pens[c->npens] = *p;
+    return (int)c->npens++;
+}
+
+int pc_pen(pc_canvas *c, double width, const double *dash, int ndash) {
+    if (!(width >= 1 && width <= PC_PEN_MAXWIDTH))
+        return pc_fail(c, "pen: width must be 1..%d pixels, got %g", PC_PEN_MAXWIDTH, width);
+    if (ndash < 0 || ndash > PC_PEN_MAXDASH || ndash % 2)
+        return pc_fail(c, "pen: a dash pattern has an even number of lengths, at most %d, got %d",
+                       PC_PEN_MAXDASH, ndash);
+    pc_stroke p = {.width = width, .ndash = ndash};
+    for (int i = 0; i < ndash; i++) {
+        if (!(dash[i] > 0 && dash[i] <= 1e6))
+            return pc_fail(c, "pen: dash length %d must be a positive number of pixels, got %g",
+                           i + 1, dash[i]);
+        p.dash[i] = dash[i];
+        p.period += dash[i];
+    }
+    int k = pc_pen_index(c, &p);
+    if (k < 0) return PC_ENOMEM;
+    c->pen = k;
+    return PC_OK;
+}
+
+void pc_pen_reset(pc_canvas *c) { c->pen = 0; }

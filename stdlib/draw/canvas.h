@@ -1,4 +1,4 @@
-/* The canvas: a QBasic-style indexed-colour raster plus the display list that produced it.
+/* The canvas: a QBasic-style raster of colour attributes plus the display list that produced it.
  *
  * Every drawing call does two things: it rasterises into `pixels` at once (so POINT and PAINT
  * see the picture exactly as QBasic would) and it appends one operation to the display list
@@ -6,8 +6,15 @@
  * drawing functions are world coordinates: they pass through WINDOW (if set) and VIEW (if set)
  * to become screen pixels, y down, rounded to the nearest pixel only when rasterised.
  *
- * This header is pure C: no Lua.  Errors are reported as PC_DRAW_* codes with a message in
- * `pc_canvas.error`.
+ * Colours are attributes: 0..255 are palette attributes (QBasic's colour numbers; a screen has
+ * `ncolors` of them), 256.. are true colours ("#rrggbb") allocated on demand by pc_rgb_color,
+ * one attribute per distinct colour.  PAINT's border test and POINT compare attributes.
+ *
+ * Beyond QBasic: paths (polylines and cubic segments), a pen (line width and dash pattern) for
+ * lines, boxes, circles and paths, QBasic's 16-bit LINE style, and text in a built-in VGA font.
+ *
+ * This header is pure C: no Lua.  Errors are reported as status codes (status.h) with a
+ * message in `pc_canvas.error`.
  */
 #ifndef PC_CANVAS_H
 #define PC_CANVAS_H
@@ -27,20 +34,50 @@ typedef enum {
     PC_OP_FILLBOX,   /* filled box */
     PC_OP_ARC,       /* centre x1,y1, radii rx,ry; angles a0..a1 (radians, counter-clockwise
                         on screen); flags: PC_ARC_FULL, PC_ARC_RADIUS0, PC_ARC_RADIUS1 */
-    PC_OP_FILL       /* a PAINTed region: spans[first .. first+count) */
+    PC_OP_FILL,      /* a PAINTed region: spans[first .. first+count) */
+    PC_OP_PATH,      /* pts[first .. first+count) with their tags; flags: PC_PATH_CLOSED */
+    PC_OP_TEXT       /* text[first .. first+count) (UTF-8); x1, y1: top-left pixel of the
+                        cell box; rx: scale; flags: the anchor it was placed by */
 } pc_op_kind;
 
 enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
 
-/* A drawing operation in screen coordinates (fractional, before rounding). */
+/* Path verbs: a MOVE starts a subpath at its point, a LINE goes to its point, a CUBIC takes
+ * three points (two controls and the end).  In the display list each point carries the verb
+ * it belongs to (all three points of a cubic are tagged CUBIC). */
+enum { PC_PATH_MOVE, PC_PATH_LINE, PC_PATH_CUBIC };
+enum { PC_PATH_CLOSED = 1 };
+
+/* Where text goes relative to its point: the side of the point (NE: above right). */
+enum { PC_ANCHOR_C, PC_ANCHOR_N, PC_ANCHOR_NE, PC_ANCHOR_E, PC_ANCHOR_SE, PC_ANCHOR_S,
+       PC_ANCHOR_SW, PC_ANCHOR_W, PC_ANCHOR_NW };
+
+/* The largest attribute: true colours take 256 .. PC_MAX_ATTR. */
+#define PC_MAX_ATTR 65535
+
+/* A pen: what lines, boxes, circles and paths are stroked with. */
+#define PC_PEN_MAXDASH 16
+#define PC_PEN_MAXWIDTH 256
 typedef struct {
-    pc_op_kind kind;
-    uint8_t color;        /* palette attribute */
+    double width;                 /* pixels, 1..PC_PEN_MAXWIDTH; round caps and joins above 1 */
+    int ndash;                    /* 0: solid; else even, the on/off lengths in dash[] */
+    double dash[PC_PEN_MAXDASH];  /* on, off, on, off, ... in pixels along the stroke */
+    double period;                /* sum of dash[] */
+    unsigned style;               /* QBasic LINE style (16 bits, bit 15 first); 0: none */
+} pc_stroke;
+
+/* A drawing operation in screen coordinates (fractional, before rounding).  The header is
+ * packed into 8 bytes, as before pens and true colours: scripts record millions of ops. */
+typedef struct {
+    uint8_t kind;         /* pc_op_kind */
     uint8_t flags;
+    uint16_t color;       /* attribute */
     uint16_t clip;        /* index into pc_canvas.clips */
+    uint16_t pen;         /* index into pc_canvas.pens (LINE, BOX, ARC, PATH; else 0) */
     double x1, y1, x2, y2;   /* double: a float would move some dots across a pixel edge */
     double rx, ry, a0, a1;
-    uint32_t first, count;   /* DOTS: into dots[]; FILL: into spans[] */
+    uint32_t first, count;   /* DOTS: into dots[]; FILL: into spans[]; PATH: into pts[];
+                                TEXT: into text[] */
 } pc_op;
 
 /* A dot of a DOTS run, in screen coordinates (16 bytes a dot: scripts plot millions). */
@@ -54,9 +91,13 @@ typedef struct { int x0, y0, x1, y1; } pc_rect;
 
 typedef struct pc_canvas {
     int width, height;
-    int ncolors;            /* 16 for SCREEN 12, 256 for SCREEN 13 */
-    uint8_t *pixels;        /* width*height attributes, row-major, y down */
-    pc_rgb palette[256];    /* attribute -> colour */
+    int ncolors;            /* palette attributes: 16 for SCREEN 12, 256 for SCREEN 13 */
+    uint16_t *pixels;       /* width*height attributes, row-major, y down */
+    pc_rgb *palette;        /* attribute -> colour: 256 palette entries, then the ntrue true
+                               colours (attributes 256 .. 255 + ntrue) */
+    int ntrue;
+    uint16_t *rgb_index;    /* hash of the true colours (rgb -> attribute; 0: empty slot) */
+    size_t rgb_slots;
     int fg, bg;             /* current foreground, background (CLS) attributes */
     int paper;              /* the attribute the whole screen was last cleared to (SCREEN, a
                                full-screen CLS): what a preview counts as empty.  COLOR's
@@ -79,6 +120,12 @@ typedef struct pc_canvas {
     pc_span *spans; size_t nspans, capspans;
     pc_xy *dots; size_t ndots, capdots;
     pc_rect *clips; size_t nclips, capclips;
+    pc_xy *pts; uint8_t *tags; size_t npts, cappts;   /* path points and their verbs */
+    char *text; size_t ntext, captext;                /* the strings of TEXT ops */
+
+    /* pens: pens[0] is the default (width 1, solid); `pen` is the one in force */
+    pc_stroke *pens; size_t npens, cappens;
+    int pen;
 
     int dirty;              /* something drawn since the last save */
     uint64_t version;       /* bumped by every change of the picture (drawing, CLS, PALETTE,
@@ -102,8 +149,14 @@ void pc_world_to_screen(const pc_canvas *c, double wx, double wy, double *sx, do
 void pc_screen_to_world(const pc_canvas *c, double sx, double sy, double *wx, double *wy);
 double pc_world_xscale(const pc_canvas *c);       /* screen pixels per world x unit */
 
+/* True colours: the attribute of rgb, allocated on first use (deduplicated: the same rgb
+ * always gives the same attribute).  Returns the attribute (>= 256), or -1 with c->error set
+ * when PC_MAX_ATTR - 255 colours are already in use or memory runs out. */
+int pc_rgb_color(pc_canvas *c, pc_rgb rgb);
+
 /* The drawing statements.  color < 0 means "the default" (foreground, or background for
- * preset).  All return PC_OK or PC_EARG (with c->error set). */
+ * preset).  All return PC_OK or PC_EARG (with c->error set).  A colour is any attribute:
+ * 0..ncolors-1 or a true colour from pc_rgb_color. */
 int pc_cls(pc_canvas *c);
 int pc_color(pc_canvas *c, int fg, int bg);       /* bg < 0: unchanged */
 int pc_palette(pc_canvas *c, int attr, pc_rgb rgb);
@@ -118,6 +171,43 @@ int pc_circle(pc_canvas *c, double x, double y, double r, int color,
               double start, double end, double aspect);
 /* PAINT: fill from (x,y) up to pixels of colour `border` (border < 0: same as paint colour). */
 int pc_paint(pc_canvas *c, double x, double y, int color, int border);
+/* LINE with QBasic's 16-bit style: box 0 for a line, 1 for B (the outline).  As QBasic (and
+ * GW-BASIC) do, bit 15 comes first and each pixel step along the line uses the next bit; the
+ * pattern restarts at each statement and runs on round the four sides of a box.  A line is
+ * walked from its upper end (from its second point when both ends are level); a box's sides in
+ * the order bottom, top (both from the second corner's x), then right and left from the top.
+ * The style is one pixel wide: the pen's width and dashes do not apply. */
+int pc_line_styled(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int box,
+                   unsigned pattern);
+
+/* A path of n points xy[2i], xy[2i+1] (world coordinates).  verbs NULL: move to the first
+ * point, line to each other one; else nverbs verbs, the first a MOVE, consuming exactly n
+ * points.  closed: each subpath ends with a line back to its start.  Rasterised exactly as the
+ * chain of LINEs through its vertices (cubics flattened to within 0.1 px on the screen); the
+ * dash phase runs on across vertices and restarts at each subpath.  A subpath of one point
+ * draws nothing.  The graphics cursor moves to the last point. */
+int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
+            int closed, int color);
+
+/* The pen for the lines, boxes, circles and paths drawn from now on: width in pixels
+ * (1..PC_PEN_MAXWIDTH; above 1 every pixel of the 1-pixel stroke becomes a disc of that
+ * diameter), dash: ndash on/off lengths in pixels (ndash even, at most PC_PEN_MAXDASH, each
+ * > 0; 0 for solid) measured along the stroke from its start.  SCREEN restores the default. */
+int pc_pen(pc_canvas *c, double width, const double *dash, int ndash);
+void pc_pen_reset(pc_canvas *c);
+
+/* Text in the built-in VGA font (8x16 cells, see font.h), transparent background.  The cell
+ * box (8*scale per character by 16*scale) goes on the `anchor` side of the point (x, y), `gap`
+ * pixels off it: with the point in pixel (X, Y) and g = round(gap), NE puts the box's
+ * bottom-left pixel at (X + g, Y - g); N centres it above (left X - w/2, bottom Y - g); C
+ * centres it on the point (left X - w/2, top Y - h/2); the other sides likewise.  SE with gap
+ * 0 puts the top-left pixel on the point.  scale 1..8; characters the font lacks show its
+ * replacement glyph; invalid UTF-8 is an error. */
+int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, double gap,
+            int scale, int color);
+/* The size in pixels of the cell box of utf8 at scale; PC_EARG for invalid UTF-8 or scale. */
+int pc_text_size(const char *utf8, int scale, int *w, int *h);
+
 /* POINT: the attribute at (x,y), or -1 outside the view. */
 int pc_point(const pc_canvas *c, double x, double y);
 /* WINDOW: maps world (x1,y1)-(x2,y2) onto the view; screen != 0 keeps y down. */

@@ -9,8 +9,33 @@ int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 #define pc_fail(c, ...) pc_fail_code((c), PC_EARG, __VA_ARGS__)
 
-/* Resolve a colour argument: <0 means dflt; out of range is an error. */
+/* Resolve a colour argument: <0 means dflt; an attribute not in use is an error. */
 int pc_check_color(pc_canvas *c, int *color, int dflt);
+int pc_valid_color(const pc_canvas *c, int color);
+
+/* Make room for `need` elements of size elem in *buf (doubling); 0 when out of memory. */
+int pc_grow(void **buf, size_t *cap, size_t need, size_t elem);
+
+/* The index of pen p in the canvas's table (added if new), or -1 (PC_ENOMEM in c->error). */
+int pc_pen_index(pc_canvas *c, const pc_stroke *p);
+
+/* Fill n pixels from p with an attribute. */
+static inline void pc_fill_px(uint16_t *p, int color, size_t n) {
+    for (size_t i = 0; i < n; i++) p[i] = (uint16_t)color;
+}
+
+/* Is distance d along a stroke in a dash of pen p (always, for a solid pen)? */
+int pc_dash_on(const pc_stroke *p, double d);
+
+/* The pixels of a styled LINE or BOX op (QBasic's style bits), in the order QBasic draws
+ * them, each given to fn; the same for the raster and the SVG writer. */
+void pc_styled_pixels(const pc_canvas *c, const pc_op *op, void (*fn)(void *, long, long),
+                      void *ctx);
+
+/* Flattening a cubic in screen space: the number of segments that keeps every point within
+ * tol pixels of the curve (Wang's bound), and the point at t. */
+int pc_cubic_segments(const pc_xy p[4], double tol);
+pc_xy pc_cubic_at(const pc_xy p[4], double t);
 
 pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color);
 int pc_push_span(pc_canvas *c, int y, int x0, int x1);

@@ -1,4 +1,5 @@
-/* Binary PPM (P6): the raster through the theme's palette, 8 bits per channel. */
+/* Binary PPM (P6): the raster through the theme's palette (true colours as given), 8 bits per
+ * channel. */
 #include <stdlib.h>
 #include "writers.h"
 
@@ -11,9 +12,9 @@ int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out) {
     if (!row) return PC_ENOMEM;
     int ok = PC_OK;
     for (int y = 0; y < c->height && ok == PC_OK; y++) {
-        const uint8_t *src = c->pixels + (size_t)y * w;
+        const uint16_t *src = c->pixels + (size_t)y * w;
         for (size_t x = 0; x < w; x++) {
-            pc_rgb p = pal[src[x]];
+            pc_rgb p = pc_attr_rgb(c, pal, src[x]);
             row[3 * x] = p.r;
             row[3 * x + 1] = p.g;
             row[3 * x + 2] = p.b;

@@ -21,6 +21,14 @@
  *                      the ring (2r + 1 px) with round ends; sparse ones stay circles.
  *   FILL (PAINT)       one filled <path>: the outline of the painted pixels, traced along
  *                      pixel edges (holes included), so it has no seams at any zoom.
+ *   PATH               one <path> with absolute M, L and C commands (Z when closed).
+ *   TEXT               <text> in monospace at the raster's cell box (font.h's baseline),
+ *                      stretched by textLength to exactly the raster's width.
+ *   styled LINE, BOX   QBasic's style bits: the exact pixels, as isolated dots are written.
+ *
+ * A pen other than the default adds stroke-width (with round caps and joins) and
+ * stroke-dasharray (see pen_attrs) to the element of a LINE run, BOX, ARC or PATH; a boxed
+ * outline drawn with a pen is a path, a dashed full circle a path of two arcs.
  *
  * Colours are the theme's palette at write time.  VIEW clip rectangles other than the whole
  * screen become <clipPath>s; what lies far outside the clip (more than MARGIN px) is left out.
@@ -30,6 +38,7 @@
 #include <string.h>
 #include "writers.h"
 #include "canvas_internal.h"
+#include "font.h"
 
 #define DENSE 1.5    /* max distance between consecutive dots of one polyline, px */
 #define TOL 0.05     /* max distance of a dropped dot from the polyline, px */
@@ -40,7 +49,7 @@
 
 typedef struct { long x, y; } hpt;      /* a point in hundredths of a pixel */
 
-typedef struct { uint32_t idx, seq; uint8_t color; } layer_px;
+typedef struct { uint32_t idx, seq; uint16_t color; } layer_px;
 
 typedef struct {
     FILE *out;
@@ -88,7 +97,7 @@ static void put_attr_num(svgw *w, const char *name, long v) {
 }
 
 static void color_attr(svgw *w, const char *what, int color) {
-    pc_rgb p = w->pal[color];
+    pc_rgb p = pc_attr_rgb(w->c, w->pal, color);
     fprintf(w->out, " %s=\"#%02x%02x%02x\"", what, p.r, p.g, p.b);
 }
 
@@ -209,7 +218,7 @@ static void add_dot(svgw *w, double x, double y, int color, pc_rect clip) {
         w->caplayer = nc;
     }
     w->layer[w->nlayer] = (layer_px){(uint32_t)(iy * w->c->width + ix), (uint32_t)w->nlayer,
-                                     (uint8_t)color};
+                                     (uint16_t)color};
     w->nlayer++;
 }
 
@@ -415,7 +424,7 @@ static void emit_dots(svgw *w, const pc_op *op) {
 
 static int is_brush(const pc_op *op) {
     return op->kind == PC_OP_ARC && (op->flags & PC_ARC_FULL) && op->rx == op->ry &&
-           op->rx > 0 && op->rx <= BRUSH_R;
+           op->rx > 0 && op->rx <= BRUSH_R && op->pen == 0;
 }
 
 static void emit_arc(svgw *w, const pc_op *op);
@@ -446,23 +455,78 @@ static void emit_brushes(svgw *w, const pc_op *ops, size_t n) {
     free(d);
 }
 
+/* ---- the pen ------------------------------------------------------------------------------ */
+
+static const pc_stroke *pen_of(const svgw *w, const pc_op *op) {
+    return op->pen < w->c->npens ? &w->c->pens[op->pen] : &w->c->pens[0];
+}
+
+static int is_styled(const svgw *w, const pc_op *op) {
+    return (op->kind == PC_OP_LINE || op->kind == PC_OP_BOX) && pen_of(w, op)->style;
+}
+
+/* How far outside the clip a stroke of op may start and still show. */
+static double margin_of(const svgw *w, const pc_op *op) {
+    double width = pen_of(w, op)->width;
+    return width > 1 ? MARGIN + width / 2 : MARGIN;
+}
+
+/* The pen's attributes (none for the default pen, so plain figures stay as they were).  The
+ * raster puts a pixel (or a disc) at every point of the stroke whose distance lies in a dash,
+ * so a dash of length L covers L pixels: in SVG each dash is drawn 1 px shorter and each gap
+ * 1 px longer, and the caps (square, or round when wide), half the width at each end, make up
+ * the pixel centres' extent: exactly the raster's pixels along an axis. */
+static void pen_attrs(svgw *w, const pc_op *op) {
+    const pc_stroke *p = pen_of(w, op);
+    char b[32];
+    if (p->width != 1) {
+        fmt_num(b, hund(p->width));
+        fprintf(w->out, " stroke-width=\"%s\" stroke-linecap=\"round\" stroke-linejoin=\"round\"", b);
+    }
+    if (!p->ndash) return;
+    fputs(" stroke-dasharray=\"", w->out);
+    for (int i = 0; i < p->ndash; i++) {
+        double v = i % 2 ? p->dash[i] + 1 : fmax(p->dash[i] - 1, 0);
+        fmt_num(b, hund(v));
+        fprintf(w->out, "%s%s", i ? " " : "", b);
+    }
+    fputc('"', w->out);
+}
+
+/* A LINE or BOX with QBasic's style: the exact pixels, as the raster has them. */
+typedef struct { svgw *w; int color; pc_rect clip; } styled_ctx;
+
+static void styled_dot(void *ctx, long x, long y) {
+    styled_ctx *s = ctx;
+    add_dot(s->w, (double)x, (double)y, s->color, s->clip);
+}
+
+static void emit_styled(svgw *w, const pc_op *op) {
+    styled_ctx s = {w, op->color, clip_of(w, op)};
+    pc_styled_pixels(w->c, op, styled_dot, &s);
+}
+
 /* ---- runs of lines ------------------------------------------------------------------------ */
 
+/* ops[0..n): LINEs of one colour, pen and clip, as one path.  With a dashed pen every LINE is
+ * its own subpath, as the dash pattern restarts at each LINE in the raster. */
 static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
     pc_rect clip = clip_of(w, &ops[0]);
+    int pen = ops[0].pen, dashed = pen_of(w, &ops[0])->ndash > 0;
+    double m = margin_of(w, &ops[0]);
     int open = 0;
     for (size_t i = 0; i < n; i++) {
         const pc_op *op = &ops[i];
-        if (op->x1 == op->x2 && op->y1 == op->y2) {   /* a zero-length line is one pixel */
+        if (pen == 0 && op->x1 == op->x2 && op->y1 == op->y2) {   /* one pixel */
             add_dot(w, op->x1, op->y1, op->color, clip);
             continue;
         }
         double x0 = op->x1 + 0.5, y0 = op->y1 + 0.5, x1 = op->x2 + 0.5, y1 = op->y2 + 0.5;
-        if (!pc_clip_segment(&x0, &y0, &x1, &y1, clip.x0 - MARGIN, clip.y0 - MARGIN,
-                          clip.x1 + 1 + MARGIN, clip.y1 + 1 + MARGIN))
+        if (!pc_clip_segment(&x0, &y0, &x1, &y1, clip.x0 - m, clip.y0 - m,
+                          clip.x1 + 1 + m, clip.y1 + 1 + m))
             continue;
         hpt a = {hund(x0), hund(y0)}, b = {hund(x1), hund(y1)};
-        if (a.x == b.x && a.y == b.y) {
+        if (pen == 0 && a.x == b.x && a.y == b.y) {
             add_dot(w, op->x1, op->y1, op->color, clip);
             continue;
         }
@@ -470,11 +534,12 @@ static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
             open_el(w, "path");
             color_attr(w, "stroke", op->color);
             fputs(" stroke-linejoin=\"round\"", w->out);
+            pen_attrs(w, op);
             d_begin(w);
             d_move(w, a);
             d_letter(w, 'l');
             open = 1;
-        } else if (a.x != w->cur.x || a.y != w->cur.y) {
+        } else if (dashed || a.x != w->cur.x || a.y != w->cur.y) {
             d_letter(w, 'm');    /* the pairs after a relative move are relative lines */
             d_num(w, a.x - w->cur.x);
             d_num(w, a.y - w->cur.y);
@@ -512,10 +577,24 @@ static void emit_box(svgw *w, const pc_op *op) {
         return;
     }
     /* sides far outside the clip move to just outside it: still invisible, numbers stay small */
-    if (x0 < clip.x0 - 2) x0 = clip.x0 - 2;
-    if (y0 < clip.y0 - 2) y0 = clip.y0 - 2;
-    if (x1 > clip.x1 + 2) x1 = clip.x1 + 2;
-    if (y1 > clip.y1 + 2) y1 = clip.y1 + 2;
+    long m = 2 + (long)ceil(pen_of(w, op)->width / 2);
+    if (x0 < clip.x0 - m) x0 = clip.x0 - m;
+    if (y0 < clip.y0 - m) y0 = clip.y0 - m;
+    if (x1 > clip.x1 + m) x1 = clip.x1 + m;
+    if (y1 > clip.y1 + m) y1 = clip.y1 + m;
+    if (op->pen != 0) {   /* a path, so a flat box still strokes and dashes run round it */
+        open_el(w, "path");
+        color_attr(w, "stroke", op->color);
+        pen_attrs(w, op);
+        d_begin(w);
+        d_move(w, (hpt){x0 * 100 + 50, y0 * 100 + 50});
+        d_letter(w, 'H'); d_num(w, x1 * 100 + 50);
+        d_letter(w, 'V'); d_num(w, y1 * 100 + 50);
+        d_letter(w, 'H'); d_num(w, x0 * 100 + 50);
+        d_letter(w, 'Z');
+        d_end(w);
+        return;
+    }
     if (x0 == x1 || y0 == y1) {   /* a flat box is a row or column of pixels */
         fill_rect(w, x0, y0, x1, y1, op->color);
         return;
@@ -538,11 +617,15 @@ static void emit_arc(svgw *w, const pc_op *op) {
         return;
     }
     /* wholly outside the clip: nothing to draw */
-    if (cx + rx < clip.x0 - MARGIN || cx - rx > clip.x1 + 1 + MARGIN ||
-        cy + ry < clip.y0 - MARGIN || cy - ry > clip.y1 + 1 + MARGIN)
+    double m = margin_of(w, op);
+    if (cx + rx < clip.x0 - m || cx - rx > clip.x1 + 1 + m || cy + ry < clip.y0 - m ||
+        cy - ry > clip.y1 + 1 + m)
         return;
     long hcx = hund(cx), hcy = hund(cy), hrx = hund(rx), hry = hund(ry);
-    if (op->flags & PC_ARC_FULL) {
+    /* a dashed full ellipse is a path from angle 0 counter-clockwise, where the raster starts
+     * its dashes (a <circle> would start them clockwise) */
+    int dashed = pen_of(w, op)->ndash > 0;
+    if ((op->flags & PC_ARC_FULL) && !dashed) {
         if (hrx == hry) {
             open_el(w, "circle");
             put_attr_num(w, "cx", hcx);
@@ -556,6 +639,7 @@ static void emit_arc(svgw *w, const pc_op *op) {
             put_attr_num(w, "ry", hry);
         }
         color_attr(w, "stroke", op->color);
+        pen_attrs(w, op);
         fputs("/>\n", w->out);
         return;
     }
@@ -567,6 +651,7 @@ static void emit_arc(svgw *w, const pc_op *op) {
     hpt p1 = {hund(cx + rx * cos(a1)), hund(cy - ry * sin(a1))};
     open_el(w, "path");
     color_attr(w, "stroke", op->color);
+    pen_attrs(w, op);
     d_begin(w);
     if (op->flags & PC_ARC_RADIUS0) {
         d_move(w, c);
@@ -674,6 +759,172 @@ static void emit_fill(svgw *w, const pc_op *op) {
     free(m);
 }
 
+/* ---- paths -------------------------------------------------------------------------------- */
+
+/* Coordinates up to this far from the screen are written as they are (hundredths fit); a
+ * segment reaching further is cut to the clip first, a cubic flattened and cut. */
+#define NEAR_PX 1e6
+
+static int near_pt(pc_xy p) { return fabs(p.x) <= NEAR_PX && fabs(p.y) <= NEAR_PX; }
+
+typedef struct {
+    svgw *w;
+    pc_rect clip;
+    double m;
+    int broken;    /* a cut moved the current point: the subpath no longer ends where it began */
+} path_out;
+
+static void path_line(path_out *o, pc_xy a, pc_xy b) {
+    svgw *w = o->w;
+    double x0 = a.x + 0.5, y0 = a.y + 0.5, x1 = b.x + 0.5, y1 = b.y + 0.5;
+    if (!near_pt(a) || !near_pt(b)) {
+        if (!pc_clip_segment(&x0, &y0, &x1, &y1, o->clip.x0 - o->m, o->clip.y0 - o->m,
+                             o->clip.x1 + 1 + o->m, o->clip.y1 + 1 + o->m)) {
+            o->broken = 1;
+            return;
+        }
+    }
+    hpt p = {hund(x0), hund(y0)}, q = {hund(x1), hund(y1)};
+    if (p.x != w->cur.x || p.y != w->cur.y) {
+        d_move(w, p);
+        o->broken = 1;
+    }
+    d_letter(w, 'L');
+    d_num(w, q.x);
+    d_num(w, q.y);
+    w->cur = q;
+}
+
+static void path_cubic(path_out *o, const pc_xy q[4]) {
+    svgw *w = o->w;
+    if (near_pt(q[0]) && near_pt(q[1]) && near_pt(q[2]) && near_pt(q[3])) {
+        d_letter(w, 'C');
+        for (int k = 1; k <= 3; k++) {
+            d_num(w, hund(q[k].x + 0.5));
+            d_num(w, hund(q[k].y + 0.5));
+        }
+        w->cur = (hpt){hund(q[3].x + 0.5), hund(q[3].y + 0.5)};
+        return;
+    }
+    int n = pc_cubic_segments(q, 0.1);
+    pc_xy a = q[0];
+    for (int j = 1; j <= n; j++) {
+        pc_xy b = j == n ? q[3] : pc_cubic_at(q, (double)j / n);
+        path_line(o, a, b);
+        a = b;
+    }
+}
+
+/* The end of a subpath that started at p0, the current point being `cur`. */
+static void path_close(path_out *o, int closed, pc_xy cur, pc_xy p0) {
+    if (!closed) return;
+    if (o->broken) path_line(o, cur, p0);
+    else d_letter(o->w, 'Z');
+}
+
+/* Is the path's hull (its points, controls included) near the clip? */
+static int path_near_clip(const pc_xy *p, size_t n, pc_rect clip, double m) {
+    double x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
+    for (size_t i = 1; i < n; i++) {
+        x0 = fmin(x0, p[i].x); x1 = fmax(x1, p[i].x);
+        y0 = fmin(y0, p[i].y); y1 = fmax(y1, p[i].y);
+    }
+    return !(x1 + 0.5 < clip.x0 - m || x0 + 0.5 > clip.x1 + 1 + m || y1 + 0.5 < clip.y0 - m ||
+             y0 + 0.5 > clip.y1 + 1 + m);
+}
+
+/* A PATH: one <path> with M, L and C commands (absolute), Z closing each subpath if asked. */
+static void emit_path(svgw *w, const pc_op *op) {
+    const pc_canvas *c = w->c;
+    if (op->count == 0 || (size_t)op->first + op->count > c->npts) return;
+    const pc_xy *p = c->pts + op->first;
+    const uint8_t *tag = c->tags + op->first;
+    path_out o = {w, clip_of(w, op), margin_of(w, op), 0};
+    if (!path_near_clip(p, op->count, o.clip, o.m)) return;
+    int closed = op->flags & PC_PATH_CLOSED;
+    open_el(w, "path");
+    color_attr(w, "stroke", op->color);
+    fputs(" stroke-linejoin=\"round\"", w->out);
+    pen_attrs(w, op);
+    d_begin(w);
+    pc_xy cur = p[0], start = p[0];
+    size_t nsub = 0;
+    for (size_t i = 0; i < op->count;) {
+        if (tag[i] == PC_PATH_MOVE) {
+            if (nsub > 1) path_close(&o, closed, cur, start);
+            start = cur = p[i++];
+            nsub = 1;
+            o.broken = 0;
+            if (near_pt(cur)) d_move(w, (hpt){hund(cur.x + 0.5), hund(cur.y + 0.5)});
+            else o.broken = 1;   /* the first segment moves to where it enters */
+        } else if (tag[i] == PC_PATH_LINE) {
+            path_line(&o, cur, p[i]);
+            cur = p[i++];
+            nsub++;
+        } else {
+            const pc_xy q[4] = {cur, p[i], p[i + 1], p[i + 2]};
+            path_cubic(&o, q);
+            cur = q[3];
+            i += 3;
+            nsub += 3;
+        }
+    }
+    if (nsub > 1) path_close(&o, closed, cur, start);
+    d_end(w);
+}
+
+/* ---- text --------------------------------------------------------------------------------- */
+
+/* A code point as XML character data: markup characters escaped; characters XML cannot hold
+ * (controls, U+FFFE, U+FFFF) become U+FFFD, as the raster shows them with the font's
+ * replacement glyph. */
+static void put_xml_char(FILE *out, uint32_t cp) {
+    switch (cp) {
+    case '&': fputs("&amp;", out); return;
+    case '<': fputs("&lt;", out); return;
+    case '>': fputs("&gt;", out); return;
+    case '"': fputs("&quot;", out); return;
+    case '\'': fputs("&apos;", out); return;
+    }
+    if (cp < 0x20 || cp == 0xfffe || cp == 0xffff) cp = 0xfffd;
+    char b[4];
+    int n;
+    if (cp < 0x80) { b[0] = (char)cp; n = 1; }
+    else if (cp < 0x800) { b[0] = (char)(0xc0 | cp >> 6); b[1] = (char)(0x80 | (cp & 0x3f)); n = 2; }
+    else if (cp < 0x10000) {
+        b[0] = (char)(0xe0 | cp >> 12); b[1] = (char)(0x80 | ((cp >> 6) & 0x3f));
+        b[2] = (char)(0x80 | (cp & 0x3f)); n = 3;
+    } else {
+        b[0] = (char)(0xf0 | cp >> 18); b[1] = (char)(0x80 | ((cp >> 12) & 0x3f));
+        b[2] = (char)(0x80 | ((cp >> 6) & 0x3f)); b[3] = (char)(0x80 | (cp & 0x3f)); n = 4;
+    }
+    fwrite(b, 1, (size_t)n, out);
+}
+
+/* TEXT: a <text> whose cell box is the raster's: x at the box's left edge, y on the font's
+ * baseline, and textLength stretching the glyphs to exactly 8*scale px per character. */
+static void emit_text(svgw *w, const pc_op *op) {
+    const pc_canvas *c = w->c;
+    if ((size_t)op->first + op->count > c->ntext) return;
+    const char *s = c->text + op->first;
+    size_t n = op->count, i = 0;
+    long nchars = pc_utf8_count(s, n, NULL);
+    if (nchars <= 0) return;
+    long scale = lrint(op->rx), x = lrint(op->x1), y = lrint(op->y1);
+    long wd = nchars * PC_FONT_W * scale, ht = PC_FONT_H * scale;
+    pc_rect clip = clip_of(w, op);
+    if (x > clip.x1 || y > clip.y1 || x + wd <= clip.x0 || y + ht <= clip.y0) return;
+    open_el(w, "text");
+    fprintf(w->out, " x=\"%ld\" y=\"%ld\" font-family=\"monospace\" font-size=\"%ld\" "
+                    "textLength=\"%ld\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"",
+            x, y + PC_FONT_BASELINE * scale, PC_FONT_H * scale, wd);
+    color_attr(w, "fill", op->color);
+    fputs(" stroke=\"none\">", w->out);
+    uint32_t cp;
+    while (pc_utf8_next(s, n, &i, &cp)) put_xml_char(w->out, cp);
+    fputs("</text>\n", w->out);
+}
+
 /* ---- the document ------------------------------------------------------------------------- */
 
 int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
@@ -703,11 +954,17 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
         size_t j = i + 1;
         if (op->kind == PC_OP_DOTS) {
             emit_dots(&w, op);
+        } else if (is_styled(&w, op)) {
+            emit_styled(&w, op);
         } else if (op->kind == PC_OP_LINE) {
             while (j < c->nops && c->ops[j].kind == op->kind && c->ops[j].color == op->color &&
-                   c->ops[j].clip == op->clip)
+                   c->ops[j].clip == op->clip && c->ops[j].pen == op->pen)
                 j++;
             emit_lines(&w, op, j - i);
+        } else if (op->kind == PC_OP_PATH) {
+            emit_path(&w, op);
+        } else if (op->kind == PC_OP_TEXT) {
+            emit_text(&w, op);
         } else if (is_brush(op)) {
             while (j < c->nops && is_brush(&c->ops[j]) && c->ops[j].color == op->color &&
                    c->ops[j].rx == op->rx && c->ops[j].clip == op->clip)

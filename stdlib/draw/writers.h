@@ -13,6 +13,12 @@ typedef enum { PC_FMT_UNKNOWN = -1, PC_FMT_PNG, PC_FMT_SVG, PC_FMT_PPM } pc_form
 /* The colours a writer uses: the canvas palette, or its print version (white paper, dark ink). */
 void pc_theme_palette(const pc_canvas *c, pc_theme theme, pc_rgb out[256]);
 
+/* The colour of an attribute in a writer: a palette attribute through the theme's palette
+ * `pal` (from pc_theme_palette), a true colour as given.  Every writer resolves through it. */
+static inline pc_rgb pc_attr_rgb(const pc_canvas *c, const pc_rgb pal[256], int attr) {
+    return attr < 256 ? pal[attr] : c->palette[attr];
+}
+
 /* Format from the file name's extension (case-insensitive), PC_FMT_UNKNOWN otherwise. */
 pc_format pc_format_from_path(const char *path);
 

@@ -1,0 +1,159 @@
+/* psf2c: convert a PC Screen Font (PSF1 or PSF2, 8 pixels wide, 16 high, with a Unicode table)
+ * into C source for the built-in VGA font (font.h): the glyph bitmaps, a table from code
+ * point to glyph sorted by code point, and the replacement glyph (U+FFFD if the font has it,
+ * else '?').  Run at build time on the console font of the Debian package console-setup-linux,
+ * so no font data lives in the repository.
+ *   psf2c FONT.psf OUT.c */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct { uint32_t cp; uint32_t glyph; } entry;
+
+static entry *map;
+static size_t nmap, capmap;
+
+static void die(const char *msg, const char *arg) {
+    fprintf(stderr, "psf2c: %s%s%s\n", msg, arg ? ": " : "", arg ? arg : "");
+    exit(1);
+}
+
+static void add(uint32_t cp, uint32_t glyph) {
+    if (cp > 0xffff) return;   /* the font module keeps the Basic Multilingual Plane */
+    if (nmap == capmap) {
+        capmap = capmap ? 2 * capmap : 1024;
+        map = realloc(map, capmap * sizeof *map);
+        if (!map) die("out of memory", NULL);
+    }
+    map[nmap++] = (entry){cp, glyph};
+}
+
+static uint32_t le32(const uint8_t *p) {
+    return p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+/* PSF1: 16-bit code points per glyph, 0xFFFE starts a sequence (skipped), 0xFFFF ends. */
+static void psf1_table(const uint8_t *p, const uint8_t *end, uint32_t nglyphs) {
+    for (uint32_t g = 0; g < nglyphs && p + 1 < end; g++) {
+        int in_seq = 0;
+        for (; p + 1 < end; p += 2) {
+            uint32_t v = p[0] | (uint32_t)p[1] << 8;
+            if (v == 0xffff) { p += 2; break; }
+            if (v == 0xfffe) in_seq = 1;
+            else if (!in_seq) add(v, g);
+        }
+    }
+}
+
+/* One UTF-8 code point of a PSF2 table; 0 if malformed. */
+static int utf8(const uint8_t **pp, const uint8_t *end, uint32_t *cp) {
+    const uint8_t *p = *pp;
+    int n = p[0] < 0x80 ? 0 : p[0] >= 0xf0 ? 3 : p[0] >= 0xe0 ? 2 : p[0] >= 0xc0 ? 1 : -1;
+    if (n < 0 || p + n >= end) return 0;
+    uint32_t v = n ? p[0] & (0x3f >> n) : p[0];
+    for (int i = 1; i <= n; i++) v = v << 6 | (p[i] & 0x3f);
+    *cp = v;
+    *pp = p + n + 1;
+    return 1;
+}
+
+/* PSF2: UTF-8 code points per glyph, 0xFE starts a sequence (skipped), 0xFF ends. */
+static void psf2_table(const uint8_t *p, const uint8_t *end, uint32_t nglyphs) {
+    for (uint32_t g = 0; g < nglyphs && p < end; g++) {
+        int in_seq = 0;
+        while (p < end) {
+            if (*p == 0xff) { p++; break; }
+            if (*p == 0xfe) { in_seq = 1; p++; continue; }
+            uint32_t cp;
+            if (!utf8(&p, end, &cp)) die("malformed Unicode table", NULL);
+            if (!in_seq) add(cp, g);
+        }
+    }
+}
+
+static int by_cp(const void *a, const void *b) {
+    const entry *x = a, *y = b;
+    if (x->cp != y->cp) return x->cp < y->cp ? -1 : 1;
+    return x->glyph < y->glyph ? -1 : x->glyph > y->glyph;
+}
+
+static uint8_t *read_all(const char *path, size_t *n) {
+    FILE *f = fopen(path, "rb");
+    if (!f) die("cannot open", path);
+    size_t cap = 1 << 16;
+    uint8_t *buf = malloc(cap);
+    *n = 0;
+    for (size_t got; buf && (got = fread(buf + *n, 1, cap - *n, f)) > 0;) {
+        *n += got;
+        if (*n == cap) buf = realloc(buf, cap *= 2);
+    }
+    fclose(f);
+    if (!buf) die("out of memory", NULL);
+    return buf;
+}
+
+int main(int argc, char **argv) {
+    if (argc != 3) die("usage: psf2c FONT.psf OUT.c", NULL);
+    size_t n;
+    uint8_t *d = read_all(argv[1], &n);
+    const uint8_t *glyphs, *end = d + n;
+    uint32_t nglyphs, height, width = 8, charsize;
+    int v2 = n >= 32 && le32(d) == 0x864ab572;
+    if (v2) {
+        uint32_t hdr = le32(d + 8), flags = le32(d + 12);
+        nglyphs = le32(d + 16);
+        charsize = le32(d + 20);
+        height = le32(d + 24);
+        width = le32(d + 28);
+        if (!(flags & 1)) die("the font has no Unicode table", argv[1]);
+        glyphs = d + hdr;
+    } else if (n >= 4 && d[0] == 0x36 && d[1] == 0x04) {
+        if (!(d[2] & 0x02)) die("the font has no Unicode table", argv[1]);
+        nglyphs = d[2] & 0x01 ? 512 : 256;
+        charsize = height = d[3];
+        glyphs = d + 4;
+    } else {
+        die("not a PSF font", argv[1]);
+    }
+    if (width != 8 || height != 16 || charsize != 16) die("the font is not 8x16", argv[1]);
+    if (glyphs + (size_t)nglyphs * 16 > end) die("the font is truncated", argv[1]);
+    if (v2) psf2_table(glyphs + nglyphs * 16, end, nglyphs);
+    else psf1_table(glyphs + nglyphs * 16, end, nglyphs);
+
+    /* sorted, one glyph per code point (the first the table names) */
+    qsort(map, nmap, sizeof *map, by_cp);
+    size_t k = 0;
+    for (size_t i = 0; i < nmap; i++)
+        if (k == 0 || map[k - 1].cp != map[i].cp) map[k++] = map[i];
+    nmap = k;
+    long replacement = -1, question = -1;
+    for (size_t i = 0; i < nmap; i++) {
+        if (map[i].cp == 0xfffd) replacement = map[i].glyph;
+        if (map[i].cp == '?') question = map[i].glyph;
+    }
+    if (replacement < 0) replacement = question;
+    if (replacement < 0) die("the font has neither U+FFFD nor '?'", argv[1]);
+
+    FILE *out = fopen(argv[2], "w");
+    if (!out) die("cannot write", argv[2]);
+    fprintf(out, "/* Generated by psf2c from a PSF console font at build time: do not edit. */\n"
+                 "#include \"font.h\"\n\n"
+                 "const size_t pc_font_nglyphs = %u;\n"
+                 "const uint8_t pc_font_bits[%u][16] = {\n", nglyphs, nglyphs);
+    for (uint32_t g = 0; g < nglyphs; g++) {
+        fputs("    {", out);
+        for (int r = 0; r < 16; r++) fprintf(out, "0x%02x%s", glyphs[g * 16 + r], r < 15 ? ", " : "");
+        fputs("},\n", out);
+    }
+    fprintf(out, "};\n\nconst size_t pc_font_nmap = %zu;\n"
+                 "const pc_font_entry pc_font_map[%zu] = {\n", nmap, nmap);
+    for (size_t i = 0; i < nmap; i++)
+        fprintf(out, "    {0x%04x, %u},\n", (unsigned)map[i].cp, (unsigned)map[i].glyph);
+    fprintf(out, "};\n\nconst int pc_font_replacement = %ld;\n", replacement);
+    int bad = ferror(out);
+    if (fclose(out) != 0 || bad) die("cannot write", argv[2]);
+    free(map);
+    free(d);
+    return 0;
+}
