@@ -105,7 +105,7 @@ H.fields_of = {
   point = {"x", "y", "z", "w"},
   complex = {"re", "im", "conj", "abs", "arg", "exp", "point"},
   mobius = {"z0", "phi", "inverse"},
-  projection = {"xy"},
+  map = {"nin", "nout", "C0", "C1", "C2", "C3"},
   oresme = {"lambda", "m", "n"},
   halfspline = {"n", "m", "t0", "c1", "c2", "v", "deriv"},
 }
@@ -133,12 +133,62 @@ def("affine.frame", "affine.frame(O, X, Y [, Z]) -> f",
   "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors.")
 def("affine.identity", "affine.identity(n) -> f",
   "The identity map of n-space.")
+
+-- ---------------------------------------------------------------------------------------
+area("transforms", "Maps: transformations and projections (map.*)",
+  "One map type for affine and projective maps of any dimension: the textbook's " ..
+  "transformations, the 3-D -> 2-D projections, affine(...) and the toolkit's projection(...) " ..
+  "all make it, and any two of fitting dimensions compose. Angles are in radians.",
+  "maps.md")
+
+def("map.matrix", "map.matrix(rows [, \"row\"|\"column\"]) -> f",
+  "The map of a homogeneous matrix (a table of rows): by default (m+1) rows of n+1 acting on column vectors; \"row\": the textbook's p' = p T, n+1 rows of m+1.")
+def("map.translate", "map.translate(V) -> f",
+  "The translation x -> x + V, in the dimension of V.")
+def("map.scale", "map.scale(k, centre | n) | map.scale({kx, ky, ...} [, centre]) -> f",
+  "Scaling by k (or by kx, ky, ... per axis) about centre (default: the origin); a single k needs a centre or the dimension n.")
+def("map.rotate", {"map.rotate(angle [, centre]) -> f", "map.rotate(A, B | direction, angle) -> f"},
+  "The plane turned counter-clockwise about centre (default: the origin), or space turned about the axis through A and B (or through A along direction) by the right-hand rule.")
+def("map.reflect", "map.reflect(A, normal) -> f",
+  "The reflection in the line (plane, hyperplane) through A perpendicular to the vector normal.")
+def("map.shear", "map.shear(n, i, j, k) -> f",
+  "The shear of n-space adding k times coordinate j to coordinate i (axes 1..n or \"x\", \"y\", \"z\").")
+def("map.orthographic", "map.orthographic([\"z\"|\"y\"|\"x\"]) -> f",
+  "Space onto a coordinate plane, dropping that axis: \"z\" (the default) keeps (x, y), \"y\" keeps (x, z), \"x\" keeps (y, z).")
+def("map.axonometric", "map.axonometric(phi, theta) -> f",
+  "Space turned about y by phi, then about x by theta, then projected along z (the textbook's T = Ry Rx Pz).")
+def("map.isometric", "map.isometric() -> f",
+  "The isometric projection: phi = 45 degrees, theta = 35.26 degrees, all axes foreshortened by sqrt(2/3).")
+def("map.dimetric", "map.dimetric(fz) -> f",
+  "The dimetric projection with the z axis foreshortened by fz (0 < fz < 1) and x, y equally: sin^2 theta = fz^2/2.")
+def("map.oblique", "map.oblique(k, alpha) -> f",
+  "The oblique projection x' = x + k z cos(alpha), y' = y + k z sin(alpha).")
+def("map.cavalier", "map.cavalier([alpha]) -> f",
+  "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees.")
+def("map.cabinet", "map.cabinet([alpha]) -> f",
+  "The oblique projection with k = 1/2; alpha defaults to 45 degrees.")
+def("map.perspective", "map.perspective(eye, p0 [, up]) -> f",
+  "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point.")
 def("f(p)", "f(p) | f(x, y, ...) -> value",
-  "Apply an affine map (vectors ignore the translation).", "method")
+  "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector.", "method")
+def("f:xy", "f:xy(p) | f:xy(x, y, ...) -> x', y', ...",
+  "The coordinates of the image of a point as numbers (two for a map into the plane).", "method")
 def("f:compose", "f:compose(g) | f * g -> map",
   "The map applying g first, then f.", "method")
 def("f:inverse", "f:inverse() -> map",
   "The inverse map; a singular or non-square map is an error.", "method")
+def("f:matrix", "f:matrix([\"column\"|\"row\"]) -> rows",
+  "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T.", "method")
+def("f:is_affine", "f:is_affine() -> boolean",
+  "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors.", "method")
+def("f:vanishing_points", "f:vanishing_points() -> Vx, Vy, Vz",
+  "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity.", "method")
+def("f:show", "f:show([\"column\"|\"row\"])",
+  "Print the matrix with its convention named and the columns aligned.", "method")
+def("f.nin", "f.nin, f.nout -> integer",
+  "The dimensions of the points the map takes and gives.", "field")
+def("f.C0", "f.C0, f.C1, ... -> point",
+  "The images of the origin and of the unit points of the axes (a projection's screen points).", "field")
 
 -- ---------------------------------------------------------------------------------------
 area("smooth", "Smoothsteps (smooth.*)",
@@ -233,10 +283,10 @@ def("squash", "squash(p [, q]) -> numbers",
   "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28).")
 def("squash01", "squash01(p [, q]) -> numbers",
   "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument.")
-def("oblique", "oblique(C0, r, k, u) -> projection",
-  "The oblique projection of examples 32-34: the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
-def("projection", "projection(C0, C1, C2, C3) -> projection",
-  "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points; pr(P) or pr:xy(x, y, z).")
+def("oblique", "oblique(C0, r, k, u) -> map",
+  "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
+def("projection", "projection(C0, C1, C2, C3) -> map",
+  "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0.")
 def("complex", "complex(re [, im]) | complex(P) -> z",
   "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point().")
 def("complex.i", "complex.i", "The imaginary unit.", "value")

@@ -2,6 +2,7 @@
  *   squash(p [, q])  squash01(p [, q])     the plane onto the open square (examples 26-28)
  *   oblique(C0, r, k, u)                    the oblique projection of examples 32-34
  *   projection(C0, C1, C2, C3)              the projection by four screen points
+ *                                           (both are 3-D -> 2-D maps of l_map.c: pr(X), pr:xy, pr.C0)
  *   oresme(lambda [, m [, y0, y1]])         Oresme's lambda-function (example 31)
  *   bisect(f, a, b [, tol])                 bisection (example 30)
  * and, for stdlib/lua/curvilinear.lua, the numeric helpers _tk.bilinear, _tk.frame_point,
@@ -11,9 +12,9 @@
 #include <string.h>
 #include "pcl_tk.h"
 #include "curvilinear.h"
+#include "map.h"
 #include "numeric.h"
 
-#define PROJ_MT "projection"
 #define ORESME_MT "oresme"
 
 /* ---- plane -> square ------------------------------------------------------------------------ */
@@ -31,107 +32,33 @@ static int squash_with(lua_State *L, const char *fn, double (*f)(double)) {
 static int l_squash(lua_State *L) { return squash_with(L, "squash", pc_squash); }
 static int l_squash01(lua_State *L) { return squash_with(L, "squash01", pc_squash01); }
 
-/* ---- projections ---------------------------------------------------------------------------- */
+/* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
-typedef struct { double c[8]; } proj;
-
-static proj *checkproj(lua_State *L, int idx, const char *fn) {
-    proj *p = luaL_testudata(L, idx, PROJ_MT);
-    if (!p) tk_argerror(L, fn, idx, "self", "a projection");
-    return p;
-}
-
-/* the 3-D point at arg (a point, or three numbers): returns the next argument */
-static int xyz_arg(lua_State *L, const char *fn, int arg, double *x) {
-    if (lua_type(L, arg) == LUA_TNUMBER) {
-        x[0] = tk_checknum_m(L, fn, arg, "x");
-        x[1] = tk_checknum_m(L, fn, arg + 1, "y");
-        x[2] = tk_checknum_m(L, fn, arg + 2, "z");
-        return arg + 3;
-    }
-    pcl_value *v = pcl_tovalue(L, arg);
-    if (!v) tk_argerror_at(L, fn, arg, arg - 1, "X", "a 3-D point or three numbers");
-    if (v->n != 3)
-        pcl_error(L, "%s: argument #%d (X) must be 3-D, got %d-D", fn, arg - 1, v->n);
-    if (pc_loc(3, v->h, x) != PC_OK)
-        pcl_error(L, "%s: argument #%d (X) must be a point (weight 1), got weight %s", fn,
-                   arg - 1, tk_pushnum(L, v->h[3]));
-    return arg + 1;
-}
-
-static int proj_call(lua_State *L) {
-    proj *p = checkproj(L, 1, "projection");
-    double x[3], out[2];
-    xyz_arg(L, "projection", 2, x);
-    pc_project4(p->c, x[0], x[1], x[2], out);
-    tk_pushpoint(L, 2, out);
-    return 1;
-}
-
-static int proj_xy(lua_State *L) {
-    proj *p = checkproj(L, 1, "pr:xy");
-    double x[3], out[2];
-    xyz_arg(L, "pr:xy", 2, x);
-    pc_project4(p->c, x[0], x[1], x[2], out);
-    lua_pushnumber(L, out[0]);
-    lua_pushnumber(L, out[1]);
-    return 2;
-}
-
-static int proj_index(lua_State *L) {
-    proj *p = checkproj(L, 1, "projection");
-    const char *k = lua_tostring(L, 2);
-    if (!k) return 0;
-    if (k[0] == 'C' && k[1] >= '0' && k[1] <= '3' && !k[2]) {
-        tk_pushpoint(L, 2, p->c + 2 * (k[1] - '0'));
-        return 1;
-    }
-    if (!strcmp(k, "xy")) {
-        lua_pushcfunction(L, proj_xy);
-        return 1;
-    }
-    return 0;
-}
-
-static int proj_tostring(lua_State *L) {
-    proj *p = checkproj(L, 1, "projection");
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    luaL_addstring(&b, "projection(");
-    for (int i = 0; i < 4; i++) {
-        luaL_addstring(&b, i ? ", P(" : "P(");
-        tk_pushnum(L, p->c[2 * i]);
-        luaL_addvalue(&b);
-        luaL_addstring(&b, ", ");
-        tk_pushnum(L, p->c[2 * i + 1]);
-        luaL_addvalue(&b);
-        luaL_addstring(&b, ")");
-    }
-    luaL_addstring(&b, ")");
-    luaL_pushresult(&b);
-    return 1;
-}
-
-static proj *newproj(lua_State *L) {
-    proj *p = lua_newuserdatauv(L, sizeof *p, 0);
-    luaL_setmetatable(L, PROJ_MT);
-    return p;
+/* The 3-D -> 2-D affine map (x, y, z) -> C0 + x (C1 - C0) + y (C2 - C0) + z (C3 - C0) of the
+ * four screen points c[8]; its translation and axes give the same sums as pc_project4. */
+static void push_projection(lua_State *L, const double c[8]) {
+    double axes[6];
+    for (int i = 0; i < 3; i++)
+        for (int d = 0; d < 2; d++) axes[2 * i + d] = c[2 * (i + 1) + d] - c[d];
+    pc_map_frame(pcl_newmap(L), 2, 3, c, axes);
 }
 
 static int l_oblique(lua_State *L) {
     const char *fn = "oblique";
-    double c0[2];
+    double c0[2], c[8];
     pcl_checkloc(L, 1, "C0", 2, 0, c0);
     double r = tk_checknum(L, fn, 2, "r"), k = tk_checknum(L, fn, 3, "k");
     double u = tk_checknum(L, fn, 4, "u");
-    pc_oblique_axes(c0, r, k, u, newproj(L)->c);
+    pc_oblique_axes(c0, r, k, u, c);
+    push_projection(L, c);
     return 1;
 }
 
 static int l_projection(lua_State *L) {
     static const char *names[] = {"C0", "C1", "C2", "C3"};
-    proj *p = newproj(L);
-    for (int i = 0; i < 4; i++) pcl_checkloc(L, i + 1, names[i], 2, 1, p->c + 2 * i);
+    double c[8];
+    for (int i = 0; i < 4; i++) pcl_checkloc(L, i + 1, names[i], 2, 1, c + 2 * i);
+    push_projection(L, c);
     return 1;
 }
 
@@ -308,10 +235,6 @@ static int l_patch_blend(lua_State *L) {
 
 void pcl_open_curvilinear(lua_State *L) {
     int module = lua_gettop(L);
-    luaL_newmetatable(L, PROJ_MT);
-    static const luaL_Reg pmeta[] = {{"__call", proj_call}, {"__index", proj_index},
-                                     {"__tostring", proj_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, pmeta, 0);
     luaL_newmetatable(L, ORESME_MT);
     static const luaL_Reg ometa[] = {{"__call", oresme_call}, {"__index", oresme_index},
                                      {"__len", oresme_len}, {"__tostring", oresme_tostring},

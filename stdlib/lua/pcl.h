@@ -8,6 +8,7 @@
 #include <lauxlib.h>
 #include "canvas.h"
 #include "writers.h"
+#include "map.h"
 
 #define PCL_MODULE "pointcalc"
 #define PCL_VERSION "0.1.0"
@@ -25,13 +26,17 @@ static inline void *pcl_testudata(lua_State *L, int idx, int mt) {
 /* module openers, called by luaopen_pointcalc in this order */
 void pcl_open_point(lua_State *L);
 void pcl_open_simplex(lua_State *L);   /* simplex() (l_simplex.c) */
-void pcl_open_affine(lua_State *L);    /* affine, affine.frame (l_affine.c) */
+void pcl_open_map(lua_State *L);       /* affine, affine.frame, map.* (l_map.c) */
 void pcl_open_draw(lua_State *L);
 void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
 void pcl_open_smooth(lua_State *L);  /* the curvilinear-coordinates toolkit (docs/toolkit.md): */
 void pcl_open_curves(lua_State *L);  /*   smooth, spline2 fourier sphdir (l_smooth.c, l_curves.c) */
 void pcl_open_curvilinear(lua_State *L);    /*   squash oblique projection oresme bisect (l_curvilinear.c) */
 void pcl_open_complex(lua_State *L); /*   complex mobius (l_complex.c) */
+
+/* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
+pc_map *pcl_tomap(lua_State *L, int idx);
+pc_map *pcl_newmap(lua_State *L);
 
 /* The canvas of this Lua state (created on first use as SCREEN 12). */
 pc_canvas *pcl_canvas(lua_State *L);

@@ -1,4 +1,4 @@
-/* Shared by the point-calculus bindings (l_point.c, l_simplex.c, l_affine.c): the point
+/* Shared by the point-calculus bindings (l_point.c, l_simplex.c, l_map.c): the point
  * userdata and its argument checks.  A value of dimension n is a full userdata holding n
  * weighted coordinates and the weight (see stdlib/geom/point.h), with the point metatable. */
 #ifndef PCL_POINT_H

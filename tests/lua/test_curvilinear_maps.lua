@@ -42,10 +42,16 @@ if affine then
 end
 local pj = projection(P(0, 0), P(1, 0), P(0, 1), P(1, 1))
 same(pj(P(2, 3, 4)), P(6, 7), "projection by four given points")
-truthy(tostring(pr):find("^projection%(P%(320, 240%)"), "tostring")
-err(function() pr(P(1, 2)) end, "projection: argument #1 (X) must be 3-D, got 2-D", "2-D point")
-err(function() pr:xy(V(1, 2, 3)) end, "pr:xy: argument #1 (X) must be a point (weight 1), got weight 0", "vector")
-err(function() pr("x") end, "projection: argument #1 (X) must be a 3-D point or three numbers, got string", "string")
+-- a projection is a map (docs/maps.md): it prints as one, composes and has the map methods
+truthy(tostring(pj) == "affine map 3-D -> 2-D [1 0 1 | 0; 0 1 1 | 0]", "tostring: [M | t]")
+eq(getmetatable(pr).__name, "map", "the one map type")
+truthy(pr:is_affine() and pr.nin == 3 and pr.nout == 2, "a 3-D -> 2-D affine map")
+same((pj * map.translate(V(1, 1, 1)))(P(0, 0, 0)), P(2, 2), "composes with other maps")
+same(pr(V(0, 0, 1)), V(0, -150), "a vector goes to a vector")
+err(function() pr(P(1, 2)) end, "pr: argument #1 is 2-D, but the map takes 3-D: dimensions cannot be mixed", "2-D point")
+err(function() pr:xy(V(1, 2, 3)) end, "xy: argument #1 (X) must be a point (weight 1), got weight 0", "vector")
+err(function() pr("x") end, "pr: takes a 3-D point or vector, or 3 coordinates; got string", "string")
+err(function() pr:xy(1, 2) end, "xy: takes a 3-D point or vector, or 3 coordinates; got number", "two numbers")
 err(function() oblique(P(0, 0), "r", 1, 1) end, "oblique: argument #2 (r) must be a number, got string", "oblique r")
 err(function() projection(P(0, 0), P(1, 0), P(0, 1, 0), P(1, 1)) end, "projection: argument #3 (C2) is 3-D, but argument #1 is 2-D", "mixed")
 
