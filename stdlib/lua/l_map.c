@@ -644,6 +644,10 @@ static int l_show(lua_State *L) {
     double a[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pc_map_to_matrix(f, rowvec, a);
     int nr = rowvec ? f->nin + 1 : f->nout + 1, nc = rowvec ? f->nout + 1 : f->nin + 1;
+    double big = 0;                               /* rounding noise (cos 90°) prints as 0 */
+    for (int i = 0; i < nr * nc; i++) big = fmax(big, fabs(a[i]));
+    for (int i = 0; i < nr * nc; i++)
+        if (fabs(a[i]) < 1e-14 * big) a[i] = 0;
     int width[PC_MAXDIM + 1] = {0};
     char cell[32];
     for (int i = 0; i < nr; i++)
