@@ -476,12 +476,13 @@ static double margin_of(const svgw *w, const pc_op *op) {
  * so a dash of length L covers L pixels: in SVG each dash is drawn 1 px shorter and each gap
  * 1 px longer, and the caps (square, or round when wide), half the width at each end, make up
  * the pixel centres' extent: exactly the raster's pixels along an axis. */
-static void pen_attrs(svgw *w, const pc_op *op) {
+static void pen_attrs(svgw *w, const pc_op *op, int join) {
     const pc_stroke *p = pen_of(w, op);
     char b[32];
     if (p->width != 1) {
         fmt_num(b, hund(p->width));
-        fprintf(w->out, " stroke-width=\"%s\" stroke-linecap=\"round\" stroke-linejoin=\"round\"", b);
+        fprintf(w->out, " stroke-width=\"%s\" stroke-linecap=\"round\"", b);
+        if (join) fputs(" stroke-linejoin=\"round\"", w->out);   /* unless the element has it */
     }
     if (!p->ndash) return;
     fputs(" stroke-dasharray=\"", w->out);
@@ -534,7 +535,7 @@ static void emit_lines(svgw *w, const pc_op *ops, size_t n) {
             open_el(w, "path");
             color_attr(w, "stroke", op->color);
             fputs(" stroke-linejoin=\"round\"", w->out);
-            pen_attrs(w, op);
+            pen_attrs(w, op, 0);
             d_begin(w);
             d_move(w, a);
             d_letter(w, 'l');
@@ -585,7 +586,7 @@ static void emit_box(svgw *w, const pc_op *op) {
     if (op->pen != 0) {   /* a path, so a flat box still strokes and dashes run round it */
         open_el(w, "path");
         color_attr(w, "stroke", op->color);
-        pen_attrs(w, op);
+        pen_attrs(w, op, 1);
         d_begin(w);
         d_move(w, (hpt){x0 * 100 + 50, y0 * 100 + 50});
         d_letter(w, 'H'); d_num(w, x1 * 100 + 50);
@@ -639,7 +640,7 @@ static void emit_arc(svgw *w, const pc_op *op) {
             put_attr_num(w, "ry", hry);
         }
         color_attr(w, "stroke", op->color);
-        pen_attrs(w, op);
+        pen_attrs(w, op, 1);
         fputs("/>\n", w->out);
         return;
     }
@@ -651,7 +652,7 @@ static void emit_arc(svgw *w, const pc_op *op) {
     hpt p1 = {hund(cx + rx * cos(a1)), hund(cy - ry * sin(a1))};
     open_el(w, "path");
     color_attr(w, "stroke", op->color);
-    pen_attrs(w, op);
+    pen_attrs(w, op, 1);
     d_begin(w);
     if (op->flags & PC_ARC_RADIUS0) {
         d_move(w, c);
@@ -845,7 +846,7 @@ static void emit_path(svgw *w, const pc_op *op) {
     open_el(w, "path");
     color_attr(w, "stroke", op->color);
     fputs(" stroke-linejoin=\"round\"", w->out);
-    pen_attrs(w, op);
+    pen_attrs(w, op, 0);
     d_begin(w);
     pc_xy cur = p[0], start = p[0];
     size_t nsub = 0;

@@ -94,14 +94,14 @@ static void test_line_endpoints_and_direction(void **state) {
     pc_line(b, 5, 2, 0, 0, 1);
     assert_shape(a, shape);
     assert_shape(b, shape);
-    assert_memory_equal(a->pixels, b->pixels, 32);
+    assert_memory_equal(a->pixels, b->pixels, 32 * sizeof *a->pixels);
     /* the graphics cursor ends at the second point */
     assert_true(a->last_x == 5 && a->last_y == 2);
     /* a steep line, both directions */
     pc_canvas *s = small(3, 6), *t = small(3, 6);
     pc_line(s, 0, 0, 2, 5, 1);
     pc_line(t, 2, 5, 0, 0, 1);
-    assert_memory_equal(s->pixels, t->pixels, 18);
+    assert_memory_equal(s->pixels, t->pixels, 18 * sizeof *s->pixels);
     assert_int_equal(count(s, 1), 6);
     assert_int_equal(at(s, 0, 0), 1);
     assert_int_equal(at(s, 2, 5), 1);

@@ -24,6 +24,7 @@
 typedef struct {
     char name[32];
     char *attrs;     /* the attribute text, starting with a space */
+    char *content;   /* character data directly inside (as written, entities unresolved) */
     int parent;      /* index of the enclosing element, -1 for the root */
 } elem;
 
@@ -43,6 +44,13 @@ static doc parse_xml(char *text) {
     const char *p = text;
     while (*p) {
         if (*p != '<') {
+            if (depth > 0 && !strcmp(d.e[stack[depth - 1]].name, "text")) {
+                const char *q = strchr(p, '<');
+                if (!q) parse_fail(text, p, "unclosed text");
+                d.e[stack[depth - 1]].content = strndup(p, (size_t)(q - p));
+                p = q;
+                continue;
+            }
             if (!isspace((unsigned char)*p)) parse_fail(text, p, "text outside an element");
             p++;
             continue;
@@ -74,6 +82,7 @@ static doc parse_xml(char *text) {
             memcpy(e->name, p + 1, (size_t)(q - p - 1));
             e->name[q - p - 1] = 0;
             e->parent = depth ? stack[depth - 1] : -1;
+            e->content = NULL;
             const char *a = q;
             for (;;) {   /* attributes: name="value" */
                 const char *s = q;
@@ -105,7 +114,10 @@ static doc parse_xml(char *text) {
 }
 
 static void doc_free(doc *d) {
-    for (int i = 0; i < d->n; i++) free(d->e[i].attrs);
+    for (int i = 0; i < d->n; i++) {
+        free(d->e[i].attrs);
+        free(d->e[i].content);
+    }
     free(d->e);
     free(d->text);
 }
@@ -183,7 +195,7 @@ typedef struct { double x, y; int move; } vtx;   /* move: starts a subpath */
 typedef struct {
     vtx *v;
     int n;
-    int moves, arcs, closes, lines;
+    int moves, arcs, closes, lines, curves;
 } path;
 
 static int is_num_start(char ch) { return isdigit((unsigned char)ch) || ch == '-' || ch == '.'; }
@@ -230,6 +242,12 @@ static path parse_path(const char *d) {
         case 'h': x += num(&p); add_vtx(&pa, x, y, 0); break;
         case 'V': y = num(&p); add_vtx(&pa, x, y, 0); break;
         case 'v': y += num(&p); add_vtx(&pa, x, y, 0); break;
+        case 'C':
+            for (int i = 0; i < 4; i++) num(&p);
+            x = num(&p); y = num(&p);
+            add_vtx(&pa, x, y, 0);
+            pa.curves++;
+            break;
         case 'A':
             for (int i = 0; i < 5; i++) num(&p);
             x = num(&p); y = num(&p);
@@ -724,6 +742,135 @@ static void test_brush_runs(void **state) {
     pc_canvas_free(c);
 }
 
+/* ---- paths, pens, styles, text, true colours --------------------------------------------- */
+
+static void test_paths(void **state) {
+    (void)state;
+    pc_canvas *c = screen12();
+    const double poly[] = {10, 20, 30, 40.25, 50, 20};
+    pc_path(c, 3, poly, NULL, 0, 1, 14);
+    const double xy[] = {5, 50, 15, 2, 60, 2, 74, 50, 100, 100, 120, 100};
+    const uint8_t verbs[] = {PC_PATH_MOVE, PC_PATH_CUBIC, PC_PATH_MOVE, PC_PATH_LINE};
+    pc_path(c, 6, xy, verbs, 4, 0, 14);
+    doc d = svg_of(c, PC_THEME_SCREEN);
+    /* one <path> per path op, not a trail of dots, aligned like LINE (+0.5) */
+    assert_int_equal(drawn(&d), 2);
+    const elem *e = nth(&d, "path", NULL, 0);
+    assert_string_equal(attr(e, "stroke"), "#ffff55");
+    assert_string_equal(attr(e, "d"), "M10.5 20.5L30.5 40.75L50.5 20.5Z");
+    e = nth(&d, "path", NULL, 1);
+    assert_string_equal(attr(e, "d"), "M5.5 50.5C15.5 2.5 60.5 2.5 74.5 50.5M100.5 100.5L120.5 100.5");
+    path pa = parse_path(attr(e, "d"));
+    assert_int_equal(pa.moves, 2);
+    assert_int_equal(pa.curves, 1);
+    free(pa.v);
+    doc_free(&d);
+    /* a segment to far away is cut near the clip */
+    pc_cls(c);
+    const double far[] = {100, 100, 1e9, 100};
+    pc_path(c, 2, far, NULL, 0, 0, 14);
+    d = svg_of(c, PC_THEME_SCREEN);
+    assert_string_equal(attr(nth(&d, "path", NULL, 0), "d"), "M100.5 100.5L643 100.5");
+    doc_free(&d);
+    pc_canvas_free(c);
+}
+
+static void test_pens(void **state) {
+    (void)state;
+    pc_canvas *c = screen12();
+    const double dash[] = {6, 3};
+    pc_pen(c, 3, dash, 2);
+    pc_line(c, 10, 10, 100, 10, 15);
+    pc_line(c, 100, 10, 100, 50, 15);
+    pc_box(c, 200, 200, 220, 230, 4, 0);
+    pc_circle(c, 300, 300, 40, 2, NAN, NAN, NAN);
+    pc_pen(c, 2, NULL, 0);
+    pc_circle(c, 400, 300, 40, 2, NAN, NAN, NAN);
+    const double poly[] = {10, 400, 50, 420};
+    pc_path(c, 2, poly, NULL, 0, 0, 9);
+    doc d = svg_of(c, PC_THEME_SCREEN);
+    assert_int_equal(drawn(&d), 5);
+    const elem *e = nth(&d, "path", NULL, 0);
+    assert_string_equal(attr(e, "stroke-width"), "3");
+    assert_string_equal(attr(e, "stroke-linecap"), "round");
+    /* each dash 1 px shorter, each gap 1 px longer: the caps make up the pixels */
+    assert_string_equal(attr(e, "stroke-dasharray"), "5 4");
+    /* the dashes restart at each LINE: each is its own subpath */
+    assert_string_equal(attr(e, "d"), "M10.5 10.5l90 0m0 0 0 40");
+    e = nth(&d, "path", NULL, 1);
+    assert_string_equal(attr(e, "d"), "M200.5 200.5H220.5V230.5H200.5Z");
+    assert_string_equal(attr(e, "stroke-dasharray"), "5 4");
+    /* a dashed circle is a path from angle 0 counter-clockwise, two half arcs */
+    e = nth(&d, "path", NULL, 2);
+    path pa = parse_path(attr(e, "d"));
+    assert_int_equal(pa.arcs, 2);
+    assert_float_equal(pa.v[0].x, 340.5, 1e-9);
+    assert_float_equal(pa.v[0].y, 300.5, 1e-9);
+    free(pa.v);
+    e = nth(&d, "circle", NULL, 0);
+    assert_string_equal(attr(e, "stroke-width"), "2");
+    assert_null(attr(e, "stroke-dasharray"));
+    e = nth(&d, "path", NULL, 3);
+    assert_string_equal(attr(e, "stroke-width"), "2");
+    assert_string_equal(attr(e, "d"), "M10.5 400.5L50.5 420.5");
+    doc_free(&d);
+    pc_canvas_free(c);
+}
+
+static void test_styled_lines_are_exact_pixels(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(60, 50, 16);
+    pc_line_styled(c, 3, 5, 50, 30, 12, 0, 0xAAAA);
+    pc_line_styled(c, 5, 40, 40, 45, 12, 1, 0xF0F0);
+    doc d = svg_of(c, PC_THEME_SCREEN);
+    assert_int_equal(count(&d, "path", "fill"), 1);
+    assert_fill_matches(c, &d, 12, 0);
+    doc_free(&d);
+    pc_canvas_free(c);
+}
+
+static void test_text(void **state) {
+    (void)state;
+    pc_canvas *c = screen12();
+    pc_text(c, 100, 100, "a<b&\"c'", PC_ANCHOR_NE, 3, 1, 14);
+    pc_text(c, 10, 20, "\xce\xb1\x01", PC_ANCHOR_SE, 0, 2, pc_rgb_color(c, (pc_rgb){0x12, 0x34, 0x56}));
+    doc d = svg_of(c, PC_THEME_SCREEN);
+    assert_int_equal(count(&d, "text", NULL), 2);
+    const elem *e = nth(&d, "text", NULL, 0);
+    /* the cell box: left 103, bottom row 97, so top 82; the baseline 12 rows down */
+    assert_string_equal(attr(e, "x"), "103");
+    assert_string_equal(attr(e, "y"), "94");
+    assert_string_equal(attr(e, "font-family"), "monospace");
+    assert_string_equal(attr(e, "font-size"), "16");
+    assert_string_equal(attr(e, "textLength"), "56");   /* 7 characters */
+    assert_string_equal(attr(e, "lengthAdjust"), "spacingAndGlyphs");
+    assert_string_equal(attr(e, "fill"), "#ffff55");
+    assert_string_equal(e->content, "a&lt;b&amp;&quot;c&apos;");
+    e = nth(&d, "text", NULL, 1);
+    assert_string_equal(attr(e, "x"), "10");
+    assert_string_equal(attr(e, "y"), "44");
+    assert_string_equal(attr(e, "font-size"), "32");
+    assert_string_equal(attr(e, "textLength"), "32");
+    assert_string_equal(attr(e, "fill"), "#123456");
+    /* a control character, which XML cannot hold, is the replacement character */
+    assert_string_equal(e->content, "\xce\xb1\xef\xbf\xbd");
+    doc_free(&d);
+    pc_canvas_free(c);
+}
+
+static void test_true_colors(void **state) {
+    (void)state;
+    pc_canvas *c = screen12();
+    int orange = pc_rgb_color(c, (pc_rgb){0xff, 0x80, 0x00});
+    pc_line(c, 10, 10, 100, 10, orange);
+    pc_pset(c, 300, 300, orange);
+    doc d = svg_of(c, PC_THEME_PAPER);
+    assert_string_equal(attr(nth(&d, "path", "stroke", 0), "stroke"), "#ff8000");
+    assert_string_equal(attr(nth(&d, "path", "fill", 0), "fill"), "#ff8000");
+    doc_free(&d);
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_document),
@@ -739,6 +886,11 @@ int main(void) {
         cmocka_unit_test(test_palette_at_write_time_and_paper),
         cmocka_unit_test(test_far_away_dots_are_left_out),
         cmocka_unit_test(test_brush_runs),
+        cmocka_unit_test(test_paths),
+        cmocka_unit_test(test_pens),
+        cmocka_unit_test(test_styled_lines_are_exact_pixels),
+        cmocka_unit_test(test_text),
+        cmocka_unit_test(test_true_colors),
     };
     if (!xmllint_present()) fprintf(stderr, "note: xmllint not found; SVG checked by the built-in reader only\n");
     return cmocka_run_group_tests(tests, NULL, NULL);

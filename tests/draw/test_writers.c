@@ -182,7 +182,7 @@ static png_pixels read_png(FILE *f) {
     return r;
 }
 
-static void assert_png_matches(const pc_canvas *c, pc_theme theme, int want_depth) {
+static void assert_png_matches_as(const pc_canvas *c, pc_theme theme, int want_type, int want_depth) {
     FILE *f = tmpfile();
     assert_non_null(f);
     assert_int_equal(pc_encode_png(c, theme, f), PC_OK);
@@ -191,19 +191,23 @@ static void assert_png_matches(const pc_canvas *c, pc_theme theme, int want_dept
     fclose(f);
     assert_int_equal(p.width, c->width);
     assert_int_equal(p.height, c->height);
-    assert_int_equal(p.color_type, PNG_COLOR_TYPE_PALETTE);
+    assert_int_equal(p.color_type, want_type);
     assert_int_equal(p.bit_depth, want_depth);
     pc_rgb pal[256];
     pc_theme_palette(c, theme, pal);
     for (int y = 0; y < c->height; y++)
         for (int x = 0; x < c->width; x++) {
-            pc_rgb want = pal[c->pixels[y * c->width + x]];
+            pc_rgb want = pc_attr_rgb(c, pal, c->pixels[y * c->width + x]);
             const unsigned char *got = p.rgb + 3 * ((size_t)y * c->width + x);
             if (got[0] != want.r || got[1] != want.g || got[2] != want.b)
                 fail_msg("pixel (%d, %d) is #%02x%02x%02x, want #%02x%02x%02x", x, y, got[0],
                          got[1], got[2], want.r, want.g, want.b);
         }
     free(p.rgb);
+}
+
+static void assert_png_matches(const pc_canvas *c, pc_theme theme, int want_depth) {
+    assert_png_matches_as(c, theme, PNG_COLOR_TYPE_PALETTE, want_depth);
 }
 
 /* every colour at odd positions, an odd width (4-bit rows end in half a byte) */
@@ -250,6 +254,94 @@ static void test_png_screen_12(void **state) {
     assert_png_matches(c, PC_THEME_SCREEN, 4);
     assert_png_matches(c, PC_THEME_PAPER, 4);
     pc_canvas_free(c);
+}
+
+/* ---- true colours ------------------------------------------------------------------------ */
+
+static void test_true_colors_are_attributes(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new_mode(12);
+    int orange = pc_rgb_color(c, (pc_rgb){0xff, 0x80, 0x00});
+    assert_int_equal(orange, 256);
+    /* two uses of one colour share its attribute; another colour gets the next */
+    assert_int_equal(pc_rgb_color(c, (pc_rgb){0xff, 0x80, 0x00}), orange);
+    int teal = pc_rgb_color(c, (pc_rgb){0x00, 0x80, 0x80});
+    assert_int_equal(teal, 257);
+    assert_int_equal(pc_pset(c, 10, 10, orange), PC_OK);
+    assert_int_equal(pc_pset(c, 11, 10, pc_rgb_color(c, (pc_rgb){0xff, 0x80, 0x00})), PC_OK);
+    assert_int_equal(pc_point(c, 10, 10), orange);
+    assert_int_equal(pc_point(c, 11, 10), orange);
+    assert_int_equal(c->palette[orange].g, 0x80);
+    /* an attribute not allocated is refused */
+    assert_int_equal(pc_pset(c, 1, 1, 258), PC_EARG);
+    assert_int_equal(pc_pset(c, 1, 1, 16), PC_EARG);
+    /* PAINT stops at a true-colour border; COLOR takes one */
+    pc_circle(c, 100, 100, 20, teal, NAN, NAN, NAN);
+    assert_int_equal(pc_paint(c, 100, 100, orange, teal), PC_OK);
+    assert_int_equal(pc_point(c, 100, 100), orange);
+    assert_int_equal(pc_point(c, 130, 100), 0);
+    assert_int_equal(pc_color(c, teal, -1), PC_OK);
+    pc_pset(c, 5, 5, -1);
+    assert_int_equal(pc_point(c, 5, 5), teal);
+    /* thousands of colours: each keeps its attribute */
+    for (int i = 0; i < 5000; i++)
+        assert_int_equal(pc_rgb_color(c, (pc_rgb){(uint8_t)i, (uint8_t)(i >> 8), 7}), 258 + i);
+    for (int i = 0; i < 5000; i++)
+        assert_int_equal(pc_rgb_color(c, (pc_rgb){(uint8_t)i, (uint8_t)(i >> 8), 7}), 258 + i);
+    /* SCREEN forgets them */
+    pc_canvas_reset(c, 640, 480, 16);
+    assert_int_equal(c->ntrue, 0);
+    assert_int_equal(pc_rgb_color(c, (pc_rgb){0x00, 0x80, 0x80}), 256);
+    pc_canvas_free(c);
+}
+
+static void test_true_colors_in_png_and_ppm(void **state) {
+    (void)state;
+    pc_canvas *c = canvas(40, 30, 16);
+    draw_pattern(c);
+    int orange = pc_rgb_color(c, (pc_rgb){0xff, 0x80, 0x00});
+    pc_line(c, 0, 5, 39, 5, orange);
+    /* few colours: still an indexed PNG, of the colours used */
+    assert_png_matches_as(c, PC_THEME_SCREEN, PNG_COLOR_TYPE_PALETTE, 8);
+    FILE *f = tmpfile();
+    assert_int_equal(pc_encode_png(c, PC_THEME_SCREEN, f), PC_OK);
+    rewind(f);
+    png_pixels p = read_png(f);
+    fclose(f);
+    const unsigned char *px = p.rgb + 3 * (5 * 40 + 7);
+    assert_true(px[0] == 0xff && px[1] == 0x80 && px[2] == 0x00);
+    free(p.rgb);
+    /* the paper theme changes the palette colours, not the true ones */
+    assert_png_matches_as(c, PC_THEME_PAPER, PNG_COLOR_TYPE_PALETTE, 8);
+    pc_rgb pal[256];
+    pc_theme_palette(c, PC_THEME_PAPER, pal);
+    assert_int_equal(pc_attr_rgb(c, pal, orange).g, 0x80);
+    assert_int_equal(pc_attr_rgb(c, pal, 15).r, 0);
+    /* PPM has the rgb */
+    f = tmpfile();
+    assert_int_equal(pc_encode_ppm(c, PC_THEME_SCREEN, f), PC_OK);
+    rewind(f);
+    char head[16];
+    assert_non_null(fgets(head, sizeof head, f));
+    assert_non_null(fgets(head, sizeof head, f));
+    assert_non_null(fgets(head, sizeof head, f));
+    unsigned char rgb[3];
+    fseek(f, 3 * (5 * 40 + 7), SEEK_CUR);
+    assert_int_equal(fread(rgb, 1, 3, f), 3);
+    assert_true(rgb[0] == 0xff && rgb[1] == 0x80 && rgb[2] == 0x00);
+    fclose(f);
+    /* two true colours and two palette colours: a 2-bit palette */
+    pc_canvas *s = canvas(9, 3, 16);
+    pc_pset(s, 0, 0, pc_rgb_color(s, (pc_rgb){1, 2, 3}));
+    pc_pset(s, 1, 0, pc_rgb_color(s, (pc_rgb){4, 5, 6}));
+    pc_pset(s, 2, 0, 9);
+    assert_png_matches_as(s, PC_THEME_SCREEN, PNG_COLOR_TYPE_PALETTE, 2);
+    /* more than 256 colours: RGB */
+    for (int i = 0; i < 300; i++)
+        pc_pset(c, i % 40, 10 + i / 40, pc_rgb_color(c, (pc_rgb){(uint8_t)i, (uint8_t)(i / 2), 200}));
+    assert_png_matches_as(c, PC_THEME_SCREEN, PNG_COLOR_TYPE_RGB, 8);
+    pc_canvas_free(c);
+    pc_canvas_free(s);
 }
 
 /* A full device: the encoders report the failure (libpng's through its error handler). */
@@ -441,6 +533,8 @@ int main(void) {
         cmocka_unit_test(test_write_file_formats),
         cmocka_unit_test(test_write_file_unknown_extension),
         cmocka_unit_test(test_write_file_failures_leave_nothing),
+        cmocka_unit_test(test_true_colors_are_attributes),
+        cmocka_unit_test(test_true_colors_in_png_and_ppm),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
