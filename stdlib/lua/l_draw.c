@@ -1,11 +1,14 @@
 /* Binding of the QBasic drawing layer (stdlib/draw): screen cls color palette pset preset line
- * line_to circle paint point window view save last_point.
+ * line_to circle paint point window view save last_point, and beyond QBasic: pen path label
+ * text.  Every colour argument is an attribute number or a "#rrggbb" string.
  *
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
  * around a pc_canvas pointer, so SCREEN can replace the canvas in place); the registry keeps
  * it too, for the host.  Coordinate pairs may always be given as one 2-D point. */
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "pcl.h"
 
@@ -53,17 +56,57 @@ static int check(lua_State *L, pc_canvas *c, int rc) {
     return pcl_error(L, "%s: %s", name, msg);
 }
 
+/* "#rrggbb" -> rgb; 0 if s is not exactly that. */
+static int parse_hex_rgb(const char *s, size_t len, pc_rgb *rgb) {
+    if (len != 7 || s[0] != '#') return 0;
+    unsigned v[6];
+    for (int i = 0; i < 6; i++) {
+        int ch = (unsigned char)s[i + 1];
+        if (!isxdigit(ch)) return 0;
+        v[i] = (unsigned)(isdigit(ch) ? ch - '0' : tolower(ch) - 'a' + 10);
+    }
+    *rgb = (pc_rgb){(uint8_t)(v[0] * 16 + v[1]), (uint8_t)(v[2] * 16 + v[3]), (uint8_t)(v[4] * 16 + v[5])};
+    return 1;
+}
+
+/* The house argument error for a string value at idx, showing the string itself, for
+ * argument arg. */
+static int bad_string(lua_State *L, int idx, int arg, const char *what, const char *expected) {
+    return pcl_error(L, "%s: argument #%d (%s) must be %s, got \"%s\"", pcl_fname(L),
+                     pcl_arg_shown(L, arg), what, expected, lua_tostring(L, idx));
+}
+
+/* A colour value at stack index idx, part of argument arg: an attribute number of the screen
+ * or a "#rrggbb" string (a true colour, allocated on first use).  `what` names it in errors
+ * ("colour", "border colour"). */
+static int color_at(lua_State *L, int idx, int arg, pc_canvas *c, const char *what) {
+    char expected[64];
+    snprintf(expected, sizeof expected, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1);
+    if (lua_type(L, idx) == LUA_TSTRING) {
+        size_t len;
+        const char *str = lua_tolstring(L, idx, &len);
+        pc_rgb rgb;
+        if (!parse_hex_rgb(str, len, &rgb))   /* the string itself says best what is wrong */
+            return bad_string(L, idx, arg, what, expected);
+        int attr = pc_rgb_color(c, rgb);
+        if (attr < 0) return pcl_error(L, "%s: %s", pcl_fname(L), c->error);
+        return attr;
+    }
+    int isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (!isint || v < 0 || v >= c->ncolors)
+        return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
+    return (int)v;
+}
+
+static int check_color_arg(lua_State *L, int arg, pc_canvas *c, const char *what) {
+    return color_at(L, arg, arg, c, what);
+}
+
 /* An optional colour: none/nil means the default (-1 for the core). */
 static int opt_color(lua_State *L, int arg, pc_canvas *c) {
     if (lua_isnoneornil(L, arg)) return -1;
-    int isint;
-    lua_Integer v = lua_tointegerx(L, arg, &isint);
-    if (!isint || v < 0 || v >= c->ncolors) {
-        char expected[40];
-        snprintf(expected, sizeof expected, "a colour number 0..%d", c->ncolors - 1);
-        return pcl_argerror(L, arg, "colour", expected);
-    }
-    return (int)v;
+    return check_color_arg(L, arg, c, "colour");
 }
 
 /* An optional number; NaN stands for "not given" in the core, so a NaN passed is refused. */
@@ -192,13 +235,146 @@ static int line_style(lua_State *L, int arg) {
     return pcl_argerror(L, arg, "style", "\"b\" (box) or \"bf\" (filled box)");
 }
 
+/* QBasic's 16-bit LINE style after the box flag: 0..65535, or a signed INTEGER -32768..-1
+ * (&HAAAA is -21846 in QBasic); -1 when not given. */
+static long line_pattern(lua_State *L, int arg) {
+    if (lua_isnoneornil(L, arg)) return -1;
+    int isint;
+    lua_Integer v = lua_tointegerx(L, arg, &isint);
+    if (!isint || v < -32768 || v > 65535)
+        return pcl_argerror(L, arg, "line style", "a 16-bit pattern -32768..65535");
+    return (long)(v & 0xffff);
+}
+
 static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, int arg) {
     double x2, y2;
     pcl_checkxy(L, &arg, &x2, &y2, "end");
     int color = opt_color(L, arg, c);
-    int style = line_style(L, arg + 1);
-    if (style == 0) return check(L, c, pc_line(c, x1, y1, x2, y2, color));
-    return check(L, c, pc_box(c, x1, y1, x2, y2, color, style == 2));
+    int box = line_style(L, arg + 1);
+    long pattern = line_pattern(L, arg + 2);
+    if (pattern >= 0 && box != 2)   /* QBasic ignores the style of a filled box */
+        return check(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)pattern));
+    if (box == 0) return check(L, c, pc_line(c, x1, y1, x2, y2, color));
+    return check(L, c, pc_box(c, x1, y1, x2, y2, color, box == 2));
+}
+
+/* ---- beyond QBasic: pen, path, label, text ------------------------------------------------ */
+
+/* A field of an options table that must be a number in lo..hi (the value at the stack top). */
+static double field_number(lua_State *L, int arg, const char *what, double lo, double hi,
+                           const char *expected) {
+    int isnum;
+    double v = lua_tonumberx(L, -1, &isnum);
+    if (!isnum || !(v >= lo && v <= hi))
+        pcl_argerror_full(L, pcl_fname(L), lua_gettop(L), pcl_arg_shown(L, arg), what, expected);
+    return v;
+}
+
+/* pen{width = w, dash = {on, off, ...}} sets the pen; pen() restores the default. */
+static int l_pen(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    if (lua_isnoneornil(L, 1)) {
+        pc_pen_reset(c);
+        return 0;
+    }
+    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "pen", "a table {width =, dash =}");
+    double width = 1, dash[PC_PEN_MAXDASH];
+    int ndash = 0;
+    if (lua_getfield(L, 1, "width") != LUA_TNIL)
+        width = field_number(L, 1, "width", 1, PC_PEN_MAXWIDTH, "a number 1..256 (pixels)");
+    lua_pop(L, 1);
+    if (lua_getfield(L, 1, "dash") != LUA_TNIL) {
+        int t = lua_gettop(L);
+        lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : -1;
+        if (n < 0 || n > PC_PEN_MAXDASH || n % 2)
+            return pcl_argerror_full(L, pcl_fname(L), t, pcl_arg_shown(L, 1), "dash",
+                                     "a list of on, off lengths (an even number, at most 16)");
+        for (int i = 0; i < n; i++) {
+            lua_geti(L, t, i + 1);
+            dash[i] = field_number(L, 1, "dash length", 1e-6, 1e6, "a positive number (pixels)");
+            lua_pop(L, 1);
+        }
+        ndash = (int)n;
+    }
+    lua_pop(L, 1);
+    return check(L, c, pc_pen(c, width, dash, ndash));
+}
+
+/* path(points [, {closed =, color =}]): the polyline through a list of 2-D points. */
+static int l_path(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "points", "a list of 2-D points");
+    lua_Integer n = luaL_len(L, 1);
+    if (n < 1) return pcl_argerror(L, 1, "points", "a list of at least one point");
+    int closed = 0, color = -1;
+    if (!lua_isnoneornil(L, 2)) {
+        if (!lua_istable(L, 2)) return pcl_argerror(L, 2, "options", "a table {closed =, color =}");
+        lua_getfield(L, 2, "closed");
+        closed = lua_toboolean(L, -1);
+        if (lua_getfield(L, 2, "color") != LUA_TNIL)
+            color = color_at(L, lua_gettop(L), 2, c, "options.color");
+        lua_pop(L, 2);
+    }
+    double *xy = lua_newuserdatauv(L, (size_t)n * 2 * sizeof *xy, 0);   /* freed by the GC */
+    for (lua_Integer i = 0; i < n; i++) {
+        lua_geti(L, 1, i + 1);
+        if (!pcl_topoint2(L, -1, &xy[2 * i], &xy[2 * i + 1]))
+            return pcl_error(L, "path: argument #%d (points) must be a list of 2-D points, got %s "
+                                "at index %d", pcl_arg_shown(L, 1), luaL_typename(L, -1), (int)(i + 1));
+        lua_pop(L, 1);
+    }
+    return check(L, c, pc_path(c, (size_t)n, xy, NULL, 0, closed, color));
+}
+
+static const char *const directions[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
+
+/* The text argument: a string (or a number, shown as Lua shows it). */
+static const char *check_text(lua_State *L, int arg) {
+    int t = lua_type(L, arg);
+    if (t != LUA_TSTRING && t != LUA_TNUMBER) pcl_argerror(L, arg, "text", "a string");
+    return lua_tostring(L, arg);
+}
+
+static int opt_scale(lua_State *L, int arg) {
+    if (lua_isnoneornil(L, arg)) return 1;
+    int isint;
+    lua_Integer v = lua_tointegerx(L, arg, &isint);
+    if (!isint || v < 1 || v > 8) return pcl_argerror(L, arg, "scale", "an integer 1..8");
+    return (int)v;
+}
+
+/* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it. */
+static int l_label(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    const char *str = check_text(L, 1);
+    int arg = 2;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "");
+    int anchor = PC_ANCHOR_NE;
+    if (!lua_isnoneornil(L, arg)) {
+        static const char expected[] = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"";
+        if (lua_type(L, arg) != LUA_TSTRING) return pcl_argerror(L, arg, "direction", expected);
+        const char *d = lua_tostring(L, arg);
+        int k = 0;
+        while (directions[k] && strcmp(directions[k], d)) k++;
+        if (!directions[k]) return bad_string(L, arg, arg, "direction", expected);
+        anchor = k;
+    }
+    int color = opt_color(L, arg + 1, c);
+    int scale = opt_scale(L, arg + 2);
+    return check(L, c, pc_text(c, x, y, str, anchor, 3, scale, color));
+}
+
+/* text(x, y, string [, colour [, scale]]): the text cell's top-left corner at the point. */
+static int l_text(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    int arg = 1;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "");
+    const char *str = check_text(L, arg);
+    int color = opt_color(L, arg + 1, c);
+    int scale = opt_scale(L, arg + 2);
+    return check(L, c, pc_text(c, x, y, str, PC_ANCHOR_SE, 0, scale, color));
 }
 
 static int l_line(lua_State *L) {
@@ -251,16 +427,7 @@ static int l_paint(lua_State *L) {
     pcl_checkxy(L, &arg, &x, &y, "");
     int color = opt_color(L, arg, c);
     int border = -1;
-    if (!lua_isnoneornil(L, arg + 1)) {
-        int isint;
-        lua_Integer b = lua_tointegerx(L, arg + 1, &isint);
-        if (!isint || b < 0 || b >= c->ncolors) {
-            char expected[40];
-            snprintf(expected, sizeof expected, "a colour number 0..%d", c->ncolors - 1);
-            return pcl_argerror(L, arg + 1, "border colour", expected);
-        }
-        border = (int)b;
-    }
+    if (!lua_isnoneornil(L, arg + 1)) border = check_color_arg(L, arg + 1, c, "border colour");
     return check(L, c, pc_paint(c, x, y, color, border));
 }
 
@@ -362,6 +529,7 @@ static const luaL_Reg draw_functions[] = {
     {"pset", l_pset},     {"preset", l_preset}, {"line", l_line},     {"line_to", l_line_to},
     {"circle", l_circle}, {"paint", l_paint},   {"point", l_point},   {"window", l_window},
     {"view", l_view},     {"save", l_save},     {"size", l_size},     {"last_point", l_last_point},
+    {"pen", l_pen},       {"path", l_path},     {"label", l_label},   {"text", l_text},
     {NULL, NULL}};
 
 void pcl_open_draw(lua_State *L) {
