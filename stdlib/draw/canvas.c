@@ -143,10 +143,6 @@ int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...) {
     return code;
 }
 
-int pc_valid_color(const pc_canvas *c, int color) {
-    return (color >= 0 && color < c->ncolors) || (color >= 256 && color < 256 + c->ntrue);
-}
-
 int pc_check_color(pc_canvas *c, int *color, int dflt) {
     if (*color < 0) *color = dflt;
     if (!pc_valid_color(c, *color))

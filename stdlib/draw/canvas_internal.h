@@ -11,7 +11,9 @@ int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...)
 
 /* Resolve a colour argument: <0 means dflt; an attribute not in use is an error. */
 int pc_check_color(pc_canvas *c, int *color, int dflt);
-int pc_valid_color(const pc_canvas *c, int color);
+static inline int pc_valid_color(const pc_canvas *c, int color) {   /* inline: pset runs it */
+    return (color >= 0 && color < c->ncolors) || (color >= 256 && color < 256 + c->ntrue);
+}
 
 /* Make room for `need` elements of size elem in *buf (doubling); 0 when out of memory. */
 int pc_grow(void **buf, size_t *cap, size_t need, size_t elem);

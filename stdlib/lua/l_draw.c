@@ -79,24 +79,28 @@ static int bad_string(lua_State *L, int idx, int arg, const char *what, const ch
 /* A colour value at stack index idx, part of argument arg: an attribute number of the screen
  * or a "#rrggbb" string (a true colour, allocated on first use).  `what` names it in errors
  * ("colour", "border colour"). */
-static int color_at(lua_State *L, int idx, int arg, pc_canvas *c, const char *what) {
+static int color_error(lua_State *L, int idx, int arg, pc_canvas *c, const char *what) {
     char expected[64];
     snprintf(expected, sizeof expected, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1);
+    if (lua_type(L, idx) == LUA_TSTRING)   /* the string itself says best what is wrong */
+        return bad_string(L, idx, arg, what, expected);
+    return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
+}
+
+static int color_at(lua_State *L, int idx, int arg, pc_canvas *c, const char *what) {
+    int isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);   /* the common case first: pset runs it */
+    if (isint && v >= 0 && v < c->ncolors && lua_type(L, idx) == LUA_TNUMBER) return (int)v;
     if (lua_type(L, idx) == LUA_TSTRING) {
         size_t len;
         const char *str = lua_tolstring(L, idx, &len);
         pc_rgb rgb;
-        if (!parse_hex_rgb(str, len, &rgb))   /* the string itself says best what is wrong */
-            return bad_string(L, idx, arg, what, expected);
+        if (!parse_hex_rgb(str, len, &rgb)) return color_error(L, idx, arg, c, what);
         int attr = pc_rgb_color(c, rgb);
         if (attr < 0) return pcl_error(L, "%s: %s", pcl_fname(L), c->error);
         return attr;
     }
-    int isint;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (!isint || v < 0 || v >= c->ncolors)
-        return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
-    return (int)v;
+    return color_error(L, idx, arg, c, what);
 }
 
 static int check_color_arg(lua_State *L, int arg, pc_canvas *c, const char *what) {
