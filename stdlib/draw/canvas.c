@@ -394,12 +394,11 @@ int pc_rgb_color(pc_canvas *c, pc_rgb rgb) {
         return -1;
     }
     pc_rgb *pal = realloc(c->palette, (size_t)(256 + c->ntrue + 1) * sizeof *pal);
+    if (pal) c->palette = pal;   /* before rgb_reserve, which reads it */
     if (!pal || !rgb_reserve(c)) {
-        if (pal) c->palette = pal;
         pc_fail_code(c, PC_ENOMEM, "out of memory for a colour");
         return -1;
     }
-    c->palette = pal;
     int attr = 256 + c->ntrue++;
     c->palette[attr] = rgb;
     rgb_insert(c, attr);
