@@ -106,6 +106,8 @@ H.fields_of = {
   complex = {"re", "im", "conj", "abs", "arg", "exp", "point"},
   mobius = {"z0", "phi", "inverse"},
   map = {"nin", "nout", "C0", "C1", "C2", "C3"},
+  curve = {"kind", "dim", "degree", "t0", "t1", "lo", "hi", "closed", "pieces", "n"},
+  surface = {"kind", "dim", "u0", "u1", "v0", "v1"},
   oresme = {"lambda", "m", "n"},
   halfspline = {"n", "m", "t0", "c1", "c2", "v", "deriv"},
 }
@@ -212,33 +214,100 @@ def("smooth.clamp_qb", "smooth.clamp_qb(t [, prev]) -> number",
   "smooth.clamp as the listings' strict IF chain computes it: at t exactly 0, 1/2 or 1 it keeps prev.")
 
 -- ---------------------------------------------------------------------------------------
-area("curves", "Curves (Stepanov's toolkit)",
-  "Curves built from points, directions and smoothsteps; a curve c gives points c(t) and draws " ..
-  "itself with c:draw{...}.",
-  "toolkit.md")
+area("curves", "Curves",
+  "One curve type for every construction: Bezier (rational through weighted points), B-spline " ..
+  "and NURBS, Hermite pieces, splines and interpolation through nodes, Stepanov's strokes and " ..
+  "Fourier curves, a Lua function. A curve c gives points c(t), derivatives, length, curvature, " ..
+  "and draws itself as one path with c:draw().",
+  "curves.md")
 
+def("bezier", "bezier{P0, P1, ..., Pn} -> curve",
+  "The Bezier curve of degree n over [0, 1]; weighted points w*P make it rational (a conic), vectors are control points at infinity.")
+def("bspline", "bspline(points, degree [, \"open\"|\"uniform\"|\"periodic\"|knots]) -> curve",
+  "The B-spline (NURBS with weighted points) of that degree; open knots by default, or a non-decreasing list of points + degree + 1 knots.")
+def("hermite", "hermite(points, tangents [, {tin = {...}, u = {...}, closed = false}]) -> curve",
+  "Piecewise cubic Hermite through the points with these derivatives (tin: the arriving ones, for corners); u: the parameters of the nodes.")
+def("cubic_spline", "cubic_spline(points [, {ends = \"natural\"|\"clamped\"|\"periodic\", d0 = V, d1 = V, u = {...}}]) -> curve",
+  "The C2 cubic spline through the points (parameters: accumulated chord lengths unless u is given).")
+def("interpolate", "interpolate(points [, params]) -> curve",
+  "The polynomial curve of degree n - 1 through n points at the given parameters (default evenly spaced in [0, 1]).")
+def("curve", "curve(f, t0, t1) -> curve",
+  "A Lua function t -> point (or numbers) over [t0, t1] as a curve: it flattens, measures and draws like any other.")
 def("spline2", "spline2(A, a, B, b [, g]) -> curve",
-  "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): example 5.")
+  "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): Stepanov's example 5.")
 def("stroke", "stroke{nodes = {P, ...}, uin = ..., kink = ... | ein = {V, ...}, rin =, rout =, n =, m =, t0 =, g =, closed = false} -> curve",
-  "The one-stroke curve through the nodes, one quadrilateral-spline piece per pair (examples 10, 11, 13).")
+  "The one-stroke curve through the nodes, one quadrilateral-spline piece per pair (examples 10, 11, 13); its t runs over 0..pieces.")
 def("fourier", "fourier({P1, P2, ..., P2n}) -> curve",
-  "The closed curve through 2n points by a finite Fourier series (example 12).")
+  "The closed curve through 2n points by a finite Fourier series (example 12), t in [0, 2 pi].")
 def("sphdir", "sphdir(u1, u2) -> vector",
   "The unit vector of longitude u1 and latitude u2 (example 33).")
-def("plot", "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, color = c, map = m, qb = false})",
-  "Draw the curve t -> f(t) (a 2-D point or x, y); with map, f may be 3-D and map projects it.")
+def("plot", {"plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})",
+             "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn | dots = true | qb = true, ...})"},
+  "Draw t -> f(t) as one connected path (3-D through map or the camera); with a brush, dots = true or qb = true, dots at those steps as the listings do.")
 def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
-  "The point of a curve at parameter t (a stroke's t runs over 0..number of pieces).", "method")
+  "The point of a curve at parameter t (a vector where a rational curve is at infinity).", "method")
+def("c:deriv", "c:deriv(t [, order]) -> vector",
+  "The first (or second) derivative, exact for every kind but Lua functions (differenced).", "method")
+def("c:tangent", "c:tangent(t) -> vector | c:normal(t) -> vector",
+  "The unit tangent; the unit principal normal (in the plane: the tangent turned by +90 degrees).", "method")
+def("c:curvature", "c:curvature(t) -> number",
+  "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space.", "method")
+def("c:split", "c:split(t) -> left, right | c:sub(a, b) -> curve",
+  "The two parts at t (de Casteljau, knot insertion), or the part over [a, b], of the same kind.", "method")
+def("c:insert_knot", "c:insert_knot(u) -> curve",
+  "The same B-spline with the knot u inserted (one more control point).", "method")
+def("c:length", "c:length([a, b]) -> number",
+  "The arc length over the domain or [a, b] (adaptive Gauss-Legendre).", "method")
+def("c:bbox", "c:bbox() -> lo, hi",
+  "The corners of the axis-aligned bounding box.", "method")
+def("c:controls", {"c:controls() -> {values}", "c:controls(i) -> A, P, Q, B"},
+  "The control values (weighted as given); for a stroke, the quadrilateral of piece i.", "method")
+def("c:knots", "c:knots() -> {numbers}",
+  "The knot vector of a B-spline, or the breakpoints of pieces.", "method")
+def("c:map", "c:map(f) -> curve | f(c)",
+  "The image under a map: control points mapped exactly, so a projective map keeps a rational curve rational.", "method")
+def("c:flatten", "c:flatten([tol [, map]]) -> {polylines}",
+  "Adaptive polylines within tol of the curve (projected by map to the plane), broken where the curve passes through infinity.", "method")
 def("c:each", "c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t",
   "Walk a curve: for M, i, t in c:each{t = {0, 1, .01}} do ... end.", "method")
-def("c:draw", "c:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, color = c, map = m, qb = false}",
-  "Draw a curve (by default as the listings do: pset at a thousand parameter steps).", "method")
+def("c:draw", {"c:draw{color = c, tol = px, map = m}", "c:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, qb = false, ...}"},
+  "Draw the curve as one path, flattened to within tol pixels (default 1/4) through map or the camera; with t or a brush, dots as the listings draw them.", "method")
 def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
-def("c:controls", "c:controls(i) -> A, P, Q, B",
-  "The quadrilateral of a stroke's piece i: its nodes A, B and the side points P, Q.", "method")
 def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+
+-- ---------------------------------------------------------------------------------------
+area("surfaces", "Surfaces (surface.*)",
+  "One surface type in (u, v): tensor-product Bezier and B-spline patches, bilinear, bicubic " ..
+  "Hermite, ruled, Coons, surfaces of revolution and Lua functions; s(u, v) is a point, " ..
+  "s:iso gives curves, s:wireframe draws the iso-lines through the camera.",
+  "curves.md")
+
+def("surface", "surface(f, u0, u1, v0, v1) -> s",
+  "A Lua function (u, v) -> point as a surface.")
+def("surface.bilinear", "surface.bilinear(P00, P10, P01, P11) -> s",
+  "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1).")
+def("surface.bezier", "surface.bezier(net) -> s",
+  "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational).")
+def("surface.bspline", "surface.bspline(net, p, q [, uknots [, vknots]]) -> s",
+  "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline.")
+def("surface.hermite", "surface.hermite{P = {4}, Pu = {4}, Pv = {4}, Puv = {4}} -> s",
+  "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1)).")
+def("surface.ruled", "surface.ruled(c0, c1) -> s",
+  "The ruled surface (1 - v) c0(u) + v c1(u) between two curves.")
+def("surface.coons", "surface.coons(cu0, cu1, c0v, c1v) -> s",
+  "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v).")
+def("surface.revolution", "surface.revolution(profile, A, d [, v0, v1]) -> s",
+  "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn).")
+def("s(u, v)", "s(u, v) -> point | s:partials(u, v) -> P, Su, Sv | s:normal(u, v) -> vector",
+  "The point of a surface, its partial derivatives and its unit normal (3-D).", "method")
+def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
+  "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
+def("s:map", "s:map(f) -> s",
+  "The image of the surface under a map.", "method")
+def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m}",
+  "Draw the iso-lines as paths through map or the camera.", "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curvilinear", "Curvilinear coordinates",
@@ -339,6 +408,16 @@ def("last_point", "last_point() -> x, y",
   "The graphics cursor: the last point referenced, in world coordinates.")
 def("size", "size() -> width, height, colours",
   "The size of the canvas and its number of colours.")
+def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen()"},
+  "The pen of lines, boxes, circles and paths: width in pixels and a dash pattern; pen() restores width 1, solid.")
+def("path", "path(points [, {closed = false, color = c}])",
+  "A polyline through the points as one path (SVG keeps it a <path>).")
+def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",
+  "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font.")
+def("text", "text(x, y, string [, colour [, scale]])",
+  "Text with the top-left corner of its first 8x16 cell at (x, y).")
+def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
+  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG or PPM by the extension, atomically; \"paper\" prints dark ink on white.")
 

@@ -37,12 +37,14 @@ typedef enum { PC_CURVE_BEZIER, PC_CURVE_BSPLINE, PC_CURVE_FUNC } pc_curve_kind;
  * status (the evaluation fails with it; a binding may keep its own error object). */
 typedef int (*pc_curve_fn)(void *ud, double t, int order, double *out);
 
-typedef struct pc_curve_func {   /* shared by a FUNC curve and its splits and maps */
+/* The callback object, shared by a FUNC curve and its splits and maps.  (The typedef is not
+ * named pc_curve_func: in C that would clash with the constructor pc_curve_func below.) */
+typedef struct pc_curve_func {
     int refs;
     pc_curve_fn eval;
     void (*free)(void *ud);      /* called with ud when the last curve using it goes; may be NULL */
     void *ud;
-} pc_curve_func;
+} pc_curve_callback;
 
 typedef struct pc_curve {
     int refs;
@@ -50,11 +52,12 @@ typedef struct pc_curve {
     int dim;              /* dimension of the points, 1..PC_MAXDIM */
     int degree;           /* BEZIER, BSPLINE */
     int ncp;              /* control points: ncp rows of dim+1 in cp */
-    int nknots;           /* BEZIER: nseg + 1 breakpoints; BSPLINE: ncp + degree + 1 */
+    int nknots;           /* BEZIER: nseg + 1 breakpoints; BSPLINE: ncp + degree + 1;
+                             FUNC: 0, or its breakpoints (pc_curve_func_breaks) */
     int closed;           /* the curve ends where it starts (periodic, closed strokes, ...) */
     double t0, t1;        /* the parameter domain */
     double *cp, *knots;
-    pc_curve_func *func;  /* FUNC */
+    pc_curve_callback *func;  /* FUNC */
 } pc_curve;
 
 /* --- life ---------------------------------------------------------------------------------- */
@@ -107,9 +110,18 @@ pc_curve *pc_curve_cubic_spline(int dim, int n, const double *p, const double *u
  * (Konopatsky's interpolation curves).  PC_ECOINCIDENT for repeated parameters. */
 pc_curve *pc_curve_interpolate(int dim, int n, const double *p, const double *u, int *status);
 
-/* A curve given by a callback over [t0, t1] (fn_free may be NULL). */
+/* A curve given by a callback over [t0, t1] (fn_free may be NULL).  On failure fn_free is
+ * not called: the caller keeps ud. */
 pc_curve *pc_curve_func(int dim, double t0, double t1, int closed, pc_curve_fn eval,
                         void (*fn_free)(void *ud), void *ud, int *status);
+/* The same with breakpoints t0 < brk[0] < ... < brk[nbrk-1] < t1 where the function may be
+ * less smooth (the joints of a stroke's pieces): flattening, arc length and the bounding box
+ * start from them as from a Bezier curve's breakpoints.  They are kept in knots (t0, brk...,
+ * t1: nknots = nbrk + 2; a FUNC curve without breaks has nknots = 0).  PC_EDOMAIN if brk does
+ * not increase inside (t0, t1). */
+pc_curve *pc_curve_func_breaks(int dim, double t0, double t1, int closed, int nbrk,
+                               const double *brk, pc_curve_fn eval, void (*fn_free)(void *ud),
+                               void *ud, int *status);
 
 /* --- evaluation --------------------------------------------------------------------------- */
 /* The homogeneous value at t and its derivatives up to order 0..2 (out: (order+1) rows of

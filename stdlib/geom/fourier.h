@@ -9,10 +9,19 @@
 #define PC_FOURIER_H
 
 #include "status.h"
+#include "curve.h"
 
 /* f: 2n samples, the i-th at f[i * stride]; a, b: n + 1 coefficients each.
  * PC_EDOMAIN if n < 1, PC_ENONFINITE for a NaN or infinite sample. */
 int pc_fourier_coef(int n, const double *f, int stride, double *a, double *b);
 double pc_fourier_eval(int n, const double *a, const double *b, double u);
+/* f'(u) and f''(u) of the same series. */
+double pc_fourier_deriv(int n, const double *a, const double *b, double u, int order);
+
+/* The closed curve through 2n points (samples: 2n rows of d, the i-th at u = i pi / n) as a
+ * FUNC curve of the core over [0, 2 pi], closed, with exact first and second derivatives and
+ * breakpoints at the samples.  PC_EDIM (d out of 1..PC_MAXDIM), PC_EDOMAIN (n < 1), PC_EARG
+ * (samples NULL), PC_ENONFINITE, PC_ENOMEM. */
+pc_curve *pc_curve_fourier(int d, int n, const double *samples, int *status);
 
 #endif

@@ -1,7 +1,8 @@
-/* Small dense linear algebra: Gram-Schmidt, LU solve, determinant. */
+/* Small dense linear algebra: Gram-Schmidt, LU solve, determinant; tridiagonal systems. */
 #include "linalg.h"
 #include "point.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 int pc_qr(int n, int k, const double *e, double *q, double *r, double tol) {
@@ -80,4 +81,81 @@ double pc_det(int k, const double *m0) {
         }
     }
     return det;
+}
+
+/* Thomas algorithm on rows 0..n-1 (a[0], c[n-1] unused); cp: n scratch values */
+static int thomas(int n, int nrhs, const double *a, const double *b, const double *c, double *d,
+                  double *cp, double small) {
+    for (int i = 0; i < n; i++) {
+        double piv = b[i] - (i > 0 ? a[i] * cp[i - 1] : 0);
+        if (!(fabs(piv) > small)) return PC_ESINGULAR;
+        cp[i] = i + 1 < n ? c[i] / piv : 0;
+        for (int r = 0; r < nrhs; r++)
+            d[i * nrhs + r] = (d[i * nrhs + r] - (i > 0 ? a[i] * d[(i - 1) * nrhs + r] : 0)) / piv;
+    }
+    for (int i = n - 2; i >= 0; i--)
+        for (int r = 0; r < nrhs; r++) d[i * nrhs + r] -= cp[i] * d[(i + 1) * nrhs + r];
+    return PC_OK;
+}
+
+int pc_tridiag_solve(int n, int nrhs, const double *a, const double *b, const double *c,
+                     double *d, int cyclic) {
+    if (n < 1 || nrhs < 1) return PC_EDIM;
+    double scale = 0;
+    for (int i = 0; i < n; i++) {
+        double ai = (i > 0 || cyclic) ? a[i] : 0, ci = (i + 1 < n || cyclic) ? c[i] : 0;
+        if (!isfinite(ai) || !isfinite(b[i]) || !isfinite(ci)) return PC_ENONFINITE;
+        scale = fmax(scale, fmax(fabs(ai), fmax(fabs(b[i]), fabs(ci))));
+    }
+    for (int i = 0; i < n * nrhs; i++)
+        if (!isfinite(d[i])) return PC_ENONFINITE;
+    double small = PC_DEGEN_TOL * scale;
+    if (!(scale > 0)) return PC_ESINGULAR;
+    if (cyclic && n <= 2) {           /* the corner entries fold onto the others */
+        if (n == 1) {
+            double s = a[0] + b[0] + c[0];
+            if (!(fabs(s) > small)) return PC_ESINGULAR;
+            for (int r = 0; r < nrhs; r++) d[r] /= s;
+            return PC_OK;
+        }
+        double m00 = b[0], m01 = a[0] + c[0], m10 = a[1] + c[1], m11 = b[1];
+        double det = m00 * m11 - m01 * m10;
+        if (!(fabs(det) > small * scale)) return PC_ESINGULAR;
+        for (int r = 0; r < nrhs; r++) {
+            double y0 = d[r], y1 = d[nrhs + r];
+            d[r] = (m11 * y0 - m01 * y1) / det;
+            d[nrhs + r] = (m00 * y1 - m10 * y0) / det;
+        }
+        return PC_OK;
+    }
+    double *work = malloc(sizeof(double) * (size_t)n * (cyclic ? 3 : 1));
+    if (!work) return PC_ENOMEM;
+    int st;
+    if (!cyclic) {
+        st = thomas(n, nrhs, a, b, c, d, work, small);
+    } else {
+        /* A = T + u v^T with u = (g, 0, ..., 0, alpha), v = (1, 0, ..., 0, beta/g) */
+        double *bb = work + n, *z = bb + n;
+        double beta = a[0], alpha = c[n - 1], g = b[0] != 0 ? -b[0] : -scale;
+        memcpy(bb, b, sizeof(double) * (size_t)n);
+        bb[0] = b[0] - g;
+        bb[n - 1] = b[n - 1] - alpha * beta / g;
+        st = thomas(n, nrhs, a, bb, c, d, work, small);
+        if (!st) {
+            memset(z, 0, sizeof(double) * (size_t)n);
+            z[0] = g;
+            z[n - 1] = alpha;
+            st = thomas(n, 1, a, bb, c, z, work, small);
+        }
+        if (!st) {
+            double den = 1 + z[0] + beta * z[n - 1] / g;
+            if (!(fabs(den) > PC_DEGEN_TOL)) st = PC_ESINGULAR;
+            for (int r = 0; !st && r < nrhs; r++) {
+                double f = (d[r] + beta * d[(n - 1) * nrhs + r] / g) / den;
+                for (int i = 0; i < n; i++) d[i * nrhs + r] -= f * z[i];
+            }
+        }
+    }
+    free(work);
+    return st;
 }

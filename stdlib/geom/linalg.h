@@ -18,4 +18,14 @@ int pc_lu_solve(int k, double *m, double *b);
 /* Determinant of a k x k matrix (m is not modified). */
 double pc_det(int k, const double *m);
 
+/* Solve the tridiagonal system a[i] x[i-1] + b[i] x[i] + c[i] x[i+1] = d[i] (i = 0..n-1) for
+ * nrhs right-hand sides at once: d holds n rows of nrhs, overwritten by the solution.  Not
+ * cyclic: a[0] and c[n-1] are ignored.  Cyclic (periodic splines): a[0] multiplies x[n-1] and
+ * c[n-1] multiplies x[0] (Sherman-Morrison on the Thomas algorithm).  No pivoting: meant for
+ * diagonally dominant systems.  PC_ESINGULAR if a pivot falls below PC_DEGEN_TOL times the
+ * largest coefficient, PC_EDIM for n < 1 or nrhs < 1, PC_ENONFINITE for NaN/inf,
+ * PC_ENOMEM.  (Allocates O(n) scratch.) */
+int pc_tridiag_solve(int n, int nrhs, const double *a, const double *b, const double *c,
+                     double *d, int cyclic);
+
 #endif

@@ -1,6 +1,7 @@
 /* Quadrilateral splines and one-stroke curves (stepanov_examples.md examples 5, 10, 33, 34). */
 #include "spline.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 void pc_dir2(double u, int ccw, double out[2]) {
@@ -120,4 +121,80 @@ int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad) {
         }
     }
     return PC_OK;
+}
+
+/* --- a stroke as a curve of the core --------------------------------------------------------- */
+/* g'(t) (order 1) or g''(t) (order 2) of a smoothstep */
+static double gfun_deriv(const pc_gfun *g, double t, int order) {
+    const double pi = 3.14159265358979323846;
+    switch (g->kind) {
+    case PC_G_HALF: {
+        const pc_hspline *h = &g->h;
+        if (order == 1) return pc_hspline_deriv(h, t);
+        if (t < h->t0) return h->n == 1 ? 0 : h->n * (h->n - 1) * h->c1 * pow(t, h->n - 2);
+        return h->m == 1 ? 0 : -h->m * (h->m - 1) * h->c2 * pow(1 - t, h->m - 2);
+    }
+    case PC_G_CUBIC: return order == 1 ? 6 * t - 6 * t * t : 6 - 12 * t;
+    case PC_G_SINE: return order == 1 ? pi / 2 * sin(pi * t) : pi * pi / 2 * cos(pi * t);
+    case PC_G_LINEAR: default: return order == 1 ? 1 : 0;
+    }
+}
+
+typedef struct {
+    int d, np;
+    pc_piece pieces[];
+} stroke_curve;
+
+static int stroke_fn(void *ud, double s, int order, double *out) {
+    const stroke_curve *sc = ud;
+    double f = floor(s);
+    int i = f < 0 ? 0 : (f > sc->np - 1 ? sc->np - 1 : (int)f), d = sc->d, w = d + 1;
+    double t = s - i;
+    const pc_piece *pc = &sc->pieces[i];
+    if (pc_gfun_check(&pc->g, t) != PC_OK) return PC_EDOMAIN;
+    double g = pc_gfun_eval(&pc->g, t);
+    double g1 = order >= 1 ? gfun_deriv(&pc->g, t, 1) : 0, g2 = order >= 2 ? gfun_deriv(&pc->g, t, 2) : 0;
+    for (int x = 0; x < d; x++) {
+        double m = pc->a[x] + t * (pc->p[x] - pc->a[x]), n = pc->q[x] + t * (pc->b[x] - pc->q[x]);
+        double dm = pc->p[x] - pc->a[x], dn = pc->b[x] - pc->q[x];
+        out[x] = m + g * (n - m);
+        if (order >= 1) out[w + x] = dm + g1 * (n - m) + g * (dn - dm);
+        if (order >= 2) out[2 * w + x] = g2 * (n - m) + 2 * g1 * (dn - dm);
+    }
+    out[d] = 1;
+    if (order >= 1) out[w + d] = 0;
+    if (order >= 2) out[2 * w + d] = 0;
+    return PC_OK;
+}
+
+pc_curve *pc_curve_stroke(int d, int npieces, const pc_piece *pieces, int closed, int *status) {
+    int st = PC_OK;
+    if (d < 1 || d > PC_CURVE_MAXDIM || npieces < 1 || npieces > (1 << 24)) st = PC_EDIM;
+    else if (!pieces) st = PC_EARG;
+    for (int i = 0; !st && i < npieces; i++) {
+        const pc_piece *pc = &pieces[i];
+        for (int x = 0; x < d; x++)
+            if (!isfinite(pc->a[x]) || !isfinite(pc->p[x]) || !isfinite(pc->q[x]) ||
+                !isfinite(pc->b[x]))
+                st = PC_ENONFINITE;
+    }
+    stroke_curve *sc = NULL;
+    double *brk = NULL;
+    if (!st) {
+        sc = malloc(sizeof *sc + sizeof(pc_piece) * (size_t)npieces);
+        brk = malloc(sizeof(double) * (size_t)npieces);
+        if (!sc || !brk) st = PC_ENOMEM;
+    }
+    pc_curve *c = NULL;
+    if (!st) {
+        sc->d = d;
+        sc->np = npieces;
+        memcpy(sc->pieces, pieces, sizeof(pc_piece) * (size_t)npieces);
+        for (int i = 1; i < npieces; i++) brk[i - 1] = i;
+        c = pc_curve_func_breaks(d, 0, npieces, closed, npieces - 1, brk, stroke_fn, free, sc, &st);
+    }
+    if (!c) free(sc);
+    free(brk);
+    if (status) *status = st;
+    return c;
 }

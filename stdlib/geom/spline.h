@@ -11,6 +11,7 @@
 #define PC_SPLINE_H
 
 #include "smooth.h"
+#include "curve.h"
 
 #define PC_CURVE_MAXDIM 4
 
@@ -56,5 +57,13 @@ int pc_stroke_npieces(int nnodes, int closed);
  * PC_EDOMAIN (bad n, m, t0), PC_ENONFINITE.  On error *bad (if not NULL) is the index
  * of the offending node. */
 int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad);
+
+/* The stroke of npieces pieces as a FUNC curve of the core (pieces copied): over s in
+ * [0, npieces], piece floor(s) at its own t = s - i; the first and last pieces extrapolate
+ * outside (as the binding's c(t) does).  Breakpoints at the joints; exact first and second
+ * derivatives from the smoothsteps' own.  Where a half-spline of fractional degree does not
+ * extrapolate (pc_gfun_check) the evaluation fails with PC_EDOMAIN.  PC_EDIM (d out of
+ * 1..PC_CURVE_MAXDIM, npieces < 1), PC_EARG (pieces NULL), PC_ENONFINITE, PC_ENOMEM. */
+pc_curve *pc_curve_stroke(int d, int npieces, const pc_piece *pieces, int closed, int *status);
 
 #endif

@@ -34,7 +34,7 @@ typedef struct pc_surface {
     double u0, u1, v0, v1;    /* the domain */
     double *cp, *uknots, *vknots;
     pc_curve *curves[4];      /* RULED: C0, C1; COONS: the sides; REVOLUTION: the profile */
-    double axis[2 * PC_MAXDIM];   /* REVOLUTION: a point of the axis, then its direction */
+    double axis[2 * PC_MAXDIM];   /* REVOLUTION: a point of the axis, then its unit direction */
     pc_surface_fn fn; void (*fn_free)(void *ud); void *ud;   /* FUNC */
 } pc_surface;
 
@@ -49,7 +49,10 @@ pc_surface *pc_surface_bilinear(int dim, const double *p00, const double *p10,
  * control point B_ij (i along u). */
 pc_surface *pc_surface_bezier(int dim, int p, int q, const double *cp, int *status);
 /* B-spline patch: nu x nv homogeneous rows, degrees p, q, knot kinds as for curves (uk, vk
- * used when the kind is PC_KNOTS_GIVEN: nu+p+1 and nv+q+1 values). */
+ * used when the kind is PC_KNOTS_GIVEN: nu+p+1 and nv+q+1 values), with the curves' domains
+ * (OPEN: [0, n-p], UNIFORM: [p, n], PERIODIC: [0, n], the net then wrapped by p rows so that
+ * nu or nv in the struct grow by p).  PC_EDIM for degrees outside 1..PC_CURVE_MAXDEG or too
+ * few points, PC_EDOMAIN for decreasing knots or an empty domain. */
 pc_surface *pc_surface_bspline(int dim, int p, int q, int nu, int nv, const double *cp,
                                pc_knot_kind ukind, const double *uk, pc_knot_kind vkind,
                                const double *vk, int *status);
@@ -63,7 +66,9 @@ pc_surface *pc_surface_hermite(int dim, const double *p, const double *pu, const
 pc_surface *pc_surface_ruled(pc_curve *c0, pc_curve *c1, int *status);
 /* Linear Coons patch over [0,1]^2 from the boundary curves (each over its own domain, mapped
  * to [0, 1]): cu0 = S(u, 0), cu1 = S(u, 1), c0v = S(0, v), c1v = S(1, v).  The corners must
- * agree within a relative 1e-9 (PC_EDOMAIN if they do not meet). */
+ * agree within 1e-9 times the largest corner coordinate (PC_EDOMAIN if they do not meet, or
+ * if one is at infinity); the patch keeps the mean of the two ends at each corner in cp
+ * (P00, P10, P01, P11). */
 pc_surface *pc_surface_coons(pc_curve *cu0, pc_curve *cu1, pc_curve *c0v, pc_curve *c1v,
                              int *status);
 /* The profile (a 3-D curve, u over its domain) turned about the axis through a with
@@ -71,20 +76,44 @@ pc_surface *pc_surface_coons(pc_curve *cu0, pc_curve *cu1, pc_curve *c0v, pc_cur
  * PC_EDIM unless 3-D. */
 pc_surface *pc_surface_revolution(pc_curve *profile, const double *a, const double *d,
                                   double v0, double v1, int *status);
+/* A FUNC surface over [u0, u1] x [v0, v1] (u0 < u1, v0 < v1).  fn_free (may be NULL) is called
+ * with ud at the last release; on failure the caller keeps ud. */
 pc_surface *pc_surface_func(int dim, double u0, double u1, double v0, double v1,
                             pc_surface_fn fn, void (*fn_free)(void *ud), void *ud, int *status);
 
 /* --- evaluation --------------------------------------------------------------------------- */
-/* Cartesian point (dim), PC_IMPROPER at a point at infinity. */
+/* The homogeneous value at (u, v) (dim+1) and, with order 1, its partial derivatives d/du
+ * and d/dv after it (3 rows of dim+1).  Parameters outside the domain extrapolate (the
+ * patch's polynomial, the end spans, the curves' own extrapolation).  The curve-based kinds
+ * give weight 1 (and 0 for the derivatives); where one of their curves is at infinity the
+ * status is PC_IMPROPER and out is zero.  PC_EDOMAIN from a FUNC callback that cannot give
+ * derivatives. */
+int pc_surface_eval_h(const pc_surface *s, double u, double v, int order, double *out);
+/* Cartesian point (dim), PC_IMPROPER at a point at infinity (out: the homogeneous
+ * coordinates as they are, the direction). */
 int pc_surface_eval(const pc_surface *s, double u, double v, double *out);
-/* Point, dS/du, dS/dv (3 rows of dim), Cartesian (quotient rule for rational patches). */
+/* Point, dS/du, dS/dv (3 rows of dim), Cartesian (quotient rule for rational patches; central
+ * differences, one-sided at the edge of a callback's domain, for a FUNC surface whose
+ * callback returns PC_EDOMAIN for order 1).  PC_IMPROPER at a point at infinity. */
 int pc_surface_partials(const pc_surface *s, double u, double v, double *out);
 /* Unit normal dS/du x dS/dv (3-D only: PC_EDIM otherwise; PC_EZERO where it vanishes). */
 int pc_surface_normal(const pc_surface *s, double u, double v, double *n);
-/* The iso-curve u = const (dir 0: a curve in v) or v = const (dir 1: a curve in u).  Exact
- * (a Bezier / B-spline curve) for tensor-product patches, a FUNC curve otherwise. */
+/* The iso-curve u = const (dir 0: a curve in v) or v = const (dir 1: a curve in u), over the
+ * surface's own parameter.  Exact (a Bezier / B-spline curve whose control points are the
+ * net's columns / rows reduced at value) for tensor-product patches, a FUNC curve holding a
+ * reference to the surface otherwise (closed for a whole turn of a revolution).  PC_EDOMAIN
+ * for another dir. */
 pc_curve *pc_surface_iso(pc_surface *s, int dir, double value, int *status);
-/* The image under a map (f->nin == dim). */
+/* The image under a map (f->nin == dim, else PC_EDIM): the net mapped exactly for tensor
+ * patches (a projective map keeps them rational), a FUNC surface holding a reference to s
+ * otherwise. */
 pc_surface *pc_surface_map(pc_surface *s, const pc_map *f, int *status);
+
+/* --- internal to stdlib/geom/surface*.c (not an API) ------------------------------------- */
+pc_surface *pc_surf_alloc(pc_surface_kind kind, int dim, int *status);
+int pc_surf_tensor_eval_h(const pc_surface *s, double u, double v, int order, double *out);
+pc_curve *pc_surf_tensor_iso(const pc_surface *s, int dir, double value, int *status);
+pc_surface *pc_surf_tensor_map(const pc_surface *s, const pc_map *f, int *status);
+int pc_surf_curves_eval_h(const pc_surface *s, double u, double v, int order, double *out);
 
 #endif

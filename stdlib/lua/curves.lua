@@ -131,10 +131,17 @@ function tk.brush(opts, fname)
   tk.fielderror(fname or "draw", "brush", '"pset", "dot" or a function(x, y, color)', brush, 4)
 end
 
--- x, y of a map's result: two numbers or a 2-D point
+-- x, y of a map's result: two numbers or a 2-D point (a point of another dimension is an
+-- error: its z would be lost)
 local function xy(a, b)
   if type(a) == "number" then return a, b end
-  if ispoint(a) then return a.x, a.y end
+  if ispoint(a) then
+    if #a ~= 2 then
+      error(string.format("a map or curve must return a 2-D point or two numbers, got the %d-D %s " ..
+        "(draw it through a projection: camera(f) or map = f)", #a, tostring(a)), 3)
+    end
+    return a.x, a.y
+  end
   error("a map or curve must return a 2-D point or two numbers, got " .. shown(a), 3)
 end
 tk.xy = xy
@@ -173,13 +180,12 @@ end
 function tk.walk(curve, opts, fname, fn)
   local qb = opts.qb
   if tk.iscurve(curve) then
-    local lo, hi = curve.lo, curve.hi
-    if curve.kind == "fourier" then
-      for t in tk.steps(opts.t, lo, hi, qb, fname) do fn(curve:xy(t)) end
-    else
+    if curve.kind == "stroke" or curve.kind == "spline2" then   -- each piece over its own t
       for i = 1, curve.pieces do
-        for t in tk.steps(opts.t, lo, hi, qb, fname) do fn(curve:piece_xy(i, t)) end
+        for t in tk.steps(opts.t, 0, 1, qb, fname) do fn(curve:piece_xy(i, t)) end
       end
+    else
+      for t in tk.steps(opts.t, curve.lo, curve.hi, qb, fname) do fn(curve:xy(t)) end
     end
     return
   end
@@ -191,18 +197,76 @@ function tk.walk(curve, opts, fname, fn)
   for t in tk.steps(spec, 0, 1, qb, fname) do fn(coords(curve(t))) end
 end
 
+-- ---- paths ------------------------------------------------------------------------------------
+
+-- Dots are drawn when asked for: a brush, dots = true, or qb = true (the listings' own
+-- sampling, pixel for pixel); otherwise a curve is flattened and drawn as one path.
+local function wants_dots(opts) return opts.brush ~= nil or opts.dots or opts.qb end
+tk.wants_dots = wants_dots
+
+-- The map opts.map as a map object (drawn by the core), or nil with a numeric post-map
+local function map_object(map)
+  local mt = getmetatable(map)
+  if type(mt) == "table" and mt.__name == "map" then return map end
+end
+
+-- Trace t -> f(t) over [a, b] as a path: f returns a point or numbers (any dimension, drawn
+-- through map or the camera).  The step, if given, sets how finely the first subdivision
+-- looks (a function may wiggle between samples the adaptive test never sees).
+function tk.trace(f, a, b, step, opts, fname)
+  local map = opts.map
+  local obj = map ~= nil and map_object(map) or nil
+  local g = f
+  if map ~= nil and not obj then
+    local post = tk.postmap(map, fname)
+    g = function(t) return post(coords(f(t))) end
+  end
+  local pieces = 8
+  if step and step ~= 0 then pieces = math.min(4096, math.max(1, math.ceil(math.abs(b - a) / math.abs(step) / 8))) end
+  if a == b then return end
+  if a > b then a, b = b, a end
+  tk.draw_curve(M.curve(g, a, b), opts.color, opts.tol, obj, pieces)
+end
+
+-- A dot plotter for samples of any dimension: 2-D as they are, others through the camera
+-- (a 3-D sample without a projection is an error, never silently flattened).
+function tk.through_camera(plot, fname)
+  return function(x, y, z, ...)
+    if z == nil then return plot(x, y) end
+    local cam = M.camera()
+    local n = 3 + select("#", ...)
+    if not cam or cam.nin ~= n then
+      error(string.format("%s: a %d-D curve needs a projection: set camera(f) or give map = f",
+        fname, n), 2)
+    end
+    return plot(cam:xy(x, y, z, ...))
+  end
+end
+
 -- ---- plot -------------------------------------------------------------------------------------
 
--- plot(f, {t = {a, b, step}, brush = "pset"|"dot"|fn, color = c, map = m, qb = false})
--- draws the curve t -> f(t) (a 2-D point or x, y); with map, f may be 3-D (map projects).
+-- plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})   a path (the default)
+-- plot(f, {t = {a, b, step}, brush = "pset"|"dot"|fn | dots = true | qb = true, ...})   dots
+-- draws the curve t -> f(t) (a point or numbers; 3-D and more through map or the camera).
 function M.plot(f, opts)
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("plot", 2, "opts", "a table", opts) end
+  if not wants_dots(opts) then
+    if tk.iscurve(f) then return f:draw(opts) end
+    if not callable(f) then tk.argerror("plot", 1, "curve", "a function of t or a curve", f) end
+    local r = opts.t
+    if r == nil then error("plot: give the parameter range t = {a, b, step}", 2) end
+    if type(r) ~= "table" or type(r[1]) ~= "number" or type(r[2]) ~= "number"
+        or (r[3] ~= nil and type(r[3]) ~= "number") then
+      tk.fielderror("plot", "t", "a range {a, b [, step]}", r)
+    end
+    return tk.trace(f, r[1], r[2], r[3], opts, "plot")
+  end
   local plot, post = tk.brush(opts, "plot"), tk.postmap(opts.map, "plot")
   if post then
     tk.walk(f, opts, "plot", function(...) plot(post(...)) end)
   else
-    tk.walk(f, opts, "plot", plot)
+    tk.walk(f, opts, "plot", tk.through_camera(plot, "plot"))
   end
 end
 
@@ -210,18 +274,21 @@ end
 
 local methods = tk.curve_methods
 
--- c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t
+-- c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t (a stroke's pieces each
+-- over their own t; other curves over their domain, piece 1)
 function methods.each(c, opts)
   opts = opts or {}
   local P = M.P
+  local pieced = c.kind == "stroke" or c.kind == "spline2"
   local lo, hi = c.lo, c.hi
-  local np = c.kind == "fourier" and 1 or c.pieces
+  if pieced then lo, hi = 0, 1 end
+  local np = pieced and c.pieces or 1
   local i, iter = 1, tk.steps(opts.t, lo, hi, opts.qb, "c:each")
   return function()
     while true do
       local t = iter()
       if t ~= nil then
-        if c.kind == "fourier" then return P(c:xy(t)), 1, t end
+        if not pieced then return c(t), 1, t end
         return P(c:piece_xy(i, t)), i, t
       end
       i = i + 1
@@ -231,9 +298,19 @@ function methods.each(c, opts)
   end
 end
 
--- c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn, color = c, map = m, qb = false}
+-- c:draw{color = c, tol = px, map = m}: the curve as one path, flattened to within tol pixels
+-- (default 1/4) through map or the camera.  c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn,
+-- dots = true, qb = false, ...} draws dots at those parameters instead, as the listings do.
 function methods.draw(c, opts)
   opts = opts or {}
+  if type(opts) ~= "table" then tk.argerror("c:draw", 1, "opts", "a table", opts, 3) end
+  if not wants_dots(opts) and opts.t == nil then
+    local map = opts.map
+    if map ~= nil and not map_object(map) then
+      return tk.trace(function(t) return c(t) end, c.lo, c.hi, nil, opts, "c:draw")
+    end
+    return tk.draw_curve(c, opts.color, opts.tol, map)
+  end
   local plot, post = tk.brush(opts, "c:draw"), tk.postmap(opts.map, "c:draw")
   if post then
     tk.walk(c, opts, "c:draw", function(...) plot(post(...)) end)

@@ -554,3 +554,6 @@ void pcl_open_draw(lua_State *L) {
     }
     luaL_setfuncs(L, draw_functions, 1);
 }
+
+/* The colour argument at arg for other bindings (curves, surfaces): nil for the default. */
+int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) { return opt_color(L, lua_absindex(L, arg), c); }

@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_point.h"
+#include "pcl_curve.h"
 #include "map.h"
 
 #define AMT lua_upvalueindex(1)
@@ -526,6 +527,14 @@ static int pole_error(lua_State *L, int shown) {
 /* f(p) or f(x, y, ...); the map moves to the top so the arguments count from #1. */
 static int l_apply(lua_State *L) {
     pc_map *f = checkself(L);
+    if (pcl_tocurve(L, 2) || pcl_tosurface(L, 2)) {   /* f(c) is c:map(f) */
+        lua_settop(L, 2);
+        lua_getfield(L, 2, "map");
+        lua_pushvalue(L, 2);
+        lua_pushvalue(L, 1);
+        lua_call(L, 2, 1);
+        return 1;
+    }
     lua_rotate(L, 1, -1);                /* the map stays on the stack (it may be a temporary) */
     double in[PC_MAXDIM + 1];
     read_input(L, f, 1, lua_gettop(L) - 1, in);

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "pcl_point.h"
+#include "pcl_curve.h"
 
 static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the metatable */
 #define MT lua_upvalueindex(1)
@@ -825,6 +826,12 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p) return 0;
     if (p->n != 2) {
+        /* with a camera set, drawing takes its points (3-D) and draws their images */
+        int st = pcl_project(L, p->n, p->h, x, y);
+        if (st == PC_OK) return 1;
+        if (st == PC_IMPROPER)
+            return pcl_error(L, "%s: argument #%d (%s) projects to infinity (it lies in the "
+                              "camera's vanishing plane)", pcl_fname(L), idx, push_value_text(L, p));
         const char *text = push_value_text(L, p);
         return pcl_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L),
                           idx, p->n, text);

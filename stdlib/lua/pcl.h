@@ -30,9 +30,11 @@ void pcl_open_map(lua_State *L);       /* affine, affine.frame, map.* (l_map.c) 
 void pcl_open_draw(lua_State *L);
 void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
 void pcl_open_smooth(lua_State *L);  /* the curvilinear-coordinates toolkit (docs/toolkit.md): */
-void pcl_open_curves(lua_State *L);  /*   smooth, spline2 fourier sphdir (l_smooth.c, l_curves.c) */
+void pcl_open_curves(lua_State *L);  /*   smooth; curves: bezier bspline ... spline2 stroke fourier (l_smooth.c, l_curve.c) */
 void pcl_open_curvilinear(lua_State *L);    /*   squash oblique projection oresme bisect (l_curvilinear.c) */
 void pcl_open_complex(lua_State *L); /*   complex mobius (l_complex.c) */
+void pcl_open_surface(lua_State *L);  /* surface.* (l_surface.c) */
+void pcl_open_camera(lua_State *L);   /* camera, drawing curves as paths (l_camera.c) */
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
 pc_map *pcl_tomap(lua_State *L, int idx);
@@ -43,6 +45,9 @@ pc_canvas *pcl_canvas(lua_State *L);
 /* The theme used by save() and the host's -o (set by --paper). */
 void pcl_set_theme(lua_State *L, pc_theme theme);
 pc_theme pcl_theme(lua_State *L);
+
+/* An optional colour argument (nil: -1, the default; an attribute or "#rrggbb"), l_draw.c. */
+int pcl_optcolor(lua_State *L, int arg, pc_canvas *c);
 
 /* Coordinates at argument *arg: either a point (one argument) or two numbers.  On success
  * advances *arg past what it consumed.  Raises an error naming fname and the argument. */

@@ -1,0 +1,164 @@
+/* Binding of 3-D drawing: the current projection and the drawing of curves as paths.
+ *   camera(f)      set the current projection (a map from n-D to 2-D); with one set, every
+ *                  drawing call takes n-D points and draws their images
+ *   camera(nil)    back to plain 2-D drawing;  camera() -> the current map or nil
+ * and, for stdlib/lua/curves.lua, _tk.draw_curve(c, colour, tol [, map]): the curve flattened
+ * through the projection, WINDOW and VIEW to within tol pixels and drawn as one path. */
+#include <math.h>
+#include <string.h>
+#include "pcl_curve.h"
+
+#define CAMERA_KEY "pointcalc.camera"
+
+pc_map *pcl_camera(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
+    pc_map *f = pcl_tomap(L, -1);
+    lua_pop(L, 1);   /* the registry keeps the map alive */
+    return f;
+}
+
+static int l_camera(lua_State *L) {
+    if (lua_isnone(L, 1)) {
+        lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
+        return 1;
+    }
+    if (!lua_isnil(L, 1)) {
+        pc_map *f = pcl_tomap(L, 1);
+        if (!f) return pcl_argerror(L, 1, "projection", "a map to the plane (or nil)");
+        if (f->nout != 2)
+            return pcl_error(L, "camera: argument #1 (projection) must map to 2-D points, but it "
+                                "maps to %d-D", f->nout);
+    }
+    lua_settop(L, 1);
+    lua_setfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
+    return 0;
+}
+
+int pcl_project(lua_State *L, int n, const double *h, double *x, double *y) {
+    pc_map *f = pcl_camera(L);
+    if (!f || f->nin != n) return PC_EDIM;
+    double o[3];
+    pc_map_apply(f, h, o);
+    if (o[2] == 0) return PC_IMPROPER;
+    *x = o[0] / o[2];
+    *y = o[1] / o[2];
+    return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
+}
+
+/* ---- flattening through the projection and the window ---------------------------------------- */
+
+typedef struct {
+    const pc_map *f;        /* to the plane, or NULL for a 2-D curve */
+    const pc_canvas *cv;    /* then WINDOW and VIEW to screen pixels, or NULL */
+} projector;
+
+static int project(void *ud, const double *h, double xy[2]) {
+    projector *p = ud;
+    double o[3];
+    if (p->f) {
+        pc_map_apply(p->f, h, o);
+    } else {
+        o[0] = h[0];
+        o[1] = h[1];
+        o[2] = h[2];
+    }
+    if (o[2] == 0) return PC_IMPROPER;
+    double x = o[0] / o[2], y = o[1] / o[2];
+    if (p->cv) pc_world_to_screen(p->cv, x, y, &x, &y);
+    if (!isfinite(x) || !isfinite(y)) return PC_ENONFINITE;
+    xy[0] = x;
+    xy[1] = y;
+    return PC_OK;
+}
+
+int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
+                int screen, double tol, pc_polyline *out) {
+    projector p = {f, screen ? pcl_canvas(L) : NULL};
+    pcl_callback_state(L);
+    if (!f && c->dim != 2) return PC_EDIM;
+    if (pieces < 1) pieces = 1;
+    for (int i = 0; i < pieces; i++) {
+        double lo = a + (b - a) * i / pieces, hi = i == pieces - 1 ? b : a + (b - a) * (i + 1) / pieces;
+        size_t before = out->n;
+        int st = pc_curve_flatten(c, lo, hi, project, &p, tol, out);
+        if (st != PC_OK) return st;
+        /* the next part starts where this one ended: keep one vertex, no break */
+        if (before > 0 && out->n > before && out->xy[2 * before] == out->xy[2 * before - 2] &&
+            out->xy[2 * before + 1] == out->xy[2 * before - 1]) {
+            memmove(out->xy + 2 * before, out->xy + 2 * (before + 1),
+                    sizeof(double) * 2 * (out->n - before - 1));
+            memmove(out->move + before, out->move + before + 1, out->n - before - 1);
+            out->n--;
+        }
+    }
+    return PC_OK;
+}
+
+const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname) {
+    if (idx && !lua_isnoneornil(L, idx)) {
+        pc_map *f = pcl_tomap(L, idx);
+        if (!f || f->nout != 2 || f->nin != dim)
+            pcl_error(L, "%s: map must be a map from %d-D to 2-D", fname, dim);
+        return f;
+    }
+    pc_map *f = pcl_camera(L);
+    if (dim == 2) return f && f->nin == 2 ? f : NULL;   /* a 3-D camera leaves 2-D drawing alone */
+    if (!f)
+        pcl_error(L, "%s: a %d-D object needs a projection: set one with camera(f) or give "
+                     "map = f", fname, dim);
+    if (f->nin != dim)
+        pcl_error(L, "%s: the camera takes %d-D points, but this is %d-D", fname, f->nin, dim);
+    return f;
+}
+
+/* Draw a screen-space polyline as one path (world coordinates for the canvas).  Returns the
+ * canvas status (its message in the canvas's error) rather than raising, so that the caller
+ * can free the polyline first. */
+int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed) {
+    pc_canvas *cv = pcl_canvas(L);
+    if (pl->n == 0) return PC_OK;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * pl->n, 0);
+    uint8_t *verbs = lua_newuserdatauv(L, pl->n, 0);
+    for (size_t i = 0; i < pl->n; i++) {
+        pc_screen_to_world(cv, pl->xy[2 * i], pl->xy[2 * i + 1], &xy[2 * i], &xy[2 * i + 1]);
+        verbs[i] = (i == 0 || pl->move[i]) ? PC_PATH_MOVE : PC_PATH_LINE;
+    }
+    int rc = pc_path(cv, pl->n, xy, verbs, pl->n, closed, color);
+    lua_pop(L, 2);
+    return rc;   /* the message is in the canvas */
+}
+
+/* _tk.draw_curve(c, colour, tol [, map [, pieces]]) */
+static int l_draw_curve(lua_State *L) {
+    pc_curve *c = pcl_tocurve(L, 1);
+    if (!c) return pcl_argerror(L, 1, "curve", "a curve");
+    pc_canvas *cv = pcl_canvas(L);
+    int color = pcl_optcolor(L, 2, cv);
+    double tol = luaL_optnumber(L, 3, 0.25);
+    if (!(tol > 0)) return pcl_error(L, "c:draw: tol must be a positive number of pixels");
+    const pc_map *f = pcl_drawing_map(L, 4, c->dim, "c:draw");
+    int pieces = (int)luaL_optinteger(L, 5, 1);
+    pc_polyline pl = {0};
+    int st = pcl_flatten(L, c, c->t0, c->t1, pieces, f, 1, tol, &pl);
+    if (st != PC_OK) {
+        pc_polyline_free(&pl);
+        return pcl_raise_status(L, "c:draw", st);
+    }
+    /* a closed curve whose polyline is unbroken closes exactly */
+    int unbroken = 1;
+    for (size_t i = 1; i < pl.n; i++) unbroken &= !pl.move[i];
+    st = pcl_draw_polyline(L, &pl, color, c->closed && unbroken);
+    pc_polyline_free(&pl);
+    if (st != PC_OK) return pcl_error(L, "c:draw: %s", cv->error);
+    return 0;
+}
+
+void pcl_open_camera(lua_State *L) {
+    int module = lua_gettop(L);
+    lua_pushcfunction(L, l_camera);
+    lua_setfield(L, module, "camera");
+    tk_private(L, module);
+    lua_pushcfunction(L, l_draw_curve);
+    lua_setfield(L, -2, "draw_curve");
+    lua_settop(L, module);
+}

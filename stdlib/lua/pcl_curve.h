@@ -1,0 +1,43 @@
+/* Shared by the bindings of curves, surfaces, maps and 3-D drawing (l_curve.c, l_surface.c,
+ * l_map.c, l_camera.c): the objects of the one curve, surface and map types, the current
+ * projection, and the calls from the core back into Lua. */
+#ifndef PCL_CURVE_H
+#define PCL_CURVE_H
+
+#include "pcl_tk.h"
+#include "curve.h"
+#include "surface.h"
+
+/* The core object of a curve / surface userdata at idx, or NULL (maps: pcl_tomap, pcl.h). */
+pc_curve *pcl_tocurve(lua_State *L, int idx);
+pc_surface *pcl_tosurface(lua_State *L, int idx);
+/* Push a curve object owning the reference c (kind: the constructor's name, static). */
+void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
+
+/* The core calls Lua functions (curve(f, ...), surface(f, ...), a Lua smoothstep) through
+ * callbacks that run them protected in the state set here; every binding entry that may
+ * evaluate such an object sets it first.  A callback's error is kept and the core returns a
+ * failure status: pcl_raise_status raises the kept error, or "FNAME: <the status message>". */
+void pcl_callback_state(lua_State *L);
+lua_State *pcl_current_state(void);
+int pcl_raise_status(lua_State *L, const char *fname, int status);
+/* For callbacks: keep the error object on the top of the stack; returns PC_EARG. */
+int pcl_callback_failed(lua_State *L);
+
+/* The current projection set by camera(), or NULL. */
+pc_map *pcl_camera(lua_State *L);
+/* The image under the camera of the homogeneous n-D value h: PC_OK, PC_EDIM (no camera for
+ * n-D points), PC_IMPROPER (it projects to infinity), PC_ENONFINITE. */
+int pcl_project(lua_State *L, int n, const double *h, double *x, double *y);
+/* Flatten c over [a, b] in `pieces` equal parts to begin with, through f (NULL: c is 2-D)
+ * and, when screen is set, WINDOW and VIEW: the tolerance is then in pixels and the
+ * polyline in screen coordinates. */
+int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
+                int screen, double tol, pc_polyline *out);
+/* The projection to use for drawing a dim-D object with the map at idx (none or nil: the
+ * camera); raises a clear error when there is none. */
+const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname);
+/* Draw a screen-space polyline as one path; the canvas status (message in the canvas). */
+int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed);
+
+#endif
