@@ -355,7 +355,7 @@ int pc_curve_length(const pc_curve *c, double a, double b, double tol, double *l
 }
 
 /* --- bounding box ------------------------------------------------------------------------ */
-#define BBOX_DEPTH 16   /* beyond, a piece's hull is within ~1e-9 of it: give the hull */
+#define BBOX_DEPTH 30
 
 typedef struct {
     int n, p;
@@ -506,7 +506,7 @@ int pc_curve_bbox(const pc_curve *c, double tol, double *lo, double *hi) {
     size_t sz = (size_t)(p + 1) * w;
     double scale = 0;
     for (size_t i = 0; i < (size_t)c->ncp * w; i++) scale = fmax(scale, fabs(c->cp[i]));
-    b.tol = fmax(tol, 1e-10 * scale);   /* far below any drawing; keeps the subdivision shallow */
+    b.tol = fmax(tol, 1e-13 * scale);
     b.buf = malloc(sizeof(double) * sz * 2 * (BBOX_DEPTH + 1) + sizeof(double) * sz);
     if (!b.buf) return PC_ENOMEM;
     double *piece = b.buf + sz * 2 * (BBOX_DEPTH + 1);
