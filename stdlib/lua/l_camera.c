@@ -157,7 +157,7 @@ void pcl_open_camera(lua_State *L) {
     int module = lua_gettop(L);
     lua_pushcfunction(L, l_camera);
     lua_setfield(L, module, "camera");
-    tk_private(L, module);
+    pcl_private(L, module);
     lua_pushcfunction(L, l_draw_curve);
     lua_setfield(L, -2, "draw_curve");
     lua_settop(L, module);

@@ -45,8 +45,8 @@ static int toc(lua_State *L, int idx, double complex *z) {
 
 static double complex checkc(lua_State *L, const char *fn, int idx, const char *what) {
     double complex z = 0;
-    if (!toc(L, idx, &z)) tk_argerror(L, fn, idx, what, "a complex number or a number");
-    if (!isfinite(creal(z)) || !isfinite(cimag(z))) tk_argerror(L, fn, idx, what, "a finite number");
+    if (!toc(L, idx, &z)) pcl_argerror_full(L, fn, idx, idx, what, "a complex number or a number");
+    if (!isfinite(creal(z)) || !isfinite(cimag(z))) pcl_argerror_full(L, fn, idx, idx, what, "a finite number");
     return z;
 }
 
@@ -83,8 +83,8 @@ static int c_eq(lua_State *L) {
 
 static int c_tostring(lua_State *L) {
     cnum *z = luaL_checkudata(L, 1, COMPLEX_MT);
-    tk_pushnum(L, z->re);
-    tk_pushnum(L, z->im);
+    pcl_pushnum(L, z->re);
+    pcl_pushnum(L, z->im);
     lua_pushfstring(L, "complex(%s, %s)", lua_tostring(L, -2), lua_tostring(L, -1));
     return 1;
 }
@@ -113,7 +113,7 @@ static int c_exp(lua_State *L) {
 static int c_point(lua_State *L) {
     cnum *z = luaL_checkudata(L, 1, COMPLEX_MT);
     double x[2] = {z->re, z->im};
-    tk_pushpoint(L, 2, x);
+    pcl_pushpoint(L, 2, x);
     return 1;
 }
 
@@ -148,14 +148,14 @@ static int c_new(lua_State *L) {
         pushc(L, z->re, z->im);
         return 1;
     }
-    if (lua_type(L, 1) != LUA_TNUMBER) tk_argerror(L, fn, 1, "re", "a number or a 2-D point");
-    double re = tk_checknum(L, fn, 1, "re"), im = tk_optnum(L, fn, 2, "im", 0.0);
+    if (lua_type(L, 1) != LUA_TNUMBER) pcl_argerror_full(L, fn, 1, 1, "re", "a number or a 2-D point");
+    double re = pcl_checknum(L, fn, 1, "re"), im = pcl_optnum(L, fn, 2, "im", 0.0);
     pushc(L, re, im);
     return 1;
 }
 
 static int c_polar(lua_State *L) {
-    double r = tk_checknum(L, "complex.polar", 1, "r"), u = tk_checknum(L, "complex.polar", 2, "u");
+    double r = pcl_checknum(L, "complex.polar", 1, "r"), u = pcl_checknum(L, "complex.polar", 2, "u");
     pushc(L, r * cos(u), r * sin(u));
     return 1;
 }
@@ -164,7 +164,7 @@ static int c_polar(lua_State *L) {
 
 static mobius *checkm(lua_State *L, int idx, const char *fn) {
     mobius *m = luaL_testudata(L, idx, MOBIUS_MT);
-    if (!m) tk_argerror(L, fn, idx, "self", "a Moebius map");
+    if (!m) pcl_argerror_full(L, fn, idx, idx, "self", "a Moebius map");
     return m;
 }
 
@@ -172,7 +172,7 @@ static void apply(lua_State *L, const mobius *m, double re, double im, double *w
     int st = pc_mobius(m->z0re, m->z0im, m->phi, re, im, wre, wim);
     if (st == PC_EPOLE)
     {
-        const char *tre = tk_pushnum(L, re), *tim = tk_pushnum(L, im);
+        const char *tre = pcl_pushnum(L, re), *tim = pcl_pushnum(L, im);
         pcl_error(L, "mobius: z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
     }
     if (st != PC_OK) pcl_error(L, "mobius: %s", pc_strerror(st));
@@ -183,7 +183,7 @@ static int m_call(lua_State *L) {
     mobius *m = checkm(L, 1, fn);
     double w[2];
     if (lua_type(L, 2) == LUA_TNUMBER && !lua_isnoneornil(L, 3)) {
-        double re = tk_checknum_m(L, fn, 2, "x"), im = tk_checknum_m(L, fn, 3, "y");
+        double re = pcl_checknum_m(L, fn, 2, "x"), im = pcl_checknum_m(L, fn, 3, "y");
         apply(L, m, re, im, &w[0], &w[1]);
         lua_pushnumber(L, w[0]);
         lua_pushnumber(L, w[1]);
@@ -193,11 +193,11 @@ static int m_call(lua_State *L) {
         double x[2];
         pcl_checkloc(L, 2, "P", 2, 0, x);
         apply(L, m, x[0], x[1], &w[0], &w[1]);
-        tk_pushpoint(L, 2, w);
+        pcl_pushpoint(L, 2, w);
         return 1;
     }
     double complex z;
-    if (!toc(L, 2, &z)) tk_argerror_at(L, fn, 2, 1, "z", "a complex number, a 2-D point or x, y");
+    if (!toc(L, 2, &z)) pcl_argerror_full(L, fn, 2, 1, "z", "a complex number, a 2-D point or x, y");
     apply(L, m, creal(z), cimag(z), &w[0], &w[1]);
     pushc(L, w[0], w[1]);
     return 1;
@@ -232,9 +232,9 @@ static int m_index(lua_State *L) {
 
 static int m_tostring(lua_State *L) {
     mobius *m = checkm(L, 1, "mobius map");
-    tk_pushnum(L, m->z0re);
-    tk_pushnum(L, m->z0im);
-    tk_pushnum(L, m->phi);
+    pcl_pushnum(L, m->z0re);
+    pcl_pushnum(L, m->z0im);
+    pcl_pushnum(L, m->phi);
     lua_pushfstring(L, "mobius(complex(%s, %s), %s)", lua_tostring(L, -3), lua_tostring(L, -2),
                     lua_tostring(L, -1));
     return 1;
@@ -243,10 +243,10 @@ static int m_tostring(lua_State *L) {
 static int l_mobius(lua_State *L) {
     const char *fn = "mobius";
     double complex z0 = checkc(L, fn, 1, "z0");
-    double phi = tk_optnum(L, fn, 2, "phi", 0.0);
+    double phi = pcl_optnum(L, fn, 2, "phi", 0.0);
     if (!isfinite(creal(z0)) || !isfinite(cimag(z0)))
-        tk_argerror(L, fn, 1, "z0", "a finite complex number");
-    if (cabs(z0) >= 1) tk_argerror(L, fn, 1, "z0", "a point inside the unit disc (|z0| < 1)");
+        pcl_argerror_full(L, fn, 1, 1, "z0", "a finite complex number");
+    if (cabs(z0) >= 1) pcl_argerror_full(L, fn, 1, 1, "z0", "a point inside the unit disc (|z0| < 1)");
     pushm(L, creal(z0), cimag(z0), phi);
     return 1;
 }

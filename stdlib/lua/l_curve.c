@@ -20,7 +20,6 @@
 #include "fourier.h"
 
 #define CURVE_MT "curve"
-#define CBERR_KEY "pointcalc.callback_error"
 
 enum { TK_NONE, TK_SPLINE2, TK_STROKE, TK_FOURIER };
 
@@ -34,30 +33,8 @@ typedef struct {
 static pc_piece *pieces(lcurve *u) { return (pc_piece *)u->data; }
 
 /* ---- Lua functions called from the core ---------------------------------------------------
- * The core calls back into Lua for curve(f, ...) and for strokes whose smoothstep is a Lua
- * function.  The callback runs the function protected; an error is kept in the registry and
- * the core sees a failure status, after which the binding raises the kept error (a Lua error
- * must not unwind through the core's frames). */
-static _Thread_local lua_State *current_L;
-
-void pcl_callback_state(lua_State *L) { current_L = L; }
-lua_State *pcl_current_state(void) { return current_L; }
-
-int pcl_callback_failed(lua_State *L) {
-    lua_setfield(L, LUA_REGISTRYINDEX, CBERR_KEY);   /* the error object */
-    return PC_EARG;
-}
-
-int pcl_raise_status(lua_State *L, const char *fname, int status) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, CBERR_KEY) != LUA_TNIL) {
-        lua_pushnil(L);
-        lua_setfield(L, LUA_REGISTRYINDEX, CBERR_KEY);
-        return lua_error(L);
-    }
-    lua_pop(L, 1);
-    return pcl_error(L, "%s: %s", fname, pc_strerror(status));
-}
-
+ * For curve(f, ...) and for strokes whose smoothstep is a Lua function (pcl.h: a Lua error
+ * must not unwind through the core's frames, so the callback keeps it). */
 typedef struct {
     int ref;            /* the Lua function (registry reference) */
     int dim;
@@ -67,7 +44,8 @@ typedef struct {
 
 static void luafn_free(void *ud) {
     luafn *f = ud;
-    if (current_L) luaL_unref(current_L, LUA_REGISTRYINDEX, f->ref);
+    lua_State *L = pcl_current_state();
+    if (L) luaL_unref(L, LUA_REGISTRYINDEX, f->ref);
     free(f);
 }
 
@@ -104,7 +82,7 @@ static int read_result(lua_State *L, int nres, int dim, double *h) {
 
 static int luafn_eval(void *ud, double t, int order, double *out) {
     luafn *f = ud;
-    lua_State *L = current_L;
+    lua_State *L = pcl_current_state();
     if (order > 0) return PC_EDOMAIN;            /* the core differences */
     int top = lua_gettop(L);
     if (!lua_checkstack(L, f->dim + 4)) return PC_ENOMEM;
@@ -131,7 +109,7 @@ static int luafn_eval(void *ud, double t, int order, double *out) {
         return pcl_callback_failed(L);
     }
     if (!isfinite(g)) {
-        const char *ts = tk_pushnum(L, s), *gs = tk_pushnum(L, g);
+        const char *ts = pcl_pushnum(L, s), *gs = pcl_pushnum(L, g);
         lua_pushfstring(L, "curve: the smoothstep g must return a finite number, got g(%s) = %s",
                         ts, gs);
         return pcl_callback_failed(L);
@@ -178,7 +156,7 @@ void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
 
 static lcurve *checkcurve(lua_State *L, int idx, const char *fname) {
     lcurve *u = luaL_testudata(L, idx, CURVE_MT);
-    if (!u || !u->c) tk_argerror(L, fname, idx, "self", "a curve");
+    if (!u || !u->c) pcl_argerror_full(L, fname, idx, idx, "self", "a curve");
     pcl_callback_state(L);
     return u;
 }
@@ -201,7 +179,7 @@ static double *read_values(lua_State *L, const char *fn, int arg, const char *wh
                            int *count, int *dim) {
     if (!lua_istable(L, arg)) {
         lua_pushfstring(L, "a list of at least %d points", min);
-        tk_argerror(L, fn, arg, what, lua_tostring(L, -1));
+        pcl_argerror_full(L, fn, arg, arg, what, lua_tostring(L, -1));
     }
     int m = (int)luaL_len(L, arg);
     if (m < min) {
@@ -248,7 +226,7 @@ static void cartesian(lua_State *L, const char *fn, int arg, const char *what, i
         if (vectors ? fabs(w) > PC_WEIGHT_TOL : fabs(w - 1) > PC_WEIGHT_TOL)
             pcl_error(L, "%s: argument #%d (%s) item [%d] must be a %s (weight %d), got weight %s",
                       fn, arg, what, i + 1, vectors ? "vector" : "point", vectors ? 0 : 1,
-                      tk_pushnum(L, w));
+                      pcl_pushnum(L, w));
     }
     /* compact in place: row i of d+1 -> row i of d */
     for (int i = 0; i < m; i++)
@@ -269,7 +247,7 @@ static double *read_numbers(lua_State *L, const char *fn, int idx, const char *w
         x[i] = lua_tonumberx(L, -1, &isnum);
         if (!isnum || !isfinite(x[i]))
             pcl_error(L, "%s: %s[%d] must be a finite number, got %s", fn, what, i + 1,
-                      isnum ? tk_pushnum(L, x[i]) : luaL_typename(L, -1));
+                      isnum ? pcl_pushnum(L, x[i]) : luaL_typename(L, -1));
         lua_pop(L, 1);
     }
     return x;   /* stays on the stack */
@@ -304,11 +282,11 @@ static pc_knot_kind knot_kind(lua_State *L, const char *fn, int arg, int ncp, in
         for (int i = 1; i < want; i++)
             if ((*knots)[i] < (*knots)[i - 1])
                 pcl_error(L, "%s: argument #%d (knots) must be non-decreasing, but knot [%d] = %s "
-                          "is less than knot [%d] = %s", fn, arg, i + 1, tk_pushnum(L, (*knots)[i]),
-                          i, tk_pushnum(L, (*knots)[i - 1]));
+                          "is less than knot [%d] = %s", fn, arg, i + 1, pcl_pushnum(L, (*knots)[i]),
+                          i, pcl_pushnum(L, (*knots)[i - 1]));
         return PC_KNOTS_GIVEN;
     }
-    return tk_argerror(L, fn, arg, "knots",
+    return pcl_argerror_full(L, fn, arg, arg, "knots",
                        "\"open\", \"uniform\", \"periodic\" or a list of numbers");
 }
 
@@ -318,16 +296,16 @@ static int l_bspline(lua_State *L) {
     int m, d;
     double *h = read_values(L, fn, 1, "points", 2, &m, &d);
     if (lua_type(L, 2) != LUA_TNUMBER || !lua_isinteger(L, 2))
-        tk_argerror(L, fn, 2, "degree", "an integer");
+        pcl_argerror_full(L, fn, 2, 2, "degree", "an integer");
     lua_Integer p = lua_tointeger(L, 2);
     if (lua_type(L, 3) == LUA_TSTRING && !strcmp(lua_tostring(L, 3), "periodic")) {
         if (p < 1 || p > m) {
             lua_pushfstring(L, "an integer 1..%d (the number of points)", m);
-            tk_argerror(L, fn, 2, "degree", lua_tostring(L, -1));
+            pcl_argerror_full(L, fn, 2, 2, "degree", lua_tostring(L, -1));
         }
     } else if (p < 1 || p >= m) {
         lua_pushfstring(L, "an integer 1..%d (fewer than the %d points)", m - 1, m);
-        tk_argerror(L, fn, 2, "degree", lua_tostring(L, -1));
+        pcl_argerror_full(L, fn, 2, 2, "degree", lua_tostring(L, -1));
     }
     if (p > PC_CURVE_MAXDEG) pcl_error(L, "%s: the degree is at most %d", fn, PC_CURVE_MAXDEG);
     double *knots;
@@ -341,7 +319,7 @@ static int l_bspline(lua_State *L) {
 /* The options table at arg (nil allowed); returns whether there is one. */
 static int opts_table(lua_State *L, const char *fn, int arg) {
     if (lua_isnoneornil(L, arg)) return 0;
-    if (!lua_istable(L, arg)) tk_argerror(L, fn, arg, "opts", "a table");
+    if (!lua_istable(L, arg)) pcl_argerror_full(L, fn, arg, arg, "opts", "a table");
     return 1;
 }
 
@@ -449,8 +427,8 @@ static int l_interpolate(lua_State *L) {
 /* curve(f, t0, t1): the dimension is that of f(t0) */
 static int l_curve(lua_State *L) {
     const char *fn = "curve";
-    if (!callable(L, 1)) tk_argerror(L, fn, 1, "f", "a function of t");
-    double t0 = tk_checknum(L, fn, 2, "t0"), t1 = tk_checknum(L, fn, 3, "t1");
+    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of t");
+    double t0 = pcl_checknum(L, fn, 2, "t0"), t1 = pcl_checknum(L, fn, 3, "t1");
     if (!(t1 > t0)) pcl_error(L, "%s: argument #3 (t1) must be greater than t0", fn);
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
@@ -504,7 +482,7 @@ static void check_g(lua_State *L, const char *fname, int idx, int dflt, pc_gfun 
         *lua = 1;
         return;
     }
-    tk_argerror(L, fname, idx, "g", "a smoothstep (a function of t)");
+    pcl_argerror_full(L, fname, idx, idx, "g", "a smoothstep (a function of t)");
 }
 
 /* A stroke (or spline2) of np pieces as a curve: C smoothsteps in the core, a Lua one through
@@ -624,7 +602,7 @@ static int l_stroke_raw(lua_State *L) {
 
 static int l_fourier(lua_State *L) {
     const char *fn = "fourier";
-    if (!lua_istable(L, 1)) tk_argerror(L, fn, 1, "points", "a list of 2n points");
+    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "points", "a list of 2n points");
     int count = (int)luaL_len(L, 1);
     if (count < 2 || count % 2) {
         lua_pushfstring(L, "a list of an even number (2n >= 2) of points, got %d", count);
@@ -659,16 +637,16 @@ static int l_fourier(lua_State *L) {
     u->n = n;
     for (int k = 0; k < d; k++) {   /* the coefficients again, for c:coef */
         st = pc_fourier_coef(n, samples + k, d, u->data + 2 * k * m, u->data + (2 * k + 1) * m);
-        if (st != PC_OK) return tk_statuserror(L, fn, st, "points");
+        if (st != PC_OK) return pcl_statuserror(L, fn, st, "points");
     }
     return 1;
 }
 
 static int l_sphdir(lua_State *L) {
-    double u1 = tk_checknum(L, "sphdir", 1, "u1"), u2 = tk_checknum(L, "sphdir", 2, "u2");
+    double u1 = pcl_checknum(L, "sphdir", 1, "u1"), u2 = pcl_checknum(L, "sphdir", 2, "u2");
     double e[3];
     pc_dir3(u1, u2, e);
-    tk_pushvector(L, 3, e);
+    pcl_pushvector(L, 3, e);
     return 1;
 }
 
@@ -683,12 +661,12 @@ static int domain_error(lua_State *L, lcurve *u, const char *fname, double t) {
         double s = t - i;
         if (pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, s) != PC_OK) {
             int low = s < 0;
-            const char *deg = tk_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
-            const char *bound = tk_pushnum(L, low ? 0 : u->np);
+            const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
+            const char *bound = pcl_pushnum(L, low ? 0 : u->np);
             lua_pushfstring(L, "%s %s (piece %d's half-spline has the fractional degree %s = %s "
                             "and does not extrapolate)", low ? "at least" : "at most", bound,
                             i + 1, low ? "n" : "m", deg);
-            return tk_argerror_at(L, fname, 2, 1, "t", lua_tostring(L, -1));
+            return pcl_argerror_full(L, fname, 2, 1, "t", lua_tostring(L, -1));
         }
     }
     return pcl_raise_status(L, fname, PC_EDOMAIN);
@@ -717,7 +695,7 @@ static void push_h(lua_State *L, int d, const double *h) {
 static int c_call(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "curve");
     double h[PC_MAXDIM + 1];
-    eval_at(L, u, tk_checknum_m(L, u->kind, 2, "t"), h, u->kind);
+    eval_at(L, u, pcl_checknum_m(L, u->kind, 2, "t"), h, u->kind);
     push_h(L, u->c->dim, h);
     return 1;
 }
@@ -725,10 +703,10 @@ static int c_call(lua_State *L) {
 static int c_xy(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:xy");
     double h[PC_MAXDIM + 1];
-    eval_at(L, u, tk_checknum_m(L, "c:xy", 2, "t"), h, "c:xy");
+    eval_at(L, u, pcl_checknum_m(L, "c:xy", 2, "t"), h, "c:xy");
     int d = u->c->dim;
     if (h[d] == 0)
-        return pcl_error(L, "c:xy: the curve is at infinity at t = %s", tk_pushnum(L, lua_tonumber(L, 2)));
+        return pcl_error(L, "c:xy: the curve is at infinity at t = %s", pcl_pushnum(L, lua_tonumber(L, 2)));
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k] / h[d]);
     return d;
 }
@@ -736,43 +714,43 @@ static int c_xy(lua_State *L) {
 /* c:deriv(t [, order]) -> the derivative vector (order 1 or 2) */
 static int c_deriv(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:deriv");
-    double t = tk_checknum_m(L, "c:deriv", 2, "t");
+    double t = pcl_checknum_m(L, "c:deriv", 2, "t");
     lua_Integer order = luaL_optinteger(L, 3, 1);
-    if (order < 1 || order > 2) tk_argerror_at(L, "c:deriv", 3, 2, "order", "1 or 2");
+    if (order < 1 || order > 2) pcl_argerror_full(L, "c:deriv", 3, 2, "order", "1 or 2");
     int d = u->c->dim;
     double out[3 * PC_MAXDIM];
     int st = pc_curve_derivs(u->c, t, (int)order, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:deriv: the curve is at infinity at t = %s", tk_pushnum(L, t));
+    if (st == PC_IMPROPER) return pcl_error(L, "c:deriv: the curve is at infinity at t = %s", pcl_pushnum(L, t));
     if (st != PC_OK) return pcl_raise_status(L, "c:deriv", st);
-    tk_pushvector(L, d, out + (size_t)order * d);
+    pcl_pushvector(L, d, out + (size_t)order * d);
     return 1;
 }
 
 static int c_tangent(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:tangent");
-    double t = tk_checknum_m(L, "c:tangent", 2, "t");
+    double t = pcl_checknum_m(L, "c:tangent", 2, "t");
     int d = u->c->dim;
     double out[2 * PC_MAXDIM], e[PC_MAXDIM];
     int st = pc_curve_derivs(u->c, t, 1, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:tangent: the curve is at infinity at t = %s", tk_pushnum(L, t));
+    if (st == PC_IMPROPER) return pcl_error(L, "c:tangent: the curve is at infinity at t = %s", pcl_pushnum(L, t));
     if (st != PC_OK) return pcl_raise_status(L, "c:tangent", st);
     if (pc_unit(d, out + d, e) != PC_OK)
-        return pcl_error(L, "c:tangent: the derivative is zero at t = %s (a cusp or a stop)", tk_pushnum(L, t));
-    tk_pushvector(L, d, e);
+        return pcl_error(L, "c:tangent: the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
+    pcl_pushvector(L, d, e);
     return 1;
 }
 
 /* c:normal(t): the unit principal normal (in the plane: the tangent turned by +90 degrees) */
 static int c_normal(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:normal");
-    double t = tk_checknum_m(L, "c:normal", 2, "t");
+    double t = pcl_checknum_m(L, "c:normal", 2, "t");
     int d = u->c->dim;
     double out[3 * PC_MAXDIM], e[PC_MAXDIM], nrm[PC_MAXDIM];
     int st = pc_curve_derivs(u->c, t, 2, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:normal: the curve is at infinity at t = %s", tk_pushnum(L, t));
+    if (st == PC_IMPROPER) return pcl_error(L, "c:normal: the curve is at infinity at t = %s", pcl_pushnum(L, t));
     if (st != PC_OK) return pcl_raise_status(L, "c:normal", st);
     if (pc_unit(d, out + d, e) != PC_OK)
-        return pcl_error(L, "c:normal: the derivative is zero at t = %s", tk_pushnum(L, t));
+        return pcl_error(L, "c:normal: the derivative is zero at t = %s", pcl_pushnum(L, t));
     if (d == 2) {
         pc_perp2(e, nrm);
     } else {   /* the part of C'' across the tangent */
@@ -780,19 +758,19 @@ static int c_normal(lua_State *L) {
         for (int k = 0; k < d; k++) nrm[k] = out[2 * d + k] - a * e[k];
         if (pc_unit(d, nrm, nrm) != PC_OK)
             return pcl_error(L, "c:normal: the curve is straight at t = %s (no principal normal)",
-                             tk_pushnum(L, t));
+                             pcl_pushnum(L, t));
     }
-    tk_pushvector(L, d, nrm);
+    pcl_pushvector(L, d, nrm);
     return 1;
 }
 
 static int c_curvature(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:curvature");
-    double t = tk_checknum_m(L, "c:curvature", 2, "t"), k;
+    double t = pcl_checknum_m(L, "c:curvature", 2, "t"), k;
     int st = pc_curve_curvature(u->c, t, &k);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:curvature: the curve is at infinity at t = %s", tk_pushnum(L, t));
+    if (st == PC_IMPROPER) return pcl_error(L, "c:curvature: the curve is at infinity at t = %s", pcl_pushnum(L, t));
     if (st == PC_EZERO)
-        return pcl_error(L, "c:curvature: the derivative is zero at t = %s (a cusp or a stop)", tk_pushnum(L, t));
+        return pcl_error(L, "c:curvature: the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
     if (st != PC_OK) return pcl_raise_status(L, "c:curvature", st);
     lua_pushnumber(L, k);
     return 1;
@@ -801,10 +779,10 @@ static int c_curvature(lua_State *L) {
 /* ---- operations --------------------------------------------------------------------------------- */
 
 static double inside(lua_State *L, lcurve *u, const char *fname, int idx, const char *what) {
-    double t = tk_checknum_m(L, fname, idx, what);
+    double t = pcl_checknum_m(L, fname, idx, what);
     if (!(t > u->c->t0 && t < u->c->t1)) {
-        lua_pushfstring(L, "inside the domain (%s, %s)", tk_pushnum(L, u->c->t0), tk_pushnum(L, u->c->t1));
-        tk_argerror_at(L, fname, idx, idx - 1, what, lua_tostring(L, -1));
+        lua_pushfstring(L, "inside the domain (%s, %s)", pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1));
+        pcl_argerror_full(L, fname, idx, idx - 1, what, lua_tostring(L, -1));
     }
     return t;
 }
@@ -822,10 +800,10 @@ static int c_split(lua_State *L) {
 
 static int c_sub(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:sub");
-    double a = tk_checknum_m(L, "c:sub", 2, "a"), b = tk_checknum_m(L, "c:sub", 3, "b");
+    double a = pcl_checknum_m(L, "c:sub", 2, "a"), b = pcl_checknum_m(L, "c:sub", 3, "b");
     if (!(a >= u->c->t0 && b <= u->c->t1 && a < b))
         return pcl_error(L, "c:sub: need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
-                         tk_pushnum(L, u->c->t0), tk_pushnum(L, u->c->t1), tk_pushnum(L, a), tk_pushnum(L, b));
+                         pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a), pcl_pushnum(L, b));
     int st;
     pc_curve *c = pc_curve_sub(u->c, a, b, &st);
     pushcurve(L, c, st, u->kind, 0);
@@ -846,8 +824,8 @@ static int c_length(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:length");
     double a = u->c->t0, b = u->c->t1;
     if (!lua_isnoneornil(L, 2)) {
-        a = tk_checknum_m(L, "c:length", 2, "a");
-        b = tk_checknum_m(L, "c:length", 3, "b");
+        a = pcl_checknum_m(L, "c:length", 2, "a");
+        b = pcl_checknum_m(L, "c:length", 3, "b");
     }
     double len;
     int st = pc_curve_length(u->c, a, b, 1e-10, &len);
@@ -863,8 +841,8 @@ static int c_bbox(lua_State *L) {
     int st = pc_curve_bbox(u->c, 1e-9, lo, hi);
     if (st == PC_IMPROPER) return pcl_error(L, "c:bbox: the curve passes through infinity: it has no bounding box");
     if (st != PC_OK) return pcl_raise_status(L, "c:bbox", st);
-    tk_pushpoint(L, u->c->dim, lo);
-    tk_pushpoint(L, u->c->dim, hi);
+    pcl_pushpoint(L, u->c->dim, lo);
+    pcl_pushpoint(L, u->c->dim, hi);
     return 2;
 }
 
@@ -879,16 +857,16 @@ static int c_controls(lua_State *L) {
             lua_Integer k = lua_tointegerx(L, 2, &isint);
             if (!isint || k < 1 || k > u->np) {
                 lua_pushfstring(L, "a piece number 1..%d", u->np);
-                tk_argerror_at(L, "c:controls", 2, 1, "i", lua_tostring(L, -1));
+                pcl_argerror_full(L, "c:controls", 2, 1, "i", lua_tostring(L, -1));
             }
             i = (int)k - 1;
         }
         pc_piece *pc = &pieces(u)[i];
         int d = u->c->dim;
-        tk_pushpoint(L, d, pc->a);
-        tk_pushpoint(L, d, pc->p);
-        tk_pushpoint(L, d, pc->q);
-        tk_pushpoint(L, d, pc->b);
+        pcl_pushpoint(L, d, pc->a);
+        pcl_pushpoint(L, d, pc->p);
+        pcl_pushpoint(L, d, pc->q);
+        pcl_pushpoint(L, d, pc->b);
         return 4;
     }
     if (u->tk == TK_FOURIER) return pcl_error(L, "c:controls: a Fourier curve has no pieces");
@@ -925,9 +903,9 @@ static int piece_at(lua_State *L, const char *fname, double *x) {
     lua_Integer i = lua_tointegerx(L, 2, &isint);
     if (!isint || i < 1 || i > u->np) {
         lua_pushfstring(L, "a piece number 1..%d", u->np);
-        tk_argerror_at(L, fname, 2, 1, "i", lua_tostring(L, -1));
+        pcl_argerror_full(L, fname, 2, 1, "i", lua_tostring(L, -1));
     }
-    double t = tk_checknum_m(L, fname, 3, "t");
+    double t = pcl_checknum_m(L, fname, 3, "t");
     pc_piece *pc = &pieces(u)[i - 1];
     int d = u->c->dim;
     if (lua_getiuservalue(L, 1, 1) != LUA_TNIL) {   /* a Lua smoothstep */
@@ -937,17 +915,17 @@ static int piece_at(lua_State *L, const char *fname, double *x) {
         double g = lua_tonumberx(L, -1, &isnum);
         if (!isnum || !isfinite(g))
             pcl_error(L, "%s: the smoothstep g must return a finite number, got %s", fname,
-                      isnum ? tk_pushnum(L, g) : luaL_typename(L, -1));
+                      isnum ? pcl_pushnum(L, g) : luaL_typename(L, -1));
         pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, g, x);
         return d;
     }
     if (pc_gfun_check(&pc->g, t) != PC_OK) {
         int low = t < 0;
-        const char *deg = tk_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
+        const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
         lua_pushfstring(L, "%s (piece %d's half-spline has the fractional degree %s = %s and "
                         "does not extrapolate)", low ? "at least 0" : "at most 1", (int)i,
                         low ? "n" : "m", deg);
-        tk_argerror_at(L, fname, 3, 2, "t", lua_tostring(L, -1));
+        pcl_argerror_full(L, fname, 3, 2, "t", lua_tostring(L, -1));
     }
     pc_piece_eval(d, pc, t, x);
     return d;
@@ -956,7 +934,7 @@ static int piece_at(lua_State *L, const char *fname, double *x) {
 static int c_piece(lua_State *L) {
     double x[PC_MAXDIM];
     int d = piece_at(L, "c:piece", x);
-    tk_pushpoint(L, d, x);
+    pcl_pushpoint(L, d, x);
     return 1;
 }
 
@@ -975,7 +953,7 @@ static int c_coef(lua_State *L) {
     lua_Integer k = lua_isnoneornil(L, 2) ? 1 : lua_tointegerx(L, 2, &isint);
     if (!isint || k < 1 || k > d) {
         lua_pushfstring(L, "a coordinate number 1..%d", d);
-        tk_argerror_at(L, "c:coef", 2, 1, "k", lua_tostring(L, -1));
+        pcl_argerror_full(L, "c:coef", 2, 1, "k", lua_tostring(L, -1));
     }
     int m = u->n + 1;
     for (int ab = 0; ab < 2; ab++) {
@@ -993,7 +971,7 @@ static int c_coef(lua_State *L) {
 static int c_map(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:map");
     pc_map *f = pcl_tomap(L, 2);
-    if (!f) return tk_argerror_at(L, "c:map", 2, 1, "f", "a map");
+    if (!f) return pcl_argerror_full(L, "c:map", 2, 1, "f", "a map");
     if (f->nin != u->c->dim)
         return pcl_error(L, "c:map: the map takes %d-D points, but the curve is %d-D", f->nin, u->c->dim);
     int st;
@@ -1007,14 +985,14 @@ static int c_map(lua_State *L) {
  * 1e-3); map projects a curve of another dimension to the plane. */
 static int c_flatten(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:flatten");
-    double tol = lua_isnoneornil(L, 2) ? 1e-3 : tk_checknum_m(L, "c:flatten", 2, "tol");
-    if (!(tol > 0)) tk_argerror_at(L, "c:flatten", 2, 1, "tol", "a positive number");
+    double tol = lua_isnoneornil(L, 2) ? 1e-3 : pcl_checknum_m(L, "c:flatten", 2, "tol");
+    if (!(tol > 0)) pcl_argerror_full(L, "c:flatten", 2, 1, "tol", "a positive number");
     pc_map *f = NULL;
     if (!lua_isnoneornil(L, 3)) {
         f = pcl_tomap(L, 3);
         if (!f || f->nin != u->c->dim || f->nout != 2) {
             lua_pushfstring(L, "a map from %d-D to 2-D", u->c->dim);
-            tk_argerror_at(L, "c:flatten", 3, 2, "map", lua_tostring(L, -1));
+            pcl_argerror_full(L, "c:flatten", 3, 2, "map", lua_tostring(L, -1));
         }
     } else if (u->c->dim != 2) {
         return pcl_error(L, "c:flatten: a %d-D curve needs a map to the plane (argument #2)", u->c->dim);
@@ -1033,7 +1011,7 @@ static int c_flatten(lua_State *L) {
             lua_newtable(L);
             nv = 0;
         }
-        tk_pushpoint(L, 2, pl.xy + 2 * i);
+        pcl_pushpoint(L, 2, pl.xy + 2 * i);
         lua_rawseti(L, -2, ++nv);
     }
     if (pl.n) lua_rawseti(L, -2, ++npl);
@@ -1076,17 +1054,17 @@ static int c_tostring(lua_State *L) {
         lua_pushfstring(L, "stroke(%d nodes, %d pieces, %d-D%s)", c->closed ? u->np : u->np + 1,
                         u->np, c->dim, c->closed ? ", closed" : "");
     else if (c->kind == PC_CURVE_FUNC)
-        lua_pushfstring(L, "%s(%d-D, t in [%s, %s])", u->kind, c->dim, tk_pushnum(L, c->t0),
-                        tk_pushnum(L, c->t1));
+        lua_pushfstring(L, "%s(%d-D, t in [%s, %s])", u->kind, c->dim, pcl_pushnum(L, c->t0),
+                        pcl_pushnum(L, c->t1));
     else
         lua_pushfstring(L, "%s(%d-D, degree %d, %d control points, t in [%s, %s])", u->kind,
-                        c->dim, c->degree, c->ncp, tk_pushnum(L, c->t0), tk_pushnum(L, c->t1));
+                        c->dim, c->degree, c->ncp, pcl_pushnum(L, c->t0), pcl_pushnum(L, c->t1));
     return 1;
 }
 
 void pcl_open_curves(lua_State *L) {
     int module = lua_gettop(L);
-    tk_private(L, module);
+    pcl_private(L, module);
     int tk = lua_gettop(L);
     lua_newtable(L);   /* the methods, shared with the Lua helpers as _tk.curve_methods */
     int methods = lua_gettop(L);

@@ -22,9 +22,9 @@
 static int squash_with(lua_State *L, const char *fn, double (*f)(double)) {
     int n = lua_gettop(L) < 2 ? 1 : 2;
     for (int i = 1; i <= n; i++) {
-        if (lua_type(L, i) != LUA_TNUMBER) tk_argerror(L, fn, i, i == 1 ? "p" : "q", "a number");
+        if (lua_type(L, i) != LUA_TNUMBER) pcl_argerror_full(L, fn, i, i, i == 1 ? "p" : "q", "a number");
         double p = lua_tonumber(L, i);   /* +-inf are the square's sides; NaN is no place */
-        if (isnan(p)) tk_argerror(L, fn, i, i == 1 ? "p" : "q", "a number other than NaN");
+        if (isnan(p)) pcl_argerror_full(L, fn, i, i, i == 1 ? "p" : "q", "a number other than NaN");
         lua_pushnumber(L, f(p));
     }
     return n;
@@ -47,8 +47,8 @@ static int l_oblique(lua_State *L) {
     const char *fn = "oblique";
     double c0[2], c[8];
     pcl_checkloc(L, 1, "C0", 2, 0, c0);
-    double r = tk_checknum(L, fn, 2, "r"), k = tk_checknum(L, fn, 3, "k");
-    double u = tk_checknum(L, fn, 4, "u");
+    double r = pcl_checknum(L, fn, 2, "r"), k = pcl_checknum(L, fn, 3, "k");
+    double u = pcl_checknum(L, fn, 4, "u");
     pc_oblique_axes(c0, r, k, u, c);
     push_projection(L, c);
     return 1;
@@ -72,7 +72,7 @@ typedef struct {
 
 static int oresme_call(lua_State *L) {
     oresme *o = luaL_checkudata(L, 1, ORESME_MT);
-    lua_pushnumber(L, pc_oresme_at(o->y, o->m, tk_checknum_m(L, "oresme", 2, "t")));
+    lua_pushnumber(L, pc_oresme_at(o->y, o->m, pcl_checknum_m(L, "oresme", 2, "t")));
     return 1;
 }
 
@@ -101,29 +101,29 @@ static int oresme_len(lua_State *L) {
 
 static int oresme_tostring(lua_State *L) {
     oresme *o = luaL_checkudata(L, 1, ORESME_MT);
-    tk_pushnum(L, o->lambda);
+    pcl_pushnum(L, o->lambda);
     lua_pushfstring(L, "oresme(%s, %d)", lua_tostring(L, -1), o->m);
     return 1;
 }
 
 static int l_oresme(lua_State *L) {
     const char *fn = "oresme";
-    double lambda = tk_checknum(L, fn, 1, "lambda");
+    double lambda = pcl_checknum(L, fn, 1, "lambda");
     lua_Integer m = 12;
     if (!lua_isnoneornil(L, 2)) {
         int isint;
         m = lua_tointegerx(L, 2, &isint);
         if (!isint || m < 0 || m > PC_ORESME_MAXLEVEL)
-            tk_argerror(L, fn, 2, "m", "an integer 0..24 (2^m cells)");
+            pcl_argerror_full(L, fn, 2, 2, "m", "an integer 0..24 (2^m cells)");
     }
-    double y0 = tk_optnum(L, fn, 3, "y0", 0.0), y1 = tk_optnum(L, fn, 4, "y1", 1.0);
+    double y0 = pcl_optnum(L, fn, 3, "y0", 0.0), y1 = pcl_optnum(L, fn, 4, "y1", 1.0);
     long n = 1L << m;
     oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
     o->lambda = lambda;
     o->m = (int)m;
     luaL_setmetatable(L, ORESME_MT);
     int st = pc_oresme_fill(lambda, (int)m, y0, y1, o->y);
-    if (st != PC_OK) return tk_statuserror(L, fn, st, NULL);
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
     return 1;
 }
 
@@ -138,10 +138,10 @@ static double call_f(double x, void *ud) {
     double v = lua_tonumberx(L, -1, &isnum);
     if (!isnum) {
         const char *type = luaL_typename(L, -1);
-        pcl_error(L, "bisect: f(%s) must return a number, got %s", tk_pushnum(L, x), type);
+        pcl_error(L, "bisect: f(%s) must return a number, got %s", pcl_pushnum(L, x), type);
     }
     if (!isfinite(v)) {   /* name the x (the core would only say that some f(x) was not finite) */
-        const char *tx = tk_pushnum(L, x), *tv = tk_pushnum(L, v);
+        const char *tx = pcl_pushnum(L, x), *tv = pcl_pushnum(L, v);
         pcl_error(L, "bisect: f(%s) must return a finite number, got %s", tx, tv);
     }
     lua_pop(L, 1);
@@ -152,23 +152,23 @@ static int l_bisect(lua_State *L) {
     const char *fn = "bisect";
     lua_settop(L, 4);
     if (!lua_isfunction(L, 1)) {
-        if (luaL_getmetafield(L, 1, "__call") == LUA_TNIL) tk_argerror(L, fn, 1, "f", "a function");
+        if (luaL_getmetafield(L, 1, "__call") == LUA_TNIL) pcl_argerror_full(L, fn, 1, 1, "f", "a function");
         lua_pop(L, 1);
     }
-    double a = tk_checknum(L, fn, 2, "a"), b = tk_checknum(L, fn, 3, "b");
-    double tol = tk_optnum(L, fn, 4, "tol", 1e-10);
+    double a = pcl_checknum(L, fn, 2, "a"), b = pcl_checknum(L, fn, 3, "b");
+    double tol = pcl_optnum(L, fn, 4, "tol", 1e-10);
     double x;
     int iters;
     int st = pc_bisect(call_f, L, a, b, tol, &x, &iters);
     if (st == PC_ENOBRACKET)
     {
         double fa = call_f(a, L), fb = call_f(b, L);
-        const char *ta = tk_pushnum(L, a), *tfa = tk_pushnum(L, fa);
-        const char *tb = tk_pushnum(L, b), *tfb = tk_pushnum(L, fb);
+        const char *ta = pcl_pushnum(L, a), *tfa = pcl_pushnum(L, fa);
+        const char *tb = pcl_pushnum(L, b), *tfb = pcl_pushnum(L, fb);
         return pcl_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
                           "the interval brackets no root", ta, tfa, tb, tfb);
     }
-    if (st != PC_OK) return tk_statuserror(L, fn, st, "f returned NaN or an infinity");
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, "f returned NaN or an infinity");
     lua_pushnumber(L, x);
     lua_pushinteger(L, iters);
     return 2;
@@ -180,7 +180,7 @@ static int l_bisect(lua_State *L) {
 static int bilinear_eval(lua_State *L) {
     const double *c = lua_touserdata(L, lua_upvalueindex(1));
     int d = (int)lua_tointeger(L, lua_upvalueindex(2));
-    double t1 = tk_checknum(L, "bilinear", 1, "t1"), t2 = tk_checknum(L, "bilinear", 2, "t2");
+    double t1 = pcl_checknum(L, "bilinear", 1, "t1"), t2 = pcl_checknum(L, "bilinear", 2, "t2");
     double out[PC_MAXDIM];
     pc_bilinear(d, c, c + d, c + 2 * d, c + 3 * d, t1, t2, out);
     for (int k = 0; k < d; k++) lua_pushnumber(L, out[k]);
@@ -245,7 +245,7 @@ void pcl_open_curvilinear(lua_State *L) {
         {"squash", l_squash}, {"squash01", l_squash01}, {"oblique", l_oblique},
         {"projection", l_projection}, {"oresme", l_oresme}, {"bisect", l_bisect}, {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
-    tk_private(L, module);
+    pcl_private(L, module);
     static const luaL_Reg priv[] = {{"bilinear", l_bilinear}, {"frame_point", l_frame_point},
                                     {"frame_coords", l_frame_coords},
                                     {"patch_blend", l_patch_blend}, {NULL, NULL}};

@@ -132,6 +132,18 @@ int pcl_dimerror(lua_State *L, int arg, const char *what, int got_dim, int dim, 
     return pcl_error(L, "%s must be %d-D, got %d-D", ctx, dim, got_dim);
 }
 
+void pcl_pushpoint(lua_State *L, int n, const double *x) {
+    pcl_value *p = pcl_newvalue(L, n);
+    memcpy(p->h, x, sizeof(double) * (size_t)n);
+    p->h[n] = 1.0;
+}
+
+void pcl_pushvector(lua_State *L, int n, const double *x) {
+    pcl_value *p = pcl_newvalue(L, n);
+    memcpy(p->h, x, sizeof(double) * (size_t)n);
+    p->h[n] = 0.0;
+}
+
 double pcl_checkfinite(lua_State *L, int arg, const char *what) {
     int isnum;
     double v = lua_tonumberx(L, arg, &isnum);

@@ -14,12 +14,12 @@
 #define HSPLINE_MT "halfspline"
 
 static int l_sine(lua_State *L) {
-    lua_pushnumber(L, pc_smooth_sine(tk_checknum(L, "smooth.sine", 1, "t")));
+    lua_pushnumber(L, pc_smooth_sine(pcl_checknum(L, "smooth.sine", 1, "t")));
     return 1;
 }
 
 static int l_cubic(lua_State *L) {
-    lua_pushnumber(L, pc_smooth_cubic(tk_checknum(L, "smooth.cubic", 1, "t")));
+    lua_pushnumber(L, pc_smooth_cubic(pcl_checknum(L, "smooth.cubic", 1, "t")));
     return 1;
 }
 
@@ -42,7 +42,7 @@ pc_hspline *pcl_tohspline(lua_State *L, int idx) {
 }
 
 static void check_degree(lua_State *L, const char *fname, int arg, const char *what, double v) {
-    if (!(v > 0)) tk_argerror(L, fname, arg, what, "a positive number");
+    if (!(v > 0)) pcl_argerror_full(L, fname, arg, arg, what, "a positive number");
 }
 
 /* The half-spline (n, m, t0), its parameters already checked one by one; degrees in the
@@ -50,7 +50,7 @@ static void check_degree(lua_State *L, const char *fname, int arg, const char *w
 static void init_checked(lua_State *L, const char *fname, pc_hspline *h, double n, double m,
                          double t0) {
     if (pc_hspline_init(h, n, m, t0) == PC_OK) return;
-    const char *tn = tk_pushnum(L, n), *tm = tk_pushnum(L, m), *tt = tk_pushnum(L, t0);
+    const char *tn = pcl_pushnum(L, n), *tm = pcl_pushnum(L, m), *tt = pcl_pushnum(L, t0);
     pcl_error(L, "%s: the degrees n = %s, m = %s are too large for t0 = %s: the coefficients "
               "c1, c2 overflow a double", fname, tn, tm, tt);
 }
@@ -59,23 +59,23 @@ static void init_checked(lua_State *L, const char *fname, pc_hspline *h, double 
  * degree: t^n needs t >= 0, (1 - t)^m needs t <= 1 unless the degree is whole. */
 static double checked_t(lua_State *L, const pc_hspline *h, const char *fname, int idx,
                         int shown) {
-    if (lua_type(L, idx) != LUA_TNUMBER) tk_argerror_at(L, fname, idx, shown, "t", "a number");
+    if (lua_type(L, idx) != LUA_TNUMBER) pcl_argerror_full(L, fname, idx, shown, "t", "a number");
     double t = lua_tonumber(L, idx);
-    if (!isfinite(t)) tk_argerror_at(L, fname, idx, shown, "t", "a finite number");
+    if (!isfinite(t)) pcl_argerror_full(L, fname, idx, shown, "t", "a finite number");
     if (pc_hspline_check(h, t) != PC_OK) {
         int low = t < 0;
-        tk_pushnum(L, low ? h->n : h->m);
+        pcl_pushnum(L, low ? h->n : h->m);
         lua_pushfstring(L, "%s (the degree %s = %s is fractional, so the formula does not "
                         "extrapolate past %s)", low ? "at least 0" : "at most 1", low ? "n" : "m",
                         lua_tostring(L, -1), low ? "0" : "1");
-        tk_argerror_at(L, fname, idx, shown, "t", lua_tostring(L, -1));
+        pcl_argerror_full(L, fname, idx, shown, "t", lua_tostring(L, -1));
     }
     return t;
 }
 
 static int l_power(lua_State *L) {
     const char *fn = "smooth.power";
-    double n = tk_checknum(L, fn, 1, "n");
+    double n = pcl_checknum(L, fn, 1, "n");
     check_degree(L, fn, 1, "n", n);
     pc_hspline h;
     init_checked(L, fn, &h, n, n, 0.5);
@@ -89,11 +89,11 @@ static int l_power(lua_State *L) {
 
 static int l_half(lua_State *L) {
     const char *fn = "smooth.half";
-    double n = tk_checknum(L, fn, 1, "n"), m = tk_checknum(L, fn, 2, "m");
-    double t0 = tk_checknum(L, fn, 3, "t0");
+    double n = pcl_checknum(L, fn, 1, "n"), m = pcl_checknum(L, fn, 2, "m");
+    double t0 = pcl_checknum(L, fn, 3, "t0");
     check_degree(L, fn, 1, "n", n);
     check_degree(L, fn, 2, "m", m);
-    if (!(t0 > 0 && t0 < 1)) tk_argerror(L, fn, 3, "t0", "a number in (0, 1)");
+    if (!(t0 > 0 && t0 < 1)) pcl_argerror_full(L, fn, 3, 3, "t0", "a number in (0, 1)");
     pc_hspline h;
     init_checked(L, fn, &h, n, m, t0);
     if (!lua_isnoneornil(L, 4)) {
@@ -106,24 +106,24 @@ static int l_half(lua_State *L) {
 
 static int l_locus(lua_State *L) {
     const char *fn = "smooth.locus";
-    double n = tk_checknum(L, fn, 1, "n"), m = tk_checknum(L, fn, 2, "m");
-    double t0 = tk_checknum(L, fn, 3, "t0");
+    double n = pcl_checknum(L, fn, 1, "n"), m = pcl_checknum(L, fn, 2, "m");
+    double t0 = pcl_checknum(L, fn, 3, "t0");
     check_degree(L, fn, 1, "n", n);
     check_degree(L, fn, 2, "m", m);
-    if (!(t0 >= 0 && t0 <= 1)) tk_argerror(L, fn, 3, "t0", "a number in [0, 1]");
+    if (!(t0 >= 0 && t0 <= 1)) pcl_argerror_full(L, fn, 3, 3, "t0", "a number in [0, 1]");
     lua_pushnumber(L, pc_hspline_locus(n, m, t0));
     return 1;
 }
 
 static int l_clamp(lua_State *L) {
-    lua_pushnumber(L, pc_smooth_clamp(tk_checknum(L, "smooth.clamp", 1, "t")));
+    lua_pushnumber(L, pc_smooth_clamp(pcl_checknum(L, "smooth.clamp", 1, "t")));
     return 1;
 }
 
 static int l_clamp_qb(lua_State *L) {
     const char *fn = "smooth.clamp_qb";
-    double t = tk_checknum(L, fn, 1, "t");   /* finite, as smooth.clamp's (QBasic has no NaN) */
-    double prev = tk_optnum(L, fn, 2, "prev", 0.0);
+    double t = pcl_checknum(L, fn, 1, "t");   /* finite, as smooth.clamp's (QBasic has no NaN) */
+    double prev = pcl_optnum(L, fn, 2, "prev", 0.0);
     lua_pushnumber(L, pc_smooth_clamp_qb(t, prev));
     return 1;
 }
@@ -143,7 +143,7 @@ static int hs_deriv(lua_State *L) {
     /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
     if (!isfinite(d))
         return pcl_error(L, "g:deriv: the slope at t = %s is infinite (a degree below 1)",
-                         tk_pushnum(L, t));
+                         pcl_pushnum(L, t));
     lua_pushnumber(L, d);
     return 1;
 }
@@ -165,9 +165,9 @@ static int hs_index(lua_State *L) {
 
 static int hs_tostring(lua_State *L) {
     pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
-    tk_pushnum(L, h->n);
-    tk_pushnum(L, h->m);
-    tk_pushnum(L, h->t0);
+    pcl_pushnum(L, h->n);
+    pcl_pushnum(L, h->m);
+    pcl_pushnum(L, h->t0);
     lua_pushfstring(L, "smooth.half(%s, %s, %s)", lua_tostring(L, -3), lua_tostring(L, -2),
                     lua_tostring(L, -1));
     return 1;

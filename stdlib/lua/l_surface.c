@@ -36,7 +36,7 @@ static lsurf *pushsurf(lua_State *L, pc_surface *s, int status, const char *kind
 
 static lsurf *checksurf(lua_State *L, int idx, const char *fname) {
     lsurf *u = luaL_testudata(L, idx, SURF_MT);
-    if (!u || !u->s) tk_argerror(L, fname, idx, "self", "a surface");
+    if (!u || !u->s) pcl_argerror_full(L, fname, idx, idx, "self", "a surface");
     pcl_callback_state(L);
     return u;
 }
@@ -113,7 +113,7 @@ static int row_len(lua_State *L, const char *fn, int arg, int i) {
 /* The net at arg: a list of nu rows of nv values, as homogeneous rows in a scratch userdata
  * left on the stack. */
 static double *read_net(lua_State *L, const char *fn, int arg, int *nu, int *nv, int *dim) {
-    if (!lua_istable(L, arg)) tk_argerror(L, fn, arg, "net", "a list of rows of points");
+    if (!lua_istable(L, arg)) pcl_argerror_full(L, fn, arg, arg, "net", "a list of rows of points");
     int m = (int)luaL_len(L, arg);
     if (m < 2) pcl_error(L, "%s: argument #%d (net) must have at least 2 rows, got %d", fn, arg, m);
     int n = row_len(L, fn, arg, 1);
@@ -192,7 +192,7 @@ static pc_knot_kind knots_arg(lua_State *L, const char *fn, int arg, int n, int 
         lua_replace(L, arg);
         return PC_KNOTS_GIVEN;
     }
-    return tk_argerror(L, fn, arg, "knots", "\"open\", \"uniform\", \"periodic\" or a list");
+    return pcl_argerror_full(L, fn, arg, arg, "knots", "\"open\", \"uniform\", \"periodic\" or a list");
 }
 
 static int l_bspline(lua_State *L) {
@@ -200,7 +200,7 @@ static int l_bspline(lua_State *L) {
     lua_settop(L, 5);
     int nu, nv, d;
     double *h = read_net(L, fn, 1, &nu, &nv, &d);
-    int p = (int)tk_checknum(L, fn, 2, "p"), q = (int)tk_checknum(L, fn, 3, "q");
+    int p = (int)pcl_checknum(L, fn, 2, "p"), q = (int)pcl_checknum(L, fn, 3, "q");
     if (p < 1 || p >= nu) pcl_error(L, "%s: argument #2 (p) must be 1..%d (below the %d rows)", fn, nu - 1, nu);
     if (q < 1 || q >= nv) pcl_error(L, "%s: argument #3 (q) must be 1..%d (below the %d columns)", fn, nv - 1, nv);
     double *uk, *vk;
@@ -213,7 +213,7 @@ static int l_bspline(lua_State *L) {
 
 static int l_hermite(lua_State *L) {
     const char *fn = "surface.hermite";
-    if (!lua_istable(L, 1)) tk_argerror(L, fn, 1, "spec", "a table {P =, Pu =, Pv =, Puv =}");
+    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "spec", "a table {P =, Pu =, Pv =, Puv =}");
     static const char *fields[4] = {"P", "Pu", "Pv", "Puv"};
     double rows[4][4 * PC_MAXDIM];
     int d = 0;
@@ -242,7 +242,7 @@ static int l_hermite(lua_State *L) {
 
 static pc_curve *curve_arg(lua_State *L, const char *fn, int arg, const char *what) {
     pc_curve *c = pcl_tocurve(L, arg);
-    if (!c) tk_argerror(L, fn, arg, what, "a curve");
+    if (!c) pcl_argerror_full(L, fn, arg, arg, what, "a curve");
     return c;
 }
 
@@ -280,7 +280,7 @@ static int l_revolution(lua_State *L) {
     double a[3], d[3];
     pcl_checkloc(L, 2, "A", 3, 0, a);
     pcl_checkvec(L, 3, "d", 3, 0, d);
-    double v0 = tk_optnum(L, fn, 4, "v0", 0), v1 = tk_optnum(L, fn, 5, "v1", 2 * M_PI);
+    double v0 = pcl_optnum(L, fn, 4, "v0", 0), v1 = pcl_optnum(L, fn, 5, "v1", 2 * M_PI);
     int st;
     pc_surface *s = pc_surface_revolution(c, a, d, v0, v1, &st);
     if (!s && st == PC_EZERO) return pcl_error(L, "%s: argument #3 (d) must be a nonzero vector (the axis)", fn);
@@ -292,10 +292,10 @@ static int l_revolution(lua_State *L) {
 static int l_func(lua_State *L) {
     const char *fn = "surface";
     lua_remove(L, 1);
-    if (!lua_isfunction(L, 1)) tk_argerror(L, fn, 1, "f", "a function (u, v) -> point");
+    if (!lua_isfunction(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function (u, v) -> point");
     double r[4];
     static const char *names[4] = {"u0", "u1", "v0", "v1"};
-    for (int i = 0; i < 4; i++) r[i] = tk_checknum(L, fn, i + 2, names[i]);
+    for (int i = 0; i < 4; i++) r[i] = pcl_checknum(L, fn, i + 2, names[i]);
     if (!(r[1] > r[0]) || !(r[3] > r[2])) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fn);
     lua_settop(L, 5);
     lua_pushvalue(L, 1);
@@ -321,8 +321,8 @@ static int l_func(lua_State *L) {
 /* ---- methods --------------------------------------------------------------------------------- */
 
 static void uv_args(lua_State *L, const char *fn, double *u, double *v) {
-    *u = tk_checknum_m(L, fn, 2, "u");
-    *v = tk_checknum_m(L, fn, 3, "v");
+    *u = pcl_checknum_m(L, fn, 2, "u");
+    *v = pcl_checknum_m(L, fn, 3, "v");
 }
 
 static int s_call(lua_State *L) {
@@ -330,9 +330,9 @@ static int s_call(lua_State *L) {
     double a, b, out[PC_MAXDIM];
     uv_args(L, "surface", &a, &b);
     int st = pc_surface_eval(u->s, a, b, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "surface: the point at (%s, %s) is at infinity", tk_pushnum(L, a), tk_pushnum(L, b));
+    if (st == PC_IMPROPER) return pcl_error(L, "surface: the point at (%s, %s) is at infinity", pcl_pushnum(L, a), pcl_pushnum(L, b));
     if (st != PC_OK) return pcl_raise_status(L, "surface", st);
-    tk_pushpoint(L, u->s->dim, out);
+    pcl_pushpoint(L, u->s->dim, out);
     return 1;
 }
 
@@ -343,9 +343,9 @@ static int s_partials(lua_State *L) {
     int st = pc_surface_partials(u->s, a, b, out);
     if (st != PC_OK) return pcl_raise_status(L, "s:partials", st);
     int d = u->s->dim;
-    tk_pushpoint(L, d, out);
-    tk_pushvector(L, d, out + d);
-    tk_pushvector(L, d, out + 2 * d);
+    pcl_pushpoint(L, d, out);
+    pcl_pushvector(L, d, out + d);
+    pcl_pushvector(L, d, out + 2 * d);
     return 3;
 }
 
@@ -355,9 +355,9 @@ static int s_normal(lua_State *L) {
     uv_args(L, "s:normal", &a, &b);
     if (u->s->dim != 3) return pcl_error(L, "s:normal: a normal needs a 3-D surface, this one is %d-D", u->s->dim);
     int st = pc_surface_normal(u->s, a, b, n);
-    if (st == PC_EZERO) return pcl_error(L, "s:normal: the surface is singular at (%s, %s): its partial derivatives are parallel", tk_pushnum(L, a), tk_pushnum(L, b));
+    if (st == PC_EZERO) return pcl_error(L, "s:normal: the surface is singular at (%s, %s): its partial derivatives are parallel", pcl_pushnum(L, a), pcl_pushnum(L, b));
     if (st != PC_OK) return pcl_raise_status(L, "s:normal", st);
-    tk_pushvector(L, 3, n);
+    pcl_pushvector(L, 3, n);
     return 1;
 }
 
@@ -365,14 +365,14 @@ static int iso_dir(lua_State *L, const char *fn, int idx) {
     const char *s = lua_tostring(L, idx);
     if (lua_type(L, idx) == LUA_TSTRING && !strcmp(s, "u")) return 0;
     if (lua_type(L, idx) == LUA_TSTRING && !strcmp(s, "v")) return 1;
-    return tk_argerror_at(L, fn, idx, idx - 1, "family", "\"u\" (u = const) or \"v\" (v = const)");
+    return pcl_argerror_full(L, fn, idx, idx - 1, "family", "\"u\" (u = const) or \"v\" (v = const)");
 }
 
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
 static int s_iso(lua_State *L) {
     lsurf *u = checksurf(L, 1, "s:iso");
     int dir = iso_dir(L, "s:iso", 2);
-    double val = tk_checknum_m(L, "s:iso", 3, "value");
+    double val = pcl_checknum_m(L, "s:iso", 3, "value");
     int st;
     pc_curve *c = pc_surface_iso(u->s, dir, val, &st);
     if (!c) return pcl_raise_status(L, "s:iso", st);
@@ -383,7 +383,7 @@ static int s_iso(lua_State *L) {
 static int s_map(lua_State *L) {
     lsurf *u = checksurf(L, 1, "s:map");
     pc_map *f = pcl_tomap(L, 2);
-    if (!f) return tk_argerror_at(L, "s:map", 2, 1, "f", "a map");
+    if (!f) return pcl_argerror_full(L, "s:map", 2, 1, "f", "a map");
     if (f->nin != u->s->dim)
         return pcl_error(L, "s:map: the map takes %d-D points, but the surface is %d-D", f->nin, u->s->dim);
     int st;
@@ -411,7 +411,7 @@ static int s_wireframe(lua_State *L) {
         lua_settop(L, 1);
         lua_newtable(L);
     }
-    if (!lua_istable(L, 2)) return tk_argerror_at(L, "s:wireframe", 2, 1, "opts", "a table");
+    if (!lua_istable(L, 2)) return pcl_argerror_full(L, "s:wireframe", 2, 1, "opts", "a table");
     int nu = opt_count(L, 2, "nu", 10), nv = opt_count(L, 2, "nv", 10);
     lua_getfield(L, 2, "color");
     pc_canvas *cv = pcl_canvas(L);
@@ -461,8 +461,8 @@ static int s_tostring(lua_State *L) {
     lsurf *u = checksurf(L, 1, "surface");
     pc_surface *s = u->s;
     lua_pushfstring(L, "%s(%d-D, u in [%s, %s], v in [%s, %s])", u->kind, s->dim,
-                    tk_pushnum(L, s->u0), tk_pushnum(L, s->u1), tk_pushnum(L, s->v0),
-                    tk_pushnum(L, s->v1));
+                    pcl_pushnum(L, s->u0), pcl_pushnum(L, s->u1), pcl_pushnum(L, s->v0),
+                    pcl_pushnum(L, s->v1));
     return 1;
 }
 

@@ -73,4 +73,29 @@ int pcl_arg_shown(lua_State *L, int arg);
 /* luaL_error, but located at the user's code: frames of the embedded Lua helpers are skipped. */
 int pcl_error(lua_State *L, const char *fmt, ...);
 
+/* Numbers with an explicit function name (toolkit functions live in sub-tables and objects,
+ * e.g. "smooth.half", "c:split"): a finite number at arg; pcl_checknum_m for a method or
+ * __call argument at stack index idx, shown as argument #idx - 1; pcl_optnum: dflt for nil. */
+double pcl_checknum(lua_State *L, const char *fname, int arg, const char *what);
+double pcl_checknum_m(lua_State *L, const char *fname, int idx, const char *what);
+double pcl_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt);
+/* Push x as text the way points print their coordinates: %.14g, no "-0". */
+const char *pcl_pushnum(lua_State *L, double x);
+/* Raise "FNAME: CONTEXT (MESSAGE)" or "FNAME: MESSAGE" for a core status. */
+int pcl_statuserror(lua_State *L, const char *fname, int status, const char *context);
+/* Push the private table _tk of the module table at index module (created on first use): how
+ * the embedded Lua helpers reach core functions that are not API. */
+void pcl_private(lua_State *L, int module);
+
+/* The core calls Lua functions (curve(f, ...), surface(f, ...), a Lua smoothstep) through
+ * callbacks that run them protected in the state set here; every binding entry that may
+ * evaluate such an object sets it first.  A callback keeps its error with
+ * pcl_callback_failed (the error object on the stack top; returns PC_EARG) and the core
+ * returns a failure status; pcl_raise_status then raises the kept error, or "FNAME: <the
+ * status message>". */
+void pcl_callback_state(lua_State *L);
+lua_State *pcl_current_state(void);
+int pcl_callback_failed(lua_State *L);
+int pcl_raise_status(lua_State *L, const char *fname, int status);
+
 #endif

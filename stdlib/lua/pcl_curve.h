@@ -14,16 +14,6 @@ pc_surface *pcl_tosurface(lua_State *L, int idx);
 /* Push a curve object owning the reference c (kind: the constructor's name, static). */
 void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
 
-/* The core calls Lua functions (curve(f, ...), surface(f, ...), a Lua smoothstep) through
- * callbacks that run them protected in the state set here; every binding entry that may
- * evaluate such an object sets it first.  A callback's error is kept and the core returns a
- * failure status: pcl_raise_status raises the kept error, or "FNAME: <the status message>". */
-void pcl_callback_state(lua_State *L);
-lua_State *pcl_current_state(void);
-int pcl_raise_status(lua_State *L, const char *fname, int status);
-/* For callbacks: keep the error object on the top of the stack; returns PC_EARG. */
-int pcl_callback_failed(lua_State *L);
-
 /* The current projection set by camera(), or NULL. */
 pc_map *pcl_camera(lua_State *L);
 /* The image under the camera of the homogeneous n-D value h: PC_OK, PC_EDIM (no camera for

@@ -30,6 +30,9 @@ int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, 
 int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
 /* "NAME: argument #ARG (WHAT) is 3-D, but argument #DIM_ARG is 2-D (mixed dimensions)" */
 int pcl_dimerror(lua_State *L, int arg, const char *what, int got, int dim, int dim_arg);
+/* Push a point (weight 1) or a vector (weight 0) of dimension n. */
+void pcl_pushpoint(lua_State *L, int n, const double *x);
+void pcl_pushvector(lua_State *L, int n, const double *x);
 /* A finite number at arg. */
 double pcl_checkfinite(lua_State *L, int arg, const char *what);
 

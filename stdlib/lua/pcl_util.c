@@ -97,3 +97,71 @@ int pcl_optxy(lua_State *L, int *arg, double *x, double *y, const char *what) {
     pcl_checkxy(L, arg, x, y, what);
     return 1;
 }
+
+/* ---- numbers with an explicit function name ---------------------------------------------- */
+
+double pcl_checknum(lua_State *L, const char *fname, int arg, const char *what) {
+    if (lua_type(L, arg) != LUA_TNUMBER) pcl_argerror_full(L, fname, arg, arg, what, "a number");
+    double v = lua_tonumber(L, arg);
+    if (!isfinite(v)) pcl_argerror_full(L, fname, arg, arg, what, "a finite number");
+    return v;
+}
+
+double pcl_checknum_m(lua_State *L, const char *fname, int idx, const char *what) {
+    if (lua_type(L, idx) != LUA_TNUMBER) pcl_argerror_full(L, fname, idx, idx - 1, what, "a number");
+    double v = lua_tonumber(L, idx);
+    if (!isfinite(v)) pcl_argerror_full(L, fname, idx, idx - 1, what, "a finite number");
+    return v;
+}
+
+double pcl_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt) {
+    if (lua_isnoneornil(L, arg)) return dflt;
+    return pcl_checknum(L, fname, arg, what);
+}
+
+const char *pcl_pushnum(lua_State *L, double x) {
+    char buf[40];
+    if (x == 0) x = 0;   /* no "-0" */
+    snprintf(buf, sizeof buf, "%.14g", x);
+    return lua_pushstring(L, buf);
+}
+
+int pcl_statuserror(lua_State *L, const char *fname, int status, const char *context) {
+    if (context && context[0])
+        return pcl_error(L, "%s: %s (%s)", fname, context, pc_strerror(status));
+    return pcl_error(L, "%s: %s", fname, pc_strerror(status));
+}
+
+void pcl_private(lua_State *L, int module) {
+    module = lua_absindex(L, module);
+    if (lua_getfield(L, module, "_tk") != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, module, "_tk");
+    }
+}
+
+/* ---- Lua called from the core ------------------------------------------------------------- */
+
+#define CBERR_KEY "pointcalc.callback_error"
+static _Thread_local lua_State *current_L;
+
+void pcl_callback_state(lua_State *L) { current_L = L; }
+
+lua_State *pcl_current_state(void) { return current_L; }
+
+int pcl_callback_failed(lua_State *L) {
+    lua_setfield(L, LUA_REGISTRYINDEX, CBERR_KEY);   /* the error object */
+    return PC_EARG;
+}
+
+int pcl_raise_status(lua_State *L, const char *fname, int status) {
+    if (lua_getfield(L, LUA_REGISTRYINDEX, CBERR_KEY) != LUA_TNIL) {
+        lua_pushnil(L);
+        lua_setfield(L, LUA_REGISTRYINDEX, CBERR_KEY);
+        return lua_error(L);
+    }
+    lua_pop(L, 1);
+    return pcl_statuserror(L, fname, status, NULL);
+}
