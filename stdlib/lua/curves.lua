@@ -7,49 +7,12 @@ local tk = M._tk
 local floor, cos, sin, pi = math.floor, math.cos, math.sin, math.pi
 local type, select, tostring = type, select, tostring
 
--- ---- errors in the house style ------------------------------------------------------------
-
--- Raise msg located at the user's code: the innermost Lua function that is not one of these
--- embedded helpers (so an error found deep inside c:draw points at the script's c:draw line).
-local getinfo, raw_error = debug.getinfo, error
-function tk.raise(msg)
-  local level = 2
-  while true do
-    local info = getinfo(level, "S")
-    if not info then return raw_error(msg, 0) end
-    if info.what ~= "C" and info.source:sub(1, 12) ~= "=[pointcalc/" then
-      return raw_error(msg, level)
-    end
-    level = level + 1
-  end
-end
-local error = tk.raise
-
-local function shown(v)
-  if type(v) == "number" then
-    if math.type(v) == "integer" then return tostring(v) end
-    return string.format("%.14g", v)
-  end
-  if getmetatable(v) == "point" then return tostring(v) end   -- V(1, 1), not just "point"
-  local mt = getmetatable(v)
-  if type(mt) == "string" then return mt end
-  if type(mt) == "table" and type(mt.__name) == "string" then return mt.__name end
-  return type(v)
-end
-tk.shown = shown
-
--- "FNAME: argument #N (WHAT) must be EXPECTED, got VALUE", raised at the caller's caller
--- (level 3: the script line that called the toolkit function)
-function tk.argerror(fname, n, what, expected, value, level)
-  error(string.format("%s: argument #%d (%s) must be %s, got %s", fname, n, what, expected,
-    shown(value)), level or 3)
-end
-
--- "FNAME: FIELD must be EXPECTED, got VALUE" for fields of an options table
-function tk.fielderror(fname, field, expected, value, level)
-  error(string.format("%s: %s must be %s, got %s", fname, field, expected, shown(value)),
-    level or 3)
-end
+-- ---- errors in the house style -------------------------------------------------------------
+-- The one layer is in C (stdlib/lua/pcl_util.c): tk.raise(msg) locates msg at the user's code
+-- (the innermost function that is not an embedded helper), tk.argerror(fname, n, what,
+-- expected, value) and tk.fielderror(fname, field, expected, value) word it, tk.shown(v) shows
+-- a value as the messages do.
+local error, shown = tk.raise, tk.shown
 
 local function ispoint(v) return getmetatable(v) == "point" end
 tk.ispoint = ispoint

@@ -24,6 +24,7 @@ static inline void *pcl_testudata(lua_State *L, int idx, int mt) {
 }
 
 /* module openers, called by luaopen_pointcalc in this order */
+void pcl_open_errors(lua_State *L);  /* _tk.raise, _tk.argerror, ...: the errors of the Lua helpers */
 void pcl_open_point(lua_State *L);
 void pcl_open_simplex(lua_State *L);   /* simplex() (l_simplex.c) */
 void pcl_open_map(lua_State *L);       /* affine, affine.frame, map.* (l_map.c) */

@@ -28,7 +28,11 @@ static const char *got(lua_State *L, int idx) {
         return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
     }
     if (lua_isnone(L, idx)) return "nil";
-    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) return lua_tostring(L, -1);
+    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) {
+        if (strcmp(lua_tostring(L, -1), "point") == 0)   /* V(1, 1), not just "point" */
+            return luaL_tolstring(L, idx, NULL);
+        return lua_tostring(L, -1);
+    }
     return luaL_typename(L, idx);
 }
 
@@ -164,4 +168,44 @@ int pcl_raise_status(lua_State *L, const char *fname, int status) {
     }
     lua_pop(L, 1);
     return pcl_statuserror(L, fname, status, NULL);
+}
+
+/* ---- the same errors for the embedded Lua helpers (_tk) ------------------------------------- */
+
+/* _tk.raise(msg): msg located at the user's code */
+static int tk_raise(lua_State *L) { return pcl_error(L, "%s", luaL_checkstring(L, 1)); }
+
+/* _tk.shown(value): a value as the messages show it */
+static int tk_shown(lua_State *L) {
+    lua_settop(L, 1);
+    lua_pushstring(L, got(L, 1));
+    return 1;
+}
+
+/* _tk.argerror(fname, n, what, expected, value): "FNAME: argument #N (WHAT) must be EXPECTED,
+ * got VALUE" at the user's line */
+static int tk_argerror(lua_State *L) {
+    lua_settop(L, 5);
+    const char *value = got(L, 5);
+    return pcl_error(L, "%s: argument #%d (%s) must be %s, got %s", luaL_checkstring(L, 1),
+                     (int)luaL_checkinteger(L, 2), luaL_checkstring(L, 3), luaL_checkstring(L, 4),
+                     value);
+}
+
+/* _tk.fielderror(fname, field, expected, value): "FNAME: FIELD must be EXPECTED, got VALUE" */
+static int tk_fielderror(lua_State *L) {
+    lua_settop(L, 4);
+    const char *value = got(L, 4);
+    return pcl_error(L, "%s: %s must be %s, got %s", luaL_checkstring(L, 1),
+                     luaL_checkstring(L, 2), luaL_checkstring(L, 3), value);
+}
+
+void pcl_open_errors(lua_State *L) {
+    int module = lua_gettop(L);
+    pcl_private(L, module);
+    static const luaL_Reg fns[] = {{"raise", tk_raise}, {"shown", tk_shown},
+                                   {"argerror", tk_argerror}, {"fielderror", tk_fielderror},
+                                   {NULL, NULL}};
+    luaL_setfuncs(L, fns, 0);
+    lua_settop(L, module);
 }

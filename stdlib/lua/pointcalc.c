@@ -17,6 +17,7 @@ static void run_lua_helpers(lua_State *L) {
 
 int luaopen_pointcalc(lua_State *L) {
     lua_newtable(L);
+    pcl_open_errors(L);
     pcl_open_point(L);
     pcl_open_simplex(L);
     pcl_open_map(L);
