@@ -306,8 +306,8 @@ def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
   "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
 def("s:map", "s:map(f) -> s",
   "The image of the surface under a map.", "method")
-def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m}",
-  "Draw the iso-lines as paths through map or the camera.", "method")
+def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48}",
+  "Draw the iso-lines as paths through map or the camera; hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it.", "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curvilinear", "Curvilinear coordinates",

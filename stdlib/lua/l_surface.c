@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_curve.h"
+#include "hidden.h"
 
 #define SURF_MT "surface"
 
@@ -392,51 +393,159 @@ static int s_map(lua_State *L) {
     return 1;
 }
 
-static int opt_count(lua_State *L, int opts, const char *field, int dflt) {
+
+/* The map to screen pixels: f (to the plane) then WINDOW and VIEW, an affine map of the plane. */
+static void screen_map(pc_canvas *cv, const pc_map *f, pc_map *out) {
+    double o[2], ex[2], ey[2];
+    pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);
+    pc_world_to_screen(cv, 1, 0, &ex[0], &ex[1]);
+    pc_world_to_screen(cv, 0, 1, &ey[0], &ey[1]);
+    pc_map w;
+    pc_map_identity(&w, 2);
+    for (int r = 0; r < 2; r++) {
+        PC_MAP_AT(&w, r, 0) = ex[r] - o[r];
+        PC_MAP_AT(&w, r, 1) = ey[r] - o[r];
+        PC_MAP_AT(&w, r, 2) = o[r];
+    }
+    pc_map_compose(&w, f, out);
+}
+
+typedef struct {
+    const pc_occluder *occ;
+    pc_map scr;
+    pc_polyline seen, hidden;
+} hidden_ctx;
+
+/* the screen point of the iso-curve at t and whether it is seen; 0 if it has no image */
+static int sample(hidden_ctx *h, const pc_curve *c, double t, double xy[2], int *vis) {
+    double x[PC_MAXDIM], hx[4], s[3];
+    if (pc_curve_eval(c, t, x) != PC_OK) return 0;
+    hx[0] = x[0], hx[1] = x[1], hx[2] = x[2], hx[3] = 1;
+    pc_map_apply(&h->scr, hx, s);
+    if (s[2] == 0) return 0;
+    xy[0] = s[0] / s[2];
+    xy[1] = s[1] / s[2];
+    if (!isfinite(xy[0]) || !isfinite(xy[1])) return 0;
+    *vis = pc_occluder_visible(h->occ, x);
+    return 1;
+}
+
+/* Split the iso-curve c into its seen and hidden runs (samples at least as dense as the
+ * flattened path, each change of visibility located by bisection). */
+static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
+    double prev_t = c->t0;
+    int prev_ok = 0, prev_vis = 1, st = PC_OK;
+    for (int k = 0; k <= n && st == PC_OK; k++) {
+        double t = c->t0 + (c->t1 - c->t0) * k / n, xy[2];
+        int vis, ok = sample(h, c, t, xy, &vis);
+        if (ok && prev_ok && vis != prev_vis) {
+            double lo = prev_t, hi = t, mxy[2] = {xy[0], xy[1]};
+            for (int i = 0; i < 30; i++) {   /* where the visibility changes */
+                double mid = (lo + hi) / 2, m[2];
+                int mv;
+                if (!sample(h, c, mid, m, &mv)) break;
+                if (mv == prev_vis) lo = mid; else { hi = mid; mxy[0] = m[0]; mxy[1] = m[1]; }
+            }
+            pc_polyline *from = prev_vis ? &h->seen : &h->hidden, *to = vis ? &h->seen : &h->hidden;
+            st = pc_polyline_push(from, mxy[0], mxy[1], 0);
+            if (st == PC_OK) st = pc_polyline_push(to, mxy[0], mxy[1], 1);
+        }
+        if (ok && st == PC_OK)   /* a run starts after a gap; a change started one above */
+            st = pc_polyline_push(vis ? &h->seen : &h->hidden, xy[0], xy[1], !prev_ok);
+        prev_t = t;
+        prev_ok = ok;
+        if (ok) prev_vis = vis;
+    }
+    return st;
+}
+
+static int opt_count(lua_State *L, int opts, const char *field, int dflt, int max) {
     lua_getfield(L, opts, field);
     int isint = 1;
     lua_Integer n = lua_isnil(L, -1) ? dflt : lua_tointegerx(L, -1, &isint);
-    if (!isint || n < 1 || n > 1000)
-        pcl_error(L, "s:wireframe: %s must be an integer 1..1000 (the number of intervals)", field);
+    if (!isint || n < 1 || n > max)
+        pcl_error(L, "s:wireframe: %s must be an integer 1..%d, got %s", field, max,
+                  pcl_shown(L, -1));
     lua_pop(L, 1);
     return (int)n;
 }
 
-/* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f}: the iso-lines u = u0 + i (u1 -
- * u0)/nu and v = v0 + j (v1 - v0)/nv, each flattened and drawn as a path through the map or
- * the camera. */
+/* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f, hidden = "hide"|"dashed",
+ * mesh = 48}: the iso-lines u = u0 + i (u1 - u0)/nu and v = v0 + j (v1 - v0)/nv, each
+ * flattened and drawn as a path through the map or the camera.  With hidden, the parts the
+ * surface itself hides (depth test against a mesh of mesh x mesh quads, hidden.h) are left
+ * out or drawn dashed. */
 static int s_wireframe(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "s:wireframe");
+    const char *fn = "s:wireframe";
+    lsurf *u = checksurf(L, 1, fn);
     if (lua_isnoneornil(L, 2)) {
         lua_settop(L, 1);
         lua_newtable(L);
     }
-    if (!lua_istable(L, 2)) return pcl_argerror_full(L, "s:wireframe", 2, 1, "opts", "a table");
-    int nu = opt_count(L, 2, "nu", 10), nv = opt_count(L, 2, "nv", 10);
+    if (!lua_istable(L, 2)) return pcl_argerror_full(L, fn, 2, 1, "opts", "a table");
+    int nu = opt_count(L, 2, "nu", 10, 1000), nv = opt_count(L, 2, "nv", 10, 1000);
+    int mesh = opt_count(L, 2, "mesh", 48, 1024);
     lua_getfield(L, 2, "color");
     pc_canvas *cv = pcl_canvas(L);
     int color = pcl_optcolor(L, -1, cv);
     lua_getfield(L, 2, "tol");
     double tol = luaL_optnumber(L, -1, 0.25);
+    if (!(tol > 0)) return pcl_error(L, "%s: tol must be a positive number of pixels", fn);
+    int mode = 0;   /* 0 every line, 1 hide, 2 dashed */
+    if (lua_getfield(L, 2, "hidden") != LUA_TNIL) {
+        const char *m = lua_tostring(L, -1);
+        if (lua_type(L, -1) == LUA_TSTRING && !strcmp(m, "hide")) mode = 1;
+        else if (lua_type(L, -1) == LUA_TSTRING && !strcmp(m, "dashed")) mode = 2;
+        else if (!(lua_type(L, -1) == LUA_TSTRING && !strcmp(m, "show")))
+            return pcl_error(L, "%s: hidden must be \"hide\", \"dashed\" or \"show\", got %s", fn,
+                             pcl_shown(L, -1));
+    }
     lua_getfield(L, 2, "map");
-    const pc_map *f = pcl_drawing_map(L, lua_gettop(L), u->s->dim, "s:wireframe");
     pc_surface *s = u->s;
-    for (int dir = 0; dir < 2; dir++) {
+    const pc_map *f = pcl_drawing_map(L, lua_gettop(L), s->dim, fn);
+    if (mode && (s->dim != 3 || !f))
+        return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
+    hidden_ctx h = {0};
+    pc_occluder *occ = NULL;
+    if (mode) {
+        int st;
+        screen_map(cv, f, &h.scr);
+        occ = pc_occluder_new(s, &h.scr, mesh, mesh, &st);
+        if (!occ) return pcl_raise_status(L, fn, st);
+        h.occ = occ;
+    }
+    pc_stroke pen = cv->pens[cv->pen];   /* to restore after the dashed hidden parts */
+    int st = PC_OK, drawn = PC_OK;
+    for (int dir = 0; dir < 2 && st == PC_OK && drawn == PC_OK; dir++) {
         int n = dir == 0 ? nu : nv;
         double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        for (int i = 0; i <= n; i++) {
-            int st;
+        for (int i = 0; i <= n && st == PC_OK && drawn == PC_OK; i++) {
             pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
-            if (!c) return pcl_raise_status(L, "s:wireframe", st);
+            if (!c) break;
             pc_polyline pl = {0};
             st = pcl_flatten(L, c, c->t0, c->t1, 1, f, 1, tol, &pl);
-            if (st == PC_OK) st = pcl_draw_polyline(L, &pl, color, 0) == PC_OK ? PC_OK : -1;
+            if (st == PC_OK && !mode) drawn = pcl_draw_polyline(L, &pl, color, 0);
+            if (st == PC_OK && mode) {
+                int samples = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
+                st = split_visibility(&h, c, samples);
+                if (st == PC_OK) drawn = pcl_draw_polyline(L, &h.seen, color, 0);
+                if (st == PC_OK && drawn == PC_OK && mode == 2 && h.hidden.n) {
+                    double dash[2] = {3, 3};
+                    pc_pen(cv, pen.width, dash, 2);
+                    drawn = pcl_draw_polyline(L, &h.hidden, color, 0);
+                    pc_pen(cv, pen.width, pen.dash, pen.ndash);
+                }
+                h.seen.n = h.hidden.n = 0;
+            }
             pc_polyline_free(&pl);
             pc_curve_release(c);
-            if (st == -1) return pcl_error(L, "s:wireframe: %s", cv->error);
-            if (st != PC_OK) return pcl_raise_status(L, "s:wireframe", st);
         }
     }
+    pc_polyline_free(&h.seen);
+    pc_polyline_free(&h.hidden);
+    pc_occluder_free(occ);
+    if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
+    if (st != PC_OK) return pcl_raise_status(L, fn, st);
     return 0;
 }
 

@@ -68,6 +68,9 @@ int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected);
 /* The same with an explicit function name and shown argument number (methods, sub-tables). */
 int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
                       const char *expected);
+/* The value at idx as the messages show it ("got VALUE"): numbers by value, P(...) for a point,
+ * userdata by type name, else the type (it may push a string). */
+const char *pcl_shown(lua_State *L, int idx);
 /* The name of the running C function, and the number an argument index is shown as. */
 const char *pcl_fname(lua_State *L);
 int pcl_arg_shown(lua_State *L, int arg);

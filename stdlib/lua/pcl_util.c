@@ -22,7 +22,7 @@ int pcl_arg_shown(lua_State *L, int arg) {
 
 /* What the caller actually passed: numbers by value, userdata by type name, else the type;
  * a missing argument reads "nil", as DESIGN.md's example has it. */
-static const char *got(lua_State *L, int idx) {
+const char *pcl_shown(lua_State *L, int idx) {
     if (lua_type(L, idx) == LUA_TNUMBER) {
         if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
         return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
@@ -38,7 +38,7 @@ static const char *got(lua_State *L, int idx) {
 
 int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
                       const char *expected) {
-    const char *value = got(L, idx);
+    const char *value = pcl_shown(L, idx);
     const char *arg = shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
     if (what && what[0])
         return pcl_error(L, "%s: %s (%s) must be %s, got %s", fname, arg, what, expected, value);
@@ -178,7 +178,7 @@ static int tk_raise(lua_State *L) { return pcl_error(L, "%s", luaL_checkstring(L
 /* _tk.shown(value): a value as the messages show it */
 static int tk_shown(lua_State *L) {
     lua_settop(L, 1);
-    lua_pushstring(L, got(L, 1));
+    lua_pushstring(L, pcl_shown(L, 1));
     return 1;
 }
 
@@ -186,7 +186,7 @@ static int tk_shown(lua_State *L) {
  * got VALUE" at the user's line */
 static int tk_argerror(lua_State *L) {
     lua_settop(L, 5);
-    const char *value = got(L, 5);
+    const char *value = pcl_shown(L, 5);
     return pcl_error(L, "%s: argument #%d (%s) must be %s, got %s", luaL_checkstring(L, 1),
                      (int)luaL_checkinteger(L, 2), luaL_checkstring(L, 3), luaL_checkstring(L, 4),
                      value);
@@ -195,7 +195,7 @@ static int tk_argerror(lua_State *L) {
 /* _tk.fielderror(fname, field, expected, value): "FNAME: FIELD must be EXPECTED, got VALUE" */
 static int tk_fielderror(lua_State *L) {
     lua_settop(L, 4);
-    const char *value = got(L, 4);
+    const char *value = pcl_shown(L, 4);
     return pcl_error(L, "%s: %s must be %s, got %s", luaL_checkstring(L, 1),
                      luaL_checkstring(L, 2), luaL_checkstring(L, 3), value);
 }

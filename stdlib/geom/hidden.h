@@ -1,0 +1,30 @@
+/* Hidden lines: is a point of space seen, or does a surface hide it, in a picture made by a
+ * projection?  The surface is sampled on a grid of nu x nv quads (two triangles each), projected
+ * with the map; a point is hidden when a triangle covering its image lies nearer the viewer by
+ * more than a tolerance (a quarter of the mean edge of the grid, so the triangles around a
+ * point of the surface itself never hide it).
+ *
+ * "Nearer" comes from the map alone.  A 3-D -> 2-D map is a 3 x 4 matrix; its null vector is
+ * the centre of projection.  A finite centre (a perspective) is the eye: nearer is closer to it.
+ * A centre at infinity (a parallel projection) is the viewing direction, oriented by the
+ * picture: the map's picture coordinates are taken as the screen's (x to the right, y down, as
+ * pixels are), so the viewer is on the side -(r1 x r2) of the rows r1, r2 of its linear part. */
+#ifndef PC_HIDDEN_H
+#define PC_HIDDEN_H
+#include "surface.h"
+
+typedef struct pc_occluder pc_occluder;
+
+/* An occluder for the 3-D surface s seen through `screen` (a map from 3-D to 2-D screen
+ * pixels, y down).  NULL with *status: PC_EDIM unless s is 3-D and the map 3 -> 2,
+ * PC_EDOMAIN for a grid outside 1..1024, PC_ENOMEM, PC_ESINGULAR for a map of rank < 3. */
+pc_occluder *pc_occluder_new(const pc_surface *s, const pc_map *screen, int nu, int nv,
+                             int *status);
+void pc_occluder_free(pc_occluder *o);
+/* 1 if the 3-D point x is seen, 0 if the surface hides it (a point that does not project to a
+ * finite image counts as seen). */
+int pc_occluder_visible(const pc_occluder *o, const double *x);
+/* The depth used: larger is nearer the viewer. */
+double pc_occluder_depth(const pc_occluder *o, const double *x);
+
+#endif
