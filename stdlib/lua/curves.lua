@@ -127,7 +127,7 @@ function tk.postmap(map, fname)
   if map == nil then return nil end
   if tk.numeric_maps[map] then return map end
   local mt = getmetatable(map)
-  local okxy = (type(map) == "table" or (type(mt) == "table" and mt.__name == "projection"))
+  local okxy = (type(map) == "table" or (type(mt) == "table" and mt.__name == "map"))
     and map.xy
   if okxy then return function(...) return map:xy(...) end end
   if callable(map) then
@@ -162,9 +162,13 @@ end
 
 -- ---- paths ------------------------------------------------------------------------------------
 
--- Dots are drawn when asked for: a brush, dots = true, or qb = true (the listings' own
--- sampling, pixel for pixel); otherwise a curve is flattened and drawn as one path.
-local function wants_dots(opts) return opts.brush ~= nil or opts.dots or opts.qb end
+-- Dots are drawn when asked for: a brush, dots = true, or qb = true in the options or the range
+-- (the listings' own sampling, pixel for pixel); otherwise a curve is flattened and drawn as
+-- one path.
+local function wants_dots(opts)
+  local t = opts.t
+  return opts.brush ~= nil or opts.dots or opts.qb or (type(t) == "table" and t.qb) or false
+end
 tk.wants_dots = wants_dots
 
 -- The map opts.map as a map object (drawn by the core), or nil with a numeric post-map
