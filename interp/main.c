@@ -176,7 +176,7 @@ static int write_outputs(lua_State *L, const options *o, int repl_ran) {
             ok = 0;
         }
     }
-    if (o->noutputs == 0 && c->dirty && !repl_ran) {
+    if (o->noutputs == 0 && pc_canvas_dirty(c) && !repl_ran) {
         char path[512];
         default_output(o, path, sizeof path);
         if (pc_write_file(c, path, theme, err, sizeof err) != PC_OK) {

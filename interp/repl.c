@@ -176,9 +176,10 @@ static pc_term_colors terminal_colors(void) {
 static void watch_update(lua_State *L, int force) {
     if (!S.watch) return;
     pc_canvas *c = pcl_canvas(L);
-    if (!c || (!force && c->version == S.watched)) return;
+    if (!c || (!force && pc_canvas_version(c) == S.watched)) return;
     char err[512];
-    S.watched = c->version;   /* a failure is reported once per change, not on every line */
+    /* a failure is reported once per change, not on every line */
+    S.watched = pc_canvas_version(c);
     if (pc_write_file(c, S.watch, pcl_theme(L), err, sizeof err) != PC_OK) {
         fflush(stdout);
         fprintf(stderr, "watch: %s\n", err);
@@ -213,16 +214,17 @@ static int n_show(lua_State *L) {
     }
     if (max_cols < 4) max_cols = 4;
     if (max_rows < 2) max_rows = 2;
-    int cols, rows;
-    double scale = pc_braille_fit(c->width, c->height, max_cols, max_rows, &cols, &rows);
+    int cols, rows, width, height;
+    pc_canvas_size(c, &width, &height);
+    double scale = pc_braille_fit(width, height, max_cols, max_rows, &cols, &rows);
     pc_braille_cell *cells = malloc((size_t)cols * rows * sizeof *cells);
     if (!cells) return luaL_error(L, "out of memory");
-    pc_braille_render(c, c->paper, scale, cols, rows, cells);
-    pc_braille_print(stdout, cells, cols, rows, c->palette, terminal_colors(), 1);
+    pc_braille_render(c, pc_canvas_paper(c), scale, cols, rows, cells);
+    pc_braille_print(stdout, cells, cols, rows, pc_canvas_palette(c), terminal_colors(), 1);
     int ink = 0;
     for (int i = 0; i < cols * rows; i++) ink |= cells[i].bits;
     free(cells);
-    printf(" %dx%d, %.3g pixel%s per dot%s\n", c->width, c->height, scale, scale == 1 ? "" : "s",
+    printf(" %dx%d, %.3g pixel%s per dot%s\n", width, height, scale, scale == 1 ? "" : "s",
            ink ? "" : " (nothing drawn)");
     fflush(stdout);
     return 0;
@@ -242,7 +244,7 @@ static int n_save(lua_State *L) {
     else if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
         snprintf(err, sizeof err, "cannot write '%s': the extension must be .png, .svg or .ppm", path);
     else if (pc_write_file(pcl_canvas(L), path, theme, err, sizeof err) == PC_OK) {
-        pcl_canvas(L)->dirty = 0;
+        pc_canvas_mark_saved(pcl_canvas(L));
         lua_pushboolean(L, 1);
         return 1;
     }
@@ -275,17 +277,7 @@ static int n_load(lua_State *L) {
  * view); the display list starts afresh. */
 static int n_clear(lua_State *L) {
     pc_canvas *c = pcl_canvas(L);
-    pc_rect v = c->view;
-    int vs = c->view_screen;
-    int full = v.x0 == 0 && v.y0 == 0 && v.x1 == c->width - 1 && v.y1 == c->height - 1;
-    int rc = full ? PC_OK : pc_view_reset(c);
-    double lx = c->last_x, ly = c->last_y;
-    if (rc == PC_OK) rc = pc_cls(c);
-    if (rc == PC_OK && !full) rc = pc_view(c, v.x0, v.y0, v.x1, v.y1, -1, -1, vs);
-    c->last_x = lx;
-    c->last_y = ly;
-    c->dirty = 0;
-    if (rc != PC_OK) return luaL_error(L, "%s", c->error);
+    if (pc_canvas_clear(c) != PC_OK) return luaL_error(L, "%s", pc_canvas_error(c));
     return 0;
 }
 

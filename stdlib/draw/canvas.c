@@ -447,3 +447,45 @@ int pc_pen(pc_canvas *c, double width, const double *dash, int ndash) {
 }
 
 void pc_pen_reset(pc_canvas *c) { c->pen = 0; }
+
+/* ---- the canvas seen from a host ------------------------------------------------------------ */
+
+void pc_canvas_size(const pc_canvas *c, int *width, int *height) {
+    if (width) *width = c->width;
+    if (height) *height = c->height;
+}
+
+int pc_canvas_ncolors(const pc_canvas *c) { return c->ncolors; }
+
+uint64_t pc_canvas_version(const pc_canvas *c) { return c->version; }
+
+int pc_canvas_dirty(const pc_canvas *c) { return c->dirty; }
+
+void pc_canvas_mark_saved(pc_canvas *c) { c->dirty = 0; }
+
+int pc_canvas_paper(const pc_canvas *c) { return c->paper; }
+
+int pc_canvas_rgb(const pc_canvas *c, int attr, pc_rgb *out) {
+    if (!pc_valid_color(c, attr)) return PC_EARG;
+    *out = c->palette[attr];
+    return PC_OK;
+}
+
+const pc_rgb *pc_canvas_palette(const pc_canvas *c) { return c->palette; }
+
+const char *pc_canvas_error(const pc_canvas *c) { return c->error; }
+
+int pc_canvas_clear(pc_canvas *c) {
+    pc_rect v = c->view;
+    int vs = c->view_screen;
+    int full = v.x0 == 0 && v.y0 == 0 && v.x1 == c->width - 1 && v.y1 == c->height - 1;
+    double lx = c->last_x, ly = c->last_y;
+    /* CLS of the full screen starts the display list afresh; then the view comes back */
+    int rc = full ? PC_OK : pc_view_reset(c);
+    if (rc == PC_OK) rc = pc_cls(c);
+    if (rc == PC_OK && !full) rc = pc_view(c, v.x0, v.y0, v.x1, v.y1, -1, -1, vs);
+    c->last_x = lx;
+    c->last_y = ly;
+    c->dirty = 0;
+    return rc;
+}

@@ -220,6 +220,38 @@ int pc_view_reset(pc_canvas *c);
 /* The display list holds at most 65535 clip rectangles (VIEW changes, deduplicated against
  * the previous one); beyond, VIEW fails with PC_ENOMEM and the view stays as it was. */
 
+/* ---- the canvas seen from a host (the command line, the REPL, a watcher) -----------------
+ * A host reads and changes the canvas only through these functions and the drawing
+ * statements above, never through its fields. */
+
+/* The screen: width and height in pixels (either pointer may be NULL), palette colours. */
+void pc_canvas_size(const pc_canvas *c, int *width, int *height);
+int pc_canvas_ncolors(const pc_canvas *c);
+/* The change counter: bumped by every change of the picture (drawing, CLS, PALETTE, SCREEN),
+ * never by saving, and never going back, so "changed since I last looked" is a comparison. */
+uint64_t pc_canvas_version(const pc_canvas *c);
+/* Has something been drawn since the canvas was last saved (or cleared, or SCREEN)? */
+int pc_canvas_dirty(const pc_canvas *c);
+/* The picture was written out: pc_canvas_dirty is 0 until the next drawing.  The version
+ * does not change. */
+void pc_canvas_mark_saved(pc_canvas *c);
+/* The attribute the whole screen was last cleared to (SCREEN, a full-screen CLS): the colour
+ * a preview counts as empty paper. */
+int pc_canvas_paper(const pc_canvas *c);
+/* The colour of attribute attr, a palette attribute (0..ncolors-1) or a true colour (256..);
+ * PC_EARG (c->error untouched, *out unchanged) for an attribute not in use. */
+int pc_canvas_rgb(const pc_canvas *c, int attr, pc_rgb *out);
+/* The colour table indexed by attribute (palette attributes, then the true colours), for
+ * writers that take one.  Valid until the next call that may add a colour. */
+const pc_rgb *pc_canvas_palette(const pc_canvas *c);
+/* The message of the last call that failed ("" when none has). */
+const char *pc_canvas_error(const pc_canvas *c);
+/* Erase the picture, keeping the screen's settings: size, colours, palette, true colours,
+ * pen, window, and the view with its VIEW SCREEN mode.  The whole screen (not just the view)
+ * is cleared to the background colour, the display list starts afresh and the graphics
+ * cursor stays where it was; the canvas counts as saved.  The REPL's `clear`. */
+int pc_canvas_clear(pc_canvas *c);
+
 /* Raw pixel access in screen pixels, clipped to the view: used by the rasteriser. */
 void pc_plot(pc_canvas *c, int x, int y, int color);
 

@@ -508,7 +508,7 @@ static int l_save(lua_State *L) {
     char err[512];
     if (pc_write_file(c, path, theme, err, sizeof err) != PC_OK)
         return pcl_error(L, "save: %s", err);
-    c->dirty = 0;
+    pc_canvas_mark_saved(c);
     return 0;
 }
 
