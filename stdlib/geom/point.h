@@ -85,6 +85,24 @@ int pc_cross_ratio(int n, const double *a, const double *b, const double *c, con
  * lambda, mu, residual may be NULL. */
 int pc_meet(int n, const double *a1, const double *a2, const double *b1, const double *b2,
             double *out, double *lambda, double *mu, double *residual);
+/* The same meet with homogeneous ends (n+1 doubles each), so that a point at infinity (weight
+ * 0, a direction) may stand for either end of either line (§1.3.5 with improper points).
+ * A value of weight neither 0 nor 1 is normalised first (divided by its weight).
+ * - A finite point P and an improper point D (either order): the line through P with
+ *   direction D; its parameter is K = P + D lambda.  Two finite points: as pc_meet.
+ * - Two improper points: the line at infinity of the plane of their directions.  Its meet with
+ *   a finite line is that line's improper point (its direction, as given or B2 - B1) when the
+ *   direction lies in the plane (always in 2-D), else PC_ESKEW with *residual = +inf.  Two
+ *   lines at infinity: PC_ESAME_LINE in 2-D (there is one); in n-D the direction common to
+ *   the two planes (a unit vector, weight 0, PC_IMPROPER), PC_ESAME_LINE for one plane, or
+ *   PC_ESKEW (*residual = +inf) for planes with no common direction.
+ * - Results as pc_meet: PC_OK and a finite point; PC_IMPROPER and a direction (weight 0) with
+ *   lambda = mu = +inf (parallel lines: the common improper point, the direction of line A).
+ * Errors: PC_EZERO for an improper point with zero coordinates (no direction), PC_ECOINCIDENT
+ * when a line's two ends are the same point (finite, or two parallel directions; line A is
+ * checked before line B), PC_ENONFINITE, PC_EDIM (n < 2 or n > PC_MAXDIM). */
+int pc_meet_h(int n, const double *a1, const double *a2, const double *b1, const double *b2,
+              double *out, double *lambda, double *mu, double *residual);
 
 /* --- measure (measure.c) ------------------------------------------------------------------- */
 double pc_area2(const double *a, const double *b, const double *c);   /* signed, 2-D */

@@ -694,18 +694,33 @@ static int l_cross_ratio(lua_State *L) {
 
 /* ---- incidence and measure ---------------------------------------------------------------- */
 
-/* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu;
- * parallel lines: the improper point (a direction, weight 0), math.huge, math.huge;
- * skew lines (3-D and up): nil and the distance between them. */
+/* An end of a line for meet: a point, or a point at infinity (weight 0) with a direction. */
+static pcl_value *check_end(lua_State *L, int arg, const char *what, int n, int dim_arg) {
+    pcl_value *p = topt(L, arg);
+    if (p && n == 0) n = p->n;
+    p = check_proj(L, arg, what, n, dim_arg);
+    if (pc_kind_of(p->h[n]) == PC_KIND_VECTOR && pc_norm(n, p->h) == 0)
+        pcl_error(L, "%s is the zero vector %s, which has no direction, so it is no point at "
+                  "infinity", argctx(L, arg, what), push_value_text(L, p));
+    return p;
+}
+
+/* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu.
+ * An end may be a point at infinity (a direction, weight 0), as in the book's homogeneous
+ * meet: a point P and a direction D (either order) give the line through P along D, with
+ * K = P + D lambda; two directions give the line at infinity (of their plane).
+ * Parallel lines: their common improper point (the direction of the first line, weight 0),
+ * math.huge, math.huge; likewise a line and a line at infinity.  Skew lines (3-D and up): nil
+ * and the distance between them (math.huge for a line that misses a line at infinity). */
 static int l_meet(lua_State *L) {
-    double a1[PC_MAXDIM], a2[PC_MAXDIM], b1[PC_MAXDIM], b2[PC_MAXDIM];
+    pcl_value *a1 = check_end(L, 1, "A1", 0, 0);
+    int n = a1->n;
+    pcl_value *a2 = check_end(L, 2, "A2", n, 1);
+    pcl_value *b1 = check_end(L, 3, "B1", n, 1);
+    pcl_value *b2 = check_end(L, 4, "B2", n, 1);
     double out[PC_MAXDIM + 1], lam, mu, res;
-    int n = checkloc(L, 1, "A1", 0, 0, a1);
-    checkloc(L, 2, "A2", n, 1, a2);
-    checkloc(L, 3, "B1", n, 1, b1);
-    checkloc(L, 4, "B2", n, 1, b2);
     const char *f = pcl_fname(L);
-    int st = pc_meet(n, a1, a2, b1, b2, out, &lam, &mu, &res);
+    int st = pc_meet_h(n, a1->h, a2->h, b1->h, b2->h, out, &lam, &mu, &res);
     switch (st) {
     case PC_OK:
     case PC_IMPROPER: {
@@ -721,10 +736,16 @@ static int l_meet(lua_State *L) {
         return 2;
     case PC_ESAME_LINE:
         return pcl_error(L, "%s: the two lines coincide, so they have no single meet", f);
-    case PC_ECOINCIDENT:
-        return pcl_error(L, "%s: %s", f, pc_dist(n, a1, a2) == 0
-                          ? "A1 and A2 coincide, so they do not define a line"
-                          : "B1 and B2 coincide, so they do not define a line");
+    case PC_ECOINCIDENT: {
+        /* which line: the meet of line A with itself fails the same way only if A is bad */
+        int bad_a = pc_meet_h(n, a1->h, a2->h, a1->h, a2->h, out, NULL, NULL, NULL) == st;
+        pcl_value *e1 = bad_a ? a1 : b1;
+        const char *names = bad_a ? "A1 and A2" : "B1 and B2";
+        if (pc_kind_of(e1->h[n]) == PC_KIND_VECTOR)
+            return pcl_error(L, "%s: %s are the same point at infinity (parallel directions), "
+                              "so they do not define a line", f, names);
+        return pcl_error(L, "%s: %s coincide, so they do not define a line", f, names);
+    }
     case PC_EDIM:
         return pcl_error(L, "%s: lines in 1-D all coincide; meet needs 2-D or more", f);
     }

@@ -1,5 +1,6 @@
 /* Chapter 1 theorems: triangle areas (1.2) and Menelaus (1.3), the O-theorem (1.4), the
- * intersection of two lines (1.5) in 2-D and n-D, and areas/volumes. */
+ * intersection of two lines (1.5) in 2-D and n-D, also with points at infinity as ends (the
+ * homogeneous meet), and areas/volumes. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -160,6 +161,168 @@ static void test_meet_cases(void **state) {
     NEAR(K4[0], 2); NEAR(K4[1], 1); NEAR(K4[2], 0); NEAR(K4[3], 1);
 }
 
+/* ---- the homogeneous meet: points at infinity as ends ------------------------------------- */
+
+#define H2(name, x, y, w) const double name[3] = {x, y, w}
+#define H3(name, x, y, z, w) const double name[4] = {x, y, z, w}
+
+/* A line through a point with a direction (weight 0), the direction given as either end:
+ * K = P + D lambda.  The diagonals of the square (0,0)-(2,2) meet at (1, 1). */
+static void test_meet_h_direction(void **state) {
+    (void)state;
+    double K[3], l, m;
+    H2(O, 0, 0, 1); H2(D, 1, 1, 0); H2(D2, 2, 2, 0);
+    H2(B1, 0, 2, 1); H2(B2, 2, 0, 1); H2(E, 1, -1, 0);
+    assert_int_equal(pc_meet_h(2, O, D, B1, B2, K, &l, &m, NULL), PC_OK);
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(K[2], 1); NEAR(l, 1); NEAR(m, 0.5);
+    assert_int_equal(pc_meet_h(2, D, O, B1, B2, K, &l, &m, NULL), PC_OK);   /* other order */
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(K[2], 1); NEAR(l, 1); NEAR(m, 0.5);
+    assert_int_equal(pc_meet_h(2, O, D2, B1, B2, K, &l, &m, NULL), PC_OK);  /* lambda along D */
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(l, 0.5);
+    assert_int_equal(pc_meet_h(2, O, D, B1, E, K, &l, &m, NULL), PC_OK);    /* both by directions */
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(l, 1); NEAR(m, 1);
+    assert_int_equal(pc_meet_h(2, O, D, E, B1, K, &l, &m, NULL), PC_OK);
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(l, 1); NEAR(m, 1);
+    /* (1.5)'s lines with A2 replaced by the direction A2 - A1 give the same K */
+    double C[2] = {1, 1}, A[2] = {5, 2}, B[2] = {2, 4};
+    double p[5] = {0, 0.2, 1.3, -0.4, 0.9}, q[5] = {0, 0.1, 0.7, 0.8, -0.3}, X[5][3];
+    for (int i = 1; i <= 4; i++) {
+        for (int d = 0; d < 2; d++) X[i][d] = (A[d] - C[d]) * p[i] + (B[d] - C[d]) * q[i] + C[d];
+        X[i][2] = 1;
+    }
+    double Kp[3], lp, mp, U[3] = {X[2][0] - X[1][0], X[2][1] - X[1][1], 0};
+    assert_int_equal(pc_meet(2, X[1], X[2], X[3], X[4], Kp, &lp, &mp, NULL), PC_OK);
+    assert_int_equal(pc_meet_h(2, U, X[1], X[3], X[4], K, &l, &m, NULL), PC_OK);
+    NEAR(K[0], Kp[0]); NEAR(K[1], Kp[1]); NEAR(K[2], 1); NEAR(l, lp); NEAR(m, mp);
+    /* weight 1 everywhere: exactly pc_meet */
+    assert_int_equal(pc_meet_h(2, X[1], X[2], X[3], X[4], K, &l, &m, NULL), PC_OK);
+    assert_true(K[0] == Kp[0] && K[1] == Kp[1] && l == lp && m == mp);
+}
+
+/* Weighted values stand for their normalised points: 2*P(0,0), 4*P(2,2), 0.5*P(0,2) and
+ * -1*P(2,0) are the square's corners. */
+static void test_meet_h_weighted(void **state) {
+    (void)state;
+    double K[3], l, m;
+    H2(A1, 0, 0, 2); H2(A2, 8, 8, 4); H2(B1, 0, 1, 0.5); H2(B2, -2, 0, -1);
+    assert_int_equal(pc_meet_h(2, A1, A2, B1, B2, K, &l, &m, NULL), PC_OK);
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(K[2], 1); NEAR(l, 0.5); NEAR(m, 0.5);
+    H2(D, 3, 3, 0);                                           /* with a direction: K = P + D l */
+    assert_int_equal(pc_meet_h(2, A1, D, B1, B2, K, &l, &m, NULL), PC_OK);
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(l, 1.0 / 3);
+    /* a weight so small that the point leaves the doubles */
+    H2(T, 1e301, 0, 1e-8);
+    assert_int_equal(pc_meet_h(2, T, A2, B1, B2, K, NULL, NULL, NULL), PC_ENONFINITE);
+}
+
+/* Parallel lines given by directions meet in their common improper point. */
+static void test_meet_h_parallel(void **state) {
+    (void)state;
+    double K[3], l, m;
+    H2(O, 0, 0, 1); H2(D, 1, 2, 0); H2(Q, 3, 0, 1); H2(E, -2, -4, 0); H2(Q2, 4, 2, 1);
+    assert_int_equal(pc_meet_h(2, O, D, Q, E, K, &l, &m, NULL), PC_IMPROPER);
+    NEAR(K[0], 1); NEAR(K[1], 2); NEAR(K[2], 0);              /* the direction of line A */
+    assert_true(isinf(l) && l > 0 && isinf(m) && m > 0);
+    assert_int_equal(pc_meet_h(2, Q, E, O, D, K, &l, &m, NULL), PC_IMPROPER);
+    NEAR(K[0], -2); NEAR(K[1], -4); NEAR(K[2], 0);
+    /* line A by two points */
+    assert_int_equal(pc_meet_h(2, Q, Q2, O, D, K, NULL, NULL, NULL), PC_IMPROPER);
+    NEAR(K[0], 1); NEAR(K[1], 2); NEAR(K[2], 0);
+    /* the same line, once by two points and once by a point and its direction */
+    H2(P1, 1, 2, 1); H2(P3, 3, 6, 1);
+    assert_int_equal(pc_meet_h(2, O, D, P1, P3, K, NULL, NULL, NULL), PC_ESAME_LINE);
+    assert_int_equal(pc_meet_h(2, P3, E, O, P1, K, NULL, NULL, NULL), PC_ESAME_LINE);
+    /* the construction the book uses: the line through C parallel to AB is C and AB's
+     * improper point.  AB || DE; their meet, joined to C(0, 5), meets the y axis at C. */
+    H2(A, 0, 0, 1); H2(B, 2, 1, 1); H2(Dp, 1, 3, 1); H2(Ep, 5, 5, 1); H2(C, 0, 5, 1);
+    H2(Y1, 7, -1, 1); H2(Y2, 7, 1, 1);
+    double Kinf[3];
+    assert_int_equal(pc_meet_h(2, A, B, Dp, Ep, Kinf, NULL, NULL, NULL), PC_IMPROPER);
+    assert_int_equal(pc_meet_h(2, C, Kinf, Y1, Y2, K, &l, &m, NULL), PC_OK);
+    NEAR(K[0], 7); NEAR(K[1], 8.5); NEAR(K[2], 1); NEAR(l, 3.5); NEAR(m, 4.75);
+}
+
+/* Two improper points make the line at infinity. */
+static void test_meet_h_line_at_infinity(void **state) {
+    (void)state;
+    double K[4], l, m, res;
+    H2(Ex, 1, 0, 0); H2(Ey, 0, 1, 0); H2(Ex2, -3, 0, 0);
+    H2(O, 0, 0, 1); H2(P, 3, 1, 1); H2(D, 1, -2, 0);
+    assert_int_equal(pc_meet_h(2, Ex, Ey, O, P, K, &l, &m, NULL), PC_IMPROPER);
+    NEAR(K[0], 3); NEAR(K[1], 1); NEAR(K[2], 0);              /* the finite line's direction */
+    assert_true(isinf(l) && isinf(m));
+    assert_int_equal(pc_meet_h(2, O, D, Ey, Ex, K, &l, &m, NULL), PC_IMPROPER);
+    NEAR(K[0], 1); NEAR(K[1], -2); NEAR(K[2], 0);
+    assert_int_equal(pc_meet_h(2, D, O, Ex, Ey, K, NULL, NULL, NULL), PC_IMPROPER);
+    NEAR(K[0], 1); NEAR(K[1], -2); NEAR(K[2], 0);
+    /* the plane has one line at infinity; two parallel directions are one improper point */
+    assert_int_equal(pc_meet_h(2, Ex, Ey, D, Ex, K, NULL, NULL, NULL), PC_ESAME_LINE);
+    assert_int_equal(pc_meet_h(2, Ex, Ex2, O, P, K, NULL, NULL, NULL), PC_ECOINCIDENT);
+    assert_int_equal(pc_meet_h(2, O, P, Ex2, Ex, K, NULL, NULL, NULL), PC_ECOINCIDENT);
+    /* 3-D: the line at infinity of the planes z = const */
+    H3(X, 1, 0, 0, 0); H3(XY, 1, 1, 0, 0); H3(Q, 0, 0, 5, 1); H3(V, 2, 1, 0, 0);
+    H3(Z, 0, 0, 1, 0); H3(Q2, 1, 1, 6, 1);
+    assert_int_equal(pc_meet_h(3, X, XY, Q, V, K, &l, &m, &res), PC_IMPROPER);
+    NEAR(K[0], 2); NEAR(K[1], 1); NEAR(K[2], 0); NEAR(K[3], 0); NEAR(res, 0);
+    /* a line that leaves the plane's directions does not reach its line at infinity */
+    assert_int_equal(pc_meet_h(3, Q, Q2, X, XY, K, NULL, NULL, &res), PC_ESKEW);
+    assert_true(isinf(res) && res > 0);
+    assert_int_equal(pc_meet_h(3, Z, Q, X, XY, K, NULL, NULL, &res), PC_ESKEW);
+    /* two planes' lines at infinity meet in the direction of the planes' common line:
+     * z = 0 and x = 0 share the y axis */
+    H3(Y, 0, 1, 0, 0); H3(YZ, 0, 1, 1, 0); H3(YmZ, 0, 1, -1, 0);
+    assert_int_equal(pc_meet_h(3, X, Y, YZ, YmZ, K, &l, &m, NULL), PC_IMPROPER);
+    NEAR(fabs(K[1]), 1); NEAR(K[0], 0); NEAR(K[2], 0); NEAR(K[3], 0);
+    assert_true(isinf(l) && isinf(m));
+    /* z = 0 and x + y + z = 0 share (1, -1, 0)/sqrt(2) */
+    H3(U1, 1, 0, -1, 0); H3(U2, 0, 1, -1, 0);
+    assert_int_equal(pc_meet_h(3, U1, U2, X, XY, K, NULL, NULL, NULL), PC_IMPROPER);
+    NEAR(fabs(K[0]), sqrt(0.5)); NEAR(K[0], -K[1]); NEAR(K[2], 0); NEAR(K[3], 0);
+    /* the same plane twice, given by other directions */
+    H3(XmY, 1, -1, 0, 0);
+    assert_int_equal(pc_meet_h(3, XY, XmY, X, Y, K, NULL, NULL, NULL), PC_ESAME_LINE);
+    /* 4-D: the planes (x, y) and (z, w) share no direction */
+    const double e1[5] = {1, 0, 0, 0, 0}, e2[5] = {0, 1, 0, 0, 0}, e3[5] = {0, 0, 1, 0, 0},
+                 e4[5] = {0, 0, 0, 1, 0};
+    double K4[5];
+    assert_int_equal(pc_meet_h(4, e1, e2, e3, e4, K4, NULL, NULL, &res), PC_ESKEW);
+    assert_true(isinf(res));
+}
+
+/* 3-D with a direction: skew lines report their distance, meeting lines their point. */
+static void test_meet_h_3d(void **state) {
+    (void)state;
+    double K[4], l, m, res;
+    H3(O, 0, 0, 0, 1); H3(D, 1, 1, 1, 0);
+    H3(S3, 0, 2, 1, 1); H3(S4, 2, 0, 3, 1);                   /* pc_meet's skew pair */
+    assert_int_equal(pc_meet_h(3, O, D, S3, S4, K, &l, &m, &res), PC_ESKEW);
+    NEAR(res, sqrt(0.5));
+    assert_int_equal(pc_meet_h(3, D, O, S3, S4, K, &l, &m, &res), PC_ESKEW);
+    NEAR(res, sqrt(0.5));
+    H3(P3, 0, 2, 0, 1); H3(E, 1, -1, 1, 0);
+    assert_int_equal(pc_meet_h(3, O, D, P3, E, K, &l, &m, &res), PC_OK);
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(K[2], 1); NEAR(K[3], 1); NEAR(l, 1); NEAR(m, 1);
+    NEAR(res, 0);
+    H3(F, 2, 2, 2, 0); H3(T, 0, 0, 1, 1);                     /* parallel in 3-D */
+    assert_int_equal(pc_meet_h(3, O, D, T, F, K, &l, &m, NULL), PC_IMPROPER);
+    NEAR(K[0], 1); NEAR(K[1], 1); NEAR(K[2], 1); NEAR(K[3], 0);
+}
+
+static void test_meet_h_errors(void **state) {
+    (void)state;
+    double K[3];
+    H2(O, 0, 0, 1); H2(P, 1, 0, 1); H2(Q, 0, 1, 1); H2(Z, 0, 0, 0); H2(N, NAN, 0, 1);
+    H2(I, 0, 0, INFINITY);
+    assert_int_equal(pc_meet_h(2, O, Z, P, Q, K, NULL, NULL, NULL), PC_EZERO);  /* no direction */
+    assert_int_equal(pc_meet_h(2, O, P, Q, Z, K, NULL, NULL, NULL), PC_EZERO);
+    assert_int_equal(pc_meet_h(2, O, P, N, Q, K, NULL, NULL, NULL), PC_ENONFINITE);
+    assert_int_equal(pc_meet_h(2, O, P, I, Q, K, NULL, NULL, NULL), PC_ENONFINITE);
+    assert_int_equal(pc_meet_h(2, O, O, P, Q, K, NULL, NULL, NULL), PC_ECOINCIDENT);
+    assert_int_equal(pc_meet_h(2, P, Q, Q, Q, K, NULL, NULL, NULL), PC_ECOINCIDENT);
+    assert_int_equal(pc_meet_h(1, O, P, Q, Q, K, NULL, NULL, NULL), PC_EDIM);
+    assert_int_equal(pc_meet_h(PC_MAXDIM + 1, O, P, Q, Q, K, NULL, NULL, NULL), PC_EDIM);
+}
+
 static void test_measure(void **state) {
     (void)state;
     double A[2] = {0, 0}, B[2] = {4, 0}, C[2] = {1, 3};
@@ -184,6 +347,12 @@ int main(void) {
         cmocka_unit_test(test_o_theorem),
         cmocka_unit_test(test_meet_formula),
         cmocka_unit_test(test_meet_cases),
+        cmocka_unit_test(test_meet_h_direction),
+        cmocka_unit_test(test_meet_h_weighted),
+        cmocka_unit_test(test_meet_h_parallel),
+        cmocka_unit_test(test_meet_h_line_at_infinity),
+        cmocka_unit_test(test_meet_h_3d),
+        cmocka_unit_test(test_meet_h_errors),
         cmocka_unit_test(test_measure),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
