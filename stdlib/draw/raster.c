@@ -285,7 +285,8 @@ static int far_clip(const pc_canvas *c, double *x0, double *y0, double *x1, doub
 /* A segment of a stroke in screen coordinates; the dash phase runs on past it.  Returns 0 if
  * it cannot be placed to the pixel (nothing drawn). */
 static int stroke_seg(stroker *s, double x0, double y0, double x1, double y1) {
-    double ax = x0, ay = y0, len = hypot(x1 - x0, y1 - y0);
+    /* the distance along the stroke only matters to dashes: no square root per plain segment */
+    double ax = x0, ay = y0, len = s->pen->ndash ? hypot(x1 - x0, y1 - y0) : 0;
     int k = far_clip(s->c, &x0, &y0, &x1, &y1);
     if (k == 0) return 0;
     if (k > 0 && !s->check_only) {

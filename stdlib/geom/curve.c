@@ -98,6 +98,35 @@ int pcc_piece(const pc_curve *c, double t) {
     return k;
 }
 
+/* The blossom of the span k of a B-spline (q + 1 rows of w in d, destroyed) at nlow copies of
+ * U[k] and q - nlow of U[k+1]: a Bezier control point of the span (Ramshaw). */
+static void blossom(int q, int w, double *d, const double *U, int k, int nlow, double *out) {
+    for (int r = 1; r <= q; r++) {
+        double x = r <= nlow ? U[k] : U[k + 1];
+        for (int j = q; j >= r; j--) {
+            int i = j + k - q;
+            double a = (x - U[i]) / (U[j + 1 + k - r] - U[i]);
+            for (int c = 0; c < w; c++)
+                d[j * w + c] = d[(j - 1) * w + c] + a * (d[j * w + c] - d[(j - 1) * w + c]);
+        }
+    }
+    memcpy(out, d + (size_t)q * w, sizeof(double) * w);
+}
+
+void pcc_bezier_piece(const pc_curve *c, int k, double *out) {
+    int q = c->degree, w = c->dim + 1;
+    size_t sz = (size_t)(q + 1) * w;
+    if (c->kind == PC_CURVE_BEZIER) {
+        memcpy(out, c->cp + (size_t)k * q * w, sizeof(double) * sz);
+        return;
+    }
+    double d[PCC_ROWS * PCC_W];
+    for (int j = 0; j <= q; j++) {
+        memcpy(d, c->cp + (size_t)(k - q) * w, sizeof(double) * sz);
+        blossom(q, w, d, c->knots, k, q - j, out + (size_t)j * w);
+    }
+}
+
 double pcc_next_break(const pc_curve *c, double x, double b) {
     const double *v = c->knots;
     int lo = 0, hi = c->nknots - 1;

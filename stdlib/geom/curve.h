@@ -182,5 +182,12 @@ typedef int (*pc_project_fn)(void *ud, const double *h, double xy[2]);
  * PC_OK or PC_ENOMEM (a callback's error status is returned as is). */
 int pc_curve_flatten(const pc_curve *c, double a, double b, pc_project_fn proj, void *ud,
                      double tol, pc_polyline *out);
+/* The same through a projective map m to the plane (m->nin == dim, m->nout == 2; NULL for a
+ * 2-D curve as it is).  Bezier and B-spline pieces are flattened by halving their mapped
+ * control polygons until it is within tol of its chord (a piece lies in the hull of its
+ * control points while its weights keep one sign), which evaluates no points; pieces through
+ * infinity and FUNC curves are sampled as pc_curve_flatten does. */
+int pc_curve_flatten_map(const pc_curve *c, double a, double b, const pc_map *m, double tol,
+                         pc_polyline *out);
 
 #endif

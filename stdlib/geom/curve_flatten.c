@@ -88,12 +88,14 @@ static int point(const flat *f, double t, fpt *p) {
     return PC_OK;
 }
 
-static double seg_dist(const double *a, const double *b, const double *q) {
+/* The squared distance of q from the segment ab (squares: no square root per probe). */
+static double seg_dist2(const double *a, const double *b, const double *q) {
     double vx = b[0] - a[0], vy = b[1] - a[1], wx = q[0] - a[0], wy = q[1] - a[1];
     double l2 = vx * vx + vy * vy, s = l2 > 0 ? (vx * wx + vy * wy) / l2 : 0;
     if (s < 0) s = 0;
     if (s > 1) s = 1;
-    return hypot(wx - s * vx, wy - s * vy);
+    double dx = wx - s * vx, dy = wy - s * vy;
+    return dx * dx + dy * dy;
 }
 
 static int emit(flat *f, const fpt *a, const fpt *b) {
@@ -136,14 +138,15 @@ static int subdivide(flat *f, const fpt *pa, const fpt *pb) {
             f->pen_up = 1;
             continue;
         }
-        double dev = fmax(seg_dist(I.a.xy, I.b.xy, q1.xy),
-                          fmax(seg_dist(I.a.xy, I.b.xy, I.m.xy), seg_dist(I.a.xy, I.b.xy, q3.xy)));
-        if (dev <= 0.9 * f->tol) {
+        double dev2 = fmax(seg_dist2(I.a.xy, I.b.xy, q1.xy),
+                           fmax(seg_dist2(I.a.xy, I.b.xy, I.m.xy), seg_dist2(I.a.xy, I.b.xy, q3.xy)));
+        if (dev2 <= 0.81 * f->tol * f->tol) {
             if ((st = emit(f, &I.a, &I.b))) return st;
             continue;
         }
         if (I.depth < MAXDEPTH && can_split) goto split;
-        if (hypot(I.b.xy[0] - I.a.xy[0], I.b.xy[1] - I.a.xy[1]) > JUMP * f->tol) {
+        double cx = I.b.xy[0] - I.a.xy[0], cy = I.b.xy[1] - I.a.xy[1];
+        if (cx * cx + cy * cy > (double)JUMP * JUMP * f->tol * f->tol) {
             f->pen_up = 1;
             continue;
         }
@@ -164,29 +167,181 @@ static int subdivide(flat *f, const fpt *pa, const fpt *pb) {
     return PC_OK;
 }
 
-int pc_curve_flatten(const pc_curve *c, double a, double b, pc_project_fn proj, void *ud,
-                     double tol, pc_polyline *out) {
+/* Sample [x, y] (inside one piece) as described at the top, continuing the polyline. */
+static int sample_range(flat *f, double x, double y, int ninit) {
+    fpt pa, pb;
+    int st = point(f, x, &pa);
+    if (st) return st;
+    for (int q = 1; q <= ninit; q++) {
+        double t = q == ninit ? y : x + (y - x) * q / ninit;
+        if (!(t > pa.t)) continue;
+        if ((st = point(f, t, &pb)) || (st = subdivide(f, &pa, &pb))) return st;
+        pa = pb;
+    }
+    return PC_OK;
+}
+
+static int check_args(const pc_curve *c, double a, double b, double tol, pc_polyline *out) {
     if (!c || !out) return PC_EARG;
     if (!isfinite(a) || !isfinite(b) || !isfinite(tol)) return PC_ENONFINITE;
     if (!(a <= b) || !(tol > 0)) return PC_EDOMAIN;
+    return PC_OK;
+}
+
+/* a == b: the one point, if it has an image */
+static int single_point(flat *f, double a) {
+    fpt pa;
+    int st = point(f, a, &pa);
+    if (st || pa.bad) return st;
+    return pc_polyline_push(f->out, pa.xy[0], pa.xy[1], 1);
+}
+
+int pc_curve_flatten(const pc_curve *c, double a, double b, pc_project_fn proj, void *ud,
+                     double tol, pc_polyline *out) {
+    int st = check_args(c, a, b, tol, out);
+    if (st) return st;
     if (!proj && c->dim != 2) return PC_EDIM;
     flat f = {c, proj, ud, tol, out, 1};
-    fpt pa, pb;
-    int st = point(&f, a, &pa);
-    if (st) return st;
-    if (a == b) {
-        if (!pa.bad) return pc_polyline_push(out, pa.xy[0], pa.xy[1], 1);
-        return PC_OK;
-    }
+    if (a == b) return single_point(&f, a);
     int ninit = c->kind == PC_CURVE_FUNC && c->nknots == 0 ? NINIT_FUNC : NINIT;
     for (double x = a; x < b;) {
         double y = pcc_next_break(c, x, b);
-        for (int q = 1; q <= ninit; q++) {
-            double t = q == ninit ? y : x + (y - x) * q / ninit;
-            if (!(t > pa.t)) continue;
-            if ((st = point(&f, t, &pb)) || (st = subdivide(&f, &pa, &pb))) return st;
-            pa = pb;
+        if ((st = sample_range(&f, x, y, ninit))) return st;
+        x = y;
+    }
+    return PC_OK;
+}
+
+/* ---- polynomial and rational pieces through a map: the control polygon -----------------------
+ * A projective map keeps a (rational) Bezier piece a rational Bezier piece of the plane, its
+ * control points mapped.  When their weights have one sign the piece lies in the convex hull of
+ * its Cartesian control points, so once the inner ones are within tol of the chord, so is the
+ * piece: the chord is accepted.  Otherwise the piece is halved by de Casteljau, which costs less
+ * than evaluating points and never misses a wiggle.  A piece whose weights change sign passes
+ * through infinity and is sampled as above. */
+
+enum { HULLDEPTH = 24 };
+
+static int map_proj(void *ud, const double *h, double xy[2]) {
+    const pc_map *m = ud;
+    double o[3];
+    pc_map_apply(m, h, o);
+    if (o[2] == 0) return PC_IMPROPER;
+    xy[0] = o[0] / o[2];
+    xy[1] = o[1] / o[2];
+    return isfinite(xy[0]) && isfinite(xy[1]) ? PC_OK : PC_ENONFINITE;
+}
+
+/* b (q+1 rows of 3) cut at s: left and right (either may be NULL) */
+static void split3(int q, const double *b, double s, double *left, double *right) {
+    double tmp[PCC_ROWS * 3];
+    memcpy(tmp, b, sizeof(double) * 3 * (size_t)(q + 1));
+    for (int c = 0; c < 3; c++) {
+        if (left) left[c] = tmp[c];
+        if (right) right[3 * q + c] = tmp[3 * q + c];
+    }
+    for (int r = 1; r <= q; r++) {
+        for (int j = 0; j + r <= q; j++)
+            for (int c = 0; c < 3; c++)
+                tmp[3 * j + c] = tmp[3 * j + c] + s * (tmp[3 * (j + 1) + c] - tmp[3 * j + c]);
+        for (int c = 0; c < 3; c++) {
+            if (left) left[3 * r + c] = tmp[c];
+            if (right) right[3 * (q - r) + c] = tmp[3 * (q - r) + c];
         }
+    }
+}
+
+static int push_xy(flat *f, double x, double y) {
+    if (f->pen_up) {
+        f->pen_up = 0;
+        return pc_polyline_push(f->out, x, y, 1);
+    }
+    const double *last = f->out->xy + 2 * (f->out->n - 1);
+    if (last[0] == x && last[1] == y) return PC_OK;
+    return pc_polyline_push(f->out, x, y, 0);
+}
+
+/* the planar piece b (q+1 rows of 3, weights of one sign) flattened from its start */
+static int hull_flatten(flat *f, int q, const double *b) {
+    size_t rows = (size_t)(q + 1) * 3;
+    double *stack = malloc(sizeof(double) * rows * (HULLDEPTH + 2));
+    int depth[HULLDEPTH + 2], top = 0, st;
+    if (!stack) return PC_ENOMEM;
+    memcpy(stack, b, sizeof(double) * rows);
+    depth[0] = 0;
+    top = 1;
+    if ((st = push_xy(f, b[0] / b[2], b[1] / b[2]))) goto done;
+    double tol2 = f->tol * f->tol;
+    while (top > 0) {
+        double *n = stack + rows * (size_t)(top - 1);
+        double a[2] = {n[0] / n[2], n[1] / n[2]}, e[2] = {n[3 * q] / n[3 * q + 2], n[3 * q + 1] / n[3 * q + 2]};
+        int flat_enough = 1;
+        for (int j = 1; j < q && flat_enough; j++) {
+            double p[2] = {n[3 * j] / n[3 * j + 2], n[3 * j + 1] / n[3 * j + 2]};
+            flat_enough = seg_dist2(a, e, p) <= tol2;
+        }
+        int d = depth[top - 1];
+        if (flat_enough || d >= HULLDEPTH || !isfinite(a[0] + a[1] + e[0] + e[1])) {
+            top--;
+            if ((st = push_xy(f, e[0], e[1]))) goto done;
+            continue;
+        }
+        /* replace the node by its right half, push its left half above it */
+        double *left = stack + rows * (size_t)top;
+        split3(q, n, 0.5, left, n);
+        depth[top - 1] = depth[top] = d + 1;
+        top++;
+    }
+done:
+    free(stack);
+    return st;
+}
+
+int pc_curve_flatten_map(const pc_curve *c, double a, double b, const pc_map *m, double tol,
+                         pc_polyline *out) {
+    int st = check_args(c, a, b, tol, out);
+    if (st) return st;
+    if (m ? (m->nin != c->dim || m->nout != 2) : c->dim != 2) return PC_EDIM;
+    flat f = {c, m ? map_proj : NULL, (void *)m, tol, out, 1};
+    if (a == b) return single_point(&f, a);
+    if (c->kind == PC_CURVE_FUNC) return pc_curve_flatten(c, a, b, f.proj, f.ud, tol, out);
+    int q = c->degree, w = c->dim + 1;
+    double piece[PCC_ROWS * PCC_W], pl[PCC_ROWS * 3], part[PCC_ROWS * 3];
+    for (double x = a; x < b;) {
+        double y = pcc_next_break(c, x, b);
+        int k = pcc_piece(c, x + (y - x) / 2);
+        double lo = c->knots[k], hi = c->knots[k + 1];   /* the piece's own interval */
+        pcc_bezier_piece(c, k, piece);
+        for (int j = 0; j <= q; j++) {
+            if (m) {
+                pc_map_apply(m, piece + (size_t)j * w, pl + 3 * j);
+            } else {
+                pl[3 * j] = piece[(size_t)j * w];
+                pl[3 * j + 1] = piece[(size_t)j * w + 1];
+                pl[3 * j + 2] = piece[(size_t)j * w + 2];
+            }
+        }
+        /* the part over [x, y] in the piece's own parameter */
+        double s0 = (x - lo) / (hi - lo), s1 = (y - lo) / (hi - lo);
+        if (s1 != 0 && (s0 != 0 || s1 != 1)) {
+            split3(q, pl, s1, part, NULL);
+            split3(q, part, s0 / s1, NULL, pl);
+        } else if (s1 == 0) {            /* extrapolated before the piece: s0 < s1 = 0 < 1 */
+            split3(q, pl, s0, NULL, part);
+            split3(q, part, (s1 - s0) / (1 - s0), pl, NULL);
+        }
+        int pos = 0, neg = 0;
+        for (int j = 0; j <= q; j++) {
+            pos += pl[3 * j + 2] > 0;
+            neg += pl[3 * j + 2] < 0;
+        }
+        if (neg == q + 1)
+            for (int j = 0; j < 3 * (q + 1); j++) pl[j] = -pl[j];
+        if ((pos == q + 1 || neg == q + 1) && pcc_finite((size_t)3 * (q + 1), pl))
+            st = hull_flatten(&f, q, pl);
+        else
+            st = sample_range(&f, x, y, NINIT);
+        if (st) return st;
         x = y;
     }
     return PC_OK;

@@ -28,6 +28,9 @@ int pcc_piece(const pc_curve *c, double t);
  * U with span k, q = degree, d: q+1 rows of w, destroyed). */
 void pcc_deboor(int q, int w, double *d, const double *U, int k, double x, int order,
                 double *out);
+/* The Bezier control points (degree + 1 rows of dim + 1, homogeneous) of piece k: Bezier
+ * segment k, or the non-empty B-spline span k (over knots[k] .. knots[k+1]). */
+void pcc_bezier_piece(const pc_curve *c, int k, double *out);
 /* Local knots of Bezier segment i: 2 degree + 2 values in U, the span index returned. */
 int pcc_bezier_knots(const pc_curve *c, int i, double *U);
 

@@ -423,17 +423,6 @@ static int bez_bbox(bbox_ctx *b, const double *d, int lev) {
     return bez_bbox(b, R, lev + 1);
 }
 
-static void blossom(int p, int w, double *d, const double *U, int k, int nlow, double *out) {
-    for (int r = 1; r <= p; r++) {
-        double x = r <= nlow ? U[k] : U[k + 1];
-        for (int j = p; j >= r; j--) {
-            int i = j + k - p;
-            double a = (x - U[i]) / (U[j + 1 + k - r] - U[i]);
-            for (int c = 0; c < w; c++) d[j * w + c] = d[(j - 1) * w + c] + a * (d[j * w + c] - d[(j - 1) * w + c]);
-        }
-    }
-    memcpy(out, d + (size_t)p * w, sizeof(double) * w);
-}
 
 /* FUNC curves: samples, then a golden-section search at each sampled extremum */
 static int func_coord(const pc_curve *c, int i, double t, double *x) {
@@ -518,13 +507,9 @@ int pc_curve_bbox(const pc_curve *c, double tol, double *lo, double *hi) {
                 st = bez_bbox(&b, piece, 0);
         }
     } else {
-        double d[PCC_ROWS * PCC_W];
         for (int k = p; !st && k < c->ncp; k++) {
             if (!(c->knots[k] < c->knots[k + 1])) continue;
-            for (int j = 0; j <= p; j++) {
-                memcpy(d, c->cp + (size_t)(k - p) * w, sizeof(double) * sz);
-                blossom(p, w, d, c->knots, k, p - j, piece + (size_t)j * w);
-            }
+            pcc_bezier_piece(c, k, piece);
             if (!(st = include_h(&b, piece)) && !(st = include_h(&b, piece + (size_t)p * w)))
                 st = bez_bbox(&b, piece, 0);
         }

@@ -47,40 +47,37 @@ int pcl_project(lua_State *L, int n, const double *h, double *x, double *y) {
 
 /* ---- flattening through the projection and the window ---------------------------------------- */
 
-typedef struct {
-    const pc_map *f;        /* to the plane, or NULL for a 2-D curve */
-    const pc_canvas *cv;    /* then WINDOW and VIEW to screen pixels, or NULL */
-} projector;
-
-static int project(void *ud, const double *h, double xy[2]) {
-    projector *p = ud;
-    double o[3];
-    if (p->f) {
-        pc_map_apply(p->f, h, o);
-    } else {
-        o[0] = h[0];
-        o[1] = h[1];
-        o[2] = h[2];
+void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out) {
+    pc_canvas *cv = pcl_canvas(L);
+    double o[2], ex[2], ey[2];
+    pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);
+    pc_world_to_screen(cv, 1, 0, &ex[0], &ex[1]);
+    pc_world_to_screen(cv, 0, 1, &ey[0], &ey[1]);
+    pc_map w;
+    pc_map_identity(&w, 2);
+    for (int r = 0; r < 2; r++) {
+        PC_MAP_AT(&w, r, 0) = ex[r] - o[r];
+        PC_MAP_AT(&w, r, 1) = ey[r] - o[r];
+        PC_MAP_AT(&w, r, 2) = o[r];
     }
-    if (o[2] == 0) return PC_IMPROPER;
-    double x = o[0] / o[2], y = o[1] / o[2];
-    if (p->cv) pc_world_to_screen(p->cv, x, y, &x, &y);
-    if (!isfinite(x) || !isfinite(y)) return PC_ENONFINITE;
-    xy[0] = x;
-    xy[1] = y;
-    return PC_OK;
+    if (f) pc_map_compose(&w, f, out);
+    else *out = w;
 }
 
 int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
                 int screen, double tol, pc_polyline *out) {
-    projector p = {f, screen ? pcl_canvas(L) : NULL};
+    pc_map scr;
+    if (screen) {
+        pcl_screen_map(L, f, &scr);
+        f = &scr;
+    }
     pcl_callback_state(L);
     if (!f && c->dim != 2) return PC_EDIM;
     if (pieces < 1) pieces = 1;
     for (int i = 0; i < pieces; i++) {
         double lo = a + (b - a) * i / pieces, hi = i == pieces - 1 ? b : a + (b - a) * (i + 1) / pieces;
         size_t before = out->n;
-        int st = pc_curve_flatten(c, lo, hi, project, &p, tol, out);
+        int st = pc_curve_flatten_map(c, lo, hi, f, tol, out);
         if (st != PC_OK) return st;
         /* the next part starts where this one ended: keep one vertex, no break */
         if (before > 0 && out->n > before && out->xy[2 * before] == out->xy[2 * before - 2] &&

@@ -394,22 +394,6 @@ static int s_map(lua_State *L) {
 }
 
 
-/* The map to screen pixels: f (to the plane) then WINDOW and VIEW, an affine map of the plane. */
-static void screen_map(pc_canvas *cv, const pc_map *f, pc_map *out) {
-    double o[2], ex[2], ey[2];
-    pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);
-    pc_world_to_screen(cv, 1, 0, &ex[0], &ex[1]);
-    pc_world_to_screen(cv, 0, 1, &ey[0], &ey[1]);
-    pc_map w;
-    pc_map_identity(&w, 2);
-    for (int r = 0; r < 2; r++) {
-        PC_MAP_AT(&w, r, 0) = ex[r] - o[r];
-        PC_MAP_AT(&w, r, 1) = ey[r] - o[r];
-        PC_MAP_AT(&w, r, 2) = o[r];
-    }
-    pc_map_compose(&w, f, out);
-}
-
 typedef struct {
     const pc_occluder *occ;
     pc_map scr;
@@ -509,7 +493,7 @@ static int s_wireframe(lua_State *L) {
     pc_occluder *occ = NULL;
     if (mode) {
         int st;
-        screen_map(cv, f, &h.scr);
+        pcl_screen_map(L, f, &h.scr);
         occ = pc_occluder_new(s, &h.scr, mesh, mesh, &st);
         if (!occ) return pcl_raise_status(L, fn, st);
         h.occ = occ;

@@ -19,6 +19,8 @@ pc_map *pcl_camera(lua_State *L);
 /* The image under the camera of the homogeneous n-D value h: PC_OK, PC_EDIM (no camera for
  * n-D points), PC_IMPROPER (it projects to infinity), PC_ENONFINITE. */
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y);
+/* The map to screen pixels: f (to the plane; NULL for plain 2-D) then WINDOW and VIEW. */
+void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out);
 /* Flatten c over [a, b] in `pieces` equal parts to begin with, through f (NULL: c is 2-D)
  * and, when screen is set, WINDOW and VIEW: the tolerance is then in pixels and the
  * polyline in screen coordinates. */
