@@ -59,7 +59,9 @@ local function checkrange(r, field, fname)
 end
 
 -- C:grid{t1 = {a, b, step [, fine]}, t2 = {a, b, step [, fine]}, family = "t1"|"t2",
---        brush = "pset"|"dot"|fn, color = c, map = m, qb = false}
+--        color = c, map = m [, brush = "pset"|"dot"|fn | dots = true | qb = true]}
+-- draws each line as one path (the fine step sets how finely it is first looked at), or, with
+-- a brush, dots = true or qb = true, as dots at the fine steps like the listings.
 -- draws the lines t1 = const (t1 = a, a + step, ..., each traced along t2 with t2's fine step)
 -- and the lines t2 = const likewise; family = "t1" draws only the lines t1 = const.
 -- The fine step defaults to a thousandth of the range; t1 = {a, b, step, fine = {a', b',
@@ -73,6 +75,19 @@ function System:grid(opts)
   end
   local c1, f1 = checkrange(opts.t1, "t1", fname)
   local c2, f2 = checkrange(opts.t2, "t2", fname)
+  if not tk.wants_dots(opts) then      -- each line one path, traced with its fine step
+    if family ~= "t2" then
+      for t1 in steps(c1, 0, 1, qb, fname, "t1") do
+        tk.trace(function(t2) return f(t1, t2) end, f2[1], f2[2], f2[3], opts, fname)
+      end
+    end
+    if family ~= "t1" then
+      for t2 in steps(c2, 0, 1, qb, fname, "t2") do
+        tk.trace(function(t1) return f(t1, t2) end, f1[1], f1[2], f1[3], opts, fname)
+      end
+    end
+    return
+  end
   if family ~= "t2" then
     for t1 in steps(c1, 0, 1, qb, fname, "t1") do
       for t2 in steps(f2, 0, 1, qb, fname, "t2") do plot(f(t1, t2)) end
@@ -85,13 +100,29 @@ function System:grid(opts)
   end
 end
 
--- C:draw(curve, {t = {a, b, step}, brush, color, map, qb}): the curve given in the system's
--- parameters (a function t -> t1, t2 or a 2-D point (t1, t2), or a curve object) seen
--- through the system.
+-- C:draw(curve, {t = {a, b [, step]}, color, map}): the curve given in the system's parameters
+-- (a function t -> t1, t2 or a 2-D point (t1, t2), or a curve object) seen through the system,
+-- as one path; with a brush, dots = true or qb = true, dots at the steps as the listings draw.
 function System:draw(curve, opts)
   opts = opts or {}
-  local plot, f = plotter(opts, "C:draw"), self._xy
-  tk.walk(curve, opts, "C:draw", function(t1, t2) plot(f(t1, t2)) end)
+  local f = self._xy
+  local function through(t1, t2, extra)    -- (t1, t2) are the system's two parameters
+    if extra ~= nil then
+      error("C:draw: the curve must give the system's two parameters (t1, t2), got three or more", 2)
+    end
+    return f(t1, t2)
+  end
+  if not tk.wants_dots(opts) and opts.t ~= nil then
+    if not tk.callable(curve) then tk.argerror("C:draw", 1, "curve", "a function of t or a curve", curve) end
+    local r = opts.t
+    if type(r) ~= "table" or type(r[1]) ~= "number" or type(r[2]) ~= "number" then
+      tk.fielderror("C:draw", "t", "a range {a, b [, step]}", r)
+    end
+    local coords = tk.coords
+    return tk.trace(function(t) return through(coords(curve(t))) end, r[1], r[2], r[3], opts, "C:draw")
+  end
+  local plot = plotter(opts, "C:draw")
+  tk.walk(curve, opts, "C:draw", function(...) plot(through(...)) end)
 end
 
 -- C:pre(g): the system (t1, t2) -> C(g(t1, t2)), g returning two numbers or a 2-D point

@@ -50,6 +50,23 @@ cls()
 R:grid{t1 = {0, 1, 1, fine = {0, .5, .01}}, t2 = {0, 1, 1}, color = 13, family = "t2"}
 eq(point(140, 100), 13, "fine range: the line t2 = 0 up to t1 = .5"); eq(point(155, 100), 0, "and no further")
 cls()
+-- lines are paths: a system that runs fast (x = 100 + 400 t1^6) still gives unbroken lines,
+-- where dots at the same fine step fall apart
+local fast = curvilinear(function(t1, t2) return 100 + 400 * t1 ^ 6, 300 + 100 * t2 end)
+fast:grid{t1 = {0, 1, 1, .01}, t2 = {0, 1, 1, .01}, color = 12, family = "t2"}
+local gaps = 0
+for x = 100, 500 do if point(x, 300) ~= 12 then gaps = gaps + 1 end end
+eq(gaps, 0, "the line t2 = 0 is unbroken from x = 100 to 500")
+cls()
+fast:grid{t1 = {0, 1, 1, .01}, t2 = {0, 1, 1, .01}, color = 12, family = "t2", dots = true}
+gaps = 0
+for x = 100, 500 do if point(x, 300) ~= 12 then gaps = gaps + 1 end end
+truthy(gaps > 300, "dots = true: 101 dots, most of the line empty (" .. gaps .. " gaps)")
+cls()
+err(function() R:draw(function(t) return P(t, t, t) end, {t = {0, 1}}) end,
+    "the curve must give the system's two parameters", "a 3-D curve through a 2-parameter system")
+err(function() ruled(function(t) return P(t, 0, 1) end, function(t) return P(t, 1, 0) end)(.5, .5) end,
+    "got the 3-D P(0.5, 0, 1)", "ruled between 3-D curves: not silently flattened")
 -- a unit circle in (t1, t2) seen through R: an ellipse of radii 50, 25 around (150, 125)
 R:draw(function(u) return .5 + .5 * cos(u), .5 + .5 * sin(u) end, {t = {0, 2 * pi, .001}, color = 10})
 eq(point(200, 125), 10, "lens: right"); eq(point(150, 150), 10, "lens: bottom"); eq(point(100, 125), 10, "lens: left")
