@@ -13,7 +13,7 @@
 #include "smooth.h"
 #include "curve.h"
 
-#define PC_CURVE_MAXDIM 4
+#define PC_CURVE_MAXDIM PC_MAXDIM   /* strokes go to every dimension points have */
 
 /* Directions from angles in radians.  2-D: (cos u, -sin u) when ccw is nonzero, the article's
  * w = y - r sin u, counter-clockwise on a y-down screen (examples 10, 11, 17, 32); else

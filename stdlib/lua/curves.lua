@@ -389,7 +389,7 @@ function M.stroke(s)
     error("stroke: give the nodes: nodes = {P(...), ...} or x = {...}, y = {...}", 2)
   end
   if k < 2 then error("stroke: a stroke needs at least 2 nodes, got " .. k, 2) end
-  if d > 4 then error("stroke: nodes must be 1-D to 4-D, got " .. d .. "-D", 2) end
+  if d > 16 then error("stroke: nodes must be 1-D to 16-D, got " .. d .. "-D", 2) end
   -- the directions
   local ein, eout
   local angles = s.uin ~= nil or s.kink ~= nil or s.uin2 ~= nil or s.kink2 ~= nil

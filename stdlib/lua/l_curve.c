@@ -520,7 +520,7 @@ static int l_spline2(lua_State *L) {
     double A[PC_MAXDIM], a[PC_MAXDIM], B[PC_MAXDIM], b[PC_MAXDIM];
     int d = pcl_checkloc(L, 1, "A", 0, 0, A);
     if (d > PC_CURVE_MAXDIM)
-        return pcl_error(L, "%s: argument #1 (A) must be a point of dimension 1..4, got %d-D", fn, d);
+        return pcl_error(L, "%s: argument #1 (A) must be a point of dimension 1..%d, got %d-D", fn, PC_CURVE_MAXDIM, d);
     pcl_checkvec(L, 2, "a", d, 1, a);
     pcl_checkloc(L, 3, "B", d, 1, B);
     pcl_checkvec(L, 4, "b", d, 1, b);
@@ -620,7 +620,7 @@ static int l_fourier(lua_State *L) {
         if (i == 0) {
             d = p->n;
             if (d > PC_CURVE_MAXDIM)
-                return pcl_error(L, "%s: points must be 1-D to 4-D, got %d-D", fn, d);
+                return pcl_error(L, "%s: points must be 1-D to %d-D, got %d-D", fn, PC_CURVE_MAXDIM, d);
             samples = lua_newuserdatauv(L, sizeof(double) * (size_t)count * (size_t)d, 0);
             lua_insert(L, -2);
         } else if (p->n != d) {

@@ -221,7 +221,7 @@ static void test_errors(void **state) {
     assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_ENONFINITE);
     assert_int_equal(bad, 1);
     s.nodes = ok;
-    s.d = 5;
+    s.d = PC_CURVE_MAXDIM + 1;   /* beyond the dimensions points have */
     assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EDIM);
 }
 

@@ -192,7 +192,11 @@ err(function() spline2(P(0, 0), V(1, 0), P(1, 1), V(0, 1), smooth.half(2.5, 2, .
 err(function() spline2(P(0, 0), V(1, 0), P(1, 1), V(1, 0), function() return 0 / 0 end)(.5) end, "curve: the smoothstep g must return a finite number, got g(0.5) =", "g NaN")
 err(function() F:controls() end, "c:controls: a Fourier curve has no pieces", "fourier controls")
 err(function() F:coef("a") end, "c:coef: argument #1 (k) must be a coordinate number 1..2, got string", "coef k")
-err(function() spline2(P(0, 0, 0, 0, 0), V(1, 0, 0, 0, 0), P(1, 1, 0, 0, 0), V(0, 1, 0, 0, 0)) end, "spline2: argument #1 (A) must be a point of dimension 1..4, got 5-D", "5-D")
+-- every dimension points have: a 5-D spline2 and a 6-D stroke (the old toolkit stopped at 4-D)
+local s5 = spline2(P(0, 0, 0, 0, 0), V(1, 0, 0, 0, 0), P(1, 1, 0, 0, 1), V(0, 1, 0, 0, 0))
+eq(s5.dim, 5, "5-D spline2"); same(s5(1), P(1, 1, 0, 0, 1), "5-D spline2 ends at B")
+local s6 = stroke{nodes = {P(0, 0, 0, 0, 0, 0), P(1, 0, 0, 0, 0, 1), P(1, 1, 0, 0, 0, 2)}}
+eq(s6.dim, 6, "6-D stroke"); same(s6(2), P(1, 1, 0, 0, 0, 2), "6-D stroke through its last node")
 err(function() K33:draw{t = {0, 1, .1}} end, "c:draw: a 3-D curve needs map = a projection", "3-D without map")
 err(function() S:draw{brush = "thick"} end, 'c:draw: brush must be "pset", "dot" or a function(x, y, color), got string', "brush")
 err(function() S:draw{t = {0, 1, 0}} end, "c:draw: t step must be a nonzero number, got 0", "zero step")
