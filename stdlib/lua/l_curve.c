@@ -264,8 +264,8 @@ static int l_bezier(lua_State *L) {
     return 1;
 }
 
-static pc_knot_kind knot_kind(lua_State *L, const char *fn, int arg, int ncp, int degree,
-                              double **knots) {
+pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree,
+                            double **knots) {
     *knots = NULL;
     if (lua_isnoneornil(L, arg)) return PC_KNOTS_OPEN;
     if (lua_type(L, arg) == LUA_TSTRING) {
@@ -309,7 +309,7 @@ static int l_bspline(lua_State *L) {
     }
     if (p > PC_CURVE_MAXDEG) pcl_error(L, "%s: the degree is at most %d", fn, PC_CURVE_MAXDEG);
     double *knots;
-    pc_knot_kind kk = knot_kind(L, fn, 3, m, (int)p, &knots);
+    pc_knot_kind kk = pcl_checkknots(L, fn, 3, m, (int)p, &knots);
     int st;
     pc_curve *c = pc_curve_bspline(d, (int)p, m, h, kk, knots, &st);
     pushcurve(L, c, st, "bspline", 0);

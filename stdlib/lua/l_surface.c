@@ -167,35 +167,6 @@ static int l_bezier(lua_State *L) {
     return 1;
 }
 
-static pc_knot_kind knots_arg(lua_State *L, const char *fn, int arg, int n, int deg, double **k) {
-    *k = NULL;
-    if (lua_isnoneornil(L, arg)) return PC_KNOTS_OPEN;
-    if (lua_type(L, arg) == LUA_TSTRING) {
-        const char *s = lua_tostring(L, arg);
-        if (!strcmp(s, "open")) return PC_KNOTS_OPEN;
-        if (!strcmp(s, "uniform")) return PC_KNOTS_UNIFORM;
-        if (!strcmp(s, "periodic")) return PC_KNOTS_PERIODIC;
-    } else if (lua_istable(L, arg)) {
-        int want = n + deg + 1;
-        if ((int)luaL_len(L, arg) != want)
-            pcl_error(L, "%s: argument #%d (knots) must hold %d knots", fn, arg, want);
-        *k = lua_newuserdatauv(L, sizeof(double) * (size_t)want, 0);
-        for (int i = 0; i < want; i++) {
-            lua_geti(L, arg, i + 1);
-            int isnum;
-            (*k)[i] = lua_tonumberx(L, -1, &isnum);
-            if (!isnum || !isfinite((*k)[i]))
-                pcl_error(L, "%s: argument #%d (knots) [%d] must be a finite number", fn, arg, i + 1);
-            if (i && (*k)[i] < (*k)[i - 1])
-                pcl_error(L, "%s: argument #%d (knots) must be non-decreasing", fn, arg);
-            lua_pop(L, 1);
-        }
-        lua_replace(L, arg);
-        return PC_KNOTS_GIVEN;
-    }
-    return pcl_argerror_full(L, fn, arg, arg, "knots", "\"open\", \"uniform\", \"periodic\" or a list");
-}
-
 static int l_bspline(lua_State *L) {
     const char *fn = "surface.bspline";
     lua_settop(L, 5);
@@ -205,7 +176,7 @@ static int l_bspline(lua_State *L) {
     if (p < 1 || p >= nu) pcl_error(L, "%s: argument #2 (p) must be 1..%d (below the %d rows)", fn, nu - 1, nu);
     if (q < 1 || q >= nv) pcl_error(L, "%s: argument #3 (q) must be 1..%d (below the %d columns)", fn, nv - 1, nv);
     double *uk, *vk;
-    pc_knot_kind ukind = knots_arg(L, fn, 4, nu, p, &uk), vkind = knots_arg(L, fn, 5, nv, q, &vk);
+    pc_knot_kind ukind = pcl_checkknots(L, fn, 4, nu, p, &uk), vkind = pcl_checkknots(L, fn, 5, nv, q, &vk);
     int st;
     pc_surface *s = pc_surface_bspline(d, p, q, nu, nv, h, ukind, uk, vkind, vk, &st);
     pushsurf(L, s, st, fn);

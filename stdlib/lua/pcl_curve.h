@@ -14,6 +14,12 @@ pc_surface *pcl_tosurface(lua_State *L, int idx);
 /* Push a curve object owning the reference c (kind: the constructor's name, static). */
 void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
 
+/* The knots argument at arg of a B-spline of ncp control points: nil ("open"), "open",
+ * "uniform", "periodic", or a non-decreasing list of ncp + degree + 1 numbers (then *knots
+ * points at them, in a scratch userdata left on the stack; else NULL). */
+pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree,
+                            double **knots);
+
 /* The current projection set by camera(), or NULL. */
 pc_map *pcl_camera(lua_State *L);
 /* The image under the camera of the homogeneous n-D value h: PC_OK, PC_EDIM (no camera for
