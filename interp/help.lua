@@ -416,6 +416,8 @@ def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",
   "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font.")
 def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
+def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
+  "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
 def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
   "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
 def("save", "save(path [, \"paper\"|\"screen\"])",

@@ -36,10 +36,17 @@ void pcl_open_curvilinear(lua_State *L);    /*   squash oblique projection oresm
 void pcl_open_complex(lua_State *L); /*   complex mobius (l_complex.c) */
 void pcl_open_surface(lua_State *L);  /* surface.* (l_surface.c) */
 void pcl_open_camera(lua_State *L);   /* camera, drawing curves as paths (l_camera.c) */
+void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
 pc_map *pcl_tomap(lua_State *L, int idx);
 pc_map *pcl_newmap(lua_State *L);
+
+/* A script's parameters (l_params.c): the value a slider of that name takes in the next run
+ * (--set name=value, a live page, an animation frame); after a run, push the list of the
+ * sliders it declared ({name =, min =, max =, default =, step =, animate =}, in order). */
+void pcl_param_set(lua_State *L, const char *name, double value);
+void pcl_push_params(lua_State *L);
 
 /* The canvas of this Lua state (created on first use as SCREEN 12). */
 pc_canvas *pcl_canvas(lua_State *L);

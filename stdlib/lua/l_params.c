@@ -1,0 +1,138 @@
+/* Binding of a script's declared parameters (issue 16: live pages and animation):
+ *   slider(name, min, max, default [, step | {step =, animate = true}]) -> value
+ * Run normally a slider is its default, or the value the host set for its name (the command
+ * line's --set name=value, a live page's slider, an animation frame).  Every declaration is
+ * recorded in order, so the host can build the page's sliders or run the frames of the
+ * parameter marked animate.
+ * The host's side (pcl.h): pcl_param_set before running a script, pcl_push_params after. */
+#include <math.h>
+#include <string.h>
+#include "pcl_point.h"
+
+#define SET_KEY "pointcalc.params.set"           /* name -> value given by the host */
+#define DECLARED_KEY "pointcalc.params.declared" /* the list of declarations, in order */
+
+static void registry_table(lua_State *L, const char *key) {
+    if (lua_getfield(L, LUA_REGISTRYINDEX, key) != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, LUA_REGISTRYINDEX, key);
+    }
+}
+
+void pcl_param_set(lua_State *L, const char *name, double value) {
+    registry_table(L, SET_KEY);
+    lua_pushnumber(L, value);
+    lua_setfield(L, -2, name);
+    lua_pop(L, 1);
+}
+
+void pcl_push_params(lua_State *L) { registry_table(L, DECLARED_KEY); }
+
+/* A name a URL and a command line can carry: letters, digits, _ (not first a digit). */
+static int good_name(const char *s, size_t len) {
+    if (len == 0 || len > 64 || (s[0] >= '0' && s[0] <= '9')) return 0;
+    for (size_t i = 0; i < len; i++) {
+        char c = s[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'))
+            return 0;
+    }
+    return 1;
+}
+
+static int l_slider(lua_State *L) {
+    size_t len;
+    const char *name = lua_tolstring(L, 1, &len);
+    if (lua_type(L, 1) != LUA_TSTRING || !good_name(name, len))
+        return pcl_argerror(L, 1, "name", "a name of letters, digits and _ (up to 64)");
+    double lo = pcl_checkfinite(L, 2, "min"), hi = pcl_checkfinite(L, 3, "max");
+    if (!(lo < hi)) return pcl_argerror(L, 3, "max", "greater than min");
+    double dflt = pcl_checkfinite(L, 4, "default");
+    if (dflt < lo || dflt > hi) return pcl_argerror(L, 4, "default", "between min and max");
+    double step = 0;
+    int animate = 0;
+    if (lua_type(L, 5) == LUA_TNUMBER) {
+        step = pcl_checkfinite(L, 5, "step");
+    } else if (lua_istable(L, 5)) {
+        lua_getfield(L, 5, "step");
+        if (!lua_isnil(L, -1)) {
+            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+                return pcl_error(L, "slider: opts.step must be a finite number, got %s", pcl_shown(L, -1));
+            step = lua_tonumber(L, -1);
+        }
+        lua_getfield(L, 5, "animate");
+        animate = lua_toboolean(L, -1);
+        lua_pop(L, 2);
+    } else if (!lua_isnoneornil(L, 5)) {
+        return pcl_argerror(L, 5, "step", "a number or a table {step =, animate =}");
+    }
+    if (step < 0 || step > hi - lo) return pcl_argerror(L, 5, "step", "between 0 and max - min");
+
+    /* the declaration, once per name (a script may ask for its slider again) */
+    registry_table(L, DECLARED_KEY);
+    int decl = lua_gettop(L);
+    lua_Integer n = luaL_len(L, decl), found = 0;
+    for (lua_Integer i = 1; i <= n && !found; i++) {
+        lua_geti(L, decl, i);
+        lua_getfield(L, -1, "name");
+        if (strcmp(lua_tostring(L, -1), name) == 0) found = i;
+        lua_pop(L, 2);
+    }
+    if (!found) {
+        lua_createtable(L, 0, 6);
+        lua_pushvalue(L, 1);
+        lua_setfield(L, -2, "name");
+        lua_pushnumber(L, lo);
+        lua_setfield(L, -2, "min");
+        lua_pushnumber(L, hi);
+        lua_setfield(L, -2, "max");
+        lua_pushnumber(L, dflt);
+        lua_setfield(L, -2, "default");
+        lua_pushnumber(L, step);
+        lua_setfield(L, -2, "step");
+        lua_pushboolean(L, animate);
+        lua_setfield(L, -2, "animate");
+        lua_rawseti(L, decl, n + 1);
+    }
+
+    /* the value: the host's, checked against the range, else the default */
+    registry_table(L, SET_KEY);
+    if (lua_getfield(L, -1, name) == LUA_TNUMBER) {
+        double v = lua_tonumber(L, -1);
+        if (v < lo || v > hi)
+            return pcl_error(L, "slider: the value %s set for %s is outside its range [%s, %s]",
+                             pcl_pushnum(L, v), name, pcl_pushnum(L, lo), pcl_pushnum(L, hi));
+        lua_pushnumber(L, v);
+        return 1;
+    }
+    lua_pushnumber(L, dflt);
+    return 1;
+}
+
+/* _tk.param_set(name, value): what the host does, for tests and Lua-side tools */
+static int l_param_set(lua_State *L) {
+    size_t len;
+    const char *name = luaL_checklstring(L, 1, &len);
+    if (!good_name(name, len)) return pcl_argerror(L, 1, "name", "a parameter name");
+    pcl_param_set(L, name, pcl_checkfinite(L, 2, "value"));
+    return 0;
+}
+
+/* _tk.params() -> the list of declarations {name, min, max, default, step, animate} */
+static int l_params(lua_State *L) {
+    pcl_push_params(L);
+    return 1;
+}
+
+void pcl_open_params(lua_State *L) {
+    int module = lua_gettop(L);
+    lua_pushcfunction(L, l_slider);
+    lua_setfield(L, module, "slider");
+    pcl_private(L, module);
+    lua_pushcfunction(L, l_param_set);
+    lua_setfield(L, -2, "param_set");
+    lua_pushcfunction(L, l_params);
+    lua_setfield(L, -2, "params");
+    lua_settop(L, module);
+}
