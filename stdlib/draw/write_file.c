@@ -1,10 +1,23 @@
-/* Choosing the format from a file name, and writing a file atomically: the picture goes to a
- * temporary file in the target's directory, which is renamed over the target only when it is
- * complete and closed without error.  Readers of the target never see a half-written file and
- * a failed save leaves nothing behind (and an existing file untouched). */
-#define _XOPEN_SOURCE 700   /* realpath, mkstemp, fchmod */
+/* Choosing the format from a file name, and writing a file safely (docs/safety.md):
+ *
+ * - atomically: the picture goes to a temporary file in the target's directory, renamed over
+ *   the target only when it is complete and closed without error, so readers never see half a
+ *   picture and a failed save leaves nothing behind (an existing file untouched);
+ * - only over regular files: a device, pipe, socket or folder at the path is never replaced
+ *   (renaming over /dev/null would swap the device for a picture);
+ * - through a symbolic link only to an existing regular file, which is replaced where it is;
+ *   a dangling link is refused, since following it would create a file in a place the user
+ *   did not name;
+ * - respecting permissions: a read-only file stays as it is, even for root; a replaced file
+ *   keeps its mode (and its owner, when we may set it);
+ * - cleaning up on signals: SIGINT, SIGTERM, SIGHUP and SIGQUIT that would end the process
+ *   remove the temporary file first; SIGXFSZ (a file-size limit) is ignored while writing, so
+ *   the write fails with "File too large" and is cleaned up like any other failure. */
+#define _XOPEN_SOURCE 700   /* realpath, mkstemp, fchmod, sigaction */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -31,14 +44,119 @@ static int fail(char *err, size_t errlen, const char *path, const char *reason, 
     return code;
 }
 
-/* The permissions a newly created file gets: 0666 less the umask.  An existing target keeps
- * its own permission bits, as it would when overwritten in place. */
-static mode_t new_file_mode(const char *target) {
-    struct stat st;
-    if (stat(target, &st) == 0 && S_ISREG(st.st_mode)) return st.st_mode & 07777;
+/* ---- the temporary file and signals ---------------------------------------------------------- */
+
+/* The temporary file being written, for the signal handlers: a fixed buffer, since a handler
+ * may not allocate. */
+static char active_tmp[PATH_MAX + 64];
+static volatile sig_atomic_t tmp_active;
+
+void pc_write_file_abort(void) {
+    if (tmp_active) {
+        tmp_active = 0;
+        unlink(active_tmp);   /* async-signal-safe */
+    }
+}
+
+static const int fatal_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+#define NFATAL (sizeof fatal_signals / sizeof fatal_signals[0])
+
+typedef struct {
+    struct sigaction old[NFATAL], old_xfsz;
+    int caught[NFATAL], xfsz;
+} signal_guard;
+
+/* A signal that would end the process: remove the temporary file, then die of it as before. */
+static void on_fatal_signal(int sig) {
+    pc_write_file_abort();
+    struct sigaction dfl;
+    memset(&dfl, 0, sizeof dfl);
+    dfl.sa_handler = SIG_DFL;
+    sigemptyset(&dfl.sa_mask);
+    sigaction(sig, &dfl, NULL);
+    raise(sig);   /* delivered when the handler returns: the process ends as it would have */
+}
+
+/* Only signals left at their default (fatal) action are caught: a program's own handler, such
+ * as the REPL's Ctrl-C, does not end the process and keeps working. */
+static void guard_signals(signal_guard *g) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sigemptyset(&sa.sa_mask);
+    for (size_t i = 0; i < NFATAL; i++) {
+        g->caught[i] = 0;
+        if (sigaction(fatal_signals[i], NULL, &g->old[i]) == 0 &&
+            !(g->old[i].sa_flags & SA_SIGINFO) && g->old[i].sa_handler == SIG_DFL) {
+            sa.sa_handler = on_fatal_signal;
+            g->caught[i] = sigaction(fatal_signals[i], &sa, NULL) == 0;
+        }
+    }
+    g->xfsz = 0;
+    if (sigaction(SIGXFSZ, NULL, &g->old_xfsz) == 0 && !(g->old_xfsz.sa_flags & SA_SIGINFO) &&
+        g->old_xfsz.sa_handler == SIG_DFL) {
+        sa.sa_handler = SIG_IGN;   /* write() then fails with EFBIG */
+        g->xfsz = sigaction(SIGXFSZ, &sa, NULL) == 0;
+    }
+}
+
+static void release_signals(signal_guard *g) {
+    for (size_t i = 0; i < NFATAL; i++)
+        if (g->caught[i]) sigaction(fatal_signals[i], &g->old[i], NULL);
+    if (g->xfsz) sigaction(SIGXFSZ, &g->old_xfsz, NULL);
+}
+
+/* ---- what may be replaced ------------------------------------------------------------------- */
+
+static int may_write(const char *target, const struct stat *st) {
+    if (geteuid() == 0) return (st->st_mode & 0222) != 0;   /* root: only the mode bits say no */
+    return faccessat(AT_FDCWD, target, W_OK, AT_EACCESS) == 0;
+}
+
+/* Decide where the picture goes.  Sets *target (path itself, or *resolved for a link) and
+ * *existing (with *st) when a file is replaced.  0, or an error put into err. */
+static int choose_target(const char *path, char **resolved, const char **target, int *existing,
+                         struct stat *st, char *err, size_t errlen) {
+    *target = path;
+    *existing = 0;
+    struct stat lst;
+    if (lstat(path, &lst) != 0) return 0;   /* a new file: mkstemp reports a bad folder */
+    if (S_ISLNK(lst.st_mode)) {
+        *resolved = realpath(path, NULL);
+        if (!*resolved) {
+            int e = errno;
+            if (e == ENOENT)
+                return fail(err, errlen, path, "it is a symbolic link to a missing file "
+                            "(pointcalc writes through a link only to an existing file)", PC_EIO);
+            return fail(err, errlen, path, strerror(e), PC_EIO);
+        }
+        *target = *resolved;
+        if (stat(*target, st) != 0) return fail(err, errlen, path, strerror(errno), PC_EIO);
+    } else {
+        *st = lst;
+    }
+    if (S_ISDIR(st->st_mode)) return fail(err, errlen, path, strerror(EISDIR), PC_EIO);
+    if (!S_ISREG(st->st_mode))
+        return fail(err, errlen, path, "it is not a regular file (a device, pipe or socket); "
+                    "pointcalc replaces only regular files", PC_EIO);
+    if (!may_write(*target, st))
+        return fail(err, errlen, path, "Permission denied (the file is read-only)", PC_EIO);
+    *existing = 1;
+    return 0;
+}
+
+/* The permissions a newly created file gets: 0666 less the umask. */
+static mode_t new_file_mode(void) {
     mode_t mask = umask(0);
     umask(mask);
     return 0666 & ~mask;
+}
+
+static int encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f) {
+    switch (fmt) {
+    case PC_FMT_PNG: return pc_encode_png(c, theme, f);
+    case PC_FMT_SVG: return pc_encode_svg(c, theme, f);
+    default: return pc_encode_ppm(c, theme, f);
+    }
 }
 
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
@@ -46,59 +164,68 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     if (fmt == PC_FMT_UNKNOWN)
         return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_EARG);
 
-    /* Write through a symbolic link to the file it names, as an in-place write would. */
-    const char *target = path;
     char *resolved = NULL;
-    struct stat lst;
-    if (lstat(path, &lst) == 0 && S_ISLNK(lst.st_mode) && (resolved = realpath(path, NULL)))
-        target = resolved;
+    const char *target;
+    int existing;
+    struct stat st;
+    int code = choose_target(path, &resolved, &target, &existing, &st, err, errlen);
+    if (code != 0) {
+        free(resolved);
+        return code;
+    }
 
     /* the temporary file: ".NAME.XXXXXX" beside the target (hidden, same file system) */
     const char *base = basename_of(target);
     size_t dirlen = (size_t)(base - target), baselen = strlen(base);
     if (baselen > 200) baselen = 200;
-    char *tmp = malloc(dirlen + baselen + 16);
-    if (!tmp) {
+    if (dirlen + baselen + 16 > sizeof active_tmp) {
         free(resolved);
-        return fail(err, errlen, path, strerror(ENOMEM), PC_ENOMEM);
+        return fail(err, errlen, path, strerror(ENAMETOOLONG), PC_EIO);
     }
+    char tmp[sizeof active_tmp];
     memcpy(tmp, target, dirlen);
     snprintf(tmp + dirlen, baselen + 16, ".%.*s.XXXXXX", (int)baselen, base);
 
+    signal_guard guard;
+    guard_signals(&guard);   /* before mkstemp: no moment with a file the handlers miss */
     int fd = mkstemp(tmp);
     if (fd < 0) {
         int e = errno;
-        free(tmp);
+        release_signals(&guard);
         free(resolved);
         return fail(err, errlen, path, strerror(e), PC_EIO);
     }
-    int e = 0, code = PC_OK;
+    memcpy(active_tmp, tmp, strlen(tmp) + 1);
+    tmp_active = 1;
+
+    int e = 0;
+    code = PC_OK;
     FILE *f = fdopen(fd, "wb");
     if (!f) {
         e = errno;
         close(fd);
     } else {
         errno = 0;
-        switch (fmt) {
-        case PC_FMT_PNG: code = pc_encode_png(c, theme, f); break;
-        case PC_FMT_SVG: code = pc_encode_svg(c, theme, f); break;
-        default: code = pc_encode_ppm(c, theme, f); break;
-        }
+        code = encode(c, fmt, theme, f);
         if (code != PC_OK) e = errno ? errno : (code == PC_ENOMEM ? ENOMEM : EIO);
         if (!e && fflush(f) != 0) e = errno;
-        if (!e && fchmod(fileno(f), new_file_mode(target)) != 0) e = errno;
+        if (!e && existing && geteuid() == 0)   /* root replacing a user's file: keep its owner */
+            (void)!fchown(fileno(f), st.st_uid, st.st_gid);
+        if (!e && fchmod(fileno(f), existing ? st.st_mode & 0777 : new_file_mode()) != 0)
+            e = errno;
         if (fclose(f) != 0 && !e) e = errno;
     }
     if (!e && rename(tmp, target) != 0) e = errno;
+    if (e) unlink(tmp);
+    tmp_active = 0;
+    release_signals(&guard);
     if (e) {
-        unlink(tmp);
         code = code == PC_ENOMEM ? code : PC_EIO;
         fail(err, errlen, path, strerror(e), code);
     } else {
         code = PC_OK;
         if (err && errlen) err[0] = 0;
     }
-    free(tmp);
     free(resolved);
     return code;
 }

@@ -29,7 +29,12 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
 
 /* Write to `path` in the format its extension names, atomically.  On failure returns
  * PC_EIO (or PC_EARG for an unknown extension) and puts
- * "cannot write 'PATH': REASON" into err. */
+ * "cannot write 'PATH': REASON" into err.  The rules (links, non-regular files, read-only
+ * files, signals) are in write_file.c and docs/safety.md. */
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen);
+
+/* Remove the temporary file of a write in progress, if any.  Async-signal-safe: for a
+ * program's own fatal-signal or time-limit handler. */
+void pc_write_file_abort(void);
 
 #endif
