@@ -64,3 +64,194 @@ int pc_bisect(pc_scalar_fn f, void *ud, double a, double b, double tol, double *
     if (iters) *iters = count;
     return PC_OK;
 }
+
+/* ---- Newton's method for small systems (Korotky & Vitovtov solve (23) this way) ---------- */
+#include <string.h>
+
+static double maxabs(int n, const double *v) {
+    double m = 0;
+    for (int i = 0; i < n; i++) m = fmax(m, fabs(v[i]));
+    return m;
+}
+
+/* Residuals at x; PC_ENONFINITE (and *bad) on the first NaN or infinity. */
+static int residuals(pc_system_fn f, void *ud, int n, const double *x, double *r, int *bad) {
+    int st = f(ud, x, r);
+    if (st != PC_OK) return st;
+    for (int i = 0; i < n; i++)
+        if (!isfinite(r[i])) {
+            if (bad) *bad = i;
+            return PC_ENONFINITE;
+        }
+    return PC_OK;
+}
+
+/* Gaussian elimination with partial pivoting that says which unknown has no pivot. */
+static int solve_pivot(int n, double *m, double *b, int *col) {
+    double scale = 0;
+    for (int i = 0; i < n * n; i++) scale = fmax(scale, fabs(m[i]));
+    for (int c = 0; c < n; c++) {
+        int p = c;
+        for (int i = c + 1; i < n; i++)
+            if (fabs(m[i * n + c]) > fabs(m[p * n + c])) p = i;
+        if (!(fabs(m[p * n + c]) > 1e-13 * scale)) {
+            *col = c;
+            return PC_ESINGULAR;
+        }
+        if (p != c) {
+            for (int j = 0; j < n; j++) {
+                double t = m[c * n + j]; m[c * n + j] = m[p * n + j]; m[p * n + j] = t;
+            }
+            double t = b[c]; b[c] = b[p]; b[p] = t;
+        }
+        for (int i = c + 1; i < n; i++) {
+            double q = m[i * n + c] / m[c * n + c];
+            for (int j = c; j < n; j++) m[i * n + j] -= q * m[c * n + j];
+            b[i] -= q * b[c];
+        }
+    }
+    for (int i = n - 1; i >= 0; i--) {
+        double s = b[i];
+        for (int j = i + 1; j < n; j++) s -= m[i * n + j] * b[j];
+        b[i] = s / m[i * n + i];
+    }
+    return PC_OK;
+}
+
+int pc_newton(int n, pc_system_fn f, void *ud, double *x, double tol, int maxit, int *iters,
+              int *worst) {
+    if (iters) *iters = 0;
+    if (worst) *worst = -1;
+    if (n < 1 || n > PC_NEWTON_MAXN) return PC_EDIM;
+    for (int i = 0; i < n; i++)
+        if (!isfinite(x[i])) {
+            if (worst) *worst = i;
+            return PC_ENONFINITE;
+        }
+    if (!(tol > 0)) tol = 1e-12;
+    double r[PC_NEWTON_MAXN], rt[PC_NEWTON_MAXN], xt[PC_NEWTON_MAXN], dx[PC_NEWTON_MAXN];
+    double J[PC_NEWTON_MAXN * PC_NEWTON_MAXN];
+    int st = residuals(f, ud, n, x, r, worst);
+    if (st != PC_OK) return st;
+    double norm = maxabs(n, r);
+    for (int it = 1; it <= maxit; it++) {
+        if (iters) *iters = it;
+        if (norm == 0) return PC_OK;
+        for (int j = 0; j < n; j++) {   /* forward differences, one column per unknown */
+            double e = 1e-7 * fmax(1, fabs(x[j]));
+            memcpy(xt, x, sizeof(double) * (size_t)n);
+            xt[j] += e;
+            st = residuals(f, ud, n, xt, rt, worst);
+            if (st != PC_OK) return st;
+            for (int i = 0; i < n; i++) J[i * n + j] = (rt[i] - r[i]) / e;
+        }
+        for (int i = 0; i < n; i++) dx[i] = -r[i];
+        int col = 0;
+        if (solve_pivot(n, J, dx, &col) != PC_OK) {
+            if (worst) *worst = col;
+            return PC_ESINGULAR;
+        }
+        /* step halving: the full step first; accept the first step that does not raise max|f| */
+        double a = 1, tnorm = norm;
+        for (int k = 0; k < 30; k++, a *= .5) {
+            for (int i = 0; i < n; i++) xt[i] = x[i] + a * dx[i];
+            st = residuals(f, ud, n, xt, rt, NULL);
+            if (st != PC_OK && st != PC_ENONFINITE) return st;
+            tnorm = st == PC_OK ? maxabs(n, rt) : INFINITY;
+            if (tnorm <= norm) break;
+        }
+        if (!(tnorm <= norm)) break;    /* no step lowers the residual: give up */
+        int small = 1;
+        for (int i = 0; i < n; i++) {
+            if (fabs(a * dx[i]) > tol * (1 + fabs(x[i]))) small = 0;
+            x[i] = xt[i];
+            r[i] = rt[i];
+        }
+        norm = tnorm;
+        if (small) return PC_OK;
+    }
+    if (worst) {
+        int w = 0;
+        for (int i = 1; i < n; i++)
+            if (fabs(r[i]) > fabs(r[w])) w = i;
+        *worst = w;
+    }
+    return PC_ENOCONVERGE;
+}
+
+/* ---- BFGS (the elastic reference curve: minimum bending energy) --------------------------- */
+
+static int gradient(pc_objective_fn f, void *ud, int n, double *x, double h, double *g) {
+    for (int i = 0; i < n; i++) {
+        double xi = x[i], e = h * fmax(1, fabs(xi));
+        x[i] = xi + e;
+        double fp = f(ud, x);
+        x[i] = xi - e;
+        double fm = f(ud, x);
+        x[i] = xi;
+        g[i] = (fp - fm) / (2 * e);
+        if (!isfinite(g[i])) return PC_ENONFINITE;
+    }
+    return PC_OK;
+}
+
+int pc_minimize(int n, pc_objective_fn f, void *ud, double *x, double gtol, double h, int maxit,
+                double *fx, int *iters) {
+    if (iters) *iters = 0;
+    if (n < 1 || n > PC_NEWTON_MAXN) return PC_EDIM;
+    if (!(h > 0)) h = 1e-6;
+    double H[PC_NEWTON_MAXN * PC_NEWTON_MAXN], g[PC_NEWTON_MAXN], gn[PC_NEWTON_MAXN];
+    double d[PC_NEWTON_MAXN], xn[PC_NEWTON_MAXN], s[PC_NEWTON_MAXN], y[PC_NEWTON_MAXN];
+    double Hy[PC_NEWTON_MAXN];
+    double f0 = f(ud, x);
+    if (!isfinite(f0)) return PC_ENONFINITE;
+    if (gradient(f, ud, n, x, h, g) != PC_OK) return PC_ENONFINITE;
+    for (int i = 0; i < n * n; i++) H[i] = (i % (n + 1)) == 0;
+    int st = PC_ENOCONVERGE, stall = 0;
+    for (int it = 1; it <= maxit; it++) {
+        if (iters) *iters = it;
+        if (maxabs(n, g) < gtol) { st = PC_OK; break; }
+        double gd = 0;
+        for (int i = 0; i < n; i++) {
+            d[i] = 0;
+            for (int j = 0; j < n; j++) d[i] -= H[i * n + j] * g[j];
+            gd += g[i] * d[i];
+        }
+        if (!(gd < 0)) {   /* not a descent direction: restart from the gradient */
+            for (int i = 0; i < n * n; i++) H[i] = (i % (n + 1)) == 0;
+            gd = 0;
+            for (int i = 0; i < n; i++) { d[i] = -g[i]; gd -= g[i] * g[i]; }
+        }
+        double a = 1, fnew = f0;
+        int found = 0;
+        for (int k = 0; k < 60; k++, a *= .5) {
+            for (int i = 0; i < n; i++) xn[i] = x[i] + a * d[i];
+            fnew = f(ud, xn);
+            if (isfinite(fnew) && fnew <= f0 + 1e-4 * a * gd) { found = 1; break; }
+        }
+        if (!found || !(fnew < f0)) { st = PC_OK; break; }   /* no further decrease possible */
+        /* decreases at the rounding level of f for several steps: the minimum as the
+         * differences see it */
+        stall = f0 - fnew <= 1e-15 * fabs(f0) ? stall + 1 : 0;
+        if (stall >= 8) { f0 = fnew; memcpy(x, xn, sizeof(double) * (size_t)n); st = PC_OK; break; }
+        if (gradient(f, ud, n, xn, h, gn) != PC_OK) return PC_ENONFINITE;
+        double sy = 0, yHy = 0;
+        for (int i = 0; i < n; i++) { s[i] = xn[i] - x[i]; y[i] = gn[i] - g[i]; sy += s[i] * y[i]; }
+        if (sy > 1e-14) {
+            for (int i = 0; i < n; i++) {
+                Hy[i] = 0;
+                for (int j = 0; j < n; j++) Hy[i] += H[i * n + j] * y[j];
+                yHy += y[i] * Hy[i];
+            }
+            for (int i = 0; i < n; i++)
+                for (int j = 0; j < n; j++)
+                    H[i * n + j] += (sy + yHy) * s[i] * s[j] / (sy * sy) -
+                                    (Hy[i] * s[j] + s[i] * Hy[j]) / sy;
+        }
+        memcpy(x, xn, sizeof(double) * (size_t)n);
+        memcpy(g, gn, sizeof(double) * (size_t)n);
+        f0 = fnew;
+    }
+    if (fx) *fx = f0;
+    return st;
+}

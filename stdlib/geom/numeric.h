@@ -26,4 +26,36 @@ double pc_oresme_at(const double *y, int m, double t);
 typedef double (*pc_scalar_fn)(double x, void *ud);
 int pc_bisect(pc_scalar_fn f, void *ud, double a, double b, double tol, double *x, int *iters);
 
+/* --- small nonlinear systems and minimisation (Korotky's Ferguson splines, eq. (23), and the
+ * elastic reference curve) ---------------------------------------------------------------- */
+
+/* n equations f(x) = 0 in n unknowns: write the n residuals into f; return PC_OK or a status
+ * (which ends the solve with it). */
+typedef int (*pc_system_fn)(void *ud, const double *x, double *f);
+
+/* Newton's method with a forward-difference Jacobian and step halving on max |f| (the full
+ * step is tried first, so near a root it is plain Newton).  x holds the start and gets the
+ * root.  Converged when the step is below tol (1 + |x|) in every unknown and max |f| has not
+ * grown.  n <= PC_NEWTON_MAXN.  Failures say where: *worst (if not NULL) gets the unknown
+ * whose pivot vanished (PC_ESINGULAR), or the equation with the largest residual
+ * (PC_ENOCONVERGE after maxit steps), or the first non-finite residual (PC_ENONFINITE).
+ * *iters (if not NULL) gets the number of Newton steps. */
+#define PC_NEWTON_MAXN 64
+int pc_newton(int n, pc_system_fn f, void *ud, double *x, double tol, int maxit, int *iters,
+              int *worst);
+
+/* A smooth objective of n unknowns; NaN or an infinity means "outside the domain" (the line
+ * search then steps back). */
+typedef double (*pc_objective_fn)(void *ud, const double *x);
+
+/* Deterministic quasi-Newton minimisation (BFGS with an Armijo line search, central
+ * difference gradients with step h (1e-6 relative when h <= 0)).  x holds the start and gets
+ * the minimiser, *fx (if not NULL) the value there.  Stops when the largest gradient
+ * component is below gtol, or when no step along the search direction lowers f any more
+ * (the minimum to the precision of the differences).  PC_ENOCONVERGE after maxit
+ * iterations, PC_ENONFINITE if f is not finite at the start, PC_EDIM for n outside
+ * 1..PC_NEWTON_MAXN. */
+int pc_minimize(int n, pc_objective_fn f, void *ud, double *x, double gtol, double h, int maxit,
+                double *fx, int *iters);
+
 #endif
