@@ -159,3 +159,47 @@ int pc_tridiag_solve(int n, int nrhs, const double *a, const double *b, const do
     free(work);
     return st;
 }
+
+int pc_lsq_solve(int m, int n, double *a, double *b) {
+    if (n < 1 || m < n) return PC_EDIM;
+    double scale = 0;
+    for (int i = 0; i < m; i++) {
+        if (!isfinite(b[i])) return PC_ENONFINITE;
+        for (int j = 0; j < n; j++) {
+            if (!isfinite(a[(size_t)i * n + j])) return PC_ENONFINITE;
+        }
+    }
+    for (int j = 0; j < n; j++) {                      /* the largest column norm */
+        double s = 0;
+        for (int i = 0; i < m; i++) s = hypot(s, a[(size_t)i * n + j]);
+        scale = fmax(scale, s);
+    }
+    if (!(scale > 0)) return PC_ESINGULAR;
+    for (int k = 0; k < n; k++) {
+        /* the reflection H = I - 2 v v^T / (v^T v) sending column k below the diagonal to 0 */
+        double norm = 0;
+        for (int i = k; i < m; i++) norm = hypot(norm, a[(size_t)i * n + k]);
+        if (!(norm > PC_DEGEN_TOL * scale)) return PC_ESINGULAR;
+        double akk = a[(size_t)k * n + k];
+        double alpha = akk > 0 ? -norm : norm;         /* no cancellation in v_k = akk - alpha */
+        double vk = akk - alpha, vtv = vk * vk;
+        for (int i = k + 1; i < m; i++) vtv += a[(size_t)i * n + k] * a[(size_t)i * n + k];
+        a[(size_t)k * n + k] = vk;                      /* v is column k from row k on */
+        for (int j = k + 1; j <= n; j++) {             /* j == n: the right-hand side */
+            double s = 0;
+            for (int i = k; i < m; i++) s += a[(size_t)i * n + k] * (j < n ? a[(size_t)i * n + j] : b[i]);
+            s = 2 * s / vtv;
+            for (int i = k; i < m; i++) {
+                if (j < n) a[(size_t)i * n + j] -= s * a[(size_t)i * n + k];
+                else b[i] -= s * a[(size_t)i * n + k];
+            }
+        }
+        a[(size_t)k * n + k] = alpha;                  /* R's diagonal */
+    }
+    for (int i = n - 1; i >= 0; i--) {                 /* R x = Q^T b */
+        double s = b[i];
+        for (int j = i + 1; j < n; j++) s -= a[(size_t)i * n + j] * b[j];
+        b[i] = s / a[(size_t)i * n + i];
+    }
+    return PC_OK;
+}

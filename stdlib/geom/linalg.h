@@ -28,4 +28,12 @@ double pc_det(int k, const double *m);
 int pc_tridiag_solve(int n, int nrhs, const double *a, const double *b, const double *c,
                      double *d, int cyclic);
 
+/* Least squares: the x (n values) minimising |a x - b| for an m x n matrix a (m >= n, row-major,
+ * destroyed) and b (m values, overwritten: x in b[0..n-1], and the norm of b[n..m-1] is the
+ * residual |a x - b|).  Householder QR, so the condition number is not squared as by the normal
+ * equations (Buimov §2.8.6 reconstructs a point from two views and a camera from six points
+ * this way).  PC_EDIM unless 1 <= n <= m, PC_ENONFINITE for NaN/inf, PC_ESINGULAR if the
+ * columns are dependent (a diagonal entry of R below PC_DEGEN_TOL times the largest column). */
+int pc_lsq_solve(int m, int n, double *a, double *b);
+
 #endif
