@@ -35,6 +35,10 @@ static lsurf *pushsurf(lua_State *L, pc_surface *s, int status, const char *kind
     return u;
 }
 
+void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
+    (void)pushsurf(L, s, PC_OK, kind);
+}
+
 static lsurf *checksurf(lua_State *L, int idx, const char *fname) {
     lsurf *u = luaL_testudata(L, idx, SURF_MT);
     if (!u || !u->s) pcl_argerror_full(L, fname, idx, idx, "self", "a surface");

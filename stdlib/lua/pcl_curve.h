@@ -13,6 +13,8 @@ pc_curve *pcl_tocurve(lua_State *L, int idx);
 pc_surface *pcl_tosurface(lua_State *L, int idx);
 /* Push a curve object owning the reference c (kind: the constructor's name, static). */
 void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
+/* Push a surface object owning the reference s (not NULL; kind as for curves). */
+void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind);
 
 /* The knots argument at arg of a B-spline of ncp control points: nil ("open"), "open",
  * "uniform", "periodic", or a non-decreasing list of ncp + degree + 1 numbers (then *knots
