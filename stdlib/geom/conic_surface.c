@@ -162,7 +162,7 @@ static int sweep_eval(void *ud, double u, double v, int order, double *out) {
 }
 
 pc_surface *pc_surface_conic_sweep(pc_curve *U, pc_curve *V, pc_curve *T, pc_curve *P,
-                                   pc_curve *Q, int *status) {
+                                   pc_curve *Q, double *bad_u, int *status) {
     pc_curve *c[5] = {U, V, T, P, Q};
     for (int i = 0; i < 5; i++)
         if (!c[i] || c[i]->dim != 3) {
@@ -176,7 +176,22 @@ pc_surface *pc_surface_conic_sweep(pc_curve *U, pc_curve *V, pc_curve *T, pc_cur
     }
     for (int i = 0; i < 5; i++) d->c[i] = pc_curve_retain(c[i]);
     pc_surface *s = pc_surface_func(3, 0, 1, 0, 1, sweep_eval, sweep_free, d, status);
-    if (!s) sweep_free(d);
+    if (!s) {
+        sweep_free(d);
+        return NULL;
+    }
+    /* every generator must exist: check the data on a fine grid of u, so that a script learns
+     * of degenerate guides when it builds the surface, not when it draws it */
+    for (int i = 0; i <= 64; i++) {
+        double out[4];
+        int st = sweep_eval(d, i / 64.0, .5, 0, out);
+        if (st != PC_OK) {
+            if (bad_u) *bad_u = i / 64.0;
+            *status = st;
+            pc_surface_release(s);
+            return NULL;
+        }
+    }
     return s;
 }
 

@@ -31,9 +31,11 @@ const char *pc_conic_kind(double w);
  * conoid, a cylindroid, a hyperbolic paraboloid or a plane; a P or Q of weight 0 is a tangent
  * direction).  Each curve is 3-D and runs over its own domain, mapped to u in [0, 1]; v in
  * [0, 1] runs along the arc from U to V.  The surface keeps references to the five curves.
- * Evaluation fails with the arc's status where the data are degenerate. */
+ * The data are checked at u = 0, 1/64, ..., 1: where no arc exists the constructor fails
+ * with the arc's status and *bad_u (if not NULL) gets that u; between those values an
+ * evaluation may still fail with it. */
 pc_surface *pc_surface_conic_sweep(pc_curve *U, pc_curve *V, pc_curve *T, pc_curve *P,
-                                   pc_curve *Q, int *status);
+                                   pc_curve *Q, double *bad_u, int *status);
 
 /* The elliptic dome over the rectangle [0, 2 a0] x [0, 2 b0] (+ origin, 3 doubles or NULL):
  * z^2/c0^2 = x (2 a0 - x) y (2 b0 - y) / (a0^2 b0^2) (B-4a, reconstructed), whose sections

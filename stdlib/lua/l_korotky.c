@@ -33,7 +33,7 @@ static int read_points(lua_State *L, const char *fn, int arg, double *p, int max
         pcl_value *v = pcl_tovalue(L, -1);
         if (!v || v->n != 2 || v->h[2] != 1)
             return pcl_error(L, "%s: argument #%d (points) [%d] must be a 2-D point, got %s", fn, arg,
-                             i, pcl_shown(L, -1));
+                             i, pcl_shown(L, lua_gettop(L)));
         p[2 * i - 2] = v->h[0];
         p[2 * i - 1] = v->h[1];
         lua_pop(L, 1);
@@ -72,7 +72,7 @@ static void read_tangents(lua_State *L, const char *fn, int arg, int n, double *
         lua_geti(L, arg, i);
         if (!read_tangent(L, -1, T + 2 * i - 2))
             pcl_error(L, "%s: argument #%d (tangents) [%d] must be a slope or a 2-D vector, got %s",
-                      fn, arg, i, pcl_shown(L, -1));
+                      fn, arg, i, pcl_shown(L, lua_gettop(L)));
         lua_pop(L, 1);
     }
 }
@@ -86,7 +86,7 @@ static void read_list(lua_State *L, const char *fn, int idx, const char *what, i
     for (int i = 1; i <= n; i++) {
         lua_geti(L, idx, i);
         if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-            pcl_error(L, "%s: %s [%d] must be a finite number, got %s", fn, what, i, pcl_shown(L, -1));
+            pcl_error(L, "%s: %s [%d] must be a finite number, got %s", fn, what, i, pcl_shown(L, lua_gettop(L)));
         out[i - 1] = lua_tonumber(L, -1);
         lua_pop(L, 1);
     }
@@ -107,7 +107,7 @@ static double opt_field(lua_State *L, const char *fn, int opts, const char *fiel
     double x = dflt;
     if (!lua_isnil(L, -1)) {
         if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-            pcl_error(L, "%s: option %s must be a finite number, got %s", fn, field, pcl_shown(L, -1));
+            pcl_error(L, "%s: option %s must be a finite number, got %s", fn, field, pcl_shown(L, lua_gettop(L)));
         x = lua_tonumber(L, -1);
     }
     lua_pop(L, 1);
@@ -150,7 +150,7 @@ static int l_poly_spline(lua_State *L) {
         if (lua_type(L, -1) == LUA_TSTRING && !strcmp(e, "clamped")) ends = PC_END_CLAMPED;
         else if (!(lua_type(L, -1) == LUA_TSTRING && !strcmp(e, "natural")))
             return pcl_error(L, "%s: option ends must be \"natural\" or \"clamped\", got %s", fn,
-                             pcl_shown(L, -1));
+                             pcl_shown(L, lua_gettop(L)));
     }
     double s0 = 0, s1 = 0;
     if (ends == PC_END_CLAMPED) {
@@ -200,11 +200,11 @@ static int l_ferguson_lambda(lua_State *L) {
     lua_getfield(L, 2, "TA");
     if (!read_tangent(L, -1, TA))
         return pcl_error(L, "%s: option TA (the tangent at the first point) must be a slope or a 2-D vector, got %s",
-                         fn, pcl_shown(L, -1));
+                         fn, pcl_shown(L, lua_gettop(L)));
     lua_getfield(L, 2, "TE");
     if (!read_tangent(L, -1, TE))
         return pcl_error(L, "%s: option TE (the tangent at the last point) must be a slope or a 2-D vector, got %s",
-                         fn, pcl_shown(L, -1));
+                         fn, pcl_shown(L, lua_gettop(L)));
     double lA = hypot(TA[0], TA[1]), lE = hypot(TE[0], TE[1]);
     if (!(lA > 0) || !(lE > 0)) return pcl_error(L, "%s: the end tangents must not be zero vectors", fn);
     double wA = opt_field(L, fn, 2, "wA", 1), wE = opt_field(L, fn, 2, "wE", 1);
@@ -287,7 +287,7 @@ static int l_elastic(lua_State *L) {
             lua_geti(L, e, i + 1);
             if (!read_tangent(L, -1, t) || !(hypot(t[0], t[1]) > 0))
                 return pcl_error(L, "%s: option ends [%d] must be a slope or a non-zero 2-D vector, got %s",
-                                 fn, i + 1, pcl_shown(L, -1));
+                                 fn, i + 1, pcl_shown(L, lua_gettop(L)));
             angles[i] = atan2(t[1], t[0]);
             lua_pop(L, 1);
         }
@@ -387,12 +387,17 @@ static int l_conic_sweep(lua_State *L) {
     for (int i = 0; i < 5; i++) {
         lua_getfield(L, 1, names[i]);
         c[i] = pcl_tocurve(L, -1);
-        if (!c[i]) return pcl_error(L, "%s: field %s must be a 3-D curve, got %s", fn, names[i], pcl_shown(L, -1));
+        if (!c[i]) return pcl_error(L, "%s: field %s must be a 3-D curve, got %s", fn, names[i], pcl_shown(L, lua_gettop(L)));
         if (c[i]->dim != 3)
             return pcl_error(L, "%s: field %s must be a 3-D curve, got a %d-D one", fn, names[i], c[i]->dim);
     }
     int st;
-    pc_surface *s = pc_surface_conic_sweep(c[0], c[1], c[2], c[3], c[4], &st);
+    double u = 0;
+    pc_surface *s = pc_surface_conic_sweep(c[0], c[1], c[2], c[3], c[4], &u, &st);
+    if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
+        return pcl_error(L, "%s: no conic through U, V, T with the tangents towards P and Q at u = %s (%s)",
+                         fn, pcl_pushnum(L, u),
+                         st == PC_EDOMAIN ? "T must lie between the tangent lines" : pc_strerror(st));
     if (!s) return pcl_statuserror(L, fn, st, NULL);
     pcl_pushsurface(L, s, "korotky.conic_sweep");
     return 1;
