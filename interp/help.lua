@@ -470,6 +470,41 @@ def(":quit", ":quit",
   "Leave the REPL (so does Ctrl-D).", "command")
 
 -- ---------------------------------------------------------------------------------------
+area("korotky", "Nature-like curves and conic surfaces (korotky.*)",
+  "Korotky's articles: the polynomial and Ferguson splines through support points, the elastic " ..
+  "reference curve (least bending energy) with the measures that compare a model with it, conic " ..
+  "arcs from three points and two tangents, conic sweeps and elliptic domes. A tangent is a slope " ..
+  "tg(delta) or a 2-D vector.",
+  "korotky.md")
+
+def("korotky.poly_spline", "korotky.poly_spline(points [, {ends = \"natural\"|\"clamped\", s0 =, s1 =}]) -> curve, coef",
+  "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x.")
+def("korotky.ferguson", "korotky.ferguson(points, tangents, moduli) -> curve",
+  "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment.")
+def("korotky.ferguson_lambda", "korotky.ferguson_lambda(points, {TA =, TE =, wA = 1, wE = 1, lambda = {...}}) -> curve",
+  "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints.")
+def("korotky.ferguson_tangents", "korotky.ferguson_tangents(points, tangents [, {wA = 1, wE = 1, start = {...}}]) -> curve, moduli",
+  "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28)).")
+def("korotky.ferguson_substitution", "korotky.ferguson_substitution(points, tangents, wA, z1 [, \"min\"|\"max\"]) -> curve, moduli, quadratics",
+  "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29)).")
+def("korotky.elastic", "korotky.elastic(points [, {ends = {tA, tE}, pieces = 2}]) -> curve, energy",
+  "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length; free ends unless ends are given.")
+def("korotky.deviation", "korotky.deviation(model, reference [, samples]) -> number",
+  "The largest distance between two curves (two-sided Hausdorff distance).")
+def("korotky.joint_jumps", "korotky.joint_jumps(curve) -> dkappa, dangle, knot",
+  "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump.")
+def("korotky.energy", "korotky.energy(curve) -> number",
+  "The bending energy, the integral of kappa^2 ds over the curve.")
+def("korotky.conic_arc", "korotky.conic_arc(U, tU, V, tV, T) -> curve, w, kind",
+  "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\".")
+def("korotky.conic_sweep", "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s",
+  "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1]).")
+def("korotky.dome_rect", "korotky.dome_rect(a0, b0, c0 [, origin]) -> s",
+  "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses.")
+def("korotky.dome_tri", "korotky.dome_tri(A, B, C, h | D) -> s",
+  "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D); u-isolines are the ellipses parallel to BC.")
+
+-- ---------------------------------------------------------------------------------------
 
 -- The entry for a name, accepting "show" for ":show" when no API name is "show".
 function H.find(name)
