@@ -304,7 +304,35 @@ pc_curve *pc_curve_arc3(const double p1[2], const double p2[2], const double p3[
     double a3 = atan2(p3[1] - ce.c[1], p3[0] - ce.c[0]);
     while (a2 < a1) a2 += 2 * PI;
     while (a3 < a1) a3 += 2 * PI;
-    if (a2 <= a3) return pc_curve_ellipse(ce.c, ce.r, ce.r, a1, a3, status);  /* p1, p2, p3 */
-    while (a1 < a3) a1 += 2 * PI;        /* counter-clockwise p3, p2, p1 */
-    return pc_curve_ellipse(ce.c, ce.r, ce.r, a3, a1, status);
+    double t0 = a1, t1 = a3;               /* counter-clockwise p1, p2, p3 */
+    if (a2 > a3) {                         /* counter-clockwise p3, p2, p1 */
+        a3 = atan2(p3[1] - ce.c[1], p3[0] - ce.c[0]);
+        while (a1 <= a3) a1 += 2 * PI;
+        t0 = a3;
+        t1 = a1;
+    }
+    double k = floor((t0 + PI) / (2 * PI));  /* the start angle in [-pi, pi) */
+    return pc_curve_ellipse(ce.c, ce.r, ce.r, t0 - 2 * PI * k, t1 - 2 * PI * k, status);
+}
+
+pc_curve *pc_curve_arc_dir(const double c[2], double r, const double a[2], const double dir[2],
+                           const double b[2], int *status) {
+    if (!finite2(c) || !finite2(a) || !finite2(b) || !finite2(dir) || !isfinite(r)) {
+        *status = PC_ENONFINITE;
+        return NULL;
+    }
+    double ra[2] = {a[0] - c[0], a[1] - c[1]}, rb[2] = {b[0] - c[0], b[1] - c[1]};
+    double turn = ra[0] * dir[1] - ra[1] * dir[0];      /* > 0: counter-clockwise at a */
+    if (!(r > 0) || fabs(hypot(ra[0], ra[1]) - r) > 1e-9 * r || fabs(hypot(rb[0], rb[1]) - r) > 1e-9 * r ||
+        !(fabs(turn) > PC_DEGEN_TOL * r * hypot(dir[0], dir[1])) || (a[0] == b[0] && a[1] == b[1])) {
+        *status = PC_EDOMAIN;
+        return NULL;
+    }
+    double ta = atan2(ra[1], ra[0]), tb = atan2(rb[1], rb[0]);
+    if (turn > 0) {
+        while (tb <= ta) tb += 2 * PI;
+        return pc_curve_ellipse(c, r, r, ta, tb, status);
+    }
+    while (ta <= tb) ta += 2 * PI;
+    return pc_curve_ellipse(c, r, r, tb, ta, status);
 }

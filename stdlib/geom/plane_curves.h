@@ -90,5 +90,11 @@ pc_curve *pc_curve_hyperbola(double A, double B, double t0, double t1, int *stat
 /* The arc of a circle through three points, counter-clockwise from p1 or p3 (whichever
  * starts the arc that passes through p2).  Statuses of pc_circle3. */
 pc_curve *pc_curve_arc3(const double p1[2], const double p2[2], const double p3[2], int *status);
+/* The arc of the circle (c, r) from a to b that leaves a along dir (a and b on the circle,
+ * within 1e-9 r), counter-clockwise over increasing angles: from a when dir turns
+ * counter-clockwise about c, else from b.  PC_EDOMAIN if a point is off the circle, dir is
+ * along the radius, or a = b. */
+pc_curve *pc_curve_arc_dir(const double c[2], double r, const double a[2], const double dir[2],
+                           const double b[2], int *status);
 
 #endif

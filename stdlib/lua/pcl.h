@@ -38,6 +38,7 @@ void pcl_open_surface(lua_State *L);  /* surface.* (l_surface.c) */
 void pcl_open_camera(lua_State *L);   /* camera, drawing curves as paths (l_camera.c) */
 void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
 void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic surfaces (l_korotky.c) */
+void pcl_open_buimov(lua_State *L);   /* plane.*, buimov.*: the textbook's constructions (l_buimov.c) */
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
 pc_map *pcl_tomap(lua_State *L, int idx);

@@ -29,6 +29,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_camera(L);
     pcl_open_params(L);
     pcl_open_korotky(L);
+    pcl_open_buimov(L);
     pcl_open_curvilinear(L);
     pcl_open_complex(L);
     run_lua_helpers(L);

@@ -224,6 +224,21 @@ static void conic_curves(void **st) {
     }
     assert_true(through);
     pc_curve_release(arc);
+    /* Fig 3.1: from (1, 1) along slope 1 towards x = 3, on the circle (3, -1), r = sqrt 8: the
+     * arc turns clockwise to (3, 1.828427) through the top (3 - 2, ...), a quarter turn less */
+    double cc[2] = {3, -1}, s1[2] = {1, 1}, dir[2] = {1, 1}, e1[2] = {3, -1 + sqrt(8)};
+    arc = pc_curve_arc_dir(cc, sqrt(8), s1, dir, e1, &s);
+    assert_non_null(arc);
+    NEAR(arc->t1 - arc->t0, PI / 4, 1e-12);          /* 135 degrees -> 90 degrees */
+    pc_curve_eval(arc, arc->t0, x); NEAR(x[0], 3, 1e-12); NEAR(x[1], -1 + sqrt(8), 1e-12);
+    pc_curve_eval(arc, arc->t1, x); NEAR(x[0], 1, 1e-12); NEAR(x[1], 1, 1e-12);
+    pc_curve_release(arc);
+    double back[2] = {-1, -1};                        /* the other way round: 7/4 of the turn */
+    arc = pc_curve_arc_dir(cc, sqrt(8), s1, back, e1, &s);
+    NEAR(arc->t1 - arc->t0, 7 * PI / 4, 1e-12);
+    pc_curve_release(arc);
+    double radial[2] = {-1, 1};
+    assert_null(pc_curve_arc_dir(cc, sqrt(8), s1, radial, e1, &s)); assert_int_equal(s, PC_EDOMAIN);
     assert_null(pc_curve_ellipse(c, 0, 1, 0, 1, &s)); assert_int_equal(s, PC_EDOMAIN);
     assert_null(pc_curve_ellipse(c, 1, 1, 1, 1, &s)); assert_int_equal(s, PC_EDOMAIN);
     assert_null(pc_curve_parabola(1, 0, NAN, &s)); assert_int_equal(s, PC_ENONFINITE);
