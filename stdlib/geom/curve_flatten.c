@@ -8,7 +8,8 @@
  * for straight); otherwise it is halved, down to MAXDEPTH halvings.  An interval where the
  * image fails (PC_IMPROPER, PC_ENONFINITE) at one of these five points, or where the sign of
  * the curve's weight differs between them, contains a point at infinity: it is bisected down to
- * BADDEPTH halvings and the polyline is broken there.  At MAXDEPTH an interval still too far
+ * BADDEPTH halvings and the polyline is broken there (an interval with no image at any of
+ * the five points is skipped whole).  At MAXDEPTH an interval still too far
  * from its chord is accepted unless its chord is longer than JUMP tol: then the curve jumps
  * (a pole of the projection, a discontinuous callback) and the polyline is broken instead. */
 #include "curve_impl.h"
@@ -129,12 +130,17 @@ static int subdivide(flat *f, const fpt *pa, const fpt *pb) {
         if ((st = point(f, ta + (tm - ta) / 2, &q1)) || (st = point(f, tm + (tb - tm) / 2, &q3)))
             return st;
         const fpt *five[5] = {&I.a, &q1, &I.m, &q3, &I.b};
-        int bad = 0;
-        for (int i = 0; i < 5; i++)
+        int bad = 0, nbad = 0;
+        for (int i = 0; i < 5; i++) {
             if (five[i]->bad || five[i]->sg != I.a.sg || five[i]->sg == 0) bad = 1;
+            nbad += five[i]->bad;
+        }
         int can_split = tm > ta && tm < tb && q1.t > ta && q1.t < tm && q3.t > tm && q3.t < tb;
         if (bad) {
-            if (I.depth < BADDEPTH && can_split) goto split;
+            /* bisect towards where the image begins or the weight changes sign; an interval
+             * without an image at all five points is skipped (halving it all the way down
+             * would cost 2^BADDEPTH evaluations) */
+            if (nbad < 5 && I.depth < BADDEPTH && can_split) goto split;
             f->pen_up = 1;
             continue;
         }
