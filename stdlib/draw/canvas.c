@@ -6,6 +6,7 @@
 #include <string.h>
 #include "canvas.h"
 #include "canvas_internal.h"
+#include "qbscreen.h"
 
 /* VGA DAC values are 6-bit; widen them the way VGA hardware and emulators do. */
 static uint8_t dac8(int v) { return (uint8_t)((v << 2) | (v >> 4)); }
@@ -56,13 +57,18 @@ void pc_palette_default(pc_rgb *pal, int ncolors) {
     }
     for (int i = 0; i < 16; i++) pal[i] = dac(ega16[i][0], ega16[i][1], ega16[i][2]);
     if (ncolors == 2) pal[1] = dac(63, 63, 63);   /* two colours: white ink, as SCREEN 2 */
+    if (ncolors == 4) {   /* four: SCREEN 1's palette 1, light cyan, light magenta, white */
+        pal[1] = dac(21, 63, 63);
+        pal[2] = dac(63, 21, 63);
+        pal[3] = dac(63, 63, 63);
+    }
 }
 
 int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return pc_fail(c, "screen size %dx%d out of range 1..16384", width, height);
-    if (ncolors != 2 && ncolors != 16 && ncolors != 256)
-        return pc_fail(c, "number of colours must be 2, 16 or 256, got %d", ncolors);
+    if (ncolors != 2 && ncolors != 4 && ncolors != 16 && ncolors != 256)
+        return pc_fail(c, "number of colours must be 2, 4, 16 or 256, got %d", ncolors);
     uint16_t *px = calloc((size_t)width * height, sizeof *px);
     if (!px) return pc_fail_code(c, PC_ENOMEM, "out of memory for a %dx%d screen", width, height);
     if (!c->palette && !(c->palette = malloc(256 * sizeof *c->palette))) {
@@ -110,11 +116,9 @@ pc_canvas *pc_canvas_new(int width, int height, int ncolors) {
 }
 
 pc_canvas *pc_canvas_new_mode(int mode) {
-    switch (mode) {
-    case 12: return pc_canvas_new(640, 480, 16);
-    case 13: return pc_canvas_new(320, 200, 256);
-    default: return NULL;
-    }
+    pc_mode_info m;   /* QBasic's modes: qbscreen.c */
+    if (pc_mode_info_of(mode, &m) != PC_OK) return NULL;
+    return pc_canvas_new(m.width, m.height, m.ncolors);
 }
 
 void pc_canvas_free(pc_canvas *c) {

@@ -134,7 +134,8 @@ typedef struct pc_canvas {
     char error[160];
 } pc_canvas;
 
-/* QBasic screen modes: 12 (640x480, 16 colours) and 13 (320x200, 256 colours). */
+/* QBasic screen modes: 12 (640x480, 16 colours), 13 (320x200, 256 colours) and the others of
+ * qbscreen.h (1, 2, 7, 9). */
 pc_canvas *pc_canvas_new(int width, int height, int ncolors);
 pc_canvas *pc_canvas_new_mode(int mode);          /* NULL for an unknown mode */
 void pc_canvas_free(pc_canvas *c);

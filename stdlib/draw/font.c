@@ -1,15 +1,32 @@
 /* Looking up glyphs of the built-in font, and decoding UTF-8. */
 #include "font.h"
 
-int pc_font_glyph(uint32_t cp) {
-    size_t lo = 0, hi = pc_font_nmap;
+static int lookup(const pc_font_entry *map, size_t nmap, int replacement, uint32_t cp) {
+    size_t lo = 0, hi = nmap;
     while (lo < hi) {   /* binary search of the sorted table */
         size_t mid = (lo + hi) / 2;
-        if (pc_font_map[mid].cp < cp) lo = mid + 1;
+        if (map[mid].cp < cp) lo = mid + 1;
         else hi = mid;
     }
-    if (lo < pc_font_nmap && pc_font_map[lo].cp == cp) return pc_font_map[lo].glyph;
-    return pc_font_replacement;
+    if (lo < nmap && map[lo].cp == cp) return map[lo].glyph;
+    return replacement;
+}
+
+int pc_font_glyph(uint32_t cp) {
+    return lookup(pc_font_map, pc_font_nmap, pc_font_replacement, cp);
+}
+
+const pc_font *pc_font_of_height(int h) {
+    switch (h) {
+    case 8: return &pc_font8_desc;
+    case 14: return &pc_font14_desc;
+    case 16: return &pc_font_desc;
+    default: return NULL;
+    }
+}
+
+int pc_font_glyph_in(const pc_font *f, uint32_t cp) {
+    return lookup(f->map, f->nmap, f->replacement, cp);
 }
 
 int pc_utf8_next(const char *s, size_t n, size_t *i, uint32_t *cp) {

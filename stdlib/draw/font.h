@@ -1,7 +1,9 @@
 /* The built-in bitmap font: VGA 8x16 character cells, so raster output needs no font files.
  * The glyphs and the Unicode table are generated at build time (tools/psf2c.c) from the
  * console font Uni2-VGA16 of the Debian package console-setup-linux (Latin, Greek, Cyrillic,
- * box drawing); nothing of the font is kept in the repository.
+ * box drawing); nothing of the font is kept in the repository.  The 8x8 and 8x14 cells of
+ * QBasic's other screen modes (13, 1, 2, 7: 8x8; 9: 8x14) come the same way from Uni2-VGA8
+ * and Uni2-VGA14, and the code page 437 table of QBasic's strings from iconv (tools/cp437.c).
  *
  * Pure C: no Lua. */
 #ifndef PC_FONT_H_INCLUDED
@@ -28,6 +30,25 @@ extern const int pc_font_replacement;
 
 /* The glyph index of a code point: the font's replacement glyph if it has none. */
 int pc_font_glyph(uint32_t cp);
+
+/* A font of 8-pixel-wide cells h rows high: the rows of glyph g start at bits + g * h;
+ * capitals stand on row `baseline` (the row below their lowest ink). */
+typedef struct {
+    int h, baseline;
+    const uint8_t *bits;
+    const pc_font_entry *map;
+    size_t nmap;
+    int replacement;
+} pc_font;
+/* the generated fonts: 8x16 (the arrays above), 8x14 and 8x8 */
+extern const pc_font pc_font_desc, pc_font14_desc, pc_font8_desc;
+/* The font with cells of height h (8, 14 or 16); NULL for any other height. */
+const pc_font *pc_font_of_height(int h);
+/* The glyph index of a code point in font f (its replacement glyph if it has none). */
+int pc_font_glyph_in(const pc_font *f, uint32_t cp);
+
+/* Code page 437 (QBasic's character set): byte -> Unicode code point. */
+extern const uint16_t pc_cp437[256];
 
 /* Decode one code point of UTF-8 at s[*i] (s of n bytes), advancing *i.  Strict: overlong
  * forms, surrogates, values above U+10FFFF and truncated sequences are invalid (returns 0). */

@@ -912,13 +912,16 @@ static void emit_text(svgw *w, const pc_op *op) {
     long nchars = pc_utf8_count(s, n, NULL);
     if (nchars <= 0) return;
     long scale = lrint(op->rx), x = lrint(op->x1), y = lrint(op->y1);
-    long wd = nchars * PC_FONT_W * scale, ht = PC_FONT_H * scale;
+    /* ry: the cell height of QBasic's PRINT on the 8x8 and 8x14 screens (0: the 8x16 font) */
+    const pc_font *f = pc_font_of_height(op->ry > 0 ? (int)op->ry : PC_FONT_H);
+    if (!f) f = pc_font_of_height(PC_FONT_H);
+    long wd = nchars * PC_FONT_W * scale, ht = f->h * scale;
     pc_rect clip = clip_of(w, op);
     if (x > clip.x1 || y > clip.y1 || x + wd <= clip.x0 || y + ht <= clip.y0) return;
     open_el(w, "text");
     fprintf(w->out, " x=\"%ld\" y=\"%ld\" font-family=\"monospace\" font-size=\"%ld\" "
                     "textLength=\"%ld\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"",
-            x, y + PC_FONT_BASELINE * scale, PC_FONT_H * scale, wd);
+            x, y + f->baseline * scale, f->h * scale, wd);
     color_attr(w, "fill", op->color);
     fputs(" stroke=\"none\">", w->out);
     uint32_t cp;

@@ -11,12 +11,27 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl.h"
+#include "pcl_qbscreen.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 #define THEME_KEY "pointcalc.theme"
 #define CANVAS_MT "pointcalc.Canvas"
 
-typedef struct { pc_canvas *c; } canvas_box;
+/* c is the page drawn on; pages[] are QBasic's screen pages (pages[0] is the first canvas,
+ * the others made on first use), `visual` the one shown and saved by the host. */
+typedef struct {
+    pc_canvas *c;
+    pc_canvas *pages[PCL_MAX_PAGES];
+    int npages, active, visual;
+    pc_draw_state draw;   /* DRAW's colour, scale and angle, kept between statements */
+} canvas_box;
+
+static canvas_box *the_box(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
+    canvas_box *b = lua_touserdata(L, -1);
+    lua_pop(L, 1);
+    return b;
+}
 
 static pc_canvas *canvas(lua_State *L) {
     canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
@@ -24,10 +39,58 @@ static pc_canvas *canvas(lua_State *L) {
 }
 
 pc_canvas *pcl_canvas(lua_State *L) {
-    lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
-    canvas_box *b = lua_touserdata(L, -1);
-    lua_pop(L, 1);
+    canvas_box *b = the_box(L);
+    if (!b) return NULL;
+    return b->pages[b->visual] ? b->pages[b->visual] : b->c;
+}
+
+pc_canvas *pcl_active_canvas(lua_State *L) {
+    canvas_box *b = the_box(L);
     return b ? b->c : NULL;
+}
+
+int pcl_npages(lua_State *L) {
+    canvas_box *b = the_box(L);
+    return b ? b->npages : 0;
+}
+
+pc_canvas *pcl_page(lua_State *L, int page) {
+    canvas_box *b = the_box(L);
+    if (!b || page < 0 || page >= b->npages) return NULL;
+    if (!b->pages[page]) {   /* a page first used: a blank screen like page 0's */
+        pc_canvas *p0 = b->pages[0];
+        pc_canvas *p = pc_canvas_new(p0->width, p0->height, p0->ncolors);
+        if (!p) pcl_error(L, "screen: out of memory for page %d", page);
+        memcpy(p->palette, p0->palette, 256 * sizeof *p->palette);
+        b->pages[page] = p;
+    }
+    return b->pages[page];
+}
+
+void pcl_set_pages(lua_State *L, int active, int visual) {
+    canvas_box *b = the_box(L);
+    pc_canvas *a = pcl_page(L, active);
+    pcl_page(L, visual);
+    b->c = a;
+    b->active = active;
+    b->visual = visual;
+}
+
+pc_draw_state *pcl_draw_state(lua_State *L) {
+    canvas_box *b = the_box(L);
+    return &b->draw;
+}
+
+/* Back to one page, page 0 (SCREEN): the other pages are dropped. */
+static void single_page(canvas_box *b) {
+    for (int i = 0; i < PCL_MAX_PAGES; i++) {   /* the page drawn on becomes page 0 */
+        if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
+        b->pages[i] = NULL;
+    }
+    b->pages[0] = b->c;
+    b->npages = 1;
+    b->active = b->visual = 0;
+    pc_draw_state_reset(&b->draw);
 }
 
 void pcl_set_theme(lua_State *L, pc_theme theme) {
@@ -126,7 +189,7 @@ static double opt_number(lua_State *L, int arg, const char *what, double dflt) {
 
 static int l_screen(lua_State *L) {
     canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
-    int w, h, colors = 16;
+    int w, h, colors = 16, pages = 1;
     if (lua_istable(L, 1)) {
         lua_getfield(L, 1, "width");
         lua_getfield(L, 1, "height");
@@ -140,19 +203,26 @@ static int l_screen(lua_State *L) {
         h = (int)lh;
         if (!lua_isnil(L, -1)) {
             lua_Integer lc = lua_tointeger(L, -1);
-            if (lc != 16 && lc != 256) pcl_argerror(L, 1, "colors", "16 or 256");
+            if (lc != 2 && lc != 4 && lc != 16 && lc != 256)
+                pcl_argerror(L, 1, "colors", "2, 4, 16 or 256");
             colors = (int)lc;
         }
     } else {
         int isint;
         lua_Integer mode = lua_tointegerx(L, 1, &isint);
-        if (!isint || (mode != 12 && mode != 13))
-            return pcl_argerror(L, 1, "mode", "12 (640x480x16), 13 (320x200x256) or {width=, height=}");
-        w = mode == 12 ? 640 : 320;
-        h = mode == 12 ? 480 : 200;
-        colors = mode == 12 ? 16 : 256;
+        pc_mode_info m;
+        if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
+            return pcl_argerror(L, 1, "mode",
+                                "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 9 or {width=, height=}");
+        w = m.width;
+        h = m.height;
+        colors = m.ncolors;
+        pages = m.pages;
     }
-    return check(L, b->c, pc_canvas_reset(b->c, w, h, colors));
+    single_page(b);
+    int rc = pc_canvas_reset(b->c, w, h, colors);
+    if (rc == PC_OK) b->npages = pages;
+    return check(L, b->c, rc);
 }
 
 static int l_cls(lua_State *L) {
@@ -214,7 +284,12 @@ static int l_palette(lua_State *L) {
         snprintf(expected, sizeof expected, "an attribute 0..%d", c->ncolors - 1);
         return pcl_argerror(L, 1, "attribute", expected);
     }
-    return check(L, c, pc_palette(c, (int)attr, check_rgb(L, 2)));
+    pc_rgb rgb = check_rgb(L, 2);
+    /* the palette is the video card's: every page shows it */
+    canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
+    for (int i = 0; i < PCL_MAX_PAGES; i++)
+        if (b->pages[i] && b->pages[i] != c) check(L, b->pages[i], pc_palette(b->pages[i], (int)attr, rgb));
+    return check(L, c, pc_palette(c, (int)attr, rgb));
 }
 
 static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
@@ -523,8 +598,10 @@ static int l_size(lua_State *L) {
 
 static int canvas_gc(lua_State *L) {
     canvas_box *b = lua_touserdata(L, 1);
+    for (int i = 0; i < PCL_MAX_PAGES; i++)
+        if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
     pc_canvas_free(b->c);
-    b->c = NULL;
+    memset(b, 0, sizeof *b);
     return 0;
 }
 
@@ -542,13 +619,16 @@ void pcl_open_draw(lua_State *L) {
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-        b->c = NULL;
+        memset(b, 0, sizeof *b);
         luaL_newmetatable(L, CANVAS_MT);
         lua_pushcfunction(L, canvas_gc);
         lua_setfield(L, -2, "__gc");
         lua_setmetatable(L, -2);
         b->c = pc_canvas_new_mode(12);
         if (!b->c) pcl_error(L, "pointcalc: out of memory for the canvas");
+        b->pages[0] = b->c;
+        b->npages = 1;
+        pc_draw_state_reset(&b->draw);
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }

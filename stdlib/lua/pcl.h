@@ -30,6 +30,7 @@ void pcl_open_simplex(lua_State *L);   /* simplex() (l_simplex.c) */
 void pcl_open_map(lua_State *L);       /* affine, affine.frame, map.* (l_map.c) */
 void pcl_open_draw(lua_State *L);
 void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
+void pcl_open_qbscreen(lua_State *L); /* print_at get_block put_block draw pages pcopy pmap ... (l_qbscreen.c) */
 void pcl_open_smooth(lua_State *L);  /* the curvilinear-coordinates toolkit (docs/toolkit.md): */
 void pcl_open_curves(lua_State *L);  /*   smooth; curves: bezier bspline ... spline2 stroke fourier (l_smooth.c, l_curve.c) */
 void pcl_open_curvilinear(lua_State *L);    /*   squash oblique projection oresme bisect (l_curvilinear.c) */

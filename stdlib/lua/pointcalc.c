@@ -23,6 +23,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_map(L);
     pcl_open_draw(L);
     pcl_open_qb(L);
+    pcl_open_qbscreen(L);
     pcl_open_smooth(L);
     pcl_open_curves(L);
     pcl_open_surface(L);

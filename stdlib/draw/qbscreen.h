@@ -1,0 +1,110 @@
+/* QBasic's screen beyond SCREEN 12's drawing statements: the screen modes (size, colours,
+ * pages, text cells, the pixel aspect CIRCLE corrects for), text printed into character cells
+ * (PRINT, LOCATE on a graphics screen), graphics blocks (GET/PUT), the DRAW macro language and
+ * copies between pages (PCOPY).
+ *
+ * Everything here changes the canvas the way the drawing statements do: the pixels at once,
+ * and the display list so the SVG writer shows the same picture.  Pure C: no Lua. */
+#ifndef PC_QBSCREEN_H
+#define PC_QBSCREEN_H
+
+#include <stddef.h>
+#include "canvas.h"
+
+/* A QBasic graphics mode as a VGA card shows it on a 4:3 monitor. */
+typedef struct {
+    int mode;
+    int width, height;   /* pixels */
+    int ncolors;         /* attributes: 2 (SCREEN 2), 4 (SCREEN 1), 16, 256 (SCREEN 13) */
+    int pages;           /* screen pages for SCREEN m, apage, vpage and PCOPY */
+    int cols, rows;      /* the text screen: 40 or 80 columns */
+    int cell_h;          /* character cell height: 8, 14 or 16 (cells are 8 wide) */
+    double aspect;       /* CIRCLE's default aspect: 4/3 * height / width (a pixel's height
+                            over its width on a 4:3 monitor: 0.8333 in SCREEN 13) */
+} pc_mode_info;
+
+/* The facts of SCREEN mode (1, 2, 7, 9, 12, 13); PC_EARG for a mode pointcalc does not have
+ * (0, the text mode, has no canvas; 3..6, 8, 10, 11 are other adapters' modes). */
+int pc_mode_info_of(int mode, pc_mode_info *out);
+
+/* Reset the canvas to mode's size, colours and default palette (SCREEN mode).  The palettes:
+ * SCREEN 1 black, light cyan, light magenta, white (QBasic's palette 1); SCREEN 2 black and
+ * white; 7, 9, 12 the 16 EGA colours; 13 the VGA 256-colour palette. */
+int pc_canvas_set_mode(pc_canvas *c, int mode);
+
+/* ---- text in character cells ------------------------------------------------------------ */
+
+/* Print n bytes (code page 437, QBasic's character set) into the cells of text row `row`,
+ * from column `col` (both 1-based; cells 8 x cell_h pixels, the top-left cell at pixel 0,0), in
+ * colour fg on an opaque background bg, as QBasic's PRINT does on a graphics screen: neither
+ * WINDOW nor VIEW applies, cells beyond the screen's edge are not drawn.  Records a filled box
+ * and a TEXT op (its ry holds cell_h) for the SVG writer. */
+int pc_text_cells(pc_canvas *c, int row, int col, const char *bytes, size_t n, int cell_h,
+                  int fg, int bg);
+
+/* Scroll the text rows top..bottom (1-based) up by one row of cells, the bottom row cleared
+ * to bg: what PRINT does past the last line of the text viewport (VIEW PRINT). */
+int pc_text_scroll(pc_canvas *c, int top, int bottom, int cell_h, int bg);
+
+/* Record the pixels of the screen rectangle x0..x1, y0..y1 (inclusive, clipped to the screen)
+ * as they are now, one FILL op per colour: after an operation that moved pixels (PUT, a
+ * scroll), the SVG writer shows what the raster has. */
+int pc_record_pixels(pc_canvas *c, int x0, int y0, int x1, int y1);
+
+/* ---- graphics blocks (GET and PUT) ------------------------------------------------------ */
+
+typedef struct {
+    int w, h;
+    uint16_t *px;        /* w*h attributes, row-major */
+} pc_block;
+
+/* PUT's actions */
+enum { PC_PUT_PSET, PC_PUT_PRESET, PC_PUT_AND, PC_PUT_OR, PC_PUT_XOR };
+
+/* GET (x1,y1)-(x2,y2): the block of pixels between two corners given in world coordinates
+ * (WINDOW applies), inclusive.  Both corners must lie inside the view (QBasic's Illegal
+ * function call otherwise): PC_EARG with the reason.  The block is allocated into *out (free
+ * it with pc_block_free). */
+int pc_get_block(pc_canvas *c, double x1, double y1, double x2, double y2, pc_block **out);
+void pc_block_free(pc_block *b);
+/* The bytes QBasic's GET stores for a w x h block in this mode: 4 for the header plus the
+ * rows, each (w * bits per pixel + 7) / 8 bytes per plane (planar EGA modes: 4 planes of 1
+ * bit; SCREEN 13 one byte a pixel).  Programs size GET's array by it. */
+long pc_block_bytes(const pc_canvas *c, int w, int h);
+
+/* PUT (x,y), block, action: the block's top-left pixel at the world point (x,y).  The whole
+ * block must fit in the view (PC_EARG otherwise).  PSET copies, PRESET copies the complement
+ * (ncolors - 1 - attribute, QBasic's bitwise NOT within the colour bits), AND, OR and XOR
+ * combine bit by bit with the screen; XOR twice restores the screen.  The graphics cursor
+ * does not move. */
+int pc_put_block(pc_canvas *c, double x, double y, const pc_block *b, int action);
+
+/* ---- DRAW ------------------------------------------------------------------------------- */
+
+/* The state DRAW keeps between statements (reset by SCREEN): colour (-1: the foreground),
+ * scale S (units of 1/4 pixel, 4 by default), angle A (0..3, quarter turns) and turn TA
+ * (degrees). */
+typedef struct {
+    int color;
+    double scale;
+    int angle;
+    double turn;
+} pc_draw_state;
+void pc_draw_state_reset(pc_draw_state *st);
+
+/* Run a DRAW string from the graphics cursor: U D L R E F G H n (default 1), M x,y (absolute
+ * in view pixels) and M +-x,+-y (relative), the prefixes B (move only) and N (return after),
+ * C n, S n, A n, TA n, P paint,border.  Spaces and ';' separate commands.  Distances are in
+ * pixels times scale/4, turned by A and TA (counter-clockwise on the screen); lines are drawn
+ * between the rounded end points as LINE draws them, and the cursor moves to the end.  X
+ * (substrings) and '=' (numbers from variables) are the caller's to expand first.  A command
+ * it cannot read is PC_EARG with the position named. */
+int pc_draw_macro(pc_canvas *c, pc_draw_state *st, const char *cmds);
+
+/* ---- pages ------------------------------------------------------------------------------ */
+
+/* PCOPY: make dst's picture a copy of src's (pixels and display list); dst keeps its WINDOW,
+ * VIEW, colours and cursor.  Both must have the same size and colours. */
+int pc_canvas_copy_picture(pc_canvas *dst, const pc_canvas *src);
+
+#endif
