@@ -22,8 +22,14 @@ run "$POINTCALC" --emit-lua nwf.bas
 expect_rc 1 "--emit-lua of a bad program"
 expect_eq "$(head -n 1 err.txt)" "nwf.bas:3: NEXT without FOR" "--emit-lua error message"
 expect_eq "$(wc -c < out.txt | tr -d ' ')" 0 "--emit-lua prints nothing on error"
-# a runtime error comes with a traceback, like any script error
+# a runtime error is the QBasic message alone; the Lua traceback only on request
 cp "$QB_DIR/errors/out_of_data.bas" ood.bas
 run "$POINTCALC" ood.bas
-expect_in err.txt "stack traceback:" "runtime error traceback"
+expect_eq "$(cat err.txt)" "ood.bas:4: Out of DATA" "runtime error without a traceback"
+PC_QBASIC_TRACEBACK=1 run "$POINTCALC" ood.bas
+expect_in err.txt "stack traceback:" "runtime error traceback with PC_QBASIC_TRACEBACK=1"
+# a refused SCREEN mode: nothing ran
+cp "$QB_DIR/errors/screen_mode.bas" sm.bas
+run "$POINTCALC" sm.bas
+expect_eq "$(wc -c < out.txt | tr -d ' ')" 0 "an unsupported SCREEN mode is refused before the program runs"
 finish

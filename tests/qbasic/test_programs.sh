@@ -9,7 +9,10 @@ n=0
 for bas in "$QB_DIR"/progs/*.bas; do
     name=$(basename "$bas" .bas)
     cp "$bas" "$name.bas"
-    run "$POINTCALC" "$name.bas" -o "$name.ppm"
+    # a program that expects a person reads its answers from NAME.in (else no input at all)
+    input=/dev/null
+    [ -f "$QB_DIR/progs/$name.in" ] && input="$QB_DIR/progs/$name.in"
+    run "$POINTCALC" "$name.bas" -o "$name.ppm" < "$input"
     expect_rc 0 "$name"
     check
     if ! diff -u "$QB_DIR/progs/$name.out" out.txt >diff.txt; then
@@ -20,13 +23,20 @@ for bas in "$QB_DIR"/progs/*.bas; do
 done
 expect_eq "$([ "$n" -ge 10 ] && echo yes)" yes "at least 10 programs found in $QB_DIR/progs"
 
-# the same pictures through the writers: graphics.bas drew pixel (10, 10) in red 4, (20, 21) in
-# white, (75, 55) inside a BF box in magenta 5, and the painted disc (200, 200) in blue 1
-expect_eq "$(ppm_pixel graphics.ppm 10 10)" "aa0000" "PPM pixel (10,10) = colour 4"
-expect_eq "$(ppm_pixel graphics.ppm 20 21)" "ffffff" "PPM pixel (20,21) = colour 15"
+# the same pictures through the writers: graphics.bas drew (75, 55) inside a BF box in magenta
+# 5, the circle through (250, 200) in yellow 14 and the painted disc (200, 200) in blue 1.  (Its
+# PRINTs now draw their text into the picture, as QBasic does, over the dots it put at (10, 10)
+# and (20, 21) in the first two text rows: text.bas checks those cells.)
+expect_eq "$(ppm_pixel graphics.ppm 250 200)" "ffff55" "PPM pixel (250,200) = colour 14"
 expect_eq "$(ppm_pixel graphics.ppm 75 55)" "aa00aa" "PPM pixel (75,55) = colour 5"
 expect_eq "$(ppm_pixel graphics.ppm 200 200)" "0000aa" "PPM pixel (200,200) = colour 1"
 expect_eq "$(ppm_pixel graphics.ppm 11 10)" "000000" "PPM pixel (11,10) = background"
 # graphics2.bas redefined attribute 1 as PALETTE 1, 63 + 256 * 32 (6-bit red 63, green 32)
 expect_eq "$(ppm_pixel graphics2.ppm 5 5)" "ff8200" "PALETTE reaches the written picture"
+# the picture written is the page shown: modes.bas (SCREEN 7, 320x200) copied page 1's light
+# red line (0, 150)-(50, 150) onto page 0, and printed text into its first rows
+px320() { od -An -tx1 -j $((15 + ($3 * 320 + $2) * 3)) -N 3 "$1" | tr -d ' \n'; }
+expect_eq "$(head -c 15 modes.ppm | tr '\n' ' ')" "P6 320 200 255 " "SCREEN 7 writes 320x200"
+expect_eq "$(px320 modes.ppm 25 150)" "ff5555" "PCOPY 1, 0 shows page 1's line"
+expect_eq "$(px320 modes.ppm 25 151)" "0000aa" "below the line: the background, blue after COLOR 10, 1"
 finish

@@ -1,3 +1,3 @@
-' EXPECT: 3: LOCATE: not supported by pointcalc
+' EXPECT: 3: OPEN: not supported by pointcalc
 SCREEN 12
-LOCATE 1, 1
+OPEN "scores.txt" FOR OUTPUT AS #1

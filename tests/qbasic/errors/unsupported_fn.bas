@@ -1,2 +1,2 @@
-' EXPECT: 2: INKEY$ function: not supported by pointcalc
-k$ = INKEY$
+' EXPECT: 2: DATE$ function: not supported by pointcalc
+d$ = DATE$

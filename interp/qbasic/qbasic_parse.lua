@@ -48,6 +48,10 @@ local FUNCS = {
   instr = { args = { "x", "s", "?s" }, ty = "long" },
   ["hex$"] = { args = { "n" }, ty = "string" }, ["oct$"] = { args = { "n" }, ty = "string" },
   point = { args = { "n", "?n" }, ty = "int" },
+  -- the screen and the keyboard (docs/qbasic.md, "Programs that expect a person")
+  ["inkey$"] = { args = {}, ty = "string" }, ["input$"] = { args = { "n", "?n" }, ty = "string" },
+  csrlin = { args = {}, ty = "int" }, pos = { args = { "n" }, ty = "int" },
+  pmap = { args = { "n", "n" }, ty = "single" }, ["varptr$"] = { args = { "x" }, ty = "string" },
   lbound = { args = { "arr", "?n" }, ty = "long" }, ubound = { args = { "arr", "?n" }, ty = "long" },
 }
 M.FUNCS = FUNCS
@@ -530,10 +534,8 @@ function M.parse(source, opts)
     add({ k = "label", name = name })
   end
 
-  local GFX_UNSUPPORTED = { draw = "DRAW", get = "GET (graphics)", put = "PUT (graphics)",
-    pcopy = "PCOPY", pmap = "PMAP", locate = "LOCATE", input = "INPUT", ["line input"] = "LINE INPUT",
-    open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", sleep = "SLEEP",
-    beep = "BEEP", sound = "SOUND", play = "PLAY", width = "WIDTH", key = "KEY", on = "ON",
+  local GFX_UNSUPPORTED = {
+    open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", on = "ON",
     error = "ERROR", resume = "RESUME", chain = "CHAIN", common = "COMMON", type = "TYPE",
     static = "STATIC", erase = "ERASE", poke = "POKE", out = "OUT", wait = "WAIT", shell = "SHELL",
     kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
@@ -542,8 +544,7 @@ function M.parse(source, opts)
     bsave = "BSAVE", ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
     timer = "TIMER ON/OFF", strig = "STRIG", pen = "PEN", com = "COM", signal = "SIGNAL",
     date = "DATE$", ["date$"] = "DATE$ statement", ["time$"] = "TIME$ statement",
-    ["mid$"] = "MID$ statement", environ = "ENVIRON", setmem = "SETMEM", absolute = "CALL ABSOLUTE",
-    view = "VIEW PRINT" }
+    ["mid$"] = "MID$ statement", environ = "ENVIRON", setmem = "SETMEM", absolute = "CALL ABSOLUTE" }
 
   local function parse_print()
     local items = {}
@@ -670,6 +671,142 @@ function M.parse(source, opts)
     return add({ k = "case", tests = tests })
   end
 
+  -- ---- the screen and the keyboard: each handler parses one statement kind -----------------
+  -- A statement the runtime carries out as a call: {k = "rtcall", fn = helper, args = {exprs}}
+  -- (nil for an argument left out).
+  local function rtcall(fn, args)
+    local n = 0
+    for i in pairs(args or {}) do if i > n then n = i end end
+    return add({ k = "rtcall", fn = fn, args = args or {}, nargs = n })
+  end
+  local function opt_any()   -- an optional argument of any type
+    if is_op(",") or at_end() then return nil end
+    return parse_expr()
+  end
+  local function arg_list(max)   -- a, , c: optional numeric arguments separated by commas
+    local args = {}
+    local i = 1
+    args[i] = opt_expr()
+    while accept_op(",") do
+      i = i + 1
+      if i > max then err() end
+      args[i] = opt_expr()
+    end
+    return args, i
+  end
+  -- an array for GET/PUT: a name with an optional first element, a(), a(5), a(0, 1)
+  local function block_array()
+    local t = nexttok()
+    if t.t ~= "id" then err() end
+    local arr = { k = "arrayref", name = t.v, ty = type_of_name(t, true), text = t.text,
+      proc = cur_proc }
+    local idx = {}
+    if accept_op("(") then
+      if not accept_op(")") then
+        idx = parse_args()
+        for _, a in ipairs(idx) do check_num(a) end
+      end
+    end
+    if arr.ty == "string" then err("Type mismatch") end
+    scope.arrays[t.v] = true
+    return arr, idx
+  end
+  local function input_targets()
+    local targets = {}
+    repeat targets[#targets + 1] = parse_lvalue() until not accept_op(",")
+    return targets
+  end
+  local SCREEN_STMT = {}
+  function SCREEN_STMT.locate()
+    local args = arg_list(5)
+    for i = 3, 5 do args[i] = nil end     -- the cursor's shape: nothing to draw
+    return rtcall("locate", args)
+  end
+  function SCREEN_STMT.width()
+    if is_op("#") or peek().t == "str" then unsupported("WIDTH of a device or file", lineno) end
+    return rtcall("width", (arg_list(2)))
+  end
+  function SCREEN_STMT.draw() return rtcall("draw", { check_str(parse_expr()) }) end
+  function SCREEN_STMT.pcopy()
+    local a = check_num(parse_expr())
+    expect_op(",")
+    return rtcall("pcopy", { a, check_num(parse_expr()) })
+  end
+  function SCREEN_STMT.sleep()
+    if at_end() then return rtcall("sleep", {}) end
+    return rtcall("sleep", { check_num(parse_expr()) })
+  end
+  function SCREEN_STMT.beep() return rtcall("beep", {}) end
+  function SCREEN_STMT.sound()
+    local f = check_num(parse_expr())
+    expect_op(",")
+    return rtcall("sound", { f, check_num(parse_expr()) })
+  end
+  function SCREEN_STMT.play()
+    if is_kw("on") or is_kw("off") or is_kw("stop") then unsupported("PLAY ON/OFF/STOP", lineno) end
+    return rtcall("play", { check_str(parse_expr()) })
+  end
+  function SCREEN_STMT.key()
+    -- KEY OFF/ON/LIST show or hide the function-key line: nothing on a picture
+    if accept_kw("off") or accept_kw("on") or accept_kw("list") then return end
+    if is_op("(") then unsupported("KEY(n) trapping", lineno) end
+    local n = check_num(parse_expr())
+    expect_op(",")
+    return rtcall("key_def", { n, check_str(parse_expr()) })
+  end
+  function SCREEN_STMT.get()
+    if is_op("#") or peek().t == "num" then unsupported("GET # (files)", lineno) end
+    local p1 = coord_pair()
+    expect_op("-")
+    local p2 = coord_pair()
+    expect_op(",")
+    local arr, idx = block_array()
+    return add({ k = "getput", get = true, p1 = p1, p2 = p2, array = arr, index = idx })
+  end
+  function SCREEN_STMT.put()
+    if is_op("#") or peek().t == "num" then unsupported("PUT # (files)", lineno) end
+    local p = coord_pair()
+    expect_op(",")
+    local arr, idx = block_array()
+    local action = "xor"
+    if accept_op(",") then
+      local a = nexttok()
+      local ok = { pset = true, preset = true, ["and"] = true, ["or"] = true, xor = true }
+      if a.t ~= "kw" or not ok[a.v] then err() end
+      action = a.v
+    end
+    return add({ k = "getput", p1 = p, array = arr, index = idx, action = action })
+  end
+  function SCREEN_STMT.input()
+    if is_op("#") then unsupported("INPUT # (files)", lineno) end
+    local st = { k = "input", same_line = accept_op(";") }
+    if peek().t == "str" then
+      st.prompt = nexttok().v
+      if accept_op(",") then st.mark = false else expect_op(";"); st.mark = true end
+    else
+      st.mark = true
+    end
+    st.targets = input_targets()
+    return add(st)
+  end
+  function SCREEN_STMT.line_input()
+    if is_op("#") then unsupported("LINE INPUT # (files)", lineno) end
+    local st = { k = "input", line_input = true, same_line = accept_op(";") }
+    if peek().t == "str" then
+      st.prompt = nexttok().v
+      if not accept_op(";") then expect_op(",") end
+    end
+    st.targets = { parse_lvalue() }
+    if st.targets[1].ty ~= "string" then err("Type mismatch") end
+    return add(st)
+  end
+  function SCREEN_STMT.view_print()
+    if at_end() then return rtcall("view_print", {}) end
+    local a = check_num(parse_expr())
+    expect_kw("to")
+    return rtcall("view_print", { a, check_num(parse_expr()) })
+  end
+
   parse_statement = function(in_if)
     local t = peek()
     if t.t == "id" then
@@ -696,6 +833,9 @@ function M.parse(source, opts)
     if t.t ~= "kw" then err() end
     pos = pos + 1
     local w = t.v
+    if w == "line" and accept_kw("input") then return SCREEN_STMT.line_input() end
+    if w == "view" and accept_kw("print") then return SCREEN_STMT.view_print() end
+    if SCREEN_STMT[w] then return SCREEN_STMT[w]() end
     if w == "let" then
       local target = parse_lvalue()
       expect_op("=")
@@ -707,9 +847,13 @@ function M.parse(source, opts)
     elseif w == "print" then
       return add(parse_print())
     elseif w == "screen" then
-      local mode = check_num(parse_expr())
-      if accept_op(",") then unsupported("SCREEN with more than the mode", lineno) end
-      return add({ k = "screen", mode = mode })
+      local args = arg_list(4)
+      -- a mode given as a number is checked before the program runs
+      local m = args[1] and args[1].k == "num" and args[1].v
+      if m and (m == 3 or m == 4 or m == 8 or m == 10 or m == 11) then
+        err("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 12 and 13 are)")
+      end
+      return rtcall("screen", args)
     elseif w == "cls" then
       local a = nil
       if not at_end() then a = check_num(parse_expr()) end
@@ -733,22 +877,28 @@ function M.parse(source, opts)
       if accept_op(",") then c = check_num(parse_expr()) end
       return add({ k = w, p = p, color = c })
     elseif w == "line" then
-      if is_kw("input") then unsupported("LINE INPUT", lineno) end
       local p1
       if not is_op("-") then p1 = coord_pair() end
       expect_op("-")
       local p2 = coord_pair()
-      local c, style
+      local c, style, pattern
       if accept_op(",") then
         c = opt_expr()
         if accept_op(",") then
           local s = nexttok()
-          if s.t ~= "id" or (s.v ~= "b" and s.v ~= "bf") or s.sfx then err() end
-          style = s.v
-          if accept_op(",") then unsupported("LINE with a style pattern", lineno) end
+          if not (s.t == "op" and s.v == ",") then
+            if s.t ~= "id" or (s.v ~= "b" and s.v ~= "bf") or s.sfx then err() end
+            style = s.v
+          else
+            pos = pos - 1
+          end
+          if accept_op(",") then
+            if style == "bf" then err() end
+            pattern = check_num(parse_expr())
+          end
         end
       end
-      return add({ k = "line", p1 = p1, p2 = p2, color = c, style = style })
+      return add({ k = "line", p1 = p1, p2 = p2, color = c, style = style, pattern = pattern })
     elseif w == "circle" then
       local p = coord_pair()
       expect_op(",")
@@ -783,7 +933,6 @@ function M.parse(source, opts)
       end
       return add({ k = "paint", p = p, color = c, border = b })
     elseif w == "window" or w == "view" then
-      if w == "view" and is_kw("print") then unsupported("VIEW PRINT", lineno) end
       local screen = accept_kw("screen")
       if at_end() then
         if screen then err() end
@@ -988,7 +1137,7 @@ function M.parse(source, opts)
       until not accept_op(",")
       return
     elseif w == "randomize" then
-      if at_end() then unsupported("RANDOMIZE without a seed (it would ask for one)", lineno) end
+      if at_end() then return rtcall("randomize_ask", {}) end
       return add({ k = "randomize", expr = check_num(parse_expr()) })
     elseif w == "swap" then
       local a = parse_lvalue()

@@ -214,6 +214,13 @@ local function walk_stmt(st, fn)
     if st.p1 then x(st.p1.x); x(st.p1.y); x(st.p2.x); x(st.p2.y) end
     x(st.fill); x(st.border)
   elseif k == "swap" then x(st.a); x(st.b)
+  elseif k == "rtcall" then for i = 1, st.nargs do x(st.args[i]) end
+  elseif k == "getput" then
+    x(st.p1.x); x(st.p1.y)
+    if st.p2 then x(st.p2.x); x(st.p2.y) end
+    fn(st.array)
+    for _, a in ipairs(st.index) do x(a) end
+  elseif k == "input" then for _, t in ipairs(st.targets) do x(t) end
   end
 end
 
@@ -634,7 +641,8 @@ function M.generate(prog, chunkname)
   local FN_LUA = { ["left$"] = "left", ["right$"] = "right", ["mid$"] = "mid", ["str$"] = "str",
     ["chr$"] = "chr", ["space$"] = "space", ["string$"] = "string_", ["lcase$"] = "lcase",
     ["ucase$"] = "ucase", ["ltrim$"] = "ltrim", ["rtrim$"] = "rtrim", ["hex$"] = "hex",
-    ["oct$"] = "oct" }
+    ["oct$"] = "oct", ["inkey$"] = "inkey", ["input$"] = "input_chars", pos = "pos_",
+    ["varptr$"] = "varptr" }
 
   local convert   -- convert(e, ty): code of e as a value of type ty (store rounding)
 
@@ -961,6 +969,10 @@ function M.generate(prog, chunkname)
     elseif k == "line" then
       local col = opt(st.color)
       local style = st.style and ('"' .. st.style .. '"') or "nil"
+      if st.pattern then
+        -- LINE ..., c, [B], &HAAAA: the style bits go after the box flag
+        style = (st.style and ('"' .. st.style .. '"') or "nil") .. ", " .. emit_value(st.pattern, 0)
+      end
       if not st.p1 then
         if st.p2.step then
           E(line, "do local _x, _y = step_xy(" .. table.concat({ coords(st.p2) }, ", ") .. ") "
@@ -1028,6 +1040,68 @@ function M.generate(prog, chunkname)
       if not st.attr then E(line, "palette()") return end
       E(line, "palette(" .. emit_value(st.attr, 0) .. ", " .. emit_value(st.color, 0) .. ")")
     end
+  end
+
+  -- a statement the runtime carries out: helper(args), the left-out ones nil
+  local function emit_rtcall(st)
+    local args = {}
+    for i = 1, st.nargs do args[i] = opt(st.args[i]) end
+    E(st.line, st.fn .. "(" .. trim_nils(args) .. ")")
+  end
+
+  -- GET (x1, y1)-(x2, y2), a(i) and PUT (x, y), a(i), action: the block is kept beside the
+  -- array, at the element named (QBasic stores it in the array's memory)
+  local function emit_getput(st)
+    local idx = {}
+    for i, a in ipairs(st.index) do idx[i] = emit_value(a, 0) end
+    local at = "{" .. table.concat(idx, ", ") .. "}"
+    local function point(p, base)
+      local x, y = coords(p)
+      if p.step then
+        if base then return base .. "x + " .. x, base .. "y + " .. y end
+        return nil, nil, "local _sx, _sy = step_xy(" .. x .. ", " .. y .. ")"
+      end
+      return x, y
+    end
+    local pre = {}
+    local x1, y1, code = point(st.p1)
+    if code then pre[#pre + 1] = code; x1, y1 = "_sx", "_sy" end
+    if st.get then
+      local x2, y2 = coords(st.p2)
+      if st.p2.step then x2, y2 = x1 .. " + " .. x2, y1 .. " + " .. y2 end
+      local elem = ({ int = 2, long = 4, single = 4, double = 8 })[st.array.ty]
+      E(st.line, "do " .. table.concat(pre, " ") .. " get_into(" .. table.concat({ x1, y1, x2, y2,
+        lua_name(st.array), at, elem }, ", ") .. ") end")
+    else
+      E(st.line, "do " .. table.concat(pre, " ") .. " put_from(" .. table.concat({ x1, y1,
+        lua_name(st.array), at, lua_string(st.action) }, ", ") .. ") end")
+    end
+  end
+
+  -- INPUT and LINE INPUT: the runtime reads the line and gives back the fields, each stored
+  -- with its type's rounding as READ does
+  local function emit_input(st)
+    local kinds = {}
+    for i, t in ipairs(st.targets) do kinds[i] = lua_string(t.ty == "string" and "s" or "n") end
+    local prompt = st.prompt and lua_string(st.prompt) or "nil"
+    local call
+    if st.line_input then
+      call = "line_input(" .. prompt .. ", " .. tostring(st.same_line or false) .. ")"
+    else
+      call = "input_fields(" .. prompt .. ", " .. tostring(st.mark) .. ", "
+        .. tostring(st.same_line or false) .. ", {" .. table.concat(kinds, ", ") .. "})"
+    end
+    local parts = { "do local _in = " .. call }
+    for i, t in ipairs(st.targets) do
+      local v = "_in[" .. i .. "]"
+      local code
+      if t.ty == "string" or t.ty == "double" then code = v
+      elseif t.ty == "single" then code = "csng(" .. v .. ")"
+      elseif t.ty == "int" then code = "cint(" .. v .. ")"
+      else code = "clng(" .. v .. ")" end
+      parts[#parts + 1] = lvalue_code(t) .. " = " .. code
+    end
+    E(st.line, table.concat(parts, " ") .. " end")
   end
 
   local function emit_print(st)
@@ -1385,6 +1459,12 @@ function M.generate(prog, chunkname)
       emit_region(st)
     elseif k == "endsub" or k == "endfunction" or k == "enddef" then
       -- handled by emit_proc
+    elseif k == "rtcall" then
+      emit_rtcall(st)
+    elseif k == "getput" then
+      emit_getput(st)
+    elseif k == "input" then
+      emit_input(st)
     elseif k == "screen" or k == "cls" or k == "color" or k == "palette" or k == "pset"
         or k == "preset" or k == "line" or k == "circle" or k == "paint" or k == "window"
         or k == "view" then

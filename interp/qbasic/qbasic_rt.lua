@@ -23,6 +23,8 @@ M.names = {
   "pset", "preset", "line", "line_to", "circle", "paint", "point", "window", "view", "step_xy",
   "stop", "return_without_gosub", "on_index", "run", "case", "on", "start", "_ENV", "_",
 }
+local screen_rt = require("qbasic_screen")
+for _, n in ipairs(screen_rt.names) do M.names[#M.names + 1] = n end
 
 local radix_value = require("qbasic_lex").radix_value
 local floor, huge = math.floor, math.huge
@@ -94,6 +96,40 @@ end
 M.data_text = function(v) return data_text(v, 1) end
 
 local STOP = setmetatable({}, { __tostring = function() return "END" end })
+
+-- A runtime error as QBasic reports it: "prog.bas:LINE: message", the line the program's own
+-- (a message raised inside the runtime or the host names it by the innermost frame of the
+-- program), Lua's stack overflow as QBasic's "Out of stack space", and no Lua traceback (the
+-- error is a table whose __tostring the host prints as it is); PC_QBASIC_TRACEBACK=1 in the
+-- environment keeps the traceback, for debugging the translator.
+local dbg = debug
+local Message = { __tostring = function(m) return m.text end }
+local function qbasic_message_for(chunkname, program)
+  -- the name Lua gives the program's chunk (prog.bas, or prog.lua for a saved translation)
+  if dbg then chunkname = dbg.getinfo(program, "S").short_src or chunkname end
+  return function(err)
+    if err == STOP or getmetatable(err) == Message then return err end
+    local msg = tostring(err)
+    local line
+    local prefix = chunkname .. ":"
+    if msg:sub(1, #prefix) == prefix then
+      line, msg = msg:sub(#prefix + 1):match("^(%d+): (.*)$")
+    end
+    if not line and dbg then
+      for level = 2, 200 do
+        local info = dbg.getinfo(level, "Sl")
+        if not info then break end
+        if info.short_src == chunkname and info.currentline > 0 then line = info.currentline break end
+      end
+    end
+    msg = (msg or tostring(err)):gsub("^%[?[^%]:]*%]?:%d+: ", "")
+    if msg:find("stack overflow", 1, true) then msg = "Out of stack space"
+    elseif msg:find("not enough memory", 1, true) then msg = "Out of memory" end
+    local text = chunkname .. ":" .. (line or "?") .. ": " .. msg
+    if dbg and os.getenv("PC_QBASIC_TRACEBACK") == "1" then text = dbg.traceback(text, 2) end
+    return setmetatable({ text = text }, Message)
+  end
+end
 
 function M.new(host, chunkname)
   local function draw(name)
@@ -195,10 +231,6 @@ function M.new(host, chunkname)
   function E.randomize(n)
     if n - n ~= 0 then error("Overflow", 2) end
     qb.randomize(n)
-  end
-  function E.timer()
-    local t = os.date("*t")
-    return f32(t.hour * 3600 + t.min * 60 + t.sec)
   end
   function E.on_index(v)
     local r = to_int(v, -32768, 32767, 2)
@@ -395,10 +427,11 @@ function M.new(host, chunkname)
   function E.spc(n) return { [MARK] = "spc", n = n } end
   function E.dbl(x) return { [MARK] = "double", v = x } end
   function E.lng(x) return { [MARK] = "long", v = x } end
+  -- PRINT's text goes through the screen module: standard output, and the picture on a
+  -- graphics screen (qbasic_screen.lua)
+  local rt = {}
   local function write(s)
-    out:write(s)
-    local nl = s:find("\n[^\n]*$")
-    if nl then col = #s - nl else col = col + #s end
+    col = rt.text_out(s)
   end
   function E.qprint(...)
     local n = select("#", ...)
@@ -444,6 +477,7 @@ function M.new(host, chunkname)
   local h_window, h_view, h_last_point = draw("window"), draw("view"), draw("last_point")
   local mode = 0           -- SCREEN mode: 0 is text mode (no graphics), as when QBasic starts
   local ncolors = 16
+  local info = nil         -- the mode's facts (mode_info): size, pages, text cells, aspect
   local function graphics(level)
     if mode == 0 then error(IFC, level + 1) end
   end
@@ -461,29 +495,39 @@ function M.new(host, chunkname)
     return x
   end
 
-  function E.screen(m)
-    m = to_int(m, -32768, 32767, 2)
-    if m == 0 then mode = 0 return end
-    if m == 12 or m == 13 then
-      h_screen(m)
-      mode = m
-      ncolors = m == 12 and 16 or 256
-      return
+  -- SCREEN mode, colour switch, active page, visual page
+  function E.screen(m, _, apage, vpage)
+    if m ~= nil then
+      m = to_int(m, -32768, 32767, 2)
+      if m == 0 then
+        mode = 0
+        rt.text_mode(nil)
+      elseif m == mode then
+        -- the same mode again (SCREEN 7, , p, 1 - p in an animation loop): no new screen
+      elseif m == 1 or m == 2 or m == 7 or m == 9 or m == 12 or m == 13 then
+        h_screen(m)
+        mode = m
+        info = rt.mode_info(m)
+        ncolors = info.colors
+        rt.text_mode(info)
+      elseif m == 3 or m == 4 or m == 8 or m == 10 or m == 11 then
+        error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 12 and 13 are)", 2)
+      else
+        error(IFC, 2)
+      end
     end
-    if m == 1 or m == 2 or (m >= 7 and m <= 11) then
-      error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 12 and 13 are)", 2)
-    end
-    error(IFC, 2)
+    if mode ~= 0 then rt.screen_pages(apage, vpage, 2) end
   end
   function E.cls(n)
     if n ~= nil then
       n = to_int(n, -32768, 32767, 2)
       if n < 0 or n > 2 then error(IFC, 2) end
     end
-    if mode ~= 0 then h_cls() end
+    rt.cls(n)
   end
   function E.color(fg, bg)
     if mode == 0 then return end       -- text colours: PRINT goes to standard output
+    if mode ~= 12 and mode ~= 13 then rt.color_other(mode, fg, bg, 2) return end
     if bg ~= nil then error(IFC, 2) end
     if fg ~= nil then h_color(colour(fg, 2)) end
   end
@@ -491,6 +535,7 @@ function M.new(host, chunkname)
     if mode == 0 then return end
     if attr == nil then h_palette() return end
     attr = colour(attr, 2)
+    if mode ~= 12 and mode ~= 13 then rt.palette_other(mode, attr, c, 2) return end
     c = to_int(c, -2147483648, 2147483647, 2)
     if c == -1 then return end
     if c < 0 or c > 0x3F3F3F or (c & 0xC0C0C0) ~= 0 then error(IFC, 2) end
@@ -522,6 +567,8 @@ function M.new(host, chunkname)
     if aspect ~= nil then
       aspect = coord(aspect, 2)
       if aspect <= 0 then error(IFC, 2) end
+    elseif mode ~= 12 then
+      aspect = info.aspect     -- the mode's pixels are not square: circles look round on 4:3
     end
     h_circle(coord(x, 2), coord(y, 2), r, colour(c, 2), a0, a1, aspect)
   end
@@ -538,7 +585,10 @@ function M.new(host, chunkname)
         local r = (n == 2) and lx or ly
         return r
       end
-      if n == 0 or n == 1 then error("POINT(" .. n .. "): not supported by pointcalc", 2) end
+      if n == 0 or n == 1 then
+        local r = rt.point_physical(n)
+        return r
+      end
       error(IFC, 2)
     end
     local r = h_point(coord(x, 2), coord(y, 2))
@@ -553,7 +603,7 @@ function M.new(host, chunkname)
   function E.view(x1, y1, x2, y2, fill, border, screen)
     graphics(2)
     if x1 == nil then h_view() return end
-    local w, h = (mode == 12) and 640 or 320, (mode == 12) and 480 or 200
+    local w, h = info.width, info.height
     for _, v in ipairs({ x1, x2 }) do if v < 0 or v >= w then error(IFC, 2) end end
     for _, v in ipairs({ y1, y2 }) do if v < 0 or v >= h then error(IFC, 2) end end
     h_view(x1, y1, x2, y2, colour(fill, 2), colour(border, 2), screen)
@@ -566,6 +616,14 @@ function M.new(host, chunkname)
 
   -- ---- control ----------------------------------------------------------------------------
   function E.stop() error(STOP, 0) end
+
+  -- the screen as a text device, the keyboard and the clock (qbasic_screen.lua)
+  rt.IFC, rt.to_int, rt.draw, rt.f32, rt.chunkname = IFC, to_int, draw, f32, chunkname
+  rt.coord = coord
+  rt.get_mode = function() return mode end
+  rt.qwrite = function(s) write(s) end
+  screen_rt.install(E, rt)
+  rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
 
   -- run(program, info): info.data = {[line] = {items}}, info.data_labels = {label = index},
@@ -602,12 +660,8 @@ function M.new(host, chunkname)
       return 0
     end })
     qb.seed(327680)
-    if info.stops then
-      local ok, err = pcall(program)
-      if not ok and err ~= STOP then error(err, 0) end
-    else
-      program()
-    end
+    local ok, err = xpcall(program, qbasic_message_for(chunkname, program))
+    if not ok and err ~= STOP then error(err, 0) end
   end
 
   return env

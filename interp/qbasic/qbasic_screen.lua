@@ -1,0 +1,437 @@
+-- QBasic front end, runtime part 2: the screen as a text device and the keyboard.
+--
+-- install(E, rt) adds to a program's environment E the statements and functions of programs
+-- written for a person at a PC: PRINT's text drawn into the picture on a graphics screen
+-- (LOCATE, CSRLIN, POS, VIEW PRINT, WIDTH, CLS 2), the other screen modes with their palettes
+-- and pages (SCREEN m, , apage, vpage; PCOPY), DRAW with VARPTR$, GET/PUT, PMAP, and the
+-- keyboard and the clock (INKEY$, INPUT, LINE INPUT, INPUT$, SLEEP, TIMER, SOUND, PLAY, BEEP,
+-- RANDOMIZE without a seed).  The rules for a run nobody watches are in docs/qbasic.md:
+-- input comes from standard input, a virtual clock makes delay loops finish at once and the
+-- same way every run, and "press any key" is answered when the input has run out.
+--
+-- rt: the runtime's shared pieces: draw(name), to_int, f32, fmt_number, IFC, and the state
+-- functions get_mode/set_mode.
+local M = {}
+
+-- QBasic's TIMER ticks 18.2 times a second; the virtual clock moves one tick per TIMER read
+M.TICK = 1 / 18.2
+-- INKEY$ with no input left: this many empty polls, then Enter (a "press any key" loop ends)
+M.EMPTY_POLLS = 50
+-- ... and after this many more polls without a key the program is ended, as a person would
+M.GIVE_UP_POLLS = 200000
+
+-- the names this module adds: the translator keeps user names clear of them
+M.names = { "locate", "width", "draw", "pcopy", "sleep", "beep", "sound", "play", "key_def",
+  "view_print", "get_into", "put_from", "input_fields", "line_input", "randomize_ask", "inkey",
+  "input_chars", "csrlin", "pos_", "pmap", "varptr", "text_out" }
+
+-- EGA's 64 colours: bits 0-2 blue, green, red at 2/3, bits 3-5 at 1/3 (PALETTE in SCREEN 9)
+local function ega64(c)
+  local function level(hi, lo) return (((c >> hi) & 1) * 2 + ((c >> lo) & 1)) * 0x55 end
+  return string.format("#%02x%02x%02x", level(2, 5), level(1, 4), level(0, 3))
+end
+-- the 16 colours of the 16-colour modes as EGA colour numbers (brown is 20, not 6)
+local EGA16 = { [0] = 0, 1, 2, 3, 4, 5, 20, 7, 56, 57, 58, 59, 60, 61, 62, 63 }
+
+function M.install(E, rt)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
+  local h_print_at, h_scroll, h_pages, h_pcopy = draw("print_at"), draw("scroll_text"),
+    draw("pages"), draw("pcopy")
+  local h_draw, h_get, h_put, h_pmap = draw("draw"), draw("get_block"), draw("put_block"), draw("pmap")
+  local h_mode_info, h_palette, h_color, h_cls = draw("mode_info"), draw("palette"), draw("color"),
+    draw("cls")
+  local h_last_point = draw("last_point")
+
+  -- a host call whose error is QBasic's Illegal function call at the program's line, with the
+  -- host's reason in parentheses
+  local function host(level, f, ...)
+    local ok, a, b = pcall(f, ...)
+    if not ok then error(IFC .. " (" .. tostring(a):gsub("^[^:]*:%d+: ", "") .. ")", level + 1) end
+    return a, b
+  end
+
+  -- ---- the text screen ------------------------------------------------------------------
+  local tx = { row = 1, col = 1, top = 1, bottom = 25, rows = 25, cols = 80, pages = 1,
+    active = 0, visual = 0 }
+  local out = io.stdout
+
+  local function graphics() return rt.get_mode() ~= 0 end
+
+  local function newline()
+    tx.col = 1
+    if tx.row < tx.bottom then
+      tx.row = tx.row + 1
+    elseif graphics() then
+      h_scroll(tx.top, tx.bottom, 0)
+    end
+  end
+
+  -- text on the screen from the cursor: cells of the picture on a graphics screen, wrapping
+  -- at the right edge and scrolling the text viewport as QBasic does
+  local function screen_text(s)
+    local i = 1
+    while i <= #s do
+      local nl = s:find("\n", i, true)
+      local piece = s:sub(i, (nl or #s + 1) - 1)
+      while #piece > 0 do
+        local room = tx.cols - tx.col + 1
+        local part = piece:sub(1, room)
+        h_print_at(tx.row, tx.col, part, nil, 0)
+        tx.col = tx.col + #part
+        piece = piece:sub(room + 1)
+        if tx.col > tx.cols then newline() end
+      end
+      if nl then newline() i = nl + 1 else break end
+    end
+  end
+
+  -- all PRINT output: standard output always (a transcript of the run), and the picture on
+  -- a graphics screen.  Returns the 0-based column after it, for zones and TAB.
+  function rt.text_out(s)
+    out:write(s)
+    if graphics() then
+      screen_text(s)
+    else   -- text mode: standard output is the screen; no wrapping (docs/qbasic.md)
+      local nl = s:find("\n[^\n]*$")
+      if nl then
+        local _, n = s:gsub("\n", "")
+        tx.row = math.min(tx.row + n, tx.bottom)
+        tx.col = #s - nl + 1
+      else
+        tx.col = tx.col + #s
+      end
+    end
+    return tx.col - 1
+  end
+  function rt.text_col() return tx.col - 1 end
+
+  function rt.text_mode(info)   -- SCREEN: the text screen of the new mode, cursor home
+    tx.rows, tx.cols = info and info.rows or 25, info and info.cols or 80
+    tx.top, tx.bottom, tx.row, tx.col = 1, tx.rows, 1, 1
+    tx.pages, tx.active, tx.visual = info and info.pages or 1, 0, 0
+  end
+
+  function E.locate(row, col)
+    if row ~= nil then
+      row = to_int(row, -32768, 32767, 2)
+      if row < 1 or row > tx.rows then error(IFC, 2) end
+      -- the transcript on standard output starts a new line where the screen's cursor leaves one
+      if row ~= tx.row and tx.col > 1 then out:write("\n") end
+      tx.row = row
+    end
+    if col ~= nil then
+      col = to_int(col, -32768, 32767, 2)
+      if col < 1 or col > tx.cols then error(IFC, 2) end
+      tx.col = col
+    end
+  end
+  function E.csrlin() return tx.row end
+  function E.pos_(_) return tx.col end
+  function E.view_print(top, bottom)
+    if top == nil then
+      tx.top, tx.bottom = 1, tx.rows
+    else
+      top, bottom = to_int(top, -32768, 32767, 2), to_int(bottom, -32768, 32767, 2)
+      if top < 1 or bottom > tx.rows or top > bottom then error(IFC, 2) end
+      tx.top, tx.bottom = top, bottom
+    end
+    tx.row, tx.col = tx.top, 1
+  end
+  -- WIDTH columns, rows: accepted when QBasic has the size; the mode's layout stays
+  function E.width(cols, rows)
+    if cols ~= nil then
+      cols = to_int(cols, -32768, 32767, 2)
+      if cols ~= 40 and cols ~= 80 then error(IFC, 2) end
+    end
+    if rows ~= nil then
+      rows = to_int(rows, -32768, 32767, 2)
+      if rows ~= 25 and rows ~= 30 and rows ~= 43 and rows ~= 50 and rows ~= 60 then error(IFC, 2) end
+    end
+  end
+  -- CLS 0 (or none): the whole screen; 1: the graphics view; 2: the text viewport
+  function rt.cls(n)
+    if not graphics() then tx.row, tx.col = tx.top, 1 return end
+    if n == 2 then
+      for r = tx.top, tx.bottom do h_print_at(r, 1, string.rep(" ", tx.cols), nil, 0) end
+    elseif n == 1 then
+      h_cls()
+      return
+    else
+      h_cls()
+    end
+    tx.row, tx.col = tx.top, 1
+  end
+
+  -- ---- modes, palettes, pages -----------------------------------------------------------
+  function rt.screen_pages(apage, vpage, level)
+    if apage == nil and vpage == nil then return end
+    local a = apage ~= nil and to_int(apage, -32768, 32767, level + 1) or tx.active
+    local v = vpage ~= nil and to_int(vpage, -32768, 32767, level + 1) or tx.visual
+    if a < 0 or a >= tx.pages or v < 0 or v >= tx.pages then error(IFC, level + 1) end
+    h_pages(a, v)
+    tx.active, tx.visual = a, v
+  end
+  function rt.mode_info(m) return h_mode_info(m) end
+
+  function E.pcopy(from, to)
+    from, to = to_int(from, -32768, 32767, 2), to_int(to, -32768, 32767, 2)
+    if not graphics() then return end
+    if from < 0 or from >= tx.pages or to < 0 or to >= tx.pages then error(IFC, 2) end
+    host(2, h_pcopy, from, to)
+  end
+
+  -- COLOR in the modes where it is not SCREEN 12's: 7 and 9 take a background colour (the
+  -- colour shown for attribute 0), SCREEN 1 a background and one of its two palettes
+  function rt.color_other(m, fg, bg, level)
+    if m == 1 then
+      if fg ~= nil then
+        fg = to_int(fg, -32768, 32767, level + 1)
+        if fg < 0 or fg > 15 then error(IFC, level + 1) end
+        h_palette(0, ega64(EGA16[fg]))
+      end
+      if bg ~= nil then
+        bg = to_int(bg, -32768, 32767, level + 1)
+        local set = (bg % 2 == 0) and { 10, 12, 14 } or { 11, 13, 15 }
+        for i = 1, 3 do h_palette(i, ega64(EGA16[set[i]])) end
+      end
+      return
+    end
+    if m == 2 then error(IFC, level + 1) end
+    if fg ~= nil then
+      fg = to_int(fg, -32768, 32767, level + 1)
+      if fg < 0 or fg > 15 then error(IFC, level + 1) end
+      h_color(fg)
+    end
+    if bg ~= nil then
+      bg = to_int(bg, -32768, 32767, level + 1)
+      if bg < 0 or bg > 15 then error(IFC, level + 1) end
+      h_palette(0, ega64(EGA16[bg]))
+    end
+  end
+  -- PALETTE attr, colour in the EGA modes: colour numbers, not VGA's 6-bit mixtures
+  function rt.palette_other(m, attr, c, level)
+    c = to_int(c, -2147483648, 2147483647, level + 1)
+    if c == -1 then return end
+    local max = (m == 9) and 63 or 15
+    if c < 0 or c > max then error(IFC, level + 1) end
+    h_palette(attr, ega64(m == 9 and c or EGA16[c]))
+  end
+
+  -- ---- DRAW -----------------------------------------------------------------------------
+  -- VARPTR$(v) stands for the variable in a DRAW (or PLAY) string: here its value, between
+  -- markers that DRAW replaces ("X" + VARPTR$(a$) runs a$, "=" + VARPTR$(n) is n)
+  function E.varptr(v)
+    if type(v) == "string" then return "\1" .. v .. "\2" end
+    return "\1" .. string.format("%d", to_int(v, -32768, 32767, 2)) .. "\2"
+  end
+  local function expand(s, depth, level)
+    if depth > 20 then error(IFC, level + 1) end
+    s = s:gsub("[Xx]%s*\1([^\2]*)\2", function(sub) return " " .. expand(sub, depth + 1, level + 1) .. " " end)
+    s = s:gsub("=%s*\1([^\2]*)\2", function(n) return n end)
+    if s:find("[\1\2=]") then error(IFC, level + 1) end   -- X or = without VARPTR$
+    return s
+  end
+  function E.draw(s)
+    if not graphics() then error(IFC, 2) end
+    host(2, h_draw, expand(s, 0, 2))
+  end
+
+  -- ---- GET and PUT ----------------------------------------------------------------------
+  -- a block is kept beside its array, under the element it was stored at; the array must
+  -- have room for the bytes QBasic would store there
+  local blocks = setmetatable({}, { __mode = "k" })
+  local function key_of(at)
+    local t = {}
+    for i, v in ipairs(at) do t[i] = string.format("%d", to_int(v, -32768, 32767, 4)) end
+    return table.concat(t, ",")
+  end
+  local function room(arr, at, elem, level)
+    -- the elements from `at` to the end of the array (QBasic stores the block there)
+    local mt = getmetatable(arr)
+    if not mt or not mt.lo then error(IFC, level + 1) end
+    local first = at[1] and to_int(at[1], -32768, 32767, level + 1) or mt.lo
+    if first < mt.lo or first > mt.hi then error("Subscript out of range", level + 1) end
+    local n = mt.hi - first + 1
+    local inner = rawget(arr, mt.lo)
+    while type(inner) == "table" do   -- further dimensions: whole rows of elements
+      local imt = getmetatable(inner)
+      n = n * (imt.hi - imt.lo + 1)
+      inner = rawget(inner, imt.lo)
+    end
+    return n * elem
+  end
+  function E.get_into(x1, y1, x2, y2, arr, at, elem)
+    if not graphics() then error(IFC, 2) end
+    local b = host(2, h_get, rt.coord(x1, 2), rt.coord(y1, 2), rt.coord(x2, 2), rt.coord(y2, 2))
+    if room(arr, at, elem or 2, 2) < b.bytes then error(IFC, 2) end
+    blocks[arr] = blocks[arr] or {}
+    blocks[arr][key_of(at)] = b
+  end
+  function E.put_from(x, y, arr, at, action)
+    if not graphics() then error(IFC, 2) end
+    local b = blocks[arr] and blocks[arr][key_of(at)]
+    if not b then error(IFC .. " (PUT of an array element no GET stored a block in)", 2) end
+    host(2, h_put, rt.coord(x, 2), rt.coord(y, 2), b, action)
+  end
+
+  function E.pmap(v, n)
+    if not graphics() then error(IFC, 2) end
+    n = to_int(n, -32768, 32767, 2)
+    if n < 0 or n > 3 then error(IFC, 2) end
+    local r = host(2, h_pmap, v, n)
+    return r
+  end
+  -- POINT(0), POINT(1): the graphics cursor in view pixels
+  function rt.point_physical(n)
+    local x, y = h_last_point()
+    local r = h_pmap(n == 0 and x or y, n)
+    return r
+  end
+
+  -- ---- the clock ------------------------------------------------------------------------
+  local clock = 0
+  function E.timer()
+    local t = clock
+    clock = clock + M.TICK
+    return rt.f32(t)
+  end
+  function E.sleep(n)
+    if n ~= nil then
+      n = to_int(n, -2147483648, 2147483647, 2)
+      if n > 0 then clock = clock + n end
+    end
+  end
+  function E.beep() end
+  function E.sound(freq, ticks)
+    if freq - freq ~= 0 or ticks - ticks ~= 0 then error(IFC, 2) end
+    if (freq ~= 0 and (freq < 37 or freq > 32767)) or ticks < 0 or ticks > 65535 then error(IFC, 2) end
+    clock = clock + ticks * M.TICK
+  end
+  function E.play(_) end
+  function E.key_def(n, _)
+    n = to_int(n, -32768, 32767, 2)
+    if n < 1 or n > 31 then error(IFC, 2) end
+  end
+
+  -- ---- the keyboard ---------------------------------------------------------------------
+  local input = io.stdin
+  local pending = ""         -- characters of standard input not yet taken
+  local at_eof = false
+  local empty_polls, total_empty = 0, 0
+  local function fill()
+    if pending == "" and not at_eof then
+      local l = input:read("L")
+      if l then pending = l else at_eof = true end
+    end
+  end
+  local function read_line()
+    if pending == "" then fill() end
+    if pending == "" then return nil end
+    local l = pending:gsub("\r?\n$", "")
+    pending = ""
+    return l
+  end
+  function E.inkey()
+    fill()
+    if pending ~= "" then
+      local c = pending:sub(1, 1)
+      pending = pending:sub(2)
+      if c == "\n" then c = "\r" end       -- Enter is CHR$(13)
+      empty_polls, total_empty = 0, 0
+      return c
+    end
+    clock = clock + M.TICK
+    empty_polls, total_empty = empty_polls + 1, total_empty + 1
+    if total_empty > M.GIVE_UP_POLLS then
+      io.stderr:write(rt.chunkname .. ": the program keeps waiting for a key and the input has run out: ended\n")
+      E.stop()
+    end
+    if empty_polls >= M.EMPTY_POLLS then
+      empty_polls = 0
+      return "\r"
+    end
+    return ""
+  end
+  function E.input_chars(n, file)
+    if file ~= nil then error("INPUT$ from a file: not supported by pointcalc", 2) end
+    n = to_int(n, -32768, 32767, 2)
+    if n < 1 or n > 32767 then error(IFC, 2) end
+    local t = {}
+    for i = 1, n do
+      fill()
+      if pending == "" then t[i] = "\r"
+      else
+        t[i] = pending:sub(1, 1) == "\n" and "\r" or pending:sub(1, 1)   -- Enter is CHR$(13)
+        pending = pending:sub(2)
+      end
+    end
+    return table.concat(t)
+  end
+
+  local function echo(prompt, answer, same_line)
+    rt.qwrite(prompt .. answer .. (same_line and "" or "\n"))
+  end
+  function E.line_input(prompt, same_line)
+    local l = read_line() or ""
+    echo(prompt or "", l, same_line)
+    return { l }
+  end
+  -- INPUT: the fields of a line, separated by commas ("quoted" strings keep theirs); a line
+  -- with the wrong number of fields or a bad number is QBasic's "Redo from start"; at the end
+  -- of the input the variables get 0 and ""
+  local function fields(l)
+    local t, i = {}, 1
+    while true do
+      local s = l:match("^%s*", i)
+      i = i + #s
+      local f
+      if l:sub(i, i) == '"' then
+        local j = l:find('"', i + 1, true) or #l + 1
+        f = l:sub(i + 1, j - 1)
+        i = j + 1
+        local rest = l:match("^%s*", i)
+        i = i + #rest
+      else
+        local j = l:find(",", i, true) or #l + 1
+        f = l:sub(i, j - 1):gsub("%s+$", "")
+        i = j
+      end
+      t[#t + 1] = f
+      if l:sub(i, i) == "," then i = i + 1 elseif i > #l then return t else return nil end
+    end
+  end
+  function E.input_fields(prompt, mark, same_line, kinds)
+    local p = (prompt or "") .. (mark and "? " or "")
+    while true do
+      local l = read_line()
+      if not l then
+        echo(p, "", same_line)
+        local r = {}
+        for i, k in ipairs(kinds) do r[i] = k == "s" and "" or 0 end
+        return r
+      end
+      echo(p, l, same_line)
+      local f = fields(l)
+      local ok = f and #f == #kinds
+      local r = {}
+      for i, k in ipairs(kinds) do
+        if not ok then break end
+        if k == "s" then r[i] = f[i]
+        else
+          local v = f[i] == "" and 0 or tonumber((f[i]:gsub("[dD]", "e")))
+          if not v then ok = false else r[i] = v end
+        end
+      end
+      if ok then return r end
+      rt.qwrite("Redo from start\n")
+    end
+  end
+  function E.randomize_ask()
+    local l = read_line()
+    echo("Random-number seed (-32768 to 32767)? ", l or "", false)
+    local n = tonumber(l or "") or 0
+    E.randomize(n)
+  end
+end
+
+return M

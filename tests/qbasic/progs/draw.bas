@@ -1,0 +1,22 @@
+' DRAW's macro language, checked through POINT: a square with BM, the colour kept between
+' DRAWs, diagonals, N (return), S (scale), TA and A (turns), relative M, P (paint), and
+' strings run by X with VARPTR$ and numbers given by = VARPTR$.
+SCREEN 12
+DRAW "BM100,100 C4 R10 D10 L10 U10"
+PRINT POINT(100, 100); POINT(110, 100); POINT(110, 110); POINT(100, 110); POINT(105, 105)
+DRAW "BM200,200 E5 F5"
+PRINT POINT(205, 195); POINT(210, 200); POINT(204, 200)
+DRAW "BM300,300 C2 NU5 S8 R5 S4"
+PRINT POINT(300, 295); POINT(310, 300); POINT(311, 300)
+DRAW "BM400,300 TA90 C3 U10 TA0"
+PRINT POINT(390, 300); POINT(400, 290)
+DRAW "BM50,400 A1 C6 R10 A0"
+PRINT POINT(50, 390)
+DRAW "BM500,100 C15 M+20,0 M+0,20 M-20,+0 M+0,-20 BM+5,+5 P1,15"
+PRINT POINT(510, 110); POINT(520, 110); POINT(530, 110)
+side$ = "R20 D20 L20 U20"
+n = 40
+DRAW "BM300,150 C9 X" + VARPTR$(side$) + " BM+0,+30 R=" + VARPTR$(n)
+PRINT POINT(320, 170); POINT(340, 180); POINT(341, 180)
+x = POINT(0): y = POINT(1)
+PRINT "cursor"; x; y

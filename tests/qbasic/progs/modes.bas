@@ -1,0 +1,31 @@
+' The other screen modes: sizes (POINT is -1 off the screen), default colours, CIRCLE's aspect
+' on a 4:3 monitor (SCREEN 13's circles are flattened in pixels), PMAP, COLOR and PALETTE in
+' the EGA modes, screen pages with PCOPY.
+SCREEN 13
+PRINT POINT(319, 199); POINT(320, 0); POINT(0, 200)
+CIRCLE (160, 100), 50, 14
+PRINT POINT(210, 100); POINT(160, 58); POINT(160, 50)
+WINDOW (0, 0)-(32, 20)
+PRINT PMAP(16, 0); PMAP(10, 1); PMAP(160, 2); PMAP(100, 3)
+WINDOW
+SCREEN 1
+PRINT POINT(319, 199); POINT(320, 0)
+PSET (5, 150): PRINT POINT(5, 150)
+SCREEN 2
+PRINT POINT(639, 199); POINT(0, 200)
+PSET (5, 150): PRINT POINT(5, 150)
+SCREEN 9
+PRINT POINT(639, 349); POINT(0, 350)
+CIRCLE (320, 175), 100, 2
+PRINT POINT(420, 175); POINT(320, 102); POINT(320, 75)
+' pages: draw on page 1 while page 0 is shown, then copy it
+SCREEN 7, , 1, 0
+LINE (0, 150)-(50, 150), 12
+PRINT POINT(25, 150)
+SCREEN 7, , 0, 0
+PRINT POINT(25, 150)
+PCOPY 1, 0
+PRINT POINT(25, 150)
+COLOR 10, 1
+PSET (3, 160): PRINT POINT(3, 160)
+PALETTE 4, 2
