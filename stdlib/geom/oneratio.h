@@ -1,0 +1,45 @@
+/* Curves of one ratio, Konopatsky's chapter 3 (digest konopatsky_ch3_5.md §1): constructions
+ * in which one simple ratio t runs through every link of a scheme.  All are curves of the one
+ * curve type (curve.h): the polynomial and rational ones Bezier curves, the blends of two
+ * conics FUNC curves whose homogeneous value has weight 0 at the conics' poles.
+ * Points are Cartesian rows of dim; the result is a new curve or NULL with *status set. */
+#ifndef PC_ONERATIO_H
+#define PC_ONERATIO_H
+
+#include "curve.h"
+
+/* (3.1) The moving simplex: N = A t' + C t, M = N t' + B t, i.e. M = A t'^2 + B t + C t t'
+ * (the print has C t'; digest §1.1): the quadratic Bezier A, (B + C)/2, B. */
+pc_curve *pc_oneratio_simplex(int dim, const double *a, const double *b, const double *c,
+                              int *status);
+/* (3.2)-(3.3) In the simplex DABC: M = A t'^2 + (C + D) t' t + B t^2, the quadratic Bezier
+ * A, (C + D)/2, B; M(1/2) is the centroid of the tetrahedron. */
+pc_curve *pc_oneratio_tetra(int dim, const double *a, const double *b, const double *c,
+                            const double *d, int *status);
+/* §3.6 The contour arc of smoothness order n >= 1 (zero curvature at the ends for n >= 2):
+ * M_n = (A - C) t'^(n+1)/D_n + (B - C) t^(n+1)/D_n + C, D_n = sum t'^k t^(n-k): the rational
+ * Bezier of degree n+1 on A, C, ..., C, B with weights 1, 2/binom(n+1, i), 1.  n <= 40. */
+pc_curve *pc_oneratio_smooth(int dim, const double *a, const double *b, const double *c, int n,
+                             int *status);
+/* (3.6) The Desargues arc: M = (A t'^3 + B t^2 t' + C t'^2 t + D t^3)/(2t^2 - 2t + 1), the
+ * rational cubic Bezier A, C, B, D with weights 1, 1/3, 1/3, 1; tangents AC at A, BD at D. */
+pc_curve *pc_oneratio_desargues(int dim, const double *a, const double *b, const double *c,
+                                const double *d, int *status);
+
+/* The blending function of a curve of double contact: f(ud, v) (NaN fails the evaluation). */
+typedef double (*pc_blend_fn)(void *ud, double v);
+/* §3.4 Double contact: P and Q the arcs (2.97) of A, B, C with discriminants kp != kq, and
+ * M = P (1 - f(v)) + Q f(v), v in [0, 1].  f NULL: f(v) = v (the linear case of [14]).
+ * Tangent to CA at A and to CB at B for any bounded f.  A pole of P or Q (k < 0) is a point
+ * at infinity of M (weight 0).  PC_EDOMAIN for kp = kq or a zero k. */
+pc_curve *pc_oneratio_double_contact(int dim, const double *a, const double *b,
+                                     const double *c, double kp, double kq, pc_blend_fn f,
+                                     void (*fn_free)(void *ud), void *ud, int *status);
+/* §3.5 Closed curves: M = P u' + Q u with P the arc (2.97) kP run from B to A and Q run
+ * A -> B (scheme 1) or Q = (C - A)kQ u'^2/d + (B - A)kQ u^2/d + A run C -> B (scheme 2, the
+ * printed Q with u^2 and u'^2 exchanged as the printed final M demands; digest §1.5).
+ * M(0) = M(1) = B. */
+pc_curve *pc_oneratio_closed(int dim, const double *a, const double *b, const double *c,
+                             double kp, double kq, int scheme, int *status);
+
+#endif

@@ -1,0 +1,206 @@
+/* Curves of one ratio, Konopatsky's chapter 3 (oneratio.h): the test vectors of the digest
+ * konopatsky_ch3_5.md §1 and §6 with A(0,0,0), B(4,0,0), C(1,3,0), D(4,3,2), t = 0.3; the
+ * schemes against the closed forms; end tangents, end curvature, the printed closed forms of
+ * Fig. 3.6. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include "oneratio.h"
+
+#define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
+
+static const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {1, 3, 0}, D[3] = {4, 3, 2};
+
+static void near3(pc_curve *c, double t, double x, double y, double z, double tol) {
+    double m[3];
+    assert_int_equal(pc_curve_eval(c, t, m), PC_OK);
+    NEAR(m[0], x, tol);
+    NEAR(m[1], y, tol);
+    NEAR(m[2], z, tol);
+}
+
+/* d^order M/dt^order at t into out (3) */
+static void deriv(pc_curve *c, double t, int order, double *out) {
+    double d[9];
+    assert_int_equal(pc_curve_derivs(c, t, order, d), PC_OK);
+    for (int k = 0; k < 3; k++) out[k] = d[3 * order + k];
+}
+
+/* |u x v| / (|u||v|): zero for parallel vectors */
+static double sin_between(const double *u, const double *v) {
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    return sqrt(x * x + y * y + z * z) / (sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) *
+                                          sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+}
+
+static void test_simplex_tetra(void **state) {
+    (void)state;
+    int st;
+    pc_curve *c = pc_oneratio_simplex(3, A, B, C, &st);
+    near3(c, 0.3, 1.41, 0.63, 0, 1e-12);
+    for (double t = 0; t <= 1; t += 0.1) {     /* the scheme N = A t' + C t, M = N t' + B t */
+        double m[3], N[3];
+        for (int k = 0; k < 3; k++) N[k] = A[k] * (1 - t) + C[k] * t;
+        pc_curve_eval(c, t, m);
+        for (int k = 0; k < 3; k++) NEAR(m[k], N[k] * (1 - t) + B[k] * t, 1e-12);
+    }
+    double d[3], bc[3] = {B[0] - C[0], B[1] - C[1], 0}, ac[3] = {C[0] - A[0], C[1] - A[1], 0};
+    deriv(c, 1, 1, d);                          /* BC tangent at B: M'(1) = B - C */
+    for (int k = 0; k < 3; k++) NEAR(d[k], bc[k], 1e-12);
+    deriv(c, 0, 1, d);                          /* AC not tangent at A */
+    assert_true(sin_between(d, ac) > 0.1);
+    NEAR(d[0], B[0] + C[0] - 2 * A[0], 1e-12);
+    pc_curve_release(c);
+
+    c = pc_oneratio_tetra(3, A, B, C, D, &st);
+    near3(c, 0.3, 1.41, 1.26, 0.42, 1e-12);
+    near3(c, 0.5, 9.0 / 4, 6.0 / 4, 2.0 / 4, 1e-12);   /* the centroid */
+    pc_curve_release(c);
+}
+
+static void test_smooth(void **state) {
+    (void)state;
+    int st;
+    static const double tv[5][2] = {{0.78, 1.26}, {0.6683544304, 1.594936709},
+                                    {0.6279310345, 1.716206897}, {0.6117362956, 1.764791113},
+                                    {0.604988026, 1.785035922}};
+    for (int n = 1; n <= 6; n++) {
+        pc_curve *c = pc_oneratio_smooth(3, A, B, C, n, &st);
+        assert_non_null(c);
+        if (n <= 5) near3(c, 0.3, tv[n - 1][0], tv[n - 1][1], 0, 1e-9);
+        /* the general law with D_n = sum t'^k t^(n-k) */
+        double t = 0.37, tb = 1 - t, Dn = 0, m[3];
+        for (int k = 0; k <= n; k++) Dn += pow(tb, k) * pow(t, n - k);
+        pc_curve_eval(c, t, m);
+        for (int k = 0; k < 3; k++)
+            NEAR(m[k], (A[k] - C[k]) * pow(tb, n + 1) / Dn + (B[k] - C[k]) * pow(t, n + 1) / Dn + C[k], 1e-12);
+        /* curvature at the ends: zero for n >= 2 ("points of straightening") */
+        double k0, k1;
+        assert_int_equal(pc_curve_curvature(c, 0, &k0), PC_OK);
+        assert_int_equal(pc_curve_curvature(c, 1, &k1), PC_OK);
+        if (n >= 2) {
+            NEAR(k0, 0, 1e-9);
+            NEAR(k1, 0, 1e-9);
+        } else {
+            assert_true(fabs(k0) > 0.01);
+        }
+        pc_curve_release(c);
+    }
+    /* M_2's scheme (Fig. 3.9): P2 = (A t'^2 + C t)/(1 - t't), Q1 = (B t^2 + C t')/(1 - t't), M on P2Q1 */
+    pc_curve *c = pc_oneratio_smooth(3, A, B, C, 2, &st);
+    double t = 0.4, tb = 0.6, d = 1 - tb * t, m[3];
+    pc_curve_eval(c, t, m);
+    for (int k = 0; k < 3; k++) {
+        double p2 = (A[k] * tb * tb + C[k] * t) / d, q1 = (B[k] * t * t + C[k] * tb) / d;
+        NEAR(m[k], p2 + t * (q1 - p2), 1e-12);
+    }
+    pc_curve_release(c);
+    assert_null(pc_oneratio_smooth(3, A, B, C, 0, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+}
+
+static void test_desargues(void **state) {
+    (void)state;
+    int st;
+    pc_curve *c = pc_oneratio_desargues(3, A, B, C, D, &st);
+    near3(c, 0.3, 0.874137931, 0.9, 0.09310344828, 1e-9);
+    near3(c, 0.5, 9.0 / 4, 6.0 / 4, 2.0 / 4, 1e-12);
+    double d[3];
+    deriv(c, 0, 1, d);
+    for (int k = 0; k < 3; k++) NEAR(d[k], C[k] - A[k], 1e-12);
+    deriv(c, 1, 1, d);
+    for (int k = 0; k < 3; k++) NEAR(d[k], D[k] - B[k], 1e-12);
+    deriv(c, 0, 2, d);
+    for (int k = 0; k < 3; k++) NEAR(d[k], 2 * (B[k] - A[k]), 1e-12);
+    deriv(c, 1, 2, d);
+    for (int k = 0; k < 3; k++) NEAR(d[k], 2 * (C[k] - D[k]), 1e-12);
+    /* the scheme: M = S t(2t - 1)/(2t^2 - 2t + 1) + N t'/(2t^2 - 2t + 1) */
+    double t = 0.3, tb = 0.7, den = 2 * t * t - 2 * t + 1, m[3];
+    pc_curve_eval(c, t, m);
+    for (int k = 0; k < 3; k++) {
+        double S = (C[k] * tb * tb - D[k] * t * t) / (1 - 2 * t);
+        double N = A[k] * tb * tb + 2 * C[k] * tb * t + B[k] * t * t;
+        NEAR(m[k], S * t * (2 * t - 1) / den + N * tb / den, 1e-12);
+    }
+    pc_curve_release(c);
+}
+
+static double f_sq(void *ud, double v) { (void)ud; return v * v; }
+static double f_sqrt(void *ud, double v) { (void)ud; return sqrt(v); }
+
+static void test_double_contact(void **state) {
+    (void)state;
+    int st;
+    double a2[2] = {0, 0}, b2[2] = {10, 0}, c2[2] = {4, 6};
+    pc_curve *c = pc_oneratio_double_contact(2, a2, b2, c2, 0.3, 0.7, f_sq, NULL, NULL, &st);
+    for (double v = 0.1; v < 1; v += 0.2) {
+        /* the printed closed form of Fig. 3.6a */
+        double den = (0.8 * v * v - 0.8 * v - 0.3) * (0.8 * v * v - 0.8 * v + 0.7);
+        double fa = (0.8 * pow(v, 6) - 2.4 * pow(v, 5) + 2.16 * pow(v, 4) - 0.08 * pow(v, 3)
+                     - 0.93 * v * v + 0.66 * v - 0.21) / den;
+        double fb = (0.8 * pow(v, 6) - 0.8 * pow(v, 5) - 0.24 * pow(v, 4) + 0.24 * pow(v, 3)
+                     - 0.21 * v * v) / den;
+        double m[2];
+        pc_curve_eval(c, v, m);
+        for (int k = 0; k < 2; k++)
+            NEAR(m[k], (a2[k] - c2[k]) * fa + (b2[k] - c2[k]) * fb + c2[k], 1e-10);
+    }
+    /* end tangents along CA and CB (the core differences a FUNC curve) */
+    double d[4];
+    assert_int_equal(pc_curve_derivs(c, 0, 1, d), PC_OK);
+    NEAR(d[2] * (c2[1] - a2[1]) - d[3] * (c2[0] - a2[0]), 0, 1e-5 * hypot(d[2], d[3]) * 8);
+    assert_int_equal(pc_curve_derivs(c, 1, 1, d), PC_OK);
+    NEAR(d[2] * (c2[1] - b2[1]) - d[3] * (c2[0] - b2[0]), 0, 1e-5 * hypot(d[2], d[3]) * 8);
+    pc_curve_release(c);
+    c = pc_oneratio_double_contact(2, a2, b2, c2, 0.3, 0.7, f_sqrt, NULL, NULL, &st);
+    for (double v = 0.1; v < 1; v += 0.2) {      /* Fig. 3.6b */
+        double s = sqrt(v), d1 = 0.8 * v * v - 0.8 * v - 0.3, d2 = 0.8 * v * v - 0.8 * v + 0.7;
+        double fa = (-1 + s) * (0.3 * v * v - 0.6 * v + 0.3) / d1 + (0.7 * v * v - 1.4 * v + 0.7) * s / d2;
+        double fb = 0.3 * (-1 + s) * v * v / d1 + 0.7 * pow(v, 2.5) / d2;
+        double m[2];
+        pc_curve_eval(c, v, m);
+        for (int k = 0; k < 2; k++)
+            NEAR(m[k], (a2[k] - c2[k]) * fa + (b2[k] - c2[k]) * fb + c2[k], 1e-10);
+    }
+    pc_curve_release(c);
+    /* a negative k: the pole of P is a point at infinity of M */
+    c = pc_oneratio_double_contact(2, a2, b2, c2, -0.5, 0.5, NULL, NULL, NULL, &st);
+    double h[3], u = 0.5 * (1 - 1 / sqrt(2));
+    pc_curve_eval_h(c, u, 0, h);
+    NEAR(h[2], 0, 1e-14);
+    pc_curve_release(c);
+    assert_null(pc_oneratio_double_contact(2, a2, b2, c2, 0.4, 0.4, NULL, NULL, NULL, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+}
+
+static void test_closed(void **state) {
+    (void)state;
+    int st;
+    pc_curve *c1 = pc_oneratio_closed(3, A, B, C, 0.8, 0.5, 1, &st);
+    pc_curve *c2 = pc_oneratio_closed(3, A, B, C, 0.8, 0.5, 2, &st);
+    near3(c1, 0.3, 2.344218978, 0.6998978102, 0, 1e-9);
+    near3(c2, 0.3, 2.365218978, 0.7628978102, 0, 1e-9);
+    near3(c1, 0, 4, 0, 0, 1e-12);
+    near3(c1, 1, 4, 0, 0, 1e-12);
+    near3(c2, 0, 4, 0, 0, 1e-12);
+    near3(c2, 1, 4, 0, 0, 1e-12);
+    /* scheme 1's start tangent 2(1 - kP)/kP (C - B) + (A - B) (ours, digest §1.5) */
+    double d[9], want[3];
+    assert_int_equal(pc_curve_derivs(c1, 0, 1, d), PC_OK);
+    for (int k = 0; k < 3; k++) want[k] = 2 * 0.2 / 0.8 * (C[k] - B[k]) + (A[k] - B[k]);
+    for (int k = 0; k < 3; k++) NEAR(d[3 + k], want[k], 1e-5);
+    pc_curve_release(c1);
+    pc_curve_release(c2);
+    assert_null(pc_oneratio_closed(3, A, B, C, 0.8, 0.5, 3, &st));
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_simplex_tetra), cmocka_unit_test(test_smooth),
+        cmocka_unit_test(test_desargues),     cmocka_unit_test(test_double_contact),
+        cmocka_unit_test(test_closed),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
