@@ -5,7 +5,11 @@
 #   ./build.sh test       build, then run the whole test suite
 #   ./build.sh sanitize   build the tests under AddressSanitizer + UBSan in build-asan/ and run them
 #   ./build.sh bench      build, then run the benchmarks in bench/
+#   ./build.sh install [PREFIX]   build, then install into PREFIX (default /usr/local): the
+#                         program, the Lua module, the man page, docs, examples, bash completion
+#   ./build.sh deb        build, then make the Debian package build/pointcalc_VERSION_ARCH.deb
 set -e
+case "${2:-/usr/local}" in /*) prefix=${2:-/usr/local} ;; *) prefix="$(pwd)/$2" ;; esac   # for install
 cd "$(dirname "$0")"
 ./setup.sh
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -28,5 +32,7 @@ sanitize) build build-asan -DPC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug &&
           ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
           ctest --test-dir build-asan --output-on-failure -j "$jobs" ;;
 bench)    build build && sh bench/run.sh build/pointcalc ;;
-*)        echo "usage: ./build.sh [build|gallery|test|sanitize|bench]" >&2; exit 2 ;;
+install)  build build && cmake --install build --prefix "$prefix" ;;
+deb)      build build && (cd build && cpack -G DEB) ;;
+*)        echo "usage: ./build.sh [build|gallery|test|sanitize|bench|install [PREFIX]|deb]" >&2; exit 2 ;;
 esac

@@ -3,10 +3,23 @@
 # As root the missing ones are installed with apt-get; otherwise the exact command is printed.
 set -e
 PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux"
+# what the install and gallery-page tests use (man -l, luarocks make, cpack's dpkg-shlibdeps, a
+# headless browser): installed as root like the rest; without root a missing one is only noted
+TEST_PKGS="man-db luarocks dpkg-dev chromium"
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "ok installed"; }
 missing=""
 for p in $PKGS; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"
+    installed "$p" || missing="$missing $p"
 done
+missing_tests=""
+for p in $TEST_PKGS; do
+    installed "$p" || missing_tests="$missing_tests $p"
+done
+if [ "$(id -u)" != 0 ] && [ -n "$missing_tests" ]; then
+    echo "setup: for the install and gallery-page tests also: sudo apt-get install -y$missing_tests" >&2
+else
+    missing="$missing$missing_tests"
+fi
 [ -z "$missing" ] && exit 0
 if [ "$(id -u)" = 0 ]; then
     echo "setup: installing$missing" >&2
