@@ -19,6 +19,10 @@ function M.translate(source, chunkname)
   if type(res) == "table" and res.qb then
     return nil, string.format("%s:%d: %s", chunkname, res.line or 0, res.msg or "Syntax error")
   end
+  -- nesting deeper than the translator's recursion goes (thousands of parentheses)
+  if tostring(res):find("stack overflow", 1, true) then
+    return nil, string.format("%s: Expression too complex (nested too deeply)", chunkname)
+  end
   -- a bug in the translator: say so, with the Lua error
   return nil, string.format("%s: internal error in the QBasic translator: %s", chunkname,
     tostring(res))

@@ -521,7 +521,8 @@ function M.generate(prog, chunkname)
   for label, line in pairs(gosub_targets) do
     local l = prog.labels[label]
     if not l or l.proc then qerr("Label not defined", line) end
-    gosub_lua[label] = "gosub_" .. label:gsub("%.", "_")
+    -- through the namespace: a variable gosub.10 (gosub_10 in Lua) gets another name
+    gosub_lua[label] = alloc(gns, { "gosub_" .. label:gsub("%.", "_") })
   end
   -- split the top level of main into plain statements and subroutines
   local regions = {}
@@ -1608,7 +1609,8 @@ function M.generate(prog, chunkname)
         end
         if d.text == "" then v = '{0, ""}'        -- 0 for READ n, "" for READ s$
         elseif num and tonumber((d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e"))) then
-          v = d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e")
+          -- (a leading + is no Lua: DATA +5 is 5)
+          v = d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e"):gsub("^%+%s*", "")
         elseif num then v = exact_text(num.v)
         else v = lua_string(d.text) end
         -- READ s$ of a number gets its text as written (DATA 007, 1.50): keep the text when

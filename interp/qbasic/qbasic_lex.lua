@@ -150,7 +150,12 @@ local function lex_number(s, i)
         or math.floor(v + 0.5)
   end
   if ty == "int" and (v > 32767 or v < -32768) then lex_error("Overflow", col) end
-  return { t = "num", v = v, ty = ty, text = text, col = col }, j
+  if ty == "long" and (v > 2147483647 or v < -2147483648) then lex_error("Overflow", col) end
+  -- a SINGLE beyond float32 (1E39) or a DOUBLE beyond double (1D309) is QBasic's Overflow,
+  -- never Lua's inf (which would read as the variable inf)
+  -- (the parser says so where the number is a value; as a line number it is a Syntax error)
+  local overflow = v - v ~= 0 or (ty == "single" and math.abs(v) >= 3.4028235677973366e38)
+  return { t = "num", v = v, ty = ty, text = text, col = col, overflow = overflow }, j
 end
 
 local two_char_ops = { ["<="] = "<=", [">="] = ">=", ["<>"] = "<>", ["=<"] = "<=", ["=>"] = ">=",

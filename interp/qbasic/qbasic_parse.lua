@@ -182,6 +182,7 @@ function M.parse(source, opts)
     local t = peek()
     if t.t == "num" then
       pos = pos + 1
+      if t.overflow then err("Overflow") end
       return { k = "num", v = t.v, ty = t.ty, text = t.text }
     elseif t.t == "str" then
       pos = pos + 1

@@ -354,8 +354,10 @@ function M.new(host, chunkname)
     end
     return setmetatable(t, mt)
   end
+  local MAX_ELEMENTS = 1 << 24
   local function dim(default, level, ...)
     local bounds = {}
+    local total = 1
     for i = 1, select("#", ...) do
       local b = select(i, ...)
       local lo, hi
@@ -363,6 +365,9 @@ function M.new(host, chunkname)
       lo, hi = to_int(lo, -32768, 32767, level + 1), to_int(hi, -32768, 32767, level + 1)
       if hi < lo then error("Subscript out of range", level + 1) end
       bounds[i] = { lo, hi }
+      -- refused before anything is allocated (DIM a(32767, 32767) is a billion elements)
+      total = total * (hi - lo + 1)
+      if total > MAX_ELEMENTS then error("Out of memory", level + 1) end
     end
     return make_array(bounds, 1, default)
   end

@@ -1,0 +1,3 @@
+' EXPECT: 2: Out of memory
+DIM a(32767, 32767)
+PRINT "never"

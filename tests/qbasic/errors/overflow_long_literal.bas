@@ -1,0 +1,2 @@
+' EXPECT: 2: Overflow
+x = 1E19&
