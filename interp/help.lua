@@ -110,6 +110,7 @@ H.fields_of = {
   surface = {"kind", "dim", "u0", "u1", "v0", "v1"},
   oresme = {"lambda", "m", "n"},
   halfspline = {"n", "m", "t0", "c1", "c2", "v", "deriv"},
+  equation = {"dim", "params"},
 }
 
 -- ---------------------------------------------------------------------------------------
@@ -276,6 +277,26 @@ def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
 def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+
+-- ---------------------------------------------------------------------------------------
+area("equations", "Point equations",
+  "The book's point equations as compiled objects: arithmetic on a parameter builds an " ..
+  "equation (common parts shared), which curve() and surface() compile to C with exact " ..
+  "derivatives; the membership condition is checked when one is made.",
+  "equations.md")
+
+def("param", "param(name) -> equation",
+  "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value.")
+def("M(t)", {"M(t [, s ...]) -> value", "M{t = ..., s = ...} -> value"},
+  "The equation's value at parameter values given in the order of M.params, or by name.", "method")
+def("M:with", "M:with{s = value | equation, ...} -> equation",
+  "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation).", "method")
+def("M:show", "M:show{A = A, B = B, ...} -> string",
+  "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y)).", "method")
+def("M:sample", "M:sample(a, b [, n = 1001]) -> samples",
+  "n values at evenly spaced t in [a, b], computed in C: #s, s[i] (a point), s:sum().", "method")
+def("curve(M)", {"curve(M, t0, t1) -> curve", "surface(M, u0, u1, v0, v1) -> surface"},
+  "A one-parameter equation as a curve, a two-parameter one (u the first made) as a surface: exact tangents, normals, curvature.", "method")
 
 -- ---------------------------------------------------------------------------------------
 area("surfaces", "Surfaces (surface.*)",

@@ -291,7 +291,8 @@ int pc_expr_mul(pc_expr_pool *p, int a, int b, int *status) {
     }
     if (is_num(p, b, 1)) return a;
     if (!da && is_num(p, a, 1)) return b;
-    if (is_num(p, b, 0) || (!da && is_num(p, a, 0))) return zero_of(p, da, status);
+    if (is_num(p, b, 0) || (!da && is_num(p, a, 0)) || is_zero_value(p, a))
+        return zero_of(p, da, status);
     if (da) return intern(p, mk(PC_EX_SCALE, da, a, b, 0), NULL, NULL, status);
     if (a > b) { int t = a; a = b; b = t; }    /* a b and b a are one node */
     return intern(p, mk(PC_EX_MUL, 0, a, b, 0), NULL, NULL, status);

@@ -515,18 +515,22 @@ int pc_expr_prog_weight(pc_expr_prog *p, const double *lo, const double *hi, dou
     for (int i = 0; i < NPROBE; i++)
         for (int j = 0; j < nin; j++)
             x[i * nin + j] = lo[j] + (hi[j] - lo[j]) * frac[(i + 2 * j) % NPROBE];
+    int odd = -1;              /* the first probe whose weight is neither 0 nor 1 */
+    int other = -1;            /* the first probe of another kind than the first one */
     for (int i = 0; i < NPROBE; i++) {
         /* one probe at a time: a probe outside the equation's domain is skipped */
         if (pc_expr_eval(p, 1, x + i * nin, 0, out + i * w, NULL) != PC_OK) continue;
-        double wt = out[i * w + p->dim];
-        int kd = pc_kind_of(wt);
+        int kd = pc_kind_of(out[i * w + p->dim]);
         if (!seen) kind = kd;
         seen = 1;
-        if (kd != kind || kd == PC_KIND_WEIGHTED) {
-            if (x_bad) memcpy(x_bad, x + i * nin, sizeof(double) * (size_t)nin);
-            if (w_bad) *w_bad = wt;
-            return PC_KIND_WEIGHTED;
-        }
+        if (kd == PC_KIND_WEIGHTED && odd < 0) odd = i;
+        if (kd != kind && other < 0) other = i;
+    }
+    int bad = odd >= 0 ? odd : other;
+    if (bad >= 0) {
+        if (x_bad) memcpy(x_bad, x + bad * nin, sizeof(double) * (size_t)nin);
+        if (w_bad) *w_bad = out[bad * w + p->dim];
+        return PC_KIND_WEIGHTED;
     }
     return seen ? kind : -2;
 }

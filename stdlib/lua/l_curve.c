@@ -18,6 +18,7 @@
 #include "pcl_curve.h"
 #include "spline.h"
 #include "fourier.h"
+#include "pcl_expr.h"
 
 #define CURVE_MT "curve"
 
@@ -427,7 +428,13 @@ static int l_interpolate(lua_State *L) {
 /* curve(f, t0, t1): the dimension is that of f(t0) */
 static int l_curve(lua_State *L) {
     const char *fn = "curve";
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of t");
+    if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
+        int st;
+        pc_curve *c = pcl_eq_curve(L, fn, &st);
+        pushcurve(L, c, st, "equation", 0);
+        return 1;
+    }
+    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of t or an equation");
     double t0 = pcl_checknum(L, fn, 2, "t0"), t1 = pcl_checknum(L, fn, 3, "t1");
     if (!(t1 > t0)) pcl_error(L, "%s: argument #3 (t1) must be greater than t0", fn);
     lua_settop(L, 3);

@@ -11,6 +11,7 @@
 #include <string.h>
 #include "pcl_point.h"
 #include "pcl_curve.h"
+#include "pcl_expr.h"   /* equations take over when an operand is one (l_expr.c) */
 
 static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the metatable */
 #define MT lua_upvalueindex(1)
@@ -265,6 +266,8 @@ static int make(lua_State *L, double weight) {
         int isnum;
         double v = lua_tonumberx(L, i + 1, &isnum);
         if (!isnum || !isfinite(v) || lua_type(L, i + 1) != LUA_TNUMBER) {
+            lua_settop(L, n);
+            if (pcl_eq_hook(L, weight == 1.0 ? PCL_EQ_P : PCL_EQ_V)) return 1;
             char buf[24];
             const char *what = coord_name(i, buf, sizeof buf);
             if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER) pcl_argerror(L, i + 1, what, "a number");
@@ -298,6 +301,7 @@ static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const p
 
 static int l_add(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
+    if ((!a || !b) && pcl_eq_hook(L, PCL_EQ_ADD)) return 1;
     if (!a || !b)
         return pcl_error(L, "cannot add %s and %s: points and vectors add only to points and "
                           "vectors; to shift a point write A + V(dx, dy)",
@@ -311,6 +315,7 @@ static int l_add(lua_State *L) {
 
 static int l_sub(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
+    if ((!a || !b) && pcl_eq_hook(L, PCL_EQ_SUB)) return 1;
     if (!a || !b)
         return pcl_error(L, "cannot subtract %s from %s: points and vectors subtract only "
                           "points and vectors; to shift a point write A - V(dx, dy)",
@@ -327,8 +332,10 @@ static int l_mul(lua_State *L) {
     int k_idx;
     if ((p = topt(L, 1)) != NULL) k_idx = 2;
     else if ((p = topt(L, 2)) != NULL) k_idx = 1;
+    else if (pcl_eq_hook(L, PCL_EQ_MUL)) return 1;
     else return pcl_error(L, "cannot multiply %s by %s", opnd_name(L, 1), opnd_name(L, 2));
     if (lua_type(L, k_idx) != LUA_TNUMBER) {
+        if (pcl_eq_hook(L, PCL_EQ_MUL)) return 1;
         if (topt(L, k_idx))
             return pcl_error(L, "cannot multiply a point by a point: use dot(u, v) or "
                               "cross(u, v) for products of vectors");
@@ -344,6 +351,7 @@ static int l_mul(lua_State *L) {
 
 static int l_div(lua_State *L) {
     pcl_value *p = topt(L, 1);
+    if ((!p || lua_type(L, 2) != LUA_TNUMBER) && pcl_eq_hook(L, PCL_EQ_DIV)) return 1;
     if (!p) return pcl_error(L, "cannot divide %s by a point", opnd_name(L, 1));
     if (lua_type(L, 2) != LUA_TNUMBER)
         return pcl_error(L, "cannot divide a point by %s", opnd_name(L, 2));
@@ -358,6 +366,7 @@ static int l_div(lua_State *L) {
 
 static int l_unm(lua_State *L) {
     pcl_value *p = topt(L, 1);
+    if (!p && pcl_eq_hook(L, PCL_EQ_UNM)) return 1;
     if (!p) return pcl_error(L, "cannot negate %s", opnd_name(L, 1));
     int n = p->n;
     pcl_value *r = newpt(L, n);
@@ -479,6 +488,7 @@ static int l_lerp(lua_State *L) {
         lua_pushnumber(L, x * (1 - t) + y * t);
         return 1;
     }
+    if (pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
     if (!a) pcl_argerror(L, 1, "A", "a point or vector");
     if (!b) pcl_argerror(L, 2, "B", "a point or vector");
     if (a->n != b->n) pcl_dimerror(L, 2, "B", b->n, a->n, 1);
@@ -487,6 +497,7 @@ static int l_lerp(lua_State *L) {
 }
 
 static int l_bar(lua_State *L) {
+    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_hook(L, PCL_EQ_BAR)) return 1;
     lua_pushnumber(L, 1.0 - pcl_checkfinite(L, 1, "t"));
     return 1;
 }
@@ -528,6 +539,7 @@ static int l_dist(lua_State *L) {
 
 static int l_dot(lua_State *L) {
     double u[PC_MAXDIM], v[PC_MAXDIM];
+    if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
     int n = checkvec(L, 1, "u", 0, 0, u);
     checkvec(L, 2, "v", n, 1, v);
     lua_pushnumber(L, pc_dot(n, u, v));
@@ -537,6 +549,7 @@ static int l_dot(lua_State *L) {
 /* cross(u, v): a vector in 3-D, the number u.x v.y - u.y v.x in 2-D. */
 static int l_cross(lua_State *L) {
     double u[PC_MAXDIM], v[PC_MAXDIM];
+    if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_CROSS)) return 1;
     int n = checkvec(L, 1, "u", 0, 0, u);
     checkvec(L, 2, "v", n, 1, v);
     if (n == 2) {
@@ -553,6 +566,7 @@ static int l_cross(lua_State *L) {
 
 static int l_unit(lua_State *L) {
     double u[PC_MAXDIM], w[PC_MAXDIM];
+    if (!topt(L, 1) && pcl_eq_hook(L, PCL_EQ_UNIT)) return 1;
     int n = checkvec(L, 1, "v", 0, 0, u);
     if (pc_unit(n, u, w) != PC_OK)
         return pcl_error(L, "%s: the zero vector has no direction", pcl_fname(L));

@@ -10,15 +10,20 @@
 #include <string.h>
 #include "pcl_tk.h"
 #include "smooth.h"
+#include "pcl_expr.h"   /* g(t) of an equation t builds an equation (l_expr.c) */
 
 #define HSPLINE_MT "halfspline"
 
 static int l_sine(lua_State *L) {
+    static const pc_gfun g = {PC_G_SINE, {0, 0, 0, 0, 0}};
+    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
     lua_pushnumber(L, pc_smooth_sine(pcl_checknum(L, "smooth.sine", 1, "t")));
     return 1;
 }
 
 static int l_cubic(lua_State *L) {
+    static const pc_gfun g = {PC_G_CUBIC, {0, 0, 0, 0, 0}};
+    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
     lua_pushnumber(L, pc_smooth_cubic(pcl_checknum(L, "smooth.cubic", 1, "t")));
     return 1;
 }
@@ -132,6 +137,10 @@ static int l_clamp_qb(lua_State *L) {
 
 static int hs_call(lua_State *L) {
     pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    if (lua_type(L, 2) != LUA_TNUMBER) {
+        pc_gfun g = {PC_G_HALF, *h};
+        if (pcl_eq_smooth(L, 2, &g)) return 1;
+    }
     lua_pushnumber(L, pc_hspline_eval(h, checked_t(L, h, "halfspline", 2, 1)));
     return 1;
 }

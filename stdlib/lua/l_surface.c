@@ -13,6 +13,7 @@
 #include <string.h>
 #include "pcl_curve.h"
 #include "hidden.h"
+#include "pcl_expr.h"
 
 #define SURF_MT "surface"
 
@@ -268,7 +269,13 @@ static int l_revolution(lua_State *L) {
 static int l_func(lua_State *L) {
     const char *fn = "surface";
     lua_remove(L, 1);
-    if (!lua_isfunction(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function (u, v) -> point");
+    if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
+        int st;
+        pc_surface *s = pcl_eq_surface(L, fn, &st);
+        pushsurf(L, s, st, fn);
+        return 1;
+    }
+    if (!lua_isfunction(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function (u, v) -> point or an equation");
     double r[4];
     static const char *names[4] = {"u0", "u1", "v0", "v1"};
     for (int i = 0; i < 4; i++) r[i] = pcl_checknum(L, fn, i + 2, names[i]);

@@ -19,6 +19,7 @@ int luaopen_pointcalc(lua_State *L) {
     lua_newtable(L);
     pcl_open_errors(L);
     pcl_open_point(L);
+    pcl_open_expr(L);
     pcl_open_simplex(L);
     pcl_open_map(L);
     pcl_open_draw(L);

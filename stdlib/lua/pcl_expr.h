@@ -1,0 +1,32 @@
+/* Point equations in Lua (l_expr.c): the hooks by which the point, curve, surface and smoothstep
+ * bindings hand an operation over when one of its operands is an equation (a value built on a
+ * symbolic parameter, param "t").  Each hook is called only where the plain path has failed
+ * (an operand that is not a point or a number), so numbers and points keep their speed. */
+#ifndef PCL_EXPR_H
+#define PCL_EXPR_H
+
+#include "pcl.h"
+#include "curve.h"
+#include "surface.h"
+#include "smooth.h"
+
+/* The operations the point binding defers, with its arguments on the stack as it got them. */
+typedef enum {
+    PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM,   /* metamethods (1, 2) */
+    PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT, PCL_EQ_CROSS, PCL_EQ_UNIT,
+    PCL_EQ_P, PCL_EQ_V                                          /* P(x, y ...), V(...) */
+} pcl_eq_op;
+
+/* 1 if the value at idx is an equation. */
+int pcl_isequation(lua_State *L, int idx);
+/* If one of the operation's arguments is an equation: push the resulting equation and return
+ * 1 (or raise the operation's error); else return 0 and leave the stack as it was. */
+int pcl_eq_hook(lua_State *L, pcl_eq_op op);
+/* g(t) of a smoothstep for an equation at idx: push it and return 1; 0 if idx is no equation. */
+int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g);
+/* curve(eq, t0, t1) and surface(eq, u0, u1, v0, v1) with the arguments at 1..3 / 1..5: the
+ * core object (its argument errors and the membership condition raised here). */
+pc_curve *pcl_eq_curve(lua_State *L, const char *fname, int *status);
+pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status);
+
+#endif
