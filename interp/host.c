@@ -9,6 +9,7 @@
 #include "host.h"
 #include "pcl.h"
 #include "pcl_embed.h"
+#include "sandbox.h"
 
 int luaopen_pointcalc(lua_State *L);
 
@@ -19,12 +20,26 @@ static int load_embedded(lua_State *L) {
     char chunkname[96];
     snprintf(chunkname, sizeof chunkname, "=[pointcalc/%s.lua]", ch->name);
     if (luaL_loadbuffer(L, ch->text, ch->len, chunkname) != LUA_OK) return lua_error(L);
+    if (sandbox_is_safe(L) && !strcmp(ch->name, "repl")) {
+        /* the REPL's own code (describing values, tracebacks) keeps the debug library that
+         * safe mode takes from scripts: its _ENV reads the globals, but `debug` is its own */
+        lua_newtable(L);
+        lua_getfield(L, LUA_REGISTRYINDEX, "pointcalc.host.debug");
+        lua_setfield(L, -2, "debug");
+        lua_createtable(L, 0, 2);
+        lua_pushglobaltable(L);
+        lua_setfield(L, -2, "__index");
+        lua_pushglobaltable(L);
+        lua_setfield(L, -2, "__newindex");
+        lua_setmetatable(L, -2);
+        lua_setupvalue(L, -2, 1);
+    }
     lua_pushvalue(L, 1);
     lua_call(L, 1, 1);
     return 1;
 }
 
-lua_State *host_new_state(void) {
+lua_State *host_new_state(const sandbox_config *cfg) {
     lua_State *L = luaL_newstate();
     if (!L) return NULL;
     /* scripts make many short-lived points: the generational collector suits them */
@@ -63,6 +78,15 @@ lua_State *host_new_state(void) {
     }
     lua_pop(L, 1);
     lua_setglobal(L, "pointcalc");
+    /* the rules for files, chunks and the safe mode, once the globals are complete; the
+     * memory limit counts from here (pointcalc itself included) */
+    sandbox_attach(L, cfg);
+    lua_pushcfunction(L, sandbox_apply);
+    if (lua_pcall(L, 0, 0, 0) != LUA_OK) {
+        fprintf(stderr, "%s: %s\n", host_progname, lua_tostring(L, -1));
+        lua_close(L);
+        return NULL;
+    }
     return L;
 }
 
@@ -80,10 +104,18 @@ int host_pcall(lua_State *L, int nargs) {
     int base = lua_gettop(L) - nargs;
     lua_pushcfunction(L, traceback);
     lua_insert(L, base);
+    lua_Debug ar;   /* the chunk's name, for a memory error (it has no line) */
+    char where[LUA_IDSIZE] = "";
+    lua_pushvalue(L, base + 1);
+    if (lua_getinfo(L, ">S", &ar)) snprintf(where, sizeof where, "%s", ar.short_src);
+    sandbox_start(L);
     int status = lua_pcall(L, nargs, 0, base);
+    sandbox_stop(L);
     lua_remove(L, base);
     if (status != LUA_OK) {
-        fprintf(stderr, "%s\n", lua_tostring(L, -1));
+        sandbox_explain(L, status, where[0] ? where : NULL);
+        const char *msg = lua_tostring(L, -1);
+        fprintf(stderr, "%s\n", msg ? msg : "(error object is not a string)");
         lua_pop(L, 1);
         return 0;
     }

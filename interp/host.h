@@ -4,10 +4,12 @@
 #define PC_HOST_H
 
 #include <lua.h>
+#include "sandbox.h"
 
 /* A new Lua state with the standard libraries, pointcalc loaded into globals, and the host's
- * embedded Lua chunks (the QBasic translator) in package.preload. */
-lua_State *host_new_state(void);
+ * embedded Lua chunks (the QBasic translator) in package.preload; the rules and limits of cfg
+ * (sandbox.h) apply to it. */
+lua_State *host_new_state(const sandbox_config *cfg);
 
 /* Run the function on top of the stack with nargs arguments under a traceback handler.
  * On error prints "MESSAGE\nstack traceback:..." to stderr and returns 0. */

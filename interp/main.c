@@ -24,6 +24,11 @@ static const char usage_text[] =
     "  --paper       print theme for written files: white paper, dark ink\n"
     "  --qbasic      treat the script as QBasic whatever its extension\n"
     "  --emit-lua    print the Lua translation of a QBasic program and exit\n"
+    "  --safe        safe mode: no processes, C modules, binary chunks or debug library;\n"
+    "                files only under the folders given with --allow\n"
+    "  --allow DIR   safe mode: the script may read and write files under DIR (repeatable)\n"
+    "  --timeout S   stop the script after S seconds (each REPL statement: S seconds)\n"
+    "  --max-memory MB  stop the script when it uses more than MB megabytes\n"
     "  -v            print the version and exit\n"
     "  -h, --help    print this help and exit\n"
     "  --            end of options: everything after the script goes to it in `arg`\n"
@@ -41,6 +46,7 @@ typedef struct {
     const char *watch;     /* --watch FILE: implies the REPL */
     int script_index;      /* argv index of the script */
     int interactive, paper, qbasic, emit_lua;
+    sandbox_config sandbox;
 } options;
 
 static int usage_error(const char *fmt, const char *what) {
@@ -61,6 +67,22 @@ static int set_watch(options *o, const char *path) {
         return usage_error("cannot watch '%s': the extension must be .png, .svg or .ppm", path);
     o->watch = path;
     o->interactive = 1;
+    return 0;
+}
+
+/* --timeout S, --max-memory MB: a positive finite number */
+static int set_limit(double *out, const char *opt, const char *value) {
+    if (!value) return usage_error("option %s needs a number", opt);
+    char *end;
+    errno = 0;
+    double v = strtod(value, &end);
+    if (end == value || *end || errno || !(v > 0) || v > 1e9) {
+        fprintf(stderr, "%s: option %s must be a positive number, got '%s'\n", host_progname, opt,
+                value);
+        fprintf(stderr, "try 'pointcalc -h' for help\n");
+        return 2;
+    }
+    *out = v;
     return 0;
 }
 
@@ -94,6 +116,19 @@ static int parse(int argc, char **argv, options *o) {
         else if (!strcmp(a, "--paper")) o->paper = 1;
         else if (!strcmp(a, "--qbasic")) o->qbasic = 1;
         else if (!strcmp(a, "--emit-lua")) o->emit_lua = 1;
+        else if (!strcmp(a, "--safe")) o->sandbox.safe = 1;
+        else if (!strcmp(a, "--allow")) {
+            if (++i == argc) return usage_error("%s", "option --allow needs a folder");
+            if (o->sandbox.nallow == SANDBOX_MAX_ALLOW)
+                return usage_error("%s", "too many --allow options");
+            o->sandbox.allow[o->sandbox.nallow++] = argv[i];
+        } else if (!strcmp(a, "--timeout")) {
+            int rc = set_limit(&o->sandbox.timeout, a, i + 1 < argc ? argv[++i] : NULL);
+            if (rc) return rc;
+        } else if (!strcmp(a, "--max-memory")) {
+            int rc = set_limit(&o->sandbox.max_memory_mb, a, i + 1 < argc ? argv[++i] : NULL);
+            if (rc) return rc;
+        }
         else if (!strcmp(a, "-v") || !strcmp(a, "--version")) {
             printf("pointcalc %s (%s)\n", PCL_VERSION, LUA_RELEASE);
             return 0;
@@ -134,6 +169,10 @@ static int parse(int argc, char **argv, options *o) {
         }
     }
     if (o->emit_lua && !o->script) return usage_error("%s", "--emit-lua needs a QBasic program");
+    if (o->sandbox.nallow && !o->sandbox.safe)
+        return usage_error("%s", "--allow belongs to the safe mode: add --safe");
+    char err[600];
+    if (!sandbox_check_config(&o->sandbox, err, sizeof err)) return usage_error("%s", err);
     return -1;
 }
 
@@ -195,7 +234,7 @@ int main(int argc, char **argv) {
     int rc = parse(argc, argv, &o);
     if (rc >= 0) return rc;
 
-    lua_State *L = host_new_state();
+    lua_State *L = host_new_state(&o.sandbox);
     if (!L) return 1;
     if (o.paper) pcl_set_theme(L, PC_THEME_PAPER);
 

@@ -23,6 +23,7 @@
 #include "host.h"
 #include "pcl.h"
 #include "repl.h"
+#include "sandbox.h"
 #ifdef PC_HAVE_LIBEDIT
 #include <editline/readline.h>
 #endif
@@ -34,9 +35,14 @@ static struct {
     char *watch;          /* the --watch / :watch file, or NULL */
     uint64_t watched;     /* the canvas version last written to it */
     char *history;        /* the history file, or NULL */
+    int editing;          /* lines come from a terminal through the line editor */
+    long lineno;          /* lines read, for messages about piped input */
 } S;
 
 /* ---- reading lines ------------------------------------------------------------------------ */
+
+static char nul_line[1];   /* read_plain_line's answer for a line with a NUL byte */
+static char *read_plain_line(const char *prompt);
 
 static volatile sig_atomic_t got_sigint;
 static lua_State *running;    /* the state executing a statement, for the Ctrl-C hook */
@@ -80,22 +86,33 @@ static void catch_sigwinch(struct sigaction *old) {
 
 /* After Ctrl-C at a prompt: the terminal echoes "^C" itself unless the line editor has it. */
 static void show_interrupt(void) {
-#ifdef PC_HAVE_LIBEDIT
-    fputs("^C\n", stdout);
-#else
-    fputs("\n", stdout);
-#endif
+    fputs(S.editing ? "^C\n" : "\n", stdout);
 }
 
-/* A line without its newline (malloc'ed), or NULL at end of input. */
+/* A line without its newline (malloc'ed), or NULL at end of input.  Only a terminal goes through
+ * the line editor: piped input is read as bytes (libedit's readline corrupts its heap on a NUL
+ * byte), and a line with a NUL byte is reported and skipped: the REPL passes lines on as C
+ * strings, which would cut it there. */
 static char *read_line(const char *prompt) {
 #ifdef PC_HAVE_LIBEDIT
-    if (resized) {
-        resized = 0;
-        rl_resize_terminal();
+    if (S.editing) {
+        if (resized) {
+            resized = 0;
+            rl_resize_terminal();
+        }
+        return readline(prompt);
     }
-    return readline(prompt);
-#else
+#endif
+    for (;;) {
+        char *line = read_plain_line(prompt);
+        if (!line || line != nul_line) return line;
+        fflush(stdout);
+        fprintf(stderr, "stdin:%ld: the line contains a NUL byte; it is skipped\n", S.lineno);
+    }
+}
+
+/* One line of plain input; nul_line for a line with a NUL byte. */
+static char *read_plain_line(const char *prompt) {
     fputs(prompt, stdout);
     fflush(stdout);
     char *line = NULL;
@@ -106,13 +123,18 @@ static char *read_line(const char *prompt) {
         free(line);
         return NULL;
     }
-    if (n > 0 && line[n - 1] == '\n') line[n - 1] = 0;
+    S.lineno++;
+    if (n > 0 && line[n - 1] == '\n') line[--n] = 0;
+    if (memchr(line, 0, (size_t)n)) {
+        free(line);
+        return nul_line;
+    }
     return line;
-#endif
 }
 
 static void history_open(void) {
 #ifdef PC_HAVE_LIBEDIT
+    if (!S.editing) return;
     const char *home = getenv("HOME");
     if (home && *home) {
         size_t n = strlen(home) + sizeof HISTORY_FILE + 1;
@@ -133,7 +155,7 @@ static void history_open(void) {
  * session that is killed keeps it. */
 static void history_add(const char *entry) {
 #ifdef PC_HAVE_LIBEDIT
-    if (!*entry) return;
+    if (!S.editing || !*entry) return;
     HIST_ENTRY *last = history_length > 0 ? history_get(history_base + history_length - 1) : NULL;
     if (last && last->line && !strcmp(last->line, entry)) return;   /* no repeats */
     add_history(entry);
@@ -207,8 +229,12 @@ static int n_show(lua_State *L) {
     terminal_size(&tcols, &trows);
     int max_cols = tcols - 2, max_rows = trows - 4;   /* the frame, the caption, the prompt */
     if (!lua_isnoneornil(L, 1)) {
-        lua_Integer w = luaL_checkinteger(L, 1);
-        luaL_argcheck(L, w >= 4 && w <= 2000, 1, "columns must be 4..2000");
+        lua_Integer w = lua_isinteger(L, 1) ? lua_tointeger(L, 1) : 0;
+        if (w < 4 || w > 2000) {   /* the user's command, not a place in the REPL's code */
+            lua_pushfstring(L, ":show: COLUMNS must be a whole number from 4 to 2000, got %s",
+                            luaL_tolstring(L, 1, NULL));
+            return lua_error(L);
+        }
         max_cols = (int)w;
         max_rows = 100000;
     }
@@ -236,6 +262,11 @@ static int n_save(lua_State *L) {
     const char *t = luaL_optstring(L, 2, NULL);
     pc_theme theme = pcl_theme(L);
     char err[512];
+    if (!sandbox_path_ok(L, 1, 1, err, sizeof err)) {
+        lua_pushnil(L);
+        lua_pushstring(L, err);
+        return 2;
+    }
     if (t && !strcmp(t, "paper")) theme = PC_THEME_PAPER;
     else if (t && !strcmp(t, "screen")) theme = PC_THEME_SCREEN;
     if (t && strcmp(t, "paper") && strcmp(t, "screen"))
@@ -258,6 +289,12 @@ static int n_load(lua_State *L) {
     const char *path = luaL_checkstring(L, 1);
     size_t n = strlen(path);
     int qbasic = n > 4 && !strcasecmp(path + n - 4, ".bas");
+    char err[512];
+    if (!sandbox_path_ok(L, 1, 0, err, sizeof err)) {
+        lua_pushboolean(L, 0);
+        lua_pushstring(L, err);
+        return 2;
+    }
     if (access(path, R_OK) != 0) {
         lua_pushboolean(L, 0);
         lua_pushfstring(L, "cannot open '%s'", path);
@@ -286,6 +323,10 @@ static int n_watch(lua_State *L) {
     if (!lua_isnone(L, 1)) {
         const char *path = lua_toboolean(L, 1) ? luaL_checkstring(L, 1) : NULL;
         char err[512];
+        if (path && !sandbox_path_ok(L, 1, 1, err, sizeof err)) {
+            lua_pushstring(L, err);
+            return lua_error(L);
+        }
         if (!watch_set(L, path, err, sizeof err)) return luaL_error(L, "%s", err);
     }
     if (S.watch) lua_pushstring(L, S.watch);
@@ -334,11 +375,13 @@ static int call(lua_State *L, int mod, int nargs, int nresults) {
     lua_insert(L, base);
     got_sigint = 0;
     running = L;
+    sandbox_start(L);   /* --timeout and --max-memory: per statement */
     int status = lua_pcall(L, nargs, nresults, base);
     running = NULL;
-    lua_sethook(L, NULL, 0, 0);
+    sandbox_stop(L);    /* also removes the Ctrl-C hook */
     lua_remove(L, base);
     if (status != LUA_OK) {
+        sandbox_explain(L, status, "stdin");
         if (got_sigint) fputc('\n', stderr);   /* after the terminal's "^C" */
         report(L);
         return 0;
@@ -469,8 +512,10 @@ void host_repl(lua_State *L, const char *watch) {
         lua_settop(L, mod - 1);
         return;
     }
+    S.editing = isatty(STDIN_FILENO);
+    S.lineno = 0;
     history_open();
-    repl_completion_init(L);
+    if (S.editing) repl_completion_init(L);
     printf("pointcalc %s (%s). :help for help; Ctrl-D or :quit to leave.\n", PCL_VERSION,
            LUA_RELEASE);
     if (watch) {

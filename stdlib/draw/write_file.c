@@ -186,17 +186,21 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     memcpy(tmp, target, dirlen);
     snprintf(tmp + dirlen, baselen + 16, ".%.*s.XXXXXX", (int)baselen, base);
 
+    /* mkstemp fills in the name the handlers read, with the handlers already in place: there
+     * is no moment when the file exists and a signal would miss it */
     signal_guard guard;
-    guard_signals(&guard);   /* before mkstemp: no moment with a file the handlers miss */
-    int fd = mkstemp(tmp);
+    memcpy(active_tmp, tmp, strlen(tmp) + 1);
+    guard_signals(&guard);
+    tmp_active = 1;
+    int fd = mkstemp(active_tmp);
     if (fd < 0) {
         int e = errno;
+        tmp_active = 0;
         release_signals(&guard);
         free(resolved);
         return fail(err, errlen, path, strerror(e), PC_EIO);
     }
-    memcpy(active_tmp, tmp, strlen(tmp) + 1);
-    tmp_active = 1;
+    memcpy(tmp, active_tmp, strlen(active_tmp) + 1);
 
     int e = 0;
     code = PC_OK;

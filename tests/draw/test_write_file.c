@@ -230,6 +230,11 @@ static void test_signals_remove_the_temporary_file(void **state) {
 }
 
 int main(void) {
+    /* the tests are about the default dispositions, whatever the caller left ignored */
+    signal(SIGXFSZ, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGINT, SIG_DFL);
+    signal(SIGHUP, SIG_DFL);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_non_regular_files_are_not_replaced),
         cmocka_unit_test(test_links),
