@@ -1,0 +1,26 @@
+-- Konopatsky §2.1.1.4 (Fig. 2.7): the ellipse as a compressed circle, and its foci (Figs. 2.2-2.3)
+-- Set E of the digest: C(0,0), A(4,0), B(0,2).  The circle of radius a about C, the point P on
+-- it at the angle phi, its foot Q on CA and M on QP with QM/QP = b/a; the ellipse (2.24) in
+-- green, the foci F1, F2 and the focal radii of M (|F1M| + |F2M| = 2a).
+local C, A, B = P(0, 0), P(4, 0), P(0, 2)
+local a, b = dist(C, A), dist(C, B)
+local e = math.sqrt(a * a - b * b) / a
+window(-5.5, -4.4, 5.5, 4.4)
+line(P(-5, 0), P(5, 0), 8) line(P(0, -4.2), P(0, 4.2), 8)
+pen{dash = {4, 3}}
+conic.circle{C = C, A = A, B = C + V(0, a), R = a}:draw{color = 8}
+pen()
+conic.ellipse{C = C, A = A, B = B, by = "compression"}:draw{color = 10}
+local phi = 1.0
+local Pc = (A - C) * math.cos(phi) + (C + V(0, a) - C) * math.sin(phi) + C
+local Q = (A - C) * math.cos(phi) + C
+local M = lerp(Q, Pc, b / a)
+local F1, F2 = (A - C) * e + C, (C - A) * e + C
+line(C, Pc, 7) line(Q, Pc, 7)
+line(F1, M, 11) line(F2, M, 11)
+for _, p in ipairs{A, B, C, Pc, Q, M, F1, F2} do circle(p, 0.06, 15) end
+label("C", C, "sw", 15) label("A", A, "se", 15) label("B", B, "n", 15)
+label("P", Pc, "ne", 7) label("Q", Q, "s", 7) label("M", M, "e", 15)
+label("F1", F1, "s", 11) label("F2", F2, "s", 11)
+label(string.format("QM/QP = b/a = %.2f   |F1M| + |F2M| = %.4f = 2a", b / a, dist(F1, M) + dist(F2, M)),
+      P(-5.3, -3.9), "e", 7)

@@ -1,0 +1,21 @@
+-- Konopatsky §3.4 (Fig. 3.6 a, b): curves of double contact, f = v^2 and f = sqrt(v)
+-- Simplex A(0,0), B(10,0), C(4,6) (the digest's defaults); the first-generation arcs P
+-- (k_p = 0.3) and Q (k_q = 0.7) in red, the second-generation curve M = P(1 - f) + Q f in
+-- green, with the segment PQ at v = 0.4.  Left f = v^2, right f = sqrt(v).
+local A, B, C = P(0, 0), P(10, 0), P(4, 6)
+local fs = {{"f = v^2", function(v) return v * v end}, {"f = sqrt(v)", math.sqrt}}
+for i, f in ipairs(fs) do
+  view(10 + (i - 1) * 315, 60, 310 + (i - 1) * 315, 285)
+  window(-0.8, -1.2, 10.8, 7.5)
+  path({A, C, B}, {color = 8})
+  local Pc, Qc = conic.ed(A, B, C, 0.3), conic.ed(A, B, C, 0.7)
+  Pc:draw{color = 12} Qc:draw{color = 12}
+  local M = oneratio.double_contact(A, B, C, 0.3, 0.7, f[2])
+  M:draw{color = 10}
+  local v = 0.4
+  line(Pc(v), Qc(v), 7)
+  circle(M(v), 0.1, 15)
+  label("P", Pc(v), "nw", 12) label("Q", Qc(v), "s", 12) label("M", M(v), "e", 10)
+  label("A", A, "sw", 15) label("B", B, "se", 15) label("C", C, "n", 15)
+  label(f[1], P(0, -0.9), "e", 7)
+end
