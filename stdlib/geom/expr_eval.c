@@ -5,17 +5,21 @@
  * the chain rule, up to second order:
  *   (xy)_i = x_i y + x y_i,   (xy)_ij = x_ij y + x_i y_j + x_j y_i + x y_ij,
  *   f(x)_i = f'(x) x_i,       f(x)_ij = f'(x) x_ij + f''(x) x_i x_j. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE_SIZE__)
+#pragma GCC optimize("O3")     /* the lane loops are written to be vectorised */
+#endif
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "expr_impl.h"
 
-#define BATCH 64
+#define BATCH 256
 #define PI 3.14159265358979323846
 
 typedef struct {
     unsigned char op, w, aw;  /* operation, width of the result, width of operand a */
-    int k;                    /* COMP: coordinate; POWI: exponent */
+    int k;                    /* COMP: coordinate; POWI: exponent; SIN, COS: 1 when the
+                                 instruction also computes the other one into b (sincos) */
     double c;                 /* POWC: exponent */
     pc_gfun g;                /* SMOOTH */
     size_t dst, a, b;         /* register offsets in the workspace */
@@ -123,10 +127,24 @@ pc_expr_prog *pc_expr_compile(const pc_expr_pool *pool, int e, int nin, const in
     unsigned char *mark = malloc((size_t)e + 1);
     int *last = malloc(sizeof *last * ((size_t)e + 1));
     int *reg = malloc(sizeof *reg * ((size_t)e + 1));
+    /* sin x and cos x of one x are computed together (one sincos, as a C compiler would):
+     * partner[i] = the other node + 1 for the first of the two, -(first + 1) for the second */
+    int *partner = calloc((size_t)e + 1, sizeof *partner);
+    int *sin_of = malloc(sizeof *sin_of * ((size_t)e + 1));
     alloc_t al;
     memset(&al, 0, sizeof al);
     int st = PC_ENOMEM;
-    if (!p || !mark || !last || !reg || pc_expr_reach(pool, e, mark) != PC_OK) goto fail;
+    if (!p || !mark || !last || !reg || !partner || !sin_of || pc_expr_reach(pool, e, mark) != PC_OK)
+        goto fail;
+    for (int i = 0; i <= e; i++) sin_of[i] = -1;
+    for (int i = 0; i <= e; i++)
+        if (mark[i] && pool->nodes[i].op == PC_EX_SIN) sin_of[pool->nodes[i].a] = i;
+    for (int i = 0; i <= e; i++) {
+        if (!mark[i] || pool->nodes[i].op != PC_EX_COS || sin_of[pool->nodes[i].a] < 0) continue;
+        int j = sin_of[pool->nodes[i].a], first = j < i ? j : i, second = j < i ? i : j;
+        partner[first] = second + 1;
+        partner[second] = -(first + 1);
+    }
     p->nin = nin;
     p->dim = pool->nodes[e].dim;
     p->width = pc_expr_width(p->dim);
@@ -157,15 +175,23 @@ pc_expr_prog *pc_expr_compile(const pc_expr_pool *pool, int e, int nin, const in
         if (!mark[i]) continue;
         const pc_expr_node *nd = &pool->nodes[i];
         if (is_leaf(nd->op)) continue;
+        if (partner[i] < 0) {                /* computed with its partner: only free operands */
+            if (nd->a >= 0 && !is_leaf(pool->nodes[nd->a].op) && last[nd->a] == i &&
+                reg_free(&al, reg[nd->a]) != PC_OK)
+                goto fail;
+            p->counts[nd->op]++;
+            continue;
+        }
         int r = reg_new(&al, pc_expr_width(nd->dim));
         if (r < 0) goto fail;
         reg[i] = r;
+        if (partner[i] > 0 && (reg[partner[i] - 1] = reg_new(&al, 1)) < 0) goto fail;
         ins_t *in = &p->ins[p->nins++];
         memset(in, 0, sizeof *in);
         in->op = nd->op;
         in->w = (unsigned char)pc_expr_width(nd->dim);
         in->aw = (unsigned char)pc_expr_width(pool->nodes[nd->a].dim);
-        in->k = nd->k;
+        in->k = partner[i] > 0 ? 1 : nd->k;
         if (nd->op == PC_EX_POWC) in->c = pool->consts[nd->c];
         if (nd->op == PC_EX_SMOOTH) in->g = pool->gfuns[nd->k];
         p->counts[nd->op]++;
@@ -181,12 +207,13 @@ pc_expr_prog *pc_expr_compile(const pc_expr_pool *pool, int e, int nin, const in
     {
         int n = 0;
         for (int i = 0; i <= e; i++) {
-            if (!mark[i] || is_leaf(pool->nodes[i].op)) continue;
+            if (!mark[i] || is_leaf(pool->nodes[i].op) || partner[i] < 0) continue;
             const pc_expr_node *nd = &pool->nodes[i];
             ins_t *in = &p->ins[n++];
             in->dst = al.regs[reg[i]].off;
             in->a = al.regs[reg[nd->a]].off;
             in->b = nd->b >= 0 ? al.regs[reg[nd->b]].off : 0;
+            if (partner[i] > 0) in->b = al.regs[reg[partner[i] - 1]].off;
         }
     }
     p->nregs = al.nregs;
@@ -217,6 +244,8 @@ fail:
     free(mark);
     free(last);
     free(reg);
+    free(partner);
+    free(sin_of);
     if (st != PC_OK) {
         pc_expr_prog_free(p);
         *status = st;
@@ -287,6 +316,15 @@ static void unary(const ins_t *in, const double *x, int m, int order, double *f0
         if (n == 2) {
             for (k = 0; k < m; k++) f0[k] = x[k] * x[k];
             if (order) for (k = 0; k < m; k++) { f1[k] = 2 * x[k]; f2[k] = 2; }
+        } else if (n > 2 && n <= 8) {     /* small powers: products over the lanes */
+            for (k = 0; k < m; k++) f0[k] = x[k] * x[k];
+            for (int j = 2; j < n; j++)
+                for (k = 0; k < m; k++) f0[k] *= x[k];
+            if (order)
+                for (k = 0; k < m; k++) {
+                    f1[k] = n * ipow(x[k], n - 1);
+                    f2[k] = (double)n * (n - 1) * ipow(x[k], n - 2);
+                }
         } else {
             for (k = 0; k < m; k++) f0[k] = ipow(x[k], n);
             if (order)
@@ -366,6 +404,38 @@ static void product(double *z, const double *x, const double *y, int w, int yw, 
     }
 }
 
+/* z = f(x) by the chain rule from f, f', f'' at the lanes */
+static void chain(double *z, const double *x, const double *f0, const double *f1,
+                  const double *f2, int m, int nd, int order) {
+    int k;
+    if (z != f0)
+        for (k = 0; k < m; k++) z[k] = f0[k];
+    if (order < 1) return;
+    for (int d = 0; d < nd; d++)
+        for (k = 0; k < m; k++) z[(1 + d) * BATCH + k] = f1[k] * x[(1 + d) * BATCH + k];
+    if (order < 2) return;
+    for (int d1 = 0; d1 < nd; d1++)
+        for (int d2 = d1; d2 < nd; d2++) {
+            int s = sidx(nd, d1, d2);
+            for (k = 0; k < m; k++)
+                z[s * BATCH + k] = f1[k] * x[s * BATCH + k] +
+                                   f2[k] * x[(1 + d1) * BATCH + k] * x[(1 + d2) * BATCH + k];
+        }
+}
+
+/* sin x into zs and cos x into zc, together */
+static void sincos_pair(double *zs, double *zc, const double *x, int m, int nd, int order) {
+    double s[BATCH], c[BATCH], ms[BATCH], mc[BATCH];
+    for (int k = 0; k < m; k++) {
+        s[k] = sin(x[k]);
+        c[k] = cos(x[k]);
+    }
+    if (order)
+        for (int k = 0; k < m; k++) { ms[k] = -s[k]; mc[k] = -c[k]; }
+    chain(zs, x, s, c, ms, m, nd, order);
+    chain(zc, x, c, ms, mc, m, nd, order);
+}
+
 static void exec(pc_expr_prog *p, const ins_t *in, int m, int order) {
     double *ws = p->ws, *z = ws + in->dst;
     const double *x = ws + in->a, *y = ws + in->b;
@@ -420,20 +490,15 @@ static void exec(pc_expr_prog *p, const ins_t *in, int m, int order) {
         return;
     }
     default: {                       /* a function of a scalar: the chain rule */
-        double f0[BATCH], f1[BATCH], f2[BATCH];
-        unary(in, x, m, order, f0, f1, f2);
-        for (k = 0; k < m; k++) z[k] = f0[k];
-        if (order < 1) return;
-        for (int d = 0; d < nd; d++)
-            for (k = 0; k < m; k++) z[(1 + d) * BATCH + k] = f1[k] * x[(1 + d) * BATCH + k];
-        if (order < 2) return;
-        for (int d1 = 0; d1 < nd; d1++)
-            for (int d2 = d1; d2 < nd; d2++) {
-                int s = sidx(nd, d1, d2);
-                for (k = 0; k < m; k++)
-                    z[s * BATCH + k] = f1[k] * x[s * BATCH + k] +
-                                       f2[k] * x[(1 + d1) * BATCH + k] * x[(1 + d2) * BATCH + k];
-            }
+        if ((in->op == PC_EX_SIN || in->op == PC_EX_COS) && in->k) {
+            double *other = ws + in->b;
+            if (in->op == PC_EX_SIN) sincos_pair(z, other, x, m, nd, order);
+            else sincos_pair(other, z, x, m, nd, order);
+            return;
+        }
+        double f1[BATCH], f2[BATCH];
+        unary(in, x, m, order, z, f1, f2);        /* f into the value row directly */
+        chain(z, x, z, f1, f2, m, nd, order);
     }
     }
 }
