@@ -5,15 +5,16 @@
 -- and a third oscillates on the moving segment AB a quarter period later,
 --   X = A + s2 (B - A),     s2 = (1 + sin u)/2.
 -- That is the bilinear map of the quadrilateral (§H block 3, derived in §4 of the article)
--- applied to the circle inscribed in the unit square: the curvilinear system Q does it.
+-- applied to the circle inscribed in the unit square, written here as one point equation in t
+-- and compiled (docs/equations.md).
 -- QBasic's `for t = 0 to 1 step .001` (1001 samples) is kept with qb = true.
 
 screen(12)
 local P0, P1, P2, P3 = P(100, 100), P(300, 150), P(280, 200), P(150, 300)
 line(P0, P1); line(P1, P2); line(P2, P3); line(P3, P0)
 
-local Q = bilinear(P0, P1, P2, P3)           -- Q(s1, s2): corners at (0,0) (1,0) (1,1) (0,1)
-Q:draw(function(t)
-  local u = 2*math.pi*t
-  return (1 + math.cos(u))/2, (1 + math.sin(u))/2   -- the circle inscribed in the unit square
-end, {t = {0, 1, .001}, qb = true})
+local t = param "t"
+local u = 2*math.pi*t
+local s1, s2 = (1 + math.cos(u))/2, (1 + math.sin(u))/2   -- the circle in the unit square
+local X = lerp(lerp(P0, P1, s1), lerp(P3, P2, s1), s2)   -- A + s2 (B - A)
+plot(curve(X, 0, 1), {t = {0, 1, .001}, qb = true})

@@ -13,6 +13,6 @@ line(A, B, 3, "bf")
 line(A, P(0, a))                             -- first ray
 line(B, P(640, b))                           -- second ray
 
-plot(function(t)
-  return P(lerp(c, d, t), lerp(a, b, smooth.sine(t)))
-end, {t = {0, 1, .001}, qb = true, brush = "dot"})
+local t = param "t"                          -- the junction as a compiled point equation
+plot(curve(P(lerp(c, d, t), lerp(a, b, smooth.sine(t))), 0, 1),
+     {t = {0, 1, .001}, qb = true, brush = "dot"})

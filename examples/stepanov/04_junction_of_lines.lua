@@ -11,8 +11,10 @@ screen(12)
 local P0, P1, P2, P3 = P(200, 100), P(400, 150), P(380, 300), P(250, 400)
 line(P0, P1); line(P1, P2); line(P2, P3); line(P3, P0)
 
-plot(function(t) return lerp(P0, P1, t) end, {t = {-1, 0, .01}, qb = true, brush = "dot", color = 3})
-plot(function(t) return lerp(P2, P3, t) end, {t = {-1, 0, .01}, qb = true, brush = "dot", color = 3})
+-- Rays and junction are point equations in t, compiled (docs/equations.md).
+local t = param "t"
+plot(curve(lerp(P0, P1, t), -1, 0), {t = {-1, 0, .01}, qb = true, brush = "dot", color = 3})
+plot(curve(lerp(P2, P3, t), -1, 0), {t = {-1, 0, .01}, qb = true, brush = "dot", color = 3})
 
-local Q = bilinear(P0, P1, P2, P3)
-Q:draw(function(t) return t, smooth.sine(t) end, {t = {0, 1, .001}, qb = true, brush = "dot", color = 3})
+local X = lerp(lerp(P0, P1, t), lerp(P3, P2, t), smooth.sine(t))   -- xa + g(t) (xb - xa)
+plot(curve(X, 0, 1), {t = {0, 1, .001}, qb = true, brush = "dot", color = 3})

@@ -482,6 +482,7 @@ static int l_lerp(lua_State *L) {
         for (int i = 0; i <= n; i++) r->h[i] = a->h[i] * s + b->h[i] * t;
         return 1;
     }
+    if (!isnum && pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
     if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
         double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2);
         t = pcl_checkfinite(L, 3, "t");
