@@ -1,16 +1,20 @@
 -- Konopatsky §2.1.1.4 (Fig. 2.7): the ellipse as a compressed circle, and its foci (Figs. 2.2-2.3)
 -- Set E of the digest: C(0,0), A(4,0), B(0,2).  The circle of radius a about C, the point P on
 -- it at the angle phi, its foot Q on CA and M on QP with QM/QP = b/a; the ellipse (2.24) in
--- green, the foci F1, F2 and the focal radii of M (|F1M| + |F2M| = 2a).
+-- green, the foci F1, F2 and the focal radii of M (|F1M| + |F2M| = 2a).  Circle and ellipse are
+-- written as the book's point equations in the parameter f and compiled (docs/equations.md).
 local C, A, B = P(0, 0), P(4, 0), P(0, 2)
 local a, b = dist(C, A), dist(C, B)
 local e = math.sqrt(a * a - b * b) / a
 window(-5.5, -4.4, 5.5, 4.4)
 line(P(-5, 0), P(5, 0), 8) line(P(0, -4.2), P(0, 4.2), 8)
+local f = param "f"
 pen{dash = {4, 3}}
-conic.circle{C = C, A = A, B = C + V(0, a), R = a}:draw{color = 8}
+curve((A - C)*math.cos(f) + V(0, a)*math.sin(f) + C, 0, 2*math.pi):draw{color = 8}
 pen()
-conic.ellipse{C = C, A = A, B = B, by = "compression"}:draw{color = 10}
+local E = (A - C)*math.cos(f) + (B - C)*math.sin(f) + C          -- (2.24)
+curve(E, 0, 2*math.pi):draw{color = 10}
+label("M = " .. E:show{["(A - C)"] = A - C, ["(B - C)"] = B - C, C = C}, P(-5.3, 3.9), "e", 10)
 local phi = 1.0
 local Pc = (A - C) * math.cos(phi) + (C + V(0, a) - C) * math.sin(phi) + C
 local Q = (A - C) * math.cos(phi) + C
