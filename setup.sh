@@ -2,7 +2,7 @@
 # Install the Debian packages pointcalc needs to build and test.
 # As root the missing ones are installed with apt-get; otherwise the exact command is printed.
 set -e
-PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux"
+PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux libmicrohttpd-dev"
 # what the install and gallery-page tests use (man -l, luarocks make, cpack's dpkg-shlibdeps, a
 # headless browser): installed as root like the rest; without root a missing one is only noted
 TEST_PKGS="man-db luarocks dpkg-dev chromium"

@@ -10,18 +10,25 @@
 #include <lauxlib.h>
 #include "host.h"
 #include "pcl.h"
+#include "frames.h"
+#include "serve.h"
 
 #define MAX_OUTPUTS 32
 #define MAX_CHUNKS 32
+#define MAX_SETS 64
 
 static const char usage_text[] =
     "usage: pointcalc [options] [script [args...]]\n"
+    "       pointcalc serve script [--port N]   a live page with the script's sliders\n"
     "  script        a Lua script, or a QBasic program (.bas); '-' reads standard input\n"
     "  -e CODE       run CODE (repeatable, before the script)\n"
     "  -i            enter the interactive REPL after running the script\n"
     "  --watch FILE  REPL: rewrite FILE (.png, .svg or .ppm) whenever the canvas changes\n"
     "  -o FILE       write the canvas to FILE when done: .png, .svg or .ppm (repeatable)\n"
     "  --paper       print theme for written files: white paper, dark ink\n"
+    "  --set NAME=VALUE  the value of the script's slider NAME (repeatable)\n"
+    "  --frames N    write N frames of the slider declared {animate = true}: numbered\n"
+    "                PNG/PPM files, or one animated SVG (--fps F, default 10)\n"
     "  --qbasic      treat the script as QBasic whatever its extension\n"
     "  --emit-lua    print the Lua translation of a QBasic program and exit\n"
     "  --safe        safe mode: no processes, C modules, binary chunks or debug library;\n"
@@ -32,9 +39,9 @@ static const char usage_text[] =
     "  -v            print the version and exit\n"
     "  -h, --help    print this help and exit\n"
     "  --            end of options: everything after the script goes to it in `arg`\n"
-    "Options -o, --paper and --watch may also follow the script; other arguments there\n"
-    "reach the script in `arg`. With no script and a terminal on standard input, or with\n"
-    "-i or --watch, the REPL starts.\n"
+    "Options -o, --paper, --watch, --set, --frames and --fps may also follow the script;\n"
+    "other arguments there reach the script in `arg`. With no script and a terminal on\n"
+    "standard input, or with -i or --watch, the REPL starts.\n"
     "A script that draws but saves nothing writes SCRIPT.png in the current directory.\n";
 
 typedef struct {
@@ -47,6 +54,10 @@ typedef struct {
     int script_index;      /* argv index of the script */
     int interactive, paper, qbasic, emit_lua;
     sandbox_config sandbox;
+    render_param sets[MAX_SETS];   /* --set NAME=VALUE */
+    int nsets;
+    int nframes;                   /* --frames N */
+    double fps;                    /* --fps F */
 } options;
 
 static int usage_error(const char *fmt, const char *what) {
@@ -95,9 +106,36 @@ static int add_output(options *o, const char *path) {
     return 0;
 }
 
+/* --set NAME=VALUE, --frames N, --fps F: 1 if argv[*i] was one of them (*rc then holds a
+ * usage error, or -1), 0 if not.  They may come before or after the script. */
+static int live_option(options *o, int argc, char **argv, int *i, int *rc) {
+    const char *a = argv[*i], *v = *i + 1 < argc ? argv[*i + 1] : NULL;
+    *rc = -1;
+    if (!strcmp(a, "--set")) {
+        if (!v || o->nsets == MAX_SETS || !render_parse_param(v, &o->sets[o->nsets]))
+            *rc = usage_error("%s", "--set needs name=value with a finite number, e.g. --set k=0.5");
+        else o->nsets++;
+    } else if (!strcmp(a, "--frames")) {
+        char *end;
+        long n = v ? strtol(v, &end, 10) : 0;
+        if (!v || *end || n < 1 || n > 10000)
+            *rc = usage_error("%s", "--frames needs a number of frames 1..10000");
+        else o->nframes = (int)n;
+    } else if (!strcmp(a, "--fps")) {
+        char *end;
+        double f = v ? strtod(v, &end) : 0;
+        if (!v || *end || !(f > 0 && f <= 1000)) *rc = usage_error("%s", "--fps needs a number of frames per second");
+        else o->fps = f;
+    } else {
+        return 0;
+    }
+    (*i)++;
+    return 1;
+}
+
 /* Returns -1 to go on, or an exit status. Script arguments are left in argv from script_index. */
 static int parse(int argc, char **argv, options *o) {
-    int i = 1;
+    int i = 1, rc;
     for (; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--")) { i++; break; }
@@ -117,6 +155,9 @@ static int parse(int argc, char **argv, options *o) {
         else if (!strcmp(a, "--qbasic")) o->qbasic = 1;
         else if (!strcmp(a, "--emit-lua")) o->emit_lua = 1;
         else if (!strcmp(a, "--safe")) o->sandbox.safe = 1;
+        else if (live_option(o, argc, argv, &i, &rc)) {
+            if (rc >= 0) return rc;
+        }
         else if (!strcmp(a, "--allow")) {
             if (++i == argc) return usage_error("%s", "option --allow needs a folder");
             if (o->sandbox.nallow == SANDBOX_MAX_ALLOW)
@@ -154,7 +195,9 @@ static int parse(int argc, char **argv, options *o) {
                 int rc = set_watch(o, j + 1 < argc ? argv[++j] : NULL);
                 if (rc) return rc;
             } else if (!strcmp(argv[j], "--paper")) o->paper = 1;
-            else argv[out++] = argv[j];
+            else if (live_option(o, argc, argv, &j, &rc)) {
+                if (rc >= 0) return rc;
+            } else argv[out++] = argv[j];
         }
         argv[out] = NULL;
     }
@@ -169,6 +212,8 @@ static int parse(int argc, char **argv, options *o) {
         }
     }
     if (o->emit_lua && !o->script) return usage_error("%s", "--emit-lua needs a QBasic program");
+    if (o->nframes && (!o->script || !o->noutputs))
+        return usage_error("%s", "--frames needs a script and an output: -o out.svg or -o out.png");
     if (o->sandbox.nallow && !o->sandbox.safe)
         return usage_error("%s", "--allow belongs to the safe mode: add --safe");
     char err[600];
@@ -229,14 +274,44 @@ static int write_outputs(lua_State *L, const options *o, int repl_ran) {
     return ok;
 }
 
+/* pointcalc serve SCRIPT [--port N] */
+static int serve_command(int argc, char **argv) {
+    const char *script = NULL;
+    long port = 8080;
+    for (int i = 2; i < argc; i++) {
+        if (!strcmp(argv[i], "--port") && i + 1 < argc) {
+            char *end;
+            port = strtol(argv[++i], &end, 10);
+            if (*end || port < 0 || port > 65535) return usage_error("%s", "--port needs a port number 0..65535");
+        } else if (argv[i][0] == '-' && strcmp(argv[i], "-")) {
+            return usage_error("serve: unknown option '%s'", argv[i]);
+        } else if (!script) {
+            script = argv[i];
+        } else {
+            return usage_error("%s", "serve takes one script");
+        }
+    }
+    if (!script || !strcmp(script, "-")) return usage_error("%s", "serve needs a script file");
+    if (access(script, R_OK) != 0) {
+        fprintf(stderr, "%s: cannot open '%s': %s\n", host_progname, script, strerror(errno));
+        return 2;
+    }
+    return serve_main(script, (int)port);
+}
+
 int main(int argc, char **argv) {
+    if (argc > 1 && !strcmp(argv[1], "serve")) return serve_command(argc, argv);
     options o = {0};
     int rc = parse(argc, argv, &o);
     if (rc >= 0) return rc;
+    if (o.nframes)
+        return frames_main(o.script, o.nframes, o.fps > 0 ? o.fps : 10, o.sets, o.nsets,
+                           o.outputs, o.noutputs, o.paper, &o.sandbox);
 
     lua_State *L = host_new_state(&o.sandbox);
     if (!L) return 1;
     if (o.paper) pcl_set_theme(L, PC_THEME_PAPER);
+    for (int i = 0; i < o.nsets; i++) pcl_param_set(L, o.sets[i].name, o.sets[i].value);
 
     if (o.emit_lua) {
         int ok = host_emit_lua(L, o.script);
