@@ -293,8 +293,8 @@ def("M:with", "M:with{s = value | equation, ...} -> equation",
   "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation).", "method")
 def("M:show", "M:show{A = A, B = B, ...} -> string",
   "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y)).", "method")
-def("M:sample", "M:sample(a, b [, n = 1001]) -> samples",
-  "n values at evenly spaced t in [a, b], computed in C: #s, s[i] (a point), s:sum().", "method")
+def("M:sample", "M:sample(a, b [, n = 1001 [, s]]) -> samples",
+  "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum().", "method")
 def("curve(M)", {"curve(M, t0, t1) -> curve", "surface(M, u0, u1, v0, v1) -> surface"},
   "A one-parameter equation as a curve, a two-parameter one (u the first made) as a surface: exact tangents, normals, curvature.", "method")
 

@@ -6,7 +6,8 @@
  *   M(0.3), M{t = .3, s = 1}  the value (a point, vector, weighted point or number)
  *   M:with{s = 0.5}           the family M(t; s) at s = 0.5 (or s = another equation)
  *   M:show{A = A, B = B}      the text with the points named; tostring(M) without names
- *   M:sample(a, b, n)         n values at evenly spaced t, computed in C (a "samples" object)
+ *   M:sample(a, b, n [, s])   n values at evenly spaced t, computed in C (a "samples" object;
+ *                             given s, into it again)
  *   M.dim, M.params           0 for a scalar; the parameters' names in order
  *   curve(M, t0, t1), surface(M, u0, u1, v0, v1): see pcl_expr.h.
  * Every Lua state has one pool of nodes (the equations share their common parts); compiled
@@ -555,7 +556,8 @@ static int eq_concat(lua_State *L) {
     return 1;
 }
 
-/* M:sample(a, b, n): n values at t = a .. b in C */
+/* M:sample(a, b, n [, into]): n values at t = a .. b in C, into a new samples object or into the
+ * one given (of that size: a renderer resampling every frame allocates nothing) */
 static int eq_sample(lua_State *L) {
     leq *e = toeq(L, 1);
     if (!e) return pcl_argerror_full(L, "M:sample", 1, 0, NULL, "an equation");
@@ -568,10 +570,20 @@ static int eq_sample(lua_State *L) {
                          np ? names_of(L, np, in) : "none");
     pc_expr_prog *prog = prog_of(L, e);
     int dim = pc_expr_prog_dim(prog), w = dim ? dim : 1;
-    lsamples *s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
-    s->n = (long)n;
-    s->dim = dim;
-    luaL_setmetatable(L, SAMPLES_MT);
+    lsamples *s;
+    if (!lua_isnoneornil(L, 5)) {                 /* M:sample(a, b, n, s): into s again */
+        s = luaL_testudata(L, 5, SAMPLES_MT);
+        if (!s || s->n != (long)n || s->dim != dim) {
+            lua_pushfstring(L, "samples of %d %d-D values (from M:sample)", (int)n, dim);
+            return pcl_argerror_full(L, "M:sample", 5, 4, "into", lua_tostring(L, -1));
+        }
+        lua_pushvalue(L, 5);
+    } else {
+        s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
+        s->n = (long)n;
+        s->dim = dim;
+        luaL_setmetatable(L, SAMPLES_MT);
+    }
     long bad = 0;
     int st = pc_expr_sample(prog, a, b, (long)n, s->v, &bad);
     if (st == PC_ENONFINITE) {

@@ -108,6 +108,9 @@ agree(M6, order6, 0, 1, "(4.28)")
 local s6 = M6:sample(0, 1, 7)
 eq(#s6, 7, "samples"); same(s6[4], P(3, 4), "sample 4 is node 4")
 near(s6:sum(), 21 + 23, 1e-11, "sum of the nodes' coordinates")
+eq(M6:sample(0, 1, 7, s6), s6, "sampled again into the same object")
+same(s6[7], P(6, 9), "the last node")
+err(function() return M6:sample(0, 1, 8, s6) end, "M:sample: argument #4 (into) must be samples of 8 2-D values", "wrong size")
 
 -- surfaces -----------------------------------------------------------------------------------------
 local u, v = param "u", param "v"
