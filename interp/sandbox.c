@@ -360,14 +360,16 @@ static void wrap(lua_State *L, int idx, const char *name, const char *shown, int
     lua_setfield(L, idx, name);
 }
 
-/* load(chunk [, chunkname [, mode [, env]]]): source text only, whatever mode says. */
+/* load(chunk [, chunkname [, mode [, env]]]): source text only, whatever mode says.  An env
+ * that is not given stays not given (load sets _ENV to an explicit nil). */
 static int text_load(lua_State *L) {
-    lua_settop(L, 4);
+    int n = lua_gettop(L) >= 4 ? 4 : 3;
+    lua_settop(L, n);
     lua_pushliteral(L, "t");
     lua_replace(L, 3);
     lua_pushvalue(L, lua_upvalueindex(1));
     lua_insert(L, 1);
-    lua_call(L, 4, LUA_MULTRET);
+    lua_call(L, n, LUA_MULTRET);
     return lua_gettop(L);
 }
 

@@ -92,6 +92,9 @@ run "$POINTCALC" -e 'local s = string.dump(function(a) return a + 1 end)
   print(load(string.dump(function() end), "x", "bt"))'
 expect_rc 0 "load of a binary chunk"
 expect_eq "$(cat out.txt)" "$(printf "nil\tattempt to load a binary chunk (mode is 't')\nnil\tattempt to load a binary chunk (mode is 't')")" "load refuses binary chunks"
+# load with and without an environment: one not given is not an explicit nil
+run "$POINTCALC" -e 'x = 5 print(load("return x")(), load("return x", "c", "t", {x = 7})(), (pcall(load("return x", "c", "t", nil))))'
+expect_eq "$(cat out.txt)" "$(printf '5\t7\tfalse')" "load keeps _ENV unless one is given"
 printf 'return 6 * 7' > six.lua
 run "$POINTCALC" -e 'print(dofile("six.lua"), loadfile("six.lua")())'
 expect_eq "$(cat out.txt)" "$(printf '42\t42')" "dofile and loadfile read source"
