@@ -37,6 +37,10 @@ int render_script(const char *path, const render_param *params, int nparams,
     lua_State *L = r->L = host_new_state(cfg);
     if (!L) return fail(r, path, "out of memory for a Lua state");
     for (int i = 0; i < nparams; i++) pcl_param_set(L, params[i].name, params[i].value);
+    lua_createtable(L, 0, 1);            /* arg[0]: the script, as a command-line run has it */
+    lua_pushstring(L, path);
+    lua_rawseti(L, -2, 0);
+    lua_setglobal(L, "arg");
     size_t n = strlen(path);
     int qbasic = n > 4 && strcmp(path + n - 4, ".bas") == 0;
     if (qbasic) {
