@@ -40,28 +40,47 @@ local function term(s)
   end))
 end
 
--- Parse --help: the usage line, the two-column table (continuation lines are indented past the
--- first column) and the free paragraphs after it.
-local synopsis, entries, notes = nil, {}, {}
-local desc_col
+-- Parse --help: the usage line and further forms indented under it ("pointcalc serve ..."), the
+-- two-column table (entries indented by two spaces; continuation lines indented past the first
+-- column) and the free lines, which become NOTES. Only a help text without a usage line or
+-- without any entry fails.
+local synopsis, forms, entries, notes = nil, {}, {}, {}
+local desc_col, in_table
 for line in help:gmatch("[^\n]+") do
   local usage = line:match("^usage: pointcalc%s+(.*)$")
-  local lead, name, gap = line:match("^(%s%s)(%S.-)(%s%s+)%S")
+  local form = line:match("^%s+pointcalc%s+(.*)$")
+  local lead, name, gap = line:match("^(  )(%S.-)(%s%s+)%S")
+  local indent = #line:match("^%s*")
   if usage then
     synopsis = usage
-  elseif lead and #notes == 0 then
+  elseif form then
+    local f, what = form:match("^(.-)%s%s+(%S.*)$")
+    forms[#forms + 1] = {form = f or form, text = what}
+  elseif lead then
     desc_col = #lead + #name + #gap
     entries[#entries + 1] = {name = name, text = line:sub(desc_col + 1)}
-  elseif desc_col and #notes == 0 and line:match("^%s+") and #line:match("^%s+") >= desc_col - 1 then
+    in_table = true
+  elseif in_table and indent > 2 and indent >= desc_col - 1 then
     local e = entries[#entries]
     e.text = e.text .. " " .. line:match("^%s*(.-)%s*$")
   else
     notes[#notes + 1] = line
+    in_table = false
   end
 end
 if not synopsis or #entries == 0 then
   io.stderr:write("gen_man: no usage line or option table in '", prog, " --help'\n")
   os.exit(1)
+end
+
+-- a synopsis: options bold, placeholders italic, a leading subcommand ("serve") bold
+local function synopsis_roff(s, has_command)
+  local first = has_command
+  return (s:gsub("[%w.=-]+", function(w)
+    if w:match("^%-") then first = false; return "\\fB" .. w:gsub("%-", "\\-") .. "\\fR" end
+    if first then first = false; return "\\fB" .. w .. "\\fR" end
+    return "\\fI" .. w .. "\\fR"
+  end))
 end
 
 local out = {}
@@ -71,8 +90,10 @@ end
 
 put('.TH POINTCALC 1 "" "pointcalc ', version, '" "User Commands"\n')
 put(".SH NAME\n", "pointcalc \\- geometry scripting: point calculus and QBasic-style drawing in Lua\n")
-put(".SH SYNOPSIS\n.B pointcalc\n")
-put((synopsis:gsub("[%w.]+", function(w) return "\\fI" .. w .. "\\fR" end)), "\n")
+put(".SH SYNOPSIS\n.B pointcalc\n", synopsis_roff(synopsis, false), "\n")
+for _, f in ipairs(forms) do
+  put(".br\n.B pointcalc\n", synopsis_roff(f.form, not f.form:match("^[%[%-]")), "\n")
+end
 put(".SH DESCRIPTION\n",
     ".B pointcalc\n",
     "runs geometry scripts written in Lua 5.4, or programs written in QBasic, and writes what they\n",
@@ -99,6 +120,13 @@ local function list(title, es)
   if #es == 0 then return end
   put(".SH ", title, "\n")
   for _, e in ipairs(es) do put(".TP\n", term(e.name), "\n", roff(e.text), "\n") end
+end
+if #forms > 0 then
+  put(".SH COMMANDS\n")
+  for _, f in ipairs(forms) do
+    put(".TP\n\\fBpointcalc\\fR ", synopsis_roff(f.form, not f.form:match("^[%[%-]")), "\n",
+        roff(f.text or ""), "\n")
+  end
 end
 list("OPERANDS", operands)
 list("OPTIONS", options)
