@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <stdio.h>
-#include "numeric.h"
+#include "optimize.h"
 
 /* 16-point Gauss-Legendre on [0, 1] (nodes and weights of the symmetric half). */
 static const double GL_X[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274,

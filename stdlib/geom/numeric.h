@@ -44,18 +44,4 @@ typedef int (*pc_system_fn)(void *ud, const double *x, double *f);
 int pc_newton(int n, pc_system_fn f, void *ud, double *x, double tol, int maxit, int *iters,
               int *worst);
 
-/* A smooth objective of n unknowns; NaN or an infinity means "outside the domain" (the line
- * search then steps back). */
-typedef double (*pc_objective_fn)(void *ud, const double *x);
-
-/* Deterministic quasi-Newton minimisation (BFGS with an Armijo line search, central
- * difference gradients with step h (1e-6 relative when h <= 0)).  x holds the start and gets
- * the minimiser, *fx (if not NULL) the value there.  Stops when the largest gradient
- * component is below gtol, or when no step along the search direction lowers f any more
- * (the minimum to the precision of the differences).  PC_ENOCONVERGE after maxit
- * iterations, PC_ENONFINITE if f is not finite at the start, PC_EDIM for n outside
- * 1..PC_NEWTON_MAXN. */
-int pc_minimize(int n, pc_objective_fn f, void *ud, double *x, double gtol, double h, int maxit,
-                double *fx, int *iters);
-
 #endif

@@ -8,7 +8,7 @@
 
 static double safe(double v) { return isfinite(v) ? v : INFINITY; }
 
-int pc_nelder_mead(int n, pc_nm_fn f, void *ud, double *x, double step, double ftol,
+int pc_nelder_mead(int n, pc_objective_fn f, void *ud, double *x, double step, double ftol,
                    double xtol, int maxiter, double *fx, int *iters) {
     if (n < 1 || n > NM_MAX) return PC_EDIM;
     double p[NM_MAX + 1][NM_MAX], v[NM_MAX + 1], cen[NM_MAX], xr[NM_MAX], xe[NM_MAX];
@@ -16,7 +16,7 @@ int pc_nelder_mead(int n, pc_nm_fn f, void *ud, double *x, double step, double f
     for (int i = 0; i <= n; i++) {
         memcpy(p[i], x, sizeof(double) * (size_t)n);
         if (i > 0) p[i][i - 1] += step;
-        v[i] = f(p[i], ud);
+        v[i] = f(ud, p[i]);
         if (i == 0 && !isfinite(v[0])) return PC_ENONFINITE;
         v[i] = safe(v[i]);
     }
@@ -43,23 +43,23 @@ int pc_nelder_mead(int n, pc_nm_fn f, void *ud, double *x, double step, double f
             cen[k] = s / n;
         }
         for (int k = 0; k < n; k++) xr[k] = 2 * cen[k] - p[n][k];
-        double fr = safe(f(xr, ud));
+        double fr = safe(f(ud, xr));
         if (fr < v[0]) {
             for (int k = 0; k < n; k++) xe[k] = 3 * cen[k] - 2 * p[n][k];
-            double fe = safe(f(xe, ud));
+            double fe = safe(f(ud, xe));
             if (fe < fr) memcpy(p[n], xe, sizeof(double) * (size_t)n), v[n] = fe;
             else memcpy(p[n], xr, sizeof(double) * (size_t)n), v[n] = fr;
         } else if (fr < v[n - 1]) {
             memcpy(p[n], xr, sizeof(double) * (size_t)n), v[n] = fr;
         } else {
             for (int k = 0; k < n; k++) xe[k] = cen[k] + 0.5 * (p[n][k] - cen[k]);
-            double fc = safe(f(xe, ud));
+            double fc = safe(f(ud, xe));
             if (fc < v[n]) {
                 memcpy(p[n], xe, sizeof(double) * (size_t)n), v[n] = fc;
             } else {
                 for (int i = 1; i <= n; i++) {
                     for (int k = 0; k < n; k++) p[i][k] = p[0][k] + 0.5 * (p[i][k] - p[0][k]);
-                    v[i] = safe(f(p[i], ud));
+                    v[i] = safe(f(ud, p[i]));
                 }
             }
         }
@@ -125,7 +125,7 @@ static void nodes_to_z(const nodes_problem *q, const double *x, double *z) {
     for (int i = 0; i < q->N - 2; i++) z[i] = log((x[i + 2] - x[i + 1]) / g0);
 }
 
-static double nodes_objective(const double *z, void *ud) {
+static double nodes_objective(void *ud, const double *z) {
     nodes_problem *q = ud;
     double x[64], mse;
     q->evals++;
@@ -155,7 +155,7 @@ int pc_approx_optimal_nodes(pc_scalar_fn f, void *ud, double a, double b, int N,
             x[j] = a + (b - a) * s;
         }
         nodes_to_z(&q, x, z);
-        fz = nodes_objective(z, &q);
+        fz = nodes_objective(&q, z);
         if (q.failed) return q.failed;
         double step = 0.5, prev = fz;
         int budget = q.evals + 40000;     /* objective calls per start */

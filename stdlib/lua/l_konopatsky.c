@@ -1068,7 +1068,7 @@ static int a_lagrange_mse(lua_State *L) {
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
 typedef struct { int ref, n, failed; } nmref;
 
-static double nm_cb(const double *x, void *ud) {
+static double nm_cb(void *ud, const double *x) {
     nmref *r = ud;
     lua_State *L = pcl_current_state();
     lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);

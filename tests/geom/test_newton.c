@@ -6,6 +6,7 @@
 #include <cmocka.h>
 #include <math.h>
 #include "numeric.h"
+#include "optimize.h"
 #include "status.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))

@@ -12,7 +12,7 @@
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
-static double rosenbrock(const double *x, void *ud) {
+static double rosenbrock(void *ud, const double *x) {
     (void)ud;
     return 100 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]) + (1 - x[0]) * (1 - x[0]);
 }
@@ -34,7 +34,7 @@ static void test_rosenbrock(void **state) {
     /* the iteration limit */
     double z[2] = {-1.2, 1}, fz;
     assert_int_equal(pc_nelder_mead(2, rosenbrock, NULL, z, 0.5, 1e-15, 1e-9, 10, &fz, NULL), PC_ENOCONVERGE);
-    assert_true(fz < rosenbrock((double[]){-1.2, 1}, NULL));
+    assert_true(fz < rosenbrock(NULL, (double[]){-1.2, 1}));
 }
 
 static double runge(double x, void *ud) { (void)ud; return 1 / (1 + 25 * x * x); }
