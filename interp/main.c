@@ -31,6 +31,7 @@ static const char usage_text[] =
     "                PNG/PPM files, or one animated SVG (--fps F, default 10)\n"
     "  --qbasic      treat the script as QBasic whatever its extension\n"
     "  --emit-lua    print the Lua translation of a QBasic program and exit\n"
+    "  --input FILE  standard input from FILE: what INPUT, INKEY$... of a QBasic program read\n"
     "  --safe        safe mode: no processes, C modules, binary chunks or debug library;\n"
     "                files only under the folders given with --allow\n"
     "  --allow DIR   safe mode: the script may read and write files under DIR (repeatable)\n"
@@ -53,6 +54,7 @@ typedef struct {
     const char *watch;     /* --watch FILE: implies the REPL */
     int script_index;      /* argv index of the script */
     int interactive, paper, qbasic, emit_lua;
+    const char *input;             /* --input FILE: standard input for INPUT/INKEY$ */
     sandbox_config sandbox;
     render_param sets[MAX_SETS];   /* --set NAME=VALUE */
     int nsets;
@@ -154,6 +156,10 @@ static int parse(int argc, char **argv, options *o) {
         else if (!strcmp(a, "--paper")) o->paper = 1;
         else if (!strcmp(a, "--qbasic")) o->qbasic = 1;
         else if (!strcmp(a, "--emit-lua")) o->emit_lua = 1;
+        else if (!strcmp(a, "--input")) {
+            if (++i == argc) return usage_error("%s", "option --input needs a file name");
+            o->input = argv[i];
+        }
         else if (!strcmp(a, "--safe")) o->sandbox.safe = 1;
         else if (live_option(o, argc, argv, &i, &rc)) {
             if (rc >= 0) return rc;
@@ -195,6 +201,7 @@ static int parse(int argc, char **argv, options *o) {
                 int rc = set_watch(o, j + 1 < argc ? argv[++j] : NULL);
                 if (rc) return rc;
             } else if (!strcmp(argv[j], "--paper")) o->paper = 1;
+            else if (!strcmp(argv[j], "--input") && j + 1 < argc) o->input = argv[++j];
             else if (live_option(o, argc, argv, &j, &rc)) {
                 if (rc >= 0) return rc;
             } else argv[out++] = argv[j];
@@ -212,6 +219,11 @@ static int parse(int argc, char **argv, options *o) {
         }
     }
     if (o->emit_lua && !o->script) return usage_error("%s", "--emit-lua needs a QBasic program");
+    if (o->input && !o->script) return usage_error("%s", "--input needs a script");
+    if (o->input && !freopen(o->input, "r", stdin)) {   /* INPUT, INKEY$... read standard input */
+        fprintf(stderr, "%s: cannot open '%s': %s\n", host_progname, o->input, strerror(errno));
+        return 2;
+    }
     if (o->nframes && (!o->script || !o->noutputs))
         return usage_error("%s", "--frames needs a script and an output: -o out.svg or -o out.png");
     if (o->sandbox.nallow && !o->sandbox.safe)
@@ -235,7 +247,10 @@ static void set_arg(lua_State *L, char **argv, int script_index) {
 
 static void push_script_args(lua_State *L, char **argv, int script_index, int *n) {
     *n = 0;
-    for (int i = script_index + 1; argv[i]; i++, (*n)++) lua_pushstring(L, argv[i]);
+    for (int i = script_index + 1; argv[i]; i++, (*n)++) {
+        luaL_checkstack(L, 2, "too many arguments to the script");   /* 100 args overflowed */
+        lua_pushstring(L, argv[i]);
+    }
 }
 
 /* The default output: the script's base name with .png, in the current directory. */
