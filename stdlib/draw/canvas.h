@@ -36,8 +36,10 @@ typedef enum {
                         on screen); flags: PC_ARC_FULL, PC_ARC_RADIUS0, PC_ARC_RADIUS1 */
     PC_OP_FILL,      /* a PAINTed region: spans[first .. first+count) */
     PC_OP_PATH,      /* pts[first .. first+count) with their tags; flags: PC_PATH_CLOSED */
-    PC_OP_TEXT       /* text[first .. first+count) (UTF-8); x1, y1: top-left pixel of the
+    PC_OP_TEXT,      /* text[first .. first+count) (UTF-8); x1, y1: top-left pixel of the
                         cell box; rx: scale; flags: the anchor it was placed by */
+    PC_OP_FILLPATH   /* a filled path: pts[first .. first+count) with their tags, every
+                        subpath closed; flags: PC_FILL_EVENODD or PC_FILL_NONZERO */
 } pc_op_kind;
 
 enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
@@ -47,6 +49,8 @@ enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
  * it belongs to (all three points of a cubic are tagged CUBIC). */
 enum { PC_PATH_MOVE, PC_PATH_LINE, PC_PATH_CUBIC };
 enum { PC_PATH_CLOSED = 1 };
+/* The fill rules of a filled path (as SVG's fill-rule). */
+enum { PC_FILL_NONZERO = 0, PC_FILL_EVENODD = 1 };
 
 /* Where text goes relative to its point: the side of the point (NE: above right). */
 enum { PC_ANCHOR_C, PC_ANCHOR_N, PC_ANCHOR_NE, PC_ANCHOR_E, PC_ANCHOR_SE, PC_ANCHOR_S,
@@ -189,6 +193,21 @@ int pc_line_styled(pc_canvas *c, double x1, double y1, double x2, double y2, int
  * draws nothing.  The graphics cursor moves to the last point. */
 int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
             int closed, int color);
+
+/* A filled path: the points and verbs as for pc_path (world coordinates; cubics flattened to
+ * within 0.1 px on the screen), every subpath closed, filled with `color` by `rule`
+ * (PC_FILL_EVENODD: inside where a ray crosses the outline an odd number of times, so a
+ * subpath inside another makes a hole; PC_FILL_NONZERO: where the outline winds round a
+ * non-zero number of times).  No outline is drawn and the pen does not apply.
+ * Pixels: pixel (i, j) is filled when its centre, the screen point (i, j), is inside; a centre
+ * exactly on the outline counts as inside on a left or top edge and outside on a right or
+ * bottom edge (each scanline's run is the half-open x0 <= i < x1, each edge the half-open
+ * y0 <= j < y1).  So polygons that share an edge (the same two vertices) neither overlap
+ * nor leave a gap between them, and a tiling of the plane covers every pixel exactly once.
+ * Clipped to VIEW.  A point farther than 1e15 pixels from the screen is an error (it could
+ * not be placed to the pixel).  The graphics cursor moves to the last point. */
+int pc_fill_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
+                 int rule, int color);
 
 /* The pen for the lines, boxes, circles and paths drawn from now on: width in pixels
  * (1..PC_PEN_MAXWIDTH; above 1 every pixel of the 1-pixel stroke becomes a disc of that

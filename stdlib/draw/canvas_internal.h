@@ -39,6 +39,11 @@ void pc_styled_pixels(const pc_canvas *c, const pc_op *op, void (*fn)(void *, lo
 int pc_cubic_segments(const pc_xy p[4], double tol);
 pc_xy pc_cubic_at(const pc_xy p[4], double t);
 
+/* Append the screen images of a path's n points (with their verbs' tags, checked) to the
+ * canvas's points; *first: where they start.  stmt names the statement in messages. */
+int pc_push_path_pts(pc_canvas *c, const char *stmt, size_t n, const double *xy,
+                     const uint8_t *verbs, size_t nverbs, uint32_t *first);
+
 pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color);
 int pc_push_span(pc_canvas *c, int y, int x0, int x1);
 /* Append a dot to the DOTS run at the end of the list, or start a run (new colour or clip). */

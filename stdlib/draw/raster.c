@@ -497,16 +497,17 @@ static int grow_pts(pc_canvas *c, size_t need) {
     return 1;
 }
 
-/* Append the path's screen points to the canvas; *first receives where they start. */
-static int push_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs,
-                     size_t nverbs, uint32_t *first) {
-    if (n == 0) return pc_fail(c, "path: no points");
-    if (c->npts + n > UINT32_MAX) return pc_fail_code(c, PC_ENOMEM, "path: too many points");
-    if (!grow_pts(c, c->npts + n)) return pc_fail_code(c, PC_ENOMEM, "out of memory for a path");
+/* Append the path's screen points to the canvas; *first receives where they start.  stmt
+ * names the statement in messages (paths and filled paths share the points). */
+int pc_push_path_pts(pc_canvas *c, const char *stmt, size_t n, const double *xy,
+                     const uint8_t *verbs, size_t nverbs, uint32_t *first) {
+    if (n == 0) return pc_fail(c, "%s: no points", stmt);
+    if (c->npts + n > UINT32_MAX) return pc_fail_code(c, PC_ENOMEM, "%s: too many points", stmt);
+    if (!grow_pts(c, c->npts + n)) return pc_fail_code(c, PC_ENOMEM, "out of memory for a %s", stmt);
     int ok = path_tags(c, n, verbs, nverbs, c->tags + c->npts);
     for (size_t i = 0; i < n && ok == PC_OK; i++) {
         pc_xy *q = &c->pts[c->npts + i];
-        ok = to_screen(c, "path", xy[2 * i], xy[2 * i + 1], &q->x, &q->y);
+        ok = to_screen(c, stmt, xy[2 * i], xy[2 * i + 1], &q->x, &q->y);
     }
     if (ok != PC_OK) return ok;
     *first = (uint32_t)c->npts;
@@ -518,7 +519,7 @@ int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size
             int closed, int color) {
     uint32_t first = 0;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_OK) ok = push_path(c, n, xy, verbs, nverbs, &first);
+    if (ok == PC_OK) ok = pc_push_path_pts(c, "path", n, xy, verbs, nverbs, &first);
     if (ok != PC_OK) return ok;
     pc_op tmp = {.kind = PC_OP_PATH, .flags = closed ? PC_PATH_CLOSED : 0, .first = first,
                  .count = (uint32_t)n};

@@ -22,6 +22,8 @@
  *   FILL (PAINT)       one filled <path>: the outline of the painted pixels, traced along
  *                      pixel edges (holes included), so it has no seams at any zoom.
  *   PATH               one <path> with absolute M, L and C commands (Z when closed).
+ *   FILLPATH           one filled <path> (M, L, C, every subpath closed by Z) with the op's
+ *                      fill-rule, crisp edges; subpaths reaching far off are cut to the clip.
  *   TEXT               <text> in monospace at the raster's cell box (font.h's baseline),
  *                      stretched by textLength to exactly the raster's width.
  *   styled LINE, BOX   QBasic's style bits: the exact pixels, as isolated dots are written.
@@ -874,6 +876,139 @@ static void emit_path(svgw *w, const pc_op *op) {
     d_end(w);
 }
 
+/* ---- filled paths ------------------------------------------------------------------------- */
+
+/* A subpath reaching beyond NEAR_PX is flattened and cut to the clip rectangle grown by
+ * MARGIN (Sutherland-Hodgman, one side at a time): the cut replaces what lies outside by
+ * pieces of the rectangle's sides, which keeps the winding number of every point inside it,
+ * so either fill rule fills the same pixels there. */
+typedef struct { double *v; size_t n, cap; } poly_buf;
+
+static int poly_push(poly_buf *b, double x, double y) {
+    if (!pc_grow((void **)&b->v, &b->cap, 2 * (b->n + 1), sizeof *b->v)) return 0;
+    b->v[2 * b->n] = x;
+    b->v[2 * b->n + 1] = y;
+    b->n++;
+    return 1;
+}
+
+/* Keep the part of the closed polygon in with coordinate `axis` (0: x, 1: y) on the side
+ * sign * (coord - lim) <= 0; the result goes to out. */
+static int poly_cut(const poly_buf *in, poly_buf *out, int axis, double lim, double sign) {
+    out->n = 0;
+    for (size_t i = 0; i < in->n; i++) {
+        const double *a = in->v + 2 * i, *b = in->v + 2 * ((i + 1) % in->n);
+        double da = sign * (a[axis] - lim), db = sign * (b[axis] - lim);
+        if (da <= 0 && !poly_push(out, a[0], a[1])) return 0;
+        if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
+            double t = da / (da - db);
+            double x = axis == 0 ? lim : a[0] + t * (b[0] - a[0]);
+            double y = axis == 1 ? lim : a[1] + t * (b[1] - a[1]);
+            if (!poly_push(out, x, y)) return 0;
+        }
+    }
+    return 1;
+}
+
+/* Write the flattened subpath in buf (SVG coordinates) cut to r: M, L..., Z. */
+static void emit_cut_subpath(svgw *w, poly_buf *buf, poly_buf *tmp, const double r[4]) {
+    const int axis[4] = {0, 0, 1, 1};
+    const double sign[4] = {-1, 1, -1, 1};
+    for (int k = 0; k < 4 && buf->n; k++) {
+        if (!poly_cut(buf, tmp, axis[k], r[k], sign[k])) { w->nomem = 1; return; }
+        poly_buf t = *buf; *buf = *tmp; *tmp = t;
+    }
+    if (buf->n < 3) return;
+    for (size_t i = 0; i < buf->n; i++) {
+        hpt p = {hund(buf->v[2 * i]), hund(buf->v[2 * i + 1])};
+        if (i == 0) d_move(w, p);
+        else {
+            d_letter(w, 'L');
+            d_num(w, p.x);
+            d_num(w, p.y);
+        }
+    }
+    d_letter(w, 'Z');
+}
+
+/* The far case: every subpath flattened (cubics to 0.1 px) and cut. */
+static void emit_fill_far(svgw *w, const pc_xy *p, const uint8_t *tag, size_t n, pc_rect clip) {
+    const double r[4] = {clip.x0 - MARGIN, clip.x1 + 1 + MARGIN, clip.y0 - MARGIN,
+                         clip.y1 + 1 + MARGIN};
+    poly_buf buf = {0}, tmp = {0};
+    pc_xy cur = p[0];
+    for (size_t i = 0; i < n && !w->nomem;) {
+        if (tag[i] == PC_PATH_MOVE) {
+            if (buf.n) emit_cut_subpath(w, &buf, &tmp, r);
+            buf.n = 0;
+            cur = p[i++];
+            if (!poly_push(&buf, cur.x + 0.5, cur.y + 0.5)) w->nomem = 1;
+        } else if (tag[i] == PC_PATH_LINE) {
+            cur = p[i++];
+            if (!poly_push(&buf, cur.x + 0.5, cur.y + 0.5)) w->nomem = 1;
+        } else {
+            const pc_xy q[4] = {cur, p[i], p[i + 1], p[i + 2]};
+            int k = pc_cubic_segments(q, 0.1);
+            for (int j = 1; j <= k && !w->nomem; j++) {
+                pc_xy e = j == k ? q[3] : pc_cubic_at(q, (double)j / k);
+                if (!poly_push(&buf, e.x + 0.5, e.y + 0.5)) w->nomem = 1;
+            }
+            cur = q[3];
+            i += 3;
+        }
+    }
+    if (buf.n && !w->nomem) emit_cut_subpath(w, &buf, &tmp, r);
+    free(buf.v);
+    free(tmp.v);
+}
+
+/* A FILLPATH: one filled <path> (every subpath closed by Z), its fill-rule the op's.  Edges
+ * are crisp: the raster's pixels are whole, and adjacent fills (a shaded mesh) show no seams. */
+static void emit_fillpath(svgw *w, const pc_op *op) {
+    const pc_canvas *c = w->c;
+    if (op->count == 0 || (size_t)op->first + op->count > c->npts) return;
+    const pc_xy *p = c->pts + op->first;
+    const uint8_t *tag = c->tags + op->first;
+    pc_rect clip = clip_of(w, op);
+    if (!path_near_clip(p, op->count, clip, MARGIN)) return;
+    open_el(w, "path");
+    color_attr(w, "fill", op->color);
+    if (op->flags == PC_FILL_EVENODD) fputs(" fill-rule=\"evenodd\"", w->out);
+    fputs(" shape-rendering=\"crispEdges\"", w->out);
+    d_begin(w);
+    int far = 0;
+    for (size_t i = 0; i < op->count; i++) far |= !near_pt(p[i]);
+    if (far) {
+        emit_fill_far(w, p, tag, op->count, clip);
+    } else {
+        size_t nsub = 0;
+        for (size_t i = 0; i < op->count;) {
+            if (tag[i] == PC_PATH_MOVE) {
+                if (nsub > 1) d_letter(w, 'Z');
+                d_move(w, (hpt){hund(p[i].x + 0.5), hund(p[i].y + 0.5)});
+                nsub = 1;
+                i++;
+            } else if (tag[i] == PC_PATH_LINE) {
+                d_letter(w, 'L');
+                d_num(w, hund(p[i].x + 0.5));
+                d_num(w, hund(p[i].y + 0.5));
+                nsub++;
+                i++;
+            } else {
+                d_letter(w, 'C');
+                for (int k = 0; k < 3; k++) {
+                    d_num(w, hund(p[i + k].x + 0.5));
+                    d_num(w, hund(p[i + k].y + 0.5));
+                }
+                nsub += 3;
+                i += 3;
+            }
+        }
+        if (nsub > 1) d_letter(w, 'Z');
+    }
+    d_end(w);
+}
+
 /* ---- text --------------------------------------------------------------------------------- */
 
 /* A code point as XML character data: markup characters escaped; characters XML cannot hold
@@ -978,6 +1113,8 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
             emit_arc(&w, op);
         } else if (op->kind == PC_OP_FILL) {
             emit_fill(&w, op);
+        } else if (op->kind == PC_OP_FILLPATH) {
+            emit_fillpath(&w, op);
         } else {
             emit_box(&w, op);
         }
