@@ -431,8 +431,10 @@ def("size", "size() -> width, height, colours",
   "The size of the canvas and its number of colours.")
 def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen()"},
   "The pen of lines, boxes, circles and paths: width in pixels and a dash pattern; pen() restores width 1, solid.")
-def("path", "path(points [, {closed = false, color = c}])",
-  "A polyline through the points as one path (SVG keeps it a <path>).")
+def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\"}])",
+  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given.")
+def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
+  "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
 def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",
   "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font.")
 def("text", "text(x, y, string [, colour [, scale]])",

@@ -1,6 +1,6 @@
 /* Binding of the QBasic drawing layer (stdlib/draw): screen cls color palette pset preset line
- * line_to circle paint point window view save last_point, and beyond QBasic: pen path label
- * text.  Every colour argument is an attribute number or a "#rrggbb" string.
+ * line_to circle paint point window view save last_point, and beyond QBasic: pen path fill
+ * label text.  Every colour argument is an attribute number or a "#rrggbb" string.
  *
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
  * around a pc_canvas pointer, so SCREEN can replace the canvas in place); the registry keeps
@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl.h"
+#include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_qbscreen.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
@@ -379,30 +380,143 @@ static int l_pen(lua_State *L) {
     return check(L, c, pc_pen(c, width, dash, ndash));
 }
 
-/* path(points [, {closed =, color =}]): the polyline through a list of 2-D points. */
+/* The point at the stack top, element `where` ("index 3", "index [2][3]") of argument arg:
+ * a 2-D point, or an n-D one with a camera for n-D points set. */
+static void list_point(lua_State *L, int arg, const char *where, const char *expected,
+                       double *x, double *y) {
+    pcl_value *p = pcl_tovalue(L, -1);
+    if (p && p->n != 2) {
+        int st = pcl_project(L, p->n, p->h, x, y);
+        if (st == PC_OK) return;
+        const char *text = luaL_tolstring(L, -1, NULL);
+        if (st == PC_IMPROPER)
+            pcl_error(L, "%s: argument #%d (points) at %s: %s projects to infinity (it lies in the "
+                         "camera's vanishing plane)", pcl_fname(L), pcl_arg_shown(L, arg), where, text);
+        if (st != PC_EDIM)
+            pcl_error(L, "%s: argument #%d (points) at %s: the image of %s is not finite",
+                      pcl_fname(L), pcl_arg_shown(L, arg), where, text);
+        pcl_error(L, "%s: argument #%d (points) must be %s, got the %d-D %s at %s (3-D points "
+                     "need a camera)", pcl_fname(L), pcl_arg_shown(L, arg), expected, p->n, text, where);
+    }
+    double loc[2];
+    if (p && pc_loc(2, p->h, loc) != PC_OK) {   /* a vector or a weighted value */
+        const char *text = luaL_tolstring(L, -1, NULL);
+        const char *w = pcl_pushnum(L, p->h[2]);
+        pcl_error(L, "%s: argument #%d (points) at %s: %s has weight %s, not 1: a location must "
+                     "be a point (the membership condition; normalize(p) for a projective point)",
+                  pcl_fname(L), pcl_arg_shown(L, arg), where, text, w);
+    }
+    if (!pcl_topoint2(L, -1, x, y))
+        pcl_error(L, "%s: argument #%d (points) must be %s, got %s at %s", pcl_fname(L),
+                  pcl_arg_shown(L, arg), expected, luaL_typename(L, -1), where);
+}
+
+/* The points argument at arg of path and fill: a list of 2-D points (one subpath) or a list
+ * of such lists (one subpath each).  The coordinates and the verbs (a move at the start of
+ * each subpath, lines after) go to scratch userdata left on the stack; returns the number of
+ * points. */
+static size_t read_subpaths(lua_State *L, int arg, double **xy, uint8_t **verbs) {
+    static const char expected[] = "a list of 2-D points or a list of such lists";
+    if (!lua_istable(L, arg)) return (size_t)pcl_argerror(L, arg, "points", "a list of 2-D points");
+    lua_Integer m = luaL_len(L, arg);
+    if (m < 1) return (size_t)pcl_argerror(L, arg, "points", "a list of at least one point");
+    lua_geti(L, arg, 1);
+    int nested = lua_type(L, -1) == LUA_TTABLE;
+    lua_pop(L, 1);
+    size_t n = 0;
+    for (lua_Integer k = 1; nested && k <= m; k++) {   /* count the points of the subpaths */
+        if (lua_geti(L, arg, k) != LUA_TTABLE)
+            pcl_error(L, "%s: argument #%d (points) must be %s, got %s at index %d", pcl_fname(L),
+                      pcl_arg_shown(L, arg), expected, luaL_typename(L, -1), (int)k);
+        lua_Integer len = luaL_len(L, -1);
+        if (len < 1)
+            pcl_error(L, "%s: argument #%d (points) must be %s, got an empty list at index %d",
+                      pcl_fname(L), pcl_arg_shown(L, arg), expected, (int)k);
+        n += (size_t)len;
+        lua_pop(L, 1);
+    }
+    if (!nested) n = (size_t)m;
+    if (n > 100000000) pcl_error(L, "%s: argument #%d (points) holds too many points", pcl_fname(L), pcl_arg_shown(L, arg));
+    *xy = lua_newuserdatauv(L, n * 2 * sizeof **xy, 0);   /* freed by the GC */
+    *verbs = lua_newuserdatauv(L, n, 0);
+    size_t i = 0;
+    for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
+        int list = arg;
+        if (nested) {
+            lua_geti(L, arg, k);
+            list = lua_gettop(L);
+        }
+        lua_Integer len = luaL_len(L, list);
+        for (lua_Integer j = 1; j <= len; j++, i++) {
+            char where[48];
+            if (nested) snprintf(where, sizeof where, "index [%d][%d]", (int)k, (int)j);
+            else snprintf(where, sizeof where, "index %d", (int)j);
+            lua_geti(L, list, j);
+            list_point(L, arg, where, nested ? expected : "a list of 2-D points",
+                       &(*xy)[2 * i], &(*xy)[2 * i + 1]);
+            (*verbs)[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
+            lua_pop(L, 1);
+        }
+        if (nested) lua_pop(L, 1);
+    }
+    return n;
+}
+
+/* A fill rule at stack index idx, part of argument arg: "evenodd" (the default) or
+ * "nonzero". */
+static int rule_at(lua_State *L, int idx, int arg, const char *what) {
+    static const char expected[] = "\"evenodd\" or \"nonzero\"";
+    if (lua_isnoneornil(L, idx)) return PC_FILL_EVENODD;
+    if (lua_type(L, idx) == LUA_TSTRING) {
+        const char *r = lua_tostring(L, idx);
+        if (!strcmp(r, "evenodd")) return PC_FILL_EVENODD;
+        if (!strcmp(r, "nonzero")) return PC_FILL_NONZERO;
+        return bad_string(L, idx, arg, what, expected);
+    }
+    return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
+}
+
+/* path(points [, {closed =, color =, fill =, rule =}]): the polyline through a list of 2-D
+ * points (or several, one subpath each).  With fill, the closed path is filled in that
+ * colour, and its outline drawn on top only when color is given too. */
 static int l_path(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "points", "a list of 2-D points");
-    lua_Integer n = luaL_len(L, 1);
-    if (n < 1) return pcl_argerror(L, 1, "points", "a list of at least one point");
-    int closed = 0, color = -1;
-    if (!lua_isnoneornil(L, 2)) {
-        if (!lua_istable(L, 2)) return pcl_argerror(L, 2, "options", "a table {closed =, color =}");
+    lua_settop(L, 2);
+    int closed = 0, color = -1, fill = -2, rule = PC_FILL_EVENODD;
+    if (!lua_isnil(L, 2)) {
+        if (!lua_istable(L, 2))
+            return pcl_argerror(L, 2, "options", "a table {closed =, color =, fill =, rule =}");
         lua_getfield(L, 2, "closed");
         closed = lua_toboolean(L, -1);
         if (lua_getfield(L, 2, "color") != LUA_TNIL)
             color = color_at(L, lua_gettop(L), 2, c, "options.color");
-        lua_pop(L, 2);
+        if (lua_getfield(L, 2, "fill") != LUA_TNIL)
+            fill = color_at(L, lua_gettop(L), 2, c, "options.fill");
+        lua_getfield(L, 2, "rule");
+        rule = rule_at(L, lua_gettop(L), 2, "options.rule");
+        lua_pop(L, 4);
     }
-    double *xy = lua_newuserdatauv(L, (size_t)n * 2 * sizeof *xy, 0);   /* freed by the GC */
-    for (lua_Integer i = 0; i < n; i++) {
-        lua_geti(L, 1, i + 1);
-        if (!pcl_topoint2(L, -1, &xy[2 * i], &xy[2 * i + 1]))
-            return pcl_error(L, "path: argument #%d (points) must be a list of 2-D points, got %s "
-                                "at index %d", pcl_arg_shown(L, 1), luaL_typename(L, -1), (int)(i + 1));
-        lua_pop(L, 1);
-    }
-    return check(L, c, pc_path(c, (size_t)n, xy, NULL, 0, closed, color));
+    double *xy;
+    uint8_t *verbs;
+    size_t n = read_subpaths(L, 1, &xy, &verbs);
+    if (fill == -2) return check(L, c, pc_path(c, n, xy, verbs, n, closed, color));
+    check(L, c, pc_fill_path(c, n, xy, verbs, n, rule, fill));
+    if (color < 0) return 0;
+    return check(L, c, pc_path(c, n, xy, verbs, n, 1, color));
+}
+
+/* fill(points [, colour [, rule]]): the closed path through the points (or several, one
+ * subpath each) filled; rule "evenodd" (default: a subpath inside another makes a hole) or
+ * "nonzero". */
+static int l_fill(lua_State *L) {
+    pc_canvas *c = canvas(L);
+    lua_settop(L, 3);
+    int color = opt_color(L, 2, c);
+    int rule = rule_at(L, 3, 3, "rule");
+    double *xy;
+    uint8_t *verbs;
+    size_t n = read_subpaths(L, 1, &xy, &verbs);
+    return check(L, c, pc_fill_path(c, n, xy, verbs, n, rule, color));
 }
 
 static const char *const directions[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
@@ -611,7 +725,7 @@ static const luaL_Reg draw_functions[] = {
     {"circle", l_circle}, {"paint", l_paint},   {"point", l_point},   {"window", l_window},
     {"view", l_view},     {"save", l_save},     {"size", l_size},     {"last_point", l_last_point},
     {"pen", l_pen},       {"path", l_path},     {"label", l_label},   {"text", l_text},
-    {NULL, NULL}};
+    {"fill", l_fill},     {NULL, NULL}};
 
 void pcl_open_draw(lua_State *L) {
     /* one canvas per Lua state: reuse it if the module is opened twice */
