@@ -4,8 +4,21 @@
 --
 -- The translation keeps every source line on the same Lua line (so runtime errors name the
 -- QBasic line) and carries the source line as a comment.  See docs/qbasic.md.
+--
+-- The passes, each in its own file (the words they share are qbasic_keywords.lua):
+--   qbasic_lex      a line -> tokens
+--   qbasic_parse    tokens -> the syntax tree (statements: qbasic_parse, expressions:
+--                   qbasic_parse_expr, blocks: qbasic_blocks)
+--   qbasic_resolve  types and QBasic's checks, in textual order
+--   qbasic_scope    where each variable lives, Lua names, SUB parameters copied back
+--   qbasic_control  GOSUB subroutines, the definition chain, GOTO/EXIT targets
+--   qbasic_emit     Lua source (expressions: qbasic_emit_expr, screen: qbasic_emit_gfx)
+-- and the runtime the translation calls: qbasic_rt, qbasic_screen.
 local parse = require "qbasic_parse"
-local gen = require "qbasic_gen"
+local resolve = require "qbasic_resolve"
+local scope = require "qbasic_scope"
+local control = require "qbasic_control"
+local emit = require "qbasic_emit"
 
 local M = {}
 
@@ -13,7 +26,10 @@ function M.translate(source, chunkname)
   chunkname = chunkname or "?"
   local ok, res = pcall(function()
     local prog = parse.parse(source)
-    return gen.generate(prog, chunkname)
+    resolve.resolve(prog)
+    scope.scope(prog)
+    control.control(prog)
+    return emit.emit(prog, chunkname)
   end)
   if ok then return res end
   if type(res) == "table" and res.qb then

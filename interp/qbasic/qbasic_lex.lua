@@ -11,26 +11,8 @@
 -- Every token has col, its 1-based column.
 local M = {}
 
--- QBasic's reserved words.  A reserved word can never name a variable; the ones pointcalc
--- does not implement still lex as keywords, so that using them gives "not supported" rather
--- than a mysterious undefined variable.
-local reserved = {}
-for w in ([[
-abs absolute access alias and any append as asc atn base beep binary bload bsave byval call
-calls case cdbl cdecl chain chdir chr$ cint circle clear clng close cls color com command$ common
-const cos csng csrlin cvd cvdmbf cvi cvl cvs cvsmbf data date$ declare def defdbl defint deflng
-defsng defstr dim do double draw else elseif end environ environ$ eof eqv erase erdev erdev$ erl err
-error exit exp field fileattr files fix for fre freefile function get gosub goto hex$ if imp
-inkey$ inp input input$ instr int integer ioctl ioctl$ is key kill lbound lcase$ left$ len let
-line list loc locate lock lof log long loop lpos lprint lset ltrim$ mid$ mkd$ mkdir mkdmbf$
-mki$ mkl$ mks$ mksmbf$ mod name next not oct$ off on open option or out output paint palette
-pcopy peek pen play pmap point poke pos preserve preset print pset put random randomize read redim rem
-reset restore resume return right$ rmdir rnd rset rtrim$ run sadd screen seek seg select
-setmem sgn shared shell signal sin single sleep sound space$ spc sqr static step stick stop
-str$ strig string string$ sub swap system tab tan then time$ timer to troff tron type ubound
-ucase$ uevent unlock until using val varptr varptr$ varseg view wait wend while width window write
-xor
-]]):gmatch("%S+") do reserved[w] = true end
+-- QBasic's reserved words: the one keyword table (qbasic_keywords.lua)
+local reserved = require("qbasic_keywords").reserved
 M.reserved = reserved
 
 local function lex_error(msg, col)

@@ -1,0 +1,232 @@
+-- QBasic front end, pass 4: control flow.  GOSUB subroutines (a GOSUB target at the top level
+-- of the module becomes a Lua function running to its RETURN: a "region"), the chain of
+-- definitions that defines every procedure and subroutine before the program starts, and the
+-- checks of GOTO, GOSUB and EXIT targets (Label not defined, a GOTO into a block, EXIT FOR
+-- outside FOR...NEXT) before anything runs.
+--
+-- control(prog) adds: prog.main (the top level with its regions), prog.gosub_lua (label ->
+-- function name), prog.defs (procdefs and regions in order, with def_label, skip_label and
+-- next_def), prog.goto_targets (labels some GOTO names).
+local walk = require "qbasic_walk"
+
+local M = {}
+
+local function qerr(msg, line) error({ qb = true, msg = msg, line = line }, 0) end
+
+-- the Lua label of a QBasic label: L100, L_name
+function M.label_lua(name)
+  if name:match("^%d+$") then return "L" .. name end
+  return "L_" .. name:gsub("%.", "_")
+end
+
+-- ---- GOSUB subroutines -------------------------------------------------------------------------
+local function gosub_regions(prog)
+  local gosub_targets = {}
+  walk.stmts(prog.main, function(st)
+    if st.k == "gosub" then gosub_targets[st.label] = st.line
+    elseif st.k == "on" and st.gosub then
+      for _, l in ipairs(st.labels) do gosub_targets[l] = st.line end
+    end
+  end)
+  for _, proc in ipairs(prog.procs) do
+    if proc.tree then
+      walk.stmts(proc.tree, function(st)
+        if st.k == "gosub" or (st.k == "on" and st.gosub) then
+          qerr("GOSUB inside a SUB or FUNCTION: not supported by pointcalc", st.line)
+        end
+      end)
+    end
+  end
+  local gosub_lua = {}
+  for label, line in pairs(gosub_targets) do
+    local l = prog.labels[label]
+    if not l or l.proc then qerr("Label not defined", line) end
+    -- through the namespace: a variable gosub.10 (gosub_10 in Lua) gets another name
+    gosub_lua[label] = prog.alloc(prog.gns, { "gosub_" .. label:gsub("%.", "_") })
+  end
+  prog.gosub_lua = gosub_lua
+  -- split the top level of main into plain statements and subroutines
+  local regions = {}
+  local newtop = {}
+  local cur = nil
+  for _, st in ipairs(prog.main) do
+    if st.k == "label" and gosub_targets[st.name] then
+      local r = { k = "region", label = st.name, lua = gosub_lua[st.name], line = st.line,
+        body = { st } }
+      if cur then cur.falls_into = r end
+      cur = r
+      regions[#regions + 1] = r
+      newtop[#newtop + 1] = r
+    elseif cur then
+      if st.k == "return" then
+        cur.return_line = st.line
+        cur = nil
+      elseif st.k == "procdef" then
+        qerr("SUB or FUNCTION inside a GOSUB subroutine", st.line)
+      else
+        cur.body[#cur.body + 1] = st
+      end
+    else
+      newtop[#newtop + 1] = st
+    end
+  end
+  if cur then qerr("GOSUB subroutine without RETURN", cur.line) end
+  prog.main = newtop
+  -- a GOSUB target inside a block cannot be a subroutine
+  for label, line in pairs(gosub_targets) do
+    local found = false
+    for _, r in ipairs(regions) do if r.label == label then found = true end end
+    if not found then
+      qerr("GOSUB " .. label .. ": the target must be at the top level of the program", line)
+    end
+  end
+end
+
+-- ---- the definition chain ----------------------------------------------------------------------
+local function definition_chain(prog)
+  local defs = {}      -- in textual order: procs and regions
+  for _, st in ipairs(prog.main) do
+    if st.k == "procdef" or st.k == "region" then defs[#defs + 1] = st end
+  end
+  for _, d in ipairs(defs) do
+    local name = d.k == "region" and d.lua or d.proc.lua
+    d.def_label = "def_" .. name
+    d.skip_label = "skip_" .. name
+  end
+  for i, d in ipairs(defs) do
+    d.next_def = defs[i + 1] and defs[i + 1].def_label or "start"
+  end
+  prog.defs = defs
+end
+
+-- ---- GOTO and EXIT ----------------------------------------------------------------------------
+-- Lua's goto reaches a label in the same block or an enclosing one of the same function: each
+-- block gets an id, a function body an id marked "fn"; a GOTO is fine when the label's path of
+-- blocks is a prefix of the GOTO's with no function boundary in between.
+local function check_jumps(prog)
+  local goto_targets = {}
+  local function scan(list)
+    walk.stmts(list, function(st)
+      if st.k == "goto" then goto_targets[st.label] = true
+      elseif st.k == "on" and not st.gosub then
+        for _, l in ipairs(st.labels) do goto_targets[l] = true end
+      end
+    end)
+  end
+  scan(prog.main)
+  for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
+  prog.goto_targets = goto_targets
+
+  local block_id = 0
+  local path = {}
+  local label_at, gotos = {}, {}
+  local loops = {}
+  local cur_proc = nil
+  local function copy_path() local c = {}; for i, v in ipairs(path) do c[i] = v end; return c end
+  local body
+  local function inside(list, is_fn, loop)
+    block_id = block_id + 1
+    path[#path + 1] = is_fn and ("fn" .. block_id) or block_id
+    if loop then loops[#loops + 1] = loop end
+    body(list)
+    if loop then loops[#loops] = nil end
+    path[#path] = nil
+  end
+  local function in_function(list, proc)
+    local saved_loops, saved_proc = loops, cur_proc
+    loops, cur_proc = { "fn" }, proc
+    inside(list, true)
+    loops, cur_proc = saved_loops, saved_proc
+  end
+  local function jump(label, line) gotos[#gotos + 1] = { label = label, path = copy_path(), line = line } end
+  local function exit(st)
+    if st.what == "for" or st.what == "do" then
+      for i = #loops, 1, -1 do
+        if loops[i] == st.what then return end
+        if loops[i] == "fn" then break end
+      end
+      qerr(st.what == "for" and "EXIT FOR not within FOR...NEXT" or "EXIT DO not within DO...LOOP",
+        st.line)
+    end
+    if not cur_proc or cur_proc.kind ~= st.what then
+      qerr(st.what == "sub" and "EXIT SUB not within SUB" or st.what == "function"
+        and "EXIT FUNCTION not within FUNCTION" or "EXIT DEF not within DEF FN", st.line)
+    end
+  end
+  local STMT = {}
+  function STMT.label(st)
+    if goto_targets[st.name] then label_at[st.name] = { path = copy_path(), line = st.line } end
+  end
+  STMT["goto"] = function(st) jump(st.label, st.line) end
+  function STMT.on(st)
+    if not st.gosub then for _, l in ipairs(st.labels) do jump(l, st.line) end end
+  end
+  STMT.exit = exit
+  STMT["for"] = function(st) inside(st.body, false, "for") end
+  STMT["while"] = function(st) inside(st.body, false, "while") end
+  STMT["do"] = function(st) inside(st.body, false, "do") end
+  function STMT.ifb(st)
+    for _, br in ipairs(st.branches) do inside(br.body) end
+    if st.else_body then inside(st.else_body) end
+  end
+  function STMT.select(st)
+    for _, c in ipairs(st.cases) do inside(c.body) end
+    if st.else_body then inside(st.else_body) end
+  end
+  function STMT.if1(st)
+    inside(st.then_body)
+    if st.else_body then inside(st.else_body) end
+  end
+  function STMT.procdef(st) if st.proc.tree then in_function(st.proc.tree, st.proc) end end
+  function STMT.region(st) in_function(st.body, nil) end
+  body = function(list)
+    for _, st in ipairs(list) do
+      local f = STMT[st.k]
+      if f then f(st) end
+    end
+  end
+  in_function(prog.main, nil)
+
+  for _, g in ipairs(gotos) do
+    local l = label_at[g.label]
+    if not l then
+      local def = prog.labels[g.label]
+      if not def then qerr("Label not defined", g.line) end
+      qerr("GOTO " .. g.label .. ": jumps into a block or procedure (line " .. def.line
+        .. "); pointcalc translates GOTO only to a label in the same or an enclosing block", g.line)
+    end
+    local ok = #l.path <= #g.path
+    if ok then
+      for i = 1, #l.path do if l.path[i] ~= g.path[i] then ok = false break end end
+    end
+    if ok then
+      for i = #l.path + 1, #g.path do
+        if type(g.path[i]) == "string" then ok = false end
+      end
+    end
+    if not ok then
+      qerr("GOTO " .. g.label .. ": jumps into a block or another procedure (line "
+        .. l.line .. "); pointcalc translates GOTO only to a label in the same or an enclosing block",
+        g.line)
+    end
+  end
+end
+
+function M.control(prog)
+  gosub_regions(prog)
+  definition_chain(prog)
+  check_jumps(prog)
+  -- RESTORE label: the label must exist
+  local function restores(list)
+    walk.stmts(list, function(st)
+      if st.k == "restore" and st.label and not prog.labels[st.label] then
+        qerr("Label not defined", st.line)
+      end
+    end)
+  end
+  restores(prog.main)
+  for _, proc in ipairs(prog.procs) do if proc.tree then restores(proc.tree) end end
+  return prog
+end
+
+return M

@@ -1,0 +1,535 @@
+-- QBasic front end, pass 5: emit.  The resolved program (typed, named, its control flow
+-- checked) becomes Lua source, one function per statement kind in STMT below; expressions are
+-- qbasic_emit_expr's, the screen's statements qbasic_emit_gfx's.
+--
+-- The Lua keeps the program's lines: the code for source line N sits on Lua line N, followed
+-- by the source line as a comment, so runtime errors name the QBasic line.  Variables of the
+-- module are fields of the program's environment (_ENV, made by qbasic_rt), SUB and FUNCTION
+-- variables are Lua locals.  The whole program is one function, run by `run` from qbasic_rt;
+-- SUB, FUNCTION, DEF FN and GOSUB subroutines are defined before the program starts through a
+-- chain of gotos ("def_" and "skip_" labels), since QBasic procedures may follow their callers.
+local X = require "qbasic_emit_expr"
+local G = require "qbasic_emit_gfx"
+local control = require "qbasic_control"
+local rt = require "qbasic_rt"
+local walk = require "qbasic_walk"
+local lex = require "qbasic_lex"
+
+local M = {}
+
+local value, cond, convert, f32, strip = X.value, X.cond, X.convert, X.f32, X.strip
+
+function M.emit(prog, chunkname)
+  local lines = prog.lines
+  local out = {}
+  for i = 1, #lines do out[i] = {} end
+  local function E(line, s) local o = out[line]; o[#o + 1] = s end
+  X.install(prog)
+  G.install(prog, E)
+  local gosub_lua, goto_targets, label_lua = prog.gosub_lua, prog.goto_targets, control.label_lua
+
+  local cur_proc = nil      -- procedure being emitted (nil: main)
+  local cur_region = nil    -- GOSUB subroutine being emitted
+  local loops = {}          -- open loops: {kind=, exit_label=}
+  local exit_count = 0
+  local uses_stop = false
+  local emit_block
+
+  -- a SUB returns the parameters it changes, for the caller to copy back
+  local function copy_out(proc)
+    local t = {}
+    for i, p in ipairs(proc.params) do
+      if proc.modified[i] and not p.array then t[#t + 1] = p.lua end
+    end
+    return table.concat(t, ", ")
+  end
+
+  -- EXIT FOR / EXIT DO: break from the innermost loop, else a goto past the loop's end
+  local function exit_loop(kind)
+    for i = #loops, 1, -1 do
+      local l = loops[i]
+      if l.kind == kind then
+        if i == #loops then return "break" end
+        if not l.exit_label then exit_count = exit_count + 1; l.exit_label = "exit_" .. exit_count end
+        return "goto " .. l.exit_label
+      end
+      if l.kind == "fn" then break end
+    end
+    error("internal: EXIT outside its loop")
+  end
+
+  local function emit_call(st)
+    local proc = prog.proc_by_name[st.name]
+    local args = X.call_args(proc, st.args)
+    local targets, any = {}, false
+    for i, p in ipairs(proc.params) do
+      if proc.modified[i] and not p.array then
+        local a = st.args[i]
+        if (a.k == "var" and not a.const) or a.k == "index" then
+          targets[#targets + 1] = X.lvalue(a)
+          any = true
+        else
+          targets[#targets + 1] = "_"
+        end
+      end
+    end
+    while targets[#targets] == "_" do targets[#targets] = nil end
+    if any then
+      E(st.line, table.concat(targets, ", ") .. " = " .. proc.lua .. "(" .. args .. ")")
+    else
+      E(st.line, proc.lua .. "(" .. args .. ")")
+    end
+  end
+
+  -- the value of a numeric literal, possibly negated, or nil
+  local function literal_num(e)
+    e = strip(e)
+    if e.k == "num" then return e.v, e end
+    if e.k == "neg" then
+      local a = strip(e.a)
+      if a.k == "num" then return -a.v, a end
+    end
+  end
+  -- can this literal be written as is for a value of type ty?
+  local function literal_fits(v, lit, ty)
+    if ty == "single" then return f32(v) == v end
+    if ty == "double" then return lit.ty == "double" or f32(v) == v end
+    return v == math.floor(v)
+  end
+
+  local function emit_for(node)
+    local line = node.line
+    local v = node.var
+    local vcode = prog.lua_name(v)
+    local ty = v.ty
+    local decl_names, decl_vals = {}, {}
+    -- the limit and the step are evaluated once, rounded to the variable's type
+    local lim_code
+    local lv, llit = literal_num(node.to)
+    if lv and literal_fits(lv, llit, ty) then
+      lim_code = value(node.to, 0)
+    else
+      decl_names[#decl_names + 1] = "_to"
+      decl_vals[#decl_vals + 1] = convert(node.to, ty)
+      lim_code = "_to"
+    end
+    local step, step_sign
+    if not node.step then
+      step, step_sign = "1", 1
+    else
+      local sv, slit = literal_num(node.step)
+      if sv then step_sign = sv >= 0 and 1 or -1 end
+      if sv and literal_fits(sv, slit, ty) then
+        step = value(node.step, 0)
+      else
+        decl_names[#decl_names + 1] = "_step"
+        decl_vals[#decl_vals + 1] = convert(node.step, ty)
+        step = "_step"
+      end
+    end
+    local cond
+    if step_sign == 1 then cond = vcode .. " <= " .. lim_code
+    elseif step_sign == -1 then cond = vcode .. " >= " .. lim_code
+    else cond = "for_test(" .. vcode .. ", " .. lim_code .. ", " .. step .. ")" end
+    local head = ""
+    if #decl_names > 0 then
+      head = "do local " .. table.concat(decl_names, ", ") .. " = " .. table.concat(decl_vals, ", ") .. " "
+    end
+    E(line, head .. vcode .. " = " .. convert(node.from, ty) .. " while " .. cond .. " do")
+    loops[#loops + 1] = { kind = "for" }
+    emit_block(node.body)
+    local lp = table.remove(loops)
+    local incr
+    local sum = vcode .. " + " .. step
+    if step:sub(1, 1) == "-" then sum = vcode .. " - " .. step:sub(2) end
+    if ty == "single" then incr = vcode .. " = csng(" .. sum .. ")"
+    elseif ty == "double" then incr = vcode .. " = " .. sum
+    elseif ty == "int" then incr = vcode .. " = cint(" .. sum .. ")"
+    else incr = vcode .. " = clng(" .. sum .. ")" end
+    local tail = incr .. " end"
+    if lp.exit_label then
+      tail = tail .. " ::" .. lp.exit_label .. "::"
+    end
+    if #decl_names > 0 then tail = tail .. " end" end
+    E(node.next_line, tail)
+  end
+
+  local function emit_while(node)
+    E(node.line, "while " .. cond(node.cond) .. " do")
+    loops[#loops + 1] = { kind = "while" }
+    emit_block(node.body)
+    table.remove(loops)
+    E(node.end_line, "end")
+  end
+
+  local function emit_do(node)
+    local top, bottom = node.cond_top, node.cond_bottom
+    if bottom then
+      E(node.line, "repeat")
+    elseif top then
+      local c = top.kind == "while" and cond(top.e) or ("not " .. cond(top.e, 12))
+      E(node.line, "while " .. c .. " do")
+    else
+      E(node.line, "while true do")
+    end
+    loops[#loops + 1] = { kind = "do" }
+    emit_block(node.body)
+    local lp = table.remove(loops)
+    local tail
+    if bottom then
+      tail = "until " .. (bottom.kind == "until" and cond(bottom.e) or ("not " .. cond(bottom.e, 12)))
+    else
+      tail = "end"
+    end
+    if lp.exit_label then
+      tail = tail .. " ::" .. lp.exit_label .. "::"
+    end
+    E(node.end_line, tail)
+  end
+
+  local function emit_ifb(node)
+    for i, br in ipairs(node.branches) do
+      E(br.line, (i == 1 and "if " or "elseif ") .. cond(br.cond) .. " then")
+      emit_block(br.body)
+    end
+    if node.else_body then
+      E(node.else_line, "else")
+      emit_block(node.else_body)
+    end
+    E(node.end_line, "end")
+  end
+
+  local function case_test(t, sel_ty)
+    local function rhs(e)
+      return value(e, 4, true)
+    end
+    if t.lo then
+      return "case >= " .. rhs(t.lo) .. " and case <= " .. rhs(t.hi)
+    end
+    return "case " .. X.RELOP_LUA[t.op] .. " " .. rhs(t.e)
+  end
+
+  local function emit_select(node)
+    local sel = node.expr
+    local ty = sel.ty
+    local selcode = ty == "string" and value(sel, 0) or convert(sel, ty == "double" and "double" or
+      (ty == "int" or ty == "long") and ty or "single")
+    E(node.line, "do local case = " .. selcode)
+    local first = true
+    for _, c in ipairs(node.cases) do
+      local tests = {}
+      for _, t in ipairs(c.tests) do
+        t.line = c.line
+        local code = case_test(t, ty)
+        if #c.tests > 1 and t.lo then code = "(" .. code .. ")" end
+        tests[#tests + 1] = code
+      end
+      E(c.line, (first and "if " or "elseif ") .. table.concat(tests, " or ") .. " then")
+      first = false
+      emit_block(c.body)
+    end
+    if node.else_body then
+      if first then E(node.else_line, "do") else E(node.else_line, "else") end
+      emit_block(node.else_body)
+      E(node.end_line, "end end")
+    elseif first then
+      E(node.end_line, "end")
+    else
+      E(node.end_line, "end end")
+    end
+  end
+
+  local function emit_if1(node)
+    local line = node.line
+    E(line, "if " .. cond(node.cond) .. " then")
+    emit_block(node.then_body)
+    if node.else_body then
+      E(line, "else")
+      emit_block(node.else_body)
+    end
+    E(line, "end")
+  end
+
+  local function end_program()
+    if cur_proc or cur_region then
+      uses_stop = true
+      return "stop()"
+    end
+    return "do return end"
+  end
+
+  -- ---- the statements, one function each ---------------------------------------------------
+  local STMT = {}
+  function STMT.label(st)
+    if goto_targets[st.name] then E(st.line, "::" .. label_lua(st.name) .. "::") end
+  end
+  function STMT.let(st)
+    E(st.line, X.lvalue(st.target) .. " = " .. convert(st.expr, st.target.ty))
+  end
+  STMT["for"], STMT["while"], STMT["do"] = emit_for, emit_while, emit_do
+  STMT.ifb, STMT.if1, STMT.select = emit_ifb, emit_if1, emit_select
+  STMT["goto"] = function(st) E(st.line, "goto " .. label_lua(st.label)) end
+  function STMT.gosub(st) E(st.line, gosub_lua[st.label] .. "()") end
+  function STMT.on(st)
+    local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
+    for i, l in ipairs(st.labels) do
+      local act = st.gosub and (gosub_lua[l] .. "()") or ("goto " .. label_lua(l))
+      parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
+    end
+    parts[#parts + 1] = "end end"
+    E(st.line, table.concat(parts, " "))
+  end
+  STMT["return"] = function(st)
+    E(st.line, cur_region and "do return end" or "return_without_gosub()")
+  end
+  STMT["end"] = function(st) E(st.line, end_program()) end
+  function STMT.exit(st)
+    if st.what == "for" or st.what == "do" then
+      E(st.line, exit_loop(st.what))
+    else
+      local p = cur_proc
+      local ret = p.kind == "sub" and copy_out(p) or p.result
+      E(st.line, "do return" .. (ret ~= "" and (" " .. ret) or "") .. " end")
+    end
+  end
+  function STMT.dim(st)
+    for _, d in ipairs(st.decls) do
+      if d.bounds then
+        local node = { k = "dimarray", name = d.name, ty = d.ty, text = d.text, proc = cur_proc }
+        local bs = {}
+        for _, b in ipairs(d.bounds) do
+          if b.lo then
+            bs[#bs + 1] = "{" .. value(b.lo, 0) .. ", " .. value(b.hi, 0) .. "}"
+          elseif st.base == 1 then
+            bs[#bs + 1] = "{1, " .. value(b.hi, 0) .. "}"
+          else
+            bs[#bs + 1] = value(b.hi, 0)
+          end
+        end
+        local f = d.ty == "string" and "dim_str" or "dim"
+        E(st.line, prog.lua_name(node) .. " = " .. f .. "(" .. table.concat(bs, ", ") .. ")")
+      end
+    end
+  end
+  function STMT.const(st)
+    for _, d in ipairs(st.decls) do
+      E(st.line, prog.const_lua[d.const.name] .. " = " .. convert(d.expr, d.const.ty))
+    end
+  end
+  function STMT.read(st)
+    for _, t in ipairs(st.targets) do
+      local src = t.ty == "string" and "read_string()" or "read_number()"
+      local code
+      if t.ty == "string" or t.ty == "double" then code = src
+      elseif t.ty == "single" then code = "csng(" .. src .. ")"
+      elseif t.ty == "int" then code = "cint(" .. src .. ")"
+      else code = "clng(" .. src .. ")" end
+      E(st.line, X.lvalue(t) .. " = " .. code)
+    end
+  end
+  function STMT.restore(st)
+    E(st.line, st.label and ("restore(" .. X.lua_string(st.label) .. ")") or "restore()")
+  end
+  STMT.call = emit_call
+  function STMT.randomize(st) E(st.line, "randomize(" .. value(st.expr, 0) .. ")") end
+  function STMT.swap(st)
+    local a, b = X.lvalue(st.a), X.lvalue(st.b)
+    E(st.line, a .. ", " .. b .. " = " .. b .. ", " .. a)
+  end
+  STMT.rtcall, STMT.getput, STMT.input, STMT.print = G.rtcall, G.getput, G.input, G.print
+  for _, k in ipairs({ "cls", "color", "palette", "pset", "preset", "line", "circle", "paint",
+      "window", "view" }) do
+    STMT[k] = G.gfx
+  end
+  -- declarations that made their mark in the earlier passes, and DATA (collected at the end)
+  local NOTHING = { data = true, endsub = true, endfunction = true, enddef = true,
+    shared = true, deftype = true }
+
+  local function emit_proc(st)
+    local proc = st.proc
+    local line = proc.line
+    local params = {}
+    for i, p in ipairs(proc.params) do params[i] = p.lua end
+    local head = "goto " .. st.skip_label .. " ::" .. st.def_label .. ":: function " .. proc.lua
+      .. "(" .. table.concat(params, ", ") .. ")"
+    -- locals: numbers, strings, arrays
+    local names, vals = {}, {}
+    if proc.result then
+      names[#names + 1] = proc.result
+      vals[#vals + 1] = proc.ty == "string" and '""' or "0"
+    end
+    local arrays = {}
+    for _, info in ipairs(proc.local_list) do
+      if info.array then
+        arrays[#arrays + 1] = info
+      else
+        names[#names + 1] = info.lua
+        vals[#vals + 1] = info.ty == "string" and '""' or "0"
+      end
+    end
+    local decl = ""
+    if #names > 0 then decl = " local " .. table.concat(names, ", ") .. " = " .. table.concat(vals, ", ") end
+    for _, a in ipairs(arrays) do
+      if a.dimmed then
+        decl = decl .. " local " .. a.lua
+      else
+        -- an array used without DIM: subscripts OPTION BASE..10 in each dimension
+        local dims = {}
+        for i = 1, a.rank or 1 do dims[i] = prog.option_base == 1 and "{1, 10}" or "10" end
+        decl = decl .. " local " .. a.lua .. " = " .. (a.ty == "string" and "dim_str" or "dim")
+          .. "(" .. table.concat(dims, ", ") .. ")"
+      end
+    end
+    local saved_proc, saved_loops = cur_proc, loops
+    cur_proc = proc
+    loops = { { kind = "fn" } }
+    if proc.expr then
+      E(line, head .. decl .. " return " .. convert(proc.expr, proc.ty) .. " end goto "
+        .. st.next_def .. " ::" .. st.skip_label .. "::")
+    else
+      E(line, head .. decl)
+      emit_block(proc.tree)
+      local ret = proc.kind == "sub" and copy_out(proc) or proc.result
+      E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
+        .. " ::" .. st.skip_label .. "::")
+    end
+    cur_proc, loops = saved_proc, saved_loops
+  end
+
+  local function emit_region(r)
+    local line = r.line
+    E(line, "goto " .. r.skip_label .. " ::" .. r.def_label .. ":: " .. r.lua .. " = function()")
+    local saved_loops = loops
+    loops = { { kind = "fn" } }
+    cur_region = r
+    emit_block(r.body)
+    cur_region = nil
+    loops = saved_loops
+    local end_line, tail
+    if r.return_line then
+      end_line = r.return_line
+      tail = "end goto " .. r.next_def .. " ::" .. r.skip_label .. ":: " .. r.lua
+        .. "() return_without_gosub()"
+    else
+      -- runs into the next subroutine
+      end_line = r.falls_into.line
+      tail = "return " .. r.falls_into.lua .. "() end goto " .. r.next_def .. " ::" .. r.skip_label
+        .. ":: " .. r.lua .. "() return_without_gosub()"
+    end
+    E(end_line, tail)
+  end
+
+  STMT.procdef, STMT.region = emit_proc, emit_region
+
+  emit_block = function(list)
+    for _, st in ipairs(list) do
+      local f = STMT[st.k]
+      if f then f(st)
+      elseif not NOTHING[st.k] then error("cannot emit statement " .. st.k) end
+    end
+  end
+
+  -- ---- the program ------------------------------------------------------------------------
+  loops = { { kind = "fn" } }
+  emit_block(prog.main)
+  return M.assemble(prog, chunkname, out, uses_stop)
+end
+
+-- ---- assembling the chunk -------------------------------------------------------------------
+-- DATA items by line, the module's strings and arrays (undeclared strings are "", arrays
+-- dimension themselves 0..10), the prelude on line 1 and `run`'s table on the last line
+function M.assemble(prog, chunkname, out, uses_stop)
+  local lines = prog.lines
+  local info = {}
+  -- DATA, by line
+  if #prog.data > 0 then
+    local by_line, order = {}, {}
+    for _, d in ipairs(prog.data) do
+      if not by_line[d.line] then by_line[d.line] = {}; order[#order + 1] = d.line end
+      local v
+      if not d.quoted then
+        local ok, tok = pcall(lex.line, d.text)
+        local num
+        if ok and #tok == 2 and tok[1].t == "num" then num = tok[1]
+        elseif ok and #tok == 3 and tok[1].t == "op" and (tok[1].v == "-" or tok[1].v == "+")
+            and tok[2].t == "num" then
+          num = { v = tok[1].v == "-" and -tok[2].v or tok[2].v, text = d.text, ty = tok[2].ty }
+        end
+        if d.text == "" then v = '{0, ""}'        -- 0 for READ n, "" for READ s$
+        elseif num and tonumber((d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e"))) then
+          -- (a leading + is no Lua: DATA +5 is 5)
+          v = d.text:gsub("[!#%%&]$", ""):gsub("[dD]", "e"):gsub("^%+%s*", "")
+        elseif num then v = X.exact_text(num.v)
+        else v = X.lua_string(d.text) end
+        -- READ s$ of a number gets its text as written (DATA 007, 1.50): keep the text when
+        -- the number's own text differs
+        if num and num.v - num.v == 0 and rt.data_text(num.v) ~= d.text then
+          v = "{" .. v .. ", " .. X.lua_string(d.text) .. "}"
+        end
+      else
+        v = X.lua_string(d.text)
+      end
+      local t = by_line[d.line]
+      t[#t + 1] = v
+    end
+    local parts = {}
+    for _, l in ipairs(order) do parts[#parts + 1] = "[" .. l .. "] = {" .. table.concat(by_line[l], ", ") .. "}" end
+    info[#info + 1] = "data = {" .. table.concat(parts, ", ") .. "}"
+    local dl = {}
+    local names = {}
+    for name in pairs(prog.data_labels) do names[#names + 1] = name end
+    table.sort(names)
+    local used = {}
+    local function scan_restore(st)
+      if st.k == "restore" and st.label then used[st.label] = true end
+    end
+    walk.stmts(prog.main, scan_restore)
+    for _, proc in ipairs(prog.procs) do
+      if proc.tree then walk.stmts(proc.tree, scan_restore) end
+    end
+    for _, name in ipairs(names) do
+      if used[name] then dl[#dl + 1] = "[" .. X.lua_string(name) .. "] = " .. prog.data_labels[name] end
+    end
+    if #dl > 0 then info[#info + 1] = "data_labels = {" .. table.concat(dl, ", ") .. "}" end
+  end
+  -- module strings and arrays (undeclared strings are "", arrays dimension themselves 0..10)
+  local strs, arrs = {}, {}
+  for _, g in ipairs(prog.global_list) do
+    if g.array then
+      arrs[#arrs + 1] = g.lua .. " = {" .. (g.rank or 1) .. (g.ty == "string" and ', "string"' or "") .. "}"
+    elseif g.ty == "string" then
+      strs[#strs + 1] = X.lua_string(g.lua)
+    end
+  end
+  if #strs > 0 then info[#info + 1] = "strings = {" .. table.concat(strs, ", ") .. "}" end
+  if #arrs > 0 then info[#info + 1] = "arrays = {" .. table.concat(arrs, ", ") .. "}" end
+  if #arrs > 0 and prog.option_base == 1 then info[#info + 1] = "base = 1" end
+  if uses_stop then info[#info + 1] = "stops = true" end
+
+  local prelude = "local _ENV = require(\"qbasic_rt\").new(_ENV, " .. X.lua_string(chunkname)
+    .. ") return run(function()"
+  if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
+  local result = {}
+  for i = 1, #lines do
+    local code = table.concat(out[i], " ")
+    if i == 1 then code = prelude .. (code ~= "" and (" " .. code) or "") end
+    if i == #lines then
+      code = code .. (code ~= "" and " " or "") .. "end, {" .. table.concat(info, ", ") .. "})"
+    end
+    local src = lines[i]
+    local text
+    if src:match("^%s*$") then
+      text = code
+    elseif code == "" then
+      text = "-- " .. src
+    else
+      -- the source's indentation, then the code, then the source line
+      if i > 1 then code = src:match("^[ \t]*") .. code end
+      text = code .. "  -- " .. src
+    end
+    result[i] = text
+  end
+  return table.concat(result, "\n") .. "\n"
+end
+
+return M
