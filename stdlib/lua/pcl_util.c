@@ -9,6 +9,10 @@
 const char *pcl_fname(lua_State *L) {
     lua_Debug ar;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
+    /* called from C, e.g. through the safe mode's wrapper of save: the name the script used
+     * is the caller's */
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
+        return ar.name;
     return "pointcalc";
 }
 
