@@ -618,6 +618,12 @@ def("oneratio.double_contact", "oneratio.double_contact(A, B, C, kp, kq [, f]) -
   "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v).")
 def("oneratio.closed", "oneratio.closed(A, B, C, kP, kQ [, scheme]) -> curve",
   "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles.")
+def("oneratio.simplex_scheme", "oneratio.simplex_scheme(A, B, C, t) -> {N =, M =}",
+  "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1)).")
+def("oneratio.levels", "oneratio.levels(points, t) -> {{P1, ...}, {Q1, ...}, ..., {M}}",
+  "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4)).")
+def("oneratio.desargues_scheme", "oneratio.desargues_scheme(A, B, C, D, t) -> {T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}",
+  "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2.")
 
 def("interp.lagrange", "interp.lagrange(points [, params]) -> curve",
   "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve.")
@@ -633,8 +639,8 @@ def("interp.adaptive", "interp.adaptive(points [, axis]) -> params",
   "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default).")
 def("interp.prototype", "interp.prototype(\"desargues\"|\"rational\"|\"exp\"|\"exp1\"|\"trig\", points [, k] [, t0, t1]) -> curve",
   "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40).")
-def("interp.basis", "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve",
-  "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params.")
+def("interp.basis", "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve, affine, deviation",
+  "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params; affine: the weights sum to 1 (membership condition) over [t0, t1], deviation the largest |sum - 1|.")
 def("interp.rational22", "interp.rational22({M1, ..., M5}) -> curve, coef",
   "(4.38) Per coordinate (a1 t^2 + a2 t + a3)/(a4 t^2 + a5 t + 1) through 5 points at t = j/4.")
 

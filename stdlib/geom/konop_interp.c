@@ -188,6 +188,23 @@ pc_curve *pc_interp_basis(int dim, int n, const double *pts, const double *param
     return cv;
 }
 
+int pc_interp_basis_membership(int n, const double *params, pc_basis_fn g, void *ud, double t0,
+                               double t1, int samples, double *dev) {
+    if (n < 1 || n > 16 || samples < 2 || !(t1 > t0)) return PC_EDOMAIN;
+    double ginv[MAXN * MAXN], phi[MAXN], worst = 0;
+    int st = collocation_inverse(g, ud, n, params, ginv);
+    for (int i = 0; !st && i < samples + n; i++) {
+        double t = i < samples ? t0 + (t1 - t0) * i / (samples - 1) : params[i - samples];
+        st = basis_phi(g, ud, ginv, n, t, phi);
+        double sum = 0;
+        for (int j = 0; !st && j < n; j++) sum += phi[j];
+        if (!st) worst = fmax(worst, fabs(sum - 1));
+    }
+    if (st) return st;
+    *dev = worst;
+    return PC_OK;
+}
+
 /* ---- the book's prototypes ---------------------------------------------------------------------- */
 
 typedef struct { pc_proto_kind kind; double k[3]; } proto;

@@ -36,6 +36,14 @@ pc_curve *pc_interp_basis(int dim, int n, const double *pts, const double *param
                           pc_basis_fn g, void (*fn_free)(void *ud), void *ud, double t0,
                           double t1, int *status);
 
+/* The membership condition of that engine's curve (ch. 1: the weights of a point equation sum
+ * to 1, so the curve does not depend on the origin): *dev gets the largest |sum_j phi_j(t) - 1|
+ * over the params and `samples` >= 2 uniform t in [t0, t1].  The Bezier, Desargues (4.35),
+ * fractional-rational (4.37) and trigonometric (4.40) prototypes give round-off; the
+ * exponential (4.39) does not (its weights are cardinal but do not sum to 1). */
+int pc_interp_basis_membership(int n, const double *params, pc_basis_fn g, void *ud, double t0,
+                               double t1, int samples, double *dev);
+
 typedef enum {
     PC_PROTO_DESARGUES,   /* (3.6) -> (4.35), 4 nodes at 0, 1/3, 2/3, 1 */
     PC_PROTO_RATIONAL,    /* (4.36) (A t^3 + B t^2 + C t + D)/(t^3 + t^2 + t + 1) -> (4.37) */

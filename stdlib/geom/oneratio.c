@@ -160,3 +160,70 @@ pc_curve *pc_oneratio_closed(int dim, const double *a, const double *b, const do
     if (scheme != 1 && scheme != 2) return fail(status, PC_EDOMAIN);
     return new_blend(scheme, dim, a, b, c, kp, kq, NULL, NULL, NULL, status);
 }
+
+/* ---- the schemes' intermediate points ------------------------------------------------------ */
+
+static int finite_arg(int dim, const double *p) {
+    for (int k = 0; k < dim; k++)
+        if (!isfinite(p[k])) return 0;
+    return 1;
+}
+
+int pc_oneratio_simplex_scheme(int dim, const double *a, const double *b, const double *c,
+                               double t, double *n, double *m) {
+    if (dim < 1 || dim > PC_MAXDIM) return PC_EDIM;
+    if (!isfinite(t) || !finite_arg(dim, a) || !finite_arg(dim, b) || !finite_arg(dim, c))
+        return PC_ENONFINITE;
+    for (int k = 0; k < dim; k++) {
+        n[k] = a[k] * (1 - t) + c[k] * t;          /* AN/AC = t */
+        m[k] = n[k] * (1 - t) + b[k] * t;          /* NM/NB = t */
+    }
+    return PC_OK;
+}
+
+int pc_decasteljau_levels(int dim, int n, const double *pts, double t, double *out) {
+    if (dim < 1 || dim > PC_MAXDIM) return PC_EDIM;
+    if (n < 2 || n > 16) return PC_EDOMAIN;
+    if (!isfinite(t) || !finite_arg(dim * n, pts)) return PC_ENONFINITE;
+    const double *prev = pts;
+    double *row = out;
+    for (int level = 1; level < n; level++) {     /* each link divided in the one ratio t */
+        int m = n - level;
+        for (int i = 0; i < m; i++)
+            for (int k = 0; k < dim; k++)
+                row[i * dim + k] = prev[i * dim + k] + t * (prev[(i + 1) * dim + k] - prev[i * dim + k]);
+        prev = row;
+        row += m * dim;
+    }
+    return PC_OK;
+}
+
+/* h = x X + y Y + z Z + w W (homogeneous: weight x + y + z + w) */
+static void hcomb(int dim, double *h, double x, const double *X, double y, const double *Y,
+                  double z, const double *Z, double w, const double *W) {
+    for (int k = 0; k < dim; k++)
+        h[k] = x * X[k] + y * Y[k] + (Z ? z * Z[k] : 0) + (W ? w * W[k] : 0);
+    h[dim] = x + y + (Z ? z : 0) + (W ? w : 0);
+}
+
+int pc_desargues_scheme(int dim, const double *a, const double *b, const double *c,
+                        const double *d, double t, double *h, double pq[2]) {
+    if (dim < 1 || dim > PC_MAXDIM) return PC_EDIM;
+    if (!isfinite(t) || !finite_arg(dim, a) || !finite_arg(dim, b) || !finite_arg(dim, c) ||
+        !finite_arg(dim, d))
+        return PC_ENONFINITE;
+    double tb = 1 - t;
+    int s = dim + 1;
+    /* ABT = -t^2/t'^2 (O-theorem on ACB cut by PQT): T = (A t'^2 - B t^2)/(1 - 2t), the weight
+     * t'^2 - t^2 = 1 - 2t kept homogeneous so that t = 1/2 gives the point at infinity */
+    hcomb(dim, h, tb * tb, a, -t * t, b, 0, NULL, 0, NULL);
+    hcomb(dim, h + s, tb * tb, c, -t * t, d, 0, NULL, 0, NULL);                  /* S */
+    hcomb(dim, h + 2 * s, tb * tb * tb, a, -t * t * tb, b, tb * tb * t, c, -t * t * t, d); /* R */
+    hcomb(dim, h + 3 * s, tb * tb, a, 2 * tb * t, c, t * t, b, 0, NULL);         /* N */
+    hcomb(dim, h + 4 * s, tb * tb, c, 2 * tb * t, b, t * t, d, 0, NULL);         /* J */
+    hcomb(dim, h + 5 * s, tb, c, t, b, 0, NULL, 0, NULL);                        /* Q */
+    /* M = SN x TJ, which is (3.6): weights t'^3, t^2 t', t'^2 t, t^3 summing to 2t^2 - 2t + 1 */
+    hcomb(dim, h + 6 * s, tb * tb * tb, a, t * t * tb, b, tb * tb * t, c, t * t * t, d);
+    if (pq) pq[0] = 2 * t - 1, pq[1] = t != 0 ? tb / t : INFINITY;
+    return PC_OK;
+}

@@ -42,4 +42,24 @@ pc_curve *pc_oneratio_double_contact(int dim, const double *a, const double *b,
 pc_curve *pc_oneratio_closed(int dim, const double *a, const double *b, const double *c,
                              double kp, double kq, int scheme, int *status);
 
+/* ---- the schemes' intermediate points, for figures that draw and label them ---------------- */
+
+/* §3.1 (Fig. 3.1) The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB. */
+int pc_oneratio_simplex_scheme(int dim, const double *a, const double *b, const double *c,
+                               double t, double *n, double *m);
+/* §3.3 (Fig. 3.4) The de Casteljau scheme of the Bezier curve on n >= 2 control points (rows of
+ * dim) at the one ratio t: the levels 1..n-1, row after row (n - 1 points, n - 2, ..., M last),
+ * n(n - 1)/2 rows into out.  For A, C1, C2, B they are P1, P2, P3, Q1, Q2, M (the print's
+ * P3 = (C2 - B)t + C2 has the wrong sign; digest konopatsky_ch3_5.md §1.3).  n <= 16. */
+int pc_decasteljau_levels(int dim, int n, const double *pts, double t, double *out);
+/* §3.7 (Fig. 3.12) The Desargues arc's scheme at t, as homogeneous points (dim weighted
+ * coordinates, then the weight) in the order T, S, R, N, J, Q, M:
+ *   T = (A t'^2 - B t^2)/(1 - 2t) (Menelaus in ACB), S = (C t'^2 - D t^2)/(1 - 2t) (in CBD),
+ *   R = T t' + S t, N = A t'^2 + 2C t' t + B t^2, J = C t'^2 + 2B t' t + D t^2,
+ *   Q = (B - C)t + C, M = SN x TJ = (3.6);
+ * T, S and R have weight 1 - 2t: points at infinity at t = 1/2.  pq (may be NULL) gets the
+ * parameters of J in the simplex S N T: p_J = 2t - 1, q_J = t'/t (infinite at t = 0). */
+int pc_desargues_scheme(int dim, const double *a, const double *b, const double *c,
+                        const double *d, double t, double *h, double pq[2]);
+
 #endif

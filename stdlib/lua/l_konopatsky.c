@@ -722,6 +722,76 @@ static int o_closed(lua_State *L) {
     return push(L, pc_oneratio_closed(d, A, B, C, kp, kq, (int)s, &st), st, fn);
 }
 
+/* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
+
+/* a homogeneous row: the point, or the direction (a vector) where its weight is 0 */
+static void push_h(lua_State *L, int dim, const double *h) {
+    double x[PC_MAXDIM];
+    int inf = fabs(h[dim]) <= 1e-12;
+    for (int k = 0; k < dim; k++) x[k] = inf ? h[k] : h[k] / h[dim];
+    if (inf) pcl_pushvector(L, dim, x);
+    else pcl_pushpoint(L, dim, x);
+}
+
+static int o_simplex_scheme(lua_State *L) {
+    const char *fn = "oneratio.simplex_scheme";
+    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], N[PC_MAXDIM], M[PC_MAXDIM];
+    int d = pt(L, fn, 1, "A", 0, 0, A);
+    pt(L, fn, 2, "B", d, 1, B);
+    pt(L, fn, 3, "C", d, 1, C);
+    double t = pcl_checknum(L, fn, 4, "t");
+    statuscheck(L, fn, pc_oneratio_simplex_scheme(d, A, B, C, t, N, M));
+    lua_createtable(L, 0, 2);
+    pcl_pushpoint(L, d, N);
+    lua_setfield(L, -2, "N");
+    pcl_pushpoint(L, d, M);
+    lua_setfield(L, -2, "M");
+    return 1;
+}
+
+static int o_levels(lua_State *L) {
+    const char *fn = "oneratio.levels";
+    lua_settop(L, 2);
+    int n, d;
+    double *p = ptlist(L, fn, 1, "points", 2, 16, &n, &d);
+    double t = pcl_checknum(L, fn, 2, "t"), out[120 * PC_MAXDIM];
+    statuscheck(L, fn, pc_decasteljau_levels(d, n, p, t, out));
+    lua_createtable(L, n - 1, 0);
+    const double *row = out;
+    for (int level = 1; level < n; level++) {
+        lua_createtable(L, n - level, 0);
+        for (int i = 0; i < n - level; i++) {
+            pcl_pushpoint(L, d, row + i * d);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_rawseti(L, -2, level);
+        row += (n - level) * d;
+    }
+    return 1;
+}
+
+static int o_desargues_scheme(lua_State *L) {
+    const char *fn = "oneratio.desargues_scheme";
+    static const char *names[7] = {"T", "S", "R", "N", "J", "Q", "M"};
+    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], D[PC_MAXDIM], h[7 * (PC_MAXDIM + 1)], pq[2];
+    int d = pt(L, fn, 1, "A", 0, 0, A);
+    pt(L, fn, 2, "B", d, 1, B);
+    pt(L, fn, 3, "C", d, 1, C);
+    pt(L, fn, 4, "D", d, 1, D);
+    double t = pcl_checknum(L, fn, 5, "t");
+    statuscheck(L, fn, pc_desargues_scheme(d, A, B, C, D, t, h, pq));
+    lua_createtable(L, 0, 9);
+    for (int i = 0; i < 7; i++) {
+        push_h(L, d, h + i * (d + 1));
+        lua_setfield(L, -2, names[i]);
+    }
+    lua_pushnumber(L, pq[0]);
+    lua_setfield(L, -2, "pJ");
+    lua_pushnumber(L, pq[1]);
+    lua_setfield(L, -2, "qJ");
+    return 1;
+}
+
 /* ==== interp ================================================================================ */
 
 static int i_lagrange(lua_State *L) {
@@ -927,7 +997,14 @@ static int i_basis(lua_State *L) {
         basisref_free(r);
         if (st == PC_ESINGULAR) pcl_error(L, "%s: the collocation matrix g_i(t_j) is singular", fn);
     }
-    return push(L, c, st, fn);
+    push(L, c, st, fn);
+    /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
+    double dev;
+    st = pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev);
+    if (st) pcl_raise_status(L, fn, st);
+    lua_pushboolean(L, dev <= 1e-9);
+    lua_pushnumber(L, dev);
+    return 3;
 }
 
 static int i_rational22(lua_State *L) {
@@ -1121,7 +1198,8 @@ static const luaL_Reg conic_fns[] = {
 static const luaL_Reg oneratio_fns[] = {
     {"simplex", o_simplex}, {"tetra", o_tetra}, {"bezier3", o_bezier3}, {"smooth", o_smooth},
     {"desargues", o_desargues}, {"double_contact", o_double_contact}, {"closed", o_closed},
-    {NULL, NULL}};
+    {"simplex_scheme", o_simplex_scheme}, {"levels", o_levels},
+    {"desargues_scheme", o_desargues_scheme}, {NULL, NULL}};
 static const luaL_Reg interp_fns[] = {
     {"lagrange", i_lagrange}, {"weights", i_weights}, {"controls", i_controls},
     {"conic", i_conic}, {"arc", i_arc}, {"adaptive", i_adaptive}, {"prototype", i_prototype},

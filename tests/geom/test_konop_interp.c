@@ -214,11 +214,47 @@ static void test_rational22(void **state) {
     pc_curve_release(c);
 }
 
+static int exp_g(void *ud, double t, int n, double *g) {       /* (4.39), k = (0.5, -1, 2) */
+    (void)ud, (void)n;
+    g[0] = exp(0.5 * t), g[1] = exp(-t), g[2] = exp(2 * t);
+    return PC_OK;
+}
+static int trig_g(void *ud, double t, int n, double *g) {      /* (4.40) */
+    (void)ud, (void)n;
+    g[0] = cos(t), g[1] = 1 - cos(t) - sin(t), g[2] = sin(t);
+    return PC_OK;
+}
+static int bern_g(void *ud, double t, int n, double *g) {      /* (4.6) the quadratic Bezier */
+    (void)ud, (void)n;
+    g[0] = (1 - t) * (1 - t), g[1] = 2 * t * (1 - t), g[2] = t * t;
+    return PC_OK;
+}
+
+static void test_membership(void **state) {
+    (void)state;
+    const double half[3] = {0, 0.5, 1}, trig[3] = {0, M_PI / 2, M_PI};
+    double dev;
+    assert_int_equal(pc_interp_basis_membership(3, half, bern_g, NULL, 0, 1, 33, &dev), PC_OK);
+    assert_true(dev < 1e-14);
+    assert_int_equal(pc_interp_basis_membership(3, trig, trig_g, NULL, 0, 2 * M_PI, 33, &dev), PC_OK);
+    assert_true(dev < 1e-14);
+    /* the exponential prototype: cardinal at 0, 1/2, 1 but its weights do not sum to 1 */
+    assert_int_equal(pc_interp_basis_membership(3, half, exp_g, NULL, 0, 1, 33, &dev), PC_OK);
+    assert_true(dev > 8e-3 && dev < 9e-3);                    /* 0.00848 (ours) */
+    double w[3];
+    assert_int_equal(pc_interp_prototype_weights(PC_PROTO_EXP, 3, (double[]){0.5, -1, 2}, 0.25, w), PC_OK);
+    assert_true(fabs(w[0] + w[1] + w[2] - 1) > 1e-3);
+    const double same[3] = {0, 0.5, 0.5};
+    assert_int_equal(pc_interp_basis_membership(3, same, bern_g, NULL, 0, 1, 33, &dev), PC_ESINGULAR);
+    assert_int_equal(pc_interp_basis_membership(3, half, bern_g, NULL, 0, 1, 1, &dev), PC_EDOMAIN);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_weights),    cmocka_unit_test(test_controls),
         cmocka_unit_test(test_arc),        cmocka_unit_test(test_adaptive),
         cmocka_unit_test(test_prototypes), cmocka_unit_test(test_rational22),
+        cmocka_unit_test(test_membership),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

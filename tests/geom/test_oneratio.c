@@ -196,11 +196,83 @@ static void test_closed(void **state) {
     assert_null(pc_oneratio_closed(3, A, B, C, 0.8, 0.5, 3, &st));
 }
 
+/* homogeneous row h (dim 3 + weight) to a point */
+static void hnorm(const double *h, double *x) {
+    for (int k = 0; k < 3; k++) x[k] = h[k] / h[3];
+}
+
+/* |(q - p) x (r - p)|: zero when p, q, r are collinear */
+static double collinear3(const double *p, const double *q, const double *r) {
+    double u[3], v[3];
+    for (int k = 0; k < 3; k++) u[k] = q[k] - p[k], v[k] = r[k] - p[k];
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    return sqrt(x * x + y * y + z * z);
+}
+
+static void test_schemes(void **state) {
+    (void)state;
+    /* Fig. 3.1: N on AC, M on NB with one ratio; M is the curve (3.1) */
+    double n[3], m[3], want[3];
+    int st;
+    assert_int_equal(pc_oneratio_simplex_scheme(3, A, B, C, 0.3, n, m), PC_OK);
+    NEAR(n[0], 0.3, 1e-15), NEAR(n[1], 0.9, 1e-15);
+    NEAR(m[0], 1.41, 1e-12), NEAR(m[1], 0.63, 1e-12);    /* digest §1.1 TV */
+    pc_curve *c = pc_oneratio_simplex(3, A, B, C, &st);
+    pc_curve_eval(c, 0.3, want);
+    for (int k = 0; k < 3; k++) NEAR(m[k], want[k], 1e-12);
+    pc_curve_release(c);
+
+    /* Fig. 3.4: the levels of (3.4) at t = 0.4; the last is the Bezier point */
+    const double pts[12] = {0, 0, 0, 2, 5, 0, 8, 5, 0, 10, 0, 0}, t = 0.4;
+    double lv[18];
+    assert_int_equal(pc_decasteljau_levels(3, 4, pts, t, lv), PC_OK);
+    NEAR(lv[0], 0.8, 1e-15), NEAR(lv[1], 2, 1e-15);          /* P1 = (C1 - A)t + A */
+    NEAR(lv[6], 8.8, 1e-14), NEAR(lv[7], 3, 1e-14);          /* P3 = (B - C2)t + C2 */
+    double printed_p3[3];                                      /* the print: (C2 - B)t + C2 */
+    for (int k = 0; k < 3; k++) printed_p3[k] = (pts[6 + k] - pts[9 + k]) * t + pts[6 + k];
+    assert_true(collinear3(pts + 6, pts + 9, lv + 6) < 1e-12);
+    assert_true(printed_p3[0] < pts[6]);                       /* beyond C2, away from B */
+    double tb = 1 - t, bern[3];
+    for (int k = 0; k < 3; k++)
+        bern[k] = pts[k] * tb * tb * tb + 3 * pts[3 + k] * tb * tb * t + 3 * pts[6 + k] * tb * t * t +
+                  pts[9 + k] * t * t * t;                      /* (3.4), corrected powers */
+    for (int k = 0; k < 3; k++) NEAR(lv[15 + k], bern[k], 1e-12);
+    for (int k = 0; k < 3; k++) NEAR(lv[9 + k], lv[k] + t * (lv[3 + k] - lv[k]), 1e-14);  /* Q1 */
+    assert_int_equal(pc_decasteljau_levels(3, 1, pts, t, lv), PC_EDOMAIN);
+    assert_int_equal(pc_decasteljau_levels(3, 4, pts, NAN, lv), PC_ENONFINITE);
+
+    /* Fig. 3.12: T, S, R, N, J, Q, M of the Desargues arc at t = 0.3 */
+    double h[28], pq[2], T[3], S[3], R[3], N[3], J[3], Q[3], M[3], Pp[3], K[3];
+    assert_int_equal(pc_desargues_scheme(3, A, B, C, D, 0.3, h, pq), PC_OK);
+    hnorm(h, T), hnorm(h + 4, S), hnorm(h + 8, R), hnorm(h + 12, N), hnorm(h + 16, J);
+    hnorm(h + 20, Q), hnorm(h + 24, M);
+    NEAR(M[0], 0.874137931, 1e-9), NEAR(M[1], 0.9, 1e-12), NEAR(M[2], 0.09310344828, 1e-10);
+    for (int k = 0; k < 3; k++) {
+        Pp[k] = (C[k] - A[k]) * 0.3 + A[k];                    /* AP/AC = t */
+        K[k] = (D[k] - B[k]) * 0.3 + B[k];                     /* BK/BD = t */
+    }
+    assert_true(collinear3(A, B, T) < 1e-12);                 /* T on AB and on PQ */
+    assert_true(collinear3(Pp, Q, T) < 1e-12);
+    assert_true(collinear3(C, D, S) < 1e-12);                 /* S on CD and on QK */
+    assert_true(collinear3(Q, K, S) < 1e-12);
+    assert_true(collinear3(S, N, M) < 1e-12);                 /* M = SN x TJ */
+    assert_true(collinear3(T, J, M) < 1e-12);
+    for (int k = 0; k < 3; k++) {
+        NEAR(R[k], T[k] + 0.3 * (S[k] - T[k]), 1e-12);         /* TR/TS = t */
+        NEAR(J[k], (S[k] - T[k]) * pq[0] + (N[k] - T[k]) * pq[1] + T[k], 1e-12);
+    }
+    NEAR(pq[0], -0.4, 1e-15), NEAR(pq[1], 0.7 / 0.3, 1e-15);
+    assert_int_equal(pc_desargues_scheme(3, A, B, C, D, 0.5, h, NULL), PC_OK);
+    NEAR(h[3], 0, 1e-15), NEAR(h[7], 0, 1e-15), NEAR(h[11], 0, 1e-15);   /* T, S, R at infinity */
+    hnorm(h + 24, M);                                          /* M(1/2): the centroid */
+    for (int k = 0; k < 3; k++) NEAR(M[k], (A[k] + B[k] + C[k] + D[k]) / 4, 1e-15);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_simplex_tetra), cmocka_unit_test(test_smooth),
         cmocka_unit_test(test_desargues),     cmocka_unit_test(test_double_contact),
-        cmocka_unit_test(test_closed),
+        cmocka_unit_test(test_closed),       cmocka_unit_test(test_schemes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
