@@ -152,7 +152,7 @@ check.eq(point(1, 1), 0, "screen clears")
 check.err(function() screen { width = 0, height = 5 } end, "screen: argument #1 (width) must be an integer 1..16384", "screen width")
 check.err(function() screen { width = 2 ^ 32 + 640, height = 480 } end, "screen: argument #1 (width) must be an integer 1..16384", "width beyond int")
 check.err(function() screen { width = 10, height = (1 << 32) + 48 } end, "screen: argument #1 (height) must be an integer 1..16384", "height beyond int")
-check.err(function() screen { width = 10, height = 10, colors = (1 << 32) + 16 } end, "screen: argument #1 (colors) must be 16 or 256", "colours beyond int")
+check.err(function() screen { width = 10, height = 10, colors = (1 << 32) + 16 } end, "screen: argument #1 (colors) must be 2, 4, 16 or 256", "colours beyond int")
 check.eq(select(1, size()), 100, "a refused screen leaves the canvas as it was")
 
 check.done()
