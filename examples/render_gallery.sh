@@ -68,7 +68,9 @@ citation() {  # citation GROUP SCRIPT
         sec = grab("(§ ?|ch\\. )[0-9]+(\\.[0-9]+)*")
         if (sec != "") text = text ", " sec
         ex = grab("[Ee]xample [0-9]+(\\.[0-9]+)*"); exat = RSTART
-        fig = grab("(Figs?\\.?|Figure) [0-9]+[a-z]?(\\.[0-9]+[a-z]?)*(, [0-9]+[a-z]?(\\.[0-9]+[a-z]?)*)*")
+        num = "[0-9]+[a-z]?(\\.[0-9]+[a-z]?)*"   # 2.12, 3a; ranges 5.1-5.3 and lists 1, 4a
+        num = num "((-|–)" num ")?"
+        fig = grab("(Figs?\\.?|Figure) " num "(, " num ")*")
         figat = RSTART
         if (fig != "") { plural = fig ~ /^Figs/; sub(/^[A-Za-z]+\.? /, "", fig); fig = (plural ? "Figs. " : "Fig. ") fig }
         if (ex != "") ex = "example " substr(ex, 9)

@@ -49,6 +49,8 @@ expect_eq "$(grep -c 'href="#src-stepanov-[2-7]"' site/gallery/index.html)" "$ns
     "each Stepanov figure cites its section"
 expect_in site/gallery/index.html '>Stepanov 2013, §2, example 2</a>' "example 2's citation"
 expect_in site/gallery/index.html '<li id="src-stepanov-2">' "the section the citations link"
+expect_in site/gallery/index.html '"#src-buimov">Buimov 2012, §2.8.4, Fig. 2.12</a>' \
+    "a textbook citation from a script's header"
 
 # the screenshot for the README: a PNG of the requested size
 browse "file://$WORK/site/gallery/index.html" --hide-scrollbars --window-size=1280,1000 \
