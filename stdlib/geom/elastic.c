@@ -44,35 +44,40 @@ static double piece_energy(const double *P0, const double *P1, const double *d0,
             r1[i] = dh[0] * P0[i] + dh[1] * P1[i] + dh[2] * d0[i] + dh[3] * d1[i];
             r2[i] = ddh[0] * P0[i] + ddh[1] * P1[i] + ddh[2] * d0[i] + ddh[3] * d1[i];
         }
-        double c = cross2(r1, r2), s = hypot(r1[0], r1[1]);
-        if (!(s > 0)) return INFINITY;
-        e += w * c * c / pow(s, 5);
+        double c = cross2(r1, r2), s2 = r1[0] * r1[0] + r1[1] * r1[1];
+        if (!(s2 > 0)) return INFINITY;
+        e += w * c * c / (s2 * s2 * sqrt(s2));
     }
     return e;
 }
 
 #define EL_MAXNODES (4 * (PC_ELASTIC_MAXN - 1) + 1)
 
-/* A free node inside a span moves along the normal of the starting spline at its start
- * position: sliding along the curve would barely change the energy, a flat valley that
- * slows the minimisation down a hundredfold without changing the shape. */
+/* The model is a C2 cubic spline through the pins and the free interior nodes (K per span),
+ * in a parameter of its own: the unknowns are the parameter steps h_j (logarithms; the first
+ * is fixed, a common scale does not change the curve), the free nodes' offsets along the
+ * normal of the starting spline (sliding along the curve would barely change the energy, a
+ * flat valley that slows the minimisation down), and with clamped ends the two end speeds.
+ * Natural ends (r'' = 0) give kappa = 0 at free ends, as a ruler with unloaded ends has.
+ * A spline's derivatives follow from the nodes and steps by one tridiagonal solve, so the
+ * model is curvature-continuous by construction: the real ruler is, because a frictionless
+ * pin applies a force, not a moment, and the bending moment EI kappa passes it unchanged. */
 typedef struct {
     int n, K, nodes, clamped;
     const double *p;
-    double ends[2];
+    double ends[4];            /* clamped: the unit end directions */
     double base[2 * EL_MAXNODES], normal[2 * EL_MAXNODES];
 } elastic_ctx;
 
-/* Unpack the unknowns: node positions xy (nodes rows of 2), angles th (nodes), moduli m
- * (2 per piece).  Layout: angles of the free nodes (all, or all but the two ends when
- * clamped), then the free interior nodes' offsets along their normals, then the log
- * moduli. */
-static void unpack(const elastic_ctx *e, const double *v, double *xy, double *th, double *m) {
+static int nunknowns(const elastic_ctx *e) {
+    return (e->nodes - 2) + (e->nodes - e->n) + (e->clamped ? 2 : 0);
+}
+
+/* Nodes xy (rows of 2) and steps h from the unknowns; end speeds into sp (clamped). */
+static void unpack(const elastic_ctx *e, const double *v, double *xy, double *h, double *sp) {
     int N = e->nodes, k = 0;
-    for (int j = 0; j < N; j++) {
-        if (e->clamped && (j == 0 || j == N - 1)) th[j] = e->ends[j ? 1 : 0];
-        else th[j] = v[k++];
-    }
+    h[0] = 1;
+    for (int j = 1; j < N - 1; j++) h[j] = exp(v[k++]);
     for (int j = 0; j < N; j++) {
         if (j % e->K == 0) {
             xy[2 * j] = e->p[2 * (j / e->K)];
@@ -83,22 +88,75 @@ static void unpack(const elastic_ctx *e, const double *v, double *xy, double *th
             xy[2 * j + 1] = e->base[2 * j + 1] + o * e->normal[2 * j + 1];
         }
     }
-    for (int j = 0; j < 2 * (N - 1); j++) m[j] = exp(v[k++]);
+    if (e->clamped) {
+        sp[0] = exp(v[k++]);
+        sp[1] = exp(v[k++]);
+    }
 }
 
-static int nunknowns(const elastic_ctx *e) {
-    int N = e->nodes;
-    return (e->clamped ? N - 2 : N) + (N - 1 - (e->n - 1)) + 2 * (N - 1);
+/* The derivatives D (rows of 2, per unit of the spline's parameter) of the C2 cubic spline
+ * through xy with steps h: h_j D_(j-1) + 2 (h_(j-1) + h_j) D_j + h_(j-1) D_(j+1)
+ * = 3 (h_j dX_(j-1) / h_(j-1) + h_(j-1) dX_j / h_j), natural ends 2 D_0 + D_1 = 3 dX_0 / h_0,
+ * or the end derivatives given (Thomas algorithm: the matrix is diagonally dominant). */
+static void spline_derivs(int N, const double *xy, const double *h, const double *d0,
+                          const double *d1, double *D) {
+    double cprime[EL_MAXNODES];
+    for (int j = 0; j < N; j++) {
+        double a = 0, b, c = 0, r[2];
+        if (j == 0) {
+            if (d0) { b = 1; r[0] = d0[0]; r[1] = d0[1]; }
+            else {
+                b = 2; c = 1;
+                for (int k = 0; k < 2; k++) r[k] = 3 * (xy[2 + k] - xy[k]) / h[0];
+            }
+        } else if (j == N - 1) {
+            if (d1) { b = 1; r[0] = d1[0]; r[1] = d1[1]; }
+            else {
+                a = 1; b = 2;
+                for (int k = 0; k < 2; k++) r[k] = 3 * (xy[2 * j + k] - xy[2 * j - 2 + k]) / h[j - 1];
+            }
+        } else {
+            a = h[j]; b = 2 * (h[j - 1] + h[j]); c = h[j - 1];
+            for (int k = 0; k < 2; k++)
+                r[k] = 3 * (h[j] * (xy[2 * j + k] - xy[2 * j - 2 + k]) / h[j - 1] +
+                            h[j - 1] * (xy[2 * j + 2 + k] - xy[2 * j + k]) / h[j]);
+        }
+        if (j > 0) {   /* forward elimination */
+            double m = b - a * cprime[j - 1];
+            b = m;
+            r[0] -= a * D[2 * j - 2];
+            r[1] -= a * D[2 * j - 1];
+        }
+        cprime[j] = c / b;
+        D[2 * j] = r[0] / b;
+        D[2 * j + 1] = r[1] / b;
+    }
+    for (int j = N - 2; j >= 0; j--) {
+        D[2 * j] -= cprime[j] * D[2 * j + 2];
+        D[2 * j + 1] -= cprime[j] * D[2 * j + 3];
+    }
+}
+
+/* The model's nodes and derivatives (per unit of its parameter) for the unknowns v. */
+static void model(const elastic_ctx *e, const double *v, double *xy, double *h, double *D) {
+    double sp[2], d0[2], d1[2];
+    unpack(e, v, xy, h, sp);
+    if (e->clamped) {
+        d0[0] = sp[0] * e->ends[0]; d0[1] = sp[0] * e->ends[1];
+        d1[0] = sp[1] * e->ends[2]; d1[1] = sp[1] * e->ends[3];
+    }
+    spline_derivs(e->nodes, xy, h, e->clamped ? d0 : NULL, e->clamped ? d1 : NULL, D);
 }
 
 static double energy_of(void *ud, const double *v) {
     const elastic_ctx *e = ud;
-    double xy[2 * EL_MAXNODES], th[EL_MAXNODES], m[2 * EL_MAXNODES];
-    unpack(e, v, xy, th, m);
+    double xy[2 * EL_MAXNODES], h[EL_MAXNODES], D[2 * EL_MAXNODES];
+    model(e, v, xy, h, D);
     double E = 0;
     for (int j = 0; j + 1 < e->nodes; j++) {
-        double d0[2] = {m[2 * j] * cos(th[j]), m[2 * j] * sin(th[j])};
-        double d1[2] = {m[2 * j + 1] * cos(th[j + 1]), m[2 * j + 1] * sin(th[j + 1])};
+        /* piece j over t in [0, 1]: d/dt = h_j d/du */
+        double d0[2] = {h[j] * D[2 * j], h[j] * D[2 * j + 1]};
+        double d1[2] = {h[j] * D[2 * j + 2], h[j] * D[2 * j + 3]};
         E += piece_energy(xy + 2 * j, xy + 2 * j + 2, d0, d1);
     }
     return E;
@@ -106,10 +164,13 @@ static double energy_of(void *ud, const double *v) {
 
 pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angles,
                      double *energy, int *status) {
-    if (n < 2 || n > PC_ELASTIC_MAXN || pieces < 1 || pieces > 4) {
+    if (n < 2 || n > PC_ELASTIC_MAXN || pieces < 0 || pieces > 4) {
         *status = PC_EDIM;
         return NULL;
     }
+    if (pieces == 0)   /* the most pieces (up to 4) whose unknowns the minimiser takes */
+        for (pieces = 4; pieces > 1; pieces--)
+            if (2 * (n - 1) * pieces - n + (end_angles ? 2 : 0) <= PC_NEWTON_MAXN) break;
     for (int i = 0; i < 2 * n; i++)
         if (!isfinite(p[i])) {
             *status = PC_ENONFINITE;
@@ -132,73 +193,82 @@ pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angle
     e.clamped = end_angles != NULL;
     e.p = p;
     if (end_angles) {
-        e.ends[0] = end_angles[0];
-        e.ends[1] = end_angles[1];
+        e.ends[0] = cos(end_angles[0]); e.ends[1] = sin(end_angles[0]);
+        e.ends[2] = cos(end_angles[1]); e.ends[3] = sin(end_angles[1]);
     }
-    int nv = nunknowns(&e);
+    int nv = nunknowns(&e), N = e.nodes, k = 0;
     if (nv > PC_NEWTON_MAXN) {
         *status = PC_EDIM;
         return NULL;
     }
-    /* start: the natural (or clamped) chord-length cubic spline */
-    double d0[2], d1[2];
-    if (end_angles) {
-        d0[0] = cos(end_angles[0]); d0[1] = sin(end_angles[0]);
-        d1[0] = cos(end_angles[1]); d1[1] = sin(end_angles[1]);
-    }
-    pc_curve *s = pc_curve_cubic_spline(2, n, p, NULL, end_angles ? PC_END_CLAMPED : PC_END_NATURAL,
-                                        d0, d1, status);
-    if (!s) return NULL;
-    double v[PC_NEWTON_MAXN];
-    int N = e.nodes, k = 0;
-    double nodeu[EL_MAXNODES], dd[3 * 2];
-    for (int j = 0; j < N; j++) {
-        int span = j / pieces, sub = j % pieces;
-        double ua = s->knots[span < n - 1 ? span : n - 2], ub = s->knots[span < n - 1 ? span + 1 : n - 1];
-        nodeu[j] = span < n - 1 ? ua + (ub - ua) * sub / pieces : s->knots[n - 1];
-    }
-    for (int j = 0; j < N; j++) {
-        pc_curve_derivs(s, nodeu[j], 1, dd);
-        if (!(e.clamped && (j == 0 || j == N - 1))) v[k++] = atan2(dd[3], dd[2]);
-    }
-    for (int j = 0; j < N; j++)
-        if (j % pieces) {
-            pc_curve_derivs(s, nodeu[j], 1, dd);
-            double l = hypot(dd[2], dd[3]);
-            e.base[2 * j] = dd[0];
-            e.base[2 * j + 1] = dd[1];
-            e.normal[2 * j] = l > 0 ? -dd[3] / l : 0;
-            e.normal[2 * j + 1] = l > 0 ? dd[2] / l : 0;
-            v[k++] = 0;
+    double v[PC_NEWTON_MAXN] = {0}, E = 0;
+    if (nv > 0) {
+        /* start: the chord-length natural (or clamped) cubic spline, its nodes at equal
+         * parameter steps inside each span */
+        pc_curve *s = pc_curve_cubic_spline(2, n, p, NULL, end_angles ? PC_END_CLAMPED : PC_END_NATURAL,
+                                            e.ends, e.ends + 2, status);
+        if (!s) return NULL;
+        double nodeu[EL_MAXNODES], dd[3 * 2];
+        for (int j = 0; j < N; j++) {
+            int span = j / pieces, sub = j % pieces;
+            nodeu[j] = span < n - 1 ? s->knots[span] + (s->knots[span + 1] - s->knots[span]) * sub / pieces
+                                    : s->knots[n - 1];
         }
-    for (int j = 0; j + 1 < N; j++) {
-        double du = nodeu[j + 1] - nodeu[j];
-        pc_curve_derivs(s, nodeu[j], 1, dd);
-        v[k++] = log(fmax(1e-6, hypot(dd[2], dd[3]) * du));
-        pc_curve_derivs(s, nodeu[j + 1], 1, dd);
-        v[k++] = log(fmax(1e-6, hypot(dd[2], dd[3]) * du));
+        double h0 = nodeu[1] - nodeu[0];
+        for (int j = 1; j < N - 1; j++) v[k++] = log((nodeu[j + 1] - nodeu[j]) / h0);
+        for (int j = 0; j < N; j++)
+            if (j % pieces) {
+                pc_curve_derivs(s, nodeu[j], 1, dd);
+                double l = hypot(dd[2], dd[3]);
+                e.base[2 * j] = dd[0];
+                e.base[2 * j + 1] = dd[1];
+                e.normal[2 * j] = l > 0 ? -dd[3] / l : 0;
+                e.normal[2 * j + 1] = l > 0 ? dd[2] / l : 0;
+                v[k++] = 0;
+            }
+        if (e.clamped) {   /* the spline's end speeds in units of the first step */
+            v[k++] = log(h0);
+            v[k++] = log(h0);
+        }
+        pc_curve_release(s);
+        int iters = 0;
+        int st = pc_minimize(nv, energy_of, &e, v, 1e-8, 1e-6, 20000, &E, &iters);
+        if (getenv("PC_ELASTIC_DEBUG")) fprintf(stderr, "elastic: %d unknowns, %d iterations, status %d, E %.9g\n", nv, iters, st, E);
+        if (st != PC_OK) {
+            *status = st;
+            return NULL;
+        }
     }
-    pc_curve_release(s);
-    double E;
-    int iters = 0;
-    int st = pc_minimize(nv, energy_of, &e, v, 1e-8, 1e-6, 20000, &E, &iters);
-    if (getenv("PC_ELASTIC_DEBUG")) fprintf(stderr, "elastic: %d iterations, status %d, E %.9g\n", iters, st, E);
-    if (st != PC_OK) {
-        *status = st;
-        return NULL;
-    }
-    double xy[2 * EL_MAXNODES], th[EL_MAXNODES], m[2 * EL_MAXNODES];
+    double xy[2 * EL_MAXNODES], h[EL_MAXNODES], D[2 * EL_MAXNODES];
     double dout[2 * EL_MAXNODES], din[2 * EL_MAXNODES], u[EL_MAXNODES];
-    unpack(&e, v, xy, th, m);
-    for (int j = 0; j < N; j++) {
-        u[j] = (double)j / pieces;
-        /* a piece spans 1/pieces of the parameter: d/du = pieces d/dt */
-        double mo = j < N - 1 ? m[2 * j] : m[2 * j - 1], mi = j > 0 ? m[2 * j - 1] : m[0];
-        dout[2 * j] = pieces * mo * cos(th[j]);
-        dout[2 * j + 1] = pieces * mo * sin(th[j]);
-        din[2 * j] = pieces * mi * cos(th[j]);
-        din[2 * j + 1] = pieces * mi * sin(th[j]);
+    model(&e, v, xy, h, D);
+    if (nv == 0) E = energy_of(&e, v);
+    /* span i of the result runs over [i, i + 1]: its pieces keep their parameter ratios, so
+     * the curve is C2 inside a span and at a pin only the speed changes (curvature and
+     * tangent are continuous there) */
+    for (int i = 0; i + 1 < n; i++) {
+        double len = 0;
+        for (int q = 0; q < pieces; q++) len += h[i * pieces + q];
+        double acc = 0;
+        for (int q = 0; q <= pieces; q++) {
+            int j = i * pieces + q;
+            if (q < pieces) {
+                u[j] = i + acc / len;
+                dout[2 * j] = D[2 * j] * len;
+                dout[2 * j + 1] = D[2 * j + 1] * len;
+                acc += h[j];
+            }
+            if (q > 0) {
+                din[2 * j] = D[2 * j] * len;
+                din[2 * j + 1] = D[2 * j + 1] * len;
+            }
+        }
     }
+    u[N - 1] = n - 1;
+    dout[2 * (N - 1)] = din[2 * (N - 1)];
+    dout[2 * (N - 1) + 1] = din[2 * (N - 1) + 1];
+    din[0] = dout[0];
+    din[1] = dout[1];
     if (energy) *energy = E;
     return pc_curve_hermite(2, N, xy, dout, din, u, 0, status);
 }

@@ -10,15 +10,20 @@
 
 #include "curve.h"
 
-/* The least-energy curve through n >= 2 points p (rows of 2), `pieces` cubic Hermite pieces
- * per span (1..4; interior nodes of a span are free), free ends when end_angles is NULL, or
+/* The least-energy curve through n >= 2 points p (rows of 2): a C2 cubic spline in a
+ * parameter of its own through the points and `pieces` - 1 free nodes inside each span
+ * (pieces 1..4, or 0 for the most that n allows: 4 up to 10 points), with free ends
+ * (natural: kappa = 0 there, as at the unloaded ends of a ruler) when end_angles is NULL, or
  * clamped ends with the tangent angles end_angles[0] at the first point and end_angles[1] at
- * the last (radians from the x axis, in the direction of travel).  The unknowns (a tangent
- * angle at every node, two derivative moduli per piece as logarithms, the free nodes) are
- * found by pc_minimize starting from the chord-length natural cubic spline.  *energy (if not
- * NULL) gets the integral of kappa^2 ds.  The curve runs over [0, n-1], span i over [i, i+1].
+ * the last (radians from the x axis, in the direction of travel; the length stays free).
+ * The unknowns (the spline's parameter steps, the free nodes' offsets across the curve, the
+ * clamped end speeds) are found by pc_minimize from the chord-length cubic spline.  *energy
+ * (if not NULL) gets the integral of kappa^2 ds.  The curve runs over [0, n-1], span i over
+ * [i, i+1] (each span's pieces keep their parameter ratios): C2 inside a span, and at a pin
+ * tangent and curvature are continuous (G2), only the speed of the parameter changes.
  * PC_ECOINCIDENT for repeated consecutive points, PC_ENOCONVERGE if the minimisation does
- * not settle, PC_EDIM for n outside 2..PC_ELASTIC_MAXN or pieces outside 1..4. */
+ * not settle, PC_EDIM for n outside 2..PC_ELASTIC_MAXN, pieces outside 0..4 or too many
+ * unknowns (2 (n-1) pieces - n, + 2 when clamped, at most PC_NEWTON_MAXN). */
 #define PC_ELASTIC_MAXN 12
 pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angles,
                      double *energy, int *status);

@@ -6,7 +6,7 @@
  *   korotky.ferguson_tangents(points, tangents [, {wA =, wE =, start =}]) -> curve, moduli
  *   korotky.ferguson_substitution(points, tangents, wA, z1 [, "min"|"max"])
  *                                                              -> curve, moduli, quadratics
- *   korotky.elastic(points [, {ends =, pieces =}])             -> curve, energy
+ *   korotky.elastic(points [, {ends =, pieces =}])             -> curve, energy (C2 spline)
  *   korotky.deviation(c1, c2 [, samples])  korotky.joint_jumps(c)  korotky.energy(c)
  *   korotky.conic_arc(U, tU, V, tV, T)                         -> curve, w, kind
  *   korotky.conic_sweep{U =, V =, T =, P =, Q =}               -> surface
@@ -274,8 +274,14 @@ static int l_elastic(lua_State *L) {
     const char *fn = "korotky.elastic";
     double p[2 * PC_ELASTIC_MAXN];
     int n = read_points(L, fn, 1, p, PC_ELASTIC_MAXN), opts = opt_table(L, fn, 2);
-    int pieces = (int)opt_field(L, fn, opts, "pieces", 2);
-    if (pieces < 1 || pieces > 4) return pcl_error(L, "%s: option pieces must be 1 to 4, got %d", fn, pieces);
+    int pieces = 0;   /* as many as the points allow (4 up to 10 points) */
+    if (opts && lua_getfield(L, opts, "pieces") != LUA_TNIL) {
+        double k = lua_tonumber(L, -1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !(k >= 1 && k <= 4 && k == (int)k))
+            return pcl_error(L, "%s: option pieces must be 1 to 4, got %s", fn, pcl_shown(L, lua_gettop(L)));
+        pieces = (int)k;
+        lua_pop(L, 1);
+    }
     double angles[2], *ends = NULL;
     if (opts && lua_getfield(L, opts, "ends") != LUA_TNIL) {
         int e = lua_gettop(L);

@@ -254,42 +254,42 @@ static void test_ferguson_substitution(void **state) {
 
 static void test_elastic(void **state) {
     (void)state;
-    double E;
+    double E, E1;
     int st;
-    pc_curve *c = pc_elastic(5, PTS, 1, NULL, &E, &st);
-    assert_non_null(c);
-    /* the digest's proxy with one Hermite piece per span: energy 1.8207, slopes 1.2306,
-     * 2.7425, 0.9006, -1.8209, -2.4409; kappa = 0 at the free ends */
-    NEAR(E, 1.8207, 2e-3);
-    const double proxy[5] = {1.2306, 2.7425, 0.9006, -1.8209, -2.4409};
     const double measured[5] = {1.134, 2.840, 0.985, -1.815, -2.460};   /* Table A2 */
-    double d[4], k;
+    double d[4], k, dk, da;
+    /* one piece per span: the C2 spline of least energy over its parameter steps alone (3
+     * unknowns) is coarser, within 3.5 degrees of the measured slopes; no curvature jumps */
+    pc_curve *c1 = pc_elastic(5, PTS, 1, NULL, &E1, &st);
+    assert_non_null(c1);
     for (int i = 0; i < 5; i++) {
-        pc_curve_derivs(c, i, 1, d);
-        NEAR(d[3] / d[2], proxy[i], 0.01);
-        assert_true(fabs(atan(d[3] / d[2]) - atan(measured[i])) < 3 * DEG);
+        pc_curve_derivs(c1, i, 1, d);
+        assert_true(fabs(atan(d[3] / d[2]) - atan(measured[i])) < 3.5 * DEG);
     }
-    pc_curve_curvature(c, 0, &k);
-    NEAR(k, 0, 5e-3);
-    pc_curve_curvature(c, 4, &k);
-    NEAR(k, 0, 5e-3);
+    assert_int_equal(pc_curve_joint_jumps(c1, &dk, &da, NULL), PC_OK);
+    assert_true(dk < 1e-9 && da < 1e-12);
+    /* four pieces per span (the default): the digest's proxy (A.11): energy 1.8188, slopes
+     * 1.2318, 2.7345, 0.9048, -1.8094, -2.4502; curvature continuous at every joint */
+    pc_curve *c = pc_elastic(5, PTS, 0, NULL, &E, &st);
+    assert_non_null(c);
+    NEAR(E, 1.8188, 2e-4);
+    assert_true(E <= E1);
     double E2;
     assert_int_equal(pc_curve_bending_energy(c, &E2), PC_OK);
     NEAR(E2, E, 1e-6);
-    /* two pieces per span: 1.8188 */
-    pc_curve *c2 = pc_elastic(5, PTS, 2, NULL, &E2, &st);
-    assert_non_null(c2);
-    NEAR(E2, 1.8188, 2e-3);
-    assert_true(E2 <= E + 1e-9);
-    const double proxy2[5] = {1.2318, 2.7345, 0.9048, -1.8094, -2.4502};   /* K = 2 (A.11) */
+    const double proxy[5] = {1.2318, 2.7345, 0.9048, -1.8094, -2.4502};
     for (int i = 0; i < 5; i++) {
-        pc_curve_derivs(c2, i, 1, d);
-        NEAR(d[3] / d[2], proxy2[i], 2e-3);
+        pc_curve_derivs(c, i, 1, d);
+        NEAR(d[3] / d[2], proxy[i], 2e-3);
+        assert_true(fabs(atan(d[3] / d[2]) - atan(measured[i])) < 3 * DEG);
     }
-    pc_curve_curvature(c2, 0, &k);   /* a free end carries no moment: kappa = 0 */
-    NEAR(k, 0, 1e-3);
-    pc_curve_curvature(c2, 4, &k);
-    NEAR(k, 0, 1e-3);
+    pc_curve_curvature(c, 0, &k);   /* a free end carries no moment: kappa = 0 */
+    NEAR(k, 0, 1e-12);
+    pc_curve_curvature(c, 4, &k);
+    NEAR(k, 0, 1e-12);
+    assert_int_equal(pc_curve_joint_jumps(c, &dk, &da, NULL), PC_OK);
+    assert_true(dk < 1e-9 && da < 1e-12);
+    pc_curve *c2 = pc_curve_retain(c);
     /* the ranking of the article's models against the reference (A.11): Ferguson (28) <
      * Ferguson Example 1 < polynomial (7) */
     const double tg[5] = {1.134, 2.840, 0.985, -1.8154, -2.460};
@@ -320,36 +320,47 @@ static void test_elastic(void **state) {
     assert_true(e7 > e1 && e1 > e28 && e28 > E2);
     /* a curve against itself, and a shifted copy */
     double h0;
-    pc_curve_hausdorff(c, c, 32, &h0);
+    pc_curve_hausdorff(c1, c1, 32, &h0);
     NEAR(h0, 0, 1e-9);
     pc_curve_release(f28);
     pc_curve_release(f1);
     pc_curve_release(p7);
-    /* clamped at the slopes 0.2 and -0.3 */
+    /* clamped at the slopes 0.2 and -0.3 (free length: only indicative, A.11): the slope
+     * at B near the digest's 5.7020, the energy below its one-piece proxy's 4.7407 */
     double ends[2] = {atan(0.2), atan(-0.3)};
-    pc_curve *cc = pc_elastic(5, PTS, 1, ends, &E, &st);
+    pc_curve *cc = pc_elastic(5, PTS, 0, ends, &E, &st);
     assert_non_null(cc);
-    NEAR(E, 4.7407, 5e-3);
+    assert_true(E < 4.7407 && E > 4.6);
     pc_curve_derivs(cc, 0, 1, d);
     NEAR(d[3] / d[2], 0.2, 1e-12);
+    pc_curve_derivs(cc, 4, 1, d);
+    NEAR(d[3] / d[2], -0.3, 1e-12);
     pc_curve_derivs(cc, 1, 1, d);
     NEAR(d[3] / d[2], 5.7020, 0.05);
+    assert_int_equal(pc_curve_joint_jumps(cc, &dk, &da, NULL), PC_OK);
+    assert_true(dk < 1e-9);
     pc_curve_release(cc);
-    /* the compressed pins: slopes within 3.5 degrees of Table A3; non-affine ratios */
+    /* the compressed pins: slopes within 3.5 degrees of Table A3; the non-affine ratios of
+     * the digest's proxy (2.41, 1.13, 1.86) and near the measured 2.36, 1.21, 1.815 */
     double half[10];
     for (int i = 0; i < 10; i++) half[i] = i % 2 ? PTS[i] / 2 : PTS[i];
-    pc_curve *ch = pc_elastic(5, half, 1, NULL, &E, &st);
+    pc_curve *ch = pc_elastic(5, half, 0, NULL, &E, &st);
     const double meas_c[5] = {0.567, 1.205, 0.811, -1.00, -1.230};
-    const double ratio[3] = {2.41, 1.13, 1.86};
+    const double ratio[3] = {2.41, 1.13, 1.86}, ratio_m[3] = {2.36, 1.21, 1.815};
     for (int i = 0; i < 5; i++) {
         double dd[4];
         pc_curve_derivs(ch, i, 1, d);
         pc_curve_derivs(c, i, 1, dd);
         assert_true(fabs(atan(d[3] / d[2]) - atan(meas_c[i])) < 3.5 * DEG);
-        if (i >= 1 && i <= 3) NEAR((dd[3] / dd[2]) / (d[3] / d[2]), ratio[i - 1], 0.03);
+        if (i >= 1 && i <= 3) {
+            double r = (dd[3] / dd[2]) / (d[3] / d[2]);
+            NEAR(r, ratio[i - 1], 0.015);
+            NEAR(r, ratio_m[i - 1], 0.1);
+        }
     }
     pc_curve_release(ch);
     pc_curve_release(c);
+    pc_curve_release(c1);
     pc_curve_release(c2);
     /* errors */
     double dup[10] = {1.2, 0.9, 1.2, 0.9, 2.8, 4, 5, 3.2, 5.5, 2.1};

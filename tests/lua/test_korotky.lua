@@ -72,9 +72,11 @@ near(d1.x, .8234, 1e-4, "Example 1 derivative at B")
 
 -- the elastic reference and the article's ranking of the models
 local el, E = korotky.elastic(pts)
-near(E, 1.8188, 2e-3, "elastic energy")
+near(E, 1.8188, 2e-4, "elastic energy")
+dk, da = korotky.joint_jumps(el)
+truthy(dk < 1e-9 and da < 1e-12, "the elastic line is curvature-continuous at every joint")
 near(korotky.energy(el), E, 1e-6, "energy of the curve")
-near(el:curvature(0), 0, 1e-3, "free end A")
+near(el:curvature(0), 0, 1e-12, "free end A")
 local measured = {1.134, 2.840, 0.985, -1.815, -2.460}
 for i = 1, 5 do
   local t = el:deriv(i - 1)
@@ -88,7 +90,7 @@ truthy(h28 < h1 and h1 < h7, "ranking: (28) < Example 1 < (7)")
 truthy(korotky.energy(c7) > korotky.energy(f1) and korotky.energy(f1) > korotky.energy(f28)
        and korotky.energy(f28) > E, "energies rank as the distances")
 local ec, Ec = korotky.elastic(pts, {ends = {.2, -.3}, pieces = 1})
-near(Ec, 4.7407, 5e-3, "clamped elastic energy")
+truthy(Ec > 4.7 and Ec < 4.8, "clamped elastic energy near the digest's 4.7407")
 d = ec:deriv(4)
 near(d.y / d.x, -.3, 1e-12, "clamped at E")
 
@@ -171,6 +173,8 @@ err(function() korotky.elastic({P(0, 0), P(0, 0), P(1, 1)}) end,
     "korotky.elastic: two consecutive points coincide")
 err(function() korotky.elastic(pts, {pieces = 9}) end,
     "korotky.elastic: option pieces must be 1 to 4, got 9")
+err(function() korotky.elastic(pts, {pieces = 2.5}) end,
+    "korotky.elastic: option pieces must be 1 to 4, got 2.5")
 err(function() korotky.deviation(c7, 3) end,
     "korotky.deviation: argument #2 (reference) must be a curve, got 3")
 err(function() korotky.deviation(c7, sp) end,
