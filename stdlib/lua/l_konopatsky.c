@@ -446,8 +446,10 @@ static int c_five_points(lua_State *L) {
     if (st == PC_ECOLLINEAR) pcl_error(L, "%s: A, B and C must not be collinear", fn);
     statuscheck(L, fn, st);
     double u0 = 0, u1 = 1;
+    /* a point whose U is the point at infinity of CA (ED parallel to CA) has |u| huge, not a
+     * range end: it is reached by the whole conic only */
     for (int i = 0; i < 5; i++)
-        if (isfinite(u[i])) u0 = fmin(u0, u[i]), u1 = fmax(u1, u[i]);
+        if (isfinite(u[i]) && fabs(u[i]) < 1e6) u0 = fmin(u0, u[i]), u1 = fmax(u1, u[i]);
     int whole = 0;
     if (!lua_isnoneornil(L, 6)) {
         checktable(L, fn, 6, "opts");

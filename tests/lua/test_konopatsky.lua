@@ -169,4 +169,15 @@ err(function() interp.prototype("spline", {}) end, "argument #1 (kind) must be \
 err(function() interp.prototype("exp", {P(0, 0), P(1, 2), P(2, 0)}, {1, 1, 2}) end, "exponents must be distinct", "k")
 err(function() approx.optimal_nodes(runge, 1, -1, 6) end, "argument #3 (b) must be greater than a", "a > b")
 err(function() approx.optimal_nodes(runge, -1, 1, 2) end, "argument #4 (N) must be a number of nodes 3..16", "N")
+-- five points where ED is parallel to CA (D's u is infinite): the range is the other points'
+local function ell(a) return P(2 * math.cos(a), 1.2 * math.sin(a)) end
+local c5e, ue = conic.five_points(ell(0.5), ell(3.0), ell(5.0), ell(1.5), ell(4.0))
+truthy(math.abs(ue.D) > 1e6, "u_D at infinity")
+local lo, hi = c5e.t0, c5e.t1
+truthy(hi - lo < 10, "a bounded range")
+for t = lo, hi, (hi - lo) / 8 do
+  local M = c5e(t)
+  near(M.x ^ 2 / 4 + M.y ^ 2 / 1.44, 1, 1e-9, "on the ellipse, t = " .. t)
+end
+
 check.done()
