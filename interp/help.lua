@@ -329,6 +329,8 @@ def("s:map", "s:map(f) -> s",
   "The image of the surface under a map.", "method")
 def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48}",
   "Draw the iso-lines as paths through map or the camera; hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it.", "method")
+def("s:shade", "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
+  "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows.", "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curvilinear", "Curvilinear coordinates",

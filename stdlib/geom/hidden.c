@@ -11,8 +11,7 @@ typedef struct { double x, y, d; int ok; } vert;   /* screen position, depth */
 
 struct pc_occluder {
     pc_map map;
-    int perspective;
-    double eye[3];         /* the centre, or the unit direction towards the viewer */
+    pc_viewer view;
     double eps;            /* depth tolerance */
     int nu, nv;
     vert *v;               /* (nu+1) x (nv+1) */
@@ -20,12 +19,28 @@ struct pc_occluder {
     int *start, *tri;      /* CSR: triangles of cell k are tri[start[k] .. start[k+1]) */
 };
 
-double pc_occluder_depth(const pc_occluder *o, const double *x) {
-    if (o->perspective) {
-        double d[3] = {x[0] - o->eye[0], x[1] - o->eye[1], x[2] - o->eye[2]};
+double pc_viewer_depth(const pc_viewer *v, const double *x) {
+    if (v->perspective) {
+        double d[3] = {x[0] - v->eye[0], x[1] - v->eye[1], x[2] - v->eye[2]};
         return -sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     }
-    return x[0] * o->eye[0] + x[1] * o->eye[1] + x[2] * o->eye[2];
+    return x[0] * v->eye[0] + x[1] * v->eye[1] + x[2] * v->eye[2];
+}
+
+int pc_viewer_toward(const pc_viewer *v, const double *x, double out[3]) {
+    if (!v->perspective) {
+        for (int k = 0; k < 3; k++) out[k] = v->eye[k];
+        return PC_OK;
+    }
+    double d[3] = {v->eye[0] - x[0], v->eye[1] - x[1], v->eye[2] - x[2]};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(len > 0) || !isfinite(len)) return PC_EZERO;
+    for (int k = 0; k < 3; k++) out[k] = d[k] / len;
+    return PC_OK;
+}
+
+double pc_occluder_depth(const pc_occluder *o, const double *x) {
+    return pc_viewer_depth(&o->view, x);
 }
 
 static int project(const pc_occluder *o, const double *x, vert *p) {
@@ -41,31 +56,33 @@ static int project(const pc_occluder *o, const double *x, vert *p) {
 }
 
 /* The centre of projection: the null vector of the 3 x 4 matrix, by cofactors. */
-static int centre(pc_occluder *o) {
+int pc_viewer_of(const pc_map *map, pc_viewer *v) {
+    if (!map || map->nin != 3 || map->nout != 2) return PC_EDIM;
     double n[4], m[9];
     for (int j = 0; j < 4; j++) {
         for (int r = 0; r < 3; r++)
             for (int c = 0, k = 0; c < 4; c++)
-                if (c != j) m[r * 3 + k++] = PC_MAP_AT(&o->map, r, c);
+                if (c != j) m[r * 3 + k++] = PC_MAP_AT(map, r, c);
         n[j] = (j % 2 ? -1 : 1) * pc_det(3, m);
     }
     double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] + n[3] * n[3]);
     if (!(len > 0) || !isfinite(len)) return PC_ESINGULAR;
     if (fabs(n[3]) > 1e-12 * len) {           /* a finite eye */
-        o->perspective = 1;
-        for (int k = 0; k < 3; k++) o->eye[k] = n[k] / n[3];
+        v->perspective = 1;
+        for (int k = 0; k < 3; k++) v->eye[k] = n[k] / n[3];
         return PC_OK;
     }
     /* parallel: towards the viewer is -(r1 x r2) on a y-down picture */
     double r1[3], r2[3], c[3];
     for (int k = 0; k < 3; k++) {
-        r1[k] = PC_MAP_AT(&o->map, 0, k);
-        r2[k] = PC_MAP_AT(&o->map, 1, k);
+        r1[k] = PC_MAP_AT(map, 0, k);
+        r2[k] = PC_MAP_AT(map, 1, k);
     }
     pc_cross3(r1, r2, c);
     double cl = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     if (!(cl > 0)) return PC_ESINGULAR;
-    for (int k = 0; k < 3; k++) o->eye[k] = -c[k] / cl;
+    v->perspective = 0;
+    for (int k = 0; k < 3; k++) v->eye[k] = -c[k] / cl;
     return PC_OK;
 }
 
@@ -108,7 +125,7 @@ pc_occluder *pc_occluder_new(const pc_surface *s, const pc_map *screen, int nu, 
     o->map = *screen;
     o->nu = nu;
     o->nv = nv;
-    if ((st = centre(o)) != PC_OK) goto fail;
+    if ((st = pc_viewer_of(&o->map, &o->view)) != PC_OK) goto fail;
     int w = nv + 1, ntri = 2 * nu * nv;
     o->v = malloc(sizeof(vert) * (size_t)(nu + 1) * w);
     o->start = calloc(GRID * GRID + 1, sizeof(int));

@@ -13,6 +13,22 @@
 #define PC_HIDDEN_H
 #include "surface.h"
 
+/* The viewer of a map from 3-D to a 2-D y-down screen: a finite eye (perspective) or a
+ * direction towards the viewer (parallel), as described above.  Hidden lines and shaded
+ * surfaces (shade.h) take "nearer" from here. */
+typedef struct {
+    int perspective;
+    double eye[3];     /* the centre, or the unit direction towards the viewer */
+} pc_viewer;
+
+/* The viewer of `screen`: PC_EDIM unless it maps 3-D to 2-D, PC_ESINGULAR for rank < 3. */
+int pc_viewer_of(const pc_map *screen, pc_viewer *v);
+/* The depth of the 3-D point x: larger is nearer the viewer (minus the distance to the eye,
+ * or the height along the direction towards the viewer). */
+double pc_viewer_depth(const pc_viewer *v, const double *x);
+/* The unit direction from x towards the viewer into out; PC_EZERO at the eye itself. */
+int pc_viewer_toward(const pc_viewer *v, const double *x, double out[3]);
+
 typedef struct pc_occluder pc_occluder;
 
 /* An occluder for the 3-D surface s seen through `screen` (a map from 3-D to 2-D screen
@@ -24,7 +40,7 @@ void pc_occluder_free(pc_occluder *o);
 /* 1 if the 3-D point x is seen, 0 if the surface hides it (a point that does not project to a
  * finite image counts as seen). */
 int pc_occluder_visible(const pc_occluder *o, const double *x);
-/* The depth used: larger is nearer the viewer. */
+/* The depth used: larger is nearer the viewer (pc_viewer_depth of the map's viewer). */
 double pc_occluder_depth(const pc_occluder *o, const double *x);
 
 #endif

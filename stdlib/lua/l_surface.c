@@ -7,12 +7,16 @@
  *   surface(f, u0, u1, v0, v1)                a Lua function (u, v) -> point
  * net: a list of rows, row i (along u) a list of points (weighted points make it rational).
  * s(u, v) is the point; s:partials(u, v), s:normal(u, v), s:iso("u"|"v", value) -> curve,
- * s:wireframe{nu =, nv =, color =, map =}, s:map(f). */
+ * s:wireframe{nu =, nv =, color =, map =}, s:shade{nu =, nv =, color =, light =, mesh =, map =},
+ * s:map(f). */
+#include <ctype.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_curve.h"
 #include "hidden.h"
+#include "shaded.h"
 #include "pcl_expr.h"
 
 #define SURF_MT "surface"
@@ -515,6 +519,114 @@ static int s_wireframe(lua_State *L) {
     return 0;
 }
 
+/* ---- shading ----------------------------------------------------------------------------- */
+
+/* The house error for a field of the options table of s:shade (argument #1 of the method);
+ * the value at the stack top. */
+static int shade_field_error(lua_State *L, const char *field, const char *expected) {
+    const char *what = lua_pushfstring(L, "opts.%s", field);
+    return pcl_argerror_full(L, "s:shade", lua_gettop(L) - 1, 1, what, expected);
+}
+
+/* opts.field (at the stack top) as a colour: an attribute of the screen or "#rrggbb"; its
+ * rgb into *rgb and its attribute (a true colour allocated for a string) returned. */
+static int shade_color(lua_State *L, pc_canvas *cv, const char *field, pc_rgb *rgb) {
+    char expected[64];
+    snprintf(expected, sizeof expected, "a colour number 0..%d or \"#rrggbb\"", cv->ncolors - 1);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+        size_t len;
+        const char *h = lua_tolstring(L, -1, &len);
+        unsigned v[3];
+        int ok = len == 7 && h[0] == '#';
+        for (size_t k = 1; ok && k < 7; k++) ok = isxdigit((unsigned char)h[k]) != 0;
+        if (!ok || sscanf(h + 1, "%2x%2x%2x", &v[0], &v[1], &v[2]) != 3)
+            return pcl_error(L, "s:shade: argument #1 (opts.%s) must be %s, got \"%s\"", field,
+                             expected, h);
+        *rgb = (pc_rgb){(uint8_t)v[0], (uint8_t)v[1], (uint8_t)v[2]};
+        int attr = pc_rgb_color(cv, *rgb);
+        if (attr < 0) return pcl_error(L, "s:shade: %s", cv->error);
+        return attr;
+    }
+    int isint;
+    lua_Integer a = lua_tointegerx(L, -1, &isint);
+    if (lua_type(L, -1) != LUA_TNUMBER || !isint || a < 0 || a > PC_MAX_ATTR ||
+        pc_canvas_rgb(cv, (int)a, rgb) != PC_OK)
+        return shade_field_error(L, field, expected);
+    return (int)a;
+}
+
+/* s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = f}: the
+ * surface as nu x nv quads through the map or the camera, each filled with its Lambert shade
+ * of the base colour (stdlib/geom/shade.h) in painter's order, each outline drawn over its
+ * fill in the mesh colour when mesh is given.  Returns the number of quads drawn. */
+static int s_shade(lua_State *L) {
+    const char *fn = "s:shade";
+    lsurf *u = checksurf(L, 1, fn);
+    if (lua_isnoneornil(L, 2)) {
+        lua_settop(L, 1);
+        lua_newtable(L);
+    }
+    if (!lua_istable(L, 2)) return pcl_argerror_full(L, fn, 2, 1, "opts", "a table");
+    lua_settop(L, 2);
+    pc_canvas *cv = pcl_canvas(L);
+    pc_shade_opts o = {.nu = 40, .nv = 40};
+    static const char *const counts[2] = {"nu", "nv"};
+    for (int k = 0; k < 2; k++) {
+        if (lua_getfield(L, 2, counts[k]) != LUA_TNIL) {
+            int isint;
+            lua_Integer v = lua_tointegerx(L, -1, &isint);
+            if (lua_type(L, -1) != LUA_TNUMBER || !isint || v < 1 || v > 1024)
+                shade_field_error(L, counts[k], "an integer 1..1024");
+            *(k ? &o.nv : &o.nu) = (int)v;
+        }
+        lua_pop(L, 1);
+    }
+    pc_rgb base;
+    if (lua_getfield(L, 2, "color") != LUA_TNIL) shade_color(L, cv, "color", &base);
+    else pc_canvas_rgb(cv, cv->fg, &base);
+    lua_pop(L, 1);
+    int mesh = -1;
+    pc_rgb ignored;
+    if (lua_getfield(L, 2, "mesh") != LUA_TNIL) mesh = shade_color(L, cv, "mesh", &ignored);
+    lua_pop(L, 1);
+    if (lua_getfield(L, 2, "light") != LUA_TNIL) {
+        pcl_value *v = pcl_tovalue(L, -1);
+        if (!v || v->n != 3 || v->h[3] != 0)
+            shade_field_error(L, "light", "a 3-D vector (the direction towards the light)");
+        for (int k = 0; k < 3; k++) o.light[k] = v->h[k];
+        if (o.light[0] == 0 && o.light[1] == 0 && o.light[2] == 0)
+            shade_field_error(L, "light", "a nonzero vector (the direction towards the light)");
+        o.has_light = 1;
+    }
+    lua_pop(L, 1);
+    if (lua_getfield(L, 2, "ambient") != LUA_TNIL) {
+        o.ambient = lua_tonumber(L, -1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !(o.ambient >= 0 && o.ambient <= 1))
+            shade_field_error(L, "ambient", "a number 0..1");
+    }
+    lua_pop(L, 1);
+    pc_surface *s = u->s;
+    if (s->dim != 3)
+        return pcl_error(L, "%s: shading needs a 3-D surface seen through a projection, this one "
+                            "is %d-D", fn, s->dim);
+    lua_getfield(L, 2, "map");
+    const pc_map *f = pcl_drawing_map(L, lua_gettop(L), 3, fn);
+    pc_map scr;
+    pcl_screen_map(L, f, &scr);
+    pcl_callback_state(L);
+    pc_shade_quad *q;
+    size_t n;
+    int st = pc_shade_quads(s, &scr, &o, &q, &n);
+    if (st == PC_ESINGULAR)
+        return pcl_error(L, "%s: the projection is singular (it flattens space onto a line)", fn);
+    if (st != PC_OK) return pcl_raise_status(L, fn, st);
+    int drawn = pc_draw_shaded(cv, q, n, base, mesh);
+    free(q);
+    if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
+    lua_pushinteger(L, (lua_Integer)n);
+    return 1;
+}
+
 static int s_index(lua_State *L) {
     lsurf *u = checksurf(L, 1, "surface");
     const char *k = lua_tostring(L, 2);
@@ -547,7 +659,8 @@ void pcl_open_surface(lua_State *L) {
     int methods = lua_gettop(L);
     static const luaL_Reg mfns[] = {{"eval", s_call}, {"partials", s_partials},
                                     {"normal", s_normal}, {"iso", s_iso}, {"map", s_map},
-                                    {"wireframe", s_wireframe}, {NULL, NULL}};
+                                    {"wireframe", s_wireframe}, {"shade", s_shade},
+                                    {NULL, NULL}};
     luaL_setfuncs(L, mfns, 0);
     luaL_newmetatable(L, SURF_MT);
     static const luaL_Reg meta[] = {{"__call", s_call}, {"__tostring", s_tostring},
