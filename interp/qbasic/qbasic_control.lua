@@ -4,9 +4,10 @@
 -- checks of GOTO, GOSUB and EXIT targets (Label not defined, a GOTO into a block, EXIT FOR
 -- outside FOR...NEXT) before anything runs.
 --
--- control(prog) adds: prog.main (the top level with its regions), prog.gosub_lua (label ->
--- function name), prog.defs (procdefs and regions in order, with def_label, skip_label and
--- next_def), prog.goto_targets (labels some GOTO names).
+-- control(prog) adds: prog.main and proc.tree (the top level with its regions), gosub_lua
+-- (label -> function name) and defs (procdefs and regions in order, with def_label,
+-- skip_label and next_def) of the program and of each procedure, prog.goto_targets (labels
+-- some GOTO names).
 local walk = require "qbasic_walk"
 
 local M = {}
@@ -20,39 +21,29 @@ function M.label_lua(name)
 end
 
 -- ---- GOSUB subroutines -------------------------------------------------------------------------
-local function gosub_regions(prog)
-  local gosub_targets = {}
-  walk.stmts(prog.main, function(st)
-    if st.k == "gosub" then gosub_targets[st.label] = st.line
+-- The GOSUB targets of a body (the module's, or a procedure's: QBasic's GOSUB stays within its
+-- procedure), each the label at the top level of that body where a subroutine starts.
+local function gosub_targets_of(list)
+  local targets = {}
+  walk.stmts(list, function(st)
+    if st.k == "gosub" then targets[st.label] = st.line
     elseif st.k == "on" and st.gosub then
-      for _, l in ipairs(st.labels) do gosub_targets[l] = st.line end
+      for _, l in ipairs(st.labels) do targets[l] = st.line end
     end
   end)
-  for _, proc in ipairs(prog.procs) do
-    if proc.tree then
-      walk.stmts(proc.tree, function(st)
-        if st.k == "gosub" or (st.k == "on" and st.gosub) then
-          qerr("GOSUB inside a SUB or FUNCTION: not supported by pointcalc", st.line)
-        end
-      end)
-    end
-  end
-  local gosub_lua = {}
-  for label, line in pairs(gosub_targets) do
-    local l = prog.labels[label]
-    if not l or l.proc then qerr("Label not defined", line) end
-    -- through the namespace: a variable gosub.10 (gosub_10 in Lua) gets another name
-    gosub_lua[label] = prog.alloc(prog.gns, { "gosub_" .. label:gsub("%.", "_") })
-  end
-  prog.gosub_lua = gosub_lua
-  -- split the top level of main into plain statements and subroutines
+  return targets
+end
+
+-- Split the top level of a body into plain statements and subroutines (regions); returns the
+-- new top level.  names: label -> Lua function name; proc: the procedure, nil for the module.
+local function split_regions(list, targets, names, proc)
   local regions = {}
   local newtop = {}
   local cur = nil
-  for _, st in ipairs(prog.main) do
-    if st.k == "label" and gosub_targets[st.name] then
-      local r = { k = "region", label = st.name, lua = gosub_lua[st.name], line = st.line,
-        body = { st } }
+  for _, st in ipairs(list) do
+    if st.k == "label" and targets[st.name] then
+      local r = { k = "region", label = st.name, lua = names[st.name], line = st.line,
+        body = { st }, proc = proc }
       if cur then cur.falls_into = r end
       cur = r
       regions[#regions + 1] = r
@@ -71,21 +62,48 @@ local function gosub_regions(prog)
     end
   end
   if cur then qerr("GOSUB subroutine without RETURN", cur.line) end
-  prog.main = newtop
   -- a GOSUB target inside a block cannot be a subroutine
-  for label, line in pairs(gosub_targets) do
+  for label, line in pairs(targets) do
     local found = false
     for _, r in ipairs(regions) do if r.label == label then found = true end end
     if not found then
-      qerr("GOSUB " .. label .. ": the target must be at the top level of the program", line)
+      qerr("GOSUB " .. label .. ": the target must be at the top level of the " ..
+        (proc and "procedure" or "program"), line)
+    end
+  end
+  return newtop
+end
+
+local function gosub_regions(prog)
+  local function names_for(targets, ns, proc)
+    local names = {}
+    for label, line in pairs(targets) do
+      local l = prog.labels[label]
+      if not l or l.proc ~= proc then qerr("Label not defined", line) end
+      -- through the namespace: a variable gosub.10 (gosub_10 in Lua) gets another name
+      names[label] = prog.alloc(ns, { "gosub_" .. label:gsub("%.", "_") })
+    end
+    return names
+  end
+  local targets = gosub_targets_of(prog.main)
+  prog.gosub_lua = names_for(targets, prog.gns, nil)
+  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil)
+  for _, proc in ipairs(prog.procs) do
+    if proc.tree then
+      local t = gosub_targets_of(proc.tree)
+      proc.gosub_lua = names_for(t, proc.ns, proc)
+      proc.tree = split_regions(proc.tree, t, proc.gosub_lua, proc)
     end
   end
 end
 
 -- ---- the definition chain ----------------------------------------------------------------------
-local function definition_chain(prog)
+-- In a body, every procedure and subroutine is defined before the first statement runs: the
+-- body starts with a goto to the first definition, each one jumps to the next, the last to
+-- ::start::.
+local function chain(list)
   local defs = {}      -- in textual order: procs and regions
-  for _, st in ipairs(prog.main) do
+  for _, st in ipairs(list) do
     if st.k == "procdef" or st.k == "region" then defs[#defs + 1] = st end
   end
   for _, d in ipairs(defs) do
@@ -96,7 +114,13 @@ local function definition_chain(prog)
   for i, d in ipairs(defs) do
     d.next_def = defs[i + 1] and defs[i + 1].def_label or "start"
   end
-  prog.defs = defs
+  return defs
+end
+local function definition_chain(prog)
+  prog.defs = chain(prog.main)
+  for _, proc in ipairs(prog.procs) do
+    if proc.tree then proc.defs = chain(proc.tree) end
+  end
 end
 
 -- ---- GOTO and EXIT ----------------------------------------------------------------------------
@@ -132,11 +156,12 @@ local function check_jumps(prog)
     if loop then loops[#loops] = nil end
     path[#path] = nil
   end
-  local function in_function(list, proc)
-    local saved_loops, saved_proc = loops, cur_proc
-    loops, cur_proc = { "fn" }, proc
+  local in_region = false    -- inside a GOSUB subroutine of a procedure
+  local function in_function(list, proc, region)
+    local saved_loops, saved_proc, saved_region = loops, cur_proc, in_region
+    loops, cur_proc, in_region = { "fn" }, proc, region
     inside(list, true)
-    loops, cur_proc = saved_loops, saved_proc
+    loops, cur_proc, in_region = saved_loops, saved_proc, saved_region
   end
   local function jump(label, line) gotos[#gotos + 1] = { label = label, path = copy_path(), line = line } end
   local function exit(st)
@@ -147,6 +172,10 @@ local function check_jumps(prog)
       end
       qerr(st.what == "for" and "EXIT FOR not within FOR...NEXT" or "EXIT DO not within DO...LOOP",
         st.line)
+    end
+    if in_region then
+      qerr("EXIT " .. (st.what == "deffn" and "DEF" or st.what:upper()) .. " inside a GOSUB "
+        .. "subroutine: not supported by pointcalc", st.line)
     end
     if not cur_proc or cur_proc.kind ~= st.what then
       qerr(st.what == "sub" and "EXIT SUB not within SUB" or st.what == "function"
@@ -178,7 +207,7 @@ local function check_jumps(prog)
     if st.else_body then inside(st.else_body) end
   end
   function STMT.procdef(st) if st.proc.tree then in_function(st.proc.tree, st.proc) end end
-  function STMT.region(st) in_function(st.body, nil) end
+  function STMT.region(st) in_function(st.body, nil, st.proc ~= nil) end
   body = function(list)
     for _, st in ipairs(list) do
       local f = STMT[st.k]

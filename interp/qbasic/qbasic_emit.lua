@@ -12,6 +12,7 @@ local X = require "qbasic_emit_expr"
 local G = require "qbasic_emit_gfx"
 local control = require "qbasic_control"
 local rt = require "qbasic_rt"
+local K = require "qbasic_keywords"
 local walk = require "qbasic_walk"
 local lex = require "qbasic_lex"
 
@@ -26,9 +27,13 @@ function M.emit(prog, chunkname)
   local function E(line, s) local o = out[line]; o[#o + 1] = s end
   X.install(prog)
   G.install(prog, E)
-  local gosub_lua, goto_targets, label_lua = prog.gosub_lua, prog.goto_targets, control.label_lua
-
+  local goto_targets, label_lua = prog.goto_targets, control.label_lua
   local cur_proc = nil      -- procedure being emitted (nil: main)
+  -- the Lua function of a GOSUB target: the module's, or the procedure's own
+  local function gosub_lua(label)
+    return (cur_proc and cur_proc.gosub_lua or prog.gosub_lua)[label]
+  end
+
   local cur_region = nil    -- GOSUB subroutine being emitted
   local loops = {}          -- open loops: {kind=, exit_label=}
   local exit_count = 0
@@ -264,16 +269,16 @@ function M.emit(prog, chunkname)
     if goto_targets[st.name] then E(st.line, "::" .. label_lua(st.name) .. "::") end
   end
   function STMT.let(st)
-    E(st.line, X.lvalue(st.target) .. " = " .. convert(st.expr, st.target.ty))
+    E(st.line, X.lvalue(st.target) .. " = " .. X.store(st.expr, st.target))
   end
   STMT["for"], STMT["while"], STMT["do"] = emit_for, emit_while, emit_do
   STMT.ifb, STMT.if1, STMT.select = emit_ifb, emit_if1, emit_select
   STMT["goto"] = function(st) E(st.line, "goto " .. label_lua(st.label)) end
-  function STMT.gosub(st) E(st.line, gosub_lua[st.label] .. "()") end
+  function STMT.gosub(st) E(st.line, gosub_lua(st.label) .. "()") end
   function STMT.on(st)
     local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
     for i, l in ipairs(st.labels) do
-      local act = st.gosub and (gosub_lua[l] .. "()") or ("goto " .. label_lua(l))
+      local act = st.gosub and (gosub_lua(l) .. "()") or ("goto " .. label_lua(l))
       parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
     end
     parts[#parts + 1] = "end end"
@@ -292,10 +297,33 @@ function M.emit(prog, chunkname)
       E(st.line, "do return" .. (ret ~= "" and (" " .. ret) or "") .. " end")
     end
   end
+  -- the initial value of a scalar that needs one: a fixed-length string (NUL bytes, as QBasic
+  -- leaves it), a record
+  local function initial(d)
+    if d.fixed then return "fixed_init(" .. d.fixed .. ")" end
+    if K.is_record(d.ty) then return "record(" .. X.lua_string(d.ty:sub(5)) .. ")" end
+  end
+  -- the array constructor of a declaration, and its extra first argument
+  local function array_maker(d)
+    if d.fixed then return "dim_fixed", d.fixed .. ", " end
+    if K.is_record(d.ty) then return "dim_rec", X.lua_string(d.ty:sub(5)) .. ", " end
+    return d.ty == "string" and "dim_str" or "dim", ""
+  end
   function STMT.dim(st)
     for _, d in ipairs(st.decls) do
-      if d.bounds then
-        local node = { k = "dimarray", name = d.name, ty = d.ty, text = d.text, proc = cur_proc }
+      local node = { k = d.bounds and "dimarray" or "dimvar", name = d.name, ty = d.ty,
+        text = d.text, proc = cur_proc }
+      -- STATIC (or DIM in a STATIC procedure): the variable is made on the first call only
+      local once = cur_proc and prog.classify(node) == "static"
+      local function init(code)
+        if once then code = "if static_new(" .. X.lua_string(prog.lua_name(node)) .. ") then "
+          .. code .. " end" end
+        E(st.line, code)
+      end
+      if not d.bounds then
+        local v = initial(d)
+        if v then init(prog.lua_name(node) .. " = " .. v) end
+      else
         local bs = {}
         for _, b in ipairs(d.bounds) do
           if b.lo then
@@ -306,10 +334,19 @@ function M.emit(prog, chunkname)
             bs[#bs + 1] = value(b.hi, 0)
           end
         end
-        local f = d.ty == "string" and "dim_str" or "dim"
-        E(st.line, prog.lua_name(node) .. " = " .. f .. "(" .. table.concat(bs, ", ") .. ")")
+        local f, first = array_maker(d)
+        init(prog.lua_name(node) .. " = " .. f .. "(" .. first .. table.concat(bs, ", ") .. ")")
       end
     end
+  end
+  STMT.static = STMT.dim
+  function STMT.erase(st)
+    for _, a in ipairs(st.arrays) do E(st.line, "erase(" .. prog.lua_name(a) .. ")") end
+  end
+  function STMT.midset(st)
+    local t = X.lvalue(st.target)
+    E(st.line, t .. " = mid_set(" .. t .. ", " .. value(st.start, 0) .. ", "
+      .. (st.len and value(st.len, 0) or "nil") .. ", " .. value(st.expr, 0) .. ")")
   end
   function STMT.const(st)
     for _, d in ipairs(st.decls) do
@@ -324,6 +361,7 @@ function M.emit(prog, chunkname)
       elseif t.ty == "single" then code = "csng(" .. src .. ")"
       elseif t.ty == "int" then code = "cint(" .. src .. ")"
       else code = "clng(" .. src .. ")" end
+      if t.fixed then code = "fixstr(" .. code .. ", " .. t.fixed .. ")" end
       E(st.line, X.lvalue(t) .. " = " .. code)
     end
   end
@@ -337,6 +375,8 @@ function M.emit(prog, chunkname)
     E(st.line, a .. ", " .. b .. " = " .. b .. ", " .. a)
   end
   STMT.rtcall, STMT.getput, STMT.input, STMT.print = G.rtcall, G.getput, G.input, G.print
+  STMT.print_using = G.print_using
+  STMT.print_using = G.print_using
   for _, k in ipairs({ "cls", "color", "palette", "pset", "preset", "line", "circle", "paint",
       "window", "view" }) do
     STMT[k] = G.gfx
@@ -379,6 +419,13 @@ function M.emit(prog, chunkname)
         decl = decl .. " local " .. a.lua .. " = " .. (a.ty == "string" and "dim_str" or "dim")
           .. "(" .. table.concat(dims, ", ") .. ")"
       end
+    end
+    -- GOSUB subroutines of the procedure: local functions, defined before its first statement
+    if proc.defs and #proc.defs > 0 then
+      local fns = {}
+      for i, d in ipairs(proc.defs) do fns[i] = d.lua end
+      decl = decl .. " local " .. table.concat(fns, ", ") .. " goto " .. proc.defs[1].def_label
+        .. " ::start::"
     end
     local saved_proc, saved_loops = cur_proc, loops
     cur_proc = proc
@@ -505,6 +552,28 @@ function M.assemble(prog, chunkname, out, uses_stop)
   if #arrs > 0 then info[#info + 1] = "arrays = {" .. table.concat(arrs, ", ") .. "}" end
   if #arrs > 0 and prog.option_base == 1 then info[#info + 1] = "base = 1" end
   if uses_stop then info[#info + 1] = "stops = true" end
+  -- TYPEs: the template of each record (0, "", NUL bytes, nested records)
+  local tnames = {}
+  for name in pairs(prog.types) do tnames[#tnames + 1] = name end
+  table.sort(tnames)
+  local function template(def)
+    local parts = {}
+    for _, f in ipairs(def.order) do
+      local fd, v = def.fields[f], "0"
+      if fd.fixed then v = X.lua_string(string.rep("\0", fd.fixed))
+      elseif fd.ty == "string" then v = '""'
+      elseif K.is_record(fd.ty) then v = template(prog.types[fd.ty:sub(5)]) end
+      parts[#parts + 1] = "[" .. X.lua_string(f) .. "] = " .. v
+    end
+    return "{" .. table.concat(parts, ", ") .. "}"
+  end
+  if #tnames > 0 then
+    local parts = {}
+    for _, name in ipairs(tnames) do
+      parts[#parts + 1] = "[" .. X.lua_string(name) .. "] = " .. template(prog.types[name])
+    end
+    info[#info + 1] = "types = {" .. table.concat(parts, ", ") .. "}"
+  end
 
   local prelude = "local _ENV = require(\"qbasic_rt\").new(_ENV, " .. X.lua_string(chunkname)
     .. ") return run(function()"

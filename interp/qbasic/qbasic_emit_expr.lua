@@ -94,11 +94,26 @@ function M.call_args(proc, args)
   local t = {}
   for i, a in ipairs(args) do
     local p = proc.params[i]
-    if p.array then t[i] = lua_name(a) else t[i] = convert(a, p.ty) end
+    if p.array then t[i] = lua_name(a)
+    elseif K.is_record(p.ty) then t[i] = (emit_value(a, 0))   -- by reference: the table
+    else t[i] = convert(a, p.ty) end
   end
   return table.concat(t, ", ")
 end
 local call_args = M.call_args
+
+-- a field of a record: base.x (["x"] for a name Lua reserves)
+function M.field(e)
+  local code = e.base.k == "index" and M.index(e.base) or lua_name(e.base)
+  for _, f in ipairs(e.path) do
+    if K.LUA_KEYWORDS[f] or not f:match("^[%a_][%w_]*$") then
+      code = code .. "[" .. lua_string(f) .. "]"
+    else
+      code = code .. "." .. f
+    end
+  end
+  return code
+end
 
 function M.index(e)
   local parts = { lua_name(e) }
@@ -120,6 +135,8 @@ function M.value(e, min, exact)
     return lua_name(e), 20
   elseif k == "index" then
     return M.index(e), 20
+  elseif k == "field" then
+    return M.field(e), 20
   elseif k == "neg" then
     local ex = exact or e.ty == "double"
     local a = emit_value(e.a, 12, ex)
@@ -129,8 +146,8 @@ function M.value(e, min, exact)
     local op = e.op
     local ex = exact or e.ty == "double"
     if e.ty == "string" then
-      local code = emit_value(e.a, 10, ex) .. " .. " .. emit_value(e.b, 9, ex)
-      return wrap(code, 9, min), 9
+      -- (checked: a QBasic string has at most 32,767 characters)
+      return "cat(" .. emit_value(e.a, 0, ex) .. ", " .. emit_value(e.b, 0, ex) .. ")", 20
     end
     if op == "+" or op == "-" then
       local code = emit_value(e.a, 10, ex) .. " " .. op .. " " .. emit_value(e.b, 11, ex)
@@ -246,7 +263,9 @@ local function exact_single(e)
   e = strip(e)
   local k = e.k
   if k == "num" then return f32(e.v) == e.v end
-  if k == "var" or k == "index" or k == "result" then return e.ty == "single" or e.ty == "int" end
+  if k == "var" or k == "index" or k == "result" or k == "field" then
+    return e.ty == "single" or e.ty == "int"
+  end
   if k == "neg" then return exact_single(e.a) end
   if k == "call" then
     if e.fn == "rnd" or e.fn == "csng" or e.fn == "cint" or e.fn == "sgn" or e.fn == "point"
@@ -261,7 +280,8 @@ end
 local function exact_int(e)
   e = strip(e)
   if e.k == "num" then return e.ty == "int" end
-  if e.k == "var" or e.k == "index" or e.k == "result" or e.k == "ucall" or e.k == "fncall" then
+  if e.k == "var" or e.k == "index" or e.k == "result" or e.k == "ucall" or e.k == "fncall"
+      or e.k == "field" then
     return e.ty == "int"
   end
   if e.k == "call" then
@@ -306,7 +326,7 @@ function M.convert(e, ty)
   if ty == "long" then
     local s = strip(e)
     if exact_int(e) or (s.k == "num" and s.ty == "long")
-        or ((s.k == "var" or s.k == "index") and s.ty == "long") then
+        or ((s.k == "var" or s.k == "index" or s.k == "field") and s.ty == "long") then
       return (emit_value(e, 0))
     end
     return "clng(" .. emit_value(e, 0) .. ")"
@@ -315,6 +335,7 @@ function M.convert(e, ty)
 end
 
 function M.lvalue(t)
+  if t.k == "field" then return M.field(t) end
   if t.k == "var" then return lua_name(t)
   elseif t.k == "index" then return M.index(t)
   elseif t.k == "result" then return t.proc.result end
@@ -322,5 +343,13 @@ function M.lvalue(t)
 end
 
 emit_value, emit_cond, convert = M.value, M.cond, M.convert
+
+-- the code of e stored into target: converted to its type, a fixed-length string padded or
+-- cut to its length, a record copied (QBasic assigns records by value)
+function M.store(e, target)
+  if target.fixed then return "fixstr(" .. emit_value(e, 0) .. ", " .. target.fixed .. ")" end
+  if K.is_record(target.ty) then return "rec_copy(" .. emit_value(e, 0) .. ")" end
+  return convert(e, target.ty)
+end
 
 return M

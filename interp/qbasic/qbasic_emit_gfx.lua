@@ -166,6 +166,7 @@ function M.input(st)
     elseif t.ty == "single" then code = "csng(" .. v .. ")"
     elseif t.ty == "int" then code = "cint(" .. v .. ")"
     else code = "clng(" .. v .. ")" end
+    if t.fixed then code = "fixstr(" .. code .. ", " .. t.fixed .. ")" end
     parts[#parts + 1] = X.lvalue(t) .. " = " .. code
   end
   E(st.line, table.concat(parts, " ") .. " end")
@@ -187,6 +188,17 @@ function M.print(st)
   end
   if not st.newline then args[#args + 1] = "nonl" end
   E(st.line, "qprint(" .. table.concat(args, ", ") .. ")")
+end
+
+-- PRINT USING: the runtime formats the values (qbasic_using.lua)
+function M.print_using(st)
+  local args = { (value(st.format, 0)) }
+  for _, v in ipairs(st.values) do
+    if v.ty == "double" then args[#args + 1] = "dbl(" .. value(v, 0, true) .. ")"
+    else args[#args + 1] = (value(v, 0)) end
+  end
+  if not st.newline then args[#args + 1] = "nonl" end
+  E(st.line, "qprint_using(" .. table.concat(args, ", ") .. ")")
 end
 
 return M

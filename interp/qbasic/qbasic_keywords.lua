@@ -32,7 +32,11 @@ K.AS_TYPES = { integer = "int", long = "long", single = "single", double = "doub
   string = "string" }
 K.NUM_RANK = { int = 1, long = 2, single = 3, double = 4 }
 -- the letter a Lua name gets when two variables differ by their suffix only (a, a_s)
-K.SFX_NAME = { int = "i", long = "l", single = "f", double = "d", string = "s", record = "r" }
+K.SFX_NAME = { int = "i", long = "l", single = "f", double = "d", string = "s" }
+-- A record (TYPE ... END TYPE) has the type "rec:name"; its key suffix is "@", its name letter r
+function K.is_record(ty) return ty ~= nil and ty:sub(1, 4) == "rec:" end
+function K.suffix(ty) return K.SUFFIX_OF_TYPE[ty] or "@" end
+function K.name_letter(ty) return K.SFX_NAME[ty] or "r" end
 -- bytes of an element, for GET's room check and the record sizes of TYPE
 K.BYTES = { int = 2, long = 4, single = 4, double = 8 }
 
@@ -93,11 +97,13 @@ K.RT_STATEMENTS = {
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
 }
 
+-- QBasic's strings are at most 32,767 characters
+K.MAX_STRING = 32767
+
 -- statements pointcalc knows but does not implement: named in the error
 K.UNSUPPORTED_STMTS = {
   open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", on = "ON",
-  error = "ERROR", resume = "RESUME", chain = "CHAIN", common = "COMMON", type = "TYPE",
-  static = "STATIC", erase = "ERASE", ["mid$"] = "MID$ statement",
+  error = "ERROR", resume = "RESUME", chain = "CHAIN", common = "COMMON",
   poke = "POKE", out = "OUT", wait = "WAIT", shell = "SHELL",
   kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
   rmdir = "RMDIR", field = "FIELD", lset = "LSET", rset = "RSET", seek = "SEEK",

@@ -7,6 +7,7 @@
 --   kw    v = lower-case keyword, with its "$" for string functions (left$, chr$, ...)
 --   op    v = one of + - * / \ ^ = < > <= >= <> ( ) , ; : #
 --   data  items = {{text=, quoted=}, ...}   everything after DATA up to an unquoted ':'
+--   field v = ".x" after ")" without its dot (a(i).x; a.x alone is one id, split later)
 --   eol   the end of the line; rem = true when a comment ended it
 -- Every token has col, its 1-based column.
 local M = {}
@@ -206,6 +207,12 @@ function M.line(s)
       elseif c == "?" then
         toks[#toks + 1] = { t = "kw", v = "print", col = col }
         i = i + 1
+      elseif c == "." and s:sub(i + 1, i + 1):match("%a") and #toks > 0
+          and toks[#toks].t == "op" and toks[#toks].v == ")" then
+        -- a(i).x: a field of an array element of a TYPE (a.x alone lexes as one name)
+        local name = s:match("^[%a][%w%.]*", i + 1)
+        toks[#toks + 1] = { t = "field", v = name:lower(), col = col }
+        i = i + 1 + #name
       else
         lex_error("Syntax error", col)
       end

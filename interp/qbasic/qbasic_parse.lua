@@ -55,7 +55,7 @@ end
 
 function M.parse(source)
   local prog = { lines = split_lines(source), main = {}, procs = {}, data = {},
-    data_labels = {}, labels = {}, label_list = {}, option_base = 0 }
+    data_labels = {}, labels = {}, label_list = {}, option_base = 0, types = {} }
   local all_toks = lex_all(prog)
   local P = expr_parser.cursor(prog)
   local err, expr, opt_expr = P.err, P.expr, P.opt_expr
@@ -88,11 +88,23 @@ function M.parse(source)
     end
     return args, i
   end
-  local function as_type()       -- after AS: INTEGER, LONG, SINGLE, DOUBLE, STRING
+  -- after AS: INTEGER, LONG, SINGLE, DOUBLE, STRING [* n], or a TYPE declared above;
+  -- returns the type ("rec:name" for a TYPE) and the length of a fixed-length string
+  local function as_type(allow_fixed)
     local ty = nexttok()
-    if ty.t ~= "kw" or not K.AS_TYPES[ty.v] then
-      if ty.t == "id" then P.unsupported("user-defined TYPE") end
-      err()
+    if ty.t == "id" and not ty.sfx then
+      if not prog.types[ty.v] then err("Type not defined") end
+      return "rec:" .. ty.v
+    end
+    if ty.t ~= "kw" or not K.AS_TYPES[ty.v] then err() end
+    if ty.v == "string" and accept_op("*") then
+      local n = nexttok()
+      if n.t ~= "num" or n.v ~= math.floor(n.v) or n.v < 1 or n.v > K.MAX_STRING then
+        if n.t == "id" then P.unsupported("fixed-length STRING with a CONST length") end
+        err()
+      end
+      if not allow_fixed then err() end
+      return "string", n.v
     end
     return K.AS_TYPES[ty.v]
   end
@@ -238,8 +250,8 @@ function M.parse(source)
         expect_op(")")
         items[#items + 1] = { k = which, e = e }
         last_sep = nil
-      elseif is_kw("using") then
-        P.unsupported("PRINT USING")
+      elseif is_kw("using") and #items == 0 then
+        return STMT.print_using()
       elseif is_op("#") then
         P.unsupported("PRINT #")
       else
@@ -248,6 +260,19 @@ function M.parse(source)
       end
     end
     return add({ k = "print", items = items, newline = last_sep == nil })
+  end
+  -- PRINT USING fmt$; values: the values separated by ; or , (both only separate here)
+  function STMT.print_using()
+    P.pos = P.pos + 1
+    local st = { k = "print_using", format = expr(), values = {}, newline = true }
+    if not accept_op(";") then expect_op(",") end
+    while not at_end() do
+      st.values[#st.values + 1] = expr()
+      st.newline = true
+      if accept_op(";") or accept_op(",") then st.newline = false
+      elseif not at_end() then err() end
+    end
+    return add(st)
   end
   function STMT.screen()
     local args = arg_list(4)
@@ -367,7 +392,8 @@ function M.parse(source)
     return view_graphics()
   end
 
-  local function parse_dim(redim)
+  -- DIM, REDIM and STATIC (kind "static": the variables of a procedure that keep their values)
+  local function parse_dim(redim, kind)
     local shared = accept_kw("shared")
     if shared and P.cur_proc then err() end
     local decls = {}
@@ -388,13 +414,12 @@ function M.parse(source)
         expect_op(")")
       end
       if accept_kw("as") then
-        d.as = as_type()
+        d.as, d.fixed = as_type(true)
         if t.sfx then err() end
-        if d.as == "string" and accept_op("*") then P.unsupported("fixed-length STRING") end
       end
       decls[#decls + 1] = d
     until not accept_op(",")
-    return add({ k = "dim", decls = decls, shared = shared, redim = redim,
+    return add({ k = kind or "dim", decls = decls, shared = shared, redim = redim,
       base = prog.option_base })
   end
   function STMT.dim() return parse_dim(false) end
@@ -466,7 +491,7 @@ function M.parse(source)
     elseif what.v == "sub" then add({ k = "endsub" }); end_proc("sub"); return
     elseif what.v == "function" then add({ k = "endfunction" }); end_proc("function"); return
     elseif what.v == "def" then add({ k = "enddef" }); end_proc("deffn"); return
-    elseif what.v == "type" then P.unsupported("TYPE") end
+    elseif what.v == "type" then err("END TYPE without TYPE") end
     err()
   end
   function STMT.stop() return add({ k = "end" }) end
@@ -525,22 +550,76 @@ function M.parse(source)
     repeat labels[#labels + 1] = P.label_name(nexttok()) until not accept_op(",")
     return add({ k = "on", expr = e, labels = labels, gosub = gosub })
   end
-  local function static_proc()
-    if accept_kw("static") then P.unsupported("STATIC procedures") end
+  -- SUB name (...) STATIC: every variable of the procedure keeps its value between calls
+  local function static_proc(proc)
+    if accept_kw("static") then proc.static_all = true end
   end
   function STMT.sub()
     local n = nexttok()
     if n.t ~= "id" or n.sfx then err() end
     local proc = begin_proc("sub", n)
-    static_proc()
+    static_proc(proc)
     enter(proc)
   end
   STMT["function"] = function()
     local n = nexttok()
     if n.t ~= "id" then err() end
     local proc = begin_proc("function", n)
-    static_proc()
+    static_proc(proc)
     enter(proc)
+  end
+  function STMT.static()
+    if not P.cur_proc then err("Illegal outside of SUB, FUNCTION or DEF FN") end
+    return parse_dim(false, "static")
+  end
+  function STMT.erase()
+    local arrays = {}
+    repeat
+      local t = nexttok()
+      if t.t ~= "id" then err() end
+      arrays[#arrays + 1] = P.name_node("arrayref", t, { whole = true })
+    until not accept_op(",")
+    return add({ k = "erase", arrays = arrays })
+  end
+  -- MID$(s$, start[, n]) = t$: characters of s$ replaced in place
+  STMT["mid$"] = function()
+    expect_op("(")
+    local st = { k = "midset", target = P.lvalue() }
+    expect_op(",")
+    st.start = expr()
+    if accept_op(",") then st.len = expr() end
+    expect_op(")")
+    expect_op("=")
+    st.expr = expr()
+    return add(st)
+  end
+  -- TYPE name ... END TYPE: the lines between are fields (qbasic_parse's line loop)
+  function STMT.type()
+    if P.cur_proc then err("Illegal in procedure") end
+    local n = nexttok()
+    if n.t ~= "id" or n.sfx then err() end
+    if prog.types[n.v] then err("Duplicate definition") end
+    P.in_type = { name = n.v, text = n.text, fields = {}, order = {}, line = P.lineno }
+  end
+  -- a line inside TYPE ... END TYPE: "name AS type", or END TYPE
+  local function type_line()
+    local def = P.in_type
+    local t = peek()
+    if t.t == "eol" then return end
+    if t.t == "kw" and t.v == "end" and is_kw("type", 1) then
+      P.pos = P.pos + 2
+      if #def.order == 0 then err("Element not defined") end
+      prog.types[def.name] = def
+      P.in_type = nil
+      return
+    end
+    local f = nexttok()
+    if f.t ~= "id" or f.sfx or f.v:find(".", 1, true) then err() end
+    if def.fields[f.v] then err("Duplicate definition") end
+    expect_kw("as")
+    local ty, fixed = as_type(true)
+    def.fields[f.v] = { name = f.v, ty = ty, fixed = fixed }
+    def.order[#def.order + 1] = f.v
   end
   function STMT.def()
     local n = nexttok()
@@ -755,6 +834,11 @@ function M.parse(source)
     P.lineno = i
     P.toks, P.pos = all_toks[i], 1
     local t = peek()
+    if P.in_type then
+      type_line()
+      if peek().t ~= "eol" then err() end
+      goto next_line
+    end
     if t.t == "num" then
       P.pos = P.pos + 1
       record_label(P.label_name(t))
@@ -763,7 +847,9 @@ function M.parse(source)
       record_label(t.v)
     end
     parse_stmt_list(nil, false)
+    ::next_line::
   end
+  if P.in_type then err("TYPE without END TYPE", P.in_type.line) end
   local cur = P.cur_proc
   if cur then
     err(cur.kind == "sub" and "SUB without END SUB" or cur.kind == "function"

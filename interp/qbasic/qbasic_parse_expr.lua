@@ -8,6 +8,7 @@
 --   var {name, sfx, text}  index {name, sfx, text, args}  arrayref {name, sfx, text}  (a())
 --   call {fn, args} (built-in)  ucall {name, sfx, args} (FUNCTION)  fncall (DEF FN)
 --   result {name, proc} (a FUNCTION's name assigned inside it)
+--   field {base, path} (a(i).x; the resolve pass makes p.x of a record variable one too)
 -- Names carry proc (the procedure they appear in, nil in the module) and line.
 local K = require "qbasic_keywords"
 
@@ -113,7 +114,7 @@ function M.cursor(prog)
           return name_node("arrayref", t)
         end
         P.pos = P.pos + 1
-        return name_node("index", t, { args = P.args() })
+        return P.fields(name_node("index", t, { args = P.args() }))
       end
       return name_node("var", t)
     elseif t.t == "kw" then
@@ -200,9 +201,20 @@ function M.cursor(prog)
       P.pos = P.pos + 1
       local args = P.args()
       if #args == 0 then P.err() end
-      return name_node("index", t, { args = args, lvalue = true })
+      return P.fields(name_node("index", t, { args = args, lvalue = true }))
     end
     return name_node("var", t, { lvalue = true })
+  end
+
+  -- a(i).x.y: fields of a record element (a.x of a scalar lexes as one name: the resolve pass
+  -- splits it)
+  function P.fields(base)
+    local t = P.peek()
+    if t.t ~= "field" then return base end
+    P.pos = P.pos + 1
+    local path = {}
+    for f in t.v:gmatch("[^%.]+") do path[#path + 1] = f end
+    return { k = "field", base = base, path = path, lvalue = base.lvalue, line = P.lineno }
   end
 
   -- (x, y) or STEP (x, y)

@@ -17,7 +17,8 @@ function M.resolve(prog)
   prog.consts, prog.shared, prog.shared_arrays = {}, {}, {}
   local deftype = {}
   for c = string.byte("a"), string.byte("z") do deftype[string.char(c)] = "single" end
-  local main_scope = { kind = "main", as_scalar = {}, as_array = {}, shared = {} }
+  local main_scope = { kind = "main", as_scalar = {}, as_array = {}, shared = {}, fixed = {},
+    fixed_array = {}, static = {} }
   local scope = main_scope
   local line = 0             -- the line of the statement being checked
   local calls = {}           -- calls of procedures, checked when every signature is known
@@ -28,10 +29,17 @@ function M.resolve(prog)
   local function type_of_name(n, is_array)
     if n.sfx then return TYPE_OF_SUFFIX[n.sfx] end
     local as = is_array and scope.as_array or scope.as_scalar
-    if as[n.name] then return as[n.name] end
+    if as[n.name] then
+      -- a fixed-length string (DIM s AS STRING * 8): stores pad or cut it to its length
+      n.fixed = (is_array and scope.fixed_array or scope.fixed)[n.name]
+      return as[n.name]
+    end
     if scope ~= main_scope then
       local sas = is_array and prog.shared_arrays or prog.shared
-      if sas[n.name] and sas[n.name].as then return sas[n.name].as end
+      if sas[n.name] and sas[n.name].as then
+        n.fixed = sas[n.name].fixed
+        return sas[n.name].as
+      end
     end
     return deftype[n.name:sub(1, 1)]
   end
@@ -47,6 +55,7 @@ function M.resolve(prog)
   local function opt_num(e) if e then num(e) end end
 
   local function arith_type(a, b, op)
+    if K.is_record(a.ty) or K.is_record(b.ty) then err("Type mismatch") end
     if a.ty == "string" or b.ty == "string" then
       if op == "+" and a.ty == "string" and b.ty == "string" then return "string" end
       err("Type mismatch")
@@ -99,6 +108,17 @@ function M.resolve(prog)
   function TYPE.str() return "string" end
   function TYPE.paren(e) return expr(e.a) end
   function TYPE.var(e)
+    local dot = e.name:find(".", 1, true)
+    if dot and not e.sfx then
+      -- p.x where p is a record variable: a field (else p.x is an ordinary name, as in QBasic)
+      local base = { k = "var", name = e.name:sub(1, dot - 1), text = e.text:sub(1, dot - 1),
+        proc = e.proc, line = e.line, lvalue = e.lvalue }
+      if K.is_record(type_of_name(base, false)) then
+        e.k, e.base, e.path = "field", base, {}
+        for f in e.name:sub(dot + 1):gmatch("[^%.]+") do e.path[#e.path + 1] = f end
+        return TYPE.field(e)
+      end
+    end
     local c = prog.consts[e.name]
     if c and (not e.sfx or TYPE_OF_SUFFIX[e.sfx] == c.ty) then
       if e.lvalue then err("Duplicate definition") end
@@ -113,6 +133,17 @@ function M.resolve(prog)
     return ty
   end
   -- a() is a whole array: an argument of a SUB or FUNCTION, LBOUND or UBOUND, nothing else
+  -- a field of a record: its TYPE's declaration gives its type (Element not defined if none)
+  function TYPE.field(e)
+    local ty = expr(e.base)
+    for _, f in ipairs(e.path) do
+      if not K.is_record(ty) then err("Type mismatch") end
+      local field = prog.types[ty:sub(5)].fields[f]
+      if not field then err("Element not defined") end
+      ty, e.fixed = field.ty, field.fixed
+    end
+    return ty
+  end
   function TYPE.arrayref(e)
     if not e.whole then err() end
     return type_of_name(e, true)
@@ -146,7 +177,11 @@ function M.resolve(prog)
   M.expr = expr
 
   local function coords(p) num(p.x); num(p.y) end
-  local function same_kind(a, b) if (a.ty == "string") ~= (b.ty == "string") then err("Type mismatch") end end
+  local function same_kind(a, b)
+    if (a.ty == "string") ~= (b.ty == "string") then err("Type mismatch") end
+    if (K.is_record(a.ty) or K.is_record(b.ty)) and a.ty ~= b.ty then err("Type mismatch") end
+  end
+  local function no_record(e) if K.is_record(e.ty) then err("Type mismatch") end end
 
   -- ---- statements -------------------------------------------------------------------------
   local CHECK = {}
@@ -155,7 +190,7 @@ function M.resolve(prog)
   function CHECK.let(st) expr(st.target); expr(st.expr); same_kind(st.target, st.expr) end
   function CHECK.print(st)
     for _, it in ipairs(st.items) do
-      if it.k == "expr" then expr(it.e) elseif it.k == "tab" or it.k == "spc" then num(it.e) end
+      if it.k == "expr" then expr(it.e); no_record(it.e) elseif it.k == "tab" or it.k == "spc" then num(it.e) end
     end
   end
   function CHECK.rtcall(st)
@@ -196,13 +231,24 @@ function M.resolve(prog)
       for _, b in ipairs(d.bounds or {}) do opt_num(b.lo); num(b.hi) end
       if d.as then
         if d.bounds then scope.as_array[d.name] = d.as else scope.as_scalar[d.name] = d.as end
+        if d.bounds then scope.fixed_array[d.name] = d.fixed else scope.fixed[d.name] = d.fixed end
       end
+      if st.k == "static" then scope.static[(d.bounds and "()" or "") .. d.name] = true end
       d.ty = type_of_name(d, d.bounds ~= nil)
       if st.shared then
         local t = d.bounds and prog.shared_arrays or prog.shared
-        t[d.name] = { as = d.as }
+        t[d.name] = { as = d.as, fixed = d.fixed }
       end
     end
+  end
+  CHECK.static = CHECK.dim
+  function CHECK.erase(st) for _, a in ipairs(st.arrays) do expr(a) end end
+  function CHECK.midset(st)
+    str(st.target); num(st.start); opt_num(st.len); str(st.expr)
+  end
+  function CHECK.print_using(st)
+    str(st.format)
+    for _, v in ipairs(st.values) do expr(v); no_record(v) end
   end
   function CHECK.const(st)
     for _, d in ipairs(st.decls) do
@@ -215,9 +261,9 @@ function M.resolve(prog)
       prog.consts[n.v] = d.const
     end
   end
-  function CHECK.read(st) for _, t in ipairs(st.targets) do expr(t) end end
+  function CHECK.read(st) for _, t in ipairs(st.targets) do expr(t); no_record(t) end end
   CHECK.input = function(st)
-    for _, t in ipairs(st.targets) do expr(t) end
+    for _, t in ipairs(st.targets) do expr(t); no_record(t) end
     if st.line_input and st.targets[1].ty ~= "string" then err("Type mismatch") end
   end
   CHECK["for"] = function(st)
@@ -299,10 +345,13 @@ function M.resolve(prog)
   -- result and parameter types
   function CHECK.procdef(st)
     local proc = st.proc
-    scope = { kind = proc.kind, as_scalar = {}, as_array = {}, shared = {} }
+    scope = { kind = proc.kind, as_scalar = {}, as_array = {}, shared = {}, fixed = {},
+      fixed_array = {}, static = {} }
     if proc.kind == "deffn" then
       setmetatable(scope.as_scalar, { __index = main_scope.as_scalar })
       setmetatable(scope.as_array, { __index = main_scope.as_array })
+      setmetatable(scope.fixed, { __index = main_scope.fixed })
+      setmetatable(scope.fixed_array, { __index = main_scope.fixed_array })
     end
     proc.scope = scope
     if proc.kind ~= "sub" then proc.ty = fn_result_type(proc) end
@@ -353,6 +402,9 @@ function M.resolve(prog)
       else
         if s.k == "arrayref" then err("Parameter type mismatch") end
         if (p.ty == "string") ~= (s.ty == "string") then err("Type mismatch") end
+        if (K.is_record(p.ty) or K.is_record(s.ty)) and s.ty ~= p.ty then
+          err("Parameter type mismatch")
+        end
         if ((s.k == "var" and not s.const) or s.k == "index") and s.ty ~= p.ty then
           err("Parameter type mismatch")
         end

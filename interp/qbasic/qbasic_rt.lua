@@ -22,6 +22,8 @@ M.names = {
   "qprint", "zone", "nonl", "tab", "spc", "dbl", "lng", "screen", "cls", "color", "palette",
   "pset", "preset", "line", "line_to", "circle", "paint", "point", "window", "view", "step_xy",
   "stop", "return_without_gosub", "on_index", "run", "case", "on", "start", "_ENV", "_",
+  "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
+  "mid_set", "static_new", "qprint_using",
 }
 local screen_rt = require("qbasic_screen")
 for _, n in ipairs(screen_rt.names) do M.names[#M.names + 1] = n end
@@ -347,8 +349,14 @@ function M.new(host, chunkname)
       error("Subscript out of range", 2)
     end
     local t = {}
+    mt.default = default
     if k == #bounds then
-      for i = lo, hi do t[i] = default end
+      -- a function default makes each element afresh (records: one table each)
+      if type(default) == "function" then
+        for i = lo, hi do t[i] = default() end
+      else
+        for i = lo, hi do t[i] = default end
+      end
     else
       for i = lo, hi do t[i] = make_array(bounds, k + 1, default) end
     end
@@ -373,6 +381,67 @@ function M.new(host, chunkname)
   end
   function E.dim(...) local a = dim(0, 2, ...) return a end
   function E.dim_str(...) local a = dim("", 2, ...) return a end
+
+  -- ---- fixed-length strings, records, ERASE, STATIC ------------------------------------------
+  local MAX_STRING = 32767
+  -- s + t: QBasic's strings have at most 32,767 characters
+  function E.cat(a, b)
+    if #a + #b > MAX_STRING then error("String formula too complex", 2) end
+    return a .. b
+  end
+  -- a store into a STRING * n: padded with spaces or cut to n characters
+  function E.fixstr(v, n)
+    if #v >= n then return v:sub(1, n) end
+    return v .. string.rep(" ", n - #v)
+  end
+  -- a fixed-length string nobody assigned holds NUL bytes, as in QBasic
+  function E.fixed_init(n) return string.rep("\0", n) end
+  function E.dim_fixed(n, ...) local a = dim(string.rep("\0", n), 2, ...) return a end
+  -- records (TYPE ... END TYPE): a table per record, made from its type's template
+  local types = {}
+  local function copy(t)
+    local c = {}
+    for k, v in pairs(t) do c[k] = type(v) == "table" and copy(v) or v end
+    return c
+  end
+  function E.record(name) return copy(types[name]) end
+  function E.rec_copy(r) return copy(r) end
+  function E.dim_rec(name, ...)
+    local template = types[name]
+    local a = dim(function() return copy(template) end, 2, ...)
+    return a
+  end
+  -- ERASE: every element back to its first value (0, "", NUL bytes, an empty record)
+  local function erase(t)
+    local mt = getmetatable(t)
+    if not mt or not mt.lo then error("Type mismatch", 3) end
+    for i = mt.lo, mt.hi do
+      local v = rawget(t, i)
+      if type(v) == "table" and getmetatable(v) and getmetatable(v).lo then erase(v)
+      elseif type(mt.default) == "function" then rawset(t, i, mt.default())
+      else rawset(t, i, mt.default) end
+    end
+  end
+  function E.erase(t) erase(t) end
+  -- MID$(s, start, n) = t: the characters from start replaced, the length kept
+  function E.mid_set(s, start, n, t)
+    start = long(start, 2)
+    if start < 1 or start > #s then error(IFC, 2) end
+    local k = #t
+    if n ~= nil then
+      n = count(n, 2)
+      if n < k then k = n end
+    end
+    if k > #s - start + 1 then k = #s - start + 1 end
+    return s:sub(1, start - 1) .. t:sub(1, k) .. s:sub(start + k)
+  end
+  -- STATIC arrays, records and fixed strings are made on the first call of their procedure
+  local made = {}
+  function E.static_new(name)
+    if made[name] then return false end
+    made[name] = true
+    return true
+  end
   local function bound(a, n, which, level)
     n = n and long(n, level + 1) or 1
     local t = a
@@ -472,6 +541,19 @@ function M.new(host, chunkname)
         end
       end
     end
+    if newline then write("\n") end
+  end
+  -- PRINT USING fmt$; values (qbasic_using.lua); a last nonl: no new line
+  local using = require("qbasic_using")
+  local function using_error(msg) error(msg, 4) end
+  function E.qprint_using(fmt, ...)
+    local values = { ... }
+    local newline = true
+    if values[#values] == NONL then values[#values] = nil; newline = false end
+    for i, v in ipairs(values) do
+      if type(v) == "table" and v[MARK] == "double" then values[i] = { double = v.v } end
+    end
+    write(using.format(fmt, values, using_error))
     if newline then write("\n") end
   end
 
@@ -648,6 +730,7 @@ function M.new(host, chunkname)
       end
     end
     data_labels = info.data_labels or {}
+    types = info.types or {}
     local strings = {}
     for _, s in ipairs(info.strings or {}) do strings[s] = true end
     local arrays = info.arrays or {}

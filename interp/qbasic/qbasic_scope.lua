@@ -13,7 +13,7 @@ local rt = require "qbasic_rt"
 
 local M = {}
 
-local SFX, SFX_NAME = K.SUFFIX_OF_TYPE, K.SFX_NAME
+
 
 local function qerr(msg, line) error({ qb = true, msg = msg, line = line }, 0) end
 
@@ -46,7 +46,7 @@ local function is_array_node(node)
 end
 local function key_of(node)
   local arr = is_array_node(node)
-  return (arr and "()" or "") .. node.name .. SFX[node.ty], arr
+  return (arr and "()" or "") .. node.name .. K.suffix(node.ty), arr
 end
 
 function M.scope(prog)
@@ -66,7 +66,7 @@ function M.scope(prog)
   for _, proc in ipairs(prog.procs) do
     proc.paramkeys = {}
     for i, p in ipairs(proc.params) do
-      p.key = (p.array and "()" or "") .. p.name .. SFX[p.ty]
+      p.key = (p.array and "()" or "") .. p.name .. K.suffix(p.ty)
       p.index = i
       proc.paramkeys[p.key] = p
     end
@@ -88,8 +88,14 @@ function M.scope(prog)
     if proc.paramkeys[key] then return "param", proc.paramkeys[key] end
     if proc.kind == "deffn" then return "global" end
     if is_shared(proc, node) then return "global" end
+    -- STATIC variables keep their values between calls: module variables of their own name
+    if proc.static_all or proc.scope.static[(is_array_node(node) and "()" or "") .. node.name] then
+      return "static"
+    end
     return "local"
   end
+  prog.classify = classify
+  local function static_key(node) return node.proc.lua .. ":" .. key_of(node) end
 
   local globals, global_list = {}, {}
   local function note(node, proc)
@@ -104,12 +110,17 @@ function M.scope(prog)
     if class == "const" or class == "param" then return end
     local key, arr = key_of(node)
     local info
-    if class == "global" then
+    if class == "global" or class == "static" then
+      local text = node.text
+      if class == "static" then
+        key = static_key(node)
+        text = clean(node.proc.text) .. "_" .. node.text
+      end
       if node.proc then node.proc.global_refs[key] = true end
       info = globals[key]
       if not info then
-        info = { key = key, array = arr, ty = node.ty, text = node.text, name = node.name,
-          rank = nil, dimmed = false }
+        info = { key = key, array = arr, ty = node.ty, text = text, name = node.name,
+          rank = nil, dimmed = false, fixed = node.fixed }
         globals[key] = info
         global_list[#global_list + 1] = info
       end
@@ -117,7 +128,7 @@ function M.scope(prog)
       info = node.proc.locals[key]
       if not info then
         info = { key = key, array = arr, ty = node.ty, text = node.text, name = node.name,
-          rank = nil, dimmed = false }
+          rank = nil, dimmed = false, fixed = node.fixed }
         node.proc.locals[key] = info
         node.proc.local_list[#node.proc.local_list + 1] = info
       end
@@ -140,7 +151,7 @@ function M.scope(prog)
   local function var_cands(info)
     local base = clean(info.text, info.name)
     if info.array then return { base, base .. "_arr" } end
-    return { base, base .. "_" .. SFX_NAME[info.ty] }
+    return { base, base .. "_" .. K.name_letter(info.ty) }
   end
   local function plain(info) return not info.text:match("[%$%%&!#]$") end
   local function name_all(list, ns)
@@ -161,10 +172,11 @@ function M.scope(prog)
     -- module variables this procedure uses (SHARED, or any for DEF FN) keep their names
     for key in pairs(proc.global_refs) do ns[globals[key].lua:lower()] = true end
     for _, p in ipairs(proc.params) do
-      p.lua = alloc(ns, { clean(p.text, p.name), clean(p.text, p.name) .. "_" .. SFX_NAME[p.ty] })
+      p.lua = alloc(ns, { clean(p.text, p.name), clean(p.text, p.name) .. "_" .. K.name_letter(p.ty) })
     end
     if proc.kind ~= "sub" and not proc.expr then proc.result = alloc(ns, { proc.lua .. "_result" }) end
     name_all(proc.local_list, ns)
+    proc.ns = ns       -- for the names of the procedure's GOSUB subroutines (qbasic_control)
     local nscalars = proc.result and 1 or 0
     for _, info in ipairs(proc.local_list) do if not info.array then nscalars = nscalars + 1 end end
     if nscalars > 180 then   -- Lua's limit of 200 locals a function
@@ -178,6 +190,7 @@ function M.scope(prog)
     if class == "param" then return p.lua end
     local key = key_of(node)
     if class == "global" then return globals[key].lua end
+    if class == "static" then return globals[static_key(node)].lua end
     return node.proc.locals[key].lua
   end
 

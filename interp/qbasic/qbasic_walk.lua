@@ -12,6 +12,7 @@ local function expr(e, fn)
   local k = e.k
   if k == "bin" or k == "rel" or k == "logic" then expr(e.a, fn); expr(e.b, fn)
   elseif k == "neg" or k == "not" or k == "paren" then expr(e.a, fn)
+  elseif k == "field" then expr(e.base, fn)
   elseif k == "index" or k == "call" or k == "ucall" or k == "fncall" then
     for _, a in ipairs(e.args) do expr(a, fn) end
   end
@@ -29,12 +30,16 @@ function EXPRS.dim(st, x, fn)
     for _, b in ipairs(d.bounds or {}) do x(b.lo); x(b.hi) end
   end
 end
+EXPRS.static = EXPRS.dim
 function EXPRS.const(st, x) for _, d in ipairs(st.decls) do x(d.expr) end end
 function EXPRS.read(st, x) for _, t in ipairs(st.targets) do x(t) end end
 EXPRS.input = EXPRS.read
 EXPRS["for"] = function(st, x) x(st.var); x(st.from); x(st.to); x(st.step) end
 function EXPRS.if1(st, x) x(st.cond) end
 EXPRS["while"] = EXPRS.if1
+function EXPRS.midset(st, x) x(st.target); x(st.start); x(st.len); x(st.expr) end
+function EXPRS.print_using(st, x) x(st.format); for _, v in ipairs(st.values) do x(v) end end
+function EXPRS.erase(st, x, fn) for _, a in ipairs(st.arrays) do fn(a) end end
 function EXPRS.select(st, x) x(st.expr) end
 EXPRS.on, EXPRS.randomize = EXPRS.select, EXPRS.select
 function EXPRS.call(st, x) for _, a in ipairs(st.args) do x(a) end end
