@@ -216,9 +216,7 @@ function M.resolve(prog)
   end
   function CHECK.paint(st)
     coords(st.p)
-    if st.color and expr(st.color) == "string" then
-      qerr("PAINT with a tile pattern: not supported by pointcalc", line)
-    end
+    if st.color then expr(st.color); no_record(st.color) end   -- a colour or a tile string
     opt_num(st.border)
   end
   function CHECK.window(st)

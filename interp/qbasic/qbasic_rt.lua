@@ -661,6 +661,10 @@ function M.new(host, chunkname)
   end
   function E.paint(x, y, c, border)
     graphics(2)
+    if type(c) == "string" then   -- a tile: the pattern's bytes as the mode reads them
+      rt.paint_tile(coord(x, 2), coord(y, 2), c, colour(border, 2), 2)
+      return
+    end
     h_paint(coord(x, 2), coord(y, 2), colour(c, 2), colour(border, 2))
   end
   function E.point(x, y)

@@ -231,6 +231,13 @@ function M.install(E, rt)
     if s:find("[\1\2=]") then error(IFC, level + 1) end   -- X or = without VARPTR$
     return s
   end
+  -- PAINT (x, y), tile$[, border]: 1..64 bytes of pattern (Illegal function call otherwise)
+  local h_paint_tile = draw("paint_tile")
+  function rt.paint_tile(x, y, tile, border, level)
+    if #tile < 1 or #tile > 64 then error(IFC, level + 1) end
+    host(level + 1, h_paint_tile, x, y, tile, border)
+  end
+
   function E.draw(s)
     if not graphics() then error(IFC, 2) end
     host(2, h_draw, expand(s, 0, 2))

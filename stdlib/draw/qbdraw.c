@@ -12,6 +12,7 @@ void pc_draw_state_reset(pc_draw_state *st) {
     st->scale = 4;
     st->angle = 0;
     st->turn = 0;
+    st->aspect = 1;
 }
 
 typedef struct {
@@ -76,8 +77,12 @@ static int move(reader *r, double dx, double dy, int absolute, int blank, int ba
         ny = dy;
     } else {
         double k = r->st->scale / 4.0, t = r->st->turn * (3.14159265358979323846 / 180.0);
-        /* counter-clockwise on the screen (y down): U turned by 90 degrees goes left */
-        double rx = dx * cos(t) + dy * sin(t), ry = -dx * sin(t) + dy * cos(t);
+        /* counter-clockwise on the screen (y down): U turned by 90 degrees goes left.  The turn
+         * is done on the monitor, where a pixel is 1/aspect times as high as wide: vertical
+         * distances to monitor units and back (QBasic's DRAW in SCREEN 1 and 2, whose pixels
+         * are not square: "A1 R10" there is 4 pixels up, not 10) */
+        double a = r->st->aspect > 0 ? r->st->aspect : 1, my = dy / a;
+        double rx = dx * cos(t) + my * sin(t), ry = (-dx * sin(t) + my * cos(t)) * a;
         nx = r->x + rx * k;
         ny = r->y + ry * k;
     }

@@ -37,6 +37,35 @@ int pc_canvas_set_mode(pc_canvas *c, int mode) {
     return pc_canvas_reset(c, m.width, m.height, m.ncolors);
 }
 
+/* ---- PAINT tiles ------------------------------------------------------------------------ */
+
+int pc_tile_from_bytes(pc_canvas *c, const unsigned char *bytes, size_t n, pc_tile *out) {
+    if (n < 1 || n > 64) return pc_fail(c, "paint: a tile has 1..64 bytes, got %zu", n);
+    memset(out, 0, sizeof *out);
+    if (c->ncolors == 2 || c->ncolors == 4) {
+        /* packed pixels: a byte is one row, high bits leftmost */
+        int bits = c->ncolors == 2 ? 1 : 2;
+        out->w = 8 / bits;
+        out->h = (int)n;
+        for (size_t r = 0; r < n; r++)
+            for (int x = 0; x < out->w; x++)
+                out->attr[r * out->w + x] = (uint16_t)((bytes[r] >> (8 - bits * (x + 1))) & ((1 << bits) - 1));
+    } else if (c->ncolors == 16) {
+        /* planar: a row is 4 bytes, one bit plane each (blue 1, green 2, red 4, intensity 8) */
+        out->w = 8;
+        out->h = (int)((n + 3) / 4);
+        for (size_t i = 0; i < n; i++)
+            for (int x = 0; x < 8; x++)
+                if (bytes[i] & (0x80 >> x)) out->attr[(i / 4) * 8 + x] |= (uint16_t)(1 << (i % 4));
+    } else {
+        /* a byte a pixel, 8 pixels a row (a short last row: colour 0) */
+        out->w = 8;
+        out->h = (int)((n + 7) / 8);
+        for (size_t i = 0; i < n; i++) out->attr[i] = bytes[i];
+    }
+    return PC_OK;
+}
+
 /* ---- recorded pixels --------------------------------------------------------------------- */
 
 int pc_record_pixels(pc_canvas *c, int x0, int y0, int x1, int y1) {

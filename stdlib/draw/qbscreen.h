@@ -89,17 +89,42 @@ typedef struct {
     double scale;
     int angle;
     double turn;
+    double aspect;   /* the pixel aspect of the screen (CIRCLE's, 1 by default): a turned
+                        figure keeps its size on a 4:3 monitor, as QBasic's DRAW does */
 } pc_draw_state;
 void pc_draw_state_reset(pc_draw_state *st);
 
 /* Run a DRAW string from the graphics cursor: U D L R E F G H n (default 1), M x,y (absolute
  * in view pixels) and M +-x,+-y (relative), the prefixes B (move only) and N (return after),
  * C n, S n, A n, TA n, P paint,border.  Spaces and ';' separate commands.  Distances are in
- * pixels times scale/4, turned by A and TA (counter-clockwise on the screen); lines are drawn
+ * pixels times scale/4, turned by A and TA (counter-clockwise on the screen, the turn done on
+ * the monitor: in SCREEN 2 "A1 R10" goes up 10 * 0.4167 pixels, so the figure keeps its size
+ * and shape; st->aspect is that ratio); lines are drawn
  * between the rounded end points as LINE draws them, and the cursor moves to the end.  X
  * (substrings) and '=' (numbers from variables) are the caller's to expand first.  A command
  * it cannot read is PC_EARG with the position named. */
 int pc_draw_macro(pc_canvas *c, pc_draw_state *st, const char *cmds);
+
+/* ---- PAINT with a tile ------------------------------------------------------------------ */
+
+/* A paint pattern: w x h attributes, row-major, repeated over the screen from pixel 0,0. */
+typedef struct {
+    int w, h;
+    uint16_t attr[8 * 64];
+} pc_tile;
+
+/* QBasic's tile string (PAINT (x, y), tile$): n bytes (1..64) describing rows of the pattern
+ * the way the mode keeps pixels in video memory: 1 bit a pixel in SCREEN 2 (a byte is a row
+ * of 8 pixels, the high bit leftmost), 2 bits in SCREEN 1 (a byte is 4 pixels), 4 planes in
+ * the 16-colour modes (4 bytes a row of 8 pixels: blue, green, red, intensity; a short last
+ * row is completed with 0), one byte a pixel in SCREEN 13 (8 bytes a row).  PC_EARG for an
+ * empty or too long string. */
+int pc_tile_from_bytes(pc_canvas *c, const unsigned char *bytes, size_t n, pc_tile *out);
+
+/* PAINT (x, y), tile, border: the region around (x, y) bounded by the border colour (border
+ * < 0: the foreground colour) filled with the tile; the painted box is recorded as pixels
+ * for the SVG writer (raster.c). */
+int pc_paint_tile(pc_canvas *c, double x, double y, const pc_tile *tile, int border);
 
 /* ---- pages ------------------------------------------------------------------------------ */
 

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "canvas.h"
 #include "canvas_internal.h"
+#include "qbscreen.h"
 
 #define TWO_PI 6.283185307179586
 
@@ -854,13 +855,14 @@ int pc_circle(pc_canvas *c, double x, double y, double r, int color, double star
 typedef struct { int x, y; } seed;
 
 /* Scanline flood fill of the region of non-border pixels connected (4-way) to the start,
- * inside the view.  Each filled run becomes one span of the display-list operation. */
-int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
+ * inside the view, in one colour (each filled run one span of the display-list operation) or,
+ * with a tile, in the tile's pattern (the painted box recorded as pixels: qbscreen.h). */
+static int flood(pc_canvas *c, double x, double y, int color, int border, const pc_tile *tile) {
     double fx, fy;
-    int ok = pc_check_color(c, &color, c->fg);
+    int ok = tile ? PC_OK : pc_check_color(c, &color, c->fg);
     if (ok == PC_OK) ok = to_screen(c, "paint", x, y, &fx, &fy);
     if (ok != PC_OK) return ok;
-    if (border < 0) border = color;
+    if (border < 0) border = tile ? c->fg : color;
     if (!pc_valid_color(c, border))
         return pc_fail(c, "paint: border colour %d out of range 0..%d", border, c->ncolors - 1);
     set_cursor(c, x, y);
@@ -881,6 +883,7 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
         return pc_fail_code(c, PC_ENOMEM, "paint: out of memory");
     }
     uint32_t first = (uint32_t)c->nspans;
+    int bx0 = (int)sx, bx1 = (int)sx, by0 = (int)sy, by1 = (int)sy;   /* the painted box */
     stack[n++] = (seed){(int)sx, (int)sy};
 #define FILLABLE(X, Y) (!seen[(size_t)(Y) * w + (X)] && pix[(size_t)(Y) * w + (X)] != border)
     while (n > 0) {
@@ -890,8 +893,17 @@ int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
         while (xl > v.x0 && FILLABLE(xl - 1, s.y)) xl--;
         while (xr < v.x1 && FILLABLE(xr + 1, s.y)) xr++;
         memset(seen + (size_t)s.y * w + xl, 1, (size_t)(xr - xl + 1));
-        pc_fill_px(pix + (size_t)s.y * w + xl, color, (size_t)(xr - xl + 1));
-        if (pc_push_span(c, s.y, xl, xr) != PC_OK) { ok = PC_ENOMEM; break; }
+        if (tile) {   /* the tile is aligned to the screen: pixel (x, y) takes its (x, y) mod size */
+            const uint16_t *row = tile->attr + (size_t)(s.y % tile->h) * tile->w;
+            for (int xx = xl; xx <= xr; xx++) pix[(size_t)s.y * w + xx] = row[xx % tile->w];
+            if (xl < bx0) bx0 = xl;
+            if (xr > bx1) bx1 = xr;
+            if (s.y < by0) by0 = s.y;
+            if (s.y > by1) by1 = s.y;
+        } else {
+            pc_fill_px(pix + (size_t)s.y * w + xl, color, (size_t)(xr - xl + 1));
+            if (pc_push_span(c, s.y, xl, xr) != PC_OK) { ok = PC_ENOMEM; break; }
+        }
         for (int dy = -1; dy <= 1; dy += 2) {
             int yy = s.y + dy;
             if (yy < v.y0 || yy > v.y1) continue;
@@ -913,10 +925,24 @@ done:
     free(seen);
     free(stack);
     if (ok != PC_OK) return ok;
+    if (tile) return pc_record_pixels(c, bx0, by0, bx1, by1);
     pc_op *op = pc_push_op(c, PC_OP_FILL, color);
     if (!op) return PC_ENOMEM;
     op->x1 = fx; op->y1 = fy;
     op->first = first;
     op->count = (uint32_t)(c->nspans - first);
     return PC_OK;
+}
+
+int pc_paint(pc_canvas *c, double x, double y, int color, int border) {
+    return flood(c, x, y, color, border, NULL);
+}
+
+int pc_paint_tile(pc_canvas *c, double x, double y, const pc_tile *tile, int border) {
+    if (!tile || tile->w < 1 || tile->h < 1 || tile->w * tile->h > 8 * 64)
+        return pc_fail(c, "paint: the tile is empty");
+    for (int i = 0; i < tile->w * tile->h; i++)
+        if (!pc_valid_color(c, tile->attr[i]))
+            return pc_fail(c, "paint: tile colour %d out of range 0..%d", tile->attr[i], c->ncolors - 1);
+    return flood(c, x, y, -1, border, tile);
 }

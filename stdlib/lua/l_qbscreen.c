@@ -9,7 +9,8 @@
  *   pages(active [, visual])                  SCREEN , , apage, vpage
  *   pcopy(from, to)                           PCOPY
  *   pmap(value, fn)                           PMAP: fn 0/1 world -> view pixels, 2/3 back
- *   mode_info(mode) -> table                  width height colors pages cols rows cell aspect */
+ *   mode_info(mode) -> table                  width height colors pages cols rows cell aspect
+ *   paint_tile(x, y, tile [, border])         PAINT with a tile string, as the mode reads it */
 #include <math.h>
 #include <string.h>
 #include "pcl_qbscreen.h"
@@ -26,15 +27,21 @@ static int check(lua_State *L, pc_canvas *c, int rc, const char *name) {
     return pcl_error(L, "%s: %s", name, msg);
 }
 
-/* The character cell height of the screen: its mode's (8, 14, 16), or 16 for other sizes. */
-static int cell_height(const pc_canvas *c) {
+/* The mode of the screen (its size and colours), or 0 for a canvas of another size. */
+static int screen_mode(const pc_canvas *c, pc_mode_info *out) {
     static const int modes[] = {1, 2, 7, 9, 12, 13};
     for (size_t i = 0; i < sizeof modes / sizeof *modes; i++) {
-        pc_mode_info m;
-        pc_mode_info_of(modes[i], &m);
-        if (m.width == c->width && m.height == c->height && m.ncolors == c->ncolors) return m.cell_h;
+        pc_mode_info_of(modes[i], out);
+        if (out->width == c->width && out->height == c->height && out->ncolors == c->ncolors)
+            return modes[i];
     }
-    return 16;
+    return 0;
+}
+
+/* The character cell height of the screen: its mode's (8, 14, 16), or 16 for other sizes. */
+static int cell_height(const pc_canvas *c) {
+    pc_mode_info m;
+    return screen_mode(c, &m) ? m.cell_h : 16;
 }
 
 static int opt_attr(lua_State *L, int arg, pc_canvas *c, const char *what) {
@@ -149,7 +156,25 @@ static int l_draw(lua_State *L) {
     const char *s = lua_tolstring(L, 1, &n);
     if (!s || lua_type(L, 1) != LUA_TSTRING) return pcl_argerror(L, 1, "commands", "a string");
     if (strlen(s) != n) return pcl_argerror(L, 1, "commands", "a string without zero bytes");
-    return check(L, c, pc_draw_macro(c, pcl_draw_state(L), s), "draw");
+    pc_draw_state *st = pcl_draw_state(L);
+    pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
+    st->aspect = screen_mode(c, &m) ? m.aspect : 1;
+    return check(L, c, pc_draw_macro(c, st, s), "draw");
+}
+
+/* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
+static int l_paint_tile(lua_State *L) {
+    pc_canvas *c = pcl_active_canvas(L);
+    int arg = 1;
+    double x, y;
+    pcl_checkxy(L, &arg, &x, &y, "point");
+    size_t n;
+    const char *s = lua_type(L, arg) == LUA_TSTRING ? lua_tolstring(L, arg, &n) : NULL;
+    if (!s || n < 1 || n > 64) return pcl_argerror(L, arg, "tile", "a string of 1..64 bytes");
+    int border = opt_attr(L, arg + 1, c, "border");
+    pc_tile t;
+    check(L, c, pc_tile_from_bytes(c, (const unsigned char *)s, n, &t), "paint_tile");
+    return check(L, c, pc_paint_tile(c, x, y, &t, border), "paint_tile");
 }
 
 static int l_pages(lua_State *L) {
@@ -208,6 +233,7 @@ static const luaL_Reg qbscreen_functions[] = {
     {"print_at", l_print_at}, {"scroll_text", l_scroll_text}, {"get_block", l_get_block},
     {"put_block", l_put_block}, {"draw", l_draw},            {"pages", l_pages},
     {"pcopy", l_pcopy},       {"pmap", l_pmap},              {"mode_info", l_mode_info},
+    {"paint_tile", l_paint_tile},
     {NULL, NULL}};
 
 void pcl_open_qbscreen(lua_State *L) {

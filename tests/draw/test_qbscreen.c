@@ -234,6 +234,95 @@ static void test_draw(void **state) {
     pc_canvas_free(c);
 }
 
+/* DRAW turns on the monitor: in SCREEN 2 (pixels 2.4 times as high as wide) a quarter turn
+ * keeps a figure's size, so "A1 R24" goes up 24 * 0.4167 = 10 pixels and "A1 U10" left 24. */
+static void test_draw_aspect(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new_mode(2);
+    pc_draw_state st;
+    pc_draw_state_reset(&st);
+    pc_mode_info m;
+    pc_mode_info_of(2, &m);
+    st.aspect = m.aspect;
+    assert_int_equal(pc_draw_macro(c, &st, "BM100,100 C1 A1 R24 A0"), PC_OK);
+    assert_int_equal(count(c, 100, 90, 100, 100, 1), 11);   /* up 10 pixels */
+    assert_int_equal(px(c, 100, 89), 0);
+    assert_int_equal(pc_draw_macro(c, &st, "BM300,100 A1 U10 A0"), PC_OK);
+    assert_int_equal(count(c, 276, 100, 300, 100, 1), 25);  /* left 24 pixels */
+    assert_int_equal(px(c, 275, 100), 0);
+    /* not turned: no correction; a half turn neither */
+    assert_int_equal(pc_draw_macro(c, &st, "BM400,150 R10 BM400,150 A2 U10 A0"), PC_OK);
+    assert_int_equal(count(c, 400, 150, 410, 150, 1), 11);
+    assert_int_equal(count(c, 400, 150, 400, 160, 1), 11);
+    pc_canvas_free(c);
+}
+
+/* PAINT with a tile: the pattern of the mode's tile string, aligned to the screen. */
+static void test_paint_tile(void **state) {
+    (void)state;
+    /* SCREEN 12: a row is 4 bytes, bit planes blue, green, red, intensity: CHR$(&HF0) in the
+     * red plane and CHR$(&H0F) in the blue one is 4 red (4) then 4 blue (1) pixels */
+    pc_canvas *c = pc_canvas_new_mode(12);
+    pc_tile t;
+    const unsigned char rows12[] = {0x0F, 0x00, 0xF0, 0x00, 0xFF, 0xFF, 0xFF, 0xFF};
+    assert_int_equal(pc_tile_from_bytes(c, rows12, sizeof rows12, &t), PC_OK);
+    assert_int_equal(t.w, 8);
+    assert_int_equal(t.h, 2);
+    assert_int_equal(t.attr[0], 4);
+    assert_int_equal(t.attr[4], 1);
+    assert_int_equal(t.attr[8], 15);
+    assert_int_equal(pc_box(c, 16, 16, 47, 31, 14, 0), PC_OK);      /* a yellow frame */
+    assert_int_equal(pc_paint_tile(c, 30, 20, &t, 14), PC_OK);
+    assert_int_equal(px(c, 17, 18), 4);      /* x 17: 17 mod 8 = 1 (red), y 18: an even row */
+    assert_int_equal(px(c, 19, 18), 4);
+    assert_int_equal(px(c, 20, 18), 1);      /* 20 mod 8 = 4: blue */
+    assert_int_equal(px(c, 23, 18), 1);
+    assert_int_equal(px(c, 24, 18), 4);      /* the next repeat */
+    assert_int_equal(px(c, 17, 17), 15);     /* odd rows: white */
+    assert_int_equal(px(c, 19, 19), 15);
+    assert_int_equal(px(c, 16, 20), 14);     /* the frame stays */
+    assert_int_equal(px(c, 50, 20), 0);      /* outside: untouched */
+    assert_int_equal(count(c, 17, 17, 46, 30, 0), 0);
+    /* SCREEN 1: a byte is 4 pixels of 2 bits: &H1B is 0, 1, 2, 3 */
+    pc_canvas *c1 = pc_canvas_new_mode(1);
+    const unsigned char row1[] = {0x1B};
+    assert_int_equal(pc_tile_from_bytes(c1, row1, 1, &t), PC_OK);
+    assert_int_equal(t.w, 4);
+    assert_int_equal(t.h, 1);
+    assert_int_equal(pc_paint_tile(c1, 10, 10, &t, -1), PC_OK);   /* the whole screen */
+    assert_int_equal(px(c1, 0, 0), 0);
+    assert_int_equal(px(c1, 1, 7), 1);
+    assert_int_equal(px(c1, 6, 100), 2);
+    assert_int_equal(px(c1, 319, 199), 3);
+    /* SCREEN 2: a byte is 8 pixels: &HAA is on, off, on, ... */
+    pc_canvas *c2 = pc_canvas_new_mode(2);
+    const unsigned char row2[] = {0xAA, 0x55};
+    assert_int_equal(pc_tile_from_bytes(c2, row2, 2, &t), PC_OK);
+    assert_int_equal(pc_paint_tile(c2, 5, 5, &t, -1), PC_OK);
+    assert_int_equal(px(c2, 0, 0), 1);
+    assert_int_equal(px(c2, 1, 0), 0);
+    assert_int_equal(px(c2, 0, 1), 0);
+    assert_int_equal(px(c2, 1, 1), 1);
+    /* SCREEN 13: a byte a pixel, 8 a row */
+    pc_canvas *c13 = pc_canvas_new_mode(13);
+    const unsigned char row13[] = {40, 41, 42, 43, 44, 45, 46, 47};
+    assert_int_equal(pc_tile_from_bytes(c13, row13, 8, &t), PC_OK);
+    assert_int_equal(pc_paint_tile(c13, 0, 0, &t, -1), PC_OK);
+    assert_int_equal(px(c13, 11, 3), 43);
+    /* errors: an empty or long tile, colours of another mode */
+    unsigned char many[65] = {0};
+    assert_int_equal(pc_tile_from_bytes(c, many, 0, &t), PC_EARG);
+    assert_int_equal(pc_tile_from_bytes(c, many, 65, &t), PC_EARG);
+    assert_non_null(strstr(pc_canvas_error(c), "1..64 bytes"));
+    assert_int_equal(pc_tile_from_bytes(c13, row13, 8, &t), PC_OK);
+    t.attr[0] = 300;
+    assert_int_equal(pc_paint_tile(c13, 0, 0, &t, -1), PC_EARG);
+    pc_canvas_free(c);
+    pc_canvas_free(c1);
+    pc_canvas_free(c2);
+    pc_canvas_free(c13);
+}
+
 static void test_pcopy(void **state) {
     (void)state;
     pc_canvas *a = pc_canvas_new_mode(7), *b = pc_canvas_new_mode(7);
@@ -260,6 +349,7 @@ int main(void) {
         cmocka_unit_test(test_modes),   cmocka_unit_test(test_text_cells),
         cmocka_unit_test(test_scroll),  cmocka_unit_test(test_get_put),
         cmocka_unit_test(test_draw),    cmocka_unit_test(test_pcopy),
+        cmocka_unit_test(test_draw_aspect), cmocka_unit_test(test_paint_tile),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
