@@ -473,6 +473,8 @@ def("pcopy", "pcopy(from, to)",
   "QBasic's PCOPY: page `to` becomes a copy of page `from`.")
 def("pmap", "pmap(value, fn) -> number",
   "QBasic's PMAP: fn 0 and 1 map a world x or y to view pixels, 2 and 3 map pixels back.")
+def("paint_tile", "paint_tile(x, y, tile [, border])",
+  "QBasic's PAINT with a tile string (1..64 bytes, read as the mode keeps pixels: a bit a pixel in SCREEN 2, two in SCREEN 1, 4 bit planes a row in the 16-colour modes, a byte a pixel in SCREEN 13), up to the border colour (default: the foreground).")
 
 -- ---------------------------------------------------------------------------------------
 area("qb", "QBasic numbers (qb.*)",

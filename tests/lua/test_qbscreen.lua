@@ -1,0 +1,43 @@
+-- QBasic's screen from Lua (l_qbscreen.c): PAINT with a tile string as each mode reads it, and
+-- DRAW turning a figure on the monitor (SCREEN 2's pixels are 2.4 times as high as wide).
+local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
+
+-- SCREEN 12: a tile row is 4 bytes, one bit plane each (blue, green, red, intensity)
+screen(12)
+line(16, 16, 47, 31, 14, "b")
+paint_tile(30, 20, "\15\0\240\0" .. "\255\255\255\255", 14)
+check.eq(point(17, 18), 4, "screen 12: red where the red plane's bit is set (x mod 8 = 1)")
+check.eq(point(20, 18), 1, "screen 12: blue where the blue plane's bit is set (x mod 8 = 4)")
+check.eq(point(24, 18), 4, "screen 12: the tile repeats every 8 pixels")
+check.eq(point(21, 19), 15, "screen 12: the second row: all planes, white")
+check.eq(point(16, 20), 14, "screen 12: the border stays")
+check.eq(point(50, 20), 0, "screen 12: outside the border: untouched")
+
+-- SCREEN 1: a byte is four 2-bit pixels; without a border the fill stops at the foreground
+screen(1)
+paint_tile(5, 5, string.char(0x1B))
+check.eq(point(0, 0), 0, "screen 1: bits 7-6 = 0")
+check.eq(point(5, 3), 1, "screen 1: x mod 4 = 1: bits 5-4 = 1")
+check.eq(point(318, 199), 2, "screen 1: x mod 4 = 2")
+check.eq(point(319, 0), 3, "screen 1: x mod 4 = 3")
+
+-- SCREEN 2: DRAW's quarter turn keeps the size: A1 R24 goes up 24 * 0.4167 = 10 pixels
+screen(2)
+draw("BM100,100 C1 A1 R24 A0")
+check.eq(point(100, 90), 1, "screen 2: A1 R24 ends 10 pixels up")
+check.eq(point(100, 89), 0, "screen 2: and no further")
+draw("BM300,100 A1 U10 A0")
+check.eq(point(276, 100), 1, "screen 2: A1 U10 goes 24 pixels left")
+check.eq(point(275, 100), 0, "screen 2: and no further")
+-- SCREEN 12's pixels are square: no correction
+screen(12)
+draw("BM100,100 C2 A1 R10 A0")
+check.eq(point(100, 90), 2, "screen 12: A1 R10 goes up 10 pixels")
+
+-- errors name the argument
+check.err(function() paint_tile(1, 1, "") end, "argument #3 (tile) must be a string of 1..64 bytes", "empty tile")
+check.err(function() paint_tile(1, 1, string.rep("x", 65)) end, "a string of 1..64 bytes", "long tile")
+check.err(function() paint_tile(1, 1, 7) end, "(tile) must be a string", "a number as tile")
+check.err(function() paint_tile(1, 1, "ab", 16) end, "argument #4 (border) must be a colour number 0..15", "border")
+check.err(function() paint_tile("x", 1, "ab") end, "argument #1", "a bad point")
+check.done()
