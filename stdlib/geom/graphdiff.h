@@ -9,10 +9,11 @@
 #include "status.h"
 
 /* The slope dy/dx at x of the curve sampled at n points (xy: rows of 2, x strictly
- * increasing): the least-squares parabola through the `window` samples nearest to x (odd,
- * 3..n; 7 is a good choice), differentiated at x.  Near an end the window is one-sided, as a
- * draughtsman fits the end of a curve.  PC_EDOMAIN if x is outside [x_0, x_(n-1)] or the x do
- * not increase, PC_EDIM if n < 3 or window is outside 3..n, PC_ENONFINITE for NaN/inf. */
+ * increasing): the least-squares parabola through the `window` samples nearest to x (3..n;
+ * odd keeps it centred, 7 is a good choice), differentiated at x.  Near an end the window
+ * is one-sided, as a draughtsman fits the end of a curve.  PC_EDOMAIN if x is outside
+ * [x_0, x_(n-1)] or the x do not increase, PC_EDIM if n < 3 or window is outside 3..n,
+ * PC_ENONFINITE for NaN/inf. */
 int pc_graphical_slope(int n, const double *xy, double x, int window, double *slope);
 
 #endif

@@ -11,6 +11,7 @@
  *   korotky.conic_arc(U, tU, V, tV, T)                         -> curve, w, kind
  *   korotky.conic_sweep{U =, V =, T =, P =, Q =}               -> surface
  *   korotky.dome_rect(a0, b0, c0 [, origin])  korotky.dome_tri(A, B, C, h | D) -> surface
+ *   korotky.graphical_slope(samples, x [, window])             -> slope, angle in degrees
  * A tangent is a slope tg(delta) (the direction (cos delta, sin delta), x growing) or a 2-D
  * vector.  Errors of the solvers name the knot (#1 is the first point). */
 #include <math.h>
@@ -19,8 +20,11 @@
 #include "ferguson.h"
 #include "elastic.h"
 #include "conic_surface.h"
+#include "graphdiff.h"
 
 #define MAXPTS PC_FERGUSON_MAXN
+
+void pcl_korotky_shells(lua_State *L);   /* the shells of 2015 (l_korotky_shells.c) */
 
 /* The list of 2-D points at arg: n (>= 2, <= max) rows into p. */
 static int read_points(lua_State *L, const char *fn, int arg, double *p, int max) {
@@ -357,6 +361,42 @@ static int l_energy(lua_State *L) {
     return 1;
 }
 
+/* Graphical differentiation: the slope at x of a curve known by samples (2-D points, x
+ * increasing), the way the article measured the ruler's slopes (Tables A2-A5). */
+static int l_graphical_slope(lua_State *L) {
+    const char *fn = "korotky.graphical_slope";
+    if (!lua_istable(L, 1)) return pcl_argerror_full(L, fn, 1, 1, "samples", "a list of 2-D points");
+    int n = (int)luaL_len(L, 1);
+    if (n < 3) return pcl_error(L, "%s: argument #1 (samples) must hold at least 3 points, got %d", fn, n);
+    double x = pcl_checknum(L, fn, 2, "x");
+    double wn = pcl_optnum(L, fn, 3, "window", n >= 7 ? 7 : n % 2 ? n : n - 1);
+    if (!(wn >= 3 && wn <= n && wn == (int)wn))
+        return pcl_error(L, "%s: argument #3 (window) must be an integer 3 to %d, got %s", fn, n, pcl_pushnum(L, wn));
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
+    for (int i = 1; i <= n; i++) {
+        lua_geti(L, 1, i);
+        pcl_value *v = pcl_tovalue(L, -1);
+        if (!v || v->n != 2 || v->h[2] != 1)
+            return pcl_error(L, "%s: argument #1 (samples) [%d] must be a 2-D point, got %s", fn, i,
+                             pcl_shown(L, lua_gettop(L)));
+        xy[2 * i - 2] = v->h[0];
+        xy[2 * i - 1] = v->h[1];
+        lua_pop(L, 1);
+        if (i > 1 && !(xy[2 * i - 2] > xy[2 * i - 4]))
+            return pcl_error(L, "%s: argument #1 (samples) [%d] must lie right of the sample before (x must increase)",
+                             fn, i);
+    }
+    double m;
+    int st = pc_graphical_slope(n, xy, x, (int)wn, &m);
+    if (st == PC_EDOMAIN)
+        return pcl_error(L, "%s: argument #2 (x) must lie within the samples [%s, %s], got %s", fn,
+                         pcl_pushnum(L, xy[0]), pcl_pushnum(L, xy[2 * n - 2]), pcl_pushnum(L, x));
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, "argument #1 (samples)");
+    lua_pushnumber(L, m);
+    lua_pushnumber(L, atan(m) * 180 / M_PI);
+    return 2;
+}
+
 /* ---- conics and conic surfaces ------------------------------------------------------------ */
 
 static int l_conic_arc(lua_State *L) {
@@ -481,7 +521,9 @@ void pcl_open_korotky(lua_State *L) {
         {"conic_sweep", l_conic_sweep},
         {"dome_rect", l_dome_rect},
         {"dome_tri", l_dome_tri},
+        {"graphical_slope", l_graphical_slope},
         {NULL, NULL}};
     luaL_newlib(L, fns);
+    pcl_korotky_shells(L);
     lua_setfield(L, -2, "korotky");
 }
