@@ -691,7 +691,8 @@ def(":quit", ":quit",
 area("korotky", "Nature-like curves and conic surfaces (korotky.*)",
   "Korotky's articles: the polynomial and Ferguson splines through support points, the elastic " ..
   "reference curve (least bending energy) with the measures that compare a model with it, conic " ..
-  "arcs from three points and two tangents, conic sweeps and elliptic domes. A tangent is a slope " ..
+  "arcs from three points and two tangents with their centre, axes and asymptotes, conic sweeps, " ..
+  "the rotational and ridge shells, the 4-D key construction and elliptic domes. A tangent is a slope " ..
   "tg(delta) or a 2-D vector.",
   "korotky.md")
 
@@ -705,8 +706,10 @@ def("korotky.ferguson_tangents", "korotky.ferguson_tangents(points, tangents [, 
   "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28)).")
 def("korotky.ferguson_substitution", "korotky.ferguson_substitution(points, tangents, wA, z1 [, \"min\"|\"max\"]) -> curve, moduli, quadratics",
   "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29)).")
-def("korotky.elastic", "korotky.elastic(points [, {ends = {tA, tE}, pieces = 2}]) -> curve, energy",
-  "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length; free ends unless ends are given.")
+def("korotky.elastic", "korotky.elastic(points [, {ends = {tA, tE}, pieces = 4}]) -> curve, energy",
+  "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length, as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given.")
+def("korotky.graphical_slope", "korotky.graphical_slope(samples, x [, window]) -> slope, degrees",
+  "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees.")
 def("korotky.deviation", "korotky.deviation(model, reference [, samples]) -> number",
   "The largest distance between two curves (two-sided Hausdorff distance).")
 def("korotky.joint_jumps", "korotky.joint_jumps(curve) -> dkappa, dangle, knot",
@@ -721,6 +724,14 @@ def("korotky.dome_rect", "korotky.dome_rect(a0, b0, c0 [, origin]) -> s",
   "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses.")
 def("korotky.dome_tri", "korotky.dome_tri(A, B, C, h | D) -> s",
   "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D); u-isolines are the ellipses parallel to BC.")
+def("korotky.conic_elements", "korotky.conic_elements(arc | {a, b, c, d, e, f}) -> {kind, coef, center, axes, semi, asymptotes}",
+  "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions.")
+def("korotky.two_pencils", "korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}} -> s",
+  "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5).")
+def("korotky.conic_revolve", "korotky.conic_revolve{A =, B =, nA =, nB =, ridge =} -> s",
+  "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B.")
+def("korotky.ridge_shell", "korotky.ridge_shell{U =, R =, V =, T1 =, T2 =, P =, H =, Q =} -> s",
+  "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2].")
 
 -- ---------------------------------------------------------------------------------------
 
