@@ -614,6 +614,7 @@ function M.parse(source)
       return
     end
     local f = nexttok()
+    if f.t == "kw" then err("Statement illegal in TYPE block") end
     if f.t ~= "id" or f.sfx or f.v:find(".", 1, true) then err() end
     if def.fields[f.v] then err("Duplicate definition") end
     expect_kw("as")

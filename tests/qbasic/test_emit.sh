@@ -2,7 +2,7 @@
 # comment, and the printed Lua runs in pointcalc with the same results as the program.
 . "$(dirname "$0")/lib.sh"
 
-for name in for_float32 procs graphics data; do
+for name in for_float32 procs graphics data records statics using; do
     cp "$QB_DIR/progs/$name.bas" "$name.bas"
     run "$POINTCALC" --emit-lua "$name.bas"
     expect_rc 0 "--emit-lua $name"

@@ -39,4 +39,28 @@ px320() { od -An -tx1 -j $((15 + ($3 * 320 + $2) * 3)) -N 3 "$1" | tr -d ' \n'; 
 expect_eq "$(head -c 15 modes.ppm | tr '\n' ' ')" "P6 320 200 255 " "SCREEN 7 writes 320x200"
 expect_eq "$(px320 modes.ppm 25 150)" "ff5555" "PCOPY 1, 0 shows page 1's line"
 expect_eq "$(px320 modes.ppm 25 151)" "0000aa" "below the line: the background, blue after COLOR 10, 1"
+# records.bas drew its triangle in yellow 14 and the moved centre (116.67, 111.67) in red 12
+expect_eq "$(ppm_pixel records.ppm 150 150)" "ffff55" "records: the triangle's base"
+expect_eq "$(ppm_pixel records.ppm 117 112)" "ff5555" "records: the centre moved by the SUB"
+# tiles.bas ends in SCREEN 2 (640x200): the ellipse painted with CHR$(&H88) + CHR$(&H22)
+expect_eq "$(head -c 15 tiles.ppm | tr '\n' ' ')" "P6 640 200 255 " "SCREEN 2 writes 640x200"
+expect_eq "$(ppm_pixel tiles.ppm 320 100)" "ffffff" "tile row 0, x mod 8 = 0: on"
+expect_eq "$(ppm_pixel tiles.ppm 321 100)" "000000" "tile row 0, x mod 8 = 1: off"
+expect_eq "$(ppm_pixel tiles.ppm 322 101)" "ffffff" "tile row 1, x mod 8 = 2: on"
+expect_eq "$(ppm_pixel tiles.ppm 500 145)" "ffffff" "DRAW A1 R24 in SCREEN 2: 10 pixels up"
+
+# --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
+cp "$QB_DIR/progs/keyboard.bas" kb.bas
+run "$POINTCALC" kb.bas --input "$QB_DIR/progs/keyboard.in" -o kb.ppm < /dev/null
+expect_rc 0 "--input after the program"
+check
+diff -q out.txt "$QB_DIR/progs/keyboard.out" >/dev/null || fail "--input: output differs from keyboard.out"
+run "$POINTCALC" --input "$QB_DIR/progs/keyboard.in" kb.bas -o kb.ppm < /dev/null
+check
+diff -q out.txt "$QB_DIR/progs/keyboard.out" >/dev/null || fail "--input before the program: output differs"
+run "$POINTCALC" --input no-such-file kb.bas
+expect_rc 2 "--input of a missing file"
+expect_in err.txt "cannot open 'no-such-file'" "--input of a missing file: message"
+run "$POINTCALC" --input kb.bas
+expect_rc 2 "--input without a program"
 finish

@@ -1,0 +1,2 @@
+' EXPECT: 2: Illegal outside of SUB, FUNCTION or DEF FN
+STATIC n

@@ -1,0 +1,2 @@
+' EXPECT: 2: Type not defined
+DIM p AS Point3

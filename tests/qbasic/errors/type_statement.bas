@@ -1,0 +1,5 @@
+' EXPECT: 4: Statement illegal in TYPE block
+TYPE Cell
+  v AS INTEGER
+  PRINT v
+END TYPE

@@ -1,0 +1,3 @@
+' EXPECT: 2: TYPE without END TYPE
+TYPE Cell
+  v AS INTEGER
