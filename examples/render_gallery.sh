@@ -32,6 +32,10 @@ done | PC="$pc" OUT="$out" xargs -P "$jobs" -I{} sh -c '
     rm -f "$name.failed"
     cp "$script" "$name.lua"
     "$PC" "$script" -o "$name.png" -o "$name.svg" >/dev/null 2>"$name.err" || mv "$name.err" "$name.failed"
+    # a script with a slider {animate = true} also plays: an animated SVG (docs/live.md)
+    if [ ! -e "$name.failed" ] && grep -q "animate = true" "$script"; then
+        "$PC" "$script" --frames 36 -o "$name-animated.svg" >/dev/null 2>"$name.err" || mv "$name.err" "$name.failed"
+    fi
     rm -f "$name.err"' sh {}
 
 # --- the book a figure reproduces, from the script's opening comment ---------------------
@@ -125,8 +129,12 @@ for dir in "$here"/*/; do
                 "${cite%%	*}" "$(printf '%s' "${cite#*	}" | html_text)")
         fi
         f="$group/$name"
-        printf '<figure id="%s-%s"><a href="%s.svg"><img src="%s.png" alt="%s" width="640" height="480" loading="lazy"></a>\n<figcaption>%s%s<br><a href="%s.svg">SVG</a> · <a href="%s.png">PNG</a> · <a href="%s.lua">script</a></figcaption></figure>\n' \
-            "$group" "$name" "$f" "$f" "$name" "$title" "$source" "$f" "$f" "$f" >> "$index"
+        live=
+        if [ -e "$out/$f-animated.svg" ]; then
+            live=$(printf '<br><span class="live"><a href="%s-animated.svg">animation</a> · live: <code>pointcalc serve %s.lua</code> (docs/live.md)</span>' "$f" "$name")
+        fi
+        printf '<figure id="%s-%s"><a href="%s.svg"><img src="%s.png" alt="%s" width="640" height="480" loading="lazy"></a>\n<figcaption>%s%s%s<br><a href="%s.svg">SVG</a> · <a href="%s.png">PNG</a> · <a href="%s.lua">script</a></figcaption></figure>\n' \
+            "$group" "$name" "$f" "$f" "$name" "$title" "$source" "$live" "$f" "$f" "$f" >> "$index"
     done
     echo '</div>' >> "$index"
 done

@@ -41,6 +41,8 @@ expect_eq "$nfigures" "$nscripts" "one PNG per example script"
 check "$WORK/site"
 expect_in verdict.txt "OK figures=$nscripts png=$nscripts svg=$nscripts scripts=$nscripts " \
     "every figure's image, SVG and script load and every anchor has its target"
+nanimated=$(grep -l "animate = true" "$PC_SOURCE_DIR"/examples/*/*.lua | wc -l)
+expect_in verdict.txt " animations=$nanimated" "each animated example links its animated SVG (docs/live.md)"
 checks=$((checks + 1))
 [ -s console.txt ] && fail "console messages from the gallery page: $(head -5 console.txt)"
 # every Stepanov example links its section of the article (the checker also asks each figure)
