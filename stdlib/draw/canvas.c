@@ -97,6 +97,8 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->view = (pc_rect){0, 0, width - 1, height - 1};
     c->view_screen = 0;
     c->nops = c->nspans = c->ndots = c->nclips = c->npts = c->ntext = 0;
+    pc_lpx_clear(c);
+    c->dot_budget = (size_t)width * (size_t)height > 65536 ? (size_t)width * (size_t)height : 65536;
     c->dirty = 0;
     c->version++;
     c->error[0] = 0;
@@ -131,6 +133,7 @@ void pc_canvas_free(pc_canvas *c) {
     free(c->pts);
     free(c->tags);
     free(c->text);
+    free(c->lpx);
     free(c->palette);
     free(c->rgb_index);
     free(c->pens);
@@ -176,7 +179,6 @@ pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color) {
     memset(op, 0, sizeof *op);
     op->kind = (uint8_t)kind;
     op->color = (uint16_t)color;
-    op->clip = (uint16_t)(c->nclips - 1);
     if (kind != PC_OP_CLEAR) c->dirty = 1;
     c->version++;
     return op;
@@ -191,8 +193,9 @@ int pc_push_span(pc_canvas *c, int y, int x0, int x1) {
 
 int pc_push_dot(pc_canvas *c, double x, double y, int color) {
     pc_op *last = c->nops ? &c->ops[c->nops - 1] : NULL;
+    /* a new run: the last op is no dots of this colour, or VIEW changed after it */
     if (!last || last->kind != PC_OP_DOTS || last->color != color ||
-        last->clip != c->nclips - 1) {
+        c->clips[c->nclips - 1].first == c->nops) {
         last = pc_push_op(c, PC_OP_DOTS, color);
         if (!last) return PC_ENOMEM;
         last->first = (uint32_t)c->ndots;
@@ -205,17 +208,41 @@ int pc_push_dot(pc_canvas *c, double x, double y, int color) {
         return pc_fail_code(c, PC_ENOMEM, "out of memory for the display list");
     c->dots[c->ndots++] = (pc_xy){x, y};
     last->count++;
+    if (c->ndots > c->fold_mark && c->ndots - c->fold_mark > c->dot_budget) pc_fold_dots(c);
     return PC_OK;
 }
 
+static int same_rect(const pc_rect *a, const pc_rect *b) {
+    return a->x0 == b->x0 && a->y0 == b->y0 && a->x1 == b->x1 && a->y1 == b->y1;
+}
+
+/* The view becomes the clip of the ops drawn from now on.  A clip no op was drawn in yet is
+ * replaced (or dropped, when the view returns to the one before it), so every clip but the
+ * last has ops and the runs' firsts increase strictly: memory grows with what is drawn, not
+ * with the number of VIEW statements. */
 int pc_push_clip(pc_canvas *c) {
-    if (c->nclips && memcmp(&c->clips[c->nclips - 1], &c->view, sizeof c->view) == 0)
+    if (c->nclips && same_rect(&c->clips[c->nclips - 1].r, &c->view)) return PC_OK;
+    if (c->nclips && c->clips[c->nclips - 1].first == c->nops) {
+        if (c->nclips >= 2 && same_rect(&c->clips[c->nclips - 2].r, &c->view))
+            c->nclips--;
+        else
+            c->clips[c->nclips - 1].r = c->view;
         return PC_OK;
-    if (c->nclips >= 65535 ||
-        !pc_grow((void **)&c->clips, &c->capclips, c->nclips + 1, sizeof *c->clips))
-        return pc_fail_code(c, PC_ENOMEM, "too many VIEW changes");
-    c->clips[c->nclips++] = c->view;
+    }
+    if (!pc_grow((void **)&c->clips, &c->capclips, c->nclips + 1, sizeof *c->clips))
+        return pc_fail_code(c, PC_ENOMEM, "out of memory for a VIEW change");
+    c->clips[c->nclips++] = (pc_clip){c->view, c->nops};
     return PC_OK;
+}
+
+size_t pc_op_clip(const pc_canvas *c, size_t i) {
+    size_t lo = 0, hi = c->nclips;   /* the last clip whose first is <= i */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (c->clips[mid].first <= i) lo = mid;
+        else hi = mid;
+    }
+    return lo;
 }
 
 /* ---- WINDOW and VIEW ------------------------------------------------------------------- */
@@ -289,7 +316,7 @@ void pc_window_reset(pc_canvas *c) {
     pc_reset_cursor(c);
 }
 
-/* Make r the view.  Its clip rectangle is recorded first: when the list of clips is full the
+/* Make r the view.  Its clip rectangle is recorded first: when there is no memory for it the
  * view stays as it was, so the raster and the display list never disagree. */
 static int set_view(pc_canvas *c, pc_rect r, int screen) {
     pc_rect old = c->view;
@@ -407,6 +434,24 @@ int pc_rgb_color(pc_canvas *c, pc_rgb rgb) {
     c->palette[attr] = rgb;
     rgb_insert(c, attr);
     return attr;
+}
+
+static int hex_digit(char ch) {
+    if (ch >= '0' && ch <= '9') return ch - '0';
+    if (ch >= 'a' && ch <= 'f') return ch - 'a' + 10;
+    if (ch >= 'A' && ch <= 'F') return ch - 'A' + 10;
+    return -1;
+}
+
+/* Digit by digit, not sscanf("%2x"): that takes "5g" as 5, " 1" and "-1" as numbers. */
+int pc_rgb_parse(const char *s, size_t len, pc_rgb *out) {
+    if (!s || len != 7 || s[0] != '#') return PC_EARG;
+    int v[6];
+    for (int i = 0; i < 6; i++)
+        if ((v[i] = hex_digit(s[i + 1])) < 0) return PC_EARG;
+    *out = (pc_rgb){(uint8_t)(v[0] * 16 + v[1]), (uint8_t)(v[2] * 16 + v[3]),
+                    (uint8_t)(v[4] * 16 + v[5])};
+    return PC_OK;
 }
 
 /* ---- pens --------------------------------------------------------------------------------- */

@@ -38,8 +38,10 @@ typedef enum {
     PC_OP_PATH,      /* pts[first .. first+count) with their tags; flags: PC_PATH_CLOSED */
     PC_OP_TEXT,      /* text[first .. first+count) (UTF-8); x1, y1: top-left pixel of the
                         cell box; rx: scale; flags: the anchor it was placed by */
-    PC_OP_FILLPATH   /* a filled path: pts[first .. first+count) with their tags, every
+    PC_OP_FILLPATH,  /* a filled path: pts[first .. first+count) with their tags, every
                         subpath closed; flags: PC_FILL_EVENODD or PC_FILL_NONZERO */
+    PC_OP_PIXELS     /* dots folded into whole pixels (see pc_canvas.dot_budget):
+                        lpx[first .. first+count), by increasing pixel index */
 } pc_op_kind;
 
 enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
@@ -71,12 +73,13 @@ typedef struct {
 } pc_stroke;
 
 /* A drawing operation in screen coordinates (fractional, before rounding).  The header is
- * packed into 8 bytes, as before pens and true colours: scripts record millions of ops. */
+ * packed into 8 bytes, as before pens and true colours: scripts record millions of ops.  Its
+ * clip rectangle is not in it: the clips are runs of ops (pc_clip), so a script may change
+ * VIEW any number of times (a 16-bit index here once lost the drawing after 65,535). */
 typedef struct {
     uint8_t kind;         /* pc_op_kind */
     uint8_t flags;
     uint16_t color;       /* attribute */
-    uint16_t clip;        /* index into pc_canvas.clips */
     uint16_t pen;         /* index into pc_canvas.pens (LINE, BOX, ARC, PATH; else 0) */
     double x1, y1, x2, y2;   /* double: a float would move some dots across a pixel edge */
     double rx, ry, a0, a1;
@@ -90,8 +93,15 @@ typedef struct { double x, y; } pc_xy;
 /* One horizontal run of a painted region: pixels x0..x1 inclusive on row y. */
 typedef struct { int16_t y, x0, x1; } pc_span;
 
+/* A pixel of a PIXELS op: index y * width + x, and its attribute (the last dot's). */
+typedef struct { uint32_t idx; uint16_t color; } pc_lpx;
+
 /* A clip rectangle in screen pixels, inclusive. */
 typedef struct { int x0, y0, x1, y1; } pc_rect;
+
+/* A VIEW in force for a run of ops: ops[first ..] up to the next clip's first.  Recorded in
+ * the order of the ops, so the firsts increase strictly (a clip no op used is replaced). */
+typedef struct { pc_rect r; size_t first; } pc_clip;
 
 typedef struct pc_canvas {
     int width, height;
@@ -123,9 +133,19 @@ typedef struct pc_canvas {
     pc_op *ops; size_t nops, capops;
     pc_span *spans; size_t nspans, capspans;
     pc_xy *dots; size_t ndots, capdots;
-    pc_rect *clips; size_t nclips, capclips;
+    pc_clip *clips; size_t nclips, capclips;         /* runs of ops drawn in one VIEW */
     pc_xy *pts; uint8_t *tags; size_t npts, cappts;   /* path points and their verbs */
     char *text; size_t ntext, captext;                /* the strings of TEXT ops */
+    pc_lpx *lpx; size_t nlpx, caplpx;                 /* the pixels of PIXELS ops */
+
+    /* Memory bounded by the picture, not by the number of calls: when the dots drawn one
+     * after another (no other op between, one VIEW) pass dot_budget, they are folded into one
+     * PIXELS op, the last colour of each pixel they hit, which later dots join in turn.  The
+     * raster is unchanged; the SVG writes the pixels as its layer of exact pixels (isolated
+     * dots already are).  pc_canvas_reset sets max(width * height, 65536): a dot costs 16
+     * bytes, a dot of a new colour 96, a folded pixel 8. */
+    size_t dot_budget;
+    size_t fold_mark;       /* c->ndots where the run of dots being counted starts */
 
     /* pens: pens[0] is the default (width 1, solid); `pen` is the one in force */
     pc_stroke *pens; size_t npens, cappens;
@@ -158,6 +178,10 @@ double pc_world_xscale(const pc_canvas *c);       /* screen pixels per world x u
  * always gives the same attribute).  Returns the attribute (>= 256), or -1 with c->error set
  * when PC_MAX_ATTR - 255 colours are already in use or memory runs out. */
 int pc_rgb_color(pc_canvas *c, pc_rgb rgb);
+/* The one parser of colour strings: exactly "#rrggbb" ('#' and six hexadecimal digits, either
+ * case; len bytes, so an embedded NUL is refused) into *out.  PC_EARG for anything else
+ * ("#12345g", "#-1-1-1", "# 1 2 3", "#fff"), *out untouched. */
+int pc_rgb_parse(const char *s, size_t len, pc_rgb *out);
 
 /* The drawing statements.  color < 0 means "the default" (foreground, or background for
  * preset).  All return PC_OK or PC_EARG (with c->error set).  A colour is any attribute:
@@ -237,8 +261,8 @@ void pc_window_reset(pc_canvas *c);
  * keeps coordinates absolute. */
 int pc_view(pc_canvas *c, int x1, int y1, int x2, int y2, int fill, int border, int screen);
 int pc_view_reset(pc_canvas *c);
-/* The display list holds at most 65535 clip rectangles (VIEW changes, deduplicated against
- * the previous one); beyond, VIEW fails with PC_ENOMEM and the view stays as it was. */
+/* The display list records each VIEW change that is drawn in (no limit on their number); VIEW
+ * fails with PC_ENOMEM only when memory runs out, and then the view stays as it was. */
 
 /* ---- the canvas seen from a host (the command line, the REPL, a watcher) -----------------
  * A host reads and changes the canvas only through these functions and the drawing

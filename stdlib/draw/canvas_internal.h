@@ -48,7 +48,18 @@ pc_op *pc_push_op(pc_canvas *c, pc_op_kind kind, int color);
 int pc_push_span(pc_canvas *c, int y, int x0, int x1);
 /* Append a dot to the DOTS run at the end of the list, or start a run (new colour or clip). */
 int pc_push_dot(pc_canvas *c, double x, double y, int color);
+/* Fold the dots at the end of the list into one PIXELS op (dotfold.c; pc_push_dot calls it
+ * when the run passes c->dot_budget).  Out of memory leaves the dots as they are. */
+void pc_fold_dots(pc_canvas *c);
+/* Forget every PIXELS op's pixels (with the display list: SCREEN, a full CLS). */
+static inline void pc_lpx_clear(pc_canvas *c) { c->nlpx = 0; c->fold_mark = 0; }
 int pc_push_clip(pc_canvas *c);
+/* The index in c->clips of the clip of op i (a binary search over the runs). */
+size_t pc_op_clip(const pc_canvas *c, size_t i);
+/* The first op after the run of clip k (SIZE_MAX for the last clip). */
+static inline size_t pc_clip_end(const pc_canvas *c, size_t k) {
+    return k + 1 < c->nclips ? c->clips[k + 1].first : SIZE_MAX;
+}
 void pc_reset_cursor(pc_canvas *c);
 
 /* Screen-pixel primitives used by VIEW's border and fill and by CLS. */

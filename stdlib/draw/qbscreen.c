@@ -212,6 +212,7 @@ int pc_canvas_copy_picture(pc_canvas *dst, const pc_canvas *src) {
         !copy_array((void **)&dst->clips, &dst->capclips, src->clips, src->nclips, sizeof *src->clips) ||
         !copy_array((void **)&dst->pts, &dst->cappts, src->pts, src->npts, sizeof *src->pts) ||
         !copy_array((void **)&dst->text, &dst->captext, src->text, src->ntext, 1) ||
+        !copy_array((void **)&dst->lpx, &dst->caplpx, src->lpx, src->nlpx, sizeof *src->lpx) ||
         !copy_array((void **)&dst->pens, &dst->cappens, src->pens, src->npens, sizeof *src->pens))
         return pc_fail_code(dst, PC_ENOMEM, "pcopy: out of memory");
     /* path tags live beside pts with the same capacity */
@@ -225,6 +226,8 @@ int pc_canvas_copy_picture(pc_canvas *dst, const pc_canvas *src) {
     dst->nclips = src->nclips;
     dst->npts = src->npts;
     dst->ntext = src->ntext;
+    dst->nlpx = src->nlpx;
+    dst->fold_mark = src->fold_mark;
     dst->npens = src->npens;
     if ((size_t)dst->pen >= dst->npens) dst->pen = 0;
     memcpy(dst->pixels, src->pixels, (size_t)src->width * src->height * sizeof *src->pixels);

@@ -545,7 +545,7 @@ int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size
     pc_op *op = pc_push_op(c, PC_OP_PATH, color);
     if (!op) return PC_ENOMEM;
     *op = (pc_op){.kind = PC_OP_PATH, .flags = tmp.flags, .color = (uint16_t)color,
-                  .clip = op->clip, .pen = (uint16_t)c->pen, .first = first, .count = tmp.count};
+                  .pen = (uint16_t)c->pen, .first = first, .count = tmp.count};
     set_cursor(c, xy[2 * n - 2], xy[2 * n - 1]);
     return PC_OK;
 }
@@ -629,6 +629,7 @@ int pc_cls(pc_canvas *c) {
     if (v->x0 == 0 && v->y0 == 0 && v->x1 == c->width - 1 && v->y1 == c->height - 1) {
         c->nops = c->nspans = c->ndots = c->npts = c->ntext = 0;
         c->nclips = 0;
+        pc_lpx_clear(c);
         pc_push_clip(c);
         pc_fill_px(c->pixels, c->bg, (size_t)c->width * c->height);
         c->paper = c->bg;

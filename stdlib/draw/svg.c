@@ -5,6 +5,8 @@
  * drawn centred at (x + 0.5, y + 0.5).  Strokes are 1 pixel wide with square caps, like the
  * pixels at the ends of a rasterised line.  Numbers have at most two decimals.
  *
+ *   PIXELS             dots folded into pixels (a long run of dots, dotfold.c): exact
+ *                      pixels like isolated dots, in the same layer.
  *   DOTS runs          consecutive dots of one colour and clip, each within DENSE px of the
  *                      previous, become one polyline <path> (points closer than TOL px to the
  *                      polyline are dropped: a million dots on an oval give a few hundred
@@ -58,6 +60,8 @@ typedef struct {
     const pc_canvas *c;
     pc_rgb pal[256];
     int group;                 /* clip index whose <g> is open, -1 for none */
+    size_t clip;               /* the clip of the op being written (index into c->clips) */
+    size_t *canon;             /* per clip: the first clip of the same rectangle (its id) */
     unsigned char *clip_done; /* clipPath already written, per clip index */
     int col;                   /* column within path data, to wrap long lines */
     int numlast;               /* the path data so far ends with a number */
@@ -150,32 +154,54 @@ static void flush_layer(svgw *w);
 
 /* ---- clip groups -------------------------------------------------------------------------- */
 
-static int is_full(const svgw *w, int k) {
-    const pc_rect *r = &w->c->clips[k];
+static int is_full(const svgw *w, size_t k) {
+    const pc_rect *r = &w->c->clips[k].r;
     return r->x0 <= 0 && r->y0 <= 0 && r->x1 >= w->c->width - 1 && r->y1 >= w->c->height - 1;
 }
 
+/* The clip of the op being written (every op is written in its turn: w->clip follows). */
 static pc_rect clip_of(const svgw *w, const pc_op *op) {
-    if (op->clip < w->c->nclips) return w->c->clips[op->clip];
+    (void)op;
+    if (w->clip < w->c->nclips) return w->c->clips[w->clip].r;
     return (pc_rect){0, 0, w->c->width - 1, w->c->height - 1};
 }
 
-/* Make sure the elements that follow are inside the group clipping to op's clip. */
-static void enter_clip(svgw *w, const pc_op *op) {
-    int k = op->clip < w->c->nclips ? op->clip : 0;
-    if (w->c->nclips == 0 || is_full(w, k)) k = -1;
-    else {
-        /* the same rectangle may appear under several indices: use the first */
-        for (int i = 0; i < k; i++)
-            if (memcmp(&w->c->clips[i], &w->c->clips[k], sizeof(pc_rect)) == 0) { k = i; break; }
+/* canon[k]: the first clip with clip k's rectangle, found through a hash of the rectangles,
+ * so a drawing with a million VIEW changes is written in linear time. */
+static int make_canon(svgw *w) {
+    size_t n = w->c->nclips, slots = 16;
+    while (slots < 2 * n) slots *= 2;
+    size_t *table = malloc(slots * sizeof *table);
+    w->canon = malloc((n ? n : 1) * sizeof *w->canon);
+    if (!table || !w->canon) { free(table); return 0; }
+    for (size_t i = 0; i < slots; i++) table[i] = SIZE_MAX;
+    for (size_t k = 0; k < n; k++) {
+        const pc_rect *r = &w->c->clips[k].r;
+        uint64_t h = (uint64_t)(uint32_t)r->x0 * 73856093u ^ (uint64_t)(uint32_t)r->y0 * 19349663u ^
+                     (uint64_t)(uint32_t)r->x1 * 83492791u ^ (uint64_t)(uint32_t)r->y1 * 2654435761u;
+        size_t s = (size_t)(h * 0x9E3779B97F4A7C15ull >> 20) & (slots - 1);
+        while (table[s] != SIZE_MAX &&
+               memcmp(&w->c->clips[table[s]].r, r, sizeof *r) != 0)
+            s = (s + 1) & (slots - 1);
+        if (table[s] == SIZE_MAX) table[s] = k;
+        w->canon[k] = table[s];
     }
+    free(table);
+    return 1;
+}
+
+/* Make sure the elements that follow are inside the group clipping to the current clip. */
+static void enter_clip(svgw *w, const pc_op *op) {
+    (void)op;
+    int k = -1;   /* the same rectangle may appear under several indices: the first is its id */
+    if (w->clip < w->c->nclips && !is_full(w, w->clip)) k = (int)w->canon[w->clip];
     if (k == w->group) return;
     flush_layer(w);
     if (w->group >= 0) fputs("</g>\n", w->out);
     w->group = k;
     if (k < 0) return;
     if (!w->clip_done[k]) {
-        const pc_rect *r = &w->c->clips[k];
+        const pc_rect *r = &w->c->clips[k].r;
         fprintf(w->out, "<clipPath id=\"c%d\"><rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\"/></clipPath>\n",
                 k, r->x0, r->y0, r->x1 - r->x0 + 1, r->y1 - r->y0 + 1);
         w->clip_done[k] = 1;
@@ -420,6 +446,18 @@ static void emit_dots(svgw *w, const pc_op *op) {
         else dense_subrun(w, d + i, j - i, op->color, clip);
         i = j;
     }
+}
+
+/* PIXELS: dots folded into whole pixels (dotfold.c) join the layer of exact pixels, as
+ * isolated dots do: the same pixels, grouped by colour into horizontal runs. */
+static void emit_pixels(svgw *w, const pc_op *op) {
+    const pc_canvas *c = w->c;
+    if ((size_t)op->first + op->count > c->nlpx) return;
+    pc_rect clip = clip_of(w, op);
+    long W = c->width;
+    for (size_t i = op->first; i < (size_t)op->first + op->count && !w->nomem; i++)
+        add_dot(w, (double)(c->lpx[i].idx % W), (double)(c->lpx[i].idx / W), c->lpx[i].color,
+                clip);
 }
 
 /* ---- runs of brushes ---------------------------------------------------------------------- */
@@ -1074,7 +1112,11 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
     w.group = -1;
     pc_theme_palette(c, theme, w.pal);
     w.clip_done = calloc(c->nclips ? c->nclips : 1, 1);
-    if (!w.clip_done) return PC_ENOMEM;
+    if (!w.clip_done || !make_canon(&w)) {
+        free(w.clip_done);
+        free(w.canon);
+        return PC_ENOMEM;
+    }
 
     fprintf(out,
             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -1089,15 +1131,19 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
     size_t i = 0;
     while (i < c->nops && !w.nomem && !ferror(out)) {
         const pc_op *op = &c->ops[i];
+        while (w.clip + 1 < c->nclips && c->clips[w.clip + 1].first <= i) w.clip++;
+        size_t clip_end = pc_clip_end(c, w.clip);   /* runs below stay within the clip */
         enter_clip(&w, op);
         size_t j = i + 1;
         if (op->kind == PC_OP_DOTS) {
             emit_dots(&w, op);
+        } else if (op->kind == PC_OP_PIXELS) {
+            emit_pixels(&w, op);
         } else if (is_styled(&w, op)) {
             emit_styled(&w, op);
         } else if (op->kind == PC_OP_LINE) {
             while (j < c->nops && c->ops[j].kind == op->kind && c->ops[j].color == op->color &&
-                   c->ops[j].clip == op->clip && c->ops[j].pen == op->pen)
+                   j < clip_end && c->ops[j].pen == op->pen)
                 j++;
             emit_lines(&w, op, j - i);
         } else if (op->kind == PC_OP_PATH) {
@@ -1106,7 +1152,7 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
             emit_text(&w, op);
         } else if (is_brush(op)) {
             while (j < c->nops && is_brush(&c->ops[j]) && c->ops[j].color == op->color &&
-                   c->ops[j].rx == op->rx && c->ops[j].clip == op->clip)
+                   c->ops[j].rx == op->rx && j < clip_end)
                 j++;
             emit_brushes(&w, op, j - i);
         } else if (op->kind == PC_OP_ARC) {
@@ -1124,6 +1170,7 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out) {
     if (w.group >= 0) fputs("</g>\n", out);
     fputs("</g>\n</svg>\n", out);
     free(w.clip_done);
+    free(w.canon);
     free(w.pts);
     free(w.layer);
     if (w.nomem) return PC_ENOMEM;

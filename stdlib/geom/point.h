@@ -39,7 +39,9 @@ void pc_add(int n, const double *a, const double *b, double *out);
 void pc_sub(int n, const double *a, const double *b, double *out);
 void pc_scale(int n, const double *a, double k, double *out);
 /* (B - A) t + A, eq. of the segment (Fig. 1.1), computed as A(1 - t) + B t so that t = 0
- * and t = 1 give A and B exactly.  Works on values of any weight. */
+ * and t = 1 give A and B exactly.  Works on values of any weight; two values of one weight give
+ * that weight exactly at every t (two points a point, never a vector by rounding).  Large t
+ * may overflow the coordinates: callers check the result is finite. */
 void pc_lerp(int n, const double *a, const double *b, double t, double *out);
 
 /* --- metric (locations or vector coordinates, n doubles) ------------------------------------ */
@@ -64,7 +66,9 @@ int pc_foot(int n, const double *c, const double *a, const double *b, double *ou
  * (a direction, weight 0: the ratio is then -1).  Z = Y gives +inf. */
 int pc_sr(int n, const double *x, const double *y, const double *z, double *lambda);
 /* Z with (XYZ) = lambda: Z = (X + lambda Y)/(1 + lambda), homogeneous.  x, y are values
- * (n+1).  lambda = -1 gives the improper point X - Y (weight 0); lambda = ±inf gives Y. */
+ * (n+1).  lambda = -1 gives the improper point X - Y (weight 0); lambda = ±inf gives Y.
+ * |lambda| > 1 is computed as (X/lambda + Y)/(1/lambda + 1), so a huge lambda gives a point
+ * next to Y, not an overflow; PC_ENONFINITE if the result still is not finite. */
 int pc_divide(int n, const double *x, const double *y, double lambda, double *out);
 /* Harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT).  T may be improper
  * (then N is the midpoint); the midpoint gives the improper point of AB. */

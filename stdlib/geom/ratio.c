@@ -68,10 +68,18 @@ int pc_divide(int n, const double *x, const double *y, double lambda, double *ou
         return PC_OK;
     }
     /* Z = (X + lambda Y)/(1 + lambda): homogeneous, so the weight is divided as well */
-    for (int i = 0; i <= n; i++) out[i] = x[i] + lambda * y[i];
-    double s = 1.0 + lambda;
-    if (s == 0) return PC_IMPROPER;           /* lambda = -1: the improper point X - Y */
-    for (int i = 0; i <= n; i++) out[i] /= s;
+    if (fabs(lambda) > 1) {
+        /* the same divided by lambda: lambda = 1e308 would overflow X + lambda Y */
+        double r = 1.0 / lambda;
+        for (int i = 0; i <= n; i++) out[i] = (x[i] * r + y[i]) / (r + 1.0);
+    } else {
+        for (int i = 0; i <= n; i++) out[i] = x[i] + lambda * y[i];
+        double s = 1.0 + lambda;
+        if (s == 0) return PC_IMPROPER;       /* lambda = -1: the improper point X - Y */
+        for (int i = 0; i <= n; i++) out[i] /= s;
+    }
+    for (int i = 0; i <= n; i++)
+        if (!isfinite(out[i])) return PC_ENONFINITE;
     return PC_OK;
 }
 

@@ -4,7 +4,9 @@
 
 static const double PI = 3.14159265358979323846;
 
-double pc_smooth_sine(double t) { return (1.0 - cos(PI * t)) / 2.0; }
+/* cos has period 2 in t: reduced first (fmod is exact), so a huge t gives its value, not
+ * cos(inf) = NaN; t in (-2, 2) is unchanged. */
+double pc_smooth_sine(double t) { return (1.0 - cos(PI * fmod(t, 2.0))) / 2.0; }
 
 double pc_smooth_cubic(double t) { return t * t * (3.0 - 2.0 * t); }
 

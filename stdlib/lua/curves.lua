@@ -245,6 +245,7 @@ local methods = tk.curve_methods
 -- over their own t; other curves over their domain, piece 1)
 function methods.each(c, opts)
   opts = opts or {}
+  if type(opts) ~= "table" then tk.argerror("c:each", 1, "opts", "a table {t = {a, b, step}}", opts) end
   local P = M.P
   local pieced = c.kind == "stroke" or c.kind == "spline2"
   local lo, hi = c.lo, c.hi

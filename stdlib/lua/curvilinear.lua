@@ -105,6 +105,7 @@ end
 -- as one path; with a brush, dots = true or qb = true, dots at the steps as the listings draw.
 function System:draw(curve, opts)
   opts = opts or {}
+  if type(opts) ~= "table" then tk.argerror("C:draw", 2, "opts", "a table", opts) end
   local f = self._xy
   local function through(t1, t2, extra)    -- (t1, t2) are the system's two parameters
     if extra ~= nil then
@@ -257,11 +258,19 @@ end
 -- coordinates (y up) onto the screen, the listings' `xe = x0 + a*x: ye = y0 - a*y`
 function M.screenmap(x0, y0, a, b)
   local fname = "screenmap"
-  if type(x0) ~= "number" then tk.argerror(fname, 1, "x0", "a number", x0) end
-  if type(y0) ~= "number" then tk.argerror(fname, 2, "y0", "a number", y0) end
-  if type(a) ~= "number" then tk.argerror(fname, 3, "a", "a number", a) end
+  -- finite numbers (screenmap(0/0, 0, 1) would put every point at NaN), scales not 0 (a map
+  -- that sends the whole plane to one line is degenerate)
+  local function check(n, what, v, nonzero)
+    if type(v) ~= "number" then tk.argerror(fname, n, what, "a number", v) end
+    if v ~= v or v == math.huge or v == -math.huge or (nonzero and v == 0) then
+      tk.argerror(fname, n, what, nonzero and "a finite number other than 0" or "a finite number", v)
+    end
+  end
+  check(1, "x0", x0)
+  check(2, "y0", y0)
+  check(3, "a", a, true)
   b = b or a
-  if type(b) ~= "number" then tk.argerror(fname, 4, "b", "a number", b) end
+  check(4, "b", b, true)
   local f = function(x, y)
     if type(x) ~= "number" then x, y = xy(x) end
     return x0 + a * x, y0 - b * y

@@ -15,12 +15,15 @@
 
 #define COMPLEX_MT "complex"
 #define MOBIUS_MT "mobius"
+static const char COMPLEX_TAG = 'z', MOBIUS_TAG = 'm';   /* PCL_SELF_TAG */
 
-typedef struct { double re, im; } cnum;
-typedef struct { double z0re, z0im, phi; } mobius;
+/* self: a file handle has the size of two doubles, so the size alone does not tell (pcl.h) */
+typedef struct { PCL_SELF; double re, im; } cnum;
+typedef struct { PCL_SELF; double z0re, z0im, phi; } mobius;   /* self: as cnum's */
 
 static cnum *pushc(lua_State *L, double re, double im) {
     cnum *z = lua_newuserdatauv(L, sizeof *z, 0);
+    z->self = PCL_SELF_TAG(z, &COMPLEX_TAG);
     z->re = re;
     z->im = im;
     luaL_setmetatable(L, COMPLEX_MT);
@@ -29,9 +32,25 @@ static cnum *pushc(lua_State *L, double re, double im) {
 
 static void pushcc(lua_State *L, double complex z) { pushc(L, creal(z), cimag(z)); }
 
+/* The complex number at idx or NULL; a userdata given its metatable by the debug library has
+ * another size and is refused (pcl.h: forged userdata). */
+static cnum *tocnum(lua_State *L, int idx) {
+    cnum *c = luaL_testudata(L, idx, COMPLEX_MT);
+    int ok = !c || (lua_rawlen(L, idx) == sizeof *c &&
+                    c->self == PCL_SELF_TAG(c, &COMPLEX_TAG));
+    return pcl_genuine(L, idx, c, ok, "complex number");
+}
+
+/* z of a method z:f() (also called as z.f(5): the message names it) */
+static cnum *checkz(lua_State *L, const char *fn) {
+    cnum *z = tocnum(L, 1);
+    if (!z) pcl_argerror_full(L, fn, 1, 0, NULL, "a complex number (call it as z:f())");
+    return z;
+}
+
 /* a complex operand: a complex or a real number */
 static int toc(lua_State *L, int idx, double complex *z) {
-    cnum *c = luaL_testudata(L, idx, COMPLEX_MT);
+    cnum *c = tocnum(L, idx);
     if (c) {
         *z = CMPLX(c->re, c->im);
         return 1;
@@ -70,7 +89,7 @@ static int c_div(lua_State *L) { return arith(L, '/'); }
 static int c_pow(lua_State *L) { return arith(L, '^'); }
 
 static int c_unm(lua_State *L) {
-    cnum *z = luaL_checkudata(L, 1, COMPLEX_MT);
+    cnum *z = checkz(L, "complex -");
     pushc(L, -z->re, -z->im);
     return 1;
 }
@@ -82,7 +101,7 @@ static int c_eq(lua_State *L) {
 }
 
 static int c_tostring(lua_State *L) {
-    cnum *z = luaL_checkudata(L, 1, COMPLEX_MT);
+    cnum *z = checkz(L, "tostring");
     pcl_pushnum(L, z->re);
     pcl_pushnum(L, z->im);
     lua_pushfstring(L, "complex(%s, %s)", lua_tostring(L, -2), lua_tostring(L, -1));
@@ -111,14 +130,14 @@ static int c_exp(lua_State *L) {
     return 1;
 }
 static int c_point(lua_State *L) {
-    cnum *z = luaL_checkudata(L, 1, COMPLEX_MT);
+    cnum *z = checkz(L, "z:point");
     double x[2] = {z->re, z->im};
     pcl_pushpoint(L, 2, x);
     return 1;
 }
 
 static int c_index(lua_State *L) {
-    cnum *z = luaL_checkudata(L, 1, COMPLEX_MT);
+    cnum *z = checkz(L, "z.field");
     const char *k = lua_tostring(L, 2);
     if (!k) return 0;
     if (!strcmp(k, "re")) lua_pushnumber(L, z->re);
@@ -143,8 +162,8 @@ static int c_new(lua_State *L) {
         pushc(L, x[0], x[1]);
         return 1;
     }
-    if (luaL_testudata(L, 1, COMPLEX_MT)) {
-        cnum *z = lua_touserdata(L, 1);
+    cnum *z = tocnum(L, 1);
+    if (z) {
         pushc(L, z->re, z->im);
         return 1;
     }
@@ -164,6 +183,8 @@ static int c_polar(lua_State *L) {
 
 static mobius *checkm(lua_State *L, int idx, const char *fn) {
     mobius *m = luaL_testudata(L, idx, MOBIUS_MT);
+    int ok = !m || (lua_rawlen(L, idx) == sizeof *m && m->self == PCL_SELF_TAG(m, &MOBIUS_TAG));
+    pcl_genuine(L, idx, m, ok, "Moebius map");
     if (!m) pcl_argerror_full(L, fn, idx, idx, "self", "a Moebius map");
     return m;
 }
@@ -205,6 +226,7 @@ static int m_call(lua_State *L) {
 
 static void pushm(lua_State *L, double re, double im, double phi) {
     mobius *m = lua_newuserdatauv(L, sizeof *m, 0);
+    m->self = PCL_SELF_TAG(m, &MOBIUS_TAG);
     m->z0re = re;
     m->z0im = im;
     m->phi = phi;

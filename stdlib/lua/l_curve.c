@@ -21,10 +21,12 @@
 #include "pcl_expr.h"
 
 #define CURVE_MT "curve"
+static const char CURVE_TAG = 'c';   /* its address tags the type (PCL_SELF_TAG) */
 
 enum { TK_NONE, TK_SPLINE2, TK_STROKE, TK_FOURIER };
 
 typedef struct {
+    PCL_SELF;           /* its own address: a forged curve is refused (pcl.h) */
     pc_curve *c;
     const char *kind;   /* the constructor's name (a static string) */
     int tk, np, n;      /* Stepanov's kinds: pieces of a stroke, n of a Fourier curve */
@@ -127,6 +129,7 @@ static int luafn_eval(void *ud, double t, int order, double *out) {
 static lcurve *newcurve(lua_State *L, pc_curve *c, const char *kind, size_t extra) {
     lcurve *u = lua_newuserdatauv(L, sizeof(lcurve) + extra, 1);   /* uv 1: a Lua smoothstep */
     memset(u, 0, sizeof *u);
+    u->self = PCL_SELF_TAG(u, &CURVE_TAG);
     u->c = c;
     u->kind = kind;
     luaL_setmetatable(L, CURVE_MT);
@@ -146,8 +149,15 @@ static int callable(lua_State *L, int idx) {
     return 1;
 }
 
-pc_curve *pcl_tocurve(lua_State *L, int idx) {
+/* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
+static lcurve *tocurve(lua_State *L, int idx) {
     lcurve *u = luaL_testudata(L, idx, CURVE_MT);
+    int ok = !u || (lua_rawlen(L, idx) >= sizeof *u && u->self == PCL_SELF_TAG(u, &CURVE_TAG));
+    return pcl_genuine(L, idx, u, ok, "curve");
+}
+
+pc_curve *pcl_tocurve(lua_State *L, int idx) {
+    lcurve *u = tocurve(L, idx);
     return u ? u->c : NULL;
 }
 
@@ -156,7 +166,7 @@ void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
 }
 
 static lcurve *checkcurve(lua_State *L, int idx, const char *fname) {
-    lcurve *u = luaL_testudata(L, idx, CURVE_MT);
+    lcurve *u = tocurve(L, idx);
     if (!u || !u->c) pcl_argerror_full(L, fname, idx, idx, "self", "a curve");
     pcl_callback_state(L);
     return u;
@@ -164,7 +174,8 @@ static lcurve *checkcurve(lua_State *L, int idx, const char *fname) {
 
 static int c_gc(lua_State *L) {
     lcurve *u = luaL_testudata(L, 1, CURVE_MT);
-    if (u && u->c) {
+    /* never a forged one */
+    if (u && lua_rawlen(L, 1) >= sizeof *u && u->self == PCL_SELF_TAG(u, &CURVE_TAG) && u->c) {
         pcl_callback_state(L);
         pc_curve_release(u->c);
         u->c = NULL;

@@ -16,6 +16,7 @@
 #include "numeric.h"
 
 #define ORESME_MT "oresme"
+static const char ORESME_TAG = 'o';   /* its address tags the type (PCL_SELF_TAG) */
 
 /* ---- plane -> square ------------------------------------------------------------------------ */
 
@@ -65,19 +66,32 @@ static int l_projection(lua_State *L) {
 /* ---- Oresme ----------------------------------------------------------------------------------- */
 
 typedef struct {
+    PCL_SELF;           /* a 2-D point has the size of a short sequence: self tells (pcl.h) */
     double lambda;
     int m;
     double y[];
 } oresme;
 
+/* The Oresme sequence of a method call (o(t), o[j], #o, tostring(o)); its block is exactly
+ * the header and 2^m + 1 values, so one given the metatable by the debug library is refused. */
+static oresme *checkoresme(lua_State *L, const char *fn) {
+    oresme *o = luaL_testudata(L, 1, ORESME_MT);
+    if (!o) pcl_argerror_full(L, fn, 1, 0, NULL, "an Oresme sequence (oresme(lambda, m))");
+    size_t len = lua_rawlen(L, 1);
+    int ok = len >= sizeof *o && o->self == PCL_SELF_TAG(o, &ORESME_TAG) && o->m >= 0 &&
+             o->m <= PC_ORESME_MAXLEVEL &&
+             len == sizeof *o + sizeof(double) * (size_t)((1L << o->m) + 1);
+    return pcl_genuine(L, 1, o, ok, "Oresme sequence");
+}
+
 static int oresme_call(lua_State *L) {
-    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    oresme *o = checkoresme(L, "oresme");
     lua_pushnumber(L, pc_oresme_at(o->y, o->m, pcl_checknum_m(L, "oresme", 2, "t")));
     return 1;
 }
 
 static int oresme_index(lua_State *L) {
-    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    oresme *o = checkoresme(L, "o[j]");
     if (lua_isinteger(L, 2)) {
         lua_Integer j = lua_tointeger(L, 2);
         if (j < 0 || j > (1L << o->m)) return 0;
@@ -94,13 +108,13 @@ static int oresme_index(lua_State *L) {
 }
 
 static int oresme_len(lua_State *L) {
-    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    oresme *o = checkoresme(L, "#");
     lua_pushinteger(L, 1L << o->m);
     return 1;
 }
 
 static int oresme_tostring(lua_State *L) {
-    oresme *o = luaL_checkudata(L, 1, ORESME_MT);
+    oresme *o = checkoresme(L, "tostring");
     pcl_pushnum(L, o->lambda);
     lua_pushfstring(L, "oresme(%s, %d)", lua_tostring(L, -1), o->m);
     return 1;
@@ -119,6 +133,7 @@ static int l_oresme(lua_State *L) {
     double y0 = pcl_optnum(L, fn, 3, "y0", 0.0), y1 = pcl_optnum(L, fn, 4, "y1", 1.0);
     long n = 1L << m;
     oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
+    o->self = PCL_SELF_TAG(o, &ORESME_TAG);
     o->lambda = lambda;
     o->m = (int)m;
     luaL_setmetatable(L, ORESME_MT);

@@ -15,29 +15,45 @@
 #include "pcl_qbscreen.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
+static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
 #define THEME_KEY "pointcalc.theme"
 #define CANVAS_MT "pointcalc.Canvas"
 
 /* c is the page drawn on; pages[] are QBasic's screen pages (pages[0] is the first canvas,
  * the others made on first use), `visual` the one shown and saved by the host. */
 typedef struct {
+    PCL_SELF;             /* its own address: a forged box is refused (pcl.h) */
     pc_canvas *c;
     pc_canvas *pages[PCL_MAX_PAGES];
     int npages, active, visual;
     pc_draw_state draw;   /* DRAW's colour, scale and angle, kept between statements */
 } canvas_box;
 
+/* The box at idx, or NULL: the debug library can put something else in the registry entry
+ * or in a drawing function's upvalue (debug.setupvalue), so its size and self are checked. */
+static canvas_box *genuine_box(lua_State *L, int idx) {
+    canvas_box *b = lua_touserdata(L, idx);
+    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b &&
+        b->self == PCL_SELF_TAG(b, &CANVAS_TAG))
+        return b;
+    return NULL;
+}
+
+static canvas_box *box_at(lua_State *L, int idx) {
+    canvas_box *b = genuine_box(L, idx);
+    if (!b) pcl_error(L, "%s: the canvas was replaced (debug.setupvalue)", pcl_fname(L));
+    return b;
+}
+
+/* the host asks outside any protected call: no error, NULL as for no canvas */
 static canvas_box *the_box(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
-    canvas_box *b = lua_touserdata(L, -1);
+    canvas_box *b = genuine_box(L, -1);
     lua_pop(L, 1);
     return b;
 }
 
-static pc_canvas *canvas(lua_State *L) {
-    canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
-    return b->c;
-}
+static pc_canvas *canvas(lua_State *L) { return box_at(L, lua_upvalueindex(1))->c; }
 
 pc_canvas *pcl_canvas(lua_State *L) {
     canvas_box *b = the_box(L);
@@ -120,19 +136,6 @@ static int check(lua_State *L, pc_canvas *c, int rc) {
     return pcl_error(L, "%s: %s", name, msg);
 }
 
-/* "#rrggbb" -> rgb; 0 if s is not exactly that. */
-static int parse_hex_rgb(const char *s, size_t len, pc_rgb *rgb) {
-    if (len != 7 || s[0] != '#') return 0;
-    unsigned v[6];
-    for (int i = 0; i < 6; i++) {
-        int ch = (unsigned char)s[i + 1];
-        if (!isxdigit(ch)) return 0;
-        v[i] = (unsigned)(isdigit(ch) ? ch - '0' : tolower(ch) - 'a' + 10);
-    }
-    *rgb = (pc_rgb){(uint8_t)(v[0] * 16 + v[1]), (uint8_t)(v[2] * 16 + v[3]), (uint8_t)(v[4] * 16 + v[5])};
-    return 1;
-}
-
 /* The house argument error for a string value at idx, showing the string itself, for
  * argument arg. */
 static int bad_string(lua_State *L, int idx, int arg, const char *what, const char *expected) {
@@ -159,7 +162,7 @@ static int color_at(lua_State *L, int idx, int arg, pc_canvas *c, const char *wh
         size_t len;
         const char *str = lua_tolstring(L, idx, &len);
         pc_rgb rgb;
-        if (!parse_hex_rgb(str, len, &rgb)) return color_error(L, idx, arg, c, what);
+        if (pc_rgb_parse(str, len, &rgb) != PC_OK) return color_error(L, idx, arg, c, what);
         int attr = pc_rgb_color(c, rgb);
         if (attr < 0) return pcl_error(L, "%s: %s", pcl_fname(L), c->error);
         return attr;
@@ -189,7 +192,7 @@ static double opt_number(lua_State *L, int arg, const char *what, double dflt) {
 /* ---- the statements ---------------------------------------------------------------------- */
 
 static int l_screen(lua_State *L) {
-    canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
+    canvas_box *b = box_at(L, lua_upvalueindex(1));
     int w, h, colors = 16, pages = 1;
     if (lua_istable(L, 1)) {
         lua_getfield(L, 1, "width");
@@ -246,22 +249,21 @@ static int l_color(lua_State *L) {
  * components, a "#rrggbb" string, or a table {r, g, b} of 0..255. */
 static pc_rgb check_rgb(lua_State *L, int arg) {
     if (lua_type(L, arg) == LUA_TSTRING) {
-        unsigned r, g, b;
-        const char *s = lua_tostring(L, arg);
-        if (strlen(s) == 7 && sscanf(s, "#%2x%2x%2x", &r, &g, &b) == 3)
-            return (pc_rgb){(uint8_t)r, (uint8_t)g, (uint8_t)b};
+        size_t len;
+        const char *s = lua_tolstring(L, arg, &len);
+        pc_rgb rgb;
+        if (pc_rgb_parse(s, len, &rgb) == PC_OK) return rgb;
     } else if (lua_istable(L, arg)) {
         int v[3];
         for (int i = 0; i < 3; i++) {
-            lua_geti(L, arg, i + 1);
-            int isint;
+            int isnum = lua_geti(L, arg, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
             lua_Integer x = lua_tointegerx(L, -1, &isint);
             lua_pop(L, 1);
-            if (!isint || x < 0 || x > 255) goto bad;
+            if (!isnum || !isint || x < 0 || x > 255) goto bad;
             v[i] = (int)x;
         }
         return (pc_rgb){(uint8_t)v[0], (uint8_t)v[1], (uint8_t)v[2]};
-    } else {
+    } else if (lua_type(L, arg) == LUA_TNUMBER) {
         int isint;
         lua_Integer q = lua_tointegerx(L, arg, &isint);
         int r = (int)(q & 0xff), g = (int)((q >> 8) & 0xff), b = (int)((q >> 16) & 0xff);
@@ -269,9 +271,10 @@ static pc_rgb check_rgb(lua_State *L, int arg) {
             return (pc_rgb){(uint8_t)((r << 2) | (r >> 4)), (uint8_t)((g << 2) | (g >> 4)),
                             (uint8_t)((b << 2) | (b >> 4))};
     }
-bad:
-    pcl_argerror(L, arg, "colour",
-                 "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}");
+bad:;
+    static const char expected[] = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}";
+    if (lua_type(L, arg) == LUA_TSTRING) bad_string(L, arg, arg, "colour", expected);
+    pcl_argerror(L, arg, "colour", expected);
     return (pc_rgb){0, 0, 0};
 }
 
@@ -287,7 +290,7 @@ static int l_palette(lua_State *L) {
     }
     pc_rgb rgb = check_rgb(L, 2);
     /* the palette is the video card's: every page shows it */
-    canvas_box *b = lua_touserdata(L, lua_upvalueindex(1));
+    canvas_box *b = box_at(L, lua_upvalueindex(1));
     for (int i = 0; i < PCL_MAX_PAGES; i++)
         if (b->pages[i] && b->pages[i] != c) check(L, b->pages[i], pc_palette(b->pages[i], (int)attr, rgb));
     return check(L, c, pc_palette(c, (int)attr, rgb));
@@ -711,7 +714,8 @@ static int l_size(lua_State *L) {
 }
 
 static int canvas_gc(lua_State *L) {
-    canvas_box *b = lua_touserdata(L, 1);
+    canvas_box *b = genuine_box(L, 1);
+    if (!b) return 0;   /* never a forged one */
     for (int i = 0; i < PCL_MAX_PAGES; i++)
         if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
     pc_canvas_free(b->c);
@@ -734,6 +738,7 @@ void pcl_open_draw(lua_State *L) {
         lua_pop(L, 1);
         canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
         memset(b, 0, sizeof *b);
+        b->self = PCL_SELF_TAG(b, &CANVAS_TAG);
         luaL_newmetatable(L, CANVAS_MT);
         lua_pushcfunction(L, canvas_gc);
         lua_setfield(L, -2, "__gc");

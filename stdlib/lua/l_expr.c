@@ -21,6 +21,7 @@
 #include "expr.h"
 
 #define EQ_MT "equation"
+static const char EQ_TAG = 'e', SAMPLES_TAG = 'S';   /* its address tags the type (PCL_SELF_TAG) */
 #define SAMPLES_MT "samples"
 static const char POOL_KEY = 'q';
 
@@ -29,11 +30,13 @@ static const char MEMBERSHIP[] =
     "(the membership condition)";
 
 typedef struct {
+    PCL_SELF;               /* its own address: a forged equation is refused (pcl.h) */
     int id;
     pc_expr_prog *prog;     /* compiled on first evaluation, inputs: its parameters in order */
 } leq;
 
 typedef struct {
+    PCL_SELF;               /* a 2-D point has the size of two samples: self tells (pcl.h) */
     long n;
     int dim;                /* 0: numbers */
     double v[];
@@ -58,20 +61,39 @@ static pc_expr_pool *pool(lua_State *L) {
     return *pp;
 }
 
-static leq *toeq(lua_State *L, int idx) { return luaL_testudata(L, idx, EQ_MT); }
+static int genuine_eq(lua_State *L, int idx, const leq *e) {
+    return lua_rawlen(L, idx) == sizeof *e && e->self == PCL_SELF_TAG(e, &EQ_TAG);
+}
+
+static leq *toeq(lua_State *L, int idx) {
+    leq *e = luaL_testudata(L, idx, EQ_MT);
+    return pcl_genuine(L, idx, e, !e || genuine_eq(L, idx, e), "equation");
+}
+
+/* Samples: exactly the header and n values of max(dim, 1) numbers (pcl.h: forged userdata). */
+static lsamples *tosamples(lua_State *L, int idx) {
+    lsamples *s = luaL_testudata(L, idx, SAMPLES_MT);
+    if (!s) return NULL;
+    size_t len = lua_rawlen(L, idx);
+    int ok = len >= sizeof *s && s->self == PCL_SELF_TAG(s, &SAMPLES_TAG) && s->dim >= 0 && s->dim <= PC_MAXDIM && s->n >= 0 &&
+             (size_t)s->n <= len / sizeof(double) &&
+             len == sizeof *s + sizeof(double) * (size_t)s->n * (size_t)(s->dim ? s->dim : 1);
+    return pcl_genuine(L, idx, s, ok, "samples");
+}
 
 int pcl_isequation(lua_State *L, int idx) { return toeq(L, idx) != NULL; }
 
 static void push_eq(lua_State *L, int id) {
     leq *e = lua_newuserdatauv(L, sizeof *e, 0);
+    e->self = PCL_SELF_TAG(e, &EQ_TAG);
     e->id = id;
     e->prog = NULL;
     luaL_setmetatable(L, EQ_MT);
 }
 
 static int eq_gc(lua_State *L) {
-    leq *e = toeq(L, 1);
-    if (e && e->prog) {
+    leq *e = luaL_testudata(L, 1, EQ_MT);
+    if (e && genuine_eq(L, 1, e) && e->prog) {   /* never a forged one */
         pc_expr_prog_free(e->prog);
         e->prog = NULL;
     }
@@ -572,7 +594,7 @@ static int eq_sample(lua_State *L) {
     int dim = pc_expr_prog_dim(prog), w = dim ? dim : 1;
     lsamples *s;
     if (!lua_isnoneornil(L, 5)) {                 /* M:sample(a, b, n, s): into s again */
-        s = luaL_testudata(L, 5, SAMPLES_MT);
+        s = tosamples(L, 5);
         if (!s || s->n != (long)n || s->dim != dim) {
             lua_pushfstring(L, "samples of %d %d-D values (from M:sample)", (int)n, dim);
             return pcl_argerror_full(L, "M:sample", 5, 4, "into", lua_tostring(L, -1));
@@ -580,6 +602,7 @@ static int eq_sample(lua_State *L) {
         lua_pushvalue(L, 5);
     } else {
         s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
+        s->self = PCL_SELF_TAG(s, &SAMPLES_TAG);
         s->n = (long)n;
         s->dim = dim;
         luaL_setmetatable(L, SAMPLES_MT);
@@ -618,7 +641,7 @@ static int eq_index(lua_State *L) {
 /* ---- samples ----------------------------------------------------------------------------------- */
 
 static lsamples *checksamples(lua_State *L, const char *fname) {
-    lsamples *s = luaL_testudata(L, 1, SAMPLES_MT);
+    lsamples *s = tosamples(L, 1);
     if (!s) pcl_argerror_full(L, fname, 1, 0, NULL, "samples");
     return s;
 }

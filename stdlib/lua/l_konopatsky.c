@@ -170,7 +170,7 @@ static void pushnums(lua_State *L, int n, const double *x) {
 
 /* ---- Lua functions called by the core ------------------------------------------------------ */
 
-typedef struct { int ref[4]; int nref; } luaref;
+typedef struct { int ref[4]; int nref; const char *fname; } luaref;   /* fname: for messages */
 
 static void luaref_free(void *ud) {
     luaref *r = ud;
@@ -180,10 +180,11 @@ static void luaref_free(void *ud) {
     free(r);
 }
 
-/* call function ref with x; a number, or NaN with the error kept */
-static double call1(int ref, double x) {
+/* call function r->ref[which] with x; a number, or NaN with the error kept (located at the
+ * user's line and naming the function that called it, as every message is) */
+static double call1(const luaref *r, int which, double x) {
     lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref[which]);
     lua_pushnumber(L, x);
     if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
         pcl_callback_failed(L);
@@ -192,7 +193,10 @@ static double call1(int ref, double x) {
     int isnum;
     double y = lua_tonumberx(L, -1, &isnum);
     if (!isnum) {
-        lua_pushfstring(L, "the function must return a number, got %s", luaL_typename(L, -1));
+        const char *got = luaL_typename(L, -1);
+        pcl_pushwhere(L);
+        lua_pushfstring(L, "%s: the function must return a number, got %s", r->fname, got);
+        lua_concat(L, 2);
         pcl_callback_failed(L);
         lua_pop(L, 1);
         return NAN;
@@ -201,11 +205,11 @@ static double call1(int ref, double x) {
     return y;
 }
 
-static double scalar_cb(double x, void *ud) { return call1(((luaref *)ud)->ref[0], x); }
-static double blend_cb(void *ud, double v) { return call1(((luaref *)ud)->ref[0], v); }
+static double scalar_cb(double x, void *ud) { return call1(ud, 0, x); }
+static double blend_cb(void *ud, double v) { return call1(ud, 0, v); }
 static double real_cb(void *ud, int which, double t) {
     luaref *r = ud;
-    return which < r->nref ? call1(r->ref[which], t) : NAN;
+    return which < r->nref ? call1(r, which, t) : NAN;
 }
 
 static int callable(lua_State *L, int idx) {
@@ -215,10 +219,11 @@ static int callable(lua_State *L, int idx) {
     return 1;
 }
 
-static luaref *newref(lua_State *L, int n, const int *idx) {
+static luaref *newref(lua_State *L, const char *fname, int n, const int *idx) {
     luaref *r = malloc(sizeof *r);
-    if (!r) pcl_error(L, "out of memory");
+    if (!r) pcl_error(L, "%s: out of memory", fname);
     r->nref = n;
+    r->fname = fname;   /* a static string */
     for (int i = 0; i < n; i++) {
         lua_pushvalue(L, idx[i]);
         r->ref[i] = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -600,7 +605,7 @@ static int c_contour(lua_State *L) {
     if (has_d && !callable(L, 6)) pcl_argerror_full(L, fn, 6, 6, "du", "a function of t");
     if (has_d && !callable(L, 7)) pcl_argerror_full(L, fn, 7, 7, "dv", "a function of t");
     int idx[4] = {4, 5, 6, 7};
-    luaref *r = newref(L, has_d ? 4 : 2, idx);
+    luaref *r = newref(L, fn, has_d ? 4 : 2, idx);
     int st;
     pcl_callback_state(L);
     pc_curve *c = pc_contour_arc(d, A1, A2, A3, real_cb, has_d, luaref_free, r, &st);
@@ -702,7 +707,7 @@ static int o_double_contact(lua_State *L) {
     } else {
         if (!callable(L, 6)) pcl_argerror_full(L, fn, 6, 6, "f", "a function of v or a number");
         int idx[1] = {6};
-        luaref *r = newref(L, 1, idx);
+        luaref *r = newref(L, fn, 1, idx);
         c = pc_oneratio_double_contact(d, A, B, C, kp, kq, blend_cb, luaref_free, r, &st);
         if (!c) luaref_free(r);
     }
@@ -951,7 +956,9 @@ static int basis_cb(void *ud, double t, int n, double *g) {
         int isnum;
         g[i] = lua_tonumberx(L, -1, &isnum);
         if (!isnum) {
+            pcl_pushwhere(L);
             lua_pushfstring(L, "interp.basis: the basis function [%d] must return a number", i + 1);
+            lua_concat(L, 2);
             int st = pcl_callback_failed(L);
             lua_pop(L, i + 2);
             return st;
@@ -1031,7 +1038,7 @@ static int i_rational22(lua_State *L) {
 static luaref *checkfn(lua_State *L, const char *fn, int arg) {
     if (!callable(L, arg)) pcl_argerror_full(L, fn, arg, arg, "f", "a function of x");
     int idx[1] = {arg};
-    luaref *r = newref(L, 1, idx);
+    luaref *r = newref(L, fn, 1, idx);
     pcl_callback_state(L);
     return r;
 }

@@ -30,9 +30,16 @@
 #define AMT lua_upvalueindex(1)
 static const char REGKEY[] = "pointcalc.map";      /* the metatable in the registry */
 
-static pc_map *tomap(lua_State *L, int idx) { return pcl_testudata(L, idx, AMT); }
+/* A genuine map's block is a pc_map with dimensions 1..PC_MAXDIM (pcl.h: forged userdata). */
+static pc_map *genuine_map(lua_State *L, int idx, pc_map *f) {
+    int ok = !f || (lua_rawlen(L, idx) == sizeof(pc_map) && f->nin >= 1 &&
+                    f->nin <= PC_MAXDIM && f->nout >= 1 && f->nout <= PC_MAXDIM);
+    return pcl_genuine(L, idx, f, ok, "map");
+}
 
-pc_map *pcl_tomap(lua_State *L, int idx) { return luaL_testudata(L, idx, REGKEY); }
+static pc_map *tomap(lua_State *L, int idx) { return genuine_map(L, idx, pcl_testudata(L, idx, AMT)); }
+
+pc_map *pcl_tomap(lua_State *L, int idx) { return genuine_map(L, idx, luaL_testudata(L, idx, REGKEY)); }
 
 pc_map *pcl_newmap(lua_State *L) {
     pc_map *f = lua_newuserdatauv(L, sizeof(pc_map), 0);
@@ -123,6 +130,11 @@ static int checkconv(lua_State *L, const char *fn, int idx, int shown) {
 static int read_points(lua_State *L, int arg, const char *what, double *out, int *dim) {
     int t = lua_type(L, arg);                        /* a table, or a simplex */
     if (t != LUA_TTABLE && t != LUA_TUSERDATA) return pcl_argerror(L, arg, what, "a table of points");
+    if (t == LUA_TUSERDATA) {    /* one that has a length and items: a simplex, not complex(1, 2) */
+        if (luaL_getmetafield(L, arg, "__len") == LUA_TNIL)
+            return pcl_argerror(L, arg, what, "a table of points or a simplex");
+        lua_pop(L, 1);
+    }
     int m = (int)luaL_len(L, arg);
     if (m > PC_MAXDIM + 1)
         return pcl_error(L, "%s: argument #%d (%s) holds %d points; the largest dimension is %d",

@@ -19,7 +19,19 @@ static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the
 
 /* ---- recognising and making values ------------------------------------------------------- */
 
-static inline pcl_value *topt(lua_State *L, int idx) { return pcl_testudata(L, idx, MT); }
+/* A genuine value's block is exactly its header and n + 1 doubles, n = 1..PC_MAXDIM: a
+ * userdata given the point metatable by the debug library has another size (pcl.h). */
+static inline int genuine_value(lua_State *L, int idx, const pcl_value *p) {
+    size_t len = lua_rawlen(L, idx);
+    return len >= sizeof(pcl_value) && p->n >= 1 && p->n <= PC_MAXDIM &&
+           len == sizeof(pcl_value) + (size_t)(p->n + 1) * sizeof(double);
+}
+
+static inline pcl_value *topt(lua_State *L, int idx) {
+    pcl_value *p = pcl_testudata(L, idx, MT);
+    if (p && !genuine_value(L, idx, p)) pcl_genuine(L, idx, p, 0, "point");
+    return p;
+}
 
 static inline pcl_value *newpt(lua_State *L, int n) {
     pcl_value *p = lua_newuserdatauv(L, sizeof(pcl_value) + (size_t)(n + 1) * sizeof(double), 0);
@@ -36,6 +48,7 @@ pcl_value *pcl_tovalue(lua_State *L, int idx) {
     pcl_push_point_mt(L);
     pcl_value *p = pcl_testudata(L, idx, lua_gettop(L));
     lua_pop(L, 1);
+    if (p && !genuine_value(L, idx, p)) pcl_genuine(L, idx, p, 0, "point");
     return p;
 }
 
@@ -385,6 +398,7 @@ static int l_eq(lua_State *L) {
 static int l_len(lua_State *L) {
     pcl_value *p = lua_touserdata(L, 1);                /* only the VM calls it */
     if (!p) return pcl_error(L, "#: not a point");
+    if (!genuine_value(L, 1, p)) pcl_genuine(L, 1, p, 0, "point");
     lua_pushinteger(L, p->n);
     return 1;
 }
@@ -430,6 +444,8 @@ static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key)
 static int l_index(lua_State *L) {
     pcl_value *p = lua_touserdata(L, 1);
     if (!p) return pcl_error(L, "index: not a point");
+    /* the VM calls it for any userdata with this metatable, a forged one too */
+    if (!genuine_value(L, 1, p)) pcl_genuine(L, 1, p, 0, "point");
     int t = lua_type(L, 2);
     if (t == LUA_TSTRING) {
         size_t len;
@@ -478,15 +494,22 @@ static int l_lerp(lua_State *L) {
     if (a && b && isnum && a->n == b->n && isfinite(t)) {       /* the hot path */
         int n = a->n;
         pcl_value *r = newpt(L, n);
-        double s = 1.0 - t;
-        for (int i = 0; i <= n; i++) r->h[i] = a->h[i] * s + b->h[i] * t;
+        pc_lerp(n, a->h, b->h, t, r->h);     /* equal weights kept exactly (t = 1e16) */
+        for (int i = 0; i <= n; i++)
+            if (!isfinite(r->h[i]))
+                return pcl_error(L, "%s: the result is out of range (not finite) for t = %s",
+                                 pcl_fname(L), pcl_pushnum(L, t));
         return 1;
     }
     if (!isnum && pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
     if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
         double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2);
         t = pcl_checkfinite(L, 3, "t");
-        lua_pushnumber(L, x * (1 - t) + y * t);
+        double v = x * (1 - t) + y * t;
+        if (!isfinite(v))
+            return pcl_error(L, "%s: the result is out of range (not finite) for t = %s",
+                             pcl_fname(L), pcl_pushnum(L, t));
+        lua_pushnumber(L, v);
         return 1;
     }
     if (pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
@@ -677,8 +700,13 @@ static int l_divide(lua_State *L) {
     memcpy(xh, x, sizeof(double) * (size_t)n);
     memcpy(yh, y, sizeof(double) * (size_t)n);
     xh[n] = yh[n] = 1.0;
+    double out[PC_MAXDIM + 1];
+    int st = pc_divide(n, xh, yh, lam, out);
+    if (st == PC_ENONFINITE)
+        return pcl_error(L, "divide: the point is out of range (not finite) for lambda = %s",
+                         pcl_pushnum(L, lam));
     pcl_value *r = newpt(L, n);
-    pc_divide(n, xh, yh, lam, r->h);
+    memcpy(r->h, out, sizeof(double) * (size_t)(n + 1));
     return 1;
 }
 

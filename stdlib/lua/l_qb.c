@@ -44,8 +44,18 @@ static int push_rounded(lua_State *L, double (*fn)(double, int *)) {
 static int l_cint(lua_State *L) { return push_rounded(L, qb_cint); }
 static int l_clng(lua_State *L) { return push_rounded(L, qb_clng); }
 
+/* The state in the upvalue: the debug library can replace it (debug.setupvalue), so its type
+ * and size are checked (pcl.h: forged userdata). */
+static void *upvalue_state(lua_State *L, size_t size, const char *type) {
+    void *p = lua_touserdata(L, lua_upvalueindex(1));
+    int ok = p && lua_type(L, lua_upvalueindex(1)) == LUA_TUSERDATA &&
+             lua_rawlen(L, lua_upvalueindex(1)) == size;
+    if (!ok) pcl_error(L, "%s: its %s was replaced (debug.setupvalue)", pcl_fname(L), type);
+    return p;
+}
+
 static qb_rnd_state *rnd_state(lua_State *L) {
-    return lua_touserdata(L, lua_upvalueindex(1));
+    return upvalue_state(L, sizeof(qb_rnd_state), "random-number state");
 }
 
 static int l_rnd(lua_State *L) {
@@ -72,7 +82,7 @@ static int l_seed(lua_State *L) {
 }
 
 static int range_iter(lua_State *L) {
-    qb_range *r = lua_touserdata(L, lua_upvalueindex(1));
+    qb_range *r = upvalue_state(L, sizeof(qb_range), "range");
     double v;
     if (!qb_range_next(r, &v)) return 0;
     lua_pushnumber(L, v);

@@ -16,6 +16,7 @@
 #include "pcl_qbscreen.h"
 
 #define BLOCK_MT "pointcalc.Block"
+static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
 
 /* A core call failed: its message, under the binding's name (given: through a pcall the
  * caller's name is unknown). */
@@ -89,17 +90,32 @@ static int l_scroll_text(lua_State *L) {
 
 /* ---- blocks ------------------------------------------------------------------------------ */
 
-typedef struct { pc_block *b; long bytes; } block_box;
+typedef struct { PCL_SELF; pc_block *b; long bytes; } block_box;   /* self: pcl.h */
+
+/* The block at idx or NULL; one given the metatable by the debug library is refused. */
+static block_box *toblock(lua_State *L, int idx) {
+    block_box *bb = luaL_testudata(L, idx, BLOCK_MT);
+    int ok = !bb || (lua_rawlen(L, idx) == sizeof *bb && bb->self == PCL_SELF_TAG(bb, &BLOCK_TAG));
+    return pcl_genuine(L, idx, bb, ok, "block");
+}
+
+static block_box *checkblock(lua_State *L, const char *fn) {
+    block_box *bb = toblock(L, 1);
+    if (!bb) pcl_argerror_full(L, fn, 1, 0, NULL, "a block from get_block");
+    return bb;
+}
 
 static int block_gc(lua_State *L) {
-    block_box *bb = luaL_checkudata(L, 1, BLOCK_MT);
+    block_box *bb = luaL_testudata(L, 1, BLOCK_MT);
+    if (!bb || lua_rawlen(L, 1) != sizeof *bb || bb->self != PCL_SELF_TAG(bb, &BLOCK_TAG))
+        return 0;   /* never a forged one */
     pc_block_free(bb->b);
     bb->b = NULL;
     return 0;
 }
 
 static int block_index(lua_State *L) {
-    block_box *bb = luaL_checkudata(L, 1, BLOCK_MT);
+    block_box *bb = checkblock(L, "block.field");
     const char *k = lua_tostring(L, 2);
     if (bb->b && k && !strcmp(k, "w")) lua_pushinteger(L, bb->b->w);
     else if (bb->b && k && !strcmp(k, "h")) lua_pushinteger(L, bb->b->h);
@@ -109,7 +125,7 @@ static int block_index(lua_State *L) {
 }
 
 static int block_tostring(lua_State *L) {
-    block_box *bb = luaL_checkudata(L, 1, BLOCK_MT);
+    block_box *bb = checkblock(L, "tostring");
     lua_pushfstring(L, "block(%d x %d)", bb->b ? bb->b->w : 0, bb->b ? bb->b->h : 0);
     return 1;
 }
@@ -121,6 +137,7 @@ static int l_get_block(lua_State *L) {
     pcl_checkxy(L, &arg, &x1, &y1, "first corner");
     pcl_checkxy(L, &arg, &x2, &y2, "second corner");
     block_box *bb = lua_newuserdatauv(L, sizeof *bb, 0);
+    bb->self = PCL_SELF_TAG(bb, &BLOCK_TAG);
     bb->b = NULL;
     luaL_setmetatable(L, BLOCK_MT);
     check(L, c, pc_get_block(c, x1, y1, x2, y2, &bb->b), "get_block");
@@ -133,7 +150,7 @@ static int l_put_block(lua_State *L) {
     int arg = 1;
     double x, y;
     pcl_checkxy(L, &arg, &x, &y, "corner");
-    block_box *bb = luaL_testudata(L, arg, BLOCK_MT);
+    block_box *bb = toblock(L, arg);
     if (!bb || !bb->b) return pcl_argerror(L, arg, "block", "a block from get_block");
     static const char *const actions[] = {"pset", "preset", "and", "or", "xor", NULL};
     int action = PC_PUT_XOR;

@@ -15,7 +15,15 @@
 
 #define SMT lua_upvalueindex(1)
 
-static pc_simplex *tosimplex(lua_State *L, int idx) { return pcl_testudata(L, idx, SMT); }
+/* A genuine simplex's block is exactly pc_simplex_size(n, k) (pcl.h: forged userdata). */
+static pc_simplex *tosimplex(lua_State *L, int idx) {
+    pc_simplex *s = pcl_testudata(L, idx, SMT);
+    if (!s) return NULL;
+    size_t len = lua_rawlen(L, idx);
+    int ok = len >= sizeof(pc_simplex) && s->n >= 1 && s->n <= PC_MAXDIM && s->k >= 1 &&
+             s->k <= s->n && len == pc_simplex_size(s->n, s->k);
+    return pcl_genuine(L, idx, s, ok, "simplex");
+}
 
 static pc_simplex *checkself(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);

@@ -14,18 +14,28 @@
 
 #define HSPLINE_MT "halfspline"
 
+/* g(t) pushed, or an error when it is not finite: an extrapolation far past [0, 1]
+ * (smooth.cubic(1e308)) overflows, and no NaN or infinity is returned silently. */
+static int push_value(lua_State *L, const char *fname, double t, double g) {
+    if (!isfinite(g))
+        return pcl_error(L, "%s: the value at t = %s is out of range (not finite)", fname,
+                         pcl_pushnum(L, t));
+    lua_pushnumber(L, g);
+    return 1;
+}
+
 static int l_sine(lua_State *L) {
     static const pc_gfun g = {PC_G_SINE, {0, 0, 0, 0, 0}};
     if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
-    lua_pushnumber(L, pc_smooth_sine(pcl_checknum(L, "smooth.sine", 1, "t")));
-    return 1;
+    double t = pcl_checknum(L, "smooth.sine", 1, "t");
+    return push_value(L, "smooth.sine", t, pc_smooth_sine(t));
 }
 
 static int l_cubic(lua_State *L) {
     static const pc_gfun g = {PC_G_CUBIC, {0, 0, 0, 0, 0}};
     if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
-    lua_pushnumber(L, pc_smooth_cubic(pcl_checknum(L, "smooth.cubic", 1, "t")));
-    return 1;
+    double t = pcl_checknum(L, "smooth.cubic", 1, "t");
+    return push_value(L, "smooth.cubic", t, pc_smooth_cubic(t));
 }
 
 /* the smoothsteps the curve bindings recognise by identity */
@@ -42,8 +52,17 @@ static pc_hspline *newhs(lua_State *L) {
     return h;
 }
 
+/* The half-spline at idx or NULL; one given the metatable by the debug library is refused. */
 pc_hspline *pcl_tohspline(lua_State *L, int idx) {
-    return luaL_testudata(L, idx, HSPLINE_MT);
+    pc_hspline *h = luaL_testudata(L, idx, HSPLINE_MT);
+    return pcl_genuine(L, idx, h, !h || lua_rawlen(L, idx) == sizeof *h, "half-spline");
+}
+
+/* g of g(t), g:deriv(t), g.n, tostring(g) */
+static pc_hspline *checkhs(lua_State *L, const char *fn) {
+    pc_hspline *h = pcl_tohspline(L, 1);
+    if (!h) pcl_argerror_full(L, fn, 1, 0, NULL, "a half-spline (smooth.half(n, m, t0))");
+    return h;
 }
 
 static void check_degree(lua_State *L, const char *fname, int arg, const char *what, double v) {
@@ -85,8 +104,8 @@ static int l_power(lua_State *L) {
     pc_hspline h;
     init_checked(L, fn, &h, n, n, 0.5);
     if (!lua_isnoneornil(L, 2)) {
-        lua_pushnumber(L, pc_hspline_eval(&h, checked_t(L, &h, fn, 2, 2)));
-        return 1;
+        double t = checked_t(L, &h, fn, 2, 2);
+        return push_value(L, fn, t, pc_hspline_eval(&h, t));
     }
     *newhs(L) = h;
     return 1;
@@ -102,8 +121,8 @@ static int l_half(lua_State *L) {
     pc_hspline h;
     init_checked(L, fn, &h, n, m, t0);
     if (!lua_isnoneornil(L, 4)) {
-        lua_pushnumber(L, pc_hspline_eval(&h, checked_t(L, &h, fn, 4, 4)));
-        return 1;
+        double t = checked_t(L, &h, fn, 4, 4);
+        return push_value(L, fn, t, pc_hspline_eval(&h, t));
     }
     *newhs(L) = h;
     return 1;
@@ -136,17 +155,17 @@ static int l_clamp_qb(lua_State *L) {
 /* ---- the half-spline object ------------------------------------------------------------- */
 
 static int hs_call(lua_State *L) {
-    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    pc_hspline *h = checkhs(L, "halfspline");
     if (lua_type(L, 2) != LUA_TNUMBER) {
         pc_gfun g = {PC_G_HALF, *h};
         if (pcl_eq_smooth(L, 2, &g)) return 1;
     }
-    lua_pushnumber(L, pc_hspline_eval(h, checked_t(L, h, "halfspline", 2, 1)));
-    return 1;
+    double t = checked_t(L, h, "halfspline", 2, 1);
+    return push_value(L, "halfspline", t, pc_hspline_eval(h, t));
 }
 
 static int hs_deriv(lua_State *L) {
-    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    pc_hspline *h = checkhs(L, "g:deriv");
     double t = checked_t(L, h, "g:deriv", 2, 1);
     double d = pc_hspline_deriv(h, t);
     /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
@@ -158,7 +177,7 @@ static int hs_deriv(lua_State *L) {
 }
 
 static int hs_index(lua_State *L) {
-    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    pc_hspline *h = checkhs(L, "g.field");
     const char *k = lua_tostring(L, 2);
     if (!k) return 0;
     if (!strcmp(k, "n")) lua_pushnumber(L, h->n);
@@ -173,7 +192,7 @@ static int hs_index(lua_State *L) {
 }
 
 static int hs_tostring(lua_State *L) {
-    pc_hspline *h = luaL_checkudata(L, 1, HSPLINE_MT);
+    pc_hspline *h = checkhs(L, "tostring");
     pcl_pushnum(L, h->n);
     pcl_pushnum(L, h->m);
     pcl_pushnum(L, h->t0);

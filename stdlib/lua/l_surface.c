@@ -20,20 +20,30 @@
 #include "pcl_expr.h"
 
 #define SURF_MT "surface"
+static const char SURF_TAG = 's';   /* its address tags the type (PCL_SELF_TAG) */
 
 typedef struct {
+    PCL_SELF;           /* its own address: a forged surface is refused (pcl.h) */
     pc_surface *s;
     const char *kind;
 } lsurf;
 
-pc_surface *pcl_tosurface(lua_State *L, int idx) {
+/* The surface object at idx or NULL; one given the metatable by the debug library is refused. */
+static lsurf *tosurf(lua_State *L, int idx) {
     lsurf *u = luaL_testudata(L, idx, SURF_MT);
+    int ok = !u || (lua_rawlen(L, idx) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG));
+    return pcl_genuine(L, idx, u, ok, "surface");
+}
+
+pc_surface *pcl_tosurface(lua_State *L, int idx) {
+    lsurf *u = tosurf(L, idx);
     return u ? u->s : NULL;
 }
 
 static lsurf *pushsurf(lua_State *L, pc_surface *s, int status, const char *kind) {
     if (!s) pcl_raise_status(L, kind, status);
     lsurf *u = lua_newuserdatauv(L, sizeof *u, 0);
+    u->self = PCL_SELF_TAG(u, &SURF_TAG);
     u->s = s;
     u->kind = kind;
     luaL_setmetatable(L, SURF_MT);
@@ -45,7 +55,7 @@ void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
 }
 
 static lsurf *checksurf(lua_State *L, int idx, const char *fname) {
-    lsurf *u = luaL_testudata(L, idx, SURF_MT);
+    lsurf *u = tosurf(L, idx);
     if (!u || !u->s) pcl_argerror_full(L, fname, idx, idx, "self", "a surface");
     pcl_callback_state(L);
     return u;
@@ -53,7 +63,8 @@ static lsurf *checksurf(lua_State *L, int idx, const char *fname) {
 
 static int s_gc(lua_State *L) {
     lsurf *u = luaL_testudata(L, 1, SURF_MT);
-    if (u && u->s) {
+    /* never a forged one */
+    if (u && lua_rawlen(L, 1) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG) && u->s) {
         pcl_callback_state(L);
         pc_surface_release(u->s);
         u->s = NULL;

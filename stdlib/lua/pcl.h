@@ -4,6 +4,7 @@
 #ifndef PCL_H
 #define PCL_H
 
+#include <stdint.h>
 #include <lua.h>
 #include <lauxlib.h>
 #include "canvas.h"
@@ -22,6 +23,21 @@ static inline void *pcl_testudata(lua_State *L, int idx, int mt) {
     lua_pop(L, 1);
     return ok ? p : NULL;
 }
+
+/* Userdata a script cannot forge.  With the debug library a script can give any userdata (a
+ * file handle, another binding's object) a binding's metatable (debug.setmetatable), or put
+ * one in a C function's upvalue (debug.setupvalue).  So a binding takes a userdata as its own
+ * only when, besides the metatable, its block has the size its type stores (lua_rawlen, which
+ * no script can change) and, for a type whose size alone does not tell (it holds pointers, or
+ * has the size of a file handle or a point), begins with its own address tagged by its type
+ * (PCL_SELF: a forged block holds something else there).  pcl_genuine(L, idx, p, ok, type):
+ * p when ok or p is NULL, else raises "FNAME: argument #N is a forged TYPE (...)"; it never
+ * shows the value (a forged point's __tostring would read it). */
+void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type);
+#define PCL_SELF uintptr_t self     /* the first field of such a userdata */
+/* What self holds: the block's address mixed with the address of a static tag of the type,
+ * so one type's object given another's metatable is refused as well. */
+#define PCL_SELF_TAG(p, tag) ((uintptr_t)(const void *)(p) ^ (uintptr_t)(const void *)(tag))
 
 /* module openers, called by luaopen_pointcalc in this order */
 void pcl_open_errors(lua_State *L);  /* _tk.raise, _tk.argerror, ...: the errors of the Lua helpers */
@@ -88,6 +104,8 @@ const char *pcl_fname(lua_State *L);
 int pcl_arg_shown(lua_State *L, int arg);
 /* luaL_error, but located at the user's code: frames of the embedded Lua helpers are skipped. */
 int pcl_error(lua_State *L, const char *fmt, ...);
+/* Push that location, "file:line: " (or ""), for a message kept rather than raised (a callback's). */
+void pcl_pushwhere(lua_State *L);
 
 /* Numbers with an explicit function name (toolkit functions live in sub-tables and objects,
  * e.g. "smooth.half", "c:split"): a finite number at arg; pcl_checknum_m for a method or

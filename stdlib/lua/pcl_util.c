@@ -56,7 +56,7 @@ int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected) 
 /* Push "file:line: " of the code the error belongs to: the innermost Lua function that is not
  * one of pointcalc's own embedded helpers, so an error raised in a toolkit function points at
  * the user's line, not inside the toolkit. */
-static void push_where(lua_State *L) {
+void pcl_pushwhere(lua_State *L) {
     lua_Debug ar;
     for (int level = 1; lua_getstack(L, level, &ar); level++) {
         lua_getinfo(L, "Sl", &ar);
@@ -71,7 +71,7 @@ static void push_where(lua_State *L) {
 int pcl_error(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    push_where(L);
+    pcl_pushwhere(L);
     lua_pushvfstring(L, fmt, ap);
     va_end(ap);
     lua_concat(L, 2);
@@ -81,8 +81,9 @@ int pcl_error(lua_State *L, const char *fmt, ...) {
 /* The coordinate at arg; `what` names the pair ("" or e.g. "centre"), axis is "x" or "y".
  * The label is only built on the error path: this runs for every pset. */
 static double check_coord(lua_State *L, int arg, const char *what, const char *axis) {
-    int isnum;
-    double v = lua_tonumberx(L, arg, &isnum);
+    /* a number, not a numeric string: pset("10", "20") is a mistake Lua would hide */
+    int isnum = lua_type(L, arg) == LUA_TNUMBER;
+    double v = isnum ? lua_tonumber(L, arg) : 0;
     if (isnum && isfinite(v)) return v;
     char label[48];
     snprintf(label, sizeof label, "%s%s%s", what, what[0] ? " " : "", axis);
@@ -104,6 +105,20 @@ int pcl_optxy(lua_State *L, int *arg, double *x, double *y, const char *what) {
     if (lua_isnoneornil(L, *arg)) return 0;
     pcl_checkxy(L, arg, x, y, what);
     return 1;
+}
+
+/* ---- forged userdata (pcl.h) ---------------------------------------------------------------- */
+
+void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type) {
+    if (!p || ok) return p;
+    int len = (int)lua_rawlen(L, idx);
+    if (idx > 0 && idx <= lua_gettop(L))
+        pcl_error(L, "%s: argument #%d is a forged %s (a userdata of %d bytes given the %s "
+                  "metatable, e.g. by debug.setmetatable), not a %s", pcl_fname(L),
+                  pcl_arg_shown(L, idx), type, len, type, type);
+    pcl_error(L, "%s: a forged %s (a userdata of %d bytes given the %s metatable or put in an "
+              "upvalue with the debug library), not a %s", pcl_fname(L), type, len, type, type);
+    return NULL;
 }
 
 /* ---- numbers with an explicit function name ---------------------------------------------- */
