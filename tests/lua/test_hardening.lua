@@ -87,6 +87,16 @@ check.err(function() return z.point(5) end, here .. ":", "z.point(5) located")
 check.eq(tostring(z:point()), "P(1, 2)", "z:point() still works")
 check.err(function() return smooth.half(2, 3, 0.5).deriv(5, 0.5) end, "g:deriv: self must be a half-spline")
 
+-- the arc length of a callback curve far outside its range: the adaptive quadrature has a
+-- budget (the speed by differences is noise at 1e-10; it used to run for hours)
+local parabola = curve(function(t) return P(t, t * t) end, 0, 1)
+local function F(t) return t / 2 * math.sqrt(1 + 4 * t * t) + math.log(2 * t + math.sqrt(1 + 4 * t * t)) / 4 end
+local clock0 = os.clock()
+local len = parabola:length(480, 65535)
+check.truthy(os.clock() - clock0 < 10, "c:length far outside the range ends")
+check.near(len / (F(65535) - F(480)), 1, 1e-6, "and is the arc length")
+check.near(parabola:length(0, 1), F(1) - F(0), 1e-9, "the ordinary length unchanged")
+
 -- ---- 5. no limit on VIEW changes ------------------------------------------------------------
 
 -- 70,000 VIEWs (more than the 65,535 a 16-bit index held), each drawn in: the drawing is kept
