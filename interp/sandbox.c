@@ -133,10 +133,20 @@ static int over_time(void) {
  * instruction, so a script that catches the error with pcall cannot go on. */
 static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
     lua_sethook(L, limit_hook, LUA_MASKCOUNT, 1);
-    if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0)
+    if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0) {
         lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
-    else
-        lua_pushstring(L, msg);
+        return lua_error(L);
+    }
+    /* a call or return event in a C function (pcall, a binding): the script's line is that of
+     * the nearest Lua function below it */
+    lua_Debug up;
+    for (int level = 1; lua_getstack(L, level, &up); level++) {
+        if (lua_getinfo(L, "Sl", &up) && up.currentline > 0) {
+            lua_pushfstring(L, "%s:%d: %s", up.short_src, up.currentline, msg);
+            return lua_error(L);
+        }
+    }
+    lua_pushstring(L, msg);
     return lua_error(L);
 }
 
