@@ -321,18 +321,6 @@ int pc_expr_div(pc_expr_pool *p, int a, int b, int *status) {
     return pc_expr_mul(p, a, r, status);
 }
 
-/* x^k for an integer k by repeated squaring (exact for small k, as a hand-written product) */
-static double ipow(double x, int k) {
-    int neg = k < 0;
-    unsigned n = neg ? (unsigned)(-k) : (unsigned)k;
-    double r = 1, b = x;
-    while (n) {
-        if (n & 1) r *= b;
-        b *= b;
-        n >>= 1;
-    }
-    return neg ? 1 / r : r;
-}
 
 /* the value of a function at a constant, with its domain */
 static int fold_fn(pc_expr_op op, double x, const pc_gfun *g, double c, int k, double *out) {
@@ -346,7 +334,7 @@ static int fold_fn(pc_expr_op op, double x, const pc_gfun *g, double c, int k, d
     case PC_EX_SQRT: if (x < 0) return PC_EDOMAIN; y = sqrt(x); break;
     case PC_EX_ABS: y = fabs(x); break;
     case PC_EX_RECIP: if (x == 0) return PC_EDOMAIN; y = 1 / x; break;
-    case PC_EX_POWI: if (x == 0 && k < 0) return PC_EDOMAIN; y = ipow(x, k); break;
+    case PC_EX_POWI: if (x == 0 && k < 0) return PC_EDOMAIN; y = pcx_ipow(x, k); break;
     case PC_EX_POWC: y = pow(x, c); if (isnan(y)) return PC_EDOMAIN; break;
     case PC_EX_SMOOTH:
         if (pc_gfun_check(g, x) != PC_OK) return PC_EDOMAIN;

@@ -260,17 +260,6 @@ fail:
 /* row c, channel i of a register of width w */
 #define ROW(base, w, c, i) ((base) + ((size_t)(c) * (w) + (i)) * BATCH)
 
-static double ipow(double x, int k) {
-    int neg = k < 0;
-    unsigned n = neg ? (unsigned)(-k) : (unsigned)k;
-    double r = 1, b = x;
-    while (n) {
-        if (n & 1) r *= b;
-        b *= b;
-        n >>= 1;
-    }
-    return neg ? 1 / r : r;
-}
 
 /* f, f', f'' of a unary operation at the lanes of x (f1, f2 only as order asks) */
 static void unary(const ins_t *in, const double *x, int m, int order, double *f0, double *f1,
@@ -322,15 +311,15 @@ static void unary(const ins_t *in, const double *x, int m, int order, double *f0
                 for (k = 0; k < m; k++) f0[k] *= x[k];
             if (order)
                 for (k = 0; k < m; k++) {
-                    f1[k] = n * ipow(x[k], n - 1);
-                    f2[k] = (double)n * (n - 1) * ipow(x[k], n - 2);
+                    f1[k] = n * pcx_ipow(x[k], n - 1);
+                    f2[k] = (double)n * (n - 1) * pcx_ipow(x[k], n - 2);
                 }
         } else {
-            for (k = 0; k < m; k++) f0[k] = ipow(x[k], n);
+            for (k = 0; k < m; k++) f0[k] = pcx_ipow(x[k], n);
             if (order)
                 for (k = 0; k < m; k++) {
-                    f1[k] = n * ipow(x[k], n - 1);
-                    f2[k] = (double)n * (n - 1) * ipow(x[k], n - 2);
+                    f1[k] = n * pcx_ipow(x[k], n - 1);
+                    f2[k] = (double)n * (n - 1) * pcx_ipow(x[k], n - 2);
                 }
         }
         break;

@@ -33,4 +33,18 @@ int pc_expr_reach(const pc_expr_pool *p, int e, unsigned char *mark);
 /* width of a node's result in doubles */
 static inline int pc_expr_width(int dim) { return dim ? dim + 1 : 1; }
 
+/* x^k for an integer k by repeated squaring (exact for small k, as a hand-written product):
+ * constant folding (expr.c) and the programs (expr_eval.c) compute powers alike. */
+static inline double pcx_ipow(double x, int k) {
+    int neg = k < 0;
+    unsigned n = neg ? (unsigned)(-k) : (unsigned)k;
+    double r = 1, b = x;
+    while (n) {
+        if (n & 1) r *= b;
+        b *= b;
+        n >>= 1;
+    }
+    return neg ? 1 / r : r;
+}
+
 #endif
