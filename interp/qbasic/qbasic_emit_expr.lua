@@ -11,7 +11,7 @@ local walk = require "qbasic_walk"
 
 local M = {}
 
-local f32 = require("pointcalc").qb.f32     -- SINGLE rounding (stdlib/geom/qbnum.c)
+local f32 = require("pointcalc").qb.f32     -- SINGLE rounding (interp/qbasic/qbnum.c)
 
 -- the shortest decimal text that reads back as exactly v
 local function exact_text(v)

@@ -32,7 +32,7 @@ local radix_value = require("qbasic_lex").radix_value
 local floor, huge = math.floor, math.huge
 local IFC = "Illegal function call"
 
--- SINGLE rounding and QBasic's RND generator are the C core's (stdlib/geom/qbnum.c, as the qb
+-- SINGLE rounding and QBasic's RND generator are the C core's (interp/qbasic/qbnum.c, as the qb
 -- table of pointcalc): the translated program and Lua scripts share one generator
 local pc = require("pointcalc")
 local qb = pc.qb

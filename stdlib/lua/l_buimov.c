@@ -1,4 +1,4 @@
-/* Binding of the textbook's constructions (Buimov; stdlib/geom/plane_curves.h, buimov.h,
+/* Binding of the textbook's constructions (Buimov; stdlib/books/buimov/plane_curves.h, buimov.h,
  * reconstruct.h), in two tables:
  *   plane.*   ch. 3: circle3 circle2r circle_slopes arc3 classify rotate_conic conic_coef
  *             ellipse parabola hyperbola points

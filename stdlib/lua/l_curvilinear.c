@@ -1,4 +1,4 @@
-/* Binding of the coordinate maps and scalar numerics (stdlib/geom/curvilinear.h, numeric.h):
+/* Binding of the coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h, numeric.h):
  *   squash(p [, q])  squash01(p [, q])     the plane onto the open square (examples 26-28)
  *   oblique(C0, r, k, u)                    the oblique projection of examples 32-34
  *   projection(C0, C1, C2, C3)              the projection by four screen points

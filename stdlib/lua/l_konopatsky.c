@@ -1,4 +1,4 @@
-/* Binding of Konopatsky's curves (stdlib/geom/conic.h, konop_curves.h, oneratio.h,
+/* Binding of Konopatsky's curves (stdlib/books/konopatsky/conic.h, konop_curves.h, oneratio.h,
  * konop_interp.h, optimize.h): the tables conic, oneratio, interp and approx.  Every curve is
  * the one curve userdata (pcl_pushcurve).  Argument checks only; the constructions are in the
  * core.  Guide: docs/konopatsky.md. */
@@ -11,7 +11,7 @@
 #include "konop_curves.h"
 #include "oneratio.h"
 #include "konop_interp.h"
-#include "optimize.h"
+#include "approx.h"
 
 /* ---- argument checks with the full name ("conic.ed") ----------------------------------------- */
 

@@ -1,4 +1,4 @@
-/* Binding of Korotky's nature-like curves and conic surfaces (stdlib/geom/ferguson.h,
+/* Binding of Korotky's nature-like curves and conic surfaces (stdlib/books/korotky/ferguson.h,
  * elastic.h, conic_surface.h), in the table `korotky`:
  *   korotky.poly_spline(points [, {ends =, s0 =, s1 =}])      -> curve, coefficients
  *   korotky.ferguson(points, tangents, moduli)                 -> curve

@@ -1,4 +1,4 @@
-/* Binding of Korotky's shells of 2015 (stdlib/geom/pencils4.h, conic_shells.h,
+/* Binding of Korotky's shells of 2015 (stdlib/books/korotky/pencils4.h, conic_shells.h,
  * conic_props.h), added to the table `korotky` by pcl_open_korotky:
  *   korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}}  -> 4-D surface (Fig. 1b)
  *   korotky.conic_revolve{A =, B =, nA =, nB =, ridge =}             -> surface (Fig. 3b)

@@ -1,4 +1,4 @@
-/* Binding of the QBasic number semantics (stdlib/geom/qbnum): the sub-table `qb` of the module.
+/* Binding of the QBasic number semantics (interp/qbasic/qbnum): the sub-table `qb` of the module.
  *
  *   qb.f32(x)                 x rounded to SINGLE (float32)
  *   qb.cint(x), qb.clng(x)    round to nearest, ties to even; second result false on overflow

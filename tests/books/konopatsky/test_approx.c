@@ -7,7 +7,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
-#include "optimize.h"
+#include "approx.h"
 #include "status.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))

@@ -1,0 +1,30 @@
+/* The approximation curves of Konopatsky's chapter 5 (digest konopatsky_ch3_5.md §3): the
+ * curve of order N-1 through N nodes (x_j, f(x_j)) at uniform t_j = j/(N-1), its mean-square
+ * error as the book measures it, and the search for the node abscissae that minimise it
+ * ("optimal nodes"), built on the kernel's Nelder-Mead (optimize.h). */
+#ifndef PC_APPROX_H
+#define PC_APPROX_H
+
+#include "optimize.h"
+
+/* The book's mean-square error of the curve through (x_j, f(x_j)), j = 1..N (N >= 2): samples
+ * t_i = i/m, i = 0..m, residual f(x(t_i)) - y(t_i), SSE/(m + 1) (the convention that gives the
+ * printed 0.0000284 for Runge; digest §3.2).  PC_ENONFINITE if f gives NaN. */
+int pc_approx_mse(pc_scalar_fn f, void *ud, int N, const double *x, int m, double *mse);
+
+/* The optimal nodes: x_1 = a and x_N = b fixed, the N-2 inner nodes ordered in (a, b) through
+ * x = a + (b - a) cumsum(softmax(0, z)) and the MSE minimised over z by Nelder-Mead from three
+ * starts (uniform, Chebyshev-like, clustered to the middle), each restarted from its best
+ * point with a smaller step until a restart no longer improves it by 1e-9 relative or the start
+ * has used 40000 objective calls; the best of the three wins.  3 <= N <= 16, m >= N.  nodes: N values out; *evals: objective calls. */
+int pc_approx_optimal_nodes(pc_scalar_fn f, void *ud, double a, double b, int N, int m,
+                            double *nodes, double *mse, int *evals);
+
+/* Chebyshev nodes: the roots cos((2k + 1)pi/(2N)) mapped to [a, b], increasing. */
+void pc_chebyshev_nodes(int N, double a, double b, double *x);
+/* The MSE of Lagrange's polynomial through (x_j, f(x_j)) against f over M uniform x in [a, b]
+ * (the measure of the book's Chebyshev comparison, §5.2). */
+int pc_lagrange_mse_x(pc_scalar_fn f, void *ud, int N, const double *x, double a, double b,
+                      int M, double *mse);
+
+#endif
