@@ -53,6 +53,10 @@ void sandbox_stop(lua_State *L);
  * limit of N MB exceeded ...", where may be NULL) then replaces Lua's "not enough memory". */
 int sandbox_explain(lua_State *L, int status, const char *where);
 
+/* The exit status of a process whose native call ran past the time limit (after its message
+ * "FILE:LINE: time limit of N s exceeded in a native call; stopped" on standard error). */
+#define SANDBOX_EXIT_NATIVE_TIMEOUT 1
+
 /* Whether the state is in safe mode, and the check the safe mode makes of a file name: raises
  * the house-style error for argument arg of fname unless path may be used. */
 int sandbox_is_safe(lua_State *L);
@@ -60,5 +64,14 @@ void sandbox_check_path(lua_State *L, const char *fname, int arg, int write);
 /* The same for the REPL's commands, without raising: 0 with "cannot write 'PATH': it must be
  * ..." in err.  The string is at stack index idx. */
 int sandbox_path_ok(lua_State *L, int idx, int write, char *err, size_t errlen);
+
+/* For safe_files.c: whether a real (resolved) path is under an allowed folder; the safe mode's
+ * error for argument arg of fname (why: NULL for "a file under an allowed folder ..."). */
+int sandbox_under_allowed(const char *real);
+int sandbox_refuse_path(lua_State *L, const char *fname, int arg, int write, const char *why);
+/* safe_files.c: the race-free io and os functions, loadfile and dofile of the safe mode. */
+void sandbox_safe_files(lua_State *L, int io, int os);
+int sandbox_safe_loadfile(lua_State *L);
+int sandbox_safe_dofile(lua_State *L);
 
 #endif
