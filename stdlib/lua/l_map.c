@@ -278,6 +278,8 @@ static int l_matrix_ctor(lua_State *L) {
 static int l_translate(lua_State *L) {
     double v[PC_MAXDIM];
     int n = checkvector(L, "map.translate", 1, "V", 0, 0, v);
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i])) return pcl_argerror_full(L, "map.translate", 1, 1, "V", "a finite vector");
     pc_map_translate(newmap(L), n, v);
     return 1;
 }
