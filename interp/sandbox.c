@@ -135,14 +135,17 @@ static const char *shown_size(size_t n, char *buf, size_t len) {
     return buf;
 }
 
+/* pointcalc's own Lua helpers ("[pointcalc/curves.lua]"): the user's line is further down */
+static int embedded(const lua_Debug *ar) { return !strncmp(ar->short_src, "[pointcalc/", 11); }
+
 /* The script's place now, "file:LINE" of the nearest Lua function, into buf ("" if none). */
 static void current_place(lua_State *L, char *buf, size_t len) {
     lua_Debug ar;
     buf[0] = 0;
     for (int level = 0; lua_getstack(L, level, &ar); level++)
         if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0) {
-            snprintf(buf, len, "%s:%d", ar.short_src, ar.currentline);
-            return;
+            if (!buf[0] || !embedded(&ar)) snprintf(buf, len, "%s:%d", ar.short_src, ar.currentline);
+            if (!embedded(&ar)) return;
         }
 }
 
@@ -188,7 +191,7 @@ static int over_time(void) {
  * instruction, so a script that catches the error with pcall cannot go on. */
 static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
     lua_sethook(L, limit_hook, LUA_MASKCOUNT, 1);
-    if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0) {
+    if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0 && !embedded(ar)) {
         lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
         return lua_error(L);
     }
@@ -196,10 +199,14 @@ static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
      * the nearest Lua function below it */
     lua_Debug up;
     for (int level = 1; lua_getstack(L, level, &up); level++) {
-        if (lua_getinfo(L, "Sl", &up) && up.currentline > 0) {
+        if (lua_getinfo(L, "Sl", &up) && up.currentline > 0 && !embedded(&up)) {
             lua_pushfstring(L, "%s:%d: %s", up.short_src, up.currentline, msg);
             return lua_error(L);
         }
+    }
+    if (ar && ar->currentline > 0) {   /* only pointcalc's own Lua code on the stack */
+        lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
+        return lua_error(L);
     }
     lua_pushstring(L, msg);
     return lua_error(L);
