@@ -7,12 +7,13 @@
  *
  * Safe mode (`--safe`, and the default for any script that does not come from the user's own
  * command line): no processes, no C modules, no binary chunks, no `debug`, no `os.exit`,
- * `os.getenv`, `os.tmpname`, `os.setlocale`; files are read and written only under the folders
- * given with `--allow`.
+ * `os.getenv`, `os.tmpname`, `os.setlocale`, `io.tmpfile`, `package.searchpath`; files are read
+ * and written only under the folders given with `--allow`, opened without a race
+ * (safe_files.c); default limits of 60 s and 1024 MB.
  *
  * Limits: a wall-clock time limit (an instruction-count hook, backed by a timer for long
- * native calls) and a memory limit (an allocator that counts the Lua heap, and the C heap
- * where the C library reports it). */
+ * native calls) and a memory limit (the accounting allocator of memlimit.c refuses any block
+ * past it, wherever it is asked for; the hook then stops the script at its line). */
 #ifndef PC_SANDBOX_H
 #define PC_SANDBOX_H
 
