@@ -445,6 +445,19 @@ void sandbox_check_path(lua_State *L, const char *fname, int arg, int write) {
 
 /* ---- the wrapped functions ------------------------------------------------------------------ */
 
+/* sandbox_check_path of argument arg as its string, leaving the argument as it is. */
+static void check_name_copy(lua_State *L, const char *fname, int arg, int write) {
+    size_t len;
+    lua_pushvalue(L, arg);
+    const char *path = lua_tolstring(L, -1, &len);
+    char why[400];
+    path_problem(path, len, write, why, sizeof why);
+    if (why[0])
+        pcl_error(L, "%s: argument #%d (file name) must be %s, got %s", fname, arg, why,
+                  shown_path(L, path, len));
+    lua_pop(L, 1);
+}
+
 /* A wrapper: check the file-name arguments named by the upvalues, then call the original
  * (upvalue 1) with all the arguments.  Upvalue 2: the function's name; 3: the index of the
  * name to check (0: none); 4: 1 for writing, 2 for "look at the mode argument" (io.open);
@@ -459,11 +472,12 @@ static int checked_call(lua_State *L) {
         const char *mode = luaL_optstring(L, 2, "r");
         write = strcmp(mode, "r") && strcmp(mode, "rb");
     }
-    /* a number is a name too (Lua converts it): checked as the string it becomes */
-    if (arg && lua_type(L, arg) == LUA_TNUMBER) lua_tostring(L, arg);
-    if (arg2 && lua_type(L, arg2) == LUA_TNUMBER) lua_tostring(L, arg2);
-    if (arg && lua_type(L, arg) == LUA_TSTRING) sandbox_check_path(L, fname, arg, write);
-    if (arg2 && lua_type(L, arg2) == LUA_TSTRING) sandbox_check_path(L, fname, arg2, 1);
+    /* a number is a name too (Lua converts it): in safe mode checked as the string it becomes
+     * (the original still gets the number, and says what it says of one) */
+    if (arg && (lua_type(L, arg) == LUA_TSTRING || (S.safe && lua_type(L, arg) == LUA_TNUMBER)))
+        check_name_copy(L, fname, arg, write);
+    if (arg2 && (lua_type(L, arg2) == LUA_TSTRING || (S.safe && lua_type(L, arg2) == LUA_TNUMBER)))
+        check_name_copy(L, fname, arg2, 1);
     int n = lua_gettop(L);
     lua_pushvalue(L, lua_upvalueindex(1));
     lua_insert(L, 1);
