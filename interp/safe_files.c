@@ -270,7 +270,13 @@ static int load_checked(lua_State *L, const char *fname, int arg) {
 
 int sandbox_safe_loadfile(lua_State *L) {
     int env = !lua_isnone(L, 3);
-    if (!load_checked(L, "loadfile", 1)) {
+    if (lua_isnoneornil(L, 1)) {   /* standard input, as Lua's own */
+        if (luaL_loadfilex(L, NULL, "t") != LUA_OK) {
+            luaL_pushfail(L);
+            lua_insert(L, -2);
+            return 2;
+        }
+    } else if (!load_checked(L, "loadfile", 1)) {
         luaL_pushfail(L);
         lua_insert(L, -2);
         return 2;
@@ -284,7 +290,8 @@ int sandbox_safe_loadfile(lua_State *L) {
 
 int sandbox_safe_dofile(lua_State *L) {
     lua_settop(L, 1);
-    if (!load_checked(L, "dofile", 1)) return lua_error(L);
+    if (lua_isnil(L, 1) ? luaL_loadfilex(L, NULL, "t") != LUA_OK : !load_checked(L, "dofile", 1))
+        return lua_error(L);
     lua_call(L, 0, LUA_MULTRET);
     return lua_gettop(L) - 1;
 }
