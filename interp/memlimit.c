@@ -99,7 +99,34 @@ void *pvalloc(size_t n) {
     return memalign(page, (n + page - 1) / page * page);
 }
 
-#else   /* AddressSanitizer (or no glibc): the Lua heap's counting allocator is the only one */
+#elif defined(__SANITIZE_ADDRESS__)
+/* AddressSanitizer brings its own allocator, which cannot refuse for us: its allocation hooks
+ * count, and a block that takes the heap past the limit is reported at once (the script then
+ * stops at its next instruction, one block past the limit). */
+int __sanitizer_install_malloc_and_free_hooks(void (*)(const volatile void *, size_t),
+                                              void (*)(const volatile void *));
+size_t __sanitizer_get_current_allocated_bytes(void);
+
+static size_t limit_bytes;
+static void (*refused_hook)(size_t);
+
+int pc_mem_counting(void) { return 1; }
+size_t pc_mem_in_use(void) { return __sanitizer_get_current_allocated_bytes(); }
+
+static void on_malloc(const volatile void *p, size_t n) {
+    (void)p;
+    size_t lim = __atomic_load_n(&limit_bytes, __ATOMIC_RELAXED);
+    if (lim && refused_hook && pc_mem_in_use() > lim) refused_hook(n);
+}
+
+void pc_mem_set_limit(size_t limit, void (*on_refuse)(size_t)) {
+    static int installed;
+    if (!installed) installed = __sanitizer_install_malloc_and_free_hooks(on_malloc, NULL);
+    refused_hook = on_refuse;
+    __atomic_store_n(&limit_bytes, limit, __ATOMIC_RELAXED);
+}
+
+#else   /* no glibc: the Lua heap's counting allocator is the only one */
 
 int pc_mem_counting(void) { return 0; }
 size_t pc_mem_in_use(void) { return 0; }
