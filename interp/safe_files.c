@@ -87,10 +87,12 @@ static int safe_open_fd(lua_State *L, const char *fname, int arg, const char *pa
         return -1;
     }
     struct stat st;
-    if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink > 1) {
+    if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink > 1 &&
+        !sandbox_hardlinks_allowed()) {
         close(fd);
         sandbox_refuse_path(L, fname, arg, write, "a file without other hard links (a hard link "
-                            "may be a file outside the allowed folders)");
+                            "may be a file outside the allowed folders; --allow-hardlinks "
+                            "permits them)");
     }
     if ((flags & O_TRUNC) && S_ISREG(st.st_mode) && ftruncate(fd, 0) != 0) {
         e = errno;

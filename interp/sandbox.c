@@ -20,7 +20,7 @@
 #include "memlimit.h"
 #include "writers.h"
 
-const sandbox_config sandbox_untrusted = {1, 0, {NULL}, 10, 256};
+const sandbox_config sandbox_untrusted = {1, 0, {NULL}, 10, 256, 0};
 
 /* --safe without --timeout or --max-memory (docs/safety.md): a script from elsewhere cannot
  * take the machine */
@@ -34,6 +34,7 @@ static struct {
     int safe;
     int nallow;
     char *allow[SANDBOX_MAX_ALLOW];   /* resolved (realpath) */
+    int hardlinks;                    /* --allow-hardlinks */
     double timeout, max_mb;
     size_t max_bytes;                 /* 0: no memory limit */
     size_t hard_bytes;                /* no allocation beyond this */
@@ -101,6 +102,7 @@ void sandbox_attach(lua_State *L, const sandbox_config *cfg) {
     S.hard_bytes = pc_mem_counting() ? S.max_bytes : S.max_bytes + S.max_bytes / 2;
     pc_mem_set_limit(S.max_bytes, on_refused);
     S.safe = cfg->safe;
+    S.hardlinks = cfg->allow_hardlinks;
     for (int i = 0; i < S.nallow; i++) free(S.allow[i]);   /* a server makes one state per render */
     S.nallow = 0;
     for (int i = 0; i < cfg->nallow && i < SANDBOX_MAX_ALLOW; i++) {
@@ -378,6 +380,8 @@ static int under(const char *path, const char *dir) {
     if (n == 1 && dir[0] == '/') return 1;
     return !strncmp(path, dir, n) && (path[n] == '/' || path[n] == 0);
 }
+
+int sandbox_hardlinks_allowed(void) { return S.hardlinks; }
 
 int sandbox_under_allowed(const char *real) {
     for (int i = 0; i < S.nallow; i++)

@@ -28,6 +28,7 @@ typedef struct {
     const char *allow[SANDBOX_MAX_ALLOW];
     double timeout;                    /* seconds; 0: no limit */
     double max_memory_mb;              /* megabytes; 0: no limit */
+    int allow_hardlinks;               /* files with other hard links may be opened */
 } sandbox_config;
 
 /* The configuration for a script that did not come from the user's own command line (a
@@ -69,6 +70,7 @@ int sandbox_path_ok(lua_State *L, int idx, int write, char *err, size_t errlen);
 /* For safe_files.c: whether a real (resolved) path is under an allowed folder; the safe mode's
  * error for argument arg of fname (why: NULL for "a file under an allowed folder ..."). */
 int sandbox_under_allowed(const char *real);
+int sandbox_hardlinks_allowed(void);
 int sandbox_refuse_path(lua_State *L, const char *fname, int arg, int write, const char *why);
 /* safe_files.c: the race-free io and os functions, loadfile and dofile of the safe mode. */
 void sandbox_safe_files(lua_State *L, int io, int os);

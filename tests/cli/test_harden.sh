@@ -68,6 +68,9 @@ run "$POINTCALC" --safe --allow ok -e 'print(io.open("ok/hard.txt"):read("a"))';
 expect_in err.txt "must be a file without other hard links" "--safe: a hard link refused"
 run "$POINTCALC" --safe --allow ok -e 'io.open("ok/hard.txt", "w")'; expect_rc 1 "--safe: truncating a hard link"
 expect_eq "$(cat secret.txt)" "SECRET" "the hard-linked file is untouched"
+run "$POINTCALC" --safe --allow ok --allow-hardlinks -e 'print(io.open("ok/hard.txt"):read("a"))'
+expect_rc 0 "--allow-hardlinks"
+expect_eq "$(cat out.txt)" "SECRET" "--allow-hardlinks: the user's choice"
 rm ok/hard.txt
 # io.lines with formats, and closing at the end, as Lua's own
 printf '1 2\n3 4\n' > ok/n.txt
