@@ -223,6 +223,11 @@ static void child_main(int out_fd, int err_fd, const query *q) {
     signal(SIGPIPE, SIG_DFL);
     dup2(err_fd, STDERR_FILENO);
     close(err_fd);
+    int nul = open("/dev/null", O_RDONLY);   /* a render that reads input reads nothing */
+    if (nul >= 0 && nul != STDIN_FILENO) {
+        dup2(nul, STDIN_FILENO);
+        close(nul);
+    }
     struct rlimit cpu = {RENDER_SECONDS + 3, RENDER_SECONDS + 4};   /* SIGXCPU, then SIGKILL */
     setrlimit(RLIMIT_CPU, &cpu);
     struct rlimit fsize = {256u << 20, 256u << 20};   /* save() in the folder: no disk filling */
