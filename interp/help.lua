@@ -5,8 +5,15 @@
 --
 -- Entries: name (as written in a script: "lerp", "qb.rnd", "A.x", ":show"), area, sig (one
 -- form, or a list of forms), desc (one line).
+--
+-- A function declared in C on the argument layer (stdlib/lua/pcl_args.h, docs/bindings.md)
+-- carries its own signature and description: its entry here is def(NAME) alone, placing it in
+-- its area, and both texts come from the declaration (pointcalc._decl).  An entry that repeats
+-- a declared signature is listed in H.conflicts (tests/lua/test_help.lua fails on it).
 
-local H = {areas = {}, entries = {}, by_name = {}}
+local H = {areas = {}, entries = {}, by_name = {}, conflicts = {}}
+local pc = package.loaded.pointcalc or rawget(_G, "pointcalc")
+H.decls = pc and rawget(pc, "_decl") or {}
 
 local current
 local function area(id, title, intro, guide)
@@ -17,7 +24,15 @@ end
 
 local function def(name, sig, desc, kind)
   assert(not H.by_name[name], "duplicate help entry " .. name)
-  local e = {name = name, area = current.id, sig = sig, desc = desc, kind = kind or "function"}
+  local d = H.decls[name]
+  if d and (sig or desc) then
+    H.conflicts[#H.conflicts + 1] = name .. ": declared in C, so help.lua must not repeat its signature or description"
+  elseif not d and not sig then
+    H.conflicts[#H.conflicts + 1] = name .. ": def(NAME) alone, but there is no declaration of it"
+  end
+  if d then sig, desc = d.sig, d.desc end
+  local e = {name = name, area = current.id, sig = sig, desc = desc, kind = kind or "function",
+             declared = d ~= nil}
   H.entries[#H.entries + 1] = e
   current.entries[#current.entries + 1] = e
   H.by_name[name] = e
@@ -696,34 +711,20 @@ area("korotky", "Nature-like curves and conic surfaces (korotky.*)",
   "tg(delta) or a 2-D vector.",
   "korotky.md")
 
-def("korotky.poly_spline", "korotky.poly_spline(points [, {ends = \"natural\"|\"clamped\", s0 =, s1 =}]) -> curve, coef",
-  "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x.")
-def("korotky.ferguson", "korotky.ferguson(points, tangents, moduli) -> curve",
-  "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment.")
-def("korotky.ferguson_lambda", "korotky.ferguson_lambda(points, {TA =, TE =, wA = 1, wE = 1, lambda = {...}}) -> curve",
-  "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints.")
-def("korotky.ferguson_tangents", "korotky.ferguson_tangents(points, tangents [, {wA = 1, wE = 1, start = {...}}]) -> curve, moduli",
-  "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28)).")
-def("korotky.ferguson_substitution", "korotky.ferguson_substitution(points, tangents, wA, z1 [, \"min\"|\"max\"]) -> curve, moduli, quadratics",
-  "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29)).")
-def("korotky.elastic", "korotky.elastic(points [, {ends = {tA, tE}, pieces = 4}]) -> curve, energy",
-  "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length, as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given.")
-def("korotky.graphical_slope", "korotky.graphical_slope(samples, x [, window]) -> slope, degrees",
-  "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees.")
-def("korotky.deviation", "korotky.deviation(model, reference [, samples]) -> number",
-  "The largest distance between two curves (two-sided Hausdorff distance).")
-def("korotky.joint_jumps", "korotky.joint_jumps(curve) -> dkappa, dangle, knot",
-  "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump.")
-def("korotky.energy", "korotky.energy(curve) -> number",
-  "The bending energy, the integral of kappa^2 ds over the curve.")
-def("korotky.conic_arc", "korotky.conic_arc(U, tU, V, tV, T) -> curve, w, kind",
-  "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\".")
-def("korotky.conic_sweep", "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s",
-  "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1]).")
-def("korotky.dome_rect", "korotky.dome_rect(a0, b0, c0 [, origin]) -> s",
-  "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses.")
-def("korotky.dome_tri", "korotky.dome_tri(A, B, C, h | D) -> s",
-  "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D); u-isolines are the ellipses parallel to BC.")
+def("korotky.poly_spline")
+def("korotky.ferguson")
+def("korotky.ferguson_lambda")
+def("korotky.ferguson_tangents")
+def("korotky.ferguson_substitution")
+def("korotky.elastic")
+def("korotky.graphical_slope")
+def("korotky.deviation")
+def("korotky.joint_jumps")
+def("korotky.energy")
+def("korotky.conic_arc")
+def("korotky.conic_sweep")
+def("korotky.dome_rect")
+def("korotky.dome_tri")
 def("korotky.conic_elements", "korotky.conic_elements(arc | {a, b, c, d, e, f}) -> {kind, coef, center, axes, semi, asymptotes}",
   "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions.")
 def("korotky.two_pencils", "korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}} -> s",

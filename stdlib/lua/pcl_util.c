@@ -4,7 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include "pcl.h"
+#include "pcl_args.h"
 
 const char *pcl_fname(lua_State *L) {
     lua_Debug ar;
@@ -219,11 +219,17 @@ static int tk_fielderror(lua_State *L) {
                      luaL_checkstring(L, 2), luaL_checkstring(L, 3), value);
 }
 
+/* _tk.global_hint(msg): "(did you mean 'label'?)" for a misspelt global, or nil (the REPL) */
+static int tk_global_hint(lua_State *L) {
+    if (!pcl_global_hint(L, luaL_checkstring(L, 1))) lua_pushnil(L);
+    return 1;
+}
+
 void pcl_open_errors(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
     static const luaL_Reg fns[] = {{"raise", tk_raise}, {"shown", tk_shown},
-                                   {"argerror", tk_argerror}, {"fielderror", tk_fielderror},
+                                   {"argerror", tk_argerror}, {"fielderror", tk_fielderror}, {"global_hint", tk_global_hint},
                                    {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
     lua_settop(L, module);
