@@ -520,59 +520,33 @@ area("buimov", "The textbook: plane curves (plane.*) and the book's construction
   "are corrected (docs/buimov.md lists them).",
   "buimov.md")
 
-def("plane.circle3", "plane.circle3(A, B, C) -> circle",
-  "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points.")
-def("plane.circle2r", "plane.circle2r(A, B, r) -> circle1, circle2",
-  "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left.")
-def("plane.circle_slopes", "plane.circle_slopes(A, m1, x_end, m2) -> circle [, circle2]",
-  "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it).")
-def("plane.arc3", "plane.arc3(A, B, C) -> curve",
-  "The arc of the circle through A, B, C that passes through B, counter-clockwise (a rational Bezier curve).")
-def("plane.classify", "plane.classify(a, b, c) -> \"ellipse\"|\"parabola\"|\"hyperbola\", discriminant",
-  "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1).")
-def("plane.rotate_conic", "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef",
-  "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin).")
-def("plane.conic_value", "plane.conic_value(coef, X) -> number",
-  "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X.")
-def("plane.conic_coef", "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef",
-  "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).")
-def("plane.ellipse", "plane.ellipse(centre, A, B [, th0, th1]) -> curve",
-  "The ellipse centre + (A cos th, B sin th) as rational quadratic pieces (exact), parameter th; A = B is a circle.")
-def("plane.parabola", "plane.parabola(p, th0, th1) -> curve",
-  "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly.")
-def("plane.hyperbola", "plane.hyperbola(A, B, t0, t1) -> curve",
-  "The hyperbola branch (A ch t, B sh t) (§3.5) as rational quadratic pieces (exact).")
-def("plane.points", "plane.points(kind, {A =, B =, step =, n =, method = \"param\"|\"recurrence\"|\"rational\"|\"explicit\"}) -> points",
-  "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected).")
+def("plane.circle3")
+def("plane.circle2r")
+def("plane.circle_slopes")
+def("plane.arc3")
+def("plane.classify")
+def("plane.rotate_conic")
+def("plane.conic_value")
+def("plane.conic_coef")
+def("plane.ellipse")
+def("plane.parabola")
+def("plane.hyperbola")
+def("plane.points")
 
-def("buimov.knots", "buimov.knots(points, k) -> knots",
-  "The book's integer knot vector of order k (§4.4): n + k + 1 knots, a repeated knot for each multiple vertex.")
-def("buimov.basis", "buimov.basis(i, k, t, knots) -> number",
-  "The B-spline basis N_i,k(t) by the Cox-de Boor recursion (0/0 = 0, closed at t_max; i from 0 as in the book).")
-def("buimov.bspline", "buimov.bspline(points, k) -> curve",
-  "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it.")
-def("buimov.bernstein", "buimov.bernstein(n, i, t) -> number",
-  "The Bernstein polynomial J_n,i(t) = C(n, i) t^i (1 - t)^(n - i) (§4.3).")
-def("buimov.blend", "buimov.blend(t) -> F1, F2, F3, F4",
-  "The Hermite blending functions of a normalised segment (§5.5).")
-def("buimov.hermite", "buimov.hermite(P1, P2, D1, D2 [, t]) -> curve",
-  "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default).")
-def("buimov.hermite_coeffs", "buimov.hermite_coeffs(P1, P2, D1, D2 [, t]) -> B1, B2, B3, B4",
-  "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected).")
-def("buimov.spline", "buimov.spline(points [, {ends = \"clamped\"|\"natural\"|\"cyclic\"|\"anticyclic\", d0 =, d1 =, param = \"uniform\"|\"chord\"}]) -> curve, tangents",
-  "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given.")
-def("buimov.helix", "buimov.helix(a, b, t0, t1) -> curve",
-  "The helix (a cos t, a sin t, b t) (§4.1).")
-def("buimov.sphere", "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s",
-  "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default.")
-def("buimov.sphere_frame", "buimov.sphere_frame(th, ph) -> S, S_th, S_ph, twist, N",
-  "The unit sphere's point, tangent, twist and normal vectors (§5.1, corrected; N = S_th x S_ph points inwards).")
-def("buimov.det", "buimov.det(rows) -> number",
-  "The determinant of a square matrix (§1.2): the area factor of a 2x2 map (§1.7.4).")
-def("buimov.reconstruct", "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual",
-  "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6).")
-def("buimov.calibrate", "buimov.calibrate(points, images) -> map, rms",
-  "The camera (a map from 3-D to 2-D) sending six or more points of space to their images, by least squares with T44 = 1 (§2.8.6).")
+def("buimov.knots")
+def("buimov.basis")
+def("buimov.bspline")
+def("buimov.bernstein")
+def("buimov.blend")
+def("buimov.hermite")
+def("buimov.hermite_coeffs")
+def("buimov.spline")
+def("buimov.helix")
+def("buimov.sphere")
+def("buimov.sphere_frame")
+def("buimov.det")
+def("buimov.reconstruct")
+def("buimov.calibrate")
 
 -- ---------------------------------------------------------------------------------------
 area("konopatsky", "The monograph's curves (conic.*, oneratio.*, interp.*, approx.*)",

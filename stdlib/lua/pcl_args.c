@@ -225,9 +225,12 @@ static void check_dim(lua_State *L, const ctx *c, const pcl_arg *a, int idx, int
         c->dim->who = *c;
         c->dim->who.dim = NULL;
     } else if (n != c->dim->n) {
+        const ctx *who = &c->dim->who;
         const char *w = where(L, c);
-        pcl_error(L, "%s: %s is %d-D, but %s is %d-D (mixed dimensions)", c->fname, w, n,
-                  where(L, &c->dim->who), c->dim->n);
+        const char *other = who->item && who->shown == c->shown && who->key == c->key
+                            ? lua_pushfstring(L, "[%d]", who->item) : where(L, who);   /* in one list */
+        pcl_error(L, "%s: %s is %d-D, but %s is %d-D (mixed dimensions)", c->fname, w, n, other,
+                  c->dim->n);
     }
 }
 
