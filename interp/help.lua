@@ -699,14 +699,10 @@ def("korotky.conic_arc")
 def("korotky.conic_sweep")
 def("korotky.dome_rect")
 def("korotky.dome_tri")
-def("korotky.conic_elements", "korotky.conic_elements(arc | {a, b, c, d, e, f}) -> {kind, coef, center, axes, semi, asymptotes}",
-  "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions.")
-def("korotky.two_pencils", "korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}} -> s",
-  "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5).")
-def("korotky.conic_revolve", "korotky.conic_revolve{A =, B =, nA =, nB =, ridge =} -> s",
-  "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B.")
-def("korotky.ridge_shell", "korotky.ridge_shell{U =, R =, V =, T1 =, T2 =, P =, H =, Q =} -> s",
-  "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2].")
+def("korotky.conic_elements")
+def("korotky.two_pencils")
+def("korotky.conic_revolve")
+def("korotky.ridge_shell")
 
 -- ---------------------------------------------------------------------------------------
 

@@ -211,7 +211,19 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
     case PCL_SURFACE: return dimmed(L, a->dim, "surface");
     case PCL_MAP: return "a map";
     case PCL_FUNCTION: return "a function";
-    case PCL_OPTIONS: return "a table of options";
+    case PCL_OPTIONS: {                        /* a table {k1 =, k2 =} */
+        luaL_Buffer b;
+        luaL_buffinit(L, &b);
+        luaL_addstring(&b, "a table {");
+        for (const pcl_arg *k = a->keys; k->name; k++) {
+            if (k != a->keys) luaL_addstring(&b, ", ");
+            luaL_addstring(&b, k->name);
+            luaL_addstring(&b, " =");
+        }
+        luaL_addchar(&b, '}');
+        luaL_pushresult(&b);
+        return lua_tostring(L, -1);
+    }
     default: return "a value";
     }
 }
@@ -248,10 +260,10 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
         "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
         num_text(L, p->h[n])) : NULL;
     if (a->kind == PCL_POINT && k != PC_KIND_POINT)
-        mismatch_hint(L, c, idx, "a point (weight 1)", k == PC_KIND_VECTOR
+        mismatch_hint(L, c, idx, lua_pushfstring(L, "%s (weight 1)", dimmed(L, a->dim, "point")), k == PC_KIND_VECTOR
                       ? "to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
     if (a->kind == PCL_VECTOR && k != PC_KIND_VECTOR)
-        mismatch_hint(L, c, idx, "a vector (weight 0)", k == PC_KIND_POINT
+        mismatch_hint(L, c, idx, lua_pushfstring(L, "%s (weight 0)", dimmed(L, a->dim, "vector")), k == PC_KIND_POINT
                       ? "a difference of points is a vector, e.g. B - A" : weight);
     if (a->kind == PCL_LOC && k == PC_KIND_WEIGHTED)
         mismatch_hint(L, c, idx, "a point (weight 1) or a vector (weight 0)", weight);
