@@ -145,12 +145,9 @@ def("S:measure", "S:measure() -> number",
   "Length, area, volume...: signed when the simplex is full-dimensional.", "method")
 def("S:ratio", "S:ratio(P1, P2, ...) -> ratio, residual",
   "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own.", "method")
-def("affine", "affine({A, B, C}, {A2, B2, C2}) -> f",
-  "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension).")
-def("affine.frame", "affine.frame(O, X, Y [, Z]) -> f",
-  "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors.")
-def("affine.identity", "affine.identity(n) -> f",
-  "The identity map of n-space.")
+def("affine")
+def("affine.frame")
+def("affine.identity")
 
 -- ---------------------------------------------------------------------------------------
 area("transforms", "Maps: transformations and projections (map.*)",
@@ -159,50 +156,28 @@ area("transforms", "Maps: transformations and projections (map.*)",
   "all make it, and any two of fitting dimensions compose. Angles are in radians.",
   "maps.md")
 
-def("map.matrix", "map.matrix(rows [, \"row\"|\"column\"]) -> f",
-  "The map of a homogeneous matrix (a table of rows): by default (m+1) rows of n+1 acting on column vectors; \"row\": the textbook's p' = p T, n+1 rows of m+1.")
-def("map.translate", "map.translate(V) -> f",
-  "The translation x -> x + V, in the dimension of V.")
-def("map.scale", "map.scale(k, centre | n) | map.scale({kx, ky, ...} [, centre]) -> f",
-  "Scaling by k (or by kx, ky, ... per axis) about centre (default: the origin); a single k needs a centre or the dimension n.")
-def("map.rotate", {"map.rotate(angle [, centre]) -> f", "map.rotate(A, B | direction, angle) -> f"},
-  "The plane turned counter-clockwise about centre (default: the origin), or space turned about the axis through A and B (or through A along direction) by the right-hand rule.")
-def("map.reflect", "map.reflect(A, normal) -> f",
-  "The reflection in the line (plane, hyperplane) through A perpendicular to the vector normal.")
-def("map.shear", "map.shear(n, i, j, k) -> f",
-  "The shear of n-space adding k times coordinate j to coordinate i (axes 1..n or \"x\", \"y\", \"z\").")
-def("map.orthographic", "map.orthographic([\"z\"|\"y\"|\"x\"]) -> f",
-  "Space onto a coordinate plane, dropping that axis: \"z\" (the default) keeps (x, y), \"y\" keeps (x, z), \"x\" keeps (y, z).")
-def("map.axonometric", "map.axonometric(phi, theta) -> f",
-  "Space turned about y by phi, then about x by theta, then projected along z (the textbook's T = Ry Rx Pz).")
-def("map.isometric", "map.isometric() -> f",
-  "The isometric projection: phi = 45 degrees, theta = 35.26 degrees, all axes foreshortened by sqrt(2/3).")
-def("map.dimetric", "map.dimetric(fz) -> f",
-  "The dimetric projection with the z axis foreshortened by fz (0 < fz < 1) and x, y equally: sin^2 theta = fz^2/2.")
-def("map.oblique", "map.oblique(k, alpha) -> f",
-  "The oblique projection x' = x + k z cos(alpha), y' = y + k z sin(alpha).")
-def("map.cavalier", "map.cavalier([alpha]) -> f",
-  "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees.")
-def("map.cabinet", "map.cabinet([alpha]) -> f",
-  "The oblique projection with k = 1/2; alpha defaults to 45 degrees.")
-def("map.perspective", "map.perspective(eye, p0 [, up]) -> f",
-  "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point.")
-def("f(p)", "f(p) | f(x, y, ...) -> value",
-  "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector.", "method")
-def("f:xy", "f:xy(p) | f:xy(x, y, ...) -> x', y', ...",
-  "The coordinates of the image of a point as numbers (two for a map into the plane).", "method")
-def("f:compose", "f:compose(g) | f * g -> map",
-  "The map applying g first, then f.", "method")
-def("f:inverse", "f:inverse() -> map",
-  "The inverse map; a singular or non-square map is an error.", "method")
-def("f:matrix", "f:matrix([\"column\"|\"row\"]) -> rows",
-  "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T.", "method")
-def("f:is_affine", "f:is_affine() -> boolean",
-  "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors.", "method")
-def("f:vanishing_points", "f:vanishing_points() -> Vx, Vy, Vz",
-  "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity.", "method")
-def("f:show", "f:show([\"column\"|\"row\"])",
-  "Print the matrix with its convention named and the columns aligned.", "method")
+def("map.matrix")
+def("map.translate")
+def("map.scale")
+def("map.rotate")
+def("map.reflect")
+def("map.shear")
+def("map.orthographic")
+def("map.axonometric")
+def("map.isometric")
+def("map.dimetric")
+def("map.oblique")
+def("map.cavalier")
+def("map.cabinet")
+def("map.perspective")
+def("f(p)", nil, nil, "method")
+def("f:xy", nil, nil, "method")
+def("f:compose", nil, nil, "method")
+def("f:inverse", nil, nil, "method")
+def("f:matrix", nil, nil, "method")
+def("f:is_affine", nil, nil, "method")
+def("f:vanishing_points", nil, nil, "method")
+def("f:show", nil, nil, "method")
 def("f.nin", "f.nin, f.nout -> integer",
   "The dimensions of the points the map takes and gives.", "field")
 def("f.C0", "f.C0, f.C1, ... -> point",

@@ -28,7 +28,16 @@ static const pcl_fn *current(lua_State *L) {
     return NULL;
 }
 
-const char *pcl_name(lua_State *L) { return current(L)->name; }
+/* The declared name; for a __call (callname) the variable the script called, when known:
+ * "iso: argument #1 is 2-D, ..." for iso(P(1, 2)). */
+const char *pcl_name(lua_State *L) {
+    const pcl_fn *d = current(L);
+    lua_Debug ar;
+    if (d->callname && lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name &&
+        ar.namewhat[0] && strcmp(ar.namewhat, "method") != 0)
+        return ar.name;
+    return d->name;
+}
 
 static int vfail(lua_State *L, const char *prefix, const char *fmt, va_list ap) {
     pcl_pushwhere(L);
@@ -54,7 +63,7 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
     const pcl_fn *d = current(L);
     va_list ap;
     va_start(ap, fmt);
-    const char *prefix = lua_pushfstring(L, "%s: %s ", d->name, arg_label(L, k, d->args[k - 1].name));
+    const char *prefix = lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, d->args[k - 1].name));
     return vfail(L, prefix, fmt, ap);
 }
 
@@ -485,6 +494,12 @@ static int nvalues(const pcl_arg *args) {
     return n;
 }
 
+static int nargs_of(const pcl_fn *d) {
+    int n = 0;
+    while (d->args && d->args[n].kind) n++;
+    return n;
+}
+
 void *pcl_read(lua_State *L, pcl_val *v, int n) {
     const pcl_fn *d = current(L);
     void *self = NULL;
@@ -492,11 +507,13 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     if (d->self) {
         self = d->self(L, 1);
         if (!self) {
-            pcl_error(L, "%s: must be called on a %s, as %s(...)", d->name, d->selftype, d->name);
+            pcl_error(L, "%s: must be called on a %s, as %s(...)", d->name, d->selftype,
+                      d->topic ? d->topic : d->name);
         }
         first = 2;
     }
     luaL_checkstack(L, 24, NULL);
+    const char *fname = d->callname ? pcl_name(L) : d->name;
     int need = nvalues(d->args);
     if (n < need) luaL_error(L, "%s: the binding reads %d values into %d", d->name, need, n);
     int nargs = 0;
@@ -506,7 +523,7 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     int slot = nargs;
     for (int k = 0; k < nargs; k++) {
         const pcl_arg *a = &d->args[k];
-        ctx c = {d->name, k + 1, a->name, NULL, 0, &dim};
+        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         int idx = first + k;
         if (a->kind == PCL_OPTIONS) {
             v[k].idx = idx;
@@ -520,9 +537,11 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     return self;
 }
 
-void pcl_readone(lua_State *L, int idx, int shown, const pcl_arg *a, int dimdef, pcl_val *out) {
-    dimref dim = {dimdef, {pcl_name(L), 1, NULL, NULL, 0, NULL}};
-    ctx c = {dim.who.fname, shown, a->name, NULL, 0, &dim};
+void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out) {
+    const pcl_fn *d = current(L);
+    const char *name = a->name ? a->name : shown >= 1 && d->args && shown <= nargs_of(d) ? d->args[shown - 1].name : NULL;
+    dimref dim = {dimdef, {pcl_name(L), item ? shown : 1, item ? name : NULL, NULL, item ? 1 : 0, NULL}};
+    ctx c = {dim.who.fname, shown, name, NULL, item, &dim};
     read_value(L, &c, a, idx, out);
 }
 
@@ -611,7 +630,7 @@ static void record(lua_State *L, const pcl_fn *d) {
     lua_setfield(L, -2, "sig");
     lua_pushstring(L, d->help ? d->help : "");
     lua_setfield(L, -2, "desc");
-    lua_setfield(L, -2, d->name);
+    lua_setfield(L, -2, d->topic ? d->topic : d->name);
     lua_pop(L, 1);
 }
 
@@ -622,6 +641,7 @@ void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
         const char *key = d->name, *p;
         for (p = d->name; *p; p++)
             if (*p == '.' || *p == ':') key = p + 1;
+        if (d->key) key = d->key;
         lua_pushlightuserdata(L, (void *)d);
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
         lua_pushcclosure(L, d->fn, nup + 1);

@@ -87,6 +87,9 @@ typedef struct pcl_fn {
     const char *sig;          /* NULL: the signature is made from args; else the forms, one per line */
     void *(*self)(lua_State *L, int idx);  /* methods and __call: the receiver's recogniser */
     const char *selftype;     /* "map": "NAME: must be called on a map, as f:xy(...)" */
+    const char *key;          /* the field set (NULL: the name's last part; "__call" for f(p)) */
+    const char *topic;        /* the help entry (NULL: the name; "f(p)" for a __call) */
+    int callname;             /* a __call: messages name the called variable when Lua knows it */
 } pcl_fn;
 
 /* Set table[the last part of each name] = a closure of fn with its declaration as upvalue 1
@@ -102,9 +105,10 @@ void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup);
  * the arguments on the stack: every argument keeps its stack index. */
 void *pcl_read(lua_State *L, pcl_val *v, int n);
 #define PCL_READ(L, v) pcl_read((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
-/* Read the one value at stack index idx as the argument a shown as argument #shown (variadic
- * functions: simplex(C, A, B, ...)); dimdef: the dimension PCL_SAMEDIM refers to (0: none). */
-void pcl_readone(lua_State *L, int idx, int shown, const pcl_arg *a, int dimdef, pcl_val *out);
+/* Read the one value at stack index idx as the argument a shown as argument #shown, or its
+ * element [item] when item > 0 (variadic functions: simplex(C, A, B, ...); lists read by the
+ * body); dimdef: the dimension PCL_SAMEDIM refers to, set by argument #1 (by [1] for an item). */
+void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out);
 
 /* The running function's declared name; its stack index of argument #k. */
 const char *pcl_name(lua_State *L);
