@@ -388,6 +388,23 @@ static int read_input(lua_State *L, const pc_map *f, int first, int last, double
     return 1;
 }
 
+/* The image of in by the one weight rule: a homogeneous weight within 1e-9 of 0 is a direction
+ * (map.matrix({{1, 0, 0}, {0, 1, 0}, {0, 1e-17, 1}})(V(0, 1)) is V(0, 1), not P(0, 1e17)). */
+static int image(const pc_map *f, const double *in, double *out) {
+    double h[PC_MAXDIM + 1];
+    pc_map_apply(f, in, h);
+    if (pc_map_is_affine(f) || pc_kind_of(h[f->nout]) != PC_KIND_VECTOR) {
+        int st = pc_map_image(f, in, out);
+        pcl_snap_weight(f->nout, out);
+        return st;
+    }
+    int zero = 1;
+    for (int i = 0; i < f->nout; i++) zero &= h[i] == 0;
+    memcpy(out, h, sizeof(double) * (size_t)f->nout);
+    out[f->nout] = 0;
+    return zero ? PC_EPOLE : in[f->nin] == 0 ? PC_OK : PC_IMPROPER;
+}
+
 static int pole_error(lua_State *L) {
     return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
 }
@@ -407,8 +424,7 @@ static int l_apply(lua_State *L) {
     double in[PC_MAXDIM + 1];
     read_input(L, f, 2, lua_gettop(L), in);
     pcl_value *r = pcl_newvalue(L, f->nout);
-    if (pc_map_image(f, in, r->h) == PC_EPOLE) return pole_error(L);
-    pcl_snap_weight(f->nout, r->h);
+    if (image(f, in, r->h) == PC_EPOLE) return pole_error(L);
     return 1;
 }
 
@@ -418,9 +434,9 @@ static int l_xy(lua_State *L) {
     double in[PC_MAXDIM + 1], out[PC_MAXDIM + 1];
     if (!read_input(L, f, 2, lua_gettop(L), in) && in[f->nin] != 1)
         return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[f->nin]));
-    int st = pc_map_image(f, in, out);
+    int st = image(f, in, out);
     if (st == PC_EPOLE) return pole_error(L);
-    if (st == PC_IMPROPER || pcl_snap_weight(f->nout, out) == PC_KIND_VECTOR)
+    if (st == PC_IMPROPER || out[f->nout] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
     int n = f->nout;
     luaL_checkstack(L, n, NULL);
@@ -495,7 +511,7 @@ static int l_vanishing(lua_State *L) {
     for (int i = 0; i < 3; i++) {
         double in[4] = {0, 0, 0, 0}, out[4];
         in[i] = 1;
-        if (pc_map_image(f, in, out) != PC_OK || pcl_snap_weight(f->nout, out) == PC_KIND_VECTOR) {
+        if (image(f, in, out) != PC_OK || out[f->nout] == 0) {
             lua_pushnil(L);                    /* the direction stays at infinity */
         } else {
             pcl_value *v = pcl_newvalue(L, f->nout);
