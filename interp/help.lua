@@ -133,18 +133,12 @@ area("frames", "Simplices and affine maps",
   "Frames of reference: a simplex gives natural parameters, an affine map changes the frame.",
   "points.md")
 
-def("simplex", "simplex(C, A, B, ...) -> S",
-  "A simplex with initial point C (the book's simplex CAB): S(p, q) = (A - C)p + (B - C)q + C.")
-def("S(p, q)", "S(p, q, ...) -> point",
-  "The point of simplex S with natural parameters p, q, ...", "method")
-def("S:bary", "S:bary(p, q, ..., r) -> value",
-  "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1).", "method")
-def("S:params", "S:params(M) -> p, q, ..., residual",
-  "The natural parameters of M (least squares off the simplex's flat) and M's distance from that flat.", "method")
-def("S:measure", "S:measure() -> number",
-  "Length, area, volume...: signed when the simplex is full-dimensional.", "method")
-def("S:ratio", "S:ratio(P1, P2, ...) -> ratio, residual",
-  "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own.", "method")
+def("simplex")
+def("S(p, q)", nil, nil, "method")
+def("S:bary", nil, nil, "method")
+def("S:params", nil, nil, "method")
+def("S:measure", nil, nil, "method")
+def("S:ratio", nil, nil, "method")
 def("affine")
 def("affine.frame")
 def("affine.identity")
