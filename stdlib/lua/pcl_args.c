@@ -269,13 +269,12 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
         "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
         num_text(L, p->h[n])) : NULL;
     if (a->kind == PCL_POINT && k != PC_KIND_POINT)
-        mismatch_hint(L, c, idx, lua_pushfstring(L, "%s (weight 1)", dimmed(L, a->dim, "point")), k == PC_KIND_VECTOR
-                      ? "to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
+        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_VECTOR
+                      ? "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
     if (a->kind == PCL_VECTOR && k != PC_KIND_VECTOR)
-        mismatch_hint(L, c, idx, lua_pushfstring(L, "%s (weight 0)", dimmed(L, a->dim, "vector")), k == PC_KIND_POINT
-                      ? "a difference of points is a vector, e.g. B - A" : weight);
-    if (a->kind == PCL_LOC && k == PC_KIND_WEIGHTED)
-        mismatch_hint(L, c, idx, "a point (weight 1) or a vector (weight 0)", weight);
+        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_POINT
+                      ? "a vector has weight 0: a difference of points is a vector, e.g. B - A" : weight);
+    if (a->kind == PCL_LOC && k == PC_KIND_WEIGHTED) mismatch_hint(L, c, idx, expected(L, a), weight);
     for (int i = 0; i < n; i++)
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
 }

@@ -69,7 +69,7 @@ err(function() return affine({P(0, 0), P(1, 1)}, {P(0, 0), P(1, 0)}) end, "affin
 err(function() return affine({P(0, 0), P(1, 0), P(0, 1)}, {P(0, 0), P(1, 0)}) end, "affine: argument #2 (image points) holds 2 points, argument #1 3: they must pair up", "unpaired")
 err(function() return affine({P(0, 0), P(1, 0), P(0, 1, 0)}, {P(0, 0), P(1, 0), P(0, 1)}) end, "affine: argument #1 (source points) [3] is 3-D, but [1] is 2-D (mixed dimensions)", "mixed source")
 err(function() return affine({P(0, 0), 5, P(0, 1)}, {P(0, 0), P(1, 0), P(0, 1)}) end, "affine: argument #1 (source points) [2] must be a point, got 5", "non-point item")
-err(function() return affine({P(0, 0), V(1, 0), P(0, 1)}, {P(0, 0), P(1, 0), P(0, 1)}) end, "affine: argument #1 (source points) [2] must be a point (weight 1), got V(1, 0); to place a vector, add it to a point, e.g. P(0, 0) + v", "vector item")
+err(function() return affine({P(0, 0), V(1, 0), P(0, 1)}, {P(0, 0), P(1, 0), P(0, 1)}) end, "affine: argument #1 (source points) [2] must be a point, got V(1, 0); a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v", "vector item")
 err(function() return affine(5, {}) end, "affine: argument #1 (source points) must be a table of points or a simplex, got 5", "not a table")
 err(function() return affine({P(0, 0), P(1, 0), P(0, 1)}) end, "affine: argument #2 (image points) must be a table of points or a simplex, got nil", "no images")
 err(function() return affine({}, {}) end, "affine: argument #1 (source points) holds 0 points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", "empty source")
@@ -86,7 +86,7 @@ err(function() return f:compose(3) end, "compose: argument #1 (g) must be a map,
 err(function() return f.inverse(3) end, "inverse: must be called on a map, as f:inverse(...)", "bad self")
 err(function() return affine.frame(P(0, 0)) end, "frame: argument #2 (X) must be a point or vector, got nil", "frame without axes")
 err(function() return affine.frame(P(0, 0), P(1, 0, 0)) end, "affine.frame: argument #2 (X) is 3-D, but argument #1 (O) is 2-D (mixed dimensions)", "frame dims")
-err(function() return affine.frame(P(0, 0), P(1, 0) * 2) end, "affine.frame: argument #2 (X) must be a point (weight 1) or a vector (weight 0), got 2*P(1, 0); its weight is 2, and a point equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)", "frame weighted axis")
+err(function() return affine.frame(P(0, 0), P(1, 0) * 2) end, "affine.frame: argument #2 (X) must be a point or vector, got 2*P(1, 0); its weight is 2, and a point equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)", "frame weighted axis")
 err(function() return affine.identity(0) end, "affine.identity: argument #1 (n) must be an integer from 1 to 16, got 0", "identity")
 
 -- the drawing was only a check: save it to a scratch file so the host does not write one

@@ -22,7 +22,7 @@ eq(tostring(affine.frame(M, V(1, 0), V(0, 1))(P(0, 0))), "P(1.2, 0.9)", "affine.
 local D = V(1, 0) + P(0, 0) * 1e-12                 -- weight 1e-12: a direction
 eq(tostring(map.translate(D)(P(1, 1))), "P(2, 1)", "a 1e-12 weight is a vector")
 err(function() korotky.poly_spline({P(0, 0), P(1, 1) * 2}) end,
-    "korotky.poly_spline: argument #1 (points) [2] must be a 2-D point (weight 1), got 2*P(1, 1); its weight is 2",
+    "korotky.poly_spline: argument #1 (points) [2] must be a 2-D point, got 2*P(1, 1); its weight is 2, and a point equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
     "a weighted point is refused with its weight")
 
 -- maps apply it to their images: the 1e-17 weight of a projective matrix is a direction
@@ -94,7 +94,7 @@ for i = 1, 33 do many[i] = P(i, 0) end
 err(function() korotky.poly_spline(many) end,
     "korotky.poly_spline: argument #1 (points) must hold 2 to 32 points, got 33", "a count with its cap")
 err(function() korotky.poly_spline({P(0, 0), P(1, 1), V(1, 2)}) end,
-    "korotky.poly_spline: argument #1 (points) [3] must be a 2-D point (weight 1), got V(1, 2)", "a list element")
+    "korotky.poly_spline: argument #1 (points) [3] must be a 2-D point, got V(1, 2); a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v", "a list element")
 err(function() buimov.knots({P(0, 0), P(1, 1, 1)}, 2) end,
     "buimov.knots: argument #1 (points) [2] is 3-D, but [1] is 2-D (mixed dimensions)", "mixed dimensions in a list")
 err(function() korotky.conic_arc(P(0, 0), V(1, 0), P(1, 0, 0), V(0, 1), P(1, 1)) end,

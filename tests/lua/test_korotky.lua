@@ -186,7 +186,7 @@ err(function() korotky.conic_arc(P(0, 0), V(1, sqrt(3)), P(2, 0), V(-1, sqrt(3))
 err(function() korotky.conic_arc(P(0, 3, 0), V(0, 1, 1), P(4, 3, 0), V(0, 0, 1), P(2, 3, 2)) end,
     "korotky.conic_arc: the tangents must lie in the plane of U, V and T")
 err(function() korotky.conic_arc(P(0, 0), P(1, 0), P(2, 0), V(0, 1), P(1, 1)) end,
-    "korotky.conic_arc: argument #2 (tU) must be a vector (weight 0), got P(1, 0); a difference of points is a vector, e.g. B - A")
+    "korotky.conic_arc: argument #2 (tU) must be a vector, got P(1, 0); a vector has weight 0: a difference of points is a vector, e.g. B - A")
 err(function() korotky.dome_rect(0, 1, 1) end,
     "korotky.dome_rect: argument #1 (a0) must be a positive number, got 0")
 err(function() korotky.dome_tri(P(0, 0), P(1, 0), P(2, 0), 1) end,

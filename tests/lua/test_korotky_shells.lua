@@ -131,7 +131,7 @@ err(function() korotky.conic_revolve{A = AA, B = BB, nA = V(0, 1, 0), nB = V(0, 
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = V(0, 0, 1), nB = V(0, 1, 0), ridge = ridge} end,
     "korotky.conic_revolve: no conic through A, B and the ridge point with those tangent planes at u = 0")
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = P(0, 1, 0), nB = V(0, 1, 0), ridge = ridge} end,
-    "korotky.conic_revolve: option 'nA' must be a 3-D vector (weight 0), got P(0, 1, 0); a difference of points is a vector, e.g. B - A")
+    "korotky.conic_revolve: option 'nA' must be a 3-D vector, got P(0, 1, 0); a vector has weight 0: a difference of points is a vector, e.g. B - A")
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = V(0, 1, 0), nB = V(0, 1, 0), ridge = c7} end,
     "korotky.conic_revolve: option 'ridge' must be a 3-D curve, got a 2-D one")
 err(function() korotky.ridge_shell{U = P(0, 0, 0)} end,
