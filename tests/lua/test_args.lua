@@ -110,6 +110,12 @@ err(function() return T({P(1, 2)}) end, "T: takes a 2-D point or vector, or 2 co
 err(function() return T.inverse(3) end, "f:inverse: must be called on a map, as f:inverse(...)", "a method called with a dot")
 err(function() return simplex(P(0, 0), P(1, 0), P(0, 1)).params(5) end,
     "S:params: must be called on a simplex, as S:params(...)", "a simplex method with a dot")
+local cv = curvilinear(function(a, b) return P(a, b) end)
+err(function() cv.clamp() end, "C:clamp: call it as C:clamp(...), with a colon", "a Lua-written method called with a dot")
+err(function() cv.xy(1, 2) end, "C:xy: call it as C:xy(...), with a colon", "C.xy")
+local cu = curve(function(t) return P(t, t) end, 0, 1)
+err(function() cu.each() end, "c:each: call it as c:each(...), with a colon", "c.each()")
+err(function() cu.draw{} end, "c:draw: call it as c:draw{...}, with a colon", "c.draw{}")
 err(function() buimov.basis(0, 2, 0.5, {0, 1, 0}) end, "buimov.basis: argument #4 (knots) must not decrease ([3])", "a body's own check on a declared argument")
 
 -- ---- the registry: every declared function documented from its declaration ----------------
