@@ -169,7 +169,7 @@ end
 -- A hint for a misspelt global ("attempt to call a nil value (global 'circel')"): the one
 -- suggester of scripts, -e chunks and the REPL (pcl_global_hint in stdlib/lua/pcl_args.c).
 local function hint(msg)
-  local name = msg:match("a nil value %\(global '([%w_]+)'%\)")
+  local name = msg:match("a nil value %(global '([%w_]+)'%)")
   if not name then return nil end
   if name == "help" then return "(hint: :help NAME, e.g. :help lerp)" end
   local pc = package.loaded.pointcalc or rawget(_G, "pointcalc")
