@@ -122,14 +122,6 @@ static int l_classify(lua_State *L) {
     return 2;
 }
 
-static void push_coef(lua_State *L, const double k[6]) {
-    lua_createtable(L, 6, 0);
-    for (int i = 0; i < 6; i++) {
-        lua_pushnumber(L, k[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
-}
-
 #define COEF {.name = "coef", .kind = PCL_NUMBERS, .lo = 6, .hi = 6}
 static const pcl_arg rotate_args[] = {COEF, A_NUM("alpha"), PCL_END};
 
@@ -138,7 +130,7 @@ static int l_rotate_conic(lua_State *L) {
     pcl_val a[2] = {{.list = k, .cap = 6}};
     PCL_READ(L, a);
     pc_conic_rotate(k, a[1].x, out);
-    push_coef(L, out);
+    pcl_push_numbers(L, 6, out);
     return 1;
 }
 
@@ -166,7 +158,7 @@ static int l_conic_coef(lua_State *L) {
         if (!(A > 0) || !(B > 0)) return pcl_fail(L, "the semi-axes A and B must be positive");
         (a[0].n ? pc_conic_hyperbola_coef : pc_conic_ellipse_coef)(c[0], c[1], A, B, out);
     }
-    push_coef(L, out);
+    pcl_push_numbers(L, 6, out);
     return 1;
 }
 

@@ -73,14 +73,6 @@ static void columns(const pcl_val *p, double *x, double *y) {
     for (int i = 0; i < p->n; i++) x[i] = p->list[2 * i], y[i] = p->list[2 * i + 1];
 }
 
-static void push_list(lua_State *L, int n, const double *v) {
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        lua_pushnumber(L, v[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
-}
-
 /* A solver's failure at knot bad (0-based). */
 static int knot_error(lua_State *L, int st, int bad) {
     const char *why = st == PC_EDOMAIN      ? "no positive derivative moduli"
@@ -119,7 +111,7 @@ static int l_poly_spline(lua_State *L) {
     push_new_curve(L, pc_poly_spline_curve(n, x, coef, &st), st, "korotky.poly_spline");
     lua_createtable(L, n - 1, 0);
     for (int i = 0; i < n - 1; i++) {
-        push_list(L, 4, coef + 4 * i);
+        pcl_push_numbers(L, 4, coef + 4 * i);
         lua_rawseti(L, -2, i + 1);
     }
     return 2;
@@ -188,7 +180,7 @@ static int l_ferguson_tangents(lua_State *L) {
     int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
     push_new_curve(L, pc_ferguson_curve(n, p, T, mags, &st), st, "korotky.ferguson");
-    push_list(L, 2 * n - 2, mags);
+    pcl_push_numbers(L, 2 * n - 2, mags);
     return 2;
 }
 
@@ -208,10 +200,10 @@ static int l_ferguson_substitution(lua_State *L) {
     int bad = -1, st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
     push_new_curve(L, pc_ferguson_curve(n, p, T, mags, &st), st, "korotky.ferguson");
-    push_list(L, 2 * n - 2, mags);
+    pcl_push_numbers(L, 2 * n - 2, mags);
     lua_createtable(L, n - 2, 0);
     for (int i = 0; i < n - 2; i++) {
-        push_list(L, 3, quad + 3 * i);
+        pcl_push_numbers(L, 3, quad + 3 * i);
         lua_rawseti(L, -2, i + 1);
     }
     return 3;

@@ -162,14 +162,6 @@ static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .ki
                                          .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
                                         PCL_END};
 
-static void push_numbers(lua_State *L, int n, const double *x) {
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        lua_pushnumber(L, x[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
-}
-
 static void push_vectors(lua_State *L, const double (*v)[2]) {
     lua_createtable(L, 2, 0);
     for (int i = 0; i < 2; i++) {
@@ -195,12 +187,12 @@ static int l_conic_elements(lua_State *L) {
     lua_createtable(L, 0, 6);
     lua_pushstring(L, kinds[el.kind]);
     lua_setfield(L, -2, "kind");
-    push_numbers(L, 6, coef);
+    pcl_push_numbers(L, 6, coef);
     lua_setfield(L, -2, "coef");
     if (el.central) {
         pcl_pushpoint(L, 2, el.center);
         lua_setfield(L, -2, "center");
-        push_numbers(L, 2, el.semi);
+        pcl_push_numbers(L, 2, el.semi);
         lua_setfield(L, -2, "semi");
     }
     push_vectors(L, (const double (*)[2])el.axis);

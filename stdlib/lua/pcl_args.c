@@ -135,6 +135,14 @@ int pcl_snap_weight(int n, double *h) {
     return k;
 }
 
+void pcl_push_numbers(lua_State *L, int n, const double *x) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        lua_pushnumber(L, x[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
 /* ---- reading one value ------------------------------------------------------------------- */
 
 /* Where a value sits, for its messages: argument #shown (name), or option 'key'; item > 0: an
@@ -296,7 +304,8 @@ static void count_error(lua_State *L, const ctx *c, const pcl_arg *a, int m, con
 /* A list of points or numbers at idx. */
 static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
     if (!lua_istable(L, idx)) mismatch(L, c, idx, expected(L, a));
-    int m = (int)luaL_len(L, idx);
+    lua_Integer len = luaL_len(L, idx);    /* a __len may say anything: clamp before int */
+    int m = len < 0 ? -1 : len > MAXLIST ? MAXLIST + 1 : (int)len;
     int hi = a->hi > 0 ? (int)a->hi : MAXLIST;
     const char *unit = a->kind == PCL_POINTS ? "points" : "numbers";
     if (m < (int)a->lo || m > hi || m < 0) count_error(L, c, a, m, unit);

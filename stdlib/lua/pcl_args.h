@@ -126,6 +126,9 @@ const char *pcl_nearest(const char *name, const char *const *candidates);
 /* The same over the string keys of the table at idx. */
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 
+/* Push a list {x[0], ..., x[n-1]}. */
+void pcl_push_numbers(lua_State *L, int n, const double *x);
+
 /* One weight rule: PC_KIND_POINT, PC_KIND_VECTOR or PC_KIND_WEIGHTED, with the weight in h[n]
  * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
 int pcl_snap_weight(int n, double *h);
