@@ -77,6 +77,9 @@ local PENDING = {
   {"bezier of 66 points", function() local p = {} for i = 1, 66 do p[i] = P(i, 0) end bezier(p) end,
    "bezier: argument #1 (points) must hold 2 to"},
   {"interp.prototype(\"desargues\")", function() interp.prototype("desargues") end, "must hold 4 points"},
+  {"bspline names its knots", function() bspline({P(0, 0), P(1, 1), P(2, 0), P(3, 1), P(4, 0)}, 3, {0, 0, 0, 0, 0, 0, 0, 0, 0}) end,
+   "bspline: argument #3 (knots)"},
+  {"plot of a function of one number", function() plot(function(t) return t end, {t = {0, 1, 0.1}}) end, "plot:"},
 }
 local still = {}
 for _, p in ipairs(PENDING) do
