@@ -478,7 +478,8 @@ static const pcl_fn plane[] = {
     PCL_FN("plane.circle_slopes", l_circle_slopes, slopes_args, "circle [, circle2]", "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it)."),
     PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise (a rational Bezier curve)."),
     PCL_FN("plane.classify", l_classify, classify_args, "\"ellipse\"|\"parabola\"|\"hyperbola\", discriminant", "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1)."),
-    PCL_FN("plane.rotate_conic", l_rotate_conic, rotate_args, "coef", "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."),
+    {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args,
+     .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
     PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
     {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).",
      .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
@@ -501,7 +502,8 @@ static const pcl_fn book[] = {
     {.name = "buimov.sphere", .fn = l_sphere, .args = sphere_args, .sig = "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s", .help = "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default."},
     PCL_FN("buimov.sphere_frame", l_sphere_frame, frame_args, "S, S_th, S_ph, twist, N", "The unit sphere's point, tangent, twist and normal vectors (§5.1, corrected; N = S_th x S_ph points inwards)."),
     PCL_FN("buimov.det", l_det, det_args, "number", "The determinant of a square matrix (§1.2): the area factor of a 2x2 map (§1.7.4)."),
-    PCL_FN("buimov.reconstruct", l_reconstruct, reconstruct_args, "point, residual", "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."),
+    {.name = "buimov.reconstruct", .fn = l_reconstruct, .args = reconstruct_args,
+     .sig = "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual", .help = "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."},
     PCL_FN("buimov.calibrate", l_calibrate, calibrate_args, "map, rms", "The camera (a map from 3-D to 2-D) sending six or more points of space to their images, by least squares with T44 = 1 (§2.8.6)."),
     PCL_END};
 
