@@ -119,9 +119,11 @@ static void on_malloc(const volatile void *p, size_t n) {
     if (lim && refused_hook && pc_mem_in_use() > lim) refused_hook(n);
 }
 
+static void on_free(const volatile void *p) { (void)p; }   /* the hooks come in pairs */
+
 void pc_mem_set_limit(size_t limit, void (*on_refuse)(size_t)) {
     static int installed;
-    if (!installed) installed = __sanitizer_install_malloc_and_free_hooks(on_malloc, NULL);
+    if (!installed) installed = __sanitizer_install_malloc_and_free_hooks(on_malloc, on_free);
     refused_hook = on_refuse;
     __atomic_store_n(&limit_bytes, limit, __ATOMIC_RELAXED);
 }
