@@ -23,6 +23,7 @@
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "print.h"
 #include "writers.h"
 
 static const char *basename_of(const char *path) {
@@ -36,6 +37,9 @@ pc_format pc_format_from_path(const char *path) {
     if (strcasecmp(dot, ".png") == 0) return PC_FMT_PNG;
     if (strcasecmp(dot, ".svg") == 0) return PC_FMT_SVG;
     if (strcasecmp(dot, ".ppm") == 0) return PC_FMT_PPM;
+    if (strcasecmp(dot, ".pdf") == 0) return PC_FMT_PDF;
+    if (strcasecmp(dot, ".eps") == 0) return PC_FMT_EPS;
+    if (strcasecmp(dot, ".ps") == 0) return PC_FMT_PS;
     return PC_FMT_UNKNOWN;
 }
 
@@ -151,7 +155,11 @@ static mode_t new_file_mode(void) {
     return 0666 & ~mask;
 }
 
-static int encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f) {
+static int encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f, char *why,
+                  size_t whylen) {
+    if (fmt == PC_FMT_PDF || fmt == PC_FMT_EPS || fmt == PC_FMT_PS ||
+        (c->figure.on && (fmt == PC_FMT_PNG || fmt == PC_FMT_SVG)))
+        return pc_encode_print(c, fmt, f, why, whylen);
     switch (fmt) {
     case PC_FMT_PNG: return pc_encode_png(c, theme, f);
     case PC_FMT_SVG: return pc_encode_svg(c, theme, f);
@@ -162,7 +170,8 @@ static int encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f) {
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
     pc_format fmt = pc_format_from_path(path);
     if (fmt == PC_FMT_UNKNOWN)
-        return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_EARG);
+        return fail(err, errlen, path, "the extension must be .png, .svg, .ppm, .pdf, .eps or .ps",
+                    PC_EARG);
 
     char *resolved = NULL;
     const char *target;
@@ -203,6 +212,7 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     memcpy(tmp, active_tmp, strlen(active_tmp) + 1);
 
     int e = 0;
+    char why[200] = "";   /* a print-look message (a font, a label's math) */
     code = PC_OK;
     FILE *f = fdopen(fd, "wb");
     if (!f) {
@@ -210,8 +220,9 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
         close(fd);
     } else {
         errno = 0;
-        code = encode(c, fmt, theme, f);
+        code = encode(c, fmt, theme, f, why, sizeof why);
         if (code != PC_OK) e = errno ? errno : (code == PC_ENOMEM ? ENOMEM : EIO);
+        if (code == PC_EARG || (code == PC_ENOMEM && why[0])) e = EINVAL;   /* why says it */
         if (!e && fflush(f) != 0) e = errno;
         if (!e && existing && geteuid() == 0)   /* root replacing a user's file: keep its owner */
             (void)!fchown(fileno(f), st.st_uid, st.st_gid);
@@ -224,8 +235,8 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     tmp_active = 0;
     release_signals(&guard);
     if (e) {
-        code = code == PC_ENOMEM ? code : PC_EIO;
-        fail(err, errlen, path, strerror(e), code);
+        code = code == PC_ENOMEM || code == PC_EARG ? code : PC_EIO;
+        fail(err, errlen, path, why[0] ? why : strerror(e), code);
     } else {
         code = PC_OK;
         if (err && errlen) err[0] = 0;

@@ -8,7 +8,8 @@
 #include "canvas.h"
 
 typedef enum { PC_THEME_SCREEN = 0, PC_THEME_PAPER = 1 } pc_theme;
-typedef enum { PC_FMT_UNKNOWN = -1, PC_FMT_PNG, PC_FMT_SVG, PC_FMT_PPM } pc_format;
+typedef enum { PC_FMT_UNKNOWN = -1, PC_FMT_PNG, PC_FMT_SVG, PC_FMT_PPM,
+               PC_FMT_PDF, PC_FMT_EPS, PC_FMT_PS } pc_format;   /* the last three: print.h */
 
 /* The colours a writer uses: the canvas palette, or its print version (white paper, dark ink). */
 void pc_theme_palette(const pc_canvas *c, pc_theme theme, pc_rgb out[256]);
@@ -27,7 +28,9 @@ int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
 
-/* Write to `path` in the format its extension names, atomically.  On failure returns
+/* Write to `path` in the format its extension names, atomically.  PDF, EPS and PS are the
+ * print look (print.h); PNG and SVG are the print look when the canvas's figure is on (a
+ * script's figure{}, the command line's --print, --dpi or --size), the VGA look otherwise.  On failure returns
  * PC_EIO (or PC_EARG for an unknown extension) and puts
  * "cannot write 'PATH': REASON" into err.  The rules (links, non-regular files, read-only
  * files, signals) are in write_file.c and docs/safety.md. */
