@@ -271,6 +271,19 @@ int pc_math_layout(const char *label, double size, double ascent_em, double desc
     return p.status;
 }
 
+int pc_plain_layout(const char *text, double size, double ascent_em, double descent_em,
+                    pc_measure_fn measure, void *ctx, pc_mlayout *out) {
+    memset(out, 0, sizeof *out);
+    parser p = {text, text, size, ascent_em, descent_em, measure, ctx, out, 0, NULL, 0,
+                PC_OK, 0, 0, 0, -1};
+    out->ascent = ascent_em * size;
+    out->descent = descent_em * size;
+    emit(&p, text, strlen(text), 0, size, 0);
+    out->width = p.x;
+    if (p.status != PC_OK) pc_mlayout_free(out);
+    return p.status;
+}
+
 void pc_mlayout_free(pc_mlayout *l) {
     free(l->text);
     free(l->runs);

@@ -53,6 +53,9 @@ int pc_has_math(const char *label);
 int pc_math_layout(const char *label, double size, double ascent_em, double descent_em,
                    pc_measure_fn measure, void *ctx, pc_mlayout *out, char *err, size_t errlen);
 void pc_mlayout_free(pc_mlayout *l);
+/* The same for text taken as it is (QBasic's PRINT): one upright run. */
+int pc_plain_layout(const char *text, double size, double ascent_em, double descent_em,
+                    pc_measure_fn measure, void *ctx, pc_mlayout *out);
 
 /* The label as plain UTF-8 (math resolved, markup dropped): what a writer without runs puts. */
 int pc_math_plain(const char *label, char *out, size_t outlen);

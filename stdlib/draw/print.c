@@ -40,9 +40,11 @@ static void pen_of(const walk *w, const pc_op *op, pc_pr_pen *pp) {
     pp->round = p->ndash == 0;
 }
 
-/* A pixel of the screen as a square of the page. */
+/* A pixel of the screen as a square of the page, a hair larger (OVERLAP pt) so that squares
+ * side by side leave no seam in a renderer that rounds coordinates. */
+#define OVERLAP 0.01
 static void pixel(walk *w, long x, long y) {
-    w->b->rect(w->b->self, X(w, (double)x), Y(w, (double)y), w->pg->s, w->pg->s);
+    w->b->rect(w->b->self, X(w, (double)x), Y(w, (double)y), w->pg->s + OVERLAP, w->pg->s + OVERLAP);
 }
 
 static void fill_dots(walk *w, const pc_op *op) {
@@ -155,7 +157,7 @@ static void draw_text(walk *w, const pc_op *op) {
     const char *family;
     int ok = pc_font_family(st && st->font[0] ? st->font : c->figure.font, &family, w->err, w->errlen);
     pc_mlayout L;
-    if (ok == PC_OK) ok = pc_pr_layout(s, family, size, &L, w->err, w->errlen);
+    if (ok == PC_OK) ok = pc_pr_layout(s, op->a0 == 1, family, size, &L, w->err, w->errlen);
     if (ok != PC_OK) {
         w->status = ok;
         free(s);
@@ -178,7 +180,7 @@ static void draw_text(walk *w, const pc_op *op) {
     }
     int halo = st ? st->halo : -1;
     pc_pr_label lab = {&L, family, left, base, rgb(w, op->color), w->pal[0],
-                       halo == 0 ? 0 : 0.25 * size, s};
+                       halo == 0 ? 0 : 0.16 * size, s};
     w->b->text(w->b->self, &lab);
     pc_mlayout_free(&L);
     free(s);
@@ -237,7 +239,8 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
         case PC_OP_FILL:
             for (uint32_t j = 0; j < op->count; j++) {
                 const pc_span *sp = &c->spans[op->first + j];
-                b->rect(b->self, X(&w, sp->x0), Y(&w, sp->y), (sp->x1 - sp->x0 + 1) * pg->s, pg->s);
+                b->rect(b->self, X(&w, sp->x0), Y(&w, sp->y), (sp->x1 - sp->x0 + 1) * pg->s,
+                        pg->s + OVERLAP);
             }
             b->fill(b->self, rgb(&w, op->color), 0);
             break;

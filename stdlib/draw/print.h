@@ -27,6 +27,10 @@ int pc_parse_length(const char *s, const char *what, double *pt, char *err, size
 /* A figure size: "12cm" (the width, the height from the aspect: *h = 0) or "12cmx8cm". */
 int pc_parse_size(const char *s, double *w, double *h, char *err, size_t errlen);
 
+/* The named engineering pens: "main" (0.5 mm), "thin" (0.25 mm), "hidden" (0.35 mm, dashes
+ * 3 mm, gaps 1.5 mm), "centre" or "center" (0.25 mm, chain 12-1.5-1-1.5 mm). */
+int pc_pen_named(pc_canvas *c, const char *name);
+
 /* Check and set the figure (c->figure = *f with on = 1).  PC_EARG for a size out of range
  * (1 pt .. 5 m), dpi outside 10..2400, a raster image above 20000 pixels a side, a text size
  * outside 1..200 pt, or a font that is not installed. */

@@ -43,9 +43,10 @@ typedef struct pc_pr_backend {
 int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char *err,
                   size_t errlen);
 
-/* Text through Pango (print_text.c): lay out a label in a family at a size, with Pango's
- * metrics (hinting off, so every surface has the same advances). */
-int pc_pr_layout(const char *label, const char *family, double size, pc_mlayout *out,
+/* Text through Pango (print_text.c): lay out a label (math: its $...$ are math; else as it
+ * is) in a family at a size, with Pango's metrics (hinting off, so every surface has the same
+ * advances). */
+int pc_pr_layout(const char *label, int math, const char *family, double size, pc_mlayout *out,
                  char *err, size_t errlen);
 /* Pango's description of a run's font ("CMU Serif Italic 7.0"-like, size absolute). */
 void *pc_pr_font(const char *family, int italic, double size);   /* PangoFontDescription* */

@@ -61,6 +61,7 @@ static void c_text(void *s, const pc_pr_label *lab) {
     PangoLayout *pl = pango_layout_new(pc_pr_context());
     cairo_new_path(cr);
     for (int pass = lab->halo > 0 ? 0 : 1; pass < 2; pass++) {
+        if (pass == 1) set_rgb(cr, lab->color);
         for (size_t i = 0; i < L->nruns; i++) {
             const pc_mrun *r = &L->runs[i];
             PangoFontDescription *d = pc_pr_font(lab->family, r->italic, r->size);
@@ -100,7 +101,6 @@ static void c_text(void *s, const pc_pr_label *lab) {
             cairo_set_dash(cr, NULL, 0, 0);
             cairo_stroke(cr);
         }
-        set_rgb(cr, lab->color);
     }
     g_object_unref(pl);
 }

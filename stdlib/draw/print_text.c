@@ -95,7 +95,7 @@ static double measure(void *ctx, const char *s, size_t n, int italic, double siz
     return (double)logical.width / PANGO_SCALE;
 }
 
-int pc_pr_layout(const char *label, const char *family, double size, pc_mlayout *out,
+int pc_pr_layout(const char *label, int math, const char *family, double size, pc_mlayout *out,
                  char *err, size_t errlen) {
     PangoContext *ctx = pc_pr_context();
     PangoFontDescription *d = pc_pr_font(family, 0, 100);
@@ -105,7 +105,8 @@ int pc_pr_layout(const char *label, const char *family, double size, pc_mlayout 
     double desc = pango_font_metrics_get_descent(fm) / (100.0 * PANGO_SCALE);
     pango_font_metrics_unref(fm);
     measurer m = {family, pango_layout_new(ctx)};
-    int st = pc_math_layout(label, size, asc, desc, measure, &m, out, err, errlen);
+    int st = math ? pc_math_layout(label, size, asc, desc, measure, &m, out, err, errlen)
+                  : pc_plain_layout(label, size, asc, desc, measure, &m, out);
     g_object_unref(m.layout);
     return st;
 }

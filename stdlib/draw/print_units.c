@@ -97,3 +97,25 @@ void pc_print_page(const pc_canvas *c, pc_page *pg) {
     pg->ox = (pg->width - W * pg->s) / 2;
     pg->oy = (pg->height - H * pg->s) / 2;
 }
+
+/* The engineering pens (ISO 128-20 line types, in the widths of a 0.5 mm drawing): a main
+ * (continuous thick) line, thin construction lines, dashed hidden lines, chain centre lines. */
+static const struct { const char *name; double width_mm; int ndash; double dash_mm[4]; } pens[] = {
+    {"main", 0.5, 0, {0}},
+    {"thin", 0.25, 0, {0}},
+    {"hidden", 0.35, 2, {3, 1.5}},
+    {"centre", 0.25, 4, {12, 1.5, 1, 1.5}},
+    {"center", 0.25, 4, {12, 1.5, 1, 1.5}},
+};
+
+int pc_pen_named(pc_canvas *c, const char *name) {
+    for (size_t i = 0; i < sizeof pens / sizeof pens[0]; i++)
+        if (!strcmp(name, pens[i].name)) {
+            double dash[4];
+            for (int k = 0; k < pens[i].ndash; k++) dash[k] = pens[i].dash_mm[k] * 72 / 25.4;
+            return pc_pen_physical(c, pens[i].width_mm * 72 / 25.4, dash, pens[i].ndash);
+        }
+    snprintf(c->error, sizeof c->error, "pen: unknown pen \"%.40s\" (the named pens are \"main\", "
+             "\"thin\", \"hidden\" and \"centre\")", name);
+    return PC_EARG;
+}

@@ -196,6 +196,7 @@ int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, doub
     op->x2 = sx;
     op->y2 = sy;
     op->rx = scale;
+    op->a0 = math;   /* the print look lays out math only where pc_text found it (not PRINT) */
     op->first = first;
     op->count = (uint32_t)n;
     return PC_OK;   /* the graphics cursor stays: QBasic's PRINT does not move it either */
