@@ -223,7 +223,7 @@ static void parse_seq(parser *p, int level, double rise, int upright, char end) 
         } else if (ch == '}') {
             fail(p, at, "unbalanced '}'");
         } else if (ch == '$') {
-            fail(p, at, "'$' inside a group");
+            return;   /* a '$' before a group's '}': the group reports its '{' */
         } else {
             parse_atom(p, level, rise, upright, "");
             base_end = p->x;
