@@ -53,10 +53,17 @@ static int l_figure(lua_State *L) {
         known_keys(L, 1, "figure", keys, "width, height, dpi, font and size");
         if (lua_getfield(L, 1, "width") != LUA_TNIL) f.width = length_field(L, "figure", "width");
         if (lua_getfield(L, 1, "height") != LUA_TNIL) f.height = length_field(L, "figure", "height");
-        if (lua_getfield(L, 1, "dpi") != LUA_TNIL) f.dpi = number_field(L, "figure", "dpi");
-        if (lua_getfield(L, 1, "size") != LUA_TNIL)
+        if (lua_getfield(L, 1, "dpi") != LUA_TNIL) {
+            f.dpi = number_field(L, "figure", "dpi");
+            if (!(f.dpi >= 10 && f.dpi <= 2400))
+                return pcl_error(L, "figure: dpi must be 10..2400, got %f", f.dpi);
+        }
+        if (lua_getfield(L, 1, "size") != LUA_TNIL) {
             f.size = lua_type(L, -1) == LUA_TSTRING ? length_field(L, "figure", "size")
                                                      : number_field(L, "figure", "size");
+            if (!(f.size >= 1 && f.size <= 200))
+                return pcl_error(L, "figure: size must be 1..200 pt, got %f", f.size);
+        }
         if (lua_getfield(L, 1, "font") != LUA_TNIL) {
             if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) >= sizeof f.font)
                 return pcl_error(L, "figure: font must be a font name such as \"serif\", \"sans\" "
@@ -131,16 +138,17 @@ void pcl_label_options(lua_State *L, int idx, pcl_label_opts *o) {
         if (pc_font_family(font, &family, err, sizeof err) != PC_OK)
             pcl_error(L, "%s: %s", pcl_fname(L), err);
     }
-    if (lua_getfield(L, idx, "size") != LUA_TNIL)
+    if (lua_getfield(L, idx, "size") != LUA_TNIL) {
         o->size = lua_type(L, -1) == LUA_TSTRING ? length_field(L, pcl_fname(L), "size")
-                                               : number_field(L, pcl_fname(L), "size");
+                                                  : number_field(L, pcl_fname(L), "size");
+        if (!(o->size >= 1 && o->size <= 200))
+            pcl_error(L, "%s: size must be 1..200 pt, got %f", pcl_fname(L), o->size);
+    }
     if (lua_getfield(L, idx, "halo") != LUA_TNIL) {
         if (!lua_isboolean(L, -1))
             pcl_error(L, "%s: halo must be true or false, got %s", pcl_fname(L), pcl_shown(L, -1));
         o->halo = lua_toboolean(L, -1);
     }
-    if (o->size && !(o->size >= 1 && o->size <= 200))
-        pcl_error(L, "%s: size must be 1..200 pt, got %g", pcl_fname(L), o->size);
     lua_pop(L, 3);
 }
 
