@@ -110,7 +110,8 @@ static int set_limit(double *out, const char *opt, const char *value) {
 static int add_output(options *o, const char *path) {
     if (!path) return usage_error("%s", "option -o needs a file name");
     if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
-        return usage_error("cannot write '%s': the extension must be .png, .svg or .ppm", path);
+        return usage_error("cannot write '%s': the extension must be .png, .svg, .ppm, .pdf, "
+                           ".eps or .ps", path);
     if (o->noutputs == MAX_OUTPUTS) return usage_error("%s", "too many -o options");
     o->outputs[o->noutputs++] = path;
     return 0;
