@@ -16,6 +16,8 @@ typedef struct {
     pc_rgb pal[256];
     char *err; size_t errlen;
     int status;
+    uint32_t *seen;           /* fill_dots: a screen pixel's place in idx, plus 1 (0: none) */
+    uint32_t *idx; size_t cap;   /* a run's distinct pixels */
 } walk;
 
 static double X(const walk *w, double x) { return w->pg->ox + x * w->pg->s; }
@@ -32,7 +34,8 @@ static pc_rgb rgb(const walk *w, int attr) { return pc_attr_rgb(w->c, w->pal, at
 static void pen_of(const walk *w, const pc_op *op, pc_pr_pen *pp) {
     const pc_stroke *p = op->pen < w->c->npens ? &w->c->pens[op->pen] : &w->c->pens[0];
     memset(pp, 0, sizeof *pp);
-    pp->width = p->print_width > 0 ? p->print_width : p->width * PC_PRINT_PEN_PT;
+    double px = p->width * w->pg->s;
+    pp->width = p->print_width > 0 ? p->print_width : px > PC_PRINT_PEN_MIN_PT ? px : PC_PRINT_PEN_MIN_PT;
     pp->ndash = p->ndash;
     /* a physical pen's dashes are in pt (kept as 96-dpi pixels); a pixel pen's scale */
     for (int i = 0; i < p->ndash; i++)
@@ -47,25 +50,90 @@ static void pixel(walk *w, long x, long y) {
     w->b->rect(w->b->self, X(w, (double)x), Y(w, (double)y), w->pg->s + OVERLAP, w->pg->s + OVERLAP);
 }
 
-static void fill_dots(walk *w, const pc_op *op) {
-    const pc_canvas *c = w->c;
-    for (uint32_t k = 0; k < op->count; k++) {
-        const pc_xy *d = &c->dots[op->first + k];
-        pixel(w, pc_px(d->x), pc_px(d->y));
+/* n distinct pixel indices, sorted: each horizontal run of them one rectangle. */
+static void fill_runs(walk *w, const uint32_t *idx, size_t n, int color) {
+    uint32_t W = (uint32_t)w->c->width;
+    for (size_t i = 0; i < n;) {
+        size_t j = i + 1;
+        while (j < n && idx[j] == idx[j - 1] + 1 && idx[j] % W != 0) j++;
+        double x = idx[i] % W, y = idx[i] / W;
+        w->b->rect(w->b->self, X(w, x), Y(w, y), (double)(j - i) * w->pg->s + OVERLAP,
+                   w->pg->s + OVERLAP);
+        i = j;
     }
-    w->b->fill(w->b->self, rgb(w, op->color), 0);
+    w->b->fill(w->b->self, rgb(w, color), 0);
 }
 
+static int by_color_then_index(const void *a, const void *b) {
+    const uint32_t *x = a, *y = b;   /* pairs: colour, pixel index */
+    if (x[0] != y[0]) return (x[0] > y[0]) - (x[0] < y[0]);
+    return (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+/* Runs of dots one after another (ops[0..nops), one clip): each screen pixel gets the colour
+ * of the last dot on it, as in the raster (scripts plot the same pixel many times and change
+ * colour from dot to dot), and each colour's pixels go as rows of rectangles, so a curve of a
+ * million dots is a few thousand rectangles in a handful of fills. */
+static void fill_dots(walk *w, const pc_op *ops, size_t nops) {
+    const pc_canvas *c = w->c;
+    size_t npx = (size_t)c->width * c->height;
+    if (!w->seen && !(w->seen = calloc(npx, sizeof *w->seen))) { w->status = PC_ENOMEM; return; }
+    size_t n = 0;   /* distinct pixels, in w->idx as (colour, index) pairs */
+    for (size_t o = 0; o < nops && w->status == PC_OK; o++) {
+        const pc_op *op = &ops[o];
+        for (uint32_t k = 0; k < op->count; k++) {
+            const pc_xy *d = &c->dots[op->first + k];
+            long x = pc_px(d->x), y = pc_px(d->y);
+            if (x < 0 || y < 0 || x >= c->width || y >= c->height) continue;
+            uint32_t i = (uint32_t)(y * c->width + x);
+            if (w->seen[i]) {   /* seen[i]: 1 + its pair's place */
+                w->idx[2 * (w->seen[i] - 1)] = op->color;
+                continue;
+            }
+            if (2 * n + 2 > w->cap) {
+                size_t cap = w->cap ? 2 * w->cap : 8192;
+                uint32_t *b = realloc(w->idx, cap * sizeof *b);
+                if (!b) { w->status = PC_ENOMEM; break; }
+                w->idx = b;
+                w->cap = cap;
+            }
+            w->idx[2 * n] = op->color;
+            w->idx[2 * n + 1] = i;
+            w->seen[i] = (uint32_t)++n;
+        }
+    }
+    for (size_t k = 0; k < n; k++) w->seen[w->idx[2 * k + 1]] = 0;
+    if (w->status != PC_OK) return;
+    qsort(w->idx, n, 2 * sizeof *w->idx, by_color_then_index);
+    uint32_t *run = malloc(n * sizeof *run + 1);
+    if (!run) { w->status = PC_ENOMEM; return; }
+    for (size_t i = 0; i < n;) {
+        size_t j = i, m = 0;
+        while (j < n && w->idx[2 * j] == w->idx[2 * i]) run[m++] = w->idx[2 * j++ + 1];
+        fill_runs(w, run, m, (int)w->idx[2 * i]);
+        i = j;
+    }
+    free(run);
+}
+
+/* Folded dots (by increasing pixel index): each colour's runs of neighbours as rectangles. */
 static void fill_pixels(walk *w, const pc_op *op) {
     const pc_canvas *c = w->c;
     uint32_t k = 0;
-    while (k < op->count) {
+    while (k < op->count && w->status == PC_OK) {
         int color = c->lpx[op->first + k].color;
+        size_t n = 0;
         for (; k < op->count && c->lpx[op->first + k].color == color; k++) {
-            uint32_t idx = c->lpx[op->first + k].idx;
-            pixel(w, idx % (uint32_t)c->width, idx / (uint32_t)c->width);
+            if (n == w->cap) {
+                size_t cap = w->cap ? 2 * w->cap : 4096;
+                uint32_t *b = realloc(w->idx, cap * sizeof *b);
+                if (!b) { w->status = PC_ENOMEM; return; }
+                w->idx = b;
+                w->cap = cap;
+            }
+            w->idx[n++] = c->lpx[op->first + k].idx;
         }
-        w->b->fill(w->b->self, rgb(w, color), 0);
+        fill_runs(w, w->idx, n, color);
     }
 }
 
@@ -91,6 +159,44 @@ static void arc_path(walk *w, const pc_op *op, int move) {
                     X(w, cx + rx * (c1 + k * s1)), Y(w, cy - ry * (s1 - k * c1)),
                     X(w, cx + rx * c1), Y(w, cy - ry * s1));
     }
+}
+
+/* A small full circle drawn with the default pen: a "brush" dot of a thick curve (the
+ * toolkit's brush = "dot" draws thousands). */
+static int is_brush(const pc_op *op) {
+    return op->kind == PC_OP_ARC && (op->flags & PC_ARC_FULL) && op->rx == op->ry &&
+           op->rx > 0 && op->rx <= 8 && op->pen == 0;
+}
+
+/* Brushes one after another, of one colour and radius in one clip: one circle per distinct
+ * centre pixel (most of a dense curve's brushes land on a pixel already drawn), one stroke. */
+static void draw_brushes(walk *w, const pc_op *ops, size_t n) {
+    const pc_canvas *c = w->c;
+    size_t npx = (size_t)c->width * c->height, m = 0;
+    if (!w->seen && !(w->seen = calloc(npx, sizeof *w->seen))) { w->status = PC_ENOMEM; return; }
+    for (size_t k = 0; k < n && w->status == PC_OK; k++) {
+        long x = pc_px(ops[k].x1), y = pc_px(ops[k].y1);
+        int inside = x >= 0 && y >= 0 && x < c->width && y < c->height;
+        if (inside) {
+            uint32_t i = (uint32_t)(y * c->width + x);
+            if (w->seen[i]) continue;
+            if (m == w->cap) {
+                size_t cap = w->cap ? 2 * w->cap : 8192;
+                uint32_t *b = realloc(w->idx, cap * sizeof *b);
+                if (!b) { w->status = PC_ENOMEM; break; }
+                w->idx = b;
+                w->cap = cap;
+            }
+            w->idx[m++] = i;
+            w->seen[i] = 1;
+        }
+        arc_path(w, &ops[k], 1);
+        w->b->close(w->b->self);
+    }
+    for (size_t k = 0; k < m; k++) w->seen[w->idx[k]] = 0;
+    pc_pr_pen pen;
+    pen_of(w, &ops[0], &pen);
+    w->b->stroke(w->b->self, rgb(w, ops[0].color), &pen);
 }
 
 static void draw_arc(walk *w, const pc_op *op) {
@@ -188,7 +294,7 @@ static void draw_text(walk *w, const pc_op *op) {
 
 int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char *err,
                   size_t errlen) {
-    walk w = {c, pg, b, {{0}}, err, errlen, PC_OK};
+    walk w = {c, pg, b, {{0}}, err, errlen, PC_OK, NULL, NULL, 0};
     pc_theme_palette(c, PC_THEME_PAPER, w.pal);
     size_t clip = SIZE_MAX;
     for (size_t i = 0; i < c->nops && w.status == PC_OK && !b->failed; i++) {
@@ -213,13 +319,28 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
             b->fill(b->self, rgb(&w, op->color), 0);
             break;
         }
-        case PC_OP_DOTS: fill_dots(&w, op); break;
-        case PC_OP_PIXELS: fill_pixels(&w, op); break;
-        case PC_OP_LINE:
-            b->move(b->self, X(&w, op->x1 + 0.5), Y(&w, op->y1 + 0.5));
-            b->line(b->self, X(&w, op->x2 + 0.5), Y(&w, op->y2 + 0.5));
-            stroke_op(&w, op);
+        case PC_OP_DOTS: {
+            size_t j = i + 1;
+            while (j < c->nops && c->ops[j].kind == PC_OP_DOTS && pc_op_clip(c, j) == k) j++;
+            fill_dots(&w, op, j - i);
+            i = j - 1;
             break;
+        }
+        case PC_OP_PIXELS: fill_pixels(&w, op); break;
+        case PC_OP_LINE: {   /* lines one after another in one colour and pen: one stroke */
+            size_t j = i;
+            do {
+                const pc_op *l = &c->ops[j];
+                b->move(b->self, X(&w, l->x1 + 0.5), Y(&w, l->y1 + 0.5));
+                b->line(b->self, X(&w, l->x2 + 0.5), Y(&w, l->y2 + 0.5));
+                j++;
+            } while (j < c->nops && c->ops[j].kind == PC_OP_LINE && c->ops[j].color == op->color &&
+                     c->ops[j].pen == op->pen && !c->pens[op->pen].style && j - i < 4096 &&
+                     pc_op_clip(c, j) == k);
+            stroke_op(&w, op);
+            i = j - 1;
+            break;
+        }
         case PC_OP_BOX: case PC_OP_FILLBOX: {
             double x0 = fmin(op->x1, op->x2), y0 = fmin(op->y1, op->y2);
             double x1 = fmax(op->x1, op->x2), y1 = fmax(op->y1, op->y2);
@@ -235,7 +356,17 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
             }
             break;
         }
-        case PC_OP_ARC: draw_arc(&w, op); break;
+        case PC_OP_ARC: {
+            size_t j = i + 1;
+            if (is_brush(op))
+                while (j < c->nops && is_brush(&c->ops[j]) && c->ops[j].color == op->color &&
+                       c->ops[j].rx == op->rx && pc_op_clip(c, j) == k)
+                    j++;
+            if (j > i + 1) draw_brushes(&w, op, j - i);
+            else draw_arc(&w, op);
+            i = j - 1;
+            break;
+        }
         case PC_OP_FILL:
             for (uint32_t j = 0; j < op->count; j++) {
                 const pc_span *sp = &c->spans[op->first + j];
@@ -256,5 +387,7 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
         }
     }
     if (w.status == PC_OK && b->failed) w.status = PC_ENOMEM;
+    free(w.seen);
+    free(w.idx);
     return w.status;
 }

@@ -5,8 +5,9 @@
  *
  * Sizes: the canvas (640x480 pixels for SCREEN 12) is mapped at one scale onto the figure's
  * width and height in points (1 pt = 1/72 in), centred when both are given and their aspect
- * differs.  Text sizes are in pt whatever the window; pens are physical (pt) or, for a width
- * in pixels, that many times the default print pen (PC_PRINT_PEN_PT).
+ * differs.  Text sizes are in pt whatever the window; pens are physical (pt), or a width in
+ * pixels scales with the figure (w * s pt, at least PC_PRINT_PEN_MIN_PT), so a dense mesh
+ * stays as light as the screen shows it.
  *
  * Pure C: no Lua. */
 #ifndef PC_PRINT_H
@@ -16,7 +17,8 @@
 #include "canvas.h"
 #include "writers.h"
 
-#define PC_PRINT_PEN_PT 0.85     /* 0.3 mm: the pen of a line drawn without one */
+#define PC_PRINT_PEN_MIN_PT 0.25 /* the thinnest line a pixel pen becomes (0.09 mm) */
+#define PC_PRINT_PEN_PT 0.71     /* 0.25 mm: a physical pen given without a width */
 #define PC_PRINT_SIZE_PT 10.0    /* the label size when neither figure nor label sets one */
 
 /* One length with its unit: "12cm", "0.5mm", "3in", "10pt", "96px" (px: 1/96 in, as CSS),
