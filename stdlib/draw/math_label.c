@@ -119,9 +119,38 @@ static double top_of(const parser *p, size_t r0) {
     return top;
 }
 
-/* One character of math: letters italic (unless upright), the rest upright. */
+/* The space TeX puts around a relation (= < >, thickmuskip, about 0.28 em) and a binary
+ * operator (+ -, medmuskip, about 0.22 em), in text style only (none in scripts, as TeX). */
+static double op_space(const char *utf8, int level) {
+    if (level > 0) return 0;
+    static const char *rel[] = {"=", "<", ">", "\u2264", "\u2265", "\u2260", "\u2248", "\u2261",
+                                "\u223c", "\u2245", "\u2192", "\u2190", "\u2208", "\u2225", "\u22a5"};
+    static const char *bin[] = {"+", "\u2212", "\u00d7", "\u22c5", "\u00b1", "\u2213", "\u2229",
+                                "\u222a", "\u2218"};
+    for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++)
+        if (!strcmp(utf8, rel[i])) return 0.28;
+    for (size_t i = 0; i < sizeof bin / sizeof bin[0]; i++)
+        if (!strcmp(utf8, bin[i])) return 0.22;
+    return 0;
+}
+
+/* A symbol of math, with the space around it that its class asks for (not at the start, where
+ * TeX treats a binary operator as a sign). */
+static void emit_symbol(parser *p, const char *utf8, int italic, int level, double rise) {
+    double sp = p->x > 0 ? op_space(utf8, level) * level_size(p, level) : 0;
+    p->x += sp;
+    emit(p, utf8, strlen(utf8), italic, level_size(p, level), rise);
+    p->x += sp;
+}
+
+/* One character of math: letters italic (unless upright), the rest upright; '-' is a minus. */
 static void parse_char(parser *p, int level, double rise, int upright) {
     const unsigned char *u = (const unsigned char *)p->s;
+    if (*u == '-' || *u == '+' || *u == '=' || *u == '<' || *u == '>') {
+        emit_symbol(p, *u == '-' ? "\u2212" : (char[]){(char)*u, 0}, 0, level, rise);
+        p->s++;
+        return;
+    }
     size_t n = *u < 0x80 ? 1 : *u < 0xe0 ? 2 : *u < 0xf0 ? 3 : 4;
     for (size_t i = 1; i < n; i++)
         if (!p->s[i]) n = i;
@@ -171,7 +200,7 @@ static void parse_command(parser *p, int level, double rise, int upright) {
     for (size_t i = 0; i < pc_math_ncommands; i++) {
         const pc_mcommand *m = &pc_math_commands[i];
         if (strlen(m->name) == n && !strncmp(m->name, name, n)) {
-            emit(p, m->utf8, strlen(m->utf8), m->italic && !upright, level_size(p, level), rise);
+            emit_symbol(p, m->utf8, m->italic && !upright, level, rise);
             return;
         }
     }

@@ -84,4 +84,9 @@ expect_no_file bad.pdf "no PDF for a failed script"
 printf 'label("x", 10, 10, {font = "Nonexistent Face"})\n' > font.lua
 run "$POINTCALC" font.lua -o font.pdf; expect_rc 1 "a missing font"
 expect_in err.txt "font 'Nonexistent Face' is not installed" "names the font"
+# no fonts at all (an empty fontconfig): the error names the Debian package, no file is left
+printf '<?xml version="1.0"?>\n<fontconfig></fontconfig>\n' > empty.conf
+FONTCONFIG_FILE="$PWD/empty.conf" run "$POINTCALC" fig.lua -o nofont.pdf; expect_rc 1 "no fonts installed"
+expect_in err.txt "cannot write 'nofont.pdf': font 'serif' (CMU Serif) is not installed: install the Debian package fonts-cmu" "names fonts-cmu"
+expect_no_file nofont.pdf "no PDF without its font"
 finish

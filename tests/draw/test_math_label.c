@@ -75,9 +75,16 @@ static void test_greek_symbols_primes(void **state) {
     (void)state;
     pc_mlayout L = lay("$\\varphi \\le \\Gamma$");
     assert_string_equal(L.text, "\u03c6\u2264\u0393");
-    assert_int_equal(L.nruns, 2);
+    assert_int_equal(L.nruns, 3);
     run_is(&L, 0, "\u03c6", 1);              /* a lower-case Greek letter is italic */
-    run_is(&L, 1, "\u2264\u0393", 0);       /* a symbol and a capital upright, as TeX */
+    run_is(&L, 1, "\u2264", 0);              /* a relation upright, */
+    CHECK_NEAR(L.runs[1].x, 5 + 2.8);        /* with TeX's thick space (0.28 em) each side */
+    run_is(&L, 2, "\u0393", 0);              /* a capital upright, as TeX */
+    CHECK_NEAR(L.runs[2].x, 5 + 2.8 + 5 + 2.8);
+    pc_mlayout_free(&L);
+    L = lay("$-a-b$");   /* a sign at the start, a binary minus after: U+2212, spaced */
+    assert_string_equal(L.text, "\u2212a\u2212b");
+    CHECK_NEAR(L.runs[2].x, 5 + 5 + 2.2);
     pc_mlayout_free(&L);
     L = lay("$M''_1$");
     assert_string_equal(L.text, "M\u20331");
