@@ -53,6 +53,10 @@ static void pixel(walk *w, long x, long y) {
 /* n distinct pixel indices, sorted: each horizontal run of them one rectangle. */
 static void fill_runs(walk *w, const uint32_t *idx, size_t n, int color) {
     uint32_t W = (uint32_t)w->c->width;
+    if (w->b->pixels && n > 64) {   /* many: one mask (a PDF image mask, not 10^4 rectangles) */
+        w->b->pixels(w->b->self, idx, n, w->c->width, w->pg, rgb(w, color));
+        return;
+    }
     for (size_t i = 0; i < n;) {
         size_t j = i + 1;
         while (j < n && idx[j] == idx[j - 1] + 1 && idx[j] % W != 0) j++;

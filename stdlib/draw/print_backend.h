@@ -36,6 +36,10 @@ typedef struct pc_pr_backend {
     void (*stroke)(void *self, pc_rgb color, const pc_pr_pen *pen);
     void (*fill)(void *self, pc_rgb color, int evenodd);
     void (*text)(void *self, const pc_pr_label *label);
+    /* Optional: n screen pixels (indices y * width + x, increasing) of one colour, each the
+     * square of side s at (ox + x s, oy + y s), drawn as one mask; NULL: as rectangles. */
+    void (*pixels)(void *self, const uint32_t *idx, size_t n, int width, const pc_page *pg,
+                   pc_rgb color);
     int failed;              /* set by a backend that ran out of memory or could not write */
 } pc_pr_backend;
 

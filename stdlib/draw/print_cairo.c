@@ -105,6 +105,44 @@ static void c_text(void *s, const pc_pr_label *lab) {
     g_object_unref(pl);
 }
 
+/* Pixels as an A8 mask over their bounding box, scaled with nearest-neighbour filtering: the
+ * squares exactly, in one image however many there are. */
+static void c_pixels(void *s, const uint32_t *idx, size_t n, int width, const pc_page *pg,
+                     pc_rgb color) {
+    cairo_t *cr = ((cbe *)s)->cr;
+    int x0 = width, x1 = -1, y0 = (int)(idx[0] / (uint32_t)width), y1 = (int)(idx[n - 1] / (uint32_t)width);
+    for (size_t i = 0; i < n; i++) {
+        int x = (int)(idx[i] % (uint32_t)width);
+        if (x < x0) x0 = x;
+        if (x > x1) x1 = x;
+    }
+    int w = x1 - x0 + 1, h = y1 - y0 + 1;
+    cairo_surface_t *m = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
+    if (cairo_surface_status(m) != CAIRO_STATUS_SUCCESS) {
+        cairo_surface_destroy(m);
+        return;
+    }
+    cairo_surface_flush(m);
+    unsigned char *data = cairo_image_surface_get_data(m);
+    int stride = cairo_image_surface_get_stride(m);
+    for (size_t i = 0; i < n; i++) {
+        int x = (int)(idx[i] % (uint32_t)width) - x0, y = (int)(idx[i] / (uint32_t)width) - y0;
+        data[y * stride + x] = 255;
+    }
+    cairo_surface_mark_dirty(m);
+    cairo_save(cr);
+    cairo_new_path(cr);
+    cairo_translate(cr, pg->ox + x0 * pg->s, pg->oy + y0 * pg->s);
+    cairo_scale(cr, pg->s, pg->s);
+    set_rgb(cr, color);
+    cairo_pattern_t *pat = cairo_pattern_create_for_surface(m);
+    cairo_pattern_set_filter(pat, CAIRO_FILTER_NEAREST);
+    cairo_mask(cr, pat);
+    cairo_pattern_destroy(pat);
+    cairo_restore(cr);
+    cairo_surface_destroy(m);
+}
+
 /* ---- surfaces into memory --------------------------------------------------------------------- */
 
 typedef struct { char *buf; size_t n, cap; int nomem; } membuf;
@@ -127,7 +165,7 @@ static cairo_status_t to_mem(void *closure, const unsigned char *data, unsigned 
 static int render(const pc_canvas *c, const pc_page *pg, cairo_t *cr, char *err, size_t errlen) {
     cbe self = {cr};
     pc_pr_backend b = {&self, c_clip, c_move, c_line, c_curve, c_close, c_rect, c_stroke, c_fill,
-                       c_text, 0};
+                       c_text, c_pixels, 0};
     set_rgb(cr, pc_print_rgb(c, 0));   /* the paper */
     cairo_paint(cr);
     return pc_print_walk(c, pg, &b, err, errlen);

@@ -154,7 +154,7 @@ int pc_encode_print_svg(const pc_canvas *c, const pc_page *pg, FILE *out, char *
             pg->width, pg->height, pg->width, pg->height, pg->width, pg->height, paper.r, paper.g,
             paper.b);
     pc_pr_backend b = {&s, s_clip, s_move, s_line, s_curve, s_close, s_rect, s_stroke, s_fill,
-                       s_text, 0};
+                       s_text, NULL, 0};
     int st = pc_print_walk(c, pg, &b, err, errlen);
     take(&s);
     done(&s);

@@ -98,12 +98,17 @@ static double measure(void *ctx, const char *s, size_t n, int italic, double siz
 int pc_pr_layout(const char *label, int math, const char *family, double size, pc_mlayout *out,
                  char *err, size_t errlen) {
     PangoContext *ctx = pc_pr_context();
-    PangoFontDescription *d = pc_pr_font(family, 0, 100);
-    PangoFontMetrics *fm = pango_context_get_metrics(ctx, d, NULL);
-    pango_font_description_free(d);
-    double asc = pango_font_metrics_get_ascent(fm) / (100.0 * PANGO_SCALE);
-    double desc = pango_font_metrics_get_descent(fm) / (100.0 * PANGO_SCALE);
-    pango_font_metrics_unref(fm);
+    static char known[64];   /* the last family's metrics: a figure asks for them per label */
+    static double asc, desc;
+    if (strcmp(known, family)) {
+        PangoFontDescription *d = pc_pr_font(family, 0, 100);
+        PangoFontMetrics *fm = pango_context_get_metrics(ctx, d, NULL);
+        pango_font_description_free(d);
+        asc = pango_font_metrics_get_ascent(fm) / (100.0 * PANGO_SCALE);
+        desc = pango_font_metrics_get_descent(fm) / (100.0 * PANGO_SCALE);
+        pango_font_metrics_unref(fm);
+        snprintf(known, sizeof known, "%s", family);
+    }
     measurer m = {family, pango_layout_new(ctx)};
     int st = math ? pc_math_layout(label, size, asc, desc, measure, &m, out, err, errlen)
                   : pc_plain_layout(label, size, asc, desc, measure, &m, out);
