@@ -5,7 +5,8 @@
 #     geometry module: conic(A, B, C, D, E));
 #   - the 40 x 40 shaded surface of examples/buimov/07_shaded_surface.lua (Asymptote's
 #     surface(f, ..., nx = 40, Spline) drawn white with a black mesh, render = 0: vector).
-# pointcalc: best of 3 wall-clock runs; Asymptote: one run (seconds each).  Then the whole
+# Each: the best of 3 runs (Asymptote: of 2), wall clock and CPU time (user + system, which a
+# machine shared with other work disturbs much less), through /usr/bin/time.  Then the whole
 # gallery in both looks: every example to PNG and SVG (VGA look) and to PNG, SVG and PDF
 # (print look), on all cores.  Asymptote comes from Debian (apt-get install asymptote); without
 # it the comparison is skipped.  sh bench/print.sh [POINTCALC].  A benchmark, not a test.
@@ -49,25 +50,23 @@ label("$z = 0.5 \sin 3x \cos 2y$", (0, 0, -0.9));
 ASY
 
 ms() { echo $(( ($(date +%s%N) - $1) / 1000000 )); }
-best() {  # best NAME ARGS...: the best of 3 whole runs in ms
-    b=""
-    for _ in 1 2 3; do
-        t0=$(date +%s%N)
-        (cd "$tmp" && "$pc" "$@" > /dev/null) || exit 1
-        t=$(ms "$t0")
-        [ -z "$b" ] || [ "$t" -lt "$b" ] && b=$t
-    done
-    echo "$b"
+best() {  # best N CMD...: "WALL CPU" in ms, each the least of N whole runs
+    n=$1; shift
+    for _ in $(seq "$n"); do
+        (cd "$tmp" && /usr/bin/time -f "%e %U %S" -o "$tmp/t" "$@" > /dev/null 2>&1) || echo "failed: $*" >&2
+        cat "$tmp/t"
+    done | awk '{ w = $1 * 1000; c = ($2 + $3) * 1000
+                  if (NR == 1 || w < bw) bw = w; if (NR == 1 || c < bc) bc = c }
+                END { printf "%.0f %.0f", bw, bc }'
 }
+show() { echo "$1" | awk '{ printf "%s ms (CPU %s ms)", $1, $2 }'; }
 for fig in conic surface; do
-    pdf=$(best "$fig.lua" -o "$fig.pdf")
-    png=$(best "$fig.lua" --dpi 300 -o "$fig.png")
-    line="$fig: pointcalc PDF $pdf ms, 300-dpi PNG $png ms"
+    pdf=$(best 3 "$pc" "$fig.lua" -o "$fig.pdf")
+    png=$(best 3 "$pc" "$fig.lua" --dpi 300 -o "$fig.png")
+    line="$fig: pointcalc PDF $(show "$pdf"), 300-dpi PNG $(show "$png")"
     if command -v asy > /dev/null; then
-        t0=$(date +%s%N)
-        (cd "$tmp" && asy -f pdf "$fig.asy" > /dev/null 2>&1) || echo "asy failed on $fig" >&2
-        a=$(ms "$t0")
-        line="$line; Asymptote PDF $a ms ($(awk "BEGIN { printf \"%.0f\", $a / $pdf }")x the pointcalc PDF)"
+        a=$(best 2 asy -f pdf "$fig.asy")
+        line="$line; Asymptote PDF $(show "$a"): $(echo "$a $pdf" | awk '{ printf "%.0fx wall, %.0fx CPU", $1 / $3, $2 / $4 }')"
     fi
     echo "$line"
 done
@@ -75,10 +74,17 @@ done
 # the whole gallery, both looks, on all cores
 find "$src/examples" -name '*.lua' | sort > "$tmp/list"
 n=$(wc -l < "$tmp/list")
-t0=$(date +%s%N)
-xargs -P "$cores" -I{} sh -c 'cd "$1" && "$2" "$3" -o "$(basename "$3" .lua).png" -o "$(basename "$3" .lua).svg" >/dev/null 2>&1' _ "$tmp" "$pc" {} < "$tmp/list"
-vga=$(ms "$t0")
-t0=$(date +%s%N)
-xargs -P "$cores" -I{} sh -c 'cd "$1" && "$2" "$3" --print -o "$(basename "$3" .lua).png" -o "$(basename "$3" .lua).svg" -o "$(basename "$3" .lua).pdf" >/dev/null 2>&1' _ "$tmp" "$pc" {} < "$tmp/list"
-print=$(ms "$t0")
-echo "gallery: $n scripts on $cores cores: VGA look PNG + SVG $vga ms; print look PNG + SVG + PDF $print ms"
+# one script: render.sh LOOK SCRIPT writes GROUP_NAME.png/.svg (and .pdf in the print look)
+cat > "$tmp/render.sh" <<'SH'
+out="$(basename "$(dirname "$2")")_$(basename "$2" .lua)"
+if [ "$1" = vga ]; then "$PC" "$2" -o "$out.png" -o "$out.svg"
+else "$PC" "$2" --print -o "$out.png" -o "$out.svg" -o "$out.pdf"; fi > /dev/null 2>&1
+SH
+gallery() {  # gallery LOOK: every script on all cores: "WALL CPU" in ms
+    (cd "$tmp" && PC="$pc" /usr/bin/time -f "%e %U %S" -o "$tmp/t" \
+        xargs -P "$cores" -n 1 sh "$tmp/render.sh" "$1" < "$tmp/list")
+    awk '{ printf "%.0f %.0f", $1 * 1000, ($2 + $3) * 1000 }' "$tmp/t"
+}
+vga=$(gallery vga)
+print=$(gallery print)
+echo "gallery: $n scripts on $cores cores: VGA look PNG + SVG $(show "$vga"); print look PNG + SVG + PDF $(show "$print")"
