@@ -423,8 +423,7 @@ def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
   "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
 def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
   "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
-def("figure", "figure{width = \"12cm\", height = \"8cm\", dpi = 300, font = \"serif\"|\"sans\"|\"mono\", size = 10}",
-  "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt.")
+def("figure")
 def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",

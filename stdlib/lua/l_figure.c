@@ -1,8 +1,9 @@
-/* The print look's bindings: figure{...}, physical and named pens, label options.  Kept apart
- * from l_draw.c so they move to the declared argument layer in one piece. */
+/* The print look's bindings: figure{...} (on the declared argument layer, docs/bindings.md),
+ * and the physical and named pens and label options that pen() and label() of l_draw.c read
+ * (kept here in one piece until l_draw.c moves to the layer). */
 #include <string.h>
 #include <lauxlib.h>
-#include "pcl.h"
+#include "pcl_args.h"
 #include "print.h"
 
 /* Every key of options table t is one of keys (NULL-terminated): an unknown option is an
@@ -41,45 +42,57 @@ static double number_field(lua_State *L, const char *fname, const char *key) {
     return v;
 }
 
+/* A length option: a string with its unit ("12cm"), in pt. */
+static int read_length(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    if (lua_type(L, idx) != LUA_TSTRING) return 0;
+    char err[200];
+    if (pc_parse_length(lua_tostring(L, idx), "", &out->x, err, sizeof err) != PC_OK)
+        return pcl_keyfail(L, a->name, "%s", err + 2);   /* the parser's words, after ": " */
+    return 1;
+}
+
+/* A text size: pt as a number, or a length ("9pt"); 1..200 pt. */
+static int read_size(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    if (lua_type(L, idx) == LUA_TNUMBER) out->x = lua_tonumber(L, idx);
+    else if (!read_length(L, idx, a, out)) return 0;
+    if (!(out->x >= 1 && out->x <= 200))
+        return pcl_keyfail(L, a->name, "must be 1 to 200 pt, got %s pt", pcl_pushnum(L, out->x));
+    return 1;
+}
+
+#define LENGTH "a length with its unit such as \"12cm\" or \"0.5mm\""
+static const pcl_arg figure_keys[] = {
+    {.name = "width", .kind = PCL_ANY, .read = read_length, .expect = LENGTH, .shown = "\"12cm\""},
+    {.name = "height", .kind = PCL_ANY, .read = read_length, .expect = LENGTH, .shown = "\"8cm\""},
+    {.name = "dpi", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 10, .hi = 2400, .shown = "300"},
+    {.name = "font", .kind = PCL_STRING, .shown = "\"serif\"|\"sans\"|\"mono\""},
+    {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)", .shown = "10"},
+    PCL_END};
+static const pcl_arg figure_args[] = {
+    {.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = figure_keys},
+    PCL_END};
+
 /* figure{width = "12cm", height = "8cm", dpi = 300, font = "serif", size = 10}: the print
- * look for every output, at that size. */
+ * look for every output, at that size; a width alone keeps the window's aspect. */
 static int l_figure(lua_State *L) {
-    static const char *const keys[] = {"width", "height", "dpi", "font", "size", NULL};
+    pcl_val a[6] = {0};   /* options, width, height, dpi, font, size */
+    PCL_READ(L, a);
     pc_canvas *c = pcl_canvas(L);
     pc_figure f = c->figure;
-    if (!lua_isnoneornil(L, 1)) {
-        if (!lua_istable(L, 1))
-            return pcl_argerror(L, 1, "options", "a table {width =, height =, dpi =, font =, size =}");
-        known_keys(L, 1, "figure", keys, "width, height, dpi, font and size");
-        if (lua_getfield(L, 1, "width") != LUA_TNIL) f.width = length_field(L, "figure", "width");
-        if (lua_getfield(L, 1, "height") != LUA_TNIL) f.height = length_field(L, "figure", "height");
-        if (lua_getfield(L, 1, "dpi") != LUA_TNIL) {
-            f.dpi = number_field(L, "figure", "dpi");
-            if (!(f.dpi >= 10 && f.dpi <= 2400))
-                return pcl_error(L, "figure: dpi must be 10..2400, got %f", f.dpi);
-        }
-        if (lua_getfield(L, 1, "size") != LUA_TNIL) {
-            f.size = lua_type(L, -1) == LUA_TSTRING ? length_field(L, "figure", "size")
-                                                     : number_field(L, "figure", "size");
-            if (!(f.size >= 1 && f.size <= 200))
-                return pcl_error(L, "figure: size must be 1..200 pt, got %f", f.size);
-        }
-        if (lua_getfield(L, 1, "font") != LUA_TNIL) {
-            if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) >= sizeof f.font)
-                return pcl_error(L, "figure: font must be a font name such as \"serif\", \"sans\" "
-                                    "or \"mono\", got %s", pcl_shown(L, -1));
-            strcpy(f.font, lua_tostring(L, -1));
-        }
-        lua_pop(L, 5);
-        /* a width alone keeps the window's aspect, a height alone likewise */
-        lua_getfield(L, 1, "height");
-        if (lua_isnil(L, -1) && lua_getfield(L, 1, "width") != LUA_TNIL) f.height = 0;
-        lua_settop(L, 1);
-        lua_getfield(L, 1, "width");
-        if (lua_isnil(L, -1) && lua_getfield(L, 1, "height") != LUA_TNIL) f.width = 0;
-        lua_settop(L, 1);
+    if (a[1].present || a[2].present) {
+        f.width = a[1].present ? a[1].x : 0;
+        f.height = a[2].present ? a[2].x : 0;
     }
-    if (pc_figure_set(c, &f) != PC_OK) return pcl_error(L, "%s", pc_canvas_error(c));
+    if (a[3].present) f.dpi = a[3].x;
+    if (a[4].present) {
+        if (strlen(a[4].s) >= sizeof f.font) return pcl_keyfail(L, "font", "is too long");
+        strcpy(f.font, a[4].s);
+    }
+    if (a[5].present) f.size = a[5].x;
+    if (pc_figure_set(c, &f) != PC_OK) {   /* the core's message, its "figure: " once */
+        const char *m = pc_canvas_error(c);
+        return pcl_fail(L, "%s", strncmp(m, "figure: ", 8) ? m : m + 8);
+    }
     return 0;
 }
 
@@ -159,7 +172,9 @@ void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_label_opts *o) {
     }
 }
 
-void pcl_open_figure(lua_State *L) {
-    lua_pushcfunction(L, l_figure);
-    lua_setfield(L, -2, "figure");
-}
+static const pcl_fn fns[] = {
+    PCL_FN("figure", l_figure, figure_args, NULL,
+           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt."),
+    PCL_END};
+
+void pcl_open_figure(lua_State *L) { pcl_register(L, -1, fns, 0); }

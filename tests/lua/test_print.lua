@@ -56,11 +56,13 @@ check.err(function() pen{width = "1mm", dash = {"1mm"}} end, "an even number", "
 -- figure
 check.err(function() figure(3) end, "figure: argument #1 (options) must be a table", "figure arg")
 check.err(function() figure{widht = "12cm"} end,
-  "figure: unknown option widht (the options are width, height, dpi, font and size)", "figure key")
+  "figure: unknown option 'widht' (did you mean 'width'?)", "figure key")
 check.err(function() figure{width = 12} end,
-  "figure: width must be a length with its unit such as \"12cm\" or \"0.5mm\", got 12", "figure unit")
-check.err(function() figure{width = "12"} end, "figure: width: the length '12' needs a unit", "no unit")
-check.err(function() figure{dpi = 3} end, "figure: dpi must be 10..2400, got 3", "dpi")
+  "figure: option 'width' must be a length with its unit such as \"12cm\" or \"0.5mm\", got 12", "figure unit")
+check.err(function() figure{width = "12"} end,
+  "figure: option 'width' the length '12' needs a unit (cm, mm, in, pt or px)", "no unit")
+check.err(function() figure{dpi = 3} end, "figure: option 'dpi' must be a number from 10 to 2400, got 3", "dpi")
+check.err(function() figure{size = 0} end, "figure: option 'size' must be 1 to 200 pt, got 0 pt", "figure size")
 check.err(function() figure{font = "No Such Face"} end, "font 'No Such Face' is not installed", "figure font")
 check.err(function() figure{width = "300cm", dpi = 600} end, "at most 20000 a side", "too many pixels")
 
