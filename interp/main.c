@@ -46,9 +46,8 @@ static const char usage_text[] =
     "  -h, --help    print this help and exit\n"
     "  --            end of options: everything after the script goes to it in `arg`\n"
     "Options -o, --paper, --print, --dpi, --size, --watch, --set, --frames and --fps may\n"
-    "also follow the script;\n"
-    "other arguments there reach the script in `arg`. With no script and a terminal on\n"
-    "standard input, or with -i or --watch, the REPL starts.\n"
+    "also follow the script; other arguments there reach the script in `arg`. With no\n"
+    "script and a terminal on standard input, or with -i or --watch, the REPL starts.\n"
     "A script that draws but saves nothing writes SCRIPT.png in the current directory.\n";
 
 typedef struct {
