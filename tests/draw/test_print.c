@@ -13,6 +13,7 @@
 #include <cmocka.h>
 #include "canvas.h"
 #include "print.h"
+#include "print_backend.h"
 
 #define NEAR(a, b) assert_true(fabs((a) - (b)) < 1e-9)
 
@@ -210,12 +211,89 @@ static void test_outputs(void **state) {
     pc_canvas_free(c);
 }
 
+/* Pango's layout of a math label: the subscript smaller and lower, the letter italic. */
+static void test_pango_layout(void **state) {
+    (void)state;
+    pc_mlayout L;
+    char err[200];
+    assert_int_equal(pc_pr_layout("$A_1$", 1, "CMU Serif", 10, &L, err, sizeof err), PC_OK);
+    assert_int_equal(L.nruns, 2);
+    assert_true(L.runs[0].italic && !L.runs[1].italic);
+    assert_true(L.runs[1].size < L.runs[0].size && L.runs[1].rise < 0);
+    assert_true(L.runs[1].x > 5 && L.runs[1].x < 9);   /* after an A of about 0.75 em */
+    assert_true(L.width > L.runs[1].x);
+    pc_mlayout_free(&L);
+    /* QBasic's PRINT: the text as it is, '$' included */
+    assert_int_equal(pc_pr_layout("A$ = 5", 0, "CMU Serif", 10, &L, err, sizeof err), PC_OK);
+    assert_int_equal(L.nruns, 1);
+    assert_string_equal(L.text, "A$ = 5");
+    pc_mlayout_free(&L);
+}
+
+static cairo_surface_t *png_of(const pc_canvas *c) {
+    mem png = render(c, PC_FMT_PNG);
+    reader r = {png.buf, png.len};
+    cairo_surface_t *img = cairo_image_surface_create_from_png_stream(read_mem, &r);
+    free(png.buf);
+    assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+    return img;
+}
+
+/* The share of white pixels in a box of the picture. */
+static double white_share(cairo_surface_t *img, int x0, int y0, int x1, int y1) {
+    const unsigned char *px = cairo_image_surface_get_data(img);
+    int stride = cairo_image_surface_get_stride(img), n = 0, w = 0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++, n++) w += px[y * stride + 4 * x + 1] > 200;
+    return (double)w / n;
+}
+
+/* A label over ink: its halo clears a margin of paper round the letters; halo = false not. */
+static void test_halo_and_colours(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(200, 100, 16);
+    pc_figure f = {0};
+    f.dpi = 96;   /* 1 pt = 4/3 px; the canvas at 96 px to the inch: one screen pixel a pixel */
+    f.size = 40;
+    assert_int_equal(pc_figure_set(c, &f), PC_OK);
+    assert_int_equal(pc_box(c, 0, 0, 199, 99, 15, 1), PC_OK);   /* white ink: black on paper */
+    assert_int_equal(pc_text(c, 50, 50, "$x$", PC_ANCHOR_C, 0, 1, 0), PC_OK);   /* paper-coloured text */
+    cairo_surface_t *img = png_of(c);
+    double with = white_share(img, 20, 20, 80, 80);
+    cairo_surface_destroy(img);
+    assert_int_equal(pc_text_style(c, NULL, 0, 0), PC_OK);
+    img = png_of(c);
+    double without = white_share(img, 20, 20, 80, 80);
+    cairo_surface_destroy(img);
+    assert_true(without > 0.02);              /* the letter itself, in the paper's colour */
+    assert_true(with > without + 0.02);       /* and the halo round it */
+
+    /* the print theme: yellow (14) prints dark gold, white ink black, "#rrggbb" exactly */
+    pc_canvas *d = pc_canvas_new(64, 48, 16);
+    assert_int_equal(pc_figure_set(d, &f), PC_OK);
+    pc_line(d, 0, 0, 10, 10, 14);
+    pc_line(d, 0, 10, 10, 20, 15);
+    pc_line(d, 0, 20, 10, 30, pc_rgb_color(d, (pc_rgb){0x12, 0x34, 0x56}));
+    mem svg = render(d, PC_FMT_SVG);
+    svg.buf = realloc(svg.buf, svg.len + 1);
+    svg.buf[svg.len] = 0;
+    assert_non_null(strstr(svg.buf, "stroke=\"#a07800\""));
+    assert_non_null(strstr(svg.buf, "stroke=\"#000000\""));
+    assert_non_null(strstr(svg.buf, "stroke=\"#123456\""));
+    assert_non_null(strstr(svg.buf, "fill=\"#ffffff\"/>"));   /* white paper */
+    free(svg.buf);
+    pc_canvas_free(c);
+    pc_canvas_free(d);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lengths),
         cmocka_unit_test(test_pens),
         cmocka_unit_test(test_figure_page),
         cmocka_unit_test(test_outputs),
+        cmocka_unit_test(test_pango_layout),
+        cmocka_unit_test(test_halo_and_colours),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
