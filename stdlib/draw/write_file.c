@@ -24,6 +24,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "writers.h"
+#include "layout.h"
 
 static const char *basename_of(const char *path) {
     const char *slash = strrchr(path, '/');
@@ -152,11 +153,16 @@ static mode_t new_file_mode(void) {
 }
 
 static int encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f) {
+    const pc_canvas *r = pc_layout_resolve(c);   /* labels placed at write time (layout.h) */
+    if (!r) return PC_ENOMEM;
+    int st;
     switch (fmt) {
-    case PC_FMT_PNG: return pc_encode_png(c, theme, f);
-    case PC_FMT_SVG: return pc_encode_svg(c, theme, f);
-    default: return pc_encode_ppm(c, theme, f);
+    case PC_FMT_PNG: st = pc_encode_png(r, theme, f); break;
+    case PC_FMT_SVG: st = pc_encode_svg(r, theme, f); break;
+    default: st = pc_encode_ppm(r, theme, f); break;
     }
+    pc_layout_release(c, r);
+    return st;
 }
 
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
