@@ -539,14 +539,15 @@ static int opt_scale(lua_State *L, int arg) {
     return (int)v;
 }
 
-/* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it. */
+/* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it; without
+ * a direction it is placed when the picture is written (stdlib/draw/layout.h). */
 static int l_label(lua_State *L) {
     pc_canvas *c = canvas(L);
     const char *str = check_text(L, 1);
     int arg = 2;
     double x, y;
     pcl_checkxy(L, &arg, &x, &y, "");
-    int anchor = PC_ANCHOR_NE;
+    int anchor = PC_ANCHOR_AUTO;
     if (!lua_isnoneornil(L, arg)) {
         static const char expected[] = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"";
         if (lua_type(L, arg) != LUA_TSTRING) return pcl_argerror(L, arg, "direction", expected);
