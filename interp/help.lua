@@ -438,7 +438,7 @@ def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"eveno
 def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
   "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
 def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",
-  "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font.")
+  "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge.")
 def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
@@ -447,6 +447,32 @@ def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
   "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG or PPM by the extension, atomically; \"paper\" prints dark ink on white.")
+
+-- ---------------------------------------------------------------------------------------
+area("figures", "Figures: label placement, markers, arrows, dimensions",
+  "Furniture of engineering drawings, drawn through the ordinary display list (every writer " ..
+  "shows it): sizes in screen pixels, numbers measured in world units. Labels without a " ..
+  "direction are placed when the picture is written.",
+  "figures.md")
+
+def("placed_labels", "placed_labels() -> {{text =, x =, y =, w =, h =, side =, auto =}, ...}",
+  "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically.")
+def("mark", "mark(P [, \"dot\"|\"open\"|\"cross\"|\"plus\"|\"square\" [, size [, colour]]])",
+  "A marker on a point, size pixels across (default a filled dot of 5).")
+def("arrow", "arrow(A, B [, \"end\"|\"start\"|\"both\"|\"none\" [, colour]])",
+  "The segment AB with a filled arrow head (9 px) at B, at A or at both.")
+def("vector", "vector(A, v [, colour])",
+  "The vector v drawn as an arrow from the point A to A + v.")
+def("dimension", "dimension(A, B [, offset [, text [, colour]]]) -> length",
+  "A dimension line of AB offset pixels to its left (negative: right; default 20), with extension lines, two heads and the length |AB| in world units (or text).")
+def("angle_mark", "angle_mark(A, O, B [, text [, radius [, colour]]]) -> angle",
+  "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels (default 24), or the square of a right angle, with its degrees (or text).")
+def("ticks", "ticks(A, B [, n [, colour]])",
+  "n (1..5) equal-length ticks across the middle of segment AB.")
+def("hatch", "hatch(points [, spacing [, angle [, colour]]])",
+  "Hatch the closed region through the points (even-odd) with lines at angle degrees (default 45, ISO 128) spacing pixels apart (default 8).")
+def("centre_line", "centre_line(A, B [, extend [, colour]])",
+  "A centre line through A and B, extend pixels beyond each (default 10), long dash and dot (ISO 128 type 04).")
 
 -- ---------------------------------------------------------------------------------------
 area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",

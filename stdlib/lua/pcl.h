@@ -58,6 +58,7 @@ void pcl_open_expr(lua_State *L);     /* param: point equations (l_expr.c, pcl_e
 void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
 void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic surfaces (l_korotky.c) */
 void pcl_open_buimov(lua_State *L);   /* plane.*, buimov.*: the textbook's constructions (l_buimov.c) */
+void pcl_open_figure_layout(lua_State *L);  /* placed_labels, mark, arrow, dimension, ... (l_figure_layout.c) */
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
 pc_map *pcl_tomap(lua_State *L, int idx);

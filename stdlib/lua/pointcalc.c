@@ -35,6 +35,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_buimov(L);
     pcl_open_curvilinear(L);
     pcl_open_complex(L);
+    pcl_open_figure_layout(L);
     run_lua_helpers(L);
     lua_pushliteral(L, "pointcalc " PCL_VERSION);
     lua_setfield(L, -2, "_VERSION");
