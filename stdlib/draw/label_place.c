@@ -94,7 +94,7 @@ static pc_box2 far_box(const pc_label *l, int k, double gap, int *anchor) {
 #define COST_OVERLAP 1e9
 #define COST_OUTSIDE 1e7
 #define COST_POINT 1e5
-#define COST_INK 20.0
+#define COST_INK 60.0
 
 /* ---- a grid of cells holding label indices --------------------------------------------- */
 
@@ -194,8 +194,10 @@ static double cost_of(placer *p, size_t k, pc_box2 b) {
                 if (pc_box2_overlap(b, p->lab[o].box)) cost += COST_OVERLAP;
             }
         }
-    if (b.x0 < 0 || b.y0 < 0 || b.x1 > p->width || b.y1 > p->height) {
-        double ix = fmin(b.x1, p->width) - fmax(b.x0, 0), iy = fmin(b.y1, p->height) - fmax(b.y0, 0);
+    pc_box2 in = p->lab[k].bounds;
+    if (!(in.x1 > in.x0 && in.y1 > in.y0)) in = (pc_box2){0, 0, p->width, p->height};
+    if (b.x0 < in.x0 || b.y0 < in.y0 || b.x1 > in.x1 || b.y1 > in.y1) {
+        double ix = fmin(b.x1, in.x1) - fmax(b.x0, in.x0), iy = fmin(b.y1, in.y1) - fmax(b.y0, in.y0);
         double inside = ix > 0 && iy > 0 ? ix * iy : 0;
         cost += COST_OUTSIDE + ((b.x1 - b.x0) * (b.y1 - b.y0) - inside);
     }
@@ -237,7 +239,7 @@ static int place_one(placer *p, size_t k) {
                 l->box = b;
                 l->anchor = anchor;
                 l->gap = ring_gap[r];
-                l->leader = r >= LEADER_RING;
+                l->leader = r >= LEADER_RING && !l->no_leader;
             }
         }
     p->placed[k] = 1;

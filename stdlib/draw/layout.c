@@ -47,6 +47,11 @@ static pc_label *collect(const pc_canvas *c, size_t *n) {
         l->fixed = !(op->flags & PC_TEXT_AUTO);
         l->box = (pc_box2){op->x1, op->y1, op->x1 + w, op->y1 + h};
         l->anchor = op->flags & 0x7f;
+        /* it stays in its VIEW; a leader is an op at the list's end, in the last VIEW only */
+        size_t k = pc_op_clip(c, i);
+        const pc_rect *v = &c->clips[k].r;
+        l->bounds = (pc_box2){v->x0, v->y0, v->x1 + 1.0, v->y1 + 1.0};
+        l->no_leader = k + 1 != c->nclips;
     }
     *n = m;
     return lab;
@@ -78,10 +83,9 @@ static int resolve_into(pc_canvas *r) {
     free(mask);
     if (st == PC_OK) st = pc_place_labels(lab, n, &ink, r->width, r->height);
     pc_inkmap_free(&ink);
-    /* the copy draws in screen pixels over the whole screen, with the default pen */
+    /* the copy draws in screen pixels, each label in its own VIEW, with the default pen */
     r->has_window = 0;
     r->view_screen = 1;
-    r->view = (pc_rect){0, 0, r->width - 1, r->height - 1};
     r->pen = 0;
     size_t nops = r->nops, k = 0;
     for (size_t i = 0; i < nops && st == PC_OK; i++) {
@@ -92,6 +96,7 @@ static int resolve_into(pc_canvas *r) {
         op->x1 = l->box.x0;
         op->y1 = l->box.y0;
         op->flags = (uint8_t)l->anchor;
+        r->view = r->clips[pc_op_clip(r, i)].r;
         pc_text_raster(r, op);
         if (l->leader) st = leader(r, l, op->color);   /* may move r->ops: op is not used after */
     }

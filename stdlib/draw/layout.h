@@ -34,6 +34,8 @@ typedef struct {
     int anchor;             /* chosen side (PC_ANCHOR_*) */
     double gap;             /* chosen distance from the point, in pixels */
     int leader;             /* 1 when it sits so far out that a leader line joins it */
+    pc_box2 bounds;         /* where it must stay (its VIEW); empty: the whole picture */
+    int no_leader;          /* no leader line can be drawn: far places go without one */
 } pc_label;
 
 /* The ink the labels avoid: a summed-area table of a w x h mask of stroked pixels, so the ink
@@ -48,7 +50,8 @@ void pc_inkmap_free(pc_inkmap *m);
 /* The number of ink pixels inside box b (clipped to the map). */
 uint32_t pc_inkmap_count(const pc_inkmap *m, pc_box2 b);
 
-/* Place the labels that are not fixed, in the picture (0, 0)-(width, height): each takes the
+/* Place the labels that are not fixed, in the picture (0, 0)-(width, height) (or each in its
+ * bounds when they are not empty): each takes the
  * candidate (eight sides at growing distances, the far ones with a leader) that overlaps no
  * other label, stays inside, covers the least ink and no other label's point, in that order
  * of importance, nearer and in the order NE E N SE S W NW SW first among equals.  Greedy in
