@@ -172,6 +172,9 @@ def("map.cabinet", "map.cabinet([alpha]) -> f",
   "The oblique projection with k = 1/2; alpha defaults to 45 degrees.")
 def("map.perspective", "map.perspective(eye, p0 [, up]) -> f",
   "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point.")
+def("map.view", {"map.view{from = P, to = P [, up = V] [, perspective = true]} -> f",
+                  "map.view{azimuth = deg, elevation = deg [, distance = d] [, to = P] [, perspective = true]} -> f"},
+  "The view with z up (docs/maps.md): from a point towards another, the picture's x to the right as seen and y along up (default the z axis), origin at to; parallel unless perspective.")
 def("f(p)", "f(p) | f(x, y, ...) -> value",
   "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector.", "method")
 def("f:xy", "f:xy(p) | f:xy(x, y, ...) -> x', y', ...",
@@ -327,8 +330,8 @@ def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
   "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
 def("s:map", "s:map(f) -> s",
   "The image of the surface under a map.", "method")
-def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48}",
-  "Draw the iso-lines as paths through map or the camera; hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it.", "method")
+def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false}",
+  "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene.", "method")
 def("s:shade", "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
   "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows.", "method")
 
@@ -443,8 +446,8 @@ def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
-def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
-  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
+def("camera", {"camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])", "camera(nil)", "camera() -> f"},
+  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order.")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG or PPM by the extension, atomically; \"paper\" prints dark ink on white.")
 

@@ -164,7 +164,18 @@ typedef struct pc_canvas {
      * label's box.  NULL: the VGA look's 8 x 16 cells.  Kept by SCREEN and CLS. */
     int (*measure)(void *ctx, const char *utf8, size_t n, int scale, double *w, double *h);
     void *measure_ctx;
+
+    /* What is resolved when the picture is written (layout.h): a 3-D scene.  resolve draws it
+     * onto the writer's copy of the canvas before the labels are placed; drop frees it, and
+     * is called when the display list starts afresh (SCREEN, a full CLS) and by
+     * pc_canvas_free.  NULL: nothing attached. */
+    int (*attach_resolve)(void *attach, struct pc_canvas *copy);
+    void (*attach_drop)(void *attach);
+    void *attach;
 } pc_canvas;
+
+/* Drop what is attached (see pc_canvas.attach). */
+void pc_canvas_detach(pc_canvas *c);
 
 /* QBasic screen modes: 12 (640x480, 16 colours), 13 (320x200, 256 colours) and the others of
  * qbscreen.h (1, 2, 7, 9). */

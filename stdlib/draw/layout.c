@@ -20,6 +20,7 @@ int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, d
 }
 
 int pc_layout_pending(const pc_canvas *c) {
+    if (c->attach_resolve) return 1;
     for (size_t i = 0; i < c->nops; i++)
         if (c->ops[i].kind == PC_OP_TEXT && (c->ops[i].flags & PC_TEXT_AUTO)) return 1;
     return 0;
@@ -69,6 +70,10 @@ static int leader(pc_canvas *c, const pc_label *l, int color) {
 }
 
 static int resolve_into(pc_canvas *r) {
+    if (r->attach_resolve) {   /* a 3-D scene first: the labels then avoid its strokes */
+        int st = r->attach_resolve(r->attach, r);
+        if (st != PC_OK) return st;
+    }
     size_t n;
     pc_label *lab = collect(r, &n);
     if (!lab) return PC_ENOMEM;
@@ -109,16 +114,26 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     pc_canvas *r = malloc(sizeof *r);
     if (!r) return NULL;
     *r = *c;
+    /* what the resolution may add to is the copy's own: pixels, ops, path points, pens */
     size_t npx = (size_t)c->width * c->height;
     r->pixels = malloc(npx * sizeof *r->pixels);
     r->capops = c->nops + 16;
     r->ops = malloc(r->capops * sizeof *r->ops);
-    if (!r->pixels || !r->ops) {
+    r->cappts = c->npts + 16;
+    r->pts = malloc(r->cappts * sizeof *r->pts);
+    r->tags = malloc(r->cappts * sizeof *r->tags);
+    r->cappens = c->npens + 4;
+    r->pens = malloc(r->cappens * sizeof *r->pens);
+    r->attach_drop = NULL;   /* the attachment stays the canvas's */
+    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens) {
         pc_layout_release(c, r);
         return NULL;
     }
     memcpy(r->pixels, c->pixels, npx * sizeof *r->pixels);
     memcpy(r->ops, c->ops, c->nops * sizeof *r->ops);
+    if (c->npts) memcpy(r->pts, c->pts, c->npts * sizeof *r->pts);
+    if (c->npts) memcpy(r->tags, c->tags, c->npts * sizeof *r->tags);
+    memcpy(r->pens, c->pens, c->npens * sizeof *r->pens);
     if (resolve_into(r) != PC_OK) {
         pc_layout_release(c, r);
         return NULL;
@@ -131,6 +146,9 @@ void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved) {
     pc_canvas *r = (pc_canvas *)resolved;   /* our own copy: pc_layout_resolve made it */
     free(r->pixels);
     free(r->ops);
+    free(r->pts);
+    free(r->tags);
+    free(r->pens);
     free(r);
 }
 

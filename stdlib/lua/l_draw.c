@@ -13,6 +13,7 @@
 #include "pcl.h"
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_qbscreen.h"
+#include "pcl_scene.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
@@ -575,6 +576,7 @@ static int l_text(lua_State *L) {
 }
 
 static int l_line(lua_State *L) {
+    if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
     pc_canvas *c = canvas(L);
     int arg = 1;
     double x1, y1;

@@ -6,7 +6,9 @@
  *   angle_mark(A, O, B [, text [, radius [, colour]]]) -> angle (radians)
  *   ticks(A, B [, n [, colour]])  hatch(points [, spacing [, angle [, colour]]])
  *   centre_line(A, B [, extend [, colour]])
- * Points are 2-D, or n-D through the camera; sizes are screen pixels. */
+ * Points are 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene
+ * (pcl_scene.h): the strokes of a camera with hidden lines, resolved when the picture is
+ * written. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +16,9 @@
 #include "pcl_qbscreen.h"
 #include "layout.h"
 #include "furniture.h"
+#include "pcl_curve.h"
+#include "pcl_scene.h"
+#include "view.h"
 
 /* A core failure as the house error: the caller's name, the core's message without its own. */
 static int check(lua_State *L, pc_canvas *c, int rc) {
@@ -81,15 +86,134 @@ static int l_placed_labels(lua_State *L) {
     return 1;
 }
 
+/* ---- the 3-D scene ----------------------------------------------------------------------- */
+
+#define HIDDEN_KEY "pointcalc.hidden"
+
+/* The scenes of a canvas: a new one each time the camera's screen map or mode changes. */
+typedef struct {
+    pc_scene **sc;
+    int *mode;
+    pc_map *map;
+    size_t n, cap;
+} scene_set;
+
+static int set_resolve(void *p, pc_canvas *copy) {
+    scene_set *set = p;
+    int st = PC_OK;
+    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_draw(set->sc[i], copy, set->mode[i]);
+    return st;
+}
+
+static void set_drop(void *p) {
+    scene_set *set = p;
+    for (size_t i = 0; i < set->n; i++) pc_scene_free(set->sc[i]);
+    free(set->sc);
+    free(set->mode);
+    free(set->map);
+    free(set);
+}
+
+void pcl_set_hidden_mode(lua_State *L, int mode) {
+    lua_pushinteger(L, mode);
+    lua_setfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
+}
+
+pc_scene *pcl_scene(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
+    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1;
+    lua_pop(L, 1);
+    pc_map *f = pcl_camera(L);
+    if (mode < 0 || !f || f->nin != 3) return NULL;
+    pc_map scr;
+    pcl_screen_map(L, f, &scr);
+    pc_canvas *c = pcl_active_canvas(L);
+    scene_set *set = c->attach_resolve == set_resolve ? c->attach : NULL;
+    if (!set) {
+        if (c->attach) return NULL;   /* something else is attached: draw as usual */
+        if (!(set = calloc(1, sizeof *set))) pcl_error(L, "%s: out of memory", pcl_fname(L));
+        c->attach = set;
+        c->attach_resolve = set_resolve;
+        c->attach_drop = set_drop;
+    }
+    size_t n = set->n;
+    if (n && set->mode[n - 1] == mode && !memcmp(&set->map[n - 1], &scr, sizeof scr)) return set->sc[n - 1];
+    if (n == set->cap) {
+        size_t cap = set->cap ? 2 * set->cap : 4;
+        pc_scene **a = realloc(set->sc, cap * sizeof *a);
+        if (a) set->sc = a;
+        int *m = realloc(set->mode, cap * sizeof *m);
+        if (m) set->mode = m;
+        pc_map *mp = realloc(set->map, cap * sizeof *mp);
+        if (mp) set->map = mp;
+        if (!a || !m || !mp) pcl_error(L, "%s: out of memory", pcl_fname(L));
+        set->cap = cap;
+    }
+    int st;
+    pc_scene *sc = pc_scene_new(&scr, &st);
+    if (!sc) return pcl_raise_status(L, pcl_fname(L), st), NULL;
+    set->sc[n] = sc;
+    set->mode[n] = mode;
+    set->map[n] = scr;
+    set->n++;
+    return sc;
+}
+
+int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (size_t)(n + 1), 0);
+    uint8_t *brk = lua_newuserdatauv(L, (size_t)n + 1, 0);
+    size_t m = 0;
+    int gap = 1;
+    for (int k = 0; k <= n; k++) {
+        double x[PC_MAXDIM];
+        if (pc_curve_eval(c, c->t0 + (c->t1 - c->t0) * k / n, x) != PC_OK) {
+            gap = 1;   /* a point at infinity: the curve breaks there */
+            continue;
+        }
+        memcpy(xyz + 3 * m, x, 3 * sizeof *x);
+        brk[m++] = (uint8_t)gap;
+        gap = 0;
+    }
+    int st = pc_scene_add_polyline(sc, m, xyz, brk, color, pcl_active_canvas(L)->pen);
+    lua_pop(L, 2);
+    return st;
+}
+
+/* A 3-D point at stack index idx, or 0. */
+static int point3(lua_State *L, int idx, double x[3]) {
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p || p->n != 3 || fabs(p->h[3] - 1) > 1e-9) return 0;
+    for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
+    return 1;
+}
+
+int pcl_scene_line(lua_State *L) {
+    double ab[6];
+    pc_scene *sc;
+    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
+    pc_canvas *c = pcl_active_canvas(L);
+    int st = pc_scene_add_polyline(sc, 2, ab, NULL, pcl_optcolor(L, 3, c), c->pen);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
 static int l_mark(lua_State *L) {
     static const char *const styles[] = {"dot", "open", "cross", "plus", "square", NULL};
     pc_canvas *c = pcl_active_canvas(L);
     int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "");
+    double x, y, p3[3];
+    pc_scene *sc = point3(L, 1, p3) ? pcl_scene(L) : NULL;
+    if (sc) arg = 2;
+    else pcl_checkxy(L, &arg, &x, &y, "");
     int style = option(L, arg, "style", styles, PC_MARK_DOT);
     double size = optnum(L, arg + 1, "size", 5);
-    return check(L, c, pc_mark(c, x, y, style, size, pcl_optcolor(L, arg + 2, c)));
+    int color = pcl_optcolor(L, arg + 2, c);
+    if (!(size >= 1 && size <= 200)) return pcl_argerror(L, arg + 1, "size", "a number 1..200 (pixels)");
+    if (sc) {
+        int st = pc_scene_add_mark(sc, p3, style, size, color);
+        return st == PC_OK ? 0 : pcl_raise_status(L, "mark", st);
+    }
+    return check(L, c, pc_mark(c, x, y, style, size, color));
 }
 
 static int l_arrow(lua_State *L) {
@@ -188,10 +312,76 @@ static int l_centre_line(lua_State *L) {
     return check(L, c, pc_centre_line(c, ax, ay, bx, by, ext, pcl_optcolor(L, arg + 1, c)));
 }
 
+/* ---- map.view ------------------------------------------------------------------------------ */
+
+/* A 3-D field of the options table at 1: a point (weight 1) or a vector (weight 0). */
+static int field3(lua_State *L, const char *key, int weight, double out[3]) {
+    if (lua_getfield(L, 1, key) == LUA_TNIL) {
+        lua_pop(L, 1);
+        return 0;
+    }
+    pcl_value *p = pcl_tovalue(L, -1);
+    if (!p || p->n != 3 || fabs(p->h[3] - weight) > 1e-9)
+        pcl_error(L, "map.view: %s must be a 3-D %s, got %s", key, weight ? "point" : "vector",
+                  pcl_shown(L, -1));
+    for (int k = 0; k < 3; k++) out[k] = weight ? p->h[k] / p->h[3] : p->h[k];
+    lua_pop(L, 1);
+    return 1;
+}
+
+static double fieldnum(lua_State *L, const char *key, double dflt) {
+    lua_getfield(L, 1, key);
+    int isnum;
+    double v = lua_isnil(L, -1) ? dflt : lua_tonumberx(L, -1, &isnum);
+    if (!lua_isnil(L, -1) && (!isnum || !isfinite(v)))
+        pcl_error(L, "map.view: %s must be a finite number, got %s", key, pcl_shown(L, -1));
+    lua_pop(L, 1);
+    return v;
+}
+
+/* map.view{from = P, to = P [, up = V] [, perspective = true]} or
+ * map.view{azimuth =, elevation = [, distance =] [, to =] [, perspective =]}: z up. */
+static int l_view(lua_State *L) {
+    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "options", "a table {from =, to =, up =} or {azimuth =, elevation =}");
+    double from[3], to[3] = {0, 0, 0}, up[3];
+    int has_from = field3(L, "from", 1, from), has_to = field3(L, "to", 1, to);
+    int has_up = field3(L, "up", 0, up);
+    lua_getfield(L, 1, "perspective");
+    int persp = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    pc_map f;
+    int st;
+    if (has_from) {
+        if (!has_to) return pcl_error(L, "map.view: from needs to (the point looked at)");
+        st = pc_map_view(&f, from, to, has_up ? up : NULL, persp);
+    } else {
+        lua_getfield(L, 1, "azimuth");
+        int has_az = !lua_isnil(L, -1);
+        lua_pop(L, 1);
+        if (!has_az) return pcl_error(L, "map.view: give from and to, or azimuth and elevation");
+        st = pc_map_view_azel(&f, to, fieldnum(L, "azimuth", 0), fieldnum(L, "elevation", 30),
+                              fieldnum(L, "distance", 10), persp);
+    }
+    switch (st) {
+    case PC_OK: break;
+    case PC_ECOINCIDENT: return pcl_error(L, "map.view: from and to coincide (or distance is not positive): no line of sight");
+    case PC_EZERO: return pcl_error(L, "map.view: up is the zero vector");
+    case PC_ECOLLINEAR: return pcl_error(L, "map.view: up is along the line of sight; give another up");
+    default: return pcl_error(L, "map.view: %s", pc_strerror(st));
+    }
+    *pcl_newmap(L) = f;
+    return 1;
+}
+
 void pcl_open_figure_layout(lua_State *L) {
     static const luaL_Reg fns[] = {
         {"placed_labels", l_placed_labels}, {"mark", l_mark}, {"arrow", l_arrow},
         {"vector", l_vector}, {"dimension", l_dimension}, {"angle_mark", l_angle_mark},
         {"ticks", l_ticks}, {"hatch", l_hatch}, {"centre_line", l_centre_line}, {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
+    if (lua_getfield(L, -1, "map") == LUA_TTABLE) {
+        lua_pushcfunction(L, l_view);
+        lua_setfield(L, -2, "view");
+    }
+    lua_pop(L, 1);
 }
