@@ -442,8 +442,8 @@ def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
   "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
 def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",
   "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge.")
-def("text", "text(x, y, string [, colour [, scale]])",
-  "Text with the top-left corner of its first 8x16 cell at (x, y).")
+def("text", {"text(x, y, string [, colour [, scale]])", "text{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}"},
+  "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window.")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
 def("camera", {"camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])", "camera(nil)", "camera() -> f"},
@@ -458,6 +458,10 @@ area("figures", "Figures: label placement, markers, arrows, dimensions",
   "direction are placed when the picture is written.",
   "figures.md")
 
+def("fit", "fit{margin = 10, aspect = \"equal\"|\"fill\"}",
+  "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells included, at equal units on both axes (or each axis filling the view); later drawing follows the new frame.")
+def("caption", "caption(text [, \"bottom\"|\"top\" [, colour]])",
+  "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off.")
 def("placed_labels", "placed_labels() -> {{text =, x =, y =, w =, h =, side =, auto =}, ...}",
   "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically.")
 def("mark", "mark(P [, \"dot\"|\"open\"|\"cross\"|\"plus\"|\"square\" [, size [, colour]]])",

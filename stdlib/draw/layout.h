@@ -83,4 +83,21 @@ void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved);
  * that asks where its labels went. */
 int pc_layout_labels(const pc_canvas *c, pc_box2 **out, int **anchors, size_t *n);
 
+/* ---- framing (fit.c) ---------------------------------------------------------------------- */
+
+/* The box in screen pixels of everything drawn (text cells included, a pending label in its
+ * first place); PC_EARG when nothing is drawn. */
+int pc_drawn_extent(const pc_canvas *c, pc_box2 *out);
+
+/* Frame what is drawn in the view, margin pixels in from its edges: everything moved and
+ * scaled (equal scales on both axes with PC_FIT_EQUAL, each axis filling the view with
+ * PC_FIT_FILL) so that every point and every text cell is inside, as large as that allows and
+ * centred.  Pixel sizes (pens, markers, text) stay.  The display list is drawn again through
+ * the framing, and the window changes so that later drawing lands in the same frame (a
+ * script without a window gets one in its old pixel coordinates, y down).  Nothing drawn:
+ * nothing changes.  PC_EARG for a margin outside 0..half the view, or labels that cannot fit
+ * whatever the scale. */
+enum { PC_FIT_EQUAL, PC_FIT_FILL };
+int pc_fit(pc_canvas *c, double margin, int aspect);
+
 #endif

@@ -28,7 +28,10 @@ static int check(lua_State *L, pc_canvas *c, int rc) {
     return pcl_error(L, "%s: %s", pcl_fname(L), msg);
 }
 
-static int option(lua_State *L, int arg, const char *what, const char *const names[], int dflt) {
+/* A string among names at stack index idx (nil: dflt), shown as argument `shown` in errors. */
+static int option_at(lua_State *L, int idx, int shown, const char *what, const char *const names[],
+                     int dflt) {
+    int arg = idx;
     if (lua_isnoneornil(L, arg)) return dflt;
     const char *s = lua_type(L, arg) == LUA_TSTRING ? lua_tostring(L, arg) : NULL;
     for (int k = 0; s && names[k]; k++)
@@ -43,8 +46,12 @@ static int option(lua_State *L, int arg, const char *what, const char *const nam
     luaL_pushresult(&b);
     if (s)   /* the string itself says best what is wrong */
         return pcl_error(L, "%s: argument #%d (%s) must be %s, got \"%s\"", pcl_fname(L),
-                         pcl_arg_shown(L, arg), what, lua_tostring(L, -1), s);
-    return pcl_argerror(L, arg, what, lua_tostring(L, -1));
+                         shown, what, lua_tostring(L, -1), s);
+    return pcl_argerror_full(L, pcl_fname(L), arg, shown, what, lua_tostring(L, -1));
+}
+
+static int option(lua_State *L, int arg, const char *what, const char *const names[], int dflt) {
+    return option_at(L, arg, pcl_arg_shown(L, arg), what, names, dflt);
 }
 
 static double optnum(lua_State *L, int arg, const char *what, double dflt) {
@@ -312,6 +319,82 @@ static int l_centre_line(lua_State *L) {
     return check(L, c, pc_centre_line(c, ax, ay, bx, by, ext, pcl_optcolor(L, arg + 1, c)));
 }
 
+/* ---- framing, captions, device-unit text -------------------------------------------------- */
+
+/* fit{margin = px, aspect = "equal"|"fill"}: frame what is drawn (layout.h). */
+static int l_fit(lua_State *L) {
+    static const char *const aspects[] = {"equal", "fill", NULL};
+    pc_canvas *c = pcl_active_canvas(L);
+    double margin = 10;
+    int aspect = PC_FIT_EQUAL;
+    if (!lua_isnoneornil(L, 1)) {
+        if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "options", "a table {margin =, aspect =}");
+        lua_getfield(L, 1, "margin");
+        margin = optnum(L, lua_gettop(L), "margin", 10);
+        lua_getfield(L, 1, "aspect");
+        aspect = option_at(L, lua_gettop(L), 1, "aspect", aspects, PC_FIT_EQUAL);
+        lua_settop(L, 1);
+    }
+    return check(L, c, pc_fit(c, margin, aspect));
+}
+
+/* Text at a screen point given in device pixels, whatever the window. */
+static int device_text(lua_State *L, pc_canvas *c, double x, double y, const char *s, int anchor,
+                       double gap, int scale, int color) {
+    double wx, wy;
+    pc_screen_to_world(c, x, y, &wx, &wy);
+    return check(L, c, pc_text(c, wx, wy, s, anchor, gap, scale, color));
+}
+
+/* caption(text [, "bottom"|"top" [, colour]]): centred at the picture's edge, in device units. */
+static int l_caption(lua_State *L) {
+    static const char *const where[] = {"bottom", "top", NULL};
+    pc_canvas *c = pcl_active_canvas(L);
+    const char *s = opttext(L, 1);
+    if (!s) return pcl_argerror(L, 1, "text", "a string");
+    int top = option(L, 2, "where", where, 0);
+    int color = pcl_optcolor(L, 3, c);
+    pc_rect v = c->view;
+    int vs = c->view_screen;   /* the whole screen, not the VIEW: a caption is the figure's */
+    c->view = (pc_rect){0, 0, c->width - 1, c->height - 1};
+    c->view_screen = 1;
+    double wx, wy;
+    pc_screen_to_world(c, c->width / 2.0, top ? 0 : c->height - 1, &wx, &wy);
+    int st = pc_text(c, wx, wy, s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color);
+    c->view = v;
+    c->view_screen = vs;
+    return check(L, c, st);
+}
+
+/* text{x =, y =, text =, units = "device"|"world", color =, scale =}; the positional form goes
+ * to the drawing binding's text (the upvalue). */
+static int l_text_table(lua_State *L) {
+    if (!lua_istable(L, 1)) {
+        lua_pushvalue(L, lua_upvalueindex(1));
+        lua_insert(L, 1);
+        lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+        return lua_gettop(L);
+    }
+    static const char *const units[] = {"world", "device", NULL};
+    pc_canvas *c = pcl_active_canvas(L);
+    lua_settop(L, 1);
+    lua_getfield(L, 1, "x");   /* 2 */
+    lua_getfield(L, 1, "y");   /* 3 */
+    lua_getfield(L, 1, "text");   /* 4 */
+    lua_getfield(L, 1, "units");   /* 5 */
+    lua_getfield(L, 1, "color");   /* 6 */
+    lua_getfield(L, 1, "scale");   /* 7 */
+    double x = pcl_checknum(L, "text", 2, "x"), y = pcl_checknum(L, "text", 3, "y");
+    const char *s = opttext(L, 4);
+    if (!s) return pcl_error(L, "text: the table needs text = \"...\"");
+    int device = option_at(L, 5, 1, "units", units, 0);
+    int color = pcl_optcolor(L, 6, c);
+    lua_Integer scale = luaL_optinteger(L, 7, 1);
+    if (scale < 1 || scale > 8) return pcl_error(L, "text: scale must be an integer 1..8");
+    if (!device) return check(L, c, pc_text(c, x, y, s, PC_ANCHOR_SE, 0, (int)scale, color));
+    return device_text(L, c, x, y, s, PC_ANCHOR_SE, 0, (int)scale, color);
+}
+
 /* ---- map.view ------------------------------------------------------------------------------ */
 
 /* A 3-D field of the options table at 1: a point (weight 1) or a vector (weight 0). */
@@ -379,6 +462,13 @@ void pcl_open_figure_layout(lua_State *L) {
         {"vector", l_vector}, {"dimension", l_dimension}, {"angle_mark", l_angle_mark},
         {"ticks", l_ticks}, {"hatch", l_hatch}, {"centre_line", l_centre_line}, {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
+    lua_pushcfunction(L, l_fit);
+    lua_setfield(L, -2, "fit");
+    lua_pushcfunction(L, l_caption);
+    lua_setfield(L, -2, "caption");
+    lua_getfield(L, -1, "text");   /* text{...} in front of the positional text(x, y, s) */
+    lua_pushcclosure(L, l_text_table, 1);
+    lua_setfield(L, -2, "text");
     if (lua_getfield(L, -1, "map") == LUA_TTABLE) {
         lua_pushcfunction(L, l_view);
         lua_setfield(L, -2, "view");

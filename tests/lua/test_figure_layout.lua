@@ -108,4 +108,28 @@ local got = {}
 for x = 100, 119 do got[#got + 1] = point(x, 450) == 15 and "#" or "." end
 check.eq(table.concat(got), "############...##...", "long dash, dot")
 
+
+-- framing: a small figure in world units fills the screen at equal units, its label inside
+screen(12)
+window(0, 0, 100, 100)
+line(P(10, 10), P(30, 10))
+line(P(10, 10), P(10, 20))
+label("C", P(30, 10), "e", 14)
+fit { margin = 20 }
+local L = placed_labels()[1]
+check.truthy(L.x >= 20 and L.x + L.w <= 620 and L.y >= 20 and L.y + L.h <= 460, "the label inside the margin")
+check.eq(point(30, 10), 15, "the segment's end, in world units, drawn where later drawing goes")
+pset(P(20, 10), 13)
+check.eq(point(20, 10), 13, "later drawing uses the new frame")
+check.err(function() fit { aspect = "round" } end,
+  'fit: argument #1 (aspect) must be one of "equal" "fill", got "round"', "bad aspect")
+-- captions and device-unit text survive any window
+cls()
+window(-1000, -1000, -999, -999)
+caption("Fig. 1", "bottom", 14)
+text { x = 5, y = 5, text = "corner", units = "device", color = 13 }
+placed = placed_labels()
+check.eq(placed[1].x * 1000 + placed[1].y + placed[1].h, 296000 + 477, "the caption centred (48 px wide at 320), its last row 3 px up from the bottom")
+check.eq(placed[2].x * 1000 + placed[2].y, 5005, "device units: pixel (5, 5)")
+window()
 print(arg[0] .. ": " .. check.count .. " checks passed")
