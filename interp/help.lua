@@ -462,6 +462,12 @@ def("fit", "fit{margin = 10, aspect = \"equal\"|\"fill\"}",
   "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells included, at equal units on both axes (or each axis filling the view); later drawing follows the new frame.")
 def("caption", "caption(text [, \"bottom\"|\"top\" [, colour]])",
   "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off.")
+def("axes", "axes{x = {a, b}, y = {c, d}, origin = P, ticks = 5, labels = true, arrows = true, grid = false, color =, grid_color =} -> n",
+  "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks.")
+def("graph", "graph(f, a, b [, {color =, n = 400}])",
+  "The graph y = f(x) for x from a to b as a path of n pieces, broken where f gives no finite number.")
+def("legend", "legend({{name, colour}, ...} [, \"ne\"|\"nw\"|\"se\"|\"sw\" [, colour]])",
+  "A legend in a corner of the picture (device units): a line in each entry's colour and its name.")
 def("placed_labels", "placed_labels() -> {{text =, x =, y =, w =, h =, side =, auto =}, ...}",
   "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically.")
 def("mark", "mark(P [, \"dot\"|\"open\"|\"cross\"|\"plus\"|\"square\" [, size [, colour]]])",

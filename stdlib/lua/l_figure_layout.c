@@ -19,6 +19,7 @@
 #include "pcl_curve.h"
 #include "pcl_scene.h"
 #include "view.h"
+#include "axes.h"
 
 /* A core failure as the house error: the caller's name, the core's message without its own. */
 static int check(lua_State *L, pc_canvas *c, int rc) {
@@ -395,6 +396,132 @@ static int l_text_table(lua_State *L) {
     return device_text(L, c, x, y, s, PC_ANCHOR_SE, 0, (int)scale, color);
 }
 
+/* ---- axes, graphs, legends ------------------------------------------------------------------ */
+
+/* A {lo, hi} range field of the options table at 1. */
+static int range_field(lua_State *L, const char *key, double *lo, double *hi) {
+    if (lua_getfield(L, 1, key) == LUA_TNIL) {
+        lua_pop(L, 1);
+        return 0;
+    }
+    int ok = lua_istable(L, -1) && lua_geti(L, -1, 1) == LUA_TNUMBER && lua_geti(L, -2, 2) == LUA_TNUMBER;
+    if (ok) {
+        *lo = lua_tonumber(L, -2);
+        *hi = lua_tonumber(L, -1);
+    }
+    if (!ok || !(*lo < *hi)) pcl_error(L, "axes: %s must be {lo, hi} with lo < hi", key);
+    lua_settop(L, 1);
+    return 1;
+}
+
+/* axes{x = {a, b}, y = {c, d}, origin = P, ticks = 5, labels = true, arrows = true,
+ * grid = false, color =, grid_color =} -> the number of ticks */
+static int l_axes(lua_State *L) {
+    pc_canvas *c = pcl_active_canvas(L);
+    if (lua_isnoneornil(L, 1)) lua_newtable(L), lua_replace(L, 1);
+    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "options", "a table {x =, y =, ...}");
+    lua_settop(L, 1);
+    pc_axes_spec a = {0, 0, 0, 0, 0, 0, 5, 1, 1, 0, -1};
+    double wx0, wy0, wx1, wy1;   /* default: the window's (or the screen's) extent */
+    pc_screen_to_world(c, c->view.x0, c->view.y1, &wx0, &wy0);
+    pc_screen_to_world(c, c->view.x1, c->view.y0, &wx1, &wy1);
+    a.x0 = fmin(wx0, wx1); a.x1 = fmax(wx0, wx1); a.y0 = fmin(wy0, wy1); a.y1 = fmax(wy0, wy1);
+    range_field(L, "x", &a.x0, &a.x1);
+    range_field(L, "y", &a.y0, &a.y1);
+    if (lua_getfield(L, 1, "origin") != LUA_TNIL) {
+        int arg = 2;
+        pcl_checkxy(L, &arg, &a.ox, &a.oy, "origin");
+    }
+    lua_settop(L, 1);
+    lua_getfield(L, 1, "ticks");
+    a.ticks = (int)luaL_optinteger(L, -1, 5);
+    if (a.ticks < 0 || a.ticks > 100) return pcl_error(L, "axes: ticks must be 0..100");
+    static const char *const flags[] = {"labels", "arrows", "grid"};
+    int *fv[] = {&a.labels, &a.arrows, &a.grid};
+    for (int k = 0; k < 3; k++) {
+        if (lua_getfield(L, 1, flags[k]) != LUA_TNIL) *fv[k] = lua_toboolean(L, -1);
+        lua_pop(L, 1);
+    }
+    lua_getfield(L, 1, "color");
+    int color = pcl_optcolor(L, lua_gettop(L), c);
+    lua_getfield(L, 1, "grid_color");
+    a.grid_color = pcl_optcolor(L, lua_gettop(L), c);
+    int n = 0;
+    check(L, c, pc_axes(c, &a, color, &n));
+    lua_pushinteger(L, n);
+    return 1;
+}
+
+/* graph(f, a, b [, {color =, n = 400}]): y = f(x) for x in a..b, broken where f gives no
+ * finite number. */
+static int l_graph(lua_State *L) {
+    pc_canvas *c = pcl_active_canvas(L);
+    luaL_checktype(L, 1, LUA_TFUNCTION);
+    double a = pcl_checknum(L, "graph", 2, "a"), b = pcl_checknum(L, "graph", 3, "b");
+    if (!(a < b)) return pcl_error(L, "graph: the range must have a < b, got %g..%g", a, b);
+    int color = -1;
+    lua_Integer n = 400;
+    if (!lua_isnoneornil(L, 4)) {
+        if (!lua_istable(L, 4)) return pcl_argerror(L, 4, "options", "a table {color =, n =}");
+        lua_getfield(L, 4, "color");
+        color = pcl_optcolor(L, lua_gettop(L), c);
+        lua_getfield(L, 4, "n");
+        n = luaL_optinteger(L, -1, 400);
+        if (n < 1 || n > 1000000) return pcl_error(L, "graph: n must be 1..1000000");
+    }
+    lua_settop(L, 3);
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
+    uint8_t *verbs = lua_newuserdatauv(L, (size_t)n + 1, 0);
+    size_t m = 0, start = 0;
+    int st = PC_OK;
+    for (lua_Integer k = 0; k <= n && st == PC_OK; k++) {
+        double x = a + (b - a) * (double)k / (double)n;
+        lua_pushvalue(L, 1);
+        lua_pushnumber(L, x);
+        lua_call(L, 1, 1);
+        int isnum;
+        double y = lua_tonumberx(L, -1, &isnum);
+        lua_pop(L, 1);
+        if (!isnum || !isfinite(y)) {   /* a gap: what came before is one piece */
+            if (m - start == 1) m = start;   /* a lone point draws nothing */
+            start = m;
+            continue;
+        }
+        xy[2 * m] = x;
+        xy[2 * m + 1] = y;
+        verbs[m] = m == start ? PC_PATH_MOVE : PC_PATH_LINE;
+        m++;
+    }
+    if (m - start == 1) m = start;
+    if (m) check(L, c, pc_path(c, m, xy, verbs, m, 0, color));
+    return 0;
+}
+
+/* legend({{name, colour}, ...} [, "ne"|"nw"|"se"|"sw" [, colour]]) */
+static int l_legend(lua_State *L) {
+    static const char *const corners[] = {"ne", "nw", "se", "sw", NULL};
+    static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
+    pc_canvas *c = pcl_active_canvas(L);
+    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "entries", "a list of {name, colour}");
+    lua_Integer n = luaL_len(L, 1);
+    if (n < 1 || n > 100) return pcl_argerror(L, 1, "entries", "a list of 1..100 {name, colour}");
+    int corner = corner_of[option(L, 2, "corner", corners, 0)];
+    int color = pcl_optcolor(L, 3, c);
+    luaL_checkstack(L, 2 * (int)n + 8, "legend: too many entries");
+    const char **names = lua_newuserdatauv(L, sizeof *names * (size_t)n, 0);
+    int *colors = lua_newuserdatauv(L, sizeof *colors * (size_t)n, 0);
+    for (lua_Integer i = 1; i <= n; i++) {
+        if (lua_geti(L, 1, i) != LUA_TTABLE) return pcl_error(L, "legend: entry %d must be {name, colour}", (int)i);
+        lua_geti(L, -1, 1);
+        if (!lua_isstring(L, -1)) return pcl_error(L, "legend: entry %d must be {name, colour}", (int)i);
+        names[i - 1] = lua_tostring(L, -1);
+        lua_geti(L, -2, 2);
+        colors[i - 1] = pcl_optcolor(L, lua_gettop(L), c);
+        lua_pop(L, 1);   /* the name stays on the stack, referenced by the list */
+    }
+    return check(L, c, pc_legend(c, (int)n, names, colors, corner, color));
+}
+
 /* ---- map.view ------------------------------------------------------------------------------ */
 
 /* A 3-D field of the options table at 1: a point (weight 1) or a vector (weight 0). */
@@ -460,7 +587,8 @@ void pcl_open_figure_layout(lua_State *L) {
     static const luaL_Reg fns[] = {
         {"placed_labels", l_placed_labels}, {"mark", l_mark}, {"arrow", l_arrow},
         {"vector", l_vector}, {"dimension", l_dimension}, {"angle_mark", l_angle_mark},
-        {"ticks", l_ticks}, {"hatch", l_hatch}, {"centre_line", l_centre_line}, {NULL, NULL}};
+        {"ticks", l_ticks}, {"hatch", l_hatch}, {"centre_line", l_centre_line},
+        {"axes", l_axes}, {"graph", l_graph}, {"legend", l_legend}, {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
     lua_pushcfunction(L, l_fit);
     lua_setfield(L, -2, "fit");

@@ -132,4 +132,20 @@ placed = placed_labels()
 check.eq(placed[1].x * 1000 + placed[1].y + placed[1].h, 296000 + 477, "the caption centred (48 px wide at 320), its last row 3 px up from the bottom")
 check.eq(placed[2].x * 1000 + placed[2].y, 5005, "device units: pixel (5, 5)")
 window()
+
+-- axes, graphs and legends
+screen(12)
+window(-1, -1.5, 7, 1.5)
+check.eq(axes { x = { 0, 2 * math.pi }, y = { -1, 1 }, ticks = 6 }, 7 + 5, "ticks 0 .. 6 by 1 and -1 .. 1 by 0.5")
+graph(math.sin, 0, 2 * math.pi, { color = 12 })
+check.eq(point(math.pi / 2, 1), 12, "the graph's top")
+graph(function(x) return 1 / (x - 3) end, 2, 4, { color = 10 })
+check.eq(point(3, 0.8), 0, "broken at the pole, no vertical line across it")
+legend({ { "sin", 12 }, { "1/(x-3)", 10 } }, "ne")
+local names = {}
+for _, l in ipairs(placed_labels()) do names[#names + 1] = l.text end
+check.eq(table.concat(names, " "), "1 2 3 4 5 6 -1 -0.5 0.5 1 sin 1/(x-3)", "tick labels, then the legend's names")
+check.err(function() axes { x = { 1, 0 } } end, "axes: x must be {lo, hi} with lo < hi", "bad range")
+check.err(function() legend({ 5 }) end, "legend: entry 1 must be {name, colour}", "bad entry")
+window()
 print(arg[0] .. ": " .. check.count .. " checks passed")
