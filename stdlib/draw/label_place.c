@@ -3,8 +3,9 @@
  * further out joined to the point by a leader line.  The cost ranks, from most to least
  * important: overlapping another label, leaving the picture, covering another label's point,
  * the ink covered (a summed-area table of the stroked pixels), then distance and side.
- * Placing is greedy in the labels' order, then each label is placed again against all the
- * others (twice), which resolves most of what the greedy order got wrong; no randomness, so
+ * Placing is greedy in the labels' order, then each label left overlapping is placed again
+ * against all the others (twice), which resolves most of what the greedy order got wrong
+ * (the others are at their best already: ink and points do not move); no randomness, so
  * the same picture always gives the same layout.  Other labels are found through a uniform
  * grid of cells, so n labels cost O(n) candidates each looking at a few neighbours. */
 #include <math.h>
@@ -172,11 +173,18 @@ typedef struct {
     uint8_t *placed;
     uint32_t *seen;         /* per label: the last query that counted it (no double counting) */
     uint32_t stamp;
+    double *pt;             /* per label: its point's pixel, x then y */
+    pc_box2 *box;           /* per label: its box as placed (compact, for the overlap test) */
 } placer;
 
 static pc_box2 point_box(const pc_label *l) {
     double X = nearbyint(l->px), Y = nearbyint(l->py);
     return (pc_box2){X, Y, X + 1, Y + 1};
+}
+
+/* Does pixel (x, y) lie in box b? */
+static int px_in(const double *q, pc_box2 b) {
+    return q[0] >= b.x0 && q[0] < b.x1 && q[1] >= b.y0 && q[1] < b.y1;
 }
 
 static double cost_of(placer *p, size_t k, pc_box2 b) {
@@ -191,7 +199,7 @@ static double cost_of(placer *p, size_t k, pc_box2 b) {
                 size_t o = c->idx[m];
                 if (o == k || p->seen[o] == p->stamp) continue;
                 p->seen[o] = p->stamp;
-                if (pc_box2_overlap(b, p->lab[o].box)) cost += COST_OVERLAP;
+                if (pc_box2_overlap(b, p->box[o])) cost += COST_OVERLAP;
             }
         }
     pc_box2 in = p->lab[k].bounds;
@@ -211,17 +219,15 @@ static double cost_of(placer *p, size_t k, pc_box2 b) {
                 size_t o = c->idx[m];
                 if (o == k || p->seen[o] == p->stamp) continue;
                 p->seen[o] = p->stamp;
-                pc_box2 pb = point_box(&p->lab[o]);
-                if (pc_box2_overlap(near, pb) &&
-                    !(p->lab[o].px == p->lab[k].px && p->lab[o].py == p->lab[k].py))
-                    cost += COST_POINT;
+                const double *q = p->pt + 2 * o, *mine = p->pt + 2 * k;
+                if (px_in(q, near) && !(q[0] == mine[0] && q[1] == mine[1])) cost += COST_POINT;
             }
         }
     if (p->ink) cost += COST_INK * pc_inkmap_count(p->ink, near);
     return cost;
 }
 
-static int place_one(placer *p, size_t k) {
+static int place_one(placer *p, size_t k, double *cost_out) {
     pc_label *l = &p->lab[k];
     if (p->placed[k]) grid_remove(&p->boxes, l->box, k);
     double best = INFINITY;
@@ -243,12 +249,14 @@ static int place_one(placer *p, size_t k) {
             }
         }
     p->placed[k] = 1;
+    p->box[k] = l->box;
+    *cost_out = best;
     return grid_add(&p->boxes, l->box, k);
 }
 
 int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height) {
     if (n == 0) return PC_OK;
-    placer p = {lab, n, ink, width, height, {0}, {0}, NULL, NULL, 0};
+    placer p = {lab, n, ink, width, height, {0}, {0}, NULL, NULL, 0, NULL, NULL};
     /* the grids cover the picture and every point (with the farthest ring round it) */
     double x0 = 0, y0 = 0, x1 = width, y1 = height, reach = ring_gap[NRINGS - 1];
     for (size_t k = 0; k < n; k++) {
@@ -264,7 +272,14 @@ int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width,
     if (st == PC_OK) st = grid_init(&p.points, x0, y0, x1, y1);
     p.placed = calloc(n, 1);
     p.seen = calloc(n, sizeof *p.seen);
-    if (!p.placed || !p.seen) st = PC_ENOMEM;
+    p.pt = malloc(2 * n * sizeof *p.pt);
+    p.box = malloc(n * sizeof *p.box);
+    if (!p.placed || !p.seen || !p.pt || !p.box) st = PC_ENOMEM;
+    for (size_t k = 0; st == PC_OK && k < n; k++) {
+        p.box[k] = lab[k].box;
+        p.pt[2 * k] = nearbyint(lab[k].px);
+        p.pt[2 * k + 1] = nearbyint(lab[k].py);
+    }
     for (size_t k = 0; k < n && st == PC_OK; k++) {
         st = grid_add(&p.points, point_box(&lab[k]), k);
         if (st == PC_OK && lab[k].fixed) {
@@ -272,12 +287,19 @@ int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width,
             st = grid_add(&p.boxes, lab[k].box, k);
         }
     }
+    /* the greedy pass, then two more for the labels left overlapping another or the edge: the
+     * others are at their best already, since neither ink nor points move */
+    double *cost = calloc(n, sizeof *cost);
+    if (!cost) st = PC_ENOMEM;
     for (int pass = 0; pass < 3 && st == PC_OK; pass++)
         for (size_t k = 0; k < n && st == PC_OK; k++)
-            if (!lab[k].fixed) st = place_one(&p, k);
+            if (!lab[k].fixed && (pass == 0 || cost[k] >= COST_OUTSIDE)) st = place_one(&p, k, &cost[k]);
+    free(cost);
     if (p.boxes.cells) grid_free(&p.boxes);
     if (p.points.cells) grid_free(&p.points);
     free(p.placed);
     free(p.seen);
+    free(p.pt);
+    free(p.box);
     return st;
 }

@@ -54,8 +54,9 @@ uint32_t pc_inkmap_count(const pc_inkmap *m, pc_box2 b);
  * bounds when they are not empty): each takes the
  * candidate (eight sides at growing distances, the far ones with a leader) that overlaps no
  * other label, stays inside, covers the least ink and no other label's point, in that order
- * of importance, nearer and in the order NE E N SE S W NW SW first among equals.  Greedy in
- * the given order, then improved twice in the same order: deterministic.  ink may be NULL.
+ * of importance, nearer and in the order NE SE NW SW E W N S first among equals.  Greedy in
+ * the given order, then the labels still in conflict placed again twice: deterministic.
+ * ink may be NULL.
  * Returns PC_OK or PC_ENOMEM. */
 int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height);
 
