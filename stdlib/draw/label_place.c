@@ -85,7 +85,14 @@ static const double ring_cost[] = {0, 30, 200, 260, 330, 420, 540, 700};
 static pc_box2 far_box(const pc_label *l, int k, double gap, int *anchor) {
     static const int side_of[8] = {PC_ANCHOR_E, PC_ANCHOR_NE, PC_ANCHOR_N, PC_ANCHOR_NW,
                                    PC_ANCHOR_W, PC_ANCHOR_SW, PC_ANCHOR_S, PC_ANCHOR_SE};
-    double a = 2 * 3.14159265358979323846 * k / NDIRS, ca = cos(a), sa = sin(a);
+    static const double cs[NDIRS][2] = {   /* cos, sin of k * 22.5 degrees */
+        {1, 0}, {0.92387953251128674, 0.38268343236508978}, {0.70710678118654757, 0.70710678118654757},
+        {0.38268343236508978, 0.92387953251128674}, {0, 1}, {-0.38268343236508978, 0.92387953251128674},
+        {-0.70710678118654757, 0.70710678118654757}, {-0.92387953251128674, 0.38268343236508978},
+        {-1, 0}, {-0.92387953251128674, -0.38268343236508978}, {-0.70710678118654757, -0.70710678118654757},
+        {-0.38268343236508978, -0.92387953251128674}, {0, -1}, {0.38268343236508978, -0.92387953251128674},
+        {0.70710678118654757, -0.70710678118654757}, {0.92387953251128674, -0.38268343236508978}};
+    double ca = cs[k][0], sa = cs[k][1];
     double d = gap + 0.5 * (fabs(ca) * l->w + fabs(sa) * l->h);
     double cx = nearbyint(l->px + d * ca - l->w / 2), cy = nearbyint(l->py - d * sa - l->h / 2);
     *anchor = side_of[((k + 1) / 2) % 8];
@@ -187,9 +194,21 @@ static int px_in(const double *q, pc_box2 b) {
     return q[0] >= b.x0 && q[0] < b.x1 && q[1] >= b.y0 && q[1] < b.y1;
 }
 
-static double cost_of(placer *p, size_t k, pc_box2 b) {
-    double cost = 0;
+/* The cost of box b for label k on top of `base`; the cheap terms (the edge, the ink) first,
+ * and the searches of the grids only while the total can still beat `best`. */
+static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) {
+    double cost = base;
     int i0, j0, i1, j1;
+    pc_box2 in = p->lab[k].bounds;
+    if (!(in.x1 > in.x0 && in.y1 > in.y0)) in = (pc_box2){0, 0, p->width, p->height};
+    if (b.x0 < in.x0 || b.y0 < in.y0 || b.x1 > in.x1 || b.y1 > in.y1) {
+        double ix = fmin(b.x1, in.x1) - fmax(b.x0, in.x0), iy = fmin(b.y1, in.y1) - fmax(b.y0, in.y0);
+        double inside = ix > 0 && iy > 0 ? ix * iy : 0;
+        cost += COST_OUTSIDE + ((b.x1 - b.x0) * (b.y1 - b.y0) - inside);
+    }
+    pc_box2 near = {b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1};
+    if (p->ink) cost += COST_INK * pc_inkmap_count(p->ink, near);
+    if (cost >= best) return cost;
     p->stamp++;
     cell_range(&p->boxes, b, &i0, &j0, &i1, &j1);
     for (int j = j0; j <= j1; j++)
@@ -202,14 +221,7 @@ static double cost_of(placer *p, size_t k, pc_box2 b) {
                 if (pc_box2_overlap(b, p->box[o])) cost += COST_OVERLAP;
             }
         }
-    pc_box2 in = p->lab[k].bounds;
-    if (!(in.x1 > in.x0 && in.y1 > in.y0)) in = (pc_box2){0, 0, p->width, p->height};
-    if (b.x0 < in.x0 || b.y0 < in.y0 || b.x1 > in.x1 || b.y1 > in.y1) {
-        double ix = fmin(b.x1, in.x1) - fmax(b.x0, in.x0), iy = fmin(b.y1, in.y1) - fmax(b.y0, in.y0);
-        double inside = ix > 0 && iy > 0 ? ix * iy : 0;
-        cost += COST_OUTSIDE + ((b.x1 - b.x0) * (b.y1 - b.y0) - inside);
-    }
-    pc_box2 near = {b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1};
+    if (cost >= best) return cost;
     p->stamp++;
     cell_range(&p->points, near, &i0, &j0, &i1, &j1);
     for (int j = j0; j <= j1; j++)
@@ -223,7 +235,6 @@ static double cost_of(placer *p, size_t k, pc_box2 b) {
                 if (px_in(q, near) && !(q[0] == mine[0] && q[1] == mine[1])) cost += COST_POINT;
             }
         }
-    if (p->ink) cost += COST_INK * pc_inkmap_count(p->ink, near);
     return cost;
 }
 
@@ -239,7 +250,7 @@ static int place_one(placer *p, size_t k, double *cost_out) {
                 : far_box(l, (s + 2) % NDIRS, ring_gap[r], &anchor);   /* from NE round */
             double cost = ring_cost[r] + 2.0 * s;
             if (cost >= best) continue;
-            cost += cost_of(p, k, b);
+            cost = cost_of(p, k, b, cost, best);
             if (cost < best) {
                 best = cost;
                 l->box = b;
