@@ -212,7 +212,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
         if (!s) return pc_fail_code(c, PC_ENOMEM, "fit: out of memory");
         memcpy(s, o->text + op->first, op->count);
         s[op->count] = 0;
-        int anchor = op->flags & 0x7f, st;
+        int anchor = op->flags & PC_TEXT_ANCHOR, st;
         fmap(f, op->x2, op->y2, &a, &b);
         if (op->flags & PC_TEXT_AUTO) {
             st = pc_text(c, a, b, s, PC_ANCHOR_AUTO, 0, (int)op->rx, op->color);

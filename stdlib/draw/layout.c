@@ -47,7 +47,7 @@ static pc_label *collect(const pc_canvas *c, size_t *n) {
         l->py = op->y2;
         l->fixed = !(op->flags & PC_TEXT_AUTO);
         l->box = (pc_box2){op->x1, op->y1, op->x1 + w, op->y1 + h};
-        l->anchor = op->flags & 0x7f;
+        l->anchor = op->flags & PC_TEXT_ANCHOR;
         /* it stays in its VIEW; a leader is an op at the list's end, in the last VIEW only */
         size_t k = pc_op_clip(c, i);
         const pc_rect *v = &c->clips[k].r;
@@ -100,7 +100,7 @@ static int resolve_into(pc_canvas *r) {
         if (l->fixed) continue;
         op->x1 = l->box.x0;
         op->y1 = l->box.y0;
-        op->flags = (uint8_t)l->anchor;
+        op->flags = (uint8_t)(l->anchor | PC_TEXT_PLACED);
         r->view = r->clips[pc_op_clip(r, i)].r;
         pc_text_raster(r, op);
         if (l->leader) st = leader(r, l, op->color);   /* may move r->ops: op is not used after */
@@ -114,7 +114,7 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     pc_canvas *r = malloc(sizeof *r);
     if (!r) return NULL;
     *r = *c;
-    /* what the resolution may add to is the copy's own: pixels, ops, path points, pens */
+    /* what the resolution may add to is the copy's own: pixels, ops, path points, pens, text */
     size_t npx = (size_t)c->width * c->height;
     r->pixels = malloc(npx * sizeof *r->pixels);
     r->capops = c->nops + 16;
@@ -124,8 +124,10 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     r->tags = malloc(r->cappts * sizeof *r->tags);
     r->cappens = c->npens + 4;
     r->pens = malloc(r->cappens * sizeof *r->pens);
+    r->captext = c->ntext + 64;
+    r->text = malloc(r->captext);
     r->attach_drop = NULL;   /* the attachment stays the canvas's */
-    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens) {
+    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text) {
         pc_layout_release(c, r);
         return NULL;
     }
@@ -134,10 +136,13 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     if (c->npts) memcpy(r->pts, c->pts, c->npts * sizeof *r->pts);
     if (c->npts) memcpy(r->tags, c->tags, c->npts * sizeof *r->tags);
     memcpy(r->pens, c->pens, c->npens * sizeof *r->pens);
+    if (c->ntext) memcpy(r->text, c->text, c->ntext);
     if (resolve_into(r) != PC_OK) {
         pc_layout_release(c, r);
         return NULL;
     }
+    r->attach_resolve = NULL;   /* resolved: nothing is pending in the copy */
+    r->attach = NULL;
     return r;
 }
 
@@ -149,6 +154,7 @@ void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved) {
     free(r->pts);
     free(r->tags);
     free(r->pens);
+    free(r->text);
     free(r);
 }
 

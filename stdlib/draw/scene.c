@@ -11,8 +11,9 @@
 typedef struct {
     size_t first, n;        /* into pts (3 numbers each) */
     int color, pen;
-    int mark, style;        /* a marker: its style and size */
+    int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale */
     double size;
+    char *text;             /* a label's text (owned) */
 } stroke;
 
 struct pc_scene {
@@ -53,6 +54,7 @@ pc_scene *pc_scene_new(const pc_map *screen, int *status) {
 void pc_scene_free(pc_scene *sc) {
     if (!sc) return;
     for (size_t i = 0; i < sc->nocc; i++) pc_occluder_free(sc->occ[i]);
+    for (size_t i = 0; i < sc->nst; i++) free(sc->st[i].text);
     free(sc->occ);
     free(sc->st);
     free(sc->pts);
@@ -91,11 +93,22 @@ static int add(pc_scene *sc, size_t n, const double *xyz, const uint8_t *brk, st
 int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8_t *brk,
                           int color, int pen) {
     if (n == 0) return PC_OK;
-    return add(sc, n, xyz, brk, (stroke){0, 0, color, pen, 0, 0, 0});
+    return add(sc, n, xyz, brk, (stroke){0, 0, color, pen, 0, 0, 0, NULL});
 }
 
 int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color) {
-    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 1, style, size});
+    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 1, style, size, NULL});
+}
+
+int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
+                       int color) {
+    size_t n = strlen(utf8);
+    char *t = malloc(n + 1);
+    if (!t) return PC_ENOMEM;
+    memcpy(t, utf8, n + 1);
+    int st = add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 2, anchor, scale, t});
+    if (st != PC_OK) free(t);
+    return st;
 }
 
 size_t pc_scene_nsurfaces(const pc_scene *sc) { return sc->nocc; }
@@ -211,6 +224,12 @@ int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode) {
         double sx, sy, wx, wy;
         if (!project(sc, x, &sx, &sy)) continue;
         int vis = pc_scene_visible(sc, x);
+        if (s->mark == 2) {   /* a label: only where its point is seen */
+            pc_screen_to_world(c, sx, sy, &wx, &wy);
+            if (vis || mode == PC_HIDDEN_SHOW)
+                st = pc_text(c, wx, wy, s->text, s->style, 3, (int)s->size, s->color);
+            continue;
+        }
         if (!vis && mode != PC_HIDDEN_SHOW) {
             if (mode == PC_HIDDEN_HIDE) continue;
         }

@@ -30,6 +30,11 @@ int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8
 /* A marker (furniture.h's styles) of size pixels at a 3-D point. */
 int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color);
 
+/* A label of a 3-D point: written when the scene is drawn if its point is seen (always with
+ * PC_HIDDEN_SHOW), on side `anchor` (PC_ANCHOR_AUTO: placed with the other labels). */
+int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
+                       int color);
+
 /* Is the 3-D point x seen (no surface of the scene in front of it)? */
 int pc_scene_visible(const pc_scene *sc, const double x[3]);
 /* The number of surfaces and strokes gathered. */

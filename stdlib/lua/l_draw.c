@@ -543,6 +543,7 @@ static int opt_scale(lua_State *L, int arg) {
 /* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it; without
  * a direction it is placed when the picture is written (stdlib/draw/layout.h). */
 static int l_label(lua_State *L) {
+    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pc_canvas *c = canvas(L);
     const char *str = check_text(L, 1);
     int arg = 2;

@@ -68,29 +68,34 @@ static const char *opttext(lua_State *L, int arg) {
 
 static int l_placed_labels(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
+    const pc_canvas *r = pc_layout_resolve(c);   /* as a writer gets it: placed, scene drawn */
     pc_box2 *b;
     int *side;
     size_t n;
-    if (pc_layout_labels(c, &b, &side, &n) != PC_OK) return pcl_error(L, "placed_labels: out of memory");
+    if (!r || pc_layout_labels(r, &b, &side, &n) != PC_OK) {
+        pc_layout_release(c, r);
+        return pcl_error(L, "placed_labels: out of memory");
+    }
     static const char *const names[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw"};
     lua_createtable(L, (int)n, 0);
     size_t k = 0;
-    for (size_t i = 0; i < c->nops; i++) {
-        const pc_op *op = &c->ops[i];
+    for (size_t i = 0; i < r->nops && k < n; i++) {
+        const pc_op *op = &r->ops[i];
         if (op->kind != PC_OP_TEXT) continue;
         lua_createtable(L, 0, 7);
-        lua_pushlstring(L, c->text + op->first, op->count);
+        lua_pushlstring(L, r->text + op->first, op->count);
         lua_setfield(L, -2, "text");
         lua_pushnumber(L, b[k].x0); lua_setfield(L, -2, "x");
         lua_pushnumber(L, b[k].y0); lua_setfield(L, -2, "y");
         lua_pushnumber(L, b[k].x1 - b[k].x0); lua_setfield(L, -2, "w");
         lua_pushnumber(L, b[k].y1 - b[k].y0); lua_setfield(L, -2, "h");
         lua_pushstring(L, names[side[k] >= 0 && side[k] <= 8 ? side[k] : 0]); lua_setfield(L, -2, "side");
-        lua_pushboolean(L, (op->flags & PC_TEXT_AUTO) != 0); lua_setfield(L, -2, "auto");
+        lua_pushboolean(L, (op->flags & (PC_TEXT_AUTO | PC_TEXT_PLACED)) != 0); lua_setfield(L, -2, "auto");
         lua_rawseti(L, -2, (lua_Integer)++k);
     }
     free(b);
     free(side);
+    pc_layout_release(c, r);
     return 1;
 }
 
@@ -318,6 +323,23 @@ static int l_centre_line(lua_State *L) {
     pcl_checkxy(L, &arg, &bx, &by, "B");
     double ext = optnum(L, arg, "extend", 10);
     return check(L, c, pc_centre_line(c, ax, ay, bx, by, ext, pcl_optcolor(L, arg + 1, c)));
+}
+
+int pcl_scene_label(lua_State *L) {
+    static const char *const dirs[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
+    double x[3];
+    pc_scene *sc;
+    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
+    pc_canvas *c = pcl_active_canvas(L);
+    const char *s = opttext(L, 1);
+    if (!s) return pcl_argerror(L, 1, "text", "a string");
+    int anchor = option(L, 3, "direction", dirs, PC_ANCHOR_AUTO);
+    int color = pcl_optcolor(L, 4, c);
+    lua_Integer scale = luaL_optinteger(L, 5, 1);
+    if (scale < 1 || scale > 8) return pcl_argerror(L, 5, "scale", "an integer 1..8");
+    int st = pc_scene_add_label(sc, x, s, anchor, (int)scale, color);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
 }
 
 /* ---- framing, captions, device-unit text -------------------------------------------------- */

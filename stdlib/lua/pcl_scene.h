@@ -18,5 +18,8 @@ int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int co
 /* line(A, B [, colour]) with 3-D points and a scene: adds the segment and returns 1; else 0
  * (the caller draws as usual). */
 int pcl_scene_line(lua_State *L);
+/* label(text, P [, direction [, colour [, scale]]]) with a 3-D point and a scene: the label
+ * shows only where its point is seen; returns 1, or 0 for the caller to draw as usual. */
+int pcl_scene_label(lua_State *L);
 
 #endif

@@ -86,10 +86,38 @@ static void test_line_in_front(void **state) {
     pc_canvas_free(c);
 }
 
+/* Labels of 3-D points: written only where their point is seen; placed with the others. */
+static void test_labels(void **state) {
+    (void)state;
+    int st;
+    pc_map f = screen();
+    pc_scene *sc = pc_scene_new(&f, &st);
+    pc_surface *s = pc_surface_func(3, 0, 2 * M_PI, -M_PI / 2, M_PI / 2, sphere_fn, NULL, NULL, &st);
+    double front[3] = {0, 0, 100}, back[3] = {0, 0, -100};
+    assert_int_equal(pc_scene_add_label(sc, back, "back", PC_ANCHOR_AUTO, 1, 14), PC_OK);
+    assert_int_equal(pc_scene_add_label(sc, front, "front", PC_ANCHOR_NE, 1, 14), PC_OK);
+    assert_int_equal(pc_scene_add_surface(sc, s, 48), PC_OK);
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_HIDE), PC_OK);
+    assert_int_equal(c->nops, 1);   /* only the front label */
+    assert_int_equal(c->ops[0].kind, PC_OP_TEXT);
+    assert_memory_equal(c->text + c->ops[0].first, "front", 5);
+    assert_true(c->ops[0].x2 == 320 && c->ops[0].y2 == 240);
+    pc_canvas_free(c);
+    c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_SHOW), PC_OK);
+    assert_int_equal(c->nops, 2);
+    assert_true(c->ops[0].flags & PC_TEXT_AUTO);   /* "back", to be placed */
+    pc_canvas_free(c);
+    pc_scene_free(sc);
+    pc_surface_release(s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_line_behind_sphere),
         cmocka_unit_test(test_line_in_front),
+        cmocka_unit_test(test_labels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -43,6 +43,15 @@ check.eq(row(2, "hide"), want, "drawn after it: the same")
 check.eq(row(1, "show"), string.rep("#", 41), "show: everything")
 local dashed = row(1, "dashed")
 check.truthy(dashed:sub(12, 30):find("#") and dashed:sub(12, 30):find("%."), "dashed: some of the hidden part")
+-- labels of 3-D points: the one behind the sphere is left out, the front one placed
+screen(12)
+camera(f, { hidden = "hide" })
+label("N", P(0, 0.5, 0.87))
+label("S", P(0, 0, -1))
+sph:wireframe { nu = 0, nv = 0 }
+local texts = {}
+for _, l in ipairs(placed_labels()) do texts[#texts + 1] = l.text .. (l.auto and "*" or "") end
+check.eq(table.concat(texts, " "), "N*", "only the seen label, placed automatically")
 camera(nil)
 
 -- one iso family: nu = 4, nv = 0 draws the meridians (seen from +z: the two diameters) and no
