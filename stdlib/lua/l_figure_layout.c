@@ -480,7 +480,10 @@ static int l_graph(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     luaL_checktype(L, 1, LUA_TFUNCTION);
     double a = pcl_checknum(L, "graph", 2, "a"), b = pcl_checknum(L, "graph", 3, "b");
-    if (!(a < b)) return pcl_error(L, "graph: the range must have a < b, got %g..%g", a, b);
+    if (!(a < b)) {
+        const char *sa = pcl_pushnum(L, a), *sb = pcl_pushnum(L, b);
+        return pcl_error(L, "graph: the range must have a < b, got %s..%s", sa, sb);
+    }
     int color = -1;
     lua_Integer n = 400;
     if (!lua_isnoneornil(L, 4)) {
