@@ -1,70 +1,77 @@
-/* Binding of the figure layout and its furniture (stdlib/draw/layout.h, furniture.h):
- *   placed_labels()                      where the labels go when the picture is written
- *   mark(P [, style [, size [, colour]]])   dot, open, cross, plus, square
- *   arrow(A, B [, heads [, colour]])  vector(A, v [, colour])
- *   dimension(A, B [, offset [, text [, colour]]]) -> length
- *   angle_mark(A, O, B [, text [, radius [, colour]]]) -> angle (radians)
- *   ticks(A, B [, n [, colour]])  hatch(points [, spacing [, angle [, colour]]])
- *   centre_line(A, B [, extend [, colour]])
- * Points are 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene
- * (pcl_scene.h): the strokes of a camera with hidden lines, resolved when the picture is
- * written. */
+/* Binding of the figure layout and its furniture (stdlib/draw/layout.h, furniture.h, axes.h),
+ * on the declared argument layer (pcl_args.h, docs/bindings.md): placed_labels, mark, arrow,
+ * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
+ * and map.view; text{units = "device"} in front of the drawing binding's text.  Points are
+ * 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene (pcl_scene.h):
+ * the strokes of a camera with hidden lines, resolved when the picture is written. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "pcl.h"
+#include "pcl_args.h"
 #include "pcl_qbscreen.h"
-#include "layout.h"
-#include "furniture.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
-#include "view.h"
+#include "layout.h"
+#include "furniture.h"
 #include "axes.h"
+#include "view.h"
 
-/* A core failure as the house error: the caller's name, the core's message without its own. */
+/* A core failure as the house error: the declared name, the core's message without its own. */
 static int check(lua_State *L, pc_canvas *c, int rc) {
     if (rc == PC_OK) return 0;
     const char *msg = c->error, *colon = strstr(msg, ": ");
     if (colon && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg)) msg = colon + 2;
-    return pcl_error(L, "%s: %s", pcl_fname(L), msg);
+    return pcl_fail(L, "%s", msg);
 }
 
-/* A string among names at stack index idx (nil: dflt), shown as argument `shown` in errors. */
-static int option_at(lua_State *L, int idx, int shown, const char *what, const char *const names[],
-                     int dflt) {
-    int arg = idx;
-    if (lua_isnoneornil(L, arg)) return dflt;
-    const char *s = lua_type(L, arg) == LUA_TSTRING ? lua_tostring(L, arg) : NULL;
-    for (int k = 0; s && names[k]; k++)
-        if (!strcmp(s, names[k])) return k;
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    for (int k = 0; names[k]; k++) {
-        luaL_addstring(&b, k ? " \"" : "one of \"");
-        luaL_addstring(&b, names[k]);
-        luaL_addchar(&b, '"');
+/* ---- the readers: a place (a 2-D point, or n-D through the camera) and a colour ----------- */
+
+/* v[0], v[1]: the 2-D place; a 3-D point also keeps its coordinates in v[2..4] (n = 3). */
+static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p || fabs(p->h[p->n] - 1) > PC_WEIGHT_TOL) return 0;
+    out->n = p->n;
+    if (p->n == 3)
+        for (int k = 0; k < 3; k++) out->v[2 + k] = p->h[k] / p->h[3];
+    if (p->n == 2) {
+        out->v[0] = p->h[0] / p->h[2];
+        out->v[1] = p->h[1] / p->h[2];
+        return 1;
     }
-    luaL_pushresult(&b);
-    if (s)   /* the string itself says best what is wrong */
-        return pcl_error(L, "%s: argument #%d (%s) must be %s, got \"%s\"", pcl_fname(L),
-                         shown, what, lua_tostring(L, -1), s);
-    return pcl_argerror_full(L, pcl_fname(L), arg, shown, what, lua_tostring(L, -1));
+    return pcl_project(L, p->n, p->h, &out->v[0], &out->v[1]) == PC_OK;
 }
+#define XY_TEXT "a 2-D point (or an n-D one through the camera)"
+#define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = XY_TEXT}
 
-static int option(lua_State *L, int arg, const char *what, const char *const names[], int dflt) {
-    return option_at(L, arg, pcl_arg_shown(L, arg), what, names, dflt);
+static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *c = pcl_active_canvas(L);
+    int isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER && isint && ((v >= 0 && v < c->ncolors) || (v >= 256 && v < 256 + c->ntrue))) {
+        out->x = (double)v;
+        return 1;
+    }
+    size_t len;
+    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    pc_rgb rgb;
+    if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
+    int attr = pc_rgb_color(c, rgb);
+    if (attr < 0) pcl_fail(L, "%s", c->error);
+    out->x = attr;
+    return 1;
 }
+#define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_color, \
+                     .expect = "a colour number or \"#rrggbb\""}
+static int color_of(const pcl_val *v) { return v->present ? (int)v->x : -1; }
 
-static double optnum(lua_State *L, int arg, const char *what, double dflt) {
-    return pcl_optnum(L, pcl_fname(L), arg, what, dflt);
-}
+#define A_OPTNUM(nm, a, b, d, txt) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_RANGE, \
+                                    .lo = a, .hi = b, .dflt = d, .shown = txt}
+#define A_OPTENUM(nm, ch, d) {.name = nm, .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ch, .dflt = d}
+#define A_OPTSTR(nm) {.name = nm, .kind = PCL_STRING, .flags = PCL_OPT}
 
-static const char *opttext(lua_State *L, int arg) {
-    if (lua_isnoneornil(L, arg)) return NULL;
-    int t = lua_type(L, arg);
-    if (t != LUA_TSTRING && t != LUA_TNUMBER) pcl_argerror(L, arg, "text", "a string");
-    return lua_tostring(L, arg);
-}
+/* ---- placed labels ---------------------------------------------------------------------- */
 
 static int l_placed_labels(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
@@ -74,7 +81,7 @@ static int l_placed_labels(lua_State *L) {
     size_t n;
     if (!r || pc_layout_labels(r, &b, &side, &n) != PC_OK) {
         pc_layout_release(c, r);
-        return pcl_error(L, "placed_labels: out of memory");
+        return pcl_fail(L, "out of memory");
     }
     static const char *const names[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw"};
     lua_createtable(L, (int)n, 0);
@@ -195,7 +202,7 @@ int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int co
 /* A 3-D point at stack index idx, or 0. */
 static int point3(lua_State *L, int idx, double x[3]) {
     pcl_value *p = pcl_tovalue(L, idx);
-    if (!p || p->n != 3 || fabs(p->h[3] - 1) > 1e-9) return 0;
+    if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
     for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
     return 1;
 }
@@ -210,130 +217,21 @@ int pcl_scene_line(lua_State *L) {
     return 1;
 }
 
-static int l_mark(lua_State *L) {
-    static const char *const styles[] = {"dot", "open", "cross", "plus", "square", NULL};
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double x, y, p3[3];
-    pc_scene *sc = point3(L, 1, p3) ? pcl_scene(L) : NULL;
-    if (sc) arg = 2;
-    else pcl_checkxy(L, &arg, &x, &y, "");
-    int style = option(L, arg, "style", styles, PC_MARK_DOT);
-    double size = optnum(L, arg + 1, "size", 5);
-    int color = pcl_optcolor(L, arg + 2, c);
-    if (!(size >= 1 && size <= 200)) return pcl_argerror(L, arg + 1, "size", "a number 1..200 (pixels)");
-    if (sc) {
-        int st = pc_scene_add_mark(sc, p3, style, size, color);
-        return st == PC_OK ? 0 : pcl_raise_status(L, "mark", st);
-    }
-    return check(L, c, pc_mark(c, x, y, style, size, color));
-}
-
-static int l_arrow(lua_State *L) {
-    static const char *const heads[] = {"none", "end", "start", "both", NULL};
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double x1, y1, x2, y2;
-    pcl_checkxy(L, &arg, &x1, &y1, "start");
-    pcl_checkxy(L, &arg, &x2, &y2, "end");
-    int h = option(L, arg, "heads", heads, PC_ARROW_END);
-    return check(L, c, pc_arrow(c, x1, y1, x2, y2, h, 9, pcl_optcolor(L, arg + 1, c)));
-}
-
-/* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
-static int l_vector(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double x1, y1, x2, y2;
-    lua_settop(L, 3);
-    pcl_checkxy(L, &arg, &x1, &y1, "start");
-    lua_pushvalue(L, 1);
-    lua_pushvalue(L, 2);
-    lua_arith(L, LUA_OPADD);
-    lua_replace(L, 2);
-    pcl_checkxy(L, &arg, &x2, &y2, "vector");
-    return check(L, c, pc_arrow(c, x1, y1, x2, y2, PC_ARROW_END, 9, pcl_optcolor(L, 3, c)));
-}
-
-static int l_dimension(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double ax, ay, bx, by, len = 0;
-    pcl_checkxy(L, &arg, &ax, &ay, "A");
-    pcl_checkxy(L, &arg, &bx, &by, "B");
-    double off = optnum(L, arg, "offset", 20);
-    const char *text = opttext(L, arg + 1);
-    check(L, c, pc_dimension(c, ax, ay, bx, by, off, text, pcl_optcolor(L, arg + 2, c), &len));
-    lua_pushnumber(L, len);
-    return 1;
-}
-
-static int l_angle_mark(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double ax, ay, ox, oy, bx, by, th = 0;
-    pcl_checkxy(L, &arg, &ax, &ay, "A");
-    pcl_checkxy(L, &arg, &ox, &oy, "O");
-    pcl_checkxy(L, &arg, &bx, &by, "B");
-    const char *text = opttext(L, arg);
-    double r = optnum(L, arg + 1, "radius", 24);
-    check(L, c, pc_angle_mark(c, ax, ay, ox, oy, bx, by, r, text, pcl_optcolor(L, arg + 2, c), &th));
-    lua_pushnumber(L, th);
-    return 1;
-}
-
-static int l_ticks(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double ax, ay, bx, by;
-    pcl_checkxy(L, &arg, &ax, &ay, "A");
-    pcl_checkxy(L, &arg, &bx, &by, "B");
-    lua_Integer n = 1;
-    if (!lua_isnoneornil(L, arg)) {
-        int isint;
-        n = lua_tointegerx(L, arg, &isint);
-        if (!isint || n < 1 || n > 5) return pcl_argerror(L, arg, "n", "an integer 1..5");
-    }
-    return check(L, c, pc_ticks(c, ax, ay, bx, by, (int)n, 8, pcl_optcolor(L, arg + 1, c)));
-}
-
-static int l_hatch(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "points", "a list of at least 3 points");
-    lua_Integer n = luaL_len(L, 1);
-    if (n < 3 || n > 1000000) return pcl_argerror(L, 1, "points", "a list of at least 3 points");
-    double spacing = optnum(L, 2, "spacing", 8), angle = optnum(L, 3, "angle", 45);
-    int color = pcl_optcolor(L, 4, c);
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
-    for (lua_Integer i = 1; i <= n; i++) {
-        lua_geti(L, 1, i);
-        int top = lua_gettop(L), a = top;
-        pcl_checkxy(L, &a, &xy[2 * i - 2], &xy[2 * i - 1], "point");
-        lua_settop(L, top - 1);
-    }
-    size_t lines;
-    return check(L, c, pc_hatch(c, (size_t)n, xy, spacing, angle, color, &lines));
-}
-
-static int l_centre_line(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double ax, ay, bx, by;
-    pcl_checkxy(L, &arg, &ax, &ay, "A");
-    pcl_checkxy(L, &arg, &bx, &by, "B");
-    double ext = optnum(L, arg, "extend", 10);
-    return check(L, c, pc_centre_line(c, ax, ay, bx, by, ext, pcl_optcolor(L, arg + 1, c)));
-}
-
 int pcl_scene_label(lua_State *L) {
     static const char *const dirs[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
     double x[3];
     pc_scene *sc;
     if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
     pc_canvas *c = pcl_active_canvas(L);
-    const char *s = opttext(L, 1);
-    if (!s) return pcl_argerror(L, 1, "text", "a string");
-    int anchor = option(L, 3, "direction", dirs, PC_ANCHOR_AUTO);
+    int t = lua_type(L, 1);
+    if (t != LUA_TSTRING && t != LUA_TNUMBER) return pcl_argerror(L, 1, "text", "a string");
+    const char *s = lua_tostring(L, 1);
+    int anchor = PC_ANCHOR_AUTO;
+    if (!lua_isnoneornil(L, 3)) {
+        const char *d = lua_type(L, 3) == LUA_TSTRING ? lua_tostring(L, 3) : "";
+        for (anchor = 0; dirs[anchor] && strcmp(dirs[anchor], d); anchor++) {}
+        if (!dirs[anchor]) return pcl_argerror(L, 3, "direction", "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"");
+    }
     int color = pcl_optcolor(L, 4, c);
     lua_Integer scale = luaL_optinteger(L, 5, 1);
     if (scale < 1 || scale > 8) return pcl_argerror(L, 5, "scale", "an integer 1..8");
@@ -342,166 +240,214 @@ int pcl_scene_label(lua_State *L) {
     return 1;
 }
 
+/* ---- markers, arrows, furniture -------------------------------------------------------------- */
+
+static const char *const STYLES[] = {"dot", "open", "cross", "plus", "square", NULL};
+static const pcl_arg mark_args[] = {A_XY("P"), A_OPTENUM("style", STYLES, 0),
+                                    A_OPTNUM("size", 1, 200, 5, "5"), A_COLOR("colour"), PCL_END};
+static int l_mark(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    pc_scene *sc = a[0].n == 3 ? pcl_scene(L) : NULL;
+    if (sc) {
+        int st = pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, color_of(&a[3]));
+        return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
+    }
+    return check(L, c, pc_mark(c, a[0].v[0], a[0].v[1], a[1].n, a[2].x, color_of(&a[3])));
+}
+
+static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
+static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1),
+                                     A_COLOR("colour"), PCL_END};
+static int l_arrow(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, color_of(&a[3])));
+}
+
+/* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
+static const pcl_arg vector_args[] = {A_XY("A"), {.name = "v", .kind = PCL_VECTOR}, A_COLOR("colour"), PCL_END};
+static int l_vector(lua_State *L) {
+    pcl_val a[3] = {0}, end = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    lua_pushvalue(L, 1);
+    lua_pushvalue(L, 2);
+    lua_arith(L, LUA_OPADD);
+    if (!read_xy(L, lua_gettop(L), NULL, &end)) return pcl_argfail(L, 2, "must have A's dimension");
+    return check(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9, color_of(&a[2])));
+}
+
+static const pcl_arg dim_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("offset", -1e5, 1e5, 20, "20"),
+                                   A_OPTSTR("text"), A_COLOR("colour"), PCL_END};
+static int l_dimension(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    double len = 0;
+    check(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x,
+                             a[3].present ? a[3].s : NULL, color_of(&a[4]), &len));
+    lua_pushnumber(L, len);
+    return 1;
+}
+
+static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
+                                     A_OPTNUM("radius", 2, 1000, 24, "24"), A_COLOR("colour"), PCL_END};
+static int l_angle_mark(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    double th = 0;
+    check(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
+                              a[4].x, a[3].present ? a[3].s : NULL, color_of(&a[5]), &th));
+    lua_pushnumber(L, th);
+    return 1;
+}
+
+static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
+                                     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 5, .dflt = 1, .shown = "1"},
+                                     A_COLOR("colour"), PCL_END};
+static int l_ticks(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, color_of(&a[3])));
+}
+
+static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
+                                     A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
+static int l_hatch(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    int n = a[0].n, d = a[0].dim;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
+    for (int i = 0; i < n; i++) {
+        double h[PC_MAXDIM + 1];
+        memcpy(h, a[0].list + (size_t)i * d, sizeof(double) * (size_t)d);
+        h[d] = 1;
+        if (d == 2) xy[2 * i] = h[0], xy[2 * i + 1] = h[1];
+        else if (pcl_project(L, d, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
+            return pcl_argfail(L, 1, "[%d] must be " XY_TEXT ", got a %d-D point", i + 1, d);
+    }
+    size_t lines;
+    return check(L, c, pc_hatch(c, (size_t)n, xy, a[1].x, a[2].x, color_of(&a[3]), &lines));
+}
+
+static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
+                                      A_COLOR("colour"), PCL_END};
+static int l_centre_line(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, color_of(&a[3])));
+}
+
 /* ---- framing, captions, device-unit text -------------------------------------------------- */
 
-/* fit{margin = px, aspect = "equal"|"fill"}: frame what is drawn (layout.h). */
+static const char *const ASPECTS[] = {"equal", "fill", NULL};
+static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTENUM("aspect", ASPECTS, 0), PCL_END};
+static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
 static int l_fit(lua_State *L) {
-    static const char *const aspects[] = {"equal", "fill", NULL};
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    double margin = 10;
-    int aspect = PC_FIT_EQUAL;
-    if (!lua_isnoneornil(L, 1)) {
-        if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "options", "a table {margin =, aspect =}");
-        lua_getfield(L, 1, "margin");
-        margin = optnum(L, lua_gettop(L), "margin", 10);
-        lua_getfield(L, 1, "aspect");
-        aspect = option_at(L, lua_gettop(L), 1, "aspect", aspects, PC_FIT_EQUAL);
-        lua_settop(L, 1);
-    }
-    return check(L, c, pc_fit(c, margin, aspect));
+    return check(L, c, pc_fit(c, a[1].present ? a[1].x : 10, a[2].n));
 }
 
-/* Text at a screen point given in device pixels, whatever the window. */
-static int device_text(lua_State *L, pc_canvas *c, double x, double y, const char *s, int anchor,
-                       double gap, int scale, int color) {
-    double wx, wy;
-    pc_screen_to_world(c, x, y, &wx, &wy);
-    return check(L, c, pc_text(c, wx, wy, s, anchor, gap, scale, color));
-}
-
-/* caption(text [, "bottom"|"top" [, colour]]): centred at the picture's edge, in device units. */
+static const char *const EDGES[] = {"bottom", "top", NULL};
+static const pcl_arg caption_args[] = {{.name = "text", .kind = PCL_STRING}, A_OPTENUM("where", EDGES, 0),
+                                       A_COLOR("colour"), PCL_END};
 static int l_caption(lua_State *L) {
-    static const char *const where[] = {"bottom", "top", NULL};
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    const char *s = opttext(L, 1);
-    if (!s) return pcl_argerror(L, 1, "text", "a string");
-    int top = option(L, 2, "where", where, 0);
-    int color = pcl_optcolor(L, 3, c);
+    int top = a[1].n;
     pc_rect v = c->view;
     int vs = c->view_screen;   /* the whole screen, not the VIEW: a caption is the figure's */
     c->view = (pc_rect){0, 0, c->width - 1, c->height - 1};
     c->view_screen = 1;
     double wx, wy;
     pc_screen_to_world(c, c->width / 2.0, top ? 0 : c->height - 1, &wx, &wy);
-    int st = pc_text(c, wx, wy, s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color);
+    int st = pc_text(c, wx, wy, a[0].s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color_of(&a[2]));
     c->view = v;
     c->view_screen = vs;
     return check(L, c, st);
 }
 
-/* text{x =, y =, text =, units = "device"|"world", color =, scale =}; the positional form goes
- * to the drawing binding's text (the upvalue). */
-static int l_text_table(lua_State *L) {
+/* text{x =, y =, text =, units =, color =, scale =}; the positional form goes to the drawing
+ * binding's text (kept as this closure's upvalue). */
+static const char *const UNITS[] = {"world", "device", NULL};
+static const pcl_arg text_keys[] = {{.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
+                                    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, A_OPTENUM("units", UNITS, 0),
+                                    A_COLOR("color"), {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}, PCL_END};
+static const pcl_arg text_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = text_keys}, PCL_END};
+static int l_text(lua_State *L) {
     if (!lua_istable(L, 1)) {
-        lua_pushvalue(L, lua_upvalueindex(1));
+        lua_pushvalue(L, PCL_UPVALUE(1));
         lua_insert(L, 1);
         lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
         return lua_gettop(L);
     }
-    static const char *const units[] = {"world", "device", NULL};
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    lua_settop(L, 1);
-    lua_getfield(L, 1, "x");   /* 2 */
-    lua_getfield(L, 1, "y");   /* 3 */
-    lua_getfield(L, 1, "text");   /* 4 */
-    lua_getfield(L, 1, "units");   /* 5 */
-    lua_getfield(L, 1, "color");   /* 6 */
-    lua_getfield(L, 1, "scale");   /* 7 */
-    double x = pcl_checknum(L, "text", 2, "x"), y = pcl_checknum(L, "text", 3, "y");
-    const char *s = opttext(L, 4);
-    if (!s) return pcl_error(L, "text: the table needs text = \"...\"");
-    int device = option_at(L, 5, 1, "units", units, 0);
-    int color = pcl_optcolor(L, 6, c);
-    lua_Integer scale = luaL_optinteger(L, 7, 1);
-    if (scale < 1 || scale > 8) return pcl_error(L, "text: scale must be an integer 1..8");
-    if (!device) return check(L, c, pc_text(c, x, y, s, PC_ANCHOR_SE, 0, (int)scale, color));
-    return device_text(L, c, x, y, s, PC_ANCHOR_SE, 0, (int)scale, color);
+    double x = a[1].x, y = a[2].x;
+    if (a[4].n == 1) pc_screen_to_world(c, x, y, &x, &y);   /* device pixels, whatever the window */
+    return check(L, c, pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5])));
 }
 
 /* ---- axes, graphs, legends ------------------------------------------------------------------ */
 
-/* A {lo, hi} range field of the options table at 1. */
-static int range_field(lua_State *L, const char *key, double *lo, double *hi) {
-    if (lua_getfield(L, 1, key) == LUA_TNIL) {
-        lua_pop(L, 1);
-        return 0;
-    }
-    int ok = lua_istable(L, -1) && lua_geti(L, -1, 1) == LUA_TNUMBER && lua_geti(L, -2, 2) == LUA_TNUMBER;
-    if (ok) {
-        *lo = lua_tonumber(L, -2);
-        *hi = lua_tonumber(L, -1);
-    }
-    if (!ok || !(*lo < *hi)) pcl_error(L, "axes: %s must be {lo, hi} with lo < hi", key);
-    lua_settop(L, 1);
-    return 1;
-}
-
-/* axes{x = {a, b}, y = {c, d}, origin = P, ticks = 5, labels = true, arrows = true,
- * grid = false, color =, grid_color =} -> the number of ticks */
+static const pcl_arg axes_keys[] = {A_NUMBERS("x", 2, 2), A_NUMBERS("y", 2, 2), A_XY("origin"),
+                                    {.name = "ticks", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = 100, .dflt = 5},
+                                    {.name = "labels", .kind = PCL_BOOLEAN, .dflt = 1}, {.name = "arrows", .kind = PCL_BOOLEAN, .dflt = 1},
+                                    {.name = "grid", .kind = PCL_BOOLEAN}, A_COLOR("color"), A_COLOR("grid_color"), PCL_END};
+static const pcl_arg axes_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = axes_keys}, PCL_END};
 static int l_axes(lua_State *L) {
+    double xr[2], yr[2];
+    pcl_val a[10] = {{0}, {.list = xr, .cap = 2}, {.list = yr, .cap = 2}};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    if (lua_isnoneornil(L, 1)) lua_newtable(L), lua_replace(L, 1);
-    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "options", "a table {x =, y =, ...}");
-    lua_settop(L, 1);
-    pc_axes_spec a = {0, 0, 0, 0, 0, 0, 5, 1, 1, 0, -1};
+    pc_axes_spec s = {0, 0, 0, 0, 0, 0, 5, 1, 1, 0, -1};
     double wx0, wy0, wx1, wy1;   /* default: the window's (or the screen's) extent */
     pc_screen_to_world(c, c->view.x0, c->view.y1, &wx0, &wy0);
     pc_screen_to_world(c, c->view.x1, c->view.y0, &wx1, &wy1);
-    a.x0 = fmin(wx0, wx1); a.x1 = fmax(wx0, wx1); a.y0 = fmin(wy0, wy1); a.y1 = fmax(wy0, wy1);
-    range_field(L, "x", &a.x0, &a.x1);
-    range_field(L, "y", &a.y0, &a.y1);
-    if (lua_getfield(L, 1, "origin") != LUA_TNIL) {
-        int arg = 2;
-        pcl_checkxy(L, &arg, &a.ox, &a.oy, "origin");
-    }
-    lua_settop(L, 1);
-    lua_getfield(L, 1, "ticks");
-    a.ticks = (int)luaL_optinteger(L, -1, 5);
-    if (a.ticks < 0 || a.ticks > 100) return pcl_error(L, "axes: ticks must be 0..100");
-    static const char *const flags[] = {"labels", "arrows", "grid"};
-    int *fv[] = {&a.labels, &a.arrows, &a.grid};
-    for (int k = 0; k < 3; k++) {
-        if (lua_getfield(L, 1, flags[k]) != LUA_TNIL) *fv[k] = lua_toboolean(L, -1);
-        lua_pop(L, 1);
-    }
-    lua_getfield(L, 1, "color");
-    int color = pcl_optcolor(L, lua_gettop(L), c);
-    lua_getfield(L, 1, "grid_color");
-    a.grid_color = pcl_optcolor(L, lua_gettop(L), c);
+    s.x0 = a[1].present ? xr[0] : fmin(wx0, wx1);
+    s.x1 = a[1].present ? xr[1] : fmax(wx0, wx1);
+    s.y0 = a[2].present ? yr[0] : fmin(wy0, wy1);
+    s.y1 = a[2].present ? yr[1] : fmax(wy0, wy1);
+    if (!(s.x0 < s.x1)) return pcl_keyfail(L, "x", "must be {lo, hi} with lo < hi");
+    if (!(s.y0 < s.y1)) return pcl_keyfail(L, "y", "must be {lo, hi} with lo < hi");
+    if (a[3].present) s.ox = a[3].v[0], s.oy = a[3].v[1];
+    s.ticks = a[4].present ? (int)a[4].x : 5;
+    s.labels = a[5].present ? (int)a[5].x : 1;
+    s.arrows = a[6].present ? (int)a[6].x : 1;
+    s.grid = a[7].present && a[7].x;
+    s.grid_color = color_of(&a[9]);
     int n = 0;
-    check(L, c, pc_axes(c, &a, color, &n));
+    check(L, c, pc_axes(c, &s, color_of(&a[8]), &n));
     lua_pushinteger(L, n);
     return 1;
 }
 
-/* graph(f, a, b [, {color =, n = 400}]): y = f(x) for x in a..b, broken where f gives no
- * finite number. */
+static const pcl_arg graph_keys[] = {A_COLOR("color"), {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e6, .dflt = 400}, PCL_END};
+static const pcl_arg graph_args[] = {A_FUNCTION("f"), A_NUM("a"), A_NUM("b"), A_OPTIONS("options", graph_keys), PCL_END};
 static int l_graph(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    luaL_checktype(L, 1, LUA_TFUNCTION);
-    double a = pcl_checknum(L, "graph", 2, "a"), b = pcl_checknum(L, "graph", 3, "b");
-    if (!(a < b)) {
-        const char *sa = pcl_pushnum(L, a), *sb = pcl_pushnum(L, b);
-        return pcl_error(L, "graph: the range must have a < b, got %s..%s", sa, sb);
-    }
-    int color = -1;
-    lua_Integer n = 400;
-    if (!lua_isnoneornil(L, 4)) {
-        if (!lua_istable(L, 4)) return pcl_argerror(L, 4, "options", "a table {color =, n =}");
-        lua_getfield(L, 4, "color");
-        color = pcl_optcolor(L, lua_gettop(L), c);
-        lua_getfield(L, 4, "n");
-        n = luaL_optinteger(L, -1, 400);
-        if (n < 1 || n > 1000000) return pcl_error(L, "graph: n must be 1..1000000");
-    }
-    lua_settop(L, 3);
+    double x0 = a[1].x, x1 = a[2].x;
+    if (!(x0 < x1)) return pcl_argfail(L, 3, "must be greater than a");
+    lua_Integer n = a[5].present ? (lua_Integer)a[5].x : 400;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
     uint8_t *verbs = lua_newuserdatauv(L, (size_t)n + 1, 0);
     size_t m = 0, start = 0;
-    int st = PC_OK;
-    for (lua_Integer k = 0; k <= n && st == PC_OK; k++) {
-        double x = a + (b - a) * (double)k / (double)n;
-        lua_pushvalue(L, 1);
+    for (lua_Integer k = 0; k <= n; k++) {
+        double x = x0 + (x1 - x0) * (double)k / (double)n;
+        lua_pushvalue(L, a[0].idx);
         lua_pushnumber(L, x);
         lua_call(L, 1, 1);
         int isnum;
@@ -518,113 +464,107 @@ static int l_graph(lua_State *L) {
         m++;
     }
     if (m - start == 1) m = start;
-    if (m) check(L, c, pc_path(c, m, xy, verbs, m, 0, color));
+    if (m) check(L, c, pc_path(c, m, xy, verbs, m, 0, color_of(&a[4])));
     return 0;
 }
 
-/* legend({{name, colour}, ...} [, "ne"|"nw"|"se"|"sw" [, colour]]) */
+static const char *const CORNERS[] = {"ne", "nw", "se", "sw", NULL};
+static const pcl_arg legend_args[] = {{.name = "entries", .kind = PCL_ANY, .expect = "a list of {name, colour}"},
+                                      A_OPTENUM("corner", CORNERS, 0), A_COLOR("colour"), PCL_END};
 static int l_legend(lua_State *L) {
-    static const char *const corners[] = {"ne", "nw", "se", "sw", NULL};
     static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "entries", "a list of {name, colour}");
-    lua_Integer n = luaL_len(L, 1);
-    if (n < 1 || n > 100) return pcl_argerror(L, 1, "entries", "a list of 1..100 {name, colour}");
-    int corner = corner_of[option(L, 2, "corner", corners, 0)];
-    int color = pcl_optcolor(L, 3, c);
-    luaL_checkstack(L, 2 * (int)n + 8, "legend: too many entries");
+    int t = a[0].idx;
+    lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : 0;
+    if (n < 1 || n > 100) return pcl_argfail(L, 1, "must be a list of 1 to 100 {name, colour}, got %s", pcl_shown(L, t));
+    luaL_checkstack(L, 2 * (int)n + 8, "too many entries");
     const char **names = lua_newuserdatauv(L, sizeof *names * (size_t)n, 0);
     int *colors = lua_newuserdatauv(L, sizeof *colors * (size_t)n, 0);
-    for (lua_Integer i = 1; i <= n; i++) {
-        if (lua_geti(L, 1, i) != LUA_TTABLE) return pcl_error(L, "legend: entry %d must be {name, colour}", (int)i);
-        lua_geti(L, -1, 1);
-        if (!lua_isstring(L, -1)) return pcl_error(L, "legend: entry %d must be {name, colour}", (int)i);
+    for (lua_Integer i = 1; i <= n; i++) {   /* each name stays on the stack while it is used */
+        pcl_val col = {0};
+        if (lua_geti(L, t, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
+            return pcl_argfail(L, 1, "[%d] must be {name, colour}", (int)i);
         names[i - 1] = lua_tostring(L, -1);
         lua_geti(L, -2, 2);
-        colors[i - 1] = pcl_optcolor(L, lua_gettop(L), c);
-        lua_pop(L, 1);   /* the name stays on the stack, referenced by the list */
+        if (!lua_isnil(L, -1) && !read_color(L, lua_gettop(L), NULL, &col))
+            return pcl_argfail(L, 1, "[%d] must be {name, colour}: its colour must be a colour number or \"#rrggbb\"", (int)i);
+        colors[i - 1] = lua_isnil(L, -1) ? -1 : (int)col.x;
+        lua_pop(L, 1);
     }
-    return check(L, c, pc_legend(c, (int)n, names, colors, corner, color));
+    return check(L, c, pc_legend(c, (int)n, names, colors, corner_of[a[1].n], color_of(&a[2])));
 }
 
 /* ---- map.view ------------------------------------------------------------------------------ */
 
-/* A 3-D field of the options table at 1: a point (weight 1) or a vector (weight 0). */
-static int field3(lua_State *L, const char *key, int weight, double out[3]) {
-    if (lua_getfield(L, 1, key) == LUA_TNIL) {
-        lua_pop(L, 1);
-        return 0;
-    }
-    pcl_value *p = pcl_tovalue(L, -1);
-    if (!p || p->n != 3 || fabs(p->h[3] - weight) > 1e-9)
-        pcl_error(L, "map.view: %s must be a 3-D %s, got %s", key, weight ? "point" : "vector",
-                  pcl_shown(L, -1));
-    for (int k = 0; k < 3; k++) out[k] = weight ? p->h[k] / p->h[3] : p->h[k];
-    lua_pop(L, 1);
-    return 1;
-}
-
-static double fieldnum(lua_State *L, const char *key, double dflt) {
-    lua_getfield(L, 1, key);
-    int isnum;
-    double v = lua_isnil(L, -1) ? dflt : lua_tonumberx(L, -1, &isnum);
-    if (!lua_isnil(L, -1) && (!isnum || !isfinite(v)))
-        pcl_error(L, "map.view: %s must be a finite number, got %s", key, pcl_shown(L, -1));
-    lua_pop(L, 1);
-    return v;
-}
-
-/* map.view{from = P, to = P [, up = V] [, perspective = true]} or
- * map.view{azimuth =, elevation = [, distance =] [, to =] [, perspective =]}: z up. */
+static const pcl_arg view_keys[] = {A_POINT("from", 3), A_POINT("to", 3), A_VECTOR("up", 3), {.name = "perspective", .kind = PCL_BOOLEAN},
+                                    A_NUM("azimuth"), {.name = "elevation", .kind = PCL_NUMBER, .dflt = 30},
+                                    {.name = "distance", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 10}, PCL_END};
+static const pcl_arg view_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = view_keys}, PCL_END};
 static int l_view(lua_State *L) {
-    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "options", "a table {from =, to =, up =} or {azimuth =, elevation =}");
-    double from[3], to[3] = {0, 0, 0}, up[3];
-    int has_from = field3(L, "from", 1, from), has_to = field3(L, "to", 1, to);
-    int has_up = field3(L, "up", 0, up);
-    lua_getfield(L, 1, "perspective");
-    int persp = lua_toboolean(L, -1);
-    lua_pop(L, 1);
+    pcl_val a[8] = {0};
+    PCL_READ(L, a);
+    static const double origin[3] = {0, 0, 0};
+    const double *to = a[2].present ? a[2].v : origin;
+    int persp = a[4].present && a[4].x, st;
     pc_map f;
-    int st;
-    if (has_from) {
-        if (!has_to) return pcl_error(L, "map.view: from needs to (the point looked at)");
-        st = pc_map_view(&f, from, to, has_up ? up : NULL, persp);
+    if (a[1].present) {
+        if (!a[2].present) return pcl_keyfail(L, "to", "must be given with from (the point looked at)");
+        st = pc_map_view(&f, a[1].v, to, a[3].present ? a[3].v : NULL, persp);
     } else {
-        lua_getfield(L, 1, "azimuth");
-        int has_az = !lua_isnil(L, -1);
-        lua_pop(L, 1);
-        if (!has_az) return pcl_error(L, "map.view: give from and to, or azimuth and elevation");
-        st = pc_map_view_azel(&f, to, fieldnum(L, "azimuth", 0), fieldnum(L, "elevation", 30),
-                              fieldnum(L, "distance", 10), persp);
+        if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
+        st = pc_map_view_azel(&f, to, a[5].x, a[6].present ? a[6].x : 30, a[7].present ? a[7].x : 10, persp);
     }
     switch (st) {
     case PC_OK: break;
-    case PC_ECOINCIDENT: return pcl_error(L, "map.view: from and to coincide (or distance is not positive): no line of sight");
-    case PC_EZERO: return pcl_error(L, "map.view: up is the zero vector");
-    case PC_ECOLLINEAR: return pcl_error(L, "map.view: up is along the line of sight; give another up");
-    default: return pcl_error(L, "map.view: %s", pc_strerror(st));
+    case PC_ECOINCIDENT: return pcl_fail(L, "from and to coincide: no line of sight");
+    case PC_EZERO: return pcl_keyfail(L, "up", "is the zero vector");
+    case PC_ECOLLINEAR: return pcl_keyfail(L, "up", "is along the line of sight; give another up");
+    default: return pcl_fail(L, "%s", pc_strerror(st));
     }
     *pcl_newmap(L) = f;
     return 1;
 }
 
+/* ---- registration ---------------------------------------------------------------------------- */
+
+static const pcl_fn fns[] = {
+    PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}",
+           "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
+    PCL_FN("mark", l_mark, mark_args, NULL, "A marker on a point, size pixels across (default a filled dot of 5); a 3-D point joins the camera's scene."),
+    PCL_FN("arrow", l_arrow, arrow_args, NULL, "The segment AB with a filled arrow head (9 px) at B, at A or at both."),
+    PCL_FN("vector", l_vector, vector_args, NULL, "The vector v drawn as an arrow from the point A to A + v."),
+    PCL_FN("dimension", l_dimension, dim_args, "length",
+           "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
+    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle",
+           "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
+    PCL_FN("ticks", l_ticks, ticks_args, NULL, "n (1..5) equal-length ticks across the middle of segment AB."),
+    PCL_FN("hatch", l_hatch, hatch_args, NULL,
+           "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
+    PCL_FN("centre_line", l_centre_line, centre_args, NULL,
+           "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
+    PCL_FN("fit", l_fit, fit_args, NULL,
+           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells included, at equal units on both axes (or each axis filling the view); later drawing follows the new frame."),
+    PCL_FN("caption", l_caption, caption_args, NULL,
+           "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
+    PCL_FN("axes", l_axes, axes_args, "n",
+           "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),
+    PCL_FN("graph", l_graph, graph_args, NULL, "The graph y = f(x) for x from a to b as a path of n pieces, broken where f gives no finite number."),
+    PCL_FN("legend", l_legend, legend_args, NULL, "A legend in a corner of the picture (device units): a line in each entry's colour and its name."),
+    PCL_END};
+static const pcl_fn text_fn[] = {{.name = "text", .fn = l_text, .args = text_args,
+                                  .sig = "text(x, y, string [, colour [, scale]])\ntext{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}",
+                                  .help = "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window."}, PCL_END};
+static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view_args,
+                                  .sig = "map.view{from = P, to = P [, up = V] [, perspective = true]} -> f\nmap.view{azimuth = deg, elevation = deg [, distance = d] [, to = P] [, perspective = true]} -> f",
+                                  .help = "The view with z up (docs/maps.md): from a point towards another, the picture's x to the right as seen and y along up (default the z axis), origin at to; parallel unless perspective."}, PCL_END};
+
 void pcl_open_figure_layout(lua_State *L) {
-    static const luaL_Reg fns[] = {
-        {"placed_labels", l_placed_labels}, {"mark", l_mark}, {"arrow", l_arrow},
-        {"vector", l_vector}, {"dimension", l_dimension}, {"angle_mark", l_angle_mark},
-        {"ticks", l_ticks}, {"hatch", l_hatch}, {"centre_line", l_centre_line},
-        {"axes", l_axes}, {"graph", l_graph}, {"legend", l_legend}, {NULL, NULL}};
-    luaL_setfuncs(L, fns, 0);
-    lua_pushcfunction(L, l_fit);
-    lua_setfield(L, -2, "fit");
-    lua_pushcfunction(L, l_caption);
-    lua_setfield(L, -2, "caption");
-    lua_getfield(L, -1, "text");   /* text{...} in front of the positional text(x, y, s) */
-    lua_pushcclosure(L, l_text_table, 1);
-    lua_setfield(L, -2, "text");
-    if (lua_getfield(L, -1, "map") == LUA_TTABLE) {
-        lua_pushcfunction(L, l_view);
-        lua_setfield(L, -2, "view");
-    }
-    lua_pop(L, 1);
+    int module = lua_gettop(L);
+    pcl_register(L, module, fns, 0);
+    lua_getfield(L, module, "text");   /* the positional text(x, y, s) behind text{...} */
+    pcl_register(L, module, text_fn, 1);
+    if (lua_getfield(L, module, "map") == LUA_TTABLE) pcl_register(L, lua_gettop(L), view_fn, 0);
+    lua_settop(L, module);
 }

@@ -66,7 +66,7 @@ check.eq(point(102, 100), 14, "a filled dot of diameter 5")
 check.eq(point(103, 100), 0, "and no more")
 mark(P(200, 100), "open", 9, 14)
 check.eq(point(200, 100), 0, "an open circle is empty inside")
-mark(200, 200, "cross", 9, 12)
+mark(P(200, 200), "cross", 9, 12)
 check.eq(point(200, 200), 12, "a cross meets at its centre")
 arrow(P(100, 300), P(300, 300), "end", 10)
 check.eq(point(299, 300), 10, "the tip")
@@ -74,7 +74,7 @@ check.eq(point(292, 302), 10, "the head's width")
 vector(P(100, 400), V(100, 0), 11)
 check.eq(point(199, 400), 11, "vector(A, v) ends at A + v")
 check.err(function() mark(P(1, 1), "star") end,
-  'mark: argument #2 (style) must be one of "dot" "open" "cross" "plus" "square", got "star"', "bad style")
+  'mark: argument #2 (style) must be "dot", "open", "cross", "plus" or "square", got "star"', "bad style")
 check.err(function() arrow(P(1, 1), P(1, 1)) end,
   "arrow: the two points coincide: no direction for the head", "no direction")
 
@@ -102,7 +102,7 @@ check.eq(point(350, 310), 9, "a hatch line every 10 px")
 check.eq(point(350, 315), 0, "and nothing between")
 check.eq(point(350, 295), 0, "nothing outside the region")
 check.err(function() hatch({P(1, 1), P(2, 2)}) end,
-  "hatch: argument #1 (points) must be a list of at least 3 points", "too few points")
+  "hatch: argument #1 (points) must hold at least 3 points, got 2", "too few points")
 centre_line(P(110, 450), P(200, 450), 10)
 local got = {}
 for x = 100, 119 do got[#got + 1] = point(x, 450) == 15 and "#" or "." end
@@ -122,7 +122,7 @@ check.eq(point(30, 10), 15, "the segment's end, in world units, drawn where late
 pset(P(20, 10), 13)
 check.eq(point(20, 10), 13, "later drawing uses the new frame")
 check.err(function() fit { aspect = "round" } end,
-  'fit: argument #1 (aspect) must be one of "equal" "fill", got "round"', "bad aspect")
+  'fit: option \'aspect\' must be "equal" or "fill", got "round"', "bad aspect")
 -- captions and device-unit text survive any window
 cls()
 window(-1000, -1000, -999, -999)
@@ -145,7 +145,12 @@ legend({ { "sin", 12 }, { "1/(x-3)", 10 } }, "ne")
 local names = {}
 for _, l in ipairs(placed_labels()) do names[#names + 1] = l.text end
 check.eq(table.concat(names, " "), "1 2 3 4 5 6 -1 -0.5 0.5 1 sin 1/(x-3)", "tick labels, then the legend's names")
-check.err(function() axes { x = { 1, 0 } } end, "axes: x must be {lo, hi} with lo < hi", "bad range")
-check.err(function() legend({ 5 }) end, "legend: entry 1 must be {name, colour}", "bad entry")
+check.err(function() axes { x = { 1, 0 } } end, "axes: option 'x' must be {lo, hi} with lo < hi", "bad range")
+check.err(function() legend({ 5 }) end, "legend: argument #1 (entries) [1] must be {name, colour}", "bad entry")
 window()
+-- every function of the figure layout is declared on the argument layer (docs/bindings.md)
+for _, name in ipairs { "placed_labels", "mark", "arrow", "vector", "dimension", "angle_mark", "ticks",
+  "hatch", "centre_line", "fit", "caption", "text", "axes", "graph", "legend", "map.view" } do
+  check.truthy(pointcalc._decl[name], name .. " has a declaration")
+end
 print(arg[0] .. ": " .. check.count .. " checks passed")
