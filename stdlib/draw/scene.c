@@ -164,47 +164,66 @@ static int run_flush(run *r, int color, int pen, int hidden, pc_hidden_mode mode
     return r->nomem ? PC_ENOMEM : st;
 }
 
-/* One stroke, sampled at most a pixel apart on the screen. */
+/* The point at t of segment a-b, and its screen image (0: none). */
+static int at_t(const pc_scene *sc, const double *a, const double *b, double t, double x[3],
+                double *sx, double *sy) {
+    for (int j = 0; j < 3; j++) x[j] = a[j] + t * (b[j] - a[j]);
+    return project(sc, x, sx, sy);
+}
+
+#define SAMPLE_PX 3   /* the visibility is sampled this far apart, each change then bisected */
+
+/* One stroke: each segment (straight in space and on the screen) is sampled SAMPLE_PX pixels
+ * apart; where the visibility changes between two samples the change is found by bisection
+ * to 1/1024 of the step, and the runs keep only their ends and the changes as vertices. */
 static int draw_stroke(const pc_scene *sc, const stroke *s, run *r, pc_hidden_mode mode) {
     int st = PC_OK, cur = -1;   /* cur: the visibility of the run being gathered */
-    double last[2] = {0, 0};
+    int show = mode == PC_HIDDEN_SHOW;
     for (size_t i = 0; i < s->n && st == PC_OK; i++) {
         const double *b = sc->pts + 3 * (s->first + i);
         if (sc->brk[s->first + i]) {   /* a new piece: flush, start at this point */
             st = run_flush(r, s->color, s->pen, cur == 0, mode);
             double sx, sy;
             if (!project(sc, b, &sx, &sy)) { cur = -1; continue; }
-            cur = mode == PC_HIDDEN_SHOW || pc_scene_visible(sc, b);
+            cur = show || pc_scene_visible(sc, b);
             run_add(r, sx, sy);
-            last[0] = sx, last[1] = sy;
             continue;
         }
         const double *a = b - 3;
-        double ax, ay, bx, by;
-        if (!project(sc, a, &ax, &ay) || !project(sc, b, &bx, &by)) {
+        double ax, ay, bx, by, x[3];
+        if (cur < 0 || !project(sc, a, &ax, &ay) || !project(sc, b, &bx, &by)) {
             st = run_flush(r, s->color, s->pen, cur == 0, mode);
             cur = -1;
+            if (project(sc, b, &bx, &by)) {   /* start again at b */
+                cur = show || pc_scene_visible(sc, b);
+                run_add(r, bx, by);
+            }
             continue;
         }
-        int m = (int)fmin(4096, ceil(hypot(bx - ax, by - ay)));
+        int m = (int)fmin(4096, ceil(hypot(bx - ax, by - ay) / SAMPLE_PX));
         if (m < 1) m = 1;
+        double tprev = 0;
         for (int k = 1; k <= m && st == PC_OK; k++) {
-            double t = (double)k / m, x[3], sx, sy;
-            for (int j = 0; j < 3; j++) x[j] = a[j] + t * (b[j] - a[j]);
-            if (!project(sc, x, &sx, &sy)) continue;
-            int vis = mode == PC_HIDDEN_SHOW || pc_scene_visible(sc, x);
-            if (cur >= 0 && vis != cur) {   /* the run ends half way to this sample */
-                double hx = (last[0] + sx) / 2, hy = (last[1] + sy) / 2;
-                run_add(r, hx, hy);
+            double t = (double)k / m, sx, sy;
+            if (!at_t(sc, a, b, t, x, &sx, &sy)) continue;
+            int vis = show || pc_scene_visible(sc, x);
+            if (vis != cur) {   /* the run ends where the visibility changes */
+                double lo = tprev, hi = t;
+                for (int it = 0; it < 10; it++) {
+                    double mid = (lo + hi) / 2, mx, my;
+                    if (!at_t(sc, a, b, mid, x, &mx, &my)) break;
+                    if ((show || pc_scene_visible(sc, x)) == cur) lo = mid;
+                    else hi = mid;
+                }
+                double hx, hy;
+                if (at_t(sc, a, b, (lo + hi) / 2, x, &hx, &hy)) run_add(r, hx, hy);
                 st = run_flush(r, s->color, s->pen, cur == 0, mode);
-                run_add(r, hx, hy);
-            } else if (cur < 0) {
-                run_add(r, sx, sy);
+                if (at_t(sc, a, b, (lo + hi) / 2, x, &hx, &hy)) run_add(r, hx, hy);
+                cur = vis;
             }
-            cur = vis;
-            run_add(r, sx, sy);
-            last[0] = sx, last[1] = sy;
+            tprev = t;
         }
+        run_add(r, bx, by);
     }
     if (st == PC_OK) st = run_flush(r, s->color, s->pen, cur == 0, mode);
     return st;

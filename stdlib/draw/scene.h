@@ -41,7 +41,8 @@ int pc_scene_visible(const pc_scene *sc, const double x[3]);
 size_t pc_scene_nsurfaces(const pc_scene *sc);
 size_t pc_scene_nstrokes(const pc_scene *sc);
 
-/* Draw every stroke onto c, sampled at most a pixel apart on the screen: seen runs as paths in
+/* Draw every stroke onto c, its visibility sampled 3 px apart on the screen and each change
+ * found by bisection (to 1/1024 of the step): seen runs as paths in
  * their pen, hidden runs by `mode` (dashed: the pen with dashes 4 on, 3 off).  Markers that
  * are hidden are left out unless mode is SHOW.  Returns PC_OK or the canvas's status. */
 int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode);
