@@ -312,8 +312,8 @@ def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
   "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
 def("s:map", "s:map(f) -> s",
   "The image of the surface under a map.", "method")
-def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false}",
-  "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene.", "method")
+def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
+  "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene.", "method")
 def("s:shade", "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
   "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows.", "method")
 
@@ -418,8 +418,8 @@ def("size", "size() -> width, height, colours",
   "The size of the canvas and its number of colours.")
 def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen()"},
   "The pen of lines, boxes, circles and paths: width in pixels and a dash pattern; pen() restores width 1, solid.")
-def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\"}])",
-  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given.")
+def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])",
+  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment.")
 def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
   "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
 def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",

@@ -458,9 +458,11 @@ static int opt_count(lua_State *L, int opts, const char *field, int dflt, int mi
 static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, int nv, int mesh,
                            int outline, int color) {
     const char *fn = "s:wireframe";
-    int st = pc_scene_add_surface(sc, s, mesh);
+    int st = pc_scene_add_surface(sc, s, mesh), boundary = outline & 2;
+    outline &= 1;
     for (int dir = 0; dir < 2 && st == PC_OK; dir++) {
         int n = dir == 0 ? nu : nv;
+        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
         double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
         for (int i = 0; n > 0 && i <= n && st == PC_OK; i++) {
             pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
@@ -499,7 +501,9 @@ static int s_wireframe(lua_State *L) {
     int mesh = opt_count(L, 2, "mesh", 48, 1, 1024);
     lua_getfield(L, 2, "silhouette");
     int outline = lua_toboolean(L, -1);
-    lua_pop(L, 1);
+    lua_getfield(L, 2, "boundary");
+    int boundary = lua_toboolean(L, -1);
+    lua_pop(L, 2);
     lua_getfield(L, 2, "color");
     pc_canvas *cv = pcl_canvas(L);
     int color = pcl_optcolor(L, -1, cv);
@@ -524,7 +528,7 @@ static int s_wireframe(lua_State *L) {
         return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
     pc_scene *sc = !mode && s->dim == 3 && lua_isnil(L, -1) ? pcl_scene(L) : NULL;
-    if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline, color);
+    if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline | boundary << 1, color);
     hidden_ctx h = {0};
     pc_occluder *occ = NULL;
     if (mode) {
@@ -539,6 +543,7 @@ static int s_wireframe(lua_State *L) {
     for (int dir = 0; dir < 2 && st == PC_OK && drawn == PC_OK; dir++) {
         int n = dir == 0 ? nu : nv;
         double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
+        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
         for (int i = 0; n > 0 && i <= n && st == PC_OK && drawn == PC_OK; i++) {
             pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
             if (!c) break;

@@ -77,6 +77,12 @@ for k = 0, 71 do
 end
 check.eq(on, 72, "the outline circle all round")
 check.eq(point(320, 240), 0, "and nothing inside")
+-- the boundary alone: a unit square patch seen from +z shows its four edges, nothing inside
+cls()
+local sq = surface(function(u, v) return P(u, v, 0) end, 0, 1, 0, 1)
+sq:wireframe { nu = 0, nv = 0, boundary = true, color = 13 }
+check.eq(point(370, 240) .. point(420, 190) .. point(370, 140) .. point(320, 190) .. point(370, 190),
+  "131313130", "the four edges of the square (320..420, 140..240 px) and not its middle")
 check.err(function() camera(f, { hidden = "maybe" }) end,
   'camera: argument #2 (hidden) must be "dashed", "hide" or "show", got "maybe"', "bad mode")
 check.err(function() map.view { from = P(1, 1, 1), to = P(1, 1, 1) } end,
