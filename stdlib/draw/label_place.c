@@ -70,7 +70,8 @@ pc_box2 pc_label_box(double px, double py, double w, double h, int anchor, doubl
 /* Sides in order of preference (the diagonals first: they leave the point's lines free), and
  * the rings: distance in pixels and the cost of going that far.  The near rings use the eight
  * sides as pc_text does; from LEADER_RING on, a label may sit in any of 16 directions (so the
- * labels of neighbouring points do not queue along the same eight rays) and a leader joins it. */
+ * labels of neighbouring points do not queue along the same eight rays; 8 of them in the three
+ * outer rings) and a leader joins it. */
 static const int sides[8] = {PC_ANCHOR_NE, PC_ANCHOR_SE, PC_ANCHOR_NW, PC_ANCHOR_SW,
                              PC_ANCHOR_E, PC_ANCHOR_W, PC_ANCHOR_N, PC_ANCHOR_S};
 static const double ring_gap[] = {3, 8, 16, 26, 40, 60, 90, 130};
@@ -209,16 +210,19 @@ static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) 
     pc_box2 near = {b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1};
     if (p->ink) cost += COST_INK * pc_inkmap_count(p->ink, near);
     if (cost >= best) return cost;
-    p->stamp++;
+    /* an overlapping box is counted in the one cell holding the top-left corner of the
+     * overlap, so a box in several cells counts once */
     cell_range(&p->boxes, b, &i0, &j0, &i1, &j1);
     for (int j = j0; j <= j1; j++)
         for (int i = i0; i <= i1; i++) {
             const cell *c = &p->boxes.cells[(size_t)j * p->boxes.nx + i];
             for (size_t m = 0; m < c->n; m++) {
                 size_t o = c->idx[m];
-                if (o == k || p->seen[o] == p->stamp) continue;
-                p->seen[o] = p->stamp;
-                if (pc_box2_overlap(b, p->box[o])) cost += COST_OVERLAP;
+                const pc_box2 *q = &p->box[o];
+                if (o == k || !pc_box2_overlap(b, *q)) continue;
+                if (clampl((fmax(b.x0, q->x0) - p->boxes.ox) / CELL, 0, p->boxes.nx - 1) == i &&
+                    clampl((fmax(b.y0, q->y0) - p->boxes.oy) / CELL, 0, p->boxes.ny - 1) == j)
+                    cost += COST_OVERLAP;
             }
         }
     if (cost >= best) return cost;
@@ -243,7 +247,7 @@ static int place_one(placer *p, size_t k, double *cost_out) {
     if (p->placed[k]) grid_remove(&p->boxes, l->box, k);
     double best = INFINITY;
     for (size_t r = 0; r < NRINGS; r++)
-        for (int s = 0; s < (r < LEADER_RING ? 8 : NDIRS); s++) {
+        for (int s = 0; s < (r < LEADER_RING ? 8 : NDIRS); s += r < LEADER_RING + 3 ? 1 : 2) {
             int anchor = r < LEADER_RING ? sides[s] : 0;
             pc_box2 b = r < LEADER_RING
                 ? pc_label_box(l->px, l->py, l->w, l->h, anchor, ring_gap[r])
