@@ -128,8 +128,9 @@ pc_theme pcl_theme(lua_State *L) {
 static int check(lua_State *L, pc_canvas *c, int rc) {
     if (rc == PC_OK) return 0;
     lua_Debug ar;
-    const char *name = "draw";
+    const char *name = NULL;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
+    if (!name) name = pcl_fname(L);   /* called from C: text{...} forwarding, pcall */
     /* a core message may start with the core statement's name ("pset: coordinates ...");
      * the caller's name replaces it, so preset reports as preset and line_to as line_to */
     const char *msg = c->error, *colon = strstr(msg, ": ");
