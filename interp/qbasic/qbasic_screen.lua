@@ -33,35 +33,31 @@ end
 -- the 16 colours of the 16-colour modes as EGA colour numbers (brown is 20, not 6)
 local EGA16 = { [0] = 0, 1, 2, 3, 4, 5, 20, 7, 56, 57, 58, 59, 60, 61, 62, 63 }
 
-function M.install(E, rt)
+local IFC = "Illegal function call"
+
+-- a host call whose error is QBasic's Illegal function call at the program's line, with the
+-- host's reason in parentheses
+local function host(level, f, ...)
+  local ok, a, b = pcall(f, ...)
+  if not ok then error(IFC .. " (" .. tostring(a):gsub("^[^:]*:%d+: ", "") .. ")", level + 1) end
+  return a, b
+end
+local function graphics(rt) return rt.get_mode() ~= 0 end
+
+-- Each install_* adds one group of statements over the screen state S (S.tx: the text
+-- screen's cursor, viewport and pages; S.clock: the virtual clock) and rt, the runtime's link.
+-- ---- the text screen ------------------------------------------------------------------
+local function install_text(E, rt, S)
   local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
-  local h_print_at, h_scroll, h_pages, h_pcopy = draw("print_at"), draw("scroll_text"),
-    draw("pages"), draw("pcopy")
-  local h_draw, h_get, h_put, h_pmap = draw("draw"), draw("get_block"), draw("put_block"), draw("pmap")
-  local h_mode_info, h_palette, h_color, h_cls = draw("mode_info"), draw("palette"), draw("color"),
-    draw("cls")
-  local h_last_point = draw("last_point")
-
-  -- a host call whose error is QBasic's Illegal function call at the program's line, with the
-  -- host's reason in parentheses
-  local function host(level, f, ...)
-    local ok, a, b = pcall(f, ...)
-    if not ok then error(IFC .. " (" .. tostring(a):gsub("^[^:]*:%d+: ", "") .. ")", level + 1) end
-    return a, b
-  end
-
-  -- ---- the text screen ------------------------------------------------------------------
-  local tx = { row = 1, col = 1, top = 1, bottom = 25, rows = 25, cols = 80, pages = 1,
-    active = 0, visual = 0 }
+  local h_print_at, h_scroll, h_cls = draw("print_at"), draw("scroll_text"), draw("cls")
+  local tx = S.tx
   local out = io.stdout
-
-  local function graphics() return rt.get_mode() ~= 0 end
 
   local function newline()
     tx.col = 1
     if tx.row < tx.bottom then
       tx.row = tx.row + 1
-    elseif graphics() then
+    elseif graphics(rt) then
       h_scroll(tx.top, tx.bottom, 0)
     end
   end
@@ -89,7 +85,7 @@ function M.install(E, rt)
   -- a graphics screen.  Returns the 0-based column after it, for zones and TAB.
   function rt.text_out(s)
     out:write(s)
-    if graphics() then
+    if graphics(rt) then
       screen_text(s)
     else   -- text mode: standard output is the screen; no wrapping (docs/qbasic.md)
       local nl = s:find("\n[^\n]*$")
@@ -150,7 +146,7 @@ function M.install(E, rt)
   end
   -- CLS 0 (or none): the whole screen; 1: the graphics view; 2: the text viewport
   function rt.cls(n)
-    if not graphics() then tx.row, tx.col = tx.top, 1 return end
+    if not graphics(rt) then tx.row, tx.col = tx.top, 1 return end
     if n == 2 then
       for r = tx.top, tx.bottom do h_print_at(r, 1, string.rep(" ", tx.cols), nil, 0) end
     elseif n == 1 then
@@ -161,7 +157,13 @@ function M.install(E, rt)
     end
     tx.row, tx.col = tx.top, 1
   end
+end
 
+local function install_modes(E, rt, S)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
+  local h_pages, h_pcopy, h_mode_info = draw("pages"), draw("pcopy"), draw("mode_info")
+  local h_palette, h_color = draw("palette"), draw("color")
+  local tx = S.tx
   -- ---- modes, palettes, pages -----------------------------------------------------------
   function rt.screen_pages(apage, vpage, level)
     if apage == nil and vpage == nil then return end
@@ -175,7 +177,7 @@ function M.install(E, rt)
 
   function E.pcopy(from, to)
     from, to = to_int(from, -32768, 32767, 2), to_int(to, -32768, 32767, 2)
-    if not graphics() then return end
+    if not graphics(rt) then return end
     if from < 0 or from >= tx.pages or to < 0 or to >= tx.pages then error(IFC, 2) end
     host(2, h_pcopy, from, to)
   end
@@ -216,7 +218,12 @@ function M.install(E, rt)
     if c < 0 or c > max then error(IFC, level + 1) end
     h_palette(attr, ega64(m == 9 and c or EGA16[c]))
   end
+end
 
+local function install_draw(E, rt)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
+  local h_draw, h_get, h_put, h_pmap = draw("draw"), draw("get_block"), draw("put_block"), draw("pmap")
+  local h_last_point = draw("last_point")
   -- ---- DRAW -----------------------------------------------------------------------------
   -- VARPTR$(v) stands for the variable in a DRAW (or PLAY) string: here its value, between
   -- markers that DRAW replaces ("X" + VARPTR$(a$) runs a$, "=" + VARPTR$(n) is n)
@@ -239,7 +246,7 @@ function M.install(E, rt)
   end
 
   function E.draw(s)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     host(2, h_draw, expand(s, 0, 2))
   end
 
@@ -268,21 +275,21 @@ function M.install(E, rt)
     return n * elem
   end
   function E.get_into(x1, y1, x2, y2, arr, at, elem)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     local b = host(2, h_get, rt.coord(x1, 2), rt.coord(y1, 2), rt.coord(x2, 2), rt.coord(y2, 2))
     if room(arr, at, elem or 2, 2) < b.bytes then error(IFC, 2) end
     blocks[arr] = blocks[arr] or {}
     blocks[arr][key_of(at)] = b
   end
   function E.put_from(x, y, arr, at, action)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     local b = blocks[arr] and blocks[arr][key_of(at)]
     if not b then error(IFC .. " (PUT of an array element no GET stored a block in)", 2) end
     host(2, h_put, rt.coord(x, 2), rt.coord(y, 2), b, action)
   end
 
   function E.pmap(v, n)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     n = to_int(n, -32768, 32767, 2)
     if n < 0 or n > 3 then error(IFC, 2) end
     local r = host(2, h_pmap, v, n)
@@ -294,32 +301,37 @@ function M.install(E, rt)
     local r = h_pmap(n == 0 and x or y, n)
     return r
   end
+end
 
+local function install_clock(E, rt, S)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the clock ------------------------------------------------------------------------
-  local clock = 0
   function E.timer()
-    local t = clock
-    clock = clock + M.TICK
+    local t = S.clock
+    S.clock = S.clock + M.TICK
     return rt.f32(t)
   end
   function E.sleep(n)
     if n ~= nil then
       n = to_int(n, -2147483648, 2147483647, 2)
-      if n > 0 then clock = clock + n end
+      if n > 0 then S.clock = S.clock + n end
     end
   end
   function E.beep() end
   function E.sound(freq, ticks)
     if freq - freq ~= 0 or ticks - ticks ~= 0 then error(IFC, 2) end
     if (freq ~= 0 and (freq < 37 or freq > 32767)) or ticks < 0 or ticks > 65535 then error(IFC, 2) end
-    clock = clock + ticks * M.TICK
+    S.clock = S.clock + ticks * M.TICK
   end
   function E.play(_) end
   function E.key_def(n, _)
     n = to_int(n, -32768, 32767, 2)
     if n < 1 or n > 31 then error(IFC, 2) end
   end
+end
 
+local function install_keyboard(E, rt, S)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the keyboard ---------------------------------------------------------------------
   local input = io.stdin
   local pending = ""         -- characters of standard input not yet taken
@@ -347,7 +359,7 @@ function M.install(E, rt)
       empty_polls, total_empty = 0, 0
       return c
     end
-    clock = clock + M.TICK
+    S.clock = S.clock + M.TICK
     empty_polls, total_empty = empty_polls + 1, total_empty + 1
     if total_empty > M.GIVE_UP_POLLS then
       io.stderr:write(rt.chunkname .. ": the program keeps waiting for a key and the input has run out: ended\n")
@@ -439,6 +451,16 @@ function M.install(E, rt)
     local n = tonumber(l or "") or 0
     E.randomize(n)
   end
+end
+
+function M.install(E, rt)
+  local S = { clock = 0, tx = { row = 1, col = 1, top = 1, bottom = 25, rows = 25, cols = 80,
+    pages = 1, active = 0, visual = 0 } }
+  install_text(E, rt, S)
+  install_modes(E, rt, S)
+  install_draw(E, rt)
+  install_clock(E, rt, S)
+  install_keyboard(E, rt, S)
 end
 
 return M
