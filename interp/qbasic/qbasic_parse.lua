@@ -23,6 +23,12 @@ local M = {}
 local function split_lines(source)
   local lines = {}
   source = source:gsub("^\239\187\191", "")     -- a UTF-8 byte-order mark
+  -- DOS files: QBasic and GW-BASIC stop reading at the end-of-file byte Ctrl-Z (0x1A); a line
+  -- ends at CR LF, LF or a CR alone (old Macintosh and some GW-BASIC listings)
+  source = source:match("^[^\26]*")
+  if source:find("\r[^\n]") or source:sub(-1) == "\r" then
+    source = source:gsub("\r\n", "\n"):gsub("\r", "\n")
+  end
   for l in (source .. "\n"):gmatch("([^\n]*)\n") do
     lines[#lines + 1] = l:gsub("\r", "")
   end
