@@ -79,11 +79,13 @@ K.FUNCS = {
   pmap = { args = { "n", "n" }, ty = "single" },
   ["varptr$"] = { args = { "x" }, ty = "string", lua = "varptr" },
   lbound = { args = { "arr", "?n" }, ty = "long" }, ubound = { args = { "arr", "?n" }, ty = "long" },
+  -- the emulated PC (qbasic_hw.lua): ports and memory
+  inp = { args = { "n" }, ty = "int" }, peek = { args = { "n" }, ty = "int" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
-for w in ([[inkey$ input$ date$ time$ csrlin pos peek inp eof pmap fre varptr environ$ err erl
+for w in ([[inkey$ input$ date$ time$ csrlin pos eof pmap fre varptr environ$ err erl
   lof loc freefile cvi cvs cvl cvd mki$ mks$ mkl$ mkd$ stick strig pen play screen sadd lpos
   ioctl$ fileattr seek varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
@@ -95,6 +97,7 @@ end
 K.RT_STATEMENTS = {
   screen = "nnnn", locate = "nn", width = "nn", draw = "s", pcopy = "nn", sleep = "n",
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
+  out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n",
 }
 
 -- QBasic's strings are at most 32,767 characters
@@ -104,7 +107,7 @@ K.MAX_STRING = 32767
 K.UNSUPPORTED_STMTS = {
   open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", on = "ON",
   error = "ERROR", resume = "RESUME", chain = "CHAIN", common = "COMMON",
-  poke = "POKE", out = "OUT", wait = "WAIT", shell = "SHELL",
+  shell = "SHELL",
   kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
   rmdir = "RMDIR", field = "FIELD", lset = "LSET", rset = "RSET", seek = "SEEK",
   clear = "CLEAR", run = "RUN", tron = "TRON", troff = "TROFF", bload = "BLOAD",

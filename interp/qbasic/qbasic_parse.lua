@@ -619,7 +619,10 @@ local function type_line(P)
 end
 function STMT.def(P)
   local n = P:next()
-  if n.t == "kw" and n.v == "seg" then P:unsupported("DEF SEG") end
+  if n.t == "kw" and n.v == "seg" then   -- DEF SEG [= segment]: PEEK and POKE's segment
+    if not P:accept_op("=") then return rtcall(P, "def_seg", {}) end
+    return rtcall(P, "def_seg", { P:expr() })
+  end
   if n.t ~= "id" or n.v:sub(1, 2) ~= "fn" then P:err() end
   local proc = begin_proc(P, "deffn", n)
   for _, p in ipairs(proc.params) do if p.array then P:err() end end
@@ -715,6 +718,21 @@ function STMT.sleep(P)
   return rtcall(P, "sleep", { P:expr() })
 end
 function STMT.beep(P) return rtcall(P, "beep", {}) end
+-- the emulated PC's ports and memory (qbasic_hw.lua)
+local function two_args(P, fn)
+  local a = P:expr()
+  P:expect_op(",")
+  return rtcall(P, fn, { a, P:expr() })
+end
+function STMT.out(P) return two_args(P, "out_port") end
+function STMT.poke(P) return two_args(P, "poke") end
+function STMT.wait(P)
+  local a = P:expr()
+  P:expect_op(",")
+  local args = { a, P:expr() }
+  if P:accept_op(",") then args[3] = P:expr() end
+  return rtcall(P, "wait_port", args)
+end
 function STMT.sound(P)
   local f = P:expr()
   P:expect_op(",")

@@ -26,7 +26,9 @@ M.names = {
   "mid_set", "static_new", "qprint_using",
 }
 local screen_rt = require("qbasic_screen")
+local hw_rt = require("qbasic_hw")
 for _, n in ipairs(screen_rt.names) do M.names[#M.names + 1] = n end
+for _, n in ipairs(hw_rt.names) do M.names[#M.names + 1] = n end
 
 local radix_value = require("qbasic_lex").radix_value
 local floor, huge = math.floor, math.huge
@@ -597,6 +599,7 @@ local function install_drawing(E, R)
       m = to_int(m, -32768, 32767, 2)
       if m == 0 then
         R.mode = 0
+        R.window_on, R.view_on = false, false
         R.rt.text_mode(nil)
       elseif m == R.mode then
         -- the same mode again (SCREEN 7, , p, 1 - p in an animation loop): no new screen
@@ -605,6 +608,8 @@ local function install_drawing(E, R)
         R.mode = m
         R.info = R.rt.mode_info(m)
         R.ncolors = R.info.colors
+        R.window_on, R.view_on = false, false
+        R.rt.dac_reset(m)
         R.rt.text_mode(R.info)
       elseif m == 3 or m == 4 or m == 8 or m == 10 or m == 11 then
         error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 12 and 13 are)", 2)
@@ -629,13 +634,14 @@ local function install_drawing(E, R)
   end
   function E.palette(attr, c)
     if R.mode == 0 then return end
-    if attr == nil then h_palette() return end
+    if attr == nil then h_palette() R.rt.dac_reset(R.mode) return end
     attr = colour(attr, 2)
     if R.mode ~= 12 and R.mode ~= 13 then R.rt.palette_other(R.mode, attr, c, 2) return end
     c = to_int(c, -2147483648, 2147483647, 2)
     if c == -1 then return end
     if c < 0 or c > 0x3F3F3F or (c & 0xC0C0C0) ~= 0 then error(IFC, 2) end
     h_palette(attr, c)
+    R.rt.dac_set(R.mode, attr, c)
   end
   function E.pset(x, y, c)
     graphics(2)
@@ -696,13 +702,15 @@ local function install_drawing(E, R)
   end
   function E.window(x1, y1, x2, y2, screen)
     graphics(2)
-    if x1 == nil then h_window() return end
+    if x1 == nil then h_window() R.window_on = false return end
     if x1 == x2 or y1 == y2 then error(IFC, 2) end
+    R.window_on = true
     h_window(coord(x1, 2), coord(y1, 2), coord(x2, 2), coord(y2, 2), screen)
   end
   function E.view(x1, y1, x2, y2, fill, border, screen)
     graphics(2)
-    if x1 == nil then h_view() return end
+    if x1 == nil then h_view() R.view_on = false return end
+    R.view_on = true
     local w, h = R.info.width, R.info.height
     for _, v in ipairs({ x1, x2 }) do if v < 0 or v >= w then error(IFC, 2) end end
     for _, v in ipairs({ y1, y2 }) do if v < 0 or v >= h then error(IFC, 2) end end
@@ -751,6 +759,7 @@ local function install_run(E, R)
       return 0
     end })
     qb.seed(327680)
+    R.src = dbg and dbg.getinfo(program, "S").short_src
     local ok, err = xpcall(program, qbasic_message_for(R.chunkname, program))
     if not ok and err ~= STOP then error(err, 0) end
   end
@@ -777,7 +786,17 @@ function M.new(host, chunkname)
   rt.coord = coord
   rt.get_mode = function() return R.mode end
   rt.qwrite = function(s) R.write(s) end
+  rt.window_or_view = function() return R.window_on or R.view_on end
+  -- the program's line being run (for notes on standard error)
+  rt.program_line = function()
+    for level = 2, 200 do
+      local info = dbg and dbg.getinfo(level, "Sl")
+      if not info then break end
+      if info.short_src == R.src and info.currentline > 0 then return info.currentline end
+    end
+  end
   screen_rt.install(E, rt)
+  hw_rt.install(E, rt)
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
   install_run(E, R)

@@ -304,6 +304,8 @@ local function install_draw(E, rt)
 end
 
 local function install_clock(E, rt, S)
+  rt.clock = function() return S.clock end
+  rt.advance = function(dt) S.clock = S.clock + dt end
   local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the clock ------------------------------------------------------------------------
   function E.timer()
@@ -330,6 +332,13 @@ local function install_clock(E, rt, S)
   end
 end
 
+-- --input's names of the keys that are no character, delivered as one INKEY$ key
+local KEY_NAMES = { UP = "\0H", DOWN = "\0P", LEFT = "\0K", RIGHT = "\0M", HOME = "\0G",
+  END = "\0O", PGUP = "\0I", PGDN = "\0Q", INS = "\0R", DEL = "\0S", F1 = "\0;", F2 = "\0<",
+  F3 = "\0=", F4 = "\0>", F5 = "\0?", F6 = "\0@", F7 = "\0A", F8 = "\0B", F9 = "\0C",
+  F10 = "\0D", F11 = "\0\133", F12 = "\0\134", ESC = "\27", ENTER = "\r", TAB = "\t",
+  BKSP = "\8" }
+
 local function install_keyboard(E, rt, S)
   local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the keyboard ---------------------------------------------------------------------
@@ -350,26 +359,53 @@ local function install_keyboard(E, rt, S)
     pending = ""
     return l
   end
-  function E.inkey()
+  -- the next key of the input: a character (Enter is CHR$(13)), an extended key as
+  -- CHR$(0) + its code (the bytes 0 and the code, or a name in braces: {RIGHT}, {F1}), or nil
+  local function take_key()
     fill()
-    if pending ~= "" then
-      local c = pending:sub(1, 1)
-      pending = pending:sub(2)
-      if c == "\n" then c = "\r" end       -- Enter is CHR$(13)
-      empty_polls, total_empty = 0, 0
-      return c
+    if pending == "" then return nil end
+    local name = pending:match("^{(%u+%d*)}")
+    local k
+    if name and KEY_NAMES[name] then
+      k, pending = KEY_NAMES[name], pending:sub(#name + 3)
+    elseif pending:byte(1) == 0 and #pending >= 2 then
+      k, pending = pending:sub(1, 2), pending:sub(3)
+    else
+      k, pending = pending:sub(1, 1), pending:sub(2)
+      if k == "\n" then k = "\r" end
     end
+    empty_polls, total_empty = 0, 0
+    S.last_key = k
+    return k
+  end
+  rt.take_key = take_key
+  -- a poll that found no key: a tick of the clock; true when it is time for the Enter that
+  -- answers "press any key"; a program still polling long after the input ended is ended
+  local function empty_poll()
     S.clock = S.clock + M.TICK
     empty_polls, total_empty = empty_polls + 1, total_empty + 1
     if total_empty > M.GIVE_UP_POLLS then
       io.stderr:write(rt.chunkname .. ": the program keeps waiting for a key and the input has run out: ended\n")
       E.stop()
     end
-    if empty_polls >= M.EMPTY_POLLS then
+    if empty_polls > M.EMPTY_POLLS then
       empty_polls = 0
-      return "\r"
+      return true
     end
+  end
+  rt.empty_poll = empty_poll
+  function E.inkey()
+    local k = take_key()
+    if k then return k end
+    if empty_poll() then return "\r" end
     return ""
+  end
+  -- INPUT, LINE INPUT and INPUT$ with no input left: nobody will answer, so the program ends
+  -- there (normally: the picture is written), saying so
+  local function input_ended(what)
+    io.stderr:write(rt.chunkname .. ":" .. (rt.program_line() or "?") .. ": input ended (" .. what
+      .. " with no input left): the program is ended\n")
+    E.stop()
   end
   function E.input_chars(n, file)
     if file ~= nil then error("INPUT$ from a file: not supported by pointcalc", 2) end
@@ -378,7 +414,9 @@ local function install_keyboard(E, rt, S)
     local t = {}
     for i = 1, n do
       fill()
-      if pending == "" then t[i] = "\r"
+      if pending == "" then
+        if i == 1 then input_ended("INPUT$") end
+        t[i] = "\r"
       else
         t[i] = pending:sub(1, 1) == "\n" and "\r" or pending:sub(1, 1)   -- Enter is CHR$(13)
         pending = pending:sub(2)
@@ -391,7 +429,11 @@ local function install_keyboard(E, rt, S)
     rt.qwrite(prompt .. answer .. (same_line and "" or "\n"))
   end
   function E.line_input(prompt, same_line)
-    local l = read_line() or ""
+    local l = read_line()
+    if not l then
+      echo(prompt or "", "", same_line)
+      input_ended("LINE INPUT")
+    end
     echo(prompt or "", l, same_line)
     return { l }
   end
@@ -425,9 +467,7 @@ local function install_keyboard(E, rt, S)
       local l = read_line()
       if not l then
         echo(p, "", same_line)
-        local r = {}
-        for i, k in ipairs(kinds) do r[i] = k == "s" and "" or 0 end
-        return r
+        input_ended("INPUT")
       end
       echo(p, l, same_line)
       local f = fields(l)

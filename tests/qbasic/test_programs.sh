@@ -14,6 +14,7 @@ for bas in "$QB_DIR"/progs/*.bas; do
     [ -f "$QB_DIR/progs/$name.in" ] && input="$QB_DIR/progs/$name.in"
     run "$POINTCALC" "$name.bas" -o "$name.ppm" < "$input"
     expect_rc 0 "$name"
+    cp err.txt "$name.err"
     check
     if ! diff -u "$QB_DIR/progs/$name.out" out.txt >diff.txt; then
         fail "$name: output differs from $name.out:"
@@ -48,6 +49,23 @@ expect_eq "$(ppm_pixel tiles.ppm 320 100)" "ffffff" "tile row 0, x mod 8 = 0: on
 expect_eq "$(ppm_pixel tiles.ppm 321 100)" "000000" "tile row 0, x mod 8 = 1: off"
 expect_eq "$(ppm_pixel tiles.ppm 322 101)" "ffffff" "tile row 1, x mod 8 = 2: on"
 expect_eq "$(ppm_pixel tiles.ppm 500 145)" "ffffff" "DRAW A1 R24 in SCREEN 2: 10 pixels up"
+
+# vga.bas (SCREEN 13) wrote DAC entries 1-3 through the ports: orange (63, 32, 0), dark blue
+# (0, 0, 20), green (0, 40, 0), 6-bit levels widened as the VGA does (v * 4 + v \ 16); it
+# POKEd pixels of colour 40 (the default DAC's red) into video memory at row 150
+expect_eq "$(px320 vga.ppm 50 110)" "ff8200" "OUT &H3C9 changes the palette of the picture"
+expect_eq "$(px320 vga.ppm 150 110)" "000051" "the DAC write index moves on: entry 2"
+expect_eq "$(px320 vga.ppm 250 110)" "00a200" "the DAC write index moves on: entry 3"
+expect_eq "$(px320 vga.ppm 25 150)" "ff0000" "POKE into &HA000 sets a pixel"
+expect_eq "$(px320 vga.ppm 60 150)" "000000" "POKE: only the pixels written"
+# vga12.bas: in SCREEN 12 DAC entry 6 is no attribute's (brown stays), entry 62 is attribute 14's
+expect_eq "$(ppm_pixel vga12.ppm 50 110)" "aa5500" "SCREEN 12: attribute 6 shows DAC entry 20"
+expect_eq "$(ppm_pixel vga12.ppm 150 110)" "8282ff" "SCREEN 12: attribute 14 shows DAC entry 62"
+
+# the end of the input: INPUT with nothing left to read ends keyboard.bas at line 23, normally,
+# saying so
+expect_in keyboard.err "keyboard.bas:23: input ended (INPUT with no input left): the program is ended" \
+    "INPUT at the end of the input"
 
 # --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
 cp "$QB_DIR/progs/keyboard.bas" kb.bas
