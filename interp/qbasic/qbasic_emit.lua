@@ -255,6 +255,19 @@ end
 local STMT = {}
 function STMT.label(S, st)
   if S.prog.goto_targets[st.name] then S.E(st.line, "::" .. label_lua(st.name) .. "::") end
+  if st.name:match("^%d+$") then S.erl = st.name end   -- ERL: the last line number before
+end
+-- ON ERROR GOTO label | 0, RESUME: the handler is a subroutine (qbasic_control) the runtime's
+-- trap calls; RESUME returns what to do to the trap, which runs the failed statement again,
+-- goes on after it, or returns the label for the statement's own code to jump to
+function STMT.onerror(S, st)
+  S.E(st.line, "on_error(" .. (st.label and S.prog.gosub_lua[st.label] or "nil") .. ")")
+end
+function STMT.resume(S, st)
+  local what = st.what == "label" and st.label or st.what
+  local code = "resume_ok(" .. X.lua_string(what) .. ")"
+  if S.cur_region and S.cur_region.handler then code = "do return " .. code .. " end" end
+  S.E(st.line, code)
 end
 function STMT.let(S, st)
   S.E(st.line, X.lvalue(st.target) .. " = " .. X.store(st.expr, st.target))
@@ -443,7 +456,13 @@ local function emit_region(S, r)
   S.cur_region = nil
   S.loops = saved_loops
   local end_line, tail
-  if r.return_line then
+  if r.open_end then
+    -- no RETURN: the subroutine runs to the end of the program, which it ends
+    S.uses_stop = true
+    end_line = r.end_line or #S.prog.lines
+    tail = "stop() end goto " .. r.next_def .. " ::" .. r.skip_label .. ":: " .. r.lua
+      .. "() return_without_gosub()"
+  elseif r.return_line then
     end_line = r.return_line
     tail = "end goto " .. r.next_def .. " ::" .. r.skip_label .. ":: " .. r.lua
       .. "() return_without_gosub()"
@@ -458,10 +477,48 @@ end
 
 STMT.procdef, STMT.region = emit_proc, emit_region
 
+-- In a program with an error handler, each statement of the module that can fail runs under
+-- trap(function() ... end, ERL) (the runtime's); an error in a SUB or FUNCTION is trapped at
+-- the module's statement that called it, as QBasic resumes there.
+local TRAPPED = { let = true, print = true, print_using = true, rtcall = true, cls = true,
+  color = true, palette = true, pset = true, preset = true, line = true, circle = true,
+  paint = true, window = true, view = true, input = true, getput = true, call = true,
+  dim = true, static = true, erase = true, midset = true, read = true, restore = true,
+  randomize = true, swap = true, gosub = true }
+local function emit_trapped(S, st, f)
+  local parts = {}
+  local sink = S.sink
+  S.sink = function(line, s)
+    if line ~= st.line then error("internal: a trapped statement spans lines") end
+    parts[#parts + 1] = s
+  end
+  f(S, st)
+  S.sink = sink
+  if #parts == 0 then return end
+  local code = "trap(function() " .. table.concat(parts, " ") .. " end, " .. S.erl .. ")"
+  local labels = {}
+  for l in pairs(S.prog.resume_targets) do labels[#labels + 1] = l end
+  if #labels > 0 then
+    -- RESUME label: the jump is the statement's own (the label is at the top level)
+    table.sort(labels)
+    local t = { "do local _r = " .. code .. " if _r then" }
+    if not S.cur_region then
+      for _, l in ipairs(labels) do
+        t[#t + 1] = "if _r == " .. X.lua_string(l) .. " then goto " .. label_lua(l) .. " end"
+      end
+    end
+    t[#t + 1] = "resume_at(_r) end end"
+    code = table.concat(t, " ")
+  end
+  S.E(st.line, code)
+end
+
 emit_block = function(S, list)
   for _, st in ipairs(list) do
     local f = STMT[st.k]
-    if f then f(S, st)
+    if f then
+      if S.trapping and not S.cur_proc and TRAPPED[st.k] then emit_trapped(S, st, f)
+      else f(S, st) end
     elseif not NOTHING[st.k] then error("cannot emit statement " .. st.k) end
   end
 end
@@ -474,7 +531,9 @@ function M.emit(prog, chunkname)
   for i = 1, #prog.lines do out[i] = {} end
   local S = { prog = prog, out = out, cur_proc = nil, cur_region = nil, exit_count = 0,
     uses_stop = false, loops = { { kind = "fn" } } }
-  function S.E(line, s) local o = out[line]; o[#o + 1] = s end
+  function S.sink(line, s) local o = out[line]; o[#o + 1] = s end
+  function S.E(line, s) S.sink(line, s) end
+  S.trapping, S.erl = next(prog.handlers) ~= nil, "0"
   X.install(prog)
   G.install(prog, S.E)
   emit_block(S, prog.main)

@@ -81,11 +81,13 @@ K.FUNCS = {
   lbound = { args = { "arr", "?n" }, ty = "long" }, ubound = { args = { "arr", "?n" }, ty = "long" },
   -- the emulated PC (qbasic_hw.lua): ports and memory
   inp = { args = { "n" }, ty = "int" }, peek = { args = { "n" }, ty = "int" },
+  -- error trapping: the number of the error being handled and the line number it came from
+  err = { args = {}, ty = "int", lua = "err_" }, erl = { args = {}, ty = "long", lua = "erl_" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
-for w in ([[inkey$ input$ date$ time$ csrlin pos eof pmap fre varptr environ$ err erl
+for w in ([[inkey$ input$ date$ time$ csrlin pos eof pmap fre varptr environ$
   lof loc freefile cvi cvs cvl cvd mki$ mks$ mkl$ mkd$ stick strig pen play screen sadd lpos
   ioctl$ fileattr seek varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
@@ -97,7 +99,7 @@ end
 K.RT_STATEMENTS = {
   screen = "nnnn", locate = "nn", width = "nn", draw = "s", pcopy = "nn", sleep = "n",
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
-  out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n",
+  out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n", error_n = "n",
 }
 
 -- QBasic's strings are at most 32,767 characters
@@ -106,7 +108,7 @@ K.MAX_STRING = 32767
 -- statements pointcalc knows but does not implement: named in the error
 K.UNSUPPORTED_STMTS = {
   open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", on = "ON",
-  error = "ERROR", resume = "RESUME", chain = "CHAIN", common = "COMMON",
+  chain = "CHAIN", common = "COMMON",
   shell = "SHELL",
   kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
   rmdir = "RMDIR", field = "FIELD", lset = "LSET", rset = "RSET", seek = "SEEK",

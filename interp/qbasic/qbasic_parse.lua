@@ -528,12 +528,29 @@ function STMT.case(P)
 end
 STMT["goto"] = function(P) return add(P, { k = "goto", label = P:label_name(P:next()) }) end
 function STMT.gosub(P) return add(P, { k = "gosub", label = P:label_name(P:next()) }) end
+-- RESUME [0 | NEXT | label]: back from the error handler
+function STMT.resume(P)
+  if P:at_end() then return add(P, { k = "resume", what = "retry" }) end
+  if P:accept_kw("next") then return add(P, { k = "resume", what = "next" }) end
+  local t = P:next()
+  if t.t == "num" and t.v == 0 then return add(P, { k = "resume", what = "retry" }) end
+  return add(P, { k = "resume", what = "label", label = P:label_name(t) })
+end
+function STMT.error(P) return rtcall(P, "error_n", { P:expr() }) end
 STMT["return"] = function(P)
   if not P:at_end() then P:unsupported("RETURN with a line number") end
   return add(P, { k = "return" })
 end
+-- ON ERROR GOTO label | 0: the error handler (qbasic_control makes it a subroutine)
+local function on_error(P)
+  P:expect_kw("goto")
+  local t = P:next()
+  if t.t == "num" and t.v == 0 then return add(P, { k = "onerror" }) end
+  return add(P, { k = "onerror", label = P:label_name(t) })
+end
 function STMT.on(P)
-  for _, w in ipairs({ "error", "key", "timer", "pen", "play", "strig", "com" }) do
+  if P:accept_kw("error") then return on_error(P) end
+  for _, w in ipairs({ "key", "timer", "pen", "play", "strig", "com" }) do
     if P:is_kw(w) then P:unsupported("ON " .. w:upper()) end
   end
   local e = P:expr()

@@ -23,7 +23,8 @@ M.names = {
   "pset", "preset", "line", "line_to", "circle", "paint", "point", "window", "view", "step_xy",
   "stop", "return_without_gosub", "on_index", "run", "case", "on", "start", "_ENV", "_",
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
-  "mid_set", "static_new", "qprint_using",
+  "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
+  "error_n", "err_", "erl_",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -765,6 +766,79 @@ local function install_run(E, R)
   end
 end
 
+-- ---- error trapping (ON ERROR GOTO, RESUME, ERR, ERL, ERROR n) ----------------------------
+-- QBasic's error numbers of its messages (the QBasic 1.1 manual's table)
+local ERRORS = { [1] = "NEXT without FOR", [2] = "Syntax error", [3] = "RETURN without GOSUB",
+  [4] = "Out of DATA", [5] = "Illegal function call", [6] = "Overflow", [7] = "Out of memory",
+  [8] = "Label not defined", [9] = "Subscript out of range", [10] = "Duplicate definition",
+  [11] = "Division by zero", [12] = "Illegal in direct mode", [13] = "Type mismatch",
+  [14] = "Out of string space", [16] = "String formula too complex", [17] = "Cannot continue",
+  [18] = "Function not defined", [19] = "No RESUME", [20] = "RESUME without error",
+  [24] = "Device timeout", [25] = "Device fault", [26] = "FOR without NEXT",
+  [27] = "Out of paper", [29] = "WHILE without WEND", [30] = "WEND without WHILE",
+  [33] = "Duplicate label", [35] = "Subprogram not defined", [37] = "Argument-count mismatch",
+  [38] = "Array not defined", [40] = "Variable required", [50] = "FIELD overflow",
+  [51] = "Internal error", [52] = "Bad file name or number", [53] = "File not found",
+  [54] = "Bad file mode", [55] = "File already open", [56] = "FIELD statement active",
+  [57] = "Device I/O error", [58] = "File already exists", [59] = "Bad record length",
+  [61] = "Disk full", [62] = "Input past end of file", [63] = "Bad record number",
+  [64] = "Bad file name", [67] = "Too many files", [68] = "Device unavailable",
+  [69] = "Communication-buffer overflow", [70] = "Permission denied", [71] = "Disk not ready",
+  [72] = "Disk-media error", [73] = "Advanced feature unavailable", [74] = "Rename across disks",
+  [75] = "Path/File access error", [76] = "Path not found" }
+local ERROR_NUMBER = {}
+for n, msg in pairs(ERRORS) do ERROR_NUMBER[msg] = n end
+M.ERRORS = ERRORS
+-- the number of a runtime error: its message without the location and the host's reason in
+-- parentheses; nil for what QBasic has no number for (a feature pointcalc lacks, a limit)
+local function error_number(e)
+  if type(e) ~= "string" then return nil end
+  local msg = e:gsub("^[^\n]-:%d+: ", "")
+  if msg:find("stack overflow", 1, true) then return 28 end     -- Out of stack space
+  if msg:find("not enough memory", 1, true) then return 7 end
+  msg = msg:gsub(" %(.*$", "")
+  return ERROR_NUMBER[msg] or msg:match("^Unprintable error (%d+)$") and tonumber(msg:match("%d+"))
+end
+
+local function install_errors(E, R)
+  -- R.handler: the handler's subroutine (nil: errors end the program); R.err, R.erl: ERR, ERL
+  R.err, R.erl = 0, 0
+  function E.on_error(fn)
+    if fn == nil and R.in_handler then error(R.error, 0) end   -- ON ERROR GOTO 0 in the handler
+    R.handler = fn
+  end
+  -- a statement of the module: run f; on a trappable error with a handler in force, the handler
+  -- runs and says what next (RESUME: f again, RESUME NEXT: on, RESUME label: the label)
+  function E.trap(f, erl)
+    while true do
+      local ok, e = pcall(f)
+      if ok then return nil end
+      local n = R.handler and not R.in_handler and error_number(e)
+      if not n then error(e, 0) end
+      R.err, R.erl, R.error, R.in_handler = n, erl, e, true
+      local what = R.handler()
+      R.in_handler, R.err = false, 0
+      if what == nil then error("No RESUME", 2) end
+      if what == "next" then return nil end
+      if what ~= "retry" then return what end
+    end
+  end
+  function E.resume_ok(what)
+    if not R.in_handler then error("RESUME without error", 2) end
+    return what
+  end
+  function E.resume_at(label)
+    error("RESUME " .. tostring(label) .. ": the line is not where this statement can jump to", 2)
+  end
+  function E.err_() return R.err end
+  function E.erl_() return R.erl end
+  function E.error_n(n)
+    n = to_int(n, -32768, 32767, 2)
+    if n < 1 or n > 255 then error(IFC, 2) end
+    error(ERRORS[n] or ("Unprintable error " .. n), 2)
+  end
+end
+
 function M.new(host, chunkname)
   local E = {}
   for k, f in pairs(PURE) do E[k] = f end
@@ -777,6 +851,7 @@ function M.new(host, chunkname)
   install_data(E, R)
   install_print(E, R)
   install_drawing(E, R)
+  install_errors(E, R)
   function E.stop() error(STOP, 0) end
 
   -- the screen as a text device, the keyboard and the clock (qbasic_screen.lua)
