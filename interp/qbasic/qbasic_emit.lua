@@ -371,6 +371,10 @@ function STMT.restore(S, st)
 end
 STMT.call = emit_call
 function STMT.randomize(S, st) S.E(st.line, "randomize(" .. value(st.expr, 0) .. ")") end
+function STMT.justify(S, st)
+  local t = X.lvalue(st.target)
+  S.E(st.line, t .. " = " .. (st.right and "rset" or "lset") .. "(" .. t .. ", " .. value(st.expr, 0) .. ")")
+end
 function STMT.swap(S, st)
   local a, b = X.lvalue(st.a), X.lvalue(st.b)
   S.E(st.line, a .. ", " .. b .. " = " .. b .. ", " .. a)
@@ -484,7 +488,7 @@ local TRAPPED = { let = true, print = true, print_using = true, rtcall = true, c
   color = true, palette = true, pset = true, preset = true, line = true, circle = true,
   paint = true, window = true, view = true, input = true, getput = true, call = true,
   dim = true, static = true, erase = true, midset = true, read = true, restore = true,
-  randomize = true, swap = true, gosub = true }
+  randomize = true, swap = true, gosub = true, justify = true }
 local function emit_trapped(S, st, f)
   local parts = {}
   local sink = S.sink

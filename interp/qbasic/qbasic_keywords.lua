@@ -83,12 +83,19 @@ K.FUNCS = {
   inp = { args = { "n" }, ty = "int" }, peek = { args = { "n" }, ty = "int" },
   -- error trapping: the number of the error being handled and the line number it came from
   err = { args = {}, ty = "int", lua = "err_" }, erl = { args = {}, ty = "long", lua = "erl_" },
+  -- numbers as the bytes QBasic stores them (records of random files), and back
+  ["mki$"] = { args = { "n" }, ty = "string", lua = "mki" },
+  ["mkl$"] = { args = { "n" }, ty = "string", lua = "mkl" },
+  ["mks$"] = { args = { "n" }, ty = "string", lua = "mks" },
+  ["mkd$"] = { args = { "n" }, ty = "string", lua = "mkd" },
+  cvi = { args = { "s" }, ty = "int" }, cvl = { args = { "s" }, ty = "long" },
+  cvs = { args = { "s" }, ty = "single" }, cvd = { args = { "s" }, ty = "double" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
 for w in ([[inkey$ input$ date$ time$ csrlin pos eof pmap fre varptr environ$
-  lof loc freefile cvi cvs cvl cvd mki$ mks$ mkl$ mkd$ stick strig pen play screen sadd lpos
+  lof loc freefile stick strig pen play screen sadd lpos
   ioctl$ fileattr seek varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
 end
@@ -111,7 +118,7 @@ K.UNSUPPORTED_STMTS = {
   chain = "CHAIN", common = "COMMON",
   shell = "SHELL",
   kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
-  rmdir = "RMDIR", field = "FIELD", lset = "LSET", rset = "RSET", seek = "SEEK",
+  rmdir = "RMDIR", field = "FIELD", seek = "SEEK",
   clear = "CLEAR", run = "RUN", tron = "TRON", troff = "TROFF", bload = "BLOAD",
   bsave = "BSAVE", ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
   timer = "TIMER ON/OFF", strig = "STRIG", pen = "PEN", com = "COM", signal = "SIGNAL",

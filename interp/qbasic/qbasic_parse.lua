@@ -683,6 +683,14 @@ function STMT.randomize(P)
   if P:at_end() then return rtcall(P, "randomize_ask", {}) end
   return add(P, { k = "randomize", expr = P:expr() })
 end
+-- LSET a$ = b$, RSET a$ = b$: b$ left or right in a$'s length (padded with spaces, cut)
+local function justify(P, right)
+  local target = P:lvalue()
+  P:expect_op("=")
+  return add(P, { k = "justify", right = right, target = target, expr = P:expr() })
+end
+function STMT.lset(P) return justify(P, false) end
+function STMT.rset(P) return justify(P, true) end
 function STMT.swap(P)
   local a = P:lvalue()
   P:expect_op(",")

@@ -302,6 +302,7 @@ function CHECK.call(R, st)
   for _, a in ipairs(st.args) do expr(R, a) end
   R.calls[#R.calls + 1] = { node = st, line = R.line, sub = true }
 end
+function CHECK.justify(R, st) str(R, st.target); str(R, st.expr) end
 function CHECK.swap(R, st)
   expr(R, st.a); expr(R, st.b)
   if st.a.ty ~= st.b.ty then err(R, "Type mismatch") end

@@ -24,7 +24,8 @@ M.names = {
   "stop", "return_without_gosub", "on_index", "run", "case", "on", "start", "_ENV", "_",
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
-  "error_n", "err_", "erl_",
+  "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
+  "rset",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -319,6 +320,34 @@ local function radix(n, fmt)
 end
 function PURE.hex(n) local r = radix(n, "%X") return r end
 function PURE.oct(n) local r = radix(n, "%o") return r end
+
+-- ---- numbers as bytes: MKI$ MKL$ MKS$ MKD$ and CVI CVL CVS CVD; LSET and RSET ------------------
+-- little-endian two's complement INTEGER and LONG, IEEE single (rounded as qb.f32) and double,
+-- as QBasic 1.1 and QuickBASIC 4.5 store them (the MBF forms are MKSMBF$ and friends)
+function PURE.mki(n) return string.pack("<i2", to_int(n, -32768, 32767, 2)) end
+function PURE.mkl(n) return string.pack("<i4", to_int(n, -2147483648, 2147483647, 2)) end
+function PURE.mks(x)
+  local r = f32(x)
+  if r - r ~= 0 then error("Overflow", 2) end
+  return string.pack("<f", r)
+end
+function PURE.mkd(x) return string.pack("<d", x) end
+local function cv(s, fmt, n)
+  if #s < n then error(IFC, 3) end
+  return (string.unpack(fmt, s))
+end
+function PURE.cvi(s) local r = cv(s, "<i2", 2) return r end
+function PURE.cvl(s) local r = cv(s, "<i4", 4) return r end
+function PURE.cvs(s) local r = cv(s, "<f", 4) return r end
+function PURE.cvd(s) local r = cv(s, "<d", 8) return r end
+function PURE.lset(old, s)
+  if #s >= #old then return s:sub(1, #old) end
+  return s .. string.rep(" ", #old - #s)
+end
+function PURE.rset(old, s)
+  if #s >= #old then return s:sub(1, #old) end
+  return string.rep(" ", #old - #s) .. s
+end
 
 -- ---- arrays -----------------------------------------------------------------------------
 -- Tables prefilled over their bounds; a missing key means a fractional or out-of-range
