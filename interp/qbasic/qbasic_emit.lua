@@ -639,6 +639,12 @@ function M.assemble(prog, chunkname, out, uses_stop)
 
   local prelude = "local _ENV = require(\"qbasic_rt\").new(_ENV, " .. X.lua_string(chunkname)
     .. ") return run(function()"
+  if #prog.direct > 0 then
+    -- GW-BASIC direct-mode lines: named on standard error when the program starts
+    local t = {}
+    for _, d in ipairs(prog.direct) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.text) end
+    prelude = prelude .. " direct_lines(" .. table.concat(t, ", ") .. ")"
+  end
   if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
   local result = {}
   for i = 1, #lines do

@@ -20,6 +20,11 @@ local blocks = require "qbasic_blocks"
 
 local M = {}
 
+-- GW-BASIC's direct-mode commands: a line of a numbered listing without a number that starts
+-- with one of them was typed at the prompt (SAVE "PROG", A), not part of the program
+local DIRECT = { save = true, load = true, list = true, llist = true, run = true, new = true,
+  auto = true, renum = true, delete = true, edit = true, cont = true, merge = true }
+
 local function split_lines(source)
   local lines = {}
   source = source:gsub("^\239\187\191", "")     -- a UTF-8 byte-order mark
@@ -842,8 +847,17 @@ function STMT.view_print(P)
 end
 
 -- ---- one statement ------------------------------------------------------------------------
+-- reserved words that begin no statement: QBasic's Syntax error (not "not supported")
+local NOT_STATEMENTS = {}
+for w in ([[then to step base is as access alias any append binary byval cdecl double integer
+  long single string output random preserve seg using until xor and or not mod eqv imp
+  off]]):gmatch("%S+") do NOT_STATEMENTS[w] = true end
 parse_statement = function(P, in_if)
   local t = P:peek()
+  if (t.t == "id" or t.t == "kw" and t.v == "list") and DIRECT[t.v] and not P.prog.subs[t.v]
+      and not P:is_op("=", 1) and not P:is_op("(", 1) then
+    P:err("Syntax error (" .. t.v:upper() .. " is a GW-BASIC command typed at the prompt, not a statement)")
+  end
   if t.t == "id" then
     -- assignment, or a SUB call without CALL
     if P.prog.subs[t.v] and not P:is_op("=", 1) then
@@ -862,18 +876,29 @@ parse_statement = function(P, in_if)
   P.pos = P.pos + 1
   local w = t.v
   if STMT[w] then return STMT[w](P, in_if) end
-  if w == "then" or w == "to" or w == "step" then P:err() end
+  if NOT_STATEMENTS[w] then P:err() end
   if K.UNSUPPORTED_STMTS[w] then P:unsupported(K.UNSUPPORTED_STMTS[w]) end
   if K.FUNCS[w] then P:err() end
   P:unsupported(w:upper())
 end
 
 -- ---- lines --------------------------------------------------------------------------------
+local function direct_line(prog, i)
+  local l = prog.lines[i]
+  local w = l:match("^%s*(%a+)")
+  if not (w and DIRECT[w:lower()] and prog.numbered) then return false end
+  local rest = l:sub(#l:match("^%s*%a+") + 1)
+  if rest:match("^%s*=") or rest:match("^%s*%(") or rest:match("^[%w$%%!#&.]") then return false end
+  prog.direct[#prog.direct + 1] = { line = i, text = l:match("^%s*(.-)%s*$") }
+  return true
+end
+
 local function parse_lines(P, all_toks)
   local prog = P.prog
   for i = 1, #prog.lines do
     P.lineno = i
     P.toks, P.pos = all_toks[i], 1
+    if direct_line(prog, i) then goto next_line end
     local t = P:peek()
     if P.in_type then
       type_line(P)
@@ -926,6 +951,10 @@ end
 function M.parse(source)
   local prog = { lines = split_lines(source), main = {}, procs = {}, data = {},
     data_labels = {}, labels = {}, label_list = {}, option_base = 0, types = {} }
+  prog.direct = {}
+  for _, l in ipairs(prog.lines) do
+    if l:match("^%s*%d") then prog.numbered = true break end   -- a GW-BASIC listing
+  end
   local all_toks = lex_all(prog)
   local P = expr_parser.cursor(prog)
   P.body = prog.main               -- where statements go

@@ -25,7 +25,7 @@ M.names = {
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
-  "rset",
+  "rset", "direct_lines",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -903,6 +903,13 @@ function M.new(host, chunkname)
   hw_rt.install(E, rt)
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
+  function E.direct_lines(...)
+    local t = { ... }
+    for i = 1, #t, 2 do
+      io.stderr:write(chunkname .. ":" .. t[i] .. ": " .. t[i + 1] .. ": a GW-BASIC direct-mode "
+        .. "command typed at the prompt, not part of the program: skipped\n")
+    end
+  end
   install_run(E, R)
   return E
 end

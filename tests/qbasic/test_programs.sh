@@ -67,6 +67,12 @@ expect_eq "$(ppm_pixel vga12.ppm 150 110)" "8282ff" "SCREEN 12: attribute 14 sho
 expect_in keyboard.err "keyboard.bas:23: input ended (INPUT with no input left): the program is ended" \
     "INPUT at the end of the input"
 
+# gwbasic.bas: the direct-mode commands between and after its numbered lines are skipped, each
+# named on standard error
+expect_in gwbasic.err 'gwbasic.bas:8: SAVE "GWDEMO.BAS",A: a GW-BASIC direct-mode command' \
+    "a GW-BASIC SAVE line is named"
+expect_eq "$(grep -c 'direct-mode command' gwbasic.err)" 3 "LIST, SAVE and RUN lines skipped"
+
 # --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
 cp "$QB_DIR/progs/keyboard.bas" kb.bas
 run "$POINTCALC" kb.bas --input "$QB_DIR/progs/keyboard.in" -o kb.ppm < /dev/null
