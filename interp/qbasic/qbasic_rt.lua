@@ -681,13 +681,19 @@ local function install_drawing(E, R)
     graphics(2)
     h_preset(coord(x, 2), coord(y, 2), colour(c, 2))
   end
-  function E.line(x1, y1, x2, y2, c, style)
-    graphics(2)
-    h_line(coord(x1, 2), coord(y1, 2), coord(x2, 2), coord(y2, 2), colour(c, 2), style)
+  -- LINE's style bits (an INTEGER: &HFF00 is -256) go to the drawing layer as 16 bits
+  local function bits(p, level)
+    if p == nil then return nil end
+    return to_int(p, -32768, 65535, level + 1) & 0xFFFF
   end
-  function E.line_to(x2, y2, c, style)
+  function E.line(x1, y1, x2, y2, c, style, pattern)
     graphics(2)
-    h_line_to(coord(x2, 2), coord(y2, 2), colour(c, 2), style)
+    h_line(coord(x1, 2), coord(y1, 2), coord(x2, 2), coord(y2, 2), colour(c, 2), style,
+      bits(pattern, 2))
+  end
+  function E.line_to(x2, y2, c, style, pattern)
+    graphics(2)
+    h_line_to(coord(x2, 2), coord(y2, 2), colour(c, 2), style, bits(pattern, 2))
   end
   local TWO_PI = 2 * math.pi + 1e-6
   function E.circle(x, y, r, c, a0, a1, aspect)
