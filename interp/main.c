@@ -361,6 +361,13 @@ int main(int argc, char **argv) {
     int repl = ok && (o.interactive || !ran_something);
     if (repl) host_repl(L, o.watch);
     if (ok) ok = write_outputs(L, &o, repl);
+    else if (o.qbasic && host_limit_stopped) {
+        /* a QBasic program that never ends (a screen saver, a bouncing ball) stopped by
+         * --timeout or --max-memory: the screen as it stood is its picture */
+        fprintf(stderr, "%s: writing the screen as it stood when the program was stopped\n",
+                host_progname);
+        write_outputs(L, &o, 0);
+    }
     lua_close(L);
     return ok ? 0 : 1;
 }

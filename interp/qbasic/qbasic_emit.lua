@@ -438,7 +438,11 @@ local function emit_proc(S, st)
   S.cur_proc = proc
   S.loops = { { kind = "fn" } }
   if proc.expr then
-    S.E(line, head .. decl .. " return " .. convert(proc.expr, proc.ty) .. " end goto "
+    local code = convert(proc.expr, proc.ty)
+    -- a bare call would be a Lua tail call, and DEF FNa(x) = FNa(x + 1) would run forever
+    -- instead of running out of stack space as QBasic does
+    if code:match("^[%w_]+%b()$") then code = "(" .. code .. ")" end
+    S.E(line, head .. decl .. " return " .. code .. " end goto "
       .. st.next_def .. " ::" .. st.skip_label .. "::")
   else
     S.E(line, head .. decl)

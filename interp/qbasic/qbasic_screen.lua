@@ -72,7 +72,8 @@ local function install_text(E, rt, S)
       while #piece > 0 do
         local room = tx.cols - tx.col + 1
         local part = piece:sub(1, room)
-        h_print_at(tx.row, tx.col, part, nil, 0)
+        -- CHR$(0) shows as a blank cell on QBasic's screen (code page 437's glyph 0 is none)
+        h_print_at(tx.row, tx.col, (part:gsub("%z", " ")), nil, 0)
         tx.col = tx.col + #part
         piece = piece:sub(room + 1)
         if tx.col > tx.cols then newline() end

@@ -73,6 +73,18 @@ expect_in gwbasic.err 'gwbasic.bas:8: SAVE "GWDEMO.BAS",A: a GW-BASIC direct-mod
     "a GW-BASIC SAVE line is named"
 expect_eq "$(grep -c 'direct-mode command' gwbasic.err)" 3 "LIST, SAVE and RUN lines skipped"
 
+# a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
+# the program and the limit, without a Lua traceback, and the picture is still written
+printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
+run "$POINTCALC" --timeout 1 forever.bas -o forever.ppm
+expect_rc 1 "a program stopped by --timeout"
+expect_eq "$(head -n 1 err.txt)" "forever.bas: time limit of 1 s exceeded: the program was stopped" \
+    "--timeout: the message names the program"
+expect_in err.txt "writing the screen as it stood" "--timeout: the note that the picture is written"
+check
+grep -q "traceback" err.txt && fail "--timeout: no Lua traceback"
+expect_eq "$(ppm_pixel forever.ppm 420 240)" "ffff55" "--timeout: the picture written (the circle)"
+
 # --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
 cp "$QB_DIR/progs/keyboard.bas" kb.bas
 run "$POINTCALC" kb.bas --input "$QB_DIR/progs/keyboard.in" -o kb.ppm < /dev/null
