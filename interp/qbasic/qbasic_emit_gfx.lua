@@ -102,7 +102,7 @@ function M.gfx(st)
   elseif k == "cls" then
     E(line, "cls(" .. (st.arg and value(st.arg, 0) or "") .. ")")
   elseif k == "color" then
-    E(line, "color(" .. trim_nils({ opt(st.fg), opt(st.bg) }) .. ")")
+    E(line, "color(" .. trim_nils({ opt(st.fg), opt(st.bg), opt(st.border) }) .. ")")
   elseif k == "palette" then
     if not st.attr then E(line, "palette()") return end
     E(line, "palette(" .. value(st.attr, 0) .. ", " .. value(st.color, 0) .. ")")

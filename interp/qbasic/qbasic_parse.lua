@@ -292,8 +292,9 @@ function STMT.color(P)
   local fg = P:opt_expr()
   local bg
   if P:accept_op(",") then bg = P:opt_expr() end
-  if P:accept_op(",") then P:unsupported("COLOR with a border colour") end
-  return add(P, { k = "color", fg = fg, bg = bg })
+  local border
+  if P:accept_op(",") then border = P:expr() end
+  return add(P, { k = "color", fg = fg, bg = bg, border = border })
 end
 function STMT.palette(P)
   if P:is_kw("using") then P:unsupported("PALETTE USING") end

@@ -191,7 +191,7 @@ function CHECK.rtcall(R, st)
   for _, a in pairs(st.shape or {}) do num(R, a) end
 end
 function CHECK.cls(R, st) opt_num(R, st.arg) end
-function CHECK.color(R, st) opt_num(R, st.fg); opt_num(R, st.bg) end
+function CHECK.color(R, st) opt_num(R, st.fg); opt_num(R, st.bg); opt_num(R, st.border) end
 function CHECK.palette(R, st) opt_num(R, st.attr); opt_num(R, st.color) end
 function CHECK.pset(R, st) coords(R, st.p); opt_num(R, st.color) end
 CHECK.preset = CHECK.pset

@@ -656,7 +656,13 @@ local function install_drawing(E, R)
     end
     R.rt.cls(n)
   end
-  function E.color(fg, bg)
+  function E.color(fg, bg, border)
+    if border ~= nil then
+      -- the border (overscan) colour: text mode's only, outside the picture
+      if R.mode ~= 0 then error(IFC, 2) end
+      border = to_int(border, -32768, 32767, 2)
+      if border < 0 or border > 15 then error(IFC, 2) end
+    end
     if R.mode == 0 then return end       -- text colours: PRINT goes to standard output
     if R.mode ~= 12 and R.mode ~= 13 then R.rt.color_other(R.mode, fg, bg, 2) return end
     if bg ~= nil then error(IFC, 2) end
