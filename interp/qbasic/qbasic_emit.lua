@@ -37,6 +37,14 @@ local function copy_out(proc)
   return table.concat(t, ", ")
 end
 
+-- what a procedure returns: a SUB its changed parameters, a FUNCTION its result and then those
+local function returned(proc)
+  local out = copy_out(proc)
+  if proc.kind == "sub" then return out end
+  if proc.kind ~= "function" or out == "" then return proc.result end   -- DEF FN: by value
+  return proc.result .. ", " .. out
+end
+
 -- EXIT FOR / EXIT DO: break from the innermost loop, else a goto past the loop's end
 local function exit_loop(S, kind)
   for i = #S.loops, 1, -1 do
@@ -294,7 +302,7 @@ function STMT.exit(S, st)
     S.E(st.line, exit_loop(S, st.what))
   else
     local p = S.cur_proc
-    local ret = p.kind == "sub" and copy_out(p) or p.result
+    local ret = returned(p)
     S.E(st.line, "do return" .. (ret ~= "" and (" " .. ret) or "") .. " end")
   end
 end
@@ -447,7 +455,7 @@ local function emit_proc(S, st)
   else
     S.E(line, head .. decl)
     emit_block(S, proc.tree)
-    local ret = proc.kind == "sub" and copy_out(proc) or proc.result
+    local ret = returned(proc)
     S.E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
       .. " ::" .. st.skip_label .. "::")
   end
