@@ -379,6 +379,17 @@ function STMT.restore(S, st)
 end
 STMT.call = emit_call
 function STMT.randomize(S, st) S.E(st.line, "randomize(" .. value(st.expr, 0) .. ")") end
+function STMT.palette_using(S, st)
+  local idx = {}
+  for i, a in ipairs(st.index) do idx[i] = value(a, 0) end
+  S.E(st.line, "palette_using(" .. S.prog.lua_name(st.array) .. ", {" .. table.concat(idx, ", ") .. "})")
+end
+-- CLEAR: the module's variables (never its CONSTs or procedures) back to their first values
+function STMT.clear(S, st)
+  local names = {}
+  for _, g in ipairs(S.prog.global_list) do names[#names + 1] = X.lua_string(g.lua) end
+  S.E(st.line, "clear({" .. table.concat(names, ", ") .. "})")
+end
 function STMT.justify(S, st)
   local t = X.lvalue(st.target)
   S.E(st.line, t .. " = " .. (st.right and "rset" or "lset") .. "(" .. t .. ", " .. value(st.expr, 0) .. ")")
@@ -500,7 +511,7 @@ local TRAPPED = { let = true, print = true, print_using = true, rtcall = true, c
   color = true, palette = true, pset = true, preset = true, line = true, circle = true,
   paint = true, window = true, view = true, input = true, getput = true, call = true,
   dim = true, static = true, erase = true, midset = true, read = true, restore = true,
-  randomize = true, swap = true, gosub = true, justify = true }
+  randomize = true, swap = true, gosub = true, justify = true, palette_using = true }
 local function emit_trapped(S, st, f)
   local parts = {}
   local sink = S.sink

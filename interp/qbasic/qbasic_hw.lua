@@ -59,7 +59,7 @@ end
 -- which attributes of a mode show DAC entry i: the palette registers the BIOS sets
 local ATTR_REGS = {
   [7] = { [0] = 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 },
-  [9] = EGA16, [12] = EGA16 }
+  [9] = EGA16, [11] = { [0] = 0, 63 }, [12] = EGA16 }
 
 -- scan codes of the keys an input can give (the US layout's make codes)
 local SCAN = {}
@@ -241,7 +241,7 @@ function M.install(E, rt)
   end
   -- PALETTE attr, c in SCREEN 12 and 13 writes the DAC entry the attribute shows
   function rt.dac_set(m, attr, c)
-    local i = m == 13 and attr or EGA16[attr]
+    local i = m == 13 and attr or (ATTR_REGS[m] or EGA16)[attr]
     if c == nil then rt.dac_reset(m) return end
     H.dac[i] = { c & 63, (c >> 8) & 63, (c >> 16) & 63 }
   end

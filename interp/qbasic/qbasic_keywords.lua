@@ -90,11 +90,15 @@ K.FUNCS = {
   ["mkd$"] = { args = { "n" }, ty = "string", lua = "mkd" },
   cvi = { args = { "s" }, ty = "int" }, cvl = { args = { "s" }, ty = "long" },
   cvs = { args = { "s" }, ty = "single" }, cvd = { args = { "s" }, ty = "double" },
+  -- the virtual clock and calendar, and an environment with nothing in it
+  ["time$"] = { args = {}, ty = "string", lua = "time_s" },
+  ["date$"] = { args = {}, ty = "string", lua = "date_s" },
+  ["environ$"] = { args = { "x" }, ty = "string", lua = "environ_s" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
-for w in ([[inkey$ input$ date$ time$ csrlin pos eof pmap fre varptr environ$
+for w in ([[inkey$ input$ csrlin pos eof pmap fre varptr
   lof loc freefile stick strig pen play screen sadd lpos
   ioctl$ fileattr seek varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
@@ -107,6 +111,7 @@ K.RT_STATEMENTS = {
   screen = "nnnn", locate = "nn", width = "nn", draw = "s", pcopy = "nn", sleep = "n",
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
   out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n", error_n = "n",
+  set_time = "s", set_date = "s",
 }
 
 -- QBasic's strings are at most 32,767 characters
@@ -119,10 +124,10 @@ K.UNSUPPORTED_STMTS = {
   shell = "SHELL",
   kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
   rmdir = "RMDIR", field = "FIELD", seek = "SEEK",
-  clear = "CLEAR", run = "RUN", tron = "TRON", troff = "TROFF", bload = "BLOAD",
+  run = "RUN", tron = "TRON", troff = "TROFF", bload = "BLOAD",
   bsave = "BSAVE", ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
   timer = "TIMER ON/OFF", strig = "STRIG", pen = "PEN", com = "COM", signal = "SIGNAL",
-  date = "DATE$", ["date$"] = "DATE$ statement", ["time$"] = "TIME$ statement",
+  date = "DATE$",
   environ = "ENVIRON", setmem = "SETMEM", absolute = "CALL ABSOLUTE" }
 
 -- Lua's reserved words: no translated name may be one

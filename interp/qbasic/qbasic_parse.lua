@@ -278,8 +278,8 @@ function STMT.screen(P)
   local args = arg_list(P, 4)
   -- a mode given as a number is checked before the program runs
   local m = args[1] and args[1].k == "num" and args[1].v
-  if m and (m == 3 or m == 4 or m == 8 or m == 10 or m == 11) then
-    P:err("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 12 and 13 are)")
+  if m and (m == 3 or m == 4 or m == 8 or m == 10) then
+    P:err("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 11, 12 and 13 are)")
   end
   return rtcall(P, "screen", args)
 end
@@ -297,7 +297,13 @@ function STMT.color(P)
   return add(P, { k = "color", fg = fg, bg = bg, border = border })
 end
 function STMT.palette(P)
-  if P:is_kw("using") then P:unsupported("PALETTE USING") end
+  if P:accept_kw("using") then   -- PALETTE USING a(i): the colours from the array's elements
+    local t = P:next()
+    if t.t ~= "id" then P:err() end
+    local st = { k = "palette_using", array = P:name_node("arrayref", t), index = {} }
+    if P:accept_op("(") and not P:accept_op(")") then st.index = P:args() end
+    return add(P, st)
+  end
   if P:at_end() then return add(P, { k = "palette" }) end
   local a = P:expr()
   P:expect_op(",")
@@ -697,6 +703,15 @@ local function justify(P, right)
 end
 function STMT.lset(P) return justify(P, false) end
 function STMT.rset(P) return justify(P, true) end
+-- CLEAR [, [n] [, n]]: every variable of the module back to 0 and "" (the sizes are DOS's)
+function STMT.clear(P)
+  if P.cur_proc then P:err("Illegal in procedure") end
+  while not P:at_end() do P.pos = P.pos + 1 end
+  return add(P, { k = "clear" })
+end
+-- TIME$ = "hh:mm:ss", DATE$ = "mm-dd-yyyy": the virtual clock and calendar
+STMT["time$"] = function(P) P:expect_op("="); return rtcall(P, "set_time", { P:expr() }) end
+STMT["date$"] = function(P) P:expect_op("="); return rtcall(P, "set_date", { P:expr() }) end
 function STMT.swap(P)
   local a = P:lvalue()
   P:expect_op(",")

@@ -302,6 +302,11 @@ function CHECK.call(R, st)
   for _, a in ipairs(st.args) do expr(R, a) end
   R.calls[#R.calls + 1] = { node = st, line = R.line, sub = true }
 end
+function CHECK.palette_using(R, st)
+  st.array.whole = true
+  if expr(R, st.array) == "string" then err(R, "Type mismatch") end
+  for _, a in ipairs(st.index) do num(R, a) end
+end
 function CHECK.justify(R, st) str(R, st.target); str(R, st.expr) end
 function CHECK.swap(R, st)
   expr(R, st.a); expr(R, st.b)

@@ -25,7 +25,7 @@ M.names = {
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
-  "rset", "direct_lines",
+  "rset", "direct_lines", "palette_using", "clear",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -633,16 +633,17 @@ local function install_drawing(E, R)
         R.rt.text_mode(nil)
       elseif m == R.mode then
         -- the same mode again (SCREEN 7, , p, 1 - p in an animation loop): no new screen
-      elseif m == 1 or m == 2 or m == 7 or m == 9 or m == 12 or m == 13 then
-        h_screen(m)
+      elseif m == 1 or m == 2 or m == 7 or m == 9 or m == 11 or m == 12 or m == 13 then
+        -- SCREEN 11 is VGA's 640x480 in 2 colours (the drawing layer has no mode 11 of its own)
+        if m == 11 then h_screen({ width = 640, height = 480, colors = 2 }) else h_screen(m) end
         R.mode = m
         R.info = R.rt.mode_info(m)
         R.ncolors = R.info.colors
         R.window_on, R.view_on = false, false
         R.rt.dac_reset(m)
         R.rt.text_mode(R.info)
-      elseif m == 3 or m == 4 or m == 8 or m == 10 or m == 11 then
-        error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 12 and 13 are)", 2)
+      elseif m == 3 or m == 4 or m == 8 or m == 10 then
+        error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 11, 12 and 13 are)", 2)
       else
         error(IFC, 2)
       end
@@ -664,7 +665,7 @@ local function install_drawing(E, R)
       if border < 0 or border > 15 then error(IFC, 2) end
     end
     if R.mode == 0 then return end       -- text colours: PRINT goes to standard output
-    if R.mode ~= 12 and R.mode ~= 13 then R.rt.color_other(R.mode, fg, bg, 2) return end
+    if R.mode ~= 11 and R.mode ~= 12 and R.mode ~= 13 then R.rt.color_other(R.mode, fg, bg, 2) return end
     if bg ~= nil then error(IFC, 2) end
     if fg ~= nil then h_color(colour(fg, 2)) end
   end
@@ -672,12 +673,27 @@ local function install_drawing(E, R)
     if R.mode == 0 then return end
     if attr == nil then h_palette() R.rt.dac_reset(R.mode) return end
     attr = colour(attr, 2)
-    if R.mode ~= 12 and R.mode ~= 13 then R.rt.palette_other(R.mode, attr, c, 2) return end
+    if R.mode ~= 11 and R.mode ~= 12 and R.mode ~= 13 then R.rt.palette_other(R.mode, attr, c, 2) return end
     c = to_int(c, -2147483648, 2147483647, 2)
     if c == -1 then return end
     if c < 0 or c > 0x3F3F3F or (c & 0xC0C0C0) ~= 0 then error(IFC, 2) end
     h_palette(attr, c)
     R.rt.dac_set(R.mode, attr, c)
+  end
+  -- PALETTE USING a(i): attribute k takes element i + k (-1: unchanged), for every attribute
+  function E.palette_using(arr, at)
+    if R.mode == 0 then return end
+    local mt = getmetatable(arr)
+    local first = at[1] and to_int(at[1], -32768, 32767, 2) or mt.lo
+    for k = 0, R.ncolors - 1 do
+      local v = rawget(arr, first + k)
+      if type(v) ~= "number" then error(IFC, 2) end
+      E.palette(k, v)
+    end
+  end
+  -- CLEAR: the variables named (the module's) back to 0, "" and undimensioned arrays
+  function E.clear(names)
+    for _, n in ipairs(names) do rawset(E, n, nil) end
   end
   function E.pset(x, y, c)
     graphics(2)

@@ -23,7 +23,8 @@ M.GIVE_UP_POLLS = 200000
 -- the names this module adds: the translator keeps user names clear of them
 M.names = { "locate", "width", "draw", "pcopy", "sleep", "beep", "sound", "play", "key_def",
   "view_print", "get_into", "put_from", "input_fields", "line_input", "randomize_ask", "inkey",
-  "input_chars", "csrlin", "pos_", "pmap", "varptr", "text_out" }
+  "input_chars", "csrlin", "pos_", "pmap", "varptr", "text_out", "time_s", "date_s",
+  "environ_s", "set_time", "set_date" }
 
 -- EGA's 64 colours: bits 0-2 blue, green, red at 2/3, bits 3-5 at 1/3 (PALETTE in SCREEN 9)
 local function ega64(c)
@@ -174,7 +175,13 @@ local function install_modes(E, rt, S)
     h_pages(a, v)
     tx.active, tx.visual = a, v
   end
-  function rt.mode_info(m) return h_mode_info(m) end
+  function rt.mode_info(m)
+    if m == 11 then   -- VGA's 2-colour mode: SCREEN 12's layout
+      return { width = 640, height = 480, colors = 2, pages = 1, cols = 80, rows = 30, cell = 16,
+        aspect = 1 }
+    end
+    return h_mode_info(m)
+  end
 
   function E.pcopy(from, to)
     from, to = to_int(from, -32768, 32767, 2), to_int(to, -32768, 32767, 2)
@@ -305,6 +312,28 @@ local function install_draw(E, rt)
 end
 
 local function install_clock(E, rt, S)
+  -- TIME$ and DATE$: the virtual clock (TIMER's seconds since midnight) and a settable date
+  function E.time_s()
+    local t = math.floor(S.clock) % 86400
+    return string.format("%02d:%02d:%02d", t // 3600, t // 60 % 60, t % 60)
+  end
+  function E.set_time(s)
+    local h, m, sec = s:match("^%s*(%d%d?):?(%d?%d?):?(%d?%d?)%s*$")
+    h, m, sec = tonumber(h), tonumber(m) or 0, tonumber(sec) or 0
+    if not h or h > 23 or m > 59 or sec > 59 then error(IFC, 2) end
+    S.clock = h * 3600 + m * 60 + sec
+  end
+  S.date = "01-01-1980"
+  function E.date_s() return S.date end
+  function E.set_date(s)
+    local mo, d, y = s:match("^%s*(%d%d?)[-/](%d%d?)[-/](%d+)%s*$")
+    mo, d, y = tonumber(mo), tonumber(d), tonumber(y)
+    if y and y < 100 then y = y + 1900 end
+    if not mo or mo < 1 or mo > 12 or d < 1 or d > 31 or y < 1980 or y > 2099 then error(IFC, 2) end
+    S.date = string.format("%02d-%02d-%04d", mo, d, y)
+  end
+  -- ENVIRON$: a run sees no environment variables (the same every run, and nothing leaks)
+  function E.environ_s(_) return "" end
   rt.clock = function() return S.clock end
   rt.advance = function(dt) S.clock = S.clock + dt end
   local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw

@@ -73,6 +73,15 @@ expect_in gwbasic.err 'gwbasic.bas:8: SAVE "GWDEMO.BAS",A: a GW-BASIC direct-mod
     "a GW-BASIC SAVE line is named"
 expect_eq "$(grep -c 'direct-mode command' gwbasic.err)" 3 "LIST, SAVE and RUN lines skipped"
 
+# clock_env.bas: PALETTE USING p(0) gave attribute 1 red 63, attribute 2 green 63 and left
+# attribute 4 (-1 in the array) its red 42
+expect_eq "$(ppm_pixel clock_env.ppm 50 110)" "ff0000" "PALETTE USING: attribute 1"
+expect_eq "$(ppm_pixel clock_env.ppm 150 110)" "00ff00" "PALETTE USING: attribute 2"
+expect_eq "$(ppm_pixel clock_env.ppm 250 110)" "aa0000" "PALETTE USING: -1 leaves attribute 4"
+# screen11.bas: SCREEN 11 is 640x480 in 2 colours; PALETTE 1, 42 made colour 1 red 42
+expect_eq "$(head -c 15 screen11.ppm | tr '\n' ' ')" "P6 640 480 255 " "SCREEN 11 writes 640x480"
+expect_eq "$(ppm_pixel screen11.ppm 30 30)" "aa0000" "SCREEN 11: colour 1 after PALETTE 1, 42"
+
 # a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
 # the program and the limit, without a Lua traceback, and the picture is still written
 printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
