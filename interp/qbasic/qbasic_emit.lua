@@ -379,6 +379,65 @@ function STMT.restore(S, st)
 end
 STMT.call = emit_call
 function STMT.randomize(S, st) S.E(st.line, "randomize(" .. value(st.expr, 0) .. ")") end
+-- ---- files (qbasic_files.lua) --------------------------------------------------------------
+STMT.finput = function(_, st) return G.input(st) end
+function STMT.close(S, st)
+  local t = {}
+  for i, a in ipairs(st.files) do t[i] = value(a, 0) end
+  S.E(st.line, "close_files(" .. table.concat(t, ", ") .. ")")
+end
+-- a value PRINT would mark as DOUBLE or LONG (WRITE prints them with their own digits)
+local function marked(e)
+  if e.ty == "double" then return "dbl(" .. value(e, 0, true) .. ")" end
+  if e.ty == "long" then return "lng(" .. value(e, 0) .. ")" end
+  return (value(e, 0))
+end
+function STMT.write(S, st)
+  local t = { st.file and value(st.file, 0) or "nil" }
+  for _, v in ipairs(st.values) do t[#t + 1] = marked(v) end
+  S.E(st.line, "write_items(" .. table.concat(t, ", ") .. ")")
+end
+-- the bytes of a variable in a record: a number type, a fixed-length or ordinary string, a
+-- TYPE's fields in order
+local function layout(S, ty, fixed)
+  if fixed then return "{fix = " .. fixed .. "}" end
+  if ty == "string" then return '"str"' end
+  if K.is_record(ty) then
+    local def = S.prog.types[ty:sub(5)]
+    local t = {}
+    for _, f in ipairs(def.order) do
+      local fd = def.fields[f]
+      t[#t + 1] = "{" .. X.lua_string(f) .. ", " .. layout(S, fd.ty, fd.fixed) .. "}"
+    end
+    return "{" .. table.concat(t, ", ") .. "}"
+  end
+  return X.lua_string(ty)
+end
+function STMT.frecord(S, st)
+  local args = { value(st.file, 0), st.record and value(st.record, 0) or "nil" }
+  if not st.var then
+    S.E(st.line, st.which .. "_record(" .. table.concat(args, ", ") .. ")")
+    return
+  end
+  local v = X.lvalue(st.var)
+  args[3], args[4] = layout(S, st.var.ty, st.var.fixed), v
+  if st.which == "get" then
+    S.E(st.line, v .. " = get_record(" .. table.concat(args, ", ") .. ")")
+  else
+    S.E(st.line, "put_record(" .. table.concat(args, ", ") .. ")")
+  end
+end
+function STMT.field(S, st)
+  local t = { (value(st.file, 0)) }
+  for _, f in ipairs(st.fields) do
+    if f.var.k ~= "var" or S.prog.classify(f.var) ~= "global" then
+      error({ qb = true, line = st.line,
+        msg = "FIELD of a procedure's variable or an array element: not supported by pointcalc" }, 0)
+    end
+    t[#t + 1] = "{" .. value(f.width, 0) .. ", " .. X.lua_string(S.prog.lua_name(f.var)) .. "}"
+  end
+  S.E(st.line, "field(" .. table.concat(t, ", ") .. ")")
+end
 function STMT.palette_using(S, st)
   local idx = {}
   for i, a in ipairs(st.index) do idx[i] = value(a, 0) end
@@ -511,7 +570,8 @@ local TRAPPED = { let = true, print = true, print_using = true, rtcall = true, c
   color = true, palette = true, pset = true, preset = true, line = true, circle = true,
   paint = true, window = true, view = true, input = true, getput = true, call = true,
   dim = true, static = true, erase = true, midset = true, read = true, restore = true,
-  randomize = true, swap = true, gosub = true, justify = true, palette_using = true }
+  randomize = true, swap = true, gosub = true, justify = true, palette_using = true,
+  finput = true, close = true, write = true, frecord = true, field = true }
 local function emit_trapped(S, st, f)
   local parts = {}
   local sink = S.sink

@@ -187,6 +187,7 @@ function M.value(e, min, exact)
   elseif k == "not" then
     return "bnot(" .. emit_value(e.a, 0) .. ")", 20
   elseif k == "call" then
+    if e.bytes then return tostring(e.bytes), 20 end    -- LEN of a record: its size
     local fn = e.fn
     if fn == "lbound" or fn == "ubound" then
       local arr = e.args[1]

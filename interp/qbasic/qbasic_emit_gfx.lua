@@ -152,7 +152,11 @@ function M.input(st)
   for i, t in ipairs(st.targets) do kinds[i] = X.lua_string(t.ty == "string" and "s" or "n") end
   local prompt = st.prompt and X.lua_string(st.prompt) or "nil"
   local call
-  if st.line_input then
+  if st.file then         -- INPUT #n, LINE INPUT #n: the fields of the file
+    local n = value(st.file, 0)
+    call = st.line_input and ("flineinput(" .. n .. ")")
+      or ("finput(" .. n .. ", {" .. table.concat(kinds, ", ") .. "})")
+  elseif st.line_input then
     call = "line_input(" .. prompt .. ", " .. tostring(st.same_line or false) .. ")"
   else
     call = "input_fields(" .. prompt .. ", " .. tostring(st.mark) .. ", "
@@ -187,6 +191,11 @@ function M.print(st)
     end
   end
   if not st.newline then args[#args + 1] = "nonl" end
+  if st.file then   -- PRINT #n: the same items into the file
+    table.insert(args, 1, (value(st.file, 0)))
+    E(st.line, "fprint(" .. table.concat(args, ", ") .. ")")
+    return
+  end
   E(st.line, "qprint(" .. table.concat(args, ", ") .. ")")
 end
 

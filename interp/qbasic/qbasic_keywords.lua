@@ -94,13 +94,17 @@ K.FUNCS = {
   ["time$"] = { args = {}, ty = "string", lua = "time_s" },
   ["date$"] = { args = {}, ty = "string", lua = "date_s" },
   ["environ$"] = { args = { "x" }, ty = "string", lua = "environ_s" },
+  -- files (qbasic_files.lua)
+  eof = { args = { "n" }, ty = "int", lua = "eof_" }, lof = { args = { "n" }, ty = "long", lua = "lof_" },
+  loc = { args = { "n" }, ty = "long", lua = "loc_" }, freefile = { args = {}, ty = "int" },
+  seek = { args = { "n" }, ty = "long", lua = "seek_" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
-for w in ([[inkey$ input$ csrlin pos eof pmap fre varptr
-  lof loc freefile stick strig pen play screen sadd lpos
-  ioctl$ fileattr seek varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
+for w in ([[inkey$ input$ csrlin pos pmap fre varptr
+  stick strig pen play screen sadd lpos
+  ioctl$ fileattr varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
 end
 
@@ -111,7 +115,8 @@ K.RT_STATEMENTS = {
   screen = "nnnn", locate = "nn", width = "nn", draw = "s", pcopy = "nn", sleep = "n",
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
   out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n", error_n = "n",
-  set_time = "s", set_date = "s",
+  set_time = "s", set_date = "s", open_file = "ssnn", seek_file = "nn", kill_file = "s",
+  name_file = "ss",
 }
 
 -- QBasic's strings are at most 32,767 characters
@@ -119,11 +124,11 @@ K.MAX_STRING = 32767
 
 -- statements pointcalc knows but does not implement: named in the error
 K.UNSUPPORTED_STMTS = {
-  open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", on = "ON",
+  lprint = "LPRINT", on = "ON",
   chain = "CHAIN", common = "COMMON",
   shell = "SHELL",
-  kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
-  rmdir = "RMDIR", field = "FIELD", seek = "SEEK",
+  files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
+  rmdir = "RMDIR",
   run = "RUN", tron = "TRON", troff = "TROFF", bload = "BLOAD",
   bsave = "BSAVE", ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
   timer = "TIMER ON/OFF", strig = "STRIG", pen = "PEN", com = "COM", signal = "SIGNAL",

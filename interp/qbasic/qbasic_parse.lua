@@ -163,6 +163,7 @@ end
 
 -- ---- statement lists and IF -------------------------------------------------------------
 local parse_statement
+local file_record
 
 -- statements up to the end of the line, or up to ELSE (single-line IF)
 local function parse_stmt_list(P, list, stop_at_else)
@@ -253,7 +254,8 @@ function STMT.print(P)
     elseif P:is_kw("using") and #items == 0 then
       return STMT.print_using(P)
     elseif P:is_op("#") then
-      P:unsupported("PRINT #")
+      if #items > 0 then P:err() end
+      return STMT.print_file(P)
     else
       items[#items + 1] = { k = "expr", e = P:expr() }
       last_sep = nil
@@ -796,6 +798,101 @@ function STMT.key(P)
   P:expect_op(",")
   return rtcall(P, "key_def", { n, P:expr() })
 end
+-- ---- files (qbasic_files.lua) ------------------------------------------------------------
+-- [#]n: a file number
+local function file_number(P)
+  P:accept_op("#")
+  return P:expr()
+end
+-- OPEN f$ FOR mode AS [#]n [LEN = r], or GW-BASIC's OPEN mode$, [#]n, f$ [, r]
+local OPEN_MODES = { input = "I", output = "O", append = "A", random = "R", binary = "B" }
+function STMT.open(P)
+  local first = P:expr()
+  if P:accept_op(",") then
+    local n = file_number(P)
+    P:expect_op(",")
+    local f = P:expr()
+    local len
+    if P:accept_op(",") then len = P:expr() end
+    return rtcall(P, "open_file", { f, first, n, len })
+  end
+  local mode = { k = "str", v = "R", ty = "string" }
+  if P:accept_kw("for") then
+    local m = P:next()
+    if m.t ~= "kw" or not OPEN_MODES[m.v] then P:err() end
+    mode.v = OPEN_MODES[m.v]
+  end
+  -- ACCESS and LOCK clauses: one program at a time, nothing to share
+  while not P:is_kw("as") and not P:at_end() do P.pos = P.pos + 1 end
+  P:expect_kw("as")
+  local n = file_number(P)
+  local len
+  if P:accept_kw("len") then
+    P:expect_op("=")
+    len = P:expr()
+  end
+  return rtcall(P, "open_file", { first, mode, n, len })
+end
+function STMT.close(P)
+  local args = {}
+  while not P:at_end() do
+    args[#args + 1] = file_number(P)
+    if not P:accept_op(",") then break end
+  end
+  return add(P, { k = "close", files = args })
+end
+-- PRINT #n, items and WRITE [#n,] values: after the file number, PRINT's items
+function STMT.print_file(P)
+  P.pos = P.pos + 1
+  local file = P:expr()
+  P:expect_op(",")
+  if P:is_kw("using") then P:unsupported("PRINT # USING") end
+  local st = STMT.print(P)
+  st.file = file
+  return st
+end
+function STMT.write(P)
+  local st = { k = "write", values = {} }
+  if P:accept_op("#") then
+    st.file = P:expr()
+    if not P:accept_op(",") then return add(P, st) end
+  end
+  if not P:at_end() then
+    repeat st.values[#st.values + 1] = P:expr() until not P:accept_op(",")
+  end
+  return add(P, st)
+end
+-- GET #n [, record] [, variable], PUT #n [, record] [, variable]
+function file_record(P, which)
+  local st = { k = "frecord", which = which, file = file_number(P) }
+  if P:accept_op(",") then
+    if not P:is_op(",") and not P:at_end() then st.record = P:expr() end
+    if P:accept_op(",") then st.var = P:lvalue() end
+  end
+  return add(P, st)
+end
+-- FIELD #n, width AS v$, ...: the string variables that are the record's buffer
+function STMT.field(P)
+  local st = { k = "field", file = file_number(P), fields = {} }
+  while P:accept_op(",") do
+    local w = P:expr()
+    P:expect_kw("as")
+    st.fields[#st.fields + 1] = { width = w, var = P:lvalue() }
+  end
+  return add(P, st)
+end
+function STMT.seek(P)
+  local n = file_number(P)
+  P:expect_op(",")
+  return rtcall(P, "seek_file", { n, P:expr() })
+end
+function STMT.kill(P) return rtcall(P, "kill_file", { P:expr() }) end
+STMT["name"] = function(P)
+  local a = P:expr()
+  P:expect_kw("as")
+  return rtcall(P, "name_file", { a, P:expr() })
+end
+
 -- an array for GET/PUT: a name with an optional first element, a(), a(5), a(0, 1)
 local function block_array(P)
   local t = P:next()
@@ -806,7 +903,7 @@ local function block_array(P)
   return arr, idx
 end
 function STMT.get(P)
-  if P:is_op("#") or P:peek().t == "num" then P:unsupported("GET # (files)") end
+  if P:is_op("#") or P:peek().t == "num" then return file_record(P, "get") end
   local p1 = P:coord_pair()
   P:expect_op("-")
   local p2 = P:coord_pair()
@@ -815,7 +912,7 @@ function STMT.get(P)
   return add(P, { k = "getput", get = true, p1 = p1, p2 = p2, array = arr, index = idx })
 end
 function STMT.put(P)
-  if P:is_op("#") or P:peek().t == "num" then P:unsupported("PUT # (files)") end
+  if P:is_op("#") or P:peek().t == "num" then return file_record(P, "put") end
   local p = P:coord_pair()
   P:expect_op(",")
   local arr, idx = block_array(P)
@@ -834,7 +931,12 @@ local function input_targets(P)
   return targets
 end
 function STMT.input(P)
-  if P:is_op("#") then P:unsupported("INPUT # (files)") end
+  if P:accept_op("#") then
+    local st = { k = "finput", file = P:expr() }
+    P:expect_op(",")
+    st.targets = input_targets(P)
+    return add(P, st)
+  end
   local st = { k = "input", same_line = P:accept_op(";") }
   if P:peek().t == "str" then
     st.prompt = P:next().v
@@ -846,7 +948,12 @@ function STMT.input(P)
   return add(P, st)
 end
 function STMT.line_input(P)
-  if P:is_op("#") then P:unsupported("LINE INPUT # (files)") end
+  if P:accept_op("#") then
+    local st = { k = "finput", line_input = true, file = P:expr() }
+    P:expect_op(",")
+    st.targets = { P:lvalue() }
+    return add(P, st)
+  end
   local st = { k = "input", line_input = true, same_line = P:accept_op(";") }
   if P:peek().t == "str" then
     st.prompt = P:next().v

@@ -63,8 +63,32 @@ local function logic_type(R, a, b)
 end
 
 -- a built-in function: argument count and types, as K.FUNCS gives them
+-- the bytes of a value of type ty in a record (LEN of a record or number variable)
+local function size_of(R, ty, fixed)
+  if fixed then return fixed end
+  if K.BYTES[ty] then return K.BYTES[ty] end
+  if not K.is_record(ty) then return nil end
+  local def, n = R.prog.types[ty:sub(5)], 0
+  for _, f in ipairs(def.order) do
+    local s = size_of(R, def.fields[f].ty, def.fields[f].fixed)
+    if not s then return nil end
+    n = n + s
+  end
+  return n
+end
+
 local function builtin(R, e)
   local f, args = K.FUNCS[e.fn], e.args
+  if e.fn == "len" and #args == 1 then
+    -- LEN of a record or a numeric variable: its size in bytes (for OPEN ... LEN =)
+    local a = args[1]
+    local ty = expr(R, a)
+    if K.is_record(ty) or (NUM_RANK[ty] and (a.k == "var" or a.k == "index" or a.k == "field")) then
+      e.bytes = size_of(R, ty, a.fixed)
+      if not e.bytes then err(R, "Type mismatch") end
+      return "long"
+    end
+  end
   if e.fn == "lbound" or e.fn == "ubound" then
     args[1].whole = true
     expr(R, args[1])
@@ -178,6 +202,7 @@ local block
 
 function CHECK.let(R, st) expr(R, st.target); expr(R, st.expr); same_kind(R, st.target, st.expr) end
 function CHECK.print(R, st)
+  opt_num(R, st.file)
   for _, it in ipairs(st.items) do
     if it.k == "expr" then expr(R, it.e); no_record(R, it.e) elseif it.k == "tab" or it.k == "spc" then num(R, it.e) end
   end
@@ -301,6 +326,24 @@ function CHECK.call(R, st)
   whole_arrays(R, st.args)
   for _, a in ipairs(st.args) do expr(R, a) end
   R.calls[#R.calls + 1] = { node = st, line = R.line, sub = true }
+end
+-- files: the file numbers are numbers, what is read or written has a type
+function CHECK.finput(R, st)
+  num(R, st.file)
+  CHECK.input(R, st)
+end
+function CHECK.close(R, st) for _, a in ipairs(st.files) do num(R, a) end end
+function CHECK.write(R, st)
+  opt_num(R, st.file)
+  for _, v in ipairs(st.values) do expr(R, v); no_record(R, v) end
+end
+function CHECK.frecord(R, st)
+  num(R, st.file); opt_num(R, st.record)
+  if st.var then expr(R, st.var) end
+end
+function CHECK.field(R, st)
+  num(R, st.file)
+  for _, f in ipairs(st.fields) do num(R, f.width); str(R, f.var) end
 end
 function CHECK.palette_using(R, st)
   st.array.whole = true

@@ -29,8 +29,10 @@ M.names = {
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
+local files_rt = require("qbasic_files")
 for _, n in ipairs(screen_rt.names) do M.names[#M.names + 1] = n end
 for _, n in ipairs(hw_rt.names) do M.names[#M.names + 1] = n end
+for _, n in ipairs(files_rt.names) do M.names[#M.names + 1] = n end
 
 local radix_value = require("qbasic_lex").radix_value
 local floor, huge = math.floor, math.huge
@@ -555,41 +557,52 @@ local function install_print(E, R)
     R.col = R.rt.text_out(s)
   end
   R.write = write
-  function E.qprint(...)
+  -- PRINT's items, through write(s) (which returns the column after it)
+  local function print_items(write, col, ...)
     local n = select("#", ...)
     local newline = true
     for i = 1, n do
       local v = select(i, ...)
       local tv = type(v)
       if tv == "string" then
-        write(v)
+        col = write(v)
       elseif tv == "number" then
         -- SINGLE (and INTEGER, which prints the same); LONG and DOUBLE come marked
-        local s = fmt_number(v, "single", 2)
-        write((v >= 0 and " " or "") .. s .. " ")
+        local s = fmt_number(v, "single", 3)
+        col = write((v >= 0 and " " or "") .. s .. " ")
       elseif v == ZONE then
-        write(string.rep(" ", 14 - R.col % 14))
+        col = write(string.rep(" ", 14 - col % 14))
         if i == n then newline = false end
       elseif v == NONL then
         newline = false
       elseif tv == "table" and v[MARK] then
         local m = v[MARK]
         if m == "tab" then
-          local c = long(v.n, 2)
+          local c = long(v.n, 3)
           if c < 1 then c = 1 end
-          if R.col > c - 1 then write("\n") end
-          write(string.rep(" ", c - 1 - R.col))
+          if col > c - 1 then col = write("\n") end
+          col = write(string.rep(" ", c - 1 - col))
         elseif m == "spc" then
-          local c = long(v.n, 2)
+          local c = long(v.n, 3)
           if c < 0 then c = 0 end
-          write(string.rep(" ", c))
+          col = write(string.rep(" ", c))
         else
-          local s = fmt_number(v.v, m, 2)
-          write((v.v >= 0 and " " or "") .. s .. " ")
+          local s = fmt_number(v.v, m, 3)
+          col = write((v.v >= 0 and " " or "") .. s .. " ")
         end
       end
     end
     if newline then write("\n") end
+  end
+  local function screen_write(s) write(s) return R.col end
+  function E.qprint(...) print_items(screen_write, R.col, ...) end
+  function E.fprint(n, ...)
+    print_items(function(s) return R.rt.file_put(n, s, 4) end, R.rt.file_col(n), ...)
+  end
+  -- WRITE's numbers: PRINT's text without its spaces
+  function R.rt.number_text(v)
+    if type(v) == "table" then return fmt_number(v.v, v[MARK], 3) end
+    return fmt_number(v, "single", 3)
   end
   -- PRINT USING fmt$; values (qbasic_using.lua); a last nonl: no new line
   local using = require("qbasic_using")
@@ -819,6 +832,7 @@ local function install_run(E, R)
     qb.seed(327680)
     R.src = dbg and dbg.getinfo(program, "S").short_src
     local ok, err = xpcall(program, qbasic_message_for(R.chunkname, program))
+    R.rt.close_all()
     if not ok and err ~= STOP then error(err, 0) end
   end
 end
@@ -929,6 +943,7 @@ function M.new(host, chunkname)
   end
   screen_rt.install(E, rt)
   hw_rt.install(E, rt)
+  files_rt.install(E, rt)
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
   function E.direct_lines(...)

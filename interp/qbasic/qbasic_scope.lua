@@ -212,7 +212,10 @@ function M.modified_params(prog, classify)
     each_stmt(proc, function(st)
       if st.k == "let" then mark(st.target)
       elseif st.k == "for" then mark(st.var)
-      elseif st.k == "read" then for _, t in ipairs(st.targets) do mark(t) end
+      elseif st.k == "read" or st.k == "input" or st.k == "finput" then
+        for _, t in ipairs(st.targets) do mark(t) end
+      elseif st.k == "justify" then mark(st.target)
+      elseif st.k == "frecord" and st.which == "get" and st.var then mark(st.var)
       elseif st.k == "swap" then mark(st.a); mark(st.b) end
     end)
   end

@@ -82,6 +82,16 @@ expect_eq "$(ppm_pixel clock_env.ppm 250 110)" "aa0000" "PALETTE USING: -1 leave
 expect_eq "$(head -c 15 screen11.ppm | tr '\n' ' ')" "P6 640 480 255 " "SCREEN 11 writes 640x480"
 expect_eq "$(ppm_pixel screen11.ppm 30 30)" "aa0000" "SCREEN 11: colour 1 after PALETTE 1, 42"
 
+# files.bas under the safe mode: without --allow the first OPEN is QBasic's Permission denied
+# (70, which the program traps); with --allow of its folder it runs as before
+cp "$QB_DIR/progs/files.bas" safe_files.bas
+run "$POINTCALC" --safe safe_files.bas
+expect_rc 0 "files.bas in the safe mode"
+expect_eq "$(cat out.txt)" "error 70 " "the safe mode refuses the program's files: Permission denied"
+run "$POINTCALC" --safe --allow "$WORK" safe_files.bas
+check
+diff -q out.txt "$QB_DIR/progs/files.out" >/dev/null || fail "files.bas with --allow: output differs"
+
 # a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
 # the program and the limit, without a Lua traceback, and the picture is still written
 printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
