@@ -438,6 +438,12 @@ function STMT.field(S, st)
   end
   S.E(st.line, "field(" .. table.concat(t, ", ") .. ")")
 end
+-- COMMON: the values CHAIN passed (by position) into these variables
+function STMT.common(S, st)
+  local names = {}
+  for _, item in ipairs(st.items) do names[#names + 1] = X.lua_string(S.prog.lua_name(item.node)) end
+  S.E(st.line, "common({" .. table.concat(names, ", ") .. "})")
+end
 function STMT.palette_using(S, st)
   local idx = {}
   for i, a in ipairs(st.index) do idx[i] = value(a, 0) end

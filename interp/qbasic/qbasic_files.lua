@@ -329,6 +329,8 @@ local function install_records(E, rt, F)
   end
 end
 
+M.folder_of, M.resolve, M.existing = folder_of, resolve, existing
+
 function M.install(E, rt)
   local F = { open = {}, dir = folder_of(rt.chunkname) }
   install_sequential(E, rt, F)

@@ -693,6 +693,31 @@ function STMT.shared(P)
   until not P:accept_op(",")
   return add(P, { k = "shared", names = names })
 end
+-- COMMON [SHARED] [/block/] a, b$, c() [AS type]: the variables CHAIN passes on, by position
+function STMT.common(P)
+  if P.cur_proc then P:err("Illegal in procedure") end
+  local shared = P:accept_kw("shared")
+  if P:accept_op("/") then   -- a named block: QuickBASIC's, kept with the blank one
+    P:next()
+    P:expect_op("/")
+  end
+  local items = {}
+  repeat
+    local t = P:next()
+    if t.t ~= "id" then P:err() end
+    local item = { name = t.v, text = t.text, sfx = t.sfx }
+    if P:accept_op("(") then
+      -- QuickBASIC allows a number of dimensions here: it is not needed
+      if not P:accept_op(")") then P:expr(); P:expect_op(")") end
+      item.array = true
+    end
+    if P:accept_kw("as") then item.as = as_type(P) end
+    item.node = P:name_node(item.array and "arrayref" or "var", t, { whole = item.array })
+    items[#items + 1] = item
+  until not P:accept_op(",")
+  return add(P, { k = "common", items = items, shared = shared })
+end
+function STMT.chain(P) return rtcall(P, "chain", { P:expr() }) end
 function STMT.randomize(P)
   if P:at_end() then return rtcall(P, "randomize_ask", {}) end
   return add(P, { k = "randomize", expr = P:expr() })

@@ -369,6 +369,21 @@ function CHECK.shared(R, st)
     R.scope.shared[(item.array and "()" or "") .. item.name] = true
   end
 end
+-- COMMON: the module's variables, with their AS types (and SHARED with every procedure)
+function CHECK.common(R, st)
+  for _, item in ipairs(st.items) do
+    if item.as then
+      if item.array then R.scope.as_array[item.name] = item.as
+      else R.scope.as_scalar[item.name] = item.as end
+      if item.node.sfx then err(R, "Syntax error") end
+    end
+    if st.shared then
+      local t = item.array and R.prog.shared_arrays or R.prog.shared
+      t[item.name] = { as = item.as }
+    end
+    expr(R, item.node)
+  end
+end
 function CHECK.getput(R, st)
   coords(R, st.p1)
   if st.p2 then coords(R, st.p2) end

@@ -25,7 +25,7 @@ M.names = {
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
-  "rset", "direct_lines", "palette_using", "clear",
+  "rset", "direct_lines", "palette_using", "clear", "chain", "common",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -797,6 +797,42 @@ end
 -- run(program, info): info.data = {[line] = {items}}, info.data_labels = {label = index},
 -- info.strings = {names}, info.arrays = {name = {rank [, "string"]}}, info.base = 1 after
 -- OPTION BASE 1
+-- CHAIN "prog": the program runs the other one (in its folder, .BAS by default) and ends; the
+-- variables of its COMMON go, by position, to the other program's COMMON; the screen stays
+local chained = nil     -- what a CHAIN passes to the next runtime: {values, mode}
+local function install_chain(E, R)
+  function E.common(names)
+    R.common = names
+    if R.passed then
+      for i, n in ipairs(names) do
+        if R.passed[i] ~= nil then rawset(E, n, R.passed[i]) end
+      end
+      R.passed = nil
+    end
+  end
+  function E.chain(name)
+    local dir = files_rt.folder_of(R.chunkname)
+    if not name:find("%.[^/\\]*$") then name = name .. ".BAS" end
+    local path = files_rt.existing(files_rt.resolve(dir, name, 2))
+    if not path then error("File not found", 2) end
+    local ok, h = pcall(io.open, path, "rb")
+    if not ok then error("Permission denied (" .. tostring(h) .. ")", 2) end
+    if not h then error("File not found", 2) end
+    local src = h:read("a")
+    h:close()
+    local shown = path:gsub("^%./", "")
+    local lua, msg = require("qbasic").translate(src, shown)
+    if not lua then error(setmetatable({ text = msg }, Message), 0) end
+    local values = {}
+    for i, n in ipairs(R.common or {}) do values[i] = E[n] end
+    chained = { values = values, mode = R.mode }
+    local chunk = assert(load(lua, "@" .. shown, "t", R.host))
+    R.rt.close_all()
+    chunk()
+    error(STOP, 0)
+  end
+end
+
 local function install_run(E, R)
   function E.run(program, info)
     info = info or {}
@@ -923,6 +959,7 @@ function M.new(host, chunkname)
   install_print(E, R)
   install_drawing(E, R)
   install_errors(E, R)
+  install_chain(E, R)
   function E.stop() error(STOP, 0) end
 
   -- the screen as a text device, the keyboard and the clock (qbasic_screen.lua)
@@ -944,6 +981,16 @@ function M.new(host, chunkname)
   screen_rt.install(E, rt)
   hw_rt.install(E, rt)
   files_rt.install(E, rt)
+  if chained then   -- a CHAIN started this program: COMMON's values, and the screen as it is
+    R.passed = chained.values
+    if chained.mode ~= 0 then
+      R.mode, R.info = chained.mode, rt.mode_info(chained.mode)
+      R.ncolors = R.info.colors
+      rt.dac_reset(R.mode)
+      rt.text_mode(R.info)
+    end
+    chained = nil
+  end
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
   function E.direct_lines(...)

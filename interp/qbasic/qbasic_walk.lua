@@ -58,6 +58,11 @@ EXPRS.view = EXPRS.window
 function EXPRS.swap(st, x) x(st.a); x(st.b) end
 function EXPRS.rtcall(st, x) for i = 1, st.nargs do x(st.args[i]) end end
 function EXPRS.justify(st, x) x(st.target); x(st.expr) end
+function EXPRS.common(st, x, fn)
+  for _, item in ipairs(st.items) do
+    if item.array then fn(item.node) else x(item.node) end
+  end
+end
 function EXPRS.palette_using(st, x, fn)
   fn(st.array)
   for _, a in ipairs(st.index) do x(a) end

@@ -6,9 +6,9 @@
 . "$(dirname "$0")/lib.sh"
 
 n=0
+cp "$QB_DIR"/progs/*.bas .     # all of them: chain.bas runs chain_next.bas
 for bas in "$QB_DIR"/progs/*.bas; do
     name=$(basename "$bas" .bas)
-    cp "$bas" "$name.bas"
     # a program that expects a person reads its answers from NAME.in (else no input at all)
     input=/dev/null
     [ -f "$QB_DIR/progs/$name.in" ] && input="$QB_DIR/progs/$name.in"

@@ -1,3 +1,3 @@
-' EXPECT: 3: CHAIN: not supported by pointcalc
+' EXPECT: 3: RUN: not supported by pointcalc
 SCREEN 12
-CHAIN "next.bas"
+RUN "next.bas"
