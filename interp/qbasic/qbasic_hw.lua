@@ -13,7 +13,8 @@
 -- take_key() (the next key of the input or nil) and clock() (the virtual clock in seconds).
 local M = {}
 
-M.names = { "out_port", "inp", "wait_port", "def_seg", "peek", "poke", "dac_reset" }
+M.names = { "out_port", "inp", "wait_port", "def_seg", "peek", "poke", "dac_reset", "bsave",
+  "bload" }
 
 -- The 64 colours of the EGA palette registers as 6-bit DAC levels: bits 0-2 blue, green, red
 -- at 2/3, bits 3-5 at 1/3 (the DAC of the 16-colour modes is loaded with them)
@@ -228,6 +229,47 @@ local function install_memory(E, rt, H)
   end
 end
 
+-- BSAVE and BLOAD: a file of QBasic's format (the byte &HFD, the segment, offset and length as
+-- 16-bit little-endian numbers, then the bytes) of the emulated memory: SCREEN 13's pixels
+local function install_bsave(E, rt, H)
+  local to_int = rt.to_int
+  local files = require("qbasic_files")
+  local function path_of(name, level)
+    return files.resolve(files.folder_of(rt.chunkname), name, level + 1)
+  end
+  function E.bsave(name, off, len)
+    off = to_int(off, -32768, 65535, 2) & 0xFFFF
+    len = to_int(len, -32768, 65535, 2) & 0xFFFF
+    local seg = H.seg or 0
+    local t = {}
+    for i = 0, len - 1 do t[#t + 1] = string.char(E.peek(off + i)) end
+    local p = files.existing(path_of(name, 2)) or path_of(name, 2)
+    local ok, h = pcall(io.open, p, "wb")
+    if not ok then error("Permission denied (" .. tostring(h) .. ")", 2) end
+    if not h then error("Path not found", 2) end
+    h:write(string.pack("<BI2I2I2", 0xFD, seg, off, len))
+    h:write(table.concat(t))
+    h:close()
+  end
+  function E.bload(name, off)
+    local p = files.existing(path_of(name, 2))
+    if not p then error("File not found", 2) end
+    local ok, h = pcall(io.open, p, "rb")
+    if not ok then error("Permission denied (" .. tostring(h) .. ")", 2) end
+    local s = h:read("a")
+    h:close()
+    if #s < 7 or s:byte(1) ~= 0xFD then error("Bad file mode (not a BSAVE file)", 2) end
+    local _, fseg, foff, flen = string.unpack("<BI2I2I2", s)
+    if off == nil then   -- the segment and offset the file was saved from
+      H.seg, off = fseg, foff
+    else
+      off = to_int(off, -32768, 65535, 2) & 0xFFFF
+    end
+    local data = s:sub(8, 7 + flen)
+    for i = 1, #data do E.poke(off + i - 1, data:byte(i)) end
+  end
+end
+
 function M.install(E, rt)
   local H = { write_index = 0, write_comp = 1, read_index = 0, read_comp = 1, retrace = false,
     scan = 0, kbflags = 0, seg = nil, spare = {} }
@@ -248,6 +290,7 @@ function M.install(E, rt)
   rt.dac_reset(12)
   install_ports(E, rt, H)
   install_memory(E, rt, H)
+  install_bsave(E, rt, H)
 end
 
 return M

@@ -717,6 +717,19 @@ function STMT.common(P)
   until not P:accept_op(",")
   return add(P, { k = "common", items = items, shared = shared })
 end
+-- BSAVE f$, offset, length and BLOAD f$ [, offset]: memory (SCREEN 13's pixels) to a file
+function STMT.bsave(P)
+  local f = P:expr()
+  P:expect_op(",")
+  local off = P:expr()
+  P:expect_op(",")
+  return rtcall(P, "bsave", { f, off, P:expr() })
+end
+function STMT.bload(P)
+  local f = P:expr()
+  if P:accept_op(",") then return rtcall(P, "bload", { f, P:expr() }) end
+  return rtcall(P, "bload", { f })
+end
 function STMT.chain(P) return rtcall(P, "chain", { P:expr() }) end
 function STMT.randomize(P)
   if P:at_end() then return rtcall(P, "randomize_ask", {}) end
