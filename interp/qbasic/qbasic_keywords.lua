@@ -98,12 +98,13 @@ K.FUNCS = {
   eof = { args = { "n" }, ty = "int", lua = "eof_" }, lof = { args = { "n" }, ty = "long", lua = "lof_" },
   loc = { args = { "n" }, ty = "long", lua = "loc_" }, freefile = { args = {}, ty = "int" },
   seek = { args = { "n" }, ty = "long", lua = "seek_" },
+  screen = { args = { "n", "n", "?n" }, ty = "int", lua = "screen_fn" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
 for w in ([[inkey$ input$ csrlin pos pmap fre varptr
-  stick strig pen play screen sadd lpos
+  stick strig pen play sadd lpos
   ioctl$ fileattr varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
 end

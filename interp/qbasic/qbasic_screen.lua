@@ -24,7 +24,7 @@ M.GIVE_UP_POLLS = 200000
 M.names = { "locate", "width", "draw", "pcopy", "sleep", "beep", "sound", "play", "key_def",
   "view_print", "get_into", "put_from", "input_fields", "line_input", "randomize_ask", "inkey",
   "input_chars", "csrlin", "pos_", "pmap", "varptr", "text_out", "time_s", "date_s",
-  "environ_s", "set_time", "set_date" }
+  "environ_s", "set_time", "set_date", "screen_fn" }
 
 -- EGA's 64 colours: bits 0-2 blue, green, red at 2/3, bits 3-5 at 1/3 (PALETTE in SCREEN 9)
 local function ega64(c)
@@ -53,13 +53,37 @@ local function install_text(E, rt, S)
   local h_print_at, h_scroll, h_cls = draw("print_at"), draw("scroll_text"), draw("cls")
   local tx = S.tx
   local out = io.stdout
+  -- the characters on the screen, for the SCREEN(row, col) function: cells[row][col] = byte
+  local cells = {}
+  S.cells = cells
+  local function remember(row, col, part)
+    local r = cells[row] or {}
+    cells[row] = r
+    for i = 1, #part do
+      if col + i - 1 <= tx.cols then r[col + i - 1] = part:byte(i) end
+    end
+  end
+  local function scroll_cells()
+    for r = tx.top, tx.bottom - 1 do cells[r] = cells[r + 1] end
+    cells[tx.bottom] = nil
+  end
+  local function forget(top, bottom) for r = top, bottom do cells[r] = nil end end
+  function E.screen_fn(row, col, flag)
+    row, col = to_int(row, -32768, 32767, 2), to_int(col, -32768, 32767, 2)
+    if row < 1 or row > tx.rows or col < 1 or col > tx.cols then error(IFC, 2) end
+    if flag ~= nil and to_int(flag, -32768, 32767, 2) ~= 0 then
+      return graphics(rt) and (draw("color")()) or 7   -- the attribute: the text colour
+    end
+    return cells[row] and cells[row][col] or 32
+  end
 
   local function newline()
     tx.col = 1
     if tx.row < tx.bottom then
       tx.row = tx.row + 1
-    elseif graphics(rt) then
-      h_scroll(tx.top, tx.bottom, 0)
+    else
+      scroll_cells()
+      if graphics(rt) then h_scroll(tx.top, tx.bottom, 0) end
     end
   end
 
@@ -75,6 +99,7 @@ local function install_text(E, rt, S)
         local part = piece:sub(1, room)
         -- CHR$(0) shows as a blank cell on QBasic's screen (code page 437's glyph 0 is none)
         h_print_at(tx.row, tx.col, (part:gsub("%z", " ")), nil, 0)
+        remember(tx.row, tx.col, part)
         tx.col = tx.col + #part
         piece = piece:sub(room + 1)
         if tx.col > tx.cols then newline() end
@@ -90,6 +115,12 @@ local function install_text(E, rt, S)
     if graphics(rt) then
       screen_text(s)
     else   -- text mode: standard output is the screen; no wrapping (docs/qbasic.md)
+      local row, col = tx.row, tx.col
+      for line, sep in s:gmatch("([^\n]*)(\n?)") do
+        remember(row, col, line)
+        if sep == "" then break end
+        row, col = math.min(row + 1, tx.bottom), 1
+      end
       local nl = s:find("\n[^\n]*$")
       if nl then
         local _, n = s:gsub("\n", "")
@@ -107,6 +138,7 @@ local function install_text(E, rt, S)
     tx.rows, tx.cols = info and info.rows or 25, info and info.cols or 80
     tx.top, tx.bottom, tx.row, tx.col = 1, tx.rows, 1, 1
     tx.pages, tx.active, tx.visual = info and info.pages or 1, 0, 0
+    forget(1, 60)
   end
 
   function E.locate(row, col)
@@ -148,6 +180,7 @@ local function install_text(E, rt, S)
   end
   -- CLS 0 (or none): the whole screen; 1: the graphics view; 2: the text viewport
   function rt.cls(n)
+    if n ~= 1 then forget(n == 2 and tx.top or 1, n == 2 and tx.bottom or tx.rows) end
     if not graphics(rt) then tx.row, tx.col = tx.top, 1 return end
     if n == 2 then
       for r = tx.top, tx.bottom do h_print_at(r, 1, string.rep(" ", tx.cols), nil, 0) end
