@@ -116,7 +116,7 @@ K.RT_STATEMENTS = {
   screen = "nnnn", locate = "nn", width = "nn", draw = "s", pcopy = "nn", sleep = "n",
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
   out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n", error_n = "n",
-  chain = "s", bsave = "snn", bload = "sn", set_time = "s", set_date = "s", open_file = "ssnn", seek_file = "nn", kill_file = "s",
+  chain = "s", run_program = "s", bsave = "snn", bload = "sn", set_time = "s", set_date = "s", open_file = "ssnn", seek_file = "nn", kill_file = "s",
   name_file = "ss",
 }
 
@@ -126,7 +126,7 @@ K.MAX_STRING = 32767
 -- statements pointcalc knows but does not implement: named in the error
 K.UNSUPPORTED_STMTS = {
   lprint = "LPRINT", on = "ON", shell = "SHELL", files = "FILES", chdir = "CHDIR",
-  mkdir = "MKDIR", rmdir = "RMDIR", run = "RUN", tron = "TRON", troff = "TROFF",
+  mkdir = "MKDIR", rmdir = "RMDIR", tron = "TRON", troff = "TROFF",
   ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
   timer = "TIMER ON/OFF", strig = "STRIG", pen = "PEN", com = "COM", signal = "SIGNAL",
   date = "DATE$",

@@ -731,6 +731,12 @@ function STMT.bload(P)
   return rtcall(P, "bload", { f })
 end
 function STMT.chain(P) return rtcall(P, "chain", { P:expr() }) end
+-- RUN: the program again from the start, its variables cleared; RUN f$: another program
+function STMT.run(P)
+  if P:at_end() then return rtcall(P, "run_program", {}) end
+  if P:peek().t == "num" then P:unsupported("RUN with a line number") end
+  return rtcall(P, "run_program", { P:expr() })
+end
 function STMT.randomize(P)
   if P:at_end() then return rtcall(P, "randomize_ask", {}) end
   return add(P, { k = "randomize", expr = P:expr() })

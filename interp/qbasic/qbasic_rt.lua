@@ -25,7 +25,7 @@ M.names = {
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
-  "rset", "direct_lines", "palette_using", "clear", "chain", "common",
+  "rset", "direct_lines", "palette_using", "clear", "chain", "common", "run_program",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -809,6 +809,11 @@ local function install_chain(E, R)
       end
       R.passed = nil
     end
+  end
+  function E.run_program(name)
+    if name == nil then name = R.chunkname:match("[^/]*$") end
+    R.common = nil      -- RUN passes nothing on
+    E.chain(name)
   end
   function E.chain(name)
     local dir = files_rt.folder_of(R.chunkname)

@@ -1,3 +1,3 @@
-' EXPECT: 3: RUN: not supported by pointcalc
+' EXPECT: 3: SHELL: not supported by pointcalc
 SCREEN 12
-RUN "next.bas"
+SHELL "dir"
