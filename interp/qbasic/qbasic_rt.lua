@@ -628,12 +628,24 @@ local function install_drawing(E, R)
   local function graphics(level)
     if R.mode == 0 then error(IFC, level + 1) end
   end
-  local function colour(c, level)
-    if c == nil then return nil end
+  -- COLOR's and PALETTE's attribute: one of the mode's
+  local function attribute(c, level)
     if c ~= c then error(IFC, level + 1) end
     local r = round_even(c)
     if r < 0 or r >= R.ncolors then error(IFC, level + 1) end
     return math.tointeger(r)
+  end
+  -- A colour beyond the mode's attributes keeps the bits the video memory has (the planes of
+  -- the 16-colour modes, SCREEN 1's 2 bits: 16 is 0, 7 is 3), and SCREEN 2 shows any
+  -- colour but 0 as 1 (QuickBASIC 4.x, Microsoft KB Q28026); beyond 0..255 is an error
+  local function colour(c, level)
+    if c == nil then return nil end
+    if c ~= c then error(IFC, level + 1) end
+    local r = round_even(c)
+    if r < 0 or r > 255 then error(IFC, level + 1) end
+    r = math.tointeger(r)
+    if R.ncolors == 2 and R.mode == 2 then return r ~= 0 and 1 or 0 end
+    return r % R.ncolors
   end
 
   -- SCREEN mode, colour switch, active page, visual page
@@ -680,12 +692,12 @@ local function install_drawing(E, R)
     if R.mode == 0 then return end       -- text colours: PRINT goes to standard output
     if R.mode ~= 11 and R.mode ~= 12 and R.mode ~= 13 then R.rt.color_other(R.mode, fg, bg, 2) return end
     if bg ~= nil then error(IFC, 2) end
-    if fg ~= nil then h_color(colour(fg, 2)) end
+    if fg ~= nil then h_color(attribute(fg, 2)) end
   end
   function E.palette(attr, c)
     if R.mode == 0 then return end
     if attr == nil then h_palette() R.rt.dac_reset(R.mode) return end
-    attr = colour(attr, 2)
+    attr = attribute(attr, 2)
     if R.mode ~= 11 and R.mode ~= 12 and R.mode ~= 13 then R.rt.palette_other(R.mode, attr, c, 2) return end
     c = to_int(c, -2147483648, 2147483647, 2)
     if c == -1 then return end
