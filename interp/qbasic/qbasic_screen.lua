@@ -368,25 +368,37 @@ local function install_clock(E, rt, S)
   -- ENVIRON$: a run sees no environment variables (the same every run, and nothing leaks)
   function E.environ_s(_) return "" end
   rt.clock = function() return S.clock end
-  rt.advance = function(dt) S.clock = S.clock + dt end
+  -- every step of the virtual clock: with --for SECONDS (M.RUN_FOR), a program still running
+  -- after that long on it is ended there, normally: its picture is the screen as it stands
+  local elapsed = 0
+  local function advance(dt)
+    S.clock = S.clock + dt
+    elapsed = elapsed + dt
+    if M.RUN_FOR and elapsed >= M.RUN_FOR then
+      io.stderr:write(string.format("%s:%s: ran for %g virtual seconds (--for): stopped; the "
+        .. "picture is the screen as it stands\n", rt.chunkname, rt.program_line() or "?", M.RUN_FOR))
+      E.stop()
+    end
+  end
+  rt.advance = advance
   local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the clock ------------------------------------------------------------------------
   function E.timer()
     local t = S.clock
-    S.clock = S.clock + M.TICK
+    advance(M.TICK)
     return rt.f32(t)
   end
   function E.sleep(n)
     if n ~= nil then
       n = to_int(n, -2147483648, 2147483647, 2)
-      if n > 0 then S.clock = S.clock + n end
+      if n > 0 then advance(n) end
     end
   end
   function E.beep() end
   function E.sound(freq, ticks)
     if freq - freq ~= 0 or ticks - ticks ~= 0 then error(IFC, 2) end
     if (freq ~= 0 and (freq < 37 or freq > 32767)) or ticks < 0 or ticks > 65535 then error(IFC, 2) end
-    S.clock = S.clock + ticks * M.TICK
+    advance(ticks * M.TICK)
   end
   function E.play(_) end
   function E.key_def(n, _)
@@ -445,7 +457,7 @@ local function install_keyboard(E, rt, S)
   -- a poll that found no key: a tick of the clock; true when it is time for the Enter that
   -- answers "press any key"; a program still polling long after the input ended is ended
   local function empty_poll()
-    S.clock = S.clock + M.TICK
+    rt.advance(M.TICK)
     empty_polls, total_empty = empty_polls + 1, total_empty + 1
     if total_empty > M.GIVE_UP_POLLS then
       io.stderr:write(rt.chunkname .. ": the program keeps waiting for a key and the input has run out: ended\n")

@@ -92,6 +92,17 @@ run "$POINTCALC" --safe --allow "$WORK" safe_files.bas
 check
 diff -q out.txt "$QB_DIR/progs/files.out" >/dev/null || fail "files.bas with --allow: output differs"
 
+# --for SECONDS: screensaver.bas stopped after 5 seconds of its virtual clock, normally, saying
+# so; the picture is its screen then: the dots of the first frames (x = 13 is colour 14), not yet
+# those of x = 200
+run "$POINTCALC" --for 5 screensaver.bas -o saver.ppm
+expect_rc 0 "--for 5"
+expect_in err.txt "screensaver.bas:13: ran for 5 virtual seconds (--for): stopped" "--for: the note"
+expect_eq "$(px320 saver.ppm 13 150)" "ffff55" "--for: the first frame's dot"
+expect_eq "$(px320 saver.ppm 200 150)" "000000" "--for: no dot the program had not reached"
+run "$POINTCALC" --for 0 screensaver.bas
+expect_rc 2 "--for 0 is a usage error"
+
 # a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
 # the program and the limit, without a Lua traceback, and the picture is still written
 printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
