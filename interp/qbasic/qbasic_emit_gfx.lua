@@ -207,6 +207,11 @@ function M.print_using(st)
     else args[#args + 1] = (value(v, 0)) end
   end
   if not st.newline then args[#args + 1] = "nonl" end
+  if st.file then   -- PRINT #n, USING: into the file
+    table.insert(args, 1, (value(st.file, 0)))
+    E(st.line, "fprint_using(" .. table.concat(args, ", ") .. ")")
+    return
+  end
   E(st.line, "qprint_using(" .. table.concat(args, ", ") .. ")")
 end
 

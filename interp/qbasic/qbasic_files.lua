@@ -336,6 +336,23 @@ function M.install(E, rt)
   install_sequential(E, rt, F)
   install_records(E, rt, F)
   rt.file_put, rt.file_col = F.put, F.col
+  -- INPUT$(n, #f): the next n bytes of a file opened for INPUT or BINARY
+  function rt.file_chars(k, n)
+    local f = F.file(n, 3, "IB")
+    k = rt.to_int(k, -32768, 32767, 3)
+    if k < 1 then error(rt.IFC, 3) end
+    if f.mode == "I" then
+      if f.pos + k - 1 > #f.data then error("Input past end of file", 3) end
+      local s = f.data:sub(f.pos, f.pos + k - 1)
+      f.pos = f.pos + k
+      return s
+    end
+    f.h:seek("set", f.pos - 1)
+    local s = f.h:read(k) or ""
+    if #s < k then error("Input past end of file", 3) end
+    f.pos = f.pos + k
+    return s
+  end
   rt.close_all = function() for _, f in pairs(F.open) do if f.h then f.h:close() end end end
 end
 

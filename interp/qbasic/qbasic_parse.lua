@@ -890,8 +890,8 @@ function STMT.print_file(P)
   P.pos = P.pos + 1
   local file = P:expr()
   P:expect_op(",")
-  if P:is_kw("using") then P:unsupported("PRINT # USING") end
-  local st = STMT.print(P)
+  local st
+  if P:is_kw("using") then st = STMT.print_using(P) else st = STMT.print(P) end
   st.file = file
   return st
 end

@@ -78,6 +78,16 @@ local function builtin(P, t)
     P:expect_op(")")
     return { k = "call", fn = t.v, args = args, line = P.lineno }
   end
+  if t.v == "input$" and P:is_op("(") then   -- INPUT$(n [, [#]file])
+    P.pos = P.pos + 1
+    local args = { P:expr() }
+    if P:accept_op(",") then
+      P:accept_op("#")
+      args[2] = P:expr()
+    end
+    P:expect_op(")")
+    return { k = "call", fn = t.v, args = args, line = P.lineno }
+  end
   local args = {}
   if P:accept_op("(") then args = P:args() end
   return { k = "call", fn = t.v, args = args, line = P.lineno }

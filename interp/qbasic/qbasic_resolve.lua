@@ -259,6 +259,7 @@ function CHECK.midset(R, st)
   str(R, st.target); num(R, st.start); opt_num(R, st.len); str(R, st.expr)
 end
 function CHECK.print_using(R, st)
+  opt_num(R, st.file)
   str(R, st.format)
   for _, v in ipairs(st.values) do expr(R, v); no_record(R, v) end
 end

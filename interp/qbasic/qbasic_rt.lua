@@ -26,6 +26,7 @@ M.names = {
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
   "rset", "direct_lines", "palette_using", "clear", "chain", "common", "run_program",
+  "fprint_using",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -607,16 +608,17 @@ local function install_print(E, R)
   -- PRINT USING fmt$; values (qbasic_using.lua); a last nonl: no new line
   local using = require("qbasic_using")
   local function using_error(msg) error(msg, 4) end
-  function E.qprint_using(fmt, ...)
+  local function formatted(fmt, ...)
     local values = { ... }
     local newline = true
     if values[#values] == NONL then values[#values] = nil; newline = false end
     for i, v in ipairs(values) do
       if type(v) == "table" and v[MARK] == "double" then values[i] = { double = v.v } end
     end
-    write(using.format(fmt, values, using_error))
-    if newline then write("\n") end
+    return using.format(fmt, values, using_error) .. (newline and "\n" or "")
   end
+  function E.qprint_using(fmt, ...) write(formatted(fmt, ...)) end
+  function E.fprint_using(n, fmt, ...) R.rt.file_put(n, formatted(fmt, ...), 2) end
 end
 
 local function install_drawing(E, R)

@@ -483,7 +483,7 @@ local function install_keyboard(E, rt, S)
     E.stop()
   end
   function E.input_chars(n, file)
-    if file ~= nil then error("INPUT$ from a file: not supported by pointcalc", 2) end
+    if file ~= nil then local r = rt.file_chars(n, file) return r end   -- INPUT$(n, #f)
     n = to_int(n, -32768, 32767, 2)
     if n < 1 or n > 32767 then error(IFC, 2) end
     local t = {}

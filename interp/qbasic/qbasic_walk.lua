@@ -38,7 +38,10 @@ EXPRS["for"] = function(st, x) x(st.var); x(st.from); x(st.to); x(st.step) end
 function EXPRS.if1(st, x) x(st.cond) end
 EXPRS["while"] = EXPRS.if1
 function EXPRS.midset(st, x) x(st.target); x(st.start); x(st.len); x(st.expr) end
-function EXPRS.print_using(st, x) x(st.format); for _, v in ipairs(st.values) do x(v) end end
+function EXPRS.print_using(st, x)
+  x(st.file); x(st.format)
+  for _, v in ipairs(st.values) do x(v) end
+end
 function EXPRS.erase(st, x, fn) for _, a in ipairs(st.arrays) do fn(a) end end
 function EXPRS.select(st, x) x(st.expr) end
 EXPRS.on, EXPRS.randomize = EXPRS.select, EXPRS.select
