@@ -52,6 +52,9 @@ local function lex_all(prog)
       error(t, 0)
     end
     all_toks[i] = t
+    for j = 1, #t do
+      if t[j].t == "kw" and t[j].v == "select" then prog.has_select = true end
+    end
     for j = 1, #t - 1 do
       local a, b = t[j], t[j + 1]
       if a.t == "kw" and (a.v == "function" or a.v == "sub") and b.t == "id"
@@ -61,6 +64,17 @@ local function lex_all(prog)
     end
   end
   prog.functions, prog.subs = functions, subs
+  -- GW-BASIC has no SELECT CASE, so IS is no reserved word there: in a numbered listing
+  -- without SELECT it is a variable (IS = 1)
+  if prog.numbered and not prog.has_select then
+    for _, t in ipairs(all_toks) do
+      for j, tok in ipairs(t) do
+        if tok.t == "kw" and tok.v == "is" then
+          t[j] = { t = "id", v = "is", text = "is", col = tok.col }
+        end
+      end
+    end
+  end
   return all_toks
 end
 
