@@ -1,0 +1,152 @@
+/* Conics that know what they are (geom/conic_el.h) in Lua:
+ *   c:conic()                              the conic a 2-D curve lies on
+ *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f})
+ * both -> {kind, circle, discriminant, coef, center, vertex, axes, semi, a, b, foci, e, p,
+ *          asymptotes, mu, w, k, k_ceva}
+ * pcl_push_conic_info is shared with korotky.conic_elements. */
+#include <math.h>
+#include "pcl.h"
+#include "pcl_curve.h"
+#include "pcl_point.h"
+#include "conic_el.h"
+
+static void setnum(lua_State *L, const char *k, double v) {
+    if (isnan(v)) return;     /* undefined for this conic: the field is absent */
+    lua_pushnumber(L, v + 0.0);
+    lua_setfield(L, -2, k);
+}
+
+static void setpair(lua_State *L, const char *k, const double v[2][2], int n, int point) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        if (point) pcl_pushpoint(L, 2, v[i]);
+        else pcl_pushvector(L, 2, v[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, k);
+}
+
+void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
+    static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
+    lua_createtable(L, 0, 20);
+    lua_pushstring(L, kinds[o->kind]);
+    lua_setfield(L, -2, "kind");
+    lua_pushboolean(L, o->circle);
+    lua_setfield(L, -2, "circle");
+    setnum(L, "discriminant", o->disc);
+    lua_createtable(L, 6, 0);
+    for (int i = 0; i < 6; i++) {
+        lua_pushnumber(L, o->coef[i] + 0.0);   /* no -0 in the listing */
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, "coef");
+    if (o->central) {
+        pcl_pushpoint(L, 2, o->center);
+        lua_setfield(L, -2, "center");
+        lua_createtable(L, 2, 0);
+        for (int i = 0; i < 2; i++) {
+            lua_pushnumber(L, o->semi[i]);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, "semi");
+        setnum(L, "a", o->semi[0]);
+        setnum(L, "b", o->semi[1]);
+    } else {
+        pcl_pushpoint(L, 2, o->vertex);
+        lua_setfield(L, -2, "vertex");
+    }
+    setpair(L, "axes", o->axis, 2, 0);
+    setpair(L, "foci", o->focus, o->nfoci, 1);
+    setnum(L, "e", o->ecc);
+    setnum(L, "p", o->param);
+    if (o->nasym) setpair(L, "asymptotes", o->asym, 2, 0);
+    setnum(L, "mu", o->mu);
+    setnum(L, "w", o->w);
+    setnum(L, "k", o->k_ed);
+    setnum(L, "k_ceva", o->k_ceva);
+}
+
+/* The message for a status of pc_curve_conic / pc_conic_info_*. */
+static int conic_error(lua_State *L, const char *fn, int st, int dim) {
+    switch (st) {
+    case PC_EDIM:
+        return pcl_error(L, "%s: the curve is %d-D; a conic's elements are those of a plane (2-D) curve", fn, dim);
+    case PC_ENOTCOLLINEAR:
+        return pcl_error(L, "%s: the curve does not lie on one conic", fn);
+    case PC_ECOLLINEAR:
+        return pcl_error(L, "%s: the points are a straight line (a middle weight 0, or collinear points): no conic", fn);
+    case PC_EDOMAIN:
+        return pcl_error(L, "%s: a degenerate conic (a line pair, parallel lines, or no real points)", fn);
+    default:
+        return pcl_raise_status(L, fn, st);
+    }
+}
+
+static int conic_of_curve(lua_State *L, const char *fn, pc_curve *c) {
+    pc_conic_info o;
+    pcl_callback_state(L);
+    int st = pc_curve_conic(c, &o);
+    if (st != PC_OK) return conic_error(L, fn, st, c->dim);
+    pcl_push_conic_info(L, &o);
+    return 1;
+}
+
+static int c_conic(lua_State *L) {
+    pc_curve *c = pcl_tocurve(L, 1);
+    if (!c) return pcl_argerror_full(L, "c:conic", 1, 0, "self", "a curve");
+    return conic_of_curve(L, "c:conic", c);
+}
+
+static int l_elements(lua_State *L) {
+    const char *fn = "conic.elements";
+    pc_curve *c = pcl_tocurve(L, 1);
+    if (c) return conic_of_curve(L, fn, c);
+    pc_conic_info o;
+    int st;
+    if (lua_istable(L, 1)) {
+        if (luaL_len(L, 1) != 6)
+            return pcl_argerror_full(L, fn, 1, 1, "coefficients", "a list of 6 numbers {a, b, c, d, e, f}");
+        double q[6];
+        for (int i = 0; i < 6; i++) {
+            lua_geti(L, 1, i + 1);
+            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+                return pcl_error(L, "%s: argument #1 (coefficients) [%d] must be a finite number, got %s", fn,
+                                 i + 1, pcl_shown(L, lua_gettop(L)));
+            q[i] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        st = pc_conic_info_coef(q, &o);
+    } else if (pcl_tovalue(L, 1)) {
+        static const char *names[5] = {"A", "B", "C", "D", "E"};
+        double pts[10], q[6];
+        for (int i = 0; i < 5; i++) {
+            if (lua_isnoneornil(L, i + 1))
+                return pcl_argerror_full(L, fn, i + 1, i + 1, names[i], "a 2-D point (five points fix the conic)");
+            pcl_checkloc(L, i + 1, names[i], 2, 0, pts + 2 * i);
+        }
+        st = pc_conic_coef_five(pts, q);
+        if (st == PC_ECOLLINEAR)
+            return pcl_error(L, "%s: the five points fix no single conic (four of them are collinear, or two coincide)", fn);
+        if (st == PC_OK) st = pc_conic_info_coef(q, &o);
+    } else {
+        return pcl_argerror_full(L, fn, 1, 1, "conic",
+                                 "a 2-D curve, five points or the coefficients {a, b, c, d, e, f}");
+    }
+    if (st != PC_OK) return conic_error(L, fn, st, 2);
+    pcl_push_conic_info(L, &o);
+    return 1;
+}
+
+/* After pcl_open_curves and pcl_open_konopatsky, with the module table on top. */
+void pcl_open_conic_elements(lua_State *L) {
+    int module = lua_gettop(L);
+    pcl_private(L, module);
+    lua_getfield(L, -1, "curve_methods");
+    lua_pushcfunction(L, c_conic);
+    lua_setfield(L, -2, "conic");
+    lua_settop(L, module);
+    lua_getfield(L, module, "conic");
+    lua_pushcfunction(L, l_elements);
+    lua_setfield(L, -2, "elements");
+    lua_settop(L, module);
+}
