@@ -277,6 +277,8 @@ def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
 def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+def("c:conic", "c:conic() -> {kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
+  "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic.", "method")
 
 -- ---------------------------------------------------------------------------------------
 area("equations", "Point equations",
@@ -577,6 +579,8 @@ def("conic.ceva", "conic.ceva(A1, A2, A3, k) -> curve",
   "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola.")
 def("conic.ceva_k", "conic.ceva_k(A1, A2, A3, K) -> k",
   "(2.100) k = v31/v23 of the conic of the pencil through the point K.")
+def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements"},
+  "What a conic is: the table of c:conic() for a curve, for the conic through five points, or for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0 (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},
   "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B.")
 def("conic.ellipse", "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant =, range = {t0, t1}]} -> curve",

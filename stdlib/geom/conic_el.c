@@ -184,8 +184,12 @@ static int elements(pc_conic_info *o) {
     }
     double A = sqrt(fabs(first ? s1 : s0)), B = sqrt(fabs(first ? s0 : s1));
     o->semi[0] = A, o->semi[1] = B;
-    memcpy(o->axis[0], v[first], sizeof v[0]);
-    memcpy(o->axis[1], v[1 - first], sizeof v[0]);
+    /* one orientation for one conic: axis[0] points to +x (or +y when vertical), axis[1] is it
+     * turned by +90 degrees, so focus[0] is the one on the side axis[0] points to */
+    double ux = v[first][0], uy = v[first][1];
+    if (ux < -1e-12 || (fabs(ux) <= 1e-12 && uy < 0)) ux = -ux, uy = -uy;
+    o->axis[0][0] = ux, o->axis[0][1] = uy;
+    o->axis[1][0] = -uy, o->axis[1][1] = ux;
     double cf = o->kind == PC_CK_ELLIPSE ? sqrt(fmax(A * A - B * B, 0)) : hypot(A, B);
     o->circle = o->kind == PC_CK_ELLIPSE && A - B <= 1e-9 * A;
     if (o->circle) cf = 0;

@@ -28,8 +28,9 @@ typedef struct {
     int central;           /* ellipse or hyperbola: the centre exists */
     double center[2];
     double vertex[2];      /* a parabola's vertex */
-    double axis[2][2];     /* unit directions: [0] the major / transverse axis, or a parabola's
-                              axis pointing into the curve; [1] the other */
+    double axis[2][2];     /* unit directions: [0] the major / transverse axis (towards +x, or
+                              +y when vertical), or a parabola's axis pointing into the curve;
+                              [1] the other, [0] turned by +90 degrees for a central conic */
     double semi[2];        /* semi-axes a, b (a hyperbola's conjugate b); 0 for a parabola */
     double focus[2][2];    /* foci: center +- c axis[0]; a parabola's one focus in focus[0] */
     int nfoci;             /* 2, or 1 for a parabola */
