@@ -514,7 +514,7 @@ def("plane.circle2r", "plane.circle2r(A, B, r) -> circle1, circle2",
 def("plane.circle_slopes", "plane.circle_slopes(A, m1, x_end, m2) -> circle [, circle2]",
   "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it).")
 def("plane.arc3", "plane.arc3(A, B, C) -> curve",
-  "The arc of the circle through A, B, C that passes through B, counter-clockwise (a rational Bezier curve).")
+  "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside).")
 def("plane.classify", "plane.classify(a, b, c) -> \"ellipse\"|\"parabola\"|\"hyperbola\", discriminant",
   "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1).")
 def("plane.rotate_conic", "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef",
@@ -524,11 +524,11 @@ def("plane.conic_value", "plane.conic_value(coef, X) -> number",
 def("plane.conic_coef", "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef",
   "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).")
 def("plane.ellipse", "plane.ellipse(centre, A, B [, th0, th1]) -> curve",
-  "The ellipse centre + (A cos th, B sin th) as rational quadratic pieces (exact), parameter th; A = B is a circle.")
+  "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle.")
 def("plane.parabola", "plane.parabola(p, th0, th1) -> curve",
   "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly.")
 def("plane.hyperbola", "plane.hyperbola(A, B, t0, t1) -> curve",
-  "The hyperbola branch (A ch t, B sh t) (§3.5) as rational quadratic pieces (exact).")
+  "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside).")
 def("plane.points", "plane.points(kind, {A =, B =, step =, n =, method = \"param\"|\"recurrence\"|\"rational\"|\"explicit\"}) -> points",
   "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected).")
 

@@ -1,4 +1,4 @@
-/* Conics that know what they are (geom/conic_el.h) in Lua:
+/* Conics that know what they are (geom/quadratic.h) in Lua:
  *   c:conic()                              the conic a 2-D curve lies on
  *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f})
  * both -> {kind, circle, discriminant, coef, center, vertex, axes, semi, a, b, foci, e, p,
@@ -8,7 +8,7 @@
 #include "pcl.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
-#include "conic_el.h"
+#include "quadratic.h"
 
 static void setnum(lua_State *L, const char *k, double v) {
     if (isnan(v)) return;     /* undefined for this conic: the field is absent */

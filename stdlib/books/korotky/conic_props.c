@@ -3,11 +3,11 @@
 #include "conic_props.h"
 #include <math.h>
 #include <string.h>
-#include "conic_el.h"
+#include "quadratic.h"
 
 int pc_conic_from_arc(const double *cp, double coef[6]) {
     /* the kernel's conic of the homogeneous control points: the weights as they are, so an
-     * arc whose end weights are not 1 (or not positive) is read right (conic_el.h) */
+     * arc whose end weights are not 1 (or not positive) is read right (quadratic.h) */
     return pc_conic_coef_rquad(cp, coef);
 }
 

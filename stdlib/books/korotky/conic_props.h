@@ -12,7 +12,7 @@
  * 3: U, w W, V, as pc_conic_arc_cp writes them; W may be at infinity, any weight may differ
  * from 1).  In the barycentric coordinates (alpha, beta, gamma) of the triangle U, W, V the arc
  * is beta^2 = 4 w^2 alpha gamma (B.3 step 5, the bitangent pencil L_U L_V - mu L_UV^2 with
- * mu = 1/(4 w^2)): the kernel's pc_conic_coef_rquad (conic_el.h).  PC_ECOLLINEAR
+ * mu = 1/(4 w^2)): the kernel's pc_conic_coef_rquad (quadratic.h).  PC_ECOLLINEAR
  * when U, W, V are collinear (w = 0 is the chord, a double line: also PC_ECOLLINEAR),
  * PC_ENONFINITE for NaN/inf. */
 int pc_conic_from_arc(const double *cp, double coef[6]);

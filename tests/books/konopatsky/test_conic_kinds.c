@@ -1,4 +1,4 @@
-/* The conics of chapter 2 know what they are: pc_curve_conic (geom/conic_el.h) on the arcs of
+/* The conics of chapter 2 know what they are: pc_curve_conic (geom/quadratic.h) on the arcs of
  * conic.h, with the cases of issue 23 — the engineering discriminant (2.97) on A(0,0), B(4,0),
  * C(2,3) (digest konopatsky_ch1_2.md §5.6: k = 0.5 parabola, below hyperbola, above ellipse),
  * Ceva's (2.104) (k = 1/4 parabola, §5.7, and its conversion k = (k_ED/(2(1 - k_ED)))^2), the
@@ -9,7 +9,7 @@
 #include <cmocka.h>
 #include <math.h>
 #include "conic.h"
-#include "conic_el.h"
+#include "quadratic.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 

@@ -1,4 +1,4 @@
-/* Conics that know what they are (conic_el.h): arcs of rational quadratic Bezier curves with
+/* Conics that know what they are (quadratic.h): arcs of rational quadratic Bezier curves with
  * any weights, five-point conics and coefficients, checked against the elements worked out by
  * hand for the engineering-discriminant arcs of Konopatsky's (2.97) on A(0,0), B(4,0), C(2,3)
  * (digest konopatsky_ch1_2.md §5.6 and §6: weights (k, 1 - k, k) on A, C, B), the 90-degree
@@ -8,7 +8,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
-#include "conic_el.h"
+#include "quadratic.h"
 #include "status.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))

@@ -8,8 +8,8 @@
  * of the textbook's conic functions).  The kind is the
  * type of the arc's weights where an arc is known (Konopatsky digest §6: mu = w1^2/(w0 w2) < 1
  * ellipse, = 1 parabola, > 1 or < 0 hyperbola) and the sign of b^2 - 4ac otherwise. */
-#ifndef PC_CONIC_EL_H
-#define PC_CONIC_EL_H
+#ifndef PC_QUADRATIC_H
+#define PC_QUADRATIC_H
 
 #include "curve.h"
 

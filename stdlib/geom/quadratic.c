@@ -1,5 +1,5 @@
-/* The implicit equation and metric elements of a plane conic (conic_el.h). */
-#include "conic_el.h"
+/* The implicit equation and metric elements of a plane conic (quadratic.h). */
+#include "quadratic.h"
 #include <math.h>
 #include <string.h>
 #include "status.h"
