@@ -8,6 +8,7 @@
 #include "pcl.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
+#include "pcl_books.h"
 #include "quadratic.h"
 
 static void setnum(lua_State *L, const char *k, double v) {
@@ -122,7 +123,7 @@ static int l_elements(lua_State *L) {
         for (int i = 0; i < 5; i++) {
             if (lua_isnoneornil(L, i + 1))
                 return pcl_argerror_full(L, fn, i + 1, i + 1, names[i], "a 2-D point (five points fix the conic)");
-            pcl_checkloc(L, i + 1, names[i], 2, 0, pts + 2 * i);
+            pclb_point(L, fn, i + 1, names[i], 2, 0, NULL, pts + 2 * i);
         }
         st = pc_conic_coef_five(pts, q);
         if (st == PC_ECOLLINEAR)
