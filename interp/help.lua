@@ -247,8 +247,8 @@ def("plot", {"plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})",
   "Draw t -> f(t) as one connected path (3-D through map or the camera); with a brush, dots = true or qb = true, dots at those steps as the listings do.")
 def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
   "The point of a curve at parameter t (a vector where a rational curve is at infinity).", "method")
-def("c:deriv", "c:deriv(t [, order]) -> vector",
-  "The first (or second) derivative, exact for every kind but Lua functions (differenced).", "method")
+def("c:deriv", "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector",
+  "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there.", "method")
 def("c:tangent", "c:tangent(t) -> vector | c:normal(t) -> vector",
   "The unit tangent; the unit principal normal (in the plane: the tangent turned by +90 degrees).", "method")
 def("c:curvature", "c:curvature(t) -> number",
@@ -277,6 +277,8 @@ def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
 def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+def("c:monomial", "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}",
+  "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators).", "method")
 def("c:conic", "c:conic() -> {kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
   "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic.", "method")
 
