@@ -653,8 +653,8 @@ def("oneratio.desargues_scheme", "oneratio.desargues_scheme(A, B, C, D, t) -> {T
 
 def("interp.lagrange", "interp.lagrange(points [, params]) -> curve",
   "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve.")
-def("interp.weights", {"interp.weights(n, t) -> {w1, ...}", "interp.weights(params, t) -> {w1, ...}"},
-  "The weights of the interpolation curve at t (the book's (4.10)-(4.28) for uniform nodes); they sum to 1.")
+def("interp.weights", {"interp.weights(n, t) -> {w1, ..., w(n+1)}", "interp.weights(params, t) -> {w1, ...}"},
+  "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints.")
 def("interp.controls", "interp.controls(points [, params]) -> {C1, ...}",
   "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7).")
 def("interp.conic", "interp.conic(A, K, B, k) -> curve",

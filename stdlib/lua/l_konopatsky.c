@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_curve.h"
+#include "pcl_expr.h"
 #include "pcl_point.h"
 #include "conic.h"
 #include "konop_curves.h"
@@ -813,20 +814,54 @@ static int i_lagrange(lua_State *L) {
     return push(L, c, st, fn);
 }
 
+/* interp.weights(n, t): the book's order n (n + 1 weights at the uniform j/n), or the list
+ * of node parameters; t a number, or an equation (param "t"): then the weights are equations,
+ * the polynomials the Maple program of §4.8 prints */
 static int i_weights(lua_State *L) {
     const char *fn = "interp.weights";
     lua_settop(L, 2);
     int n;
     double *u = NULL;
     if (lua_isinteger(L, 1)) {
-        n = (int)lua_tointeger(L, 1);
-        if (n < 2 || n > PC_CURVE_MAXDEG + 1) pcl_argerror_full(L, fn, 1, 1, "n", "a number of nodes 2..65");
+        lua_Integer order = lua_tointeger(L, 1);
+        if (order < 1 || order > PC_CURVE_MAXDEG)
+            pcl_argerror_full(L, fn, 1, 1, "n", "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes)");
+        n = (int)order + 1;
     } else if (lua_istable(L, 1)) {
         n = (int)luaL_len(L, 1);
         if (n < 2 || n > PC_CURVE_MAXDEG + 1) pcl_argerror_full(L, fn, 1, 1, "params", "a list of 2..65 parameters");
         u = numlist(L, fn, 1, "params", n);
     } else {
-        return pcl_argerror_full(L, fn, 1, 1, "nodes", "a number of nodes or a list of parameters");
+        return pcl_argerror_full(L, fn, 1, 1, "n", "the book's order n or a list of node parameters");
+    }
+    if (pcl_isequation(L, 2)) {
+        double coef[(PC_CURVE_MAXDEG + 1) * (PC_CURVE_MAXDEG + 1)];
+        int st = pc_lagrange_weight_coefs(n, u, coef);
+        if (st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #1 (params) must be distinct", fn);
+        statuscheck(L, fn, st);
+        lua_createtable(L, n, 0);
+        for (int j = 0; j < n; j++) {
+            /* phi_j = c0 + c1 t + c2 t^2 + ..., terms of zero coefficient left out */
+            int any = 0;
+            for (int i = 0; i < n; i++) {
+                double c = coef[(size_t)j * n + i];
+                if (c == 0) continue;
+                lua_pushnumber(L, c);
+                if (i > 0) {
+                    lua_pushvalue(L, 2);
+                    if (i > 1) {
+                        lua_pushinteger(L, i);
+                        lua_arith(L, LUA_OPPOW);
+                    }
+                    lua_arith(L, LUA_OPMUL);
+                }
+                if (any) lua_arith(L, LUA_OPADD);
+                any = 1;
+            }
+            if (!any) lua_pushnumber(L, 0);
+            lua_rawseti(L, -2, j + 1);
+        }
+        return 1;
     }
     double t = pcl_checknum(L, fn, 2, "t"), w[PC_CURVE_MAXDEG + 1];
     int st = pc_lagrange_weights(n, u, t, w);

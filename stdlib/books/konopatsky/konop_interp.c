@@ -29,6 +29,27 @@ int pc_lagrange_weights(int n, const double *params, double t, double *w) {
     return PC_OK;
 }
 
+int pc_lagrange_weight_coefs(int n, const double *params, double *coef) {
+    if (n < 1 || n > MAXN) return PC_EDIM;
+    for (int j = 0; j < n; j++) {
+        /* phi_j = prod_{m != j} (t - t_m)/(t_j - t_m), multiplied out factor by factor */
+        double *c = coef + (size_t)j * n, tj = params ? params[j] : (n > 1 ? (double)j / (n - 1) : 0);
+        for (int i = 0; i < n; i++) c[i] = i == 0;
+        int deg = 0;
+        for (int m = 0; m < n; m++) {
+            if (m == j) continue;
+            double tm = params ? params[m] : (double)m / (n - 1);
+            if (!isfinite(tm) || !isfinite(tj)) return PC_ENONFINITE;
+            if (tj == tm) return PC_ECOINCIDENT;
+            double k = 1 / (tj - tm);
+            for (int i = deg + 1; i >= 0; i--)
+                c[i] = ((i > 0 ? c[i - 1] : 0) - tm * (i <= deg ? c[i] : 0)) * k;
+            deg++;
+        }
+    }
+    return PC_OK;
+}
+
 pc_curve *pc_interp_arc(int dim, int p, const double *pts, const double *c2, const double *cn,
                         int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);

@@ -13,6 +13,9 @@
  * (4.10), (4.16), (4.21), (4.25), (4.28) are these for n = 3..7).  PC_ECOINCIDENT for
  * repeated params. */
 int pc_lagrange_weights(int n, const double *params, double t, double *w);
+/* The same weights as polynomials in t, as the Maple program of §4.8 prints them (collect(e,
+ * SM)): coef row j (n numbers) holds phi_j = sum_i coef[j n + i] t^i.  Errors as above. */
+int pc_lagrange_weight_coefs(int n, const double *params, double *coef);
 
 /* §4.9 Interpolation contour arc: the Bezier curve through the p >= 2 points (at uniform
  * u = (j - 1)/(p - 1)) with the tangent handles c2 (M'(0) = N (c2 - M1)) and cn (M'(1) =
