@@ -597,6 +597,10 @@ def("konopatsky.rotate", "konopatsky.rotate(C, A, B, phi) -> Q",
   "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|).")
 def("konopatsky.moving_simplex", "konopatsky.moving_simplex(NA, NB, NC, gen) -> surface",
   "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections).")
+def("conic.ed_scheme", "conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}",
+  "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u.")
+def("conic.five_scheme", "conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}",
+  "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E.")
 def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements"},
   "What a conic is: the table of c:conic() for a curve, for the conic through five points, or for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0 (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},

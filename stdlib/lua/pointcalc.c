@@ -32,6 +32,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_konopatsky(L);
     pcl_open_conic_elements(L);
     pcl_open_konopatsky_ch1(L);
+    pcl_open_konopatsky_schemes(L);
     pcl_open_params(L);
     pcl_open_korotky(L);
     pcl_open_buimov(L);

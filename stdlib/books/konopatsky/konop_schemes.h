@@ -1,0 +1,26 @@
+/* The points of the monograph's ruler schemes, not only their parameters (digest
+ * konopatsky_ch1_2.md §5.4, §5.6): every point is a homogeneous row of dim + 1 (weight 0 for a
+ * point at infinity), built by the scheme's own meets, so a figure can draw and label each. */
+#ifndef PC_KONOP_SCHEMES_H
+#define PC_KONOP_SCHEMES_H
+
+/* §2.1.6, Fig. 2.21, the engineering discriminant at u: T1 the chord's midpoint, K = (T1 - C)k
+ * + C the shoulder point, T = A u' + B u, N its harmonic conjugate on AB (at infinity at
+ * u = 1/2), P = AK x CT, Q = BK x CT and M = AQ x BP, which is (2.97) at u.  Rows in that
+ * order: T1, K, T, N, P, Q, M.  PC_ECOLLINEAR for a flat ABC, PC_EDOMAIN for k = 0 (the arc
+ * collapses to C) or where a meet of the scheme is undefined (u = 0 or 1: T = A or B, or
+ * lines that coincide). */
+enum { PC_ED_T1, PC_ED_K, PC_ED_T, PC_ED_N, PC_ED_P, PC_ED_Q, PC_ED_M, PC_ED_NPTS };
+int pc_conic_ed_scheme(int dim, const double *a, const double *b, const double *c, double k,
+                       double u, double *out);
+
+/* §2.1.4, Fig. 2.15, Pascal's hexagon A D M E B C at u: S = BE x AD, U = (A - C)u + C,
+ * V = SU x CB, M = UE x VD, and the special points U_B = BE x CA, U_D = CA x ED, R = CB x ED,
+ * U_E = RS x CA, which fix the u of B, D, E.  Rows: S, U, V, M, U_B, U_D, R, U_E.  PC_ECOLLINEAR
+ * for a flat ABC, PC_EDOMAIN when a meet of the scheme is undefined at this u (lines that
+ * coincide: u at a given point's own special value, or four points collinear). */
+enum { PC_P5_S, PC_P5_U, PC_P5_V, PC_P5_M, PC_P5_UB, PC_P5_UD, PC_P5_R, PC_P5_UE, PC_P5_NPTS };
+int pc_conic_five_scheme(int dim, const double *a, const double *b, const double *c,
+                         const double *d, const double *e, double u, double *out);
+
+#endif

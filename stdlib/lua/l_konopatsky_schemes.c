@@ -1,0 +1,67 @@
+/* The scheme points of the monograph (books/konopatsky/konop_schemes.h) in Lua:
+ *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
+ *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
+ * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
+#include "pcl.h"
+#include "pcl_point.h"
+#include "pcl_books.h"
+#include "konop_schemes.h"
+
+static void push_rows(lua_State *L, int dim, const double *h, int n, const char *const *names) {
+    lua_createtable(L, 0, n);
+    for (int i = 0; i < n; i++) {
+        const double *r = h + (size_t)(dim + 1) * i;
+        if (r[dim] == 0) {
+            pcl_pushvector(L, dim, r);
+        } else {
+            double x[PC_MAXDIM];
+            for (int k = 0; k < dim; k++) x[k] = r[k] / r[dim];
+            pcl_pushpoint(L, dim, x);
+        }
+        lua_setfield(L, -2, names[i]);
+    }
+}
+
+static int scheme_error(lua_State *L, const char *fn, int st, const char *flat) {
+    if (st == PC_ECOLLINEAR) return pcl_error(L, "%s: %s", fn, flat);
+    if (st == PC_EDOMAIN)
+        return pcl_error(L, "%s: a meet of the scheme is undefined at this parameter (its lines coincide)", fn);
+    return pcl_statuserror(L, fn, st, NULL);
+}
+
+static int l_ed_scheme(lua_State *L) {
+    const char *fn = "conic.ed_scheme";
+    static const char *nm[3] = {"A", "B", "C"};
+    double p[3 * PC_MAXDIM], o[PC_ED_NPTS * (PC_MAXDIM + 1)];
+    int n = pclb_points(L, fn, 1, 3, nm, p);
+    double k = pcl_checknum(L, fn, 4, "k"), u = pcl_checknum(L, fn, 5, "u");
+    if (k == 0) return pcl_error(L, "%s: argument #4 (k) must not be 0 (the arc collapses to C)", fn);
+    int st = pc_conic_ed_scheme(n, p, p + n, p + 2 * n, k, u, o);
+    if (st != PC_OK) return scheme_error(L, fn, st, "A, B, C are collinear");
+    static const char *names[PC_ED_NPTS] = {"T1", "K", "T", "N", "P", "Q", "M"};
+    push_rows(L, n, o, PC_ED_NPTS, names);
+    return 1;
+}
+
+static int l_five_scheme(lua_State *L) {
+    const char *fn = "conic.five_scheme";
+    static const char *nm[5] = {"A", "B", "C", "D", "E"};
+    double p[5 * PC_MAXDIM], o[PC_P5_NPTS * (PC_MAXDIM + 1)];
+    int n = pclb_points(L, fn, 1, 5, nm, p);
+    double u = pcl_checknum(L, fn, 6, "u");
+    int st = pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, u, o);
+    if (st != PC_OK) return scheme_error(L, fn, st, "A, B, C are collinear");
+    static const char *names[PC_P5_NPTS] = {"S", "U", "V", "M", "U_B", "U_D", "R", "U_E"};
+    push_rows(L, n, o, PC_P5_NPTS, names);
+    return 1;
+}
+
+/* After pcl_open_konopatsky, with the module table on top. */
+void pcl_open_konopatsky_schemes(lua_State *L) {
+    lua_getfield(L, -1, "conic");
+    lua_pushcfunction(L, l_ed_scheme);
+    lua_setfield(L, -2, "ed_scheme");
+    lua_pushcfunction(L, l_five_scheme);
+    lua_setfield(L, -2, "five_scheme");
+    lua_pop(L, 1);
+}

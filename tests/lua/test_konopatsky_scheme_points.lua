@@ -1,0 +1,32 @@
+-- The scheme helpers return the points (issue 23): conic.ed_scheme (§2.1.6, Fig. 2.21) and
+-- conic.five_scheme (§2.1.4, Fig. 2.15), against the digest's vectors and the curves.
+local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
+local eq, near, err = check.eq, check.near, check.err
+local same = check.same_within(1e-12)
+
+local A, B, C = P(0, 0), P(4, 0), P(2, 3)
+local s = conic.ed_scheme(A, B, C, 0.7, 0.25)
+same(s.M, P(0.727273, 0.613636), "M(0.25), k = 0.7", 1e-6)
+same(s.M, conic.ed(A, B, C, 0.7)(0.25), "M is (2.97) at u")
+same(s.T1, P(2, 0), "T1 the midpoint of AB")
+same(s.K, P(2, 0.9), "K = (T1 - C)k + C")
+same(s.T, P(1, 0), "T = A u' + B u")
+same(s.N, P(-2, 0), "N the harmonic conjugate of T")
+near(sr(A, B, s.N), -sr(A, B, s.T), 1e-12, "(ABN) = -(ABT)")
+same(s.P, meet(A, s.K, C, s.T), "P = AK x CT")
+same(s.Q, meet(B, s.K, C, s.T), "Q = BK x CT")
+same(s.M, meet(s.K, s.N, B, s.P), "M = KN x BP as well")
+eq(conic.ed_scheme(A, B, C, 0.7, 0.5).N.w, 0, "N at infinity at u = 1/2")
+local F = {P(1, 0), P(0, 1), P(0, 0), P(0.3, 0.8), P(0.7, 0.6)}
+local f = conic.five_scheme(F[1], F[2], F[3], F[4], F[5], 0.25)
+same(f.S, P(0.25, 0.857143), "S = BE x AD", 1e-6)
+same(f.M, P(0.3, 0.066667), "M(0.25)", 1e-6)
+same(f.U_B, P(1.75, 0), "U_B: u_B = 1.75")
+same(f.U_D, P(1.9, 0), "U_D: u_D = 1.9")
+same(f.U_E, P(2.557692308, 0), "U_E: u_E = 2.557692308", 1e-9)
+same(conic.five_scheme(F[1], F[2], F[3], F[4], F[5], 1.5).M, P(-8.1, 7.2), "M(1.5)")
+err(function() conic.ed_scheme(A, B, P(8, 0), 0.5, 0.3) end, "conic.ed_scheme: A, B, C are collinear", "flat")
+err(function() conic.ed_scheme(A, B, C, 0, 0.3) end, "conic.ed_scheme: argument #4 (k) must not be 0", "k = 0")
+err(function() conic.five_scheme(F[1], F[2], F[3], F[4], P(0, 0, 1), 0.3) end,
+    "conic.five_scheme: argument #5 (E) is 3-D, but argument #1 (A) is 2-D", "mixed")
+check.done()
