@@ -64,7 +64,7 @@ def("harmonic", "harmonic(A, B, T) -> point",
 def("cross_ratio", "cross_ratio(A, B, C, D) -> number",
   "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity).")
 def("meet", "meet(A1, A2, B1, B2) -> K, lambda, mu",
-  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance.")
+  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve().")
 def("area", "area(A, B, C) | area(A, B, C, D, ...) -> number",
   "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon.")
 def("volume", "volume(A, B, C, D) -> number",

@@ -776,6 +776,7 @@ static pcl_value *check_end(lua_State *L, int arg, const char *what, int n, int 
  * math.huge, math.huge; likewise a line and a line at infinity.  Skew lines (3-D and up): nil
  * and the distance between them (math.huge for a line that misses a line at infinity). */
 static int l_meet(lua_State *L) {
+    if (!(topt(L, 1) && topt(L, 2) && topt(L, 3) && topt(L, 4)) && pcl_eq_hook(L, PCL_EQ_MEET)) return 3;
     pcl_value *a1 = check_end(L, 1, "A1", 0, 0);
     int n = a1->n;
     pcl_value *a2 = check_end(L, 2, "A2", n, 1);

@@ -14,7 +14,8 @@
 typedef enum {
     PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM,   /* metamethods (1, 2) */
     PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT, PCL_EQ_CROSS, PCL_EQ_UNIT,
-    PCL_EQ_P, PCL_EQ_V                                          /* P(x, y ...), V(...) */
+    PCL_EQ_P, PCL_EQ_V,                                         /* P(x, y ...), V(...) */
+    PCL_EQ_MEET                                                 /* meet(A1, A2, B1, B2) */
 } pcl_eq_op;
 
 /* 1 if the value at idx is an equation. */
