@@ -246,7 +246,7 @@ def("plot", {"plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})",
              "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn | dots = true | qb = true, ...})"},
   "Draw t -> f(t) as one connected path (3-D through map or the camera); with a brush, dots = true or qb = true, dots at those steps as the listings do.")
 def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
-  "The point of a curve at parameter t (a vector where a rational curve is at infinity).", "method")
+  "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97).", "method")
 def("c:deriv", "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector",
   "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there.", "method")
 def("c:tangent", "c:tangent(t) -> vector | c:normal(t) -> vector",

@@ -116,6 +116,11 @@ int pc_expr_unit(pc_expr_pool *pool, int a, int *status);
  * then fails, not a silent value).  expr_meet.c. */
 int pc_expr_meet(pc_expr_pool *pool, int a1, int a2, int b1, int b2, int *lambda, int *mu,
                  int *status);
+/* The Bezier curve of `degree` with homogeneous control rows cp (degree + 1 rows of dim + 1)
+ * over [t0, t1] at the scalar equation t: sum cp_i B_i(s), s = (t - t0)/(t1 - t0), divided
+ * by sum w_i B_i(s) when the curve is rational.  expr_curve.c. */
+int pc_expr_bezier(pc_expr_pool *pool, int dim, int degree, const double *cp, double t0,
+                   double t1, int t, int *status);
 
 /* e with parameter k replaced by the node r (a scalar): instantiating a one-parameter family
  * M(t; s) at a value of s, or changing a parameter.  Shared nodes stay shared. */

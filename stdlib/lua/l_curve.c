@@ -712,6 +712,7 @@ static void push_h(lua_State *L, int d, const double *h) {
 
 static int c_call(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "curve");
+    if (lua_type(L, 2) == LUA_TUSERDATA && pcl_eq_curve_apply(L, u->c, 2)) return 1;   /* C(u^2) */
     double h[PC_MAXDIM + 1];
     eval_at(L, u, pcl_checknum_m(L, u->kind, 2, "t"), h, u->kind);
     push_h(L, u->c->dim, h);

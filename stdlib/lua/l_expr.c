@@ -354,6 +354,19 @@ int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
     return 0;
 }
 
+int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
+    leq *e = toeq(L, idx);
+    if (!e) return 0;
+    if (pc_expr_dim(pool(L), e->id))
+        return pcl_error(L, "curve: the parameter must be a number or a scalar equation, got %s", describe(L, idx));
+    if (c->kind != PC_CURVE_BEZIER || c->nknots != 2)
+        return pcl_error(L, "curve: only a single-piece Bezier curve (a conic arc, a Bezier of any degree) "
+                         "can be applied to an equation; this one has %s",
+                         c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
+    int st, r = pc_expr_bezier(pool(L), c->dim, c->degree, c->cp, c->t0, c->t1, e->id, &st);
+    return done(L, "curve", r, st);
+}
+
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
     leq *e = toeq(L, idx);
     if (!e) return 0;
