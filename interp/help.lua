@@ -663,8 +663,8 @@ def("interp.controls", "interp.controls(points [, params]) -> {C1, ...}",
   "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7).")
 def("interp.conic", "interp.conic(A, K, B, k) -> curve",
   "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k')).")
-def("interp.arc", "interp.arc(points, C2 [, Cn]) -> curve",
-  "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1).")
+def("interp.arc", "interp.arc(points, C2 [, Cn] [, params]) -> curve",
+  "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]]).")
 def("interp.adaptive", "interp.adaptive(points [, axis]) -> params",
   "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default).")
 def("interp.prototype", "interp.prototype(\"desargues\"|\"rational\"|\"exp\"|\"exp1\"|\"trig\", points [, k] [, t0, t1]) -> curve",
@@ -676,9 +676,9 @@ def("interp.rational22", "interp.rational22({M1, ..., M5}) -> curve, coef",
 
 def("approx.curve", "approx.curve(f, nodes) -> curve",
   "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t.")
-def("approx.mse", "approx.mse(f, nodes [, m]) -> mse",
-  "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), divided by m + 1.")
-def("approx.optimal_nodes", "approx.optimal_nodes(f, a, b, N [, m]) -> nodes, mse, evals",
+def("approx.mse", "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse",
+  "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge).")
+def("approx.optimal_nodes", "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals",
   "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes.")
 def("approx.chebyshev", "approx.chebyshev(N [, a, b]) -> nodes",
   "The N Chebyshev nodes (roots) on [a, b], increasing.")

@@ -22,6 +22,11 @@ int pc_lagrange_weight_coefs(int n, const double *params, double *coef);
  * N (Mp - cn)); cn NULL keeps the start tangent only.  Degree N = p + 1 (two tangents) or p. */
 pc_curve *pc_interp_arc(int dim, int p, const double *pts, const double *c2, const double *cn,
                         int *status);
+/* The same at the node parameters params (p increasing values; NULL: uniform): the curve runs
+ * over [params[0], params[p-1]] and passes M_j at params[j].  PC_EDOMAIN when they do not
+ * increase. */
+pc_curve *pc_interp_arc_u(int dim, int p, const double *pts, const double *params,
+                          const double *c2, const double *cn, int *status);
 
 /* §4.10 Adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) from coordinate `axis` (0-based) of
  * the nodes.  PC_ECOINCIDENT if x_1 = x_n, PC_EDOMAIN if v does not increase (the book's
