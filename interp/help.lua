@@ -523,6 +523,8 @@ def("plane.rotate_conic", "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef
   "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin).")
 def("plane.conic_value", "plane.conic_value(coef, X) -> number",
   "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X.")
+def("plane.conic_slope", "plane.conic_slope(coef, X) -> slope",
+  "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point).")
 def("plane.conic_coef", "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef",
   "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).")
 def("plane.ellipse", "plane.ellipse(centre, A, B [, th0, th1]) -> curve",
@@ -601,8 +603,8 @@ def("conic.ed_scheme", "conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}
   "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u.")
 def("conic.five_scheme", "conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}",
   "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E.")
-def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements"},
-  "What a conic is: the table of c:conic() for a curve, for the conic through five points, or for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0 (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
+def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements", "conic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements"},
+  "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},
   "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B.")
 def("conic.ellipse", "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant =, range = {t0, t1}]} -> curve",

@@ -116,6 +116,45 @@ int pc_conic_coef_five(const double pts[10], double coef[6]) {
     return scale_coef(c6, coef);
 }
 
+void pc_conic_row_point(double x, double y, double row[6]) {
+    double r[6] = {x * x, x * y, y * y, x, y, 1};
+    memcpy(row, r, sizeof r);
+}
+
+void pc_conic_row_tangent(double x, double y, double dx, double dy, double row[6]) {
+    double r[6] = {2 * x * dx, y * dx + x * dy, 2 * y * dy, dx, dy, 0};
+    memcpy(row, r, sizeof r);
+}
+
+int pc_conic_coef_conditions(const double rows[30], double coef[6]) {
+    double Q[6], m = 0, big = 0;
+    for (int i = 0; i < 30; i++) {
+        if (!isfinite(rows[i])) return PC_ENONFINITE;
+        big = fmax(big, fabs(rows[i]));
+    }
+    if (!(big > 0)) return PC_ECOLLINEAR;
+    for (int j = 0; j < 6; j++) {
+        double a[25];
+        for (int i = 0; i < 5; i++)
+            for (int k = 0, c = 0; k < 6; k++)
+                if (k != j) a[5 * i + c++] = rows[6 * i + k] / big;
+        Q[j] = (j % 2 ? -1 : 1) * det5(a);
+        m = fmax(m, fabs(Q[j]));
+    }
+    if (!(m > 1e-13)) return PC_ECOLLINEAR;
+    return scale_coef(Q, coef);
+}
+
+int pc_conic_slope(const double q[6], double x, double y, double *slope) {
+    if (!isfinite(x) || !isfinite(y)) return PC_ENONFINITE;
+    double fx = 2 * q[0] * x + q[1] * y + q[3], fy = q[1] * x + 2 * q[2] * y + q[4];
+    double s = fmax(1, fmax(fabs(x), fabs(y)));
+    if (fabs(fx) <= 1e-14 * s && fabs(fy) <= 1e-14 * s) return PC_EZERO;
+    if (fabs(fy) <= 1e-14 * s * fmax(1, fabs(fx))) return PC_EPOLE;
+    *slope = -fx / fy;
+    return PC_OK;
+}
+
 /* Unit eigenvectors of the symmetric [p r; r q] for its eigenvalues l[0] >= l[1]. */
 static void eigen2(double p, double q, double r, double l[2], double v[2][2]) {
     double mean = (p + q) / 2, rad = hypot((p - q) / 2, r);

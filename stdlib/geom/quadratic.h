@@ -52,6 +52,23 @@ int pc_conic_coef_rquad(const double h[9], double coef[6]);
  * do not fix one conic (four of them collinear, or coincident points), PC_ENONFINITE. */
 int pc_conic_coef_five(const double pts[10], double coef[6]);
 
+/* The conic of five linear conditions on its coefficients (rows: 5 rows of 6, each the
+ * condition's coefficients of a, b, c, d, e, f), by the signed 5x5 minors.  The rows of
+ * pc_conic_row_point and pc_conic_row_tangent mix freely: two points with their tangents and a
+ * fifth point (Korotky's C-1), three points and one tangent, five points...  PC_ECOLLINEAR
+ * when the conditions do not fix one conic (dependent rows). */
+int pc_conic_coef_conditions(const double rows[30], double coef[6]);
+/* The condition "the conic passes through (x, y)". */
+void pc_conic_row_point(double x, double y, double row[6]);
+/* The condition "the conic's tangent at (x, y) has the direction (dx, dy)": the gradient at
+ * the point is normal to it, (2ax + by + d) dx + (bx + 2cy + e) dy = 0 (with the point's own
+ * row it makes the line tangent there). */
+void pc_conic_row_tangent(double x, double y, double dx, double dy, double row[6]);
+/* The slope dy/dx of the conic at its point (x, y): -(2ax + by + d)/(bx + 2cy + e) (the
+ * textbook's slope of an implicit curve, §3.1).  PC_EPOLE where the tangent is vertical,
+ * PC_EZERO at a singular point (both partials 0). */
+int pc_conic_slope(const double coef[6], double x, double y, double *slope);
+
 /* The elements of the conic coef (copied into out->coef after scaling); the arc fields NaN.
  * PC_EDOMAIN for a degenerate conic (no quadratic part, a line pair, parallel lines, no real
  * points), PC_ENONFINITE. */

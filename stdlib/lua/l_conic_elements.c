@@ -1,10 +1,12 @@
 /* Conics that know what they are (geom/quadratic.h) in Lua:
  *   c:conic()                              the conic a 2-D curve lies on
- *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f})
+ *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f} | {points =, tangents =})
+ *   plane.conic_slope(coef, X)             dy/dx of an implicit conic at its point
  * both -> {kind, circle, discriminant, coef, center, vertex, axes, semi, a, b, foci, e, p,
  *          asymptotes, mu, w, k, k_ceva}
  * pcl_push_conic_info is shared with korotky.conic_elements. */
 #include <math.h>
+#include <string.h>
 #include "pcl.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
@@ -98,13 +100,94 @@ static int c_conic(lua_State *L) {
     return conic_of_curve(L, "c:conic", c);
 }
 
+/* {points = {P, ...}, tangents = {{P, V}, ...}} at 1 (points on top of the stack): five
+ * conditions, a tangent at a point given among the points or not */
+static int conditions(lua_State *L, const char *fn, double coef[6]) {
+    double rows[30];
+    int nr = 0;
+    int pts = lua_gettop(L);
+    if (!lua_istable(L, pts)) return pcl_error(L, "%s: field points must be a list of points", fn);
+    lua_getfield(L, 1, "tangents");
+    int tg = lua_gettop(L);
+    if (!lua_isnil(L, tg) && !lua_istable(L, tg))
+        return pcl_error(L, "%s: field tangents must be a list of {point, direction} pairs", fn);
+    lua_pushnil(L);
+    while (lua_next(L, 1)) {
+        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
+        if (!k || (strcmp(k, "points") && strcmp(k, "tangents")))
+            return pcl_error(L, "%s: unknown field %s (the fields are points and tangents)", fn,
+                             k ? k : "of a number index");
+        lua_pop(L, 1);
+    }
+    int np = (int)luaL_len(L, pts), nt = lua_isnil(L, tg) ? 0 : (int)luaL_len(L, tg);
+    if (np + nt != 5)
+        return pcl_error(L, "%s: five conditions fix a conic, got %d points and %d tangents", fn, np, nt);
+    for (int i = 0; i < np; i++) {
+        lua_geti(L, pts, i + 1);
+        pcl_value *v = pcl_tovalue(L, -1);
+        if (!v || v->n != 2 || fabs(v->h[2] - 1) > PC_WEIGHT_TOL)
+            return pcl_error(L, "%s: points[%d] must be a 2-D point, got %s", fn, i + 1, pcl_shown(L, lua_gettop(L)));
+        pc_conic_row_point(v->h[0], v->h[1], rows + 6 * nr++);
+        lua_pop(L, 1);
+    }
+    for (int i = 0; i < nt; i++) {
+        lua_geti(L, tg, i + 1);
+        int pair = lua_gettop(L);
+        lua_geti(L, pair, 1);
+        lua_geti(L, pair, 2);
+        pcl_value *p = pcl_tovalue(L, -2), *d = pcl_tovalue(L, -1);
+        if (!lua_istable(L, pair) || !p || !d || p->n != 2 || d->n != 2 || fabs(p->h[2] - 1) > PC_WEIGHT_TOL ||
+            fabs(d->h[2]) > PC_WEIGHT_TOL)
+            return pcl_error(L, "%s: tangents[%d] must be {a 2-D point, a 2-D vector}", fn, i + 1);
+        pc_conic_row_tangent(p->h[0], p->h[1], d->h[0], d->h[1], rows + 6 * nr++);
+        lua_settop(L, pair - 1);
+    }
+    return pc_conic_coef_conditions(rows, coef);
+}
+
+/* plane.conic_slope(coef, X): dy/dx of the implicit conic at its point X */
+static int l_slope(lua_State *L) {
+    const char *fn = "plane.conic_slope";
+    if (!lua_istable(L, 1) || luaL_len(L, 1) != 6)
+        return pcl_argerror_full(L, fn, 1, 1, "coef", "a list of 6 numbers {a, b, c, d, e, f}");
+    double q[6], x[2];
+    for (int i = 0; i < 6; i++) {
+        lua_geti(L, 1, i + 1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+            return pcl_error(L, "%s: argument #1 (coef) [%d] must be a finite number, got %s", fn, i + 1,
+                             pcl_shown(L, lua_gettop(L)));
+        q[i] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    pclb_point(L, fn, 2, "X", 2, 0, NULL, x);
+    double v = pc_conic_eq(q, x[0], x[1]), g = hypot(2 * q[0] * x[0] + q[1] * x[1] + q[3], q[1] * x[0] + 2 * q[2] * x[1] + q[4]);
+    if (fabs(v) > 1e-9 * fmax(g, 1) * fmax(1, hypot(x[0], x[1])))
+        return pcl_error(L, "%s: the point X is not on the curve (the equation gives %s there)", fn, pcl_pushnum(L, v));
+    double sl;
+    int st = pc_conic_slope(q, x[0], x[1], &sl);
+    if (st == PC_EPOLE) {
+        lua_pushnumber(L, HUGE_VAL);   /* a vertical tangent */
+        return 1;
+    }
+    if (st == PC_EZERO) return pcl_error(L, "%s: X is a singular point of the curve (both partial derivatives are 0)", fn);
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    lua_pushnumber(L, sl);
+    return 1;
+}
+
 static int l_elements(lua_State *L) {
     const char *fn = "conic.elements";
     pc_curve *c = pcl_tocurve(L, 1);
     if (c) return conic_of_curve(L, fn, c);
     pc_conic_info o;
     int st;
-    if (lua_istable(L, 1)) {
+    if (lua_istable(L, 1) && (lua_getfield(L, 1, "points"), !lua_isnil(L, -1))) {
+        st = conditions(L, fn, o.coef);
+        if (st == PC_ECOLLINEAR)
+            return pcl_error(L, "%s: the conditions do not fix one conic (they are dependent)", fn);
+        if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
+    } else if (lua_istable(L, 1)) {
+        lua_pop(L, 1);
         if (luaL_len(L, 1) != 6)
             return pcl_argerror_full(L, fn, 1, 1, "coefficients", "a list of 6 numbers {a, b, c, d, e, f}");
         double q[6];
@@ -149,5 +232,11 @@ void pcl_open_conic_elements(lua_State *L) {
     lua_getfield(L, module, "conic");
     lua_pushcfunction(L, l_elements);
     lua_setfield(L, -2, "elements");
+    lua_settop(L, module);
+    lua_getfield(L, module, "plane");
+    if (lua_istable(L, -1)) {
+        lua_pushcfunction(L, l_slope);
+        lua_setfield(L, -2, "conic_slope");
+    }
     lua_settop(L, module);
 }

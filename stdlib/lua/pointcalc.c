@@ -30,12 +30,12 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_surface(L);
     pcl_open_camera(L);
     pcl_open_konopatsky(L);
-    pcl_open_conic_elements(L);
     pcl_open_konopatsky_ch1(L);
     pcl_open_konopatsky_schemes(L);
     pcl_open_params(L);
     pcl_open_korotky(L);
     pcl_open_buimov(L);
+    pcl_open_conic_elements(L);   /* after conic (konopatsky) and plane (buimov) */
     pcl_open_curvilinear(L);
     pcl_open_complex(L);
     run_lua_helpers(L);

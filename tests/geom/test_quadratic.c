@@ -8,6 +8,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
+#include <string.h>
 #include "quadratic.h"
 #include "status.h"
 
@@ -242,11 +243,56 @@ static void test_curve_conic(void **state) {
     pc_curve_release(c);
 }
 
+static void test_conditions(void **state) {
+    (void)state;
+    /* Korotky's C-1 hyperbola (digest korotky_curves_surfaces.md B.3): U = (0, 0), V = (2, 0),
+     * tangents (1, sqrt 3) and (-1, sqrt 3), T = (1, 1.5): centre (1, 1.774519), semi-axes
+     * 0.274519 (transverse, along y) and 0.156586 */
+    double rows[30], q[6];
+    const double r3 = sqrt(3);
+    pc_conic_row_point(0, 0, rows);
+    pc_conic_row_tangent(0, 0, 1, r3, rows + 6);
+    pc_conic_row_point(2, 0, rows + 12);
+    pc_conic_row_tangent(2, 0, -1, r3, rows + 18);
+    pc_conic_row_point(1, 1.5, rows + 24);
+    assert_int_equal(pc_conic_coef_conditions(rows, q), PC_OK);
+    pc_conic_info o;
+    assert_int_equal(pc_conic_info_coef(q, &o), PC_OK);
+    assert_int_equal(o.kind, PC_CK_HYPERBOLA);
+    NEAR(o.center[0], 1, 1e-12);
+    NEAR(o.center[1], 1.774519, 1e-6);
+    NEAR(o.semi[0], 0.274519, 1e-6);
+    NEAR(o.semi[1], 0.156586, 1e-6);
+    NEAR(fabs(o.axis[0][1]), 1, 1e-12);
+    /* the same conic as the rational arc with w = 3 + 2 sqrt 3 on U, W = (1, sqrt 3), V */
+    double w = 3 + 2 * r3, h[9] = {0, 0, 1, w, w * r3, w, 2, 0, 1}, qa[6];
+    assert_int_equal(pc_conic_coef_rquad(h, qa), PC_OK);
+    for (int i = 0; i < 6; i++) NEAR(qa[i], q[i], 1e-12);
+    /* slopes: the tangent directions given, back */
+    double sl;
+    assert_int_equal(pc_conic_slope(q, 0, 0, &sl), PC_OK);
+    NEAR(sl, r3, 1e-9);
+    assert_int_equal(pc_conic_slope(q, 2, 0, &sl), PC_OK);
+    NEAR(sl, -r3, 1e-9);
+    /* the unit circle: slope -x/y, vertical at (1, 0) */
+    const double circ[6] = {1, 0, 1, 0, 0, -1};
+    assert_int_equal(pc_conic_slope(circ, 0.6, 0.8, &sl), PC_OK);
+    NEAR(sl, -0.75, 1e-15);
+    assert_int_equal(pc_conic_slope(circ, 1, 0, &sl), PC_EPOLE);
+    const double pair[6] = {1, 0, -1, 0, 0, 0};
+    assert_int_equal(pc_conic_slope(pair, 0, 0, &sl), PC_EZERO);
+    /* dependent conditions: the same point twice */
+    pc_conic_row_point(0, 0, rows + 24);
+    memcpy(rows + 24, rows, sizeof(double) * 6);
+    assert_int_equal(pc_conic_coef_conditions(rows, q), PC_ECOLLINEAR);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_ellipse),   cmocka_unit_test(test_ed_parabola_hyperbola),
         cmocka_unit_test(test_weight_invariance), cmocka_unit_test(test_signs_and_infinity),
         cmocka_unit_test(test_five_points),  cmocka_unit_test(test_curve_conic),
+        cmocka_unit_test(test_conditions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -90,6 +90,24 @@ eq(eh.kind, "hyperbola", "xy = 1")
 near(eh.a, math.sqrt(2), 1e-12, "its semi-axis")
 near(math.abs(eh.asymptotes[1].x * eh.asymptotes[2].y - eh.asymptotes[1].y * eh.asymptotes[2].x), 1, 1e-12,
      "perpendicular asymptotes")
+-- general five conditions: Korotky's C-1 hyperbola from two points with tangents and a third
+local r3 = math.sqrt(3)
+local g = conic.elements{points = {P(0, 0), P(2, 0), P(1, 1.5)}, tangents = {{P(0, 0), V(1, r3)}, {P(2, 0), V(-1, r3)}}}
+eq(g.kind, "hyperbola", "C-1: a hyperbola")
+same(g.center, P(1, 1.774519), "its centre (digest B.3)", 1e-6)
+near(g.a, 0.274519, 1e-6, "transverse semi-axis")
+near(g.b, 0.156586, 1e-6, "conjugate semi-axis")
+local ga = korotky.conic_arc(P(0, 0), V(1, r3), P(2, 0), V(-1, r3), P(1, 1.5)):conic()
+for i = 1, 6 do near(ga.coef[i], g.coef[i], 1e-12, "the same conic as korotky.conic_arc") end
+-- slopes of implicit curves (the textbook's §3.1)
+near(plane.conic_slope({1, 0, 1, 0, 0, -1}, P(0.6, 0.8)), -0.75, 1e-15, "circle: -x/y")
+eq(plane.conic_slope({1, 0, 1, 0, 0, -1}, P(1, 0)), math.huge, "a vertical tangent")
+near(plane.conic_slope(g.coef, P(0, 0)), r3, 1e-9, "the given tangent back")
+err(function() plane.conic_slope({1, 0, 1, 0, 0, -1}, P(2, 0)) end, "plane.conic_slope: the point X is not on the curve", "off the curve")
+err(function() conic.elements{points = {P(0, 0), P(2, 0)}, tangents = {{P(0, 0), V(1, 1)}}} end,
+    "conic.elements: five conditions fix a conic, got 2 points and 1 tangents", "too few")
+err(function() conic.elements{points = {P(0, 0), P(0, 0), P(2, 0), P(1, 1), P(3, 3)}} end,
+    "conic.elements: the conditions do not fix one conic", "dependent")
 -- errors
 err(function() bezier{P(0, 0), P(1, 3), P(2, -3), P(4, 0)}:conic() end,
     "c:conic: the curve does not lie on one conic", "a cubic")
