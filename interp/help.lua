@@ -754,6 +754,8 @@ def("korotky.dome_tri", "korotky.dome_tri(A, B, C, h | D) -> s",
   "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D); u-isolines are the ellipses parallel to BC.")
 def("korotky.conic_elements", "korotky.conic_elements(arc | {a, b, c, d, e, f}) -> {kind, coef, center, axes, semi, asymptotes}",
   "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions.")
+def("korotky.plane_meet", "korotky.plane_meet(P1, P2, P3, Q1, Q2, Q3) -> K",
+  "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; 4-D points, a vector a point at infinity.")
 def("korotky.two_pencils", "korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}} -> s",
   "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5).")
 def("korotky.conic_revolve", "korotky.conic_revolve{A =, B =, nA =, nB =, ridge =} -> s",

@@ -34,6 +34,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_konopatsky_schemes(L);
     pcl_open_params(L);
     pcl_open_korotky(L);
+    pcl_open_korotky_meet(L);
     pcl_open_buimov(L);
     pcl_open_conic_elements(L);   /* after conic (konopatsky) and plane (buimov) */
     pcl_open_curvilinear(L);
