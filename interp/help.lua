@@ -172,6 +172,12 @@ def("map.cabinet", "map.cabinet([alpha]) -> f",
   "The oblique projection with k = 1/2; alpha defaults to 45 degrees.")
 def("map.perspective", "map.perspective(eye, p0 [, up]) -> f",
   "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point.")
+def("map.perspective_pqr", "map.perspective_pqr(p, q, r) -> f",
+  "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection.")
+def("map.foreshortening", "map.foreshortening(f) -> fx, fy, fz",
+  "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3).")
+def("map.axial_affinity", "map.axial_affinity(A, d, s, k) -> f",
+  "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection).")
 def("f(p)", "f(p) | f(x, y, ...) -> value",
   "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector.", "method")
 def("f:xy", "f:xy(p) | f:xy(x, y, ...) -> x', y', ...",

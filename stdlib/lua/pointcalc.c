@@ -22,6 +22,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_expr(L);
     pcl_open_simplex(L);
     pcl_open_map(L);
+    pcl_open_map_more(L);
     pcl_open_draw(L);
     pcl_open_qb(L);
     pcl_open_qbscreen(L);
