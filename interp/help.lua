@@ -542,6 +542,10 @@ def("plane.hyperbola", "plane.hyperbola(A, B, t0, t1) -> curve",
 def("plane.points", "plane.points(kind, {A =, B =, step =, n =, method = \"param\"|\"recurrence\"|\"rational\"|\"explicit\"}) -> points",
   "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected).")
 
+def("buimov.g1_next", "buimov.g1_next(P, m [, g]) -> Q0, Q1",
+  "§4.3 The first two control points of the next Bezier curve of degree m joined to P with G1: Q0 = P_n, n (P_n - P_(n-1)) = g m (Q1 - Q0) (g = 1: C1).")
+def("buimov.joint", "buimov.joint(P, Q) -> \"none\"|\"C0\"|\"G1\"|\"C1\", g",
+  "§4.3 The kind of joint of two polynomial Bezier curves and the g of n (P_n - P_(n-1)) = g m (Q1 - Q0).")
 def("buimov.knots", "buimov.knots(points, k) -> knots",
   "The book's integer knot vector of order k (§4.4): n + k + 1 knots, a repeated knot for each multiple vertex.")
 def("buimov.basis", "buimov.basis(i, k, t, knots) -> number",
@@ -609,6 +613,10 @@ def("conic.ed_scheme", "conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}
   "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u.")
 def("conic.five_scheme", "conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}",
   "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E.")
+def("conic.ceva_to_ed", "conic.ceva_to_ed(k) -> k_ed | conic.ed_to_ceva(k_ed) -> k",
+  "§2.1.7 <-> §2.1.6: the two readings of one arc, k_ED = 2 sqrt k/(1 + 2 sqrt k), k = (k_ED/(2(1 - k_ED)))^2 (Ceva's 1/4 is ED's 1/2).")
+def("conic.ed_to_ceva", "conic.ed_to_ceva(k_ed) -> k",
+  "The Ceva k of the engineering discriminant k_ED in (0, 1): (k_ED/(2(1 - k_ED)))^2.")
 def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements", "conic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements"},
   "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},

@@ -1,11 +1,13 @@
 /* The scheme points of the monograph (books/konopatsky/konop_schemes.h) in Lua:
  *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
  *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
+ *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
  * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
 #include "pcl.h"
 #include "pcl_point.h"
 #include "pcl_books.h"
 #include "konop_schemes.h"
+#include "conic.h"
 
 static void push_rows(lua_State *L, int dim, const double *h, int n, const char *const *names) {
     lua_createtable(L, 0, n);
@@ -56,6 +58,21 @@ static int l_five_scheme(lua_State *L) {
     return 1;
 }
 
+/* conic.ceva_to_ed(k), conic.ed_to_ceva(k): the two readings of one arc (§5.7) */
+static int conv(lua_State *L, const char *fn, int to_ed) {
+    double k = pcl_checknum(L, fn, 1, "k"), r;
+    int st = to_ed ? pc_ceva_to_ed(k, &r) : pc_ed_to_ceva(k, &r);
+    if (st == PC_EDOMAIN)
+        return pcl_error(L, to_ed ? "%s: argument #1 (k) must be a positive Ceva k, got %s"
+                                  : "%s: argument #1 (k) must be an engineering discriminant in (0, 1), got %s",
+                         fn, pcl_pushnum(L, k));
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    lua_pushnumber(L, r);
+    return 1;
+}
+static int l_ceva_to_ed(lua_State *L) { return conv(L, "conic.ceva_to_ed", 1); }
+static int l_ed_to_ceva(lua_State *L) { return conv(L, "conic.ed_to_ceva", 0); }
+
 /* After pcl_open_konopatsky, with the module table on top. */
 void pcl_open_konopatsky_schemes(lua_State *L) {
     lua_getfield(L, -1, "conic");
@@ -63,5 +80,9 @@ void pcl_open_konopatsky_schemes(lua_State *L) {
     lua_setfield(L, -2, "ed_scheme");
     lua_pushcfunction(L, l_five_scheme);
     lua_setfield(L, -2, "five_scheme");
+    lua_pushcfunction(L, l_ceva_to_ed);
+    lua_setfield(L, -2, "ceva_to_ed");
+    lua_pushcfunction(L, l_ed_to_ceva);
+    lua_setfield(L, -2, "ed_to_ceva");
     lua_pop(L, 1);
 }

@@ -59,6 +59,7 @@ void pcl_open_konopatsky_ch1(lua_State *L);  /* konopatsky.*: chapter 1 (l_konop
 void pcl_open_konopatsky_schemes(lua_State *L);  /* conic.ed_scheme, five_scheme (l_konopatsky_schemes.c) */
 void pcl_open_korotky_meet(lua_State *L);  /* korotky.plane_meet (l_korotky_meet.c) */
 void pcl_open_map_more(lua_State *L);  /* map.perspective_pqr, foreshortening, axial_affinity (l_map_more.c) */
+void pcl_open_buimov_more(lua_State *L);  /* buimov.g1_next, buimov.joint (l_buimov_more.c) */
 void pcl_open_expr(lua_State *L);     /* param: point equations (l_expr.c, pcl_expr.h) */
 void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
 void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic surfaces (l_korotky.c) */

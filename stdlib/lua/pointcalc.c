@@ -37,6 +37,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_korotky(L);
     pcl_open_korotky_meet(L);
     pcl_open_buimov(L);
+    pcl_open_buimov_more(L);
     pcl_open_conic_elements(L);   /* after conic (konopatsky) and plane (buimov) */
     pcl_open_curvilinear(L);
     pcl_open_complex(L);

@@ -82,4 +82,13 @@ void pc_sphere_frame(double th, double ph, double out[15]);
 pc_surface *pc_surface_sphere(const double c[3], double r, double th0, double th1, double ph0,
                               double ph1, int *status);
 
+/* §4.3 the G1 joint of Bezier curves: P of degree n and Q of degree m join with
+ * P_n = Q_0 and n (P_n - P_(n-1)) = g m (Q_1 - Q_0) (the print's "gm(g - Q0)" is g m (Q1 - Q0)).
+ * pc_bezier_g1_next: Q_0 and Q_1 of the next curve of degree m for the scalar g > 0 (g = 1: a
+ * C1 joint) from P's control points p (n + 1 rows of dim, Cartesian).  pc_bezier_joint: the
+ * kind of joint of P and Q (rows of dim): 0 none (P_n != Q_0), 1 C0 (a corner), 2 G1 (the
+ * three points collinear, same direction), 3 C1 (g = 1), with g.  Within 1e-9 of the size. */
+int pc_bezier_g1_next(int dim, int n, const double *p, int m, double g, double *q0, double *q1);
+int pc_bezier_joint(int dim, int n, const double *p, int m, const double *q, int *kind, double *g);
+
 #endif

@@ -224,3 +224,47 @@ pc_curve *pc_curve_helix(double a, double b, double t0, double t1, int *status) 
     if (!c) free(ab);
     return c;
 }
+
+int pc_bezier_g1_next(int dim, int n, const double *p, int m, double g, double *q0, double *q1) {
+    if (dim < 1 || dim > PC_MAXDIM || n < 1 || m < 1) return PC_EDIM;
+    if (!isfinite(g)) return PC_ENONFINITE;
+    if (!(g > 0)) return PC_EDOMAIN;
+    const double *pn = p + (size_t)n * dim, *pm = pn - dim;
+    for (int k = 0; k < dim; k++) {
+        if (!isfinite(pn[k]) || !isfinite(pm[k])) return PC_ENONFINITE;
+        q0[k] = pn[k];
+        q1[k] = pn[k] + n * (pn[k] - pm[k]) / (g * m);   /* Q1 - Q0 = n (Pn - Pn-1)/(g m) */
+    }
+    return PC_OK;
+}
+
+int pc_bezier_joint(int dim, int n, const double *p, int m, const double *q, int *kind, double *g) {
+    if (dim < 1 || dim > PC_MAXDIM || n < 1 || m < 1) return PC_EDIM;
+    const double *pn = p + (size_t)n * dim, *pm = pn - dim, *q1 = q + dim;
+    double size = 0, gap = 0, u[PC_MAXDIM], v[PC_MAXDIM], uu = 0, uv = 0, vv = 0;
+    for (int k = 0; k < dim; k++) {
+        size = fmax(size, fmax(fabs(pn[k] - pm[k]), fabs(q1[k] - q[k])));
+        gap = fmax(gap, fabs(pn[k] - q[k]));
+        u[k] = n * (pn[k] - pm[k]);     /* P'(1) */
+        v[k] = m * (q1[k] - q[k]);      /* Q'(0) */
+        uu += u[k] * u[k], uv += u[k] * v[k], vv += v[k] * v[k];
+    }
+    *g = NAN;
+    if (gap > 1e-9 * fmax(size, 1)) {
+        *kind = 0;
+        return PC_OK;
+    }
+    if (!(uu > 0) || !(vv > 0)) {     /* a zero end derivative: no tangent to compare */
+        *kind = 1;
+        return PC_OK;
+    }
+    double gg = uv / vv, off = 0;
+    for (int k = 0; k < dim; k++) off = fmax(off, fabs(u[k] - gg * v[k]));
+    if (gg > 0 && off <= 1e-9 * sqrt(uu)) {
+        *g = gg;
+        *kind = fabs(gg - 1) <= 1e-9 ? 3 : 2;
+    } else {
+        *kind = 1;
+    }
+    return PC_OK;
+}

@@ -122,10 +122,38 @@ static void test_five_points(void **state) {
     }
 }
 
+static void test_ceva_ed(void **state) {
+    (void)state;
+    double k;
+    assert_int_equal(pc_ceva_to_ed(0.25, &k), PC_OK);
+    NEAR(k, 0.5, 1e-15);
+    assert_int_equal(pc_ed_to_ceva(0.5, &k), PC_OK);
+    NEAR(k, 0.25, 1e-15);
+    assert_int_equal(pc_ceva_to_ed(0.09, &k), PC_OK);
+    NEAR(k, 0.6 / 1.6, 1e-15);
+    double back;
+    pc_ed_to_ceva(k, &back);
+    NEAR(back, 0.09, 1e-15);
+    /* the same arc: Ceva's (2.104) with k and the ED (2.97) with k_ED share the point on the
+     * median at t = 2/3 (A1(0,0), A2(4,0), A3(2,3): Ceva k = 1/4 gives (2, 1.5) = K of k_ED 1/2) */
+    const double a1[2] = {0, 0}, a2[2] = {4, 0}, a3[2] = {2, 3};
+    int st;
+    pc_curve *c = pc_conic_ceva(2, a1, a2, a3, 0.25, &st), *e = pc_conic_ed(2, a2, a1, a3, 0.5, &st);
+    double x[2], y[2];
+    pc_curve_eval(c, 2.0 / 3, x);
+    pc_curve_eval(e, 0.5, y);
+    NEAR(x[0], y[0], 1e-12); NEAR(x[1], y[1], 1e-12);
+    pc_curve_release(c);
+    pc_curve_release(e);
+    assert_int_equal(pc_ceva_to_ed(-1, &k), PC_EDOMAIN);
+    assert_int_equal(pc_ed_to_ceva(1, &k), PC_EDOMAIN);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_kinds), cmocka_unit_test(test_ceva_kinds),
         cmocka_unit_test(test_circle), cmocka_unit_test(test_five_points),
+        cmocka_unit_test(test_ceva_ed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
