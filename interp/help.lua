@@ -658,6 +658,8 @@ def("oneratio.bezier3", "oneratio.bezier3(A, C1, C2, B) -> curve",
   "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers).")
 def("oneratio.smooth", "oneratio.smooth(A, B, C [, n]) -> curve",
   "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2.")
+def("oneratio.smooth_scheme", "oneratio.smooth_scheme(A, B, C, n, t) -> {P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}",
+  "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t).")
 def("oneratio.desargues", "oneratio.desargues(A, B, C, D) -> curve",
   "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid.")
 def("oneratio.double_contact", "oneratio.double_contact(A, B, C, kp, kq [, f]) -> curve",

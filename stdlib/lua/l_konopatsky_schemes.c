@@ -2,6 +2,7 @@
  *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
  *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
  *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
+ *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
  * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
 #include "pcl.h"
 #include "pcl_point.h"
@@ -58,6 +59,37 @@ static int l_five_scheme(lua_State *L) {
     return 1;
 }
 
+/* oneratio.smooth_scheme(A, B, C, n, t) -> {P = {P1..Pn}, Q = {Q1..Qn}, M} */
+static int l_smooth_scheme(lua_State *L) {
+    const char *fn = "oneratio.smooth_scheme";
+    static const char *nm[3] = {"A", "B", "C"};
+    double abc[3 * PC_MAXDIM];
+    int d = pclb_points(L, fn, 1, 3, nm, abc);
+    if (!lua_isinteger(L, 4) || lua_tointeger(L, 4) < 1 || lua_tointeger(L, 4) > 40)
+        return pcl_argerror_full(L, fn, 4, 4, "n", "the smoothness order 1..40");
+    int n = (int)lua_tointeger(L, 4);
+    double t = pcl_checknum(L, fn, 5, "t");
+    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
+    int scratch = lua_gettop(L);
+    double *p = buf, *q = buf + n * d, *m = q + n * d;
+    int st = pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, t, p, q, m);
+    if (st != PC_OK) return scheme_error(L, fn, st, "A, B, C are collinear");
+    lua_createtable(L, 0, 3);
+    const char *side[2] = {"P", "Q"};
+    for (int s2 = 0; s2 < 2; s2++) {
+        lua_createtable(L, n, 0);
+        for (int i = 0; i < n; i++) {
+            pcl_pushpoint(L, d, (s2 ? q : p) + i * d);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, side[s2]);
+    }
+    pcl_pushpoint(L, d, m);
+    lua_setfield(L, -2, "M");
+    lua_remove(L, scratch);
+    return 1;
+}
+
 /* conic.ceva_to_ed(k), conic.ed_to_ceva(k): the two readings of one arc (§5.7) */
 static int conv(lua_State *L, const char *fn, int to_ed) {
     double k = pcl_checknum(L, fn, 1, "k"), r;
@@ -84,5 +116,9 @@ void pcl_open_konopatsky_schemes(lua_State *L) {
     lua_setfield(L, -2, "ceva_to_ed");
     lua_pushcfunction(L, l_ed_to_ceva);
     lua_setfield(L, -2, "ed_to_ceva");
+    lua_pop(L, 1);
+    lua_getfield(L, -1, "oneratio");
+    lua_pushcfunction(L, l_smooth_scheme);
+    lua_setfield(L, -2, "smooth_scheme");
     lua_pop(L, 1);
 }

@@ -25,6 +25,22 @@ same(f.U_B, P(1.75, 0), "U_B: u_B = 1.75")
 same(f.U_D, P(1.9, 0), "U_D: u_D = 1.9")
 same(f.U_E, P(2.557692308, 0), "U_E: u_E = 2.557692308", 1e-9)
 same(conic.five_scheme(F[1], F[2], F[3], F[4], F[5], 1.5).M, P(-8.1, 7.2), "M(1.5)")
+-- §3.6: the chain of M_n (Fig. 3.9 for n = 2), the digest's TV A(0,0,0), B(4,0,0), C(1,3,0), t = 0.3
+local A3, B3, C3 = P(0, 0, 0), P(4, 0, 0), P(1, 3, 0)
+local tvm = {P(0.78, 1.26, 0), P(0.6683544304, 1.594936709, 0), P(0.6279310345, 1.716206897, 0)}
+for n = 1, 3 do
+  local ch = oneratio.smooth_scheme(A3, B3, C3, n, 0.3)
+  same(ch.M, tvm[n], "M_" .. n .. "(0.3)", 1e-9)
+  same(ch.M, oneratio.smooth(A3, B3, C3, n)(0.3), "M_" .. n .. " on oneratio.smooth")
+  eq(#ch.P, n, "n points P")
+end
+local ch = oneratio.smooth_scheme(A3, B3, C3, 2, 0.3)
+near(dist(A3, ch.P[1]) / dist(A3, ch.P[2]), 0.3, 1e-12, "AP1/AP2 = t")
+near(dist(ch.P[1], ch.P[2]) / dist(ch.P[1], C3), 0.3, 1e-12, "P1P2/P1C = t")
+near(dist(C3, ch.Q[1]) / dist(C3, ch.Q[2]), 0.3, 1e-12, "CQ1/CQ2 = t")
+near(dist(ch.Q[1], ch.Q[2]) / dist(ch.Q[1], B3), 0.3, 1e-12, "Q1Q2/Q1B = t")
+near(dist(ch.P[2], ch.M) / dist(ch.P[2], ch.Q[1]), 0.3, 1e-12, "P2M/P2Q1 = t")
+err(function() oneratio.smooth_scheme(A3, B3, C3, 0, 0.3) end, "oneratio.smooth_scheme: argument #4 (n) must be the smoothness order 1..40", "n = 0")
 err(function() conic.ed_scheme(A, B, P(8, 0), 0.5, 0.3) end, "conic.ed_scheme: A, B, C are collinear", "flat")
 err(function() conic.ed_scheme(A, B, C, 0, 0.3) end, "conic.ed_scheme: argument #4 (k) must not be 0", "k = 0")
 err(function() conic.five_scheme(F[1], F[2], F[3], F[4], P(0, 0, 1), 0.3) end,

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 #include "point.h"
+#include "linalg.h"
 
 static void hom(int n, const double *x, double *h) {
     memcpy(h, x, sizeof(double) * (size_t)n);
@@ -80,4 +81,34 @@ int pc_conic_five_scheme(int dim, const double *a, const double *b, const double
     if ((st = meet(dim, C, A, E, D, UD)) != PC_OK) return st;
     if ((st = meet(dim, C, B, E, D, R)) != PC_OK) return st;
     return meet(dim, R, S, C, A, UE);
+}
+
+/* the chain's ratios on one side: x_0 = 0, x_(n+1) = 1, (1 - t) x_(i-1) - x_i + t x_(i+1) = 0 */
+static int chain(int n, double t, double *x) {
+    double M[40 * 40];
+    memset(M, 0, sizeof(double) * (size_t)(n * n));
+    for (int i = 0; i < n; i++) {
+        M[i * n + i] = -1;
+        if (i > 0) M[i * n + i - 1] = 1 - t;
+        if (i < n - 1) M[i * n + i + 1] = t;
+        x[i] = i == n - 1 ? -t : 0;    /* the known x_(n+1) = 1 moved right */
+    }
+    return pc_lu_solve(n, M, x);
+}
+
+int pc_oneratio_smooth_chain(int dim, const double *a, const double *b, const double *c, int n,
+                             double t, double *p, double *q, double *m) {
+    if (dim < 2 || dim > PC_MAXDIM || n < 1 || n > 40) return PC_EDIM;
+    if (!finite_pt(dim, a) || !finite_pt(dim, b) || !finite_pt(dim, c) || !isfinite(t)) return PC_ENONFINITE;
+    if (flat(dim, a, b, c)) return PC_ECOLLINEAR;
+    double x[40];
+    int st = chain(n, t, x);
+    if (st != PC_OK) return st;
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < dim; k++) {
+            p[i * dim + k] = a[k] + x[i] * (c[k] - a[k]);   /* P_i on A..C */
+            q[i * dim + k] = c[k] + x[i] * (b[k] - c[k]);   /* Q_i on C..B, the same ratios */
+        }
+    for (int k = 0; k < dim; k++) m[k] = p[(n - 1) * dim + k] + t * (q[k] - p[(n - 1) * dim + k]);
+    return PC_OK;
 }

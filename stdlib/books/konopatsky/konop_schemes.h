@@ -23,4 +23,12 @@ enum { PC_P5_S, PC_P5_U, PC_P5_V, PC_P5_M, PC_P5_UB, PC_P5_UD, PC_P5_R, PC_P5_UE
 int pc_conic_five_scheme(int dim, const double *a, const double *b, const double *c,
                          const double *d, const double *e, double u, double *out);
 
+/* §3.6 the chain of M_n (Figs. 3.9, 3.10) at t: P_1..P_n on AC with P_0 = A, P_(n+1) = C and
+ * P_i = P_(i-1) + t (P_(i+1) - P_(i-1)); Q_1..Q_n likewise on CB (Q_0 = C, Q_(n+1) = B); and
+ * M = P_n + t (Q_1 - P_n), the point of oneratio.smooth's arc (digest konopatsky_ch3_5.md §1.6:
+ * for n = 2, AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t).  p, q: n rows of dim
+ * each, m: dim.  1 <= n <= 40.  PC_ECOLLINEAR for a flat ABC. */
+int pc_oneratio_smooth_chain(int dim, const double *a, const double *b, const double *c, int n,
+                             double t, double *p, double *q, double *m);
+
 #endif

@@ -8,6 +8,7 @@
 #include <math.h>
 #include "konop_schemes.h"
 #include "conic.h"
+#include "oneratio.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -79,9 +80,43 @@ static void test_five_scheme(void **state) {
     pc_curve_release(c);
 }
 
+static void test_smooth_chain(void **state) {
+    (void)state;
+    /* §3.6 TV: A(0,0,0), B(4,0,0), C(1,3,0), t = 0.3: M_1..M_5 */
+    const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {1, 3, 0};
+    const double tv[5][2] = {{0.78, 1.26}, {0.6683544304, 1.594936709}, {0.6279310345, 1.716206897},
+                             {0.6117362956, 1.764791113}, {0.604988026, 1.785035922}};
+    double p[15], q[15], m[3];
+    for (int n = 1; n <= 5; n++) {
+        assert_int_equal(pc_oneratio_smooth_chain(3, A, B, C, n, 0.3, p, q, m), PC_OK);
+        NEAR(m[0], tv[n - 1][0], 1e-9);
+        NEAR(m[1], tv[n - 1][1], 1e-9);
+        NEAR(m[2], 0, 0);
+        /* M is oneratio.smooth's point */
+        int st;
+        pc_curve *c = pc_oneratio_smooth(3, A, B, C, n, &st);
+        double x[3];
+        pc_curve_eval(c, 0.3, x);
+        for (int k = 0; k < 3; k++) NEAR(x[k], m[k], 1e-12);
+        pc_curve_release(c);
+    }
+    /* n = 2, Fig. 3.9: P1 = A t'/(1 - t't) + C t^2/(1 - t't), Q2 = B t/(1 - t't) + C t'^2/(1 - t't) */
+    double t = 0.3, tb = 0.7, d = 1 - tb * t;
+    pc_oneratio_smooth_chain(3, A, B, C, 2, t, p, q, m);
+    for (int k = 0; k < 3; k++) {
+        NEAR(p[k], (A[k] * tb + C[k] * t * t) / d, 1e-12);
+        NEAR(p[3 + k], (A[k] * tb * tb + C[k] * t) / d, 1e-12);
+        NEAR(q[k], (B[k] * t * t + C[k] * tb) / d, 1e-12);
+        NEAR(q[3 + k], (B[k] * t + C[k] * tb * tb) / d, 1e-12);
+    }
+    const double D[3] = {8, 0, 0};
+    assert_int_equal(pc_oneratio_smooth_chain(3, A, B, D, 2, t, p, q, m), PC_ECOLLINEAR);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_scheme), cmocka_unit_test(test_five_scheme),
+        cmocka_unit_test(test_smooth_chain),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
