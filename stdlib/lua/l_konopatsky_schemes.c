@@ -2,8 +2,11 @@
  *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
  *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
  *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
+ *   conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p
+ *   conic.cones_excluded(fP, fQ) -> {u, ...}                        §2.6 (2.148), (2.151), (2.153)
  *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
  * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
+#include <string.h>
 #include "pcl.h"
 #include "pcl_point.h"
 #include "pcl_books.h"
@@ -90,6 +93,42 @@ static int l_smooth_scheme(lua_State *L) {
     return 1;
 }
 
+/* conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p */
+static int l_foci(lua_State *L) {
+    const char *fn = "conic.foci";
+    static const char *nm[3] = {"C", "A", "B"};
+    double pts[3 * PC_MAXDIM], f1[PC_MAXDIM], f2[PC_MAXDIM], e, p;
+    int d = pclb_points(L, fn, 1, 3, nm, pts);
+    const char *kind = luaL_optstring(L, 4, "ellipse");
+    int hyp = !strcmp(kind, "hyperbola");
+    if (!hyp && strcmp(kind, "ellipse"))
+        return pcl_argerror_full(L, fn, 4, 4, "kind", "\"ellipse\" or \"hyperbola\"");
+    int st = pc_conic_foci(d, pts, pts + d, pts + 2 * d, hyp, f1, f2, &e, &p);
+    if (st == PC_EDOMAIN)
+        return pcl_error(L, "%s: CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()", fn);
+    if (st == PC_ECOLLINEAR) return pcl_error(L, "%s: a semi-axis is zero (A or B coincides with C)", fn);
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    pcl_pushpoint(L, d, f1);
+    pcl_pushpoint(L, d, f2);
+    lua_pushnumber(L, e);
+    lua_pushnumber(L, p);
+    return 4;
+}
+
+/* conic.cones_excluded(fP, fQ) -> {u, ...} */
+static int l_cones_excluded(lua_State *L) {
+    const char *fn = "conic.cones_excluded";
+    double fp = pcl_checknum(L, fn, 1, "fP"), fq = pcl_checknum(L, fn, 2, "fQ"), u[5];
+    int n, st = pc_cones_excluded(fp, fq, u, &n);
+    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        lua_pushnumber(L, u[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+    return 1;
+}
+
 /* conic.ceva_to_ed(k), conic.ed_to_ceva(k): the two readings of one arc (§5.7) */
 static int conv(lua_State *L, const char *fn, int to_ed) {
     double k = pcl_checknum(L, fn, 1, "k"), r;
@@ -114,6 +153,10 @@ void pcl_open_konopatsky_schemes(lua_State *L) {
     lua_setfield(L, -2, "five_scheme");
     lua_pushcfunction(L, l_ceva_to_ed);
     lua_setfield(L, -2, "ceva_to_ed");
+    lua_pushcfunction(L, l_cones_excluded);
+    lua_setfield(L, -2, "cones_excluded");
+    lua_pushcfunction(L, l_foci);
+    lua_setfield(L, -2, "foci");
     lua_pushcfunction(L, l_ed_to_ceva);
     lua_setfield(L, -2, "ed_to_ceva");
     lua_pop(L, 1);

@@ -67,6 +67,12 @@ int pc_book_spline_tangents(int dim, int n, const double *p, const double *tl, p
 pc_curve *pc_curve_book_spline(int dim, int n, const double *p, int chord, pc_book_ends ends,
                                const double *d0, const double *d1, double *tangents,
                                int *status);
+/* The same with the user's segment lengths tl (n - 1 positive values: the parameter runs 0,
+ * t_2, t_2 + t_3, ...; the book's two choices are pc_book_spline_params').  PC_EDOMAIN for a
+ * length <= 0. */
+pc_curve *pc_curve_book_spline_tl(int dim, int n, const double *p, const double *tl,
+                                  pc_book_ends ends, const double *d0, const double *d1,
+                                  double *tangents, int *status);
 
 /* --- the helix (§4.1) and the sphere (§5.1) ------------------------------------------------ */
 /* (a cos t, a sin t, b t), t in [t0, t1]: a FUNC curve with exact derivatives. */
@@ -76,6 +82,9 @@ pc_curve *pc_curve_helix(double a, double b, double t0, double t1, int *status);
  * - sin ph e3): out = S, S_th, S_ph, the twist S_th,ph and N = S_th x S_ph (5 rows of 3;
  * N points inwards, |N| = |sin ph|). */
 void pc_sphere_frame(double th, double ph, double out[15]);
+/* The same on the sphere of centre c and radius r: S = c + r (...), S_th, S_ph and the twist
+ * times r, N times r^2 (issue 24: the twist at a general centre).  PC_EDOMAIN unless r > 0. */
+int pc_sphere_frame_at(const double c[3], double r, double th, double ph, double out[15]);
 /* The patch c + r (cos th sin ph, sin th sin ph, cos ph), th in [th0, th1] (u), ph in
  * [ph0, ph1] (v): a FUNC surface with exact partial derivatives (Fig 5.2 is th in [0, pi/2],
  * ph in [pi/4, pi/2]).  PC_EDOMAIN unless r > 0, th0 < th1, ph0 < ph1. */

@@ -176,22 +176,45 @@ pc_curve *pc_curve_book_spline(int dim, int n, const double *p, int chord, pc_bo
         *status = PC_EDOMAIN;
         return NULL;
     }
-    double *tl = malloc(sizeof(double) * (size_t)n * (2 + (size_t)dim));
+    double *tl = malloc(sizeof(double) * (size_t)n);
     if (!tl) {
         *status = PC_ENOMEM;
         return NULL;
     }
-    double *u = tl + n, *tg = u + n;
     pc_curve *c = NULL;
     *status = pc_book_spline_params(dim, n, p, chord, tl);
-    if (*status == PC_OK) *status = pc_book_spline_tangents(dim, n, p, tl, ends, d0, d1, tg);
+    if (*status == PC_OK) c = pc_curve_book_spline_tl(dim, n, p, tl, ends, d0, d1, tangents, status);
+    free(tl);
+    return c;
+}
+
+pc_curve *pc_curve_book_spline_tl(int dim, int n, const double *p, const double *tl,
+                                  pc_book_ends ends, const double *d0, const double *d1,
+                                  double *tangents, int *status) {
+    if (dim < 1 || dim > PC_MAXDIM || n < 2 || n > 10000000) {
+        *status = PC_EDOMAIN;
+        return NULL;
+    }
+    for (int k = 0; k < n - 1; k++)
+        if (!isfinite(tl[k]) || !(tl[k] > 0)) {
+            *status = isfinite(tl[k]) ? PC_EDOMAIN : PC_ENONFINITE;
+            return NULL;
+        }
+    double *u = malloc(sizeof(double) * (size_t)n * (1 + (size_t)dim));
+    if (!u) {
+        *status = PC_ENOMEM;
+        return NULL;
+    }
+    double *tg = u + n;
+    pc_curve *c = NULL;
+    *status = pc_book_spline_tangents(dim, n, p, tl, ends, d0, d1, tg);
     if (*status == PC_OK) {
         u[0] = 0;
         for (int k = 1; k < n; k++) u[k] = u[k - 1] + tl[k - 1];
         c = pc_curve_hermite(dim, n, p, tg, NULL, u, 0, status);
         if (c && tangents) memcpy(tangents, tg, sizeof(double) * (size_t)n * dim);
     }
-    free(tl);
+    free(u);
     return c;
 }
 

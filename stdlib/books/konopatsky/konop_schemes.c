@@ -112,3 +112,69 @@ int pc_oneratio_smooth_chain(int dim, const double *a, const double *b, const do
     for (int k = 0; k < dim; k++) m[k] = p[(n - 1) * dim + k] + t * (q[k] - p[(n - 1) * dim + k]);
     return PC_OK;
 }
+
+static void add_root(double *u, int *n, double x) {
+    if (!isfinite(x)) return;
+    for (int i = 0; i < *n; i++)
+        if (fabs(u[i] - x) <= 1e-12 * fmax(1, fabs(x))) return;     /* a double root once */
+    u[(*n)++] = x;
+}
+
+int pc_cones_excluded(double fp, double fq, double *u, int *n) {
+    if (!isfinite(fp) || !isfinite(fq)) return PC_ENONFINITE;
+    double fpb = 1 - fp, fqb = 1 - fq;
+    *n = 0;
+    /* (2.148) v = fP fQ' u/(fP fQ' u + fQ fP' u'): the denominator vanishes at this u */
+    double den = fq * fpb - fp * fqb;
+    if (den != 0) add_root(u, n, fq * fpb / den);
+    /* (2.151) fP (1 - 2u)^2 + 2 u u' = 0, i.e. (4 fP - 2) u^2 - (4 fP - 2) u + fP = 0 */
+    if (fp < 0.5) {
+        double r = 1 / sqrt(1 - 2 * fp);
+        add_root(u, n, (1 - r) / 2);
+        add_root(u, n, (1 + r) / 2);
+    }
+    /* (2.153): Q's denominator as a quadratic in u: a u'^2 + b u^2 + c u u' = 0 with
+     * a = fQ^2 fP'^2, b = fP^2 fQ'^2, c = 2 (fP - fP^2) fQ'^2; in powers of u:
+     * (a + b - c) u^2 + (c - 2a) u + a = 0 */
+    double a = fq * fq * fpb * fpb, b = fp * fp * fqb * fqb, c = 2 * (fp - fp * fp) * fqb * fqb;
+    double A2 = a + b - c, B1 = c - 2 * a, C0 = a;
+    if (fabs(A2) > 1e-15 * fmax(fabs(a), fmax(fabs(b), fabs(c)))) {
+        double disc = B1 * B1 - 4 * A2 * C0;
+        if (disc >= 0) {
+            double sq = sqrt(disc);
+            add_root(u, n, (-B1 - sq) / (2 * A2));
+            add_root(u, n, (-B1 + sq) / (2 * A2));
+        }
+    } else if (B1 != 0) {
+        add_root(u, n, -C0 / B1);
+    }
+    for (int i = 1; i < *n; i++)        /* sort */
+        for (int j = i; j > 0 && u[j - 1] > u[j]; j--) {
+            double t = u[j];
+            u[j] = u[j - 1];
+            u[j - 1] = t;
+        }
+    return PC_OK;
+}
+
+int pc_conic_foci(int dim, const double *c, const double *a, const double *b, int hyperbola,
+                  double *f1, double *f2, double *e, double *p) {
+    if (dim < 2 || dim > PC_MAXDIM) return PC_EDIM;
+    if (!finite_pt(dim, a) || !finite_pt(dim, b) || !finite_pt(dim, c)) return PC_ENONFINITE;
+    double la = pc_dist(dim, c, a), lb = pc_dist(dim, c, b);
+    if (!(la > 0) || !(lb > 0)) return PC_ECOLLINEAR;
+    if (fabs(pc_sigma(dim, c, a, b)) > 1e-9 * la * lb) return PC_EDOMAIN;   /* not the axes */
+    /* the axis with the foci: CA for a hyperbola, the longer one for an ellipse */
+    const double *ax = a;
+    double major = la, minor = lb;
+    if (!hyperbola && lb > la) ax = b, major = lb, minor = la;
+    double cf = hyperbola ? hypot(major, minor) : sqrt(fmax(0, major * major - minor * minor));
+    for (int k = 0; k < dim; k++) {
+        double u = (ax[k] - c[k]) / major;
+        f1[k] = c[k] + cf * u;
+        f2[k] = c[k] - cf * u;
+    }
+    *e = cf / major;
+    *p = minor * minor / major;
+    return PC_OK;
+}

@@ -31,4 +31,21 @@ int pc_conic_five_scheme(int dim, const double *a, const double *b, const double
 int pc_oneratio_smooth_chain(int dim, const double *a, const double *b, const double *c, int n,
                              double t, double *p, double *q, double *m);
 
+/* §2.6 the parameters u the cubic of two cones (conic.cones) must avoid, sorted into u (at most
+ * 5), their count in *n: (2.148)'s pole u = f_Q f_P'/(f_Q f_P' - f_P f_Q'), where A, P, Q
+ * cannot be collinear; (2.151) u = (1 +- 1/sqrt(1 - 2 f_P))/2 (the print's "-1/2(...)" corrected:
+ * the roots sum to 1), where the ED denominator of P vanishes (f_P < 1/2); (2.153) the roots of
+ * Q's denominator f_Q^2 f_P'^2 u'^2 + f_P^2 f_Q'^2 u^2 + 2 (f_P - f_P^2) f_Q'^2 u u' (real for
+ * f_Q <= 1/2).  PC_ENONFINITE for NaN/inf. */
+int pc_cones_excluded(double fp, double fq, double *u, int *n);
+
+/* The foci F1, F2, the eccentricity e and the focal parameter p of the ellipse of centre C with
+ * the semi-axes CA, CB (the major one carries the foci: F = C +- c (A - C)/a, c^2 = a^2 - b^2), or
+ * (hyperbola != 0) of the hyperbola of centre C, vertex A and imaginary semi-axis CB
+ * (c^2 = a^2 + b^2, the foci on CA), in any dimension (the plane CAB).  p = b^2/a.  F1 is on
+ * the side of A (of B when CB is the major axis).  PC_EDOMAIN unless CA and CB are perpendicular
+ * (within 1e-9: conjugate semi-diameters are not axes), PC_ECOLLINEAR for a zero semi-axis. */
+int pc_conic_foci(int dim, const double *c, const double *a, const double *b, int hyperbola,
+                  double *f1, double *f2, double *e, double *p);
+
 #endif

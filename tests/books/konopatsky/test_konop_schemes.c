@@ -9,6 +9,7 @@
 #include "konop_schemes.h"
 #include "conic.h"
 #include "oneratio.h"
+#include "point.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -113,10 +114,72 @@ static void test_smooth_chain(void **state) {
     assert_int_equal(pc_oneratio_smooth_chain(3, A, B, D, 2, t, p, q, m), PC_ECOLLINEAR);
 }
 
+static void test_cones_excluded(void **state) {
+    (void)state;
+    /* f_P = 0.3, f_Q = 0.4 (Table 2.2's kind: hyperbolas): (2.148)'s pole, (2.151)'s two roots
+     * ((1 +- 1/sqrt 0.4)/2, the print's sign corrected) and (2.153)'s two, the printed closed
+     * form, each a zero of its denominator */
+    double fp = 0.3, fq = 0.4, u[5];
+    int n;
+    assert_int_equal(pc_cones_excluded(fp, fq, u, &n), PC_OK);
+    assert_int_equal(n, 5);
+    for (int i = 1; i < n; i++) assert_true(u[i] > u[i - 1]);
+    double fpb = 1 - fp, fqb = 1 - fq, r = 1 / sqrt(1 - 2 * fp);
+    double want[5] = {fq * fpb / (fq * fpb - fp * fqb), (1 - r) / 2, (1 + r) / 2, 0, 0};
+    double den = fq * fq * fpb * fpb + fp * fp * fqb * fqb - 2 * fp * fpb * fqb * fqb;
+    double num = fpb * (fpb * fq * fq - fp * fqb * fqb), pm = fpb * fp * fqb * sqrt(fqb - fq);
+    want[3] = (num - pm) / den;
+    want[4] = (num + pm) / den;
+    for (int i = 0; i < 5; i++) {
+        int found = 0;
+        for (int j = 0; j < n; j++) found |= fabs(u[j] - want[i]) <= 1e-12;
+        assert_true(found);
+    }
+    for (int j = 0; j < n; j++) {
+        double x = u[j], xb = 1 - x;
+        double dp = fp * (1 - 2 * x) * (1 - 2 * x) + 2 * x * xb;
+        double dq = fq * fq * fpb * fpb * xb * xb + fp * fp * fqb * fqb * x * x + 2 * (fp - fp * fp) * fqb * fqb * x * xb;
+        double dv = fp * fqb * x + fq * fpb * xb;
+        assert_true(fabs(dp) < 1e-12 || fabs(dq) < 1e-12 || fabs(dv) < 1e-12);
+    }
+    /* ellipses (f > 1/2): no ED pole; only (2.148)'s */
+    assert_int_equal(pc_cones_excluded(0.6, 0.9, u, &n), PC_OK);
+    assert_int_equal(n, 1);
+    NEAR(u[0], 0.9 * 0.4 / (0.9 * 0.4 - 0.6 * 0.1), 1e-12);
+}
+
+static void test_foci(void **state) {
+    (void)state;
+    /* the ellipse x^2/9 + y^2/4 = 1 tilted into 3-D: foci at +- sqrt 5 along CA, e = sqrt5/3,
+     * p = 4/3; the hyperbola of vertex A and imaginary semi-axis CB: c = sqrt 13 */
+    const double C[3] = {1, 1, 1}, A[3] = {1 + 3 * 0.6, 1 + 3 * 0.8, 1}, B[3] = {1, 1, 3};
+    double f1[3], f2[3], e, p;
+    assert_int_equal(pc_conic_foci(3, C, A, B, 0, f1, f2, &e, &p), PC_OK);
+    NEAR(pc_dist(3, C, f1), sqrt(5), 1e-12);
+    NEAR(f1[0], 1 + sqrt(5) * 0.6, 1e-12);
+    NEAR(f2[1], 1 - sqrt(5) * 0.8, 1e-12);
+    NEAR(e, sqrt(5) / 3, 1e-15);
+    NEAR(p, 4.0 / 3, 1e-15);
+    /* |MF1| + |MF2| = 2a at a point of the ellipse */
+    double M[3];
+    for (int k = 0; k < 3; k++) M[k] = C[k] + (A[k] - C[k]) * cos(0.7) + (B[k] - C[k]) * sin(0.7);
+    NEAR(pc_dist(3, M, f1) + pc_dist(3, M, f2), 6, 1e-12);
+    assert_int_equal(pc_conic_foci(3, C, A, B, 1, f1, f2, &e, &p), PC_OK);
+    NEAR(pc_dist(3, C, f1), sqrt(13), 1e-12);
+    NEAR(e, sqrt(13) / 3, 1e-15);
+    /* CB the major axis: the foci move onto it */
+    const double B2[3] = {1, 1, 6};
+    pc_conic_foci(3, C, A, B2, 0, f1, f2, &e, &p);
+    NEAR(f1[2], 1 + 4, 1e-12);                       /* c = sqrt(25 - 9) = 4 along CB */
+    const double D[3] = {2, 2, 2};
+    assert_int_equal(pc_conic_foci(3, C, A, D, 0, f1, f2, &e, &p), PC_EDOMAIN);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_scheme), cmocka_unit_test(test_five_scheme),
-        cmocka_unit_test(test_smooth_chain),
+        cmocka_unit_test(test_smooth_chain), cmocka_unit_test(test_cones_excluded),
+        cmocka_unit_test(test_foci),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
