@@ -2,6 +2,7 @@
  *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
  *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
  *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
+ *   conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}            (2.105)
  *   conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p
  *   conic.cones_excluded(fP, fQ) -> {u, ...}                        §2.6 (2.148), (2.151), (2.153)
  *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
@@ -93,6 +94,29 @@ static int l_smooth_scheme(lua_State *L) {
     return 1;
 }
 
+/* conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r} */
+static int l_ceva_scheme(lua_State *L) {
+    const char *fn = "conic.ceva_scheme";
+    static const char *nm[3] = {"A1", "A2", "A3"};
+    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], t3, r;
+    int d = pclb_points(L, fn, 1, 3, nm, p);
+    double k = pcl_checknum(L, fn, 4, "k"), t = pcl_checknum(L, fn, 5, "t");
+    int st = pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, k, t, o, &t3, &r);
+    if (st == PC_EDOMAIN) return pcl_error(L, "%s: argument #4 (k) must not be 0", fn);
+    if (st == PC_EPOLE) return pcl_error(L, "%s: the arc is at infinity at t = %s", fn, pcl_pushnum(L, t));
+    if (st != PC_OK) return scheme_error(L, fn, st, "A1, A2, A3 are collinear");
+    lua_createtable(L, 0, 4);
+    pcl_pushpoint(L, d, o);
+    lua_setfield(L, -2, "M3");
+    pcl_pushpoint(L, d, o + d);
+    lua_setfield(L, -2, "M");
+    lua_pushnumber(L, t3);
+    lua_setfield(L, -2, "t3");
+    lua_pushnumber(L, r);
+    lua_setfield(L, -2, "r");
+    return 1;
+}
+
 /* conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p */
 static int l_foci(lua_State *L) {
     const char *fn = "conic.foci";
@@ -157,6 +181,8 @@ void pcl_open_konopatsky_schemes(lua_State *L) {
     lua_setfield(L, -2, "cones_excluded");
     lua_pushcfunction(L, l_foci);
     lua_setfield(L, -2, "foci");
+    lua_pushcfunction(L, l_ceva_scheme);
+    lua_setfield(L, -2, "ceva_scheme");
     lua_pushcfunction(L, l_ed_to_ceva);
     lua_setfield(L, -2, "ed_to_ceva");
     lua_pop(L, 1);

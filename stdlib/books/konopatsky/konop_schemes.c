@@ -178,3 +178,21 @@ int pc_conic_foci(int dim, const double *c, const double *a, const double *b, in
     *p = minor * minor / major;
     return PC_OK;
 }
+
+int pc_conic_ceva_scheme(int dim, const double *a1, const double *a2, const double *a3, double k,
+                         double t, double *out, double *t3, double *r) {
+    if (dim < 2 || dim > PC_MAXDIM) return PC_EDIM;
+    if (!finite_pt(dim, a1) || !finite_pt(dim, a2) || !finite_pt(dim, a3) || !isfinite(k) || !isfinite(t))
+        return PC_ENONFINITE;
+    if (flat(dim, a1, a2, a3)) return PC_ECOLLINEAR;
+    if (k == 0) return PC_EDOMAIN;
+    double tb = 1 - t, d3 = k * t * t + tb * tb, dr = 1 - t * (1 - k * t);
+    if (d3 == 0 || dr == 0) return PC_EPOLE;
+    *t3 = tb * tb / d3;
+    *r = t * tb / dr;
+    for (int i = 0; i < dim; i++) {
+        out[i] = a1[i] * (1 - *t3) + a2[i] * *t3;
+        out[dim + i] = out[i] * (1 - *r) + a3[i] * *r;
+    }
+    return PC_OK;
+}

@@ -48,4 +48,12 @@ int pc_cones_excluded(double fp, double fq, double *u, int *n);
 int pc_conic_foci(int dim, const double *c, const double *a, const double *b, int hyperbola,
                   double *f1, double *f2, double *e, double *p);
 
+/* (2.105) Ceva's arc read by the engineering discriminant (§2.1.7): at t the point
+ * M3 = A1 (1 - t3) + A2 t3 on A1A2 and M = M3 (1 - r) + A3 r on the median-like line A3M3, with
+ * t3 = (1 - t)^2/(k t^2 + (1 - t)^2) and r = t(1 - t)/(1 - t(1 - k t)); M is (2.104) at t.
+ * out: M3 then M (2 rows of dim), *t3 and *r.  PC_ECOLLINEAR for a flat A1A2A3, PC_EPOLE where
+ * a denominator vanishes (a point at infinity of a hyperbola), PC_EDOMAIN for k = 0. */
+int pc_conic_ceva_scheme(int dim, const double *a1, const double *a2, const double *a3, double k,
+                         double t, double *out, double *t3, double *r);
+
 #endif

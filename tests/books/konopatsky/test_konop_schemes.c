@@ -175,11 +175,35 @@ static void test_foci(void **state) {
     assert_int_equal(pc_conic_foci(3, C, A, D, 0, f1, f2, &e, &p), PC_EDOMAIN);
 }
 
+static void test_ceva_scheme(void **state) {
+    (void)state;
+    /* (2.105) digest §5.7: A1(0,0), A2(4,0), A3(2,3) at t = 0.3: k = 0.25 -> (3.294118,
+     * 0.871972), k = 1 -> (3.012658, 0.797468); M is (2.104) at t; t = 2/3 at k = 1/4 gives
+     * t3 = r = 1/2 (the print's "t3 = 2/3" is t) */
+    const double a1[2] = {0, 0}, a2[2] = {4, 0}, a3[2] = {2, 3};
+    double o[4], t3, r;
+    assert_int_equal(pc_conic_ceva_scheme(2, a1, a2, a3, 0.25, 0.3, o, &t3, &r), PC_OK);
+    NEAR(o[2], 3.294118, 1e-6); NEAR(o[3], 0.871972, 1e-6);
+    NEAR(o[1], 0, 0);                                   /* M3 on A1A2 */
+    int st;
+    pc_curve *c = pc_conic_ceva(2, a1, a2, a3, 0.25, &st);
+    double x[2];
+    pc_curve_eval(c, 0.3, x);
+    NEAR(x[0], o[2], 1e-12); NEAR(x[1], o[3], 1e-12);
+    pc_curve_release(c);
+    pc_conic_ceva_scheme(2, a1, a2, a3, 1, 0.3, o, &t3, &r);
+    NEAR(o[2], 3.012658, 1e-6); NEAR(o[3], 0.797468, 1e-6);
+    pc_conic_ceva_scheme(2, a1, a2, a3, 0.25, 2.0 / 3, o, &t3, &r);
+    NEAR(t3, 0.5, 1e-15); NEAR(r, 0.5, 1e-15);
+    NEAR(o[2], 2, 1e-15); NEAR(o[3], 1.5, 1e-15);
+    assert_int_equal(pc_conic_ceva_scheme(2, a1, a2, a3, 0, 0.3, o, &t3, &r), PC_EDOMAIN);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_scheme), cmocka_unit_test(test_five_scheme),
         cmocka_unit_test(test_smooth_chain), cmocka_unit_test(test_cones_excluded),
-        cmocka_unit_test(test_foci),
+        cmocka_unit_test(test_foci), cmocka_unit_test(test_ceva_scheme),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
