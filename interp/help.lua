@@ -623,6 +623,8 @@ def("conic.foci", "conic.foci(C, A, B [, \"ellipse\"|\"hyperbola\"]) -> F1, F2, 
   "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular.")
 def("conic.ceva_scheme", "conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}",
   "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t.")
+def("conic.focal_point", "conic.focal_point(C, A, B, phi [, \"ellipse\"|\"hyperbola\"]) -> M, F, pa, pb",
+  "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56).")
 def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements", "conic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements"},
   "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},

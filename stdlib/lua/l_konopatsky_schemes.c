@@ -3,6 +3,7 @@
  *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
  *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
  *   conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}            (2.105)
+ *   conic.focal_point(C, A, B, phi [, kind]) -> M, F, pa, pb         (2.17), (2.55)
  *   conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p
  *   conic.cones_excluded(fP, fQ) -> {u, ...}                        §2.6 (2.148), (2.151), (2.153)
  *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
@@ -94,6 +95,28 @@ static int l_smooth_scheme(lua_State *L) {
     return 1;
 }
 
+/* conic.focal_point(C, A, B, phi [, "ellipse"|"hyperbola"]) -> M, F, pa, pb */
+static int l_focal_point(lua_State *L) {
+    const char *fn = "conic.focal_point";
+    static const char *nm[3] = {"C", "A", "B"};
+    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], pab[2];
+    int d = pclb_points(L, fn, 1, 3, nm, p);
+    double phi = pcl_checknum(L, fn, 4, "phi");
+    const char *kind = luaL_optstring(L, 5, "ellipse");
+    int hyp = !strcmp(kind, "hyperbola");
+    if (!hyp && strcmp(kind, "ellipse")) return pcl_argerror_full(L, fn, 5, 5, "kind", "\"ellipse\" or \"hyperbola\"");
+    int st = pc_conic_focal_point(d, p, p + d, p + 2 * d, hyp, phi, o, pab);
+    if (st == PC_EDOMAIN)
+        return pcl_error(L, "%s: CA and CB must be perpendicular semi-axes%s", fn, hyp ? "" : ", CA the major one (the foci on it)");
+    if (st == PC_EPOLE) return pcl_error(L, "%s: phi = %s is an asymptote's direction (1 - e cos phi = 0)", fn, pcl_pushnum(L, phi));
+    if (st != PC_OK) return scheme_error(L, fn, st, "a semi-axis is zero");
+    pcl_pushpoint(L, d, o);
+    pcl_pushpoint(L, d, o + d);
+    lua_pushnumber(L, pab[0]);
+    lua_pushnumber(L, pab[1]);
+    return 4;
+}
+
 /* conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r} */
 static int l_ceva_scheme(lua_State *L) {
     const char *fn = "conic.ceva_scheme";
@@ -183,6 +206,8 @@ void pcl_open_konopatsky_schemes(lua_State *L) {
     lua_setfield(L, -2, "foci");
     lua_pushcfunction(L, l_ceva_scheme);
     lua_setfield(L, -2, "ceva_scheme");
+    lua_pushcfunction(L, l_focal_point);
+    lua_setfield(L, -2, "focal_point");
     lua_pushcfunction(L, l_ed_to_ceva);
     lua_setfield(L, -2, "ed_to_ceva");
     lua_pop(L, 1);

@@ -70,6 +70,13 @@ near(cv.M3.y, 0, 0, "M3 on A1A2")
 local cv2 = conic.ceva_scheme(P(0, 0), P(4, 0), P(2, 3), 0.25, 2 / 3)
 near(cv2.t3, 0.5, 1e-15, "t = 2/3: t3 = 1/2 (the print's t3 = 2/3 is t)")
 near(cv2.r, 0.5, 1e-15, "and r = 1/2")
+-- the focal-simplex forms (2.17), (2.55)
+local M17, F17, pa, pb = conic.focal_point(P(0, 0), P(4, 0), P(0, 2), math.pi / 3)
+same(M17, P(-2.582248, 1.527416), "(2.17) = (2.18)'s TV at pi/3", 1e-6)
+same((P(4, 0) - F17) * pa + (P(0, 2) - F17) * pb + F17, M17, "M = (A - F)pa + (B - F)pb + F")
+same(conic.focal_point(P(0, 0), P(3, 0), P(0, 2), 2, "hyperbola"), P(3.235679, 0.808186), "(2.55) corrected = (2.56)'s TV", 1e-6)
+err(function() conic.focal_point(P(0, 0), P(3, 0), P(0, 2), math.acos(3 / math.sqrt(13)), "hyperbola") end,
+    "is an asymptote's direction", "asymptote")
 err(function() conic.ed_scheme(A, B, P(8, 0), 0.5, 0.3) end, "conic.ed_scheme: A, B, C are collinear", "flat")
 err(function() conic.ed_scheme(A, B, C, 0, 0.3) end, "conic.ed_scheme: argument #4 (k) must not be 0", "k = 0")
 err(function() conic.five_scheme(F[1], F[2], F[3], F[4], P(0, 0, 1), 0.3) end,

@@ -196,3 +196,26 @@ int pc_conic_ceva_scheme(int dim, const double *a1, const double *a2, const doub
     }
     return PC_OK;
 }
+
+int pc_conic_focal_point(int dim, const double *c, const double *a, const double *b,
+                         int hyperbola, double phi, double *out, double pab[2]) {
+    if (dim < 2 || dim > PC_MAXDIM) return PC_EDIM;
+    if (!finite_pt(dim, a) || !finite_pt(dim, b) || !finite_pt(dim, c) || !isfinite(phi)) return PC_ENONFINITE;
+    double la = pc_dist(dim, c, a), lb = pc_dist(dim, c, b);
+    if (!(la > 0) || !(lb > 0)) return PC_ECOLLINEAR;
+    if (fabs(pc_sigma(dim, c, a, b)) > 1e-9 * la * lb) return PC_EDOMAIN;
+    if (!hyperbola && !(la > lb)) return PC_EDOMAIN;
+    double cf = hyperbola ? hypot(la, lb) : sqrt(la * la - lb * lb), e = cf / la;
+    double den = la * (1 - e * cos(phi));
+    if (!(fabs(den) > 1e-14 * la)) return PC_EPOLE;
+    double pa = hyperbola ? lb * (lb * cos(phi) + cf * sin(phi)) / (den * (la - cf))
+                          : lb * (lb * cos(phi) - cf * sin(phi)) / (den * (la + cf));
+    double pb = lb * sin(phi) / den;
+    double *M = out, *F = out + dim;
+    for (int i = 0; i < dim; i++) {
+        F[i] = c[i] + (hyperbola ? e : -e) * (a[i] - c[i]);
+        M[i] = (a[i] - F[i]) * pa + (b[i] - F[i]) * pb + F[i];
+    }
+    pab[0] = pa, pab[1] = pb;
+    return PC_OK;
+}

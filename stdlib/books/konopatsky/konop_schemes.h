@@ -56,4 +56,16 @@ int pc_conic_foci(int dim, const double *c, const double *a, const double *b, in
 int pc_conic_ceva_scheme(int dim, const double *a1, const double *a2, const double *a3, double k,
                          double t, double *out, double *t3, double *r);
 
+/* The focal-simplex forms (2.17) and (2.55), corrected (digest §5.1, §5.2): the point at the
+ * focal angle phi of the ellipse of centre C and semi-axes CA, CB (F = F2 = C - (A - C) e, phi
+ * from F2 towards A) or of the hyperbola of vertex A and imaginary semi-axis CB (F = F1 = C +
+ * (A - C) e), written in the simplex A B F: M = (A - F) pa + (B - F) pb + F with
+ *   ellipse:   pa = b(b cos phi - c sin phi)/(a(1 - e cos phi)(a + c)),
+ *   hyperbola: pa = b(b cos phi + c sin phi)/(a(1 - e cos phi)(a - c))  (the print: - c sin, c - a),
+ *   pb = b sin phi/(a(1 - e cos phi)); the same points as (2.18), (2.56).  out: M then F (2 rows
+ * of dim), pab: pa, pb.  PC_EDOMAIN unless CA, CB are perpendicular (and a > b for the
+ * ellipse: the foci on CA), PC_EPOLE where 1 - e cos phi = 0 (an asymptote's direction). */
+int pc_conic_focal_point(int dim, const double *c, const double *a, const double *b,
+                         int hyperbola, double phi, double *out, double pab[2]);
+
 #endif

@@ -199,11 +199,44 @@ static void test_ceva_scheme(void **state) {
     assert_int_equal(pc_conic_ceva_scheme(2, a1, a2, a3, 0, 0.3, o, &t3, &r), PC_EDOMAIN);
 }
 
+static void test_focal_forms(void **state) {
+    (void)state;
+    /* set E (C(0,0), A(4,0), B(0,2)): (2.18)'s TV, and (2.16) with its factor p gives the same
+     * coefficients as (2.17) */
+    const double C[2] = {0, 0}, A[2] = {4, 0}, B[2] = {0, 2};
+    double o[4], pab[2];
+    const double phis[4] = {M_PI / 3, M_PI / 2, M_PI, 4}, tv[4][2] = {{-2.582248, 1.527416}, {-3.464102, 1},
+                                                                       {-4, 0}, {-3.881479, -0.483249}};
+    for (int i = 0; i < 4; i++) {
+        assert_int_equal(pc_conic_focal_point(2, C, A, B, 0, phis[i], o, pab), PC_OK);
+        NEAR(o[0], tv[i][0], 1e-6); NEAR(o[1], tv[i][1], 1e-6);
+        double a = 4, b = 2, c = sqrt(12), e = c / a, p = b * b / a, ph = phis[i];
+        double pa16 = p * a * sin(acos(e) - ph) / ((1 - e * cos(ph)) * (a * b + c * b));
+        NEAR(pab[0], pa16, 1e-12);                       /* (2.16) = (2.17) */
+    }
+    NEAR(o[2], -sqrt(12), 1e-12);                        /* F2 = C - (A - C) e */
+    /* set H (C(0,0), A(3,0), B(0,2)): (2.56)'s TV by the corrected (2.55) and (2.54) */
+    const double AH[2] = {3, 0};
+    const double hp[5] = {0, 0.3, M_PI / 2, 2, 5}, htv[5][2] = {{-3, 0}, {-4.991118, -2.659262},
+                                                               {3.605551, 1.333333}, {3.235679, 0.808186},
+                                                               {4.179406, -1.939923}};
+    for (int i = 0; i < 5; i++) {
+        assert_int_equal(pc_conic_focal_point(2, C, AH, B, 1, hp[i], o, pab), PC_OK);
+        NEAR(o[0], htv[i][0], 1e-6); NEAR(o[1], htv[i][1], 1e-6);
+        double a = 3, b = 2, c = sqrt(13), e = c / a, p = b * b / a, ph = hp[i];
+        double pa54 = sqrt(b * b + c * c) * p * sin(asin(b / sqrt(b * b + c * c)) + ph) / ((1 - e * cos(ph)) * (a * b - c * b));
+        NEAR(pab[0], pa54, 1e-12);                       /* (2.54) corrected = (2.55) corrected */
+    }
+    assert_int_equal(pc_conic_focal_point(2, C, AH, B, 1, acos(3 / sqrt(13)), o, pab), PC_EPOLE);
+    assert_int_equal(pc_conic_focal_point(2, C, B, A, 0, 1, o, pab), PC_EDOMAIN);   /* CA the minor axis */
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_scheme), cmocka_unit_test(test_five_scheme),
         cmocka_unit_test(test_smooth_chain), cmocka_unit_test(test_cones_excluded),
         cmocka_unit_test(test_foci), cmocka_unit_test(test_ceva_scheme),
+        cmocka_unit_test(test_focal_forms),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
