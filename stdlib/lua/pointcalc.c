@@ -33,6 +33,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_konopatsky(L);
     pcl_open_konopatsky_ch1(L);
     pcl_open_konopatsky_schemes(L);
+    pcl_open_konopatsky_triples(L);
     pcl_open_params(L);
     pcl_open_korotky(L);
     pcl_open_korotky_meet(L);
