@@ -11,6 +11,7 @@
 #include "pcl_curve.h"
 #include "pcl_point.h"
 #include "pcl_books.h"
+#include "pcl_args.h"
 #include "quadratic.h"
 
 static void setnum(lua_State *L, const char *k, double v) {
@@ -145,35 +146,32 @@ static int conditions(lua_State *L, const char *fn, double coef[6]) {
     return pc_conic_coef_conditions(rows, coef);
 }
 
-/* plane.conic_slope(coef, X): dy/dx of the implicit conic at its point X */
+/* plane.conic_slope(coef, X): dy/dx of the implicit conic at its point X (declared) */
 static int l_slope(lua_State *L) {
-    const char *fn = "plane.conic_slope";
-    if (!lua_istable(L, 1) || luaL_len(L, 1) != 6)
-        return pcl_argerror_full(L, fn, 1, 1, "coef", "a list of 6 numbers {a, b, c, d, e, f}");
-    double q[6], x[2];
-    for (int i = 0; i < 6; i++) {
-        lua_geti(L, 1, i + 1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-            return pcl_error(L, "%s: argument #1 (coef) [%d] must be a finite number, got %s", fn, i + 1,
-                             pcl_shown(L, lua_gettop(L)));
-        q[i] = lua_tonumber(L, -1);
-        lua_pop(L, 1);
-    }
-    pclb_point(L, fn, 2, "X", 2, 0, NULL, x);
+    double q[6];
+    pcl_val a[2] = {{.list = q, .cap = 6}};
+    PCL_READ(L, a);
+    const double *x = a[1].v;
     double v = pc_conic_eq(q, x[0], x[1]), g = hypot(2 * q[0] * x[0] + q[1] * x[1] + q[3], q[1] * x[0] + 2 * q[2] * x[1] + q[4]);
     if (fabs(v) > 1e-9 * fmax(g, 1) * fmax(1, hypot(x[0], x[1])))
-        return pcl_error(L, "%s: the point X is not on the curve (the equation gives %s there)", fn, pcl_pushnum(L, v));
+        return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
     double sl;
     int st = pc_conic_slope(q, x[0], x[1], &sl);
     if (st == PC_EPOLE) {
         lua_pushnumber(L, HUGE_VAL);   /* a vertical tangent */
         return 1;
     }
-    if (st == PC_EZERO) return pcl_error(L, "%s: X is a singular point of the curve (both partial derivatives are 0)", fn);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    if (st == PC_EZERO) return pcl_fail(L, "X is a singular point of the curve (both partial derivatives are 0)");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
     lua_pushnumber(L, sl);
     return 1;
 }
+
+static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
+static const pcl_fn plane_fns[] = {
+    PCL_FN("plane.conic_slope", l_slope, slope_args, "slope",
+           "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
+    PCL_END};
 
 static int l_elements(lua_State *L) {
     const char *fn = "conic.elements";
@@ -234,9 +232,6 @@ void pcl_open_conic_elements(lua_State *L) {
     lua_setfield(L, -2, "elements");
     lua_settop(L, module);
     lua_getfield(L, module, "plane");
-    if (lua_istable(L, -1)) {
-        lua_pushcfunction(L, l_slope);
-        lua_setfield(L, -2, "conic_slope");
-    }
+    if (lua_istable(L, -1)) pcl_register(L, lua_gettop(L), plane_fns, 0);
     lua_settop(L, module);
 }

@@ -16,5 +16,5 @@ same(korotky.plane_meet(K0, K0 + u1, u2, K0 + v1, v2, K0 - v2), K0, "with direct
 err(function() korotky.plane_meet(P(0, 0, 0, 0), P(1, 0, 0, 0), P(0, 1, 0, 0), P(0, 0, 0, 0), P(1, 0, 0, 0), P(0, 0, 1, 0)) end,
     "korotky.plane_meet: the planes share a line", "a common line")
 err(function() korotky.plane_meet(P(0, 0, 0), P(1, 0, 0, 0), P(0, 1, 0, 0), P(0, 0, 0, 0), P(1, 0, 0, 0), P(0, 0, 1, 0)) end,
-    "korotky.plane_meet: argument #1 (P1) must be 4-D, got 3-D", "3-D")
+    "korotky.plane_meet: argument #1 (P1) must be a 4-D point or vector, got P(0, 0, 0)", "3-D")
 check.done()
