@@ -275,7 +275,7 @@ int pc_conic_info_rquad(const double h[9], pc_conic_info *out) {
     const double *q = out->coef;
     out->disc = q[1] * q[1] - 4 * q[0] * q[2];
     double w0 = h[2], w1 = h[5], w2 = h[8];
-    if (w0 != 0 && w2 != 0) {
+    if (w0 != 0 && w1 != 0 && w2 != 0) {
         /* digest §6: the type is fixed by mu = w1^2/(w0 w2), which no reparametrisation and
          * no common factor of the weights changes */
         out->mu = w1 * w1 / (w0 * w2);
@@ -288,10 +288,12 @@ int pc_conic_info_rquad(const double h[9], pc_conic_info *out) {
             out->k_ed = 1 / (1 + out->w);
         }
     } else {
-        /* an end at infinity: the line at infinity cuts the conic there, and is tangent (a
-         * parabola) only when the end tangent, towards the middle point, is at infinity too */
+        /* a control point at infinity (an end, or the middle one of a semi-ellipse with
+         * parallel end tangents): mu says nothing, the equation's discriminant does */
         double big2 = fmax(q[1] * q[1], fmax(q[0] * q[0], q[2] * q[2]));
-        out->kind = fabs(out->disc) <= 1e-12 * big2 ? PC_CK_PARABOLA : PC_CK_HYPERBOLA;
+        out->kind = fabs(out->disc) <= 1e-12 * big2 ? PC_CK_PARABOLA
+                  : out->disc < 0                  ? PC_CK_ELLIPSE
+                                                   : PC_CK_HYPERBOLA;
     }
     return elements(out);
 }

@@ -5,19 +5,20 @@
  *
  * Coefficients are {a, b, c, d, e, f} of a x^2 + b x y + c y^2 + d x + e y + f = 0, scaled so
  * the largest |entry| is 1 and the first of a, b, c that is not 0 is positive (the convention
- * of the textbook's conic functions).  The kind is the
- * type of the arc's weights where an arc is known (Konopatsky digest §6: mu = w1^2/(w0 w2) < 1
- * ellipse, = 1 parabola, > 1 or < 0 hyperbola) and the sign of b^2 - 4ac otherwise. */
+ * of the textbook's conic functions).  The kind is the type of the arc's weights where an arc
+ * with three finite control points is known (Konopatsky digest §6: mu = w1^2/(w0 w2) < 1
+ * ellipse, = 1 parabola, > 1 or < 0 hyperbola) and the sign of b^2 - 4ac otherwise (no arc, or
+ * a control point at infinity). */
 #ifndef PC_QUADRATIC_H
 #define PC_QUADRATIC_H
 
 #include "curve.h"
 
-typedef enum { PC_CK_ELLIPSE, PC_CK_PARABOLA, PC_CK_HYPERBOLA } pc_conic_kind;
+typedef enum { PC_CK_ELLIPSE, PC_CK_PARABOLA, PC_CK_HYPERBOLA } pc_ckind;
 
-typedef struct {
+typedef struct pc_conic_info {
     double coef[6];
-    pc_conic_kind kind;
+    pc_ckind kind;
     int circle;            /* an ellipse with equal semi-axes (within 1e-9 relative) */
     double disc;           /* b^2 - 4ac of coef */
     /* the arc's weights, when the conic came from one (else NaN):

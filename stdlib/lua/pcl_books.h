@@ -13,4 +13,9 @@ int pclb_point(lua_State *L, const char *fn, int arg, const char *what, int dim,
 int pclb_points(lua_State *L, const char *fn, int first, int count, const char *const *names,
                 double *out);
 
+/* Push the table of a conic's elements (l_conic_elements.c): kind, circle, discriminant, coef,
+ * center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva. */
+struct pc_conic_info;
+void pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
+
 #endif

@@ -164,6 +164,15 @@ static void test_signs_and_infinity(void **state) {
     NEAR(o.coef[1], o.coef[1] > 0 ? 1 : -1, 1e-12);
     NEAR(o.coef[5], -o.coef[1], 1e-12);
     NEAR(o.semi[0], sqrt(2), 1e-12);
+    /* the middle control point at infinity (parallel end tangents): the semi-ellipse
+     * (x - 1)^2 + 4 y^2 = 1 from (0, 0) over (0, 1) at infinity to (2, 0), by the discriminant */
+    const double semi[9] = {0, 0, 1, 0, 0.5, 0, 2, 0, 1};
+    assert_int_equal(pc_conic_info_rquad(semi, &o), PC_OK);
+    assert_int_equal(o.kind, PC_CK_ELLIPSE);
+    NEAR(o.semi[0], 1, 1e-12);
+    NEAR(o.semi[1], 0.5, 1e-12);
+    NEAR(o.center[0], 1, 1e-12);
+    assert_true(isnan(o.mu));
     /* a straight segment: w1 = 0, or collinear points */
     const double w3[3] = {1, 0, 1};
     rquad(ACB, w3, h);
