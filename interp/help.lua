@@ -545,22 +545,14 @@ def("conic.ceva", "conic.ceva(A1, A2, A3, k) -> curve",
   "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola.")
 def("conic.ceva_k", "conic.ceva_k(A1, A2, A3, K) -> k",
   "(2.100) k = v31/v23 of the conic of the pencil through the point K.")
-def("konopatsky.area_k", "konopatsky.area_k(l1, l2, l3) -> k",
-  "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3.")
-def("konopatsky.area_theorem", "konopatsky.area_theorem(A1, A2, A3, B1, B2, B3) -> {k, lambda, a, b, c, collinear}",
-  "(1.2) for B1 on A1A2, B2 on A2A3, B3 on A3A1, any dimension: the signed area ratio k, lambda_i = (AiA(i+1)Bi), the proof's a = (B1A1A2) = -1/(1 + l1), b, c; collinear is corollary 1 (k = 0, Menelaus l1 l2 l3 = -1). B3 = A3 gives k = ab (corollary 2), B1 = A1 and B3 = A3 give k = -b (corollary 3).")
-def("konopatsky.o_theorem", "konopatsky.o_theorem({A1, ..., Am}, D1, D2) -> product, ratios, B",
-  "(1.4) The O-theorem: Bi = AiA(i+1) x D1D2 (B at infinity for a side parallel to d), ratios (AiA(i+1)Bi) and their product, (-1)^m with the closing factor (A_m A_1 B_m) the print omits.")
-def("konopatsky.simplex_ratio", "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio",
-  "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected).")
-def("konopatsky.meet_line_plane", "konopatsky.meet_line_plane(A1, A2, P1, P2, P3) -> K, lambda, p, q",
-  "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet.")
-def("konopatsky.polar", "konopatsky.polar(C, A, B, rho, phi) -> M",
-  "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension.")
-def("konopatsky.rotate", "konopatsky.rotate(C, A, B, phi) -> Q",
-  "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|).")
-def("konopatsky.moving_simplex", "konopatsky.moving_simplex(NA, NB, NC, gen) -> surface",
-  "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections).")
+def("konopatsky.area_k")
+def("konopatsky.area_theorem")
+def("konopatsky.o_theorem")
+def("konopatsky.simplex_ratio")
+def("konopatsky.meet_line_plane")
+def("konopatsky.polar")
+def("konopatsky.rotate")
+def("konopatsky.moving_simplex")
 def("conic.ed_scheme", "conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}",
   "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u.")
 def("conic.five_scheme", "conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}",

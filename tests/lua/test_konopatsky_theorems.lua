@@ -94,7 +94,7 @@ err(function() konopatsky.area_k(-1, 1, 1) end, "konopatsky.area_k: a lambda is 
 err(function() konopatsky.o_theorem({P(0, 0), P(2, 0), P(2, 2), P(0, 2)}, P(0, 0), P(3, 1)) end,
     "konopatsky.o_theorem: the line D1D2 passes through a vertex", "vertex")
 err(function() konopatsky.o_theorem({P(0, 0), P(2, 0)}, P(0, 0), P(3, 1)) end,
-    "konopatsky.o_theorem: argument #1 (polygon) must be a list of 3 to 64 points", "two points")
+    "konopatsky.o_theorem: argument #1 (polygon) must hold 3 to 64 points, got 2", "two points")
 err(function() konopatsky.simplex_ratio{{0.2, 0.3, 0.4}, {0.6, 0.1, 0.3}, {0.1, 0.7, 0.2}} end,
     "must sum to 1", "membership")
 err(function() konopatsky.meet_line_plane(P(0, 0), P(1, 1), P(1, 0), P(0, 1), P(0, 0)) end,
@@ -109,5 +109,5 @@ err(function() konopatsky.rotate(P(0, 0), P(1, 0), P(2, 0), 1) end, "C, A, B are
 err(function() konopatsky.moving_simplex(NA, NB, NC, NA) end, "the generator gen must be 2-D", "3-D generator")
 err(function() konopatsky.moving_simplex(NA, NB, NC:sub(0, 0.5), gen) end, "the guides must run over one domain", "domains")
 err(function() konopatsky.moving_simplex(NA, NB, P(0, 0, 0), gen) end,
-    "konopatsky.moving_simplex: argument #3 (NC) must be a curve (a guide)", "point guide")
+    "konopatsky.moving_simplex: argument #3 (NC) must be a curve, got P(0, 0, 0)", "point guide")
 check.done()
