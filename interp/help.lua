@@ -553,22 +553,14 @@ def("konopatsky.meet_line_plane")
 def("konopatsky.polar")
 def("konopatsky.rotate")
 def("konopatsky.moving_simplex")
-def("conic.ed_scheme", "conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}",
-  "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u.")
-def("conic.five_scheme", "conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}",
-  "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E.")
-def("conic.ceva_to_ed", "conic.ceva_to_ed(k) -> k_ed | conic.ed_to_ceva(k_ed) -> k",
-  "§2.1.7 <-> §2.1.6: the two readings of one arc, k_ED = 2 sqrt k/(1 + 2 sqrt k), k = (k_ED/(2(1 - k_ED)))^2 (Ceva's 1/4 is ED's 1/2).")
-def("conic.ed_to_ceva", "conic.ed_to_ceva(k_ed) -> k",
-  "The Ceva k of the engineering discriminant k_ED in (0, 1): (k_ED/(2(1 - k_ED)))^2.")
-def("conic.cones_excluded", "conic.cones_excluded(fP, fQ) -> {u, ...}",
-  "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator.")
-def("conic.foci", "conic.foci(C, A, B [, \"ellipse\"|\"hyperbola\"]) -> F1, F2, e, p",
-  "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular.")
-def("conic.ceva_scheme", "conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}",
-  "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t.")
-def("conic.focal_point", "conic.focal_point(C, A, B, phi [, \"ellipse\"|\"hyperbola\"]) -> M, F, pa, pb",
-  "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56).")
+def("conic.ed_scheme")
+def("conic.five_scheme")
+def("conic.ceva_to_ed")
+def("conic.ed_to_ceva")
+def("conic.cones_excluded")
+def("conic.foci")
+def("conic.ceva_scheme")
+def("conic.focal_point")
 def("conic.scheme", "conic.scheme{triples = {{\"A1\", \"A\", \"B\"}, ...}, points = {A1 = P(...), ...}, current = {\"C\", \"P\", \"Q\"}, result = \"M\" [, range = {t0, t1}]} -> curve, steps",
   "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction. The given points, the current point C = P t' + Q t, and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result. Baluba's systems (a) and (b) of Fig. 2.28 are two such tables.")
 def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements", "conic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements"},
@@ -612,8 +604,7 @@ def("oneratio.bezier3", "oneratio.bezier3(A, C1, C2, B) -> curve",
   "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers).")
 def("oneratio.smooth", "oneratio.smooth(A, B, C [, n]) -> curve",
   "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2.")
-def("oneratio.smooth_scheme", "oneratio.smooth_scheme(A, B, C, n, t) -> {P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}",
-  "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t).")
+def("oneratio.smooth_scheme")
 def("oneratio.desargues", "oneratio.desargues(A, B, C, D) -> curve",
   "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid.")
 def("oneratio.double_contact", "oneratio.double_contact(A, B, C, kp, kq [, f]) -> curve",
