@@ -266,8 +266,7 @@ def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
 def("c:monomial", "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}",
   "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators).", "method")
-def("c:conic", "c:conic() -> {kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
-  "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic.", "method")
+def("c:conic", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("equations", "Point equations",
@@ -563,8 +562,7 @@ def("conic.ceva_scheme")
 def("conic.focal_point")
 def("conic.scheme", "conic.scheme{triples = {{\"A1\", \"A\", \"B\"}, ...}, points = {A1 = P(...), ...}, current = {\"C\", \"P\", \"Q\"}, result = \"M\" [, range = {t0, t1}]} -> curve, steps",
   "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction. The given points, the current point C = P t' + Q t, and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result. Baluba's systems (a) and (b) of Fig. 2.28 are two such tables.")
-def("conic.elements", {"conic.elements(c) -> elements", "conic.elements(A, B, C, D, E) -> elements", "conic.elements({a, b, c, d, e, f}) -> elements", "conic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements"},
-  "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation).")
+def("conic.elements")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},
   "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B.")
 def("conic.ellipse", "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant =, range = {t0, t1}]} -> curve",

@@ -10,8 +10,8 @@
 #include "pcl.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
-#include "pcl_books.h"
 #include "pcl_args.h"
+#include "pcl_books.h"
 #include "quadratic.h"
 
 static void setnum(lua_State *L, const char *k, double v) {
@@ -71,63 +71,61 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
 }
 
 /* The message for a status of pc_curve_conic / pc_conic_info_*. */
-static int conic_error(lua_State *L, const char *fn, int st, int dim) {
+static int conic_error(lua_State *L, int st, int dim) {
     switch (st) {
     case PC_EDIM:
-        return pcl_error(L, "%s: the curve is %d-D; a conic's elements are those of a plane (2-D) curve", fn, dim);
+        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
     case PC_ENOTCOLLINEAR:
-        return pcl_error(L, "%s: the curve does not lie on one conic", fn);
+        return pcl_fail(L, "the curve does not lie on one conic");
     case PC_ECOLLINEAR:
-        return pcl_error(L, "%s: the points are a straight line (a middle weight 0, or collinear points): no conic", fn);
+        return pcl_fail(L, "the points are a straight line (a middle weight 0, or collinear points): no conic");
     case PC_EDOMAIN:
-        return pcl_error(L, "%s: a degenerate conic (a line pair, parallel lines, or no real points)", fn);
+        return pcl_fail(L, "a degenerate conic (a line pair, parallel lines, or no real points)");
     default:
-        return pcl_raise_status(L, fn, st);
+        return pcl_raise_status(L, pcl_name(L), st);
     }
 }
 
-static int conic_of_curve(lua_State *L, const char *fn, pc_curve *c) {
+static int conic_of_curve(lua_State *L, pc_curve *c) {
     pc_conic_info o;
     pcl_callback_state(L);
     int st = pc_curve_conic(c, &o);
-    if (st != PC_OK) return conic_error(L, fn, st, c->dim);
+    if (st != PC_OK) return conic_error(L, st, c->dim);
     pcl_push_conic_info(L, &o);
     return 1;
 }
 
 static int c_conic(lua_State *L) {
-    pc_curve *c = pcl_tocurve(L, 1);
-    if (!c) return pcl_argerror_full(L, "c:conic", 1, 0, "self", "a curve");
-    return conic_of_curve(L, "c:conic", c);
+    pc_curve *c = pcl_read(L, NULL, 0);
+    return conic_of_curve(L, c);
 }
 
 /* {points = {P, ...}, tangents = {{P, V}, ...}} at 1 (points on top of the stack): five
  * conditions, a tangent at a point given among the points or not */
-static int conditions(lua_State *L, const char *fn, double coef[6]) {
+static int conditions(lua_State *L, double coef[6]) {
     double rows[30];
     int nr = 0;
     int pts = lua_gettop(L);
-    if (!lua_istable(L, pts)) return pcl_error(L, "%s: field points must be a list of points", fn);
+    if (!lua_istable(L, pts)) return pcl_fail(L, "field points must be a list of points");
     lua_getfield(L, 1, "tangents");
     int tg = lua_gettop(L);
     if (!lua_isnil(L, tg) && !lua_istable(L, tg))
-        return pcl_error(L, "%s: field tangents must be a list of {point, direction} pairs", fn);
+        return pcl_fail(L, "field tangents must be a list of {point, direction} pairs");
     lua_pushnil(L);
     while (lua_next(L, 1)) {
         const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
         if (!k || (strcmp(k, "points") && strcmp(k, "tangents")))
-            return pcl_error(L, "%s: unknown field %s (the fields are points and tangents)", fn,
-                             k ? k : "of a number index");
+            return pcl_fail(L, "unknown field %s (the fields are points and tangents)", k ? k : "of a number index");
         lua_pop(L, 1);
     }
     int np = (int)luaL_len(L, pts), nt = lua_isnil(L, tg) ? 0 : (int)luaL_len(L, tg);
     if (np + nt != 5)
-        return pcl_error(L, "%s: five conditions fix a conic, got %d points and %d tangents", fn, np, nt);
+        return pcl_fail(L, "five conditions fix a conic, got %d points and %d tangents", np, nt);
     for (int i = 0; i < np; i++) {
         lua_geti(L, pts, i + 1);
         pcl_value *v = pcl_tovalue(L, -1);
         if (!v || v->n != 2 || fabs(v->h[2] - 1) > PC_WEIGHT_TOL)
-            return pcl_error(L, "%s: points[%d] must be a 2-D point, got %s", fn, i + 1, pcl_shown(L, lua_gettop(L)));
+            return pcl_fail(L, "points[%d] must be a 2-D point, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
         pc_conic_row_point(v->h[0], v->h[1], rows + 6 * nr++);
         lua_pop(L, 1);
     }
@@ -139,7 +137,7 @@ static int conditions(lua_State *L, const char *fn, double coef[6]) {
         pcl_value *p = pcl_tovalue(L, -2), *d = pcl_tovalue(L, -1);
         if (!lua_istable(L, pair) || !p || !d || p->n != 2 || d->n != 2 || fabs(p->h[2] - 1) > PC_WEIGHT_TOL ||
             fabs(d->h[2]) > PC_WEIGHT_TOL)
-            return pcl_error(L, "%s: tangents[%d] must be {a 2-D point, a 2-D vector}", fn, i + 1);
+            return pcl_fail(L, "tangents[%d] must be {a 2-D point, a 2-D vector}", i + 1);
         pc_conic_row_tangent(p->h[0], p->h[1], d->h[0], d->h[1], rows + 6 * nr++);
         lua_settop(L, pair - 1);
     }
@@ -174,62 +172,74 @@ static const pcl_fn plane_fns[] = {
     PCL_END};
 
 static int l_elements(lua_State *L) {
-    const char *fn = "conic.elements";
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
     pc_curve *c = pcl_tocurve(L, 1);
-    if (c) return conic_of_curve(L, fn, c);
+    if (c) return conic_of_curve(L, c);
     pc_conic_info o;
     int st;
     if (lua_istable(L, 1) && (lua_getfield(L, 1, "points"), !lua_isnil(L, -1))) {
-        st = conditions(L, fn, o.coef);
-        if (st == PC_ECOLLINEAR)
-            return pcl_error(L, "%s: the conditions do not fix one conic (they are dependent)", fn);
+        st = conditions(L, o.coef);
+        if (st == PC_ECOLLINEAR) return pcl_fail(L, "the conditions do not fix one conic (they are dependent)");
         if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
     } else if (lua_istable(L, 1)) {
         lua_pop(L, 1);
-        if (luaL_len(L, 1) != 6)
-            return pcl_argerror_full(L, fn, 1, 1, "coefficients", "a list of 6 numbers {a, b, c, d, e, f}");
+        if (luaL_len(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
         double q[6];
         for (int i = 0; i < 6; i++) {
             lua_geti(L, 1, i + 1);
             if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                return pcl_error(L, "%s: argument #1 (coefficients) [%d] must be a finite number, got %s", fn,
-                                 i + 1, pcl_shown(L, lua_gettop(L)));
+                return pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
             q[i] = lua_tonumber(L, -1);
             lua_pop(L, 1);
         }
         st = pc_conic_info_coef(q, &o);
     } else if (pcl_tovalue(L, 1)) {
-        static const char *names[5] = {"A", "B", "C", "D", "E"};
+        /* five points, each read by the one point rule */
+        static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};
         double pts[10], q[6];
         for (int i = 0; i < 5; i++) {
-            if (lua_isnoneornil(L, i + 1))
-                return pcl_argerror_full(L, fn, i + 1, i + 1, names[i], "a 2-D point (five points fix the conic)");
-            pclb_point(L, fn, i + 1, names[i], 2, 0, NULL, pts + 2 * i);
+            pcl_val v = {0};
+            pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v);
+            pts[2 * i] = v.v[0], pts[2 * i + 1] = v.v[1];
         }
         st = pc_conic_coef_five(pts, q);
         if (st == PC_ECOLLINEAR)
-            return pcl_error(L, "%s: the five points fix no single conic (four of them are collinear, or two coincide)", fn);
+            return pcl_fail(L, "the five points fix no single conic (four of them are collinear, or two coincide)");
         if (st == PC_OK) st = pc_conic_info_coef(q, &o);
     } else {
-        return pcl_argerror_full(L, fn, 1, 1, "conic",
-                                 "a 2-D curve, five points or the coefficients {a, b, c, d, e, f}");
+        return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
+                           pcl_shown(L, 1));
     }
-    if (st != PC_OK) return conic_error(L, fn, st, 2);
+    if (st != PC_OK) return conic_error(L, st, 2);
     pcl_push_conic_info(L, &o);
     return 1;
 }
+
+static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
+static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, {.name = "B", .kind = PCL_ANY, .flags = PCL_OPT},
+                                  {.name = "C", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "D", .kind = PCL_ANY, .flags = PCL_OPT},
+                                  {.name = "E", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
+static const pcl_fn conic_fns[] = {
+    {.name = "conic.elements", .fn = l_elements, .args = el_args,
+     .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements",
+     .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
+    PCL_END};
+static const pcl_fn method_fns[] = {
+    {.name = "c:conic", .fn = c_conic, .self = self_curve, .selftype = "curve",
+     .result = "{kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
+     .help = "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc with finite control points also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic."},
+    PCL_END};
 
 /* After pcl_open_curves and pcl_open_konopatsky, with the module table on top. */
 void pcl_open_conic_elements(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
     lua_getfield(L, -1, "curve_methods");
-    lua_pushcfunction(L, c_conic);
-    lua_setfield(L, -2, "conic");
+    pcl_register(L, lua_gettop(L), method_fns, 0);
     lua_settop(L, module);
     lua_getfield(L, module, "conic");
-    lua_pushcfunction(L, l_elements);
-    lua_setfield(L, -2, "elements");
+    pcl_register(L, lua_gettop(L), conic_fns, 0);
     lua_settop(L, module);
     lua_getfield(L, module, "plane");
     if (lua_istable(L, -1)) pcl_register(L, lua_gettop(L), plane_fns, 0);

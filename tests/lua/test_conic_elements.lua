@@ -118,9 +118,9 @@ err(function() bezier{P(0, 0), P(2, 3) * 0, P(4, 0)}:conic() end,
 err(function() conic.elements(P(0, 0), P(1, 1), P(2, 2), P(3, 3), P(0, 5)) end,
     "conic.elements: the five points fix no single conic", "four collinear")
 err(function() conic.elements{1, 0, -1, 0, 0, 0} end, "conic.elements: a degenerate conic", "line pair")
-err(function() conic.elements{1, 0, 1} end, "conic.elements: argument #1 (coefficients) must be a list of 6 numbers", "short list")
+err(function() conic.elements{1, 0, 1} end, "conic.elements: argument #1 (conic) must be a list of 6 numbers", "short list")
 err(function() conic.elements(P(0, 0), P(1, 1)) end, "conic.elements: argument #3 (C) must be a 2-D point", "two points")
 err(function() conic.elements(P(0, 0, 1), P(1, 1), P(2, 2), P(3, 3), P(0, 5)) end,
-    "conic.elements: argument #1 (A) must be 2-D, got 3-D", "3-D points")
+    "conic.elements: argument #1 (A) must be a 2-D point, got P(0, 0, 1)", "3-D points")
 err(function() conic.elements("x") end, "conic.elements: argument #1 (conic) must be", "a string")
 check.done()
