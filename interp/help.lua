@@ -560,8 +560,7 @@ def("conic.cones_excluded")
 def("conic.foci")
 def("conic.ceva_scheme")
 def("conic.focal_point")
-def("conic.scheme", "conic.scheme{triples = {{\"A1\", \"A\", \"B\"}, ...}, points = {A1 = P(...), ...}, current = {\"C\", \"P\", \"Q\"}, result = \"M\" [, range = {t0, t1}]} -> curve, steps",
-  "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction. The given points, the current point C = P t' + Q t, and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result. Baluba's systems (a) and (b) of Fig. 2.28 are two such tables.")
+def("conic.scheme")
 def("conic.elements")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},
   "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B.")

@@ -31,5 +31,5 @@ err(function() conic.scheme{triples = {{"A1", "A2", "A"}, {"M", "A1", "C"}}, poi
 err(function() conic.scheme{triples = {{"A1", "A2", "A"}}, points = pts, current = {"C", "A3", "X"}, result = "M"} end,
     "the current point's line current[2], current[3] must join two given points", "unknown line")
 err(function() conic.scheme{triples = {}, points = pts, current = {"C", "A3", "A4"}, result = "M", extra = 1} end,
-    "conic.scheme: unknown field extra", "unknown field")
+    "conic.scheme: unknown option 'extra'", "unknown field")
 check.done()
