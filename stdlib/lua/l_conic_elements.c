@@ -118,7 +118,7 @@ static int conditions(lua_State *L, double coef[6]) {
             return pcl_fail(L, "unknown field %s (the fields are points and tangents)", k ? k : "of a number index");
         lua_pop(L, 1);
     }
-    int np = (int)luaL_len(L, pts), nt = lua_isnil(L, tg) ? 0 : (int)luaL_len(L, tg);
+    int np = (int)lua_rawlen(L, pts), nt = lua_isnil(L, tg) ? 0 : (int)lua_rawlen(L, tg);
     if (np + nt != 5)
         return pcl_fail(L, "five conditions fix a conic, got %d points and %d tangents", np, nt);
     for (int i = 0; i < np; i++) {
@@ -184,7 +184,7 @@ static int l_elements(lua_State *L) {
         if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
     } else if (lua_istable(L, 1)) {
         lua_pop(L, 1);
-        if (luaL_len(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
+        if (lua_rawlen(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
         double q[6];
         for (int i = 0; i < 6; i++) {
             lua_geti(L, 1, i + 1);

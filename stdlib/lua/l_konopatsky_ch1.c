@@ -115,12 +115,13 @@ static int k_o_theorem(lua_State *L) {
 static int k_simplex_ratio(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    int d = (int)luaL_len(L, 1);
+    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of k + 1 rows of barycentric parameters, got %s", pcl_shown(L, 1));
+    int d = (int)lua_rawlen(L, 1);
     if (d < 2 || d > 9) return pcl_argfail(L, 1, "must hold 2 to 9 rows, got %d", d);
     double m[81];
     for (int i = 0; i < d; i++) {
         lua_geti(L, 1, i + 1);
-        if (!lua_istable(L, -1) || luaL_len(L, -1) != d)
+        if (!lua_istable(L, -1) || (int)lua_rawlen(L, -1) != d)
             return pcl_argfail(L, 1, "[%d] must be a list of %d numbers (a square matrix)", i + 1, d);
         for (int j = 0; j < d; j++) {
             lua_geti(L, -1, j + 1);

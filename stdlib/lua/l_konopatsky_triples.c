@@ -52,11 +52,11 @@ static int l_scheme(lua_State *L) {
     lua_getfield(L, 1, "triples");
     int it = lua_gettop(L);
     if (!lua_istable(L, it)) return pcl_fail(L, "field triples must be a list of {\"X\", \"Y\", \"Z\"}");
-    ntri = (int)luaL_len(L, it);
+    ntri = (int)lua_rawlen(L, it);
     if (ntri < 1 || ntri > PC_TRIPLES_MAXTRI) return pcl_fail(L, "1 to %d triples, got %d", PC_TRIPLES_MAXTRI, ntri);
     for (int j = 0; j < ntri; j++) {
         lua_geti(L, it, j + 1);
-        if (!lua_istable(L, -1) || luaL_len(L, -1) != 3)
+        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 3)
             return pcl_fail(L, "triples[%d] must be three point names", j + 1);
         for (int k = 0; k < 3; k++) {
             lua_geti(L, -1, k + 1);
@@ -69,7 +69,7 @@ static int l_scheme(lua_State *L) {
     }
     lua_getfield(L, 1, "current");
     int ic = lua_gettop(L), cur[3];
-    if (!lua_istable(L, ic) || luaL_len(L, ic) != 3)
+    if (!lua_istable(L, ic) || lua_rawlen(L, ic) != 3)
         return pcl_fail(L, "field current must be {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
     for (int k = 0; k < 3; k++) {
         lua_geti(L, ic, k + 1);
