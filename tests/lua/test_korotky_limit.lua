@@ -28,4 +28,14 @@ for k = 1, 4 do
   truthy(worst < prev and worst <= 2 * e, "within " .. 2 * e .. " of the line pair")
   prev = worst
 end
+-- dome_tri's parameters (issue 24: undocumented): the plan point is A + (B - A) u(1 - v) + (C - A) uv
+local TA, TB, TC = P(0, 0), P(4, 0), P(1, 3)
+local dome = korotky.dome_tri(TA, TB, TC, 2)
+for _, uv in ipairs{{0.3, 0.2}, {0.7, 0.6}, {1, 0.5}, {0.5, 1}} do
+  local m = dome(uv[1], uv[2])
+  local g = TA + (TB - TA) * (uv[1] * (1 - uv[2])) + (TC - TA) * (uv[1] * uv[2])
+  near(m.x, g.x, 1e-12, "dome_tri x at " .. uv[1] .. ", " .. uv[2])
+  near(m.y, g.y, 1e-12, "dome_tri y")
+end
+near(dome(1, 0.5).z, 0, 1e-12, "u = 1 is the side BC, on the ground")
 check.done()
