@@ -8,42 +8,12 @@
  *   polar(C, A, B, rho, phi) -> M                     (2.117)/(2.118)
  *   rotate(C, A, B, phi) -> Q                         (2.138)
  *   moving_simplex(NA, NB, NC, gen) -> surface        Fig. 1.2
- * pclb_point / pclb_points (pcl_books.h) are the full-name point checks of the book bindings
- * not yet on the layer. */
+ */
 #include <math.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
-#include "pcl_books.h"
 #include "konop_ch1.h"
-
-int pclb_point(lua_State *L, const char *fn, int arg, const char *what, int dim, int dim_arg,
-               const char *dim_name, double *out) {
-    pcl_value *v = pcl_tovalue(L, arg);
-    if (!v) return pcl_argerror_full(L, fn, arg, arg, what, "a point");
-    if (dim > 0 && v->n != dim && (dim_arg <= 0 || dim_arg == arg))
-        return pcl_error(L, "%s: argument #%d (%s) must be %d-D, got %d-D", fn, arg, what, dim, v->n);
-    if (dim > 0 && v->n != dim)
-        return pcl_error(L, "%s: argument #%d (%s) is %d-D, but argument #%d (%s) is %d-D: dimensions cannot be mixed",
-                         fn, arg, what, v->n, dim_arg, dim_name, dim);
-    if (fabs(v->h[v->n] - 1) > PC_WEIGHT_TOL)
-        return pcl_error(L, "%s: argument #%d (%s) must be a point (weight 1), got %s: the coefficients "
-                         "of a point equation sum to 1 (membership condition); V() makes a vector", fn, arg, what,
-                         pcl_shown(L, arg));
-    for (int k = 0; k < v->n; k++) {
-        out[k] = v->h[k];
-        if (!isfinite(out[k]))
-            return pcl_error(L, "%s: argument #%d (%s) has NaN or infinite coordinates", fn, arg, what);
-    }
-    return v->n;
-}
-
-int pclb_points(lua_State *L, const char *fn, int first, int count, const char *const *names,
-                double *out) {
-    int n = pclb_point(L, fn, first, names[0], 0, 0, NULL, out);
-    for (int i = 1; i < count; i++) pclb_point(L, fn, first + i, names[i], n, first, names[0], out + n * i);
-    return n;
-}
 
 /* the Cartesian coordinates of k declared points into out (rows of n) */
 static void rows(const pcl_val *a, int k, int n, double *out) {
