@@ -14,9 +14,11 @@
 #   ./build.sh uninstall [PREFIX] remove exactly what install put into PREFIX (from the manifest
 #                         it left in PREFIX/share/pointcalc/install_manifest.txt)
 #   ./build.sh dist       the source tarball build/pointcalc-VERSION.tar.gz (what the rockspec builds)
+#                         and build/pointcalc-VERSION-1.rockspec that fetches it (for luarocks pack)
 #   ./build.sh deb        build, then make the Debian package build/pointcalc_VERSION_ARCH.deb
 set -e
 case "${2:-/usr/local}" in /*) prefix=${2:-/usr/local} ;; *) prefix="$(pwd)/$2" ;; esac   # for install
+[ "$prefix" = / ] || prefix=${prefix%/}
 cd "$(dirname "$0")"
 jobs=$(nproc 2>/dev/null || echo 2)
 manifest_rel=share/pointcalc/install_manifest.txt
@@ -54,10 +56,13 @@ install_tree() {
     cmake --install build --prefix "$prefix"
     chown --reference=build build/install_manifest.txt 2>/dev/null || true
     mkdir -p "$prefix/share/pointcalc"
+    files=$(mktemp)
+    trap 'rm -f "$before" "$files"' EXIT
+    { cat build/install_manifest.txt; echo; } | grep . > "$files"   # cmake ends it without a newline
     {
-        sed 's/^/f /' build/install_manifest.txt
+        sed 's/^/f /' "$files"
         echo "f $prefix/$manifest_rel"
-        sed 's|/[^/]*$||' build/install_manifest.txt | sort -u | while read -r d; do
+        sed 's|/[^/]*$||' "$files" | sort -u | while read -r d; do
             while [ "${#d}" -gt "${#prefix}" ]; do echo "$d"; d=${d%/*}; done
         done | sort -u | comm -23 - "$before" | sed 's/^/d /'
     } > "$prefix/$manifest_rel"
@@ -91,6 +96,10 @@ dist() {
         tar --exclude='./build*' --exclude=./gallery -czf "$out" \
             --transform "s|^\.|pointcalc-$version|" .
     fi
+    # the rockspec beside it, its source the tarball by absolute file:// address, so that
+    # `luarocks pack build/pointcalc-VERSION-1.rockspec` makes the source rock from it
+    sed "s|^   url = \"pointcalc-$version.tar.gz\"|   url = \"file://$(pwd)/$out\"|" \
+        "pointcalc-$version-1.rockspec" > "build/pointcalc-$version-1.rockspec"
     echo "$out"
 }
 

@@ -3,9 +3,10 @@
 # As root the missing ones are installed with apt-get; otherwise the exact command is printed.
 set -e
 PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux libmicrohttpd-dev"
-# what the install and gallery-page tests use (man -l, luarocks make, cpack's dpkg-shlibdeps, a
+# what the install, notebook and gallery-page tests use (man -l, luarocks make, cpack's
+# dpkg-shlibdeps, completion in bash and zsh, Jupyter's client and kernel libraries, a
 # headless browser): installed as root like the rest; without root a missing one is only noted
-TEST_PKGS="man-db luarocks dpkg-dev chromium"
+TEST_PKGS="man-db luarocks dpkg-dev chromium bash-completion zsh groff-base python3-ipykernel python3-jupyter-client"
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "ok installed"; }
 missing=""
 for p in $PKGS; do
