@@ -93,7 +93,7 @@ dist() {
         stash=$(git stash create)
         git archive --format=tar.gz --prefix="pointcalc-$version/" -o "$out" "${stash:-HEAD}"
     else
-        tar --exclude='./build*' --exclude=./gallery -czf "$out" \
+        tar --exclude=./build --exclude='./build-*' --exclude=./.git --exclude=./gallery -czf "$out" \
             --transform "s|^\.|pointcalc-$version|" .
     fi
     # the rockspec beside it, its source the tarball by absolute file:// address, so that
