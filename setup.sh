@@ -6,7 +6,7 @@ PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng
 # what the install, notebook and gallery-page tests use (man -l, luarocks make, cpack's
 # dpkg-shlibdeps, completion in bash and zsh, Jupyter's client and kernel libraries, a
 # headless browser): installed as root like the rest; without root a missing one is only noted
-TEST_PKGS="man-db luarocks dpkg-dev chromium bash-completion zsh groff-base python3-ipykernel python3-jupyter-client"
+TEST_PKGS="man-db luarocks dpkg-dev chromium bash-completion zsh groff-base python3-ipykernel python3-jupyter-client jupyter-client"
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "ok installed"; }
 missing=""
 for p in $PKGS; do
