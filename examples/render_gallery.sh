@@ -149,7 +149,7 @@ li:target, dt:target, figure:target { background: #445; }
 #viewer p { position: absolute; bottom: .5em; left: 0; right: 0; text-align: center; }
 </style></head><body>
 <div id="bar"><h1>pointcalc gallery</h1>
-<input id="filter" type="search" placeholder="filter: figure number, title or function (e.g. 2.12, oval, lerp)"
+<input id="filter" type="search" placeholder="filter: fig. 2.12, example 27, oval, lerp"
        aria-label="filter the figures">
 <span id="shown"></span></div>
 HTML

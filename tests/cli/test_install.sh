@@ -97,7 +97,8 @@ expect_eq "$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --modversion poi
     sh -c 'cc -Wall -Wextra -Werror figure.c $(pkg-config --cflags --libs pointcalc) -o figure' >cc.txt 2>&1)
 rc=$?
 expect_rc 0 "cc figure.c \$(pkg-config --cflags --libs pointcalc): $(head -5 cprog/cc.txt)"
-(cd cprog && LD_LIBRARY_PATH="$prefix/lib" ./figure fig.png >out.txt 2>err.txt)
+(cd cprog && LD_LIBRARY_PATH="$prefix/lib" LD_PRELOAD="$preload" ASAN_OPTIONS=detect_leaks=0 \
+    ./figure fig.png >out.txt 2>err.txt)
 rc=$?
 expect_rc 0 "the example C program runs against the installed library"
 expect_eq "$(cat cprog/out.txt)" "K = (260.7143, 189.2857), lambda = 0.8929
