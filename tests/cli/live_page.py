@@ -4,7 +4,7 @@ moving a slider (mouse or keyboard) changes the figure; sliders show their step'
 the figure downloads as SVG and PNG; an error in the edited script shows its line on the page,
 marked in the script, while the last figure stays.
     python3 live_page.py CHROMIUM PROFILE_DIR URL SCRIPT [SCREENSHOT]"""
-import base64, json, os, struct, sys, time, urllib.request
+import base64, json, os, struct, sys, time, urllib.error, urllib.request
 from cdp import Browser
 
 chromium, profile, url, script = sys.argv[1:5]
@@ -90,8 +90,22 @@ with Browser(chromium, profile) as b:
         else:
             ok = data[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", data[16:24]) == (640, 480)
             check(ok, "the PNG download is a 640x480 PNG")
-    check(page.eval("document.getElementById('download-pdf').hidden") ==
-          (os.environ.get("PC_HAS_PDF") != "1"), "the PDF button shows only where the server writes PDF")
+    # PDF: offered exactly when the server renders it (the print renderer); then it downloads
+    try:
+        r = urllib.request.urlopen(url + "render?format=pdf")
+        has_pdf = "pdf" in r.headers.get("Content-Type", "")
+    except urllib.error.HTTPError:
+        has_pdf = False
+    check(page.eval("document.getElementById('download-pdf').hidden") == (not has_pdf),
+          f"the PDF button shows only where the server writes PDF (here: {has_pdf})")
+    if has_pdf:
+        page.eval("document.getElementById('download-pdf').click()")
+        path = os.path.join(folder, "live.pdf")
+        for _ in range(100):
+            if os.path.exists(path) and os.path.getsize(path) > 0:
+                break
+            time.sleep(0.1)
+        check(open(path, "rb").read(5) == b"%PDF-", "the PDF download is a PDF")
     if shot:
         data = page.call("Page.captureScreenshot", format="png")["data"]
         open(shot, "wb").write(base64.b64decode(data))
