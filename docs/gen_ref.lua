@@ -27,11 +27,13 @@ local NUMBER = {t = 1, k = 1, x = 1, y = 1, z = 1, r = 1, n = 1, m = 1, i = 1, j
                 max = 1, default = 1, c = 1, e = 1, h = 1, d = 1, p = 1, q = 1, fz = 1}
 
 local VECTOR_AREA = {points = true, values = true}   -- u, v, w are vectors: dot(u, v), p:cross(v)
+local DRAW_AREA = {draw = true, qbscreen = true}   -- there c is a colour: pset(x, y [, c])
 local area_id
 
 local function ptype(name)
   if name == "..." then return "any" end
   if VECTOR_AREA[area_id] and (name == "u" or name == "v" or name == "w") then return "pc.vector" end
+  if DRAW_AREA[area_id] and (name == "c" or name == "fg") then return "integer|string" end   -- a colour
   if NUMBER[name] or name:match("^[a-z]%d$") or name:match("^t%d") or name:match("^th%d")
      or name:match("^ph%d") or name:match("^[uv]%d") or name:match("^[xy]%d") then
     return "number"
@@ -42,7 +44,11 @@ local function ptype(name)
   if name == "text" or name == "path" or name == "name" or name == "mode" or name == "code" then
     return "string"
   end
-  if name == "fn" or name == "g" or name == "h" then return "function" end
+  if name == "fn" or name == "g" then return "function" end
+  if name == "colour" or name == "color" or name == "border" or name == "bg" then return "integer|string" end
+  if name == "direction" or name == "style" or name == "kind" or name == "family" then return "string" end
+  if name == "scale" or name == "aspect" or name == "start" or name == "end_" or name == "re"
+     or name == "im" or name == "degree" or name == "order" then return "number" end
   if name == "map" or name == "f" then return "pc.map" end
   if name == "opts" or name == "options" then return "table" end
   return "any"
@@ -168,6 +174,27 @@ local function parse_form(f)
   return form
 end
 
+-- A form whose arguments hold alternatives outside brackets, "label(text, P | x, y [, dir])",
+-- as the forms it stands for: "label(text, P [, dir])" and "label(text, x, y [, dir])".
+local function expand(piece)
+  local head, inner, tail = piece:match("^([%a_][%w_.:]*%s*%()(.*)(%).-)$")
+  if not inner then return {piece} end
+  local depth, bar = 0, nil
+  for i = 1, #inner do
+    local ch = inner:sub(i, i)
+    if ch:match("[%(%[{]") then depth = depth + 1
+    elseif ch:match("[%)%]}]") then depth = depth - 1
+    elseif ch == "|" and depth == 0 then bar = i; break end
+  end
+  if not bar then return {piece} end
+  local left, right = trim(inner:sub(1, bar - 1)), trim(inner:sub(bar + 1))
+  local at = right:find("[", 1, true)
+  local opt = at and right:sub(at) or ""
+  local prefix = left:match("^(.*,)%s*[^,]*$") or ""
+  return {head .. left .. (opt ~= "" and " " .. opt or "") .. tail,
+          head .. (prefix ~= "" and prefix .. " " or "") .. right .. tail}
+end
+
 -- Every entry with its forms parsed; sub-forms joined by " | " or by two spaces are separate.
 local function model()
   local m = {areas = {}, entries = {}}
@@ -180,11 +207,17 @@ local function model()
       for _, sig in ipairs(entry.sigs) do
         for _, alt in ipairs(split_top(sig, "|")) do
           for piece in (alt .. "  "):gmatch("(.-)%s%s+") do
-            local f = parse_form(trim(piece))
-            if f then entry.forms[#entry.forms + 1] = f end
+            for _, one in ipairs(expand(trim(piece))) do
+              local f = parse_form(one)
+              if f then entry.forms[#entry.forms + 1] = f end
+            end
           end
         end
       end
+      -- "f(a) | f(b) -> r": the results written once belong to every form
+      local shared
+      for _, f in ipairs(entry.forms) do if #f.results > 0 then shared = f.results end end
+      for _, f in ipairs(entry.forms) do if #f.results == 0 and shared then f.results = shared end end
       area.entries[#area.entries + 1] = entry
       m.entries[#m.entries + 1] = entry
     end
