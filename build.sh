@@ -66,6 +66,8 @@ install_tree() {
             while [ "${#d}" -gt "${#prefix}" ]; do echo "$d"; d=${d%/*}; done
         done | sort -u | comm -23 - "$before" | sed 's/^/d /'
     } > "$prefix/$manifest_rel"
+    # the dynamic linker's cache, so that programs linked with -lpointcalc find the new library
+    if [ "$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then ldconfig || true; fi
     echo "installed into $prefix; './build.sh uninstall $prefix' removes it"
 }
 
@@ -81,6 +83,7 @@ uninstall_tree() {
     # the directories it made, deepest first, when nothing else has been put into them
     sed -n 's/^d //p' "$list" | sort -r | while read -r d; do rmdir "$d" 2>/dev/null || true; done
     rm -f "$list"
+    if [ "$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then ldconfig || true; fi
     echo "removed pointcalc from $prefix"
 }
 

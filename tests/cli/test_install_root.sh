@@ -48,6 +48,12 @@ expect_eq "$(cat out.txt)" "5.0" "the installed program runs (libpointcalc throu
 (cd src && as_user cmake --build build -j2 --target install_deps) >build2.log 2>&1
 rc=$?
 expect_rc 0 "the user's rebuild after the root install: $(tail -3 build2.log)"
+# the user's tests of the program (those the partial build has: the Lua-level ones) write into
+# build/ and pass
+(cd src && as_user ctest --test-dir build -R '^lua/' -j2) >ctest.log 2>&1
+rc=$?
+expect_rc 0 "the user's ctest after the root install: $(grep -E 'tests passed|Failed' ctest.log | head -3)"
+expect_in ctest.log "100% tests passed" "every Lua-level test passes for the user"
 (cd src && as_user cpack -G DEB --config build/CPackConfig.cmake -B "$WORK/src/build/deb") >cpack.log 2>&1
 rc=$?
 expect_rc 0 "the user's cpack after the root install: $(grep -i error cpack.log | head -3)"
