@@ -255,10 +255,23 @@ complete" "bash -i loads the completion from PREFIX/share/bash-completion"
 else
     fail "bash-completion is not installed (setup.sh installs it)"
 fi
-# zsh's definition parses
+# zsh's definition parses, and an interactive zsh completes with it (driven through zpty)
 if command -v zsh >/dev/null; then
     run zsh -n "$prefix/share/zsh/site-functions/_pointcalc"
     expect_rc 0 "zsh -n _pointcalc: $(cat err.txt)"
+    zsh_words() {  # the last line zsh shows after WORDS<Tab>
+        env -i HOME="$WORK" TERM=dumb zsh -f "$PC_SOURCE_DIR/tests/cli/zsh_complete.zsh" \
+            "$prefix/share/zsh/site-functions" "$prefix/bin" "$WORK/comp" "$1" 2>&1 |
+            tr -d '\r' | sed 's/\x1b\[[0-9;?]*[a-zA-Z]//g' | tail -2 | tr '\n' ' '
+    }
+    out=$(zsh_words 'pointcalc --fr')
+    checks=$((checks + 1)); case $out in *"pointcalc --frames"*) ;; *) fail "zsh: --fr<Tab>: $out" ;; esac
+    out=$(zsh_words 'pointcalc -o ')
+    checks=$((checks + 1)); case $out in *"pointcalc -o c.png"*) ;; *) fail "zsh: -o <Tab> offers pictures: $out" ;; esac
+    out=$(zsh_words 'pointcalc a.lua --set ')
+    checks=$((checks + 1)); case $out in *"k  n"*|*"k n"*) ;; *) fail "zsh: --set <Tab> offers the sliders: $out" ;; esac
+else
+    fail "zsh is not installed (setup.sh installs it)"
 fi
 
 # --- LuaRocks: the rockspec lints and `luarocks make` installs a working module ------------
