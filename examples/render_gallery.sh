@@ -3,7 +3,9 @@
 # grid of thumbnails. Each figure shows its number and title (the script's first comment line),
 # links its SVG, PNG and script, and where the script's opening comment cites a book section
 # (Stepanov's "Example N", "Buimov §2.8.4 (Fig. 2.12)", ...) links that section in the page's
-# list of sources. The scripts render in parallel, one per core (PC_JOBS overrides).
+# list of sources. The scripts render in parallel, one per core (PC_JOBS overrides). The page
+# has contents by book and chapter, a filter, a page per figure, and where the program writes
+# PDF a PDF atlas per book (gallery_atlas.sh).
 #   sh examples/render_gallery.sh POINTCALC OUTDIR
 set -e
 pc=$1
@@ -105,9 +107,10 @@ chapter() {  # chapter GROUP CITATION
 
 # The print look: where the program writes PDF (the print renderer), each figure also goes to
 # PDF and each book gets an atlas of its figures, captioned with their numbers and titles
+# (PC_GALLERY_PDF=0 leaves them out)
 pdf=
-if "$pc" -e 'pset(0, 0)' -o "$out/.probe.pdf" >/dev/null 2>&1 && [ -s "$out/.probe.pdf" ] &&
-   command -v gs >/dev/null; then
+if [ "${PC_GALLERY_PDF:-1}" != 0 ] && "$pc" -e 'pset(0, 0)' -o "$out/.probe.pdf" >/dev/null 2>&1 &&
+   [ -s "$out/.probe.pdf" ] && command -v gs >/dev/null; then
     pdf=1
 fi
 rm -f "$out/.probe.pdf"

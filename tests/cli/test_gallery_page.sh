@@ -32,7 +32,7 @@ check() {
 }
 
 mkdir site
-run sh "$PC_SOURCE_DIR/examples/render_gallery.sh" "$POINTCALC" site/gallery
+run env PC_GALLERY_PDF=0 sh "$PC_SOURCE_DIR/examples/render_gallery.sh" "$POINTCALC" site/gallery   # the atlas: test_gallery_atlas.sh
 expect_rc 0 "render_gallery.sh renders every example"
 nscripts=$(ls "$PC_SOURCE_DIR"/examples/*/*.lua | wc -l)
 nfigures=$(ls site/gallery/*/*.png | wc -l)
