@@ -15,7 +15,8 @@
 #                         it left in PREFIX/share/pointcalc/install_manifest.txt)
 #   ./build.sh dist       the source tarball build/pointcalc-VERSION.tar.gz (what the rockspec builds)
 #                         and build/pointcalc-VERSION-1.rockspec that fetches it (for luarocks pack)
-#   ./build.sh deb        build, then make the Debian package build/pointcalc_VERSION_ARCH.deb
+#   ./build.sh deb        build, then make the Debian packages build/pointcalc_VERSION_ARCH.deb and
+#                         build/pointcalc-dev_VERSION_ARCH.deb (the C library's headers)
 set -e
 case "${2:-/usr/local}" in /*) prefix=${2:-/usr/local} ;; *) prefix="$(pwd)/$2" ;; esac   # for install
 [ "$prefix" = / ] || prefix=${prefix%/}

@@ -349,13 +349,33 @@ else
     dpkg-deb -c "$deb" | awk '{ if ($(NF - 1) == "->") print $(NF - 2); else print $NF }' > contents.txt
     for f in usr/bin/pointcalc usr/lib/lua/5.4/pointcalc.so usr/share/man/man1/pointcalc.1.gz \
              usr/share/bash-completion/completions/pointcalc usr/share/doc/pointcalc/README.md \
-             usr/share/doc/pointcalc/copyright usr/lib/libpointcalc.so.0 usr/lib/pkgconfig/pointcalc.pc \
-             usr/share/man/man7/pointcalc-api.7.gz usr/include/pointcalc/pointcalc.h \
+             usr/share/doc/pointcalc/copyright usr/lib/libpointcalc.so.0 \
+             usr/share/man/man7/pointcalc-api.7.gz usr/share/jupyter/kernels/pointcalc/kernel.json \
+             usr/share/pointcalc/lua-language-server/library/globals.lua \
              "usr/$oval"; do
         expect_in contents.txt "./$f" "the package holds /$f"
     done
     expect_eq "$(grep -v '^\./usr/' contents.txt | grep -v '^\./$')" "" "nothing outside /usr"
+    expect_eq "$(grep -c 'usr/include\|pkgconfig\|libpointcalc.so$' contents.txt)" "0" \
+        "the development files are not in pointcalc but in pointcalc-dev"
+    # pointcalc-dev: the headers, the pkg-config file, the link-time name; it needs pointcalc
+    dev=$WORK/deb/pointcalc-dev_${version}_$arch.deb
+    expect_file "$dev" "the -dev package"
+    expect_eq "$(dpkg-deb -f "$dev" Depends)" "pointcalc (= $version), libpng-dev" "pointcalc-dev's Depends"
+    expect_eq "$(dpkg-deb -f "$dev" Section)" "libdevel" "pointcalc-dev's Section"
+    dpkg-deb -c "$dev" | awk '{ if ($(NF - 1) == "->") print $(NF - 2); else print $NF }' > dev.txt
+    for f in usr/include/pointcalc/pointcalc.h usr/include/pointcalc/canvas.h usr/lib/pkgconfig/pointcalc.pc \
+             usr/lib/libpointcalc.so usr/share/doc/pointcalc-dev/copyright \
+             usr/share/doc/pointcalc-dev/examples/c/figure.c; do
+        expect_in dev.txt "./$f" "pointcalc-dev holds /$f"
+    done
     dpkg-deb -x "$deb" root
     use_tree "$WORK/root/usr" lib/lua/5.4 "unpacked .deb"
+    # both packages unpacked: the example builds against them with pkg-config
+    dpkg-deb -x "$dev" root
+    (cd cprog && PKG_CONFIG_PATH="$WORK/root/usr/lib/pkgconfig" \
+        sh -c 'cc figure.c $(pkg-config --cflags --libs pointcalc) -o figure2' >cc2.txt 2>&1)
+    rc=$?
+    expect_rc 0 "the example builds against the unpacked packages: $(head -3 cprog/cc2.txt)"
 fi
 finish
