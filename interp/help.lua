@@ -5,8 +5,15 @@
 --
 -- Entries: name (as written in a script: "lerp", "qb.rnd", "A.x", ":show"), area, sig (one
 -- form, or a list of forms), desc (one line).
+--
+-- A function declared in C on the argument layer (stdlib/lua/pcl_args.h, docs/bindings.md)
+-- carries its own signature and description: its entry here is def(NAME) alone, placing it in
+-- its area, and both texts come from the declaration (pointcalc._decl).  An entry that repeats
+-- a declared signature is listed in H.conflicts (tests/lua/test_help.lua fails on it).
 
-local H = {areas = {}, entries = {}, by_name = {}}
+local H = {areas = {}, entries = {}, by_name = {}, conflicts = {}}
+local pc = package.loaded.pointcalc or rawget(_G, "pointcalc")
+H.decls = pc and rawget(pc, "_decl") or {}
 
 local current
 local function area(id, title, intro, guide)
@@ -17,7 +24,15 @@ end
 
 local function def(name, sig, desc, kind)
   assert(not H.by_name[name], "duplicate help entry " .. name)
-  local e = {name = name, area = current.id, sig = sig, desc = desc, kind = kind or "function"}
+  local d = H.decls[name]
+  if d and (sig or desc) then
+    H.conflicts[#H.conflicts + 1] = name .. ": declared in C, so help.lua must not repeat its signature or description"
+  elseif not d and not sig then
+    H.conflicts[#H.conflicts + 1] = name .. ": def(NAME) alone, but there is no declaration of it"
+  end
+  if d then sig, desc = d.sig, d.desc end
+  local e = {name = name, area = current.id, sig = sig, desc = desc, kind = kind or "function",
+             declared = d ~= nil}
   H.entries[#H.entries + 1] = e
   current.entries[#current.entries + 1] = e
   H.by_name[name] = e
@@ -118,24 +133,15 @@ area("frames", "Simplices and affine maps",
   "Frames of reference: a simplex gives natural parameters, an affine map changes the frame.",
   "points.md")
 
-def("simplex", "simplex(C, A, B, ...) -> S",
-  "A simplex with initial point C (the book's simplex CAB): S(p, q) = (A - C)p + (B - C)q + C.")
-def("S(p, q)", "S(p, q, ...) -> point",
-  "The point of simplex S with natural parameters p, q, ...", "method")
-def("S:bary", "S:bary(p, q, ..., r) -> value",
-  "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1).", "method")
-def("S:params", "S:params(M) -> p, q, ..., residual",
-  "The natural parameters of M (least squares off the simplex's flat) and M's distance from that flat.", "method")
-def("S:measure", "S:measure() -> number",
-  "Length, area, volume...: signed when the simplex is full-dimensional.", "method")
-def("S:ratio", "S:ratio(P1, P2, ...) -> ratio, residual",
-  "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own.", "method")
-def("affine", "affine({A, B, C}, {A2, B2, C2}) -> f",
-  "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension).")
-def("affine.frame", "affine.frame(O, X, Y [, Z]) -> f",
-  "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors.")
-def("affine.identity", "affine.identity(n) -> f",
-  "The identity map of n-space.")
+def("simplex")
+def("S(p, q)", nil, nil, "method")
+def("S:bary", nil, nil, "method")
+def("S:params", nil, nil, "method")
+def("S:measure", nil, nil, "method")
+def("S:ratio", nil, nil, "method")
+def("affine")
+def("affine.frame")
+def("affine.identity")
 
 -- ---------------------------------------------------------------------------------------
 area("transforms", "Maps: transformations and projections (map.*)",
@@ -144,50 +150,28 @@ area("transforms", "Maps: transformations and projections (map.*)",
   "all make it, and any two of fitting dimensions compose. Angles are in radians.",
   "maps.md")
 
-def("map.matrix", "map.matrix(rows [, \"row\"|\"column\"]) -> f",
-  "The map of a homogeneous matrix (a table of rows): by default (m+1) rows of n+1 acting on column vectors; \"row\": the textbook's p' = p T, n+1 rows of m+1.")
-def("map.translate", "map.translate(V) -> f",
-  "The translation x -> x + V, in the dimension of V.")
-def("map.scale", "map.scale(k, centre | n) | map.scale({kx, ky, ...} [, centre]) -> f",
-  "Scaling by k (or by kx, ky, ... per axis) about centre (default: the origin); a single k needs a centre or the dimension n.")
-def("map.rotate", {"map.rotate(angle [, centre]) -> f", "map.rotate(A, B | direction, angle) -> f"},
-  "The plane turned counter-clockwise about centre (default: the origin), or space turned about the axis through A and B (or through A along direction) by the right-hand rule.")
-def("map.reflect", "map.reflect(A, normal) -> f",
-  "The reflection in the line (plane, hyperplane) through A perpendicular to the vector normal.")
-def("map.shear", "map.shear(n, i, j, k) -> f",
-  "The shear of n-space adding k times coordinate j to coordinate i (axes 1..n or \"x\", \"y\", \"z\").")
-def("map.orthographic", "map.orthographic([\"z\"|\"y\"|\"x\"]) -> f",
-  "Space onto a coordinate plane, dropping that axis: \"z\" (the default) keeps (x, y), \"y\" keeps (x, z), \"x\" keeps (y, z).")
-def("map.axonometric", "map.axonometric(phi, theta) -> f",
-  "Space turned about y by phi, then about x by theta, then projected along z (the textbook's T = Ry Rx Pz).")
-def("map.isometric", "map.isometric() -> f",
-  "The isometric projection: phi = 45 degrees, theta = 35.26 degrees, all axes foreshortened by sqrt(2/3).")
-def("map.dimetric", "map.dimetric(fz) -> f",
-  "The dimetric projection with the z axis foreshortened by fz (0 < fz < 1) and x, y equally: sin^2 theta = fz^2/2.")
-def("map.oblique", "map.oblique(k, alpha) -> f",
-  "The oblique projection x' = x + k z cos(alpha), y' = y + k z sin(alpha).")
-def("map.cavalier", "map.cavalier([alpha]) -> f",
-  "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees.")
-def("map.cabinet", "map.cabinet([alpha]) -> f",
-  "The oblique projection with k = 1/2; alpha defaults to 45 degrees.")
-def("map.perspective", "map.perspective(eye, p0 [, up]) -> f",
-  "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point.")
-def("f(p)", "f(p) | f(x, y, ...) -> value",
-  "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector.", "method")
-def("f:xy", "f:xy(p) | f:xy(x, y, ...) -> x', y', ...",
-  "The coordinates of the image of a point as numbers (two for a map into the plane).", "method")
-def("f:compose", "f:compose(g) | f * g -> map",
-  "The map applying g first, then f.", "method")
-def("f:inverse", "f:inverse() -> map",
-  "The inverse map; a singular or non-square map is an error.", "method")
-def("f:matrix", "f:matrix([\"column\"|\"row\"]) -> rows",
-  "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T.", "method")
-def("f:is_affine", "f:is_affine() -> boolean",
-  "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors.", "method")
-def("f:vanishing_points", "f:vanishing_points() -> Vx, Vy, Vz",
-  "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity.", "method")
-def("f:show", "f:show([\"column\"|\"row\"])",
-  "Print the matrix with its convention named and the columns aligned.", "method")
+def("map.matrix")
+def("map.translate")
+def("map.scale")
+def("map.rotate")
+def("map.reflect")
+def("map.shear")
+def("map.orthographic")
+def("map.axonometric")
+def("map.isometric")
+def("map.dimetric")
+def("map.oblique")
+def("map.cavalier")
+def("map.cabinet")
+def("map.perspective")
+def("f(p)", nil, nil, "method")
+def("f:xy", nil, nil, "method")
+def("f:compose", nil, nil, "method")
+def("f:inverse", nil, nil, "method")
+def("f:matrix", nil, nil, "method")
+def("f:is_affine", nil, nil, "method")
+def("f:vanishing_points", nil, nil, "method")
+def("f:show", nil, nil, "method")
 def("f.nin", "f.nin, f.nout -> integer",
   "The dimensions of the points the map takes and gives.", "field")
 def("f.C0", "f.C0, f.C1, ... -> point",
@@ -505,59 +489,33 @@ area("buimov", "The textbook: plane curves (plane.*) and the book's construction
   "are corrected (docs/buimov.md lists them).",
   "buimov.md")
 
-def("plane.circle3", "plane.circle3(A, B, C) -> circle",
-  "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points.")
-def("plane.circle2r", "plane.circle2r(A, B, r) -> circle1, circle2",
-  "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left.")
-def("plane.circle_slopes", "plane.circle_slopes(A, m1, x_end, m2) -> circle [, circle2]",
-  "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it).")
-def("plane.arc3", "plane.arc3(A, B, C) -> curve",
-  "The arc of the circle through A, B, C that passes through B, counter-clockwise (a rational Bezier curve).")
-def("plane.classify", "plane.classify(a, b, c) -> \"ellipse\"|\"parabola\"|\"hyperbola\", discriminant",
-  "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1).")
-def("plane.rotate_conic", "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef",
-  "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin).")
-def("plane.conic_value", "plane.conic_value(coef, X) -> number",
-  "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X.")
-def("plane.conic_coef", "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef",
-  "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).")
-def("plane.ellipse", "plane.ellipse(centre, A, B [, th0, th1]) -> curve",
-  "The ellipse centre + (A cos th, B sin th) as rational quadratic pieces (exact), parameter th; A = B is a circle.")
-def("plane.parabola", "plane.parabola(p, th0, th1) -> curve",
-  "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly.")
-def("plane.hyperbola", "plane.hyperbola(A, B, t0, t1) -> curve",
-  "The hyperbola branch (A ch t, B sh t) (§3.5) as rational quadratic pieces (exact).")
-def("plane.points", "plane.points(kind, {A =, B =, step =, n =, method = \"param\"|\"recurrence\"|\"rational\"|\"explicit\"}) -> points",
-  "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected).")
+def("plane.circle3")
+def("plane.circle2r")
+def("plane.circle_slopes")
+def("plane.arc3")
+def("plane.classify")
+def("plane.rotate_conic")
+def("plane.conic_value")
+def("plane.conic_coef")
+def("plane.ellipse")
+def("plane.parabola")
+def("plane.hyperbola")
+def("plane.points")
 
-def("buimov.knots", "buimov.knots(points, k) -> knots",
-  "The book's integer knot vector of order k (§4.4): n + k + 1 knots, a repeated knot for each multiple vertex.")
-def("buimov.basis", "buimov.basis(i, k, t, knots) -> number",
-  "The B-spline basis N_i,k(t) by the Cox-de Boor recursion (0/0 = 0, closed at t_max; i from 0 as in the book).")
-def("buimov.bspline", "buimov.bspline(points, k) -> curve",
-  "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it.")
-def("buimov.bernstein", "buimov.bernstein(n, i, t) -> number",
-  "The Bernstein polynomial J_n,i(t) = C(n, i) t^i (1 - t)^(n - i) (§4.3).")
-def("buimov.blend", "buimov.blend(t) -> F1, F2, F3, F4",
-  "The Hermite blending functions of a normalised segment (§5.5).")
-def("buimov.hermite", "buimov.hermite(P1, P2, D1, D2 [, t]) -> curve",
-  "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default).")
-def("buimov.hermite_coeffs", "buimov.hermite_coeffs(P1, P2, D1, D2 [, t]) -> B1, B2, B3, B4",
-  "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected).")
-def("buimov.spline", "buimov.spline(points [, {ends = \"clamped\"|\"natural\"|\"cyclic\"|\"anticyclic\", d0 =, d1 =, param = \"uniform\"|\"chord\"}]) -> curve, tangents",
-  "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given.")
-def("buimov.helix", "buimov.helix(a, b, t0, t1) -> curve",
-  "The helix (a cos t, a sin t, b t) (§4.1).")
-def("buimov.sphere", "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s",
-  "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default.")
-def("buimov.sphere_frame", "buimov.sphere_frame(th, ph) -> S, S_th, S_ph, twist, N",
-  "The unit sphere's point, tangent, twist and normal vectors (§5.1, corrected; N = S_th x S_ph points inwards).")
-def("buimov.det", "buimov.det(rows) -> number",
-  "The determinant of a square matrix (§1.2): the area factor of a 2x2 map (§1.7.4).")
-def("buimov.reconstruct", "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual",
-  "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6).")
-def("buimov.calibrate", "buimov.calibrate(points, images) -> map, rms",
-  "The camera (a map from 3-D to 2-D) sending six or more points of space to their images, by least squares with T44 = 1 (§2.8.6).")
+def("buimov.knots")
+def("buimov.basis")
+def("buimov.bspline")
+def("buimov.bernstein")
+def("buimov.blend")
+def("buimov.hermite")
+def("buimov.hermite_coeffs")
+def("buimov.spline")
+def("buimov.helix")
+def("buimov.sphere")
+def("buimov.sphere_frame")
+def("buimov.det")
+def("buimov.reconstruct")
+def("buimov.calibrate")
 
 -- ---------------------------------------------------------------------------------------
 area("konopatsky", "The monograph's curves (conic.*, oneratio.*, interp.*, approx.*)",
@@ -696,42 +654,24 @@ area("korotky", "Nature-like curves and conic surfaces (korotky.*)",
   "tg(delta) or a 2-D vector.",
   "korotky.md")
 
-def("korotky.poly_spline", "korotky.poly_spline(points [, {ends = \"natural\"|\"clamped\", s0 =, s1 =}]) -> curve, coef",
-  "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x.")
-def("korotky.ferguson", "korotky.ferguson(points, tangents, moduli) -> curve",
-  "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment.")
-def("korotky.ferguson_lambda", "korotky.ferguson_lambda(points, {TA =, TE =, wA = 1, wE = 1, lambda = {...}}) -> curve",
-  "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints.")
-def("korotky.ferguson_tangents", "korotky.ferguson_tangents(points, tangents [, {wA = 1, wE = 1, start = {...}}]) -> curve, moduli",
-  "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28)).")
-def("korotky.ferguson_substitution", "korotky.ferguson_substitution(points, tangents, wA, z1 [, \"min\"|\"max\"]) -> curve, moduli, quadratics",
-  "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29)).")
-def("korotky.elastic", "korotky.elastic(points [, {ends = {tA, tE}, pieces = 4}]) -> curve, energy",
-  "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length, as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given.")
-def("korotky.graphical_slope", "korotky.graphical_slope(samples, x [, window]) -> slope, degrees",
-  "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees.")
-def("korotky.deviation", "korotky.deviation(model, reference [, samples]) -> number",
-  "The largest distance between two curves (two-sided Hausdorff distance).")
-def("korotky.joint_jumps", "korotky.joint_jumps(curve) -> dkappa, dangle, knot",
-  "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump.")
-def("korotky.energy", "korotky.energy(curve) -> number",
-  "The bending energy, the integral of kappa^2 ds over the curve.")
-def("korotky.conic_arc", "korotky.conic_arc(U, tU, V, tV, T) -> curve, w, kind",
-  "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\".")
-def("korotky.conic_sweep", "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s",
-  "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1]).")
-def("korotky.dome_rect", "korotky.dome_rect(a0, b0, c0 [, origin]) -> s",
-  "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses.")
-def("korotky.dome_tri", "korotky.dome_tri(A, B, C, h | D) -> s",
-  "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D); u-isolines are the ellipses parallel to BC.")
-def("korotky.conic_elements", "korotky.conic_elements(arc | {a, b, c, d, e, f}) -> {kind, coef, center, axes, semi, asymptotes}",
-  "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions.")
-def("korotky.two_pencils", "korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}} -> s",
-  "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5).")
-def("korotky.conic_revolve", "korotky.conic_revolve{A =, B =, nA =, nB =, ridge =} -> s",
-  "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B.")
-def("korotky.ridge_shell", "korotky.ridge_shell{U =, R =, V =, T1 =, T2 =, P =, H =, Q =} -> s",
-  "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2].")
+def("korotky.poly_spline")
+def("korotky.ferguson")
+def("korotky.ferguson_lambda")
+def("korotky.ferguson_tangents")
+def("korotky.ferguson_substitution")
+def("korotky.elastic")
+def("korotky.graphical_slope")
+def("korotky.deviation")
+def("korotky.joint_jumps")
+def("korotky.energy")
+def("korotky.conic_arc")
+def("korotky.conic_sweep")
+def("korotky.dome_rect")
+def("korotky.dome_tri")
+def("korotky.conic_elements")
+def("korotky.two_pencils")
+def("korotky.conic_revolve")
+def("korotky.ridge_shell")
 
 -- ---------------------------------------------------------------------------------------
 

@@ -8,6 +8,7 @@
 #include <lualib.h>
 #include "host.h"
 #include "pcl.h"
+#include "pcl_args.h"
 #include "pcl_embed.h"
 #include "sandbox.h"
 
@@ -96,6 +97,8 @@ static int traceback(lua_State *L) {
         if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
         msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
     }
+    const char *hint = pcl_global_hint(L, msg);   /* lable(...): (did you mean 'label'?) */
+    if (hint) msg = lua_pushfstring(L, "%s %s", msg, hint);
     luaL_traceback(L, L, msg, 1);
     return 1;
 }

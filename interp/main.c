@@ -35,6 +35,7 @@ static const char usage_text[] =
     "  --safe        safe mode: no processes, C modules, binary chunks or debug library;\n"
     "                files only under the folders given with --allow\n"
     "  --allow DIR   safe mode: the script may read and write files under DIR (repeatable)\n"
+    "  --allow-hardlinks  safe mode: also files with other hard links under those folders\n"
     "  --timeout S   stop the script after S seconds (each REPL statement: S seconds)\n"
     "  --max-memory MB  stop the script when it uses more than MB megabytes\n"
     "  -v            print the version and exit\n"
@@ -161,6 +162,7 @@ static int parse(int argc, char **argv, options *o) {
             o->input = argv[i];
         }
         else if (!strcmp(a, "--safe")) o->sandbox.safe = 1;
+        else if (!strcmp(a, "--allow-hardlinks")) o->sandbox.allow_hardlinks = 1;
         else if (live_option(o, argc, argv, &i, &rc)) {
             if (rc >= 0) return rc;
         }

@@ -166,38 +166,15 @@ function M.after_chunk(src, ...)
   return text
 end
 
--- Edit distance of two short names, a swap of neighbours counting as one edit (for "did you
--- mean": lrep -> lerp).
-local function distance(a, b)
-  local d = {}
-  for i = 0, #a do d[i] = {[0] = i} end
-  for j = 0, #b do d[0][j] = j end
-  for i = 1, #a do
-    for j = 1, #b do
-      local cost = a:sub(i, i) == b:sub(j, j) and 0 or 1
-      d[i][j] = math.min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost)
-      if i > 1 and j > 1 and a:sub(i, i) == b:sub(j - 1, j - 1) and a:sub(i - 1, i - 1) == b:sub(j, j) then
-        d[i][j] = math.min(d[i][j], d[i - 2][j - 2] + 1)
-      end
-    end
-  end
-  return d[#a][#b]
-end
-
--- A hint for a misspelt global ("attempt to call a nil value (global 'circel')").
+-- A hint for a misspelt global ("attempt to call a nil value (global 'circel')"): the one
+-- suggester of scripts, -e chunks and the REPL (pcl_global_hint in stdlib/lua/pcl_args.c).
 local function hint(msg)
   local name = msg:match("a nil value %(global '([%w_]+)'%)")
   if not name then return nil end
   if name == "help" then return "(hint: :help NAME, e.g. :help lerp)" end
-  local best, bestd = nil, 3
-  for k in pairs(_G) do
-    if type(k) == "string" and math.abs(#k - #name) < 3 then
-      local d = distance(k:lower(), name:lower())
-      if d < bestd or (d == bestd and best and k < best) then best, bestd = k, d end
-    end
-  end
-  if best and bestd <= (#name <= 3 and 1 or 2) then return "(did you mean " .. best .. "?)" end
-  return nil
+  local pc = package.loaded.pointcalc or rawget(_G, "pointcalc")
+  local tk = pc and rawget(pc, "_tk")
+  return tk and tk.global_hint and tk.global_hint(msg) or nil
 end
 
 -- The error handler of every statement: the message, plus the traceback when it says more

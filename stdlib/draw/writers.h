@@ -33,6 +33,11 @@ int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
  * files, signals) are in write_file.c and docs/safety.md. */
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen);
 
+/* The same rules for any content: emit(ud, f) writes the file's bytes to f and returns PC_OK
+ * or an error code (PC_ENOMEM, PC_EIO).  For writers of their own (animation frames). */
+typedef int (*pc_emit_fn)(void *ud, FILE *f);
+int pc_write_file_emit(const char *path, pc_emit_fn emit, void *ud, char *err, size_t errlen);
+
 /* Remove the temporary file of a write in progress, if any.  Async-signal-safe: for a
  * program's own fatal-signal or time-limit handler. */
 void pc_write_file_abort(void);

@@ -244,6 +244,7 @@ local methods = tk.curve_methods
 -- c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t (a stroke's pieces each
 -- over their own t; other curves over their domain, piece 1)
 function methods.each(c, opts)
+  if not tk.iscurve(c) then tk.raise("c:each: call it as c:each(...), with a colon") end
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("c:each", 1, "opts", "a table {t = {a, b, step}}", opts) end
   local P = M.P
@@ -270,6 +271,7 @@ end
 -- (default 1/4) through map or the camera.  c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn,
 -- dots = true, qb = false, ...} draws dots at those parameters instead, as the listings do.
 function methods.draw(c, opts)
+  if not tk.iscurve(c) then tk.raise("c:draw: call it as c:draw{...}, with a colon") end
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("c:draw", 1, "opts", "a table", opts, 3) end
   if not wants_dots(opts) and opts.t == nil then

@@ -18,10 +18,18 @@ end
 
 -- C(t1, t2) -> the point;  C:xy(t1, t2) -> its coordinates
 function System.__call(self, t1, t2) return M.P(self._xy(t1, t2)) end
-function System:xy(t1, t2) return self._xy(t1, t2) end
+function System:xy(t1, t2)
+  if getmetatable(self) ~= System then error("C:xy: call it as C:xy(...), with a colon") end
+  return self._xy(t1, t2)
+end
 function System.__tostring() return "curvilinear system" end
 
 local function issystem(v) return getmetatable(v) == System end
+
+-- A method called with a dot (cv.clamp()) has no system as self: say how to call it.
+local function need_self(self, name)
+  if not issystem(self) then error(("C:%s: call it as C:%s(...), with a colon"):format(name, name)) end
+end
 
 -- curvilinear(f): f(t1, t2) returns a point or x, y (or is a system already)
 function M.curvilinear(f)
@@ -67,6 +75,7 @@ end
 -- The fine step defaults to a thousandth of the range; t1 = {a, b, step, fine = {a', b',
 -- step'}} traces the lines t2 = const over another range than the values of the lines t1.
 function System:grid(opts)
+  need_self(self, "grid")
   local fname = "C:grid"
   if type(opts) ~= "table" then tk.argerror(fname, 1, "opts", "a table {t1 = ..., t2 = ...}", opts) end
   local plot, f, qb, family = plotter(opts, fname), self._xy, opts.qb, opts.family
@@ -104,6 +113,7 @@ end
 -- (a function t -> t1, t2 or a 2-D point (t1, t2), or a curve object) seen through the system,
 -- as one path; with a brush, dots = true or qb = true, dots at the steps as the listings draw.
 function System:draw(curve, opts)
+  need_self(self, "draw")
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("C:draw", 2, "opts", "a table", opts) end
   local f = self._xy
@@ -129,6 +139,7 @@ end
 -- C:pre(g): the system (t1, t2) -> C(g(t1, t2)), g returning two numbers or a 2-D point
 -- (a reparametrisation: a homothety, the plane -> square map squash01, ...)
 function System:pre(g)
+  need_self(self, "pre")
   if not tk.callable(g) then tk.argerror("C:pre", 1, "g", "a function (t1, t2) -> t1', t2'", g) end
   local f = self._xy
   return new(function(t1, t2) return f(xy(g(t1, t2))) end)
@@ -137,6 +148,7 @@ end
 -- C:post(h): the system (t1, t2) -> h(C(t1, t2)), h(x, y) returning two numbers or a point
 -- (e.g. screenmap(320, 240, 100) from mathematical to screen coordinates)
 function System:post(h)
+  need_self(self, "post")
   if not tk.callable(h) then tk.argerror("C:post", 1, "h", "a function (x, y) -> x', y'", h) end
   local f = self._xy
   return new(function(t1, t2) return xy(h(f(t1, t2))) end)
@@ -147,6 +159,7 @@ end
 -- reproduces the listings' strict IF chain: at t exactly 0, 1/2 or 1 the previous s is kept
 -- (starting from 0, as QBasic's undeclared variables do).
 function System:clamp(opts)
+  need_self(self, "clamp")
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("C:clamp", 1, "opts", "a table {t1 = ..., t2 = ...}", opts) end
   local c1, c2 = opts.t1, opts.t2

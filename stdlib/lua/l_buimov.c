@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
 #include "plane_curves.h"
@@ -15,98 +16,17 @@
 #include "reconstruct.h"
 #include "linalg.h"
 
-static void push_curve_or_raise(lua_State *L, pc_curve *c, int st, const char *fn, const char *kind) {
-    if (!c) pcl_statuserror(L, fn, st, NULL);
+#define PI 3.14159265358979323846
+
+static void push_curve_or_raise(lua_State *L, pc_curve *c, int st, const char *kind) {
+    if (!c) pcl_statuserror(L, pcl_name(L), st, NULL);
     pcl_pushcurve(L, c, kind);
-}
-
-/* A list of at least min points at arg, Cartesian rows of one dimension (dim: 0 any, else
- * required), in a scratch userdata left on the stack. */
-static double *read_points(lua_State *L, const char *fn, int arg, const char *what, int min,
-                           int *count, int *dim) {
-    if (!lua_istable(L, arg)) {
-        lua_pushfstring(L, "a list of at least %d points", min);
-        pcl_argerror_full(L, fn, arg, arg, what, lua_tostring(L, -1));
-    }
-    int m = (int)luaL_len(L, arg);
-    if (m < min) pcl_error(L, "%s: argument #%d (%s) must be a list of at least %d points, got %d",
-                           fn, arg, what, min, m);
-    if (m > 100000) pcl_error(L, "%s: argument #%d (%s) holds too many points (%d)", fn, arg, what, m);
-    int d = *dim;
-    double *x = NULL;
-    for (int i = 1; i <= m; i++) {
-        lua_geti(L, arg, i);
-        pcl_value *v = pcl_tovalue(L, -1);
-        if (!v) pcl_error(L, "%s: argument #%d (%s) item [%d] must be a point, got %s", fn, arg,
-                          what, i, pcl_shown(L, -1));
-        if (d == 0) d = v->n;
-        if (v->n != d) pcl_error(L, "%s: argument #%d (%s) item [%d] is %d-D, but %s %d-D: "
-                                 "dimensions cannot be mixed", fn, arg, what, i, v->n,
-                                 *dim ? "it must be" : "item [1] is", d);
-        if (fabs(v->h[d] - 1) > PC_WEIGHT_TOL)
-            pcl_error(L, "%s: argument #%d (%s) item [%d] must be a point (weight 1), got weight %s",
-                      fn, arg, what, i, pcl_pushnum(L, v->h[d]));
-        if (!x) {
-            lua_pop(L, 1);
-            x = lua_newuserdatauv(L, sizeof(double) * (size_t)m * (size_t)d, 0);
-            lua_geti(L, arg, i);
-            v = pcl_tovalue(L, -1);
-        }
-        for (int k = 0; k < d; k++) {
-            if (!isfinite(v->h[k])) pcl_error(L, "%s: argument #%d (%s) item [%d] has NaN or "
-                                              "infinite coordinates", fn, arg, what, i);
-            x[(size_t)(i - 1) * d + k] = v->h[k];
-        }
-        lua_pop(L, 1);
-    }
-    *count = m;
-    *dim = d;
-    return x;
-}
-
-/* An integer >= lo at arg. */
-static int check_int(lua_State *L, const char *fn, int arg, const char *what, int lo, int hi) {
-    double x = pcl_checknum(L, fn, arg, what);
-    if (x != floor(x) || x < lo || x > hi) {
-        lua_pushfstring(L, "an integer from %d to %d", lo, hi);
-        pcl_argerror_full(L, fn, arg, arg, what, lua_tostring(L, -1));
-    }
-    return (int)x;
-}
-
-/* A point (weight 1) of dimension dim (0: any) at arg, its coordinates into out; the house
- * error naming fn otherwise.  Returns its dimension. */
-static int loc(lua_State *L, const char *fn, int arg, const char *what, int dim, double *out) {
-    pcl_value *v = pcl_tovalue(L, arg);
-    if (!v) pcl_argerror_full(L, fn, arg, arg, what, "a point");
-    if (dim && v->n != dim)
-        pcl_error(L, "%s: argument #%d (%s) must be %d-D, got %d-D", fn, arg, what, dim, v->n);
-    if (fabs(v->h[v->n] - 1) > PC_WEIGHT_TOL)
-        pcl_argerror_full(L, fn, arg, arg, what, "a point (weight 1)");
-    for (int k = 0; k < v->n; k++) {
-        out[k] = v->h[k];
-        if (!isfinite(out[k])) pcl_argerror_full(L, fn, arg, arg, what, "a point with finite coordinates");
-    }
-    return v->n;
-}
-
-/* The same for a vector (weight 0). */
-static void vec(lua_State *L, const char *fn, int arg, const char *what, int dim, double *out) {
-    pcl_value *v = pcl_tovalue(L, arg);
-    if (!v) pcl_argerror_full(L, fn, arg, arg, what, "a vector");
-    if (v->n != dim)
-        pcl_error(L, "%s: argument #%d (%s) must be %d-D, got %d-D", fn, arg, what, dim, v->n);
-    if (v->h[v->n] != 0) pcl_argerror_full(L, fn, arg, arg, what, "a vector (weight 0), e.g. B - A");
-    for (int k = 0; k < dim; k++) {
-        out[k] = v->h[k];
-        if (!isfinite(out[k])) pcl_argerror_full(L, fn, arg, arg, what, "a vector with finite coordinates");
-    }
 }
 
 /* ==== plane.* ================================================================================ */
 
 /* a circle as a table {centre =, r =, d =, e =, f =, curve =} (curve: the whole circle) */
-static void push_circle(lua_State *L, const pc_circle_eq *c, const char *fn) {
+static void push_circle(lua_State *L, const pc_circle_eq *c) {
     lua_createtable(L, 0, 7);
     pcl_pushpoint(L, 2, c->c);
     lua_setfield(L, -2, "centre");
@@ -115,247 +35,190 @@ static void push_circle(lua_State *L, const pc_circle_eq *c, const char *fn) {
     lua_pushnumber(L, c->e); lua_setfield(L, -2, "e");
     lua_pushnumber(L, c->f); lua_setfield(L, -2, "f");
     int st;
-    pc_curve *cv = pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * 3.14159265358979323846, &st);
-    push_curve_or_raise(L, cv, st, fn, "circle");
+    push_curve_or_raise(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), st, "circle");
     lua_setfield(L, -2, "curve");
 }
 
-static void circle_status(lua_State *L, const char *fn, int st) {
-    if (st == PC_ECOINCIDENT) pcl_error(L, "%s: two of the points coincide", fn);
-    if (st == PC_ECOLLINEAR) pcl_error(L, "%s: the three points lie on one line, so no circle passes through them", fn);
-    if (st != PC_OK) pcl_statuserror(L, fn, st, NULL);
+static void circle_status(lua_State *L, int st) {
+    if (st == PC_ECOINCIDENT) pcl_fail(L, "two of the points coincide");
+    if (st == PC_ECOLLINEAR) pcl_fail(L, "the three points lie on one line, so no circle passes through them");
+    if (st != PC_OK) pcl_statuserror(L, pcl_name(L), st, NULL);
 }
 
+static const pcl_arg abc_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), PCL_END};
+
 static int l_circle3(lua_State *L) {
-    const char *fn = "plane.circle3";
-    double p[3][2];
-    static const char *names[3] = {"A", "B", "C"};
-    for (int i = 0; i < 3; i++) loc(L, fn, i + 1, names[i], 2, p[i]);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     pc_circle_eq c;
-    circle_status(L, fn, pc_circle3(p[0], p[1], p[2], &c));
-    push_circle(L, &c, fn);
+    circle_status(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c));
+    push_circle(L, &c);
     int st;
-    pc_curve *arc = pc_curve_arc3(p[0], p[1], p[2], &st);
-    push_curve_or_raise(L, arc, st, fn, "arc");
+    push_curve_or_raise(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), st, "arc");
     lua_setfield(L, -2, "arc");
     return 1;
 }
 
 static int l_arc3(lua_State *L) {
-    const char *fn = "plane.arc3";
-    double p[3][2];
-    static const char *names[3] = {"A", "B", "C"};
-    for (int i = 0; i < 3; i++) loc(L, fn, i + 1, names[i], 2, p[i]);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     int st;
-    pc_curve *arc = pc_curve_arc3(p[0], p[1], p[2], &st);
-    if (!arc) circle_status(L, fn, st);
+    pc_curve *arc = pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st);
+    if (!arc) circle_status(L, st);
     pcl_pushcurve(L, arc, "arc");
     return 1;
 }
 
+static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
+
 static int l_circle2r(lua_State *L) {
-    const char *fn = "plane.circle2r";
-    double a[2], b[2];
-    loc(L, fn, 1, "A", 2, a);
-    loc(L, fn, 2, "B", 2, b);
-    double r = pcl_checknum(L, fn, 3, "r");
-    if (!(r > 0)) pcl_argerror_full(L, fn, 3, 3, "r", "a positive number");
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double *A = a[0].v, *B = a[1].v, r = a[2].x;
     pc_circle_eq c[2];
-    int st = pc_circle2r(a, b, r, c);
-    if (st == PC_ECOINCIDENT) return pcl_error(L, "%s: the points A and B coincide (any circle of radius r through A will do)", fn);
-    if (st == PC_EDOMAIN) return pcl_error(L, "%s: the points are %s apart, farther than the diameter 2r = %s", fn,
-                                           pcl_pushnum(L, hypot(b[0] - a[0], b[1] - a[1])), pcl_pushnum(L, 2 * r));
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
-    push_circle(L, &c[0], fn);
-    push_circle(L, &c[1], fn);
+    int st = pc_circle2r(A, B, r, c);
+    if (st == PC_ECOINCIDENT) return pcl_fail(L, "the points A and B coincide (any circle of radius r through A will do)");
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "the points are %s apart, farther than the diameter 2r = %s",
+                        pcl_pushnum(L, hypot(B[0] - A[0], B[1] - A[1])), pcl_pushnum(L, 2 * r));
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
+    push_circle(L, &c[0]);
+    push_circle(L, &c[1]);
     return 2;
 }
 
+static const pcl_arg slopes_args[] = {A_POINT("A", 2), A_NUM("m1"), A_NUM("x_end"), A_NUM("m2"), PCL_END};
+
 static int l_circle_slopes(lua_State *L) {
-    const char *fn = "plane.circle_slopes";
-    double a[2];
-    loc(L, fn, 1, "A", 2, a);
-    double m1 = pcl_checknum(L, fn, 2, "m1"), xe = pcl_checknum(L, fn, 3, "x_end");
-    double m2 = pcl_checknum(L, fn, 4, "m2");
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    double *A = a[0].v, m1 = a[1].x, xe = a[2].x, ends[4];
     pc_circle_eq c[2];
-    double ends[4];
-    int n, st = pc_circle_slopes(a, m1, xe, m2, c, ends, &n);
-    if (st == PC_EDOMAIN && xe == a[0])
-        return pcl_error(L, "%s: argument #3 (x_end) equals the abscissa of A", fn);
-    if (st == PC_EDOMAIN) return pcl_error(L, "%s: no circle through A has these slopes", fn);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
-    double dir[2] = {xe > a[0] ? 1 : -1, xe > a[0] ? m1 : -m1};
+    int n, st = pc_circle_slopes(A, m1, xe, a[3].x, c, ends, &n);
+    if (st == PC_EDOMAIN && xe == A[0]) return pcl_argfail(L, 3, "equals the abscissa of A");
+    if (st == PC_EDOMAIN) return pcl_fail(L, "no circle through A has these slopes");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
+    double dir[2] = {xe > A[0] ? 1 : -1, xe > A[0] ? m1 : -m1};
     for (int i = 0; i < n; i++) {
-        push_circle(L, &c[i], fn);
+        push_circle(L, &c[i]);
         pcl_pushpoint(L, 2, ends + 2 * i);
         lua_setfield(L, -2, "finish");
-        pc_curve *arc = pc_curve_arc_dir(c[i].c, c[i].r, a, dir, ends + 2 * i, &st);
-        push_curve_or_raise(L, arc, st, fn, "arc");
+        push_curve_or_raise(L, pc_curve_arc_dir(c[i].c, c[i].r, A, dir, ends + 2 * i, &st), st, "arc");
         lua_setfield(L, -2, "arc");
     }
     return n;
 }
 
-static const char *conic_names[3] = {"ellipse", "parabola", "hyperbola"};
+static const char *const conic_names[3] = {"ellipse", "parabola", "hyperbola"};
+static const pcl_arg classify_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("c"), PCL_END};
 
 static int l_classify(lua_State *L) {
-    const char *fn = "plane.classify";
-    double a = pcl_checknum(L, fn, 1, "a"), b = pcl_checknum(L, fn, 2, "b"), c = pcl_checknum(L, fn, 3, "c");
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     pc_conic_class k;
-    if (pc_conic_classify(a, b, c, &k) != PC_OK)
-        return pcl_error(L, "%s: a = b = c = 0 is a line, not a conic", fn);
+    if (pc_conic_classify(a[0].x, a[1].x, a[2].x, &k) != PC_OK) return pcl_fail(L, "a = b = c = 0 is a line, not a conic");
     lua_pushstring(L, conic_names[k]);
-    lua_pushnumber(L, b * b - 4 * a * c);
+    lua_pushnumber(L, a[1].x * a[1].x - 4 * a[0].x * a[2].x);
     return 2;
 }
 
-/* a list {a, b, c, d, e, f} at arg */
-static void read_coef(lua_State *L, const char *fn, int arg, double k[6]) {
-    if (!lua_istable(L, arg) || luaL_len(L, arg) != 6)
-        pcl_argerror_full(L, fn, arg, arg, "coef", "a list {a, b, c, d, e, f}");
-    for (int i = 0; i < 6; i++) {
-        lua_geti(L, arg, i + 1);
-        int ok;
-        k[i] = lua_tonumberx(L, -1, &ok);
-        if (!ok || !isfinite(k[i]))
-            pcl_error(L, "%s: argument #%d (coef) item [%d] must be a finite number, got %s", fn,
-                      arg, i + 1, pcl_shown(L, -1));
-        lua_pop(L, 1);
-    }
-}
-
-static void push_coef(lua_State *L, const double k[6]) {
-    lua_createtable(L, 6, 0);
-    for (int i = 0; i < 6; i++) {
-        lua_pushnumber(L, k[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
-}
+#define COEF {.name = "coef", .kind = PCL_NUMBERS, .lo = 6, .hi = 6}
+static const pcl_arg rotate_args[] = {COEF, A_NUM("alpha"), PCL_END};
 
 static int l_rotate_conic(lua_State *L) {
-    const char *fn = "plane.rotate_conic";
     double k[6], out[6];
-    read_coef(L, fn, 1, k);
-    pc_conic_rotate(k, pcl_checknum(L, fn, 2, "alpha"), out);
-    push_coef(L, out);
+    pcl_val a[2] = {{.list = k, .cap = 6}};
+    PCL_READ(L, a);
+    pc_conic_rotate(k, a[1].x, out);
+    pcl_push_numbers(L, 6, out);
     return 1;
 }
+
+static const pcl_arg value_args[] = {COEF, A_POINT("X", 2), PCL_END};
 
 static int l_conic_value(lua_State *L) {
-    const char *fn = "plane.conic_value";
-    double k[6], x[2];
-    read_coef(L, fn, 1, k);
-    loc(L, fn, 2, "X", 2, x);
-    lua_pushnumber(L, pc_conic_value(k, x[0], x[1]));
+    double k[6];
+    pcl_val a[2] = {{.list = k, .cap = 6}};
+    PCL_READ(L, a);
+    lua_pushnumber(L, pc_conic_value(k, a[1].v[0], a[1].v[1]));
     return 1;
 }
+
+static const char *const coef_kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
+static const pcl_arg coef_args[] = {A_ENUM("kind", coef_kinds), A_POINT("centre", 2), A_NUM("A"),
+                                    {.name = "B", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 
 static int l_conic_coef(lua_State *L) {
-    const char *fn = "plane.conic_coef";
-    static const char *kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
-    const char *ks = lua_tostring(L, 1);
-    int kind = -1;
-    for (int i = 0; ks && kinds[i]; i++) if (!strcmp(ks, kinds[i])) kind = i;
-    if (kind < 0) pcl_argerror_full(L, fn, 1, 1, "kind", "\"ellipse\", \"hyperbola\" or \"parabola\"");
-    double c[2];
-    loc(L, fn, 2, "centre", 2, c);
-    double A = pcl_checknum(L, fn, 3, kind == 2 ? "p" : "A");
-    double out[6];
-    if (kind == 2) pc_conic_parabola_coef(c[0], c[1], A, out);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    double *c = a[1].v, A = a[2].x, B = a[3].x, out[6];
+    if (a[0].n == 2) pc_conic_parabola_coef(c[0], c[1], A, out);
     else {
-        double B = pcl_checknum(L, fn, 4, "B");
-        if (!(A > 0) || !(B > 0)) return pcl_error(L, "%s: the semi-axes A and B must be positive", fn);
-        (kind ? pc_conic_hyperbola_coef : pc_conic_ellipse_coef)(c[0], c[1], A, B, out);
+        if (!a[3].present) return pcl_argfail(L, 4, "must be a finite number (the %s's second semi-axis), got nil", a[0].s);
+        if (!(A > 0) || !(B > 0)) return pcl_fail(L, "the semi-axes A and B must be positive");
+        (a[0].n ? pc_conic_hyperbola_coef : pc_conic_ellipse_coef)(c[0], c[1], A, B, out);
     }
-    push_coef(L, out);
+    pcl_push_numbers(L, 6, out);
     return 1;
 }
+
+static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"),
+                                       A_NUMOPT("th0", 0, "0"), {.name = "th1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 
 static int l_ellipse(lua_State *L) {
-    const char *fn = "plane.ellipse";
-    double c[2];
-    loc(L, fn, 1, "centre", 2, c);
-    double A = pcl_checknum(L, fn, 2, "A"), B = pcl_checknum(L, fn, 3, "B");
-    double t0 = pcl_optnum(L, fn, 4, "th0", 0), t1 = pcl_optnum(L, fn, 5, "th1", t0 + 2 * 3.14159265358979323846);
-    if (!(A > 0) || !(B > 0)) return pcl_error(L, "%s: the semi-axes A and B must be positive", fn);
-    if (!(t1 > t0)) return pcl_error(L, "%s: need th0 < th1", fn);
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
+    if (!(t1 > t0)) return pcl_fail(L, "need th0 < th1");
     int st;
-    pc_curve *cv = pc_curve_ellipse(c, A, B, t0, t1, &st);
-    push_curve_or_raise(L, cv, st, fn, "ellipse");
+    push_curve_or_raise(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), st, "ellipse");
     return 1;
 }
+
+static const pcl_arg parabola_args[] = {A_POSNUM("p"), A_NUM("th0"), A_NUM("th1"), PCL_END};
 
 static int l_parabola(lua_State *L) {
-    const char *fn = "plane.parabola";
-    double p = pcl_checknum(L, fn, 1, "p"), t0 = pcl_checknum(L, fn, 2, "th0"), t1 = pcl_checknum(L, fn, 3, "th1");
-    if (!(p > 0)) pcl_argerror_full(L, fn, 1, 1, "p", "a positive number");
-    if (!(t1 > t0)) return pcl_error(L, "%s: need th0 < th1", fn);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    if (!(a[2].x > a[1].x)) return pcl_fail(L, "need th0 < th1");
     int st;
-    pc_curve *cv = pc_curve_parabola(p, t0, t1, &st);
-    push_curve_or_raise(L, cv, st, fn, "parabola");
+    push_curve_or_raise(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), st, "parabola");
     return 1;
 }
 
+static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300), A_NUMIN("t1", -300, 300), PCL_END};
+
 static int l_hyperbola(lua_State *L) {
-    const char *fn = "plane.hyperbola";
-    double A = pcl_checknum(L, fn, 1, "A"), B = pcl_checknum(L, fn, 2, "B");
-    double t0 = pcl_checknum(L, fn, 3, "t0"), t1 = pcl_checknum(L, fn, 4, "t1");
-    if (!(A > 0) || !(B > 0)) return pcl_error(L, "%s: the semi-axes A and B must be positive", fn);
-    if (!(t1 > t0)) return pcl_error(L, "%s: need t0 < t1", fn);
-    if (fabs(t0) > 300 || fabs(t1) > 300) return pcl_error(L, "%s: |t| beyond 300 overflows ch t", fn);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
-    pc_curve *cv = pc_curve_hyperbola(A, B, t0, t1, &st);
-    push_curve_or_raise(L, cv, st, fn, "hyperbola");
+    push_curve_or_raise(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), st, "hyperbola");
     return 1;
 }
 
 /* plane.points(kind, {A =, B =, step =, n =, method =}) */
-static double opt_field(lua_State *L, const char *fn, const char *field, int required, double dflt) {
-    int t = lua_getfield(L, 2, field);
-    double x = dflt;
-    if (t == LUA_TNIL && required) pcl_error(L, "%s: argument #2 (opts) needs the field %s", fn, field);
-    if (t != LUA_TNIL) {
-        int ok;
-        x = lua_tonumberx(L, -1, &ok);
-        if (!ok || !isfinite(x))
-            pcl_error(L, "%s: argument #2 (opts) field %s must be a finite number, got %s", fn,
-                      field, pcl_shown(L, -1));
-    }
-    lua_pop(L, 1);
-    return x;
-}
+static const char *const point_kinds[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
+static const char *const point_methods[] = {"param", "recurrence", "rational", "explicit", NULL};
+static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, {.name = "B", .kind = PCL_NUMBER, .flags = PCL_POS},
+                                      {.name = "step", .kind = PCL_NUMBER, .flags = PCL_REQ},
+                                      {.name = "n", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 0, .hi = 1000000},
+                                      {.name = "method", .kind = PCL_ENUM, .choices = point_methods}, PCL_END};
+static const pcl_arg points_args[] = {A_ENUM("kind", point_kinds), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
 
 static int l_points(lua_State *L) {
-    const char *fn = "plane.points";
-    static const char *kinds[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
-    static const char *methods[] = {"param", "recurrence", "rational", "explicit", NULL};
-    const char *ks = lua_tostring(L, 1);
-    int kind = -1, method = 0;
-    for (int i = 0; ks && kinds[i]; i++) if (!strcmp(ks, kinds[i])) kind = i;
-    if (kind < 0) pcl_argerror_full(L, fn, 1, 1, "kind", "\"circle\", \"ellipse\", \"parabola\", \"hyperbola\" or \"hyperbola_ch\"");
-    if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "opts", "a table {A =, B =, step =, n =, method =}");
-    double A = opt_field(L, fn, "A", 1, 0), B = opt_field(L, fn, "B", kind == 1 || kind >= 3, 0);
-    double step = opt_field(L, fn, "step", 1, 0), n = opt_field(L, fn, "n", 1, 0);
-    if (n != floor(n) || n < 0 || n > 1000000)
-        pcl_error(L, "%s: argument #2 (opts) field n must be a whole number of steps, got %s", fn, pcl_pushnum(L, n));
-    if (lua_getfield(L, 2, "method") != LUA_TNIL) {
-        const char *ms = lua_tostring(L, -1);
-        method = -1;
-        for (int i = 0; ms && methods[i]; i++) if (!strcmp(ms, methods[i])) method = i;
-        if (method < 0) pcl_error(L, "%s: argument #2 (opts) field method must be \"param\", \"recurrence\", \"rational\" or \"explicit\"", fn);
-    }
-    lua_pop(L, 1);
-    if (method >= 2 && kind != 0) pcl_error(L, "%s: the %s method is the circle's only", fn, methods[method]);
-    if (!(A > 0) || ((kind == 1 || kind >= 3) && !(B > 0)))
-        pcl_error(L, "%s: A (and B) must be positive", fn);
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
+    int kind = a[0].n, method = a[6].n, n = (int)a[5].x;
+    if ((kind == 1 || kind >= 3) && !a[3].present) return pcl_keyfail(L, "B", "must be a positive number (the %s's), got nil", a[0].s);
+    if (method >= 2 && kind != 0) return pcl_fail(L, "the %s method is the circle's only", a[6].s);
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
-    int st = pc_conic_points((pc_gen_kind)kind, (pc_gen_method)method, A, B, step, (int)n, xy);
+    int st = pc_conic_points((pc_gen_kind)kind, (pc_gen_method)method, a[2].x, a[3].x, a[4].x, n, xy);
     if (st == PC_EDOMAIN)
-        return pcl_error(L, "%s: the steps leave the curve's domain (the explicit circle beyond "
-                         "x = -A, the sec form at 90 degrees)", fn);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
-    lua_createtable(L, (int)n + 1, 0);
-    for (int i = 0; i <= (int)n; i++) {
+        return pcl_fail(L, "the steps leave the curve's domain (the explicit circle beyond x = -A, the sec form at 90 degrees)");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
+    lua_createtable(L, n + 1, 0);
+    for (int i = 0; i <= n; i++) {
         pcl_pushpoint(L, 2, xy + 2 * i);
         lua_rawseti(L, -2, i + 1);
     }
@@ -364,13 +227,21 @@ static int l_points(lua_State *L) {
 
 /* ==== buimov.* =============================================================================== */
 
+/* The order k of a B-spline of m vertices: 2 .. min(m, the largest degree + 1). */
+static int order(lua_State *L, int m, double k) {
+    int hi = m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1;
+    if (k > hi) pcl_argfail(L, 2, "must be an integer from 2 to %d (at most the number of points), got %d", hi, (int)k);
+    return (int)k;
+}
+
+static const pcl_arg knots_args[] = {A_POINTS("points", 0, 2, 0), A_INT("k", 2, PC_CURVE_MAXDEG + 1), PCL_END};
+
 static int l_knots(lua_State *L) {
-    const char *fn = "buimov.knots";
-    int m, d = 0;
-    double *p = read_points(L, fn, 1, "points", 2, &m, &d);
-    int k = check_int(L, fn, 2, "k", 2, m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int m = a[0].n, k = order(L, m, a[1].x);
     double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + k), 0);
-    pc_book_knots(d, m, p, k, q);
+    pc_book_knots(a[0].dim, m, a[0].list, k, q);
     lua_createtable(L, m + k, 0);
     for (int j = 0; j < m + k; j++) {
         lua_pushinteger(L, (lua_Integer)q[j]);
@@ -379,140 +250,108 @@ static int l_knots(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg basis_args[] = {A_INT("i", 0, 1000000), A_INT("k", 1, PC_CURVE_MAXDEG + 1), A_NUM("t"),
+                                     A_NUMBERS("knots", 0, 1000000), PCL_END};
+
 static int l_basis(lua_State *L) {
-    const char *fn = "buimov.basis";
-    int i = check_int(L, fn, 1, "i", 0, 1000000), k = check_int(L, fn, 2, "k", 1, PC_CURVE_MAXDEG + 1);
-    double t = pcl_checknum(L, fn, 3, "t");
-    if (!lua_istable(L, 4)) pcl_argerror_full(L, fn, 4, 4, "knots", "a list of numbers");
-    int nq = (int)luaL_len(L, 4);
-    if (nq > 1000000) pcl_error(L, "%s: argument #4 (knots) is too long", fn);
-    double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(nq ? nq : 1), 0);
-    for (int j = 0; j < nq; j++) {
-        lua_geti(L, 4, j + 1);
-        int ok;
-        q[j] = lua_tonumberx(L, -1, &ok);
-        if (!ok || !isfinite(q[j])) pcl_error(L, "%s: argument #4 (knots) item [%d] must be a finite number, got %s", fn, j + 1, pcl_shown(L, -1));
-        if (j > 0 && q[j] < q[j - 1]) pcl_error(L, "%s: argument #4 (knots) must not decrease (item [%d])", fn, j + 1);
-        lua_pop(L, 1);
-    }
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int i = (int)a[0].x, k = (int)a[1].x, nq = a[3].n;
+    for (int j = 1; j < nq; j++)
+        if (a[3].list[j] < a[3].list[j - 1]) return pcl_argfail(L, 4, "must not decrease ([%d])", j + 1);
     double N;
-    if (pc_book_basis(q, nq, i, k, t, &N) != PC_OK)
-        return pcl_error(L, "%s: N(i = %d, k = %d) needs the knots q[i] .. q[i + k]: %d knots given", fn, i, k, nq);
+    if (pc_book_basis(a[3].list, nq, i, k, a[2].x, &N) != PC_OK)
+        return pcl_fail(L, "N(i = %d, k = %d) needs the knots q[i] .. q[i + k]: %d knots given", i, k, nq);
     lua_pushnumber(L, N);
     return 1;
 }
 
 static int l_bspline(lua_State *L) {
-    const char *fn = "buimov.bspline";
-    int m, d = 0;
-    double *p = read_points(L, fn, 1, "points", 2, &m, &d);
-    int k = check_int(L, fn, 2, "k", 2, m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1);
-    int st;
-    pc_curve *c = pc_curve_book_bspline(d, m, p, k, &st);
-    if (!c && st == PC_EDOMAIN)
-        return pcl_error(L, "%s: a vertex is repeated so often that the knots leave no span", fn);
-    push_curve_or_raise(L, c, st, fn, "bspline");
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int st, m = a[0].n;
+    pc_curve *c = pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st);
+    if (!c && st == PC_EDOMAIN) return pcl_fail(L, "a vertex is repeated so often that the knots leave no span");
+    push_curve_or_raise(L, c, st, "bspline");
     return 1;
 }
+
+static const pcl_arg bernstein_args[] = {A_INT("n", 0, 1000), A_INT("i", 0, 1000), A_NUM("t"), PCL_END};
 
 static int l_bernstein(lua_State *L) {
-    const char *fn = "buimov.bernstein";
-    int n = check_int(L, fn, 1, "n", 0, 1000), i = check_int(L, fn, 2, "i", 0, 1000);
-    lua_pushnumber(L, pc_bernstein(n, i, pcl_checknum(L, fn, 3, "t")));
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, pc_bernstein((int)a[0].x, (int)a[1].x, a[2].x));
     return 1;
 }
 
+static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
+
 static int l_blend(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
     double F[4];
-    pc_hermite_blend(pcl_checknum(L, "buimov.blend", 1, "t"), F);
+    pc_hermite_blend(a[0].x, F);
     for (int i = 0; i < 4; i++) lua_pushnumber(L, F[i]);
     return 4;
 }
 
 /* P1, P2 (points), D1, D2 (vectors) [, t]: the data of a Hermite segment */
-static int hermite_args(lua_State *L, const char *fn, double *p, double *dv, double *t) {
-    int d = loc(L, fn, 1, "P1", 0, p);
-    loc(L, fn, 2, "P2", d, p + d);
-    vec(L, fn, 3, "D1", d, dv);
-    vec(L, fn, 4, "D2", d, dv + d);
-    *t = pcl_optnum(L, fn, 5, "t", 1);
-    if (!(*t > 0)) pcl_argerror_full(L, fn, 5, 5, "t", "a positive number (the segment's parameter length)");
+static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
+                                       {.name = "t", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
+
+static int hermite_data(lua_State *L, pcl_val *a, double *p, double *dv) {
+    pcl_read(L, a, 5);
+    int d = a[0].n;
+    memcpy(p, a[0].v, sizeof(double) * (size_t)d);
+    memcpy(p + d, a[1].v, sizeof(double) * (size_t)d);
+    memcpy(dv, a[2].v, sizeof(double) * (size_t)d);
+    memcpy(dv + d, a[3].v, sizeof(double) * (size_t)d);
     return d;
 }
 
 static int l_hermite(lua_State *L) {
-    const char *fn = "buimov.hermite";
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], t;
-    int d = hermite_args(L, fn, p, dv, &t);
-    double u[2] = {0, t};
-    int st;
-    pc_curve *c = pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st);
-    push_curve_or_raise(L, c, st, fn, "hermite");
+    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM];
+    pcl_val a[5] = {0};
+    int d = hermite_data(L, a, p, dv), st;
+    double u[2] = {0, a[4].x};
+    push_curve_or_raise(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), st, "hermite");
     return 1;
 }
 
 static int l_hermite_coeffs(lua_State *L) {
-    const char *fn = "buimov.hermite_coeffs";
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], t, B[4 * PC_MAXDIM];
-    int d = hermite_args(L, fn, p, dv, &t);
-    int st = pc_hermite_coeffs(d, p, p + d, dv, dv + d, t, B);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], B[4 * PC_MAXDIM];
+    pcl_val a[5] = {0};
+    int d = hermite_data(L, a, p, dv);
+    int st = pc_hermite_coeffs(d, p, p + d, dv, dv + d, a[4].x, B);
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
     pcl_pushpoint(L, d, B);
     for (int i = 1; i < 4; i++) pcl_pushvector(L, d, B + i * d);
     return 4;
 }
 
+static const char *const spline_ends[] = {"clamped", "natural", "cyclic", "anticyclic", NULL};
+static const char *const spline_params[] = {"uniform", "chord", NULL};
+static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = spline_ends, .dflt = PC_BOOK_NATURAL},
+                                      {.name = "d0", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
+                                      {.name = "d1", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
+                                      {.name = "param", .kind = PCL_ENUM, .choices = spline_params}, PCL_END};
+static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
+                                      A_OPTIONS("opts", spline_keys), PCL_END};
+
 static int l_spline(lua_State *L) {
-    const char *fn = "buimov.spline";
-    int n, d = 0;
-    double *p = read_points(L, fn, 1, "points", 2, &n, &d);
-    int top = lua_gettop(L);               /* the points' scratch userdata is on the stack */
-    pc_book_ends ends = PC_BOOK_NATURAL;
-    int chord = 0, have_d = 0;
-    double d0[PC_MAXDIM], d1[PC_MAXDIM];
-    if (!lua_isnoneornil(L, 2)) {
-        if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "opts", "a table {ends =, d0 =, d1 =, param =}");
-        if (lua_getfield(L, 2, "ends") != LUA_TNIL) {
-            const char *e = lua_tostring(L, -1);
-            static const char *names[] = {"clamped", "natural", "cyclic", "anticyclic"};
-            int found = -1;
-            for (int i = 0; e && i < 4; i++) if (!strcmp(e, names[i])) found = i;
-            if (found < 0) pcl_error(L, "%s: argument #2 (opts) field ends must be \"clamped\", \"natural\", \"cyclic\" or \"anticyclic\"", fn);
-            ends = (pc_book_ends)found;
-        }
-        lua_pop(L, 1);
-        if (lua_getfield(L, 2, "param") != LUA_TNIL) {
-            const char *s = lua_tostring(L, -1);
-            if (s && !strcmp(s, "chord")) chord = 1;
-            else if (!s || strcmp(s, "uniform"))
-                pcl_error(L, "%s: argument #2 (opts) field param must be \"uniform\" or \"chord\"", fn);
-        }
-        lua_pop(L, 1);
-        static const char *dn[2] = {"d0", "d1"};
-        for (int i = 0; i < 2; i++) {
-            if (lua_getfield(L, 2, dn[i]) != LUA_TNIL) {
-                pcl_value *v = pcl_tovalue(L, -1);
-                if (!v || v->n != d || v->h[d] != 0)
-                    pcl_error(L, "%s: argument #2 (opts) field %s must be a %d-D vector (the end tangent), got %s", fn, dn[i], d, pcl_shown(L, -1));
-                memcpy(i ? d1 : d0, v->h, sizeof(double) * (size_t)d);
-                have_d++;
-            }
-            lua_pop(L, 1);
-        }
-        if (ends == PC_BOOK_NATURAL && have_d == 2 && lua_getfield(L, 2, "ends") == LUA_TNIL)
-            ends = PC_BOOK_CLAMPED;            /* tangents given without ends: clamped */
-        lua_settop(L, top);
-    }
-    if (ends == PC_BOOK_CLAMPED && have_d < 2)
-        return pcl_error(L, "%s: clamped ends need both end tangents d0 and d1", fn);
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n, d = a[0].dim, st, have_d = a[3].present + a[4].present;
+    pc_book_ends ends = (pc_book_ends)a[2].n;
+    if (!a[2].present && have_d == 2) ends = PC_BOOK_CLAMPED;   /* tangents given without ends: clamped */
+    if (ends == PC_BOOK_CLAMPED && have_d < 2) return pcl_fail(L, "clamped ends need both end tangents d0 and d1");
     if ((ends == PC_BOOK_CYCLIC || ends == PC_BOOK_ANTICYCLIC) && n < 4)
-        return pcl_error(L, "%s: cyclic and anticyclic ends need at least 4 points, got %d", fn, n);
+        return pcl_fail(L, "cyclic and anticyclic ends need at least 4 points, got %d", n);
     double *tg = lua_newuserdatauv(L, sizeof(double) * (size_t)n * d, 0);
-    int st;
-    pc_curve *c = pc_curve_book_spline(d, n, p, chord, ends, d0, d1, tg, &st);
-    if (!c && st == PC_ECOINCIDENT)
-        return pcl_error(L, "%s: two consecutive points coincide (a chord of length 0)", fn);
-    push_curve_or_raise(L, c, st, fn, "spline");
+    pc_curve *c = pc_curve_book_spline(d, n, a[0].list, a[5].n, ends, a[3].v, a[4].v, tg, &st);
+    if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide (a chord of length 0)");
+    push_curve_or_raise(L, c, st, "spline");
     lua_createtable(L, n, 0);
     for (int i = 0; i < n; i++) {
         pcl_pushvector(L, d, tg + (size_t)i * d);
@@ -521,60 +360,64 @@ static int l_spline(lua_State *L) {
     return 2;
 }
 
+static const pcl_arg helix_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("t0"), A_NUM("t1"), PCL_END};
+
 static int l_helix(lua_State *L) {
-    const char *fn = "buimov.helix";
-    double a = pcl_checknum(L, fn, 1, "a"), b = pcl_checknum(L, fn, 2, "b");
-    double t0 = pcl_checknum(L, fn, 3, "t0"), t1 = pcl_checknum(L, fn, 4, "t1");
-    if (a == 0) pcl_argerror_full(L, fn, 1, 1, "a", "a nonzero radius");
-    if (!(t1 > t0)) return pcl_error(L, "%s: need t0 < t1", fn);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    if (a[0].x == 0) return pcl_argfail(L, 1, "must be a nonzero radius, got 0");
+    if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
-    pc_curve *c = pc_curve_helix(a, b, t0, t1, &st);
-    push_curve_or_raise(L, c, st, fn, "helix");
+    push_curve_or_raise(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), st, "helix");
     return 1;
 }
 
+static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
+                                      A_NUMOPT("ph1", PI, "pi"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
+                                      {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
+
 static int l_sphere(lua_State *L) {
-    const char *fn = "buimov.sphere";
-    const double pi = 3.14159265358979323846;
-    double th0 = pcl_optnum(L, fn, 1, "th0", 0), th1 = pcl_optnum(L, fn, 2, "th1", 2 * pi);
-    double ph0 = pcl_optnum(L, fn, 3, "ph0", 0), ph1 = pcl_optnum(L, fn, 4, "ph1", pi);
-    double c[3] = {0, 0, 0};
-    if (!lua_isnoneornil(L, 5)) loc(L, fn, 5, "C", 3, c);
-    double r = pcl_optnum(L, fn, 6, "r", 1);
-    if (!(r > 0)) pcl_argerror_full(L, fn, 6, 6, "r", "a positive number");
-    if (!(th1 > th0) || !(ph1 > ph0)) return pcl_error(L, "%s: need th0 < th1 and ph0 < ph1", fn);
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    if (!a[4].present) a[4].v[0] = a[4].v[1] = a[4].v[2] = 0;
+    if (!(a[1].x > a[0].x) || !(a[3].x > a[2].x)) return pcl_fail(L, "need th0 < th1 and ph0 < ph1");
     int st;
-    pc_surface *s = pc_surface_sphere(c, r, th0, th1, ph0, ph1, &st);
-    if (!s) return pcl_statuserror(L, fn, st, NULL);
+    pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
+    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
     pcl_pushsurface(L, s, "buimov.sphere");
     return 1;
 }
 
+static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), PCL_END};
+
 static int l_sphere_frame(lua_State *L) {
-    const char *fn = "buimov.sphere_frame";
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
     double f[15];
-    pc_sphere_frame(pcl_checknum(L, fn, 1, "th"), pcl_checknum(L, fn, 2, "ph"), f);
+    pc_sphere_frame(a[0].x, a[1].x, f);
     pcl_pushpoint(L, 3, f);
     for (int i = 1; i < 5; i++) pcl_pushvector(L, 3, f + 3 * i);
     return 5;
 }
 
 /* buimov.det(rows): the determinant of a square matrix (§1.2; the area factor of §1.7.4) */
+static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a square matrix (a list of rows)"}, PCL_END};
+
 static int l_det(lua_State *L) {
-    const char *fn = "buimov.det";
-    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "rows", "a square matrix (a list of rows)");
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1);
-    if (n < 1 || n > PC_MAXDIM + 1) return pcl_error(L, "%s: argument #1 (rows) must hold 1 to %d rows, got %d", fn, PC_MAXDIM + 1, n);
+    if (n < 1 || n > PC_MAXDIM + 1) return pcl_argfail(L, 1, "must hold 1 to %d rows, got %d", PC_MAXDIM + 1, n);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     for (int i = 0; i < n; i++) {
         if (lua_geti(L, 1, i + 1) != LUA_TTABLE || (int)luaL_len(L, -1) != n)
-            pcl_error(L, "%s: argument #1 (rows) row [%d] must be a list of %d numbers", fn, i + 1, n);
+            pcl_argfail(L, 1, "row [%d] must be a list of %d numbers, got %s", i + 1, n, pcl_shown(L, lua_gettop(L)));
         for (int j = 0; j < n; j++) {
             lua_geti(L, -1, j + 1);
-            int ok;
-            m[i * n + j] = lua_tonumberx(L, -1, &ok);
-            if (!ok || !isfinite(m[i * n + j]))
-                pcl_error(L, "%s: argument #1 (rows) entry [%d][%d] must be a finite number, got %s", fn, i + 1, j + 1, pcl_shown(L, -1));
+            m[i * n + j] = lua_tonumber(L, -1);
+            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(m[i * n + j]))
+                pcl_argfail(L, 1, "[%d][%d] must be a finite number, got %s", i + 1, j + 1, pcl_shown(L, lua_gettop(L)));
             lua_pop(L, 1);
         }
         lua_pop(L, 1);
@@ -583,73 +426,93 @@ static int l_det(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_ANY, .expect = "a list of maps from 3-D to 2-D"},
+                                           A_POINTS("images", 2, 2, 64), PCL_END};
+
 static int l_reconstruct(lua_State *L) {
-    const char *fn = "buimov.reconstruct";
-    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "views", "a list of maps from 3-D to 2-D");
-    if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "images", "a list of 2-D points");
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of maps from 3-D to 2-D, got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1);
-    if (n < 2 || n > 64) return pcl_error(L, "%s: argument #1 (views) must hold 2 to 64 views, got %d", fn, n);
-    if ((int)luaL_len(L, 2) != n) return pcl_error(L, "%s: argument #2 (images) must hold one point per view (%d), got %d", fn, n, (int)luaL_len(L, 2));
+    if (n < 2 || n > 64) return pcl_argfail(L, 1, "must hold 2 to 64 views, got %d", n);
+    if (a[1].n != n) return pcl_argfail(L, 2, "must hold one point per view (%d), got %d", n, a[1].n);
     pc_map v[64];
-    double xy[128];
     for (int i = 0; i < n; i++) {
         lua_geti(L, 1, i + 1);
         pc_map *f = pcl_tomap(L, -1);
         if (!f || f->nin != 3 || f->nout != 2)
-            pcl_error(L, "%s: argument #1 (views) item [%d] must be a map from 3-D to 2-D, got %s", fn, i + 1, pcl_shown(L, -1));
+            pcl_argfail(L, 1, "[%d] must be a map from 3-D to 2-D, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
         v[i] = *f;
-        lua_geti(L, 2, i + 1);
-        pcl_value *p = pcl_tovalue(L, -1);
-        if (!p || p->n != 2 || p->h[2] != 1)
-            pcl_error(L, "%s: argument #2 (images) item [%d] must be a 2-D point, got %s", fn, i + 1, pcl_shown(L, -1));
-        xy[2 * i] = p->h[0];
-        xy[2 * i + 1] = p->h[1];
-        lua_pop(L, 2);
+        lua_pop(L, 1);
     }
     double x[3], res;
-    int st = pc_reconstruct_point(n, v, xy, x, &res);
-    if (st == PC_ESINGULAR) return pcl_error(L, "%s: the views do not fix a point (their lines of sight are parallel)", fn);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    int st = pc_reconstruct_point(n, v, a[1].list, x, &res);
+    if (st == PC_ESINGULAR) return pcl_fail(L, "the views do not fix a point (their lines of sight are parallel)");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
     pcl_pushpoint(L, 3, x);
     lua_pushnumber(L, res);
     return 2;
 }
 
+static const pcl_arg calibrate_args[] = {A_POINTS("points", 3, 6, 0), A_POINTS("images", 2, 6, 0), PCL_END};
+
 static int l_calibrate(lua_State *L) {
-    const char *fn = "buimov.calibrate";
-    int n, m, d3 = 3, d2 = 2;
-    double *xyz = read_points(L, fn, 1, "points", 6, &n, &d3);
-    double *xy = read_points(L, fn, 2, "images", 6, &m, &d2);
-    if (m != n) return pcl_error(L, "%s: %d points but %d images", fn, n, m);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    if (a[1].n != n) return pcl_fail(L, "%d points but %d images", n, a[1].n);
     pc_map *cam = pcl_newmap(L);
     double rms;
-    int st = pc_calibrate_camera(n, xyz, xy, cam, &rms);
+    int st = pc_calibrate_camera(n, a[0].list, a[1].list, cam, &rms);
     if (st == PC_ESINGULAR)
-        return pcl_error(L, "%s: the points do not fix a camera (they lie in one plane, or the "
-                         "origin is on the camera's vanishing plane, where T44 = 0)", fn);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+        return pcl_fail(L, "the points do not fix a camera (they lie in one plane, or the origin is on the "
+                        "camera's vanishing plane, where T44 = 0)");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
     lua_pushnumber(L, rms);
     return 2;
 }
 
+static const pcl_fn plane[] = {
+    PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),
+    PCL_FN("plane.circle2r", l_circle2r, circle2r_args, "circle1, circle2", "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left."),
+    PCL_FN("plane.circle_slopes", l_circle_slopes, slopes_args, "circle [, circle2]", "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it)."),
+    PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise (a rational Bezier curve)."),
+    PCL_FN("plane.classify", l_classify, classify_args, "\"ellipse\"|\"parabola\"|\"hyperbola\", discriminant", "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1)."),
+    {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args,
+     .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
+    PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
+    {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).",
+     .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
+    PCL_FN("plane.ellipse", l_ellipse, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th) as rational quadratic pieces (exact), parameter th; A = B is a circle."),
+    PCL_FN("plane.parabola", l_parabola, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
+    PCL_FN("plane.hyperbola", l_hyperbola, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5) as rational quadratic pieces (exact)."),
+    PCL_FN("plane.points", l_points, points_args, "points", "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected)."),
+    PCL_END};
+
+static const pcl_fn book[] = {
+    PCL_FN("buimov.knots", l_knots, knots_args, "knots", "The book's integer knot vector of order k (§4.4): n + k + 1 knots, a repeated knot for each multiple vertex."),
+    PCL_FN("buimov.basis", l_basis, basis_args, "number", "The B-spline basis N_i,k(t) by the Cox-de Boor recursion (0/0 = 0, closed at t_max; i from 0 as in the book)."),
+    PCL_FN("buimov.bspline", l_bspline, knots_args, "curve", "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it."),
+    PCL_FN("buimov.bernstein", l_bernstein, bernstein_args, "number", "The Bernstein polynomial J_n,i(t) = C(n, i) t^i (1 - t)^(n - i) (§4.3)."),
+    PCL_FN("buimov.blend", l_blend, t_arg, "F1, F2, F3, F4", "The Hermite blending functions of a normalised segment (§5.5)."),
+    PCL_FN("buimov.hermite", l_hermite, hermite_args, "curve", "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default)."),
+    PCL_FN("buimov.hermite_coeffs", l_hermite_coeffs, hermite_args, "B1, B2, B3, B4", "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected)."),
+    PCL_FN("buimov.spline", l_spline, spline_args, "curve, tangents", "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given."),
+    PCL_FN("buimov.helix", l_helix, helix_args, "curve", "The helix (a cos t, a sin t, b t) (§4.1)."),
+    {.name = "buimov.sphere", .fn = l_sphere, .args = sphere_args, .sig = "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s", .help = "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default."},
+    PCL_FN("buimov.sphere_frame", l_sphere_frame, frame_args, "S, S_th, S_ph, twist, N", "The unit sphere's point, tangent, twist and normal vectors (§5.1, corrected; N = S_th x S_ph points inwards)."),
+    PCL_FN("buimov.det", l_det, det_args, "number", "The determinant of a square matrix (§1.2): the area factor of a 2x2 map (§1.7.4)."),
+    {.name = "buimov.reconstruct", .fn = l_reconstruct, .args = reconstruct_args,
+     .sig = "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual", .help = "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."},
+    PCL_FN("buimov.calibrate", l_calibrate, calibrate_args, "map, rms", "The camera (a map from 3-D to 2-D) sending six or more points of space to their images, by least squares with T44 = 1 (§2.8.6)."),
+    PCL_END};
+
 void pcl_open_buimov(lua_State *L) {
     int module = lua_gettop(L);
-    static const luaL_Reg plane[] = {
-        {"circle3", l_circle3},       {"circle2r", l_circle2r},       {"circle_slopes", l_circle_slopes},
-        {"arc3", l_arc3},             {"classify", l_classify},       {"rotate_conic", l_rotate_conic},
-        {"conic_value", l_conic_value}, {"conic_coef", l_conic_coef}, {"ellipse", l_ellipse},
-        {"parabola", l_parabola},     {"hyperbola", l_hyperbola},     {"points", l_points},
-        {NULL, NULL}};
     lua_newtable(L);
-    luaL_setfuncs(L, plane, 0);
+    pcl_register(L, -1, plane, 0);
     lua_setfield(L, module, "plane");
-    static const luaL_Reg book[] = {
-        {"knots", l_knots},           {"basis", l_basis},             {"bspline", l_bspline},
-        {"bernstein", l_bernstein},   {"blend", l_blend},             {"hermite", l_hermite},
-        {"hermite_coeffs", l_hermite_coeffs}, {"spline", l_spline},   {"helix", l_helix},
-        {"sphere", l_sphere},         {"sphere_frame", l_sphere_frame},
-        {"det", l_det},               {"reconstruct", l_reconstruct}, {"calibrate", l_calibrate},   {NULL, NULL}};
     lua_newtable(L);
-    luaL_setfuncs(L, book, 0);
+    pcl_register(L, -1, book, 0);
     lua_setfield(L, module, "buimov");
 }

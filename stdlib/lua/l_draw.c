@@ -528,7 +528,11 @@ static const char *const directions[] = {"c", "n", "ne", "e", "se", "s", "sw", "
 static const char *check_text(lua_State *L, int arg) {
     int t = lua_type(L, arg);
     if (t != LUA_TSTRING && t != LUA_TNUMBER) pcl_argerror(L, arg, "text", "a string");
-    return lua_tostring(L, arg);
+    size_t len;
+    const char *s = lua_tolstring(L, arg, &len);
+    /* the writers take C strings: a NUL would cut the label short in every one of them */
+    if (strlen(s) != len) pcl_argerror(L, arg, "text", "a string without NUL bytes");
+    return s;
 }
 
 static int opt_scale(lua_State *L, int arg) {

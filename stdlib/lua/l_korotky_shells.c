@@ -9,35 +9,34 @@
  * infinity of its direction, as the basis point Z of the z axis). */
 #include <math.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
 #include "pencils4.h"
 #include "conic_shells.h"
 #include "conic_props.h"
 
-/* The field `name` of the table at arg as a curve of dimension dim, or (allow_const) a point
- * or vector made a constant curve: a new reference the caller releases. */
-static pc_curve *field_curve(lua_State *L, const char *fn, int arg, const char *name, int dim,
-                             int allow_const) {
-    lua_getfield(L, arg, name);
-    pc_curve *c = pcl_tocurve(L, -1);
-    if (c) {
-        if (c->dim != dim)
-            pcl_error(L, "%s: field %s must be a %d-D curve, got a %d-D one", fn, name, dim, c->dim);
-        lua_pop(L, 1);
-        return pc_curve_retain(c);
-    }
-    pcl_value *v = allow_const ? pcl_tovalue(L, -1) : NULL;
-    if (!v || v->n != dim || !(v->h[dim] == 0 || v->h[dim] == 1))
-        pcl_error(L, "%s: field %s must be a %d-D curve%s, got %s", fn, name, dim,
-                  allow_const ? ", point or vector" : "", pcl_shown(L, lua_gettop(L)));
+/* A guide of dimension a->dim: a curve (out->obj), or a fixed point or vector (out->v, the
+ * weight snapped by the one rule) when a->lo is 1. */
+static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    pc_curve *c = pcl_tocurve(L, idx);
+    out->obj = c;
+    if (c) return c->dim == a->dim;
+    pcl_value *v = a->lo ? pcl_tovalue(L, idx) : NULL;
+    if (!v || v->n != a->dim) return 0;
+    memcpy(out->v, v->h, sizeof(double) * (size_t)(a->dim + 1));
+    return pcl_snap_weight(a->dim, out->v) != PC_KIND_WEIGHTED;
+}
+
+/* A new reference to the guide as a curve (a fixed value: a constant curve). */
+static pc_curve *guide_curve(lua_State *L, const pcl_val *g, int dim) {
+    if (g->obj) return pc_curve_retain(g->obj);
     double cp[2 * (PC_MAXDIM + 1)];
-    memcpy(cp, v->h, sizeof(double) * (size_t)(dim + 1));
-    memcpy(cp + dim + 1, v->h, sizeof(double) * (size_t)(dim + 1));
+    memcpy(cp, g->v, sizeof(double) * (size_t)(dim + 1));
+    memcpy(cp + dim + 1, g->v, sizeof(double) * (size_t)(dim + 1));
     int st;
-    c = pc_curve_bezier(dim, 2, cp, &st);
-    if (!c) pcl_statuserror(L, fn, st, name);
-    lua_pop(L, 1);
+    pc_curve *c = pc_curve_bezier(dim, 2, cp, &st);
+    if (!c) pcl_statuserror(L, pcl_name(L), st, NULL);
     return c;
 }
 
@@ -49,45 +48,41 @@ static const char *meet_why(int st) {
 
 /* ---- the key construction in 4-D --------------------------------------------------------- */
 
-static void read_pencil(lua_State *L, const char *fn, const char *name, pc_pencil_point *g) {
-    if (lua_getfield(L, 1, name) != LUA_TTABLE || luaL_len(L, -1) != 3)
-        pcl_error(L, "%s: field %s must be a list of three 4-D points, vectors or curves, got %s", fn,
-                  name, pcl_shown(L, lua_gettop(L)));
-    int t = lua_gettop(L);
+/* a pencil: three 4-D points, vectors or curves (the table in the argument keeps them alive) */
+static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
+    pc_pencil_point *g = (pc_pencil_point *)out->list;
+    static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4, .lo = 1};
     for (int i = 0; i < 3; i++) {
-        lua_geti(L, t, i + 1);
-        pc_curve *c = pcl_tocurve(L, -1);
-        pcl_value *v = c ? NULL : pcl_tovalue(L, -1);
-        if (c && c->dim == 4) {
-            g[i].c = c;
-        } else if (v && v->n == 4 && (v->h[4] == 0 || v->h[4] == 1)) {
-            g[i].c = NULL;
-            memcpy(g[i].h, v->h, sizeof g[i].h);
-        } else {
-            pcl_error(L, "%s: field %s [%d] must be a 4-D point, vector or curve, got %s", fn, name,
-                      i + 1, pcl_shown(L, lua_gettop(L)));
-        }
-        lua_pop(L, 1);   /* the table in the argument keeps the curve alive */
+        pcl_val v = {0};
+        lua_geti(L, idx, i + 1);
+        if (!read_guide(L, lua_gettop(L), &g4, &v))
+            pcl_keyfail(L, a->name, "[%d] must be a 4-D point, vector or curve, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+        lua_pop(L, 1);
+        g[i].c = v.obj;
+        if (!v.obj) memcpy(g[i].h, v.v, sizeof g[i].h);
     }
-    lua_pop(L, 1);
+    return 1;
 }
+#define PENCIL(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_pencil, .shown = "{g1, g2, g3}", \
+                    .expect = "a list of three 4-D points, vectors or curves"}
+static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
+static const pcl_arg pencils_args[] = {{.name = "pencils", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = pencil_keys}, PCL_END};
 
 static int l_two_pencils(lua_State *L) {
-    const char *fn = "korotky.two_pencils";
-    if (!lua_istable(L, 1))
-        return pcl_argerror_full(L, fn, 1, 1, "pencils", "a table {omega = {...}, delta = {...}}");
     pc_pencil_point om[3], de[3];
-    read_pencil(L, fn, "omega", om);
-    read_pencil(L, fn, "delta", de);
+    pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
+    PCL_READ(L, a);
     int st;
     pc_surface *s = pc_surface_two_pencils(om, de, &st);
-    if (!s) return pcl_statuserror(L, fn, st, NULL);
+    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
     /* a surface whose every meet fails is a mistake in the data: say so now */
     double out[5];
     st = s->fn(s->ud, .5, .5, 0, out);
     if (st != PC_OK) {
         pc_surface_release(s);
-        return pcl_error(L, "%s: no single meet at u = v = 0.5: %s", fn, meet_why(st));
+        return pcl_fail(L, "no single meet at u = v = 0.5: %s", meet_why(st));
     }
     pcl_pushsurface(L, s, "korotky.two_pencils");
     return 1;
@@ -95,150 +90,126 @@ static int l_two_pencils(lua_State *L) {
 
 /* ---- the rotational sweep and the ridge shell ---------------------------------------------- */
 
-static void field_vec3(lua_State *L, const char *fn, const char *name, int want_point, double *out) {
-    lua_getfield(L, 1, name);
-    pcl_value *v = pcl_tovalue(L, -1);
-    if (!v || v->n != 3 || v->h[3] != (want_point ? 1 : 0))
-        pcl_error(L, "%s: field %s must be a 3-D %s, got %s", fn, name, want_point ? "point" : "vector",
-                  pcl_shown(L, lua_gettop(L)));
-    memcpy(out, v->h, 3 * sizeof(double));
-    lua_pop(L, 1);
-}
+static const pcl_arg revolve_keys[] = {{.name = "A", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "B", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "nA", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "nB", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "ridge", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
+static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
 
 static int l_conic_revolve(lua_State *L) {
-    const char *fn = "korotky.conic_revolve";
-    if (!lua_istable(L, 1))
-        return pcl_argerror_full(L, fn, 1, 1, "data", "a table {A =, B =, nA =, nB =, ridge =}");
-    double A[3], B[3], nA[3], nB[3];
-    field_vec3(L, fn, "A", 1, A);
-    field_vec3(L, fn, "B", 1, B);
-    field_vec3(L, fn, "nA", 0, nA);
-    field_vec3(L, fn, "nB", 0, nB);
-    pc_curve *l = field_curve(L, fn, 1, "ridge", 3, 0);
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
     int st;
     double u = 0;
-    pc_surface *s = pc_surface_conic_revolve(A, B, nA, nB, l, &u, &st);
-    pc_curve_release(l);
+    pc_surface *s = pc_surface_conic_revolve(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &u, &st);
     if (!s) {
         const char *why = st == PC_ECOLLINEAR ? "the ridge point lies on the axis AB"
                           : st == PC_EDOMAIN  ? "no conic through A, B and the ridge point with those tangent planes"
                           : st == PC_ECOINCIDENT ? "A and B coincide"
                           : st == PC_EZERO    ? "a tangent plane's normal is the zero vector"
                                               : pc_strerror(st);
-        if (st == PC_ECOLLINEAR || st == PC_EDOMAIN)
-            return pcl_error(L, "%s: %s at u = %s", fn, why, pcl_pushnum(L, u));
-        return pcl_error(L, "%s: %s", fn, why);
+        if (st == PC_ECOLLINEAR || st == PC_EDOMAIN) return pcl_fail(L, "%s at u = %s", why, pcl_pushnum(L, u));
+        return pcl_fail(L, "%s", why);
     }
     pcl_pushsurface(L, s, "korotky.conic_revolve");
     return 1;
 }
 
+#define GUIDE(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_guide, .dim = 3, .lo = 1, \
+                   .expect = "a 3-D curve, point or vector"}
+static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
+                                     GUIDE("H"), GUIDE("Q"), PCL_END};
+static const pcl_arg ridge_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = ridge_keys}, PCL_END};
+
 static int l_ridge_shell(lua_State *L) {
-    const char *fn = "korotky.ridge_shell";
-    if (!lua_istable(L, 1))
-        return pcl_argerror_full(L, fn, 1, 1, "guides", "a table {U =, R =, V =, T1 =, T2 =, P =, H =, Q =}");
-    static const char *names[8] = {"U", "R", "V", "T1", "T2", "P", "H", "Q"};
-    pc_curve *c[8] = {0};
-    for (int i = 0; i < 8; i++) {
-        /* every field checked before the first curve is made, so that an error leaks none */
-        lua_getfield(L, 1, names[i]);
-        int ok = pcl_tocurve(L, -1) != NULL;
-        pcl_value *v = ok ? NULL : pcl_tovalue(L, -1);
-        if (!ok && !(v && v->n == 3 && (v->h[3] == 0 || v->h[3] == 1) && isfinite(v->h[0]) &&
-                     isfinite(v->h[1]) && isfinite(v->h[2])))
-            return pcl_error(L, "%s: field %s must be a 3-D curve, point or vector, got %s", fn, names[i],
-                             pcl_shown(L, lua_gettop(L)));
-        if (ok && pcl_tocurve(L, -1)->dim != 3)
-            return pcl_error(L, "%s: field %s must be a 3-D curve, got a %d-D one", fn, names[i],
-                             pcl_tocurve(L, -1)->dim);
-        lua_pop(L, 1);
-    }
-    for (int i = 0; i < 8; i++) c[i] = field_curve(L, fn, 1, names[i], 3, 1);
+    pcl_val a[9] = {0};
+    PCL_READ(L, a);   /* every guide checked before the first curve is made: an error leaks none */
+    pc_curve *c[8];
+    for (int i = 0; i < 8; i++) c[i] = guide_curve(L, &a[i + 1], 3);
     pc_ridge_shell g = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]};
     int st;
     double u = 0;
     pc_surface *s = pc_surface_ridge_shell(&g, &u, &st);
     for (int i = 0; i < 8; i++) pc_curve_release(c[i]);
     if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
-        return pcl_error(L, "%s: no conic arc of the profile at u = %s (%s)", fn, pcl_pushnum(L, u),
-                         st == PC_EDOMAIN ? "a T must lie between the tangent lines" : pc_strerror(st));
-    if (!s) return pcl_statuserror(L, fn, st, NULL);
+        return pcl_fail(L, "no conic arc of the profile at u = %s (%s)", pcl_pushnum(L, u),
+                        st == PC_EDOMAIN ? "a T must lie between the tangent lines" : pc_strerror(st));
+    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
     pcl_pushsurface(L, s, "korotky.ridge_shell");
     return 1;
 }
 
 /* ---- the conic's centre, axes and asymptotes ---------------------------------------------- */
 
+/* a 2-D conic arc (a rational quadratic Bezier curve, out->obj) or six finite numbers (out->v) */
+static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_curve *c = pcl_tocurve(L, idx);
+    out->obj = c;
+    if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && c->ncp == 3;
+    if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
+    for (int i = 0; i < 6; i++) {
+        lua_geti(L, idx, i + 1);
+        out->v[i] = lua_tonumber(L, -1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(out->v[i]))
+            pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+        lua_pop(L, 1);
+    }
+    return 1;
+}
+static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .kind = PCL_ANY, .read = read_conic,
+                                         .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
+                                        PCL_END};
+
+static void push_vectors(lua_State *L, const double (*v)[2]) {
+    lua_createtable(L, 2, 0);
+    for (int i = 0; i < 2; i++) {
+        pcl_pushvector(L, 2, v[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
 static int l_conic_elements(lua_State *L) {
-    const char *fn = "korotky.conic_elements";
-    double coef[6];
-    pc_curve *c = pcl_tocurve(L, 1);
-    if (c) {
-        if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || c->ncp != 3)
-            return pcl_argerror_full(L, fn, 1, 1, "arc", "a 2-D conic arc (a rational quadratic Bezier curve)");
-        int st = pc_conic_from_arc(c->cp, coef);
-        if (st == PC_ECOLLINEAR) return pcl_error(L, "%s: the arc is a straight segment (weight 0): no conic", fn);
-        if (st != PC_OK) return pcl_statuserror(L, fn, st, "argument #1 (arc)");
-    } else if (lua_istable(L, 1) && luaL_len(L, 1) == 6) {
-        for (int i = 0; i < 6; i++) {
-            lua_geti(L, 1, i + 1);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                return pcl_error(L, "%s: argument #1 (coefficients) [%d] must be a finite number, got %s", fn,
-                                 i + 1, pcl_shown(L, lua_gettop(L)));
-            coef[i] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-    } else {
-        return pcl_argerror_full(L, fn, 1, 1, "arc", "a 2-D conic arc or the coefficients {a, b, c, d, e, f}");
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    double *coef = a[0].v;
+    if (a[0].obj) {
+        int st = pc_conic_from_arc(((pc_curve *)a[0].obj)->cp, coef);
+        if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
+        if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1 (arc)");
     }
     pc_conic_elements el;
     int st = pc_conic_elements_of(coef, &el);
-    if (st == PC_EDOMAIN) return pcl_error(L, "%s: a degenerate conic (a line pair, or no real points)", fn);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, "argument #1");
-    lua_createtable(L, 0, 6);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1");
     static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
+    lua_createtable(L, 0, 6);
     lua_pushstring(L, kinds[el.kind]);
     lua_setfield(L, -2, "kind");
-    lua_createtable(L, 6, 0);
-    for (int i = 0; i < 6; i++) {
-        lua_pushnumber(L, coef[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_push_numbers(L, 6, coef);
     lua_setfield(L, -2, "coef");
     if (el.central) {
         pcl_pushpoint(L, 2, el.center);
         lua_setfield(L, -2, "center");
-        lua_createtable(L, 2, 0);
-        for (int i = 0; i < 2; i++) {
-            lua_pushnumber(L, el.semi[i]);
-            lua_rawseti(L, -2, i + 1);
-        }
+        pcl_push_numbers(L, 2, el.semi);
         lua_setfield(L, -2, "semi");
     }
-    lua_createtable(L, 2, 0);
-    for (int i = 0; i < 2; i++) {
-        pcl_pushvector(L, 2, el.axis[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
+    push_vectors(L, (const double (*)[2])el.axis);
     lua_setfield(L, -2, "axes");
     if (el.nasym) {
-        lua_createtable(L, 2, 0);
-        for (int i = 0; i < 2; i++) {
-            pcl_pushvector(L, 2, el.asym[i]);
-            lua_rawseti(L, -2, i + 1);
-        }
+        push_vectors(L, (const double (*)[2])el.asym);
         lua_setfield(L, -2, "asymptotes");
     }
     return 1;
 }
 
+static const pcl_fn fns[] = {
+    PCL_FN("korotky.conic_elements", l_conic_elements, elements_args, "{kind, coef, center, axes, semi, asymptotes}", "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions."),
+    PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
+    PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
+    PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
+    PCL_END};
+
 /* Called by pcl_open_korotky with the korotky table on top of the stack. */
-void pcl_korotky_shells(lua_State *L) {
-    static const luaL_Reg fns[] = {
-        {"two_pencils", l_two_pencils},
-        {"conic_revolve", l_conic_revolve},
-        {"ridge_shell", l_ridge_shell},
-        {"conic_elements", l_conic_elements},
-        {NULL, NULL}};
-    luaL_setfuncs(L, fns, 0);
-}
+void pcl_korotky_shells(lua_State *L) { pcl_register(L, -1, fns, 0); }

@@ -10,29 +10,22 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_point.h"
 #include "simplex.h"
 
-#define SMT lua_upvalueindex(1)
+static const char REGKEY[] = "pointcalc.simplex";   /* the metatable in the registry */
 
 /* A genuine simplex's block is exactly pc_simplex_size(n, k) (pcl.h: forged userdata). */
 static pc_simplex *tosimplex(lua_State *L, int idx) {
-    pc_simplex *s = pcl_testudata(L, idx, SMT);
+    pc_simplex *s = luaL_testudata(L, idx, REGKEY);
     if (!s) return NULL;
     size_t len = lua_rawlen(L, idx);
     int ok = len >= sizeof(pc_simplex) && s->n >= 1 && s->n <= PC_MAXDIM && s->k >= 1 &&
              s->k <= s->n && len == pc_simplex_size(s->n, s->k);
     return pcl_genuine(L, idx, s, ok, "simplex");
 }
-
-static pc_simplex *checkself(lua_State *L) {
-    pc_simplex *s = tosimplex(L, 1);
-    if (!s) {
-        const char *f = pcl_fname(L);
-        pcl_error(L, "%s: must be called on a simplex, as S:%s(...)", f, f);
-    }
-    return s;
-}
+static void *self_simplex(lua_State *L, int idx) { return tosimplex(L, idx); }
 
 static const char *shape(int k) {
     switch (k) {
@@ -43,57 +36,69 @@ static const char *shape(int k) {
     }
 }
 
+/* simplex(C, A, B, ...): the vertices after C are read one by one in C's dimension */
+static const pcl_arg simplex_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), PCL_END};
+
 static int l_simplex(lua_State *L) {
-    int m = lua_gettop(L);
-    double v[(PC_MAXDIM + 1) * PC_MAXDIM];
-    if (m < 1) pcl_argerror(L, 1, "C", "a point");
-    int n = pcl_checkloc(L, 1, "C", 0, 0, v);
-    if (m < 2) pcl_argerror(L, 2, "A", "a point");
-    int k = m - 1;
+    int m = lua_gettop(L), k = m - 1;
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
     if (k > n)
-        return pcl_error(L, "%s: %d points in %d-D are always dependent: a simplex has at most "
-                          "dimension + 1 = %d vertices", pcl_fname(L), m, n, n + 1);
-    for (int i = 1; i <= k; i++) pcl_checkloc(L, i + 1, NULL, n, 1, v + i * n);
+        return pcl_fail(L, "%d points in %d-D are always dependent: a simplex has at most dimension + 1 = %d vertices", m, n, n + 1);
+    double v[(PC_MAXDIM + 1) * PC_MAXDIM];
+    static const pcl_arg vertex = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
+    memcpy(v, a[0].v, sizeof(double) * (size_t)n);
+    memcpy(v + n, a[1].v, sizeof(double) * (size_t)n);
+    for (int i = 3; i <= m; i++) {
+        pcl_val p;
+        pcl_readone(L, i, i, 0, &vertex, n, &p);
+        memcpy(v + (i - 1) * n, p.v, sizeof(double) * (size_t)n);
+    }
     pc_simplex *s = lua_newuserdatauv(L, pc_simplex_size(n, k), 0);
     int st = pc_simplex_init(s, n, k, v);
     if (st == PC_ECOINCIDENT) {
         for (int i = 1; i <= k; i++)
             if (pc_dist(n, v, v + i * n) == 0)
-                return pcl_error(L, "%s: argument #%d coincides with argument #1 (the initial "
-                                  "point): a degenerate simplex", pcl_fname(L), i + 1);
+                return pcl_fail(L, "argument #%d coincides with argument #1 (the initial point): a degenerate simplex", i + 1);
     }
     if (st == PC_ECOLLINEAR) {
         const char *how = k == 2 ? "collinear" : k == 3 ? "coplanar" : "dependent";
-        return pcl_error(L, "%s: the %d points are %s: a flat (degenerate) %s", pcl_fname(L), m,
-                          how, shape(k));
+        return pcl_fail(L, "the %d points are %s: a flat (degenerate) %s", m, how, shape(k));
     }
-    if (st != PC_OK) return pcl_error(L, "%s: %s", pcl_fname(L), pc_strerror(st));
-    lua_pushvalue(L, SMT);
-    lua_setmetatable(L, -2);
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    luaL_setmetatable(L, REGKEY);
     return 1;
+}
+
+/* Numbers #1..#m at the stack indices 2..m + 1 (after the simplex) into x. */
+static void numbers(lua_State *L, int m, const char *label, double *x) {
+    for (int i = 0; i < m; i++) {
+        char what[24];
+        pcl_arg num = {.kind = PCL_NUMBER, .name = label};
+        if (label) {                          /* the label only on the error path */
+            if (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2))) {
+                snprintf(what, sizeof what, "%s %d", label, i + 1);
+                num.name = what;
+            }
+        }
+        pcl_val v;
+        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);
+        x[i] = v.x;
+    }
 }
 
 /* S(p, q, ...): the point by its natural parameters.  One more number may follow and is
  * ignored, so that S(S:params(M)) works (params returns the residual last); with
  * coefficients summing to 1 it is also the initial point's barycentric coefficient, which
- * the natural parameters already imply.  The simplex moves to the top of the stack so that
- * the parameters are arguments #1..#k, as the script writes them. */
+ * the natural parameters already imply. */
 static int l_call(lua_State *L) {
-    pc_simplex *s = checkself(L);
-    lua_rotate(L, 1, -1);
+    pc_simplex *s = pcl_read(L, NULL, 0);
     int m = lua_gettop(L) - 1, k = s->k;
     if (m != k && m != k + 1)
-        return pcl_error(L, "%s: a %d-simplex takes %d natural parameters, got %d (for "
-                          "barycentric parameters use S:bary)", pcl_fname(L), k, k, m);
+        return pcl_fail(L, "a %d-simplex takes %d natural parameters, got %d (for barycentric parameters use S:bary)", k, k, m);
     double p[PC_MAXDIM + 1];
-    for (int i = 0; i < m; i++) {
-        p[i] = lua_tonumber(L, i + 1);
-        if (lua_type(L, i + 1) != LUA_TNUMBER || !isfinite(p[i])) {
-            char what[24];                        /* the label only on the error path */
-            snprintf(what, sizeof what, "parameter %d", i + 1);
-            pcl_checkfinite(L, i + 1, what);
-        }
-    }
+    numbers(L, m, "parameter", p);
     pcl_value *r = pcl_newvalue(L, s->n);
     pc_simplex_eval(s, p, r->h);
     r->h[s->n] = 1.0;
@@ -102,26 +107,25 @@ static int l_call(lua_State *L) {
 
 /* S:bary(p, q, ..., r): coefficients of vertices 2..k+1, then of the initial point. */
 static int l_bary(lua_State *L) {
-    pc_simplex *s = checkself(L);
+    pc_simplex *s = pcl_read(L, NULL, 0);
     int k = s->k, m = lua_gettop(L) - 1;
-    if (m != k + 1)
-        return pcl_error(L, "%s: a %d-simplex takes %d barycentric parameters, got %d",
-                          pcl_fname(L), k, k + 1, m);
+    if (m != k + 1) return pcl_fail(L, "a %d-simplex takes %d barycentric parameters, got %d", k, k + 1, m);
     double c[PC_MAXDIM + 1];
-    for (int i = 0; i <= k; i++) c[i] = pcl_checkfinite(L, i + 2, NULL);
+    numbers(L, m, NULL, c);
     pcl_value *r = pcl_newvalue(L, s->n);
     pc_simplex_bary(s, c, r->h);
     return 1;
 }
 
+static const pcl_arg params_args[] = {A_POINT("M", 0), PCL_END};
+
 static int l_params(lua_State *L) {
-    pc_simplex *s = checkself(L);
-    double m[PC_MAXDIM], p[PC_MAXDIM], res;
-    int n = pcl_checkloc(L, 2, "M", 0, 0, m);
-    if (n != s->n)
-        return pcl_error(L, "%s: argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions "
-                          "cannot be mixed", pcl_fname(L), n, s->n);
-    pc_simplex_params(s, m, p, &res);
+    pcl_val a[1] = {0};
+    pc_simplex *s = PCL_READ(L, a);
+    double p[PC_MAXDIM], res;
+    if (a[0].n != s->n)
+        return pcl_fail(L, "argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", a[0].n, s->n);
+    pc_simplex_params(s, a[0].v, p, &res);
     luaL_checkstack(L, s->k + 1, NULL);
     for (int i = 0; i < s->k; i++) lua_pushnumber(L, p[i]);
     lua_pushnumber(L, res);
@@ -129,23 +133,21 @@ static int l_params(lua_State *L) {
 }
 
 static int l_measure(lua_State *L) {
-    pc_simplex *s = checkself(L);
-    lua_pushnumber(L, pc_simplex_measure(s));
+    lua_pushnumber(L, pc_simplex_measure(pcl_read(L, NULL, 0)));
     return 1;
 }
 
 static int l_ratio(lua_State *L) {
-    pc_simplex *s = checkself(L);
+    pc_simplex *s = pcl_read(L, NULL, 0);
     int k = s->k, n = s->n, m = lua_gettop(L) - 1;
-    if (m != k + 1)
-        return pcl_error(L, "%s: a %d-simplex compares with %d points, got %d", pcl_fname(L), k,
-                          k + 1, m);
+    if (m != k + 1) return pcl_fail(L, "a %d-simplex compares with %d points, got %d", k, k + 1, m);
     double pts[(PC_MAXDIM + 1) * PC_MAXDIM], res;
+    static const pcl_arg pt = {.kind = PCL_POINT};
     for (int i = 0; i <= k; i++) {
-        int d = pcl_checkloc(L, i + 2, NULL, 0, 0, pts + i * n);
-        if (d != n)
-            return pcl_error(L, "%s: argument #%d is %d-D, but the simplex is in %d-D: dimensions "
-                              "cannot be mixed", pcl_fname(L), i + 1, d, n);
+        pcl_val v;
+        pcl_readone(L, i + 2, i + 1, 0, &pt, 0, &v);
+        if (v.n != n) return pcl_fail(L, "argument #%d is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", i + 1, v.n, n);
+        memcpy(pts + i * n, v.v, sizeof(double) * (size_t)n);
     }
     lua_pushnumber(L, pc_simplex_ratio(s, pts, &res));
     lua_pushnumber(L, res);
@@ -168,7 +170,7 @@ static int l_index(lua_State *L) {
         return 1;
     }
     lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(2));
+    lua_rawget(L, lua_upvalueindex(1));
     return 1;
 }
 
@@ -198,34 +200,31 @@ static int l_tostring(lua_State *L) {
     return 1;
 }
 
-static const luaL_Reg simplex_methods[] = {
-    {"bary", l_bary}, {"params", l_params}, {"measure", l_measure}, {"ratio", l_ratio},
-    {NULL, NULL}
-};
+#define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, \
+                                      .self = self_simplex, .selftype = "simplex"}
+static const pcl_fn methods[] = {
+    METHOD("S:bary", l_bary, NULL, "S:bary(p, q, ..., r) -> value", "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1)."),
+    METHOD("S:params", l_params, params_args, "S:params(M) -> p, q, ..., residual", "The natural parameters of M (least squares off the simplex's flat) and M's distance from that flat."),
+    METHOD("S:measure", l_measure, NULL, "S:measure() -> number", "Length, area, volume...: signed when the simplex is full-dimensional."),
+    METHOD("S:ratio", l_ratio, NULL, "S:ratio(P1, P2, ...) -> ratio, residual", "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own."),
+    PCL_END};
+static const pcl_fn call[] = {{.name = "S", .fn = l_call, .self = self_simplex, .selftype = "simplex", .key = "__call",
+                               .topic = "S(p, q)", .callname = 1, .sig = "S(p, q, ...) -> point", .help = "The point of simplex S with natural parameters p, q, ..."}, PCL_END};
+static const pcl_fn ctor[] = {{.name = "simplex", .fn = l_simplex, .args = simplex_args, .sig = "simplex(C, A, B, ...) -> S", .help = "A simplex with initial point C (the book's simplex CAB): S(p, q) = (A - C)p + (B - C)q + C."}, PCL_END};
 
 void pcl_open_simplex(lua_State *L) {
     int module = lua_gettop(L);
-    lua_newtable(L);                                     /* the metatable */
+    luaL_newmetatable(L, REGKEY);                        /* the metatable */
     int mt = lua_gettop(L);
     lua_pushliteral(L, "simplex");
-    lua_setfield(L, mt, "__name");
-    lua_pushliteral(L, "simplex");
     lua_setfield(L, mt, "__metatable");
-    static const luaL_Reg meta[] = {
-        {"__call", l_call}, {"__len", l_len}, {"__tostring", l_tostring}, {NULL, NULL}
-    };
-    lua_pushvalue(L, mt);
-    luaL_setfuncs(L, meta, 1);
+    static const luaL_Reg meta[] = {{"__len", l_len}, {"__tostring", l_tostring}, {NULL, NULL}};
+    luaL_setfuncs(L, meta, 0);
+    pcl_register(L, mt, call, 0);
     lua_newtable(L);                                     /* methods */
-    int methods = lua_gettop(L);
-    lua_pushvalue(L, mt);
-    luaL_setfuncs(L, simplex_methods, 1);
-    lua_pushvalue(L, mt);
-    lua_pushvalue(L, methods);
-    lua_pushcclosure(L, l_index, 2);
+    pcl_register(L, -1, methods, 0);
+    lua_pushcclosure(L, l_index, 1);
     lua_setfield(L, mt, "__index");
-    lua_pushvalue(L, mt);
-    lua_pushcclosure(L, l_simplex, 1);
-    lua_setfield(L, module, "simplex");
+    pcl_register(L, module, ctor, 0);
     lua_settop(L, module);
 }

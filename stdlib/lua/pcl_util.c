@@ -4,13 +4,57 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include "pcl.h"
+#include "pcl_args.h"
+
+/* The global name of the function at the top ("label", "qb.rnd"), looked up in _G and its
+ * tables, or NULL; pops the function.  Only for a function Lua cannot name: pcall(label, 5). */
+static const char *global_name(lua_State *L) {
+    int f = lua_gettop(L);
+    const char *found = NULL;
+    lua_pushglobaltable(L);
+    lua_pushnil(L);
+    while (lua_next(L, f + 1)) {           /* a global first: label, not pointcalc.label */
+        if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f)) {
+            found = lua_tostring(L, -2);   /* a key of _G, which keeps it alive */
+            lua_settop(L, f - 1);
+            return found;
+        }
+        lua_pop(L, 1);
+    }
+    lua_pushnil(L);
+    while (!found && lua_next(L, f + 1)) {
+        if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f)) {
+            found = lua_pushfstring(L, "%s", lua_tostring(L, -2));
+        } else if (lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TTABLE &&
+                   strcmp(lua_tostring(L, -2), "_G") && strcmp(lua_tostring(L, -2), "package")) {
+            lua_pushnil(L);
+            while (!found && lua_next(L, -2)) {
+                if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f))
+                    found = lua_pushfstring(L, "%s.%s", lua_tostring(L, -4), lua_tostring(L, -2));
+                else lua_pop(L, 1);
+            }
+            if (found) break;
+        }
+        if (!found) lua_pop(L, 1);
+    }
+    if (!found) {
+        lua_settop(L, f - 1);
+        return NULL;
+    }
+    lua_replace(L, f);                      /* keep the name where the function was */
+    lua_settop(L, f);
+    return found;
+}
 
 const char *pcl_fname(lua_State *L) {
     lua_Debug ar;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
-    /* called from C, e.g. through the safe mode's wrapper of save: the name the script used
-     * is the caller's */
+    /* called from C: by pcall(label, 5) (the name is the function's own), or through the
+     * safe mode's wrapper of save (the name the script used is the caller's) */
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "f", &ar)) {
+        const char *g = global_name(L);
+        if (g) return g;
+    }
     if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
         return ar.name;
     return "pointcalc";
@@ -219,11 +263,17 @@ static int tk_fielderror(lua_State *L) {
                      luaL_checkstring(L, 2), luaL_checkstring(L, 3), value);
 }
 
+/* _tk.global_hint(msg): "(did you mean 'label'?)" for a misspelt global, or nil (the REPL) */
+static int tk_global_hint(lua_State *L) {
+    if (!pcl_global_hint(L, luaL_checkstring(L, 1))) lua_pushnil(L);
+    return 1;
+}
+
 void pcl_open_errors(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
     static const luaL_Reg fns[] = {{"raise", tk_raise}, {"shown", tk_shown},
-                                   {"argerror", tk_argerror}, {"fielderror", tk_fielderror},
+                                   {"argerror", tk_argerror}, {"fielderror", tk_fielderror}, {"global_hint", tk_global_hint},
                                    {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
     lua_settop(L, module);

@@ -1,6 +1,6 @@
 /* luaopen_pointcalc: builds the module table from the binding files, then runs the Lua-side
  * helpers embedded from the .lua files of stdlib/lua (each receives the table as its argument). */
-#include "pcl.h"
+#include "pcl_args.h"
 #include <stdio.h>
 #include "pcl_embed.h"
 
@@ -35,6 +35,8 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_buimov(L);
     pcl_open_curvilinear(L);
     pcl_open_complex(L);
+    pcl_push_decls(L);            /* the declarations, for interp/help.lua */
+    lua_setfield(L, -2, "_decl");
     run_lua_helpers(L);
     lua_pushliteral(L, "pointcalc " PCL_VERSION);
     lua_setfield(L, -2, "_VERSION");

@@ -206,7 +206,7 @@ def main():
     expect(out == "stdin:1: circle: argument #3 (radius) must be a non-negative number, got nil",
            "an argument error, without a useless traceback", repr(out))
     out = r.line("circel(320, 240, 10)")
-    expect(out == "stdin:1: attempt to call a nil value (global 'circel')\n(did you mean circle?)",
+    expect(out == "stdin:1: attempt to call a nil value (global 'circel')\n(did you mean 'circle'?)",
            "a misspelt name gets a suggestion", repr(out))
     out = r.line("1 + 1")
     expect(out == "2", "the session goes on after errors", repr(out))

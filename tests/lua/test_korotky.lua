@@ -144,7 +144,7 @@ camera(nil)
 err(function() korotky.poly_spline({P(1, 1), P(1, 2)}) end,
     "korotky.poly_spline: argument #1 (points) [2] must lie right of the point before (x must increase)")
 err(function() korotky.poly_spline(pts, {ends = "periodic"}) end,
-    "korotky.poly_spline: option ends must be \"natural\" or \"clamped\", got string")
+    "korotky.poly_spline: option 'ends' must be \"natural\" or \"clamped\", got \"periodic\"")
 err(function() korotky.poly_spline(pts, {ends = "clamped"}) end,
     "korotky.poly_spline: clamped ends need the end slopes s0 and s1 (numbers)")
 err(function() korotky.poly_spline({P(1, 1)}) end,
@@ -160,25 +160,25 @@ err(function() korotky.ferguson_tangents(pts, {1.134, -2.84, .985, -1.8154, -2.4
 err(function() korotky.ferguson_tangents(pts, {1.134, V(0, 0), .985, -1.8154, -2.46}) end,
     "korotky.ferguson_tangents: the tangent is the zero vector at knot #2")
 err(function() korotky.ferguson_lambda(pts, {TA = 1, TE = 1, lambda = {1, 0, 1}}) end,
-    "korotky.ferguson_lambda: option lambda [2] (at knot #3) must be positive")
+    "korotky.ferguson_lambda: option 'lambda' [2] (at knot #3) must be positive")
 err(function() korotky.ferguson_lambda(pts, {TA = 1, TE = 1, lambda = {1, 1}}) end,
-    "korotky.ferguson_lambda: option lambda must hold 3 numbers, got 2")
+    "korotky.ferguson_lambda: option 'lambda' must hold 3 numbers, got 2")
 err(function() korotky.ferguson_substitution(pts, tg3, 1, 0) end,
     "korotky.ferguson_substitution: argument #4 (z1) must be a positive number, got 0")
 err(function() korotky.ferguson_substitution(pts, tg3, 1, 2, "mid") end,
-    "korotky.ferguson_substitution: argument #5 (root) must be \"min\" or \"max\", got string")
+    "korotky.ferguson_substitution: argument #5 (root) must be \"min\" or \"max\", got \"mid\"")
 err(function() korotky.ferguson(pts, tg3, {1, 2}) end,
     "korotky.ferguson: argument #3 (moduli) must hold 8 numbers, got 2")
 err(function() korotky.elastic({P(0, 0), P(0, 0), P(1, 1)}) end,
     "korotky.elastic: two consecutive points coincide")
 err(function() korotky.elastic(pts, {pieces = 9}) end,
-    "korotky.elastic: option pieces must be 1 to 4, got 9")
+    "korotky.elastic: option 'pieces' must be an integer from 1 to 4, got 9")
 err(function() korotky.elastic(pts, {pieces = 2.5}) end,
-    "korotky.elastic: option pieces must be 1 to 4, got 2.5")
+    "korotky.elastic: option 'pieces' must be an integer from 1 to 4, got 2.5")
 err(function() korotky.deviation(c7, 3) end,
     "korotky.deviation: argument #2 (reference) must be a curve, got 3")
 err(function() korotky.deviation(c7, sp) end,
-    "korotky.deviation: argument #2 (reference) is 3-D, but argument #1 is 2-D (mixed dimensions)")
+    "korotky.deviation: argument #2 (reference) is 3-D, but argument #1 (model) is 2-D (mixed dimensions)")
 err(function() korotky.conic_arc(P(0, 0), V(1, 0), P(0, 0), V(0, 1), P(1, 1)) end,
     "korotky.conic_arc: U and V coincide")
 err(function() korotky.conic_arc(P(0, 0), V(1, sqrt(3)), P(2, 0), V(-1, sqrt(3)), P(-1, 1)) end,
@@ -186,15 +186,15 @@ err(function() korotky.conic_arc(P(0, 0), V(1, sqrt(3)), P(2, 0), V(-1, sqrt(3))
 err(function() korotky.conic_arc(P(0, 3, 0), V(0, 1, 1), P(4, 3, 0), V(0, 0, 1), P(2, 3, 2)) end,
     "korotky.conic_arc: the tangents must lie in the plane of U, V and T")
 err(function() korotky.conic_arc(P(0, 0), P(1, 0), P(2, 0), V(0, 1), P(1, 1)) end,
-    "conic_arc: argument #2 (tangent at U) must be a vector (weight 0), got P(1, 0)")
+    "korotky.conic_arc: argument #2 (tU) must be a vector, got P(1, 0); a vector has weight 0: a difference of points is a vector, e.g. B - A")
 err(function() korotky.dome_rect(0, 1, 1) end,
     "korotky.dome_rect: argument #1 (a0) must be a positive number, got 0")
 err(function() korotky.dome_tri(P(0, 0), P(1, 0), P(2, 0), 1) end,
     "korotky.dome_tri: the triangle ABC is flat in plan")
 err(function() korotky.dome_tri(P(0, 0), P(1, 0), P(0, 1), P(1, 1, 1)) end,
-    "korotky.dome_tri: argument #4 (apex) must stand above the inside of the triangle, got P(1, 1, 1)")
+    "korotky.dome_tri: argument #4 (h | D) must stand above the inside of the triangle, got P(1, 1, 1)")
 err(function() korotky.conic_sweep{U = c7} end,
-    "korotky.conic_sweep: field U must be a 3-D curve, got a 2-D one")
+    "korotky.conic_sweep: option 'U' must be a 3-D curve, got a 2-D one")
 err(function()
       korotky.conic_sweep{U = seg(P(0, 0, 0), P(0, 4, 0)), V = seg(P(6, 0, 0), P(6, 4, 0)),
                           T = seg(P(3, 0, 2), P(-3, 4, -3)),

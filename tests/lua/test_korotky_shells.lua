@@ -118,30 +118,30 @@ end
 
 -- errors
 err(function() korotky.two_pencils{omega = {C, foot}, delta = {X, luff, leech}} end,
-    "korotky.two_pencils: field omega must be a list of three 4-D points, vectors or curves, got table")
+    "korotky.two_pencils: option 'omega' must be a list of three 4-D points, vectors or curves, got table")
 err(function() korotky.two_pencils{omega = {C, foot, P(1, 2, 3)}, delta = {X, luff, leech}} end,
-    "korotky.two_pencils: field omega [3] must be a 4-D point, vector or curve, got P(1, 2, 3)")
+    "korotky.two_pencils: option 'omega' [3] must be a 4-D point, vector or curve, got P(1, 2, 3)")
 err(function() korotky.two_pencils{omega = {C, foot, Z}, delta = {C, Z, luff}} end,
     "korotky.two_pencils: no single meet at u = v = 0.5: the planes share a line")
 err(function() korotky.two_pencils(3) end,
-    "korotky.two_pencils: argument #1 (pencils) must be a table {omega = {...}, delta = {...}}, got 3")
+    "korotky.two_pencils: argument #1 (pencils) must be a table {omega =, delta =}, got 3")
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = V(0, 1, 0), nB = V(0, 1, 0),
                                      ridge = bezier{P(0, 0, 0), P(1, 0, 1)}} end,
     "korotky.conic_revolve: the ridge point lies on the axis AB at u = 0")
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = V(0, 0, 1), nB = V(0, 1, 0), ridge = ridge} end,
     "korotky.conic_revolve: no conic through A, B and the ridge point with those tangent planes at u = 0")
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = P(0, 1, 0), nB = V(0, 1, 0), ridge = ridge} end,
-    "korotky.conic_revolve: field nA must be a 3-D vector, got P(0, 1, 0)")
+    "korotky.conic_revolve: option 'nA' must be a 3-D vector, got P(0, 1, 0); a vector has weight 0: a difference of points is a vector, e.g. B - A")
 err(function() korotky.conic_revolve{A = AA, B = BB, nA = V(0, 1, 0), nB = V(0, 1, 0), ridge = c7} end,
-    "korotky.conic_revolve: field ridge must be a 3-D curve, got a 2-D one")
+    "korotky.conic_revolve: option 'ridge' must be a 3-D curve, got a 2-D one")
 err(function() korotky.ridge_shell{U = P(0, 0, 0)} end,
-    "korotky.ridge_shell: field R must be a 3-D curve, point or vector, got nil")
+    "korotky.ridge_shell: option 'R' must be a 3-D curve, point or vector, got nil")
 err(function()
       korotky.ridge_shell{U = P(0, -2, 0), R = P(0, 0, 1.5), V = P(0, 2, 0), T1 = P(0, -3, 3),
                           T2 = P(0, 1, .75), P = V(0, 0, 1), H = V(0, 1, 0), Q = V(0, 0, 1)}
     end, "korotky.ridge_shell: no conic arc of the profile at u = 0 (a T must lie between the tangent lines)")
 err(function() korotky.conic_elements(c7) end,
-    "korotky.conic_elements: argument #1 (arc) must be a 2-D conic arc (a rational quadratic Bezier curve)")
+    "korotky.conic_elements: argument #1 (arc | {a, b, c, d, e, f}) must be a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}, got curve")
 err(function() korotky.conic_elements({1, 0, -1, 0, 0, 0}) end,
     "korotky.conic_elements: a degenerate conic (a line pair, or no real points)")
 err(function() korotky.conic_elements(korotky.conic_arc(P(0, 0), V(1, 1), P(2, 0), V(-1, 1), P(1, 0))) end,

@@ -1,0 +1,694 @@
+/* The declared argument layer (pcl_args.h): registration, the one reader of declared
+ * arguments, one wording of every message, and the registry of declarations :help reads. */
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include "pcl_args.h"
+#include "pcl_curve.h"
+#include "pcl_point.h"
+
+#define DECL_KEY "pointcalc.decl"      /* registry: name -> {sig =, desc =} */
+#define MAXLIST 100000                 /* no list of a binding is longer */
+
+/* ---- the running declaration ------------------------------------------------------------- */
+
+/* The declaration of the running C function: its upvalue 1, trusted only when the running
+ * function is the one it declares (debug.setupvalue could swap another's in). */
+static const pcl_fn *current(lua_State *L) {
+    const pcl_fn *d = lua_touserdata(L, lua_upvalueindex(1));
+    lua_Debug ar;
+    if (d && lua_getstack(L, 0, &ar) && lua_getinfo(L, "f", &ar)) {
+        lua_CFunction f = lua_tocfunction(L, -1);
+        lua_pop(L, 1);
+        if (f == d->fn) return d;
+    }
+    luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
+    return NULL;
+}
+
+/* The declared name; for a __call (callname) the variable the script called, when known:
+ * "iso: argument #1 is 2-D, ..." for iso(P(1, 2)). */
+const char *pcl_name(lua_State *L) {
+    const pcl_fn *d = current(L);
+    lua_Debug ar;
+    if (d->callname && lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name &&
+        ar.namewhat[0] && strcmp(ar.namewhat, "method") != 0)
+        return ar.name;
+    return d->name;
+}
+
+static int vfail(lua_State *L, const char *prefix, const char *fmt, va_list ap) {
+    pcl_pushwhere(L);
+    lua_pushstring(L, prefix);
+    lua_pushvfstring(L, fmt, ap);
+    lua_concat(L, 3);
+    return lua_error(L);
+}
+
+int pcl_fail(lua_State *L, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    const char *prefix = lua_pushfstring(L, "%s: ", pcl_name(L));
+    return vfail(L, prefix, fmt, ap);
+}
+
+static const char *arg_label(lua_State *L, int shown, const char *name) {
+    return name ? lua_pushfstring(L, "argument #%d (%s)", shown, name)
+                : lua_pushfstring(L, "argument #%d", shown);
+}
+
+int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
+    const pcl_fn *d = current(L);
+    va_list ap;
+    va_start(ap, fmt);
+    const char *prefix = lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, d->args[k - 1].name));
+    return vfail(L, prefix, fmt, ap);
+}
+
+int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    const char *prefix = lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key);
+    return vfail(L, prefix, fmt, ap);
+}
+
+/* ---- nearest names ------------------------------------------------------------------------ */
+
+/* Edit distance, case-insensitive, a swap of neighbours counting as one edit (lrep -> lerp). */
+static int distance(const char *a, const char *b) {
+    int n = (int)strlen(a), m = (int)strlen(b);
+    if (n > 40 || m > 40) return 99;
+    int d[41][41];
+    for (int i = 0; i <= n; i++) d[i][0] = i;
+    for (int j = 0; j <= m; j++) d[0][j] = j;
+    for (int i = 1; i <= n; i++)
+        for (int j = 1; j <= m; j++) {
+            int ca = tolower((unsigned char)a[i - 1]), cb = tolower((unsigned char)b[j - 1]);
+            int v = d[i - 1][j - 1] + (ca != cb);
+            if (d[i - 1][j] + 1 < v) v = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && ca == tolower((unsigned char)b[j - 2]) &&
+                tolower((unsigned char)a[i - 2]) == cb && d[i - 2][j - 2] + 1 < v)
+                v = d[i - 2][j - 2] + 1;
+            d[i][j] = v;
+        }
+    return d[n][m];
+}
+
+/* Keep the best candidate: nearer, or as near and first in alphabetical order. */
+static void consider(const char *name, const char *cand, const char **best, int *bestd) {
+    int len = (int)strlen(name), d = distance(name, cand);
+    if (d > (len <= 3 ? 1 : 2) || d == 0) return;
+    if (d < *bestd || (d == *bestd && strcmp(cand, *best) < 0)) *best = cand, *bestd = d;
+}
+
+const char *pcl_nearest(const char *name, const char *const *candidates) {
+    const char *best = NULL;
+    int bestd = 99;
+    for (int i = 0; candidates[i]; i++) consider(name, candidates[i], &best, &bestd);
+    return best;
+}
+
+const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
+    idx = lua_absindex(L, idx);
+    const char *best = NULL;
+    int bestd = 99;
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) == LUA_TSTRING) consider(name, lua_tostring(L, -1), &best, &bestd);
+    }
+    return best;   /* a key of the table, which keeps the string alive */
+}
+
+/* ---- weights ----------------------------------------------------------------------------- */
+
+int pcl_snap_weight(int n, double *h) {
+    int k = pc_kind_of(h[n]);
+    if (k == PC_KIND_VECTOR) h[n] = 0;
+    else if (k == PC_KIND_POINT && h[n] != 1) {
+        for (int i = 0; i < n; i++) h[i] /= h[n];
+        h[n] = 1;
+    }
+    return k;
+}
+
+void pcl_push_numbers(lua_State *L, int n, const double *x) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        lua_pushnumber(L, x[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
+/* ---- reading one value ------------------------------------------------------------------- */
+
+/* Where a value sits, for its messages: argument #shown (name), or option 'key'; item > 0: an
+ * element of that list. */
+typedef struct dimref dimref;
+typedef struct {
+    const char *fname;
+    int shown;
+    const char *name, *key;
+    int item;
+    dimref *dim;            /* the dimension PCL_SAMEDIM refers to */
+} ctx;
+struct dimref {
+    int n;                  /* 0: not yet set */
+    ctx who;                /* the value that set it */
+};
+
+static const char *where(lua_State *L, const ctx *c) {
+    const char *w = c->key ? lua_pushfstring(L, "option '%s'", c->key) : arg_label(L, c->shown, c->name);
+    if (c->item) w = lua_pushfstring(L, "%s [%d]", w, c->item);
+    return w;
+}
+
+/* The value as messages show it: a string in quotes (shortened), else as pcl_shown. */
+static const char *shown(lua_State *L, int idx) {
+    if (lua_type(L, idx) != LUA_TSTRING) return pcl_shown(L, idx);
+    size_t len;
+    const char *s = lua_tolstring(L, idx, &len);
+    if (len > 40) return lua_pushfstring(L, "\"%s...\"", lua_pushlstring(L, s, 37));
+    return lua_pushfstring(L, "\"%s\"", s);
+}
+
+/* "NAME: WHERE must be EXPECTED, got VALUE[; HINT]" */
+static int mismatch_hint(lua_State *L, const ctx *c, int idx, const char *expected, const char *hint) {
+    const char *value = shown(L, idx);
+    const char *w = where(L, c);
+    return pcl_error(L, "%s: %s must be %s, got %s%s%s", c->fname, w, expected, value,
+                     hint ? "; " : "", hint ? hint : "");
+}
+static int mismatch(lua_State *L, const ctx *c, int idx, const char *expected) {
+    return mismatch_hint(L, c, idx, expected, NULL);
+}
+
+static const char *num_text(lua_State *L, double x) { return pcl_pushnum(L, x); }
+
+/* "a 2-D point", "a point" */
+static const char *dimmed(lua_State *L, int dim, const char *what) {
+    return dim > 0 ? lua_pushfstring(L, "a %d-D %s", dim, what) : lua_pushfstring(L, "a %s", what);
+}
+
+/* The expected text of a kind (what the messages say after "must be"). */
+static const char *expected(lua_State *L, const pcl_arg *a) {
+    if (a->expect) return a->expect;
+    switch (a->kind) {
+    case PCL_NUMBER:
+        if (a->flags & PCL_RANGE)
+            return lua_pushfstring(L, "a number from %s to %s", num_text(L, a->lo), num_text(L, a->hi));
+        return a->flags & PCL_POS ? "a positive number" : "a finite number";
+    case PCL_INTEGER:
+        if (a->flags & PCL_RANGE)
+            return lua_pushfstring(L, "an integer from %s to %s", num_text(L, a->lo), num_text(L, a->hi));
+        return "an integer";
+    case PCL_BOOLEAN: return "a boolean";
+    case PCL_STRING: return "a string";
+    case PCL_ENUM: {
+        luaL_Buffer b;
+        luaL_buffinit(L, &b);
+        for (int i = 0; a->choices[i]; i++) {
+            if (i) luaL_addstring(&b, a->choices[i + 1] ? ", " : " or ");
+            lua_pushfstring(L, "\"%s\"", a->choices[i]);
+            luaL_addvalue(&b);
+        }
+        luaL_pushresult(&b);
+        return lua_tostring(L, -1);
+    }
+    case PCL_POINT: return dimmed(L, a->dim, "point");
+    case PCL_VECTOR: return dimmed(L, a->dim, "vector");
+    case PCL_LOC: return dimmed(L, a->dim, "point or vector");
+    case PCL_VALUE: return dimmed(L, a->dim, "point, vector or weighted point");
+    case PCL_POINTS: return a->dim ? lua_pushfstring(L, "a list of %d-D points", a->dim) : "a list of points";
+    case PCL_NUMBERS: return "a list of numbers";
+    case PCL_CURVE: return dimmed(L, a->dim, "curve");
+    case PCL_SURFACE: return dimmed(L, a->dim, "surface");
+    case PCL_MAP: return "a map";
+    case PCL_FUNCTION: return "a function";
+    case PCL_OPTIONS: {                        /* a table {k1 =, k2 =} */
+        luaL_Buffer b;
+        luaL_buffinit(L, &b);
+        luaL_addstring(&b, "a table {");
+        for (const pcl_arg *k = a->keys; k->name; k++) {
+            if (k != a->keys) luaL_addstring(&b, ", ");
+            luaL_addstring(&b, k->name);
+            luaL_addstring(&b, " =");
+        }
+        luaL_addchar(&b, '}');
+        luaL_pushresult(&b);
+        return lua_tostring(L, -1);
+    }
+    default: return "a value";
+    }
+}
+
+/* The dimension rule: a fixed dimension, or (PCL_SAMEDIM) the first located value's. */
+static void check_dim(lua_State *L, const ctx *c, const pcl_arg *a, int idx, int n) {
+    if (a->dim > 0 && n != a->dim) mismatch(L, c, idx, expected(L, a));
+    if (!(a->flags & PCL_SAMEDIM) || !c->dim) return;
+    if (c->dim->n == 0) {
+        c->dim->n = n;
+        c->dim->who = *c;
+        c->dim->who.dim = NULL;
+    } else if (n != c->dim->n) {
+        const ctx *who = &c->dim->who;
+        const char *w = where(L, c);
+        const char *other = who->item && who->shown == c->shown && who->key == c->key
+                            ? lua_pushfstring(L, "[%d]", who->item) : where(L, who);   /* in one list */
+        pcl_error(L, "%s: %s is %d-D, but %s is %d-D (mixed dimensions)", c->fname, w, n, other,
+                  c->dim->n);
+    }
+}
+
+/* A point, vector, location or value at idx into out->v (the weight rule). */
+static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p) mismatch(L, c, idx, expected(L, a));
+    int n = p->n;
+    check_dim(L, c, a, idx, n);
+    out->n = n;
+    memcpy(out->v, p->h, sizeof(double) * (size_t)(n + 1));
+    if (a->kind == PCL_VALUE) return;
+    int k = pcl_snap_weight(n, out->v);
+    const char *weight = k == PC_KIND_WEIGHTED ? lua_pushfstring(L, "its weight is %s, and a point "
+        "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
+        num_text(L, p->h[n])) : NULL;
+    if (a->kind == PCL_POINT && k != PC_KIND_POINT)
+        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_VECTOR
+                      ? "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
+    if (a->kind == PCL_VECTOR && k != PC_KIND_VECTOR)
+        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_POINT
+                      ? "a vector has weight 0: a difference of points is a vector, e.g. B - A" : weight);
+    if (a->kind == PCL_LOC && k == PC_KIND_WEIGHTED) mismatch_hint(L, c, idx, expected(L, a), weight);
+    for (int i = 0; i < n; i++)
+        if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
+}
+
+static double *list_buffer(lua_State *L, pcl_val *out, size_t need) {
+    if (out->list && (size_t)out->cap >= need) return out->list;
+    if (out->list) return NULL;                       /* a caller's buffer too small */
+    return lua_newuserdatauv(L, sizeof(double) * (need ? need : 1), 0);   /* above the arguments */
+}
+
+static void count_error(lua_State *L, const ctx *c, const pcl_arg *a, int m, const char *unit) {
+    const char *w = where(L, c);
+    int lo = (int)a->lo, hi = (int)a->hi;
+    if (hi <= 0) pcl_error(L, "%s: %s must hold at least %d %s, got %d", c->fname, w, lo, unit, m);
+    if (lo == hi) pcl_error(L, "%s: %s must hold %d %s, got %d", c->fname, w, lo, unit, m);
+    pcl_error(L, "%s: %s must hold %d to %d %s, got %d", c->fname, w, lo, hi, unit, m);
+}
+
+/* A list of points or numbers at idx. */
+static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
+    if (!lua_istable(L, idx)) mismatch(L, c, idx, expected(L, a));
+    lua_Integer len = luaL_len(L, idx);    /* a __len may say anything: clamp before int */
+    int m = len < 0 ? -1 : len > MAXLIST ? MAXLIST + 1 : (int)len;
+    int hi = a->hi > 0 ? (int)a->hi : MAXLIST;
+    const char *unit = a->kind == PCL_POINTS ? "points" : "numbers";
+    if (m < (int)a->lo || m > hi || m < 0) count_error(L, c, a, m, unit);
+    out->n = m;
+    ctx e = *c;
+    if (a->kind == PCL_NUMBERS) {
+        double *x = list_buffer(L, out, (size_t)m);
+        if (!x) luaL_error(L, "%s: %d numbers do not fit the binding's buffer", c->fname, m);
+        pcl_arg num = {.name = a->name, .kind = PCL_NUMBER};
+        for (int i = 1; i <= m; i++) {
+            lua_geti(L, idx, i);
+            e.item = i;
+            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+                mismatch(L, &e, lua_gettop(L), expected(L, &num));
+            x[i - 1] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        out->list = x;
+        return;
+    }
+    /* points: the declared dimension, or the first one's for all (and PCL_SAMEDIM) */
+    pcl_arg pt = {.name = a->name, .kind = PCL_POINT, .dim = a->dim};
+    dimref inner = {0};
+    double *x = NULL;
+    int d = a->dim;
+    for (int i = 1; i <= m; i++) {
+        lua_geti(L, idx, i);
+        e.item = i;
+        if (!a->dim) pt.flags = PCL_SAMEDIM, e.dim = &inner;
+        pcl_val one;
+        read_loc(L, &e, &pt, lua_gettop(L), &one);
+        lua_pop(L, 1);
+        if (i == 1) {
+            d = one.n;
+            pcl_arg whole = *a;
+            whole.dim = 0;                     /* the list's dimension against the others' */
+            check_dim(L, c, &whole, idx, d);
+            x = list_buffer(L, out, (size_t)m * (size_t)d);
+            if (!x) luaL_error(L, "%s: %d points do not fit the binding's buffer", c->fname, m);
+        }
+        memcpy(x + (size_t)(i - 1) * d, one.v, sizeof(double) * (size_t)d);
+    }
+    if (m == 0) x = list_buffer(L, out, 1);
+    out->list = x;
+    out->dim = d;
+}
+
+/* One value at idx as the argument (or option key) a describes. */
+static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
+    int t = lua_type(L, idx);
+    out->idx = c->key ? 0 : idx;
+    out->present = t != LUA_TNIL && t != LUA_TNONE;
+    out->x = a->dflt;
+    out->n = a->kind == PCL_ENUM ? (int)a->dflt : 0;
+    out->s = a->kind == PCL_ENUM ? a->choices[(int)a->dflt] : NULL;
+    out->obj = NULL;
+    if (!out->present) {
+        int optional = c->key ? !(a->flags & PCL_REQ) : (a->flags & PCL_OPT) != 0;
+        if (!optional) mismatch(L, c, idx, expected(L, a));
+        return;
+    }
+    switch (a->kind) {
+    case PCL_NUMBER:
+    case PCL_INTEGER: {
+        double x = lua_tonumber(L, idx);
+        int ok = t == LUA_TNUMBER && isfinite(x);
+        if (ok && a->kind == PCL_INTEGER) ok = x == floor(x);
+        if (ok && (a->flags & PCL_RANGE)) ok = x >= a->lo && x <= a->hi;
+        if (ok && (a->flags & PCL_POS)) ok = x > 0;
+        if (!ok) mismatch(L, c, idx, expected(L, a));
+        out->x = x;
+        return;
+    }
+    case PCL_BOOLEAN:
+        if (t != LUA_TBOOLEAN) mismatch(L, c, idx, expected(L, a));
+        out->x = lua_toboolean(L, idx);
+        return;
+    case PCL_STRING:
+        if (t != LUA_TSTRING) mismatch(L, c, idx, expected(L, a));
+        out->s = lua_tostring(L, idx);
+        return;
+    case PCL_ENUM:
+        if (t == LUA_TSTRING)
+            for (int i = 0; a->choices[i]; i++)
+                if (!strcmp(lua_tostring(L, idx), a->choices[i])) {
+                    out->n = i, out->s = a->choices[i];
+                    return;
+                }
+        mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE:
+        read_loc(L, c, a, idx, out);
+        return;
+    case PCL_POINTS: case PCL_NUMBERS:
+        read_list(L, c, a, idx, out);
+        return;
+    case PCL_CURVE: case PCL_SURFACE: {
+        pc_curve *cv = a->kind == PCL_CURVE ? pcl_tocurve(L, idx) : NULL;
+        pc_surface *sf = a->kind == PCL_SURFACE ? pcl_tosurface(L, idx) : NULL;
+        int dim = cv ? cv->dim : sf ? sf->dim : 0;
+        if (!dim) mismatch(L, c, idx, expected(L, a));
+        if (a->dim && dim != a->dim)
+            pcl_error(L, "%s: %s must be %s, got a %d-D one", c->fname, where(L, c), expected(L, a), dim);
+        out->obj = cv ? (void *)cv : (void *)sf;
+        out->n = dim;
+        return;
+    }
+    case PCL_MAP:
+        if (!(out->obj = pcl_tomap(L, idx))) mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_FUNCTION:
+        if (t != LUA_TFUNCTION) mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_ANY:
+        if (a->read && !a->read(L, idx, a, out)) mismatch(L, c, idx, expected(L, a));
+        return;
+    default:
+        luaL_error(L, "%s: an option table inside an option table is not supported", c->fname);
+    }
+}
+
+/* The keys of an options table at idx into v (one per key); unknown keys are errors. */
+static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_val *v) {
+    int nk = 0;
+    while (a->keys[nk].name) nk++;
+    if (!lua_istable(L, idx)) {
+        if (!lua_isnoneornil(L, idx) || !(a->flags & PCL_OPT)) mismatch(L, c, idx, expected(L, a));
+        for (int k = 0; k < nk; k++) {
+            ctx kc = *c;
+            kc.key = a->keys[k].name;
+            read_value(L, &kc, &a->keys[k], idx, &v[k]);   /* the defaults; required keys fail */
+        }
+        return;
+    }
+    const char *known[64];
+    int has_color = 0;
+    for (int k = 0; k < nk && k < 63; k++) {
+        known[k] = a->keys[k].name;
+        has_color |= !strcmp(known[k], "color");
+    }
+    known[nk < 63 ? nk : 63] = NULL;
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) != LUA_TSTRING) {
+            const char *k = pcl_shown(L, lua_gettop(L));
+            pcl_error(L, "%s: %s holds [%s]; its options are named (key = value)", c->fname,
+                      where(L, c), k);
+        }
+        const char *key = lua_tostring(L, -1);
+        int found = 0;
+        for (int k = 0; k < nk && !found; k++) found = !strcmp(key, known[k]);
+        if (!found && has_color && !strcmp(key, "colour")) found = 1;   /* the docs' spelling */
+        if (!found) {
+            const char *near = pcl_nearest(key, known);
+            if (near) pcl_error(L, "%s: unknown option '%s' (did you mean '%s'?)", c->fname, key, near);
+            luaL_Buffer b;
+            luaL_buffinit(L, &b);
+            for (int k = 0; k < nk; k++) {
+                if (k) luaL_addstring(&b, ", ");
+                luaL_addstring(&b, known[k]);
+            }
+            luaL_pushresult(&b);
+            pcl_error(L, "%s: unknown option '%s' (the options are %s)", c->fname, key, lua_tostring(L, -1));
+        }
+    }
+    for (int k = 0; k < nk; k++) {
+        ctx kc = *c;
+        kc.key = a->keys[k].name;
+        int t = lua_getfield(L, idx, kc.key);
+        if (!strcmp(kc.key, "color")) {               /* colour = is the same option */
+            if (lua_getfield(L, idx, "colour") != LUA_TNIL) {
+                if (t != LUA_TNIL)
+                    pcl_error(L, "%s: options 'color' and 'colour' are one option: give one", c->fname);
+                kc.key = "colour";
+                lua_remove(L, -2);
+            } else {
+                lua_pop(L, 1);
+            }
+        }
+        int top = lua_gettop(L);
+        read_value(L, &kc, &a->keys[k], top, &v[k]);
+        lua_remove(L, top);   /* the value lives on in the table; a list's buffer stays above */
+    }
+}
+
+static int nvalues(const pcl_arg *args) {
+    int n = 0;
+    for (const pcl_arg *a = args; a && a->kind; a++) {
+        n++;
+        if (a->kind == PCL_OPTIONS)
+            for (const pcl_arg *k = a->keys; k->name; k++) n++;
+    }
+    return n;
+}
+
+static int nargs_of(const pcl_fn *d) {
+    int n = 0;
+    while (d->args && d->args[n].kind) n++;
+    return n;
+}
+
+void *pcl_read(lua_State *L, pcl_val *v, int n) {
+    const pcl_fn *d = current(L);
+    void *self = NULL;
+    int first = 1;
+    if (d->self) {
+        self = d->self(L, 1);
+        if (!self) {
+            pcl_error(L, "%s: must be called on a %s, as %s(...)", d->name, d->selftype,
+                      d->topic ? d->topic : d->name);
+        }
+        first = 2;
+    }
+    luaL_checkstack(L, 24, NULL);
+    const char *fname = d->callname ? pcl_name(L) : d->name;
+    int need = nvalues(d->args);
+    if (n < need) luaL_error(L, "%s: the binding reads %d values into %d", d->name, need, n);
+    int nargs = 0;
+    while (d->args && d->args[nargs].kind) nargs++;
+    if (lua_gettop(L) < first - 1 + nargs) lua_settop(L, first - 1 + nargs);   /* buffers above */
+    dimref dim = {0};
+    int slot = nargs;
+    for (int k = 0; k < nargs; k++) {
+        const pcl_arg *a = &d->args[k];
+        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
+        int idx = first + k;
+        if (a->kind == PCL_OPTIONS) {
+            v[k].idx = idx;
+            v[k].present = lua_istable(L, idx);
+            read_options(L, &c, a, idx, v + slot);
+            for (const pcl_arg *kk = a->keys; kk->name; kk++) slot++;
+        } else {
+            read_value(L, &c, a, idx, &v[k]);
+        }
+    }
+    return self;
+}
+
+void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out) {
+    const pcl_fn *d = current(L);
+    const char *name = a->name ? a->name : shown >= 1 && d->args && shown <= nargs_of(d) ? d->args[shown - 1].name : NULL;
+    dimref dim = {dimdef, {pcl_name(L), item ? shown : 1, item ? name : NULL, NULL, item ? 1 : 0, NULL}};
+    ctx c = {dim.who.fname, shown, name, NULL, item, &dim};
+    read_value(L, &c, a, idx, out);
+}
+
+/* ---- registration and signatures ----------------------------------------------------------- */
+
+/* The text of one argument in a signature: its name, an enum's choices, an option table's keys. */
+static void add_arg(luaL_Buffer *b, lua_State *L, const pcl_arg *a) {
+    if (a->kind == PCL_ENUM) {
+        for (int i = 0; a->choices[i]; i++) {
+            lua_pushfstring(L, "%s\"%s\"", i ? "|" : "", a->choices[i]);
+            luaL_addvalue(b);
+        }
+        return;
+    }
+    if (a->kind != PCL_OPTIONS) {
+        luaL_addstring(b, a->name);
+        return;
+    }
+    luaL_addchar(b, '{');
+    for (const pcl_arg *k = a->keys; k->name; k++) {
+        if (k != a->keys) luaL_addstring(b, ", ");
+        luaL_addstring(b, k->name);
+        luaL_addstring(b, " =");
+        if (k->kind == PCL_ENUM) {
+            luaL_addchar(b, ' ');
+            add_arg(b, L, k);
+        } else if (k->shown) {
+            luaL_addchar(b, ' ');
+            luaL_addstring(b, k->shown);
+        }
+    }
+    luaL_addchar(b, '}');
+}
+
+/* Push the signature made from the declaration: NAME(a, b [, c [, d]]) -> RESULT. */
+static void push_signature(lua_State *L, const pcl_fn *d) {
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    luaL_addstring(&b, d->name);
+    const pcl_arg *a = d->args;
+    if (a && a->kind == PCL_OPTIONS && (a->flags & PCL_CALLTABLE)) {
+        add_arg(&b, L, a);
+    } else {
+        luaL_addchar(&b, '(');
+        int open = 0, k = 0;
+        for (; a && a->kind; a++, k++) {
+            if (a->flags & PCL_OPT) {
+                luaL_addstring(&b, k ? " [, " : "[");
+                open++;
+            } else if (k) {
+                luaL_addstring(&b, ", ");
+            }
+            add_arg(&b, L, a);
+        }
+        while (open--) luaL_addchar(&b, ']');
+        luaL_addchar(&b, ')');
+    }
+    if (d->result) {
+        luaL_addstring(&b, " -> ");
+        luaL_addstring(&b, d->result);
+    }
+    luaL_pushresult(&b);
+}
+
+static void record(lua_State *L, const pcl_fn *d) {
+    if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, LUA_REGISTRYINDEX, DECL_KEY);
+    }
+    lua_createtable(L, 0, 3);
+    if (d->sig) {                                    /* forms, one per line */
+        lua_newtable(L);
+        int i = 0;
+        for (const char *s = d->sig; *s;) {
+            const char *e = strchr(s, '\n');
+            size_t len = e ? (size_t)(e - s) : strlen(s);
+            lua_pushlstring(L, s, len);
+            lua_rawseti(L, -2, ++i);
+            s += len + (e != NULL);
+        }
+    } else {
+        push_signature(L, d);
+    }
+    lua_setfield(L, -2, "sig");
+    lua_pushstring(L, d->help ? d->help : "");
+    lua_setfield(L, -2, "desc");
+    lua_setfield(L, -2, d->topic ? d->topic : d->name);
+    lua_pop(L, 1);
+}
+
+void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
+    table = lua_absindex(L, table);
+    int ups = lua_gettop(L) - nup + 1;
+    for (const pcl_fn *d = fns; d->name; d++) {
+        const char *key = d->name, *p;
+        for (p = d->name; *p; p++)
+            if (*p == '.' || *p == ':') key = p + 1;
+        if (d->key) key = d->key;
+        lua_pushlightuserdata(L, (void *)d);
+        for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
+        lua_pushcclosure(L, d->fn, nup + 1);
+        lua_setfield(L, table, key);
+        record(L, d);
+    }
+    lua_pop(L, nup);
+}
+
+/* Push the registry of declarations (for pointcalc._decl). */
+void pcl_push_decls(lua_State *L) {
+    if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {
+        lua_pop(L, 1);
+        lua_newtable(L);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, LUA_REGISTRYINDEX, DECL_KEY);
+    }
+}
+
+/* ---- misspelt globals ----------------------------------------------------------------------- */
+
+/* Push "(did you mean 'label'?)" for a message about a nil global near a known name, and
+ * return it; else NULL (nothing pushed).  One place for scripts, -e chunks and the REPL. */
+const char *pcl_global_hint(lua_State *L, const char *msg) {
+    const char *p = msg ? strstr(msg, "a nil value (global '") : NULL;
+    if (!p) return NULL;
+    p += strlen("a nil value (global '");
+    const char *e = strchr(p, '\'');
+    if (!e || e - p > 40) return NULL;
+    char name[48];
+    memcpy(name, p, (size_t)(e - p));
+    name[e - p] = 0;
+    lua_pushglobaltable(L);
+    const char *best = pcl_nearest_key(L, name, -1);
+    if (!best) {
+        lua_pop(L, 1);
+        return NULL;
+    }
+    const char *h = lua_pushfstring(L, "(did you mean '%s'?)", best);
+    lua_remove(L, -2);
+    return h;
+}

@@ -1,0 +1,165 @@
+/* The declared argument layer: a binding declares each function once (the name as the user
+ * writes it, the C function, its arguments, its result and its help line) and reads all its
+ * arguments with one call.  The same declaration gives :help, docs/api.md and every message:
+ *   NAME: argument #N (WHAT) must be EXPECTED, got VALUE
+ *   NAME: option 'KEY' must be EXPECTED, got VALUE
+ *   NAME: unknown option 'colr' (did you mean 'color'?)
+ *   NAME: argument #1 (points) [3] must be a 2-D point, got V(1, 2)
+ *   NAME: argument #1 (points) must hold 2 to 64 points, got 66
+ *   NAME: argument #2 (B) is 3-D, but argument #1 (A) is 2-D (mixed dimensions)
+ * One weight rule for every location (point.h, PC_WEIGHT_TOL): |w - 1| <= 1e-9 is a point,
+ * |w| <= 1e-9 a direction.  docs/bindings.md is the guide; l_korotky.c a model. */
+#ifndef PCL_ARGS_H
+#define PCL_ARGS_H
+
+#include "pcl.h"
+#include "point.h"
+
+typedef enum {
+    PCL_NONE,      /* ends an argument list ({0}) */
+    PCL_NUMBER,    /* a finite number; PCL_RANGE: lo..hi, PCL_POS: > 0 */
+    PCL_INTEGER,   /* an integral number; PCL_RANGE: lo..hi */
+    PCL_BOOLEAN,
+    PCL_STRING,
+    PCL_ENUM,      /* one of the strings choices[] (NULL-ended); v.n is its index */
+    PCL_POINT,     /* weight 1: v.v the Cartesian coordinates, v.n the dimension */
+    PCL_VECTOR,    /* weight 0: v.v the components */
+    PCL_LOC,       /* a point or a vector (a direction): v.v homogeneous (n + 1), weight 0 or 1 */
+    PCL_VALUE,     /* any point, vector or weighted value: v.v homogeneous, the weight as given */
+    PCL_POINTS,    /* a list of points (lo..hi of them; dim or one dimension): v.list rows */
+    PCL_NUMBERS,   /* a list of finite numbers (lo..hi of them): v.list */
+    PCL_CURVE,     /* v.obj a pc_curve (dim: its dimension must be dim) */
+    PCL_SURFACE,   /* v.obj a pc_surface */
+    PCL_MAP,       /* v.obj a pc_map */
+    PCL_FUNCTION,  /* v.idx its stack index */
+    PCL_OPTIONS,   /* a table of the keys[] (each with its own kind); unknown keys are errors */
+    PCL_ANY,       /* anything (v.idx); with read: the binding's own reader */
+} pcl_kind;
+
+/* flags of an argument (or of an option key) */
+#define PCL_OPT     0x01u  /* an argument that may be nil or absent (v.present = 0, v.x = dflt) */
+#define PCL_REQ     0x02u  /* an option key that must be given (keys are optional otherwise) */
+#define PCL_RANGE   0x04u  /* numbers, integers: lo <= x <= hi */
+#define PCL_POS     0x08u  /* numbers: x > 0 */
+#define PCL_SAMEDIM 0x10u  /* points, vectors, locations, lists: the dimension of the first one */
+#define PCL_CALLTABLE 0x20u /* the only argument, an options table: shown as NAME{...} */
+
+typedef struct pcl_val pcl_val;
+typedef struct pcl_arg pcl_arg;
+/* A binding's own reader (kind PCL_ANY with read set): 1 if the value at idx fits (filled into
+ * out), 0 if not; the layer then raises "... must be EXPECT, got VALUE". */
+typedef int (*pcl_reader)(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
+
+struct pcl_arg {
+    const char *name;         /* as messages and the signature show it */
+    pcl_kind kind;
+    unsigned flags;
+    double lo, hi;            /* range of a number or integer; count bounds of a list */
+    int dim;                  /* points, vectors, curves, surfaces: the dimension (0 any) */
+    const char *const *choices;  /* PCL_ENUM */
+    const pcl_arg *keys;      /* PCL_OPTIONS: the known keys, ended by {0} */
+    double dflt;              /* the value when absent (numbers, integers, booleans, enums) */
+    const char *shown;        /* how the signature shows the default or the value ("1"), or NULL */
+    const char *expect;       /* EXPECTED text (PCL_ANY with read; overrides the kind's) */
+    pcl_reader read;
+};
+
+struct pcl_val {
+    int present;              /* given (not nil) */
+    int n;                    /* dimension; count of a list; index of an enum's choice */
+    double x;                 /* number, integer, boolean (0/1) */
+    const char *s;            /* string, enum choice */
+    double v[PC_MAXDIM + 1];  /* point, vector, location, value; a reader's scratch */
+    double *list;             /* lists: rows of dim numbers (preset with cap: the caller's buffer) */
+    int cap;                  /* capacity of a preset list in doubles */
+    int dim;                  /* dimension of a list of points */
+    void *obj;                /* curve, surface, map */
+    int idx;                  /* stack index of the argument (0: an option key) */
+};
+
+/* One function: registered with pcl_register, read with PCL_READ. */
+typedef struct pcl_fn {
+    const char *name;         /* as the user writes it: "korotky.ferguson", "f:xy", "S" (a __call) */
+    lua_CFunction fn;
+    const pcl_arg *args;      /* ended by {0}; NULL: no arguments */
+    const char *result;       /* "curve, coef", or NULL */
+    const char *help;         /* the one-line description (:help, docs/api.md) */
+    const char *sig;          /* NULL: the signature is made from args; else the forms, one per line */
+    void *(*self)(lua_State *L, int idx);  /* methods and __call: the receiver's recogniser */
+    const char *selftype;     /* "map": "NAME: must be called on a map, as f:xy(...)" */
+    const char *key;          /* the field set (NULL: the name's last part; "__call" for f(p)) */
+    const char *topic;        /* the help entry (NULL: the name; "f(p)" for a __call) */
+    int callname;             /* a __call: messages name the called variable when Lua knows it */
+} pcl_fn;
+
+/* Set table[the last part of each name] = a closure of fn with its declaration as upvalue 1
+ * and the nup values on the stack top as upvalues 2.. (popped), and record each declaration
+ * in the registry that :help and docs/api.md read (pointcalc._decl).  fns ends with {0}. */
+void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup);
+/* Upvalue k of a registered function (k = 1: the first of the nup shared values). */
+#define PCL_UPVALUE(k) lua_upvalueindex((k) + 1)
+
+/* Read every declared argument of the running function into v (n values: one per argument,
+ * then one per key of each option table, in order).  Returns the receiver of a method (NULL
+ * for a plain function).  Lists without a preset buffer get one from the layer, kept above
+ * the arguments on the stack: every argument keeps its stack index. */
+void *pcl_read(lua_State *L, pcl_val *v, int n);
+#define PCL_READ(L, v) pcl_read((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
+/* Read the one value at stack index idx as the argument a shown as argument #shown, or its
+ * element [item] when item > 0 (variadic functions: simplex(C, A, B, ...); lists read by the
+ * body); dimdef: the dimension PCL_SAMEDIM refers to, set by argument #1 (by [1] for an item). */
+void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out);
+
+/* The running function's declared name; its stack index of argument #k. */
+const char *pcl_name(lua_State *L);
+/* "NAME: MESSAGE" at the user's line. */
+int pcl_fail(lua_State *L, const char *fmt, ...);
+/* "NAME: argument #K (WHAT) EXPECTED_TEXT": a body's own condition on a declared argument, e.g.
+ * pcl_argfail(L, 1, "[%d] must lie right of the point before", i).  k counts from 1. */
+int pcl_argfail(lua_State *L, int k, const char *fmt, ...);
+/* "NAME: option 'KEY' MESSAGE". */
+int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...);
+
+/* The nearest of the candidates (NULL-ended) to name by edit distance (a swap of neighbours is
+ * one edit), or NULL if none is near enough to suggest. */
+const char *pcl_nearest(const char *name, const char *const *candidates);
+/* The same over the string keys of the table at idx. */
+const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
+
+/* Push a list {x[0], ..., x[n-1]}. */
+void pcl_push_numbers(lua_State *L, int n, const double *x);
+
+/* One weight rule: PC_KIND_POINT, PC_KIND_VECTOR or PC_KIND_WEIGHTED, with the weight in h[n]
+ * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
+int pcl_snap_weight(int n, double *h);
+
+/* Push the registry of declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: the module's
+ * _decl, which interp/help.lua reads. */
+void pcl_push_decls(lua_State *L);
+/* Push and return "(did you mean 'label'?)" for an error message about a nil global near a
+ * global's name, else NULL: one hint for scripts, -e chunks and the REPL (_tk.global_hint). */
+const char *pcl_global_hint(lua_State *L, const char *msg);
+
+/* Shorthands for declarations (designated initialisers work as well). */
+#define PCL_FN(nm, f, a, res, text) {.name = nm, .fn = f, .args = a, .result = res, .help = text}
+#define PCL_END {0}
+#define A_NUM(nm) {.name = nm, .kind = PCL_NUMBER}
+#define A_NUMOPT(nm, d, txt) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = d, .shown = txt}
+#define A_POSNUM(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_POS}
+#define A_NUMIN(nm, a, b) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = a, .hi = b}
+#define A_INT(nm, a, b) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = a, .hi = b}
+#define A_ENUM(nm, ch) {.name = nm, .kind = PCL_ENUM, .choices = ch}
+#define A_POINT(nm, d) {.name = nm, .kind = PCL_POINT, .dim = d}
+#define A_VECTOR(nm, d) {.name = nm, .kind = PCL_VECTOR, .dim = d}
+#define A_SAMEPOINT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
+#define A_SAMEVECTOR(nm) {.name = nm, .kind = PCL_VECTOR, .flags = PCL_SAMEDIM}
+#define A_POINTS(nm, d, a, b) {.name = nm, .kind = PCL_POINTS, .dim = d, .lo = a, .hi = b}
+#define A_NUMBERS(nm, a, b) {.name = nm, .kind = PCL_NUMBERS, .lo = a, .hi = b}
+#define A_CURVE(nm, d) {.name = nm, .kind = PCL_CURVE, .dim = d}
+#define A_SURFACE(nm, d) {.name = nm, .kind = PCL_SURFACE, .dim = d}
+#define A_MAP(nm) {.name = nm, .kind = PCL_MAP}
+#define A_FUNCTION(nm) {.name = nm, .kind = PCL_FUNCTION}
+#define A_OPTIONS(nm, k) {.name = nm, .kind = PCL_OPTIONS, .flags = PCL_OPT, .keys = k}
+#define A_ANY(nm, rd, exp) {.name = nm, .kind = PCL_ANY, .read = rd, .expect = exp}
+
+#endif

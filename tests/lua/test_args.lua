@@ -1,0 +1,159 @@
+-- The declared argument layer (stdlib/lua/pcl_args.h, docs/bindings.md): the one weight rule,
+-- the one dimension rule and wording of messages, checked option keys, and the registry of
+-- declarations that :help and docs/api.md read.
+local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
+local eq, err, truthy = check.eq, check.err, check.truthy
+local help = require "help"
+local root = arg[0]:match("^(.-)tests/lua/[^/]*$") or "./"
+
+-- ---- one weight rule: |w - 1| <= 1e-9 is a point, |w| <= 1e-9 a direction ----------------
+local M = (P(1.2, .9) * 49) * (1 / 49)          -- weight 0.99999999999999989, prints P(1.2, 0.9)
+truthy(weight(M) ~= 1 and math.abs(weight(M) - 1) < 1e-9, "M's weight is near 1, not 1")
+local pts = {P(0, 0), M, P(2.5, 0.3)}
+truthy(korotky.poly_spline(pts), "korotky.poly_spline takes a near-1 weight as a point")
+truthy(korotky.ferguson(pts, {0, 0, 0}, {1, 1, 1, 1}), "korotky.ferguson takes it")
+truthy(korotky.ferguson_tangents(pts, {0, 0, 0}), "korotky.ferguson_tangents takes it")
+truthy(korotky.elastic(pts), "korotky.elastic takes it")
+truthy(buimov.spline(pts), "buimov.spline takes it")
+truthy(plane.circle3(P(0, 0), M, P(2, 0)), "plane.circle3 takes it")
+truthy(simplex(P(0, 0), M, P(0, 1)), "simplex takes it")
+truthy(map.reflect(M, V(0, 1)), "map.reflect takes it")
+eq(tostring(affine.frame(M, V(1, 0), V(0, 1))(P(0, 0))), "P(1.2, 0.9)", "affine.frame's origin")
+local D = V(1, 0) + P(0, 0) * 1e-12                 -- weight 1e-12: a direction
+eq(tostring(map.translate(D)(P(1, 1))), "P(2, 1)", "a 1e-12 weight is a vector")
+err(function() korotky.poly_spline({P(0, 0), P(1, 1) * 2}) end,
+    "korotky.poly_spline: argument #1 (points) [2] must be a 2-D point, got 2*P(1, 1); its weight is 2, and a point equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
+    "a weighted point is refused with its weight")
+
+-- maps apply it to their images: the 1e-17 weight of a projective matrix is a direction
+local tilt = map.matrix({{1, 0, 0}, {0, 1, 0}, {0, 1e-17, 1}})
+local img = tilt(V(0, 1))
+eq(tostring(img), "V(0, 1)", "map.matrix(...)(V(0, 1)) with weight 1e-17 is V(0, 1), not P(0, 1e+17)")
+eq(weight(img), 0, "its weight is exactly 0")
+eq(tostring(tilt(P(0, 1))), "P(0, 1)", "the point keeps weight 1")
+err(function() return tilt:xy(V(0, 1)) end, "f:xy: argument #1 (X) must be a point (weight 1), got weight 0", "f:xy of a direction")
+
+-- ---- lists of points leave nothing among the arguments -----------------------------------
+local c, tangents = buimov.spline({P(0, 0), P(1, 1), P(2, 0)})
+eq(c.dim, 2, "buimov.spline(points) without options")
+eq(#tangents, 3, "one tangent per point")
+eq(tostring(tangents[2]), "V(1, 0)", "the natural spline's middle tangent")
+eq(#select(2, buimov.spline({P(0, 0), P(1, 1), P(2, 0)}, nil)), 3, "and with nil options")
+eq(select(2, korotky.elastic({P(0, 0), P(1, 1), P(2, 0)})) > 0, true, "korotky.elastic(points) short form")
+
+-- ---- option tables are checked ----------------------------------------------------------------
+err(function() buimov.spline(pts, {edns = "cyclic"}) end,
+    "buimov.spline: unknown option 'edns' (did you mean 'ends'?)", "a misspelt key is suggested")
+err(function() korotky.elastic(pts, {peices = 2}) end,
+    "korotky.elastic: unknown option 'peices' (did you mean 'pieces'?)", "a swap of letters")
+err(function() korotky.poly_spline(pts, {zzz = 1}) end,
+    "korotky.poly_spline: unknown option 'zzz' (the options are ends, s0, s1)", "no near key: the known ones")
+err(function() buimov.spline(pts, {colr = 1}) end,
+    "buimov.spline: unknown option 'colr' (the options are ends, d0, d1, param)", "colr where there is no colour")
+err(function() korotky.poly_spline(pts, {1}) end,
+    "korotky.poly_spline: argument #2 (opts) holds [1]; its options are named (key = value)", "a positional entry")
+err(function() korotky.elastic(pts, {pieces = 9}) end,
+    "korotky.elastic: option 'pieces' must be an integer from 1 to 4, got 9", "a key's own kind")
+err(function() korotky.conic_sweep{U = 1} end,
+    "korotky.conic_sweep: option 'U' must be a 3-D curve, got 1", "a call table's field")
+err(function() korotky.conic_revolve{} end,
+    "korotky.conic_revolve: option 'A' must be a 3-D point, got nil", "a required key")
+
+-- The misspelt keys of the issue on the calls where they apply.  Those calls live in files not
+-- yet on the layer: each is listed here with the message it must give, and checked to FAIL to
+-- give it; a converter who moves the call onto the layer moves its entry to the live checks
+-- above (this test fails until then, saying which).
+local PENDING = {
+  {"c:draw{colr = 4}", function() curve(function(t) return P(t, t) end, 0, 1):draw{colr = 4} end,
+   "c:draw: unknown option 'colr' (did you mean 'color'?)"},
+  {"c:draw{colour = ...} is the colour option", function() curve(function(t) return P(t, t) end, 0, 1):draw{colour = {}} end,
+   "c:draw: option 'colour' must be"},
+  {"c:draw{closd = true}", function() curve(function(t) return P(t, t) end, 0, 1):draw{closd = true} end,
+   "c:draw: unknown option 'closd' (did you mean 'closed'?)"},
+  {"s:draw{hiden = true}", function() surface.plane(P(0, 0, 0), V(1, 0, 0), V(0, 1, 0)):draw{hiden = true} end,
+   "unknown option 'hiden' (did you mean 'hidden'?)"},
+  {"figure{widht = 8}", function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)"},
+  {"screen{widht = 300}", function() screen{widht = 300} end, "screen: unknown option 'widht' (did you mean 'width'?)"},
+  {"bezier of 66 points", function() local p = {} for i = 1, 66 do p[i] = P(i, 0) end bezier(p) end,
+   "bezier: argument #1 (points) must hold 2 to"},
+  {"interp.prototype(\"desargues\")", function() interp.prototype("desargues") end, "must hold 4 points"},
+  {"bspline names its knots", function() bspline({P(0, 0), P(1, 1), P(2, 0), P(3, 1), P(4, 0)}, 3, {0, 0, 0, 0, 0, 0, 0, 0, 0}) end,
+   "bspline: argument #3 (knots)"},
+  {"plot of a function of one number", function() plot(function(t) return t end, {t = {0, 1, 0.1}}) end, "plot:"},
+}
+local still = {}
+for _, p in ipairs(PENDING) do
+  local ok, msg = pcall(p[2])
+  if not ok and tostring(msg):find(p[3], 1, true) then
+    error("pending check '" .. p[1] .. "' passes now: move it to the live checks of test_args.lua", 0)
+  end
+  still[#still + 1] = p[1]
+end
+eq(#still, #PENDING, "pending checks of unconverted files: " .. table.concat(still, "; "))
+
+-- ---- one wording: names the user's call, the argument by position and name -------------------
+local many = {}
+for i = 1, 33 do many[i] = P(i, 0) end
+err(function() korotky.poly_spline(many) end,
+    "korotky.poly_spline: argument #1 (points) must hold 2 to 32 points, got 33", "a count with its cap")
+err(function() korotky.poly_spline({P(0, 0), P(1, 1), V(1, 2)}) end,
+    "korotky.poly_spline: argument #1 (points) [3] must be a 2-D point, got V(1, 2); a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v", "a list element")
+err(function() buimov.knots({P(0, 0), P(1, 1, 1)}, 2) end,
+    "buimov.knots: argument #1 (points) [2] is 3-D, but [1] is 2-D (mixed dimensions)", "mixed dimensions in a list")
+err(function() korotky.conic_arc(P(0, 0), V(1, 0), P(1, 0, 0), V(0, 1), P(1, 1)) end,
+    "korotky.conic_arc: argument #3 (V) is 3-D, but argument #1 (U) is 2-D (mixed dimensions)", "mixed dimensions")
+err(function() korotky.ferguson_substitution(pts, {0, 0, 0}, 1, 2, "mid") end,
+    "korotky.ferguson_substitution: argument #5 (root) must be \"min\" or \"max\", got \"mid\"", "an enum shows the string")
+local e = korotky.energy
+err(function() e(3) end, "korotky.energy: argument #1 (curve) must be a curve, got 3", "an alias keeps the declared name")
+err(function() assert(pcall(korotky.energy, 3)) end, "korotky.energy: argument #1", "pcall names the function, not pcall")
+err(function() assert(pcall(label, 5)) end, "label:", "pcall(label, 5) names label")
+local T = map.rotate(1)
+err(function() return T({P(1, 2)}) end, "T: takes a 2-D point or vector, or 2 coordinates; got a table", "a map applied to a list names the map")
+err(function() return T.inverse(3) end, "f:inverse: must be called on a map, as f:inverse(...)", "a method called with a dot")
+err(function() return simplex(P(0, 0), P(1, 0), P(0, 1)).params(5) end,
+    "S:params: must be called on a simplex, as S:params(...)", "a simplex method with a dot")
+local cv = curvilinear(function(a, b) return P(a, b) end)
+err(function() cv.clamp() end, "C:clamp: call it as C:clamp(...), with a colon", "a Lua-written method called with a dot")
+err(function() cv.xy(1, 2) end, "C:xy: call it as C:xy(...), with a colon", "C.xy")
+local cu = curve(function(t) return P(t, t) end, 0, 1)
+err(function() cu.each() end, "c:each: call it as c:each(...), with a colon", "c.each()")
+err(function() cu.draw{} end, "c:draw: call it as c:draw{...}, with a colon", "c.draw{}")
+err(function() buimov.basis(0, 2, 0.5, {0, 1, 0}) end, "buimov.basis: argument #4 (knots) must not decrease ([3])", "a body's own check on a declared argument")
+
+-- ---- the registry: every declared function documented from its declaration ----------------
+local decls = rawget(pointcalc, "_decl")
+truthy(type(decls) == "table" and next(decls), "pointcalc._decl holds the declarations")
+eq(#help.conflicts, 0, "help.lua and the declarations agree:\n  " .. table.concat(help.conflicts, "\n  "))
+local api = assert(io.open(root .. "docs/api.md")):read("a")
+local function cell(s) return (s:gsub("|", "\\|")) end
+local n = 0
+for name, d in pairs(decls) do
+  n = n + 1
+  local entry = help.by_name[name]
+  truthy(entry, name .. " is declared, so help.lua must place it: def(\"" .. name .. "\")")
+  truthy(entry.declared, name .. ": its help entry comes from the declaration")
+  eq(table.concat(help.forms(entry), "\n"), type(d.sig) == "table" and table.concat(d.sig, "\n") or d.sig,
+     name .. ": :help shows the declared signature")
+  eq(entry.desc, d.desc, name .. ": :help shows the declared description")
+  truthy(d.desc ~= "", name .. " has a help line")
+  local forms = {}
+  for i, f in ipairs(help.forms(entry)) do forms[i] = "`" .. cell(f) .. "`" end
+  truthy(api:find("| `" .. cell(name) .. "` | " .. table.concat(forms, "<br>") .. " |", 1, true),
+         name .. ": docs/api.md's row is the declaration's (regenerate: pointcalc docs/gen_api.lua > docs/api.md)")
+end
+truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
+
+-- every function of a converted table is declared (converters add their tables here)
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine"}
+for _, t in ipairs(CONVERTED) do
+  for k, v in pairs(pointcalc[t]) do
+    if type(v) == "function" then truthy(decls[t .. "." .. k], t .. "." .. k .. " has a declaration") end
+  end
+end
+truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"], "constructors, calls and methods")
+local sig = help.forms(help.by_name["korotky.poly_spline"])[1]
+eq(sig, 'korotky.poly_spline(points [, {ends = "natural"|"clamped", s0 =, s1 =}]) -> curve, coef', "a generated signature")
+eq(help.forms(help.by_name["korotky.conic_sweep"])[1], "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s", "a call table's signature")
+
+check.done()
