@@ -77,6 +77,23 @@ end
 
 local function trim(s) return (s:match("^%s*(.-)%s*$")) end
 
+-- Keys of an option table "{A =, B = [, delta = | R =], color = c}".
+local function parse_keys(s)
+  local keys, optional = {}, false
+  for part in s:gmatch("[^,|]+") do
+    if part:find("%[") then optional = true end
+    local k = part:match("([%a_][%w_]*)%s*=")
+    if k then
+      local v = part:match("=%s*(.-)%s*[%]]*%s*$") or ""
+      local ty = (v:match("^[%d.-]+$") and "number") or (v:match("^true") or v:match("^false")) and
+                 "boolean" or (v:match('^"') and "string") or (v:match("^{") and "table") or ptype(k)
+      -- a key shown with a value ("closed = false") has that default, so it may be left out
+      keys[#keys + 1] = {name = k, type = ty, optional = optional or v ~= ""}
+    end
+  end
+  return keys
+end
+
 -- Positional parameters of "A, B [, C [, D]]": name, type, optional.
 local function parse_params(s)
   local params, optional, token, depth = {}, false, {}, 0
@@ -86,6 +103,7 @@ local function parse_params(s)
     local p
     if t:match("^%.%.%.") or t:match("^[%w_]*, %.%.%.") then p = {name = "...", type = "any"}
     elseif t:match('^"') then p = {name = "mode", type = "string"}
+    elseif t:match("^{.*=") then p = {name = "opts", type = "table", keys = parse_keys(t:match("^{(.*)}") or "")}
     elseif t:match("^{") then p = {name = "list", type = "table"}
     elseif t:find("|", 1, true) then p = {name = t:match("^([%a_][%w_]*)") or "arg", type = "any"}
     else
@@ -126,22 +144,6 @@ local function parse_params(s)
   end
   if vararg then out[#out + 1] = {name = "...", type = "any", optional = true} end
   return out
-end
-
--- Keys of an option table "{A =, B = [, delta = | R =], color = c}".
-local function parse_keys(s)
-  local keys, optional = {}, false
-  for part in s:gmatch("[^,|]+") do
-    if part:find("%[") then optional = true end
-    local k = part:match("([%a_][%w_]*)%s*=")
-    if k then
-      local v = part:match("=%s*(.-)%s*[%]]*%s*$") or ""
-      local ty = (v:match("^[%d.-]+$") and "number") or (v:match("^true") or v:match("^false")) and
-                 "boolean" or (v:match('^"') and "string") or (v:match("^{") and "table") or ptype(k)
-      keys[#keys + 1] = {name = k, type = ty, optional = optional}
-    end
-  end
-  return keys
 end
 
 local function parse_results(s)
