@@ -239,6 +239,8 @@ local function write_man(m, version)
   local out = {}
   local function put(...) for _, s in ipairs({...}) do out[#out + 1] = s end end
   put('.TH POINTCALC-API 7 "" "pointcalc ', version or "", '" "pointcalc"\n')
+  -- left-aligned: signatures are long words that justified lines could not adjust around
+  put(".ad l\n")
   put(".SH NAME\npointcalc-api \\- every function of pointcalc with its signature\n")
   put(".SH DESCRIPTION\n",
       "The names below are globals in a script run by\n.BR pointcalc (1)\n",
@@ -253,7 +255,8 @@ local function write_man(m, version)
       put(".TP\n")
       for i, sig in ipairs(e.sigs) do
         if i > 1 then put(".br\n") end
-        put("\\fB", roff(sig), "\\fR\n")
+        -- a break point after each "|": long lists of choices must not overrun the line
+        put("\\fB", (roff(sig):gsub("|", "|\\:")), "\\fR\n")
       end
       put(roff(e.desc), "\n")
     end
