@@ -52,7 +52,8 @@ static int find_animated(const char *script, const render_param *sets, int nsets
 
 typedef struct { char *data; size_t size; } memory_file;
 
-static int emit_memory(void *ud, FILE *f) {
+static int emit_memory(void *ud, FILE *f, char *why, size_t whylen) {
+    (void)why, (void)whylen;
     const memory_file *m = ud;
     return fwrite(m->data, 1, m->size, f) == m->size ? PC_OK : PC_EIO;
 }

@@ -1,8 +1,8 @@
 /* libpointcalc: the C core of pointcalc as one library (docs/c-api.md).
  *   #include <pointcalc.h>     with  cc prog.c $(pkg-config --cflags --libs pointcalc)
  * The kernel (points, ratios, meets, maps, the one curve and one surface type, point equations,
- * numerics), the books' constructions and the drawing layer (the canvas and its PNG, SVG and
- * PPM writers). Every function returns PC_OK or an error status of status.h unless its header
+ * numerics), the books' constructions and the drawing layer (the canvas, its PNG, SVG and PPM
+ * writers and the print look: PDF, EPS, PS, print-look PNG and SVG through cairo and Pango). Every function returns PC_OK or an error status of status.h unless its header
  * says otherwise; nothing here knows about Lua. */
 #ifndef POINTCALC_H
 #define POINTCALC_H
@@ -33,6 +33,8 @@ extern "C" {
 /* drawing */
 #include "canvas.h"
 #include "writers.h"
+#include "print.h"
+#include "math_label.h"
 #include "font.h"
 #include "qbscreen.h"
 #include "shaded.h"

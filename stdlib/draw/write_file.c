@@ -27,6 +27,7 @@
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "print.h"
 #include "writers.h"
 
 static const char *basename_of(const char *path) {
@@ -40,6 +41,9 @@ pc_format pc_format_from_path(const char *path) {
     if (strcasecmp(dot, ".png") == 0) return PC_FMT_PNG;
     if (strcasecmp(dot, ".svg") == 0) return PC_FMT_SVG;
     if (strcasecmp(dot, ".ppm") == 0) return PC_FMT_PPM;
+    if (strcasecmp(dot, ".pdf") == 0) return PC_FMT_PDF;
+    if (strcasecmp(dot, ".eps") == 0) return PC_FMT_EPS;
+    if (strcasecmp(dot, ".ps") == 0) return PC_FMT_PS;
     return PC_FMT_UNKNOWN;
 }
 
@@ -157,8 +161,12 @@ static mode_t new_file_mode(void) {
 
 typedef struct { const pc_canvas *c; pc_format fmt; pc_theme theme; } picture;
 
-static int encode(void *ud, FILE *f) {
+/* PDF, EPS and PS are always the print look; PNG and SVG when the script asked for a figure. */
+static int encode(void *ud, FILE *f, char *why, size_t whylen) {
     const picture *p = ud;
+    if (p->fmt == PC_FMT_PDF || p->fmt == PC_FMT_EPS || p->fmt == PC_FMT_PS ||
+        (p->c->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG)))
+        return pc_encode_print(p->c, p->fmt, f, why, whylen);
     switch (p->fmt) {
     case PC_FMT_PNG: return pc_encode_png(p->c, p->theme, f);
     case PC_FMT_SVG: return pc_encode_svg(p->c, p->theme, f);
@@ -169,7 +177,8 @@ static int encode(void *ud, FILE *f) {
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
     pc_format fmt = pc_format_from_path(path);
     if (fmt == PC_FMT_UNKNOWN)
-        return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_EARG);
+        return fail(err, errlen, path, "the extension must be .png, .svg, .ppm, .pdf, .eps or .ps",
+                    PC_EARG);
     picture p = {c, fmt, theme};
     return pc_write_file_emit(path, encode, &p, err, errlen);
 }
@@ -250,6 +259,7 @@ int pc_write_file_emit(const char *path, pc_emit_fn emit, void *ud, char *err, s
     memcpy(tmp, active_tmp, strlen(active_tmp) + 1);
 
     int e = 0;
+    char why[200] = "";   /* a print-look message (a font, a label's math) */
     code = PC_OK;
     FILE *f = fdopen(fd, "wb");
     if (!f) {
@@ -257,8 +267,9 @@ int pc_write_file_emit(const char *path, pc_emit_fn emit, void *ud, char *err, s
         close(fd);
     } else {
         errno = 0;
-        code = emit(ud, f);
+        code = emit(ud, f, why, sizeof why);
         if (code != PC_OK) e = errno ? errno : (code == PC_ENOMEM ? ENOMEM : EIO);
+        if (code == PC_EARG || (code == PC_ENOMEM && why[0])) e = EINVAL;   /* why says it */
         if (!e && fflush(f) != 0) e = errno;
         if (!e && existing && geteuid() == 0)   /* root replacing a user's file: keep its owner */
             (void)!fchown(fileno(f), st.st_uid, st.st_gid);
@@ -284,8 +295,8 @@ int pc_write_file_emit(const char *path, pc_emit_fn emit, void *ud, char *err, s
     tmp_active = 0;
     release_signals(&guard);
     if (e) {
-        code = code == PC_ENOMEM ? code : PC_EIO;
-        fail(err, errlen, path, strerror(e), code);
+        code = code == PC_ENOMEM || code == PC_EARG ? code : PC_EIO;
+        fail(err, errlen, path, why[0] ? why : strerror(e), code);
     } else {
         code = PC_OK;
         if (err && errlen) err[0] = 0;
