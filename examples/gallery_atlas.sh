@@ -8,7 +8,8 @@ set -e
 out=$1 group=$2 list=$3
 args="$out/$group/atlas.args"
 # per page: the caption as a PostScript string in Latin-1 (the Times font's encoding), then the
-# figure; EndPage writes the caption centred in the bottom margin
+# figure; EndPage writes the caption centred in the bottom margin (smaller when it is wider than
+# the page)
 : > "$args"
 while IFS='	' read -r pdf caption; do
     [ -s "$out/$pdf" ] || continue
@@ -21,7 +22,10 @@ done < "$list"
 prolog='/pc_font /Times-Roman findfont dup length dict begin { 1 index /FID ne { def } { pop pop } ifelse } forall
 /Encoding ISOLatin1Encoding def currentdict end definefont pop
 << /EndPage { exch pop 2 lt { gsave /pc_font findfont 9 scalefont setfont
-   currentpagedevice /PageSize get 0 get pc_caption stringwidth pop sub 2 div 12 moveto
+   currentpagedevice /PageSize get 0 get /pc_pw exch def
+   pc_caption stringwidth pop /pc_w exch def
+   pc_w pc_pw 24 sub gt { /pc_font findfont 9 pc_pw 24 sub mul pc_w div scalefont setfont } if
+   pc_pw pc_caption stringwidth pop sub 2 div 12 moveto
    pc_caption show grestore true } { false } ifelse } bind >> setpagedevice'
 # one argument per line of $args (captions may hold spaces)
 set --

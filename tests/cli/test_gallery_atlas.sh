@@ -26,6 +26,9 @@ for dir in "$PC_SOURCE_DIR"/examples/*/; do
 done
 pdftotext gallery/stepanov/atlas.pdf stepanov.txt
 expect_in stepanov.txt "example 2: Example 2" "Stepanov's example 2 captioned with its number"
+pdftotext gallery/basics/atlas.pdf basics.txt
+expect_in basics.txt "2.8.4, Fig. 2.12: A cube in isometric projection" \
+    "a figure after the textbook captioned with its section and figure number"
 pdftotext gallery/buimov/atlas.pdf buimov.txt
-expect_in buimov.txt "Fig. 2.12" "a Buimov figure captioned with its figure number"
+expect_in buimov.txt "ch. 3, Fig. 3.1: " "a Buimov figure captioned with its chapter and figure number"
 finish
