@@ -21,12 +21,22 @@ jobs=${PC_JOBS:-$(nproc 2>/dev/null || echo 2)}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
+# The print look: where the program writes PDF (the print renderer), each figure also goes to
+# PDF and each book gets an atlas of its figures, captioned with their numbers and titles
+# (PC_GALLERY_PDF=0 leaves them out)
+pdf=
+if [ "${PC_GALLERY_PDF:-1}" != 0 ] && "$pc" -e 'pset(0, 0)' -o "$out/.probe.pdf" >/dev/null 2>&1 &&
+   [ -s "$out/.probe.pdf" ] && command -v gs >/dev/null; then
+    pdf=1
+fi
+rm -f "$out/.probe.pdf"
+
 # --- render: every script in its group's folder, in parallel; a failure leaves NAME.failed ---
 for dir in "$here"/*/; do
     ls "$dir"*.lua >/dev/null 2>&1 || continue
     mkdir -p "$out/$(basename "$dir")"
     for script in "$dir"*.lua; do printf '%s\n' "$script"; done
-done | PC="$pc" OUT="$out" xargs -P "$jobs" -I{} sh -c '
+done | PC="$pc" OUT="$out" PDF="$pdf" xargs -P "$jobs" -I{} sh -c '
     script=$1
     group=$(basename "$(dirname "$script")")
     name=$(basename "$script" .lua)
@@ -37,6 +47,10 @@ done | PC="$pc" OUT="$out" xargs -P "$jobs" -I{} sh -c '
     # a script with a slider {animate = true} also plays: an animated SVG (docs/live.md)
     if [ ! -e "$name.failed" ] && grep -q "animate = true" "$script"; then
         "$PC" "$script" --frames 36 -o "$name-animated.svg" >/dev/null 2>"$name.err" || mv "$name.err" "$name.failed"
+    fi
+    # the print look for the atlas of its book (a failure only leaves the figure out of it)
+    if [ -n "$PDF" ] && [ ! -e "$name.failed" ]; then
+        "$PC" "$script" -o "$name.pdf" >/dev/null 2>&1 || rm -f "$name.pdf"
     fi
     rm -f "$name.err"' sh {}
 
@@ -105,15 +119,6 @@ chapter() {  # chapter GROUP CITATION
     if [ "$1" = stepanov ]; then echo "§$n"; else echo "ch. $n"; fi
 }
 
-# The print look: where the program writes PDF (the print renderer), each figure also goes to
-# PDF and each book gets an atlas of its figures, captioned with their numbers and titles
-# (PC_GALLERY_PDF=0 leaves them out)
-pdf=
-if [ "${PC_GALLERY_PDF:-1}" != 0 ] && "$pc" -e 'pset(0, 0)' -o "$out/.probe.pdf" >/dev/null 2>&1 &&
-   [ -s "$out/.probe.pdf" ] && command -v gs >/dev/null; then
-    pdf=1
-fi
-rm -f "$out/.probe.pdf"
 
 # --- the page ------------------------------------------------------------------------------
 index="$out/index.html.tmp"
@@ -212,8 +217,6 @@ for dir in "$here"/*/; do
         } > "$out/$f.html"
         # the print look, and its caption in the atlas
         if [ -n "$pdf" ]; then
-            "$pc" "$script" --print -o "$out/$f.pdf" >/dev/null 2>&1 || "$pc" "$script" -o "$out/$f.pdf" >/dev/null 2>&1 ||
-                rm -f "$out/$f.pdf"
             caption=$(printf '%s' "${cite#*	}" | sed 's/^[^,]*, //')
             [ -n "$caption" ] && caption="$caption: "
             printf '%s\t%s%s\n' "$f.pdf" "$caption" "$(sed -n '1s/^-- *//p' "$script")" >> "$out/$group/atlas.list"
