@@ -31,8 +31,9 @@ def reply_to(msg_id, timeout):
 
 
 def run(code, timeout=30):
-    """The reply and the iopub messages (type, content) of one cell."""
-    msg_id = kc.execute(code)
+    """The reply and the iopub messages (type, content) of one cell.  stop_on_error=False: the
+    cells here are independent (with True, ipykernel aborts what arrives just after an error)."""
+    msg_id = kc.execute(code, stop_on_error=False)
     outs = []
     while True:
         m = kc.get_iopub_msg(timeout=timeout)
@@ -99,7 +100,7 @@ reply, outs = run(":help lerp")
 check(":help in a cell", any(t == "stream" and "lerp(A, B, t)" in c["text"] for t, c in outs), outs)
 
 # an interrupt stops a runaway cell, and the notebook goes on
-msg_id = kc.execute("while true do end")
+msg_id = kc.execute("while true do end", stop_on_error=False)
 time.sleep(1.0)
 km.interrupt_kernel()
 r = reply_to(msg_id, 15)
