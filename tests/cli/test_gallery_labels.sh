@@ -8,7 +8,7 @@
 . "$(dirname "$0")/lib.sh"
 : "${PC_SOURCE_DIR:?PC_SOURCE_DIR must name the source tree}"
 command -v python3 >/dev/null || { echo "no python3: skipped"; exit 77; }
-MAX_OVERLAPS=9
+MAX_OVERLAPS=4
 MAX_OUTSIDE=2
 MAX_CROSSED=49
 
