@@ -183,20 +183,15 @@ area("smooth", "Smoothsteps (smooth.*)",
   "curves smoothly; the curve builders take them as their g.",
   "toolkit.md")
 
-def("smooth.sine", "smooth.sine(t) -> number",
-  "(1 - cos(pi t))/2, the smoothstep of examples 3 and 4.")
-def("smooth.cubic", "smooth.cubic(t) -> number",
-  "3t^2 - 2t^3, the smoothstep of examples 5, 6 and 9.")
-def("smooth.power", "smooth.power(n [, t]) -> number | g",
-  "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g.")
-def("smooth.half", "smooth.half(n, m, t0 [, t]) -> number | g",
-  "The asymmetric half-spline of example 8: c1 t^n before t0, 1 - c2 (1 - t)^m after, slope continuous; without t the object g (g(t), g:deriv(t), g.c1, g.c2, g.v).")
-def("smooth.locus", "smooth.locus(n, m, t0) -> number",
-  "The junction ordinate v(t0) = m t0/(n - n t0 + m t0) of the half-spline (n, m, t0): the locus of example 8.")
-def("smooth.clamp", "smooth.clamp(t) -> number",
-  "The clamped smoothstep of examples 20-22: 0 before 0, 2t^2 to 1/2, 1 - 2(1 - t)^2 to 1, then 1.")
-def("smooth.clamp_qb", "smooth.clamp_qb(t [, prev]) -> number",
-  "smooth.clamp as the listings' strict IF chain computes it: at t exactly 0, 1/2 or 1 it keeps prev.")
+def("smooth.sine")
+def("smooth.cubic")
+def("smooth.power")
+def("smooth.half")
+def("smooth.locus")
+def("smooth.clamp")
+def("smooth.clamp_qb")
+def("g(t)", nil, nil, "method")
+def("g:deriv", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curves", "Curves",

@@ -54,7 +54,17 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
     return vfail(L, prefix, fmt, ap);
 }
 
+/* A plain function called with a colon (p:dist(B), a value's method table holds it): the
+ * receiver is "self" and the arguments count after it, as the user wrote them. */
+static int colon_call(lua_State *L) {
+    lua_Debug ar;
+    return !current(L)->self && lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) &&
+           ar.namewhat && !strcmp(ar.namewhat, "method");
+}
+
 static const char *arg_label(lua_State *L, int shown, const char *name) {
+    if (colon_call(L) && --shown == 0)
+        return name ? lua_pushfstring(L, "self (%s)", name) : "self";
     return name ? lua_pushfstring(L, "argument #%d (%s)", shown, name)
                 : lua_pushfstring(L, "argument #%d", shown);
 }
