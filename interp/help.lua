@@ -358,17 +358,21 @@ def("oblique", "oblique(C0, r, k, u) -> map",
   "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
 def("projection", "projection(C0, C1, C2, C3) -> map",
   "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0.")
-def("complex", "complex(re [, im]) | complex(P) -> z",
-  "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point().")
+def("complex")
 def("complex.i", "complex.i", "The imaginary unit.", "value")
-def("complex.polar", "complex.polar(r, u) -> z",
-  "The complex number r e^(iu).")
-def("complex.exp", "complex.exp(z) -> z", "The complex exponential.")
-def("complex.abs", "complex.abs(z) -> number", "The modulus |z|.")
-def("complex.arg", "complex.arg(z) -> number", "The argument of z: atan2(im, re), in radians.")
-def("complex.conj", "complex.conj(z) -> z", "The complex conjugate.")
-def("mobius", "mobius(z0 [, phi]) -> M",
-  "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse().")
+def("complex.polar")
+def("complex.exp")
+def("complex.abs")
+def("complex.arg")
+def("complex.conj")
+def("z:conj", nil, nil, "method")
+def("z:abs", nil, nil, "method")
+def("z:arg", nil, nil, "method")
+def("z:exp", nil, nil, "method")
+def("z:point", nil, nil, "method")
+def("mobius")
+def("M(z)", nil, nil, "method")
+def("M:inverse", nil, nil, "method")
 def("oresme", "oresme(lambda [, m [, y0, y1]]) -> o",
   "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o.")
 def("bisect", "bisect(f, a, b [, tol]) -> x, iterations",

@@ -145,7 +145,7 @@ end
 truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
-local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "smooth"}
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "smooth", "complex"}
 for _, t in ipairs(CONVERTED) do
   for k, v in pairs(pointcalc[t]) do
     if type(v) == "function" then truthy(decls[t .. "." .. k], t .. "." .. k .. " has a declaration") end

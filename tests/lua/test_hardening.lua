@@ -82,7 +82,7 @@ check.err(function() return approx.mse(function() return "x" end, {0, 1}) end,
 check.err(function() return affine({P(0, 0)}, complex(1, 2)) end,
   "affine: argument #2 (image points) must be a table of points or a simplex, got complex")
 local z = complex(1, 2)
-check.err(function() return z.point(5) end, "z:point: self must be a complex number")
+check.err(function() return z.point(5) end, "z:point: must be called on a complex number, as z:point(...)")
 check.err(function() return z.point(5) end, here .. ":", "z.point(5) located")
 check.eq(tostring(z:point()), "P(1, 2)", "z:point() still works")
 check.err(function() return smooth.half(2, 3, 0.5).deriv(5, 0.5) end, "g:deriv: must be called on a half-spline, as g:deriv(...)")
