@@ -44,54 +44,30 @@ area("points", "Point calculus",
   "A point has weight 1, a vector weight 0, `k*A` weight k; sums add weights.",
   "points.md")
 
-def("P", "P(x, y [, z, ...]) -> point",
-  "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1).")
-def("V", "V(x, y [, z, ...]) -> vector",
-  "A vector (weight 0), as the difference of two points is: V(0, 1).")
-def("lerp", "lerp(A, B, t) -> value",
-  "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers.")
-def("bar", "bar(t) -> number",
-  "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t.")
-def("mid", "mid(A, B, ...) -> value",
-  "The midpoint of two values, or the centroid of several.")
-def("dist", "dist(A, B) | dist(v) -> number",
-  "The distance between two points, or the length of a vector.")
-def("dot", "dot(u, v) -> number",
-  "The scalar product of two vectors.")
-def("cross", "cross(u, v) -> vector | number",
-  "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D.")
-def("unit", "unit(v) -> vector",
-  "The vector v scaled to length 1; the zero vector is an error.")
-def("perp", "perp(v) -> vector",
-  "The 2-D vector v turned by +90 degrees: V(-v.y, v.x).")
-def("angle", "angle(A, B, C) | angle(u, v) -> number",
-  "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi.")
-def("foot", "foot(C, A, B) -> point",
-  "The foot of the perpendicular from C to line AB.")
-def("Sigma", "Sigma(A, B [, C]) -> number",
-  "The metric operator (B - A).(C - A) of three points; Sigma(A, B) is the squared distance AB^2.")
-def("sr", "sr(X, Y, Z) -> number",
-  "The simple ratio (XYZ) = (X - Z)/(Z - Y) in which Z divides XY; math.huge when Z = Y, -1 for the point at infinity.")
-def("divide", "divide(X, Y, lambda) -> point",
-  "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY.")
-def("harmonic", "harmonic(A, B, T) -> point",
-  "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity.")
-def("cross_ratio", "cross_ratio(A, B, C, D) -> number",
-  "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity).")
-def("meet", "meet(A1, A2, B1, B2) -> K, lambda, mu",
-  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance.")
-def("area", "area(A, B, C) | area(A, B, C, D, ...) -> number",
-  "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon.")
-def("volume", "volume(A, B, C, D) -> number",
-  "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up.")
-def("normalize", "normalize(p) -> point",
-  "Divide a weighted value by its weight (projective normalisation); weight 0 is an error.")
-def("weight", "weight(p) -> number",
-  "The weight of a value: 1 for a point, 0 for a vector, k for k*A.")
-def("coords", "coords(p) -> x, y, ...",
-  "The coordinates of a point or the components of a vector, as numbers.")
-def("near", "near(a, b [, eps]) -> boolean",
-  "Numbers, or values of one dimension, equal within eps (default 1e-9) relative to their size.")
+def("P")
+def("V")
+def("lerp")
+def("bar")
+def("mid")
+def("dist")
+def("dot")
+def("cross")
+def("unit")
+def("perp")
+def("angle")
+def("foot")
+def("Sigma")
+def("sr")
+def("divide")
+def("harmonic")
+def("cross_ratio")
+def("meet")
+def("area")
+def("volume")
+def("normalize")
+def("weight")
+def("coords")
+def("near")
 
 -- ---------------------------------------------------------------------------------------
 area("values", "Point values",
