@@ -4,7 +4,8 @@
 -- module has an entry here and that every entry names something that exists.
 --
 -- Entries: name (as written in a script: "lerp", "qb.rnd", "A.x", ":show"), area, sig (one
--- form, or a list of forms), desc (one line).
+-- form, or a list of forms), desc (one line), kind ("function", "method", "field", "value",
+-- "operator", or "library": a function of Lua's own library that pointcalc extends, math.sin).
 --
 -- A function declared in C on the argument layer (stdlib/lua/pcl_args.h, docs/bindings.md)
 -- carries its own signature and description: its entry here is def(NAME) alone, placing it in
@@ -240,16 +241,19 @@ area("equations", "Point equations",
   "derivatives; the membership condition is checked when one is made.",
   "equations.md")
 
-def("param", "param(name) -> equation",
-  "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value.")
-def("M(t)", {"M(t [, s ...]) -> value", "M{t = ..., s = ...} -> value"},
-  "The equation's value at parameter values given in the order of M.params, or by name.", "method")
-def("M:with", "M:with{s = value | equation, ...} -> equation",
-  "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation).", "method")
-def("M:show", "M:show{A = A, B = B, ...} -> string",
-  "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y)).", "method")
-def("M:sample", "M:sample(a, b [, n = 1001 [, s]]) -> samples",
-  "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum().", "method")
+def("param")
+def("M(t)", nil, nil, "method")
+def("M:with", nil, nil, "method")
+def("M:show", nil, nil, "method")
+def("M:sample", nil, nil, "method")
+def("s:sum", nil, nil, "method")
+def("math.sin", nil, nil, "library")
+def("math.cos", nil, nil, "library")
+def("math.tan", nil, nil, "library")
+def("math.exp", nil, nil, "library")
+def("math.log", nil, nil, "library")
+def("math.sqrt", nil, nil, "library")
+def("math.abs", nil, nil, "library")
 def("curve(M)", {"curve(M, t0, t1) -> curve", "surface(M, u0, u1, v0, v1) -> surface"},
   "A one-parameter equation as a curve, a two-parameter one (u the first made) as a surface: exact tangents, normals, curvature.", "method")
 

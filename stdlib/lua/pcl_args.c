@@ -525,8 +525,8 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     if (d->self) {
         self = d->self(L, 1);
         if (!self) {
-            pcl_error(L, "%s: must be called on a %s, as %s(...)", d->name, d->selftype,
-                      d->topic ? d->topic : d->name);
+            pcl_error(L, "%s: must be called on %s %s, as %s(...)", d->name,
+                      strchr("aeiou", d->selftype[0]) ? "an" : "a", d->selftype, d->topic ? d->topic : d->name);
         }
         first = 2;
     }

@@ -113,6 +113,8 @@ err(function() return P(0, 0):dist(P(1, 1, 1)) end, "dist: argument #1 (B) is 3-
 err(function() assert(pcall(dot, P(1, 2), V(1, 0))) end, "dot: argument #1 (u) must be a vector, got P(1, 2)", "pcall(dot, ...) names dot")
 err(function() return smooth.half(2, 3, .5).deriv(.5) end, "g:deriv: must be called on a half-spline, as g:deriv(...)", "a half-spline method with a dot")
 err(function() return complex(1, 2).abs(5) end, "z:abs: must be called on a complex number, as z:abs(...)", "a complex method with a dot")
+err(function() local t = param "t" return (P(0, 0) + V(1, 0) * t).with(3) end, "M:with: must be called on an equation, as M:with(...)", "an equation method with a dot")
+err(function() local t = param "t" return math.log(t, 1) end, "math.log: argument #2 (base) must be a positive number other than 1, got 1", "math.log of an equation names its base")
 local e = korotky.energy
 err(function() e(3) end, "korotky.energy: argument #1 (curve) must be a curve, got 3", "an alias keeps the declared name")
 err(function() assert(pcall(korotky.energy, 3)) end, "korotky.energy: argument #1", "pcall names the function, not pcall")
@@ -163,7 +165,7 @@ end
 -- the global functions of converted files
 for _, k in ipairs{"P", "V", "lerp", "bar", "mid", "dist", "dot", "cross", "unit", "perp", "angle", "foot", "Sigma", "sr",
                    "divide", "harmonic", "cross_ratio", "meet", "area", "volume", "normalize", "weight", "coords", "near",
-                   "mobius"} do
+                   "mobius", "param"} do
   truthy(decls[k], k .. " has a declaration")
 end
 truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"], "constructors, calls and methods")

@@ -160,7 +160,7 @@ err(function() return curve((B - A)*t, 0, 1) end,
 err(function() return A*t + P(1, 2, 3) end,
   "cannot add a 2-D point equation and the 3-D value P(1, 2, 3): dimensions cannot be mixed", "mixed dimensions")
 err(function() return lerp(A, P(1, 2, 3), t) end,
-  "lerp: argument #2 (B) is 3-D, but argument #1 is 2-D: dimensions cannot be mixed", "lerp mixed")
+  "lerp: argument #2 (B) is 3-D, but argument #1 (A) is 2-D (mixed dimensions)", "lerp mixed")
 err(function() return A*t + 1 end, "cannot add a 2-D point equation and a number", "point plus number")
 err(function() return (A*t) * (B*t) end, "cannot multiply a 2-D point equation by a 2-D point equation: use dot(u, v)", "value times value")
 err(function() return t / A end, "cannot divide a scalar equation by the 2-D value P(0, 0)", "divide by a point")
@@ -174,9 +174,9 @@ err(function() return curve(t, 0, 1) end, "curve: argument #1 (equation) must be
 err(function() return curve(Fam, 0, 1) end, "curve: argument #1 (equation) depends on t and s, but a curve has 1 parameter", "two parameters")
 err(function() return curve(M, 1, 0) end, "curve: argument #3 (t1) must be greater than t0", "empty domain")
 err(function() return surface(M, 0, 1, 0, 1) end, "surface: argument #1 (equation) depends on t, but a surface has 2 parameters", "one-parameter surface")
-err(function() return Fam(.5) end, "equation: needs 2 parameter values (t and s), got 1", "too few values")
+err(function() return Fam(.5) end, "Fam: needs 2 parameter values (t and s), got 1", "too few values")
 err(function() return Fam:with{x = 1} end, "M:with: the equation has no parameter x (its parameters: t and s)", "unknown parameter")
-err(function() return math.log(t)(-1) end, "equation: the value at t = -1 is not finite", "non-finite with its parameter")
+err(function() return math.log(t)(-1) end, "M: the value at t = -1 is not finite (NaN or infinite: outside the domain of a function, or a division by zero)", "non-finite with its parameter")
 err(function() return param "" end, "param: argument #1 (name) must be a name of 1 to 31 characters", "empty name")
 err(function() return param(3) end, "param: argument #1 (name) must be a name of 1 to 31 characters, got 3", "a number")
 err(function() return math.log(t):sample(-1, 1, 3) end, "M:sample: the value at t = -1 is not finite", "sample outside the domain")
