@@ -465,6 +465,25 @@ static void push_result(lua_State *L, int dim, const double *h) {
 static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
 static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
 
+/* Every key of M{t = ..., s = ...} at idx names a parameter of M: a misspelt one is an error
+ * with the nearest name, not ignored. */
+static void check_keys(lua_State *L, int idx, int n, const int *in) {
+    const char *names[PC_EXPR_MAXPARAM + 1];
+    for (int j = 0; j < n; j++) names[j] = pc_expr_param_name(pool(L), in[j]);
+    names[n] = NULL;
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
+        int j = 0;
+        while (j < n && (!k || strcmp(k, names[j]))) j++;
+        if (j < n) continue;
+        const char *near = k ? pcl_nearest(k, names) : NULL;
+        if (near) pcl_fail(L, "the equation has no parameter %s (did you mean %s?)", k, near);
+        pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", k ? k : pcl_shown(L, -1), n ? names_of(L, n, in) : "none");
+    }
+}
+
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
     leq *e = pcl_read(L, NULL, 0);
@@ -472,6 +491,7 @@ static int eq_call(lua_State *L) {
     double x[PC_EXPR_MAXPARAM];
     pc_expr_pool *p = pool(L);
     int table = lua_istable(L, 2), given = lua_gettop(L) - 1;
+    if (table) check_keys(L, 2, n, in);
     if (!table && given != n)
         return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
     for (int j = 0; j < n; j++) {

@@ -176,26 +176,19 @@ double pcl_checkfinite(lua_State *L, int arg, const char *what) {
     return v;
 }
 
-void pcl_pushpoint(lua_State *L, int n, const double *x) {
-    pcl_value *p = pcl_newvalue(L, n);
-    memcpy(p->h, x, sizeof(double) * (size_t)n);
-    p->h[n] = 1.0;
-}
-
-void pcl_pushvector(lua_State *L, int n, const double *x) {
-    pcl_value *p = pcl_newvalue(L, n);
-    memcpy(p->h, x, sizeof(double) * (size_t)n);
-    p->h[n] = 0.0;
-}
-
-/* a new value of dimension n with the n + 1 homogeneous h, or the n coordinates x and weight w */
-static void push_h(lua_State *L, int n, const double *h) {
-    memcpy(newpt(L, n)->h, h, sizeof(double) * (size_t)(n + 1));
-}
-static void push_w(lua_State *L, int n, const double *x, double w) {
-    pcl_value *r = newpt(L, n);
+/* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */
+static void fill(pcl_value *r, int n, const double *x, double w) {
     memcpy(r->h, x, sizeof(double) * (size_t)n);
     r->h[n] = w;
+}
+void pcl_pushpoint(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 1.0); }
+void pcl_pushvector(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 0.0); }
+static void push_w(lua_State *L, int n, const double *x, double w) { fill(newpt(L, n), n, x, w); }
+/* the n + 1 homogeneous h */
+static void push_h(lua_State *L, int n, const double *h) { fill(newpt(L, n), n, h, h[n]); }
+static int push_num(lua_State *L, double x) {
+    lua_pushnumber(L, x);
+    return 1;
 }
 
 /* ---- construction ------------------------------------------------------------------------- */
@@ -447,8 +440,7 @@ static int l_lerp(lua_State *L) {
             pcl_readone(L, 3, 3, 0, &lerp_args[2], 0, &v[2]);
             double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2), r = x * (1 - v[2].x) + y * v[2].x;
             if (!isfinite(r)) return out_of_range(L, v[2].x);
-            lua_pushnumber(L, r);
-            return 1;
+            return push_num(L, r);
         }
         PCL_READ(L, v);                                  /* the message, or two values and t */
         a = topt(L, 1), b = topt(L, 2), t = v[2].x;
@@ -466,8 +458,7 @@ static int l_bar(lua_State *L) {
     if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_hook(L, PCL_EQ_BAR)) return 1;
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    lua_pushnumber(L, 1.0 - a[0].x);
-    return 1;
+    return push_num(L, 1.0 - a[0].x);
 }
 
 /* mid(A, B, ...): the midpoint, or the centroid of several values. */
@@ -497,12 +488,10 @@ static int l_dist(lua_State *L) {
     pcl_val a[2] = {0};
     if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
         pcl_readone(L, 1, 1, 0, &one_vector[0], 0, &a[0]);
-        lua_pushnumber(L, pc_norm(a[0].n, a[0].v));
-        return 1;
+        return push_num(L, pc_norm(a[0].n, a[0].v));
     }
     PCL_READ(L, a);
-    lua_pushnumber(L, pc_dist(a[0].n, a[0].v, a[1].v));
-    return 1;
+    return push_num(L, pc_dist(a[0].n, a[0].v, a[1].v));
 }
 
 static const pcl_arg uv_args[] = {A_SAMEVECTOR("u"), A_SAMEVECTOR("v"), PCL_END};
@@ -510,8 +499,7 @@ static int l_dot(lua_State *L) {
     if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    lua_pushnumber(L, pc_dot(a[0].n, a[0].v, a[1].v));
-    return 1;
+    return push_num(L, pc_dot(a[0].n, a[0].v, a[1].v));
 }
 
 /* cross(u, v): a vector in 3-D, the number u.x v.y - u.y v.x in 2-D. */
@@ -521,8 +509,7 @@ static int l_cross(lua_State *L) {
     PCL_READ(L, a);
     double w[3];
     if (a[0].n == 2) {
-        lua_pushnumber(L, pc_cross2(a[0].v, a[1].v));
-        return 1;
+        return push_num(L, pc_cross2(a[0].v, a[1].v));
     }
     if (a[0].n != 3) return pcl_fail(L, "vectors must be 2-D or 3-D, got %d-D", a[0].n);
     pc_cross3(a[0].v, a[1].v, w);
@@ -569,8 +556,7 @@ static int l_angle(lua_State *L) {
         for (int i = 0; i < a[0].n; i++) b[i] = a[1].v[i] - a[0].v[i], c[i] = a[2].v[i] - a[0].v[i];
     }
     if (pc_angle(a[0].n, b, c, &ang) != PC_OK) return pcl_fail(L, "a side has zero length, so the angle is undefined");
-    lua_pushnumber(L, ang);
-    return 1;
+    return push_num(L, ang);
 }
 
 static const pcl_arg foot_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), A_SAMEPOINT("B"), PCL_END};
@@ -612,8 +598,7 @@ static int l_sr(lua_State *L) {
     double lam;
     int st = pc_sr(a[0].n, a[0].v, a[1].v, a[2].v, &lam);
     if (st != PC_OK) return ratio_error(L, st);
-    lua_pushnumber(L, lam);
-    return 1;
+    return push_num(L, lam);
 }
 
 /* lambda of divide: any number but NaN (math.huge gives Y) */
@@ -654,8 +639,7 @@ static int l_cross_ratio(lua_State *L) {
     double r;
     int st = pc_cross_ratio(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &r);
     if (st != PC_OK) return ratio_error(L, st);
-    lua_pushnumber(L, r);
-    return 1;
+    return push_num(L, r);
 }
 
 /* ---- incidence and measure ---------------------------------------------------------------- */
@@ -715,8 +699,7 @@ static int l_area(lua_State *L) {
     if (n < 2) return pcl_fail(L, "points must be 2-D or more, got 1-D");
     if (n > 2 && m > 3) return pcl_fail(L, "a polygon area needs 2-D points; in %d-D give a triangle", n);
     if (n > 2) {
-        lua_pushnumber(L, pc_area(n, a[0].v, a[1].v, a[2].v));
-        return 1;
+        return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
     }
     double s = pc_area2(a[0].v, a[1].v, a[2].v), prev[2] = {a[2].v[0], a[2].v[1]};
     for (int j = 4; j <= m; j++) {
@@ -724,8 +707,7 @@ static int l_area(lua_State *L) {
         s += pc_area2(a[0].v, prev, d.v);
         prev[0] = d.v[0], prev[1] = d.v[1];
     }
-    lua_pushnumber(L, s);
-    return 1;
+    return push_num(L, s);
 }
 
 /* volume(A, B, C, D): signed in 3-D (positive when B - A, C - A, D - A are right-handed),
@@ -738,8 +720,7 @@ static int l_volume(lua_State *L) {
     if (n < 3) return pcl_fail(L, "points must be 3-D or more, got %d-D", n);
     double v[4 * PC_MAXDIM];
     for (int j = 0; j < 4; j++) memcpy(v + j * n, a[j].v, sizeof(double) * (size_t)n);
-    lua_pushnumber(L, n == 3 ? pc_volume3(v, v + 3, v + 6, v + 9) : pc_measure(n, 3, v));
-    return 1;
+    return push_num(L, n == 3 ? pc_volume3(v, v + 3, v + 6, v + 9) : pc_measure(n, 3, v));
 }
 
 /* ---- weights -------------------------------------------------------------------------------- */
@@ -759,8 +740,7 @@ static int l_normalize(lua_State *L) {
 static int l_weight(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    lua_pushnumber(L, a[0].v[a[0].n]);
-    return 1;
+    return push_num(L, a[0].v[a[0].n]);
 }
 
 /* coords(p) -> x, y, ...: the coordinates of a point or the components of a vector. */

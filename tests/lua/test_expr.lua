@@ -129,6 +129,8 @@ eq(#Fam.params, 2, "two parameters")
 eq(Fam.params[1], "t", "in the order they were made"); eq(Fam.params[2], "s", "then s")
 same(Fam(.25, .5), lerp(lerp(A, B, .5), lerp(B, C, .5), .25), "M(t, s) positional")
 same(Fam{t = .25, s = .5}, Fam(.25, .5), "M{t =, s =}")
+err(function() return Fam{t = .25, ss = .5} end, "Fam: the equation has no parameter ss (did you mean s?)", "M{...} with a misspelt parameter")
+err(function() return Fam{t = .25, s = .5, zzz = 1} end, "Fam: the equation has no parameter zzz (its parameters: t and s)", "M{...} with an unknown key")
 local F5 = Fam:with{s = .5}
 eq(#F5.params, 1, "one parameter left")
 same(F5(.25), Fam(.25, .5), "instantiated")
