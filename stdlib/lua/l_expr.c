@@ -396,8 +396,9 @@ static void wrap_math(lua_State *L) {
         lua_getfield(L, -1, MATHFN[i].name);
         lua_CFunction f = lua_tocfunction(L, -1);
         lua_pop(L, 1);
-        if (f && f != MATHDECL_OF[i][0].fn) math_orig[i] = f;   /* else wrapped already */
-        if (math_orig[i]) pcl_register(L, -1, MATHDECL_OF[i], 0);
+        if (!f) continue;                                  /* not Lua's: left alone */
+        if (f != MATHDECL_OF[i][0].fn) math_orig[i] = f;   /* else wrapped already */
+        pcl_register(L, -1, MATHDECL_OF[i], 0);
     }
     lua_pop(L, 1);
 }
