@@ -487,7 +487,7 @@ static void check_keys(lua_State *L, int idx, int n, const int *in) {
 
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
-    leq *e = pcl_read(L, NULL, 0);
+    leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
     int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
     double x[PC_EXPR_MAXPARAM];
     pc_expr_pool *p = pool(L);
@@ -498,9 +498,10 @@ static int eq_call(lua_State *L) {
     for (int j = 0; j < n; j++) {
         pcl_arg num = {.name = pc_expr_param_name(p, in[j]), .kind = PCL_NUMBER};
         pcl_val v;
-        if (table) lua_getfield(L, 2, num.name);
-        pcl_readone(L, table ? lua_gettop(L) : j + 2, table ? 1 : j + 1, 0, &num, 0, &v);   /* {t = } is #1 too */
-        x[j] = v.x;
+        int idx = table ? (lua_getfield(L, 2, num.name), lua_gettop(L)) : j + 2;
+        x[j] = lua_tonumber(L, idx);
+        if (lua_type(L, idx) != LUA_TNUMBER || !isfinite(x[j]))   /* the message: {t = } is #1 too */
+            pcl_readone(L, idx, table ? 1 : j + 1, 0, &num, 0, &v);
     }
     pc_expr_prog *prog = prog_of(L, e);
     double h[PC_MAXDIM + 1];

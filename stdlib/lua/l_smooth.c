@@ -134,8 +134,8 @@ static int hs_call(lua_State *L) {
         pc_gfun g = {PC_G_HALF, *h};
         if (pcl_eq_smooth(L, 2, &g)) return 1;
     }
-    pcl_val a[1] = {0};
-    h = PCL_READ(L, a);
+    pcl_val a[1] = {{.x = lua_tonumber(L, 2)}};
+    if (!h || lua_type(L, 2) != LUA_TNUMBER || !isfinite(a[0].x)) h = PCL_READ(L, a);   /* the message */
     return eval_at(L, h, a[0].x, 1);
 }
 
