@@ -479,12 +479,21 @@ static int l_mid(lua_State *L) {
     return 1;
 }
 
+/* The hot path of dist, dot and cross: two values of one dimension whose weights are exactly
+ * w (1: points, 0: vectors).  Anything else goes to the layer, which reads it by the one
+ * weight rule or words the message. */
+static int exact_pair(lua_State *L, double w, pcl_value **a, pcl_value **b) {
+    *a = topt(L, 1), *b = topt(L, 2);
+    return *a && *b && (*a)->n == (*b)->n && (*a)->h[(*a)->n] == w && (*b)->h[(*b)->n] == w;
+}
+
 /* dist(A, B) between points, or dist(v), the length of a vector.  The form follows the
  * first argument, so that dist(A, nil) names the missing argument #2. */
 static const pcl_arg two_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), PCL_END};
 static const pcl_arg one_vector[] = {A_VECTOR("v", 0), PCL_END};
 static int l_dist(lua_State *L) {
-    pcl_value *p = topt(L, 1);
+    pcl_value *p, *q;
+    if (exact_pair(L, 1.0, &p, &q)) return push_num(L, pc_dist(p->n, p->h, q->h));
     pcl_val a[2] = {0};
     if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
         pcl_readone(L, 1, 1, 0, &one_vector[0], 0, &a[0]);
@@ -496,7 +505,9 @@ static int l_dist(lua_State *L) {
 
 static const pcl_arg uv_args[] = {A_SAMEVECTOR("u"), A_SAMEVECTOR("v"), PCL_END};
 static int l_dot(lua_State *L) {
-    if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
+    pcl_value *u, *v;
+    if (exact_pair(L, 0.0, &u, &v)) return push_num(L, pc_dot(u->n, u->h, v->h));
+    if ((!u || !v) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     return push_num(L, pc_dot(a[0].n, a[0].v, a[1].v));
