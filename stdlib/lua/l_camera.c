@@ -136,9 +136,21 @@ static int l_draw_curve(lua_State *L) {
     const pc_map *f = pcl_drawing_map(L, 4, c->dim, "c:draw");
     int pieces = (int)luaL_optinteger(L, 5, 1);
     pc_polyline pl = {0};
+    /* what can be seen: the canvas and a margin as wide as it (a wide pen, a dash pattern
+     * leaving and coming back keep their look) */
+    double m = cv->width > cv->height ? cv->width : cv->height;
+    double clip[4] = {-m, -m, cv->width + m, cv->height + m};
+    pl.clip = clip;
     int st = pcl_flatten(L, c, c->t0, c->t1, pieces, f, 1, tol, &pl);
     if (st != PC_OK) {
+        int capped = st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX;
         pc_polyline_free(&pl);
+        if (capped) {
+            char t[32];
+            snprintf(t, sizeof t, "%g", tol);
+            return pcl_error(L, "c:draw: the curve needs more than %d vertices at tol = %s px; "
+                             "draw it with a larger tol", (int)PC_POLYLINE_MAX, t);
+        }
         return pcl_raise_status(L, "c:draw", st);
     }
     /* a closed curve whose polyline is unbroken closes exactly */

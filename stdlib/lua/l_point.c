@@ -238,6 +238,16 @@ static const char *opnd_name(lua_State *L, int idx) {
     return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
 }
 
+/* A result that overflowed (1e308 + 1e308) or became NaN is an error, never a point drawn at
+ * infinity: 1 when r is finite. */
+static int finite_or_error(lua_State *L, const pcl_value *r, const char *what) {
+    for (int i = 0; i <= r->n; i++)
+        if (!isfinite(r->h[i]))
+            return pcl_error(L, "%s: the result is out of range (not finite: a coordinate "
+                             "overflowed)", what);
+    return 1;
+}
+
 static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const pcl_value *b) {
     return pcl_error(L, "cannot %s a %d-D value and a %d-D value: dimensions cannot be mixed",
                       op, a->n, b->n);
@@ -254,7 +264,7 @@ static int l_add(lua_State *L) {
     if (b->n != n) return mixed_error(L, "add", a, b);
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + b->h[i];
-    return 1;
+    return finite_or_error(L, r, "A + B");
 }
 
 static int l_sub(lua_State *L) {
@@ -268,7 +278,7 @@ static int l_sub(lua_State *L) {
     if (b->n != n) return mixed_error(L, "subtract", a, b);
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = a->h[i] - b->h[i];
-    return 1;
+    return finite_or_error(L, r, "A - B");
 }
 
 static int l_mul(lua_State *L) {
@@ -290,7 +300,7 @@ static int l_mul(lua_State *L) {
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = p->h[i] * k;
-    return 1;
+    return finite_or_error(L, r, "k * A");
 }
 
 static int l_div(lua_State *L) {
@@ -305,7 +315,7 @@ static int l_div(lua_State *L) {
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = p->h[i] / k;   /* the weight is divided too */
-    return 1;
+    return finite_or_error(L, r, "A / k");
 }
 
 static int l_unm(lua_State *L) {
@@ -468,15 +478,15 @@ static int l_mid(lua_State *L) {
     pcl_val a[2] = {0}, v;
     PCL_READ(L, a);
     int n = a[0].n;
-    double s[PC_MAXDIM + 1];
-    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] + a[1].v[i];
+    double s[PC_MAXDIM + 1];   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
+    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m + a[1].v[i] / m;
     for (int j = 3; j <= m; j++) {
         pcl_readone(L, j, j, 0, &more_val, n, &v);
-        for (int i = 0; i <= n; i++) s[i] += v.v[i];
+        for (int i = 0; i <= n; i++) s[i] += v.v[i] / m;
     }
-    for (int i = 0; i <= n; i++) s[i] /= m;
-    push_h(L, n, s);
-    return 1;
+    pcl_value *r = newpt(L, n);
+    fill(r, n, s, s[n]);
+    return finite_or_error(L, r, pcl_name(L));
 }
 
 /* The hot path of dist, dot and cross: two values of one dimension whose weights are exactly

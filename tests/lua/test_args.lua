@@ -62,6 +62,7 @@ err(function() korotky.conic_sweep{U = 1} end,
     "korotky.conic_sweep: option 'U' must be a 3-D curve, got 1", "a call table's field")
 err(function() korotky.conic_revolve{} end,
     "korotky.conic_revolve: option 'A' must be a 3-D point, got nil", "a required key")
+err(function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)", "figure's keys")
 
 -- The misspelt keys of the issue on the calls where they apply.  Those calls live in files not
 -- yet on the layer: each is listed here with the message it must give, and checked to FAIL to
@@ -76,7 +77,6 @@ local PENDING = {
    "c:draw: unknown option 'closd' (did you mean 'closed'?)"},
   {"s:draw{hiden = true}", function() surface.plane(P(0, 0, 0), V(1, 0, 0), V(0, 1, 0)):draw{hiden = true} end,
    "unknown option 'hiden' (did you mean 'hidden'?)"},
-  {"figure{widht = 8}", function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)"},
   {"screen{widht = 300}", function() screen{widht = 300} end, "screen: unknown option 'widht' (did you mean 'width'?)"},
   {"bezier of 66 points", function() local p = {} for i = 1, 66 do p[i] = P(i, 0) end bezier(p) end,
    "bezier: argument #1 (points) must hold 2 to"},
@@ -169,6 +169,7 @@ for _, k in ipairs{"P", "V", "lerp", "bar", "mid", "dist", "dot", "cross", "unit
   truthy(decls[k], k .. " has a declaration")
 end
 truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"], "constructors, calls and methods")
+truthy(decls["figure"], "figure has a declaration")
 local sig = help.forms(help.by_name["korotky.poly_spline"])[1]
 eq(sig, 'korotky.poly_spline(points [, {ends = "natural"|"clamped", s0 =, s1 =}]) -> curve, coef', "a generated signature")
 eq(help.forms(help.by_name["korotky.conic_sweep"])[1], "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s", "a call table's signature")
