@@ -303,8 +303,28 @@ static int l_mul(lua_State *L) {
     return finite_or_error(L, r, "k * A");
 }
 
+/* u / v of two parallel vectors: the number r with u = r v ((2.62)'s (T - A)/(T_C - A)) */
+static int vec_ratio(lua_State *L, const pcl_value *u, const pcl_value *v) {
+    int n = u->n;
+    if (v->n != n) return pcl_error(L, "cannot divide a %d-D vector by a %d-D one (mixed dimensions)", n, v->n);
+    if (fabs(u->h[n]) > PC_WEIGHT_TOL || fabs(v->h[n]) > PC_WEIGHT_TOL)
+        return pcl_error(L, "cannot divide %s by %s: only a vector divides a parallel vector (u/v = r with u = r v; "
+                         "the difference of two points is a vector)", opnd_name(L, 1), opnd_name(L, 2));
+    double r, ang;
+    int st = pc_vec_ratio(n, u->h, v->h, &r, &ang);
+    if (st == PC_EZERO) return pcl_error(L, "division of a vector by the zero vector");
+    if (st == PC_ENOTCOLLINEAR)
+        return pcl_error(L, "cannot divide vectors that are not parallel: they are %s degrees apart "
+                         "(the ratio u/v needs u = r v, within 1e-9)", pcl_pushnum(L, ang * 180 / 3.14159265358979323846));
+    if (st != PC_OK) return pcl_statuserror(L, "/", st, NULL);
+    lua_pushnumber(L, r);
+    return 1;
+}
+
 static int l_div(lua_State *L) {
     pcl_value *p = topt(L, 1);
+    pcl_value *q = topt(L, 2);
+    if (p && q) return vec_ratio(L, p, q);
     if ((!p || lua_type(L, 2) != LUA_TNUMBER) && pcl_eq_hook(L, PCL_EQ_DIV)) return 1;
     if (!p) return pcl_error(L, "cannot divide %s by a point", opnd_name(L, 1));
     if (lua_type(L, 2) != LUA_TNUMBER)
@@ -674,6 +694,7 @@ static int l_cross_ratio(lua_State *L) {
  * and the distance between them (math.huge for a line that misses a line at infinity). */
 static const pcl_arg meet_args[] = {A_PROJ("A1"), A_PROJ("A2"), A_PROJ("B1"), A_PROJ("B2"), PCL_END};
 static int l_meet(lua_State *L) {
+    if (!(topt(L, 1) && topt(L, 2) && topt(L, 3) && topt(L, 4)) && pcl_eq_hook(L, PCL_EQ_MEET)) return 3;
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int n = a[0].n;
@@ -849,7 +870,7 @@ static const pcl_fn fns[] = {
     PCL_FN("divide", l_divide, divide_args, "point", "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY."),
     PCL_FN("harmonic", l_harmonic, harmonic_args, "point", "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity."),
     PCL_FN("cross_ratio", l_cross_ratio, cross_ratio_args, "number", "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity)."),
-    PCL_FN("meet", l_meet, meet_args, "K, lambda, mu", "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance."),
+    PCL_FN("meet", l_meet, meet_args, "K, lambda, mu", "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
     {.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number",
      .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."},
     PCL_FN("volume", l_volume, four_points, "number", "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up."),
