@@ -4,7 +4,8 @@
 -- module has an entry here and that every entry names something that exists.
 --
 -- Entries: name (as written in a script: "lerp", "qb.rnd", "A.x", ":show"), area, sig (one
--- form, or a list of forms), desc (one line).
+-- form, or a list of forms), desc (one line), kind ("function", "method", "field", "value",
+-- "operator", or "library": a function of Lua's own library that pointcalc extends, math.sin).
 --
 -- A function declared in C on the argument layer (stdlib/lua/pcl_args.h, docs/bindings.md)
 -- carries its own signature and description: its entry here is def(NAME) alone, placing it in
@@ -44,54 +45,30 @@ area("points", "Point calculus",
   "A point has weight 1, a vector weight 0, `k*A` weight k; sums add weights.",
   "points.md")
 
-def("P", "P(x, y [, z, ...]) -> point",
-  "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1).")
-def("V", "V(x, y [, z, ...]) -> vector",
-  "A vector (weight 0), as the difference of two points is: V(0, 1).")
-def("lerp", "lerp(A, B, t) -> value",
-  "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers.")
-def("bar", "bar(t) -> number",
-  "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t.")
-def("mid", "mid(A, B, ...) -> value",
-  "The midpoint of two values, or the centroid of several.")
-def("dist", "dist(A, B) | dist(v) -> number",
-  "The distance between two points, or the length of a vector.")
-def("dot", "dot(u, v) -> number",
-  "The scalar product of two vectors.")
-def("cross", "cross(u, v) -> vector | number",
-  "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D.")
-def("unit", "unit(v) -> vector",
-  "The vector v scaled to length 1; the zero vector is an error.")
-def("perp", "perp(v) -> vector",
-  "The 2-D vector v turned by +90 degrees: V(-v.y, v.x).")
-def("angle", "angle(A, B, C) | angle(u, v) -> number",
-  "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi.")
-def("foot", "foot(C, A, B) -> point",
-  "The foot of the perpendicular from C to line AB.")
-def("Sigma", "Sigma(A, B [, C]) -> number",
-  "The metric operator (B - A).(C - A) of three points; Sigma(A, B) is the squared distance AB^2.")
-def("sr", "sr(X, Y, Z) -> number",
-  "The simple ratio (XYZ) = (X - Z)/(Z - Y) in which Z divides XY; math.huge when Z = Y, -1 for the point at infinity.")
-def("divide", "divide(X, Y, lambda) -> point",
-  "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY.")
-def("harmonic", "harmonic(A, B, T) -> point",
-  "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity.")
-def("cross_ratio", "cross_ratio(A, B, C, D) -> number",
-  "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity).")
-def("meet", "meet(A1, A2, B1, B2) -> K, lambda, mu",
-  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve().")
-def("area", "area(A, B, C) | area(A, B, C, D, ...) -> number",
-  "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon.")
-def("volume", "volume(A, B, C, D) -> number",
-  "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up.")
-def("normalize", "normalize(p) -> point",
-  "Divide a weighted value by its weight (projective normalisation); weight 0 is an error.")
-def("weight", "weight(p) -> number",
-  "The weight of a value: 1 for a point, 0 for a vector, k for k*A.")
-def("coords", "coords(p) -> x, y, ...",
-  "The coordinates of a point or the components of a vector, as numbers.")
-def("near", "near(a, b [, eps]) -> boolean",
-  "Numbers, or values of one dimension, equal within eps (default 1e-9) relative to their size.")
+def("P")
+def("V")
+def("lerp")
+def("bar")
+def("mid")
+def("dist")
+def("dot")
+def("cross")
+def("unit")
+def("perp")
+def("angle")
+def("foot")
+def("Sigma")
+def("sr")
+def("divide")
+def("harmonic")
+def("cross_ratio")
+def("meet")
+def("area")
+def("volume")
+def("normalize")
+def("weight")
+def("coords")
+def("near")
 
 -- ---------------------------------------------------------------------------------------
 area("values", "Point values",
@@ -187,20 +164,15 @@ area("smooth", "Smoothsteps (smooth.*)",
   "curves smoothly; the curve builders take them as their g.",
   "toolkit.md")
 
-def("smooth.sine", "smooth.sine(t) -> number",
-  "(1 - cos(pi t))/2, the smoothstep of examples 3 and 4.")
-def("smooth.cubic", "smooth.cubic(t) -> number",
-  "3t^2 - 2t^3, the smoothstep of examples 5, 6 and 9.")
-def("smooth.power", "smooth.power(n [, t]) -> number | g",
-  "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g.")
-def("smooth.half", "smooth.half(n, m, t0 [, t]) -> number | g",
-  "The asymmetric half-spline of example 8: c1 t^n before t0, 1 - c2 (1 - t)^m after, slope continuous; without t the object g (g(t), g:deriv(t), g.c1, g.c2, g.v).")
-def("smooth.locus", "smooth.locus(n, m, t0) -> number",
-  "The junction ordinate v(t0) = m t0/(n - n t0 + m t0) of the half-spline (n, m, t0): the locus of example 8.")
-def("smooth.clamp", "smooth.clamp(t) -> number",
-  "The clamped smoothstep of examples 20-22: 0 before 0, 2t^2 to 1/2, 1 - 2(1 - t)^2 to 1, then 1.")
-def("smooth.clamp_qb", "smooth.clamp_qb(t [, prev]) -> number",
-  "smooth.clamp as the listings' strict IF chain computes it: at t exactly 0, 1/2 or 1 it keeps prev.")
+def("smooth.sine")
+def("smooth.cubic")
+def("smooth.power")
+def("smooth.half")
+def("smooth.locus")
+def("smooth.clamp")
+def("smooth.clamp_qb")
+def("g(t)", nil, nil, "method")
+def("g:deriv", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curves", "Curves",
@@ -276,16 +248,19 @@ area("equations", "Point equations",
   "derivatives; the membership condition is checked when one is made.",
   "equations.md")
 
-def("param", "param(name) -> equation",
-  "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value.")
-def("M(t)", {"M(t [, s ...]) -> value", "M{t = ..., s = ...} -> value"},
-  "The equation's value at parameter values given in the order of M.params, or by name.", "method")
-def("M:with", "M:with{s = value | equation, ...} -> equation",
-  "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation).", "method")
-def("M:show", "M:show{A = A, B = B, ...} -> string",
-  "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y)).", "method")
-def("M:sample", "M:sample(a, b [, n = 1001 [, s]]) -> samples",
-  "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum().", "method")
+def("param")
+def("M(t)", nil, nil, "method")
+def("M:with", nil, nil, "method")
+def("M:show", nil, nil, "method")
+def("M:sample", nil, nil, "method")
+def("s:sum", nil, nil, "method")
+def("math.sin", nil, nil, "library")
+def("math.cos", nil, nil, "library")
+def("math.tan", nil, nil, "library")
+def("math.exp", nil, nil, "library")
+def("math.log", nil, nil, "library")
+def("math.sqrt", nil, nil, "library")
+def("math.abs", nil, nil, "library")
 def("curve(M)", {"curve(M, t0, t1) -> curve", "surface(M, u0, u1, v0, v1) -> surface"},
   "A one-parameter equation as a curve, a two-parameter one (u the first made) as a surface: exact tangents, normals, curvature.", "method")
 
@@ -370,17 +345,21 @@ def("oblique", "oblique(C0, r, k, u) -> map",
   "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
 def("projection", "projection(C0, C1, C2, C3) -> map",
   "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0.")
-def("complex", "complex(re [, im]) | complex(P) -> z",
-  "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point().")
+def("complex")
 def("complex.i", "complex.i", "The imaginary unit.", "value")
-def("complex.polar", "complex.polar(r, u) -> z",
-  "The complex number r e^(iu).")
-def("complex.exp", "complex.exp(z) -> z", "The complex exponential.")
-def("complex.abs", "complex.abs(z) -> number", "The modulus |z|.")
-def("complex.arg", "complex.arg(z) -> number", "The argument of z: atan2(im, re), in radians.")
-def("complex.conj", "complex.conj(z) -> z", "The complex conjugate.")
-def("mobius", "mobius(z0 [, phi]) -> M",
-  "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse().")
+def("complex.polar")
+def("complex.exp")
+def("complex.abs")
+def("complex.arg")
+def("complex.conj")
+def("z:conj", nil, nil, "method")
+def("z:abs", nil, nil, "method")
+def("z:arg", nil, nil, "method")
+def("z:exp", nil, nil, "method")
+def("z:point", nil, nil, "method")
+def("mobius")
+def("M(z)", nil, nil, "method")
+def("M:inverse", nil, nil, "method")
 def("oresme", "oresme(lambda [, m [, y0, y1]]) -> o",
   "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o.")
 def("bisect", "bisect(f, a, b [, tol]) -> x, iterations",

@@ -10,12 +10,16 @@
  *                             given s, into it again)
  *   M.dim, M.params           0 for a scalar; the parameters' names in order
  *   curve(M, t0, t1), surface(M, u0, u1, v0, v1): see pcl_expr.h.
+ * The functions a script calls by name are declared on the argument layer (pcl_args.h); the
+ * hooks below run inside a declared point function (lerp, dot, P, ...) and word their messages
+ * with its name, the metamethods (+ - * / ^) with the operation.
  * Every Lua state has one pool of nodes (the equations share their common parts); compiled
  * programs are copies, so curves outlive nothing.  The math functions are wrapped once for
  * the whole module: a number goes straight to Lua's own function. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "expr.h"
@@ -225,62 +229,59 @@ static int weight_class(lua_State *L, int id) {
     return kind;
 }
 
+/* "NAME: argument #K (WHAT) must be EXPECT, got DESCRIPTION" of the running declared function */
+static int operand_fail(lua_State *L, int k, const char *what, const char *expect) {
+    return pcl_fail(L, "argument #%d (%s) must be %s, got %s", k, what, expect, describe(L, k));
+}
+
 /* a value operand of dot, cross, unit: a vector (weight 0), its node */
-static int vec_arg(lua_State *L, const char *fname, int arg, const char *what, int dim, int dim_arg) {
+static int vec_arg(lua_State *L, int arg, const char *what, int dim) {
     int id = node_of(L, arg);
-    if (id < 0 || !pc_expr_dim(pool(L), id))
-        return pcl_argerror_full(L, fname, arg, arg, what, "a vector or a vector equation");
+    if (id < 0 || !pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a vector or a vector equation");
     int d = pc_expr_dim(pool(L), id);
-    if (dim && d != dim)
-        return pcl_error(L, "%s: argument #%d (%s) is %d-D, but argument #%d is %d-D: dimensions "
-                         "cannot be mixed", fname, arg, what, d, dim_arg, dim);
+    if (dim && d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", arg, what, d, dim);
     if (weight_class(L, id) != PC_KIND_VECTOR)
-        return pcl_error(L, "%s: argument #%d (%s) must be a vector (weight 0), got %s whose "
-                         "weight is not 0; a difference of points is a vector, e.g. B - A",
-                         fname, arg, what, describe(L, arg));
+        return pcl_fail(L, "argument #%d (%s) must be a vector (weight 0), got %s whose weight is not 0; a difference of "
+                        "points is a vector, e.g. B - A", arg, what, describe(L, arg));
     return id;
 }
 
-static int scalar_arg(lua_State *L, const char *fname, int arg, const char *what) {
+static int scalar_arg(lua_State *L, int arg, const char *what) {
     int id = node_of(L, arg);
-    if (id < 0 || pc_expr_dim(pool(L), id))
-        return pcl_argerror_full(L, fname, arg, arg, what, "a number or a scalar equation");
+    if (id < 0 || pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a number or a scalar equation");
     return id;
 }
 
-static int done(lua_State *L, const char *fname, int r, int st) {
-    if (r < 0) return raise_status(L, fname, st);
+/* push the equation r, or the failure st of making it */
+static int done(lua_State *L, int r, int st) {
+    if (r < 0 && st == PC_ENOMEM) return pcl_fail(L, "out of memory (too many equation nodes)");
+    if (r < 0) return pcl_fail(L, "%s", pc_strerror(st));
     push_eq(L, r);
     return 1;
 }
 
 static int fn_lerp(lua_State *L) {
     pc_expr_pool *p = pool(L);
-    int t = scalar_arg(L, "lerp", 3, "t");
+    int t = scalar_arg(L, 3, "t");
     int a = node_of(L, 1), b = node_of(L, 2);
-    if (a < 0) return pcl_argerror_full(L, "lerp", 1, 1, "A", "a point, a vector, a number or an equation");
-    if (b < 0) return pcl_argerror_full(L, "lerp", 2, 2, "B", "a point, a vector, a number or an equation");
+    if (a < 0) return operand_fail(L, 1, "A", "a point, a vector, a number or an equation");
+    if (b < 0) return operand_fail(L, 2, "B", "a point, a vector, a number or an equation");
     int da = pc_expr_dim(p, a), db = pc_expr_dim(p, b);
-    if (da != db) {
-        if (da && db)
-            return pcl_error(L, "lerp: argument #2 (B) is %d-D, but argument #1 is %d-D: "
-                             "dimensions cannot be mixed", db, da);
-        return pcl_error(L, "lerp: A and B must both be points (or vectors) or both numbers, got "
-                         "%s and %s", describe(L, 1), describe(L, 2));
-    }
+    if (da != db && da && db) return pcl_fail(L, "argument #2 (B) is %d-D, but argument #1 (A) is %d-D (mixed dimensions)", db, da);
+    if (da != db)
+        return pcl_fail(L, "A and B must both be points (or vectors) or both numbers, got %s and %s", describe(L, 1), describe(L, 2));
     int st, r = pc_expr_lerp(p, a, b, t, &st);
-    return done(L, "lerp", r, st);
+    return done(L, r, st);
 }
 
-static int fn_pack(lua_State *L, double weight, const char *fname) {
+static int fn_pack(lua_State *L, double weight) {
     int n = lua_gettop(L);
-    if (n < 1 || n > PC_MAXDIM)
-        return pcl_error(L, "%s: needs 1 to %d coordinates, got %d", fname, PC_MAXDIM, n);
+    if (n < 1 || n > PC_MAXDIM) return pcl_fail(L, "needs 1 to %d coordinates, got %d", PC_MAXDIM, n);
     int x[PC_MAXDIM];
     static const char *xyz[] = {"x", "y", "z"};
-    for (int i = 0; i < n; i++) x[i] = scalar_arg(L, fname, i + 1, i < 3 ? xyz[i] : "coordinate");
+    for (int i = 0; i < n; i++) x[i] = scalar_arg(L, i + 1, i < 3 ? xyz[i] : "coordinate");
     int st, r = pc_expr_pack(pool(L), n, x, weight, &st);
-    return done(L, fname, r, st);
+    return done(L, r, st);
 }
 
 /* meet(A1, A2, B1, B2) with equations among the ends: K, lambda, mu as equations */
@@ -290,20 +291,17 @@ static int fn_meet(lua_State *L) {
     int id[4], dim = 0;
     for (int i = 0; i < 4; i++) {
         id[i] = node_of(L, i + 1);
-        if (id[i] < 0 || !pc_expr_dim(p, id[i]))
-            return pcl_argerror_full(L, "meet", i + 1, i + 1, nm[i], "a point or an equation of a point");
+        if (id[i] < 0 || !pc_expr_dim(p, id[i])) return operand_fail(L, i + 1, nm[i], "a point or an equation of a point");
         int d = pc_expr_dim(p, id[i]);
         if (i == 0) dim = d;
-        else if (d != dim)
-            return pcl_error(L, "meet: argument #%d (%s) is %d-D, but argument #1 is %d-D: dimensions cannot be mixed",
-                             i + 1, nm[i], d, dim);
+        else if (d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i], d, dim);
         if (weight_class(L, id[i]) != PC_KIND_POINT)
-            return pcl_error(L, "meet: argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a "
-                             "point equation sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
+            return pcl_fail(L, "argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a point equation "
+                            "sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
     }
-    if (dim < 2) return pcl_error(L, "meet: lines meet in 2-D or more, got %d-D points", dim);
+    if (dim < 2) return pcl_fail(L, "lines meet in 2-D or more, got %d-D points", dim);
     int st, lam, mu, k = pc_expr_meet(p, id[0], id[1], id[2], id[3], &lam, &mu, &st);
-    if (k < 0) return raise_status(L, "meet", st);
+    if (k < 0) return done(L, -1, st);
     push_eq(L, k);
     push_eq(L, lam);
     push_eq(L, mu);
@@ -324,29 +322,28 @@ int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
         return fn_lerp(L);
     case PCL_EQ_BAR: {
         if (!any_eq(L, 1, 1)) return 0;
-        int t = scalar_arg(L, "bar", 1, "t"), st;
-        return done(L, "bar", pc_expr_bar(pool(L), t, &st), st);
+        int t = scalar_arg(L, 1, "t"), st;
+        return done(L, pc_expr_bar(pool(L), t, &st), st);
     }
     case PCL_EQ_DOT: case PCL_EQ_CROSS: {
         if (!any_eq(L, 1, 2)) return 0;
-        const char *fname = op == PCL_EQ_DOT ? "dot" : "cross";
-        int u = vec_arg(L, fname, 1, "u", 0, 0);
-        int v = vec_arg(L, fname, 2, "v", pc_expr_dim(pool(L), u), 1), st;
+        int u = vec_arg(L, 1, "u", 0);
+        int v = vec_arg(L, 2, "v", pc_expr_dim(pool(L), u)), st;
         if (op == PCL_EQ_CROSS && pc_expr_dim(pool(L), u) != 2 && pc_expr_dim(pool(L), u) != 3)
-            return pcl_error(L, "cross: vectors must be 2-D or 3-D, got %d-D", pc_expr_dim(pool(L), u));
+            return pcl_fail(L, "vectors must be 2-D or 3-D, got %d-D", pc_expr_dim(pool(L), u));
         int r = op == PCL_EQ_DOT ? pc_expr_dot(pool(L), u, v, &st) : pc_expr_cross(pool(L), u, v, &st);
-        return done(L, fname, r, st);
+        return done(L, r, st);
     }
     case PCL_EQ_UNIT: {
         if (!any_eq(L, 1, 1)) return 0;
-        int u = vec_arg(L, "unit", 1, "v", 0, 0), st;
+        int u = vec_arg(L, 1, "v", 0), st;
         int r = pc_expr_unit(pool(L), u, &st);
-        if (r < 0 && st == PC_EZERO) return pcl_error(L, "unit: the zero vector has no direction");
-        return done(L, "unit", r, st);
+        if (r < 0 && st == PC_EZERO) return pcl_fail(L, "the zero vector has no direction");
+        return done(L, r, st);
     }
     case PCL_EQ_P: case PCL_EQ_V:
         if (!any_eq(L, 1, top)) return 0;
-        return fn_pack(L, op == PCL_EQ_P ? 1.0 : 0.0, op == PCL_EQ_P ? "P" : "V");
+        return fn_pack(L, op == PCL_EQ_P ? 1.0 : 0.0);
     case PCL_EQ_MEET:
         if (!any_eq(L, 1, 4)) return 0;
         return fn_meet(L);
@@ -364,45 +361,52 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
                          "can be applied to an equation; this one has %s",
                          c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
     int st, r = pc_expr_bezier(pool(L), c->dim, c->degree, c->cp, c->t0, c->t1, e->id, &st);
-    return done(L, "curve", r, st);
+    if (r < 0) return raise_status(L, "curve", st);   /* c(t) names "curve" itself (it may not be declared) */
+    push_eq(L, r);
+    return 1;
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
     leq *e = toeq(L, idx);
     if (!e) return 0;
     if (pc_expr_dim(pool(L), e->id))
-        return pcl_error(L, "smoothstep: the argument must be a number or a scalar equation, got %s",
-                         describe(L, idx));
+        return pcl_fail(L, "argument #1 (t) must be a number or a scalar equation, got %s", describe(L, idx));
     int st;
-    return done(L, "smoothstep", pc_expr_smooth(pool(L), g, e->id, &st), st);
+    return done(L, pc_expr_smooth(pool(L), g, e->id, &st), st);
 }
 
 /* ---- math.* on equations ------------------------------------------------------------------- */
 
-static const struct { const char *name, *fname; pc_expr_op op; } MATHFN[] = {
-    {"sin", "math.sin", PC_EX_SIN}, {"cos", "math.cos", PC_EX_COS}, {"tan", "math.tan", PC_EX_TAN},
-    {"exp", "math.exp", PC_EX_EXP}, {"log", "math.log", PC_EX_LOG}, {"sqrt", "math.sqrt", PC_EX_SQRT},
-    {"abs", "math.abs", PC_EX_ABS}};
+static const struct { const char *name; pc_expr_op op; } MATHFN[] = {
+    {"sin", PC_EX_SIN}, {"cos", PC_EX_COS}, {"tan", PC_EX_TAN}, {"exp", PC_EX_EXP},
+    {"log", PC_EX_LOG}, {"sqrt", PC_EX_SQRT}, {"abs", PC_EX_ABS}};
 enum { NMATH = sizeof MATHFN / sizeof *MATHFN };
 static lua_CFunction math_orig[NMATH];   /* Lua's own functions (one library per process) */
 
+/* the base of math.log(x, base): a positive number other than 1 */
+static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x) && out->x > 0 && out->x != 1;
+}
+static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number other than 1");
+
 static int math_eq(lua_State *L, int i) {
-    const char *fname = MATHFN[i].fname;
-    int a = scalar_arg(L, fname, 1, "x"), st;
+    int a = scalar_arg(L, 1, "x"), st;
     pc_expr_pool *p = pool(L);
     int r = pc_expr_fn(p, MATHFN[i].op, a, &st);
     if (r >= 0 && MATHFN[i].op == PC_EX_LOG && !lua_isnoneornil(L, 2)) {     /* log(x, base) */
-        double base = pcl_checknum(L, fname, 2, "base");
-        if (!(base > 0) || base == 1) return pcl_argerror_full(L, fname, 2, 2, "base", "a positive number other than 1");
-        int k = pc_expr_const(p, 1 / log(base), &st);
+        pcl_val base;
+        pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
+        int k = pc_expr_const(p, 1 / log(base.x), &st);
         r = k < 0 ? -1 : pc_expr_mul(p, r, k, &st);
     }
-    if (r < 0 && st == PC_EDOMAIN)
-        return pcl_error(L, "%s: argument #1 (x) is outside the function's domain", fname);
-    return done(L, fname, r, st);
+    if (r < 0 && st == PC_EDOMAIN) return pcl_fail(L, "argument #1 (x) is outside the function's domain");
+    return done(L, r, st);
 }
 
-/* A number takes one type test and goes to Lua's function: math.sin(x) keeps its speed. */
+/* A number takes one type test and goes to Lua's function: math.sin(x) keeps its speed (and
+ * Lua's own messages for what is neither a number nor an equation). */
 #define MATH_WRAPPER(i, name) \
     static int math_##name(lua_State *L) { \
         if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return math_orig[i](L); \
@@ -415,8 +419,15 @@ MATH_WRAPPER(3, exp)
 MATH_WRAPPER(4, log)
 MATH_WRAPPER(5, sqrt)
 MATH_WRAPPER(6, abs)
-static const lua_CFunction math_wrappers[NMATH] = {math_sin, math_cos, math_tan, math_exp,
-                                                   math_log, math_sqrt, math_abs};
+
+static const pcl_arg x_arg[] = {A_ANY("x", NULL, "a number or a scalar equation"), PCL_END};
+#define MATHDECL(nm, f) {PCL_FN("math." nm, f, x_arg, "number | equation", \
+                                "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
+static const pcl_fn MATHDECL_OF[NMATH][2] = {
+    MATHDECL("sin", math_sin), MATHDECL("cos", math_cos), MATHDECL("tan", math_tan), MATHDECL("exp", math_exp),
+    {{.name = "math.log", .fn = math_log, .sig = "math.log(x [, base]) -> number | equation",
+      .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
+    MATHDECL("sqrt", math_sqrt), MATHDECL("abs", math_abs)};
 
 static void wrap_math(lua_State *L) {
     if (lua_getglobal(L, "math") != LUA_TTABLE) {
@@ -427,28 +438,32 @@ static void wrap_math(lua_State *L) {
         lua_getfield(L, -1, MATHFN[i].name);
         lua_CFunction f = lua_tocfunction(L, -1);
         lua_pop(L, 1);
-        if (!f || f == math_wrappers[i]) continue;       /* wrapped already (a second state) */
-        math_orig[i] = f;
-        lua_pushcfunction(L, math_wrappers[i]);
-        lua_setfield(L, -2, MATHFN[i].name);
+        if (!f) continue;                                  /* not Lua's: left alone */
+        if (f != MATHDECL_OF[i][0].fn) math_orig[i] = f;   /* else wrapped already */
+        pcl_register(L, -1, MATHDECL_OF[i], 0);
     }
     lua_pop(L, 1);
 }
 
 /* ---- param, evaluation, methods -------------------------------------------------------------- */
 
+/* a parameter's name: a string of 1 to 31 characters without a zero byte */
+static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    size_t len = 0;
+    out->s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    return out->s && len > 0 && len < PC_EXPR_MAXNAME && strlen(out->s) == len;
+}
+static const pcl_arg param_args[] = {A_ANY("name", read_name, "a name of 1 to 31 characters"), PCL_END};
+
 static int l_param(lua_State *L) {
-    size_t len;
-    const char *name = lua_type(L, 1) == LUA_TSTRING ? lua_tolstring(L, 1, &len) : NULL;
-    if (!name || len == 0 || len >= PC_EXPR_MAXNAME || strlen(name) != len)
-        return pcl_argerror_full(L, "param", 1, 1, "name", "a name of 1 to 31 characters");
-    int st, id = pc_expr_param(pool(L), name, &st);
-    if (id < 0) return pcl_error(L, "param: at most %d parameters per script, and %s would be "
-                                 "one more", PC_EXPR_MAXPARAM, name);
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    int st, id = pc_expr_param(pool(L), a[0].s, &st);
+    if (id < 0) return pcl_fail(L, "at most %d parameters per script, and %s would be one more", PC_EXPR_MAXPARAM, a[0].s);
     push_eq(L, id);
     return 1;
 }
-
 /* the parameters of an equation in order: their indices */
 static int params_of(lua_State *L, int id, int *in) {
     unsigned mask = pc_expr_params(pool(L), id);
@@ -475,7 +490,7 @@ static pc_expr_prog *prog_of(lua_State *L, leq *e) {
         int in[PC_EXPR_MAXPARAM], st;
         int n = params_of(L, e->id, in);
         e->prog = pc_expr_compile(pool(L), e->id, n, in, &st);
-        if (!e->prog) raise_status(L, "equation", st);
+        if (!e->prog) done(L, -1, st);
     }
     return e->prog;
 }
@@ -489,28 +504,46 @@ static void push_result(lua_State *L, int dim, const double *h) {
     memcpy(v->h, h, sizeof(double) * (size_t)(dim + 1));
 }
 
+
+static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
+static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
+
+/* Every key of M{t = ..., s = ...} at idx names a parameter of M: a misspelt one is an error
+ * with the nearest name, not ignored. */
+static void check_keys(lua_State *L, int idx, int n, const int *in) {
+    const char *names[PC_EXPR_MAXPARAM + 1];
+    for (int j = 0; j < n; j++) names[j] = pc_expr_param_name(pool(L), in[j]);
+    names[n] = NULL;
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
+        int j = 0;
+        while (j < n && (!k || strcmp(k, names[j]))) j++;
+        if (j < n) continue;
+        const char *near = k ? pcl_nearest(k, names) : NULL;
+        if (near) pcl_fail(L, "the equation has no parameter %s (did you mean %s?)", k, near);
+        pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", k ? k : pcl_shown(L, -1), n ? names_of(L, n, in) : "none");
+    }
+}
+
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
-    leq *e = toeq(L, 1);
+    leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
     int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
     double x[PC_EXPR_MAXPARAM];
     pc_expr_pool *p = pool(L);
-    if (lua_istable(L, 2)) {
-        for (int j = 0; j < n; j++) {
-            const char *nm = pc_expr_param_name(p, in[j]);
-            lua_getfield(L, 2, nm);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                return pcl_error(L, "equation: field %s must be a finite number, got %s", nm,
-                                 pcl_shown(L, -1));
-            x[j] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-    } else {
-        int given = lua_gettop(L) - 1;
-        if (given != n)
-            return pcl_error(L, "equation: needs %d parameter value%s (%s), got %d", n,
-                             n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
-        for (int j = 0; j < n; j++) x[j] = pcl_checknum(L, "equation", j + 2, pc_expr_param_name(p, in[j]));
+    int table = lua_istable(L, 2), given = lua_gettop(L) - 1;
+    if (table) check_keys(L, 2, n, in);
+    if (!table && given != n)
+        return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
+    for (int j = 0; j < n; j++) {
+        pcl_arg num = {.name = pc_expr_param_name(p, in[j]), .kind = PCL_NUMBER};
+        pcl_val v;
+        int idx = table ? (lua_getfield(L, 2, num.name), lua_gettop(L)) : j + 2;
+        x[j] = lua_tonumber(L, idx);
+        if (lua_type(L, idx) != LUA_TNUMBER || !isfinite(x[j]))   /* the message: {t = } is #1 too */
+            pcl_readone(L, idx, table ? 1 : j + 1, 0, &num, 0, &v);
     }
     pc_expr_prog *prog = prog_of(L, e);
     double h[PC_MAXDIM + 1];
@@ -525,18 +558,24 @@ static int eq_call(lua_State *L) {
             luaL_addvalue(&b);
         }
         luaL_pushresult(&b);
-        return pcl_error(L, "equation: the value at %s is not finite (NaN or infinite: outside "
-                         "the domain of a function, or a division by zero)", lua_tostring(L, -1));
+        return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)",
+                        lua_tostring(L, -1));
     }
-    if (st != PC_OK) return raise_status(L, "equation", st);
+    if (st != PC_OK) return done(L, -1, st);
     push_result(L, pc_expr_dim(p, e->id), h);
     return 1;
 }
 
+/* a table argument (M:with, M:show) */
+static int read_table(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a, (void)out;
+    return lua_istable(L, idx);
+}
+static const pcl_arg with_args[] = {A_ANY("values", read_table, "a table {name = value}"), PCL_END};
+
 static int eq_with(lua_State *L) {
-    leq *e = toeq(L, 1);
-    if (!e) return pcl_argerror_full(L, "M:with", 1, 0, NULL, "an equation");
-    if (!lua_istable(L, 2)) return pcl_argerror_full(L, "M:with", 2, 1, "values", "a table {name = value}");
+    pcl_val a[1] = {0};
+    leq *e = PCL_READ(L, a);
     pc_expr_pool *p = pool(L);
     int r = e->id;
     lua_pushnil(L);
@@ -547,22 +586,19 @@ static int eq_with(lua_State *L) {
             if (!strcmp(pc_expr_param_name(p, j), nm)) k = j;
         if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) {
             int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
-            return pcl_error(L, "M:with: the equation has no parameter %s (its parameters: %s)",
-                             nm ? nm : pcl_shown(L, -2), n ? names_of(L, n, in) : "none");
+            return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", nm ? nm : pcl_shown(L, -2),
+                            n ? names_of(L, n, in) : "none");
         }
         int v = node_of(L, -1);
-        if (v < 0 || pc_expr_dim(p, v))
-            return pcl_error(L, "M:with: %s must be a number or a scalar equation, got %s", nm,
-                             describe(L, -1));
+        if (v < 0 || pc_expr_dim(p, v)) return pcl_fail(L, "%s must be a number or a scalar equation, got %s", nm, describe(L, -1));
         int st;
         r = pc_expr_subst(p, r, k, v, &st);
-        if (r < 0) return pcl_error(L, "M:with: %s = %s: %s", nm, pcl_shown(L, -1), pc_strerror(st));
+        if (r < 0) return pcl_fail(L, "%s = %s: %s", nm, pcl_shown(L, -1), pc_strerror(st));
         lua_pop(L, 1);
     }
     push_eq(L, r);
     return 1;
 }
-
 /* The names given to M:show, looked up by value */
 typedef struct { lua_State *L; int tbl; } namer_ud;
 
@@ -605,12 +641,11 @@ static int eq_tostring(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_table, .expect = "a table {A = A, ...}"}, PCL_END};
 static int eq_show(lua_State *L) {
-    leq *e = toeq(L, 1);
-    if (!e) return pcl_argerror_full(L, "M:show", 1, 0, NULL, "an equation");
-    if (!lua_isnoneornil(L, 2) && !lua_istable(L, 2))
-        return pcl_argerror_full(L, "M:show", 2, 1, "names", "a table {A = A, ...}");
-    push_text(L, e->id, lua_istable(L, 2) ? 2 : 0);
+    pcl_val a[1] = {0};
+    leq *e = PCL_READ(L, a);
+    push_text(L, e->id, a[0].present ? 2 : 0);
     return 1;
 }
 
@@ -623,41 +658,37 @@ static int eq_concat(lua_State *L) {
 
 /* M:sample(a, b, n [, into]): n values at t = a .. b in C, into a new samples object or into the
  * one given (of that size: a renderer resampling every frame allocates nothing) */
+static const pcl_arg sample_args[] = {A_NUM("a"), A_NUM("b"),
+    {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e8, .dflt = 1001, .expect = "a count from 1 to 10^8"},
+    {.name = "into", .kind = PCL_ANY, .flags = PCL_OPT, .expect = "samples (from M:sample)"}, PCL_END};
 static int eq_sample(lua_State *L) {
-    leq *e = toeq(L, 1);
-    if (!e) return pcl_argerror_full(L, "M:sample", 1, 0, NULL, "an equation");
-    double a = pcl_checknum_m(L, "M:sample", 2, "a"), b = pcl_checknum_m(L, "M:sample", 3, "b");
-    lua_Integer n = luaL_optinteger(L, 4, 1001);
-    if (n < 1 || n > 100000000) return pcl_argerror_full(L, "M:sample", 4, 3, "n", "a count from 1 to 10^8");
+    pcl_val a[4] = {0};
+    leq *e = PCL_READ(L, a);
+    long n = (long)a[2].x;
     int in[PC_EXPR_MAXPARAM], np = params_of(L, e->id, in);
-    if (np != 1)
-        return pcl_error(L, "M:sample: the equation must have one parameter, it has %s",
-                         np ? names_of(L, np, in) : "none");
+    if (np != 1) return pcl_fail(L, "the equation must have one parameter, it has %s", np ? names_of(L, np, in) : "none");
     pc_expr_prog *prog = prog_of(L, e);
     int dim = pc_expr_prog_dim(prog), w = dim ? dim : 1;
     lsamples *s;
-    if (!lua_isnoneornil(L, 5)) {                 /* M:sample(a, b, n, s): into s again */
+    if (a[3].present) {                           /* M:sample(a, b, n, s): into s again */
         s = tosamples(L, 5);
-        if (!s || s->n != (long)n || s->dim != dim) {
-            lua_pushfstring(L, "samples of %d %d-D values (from M:sample)", (int)n, dim);
-            return pcl_argerror_full(L, "M:sample", 5, 4, "into", lua_tostring(L, -1));
-        }
+        if (!s || s->n != n || s->dim != dim)
+            return pcl_argfail(L, 4, "must be samples of %d %d-D values (from M:sample), got %s", (int)n, dim, luaL_tolstring(L, 5, NULL));
         lua_pushvalue(L, 5);
     } else {
         s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
         s->self = PCL_SELF_TAG(s, &SAMPLES_TAG);
-        s->n = (long)n;
+        s->n = n;
         s->dim = dim;
         luaL_setmetatable(L, SAMPLES_MT);
     }
     long bad = 0;
-    int st = pc_expr_sample(prog, a, b, (long)n, s->v, &bad);
+    int st = pc_expr_sample(prog, a[0].x, a[1].x, n, s->v, &bad);
     if (st == PC_ENONFINITE) {
-        double t = n > 1 ? a + (b - a) * (double)bad / (double)(n - 1) : a;
-        return pcl_error(L, "M:sample: the value at %s = %s is not finite",
-                         pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, t));
+        double t = n > 1 ? a[0].x + (a[1].x - a[0].x) * (double)bad / (double)(n - 1) : a[0].x;
+        return pcl_fail(L, "the value at %s = %s is not finite", pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, t));
     }
-    if (st != PC_OK) return raise_status(L, "M:sample", st);
+    if (st != PC_OK) return done(L, -1, st);
     return 1;
 }
 
@@ -683,20 +714,16 @@ static int eq_index(lua_State *L) {
 
 /* ---- samples ----------------------------------------------------------------------------------- */
 
-static lsamples *checksamples(lua_State *L, const char *fname) {
-    lsamples *s = tosamples(L, 1);
-    if (!s) pcl_argerror_full(L, fname, 1, 0, NULL, "samples");
-    return s;
-}
-
 static int s_len(lua_State *L) {
-    lua_pushinteger(L, checksamples(L, "#")->n);
+    lsamples *s = tosamples(L, 1);
+    if (!s) return pcl_error(L, "#: not samples");
+    lua_pushinteger(L, s->n);
     return 1;
 }
 
 /* s:sum(): the sum of every coordinate (a checksum) */
 static int s_sum(lua_State *L) {
-    lsamples *s = checksamples(L, "s:sum");
+    lsamples *s = pcl_read(L, NULL, 0);
     double sum = 0;
     for (long i = 0; i < s->n * (s->dim ? s->dim : 1); i++) sum += s->v[i];
     lua_pushnumber(L, sum);
@@ -704,7 +731,8 @@ static int s_sum(lua_State *L) {
 }
 
 static int s_index(lua_State *L) {
-    lsamples *s = checksamples(L, "samples");
+    lsamples *s = tosamples(L, 1);
+    if (!s) return pcl_error(L, "index: not samples");
     if (lua_type(L, 2) == LUA_TNUMBER) {
         lua_Integer i = lua_tointeger(L, 2);
         if (i < 1 || i > s->n) {
@@ -716,14 +744,15 @@ static int s_index(lua_State *L) {
         return 1;
     }
     const char *k = lua_tostring(L, 2);
-    if (k && !strcmp(k, "sum")) { lua_pushcfunction(L, s_sum); return 1; }
-    if (k && !strcmp(k, "dim")) { lua_pushinteger(L, s->dim); return 1; }
-    lua_pushnil(L);
+    if (k && !strcmp(k, "dim")) lua_pushinteger(L, s->dim);
+    else if (k) lua_getfield(L, lua_upvalueindex(1), k);    /* sum */
+    else lua_pushnil(L);
     return 1;
 }
 
 static int s_tostring(lua_State *L) {
-    lsamples *s = checksamples(L, "tostring");
+    lsamples *s = tosamples(L, 1);
+    if (!s) return pcl_error(L, "tostring: not samples");
     lua_pushfstring(L, "samples(%d, %d-D)", (int)s->n, s->dim);
     return 1;
 }
@@ -791,6 +820,24 @@ pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status) {
 
 /* ---- registration ----------------------------------------------------------------------------------- */
 
+#define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = self_eq, .selftype = "equation"}
+static const pcl_fn methods[] = {
+    METHOD("M:with", eq_with, with_args, "M:with{s = value | equation, ...} -> equation",
+           "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation)."),
+    METHOD("M:show", eq_show, show_args, "M:show{A = A, B = B, ...} -> string",
+           "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y))."),
+    METHOD("M:sample", eq_sample, sample_args, "M:sample(a, b [, n = 1001 [, s]]) -> samples",
+           "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum()."),
+    PCL_END};
+static const pcl_fn call[] = {{.name = "M", .fn = eq_call, .self = self_eq, .selftype = "equation", .key = "__call", .topic = "M(t)",
+                               .callname = 1, .sig = "M(t [, s ...]) -> value\nM{t = ..., s = ...} -> value",
+                               .help = "The equation's value at parameter values given in the order of M.params, or by name."}, PCL_END};
+static const pcl_fn sample_methods[] = {{.name = "s:sum", .fn = s_sum, .result = "number", .self = self_samples, .selftype = "samples object",
+                                         .help = "The sum of every coordinate of the samples of M:sample (a checksum)."}, PCL_END};
+static const pcl_fn fns[] = {
+    PCL_FN("param", l_param, param_args, "equation", "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value."),
+    PCL_END};
+
 void pcl_open_expr(lua_State *L) {
     int module = lua_gettop(L);
     pc_expr_pool **pp = lua_newuserdatauv(L, sizeof *pp, 0);
@@ -805,25 +852,26 @@ void pcl_open_expr(lua_State *L) {
     luaL_newmetatable(L, EQ_MT);
     static const luaL_Reg meta[] = {
         {"__add", m_add}, {"__sub", m_sub}, {"__mul", m_mul}, {"__div", m_div}, {"__unm", m_unm},
-        {"__pow", m_pow}, {"__eq", m_eq}, {"__call", eq_call}, {"__tostring", eq_tostring},
-        {"__concat", eq_concat}, {"__gc", eq_gc}, {NULL, NULL}};
+        {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", eq_concat},
+        {"__gc", eq_gc}, {NULL, NULL}};
     luaL_setfuncs(L, meta, 0);
+    pcl_register(L, -1, call, 0);
     lua_newtable(L);
-    static const luaL_Reg methods[] = {
-        {"with", eq_with}, {"show", eq_show}, {"sample", eq_sample}, {NULL, NULL}};
-    luaL_setfuncs(L, methods, 0);
+    pcl_register(L, -1, methods, 0);
     lua_pushcclosure(L, eq_index, 1);
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 
     luaL_newmetatable(L, SAMPLES_MT);
-    static const luaL_Reg smeta[] = {
-        {"__len", s_len}, {"__index", s_index}, {"__tostring", s_tostring}, {NULL, NULL}};
+    static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};
     luaL_setfuncs(L, smeta, 0);
+    lua_newtable(L);
+    pcl_register(L, -1, sample_methods, 0);
+    lua_pushcclosure(L, s_index, 1);
+    lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 
-    lua_pushcfunction(L, l_param);
-    lua_setfield(L, module, "param");
+    pcl_register(L, module, fns, 0);
     wrap_math(L);
     lua_settop(L, module);
 }

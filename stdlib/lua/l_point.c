@@ -1,21 +1,23 @@
 /* Binding of the point calculus values (stdlib/geom/point.h): P V, the operators, and
  * lerp bar mid dist dot cross unit perp angle foot sr divide harmonic cross_ratio meet area
- * volume Sigma normalize weight coords near.
+ * volume Sigma normalize weight coords near, declared on the argument layer (pcl_args.h).
  *
- * A value is a full userdata of variable size (header + n+1 doubles).  Every function here is
- * a closure whose first upvalue is the point metatable, so recognising a point is a pointer
- * comparison, never a registry lookup by name; the hot paths (P, lerp, + - * /, .x) allocate
- * exactly one userdata and do nothing else. */
+ * A value is a full userdata of variable size (header + n+1 doubles).  Every C function here
+ * has the point metatable as upvalue 2 (upvalue 1 is a declared function's declaration), so
+ * recognising a point is a pointer comparison, never a registry lookup by name; the hot paths
+ * (P, lerp, + - * /, .x) allocate exactly one userdata and read nothing twice: the layer reads
+ * the arguments again only to word an error. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_point.h"
 #include "pcl_curve.h"
 #include "pcl_expr.h"   /* equations take over when an operand is one (l_expr.c) */
 
 static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the metatable */
-#define MT lua_upvalueindex(1)
-#define METHODS lua_upvalueindex(2)         /* __index only: the method table */
+#define MT lua_upvalueindex(2)
+#define METHODS lua_upvalueindex(3)         /* __index only: the method table */
 
 /* ---- recognising and making values ------------------------------------------------------- */
 
@@ -107,7 +109,7 @@ static const char *push_num_text(lua_State *L, double x) {
     return lua_tostring(L, -1);
 }
 
-/* ---- errors -------------------------------------------------------------------------------- */
+/* ---- the readers of the bindings not yet on the argument layer ------------------------------ */
 
 /* "argument #N", or "self" for the receiver of a method call */
 static const char *argname(lua_State *L, int arg) {
@@ -138,24 +140,32 @@ static const char *argctx(lua_State *L, int arg, const char *what) {
     return lua_pushfstring(L, "%s: %s", pcl_fname(L), an);
 }
 
-int pcl_dimerror(lua_State *L, int arg, const char *what, int got_dim, int dim, int dim_arg) {
-    const char *ctx = argctx(L, arg, what);
-    if (dim_arg > 0)
-        return pcl_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed",
-                          ctx, got_dim, argname(L, dim_arg), dim);
-    return pcl_error(L, "%s must be %d-D, got %d-D", ctx, dim, got_dim);
+/* the value at arg in dimension dim (pcl_checkloc, pcl_checkvec) */
+static pcl_value *checked(lua_State *L, int arg, const char *what, const char *expect, int dim, int dim_arg) {
+    pcl_value *p = pcl_tovalue(L, arg);
+    if (!p) pcl_argerror(L, arg, what, expect);
+    if (dim > 0 && p->n != dim && dim_arg > 0)
+        pcl_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed", argctx(L, arg, what), p->n,
+                  argname(L, dim_arg), dim);
+    if (dim > 0 && p->n != dim) pcl_error(L, "%s must be %d-D, got %d-D", argctx(L, arg, what), dim, p->n);
+    return p;
 }
 
-void pcl_pushpoint(lua_State *L, int n, const double *x) {
-    pcl_value *p = pcl_newvalue(L, n);
-    memcpy(p->h, x, sizeof(double) * (size_t)n);
-    p->h[n] = 1.0;
+int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
+    pcl_value *p = checked(L, arg, what, "a point", dim, dim_arg);
+    if (pc_loc(p->n, p->h, out) != PC_OK) location_error(L, argctx(L, arg, what), p);
+    return p->n;
 }
 
-void pcl_pushvector(lua_State *L, int n, const double *x) {
-    pcl_value *p = pcl_newvalue(L, n);
-    memcpy(p->h, x, sizeof(double) * (size_t)n);
-    p->h[n] = 0.0;
+int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
+    pcl_value *p = checked(L, arg, what, "a vector", dim, dim_arg);
+    if (pc_kind_of(p->h[p->n]) != PC_KIND_VECTOR) {
+        const char *ctx = argctx(L, arg, what), *text = push_value_text(L, p);
+        return pcl_error(L, "%s must be a vector (weight 0), got %s (weight %s); a difference "
+                          "of points is a vector, e.g. B - A", ctx, text, push_num_text(L, p->h[p->n]));
+    }
+    memcpy(out, p->h, sizeof(double) * (size_t)p->n);
+    return p->n;
 }
 
 double pcl_checkfinite(lua_State *L, int arg, const char *what) {
@@ -166,127 +176,48 @@ double pcl_checkfinite(lua_State *L, int arg, const char *what) {
     return v;
 }
 
-pcl_value *pcl_checkvalue(lua_State *L, int arg, const char *what) {
-    pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point or vector");
-    return p;
-}
-
-static int loc_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim, int dim_arg,
-                  double *out) {
-    if (dim > 0 && p->n != dim) pcl_dimerror(L, arg, what, p->n, dim, dim_arg);
-    if (pc_loc(p->n, p->h, out) != PC_OK) location_error(L, argctx(L, arg, what), p);
-    return p->n;
-}
-
-int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point");
-    return loc_of(L, p, arg, what, dim, dim_arg, out);
-}
-
-static int vec_of(lua_State *L, pcl_value *p, int arg, const char *what, int dim, int dim_arg,
-                  double *out) {
-    if (dim > 0 && p->n != dim) pcl_dimerror(L, arg, what, p->n, dim, dim_arg);
-    if (pc_kind_of(p->h[p->n]) != PC_KIND_VECTOR) {
-        const char *ctx = argctx(L, arg, what);
-        const char *text = push_value_text(L, p);
-        const char *wt = push_num_text(L, p->h[p->n]);
-        return pcl_error(L, "%s must be a vector (weight 0), got %s (weight %s); a difference "
-                          "of points is a vector, e.g. B - A", ctx, text, wt);
-    }
-    memcpy(out, p->h, sizeof(double) * (size_t)p->n);
-    return p->n;
-}
-
-int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a vector");
-    return vec_of(L, p, arg, what, dim, dim_arg, out);
-}
-
-/* Fast local variants using the upvalue metatable. */
-static inline pcl_value *checkval(lua_State *L, int arg, const char *what) {
-    pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point or vector");
-    return p;
-}
-
-static int checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point");
-    return loc_of(L, p, arg, what, dim, dim_arg, out);
-}
-
-static int checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a vector");
-    return vec_of(L, p, arg, what, dim, dim_arg, out);
-}
-
-static void push_loc(lua_State *L, int n, const double *x) {
-    pcl_value *r = newpt(L, n);
+/* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */
+static void fill(pcl_value *r, int n, const double *x, double w) {
     memcpy(r->h, x, sizeof(double) * (size_t)n);
-    r->h[n] = 1.0;
+    r->h[n] = w;
 }
-
-static void push_vec(lua_State *L, int n, const double *x) {
-    pcl_value *r = newpt(L, n);
-    memcpy(r->h, x, sizeof(double) * (size_t)n);
-    r->h[n] = 0.0;
+void pcl_pushpoint(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 1.0); }
+void pcl_pushvector(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 0.0); }
+static void push_w(lua_State *L, int n, const double *x, double w) { fill(newpt(L, n), n, x, w); }
+/* the n + 1 homogeneous h */
+static void push_h(lua_State *L, int n, const double *h) { fill(newpt(L, n), n, h, h[n]); }
+static int push_num(lua_State *L, double x) {
+    lua_pushnumber(L, x);
+    return 1;
 }
 
 /* ---- construction ------------------------------------------------------------------------- */
 
-static const char *coord_name(int i, char *buf, size_t sz) {
+/* Coordinate i (0-based) of P(...) at stack index idx, or [i + 1] of the table P{...}: the
+ * layer's message when it is not a finite number. */
+static double coordinate(lua_State *L, int idx, int i, int table) {
+    if (lua_type(L, idx) == LUA_TNUMBER && isfinite(lua_tonumber(L, idx))) return lua_tonumber(L, idx);
     static const char *xyz[] = {"x", "y", "z"};
-    if (i < 3) return xyz[i];
-    snprintf(buf, sz, "coordinate %d", i + 1);
-    return buf;
+    char name[24];
+    snprintf(name, sizeof name, "coordinate %d", i + 1);
+    pcl_arg a = {.name = table ? "coordinates" : i < 3 ? xyz[i] : name, .kind = PCL_NUMBER};
+    pcl_val v;
+    pcl_readone(L, idx, table ? 1 : i + 1, table ? i + 1 : 0, &a, 0, &v);
+    return v.x;
 }
 
 static int make(lua_State *L, double weight) {
-    int n = lua_gettop(L);
-    if (n == 1 && lua_type(L, 1) == LUA_TTABLE) {          /* P{1, 2} */
-        n = (int)lua_rawlen(L, 1);
-        if (n < 1) return pcl_error(L, "%s: the table has no coordinates", pcl_fname(L));
-        if (n > PC_MAXDIM)
-            return pcl_error(L, "%s: %d coordinates, but the largest dimension is %d",
-                              pcl_fname(L), n, PC_MAXDIM);
-        pcl_value *p = newpt(L, n);
-        for (int i = 0; i < n; i++) {
-            lua_rawgeti(L, 1, i + 1);
-            int isnum;
-            double v = lua_tonumberx(L, -1, &isnum);
-            if (!isnum || !isfinite(v) || lua_type(L, -1) != LUA_TNUMBER) {
-                char buf[24];
-                return pcl_error(L, "%s: argument #1 (table) field [%d] (%s) must be a finite "
-                                  "number, got %s", pcl_fname(L), i + 1,
-                                  coord_name(i, buf, sizeof buf), luaL_typename(L, -1));
-            }
-            lua_pop(L, 1);
-            p->h[i] = v;
-        }
-        p->h[n] = weight;
-        return 1;
-    }
-    if (n < 1) return pcl_error(L, "%s: needs at least one coordinate", pcl_fname(L));
-    if (n > PC_MAXDIM)
-        return pcl_error(L, "%s: %d coordinates, but the largest dimension is %d", pcl_fname(L),
-                          n, PC_MAXDIM);
+    int n = lua_gettop(L), table = n == 1 && lua_type(L, 1) == LUA_TTABLE;   /* P{1, 2} */
+    if (table) n = (int)lua_rawlen(L, 1);
+    for (int i = 0; !table && i < n; i++)       /* an equation among the coordinates: P of it */
+        if (lua_type(L, i + 1) != LUA_TNUMBER && pcl_eq_hook(L, weight == 1.0 ? PCL_EQ_P : PCL_EQ_V)) return 1;
+    if (n < 1) return pcl_fail(L, table ? "the table has no coordinates" : "needs at least one coordinate");
+    if (n > PC_MAXDIM) return pcl_fail(L, "%d coordinates, but the largest dimension is %d", n, PC_MAXDIM);
     pcl_value *p = newpt(L, n);
     for (int i = 0; i < n; i++) {
-        int isnum;
-        double v = lua_tonumberx(L, i + 1, &isnum);
-        if (!isnum || !isfinite(v) || lua_type(L, i + 1) != LUA_TNUMBER) {
-            lua_settop(L, n);
-            if (pcl_eq_hook(L, weight == 1.0 ? PCL_EQ_P : PCL_EQ_V)) return 1;
-            char buf[24];
-            const char *what = coord_name(i, buf, sizeof buf);
-            if (!isnum || lua_type(L, i + 1) != LUA_TNUMBER) pcl_argerror(L, i + 1, what, "a number");
-            pcl_argerror(L, i + 1, what, "a finite number");
-        }
-        p->h[i] = v;
+        if (table) lua_rawgeti(L, 1, i + 1);
+        p->h[i] = coordinate(L, table ? lua_gettop(L) : i + 1, i, table);
+        if (table) lua_pop(L, 1);
     }
     p->h[n] = weight;
     return 1;
@@ -516,267 +447,243 @@ static int l_newindex(lua_State *L) {
 
 /* ---- helpers ----------------------------------------------------------------------------- */
 
+/* A located argument of any weight (lerp, mid), and an end that may be a point at infinity. */
+#define A_VAL(nm) {.name = nm, .kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = "a point or vector"}
+#define A_PROJ(nm) {.name = nm, .kind = PCL_LOC, .flags = PCL_SAMEDIM, .expect = "a point (or a point at infinity)"}
+static const pcl_arg more_val = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = "a point or vector"};
+static const pcl_arg more_pt = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
+
+static int out_of_range(lua_State *L, double t) {
+    return pcl_fail(L, "the result is out of range (not finite) for t = %s", pcl_pushnum(L, t));
+}
+
 /* lerp(A, B, t) = (B - A) t + A (Fig. 1.1), for points, vectors or numbers. */
+static const pcl_arg lerp_args[] = {A_VAL("A"), A_VAL("B"), A_NUM("t"), PCL_END};
 static int l_lerp(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
     int isnum = lua_type(L, 3) == LUA_TNUMBER;          /* no string coercion, as in P() */
     double t = isnum ? lua_tonumber(L, 3) : 0;
-    if (a && b && isnum && a->n == b->n && isfinite(t)) {       /* the hot path */
-        int n = a->n;
-        pcl_value *r = newpt(L, n);
-        pc_lerp(n, a->h, b->h, t, r->h);     /* equal weights kept exactly (t = 1e16) */
-        for (int i = 0; i <= n; i++)
-            if (!isfinite(r->h[i]))
-                return pcl_error(L, "%s: the result is out of range (not finite) for t = %s",
-                                 pcl_fname(L), pcl_pushnum(L, t));
-        return 1;
+    if (!(a && b && isnum && a->n == b->n && isfinite(t))) {     /* not the hot path */
+        if (pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
+        pcl_val v[3] = {0};
+        if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
+            pcl_readone(L, 3, 3, 0, &lerp_args[2], 0, &v[2]);
+            double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2), r = x * (1 - v[2].x) + y * v[2].x;
+            if (!isfinite(r)) return out_of_range(L, v[2].x);
+            return push_num(L, r);
+        }
+        PCL_READ(L, v);                                  /* the message, or two values and t */
+        a = topt(L, 1), b = topt(L, 2), t = v[2].x;
     }
-    if (!isnum && pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
-    if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
-        double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2);
-        t = pcl_checkfinite(L, 3, "t");
-        double v = x * (1 - t) + y * t;
-        if (!isfinite(v))
-            return pcl_error(L, "%s: the result is out of range (not finite) for t = %s",
-                             pcl_fname(L), pcl_pushnum(L, t));
-        lua_pushnumber(L, v);
-        return 1;
-    }
-    if (pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
-    if (!a) pcl_argerror(L, 1, "A", "a point or vector");
-    if (!b) pcl_argerror(L, 2, "B", "a point or vector");
-    if (a->n != b->n) pcl_dimerror(L, 2, "B", b->n, a->n, 1);
-    pcl_checkfinite(L, 3, "t");
-    return 0;
-}
-
-static int l_bar(lua_State *L) {
-    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_hook(L, PCL_EQ_BAR)) return 1;
-    lua_pushnumber(L, 1.0 - pcl_checkfinite(L, 1, "t"));
+    int n = a->n;
+    pcl_value *r = newpt(L, n);
+    pc_lerp(n, a->h, b->h, t, r->h);     /* equal weights kept exactly (t = 1e16) */
+    for (int i = 0; i <= n; i++)
+        if (!isfinite(r->h[i])) return out_of_range(L, t);
     return 1;
 }
 
+static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
+static int l_bar(lua_State *L) {
+    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_hook(L, PCL_EQ_BAR)) return 1;
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    return push_num(L, 1.0 - a[0].x);
+}
+
 /* mid(A, B, ...): the midpoint, or the centroid of several values. */
+static const pcl_arg mid_args[] = {A_VAL("A"), A_VAL("B"), PCL_END};
 static int l_mid(lua_State *L) {
     int m = lua_gettop(L);
-    pcl_value *a = checkval(L, 1, "A");
-    if (m < 2) pcl_argerror(L, 2, "B", "a point or vector");
-    int n = a->n;
-    for (int j = 2; j <= m; j++) {
-        pcl_value *b = checkval(L, j, NULL);
-        if (b->n != n) pcl_dimerror(L, j, NULL, b->n, n, 1);
+    pcl_val a[2] = {0}, v;
+    PCL_READ(L, a);
+    int n = a[0].n;
+    double s[PC_MAXDIM + 1];   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
+    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m + a[1].v[i] / m;
+    for (int j = 3; j <= m; j++) {
+        pcl_readone(L, j, j, 0, &more_val, n, &v);
+        for (int i = 0; i <= n; i++) s[i] += v.v[i] / m;
     }
     pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) {
-        double s = 0;
-        for (int j = 1; j <= m; j++) s += ((pcl_value *)lua_touserdata(L, j))->h[i] / m;
-        r->h[i] = s;   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
-    }
-    return finite_or_error(L, r, pcl_fname(L));
+    fill(r, n, s, s[n]);
+    return finite_or_error(L, r, pcl_name(L));
+}
+
+/* The hot path of dist, dot and cross: two values of one dimension whose weights are exactly
+ * w (1: points, 0: vectors).  Anything else goes to the layer, which reads it by the one
+ * weight rule or words the message. */
+static int exact_pair(lua_State *L, double w, pcl_value **a, pcl_value **b) {
+    *a = topt(L, 1), *b = topt(L, 2);
+    return *a && *b && (*a)->n == (*b)->n && (*a)->h[(*a)->n] == w && (*b)->h[(*b)->n] == w;
 }
 
 /* dist(A, B) between points, or dist(v), the length of a vector.  The form follows the
  * first argument, so that dist(A, nil) names the missing argument #2. */
+static const pcl_arg two_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), PCL_END};
+static const pcl_arg one_vector[] = {A_VECTOR("v", 0), PCL_END};
 static int l_dist(lua_State *L) {
-    double a[PC_MAXDIM], b[PC_MAXDIM];
-    pcl_value *p = topt(L, 1);
+    pcl_value *p, *q;
+    if (exact_pair(L, 1.0, &p, &q)) return push_num(L, pc_dist(p->n, p->h, q->h));
+    pcl_val a[2] = {0};
     if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
-        int n = vec_of(L, p, 1, "v", 0, 0, a);
-        lua_pushnumber(L, pc_norm(n, a));
-        return 1;
+        pcl_readone(L, 1, 1, 0, &one_vector[0], 0, &a[0]);
+        return push_num(L, pc_norm(a[0].n, a[0].v));
     }
-    int n = checkloc(L, 1, "A", 0, 0, a);
-    checkloc(L, 2, "B", n, 1, b);
-    lua_pushnumber(L, pc_dist(n, a, b));
-    return 1;
+    PCL_READ(L, a);
+    return push_num(L, pc_dist(a[0].n, a[0].v, a[1].v));
 }
 
+static const pcl_arg uv_args[] = {A_SAMEVECTOR("u"), A_SAMEVECTOR("v"), PCL_END};
 static int l_dot(lua_State *L) {
-    double u[PC_MAXDIM], v[PC_MAXDIM];
-    if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
-    int n = checkvec(L, 1, "u", 0, 0, u);
-    checkvec(L, 2, "v", n, 1, v);
-    lua_pushnumber(L, pc_dot(n, u, v));
-    return 1;
+    pcl_value *u, *v;
+    if (exact_pair(L, 0.0, &u, &v)) return push_num(L, pc_dot(u->n, u->h, v->h));
+    if ((!u || !v) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    return push_num(L, pc_dot(a[0].n, a[0].v, a[1].v));
 }
 
 /* cross(u, v): a vector in 3-D, the number u.x v.y - u.y v.x in 2-D. */
 static int l_cross(lua_State *L) {
-    double u[PC_MAXDIM], v[PC_MAXDIM];
     if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_CROSS)) return 1;
-    int n = checkvec(L, 1, "u", 0, 0, u);
-    checkvec(L, 2, "v", n, 1, v);
-    if (n == 2) {
-        lua_pushnumber(L, pc_cross2(u, v));
-        return 1;
-    }
-    if (n != 3)
-        return pcl_error(L, "%s: vectors must be 2-D or 3-D, got %d-D", pcl_fname(L), n);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
     double w[3];
-    pc_cross3(u, v, w);
-    push_vec(L, 3, w);
+    if (a[0].n == 2) {
+        return push_num(L, pc_cross2(a[0].v, a[1].v));
+    }
+    if (a[0].n != 3) return pcl_fail(L, "vectors must be 2-D or 3-D, got %d-D", a[0].n);
+    pc_cross3(a[0].v, a[1].v, w);
+    push_w(L, 3, w, 0.0);
     return 1;
 }
 
 static int l_unit(lua_State *L) {
-    double u[PC_MAXDIM], w[PC_MAXDIM];
     if (!topt(L, 1) && pcl_eq_hook(L, PCL_EQ_UNIT)) return 1;
-    int n = checkvec(L, 1, "v", 0, 0, u);
-    if (pc_unit(n, u, w) != PC_OK)
-        return pcl_error(L, "%s: the zero vector has no direction", pcl_fname(L));
-    push_vec(L, n, w);
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    double w[PC_MAXDIM];
+    if (pc_unit(a[0].n, a[0].v, w) != PC_OK) return pcl_fail(L, "the zero vector has no direction");
+    push_w(L, a[0].n, w, 0.0);
     return 1;
 }
 
 static int l_perp(lua_State *L) {
-    double u[PC_MAXDIM], w[2];
-    int n = checkvec(L, 1, "v", 0, 0, u);
-    if (n != 2)
-        return pcl_error(L, "%s: argument #1 (v) must be a 2-D vector, got %d-D (in space "
-                          "a perpendicular is not unique: use cross(u, v))", pcl_fname(L), n);
-    pc_perp2(u, w);
-    push_vec(L, 2, w);
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    double w[2];
+    if (a[0].n != 2)
+        return pcl_argfail(L, 1, "must be a 2-D vector, got %d-D (in space a perpendicular is not unique: use cross(u, v))", a[0].n);
+    pc_perp2(a[0].v, w);
+    push_w(L, 2, w, 0.0);
     return 1;
 }
 
 /* angle(A, B, C): the angle at A of triangle ABC; angle(u, v): between two vectors.
  * Unsigned, in radians, in [0, pi].  The form follows the first argument (a vector or not),
  * so that angle(A, B, nil) names the missing argument #3. */
+static const pcl_arg three_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), PCL_END};
 static int l_angle(lua_State *L) {
-    double a[PC_MAXDIM], b[PC_MAXDIM], c[PC_MAXDIM], ang;
-    int n;
     pcl_value *first = topt(L, 1);
-    int vectors = first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR
-                        : lua_isnoneornil(L, 3);
-    if (vectors) {
-        n = checkvec(L, 1, "u", 0, 0, b);
-        checkvec(L, 2, "v", n, 1, c);
+    pcl_val a[3] = {0};
+    double b[PC_MAXDIM], c[PC_MAXDIM], ang;
+    if (first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR : lua_isnoneornil(L, 3)) {
+        pcl_readone(L, 1, 1, 0, &uv_args[0], 0, &a[0]);
+        pcl_readone(L, 2, 2, 0, &uv_args[1], a[0].n, &a[1]);
+        memcpy(b, a[0].v, sizeof b);
+        memcpy(c, a[1].v, sizeof c);
     } else {
-        n = checkloc(L, 1, "A", 0, 0, a);
-        checkloc(L, 2, "B", n, 1, b);
-        checkloc(L, 3, "C", n, 1, c);
-        for (int i = 0; i < n; i++) { b[i] -= a[i]; c[i] -= a[i]; }
+        PCL_READ(L, a);
+        for (int i = 0; i < a[0].n; i++) b[i] = a[1].v[i] - a[0].v[i], c[i] = a[2].v[i] - a[0].v[i];
     }
-    if (pc_angle(n, b, c, &ang) != PC_OK)
-        return pcl_error(L, "%s: a side has zero length, so the angle is undefined", pcl_fname(L));
-    lua_pushnumber(L, ang);
-    return 1;
+    if (pc_angle(a[0].n, b, c, &ang) != PC_OK) return pcl_fail(L, "a side has zero length, so the angle is undefined");
+    return push_num(L, ang);
 }
 
+static const pcl_arg foot_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), A_SAMEPOINT("B"), PCL_END};
 static int l_foot(lua_State *L) {
-    double c[PC_MAXDIM], a[PC_MAXDIM], b[PC_MAXDIM], h[PC_MAXDIM];
-    int n = checkloc(L, 1, "C", 0, 0, c);
-    checkloc(L, 2, "A", n, 1, a);
-    checkloc(L, 3, "B", n, 1, b);
-    if (pc_foot(n, c, a, b, h) != PC_OK)
-        return pcl_error(L, "%s: A and B coincide, so they do not define a line", pcl_fname(L));
-    push_loc(L, n, h);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double h[PC_MAXDIM];
+    if (pc_foot(a[0].n, a[0].v, a[1].v, a[2].v, h) != PC_OK) return pcl_fail(L, "A and B coincide, so they do not define a line");
+    push_w(L, a[0].n, h, 1.0);
     return 1;
 }
 
+static const pcl_arg sigma_args[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"),
+                                     {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_OPT}, PCL_END};
 static int l_sigma(lua_State *L) {
-    double a[PC_MAXDIM], b[PC_MAXDIM], c[PC_MAXDIM];
-    int n = checkloc(L, 1, "A", 0, 0, a);
-    checkloc(L, 2, "B", n, 1, b);
-    if (lua_isnoneornil(L, 3)) memcpy(c, b, sizeof(double) * (size_t)n);   /* Σ^A_BB = AB² */
-    else checkloc(L, 3, "C", n, 1, c);
-    lua_pushnumber(L, pc_sigma(n, a, b, c));
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, pc_sigma(a[0].n, a[0].v, a[1].v, a[a[2].present ? 2 : 1].v));   /* Σ^A_BB = AB² */
     return 1;
 }
 
 /* ---- ratios -------------------------------------------------------------------------------- */
 
-/* A point or an improper point (weight 0) at arg, as a value of dimension n. */
-static pcl_value *check_proj(lua_State *L, int arg, const char *what, int n, int dim_arg) {
-    pcl_value *p = topt(L, arg);
-    if (!p) pcl_argerror(L, arg, what, "a point (or a point at infinity)");
-    if (p->n != n) pcl_dimerror(L, arg, what, p->n, n, dim_arg);
-    if (pc_kind_of(p->h[n]) == PC_KIND_WEIGHTED) location_error(L, argctx(L, arg, what), p);
-    return p;
-}
-
 static int ratio_error(lua_State *L, int st) {
-    const char *f = pcl_fname(L);
     switch (st) {
-    case PC_ECOINCIDENT: return pcl_error(L, "%s: the points coincide, so the ratio is undefined", f);
-    case PC_ENOTCOLLINEAR: return pcl_error(L, "%s: the points are not collinear", f);
-    case PC_EZERO: return pcl_error(L, "%s: a point at infinity with a zero direction", f);
-    default: return pcl_error(L, "%s: %s", f, pc_strerror(st));
+    case PC_ECOINCIDENT: return pcl_fail(L, "the points coincide, so the ratio is undefined");
+    case PC_ENOTCOLLINEAR: return pcl_fail(L, "the points are not collinear");
+    case PC_EZERO: return pcl_fail(L, "a point at infinity with a zero direction");
+    default: return pcl_fail(L, "%s", pc_strerror(st));
     }
 }
 
 /* sr(X, Y, Z) = (X - Z)/(Z - Y): Z divides XY in this ratio.  math.huge when Z = Y; -1 when Z
  * is the improper point of the line. */
+static const pcl_arg sr_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), A_PROJ("Z"), PCL_END};
 static int l_sr(lua_State *L) {
-    double x[PC_MAXDIM], y[PC_MAXDIM], lam;
-    int n = checkloc(L, 1, "X", 0, 0, x);
-    checkloc(L, 2, "Y", n, 1, y);
-    pcl_value *z = check_proj(L, 3, "Z", n, 1);
-    int st = pc_sr(n, x, y, z->h, &lam);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double lam;
+    int st = pc_sr(a[0].n, a[0].v, a[1].v, a[2].v, &lam);
     if (st != PC_OK) return ratio_error(L, st);
-    lua_pushnumber(L, lam);
-    return 1;
+    return push_num(L, lam);
+}
+
+/* lambda of divide: any number but NaN (math.huge gives Y) */
+static int read_lambda(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_type(L, idx) == LUA_TNUMBER && !isnan(out->x);
 }
 
 /* divide(X, Y, lambda) = (X + lambda Y)/(1 + lambda); lambda = -1 gives the improper point. */
+static const pcl_arg divide_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), A_ANY("lambda", read_lambda, "a number (not NaN)"), PCL_END};
 static int l_divide(lua_State *L) {
-    double x[PC_MAXDIM], y[PC_MAXDIM];
-    int n = checkloc(L, 1, "X", 0, 0, x);
-    checkloc(L, 2, "Y", n, 1, y);
-    if (lua_type(L, 3) != LUA_TNUMBER) pcl_argerror(L, 3, "lambda", "a number");
-    double lam = lua_tonumber(L, 3);
-    if (isnan(lam)) pcl_argerror(L, 3, "lambda", "a number, not NaN");
-    double xh[PC_MAXDIM + 1], yh[PC_MAXDIM + 1];
-    memcpy(xh, x, sizeof(double) * (size_t)n);
-    memcpy(yh, y, sizeof(double) * (size_t)n);
-    xh[n] = yh[n] = 1.0;
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
     double out[PC_MAXDIM + 1];
-    int st = pc_divide(n, xh, yh, lam, out);
-    if (st == PC_ENONFINITE)
-        return pcl_error(L, "divide: the point is out of range (not finite) for lambda = %s",
-                         pcl_pushnum(L, lam));
-    pcl_value *r = newpt(L, n);
-    memcpy(r->h, out, sizeof(double) * (size_t)(n + 1));
+    if (pc_divide(n, a[0].v, a[1].v, a[2].x, out) == PC_ENONFINITE)
+        return pcl_fail(L, "the point is out of range (not finite) for lambda = %s", pcl_pushnum(L, a[2].x));
+    push_h(L, n, out);
     return 1;
 }
 
+static const pcl_arg harmonic_args[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_PROJ("T"), PCL_END};
 static int l_harmonic(lua_State *L) {
-    double a[PC_MAXDIM], b[PC_MAXDIM];
-    int n = checkloc(L, 1, "A", 0, 0, a);
-    checkloc(L, 2, "B", n, 1, b);
-    pcl_value *t = check_proj(L, 3, "T", n, 1);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     double out[PC_MAXDIM + 1];
-    int st = pc_harmonic(n, a, b, t->h, out);
+    int st = pc_harmonic(a[0].n, a[0].v, a[1].v, a[2].v, out);
     if (st != PC_OK && st != PC_IMPROPER) return ratio_error(L, st);
-    pcl_value *r = newpt(L, n);
-    memcpy(r->h, out, sizeof(double) * (size_t)(n + 1));
+    push_h(L, a[0].n, out);
     return 1;
 }
 
+static const pcl_arg cross_ratio_args[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_PROJ("C"), A_PROJ("D"), PCL_END};
 static int l_cross_ratio(lua_State *L) {
-    double a[PC_MAXDIM], b[PC_MAXDIM], r;
-    int n = checkloc(L, 1, "A", 0, 0, a);
-    checkloc(L, 2, "B", n, 1, b);
-    pcl_value *c = check_proj(L, 3, "C", n, 1);
-    pcl_value *d = check_proj(L, 4, "D", n, 1);
-    int st = pc_cross_ratio(n, a, b, c->h, d->h, &r);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    double r;
+    int st = pc_cross_ratio(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &r);
     if (st != PC_OK) return ratio_error(L, st);
-    lua_pushnumber(L, r);
-    return 1;
+    return push_num(L, r);
 }
 
 /* ---- incidence and measure ---------------------------------------------------------------- */
-
-/* An end of a line for meet: a point, or a point at infinity (weight 0) with a direction. */
-static pcl_value *check_end(lua_State *L, int arg, const char *what, int n, int dim_arg) {
-    pcl_value *p = topt(L, arg);
-    if (p && n == 0) n = p->n;
-    p = check_proj(L, arg, what, n, dim_arg);
-    if (pc_kind_of(p->h[n]) == PC_KIND_VECTOR && pc_norm(n, p->h) == 0)
-        pcl_error(L, "%s is the zero vector %s, which has no direction, so it is no point at "
-                  "infinity", argctx(L, arg, what), push_value_text(L, p));
-    return p;
-}
 
 /* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu.
  * An end may be a point at infinity (a direction, weight 0), as in the book's homogeneous
@@ -785,142 +692,131 @@ static pcl_value *check_end(lua_State *L, int arg, const char *what, int n, int 
  * Parallel lines: their common improper point (the direction of the first line, weight 0),
  * math.huge, math.huge; likewise a line and a line at infinity.  Skew lines (3-D and up): nil
  * and the distance between them (math.huge for a line that misses a line at infinity). */
+static const pcl_arg meet_args[] = {A_PROJ("A1"), A_PROJ("A2"), A_PROJ("B1"), A_PROJ("B2"), PCL_END};
 static int l_meet(lua_State *L) {
     if (!(topt(L, 1) && topt(L, 2) && topt(L, 3) && topt(L, 4)) && pcl_eq_hook(L, PCL_EQ_MEET)) return 3;
-    pcl_value *a1 = check_end(L, 1, "A1", 0, 0);
-    int n = a1->n;
-    pcl_value *a2 = check_end(L, 2, "A2", n, 1);
-    pcl_value *b1 = check_end(L, 3, "B1", n, 1);
-    pcl_value *b2 = check_end(L, 4, "B2", n, 1);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    for (int k = 0; k < 4; k++)
+        if (a[k].v[n] == 0 && pc_norm(n, a[k].v) == 0)
+            return pcl_argfail(L, k + 1, "is the zero vector %s, which has no direction, so it is no point at infinity",
+                               push_value_text(L, topt(L, k + 1)));
     double out[PC_MAXDIM + 1], lam, mu, res;
-    const char *f = pcl_fname(L);
-    int st = pc_meet_h(n, a1->h, a2->h, b1->h, b2->h, out, &lam, &mu, &res);
+    int st = pc_meet_h(n, a[0].v, a[1].v, a[2].v, a[3].v, out, &lam, &mu, &res);
     switch (st) {
     case PC_OK:
-    case PC_IMPROPER: {
-        pcl_value *r = newpt(L, n);
-        memcpy(r->h, out, sizeof(double) * (size_t)(n + 1));
+    case PC_IMPROPER:
+        push_h(L, n, out);
         lua_pushnumber(L, lam);
         lua_pushnumber(L, mu);
         return 3;
-    }
     case PC_ESKEW:
         lua_pushnil(L);
         lua_pushnumber(L, res);
         return 2;
     case PC_ESAME_LINE:
-        return pcl_error(L, "%s: the two lines coincide, so they have no single meet", f);
+        return pcl_fail(L, "the two lines coincide, so they have no single meet");
     case PC_ECOINCIDENT: {
         /* which line: the meet of line A with itself fails the same way only if A is bad */
-        int bad_a = pc_meet_h(n, a1->h, a2->h, a1->h, a2->h, out, NULL, NULL, NULL) == st;
-        pcl_value *e1 = bad_a ? a1 : b1;
+        int bad_a = pc_meet_h(n, a[0].v, a[1].v, a[0].v, a[1].v, out, NULL, NULL, NULL) == st;
         const char *names = bad_a ? "A1 and A2" : "B1 and B2";
-        if (pc_kind_of(e1->h[n]) == PC_KIND_VECTOR)
-            return pcl_error(L, "%s: %s are the same point at infinity (parallel directions), "
-                              "so they do not define a line", f, names);
-        return pcl_error(L, "%s: %s coincide, so they do not define a line", f, names);
+        if (a[bad_a ? 0 : 2].v[n] == 0)
+            return pcl_fail(L, "%s are the same point at infinity (parallel directions), so they do not define a line", names);
+        return pcl_fail(L, "%s coincide, so they do not define a line", names);
     }
     case PC_EDIM:
-        return pcl_error(L, "%s: lines in 1-D all coincide; meet needs 2-D or more", f);
+        return pcl_fail(L, "lines in 1-D all coincide; meet needs 2-D or more");
     }
-    return pcl_error(L, "%s: %s", f, pc_strerror(st));
+    return pcl_fail(L, "%s", pc_strerror(st));
 }
 
 /* area(A, B, C): signed in 2-D (counter-clockwise positive), unsigned in any dimension;
  * area(A, B, C, D, ...) in 2-D: the signed area of the polygon. */
 static int l_area(lua_State *L) {
     int m = lua_gettop(L);
-    double a[PC_MAXDIM], b[PC_MAXDIM], c[PC_MAXDIM];
-    int n = checkloc(L, 1, "A", 0, 0, a);
-    if (n < 2) return pcl_error(L, "%s: points must be 2-D or more, got 1-D", pcl_fname(L));
-    checkloc(L, 2, "B", n, 1, b);
-    checkloc(L, 3, "C", n, 1, c);
-    if (n == 2) {
-        if (m == 3) {
-            lua_pushnumber(L, pc_area2(a, b, c));
-            return 1;
-        }
-        double s = pc_area2(a, b, c), prev[2] = {c[0], c[1]};
-        for (int j = 4; j <= m; j++) {
-            double d[2];
-            checkloc(L, j, NULL, 2, 1, d);
-            s += pc_area2(a, prev, d);
-            prev[0] = d[0]; prev[1] = d[1];
-        }
-        lua_pushnumber(L, s);
-        return 1;
+    pcl_val a[3] = {0}, d;
+    PCL_READ(L, a);
+    int n = a[0].n;
+    if (n < 2) return pcl_fail(L, "points must be 2-D or more, got 1-D");
+    if (n > 2 && m > 3) return pcl_fail(L, "a polygon area needs 2-D points; in %d-D give a triangle", n);
+    if (n > 2) {
+        return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
     }
-    if (m > 3)
-        return pcl_error(L, "%s: a polygon area needs 2-D points; in %d-D give a triangle",
-                          pcl_fname(L), n);
-    lua_pushnumber(L, pc_area(n, a, b, c));
-    return 1;
+    double s = pc_area2(a[0].v, a[1].v, a[2].v), prev[2] = {a[2].v[0], a[2].v[1]};
+    for (int j = 4; j <= m; j++) {
+        pcl_readone(L, j, j, 0, &more_pt, 2, &d);
+        s += pc_area2(a[0].v, prev, d.v);
+        prev[0] = d.v[0], prev[1] = d.v[1];
+    }
+    return push_num(L, s);
 }
 
 /* volume(A, B, C, D): signed in 3-D (positive when B - A, C - A, D - A are right-handed),
  * unsigned in 4-D and up. */
+static const pcl_arg four_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), A_SAMEPOINT("D"), PCL_END};
 static int l_volume(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    if (n < 3) return pcl_fail(L, "points must be 3-D or more, got %d-D", n);
     double v[4 * PC_MAXDIM];
-    static const char *names[] = {"A", "B", "C", "D"};
-    int n = checkloc(L, 1, "A", 0, 0, v);
-    if (n < 3) return pcl_error(L, "%s: points must be 3-D or more, got %d-D", pcl_fname(L), n);
-    for (int j = 1; j < 4; j++) checkloc(L, j + 1, names[j], n, 1, v + j * n);
-    if (n == 3) lua_pushnumber(L, pc_volume3(v, v + 3, v + 6, v + 9));
-    else lua_pushnumber(L, pc_measure(n, 3, v));
-    return 1;
+    for (int j = 0; j < 4; j++) memcpy(v + j * n, a[j].v, sizeof(double) * (size_t)n);
+    return push_num(L, n == 3 ? pc_volume3(v, v + 3, v + 6, v + 9) : pc_measure(n, 3, v));
 }
 
 /* ---- weights -------------------------------------------------------------------------------- */
 
+static const pcl_arg any_value[] = {{.name = "p", .kind = PCL_VALUE, .expect = "a point or vector"}, PCL_END};
 static int l_normalize(lua_State *L) {
-    pcl_value *p = checkval(L, 1, "p");
-    int n = p->n;
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
     double out[PC_MAXDIM + 1];
-    if (pc_normalize(n, p->h, out) != PC_OK)
-        return pcl_error(L, "%s: %s has weight 0 (a vector, or a point at infinity), so it has "
-                          "no finite location", pcl_fname(L), push_value_text(L, p));
-    pcl_value *r = newpt(L, n);
-    memcpy(r->h, out, sizeof(double) * (size_t)(n + 1));
+    if (pc_normalize(a[0].n, a[0].v, out) != PC_OK)
+        return pcl_fail(L, "%s has weight 0 (a vector, or a point at infinity), so it has no finite location",
+                        push_value_text(L, topt(L, 1)));
+    push_h(L, a[0].n, out);
     return 1;
 }
 
 static int l_weight(lua_State *L) {
-    pcl_value *p = checkval(L, 1, "p");
-    lua_pushnumber(L, p->h[p->n]);
-    return 1;
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    return push_num(L, a[0].v[a[0].n]);
 }
 
 /* coords(p) -> x, y, ...: the coordinates of a point or the components of a vector. */
+static const pcl_arg one_loc[] = {{.name = "p", .kind = PCL_LOC}, PCL_END};
 static int l_coords(lua_State *L) {
-    pcl_value *p = checkval(L, 1, "p");
-    int n = p->n;
-    double w = p->h[n];
-    if (pc_kind_of(w) == PC_KIND_WEIGHTED) location_error(L, argctx(L, 1, "p"), p);
-    luaL_checkstack(L, n, "too many coordinates");
-    double div = (pc_kind_of(w) == PC_KIND_POINT) ? w : 1.0;
-    for (int i = 0; i < n; i++) lua_pushnumber(L, p->h[i] / div);
-    return n;
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    luaL_checkstack(L, a[0].n, "too many coordinates");
+    for (int i = 0; i < a[0].n; i++) lua_pushnumber(L, a[0].v[i]);
+    return a[0].n;
 }
 
 /* near(a, b [, eps]): numbers, or values of one dimension, equal within eps (default 1e-9)
  * relative to their size (at least 1). */
+#define NUM_OR_VALUE "a number, point or vector"
+static const pcl_arg near_args[] = {A_ANY("a", NULL, NUM_OR_VALUE), A_ANY("b", NULL, NUM_OR_VALUE),
+                                    {.name = "eps", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = HUGE_VAL,
+                                     .dflt = 1e-9, .expect = "a non-negative number"}, PCL_END};
+static const pcl_arg near_value = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = NUM_OR_VALUE};
 static int l_near(lua_State *L) {
-    double eps = 1e-9;
-    if (!lua_isnoneornil(L, 3)) {
-        eps = pcl_checkfinite(L, 3, "eps");
-        if (eps < 0) pcl_argerror(L, 3, "eps", "a non-negative number");
-    }
+    pcl_val a[3] = {0}, p, q;
+    PCL_READ(L, a);
+    double eps = a[2].x;
     if (lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
-        double a = lua_tonumber(L, 1), b = lua_tonumber(L, 2);
-        lua_pushboolean(L, fabs(a - b) <= eps * fmax(1.0, fmax(fabs(a), fabs(b))));
+        double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2);
+        lua_pushboolean(L, fabs(x - y) <= eps * fmax(1.0, fmax(fabs(x), fabs(y))));
         return 1;
     }
-    pcl_value *a = checkval(L, 1, "a"), *b = checkval(L, 2, "b");
-    if (a->n != b->n) pcl_dimerror(L, 2, "b", b->n, a->n, 1);
+    pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
+    pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
     double scale = 1, d = 0;
-    for (int i = 0; i <= a->n; i++) {
-        scale = fmax(scale, fmax(fabs(a->h[i]), fabs(b->h[i])));
-        d = fmax(d, fabs(a->h[i] - b->h[i]));
+    for (int i = 0; i <= p.n; i++) {
+        scale = fmax(scale, fmax(fabs(p.v[i]), fabs(q.v[i])));
+        d = fmax(d, fabs(p.v[i] - q.v[i]));
     }
     lua_pushboolean(L, d <= eps * scale);
     return 1;
@@ -952,18 +848,37 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
     return 1;
 }
 
+
 /* ---- registration --------------------------------------------------------------------------- */
 
-static const luaL_Reg point_functions[] = {
-    {"P", l_P}, {"V", l_V},
-    {"lerp", l_lerp}, {"bar", l_bar}, {"mid", l_mid}, {"dist", l_dist}, {"dot", l_dot},
-    {"cross", l_cross}, {"unit", l_unit}, {"perp", l_perp}, {"angle", l_angle},
-    {"foot", l_foot}, {"Sigma", l_sigma},
-    {"sr", l_sr}, {"divide", l_divide}, {"harmonic", l_harmonic}, {"cross_ratio", l_cross_ratio},
-    {"meet", l_meet}, {"area", l_area}, {"volume", l_volume},
-    {"normalize", l_normalize}, {"weight", l_weight}, {"coords", l_coords}, {"near", l_near},
-    {NULL, NULL}
-};
+static const pcl_fn fns[] = {
+    {.name = "P", .fn = l_P, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."},
+    {.name = "V", .fn = l_V, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."},
+    PCL_FN("lerp", l_lerp, lerp_args, "value", "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers."),
+    PCL_FN("bar", l_bar, t_arg, "number", "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t."),
+    {.name = "mid", .fn = l_mid, .args = mid_args, .sig = "mid(A, B, ...) -> value", .help = "The midpoint of two values, or the centroid of several."},
+    {.name = "dist", .fn = l_dist, .args = two_points, .sig = "dist(A, B) | dist(v) -> number", .help = "The distance between two points, or the length of a vector."},
+    PCL_FN("dot", l_dot, uv_args, "number", "The scalar product of two vectors."),
+    PCL_FN("cross", l_cross, uv_args, "vector | number", "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D."),
+    PCL_FN("unit", l_unit, one_vector, "vector", "The vector v scaled to length 1; the zero vector is an error."),
+    PCL_FN("perp", l_perp, one_vector, "vector", "The 2-D vector v turned by +90 degrees: V(-v.y, v.x)."),
+    {.name = "angle", .fn = l_angle, .args = three_points, .sig = "angle(A, B, C) | angle(u, v) -> number",
+     .help = "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi."},
+    PCL_FN("foot", l_foot, foot_args, "point", "The foot of the perpendicular from C to line AB."),
+    PCL_FN("Sigma", l_sigma, sigma_args, "number", "The metric operator (B - A).(C - A) of three points; Sigma(A, B) is the squared distance AB^2."),
+    PCL_FN("sr", l_sr, sr_args, "number", "The simple ratio (XYZ) = (X - Z)/(Z - Y) in which Z divides XY; math.huge when Z = Y, -1 for the point at infinity."),
+    PCL_FN("divide", l_divide, divide_args, "point", "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY."),
+    PCL_FN("harmonic", l_harmonic, harmonic_args, "point", "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity."),
+    PCL_FN("cross_ratio", l_cross_ratio, cross_ratio_args, "number", "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity)."),
+    PCL_FN("meet", l_meet, meet_args, "K, lambda, mu", "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
+    {.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number",
+     .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."},
+    PCL_FN("volume", l_volume, four_points, "number", "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up."),
+    PCL_FN("normalize", l_normalize, any_value, "point", "Divide a weighted value by its weight (projective normalisation); weight 0 is an error."),
+    PCL_FN("weight", l_weight, any_value, "number", "The weight of a value: 1 for a point, 0 for a vector, k for k*A."),
+    PCL_FN("coords", l_coords, one_loc, "x, y, ...", "The coordinates of a point or the components of a vector, as numbers."),
+    PCL_FN("near", l_near, near_args, "boolean", "Numbers, or values of one dimension, equal within eps (default 1e-9) relative to their size."),
+    PCL_END};
 
 /* p:method() for the one-receiver functions */
 static const char *const method_names[] = {
@@ -989,13 +904,12 @@ void pcl_open_point(lua_State *L) {
     lua_setfield(L, mt, "__metatable");
     lua_pushvalue(L, mt);
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
+    lua_pushboolean(L, 0);                             /* upvalue 1: no declaration */
     lua_pushvalue(L, mt);
-    luaL_setfuncs(L, point_meta, 1);                   /* metamethods, upvalue = mt */
+    luaL_setfuncs(L, point_meta, 2);                   /* metamethods, upvalue 2 = mt */
 
-    lua_pushvalue(L, module);                          /* functions, upvalue = mt */
-    lua_pushvalue(L, mt);
-    luaL_setfuncs(L, point_functions, 1);
-    lua_pop(L, 1);
+    lua_pushvalue(L, mt);                              /* functions, upvalue 2 = mt */
+    pcl_register(L, module, fns, 1);
 
     lua_newtable(L);                                   /* methods for p:name(...) */
     int methods = lua_gettop(L);
@@ -1003,9 +917,10 @@ void pcl_open_point(lua_State *L) {
         lua_getfield(L, module, *m);
         lua_setfield(L, methods, *m);
     }
+    lua_pushboolean(L, 0);
     lua_pushvalue(L, mt);
     lua_pushvalue(L, methods);
-    lua_pushcclosure(L, l_index, 2);
+    lua_pushcclosure(L, l_index, 3);
     lua_setfield(L, mt, "__index");
     lua_settop(L, module);
 }

@@ -6,36 +6,37 @@
  * v(t0)) are its parameters.  The curve builders accept these objects, smooth.sine and
  * smooth.cubic as smoothsteps they evaluate natively. */
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_tk.h"
-#include "smooth.h"
 #include "pcl_expr.h"   /* g(t) of an equation t builds an equation (l_expr.c) */
 
 #define HSPLINE_MT "halfspline"
 
 /* g(t) pushed, or an error when it is not finite: an extrapolation far past [0, 1]
  * (smooth.cubic(1e308)) overflows, and no NaN or infinity is returned silently. */
-static int push_value(lua_State *L, const char *fname, double t, double g) {
-    if (!isfinite(g))
-        return pcl_error(L, "%s: the value at t = %s is out of range (not finite)", fname,
-                         pcl_pushnum(L, t));
+static int push_value(lua_State *L, double t, double g) {
+    if (!isfinite(g)) return pcl_fail(L, "the value at t = %s is out of range (not finite)", pcl_pushnum(L, t));
     lua_pushnumber(L, g);
     return 1;
 }
 
+static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
+
+/* smooth.sine and smooth.cubic: a number, or an equation (a smoothstep of it) */
+static int step(lua_State *L, const pc_gfun *g, double (*f)(double)) {
+    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, g)) return 1;
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    return push_value(L, a[0].x, f(a[0].x));
+}
 static int l_sine(lua_State *L) {
     static const pc_gfun g = {PC_G_SINE, {0, 0, 0, 0, 0}};
-    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
-    double t = pcl_checknum(L, "smooth.sine", 1, "t");
-    return push_value(L, "smooth.sine", t, pc_smooth_sine(t));
+    return step(L, &g, pc_smooth_sine);
 }
-
 static int l_cubic(lua_State *L) {
     static const pc_gfun g = {PC_G_CUBIC, {0, 0, 0, 0, 0}};
-    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
-    double t = pcl_checknum(L, "smooth.cubic", 1, "t");
-    return push_value(L, "smooth.cubic", t, pc_smooth_cubic(t));
+    return step(L, &g, pc_smooth_cubic);
 }
 
 /* the smoothsteps the curve bindings recognise by identity */
@@ -46,172 +47,159 @@ int pcl_smooth_isfunc(lua_CFunction f, int *kind) {
     return 1;
 }
 
-static pc_hspline *newhs(lua_State *L) {
-    pc_hspline *h = lua_newuserdatauv(L, sizeof *h, 0);
-    luaL_setmetatable(L, HSPLINE_MT);
-    return h;
-}
-
 /* The half-spline at idx or NULL; one given the metatable by the debug library is refused. */
 pc_hspline *pcl_tohspline(lua_State *L, int idx) {
     pc_hspline *h = luaL_testudata(L, idx, HSPLINE_MT);
     return pcl_genuine(L, idx, h, !h || lua_rawlen(L, idx) == sizeof *h, "half-spline");
 }
+static void *self_hs(lua_State *L, int idx) { return pcl_tohspline(L, idx); }
 
-/* g of g(t), g:deriv(t), g.n, tostring(g) */
-static pc_hspline *checkhs(lua_State *L, const char *fn) {
-    pc_hspline *h = pcl_tohspline(L, 1);
-    if (!h) pcl_argerror_full(L, fn, 1, 0, NULL, "a half-spline (smooth.half(n, m, t0))");
-    return h;
+/* A number strictly between 0 and 1 (the junction t0 of smooth.half). */
+static int open_unit(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_type(L, idx) == LUA_TNUMBER && out->x > 0 && out->x < 1;
 }
 
-static void check_degree(lua_State *L, const char *fname, int arg, const char *what, double v) {
-    if (!(v > 0)) pcl_argerror_full(L, fname, arg, arg, what, "a positive number");
-}
-
-/* The half-spline (n, m, t0), its parameters already checked one by one; degrees in the
- * hundreds make t0^(n-1) underflow, and the coefficients would be inf and NaN. */
-static void init_checked(lua_State *L, const char *fname, pc_hspline *h, double n, double m,
-                         double t0) {
-    if (pc_hspline_init(h, n, m, t0) == PC_OK) return;
-    const char *tn = pcl_pushnum(L, n), *tm = pcl_pushnum(L, m), *tt = pcl_pushnum(L, t0);
-    pcl_error(L, "%s: the degrees n = %s, m = %s are too large for t0 = %s: the coefficients "
-              "c1, c2 overflow a double", fname, tn, tm, tt);
-}
-
-/* g(t) at argument idx (shown as #shown), with the extrapolation domain of a fractional
- * degree: t^n needs t >= 0, (1 - t)^m needs t <= 1 unless the degree is whole. */
-static double checked_t(lua_State *L, const pc_hspline *h, const char *fname, int idx,
-                        int shown) {
-    if (lua_type(L, idx) != LUA_TNUMBER) pcl_argerror_full(L, fname, idx, shown, "t", "a number");
-    double t = lua_tonumber(L, idx);
-    if (!isfinite(t)) pcl_argerror_full(L, fname, idx, shown, "t", "a finite number");
+/* g(t) with the extrapolation domain of a fractional degree: t^n needs t >= 0, (1 - t)^m
+ * needs t <= 1 unless the degree is whole. */
+static int eval_at(lua_State *L, const pc_hspline *h, double t, int k) {
     if (pc_hspline_check(h, t) != PC_OK) {
         int low = t < 0;
-        pcl_pushnum(L, low ? h->n : h->m);
-        lua_pushfstring(L, "%s (the degree %s = %s is fractional, so the formula does not "
-                        "extrapolate past %s)", low ? "at least 0" : "at most 1", low ? "n" : "m",
-                        lua_tostring(L, -1), low ? "0" : "1");
-        pcl_argerror_full(L, fname, idx, shown, "t", lua_tostring(L, -1));
+        return pcl_argfail(L, k, "must be %s (the degree %s = %s is fractional, so the formula does not extrapolate past %s)",
+                           low ? "at least 0" : "at most 1", low ? "n" : "m", pcl_pushnum(L, low ? h->n : h->m), low ? "0" : "1");
     }
-    return t;
+    return push_value(L, t, pc_hspline_eval(h, t));
 }
 
+/* The half-spline (n, m, t0), then g(t) at argument #k when it is given, else g itself.
+ * Degrees in the hundreds make t0^(n-1) underflow: the coefficients would be inf and NaN. */
+static int make(lua_State *L, double n, double m, double t0, const pcl_val *t, int k) {
+    pc_hspline h;
+    if (pc_hspline_init(&h, n, m, t0) != PC_OK) {
+        const char *tn = pcl_pushnum(L, n), *tm = pcl_pushnum(L, m), *tt = pcl_pushnum(L, t0);
+        return pcl_fail(L, "the degrees n = %s, m = %s are too large for t0 = %s: the coefficients c1, c2 overflow a double", tn, tm, tt);
+    }
+    if (t->present) return eval_at(L, &h, t->x, k);
+    pc_hspline *g = lua_newuserdatauv(L, sizeof *g, 0);
+    *g = h;
+    luaL_setmetatable(L, HSPLINE_MT);
+    return 1;
+}
+
+static const pcl_arg power_args[] = {A_POSNUM("n"), A_NUMOPT("t", 0, NULL), PCL_END};
 static int l_power(lua_State *L) {
-    const char *fn = "smooth.power";
-    double n = pcl_checknum(L, fn, 1, "n");
-    check_degree(L, fn, 1, "n", n);
-    pc_hspline h;
-    init_checked(L, fn, &h, n, n, 0.5);
-    if (!lua_isnoneornil(L, 2)) {
-        double t = checked_t(L, &h, fn, 2, 2);
-        return push_value(L, fn, t, pc_hspline_eval(&h, t));
-    }
-    *newhs(L) = h;
-    return 1;
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    return make(L, a[0].x, a[0].x, 0.5, &a[1], 2);
 }
 
+static const pcl_arg half_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_ANY("t0", open_unit, "a number in (0, 1)"),
+                                    A_NUMOPT("t", 0, NULL), PCL_END};
 static int l_half(lua_State *L) {
-    const char *fn = "smooth.half";
-    double n = pcl_checknum(L, fn, 1, "n"), m = pcl_checknum(L, fn, 2, "m");
-    double t0 = pcl_checknum(L, fn, 3, "t0");
-    check_degree(L, fn, 1, "n", n);
-    check_degree(L, fn, 2, "m", m);
-    if (!(t0 > 0 && t0 < 1)) pcl_argerror_full(L, fn, 3, 3, "t0", "a number in (0, 1)");
-    pc_hspline h;
-    init_checked(L, fn, &h, n, m, t0);
-    if (!lua_isnoneornil(L, 4)) {
-        double t = checked_t(L, &h, fn, 4, 4);
-        return push_value(L, fn, t, pc_hspline_eval(&h, t));
-    }
-    *newhs(L) = h;
-    return 1;
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    return make(L, a[0].x, a[1].x, a[2].x, &a[3], 4);
 }
 
+static const pcl_arg locus_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_NUMIN("t0", 0, 1), PCL_END};
 static int l_locus(lua_State *L) {
-    const char *fn = "smooth.locus";
-    double n = pcl_checknum(L, fn, 1, "n"), m = pcl_checknum(L, fn, 2, "m");
-    double t0 = pcl_checknum(L, fn, 3, "t0");
-    check_degree(L, fn, 1, "n", n);
-    check_degree(L, fn, 2, "m", m);
-    if (!(t0 >= 0 && t0 <= 1)) pcl_argerror_full(L, fn, 3, 3, "t0", "a number in [0, 1]");
-    lua_pushnumber(L, pc_hspline_locus(n, m, t0));
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
     return 1;
 }
 
 static int l_clamp(lua_State *L) {
-    lua_pushnumber(L, pc_smooth_clamp(pcl_checknum(L, "smooth.clamp", 1, "t")));
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, pc_smooth_clamp(a[0].x));
     return 1;
 }
 
+/* t finite, as smooth.clamp's (QBasic has no NaN) */
+static const pcl_arg clamp_qb_args[] = {A_NUM("t"), A_NUMOPT("prev", 0, NULL), PCL_END};
 static int l_clamp_qb(lua_State *L) {
-    const char *fn = "smooth.clamp_qb";
-    double t = pcl_checknum(L, fn, 1, "t");   /* finite, as smooth.clamp's (QBasic has no NaN) */
-    double prev = pcl_optnum(L, fn, 2, "prev", 0.0);
-    lua_pushnumber(L, pc_smooth_clamp_qb(t, prev));
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, pc_smooth_clamp_qb(a[0].x, a[1].x));
     return 1;
 }
 
 /* ---- the half-spline object ------------------------------------------------------------- */
 
 static int hs_call(lua_State *L) {
-    pc_hspline *h = checkhs(L, "halfspline");
-    if (lua_type(L, 2) != LUA_TNUMBER) {
+    pc_hspline *h = pcl_tohspline(L, 1);
+    if (h && lua_type(L, 2) != LUA_TNUMBER) {
         pc_gfun g = {PC_G_HALF, *h};
         if (pcl_eq_smooth(L, 2, &g)) return 1;
     }
-    double t = checked_t(L, h, "halfspline", 2, 1);
-    return push_value(L, "halfspline", t, pc_hspline_eval(h, t));
+    pcl_val a[1] = {{.x = lua_tonumber(L, 2)}};
+    if (!h || lua_type(L, 2) != LUA_TNUMBER || !isfinite(a[0].x)) h = PCL_READ(L, a);   /* the message */
+    return eval_at(L, h, a[0].x, 1);
 }
 
 static int hs_deriv(lua_State *L) {
-    pc_hspline *h = checkhs(L, "g:deriv");
-    double t = checked_t(L, h, "g:deriv", 2, 1);
-    double d = pc_hspline_deriv(h, t);
+    pcl_val a[1] = {0};
+    pc_hspline *h = PCL_READ(L, a);
+    if (pc_hspline_check(h, a[0].x) != PC_OK) return eval_at(L, h, a[0].x, 1);   /* its message */
+    double d = pc_hspline_deriv(h, a[0].x);
     /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
-    if (!isfinite(d))
-        return pcl_error(L, "g:deriv: the slope at t = %s is infinite (a degree below 1)",
-                         pcl_pushnum(L, t));
+    if (!isfinite(d)) return pcl_fail(L, "the slope at t = %s is infinite (a degree below 1)", pcl_pushnum(L, a[0].x));
     lua_pushnumber(L, d);
     return 1;
 }
 
 static int hs_index(lua_State *L) {
-    pc_hspline *h = checkhs(L, "g.field");
+    pc_hspline *h = pcl_tohspline(L, 1);
     const char *k = lua_tostring(L, 2);
-    if (!k) return 0;
+    if (!h || !k) return 0;
     if (!strcmp(k, "n")) lua_pushnumber(L, h->n);
     else if (!strcmp(k, "m")) lua_pushnumber(L, h->m);
     else if (!strcmp(k, "t0")) lua_pushnumber(L, h->t0);
     else if (!strcmp(k, "c1")) lua_pushnumber(L, h->c1);
     else if (!strcmp(k, "c2")) lua_pushnumber(L, h->c2);
     else if (!strcmp(k, "v")) lua_pushnumber(L, pc_hspline_eval(h, h->t0));
-    else if (!strcmp(k, "deriv")) lua_pushcfunction(L, hs_deriv);
+    else if (!strcmp(k, "deriv")) lua_getfield(L, lua_upvalueindex(1), "deriv");
     else return 0;
     return 1;
 }
 
 static int hs_tostring(lua_State *L) {
-    pc_hspline *h = checkhs(L, "tostring");
-    pcl_pushnum(L, h->n);
-    pcl_pushnum(L, h->m);
-    pcl_pushnum(L, h->t0);
-    lua_pushfstring(L, "smooth.half(%s, %s, %s)", lua_tostring(L, -3), lua_tostring(L, -2),
-                    lua_tostring(L, -1));
+    pc_hspline *h = pcl_tohspline(L, 1);
+    if (!h) return pcl_error(L, "tostring: not a half-spline");
+    const char *n = pcl_pushnum(L, h->n), *m = pcl_pushnum(L, h->m), *t0 = pcl_pushnum(L, h->t0);
+    lua_pushfstring(L, "smooth.half(%s, %s, %s)", n, m, t0);
     return 1;
 }
+
+static const pcl_fn fns[] = {
+    PCL_FN("smooth.sine", l_sine, t_arg, "number", "(1 - cos(pi t))/2, the smoothstep of examples 3 and 4."),
+    PCL_FN("smooth.cubic", l_cubic, t_arg, "number", "3t^2 - 2t^3, the smoothstep of examples 5, 6 and 9."),
+    PCL_FN("smooth.power", l_power, power_args, "number | g", "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g."),
+    PCL_FN("smooth.half", l_half, half_args, "number | g", "The asymmetric half-spline of example 8: c1 t^n before t0, 1 - c2 (1 - t)^m after, slope continuous; without t the object g (g(t), g:deriv(t), g.c1, g.c2, g.v)."),
+    PCL_FN("smooth.locus", l_locus, locus_args, "number", "The junction ordinate v(t0) = m t0/(n - n t0 + m t0) of the half-spline (n, m, t0): the locus of example 8."),
+    PCL_FN("smooth.clamp", l_clamp, t_arg, "number", "The clamped smoothstep of examples 20-22: 0 before 0, 2t^2 to 1/2, 1 - 2(1 - t)^2 to 1, then 1."),
+    PCL_FN("smooth.clamp_qb", l_clamp_qb, clamp_qb_args, "number", "smooth.clamp as the listings' strict IF chain computes it: at t exactly 0, 1/2 or 1 it keeps prev."),
+    PCL_END};
+static const pcl_fn methods[] = {{.name = "g:deriv", .fn = hs_deriv, .args = t_arg, .result = "number", .self = self_hs, .selftype = "half-spline",
+                                  .help = "The slope g'(t) of a half-spline; infinite at an end where a degree is below 1 (an error)."}, PCL_END};
+static const pcl_fn call[] = {{.name = "g", .fn = hs_call, .args = t_arg, .result = "number", .self = self_hs, .selftype = "half-spline",
+                               .key = "__call", .topic = "g(t)", .callname = 1, .help = "The half-spline's value at t (t an equation: an equation)."}, PCL_END};
 
 void pcl_open_smooth(lua_State *L) {
     int module = lua_gettop(L);
     luaL_newmetatable(L, HSPLINE_MT);
-    static const luaL_Reg meta[] = {
-        {"__call", hs_call}, {"__index", hs_index}, {"__tostring", hs_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    lua_pop(L, 1);
-    static const luaL_Reg fns[] = {
-        {"sine", l_sine},   {"cubic", l_cubic}, {"power", l_power},       {"half", l_half},
-        {"locus", l_locus}, {"clamp", l_clamp}, {"clamp_qb", l_clamp_qb}, {NULL, NULL}};
+    int mt = lua_gettop(L);
+    lua_pushcfunction(L, hs_tostring);
+    lua_setfield(L, mt, "__tostring");
+    pcl_register(L, mt, call, 0);
     lua_newtable(L);
-    luaL_setfuncs(L, fns, 0);
+    pcl_register(L, -1, methods, 0);
+    lua_pushcclosure(L, hs_index, 1);
+    lua_setfield(L, mt, "__index");
+    lua_newtable(L);
+    pcl_register(L, -1, fns, 0);
     lua_setfield(L, module, "smooth");
+    lua_settop(L, module);
 }

@@ -54,7 +54,17 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
     return vfail(L, prefix, fmt, ap);
 }
 
+/* A plain function called with a colon (p:dist(B), a value's method table holds it): the
+ * receiver is "self" and the arguments count after it, as the user wrote them. */
+static int colon_call(lua_State *L) {
+    lua_Debug ar;
+    return !current(L)->self && lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) &&
+           ar.namewhat && !strcmp(ar.namewhat, "method");
+}
+
 static const char *arg_label(lua_State *L, int shown, const char *name) {
+    if (colon_call(L) && --shown == 0)
+        return name ? lua_pushfstring(L, "self (%s)", name) : "self";
     return name ? lua_pushfstring(L, "argument #%d (%s)", shown, name)
                 : lua_pushfstring(L, "argument #%d", shown);
 }
@@ -515,8 +525,8 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     if (d->self) {
         self = d->self(L, 1);
         if (!self) {
-            pcl_error(L, "%s: must be called on a %s, as %s(...)", d->name, d->selftype,
-                      d->topic ? d->topic : d->name);
+            pcl_error(L, "%s: must be called on %s %s, as %s(...)", d->name,
+                      strchr("aeiou", d->selftype[0]) ? "an" : "a", d->selftype, d->topic ? d->topic : d->name);
         }
         first = 2;
     }

@@ -19,6 +19,10 @@ truthy(plane.circle3(P(0, 0), M, P(2, 0)), "plane.circle3 takes it")
 truthy(simplex(P(0, 0), M, P(0, 1)), "simplex takes it")
 truthy(map.reflect(M, V(0, 1)), "map.reflect takes it")
 eq(tostring(affine.frame(M, V(1, 0), V(0, 1))(P(0, 0))), "P(1.2, 0.9)", "affine.frame's origin")
+eq(dist(M, P(1.2, 0)), 0.9, "dist takes a near-1 weight as a point")
+eq(tostring(foot(M, P(0, 0), P(1, 0))), "P(1.2, 0)", "foot takes it")
+eq(select(2, coords(M)), 0.9, "coords reads it as the point it prints")
+truthy(sr(P(0, 0), P(2.4, 1.8), M) and meet(P(0, 0), M, P(0, 1), P(1, 0)), "sr and meet take it")
 local D = V(1, 0) + P(0, 0) * 1e-12                 -- weight 1e-12: a direction
 eq(tostring(map.translate(D)(P(1, 1))), "P(2, 1)", "a 1e-12 weight is a vector")
 err(function() korotky.poly_spline({P(0, 0), P(1, 1) * 2}) end,
@@ -104,6 +108,13 @@ err(function() korotky.conic_arc(P(0, 0), V(1, 0), P(1, 0, 0), V(0, 1), P(1, 1))
     "korotky.conic_arc: argument #3 (V) is 3-D, but argument #1 (U) is 2-D (mixed dimensions)", "mixed dimensions")
 err(function() korotky.ferguson_substitution(pts, {0, 0, 0}, 1, 2, "mid") end,
     "korotky.ferguson_substitution: argument #5 (root) must be \"min\" or \"max\", got \"mid\"", "an enum shows the string")
+err(function() dist(P(0, 0), P(1, 1, 1)) end, "dist: argument #2 (B) is 3-D, but argument #1 (A) is 2-D (mixed dimensions)", "the point functions' mixed dimensions")
+err(function() return P(0, 0):dist(P(1, 1, 1)) end, "dist: argument #1 (B) is 3-D, but self (A) is 2-D (mixed dimensions)", "a value's method counts after self")
+err(function() assert(pcall(dot, P(1, 2), V(1, 0))) end, "dot: argument #1 (u) must be a vector, got P(1, 2)", "pcall(dot, ...) names dot")
+err(function() return smooth.half(2, 3, .5).deriv(.5) end, "g:deriv: must be called on a half-spline, as g:deriv(...)", "a half-spline method with a dot")
+err(function() return complex(1, 2).abs(5) end, "z:abs: must be called on a complex number, as z:abs(...)", "a complex method with a dot")
+err(function() local t = param "t" return (P(0, 0) + V(1, 0) * t).with(3) end, "M:with: must be called on an equation, as M:with(...)", "an equation method with a dot")
+err(function() local t = param "t" return math.log(t, 1) end, "math.log: argument #2 (base) must be a positive number other than 1, got 1", "math.log of an equation names its base")
 local e = korotky.energy
 err(function() e(3) end, "korotky.energy: argument #1 (curve) must be a curve, got 3", "an alias keeps the declared name")
 err(function() assert(pcall(korotky.energy, 3)) end, "korotky.energy: argument #1", "pcall names the function, not pcall")
@@ -145,11 +156,17 @@ end
 truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
-local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "konopatsky"}
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "konopatsky", "smooth", "complex"}
 for _, t in ipairs(CONVERTED) do
   for k, v in pairs(pointcalc[t]) do
     if type(v) == "function" then truthy(decls[t .. "." .. k], t .. "." .. k .. " has a declaration") end
   end
+end
+-- the global functions of converted files
+for _, k in ipairs{"P", "V", "lerp", "bar", "mid", "dist", "dot", "cross", "unit", "perp", "angle", "foot", "Sigma", "sr",
+                   "divide", "harmonic", "cross_ratio", "meet", "area", "volume", "normalize", "weight", "coords", "near",
+                   "mobius", "param"} do
+  truthy(decls[k], k .. " has a declaration")
 end
 truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"], "constructors, calls and methods")
 truthy(decls["figure"], "figure has a declaration")

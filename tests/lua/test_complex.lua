@@ -30,7 +30,7 @@ err(function() return complex.exp(complex(1000, 0)) end, "complex.exp: the resul
 err(function() complex(0 / 0) end, "complex: argument #1 (re) must be a finite number", "NaN re")
 err(function() complex(1, math.huge) end, "complex: argument #2 (im) must be a finite number, got inf", "inf im")
 err(function() return z + 0 / 0 end, "complex +: argument #2 (right) must be a finite number", "z + NaN")
-err(function() complex("a") end, "complex: argument #1 (re) must be a number or a 2-D point, got string", "complex(string)")
+err(function() complex("a") end, "complex: argument #1 (re) must be a finite number or a 2-D point, got \"a\"", "complex(string)")
 
 -- example 15: z0 = r0 e^(i u0), r0 = 1/2, u0 = pi/4, phi = 0
 local M = mobius(complex.polar(.5, math.pi / 4))
@@ -58,5 +58,5 @@ near(Mi.phi, 1.1, 0, "M.phi")
 truthy(tostring(M):find("^mobius%(complex%(0.35355339059327, 0.35355339059327%), 0%)"), "tostring")
 err(function() mobius(complex(1, 0)) end, "mobius: argument #1 (z0) must be a point inside the unit disc (|z0| < 1)", "|z0| = 1")
 err(function() mobius(.5)(2, 0) end, "is the pole 1/conj(z0) of the map", "pole")
-err(function() M("a") end, "must be a complex number, a 2-D point or x, y, got string", "M(string)")
+err(function() M("a") end, "M: argument #1 (z) must be a complex number, a 2-D point or x, y, got \"a\"", "M(string)")
 check.done()

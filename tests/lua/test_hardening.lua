@@ -64,7 +64,7 @@ check.near(smooth.sine(3.5), 0.5, 1e-15, "period 2: s(3.5) = s(1.5)")
 check.near(smooth.sine(-0.5), 0.5, 1e-15, "an even function")
 check.err(function() return smooth.cubic(1e308) end, "smooth.cubic: the value at t = 1e+308 is out of range")
 check.err(function() return smooth.power(3, -1e200) end, "smooth.power: the value at t = -1e+200 is out of range")
-check.err(function() return smooth.half(2, 3, 0.5)(1e200) end, "halfspline: the value at t = 1e+200 is out of range")
+check.err(function() return smooth.half(2, 3, 0.5)(1e200) end, "g: the value at t = 1e+200 is out of range")
 
 -- ---- 8. messages that name the function, the argument and the line -------------------------
 
@@ -82,10 +82,10 @@ check.err(function() return approx.mse(function() return "x" end, {0, 1}) end,
 check.err(function() return affine({P(0, 0)}, complex(1, 2)) end,
   "affine: argument #2 (image points) must be a table of points or a simplex, got complex")
 local z = complex(1, 2)
-check.err(function() return z.point(5) end, "z:point: self must be a complex number")
+check.err(function() return z.point(5) end, "z:point: must be called on a complex number, as z:point(...)")
 check.err(function() return z.point(5) end, here .. ":", "z.point(5) located")
 check.eq(tostring(z:point()), "P(1, 2)", "z:point() still works")
-check.err(function() return smooth.half(2, 3, 0.5).deriv(5, 0.5) end, "g:deriv: self must be a half-spline")
+check.err(function() return smooth.half(2, 3, 0.5).deriv(5, 0.5) end, "g:deriv: must be called on a half-spline, as g:deriv(...)")
 
 -- the arc length of a callback curve far outside its range: the adaptive quadrature has a
 -- budget (the speed by differences is noise at 1e-10; it used to run for hours)

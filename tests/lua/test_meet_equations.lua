@@ -31,5 +31,5 @@ for _, x in ipairs{0.6, 0.8, 1} do same(c3(x), P((2 * x - 1) / (2 * x), 1, 0), "
 same(c3:deriv(0.8), V(1 / (2 * 0.8 ^ 2), 0, 0), "its exact derivative", 1e-10)
 err(function() meet(A, K, V(1, 0) * u, T) end, "meet: argument #3 (B1) must be a point (weight 1)", "a vector equation")
 err(function() meet(A, K, C, P(0, 0, 0) * bar(u) + P(1, 1, 1) * u) end,
-    "meet: argument #4 (B2) is 3-D, but argument #1 is 2-D", "mixed dimensions")
+    "meet: argument #4 (B2) is 3-D, but argument #1 (A1) is 2-D (mixed dimensions)", "mixed dimensions")
 check.done()
