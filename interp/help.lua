@@ -255,8 +255,7 @@ def("c:flatten", "c:flatten([tol [, map]]) -> {polylines}",
   "Adaptive polylines within tol of the curve (projected by map to the plane), broken where the curve passes through infinity.", "method")
 def("c:each", "c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t",
   "Walk a curve: for M, i, t in c:each{t = {0, 1, .01}} do ... end.", "method")
-def("c:draw", {"c:draw{color = c, tol = px, map = m}", "c:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, qb = false, ...}"},
-  "Draw the curve as one path, flattened to within tol pixels (default 1/4) through map or the camera; with t or a brush, dots as the listings draw them.", "method")
+def("c:draw", nil, nil, "method")
 def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
 def("c:coef", "c:coef(k) -> a, b",
@@ -427,8 +426,7 @@ def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
-def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
-  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
+def("camera")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG or PPM by the extension, atomically; \"paper\" prints dark ink on white.")
 

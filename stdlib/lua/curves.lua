@@ -192,7 +192,7 @@ function tk.trace(f, a, b, step, opts, fname)
   if step and step ~= 0 then pieces = math.min(4096, math.max(1, math.ceil(math.abs(b - a) / math.abs(step) / 8))) end
   if a == b then return end
   if a > b then a, b = b, a end
-  tk.draw_curve(M.curve(g, a, b), opts.color, opts.tol, obj, pieces)
+  tk.draw_curve(M.curve(g, a, b), opts.color, opts.tol, obj, pieces, fname)
 end
 
 -- A dot plotter for samples of any dimension: 2-D as they are, others through the camera
@@ -267,30 +267,27 @@ function methods.each(c, opts)
   end
 end
 
--- c:draw{color = c, tol = px, map = m}: the curve as one path, flattened to within tol pixels
--- (default 1/4) through map or the camera.  c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn,
--- dots = true, qb = false, ...} draws dots at those parameters instead, as the listings do.
-function methods.draw(c, opts)
-  if not tk.iscurve(c) then tk.raise("c:draw: call it as c:draw{...}, with a colon") end
-  opts = opts or {}
-  if type(opts) ~= "table" then tk.argerror("c:draw", 1, "opts", "a table", opts, 3) end
-  if not wants_dots(opts) and opts.t == nil then
-    local map = opts.map
-    if map ~= nil and not map_object(map) then
-      return tk.trace(function(t) return c(t) end, c.lo, c.hi, nil, opts, "c:draw")
-    end
-    return tk.draw_curve(c, opts.color, opts.tol, map)
-  end
+-- c:draw{...} is in C (stdlib/lua/l_camera.c): it checks the options and draws a path through
+-- the camera or a map object itself; dots, and maps that are plain functions, come here.
+
+-- c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn, dots = true, qb = false, ...}: dots at
+-- those parameters, as the listings draw them
+function tk.draw_dots(c, opts)
   local plot, post = tk.brush(opts, "c:draw"), tk.postmap(opts.map, "c:draw")
   if post then
     tk.walk(c, opts, "c:draw", function(...) plot(post(...)) end)
   else
     if c.dim ~= 2 then
       error(string.format("c:draw: a %d-D curve needs map = a projection (e.g. oblique(...))",
-        c.dim), 2)
+        c.dim), 3)
     end
     tk.walk(c, opts, "c:draw", plot)
   end
+end
+
+-- c:draw{map = function(X) ... end}: the path of the mapped points
+function tk.draw_mapped(c, opts)
+  return tk.trace(function(t) return c(t) end, c.lo, c.hi, nil, opts, "c:draw")
 end
 
 -- ---- stroke{...} ------------------------------------------------------------------------------
