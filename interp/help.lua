@@ -354,14 +354,10 @@ area("maps", "Maps, projections and numerics",
   "Oresme's function and bisection.",
   "toolkit.md")
 
-def("squash", "squash(p [, q]) -> numbers",
-  "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28).")
-def("squash01", "squash01(p [, q]) -> numbers",
-  "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument.")
-def("oblique", "oblique(C0, r, k, u) -> map",
-  "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
-def("projection", "projection(C0, C1, C2, C3) -> map",
-  "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0.")
+def("squash")
+def("squash01")
+def("oblique")
+def("projection")
 def("complex", "complex(re [, im]) | complex(P) -> z",
   "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point().")
 def("complex.i", "complex.i", "The imaginary unit.", "value")
@@ -373,10 +369,9 @@ def("complex.arg", "complex.arg(z) -> number", "The argument of z: atan2(im, re)
 def("complex.conj", "complex.conj(z) -> z", "The complex conjugate.")
 def("mobius", "mobius(z0 [, phi]) -> M",
   "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse().")
-def("oresme", "oresme(lambda [, m [, y0, y1]]) -> o",
-  "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o.")
-def("bisect", "bisect(f, a, b [, tol]) -> x, iterations",
-  "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default).")
+def("oresme")
+def("o(t)", nil, nil, "method")
+def("bisect")
 
 -- ---------------------------------------------------------------------------------------
 area("draw", "Drawing (QBasic SCREEN 12)",
