@@ -65,6 +65,18 @@ err(function() cd:draw{colr = 4} end, "c:draw: unknown option 'colr' (did you me
 err(function() cd:draw{colour = {}} end, "c:draw: option 'colour' must be a colour number of the screen or \"#rrggbb\", got table", "c:draw{colour} is the colour option")
 err(function() cd:draw{closd = true} end, "c:draw: unknown option 'closd' (did you mean 'closed'?)", "c:draw{closd}")
 err(function() cd:draw{color = 4, colour = 4} end, "c:draw: options 'color' and 'colour' are one option: give one", "both spellings")
+local many66 = {}
+for i = 1, 66 do many66[i] = P(i, 0) end
+err(function() bezier(many66) end, "bezier: argument #1 (points) must hold 2 to 65 points, got 66", "bezier of 66 points names the cap")
+err(function() bspline({P(0, 0), P(1, 1), P(2, 0), P(3, 1), P(4, 0)}, 3, {0, 0, 0, 0, 0, 0, 0, 0, 0}) end,
+    "bspline: argument #3 (knots) leaves no domain: knot [4] = 0 (the start) must be less than knot [6] = 0 (the end)", "bspline names its knots")
+truthy(hermite({P(0, 0), M}, {V(1, 0), V(1, 0)}) and cubic_spline({P(0, 0), M, P(2, 0)}) and interpolate(pts) and fourier({P(0, 0), M}),
+       "hermite, cubic_spline, interpolate and fourier take the near-1 weight as a point")
+err(function() cubic_spline(pts, {ends = "clamped", d0 = V(1, 0), d1 = V(1, 0, 0)}) end,
+    "cubic_spline: option 'd1' is 3-D, but argument #1 (points) is 2-D (mixed dimensions)", "an end derivative of another dimension")
+err(function() cubic_spline(pts, {endz = "natural"}) end, "cubic_spline: unknown option 'endz' (did you mean 'ends'?)", "cubic_spline's keys")
+err(function() hermite(pts, {V(1, 0), V(1, 0), V(1, 0)}, {closd = true}) end, "hermite: unknown option 'closd' (did you mean 'closed'?)", "hermite's keys")
+err(function() cd.xy(0.5) end, "c:xy: must be called on a curve, as c:xy(...)", "a C method of a curve called with a dot")
 err(function() plot(function(t) return t end, {t = {0, 1, 0.1}}) end,
     "plot: a 1-D object needs a projection", "plot of a function of one number names plot")
 
@@ -77,11 +89,7 @@ local PENDING = {
    "unknown option 'hiden' (did you mean 'hidden'?)"},
   {"figure{widht = 8}", function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)"},
   {"screen{widht = 300}", function() screen{widht = 300} end, "screen: unknown option 'widht' (did you mean 'width'?)"},
-  {"bezier of 66 points", function() local p = {} for i = 1, 66 do p[i] = P(i, 0) end bezier(p) end,
-   "bezier: argument #1 (points) must hold 2 to"},
   {"interp.prototype(\"desargues\")", function() interp.prototype("desargues") end, "must hold 4 points"},
-  {"bspline names its knots", function() bspline({P(0, 0), P(1, 1), P(2, 0), P(3, 1), P(4, 0)}, 3, {0, 0, 0, 0, 0, 0, 0, 0, 0}) end,
-   "bspline: argument #3 (knots)"},
 }
 local still = {}
 for _, p in ipairs(PENDING) do
@@ -148,6 +156,14 @@ truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
 local CONVERTED = {"korotky", "plane", "buimov", "map", "affine"}
+-- global functions of converted files, and the curve methods written in C
+for _, k in ipairs{"bezier", "bspline", "hermite", "cubic_spline", "interpolate", "curve", "spline2", "fourier",
+                   "sphdir", "camera", "squash", "squash01", "oblique", "projection", "oresme", "bisect"} do
+  truthy(decls[k], k .. " has a declaration")
+end
+for k, v in pairs(pointcalc._tk.curve_methods) do
+  truthy(decls["c:" .. k] or k == "each", "c:" .. k .. " has a declaration")
+end
 for _, t in ipairs(CONVERTED) do
   for k, v in pairs(pointcalc[t]) do
     if type(v) == "function" then truthy(decls[t .. "." .. k], t .. "." .. k .. " has a declaration") end
