@@ -215,9 +215,11 @@ end
 -- plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})   a path (the default)
 -- plot(f, {t = {a, b, step}, brush = "pset"|"dot"|fn | dots = true | qb = true, ...})   dots
 -- draws the curve t -> f(t) (a point or numbers; 3-D and more through map or the camera).
+local PLOT_KEYS = {t = true, color = true, map = true, tol = true, brush = true, dots = true, qb = true}
 function M.plot(f, opts)
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("plot", 2, "opts", "a table", opts) end
+  opts = tk.check_options("plot", opts, PLOT_KEYS)
   if not wants_dots(opts) then
     if tk.iscurve(f) then return f:draw(opts) end
     if not callable(f) then tk.argerror("plot", 1, "curve", "a function of t or a curve", f) end
@@ -247,6 +249,7 @@ function methods.each(c, opts)
   if not tk.iscurve(c) then tk.raise("c:each: call it as c:each(...), with a colon") end
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("c:each", 1, "opts", "a table {t = {a, b, step}}", opts) end
+  tk.check_options("c:each", opts, {t = true, qb = true})
   local P = M.P
   local pieced = c.kind == "stroke" or c.kind == "spline2"
   local lo, hi = c.lo, c.hi
@@ -346,9 +349,14 @@ end
 --        | ein = {V, ...} [, eout = {V, ...}]                explicit directions
 --        rin = ..., rout = ..., n = ..., m = ..., t0 = ...,  per node (number = every node)
 --        g = smoothstep, closed = false, ccw = true, radians = false}
+local STROKE_KEYS = {}
+for k in ("nodes x y z uin kink uin2 kink2 ein eout rin rout n m t0 g closed ccw radians"):gmatch("%S+") do
+  STROKE_KEYS[k] = true
+end
 function M.stroke(s)
   local fn = "stroke"
   if type(s) ~= "table" then tk.argerror(fn, 1, "spec", "a table {nodes = {...}, ...}", s) end
+  tk.check_options(fn, s, STROKE_KEYS)
   -- the nodes
   local nodes, d, k = {}, nil, nil
   if s.nodes ~= nil then

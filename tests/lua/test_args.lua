@@ -65,6 +65,17 @@ err(function() cd:draw{colr = 4} end, "c:draw: unknown option 'colr' (did you me
 err(function() cd:draw{colour = {}} end, "c:draw: option 'colour' must be a colour number of the screen or \"#rrggbb\", got table", "c:draw{colour} is the colour option")
 err(function() cd:draw{closd = true} end, "c:draw: unknown option 'closd' (did you mean 'closed'?)", "c:draw{closd}")
 err(function() cd:draw{color = 4, colour = 4} end, "c:draw: options 'color' and 'colour' are one option: give one", "both spellings")
+-- the Lua-written calls of curves.lua check their keys the same way (_tk.check_options)
+local diag = function(t) return P(t, t) end
+err(function() plot(diag, {t = {0, 1}, colr = 3}) end, "plot: unknown option 'colr' (did you mean 'color'?)", "plot{colr}")
+err(function() plot(diag, {t = {0, 1}, widht = 3}) end, "plot: unknown option 'widht' (see :help plot)", "plot with no near key")
+err(function() stroke{nodes = {P(0, 0), P(1, 1)}, closd = true} end, "stroke: unknown option 'closd' (did you mean 'closed'?)", "stroke{closd}")
+err(function() cd:each{tt = {0, 1, .5}} end, "c:each: unknown option 'tt' (did you mean 't'?)", "c:each{tt}")
+screen(12)
+plot(diag, {t = {0, 100}, colour = 4})
+eq(point(50, 50), 4, "plot{colour = 4} draws in colour 4")
+cd:draw{colour = 2}
+eq(point(0, 0), 2, "c:draw{colour = 2} draws in colour 2")
 local many66 = {}
 for i = 1, 66 do many66[i] = P(i, 0) end
 err(function() bezier(many66) end, "bezier: argument #1 (points) must hold 2 to 65 points, got 66", "bezier of 66 points names the cap")
