@@ -694,29 +694,18 @@ static int c_deriv(lua_State *L) {
     return 1;
 }
 
-/* c:tangent(t), c:normal(t): the unit tangent; the unit principal normal (in the plane: the
- * tangent turned by +90 degrees; in space the part of C'' across the tangent) */
+/* c:tangent(t), c:normal(t) (pc_curve_frame) */
 static int unit_at(lua_State *L, int normal) {
     pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
-    double t = a[0].x, out[3 * PC_MAXDIM], e[PC_MAXDIM], nrm[PC_MAXDIM];
-    int d = u->c->dim;
-    derivs(L, u, t, 1 + (normal && d != 2), out);
-    if (pc_unit(d, out + d, e) != PC_OK)
-        return pcl_fail(L, "the derivative is zero at t = %s%s", pcl_pushnum(L, t), normal ? "" : " (a cusp or a stop)");
-    if (!normal) {
-        pcl_pushvector(L, d, e);
-        return 1;
-    }
-    if (d == 2) {
-        pc_perp2(e, nrm);
-    } else {
-        double k = pc_dot(d, out + 2 * d, e);
-        for (int i = 0; i < d; i++) nrm[i] = out[2 * d + i] - k * e[i];
-        if (pc_unit(d, nrm, nrm) != PC_OK)
-            return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", pcl_pushnum(L, t));
-    }
-    pcl_pushvector(L, d, nrm);
+    double e[PC_MAXDIM], nrm[PC_MAXDIM];
+    const char *t = pcl_pushnum(L, a[0].x);
+    int st = pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", t);
+    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s%s", t, normal ? "" : " (a cusp or a stop)");
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", t);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushvector(L, u->c->dim, normal ? nrm : e);
     return 1;
 }
 static int c_tangent(lua_State *L) { return unit_at(L, 0); }
