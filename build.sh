@@ -30,6 +30,7 @@ gallery)  build build && sh examples/render_gallery.sh build/pointcalc gallery ;
 test)     build build && ctest --test-dir build --output-on-failure -j "$jobs" ;;
 sanitize) build build-asan -DPC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug &&
           ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+          LSAN_OPTIONS=suppressions="$(pwd)/tests/tools/lsan.supp" \
           ctest --test-dir build-asan --output-on-failure -j "$jobs" ;;
 bench)    build build && sh bench/run.sh build/pointcalc ;;
 install)  build build && cmake --install build --prefix "$prefix" ;;

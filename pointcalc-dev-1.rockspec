@@ -25,6 +25,8 @@ dependencies = {
 external_dependencies = {
    -- found by CMake through pkg-config; listed so that LuaRocks says what is missing
    PNG = { header = "png.h" },
+   CAIRO = { header = "cairo/cairo.h" },   -- the print look (libcairo2-dev, libpango1.0-dev)
+   PANGO = { header = "pango-1.0/pango/pangocairo.h" },
 }
 build = {
    type = "cmake",

@@ -5,7 +5,8 @@
  * frame k is pixel for pixel the headless render at that value.  A .png or .ppm output
  * becomes numbered frames (out-000.png, out-001.png, ...); an .svg output becomes one
  * animated SVG whose frames take turns (SMIL, looping; the first frame shows where SMIL does
- * not run). */
+ * not run), written at the end through pc_write_file like every picture (atomic, no device or
+ * link replaced, the mode kept). */
 #include "frames.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -49,6 +50,14 @@ static int find_animated(const char *script, const render_param *sets, int nsets
     return found;
 }
 
+typedef struct { char *data; size_t size; } memory_file;
+
+static int emit_memory(void *ud, FILE *f, char *why, size_t whylen) {
+    (void)why, (void)whylen;
+    const memory_file *m = ud;
+    return fwrite(m->data, 1, m->size, f) == m->size ? PC_OK : PC_EIO;
+}
+
 /* out.png -> out-007.png */
 static void numbered(const char *path, int k, char *buf, size_t len) {
     const char *dot = strrchr(path, '.');
@@ -82,19 +91,22 @@ static void add_svg_frame(FILE *out, const char *svg, int k, int n, double secon
                     "keyTimes=\"0;%.6f;%.6f\" dur=\"%.3fs\" calcMode=\"discrete\" repeatCount=\"indefinite\"/>\n",
                     a, b, seconds);
     }
-    /* clip ids: id="cN" and url(#cN) become fK-cN */
-    for (const char *p = body; p < end;) {
-        const char *id = strstr(p, "id=\"c"), *url = strstr(p, "url(#c");
-        const char *next = id && (!url || id < url) ? id : url;
-        if (!next || next >= end) {
-            fwrite(p, 1, (size_t)(end - p), out);
-            break;
+    /* clip ids: id="cN" and url(#cN) inside tags become fK-cN; text between tags (a label's
+     * own words, where the writer escapes '<') is never rewritten */
+    int in_tag = 0;
+    const char *run = body;
+    for (const char *p = body; p < end; p++) {
+        if (*p == '<') in_tag = 1;
+        else if (*p == '>') in_tag = 0;
+        else if (in_tag && (!strncmp(p, "id=\"c", 5) || !strncmp(p, "url(#c", 6))) {
+            size_t head = *p == 'i' ? 4 : 5;   /* up to the quote or the # */
+            fwrite(run, 1, (size_t)(p - run) + head, out);
+            fprintf(out, "f%d-", k);
+            run = p + head;
+            p += head - 1;
         }
-        size_t head = next == id ? 4 : 5;   /* up to the quote or the # */
-        fwrite(p, 1, (size_t)(next - p) + head, out);
-        fprintf(out, "f%d-", k);
-        p = next + head;
     }
+    fwrite(run, 1, (size_t)(end - run), out);
     fputs("</g>\n", out);
 }
 
@@ -109,17 +121,15 @@ int frames_main(const char *script, int nframes, double fps, const render_param 
     for (int i = 0; i < nsets; i++)      /* --set of the animated parameter itself: ignored */
         if (!strcmp(params[i].name, params[nsets].name)) params[i].name[0] = 0;
 
+    /* an animated SVG is made in memory, then written as one file */
     FILE **svgs = calloc((size_t)noutputs, sizeof(FILE *));
-    char **svg_tmp = calloc((size_t)noutputs, sizeof(char *));
-    int status = 0;
-    for (int j = 0; j < noutputs; j++) {
+    memory_file *mem = calloc((size_t)noutputs, sizeof(memory_file));
+    int status = !svgs || !mem;
+    for (int j = 0; j < noutputs && !status; j++) {
         if (pc_format_from_path(outputs[j]) != PC_FMT_SVG) continue;
-        size_t len = strlen(outputs[j]) + 16;
-        svg_tmp[j] = malloc(len);
-        snprintf(svg_tmp[j], len, "%s.frames~", outputs[j]);
-        svgs[j] = fopen(svg_tmp[j], "w");
+        svgs[j] = open_memstream(&mem[j].data, &mem[j].size);
         if (!svgs[j]) {
-            fprintf(stderr, "%s: cannot write '%s'\n", host_progname, outputs[j]);
+            fprintf(stderr, "%s: cannot write '%s': out of memory\n", host_progname, outputs[j]);
             status = 1;
         }
     }
@@ -159,19 +169,19 @@ int frames_main(const char *script, int nframes, double fps, const render_param 
         }
         render_close(&r);
     }
-    for (int j = 0; j < noutputs; j++) {
+    for (int j = 0; svgs && j < noutputs; j++) {
         if (!svgs[j]) continue;
         fputs("</svg>\n", svgs[j]);
         if (fclose(svgs[j]) != 0) status = 1;
-        if (!status && rename(svg_tmp[j], outputs[j]) != 0) {
-            fprintf(stderr, "%s: cannot write '%s'\n", host_progname, outputs[j]);
+        char err[600];
+        if (!status && pc_write_file_emit(outputs[j], emit_memory, &mem[j], err, sizeof err) != PC_OK) {
+            fprintf(stderr, "%s: %s\n", host_progname, err);
             status = 1;
         }
-        if (status) remove(svg_tmp[j]);
-        free(svg_tmp[j]);
+        free(mem[j].data);
     }
     free(svgs);
-    free(svg_tmp);
+    free(mem);
     if (!status)
         fprintf(stderr, "%s: %d frames of %s from %.17g to %.17g\n", host_progname, nframes,
                 params[nsets].name, lo, hi);

@@ -391,21 +391,22 @@ def("last_point", "last_point() -> x, y",
   "The graphics cursor: the last point referenced, in world coordinates.")
 def("size", "size() -> width, height, colours",
   "The size of the canvas and its number of colours.")
-def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen()"},
-  "The pen of lines, boxes, circles and paths: width in pixels and a dash pattern; pen() restores width 1, solid.")
+def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}", "pen \"main\"|\"thin\"|\"hidden\"|\"centre\"", "pen()"},
+  "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default.")
 def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\"}])",
   "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given.")
 def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
   "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
-def("label", "label(text, P | x, y [, direction [, colour [, scale]]])",
-  "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away, in the VGA 8x16 font.")
+def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
+  "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
+def("figure")
 def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
 def("camera")
 def("save", "save(path [, \"paper\"|\"screen\"])",
-  "Write the canvas: PNG, SVG or PPM by the extension, atomically; \"paper\" prints dark ink on white.")
+  "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look.")
 
 -- ---------------------------------------------------------------------------------------
 area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",

@@ -12,6 +12,7 @@
 #include "pcl.h"
 #include "frames.h"
 #include "serve.h"
+#include "print.h"
 
 #define MAX_OUTPUTS 32
 #define MAX_CHUNKS 32
@@ -24,8 +25,12 @@ static const char usage_text[] =
     "  -e CODE       run CODE (repeatable, before the script)\n"
     "  -i            enter the interactive REPL after running the script\n"
     "  --watch FILE  REPL: rewrite FILE (.png, .svg or .ppm) whenever the canvas changes\n"
-    "  -o FILE       write the canvas to FILE when done: .png, .svg or .ppm (repeatable)\n"
+    "  -o FILE       write the canvas to FILE when done: .png, .svg, .ppm, .pdf, .eps or\n"
+    "                .ps (repeatable)\n"
     "  --paper       print theme for written files: white paper, dark ink\n"
+    "  --print       the print look for .png and .svg too (PDF, EPS and PS always have it)\n"
+    "  --dpi N       the print look at N dots per inch (PNG)\n"
+    "  --size W[xH]  the print look at a size: 12cm, 12cmx8cm (cm, mm, in, pt, px)\n"
     "  --set NAME=VALUE  the value of the script's slider NAME (repeatable)\n"
     "  --frames N    write N frames of the slider declared {animate = true}: numbered\n"
     "                PNG/PPM files, or one animated SVG (--fps F, default 10)\n"
@@ -35,14 +40,15 @@ static const char usage_text[] =
     "  --safe        safe mode: no processes, C modules, binary chunks or debug library;\n"
     "                files only under the folders given with --allow\n"
     "  --allow DIR   safe mode: the script may read and write files under DIR (repeatable)\n"
+    "  --allow-hardlinks  safe mode: also files with other hard links under those folders\n"
     "  --timeout S   stop the script after S seconds (each REPL statement: S seconds)\n"
     "  --max-memory MB  stop the script when it uses more than MB megabytes\n"
     "  -v            print the version and exit\n"
     "  -h, --help    print this help and exit\n"
     "  --            end of options: everything after the script goes to it in `arg`\n"
-    "Options -o, --paper, --watch, --set, --frames and --fps may also follow the script;\n"
-    "other arguments there reach the script in `arg`. With no script and a terminal on\n"
-    "standard input, or with -i or --watch, the REPL starts.\n"
+    "Options -o, --paper, --print, --dpi, --size, --watch, --set, --frames and --fps may\n"
+    "also follow the script; other arguments there reach the script in `arg`. With no\n"
+    "script and a terminal on standard input, or with -i or --watch, the REPL starts.\n"
     "A script that draws but saves nothing writes SCRIPT.png in the current directory.\n";
 
 typedef struct {
@@ -58,6 +64,8 @@ typedef struct {
     sandbox_config sandbox;
     render_param sets[MAX_SETS];   /* --set NAME=VALUE */
     int nsets;
+    int print;                     /* --print, --dpi, --size: the print look */
+    pc_figure fig;
     int nframes;                   /* --frames N */
     double fps;                    /* --fps F */
 } options;
@@ -102,7 +110,8 @@ static int set_limit(double *out, const char *opt, const char *value) {
 static int add_output(options *o, const char *path) {
     if (!path) return usage_error("%s", "option -o needs a file name");
     if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
-        return usage_error("cannot write '%s': the extension must be .png, .svg or .ppm", path);
+        return usage_error("cannot write '%s': the extension must be .png, .svg, .ppm, .pdf, "
+                           ".eps or .ps", path);
     if (o->noutputs == MAX_OUTPUTS) return usage_error("%s", "too many -o options");
     o->outputs[o->noutputs++] = path;
     return 0;
@@ -123,6 +132,20 @@ static int live_option(options *o, int argc, char **argv, int *i, int *rc) {
         if (!v || *end || n < 1 || n > 10000)
             *rc = usage_error("%s", "--frames needs a number of frames 1..10000");
         else o->nframes = (int)n;
+    } else if (!strcmp(a, "--print")) {
+        o->print = 1;
+        return 1;
+    } else if (!strcmp(a, "--dpi")) {
+        char *end;
+        double d = v ? strtod(v, &end) : 0;
+        if (!v || *end || !(d >= 10 && d <= 2400)) *rc = usage_error("%s", "--dpi needs a resolution 10..2400");
+        else o->fig.dpi = d, o->print = 1;
+    } else if (!strcmp(a, "--size")) {
+        char err[200];
+        if (!v) *rc = usage_error("%s", "--size needs a size such as 12cm or 12cmx8cm");
+        else if (pc_parse_size(v, &o->fig.width, &o->fig.height, err, sizeof err) != PC_OK)
+            *rc = usage_error("%s", err);
+        else o->print = 1;
     } else if (!strcmp(a, "--fps")) {
         char *end;
         double f = v ? strtod(v, &end) : 0;
@@ -161,6 +184,7 @@ static int parse(int argc, char **argv, options *o) {
             o->input = argv[i];
         }
         else if (!strcmp(a, "--safe")) o->sandbox.safe = 1;
+        else if (!strcmp(a, "--allow-hardlinks")) o->sandbox.allow_hardlinks = 1;
         else if (live_option(o, argc, argv, &i, &rc)) {
             if (rc >= 0) return rc;
         }
@@ -264,7 +288,20 @@ static void default_output(const options *o, char *buf, size_t len) {
     snprintf(buf, len, "%.*s.png", n, base);
 }
 
+/* --print, --dpi, --size: the print look, over what the script's figure{} set. */
+static int apply_print(lua_State *L, const options *o) {
+    if (!o->print) return 1;
+    pc_canvas *c = pcl_canvas(L);
+    pc_figure f = c->figure;
+    if (o->fig.dpi) f.dpi = o->fig.dpi;
+    if (o->fig.width) f.width = o->fig.width, f.height = o->fig.height;
+    if (pc_figure_set(c, &f) == PC_OK) return 1;
+    fprintf(stderr, "%s: %s\n", host_progname, pc_canvas_error(c));
+    return 0;
+}
+
 static int write_outputs(lua_State *L, const options *o, int repl_ran) {
+    if (!apply_print(L, o)) return 0;
     pc_canvas *c = pcl_canvas(L);
     pc_theme theme = pcl_theme(L);
     char err[512];
@@ -326,6 +363,7 @@ int main(int argc, char **argv) {
     lua_State *L = host_new_state(&o.sandbox);
     if (!L) return 1;
     if (o.paper) pcl_set_theme(L, PC_THEME_PAPER);
+    if (!apply_print(L, &o)) return 2;
     for (int i = 0; i < o.nsets; i++) pcl_param_set(L, o.sets[i].name, o.sets[i].value);
 
     if (o.emit_lua) {

@@ -17,9 +17,15 @@
 #include <unistd.h>
 #include <lauxlib.h>
 #include "pcl.h"
+#include "memlimit.h"
 #include "writers.h"
 
-const sandbox_config sandbox_untrusted = {1, 0, {NULL}, 10, 256};
+const sandbox_config sandbox_untrusted = {1, 0, {NULL}, 10, 256, 0};
+
+/* --safe without --timeout or --max-memory (docs/safety.md): a script from elsewhere cannot
+ * take the machine */
+#define SAFE_DEFAULT_SECONDS 60
+#define SAFE_DEFAULT_MB 1024
 
 #define HOOK_COUNT 10000       /* instructions between two looks at the clock */
 #define GRACE_SECONDS 2        /* a native call past the time limit is stopped this much later */
@@ -28,16 +34,21 @@ static struct {
     int safe;
     int nallow;
     char *allow[SANDBOX_MAX_ALLOW];   /* resolved (realpath) */
+    int hardlinks;                    /* --allow-hardlinks */
     double timeout, max_mb;
     size_t max_bytes;                 /* 0: no memory limit */
     size_t hard_bytes;                /* no allocation beyond this */
     lua_Alloc alloc;                  /* the state's own allocator, wrapped */
     void *alloc_ud;
     size_t lua_bytes;                 /* the Lua heap now */
-    size_t c_bytes;                   /* the C heap at the last look (mallinfo2) */
+    size_t c_bytes;                   /* the C heap at the last look */
+    size_t after_gc;                  /* the C heap after the hook's last collection */
     volatile sig_atomic_t refused;    /* an allocation was refused for the limit */
     struct timespec deadline;
     volatile sig_atomic_t armed, time_up;
+    volatile sig_atomic_t running;    /* between sandbox_start and sandbox_stop */
+    size_t refused_size;              /* the first refused request of the run */
+    char refused_where[LUA_IDSIZE + 24];   /* "file:LINE" of it, or "" */
     lua_State *L;
 } S;
 
@@ -49,6 +60,10 @@ static double now_seconds(void) {
 
 /* ---- memory --------------------------------------------------------------------------------- */
 
+static void on_refused(size_t request);
+static void limit_hook(lua_State *L, lua_Debug *ar);
+static const lua_Hook limit_hook_ptr = limit_hook;
+
 /* The allocator: Lua's own, counting bytes.  The hook stops a script soon after it passes the
  * limit, at its line; an allocation that would take it past one and a half times the limit is
  * refused at once (Lua then raises "not enough memory", which sandbox_explain names). */
@@ -56,7 +71,7 @@ static void *counting_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
     (void)ud;
     size_t old = ptr ? osize : 0;   /* without ptr, osize is a type tag */
     if (nsize > old && S.max_bytes && S.lua_bytes + (nsize - old) > S.hard_bytes) {
-        S.refused = 1;
+        on_refused(nsize - old);
         return NULL;
     }
     void *p = S.alloc(S.alloc_ud, ptr, osize, nsize);
@@ -64,9 +79,10 @@ static void *counting_alloc(void *ud, void *ptr, size_t osize, size_t nsize) {
     return p;
 }
 
-/* The C heap in use, where the C library tells (0 under AddressSanitizer's allocator): the
- * display list and the core's objects live there. */
+/* The C heap in use: exact from the accounting allocator (memlimit.c), else where the C
+ * library tells (0 under AddressSanitizer's allocator). */
 static size_t c_heap(void) {
+    if (pc_mem_counting()) return pc_mem_in_use();
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
     struct mallinfo2 mi = mallinfo2();
     return mi.uordblks + mi.hblkhd;
@@ -75,13 +91,19 @@ static size_t c_heap(void) {
 #endif
 }
 
+
 void sandbox_attach(lua_State *L, const sandbox_config *cfg) {
     S.L = L;
-    S.timeout = cfg->timeout > 0 ? cfg->timeout : 0;
-    S.max_mb = cfg->max_memory_mb > 0 ? cfg->max_memory_mb : 0;
+    S.timeout = cfg->timeout > 0 ? cfg->timeout : cfg->safe ? SAFE_DEFAULT_SECONDS : 0;
+    S.max_mb = cfg->max_memory_mb > 0 ? cfg->max_memory_mb : cfg->safe ? SAFE_DEFAULT_MB : 0;
     S.max_bytes = S.max_mb > 0 ? (size_t)(S.max_mb * 1048576.0) : 0;
-    S.hard_bytes = S.max_bytes + S.max_bytes / 2;
+    /* with every allocation counted (memlimit.c) the limit itself is the hard one; else the
+     * Lua heap may pass it by half before the hook sees the C heap */
+    S.hard_bytes = pc_mem_counting() ? S.max_bytes : S.max_bytes + S.max_bytes / 2;
+    pc_mem_set_limit(S.max_bytes, on_refused);
     S.safe = cfg->safe;
+    S.hardlinks = cfg->allow_hardlinks;
+    for (int i = 0; i < S.nallow; i++) free(S.allow[i]);   /* a server makes one state per render */
     S.nallow = 0;
     for (int i = 0; i < cfg->nallow && i < SANDBOX_MAX_ALLOW; i++) {
         char *r = realpath(cfg->allow[i], NULL);
@@ -108,14 +130,52 @@ int sandbox_check_config(const sandbox_config *cfg, char *err, size_t errlen) {
     return 1;
 }
 
-/* ---- time ----------------------------------------------------------------------------------- */
+/* "16.0 MB", "24 kB": a refused request's size, into buf. */
+static const char *shown_size(size_t n, char *buf, size_t len) {
+    if (n >= 1048576) snprintf(buf, len, "%.1f MB", n / 1048576.0);
+    else snprintf(buf, len, "%zu kB", (n + 1023) / 1024);
+    return buf;
+}
 
-static void limit_hook(lua_State *L, lua_Debug *ar);
+/* pointcalc's own Lua helpers ("[pointcalc/curves.lua]"): the user's line is further down */
+static int embedded(const lua_Debug *ar) { return !strncmp(ar->short_src, "[pointcalc/", 11); }
+
+/* The script's place now, "file:LINE" of the nearest Lua function, into buf ("" if none). */
+static void current_place(lua_State *L, char *buf, size_t len) {
+    lua_Debug ar;
+    buf[0] = 0;
+    for (int level = 0; lua_getstack(L, level, &ar); level++)
+        if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0) {
+            if (!buf[0] || !embedded(&ar)) snprintf(buf, len, "%s:%d", ar.short_src, ar.currentline);
+            if (!embedded(&ar)) return;
+        }
+}
+
+/* An allocation was refused for the limit (called inside the allocator: no allocation here).
+ * The first one of a run notes its size and the script's line; the hook then stops the script
+ * at its next instruction, whatever the native call that met the refusal made of it.  (Up to
+ * Lua 5.4.5 the call stack is consistent whenever Lua allocates; 5.4.6 moves it while it
+ * grows the stack, so the line is then left to the binding's own message.) */
+static void on_refused(size_t request) {
+    if (!S.running || !S.L) return;
+    if (!S.refused) {
+        S.refused = 1;
+        S.refused_size = request;
+#if LUA_VERSION_RELEASE_NUM <= 50405
+        current_place(S.L, S.refused_where, sizeof S.refused_where);
+#else
+        S.refused_where[0] = 0;
+#endif
+    }
+    lua_sethook(S.L, limit_hook_ptr, LUA_MASKCOUNT, 1);
+}
+
+/* ---- time ----------------------------------------------------------------------------------- */
 
 static int over_memory(void) {
     if (!S.max_bytes) return 0;
-    if (S.lua_bytes > S.max_bytes) return 1;
     S.c_bytes = c_heap();
+    if (S.lua_bytes > S.max_bytes) return 1;
     return S.c_bytes > S.max_bytes;
 }
 
@@ -133,7 +193,7 @@ static int over_time(void) {
  * instruction, so a script that catches the error with pcall cannot go on. */
 static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
     lua_sethook(L, limit_hook, LUA_MASKCOUNT, 1);
-    if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0) {
+    if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0 && !embedded(ar)) {
         lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
         return lua_error(L);
     }
@@ -141,19 +201,29 @@ static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
      * the nearest Lua function below it */
     lua_Debug up;
     for (int level = 1; lua_getstack(L, level, &up); level++) {
-        if (lua_getinfo(L, "Sl", &up) && up.currentline > 0) {
+        if (lua_getinfo(L, "Sl", &up) && up.currentline > 0 && !embedded(&up)) {
             lua_pushfstring(L, "%s:%d: %s", up.short_src, up.currentline, msg);
             return lua_error(L);
         }
+    }
+    if (ar && ar->currentline > 0) {   /* only pointcalc's own Lua code on the stack */
+        lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
+        return lua_error(L);
     }
     lua_pushstring(L, msg);
     return lua_error(L);
 }
 
 static void limit_hook(lua_State *L, lua_Debug *ar) {
-    char msg[96];
+    char msg[160];
     if (over_time()) {
         snprintf(msg, sizeof msg, "time limit of %g s exceeded", S.timeout);
+        raise_here(L, ar, msg);
+    }
+    if (S.refused) {
+        char size[32];
+        snprintf(msg, sizeof msg, "memory limit of %g MB exceeded (a request of %s was refused)",
+                 S.max_mb, shown_size(S.refused_size, size, sizeof size));
         raise_here(L, ar, msg);
     }
     if (over_memory()) {
@@ -162,6 +232,11 @@ static void limit_hook(lua_State *L, lua_Debug *ar) {
             snprintf(msg, sizeof msg, "memory limit of %g MB exceeded", S.max_mb);
             raise_here(L, ar, msg);
         }
+    }
+    /* near the limit, collect: the core's next big block should not be refused for garbage */
+    if (S.max_bytes && S.c_bytes > S.max_bytes / 4 * 3 && S.c_bytes > S.after_gc + S.max_bytes / 8) {
+        lua_gc(L, LUA_GCCOLLECT, 0);
+        S.after_gc = c_heap();
     }
     lua_sethook(L, limit_hook, LUA_MASKCOUNT, HOOK_COUNT);
 }
@@ -180,14 +255,23 @@ static void on_alarm(int sig) {
         return;
     }
     pc_write_file_abort();
-    static const char msg[] = "pointcalc: time limit exceeded in a native call; stopped\n";
-    (void)!write(STDERR_FILENO, msg, sizeof msg - 1);
-    _exit(1);
+    /* the script's line: the call stack is consistent while a native call runs (reading it
+     * here is a last resort, the process ends next) */
+    char where[LUA_IDSIZE + 24], msg[LUA_IDSIZE + 128];
+    if (S.L) current_place(S.L, where, sizeof where);
+    else where[0] = 0;
+    int n = snprintf(msg, sizeof msg, "%s%stime limit of %g s exceeded in a native call; stopped\n",
+                     where[0] ? where : "pointcalc", where[0] ? ": " : ": ", S.timeout);
+    if (n > 0) (void)!write(STDERR_FILENO, msg, (size_t)n < sizeof msg ? (size_t)n : sizeof msg - 1);
+    _exit(SANDBOX_EXIT_NATIVE_TIMEOUT);
 }
 
 void sandbox_start(lua_State *L) {
     S.refused = 0;
+    S.refused_where[0] = 0;
+    S.after_gc = 0;
     S.time_up = 0;
+    S.running = 1;
     if (!S.timeout && !S.max_bytes) return;
     if (S.timeout) {
         double end = now_seconds() + S.timeout;
@@ -215,20 +299,34 @@ void sandbox_stop(lua_State *L) {
         S.armed = 0;
     }
     S.time_up = 0;
+    S.running = 0;
     lua_sethook(L, NULL, 0, 0);
 }
 
 int sandbox_explain(lua_State *L, int status, const char *where) {
-    if (status == LUA_ERRMEM && S.refused) {
-        char msg[400];
-        snprintf(msg, sizeof msg, "%s%smemory limit of %g MB exceeded (an allocation was refused)",
-                 where ? where : "", where ? ": " : "", S.max_mb);
-        lua_pop(L, 1);
-        lua_pushstring(L, msg);
+    if (!S.refused || status == LUA_OK) return 0;
+    char msg[1200], size[32];
+    const char *old = lua_tostring(L, -1);
+    shown_size(S.refused_size, size, sizeof size);
+    if (status == LUA_ERRMEM || !old) {
+        /* Lua's own "not enough memory" has no place: the one noted at the refusal */
+        const char *at = S.refused_where[0] ? S.refused_where : where;
+        snprintf(msg, sizeof msg, "%s%smemory limit of %g MB exceeded (a request of %s was refused)",
+                 at ? at : "", at ? ": " : "", S.max_mb, size);
+    } else if (!strstr(old, "memory limit of")) {
+        /* a binding's "CALL: out of memory ..." at the script's line: say why, before the
+         * traceback */
+        int head = (int)strcspn(old, "\n");
+        snprintf(msg, sizeof msg, "%.*s (the memory limit of %g MB was reached: a request of %s "
+                 "was refused)%s", head, old, S.max_mb, size, old + head);
+    } else {
         S.refused = 0;
         return 1;
     }
-    return 0;
+    lua_pop(L, 1);
+    lua_pushstring(L, msg);
+    S.refused = 0;
+    return 1;
 }
 
 /* ---- file names --------------------------------------------------------------------------- */
@@ -283,19 +381,16 @@ static int under(const char *path, const char *dir) {
     return !strncmp(path, dir, n) && (path[n] == '/' || path[n] == 0);
 }
 
-/* Why path (len bytes) may not be used, into err ("" when it may). */
-static void path_problem(const char *path, size_t len, int write, char *err, size_t errlen) {
-    err[0] = 0;
-    if (strlen(path) != len) {
-        snprintf(err, errlen, "a name without NUL bytes");
-        return;
-    }
-    if (!S.safe) return;
-    char *real = resolve(path);
-    int ok = 0;
-    for (int i = 0; real && !ok && i < S.nallow; i++) ok = under(real, S.allow[i]);
-    free(real);
-    if (ok) return;
+int sandbox_hardlinks_allowed(void) { return S.hardlinks; }
+
+int sandbox_under_allowed(const char *real) {
+    for (int i = 0; i < S.nallow; i++)
+        if (under(real, S.allow[i])) return 1;
+    return 0;
+}
+
+/* "a file under an allowed folder (...)", into err */
+static void allowed_text(int write, char *err, size_t errlen) {
     if (S.nallow == 0) {
         snprintf(err, errlen, "a file under a folder given with --allow (in safe mode no folder "
                  "is %s without one)", write ? "written" : "read");
@@ -305,6 +400,29 @@ static void path_problem(const char *path, size_t len, int write, char *err, siz
     for (int i = 0; i < S.nallow && n < errlen; i++)
         n += (size_t)snprintf(err + n, errlen - n, "%s%s", i ? ", " : "", S.allow[i]);
     if (n < errlen) snprintf(err + n, errlen - n, ")");
+}
+
+/* Why path (len bytes) may not be used, into err ("" when it may). */
+static void path_problem(const char *path, size_t len, int write, char *err, size_t errlen) {
+    err[0] = 0;
+    if (strlen(path) != len) {
+        snprintf(err, errlen, "a name without NUL bytes");
+        return;
+    }
+    if (!S.safe) return;
+    char *real = resolve(path);
+    int ok = real && sandbox_under_allowed(real);
+    free(real);
+    if (!ok) allowed_text(write, err, errlen);
+}
+
+int sandbox_refuse_path(lua_State *L, const char *fname, int arg, int write, const char *why) {
+    char text[400];
+    if (!why) allowed_text(write, text, sizeof text);
+    size_t len;
+    const char *path = lua_tolstring(L, arg, &len);
+    return pcl_error(L, "%s: argument #%d (file name) must be %s, got %s", fname, arg,
+                     why ? why : text, shown_path(L, path ? path : "?", path ? len : 1));
 }
 
 int sandbox_path_ok(lua_State *L, int idx, int write, char *err, size_t errlen) {
@@ -331,6 +449,19 @@ void sandbox_check_path(lua_State *L, const char *fname, int arg, int write) {
 
 /* ---- the wrapped functions ------------------------------------------------------------------ */
 
+/* sandbox_check_path of argument arg as its string, leaving the argument as it is. */
+static void check_name_copy(lua_State *L, const char *fname, int arg, int write) {
+    size_t len;
+    lua_pushvalue(L, arg);
+    const char *path = lua_tolstring(L, -1, &len);
+    char why[400];
+    path_problem(path, len, write, why, sizeof why);
+    if (why[0])
+        pcl_error(L, "%s: argument #%d (file name) must be %s, got %s", fname, arg, why,
+                  shown_path(L, path, len));
+    lua_pop(L, 1);
+}
+
 /* A wrapper: check the file-name arguments named by the upvalues, then call the original
  * (upvalue 1) with all the arguments.  Upvalue 2: the function's name; 3: the index of the
  * name to check (0: none); 4: 1 for writing, 2 for "look at the mode argument" (io.open);
@@ -345,8 +476,12 @@ static int checked_call(lua_State *L) {
         const char *mode = luaL_optstring(L, 2, "r");
         write = strcmp(mode, "r") && strcmp(mode, "rb");
     }
-    if (arg && lua_type(L, arg) == LUA_TSTRING) sandbox_check_path(L, fname, arg, write);
-    if (arg2 && lua_type(L, arg2) == LUA_TSTRING) sandbox_check_path(L, fname, arg2, 1);
+    /* a number is a name too (Lua converts it): in safe mode checked as the string it becomes
+     * (the original still gets the number, and says what it says of one) */
+    if (arg && (lua_type(L, arg) == LUA_TSTRING || (S.safe && lua_type(L, arg) == LUA_TNUMBER)))
+        check_name_copy(L, fname, arg, write);
+    if (arg2 && (lua_type(L, arg2) == LUA_TSTRING || (S.safe && lua_type(L, arg2) == LUA_TNUMBER)))
+        check_name_copy(L, fname, arg2, 1);
     int n = lua_gettop(L);
     lua_pushvalue(L, lua_upvalueindex(1));
     lua_insert(L, 1);
@@ -431,21 +566,24 @@ int sandbox_apply(lua_State *L) {
     lua_getfield(L, g, "load");
     lua_pushcclosure(L, text_load, 1);
     lua_setfield(L, g, "load");
-    lua_pushcfunction(L, text_loadfile);
+    lua_pushcfunction(L, S.safe ? sandbox_safe_loadfile : text_loadfile);
     lua_setfield(L, g, "loadfile");
-    lua_pushcfunction(L, text_dofile);
+    lua_pushcfunction(L, S.safe ? sandbox_safe_dofile : text_dofile);
     lua_setfield(L, g, "dofile");
 
     lua_getglobal(L, "io");
     int io = lua_gettop(L);
-    wrap(L, io, "open", "io.open", 1, 2, 0);
-    wrap(L, io, "lines", "io.lines", 1, 0, 0);
-    wrap(L, io, "input", "io.input", 1, 0, 0);
-    wrap(L, io, "output", "io.output", 1, 1, 0);
     lua_getglobal(L, "os");
     int os = lua_gettop(L);
-    wrap(L, os, "remove", "os.remove", 1, 1, 0);
-    wrap(L, os, "rename", "os.rename", 1, 1, 2);
+    if (S.safe) sandbox_safe_files(L, io, os);   /* checked and opened without a race */
+    else {
+        wrap(L, io, "open", "io.open", 1, 2, 0);
+        wrap(L, io, "lines", "io.lines", 1, 0, 0);
+        wrap(L, io, "input", "io.input", 1, 0, 0);
+        wrap(L, io, "output", "io.output", 1, 1, 0);
+        wrap(L, os, "remove", "os.remove", 1, 1, 0);
+        wrap(L, os, "rename", "os.rename", 1, 1, 2);
+    }
     wrap(L, g, "save", "save", 1, 1, 0);
     lua_getglobal(L, "pointcalc");
     if (lua_istable(L, -1)) wrap(L, -1, "save", "save", 1, 1, 0);
@@ -458,9 +596,11 @@ int sandbox_apply(lua_State *L) {
         refuse(L, os, "tmpname", "os.tmpname");
         refuse(L, os, "setlocale", "os.setlocale");
         refuse(L, io, "popen", "io.popen");
+        refuse(L, io, "tmpfile", "io.tmpfile");   /* unnamed files: disk without a folder */
         lua_getglobal(L, "package");
         int pkg = lua_gettop(L);
         refuse(L, pkg, "loadlib", "package.loadlib");
+        refuse(L, pkg, "searchpath", "package.searchpath");   /* it tells what exists */
         lua_pushliteral(L, "");
         lua_setfield(L, pkg, "path");
         lua_pushliteral(L, "");

@@ -97,6 +97,7 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->view = (pc_rect){0, 0, width - 1, height - 1};
     c->view_screen = 0;
     c->nops = c->nspans = c->ndots = c->nclips = c->npts = c->ntext = 0;
+    c->ntstyles = 0;
     pc_lpx_clear(c);
     c->dot_budget = (size_t)width * (size_t)height > 65536 ? (size_t)width * (size_t)height : 65536;
     c->dirty = 0;
@@ -127,6 +128,7 @@ void pc_canvas_free(pc_canvas *c) {
     if (!c) return;
     free(c->pixels);
     free(c->ops);
+    free(c->tstyles);
     free(c->spans);
     free(c->dots);
     free(c->clips);
@@ -457,7 +459,9 @@ int pc_rgb_parse(const char *s, size_t len, pc_rgb *out) {
 /* ---- pens --------------------------------------------------------------------------------- */
 
 static int same_pen(const pc_stroke *a, const pc_stroke *b) {
-    if (a->width != b->width || a->ndash != b->ndash || a->style != b->style) return 0;
+    if (a->width != b->width || a->ndash != b->ndash || a->style != b->style ||
+        a->print_width != b->print_width || a->print_dash != b->print_dash)
+        return 0;
     for (int i = 0; i < a->ndash; i++)
         if (a->dash[i] != b->dash[i]) return 0;
     return 1;
@@ -496,6 +500,29 @@ int pc_pen(pc_canvas *c, double width, const double *dash, int ndash) {
 }
 
 void pc_pen_reset(pc_canvas *c) { c->pen = 0; }
+
+int pc_pen_physical(pc_canvas *c, double width_pt, const double *dash_pt, int ndash) {
+    if (!(width_pt >= 0.1 && width_pt <= 100))
+        return pc_fail(c, "pen: width must be 0.1..100 pt (0.035..35 mm), got %g pt", width_pt);
+    if (ndash < 0 || ndash > PC_PEN_MAXDASH || ndash % 2)
+        return pc_fail(c, "pen: a dash pattern has an even number of lengths, at most %d, got %d",
+                       PC_PEN_MAXDASH, ndash);
+    /* the VGA look at 96 px to the inch: 0.75 pt a pixel */
+    double px = round(width_pt / 0.75);
+    pc_stroke p = {.width = px < 1 ? 1 : px, .ndash = ndash, .print_width = width_pt,
+                   .print_dash = ndash > 0};
+    for (int i = 0; i < ndash; i++) {
+        if (!(dash_pt[i] > 0 && dash_pt[i] <= 1e4))
+            return pc_fail(c, "pen: dash length %d must be a positive length, got %g pt", i + 1,
+                           dash_pt[i]);
+        p.dash[i] = dash_pt[i] / 0.75;   /* the VGA look's pixels; print.c uses pt */
+        p.period += p.dash[i];
+    }
+    int k = pc_pen_index(c, &p);
+    if (k < 0) return PC_ENOMEM;
+    c->pen = k;
+    return PC_OK;
+}
 
 /* ---- the canvas seen from a host ------------------------------------------------------------ */
 

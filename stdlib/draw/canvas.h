@@ -70,7 +70,23 @@ typedef struct {
     double dash[PC_PEN_MAXDASH];  /* on, off, on, off, ... in pixels along the stroke */
     double period;                /* sum of dash[] */
     unsigned style;               /* QBasic LINE style (16 bits, bit 15 first); 0: none */
+    double print_width;           /* the print look: width in pt (a physical pen, print.h);
+                                     0: width times the default print pen's */
+    int print_dash;               /* 1: dash[] is in pt (a physical pen) */
 } pc_stroke;
+
+/* The style of one label in the print look (print.h): font family ("" for the figure's), size
+ * in pt (0 for the figure's), halo (-1 for the default: on). */
+typedef struct { char font[64]; double size; int halo; } pc_textstyle;
+
+/* The print look's figure (print.h): on when a script or the command line asked for it. */
+typedef struct {
+    int on;
+    double width, height;   /* pt; 0: from the canvas (96 px to the inch) or the aspect */
+    double dpi;             /* raster outputs; 0: 96 */
+    double size;            /* label size in pt; 0: 10 */
+    char font[64];          /* "": serif */
+} pc_figure;
 
 /* A drawing operation in screen coordinates (fractional, before rounding).  The header is
  * packed into 8 bytes, as before pens and true colours: scripts record millions of ops.  Its
@@ -150,6 +166,11 @@ typedef struct pc_canvas {
     /* pens: pens[0] is the default (width 1, solid); `pen` is the one in force */
     pc_stroke *pens; size_t npens, cappens;
     int pen;
+
+    /* the print look: label styles (a TEXT op's pen indexes them; 0: the default) and the
+     * figure's settings, which SCREEN keeps */
+    pc_textstyle *tstyles; size_t ntstyles, captstyles;
+    pc_figure figure;
 
     int dirty;              /* something drawn since the last save */
     uint64_t version;       /* bumped by every change of the picture (drawing, CLS, PALETTE,
@@ -246,6 +267,9 @@ int pc_fill_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs,
  * > 0; 0 for solid) measured along the stroke from its start.  SCREEN restores the default. */
 int pc_pen(pc_canvas *c, double width, const double *dash, int ndash);
 void pc_pen_reset(pc_canvas *c);
+/* A physical pen for the print look: width in pt (0.1..100), dash on/off lengths in pt.  The
+ * VGA look draws it at 96 px to the inch (at least 1 pixel wide). */
+int pc_pen_physical(pc_canvas *c, double width_pt, const double *dash_pt, int ndash);
 
 /* Text in the built-in VGA font (8x16 cells, see font.h), transparent background.  The cell
  * box (8*scale per character by 16*scale) goes on the `anchor` side of the point (x, y), `gap`
@@ -256,6 +280,10 @@ void pc_pen_reset(pc_canvas *c);
  * replacement glyph; invalid UTF-8 is an error. */
 int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, double gap,
             int scale, int color);
+/* The print-look style of the last TEXT op (font "" or NULL: the figure's; size 0: the
+ * figure's; halo -1: default).  PC_EARG when the last op is not text or a value is out of
+ * range. */
+int pc_text_style(pc_canvas *c, const char *font, double size_pt, int halo);
 /* The size in pixels of the cell box of utf8 at scale; PC_EARG for invalid UTF-8 or scale. */
 int pc_text_size(const char *utf8, int scale, int *w, int *h);
 

@@ -4,6 +4,8 @@
 
 #include <stdarg.h>
 #include "canvas.h"
+#include "font.h"
+#include "math_label.h"
 
 int pc_fail_code(pc_canvas *c, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -75,5 +77,10 @@ long pc_px(double v);
  * it is inside.  Used by the rasteriser and the SVG writer. */
 int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin, double ymin,
                     double xmax, double ymax);
+
+/* Math labels in the VGA look (text.c): the layout over 8-pixel cells (the raster and the
+ * SVG writer share it), and the VGA character nearest to one the font lacks. */
+int pc_text_vga_layout(const char *utf8, int scale, pc_mlayout *L, char *err, size_t errlen);
+uint32_t pc_vga_fallback(const pc_font *f, uint32_t cp);
 
 #endif

@@ -653,6 +653,7 @@ int pc_cls(pc_canvas *c) {
     const pc_rect *v = &c->view;
     if (v->x0 == 0 && v->y0 == 0 && v->x1 == c->width - 1 && v->y1 == c->height - 1) {
         c->nops = c->nspans = c->ndots = c->npts = c->ntext = 0;
+        c->ntstyles = 0;
         c->nclips = 0;
         pc_lpx_clear(c);
         pc_push_clip(c);

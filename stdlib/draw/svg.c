@@ -1075,6 +1075,48 @@ static void put_xml_char(FILE *out, uint32_t cp) {
     fwrite(b, 1, (size_t)n, out);
 }
 
+/* A math label (text.c lays it out over VGA cells): one <tspan> a run, each run's cells where
+ * the raster has them (scripts in the 8x8 cells), bars and arrows as lines. */
+static void emit_math_text(svgw *w, const pc_op *op, const char *s, size_t n) {
+    char *z = malloc(n + 1);
+    if (!z) { w->nomem = 1; return; }
+    memcpy(z, s, n);
+    z[n] = 0;
+    pc_mlayout L;
+    long scale = lrint(op->rx);
+    int st = pc_text_vga_layout(z, (int)scale, &L, NULL, 0);
+    free(z);
+    if (st != PC_OK) { w->nomem = st == PC_ENOMEM; return; }
+    long left = lrint(op->x1), base = lrint(op->y1) + PC_FONT_BASELINE * scale;
+    open_el(w, "text");
+    fprintf(w->out, " font-family=\"monospace\" xml:space=\"preserve\"");
+    color_attr(w, "fill", op->color);
+    fputs(" stroke=\"none\">", w->out);
+    for (size_t i = 0; i < L.nruns; i++) {
+        const pc_mrun *r = &L.runs[i];
+        const pc_font *f = r->size >= PC_FONT_H * scale ? &pc_font_desc : &pc_font8_desc;
+        long nch = pc_utf8_count(L.text + r->first, r->len, NULL);
+        long y = base - lrint(r->rise), top = y - f->baseline * scale;
+        fprintf(w->out, "<tspan x=\"%ld\" y=\"%ld\" font-size=\"%ld\" textLength=\"%ld\" "
+                "lengthAdjust=\"spacingAndGlyphs\">", left + lrint(r->x), top + f->baseline * scale,
+                (long)f->h * scale, nch * PC_FONT_W * scale);
+        size_t k = 0;
+        uint32_t cp;
+        while (pc_utf8_next(L.text + r->first, r->len, &k, &cp)) put_xml_char(w->out, cp);
+        fputs("</tspan>", w->out);
+    }
+    fputs("</text>\n", w->out);
+    for (size_t i = 0; i < L.ndecos; i++) {
+        const pc_mdeco *d = &L.decos[i];
+        long y = base - lrint(d->rise);
+        open_el(w, "path");
+        fprintf(w->out, " d=\"M%ld %ld.5H%ld\"", left + lrint(d->x0), y, left + lrint(d->x1));
+        color_attr(w, "stroke", op->color);
+        fputs("/>\n", w->out);
+    }
+    pc_mlayout_free(&L);
+}
+
 /* TEXT: a <text> whose cell box is the raster's: x at the box's left edge, y on the font's
  * baseline, and textLength stretching the glyphs to exactly 8*scale px per character. */
 static void emit_text(svgw *w, const pc_op *op) {
@@ -1091,6 +1133,10 @@ static void emit_text(svgw *w, const pc_op *op) {
     long wd = nchars * PC_FONT_W * scale, ht = f->h * scale;
     pc_rect clip = clip_of(w, op);
     if (x > clip.x1 || y > clip.y1 || x + wd <= clip.x0 || y + ht <= clip.y0) return;
+    if (op->a0 == 1) {
+        emit_math_text(w, op, s, n);
+        return;
+    }
     open_el(w, "text");
     fprintf(w->out, " x=\"%ld\" y=\"%ld\" font-family=\"monospace\" font-size=\"%ld\" "
                     "textLength=\"%ld\" lengthAdjust=\"spacingAndGlyphs\" xml:space=\"preserve\"",

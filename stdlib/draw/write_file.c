@@ -10,19 +10,24 @@
  *   did not name;
  * - respecting permissions: a read-only file stays as it is, even for root; a replaced file
  *   keeps its mode (and its owner, when we may set it);
+ * - leaving nothing behind: the temporary file is created unnamed (O_TMPFILE) where the file
+ *   system allows it and given a name only to be renamed into place, so even SIGKILL leaves
+ *   no half-written file; elsewhere a named one (mkstemp) is used;
  * - cleaning up on signals: SIGINT, SIGTERM, SIGHUP and SIGQUIT that would end the process
  *   remove the temporary file first; SIGXFSZ (a file-size limit) is ignored while writing, so
  *   the write fails with "File too large" and is cleaned up like any other failure. */
-#define _XOPEN_SOURCE 700   /* realpath, mkstemp, fchmod, sigaction */
+#define _GNU_SOURCE   /* O_TMPFILE, linkat; realpath, mkstemp, fchmod, sigaction */
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "print.h"
 #include "writers.h"
 
 static const char *basename_of(const char *path) {
@@ -36,6 +41,9 @@ pc_format pc_format_from_path(const char *path) {
     if (strcasecmp(dot, ".png") == 0) return PC_FMT_PNG;
     if (strcasecmp(dot, ".svg") == 0) return PC_FMT_SVG;
     if (strcasecmp(dot, ".ppm") == 0) return PC_FMT_PPM;
+    if (strcasecmp(dot, ".pdf") == 0) return PC_FMT_PDF;
+    if (strcasecmp(dot, ".eps") == 0) return PC_FMT_EPS;
+    if (strcasecmp(dot, ".ps") == 0) return PC_FMT_PS;
     return PC_FMT_UNKNOWN;
 }
 
@@ -151,19 +159,65 @@ static mode_t new_file_mode(void) {
     return 0666 & ~mask;
 }
 
-static int encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f) {
-    switch (fmt) {
-    case PC_FMT_PNG: return pc_encode_png(c, theme, f);
-    case PC_FMT_SVG: return pc_encode_svg(c, theme, f);
-    default: return pc_encode_ppm(c, theme, f);
+typedef struct { const pc_canvas *c; pc_format fmt; pc_theme theme; } picture;
+
+/* PDF, EPS and PS are always the print look; PNG and SVG when the script asked for a figure. */
+static int encode(void *ud, FILE *f, char *why, size_t whylen) {
+    const picture *p = ud;
+    if (p->fmt == PC_FMT_PDF || p->fmt == PC_FMT_EPS || p->fmt == PC_FMT_PS ||
+        (p->c->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG)))
+        return pc_encode_print(p->c, p->fmt, f, why, whylen);
+    switch (p->fmt) {
+    case PC_FMT_PNG: return pc_encode_png(p->c, p->theme, f);
+    case PC_FMT_SVG: return pc_encode_svg(p->c, p->theme, f);
+    default: return pc_encode_ppm(p->c, p->theme, f);
     }
 }
 
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {
     pc_format fmt = pc_format_from_path(path);
     if (fmt == PC_FMT_UNKNOWN)
-        return fail(err, errlen, path, "the extension must be .png, .svg or .ppm", PC_EARG);
+        return fail(err, errlen, path, "the extension must be .png, .svg, .ppm, .pdf, .eps or .ps",
+                    PC_EARG);
+    picture p = {c, fmt, theme};
+    return pc_write_file_emit(path, encode, &p, err, errlen);
+}
 
+/* An unnamed file in the folder of tmp (a path ending in ".NAME.XXXXXX"), or -1 where the
+ * file system cannot make one. */
+static int open_unnamed(const char *tmp) {
+#ifdef O_TMPFILE
+    const char *slash = strrchr(tmp, '/');
+    char dir[sizeof active_tmp];
+    if (!slash) snprintf(dir, sizeof dir, ".");
+    else if (slash == tmp) snprintf(dir, sizeof dir, "/");
+    else snprintf(dir, sizeof dir, "%.*s", (int)(slash - tmp), tmp);
+    return open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+#else
+    (void)tmp;
+    return -1;
+#endif
+}
+
+/* Give the unnamed file fd a name from the template tmp (its XXXXXX filled in place). */
+static int name_unnamed(int fd, char *tmp) {
+    char self[64];
+    snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+    size_t n = strlen(tmp);
+    static const char digits[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+    unsigned long seed = (unsigned long)getpid() * 2654435761u ^ (unsigned long)(size_t)tmp;
+    for (int attempt = 0; attempt < 100; attempt++) {
+        for (size_t i = n - 6; i < n; i++) {
+            seed = seed * 6364136223846793005u + 1442695040888963407u;
+            tmp[i] = digits[(seed >> 33) % 36];
+        }
+        if (linkat(AT_FDCWD, self, AT_FDCWD, tmp, AT_SYMLINK_FOLLOW) == 0) return 0;
+        if (errno != EEXIST) return -1;
+    }
+    return -1;
+}
+
+int pc_write_file_emit(const char *path, pc_emit_fn emit, void *ud, char *err, size_t errlen) {
     char *resolved = NULL;
     const char *target;
     int existing;
@@ -186,13 +240,15 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     memcpy(tmp, target, dirlen);
     snprintf(tmp + dirlen, baselen + 16, ".%.*s.XXXXXX", (int)baselen, base);
 
-    /* mkstemp fills in the name the handlers read, with the handlers already in place: there
-     * is no moment when the file exists and a signal would miss it */
+    /* an unnamed file when possible; else mkstemp fills in the name the handlers read, with
+     * the handlers already in place: there is no moment when the file exists and a signal
+     * would miss it */
     signal_guard guard;
     memcpy(active_tmp, tmp, strlen(tmp) + 1);
     guard_signals(&guard);
-    tmp_active = 1;
-    int fd = mkstemp(active_tmp);
+    int fd = open_unnamed(tmp), unnamed = fd >= 0;
+    tmp_active = !unnamed;
+    if (!unnamed) fd = mkstemp(active_tmp);
     if (fd < 0) {
         int e = errno;
         tmp_active = 0;
@@ -203,6 +259,7 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
     memcpy(tmp, active_tmp, strlen(active_tmp) + 1);
 
     int e = 0;
+    char why[200] = "";   /* a print-look message (a font, a label's math) */
     code = PC_OK;
     FILE *f = fdopen(fd, "wb");
     if (!f) {
@@ -210,22 +267,36 @@ int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *er
         close(fd);
     } else {
         errno = 0;
-        code = encode(c, fmt, theme, f);
+        code = emit(ud, f, why, sizeof why);
         if (code != PC_OK) e = errno ? errno : (code == PC_ENOMEM ? ENOMEM : EIO);
+        if (code == PC_EARG || (code == PC_ENOMEM && why[0])) e = EINVAL;   /* why says it */
         if (!e && fflush(f) != 0) e = errno;
         if (!e && existing && geteuid() == 0)   /* root replacing a user's file: keep its owner */
             (void)!fchown(fileno(f), st.st_uid, st.st_gid);
         if (!e && fchmod(fileno(f), existing ? st.st_mode & 0777 : new_file_mode()) != 0)
             e = errno;
-        if (fclose(f) != 0 && !e) e = errno;
+        if (!unnamed) {
+            if (fclose(f) != 0 && !e) e = errno;
+        } else if (fflush(f) != 0 && !e) e = errno;
     }
+    if (unnamed && !e) {
+        /* named only now, for the rename: the handlers remove it if a signal comes between */
+        sigset_t all, old;
+        sigfillset(&all);
+        sigprocmask(SIG_BLOCK, &all, &old);
+        if (name_unnamed(fileno(f), active_tmp) != 0) e = errno ? errno : EIO;
+        else tmp_active = 1;
+        sigprocmask(SIG_SETMASK, &old, NULL);
+        memcpy(tmp, active_tmp, strlen(active_tmp) + 1);
+    }
+    if (unnamed && f && fclose(f) != 0 && !e) e = errno;
     if (!e && rename(tmp, target) != 0) e = errno;
-    if (e) unlink(tmp);
+    if (e && tmp_active) unlink(tmp);
     tmp_active = 0;
     release_signals(&guard);
     if (e) {
-        code = code == PC_ENOMEM ? code : PC_EIO;
-        fail(err, errlen, path, strerror(e), code);
+        code = code == PC_ENOMEM || code == PC_EARG ? code : PC_EIO;
+        fail(err, errlen, path, why[0] ? why : strerror(e), code);
     } else {
         code = PC_OK;
         if (err && errlen) err[0] = 0;

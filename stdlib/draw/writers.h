@@ -8,7 +8,8 @@
 #include "canvas.h"
 
 typedef enum { PC_THEME_SCREEN = 0, PC_THEME_PAPER = 1 } pc_theme;
-typedef enum { PC_FMT_UNKNOWN = -1, PC_FMT_PNG, PC_FMT_SVG, PC_FMT_PPM } pc_format;
+typedef enum { PC_FMT_UNKNOWN = -1, PC_FMT_PNG, PC_FMT_SVG, PC_FMT_PPM,
+               PC_FMT_PDF, PC_FMT_EPS, PC_FMT_PS } pc_format;   /* the last three: print.h */
 
 /* The colours a writer uses: the canvas palette, or its print version (white paper, dark ink). */
 void pc_theme_palette(const pc_canvas *c, pc_theme theme, pc_rgb out[256]);
@@ -27,11 +28,18 @@ int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
 
-/* Write to `path` in the format its extension names, atomically.  On failure returns
+/* Write to `path` in the format its extension names, atomically.  PDF, EPS and PS are the
+ * print look (print.h); PNG and SVG are the print look when the canvas's figure is on (a
+ * script's figure{}, the command line's --print, --dpi or --size), the VGA look otherwise.  On failure returns
  * PC_EIO (or PC_EARG for an unknown extension) and puts
  * "cannot write 'PATH': REASON" into err.  The rules (links, non-regular files, read-only
  * files, signals) are in write_file.c and docs/safety.md. */
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen);
+
+/* The same rules for any content: emit(ud, f, why, whylen) writes the file's bytes to f and
+ * returns PC_OK or an error code (PC_ENOMEM, PC_EIO; with a reason in why for PC_EARG).  For writers of their own (animation frames). */
+typedef int (*pc_emit_fn)(void *ud, FILE *f, char *why, size_t whylen);
+int pc_write_file_emit(const char *path, pc_emit_fn emit, void *ud, char *err, size_t errlen);
 
 /* Remove the temporary file of a write in progress, if any.  Async-signal-safe: for a
  * program's own fatal-signal or time-limit handler. */

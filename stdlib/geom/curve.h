@@ -164,11 +164,17 @@ pc_curve *pc_curve_map(const pc_curve *c, const pc_map *f, int *status);
 
 /* --- flattening ---------------------------------------------------------------------------- */
 /* A polyline in the plane, possibly broken into pieces: vertex i is (xy[2i], xy[2i+1]) and
- * starts a new piece when move[i] is 1. */
+ * starts a new piece when move[i] is 1.  clip, when set, is the part of the plane that will be
+ * seen (xmin, ymin, xmax, ymax, with a margin): flattening does not subdivide a piece whose
+ * control polygon lies outside it (the polyline just moves past it), so the cost of a drawing
+ * follows what is visible.  No polyline has more than PC_POLYLINE_MAX vertices (pushing more
+ * is PC_ENOMEM). */
+#define PC_POLYLINE_MAX ((size_t)1 << 22)
 typedef struct {
     double *xy;
     uint8_t *move;
     size_t n, cap;
+    const double *clip;
 } pc_polyline;
 void pc_polyline_free(pc_polyline *pl);     /* frees the arrays, leaves an empty polyline */
 int pc_polyline_push(pc_polyline *pl, double x, double y, int move);

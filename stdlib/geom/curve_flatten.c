@@ -11,7 +11,12 @@
  * BADDEPTH halvings and the polyline is broken there (an interval with no image at any of
  * the five points is skipped whole).  At MAXDEPTH an interval still too far
  * from its chord is accepted unless its chord is longer than JUMP tol: then the curve jumps
- * (a pole of the projection, a discontinuous callback) and the polyline is broken instead. */
+ * (a pole of the projection, a discontinuous callback) and the polyline is broken instead.
+ *
+ * With a clip box (pc_polyline.clip), a Bezier piece whose control polygon lies outside the
+ * box is not subdivided: the polyline moves to its end (the piece lies in the polygon's hull,
+ * so nothing of it is visible), and the cost follows the visible part of the curve.  Every
+ * polyline is capped at PC_POLYLINE_MAX vertices. */
 #include "curve_impl.h"
 #include <math.h>
 #include <stdlib.h>
@@ -30,6 +35,7 @@ void pc_polyline_free(pc_polyline *pl) {
 
 int pc_polyline_push(pc_polyline *pl, double x, double y, int move) {
     if (!pl) return PC_EARG;
+    if (pl->n >= PC_POLYLINE_MAX) return PC_ENOMEM;
     if (pl->n == pl->cap) {
         size_t cap = pl->cap ? 2 * pl->cap : 64;
         if (cap > ((size_t)-1) / (2 * sizeof(double))) return PC_ENOMEM;
@@ -267,6 +273,18 @@ static int push_xy(flat *f, double x, double y) {
     return pc_polyline_push(f->out, x, y, 0);
 }
 
+/* Whether the control polygon n (q+1 rows of 3, weights of one sign) lies outside the box. */
+static int outside_clip(const double *box, int q, const double *n) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int j = 0; j <= q; j++)
+        for (int k = 0; k < 2; k++) {
+            double v = n[3 * j + k] / n[3 * j + 2];
+            lo[k] = fmin(lo[k], v);
+            hi[k] = fmax(hi[k], v);
+        }
+    return hi[0] < box[0] || lo[0] > box[2] || hi[1] < box[1] || lo[1] > box[3];
+}
+
 /* the planar piece b (q+1 rows of 3, weights of one sign) flattened from its start */
 static int hull_flatten(flat *f, int q, const double *b) {
     size_t rows = (size_t)(q + 1) * 3;
@@ -287,6 +305,12 @@ static int hull_flatten(flat *f, int q, const double *b) {
             flat_enough = seg_dist2(a, e, p) <= tol2;
         }
         int d = depth[top - 1];
+        if (!flat_enough && f->out->clip && outside_clip(f->out->clip, q, n)) {
+            top--;   /* invisible: move past it */
+            f->pen_up = 1;
+            if ((st = push_xy(f, e[0], e[1]))) goto done;
+            continue;
+        }
         if (flat_enough || d >= HULLDEPTH || !isfinite(a[0] + a[1] + e[0] + e[1])) {
             top--;
             if ((st = push_xy(f, e[0], e[1]))) goto done;

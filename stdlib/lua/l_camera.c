@@ -133,17 +133,27 @@ int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed
  * unbroken).  pieces: equal parts to begin the flattening with.  Errors name fname. */
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname) {
+    pc_canvas *cv = pcl_canvas(L);
     pc_polyline pl = {0};
+    /* what can be seen: the canvas and a margin as wide as it (a wide pen, a dash pattern
+     * leaving and coming back keep their look) */
+    double m = cv->width > cv->height ? cv->width : cv->height;
+    double clip[4] = {-m, -m, cv->width + m, cv->height + m};
+    pl.clip = clip;
     int st = pcl_flatten(L, c, c->t0, c->t1, pieces, f, 1, tol, &pl);
     if (st != PC_OK) {
+        int capped = st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX;
         pc_polyline_free(&pl);
+        if (capped)
+            pcl_error(L, "%s: the curve needs more than %d vertices at tol = %s px; draw it with a "
+                         "larger tol", fname, (int)PC_POLYLINE_MAX, pcl_pushnum(L, tol));
         pcl_raise_status(L, fname, st);
     }
     int unbroken = 1;
     for (size_t i = 1; i < pl.n; i++) unbroken &= !pl.move[i];
     st = pcl_draw_polyline(L, &pl, color, (c->closed || closed) && unbroken);
     pc_polyline_free(&pl);
-    if (st != PC_OK) pcl_error(L, "%s: %s", fname, pcl_canvas(L)->error);
+    if (st != PC_OK) pcl_error(L, "%s: %s", fname, cv->error);
 }
 
 /* A colour: an attribute of the screen or "#rrggbb" (a true colour, allocated on first use). */

@@ -360,7 +360,10 @@ static int l_pen(lua_State *L) {
         pc_pen_reset(c);
         return 0;
     }
-    if (!lua_istable(L, 1)) return pcl_argerror(L, 1, "pen", "a table {width =, dash =}");
+    if (pcl_pen_print(L, c)) return 0;   /* a named pen, or lengths with units */
+    if (!lua_istable(L, 1))
+        return pcl_argerror(L, 1, "pen", "a table {width =, dash =} or a pen's name (\"main\", "
+                                         "\"thin\", \"hidden\", \"centre\")");
     double width = 1, dash[PC_PEN_MAXDASH];
     int ndash = 0;
     if (lua_getfield(L, 1, "width") != LUA_TNIL)
@@ -528,7 +531,11 @@ static const char *const directions[] = {"c", "n", "ne", "e", "se", "s", "sw", "
 static const char *check_text(lua_State *L, int arg) {
     int t = lua_type(L, arg);
     if (t != LUA_TSTRING && t != LUA_TNUMBER) pcl_argerror(L, arg, "text", "a string");
-    return lua_tostring(L, arg);
+    size_t len;
+    const char *s = lua_tolstring(L, arg, &len);
+    /* the writers take C strings: a NUL would cut the label short in every one of them */
+    if (strlen(s) != len) pcl_argerror(L, arg, "text", "a string without NUL bytes");
+    return s;
 }
 
 static int opt_scale(lua_State *L, int arg) {
@@ -542,6 +549,13 @@ static int opt_scale(lua_State *L, int arg) {
 /* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it. */
 static int l_label(lua_State *L) {
     pc_canvas *c = canvas(L);
+    /* a trailing options table {font =, size =, halo =}, read first and then dropped */
+    int opts = lua_gettop(L) > 2 && lua_type(L, lua_gettop(L)) == LUA_TTABLE ? lua_gettop(L) : 0;
+    pcl_label_opts o;
+    if (opts) {
+        pcl_label_options(L, opts, &o);
+        lua_settop(L, opts - 1);
+    }
     const char *str = check_text(L, 1);
     int arg = 2;
     double x, y;
@@ -558,7 +572,9 @@ static int l_label(lua_State *L) {
     }
     int color = opt_color(L, arg + 1, c);
     int scale = opt_scale(L, arg + 2);
-    return check(L, c, pc_text(c, x, y, str, anchor, 3, scale, color));
+    check(L, c, pc_text(c, x, y, str, anchor, 3, scale, color));
+    if (opts) pcl_label_style(L, c, &o);
+    return 0;
 }
 
 /* text(x, y, string [, colour [, scale]]): the text cell's top-left corner at the point. */
@@ -696,7 +712,7 @@ static int l_save(lua_State *L) {
         else return pcl_argerror(L, 2, "theme", "\"paper\" or \"screen\"");
     }
     if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
-        return pcl_argerror(L, 1, "path", "a file name ending in .png, .svg or .ppm");
+        return pcl_argerror(L, 1, "path", "a file name ending in .png, .svg, .ppm, .pdf, .eps or .ps");
     char err[512];
     if (pc_write_file(c, path, theme, err, sizeof err) != PC_OK)
         return pcl_error(L, "save: %s", err);

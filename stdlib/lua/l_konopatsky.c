@@ -832,6 +832,10 @@ static int i_weights(lua_State *L) {
     int st = pc_lagrange_weights(n, u, t, w);
     if (st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #1 (params) must be distinct", fn);
     statuscheck(L, fn, st);
+    for (int i = 0; i < n; i++)   /* a t far outside the nodes overflows the products */
+        if (!isfinite(w[i]))
+            pcl_error(L, "%s: the weights are out of range (not finite) for t = %s", fn,
+                      pcl_pushnum(L, t));
     pushnums(L, n, w);
     return 1;
 }

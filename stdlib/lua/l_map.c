@@ -177,6 +177,9 @@ static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
 static int l_translate(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
+    for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
+        if (!isfinite(a[0].v[i]))
+            return pcl_argerror_full(L, "map.translate", 1, 1, "V", "a finite vector");
     pc_map_translate(newmap(L), a[0].n, a[0].v);
     return 1;
 }

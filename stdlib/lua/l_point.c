@@ -307,6 +307,16 @@ static const char *opnd_name(lua_State *L, int idx) {
     return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
 }
 
+/* A result that overflowed (1e308 + 1e308) or became NaN is an error, never a point drawn at
+ * infinity: 1 when r is finite. */
+static int finite_or_error(lua_State *L, const pcl_value *r, const char *what) {
+    for (int i = 0; i <= r->n; i++)
+        if (!isfinite(r->h[i]))
+            return pcl_error(L, "%s: the result is out of range (not finite: a coordinate "
+                             "overflowed)", what);
+    return 1;
+}
+
 static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const pcl_value *b) {
     return pcl_error(L, "cannot %s a %d-D value and a %d-D value: dimensions cannot be mixed",
                       op, a->n, b->n);
@@ -323,7 +333,7 @@ static int l_add(lua_State *L) {
     if (b->n != n) return mixed_error(L, "add", a, b);
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + b->h[i];
-    return 1;
+    return finite_or_error(L, r, "A + B");
 }
 
 static int l_sub(lua_State *L) {
@@ -337,7 +347,7 @@ static int l_sub(lua_State *L) {
     if (b->n != n) return mixed_error(L, "subtract", a, b);
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = a->h[i] - b->h[i];
-    return 1;
+    return finite_or_error(L, r, "A - B");
 }
 
 static int l_mul(lua_State *L) {
@@ -359,7 +369,7 @@ static int l_mul(lua_State *L) {
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = p->h[i] * k;
-    return 1;
+    return finite_or_error(L, r, "k * A");
 }
 
 static int l_div(lua_State *L) {
@@ -374,7 +384,7 @@ static int l_div(lua_State *L) {
     int n = p->n;
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) r->h[i] = p->h[i] / k;   /* the weight is divided too */
-    return 1;
+    return finite_or_error(L, r, "A / k");
 }
 
 static int l_unm(lua_State *L) {
@@ -539,10 +549,10 @@ static int l_mid(lua_State *L) {
     pcl_value *r = newpt(L, n);
     for (int i = 0; i <= n; i++) {
         double s = 0;
-        for (int j = 1; j <= m; j++) s += ((pcl_value *)lua_touserdata(L, j))->h[i];
-        r->h[i] = s / m;
+        for (int j = 1; j <= m; j++) s += ((pcl_value *)lua_touserdata(L, j))->h[i] / m;
+        r->h[i] = s;   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
     }
-    return 1;
+    return finite_or_error(L, r, pcl_fname(L));
 }
 
 /* dist(A, B) between points, or dist(v), the length of a vector.  The form follows the

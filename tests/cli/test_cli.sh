@@ -6,7 +6,7 @@ run "$POINTCALC" -v;              expect_rc 0 "-v"; expect_in out.txt "pointcalc
 run "$POINTCALC" -h;              expect_rc 0 "-h"; expect_in out.txt "usage: pointcalc" "-h"
 run "$POINTCALC" --frobnicate;    expect_rc 2 "unknown option"; expect_in err.txt "unknown option '--frobnicate'" "unknown option"
 run "$POINTCALC" -e 'x=1' -o pic.gif; expect_rc 2 "unknown extension"
-expect_in err.txt "cannot write 'pic.gif': the extension must be .png, .svg or .ppm" "unknown extension"
+expect_in err.txt "cannot write 'pic.gif': the extension must be .png, .svg, .ppm, .pdf, .eps or .ps" "unknown extension"
 run "$POINTCALC" -o;              expect_rc 2 "-o without a file"
 run "$POINTCALC" no_such_script.lua; expect_rc 2 "missing script"
 expect_in err.txt "cannot open 'no_such_script.lua'" "missing script"

@@ -154,9 +154,9 @@ else
     expect_eq "$(field Architecture)" "$arch" "Architecture"
     expect_eq "$(field Section)" "graphics" "Section"
     expect_eq "$(field Recommends)" "lua5.4" "Recommends"
-    for dep in libc6 liblua5.4-0 libpng16-16; do
+    for dep in libc6 liblua5.4-0 libpng16-16 libcairo2 libpango-1.0-0 fonts-cmu; do
         checks=$((checks + 1))
-        field Depends | grep -q "$dep (>=" || fail "Depends lacks $dep: $(field Depends)"
+        field Depends | grep -q "$dep\( (>=\|,\|$\)" || fail "Depends lacks $dep: $(field Depends)"
     done
     # every dependency is a package this system has, so dpkg -i can satisfy it
     for dep in $(field Depends | tr ',' '\n' | sed 's/(.*//; s/ //g'); do

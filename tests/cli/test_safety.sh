@@ -180,13 +180,13 @@ expect_in err.txt "catch.lua:1: time limit of 0.3 s exceeded" "--timeout through
 # a native call that runs on: stopped a grace period after the limit
 run "$POINTCALC" --timeout 0.2 -e 'string.rep("a", 60):find(string.rep("a?", 60) .. string.rep("a", 60))'
 expect_rc 1 "--timeout in a native call"
-expect_in err.txt "time limit exceeded in a native call; stopped" "--timeout in a native call"
+expect_in err.txt "(command line):1: time limit of 0.2 s exceeded in a native call; stopped" "--timeout in a native call"
 printf 'pset(1, 1)\nlocal t = {}\nfor i = 1, 1e8 do t[i] = {i} end\n' > grow.lua
 run "$POINTCALC" --max-memory 40 grow.lua; expect_rc 1 "--max-memory"
 expect_in err.txt "grow.lua:3: memory limit of 40 MB exceeded" "--max-memory message"
 expect_no_file grow.png "--max-memory: no output"
 run "$POINTCALC" --max-memory 40 -e 'local s = string.rep("x", 1e9)'; expect_rc 1 "--max-memory, one big allocation"
-expect_in err.txt "(command line): memory limit of 40 MB exceeded (an allocation was refused)" "one big allocation"
+expect_in err.txt "(command line):1: memory limit of 40 MB exceeded (a request of 953.7 MB was refused)" "one big allocation"
 # within the limits a script runs as before
 run "$POINTCALC" --timeout 5 --max-memory 100 -e 'local t = {} for i = 1, 1e5 do t[i] = P(i, i) end print(#t)'
 expect_eq "$(cat out.txt)" "100000" "within the limits"

@@ -461,9 +461,9 @@ static void test_write_file_unknown_extension(void **state) {
     pc_canvas *c = canvas(3, 2, 16);
     char err[256];
     assert_int_equal(pc_write_file(c, "pic.gif", PC_THEME_SCREEN, err, sizeof err), PC_EARG);
-    assert_string_equal(err, "cannot write 'pic.gif': the extension must be .png, .svg or .ppm");
+    assert_string_equal(err, "cannot write 'pic.gif': the extension must be .png, .svg, .ppm, .pdf, .eps or .ps");
     assert_int_equal(pc_write_file(c, "picture", PC_THEME_SCREEN, err, sizeof err), PC_EARG);
-    assert_string_equal(err, "cannot write 'picture': the extension must be .png, .svg or .ppm");
+    assert_string_equal(err, "cannot write 'picture': the extension must be .png, .svg, .ppm, .pdf, .eps or .ps");
     assert_int_equal(access("pic.gif", F_OK), -1);
     pc_canvas_free(c);
 }

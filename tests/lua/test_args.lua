@@ -58,6 +58,7 @@ err(function() korotky.conic_sweep{U = 1} end,
     "korotky.conic_sweep: option 'U' must be a 3-D curve, got 1", "a call table's field")
 err(function() korotky.conic_revolve{} end,
     "korotky.conic_revolve: option 'A' must be a 3-D point, got nil", "a required key")
+err(function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)", "figure's keys")
 
 -- c:draw checks its options on the layer (stdlib/lua/l_camera.c)
 local cd = curve(function(t) return P(t, t) end, 0, 1)
@@ -98,7 +99,6 @@ err(function() plot(function(t) return t end, {t = {0, 1, 0.1}}) end,
 local PENDING = {
   {"s:draw{hiden = true}", function() surface.plane(P(0, 0, 0), V(1, 0, 0), V(0, 1, 0)):draw{hiden = true} end,
    "unknown option 'hiden' (did you mean 'hidden'?)"},
-  {"figure{widht = 8}", function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)"},
   {"screen{widht = 300}", function() screen{widht = 300} end, "screen: unknown option 'widht' (did you mean 'width'?)"},
   {"interp.prototype(\"desargues\")", function() interp.prototype("desargues") end, "must hold 4 points"},
 }
@@ -181,6 +181,7 @@ for _, t in ipairs(CONVERTED) do
   end
 end
 truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"], "constructors, calls and methods")
+truthy(decls["figure"], "figure has a declaration")
 local sig = help.forms(help.by_name["korotky.poly_spline"])[1]
 eq(sig, 'korotky.poly_spline(points [, {ends = "natural"|"clamped", s0 =, s1 =}]) -> curve, coef', "a generated signature")
 eq(help.forms(help.by_name["korotky.conic_sweep"])[1], "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s", "a call table's signature")

@@ -50,7 +50,7 @@ check.eq(point(14, 70), 4, "pen() restores the solid pen")
 check.err(function() pen { width = 0 } end, "pen: argument #1 (width) must be a number 1..256 (pixels), got 0", "pen width")
 check.err(function() pen { dash = { 1, 2, 3 } } end, "pen: argument #1 (dash) must be a list of on, off lengths (an even number, at most 16), got table", "odd dash")
 check.err(function() pen { dash = { 1, -2 } } end, "pen: argument #1 (dash length) must be a positive number (pixels), got -2", "negative dash")
-check.err(function() pen(3) end, "pen: argument #1 (pen) must be a table {width =, dash =}, got 3", "pen type")
+check.err(function() pen(3) end, "pen: argument #1 (pen) must be a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\"), got 3", "pen type")
 
 -- QBasic's LINE style after the box flag
 line(100, 0, 100, 15, 2, nil, 0xAAAA)

@@ -289,7 +289,7 @@ err(function() pset(P(1, 2) * 100 + P(320, 240)) end, "pset: argument #1 has wei
 err(function() pset(P(1, 2) * 100 + P(320, 240)) end, "e.g. V(x, y)*100 + P(320, 240)", "pset suggests V()")
 err(function() pset(V(1, 2)) end, "pset: argument #1 is a vector V(1, 2) (weight 0), not a point", "pset vector")
 err(function() pset(P(1, 2, 3)) end, "pset: argument #1 must be a 2-D point, got the 3-D P(1, 2, 3)", "pset 3-D")
-err(function() pset(P(1e300, 0) * 1e300 / 1e300) end, "pset: argument #1 has infinite or NaN coordinates", "pset overflow")
+err(function() pset(P(1e300, 0) * 1e300 / 1e300) end, "k * A: the result is out of range (not finite", "an overflow stops where it happens (issue 26)")
 err(function() line(P(0, 0), P(1, 1, 1)) end, "line: argument #2 must be a 2-D point", "line 3-D")
 
 -- the drawing was only a check: save it to a scratch file so the host does not write one
