@@ -204,8 +204,8 @@ static int c_draw(lua_State *L) {
         lua_call(L, 2, 0);
         return 0;
     }
-    if (!f) f = pcl_drawing_map(L, 0, c->dim, "c:draw");
-    pcl_draw_curve(L, c, f, 1, o[O_TOL].x, (int)o[O_COLOR].x, (int)o[O_CLOSED].x, "c:draw");
+    if (!f) f = pcl_drawing_map(L, 0, c->dim, pcl_name(L));
+    pcl_draw_curve(L, c, f, 1, o[O_TOL].x, (int)o[O_COLOR].x, (int)o[O_CLOSED].x, pcl_name(L));
     return 0;
 }
 

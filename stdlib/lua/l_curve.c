@@ -139,9 +139,11 @@ static lcurve *newcurve(lua_State *L, pc_curve *c, const char *kind, size_t extr
     return u;
 }
 
-/* Push a new curve object for c (or raise the core's status, naming the call, when c is NULL). */
+/* Push a new curve object for c (or raise the core's status, naming the call, when c is NULL);
+ * kind NULL: the constructor's declared name (a static string). */
 static lcurve *pushcurve(lua_State *L, pc_curve *c, int status, const char *kind, size_t extra) {
     if (!c) pcl_raise_status(L, pcl_name(L), status);
+    if (!kind) kind = pcl_name(L);
     return newcurve(L, c, kind, extra);
 }
 
@@ -265,7 +267,7 @@ static int l_bezier(lua_State *L) {
     PCL_READ(L, a);
     int m, d = 0, st;
     double *h = read_rows(L, 1, 1, NULL, 0, 2, PC_CURVE_MAXDEG + 1, &m, &d);
-    pushcurve(L, pc_curve_bezier(d, m, h, &st), st, "bezier", 0);
+    pushcurve(L, pc_curve_bezier(d, m, h, &st), st, NULL, 0);
     return 1;
 }
 
@@ -357,7 +359,7 @@ static int l_bspline(lua_State *L) {
                                "[%d] = %s (the end)", p + 1, pcl_pushnum(L, knots[p]), m + 1, pcl_pushnum(L, knots[m]));
     }
     int st;
-    pushcurve(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), st, "bspline", 0);
+    pushcurve(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), st, NULL, 0);
     return 1;
 }
 
@@ -376,7 +378,7 @@ static int l_hermite(lua_State *L) {
     int st;
     pc_curve *c = pc_curve_hermite(d, n, a[0].list, t, tin, exactly(L, &a[4], 3, "u", n, "point"),
                                    (int)a[5].x, &st);
-    pushcurve(L, c, st, "hermite", 0);
+    pushcurve(L, c, st, NULL, 0);
     return 1;
 }
 
@@ -394,7 +396,7 @@ static int l_cubic_spline(lua_State *L) {
     int n = a[0].n, st;
     pc_curve *c = pc_curve_cubic_spline(a[0].dim, n, a[0].list, exactly(L, &a[5], 2, "u", n, "point"),
                                         kinds[a[2].n], a[3].v, a[4].v, &st);
-    pushcurve(L, c, st, "cubic_spline", 0);
+    pushcurve(L, c, st, NULL, 0);
     return 1;
 }
 
@@ -405,7 +407,7 @@ static int l_interpolate(lua_State *L) {
     PCL_READ(L, a);
     int st;
     pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, exactly(L, &a[1], 2, NULL, a[0].n, "point"), &st);
-    pushcurve(L, c, st, "interpolate", 0);
+    pushcurve(L, c, st, NULL, 0);
     return 1;
 }
 
@@ -446,7 +448,7 @@ static int l_curve(lua_State *L) {
     lua_pushvalue(L, 1);
     f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
-    pushcurve(L, pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, luafn_free, f, &st), st, "curve", 0);
+    pushcurve(L, pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, luafn_free, f, &st), st, NULL, 0);
     return 1;
 }
 
@@ -521,7 +523,7 @@ static int l_spline2(lua_State *L) {
         pc.b[k] = a[2].v[k];
     }
     pc.g = g;
-    push_stroke(L, "spline2", TK_SPLINE2, d, 1, 0, &pc, lua, 5);
+    push_stroke(L, pcl_name(L), TK_SPLINE2, d, 1, 0, &pc, lua, 5);
     return 1;
 }
 
@@ -592,7 +594,7 @@ static int l_fourier(lua_State *L) {
     int count = a[0].n, d = a[0].dim, n = count / 2, m = n + 1, st;
     if (count % 2) return pcl_argfail(L, 1, "must hold an even number (2n >= 2) of points, got %d", count);
     double *samples = a[0].list;
-    lcurve *u = pushcurve(L, pc_curve_fourier(d, n, samples, &st), st, "fourier", sizeof(double) * (size_t)(2 * m * d));
+    lcurve *u = pushcurve(L, pc_curve_fourier(d, n, samples, &st), st, NULL, sizeof(double) * (size_t)(2 * m * d));
     u->tk = TK_FOURIER;
     u->n = n;
     for (int k = 0; k < d; k++) {   /* the coefficients again, for c:coef */
