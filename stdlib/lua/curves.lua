@@ -273,9 +273,19 @@ end
 -- c:draw{...} is in C (stdlib/lua/l_camera.c): it checks the options and draws a path through
 -- the camera or a map object itself; dots, and maps that are plain functions, come here.
 
+-- The options as c:draw checked them, with colour = given as color = for the walkers.
+local function as_color(opts)
+  if opts.colour == nil then return opts end
+  local o = {}
+  for k, v in pairs(opts) do o[k] = v end
+  o.color, o.colour = opts.colour, nil
+  return o
+end
+
 -- c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn, dots = true, qb = false, ...}: dots at
 -- those parameters, as the listings draw them
 function tk.draw_dots(c, opts)
+  opts = as_color(opts)
   local plot, post = tk.brush(opts, "c:draw"), tk.postmap(opts.map, "c:draw")
   if post then
     tk.walk(c, opts, "c:draw", function(...) plot(post(...)) end)
@@ -290,6 +300,7 @@ end
 
 -- c:draw{map = function(X) ... end}: the path of the mapped points
 function tk.draw_mapped(c, opts)
+  opts = as_color(opts)
   return tk.trace(function(t) return c(t) end, c.lo, c.hi, nil, opts, "c:draw")
 end
 

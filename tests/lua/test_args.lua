@@ -77,6 +77,10 @@ plot(diag, {t = {0, 100}, colour = 4})
 eq(point(50, 50), 4, "plot{colour = 4} draws in colour 4")
 cd:draw{colour = 2}
 eq(point(0, 0), 2, "c:draw{colour = 2} draws in colour 2")
+cd:draw{colour = 5, t = {0, 1, .25}}
+eq(point(1, 1), 5, "c:draw{colour = 5, t = ...} draws its dots in colour 5")
+cd:draw{colour = 6, map = function(X) return X + V(10, 0) end}
+eq(point(10, 0), 6, "c:draw{colour = 6, map = function} draws in colour 6")
 local many66 = {}
 for i = 1, 66 do many66[i] = P(i, 0) end
 err(function() bezier(many66) end, "bezier: argument #1 (points) must hold 2 to 65 points, got 66", "bezier of 66 points names the cap")
