@@ -252,10 +252,15 @@ static double *read_rows(lua_State *L, int idx, int k, const char *key, int vect
     return h;
 }
 
-/* A list of n numbers given as option key (or argument #k): their count must be n. */
-static const double *exactly(lua_State *L, const pcl_val *v, int k, const char *key, int n, const char *what) {
+/* The parameters of n nodes given as option key (or argument #k): n numbers, increasing unless
+ * any order will do (interpolation: distinct ones, which the core checks). */
+static const double *params(lua_State *L, const pcl_val *v, int k, const char *key, int n, int any) {
     if (!v->present) return NULL;
-    if (v->n != n) list_fail(L, k, key, "must hold %d numbers (one per %s), got %d", n, what, v->n);
+    if (v->n != n) list_fail(L, k, key, "must hold %d numbers (one per point), got %d", n, v->n);
+    for (int i = 1; i < n && !any; i++)
+        if (!(v->list[i] > v->list[i - 1]))
+            list_fail(L, k, key, "must increase, but [%d] = %s follows [%d] = %s", i + 1,
+                      pcl_pushnum(L, v->list[i]), i, pcl_pushnum(L, v->list[i - 1]));
     return v->list;
 }
 
@@ -376,7 +381,7 @@ static int l_hermite(lua_State *L) {
         tin = read_rows(L, -1, 3, "tin", 1, n, n, &nt, &d);
     }
     int st;
-    pc_curve *c = pc_curve_hermite(d, n, a[0].list, t, tin, exactly(L, &a[4], 3, "u", n, "point"),
+    pc_curve *c = pc_curve_hermite(d, n, a[0].list, t, tin, params(L, &a[4], 3, "u", n, 0),
                                    (int)a[5].x, &st);
     pushcurve(L, c, st, NULL, 0);
     return 1;
@@ -394,7 +399,7 @@ static int l_cubic_spline(lua_State *L) {
     if (a[2].n == 1 && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end derivatives d0 and d1 (vectors)");
     int n = a[0].n, st;
-    pc_curve *c = pc_curve_cubic_spline(a[0].dim, n, a[0].list, exactly(L, &a[5], 2, "u", n, "point"),
+    pc_curve *c = pc_curve_cubic_spline(a[0].dim, n, a[0].list, params(L, &a[5], 2, "u", n, 0),
                                         kinds[a[2].n], a[3].v, a[4].v, &st);
     pushcurve(L, c, st, NULL, 0);
     return 1;
@@ -406,7 +411,7 @@ static int l_interpolate(lua_State *L) {
     pcl_val a[2] = {{0}};
     PCL_READ(L, a);
     int st;
-    pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, exactly(L, &a[1], 2, NULL, a[0].n, "point"), &st);
+    pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, params(L, &a[1], 2, NULL, a[0].n, 1), &st);
     pushcurve(L, c, st, NULL, 0);
     return 1;
 }

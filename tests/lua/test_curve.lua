@@ -164,6 +164,13 @@ err(function() hermite({A, B}, {V(1, 0), P(1, 0)}) end, "hermite: argument #2 (t
 err(function() cubic_spline({A, B}, {ends = "loose"}) end, "cubic_spline: option 'ends' must be \"natural\", \"clamped\" or \"periodic\", got \"loose\"", "bad ends")
 err(function() cubic_spline({A, B}, {ends = "clamped"}) end, "cubic_spline: clamped ends need the end derivatives d0 and d1 (vectors)", "clamped without d0")
 err(function() interpolate({A, B, C}, {0, .5, .5}) end, "interpolate", "repeated parameter")
+err(function() hermite({A, B}, {V(1, 0), V(1, 0)}, {u = {0, 0}}) end,
+    "hermite: option 'u' must increase, but [2] = 0 follows [1] = 0", "hermite's parameters increase")
+err(function() cubic_spline({A, B, C}, {u = {0, 2, 1}}) end,
+    "cubic_spline: option 'u' must increase, but [3] = 1 follows [2] = 2", "cubic_spline's parameters increase")
+err(function() cubic_spline({A, B, C}, {u = {0, 1}}) end,
+    "cubic_spline: option 'u' must hold 3 numbers (one per point), got 2", "one parameter per point")
+eq(interpolate({A, B, C}, {0, 2, 1}).t1, 2, "interpolation takes distinct parameters in any order")
 err(function() curve(5, 0, 1) end, "argument #1 (f)", "not a function")
 err(function() curve(function(t) return t, t end, 1, 0) end, "t1", "empty domain")
 err(function() b(0 / 0) end, "finite", "NaN parameter")
