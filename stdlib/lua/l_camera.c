@@ -1,6 +1,8 @@
 /* Binding of 3-D drawing: the current projection and the drawing of curves as paths.
  *   camera(f)      set the current projection (a map from n-D to 2-D); with one set, every
  *                  drawing call takes n-D points and draws their images
+ *   camera(f, {hidden = "dashed"|"hide"|"show"})  and 3-D curves, lines, markers and
+ *                  wireframes form a scene whose hidden lines are resolved at write
  *   camera(nil)    back to plain 2-D drawing;  camera() -> the current map or nil
  *   c:draw{...}    a curve as one path: the C path from the object through the current camera
  *                  (or map), WINDOW and VIEW to the canvas, one conversion from world to device
@@ -10,6 +12,7 @@
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
+#include "pcl_scene.h"
 
 #define CAMERA_KEY "pointcalc.camera"
 
@@ -20,10 +23,10 @@ pc_map *pcl_camera(lua_State *L) {
     return f;
 }
 
-/* camera(f), camera(nil), camera() */
+/* camera(f [, {hidden =}]), camera(nil), camera() */
 static int l_camera(lua_State *L) {
     int given = !lua_isnone(L, 1);
-    pcl_val a[1] = {{0}};
+    pcl_val a[3] = {{0}};   /* projection, opts, hidden */
     PCL_READ(L, a);
     if (!given) {
         lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
@@ -34,6 +37,8 @@ static int l_camera(lua_State *L) {
         if (!f) return pcl_argfail(L, 1, "must be a map to the plane (or nil), got %s", pcl_shown(L, 1));
         if (f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
     }
+    /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
+    pcl_set_hidden_mode(L, a[2].present ? a[2].n : -1);
     lua_settop(L, 1);
     lua_setfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
     return 0;
@@ -148,6 +153,14 @@ void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, doub
             pcl_error(L, "%s: the curve needs more than %d vertices at tol = %s px; draw it with a "
                          "larger tol", fname, (int)PC_POLYLINE_MAX, pcl_pushnum(L, tol));
         pcl_raise_status(L, fname, st);
+    }
+    pc_scene *sc = c->dim == 3 && f == pcl_camera(L) ? pcl_scene(L) : NULL;
+    if (sc) {   /* through the camera into the scene, sampled as densely as the flattened path */
+        int n = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
+        pc_polyline_free(&pl);
+        st = pcl_scene_curve(L, sc, c, n, color);
+        if (st != PC_OK) pcl_raise_status(L, fname, st);
+        return;
     }
     int unbroken = 1;
     for (size_t i = 1; i < pl.n; i++) unbroken &= !pl.move[i];
@@ -265,10 +278,14 @@ static int tk_check_options(lua_State *L) {
     return 1;
 }
 
-static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
+static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */
+static const pcl_arg camera_keys[] = {A_ENUM("hidden", HIDDEN), PCL_END};
+static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_ANY, .flags = PCL_OPT},
+                                      A_OPTIONS("opts", camera_keys), PCL_END};
 static const pcl_fn fns[] = {
-    {.name = "camera", .fn = l_camera, .args = camera_args, .sig = "camera(f)\ncamera(nil)\ncamera() -> f",
-     .help = "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images."},
+    {.name = "camera", .fn = l_camera, .args = camera_args,
+     .sig = "camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])\ncamera(nil)\ncamera() -> f",
+     .help = "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order."},
     PCL_END};
 static const pcl_fn methods[] = {
     {.name = "c:draw", .fn = c_draw, .args = draw_args, .self = self_curve, .selftype = "curve",
