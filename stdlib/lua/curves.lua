@@ -14,6 +14,36 @@ local type, select, tostring = type, select, tostring
 -- a value as the messages do.
 local error, shown = tk.raise, tk.shown
 
+-- The options with colour = given as color = (a copy), for the code that reads opts.color.
+local function as_color(opts)
+  if opts.colour == nil then return opts end
+  local o = {}
+  for k, v in pairs(opts) do o[k] = v end
+  o.color, o.colour = opts.colour, nil
+  return o
+end
+
+-- tk.check_options(fname, opts, known) -> opts: the option tables of the Lua-written calls
+-- (plot, c:each, stroke) checked as the C layer checks declared ones: an unknown key is an error
+-- naming it with the nearest known one (known: a set {key = true}); colour = is color = (opts
+-- comes back as a copy with color set).
+function tk.check_options(fname, opts, known)
+  for k in pairs(opts) do
+    if type(k) ~= "string" then
+      error(string.format("%s: the options hold [%s]; options are named (key = value)", fname, shown(k)), 3)
+    end
+    if not known[k] and not (k == "colour" and known.color) then
+      local near = tk.nearest(k, known)
+      error(string.format("%s: unknown option '%s' (%s)", fname, k,
+        near and "did you mean '" .. near .. "'?" or "see :help " .. fname), 3)
+    end
+  end
+  if opts.colour ~= nil and opts.color ~= nil then
+    error(fname .. ": options 'color' and 'colour' are one option: give one", 3)
+  end
+  return as_color(opts)
+end
+
 local function ispoint(v) return getmetatable(v) == "point" end
 tk.ispoint = ispoint
 
@@ -272,15 +302,6 @@ end
 
 -- c:draw{...} is in C (stdlib/lua/l_camera.c): it checks the options and draws a path through
 -- the camera or a map object itself; dots, and maps that are plain functions, come here.
-
--- The options as c:draw checked them, with colour = given as color = for the walkers.
-local function as_color(opts)
-  if opts.colour == nil then return opts end
-  local o = {}
-  for k, v in pairs(opts) do o[k] = v end
-  o.color, o.colour = opts.colour, nil
-  return o
-end
 
 -- c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn, dots = true, qb = false, ...}: dots at
 -- those parameters, as the listings draw them

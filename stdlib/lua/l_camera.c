@@ -236,46 +236,12 @@ static int tk_draw_curve(lua_State *L) {
     return 0;
 }
 
-/* _tk.check_options(fname, opts, known) -> opts: the option tables of the Lua-written calls
- * (plot, c:each, stroke) checked as the layer checks declared ones: an unknown key is an error
- * naming it with the nearest known one (known: a set {key = true}); colour = is color = (opts
- * comes back as a copy with color set). */
-static int tk_check_options(lua_State *L) {
-    const char *fname = luaL_checkstring(L, 1);
-    luaL_checktype(L, 2, LUA_TTABLE);
-    luaL_checktype(L, 3, LUA_TTABLE);
-    lua_settop(L, 3);
-    for (lua_pushnil(L); lua_next(L, 2); lua_pop(L, 1)) {
-        if (lua_type(L, -2) != LUA_TSTRING)
-            return pcl_error(L, "%s: the options hold [%s]; options are named (key = value)", fname, pcl_shown(L, 4));
-        const char *key = lua_tostring(L, -2);
-        int colour = !strcmp(key, "colour") && lua_getfield(L, 3, "color") != LUA_TNIL;
-        if (lua_getfield(L, 3, key) != LUA_TNIL || colour) {
-            lua_settop(L, 5);
-            continue;
-        }
-        const char *near = pcl_nearest_key(L, key, 3);
-        if (near) return pcl_error(L, "%s: unknown option '%s' (did you mean '%s'?)", fname, key, near);
-        return pcl_error(L, "%s: unknown option '%s' (see :help %s)", fname, key, fname);
-    }
-    if (lua_getfield(L, 2, "colour") == LUA_TNIL) {
-        lua_settop(L, 2);
-        return 1;
-    }
-    if (lua_getfield(L, 2, "color") != LUA_TNIL)
-        return pcl_error(L, "%s: options 'color' and 'colour' are one option: give one", fname);
-    lua_newtable(L);
-    int copy = lua_gettop(L);
-    for (lua_pushnil(L); lua_next(L, 2);) {
-        lua_pushvalue(L, -2);
-        lua_insert(L, -2);
-        lua_rawset(L, copy);
-    }
-    lua_pushvalue(L, 4);
-    lua_setfield(L, copy, "color");
-    lua_pushnil(L);
-    lua_setfield(L, copy, "colour");
-    return 1;
+/* _tk.nearest(name, set) -> the key of the table set nearest to name (pcl_nearest_key), or nil:
+ * curves.lua checks the option keys of its Lua-written calls with it */
+static int tk_nearest(lua_State *L) {
+    const char *near = pcl_nearest_key(L, luaL_checkstring(L, 1), 2);
+    if (near) lua_pushstring(L, near);
+    return near != NULL;
 }
 
 static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */
@@ -299,8 +265,8 @@ void pcl_open_camera(lua_State *L) {
     pcl_private(L, module);
     lua_pushcfunction(L, tk_draw_curve);
     lua_setfield(L, -2, "draw_curve");
-    lua_pushcfunction(L, tk_check_options);
-    lua_setfield(L, -2, "check_options");
+    lua_pushcfunction(L, tk_nearest);
+    lua_setfield(L, -2, "nearest");
     lua_getfield(L, -1, "curve_methods");
     lua_pushvalue(L, -2);                      /* c:draw's upvalue: _tk, for the Lua walkers */
     pcl_register(L, -2, methods, 1);
