@@ -170,6 +170,7 @@ void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, doub
 }
 
 /* A colour: an attribute of the screen or "#rrggbb" (a true colour, allocated on first use). */
+#define COLOR_EXPECT "a colour number of the screen or \"#rrggbb\""
 static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     pc_canvas *cv = pcl_canvas(L);
@@ -180,7 +181,7 @@ static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (lua_type(L, idx) == LUA_TNUMBER) return isint && v >= 0 && v < cv->ncolors ? (out->x = (double)v, 1) : 0;
     const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
     if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
-    if ((out->x = pc_rgb_color(cv, rgb)) < 0) pcl_fail(L, "%s", cv->error);
+    if ((out->x = pc_rgb_color(cv, rgb)) < 0) pcl_error(L, "%s", cv->error);
     return 1;
 }
 
@@ -189,7 +190,7 @@ static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
 enum { O_TABLE, O_COLOR, O_TOL, O_MAP, O_CLOSED, O_T, O_BRUSH, O_DOTS, O_QB, O_N };
 static const pcl_arg draw_keys[] = {
     {.name = "color", .kind = PCL_ANY, .read = read_color, .dflt = -1,
-     .expect = "a colour number of the screen or \"#rrggbb\""},
+     .expect = COLOR_EXPECT},
     {.name = "tol", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 0.25, .shown = "0.25"},
     {.name = "map", .kind = PCL_ANY}, {.name = "closed", .kind = PCL_BOOLEAN},
     {.name = "t", .kind = PCL_ANY}, {.name = "brush", .kind = PCL_ANY},
@@ -228,11 +229,13 @@ static int tk_draw_curve(lua_State *L) {
     pc_curve *c = pcl_tocurve(L, 1);
     const char *fname = luaL_optstring(L, 6, "c:draw");
     if (!c) return pcl_error(L, "%s: not a curve", fname);
-    int color = pcl_optcolor(L, 2, pcl_canvas(L));
+    pcl_val col = {.x = -1};
+    if (!lua_isnoneornil(L, 2) && !read_color(L, 2, NULL, &col))
+        return pcl_error(L, "%s: option 'color' must be %s, got %s", fname, COLOR_EXPECT, pcl_shown(L, 2));
     double tol = luaL_optnumber(L, 3, 0.25);
     if (!(tol > 0)) return pcl_error(L, "%s: option 'tol' must be a positive number, got %s", fname, pcl_shown(L, 3));
     const pc_map *f = pcl_drawing_map(L, 4, c->dim, fname);
-    pcl_draw_curve(L, c, f, (int)luaL_optinteger(L, 5, 1), tol, color, 0, fname);
+    pcl_draw_curve(L, c, f, (int)luaL_optinteger(L, 5, 1), tol, (int)col.x, 0, fname);
     return 0;
 }
 
