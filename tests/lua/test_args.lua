@@ -94,6 +94,10 @@ err(function() cubic_spline(pts, {ends = "clamped", d0 = V(1, 0), d1 = V(1, 0, 0
     "cubic_spline: option 'd1' is 3-D, but argument #1 (points) is 2-D (mixed dimensions)", "an end derivative of another dimension")
 err(function() cubic_spline(pts, {endz = "natural"}) end, "cubic_spline: unknown option 'endz' (did you mean 'ends'?)", "cubic_spline's keys")
 err(function() hermite(pts, {V(1, 0), V(1, 0), V(1, 0)}, {closd = true}) end, "hermite: unknown option 'closd' (did you mean 'closed'?)", "hermite's keys")
+local strk = stroke{nodes = {P(0, 0), P(1, 1), P(2, 0)}}
+err(function() strk:deriv(.5, P(1, 2)) end, "c:deriv: argument #2 (order) must be an integer from 1 to 2, got P(1, 2)",
+    "s:deriv(.5, P(1, 2)) names c:deriv and its order (it said Lua's bad argument #2 to 'deriv')")
+err(function() strk.each() end, "c:each: call it as c:each(...), with a colon", "s.each()")
 err(function() cd.xy(0.5) end, "c:xy: must be called on a curve, as c:xy(...)", "a C method of a curve called with a dot")
 err(function() plot(function(t) return t end, {t = {0, 1, 0.1}}) end,
     "plot: a 1-D object needs a projection", "plot of a function of one number names plot")
