@@ -232,38 +232,40 @@ static int l_bilinear(lua_State *L) {
     return 1;
 }
 
-static int l_frame_point(lua_State *L) {
-    double o[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-    double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)}, out[2];
-    pc_frame_point(o, e, luaL_checknumber(L, 5), luaL_checknumber(L, 6), out);
+/* The n numbers the Lua helpers pass (x[0] .. x[n-1]) and the pair out they get back. */
+static void numbers(lua_State *L, int n, double *x) {
+    for (int i = 0; i < n; i++) x[i] = luaL_checknumber(L, i + 1);
+}
+static int pair(lua_State *L, const double *out) {
     lua_pushnumber(L, out[0]);
     lua_pushnumber(L, out[1]);
     return 2;
 }
 
+/* _tk.frame_point(o, e, xi, eta), _tk.frame_coords(o, e, x) -> xi, eta | nil, message,
+ * _tk.patch_blend(u0, u2, ...): the pairs as numbers (curvilinear.lua) */
+static int l_frame_point(lua_State *L) {
+    double x[6], out[2];
+    numbers(L, 6, x);
+    pc_frame_point(x, x + 2, x[4], x[5], out);
+    return pair(L, out);
+}
+
 static int l_frame_coords(lua_State *L) {
-    double o[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-    double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)};
-    double x[2] = {luaL_checknumber(L, 5), luaL_checknumber(L, 6)}, xi, eta;
-    int st = pc_frame_coords(o, e, x, &xi, &eta);
-    if (st != PC_OK) {
-        lua_pushnil(L);
-        lua_pushstring(L, pc_strerror(st));
-        return 2;
-    }
-    lua_pushnumber(L, xi);
-    lua_pushnumber(L, eta);
+    double x[6], out[2];
+    numbers(L, 6, x);
+    int st = pc_frame_coords(x, x + 2, x + 4, &out[0], &out[1]);
+    if (st == PC_OK) return pair(L, out);
+    lua_pushnil(L);
+    lua_pushstring(L, pc_strerror(st));
     return 2;
 }
 
 static int l_patch_blend(lua_State *L) {
-    double u0[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-    double u2[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)}, out[2];
-    pc_patch_blend(u0, u2, luaL_checknumber(L, 5), luaL_checknumber(L, 6), luaL_checknumber(L, 7),
-                   luaL_checknumber(L, 8), luaL_checknumber(L, 9), out);
-    lua_pushnumber(L, out[0]);
-    lua_pushnumber(L, out[1]);
-    return 2;
+    double x[9], out[2];
+    numbers(L, 9, x);
+    pc_patch_blend(x, x + 2, x[4], x[5], x[6], x[7], x[8], out);
+    return pair(L, out);
 }
 
 static const pcl_fn fns[] = {
