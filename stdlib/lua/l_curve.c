@@ -661,9 +661,17 @@ static void push_h(lua_State *L, int d, const double *h) {
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
+/* c(t), and c(u^2) of a scalar equation: a single-piece Bezier composed with it (l_expr.c) */
+static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x)) || pcl_isequation(L, idx);
+}
+static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or a scalar equation"}, PCL_END};
 static int c_call(lua_State *L) {
     pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
+    if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
     double h[PC_MAXDIM + 1];
     eval_at(L, u, a[0].x, h);
     push_h(L, u->c->dim, h);
@@ -681,23 +689,67 @@ static int c_xy(lua_State *L) {
     return d;
 }
 
-/* The derivatives up to order at t into out (d values each); the curve's own failures named. */
-static void derivs(lua_State *L, lcurve *u, double t, int order, double *out) {
-    int st = pc_curve_derivs(u->c, t, order, out);
-    if (st == PC_IMPROPER) pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, t));
-    if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
+/* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
+ * "left" is asked for (the side may stand in the order's place) */
+static const char *const SIDES[] = {"left", "right", NULL};
+static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT},
+    {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
+static int c_deriv(lua_State *L) {
+    pcl_val a[3] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    int order = 1, side = a[2].present ? (a[2].n ? 1 : -1) : 0;
+    double x = lua_tonumber(L, 3);
+    if (lua_type(L, 3) == LUA_TSTRING && !a[2].present) {
+        const char *s = lua_tostring(L, 3);
+        if (strcmp(s, "left") && strcmp(s, "right"))
+            return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
+        side = s[0] == 'l' ? -1 : 1;
+    } else if (a[1].present) {
+        if (lua_type(L, 3) != LUA_TNUMBER || x != floor(x) || x < 1 || x > PC_CURVE_MAXDEG)
+            return pcl_argfail(L, 2, "must be a whole number from 1 to %d, or \"left\" / \"right\", got %s",
+                               PC_CURVE_MAXDEG, pcl_shown(L, 3));
+        order = (int)x;
+    }
+    double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
+    int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
+    if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
+        return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushvector(L, u->c->dim, out + (size_t)order * u->c->dim);
+    return 1;
 }
 
-/* c:deriv(t [, order]) -> the derivative vector (order 1 or 2) */
-static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE,
-                                                  .lo = 1, .hi = 2, .dflt = 1, .shown = "1"}, PCL_END};
-static int c_deriv(lua_State *L) {
-    pcl_val a[2] = {{0}};
+/* c:monomial([piece]): the power-basis coefficients of a piece in the curve's parameter:
+ * {{a0, a1, ...} of x, {...} of y, ...}, and w = {...} for a rational curve */
+static const pcl_arg piece_opt[] = {{.name = "piece", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"}, PCL_END};
+static int c_monomial(lua_State *L) {
+    pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
-    int d = u->c->dim, order = (int)a[1].x;
-    double out[3 * PC_MAXDIM];
-    derivs(L, u, a[0].x, order, out);
-    pcl_pushvector(L, d, out + (size_t)order * d);
+    const pc_curve *c = u->c;
+    if (c->kind == PC_CURVE_FUNC)
+        return pcl_fail(L, "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
+    int np = c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 0;
+    if (c->kind == PC_CURVE_BSPLINE)
+        for (int k = c->degree; k < c->ncp; k++) np += c->knots[k] < c->knots[k + 1];
+    if (a[0].x < 1 || a[0].x > np)
+        return pcl_argfail(L, 1, "must be from 1 to %d (the curve's pieces), got %s", np, pcl_pushnum(L, a[0].x));
+    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
+    int deg, st = pc_curve_monomial(c, (int)a[0].x - 1, coef, &deg);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    int n = c->dim, w = n + 1, rational = 0;
+    for (int j = 0; j <= deg; j++)
+        if (fabs(coef[j * w + n] - (j == 0)) > 1e-12) rational = 1;
+    lua_createtable(L, n, 1);
+    for (int x = 0; x <= n - !rational; x++) {
+        lua_createtable(L, deg + 1, 0);
+        for (int j = 0; j <= deg; j++) {
+            lua_pushnumber(L, coef[j * w + x] + 0.0);
+            lua_rawseti(L, -2, j + 1);
+        }
+        if (x < n) lua_rawseti(L, -2, x + 1);
+        else lua_setfield(L, -2, "w");
+    }
     return 1;
 }
 
@@ -1015,8 +1067,11 @@ static const pcl_fn ctors[] = {
 #define METHOD(nm, f, a, res, text) {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_curve, .selftype = "curve"}
 static const pcl_fn methods[] = {
     METHOD("c:xy", c_xy, t_arg, "x, y", "The coordinates of the point at t as numbers."),
-    METHOD("c:eval", c_call, t_arg, "point", "The point at t, as c(t)."),
-    METHOD("c:deriv", c_deriv, deriv_args, "vector", "The first (or second) derivative, exact for every kind but Lua functions (differenced)."),
+    METHOD("c:eval", c_call, t_or_eq, "point", "The point at t, as c(t)."),
+    {.name = "c:deriv", .fn = c_deriv, .args = deriv_args, .sig = "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector", .self = self_curve, .selftype = "curve",
+     .help = "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there."},
+    {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve",
+     .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
     METHOD("c:tangent", c_tangent, t_arg, "vector", "The unit tangent."),
     METHOD("c:normal", c_normal, t_arg, "vector", "The unit principal normal (in the plane: the tangent turned by +90 degrees)."),
     METHOD("c:curvature", c_curvature, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
@@ -1036,9 +1091,9 @@ static const pcl_fn methods[] = {
      .help = "The image under a map: control points mapped exactly, so a projective map keeps a rational curve rational."},
     METHOD("c:flatten", c_flatten, flatten_args, "{polylines}", "Adaptive polylines within tol of the curve (projected by map to the plane), broken where the curve passes through infinity."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "c", .fn = c_call, .args = t_arg, .result = "point", .key = "__call", .topic = "c(t)",
+static const pcl_fn call[] = {{.name = "c", .fn = c_call, .args = t_or_eq, .result = "point", .key = "__call", .topic = "c(t)",
                                .callname = 1, .self = self_curve, .selftype = "curve",
-                               .help = "The point of a curve at parameter t (a vector where a rational curve is at infinity)."}, PCL_END};
+                               .help = "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97)."}, PCL_END};
 
 void pcl_open_curves(lua_State *L) {
     int module = lua_gettop(L);

@@ -49,7 +49,7 @@ err(function() korotky.elastic(pts, {peices = 2}) end,
 err(function() korotky.poly_spline(pts, {zzz = 1}) end,
     "korotky.poly_spline: unknown option 'zzz' (the options are ends, s0, s1)", "no near key: the known ones")
 err(function() buimov.spline(pts, {colr = 1}) end,
-    "buimov.spline: unknown option 'colr' (the options are ends, d0, d1, param)", "colr where there is no colour")
+    "buimov.spline: unknown option 'colr' (the options are ends, d0, d1, param, lengths)", "colr where there is no colour")
 err(function() korotky.poly_spline(pts, {1}) end,
     "korotky.poly_spline: argument #2 (opts) holds [1]; its options are named (key = value)", "a positional entry")
 err(function() korotky.elastic(pts, {pieces = 9}) end,
@@ -95,7 +95,7 @@ err(function() cubic_spline(pts, {ends = "clamped", d0 = V(1, 0), d1 = V(1, 0, 0
 err(function() cubic_spline(pts, {endz = "natural"}) end, "cubic_spline: unknown option 'endz' (did you mean 'ends'?)", "cubic_spline's keys")
 err(function() hermite(pts, {V(1, 0), V(1, 0), V(1, 0)}, {closd = true}) end, "hermite: unknown option 'closd' (did you mean 'closed'?)", "hermite's keys")
 local strk = stroke{nodes = {P(0, 0), P(1, 1), P(2, 0)}}
-err(function() strk:deriv(.5, P(1, 2)) end, "c:deriv: argument #2 (order) must be an integer from 1 to 2, got P(1, 2)",
+err(function() strk:deriv(.5, P(1, 2)) end, "c:deriv: argument #2 (order) must be a whole number from 1 to 64, or \"left\" / \"right\", got P(1, 2)",
     "s:deriv(.5, P(1, 2)) names c:deriv and its order (it said Lua's bad argument #2 to 'deriv')")
 err(function() strk.each() end, "c:each: call it as c:each(...), with a colon", "s.each()")
 err(function() cd.xy(0.5) end, "c:xy: must be called on a curve, as c:xy(...)", "a C method of a curve called with a dot")
@@ -176,7 +176,7 @@ end
 truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
-local CONVERTED = {"korotky", "plane", "buimov", "map", "affine"}
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "konopatsky"}
 -- global functions of converted files, and the curve methods written in C
 for _, k in ipairs{"bezier", "bspline", "hermite", "cubic_spline", "interpolate", "curve", "spline2", "fourier",
                    "sphdir", "camera", "squash", "squash01", "oblique", "projection", "oresme", "bisect"} do
