@@ -182,63 +182,43 @@ area("curves", "Curves",
   "and draws itself as one path with c:draw().",
   "curves.md")
 
-def("bezier", "bezier{P0, P1, ..., Pn} -> curve",
-  "The Bezier curve of degree n over [0, 1]; weighted points w*P make it rational (a conic), vectors are control points at infinity.")
-def("bspline", "bspline(points, degree [, \"open\"|\"uniform\"|\"periodic\"|knots]) -> curve",
-  "The B-spline (NURBS with weighted points) of that degree; open knots by default, or a non-decreasing list of points + degree + 1 knots.")
-def("hermite", "hermite(points, tangents [, {tin = {...}, u = {...}, closed = false}]) -> curve",
-  "Piecewise cubic Hermite through the points with these derivatives (tin: the arriving ones, for corners); u: the parameters of the nodes.")
-def("cubic_spline", "cubic_spline(points [, {ends = \"natural\"|\"clamped\"|\"periodic\", d0 = V, d1 = V, u = {...}}]) -> curve",
-  "The C2 cubic spline through the points (parameters: accumulated chord lengths unless u is given).")
-def("interpolate", "interpolate(points [, params]) -> curve",
-  "The polynomial curve of degree n - 1 through n points at the given parameters (default evenly spaced in [0, 1]).")
-def("curve", "curve(f, t0, t1) -> curve",
-  "A Lua function t -> point (or numbers) over [t0, t1] as a curve: it flattens, measures and draws like any other.")
-def("spline2", "spline2(A, a, B, b [, g]) -> curve",
-  "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): Stepanov's example 5.")
+def("bezier")
+def("bspline")
+def("hermite")
+def("cubic_spline")
+def("interpolate")
+def("curve")
+def("spline2")
 def("stroke", "stroke{nodes = {P, ...}, uin = ..., kink = ... | ein = {V, ...}, rin =, rout =, n =, m =, t0 =, g =, closed = false} -> curve",
   "The one-stroke curve through the nodes, one quadrilateral-spline piece per pair (examples 10, 11, 13); its t runs over 0..pieces.")
-def("fourier", "fourier({P1, P2, ..., P2n}) -> curve",
-  "The closed curve through 2n points by a finite Fourier series (example 12), t in [0, 2 pi].")
-def("sphdir", "sphdir(u1, u2) -> vector",
-  "The unit vector of longitude u1 and latitude u2 (example 33).")
+def("fourier")
+def("sphdir")
 def("plot", {"plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})",
              "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn | dots = true | qb = true, ...})"},
   "Draw t -> f(t) as one connected path (3-D through map or the camera); with a brush, dots = true or qb = true, dots at those steps as the listings do.")
-def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
-  "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97).", "method")
-def("c:deriv", "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector",
-  "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there.", "method")
-def("c:tangent", "c:tangent(t) -> vector | c:normal(t) -> vector",
-  "The unit tangent; the unit principal normal (in the plane: the tangent turned by +90 degrees).", "method")
-def("c:curvature", "c:curvature(t) -> number",
-  "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space.", "method")
-def("c:split", "c:split(t) -> left, right | c:sub(a, b) -> curve",
-  "The two parts at t (de Casteljau, knot insertion), or the part over [a, b], of the same kind.", "method")
-def("c:insert_knot", "c:insert_knot(u) -> curve",
-  "The same B-spline with the knot u inserted (one more control point).", "method")
-def("c:length", "c:length([a, b]) -> number",
-  "The arc length over the domain or [a, b] (adaptive Gauss-Legendre).", "method")
-def("c:bbox", "c:bbox() -> lo, hi",
-  "The corners of the axis-aligned bounding box.", "method")
-def("c:controls", {"c:controls() -> {values}", "c:controls(i) -> A, P, Q, B"},
-  "The control values (weighted as given); for a stroke, the quadrilateral of piece i.", "method")
-def("c:knots", "c:knots() -> {numbers}",
-  "The knot vector of a B-spline, or the breakpoints of pieces.", "method")
-def("c:map", "c:map(f) -> curve | f(c)",
-  "The image under a map: control points mapped exactly, so a projective map keeps a rational curve rational.", "method")
-def("c:flatten", "c:flatten([tol [, map]]) -> {polylines}",
-  "Adaptive polylines within tol of the curve (projected by map to the plane), broken where the curve passes through infinity.", "method")
+def("c(t)", nil, nil, "method")
+def("c:xy", nil, nil, "method")
+def("c:eval", nil, nil, "method")
+def("c:deriv", nil, nil, "method")
+def("c:tangent", nil, nil, "method")
+def("c:normal", nil, nil, "method")
+def("c:curvature", nil, nil, "method")
+def("c:split", nil, nil, "method")
+def("c:sub", nil, nil, "method")
+def("c:insert_knot", nil, nil, "method")
+def("c:length", nil, nil, "method")
+def("c:bbox", nil, nil, "method")
+def("c:controls", nil, nil, "method")
+def("c:knots", nil, nil, "method")
+def("c:map", nil, nil, "method")
+def("c:flatten", nil, nil, "method")
 def("c:each", "c:each{t = {a, b, step}, qb = false} -> iterator of point, piece, t",
   "Walk a curve: for M, i, t in c:each{t = {0, 1, .01}} do ... end.", "method")
-def("c:draw", {"c:draw{color = c, tol = px, map = m}", "c:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, qb = false, ...}"},
-  "Draw the curve as one path, flattened to within tol pixels (default 1/4) through map or the camera; with t or a brush, dots as the listings draw them.", "method")
-def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
-  "A stroke's piece i at its own parameter t.", "method")
-def("c:coef", "c:coef(k) -> a, b",
-  "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
-def("c:monomial", "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}",
-  "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators).", "method")
+def("c:draw", nil, nil, "method")
+def("c:piece", nil, nil, "method")
+def("c:piece_xy", nil, nil, "method")
+def("c:coef", nil, nil, "method")
+def("c:monomial", nil, nil, "method")
 def("c:conic", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
@@ -337,14 +317,10 @@ area("maps", "Maps, projections and numerics",
   "Oresme's function and bisection.",
   "toolkit.md")
 
-def("squash", "squash(p [, q]) -> numbers",
-  "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28).")
-def("squash01", "squash01(p [, q]) -> numbers",
-  "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument.")
-def("oblique", "oblique(C0, r, k, u) -> map",
-  "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up.")
-def("projection", "projection(C0, C1, C2, C3) -> map",
-  "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0.")
+def("squash")
+def("squash01")
+def("oblique")
+def("projection")
 def("complex")
 def("complex.i", "complex.i", "The imaginary unit.", "value")
 def("complex.polar")
@@ -360,10 +336,9 @@ def("z:point", nil, nil, "method")
 def("mobius")
 def("M(z)", nil, nil, "method")
 def("M:inverse", nil, nil, "method")
-def("oresme", "oresme(lambda [, m [, y0, y1]]) -> o",
-  "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o.")
-def("bisect", "bisect(f, a, b [, tol]) -> x, iterations",
-  "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default).")
+def("oresme")
+def("o(t)", nil, nil, "method")
+def("bisect")
 
 -- ---------------------------------------------------------------------------------------
 area("draw", "Drawing (QBasic SCREEN 12)",
@@ -413,8 +388,7 @@ def("figure")
 def("text")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
-def("camera", {"camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])", "camera(nil)", "camera() -> f"},
-  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order.")
+def("camera")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look.")
 

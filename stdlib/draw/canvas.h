@@ -259,6 +259,13 @@ int pc_line_styled(pc_canvas *c, double x1, double y1, double x2, double y2, int
 int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
             int closed, int color);
 
+/* pc_path with the points already in screen coordinates (fractional pixels, y down, before
+ * VIEW's clip), as a curve flattened through WINDOW and VIEW gives them: its vertices are
+ * converted from world to screen once, where they were flattened, not again here.  The
+ * graphics cursor moves to the world point of the last one. */
+int pc_path_screen(pc_canvas *c, size_t n, const double *sxy, const uint8_t *verbs,
+                   size_t nverbs, int closed, int color);
+
 /* A filled path: the points and verbs as for pc_path (world coordinates; cubics flattened to
  * within 0.1 px on the screen), every subpath closed, filled with `color` by `rule`
  * (PC_FILL_EVENODD: inside where a ray crosses the outline an odd number of times, so a

@@ -500,15 +500,24 @@ static int grow_pts(pc_canvas *c, size_t need) {
 
 /* Append the path's screen points to the canvas; *first receives where they start.  stmt
  * names the statement in messages (paths and filled paths share the points). */
-int pc_push_path_pts(pc_canvas *c, const char *stmt, size_t n, const double *xy,
-                     const uint8_t *verbs, size_t nverbs, uint32_t *first) {
+/* screen: the points are screen coordinates already (pc_path_screen), else world ones */
+static int push_pts(pc_canvas *c, const char *stmt, size_t n, const double *xy,
+                    const uint8_t *verbs, size_t nverbs, uint32_t *first, int screen) {
     if (n == 0) return pc_fail(c, "%s: no points", stmt);
     if (c->npts + n > UINT32_MAX) return pc_fail_code(c, PC_ENOMEM, "%s: too many points", stmt);
     if (!grow_pts(c, c->npts + n)) return pc_fail_code(c, PC_ENOMEM, "out of memory for a %s", stmt);
     int ok = path_tags(c, n, verbs, nverbs, c->tags + c->npts);
     for (size_t i = 0; i < n && ok == PC_OK; i++) {
         pc_xy *q = &c->pts[c->npts + i];
-        ok = to_screen(c, stmt, xy[2 * i], xy[2 * i + 1], &q->x, &q->y);
+        if (!screen) {
+            ok = to_screen(c, stmt, xy[2 * i], xy[2 * i + 1], &q->x, &q->y);
+        } else if (finite2(xy[2 * i], xy[2 * i + 1])) {
+            q->x = xy[2 * i];
+            q->y = xy[2 * i + 1];
+        } else {
+            ok = pc_fail(c, "%s: coordinates must be finite numbers, got (%g, %g)", stmt,
+                         xy[2 * i], xy[2 * i + 1]);
+        }
     }
     if (ok != PC_OK) return ok;
     *first = (uint32_t)c->npts;
@@ -516,11 +525,16 @@ int pc_push_path_pts(pc_canvas *c, const char *stmt, size_t n, const double *xy,
     return PC_OK;
 }
 
-int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
-            int closed, int color) {
+int pc_push_path_pts(pc_canvas *c, const char *stmt, size_t n, const double *xy,
+                     const uint8_t *verbs, size_t nverbs, uint32_t *first) {
+    return push_pts(c, stmt, n, xy, verbs, nverbs, first, 0);
+}
+
+static int path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
+                int closed, int color, int screen) {
     uint32_t first = 0;
     int ok = pc_check_color(c, &color, c->fg);
-    if (ok == PC_OK) ok = pc_push_path_pts(c, "path", n, xy, verbs, nverbs, &first);
+    if (ok == PC_OK) ok = push_pts(c, "path", n, xy, verbs, nverbs, &first, screen);
     if (ok != PC_OK) return ok;
     pc_op tmp = {.kind = PC_OP_PATH, .flags = closed ? PC_PATH_CLOSED : 0, .first = first,
                  .count = (uint32_t)n};
@@ -546,8 +560,19 @@ int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size
     if (!op) return PC_ENOMEM;
     *op = (pc_op){.kind = PC_OP_PATH, .flags = tmp.flags, .color = (uint16_t)color,
                   .pen = (uint16_t)c->pen, .first = first, .count = tmp.count};
-    set_cursor(c, xy[2 * n - 2], xy[2 * n - 1]);
+    if (screen) pc_screen_to_world(c, xy[2 * n - 2], xy[2 * n - 1], &c->last_x, &c->last_y);
+    else set_cursor(c, xy[2 * n - 2], xy[2 * n - 1]);
     return PC_OK;
+}
+
+int pc_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, size_t nverbs,
+            int closed, int color) {
+    return path(c, n, xy, verbs, nverbs, closed, color, 0);
+}
+
+int pc_path_screen(pc_canvas *c, size_t n, const double *sxy, const uint8_t *verbs,
+                   size_t nverbs, int closed, int color) {
+    return path(c, n, sxy, verbs, nverbs, closed, color, 1);
 }
 
 /* ---- boxes ------------------------------------------------------------------------------ */

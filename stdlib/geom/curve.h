@@ -153,6 +153,11 @@ int pc_curve_monomial(const pc_curve *c, int piece, double *coef, int *degree);
 /* Curvature at t: signed in the plane (positive turning counter-clockwise for y up),
  * |C' x C''| / |C'|^3 otherwise.  PC_EZERO where C' = 0. */
 int pc_curve_curvature(const pc_curve *c, double t, double *k);
+/* The unit tangent e at t and, when nrm is not NULL, the unit principal normal: in the plane
+ * the tangent turned by +90 degrees, otherwise the part of C'' across the tangent, normalised.
+ * PC_IMPROPER where the curve is at infinity, PC_EZERO where C' = 0 (a cusp or a stop),
+ * PC_ECOLLINEAR where C'' is along C' in space (a straight stretch: no principal normal). */
+int pc_curve_frame(const pc_curve *c, double t, double *e, double *nrm);
 
 /* --- operations --------------------------------------------------------------------------- */
 /* The two parts of c at t (t0 < t < t1): left over [t0, t], right over [t, t1], each the same

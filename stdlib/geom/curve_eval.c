@@ -181,3 +181,18 @@ int pc_curve_curvature(const pc_curve *c, double t, double *k) {
     }
     return isfinite(*k) ? PC_OK : PC_ENONFINITE;
 }
+
+int pc_curve_frame(const pc_curve *c, double t, double *e, double *nrm) {
+    double d[3 * PC_MAXDIM];
+    int n = c->dim, st = pc_curve_derivs(c, t, nrm && n != 2 ? 2 : 1, d);
+    if (st) return st;
+    if (pc_unit(n, d + n, e) != PC_OK) return PC_EZERO;
+    if (!nrm) return PC_OK;
+    if (n == 2) {
+        pc_perp2(e, nrm);
+        return PC_OK;
+    }
+    double a = pc_dot(n, d + 2 * n, e);   /* C'' less its part along the tangent */
+    for (int i = 0; i < n; i++) nrm[i] = d[2 * n + i] - a * e[i];
+    return pc_unit(n, nrm, nrm) == PC_OK ? PC_OK : PC_ECOLLINEAR;
+}

@@ -14,6 +14,36 @@ local type, select, tostring = type, select, tostring
 -- a value as the messages do.
 local error, shown = tk.raise, tk.shown
 
+-- The options with colour = given as color = (a copy), for the code that reads opts.color.
+local function as_color(opts)
+  if opts.colour == nil then return opts end
+  local o = {}
+  for k, v in pairs(opts) do o[k] = v end
+  o.color, o.colour = opts.colour, nil
+  return o
+end
+
+-- tk.check_options(fname, opts, known) -> opts: the option tables of the Lua-written calls
+-- (plot, c:each, stroke) checked as the C layer checks declared ones: an unknown key is an error
+-- naming it with the nearest known one (known: a set {key = true}); colour = is color = (opts
+-- comes back as a copy with color set).
+function tk.check_options(fname, opts, known)
+  for k in pairs(opts) do
+    if type(k) ~= "string" then
+      error(string.format("%s: the options hold [%s]; options are named (key = value)", fname, shown(k)), 3)
+    end
+    if not known[k] and not (k == "colour" and known.color) then
+      local near = tk.nearest(k, known)
+      error(string.format("%s: unknown option '%s' (%s)", fname, k,
+        near and "did you mean '" .. near .. "'?" or "see :help " .. fname), 3)
+    end
+  end
+  if opts.colour ~= nil and opts.color ~= nil then
+    error(fname .. ": options 'color' and 'colour' are one option: give one", 3)
+  end
+  return as_color(opts)
+end
+
 local function ispoint(v) return getmetatable(v) == "point" end
 tk.ispoint = ispoint
 
@@ -192,7 +222,7 @@ function tk.trace(f, a, b, step, opts, fname)
   if step and step ~= 0 then pieces = math.min(4096, math.max(1, math.ceil(math.abs(b - a) / math.abs(step) / 8))) end
   if a == b then return end
   if a > b then a, b = b, a end
-  tk.draw_curve(M.curve(g, a, b), opts.color, opts.tol, obj, pieces)
+  tk.draw_curve(M.curve(g, a, b), opts.color, opts.tol, obj, pieces, fname)
 end
 
 -- A dot plotter for samples of any dimension: 2-D as they are, others through the camera
@@ -215,9 +245,11 @@ end
 -- plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})   a path (the default)
 -- plot(f, {t = {a, b, step}, brush = "pset"|"dot"|fn | dots = true | qb = true, ...})   dots
 -- draws the curve t -> f(t) (a point or numbers; 3-D and more through map or the camera).
+local PLOT_KEYS = {t = true, color = true, map = true, tol = true, brush = true, dots = true, qb = true}
 function M.plot(f, opts)
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("plot", 2, "opts", "a table", opts) end
+  opts = tk.check_options("plot", opts, PLOT_KEYS)
   if not wants_dots(opts) then
     if tk.iscurve(f) then return f:draw(opts) end
     if not callable(f) then tk.argerror("plot", 1, "curve", "a function of t or a curve", f) end
@@ -247,6 +279,7 @@ function methods.each(c, opts)
   if not tk.iscurve(c) then tk.raise("c:each: call it as c:each(...), with a colon") end
   opts = opts or {}
   if type(opts) ~= "table" then tk.argerror("c:each", 1, "opts", "a table {t = {a, b, step}}", opts) end
+  tk.check_options("c:each", opts, {t = true, qb = true})
   local P = M.P
   local pieced = c.kind == "stroke" or c.kind == "spline2"
   local lo, hi = c.lo, c.hi
@@ -267,30 +300,29 @@ function methods.each(c, opts)
   end
 end
 
--- c:draw{color = c, tol = px, map = m}: the curve as one path, flattened to within tol pixels
--- (default 1/4) through map or the camera.  c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn,
--- dots = true, qb = false, ...} draws dots at those parameters instead, as the listings do.
-function methods.draw(c, opts)
-  if not tk.iscurve(c) then tk.raise("c:draw: call it as c:draw{...}, with a colon") end
-  opts = opts or {}
-  if type(opts) ~= "table" then tk.argerror("c:draw", 1, "opts", "a table", opts, 3) end
-  if not wants_dots(opts) and opts.t == nil then
-    local map = opts.map
-    if map ~= nil and not map_object(map) then
-      return tk.trace(function(t) return c(t) end, c.lo, c.hi, nil, opts, "c:draw")
-    end
-    return tk.draw_curve(c, opts.color, opts.tol, map)
-  end
+-- c:draw{...} is in C (stdlib/lua/l_camera.c): it checks the options and draws a path through
+-- the camera or a map object itself; dots, and maps that are plain functions, come here.
+
+-- c:draw{t = {a, b, step}, brush = "pset"|"dot"|fn, dots = true, qb = false, ...}: dots at
+-- those parameters, as the listings draw them
+function tk.draw_dots(c, opts)
+  opts = as_color(opts)
   local plot, post = tk.brush(opts, "c:draw"), tk.postmap(opts.map, "c:draw")
   if post then
     tk.walk(c, opts, "c:draw", function(...) plot(post(...)) end)
   else
     if c.dim ~= 2 then
       error(string.format("c:draw: a %d-D curve needs map = a projection (e.g. oblique(...))",
-        c.dim), 2)
+        c.dim), 3)
     end
     tk.walk(c, opts, "c:draw", plot)
   end
+end
+
+-- c:draw{map = function(X) ... end}: the path of the mapped points
+function tk.draw_mapped(c, opts)
+  opts = as_color(opts)
+  return tk.trace(function(t) return c(t) end, c.lo, c.hi, nil, opts, "c:draw")
 end
 
 -- ---- stroke{...} ------------------------------------------------------------------------------
@@ -349,9 +381,14 @@ end
 --        | ein = {V, ...} [, eout = {V, ...}]                explicit directions
 --        rin = ..., rout = ..., n = ..., m = ..., t0 = ...,  per node (number = every node)
 --        g = smoothstep, closed = false, ccw = true, radians = false}
+local STROKE_KEYS = {}
+for k in ("nodes x y z uin kink uin2 kink2 ein eout rin rout n m t0 g closed ccw radians"):gmatch("%S+") do
+  STROKE_KEYS[k] = true
+end
 function M.stroke(s)
   local fn = "stroke"
   if type(s) ~= "table" then tk.argerror(fn, 1, "spec", "a table {nodes = {...}, ...}", s) end
+  tk.check_options(fn, s, STROKE_KEYS)
   -- the nodes
   local nodes, d, k = {}, nil, nil
   if s.nodes ~= nil then

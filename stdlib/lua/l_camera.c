@@ -4,10 +4,13 @@
  *   camera(f, {hidden = "dashed"|"hide"|"show"})  and 3-D curves, lines, markers and
  *                  wireframes form a scene whose hidden lines are resolved at write
  *   camera(nil)    back to plain 2-D drawing;  camera() -> the current map or nil
- * and, for stdlib/lua/curves.lua, _tk.draw_curve(c, colour, tol [, map]): the curve flattened
- * through the projection, WINDOW and VIEW to within tol pixels and drawn as one path. */
+ *   c:draw{...}    a curve as one path: the C path from the object through the current camera
+ *                  (or map), WINDOW and VIEW to the canvas, one conversion from world to device
+ * and, for stdlib/lua/curves.lua, _tk.draw_curve(c, colour, tol, map, pieces, fname): the same
+ * path for plot and the curvilinear systems' lines. */
 #include <math.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
 
@@ -20,33 +23,22 @@ pc_map *pcl_camera(lua_State *L) {
     return f;
 }
 
+/* camera(f [, {hidden =}]), camera(nil), camera() */
 static int l_camera(lua_State *L) {
-    if (lua_isnone(L, 1)) {
+    int given = !lua_isnone(L, 1);
+    pcl_val a[3] = {{0}};   /* projection, opts, hidden */
+    PCL_READ(L, a);
+    if (!given) {
         lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
         return 1;
     }
-    if (!lua_isnil(L, 1)) {
+    if (a[0].present) {
         pc_map *f = pcl_tomap(L, 1);
-        if (!f) return pcl_argerror(L, 1, "projection", "a map to the plane (or nil)");
-        if (f->nout != 2)
-            return pcl_error(L, "camera: argument #1 (projection) must map to 2-D points, but it "
-                                "maps to %d-D", f->nout);
+        if (!f) return pcl_argfail(L, 1, "must be a map to the plane (or nil), got %s", pcl_shown(L, 1));
+        if (f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
     }
     /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
-    int mode = -1;
-    if (!lua_isnoneornil(L, 2)) {
-        static const char *const modes[] = {"show", "dashed", "hide", NULL};
-        if (!lua_istable(L, 2)) return pcl_argerror(L, 2, "options", "a table {hidden =}");
-        if (lua_getfield(L, 2, "hidden") != LUA_TNIL) {
-            const char *m = lua_tostring(L, -1);
-            for (mode = 0; modes[mode] && !(lua_type(L, -1) == LUA_TSTRING && !strcmp(m, modes[mode])); mode++) {}
-            if (!modes[mode])
-                return pcl_error(L, "camera: argument #2 (hidden) must be \"dashed\", \"hide\" or "
-                                    "\"show\", got %s%s%s", m ? "\"" : "", m ? m : pcl_shown(L, -1),
-                                 m ? "\"" : "");
-        }
-    }
-    pcl_set_hidden_mode(L, mode);
+    pcl_set_hidden_mode(L, a[2].present ? a[2].n : -1);
     lua_settop(L, 1);
     lua_setfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
     return 0;
@@ -126,33 +118,27 @@ const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname)
     return f;
 }
 
-/* Draw a screen-space polyline as one path (world coordinates for the canvas).  Returns the
- * canvas status (its message in the canvas's error) rather than raising, so that the caller
- * can free the polyline first. */
+/* Draw a screen-space polyline as one path: its vertices are screen points already (the one
+ * conversion from world to device was the screen map they were flattened through), so they go
+ * to the canvas as they are.  Returns the canvas status (its message in the canvas's error)
+ * rather than raising, so that the caller can free the polyline first. */
 int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed) {
     pc_canvas *cv = pcl_canvas(L);
     if (pl->n == 0) return PC_OK;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * pl->n, 0);
     uint8_t *verbs = lua_newuserdatauv(L, pl->n, 0);
-    for (size_t i = 0; i < pl->n; i++) {
-        pc_screen_to_world(cv, pl->xy[2 * i], pl->xy[2 * i + 1], &xy[2 * i], &xy[2 * i + 1]);
-        verbs[i] = (i == 0 || pl->move[i]) ? PC_PATH_MOVE : PC_PATH_LINE;
-    }
-    int rc = pc_path(cv, pl->n, xy, verbs, pl->n, closed, color);
-    lua_pop(L, 2);
+    for (size_t i = 0; i < pl->n; i++) verbs[i] = (i == 0 || pl->move[i]) ? PC_PATH_MOVE : PC_PATH_LINE;
+    int rc = pc_path_screen(cv, pl->n, pl->xy, verbs, pl->n, closed, color);
+    lua_pop(L, 1);
     return rc;   /* the message is in the canvas */
 }
 
-/* _tk.draw_curve(c, colour, tol [, map [, pieces]]) */
-static int l_draw_curve(lua_State *L) {
-    pc_curve *c = pcl_tocurve(L, 1);
-    if (!c) return pcl_argerror(L, 1, "curve", "a curve");
+/* The C path of drawing a curve: c flattened through f (NULL: c is 2-D as it is) then WINDOW
+ * and VIEW, the one conversion from world to device coordinates, to within tol pixels, and
+ * stroked on the canvas as one path (closed when c is, or closed is set, and its polyline is
+ * unbroken).  pieces: equal parts to begin the flattening with.  Errors name fname. */
+void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
+                    int color, int closed, const char *fname) {
     pc_canvas *cv = pcl_canvas(L);
-    int color = pcl_optcolor(L, 2, cv);
-    double tol = luaL_optnumber(L, 3, 0.25);
-    if (!(tol > 0)) return pcl_error(L, "c:draw: tol must be a positive number of pixels");
-    const pc_map *f = pcl_drawing_map(L, 4, c->dim, "c:draw");
-    int pieces = (int)luaL_optinteger(L, 5, 1);
     pc_polyline pl = {0};
     /* what can be seen: the canvas and a margin as wide as it (a wide pen, a dash pattern
      * leaving and coming back keep their look) */
@@ -163,36 +149,129 @@ static int l_draw_curve(lua_State *L) {
     if (st != PC_OK) {
         int capped = st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX;
         pc_polyline_free(&pl);
-        if (capped) {
-            char t[32];
-            snprintf(t, sizeof t, "%g", tol);
-            return pcl_error(L, "c:draw: the curve needs more than %d vertices at tol = %s px; "
-                             "draw it with a larger tol", (int)PC_POLYLINE_MAX, t);
-        }
-        return pcl_raise_status(L, "c:draw", st);
+        if (capped)
+            pcl_error(L, "%s: the curve needs more than %d vertices at tol = %s px; draw it with a "
+                         "larger tol", fname, (int)PC_POLYLINE_MAX, pcl_pushnum(L, tol));
+        pcl_raise_status(L, fname, st);
     }
-    pc_scene *sc = c->dim == 3 && lua_isnoneornil(L, 4) ? pcl_scene(L) : NULL;
-    if (sc) {   /* into the scene, sampled as densely as the flattened path */
+    pc_scene *sc = c->dim == 3 && f == pcl_camera(L) ? pcl_scene(L) : NULL;
+    if (sc) {   /* through the camera into the scene, sampled as densely as the flattened path */
         int n = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
         pc_polyline_free(&pl);
         st = pcl_scene_curve(L, sc, c, n, color);
-        return st == PC_OK ? 0 : pcl_raise_status(L, "c:draw", st);
+        if (st != PC_OK) pcl_raise_status(L, fname, st);
+        return;
     }
-    /* a closed curve whose polyline is unbroken closes exactly */
     int unbroken = 1;
     for (size_t i = 1; i < pl.n; i++) unbroken &= !pl.move[i];
-    st = pcl_draw_polyline(L, &pl, color, c->closed && unbroken);
+    st = pcl_draw_polyline(L, &pl, color, (c->closed || closed) && unbroken);
     pc_polyline_free(&pl);
-    if (st != PC_OK) return pcl_error(L, "c:draw: %s", cv->error);
+    if (st != PC_OK) pcl_error(L, "%s: %s", fname, cv->error);
+}
+
+/* A colour: an attribute of the screen or "#rrggbb" (a true colour, allocated on first use). */
+#define COLOR_EXPECT "a colour number of the screen or \"#rrggbb\""
+static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *cv = pcl_canvas(L);
+    size_t len;
+    pc_rgb rgb;
+    int isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER) return isint && v >= 0 && v < cv->ncolors ? (out->x = (double)v, 1) : 0;
+    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
+    if ((out->x = pc_rgb_color(cv, rgb)) < 0) pcl_error(L, "%s", cv->error);
+    return 1;
+}
+
+static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
+
+enum { O_TABLE, O_COLOR, O_TOL, O_MAP, O_CLOSED, O_T, O_BRUSH, O_DOTS, O_QB, O_N };
+static const pcl_arg draw_keys[] = {
+    {.name = "color", .kind = PCL_ANY, .read = read_color, .dflt = -1,
+     .expect = COLOR_EXPECT},
+    {.name = "tol", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 0.25, .shown = "0.25"},
+    {.name = "map", .kind = PCL_ANY}, {.name = "closed", .kind = PCL_BOOLEAN},
+    {.name = "t", .kind = PCL_ANY}, {.name = "brush", .kind = PCL_ANY},
+    {.name = "dots", .kind = PCL_BOOLEAN}, {.name = "qb", .kind = PCL_BOOLEAN}, PCL_END};
+static const pcl_arg draw_args[] = {A_OPTIONS("opts", draw_keys), PCL_END};
+
+/* c:draw{...}: a path through the C path above; dots (t, brush, dots, qb) and maps that are
+ * plain functions go to the Lua walkers of curves.lua (_tk.draw_dots, _tk.draw_mapped). */
+static int c_draw(lua_State *L) {
+    pcl_val o[O_N] = {{0}};
+    pc_curve *c = PCL_READ(L, o);
+    const char *via = o[O_T].present || o[O_BRUSH].present || o[O_DOTS].x || o[O_QB].x ? "draw_dots" : NULL;
+    const pc_map *f = NULL;
+    if (o[O_MAP].present) {
+        lua_getfield(L, 2, "map");
+        if (!(f = pcl_tomap(L, -1))) via = via ? via : "draw_mapped";
+        else if (f->nout != 2 || f->nin != c->dim)
+            pcl_keyfail(L, "map", "must be a map from %d-D to 2-D", c->dim);
+    }
+    if (via) {   /* the Lua walkers, with the options as given */
+        lua_getfield(L, PCL_UPVALUE(1), via);
+        lua_pushvalue(L, 1);
+        if (o[O_TABLE].present) lua_pushvalue(L, 2);
+        else lua_newtable(L);
+        lua_call(L, 2, 0);
+        return 0;
+    }
+    if (!f) f = pcl_drawing_map(L, 0, c->dim, pcl_name(L));
+    pcl_draw_curve(L, c, f, 1, o[O_TOL].x, (int)o[O_COLOR].x, (int)o[O_CLOSED].x, pcl_name(L));
     return 0;
 }
 
+/* _tk.draw_curve(c, colour, tol, map, pieces, fname): the C path for the Lua helpers (plot,
+ * C:draw), which have checked their options; errors name fname. */
+static int tk_draw_curve(lua_State *L) {
+    pc_curve *c = pcl_tocurve(L, 1);
+    const char *fname = luaL_optstring(L, 6, "c:draw");
+    if (!c) return pcl_error(L, "%s: not a curve", fname);
+    pcl_val col = {.x = -1};
+    if (!lua_isnoneornil(L, 2) && !read_color(L, 2, NULL, &col))
+        return pcl_error(L, "%s: option 'color' must be %s, got %s", fname, COLOR_EXPECT, pcl_shown(L, 2));
+    double tol = luaL_optnumber(L, 3, 0.25);
+    if (!(tol > 0)) return pcl_error(L, "%s: option 'tol' must be a positive number, got %s", fname, pcl_shown(L, 3));
+    const pc_map *f = pcl_drawing_map(L, 4, c->dim, fname);
+    pcl_draw_curve(L, c, f, (int)luaL_optinteger(L, 5, 1), tol, (int)col.x, 0, fname);
+    return 0;
+}
+
+/* _tk.nearest(name, set) -> the key of the table set nearest to name (pcl_nearest_key), or nil:
+ * curves.lua checks the option keys of its Lua-written calls with it */
+static int tk_nearest(lua_State *L) {
+    const char *near = pcl_nearest_key(L, luaL_checkstring(L, 1), 2);
+    if (near) lua_pushstring(L, near);
+    return near != NULL;
+}
+
+static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */
+static const pcl_arg camera_keys[] = {A_ENUM("hidden", HIDDEN), PCL_END};
+static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_ANY, .flags = PCL_OPT},
+                                      A_OPTIONS("opts", camera_keys), PCL_END};
+static const pcl_fn fns[] = {
+    {.name = "camera", .fn = l_camera, .args = camera_args,
+     .sig = "camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])\ncamera(nil)\ncamera() -> f",
+     .help = "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order."},
+    PCL_END};
+static const pcl_fn methods[] = {
+    {.name = "c:draw", .fn = c_draw, .args = draw_args, .self = self_curve, .selftype = "curve",
+     .sig = "c:draw{color = c, tol = px, map = m, closed = false}\nc:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, dots = true, qb = false, ...}",
+     .help = "Draw the curve as one path, flattened to within tol pixels (default 1/4) through map or the camera; with t or a brush, dots as the listings draw them."},
+    PCL_END};
+
 void pcl_open_camera(lua_State *L) {
     int module = lua_gettop(L);
-    lua_pushcfunction(L, l_camera);
-    lua_setfield(L, module, "camera");
+    pcl_register(L, module, fns, 0);
     pcl_private(L, module);
-    lua_pushcfunction(L, l_draw_curve);
+    lua_pushcfunction(L, tk_draw_curve);
     lua_setfield(L, -2, "draw_curve");
+    lua_pushcfunction(L, tk_nearest);
+    lua_setfield(L, -2, "nearest");
+    lua_getfield(L, -1, "curve_methods");
+    lua_pushvalue(L, -2);                      /* c:draw's upvalue: _tk, for the Lua walkers */
+    pcl_register(L, -2, methods, 1);
     lua_settop(L, module);
 }

@@ -1,4 +1,5 @@
-/* Binding of the one curve type (stdlib/geom/curve.h) and its constructors:
+/* Binding of the one curve type (stdlib/geom/curve.h) and its constructors, on the declared
+ * argument layer (pcl_args.h; c:draw is in l_camera.c, c:each in curves.lua):
  *   bezier{P0, P1, ...}                 Bezier of any degree; weighted points (w*P) make it
  *                                       rational, vectors are control points at infinity
  *   bspline(points, degree [, knots])   B-spline / NURBS; knots "open" (default), "uniform",
@@ -12,9 +13,11 @@
  * All are one userdata "curve".  c(t) is the point, c:xy(t) its coordinates; the methods are
  * in the table _tk.curve_methods so that stdlib/lua/curves.lua adds draw and each. */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_curve.h"
 #include "spline.h"
 #include "fourier.h"
@@ -136,9 +139,11 @@ static lcurve *newcurve(lua_State *L, pc_curve *c, const char *kind, size_t extr
     return u;
 }
 
-/* Push a new curve object for c (or raise the core's status when c is NULL). */
+/* Push a new curve object for c (or raise the core's status, naming the call, when c is NULL);
+ * kind NULL: the constructor's declared name (a static string). */
 static lcurve *pushcurve(lua_State *L, pc_curve *c, int status, const char *kind, size_t extra) {
-    if (!c) pcl_raise_status(L, kind, status);
+    if (!c) pcl_raise_status(L, pcl_name(L), status);
+    if (!kind) kind = pcl_name(L);
     return newcurve(L, c, kind, extra);
 }
 
@@ -165,12 +170,18 @@ void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
     (void)newcurve(L, c, kind, 0);
 }
 
-static lcurve *checkcurve(lua_State *L, int idx, const char *fname) {
+static void *self_curve(lua_State *L, int idx) {
     lcurve *u = tocurve(L, idx);
-    if (!u || !u->c) pcl_argerror_full(L, fname, idx, idx, "self", "a curve");
+    return u && u->c ? u : NULL;
+}
+
+/* The receiver of a method with its declared arguments read into a; Lua curves evaluate. */
+static lcurve *read_method(lua_State *L, pcl_val *a, int n) {
+    lcurve *u = pcl_read(L, a, n);
     pcl_callback_state(L);
     return u;
 }
+#define READ_METHOD(L, a) read_method((L), (a), (int)(sizeof(a) / sizeof((a)[0])))
 
 static int c_gc(lua_State *L) {
     lcurve *u = luaL_testudata(L, 1, CURVE_MT);
@@ -183,69 +194,89 @@ static int c_gc(lua_State *L) {
     return 0;
 }
 
-/* ---- reading points ------------------------------------------------------------------------- */
+/* ---- lists of values ------------------------------------------------------------------------ */
 
-/* The values of the list at arg as homogeneous rows (any weight: w*P is a weighted control
- * point, a vector one at infinity) into a new scratch userdata; returns the count. */
-static double *read_values(lua_State *L, const char *fn, int arg, const char *what, int min,
-                           int *count, int *dim) {
-    if (!lua_istable(L, arg)) {
-        lua_pushfstring(L, "a list of at least %d points", min);
-        pcl_argerror_full(L, fn, arg, arg, what, lua_tostring(L, -1));
-    }
-    int m = (int)luaL_len(L, arg);
-    if (m < min) {
-        lua_pushfstring(L, "a list of at least %d points, got %d", min, m);
-        pcl_error(L, "%s: argument #%d (%s) must be %s", fn, arg, what, lua_tostring(L, -1));
-    }
-    if (m > 100000) pcl_error(L, "%s: argument #%d (%s) holds too many points (%d)", fn, arg, what, m);
-    int d = 0;
+/* "NAME: argument #k ..." or, for an option key, "NAME: option 'key' ..." */
+static int list_fail(lua_State *L, int k, const char *key, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    const char *msg = lua_pushvfstring(L, fmt, ap);
+    va_end(ap);
+    return key ? pcl_keyfail(L, key, "%s", msg) : pcl_argfail(L, k, "%s", msg);
+}
+
+static int is_table(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a, (void)out;
+    return lua_istable(L, idx);
+}
+#define A_LIST(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = is_table, .expect = "a list of points"}
+#define A_VECTORS(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = is_table, .expect = "a list of vectors"}
+
+/* The list at idx (argument #k, or option key) as rows: vectors set, vectors of *dim
+ * components; else homogeneous rows of any weight (w*P is a weighted control point, a vector
+ * one at infinity), *dim 0 taking the first one's.  lo..hi entries (hi 0: no cap); the rows go
+ * into a scratch userdata left on the stack. */
+static double *read_rows(lua_State *L, int idx, int k, const char *key, int vectors, int lo,
+                         int hi, int *count, int *dim) {
+    idx = lua_absindex(L, idx);
+    lua_Integer len = luaL_len(L, idx);
+    int m = len < 0 ? 0 : len > 100000 ? 100001 : (int)len, w = 0;
+    const char *unit = vectors ? "vectors" : "points";
+    if (hi > 0 && lo == hi && m != lo) list_fail(L, k, key, "must hold %d %s, got %d", lo, unit, m);
+    if (hi > 0 && (m < lo || m > hi)) list_fail(L, k, key, "must hold %d to %d %s, got %d", lo, hi, unit, m);
+    if (m < lo || m > 100000) list_fail(L, k, key, "must hold at least %d %s, got %d", lo, unit, m);
     double *h = NULL;
     for (int i = 1; i <= m; i++) {
-        lua_geti(L, arg, i);
-        pcl_value *v = pcl_tovalue(L, -1);
-        if (!v) pcl_error(L, "%s: argument #%d (%s) item [%d] must be a point, got %s", fn, arg,
-                          what, i, luaL_typename(L, -1));
-        if (i == 1) {
-            d = v->n;
-            lua_pop(L, 1);
-            h = lua_newuserdatauv(L, sizeof(double) * (size_t)m * (size_t)(d + 1), 0);
-            lua_insert(L, -1);
-            lua_geti(L, arg, i);
-            v = pcl_tovalue(L, -1);
-        } else if (v->n != d) {
-            pcl_error(L, "%s: argument #%d (%s) item [%d] is %d-D, but item [1] is %d-D: "
-                      "dimensions cannot be mixed", fn, arg, what, i, v->n, d);
+        lua_geti(L, idx, i);
+        int top = lua_gettop(L);
+        pcl_value *v = pcl_tovalue(L, top);
+        if (!v) list_fail(L, k, key, "[%d] must be a %s, got %s", i, vectors ? "vector" : "point", pcl_shown(L, top));
+        if (!h && !*dim) *dim = v->n;
+        if (v->n != *dim)
+            list_fail(L, k, key, vectors ? "[%d] is %d-D, but the points are %d-D (mixed dimensions)"
+                                         : "[%d] is %d-D, but [1] is %d-D (mixed dimensions)", i, v->n, *dim);
+        if (vectors && pc_kind_of(v->h[v->n]) != PC_KIND_VECTOR)
+            list_fail(L, k, key, "[%d] must be a %d-D vector, got %s; a vector has weight 0: a difference "
+                      "of points is a vector, e.g. B - A", i, *dim, pcl_shown(L, top));
+        for (int j = 0; j <= *dim; j++)
+            if (!isfinite(v->h[j])) list_fail(L, k, key, "[%d] has NaN or infinite coordinates", i);
+        if (!h) {
+            w = *dim + !vectors;
+            h = lua_newuserdatauv(L, sizeof(double) * (size_t)(m ? m : 1) * (size_t)w, 0);
+            lua_insert(L, -2);
         }
-        for (int k = 0; k <= d; k++) {
-            if (!isfinite(v->h[k]))
-                pcl_error(L, "%s: argument #%d (%s) item [%d] has NaN or infinite coordinates",
-                          fn, arg, what, i);
-            h[(size_t)(i - 1) * (d + 1) + k] = v->h[k];
-        }
+        memcpy(h + (size_t)(i - 1) * w, v->h, sizeof(double) * (size_t)w);
         lua_pop(L, 1);
     }
     *count = m;
-    *dim = d;
-    return h;   /* the scratch userdata stays on the stack */
+    return h;
 }
 
-/* Cartesian rows (weight 1 required, or 0 when vectors is set) from homogeneous ones. */
-static void cartesian(lua_State *L, const char *fn, int arg, const char *what, int m, int d,
-                      double *h, int vectors) {
-    for (int i = 0; i < m; i++) {
-        double w = h[(size_t)i * (d + 1) + d];
-        if (vectors ? fabs(w) > PC_WEIGHT_TOL : fabs(w - 1) > PC_WEIGHT_TOL)
-            pcl_error(L, "%s: argument #%d (%s) item [%d] must be a %s (weight %d), got weight %s",
-                      fn, arg, what, i + 1, vectors ? "vector" : "point", vectors ? 0 : 1,
-                      pcl_pushnum(L, w));
-    }
-    /* compact in place: row i of d+1 -> row i of d */
-    for (int i = 0; i < m; i++)
-        for (int k = 0; k < d; k++) h[(size_t)i * d + k] = h[(size_t)i * (d + 1) + k];
+/* The parameters of n nodes given as option key (or argument #k): n numbers, increasing unless
+ * any order will do (interpolation: distinct ones, which the core checks). */
+static const double *params(lua_State *L, const pcl_val *v, int k, const char *key, int n, int any) {
+    if (!v->present) return NULL;
+    if (v->n != n) list_fail(L, k, key, "must hold %d numbers (one per point), got %d", n, v->n);
+    for (int i = 1; i < n && !any; i++)
+        if (!(v->list[i] > v->list[i - 1]))
+            list_fail(L, k, key, "must increase, but [%d] = %s follows [%d] = %s", i + 1,
+                      pcl_pushnum(L, v->list[i]), i, pcl_pushnum(L, v->list[i - 1]));
+    return v->list;
 }
 
-/* A list of m finite numbers at arg (or the field of an options table on the stack top). */
+/* ---- constructors ------------------------------------------------------------------------------ */
+
+static const pcl_arg bezier_args[] = {A_LIST("points", 0), PCL_END};
+static int l_bezier(lua_State *L) {
+    pcl_val a[1] = {{0}};
+    PCL_READ(L, a);
+    int m, d = 0, st;
+    double *h = read_rows(L, 1, 1, NULL, 0, 2, PC_CURVE_MAXDEG + 1, &m, &d);
+    pushcurve(L, pc_curve_bezier(d, m, h, &st), st, NULL, 0);
+    return 1;
+}
+
+/* A list of m finite numbers at arg (surface.bspline's knots, through pcl_checkknots). */
 static double *read_numbers(lua_State *L, const char *fn, int idx, const char *what, int m) {
     idx = lua_absindex(L, idx);
     if (!lua_istable(L, idx) || (int)luaL_len(L, idx) != m) {
@@ -263,17 +294,6 @@ static double *read_numbers(lua_State *L, const char *fn, int idx, const char *w
         lua_pop(L, 1);
     }
     return x;   /* stays on the stack */
-}
-
-/* ---- constructors ------------------------------------------------------------------------------ */
-
-static int l_bezier(lua_State *L) {
-    int m, d;
-    double *h = read_values(L, "bezier", 1, "points", 2, &m, &d);
-    int st;
-    pc_curve *c = pc_curve_bezier(d, m, h, &st);
-    pushcurve(L, c, st, "bezier", 0);
-    return 1;
 }
 
 pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree,
@@ -302,205 +322,163 @@ pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int 
                        "\"open\", \"uniform\", \"periodic\" or a list of numbers");
 }
 
+/* The knots of bspline: "open", "uniform", "periodic" or a list of numbers. */
+static int read_knots(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    static const char *const kinds[] = {"open", "uniform", "periodic", NULL};
+    (void)a;
+    if (lua_istable(L, idx)) return (out->n = -1), 1;
+    for (int i = 0; lua_type(L, idx) == LUA_TSTRING && kinds[i]; i++)
+        if (!strcmp(lua_tostring(L, idx), kinds[i])) return (out->n = i), 1;
+    return 0;
+}
+static const pcl_arg bspline_args[] = {A_LIST("points", 0), {.name = "degree", .kind = PCL_INTEGER},
+    {.name = "knots", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_knots,
+     .expect = "\"open\", \"uniform\", \"periodic\" or a list of numbers"}, PCL_END};
 static int l_bspline(lua_State *L) {
-    const char *fn = "bspline";
-    lua_settop(L, 3);
-    int m, d;
-    double *h = read_values(L, fn, 1, "points", 2, &m, &d);
-    if (lua_type(L, 2) != LUA_TNUMBER || !lua_isinteger(L, 2))
-        pcl_argerror_full(L, fn, 2, 2, "degree", "an integer");
-    lua_Integer p = lua_tointeger(L, 2);
-    if (lua_type(L, 3) == LUA_TSTRING && !strcmp(lua_tostring(L, 3), "periodic")) {
-        if (p < 1 || p > m) {
-            lua_pushfstring(L, "an integer 1..%d (the number of points)", m);
-            pcl_argerror_full(L, fn, 2, 2, "degree", lua_tostring(L, -1));
-        }
-    } else if (p < 1 || p >= m) {
-        lua_pushfstring(L, "an integer 1..%d (fewer than the %d points)", m - 1, m);
-        pcl_argerror_full(L, fn, 2, 2, "degree", lua_tostring(L, -1));
+    pcl_val a[3] = {{0}};
+    PCL_READ(L, a);
+    int m, d = 0, p = a[1].x < 1 || a[1].x > PC_CURVE_MAXDEG ? 0 : (int)a[1].x;
+    double *h = read_rows(L, 1, 1, NULL, 0, 2, 0, &m, &d);
+    int periodic = a[2].present && a[2].n == 2;
+    if (p < 1 || p > (periodic ? m : m - 1))
+        return periodic ? pcl_argfail(L, 2, "must be an integer from 1 to %d (the number of points), got %s",
+                                      m, pcl_shown(L, 2))
+                        : pcl_argfail(L, 2, "must be an integer from 1 to %d (fewer than the %d points), got %s",
+                                      m > PC_CURVE_MAXDEG ? PC_CURVE_MAXDEG : m - 1, m, pcl_shown(L, 2));
+    static const pc_knot_kind kinds[] = {PC_KNOTS_OPEN, PC_KNOTS_UNIFORM, PC_KNOTS_PERIODIC};
+    pc_knot_kind kk = !a[2].present ? PC_KNOTS_OPEN : a[2].n < 0 ? PC_KNOTS_GIVEN : kinds[a[2].n];
+    double *knots = NULL;
+    if (kk == PC_KNOTS_GIVEN) {
+        static const pcl_arg list = A_NUMBERS("knots", 0, 0);
+        pcl_val kv = {0};
+        pcl_readone(L, 3, 3, 0, &list, 0, &kv);
+        if (kv.n != m + p + 1)
+            return pcl_argfail(L, 3, "must hold points + degree + 1 = %d knots, got %d", m + p + 1, kv.n);
+        knots = kv.list;
+        for (int i = 1; i < kv.n; i++)
+            if (knots[i] < knots[i - 1])
+                return pcl_argfail(L, 3, "must be non-decreasing, but knot [%d] = %s is less than knot "
+                                   "[%d] = %s", i + 1, pcl_pushnum(L, knots[i]), i, pcl_pushnum(L, knots[i - 1]));
+        if (!(knots[p] < knots[m]))   /* the domain [knot p+1, knot points+1] */
+            return pcl_argfail(L, 3, "leaves no domain: knot [%d] = %s (the start) must be less than knot "
+                               "[%d] = %s (the end)", p + 1, pcl_pushnum(L, knots[p]), m + 1, pcl_pushnum(L, knots[m]));
     }
-    if (p > PC_CURVE_MAXDEG) pcl_error(L, "%s: the degree is at most %d", fn, PC_CURVE_MAXDEG);
-    double *knots;
-    pc_knot_kind kk = pcl_checkknots(L, fn, 3, m, (int)p, &knots);
     int st;
-    pc_curve *c = pc_curve_bspline(d, (int)p, m, h, kk, knots, &st);
-    pushcurve(L, c, st, "bspline", 0);
+    pushcurve(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), st, NULL, 0);
     return 1;
 }
 
-/* The options table at arg (nil allowed); returns whether there is one. */
-static int opts_table(lua_State *L, const char *fn, int arg) {
-    if (lua_isnoneornil(L, arg)) return 0;
-    if (!lua_istable(L, arg)) pcl_argerror_full(L, fn, arg, arg, "opts", "a table");
-    return 1;
-}
-
-/* opts.u: a list of n increasing parameters, or NULL */
-static double *opt_params(lua_State *L, const char *fn, int opts, const char *field, int n) {
-    if (!opts) return NULL;
-    if (lua_getfield(L, opts, field) == LUA_TNIL) {
-        lua_pop(L, 1);
-        return NULL;
-    }
-    double *u = read_numbers(L, fn, -1, field, n);
-    lua_remove(L, -2);
-    return u;
-}
-
+static const pcl_arg hermite_keys[] = {A_VECTORS("tin", 0), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
+static const pcl_arg hermite_args[] = {A_POINTS("points", 0, 2, 0), A_VECTORS("tangents", 0),
+                                       A_OPTIONS("opts", hermite_keys), PCL_END};
 static int l_hermite(lua_State *L) {
-    const char *fn = "hermite";
-    lua_settop(L, 3);
-    int n, d, nt, dt;
-    double *p = read_values(L, fn, 1, "points", 2, &n, &d);
-    cartesian(L, fn, 1, "points", n, d, p, 0);
-    double *t = read_values(L, fn, 2, "tangents", 1, &nt, &dt);
-    if (nt != n || dt != d)
-        pcl_error(L, "%s: argument #2 (tangents) must hold %d %d-D vectors, one per point, got %d "
-                  "%d-D", fn, n, d, nt, dt);
-    cartesian(L, fn, 2, "tangents", n, d, t, 1);
-    int opts = opts_table(L, fn, 3) ? 3 : 0;
-    double *tin = NULL;
-    int closed = 0;
-    if (opts) {
-        if (lua_getfield(L, opts, "tin") != LUA_TNIL) {
-            int ni, di;
-            tin = read_values(L, fn, lua_gettop(L), "tin", 1, &ni, &di);
-            if (ni != n || di != d)
-                pcl_error(L, "%s: opts.tin must hold %d %d-D vectors", fn, n, d);
-            cartesian(L, fn, 3, "tin", n, d, tin, 1);
-        }
-        lua_getfield(L, opts, "closed");
-        closed = lua_toboolean(L, -1);
-        lua_pop(L, 1);
+    pcl_val a[6] = {{0}};   /* points, tangents, opts, tin, u, closed */
+    PCL_READ(L, a);
+    int n = a[0].n, d = a[0].dim, nt;
+    double *t = read_rows(L, 2, 2, NULL, 1, n, n, &nt, &d), *tin = NULL;
+    if (a[3].present) {
+        lua_getfield(L, 3, "tin");
+        tin = read_rows(L, -1, 3, "tin", 1, n, n, &nt, &d);
     }
-    double *u = opt_params(L, fn, opts, "u", n);
     int st;
-    pc_curve *c = pc_curve_hermite(d, n, p, t, tin, u, closed, &st);
-    pushcurve(L, c, st, "hermite", 0);
+    pc_curve *c = pc_curve_hermite(d, n, a[0].list, t, tin, params(L, &a[4], 3, "u", n, 0),
+                                   (int)a[5].x, &st);
+    pushcurve(L, c, st, NULL, 0);
     return 1;
 }
 
+static const char *const ENDS[] = {"natural", "clamped", "periodic", NULL};
+static const pcl_arg spline_keys[] = {A_ENUM("ends", ENDS), {.name = "d0", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
+                                      {.name = "d1", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM}, A_NUMBERS("u", 0, 0), PCL_END};
+static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
+                                      A_OPTIONS("opts", spline_keys), PCL_END};
 static int l_cubic_spline(lua_State *L) {
-    const char *fn = "cubic_spline";
-    lua_settop(L, 2);
-    int n, d;
-    double *p = read_values(L, fn, 1, "points", 2, &n, &d);
-    cartesian(L, fn, 1, "points", n, d, p, 0);
-    int opts = opts_table(L, fn, 2) ? 2 : 0;
-    pc_end_kind ends = PC_END_NATURAL;
-    double d0[PC_MAXDIM], d1[PC_MAXDIM];
-    if (opts) {
-        if (lua_getfield(L, opts, "ends") != LUA_TNIL) {
-            const char *s = lua_tostring(L, -1);
-            if (s && !strcmp(s, "natural")) ends = PC_END_NATURAL;
-            else if (s && !strcmp(s, "clamped")) ends = PC_END_CLAMPED;
-            else if (s && !strcmp(s, "periodic")) ends = PC_END_PERIODIC;
-            else pcl_error(L, "%s: opts.ends must be \"natural\", \"clamped\" or \"periodic\", got %s",
-                           fn, s ? s : luaL_typename(L, -1));
-        }
-        lua_pop(L, 1);
-        if (ends == PC_END_CLAMPED) {
-            const char *names[2] = {"d0", "d1"};
-            double *dst[2] = {d0, d1};
-            for (int e = 0; e < 2; e++) {
-                lua_getfield(L, opts, names[e]);
-                pcl_value *v = pcl_tovalue(L, -1);
-                if (!v || v->n != d || fabs(v->h[d]) > PC_WEIGHT_TOL)
-                    pcl_error(L, "%s: opts.%s must be a %d-D vector (the end derivative) for "
-                              "clamped ends, got %s", fn, names[e], d,
-                              v ? "a point or another dimension" : luaL_typename(L, -1));
-                memcpy(dst[e], v->h, sizeof(double) * (size_t)d);
-                lua_pop(L, 1);
-            }
-        }
-    }
-    double *u = opt_params(L, fn, opts, "u", n);
-    int st;
-    pc_curve *c = pc_curve_cubic_spline(d, n, p, u, ends, d0, d1, &st);
-    pushcurve(L, c, st, "cubic_spline", 0);
+    pcl_val a[6] = {{0}};   /* points, opts, ends, d0, d1, u */
+    PCL_READ(L, a);
+    static const pc_end_kind kinds[] = {PC_END_NATURAL, PC_END_CLAMPED, PC_END_PERIODIC};
+    if (a[2].n == 1 && (!a[3].present || !a[4].present))
+        return pcl_fail(L, "clamped ends need the end derivatives d0 and d1 (vectors)");
+    int n = a[0].n, st;
+    pc_curve *c = pc_curve_cubic_spline(a[0].dim, n, a[0].list, params(L, &a[5], 2, "u", n, 0),
+                                        kinds[a[2].n], a[3].v, a[4].v, &st);
+    pushcurve(L, c, st, NULL, 0);
     return 1;
 }
 
+static const pcl_arg interpolate_args[] = {A_POINTS("points", 0, 2, PC_CURVE_MAXDEG + 1),
+                                           {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT}, PCL_END};
 static int l_interpolate(lua_State *L) {
-    const char *fn = "interpolate";
-    lua_settop(L, 2);
-    int n, d;
-    double *p = read_values(L, fn, 1, "points", 2, &n, &d);
-    cartesian(L, fn, 1, "points", n, d, p, 0);
-    if (n > PC_CURVE_MAXDEG + 1) pcl_error(L, "%s: at most %d points", fn, PC_CURVE_MAXDEG + 1);
-    double *u = NULL;
-    if (!lua_isnoneornil(L, 2)) u = read_numbers(L, fn, 2, "argument #2 (params)", n);
+    pcl_val a[2] = {{0}};
+    PCL_READ(L, a);
     int st;
-    pc_curve *c = pc_curve_interpolate(d, n, p, u, &st);
-    pushcurve(L, c, st, "interpolate", 0);
+    pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, params(L, &a[1], 2, NULL, a[0].n, 1), &st);
+    pushcurve(L, c, st, NULL, 0);
     return 1;
 }
 
+static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a, (void)out;
+    return pcl_isequation(L, idx) || callable(L, idx);
+}
+static const pcl_arg curve_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_curve_fn,
+                                      .expect = "a function of t or an equation"}, A_NUM("t0"), A_NUM("t1"), PCL_END};
 /* curve(f, t0, t1): the dimension is that of f(t0) */
 static int l_curve(lua_State *L) {
-    const char *fn = "curve";
+    pcl_val a[3] = {{0}};
+    PCL_READ(L, a);
+    int st;
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        int st;
-        pc_curve *c = pcl_eq_curve(L, fn, &st);
-        pushcurve(L, c, st, "equation", 0);
+        pushcurve(L, pcl_eq_curve(L, pcl_name(L), &st), st, "equation", 0);
         return 1;
     }
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of t or an equation");
-    double t0 = pcl_checknum(L, fn, 2, "t0"), t1 = pcl_checknum(L, fn, 3, "t1");
-    if (!(t1 > t0)) pcl_error(L, "%s: argument #3 (t1) must be greater than t0", fn);
+    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
-    lua_pushnumber(L, t0);
+    lua_pushnumber(L, a[1].x);
     lua_call(L, 1, LUA_MULTRET);
-    int nres = lua_gettop(L) - 3, d;
+    int nres = lua_gettop(L) - 3;
     pcl_value *v = nres ? pcl_tovalue(L, 4) : NULL;
-    d = v ? v->n : nres;
+    int d = v ? v->n : nres;
     for (int i = 0; !v && i < nres; i++)
         if (lua_type(L, 4 + i) != LUA_TNUMBER)
-            pcl_error(L, "%s: a curve must return a point or numbers, got %s", fn,
-                      luaL_typename(L, 4 + i));
+            return pcl_fail(L, "a curve must return a point or numbers, got %s", luaL_typename(L, 4 + i));
     if (d < 1 || d > PC_MAXDIM)
-        pcl_error(L, "%s: a curve must return a point or 1..%d numbers, got %s", fn, PC_MAXDIM,
-                  nres ? luaL_typename(L, 4) : "nothing");
+        return pcl_fail(L, "a curve must return a point or 1..%d numbers, got %s", PC_MAXDIM,
+                        nres ? luaL_typename(L, 4) : "nothing");
     lua_settop(L, 3);
     luafn *f = malloc(sizeof *f);
-    if (!f) return pcl_error(L, "%s: out of memory", fn);
+    if (!f) return pcl_fail(L, "out of memory");
     f->dim = d;
     f->np = 0;
     lua_pushvalue(L, 1);
     f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
-    int st;
     pcl_callback_state(L);
-    pc_curve *c = pc_curve_func(d, t0, t1, 0, luafn_eval, luafn_free, f, &st);
-    pushcurve(L, c, st, fn, 0);
+    pushcurve(L, pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, luafn_free, f, &st), st, NULL, 0);
     return 1;
 }
 
 /* ---- Stepanov's curves ------------------------------------------------------------------------- */
 
 /* The smoothstep at idx: nil (the default kind dflt), smooth.sine, smooth.cubic, a half-spline
- * object, or any other callable (then *lua is set). */
-static void check_g(lua_State *L, const char *fname, int idx, int dflt, pc_gfun *g, int *lua) {
+ * object, or any other callable (*lua set); 0 if it is none of these. */
+static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g, int *lua) {
     *lua = 0;
     memset(g, 0, sizeof *g);
     g->kind = (pc_gkind)dflt;
-    if (lua_isnoneornil(L, idx)) return;
+    if (lua_isnoneornil(L, idx)) return 1;
     int kind;
-    if (lua_iscfunction(L, idx) && pcl_smooth_isfunc(lua_tocfunction(L, idx), &kind)) {
-        g->kind = (pc_gkind)kind;
-        return;
-    }
-    pc_hspline *h = pcl_tohspline(L, idx);
-    if (h) {
-        g->kind = PC_G_HALF;
-        g->h = *h;
-        return;
-    }
-    if (callable(L, idx)) {
-        *lua = 1;
-        return;
-    }
-    pcl_argerror_full(L, fname, idx, idx, "g", "a smoothstep (a function of t)");
+    pc_hspline *h;
+    if (lua_iscfunction(L, idx) && pcl_smooth_isfunc(lua_tocfunction(L, idx), &kind)) g->kind = (pc_gkind)kind;
+    else if ((h = pcl_tohspline(L, idx))) g->kind = PC_G_HALF, g->h = *h;
+    else if (callable(L, idx)) *lua = 1;
+    else return 0;
+    return 1;
+}
+static int read_g(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    pc_gfun g;
+    int lua;
+    (void)a, (void)out;
+    return to_g(L, idx, PC_G_CUBIC, &g, &lua);
 }
 
 /* A stroke (or spline2) of np pieces as a curve: C smoothsteps in the core, a Lua one through
@@ -533,28 +511,24 @@ static lcurve *push_stroke(lua_State *L, const char *kind, int tk, int d, int np
     return u;
 }
 
+static const pcl_arg spline2_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("a"), A_SAMEPOINT("B"), A_SAMEVECTOR("b"),
+    {.name = "g", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_g, .expect = "a smoothstep (a function of t)"}, PCL_END};
 static int l_spline2(lua_State *L) {
-    const char *fn = "spline2";
-    double A[PC_MAXDIM], a[PC_MAXDIM], B[PC_MAXDIM], b[PC_MAXDIM];
-    int d = pcl_checkloc(L, 1, "A", 0, 0, A);
-    if (d > PC_CURVE_MAXDIM)
-        return pcl_error(L, "%s: argument #1 (A) must be a point of dimension 1..%d, got %d-D", fn, PC_CURVE_MAXDIM, d);
-    pcl_checkvec(L, 2, "a", d, 1, a);
-    pcl_checkloc(L, 3, "B", d, 1, B);
-    pcl_checkvec(L, 4, "b", d, 1, b);
+    pcl_val a[5] = {{0}};
+    PCL_READ(L, a);
+    int d = a[0].n, lua;
     pc_gfun g;
-    int lua;
-    check_g(L, fn, 5, PC_G_CUBIC, &g, &lua);
+    to_g(L, 5, PC_G_CUBIC, &g, &lua);
     pc_piece pc;
     memset(&pc, 0, sizeof pc);
     for (int k = 0; k < d; k++) {
-        pc.a[k] = A[k];
-        pc.p[k] = A[k] + a[k];
-        pc.q[k] = B[k] - b[k];
-        pc.b[k] = B[k];
+        pc.a[k] = a[0].v[k];
+        pc.p[k] = a[0].v[k] + a[1].v[k];
+        pc.q[k] = a[2].v[k] - a[3].v[k];
+        pc.b[k] = a[2].v[k];
     }
     pc.g = g;
-    push_stroke(L, fn, TK_SPLINE2, d, 1, 0, &pc, lua, 5);
+    push_stroke(L, pcl_name(L), TK_SPLINE2, d, 1, 0, &pc, lua, 5);
     return 1;
 }
 
@@ -598,7 +572,7 @@ static int l_stroke_raw(lua_State *L) {
     double *t0 = flat_numbers(L, 10, k, buf + 3 * sz + 4 * k, 1);
     pc_gfun g;
     int lua;
-    check_g(L, "stroke", 11, PC_G_HALF, &g, &lua);
+    if (!to_g(L, 11, PC_G_HALF, &g, &lua)) return pcl_error(L, "stroke: option 'g' must be a smoothstep (a function of t), got %s", pcl_shown(L, 11));
     int np = pc_stroke_npieces(k, closed);
     pc_stroke_spec spec = {.d = d, .nnodes = k, .closed = closed, .nodes = nodes, .ein = ein,
                            .eout = eout, .rin = rin, .rout = rout, .n = n, .m = m, .t0 = t0};
@@ -618,52 +592,29 @@ static int l_stroke_raw(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg fourier_args[] = {A_POINTS("points", 0, 2, 0), PCL_END};
 static int l_fourier(lua_State *L) {
-    const char *fn = "fourier";
-    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "points", "a list of 2n points");
-    int count = (int)luaL_len(L, 1);
-    if (count < 2 || count % 2) {
-        lua_pushfstring(L, "a list of an even number (2n >= 2) of points, got %d", count);
-        return pcl_error(L, "%s: argument #1 (points) must be %s", fn, lua_tostring(L, -1));
-    }
-    int n = count / 2, d = 0;
-    double *samples = NULL;
-    for (int i = 0; i < count; i++) {
-        lua_geti(L, 1, i + 1);
-        pcl_value *p = pcl_tovalue(L, -1);
-        double loc[PC_MAXDIM];
-        if (!p || pc_loc(p->n, p->h, loc) != PC_OK)
-            return pcl_error(L, "%s: points[%d] must be a point, got %s", fn, i + 1,
-                              p ? "a vector or weighted value" : luaL_typename(L, -1));
-        if (i == 0) {
-            d = p->n;
-            if (d > PC_CURVE_MAXDIM)
-                return pcl_error(L, "%s: points must be 1-D to %d-D, got %d-D", fn, PC_CURVE_MAXDIM, d);
-            samples = lua_newuserdatauv(L, sizeof(double) * (size_t)count * (size_t)d, 0);
-            lua_insert(L, -2);
-        } else if (p->n != d) {
-            return pcl_error(L, "%s: points[%d] is %d-D, but points[1] is %d-D: dimensions "
-                              "cannot be mixed", fn, i + 1, p->n, d);
-        }
-        for (int k = 0; k < d; k++) samples[i * d + k] = loc[k];
-        lua_pop(L, 1);
-    }
-    int m = n + 1, st;
-    pc_curve *c = pc_curve_fourier(d, n, samples, &st);
-    lcurve *u = pushcurve(L, c, st, fn, sizeof(double) * (size_t)(2 * m * d));
+    pcl_val a[1] = {{0}};
+    PCL_READ(L, a);
+    int count = a[0].n, d = a[0].dim, n = count / 2, m = n + 1, st;
+    if (count % 2) return pcl_argfail(L, 1, "must hold an even number (2n >= 2) of points, got %d", count);
+    double *samples = a[0].list;
+    lcurve *u = pushcurve(L, pc_curve_fourier(d, n, samples, &st), st, NULL, sizeof(double) * (size_t)(2 * m * d));
     u->tk = TK_FOURIER;
     u->n = n;
     for (int k = 0; k < d; k++) {   /* the coefficients again, for c:coef */
         st = pc_fourier_coef(n, samples + k, d, u->data + 2 * k * m, u->data + (2 * k + 1) * m);
-        if (st != PC_OK) return pcl_statuserror(L, fn, st, "points");
+        if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "points");
     }
     return 1;
 }
 
+static const pcl_arg sphdir_args[] = {A_NUM("u1"), A_NUM("u2"), PCL_END};
 static int l_sphdir(lua_State *L) {
-    double u1 = pcl_checknum(L, "sphdir", 1, "u1"), u2 = pcl_checknum(L, "sphdir", 2, "u2");
+    pcl_val a[2] = {{0}};
+    PCL_READ(L, a);
     double e[3];
-    pc_dir3(u1, u2, e);
+    pc_dir3(a[0].x, a[1].x, e);
     pcl_pushvector(L, 3, e);
     return 1;
 }
@@ -671,7 +622,7 @@ static int l_sphdir(lua_State *L) {
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
 /* A stroke piece's half-spline of fractional degree has no value past its ends: say which. */
-static int domain_error(lua_State *L, lcurve *u, const char *fname, double t) {
+static int domain_error(lua_State *L, lcurve *u, double t) {
     if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) {
         double fl = floor(t);
         int i = fl < 0 ? 0 : (fl > u->np - 1 ? u->np - 1 : (int)fl);
@@ -681,19 +632,18 @@ static int domain_error(lua_State *L, lcurve *u, const char *fname, double t) {
             int low = s < 0;
             const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
             const char *bound = pcl_pushnum(L, low ? 0 : u->np);
-            lua_pushfstring(L, "%s %s (piece %d's half-spline has the fractional degree %s = %s "
-                            "and does not extrapolate)", low ? "at least" : "at most", bound,
-                            i + 1, low ? "n" : "m", deg);
-            return pcl_argerror_full(L, fname, 2, 1, "t", lua_tostring(L, -1));
+            return pcl_argfail(L, 1, "must be %s %s (piece %d's half-spline has the fractional degree "
+                               "%s = %s and does not extrapolate)", low ? "at least" : "at most", bound,
+                               i + 1, low ? "n" : "m", deg);
         }
     }
-    return pcl_raise_status(L, fname, PC_EDOMAIN);
+    return pcl_raise_status(L, pcl_name(L), PC_EDOMAIN);
 }
 
-static void eval_at(lua_State *L, lcurve *u, double t, double *h, const char *fname) {
+static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
     int st = pc_curve_eval_h(u->c, t, 0, h);
-    if (st == PC_EDOMAIN) domain_error(L, u, fname, t);
-    if (st != PC_OK) pcl_raise_status(L, fname, st);
+    if (st == PC_EDOMAIN) domain_error(L, u, t);
+    if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
 }
 
 /* c(t): the value at t, a point (a vector where the curve is at infinity; a rational curve's
@@ -710,87 +660,88 @@ static void push_h(lua_State *L, int d, const double *h) {
     }
 }
 
+static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
+/* c(t), and c(u^2) of a scalar equation: a single-piece Bezier composed with it (l_expr.c) */
+static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x)) || pcl_isequation(L, idx);
+}
+static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or a scalar equation"}, PCL_END};
 static int c_call(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "curve");
-    if (lua_type(L, 2) == LUA_TUSERDATA && pcl_eq_curve_apply(L, u->c, 2)) return 1;   /* C(u^2) */
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
     double h[PC_MAXDIM + 1];
-    eval_at(L, u, pcl_checknum_m(L, u->kind, 2, "t"), h, u->kind);
+    eval_at(L, u, a[0].x, h);
     push_h(L, u->c->dim, h);
     return 1;
 }
 
 static int c_xy(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:xy");
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
     double h[PC_MAXDIM + 1];
-    eval_at(L, u, pcl_checknum_m(L, "c:xy", 2, "t"), h, "c:xy");
+    eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
-    if (h[d] == 0)
-        return pcl_error(L, "c:xy: the curve is at infinity at t = %s", pcl_pushnum(L, lua_tonumber(L, 2)));
+    if (h[d] == 0) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k] / h[d]);
     return d;
 }
 
-/* c:deriv(t [, order]) -> the derivative vector (order 1 or 2) */
 /* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
- * "left" is asked for */
+ * "left" is asked for (the side may stand in the order's place) */
+static const char *const SIDES[] = {"left", "right", NULL};
+static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT},
+    {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
 static int c_deriv(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:deriv");
-    double t = pcl_checknum_m(L, "c:deriv", 2, "t");
-    int sarg = 3;
-    lua_Integer order = 1;
-    if (lua_type(L, 3) == LUA_TNUMBER) {
-        if (!lua_isinteger(L, 3)) pcl_argerror_full(L, "c:deriv", 3, 2, "order", "a whole number from 1 to 64");
-        order = lua_tointeger(L, 3);
-        sarg = 4;
-    } else if (!lua_isnoneornil(L, 3) && lua_type(L, 3) != LUA_TSTRING) {
-        pcl_argerror_full(L, "c:deriv", 3, 2, "order", "a whole number from 1 to 64, or \"left\" / \"right\"");
+    pcl_val a[3] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    int order = 1, side = a[2].present ? (a[2].n ? 1 : -1) : 0;
+    double x = lua_tonumber(L, 3);
+    if (lua_type(L, 3) == LUA_TSTRING && !a[2].present) {
+        const char *s = lua_tostring(L, 3);
+        if (strcmp(s, "left") && strcmp(s, "right"))
+            return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
+        side = s[0] == 'l' ? -1 : 1;
+    } else if (a[1].present) {
+        if (lua_type(L, 3) != LUA_TNUMBER || x != floor(x) || x < 1 || x > PC_CURVE_MAXDEG)
+            return pcl_argfail(L, 2, "must be a whole number from 1 to %d, or \"left\" / \"right\", got %s",
+                               PC_CURVE_MAXDEG, pcl_shown(L, 3));
+        order = (int)x;
     }
-    if (order < 1 || order > PC_CURVE_MAXDEG) pcl_argerror_full(L, "c:deriv", 3, 2, "order", "a whole number from 1 to 64");
-    int side = 0;
-    if (!lua_isnoneornil(L, sarg)) {
-        const char *sd = lua_tostring(L, sarg);
-        if (lua_type(L, sarg) != LUA_TSTRING || (strcmp(sd, "left") && strcmp(sd, "right")))
-            pcl_argerror_full(L, "c:deriv", sarg, sarg - 1, "side", "\"left\" or \"right\"");
-        side = sd[0] == 'l' ? -1 : 1;
-    }
-    int d = u->c->dim;
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
-    pcl_callback_state(L);
-    int st = pc_curve_derivs_n(u->c, t, (int)order, side, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:deriv: the curve is at infinity at t = %s", pcl_pushnum(L, t));
+    int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
     if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
-        return pcl_error(L, "c:deriv: a function curve gives derivatives up to order 2, not %d", (int)order);
-    if (st != PC_OK) return pcl_raise_status(L, "c:deriv", st);
-    pcl_pushvector(L, d, out + (size_t)order * d);
+        return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushvector(L, u->c->dim, out + (size_t)order * u->c->dim);
     return 1;
 }
 
 /* c:monomial([piece]): the power-basis coefficients of a piece in the curve's parameter:
  * {{a0, a1, ...} of x, {...} of y, ...}, and w = {...} for a rational curve */
+static const pcl_arg piece_opt[] = {{.name = "piece", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"}, PCL_END};
 static int c_monomial(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:monomial");
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
     const pc_curve *c = u->c;
-    lua_Integer piece = 1;
-    if (!lua_isnoneornil(L, 2)) {
-        if (!lua_isinteger(L, 2)) pcl_argerror_full(L, "c:monomial", 2, 1, "piece", "a whole number");
-        piece = lua_tointeger(L, 2);
-    }
     if (c->kind == PC_CURVE_FUNC)
-        return pcl_error(L, "c:monomial: a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
+        return pcl_fail(L, "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
     int np = c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 0;
     if (c->kind == PC_CURVE_BSPLINE)
         for (int k = c->degree; k < c->ncp; k++) np += c->knots[k] < c->knots[k + 1];
-    if (piece < 1 || piece > np)
-        return pcl_error(L, "c:monomial: argument #1 (piece) must be from 1 to %d (the curve's pieces), got %d", np, (int)piece);
+    if (a[0].x < 1 || a[0].x > np)
+        return pcl_argfail(L, 1, "must be from 1 to %d (the curve's pieces), got %s", np, pcl_pushnum(L, a[0].x));
     double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
-    int deg, st = pc_curve_monomial(c, (int)piece - 1, coef, &deg);
-    if (st != PC_OK) return pcl_raise_status(L, "c:monomial", st);
+    int deg, st = pc_curve_monomial(c, (int)a[0].x - 1, coef, &deg);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     int n = c->dim, w = n + 1, rational = 0;
     for (int j = 0; j <= deg; j++)
         if (fabs(coef[j * w + n] - (j == 0)) > 1e-12) rational = 1;
     lua_createtable(L, n, 1);
-    for (int x = 0; x <= n; x++) {
-        if (x == n && !rational) break;
+    for (int x = 0; x <= n - !rational; x++) {
         lua_createtable(L, deg + 1, 0);
         for (int j = 0; j <= deg; j++) {
             lua_pushnumber(L, coef[j * w + x] + 0.0);
@@ -802,152 +753,127 @@ static int c_monomial(lua_State *L) {
     return 1;
 }
 
-static int c_tangent(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:tangent");
-    double t = pcl_checknum_m(L, "c:tangent", 2, "t");
-    int d = u->c->dim;
-    double out[2 * PC_MAXDIM], e[PC_MAXDIM];
-    int st = pc_curve_derivs(u->c, t, 1, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:tangent: the curve is at infinity at t = %s", pcl_pushnum(L, t));
-    if (st != PC_OK) return pcl_raise_status(L, "c:tangent", st);
-    if (pc_unit(d, out + d, e) != PC_OK)
-        return pcl_error(L, "c:tangent: the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
-    pcl_pushvector(L, d, e);
+/* c:tangent(t), c:normal(t) (pc_curve_frame) */
+static int unit_at(lua_State *L, int normal) {
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    double e[PC_MAXDIM], nrm[PC_MAXDIM];
+    const char *t = pcl_pushnum(L, a[0].x);
+    int st = pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", t);
+    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s%s", t, normal ? "" : " (a cusp or a stop)");
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", t);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushvector(L, u->c->dim, normal ? nrm : e);
     return 1;
 }
-
-/* c:normal(t): the unit principal normal (in the plane: the tangent turned by +90 degrees) */
-static int c_normal(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:normal");
-    double t = pcl_checknum_m(L, "c:normal", 2, "t");
-    int d = u->c->dim;
-    double out[3 * PC_MAXDIM], e[PC_MAXDIM], nrm[PC_MAXDIM];
-    int st = pc_curve_derivs(u->c, t, 2, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:normal: the curve is at infinity at t = %s", pcl_pushnum(L, t));
-    if (st != PC_OK) return pcl_raise_status(L, "c:normal", st);
-    if (pc_unit(d, out + d, e) != PC_OK)
-        return pcl_error(L, "c:normal: the derivative is zero at t = %s", pcl_pushnum(L, t));
-    if (d == 2) {
-        pc_perp2(e, nrm);
-    } else {   /* the part of C'' across the tangent */
-        double a = pc_dot(d, out + 2 * d, e);
-        for (int k = 0; k < d; k++) nrm[k] = out[2 * d + k] - a * e[k];
-        if (pc_unit(d, nrm, nrm) != PC_OK)
-            return pcl_error(L, "c:normal: the curve is straight at t = %s (no principal normal)",
-                             pcl_pushnum(L, t));
-    }
-    pcl_pushvector(L, d, nrm);
-    return 1;
-}
+static int c_tangent(lua_State *L) { return unit_at(L, 0); }
+static int c_normal(lua_State *L) { return unit_at(L, 1); }
 
 static int c_curvature(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:curvature");
-    double t = pcl_checknum_m(L, "c:curvature", 2, "t"), k;
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    double t = a[0].x, k;
     int st = pc_curve_curvature(u->c, t, &k);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:curvature: the curve is at infinity at t = %s", pcl_pushnum(L, t));
-    if (st == PC_EZERO)
-        return pcl_error(L, "c:curvature: the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
-    if (st != PC_OK) return pcl_raise_status(L, "c:curvature", st);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, t));
+    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     lua_pushnumber(L, k);
     return 1;
 }
 
 /* ---- operations --------------------------------------------------------------------------------- */
 
-static double inside(lua_State *L, lcurve *u, const char *fname, int idx, const char *what) {
-    double t = pcl_checknum_m(L, fname, idx, what);
-    if (!(t > u->c->t0 && t < u->c->t1)) {
-        lua_pushfstring(L, "inside the domain (%s, %s)", pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1));
-        pcl_argerror_full(L, fname, idx, idx - 1, what, lua_tostring(L, -1));
-    }
+/* The parameter of argument #1 strictly inside the domain. */
+static double inside(lua_State *L, lcurve *u, double t) {
+    if (!(t > u->c->t0 && t < u->c->t1))
+        pcl_argfail(L, 1, "must be inside the domain (%s, %s), got %s", pcl_pushnum(L, u->c->t0),
+                    pcl_pushnum(L, u->c->t1), pcl_pushnum(L, t));
     return t;
 }
 
 static int c_split(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:split");
-    double t = inside(L, u, "c:split", 2, "t");
-    pc_curve *a, *b;
-    int st = pc_curve_split(u->c, t, &a, &b);
-    if (st != PC_OK) return pcl_raise_status(L, "c:split", st);
-    pcl_pushcurve(L, a, u->kind);
-    pcl_pushcurve(L, b, u->kind);
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    pc_curve *l, *r;
+    int st = pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushcurve(L, l, u->kind);
+    pcl_pushcurve(L, r, u->kind);
     return 2;
 }
 
+static const pcl_arg ab_args[] = {A_NUM("a"), A_NUM("b"), PCL_END};
 static int c_sub(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:sub");
-    double a = pcl_checknum_m(L, "c:sub", 2, "a"), b = pcl_checknum_m(L, "c:sub", 3, "b");
-    if (!(a >= u->c->t0 && b <= u->c->t1 && a < b))
-        return pcl_error(L, "c:sub: need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
-                         pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a), pcl_pushnum(L, b));
+    pcl_val a[2] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    if (!(a[0].x >= u->c->t0 && a[1].x <= u->c->t1 && a[0].x < a[1].x))
+        return pcl_fail(L, "need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
+                        pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
     int st;
-    pc_curve *c = pc_curve_sub(u->c, a, b, &st);
-    pushcurve(L, c, st, u->kind, 0);
+    pushcurve(L, pc_curve_sub(u->c, a[0].x, a[1].x, &st), st, u->kind, 0);
     return 1;
 }
 
+static const pcl_arg u_arg[] = {A_NUM("u"), PCL_END};
 static int c_insert_knot(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:insert_knot");
-    if (u->c->kind != PC_CURVE_BSPLINE) return pcl_error(L, "c:insert_knot: not a B-spline (a %s)", u->kind);
-    double t = inside(L, u, "c:insert_knot", 2, "u");
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    if (u->c->kind != PC_CURVE_BSPLINE) return pcl_fail(L, "not a B-spline (a %s)", u->kind);
     int st;
-    pc_curve *c = pc_curve_insert_knot(u->c, t, &st);
-    pushcurve(L, c, st, u->kind, 0);
+    pushcurve(L, pc_curve_insert_knot(u->c, inside(L, u, a[0].x), &st), st, u->kind, 0);
     return 1;
 }
 
+static const pcl_arg ab_opt[] = {A_NUMOPT("a", 0, NULL), A_NUMOPT("b", 0, NULL), PCL_END};
 static int c_length(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:length");
-    double a = u->c->t0, b = u->c->t1;
-    if (!lua_isnoneornil(L, 2)) {
-        a = pcl_checknum_m(L, "c:length", 2, "a");
-        b = pcl_checknum_m(L, "c:length", 3, "b");
-    }
+    pcl_val a[2] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    if (a[0].present != a[1].present) return pcl_fail(L, "give both ends a and b, or neither");
     double len;
-    int st = pc_curve_length(u->c, a, b, 1e-10, &len);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:length: the curve passes through infinity: its length is infinite");
-    if (st != PC_OK) return pcl_raise_status(L, "c:length", st);
+    int st = pc_curve_length(u->c, a[0].present ? a[0].x : u->c->t0, a[1].present ? a[1].x : u->c->t1, 1e-10, &len);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve passes through infinity: its length is infinite");
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     lua_pushnumber(L, len);
     return 1;
 }
 
 static int c_bbox(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:bbox");
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
     double lo[PC_MAXDIM], hi[PC_MAXDIM];
     int st = pc_curve_bbox(u->c, 1e-9, lo, hi);
-    if (st == PC_IMPROPER) return pcl_error(L, "c:bbox: the curve passes through infinity: it has no bounding box");
-    if (st != PC_OK) return pcl_raise_status(L, "c:bbox", st);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve passes through infinity: it has no bounding box");
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     pcl_pushpoint(L, u->c->dim, lo);
     pcl_pushpoint(L, u->c->dim, hi);
     return 2;
 }
 
+/* A stroke's piece number at argument #1 (1..np), 0-based. */
+static int piece_no(lua_State *L, lcurve *u, const pcl_val *v) {
+    if (!(v->x >= 1 && v->x <= u->np))
+        pcl_argfail(L, 1, "must be a piece number 1..%d, got %s", u->np, pcl_pushnum(L, v->x));
+    return (int)v->x - 1;
+}
+
 /* c:controls(): the control values (weighted points as given); a stroke's c:controls(i) is
  * its piece's quadrilateral A, P, Q, B as before. */
+static const pcl_arg i_opt[] = {{.name = "i", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
 static int c_controls(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:controls");
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    int d = u->c->dim;
     if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) {
-        int i = 0;
-        if (!(u->np == 1 && lua_isnoneornil(L, 2))) {
-            int isint;
-            lua_Integer k = lua_tointegerx(L, 2, &isint);
-            if (!isint || k < 1 || k > u->np) {
-                lua_pushfstring(L, "a piece number 1..%d", u->np);
-                pcl_argerror_full(L, "c:controls", 2, 1, "i", lua_tostring(L, -1));
-            }
-            i = (int)k - 1;
-        }
-        pc_piece *pc = &pieces(u)[i];
-        int d = u->c->dim;
+        pc_piece *pc = &pieces(u)[u->np == 1 && !a[0].present ? 0 : piece_no(L, u, &a[0])];
         pcl_pushpoint(L, d, pc->a);
         pcl_pushpoint(L, d, pc->p);
         pcl_pushpoint(L, d, pc->q);
         pcl_pushpoint(L, d, pc->b);
         return 4;
     }
-    if (u->tk == TK_FOURIER) return pcl_error(L, "c:controls: a Fourier curve has no pieces");
-    if (u->c->kind == PC_CURVE_FUNC) return pcl_error(L, "c:controls: a %s curve has no control points", u->kind);
-    int d = u->c->dim;
+    if (u->tk == TK_FOURIER) return pcl_fail(L, "a Fourier curve has no pieces");
+    if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no control points", u->kind);
     lua_createtable(L, u->c->ncp, 0);
     for (int i = 0; i < u->c->ncp; i++) {
         pcl_value *v = pcl_newvalue(L, d);
@@ -958,50 +884,39 @@ static int c_controls(lua_State *L) {
 }
 
 static int c_knots(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:knots");
-    if (u->c->kind == PC_CURVE_FUNC) return pcl_error(L, "c:knots: a %s curve has no knots", u->kind);
-    lua_createtable(L, u->c->nknots, 0);
-    for (int i = 0; i < u->c->nknots; i++) {
-        lua_pushnumber(L, u->c->knots[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no knots", u->kind);
+    pcl_push_numbers(L, u->c->nknots, u->c->knots);
     return 1;
 }
 
 /* c:piece(i, t), c:piece_xy(i, t): a stroke's piece i at its own parameter t (any t: the
  * piece's formula extrapolates, where its smoothstep has values) */
-static int piece_at(lua_State *L, const char *fname, double *x) {
-    lcurve *u = checkcurve(L, 1, fname);
+static const pcl_arg piece_args[] = {{.name = "i", .kind = PCL_INTEGER}, A_NUM("t"), PCL_END};
+static int piece_at(lua_State *L, double *x) {
+    pcl_val a[2] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
     if (u->tk != TK_STROKE && u->tk != TK_SPLINE2)
-        return pcl_error(L, "%s: a %s curve has no pieces", fname,
-                         u->tk == TK_FOURIER ? "Fourier" : u->kind);
-    int isint;
-    lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (!isint || i < 1 || i > u->np) {
-        lua_pushfstring(L, "a piece number 1..%d", u->np);
-        pcl_argerror_full(L, fname, 2, 1, "i", lua_tostring(L, -1));
-    }
-    double t = pcl_checknum_m(L, fname, 3, "t");
-    pc_piece *pc = &pieces(u)[i - 1];
-    int d = u->c->dim;
+        return pcl_fail(L, "a %s curve has no pieces", u->tk == TK_FOURIER ? "Fourier" : u->kind);
+    int i = piece_no(L, u, &a[0]), d = u->c->dim;
+    double t = a[1].x;
+    pc_piece *pc = &pieces(u)[i];
     if (lua_getiuservalue(L, 1, 1) != LUA_TNIL) {   /* a Lua smoothstep */
         lua_pushnumber(L, t);
         lua_call(L, 1, 1);
         int isnum;
         double g = lua_tonumberx(L, -1, &isnum);
         if (!isnum || !isfinite(g))
-            pcl_error(L, "%s: the smoothstep g must return a finite number, got %s", fname,
-                      isnum ? pcl_pushnum(L, g) : luaL_typename(L, -1));
+            pcl_fail(L, "the smoothstep g must return a finite number, got %s", isnum ? pcl_pushnum(L, g) : luaL_typename(L, -1));
         pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, g, x);
         return d;
     }
     if (pc_gfun_check(&pc->g, t) != PC_OK) {
         int low = t < 0;
         const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
-        lua_pushfstring(L, "%s (piece %d's half-spline has the fractional degree %s = %s and "
-                        "does not extrapolate)", low ? "at least 0" : "at most 1", (int)i,
-                        low ? "n" : "m", deg);
-        pcl_argerror_full(L, fname, 3, 2, "t", lua_tostring(L, -1));
+        pcl_argfail(L, 2, "must be %s (piece %d's half-spline has the fractional degree %s = %s and "
+                    "does not extrapolate)", low ? "at least 0" : "at most 1", i + 1, low ? "n" : "m", deg);
     }
     pc_piece_eval(d, pc, t, x);
     return d;
@@ -1009,32 +924,29 @@ static int piece_at(lua_State *L, const char *fname, double *x) {
 
 static int c_piece(lua_State *L) {
     double x[PC_MAXDIM];
-    int d = piece_at(L, "c:piece", x);
+    int d = piece_at(L, x);
     pcl_pushpoint(L, d, x);
     return 1;
 }
 
 static int c_piece_xy(lua_State *L) {
     double x[PC_MAXDIM];
-    int d = piece_at(L, "c:piece_xy", x);
+    int d = piece_at(L, x);
     for (int k = 0; k < d; k++) lua_pushnumber(L, x[k]);
     return d;
 }
 
-/* c:coef(k) -> a, b: the Fourier coefficient lists of coordinate k (a[0] .. a[n]) */
+/* c:coef([k]) -> a, b: the Fourier coefficient lists of coordinate k (a[0] .. a[n]) */
+static const pcl_arg k_opt[] = {{.name = "k", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"}, PCL_END};
 static int c_coef(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:coef");
-    if (u->tk != TK_FOURIER) return pcl_error(L, "c:coef: not a Fourier curve");
-    int d = u->c->dim, isint = 1;
-    lua_Integer k = lua_isnoneornil(L, 2) ? 1 : lua_tointegerx(L, 2, &isint);
-    if (!isint || k < 1 || k > d) {
-        lua_pushfstring(L, "a coordinate number 1..%d", d);
-        pcl_argerror_full(L, "c:coef", 2, 1, "k", lua_tostring(L, -1));
-    }
-    int m = u->n + 1;
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    if (u->tk != TK_FOURIER) return pcl_fail(L, "not a Fourier curve");
+    int d = u->c->dim, m = u->n + 1;
+    if (!(a[0].x >= 1 && a[0].x <= d)) return pcl_argfail(L, 1, "must be a coordinate number 1..%d, got %s", d, pcl_pushnum(L, a[0].x));
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);
-        const double *v = u->data + (2 * (k - 1) + ab) * m;
+        const double *v = u->data + (2 * ((int)a[0].x - 1) + ab) * m;
         for (int j = 0; j < m; j++) {
             lua_pushnumber(L, v[j]);
             lua_rawseti(L, -2, j);
@@ -1044,40 +956,33 @@ static int c_coef(lua_State *L) {
 }
 
 /* c:map(f): the image under a map (also f(c)) */
+static const pcl_arg f_arg[] = {A_MAP("f"), PCL_END};
 static int c_map(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:map");
-    pc_map *f = pcl_tomap(L, 2);
-    if (!f) return pcl_argerror_full(L, "c:map", 2, 1, "f", "a map");
-    if (f->nin != u->c->dim)
-        return pcl_error(L, "c:map: the map takes %d-D points, but the curve is %d-D", f->nin, u->c->dim);
+    pcl_val a[1] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    pc_map *f = a[0].obj;
+    if (f->nin != u->c->dim) return pcl_argfail(L, 1, "takes %d-D points, but the curve is %d-D", f->nin, u->c->dim);
     int st;
-    pc_curve *c = pc_curve_map(u->c, f, &st);
-    pushcurve(L, c, st, u->kind, 0);
+    pushcurve(L, pc_curve_map(u->c, f, &st), st, u->kind, 0);
     return 1;
 }
 
-/* c:flatten([tol [, map]]) -> a list of polylines (lists of 2-D points) within tol of the
- * curve (default 1e-3 of the curve's size... here: tol in the curve's own units, default
- * 1e-3); map projects a curve of another dimension to the plane. */
+/* c:flatten([tol [, map]]) -> a list of polylines (lists of 2-D points) within tol of the curve
+ * in its own units (default 1e-3); map projects a curve of another dimension to the plane. */
+static const pcl_arg flatten_args[] = {{.name = "tol", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1e-3, .shown = "1e-3"},
+                                       {.name = "map", .kind = PCL_MAP, .flags = PCL_OPT}, PCL_END};
 static int c_flatten(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "c:flatten");
-    double tol = lua_isnoneornil(L, 2) ? 1e-3 : pcl_checknum_m(L, "c:flatten", 2, "tol");
-    if (!(tol > 0)) pcl_argerror_full(L, "c:flatten", 2, 1, "tol", "a positive number");
-    pc_map *f = NULL;
-    if (!lua_isnoneornil(L, 3)) {
-        f = pcl_tomap(L, 3);
-        if (!f || f->nin != u->c->dim || f->nout != 2) {
-            lua_pushfstring(L, "a map from %d-D to 2-D", u->c->dim);
-            pcl_argerror_full(L, "c:flatten", 3, 2, "map", lua_tostring(L, -1));
-        }
-    } else if (u->c->dim != 2) {
-        return pcl_error(L, "c:flatten: a %d-D curve needs a map to the plane (argument #2)", u->c->dim);
-    }
+    pcl_val a[2] = {{0}};
+    lcurve *u = READ_METHOD(L, a);
+    pc_map *f = a[1].obj;
+    if (f && (f->nin != u->c->dim || f->nout != 2))
+        return pcl_argfail(L, 2, "must be a map from %d-D to 2-D", u->c->dim);
+    if (!f && u->c->dim != 2) return pcl_fail(L, "a %d-D curve needs a map to the plane (argument #2)", u->c->dim);
     pc_polyline pl = {0};
-    int st = pcl_flatten(L, u->c, u->c->t0, u->c->t1, 1, f, 0, tol, &pl);
+    int st = pcl_flatten(L, u->c, u->c->t0, u->c->t1, 1, f, 0, a[0].x, &pl);
     if (st != PC_OK) {
         pc_polyline_free(&pl);
-        return pcl_raise_status(L, "c:flatten", st);
+        return pcl_raise_status(L, pcl_name(L), st);
     }
     lua_newtable(L);
     int npl = 0, nv = 0;
@@ -1096,7 +1001,8 @@ static int c_flatten(lua_State *L) {
 }
 
 static int c_index(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "curve");
+    lcurve *u = self_curve(L, 1);
+    if (!u) return 0;
     const char *k = lua_tostring(L, 2);
     if (k) {
         pc_curve *c = u->c;
@@ -1120,7 +1026,8 @@ static int c_index(lua_State *L) {
 }
 
 static int c_tostring(lua_State *L) {
-    lcurve *u = checkcurve(L, 1, "curve");
+    lcurve *u = self_curve(L, 1);
+    if (!u) return 0;
     pc_curve *c = u->c;
     if (u->tk == TK_FOURIER)
         lua_pushfstring(L, "fourier(%d points, %d-D)", 2 * u->n, c->dim);
@@ -1138,40 +1045,77 @@ static int c_tostring(lua_State *L) {
     return 1;
 }
 
+#define CTOR(nm, f, a, text) {.name = nm, .fn = f, .args = a, .result = "curve", .help = text}
+static const pcl_fn ctors[] = {
+    {.name = "bezier", .fn = l_bezier, .args = bezier_args, .sig = "bezier{P0, P1, ..., Pn} -> curve",
+     .help = "The Bezier curve of degree n over [0, 1] (2 to 65 points); weighted points w*P make it rational (a conic), vectors are control points at infinity."},
+    {.name = "bspline", .fn = l_bspline, .args = bspline_args, .sig = "bspline(points, degree [, \"open\"|\"uniform\"|\"periodic\"|knots]) -> curve",
+     .help = "The B-spline (NURBS with weighted points) of that degree; open knots by default, or a non-decreasing list of points + degree + 1 knots."},
+    {.name = "hermite", .fn = l_hermite, .args = hermite_args, .sig = "hermite(points, tangents [, {tin = {...}, u = {...}, closed = false}]) -> curve",
+     .help = "Piecewise cubic Hermite through the points with these derivatives (tin: the arriving ones, for corners); u: the parameters of the nodes."},
+    {.name = "cubic_spline", .fn = l_cubic_spline, .args = spline_args, .sig = "cubic_spline(points [, {ends = \"natural\"|\"clamped\"|\"periodic\", d0 = V, d1 = V, u = {...}}]) -> curve",
+     .help = "The C2 cubic spline through the points (parameters: accumulated chord lengths unless u is given)."},
+    CTOR("interpolate", l_interpolate, interpolate_args, "The polynomial curve of degree n - 1 through n points (2 to 65) at the given parameters (default evenly spaced in [0, 1])."),
+    CTOR("curve", l_curve, curve_args, "A Lua function t -> point (or numbers) over [t0, t1] as a curve: it flattens, measures and draws like any other."),
+    {.name = "spline2", .fn = l_spline2, .args = spline2_args, .result = "curve",
+     .help = "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): Stepanov's example 5."},
+    {.name = "fourier", .fn = l_fourier, .args = fourier_args, .sig = "fourier({P1, P2, ..., P2n}) -> curve",
+     .help = "The closed curve through 2n points by a finite Fourier series (example 12), t in [0, 2 pi]."},
+    PCL_FN("sphdir", l_sphdir, sphdir_args, "vector", "The unit vector of longitude u1 and latitude u2 (example 33)."),
+    PCL_END};
+
+#define METHOD(nm, f, a, res, text) {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_curve, .selftype = "curve"}
+static const pcl_fn methods[] = {
+    METHOD("c:xy", c_xy, t_arg, "x, y", "The coordinates of the point at t as numbers."),
+    METHOD("c:eval", c_call, t_or_eq, "point", "The point at t, as c(t)."),
+    {.name = "c:deriv", .fn = c_deriv, .args = deriv_args, .sig = "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector", .self = self_curve, .selftype = "curve",
+     .help = "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there."},
+    {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve",
+     .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
+    METHOD("c:tangent", c_tangent, t_arg, "vector", "The unit tangent."),
+    METHOD("c:normal", c_normal, t_arg, "vector", "The unit principal normal (in the plane: the tangent turned by +90 degrees)."),
+    METHOD("c:curvature", c_curvature, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
+    METHOD("c:split", c_split, t_arg, "left, right", "The two parts at t (de Casteljau, knot insertion), of the same kind."),
+    METHOD("c:sub", c_sub, ab_args, "curve", "The part over [a, b], of the same kind."),
+    METHOD("c:insert_knot", c_insert_knot, u_arg, "curve", "The same B-spline with the knot u inserted (one more control point)."),
+    {.name = "c:length", .fn = c_length, .args = ab_opt, .sig = "c:length([a, b]) -> number", .self = self_curve, .selftype = "curve",
+     .help = "The arc length over the domain or [a, b] (adaptive Gauss-Legendre)."},
+    METHOD("c:bbox", c_bbox, NULL, "lo, hi", "The corners of the axis-aligned bounding box."),
+    {.name = "c:controls", .fn = c_controls, .args = i_opt, .sig = "c:controls() -> {values}\nc:controls(i) -> A, P, Q, B", .self = self_curve, .selftype = "curve",
+     .help = "The control values (weighted as given); for a stroke, the quadrilateral of piece i."},
+    METHOD("c:knots", c_knots, NULL, "{numbers}", "The knot vector of a B-spline, or the breakpoints of pieces."),
+    METHOD("c:piece", c_piece, piece_args, "point", "A stroke's piece i at its own parameter t."),
+    METHOD("c:piece_xy", c_piece_xy, piece_args, "x, y", "The coordinates of a stroke's piece i at its own parameter t."),
+    METHOD("c:coef", c_coef, k_opt, "a, b", "The Fourier coefficient lists of coordinate k of a fourier curve."),
+    {.name = "c:map", .fn = c_map, .args = f_arg, .sig = "c:map(f) -> curve | f(c)", .self = self_curve, .selftype = "curve",
+     .help = "The image under a map: control points mapped exactly, so a projective map keeps a rational curve rational."},
+    METHOD("c:flatten", c_flatten, flatten_args, "{polylines}", "Adaptive polylines within tol of the curve (projected by map to the plane), broken where the curve passes through infinity."),
+    PCL_END};
+static const pcl_fn call[] = {{.name = "c", .fn = c_call, .args = t_or_eq, .result = "point", .key = "__call", .topic = "c(t)",
+                               .callname = 1, .self = self_curve, .selftype = "curve",
+                               .help = "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97)."}, PCL_END};
+
 void pcl_open_curves(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
     int tk = lua_gettop(L);
     lua_newtable(L);   /* the methods, shared with the Lua helpers as _tk.curve_methods */
-    int methods = lua_gettop(L);
-    static const luaL_Reg mfns[] = {
-        {"xy", c_xy}, {"eval", c_call}, {"deriv", c_deriv}, {"tangent", c_tangent},
-        {"normal", c_normal}, {"curvature", c_curvature}, {"split", c_split}, {"sub", c_sub},
-        {"insert_knot", c_insert_knot}, {"length", c_length}, {"bbox", c_bbox},
-        {"controls", c_controls}, {"knots", c_knots}, {"piece", c_piece},
-        {"piece_xy", c_piece_xy}, {"coef", c_coef}, {"monomial", c_monomial}, {"map", c_map}, {"flatten", c_flatten},
-        {NULL, NULL}};
-    luaL_setfuncs(L, mfns, 0);
-    lua_pushvalue(L, methods);
+    int methods_t = lua_gettop(L);
+    pcl_register(L, methods_t, methods, 0);
+    lua_pushvalue(L, methods_t);
     lua_setfield(L, tk, "curve_methods");
 
     luaL_newmetatable(L, CURVE_MT);
-    static const luaL_Reg meta[] = {{"__call", c_call}, {"__tostring", c_tostring},
-                                    {"__gc", c_gc}, {NULL, NULL}};
+    static const luaL_Reg meta[] = {{"__tostring", c_tostring}, {"__gc", c_gc}, {NULL, NULL}};
     luaL_setfuncs(L, meta, 0);
-    lua_pushvalue(L, methods);
+    pcl_register(L, -1, call, 0);
+    lua_pushvalue(L, methods_t);
     lua_pushcclosure(L, c_index, 1);
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 
     lua_pushcfunction(L, l_stroke_raw);
     lua_setfield(L, tk, "stroke");
-    static const luaL_Reg fns[] = {
-        {"spline2", l_spline2}, {"fourier", l_fourier}, {"sphdir", l_sphdir},
-        {"bezier", l_bezier}, {"bspline", l_bspline}, {"hermite", l_hermite},
-        {"cubic_spline", l_cubic_spline}, {"interpolate", l_interpolate}, {"curve", l_curve},
-        {NULL, NULL}};
-    lua_pushvalue(L, module);
-    luaL_setfuncs(L, fns, 0);
+    pcl_register(L, module, ctors, 0);
     lua_settop(L, module);
 }

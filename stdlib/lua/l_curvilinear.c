@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_tk.h"
 #include "curvilinear.h"
 #include "map.h"
@@ -20,18 +21,23 @@ static const char ORESME_TAG = 'o';   /* its address tags the type (PCL_SELF_TAG
 
 /* ---- plane -> square ------------------------------------------------------------------------ */
 
-static int squash_with(lua_State *L, const char *fn, double (*f)(double)) {
-    int n = lua_gettop(L) < 2 ? 1 : 2;
-    for (int i = 1; i <= n; i++) {
-        if (lua_type(L, i) != LUA_TNUMBER) pcl_argerror_full(L, fn, i, i, i == 1 ? "p" : "q", "a number");
-        double p = lua_tonumber(L, i);   /* +-inf are the square's sides; NaN is no place */
-        if (isnan(p)) pcl_argerror_full(L, fn, i, i, i == 1 ? "p" : "q", "a number other than NaN");
-        lua_pushnumber(L, f(p));
-    }
-    return n;
+/* A number other than NaN: +-inf are the square's sides; NaN is no place. */
+static int read_place(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_type(L, idx) == LUA_TNUMBER && !isnan(out->x);
 }
-static int l_squash(lua_State *L) { return squash_with(L, "squash", pc_squash); }
-static int l_squash01(lua_State *L) { return squash_with(L, "squash01", pc_squash01); }
+#define A_PLACE(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = read_place, .expect = "a number other than NaN"}
+static const pcl_arg squash_args[] = {A_PLACE("p", 0), A_PLACE("q", PCL_OPT), PCL_END};
+
+static int squash_with(lua_State *L, double (*f)(double)) {
+    pcl_val a[2] = {{0}};
+    PCL_READ(L, a);
+    for (int i = 0; i < 1 + a[1].present; i++) lua_pushnumber(L, f(a[i].x));
+    return 1 + a[1].present;
+}
+static int l_squash(lua_State *L) { return squash_with(L, pc_squash); }
+static int l_squash01(lua_State *L) { return squash_with(L, pc_squash01); }
 
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
@@ -44,21 +50,24 @@ static void push_projection(lua_State *L, const double c[8]) {
     pc_map_frame(pcl_newmap(L), 2, 3, c, axes);
 }
 
+static const pcl_arg oblique_args[] = {A_POINT("C0", 2), A_NUM("r"), A_NUM("k"), A_NUM("u"), PCL_END};
 static int l_oblique(lua_State *L) {
-    const char *fn = "oblique";
-    double c0[2], c[8];
-    pcl_checkloc(L, 1, "C0", 2, 0, c0);
-    double r = pcl_checknum(L, fn, 2, "r"), k = pcl_checknum(L, fn, 3, "k");
-    double u = pcl_checknum(L, fn, 4, "u");
-    pc_oblique_axes(c0, r, k, u, c);
+    pcl_val a[4] = {{0}};
+    PCL_READ(L, a);
+    double c[8];
+    pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
     push_projection(L, c);
     return 1;
 }
 
+static const pcl_arg projection_args[] = {A_SAMEPOINT("C0"), A_SAMEPOINT("C1"), A_SAMEPOINT("C2"),
+                                          A_SAMEPOINT("C3"), PCL_END};
 static int l_projection(lua_State *L) {
-    static const char *names[] = {"C0", "C1", "C2", "C3"};
+    pcl_val a[4] = {{0}};
+    PCL_READ(L, a);
+    if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
-    for (int i = 0; i < 4; i++) pcl_checkloc(L, i + 1, names[i], 2, 1, c + 2 * i);
+    for (int i = 0; i < 4; i++) memcpy(c + 2 * i, a[i].v, sizeof(double) * 2);
     push_projection(L, c);
     return 1;
 }
@@ -74,19 +83,29 @@ typedef struct {
 
 /* The Oresme sequence of a method call (o(t), o[j], #o, tostring(o)); its block is exactly
  * the header and 2^m + 1 values, so one given the metatable by the debug library is refused. */
-static oresme *checkoresme(lua_State *L, const char *fn) {
-    oresme *o = luaL_testudata(L, 1, ORESME_MT);
-    if (!o) pcl_argerror_full(L, fn, 1, 0, NULL, "an Oresme sequence (oresme(lambda, m))");
-    size_t len = lua_rawlen(L, 1);
+static oresme *tooresme(lua_State *L, int idx) {
+    oresme *o = luaL_testudata(L, idx, ORESME_MT);
+    if (!o) return NULL;
+    size_t len = lua_rawlen(L, idx);
     int ok = len >= sizeof *o && o->self == PCL_SELF_TAG(o, &ORESME_TAG) && o->m >= 0 &&
              o->m <= PC_ORESME_MAXLEVEL &&
              len == sizeof *o + sizeof(double) * (size_t)((1L << o->m) + 1);
-    return pcl_genuine(L, 1, o, ok, "Oresme sequence");
+    return pcl_genuine(L, idx, o, ok, "Oresme sequence");
+}
+static void *self_oresme(lua_State *L, int idx) { return tooresme(L, idx); }
+
+/* The sequence of a metamethod (o[j], #o, tostring(o)), which Lua calls only on one. */
+static oresme *checkoresme(lua_State *L, const char *fn) {
+    oresme *o = tooresme(L, 1);
+    if (!o) pcl_error(L, "%s: not an Oresme sequence (oresme(lambda, m))", fn);
+    return o;
 }
 
+static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 static int oresme_call(lua_State *L) {
-    oresme *o = checkoresme(L, "oresme");
-    lua_pushnumber(L, pc_oresme_at(o->y, o->m, pcl_checknum_m(L, "oresme", 2, "t")));
+    pcl_val a[1] = {{0}};
+    oresme *o = PCL_READ(L, a);
+    lua_pushnumber(L, pc_oresme_at(o->y, o->m, a[0].x));
     return 1;
 }
 
@@ -120,25 +139,22 @@ static int oresme_tostring(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg oresme_args[] = {
+    A_NUM("lambda"), {.name = "m", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .hi = PC_ORESME_MAXLEVEL,
+                      .dflt = 12, .expect = "an integer 0..24 (2^m cells)"},
+    A_NUMOPT("y0", 0, NULL), A_NUMOPT("y1", 1, NULL), PCL_END};
 static int l_oresme(lua_State *L) {
-    const char *fn = "oresme";
-    double lambda = pcl_checknum(L, fn, 1, "lambda");
-    lua_Integer m = 12;
-    if (!lua_isnoneornil(L, 2)) {
-        int isint;
-        m = lua_tointegerx(L, 2, &isint);
-        if (!isint || m < 0 || m > PC_ORESME_MAXLEVEL)
-            pcl_argerror_full(L, fn, 2, 2, "m", "an integer 0..24 (2^m cells)");
-    }
-    double y0 = pcl_optnum(L, fn, 3, "y0", 0.0), y1 = pcl_optnum(L, fn, 4, "y1", 1.0);
+    pcl_val a[4] = {{0}};
+    PCL_READ(L, a);
+    int m = (int)a[1].x;
     long n = 1L << m;
     oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
     o->self = PCL_SELF_TAG(o, &ORESME_TAG);
-    o->lambda = lambda;
-    o->m = (int)m;
+    o->lambda = a[0].x;
+    o->m = m;
     luaL_setmetatable(L, ORESME_MT);
-    int st = pc_oresme_fill(lambda, (int)m, y0, y1, o->y);
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, NULL);
+    int st = pc_oresme_fill(a[0].x, m, a[2].x, a[3].x, o->y);
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
     return 1;
 }
 
@@ -153,37 +169,39 @@ static double call_f(double x, void *ud) {
     double v = lua_tonumberx(L, -1, &isnum);
     if (!isnum) {
         const char *type = luaL_typename(L, -1);
-        pcl_error(L, "bisect: f(%s) must return a number, got %s", pcl_pushnum(L, x), type);
+        pcl_fail(L, "f(%s) must return a number, got %s", pcl_pushnum(L, x), type);
     }
     if (!isfinite(v)) {   /* name the x (the core would only say that some f(x) was not finite) */
         const char *tx = pcl_pushnum(L, x), *tv = pcl_pushnum(L, v);
-        pcl_error(L, "bisect: f(%s) must return a finite number, got %s", tx, tv);
+        pcl_fail(L, "f(%s) must return a finite number, got %s", tx, tv);
     }
     lua_pop(L, 1);
     return v;
 }
 
+static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a, (void)out;
+    if (lua_isfunction(L, idx)) return 1;
+    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
+    lua_pop(L, 1);
+    return 1;
+}
+static const pcl_arg bisect_args[] = {A_ANY("f", read_callable, "a function"), A_NUM("a"), A_NUM("b"),
+                                      A_NUMOPT("tol", 1e-10, NULL), PCL_END};
 static int l_bisect(lua_State *L) {
-    const char *fn = "bisect";
-    lua_settop(L, 4);
-    if (!lua_isfunction(L, 1)) {
-        if (luaL_getmetafield(L, 1, "__call") == LUA_TNIL) pcl_argerror_full(L, fn, 1, 1, "f", "a function");
-        lua_pop(L, 1);
-    }
-    double a = pcl_checknum(L, fn, 2, "a"), b = pcl_checknum(L, fn, 3, "b");
-    double tol = pcl_optnum(L, fn, 4, "tol", 1e-10);
+    pcl_val a[4] = {{0}};
+    PCL_READ(L, a);
     double x;
     int iters;
-    int st = pc_bisect(call_f, L, a, b, tol, &x, &iters);
-    if (st == PC_ENOBRACKET)
-    {
-        double fa = call_f(a, L), fb = call_f(b, L);
-        const char *ta = pcl_pushnum(L, a), *tfa = pcl_pushnum(L, fa);
-        const char *tb = pcl_pushnum(L, b), *tfb = pcl_pushnum(L, fb);
-        return pcl_error(L, "bisect: f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): "
-                          "the interval brackets no root", ta, tfa, tb, tfb);
+    int st = pc_bisect(call_f, L, a[1].x, a[2].x, a[3].x, &x, &iters);
+    if (st == PC_ENOBRACKET) {
+        double fa = call_f(a[1].x, L), fb = call_f(a[2].x, L);
+        const char *ta = pcl_pushnum(L, a[1].x), *tfa = pcl_pushnum(L, fa);
+        const char *tb = pcl_pushnum(L, a[2].x), *tfb = pcl_pushnum(L, fb);
+        return pcl_fail(L, "f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): the interval "
+                           "brackets no root", ta, tfa, tb, tfb);
     }
-    if (st != PC_OK) return pcl_statuserror(L, fn, st, "f returned NaN or an infinity");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "f returned NaN or an infinity");
     lua_pushnumber(L, x);
     lua_pushinteger(L, iters);
     return 2;
@@ -214,52 +232,64 @@ static int l_bilinear(lua_State *L) {
     return 1;
 }
 
-static int l_frame_point(lua_State *L) {
-    double o[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-    double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)}, out[2];
-    pc_frame_point(o, e, luaL_checknumber(L, 5), luaL_checknumber(L, 6), out);
+/* The n numbers the Lua helpers pass (x[0] .. x[n-1]) and the pair out they get back. */
+static void numbers(lua_State *L, int n, double *x) {
+    for (int i = 0; i < n; i++) x[i] = luaL_checknumber(L, i + 1);
+}
+static int pair(lua_State *L, const double *out) {
     lua_pushnumber(L, out[0]);
     lua_pushnumber(L, out[1]);
     return 2;
 }
 
+/* _tk.frame_point(o, e, xi, eta), _tk.frame_coords(o, e, x) -> xi, eta | nil, message,
+ * _tk.patch_blend(u0, u2, ...): the pairs as numbers (curvilinear.lua) */
+static int l_frame_point(lua_State *L) {
+    double x[6], out[2];
+    numbers(L, 6, x);
+    pc_frame_point(x, x + 2, x[4], x[5], out);
+    return pair(L, out);
+}
+
 static int l_frame_coords(lua_State *L) {
-    double o[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-    double e[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)};
-    double x[2] = {luaL_checknumber(L, 5), luaL_checknumber(L, 6)}, xi, eta;
-    int st = pc_frame_coords(o, e, x, &xi, &eta);
-    if (st != PC_OK) {
-        lua_pushnil(L);
-        lua_pushstring(L, pc_strerror(st));
-        return 2;
-    }
-    lua_pushnumber(L, xi);
-    lua_pushnumber(L, eta);
+    double x[6], out[2];
+    numbers(L, 6, x);
+    int st = pc_frame_coords(x, x + 2, x + 4, &out[0], &out[1]);
+    if (st == PC_OK) return pair(L, out);
+    lua_pushnil(L);
+    lua_pushstring(L, pc_strerror(st));
     return 2;
 }
 
 static int l_patch_blend(lua_State *L) {
-    double u0[2] = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-    double u2[2] = {luaL_checknumber(L, 3), luaL_checknumber(L, 4)}, out[2];
-    pc_patch_blend(u0, u2, luaL_checknumber(L, 5), luaL_checknumber(L, 6), luaL_checknumber(L, 7),
-                   luaL_checknumber(L, 8), luaL_checknumber(L, 9), out);
-    lua_pushnumber(L, out[0]);
-    lua_pushnumber(L, out[1]);
-    return 2;
+    double x[9], out[2];
+    numbers(L, 9, x);
+    pc_patch_blend(x, x + 2, x[4], x[5], x[6], x[7], x[8], out);
+    return pair(L, out);
 }
+
+static const pcl_fn fns[] = {
+    PCL_FN("squash", l_squash, squash_args, "numbers", "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28)."),
+    PCL_FN("squash01", l_squash01, squash_args, "numbers", "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument."),
+    PCL_FN("oblique", l_oblique, oblique_args, "map", "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up."),
+    PCL_FN("projection", l_projection, projection_args, "map", "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0."),
+    {.name = "oresme", .fn = l_oresme, .args = oresme_args, .result = "o", .sig = "oresme(lambda [, m [, y0, y1]]) -> o",
+     .help = "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o."},
+    PCL_FN("bisect", l_bisect, bisect_args, "x, iterations", "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default)."),
+    PCL_END};
+static const pcl_fn ocall[] = {{.name = "o", .fn = oresme_call, .args = t_arg, .result = "number", .key = "__call",
+                                .topic = "o(t)", .callname = 1, .self = self_oresme, .selftype = "sequence made by oresme",
+                                .help = "The value at t in [0, 1]: y[floor(t 2^m)], the ends outside (a step function)."}, PCL_END};
 
 void pcl_open_curvilinear(lua_State *L) {
     int module = lua_gettop(L);
     luaL_newmetatable(L, ORESME_MT);
-    static const luaL_Reg ometa[] = {{"__call", oresme_call}, {"__index", oresme_index},
-                                     {"__len", oresme_len}, {"__tostring", oresme_tostring},
-                                     {NULL, NULL}};
+    static const luaL_Reg ometa[] = {{"__index", oresme_index}, {"__len", oresme_len},
+                                     {"__tostring", oresme_tostring}, {NULL, NULL}};
     luaL_setfuncs(L, ometa, 0);
+    pcl_register(L, -1, ocall, 0);
     lua_settop(L, module);
-    static const luaL_Reg fns[] = {
-        {"squash", l_squash}, {"squash01", l_squash01}, {"oblique", l_oblique},
-        {"projection", l_projection}, {"oresme", l_oresme}, {"bisect", l_bisect}, {NULL, NULL}};
-    luaL_setfuncs(L, fns, 0);
+    pcl_register(L, module, fns, 0);
     pcl_private(L, module);
     static const luaL_Reg priv[] = {{"bilinear", l_bilinear}, {"frame_point", l_frame_point},
                                     {"frame_coords", l_frame_coords},

@@ -37,7 +37,13 @@ int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const
 /* The projection to use for drawing a dim-D object with the map at idx (none or nil: the
  * camera); raises a clear error when there is none. */
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname);
-/* Draw a screen-space polyline as one path; the canvas status (message in the canvas). */
+/* Draw a screen-space polyline as one path (its vertices go to the canvas as they are); the
+ * canvas status (message in the canvas). */
 int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed);
+/* Draw c as one path: flattened through f (NULL: c is 2-D), WINDOW and VIEW (the one
+ * conversion from world to device coordinates) to within tol pixels, starting from `pieces`
+ * equal parts; closed when c is or `closed` is set.  Raises errors naming fname. */
+void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
+                    int color, int closed, const char *fname);
 
 #endif

@@ -360,6 +360,38 @@ static void test_window_y_up(void **state) {
     pc_canvas_free(c);
 }
 
+/* pc_path_screen takes screen points as pc_path's world points become under WINDOW and VIEW:
+ * the same pixels, the same display-list points, and the cursor at the world end point. */
+static void test_path_screen(void **state) {
+    (void)state;
+    pc_canvas *a = small(21, 21), *b = small(21, 21);
+    for (int k = 0; k < 2; k++) {
+        pc_canvas *c = k ? b : a;
+        assert_int_equal(pc_view(c, 2, 2, 18, 18, -1, -1, 0), PC_OK);
+        assert_int_equal(pc_window(c, -1, -1, 1, 1, 0), PC_OK);
+    }
+    const double w[8] = {-1, -1, 0.5, -0.25, 0.25, 1, -1, 0.5};
+    double s[8];
+    for (int i = 0; i < 4; i++) pc_world_to_screen(b, w[2 * i], w[2 * i + 1], &s[2 * i], &s[2 * i + 1]);
+    const uint8_t verbs[4] = {PC_PATH_MOVE, PC_PATH_LINE, PC_PATH_LINE, PC_PATH_MOVE};
+    assert_int_equal(pc_path(a, 4, w, verbs, 4, 1, 3), PC_OK);
+    assert_int_equal(pc_path_screen(b, 4, s, verbs, 4, 1, 3), PC_OK);
+    assert_memory_equal(a->pixels, b->pixels, sizeof(uint16_t) * 21 * 21);
+    assert_true(count(b, 3) > 20);
+    assert_int_equal(at(b, 2, 18), 3);              /* the world corner (-1, -1) */
+    assert_int_equal(b->npts, 4);
+    for (int i = 0; i < 4; i++) {
+        assert_true(b->pts[i].x == s[2 * i] && b->pts[i].y == s[2 * i + 1]);
+        assert_int_equal(b->tags[i], a->tags[i]);
+    }
+    assert_true(fabs(b->last_x + 1) < 1e-12 && fabs(b->last_y - 0.5) < 1e-12);
+    const double bad[4] = {0, 0, NAN, 1};
+    assert_int_equal(pc_path_screen(b, 2, bad, NULL, 0, 0, 3), PC_EARG);
+    assert_non_null(strstr(b->error, "finite"));
+    pc_canvas_free(a);
+    pc_canvas_free(b);
+}
+
 static void test_view_and_point(void **state) {
     (void)state;
     pc_canvas *c = small(10, 10);
@@ -600,6 +632,7 @@ int main(void) {
         cmocka_unit_test(test_paint_enclosed_region),
         cmocka_unit_test(test_paint_leaks_through_gaps_but_not_other_colours),
         cmocka_unit_test(test_clipping),
+        cmocka_unit_test(test_path_screen),
         cmocka_unit_test(test_window_y_up),
         cmocka_unit_test(test_view_and_point),
         cmocka_unit_test(test_view_no_limit),

@@ -1038,6 +1038,37 @@ static void test_errors(void **state) {
     pc_curve_release(NULL);
 }
 
+/* The unit tangent and principal normal of pc_curve_frame: a parabola's vertex in the plane,
+ * a quadratic turning in space, a straight stretch and a stop. */
+static void test_frame(void **state) {
+    (void)state;
+    double e[3], n[3];
+    const double par[6] = {0, 0, 1, 2, 2, 0};           /* C'(.5) = (2, 0) */
+    pc_curve *c = bez2(3, par);
+    assert_int_equal(pc_curve_frame(c, 0.5, e, n), PC_OK);
+    assert_true(fabs(e[0] - 1) < 1e-15 && fabs(e[1]) < 1e-15);
+    assert_true(fabs(n[0]) < 1e-15 && fabs(n[1] - 1) < 1e-15);   /* turned by +90 degrees */
+    pc_curve_release(c);
+    int st;
+    const double turn[12] = {0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 0, 1};   /* C'(0) = (2, 0, 0), C'' = (-2, 2, 0) */
+    c = pc_curve_bezier(3, 3, turn, &st);
+    assert_int_equal(pc_curve_frame(c, 0, e, n), PC_OK);
+    assert_true(fabs(e[0] - 1) < 1e-15 && fabs(e[1]) < 1e-15 && fabs(e[2]) < 1e-15);
+    assert_true(fabs(n[0]) < 1e-15 && fabs(n[1] - 1) < 1e-15 && fabs(n[2]) < 1e-15);
+    assert_int_equal(pc_curve_frame(c, 0, e, NULL), PC_OK);   /* the tangent alone */
+    pc_curve_release(c);
+    const double line[12] = {0, 0, 0, 1, 1, 1, 1, 1, 2, 2, 2, 1};
+    c = pc_curve_bezier(3, 3, line, &st);
+    assert_int_equal(pc_curve_frame(c, 0.3, e, NULL), PC_OK);
+    assert_true(fabs(e[0] - 1 / sqrt(3)) < 1e-15);
+    assert_int_equal(pc_curve_frame(c, 0.3, e, n), PC_ECOLLINEAR);
+    pc_curve_release(c);
+    const double stay[6] = {1, 1, 1, 1, 2, 2};
+    c = bez2(3, stay);
+    assert_int_equal(pc_curve_frame(c, 0, e, n), PC_EZERO);
+    pc_curve_release(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bezier_bernstein), cmocka_unit_test(test_bezier_buimov),
@@ -1048,7 +1079,7 @@ int main(void) {
         cmocka_unit_test(test_map),              cmocka_unit_test(test_hermite),
         cmocka_unit_test(test_spline_natural),   cmocka_unit_test(test_spline_buimov),
         cmocka_unit_test(test_spline_periodic),  cmocka_unit_test(test_interpolate),
-        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_errors),           cmocka_unit_test(test_frame),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -14,7 +14,7 @@ near(a, -5 / math.sqrt(26), 1e-15, "squash(p, q): p"); near(b, 1 / math.sqrt(2),
 near(squash(math.huge), 1, 0, "squash(inf) = 1")
 near(squash01(0), .5, 0, "squash01(0)"); near(squash01(-10), .0025, 2e-5, "example 28: radius 10 -> .0025")
 near(select(2, squash01(0, 10)), .9975, 2e-5, "squash01(p, q)")
-err(function() squash("x") end, "squash: argument #1 (p) must be a number, got string", "squash string")
+err(function() squash("x") end, "squash: argument #1 (p) must be a number other than NaN, got \"x\"", "squash string")
 err(function() squash(0 / 0) end, "squash: argument #1 (p) must be a number other than NaN", "squash NaN")
 err(function() squash01(1, 0 / 0) end, "squash01: argument #2 (q) must be a number other than NaN", "squash01 NaN")
 
@@ -52,8 +52,8 @@ err(function() pr(P(1, 2)) end, "pr: argument #1 is 2-D, but the map takes 3-D: 
 err(function() pr:xy(V(1, 2, 3)) end, "xy: argument #1 (X) must be a point (weight 1), got weight 0", "vector")
 err(function() pr("x") end, "pr: takes a 3-D point or vector, or 3 coordinates; got string", "string")
 err(function() pr:xy(1, 2) end, "xy: takes a 3-D point or vector, or 3 coordinates; got number", "two numbers")
-err(function() oblique(P(0, 0), "r", 1, 1) end, "oblique: argument #2 (r) must be a number, got string", "oblique r")
-err(function() projection(P(0, 0), P(1, 0), P(0, 1, 0), P(1, 1)) end, "projection: argument #3 (C2) is 3-D, but argument #1 is 2-D", "mixed")
+err(function() oblique(P(0, 0), "r", 1, 1) end, "oblique: argument #2 (r) must be a finite number, got \"r\"", "oblique r")
+err(function() projection(P(0, 0), P(1, 0), P(0, 1, 0), P(1, 1)) end, "projection: argument #3 (C2) is 3-D, but argument #1 (C0) is 2-D (mixed dimensions)", "mixed")
 
 -- Oresme lambda-functions: example 31
 local o1, o2 = oresme(.3, 12, 1, 2), oresme(.2, 12, 1, 2)
@@ -82,5 +82,5 @@ err(function() bisect(function(x) return "a" end, 0, 1) end, "bisect: f(0) must 
 err(function() bisect(function(x) return x > .3 and math.huge or -1 end, 0, 1) end, "bisect: f(1) must return a finite number, got inf", "f inf")
 err(function() bisect(function(x) return x < .5 and -1 or 0 / 0 end, 0, 1) end, "bisect: f(1) must return a finite number", "f NaN")
 err(function() bisect(5, 0, 1) end, "bisect: argument #1 (f) must be a function, got 5", "f")
-err(function() bisect(math.sin, 0) end, "bisect: argument #3 (b) must be a number, got nil", "b")
+err(function() bisect(math.sin, 0) end, "bisect: argument #3 (b) must be a finite number, got nil", "b")
 check.done()

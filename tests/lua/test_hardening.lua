@@ -70,7 +70,7 @@ check.err(function() return smooth.half(2, 3, 0.5)(1e200) end, "g: the value at 
 
 local c = bezier { P(0, 0), P(1, 2), P(3, 0) }
 check.err(function() c:draw(5) end, here .. ":", "c:draw(5) located")
-check.err(function() c:draw(5) end, "c:draw: argument #1 (opts) must be a table, got 5")
+check.err(function() c:draw(5) end, "c:draw: argument #1 (opts) must be a table {color =, tol =, map =, closed =, t =, brush =, dots =, qb =}, got 5")
 check.err(function() c:each(5) end, "c:each: argument #1 (opts) must be a table")
 check.err(function() c:each(5) end, here .. ":", "c:each(5) located")
 local C = curvilinear(function(t1, t2) return t1, t2 end)

@@ -84,7 +84,9 @@ sq:wireframe { nu = 0, nv = 0, boundary = true, color = 13 }
 check.eq(point(370, 240) .. point(420, 190) .. point(370, 140) .. point(320, 190) .. point(370, 190),
   "131313130", "the four edges of the square (320..420, 140..240 px) and not its middle")
 check.err(function() camera(f, { hidden = "maybe" }) end,
-  'camera: argument #2 (hidden) must be "dashed", "hide" or "show", got "maybe"', "bad mode")
+  'camera: option \'hidden\' must be "show", "dashed" or "hide", got "maybe"', "bad mode")
+check.err(function() camera(f, { hiden = "hide" }) end,
+  "camera: unknown option 'hiden' (did you mean 'hidden'?)", "a misspelt key of camera")
 check.err(function() map.view { from = P(1, 1, 1), to = P(1, 1, 1) } end,
   "map.view: from and to coincide", "no line of sight")
 check.err(function() sph:wireframe { nu = -1 } end, "nu must be an integer 0..1000", "count")
