@@ -426,8 +426,7 @@ def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =
 def("figure")
 def("text", "text(x, y, string [, colour [, scale]])",
   "Text with the top-left corner of its first 8x16 cell at (x, y).")
-def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
-  "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
+def("slider")
 def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
   "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
 def("save", "save(path [, \"paper\"|\"screen\"])",
@@ -466,20 +465,13 @@ area("qb", "QBasic numbers (qb.*)",
   "QBasic's number semantics, used by translated QBasic programs and available to scripts.",
   nil)
 
-def("qb.f32", "qb.f32(x) -> number",
-  "x rounded to QBasic's SINGLE (IEEE float32); beyond the SINGLE range (about 3.4E+38) it is +-inf, as a float32 is (translated QBasic reports Overflow).")
-def("qb.cint", "qb.cint(x) -> integer, ok",
-  "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow.")
-def("qb.clng", "qb.clng(x) -> integer, ok",
-  "CLNG: round to the nearest integer, ties to even; ok is false on LONG overflow.")
-def("qb.rnd", "qb.rnd([n]) -> number",
-  "QBasic's RND(n): the next number of QBasic's own generator (n = 0 repeats, n < 0 reseeds).")
-def("qb.randomize", "qb.randomize(n)",
-  "QBasic's RANDOMIZE n: reseed the generator.")
-def("qb.seed", "qb.seed([s]) -> seed",
-  "The generator's 24-bit seed; sets it when s is given.")
-def("qb.range", "qb.range(a, b [, step]) -> iterator",
-  "A QBasic FOR loop accumulating in SINGLE: for t in qb.range(0, 1, .001) runs 1001 times, as QBasic does.")
+def("qb.f32")
+def("qb.cint")
+def("qb.clng")
+def("qb.rnd")
+def("qb.randomize")
+def("qb.seed")
+def("qb.range")
 
 -- ---------------------------------------------------------------------------------------
 area("buimov", "The textbook: plane curves (plane.*) and the book's constructions (buimov.*)",
