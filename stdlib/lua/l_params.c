@@ -49,25 +49,27 @@ static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     out->s = lua_tolstring(L, idx, &len);
     return lua_type(L, idx) == LUA_TSTRING && good_name(out->s, len);
 }
+/* step: a number, or the table {step =, animate =} (read by the body) */
+static int read_step(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
+}
 static const pcl_arg slider_keys[] = {A_NUM("step"), {.name = "animate", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
+static const pcl_arg slider_opts = {.name = "step", .kind = PCL_OPTIONS, .keys = slider_keys};
 static const pcl_arg slider_args[] = {
     {.name = "name", .kind = PCL_ANY, .read = read_name, .expect = "a name of letters, digits and _ (up to 64)"},
     A_NUM("min"), A_NUM("max"), A_NUM("default"),
-    {.name = "step", .kind = PCL_OPTIONS, .flags = PCL_OPT, .keys = slider_keys, .expect = "a number or a table {step =, animate =}"},
+    {.name = "step", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_step, .expect = "a number or a table {step =, animate =}"},
     PCL_END};
 
 static int l_slider(lua_State *L) {
-    if (lua_type(L, 5) == LUA_TNUMBER) {   /* the short form: step alone is {step = step} */
-        lua_createtable(L, 0, 1);
-        lua_pushvalue(L, 5);
-        lua_setfield(L, -2, "step");
-        lua_replace(L, 5);
-    }
-    pcl_val a[7] = {0};   /* name, min, max, default, opts, step, animate */
+    pcl_val a[5] = {0}, k[2] = {0};   /* name, min, max, default, step; the table's step, animate */
     PCL_READ(L, a);
+    if (lua_istable(L, 5)) pcl_readopts(L, 5, 5, &slider_opts, k);
     const char *name = a[0].s;
-    double lo = a[1].x, hi = a[2].x, dflt = a[3].x, step = a[5].x;
-    int animate = (int)a[6].x;
+    double lo = a[1].x, hi = a[2].x, dflt = a[3].x, step = lua_istable(L, 5) ? k[0].x : a[4].x;
+    int animate = (int)k[1].x;
     if (!(lo < hi)) return pcl_argfail(L, 3, "must be greater than min");
     if (dflt < lo || dflt > hi) return pcl_argfail(L, 4, "must be between min and max");
     if (step < 0 || step > hi - lo) return pcl_argfail(L, 5, "must be between 0 and max - min");

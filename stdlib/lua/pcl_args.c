@@ -553,6 +553,11 @@ void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, i
     read_value(L, &c, a, idx, out);
 }
 
+void pcl_readopts(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v) {
+    ctx c = {pcl_name(L), shown, a->name, NULL, 0, NULL};
+    read_options(L, &c, a, lua_absindex(L, idx), v);
+}
+
 /* ---- registration and signatures ----------------------------------------------------------- */
 
 /* The text of one argument in a signature: its name, an enum's choices, an option table's keys. */
