@@ -29,9 +29,9 @@ static void statuscheck(lua_State *L, int st) {
     if (st) pcl_raise_status(L, pcl_name(L), st);
 }
 
-/* a list argument whose count depends on another (one parameter per point) */
-static void need_count(lua_State *L, int k, const pcl_val *v, int n, const char *what) {
-    if (v->present && v->n != n) pcl_argfail(L, k, "must hold %d numbers (%s), got %d", n, what, v->n);
+/* the params (argument #k), if given: one per point */
+static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
+    if (v->present && v->n != n) pcl_fail(L, "argument #%d (params) must hold %d numbers (one per point), got %d", k, n, v->n);
 }
 
 /* ---- Lua functions called by the core ------------------------------------------------------ */
@@ -604,7 +604,7 @@ static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES),
 
 /* the interpolation curve through a[0] at the parameters a[1] (uniform when absent) */
 static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
-    need_count(L, 2, &a[1], a[0].n, "one per point");
+    need_count(L, 2, &a[1], a[0].n);
     pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, st);
     if (!c && *st == PC_ECOINCIDENT) pcl_argfail(L, 2, "must be distinct");
     return c;
@@ -797,7 +797,7 @@ static int i_basis(lua_State *L) {
     PCL_READ(L, a);
     int n = a[0].n, d = a[1].dim;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);
-    need_count(L, 3, &a[2], n, "one per point");
+    need_count(L, 3, &a[2], n);
     const double *u = a[2].list;
     double t0 = u[0], t1 = u[0];
     for (int i = 1; i < n; i++) t0 = fmin(t0, u[i]), t1 = fmax(t1, u[i]);
