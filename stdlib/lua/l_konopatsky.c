@@ -741,7 +741,7 @@ static int i_prototype(lua_State *L) {
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes */
-typedef struct { int ref; } basisref;
+typedef struct { int ref; const char *fname; } basisref;   /* fname: for messages */
 
 static int basis_cb(void *ud, double t, int n, double *g) {
     lua_State *L = pcl_current_state();
@@ -758,7 +758,7 @@ static int basis_cb(void *ud, double t, int n, double *g) {
         g[i] = lua_tonumberx(L, -1, &isnum);
         if (!isnum) {
             pcl_pushwhere(L);
-            lua_pushfstring(L, "interp.basis: the basis function [%d] must return a number", i + 1);
+            lua_pushfstring(L, "%s: the basis function [%d] must return a number", ((basisref *)ud)->fname, i + 1);
             lua_concat(L, 2);
             int st = pcl_callback_failed(L);
             lua_pop(L, i + 2);
@@ -810,6 +810,7 @@ static int i_basis(lua_State *L) {
     if (!r) return pcl_fail(L, "out of memory");
     lua_pushvalue(L, 1);
     r->ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    r->fname = pcl_name(L);
     int st;
     pcl_callback_state(L);
     pc_curve *c = pc_interp_basis(d, n, a[1].list, u, basis_cb, basisref_free, r, t0, t1, &st);
