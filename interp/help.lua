@@ -164,6 +164,7 @@ def("map.oblique")
 def("map.cavalier")
 def("map.cabinet")
 def("map.perspective")
+def("map.view")
 def("f(p)", nil, nil, "method")
 def("f:xy", nil, nil, "method")
 def("f:compose", nil, nil, "method")
@@ -311,8 +312,8 @@ def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
   "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
 def("s:map", "s:map(f) -> s",
   "The image of the surface under a map.", "method")
-def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48}",
-  "Draw the iso-lines as paths through map or the camera; hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it.", "method")
+def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
+  "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene.", "method")
 def("s:shade", "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
   "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows.", "method")
 
@@ -417,20 +418,41 @@ def("size", "size() -> width, height, colours",
   "The size of the canvas and its number of colours.")
 def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}", "pen \"main\"|\"thin\"|\"hidden\"|\"centre\"", "pen()"},
   "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default.")
-def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\"}])",
-  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given.")
+def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])",
+  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment.")
 def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
   "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
 def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
-  "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
+  "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
 def("figure")
-def("text", "text(x, y, string [, colour [, scale]])",
-  "Text with the top-left corner of its first 8x16 cell at (x, y).")
+def("text")
 def("slider")
-def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
-  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
+def("camera", {"camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])", "camera(nil)", "camera() -> f"},
+  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order.")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look.")
+
+-- ---------------------------------------------------------------------------------------
+area("figures", "Figures: label placement, markers, arrows, dimensions",
+  "Furniture of engineering drawings, drawn through the ordinary display list (every writer " ..
+  "shows it): sizes in screen pixels, numbers measured in world units. Labels without a " ..
+  "direction are placed when the picture is written.",
+  "figures.md")
+
+def("fit")
+def("caption")
+def("axes")
+def("graph")
+def("legend")
+def("placed_labels")
+def("mark")
+def("arrow")
+def("vector")
+def("dimension")
+def("angle_mark")
+def("ticks")
+def("hatch")
+def("centre_line")
 
 -- ---------------------------------------------------------------------------------------
 area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",

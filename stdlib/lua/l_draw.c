@@ -13,6 +13,8 @@
 #include "pcl.h"
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_qbscreen.h"
+#include "pcl_scene.h"
+#include "furniture.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
@@ -126,8 +128,9 @@ pc_theme pcl_theme(lua_State *L) {
 static int check(lua_State *L, pc_canvas *c, int rc) {
     if (rc == PC_OK) return 0;
     lua_Debug ar;
-    const char *name = "draw";
+    const char *name = NULL;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
+    if (!name) name = pcl_fname(L);   /* called from C: text{...} forwarding, pcall */
     /* a core message may start with the core statement's name ("pset: coordinates ...");
      * the caller's name replaces it, so preset reports as preset and line_to as line_to */
     const char *msg = c->error, *colon = strstr(msg, ": ");
@@ -482,7 +485,23 @@ static int rule_at(lua_State *L, int idx, int arg, const char *what) {
     return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
 }
 
-/* path(points [, {closed =, color =, fill =, rule =}]): the polyline through a list of 2-D
+/* The arrow option of path's table (argument 2): "end", "start", "both" or absent. */
+static int path_heads(lua_State *L) {
+    static const char *const heads[] = {"none", "end", "start", "both", NULL};
+    if (!lua_istable(L, 2) || lua_getfield(L, 2, "arrow") == LUA_TNIL) {
+        lua_settop(L, 2);
+        return 0;
+    }
+    const char *h = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+    for (int k = 0; heads[k]; k++)
+        if (!strcmp(h, heads[k])) {
+            lua_settop(L, 2);
+            return k;
+        }
+    return bad_string(L, lua_gettop(L), 2, "options.arrow", "\"end\", \"start\", \"both\" or \"none\"");
+}
+
+/* path(points [, {closed =, color =, fill =, rule =, arrow =}]): the polyline through a list of 2-D
  * points (or several, one subpath each).  With fill, the closed path is filled in that
  * colour, and its outline drawn on top only when color is given too. */
 static int l_path(lua_State *L) {
@@ -502,10 +521,19 @@ static int l_path(lua_State *L) {
         rule = rule_at(L, lua_gettop(L), 2, "options.rule");
         lua_pop(L, 4);
     }
+    int heads = path_heads(L);
     double *xy;
     uint8_t *verbs;
     size_t n = read_subpaths(L, 1, &xy, &verbs);
-    if (fill == -2) return check(L, c, pc_path(c, n, xy, verbs, n, closed, color));
+    if (fill == -2) {
+        check(L, c, pc_path(c, n, xy, verbs, n, closed, color));
+        /* arrow heads (furniture.h) on the first and last segments */
+        if ((heads & PC_ARROW_END) && n >= 2)
+            check(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
+        if ((heads & PC_ARROW_START) && n >= 2)
+            check(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
+        return 0;
+    }
     check(L, c, pc_fill_path(c, n, xy, verbs, n, rule, fill));
     if (color < 0) return 0;
     return check(L, c, pc_path(c, n, xy, verbs, n, 1, color));
@@ -546,8 +574,10 @@ static int opt_scale(lua_State *L, int arg) {
     return (int)v;
 }
 
-/* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it. */
+/* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it; without
+ * a direction it is placed when the picture is written (stdlib/draw/layout.h). */
 static int l_label(lua_State *L) {
+    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pc_canvas *c = canvas(L);
     /* a trailing options table {font =, size =, halo =}, read first and then dropped */
     int opts = lua_gettop(L) > 2 && lua_type(L, lua_gettop(L)) == LUA_TTABLE ? lua_gettop(L) : 0;
@@ -560,7 +590,7 @@ static int l_label(lua_State *L) {
     int arg = 2;
     double x, y;
     pcl_checkxy(L, &arg, &x, &y, "");
-    int anchor = PC_ANCHOR_NE;
+    int anchor = PC_ANCHOR_AUTO;
     if (!lua_isnoneornil(L, arg)) {
         static const char expected[] = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"";
         if (lua_type(L, arg) != LUA_TSTRING) return pcl_argerror(L, arg, "direction", expected);
@@ -590,6 +620,7 @@ static int l_text(lua_State *L) {
 }
 
 static int l_line(lua_State *L) {
+    if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
     pc_canvas *c = canvas(L);
     int arg = 1;
     double x1, y1;

@@ -16,6 +16,8 @@
 #include <string.h>
 #include "pcl_curve.h"
 #include "hidden.h"
+#include "view.h"
+#include "pcl_scene.h"
 #include "shaded.h"
 #include "pcl_expr.h"
 
@@ -440,15 +442,46 @@ static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
     return st;
 }
 
-static int opt_count(lua_State *L, int opts, const char *field, int dflt, int max) {
+static int opt_count(lua_State *L, int opts, const char *field, int dflt, int min, int max) {
     lua_getfield(L, opts, field);
     int isint = 1;
     lua_Integer n = lua_isnil(L, -1) ? dflt : lua_tointegerx(L, -1, &isint);
-    if (!isint || n < 1 || n > max)
-        pcl_error(L, "s:wireframe: %s must be an integer 1..%d, got %s", field, max,
+    if (!isint || n < min || n > max)
+        pcl_error(L, "s:wireframe: %s must be an integer %d..%d, got %s", field, min, max,
                   pcl_shown(L, -1));
     lua_pop(L, 1);
     return (int)n;
+}
+
+/* The wireframe in the camera's scene: the surface as an occluder, its iso-lines (and its
+ * silhouette) as 3-D strokes, all resolved against every surface of the figure at write. */
+static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, int nv, int mesh,
+                           int outline, int color) {
+    const char *fn = "s:wireframe";
+    int st = pc_scene_add_surface(sc, s, mesh), boundary = outline & 2;
+    outline &= 1;
+    for (int dir = 0; dir < 2 && st == PC_OK; dir++) {
+        int n = dir == 0 ? nu : nv;
+        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
+        double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
+        for (int i = 0; n > 0 && i <= n && st == PC_OK; i++) {
+            pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
+            if (!c) break;
+            st = pcl_scene_curve(L, sc, c, 256, color);
+            pc_curve_release(c);
+        }
+    }
+    if (outline && st == PC_OK) {
+        double *seg;
+        size_t nseg;
+        pc_map scr;
+        pcl_screen_map(L, pcl_camera(L), &scr);
+        st = pc_surface_silhouette(s, &scr, 4 * mesh, 4 * mesh, &seg, &nseg);
+        for (size_t i = 0; st == PC_OK && i < nseg; i++)
+            st = pc_scene_add_polyline(sc, 2, seg + 6 * i, NULL, color, pcl_canvas(L)->pen);
+        if (st == PC_OK || nseg) free(seg);
+    }
+    return st == PC_OK ? 0 : pcl_raise_status(L, fn, st);
 }
 
 /* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f, hidden = "hide"|"dashed",
@@ -464,8 +497,13 @@ static int s_wireframe(lua_State *L) {
         lua_newtable(L);
     }
     if (!lua_istable(L, 2)) return pcl_argerror_full(L, fn, 2, 1, "opts", "a table");
-    int nu = opt_count(L, 2, "nu", 10, 1000), nv = opt_count(L, 2, "nv", 10, 1000);
-    int mesh = opt_count(L, 2, "mesh", 48, 1024);
+    int nu = opt_count(L, 2, "nu", 10, 0, 1000), nv = opt_count(L, 2, "nv", 10, 0, 1000);
+    int mesh = opt_count(L, 2, "mesh", 48, 1, 1024);
+    lua_getfield(L, 2, "silhouette");
+    int outline = lua_toboolean(L, -1);
+    lua_getfield(L, 2, "boundary");
+    int boundary = lua_toboolean(L, -1);
+    lua_pop(L, 2);
     lua_getfield(L, 2, "color");
     pc_canvas *cv = pcl_canvas(L);
     int color = pcl_optcolor(L, -1, cv);
@@ -486,6 +524,11 @@ static int s_wireframe(lua_State *L) {
     const pc_map *f = pcl_drawing_map(L, lua_gettop(L), s->dim, fn);
     if (mode && (s->dim != 3 || !f))
         return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
+    if (outline && (s->dim != 3 || !f))
+        return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
+    /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
+    pc_scene *sc = !mode && s->dim == 3 && lua_isnil(L, -1) ? pcl_scene(L) : NULL;
+    if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline | boundary << 1, color);
     hidden_ctx h = {0};
     pc_occluder *occ = NULL;
     if (mode) {
@@ -500,7 +543,8 @@ static int s_wireframe(lua_State *L) {
     for (int dir = 0; dir < 2 && st == PC_OK && drawn == PC_OK; dir++) {
         int n = dir == 0 ? nu : nv;
         double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        for (int i = 0; i <= n && st == PC_OK && drawn == PC_OK; i++) {
+        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
+        for (int i = 0; n > 0 && i <= n && st == PC_OK && drawn == PC_OK; i++) {
             pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
             if (!c) break;
             pc_polyline pl = {0};
@@ -521,6 +565,22 @@ static int s_wireframe(lua_State *L) {
             pc_polyline_free(&pl);
             pc_curve_release(c);
         }
+    }
+    if (outline && st == PC_OK && drawn == PC_OK) {   /* the silhouette, hidden by the surface too */
+        double *seg;
+        size_t nseg;
+        pcl_screen_map(L, f, &h.scr);
+        st = pc_surface_silhouette(s, &h.scr, 4 * mesh, 4 * mesh, &seg, &nseg);
+        for (size_t i = 0; st == PC_OK && drawn == PC_OK && i < nseg; i++) {
+            double xy[4];
+            for (int e = 0; e < 2; e++) {
+                double hx[4] = {seg[6 * i + 3 * e], seg[6 * i + 3 * e + 1], seg[6 * i + 3 * e + 2], 1}, o[3];
+                pc_map_apply(&h.scr, hx, o);
+                pc_screen_to_world(cv, o[0] / o[2], o[1] / o[2], &xy[2 * e], &xy[2 * e + 1]);
+            }
+            drawn = pc_path(cv, 2, xy, NULL, 0, 0, color);
+        }
+        if (st == PC_OK) free(seg);
     }
     pc_polyline_free(&h.seen);
     pc_polyline_free(&h.hidden);

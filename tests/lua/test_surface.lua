@@ -126,7 +126,7 @@ err(function() sph:iso("w", 0) end, "family", "bad iso family")
 err(function() sph:wireframe() end, "needs a projection", "3-D wireframe without a camera")
 camera(map.isometric())
 err(function() sph:wireframe{hidden = "maybe"} end, "hidden must be", "bad hidden mode")
-err(function() sph:wireframe{nu = 0} end, "nu must be an integer", "bad count")
+err(function() sph:wireframe{nu = -1} end, "nu must be an integer 0..1000", "bad count")
 camera(nil)
 err(function() surface.bilinear(P(0, 0), P(1, 0), P(0, 1), P(1, 1)):wireframe{hidden = "hide"} end,
     "3-D surface", "hidden lines of a plane patch")
