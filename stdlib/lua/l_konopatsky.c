@@ -362,8 +362,9 @@ static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
         out->v[1] = lua_tonumber(L, idx);
     } else {
         if (!lua_istable(L, idx)) return 0;
-        g = (int)luaL_len(L, idx);
-        if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
+        size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
+        if (len < 1 || len > PC_KC_MAXPAR - 1) return 0;
+        g = (int)len;
         for (int i = 1; i <= g; i++) {
             lua_geti(L, idx, i);
             out->v[i] = lua_type(L, -1) == LUA_TNUMBER ? lua_tonumber(L, -1) : NAN;
@@ -778,8 +779,9 @@ static void basisref_free(void *ud) {
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
 static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
-    out->n = (int)luaL_len(L, idx);
-    if (out->n < 1 || out->n > 16) return 0;
+    size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
+    if (len < 1 || len > 16) return 0;
+    out->n = (int)len;
     for (int i = 1; i <= out->n; i++) {
         lua_geti(L, idx, i);
         if (!read_callable(L, -1, a, out)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
