@@ -304,7 +304,11 @@ static void count_error(lua_State *L, const ctx *c, const pcl_arg *a, int m, con
 /* A list of points or numbers at idx. */
 static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
     if (!lua_istable(L, idx)) mismatch(L, c, idx, expected(L, a));
-    lua_Integer len = luaL_len(L, idx);    /* a __len may say anything: clamp before int */
+    lua_len(L, idx);                       /* a __len may say anything: clamp before int */
+    int isint;
+    lua_Integer len = lua_tointegerx(L, -1, &isint);
+    lua_pop(L, 1);
+    if (!isint) mismatch(L, c, idx, expected(L, a));   /* not Lua's unlocated length error */
     int m = len < 0 ? -1 : len > MAXLIST ? MAXLIST + 1 : (int)len;
     int hi = a->hi > 0 ? (int)a->hi : MAXLIST;
     const char *unit = a->kind == PCL_POINTS ? "points" : "numbers";

@@ -123,6 +123,9 @@ err(function() conic.ed(P(0, 0), P(2, 0), P(1, 1, 0), .6) end,
 local ed = conic.ed
 err(function() assert(pcall(ed, P(0, 0), P(2, 0), P(1, 1), 0)) end,
     "conic.ed: argument #4 (k) must be a non-zero number", "an alias of conic.ed keeps its name")
+local odd = setmetatable({}, {__len = function() return "x" end})   -- a length that is no integer
+err(function() interp.lagrange(odd) end, "interp.lagrange: argument #1 (points) must be a list of points, got table", "a list with a bad __len")
+err(function() approx.mse(math.sin, odd) end, "approx.mse: argument #2 (nodes) must be a list of numbers, got table", "numbers with a bad __len")
 err(function() approx.mse(3, {0, 1}) end, "approx.mse: argument #1 (f) must be a function of x, got 3", "approx names its function")
 local T = map.rotate(1)
 err(function() return T({P(1, 2)}) end, "T: takes a 2-D point or vector, or 2 coordinates; got a table", "a map applied to a list names the map")
