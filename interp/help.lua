@@ -79,7 +79,7 @@ def("harmonic", "harmonic(A, B, T) -> point",
 def("cross_ratio", "cross_ratio(A, B, C, D) -> number",
   "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity).")
 def("meet", "meet(A1, A2, B1, B2) -> K, lambda, mu",
-  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance.")
+  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve().")
 def("area", "area(A, B, C) | area(A, B, C, D, ...) -> number",
   "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon.")
 def("volume", "volume(A, B, C, D) -> number",
@@ -165,6 +165,9 @@ def("map.cavalier")
 def("map.cabinet")
 def("map.perspective")
 def("map.view")
+def("map.perspective_pqr")
+def("map.foreshortening")
+def("map.axial_affinity")
 def("f(p)", nil, nil, "method")
 def("f:xy", nil, nil, "method")
 def("f:compose", nil, nil, "method")
@@ -231,9 +234,9 @@ def("plot", {"plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})",
              "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn | dots = true | qb = true, ...})"},
   "Draw t -> f(t) as one connected path (3-D through map or the camera); with a brush, dots = true or qb = true, dots at those steps as the listings do.")
 def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
-  "The point of a curve at parameter t (a vector where a rational curve is at infinity).", "method")
-def("c:deriv", "c:deriv(t [, order]) -> vector",
-  "The first (or second) derivative, exact for every kind but Lua functions (differenced).", "method")
+  "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97).", "method")
+def("c:deriv", "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector",
+  "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there.", "method")
 def("c:tangent", "c:tangent(t) -> vector | c:normal(t) -> vector",
   "The unit tangent; the unit principal normal (in the plane: the tangent turned by +90 degrees).", "method")
 def("c:curvature", "c:curvature(t) -> number",
@@ -262,6 +265,9 @@ def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
 def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+def("c:monomial", "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}",
+  "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators).", "method")
+def("c:conic", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("equations", "Point equations",
@@ -531,6 +537,9 @@ def("buimov.sphere_frame")
 def("buimov.det")
 def("buimov.reconstruct")
 def("buimov.calibrate")
+def("plane.conic_slope")
+def("buimov.g1_next")
+def("buimov.joint")
 
 -- ---------------------------------------------------------------------------------------
 area("konopatsky", "The monograph's curves (conic.*, oneratio.*, interp.*, approx.*)",
@@ -545,6 +554,24 @@ def("conic.ed_k")
 def("conic.circle_k")
 def("conic.ceva")
 def("conic.ceva_k")
+def("konopatsky.area_k")
+def("konopatsky.area_theorem")
+def("konopatsky.o_theorem")
+def("konopatsky.simplex_ratio")
+def("konopatsky.meet_line_plane")
+def("konopatsky.polar")
+def("konopatsky.rotate")
+def("konopatsky.moving_simplex")
+def("conic.ed_scheme")
+def("conic.five_scheme")
+def("conic.ceva_to_ed")
+def("conic.ed_to_ceva")
+def("conic.cones_excluded")
+def("conic.foci")
+def("conic.ceva_scheme")
+def("conic.focal_point")
+def("conic.scheme")
+def("conic.elements")
 def("conic.parabola")
 def("conic.ellipse")
 def("conic.hyperbola")
@@ -565,6 +592,7 @@ def("oneratio.simplex")
 def("oneratio.tetra")
 def("oneratio.bezier3")
 def("oneratio.smooth")
+def("oneratio.smooth_scheme")
 def("oneratio.desargues")
 def("oneratio.double_contact")
 def("oneratio.closed")
@@ -642,6 +670,7 @@ def("korotky.conic_elements")
 def("korotky.two_pencils")
 def("korotky.conic_revolve")
 def("korotky.ridge_shell")
+def("korotky.plane_meet")
 
 -- ---------------------------------------------------------------------------------------
 

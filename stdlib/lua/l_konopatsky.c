@@ -7,6 +7,7 @@
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
+#include "pcl_expr.h"
 #include "pcl_point.h"
 #include "conic.h"
 #include "konop_curves.h"
@@ -45,6 +46,7 @@ static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
     return 1;
 }
 #define A_FN(nm, what) {.name = nm, .kind = PCL_ANY, .read = read_callable, .expect = what}
+#define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 #define A_FNOPT(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_callable, .expect = what}
 
 typedef struct { int ref[4]; int nref; const char *fname; } luaref;   /* fname: for messages */
@@ -619,13 +621,14 @@ static int i_lagrange(lua_State *L) {
     return push(L, c, st);
 }
 
-/* the nodes: a number of them, or the list of their parameters (out->list, out->n) */
+/* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
+ * parameters (out->list, out->n: the count of nodes) */
 static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     if (lua_isinteger(L, idx)) {
-        lua_Integer n = lua_tointeger(L, idx);
-        if (n < 2 || n > MAXNODES) return 0;
-        out->n = (int)n, out->list = NULL;
+        lua_Integer order = lua_tointeger(L, idx);
+        if (order < 1 || order > PC_CURVE_MAXDEG) return 0;
+        out->n = (int)order + 1, out->list = NULL;
         return 1;
     }
     if (!lua_istable(L, idx)) return 0;
@@ -633,13 +636,53 @@ static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pcl_readone(L, idx, 1, 0, &params, 0, out);
     return 1;
 }
+/* t: a finite number, or an equation (out->n = 1) */
+static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->n = pcl_isequation(L, idx);
+    out->x = lua_tonumber(L, idx);
+    return out->n || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
+}
 static const pcl_arg weights_args[] = {{.name = "n", .kind = PCL_ANY, .read = read_nodes,
-    .expect = "a number of nodes 2..65 or a list of parameters"}, A_NUM("t"), PCL_END};
+    .expect = "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes) or a list of node parameters"},
+    {.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or an equation (param \"t\")"}, PCL_END};
+
+/* the weights as equations in t (stack index 2): the polynomials the Maple program of §4.8
+ * prints, phi_j = c0 + c1 t + c2 t^2 + ..., terms of zero coefficient left out */
+static int weight_equations(lua_State *L, int n, const double *u) {
+    double coef[MAXNODES * MAXNODES];
+    int st = pc_lagrange_weight_coefs(n, u, coef);
+    if (st == PC_ECOINCIDENT) return pcl_fail(L, "argument #1 (params) must be distinct");
+    statuscheck(L, st);
+    lua_createtable(L, n, 0);
+    for (int j = 0; j < n; j++) {
+        int any = 0;
+        for (int i = 0; i < n; i++) {
+            double c = coef[(size_t)j * n + i];
+            if (c == 0) continue;
+            lua_pushnumber(L, c);
+            if (i > 0) {
+                lua_pushvalue(L, 2);
+                if (i > 1) {
+                    lua_pushinteger(L, i);
+                    lua_arith(L, LUA_OPPOW);
+                }
+                lua_arith(L, LUA_OPMUL);
+            }
+            if (any) lua_arith(L, LUA_OPADD);
+            any = 1;
+        }
+        if (!any) lua_pushnumber(L, 0);
+        lua_rawseti(L, -2, j + 1);
+    }
+    return 1;
+}
 
 static int i_weights(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     int n = a[0].n;
+    if (a[1].n) return weight_equations(L, n, a[0].list);
     double t = a[1].x, w[MAXNODES];
     int st = pc_lagrange_weights(n, a[0].list, t, w);
     if (st == PC_ECOINCIDENT) return pcl_fail(L, "argument #1 (params) must be distinct");
@@ -677,14 +720,27 @@ static int i_conic(lua_State *L) {
     return push(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
 }
 
+/* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
-                                   SP("C2"), {.name = "Cn", .kind = PCL_POINT, .flags = PCL_OPT | PCL_SAMEDIM}, PCL_END};
+                                   SP("C2"), A_LATER("Cn"), {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
 
 static int i_arc(lua_State *L) {
-    pcl_val a[3] = {0};
+    static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
+                         u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
+    pcl_val a[4] = {0}, cn = {0}, p3 = {0};
     PCL_READ(L, a);
-    int st;
-    return push(L, pc_interp_arc(a[0].dim, a[0].n, a[0].list, a[1].v, a[2].present ? a[2].v : NULL, &st), st);
+    int n = a[0].n, d = a[0].dim, k = 4, st;
+    const pcl_val *u = &a[3];
+    if (lua_istable(L, 3)) {
+        pcl_readone(L, 3, 3, 0, &u_arg, 0, &p3);
+        u = &p3, k = 3;
+    } else if (a[2].present) {
+        pcl_readone(L, 3, 3, 0, &cn_arg, d, &cn);
+    }
+    need_count(L, k, u, n);
+    pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
+    if (!c && st == PC_EDOMAIN && u->present) return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
+    return push(L, c, st);
 }
 
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
@@ -710,7 +766,6 @@ static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "tr
 static const struct { pc_proto_kind kind; int n, nk; } protos[] = {
     {PC_PROTO_DESARGUES, 4, 0}, {PC_PROTO_RATIONAL, 4, 0}, {PC_PROTO_EXP, 3, 3}, {PC_PROTO_EXP_AFFINE, 3, 2},
     {PC_PROTO_TRIG, 3, 0}};
-#define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
                                      A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
 
@@ -871,36 +926,64 @@ static int a_curve(lua_State *L) {
     return push(L, pc_curve_interpolate(2, n, p, NULL, &st), st);
 }
 
-static const pcl_arg mse_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64),
-    {.name = "m", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1000000, .dflt = 100}, PCL_END};
+/* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
+ * a points to m's value, then the table, then its keys (m, divisor) */
+static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};
+static const pc_mse_divisor divisors[] = {PC_MSE_DIV_M1, PC_MSE_DIV_M, PC_MSE_DIV_MMINUS1};
+static const pcl_arg mse_keys[] = {{.name = "m", .kind = PCL_INTEGER}, A_ENUM("divisor", DIVISORS), PCL_END};
+static const pcl_arg mse_opts = A_OPTIONS("opts", mse_keys);
+static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* an integer or the table */
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && isfinite(out->x));
+}
+#define A_M {.name = "m", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_m, .expect = "a number of samples or a table {m =, divisor =}"}
+
+static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse_divisor *dv) {
+    pcl_val t[2] = {0};
+    const pcl_val *o = a + 2;
+    if (lua_istable(L, k)) pcl_readopts(L, k, k, &mse_opts, t), o = t;
+    double m = o[0].present ? o[0].x : a[0].present && !lua_istable(L, k) ? a[0].x : 100;
+    if (m < lo || m > hi) {
+        if (o[0].present) pcl_keyfail(L, "m", "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
+        pcl_argfail(L, k, "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
+    }
+    *dv = divisors[o[1].n];
+    return (int)m;
+}
+
+static const pcl_arg mse_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
 
 static int a_mse(lua_State *L) {
-    pcl_val a[3] = {0};
+    pcl_val a[6] = {0};   /* f, nodes, m, opts, m =, divisor = */
     PCL_READ(L, a);
+    pc_mse_divisor dv;
+    int m = samples(L, 3, &a[2], 1, 1000000, &dv);
     luaref *r = newref(L, 1, (int[]){1});
     double mse;
-    int st = pc_approx_mse(scalar_cb, r, a[1].n, a[1].list, (int)a[2].x, &mse);
+    int st = pc_approx_mse(scalar_cb, r, a[1].n, a[1].list, m, &mse);
     luaref_free(r);
     statuscheck(L, st);
+    if (pc_approx_rescale(mse, m, dv, &mse) != PC_OK) return pcl_fail(L, "the divisor m - 1 is 0 for m = 1");
     lua_pushnumber(L, mse);
     return 1;
 }
 
-static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16),
-    {.name = "m", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 100}, PCL_END};
+static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
 
 static int a_optimal_nodes(lua_State *L) {
-    pcl_val a[5] = {0};
+    pcl_val a[8] = {0};   /* f, a, b, N, m, opts, m =, divisor = */
     PCL_READ(L, a);
     int N = (int)a[3].x;
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
-    if (a[4].x < N || a[4].x > 100000) return pcl_argfail(L, 5, "must be a number of samples %d..100000, got %s", N, pcl_shown(L, 5));
-    int m = (int)a[4].x;
+    pc_mse_divisor dv;
+    int m = samples(L, 5, &a[4], N, 100000, &dv);
     luaref *r = newref(L, 1, (int[]){1});
     double x[16], mse;
     int evals, st = pc_approx_optimal_nodes(scalar_cb, r, a[1].x, a[2].x, N, m, x, &mse, &evals);
     luaref_free(r);
     statuscheck(L, st);
+    pc_approx_rescale(mse, m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
     pcl_push_numbers(L, N, x);
     lua_pushnumber(L, mse);
     lua_pushinteger(L, evals);
@@ -1020,10 +1103,10 @@ static const pcl_fn oneratio_fns[] = {
 
 static const pcl_fn interp_fns[] = {
     PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
-    SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ...}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve at t (the book's (4.10)-(4.28) for uniform nodes); they sum to 1."),
+    SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
     PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
     PCL_FN("interp.conic", i_conic, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
-    PCL_FN("interp.arc", i_arc, arc_args, "curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1)."),
+    SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
     PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
     SIG("interp.prototype", i_prototype, proto_args, "interp.prototype(\"desargues\"|\"rational\"|\"trig\", points [, t0, t1]) -> curve\ninterp.prototype(\"exp\"|\"exp1\", points, k [, t0, t1]) -> curve", "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40); desargues and rational take 4 points, the others 3."),
     SIG("interp.basis", i_basis, basis_args, "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve, affine, deviation", "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params; affine: the weights sum to 1 (membership condition) over [t0, t1], deviation the largest |sum - 1|."),
@@ -1032,8 +1115,8 @@ static const pcl_fn interp_fns[] = {
 
 static const pcl_fn approx_fns[] = {
     PCL_FN("approx.curve", a_curve, curve_args, "curve", "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t."),
-    PCL_FN("approx.mse", a_mse, mse_args, "mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), divided by m + 1."),
-    PCL_FN("approx.optimal_nodes", a_optimal_nodes, optimal_args, "nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
+    SIG("approx.mse", a_mse, mse_args, "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge)."),
+    SIG("approx.optimal_nodes", a_optimal_nodes, optimal_args, "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
     PCL_FN("approx.chebyshev", a_chebyshev, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
     PCL_FN("approx.lagrange_mse", a_lagrange_mse, lmse_args, "mse", "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x."),
     PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
