@@ -112,7 +112,6 @@ static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END}
 static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
-
 static int c_ed(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
@@ -164,7 +163,6 @@ static int c_ceva_k(lua_State *L) {
 }
 
 static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 static int c_parabola(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
@@ -210,7 +208,6 @@ static const pc_kcurve_kind ellipse_kinds[] = {PC_KC_ELLIPSE_ANGLE, PC_KC_ELLIPS
 static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
                                        {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"), PCL_END};
 static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
-
 static int c_ellipse(lua_State *L) {
     pcl_val a[9] = {0};   /* spec; C, A, B, range, by, quadrant, K, lambda */
     PCL_READ(L, a);
@@ -230,7 +227,6 @@ static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};
 static const pc_kcurve_kind hyperbola_kinds[] = {PC_KC_HYPERBOLA_ANGLE, PC_KC_HYPERBOLA_RADIUS, PC_KC_HYPERBOLA_FOCAL};
 static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
 static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
-
 static int c_hyperbola(lua_State *L) {
     pcl_val a[7] = {0};   /* spec; C, A, B, range, by, branch */
     PCL_READ(L, a);
@@ -239,7 +235,6 @@ static int c_hyperbola(lua_State *L) {
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
 static const pcl_arg circle_args[] = SPEC(circle_keys);
-
 static int c_circle(lua_State *L) {
     pcl_val a[7] = {0};   /* spec; C, A, B, range, delta, R */
     PCL_READ(L, a);
@@ -257,7 +252,6 @@ static int c_circle(lua_State *L) {
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
-
 static int c_tilted(lua_State *L) {
     pcl_val a[6] = {0};
     PCL_READ(L, a);
@@ -272,7 +266,6 @@ static int c_tilted(lua_State *L) {
 
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
 static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
-
 static int c_five_points(lua_State *L) {
     pcl_val a[9] = {0};   /* A..E, opts, u0, u1, whole */
     PCL_READ(L, a);
@@ -302,7 +295,6 @@ static int c_five_points(lua_State *L) {
 #define REQNUM(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_REQ}
 static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"), REQNUM("q3"), PCL_END};
 static const pcl_arg five2_args[] = SPEC(five2_keys);
-
 static int c_five_points2(lua_State *L) {
     pcl_val a[8] = {0};   /* spec; C, A, B, p1, p2, q2, q3 */
     PCL_READ(L, a);
@@ -316,7 +308,6 @@ static int c_five_points2(lua_State *L) {
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
                                        A_NUMOPT("t1", 1, NULL), PCL_END};
-
 static int c_triples(lua_State *L) {
     pcl_val a[7] = {0};
     PCL_READ(L, a);
@@ -329,7 +320,6 @@ static int c_triples(lua_State *L) {
 
 static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
                                          {.name = "v", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 static int c_redundant(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
@@ -348,7 +338,6 @@ static int c_redundant(lua_State *L) {
 static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
 static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
 static const pcl_arg reparam_args[] = SPEC(reparam_keys);
-
 static int c_reparam(lua_State *L) {
     pcl_val a[7] = {0};   /* spec; C, A, B, range, by, branch */
     PCL_READ(L, a);
@@ -381,7 +370,6 @@ static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_waves,
     .shown = "{m, n, ...}", .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
 static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
-
 static int c_sinusoid(lua_State *L) {
     pcl_val a[6] = {0};   /* spec; C, A, B, range, k */
     PCL_READ(L, a);
@@ -390,7 +378,6 @@ static int c_sinusoid(lua_State *L) {
 
 static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
 static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
-
 static int c_cycloid(lua_State *L) {
     pcl_val a[6] = {0};   /* spec; C, A, B, range, concave */
     PCL_READ(L, a);
@@ -398,7 +385,6 @@ static int c_cycloid(lua_State *L) {
 }
 
 static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
-
 static int c_cones(lua_State *L) {
     pcl_val a[7] = {0};
     PCL_READ(L, a);
@@ -414,7 +400,6 @@ static int c_cones(lua_State *L) {
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
                                        A_FNOPT("du", "a function of t"), A_FNOPT("dv", "a function of t"), PCL_END};
-
 static int c_contour(lua_State *L) {
     pcl_val a[7] = {0};
     PCL_READ(L, a);
@@ -429,7 +414,6 @@ static int c_contour(lua_State *L) {
 /* ==== oneratio ============================================================================== */
 
 static const pcl_arg abcd_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), PCL_END};
-
 static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is the receiver */
     pcl_val a[3] = {0};
     PCL_READ(L, a);
@@ -448,7 +432,6 @@ static int o_tetra(lua_State *L) {
 }
 
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
-
 static int o_bezier3(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
@@ -463,7 +446,6 @@ static int o_bezier3(lua_State *L) {
 
 static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
-
 static int o_smooth(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
@@ -491,7 +473,6 @@ static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
-
 static int o_double_contact(lua_State *L) {
     pcl_val a[6] = {0};
     PCL_READ(L, a);
@@ -520,7 +501,6 @@ static int o_double_contact(lua_State *L) {
 
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
     {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
-
 static int o_closed(lua_State *L) {
     pcl_val a[6] = {0};
     PCL_READ(L, a);
@@ -542,7 +522,6 @@ static void push_h(lua_State *L, int dim, const double *h) {
 }
 
 static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
-
 static int o_simplex_scheme(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
@@ -558,7 +537,6 @@ static int o_simplex_scheme(lua_State *L) {
 }
 
 static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
-
 static int o_levels(lua_State *L) {
     double p[16 * PC_MAXDIM], out[120 * PC_MAXDIM];
     pcl_val a[2] = {{.list = p, .cap = 16 * PC_MAXDIM}};
@@ -580,7 +558,6 @@ static int o_levels(lua_State *L) {
 }
 
 static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
-
 static int o_desargues_scheme(lua_State *L) {
     static const char *names[7] = {"T", "S", "R", "N", "J", "Q", "M"};
     pcl_val a[5] = {0};
@@ -711,7 +688,6 @@ static int i_controls(lua_State *L) {
 }
 
 static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
-
 static int i_conic(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
@@ -723,7 +699,6 @@ static int i_conic(lua_State *L) {
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
                                    SP("C2"), A_LATER("Cn"), {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
-
 static int i_arc(lua_State *L) {
     static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
                          u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
@@ -745,7 +720,6 @@ static int i_arc(lua_State *L) {
 
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
                                         {.name = "axis", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1}, PCL_END};
-
 static int i_adaptive(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
@@ -768,7 +742,6 @@ static const struct { pc_proto_kind kind; int n, nk; } protos[] = {
     {PC_PROTO_TRIG, 3, 0}};
 static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
                                      A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
-
 static int i_prototype(lua_State *L) {
     pcl_val a[5] = {0}, p = {0}, k = {0}, t = {0};
     PCL_READ(L, a);
@@ -848,7 +821,6 @@ static const pcl_arg basis_args[] = {{.name = "basis", .kind = PCL_ANY, .read = 
                                      A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
                                      {.name = "t0", .kind = PCL_NUMBER, .flags = PCL_OPT},
                                      {.name = "t1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 static int i_basis(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
@@ -885,7 +857,6 @@ static int i_basis(lua_State *L) {
 }
 
 static const pcl_arg r22_args[] = {A_POINTS("points", 0, 5, 5), PCL_END};
-
 static int i_rational22(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
@@ -907,7 +878,6 @@ static int i_rational22(lua_State *L) {
 #define F_OF_X A_FN("f", "a function of x")
 
 static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END};
-
 static int a_curve(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
@@ -953,7 +923,6 @@ static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse
 }
 
 static const pcl_arg mse_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
-
 static int a_mse(lua_State *L) {
     pcl_val a[6] = {0};   /* f, nodes, m, opts, m =, divisor = */
     PCL_READ(L, a);
@@ -970,7 +939,6 @@ static int a_mse(lua_State *L) {
 }
 
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
-
 static int a_optimal_nodes(lua_State *L) {
     pcl_val a[8] = {0};   /* f, a, b, N, m, opts, m =, divisor = */
     PCL_READ(L, a);
@@ -991,7 +959,6 @@ static int a_optimal_nodes(lua_State *L) {
 }
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
-
 static int a_chebyshev(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
@@ -1004,7 +971,6 @@ static int a_chebyshev(lua_State *L) {
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
     {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101, .expect = "an integer >= 2"}, PCL_END};
-
 static int a_lagrange_mse(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
@@ -1038,7 +1004,6 @@ static double nm_cb(void *ud, const double *x) {
 
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
     {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
-
 static int a_nelder_mead(lua_State *L) {
     double x[32];
     pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
