@@ -386,8 +386,7 @@ def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =
   "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
 def("figure")
 def("text")
-def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
-  "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
+def("slider")
 def("camera")
 def("save", "save(path [, \"paper\"|\"screen\"])",
   "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look.")
@@ -447,20 +446,13 @@ area("qb", "QBasic numbers (qb.*)",
   "QBasic's number semantics, used by translated QBasic programs and available to scripts.",
   nil)
 
-def("qb.f32", "qb.f32(x) -> number",
-  "x rounded to QBasic's SINGLE (IEEE float32); beyond the SINGLE range (about 3.4E+38) it is +-inf, as a float32 is (translated QBasic reports Overflow).")
-def("qb.cint", "qb.cint(x) -> integer, ok",
-  "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow.")
-def("qb.clng", "qb.clng(x) -> integer, ok",
-  "CLNG: round to the nearest integer, ties to even; ok is false on LONG overflow.")
-def("qb.rnd", "qb.rnd([n]) -> number",
-  "QBasic's RND(n): the next number of QBasic's own generator (n = 0 repeats, n < 0 reseeds).")
-def("qb.randomize", "qb.randomize(n)",
-  "QBasic's RANDOMIZE n: reseed the generator.")
-def("qb.seed", "qb.seed([s]) -> seed",
-  "The generator's 24-bit seed; sets it when s is given.")
-def("qb.range", "qb.range(a, b [, step]) -> iterator",
-  "A QBasic FOR loop accumulating in SINGLE: for t in qb.range(0, 1, .001) runs 1001 times, as QBasic does.")
+def("qb.f32")
+def("qb.cint")
+def("qb.clng")
+def("qb.rnd")
+def("qb.randomize")
+def("qb.seed")
+def("qb.range")
 
 -- ---------------------------------------------------------------------------------------
 area("buimov", "The textbook: plane curves (plane.*) and the book's constructions (buimov.*)",
@@ -510,16 +502,11 @@ area("konopatsky", "The monograph's curves (conic.*, oneratio.*, interp.*, appro
   "and pass through their points at infinity. Misprints of the book are implemented corrected.",
   "konopatsky.md")
 
-def("conic.ed", "conic.ed(A, B, C, k) -> curve",
-  "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse.")
-def("conic.ed_k", "conic.ed_k(A, B, C, K) -> k",
-  "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C.")
-def("conic.circle_k", "conic.circle_k(A, B, C) -> k",
-  "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2.")
-def("conic.ceva", "conic.ceva(A1, A2, A3, k) -> curve",
-  "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola.")
-def("conic.ceva_k", "conic.ceva_k(A1, A2, A3, K) -> k",
-  "(2.100) k = v31/v23 of the conic of the pencil through the point K.")
+def("conic.ed")
+def("conic.ed_k")
+def("conic.circle_k")
+def("conic.ceva")
+def("conic.ceva_k")
 def("konopatsky.area_k")
 def("konopatsky.area_theorem")
 def("konopatsky.o_theorem")
@@ -538,90 +525,50 @@ def("conic.ceva_scheme")
 def("conic.focal_point")
 def("conic.scheme")
 def("conic.elements")
-def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},
-  "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B.")
-def("conic.ellipse", "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant =, range = {t0, t1}]} -> curve",
-  "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6.")
-def("conic.hyperbola", "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range =]} -> curve",
-  "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges).")
-def("conic.circle", "conic.circle{A =, B =, C = [, delta = | R =]} -> curve",
-  "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118).")
-def("conic.tilted", "conic.tilted(A, B, C, theta, m, n) -> curve, P, Q",
-  "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes.")
-def("conic.five_points", "conic.five_points(A, B, C, D, E [, {u0 =, u1 =, whole = true}]) -> curve, u",
-  "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points.")
-def("conic.five_points2", "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve",
-  "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB.")
-def("conic.triples", "conic.triples(A1, A2, A3, A4, A5 [, t0, t1]) -> curve",
-  "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4.")
-def("conic.redundant", {"conic.redundant(C, A, B, u, v) -> point", "conic.redundant(C, A, B) -> curve"},
-  "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t.")
-def("conic.reparam", "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2]} -> curve",
-  "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures).")
-def("conic.sinusoid", "conic.sinusoid{C =, A =, B =, k = {m, n, ...}} -> curve",
-  "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation.")
-def("conic.cycloid", "conic.cycloid{C =, A =, B = [, concave = true, range =]} -> curve",
-  "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch.")
-def("conic.cones", "conic.cones(A, B, C, D, fP, fQ, n) -> curve",
-  "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A.")
-def("conic.contour", "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve",
-  "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t).")
+def("conic.parabola")
+def("conic.ellipse")
+def("conic.hyperbola")
+def("conic.circle")
+def("conic.tilted")
+def("conic.five_points")
+def("conic.five_points2")
+def("conic.triples")
+def("conic.redundant")
+def("conic.reparam")
+def("conic.sinusoid")
+def("conic.cycloid")
+def("conic.cones")
+def("conic.contour")
 
-def("oneratio", "oneratio(A, B, C) -> curve",
-  "The same as oneratio.simplex.")
-def("oneratio.simplex", "oneratio.simplex(A, B, C) -> curve",
-  "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B.")
-def("oneratio.tetra", "oneratio.tetra(A, B, C, D) -> curve",
-  "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2.")
-def("oneratio.bezier3", "oneratio.bezier3(A, C1, C2, B) -> curve",
-  "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers).")
-def("oneratio.smooth", "oneratio.smooth(A, B, C [, n]) -> curve",
-  "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2.")
+def("oneratio")
+def("oneratio.simplex")
+def("oneratio.tetra")
+def("oneratio.bezier3")
+def("oneratio.smooth")
 def("oneratio.smooth_scheme")
-def("oneratio.desargues", "oneratio.desargues(A, B, C, D) -> curve",
-  "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid.")
-def("oneratio.double_contact", "oneratio.double_contact(A, B, C, kp, kq [, f]) -> curve",
-  "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v).")
-def("oneratio.closed", "oneratio.closed(A, B, C, kP, kQ [, scheme]) -> curve",
-  "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles.")
-def("oneratio.simplex_scheme", "oneratio.simplex_scheme(A, B, C, t) -> {N =, M =}",
-  "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1)).")
-def("oneratio.levels", "oneratio.levels(points, t) -> {{P1, ...}, {Q1, ...}, ..., {M}}",
-  "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4)).")
-def("oneratio.desargues_scheme", "oneratio.desargues_scheme(A, B, C, D, t) -> {T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}",
-  "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2.")
+def("oneratio.desargues")
+def("oneratio.double_contact")
+def("oneratio.closed")
+def("oneratio.simplex_scheme")
+def("oneratio.levels")
+def("oneratio.desargues_scheme")
 
-def("interp.lagrange", "interp.lagrange(points [, params]) -> curve",
-  "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve.")
-def("interp.weights", {"interp.weights(n, t) -> {w1, ..., w(n+1)}", "interp.weights(params, t) -> {w1, ...}"},
-  "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints.")
-def("interp.controls", "interp.controls(points [, params]) -> {C1, ...}",
-  "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7).")
-def("interp.conic", "interp.conic(A, K, B, k) -> curve",
-  "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k')).")
-def("interp.arc", "interp.arc(points, C2 [, Cn] [, params]) -> curve",
-  "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]]).")
-def("interp.adaptive", "interp.adaptive(points [, axis]) -> params",
-  "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default).")
-def("interp.prototype", "interp.prototype(\"desargues\"|\"rational\"|\"exp\"|\"exp1\"|\"trig\", points [, k] [, t0, t1]) -> curve",
-  "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40).")
-def("interp.basis", "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve, affine, deviation",
-  "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params; affine: the weights sum to 1 (membership condition) over [t0, t1], deviation the largest |sum - 1|.")
-def("interp.rational22", "interp.rational22({M1, ..., M5}) -> curve, coef",
-  "(4.38) Per coordinate (a1 t^2 + a2 t + a3)/(a4 t^2 + a5 t + 1) through 5 points at t = j/4.")
+def("interp.lagrange")
+def("interp.weights")
+def("interp.controls")
+def("interp.conic")
+def("interp.arc")
+def("interp.adaptive")
+def("interp.prototype")
+def("interp.basis")
+def("interp.rational22")
 
-def("approx.curve", "approx.curve(f, nodes) -> curve",
-  "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t.")
-def("approx.mse", "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse",
-  "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge).")
-def("approx.optimal_nodes", "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals",
-  "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes.")
-def("approx.chebyshev", "approx.chebyshev(N [, a, b]) -> nodes",
-  "The N Chebyshev nodes (roots) on [a, b], increasing.")
-def("approx.lagrange_mse", "approx.lagrange_mse(f, nodes, a, b [, M]) -> mse",
-  "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x.")
-def("approx.nelder_mead", "approx.nelder_mead(f, x0 [, step]) -> x, fx, iterations",
-  "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0.")
+def("approx.curve")
+def("approx.mse")
+def("approx.optimal_nodes")
+def("approx.chebyshev")
+def("approx.lagrange_mse")
+def("approx.nelder_mead")
 
 -- ---------------------------------------------------------------------------------------
 area("module", "The module", "What else the pointcalc table holds.", nil)

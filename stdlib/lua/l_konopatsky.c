@@ -1,10 +1,11 @@
 /* Binding of Konopatsky's curves (stdlib/books/konopatsky/conic.h, konop_curves.h, oneratio.h,
- * konop_interp.h, optimize.h): the tables conic, oneratio, interp and approx.  Every curve is
- * the one curve userdata (pcl_pushcurve).  Argument checks only; the constructions are in the
- * core.  Guide: docs/konopatsky.md. */
+ * konop_interp.h, approx.h): the tables conic, oneratio, interp and approx, declared on the
+ * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
+ * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"
@@ -14,162 +15,39 @@
 #include "konop_interp.h"
 #include "approx.h"
 
-/* ---- argument checks with the full name ("conic.ed") ----------------------------------------- */
-
-static int weight_ok(const pcl_value *v) { return fabs(v->h[v->n] - 1) <= PC_WEIGHT_TOL; }
-
-/* The point at arg into out; dim > 0 demands that dimension (of argument dim_arg). */
-static int pt(lua_State *L, const char *fn, int arg, const char *what, int dim, int dim_arg,
-              double *out) {
-    pcl_value *v = pcl_tovalue(L, arg);
-    if (!v) return pcl_argerror_full(L, fn, arg, arg, what, "a point");
-    if (dim > 0 && v->n != dim)
-        pcl_error(L, "%s: argument #%d (%s) is %d-D, but argument #%d is %d-D (mixed dimensions)",
-                  fn, arg, what, v->n, dim_arg, dim);
-    if (!weight_ok(v))
-        pcl_error(L, "%s: argument #%d (%s) must be a point (weight 1), got %s: the coefficients "
-                  "of a point equation sum to 1 (membership condition)", fn, arg, what,
-                  pcl_shown(L, arg));
-    for (int k = 0; k < v->n; k++) {
-        out[k] = v->h[k];
-        if (!isfinite(out[k]))
-            pcl_error(L, "%s: argument #%d (%s) has NaN or infinite coordinates", fn, arg, what);
-    }
-    return v->n;
-}
-
-/* Field `name` of the options table at tbl as a point (dim as above, 0: any). */
-static int fpt(lua_State *L, const char *fn, int tbl, const char *name, int dim, double *out) {
-    lua_getfield(L, tbl, name);
-    pcl_value *v = pcl_tovalue(L, -1);
-    if (!v) pcl_error(L, "%s: field %s must be a point, got %s", fn, name, pcl_shown(L, -1));
-    if (dim > 0 && v->n != dim)
-        pcl_error(L, "%s: field %s is %d-D, but the other points are %d-D (mixed dimensions)",
-                  fn, name, v->n, dim);
-    if (!weight_ok(v))
-        pcl_error(L, "%s: field %s must be a point (weight 1), got %s", fn, name, pcl_shown(L, -1));
-    for (int k = 0; k < v->n; k++) out[k] = v->h[k];
-    int n = v->n;
-    lua_pop(L, 1);
-    return n;
-}
-
-/* Field `name` as a finite number; dflt when nil (NAN: required). */
-static double fnum(lua_State *L, const char *fn, int tbl, const char *name, double dflt) {
-    lua_getfield(L, tbl, name);
-    if (lua_isnil(L, -1) && !isnan(dflt)) {
-        lua_pop(L, 1);
-        return dflt;
-    }
-    int isnum;
-    double x = lua_tonumberx(L, -1, &isnum);
-    if (!isnum || !isfinite(x))
-        pcl_error(L, "%s: field %s must be a finite number, got %s", fn, name, pcl_shown(L, -1));
-    lua_pop(L, 1);
-    return x;
-}
-
-static void checktable(lua_State *L, const char *fn, int arg, const char *what) {
-    if (!lua_istable(L, arg)) pcl_argerror_full(L, fn, arg, arg, what, "a table");
-}
-
-/* opts.range = {t0, t1}, or NaN NaN */
-static void frange(lua_State *L, const char *fn, int tbl, double *t0, double *t1) {
-    *t0 = *t1 = NAN;
-    if (lua_getfield(L, tbl, "range") == LUA_TNIL) {
-        lua_pop(L, 1);
-        return;
-    }
-    if (!lua_istable(L, -1) || luaL_len(L, -1) != 2)
-        pcl_error(L, "%s: field range must be a list {t0, t1}, got %s", fn, pcl_shown(L, -1));
-    lua_geti(L, -1, 1);
-    lua_geti(L, -2, 2);
-    int i0, i1;
-    *t0 = lua_tonumberx(L, -2, &i0), *t1 = lua_tonumberx(L, -1, &i1);
-    if (!i0 || !i1 || !isfinite(*t0) || !isfinite(*t1) || !(*t1 > *t0))
-        pcl_error(L, "%s: field range must be two finite numbers t0 < t1", fn);
-    lua_pop(L, 3);
-}
+#define SP(nm) A_SAMEPOINT(nm)
+#define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
+#define MAXNODES (PC_CURVE_MAXDEG + 1)
 
 /* push the curve, or raise the core status (a kept Lua error first) */
-static int push(lua_State *L, pc_curve *c, int st, const char *fn) {
-    if (!c) return pcl_raise_status(L, fn, st);
-    pcl_pushcurve(L, c, fn);
+static int push(lua_State *L, pc_curve *c, int st) {
+    if (!c) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushcurve(L, c, pcl_name(L));
     return 1;
 }
 
-static int statuscheck(lua_State *L, const char *fn, int st) {
-    if (st) pcl_raise_status(L, fn, st);
-    return 0;
+static void statuscheck(lua_State *L, int st) {
+    if (st) pcl_raise_status(L, pcl_name(L), st);
 }
 
-/* The list of points at arg (Cartesian rows into a scratch userdata left on the stack). */
-static double *ptlist(lua_State *L, const char *fn, int arg, const char *what, int min, int max,
-                      int *count, int *dim) {
-    if (!lua_istable(L, arg)) {
-        lua_pushfstring(L, "a list of at least %d points", min);
-        pcl_argerror_full(L, fn, arg, arg, what, lua_tostring(L, -1));
-    }
-    int m = (int)luaL_len(L, arg);
-    if (m < min || m > max)
-        pcl_error(L, "%s: argument #%d (%s) must hold %d to %d points, got %d", fn, arg, what,
-                  min, max, m);
-    double *p = NULL;
-    int d = 0;
-    for (int i = 1; i <= m; i++) {
-        lua_geti(L, arg, i);
-        pcl_value *v = pcl_tovalue(L, -1);
-        if (!v || !weight_ok(v))
-            pcl_error(L, "%s: argument #%d (%s) item [%d] must be a point, got %s", fn, arg, what,
-                      i, pcl_shown(L, -1));
-        if (i == 1) {
-            d = v->n;
-            p = lua_newuserdatauv(L, sizeof(double) * (size_t)(m * d), 0);
-            lua_insert(L, -2);
-        } else if (v->n != d) {
-            pcl_error(L, "%s: argument #%d (%s) item [%d] is %d-D, but item [1] is %d-D "
-                      "(mixed dimensions)", fn, arg, what, i, v->n, d);
-        }
-        for (int k = 0; k < d; k++) {
-            p[(i - 1) * d + k] = v->h[k];
-            if (!isfinite(v->h[k]))
-                pcl_error(L, "%s: argument #%d (%s) item [%d] has NaN or infinite coordinates",
-                          fn, arg, what, i);
-        }
-        lua_pop(L, 1);
-    }
-    *count = m;
-    *dim = d;
-    return p;
-}
-
-static double *numlist(lua_State *L, const char *fn, int arg, const char *what, int n) {
-    if (!lua_istable(L, arg) || (int)luaL_len(L, arg) != n) {
-        lua_pushfstring(L, "a list of %d numbers", n);
-        pcl_argerror_full(L, fn, arg, arg, what, lua_tostring(L, -1));
-    }
-    double *x = lua_newuserdatauv(L, sizeof(double) * (size_t)(n ? n : 1), 0);
-    for (int i = 0; i < n; i++) {
-        lua_geti(L, arg, i + 1);
-        int isnum;
-        x[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum || !isfinite(x[i]))
-            pcl_error(L, "%s: argument #%d (%s) item [%d] must be a finite number, got %s", fn,
-                      arg, what, i + 1, pcl_shown(L, -1));
-        lua_pop(L, 1);
-    }
-    return x;
-}
-
-static void pushnums(lua_State *L, int n, const double *x) {
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        lua_pushnumber(L, x[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
+/* the params (argument #k), if given: one per point */
+static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
+    if (v->present && v->n != n) pcl_fail(L, "argument #%d (params) must hold %d numbers (one per point), got %d", k, n, v->n);
 }
 
 /* ---- Lua functions called by the core ------------------------------------------------------ */
+
+/* A function, or a table or userdata with __call (what the old checks accepted). */
+static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a, (void)out;
+    if (lua_isfunction(L, idx)) return 1;
+    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
+    lua_pop(L, 1);
+    return 1;
+}
+#define A_FN(nm, what) {.name = nm, .kind = PCL_ANY, .read = read_callable, .expect = what}
+#define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
+#define A_FNOPT(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_callable, .expect = what}
 
 typedef struct { int ref[4]; int nref; const char *fname; } luaref;   /* fname: for messages */
 
@@ -213,470 +91,373 @@ static double real_cb(void *ud, int which, double t) {
     return which < r->nref ? call1(r, which, t) : NAN;
 }
 
-static int callable(lua_State *L, int idx) {
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-
-static luaref *newref(lua_State *L, const char *fname, int n, const int *idx) {
+/* references to the functions at the stack indices idx[0..n-1]; the callback state set */
+static luaref *newref(lua_State *L, int n, const int *idx) {
     luaref *r = malloc(sizeof *r);
-    if (!r) pcl_error(L, "%s: out of memory", fname);
+    if (!r) pcl_fail(L, "out of memory");
     r->nref = n;
-    r->fname = fname;   /* a static string */
+    r->fname = pcl_name(L);   /* the declaration's static string */
     for (int i = 0; i < n; i++) {
         lua_pushvalue(L, idx[i]);
         r->ref[i] = luaL_ref(L, LUA_REGISTRYINDEX);
     }
+    pcl_callback_state(L);
     return r;
 }
 
 /* ==== conic ================================================================================= */
 
+static const pcl_arg abck_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("k"), PCL_END};
+static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END};
+static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
+static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
+static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
 static int c_ed(lua_State *L) {
-    const char *fn = "conic.ed";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    double k = pcl_checknum(L, fn, 4, "k");
-    if (k == 0) pcl_argerror_full(L, fn, 4, 4, "k", "a non-zero number (k = 0 collapses the arc to C)");
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number (k = 0 collapses the arc to C), got 0");
     int st;
-    return push(L, pc_conic_ed(d, A, B, C, k, &st), st, fn);
+    return push(L, pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
 }
 
 static int c_ed_k(lua_State *L) {
-    const char *fn = "conic.ed_k";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], K[PC_MAXDIM], k;
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    pt(L, fn, 4, "K", d, 1, K);
-    int st = pc_conic_ed_k(d, A, B, C, K, &k);
-    if (st == PC_ENOTCOLLINEAR)
-        pcl_error(L, "%s: argument #4 (K) must lie on the median from C to the midpoint of AB", fn);
-    statuscheck(L, fn, st);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    double k;
+    int st = pc_conic_ed_k(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &k);
+    if (st == PC_ENOTCOLLINEAR) return pcl_argfail(L, 4, "must lie on the median from C to the midpoint of AB");
+    statuscheck(L, st);
     lua_pushnumber(L, k);
     return 1;
 }
 
 static int c_circle_k(lua_State *L) {
-    const char *fn = "conic.circle_k";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], k;
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    int st = pc_conic_ed_circle_k(d, A, B, C, &k);
-    if (st == PC_EDOMAIN) pcl_error(L, "%s: |CA| must equal |CB| (tangents from C to a circle)", fn);
-    statuscheck(L, fn, st);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double k;
+    int st = pc_conic_ed_circle_k(a[0].n, a[0].v, a[1].v, a[2].v, &k);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "|CA| must equal |CB| (tangents from C to a circle)");
+    statuscheck(L, st);
     lua_pushnumber(L, k);
     return 1;
 }
 
 static int c_ceva(lua_State *L) {
-    const char *fn = "conic.ceva";
-    double A1[PC_MAXDIM], A2[PC_MAXDIM], A3[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A1", 0, 0, A1);
-    pt(L, fn, 2, "A2", d, 1, A2);
-    pt(L, fn, 3, "A3", d, 1, A3);
-    double k = pcl_checknum(L, fn, 4, "k");
-    if (k == 0) pcl_argerror_full(L, fn, 4, 4, "k", "a non-zero number");
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     int st;
-    return push(L, pc_conic_ceva(d, A1, A2, A3, k, &st), st, fn);
+    return push(L, pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
 }
 
 static int c_ceva_k(lua_State *L) {
-    const char *fn = "conic.ceva_k";
-    double A1[PC_MAXDIM], A2[PC_MAXDIM], A3[PC_MAXDIM], K[PC_MAXDIM], k;
-    int d = pt(L, fn, 1, "A1", 0, 0, A1);
-    pt(L, fn, 2, "A2", d, 1, A2);
-    pt(L, fn, 3, "A3", d, 1, A3);
-    pt(L, fn, 4, "K", d, 1, K);
-    int st = pc_conic_ceva_k(d, A1, A2, A3, K, &k);
-    if (st == PC_EDOMAIN) pcl_error(L, "%s: the cevians through K must meet the sides A2A3 and A3A1 at finite points other than A3", fn);
-    statuscheck(L, fn, st);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    double k;
+    int st = pc_conic_ceva_k(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &k);
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "the cevians through K must meet the sides A2A3 and A3A1 at finite points other than A3");
+    statuscheck(L, st);
     lua_pushnumber(L, k);
     return 1;
 }
 
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 static int c_parabola(lua_State *L) {
-    const char *fn = "conic.parabola";
-    double A1[PC_MAXDIM], A3[PC_MAXDIM], A2[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A1", 0, 0, A1);
-    pt(L, fn, 2, "A3", d, 1, A3);
-    pt(L, fn, 3, "A2", d, 1, A2);
-    int st;
-    if (lua_isnoneornil(L, 4)) return push(L, pc_conic_parabola(d, A1, A3, A2, &st), st, fn);
-    double tc = pcl_checknum(L, fn, 4, "tC");
-    if (!(tc > 0 && tc < 1)) pcl_argerror_full(L, fn, 4, 4, "tC", "a number in (0, 1)");
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int st, d = a[0].n;
+    if (!a[3].present) return push(L, pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st), st);
+    if (!(a[3].x > 0 && a[3].x < 1)) return pcl_argfail(L, 4, "must be a number in (0, 1), got %s", pcl_shown(L, 4));
     /* (2.62): A, C, B = arguments 1, 2, 3 with C reached at tC */
-    return push(L, pc_conic_parabola3(d, A1, A3, A2, tc, &st), st, fn);
+    return push(L, pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
 }
 
-static const struct { const char *name; pc_kcurve_kind kind; } ellipse_forms[] = {
-    {"angle", PC_KC_ELLIPSE_ANGLE}, {"radius", PC_KC_ELLIPSE_RADIUS},
-    {"focal", PC_KC_ELLIPSE_FOCAL}, {"compression", PC_KC_ELLIPSE_COMPRESSION},
-    {"algebraic", PC_KC_ELLIPSE_ALGEBRAIC}, {NULL, 0}};
-static const struct { const char *name; pc_kcurve_kind kind; } hyperbola_forms[] = {
-    {"angle", PC_KC_HYPERBOLA_ANGLE}, {"radius", PC_KC_HYPERBOLA_RADIUS},
-    {"focal", PC_KC_HYPERBOLA_FOCAL}, {NULL, 0}};
+/* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
+#define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
+    {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2, .shown = "{t0, t1}"}
+#define SPEC(k) {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = k}, PCL_END}
+#define BRANCH {.name = "branch", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .shown = "1|2", .expect = "1 or 2"}
 
-/* The CAB fields, the form `by`, the range: a pc_kcurve. */
-static int kcurve_from(lua_State *L, const char *fn, pc_kcurve_kind kind, const double *par,
-                       int npar) {
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], t0, t1;
-    int d = fpt(L, fn, 1, "C", 0, C);
-    fpt(L, fn, 1, "A", d, A);
-    fpt(L, fn, 1, "B", d, B);
-    frange(L, fn, 1, &t0, &t1);
-    int st;
-    pc_curve *c = pc_kcurve(kind, d, C, A, B, par, npar, t0, t1, &st);
+/* The form `kind` of the table read into a[1..4] (C, A, B, range) with its parameters. */
+static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, const double *par, int npar) {
+    double t0 = NAN, t1 = NAN;
+    if (a[4].present) {
+        t0 = a[4].list[0], t1 = a[4].list[1];
+        if (!(t1 > t0)) pcl_keyfail(L, "range", "must be two finite numbers t0 < t1");
+    }
+    int st, d = a[2].n;
+    pc_curve *c = pc_kcurve(kind, d, a[1].v, a[2].v, a[3].v, par, npar, t0, t1, &st);
     if (!c && st == PC_EDOMAIN) {
         double r0, r1;
-        if (pc_kcurve_range(kind, d, C, A, B, par, npar, &r0, &r1) == PC_OK)
-            pcl_error(L, "%s: range must lie within the form's real range [%s, %s]", fn,
-                      pcl_pushnum(L, r0), pcl_pushnum(L, r1));
-        pcl_error(L, "%s: the points or parameters are outside the form's conditions "
-                  "(see :help %s)", fn, fn);
+        if (pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, &r0, &r1) == PC_OK)
+            pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r0), pcl_pushnum(L, r1));
+        pcl_fail(L, "the points or parameters are outside the form's conditions (see :help %s)", pcl_name(L));
     }
-    return push(L, c, st, fn);
+    return push(L, c, st);
 }
 
+static void need_point(lua_State *L, const pcl_val *v, const char *key) {
+    if (!v->present) pcl_keyfail(L, key, "must be a point, got nil");
+}
+
+static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
+                                         "conjugate", "diameter", NULL};
+static const pc_kcurve_kind ellipse_kinds[] = {PC_KC_ELLIPSE_ANGLE, PC_KC_ELLIPSE_RADIUS, PC_KC_ELLIPSE_FOCAL,
+                                               PC_KC_ELLIPSE_COMPRESSION, PC_KC_ELLIPSE_ALGEBRAIC};
+static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
+                                       {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"), PCL_END};
+static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
 static int c_ellipse(lua_State *L) {
-    const char *fn = "conic.ellipse";
-    checktable(L, fn, 1, "spec");
-    lua_getfield(L, 1, "by");
-    const char *by = lua_isnil(L, -1) ? "angle" : lua_tostring(L, -1);
-    lua_pop(L, 1);
-    if (by && !strcmp(by, "conjugate")) {
-        double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-        int d = fpt(L, fn, 1, "C", 0, C);
-        fpt(L, fn, 1, "A", d, A);
-        fpt(L, fn, 1, "B", d, B);
-        int st;
-        return push(L, pc_conic_conjugate(d, C, A, B, &st), st, fn);
+    pcl_val a[9] = {0};   /* spec; C, A, B, range, by, quadrant, K, lambda */
+    PCL_READ(L, a);
+    int st, by = a[5].n;
+    if (by == 6) {                                   /* §2.1.1.6: K, A, B, lambda */
+        need_point(L, &a[7], "K");
+        if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
+            return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
+        return push(L, pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st), st);
     }
-    if (by && !strcmp(by, "diameter")) {
-        double K[PC_MAXDIM], A[PC_MAXDIM], B[PC_MAXDIM];
-        int d = fpt(L, fn, 1, "K", 0, K);
-        fpt(L, fn, 1, "A", d, A);
-        fpt(L, fn, 1, "B", d, B);
-        double lam = fnum(L, fn, 1, "lambda", NAN);
-        if (!(lam > 0 && lam < 1)) pcl_error(L, "%s: field lambda must be in (0, 1), got %s", fn, pcl_pushnum(L, lam));
-        int st;
-        return push(L, pc_conic_conjugate2(d, K, A, B, lam, &st), st, fn);
-    }
-    for (int i = 0; ellipse_forms[i].name; i++)
-        if (by && !strcmp(by, ellipse_forms[i].name)) {
-            double q = fnum(L, fn, 1, "quadrant", 1);
-            return kcurve_from(L, fn, ellipse_forms[i].kind, &q, 1);
-        }
-    return pcl_error(L, "%s: field by must be \"angle\", \"radius\", \"focal\", \"compression\", "
-                     "\"algebraic\", \"conjugate\" or \"diameter\", got %s", fn, by ? by : "a non-string");
+    need_point(L, &a[1], "C");
+    if (by == 5) return push(L, pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st), st);
+    return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
 }
 
+static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};
+static const pc_kcurve_kind hyperbola_kinds[] = {PC_KC_HYPERBOLA_ANGLE, PC_KC_HYPERBOLA_RADIUS, PC_KC_HYPERBOLA_FOCAL};
+static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
+static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
 static int c_hyperbola(lua_State *L) {
-    const char *fn = "conic.hyperbola";
-    checktable(L, fn, 1, "spec");
-    lua_getfield(L, 1, "by");
-    const char *by = lua_isnil(L, -1) ? "angle" : lua_tostring(L, -1);
-    lua_pop(L, 1);
-    for (int i = 0; hyperbola_forms[i].name; i++)
-        if (by && !strcmp(by, hyperbola_forms[i].name)) {
-            double br = fnum(L, fn, 1, "branch", 1);
-            if (br != 1 && br != 2) pcl_error(L, "%s: field branch must be 1 (through A) or 2", fn);
-            return kcurve_from(L, fn, hyperbola_forms[i].kind, &br, 1);
-        }
-    return pcl_error(L, "%s: field by must be \"angle\", \"radius\" or \"focal\", got %s", fn,
-                     by ? by : "a non-string");
+    pcl_val a[7] = {0};   /* spec; C, A, B, range, by, branch */
+    PCL_READ(L, a);
+    return kcurve_from(L, a, hyperbola_kinds[a[5].n], &a[6].x, 1);
 }
 
+static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
+static const pcl_arg circle_args[] = SPEC(circle_keys);
 static int c_circle(lua_State *L) {
-    const char *fn = "conic.circle";
-    checktable(L, fn, 1, "spec");
-    if (lua_getfield(L, 1, "delta"), !lua_isnil(L, -1)) {
-        lua_pop(L, 1);
-        double dl = fnum(L, fn, 1, "delta", NAN);
-        if (!(dl > 0 && dl < M_PI)) pcl_error(L, "%s: field delta must be an angle in (0, pi), got %s", fn, pcl_pushnum(L, dl));
-        return kcurve_from(L, fn, PC_KC_CIRCLE_ANGLE, &dl, 1);
+    pcl_val a[7] = {0};   /* spec; C, A, B, range, delta, R */
+    PCL_READ(L, a);
+    if (a[5].present) {
+        if (!(a[5].x > 0 && a[5].x < M_PI)) return pcl_keyfail(L, "delta", "must be an angle in (0, pi), got %s", pcl_pushnum(L, a[5].x));
+        return kcurve_from(L, a, PC_KC_CIRCLE_ANGLE, &a[5].x, 1);
     }
-    lua_pop(L, 1);
-    if (lua_getfield(L, 1, "R"), !lua_isnil(L, -1)) {
-        lua_pop(L, 1);
-        double R = fnum(L, fn, 1, "R", NAN);
-        if (!(R > 0)) pcl_error(L, "%s: field R must be a positive radius, got %s", fn, pcl_pushnum(L, R));
-        return kcurve_from(L, fn, PC_KC_CIRCLE_RADIUS, &R, 1);
-    }
-    lua_pop(L, 1);
+    if (a[6].present) return kcurve_from(L, a, PC_KC_CIRCLE_RADIUS, &a[6].x, 1);
     /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], k;
-    int d = fpt(L, fn, 1, "A", 0, A);
-    fpt(L, fn, 1, "B", d, B);
-    fpt(L, fn, 1, "C", d, C);
-    int st = pc_conic_ed_circle_k(d, A, B, C, &k);
-    if (st == PC_EDOMAIN) pcl_error(L, "%s: |CA| must equal |CB| for the arc (or give delta or R)", fn);
-    statuscheck(L, fn, st);
-    return push(L, pc_conic_ed(d, A, B, C, k, &st), st, fn);
+    double k;
+    int st = pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "|CA| must equal |CB| for the arc (or give delta or R)");
+    statuscheck(L, st);
+    return push(L, pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st), st);
 }
 
+static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
 static int c_tilted(lua_State *L) {
-    const char *fn = "conic.tilted";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], P[PC_MAXDIM], Q[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    double th = pcl_checknum(L, fn, 4, "theta"), m = pcl_checknum(L, fn, 5, "m"),
-           n = pcl_checknum(L, fn, 6, "n");
-    if (!(m > 0)) pcl_argerror_full(L, fn, 5, 5, "m", "a positive semi-axis");
-    if (!(n > 0)) pcl_argerror_full(L, fn, 6, 6, "n", "a positive semi-axis");
-    statuscheck(L, fn, pc_ellipse_tilted_axes(d, A, B, C, th, m, n, P, Q));
-    int st;
-    push(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, C, P, Q, NULL, 0, NAN, NAN, &st), st, fn);
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n, st;
+    double P[PC_MAXDIM], Q[PC_MAXDIM];
+    statuscheck(L, pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
+    push(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), st);
     pcl_pushpoint(L, d, P);
     pcl_pushpoint(L, d, Q);
     return 3;
 }
 
+static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
+static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
 static int c_five_points(lua_State *L) {
-    const char *fn = "conic.five_points";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], D[PC_MAXDIM], E[PC_MAXDIM], u[5];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    pt(L, fn, 4, "D", d, 1, D);
-    pt(L, fn, 5, "E", d, 1, E);
-    int st = pc_conic_five_points_params(d, A, B, C, D, E, u);
-    if (st == PC_EDOMAIN)
-        pcl_error(L, "%s: the five points must lie in one plane with no three of them collinear", fn);
-    if (st == PC_ECOLLINEAR) pcl_error(L, "%s: A, B and C must not be collinear", fn);
-    statuscheck(L, fn, st);
+    pcl_val a[9] = {0};   /* A..E, opts, u0, u1, whole */
+    PCL_READ(L, a);
+    int d = a[0].n;
+    double u[5];
+    int st = pc_conic_five_points_params(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "the five points must lie in one plane with no three of them collinear");
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "A, B and C must not be collinear");
+    statuscheck(L, st);
     double u0 = 0, u1 = 1;
     /* a point whose U is the point at infinity of CA (ED parallel to CA) has |u| huge, not a
      * range end: it is reached by the whole conic only */
     for (int i = 0; i < 5; i++)
         if (isfinite(u[i]) && fabs(u[i]) < 1e6) u0 = fmin(u0, u[i]), u1 = fmax(u1, u[i]);
-    int whole = 0;
-    if (!lua_isnoneornil(L, 6)) {
-        checktable(L, fn, 6, "opts");
-        u0 = fnum(L, fn, 6, "u0", u0);
-        u1 = fnum(L, fn, 6, "u1", u1);
-        lua_getfield(L, 6, "whole");
-        whole = lua_toboolean(L, -1);
-        lua_pop(L, 1);
-        if (!(u1 > u0)) pcl_error(L, "%s: opts.u1 must be greater than opts.u0", fn);
-    }
-    push(L, pc_conic_five_points(d, A, B, C, D, E, u0, u1, whole, NULL, &st), st, fn);
+    if (a[6].present) u0 = a[6].x;
+    if (a[7].present) u1 = a[7].x;
+    if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
+    push(L, pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st), st);
     lua_createtable(L, 0, 5);
-    static const char *names[5] = {"A", "B", "C", "D", "E"};
     for (int i = 0; i < 5; i++) {
         lua_pushnumber(L, u[i]);
-        lua_setfield(L, -2, names[i]);
+        lua_setfield(L, -2, (const char[]){(char)('A' + i), 0});
     }
     return 2;
 }
 
+#define REQNUM(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_REQ}
+static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"), REQNUM("q3"), PCL_END};
+static const pcl_arg five2_args[] = SPEC(five2_keys);
 static int c_five_points2(lua_State *L) {
-    const char *fn = "conic.five_points2";
-    checktable(L, fn, 1, "spec");
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-    int d = fpt(L, fn, 1, "C", 0, C);
-    fpt(L, fn, 1, "A", d, A);
-    fpt(L, fn, 1, "B", d, B);
-    double p1 = fnum(L, fn, 1, "p1", NAN), p2 = fnum(L, fn, 1, "p2", NAN),
-           q2 = fnum(L, fn, 1, "q2", NAN), q3 = fnum(L, fn, 1, "q3", NAN);
-    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1))
-        pcl_error(L, "%s: fields p1 and q3 must be in (0, 1]", fn);
+    pcl_val a[8] = {0};   /* spec; C, A, B, p1, p2, q2, q3 */
+    PCL_READ(L, a);
+    double p1 = a[4].x, p2 = a[5].x, q2 = a[6].x, q3 = a[7].x;
+    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1)) return pcl_fail(L, "options 'p1' and 'q3' must be in (0, 1]");
     if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
-        pcl_error(L, "%s: fields p2 and q2 must be in (0, 1) (A2 inside the triangle C A1 A3)", fn);
+        return pcl_fail(L, "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)");
     int st;
-    return push(L, pc_conic_five_points2(d, C, A, B, p1, p2, q2, q3, &st), st, fn);
+    return push(L, pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st), st);
 }
 
+static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
+                                       A_NUMOPT("t1", 1, NULL), PCL_END};
 static int c_triples(lua_State *L) {
-    const char *fn = "conic.triples";
-    double P[5][PC_MAXDIM];
-    static const char *what[5] = {"A1", "A2", "A3", "A4", "A5"};
-    int d = pt(L, fn, 1, what[0], 0, 0, P[0]);
-    for (int i = 1; i < 5; i++) pt(L, fn, i + 1, what[i], d, 1, P[i]);
-    double t0 = pcl_optnum(L, fn, 6, "t0", 0), t1 = pcl_optnum(L, fn, 7, "t1", 1);
-    if (!(t1 > t0)) pcl_argerror_full(L, fn, 7, 7, "t1", "greater than t0");
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
+    if (!(a[6].x > a[5].x)) return pcl_argfail(L, 7, "must be greater than t0");
     int st;
-    pc_curve *c = pc_triples_conic(d, P[0], P[1], P[2], P[3], P[4], t0, t1, &st);
-    if (!c && st == PC_EDOMAIN) pcl_error(L, "%s: the lines A2A3 and A4A5 must meet", fn);
-    return push(L, c, st, fn);
+    pc_curve *c = pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st);
+    if (!c && st == PC_EDOMAIN) return pcl_fail(L, "the lines A2A3 and A4A5 must meet");
+    return push(L, c, st);
 }
 
+static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
+                                         {.name = "v", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 static int c_redundant(lua_State *L) {
-    const char *fn = "conic.redundant";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], K[PC_MAXDIM];
-    int d = pt(L, fn, 1, "C", 0, 0, C);
-    pt(L, fn, 2, "A", d, 1, A);
-    pt(L, fn, 3, "B", d, 1, B);
-    if (lua_isnoneornil(L, 4)) {        /* (2.121) u = v = t: the ED arc with k = 2/3 */
-        int st;
-        return push(L, pc_conic_ed(d, A, B, C, 2.0 / 3, &st), st, fn);
-    }
-    double u = pcl_checknum(L, fn, 4, "u"), v = pcl_checknum(L, fn, 5, "v");
-    int st = pc_redundant_point(d, C, A, B, u, v, K);
-    if (st == PC_EPOLE) pcl_error(L, "%s: u = 0 and v = 1 make both lines AB: K is undefined", fn);
-    statuscheck(L, fn, st);
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n, st;
+    if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
+        return push(L, pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st), st);
+    if (!a[3].present || !a[4].present) return pcl_argfail(L, a[3].present ? 5 : 4, "must be a finite number, got nil");
+    double K[PC_MAXDIM];
+    st = pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K);
+    if (st == PC_EPOLE) return pcl_fail(L, "u = 0 and v = 1 make both lines AB: K is undefined");
+    statuscheck(L, st);
     pcl_pushpoint(L, d, K);
     return 1;
 }
 
+static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
+static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
+static const pcl_arg reparam_args[] = SPEC(reparam_keys);
 static int c_reparam(lua_State *L) {
-    const char *fn = "conic.reparam";
-    checktable(L, fn, 1, "spec");
-    lua_getfield(L, 1, "by");
-    const char *by = lua_isnil(L, -1) ? "angle" : lua_tostring(L, -1);
-    lua_pop(L, 1);
-    if (by && !strcmp(by, "angle")) return kcurve_from(L, fn, PC_KC_PARABOLA_ANGLE, NULL, 0);
-    if (by && !strcmp(by, "sigma")) {
-        double br = fnum(L, fn, 1, "branch", 1);
-        if (br != 1 && br != 2) pcl_error(L, "%s: field branch must be 1 (towards A) or 2 (towards B)", fn);
-        return kcurve_from(L, fn, PC_KC_PARABOLA_SIGMA, &br, 1);
-    }
-    return pcl_error(L, "%s: field by must be \"angle\" or \"sigma\"", fn);
+    pcl_val a[7] = {0};   /* spec; C, A, B, range, by, branch */
+    PCL_READ(L, a);
+    if (a[5].n == 0) return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE, NULL, 0);
+    return kcurve_from(L, a, PC_KC_PARABOLA_SIGMA, &a[6].x, 1);
 }
 
-static int c_sinusoid(lua_State *L) {
-    const char *fn = "conic.sinusoid";
-    checktable(L, fn, 1, "spec");
-    double par[PC_KC_MAXPAR];
-    lua_getfield(L, 1, "k");
-    if (lua_isnumber(L, -1)) {
-        par[0] = 1, par[1] = lua_tonumber(L, -1);
-    } else if (lua_istable(L, -1)) {
-        int g = (int)luaL_len(L, -1);
-        if (g < 1 || g > PC_KC_MAXPAR - 1) pcl_error(L, "%s: field k must list 1 to %d wave numbers", fn, PC_KC_MAXPAR - 1);
-        par[0] = g;
+/* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
+static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    int g = 1;
+    if (lua_type(L, idx) == LUA_TNUMBER) {
+        out->v[1] = lua_tonumber(L, idx);
+    } else {
+        if (!lua_istable(L, idx)) return 0;
+        size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
+        if (len < 1 || len > PC_KC_MAXPAR - 1) return 0;
+        g = (int)len;
         for (int i = 1; i <= g; i++) {
-            lua_geti(L, -1, i);
-            par[i] = lua_tonumber(L, -1);
+            lua_geti(L, idx, i);
+            out->v[i] = lua_type(L, -1) == LUA_TNUMBER ? lua_tonumber(L, -1) : NAN;
             lua_pop(L, 1);
         }
-    } else {
-        pcl_error(L, "%s: field k must be a wave number or a list of them (one per generation)", fn);
     }
-    lua_pop(L, 1);
-    for (int i = 1; i <= (int)par[0]; i++)
-        if (!(par[i] > 0) || !isfinite(par[i]))
-            pcl_error(L, "%s: field k[%d] must be a positive number", fn, i);
-    return kcurve_from(L, fn, PC_KC_SINUSOID, par, (int)par[0] + 1);
+    out->v[0] = g;
+    for (int i = 1; i <= g; i++)
+        if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
+    return 1;
+}
+static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_waves,
+    .shown = "{m, n, ...}", .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
+static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
+static int c_sinusoid(lua_State *L) {
+    pcl_val a[6] = {0};   /* spec; C, A, B, range, k */
+    PCL_READ(L, a);
+    return kcurve_from(L, a, PC_KC_SINUSOID, a[5].v, (int)a[5].v[0] + 1);
 }
 
+static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
+static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
 static int c_cycloid(lua_State *L) {
-    const char *fn = "conic.cycloid";
-    checktable(L, fn, 1, "spec");
-    lua_getfield(L, 1, "concave");
-    double cc = lua_toboolean(L, -1) ? 1 : 0;
-    lua_pop(L, 1);
-    return kcurve_from(L, fn, PC_KC_CYCLOID, &cc, 1);
+    pcl_val a[6] = {0};   /* spec; C, A, B, range, concave */
+    PCL_READ(L, a);
+    return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1);
 }
 
+static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
 static int c_cones(lua_State *L) {
-    const char *fn = "conic.cones";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], D[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    if (d < 3) pcl_error(L, "%s: the points must be 3-D or more (a tetrahedron ABCD), got %d-D", fn, d);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    pt(L, fn, 4, "D", d, 1, D);
-    double fp = pcl_checknum(L, fn, 5, "fP"), fq = pcl_checknum(L, fn, 6, "fQ"),
-           n = pcl_checknum(L, fn, 7, "n");
-    if (!(fp > 0 && fp < 1)) pcl_argerror_full(L, fn, 5, 5, "fP", "a number in (0, 1)");
-    if (!(fq > 0 && fq < 1)) pcl_argerror_full(L, fn, 6, 6, "fQ", "a number in (0, 1)");
-    if (n == 0 || n == 1) pcl_argerror_full(L, fn, 7, 7, "n", "a number other than 0 and 1");
-    int st;
-    pc_curve *c = pc_cubic_cones(d, A, B, C, D, fp, fq, n, &st);
-    if (!c && st == PC_ECOLLINEAR) pcl_error(L, "%s: A, B, C, D must span a tetrahedron", fn);
-    return push(L, c, st, fn);
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n, st;
+    if (d < 3) return pcl_fail(L, "the points must be 3-D or more (a tetrahedron ABCD), got %d-D", d);
+    for (int k = 4; k < 6; k++)
+        if (!(a[k].x > 0 && a[k].x < 1)) return pcl_argfail(L, k + 1, "must be a number in (0, 1), got %s", pcl_shown(L, k + 1));
+    if (a[6].x == 0 || a[6].x == 1) return pcl_argfail(L, 7, "must be a number other than 0 and 1, got %s", pcl_shown(L, 7));
+    pc_curve *c = pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st);
+    if (!c && st == PC_ECOLLINEAR) return pcl_fail(L, "A, B, C, D must span a tetrahedron");
+    return push(L, c, st);
 }
 
+static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
+                                       A_FNOPT("du", "a function of t"), A_FNOPT("dv", "a function of t"), PCL_END};
 static int c_contour(lua_State *L) {
-    const char *fn = "conic.contour";
-    double A1[PC_MAXDIM], A2[PC_MAXDIM], A3[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A1", 0, 0, A1);
-    pt(L, fn, 2, "A2", d, 1, A2);
-    pt(L, fn, 3, "A3", d, 1, A3);
-    if (!callable(L, 4)) pcl_argerror_full(L, fn, 4, 4, "u", "a function of t");
-    if (!callable(L, 5)) pcl_argerror_full(L, fn, 5, 5, "v", "a function of t");
-    int has_d = !lua_isnoneornil(L, 6);
-    if (has_d && !callable(L, 6)) pcl_argerror_full(L, fn, 6, 6, "du", "a function of t");
-    if (has_d && !callable(L, 7)) pcl_argerror_full(L, fn, 7, 7, "dv", "a function of t");
-    int idx[4] = {4, 5, 6, 7};
-    luaref *r = newref(L, fn, has_d ? 4 : 2, idx);
-    int st;
-    pcl_callback_state(L);
-    pc_curve *c = pc_contour_arc(d, A1, A2, A3, real_cb, has_d, luaref_free, r, &st);
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
+    int has_d = a[5].present, st;
+    if (has_d && !a[6].present) return pcl_argfail(L, 7, "must be a function of t (with du), got nil");
+    luaref *r = newref(L, has_d ? 4 : 2, (int[]){4, 5, 6, 7});
+    pc_curve *c = pc_contour_arc(a[0].n, a[0].v, a[1].v, a[2].v, real_cb, has_d, luaref_free, r, &st);
     if (!c) luaref_free(r);
-    return push(L, c, st, fn);
+    return push(L, c, st);
 }
 
 /* ==== oneratio ============================================================================== */
 
-static int o_simplex(lua_State *L) {
-    const char *fn = "oneratio.simplex";
-    int base = lua_istable(L, 1) && !pcl_tovalue(L, 1) ? 2 : 1;   /* oneratio(A, B, C) */
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-    int d = pt(L, fn, base, "A", 0, 0, A);
-    pt(L, fn, base + 1, "B", d, base, B);
-    pt(L, fn, base + 2, "C", d, base, C);
+static const pcl_arg abcd_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), PCL_END};
+static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is the receiver */
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_simplex(d, A, B, C, &st), st, fn);
+    pc_curve *c = pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st);
+    if (!c) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_pushcurve(L, c, "oneratio.simplex");   /* the one kind, however it was called */
+    return 1;
 }
 
 static int o_tetra(lua_State *L) {
-    const char *fn = "oneratio.tetra";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], D[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    pt(L, fn, 4, "D", d, 1, D);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_tetra(d, A, B, C, D, &st), st, fn);
+    return push(L, pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st);
 }
 
+static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
 static int o_bezier3(lua_State *L) {
-    const char *fn = "oneratio.bezier3";
-    double P[4][PC_MAXDIM], cp[4 * (PC_MAXDIM + 1)];
-    static const char *what[4] = {"A", "C1", "C2", "B"};
-    int d = pt(L, fn, 1, what[0], 0, 0, P[0]);
-    for (int i = 1; i < 4; i++) pt(L, fn, i + 1, what[i], d, 1, P[i]);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n, st;
+    double cp[4 * (PC_MAXDIM + 1)];
     for (int i = 0; i < 4; i++) {      /* (3.4) with the corrected t' powers */
-        memcpy(cp + i * (d + 1), P[i], sizeof(double) * (size_t)d);
+        memcpy(cp + i * (d + 1), a[i].v, sizeof(double) * (size_t)d);
         cp[i * (d + 1) + d] = 1;
     }
-    int st;
-    return push(L, pc_curve_bezier(d, 4, cp, &st), st, fn);
+    return push(L, pc_curve_bezier(d, 4, cp, &st), st);
 }
 
+static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
+    {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
 static int o_smooth(lua_State *L) {
-    const char *fn = "oneratio.smooth";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    lua_Integer n = 2;
-    if (!lua_isnoneornil(L, 4)) {
-        if (!lua_isinteger(L, 4)) pcl_argerror_full(L, fn, 4, 4, "n", "an integer 1..40");
-        n = lua_tointeger(L, 4);
-    }
-    if (n < 1 || n > 40) pcl_argerror_full(L, fn, 4, 4, "n", "an integer 1..40");
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_smooth(d, A, B, C, (int)n, &st), st, fn);
+    return push(L, pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st), st);
 }
 
 static int o_desargues(lua_State *L) {
-    const char *fn = "oneratio.desargues";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], D[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    pt(L, fn, 4, "D", d, 1, D);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_desargues(d, A, B, C, D, &st), st, fn);
+    return push(L, pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st);
 }
 
 static double const_blend(void *ud, double v) {
@@ -684,50 +465,49 @@ static double const_blend(void *ud, double v) {
     return *(double *)ud;
 }
 
+/* f: a function of v or a number */
+static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    out->n = lua_type(L, idx) == LUA_TNUMBER;
+    out->x = lua_tonumber(L, idx);
+    return out->n ? isfinite(out->x) : read_callable(L, idx, a, out);
+}
+static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
+    {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
 static int o_double_contact(lua_State *L) {
-    const char *fn = "oneratio.double_contact";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    double kp = pcl_checknum(L, fn, 4, "kp"), kq = pcl_checknum(L, fn, 5, "kq");
-    if (kp == 0) pcl_argerror_full(L, fn, 4, 4, "kp", "a non-zero number");
-    if (kq == 0) pcl_argerror_full(L, fn, 5, 5, "kq", "a non-zero number");
-    if (kp == kq) pcl_argerror_full(L, fn, 5, 5, "kq", "different from kp (else M is the conic P = Q)");
-    int st;
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    double kp = a[3].x, kq = a[4].x;
+    if (kp == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
+    if (kq == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
+    if (kp == kq) return pcl_argfail(L, 5, "must be different from kp (else M is the conic P = Q)");
+    int st, d = a[0].n;
     pc_curve *c;
     pcl_callback_state(L);
-    if (lua_isnoneornil(L, 6)) {
-        c = pc_oneratio_double_contact(d, A, B, C, kp, kq, NULL, NULL, NULL, &st);
-    } else if (lua_type(L, 6) == LUA_TNUMBER) {
+    if (!a[5].present) {
+        c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, NULL, NULL, NULL, &st);
+    } else if (a[5].n) {
         double *f = malloc(sizeof *f);
-        if (!f) return pcl_error(L, "%s: out of memory", fn);
-        *f = pcl_checknum(L, fn, 6, "f");
-        c = pc_oneratio_double_contact(d, A, B, C, kp, kq, const_blend, free, f, &st);
+        if (!f) return pcl_fail(L, "out of memory");
+        *f = a[5].x;
+        c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, const_blend, free, f, &st);
         if (!c) free(f);
     } else {
-        if (!callable(L, 6)) pcl_argerror_full(L, fn, 6, 6, "f", "a function of v or a number");
-        int idx[1] = {6};
-        luaref *r = newref(L, fn, 1, idx);
-        c = pc_oneratio_double_contact(d, A, B, C, kp, kq, blend_cb, luaref_free, r, &st);
+        luaref *r = newref(L, 1, (int[]){6});
+        c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, blend_cb, luaref_free, r, &st);
         if (!c) luaref_free(r);
     }
-    return push(L, c, st, fn);
+    return push(L, c, st);
 }
 
+static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
+    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
 static int o_closed(lua_State *L) {
-    const char *fn = "oneratio.closed";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    double kp = pcl_checknum(L, fn, 4, "kP"), kq = pcl_checknum(L, fn, 5, "kQ");
-    if (kp == 0) pcl_argerror_full(L, fn, 4, 4, "kP", "a non-zero number");
-    if (kq == 0) pcl_argerror_full(L, fn, 5, 5, "kQ", "a non-zero number");
-    double s = pcl_optnum(L, fn, 6, "scheme", 1);
-    if (s != 1 && s != 2) pcl_argerror_full(L, fn, 6, 6, "scheme", "1 or 2");
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
+    if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     int st;
-    return push(L, pc_oneratio_closed(d, A, B, C, kp, kq, (int)s, &st), st, fn);
+    return push(L, pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st), st);
 }
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
@@ -741,14 +521,13 @@ static void push_h(lua_State *L, int dim, const double *h) {
     else pcl_pushpoint(L, dim, x);
 }
 
+static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
 static int o_simplex_scheme(lua_State *L) {
-    const char *fn = "oneratio.simplex_scheme";
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], N[PC_MAXDIM], M[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    double t = pcl_checknum(L, fn, 4, "t");
-    statuscheck(L, fn, pc_oneratio_simplex_scheme(d, A, B, C, t, N, M));
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n;
+    double N[PC_MAXDIM], M[PC_MAXDIM];
+    statuscheck(L, pc_oneratio_simplex_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, N, M));
     lua_createtable(L, 0, 2);
     pcl_pushpoint(L, d, N);
     lua_setfield(L, -2, "N");
@@ -757,13 +536,13 @@ static int o_simplex_scheme(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
 static int o_levels(lua_State *L) {
-    const char *fn = "oneratio.levels";
-    lua_settop(L, 2);
-    int n, d;
-    double *p = ptlist(L, fn, 1, "points", 2, 16, &n, &d);
-    double t = pcl_checknum(L, fn, 2, "t"), out[120 * PC_MAXDIM];
-    statuscheck(L, fn, pc_decasteljau_levels(d, n, p, t, out));
+    double p[16 * PC_MAXDIM], out[120 * PC_MAXDIM];
+    pcl_val a[2] = {{.list = p, .cap = 16 * PC_MAXDIM}};
+    PCL_READ(L, a);
+    int n = a[0].n, d = a[0].dim;
+    statuscheck(L, pc_decasteljau_levels(d, n, p, a[1].x, out));
     lua_createtable(L, n - 1, 0);
     const double *row = out;
     for (int level = 1; level < n; level++) {
@@ -778,16 +557,14 @@ static int o_levels(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
 static int o_desargues_scheme(lua_State *L) {
-    const char *fn = "oneratio.desargues_scheme";
     static const char *names[7] = {"T", "S", "R", "N", "J", "Q", "M"};
-    double A[PC_MAXDIM], B[PC_MAXDIM], C[PC_MAXDIM], D[PC_MAXDIM], h[7 * (PC_MAXDIM + 1)], pq[2];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "B", d, 1, B);
-    pt(L, fn, 3, "C", d, 1, C);
-    pt(L, fn, 4, "D", d, 1, D);
-    double t = pcl_checknum(L, fn, 5, "t");
-    statuscheck(L, fn, pc_desargues_scheme(d, A, B, C, D, t, h, pq));
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n;
+    double h[7 * (PC_MAXDIM + 1)], pq[2];
+    statuscheck(L, pc_desargues_scheme(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, h, pq));
     lua_createtable(L, 0, 9);
     for (int i = 0; i < 7; i++) {
         push_h(L, d, h + i * (d + 1));
@@ -802,88 +579,103 @@ static int o_desargues_scheme(lua_State *L) {
 
 /* ==== interp ================================================================================ */
 
-static int i_lagrange(lua_State *L) {
-    const char *fn = "interp.lagrange";
-    lua_settop(L, 2);
-    int n, d;
-    double *p = ptlist(L, fn, 1, "points", 2, PC_CURVE_MAXDEG + 1, &n, &d);
-    double *u = lua_isnoneornil(L, 2) ? NULL : numlist(L, fn, 2, "params", n);
-    int st;
-    pc_curve *c = pc_curve_interpolate(d, n, p, u, &st);
-    if (!c && st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #2 (params) must be distinct", fn);
-    return push(L, c, st, fn);
+static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES),
+    {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
+
+/* the interpolation curve through a[0] at the parameters a[1] (uniform when absent) */
+static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
+    need_count(L, 2, &a[1], a[0].n);
+    pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, st);
+    if (!c && *st == PC_ECOINCIDENT) pcl_argfail(L, 2, "must be distinct");
+    return c;
 }
 
-/* interp.weights(n, t): the book's order n (n + 1 weights at the uniform j/n), or the list
- * of node parameters; t a number, or an equation (param "t"): then the weights are equations,
- * the polynomials the Maple program of §4.8 prints */
-static int i_weights(lua_State *L) {
-    const char *fn = "interp.weights";
-    lua_settop(L, 2);
-    int n;
-    double *u = NULL;
-    if (lua_isinteger(L, 1)) {
-        lua_Integer order = lua_tointeger(L, 1);
-        if (order < 1 || order > PC_CURVE_MAXDEG)
-            pcl_argerror_full(L, fn, 1, 1, "n", "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes)");
-        n = (int)order + 1;
-    } else if (lua_istable(L, 1)) {
-        n = (int)luaL_len(L, 1);
-        if (n < 2 || n > PC_CURVE_MAXDEG + 1) pcl_argerror_full(L, fn, 1, 1, "params", "a list of 2..65 parameters");
-        u = numlist(L, fn, 1, "params", n);
-    } else {
-        return pcl_argerror_full(L, fn, 1, 1, "n", "the book's order n or a list of node parameters");
-    }
-    if (pcl_isequation(L, 2)) {
-        double coef[(PC_CURVE_MAXDEG + 1) * (PC_CURVE_MAXDEG + 1)];
-        int st = pc_lagrange_weight_coefs(n, u, coef);
-        if (st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #1 (params) must be distinct", fn);
-        statuscheck(L, fn, st);
-        lua_createtable(L, n, 0);
-        for (int j = 0; j < n; j++) {
-            /* phi_j = c0 + c1 t + c2 t^2 + ..., terms of zero coefficient left out */
-            int any = 0;
-            for (int i = 0; i < n; i++) {
-                double c = coef[(size_t)j * n + i];
-                if (c == 0) continue;
-                lua_pushnumber(L, c);
-                if (i > 0) {
-                    lua_pushvalue(L, 2);
-                    if (i > 1) {
-                        lua_pushinteger(L, i);
-                        lua_arith(L, LUA_OPPOW);
-                    }
-                    lua_arith(L, LUA_OPMUL);
-                }
-                if (any) lua_arith(L, LUA_OPADD);
-                any = 1;
-            }
-            if (!any) lua_pushnumber(L, 0);
-            lua_rawseti(L, -2, j + 1);
-        }
+static int i_lagrange(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int st;
+    pc_curve *c = interpolate(L, a, &st);
+    return push(L, c, st);
+}
+
+/* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
+ * parameters (out->list, out->n: the count of nodes) */
+static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (lua_isinteger(L, idx)) {
+        lua_Integer order = lua_tointeger(L, idx);
+        if (order < 1 || order > PC_CURVE_MAXDEG) return 0;
+        out->n = (int)order + 1, out->list = NULL;
         return 1;
     }
-    double t = pcl_checknum(L, fn, 2, "t"), w[PC_CURVE_MAXDEG + 1];
-    int st = pc_lagrange_weights(n, u, t, w);
-    if (st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #1 (params) must be distinct", fn);
-    statuscheck(L, fn, st);
+    if (!lua_istable(L, idx)) return 0;
+    static const pcl_arg params = A_NUMBERS("params", 2, MAXNODES);
+    pcl_readone(L, idx, 1, 0, &params, 0, out);
+    return 1;
+}
+/* t: a finite number, or an equation (out->n = 1) */
+static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->n = pcl_isequation(L, idx);
+    out->x = lua_tonumber(L, idx);
+    return out->n || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
+}
+static const pcl_arg weights_args[] = {{.name = "n", .kind = PCL_ANY, .read = read_nodes,
+    .expect = "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes) or a list of node parameters"},
+    {.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or an equation (param \"t\")"}, PCL_END};
+
+/* the weights as equations in t (stack index 2): the polynomials the Maple program of §4.8
+ * prints, phi_j = c0 + c1 t + c2 t^2 + ..., terms of zero coefficient left out */
+static int weight_equations(lua_State *L, int n, const double *u) {
+    double coef[MAXNODES * MAXNODES];
+    int st = pc_lagrange_weight_coefs(n, u, coef);
+    if (st == PC_ECOINCIDENT) return pcl_fail(L, "argument #1 (params) must be distinct");
+    statuscheck(L, st);
+    lua_createtable(L, n, 0);
+    for (int j = 0; j < n; j++) {
+        int any = 0;
+        for (int i = 0; i < n; i++) {
+            double c = coef[(size_t)j * n + i];
+            if (c == 0) continue;
+            lua_pushnumber(L, c);
+            if (i > 0) {
+                lua_pushvalue(L, 2);
+                if (i > 1) {
+                    lua_pushinteger(L, i);
+                    lua_arith(L, LUA_OPPOW);
+                }
+                lua_arith(L, LUA_OPMUL);
+            }
+            if (any) lua_arith(L, LUA_OPADD);
+            any = 1;
+        }
+        if (!any) lua_pushnumber(L, 0);
+        lua_rawseti(L, -2, j + 1);
+    }
+    return 1;
+}
+
+static int i_weights(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    if (a[1].n) return weight_equations(L, n, a[0].list);
+    double t = a[1].x, w[MAXNODES];
+    int st = pc_lagrange_weights(n, a[0].list, t, w);
+    if (st == PC_ECOINCIDENT) return pcl_fail(L, "argument #1 (params) must be distinct");
+    statuscheck(L, st);
     for (int i = 0; i < n; i++)   /* a t far outside the nodes overflows the products */
-        if (!isfinite(w[i]))
-            pcl_error(L, "%s: the weights are out of range (not finite) for t = %s", fn,
-                      pcl_pushnum(L, t));
-    pushnums(L, n, w);
+        if (!isfinite(w[i])) return pcl_fail(L, "the weights are out of range (not finite) for t = %s", pcl_pushnum(L, t));
+    pcl_push_numbers(L, n, w);
     return 1;
 }
 
 static int i_controls(lua_State *L) {
-    const char *fn = "interp.controls";
-    lua_settop(L, 2);
-    int n, d;
-    double *p = ptlist(L, fn, 1, "points", 2, PC_CURVE_MAXDEG + 1, &n, &d);
-    double *u = lua_isnoneornil(L, 2) ? NULL : numlist(L, fn, 2, "params", n);
-    int st;
-    pc_curve *c = pc_curve_interpolate(d, n, p, u, &st);
-    if (!c) return pcl_raise_status(L, fn, st);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int st, d = a[0].dim;
+    pc_curve *c = interpolate(L, a, &st);
+    if (!c) return pcl_raise_status(L, pcl_name(L), st);
     lua_createtable(L, c->ncp, 0);
     for (int i = 0; i < c->ncp; i++) {
         double x[PC_MAXDIM];
@@ -895,97 +687,90 @@ static int i_controls(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
 static int i_conic(lua_State *L) {
-    const char *fn = "interp.conic";
-    double A[PC_MAXDIM], K[PC_MAXDIM], B[PC_MAXDIM];
-    int d = pt(L, fn, 1, "A", 0, 0, A);
-    pt(L, fn, 2, "K", d, 1, K);
-    pt(L, fn, 3, "B", d, 1, B);
-    double k = pcl_checknum(L, fn, 4, "k");
-    if (k == 0 || k == 1) pcl_argerror_full(L, fn, 4, 4, "k", "a number other than 0 and 1");
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    if (a[3].x == 0 || a[3].x == 1) return pcl_argfail(L, 4, "must be a number other than 0 and 1, got %s", pcl_shown(L, 4));
     int st;
-    return push(L, pc_conic_ed3(d, A, K, B, k, &st), st, fn);
+    return push(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
 }
 
+/* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
+static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
+                                   SP("C2"), A_LATER("Cn"), {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
 static int i_arc(lua_State *L) {
-    const char *fn = "interp.arc";
-    lua_settop(L, 4);
-    int n, d;
-    double *p = ptlist(L, fn, 1, "points", 2, PC_CURVE_MAXDEG - 2, &n, &d);
-    double c2[PC_MAXDIM], cn[PC_MAXDIM];
-    pt(L, fn, 2, "C2", d, 1, c2);
-    /* interp.arc(points, C2 [, Cn] [, params]) */
-    int parg = lua_istable(L, 3) && !pcl_tovalue(L, 3) ? 3 : 4;
-    int two = parg == 4 && !lua_isnoneornil(L, 3);
-    if (two) pt(L, fn, 3, "Cn", d, 1, cn);
-    double *u = lua_isnoneornil(L, parg) ? NULL : numlist(L, fn, parg, "params", n);
-    int st;
-    pc_curve *c = pc_interp_arc_u(d, n, p, u, c2, two ? cn : NULL, &st);
-    if (!c && st == PC_EDOMAIN && u)
-        return pcl_error(L, "%s: argument #%d (params) must increase (one parameter per point, in order)", fn, parg);
-    return push(L, c, st, fn);
+    static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
+                         u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
+    pcl_val a[4] = {0}, cn = {0}, p3 = {0};
+    PCL_READ(L, a);
+    int n = a[0].n, d = a[0].dim, k = 4, st;
+    const pcl_val *u = &a[3];
+    if (lua_istable(L, 3)) {
+        pcl_readone(L, 3, 3, 0, &u_arg, 0, &p3);
+        u = &p3, k = 3;
+    } else if (a[2].present) {
+        pcl_readone(L, 3, 3, 0, &cn_arg, d, &cn);
+    }
+    need_count(L, k, u, n);
+    pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
+    if (!c && st == PC_EDOMAIN && u->present) return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
+    return push(L, c, st);
 }
 
+static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
+                                        {.name = "axis", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1}, PCL_END};
 static int i_adaptive(lua_State *L) {
-    const char *fn = "interp.adaptive";
-    lua_settop(L, 2);
-    int n, d;
-    double *p = ptlist(L, fn, 1, "points", 2, PC_CURVE_MAXDEG + 1, &n, &d);
-    lua_Integer axis = 1;
-    if (!lua_isnoneornil(L, 2)) {
-        if (!lua_isinteger(L, 2) || lua_tointeger(L, 2) < 1 || lua_tointeger(L, 2) > d) {
-            lua_pushfstring(L, "an axis number 1..%d", d);
-            pcl_argerror_full(L, fn, 2, 2, "axis", lua_tostring(L, -1));
-        }
-        axis = lua_tointeger(L, 2);
-    }
-    double v[PC_CURVE_MAXDEG + 1];
-    int st = pc_interp_adaptive_params(d, n, p, (int)axis - 1, v);
-    if (st == PC_ECOINCIDENT) pcl_error(L, "%s: the first and last nodes have the same coordinate on axis %d", fn, (int)axis);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n, d = a[0].dim, axis = (int)a[1].x;
+    if (axis < 1 || axis > d) return pcl_argfail(L, 2, "must be an axis number 1..%d, got %d", d, axis);
+    double v[MAXNODES];
+    int st = pc_interp_adaptive_params(d, n, a[0].list, axis - 1, v);
+    if (st == PC_ECOINCIDENT) return pcl_fail(L, "the first and last nodes have the same coordinate on axis %d", axis);
     if (st == PC_EDOMAIN)
-        pcl_error(L, "%s: the nodes must advance along axis %d in their order (the book's "
-                  "limitation: the order of the nodes must be the order of the parameters)", fn, (int)axis);
-    statuscheck(L, fn, st);
-    pushnums(L, n, v);
+        return pcl_fail(L, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
+                        "the nodes must be the order of the parameters)", axis);
+    statuscheck(L, st);
+    pcl_push_numbers(L, n, v);
     return 1;
 }
 
-static const struct { const char *name; pc_proto_kind kind; int n, nk; } protos[] = {
-    {"desargues", PC_PROTO_DESARGUES, 4, 0}, {"rational", PC_PROTO_RATIONAL, 4, 0},
-    {"exp", PC_PROTO_EXP, 3, 3}, {"exp1", PC_PROTO_EXP_AFFINE, 3, 2},
-    {"trig", PC_PROTO_TRIG, 3, 0}, {NULL, 0, 0, 0}};
-
+static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};
+static const struct { pc_proto_kind kind; int n, nk; } protos[] = {
+    {PC_PROTO_DESARGUES, 4, 0}, {PC_PROTO_RATIONAL, 4, 0}, {PC_PROTO_EXP, 3, 3}, {PC_PROTO_EXP_AFFINE, 3, 2},
+    {PC_PROTO_TRIG, 3, 0}};
+static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
+                                     A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
 static int i_prototype(lua_State *L) {
-    const char *fn = "interp.prototype";
-    lua_settop(L, 6);
-    const char *name = lua_tostring(L, 1);
-    int i = 0;
-    while (protos[i].name && (!name || strcmp(name, protos[i].name))) i++;
-    if (!protos[i].name)
-        return pcl_argerror_full(L, fn, 1, 1, "kind",
-                                 "\"desargues\", \"rational\", \"exp\", \"exp1\" or \"trig\"");
-    int n, d;
-    double *p = ptlist(L, fn, 2, "points", protos[i].n, protos[i].n, &n, &d);
-    double k[3] = {0, 0, 0}, t0 = NAN, t1 = NAN;
-    int next = 3;
-    if (protos[i].nk) {
-        double *kk = numlist(L, fn, 3, "k", protos[i].nk);
-        memcpy(k, kk, sizeof(double) * (size_t)protos[i].nk);
-        next = 4;
+    pcl_val a[5] = {0}, p = {0}, k = {0}, t = {0};
+    PCL_READ(L, a);
+    int i = a[0].n, n = protos[i].n, nk = protos[i].nk, next = nk ? 4 : 3;
+    /* the count of points the prototype takes, whatever came (nil included) */
+    if (!lua_istable(L, 2)) return pcl_argfail(L, 2, "must hold %d points (the \"%s\" prototype), got %s", n, a[0].s, pcl_shown(L, 2));
+    pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta = A_NUM("t0");
+    pcl_readone(L, 2, 2, 0, &pa, 0, &p);
+    double kk[3] = {0, 0, 0}, t0 = NAN, t1 = NAN;
+    if (nk) {
+        pcl_readone(L, 3, 3, 0, &ka, 0, &k);
+        memcpy(kk, k.list, sizeof(double) * (size_t)nk);
     }
     if (!lua_isnoneornil(L, next)) {
-        t0 = pcl_checknum(L, fn, next, "t0");
-        t1 = pcl_checknum(L, fn, next + 1, "t1");
-        if (!(t1 > t0)) pcl_argerror_full(L, fn, next + 1, next + 1, "t1", "greater than t0");
+        pcl_readone(L, next, next, 0, &ta, 0, &t);
+        t0 = t.x;
+        ta.name = "t1";
+        pcl_readone(L, next + 1, next + 1, 0, &ta, 0, &t);
+        t1 = t.x;
+        if (!(t1 > t0)) return pcl_fail(L, "argument #%d (t1) must be greater than t0", next + 1);
     }
     int st;
-    pc_curve *c = pc_interp_prototype(protos[i].kind, d, n, p, k, t0, t1, &st);
-    if (!c && st == PC_ESINGULAR) pcl_error(L, "%s: the exponents must be distinct (singular system)", fn);
-    return push(L, c, st, fn);
+    pc_curve *c = pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st);
+    if (!c && st == PC_ESINGULAR) return pcl_fail(L, "the exponents must be distinct (singular system)");
+    return push(L, c, st);
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes */
-typedef struct { int ref; } basisref;
+typedef struct { int ref; const char *fname; } basisref;   /* fname: for messages */
 
 static int basis_cb(void *ud, double t, int n, double *g) {
     lua_State *L = pcl_current_state();
@@ -1002,7 +787,7 @@ static int basis_cb(void *ud, double t, int n, double *g) {
         g[i] = lua_tonumberx(L, -1, &isnum);
         if (!isnum) {
             pcl_pushwhere(L);
-            lua_pushfstring(L, "interp.basis: the basis function [%d] must return a number", i + 1);
+            lua_pushfstring(L, "%s: the basis function [%d] must return a number", ((basisref *)ud)->fname, i + 1);
             lua_concat(L, 2);
             int st = pcl_callback_failed(L);
             lua_pop(L, i + 2);
@@ -1019,60 +804,70 @@ static void basisref_free(void *ud) {
     free(ud);
 }
 
-static int i_basis(lua_State *L) {
-    const char *fn = "interp.basis";
-    lua_settop(L, 5);
-    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "basis", "a list of functions of t");
-    int nb = (int)luaL_len(L, 1);
-    if (nb < 1 || nb > 16) pcl_argerror_full(L, fn, 1, 1, "basis", "a list of 1..16 functions");
-    for (int i = 1; i <= nb; i++) {
-        lua_geti(L, 1, i);
-        if (!callable(L, -1)) pcl_error(L, "%s: argument #1 (basis) item [%d] must be a function of t", fn, i);
+/* the basis: a list of 1 to 16 functions of t (out->n of them) */
+static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    if (!lua_istable(L, idx)) return 0;
+    size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
+    if (len < 1 || len > 16) return 0;
+    out->n = (int)len;
+    for (int i = 1; i <= out->n; i++) {
+        lua_geti(L, idx, i);
+        if (!read_callable(L, -1, a, out)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
         lua_pop(L, 1);
     }
-    int n, d;
-    double *p = ptlist(L, fn, 2, "points", nb, nb, &n, &d);
-    double *u = numlist(L, fn, 3, "params", n);
+    return 1;
+}
+static const pcl_arg basis_args[] = {{.name = "basis", .kind = PCL_ANY, .read = read_basis, .expect = "a list of 1 to 16 functions of t"},
+                                     A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
+                                     {.name = "t0", .kind = PCL_NUMBER, .flags = PCL_OPT},
+                                     {.name = "t1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
+static int i_basis(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n, d = a[1].dim;
+    if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);
+    need_count(L, 3, &a[2], n);
+    const double *u = a[2].list;
     double t0 = u[0], t1 = u[0];
     for (int i = 1; i < n; i++) t0 = fmin(t0, u[i]), t1 = fmax(t1, u[i]);
-    if (!lua_isnoneornil(L, 4)) {
-        t0 = pcl_checknum(L, fn, 4, "t0");
-        t1 = pcl_checknum(L, fn, 5, "t1");
+    if (a[3].present) {
+        if (!a[4].present) return pcl_argfail(L, 5, "must be a finite number (with t0), got nil");
+        t0 = a[3].x, t1 = a[4].x;
     }
-    if (!(t1 > t0)) pcl_error(L, "%s: the parameter range must not be empty", fn);
+    if (!(t1 > t0)) return pcl_fail(L, "the parameter range must not be empty");
     basisref *r = malloc(sizeof *r);
-    if (!r) return pcl_error(L, "%s: out of memory", fn);
+    if (!r) return pcl_fail(L, "out of memory");
     lua_pushvalue(L, 1);
     r->ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    r->fname = pcl_name(L);
     int st;
     pcl_callback_state(L);
-    pc_curve *c = pc_interp_basis(d, n, p, u, basis_cb, basisref_free, r, t0, t1, &st);
+    pc_curve *c = pc_interp_basis(d, n, a[1].list, u, basis_cb, basisref_free, r, t0, t1, &st);
     if (!c) {
         basisref_free(r);
-        if (st == PC_ESINGULAR) pcl_error(L, "%s: the collocation matrix g_i(t_j) is singular", fn);
+        if (st == PC_ESINGULAR) return pcl_fail(L, "the collocation matrix g_i(t_j) is singular");
     }
-    push(L, c, st, fn);
+    push(L, c, st);
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
-    st = pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev);
-    if (st) pcl_raise_status(L, fn, st);
+    statuscheck(L, pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
     lua_pushboolean(L, dev <= 1e-9);
     lua_pushnumber(L, dev);
     return 3;
 }
 
+static const pcl_arg r22_args[] = {A_POINTS("points", 0, 5, 5), PCL_END};
 static int i_rational22(lua_State *L) {
-    const char *fn = "interp.rational22";
-    lua_settop(L, 1);
-    int n, d;
-    double *p = ptlist(L, fn, 1, "points", 5, 5, &n, &d), co[5 * PC_MAXDIM];
-    int st;
-    pc_curve *c = pc_interp_rational22(d, p, co, &st);
-    if (!c && st == PC_ESINGULAR) pcl_error(L, "%s: a coordinate has no rational (2,2) fit", fn);
-    push(L, c, st, fn);
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    int st, d = a[0].dim;
+    double co[5 * PC_MAXDIM];
+    pc_curve *c = pc_interp_rational22(d, a[0].list, co, &st);
+    if (!c && st == PC_ESINGULAR) return pcl_fail(L, "a coordinate has no rational (2,2) fit");
+    push(L, c, st);
     lua_createtable(L, d, 0);
     for (int k = 0; k < d; k++) {
-        pushnums(L, 5, co + 5 * k);
+        pcl_push_numbers(L, 5, co + 5 * k);
         lua_rawseti(L, -2, k + 1);
     }
     return 2;
@@ -1080,158 +875,111 @@ static int i_rational22(lua_State *L) {
 
 /* ==== approx ================================================================================ */
 
-static luaref *checkfn(lua_State *L, const char *fn, int arg) {
-    if (!callable(L, arg)) pcl_argerror_full(L, fn, arg, arg, "f", "a function of x");
-    int idx[1] = {arg};
-    luaref *r = newref(L, fn, 1, idx);
-    pcl_callback_state(L);
-    return r;
-}
+#define F_OF_X A_FN("f", "a function of x")
 
+static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END};
 static int a_curve(lua_State *L) {
-    const char *fn = "approx.curve";
-    lua_settop(L, 2);
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of x");
-    if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 2..64 abscissae");
-    int n = (int)luaL_len(L, 2);
-    if (n < 2 || n > 64) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 2..64 abscissae");
-    double *x = numlist(L, fn, 2, "nodes", n), p[128];
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = a[1].n, st;
+    double p[128];
     for (int j = 0; j < n; j++) {       /* the nodes (x_j, f(x_j)) at uniform t */
+        double x = a[1].list[j];
         lua_pushvalue(L, 1);
-        lua_pushnumber(L, x[j]);
+        lua_pushnumber(L, x);
         lua_call(L, 1, 1);
         int isnum;
-        p[2 * j] = x[j], p[2 * j + 1] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum || !isfinite(p[2 * j + 1]))
-            pcl_error(L, "%s: f(%s) must be a finite number", fn, pcl_pushnum(L, x[j]));
+        p[2 * j] = x, p[2 * j + 1] = lua_tonumberx(L, -1, &isnum);
+        if (!isnum || !isfinite(p[2 * j + 1])) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, x));
         lua_pop(L, 1);
     }
-    int st;
-    pc_curve *c = pc_curve_interpolate(2, n, p, NULL, &st);
-    return push(L, c, st, fn);
+    return push(L, pc_curve_interpolate(2, n, p, NULL, &st), st);
 }
 
-/* The optional m and {m =, divisor = "m+1"|"m"|"m-1"} from arg on: m as given or dflt, the
- * divisor in *d. */
-static lua_Integer mse_opts(lua_State *L, const char *fn, int arg, lua_Integer dflt, lua_Integer lo,
-                            lua_Integer hi, pc_mse_divisor *d) {
-    lua_Integer m = dflt;
-    *d = PC_MSE_DIV_M1;
-    int opt = arg;
-    if (lua_isinteger(L, arg) || (!lua_isnoneornil(L, arg) && !lua_istable(L, arg))) {
-        if (!lua_isinteger(L, arg) || lua_tointeger(L, arg) < lo || lua_tointeger(L, arg) > hi) {
-            lua_pushfstring(L, "a number of samples %I..%I", lo, hi);
-            pcl_argerror_full(L, fn, arg, arg, "m", lua_tostring(L, -1));
-        }
-        m = lua_tointeger(L, arg);
-        opt = arg + 1;
+/* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
+ * a points to m's value, then the table, then its keys (m, divisor) */
+static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};
+static const pc_mse_divisor divisors[] = {PC_MSE_DIV_M1, PC_MSE_DIV_M, PC_MSE_DIV_MMINUS1};
+static const pcl_arg mse_keys[] = {{.name = "m", .kind = PCL_INTEGER}, A_ENUM("divisor", DIVISORS), PCL_END};
+static const pcl_arg mse_opts = A_OPTIONS("opts", mse_keys);
+static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* an integer or the table */
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && isfinite(out->x));
+}
+#define A_M {.name = "m", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_m, .expect = "a number of samples or a table {m =, divisor =}"}
+
+static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse_divisor *dv) {
+    pcl_val t[2] = {0};
+    const pcl_val *o = a + 2;
+    if (lua_istable(L, k)) pcl_readopts(L, k, k, &mse_opts, t), o = t;
+    double m = o[0].present ? o[0].x : a[0].present && !lua_istable(L, k) ? a[0].x : 100;
+    if (m < lo || m > hi) {
+        if (o[0].present) pcl_keyfail(L, "m", "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
+        pcl_argfail(L, k, "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
     }
-    if (lua_isnoneornil(L, opt)) return m;
-    if (!lua_istable(L, opt)) pcl_argerror_full(L, fn, opt, opt, "options", "a table {m =, divisor =}");
-    lua_pushnil(L);
-    while (lua_next(L, opt)) {
-        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
-        if (!k || (strcmp(k, "m") && strcmp(k, "divisor")))
-            pcl_error(L, "%s: unknown option %s (the options are m and divisor)", fn,
-                      k ? k : pcl_shown(L, lua_gettop(L) - 1));
-        lua_pop(L, 1);
-    }
-    lua_getfield(L, opt, "m");
-    if (!lua_isnil(L, -1)) {
-        if (!lua_isinteger(L, -1) || lua_tointeger(L, -1) < lo || lua_tointeger(L, -1) > hi)
-            pcl_error(L, "%s: option m must be a number of samples %d..%d, got %s", fn, (int)lo, (int)hi,
-                      pcl_shown(L, lua_gettop(L)));
-        m = lua_tointeger(L, -1);
-    }
-    lua_getfield(L, opt, "divisor");
-    if (!lua_isnil(L, -1)) {
-        const char *v = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
-        if (!strcmp(v, "m+1")) *d = PC_MSE_DIV_M1;
-        else if (!strcmp(v, "m")) *d = PC_MSE_DIV_M;
-        else if (!strcmp(v, "m-1")) *d = PC_MSE_DIV_MMINUS1;
-        else pcl_error(L, "%s: option divisor must be \"m+1\" (the book's), \"m\" or \"m-1\", got %s", fn,
-                       *v ? lua_pushfstring(L, "\"%s\"", v) : pcl_shown(L, lua_gettop(L)));
-    }
-    lua_pop(L, 2);
-    return m;
+    *dv = divisors[o[1].n];
+    return (int)m;
 }
 
+static const pcl_arg mse_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
 static int a_mse(lua_State *L) {
-    const char *fn = "approx.mse";
-    lua_settop(L, 4);
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of x");
-    if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 2..64 abscissae");
-    int n = (int)luaL_len(L, 2);
-    if (n < 2 || n > 64) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 2..64 abscissae");
-    double *x = numlist(L, fn, 2, "nodes", n);
+    pcl_val a[6] = {0};   /* f, nodes, m, opts, m =, divisor = */
+    PCL_READ(L, a);
     pc_mse_divisor dv;
-    lua_Integer m = mse_opts(L, fn, 3, 100, 1, 1000000, &dv);
-    luaref *r = checkfn(L, fn, 1);
+    int m = samples(L, 3, &a[2], 1, 1000000, &dv);
+    luaref *r = newref(L, 1, (int[]){1});
     double mse;
-    int st = pc_approx_mse(scalar_cb, r, n, x, (int)m, &mse);
+    int st = pc_approx_mse(scalar_cb, r, a[1].n, a[1].list, m, &mse);
     luaref_free(r);
-    statuscheck(L, fn, st);
-    if (pc_approx_rescale(mse, (int)m, dv, &mse) != PC_OK)
-        return pcl_error(L, "%s: the divisor m - 1 is 0 for m = 1", fn);
+    statuscheck(L, st);
+    if (pc_approx_rescale(mse, m, dv, &mse) != PC_OK) return pcl_fail(L, "the divisor m - 1 is 0 for m = 1");
     lua_pushnumber(L, mse);
     return 1;
 }
 
+static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
 static int a_optimal_nodes(lua_State *L) {
-    const char *fn = "approx.optimal_nodes";
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of x");
-    double a = pcl_checknum(L, fn, 2, "a"), b = pcl_checknum(L, fn, 3, "b");
-    if (!(b > a)) pcl_argerror_full(L, fn, 3, 3, "b", "greater than a");
-    if (!lua_isinteger(L, 4) || lua_tointeger(L, 4) < 3 || lua_tointeger(L, 4) > 16)
-        pcl_argerror_full(L, fn, 4, 4, "N", "a number of nodes 3..16");
-    int N = (int)lua_tointeger(L, 4);
+    pcl_val a[8] = {0};   /* f, a, b, N, m, opts, m =, divisor = */
+    PCL_READ(L, a);
+    int N = (int)a[3].x;
+    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     pc_mse_divisor dv;
-    lua_Integer m = mse_opts(L, fn, 5, 100, N, 100000, &dv);
-    luaref *r = checkfn(L, fn, 1);
+    int m = samples(L, 5, &a[4], N, 100000, &dv);
+    luaref *r = newref(L, 1, (int[]){1});
     double x[16], mse;
-    int evals;
-    int st = pc_approx_optimal_nodes(scalar_cb, r, a, b, N, (int)m, x, &mse, &evals);
+    int evals, st = pc_approx_optimal_nodes(scalar_cb, r, a[1].x, a[2].x, N, m, x, &mse, &evals);
     luaref_free(r);
-    statuscheck(L, fn, st);
-    pc_approx_rescale(mse, (int)m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
-    pushnums(L, N, x);
+    statuscheck(L, st);
+    pc_approx_rescale(mse, m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
+    pcl_push_numbers(L, N, x);
     lua_pushnumber(L, mse);
     lua_pushinteger(L, evals);
     return 3;
 }
 
+static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
 static int a_chebyshev(lua_State *L) {
-    const char *fn = "approx.chebyshev";
-    if (!lua_isinteger(L, 1) || lua_tointeger(L, 1) < 1 || lua_tointeger(L, 1) > 64)
-        pcl_argerror_full(L, fn, 1, 1, "N", "a number of nodes 1..64");
-    int N = (int)lua_tointeger(L, 1);
-    double a = pcl_optnum(L, fn, 2, "a", -1), b = pcl_optnum(L, fn, 3, "b", 1), x[64];
-    if (!(b > a)) pcl_argerror_full(L, fn, 3, 3, "b", "greater than a");
-    pc_chebyshev_nodes(N, a, b, x);
-    pushnums(L, N, x);
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
+    double x[64];
+    pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x);
+    pcl_push_numbers(L, (int)a[0].x, x);
     return 1;
 }
 
+static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
+    {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101, .expect = "an integer >= 2"}, PCL_END};
 static int a_lagrange_mse(lua_State *L) {
-    const char *fn = "approx.lagrange_mse";
-    lua_settop(L, 5);
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of x");
-    if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of abscissae");
-    int n = (int)luaL_len(L, 2);
-    if (n < 1 || n > 64) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 1..64 abscissae");
-    double *x = numlist(L, fn, 2, "nodes", n);
-    double a = pcl_checknum(L, fn, 3, "a"), b = pcl_checknum(L, fn, 4, "b");
-    lua_Integer M = 101;
-    if (!lua_isnoneornil(L, 5)) {
-        if (!lua_isinteger(L, 5) || lua_tointeger(L, 5) < 2) pcl_argerror_full(L, fn, 5, 5, "M", "an integer >= 2");
-        M = lua_tointeger(L, 5);
-    }
-    luaref *r = checkfn(L, fn, 1);
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    luaref *r = newref(L, 1, (int[]){1});
     double mse;
-    int st = pc_lagrange_mse_x(scalar_cb, r, n, x, a, b, (int)M, &mse);
+    int st = pc_lagrange_mse_x(scalar_cb, r, a[1].n, a[1].list, a[2].x, a[3].x, (int)a[4].x, &mse);
     luaref_free(r);
-    if (st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #2 (nodes) must be distinct", fn);
-    statuscheck(L, fn, st);
+    if (st == PC_ECOINCIDENT) return pcl_argfail(L, 2, "must be distinct");
+    statuscheck(L, st);
     lua_pushnumber(L, mse);
     return 1;
 }
@@ -1254,27 +1002,24 @@ static double nm_cb(void *ud, const double *x) {
     return y;
 }
 
+static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
+    {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
 static int a_nelder_mead(lua_State *L) {
-    const char *fn = "approx.nelder_mead";
-    lua_settop(L, 3);
-    if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of n numbers");
-    if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "x0", "a list of 1..32 numbers");
-    int n = (int)luaL_len(L, 2);
-    if (n < 1 || n > 32) pcl_argerror_full(L, fn, 2, 2, "x0", "a list of 1..32 numbers");
-    double *x = numlist(L, fn, 2, "x0", n);
-    double step = pcl_optnum(L, fn, 3, "step", 0.1);
-    if (!(step > 0)) pcl_argerror_full(L, fn, 3, 3, "step", "a positive number");
+    double x[32];
+    pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
+    PCL_READ(L, a);
+    int n = a[1].n;
     nmref r = {0, n, 0};
     lua_pushvalue(L, 1);
     r.ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
     double fx;
     int it;
-    int st = pc_nelder_mead(n, nm_cb, &r, x, step, 1e-14, 1e-10, 20000, &fx, &it);
+    int st = pc_nelder_mead(n, nm_cb, &r, x, a[2].x, 1e-14, 1e-10, 20000, &fx, &it);
     luaL_unref(L, LUA_REGISTRYINDEX, r.ref);
-    if (r.failed) pcl_raise_status(L, fn, PC_EARG);      /* the kept Lua error */
-    if (st != PC_OK && st != PC_ENOCONVERGE) pcl_raise_status(L, fn, st);
-    pushnums(L, n, x);
+    if (r.failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
+    if (st != PC_OK && st != PC_ENOCONVERGE) pcl_raise_status(L, pcl_name(L), st);
+    pcl_push_numbers(L, n, x);
     lua_pushnumber(L, fx);
     lua_pushinteger(L, it);
     return 3;
@@ -1282,37 +1027,80 @@ static int a_nelder_mead(lua_State *L) {
 
 /* ==== registration ========================================================================== */
 
-static const luaL_Reg conic_fns[] = {
-    {"ed", c_ed}, {"ed_k", c_ed_k}, {"circle_k", c_circle_k}, {"ceva", c_ceva},
-    {"ceva_k", c_ceva_k}, {"parabola", c_parabola}, {"ellipse", c_ellipse},
-    {"hyperbola", c_hyperbola}, {"circle", c_circle}, {"tilted", c_tilted},
-    {"five_points", c_five_points}, {"five_points2", c_five_points2}, {"triples", c_triples},
-    {"redundant", c_redundant}, {"reparam", c_reparam}, {"sinusoid", c_sinusoid},
-    {"cycloid", c_cycloid}, {"cones", c_cones}, {"contour", c_contour}, {NULL, NULL}};
-static const luaL_Reg oneratio_fns[] = {
-    {"simplex", o_simplex}, {"tetra", o_tetra}, {"bezier3", o_bezier3}, {"smooth", o_smooth},
-    {"desargues", o_desargues}, {"double_contact", o_double_contact}, {"closed", o_closed},
-    {"simplex_scheme", o_simplex_scheme}, {"levels", o_levels},
-    {"desargues_scheme", o_desargues_scheme}, {NULL, NULL}};
-static const luaL_Reg interp_fns[] = {
-    {"lagrange", i_lagrange}, {"weights", i_weights}, {"controls", i_controls},
-    {"conic", i_conic}, {"arc", i_arc}, {"adaptive", i_adaptive}, {"prototype", i_prototype},
-    {"basis", i_basis}, {"rational22", i_rational22}, {NULL, NULL}};
-static const luaL_Reg approx_fns[] = {
-    {"curve", a_curve}, {"mse", a_mse}, {"optimal_nodes", a_optimal_nodes}, {"chebyshev", a_chebyshev},
-    {"lagrange_mse", a_lagrange_mse}, {"nelder_mead", a_nelder_mead}, {NULL, NULL}};
+#define SIG(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text}
+static const pcl_fn conic_fns[] = {
+    PCL_FN("conic.ed", c_ed, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
+    PCL_FN("conic.ed_k", c_ed_k, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
+    PCL_FN("conic.circle_k", c_circle_k, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
+    PCL_FN("conic.ceva", c_ceva, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
+    PCL_FN("conic.ceva_k", c_ceva_k, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
+    SIG("conic.parabola", c_parabola, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
+    SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
+    SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
+    SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
+    PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes."),
+    PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
+    SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
+    PCL_FN("conic.triples", c_triples, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
+    SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
+    SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
+    SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
+    SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
+    PCL_FN("conic.cones", c_cones, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
+    SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
+    PCL_END};
+
+static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
+static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table,
+                                        .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
+static const pcl_fn oneratio_fns[] = {
+    PCL_FN("oneratio.simplex", o_simplex, abc_args, "curve", "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B."),
+    PCL_FN("oneratio.tetra", o_tetra, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
+    PCL_FN("oneratio.bezier3", o_bezier3, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
+    PCL_FN("oneratio.smooth", o_smooth, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
+    PCL_FN("oneratio.desargues", o_desargues, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
+    PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
+    PCL_FN("oneratio.closed", o_closed, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
+    PCL_FN("oneratio.simplex_scheme", o_simplex_scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
+    PCL_FN("oneratio.desargues_scheme", o_desargues_scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
+    PCL_END};
+
+static const pcl_fn interp_fns[] = {
+    PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
+    SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
+    PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
+    PCL_FN("interp.conic", i_conic, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
+    SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
+    PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
+    SIG("interp.prototype", i_prototype, proto_args, "interp.prototype(\"desargues\"|\"rational\"|\"trig\", points [, t0, t1]) -> curve\ninterp.prototype(\"exp\"|\"exp1\", points, k [, t0, t1]) -> curve", "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40); desargues and rational take 4 points, the others 3."),
+    SIG("interp.basis", i_basis, basis_args, "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve, affine, deviation", "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params; affine: the weights sum to 1 (membership condition) over [t0, t1], deviation the largest |sum - 1|."),
+    SIG("interp.rational22", i_rational22, r22_args, "interp.rational22({M1, ..., M5}) -> curve, coef", "(4.38) Per coordinate (a1 t^2 + a2 t + a3)/(a4 t^2 + a5 t + 1) through 5 points at t = j/4."),
+    PCL_END};
+
+static const pcl_fn approx_fns[] = {
+    PCL_FN("approx.curve", a_curve, curve_args, "curve", "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t."),
+    SIG("approx.mse", a_mse, mse_args, "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge)."),
+    SIG("approx.optimal_nodes", a_optimal_nodes, optimal_args, "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
+    PCL_FN("approx.chebyshev", a_chebyshev, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
+    PCL_FN("approx.lagrange_mse", a_lagrange_mse, lmse_args, "mse", "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x."),
+    PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
+    PCL_END};
+
+static void module(lua_State *L, const char *name, const pcl_fn *fns) {
+    lua_newtable(L);
+    pcl_register(L, -1, fns, 0);
+    lua_setfield(L, -2, name);
+}
 
 void pcl_open_konopatsky(lua_State *L) {
-    luaL_newlib(L, conic_fns);
-    lua_setfield(L, -2, "conic");
-    luaL_newlib(L, oneratio_fns);
-    lua_createtable(L, 0, 1);           /* oneratio(A, B, C) is oneratio.simplex */
-    lua_pushcfunction(L, o_simplex);
-    lua_setfield(L, -2, "__call");
+    module(L, "conic", conic_fns);
+    lua_newtable(L);
+    pcl_register(L, -1, oneratio_fns, 0);
+    lua_newtable(L);                    /* oneratio(A, B, C) is oneratio.simplex */
+    pcl_register(L, -1, oneratio_call, 0);
     lua_setmetatable(L, -2);
     lua_setfield(L, -2, "oneratio");
-    luaL_newlib(L, interp_fns);
-    lua_setfield(L, -2, "interp");
-    luaL_newlib(L, approx_fns);
-    lua_setfield(L, -2, "approx");
+    module(L, "interp", interp_fns);
+    module(L, "approx", approx_fns);
 }

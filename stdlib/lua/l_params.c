@@ -7,6 +7,7 @@
  * The host's side (pcl.h): pcl_param_set before running a script, pcl_push_params after. */
 #include <math.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_point.h"
 
 #define SET_KEY "pointcalc.params.set"           /* name -> value given by the host */
@@ -41,33 +42,37 @@ static int good_name(const char *s, size_t len) {
     return 1;
 }
 
-static int l_slider(lua_State *L) {
+/* the name: a string of letters, digits and _ */
+static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
     size_t len;
-    const char *name = lua_tolstring(L, 1, &len);
-    if (lua_type(L, 1) != LUA_TSTRING || !good_name(name, len))
-        return pcl_argerror(L, 1, "name", "a name of letters, digits and _ (up to 64)");
-    double lo = pcl_checkfinite(L, 2, "min"), hi = pcl_checkfinite(L, 3, "max");
-    if (!(lo < hi)) return pcl_argerror(L, 3, "max", "greater than min");
-    double dflt = pcl_checkfinite(L, 4, "default");
-    if (dflt < lo || dflt > hi) return pcl_argerror(L, 4, "default", "between min and max");
-    double step = 0;
-    int animate = 0;
-    if (lua_type(L, 5) == LUA_TNUMBER) {
-        step = pcl_checkfinite(L, 5, "step");
-    } else if (lua_istable(L, 5)) {
-        lua_getfield(L, 5, "step");
-        if (!lua_isnil(L, -1)) {
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                return pcl_error(L, "slider: opts.step must be a finite number, got %s", pcl_shown(L, -1));
-            step = lua_tonumber(L, -1);
-        }
-        lua_getfield(L, 5, "animate");
-        animate = lua_toboolean(L, -1);
-        lua_pop(L, 2);
-    } else if (!lua_isnoneornil(L, 5)) {
-        return pcl_argerror(L, 5, "step", "a number or a table {step =, animate =}");
-    }
-    if (step < 0 || step > hi - lo) return pcl_argerror(L, 5, "step", "between 0 and max - min");
+    out->s = lua_tolstring(L, idx, &len);
+    return lua_type(L, idx) == LUA_TSTRING && good_name(out->s, len);
+}
+/* step: a number, or the table {step =, animate =} (read by the body) */
+static int read_step(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->x = lua_tonumber(L, idx);
+    return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
+}
+static const pcl_arg slider_keys[] = {A_NUM("step"), {.name = "animate", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
+static const pcl_arg slider_opts = {.name = "step", .kind = PCL_OPTIONS, .keys = slider_keys};
+static const pcl_arg slider_args[] = {
+    {.name = "name", .kind = PCL_ANY, .read = read_name, .expect = "a name of letters, digits and _ (up to 64)"},
+    A_NUM("min"), A_NUM("max"), A_NUM("default"),
+    {.name = "step", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_step, .expect = "a number or a table {step =, animate =}"},
+    PCL_END};
+
+static int l_slider(lua_State *L) {
+    pcl_val a[5] = {0}, k[2] = {0};   /* name, min, max, default, step; the table's step, animate */
+    PCL_READ(L, a);
+    if (lua_istable(L, 5)) pcl_readopts(L, 5, 5, &slider_opts, k);
+    const char *name = a[0].s;
+    double lo = a[1].x, hi = a[2].x, dflt = a[3].x, step = lua_istable(L, 5) ? k[0].x : a[4].x;
+    int animate = (int)k[1].x;
+    if (!(lo < hi)) return pcl_argfail(L, 3, "must be greater than min");
+    if (dflt < lo || dflt > hi) return pcl_argfail(L, 4, "must be between min and max");
+    if (step < 0 || step > hi - lo) return pcl_argfail(L, 5, "must be between 0 and max - min");
 
     /* the declaration, once per name (a script may ask for its slider again) */
     registry_table(L, DECLARED_KEY);
@@ -101,8 +106,8 @@ static int l_slider(lua_State *L) {
     if (lua_getfield(L, -1, name) == LUA_TNUMBER) {
         double v = lua_tonumber(L, -1);
         if (v < lo || v > hi)
-            return pcl_error(L, "slider: the value %s set for %s is outside its range [%s, %s]",
-                             pcl_pushnum(L, v), name, pcl_pushnum(L, lo), pcl_pushnum(L, hi));
+            return pcl_fail(L, "the value %s set for %s is outside its range [%s, %s]", pcl_pushnum(L, v), name,
+                            pcl_pushnum(L, lo), pcl_pushnum(L, hi));
         lua_pushnumber(L, v);
         return 1;
     }
@@ -127,8 +132,11 @@ static int l_params(lua_State *L) {
 
 void pcl_open_params(lua_State *L) {
     int module = lua_gettop(L);
-    lua_pushcfunction(L, l_slider);
-    lua_setfield(L, module, "slider");
+    static const pcl_fn fns[] = {
+        {.name = "slider", .fn = l_slider, .args = slider_args, .sig = "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
+         .help = "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames)."},
+        PCL_END};
+    pcl_register(L, module, fns, 0);
     pcl_private(L, module);
     lua_pushcfunction(L, l_param_set);
     lua_setfield(L, -2, "param_set");

@@ -1,4 +1,5 @@
-/* Binding of the QBasic number semantics (interp/qbasic/qbnum): the sub-table `qb` of the module.
+/* Binding of the QBasic number semantics (interp/qbasic/qbnum): the sub-table `qb` of the
+ * module, declared on the argument layer (pcl_args.h).
  *
  *   qb.f32(x)                 x rounded to SINGLE (float32)
  *   qb.cint(x), qb.clng(x)    round to nearest, ties to even; second result false on overflow
@@ -11,31 +12,35 @@
  * The RND state belongs to the Lua state: a userdata shared as upvalue by rnd, randomize and
  * seed.  It starts at QBasic's initial seed. */
 #include <math.h>
-#include "pcl.h"
+#include "pcl_args.h"
 #include "qbnum.h"
 
-/* A number argument, or the house error naming it ("f32: argument #1 (x) must be a number"). */
-static double number_arg(lua_State *L, int arg, const char *what) {
+/* Any number, inf and NaN included (SINGLE overflows to inf; translated QBasic reports it),
+ * as Lua converts it (a numeric string too, as before). */
+static int read_qbnum(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
     int isnum;
-    double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum) pcl_argerror(L, arg, what, "a number");
-    return v;
+    out->x = lua_tonumberx(L, idx, &isnum);
+    return isnum;
 }
-
-static double finite_arg(lua_State *L, int arg, const char *what) {
-    double v = number_arg(L, arg, what);
-    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
-    return v;
-}
+static const pcl_arg x_arg[] = {{.name = "x", .kind = PCL_ANY, .read = read_qbnum, .expect = "a number"}, PCL_END};
+static const pcl_arg n_opt[] = {{.name = "n", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_qbnum, .expect = "a number"}, PCL_END};
+static const pcl_arg n_arg[] = {A_NUM("n"), PCL_END};
+static const pcl_arg seed_arg[] = {{.name = "s", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = 0xFFFFFF}, PCL_END};
+static const pcl_arg range_args[] = {A_NUM("start"), A_NUM("limit"), A_NUMOPT("step", 1, NULL), PCL_END};
 
 static int l_f32(lua_State *L) {
-    lua_pushnumber(L, qb_f32(number_arg(L, 1, "x")));
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, qb_f32(a[0].x));
     return 1;
 }
 
 static int push_rounded(lua_State *L, double (*fn)(double, int *)) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
     int ok;
-    double r = fn(number_arg(L, 1, "x"), &ok);
+    double r = fn(a[0].x, &ok);
     if (ok) lua_pushinteger(L, (lua_Integer)r);
     else lua_pushnumber(L, r);
     lua_pushboolean(L, ok);
@@ -44,45 +49,44 @@ static int push_rounded(lua_State *L, double (*fn)(double, int *)) {
 static int l_cint(lua_State *L) { return push_rounded(L, qb_cint); }
 static int l_clng(lua_State *L) { return push_rounded(L, qb_clng); }
 
-/* The state in the upvalue: the debug library can replace it (debug.setupvalue), so its type
- * and size are checked (pcl.h: forged userdata). */
-static void *upvalue_state(lua_State *L, size_t size, const char *type) {
-    void *p = lua_touserdata(L, lua_upvalueindex(1));
-    int ok = p && lua_type(L, lua_upvalueindex(1)) == LUA_TUSERDATA &&
-             lua_rawlen(L, lua_upvalueindex(1)) == size;
-    if (!ok) pcl_error(L, "%s: its %s was replaced (debug.setupvalue)", pcl_fname(L), type);
+/* The state in the shared upvalue: the debug library can replace it (debug.setupvalue), so
+ * its type and size are checked (pcl.h: forged userdata). */
+static void *upvalue_state(lua_State *L, int up, size_t size, const char *type) {
+    void *p = lua_touserdata(L, up);
+    int ok = p && lua_type(L, up) == LUA_TUSERDATA && lua_rawlen(L, up) == size;
+    if (!ok) pcl_error(L, "%s: its %s was replaced (debug.setupvalue)", up == PCL_UPVALUE(1) ? pcl_name(L) : "qb.range", type);
     return p;
 }
 
 static qb_rnd_state *rnd_state(lua_State *L) {
-    return upvalue_state(L, sizeof(qb_rnd_state), "random-number state");
+    return upvalue_state(L, PCL_UPVALUE(1), sizeof(qb_rnd_state), "random-number state");
 }
 
 static int l_rnd(lua_State *L) {
-    double n = lua_isnoneornil(L, 1) ? 1.0 : number_arg(L, 1, "n");
-    lua_pushnumber(L, qb_rnd(rnd_state(L), n));
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    lua_pushnumber(L, qb_rnd(rnd_state(L), a[0].present ? a[0].x : 1.0));
     return 1;
 }
 
 static int l_randomize(lua_State *L) {
-    qb_randomize(rnd_state(L), finite_arg(L, 1, "n"));
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    qb_randomize(rnd_state(L), a[0].x);
     return 0;
 }
 
 static int l_seed(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
     qb_rnd_state *s = rnd_state(L);
     lua_pushinteger(L, s->seed);
-    if (!lua_isnoneornil(L, 1)) {
-        double v = number_arg(L, 1, "seed");
-        if (!(v >= 0 && v <= 0xFFFFFF && v == floor(v)))
-            return pcl_argerror(L, 1, "seed", "an integer 0..16777215");
-        s->seed = (uint32_t)v;
-    }
+    if (a[0].present) s->seed = (uint32_t)a[0].x;
     return 1;
 }
 
 static int range_iter(lua_State *L) {
-    qb_range *r = upvalue_state(L, sizeof(qb_range), "range");
+    qb_range *r = upvalue_state(L, lua_upvalueindex(1), sizeof(qb_range), "range");
     double v;
     if (!qb_range_next(r, &v)) return 0;
     lua_pushnumber(L, v);
@@ -90,30 +94,32 @@ static int range_iter(lua_State *L) {
 }
 
 static int l_range(lua_State *L) {
-    double a = finite_arg(L, 1, "start");
-    double b = finite_arg(L, 2, "limit");
-    double step = lua_isnoneornil(L, 3) ? 1.0 : finite_arg(L, 3, "step");
-    if (qb_f32(step) == 0) return pcl_argerror(L, 3, "step", "non-zero");
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    if (qb_f32(a[2].x) == 0) return pcl_argfail(L, 3, "must be non-zero (in SINGLE), got %s", pcl_pushnum(L, a[2].x));
     qb_range *r = lua_newuserdatauv(L, sizeof *r, 0);
-    qb_range_init(r, a, b, step);
+    qb_range_init(r, a[0].x, a[1].x, a[2].x);
     lua_pushcclosure(L, range_iter, 1);
     return 1;
 }
 
+static const pcl_fn fns[] = {
+    PCL_FN("qb.f32", l_f32, x_arg, "number", "x rounded to QBasic's SINGLE (IEEE float32); beyond the SINGLE range (about 3.4E+38) it is +-inf, as a float32 is (translated QBasic reports Overflow)."),
+    PCL_FN("qb.cint", l_cint, x_arg, "integer, ok", "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow."),
+    PCL_FN("qb.clng", l_clng, x_arg, "integer, ok", "CLNG: round to the nearest integer, ties to even; ok is false on LONG overflow."),
+    PCL_FN("qb.range", l_range, range_args, "iterator", "A QBasic FOR loop accumulating in SINGLE: for t in qb.range(0, 1, .001) runs 1001 times, as QBasic does."),
+    PCL_END};
+static const pcl_fn rnd_fns[] = {   /* sharing the generator's state */
+    PCL_FN("qb.rnd", l_rnd, n_opt, "number", "QBasic's RND(n): the next number of QBasic's own generator (n = 0 repeats, n < 0 reseeds)."),
+    PCL_FN("qb.randomize", l_randomize, n_arg, NULL, "QBasic's RANDOMIZE n: reseed the generator."),
+    PCL_FN("qb.seed", l_seed, seed_arg, "seed", "The generator's 24-bit seed; sets it when s is given."),
+    PCL_END};
+
 void pcl_open_qb(lua_State *L) {
     lua_newtable(L);
-    lua_pushcfunction(L, l_f32);
-    lua_setfield(L, -2, "f32");
-    lua_pushcfunction(L, l_cint);
-    lua_setfield(L, -2, "cint");
-    lua_pushcfunction(L, l_clng);
-    lua_setfield(L, -2, "clng");
-    lua_pushcfunction(L, l_range);
-    lua_setfield(L, -2, "range");
+    pcl_register(L, -1, fns, 0);
     qb_rnd_state *s = lua_newuserdatauv(L, sizeof *s, 0);
     qb_rnd_init(s);
-    static const luaL_Reg rnd_functions[] = {
-        {"rnd", l_rnd}, {"randomize", l_randomize}, {"seed", l_seed}, {NULL, NULL}};
-    luaL_setfuncs(L, rnd_functions, 1);   /* pops the state, shared as upvalue */
+    pcl_register(L, -2, rnd_fns, 1);   /* pops the state, shared as upvalue */
     lua_setfield(L, -2, "qb");
 }

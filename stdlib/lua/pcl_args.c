@@ -314,7 +314,11 @@ static void count_error(lua_State *L, const ctx *c, const pcl_arg *a, int m, con
 /* A list of points or numbers at idx. */
 static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
     if (!lua_istable(L, idx)) mismatch(L, c, idx, expected(L, a));
-    lua_Integer len = luaL_len(L, idx);    /* a __len may say anything: clamp before int */
+    lua_len(L, idx);                       /* a __len may say anything: clamp before int */
+    int isint;
+    lua_Integer len = lua_tointegerx(L, -1, &isint);
+    lua_pop(L, 1);
+    if (!isint) mismatch(L, c, idx, expected(L, a));   /* not Lua's unlocated length error */
     int m = len < 0 ? -1 : len > MAXLIST ? MAXLIST + 1 : (int)len;
     int hi = a->hi > 0 ? (int)a->hi : MAXLIST;
     const char *unit = a->kind == PCL_POINTS ? "points" : "numbers";
@@ -561,6 +565,11 @@ void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, i
     dimref dim = {dimdef, {pcl_name(L), item ? shown : 1, item ? name : NULL, NULL, item ? 1 : 0, NULL}};
     ctx c = {dim.who.fname, shown, name, NULL, item, &dim};
     read_value(L, &c, a, idx, out);
+}
+
+void pcl_readopts(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v) {
+    ctx c = {pcl_name(L), shown, a->name, NULL, 0, NULL};
+    read_options(L, &c, a, lua_absindex(L, idx), v);
 }
 
 /* ---- registration and signatures ----------------------------------------------------------- */

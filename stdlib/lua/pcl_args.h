@@ -110,6 +110,11 @@ void *pcl_read(lua_State *L, pcl_val *v, int n);
  * body); dimdef: the dimension PCL_SAMEDIM refers to, set by argument #1 (by [1] for an item). */
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out);
 
+/* Read the options table at stack index idx, argument #shown, declared by a (a PCL_OPTIONS
+ * argument) into v, one value per key: an overload whose table may stand at another position
+ * (approx.mse(f, nodes, {m =}) beside approx.mse(f, nodes, m, {divisor =})). */
+void pcl_readopts(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v);
+
 /* The running function's declared name; its stack index of argument #k. */
 const char *pcl_name(lua_State *L);
 /* "NAME: MESSAGE" at the user's line. */

@@ -16,6 +16,9 @@ truthy(korotky.ferguson_tangents(pts, {0, 0, 0}), "korotky.ferguson_tangents tak
 truthy(korotky.elastic(pts), "korotky.elastic takes it")
 truthy(buimov.spline(pts), "buimov.spline takes it")
 truthy(plane.circle3(P(0, 0), M, P(2, 0)), "plane.circle3 takes it")
+truthy(conic.parabola(P(0, 0), M, P(2.5, 0.3)), "conic.parabola takes it")
+truthy(interp.lagrange(pts), "interp.lagrange takes it in a list")
+truthy(conic.ellipse{C = P(0, 0), A = M, B = P(-0.9, 1.2)}, "conic.ellipse takes it as a key")
 truthy(simplex(P(0, 0), M, P(0, 1)), "simplex takes it")
 truthy(map.reflect(M, V(0, 1)), "map.reflect takes it")
 eq(tostring(affine.frame(M, V(1, 0), V(0, 1))(P(0, 0))), "P(1.2, 0.9)", "affine.frame's origin")
@@ -63,6 +66,10 @@ err(function() korotky.conic_sweep{U = 1} end,
 err(function() korotky.conic_revolve{} end,
     "korotky.conic_revolve: option 'A' must be a 3-D point, got nil", "a required key")
 err(function() figure{widht = 8} end, "figure: unknown option 'widht' (did you mean 'width'?)", "figure's keys")
+err(function() conic.ellipse{C = P(0, 0), A = P(4, 0), B = P(0, 2), qudrant = 2} end,
+    "conic.ellipse: unknown option 'qudrant' (did you mean 'quadrant'?)", "a call table's keys")
+err(function() conic.five_points(P(1, 0), P(0, 1), P(-1, 0), P(0, -1), P(.6, .8), {whoel = true}) end,
+    "conic.five_points: unknown option 'whoel' (did you mean 'whole'?)", "an options table's keys")
 
 -- c:draw checks its options on the layer (stdlib/lua/l_camera.c)
 local cd = curve(function(t) return P(t, t) end, 0, 1)
@@ -114,7 +121,6 @@ local PENDING = {
   {"s:draw{hiden = true}", function() surface.plane(P(0, 0, 0), V(1, 0, 0), V(0, 1, 0)):draw{hiden = true} end,
    "unknown option 'hiden' (did you mean 'hidden'?)"},
   {"screen{widht = 300}", function() screen{widht = 300} end, "screen: unknown option 'widht' (did you mean 'width'?)"},
-  {"interp.prototype(\"desargues\")", function() interp.prototype("desargues") end, "must hold 4 points"},
 }
 local still = {}
 for _, p in ipairs(PENDING) do
@@ -150,6 +156,19 @@ local e = korotky.energy
 err(function() e(3) end, "korotky.energy: argument #1 (curve) must be a curve, got 3", "an alias keeps the declared name")
 err(function() assert(pcall(korotky.energy, 3)) end, "korotky.energy: argument #1", "pcall names the function, not pcall")
 err(function() assert(pcall(label, 5)) end, "label:", "pcall(label, 5) names label")
+err(function() interp.prototype("desargues") end,
+    "interp.prototype: argument #2 (points) must hold 4 points (the \"desargues\" prototype), got nil", "the count the kind takes")
+err(function() interp.prototype("exp", {P(0, 0), P(1, 1)}, {1, 2, 3}) end,
+    "interp.prototype: argument #2 (points) must hold 3 points, got 2", "a count without \"3 to 3\"")
+err(function() conic.ed(P(0, 0), P(2, 0), P(1, 1, 0), .6) end,
+    "conic.ed: argument #3 (C) is 3-D, but argument #1 (A) is 2-D (mixed dimensions)", "conic.ed's dimensions")
+local ed = conic.ed
+err(function() assert(pcall(ed, P(0, 0), P(2, 0), P(1, 1), 0)) end,
+    "conic.ed: argument #4 (k) must be a non-zero number", "an alias of conic.ed keeps its name")
+local odd = setmetatable({}, {__len = function() return "x" end})   -- a length that is no integer
+err(function() interp.lagrange(odd) end, "interp.lagrange: argument #1 (points) must be a list of points, got table", "a list with a bad __len")
+err(function() approx.mse(math.sin, odd) end, "approx.mse: argument #2 (nodes) must be a list of numbers, got table", "numbers with a bad __len")
+err(function() approx.mse(3, {0, 1}) end, "approx.mse: argument #1 (f) must be a function of x, got 3", "approx names its function")
 local T = map.rotate(1)
 err(function() return T({P(1, 2)}) end, "T: takes a 2-D point or vector, or 2 coordinates; got a table", "a map applied to a list names the map")
 err(function() return T.inverse(3) end, "f:inverse: must be called on a map, as f:inverse(...)", "a method called with a dot")
@@ -187,7 +206,7 @@ end
 truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
-local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "konopatsky", "smooth", "complex"}
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "konopatsky", "smooth", "complex", "conic", "oneratio", "interp", "approx", "qb"}
 -- global functions of converted files, and the curve methods written in C
 for _, k in ipairs{"bezier", "bspline", "hermite", "cubic_spline", "interpolate", "curve", "spline2", "fourier",
                    "sphdir", "camera", "squash", "squash01", "oblique", "projection", "oresme", "bisect"} do
@@ -209,6 +228,8 @@ for _, k in ipairs{"P", "V", "lerp", "bar", "mid", "dist", "dot", "cross", "unit
 end
 truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"], "constructors, calls and methods")
 truthy(decls["figure"], "figure has a declaration")
+truthy(decls["oneratio"], "oneratio(A, B, C), the table's __call, has a declaration")
+eq(tostring(oneratio(P(0, 0), M, P(1, 1))):match("^[%w.]+"), "oneratio.simplex", "oneratio(...) is oneratio.simplex")
 local sig = help.forms(help.by_name["korotky.poly_spline"])[1]
 eq(sig, 'korotky.poly_spline(points [, {ends = "natural"|"clamped", s0 =, s1 =}]) -> curve, coef', "a generated signature")
 eq(help.forms(help.by_name["korotky.conic_sweep"])[1], "korotky.conic_sweep{U =, V =, T =, P =, Q =} -> s", "a call table's signature")

@@ -149,26 +149,26 @@ err(function() return oneratio.double_contact(A, B, C, .3, .7, function() error(
 err(function() approx.mse(function() error("bad f") end, {-1, 0, 1}) end, "bad f", "an error in f")
 err(function() conic.ed(A, B, 3, 0.5) end, "conic.ed: argument #3 (C) must be a point, got 3", "a number for C")
 err(function() conic.ed(A, B, C, 0) end, "conic.ed: argument #4 (k) must be a non-zero number", "k = 0")
-err(function() conic.ed(A, B, P(1, 2, 3), 0.5) end, "argument #3 (C) is 3-D, but argument #1 is 2-D", "dims")
+err(function() conic.ed(A, B, P(1, 2, 3), 0.5) end, "conic.ed: argument #3 (C) is 3-D, but argument #1 (A) is 2-D (mixed dimensions)", "dims")
 err(function() conic.ed(A, B, C * 2, 0.5) end, "membership condition", "a weighted point")
 err(function() conic.ed_k(A, B, C, P(3, 1)) end, "must lie on the median", "K off the median")
-err(function() conic.ellipse{C = P(0, 0), A = P(4, 0)} end, "conic.ellipse: field B must be a point, got nil", "field")
-err(function() conic.ellipse{C = P(0, 0), A = P(4, 0), B = P(0, 2), by = "round"} end, "field by must be", "by")
+err(function() conic.ellipse{C = P(0, 0), A = P(4, 0)} end, "conic.ellipse: option 'B' must be a point, got nil", "field")
+err(function() conic.ellipse{C = P(0, 0), A = P(4, 0), B = P(0, 2), by = "round"} end, "conic.ellipse: option 'by' must be \"angle\", \"radius\"", "by")
 err(function() conic.ellipse{C = P(0, 0), A = P(2, 0), B = P(0, 2), by = "radius"} end,
     "outside the form's conditions", "a = b radial")
 err(function() conic.ellipse{C = P(0, 0), A = P(4, 0), B = P(0, 2), by = "radius", range = {1, 3}} end,
-    "range must lie within the form's real range [2, 4]", "range")
+    "conic.ellipse: option 'range' must lie within the form's real range [2, 4]", "range")
 err(function() conic.five_points(P(1, 0), P(0, 1), P(0, 0), P(0.3, 0.8), P(0.5, 0.5)) end,
     "no three of them collinear", "collinear five")
 err(function() conic.cones(A, B, C, P(1, 1), .3, .8, 2) end, "must be 3-D or more", "cones in 2-D")
 err(function() oneratio.double_contact(A, B, C, .4, .4) end, "(kq) must be different from kp", "kp = kq")
-err(function() oneratio.smooth(A, B, C, 0) end, "oneratio.smooth: argument #4 (n) must be an integer 1..40", "n")
+err(function() oneratio.smooth(A, B, C, 0) end, "oneratio.smooth: argument #4 (n) must be an integer from 1 to 40, got 0", "n")
 err(function() interp.lagrange({P(0, 0), P(1, 1)}, {0.5, 0.5}) end, "must be distinct", "params")
 err(function() interp.adaptive({P(0, 0), P(2, 0), P(1, 0)}) end, "order of the nodes", "adaptive order")
 err(function() interp.prototype("spline", {}) end, "argument #1 (kind) must be \"desargues\"", "kind")
 err(function() interp.prototype("exp", {P(0, 0), P(1, 2), P(2, 0)}, {1, 1, 2}) end, "exponents must be distinct", "k")
 err(function() approx.optimal_nodes(runge, 1, -1, 6) end, "argument #3 (b) must be greater than a", "a > b")
-err(function() approx.optimal_nodes(runge, -1, 1, 2) end, "argument #4 (N) must be a number of nodes 3..16", "N")
+err(function() approx.optimal_nodes(runge, -1, 1, 2) end, "approx.optimal_nodes: argument #4 (N) must be an integer from 3 to 16, got 2", "N")
 -- five points where ED is parallel to CA (D's u is infinite): the range is the other points'
 local function ell(a) return P(2 * math.cos(a), 1.2 * math.sin(a)) end
 local c5e, ue = conic.five_points(ell(0.5), ell(3.0), ell(5.0), ell(1.5), ell(4.0))

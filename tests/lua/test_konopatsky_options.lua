@@ -12,7 +12,7 @@ for j = 1, 4 do same(a1(u[j]), pts[j], "one tangent: node " .. j) end
 same(interp.arc(pts, P(0.3, 1), P(3.8, 1))(2 / 3), pts[3], "no params: uniform as before")
 err(function() interp.arc(pts, P(0.3, 1), P(3.8, 1), {0, 0.5, 0.4, 1}) end,
     "interp.arc: argument #4 (params) must increase", "params decrease")
-err(function() interp.arc(pts, P(0.3, 1), P(3.8, 1), {0, 1}) end, "interp.arc: argument #4 (params) must be a list of 4 numbers", "too few")
+err(function() interp.arc(pts, P(0.3, 1), P(3.8, 1), {0, 1}) end, "interp.arc: argument #4 (params) must hold 4 numbers (one per point), got 2", "too few")
 
 local runge = function(x) return 1 / (1 + 25 * x * x) end
 local x = {-1, -0.233198, -0.06054, 0.06054, 0.233198, 1}
@@ -25,6 +25,12 @@ local _, m1 = approx.optimal_nodes(runge, -1, 1, 4)
 local _, m2 = approx.optimal_nodes(runge, -1, 1, 4, {divisor = "m"})
 near(m2, m1 * 101 / 100, 1e-15, "optimal_nodes rescales its MSE")
 err(function() approx.mse(runge, x, {divisor = "n"}) end,
-    "approx.mse: option divisor must be \"m+1\" (the book's), \"m\" or \"m-1\", got \"n\"", "bad divisor")
-err(function() approx.mse(runge, x, {dvisor = "m"}) end, "approx.mse: unknown option dvisor", "misspelt option")
+    "approx.mse: option 'divisor' must be \"m+1\", \"m\" or \"m-1\", got \"n\"", "bad divisor")
+err(function() approx.mse(runge, x, {dvisor = "m"}) end, "approx.mse: unknown option 'dvisor' (did you mean 'divisor'?)", "misspelt option")
+err(function() approx.mse(runge, x, {m = 0}) end, "approx.mse: option 'm' must be a number of samples 1..1000000, got 0", "m in the table")
+err(function() approx.mse(runge, x, 0) end, "approx.mse: argument #3 (m) must be a number of samples 1..1000000, got 0", "m alone")
+err(function() approx.mse(runge, x, {1}) end, "approx.mse: argument #3 (opts) holds [1]; its options are named (key = value)", "the table at #3 is named #3")
+err(function() approx.optimal_nodes(runge, -1, 1, 4, 2) end, "approx.optimal_nodes: argument #5 (m) must be a number of samples 4..100000, got 2", "m below N")
+err(function() interp.arc(pts, P(0.3, 1), {0, 1}) end, "interp.arc: argument #3 (params) must hold 4 numbers (one per point), got 2", "params third")
+err(function() interp.arc(pts, P(0.3, 1), P(1, 1, 1)) end, "interp.arc: argument #3 (Cn) is 3-D", "Cn's dimension")
 check.done()

@@ -40,17 +40,17 @@ check.eq(qb.seed(), 0x3FF000, "RANDOMIZE 1")
 check.err(function() qb.seed(2 ^ 24) end, "seed", "seed out of range")
 
 -- arguments are checked in the house style, naming the argument and what is wrong
-check.err(function() qb.f32() end, "f32: argument #1 (x) must be a number, got nil", "f32()")
-check.err(function() qb.cint("x") end, "cint: argument #1 (x) must be a number, got string",
+check.err(function() qb.f32() end, "qb.f32: argument #1 (x) must be a number, got nil", "f32()")
+check.err(function() qb.cint("x") end, "qb.cint: argument #1 (x) must be a number, got \"x\"",
   "cint of a string")
-check.err(function() qb.clng({}) end, "clng: argument #1 (x) must be a number", "clng of a table")
-check.err(function() qb.rnd("x") end, "rnd: argument #1 (n) must be a number, got string",
+check.err(function() qb.clng({}) end, "qb.clng: argument #1 (x) must be a number, got table", "clng of a table")
+check.err(function() qb.rnd("x") end, "qb.rnd: argument #1 (n) must be a number, got \"x\"",
   "rnd of a string")
-check.err(function() qb.randomize() end, "randomize: argument #1 (n) must be a number, got nil",
+check.err(function() qb.randomize() end, "qb.randomize: argument #1 (n) must be a finite number, got nil",
   "randomize()")
-check.err(function() qb.randomize(1 / 0) end, "randomize: argument #1 (n) must be a finite number",
+check.err(function() qb.randomize(1 / 0) end, "qb.randomize: argument #1 (n) must be a finite number, got inf",
   "randomize(inf)")
-check.err(function() qb.seed(1.5) end, "seed: argument #1 (seed) must be an integer 0..16777215",
+check.err(function() qb.seed(1.5) end, "qb.seed: argument #1 (s) must be an integer from 0 to 16777215, got 1.5",
   "seed(1.5)")
 
 -- range: the float32 FOR loop of QBasic
@@ -72,7 +72,11 @@ for _ in qb.range(1, 3) do n = n + 1 end
 check.eq(n, 3, "default step 1")
 for _ in qb.range(1, 0) do error("an empty loop ran") end
 check.err(function() qb.range(0, 1, 0) end, "step", "zero step")
-check.err(function() qb.range(0, "x") end, "limit", "bad limit")
+check.err(function() qb.range(0, "x") end, "qb.range: argument #2 (limit) must be a finite number, got \"x\"", "bad limit")
+check.err(function() qb.range(0, 1, 1e-50) end, "qb.range: argument #3 (step) must be non-zero (in SINGLE), got 1e-50", "a step SINGLE rounds to 0")
+check.eq(qb.f32(1 / 0), 1 / 0, "f32 keeps inf (SINGLE overflow)")
+check.truthy(qb.f32(0 / 0) ~= qb.f32(0 / 0), "and NaN")
+check.eq(qb.f32("0.5"), 0.5, "a numeric string is a number, as Lua converts it")
 
 -- the translator from Lua: translate returns Lua text, or nil and "chunk:line: message"
 local qbasic = require "qbasic"

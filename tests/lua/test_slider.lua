@@ -22,5 +22,15 @@ err(function() slider("a", 1, 0, 0) end, "argument #3 (max) must be greater than
 err(function() slider("a", 0, 1, 2) end, "argument #4 (default) must be between min and max", "default outside")
 err(function() slider("a", 0, 1, 0 / 0) end, "argument #4 (default)", "NaN default")
 err(function() slider("a", 0, 1, 0, -1) end, "argument #5 (step)", "negative step")
-err(function() slider("a", 0, 1, 0, "x") end, "argument #5 (step)", "bad step")
+err(function() slider("a", 0, 1, 0, "x") end, "slider: argument #5 (step) must be a number or a table {step =, animate =}, got \"x\"", "bad step")
+err(function() slider("a", 0, 1, 0, {stpe = .1}) end, "slider: unknown option 'stpe' (did you mean 'step'?)", "a misspelt key")
+err(function() slider("a", 0, 1, 0, {animate = "yes"}) end, "slider: option 'animate' must be a boolean, got \"yes\"", "animate's kind")
+err(function() slider("a", 0, 1, 0, 1 / 0) end, "slider: argument #5 (step) must be a number or a table {step =, animate =}, got inf", "an infinite step")
+err(function() slider("a", 0, 1, 0, {1}) end, "slider: argument #5 (step) holds [1]; its options are named (key = value)", "a positional entry")
+err(function() slider("a", 0, 1, 0, {step = 1 / 0}) end, "slider: option 'step' must be a finite number, got inf", "an infinite step in the table")
+err(function() assert(pcall(slider, "a b", 0, 1, 0)) end, "slider: argument #1 (name) must be a name of letters, digits and _ (up to 64), got \"a b\"", "pcall names slider")
+eq(slider("s", 0, 1, .5, .1), .5, "the short form: step alone")
+local rec = {}
+for _, d in ipairs(tk.params()) do rec[d.name] = d end
+eq(rec.s.step, .1, "its step recorded")
 check.done()
