@@ -61,6 +61,7 @@ end
 local ATTR_REGS = {
   [7] = { [0] = 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 },
   [9] = EGA16, [11] = { [0] = 0, 63 }, [12] = EGA16 }
+ATTR_REGS[8] = ATTR_REGS[7]   -- the 200-line EGA modes set the same registers
 
 -- scan codes of the keys an input can give (the US layout's make codes)
 local SCAN = {}

@@ -81,6 +81,17 @@ expect_eq "$(ppm_pixel clock_env.ppm 250 110)" "aa0000" "PALETTE USING: -1 leave
 # screen11.bas: SCREEN 11 is 640x480 in 2 colours; PALETTE 1, 42 made colour 1 red 42
 expect_eq "$(head -c 15 screen11.ppm | tr '\n' ' ')" "P6 640 480 255 " "SCREEN 11 writes 640x480"
 expect_eq "$(ppm_pixel screen11.ppm 30 30)" "aa0000" "SCREEN 11: colour 1 after PALETTE 1, 42"
+# screen8.bas: SCREEN 8 is 640x200 in 16 colours; PALETTE 12, 2 made the box green, COLOR 15, 1
+# the background blue; page 3's dot was copied onto page 0; text cells are 8x8 (row 25 at y 192)
+px640() { od -An -tx1 -j $((15 + ($3 * 640 + $2) * 3)) -N 3 "$1" | tr -d ' \n'; }
+expect_eq "$(head -c 15 screen8.ppm | tr '\n' ' ')" "P6 640 200 255 " "SCREEN 8 writes 640x200"
+expect_eq "$(px640 screen8.ppm 100 60)" "00aa00" "SCREEN 8: the box's corner in attribute 12 = colour 2"
+expect_eq "$(px640 screen8.ppm 140 79)" "0000aa" "SCREEN 8: beside the box, the background colour 1"
+expect_eq "$(px640 screen8.ppm 600 150)" "55ff55" "SCREEN 8: PCOPY 3, 0 brought page 3's dot"
+expect_eq "$(px640 screen8.ppm 420 120)" "ffff55" "SCREEN 8: the circle's right end at radius 100"
+expect_eq "$(px640 screen8.ppm 608 192)" "ffffff" "SCREEN 8: E's top-left pixel in row 25, column 77"
+expect_eq "$(px640 screen8.ppm 608 199)" "0000aa" "SCREEN 8: the cell's last line is blank"
+expect_eq "$(px640 screen8.ppm 615 192)" "0000aa" "SCREEN 8: the cell's last column is blank"
 
 # files.bas under the safe mode: without --allow the first OPEN is QBasic's Permission denied
 # (70, which the program traps); with --allow of its folder it runs as before
