@@ -106,14 +106,15 @@ static int traceback(lua_State *L) {
 int host_limit_stopped = 0;
 static char qbasic_chunk[512];   /* the QBasic program being run, for its messages */
 
-/* A limit stopped a QBasic program: the runtime could not name the program's line (no Lua code
- * runs once the time is up), so the message names the program and says what happened. */
+/* A limit stopped a QBasic program: "prog.bas:LINE: time limit of 5 s exceeded: the program was
+ * stopped" (the sandbox keeps the line the program was on when the limit came), without the
+ * Lua traceback; the program alone when no line of it was running. */
 static void print_qbasic_limit(const char *msg) {
     const char *what = strstr(msg, "time limit of");
     if (!what) what = strstr(msg, "memory limit of");
     size_t n = strcspn(what, "\n");
     if (!strncmp(msg, qbasic_chunk, strlen(qbasic_chunk)) && msg[strlen(qbasic_chunk)] == ':')
-        fprintf(stderr, "%.*s\n", (int)(what - msg + n), msg);
+        fprintf(stderr, "%.*s: the program was stopped\n", (int)(what - msg + n), msg);
     else
         fprintf(stderr, "%s: %.*s: the program was stopped\n", qbasic_chunk, (int)n, what);
 }
