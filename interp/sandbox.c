@@ -49,7 +49,10 @@ static struct {
     volatile sig_atomic_t running;    /* between sandbox_start and sandbox_stop */
     size_t refused_size;              /* the first refused request of the run */
     char refused_where[LUA_IDSIZE + 24];   /* "file:LINE" of it, or "" */
-    char time_msg[LUA_IDSIZE + 200];  /* the first time-limit error of the run, or "" */
+    char time_msg[LUA_IDSIZE + 200];  /* the first time-limit or Ctrl-C error of the run, or "" */
+    volatile sig_atomic_t interrupted;     /* Ctrl-C came (sandbox_catch_interrupt) */
+    int catching;                          /* SIGINT is ours; old_int is the one before */
+    struct sigaction old_int;
     lua_State *L;
 } S;
 
@@ -231,6 +234,7 @@ static int raise_here(lua_State *L, lua_Debug *ar, const char *msg, char *memo, 
 
 static void limit_hook(lua_State *L, lua_Debug *ar) {
     char msg[160];
+    if (S.interrupted) raise_here(L, ar, SANDBOX_INTERRUPTED, S.time_msg, sizeof S.time_msg);
     if (over_time()) {
         snprintf(msg, sizeof msg, "time limit of %g s exceeded", S.timeout);
         raise_here(L, ar, msg, S.time_msg, sizeof S.time_msg);
@@ -281,10 +285,38 @@ static void on_alarm(int sig) {
     _exit(SANDBOX_EXIT_NATIVE_TIMEOUT);
 }
 
+/* Ctrl-C: the first one stops the script at its next instruction (or when the native call
+ * running returns), as the time limit does; a second one ends the process at once. */
+static void on_interrupt(int sig) {
+    if (S.interrupted || !S.running || !S.L) {
+        sigaction(SIGINT, &S.old_int, NULL);
+        raise(sig);
+        return;
+    }
+    S.interrupted = 1;
+    lua_sethook(S.L, limit_hook, LUA_MASKCOUNT | LUA_MASKCALL | LUA_MASKRET, 1);
+}
+
+void sandbox_catch_interrupt(int on) {
+    if (on && !S.catching) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_interrupt;
+        sa.sa_flags = SA_RESTART;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &S.old_int);
+        S.catching = 1;
+    } else if (!on && S.catching) {
+        sigaction(SIGINT, &S.old_int, NULL);
+        S.catching = 0;
+    }
+}
+
 void sandbox_start(lua_State *L) {
     S.refused = 0;
     S.refused_where[0] = 0;
     S.time_msg[0] = 0;
+    S.interrupted = 0;
     S.after_gc = 0;
     S.time_up = 0;
     S.running = 1;

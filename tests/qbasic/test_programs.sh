@@ -134,6 +134,20 @@ expect_eq "$(head -n 1 err.txt)" "insub.bas:9: time limit of 0.5 s exceeded: the
     "--timeout: the line inside the SUB"
 grep -q "trapped" out.txt && fail "--timeout: ON ERROR does not trap the limit"
 expect_eq "$(px320 insub.ppm 7 100)" "aa0000" "--timeout in a SUB: the picture written"
+# Ctrl-C (SIGINT) stops a program as the time limit does: its line, and the picture written.  The
+# signal is sent once the program has written ready.txt (so it is running, past its start)
+printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nOPEN "ready.txt" FOR OUTPUT AS #1: PRINT #1, "running": CLOSE #1\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >ctrlc.bas
+rm -f ready.txt
+"$POINTCALC" ctrlc.bas -o ctrlc.ppm >out.txt 2>err.txt &
+pid=$!
+i=0
+while [ ! -s ready.txt ] && [ $i -lt 600 ]; do sleep 0.05; i=$((i + 1)); done
+kill -INT $pid
+wait $pid
+expect_eq "$?" 1 "Ctrl-C: exit status 1"
+expect_eq "$(head -n 1 err.txt)" "ctrlc.bas:5: interrupted (Ctrl-C): the program was stopped" "Ctrl-C: the message names the line"
+expect_in err.txt "writing the screen as it stood" "Ctrl-C: the note that the picture is written"
+expect_eq "$(ppm_pixel ctrlc.ppm 420 240)" "ffff55" "Ctrl-C: the picture written (the circle)"
 
 # --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
 cp "$QB_DIR/progs/keyboard.bas" kb.bas
