@@ -114,6 +114,27 @@ expect_eq "$(px320 saver.ppm 200 150)" "000000" "--for: no dot the program had n
 run "$POINTCALC" --for 0 screensaver.bas
 expect_rc 2 "--for 0 is a usage error"
 
+# --frames N --fps F of a QBasic program: frame k is the screen when its virtual clock reaches
+# (k + 1) / F s; frames.bas moves its square 20 pixels per SLEEP 1.  After N frames the program
+# is stopped, saying so; one that ends sooner holds its last screen for the frames still due
+run "$POINTCALC" frames.bas --frames 4 --fps 1 -o fr.ppm -o fr.svg
+expect_rc 0 "--frames 4 of a QBasic program"
+expect_in err.txt "frames.bas:8: 4 frames taken (--frames): stopped" "--frames: the note where it stopped"
+expect_eq "$(ls fr-*.ppm | tr '\n' ' ')" "fr-000.ppm fr-001.ppm fr-002.ppm fr-003.ppm " "--frames 4: four numbered frames"
+expect_eq "$(px320 fr-000.ppm 20 55)" "ff5555" "frame 0: the square at x = 20"
+expect_eq "$(px320 fr-000.ppm 40 55)" "000000" "frame 0: not yet at x = 40"
+expect_eq "$(px320 fr-002.ppm 60 55)" "ff5555" "frame 2: the square at x = 60"
+expect_eq "$(px320 fr-002.ppm 40 55)" "000000" "frame 2: erased at x = 40"
+expect_eq "$(grep -c '<g visibility' fr.svg)" 4 "--frames: the animated SVG has 4 frames"
+expect_in fr.svg 'x="80" y="50" width="10" height="10" fill="#ff5555"' "the SVG's last frame: the square at x = 80"
+grep -q "x = 200" out.txt && fail "--frames 4: the program was stopped before its end"
+run "$POINTCALC" frames.bas --frames 12 --fps 1 -o long.ppm
+expect_rc 0 "--frames 12: more frames than the program makes"
+expect_eq "$(ls long-*.ppm | wc -l | tr -d ' ')" 12 "--frames 12: twelve frames all the same"
+expect_eq "$(px320 long-009.ppm 200 55)" "ff5555" "frame 9: the square's last place"
+expect_eq "$(px320 long-011.ppm 200 55)" "ff5555" "frame 11: the last screen held"
+expect_in out.txt "x = 200" "--frames 12: the program ran to its end"
+
 # a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
 # the program and the limit, without a Lua traceback, and the picture is still written
 printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
