@@ -688,7 +688,10 @@ function STMT.declare(P)
 end
 function STMT.call(P)
   local n = P:next()
-  if n.t == "kw" and n.v == "absolute" then P:unsupported("CALL ABSOLUTE") end
+  if n.t == "kw" and n.v == "absolute" then
+    P:err("CALL ABSOLUTE: not supported by pointcalc (it runs x86 machine code from memory, and "
+      .. "pointcalc emulates no processor)")
+  end
   if n.t ~= "id" then P:err() end
   local args = {}
   if P:accept_op("(") then args = P:args() end
