@@ -187,3 +187,108 @@ int frames_main(const char *script, int nframes, double fps, const render_param 
                 params[nsets].name, lo, hi);
     return status;
 }
+
+/* ---- a QBasic program's own animation: pointcalc prog.bas --frames N [--fps F] -o out ------
+ * The program runs once; frame k is the screen shown when its virtual clock (TIMER, SLEEP,
+ * WAIT &H3DA: docs/qbasic.md) reaches (k + 1) / F seconds.  After N frames the program is
+ * ended there; one that ends sooner repeats its last screen, so there are always N frames. */
+static struct {
+    int nframes, taken, status;
+    double fps;
+    const char *const *outputs;
+    int noutputs;
+    FILE **svgs;
+    memory_file *mem;
+} Q;
+
+static void capture(lua_State *L) {
+    int k = Q.taken++;
+    render_run r = {.L = L};
+    for (int j = 0; j < Q.noutputs && !Q.status; j++) {
+        if (Q.svgs[j]) {
+            size_t len;
+            char *svg = render_encode(&r, 1, &len);
+            if (!svg) { Q.status = 1; break; }
+            if (k == 0) {
+                const char *body = strstr(svg, "<svg");
+                const char *gt = body ? strchr(body, '>') : NULL;
+                if (gt) fwrite(svg, 1, (size_t)(gt + 1 - svg), Q.svgs[j]);
+                fputs("\n", Q.svgs[j]);
+            }
+            add_svg_frame(Q.svgs[j], svg, k, Q.nframes, Q.nframes / Q.fps);
+            free(svg);
+        } else {
+            char path[4096], err[512];
+            numbered(Q.outputs[j], k, path, sizeof path);
+            if (pc_write_file(pcl_canvas(L), path, pcl_theme(L), err, sizeof err) != PC_OK) {
+                fprintf(stderr, "%s: %s\n", host_progname, err);
+                Q.status = 1;
+            }
+        }
+    }
+}
+
+/* qbasic_screen.FRAME(): take the next frame; true when it was the last one */
+static int l_frame(lua_State *L) {
+    if (Q.taken < Q.nframes) capture(L);
+    lua_pushboolean(L, Q.taken >= Q.nframes || Q.status);
+    return 1;
+}
+
+int frames_qbasic_begin(lua_State *L, int nframes, double fps, const char *const *outputs,
+                        int noutputs) {
+    memset(&Q, 0, sizeof Q);
+    Q.nframes = nframes;
+    Q.fps = fps > 0 ? fps : 10;
+    Q.outputs = outputs;
+    Q.noutputs = noutputs;
+    Q.svgs = calloc((size_t)noutputs, sizeof(FILE *));
+    Q.mem = calloc((size_t)noutputs, sizeof(memory_file));
+    if (!Q.svgs || !Q.mem) return 0;
+    for (int j = 0; j < noutputs; j++) {
+        if (pc_format_from_path(outputs[j]) != PC_FMT_SVG) continue;
+        Q.svgs[j] = open_memstream(&Q.mem[j].data, &Q.mem[j].size);
+        if (!Q.svgs[j]) {
+            fprintf(stderr, "%s: cannot write '%s': out of memory\n", host_progname, outputs[j]);
+            return 0;
+        }
+    }
+    lua_getglobal(L, "require");
+    lua_pushliteral(L, "qbasic_screen");
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+        fprintf(stderr, "%s: %s\n", host_progname, lua_tostring(L, -1));
+        lua_pop(L, 1);
+        return 0;
+    }
+    lua_pushcfunction(L, l_frame);
+    lua_setfield(L, -2, "FRAME");
+    lua_pushnumber(L, 1.0 / Q.fps);
+    lua_setfield(L, -2, "FRAME_DT");
+    lua_pop(L, 1);
+    return 1;
+}
+
+int frames_qbasic_end(lua_State *L, int ran) {
+    if (ran)
+        while (Q.taken < Q.nframes && !Q.status) capture(L);   /* the last screen, held */
+    int status = Q.status || !ran;
+    for (int j = 0; Q.svgs && j < Q.noutputs; j++) {
+        if (!Q.svgs[j]) continue;
+        fputs("</svg>\n", Q.svgs[j]);
+        if (fclose(Q.svgs[j]) != 0) status = 1;
+        char err[600];
+        if (!status && pc_write_file_emit(Q.outputs[j], emit_memory, &Q.mem[j], err, sizeof err) != PC_OK) {
+            fprintf(stderr, "%s: %s\n", host_progname, err);
+            status = 1;
+        }
+        free(Q.mem[j].data);
+    }
+    free(Q.svgs);
+    free(Q.mem);
+    Q.svgs = NULL;
+    Q.mem = NULL;
+    if (!status)
+        fprintf(stderr, "%s: %d frames, one every %g virtual seconds\n", host_progname, Q.nframes,
+                1.0 / Q.fps);
+    return status;
+}

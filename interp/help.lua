@@ -421,7 +421,7 @@ area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",
   "qbasic.md")
 
 def("mode_info", "mode_info(mode) -> {width, height, colors, pages, cols, rows, cell, aspect}",
-  "The facts of SCREEN mode 1, 2, 7, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13).")
+  "The facts of SCREEN mode 1, 2, 7, 8, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13).")
 def("print_at", "print_at(row, col, text [, fg [, bg]])",
   "Text in the character cells of a row and column (1-based; 8x8, 8x14 or 8x16 by the mode), code page 437, on an opaque background, as QBasic's PRINT.")
 def("scroll_text", "scroll_text(top, bottom [, bg])",

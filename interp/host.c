@@ -106,14 +106,16 @@ static int traceback(lua_State *L) {
 int host_limit_stopped = 0;
 static char qbasic_chunk[512];   /* the QBasic program being run, for its messages */
 
-/* A limit stopped a QBasic program: the runtime could not name the program's line (no Lua code
- * runs once the time is up), so the message names the program and says what happened. */
+/* A limit stopped a QBasic program: "prog.bas:LINE: time limit of 5 s exceeded: the program was
+ * stopped" (the sandbox keeps the line the program was on when the limit came), without the
+ * Lua traceback; the program alone when no line of it was running. */
 static void print_qbasic_limit(const char *msg) {
     const char *what = strstr(msg, "time limit of");
     if (!what) what = strstr(msg, "memory limit of");
+    if (!what) what = strstr(msg, SANDBOX_INTERRUPTED);
     size_t n = strcspn(what, "\n");
     if (!strncmp(msg, qbasic_chunk, strlen(qbasic_chunk)) && msg[strlen(qbasic_chunk)] == ':')
-        fprintf(stderr, "%.*s\n", (int)(what - msg + n), msg);
+        fprintf(stderr, "%.*s: the program was stopped\n", (int)(what - msg + n), msg);
     else
         fprintf(stderr, "%s: %.*s: the program was stopped\n", qbasic_chunk, (int)n, what);
 }
@@ -127,13 +129,16 @@ int host_pcall(lua_State *L, int nargs) {
     lua_pushvalue(L, base + 1);
     if (lua_getinfo(L, ">S", &ar)) snprintf(where, sizeof where, "%s", ar.short_src);
     sandbox_start(L);
+    if (qbasic_chunk[0]) sandbox_catch_interrupt(1);   /* Ctrl-C still writes the picture */
     int status = lua_pcall(L, nargs, 0, base);
+    sandbox_catch_interrupt(0);
     sandbox_stop(L);
     lua_remove(L, base);
     if (status != LUA_OK) {
         sandbox_explain(L, status, where[0] ? where : NULL);
         const char *msg = lua_tostring(L, -1);
-        int limit = msg && (strstr(msg, "time limit of") || strstr(msg, "memory limit of"));
+        int limit = msg && (strstr(msg, "time limit of") || strstr(msg, "memory limit of") ||
+                            (qbasic_chunk[0] && strstr(msg, SANDBOX_INTERRUPTED)));
         host_limit_stopped = limit;
         if (limit && qbasic_chunk[0] && !getenv("PC_QBASIC_TRACEBACK")) print_qbasic_limit(msg);
         else fprintf(stderr, "%s\n", msg ? msg : "(error object is not a string)");

@@ -33,7 +33,8 @@ static const char usage_text[] =
     "  --size W[xH]  the print look at a size: 12cm, 12cmx8cm (cm, mm, in, pt, px)\n"
     "  --set NAME=VALUE  the value of the script's slider NAME (repeatable)\n"
     "  --frames N    write N frames of the slider declared {animate = true}: numbered\n"
-    "                PNG/PPM files, or one animated SVG (--fps F, default 10)\n"
+    "                PNG/PPM files, or one animated SVG (--fps F, default 10); of a QBasic\n"
+    "                program: the screen at every 1/F s of its virtual clock\n"
     "  --qbasic      treat the script as QBasic whatever its extension\n"
     "  --emit-lua    print the Lua translation of a QBasic program and exit\n"
     "  --input FILE  standard input from FILE: what INPUT, INKEY$... of a QBasic program read\n"
@@ -367,7 +368,7 @@ int main(int argc, char **argv) {
     options o = {0};
     int rc = parse(argc, argv, &o);
     if (rc >= 0) return rc;
-    if (o.nframes)
+    if (o.nframes && !o.qbasic)
         return frames_main(o.script, o.nframes, o.fps > 0 ? o.fps : 10, o.sets, o.nsets,
                            o.outputs, o.noutputs, o.paper, &o.sandbox);
 
@@ -403,6 +404,9 @@ int main(int argc, char **argv) {
         }
         lua_pop(L, 1);
     }
+    /* --frames of a QBasic program: taken as it runs, by its virtual clock (frames.c) */
+    int qframes = ok && o.script && o.qbasic && o.nframes;
+    if (qframes && !frames_qbasic_begin(L, o.nframes, o.fps, o.outputs, o.noutputs)) ok = 0;
     if (ok && o.script) {
         ok = host_load_script(L, o.script, o.qbasic);
         if (ok) {
@@ -416,6 +420,11 @@ int main(int argc, char **argv) {
          * which then reads it */
         ok = host_load_script(L, "-", o.qbasic) && host_pcall(L, 0);
         ran_something = 1;
+    }
+    if (qframes) {   /* the frames are the pictures; a stopped run still writes them */
+        int status = frames_qbasic_end(L, ok || host_limit_stopped);
+        lua_close(L);
+        return ok ? status : 1;
     }
     int repl = ok && (o.interactive || !ran_something);
     if (repl) host_repl(L, o.watch);

@@ -49,6 +49,10 @@ static struct {
     volatile sig_atomic_t running;    /* between sandbox_start and sandbox_stop */
     size_t refused_size;              /* the first refused request of the run */
     char refused_where[LUA_IDSIZE + 24];   /* "file:LINE" of it, or "" */
+    char time_msg[LUA_IDSIZE + 200];  /* the first time-limit or Ctrl-C error of the run, or "" */
+    volatile sig_atomic_t interrupted;     /* Ctrl-C came (sandbox_catch_interrupt) */
+    int catching;                          /* SIGINT is ours; old_int is the one before */
+    struct sigaction old_int;
     lua_State *L;
 } S;
 
@@ -188,14 +192,11 @@ static int over_time(void) {
            (t.tv_sec == S.deadline.tv_sec && t.tv_nsec >= S.deadline.tv_nsec);
 }
 
-/* Raise "FILE:LINE: MESSAGE" at the instruction running now (luaL_error would name the
- * caller's line: a hook is no stack level of its own).  The hook then fires at every
- * instruction, so a script that catches the error with pcall cannot go on. */
-static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
-    lua_sethook(L, limit_hook, LUA_MASKCOUNT, 1);
+/* Push "FILE:LINE: MESSAGE" for the instruction running now (or the nearest script line). */
+static int push_place(lua_State *L, lua_Debug *ar, const char *msg) {
     if (ar && lua_getinfo(L, "Sl", ar) && ar->currentline > 0 && !embedded(ar)) {
         lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
-        return lua_error(L);
+        return 1;
     }
     /* a call or return event in a C function (pcall, a binding): the script's line is that of
      * the nearest Lua function below it */
@@ -203,34 +204,52 @@ static int raise_here(lua_State *L, lua_Debug *ar, const char *msg) {
     for (int level = 1; lua_getstack(L, level, &up); level++) {
         if (lua_getinfo(L, "Sl", &up) && up.currentline > 0 && !embedded(&up)) {
             lua_pushfstring(L, "%s:%d: %s", up.short_src, up.currentline, msg);
-            return lua_error(L);
+            return 1;
         }
     }
     if (ar && ar->currentline > 0) {   /* only pointcalc's own Lua code on the stack */
         lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
-        return lua_error(L);
+        return 1;
     }
     lua_pushstring(L, msg);
+    return 1;
+}
+
+/* Raise "FILE:LINE: MESSAGE" at the instruction running now (luaL_error would name the
+ * caller's line: a hook is no stack level of its own).  The hook then fires at every
+ * instruction, so a script that catches the error with pcall cannot go on.  With memo, the
+ * first message of the run is kept and raised again by every later firing: those come from
+ * wherever the error is passing through (a pcall's handler, the QBasic runtime closing its
+ * files), and the line the script was running when the limit came is the one to report. */
+static int raise_here(lua_State *L, lua_Debug *ar, const char *msg, char *memo, size_t memolen) {
+    lua_sethook(L, limit_hook, LUA_MASKCOUNT, 1);
+    if (memo && memo[0]) {
+        lua_pushstring(L, memo);
+        return lua_error(L);
+    }
+    push_place(L, ar, msg);   /* pushes the located message */
+    if (memo) snprintf(memo, memolen, "%s", lua_tostring(L, -1));
     return lua_error(L);
 }
 
 static void limit_hook(lua_State *L, lua_Debug *ar) {
     char msg[160];
+    if (S.interrupted) raise_here(L, ar, SANDBOX_INTERRUPTED, S.time_msg, sizeof S.time_msg);
     if (over_time()) {
         snprintf(msg, sizeof msg, "time limit of %g s exceeded", S.timeout);
-        raise_here(L, ar, msg);
+        raise_here(L, ar, msg, S.time_msg, sizeof S.time_msg);
     }
     if (S.refused) {
         char size[32];
         snprintf(msg, sizeof msg, "memory limit of %g MB exceeded (a request of %s was refused)",
                  S.max_mb, shown_size(S.refused_size, size, sizeof size));
-        raise_here(L, ar, msg);
+        raise_here(L, ar, msg, NULL, 0);
     }
     if (over_memory()) {
         lua_gc(L, LUA_GCCOLLECT, 0);   /* garbage does not count against a script */
         if (over_memory()) {
             snprintf(msg, sizeof msg, "memory limit of %g MB exceeded", S.max_mb);
-            raise_here(L, ar, msg);
+            raise_here(L, ar, msg, NULL, 0);
         }
     }
     /* near the limit, collect: the core's next big block should not be refused for garbage */
@@ -266,9 +285,38 @@ static void on_alarm(int sig) {
     _exit(SANDBOX_EXIT_NATIVE_TIMEOUT);
 }
 
+/* Ctrl-C: the first one stops the script at its next instruction (or when the native call
+ * running returns), as the time limit does; a second one ends the process at once. */
+static void on_interrupt(int sig) {
+    if (S.interrupted || !S.running || !S.L) {
+        sigaction(SIGINT, &S.old_int, NULL);
+        raise(sig);
+        return;
+    }
+    S.interrupted = 1;
+    lua_sethook(S.L, limit_hook, LUA_MASKCOUNT | LUA_MASKCALL | LUA_MASKRET, 1);
+}
+
+void sandbox_catch_interrupt(int on) {
+    if (on && !S.catching) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_interrupt;
+        sa.sa_flags = SA_RESTART;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &S.old_int);
+        S.catching = 1;
+    } else if (!on && S.catching) {
+        sigaction(SIGINT, &S.old_int, NULL);
+        S.catching = 0;
+    }
+}
+
 void sandbox_start(lua_State *L) {
     S.refused = 0;
     S.refused_where[0] = 0;
+    S.time_msg[0] = 0;
+    S.interrupted = 0;
     S.after_gc = 0;
     S.time_up = 0;
     S.running = 1;

@@ -51,6 +51,11 @@ int sandbox_apply(lua_State *L);
 void sandbox_start(lua_State *L);
 void sandbox_stop(lua_State *L);
 
+/* While on, Ctrl-C (SIGINT) stops the running script with "FILE:LINE: interrupted (Ctrl-C)"
+ * (a QBasic program then still writes its picture); a second Ctrl-C ends the process. */
+#define SANDBOX_INTERRUPTED "interrupted (Ctrl-C)"
+void sandbox_catch_interrupt(int on);
+
 /* After a call failed with status: 1 if it was a refused allocation; its message ("WHERE: memory
  * limit of N MB exceeded ...", where may be NULL) then replaces Lua's "not enough memory". */
 int sandbox_explain(lua_State *L, int status, const char *where);

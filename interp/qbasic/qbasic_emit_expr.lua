@@ -189,6 +189,16 @@ function M.value(e, min, exact)
   elseif k == "call" then
     if e.bytes then return tostring(e.bytes), 20 end    -- LEN of a record: its size
     local fn = e.fn
+    if fn == "varseg" or fn == "varptr" or fn == "sadd" then
+      -- an array element: the array, its type and the subscript; a string: its value now
+      local a = e.args[1]
+      if a.ty == "string" then
+        return (fn == "sadd" and "sadd(" or "varseg_s(") .. lua_string(lua_name(a)) .. ", function() return "
+          .. lua_name(a) .. " end)", 20
+      end
+      return (fn == "varptr" and "varptr_n" or fn) .. "(" .. lua_name(a) .. ", " .. lua_string(a.ty) .. ", " .. emit_value(a.args[1], 0)
+        .. ")", 20
+    end
     if fn == "lbound" or fn == "ubound" then
       local arr = e.args[1]
       local code = fn .. "(" .. lua_name(arr)

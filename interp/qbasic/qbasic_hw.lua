@@ -14,6 +14,7 @@
 local M = {}
 
 M.names = { "out_port", "inp", "wait_port", "def_seg", "peek", "poke", "dac_reset", "bsave",
+  "varseg", "varptr_n", "varseg_s", "sadd",
   "bload" }
 
 -- The 64 colours of the EGA palette registers as 6-bit DAC levels: bits 0-2 blue, green, red
@@ -61,6 +62,7 @@ end
 local ATTR_REGS = {
   [7] = { [0] = 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23 },
   [9] = EGA16, [11] = { [0] = 0, 63 }, [12] = EGA16 }
+ATTR_REGS[8] = ATTR_REGS[7]   -- the 200-line EGA modes set the same registers
 
 -- scan codes of the keys an input can give (the US layout's make codes)
 local SCAN = {}
@@ -168,6 +170,83 @@ local function install_ports(E, rt, H)
   end
 end
 
+-- ---- the program's own data: VARSEG, VARPTR, SADD ------------------------------------------
+-- Each one-dimensional numeric array and each string variable asked for gets a segment of its
+-- own (&H1000, &H2000, ... &H9000, below video memory), its bytes at offset 0 up: the
+-- elements as QBasic stores them (INTEGER 2 bytes, LONG and SINGLE 4, DOUBLE 8, little-endian)
+-- and a string's characters.  PEEK and POKE (so BLOAD and BSAVE) reach them there.
+local PACK = { int = "<i2", long = "<i4", single = "<f", double = "<d" }
+local function install_data(E, rt, H)
+  local IFC, to_int = rt.IFC, rt.to_int
+  H.data = {}                                -- segment -> { arr, ty, lo, n } or { get }
+  local seg_of = setmetatable({}, { __mode = "k" })
+  local function segment(key, info, name, level)
+    local s = seg_of[key]
+    if s then return s end
+    local n = 0
+    for _ in pairs(H.data) do n = n + 1 end
+    if n >= 9 then
+      error(name .. ": more than 9 arrays and strings in the emulated memory: not supported by pointcalc", level + 1)
+    end
+    s = (n + 1) * 0x1000
+    seg_of[key], H.data[s] = s, info
+    return s
+  end
+  local function element(name, arr, ty, i, level)
+    local mt = getmetatable(arr)
+    local lo, hi = mt.lo, mt.hi
+    i = to_int(i, -32768, 32767, level + 1)
+    if i < lo or i > hi then error("Subscript out of range", level + 1) end
+    local info = { arr = arr, ty = ty, lo = lo, n = hi - lo + 1 }
+    return segment(arr, info, name, level + 1), (i - lo) * #string.pack(PACK[ty], 0)
+  end
+  function E.varseg(arr, ty, i) local s = element("VARSEG", arr, ty, i, 2) return s end
+  function E.varptr_n(arr, ty, i)
+    local _, off = element("VARPTR", arr, ty, i, 2)
+    return off
+  end
+  -- strings by name (a variable holds a new value after each assignment: get reads it now)
+  local strings = {}
+  local function string_seg(name, key, get, level)
+    strings[key] = strings[key] or { get = get }
+    strings[key].get = get
+    return segment(strings[key], strings[key], name, level + 1)
+  end
+  function E.varseg_s(key, get) local s = string_seg("VARSEG", key, get, 2) return s end
+  function E.sadd(key, get) string_seg("SADD", key, get, 2) return 0 end
+  -- the byte at offset off of a data segment (nil: no such segment); level for the errors
+  function H.data_peek(seg, off, level)
+    local d = H.data[seg]
+    if not d then return nil end
+    if d.get then
+      local s = d.get()
+      if off >= #s then error("PEEK " .. where(seg, off) .. ": past the end of the string", level + 1) end
+      return s:byte(off + 1)
+    end
+    local size = #string.pack(PACK[d.ty], 0)
+    local k = off // size
+    if k >= d.n then error("PEEK " .. where(seg, off) .. ": past the end of the array", level + 1) end
+    return string.pack(PACK[d.ty], d.arr[d.lo + k]):byte(off % size + 1)
+  end
+  function H.data_poke(seg, off, v, level)
+    local d = H.data[seg]
+    if not d then return false end
+    if d.get then
+      error("POKE " .. where(seg, off) .. " into a string: not supported by pointcalc", level + 1)
+    end
+    local size = #string.pack(PACK[d.ty], 0)
+    local k = off // size
+    if k >= d.n then error("POKE " .. where(seg, off) .. ": past the end of the array", level + 1) end
+    local b = string.pack(PACK[d.ty], d.arr[d.lo + k])
+    local j = off % size
+    b = b:sub(1, j) .. string.char(v) .. b:sub(j + 2)
+    local x = string.unpack(PACK[d.ty], b)
+    if x ~= x or x == math.huge or x == -math.huge then error("Overflow", level + 1) end
+    d.arr[d.lo + k] = x
+    return true
+  end
+end
+
 local function install_memory(E, rt, H)
   local IFC, to_int = rt.IFC, rt.to_int
   local h_pset, h_point = rt.draw("pset"), rt.draw("point")
@@ -201,6 +280,8 @@ local function install_memory(E, rt, H)
   end
   function E.peek(off)
     local seg, o, a = locate(off, 2)
+    local b = H.data_peek(seg, o, 2)
+    if b then return b end
     if a >= 0xA0000 and a < 0xB0000 then
       local x, y = video(seg, o, 2)
       if not x then return H.spare[a] or 0 end
@@ -218,6 +299,7 @@ local function install_memory(E, rt, H)
     local seg, o, a = locate(off, 2)
     v = to_int(v, -32768, 32767, 2)
     if v < 0 or v > 255 then error(IFC, 2) end
+    if H.data_poke(seg, o, v, 2) then return end
     if a >= 0xA0000 and a < 0xB0000 then
       local x, y = video(seg, o, 2)
       if not x then H.spare[a] = v return end
@@ -289,6 +371,7 @@ function M.install(E, rt)
   end
   rt.dac_reset(12)
   install_ports(E, rt, H)
+  install_data(E, rt, H)
   install_memory(E, rt, H)
   install_bsave(E, rt, H)
 end

@@ -79,6 +79,9 @@ K.FUNCS = {
   pmap = { args = { "n", "n" }, ty = "single" },
   ["varptr$"] = { args = { "x" }, ty = "string", lua = "varptr" },
   lbound = { args = { "arr", "?n" }, ty = "long" }, ubound = { args = { "arr", "?n" }, ty = "long" },
+  -- addresses in the emulated memory (qbasic_hw.lua): of an array element, of a string
+  varseg = { args = { "ref" }, ty = "long" }, varptr = { args = { "ref" }, ty = "long" },
+  sadd = { args = { "ref" }, ty = "long" },
   -- the emulated PC (qbasic_hw.lua): ports and memory
   inp = { args = { "n" }, ty = "int" }, peek = { args = { "n" }, ty = "int" },
   -- error trapping: the number of the error being handled and the line number it came from
@@ -103,9 +106,9 @@ K.FUNCS = {
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
-for w in ([[inkey$ input$ csrlin pos pmap fre varptr
-  stick strig pen play sadd lpos
-  ioctl$ fileattr varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
+for w in ([[inkey$ input$ csrlin pos pmap fre
+  stick strig pen play lpos
+  ioctl$ fileattr varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
 end
 

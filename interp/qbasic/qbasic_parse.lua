@@ -294,8 +294,8 @@ function STMT.screen(P)
   local args = arg_list(P, 4)
   -- a mode given as a number is checked before the program runs
   local m = args[1] and args[1].k == "num" and args[1].v
-  if m and (m == 3 or m == 4 or m == 8 or m == 10) then
-    P:err("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 11, 12 and 13 are)")
+  if m and (m == 3 or m == 4 or m == 10) then
+    P:err("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 8, 9, 11, 12 and 13 are)")
   end
   return rtcall(P, "screen", args)
 end
@@ -688,7 +688,10 @@ function STMT.declare(P)
 end
 function STMT.call(P)
   local n = P:next()
-  if n.t == "kw" and n.v == "absolute" then P:unsupported("CALL ABSOLUTE") end
+  if n.t == "kw" and n.v == "absolute" then
+    P:err("CALL ABSOLUTE: not supported by pointcalc (it runs x86 machine code from memory, and "
+      .. "pointcalc emulates no processor)")
+  end
   if n.t ~= "id" then P:err() end
   local args = {}
   if P:accept_op("(") then args = P:args() end

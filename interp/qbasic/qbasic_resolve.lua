@@ -89,6 +89,24 @@ local function builtin(R, e)
       return "long"
     end
   end
+  if e.fn == "varseg" or e.fn == "varptr" or e.fn == "sadd" then
+    -- the emulated memory has one-dimensional numeric arrays and string variables
+    if #args ~= 1 then err(R, "Argument-count mismatch") end
+    local a, name = args[1], e.fn:upper()
+    local ty = expr(R, a)
+    if ty == "string" and a.k == "var" then
+      if e.fn == "varptr" then
+        err(R, "VARPTR of a string (its descriptor): not supported by pointcalc (SADD gives the "
+          .. "address of its characters)")
+      end
+      return "long"
+    end
+    if e.fn == "sadd" then err(R, "Type mismatch") end
+    if a.k == "index" and NUM_RANK[ty] and #a.args == 1 then return "long" end
+    err(R, name .. " of " .. (a.k == "index" and "an element of a multi-dimensional array"
+      or "a simple variable or expression") .. ": not supported by pointcalc (of an element of a "
+      .. "one-dimensional numeric array, or a string variable)")
+  end
   if e.fn == "lbound" or e.fn == "ubound" then
     args[1].whole = true
     expr(R, args[1])

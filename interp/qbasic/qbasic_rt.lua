@@ -660,7 +660,7 @@ local function install_drawing(E, R)
         R.rt.text_mode(nil)
       elseif m == R.mode then
         -- the same mode again (SCREEN 7, , p, 1 - p in an animation loop): no new screen
-      elseif m == 1 or m == 2 or m == 7 or m == 9 or m == 11 or m == 12 or m == 13 then
+      elseif m == 1 or m == 2 or m == 7 or m == 8 or m == 9 or m == 11 or m == 12 or m == 13 then
         -- SCREEN 11 is VGA's 640x480 in 2 colours (the drawing layer has no mode 11 of its own)
         if m == 11 then h_screen({ width = 640, height = 480, colors = 2 }) else h_screen(m) end
         R.mode = m
@@ -669,8 +669,8 @@ local function install_drawing(E, R)
         R.window_on, R.view_on = false, false
         R.rt.dac_reset(m)
         R.rt.text_mode(R.info)
-      elseif m == 3 or m == 4 or m == 8 or m == 10 then
-        error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 9, 11, 12 and 13 are)", 2)
+      elseif m == 3 or m == 4 or m == 10 then
+        error("SCREEN " .. m .. ": not supported by pointcalc (SCREEN 1, 2, 7, 8, 9, 11, 12 and 13 are)", 2)
       else
         error(IFC, 2)
       end

@@ -370,10 +370,20 @@ local function install_clock(E, rt, S)
   rt.clock = function() return S.clock end
   -- every step of the virtual clock: with --for SECONDS (M.RUN_FOR), a program still running
   -- after that long on it is ended there, normally: its picture is the screen as it stands
-  local elapsed = 0
+  -- with --frames (M.FRAME, a host function), frame k is taken when the clock passes (k + 1)
+  -- times M.FRAME_DT; it says when the last one is taken, and the program is ended there
+  local elapsed, frames = 0, 0
   local function advance(dt)
     S.clock = S.clock + dt
     elapsed = elapsed + dt
+    while M.FRAME and elapsed >= (frames + 1) * M.FRAME_DT - 1e-9 do
+      frames = frames + 1
+      if M.FRAME() then
+        io.stderr:write(string.format("%s:%s: %d frames taken (--frames): stopped\n",
+          rt.chunkname, rt.program_line() or "?", frames))
+        E.stop()
+      end
+    end
     if M.RUN_FOR and elapsed >= M.RUN_FOR then
       io.stderr:write(string.format("%s:%s: ran for %g virtual seconds (--for): stopped; the "
         .. "picture is the screen as it stands\n", rt.chunkname, rt.program_line() or "?", M.RUN_FOR))

@@ -14,6 +14,7 @@ static const pc_mode_info modes[] = {
     {1, 320, 200, 4, 1, 40, 25, 8, 0},
     {2, 640, 200, 2, 1, 80, 25, 8, 0},
     {7, 320, 200, 16, 8, 40, 25, 8, 0},
+    {8, 640, 200, 16, 4, 80, 25, 8, 0},
     {9, 640, 350, 16, 2, 80, 25, 14, 0},
     {12, 640, 480, 16, 1, 80, 30, 16, 0},
     {13, 320, 200, 256, 1, 40, 25, 8, 0},
@@ -33,7 +34,7 @@ int pc_mode_info_of(int mode, pc_mode_info *out) {
 int pc_canvas_set_mode(pc_canvas *c, int mode) {
     pc_mode_info m;
     if (pc_mode_info_of(mode, &m) != PC_OK)
-        return pc_fail(c, "screen: mode %d is not one of 1, 2, 7, 9, 12, 13", mode);
+        return pc_fail(c, "screen: mode %d is not one of 1, 2, 7, 8, 9, 12, 13", mode);
     return pc_canvas_reset(c, m.width, m.height, m.ncolors);
 }
 

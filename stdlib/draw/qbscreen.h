@@ -23,7 +23,7 @@ typedef struct {
                             over its width on a 4:3 monitor: 0.8333 in SCREEN 13) */
 } pc_mode_info;
 
-/* The facts of SCREEN mode (1, 2, 7, 9, 12, 13); PC_EARG for a mode pointcalc does not have
+/* The facts of SCREEN mode (1, 2, 7, 8, 9, 12, 13); PC_EARG for a mode pointcalc does not have
  * (0, the text mode, has no canvas; 3..6, 8, 10, 11 are other adapters' modes). */
 int pc_mode_info_of(int mode, pc_mode_info *out);
 

@@ -220,7 +220,7 @@ static int l_screen(lua_State *L) {
         pc_mode_info m;
         if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
             return pcl_argerror(L, 1, "mode",
-                                "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 9 or {width=, height=}");
+                                "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 8, 9 or {width=, height=}");
         w = m.width;
         h = m.height;
         colors = m.ncolors;

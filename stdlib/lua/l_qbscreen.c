@@ -30,7 +30,7 @@ static int check(lua_State *L, pc_canvas *c, int rc, const char *name) {
 
 /* The mode of the screen (its size and colours), or 0 for a canvas of another size. */
 static int screen_mode(const pc_canvas *c, pc_mode_info *out) {
-    static const int modes[] = {1, 2, 7, 9, 12, 13};
+    static const int modes[] = {1, 2, 7, 8, 9, 12, 13};
     for (size_t i = 0; i < sizeof modes / sizeof *modes; i++) {
         pc_mode_info_of(modes[i], out);
         if (out->width == c->width && out->height == c->height && out->ncolors == c->ncolors)
@@ -233,7 +233,7 @@ static int l_mode_info(lua_State *L) {
     lua_Integer mode = lua_tointegerx(L, 1, &isint);
     pc_mode_info m;
     if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
-        return pcl_argerror(L, 1, "mode", "a screen mode 1, 2, 7, 9, 12 or 13");
+        return pcl_argerror(L, 1, "mode", "a screen mode 1, 2, 7, 8, 9, 12 or 13");
     lua_createtable(L, 0, 8);
     lua_pushinteger(L, m.width); lua_setfield(L, -2, "width");
     lua_pushinteger(L, m.height); lua_setfield(L, -2, "height");

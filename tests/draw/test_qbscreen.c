@@ -46,7 +46,17 @@ static void test_modes(void **state) {
     assert_int_equal(m.pages, 8);
     assert_int_equal(pc_mode_info_of(2, &m), PC_OK);
     assert_int_equal(m.ncolors, 2);
-    assert_int_equal(pc_mode_info_of(8, &m), PC_EARG);
+    /* SCREEN 8: EGA's 640x200 in 16 colours, 80x25 text in 8x8 cells, 4 pages in 64K each */
+    assert_int_equal(pc_mode_info_of(8, &m), PC_OK);
+    assert_int_equal(m.width, 640);
+    assert_int_equal(m.height, 200);
+    assert_int_equal(m.ncolors, 16);
+    assert_int_equal(m.pages, 4);
+    assert_int_equal(m.cols, 80);
+    assert_int_equal(m.rows, 25);
+    assert_int_equal(m.cell_h, 8);
+    assert_true(fabs(m.aspect - 4.0 / 3.0 * 200 / 640) < 1e-12);   /* tall pixels: 0.4167 */
+    assert_int_equal(pc_mode_info_of(10, &m), PC_EARG);
     assert_int_equal(pc_mode_info_of(0, &m), PC_EARG);
 
     pc_canvas *c = pc_canvas_new_mode(1);

@@ -58,11 +58,11 @@ static void test_screen_modes(void **state) {
     assert_int_equal(c->palette[32].b, 255); assert_int_equal(c->palette[32].r, 0);
     assert_int_equal(c->palette[40].r, 255); assert_int_equal(c->palette[40].b, 0);
     pc_canvas_free(c);
-    /* QBasic's other modes are qbscreen.h's (test_qbscreen.c); 8 is no mode of a VGA card */
+    /* QBasic's other modes are qbscreen.h's (test_qbscreen.c); 10 (monochrome EGA) is none */
     assert_non_null(c = pc_canvas_new_mode(7));
     assert_int_equal(c->ncolors, 16);
     pc_canvas_free(c);
-    assert_null(pc_canvas_new_mode(8));
+    assert_null(pc_canvas_new_mode(10));
 }
 
 static void test_pset_rounding(void **state) {

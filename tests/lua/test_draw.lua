@@ -117,7 +117,7 @@ check.err(function() window(0, 0, 0, 5) end, "window: window (0, 0)-(0, 5) has z
 check.err(function() view(0, 0, 700, 10) end, "view: view (0, 0)-(700, 10) is not inside the 640x480 screen", "view outside")
 check.err(function() palette(16, 0) end, "palette: argument #1 (attribute) must be an attribute 0..15, got 16", "palette attr")
 check.err(function() palette(1, 64) end, "palette: argument #2 (colour)", "palette colour")
-check.err(function() screen(8) end, "screen: argument #1 (mode) must be 12", "screen mode")
+check.err(function() screen(10) end, "screen: argument #1 (mode) must be 12", "screen mode")
 check.err(function() save(42) end, "save: argument #1 (path) must be a file name, got 42", "save path")
 check.err(function() save("x.gif") end, "save: argument #1 (path) must be a file name ending in .png, .svg, .ppm, .pdf, .eps or .ps", "save extension")
 check.err(function() save("no_such_dir/x.png") end, "save: cannot write 'no_such_dir/x.png': No such file or directory", "save unwritable")

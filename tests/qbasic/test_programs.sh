@@ -81,6 +81,17 @@ expect_eq "$(ppm_pixel clock_env.ppm 250 110)" "aa0000" "PALETTE USING: -1 leave
 # screen11.bas: SCREEN 11 is 640x480 in 2 colours; PALETTE 1, 42 made colour 1 red 42
 expect_eq "$(head -c 15 screen11.ppm | tr '\n' ' ')" "P6 640 480 255 " "SCREEN 11 writes 640x480"
 expect_eq "$(ppm_pixel screen11.ppm 30 30)" "aa0000" "SCREEN 11: colour 1 after PALETTE 1, 42"
+# screen8.bas: SCREEN 8 is 640x200 in 16 colours; PALETTE 12, 2 made the box green, COLOR 15, 1
+# the background blue; page 3's dot was copied onto page 0; text cells are 8x8 (row 25 at y 192)
+px640() { od -An -tx1 -j $((15 + ($3 * 640 + $2) * 3)) -N 3 "$1" | tr -d ' \n'; }
+expect_eq "$(head -c 15 screen8.ppm | tr '\n' ' ')" "P6 640 200 255 " "SCREEN 8 writes 640x200"
+expect_eq "$(px640 screen8.ppm 100 60)" "00aa00" "SCREEN 8: the box's corner in attribute 12 = colour 2"
+expect_eq "$(px640 screen8.ppm 140 79)" "0000aa" "SCREEN 8: beside the box, the background colour 1"
+expect_eq "$(px640 screen8.ppm 600 150)" "55ff55" "SCREEN 8: PCOPY 3, 0 brought page 3's dot"
+expect_eq "$(px640 screen8.ppm 420 120)" "ffff55" "SCREEN 8: the circle's right end at radius 100"
+expect_eq "$(px640 screen8.ppm 608 192)" "ffffff" "SCREEN 8: E's top-left pixel in row 25, column 77"
+expect_eq "$(px640 screen8.ppm 608 199)" "0000aa" "SCREEN 8: the cell's last line is blank"
+expect_eq "$(px640 screen8.ppm 615 192)" "0000aa" "SCREEN 8: the cell's last column is blank"
 
 # files.bas under the safe mode: without --allow the first OPEN is QBasic's Permission denied
 # (70, which the program traps); with --allow of its folder it runs as before
@@ -103,17 +114,61 @@ expect_eq "$(px320 saver.ppm 200 150)" "000000" "--for: no dot the program had n
 run "$POINTCALC" --for 0 screensaver.bas
 expect_rc 2 "--for 0 is a usage error"
 
+# --frames N --fps F of a QBasic program: frame k is the screen when its virtual clock reaches
+# (k + 1) / F s; frames.bas moves its square 20 pixels per SLEEP 1.  After N frames the program
+# is stopped, saying so; one that ends sooner holds its last screen for the frames still due
+run "$POINTCALC" frames.bas --frames 4 --fps 1 -o fr.ppm -o fr.svg
+expect_rc 0 "--frames 4 of a QBasic program"
+expect_in err.txt "frames.bas:8: 4 frames taken (--frames): stopped" "--frames: the note where it stopped"
+expect_eq "$(ls fr-*.ppm | tr '\n' ' ')" "fr-000.ppm fr-001.ppm fr-002.ppm fr-003.ppm " "--frames 4: four numbered frames"
+expect_eq "$(px320 fr-000.ppm 20 55)" "ff5555" "frame 0: the square at x = 20"
+expect_eq "$(px320 fr-000.ppm 40 55)" "000000" "frame 0: not yet at x = 40"
+expect_eq "$(px320 fr-002.ppm 60 55)" "ff5555" "frame 2: the square at x = 60"
+expect_eq "$(px320 fr-002.ppm 40 55)" "000000" "frame 2: erased at x = 40"
+expect_eq "$(grep -c '<g visibility' fr.svg)" 4 "--frames: the animated SVG has 4 frames"
+expect_in fr.svg 'x="80" y="50" width="10" height="10" fill="#ff5555"' "the SVG's last frame: the square at x = 80"
+grep -q "x = 200" out.txt && fail "--frames 4: the program was stopped before its end"
+run "$POINTCALC" frames.bas --frames 12 --fps 1 -o long.ppm
+expect_rc 0 "--frames 12: more frames than the program makes"
+expect_eq "$(ls long-*.ppm | wc -l | tr -d ' ')" 12 "--frames 12: twelve frames all the same"
+expect_eq "$(px320 long-009.ppm 200 55)" "ff5555" "frame 9: the square's last place"
+expect_eq "$(px320 long-011.ppm 200 55)" "ff5555" "frame 11: the last screen held"
+expect_in out.txt "x = 200" "--frames 12: the program ran to its end"
+
 # a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
 # the program and the limit, without a Lua traceback, and the picture is still written
 printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
 run "$POINTCALC" --timeout 1 forever.bas -o forever.ppm
 expect_rc 1 "a program stopped by --timeout"
-expect_eq "$(head -n 1 err.txt)" "forever.bas: time limit of 1 s exceeded: the program was stopped" \
-    "--timeout: the message names the program"
+expect_eq "$(head -n 1 err.txt)" "forever.bas:4: time limit of 1 s exceeded: the program was stopped" \
+    "--timeout: the message names the program's line"
 expect_in err.txt "writing the screen as it stood" "--timeout: the note that the picture is written"
 check
 grep -q "traceback" err.txt && fail "--timeout: no Lua traceback"
 expect_eq "$(ppm_pixel forever.ppm 420 240)" "ffff55" "--timeout: the picture written (the circle)"
+# the line is the one running when the time came, inside a SUB too, and ON ERROR does not trap
+# the limit (the first firing's message is kept: later ones come from the runtime's own code)
+printf 'DECLARE SUB spin (n)\nSCREEN 13\nON ERROR GOTO 9\nspin 5\nEND\n9 PRINT "trapped": RESUME NEXT\nSUB spin (n)\n  DO\n    n = n + 1: PSET (n MOD 320, 100), 4\n  LOOP\nEND SUB\n' >insub.bas
+run "$POINTCALC" --timeout 0.5 insub.bas -o insub.ppm
+expect_rc 1 "a SUB stopped by --timeout"
+expect_eq "$(head -n 1 err.txt)" "insub.bas:9: time limit of 0.5 s exceeded: the program was stopped" \
+    "--timeout: the line inside the SUB"
+grep -q "trapped" out.txt && fail "--timeout: ON ERROR does not trap the limit"
+expect_eq "$(px320 insub.ppm 7 100)" "aa0000" "--timeout in a SUB: the picture written"
+# Ctrl-C (SIGINT) stops a program as the time limit does: its line, and the picture written.  The
+# signal is sent once the program has written ready.txt (so it is running, past its start)
+printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nOPEN "ready.txt" FOR OUTPUT AS #1: PRINT #1, "running": CLOSE #1\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >ctrlc.bas
+rm -f ready.txt
+"$POINTCALC" ctrlc.bas -o ctrlc.ppm >out.txt 2>err.txt &
+pid=$!
+i=0
+while [ ! -s ready.txt ] && [ $i -lt 600 ]; do sleep 0.05; i=$((i + 1)); done
+kill -INT $pid
+wait $pid
+expect_eq "$?" 1 "Ctrl-C: exit status 1"
+expect_eq "$(head -n 1 err.txt)" "ctrlc.bas:5: interrupted (Ctrl-C): the program was stopped" "Ctrl-C: the message names the line"
+expect_in err.txt "writing the screen as it stood" "Ctrl-C: the note that the picture is written"
+expect_eq "$(ppm_pixel ctrlc.ppm 420 240)" "ffff55" "Ctrl-C: the picture written (the circle)"
 
 # --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
 cp "$QB_DIR/progs/keyboard.bas" kb.bas

@@ -1,0 +1,5 @@
+' EXPECT: 5: PEEK &H1000:&H14: past the end of the array
+DIM a(9) AS INTEGER
+DEF SEG = VARSEG(a(0))
+PRINT PEEK(19)
+PRINT PEEK(20)
