@@ -385,53 +385,32 @@ area("draw", "Drawing (QBasic SCREEN 12)",
   "may be given as one 2-D point: pset(M), line(A, B).",
   "drawing.md")
 
-def("screen", {"screen(12) | screen(13) | screen(1|2|7|9)", "screen{width=W, height=H [, colors=2|4|16|256]}"},
-  "A new blank canvas: 640x480x16 (12), 320x200x256 (13), QBasic's other modes (mode_info) or any size.")
-def("cls", "cls()",
-  "Clear the view to the background colour.")
-def("color", {"color(fg [, bg])", "color() -> fg, bg"},
-  "Set the drawing colour (and the background used by cls), or read both.")
-def("palette", {"palette(attr, colour)", "palette()"},
-  "Change what a colour number looks like (65536*b + 256*g + r in 0..63, \"#rrggbb\" or {r, g, b}); no argument restores the default.")
-def("pset", "pset(x, y [, c]) | pset(A [, c])",
-  "Plot one pixel in colour c (default: the drawing colour).")
-def("preset", "preset(x, y [, c]) | preset(A [, c])",
-  "Plot one pixel in colour c (default: the background: erases).")
-def("line", "line(x1, y1, x2, y2 [, c [, \"b\"|\"bf\"]]) | line(A, B [, c [, style]])",
-  "A segment, or with \"b\" the outline of a box, with \"bf\" a filled box.")
-def("line_to", "line_to(x, y [, c [, \"b\"|\"bf\"]]) | line_to(B [, c [, style]])",
-  "A segment from the last point referenced to (x, y): QBasic's LINE -(x, y).")
-def("circle", "circle(x, y, r [, c [, start, end [, aspect]]]) | circle(A, r, ...)",
-  "A circle, an ellipse (aspect) or an arc (angles in radians; a negative angle also draws that radius).")
-def("paint", "paint(x, y [, c [, border]]) | paint(A [, c [, border]])",
-  "Flood-fill from (x, y) up to pixels of the border colour (default: the paint colour).")
-def("point", "point(x, y) -> colour | point(A) -> colour",
-  "The colour number at (x, y), or -1 outside the view.")
-def("window", {"window(x1, y1, x2, y2 [, \"screen\"])", "window()"},
-  "World coordinates: (x1, y1)-(x2, y2) fill the view, y up (y down with \"screen\"); no argument: pixels again.")
-def("view", {"view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])", "view()"},
-  "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it.")
-def("last_point", "last_point() -> x, y",
-  "The graphics cursor: the last point referenced, in world coordinates.")
-def("size", "size() -> width, height, colours",
-  "The size of the canvas and its number of colours.")
-def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}", "pen \"main\"|\"thin\"|\"hidden\"|\"centre\"", "pen()"},
-  "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default.")
-def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\"}])",
-  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given.")
-def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
-  "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
-def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
-  "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
+def("screen")
+def("cls")
+def("color")
+def("palette")
+def("pset")
+def("preset")
+def("line")
+def("line_to")
+def("circle")
+def("paint")
+def("point")
+def("window")
+def("view")
+def("last_point")
+def("size")
+def("pen")
+def("path")
+def("fill")
+def("label")
 def("figure")
-def("text", "text(x, y, string [, colour [, scale]])",
-  "Text with the top-left corner of its first 8x16 cell at (x, y).")
+def("text")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
 def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
   "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
-def("save", "save(path [, \"paper\"|\"screen\"])",
-  "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look.")
+def("save")
 
 -- ---------------------------------------------------------------------------------------
 area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",
