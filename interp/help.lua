@@ -419,26 +419,16 @@ area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",
   "GET/PUT, DRAW, PCOPY and PMAP. Translated QBasic programs use them; scripts may too.",
   "qbasic.md")
 
-def("mode_info", "mode_info(mode) -> {width, height, colors, pages, cols, rows, cell, aspect}",
-  "The facts of SCREEN mode 1, 2, 7, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13).")
-def("print_at", "print_at(row, col, text [, fg [, bg]])",
-  "Text in the character cells of a row and column (1-based; 8x8, 8x14 or 8x16 by the mode), code page 437, on an opaque background, as QBasic's PRINT.")
-def("scroll_text", "scroll_text(top, bottom [, bg])",
-  "Move the text rows top..bottom up by one row of cells; the bottom row is cleared.")
-def("get_block", "get_block(x1, y1, x2, y2) -> block",
-  "QBasic's GET: the pixels between two corners (inside the view); block.w, block.h and block.bytes (the size QBasic's array needs).")
-def("put_block", "put_block(x, y, block [, \"xor\"|\"pset\"|\"preset\"|\"and\"|\"or\"])",
-  "QBasic's PUT: the block with its top-left corner at (x, y), combined with the screen (XOR by default: twice restores).")
-def("draw", "draw(commands)",
-  "QBasic's DRAW: U D L R E F G H n, M x,y, B and N prefixes, C n, S n, A n, TA n, P paint,border, from the graphics cursor.")
-def("pages", "pages(active [, visual])",
-  "Draw on page `active` and show page `visual` (SCREEN 7 has 8 pages, SCREEN 9 two); the page shown is the one saved.")
-def("pcopy", "pcopy(from, to)",
-  "QBasic's PCOPY: page `to` becomes a copy of page `from`.")
-def("pmap", "pmap(value, fn) -> number",
-  "QBasic's PMAP: fn 0 and 1 map a world x or y to view pixels, 2 and 3 map pixels back.")
-def("paint_tile", "paint_tile(x, y, tile [, border])",
-  "QBasic's PAINT with a tile string (1..64 bytes, read as the mode keeps pixels: a bit a pixel in SCREEN 2, two in SCREEN 1, 4 bit planes a row in the 16-colour modes, a byte a pixel in SCREEN 13), up to the border colour (default: the foreground).")
+def("mode_info")
+def("print_at")
+def("scroll_text")
+def("get_block")
+def("put_block")
+def("draw")
+def("pages")
+def("pcopy")
+def("pmap")
+def("paint_tile")
 
 -- ---------------------------------------------------------------------------------------
 area("qb", "QBasic numbers (qb.*)",

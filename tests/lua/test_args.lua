@@ -66,6 +66,10 @@ err(function() path({P(0, 0), P(1, 1)}, {colour = 99}) end, "path: option 'colou
 err(function() path({P(0, 0), P(1, 1)}, {color = 1, colour = 2}) end, "path: options 'color' and 'colour' are one option: give one", "not both")
 err(function() pen{widht = 2} end, "pen: unknown option 'widht' (did you mean 'width'?)", "pen's keys")
 err(function() label("A", 0, 0, {sise = 9}) end, "label: unknown option 'sise' (did you mean 'size'?)", "label's keys")
+err(function() put_block(0, 0, {}) end, "put_block: argument #3 (block) must be a block from get_block, got table", "put_block's block")
+err(function() put_block(P(0, 0), get_block(0, 0, 1, 1), "xxor") end,
+    "put_block: argument #3 (action) must be \"pset\", \"preset\", \"and\", \"or\" or \"xor\", got \"xxor\"", "shown by its slot after a point")
+err(function() pages(3) end, "pages: argument #1 (active page) must be an integer from 0 to 0, got 3", "a range the screen sets")
 path({P(0, 0), P(1, 1)}, {colour = 4})
 eq(point(0, 0), 4, "path{colour = 4} draws in colour 4")
 
@@ -163,7 +167,8 @@ truthy(decls["simplex"] and decls["S(p, q)"] and decls["f(p)"] and decls["f:xy"]
 truthy(decls["figure"], "figure has a declaration")
 for _, name in ipairs{"screen", "cls", "color", "palette", "pset", "preset", "line", "line_to", "circle",
                       "paint", "point", "window", "view", "save", "size", "last_point", "pen", "path",
-                      "fill", "label", "text"} do
+                      "fill", "label", "text", "print_at", "scroll_text", "get_block", "put_block", "draw",
+                      "pages", "pcopy", "pmap", "mode_info", "paint_tile"} do
   truthy(decls[name], name .. " has a declaration")
 end
 local sig = help.forms(help.by_name["korotky.poly_spline"])[1]
