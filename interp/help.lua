@@ -289,32 +289,22 @@ area("surfaces", "Surfaces (surface.*)",
   "s:iso gives curves, s:wireframe draws the iso-lines through the camera.",
   "curves.md")
 
-def("surface", "surface(f, u0, u1, v0, v1) -> s",
-  "A Lua function (u, v) -> point as a surface.")
-def("surface.bilinear", "surface.bilinear(P00, P10, P01, P11) -> s",
-  "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1).")
-def("surface.bezier", "surface.bezier(net) -> s",
-  "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational).")
-def("surface.bspline", "surface.bspline(net, p, q [, uknots [, vknots]]) -> s",
-  "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline.")
-def("surface.hermite", "surface.hermite{P = {4}, Pu = {4}, Pv = {4}, Puv = {4}} -> s",
-  "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1)).")
-def("surface.ruled", "surface.ruled(c0, c1) -> s",
-  "The ruled surface (1 - v) c0(u) + v c1(u) between two curves.")
-def("surface.coons", "surface.coons(cu0, cu1, c0v, c1v) -> s",
-  "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v).")
-def("surface.revolution", "surface.revolution(profile, A, d [, v0, v1]) -> s",
-  "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn).")
-def("s(u, v)", "s(u, v) -> point | s:partials(u, v) -> P, Su, Sv | s:normal(u, v) -> vector",
-  "The point of a surface, its partial derivatives and its unit normal (3-D).", "method")
-def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
-  "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
-def("s:map", "s:map(f) -> s",
-  "The image of the surface under a map.", "method")
-def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48}",
-  "Draw the iso-lines as paths through map or the camera; hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it.", "method")
-def("s:shade", "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
-  "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows.", "method")
+def("surface")
+def("surface.bilinear")
+def("surface.bezier")
+def("surface.bspline")
+def("surface.hermite")
+def("surface.ruled")
+def("surface.coons")
+def("surface.revolution")
+def("s(u, v)", nil, nil, "method")
+def("s:eval", nil, nil, "method")
+def("s:partials", nil, nil, "method")
+def("s:normal", nil, nil, "method")
+def("s:iso", nil, nil, "method")
+def("s:map", nil, nil, "method")
+def("s:wireframe", nil, nil, "method")
+def("s:shade", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curvilinear", "Curvilinear coordinates",

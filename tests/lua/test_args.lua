@@ -157,7 +157,7 @@ end
 truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
-local CONVERTED = {"korotky", "plane", "buimov", "map", "affine"}
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "surface"}
 for _, t in ipairs(CONVERTED) do
   for k, v in pairs(pointcalc[t]) do
     if type(v) == "function" then truthy(decls[t .. "." .. k], t .. "." .. k .. " has a declaration") end
