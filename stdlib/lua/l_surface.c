@@ -114,7 +114,7 @@ static int l_bilinear(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st, "surface.bilinear");
+    pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st, pcl_name(L));
     return 1;
 }
 
@@ -171,7 +171,7 @@ static int l_bezier(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
-    pushsurf(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), st, "surface.bezier");
+    pushsurf(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), st, pcl_name(L));
     return 1;
 }
 
@@ -187,7 +187,7 @@ static int l_bspline(lua_State *L) {
     double *uk, *vk;   /* the knots as bspline reads them (l_curve.c) */
     pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
     int st;
-    pushsurf(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), st, "surface.bspline");
+    pushsurf(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), st, pcl_name(L));
     return 1;
 }
 
@@ -219,7 +219,7 @@ static int l_hermite(lua_State *L) {
         if (a[f].n != a[1].n)
             return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
     int st;
-    pushsurf(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), st, "surface.hermite");
+    pushsurf(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), st, pcl_name(L));
     return 1;
 }
 
@@ -229,7 +229,7 @@ static int l_ruled(lua_State *L) {
     PCL_READ(L, a);
     if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
-    pushsurf(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), st, "surface.ruled");
+    pushsurf(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), st, pcl_name(L));
     return 1;
 }
 
@@ -245,7 +245,7 @@ static int l_coons(lua_State *L) {
     if (!s && st == PC_EDOMAIN)
         return pcl_fail(L, "the boundary curves do not meet at the corners (cu0 and c0v must start "
                            "together, cu0 must end where c1v starts, ...)");
-    pushsurf(L, s, st, "surface.coons");
+    pushsurf(L, s, st, pcl_name(L));
     return 1;
 }
 
@@ -257,7 +257,7 @@ static int l_revolution(lua_State *L) {
     int st;
     pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
     if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
-    pushsurf(L, s, st, "surface.revolution");
+    pushsurf(L, s, st, pcl_name(L));
     return 1;
 }
 
@@ -274,7 +274,7 @@ static const pcl_arg func_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_
 static int l_func(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
-    const char *fn = "surface";
+    const char *fn = pcl_name(L);
     lua_settop(L, 6);
     lua_remove(L, 1);
     int st;
