@@ -164,6 +164,7 @@ def("map.oblique")
 def("map.cavalier")
 def("map.cabinet")
 def("map.perspective")
+def("map.view")
 def("f(p)", nil, nil, "method")
 def("f:xy", nil, nil, "method")
 def("f:compose", nil, nil, "method")
@@ -398,9 +399,31 @@ def("figure")
 def("text")
 def("slider", "slider(name, min, max, default [, step | {step =, animate = true}]) -> value",
   "A parameter of the script: its default, or the value given by --set name=value, a live page's slider (pointcalc serve) or an animation frame (--frames).")
-def("camera", {"camera(f)", "camera(nil)", "camera() -> f"},
-  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images.")
+def("camera", {"camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])", "camera(nil)", "camera() -> f"},
+  "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order.")
 def("save")
+
+-- ---------------------------------------------------------------------------------------
+area("figures", "Figures: label placement, markers, arrows, dimensions",
+  "Furniture of engineering drawings, drawn through the ordinary display list (every writer " ..
+  "shows it): sizes in screen pixels, numbers measured in world units. Labels without a " ..
+  "direction are placed when the picture is written.",
+  "figures.md")
+
+def("fit")
+def("caption")
+def("axes")
+def("graph")
+def("legend")
+def("placed_labels")
+def("mark")
+def("arrow")
+def("vector")
+def("dimension")
+def("angle_mark")
+def("ticks")
+def("hatch")
+def("centre_line")
 
 -- ---------------------------------------------------------------------------------------
 area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",

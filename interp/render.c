@@ -7,6 +7,7 @@
 #include <lauxlib.h>
 #include "host.h"
 #include "pcl.h"
+#include "layout.h"
 
 /* "file:LINE: message" and a traceback: keep the message, find the script's line in it */
 static int msgh(lua_State *L) {
@@ -82,7 +83,10 @@ char *render_encode(render_run *r, int svg, size_t *len) {
         return NULL;
     }
     pc_canvas *c = pcl_canvas(r->L);
-    int rc = svg ? pc_encode_svg(c, pcl_theme(r->L), f) : pc_encode_png(c, pcl_theme(r->L), f);
+    const pc_canvas *placed = pc_layout_resolve(c);   /* automatic labels placed (layout.h) */
+    int rc = !placed ? PC_ENOMEM : svg ? pc_encode_svg(placed, pcl_theme(r->L), f)
+                                       : pc_encode_png(placed, pcl_theme(r->L), f);
+    pc_layout_release(c, placed);
     if (fclose(f) != 0 || rc != PC_OK) {
         free(buf);
         snprintf(r->error, sizeof r->error, "cannot encode the picture");

@@ -99,6 +99,7 @@ int pc_canvas_reset(pc_canvas *c, int width, int height, int ncolors) {
     c->nops = c->nspans = c->ndots = c->nclips = c->npts = c->ntext = 0;
     c->ntstyles = 0;
     pc_lpx_clear(c);
+    pc_canvas_detach(c);
     c->dot_budget = (size_t)width * (size_t)height > 65536 ? (size_t)width * (size_t)height : 65536;
     c->dirty = 0;
     c->version++;
@@ -124,8 +125,16 @@ pc_canvas *pc_canvas_new_mode(int mode) {
     return pc_canvas_new(m.width, m.height, m.ncolors);
 }
 
+void pc_canvas_detach(pc_canvas *c) {
+    if (c->attach_drop) c->attach_drop(c->attach);
+    c->attach = NULL;
+    c->attach_resolve = NULL;
+    c->attach_drop = NULL;
+}
+
 void pc_canvas_free(pc_canvas *c) {
     if (!c) return;
+    pc_canvas_detach(c);
     free(c->pixels);
     free(c->ops);
     free(c->tstyles);

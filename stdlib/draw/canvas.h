@@ -56,7 +56,11 @@ enum { PC_FILL_NONZERO = 0, PC_FILL_EVENODD = 1 };
 
 /* Where text goes relative to its point: the side of the point (NE: above right). */
 enum { PC_ANCHOR_C, PC_ANCHOR_N, PC_ANCHOR_NE, PC_ANCHOR_E, PC_ANCHOR_SE, PC_ANCHOR_S,
-       PC_ANCHOR_SW, PC_ANCHOR_W, PC_ANCHOR_NW };
+       PC_ANCHOR_SW, PC_ANCHOR_W, PC_ANCHOR_NW,
+       PC_ANCHOR_AUTO   /* pc_text: placed when the picture is written (layout.h) */ };
+/* A TEXT op's flags: the anchor (the low 4 bits), PC_TEXT_AUTO while an automatic label waits
+ * to be placed, PC_TEXT_PLACED on one placed (in the copy the writers get, layout.h). */
+enum { PC_TEXT_AUTO = 0x80, PC_TEXT_PLACED = 0x40, PC_TEXT_ANCHOR = 0x0f };
 
 /* The largest attribute: true colours take 256 .. PC_MAX_ATTR. */
 #define PC_MAX_ATTR 65535
@@ -177,7 +181,23 @@ typedef struct pc_canvas {
                                SCREEN); never reset, so a watcher can tell "changed since I
                                last looked" without disturbing dirty */
     char error[160];
+
+    /* The text-measuring hook of the figure layout (layout.h): the size in screen pixels of a
+     * label's box.  NULL: the VGA look's 8 x 16 cells.  Kept by SCREEN and CLS. */
+    int (*measure)(void *ctx, const char *utf8, size_t n, int scale, double *w, double *h);
+    void *measure_ctx;
+
+    /* What is resolved when the picture is written (layout.h): a 3-D scene.  resolve draws it
+     * onto the writer's copy of the canvas before the labels are placed; drop frees it, and
+     * is called when the display list starts afresh (SCREEN, a full CLS) and by
+     * pc_canvas_free.  NULL: nothing attached. */
+    int (*attach_resolve)(void *attach, struct pc_canvas *copy);
+    void (*attach_drop)(void *attach);
+    void *attach;
 } pc_canvas;
+
+/* Drop what is attached (see pc_canvas.attach). */
+void pc_canvas_detach(pc_canvas *c);
 
 /* QBasic screen modes: 12 (640x480, 16 colours), 13 (320x200, 256 colours) and the others of
  * qbscreen.h (1, 2, 7, 9). */
@@ -270,7 +290,8 @@ int pc_pen_physical(pc_canvas *c, double width_pt, const double *dash_pt, int nd
  * bottom-left pixel at (X + g, Y - g); N centres it above (left X - w/2, bottom Y - g); C
  * centres it on the point (left X - w/2, top Y - h/2); the other sides likewise.  SE with gap
  * 0 puts the top-left pixel on the point.  scale 1..8; characters the font lacks show its
- * replacement glyph; invalid UTF-8 is an error. */
+ * replacement glyph; invalid UTF-8 is an error.  anchor PC_ANCHOR_AUTO records the label
+ * without drawing it: the writers place it (layout.h) and gap does not apply. */
 int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, double gap,
             int scale, int color);
 /* The print-look style of the last TEXT op (font "" or NULL: the figure's; size 0: the

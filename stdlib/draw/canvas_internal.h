@@ -64,6 +64,10 @@ static inline size_t pc_clip_end(const pc_canvas *c, size_t k) {
 }
 void pc_reset_cursor(pc_canvas *c);
 
+/* Rasterise a TEXT op's glyphs at its cell box (x1, y1) and scale (text.c): how the layout
+ * draws a label once it is placed. */
+void pc_text_raster(pc_canvas *c, const pc_op *op);
+
 /* Screen-pixel primitives used by VIEW's border and fill and by CLS. */
 int pc_box_screen(pc_canvas *c, int x0, int y0, int x1, int y1, int color, int filled);
 int pc_fill_view(pc_canvas *c, int color);

@@ -631,6 +631,7 @@ int pc_cls(pc_canvas *c) {
         c->ntstyles = 0;
         c->nclips = 0;
         pc_lpx_clear(c);
+        pc_canvas_detach(c);   /* a 3-D scene drawn so far goes with the rest */
         pc_push_clip(c);
         pc_fill_px(c->pixels, c->bg, (size_t)c->width * c->height);
         c->paper = c->bg;

@@ -2,6 +2,7 @@
  * statement it rasterises at once (transparent background: only the glyphs' ink is plotted)
  * and records one display-list operation, so the SVG writer puts a <text> at the same place. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "canvas.h"
 #include "canvas_internal.h"
@@ -148,7 +149,7 @@ int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, doub
     int ok = pc_check_color(c, &color, c->fg);
     if (ok != PC_OK) return ok;
     if (!utf8) return pc_fail(c, "text: no text");
-    if (anchor < PC_ANCHOR_C || anchor > PC_ANCHOR_NW)
+    if (anchor < PC_ANCHOR_C || anchor > PC_ANCHOR_AUTO)
         return pc_fail(c, "text: anchor %d is not one of the nine sides", anchor);
     if (scale < 1 || scale > MAX_SCALE)
         return pc_fail(c, "text: scale must be an integer 1..%d, got %d", MAX_SCALE, scale);
@@ -165,6 +166,8 @@ int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, doub
         return pc_fail(c, "text: coordinates (%g, %g) are too far outside the window", x, y);
 
     long w = nchars * PC_FONT_W * scale, h = PC_FONT_H * scale, left, top;
+    int autoplace = anchor == PC_ANCHOR_AUTO;   /* recorded now, placed and drawn at write */
+    if (autoplace) anchor = PC_ANCHOR_NE, gap = 3;
     pc_mlayout L = {0};
     int math = pc_has_math(utf8);
     if (math) {   /* labels without '$' are drawn exactly as before */
@@ -182,15 +185,15 @@ int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, doub
     size_t i = 0;
     uint32_t cp;
     if (math) {
-        raster_math(c, &L, left, top, scale, color);
+        if (!autoplace) raster_math(c, &L, left, top, scale, color);
         pc_mlayout_free(&L);
     } else {
-        for (long k = 0; pc_utf8_next(utf8, n, &i, &cp); k++)
+        for (long k = 0; !autoplace && pc_utf8_next(utf8, n, &i, &cp); k++)
             raster_glyph(c, left + k * PC_FONT_W * scale, top, pc_font_glyph(cp), scale, color);
     }
     pc_op *op = pc_push_op(c, PC_OP_TEXT, color);
     if (!op) return PC_ENOMEM;
-    op->flags = (uint8_t)anchor;
+    op->flags = (uint8_t)(anchor | (autoplace ? PC_TEXT_AUTO : 0));
     op->x1 = (double)left;
     op->y1 = (double)top;
     op->x2 = sx;
@@ -200,4 +203,27 @@ int pc_text(pc_canvas *c, double x, double y, const char *utf8, int anchor, doub
     op->first = first;
     op->count = (uint32_t)n;
     return PC_OK;   /* the graphics cursor stays: QBasic's PRINT does not move it either */
+}
+
+void pc_text_raster(pc_canvas *c, const pc_op *op) {
+    const char *s = c->text + op->first;
+    size_t n = op->count, i = 0;
+    int scale = (int)op->rx;
+    long left = lrint(op->x1), top = lrint(op->y1);
+    if (op->a0) {   /* a math label, laid out again as pc_text did (it parsed then) */
+        char *copy = malloc(n + 1);
+        pc_mlayout L = {0};
+        if (!copy) return;
+        memcpy(copy, s, n);
+        copy[n] = 0;
+        char err[160];
+        if (pc_text_vga_layout(copy, scale, &L, err, sizeof err) == PC_OK)
+            raster_math(c, &L, left, top, scale, op->color);
+        pc_mlayout_free(&L);
+        free(copy);
+        return;
+    }
+    uint32_t cp;
+    for (long k = 0; pc_utf8_next(s, n, &i, &cp); k++)
+        raster_glyph(c, left + k * PC_FONT_W * scale, top, pc_font_glyph(cp), scale, op->color);
 }

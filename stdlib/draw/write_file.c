@@ -29,6 +29,7 @@
 #include <unistd.h>
 #include "print.h"
 #include "writers.h"
+#include "layout.h"
 
 static const char *basename_of(const char *path) {
     const char *slash = strrchr(path, '/');
@@ -161,17 +162,23 @@ static mode_t new_file_mode(void) {
 
 typedef struct { const pc_canvas *c; pc_format fmt; pc_theme theme; } picture;
 
-/* PDF, EPS and PS are always the print look; PNG and SVG when the script asked for a figure. */
+/* The labels placed at write time (layout.h) on a resolved copy, then PDF, EPS and PS always in
+ * the print look, PNG and SVG when the script asked for a figure. */
 static int encode(void *ud, FILE *f, char *why, size_t whylen) {
     const picture *p = ud;
+    const pc_canvas *r = pc_layout_resolve(p->c);
+    if (!r) return PC_ENOMEM;
+    int st;
     if (p->fmt == PC_FMT_PDF || p->fmt == PC_FMT_EPS || p->fmt == PC_FMT_PS ||
-        (p->c->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG)))
-        return pc_encode_print(p->c, p->fmt, f, why, whylen);
-    switch (p->fmt) {
-    case PC_FMT_PNG: return pc_encode_png(p->c, p->theme, f);
-    case PC_FMT_SVG: return pc_encode_svg(p->c, p->theme, f);
-    default: return pc_encode_ppm(p->c, p->theme, f);
+        (r->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG)))
+        st = pc_encode_print(r, p->fmt, f, why, whylen);
+    else switch (p->fmt) {
+    case PC_FMT_PNG: st = pc_encode_png(r, p->theme, f); break;
+    case PC_FMT_SVG: st = pc_encode_svg(r, p->theme, f); break;
+    default: st = pc_encode_ppm(r, p->theme, f); break;
     }
+    pc_layout_release(p->c, r);
+    return st;
 }
 
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {

@@ -1,12 +1,15 @@
 /* Binding of 3-D drawing: the current projection and the drawing of curves as paths.
  *   camera(f)      set the current projection (a map from n-D to 2-D); with one set, every
  *                  drawing call takes n-D points and draws their images
+ *   camera(f, {hidden = "dashed"|"hide"|"show"})  and 3-D curves, lines, markers and
+ *                  wireframes form a scene whose hidden lines are resolved at write
  *   camera(nil)    back to plain 2-D drawing;  camera() -> the current map or nil
  * and, for stdlib/lua/curves.lua, _tk.draw_curve(c, colour, tol [, map]): the curve flattened
  * through the projection, WINDOW and VIEW to within tol pixels and drawn as one path. */
 #include <math.h>
 #include <string.h>
 #include "pcl_curve.h"
+#include "pcl_scene.h"
 
 #define CAMERA_KEY "pointcalc.camera"
 
@@ -29,6 +32,21 @@ static int l_camera(lua_State *L) {
             return pcl_error(L, "camera: argument #1 (projection) must map to 2-D points, but it "
                                 "maps to %d-D", f->nout);
     }
+    /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
+    int mode = -1;
+    if (!lua_isnoneornil(L, 2)) {
+        static const char *const modes[] = {"show", "dashed", "hide", NULL};
+        if (!lua_istable(L, 2)) return pcl_argerror(L, 2, "options", "a table {hidden =}");
+        if (lua_getfield(L, 2, "hidden") != LUA_TNIL) {
+            const char *m = lua_tostring(L, -1);
+            for (mode = 0; modes[mode] && !(lua_type(L, -1) == LUA_TSTRING && !strcmp(m, modes[mode])); mode++) {}
+            if (!modes[mode])
+                return pcl_error(L, "camera: argument #2 (hidden) must be \"dashed\", \"hide\" or "
+                                    "\"show\", got %s%s%s", m ? "\"" : "", m ? m : pcl_shown(L, -1),
+                                 m ? "\"" : "");
+        }
+    }
+    pcl_set_hidden_mode(L, mode);
     lua_settop(L, 1);
     lua_setfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
     return 0;
@@ -152,6 +170,13 @@ static int l_draw_curve(lua_State *L) {
                              "draw it with a larger tol", (int)PC_POLYLINE_MAX, t);
         }
         return pcl_raise_status(L, "c:draw", st);
+    }
+    pc_scene *sc = c->dim == 3 && lua_isnoneornil(L, 4) ? pcl_scene(L) : NULL;
+    if (sc) {   /* into the scene, sampled as densely as the flattened path */
+        int n = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
+        pc_polyline_free(&pl);
+        st = pcl_scene_curve(L, sc, c, n, color);
+        return st == PC_OK ? 0 : pcl_raise_status(L, "c:draw", st);
     }
     /* a closed curve whose polyline is unbroken closes exactly */
     int unbroken = 1;

@@ -14,6 +14,8 @@
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_qbscreen.h"
 #include "print.h"       /* named pens, the print pen's width */
+#include "pcl_scene.h"
+#include "furniture.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
@@ -215,7 +217,7 @@ static int read_text(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return 1;
 }
 
-#define COLOR(nm) A_COLOR(nm)
+#define COLOR(nm) A_SCREEN_COLOR(nm)
 #define OPTNUM(nm, flag, l, h, exp) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | (flag), .lo = l, .hi = h, .dflt = NAN, .expect = exp}
 #define SCALE {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}
 #define SCREEN_FLAG {.name = "mode", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_screen_flag, .expect = "\"screen\", a boolean or nil"}
@@ -324,6 +326,7 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
 }
 
 static int l_line(lua_State *L) {
+    if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
     pcl_val a[7] = {0};
     PCL_READ_PAIRS(L, a);
     return draw_line(L, canvas(L), a[0].x, a[1].x, a + 2);
@@ -559,20 +562,29 @@ static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
 static const char *const RULES[] = {"evenodd", "nonzero", NULL};
 #define POINTS {.name = "points", .kind = PCL_ANY, .read = read_subpaths, .expect = "a list of 2-D points"}
 #define RULE(nm) {.name = nm, .kind = PCL_ENUM, .flags = PCL_OPT, .choices = RULES}
+static const char *const HEADS[] = {"none", "end", "start", "both", NULL};   /* PC_ARROW_* bits */
 static const pcl_arg path_keys[] = {{.name = "closed", .kind = PCL_BOOLEAN}, COLOR("color"), COLOR("fill"),
-                                    RULE("rule"), PCL_END};
+                                    RULE("rule"), {.name = "arrow", .kind = PCL_ENUM, .choices = HEADS}, PCL_END};
 static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL_END};
 
-/* path(points [, {closed =, color =, fill =, rule =}]): the polyline through a list of 2-D
- * points (or several, one subpath each).  With fill, the closed path is filled in that
- * colour, and its outline drawn on top only when color is given too. */
+/* path(points [, {closed =, color =, fill =, rule =, arrow =}]): the polyline through a list of
+ * 2-D points (or several, one subpath each).  With fill, the closed path is filled in that
+ * colour, and its outline drawn on top only when color is given too; arrow heads (furniture.h)
+ * on the first and last segments of an unfilled one. */
 static int l_path(lua_State *L) {
-    pcl_val a[6] = {0};   /* points, options; closed, color, fill, rule */
+    pcl_val a[7] = {0};   /* points, options; closed, color, fill, rule, arrow */
     PCL_READ(L, a);
     pc_canvas *c = canvas(L);
     size_t n = (size_t)a[0].n;
-    int closed = (int)a[2].x, color = (int)a[3].x;
-    if (!a[4].present) return check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
+    int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
+    const double *xy = a[0].list;
+    if (!a[4].present) {
+        check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
+        if ((heads & PC_ARROW_END) && n >= 2)
+            check(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
+        if ((heads & PC_ARROW_START) && n >= 2) check(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
+        return 0;
+    }
     check(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[4].x));
     if (color < 0) return 0;
     return check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, 1, color));
@@ -591,7 +603,8 @@ static int l_fill(lua_State *L) {
 }
 
 /* label(text, P [, direction [, colour [, scale]]] [, {font =, size =, halo =}]): text beside
- * a point, 3 px off it; the options apply in the print look. */
+ * a point, 3 px off it; without a direction it is placed when the picture is written
+ * (stdlib/draw/layout.h); the options apply in the print look. */
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
 static const pcl_arg label_args[] = {
     TEXT, A_X("x"), A_NUM("y"),
@@ -599,10 +612,12 @@ static const pcl_arg label_args[] = {
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
 static int l_label(lua_State *L) {
+    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pcl_val a[10] = {0};   /* text, x, y, direction, colour, scale, options; font, size, halo */
     PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    check(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, a[3].n, 3, (int)a[5].x, (int)a[4].x));
+    int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
+    check(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
     if (a[6].present) pcl_label_style(L, c, a + 7);
     return 0;
 }
@@ -679,14 +694,14 @@ static const pcl_fn fns[] = {
      .sig = "pen{width = w, dash = {on, off, ...}}\npen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}\npen \"main\"|\"thin\"|\"hidden\"|\"centre\"\npen()",
      .help = "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default."},
     {.name = "path", .fn = l_path, .args = path_args,
-     .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\"}])",
-     .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given."},
+     .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])",
+     .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment."},
     {.name = "fill", .fn = l_fill, .args = fill_args,
      .sig = "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
      .help = "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG."},
     {.name = "label", .fn = l_label, .args = label_args,
      .sig = "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
-     .help = "Text beside a point: direction \"n\", \"ne\" (default), \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
+     .help = "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
     {.name = "text", .fn = l_text, .args = text_args,
      .sig = "text(x, y, string [, colour [, scale]])",
      .help = "Text with the top-left corner of its first 8x16 cell at (x, y)."},

@@ -17,6 +17,8 @@
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "hidden.h"
+#include "view.h"
+#include "pcl_scene.h"
 #include "shaded.h"
 #include "pcl_expr.h"
 
@@ -424,6 +426,37 @@ static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
     return st;
 }
 
+/* The wireframe in the camera's scene: the surface as an occluder, its iso-lines (and its
+ * silhouette) as 3-D strokes, all resolved against every surface of the figure at write. */
+static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, int nv, int mesh,
+                           int outline, int color) {
+    const char *fn = pcl_name(L);
+    int st = pc_scene_add_surface(sc, s, mesh), boundary = outline & 2;
+    outline &= 1;
+    for (int dir = 0; dir < 2 && st == PC_OK; dir++) {
+        int n = dir == 0 ? nu : nv;
+        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
+        double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
+        for (int i = 0; n > 0 && i <= n && st == PC_OK; i++) {
+            pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
+            if (!c) break;
+            st = pcl_scene_curve(L, sc, c, 256, color);
+            pc_curve_release(c);
+        }
+    }
+    if (outline && st == PC_OK) {
+        double *seg;
+        size_t nseg;
+        pc_map scr;
+        pcl_screen_map(L, pcl_camera(L), &scr);
+        st = pc_surface_silhouette(s, &scr, 4 * mesh, 4 * mesh, &seg, &nseg);
+        for (size_t i = 0; st == PC_OK && i < nseg; i++)
+            st = pc_scene_add_polyline(sc, 2, seg + 6 * i, NULL, color, pcl_canvas(L)->pen);
+        if (st == PC_OK || nseg) free(seg);
+    }
+    return st == PC_OK ? 0 : pcl_raise_status(L, fn, st);
+}
+
 /* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f, hidden = "hide"|"dashed",
  * mesh = 48}: the iso-lines u = u0 + i (u1 - u0)/nu and v = v0 + j (v1 - v0)/nv, each
  * flattened and drawn as a path through the map or the camera.  With hidden, the parts the
@@ -431,22 +464,30 @@ static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
  * out or drawn dashed. */
 static const char *const HIDDEN[] = {"show", "hide", "dashed", NULL};   /* 0 every line, 1 hide, 2 dashed */
 #define COUNT(nm, top, d) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = top, .dflt = d, .shown = #d}
+#define COUNT0(nm) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 0, .hi = 1000, .dflt = 10, .shown = "10"}
 static const pcl_arg wireframe_keys[] = {
-    COUNT("nu", 1000, 10), COUNT("nv", 1000, 10), {.name = "color", .kind = PCL_ANY, .read = pcl_read_color, .dflt = -1, .shown = "c"},
+    COUNT0("nu"), COUNT0("nv"), {.name = "color", .kind = PCL_ANY, .read = pcl_read_color, .dflt = -1, .shown = "c"},
     {.name = "tol", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 0.25, .shown = "px"}, {.name = "map", .kind = PCL_MAP, .shown = "m"},
-    {.name = "hidden", .kind = PCL_ENUM, .choices = HIDDEN}, COUNT("mesh", 1024, 48), PCL_END};
+    {.name = "hidden", .kind = PCL_ENUM, .choices = HIDDEN}, COUNT("mesh", 1024, 48),
+    {.name = "silhouette", .kind = PCL_BOOLEAN, .shown = "false"}, {.name = "boundary", .kind = PCL_BOOLEAN, .shown = "false"}, PCL_END};
 static const pcl_arg wireframe_args[] = {A_OPTIONS("opts", wireframe_keys), PCL_END};
 static int s_wireframe(lua_State *L) {
-    pcl_val a[8] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh */
+    pcl_val a[10] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
     lsurf *u = PCL_READ(L, a);
     const char *fn = pcl_name(L);
     int nu = (int)a[1].x, nv = (int)a[2].x, color = (int)a[3].x, mode = a[6].n, mesh = (int)a[7].x;
+    int outline = (int)a[8].x, boundary = (int)a[9].x;
     double tol = a[4].x;
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
     const pc_map *f = drawing_map(L, &a[5], s->dim);
     if (mode && (s->dim != 3 || !f))
         return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
+    if (outline && (s->dim != 3 || !f))
+        return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
+    /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
+    pc_scene *sc = !mode && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
+    if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline | boundary << 1, color);
     hidden_ctx h = {0};
     pc_occluder *occ = NULL;
     if (mode) {
@@ -461,7 +502,8 @@ static int s_wireframe(lua_State *L) {
     for (int dir = 0; dir < 2 && st == PC_OK && drawn == PC_OK; dir++) {
         int n = dir == 0 ? nu : nv;
         double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        for (int i = 0; i <= n && st == PC_OK && drawn == PC_OK; i++) {
+        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
+        for (int i = 0; n > 0 && i <= n && st == PC_OK && drawn == PC_OK; i++) {
             pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
             if (!c) break;
             pc_polyline pl = {0};
@@ -482,6 +524,22 @@ static int s_wireframe(lua_State *L) {
             pc_polyline_free(&pl);
             pc_curve_release(c);
         }
+    }
+    if (outline && st == PC_OK && drawn == PC_OK) {   /* the silhouette, hidden by the surface too */
+        double *seg;
+        size_t nseg;
+        pcl_screen_map(L, f, &h.scr);
+        st = pc_surface_silhouette(s, &h.scr, 4 * mesh, 4 * mesh, &seg, &nseg);
+        for (size_t i = 0; st == PC_OK && drawn == PC_OK && i < nseg; i++) {
+            double xy[4];
+            for (int e = 0; e < 2; e++) {
+                double hx[4] = {seg[6 * i + 3 * e], seg[6 * i + 3 * e + 1], seg[6 * i + 3 * e + 2], 1}, o[3];
+                pc_map_apply(&h.scr, hx, o);
+                pc_screen_to_world(cv, o[0] / o[2], o[1] / o[2], &xy[2 * e], &xy[2 * e + 1]);
+            }
+            drawn = pc_path(cv, 2, xy, NULL, 0, 0, color);
+        }
+        if (st == PC_OK) free(seg);
     }
     pc_polyline_free(&h.seen);
     pc_polyline_free(&h.hidden);
@@ -609,8 +667,8 @@ static const pcl_fn methods[] = {
      .help = "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."},
     METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),
     {.name = "s:wireframe", .fn = s_wireframe, .args = wireframe_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48}",
-     .help = "Draw the iso-lines as paths through map or the camera; hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it."},
+     .sig = "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
+     .help = "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."},
     {.name = "s:shade", .fn = s_shade, .args = shade_args, .self = self_surf, .selftype = "surface",
      .sig = "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
      .help = "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."},

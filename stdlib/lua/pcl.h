@@ -57,8 +57,9 @@ void pcl_open_konopatsky(lua_State *L);  /* conic, oneratio, interp, approx (l_k
 void pcl_open_expr(lua_State *L);     /* param: point equations (l_expr.c, pcl_expr.h) */
 void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
 void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic surfaces (l_korotky.c) */
-void pcl_open_buimov(lua_State *L);
+void pcl_open_buimov(lua_State *L);   /* plane.*, buimov.*: the textbook's constructions (l_buimov.c) */
 void pcl_open_figure(lua_State *L);   /* figure{...}: the print look (l_figure.c) */
+void pcl_open_figure_layout(lua_State *L);  /* placed_labels, mark, arrow, dimension, ... (l_figure_layout.c) */
 /* the print look's pens and label options: pcl_args.h (l_figure.c) */
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */

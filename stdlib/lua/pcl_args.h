@@ -122,9 +122,9 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n);
  * reading, with an expected text made at run time (a colour's range is the screen's). */
 int pcl_readfail(lua_State *L, int idx, const char *expected);
 /* The drawing colours (l_draw.c): an attribute of the screen drawn on or "#rrggbb" (a true
- * colour, allocated on first use) into out->n; A_COLOR(name) declares an optional one. */
+ * colour, allocated on first use) into out->x; A_SCREEN_COLOR(name) declares an optional one. */
 int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
-#define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1}
+#define A_SCREEN_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1}
 /* The print look (l_figure.c): a length with its unit ("0.5mm") in pt into out->x; the label
  * options {font =, size =, halo =}, applied to a label once drawn (keys: their 3 values). */
 int pcl_read_length(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);

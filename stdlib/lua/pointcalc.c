@@ -36,6 +36,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_curvilinear(L);
     pcl_open_complex(L);
     pcl_open_figure(L);
+    pcl_open_figure_layout(L);
     pcl_push_decls(L);            /* the declarations, for interp/help.lua */
     lua_setfield(L, -2, "_decl");
     run_lua_helpers(L);

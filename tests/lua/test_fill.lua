@@ -124,7 +124,7 @@ check.err(function() fill({P(1, 1)}, 1, true) end, "fill: argument #3 (rule) mus
 check.err(function() fill({P(0, 0), P(2e15, 0), P(0, 5)}) end, "fill: point 2 lies too far outside the screen (beyond 1e+15 pixels) to place the fill to the pixel", "too far")
 check.err(function() path({P(1, 1)}, {fill = "red"}) end, "path: option 'fill' must be a colour number 0..15 or \"#rrggbb\", got \"red\"", "path fill colour")
 check.err(function() path({P(1, 1)}, {fill = 1, rule = 2}) end, "path: option 'rule' must be \"evenodd\" or \"nonzero\", got 2", "path rule")
-check.err(function() path({P(1, 1)}, 5) end, "path: argument #2 (options) must be a table {closed =, color =, fill =, rule =}, got 5", "path options")
+check.err(function() path({P(1, 1)}, 5) end, "path: argument #2 (options) must be a table {closed =, color =, fill =, rule =, arrow =}, got 5", "path options")
 camera(map.matrix({{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}))
 check.err(function() fill({P(0, 0, 0), P(5, 0, 1), P(0, 5, 2)}) end, "fill: argument #1 (points) [1]: P(0, 0, 0) projects to infinity", "vanishing plane")
 camera(nil)

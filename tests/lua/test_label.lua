@@ -113,7 +113,12 @@ for dir, ok in pairs(sides) do
 end
 cls()
 label("H", X, Y)
-check.truthy(sides.ne(ink_box(15)), "label defaults to ne in the foreground colour")
+check.eq(ink_box(15), 1e9, "without a direction a label waits for the picture to be written")
+local placed = placed_labels()
+check.eq(#placed, 1, "one label to place")
+check.eq(placed[1].side, "ne", "on an empty screen it goes to ne")
+check.truthy(placed[1].auto and sides.ne(placed[1].x, placed[1].y, placed[1].x + 7, placed[1].y + 15),
+  "3 px off, as label(text, P, \"ne\") puts it")
 cls()
 label(42, X, Y, "s", "#ff8000", 2)
 local x0, y0, x1, y1 = ink_box(256)

@@ -35,7 +35,7 @@ check.err(function() label("ab\0cd", P(10, 10)) end,
   "label: argument #1 (text) must be a string without NUL bytes", "label")
 check.err(function() text(10, 10, "ab\0cd") end,
   "text: argument #3 (text) must be a string without NUL bytes", "text")
-label("abcd", P(10, 20))   -- and without one it draws: four letters' pixels
+label("abcd", P(10, 20), "ne")   -- and without one it draws: four letters' pixels
 local lit = 0
 for x = 10, 60 do for y = 0, 20 do if point(x, y) ~= 0 then lit = lit + 1 end end end
 check.truthy(lit > 20, "a label without NUL draws (" .. lit .. " pixels)")

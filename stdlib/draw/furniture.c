@@ -1,0 +1,272 @@
+/* Engineering-drawing furniture (furniture.h): each piece is built on the screen, where its
+ * sizes are, and drawn through the ordinary statements (pc_path, pc_fill_path, pc_line,
+ * pc_text) after mapping its points back to world coordinates, so the display list and every
+ * writer see only ops they know. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "canvas_internal.h"
+#include "furniture.h"
+
+#define PI 3.14159265358979323846
+
+typedef struct { double x, y; } v2;
+
+static v2 add(v2 a, v2 b) { return (v2){a.x + b.x, a.y + b.y}; }
+static v2 sub(v2 a, v2 b) { return (v2){a.x - b.x, a.y - b.y}; }
+static v2 mul(v2 a, double k) { return (v2){a.x * k, a.y * k}; }
+static double len2(v2 a) { return hypot(a.x, a.y); }
+
+static v2 scr(const pc_canvas *c, double x, double y) {
+    v2 s;
+    pc_world_to_screen(c, x, y, &s.x, &s.y);
+    return s;
+}
+
+static int finite_pts(pc_canvas *c, const char *stmt, int n, const double *v) {
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i])) return pc_fail(c, "%s: coordinates must be finite numbers", stmt);
+    return PC_OK;
+}
+
+/* A path through n screen points (mapped back to world coordinates for the statement). */
+static int spath(pc_canvas *c, int n, const v2 *p, int closed, int filled, int color) {
+    double xy[2 * 64];
+    if (n > 64) return pc_fail(c, "furniture: too many points");
+    for (int i = 0; i < n; i++) pc_screen_to_world(c, p[i].x, p[i].y, &xy[2 * i], &xy[2 * i + 1]);
+    if (filled) return pc_fill_path(c, (size_t)n, xy, NULL, 0, PC_FILL_NONZERO, color);
+    return pc_path(c, (size_t)n, xy, NULL, 0, closed, color);
+}
+
+static int sline(pc_canvas *c, v2 a, v2 b, int color) { return spath(c, 2, (v2[]){a, b}, 0, 0, color); }
+
+/* The side of a point that a label pointing along screen direction d takes. */
+static int anchor_toward(v2 d) {
+    double a = atan2(-d.y, d.x);   /* counter-clockwise from east, as seen */
+    int k = (int)lrint(a / (PI / 4));
+    static const int side[8] = {PC_ANCHOR_E, PC_ANCHOR_NE, PC_ANCHOR_N, PC_ANCHOR_NW,
+                                PC_ANCHOR_W, PC_ANCHOR_SW, PC_ANCHOR_S, PC_ANCHOR_SE};
+    return side[((k % 8) + 8) % 8];
+}
+
+static int stext(pc_canvas *c, v2 p, const char *text, int anchor, int color) {
+    double wx, wy;
+    pc_screen_to_world(c, p.x, p.y, &wx, &wy);
+    return pc_text(c, wx, wy, text, anchor, 3, 1, color);
+}
+
+/* ---- markers and arrows -------------------------------------------------------------------- */
+
+int pc_mark(pc_canvas *c, double x, double y, int style, double size, int color) {
+    if (finite_pts(c, "mark", 2, (double[]){x, y}) != PC_OK) return PC_EARG;
+    if (!(size >= 1 && size <= 200)) return pc_fail(c, "mark: size must be 1..200 pixels, got %g", size);
+    v2 o = scr(c, x, y), p[32];
+    double r = size / 2;
+    switch (style) {
+    case PC_MARK_DOT: case PC_MARK_OPEN:
+        for (int i = 0; i < 32; i++)
+            p[i] = add(o, (v2){r * cos(2 * PI * i / 32), r * sin(2 * PI * i / 32)});
+        return spath(c, 32, p, 1, style == PC_MARK_DOT, color);
+    case PC_MARK_SQUARE:
+        p[0] = add(o, (v2){-r, -r}); p[1] = add(o, (v2){r, -r});
+        p[2] = add(o, (v2){r, r}); p[3] = add(o, (v2){-r, r});
+        return spath(c, 4, p, 1, 0, color);
+    case PC_MARK_CROSS: case PC_MARK_PLUS: {
+        double k = style == PC_MARK_CROSS ? r * sqrt(0.5) : r;
+        v2 a = style == PC_MARK_CROSS ? (v2){k, k} : (v2){r, 0};
+        v2 b = style == PC_MARK_CROSS ? (v2){k, -k} : (v2){0, r};
+        int st = sline(c, sub(o, a), add(o, a), color);
+        return st == PC_OK ? sline(c, sub(o, b), add(o, b), color) : st;
+    }
+    default:
+        return pc_fail(c, "mark: unknown style %d", style);
+    }
+}
+
+int pc_arrow_head(pc_canvas *c, double x1, double y1, double x2, double y2, double len, int color) {
+    if (finite_pts(c, "arrow", 4, (double[]){x1, y1, x2, y2}) != PC_OK) return PC_EARG;
+    if (!(len >= 1 && len <= 200)) return pc_fail(c, "arrow: head length must be 1..200 pixels, got %g", len);
+    v2 a = scr(c, x1, y1), t = scr(c, x2, y2), d = sub(t, a);
+    double l = len2(d);
+    if (!(l > 0)) return pc_fail(c, "arrow: the two points coincide: no direction for the head");
+    v2 u = mul(d, 1 / l), n = {-u.y, u.x}, base = sub(t, mul(u, len));
+    return spath(c, 3, (v2[]){t, add(base, mul(n, 0.3 * len)), sub(base, mul(n, 0.3 * len))}, 1, 1,
+                 color);
+}
+
+int pc_arrow(pc_canvas *c, double x1, double y1, double x2, double y2, int heads, double len,
+             int color) {
+    if (finite_pts(c, "arrow", 4, (double[]){x1, y1, x2, y2}) != PC_OK) return PC_EARG;
+    if (heads < 0 || heads > 3) return pc_fail(c, "arrow: heads must be 0..3, got %d", heads);
+    v2 a = scr(c, x1, y1), b = scr(c, x2, y2), d = sub(b, a);
+    double l = len2(d);
+    if (!(l > 0) && heads) return pc_fail(c, "arrow: the two points coincide: no direction for the head");
+    v2 u = l > 0 ? mul(d, 1 / l) : (v2){0, 0};
+    /* the shaft stops inside the head (at two thirds of it) so no pen blunts the tip */
+    v2 s0 = heads & PC_ARROW_START ? add(a, mul(u, fmin(len * 0.66, l / 2))) : a;
+    v2 s1 = heads & PC_ARROW_END ? sub(b, mul(u, fmin(len * 0.66, l / 2))) : b;
+    int st = sline(c, s0, s1, color);
+    if (st == PC_OK && (heads & PC_ARROW_END)) st = pc_arrow_head(c, x1, y1, x2, y2, len, color);
+    if (st == PC_OK && (heads & PC_ARROW_START)) st = pc_arrow_head(c, x2, y2, x1, y1, len, color);
+    return st;
+}
+
+/* ---- dimensions and angles ------------------------------------------------------------------ */
+
+int pc_dimension(pc_canvas *c, double ax, double ay, double bx, double by, double offset,
+                 const char *text, int color, double *length) {
+    if (finite_pts(c, "dimension", 5, (double[]){ax, ay, bx, by, offset}) != PC_OK) return PC_EARG;
+    v2 a = scr(c, ax, ay), b = scr(c, bx, by), d = sub(b, a);
+    double l = len2(d), world = hypot(bx - ax, by - ay);
+    if (!(l > 0)) return pc_fail(c, "dimension: the two points coincide: nothing to measure");
+    if (fabs(offset) > 1e5) return pc_fail(c, "dimension: offset must be within 1e5 pixels, got %g", offset);
+    v2 u = mul(d, 1 / l), n = {u.y, -u.x};   /* the left of A->B as seen (y is down) */
+    double side = offset < 0 ? -1 : 1, gap = 2, over = 3;
+    v2 a1 = add(a, mul(n, offset)), b1 = add(b, mul(n, offset));
+    int st = PC_OK;
+    if (fabs(offset) > gap) {   /* extension lines, from a gap off the object to past the line */
+        st = sline(c, add(a, mul(n, side * gap)), add(a1, mul(n, side * over)), color);
+        if (st == PC_OK) st = sline(c, add(b, mul(n, side * gap)), add(b1, mul(n, side * over)), color);
+    }
+    double wa, wb, wc, wd;
+    pc_screen_to_world(c, a1.x, a1.y, &wa, &wb);
+    pc_screen_to_world(c, b1.x, b1.y, &wc, &wd);
+    if (st == PC_OK) st = pc_arrow(c, wa, wb, wc, wd, PC_ARROW_BOTH, fmin(8, l / 3), color);
+    char buf[64];
+    if (!text) {
+        snprintf(buf, sizeof buf, "%.4g", world);
+        text = buf;
+    }
+    v2 mid = mul(add(a1, b1), 0.5), out = offset == 0 ? n : mul(n, side);
+    if (st == PC_OK) st = stext(c, mid, text, anchor_toward(out), color);
+    if (length) *length = world;
+    return st;
+}
+
+int pc_angle_mark(pc_canvas *c, double ax, double ay, double ox, double oy, double bx, double by,
+                  double r, const char *text, int color, double *angle) {
+    if (finite_pts(c, "angle_mark", 7, (double[]){ax, ay, ox, oy, bx, by, r}) != PC_OK) return PC_EARG;
+    if (!(r >= 2 && r <= 1000)) return pc_fail(c, "angle_mark: radius must be 2..1000 pixels, got %g", r);
+    double wa = hypot(ax - ox, ay - oy), wb = hypot(bx - ox, by - oy);
+    v2 o = scr(c, ox, oy), da = sub(scr(c, ax, ay), o), db = sub(scr(c, bx, by), o);
+    if (!(wa > 0 && wb > 0 && len2(da) > 0 && len2(db) > 0))
+        return pc_fail(c, "angle_mark: a side has no length (A or B is the vertex O)");
+    /* the angle in world units, from the cross and dot products (exact near 0 and pi) */
+    double cr = (ax - ox) * (by - oy) - (ay - oy) * (bx - ox), dt = (ax - ox) * (bx - ox) + (ay - oy) * (by - oy);
+    double th = atan2(fabs(cr), dt);
+    v2 u = mul(da, 1 / len2(da)), v = mul(db, 1 / len2(db));
+    int st;
+    if (fabs(th - PI / 2) < 1e-9) {   /* the right-angle square, its side 0.7 r */
+        double s = 0.7 * r;
+        st = spath(c, 3, (v2[]){add(o, mul(u, s)), add(o, add(mul(u, s), mul(v, s))), add(o, mul(v, s))},
+                   0, 0, color);
+    } else {   /* the arc the short way round on the screen */
+        double a0 = atan2(u.y, u.x), sweep = atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y);
+        int m = (int)fmin(63, fmax(8, fabs(sweep) * r / 3));
+        v2 p[64];
+        for (int i = 0; i <= m; i++) {
+            double t = a0 + sweep * i / m;
+            p[i] = add(o, (v2){r * cos(t), r * sin(t)});
+        }
+        st = spath(c, m + 1, p, 0, 0, color);
+    }
+    v2 w = add(u, v);
+    if (len2(w) < 1e-9) w = (v2){-u.y, u.x};
+    w = mul(w, 1 / len2(w));
+    char buf[64];
+    if (!text) {
+        snprintf(buf, sizeof buf, "%.4g\xc2\xb0", th * 180 / PI);
+        text = buf;
+    }
+    if (st == PC_OK && *text) st = stext(c, add(o, mul(w, r + 2)), text, anchor_toward(w), color);
+    if (angle) *angle = th;
+    return st;
+}
+
+int pc_ticks(pc_canvas *c, double ax, double ay, double bx, double by, int n, double size,
+             int color) {
+    if (finite_pts(c, "ticks", 4, (double[]){ax, ay, bx, by}) != PC_OK) return PC_EARG;
+    if (n < 1 || n > 5) return pc_fail(c, "ticks: the number of ticks must be 1..5, got %d", n);
+    if (!(size >= 1 && size <= 200)) return pc_fail(c, "ticks: size must be 1..200 pixels, got %g", size);
+    v2 a = scr(c, ax, ay), b = scr(c, bx, by), d = sub(b, a);
+    double l = len2(d);
+    if (!(l > 0)) return pc_fail(c, "ticks: the two points coincide: no segment to mark");
+    v2 u = mul(d, 1 / l), nrm = {-u.y, u.x}, m = mul(add(a, b), 0.5);
+    int st = PC_OK;
+    for (int i = 0; i < n && st == PC_OK; i++) {
+        v2 q = add(m, mul(u, 3.0 * (i - (n - 1) / 2.0)));
+        st = sline(c, sub(q, mul(nrm, size / 2)), add(q, mul(nrm, size / 2)), color);
+    }
+    return st;
+}
+
+/* ---- hatching and centre lines ------------------------------------------------------------- */
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int pc_hatch(pc_canvas *c, size_t n, const double *xy, double spacing, double angle, int color,
+             size_t *nlines) {
+    if (n < 3) return pc_fail(c, "hatch: a region needs at least 3 points, got %zu", n);
+    if (!(spacing >= 1 && spacing <= 1e4)) return pc_fail(c, "hatch: spacing must be 1..1e4 pixels, got %g", spacing);
+    if (!isfinite(angle)) return pc_fail(c, "hatch: the angle must be a finite number of degrees");
+    double a = angle * PI / 180;
+    v2 d = {cos(a), -sin(a)}, nr = {sin(a), cos(a)};   /* along the hatch (as seen), across it */
+    v2 *p = malloc(n * sizeof *p);
+    double *cuts = malloc(n * sizeof *cuts);
+    if (!p || !cuts) {
+        free(p);
+        free(cuts);
+        return pc_fail_code(c, PC_ENOMEM, "hatch: out of memory");
+    }
+    double t0 = INFINITY, t1 = -INFINITY;
+    int st = PC_OK;
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(xy[2 * i]) || !isfinite(xy[2 * i + 1])) st = pc_fail(c, "hatch: coordinates must be finite numbers");
+        v2 s = scr(c, xy[2 * i], xy[2 * i + 1]);
+        p[i] = (v2){s.x * d.x + s.y * d.y, s.x * nr.x + s.y * nr.y};   /* (along, across) */
+        t0 = fmin(t0, p[i].y);
+        t1 = fmax(t1, p[i].y);
+    }
+    size_t count = 0;
+    if (st == PC_OK && t1 - t0 > 1e6 * spacing) st = pc_fail(c, "hatch: the region spans too many lines");
+    /* lines at whole multiples of the spacing across: neighbouring regions' hatches line up */
+    for (double k = ceil(t0 / spacing); st == PC_OK && k * spacing <= t1; k++) {
+        double t = k * spacing;
+        size_t m = 0;
+        for (size_t i = 0; i < n; i++) {   /* edges cut half-open in t: a vertex counts once */
+            v2 e0 = p[i], e1 = p[(i + 1) % n];
+            if ((e0.y <= t) == (e1.y <= t)) continue;
+            cuts[m++] = e0.x + (t - e0.y) * (e1.x - e0.x) / (e1.y - e0.y);
+        }
+        qsort(cuts, m, sizeof *cuts, cmp_double);
+        for (size_t j = 0; j + 1 < m && st == PC_OK; j += 2) {
+            v2 s0 = add(mul(d, cuts[j]), mul(nr, t)), s1 = add(mul(d, cuts[j + 1]), mul(nr, t));
+            st = sline(c, s0, s1, color);
+            count++;
+        }
+    }
+    free(p);
+    free(cuts);
+    if (nlines) *nlines = count;
+    return st;
+}
+
+int pc_centre_line(pc_canvas *c, double ax, double ay, double bx, double by, double extend,
+                   int color) {
+    if (finite_pts(c, "centre_line", 5, (double[]){ax, ay, bx, by, extend}) != PC_OK) return PC_EARG;
+    v2 a = scr(c, ax, ay), b = scr(c, bx, by), d = sub(b, a);
+    double l = len2(d);
+    if (!(l > 0)) return pc_fail(c, "centre_line: the two points coincide: no direction");
+    if (!(extend >= 0 && extend <= 1e5)) return pc_fail(c, "centre_line: extend must be 0..1e5 pixels, got %g", extend);
+    v2 u = mul(d, 1 / l);
+    pc_stroke old = c->pens[c->pen];
+    double dash[4] = {12 * old.width, 3 * old.width, 2 * old.width, 3 * old.width};   /* ISO 128 type 04 */
+    int st = pc_pen(c, old.width, dash, 4);
+    if (st == PC_OK) st = sline(c, sub(a, mul(u, extend)), add(b, mul(u, extend)), color);
+    int back = pc_pen(c, old.width, old.ndash ? old.dash : NULL, old.ndash);
+    return st != PC_OK ? st : back;
+}

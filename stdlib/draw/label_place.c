@@ -1,0 +1,320 @@
+/* Automatic label placement: each label takes the best of a fixed list of candidate boxes round
+ * its point.  The candidates are the eight sides at two near distances, then four rings
+ * further out joined to the point by a leader line.  The cost ranks, from most to least
+ * important: overlapping another label, leaving the picture, covering another label's point,
+ * the ink covered (a summed-area table of the stroked pixels), then distance and side.
+ * Placing is greedy in the labels' order, then each label left overlapping is placed again
+ * against all the others (twice), which resolves most of what the greedy order got wrong
+ * (the others are at their best already: ink and points do not move); no randomness, so
+ * the same picture always gives the same layout.  Other labels are found through a uniform
+ * grid of cells, so n labels cost O(n) candidates each looking at a few neighbours. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "layout.h"
+
+/* ---- the ink map ------------------------------------------------------------------------- */
+
+int pc_inkmap_init(pc_inkmap *m, const uint8_t *mask, int w, int h) {
+    m->w = w;
+    m->h = h;
+    m->sum = calloc((size_t)(w + 1) * (h + 1), sizeof *m->sum);
+    if (!m->sum) return PC_ENOMEM;
+    for (int y = 0; y < h; y++) {
+        uint32_t row = 0;
+        uint32_t *s = m->sum + (size_t)(y + 1) * (w + 1), *up = s - (w + 1);
+        for (int x = 0; x < w; x++) {
+            row += mask[(size_t)y * w + x] != 0;
+            s[x + 1] = up[x + 1] + row;
+        }
+    }
+    return PC_OK;
+}
+
+void pc_inkmap_free(pc_inkmap *m) {
+    free(m->sum);
+    m->sum = NULL;
+}
+
+static long clampl(double v, long lo, long hi) {
+    long r = (long)floor(v);
+    return r < lo ? lo : r > hi ? hi : r;
+}
+
+uint32_t pc_inkmap_count(const pc_inkmap *m, pc_box2 b) {
+    long x0 = clampl(b.x0, 0, m->w), x1 = clampl(b.x1, 0, m->w);
+    long y0 = clampl(b.y0, 0, m->h), y1 = clampl(b.y1, 0, m->h);
+    if (x1 <= x0 || y1 <= y0) return 0;
+    size_t W = (size_t)m->w + 1;
+    return m->sum[y1 * W + x1] - m->sum[y0 * W + x1] - m->sum[y1 * W + x0] + m->sum[y0 * W + x0];
+}
+
+/* ---- candidate boxes ------------------------------------------------------------------------ */
+
+/* text.c's rule for a cell box w x h beside pixel (X, Y), g pixels off. */
+pc_box2 pc_label_box(double px, double py, double w, double h, int anchor, double gap) {
+    double X = nearbyint(px), Y = nearbyint(py), g = nearbyint(gap), left, top;
+    switch (anchor) {
+    case PC_ANCHOR_NE: case PC_ANCHOR_E: case PC_ANCHOR_SE: left = X + g; break;
+    case PC_ANCHOR_NW: case PC_ANCHOR_W: case PC_ANCHOR_SW: left = X - g - w + 1; break;
+    default: left = X - floor(w / 2); break;
+    }
+    switch (anchor) {
+    case PC_ANCHOR_NW: case PC_ANCHOR_N: case PC_ANCHOR_NE: top = Y - g - h + 1; break;
+    case PC_ANCHOR_SW: case PC_ANCHOR_S: case PC_ANCHOR_SE: top = Y + g; break;
+    default: top = Y - floor(h / 2); break;
+    }
+    return (pc_box2){left, top, left + w, top + h};
+}
+
+/* Sides in order of preference (the diagonals first: they leave the point's lines free), and
+ * the rings: distance in pixels and the cost of going that far.  The near rings use the eight
+ * sides as pc_text does; from LEADER_RING on, a label may sit in any of 16 directions (so the
+ * labels of neighbouring points do not queue along the same eight rays; 8 of them in the three
+ * outer rings) and a leader joins it. */
+static const int sides[8] = {PC_ANCHOR_NE, PC_ANCHOR_SE, PC_ANCHOR_NW, PC_ANCHOR_SW,
+                             PC_ANCHOR_E, PC_ANCHOR_W, PC_ANCHOR_N, PC_ANCHOR_S};
+static const double ring_gap[] = {3, 8, 16, 26, 40, 60, 90, 130};
+static const double ring_cost[] = {0, 30, 200, 260, 330, 420, 540, 700};
+#define NRINGS (sizeof ring_gap / sizeof ring_gap[0])
+#define LEADER_RING 2
+#define NDIRS 16
+
+/* A far candidate: the box in direction k (of NDIRS, counter-clockwise from east, y down on
+ * the screen) whose nearest edge is gap pixels off the point; its side is the nearest of the
+ * eight (for the leader's end and for what a script reads back). */
+static pc_box2 far_box(const pc_label *l, int k, double gap, int *anchor) {
+    static const int side_of[8] = {PC_ANCHOR_E, PC_ANCHOR_NE, PC_ANCHOR_N, PC_ANCHOR_NW,
+                                   PC_ANCHOR_W, PC_ANCHOR_SW, PC_ANCHOR_S, PC_ANCHOR_SE};
+    static const double cs[NDIRS][2] = {   /* cos, sin of k * 22.5 degrees */
+        {1, 0}, {0.92387953251128674, 0.38268343236508978}, {0.70710678118654757, 0.70710678118654757},
+        {0.38268343236508978, 0.92387953251128674}, {0, 1}, {-0.38268343236508978, 0.92387953251128674},
+        {-0.70710678118654757, 0.70710678118654757}, {-0.92387953251128674, 0.38268343236508978},
+        {-1, 0}, {-0.92387953251128674, -0.38268343236508978}, {-0.70710678118654757, -0.70710678118654757},
+        {-0.38268343236508978, -0.92387953251128674}, {0, -1}, {0.38268343236508978, -0.92387953251128674},
+        {0.70710678118654757, -0.70710678118654757}, {0.92387953251128674, -0.38268343236508978}};
+    double ca = cs[k][0], sa = cs[k][1];
+    double d = gap + 0.5 * (fabs(ca) * l->w + fabs(sa) * l->h);
+    double cx = nearbyint(l->px + d * ca - l->w / 2), cy = nearbyint(l->py - d * sa - l->h / 2);
+    *anchor = side_of[((k + 1) / 2) % 8];
+    return (pc_box2){cx, cy, cx + l->w, cy + l->h};
+}
+
+#define COST_OVERLAP 1e9
+#define COST_OUTSIDE 1e7
+#define COST_POINT 1e5
+#define COST_INK 60.0
+
+/* ---- a grid of cells holding label indices --------------------------------------------- */
+
+#define CELL 48.0
+typedef struct { size_t *idx; size_t n, cap; } cell;
+typedef struct {
+    int nx, ny;
+    double ox, oy;          /* the grid's origin: the labels may lie off the picture */
+    cell *cells;
+} grid;
+
+static int grid_init(grid *g, double x0, double y0, double x1, double y1) {
+    g->ox = x0;
+    g->oy = y0;
+    g->nx = (int)ceil((x1 - x0) / CELL) + 1;
+    g->ny = (int)ceil((y1 - y0) / CELL) + 1;
+    if (g->nx > 4096) g->nx = 4096;
+    if (g->ny > 4096) g->ny = 4096;
+    g->cells = calloc((size_t)g->nx * g->ny, sizeof *g->cells);
+    return g->cells ? PC_OK : PC_ENOMEM;
+}
+
+static void grid_free(grid *g) {
+    for (size_t i = 0; i < (size_t)g->nx * g->ny; i++) free(g->cells[i].idx);
+    free(g->cells);
+}
+
+static void cell_range(const grid *g, pc_box2 b, int *i0, int *j0, int *i1, int *j1) {
+    *i0 = (int)clampl((b.x0 - g->ox) / CELL, 0, g->nx - 1);
+    *i1 = (int)clampl((b.x1 - g->ox) / CELL, 0, g->nx - 1);
+    *j0 = (int)clampl((b.y0 - g->oy) / CELL, 0, g->ny - 1);
+    *j1 = (int)clampl((b.y1 - g->oy) / CELL, 0, g->ny - 1);
+}
+
+static int grid_add(grid *g, pc_box2 b, size_t k) {
+    int i0, j0, i1, j1;
+    cell_range(g, b, &i0, &j0, &i1, &j1);
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+            cell *c = &g->cells[(size_t)j * g->nx + i];
+            if (c->n == c->cap) {
+                size_t cap = c->cap ? 2 * c->cap : 4;
+                size_t *p = realloc(c->idx, cap * sizeof *p);
+                if (!p) return PC_ENOMEM;
+                c->idx = p;
+                c->cap = cap;
+            }
+            c->idx[c->n++] = k;
+        }
+    return PC_OK;
+}
+
+static void grid_remove(grid *g, pc_box2 b, size_t k) {
+    int i0, j0, i1, j1;
+    cell_range(g, b, &i0, &j0, &i1, &j1);
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+            cell *c = &g->cells[(size_t)j * g->nx + i];
+            for (size_t m = 0; m < c->n; m++)
+                if (c->idx[m] == k) {
+                    c->idx[m] = c->idx[--c->n];
+                    break;
+                }
+        }
+}
+
+/* ---- placing ------------------------------------------------------------------------------ */
+
+typedef struct {
+    pc_label *lab;
+    size_t n;
+    const pc_inkmap *ink;
+    double width, height;
+    grid boxes, points;     /* the placed boxes; every label's point (a 1-pixel box) */
+    uint8_t *placed;
+    uint32_t *seen;         /* per label: the last query that counted it (no double counting) */
+    uint32_t stamp;
+    double *pt;             /* per label: its point's pixel, x then y */
+    pc_box2 *box;           /* per label: its box as placed (compact, for the overlap test) */
+} placer;
+
+static pc_box2 point_box(const pc_label *l) {
+    double X = nearbyint(l->px), Y = nearbyint(l->py);
+    return (pc_box2){X, Y, X + 1, Y + 1};
+}
+
+/* Does pixel (x, y) lie in box b? */
+static int px_in(const double *q, pc_box2 b) {
+    return q[0] >= b.x0 && q[0] < b.x1 && q[1] >= b.y0 && q[1] < b.y1;
+}
+
+/* The cost of box b for label k on top of `base`; the cheap terms (the edge, the ink) first,
+ * and the searches of the grids only while the total can still beat `best`. */
+static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) {
+    double cost = base;
+    int i0, j0, i1, j1;
+    pc_box2 in = p->lab[k].bounds;
+    if (!(in.x1 > in.x0 && in.y1 > in.y0)) in = (pc_box2){0, 0, p->width, p->height};
+    if (b.x0 < in.x0 || b.y0 < in.y0 || b.x1 > in.x1 || b.y1 > in.y1) {
+        double ix = fmin(b.x1, in.x1) - fmax(b.x0, in.x0), iy = fmin(b.y1, in.y1) - fmax(b.y0, in.y0);
+        double inside = ix > 0 && iy > 0 ? ix * iy : 0;
+        cost += COST_OUTSIDE + ((b.x1 - b.x0) * (b.y1 - b.y0) - inside);
+    }
+    pc_box2 near = {b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1};
+    if (p->ink) cost += COST_INK * pc_inkmap_count(p->ink, near);
+    if (cost >= best) return cost;
+    /* an overlapping box is counted in the one cell holding the top-left corner of the
+     * overlap, so a box in several cells counts once */
+    cell_range(&p->boxes, b, &i0, &j0, &i1, &j1);
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+            const cell *c = &p->boxes.cells[(size_t)j * p->boxes.nx + i];
+            for (size_t m = 0; m < c->n; m++) {
+                size_t o = c->idx[m];
+                const pc_box2 *q = &p->box[o];
+                if (o == k || !pc_box2_overlap(b, *q)) continue;
+                if (clampl((fmax(b.x0, q->x0) - p->boxes.ox) / CELL, 0, p->boxes.nx - 1) == i &&
+                    clampl((fmax(b.y0, q->y0) - p->boxes.oy) / CELL, 0, p->boxes.ny - 1) == j)
+                    cost += COST_OVERLAP;
+            }
+        }
+    if (cost >= best) return cost;
+    p->stamp++;
+    cell_range(&p->points, near, &i0, &j0, &i1, &j1);
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+            const cell *c = &p->points.cells[(size_t)j * p->points.nx + i];
+            for (size_t m = 0; m < c->n; m++) {
+                size_t o = c->idx[m];
+                if (o == k || p->seen[o] == p->stamp) continue;
+                p->seen[o] = p->stamp;
+                const double *q = p->pt + 2 * o, *mine = p->pt + 2 * k;
+                if (px_in(q, near) && !(q[0] == mine[0] && q[1] == mine[1])) cost += COST_POINT;
+            }
+        }
+    return cost;
+}
+
+static int place_one(placer *p, size_t k, double *cost_out) {
+    pc_label *l = &p->lab[k];
+    if (p->placed[k]) grid_remove(&p->boxes, l->box, k);
+    double best = INFINITY;
+    for (size_t r = 0; r < NRINGS; r++)
+        for (int s = 0; s < (r < LEADER_RING ? 8 : NDIRS); s += r < LEADER_RING + 3 ? 1 : 2) {
+            int anchor = r < LEADER_RING ? sides[s] : 0;
+            pc_box2 b = r < LEADER_RING
+                ? pc_label_box(l->px, l->py, l->w, l->h, anchor, ring_gap[r])
+                : far_box(l, (s + 2) % NDIRS, ring_gap[r], &anchor);   /* from NE round */
+            double cost = ring_cost[r] + 2.0 * s;
+            if (cost >= best) continue;
+            cost = cost_of(p, k, b, cost, best);
+            if (cost < best) {
+                best = cost;
+                l->box = b;
+                l->anchor = anchor;
+                l->gap = ring_gap[r];
+                l->leader = r >= LEADER_RING && !l->no_leader;
+            }
+        }
+    p->placed[k] = 1;
+    p->box[k] = l->box;
+    *cost_out = best;
+    return grid_add(&p->boxes, l->box, k);
+}
+
+int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height) {
+    if (n == 0) return PC_OK;
+    placer p = {lab, n, ink, width, height, {0}, {0}, NULL, NULL, 0, NULL, NULL};
+    /* the grids cover the picture and every point (with the farthest ring round it) */
+    double x0 = 0, y0 = 0, x1 = width, y1 = height, reach = ring_gap[NRINGS - 1];
+    for (size_t k = 0; k < n; k++) {
+        double wx = lab[k].w + reach, hy = lab[k].h + reach;
+        if (lab[k].fixed) {
+            x0 = fmin(x0, lab[k].box.x0); y0 = fmin(y0, lab[k].box.y0);
+            x1 = fmax(x1, lab[k].box.x1); y1 = fmax(y1, lab[k].box.y1);
+        }
+        x0 = fmin(x0, lab[k].px - wx); y0 = fmin(y0, lab[k].py - hy);
+        x1 = fmax(x1, lab[k].px + wx); y1 = fmax(y1, lab[k].py + hy);
+    }
+    int st = grid_init(&p.boxes, x0, y0, x1, y1);
+    if (st == PC_OK) st = grid_init(&p.points, x0, y0, x1, y1);
+    p.placed = calloc(n, 1);
+    p.seen = calloc(n, sizeof *p.seen);
+    p.pt = malloc(2 * n * sizeof *p.pt);
+    p.box = malloc(n * sizeof *p.box);
+    if (!p.placed || !p.seen || !p.pt || !p.box) st = PC_ENOMEM;
+    for (size_t k = 0; st == PC_OK && k < n; k++) {
+        p.box[k] = lab[k].box;
+        p.pt[2 * k] = nearbyint(lab[k].px);
+        p.pt[2 * k + 1] = nearbyint(lab[k].py);
+    }
+    for (size_t k = 0; k < n && st == PC_OK; k++) {
+        st = grid_add(&p.points, point_box(&lab[k]), k);
+        if (st == PC_OK && lab[k].fixed) {
+            p.placed[k] = 1;
+            st = grid_add(&p.boxes, lab[k].box, k);
+        }
+    }
+    /* the greedy pass, then two more for the labels left overlapping another or the edge: the
+     * others are at their best already, since neither ink nor points move */
+    double *cost = calloc(n, sizeof *cost);
+    if (!cost) st = PC_ENOMEM;
+    for (int pass = 0; pass < 3 && st == PC_OK; pass++)
+        for (size_t k = 0; k < n && st == PC_OK; k++)
+            if (!lab[k].fixed && (pass == 0 || cost[k] >= COST_OUTSIDE)) st = place_one(&p, k, &cost[k]);
+    free(cost);
+    if (p.boxes.cells) grid_free(&p.boxes);
+    if (p.points.cells) grid_free(&p.points);
+    free(p.placed);
+    free(p.seen);
+    free(p.pt);
+    free(p.box);
+    return st;
+}

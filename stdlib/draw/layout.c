@@ -1,0 +1,200 @@
+/* Resolving a canvas for a writer: the pending labels placed among everything drawn.
+ * The writers get a copy (pixels and display list duplicated, the rest shared read-only), so
+ * the canvas keeps its labels pending and a later save places them again against what was
+ * drawn in between. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "canvas_internal.h"
+#include "font.h"
+#include "layout.h"
+#include "math_label.h"
+
+int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, double *w,
+                    double *h) {
+    if (c && c->measure) return c->measure(c->measure_ctx, utf8, n, scale, w, h);
+    long chars = pc_utf8_count(utf8, n, NULL);
+    if (chars < 0) return PC_EARG;
+    *w = (double)chars * PC_FONT_W * scale;
+    *h = (double)PC_FONT_H * scale;
+    if (memchr(utf8, '$', n)) {   /* math: the width the VGA look draws it with (text.c) */
+        char *copy = malloc(n + 1);
+        if (!copy) return PC_ENOMEM;
+        memcpy(copy, utf8, n);
+        copy[n] = 0;
+        pc_mlayout L = {0};
+        char err[160];
+        if (pc_has_math(copy) && pc_text_vga_layout(copy, scale, &L, err, sizeof err) == PC_OK)
+            *w = L.width;
+        pc_mlayout_free(&L);
+        free(copy);
+    }
+    return PC_OK;
+}
+
+int pc_layout_pending(const pc_canvas *c) {
+    if (c->attach_resolve) return 1;
+    for (size_t i = 0; i < c->nops; i++)
+        if (c->ops[i].kind == PC_OP_TEXT && (c->ops[i].flags & PC_TEXT_AUTO)) return 1;
+    return 0;
+}
+
+/* The labels of the display list: every TEXT op, the automatic ones to place. */
+static pc_label *collect(const pc_canvas *c, size_t *n) {
+    size_t m = 0;
+    for (size_t i = 0; i < c->nops; i++) m += c->ops[i].kind == PC_OP_TEXT;
+    pc_label *lab = calloc(m ? m : 1, sizeof *lab);
+    if (!lab) return NULL;
+    m = 0;
+    for (size_t i = 0; i < c->nops; i++) {
+        const pc_op *op = &c->ops[i];
+        if (op->kind != PC_OP_TEXT) continue;
+        pc_label *l = &lab[m++];
+        double w = 0, h = 0;
+        if (pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK)
+            w = h = 0;
+        if (op->ry > 0) h = op->ry * op->rx;   /* PRINT's 8x8 and 8x14 cells */
+        l->w = w;
+        l->h = h;
+        l->px = op->x2;
+        l->py = op->y2;
+        l->fixed = !(op->flags & PC_TEXT_AUTO);
+        l->box = (pc_box2){op->x1, op->y1, op->x1 + w, op->y1 + h};
+        l->anchor = op->flags & PC_TEXT_ANCHOR;
+        /* it stays in its VIEW; a leader is an op at the list's end, in the last VIEW only */
+        size_t k = pc_op_clip(c, i);
+        const pc_rect *v = &c->clips[k].r;
+        l->bounds = (pc_box2){v->x0, v->y0, v->x1 + 1.0, v->y1 + 1.0};
+        l->no_leader = k + 1 != c->nclips;
+    }
+    *n = m;
+    return lab;
+}
+
+/* The leader of a far label: from the point to the box's nearest point, a pixel short. */
+static int leader(pc_canvas *c, const pc_label *l, int color) {
+    double qx = fmax(l->box.x0, fmin(l->px, l->box.x1 - 1));
+    double qy = fmax(l->box.y0, fmin(l->py, l->box.y1 - 1));
+    double dx = qx - l->px, dy = qy - l->py, d = hypot(dx, dy);
+    if (d < 4) return PC_OK;
+    double sx = l->px + 2 * dx / d, sy = l->py + 2 * dy / d;   /* clear of the point's mark */
+    return pc_line(c, nearbyint(sx), nearbyint(sy), nearbyint(qx - dx / d), nearbyint(qy - dy / d),
+                   color);
+}
+
+static int resolve_into(pc_canvas *r) {
+    if (r->attach_resolve) {   /* a 3-D scene first: the labels then avoid its strokes */
+        int st = r->attach_resolve(r->attach, r);
+        if (st != PC_OK) return st;
+    }
+    size_t n;
+    pc_label *lab = collect(r, &n);
+    if (!lab) return PC_ENOMEM;
+    size_t npx = (size_t)r->width * r->height;
+    uint8_t *mask = malloc(npx ? npx : 1);
+    pc_inkmap ink = {0};
+    int st = mask ? PC_OK : PC_ENOMEM;
+    if (st == PC_OK) {
+        for (size_t i = 0; i < npx; i++) mask[i] = r->pixels[i] != r->paper;
+        st = pc_inkmap_init(&ink, mask, r->width, r->height);
+    }
+    free(mask);
+    if (st == PC_OK) st = pc_place_labels(lab, n, &ink, r->width, r->height);
+    pc_inkmap_free(&ink);
+    /* the copy draws in screen pixels, each label in its own VIEW, with the default pen */
+    r->has_window = 0;
+    r->view_screen = 1;
+    r->pen = 0;
+    size_t nops = r->nops, k = 0;
+    for (size_t i = 0; i < nops && st == PC_OK; i++) {
+        pc_op *op = &r->ops[i];
+        if (op->kind != PC_OP_TEXT) continue;
+        const pc_label *l = &lab[k++];
+        if (l->fixed) continue;
+        op->x1 = l->box.x0;
+        op->y1 = l->box.y0;
+        op->flags = (uint8_t)(l->anchor | PC_TEXT_PLACED);
+        r->view = r->clips[pc_op_clip(r, i)].r;
+        pc_text_raster(r, op);
+        if (l->leader) st = leader(r, l, op->color);   /* may move r->ops: op is not used after */
+    }
+    free(lab);
+    return st;
+}
+
+const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
+    if (!pc_layout_pending(c)) return c;
+    pc_canvas *r = malloc(sizeof *r);
+    if (!r) return NULL;
+    *r = *c;
+    /* what the resolution may add to is the copy's own: pixels, ops, path points, pens, text */
+    size_t npx = (size_t)c->width * c->height;
+    r->pixels = malloc(npx * sizeof *r->pixels);
+    r->capops = c->nops + 16;
+    r->ops = malloc(r->capops * sizeof *r->ops);
+    r->cappts = c->npts + 16;
+    r->pts = malloc(r->cappts * sizeof *r->pts);
+    r->tags = malloc(r->cappts * sizeof *r->tags);
+    r->cappens = c->npens + 4;
+    r->pens = malloc(r->cappens * sizeof *r->pens);
+    r->captext = c->ntext + 64;
+    r->text = malloc(r->captext);
+    r->attach_drop = NULL;   /* the attachment stays the canvas's */
+    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text) {
+        pc_layout_release(c, r);
+        return NULL;
+    }
+    memcpy(r->pixels, c->pixels, npx * sizeof *r->pixels);
+    memcpy(r->ops, c->ops, c->nops * sizeof *r->ops);
+    if (c->npts) memcpy(r->pts, c->pts, c->npts * sizeof *r->pts);
+    if (c->npts) memcpy(r->tags, c->tags, c->npts * sizeof *r->tags);
+    memcpy(r->pens, c->pens, c->npens * sizeof *r->pens);
+    if (c->ntext) memcpy(r->text, c->text, c->ntext);
+    if (resolve_into(r) != PC_OK) {
+        pc_layout_release(c, r);
+        return NULL;
+    }
+    r->attach_resolve = NULL;   /* resolved: nothing is pending in the copy */
+    r->attach = NULL;
+    return r;
+}
+
+void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved) {
+    if (!resolved || resolved == c) return;
+    pc_canvas *r = (pc_canvas *)resolved;   /* our own copy: pc_layout_resolve made it */
+    free(r->pixels);
+    free(r->ops);
+    free(r->pts);
+    free(r->tags);
+    free(r->pens);
+    free(r->text);
+    free(r);
+}
+
+int pc_layout_labels(const pc_canvas *c, pc_box2 **out, int **anchors, size_t *n) {
+    const pc_canvas *r = pc_layout_resolve(c);
+    if (!r) return PC_ENOMEM;
+    size_t m;
+    pc_label *lab = collect(r, &m);
+    int st = lab ? PC_OK : PC_ENOMEM;
+    *out = NULL;
+    if (anchors) *anchors = NULL;
+    if (st == PC_OK) {
+        *out = malloc((m ? m : 1) * sizeof **out);
+        if (anchors) *anchors = malloc((m ? m : 1) * sizeof **anchors);
+        if (!*out || (anchors && !*anchors)) st = PC_ENOMEM;
+    }
+    for (size_t i = 0; st == PC_OK && i < m; i++) {
+        (*out)[i] = lab[i].box;
+        if (anchors) (*anchors)[i] = lab[i].anchor;
+    }
+    if (st != PC_OK) {
+        free(*out);
+        if (anchors) free(*anchors);
+        *out = NULL;
+    }
+    *n = st == PC_OK ? m : 0;
+    free(lab);
+    pc_layout_release(c, r);
+    return st;
+}

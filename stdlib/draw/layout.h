@@ -1,0 +1,104 @@
+/* The figure layout: what is decided when a picture is written, not when it is drawn.
+ *
+ * A label drawn without a direction (pc_text with PC_ANCHOR_AUTO) is recorded, not rasterised:
+ * it is placed when the picture is written, with everything else already known, among candidate
+ * positions round its point (label_place.c).  The writers get a resolved copy of the canvas
+ * (pc_layout_resolve); the canvas itself keeps the labels pending, so every save places them
+ * against everything drawn by then, and the same script always gives the same picture.
+ *
+ * Label boxes come from one text-measuring function per canvas (pc_canvas.measure): NULL is
+ * the VGA look's 8 x 16 cells; the print look installs its own (sizes in screen pixels), so
+ * placement works in both looks. */
+#ifndef PC_LAYOUT_H
+#define PC_LAYOUT_H
+
+#include "canvas.h"
+
+/* A box on the screen, in pixels: columns x0 .. x1-1, rows y0 .. y1-1 (half-open). */
+typedef struct { double x0, y0, x1, y1; } pc_box2;
+
+/* The size in screen pixels of the box of utf8 (n bytes) at scale, through c's measuring hook
+ * (the VGA cells when none is set).  PC_EARG for invalid UTF-8. */
+int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, double *w,
+                    double *h);
+
+/* ---- placement, on its own (label_place.c) ------------------------------------------------ */
+
+/* One label to place: its point (screen pixels), its box size, and either a fixed box
+ * (fixed != 0: an obstacle that stays where it is) or the result of placement. */
+typedef struct {
+    double px, py;          /* the point it labels */
+    double w, h;            /* its box */
+    int fixed;
+    pc_box2 box;            /* fixed: given; else: chosen */
+    int anchor;             /* chosen side (PC_ANCHOR_*) */
+    double gap;             /* chosen distance from the point, in pixels */
+    int leader;             /* 1 when it sits so far out that a leader line joins it */
+    pc_box2 bounds;         /* where it must stay (its VIEW); empty: the whole picture */
+    int no_leader;          /* no leader line can be drawn: far places go without one */
+} pc_label;
+
+/* The ink the labels avoid: a summed-area table of a w x h mask of stroked pixels, so the ink
+ * in any box is four look-ups.  mask[y * w + x] != 0 where there is ink. */
+typedef struct {
+    int w, h;
+    uint32_t *sum;          /* (w+1) x (h+1) */
+} pc_inkmap;
+
+int pc_inkmap_init(pc_inkmap *m, const uint8_t *mask, int w, int h);
+void pc_inkmap_free(pc_inkmap *m);
+/* The number of ink pixels inside box b (clipped to the map). */
+uint32_t pc_inkmap_count(const pc_inkmap *m, pc_box2 b);
+
+/* Place the labels that are not fixed, in the picture (0, 0)-(width, height) (or each in its
+ * bounds when they are not empty): each takes the
+ * candidate (eight sides at growing distances, the far ones with a leader) that overlaps no
+ * other label, stays inside, covers the least ink and no other label's point, in that order
+ * of importance, nearer and in the order NE SE NW SW E W N S first among equals.  Greedy in
+ * the given order, then the labels still in conflict placed again twice: deterministic.
+ * ink may be NULL.
+ * Returns PC_OK or PC_ENOMEM. */
+int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height);
+
+/* The box of a label of size w x h on side `anchor` of point (px, py), gap pixels off it, as
+ * pc_text places its cell box for a pixel point (text.c's rule). */
+pc_box2 pc_label_box(double px, double py, double w, double h, int anchor, double gap);
+
+/* Do two boxes overlap (share any pixel)? */
+static inline int pc_box2_overlap(pc_box2 a, pc_box2 b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+/* ---- resolving a canvas for a writer (layout.c) ------------------------------------------- */
+
+/* Has c anything for the writer to resolve (a pending label)? */
+int pc_layout_pending(const pc_canvas *c);
+/* A copy of c with every pending label placed and rasterised (the display list and pixels
+ * copied; the rest shared, read-only), or c itself when nothing is pending.  NULL when memory
+ * runs out.  Release with pc_layout_release. */
+const pc_canvas *pc_layout_resolve(const pc_canvas *c);
+void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved);
+
+/* The placed labels of c, in the order they were drawn: *out gets a malloc'd array of
+ * *n boxes (screen pixels), the anchors in anchors (may be NULL).  For tests and for a script
+ * that asks where its labels went. */
+int pc_layout_labels(const pc_canvas *c, pc_box2 **out, int **anchors, size_t *n);
+
+/* ---- framing (fit.c) ---------------------------------------------------------------------- */
+
+/* The box in screen pixels of everything drawn (text cells included, a pending label in its
+ * first place); PC_EARG when nothing is drawn. */
+int pc_drawn_extent(const pc_canvas *c, pc_box2 *out);
+
+/* Frame what is drawn in the view, margin pixels in from its edges: everything moved and
+ * scaled (equal scales on both axes with PC_FIT_EQUAL, each axis filling the view with
+ * PC_FIT_FILL) so that every point and every text cell is inside, as large as that allows and
+ * centred.  Pixel sizes (pens, markers, text) stay.  The display list is drawn again through
+ * the framing, and the window changes so that later drawing lands in the same frame (a
+ * script without a window gets one in its old pixel coordinates, y down).  Nothing drawn:
+ * nothing changes.  PC_EARG for a margin outside 0..half the view, or labels that cannot fit
+ * whatever the scale. */
+enum { PC_FIT_EQUAL, PC_FIT_FILL };
+int pc_fit(pc_canvas *c, double margin, int aspect);
+
+#endif

@@ -1,0 +1,50 @@
+/* A 3-D scene: strokes and surfaces gathered while a script draws, resolved when the picture is
+ * written, so every stroke is hidden where any surface of the figure lies in front of it,
+ * whatever the order of the drawing calls.  A surface takes part as an occluder (hidden.h: a
+ * depth test against its triangulated mesh); strokes are 3-D polylines and point markers.
+ * pc_scene_draw draws the strokes onto a canvas: the seen parts solid, the hidden parts
+ * dashed, left out, or shown as they are. */
+#ifndef PC_SCENE_H
+#define PC_SCENE_H
+
+#include "canvas.h"
+#include "hidden.h"
+
+typedef enum { PC_HIDDEN_SHOW, PC_HIDDEN_DASHED, PC_HIDDEN_HIDE } pc_hidden_mode;
+
+typedef struct pc_scene pc_scene;
+
+/* An empty scene seen through `screen`, a map from 3-D to screen pixels (y down) that every
+ * later addition is projected with.  NULL with *status: PC_EDIM unless 3 -> 2, PC_ESINGULAR
+ * for a map of rank < 3, PC_ENOMEM. */
+pc_scene *pc_scene_new(const pc_map *screen, int *status);
+void pc_scene_free(pc_scene *sc);
+
+/* A surface as an occluder, on a mesh x mesh grid (1..1024; 48 is plenty for a picture). */
+int pc_scene_add_surface(pc_scene *sc, const pc_surface *s, int mesh);
+/* A polyline of n 3-D points (xyz[3i..3i+2]); brk (may be NULL): brk[i] != 0 starts a new
+ * piece at point i.  In colour `color` (an attribute; < 0: the canvas's foreground at draw
+ * time) with the pen `pen` (an index into the canvas's pens, 0 the default). */
+int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8_t *brk,
+                          int color, int pen);
+/* A marker (furniture.h's styles) of size pixels at a 3-D point. */
+int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color);
+
+/* A label of a 3-D point: written when the scene is drawn if its point is seen (always with
+ * PC_HIDDEN_SHOW), on side `anchor` (PC_ANCHOR_AUTO: placed with the other labels). */
+int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
+                       int color);
+
+/* Is the 3-D point x seen (no surface of the scene in front of it)? */
+int pc_scene_visible(const pc_scene *sc, const double x[3]);
+/* The number of surfaces and strokes gathered. */
+size_t pc_scene_nsurfaces(const pc_scene *sc);
+size_t pc_scene_nstrokes(const pc_scene *sc);
+
+/* Draw every stroke onto c, its visibility sampled 3 px apart on the screen and each change
+ * found by bisection (to 1/1024 of the step): seen runs as paths in
+ * their pen, hidden runs by `mode` (dashed: the pen with dashes 4 on, 3 off).  Markers that
+ * are hidden are left out unless mode is SHOW.  Returns PC_OK or the canvas's status. */
+int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode);
+
+#endif

@@ -1,0 +1,570 @@
+/* Binding of the figure layout and its furniture (stdlib/draw/layout.h, furniture.h, axes.h),
+ * on the declared argument layer (pcl_args.h, docs/bindings.md): placed_labels, mark, arrow,
+ * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
+ * and map.view; text{units = "device"} in front of the drawing binding's text.  Points are
+ * 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene (pcl_scene.h):
+ * the strokes of a camera with hidden lines, resolved when the picture is written. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "pcl_args.h"
+#include "pcl_qbscreen.h"
+#include "pcl_curve.h"
+#include "pcl_scene.h"
+#include "layout.h"
+#include "furniture.h"
+#include "axes.h"
+#include "view.h"
+
+/* A core failure as the house error: the declared name, the core's message without its own. */
+static int check(lua_State *L, pc_canvas *c, int rc) {
+    if (rc == PC_OK) return 0;
+    const char *msg = c->error, *colon = strstr(msg, ": ");
+    if (colon && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg)) msg = colon + 2;
+    return pcl_fail(L, "%s", msg);
+}
+
+/* ---- the readers: a place (a 2-D point, or n-D through the camera) and a colour ----------- */
+
+/* v[0], v[1]: the 2-D place; a 3-D point also keeps its coordinates in v[2..4] (n = 3). */
+static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p || fabs(p->h[p->n] - 1) > PC_WEIGHT_TOL) return 0;
+    out->n = p->n;
+    if (p->n == 3)
+        for (int k = 0; k < 3; k++) out->v[2 + k] = p->h[k] / p->h[3];
+    if (p->n == 2) {
+        out->v[0] = p->h[0] / p->h[2];
+        out->v[1] = p->h[1] / p->h[2];
+        return 1;
+    }
+    return pcl_project(L, p->n, p->h, &out->v[0], &out->v[1]) == PC_OK;
+}
+#define XY_TEXT "a 2-D point (or an n-D one through the camera)"
+#define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = XY_TEXT}
+
+static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *c = pcl_active_canvas(L);
+    int isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER && isint && ((v >= 0 && v < c->ncolors) || (v >= 256 && v < 256 + c->ntrue))) {
+        out->x = (double)v;
+        return 1;
+    }
+    size_t len;
+    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    pc_rgb rgb;
+    if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
+    int attr = pc_rgb_color(c, rgb);
+    if (attr < 0) pcl_fail(L, "%s", c->error);
+    out->x = attr;
+    return 1;
+}
+#define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_color, \
+                     .expect = "a colour number or \"#rrggbb\""}
+static int color_of(const pcl_val *v) { return v->present ? (int)v->x : -1; }
+
+#define A_OPTNUM(nm, a, b, d, txt) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_RANGE, \
+                                    .lo = a, .hi = b, .dflt = d, .shown = txt}
+#define A_OPTENUM(nm, ch, d) {.name = nm, .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ch, .dflt = d}
+#define A_OPTSTR(nm) {.name = nm, .kind = PCL_STRING, .flags = PCL_OPT}
+
+/* ---- placed labels ---------------------------------------------------------------------- */
+
+static int l_placed_labels(lua_State *L) {
+    pc_canvas *c = pcl_active_canvas(L);
+    const pc_canvas *r = pc_layout_resolve(c);   /* as a writer gets it: placed, scene drawn */
+    pc_box2 *b;
+    int *side;
+    size_t n;
+    if (!r || pc_layout_labels(r, &b, &side, &n) != PC_OK) {
+        pc_layout_release(c, r);
+        return pcl_fail(L, "out of memory");
+    }
+    static const char *const names[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw"};
+    lua_createtable(L, (int)n, 0);
+    size_t k = 0;
+    for (size_t i = 0; i < r->nops && k < n; i++) {
+        const pc_op *op = &r->ops[i];
+        if (op->kind != PC_OP_TEXT) continue;
+        lua_createtable(L, 0, 7);
+        lua_pushlstring(L, r->text + op->first, op->count);
+        lua_setfield(L, -2, "text");
+        lua_pushnumber(L, b[k].x0); lua_setfield(L, -2, "x");
+        lua_pushnumber(L, b[k].y0); lua_setfield(L, -2, "y");
+        lua_pushnumber(L, b[k].x1 - b[k].x0); lua_setfield(L, -2, "w");
+        lua_pushnumber(L, b[k].y1 - b[k].y0); lua_setfield(L, -2, "h");
+        lua_pushstring(L, names[side[k] >= 0 && side[k] <= 8 ? side[k] : 0]); lua_setfield(L, -2, "side");
+        lua_pushboolean(L, (op->flags & (PC_TEXT_AUTO | PC_TEXT_PLACED)) != 0); lua_setfield(L, -2, "auto");
+        lua_rawseti(L, -2, (lua_Integer)++k);
+    }
+    free(b);
+    free(side);
+    pc_layout_release(c, r);
+    return 1;
+}
+
+/* ---- the 3-D scene ----------------------------------------------------------------------- */
+
+#define HIDDEN_KEY "pointcalc.hidden"
+
+/* The scenes of a canvas: a new one each time the camera's screen map or mode changes. */
+typedef struct {
+    pc_scene **sc;
+    int *mode;
+    pc_map *map;
+    size_t n, cap;
+} scene_set;
+
+static int set_resolve(void *p, pc_canvas *copy) {
+    scene_set *set = p;
+    int st = PC_OK;
+    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_draw(set->sc[i], copy, set->mode[i]);
+    return st;
+}
+
+static void set_drop(void *p) {
+    scene_set *set = p;
+    for (size_t i = 0; i < set->n; i++) pc_scene_free(set->sc[i]);
+    free(set->sc);
+    free(set->mode);
+    free(set->map);
+    free(set);
+}
+
+void pcl_set_hidden_mode(lua_State *L, int mode) {
+    lua_pushinteger(L, mode);
+    lua_setfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
+}
+
+pc_scene *pcl_scene(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
+    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1;
+    lua_pop(L, 1);
+    pc_map *f = pcl_camera(L);
+    if (mode < 0 || !f || f->nin != 3) return NULL;
+    pc_map scr;
+    pcl_screen_map(L, f, &scr);
+    pc_canvas *c = pcl_active_canvas(L);
+    scene_set *set = c->attach_resolve == set_resolve ? c->attach : NULL;
+    if (!set) {
+        if (c->attach) return NULL;   /* something else is attached: draw as usual */
+        if (!(set = calloc(1, sizeof *set))) pcl_error(L, "%s: out of memory", pcl_fname(L));
+        c->attach = set;
+        c->attach_resolve = set_resolve;
+        c->attach_drop = set_drop;
+    }
+    size_t n = set->n;
+    if (n && set->mode[n - 1] == mode && !memcmp(&set->map[n - 1], &scr, sizeof scr)) return set->sc[n - 1];
+    if (n == set->cap) {
+        size_t cap = set->cap ? 2 * set->cap : 4;
+        pc_scene **a = realloc(set->sc, cap * sizeof *a);
+        if (a) set->sc = a;
+        int *m = realloc(set->mode, cap * sizeof *m);
+        if (m) set->mode = m;
+        pc_map *mp = realloc(set->map, cap * sizeof *mp);
+        if (mp) set->map = mp;
+        if (!a || !m || !mp) pcl_error(L, "%s: out of memory", pcl_fname(L));
+        set->cap = cap;
+    }
+    int st;
+    pc_scene *sc = pc_scene_new(&scr, &st);
+    if (!sc) return pcl_raise_status(L, pcl_fname(L), st), NULL;
+    set->sc[n] = sc;
+    set->mode[n] = mode;
+    set->map[n] = scr;
+    set->n++;
+    return sc;
+}
+
+int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (size_t)(n + 1), 0);
+    uint8_t *brk = lua_newuserdatauv(L, (size_t)n + 1, 0);
+    size_t m = 0;
+    int gap = 1;
+    for (int k = 0; k <= n; k++) {
+        double x[PC_MAXDIM];
+        if (pc_curve_eval(c, c->t0 + (c->t1 - c->t0) * k / n, x) != PC_OK) {
+            gap = 1;   /* a point at infinity: the curve breaks there */
+            continue;
+        }
+        memcpy(xyz + 3 * m, x, 3 * sizeof *x);
+        brk[m++] = (uint8_t)gap;
+        gap = 0;
+    }
+    int st = pc_scene_add_polyline(sc, m, xyz, brk, color, pcl_active_canvas(L)->pen);
+    lua_pop(L, 2);
+    return st;
+}
+
+/* A 3-D point at stack index idx, or 0. */
+static int point3(lua_State *L, int idx, double x[3]) {
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
+    for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
+    return 1;
+}
+
+int pcl_scene_line(lua_State *L) {
+    double ab[6];
+    pc_scene *sc;
+    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
+    pc_canvas *c = pcl_active_canvas(L);
+    int st = pc_scene_add_polyline(sc, 2, ab, NULL, pcl_optcolor(L, 3, c), c->pen);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
+int pcl_scene_label(lua_State *L) {
+    static const char *const dirs[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
+    double x[3];
+    pc_scene *sc;
+    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
+    pc_canvas *c = pcl_active_canvas(L);
+    int t = lua_type(L, 1);
+    if (t != LUA_TSTRING && t != LUA_TNUMBER) return pcl_argerror(L, 1, "text", "a string");
+    const char *s = lua_tostring(L, 1);
+    int anchor = PC_ANCHOR_AUTO;
+    if (!lua_isnoneornil(L, 3)) {
+        const char *d = lua_type(L, 3) == LUA_TSTRING ? lua_tostring(L, 3) : "";
+        for (anchor = 0; dirs[anchor] && strcmp(dirs[anchor], d); anchor++) {}
+        if (!dirs[anchor]) return pcl_argerror(L, 3, "direction", "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"");
+    }
+    int color = pcl_optcolor(L, 4, c);
+    lua_Integer scale = luaL_optinteger(L, 5, 1);
+    if (scale < 1 || scale > 8) return pcl_argerror(L, 5, "scale", "an integer 1..8");
+    int st = pc_scene_add_label(sc, x, s, anchor, (int)scale, color);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
+/* ---- markers, arrows, furniture -------------------------------------------------------------- */
+
+static const char *const STYLES[] = {"dot", "open", "cross", "plus", "square", NULL};
+static const pcl_arg mark_args[] = {A_XY("P"), A_OPTENUM("style", STYLES, 0),
+                                    A_OPTNUM("size", 1, 200, 5, "5"), A_COLOR("colour"), PCL_END};
+static int l_mark(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    pc_scene *sc = a[0].n == 3 ? pcl_scene(L) : NULL;
+    if (sc) {
+        int st = pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, color_of(&a[3]));
+        return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
+    }
+    return check(L, c, pc_mark(c, a[0].v[0], a[0].v[1], a[1].n, a[2].x, color_of(&a[3])));
+}
+
+static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
+static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1),
+                                     A_COLOR("colour"), PCL_END};
+static int l_arrow(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, color_of(&a[3])));
+}
+
+/* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
+static const pcl_arg vector_args[] = {A_XY("A"), {.name = "v", .kind = PCL_VECTOR}, A_COLOR("colour"), PCL_END};
+static int l_vector(lua_State *L) {
+    pcl_val a[3] = {0}, end = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    lua_pushvalue(L, 1);
+    lua_pushvalue(L, 2);
+    lua_arith(L, LUA_OPADD);
+    if (!read_xy(L, lua_gettop(L), NULL, &end)) return pcl_argfail(L, 2, "must have A's dimension");
+    return check(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9, color_of(&a[2])));
+}
+
+static const pcl_arg dim_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("offset", -1e5, 1e5, 20, "20"),
+                                   A_OPTSTR("text"), A_COLOR("colour"), PCL_END};
+static int l_dimension(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    double len = 0;
+    check(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x,
+                             a[3].present ? a[3].s : NULL, color_of(&a[4]), &len));
+    lua_pushnumber(L, len);
+    return 1;
+}
+
+static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
+                                     A_OPTNUM("radius", 2, 1000, 24, "24"), A_COLOR("colour"), PCL_END};
+static int l_angle_mark(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    double th = 0;
+    check(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
+                              a[4].x, a[3].present ? a[3].s : NULL, color_of(&a[5]), &th));
+    lua_pushnumber(L, th);
+    return 1;
+}
+
+static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
+                                     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 5, .dflt = 1, .shown = "1"},
+                                     A_COLOR("colour"), PCL_END};
+static int l_ticks(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, color_of(&a[3])));
+}
+
+static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
+                                     A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
+static int l_hatch(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    int n = a[0].n, d = a[0].dim;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
+    for (int i = 0; i < n; i++) {
+        double h[PC_MAXDIM + 1];
+        memcpy(h, a[0].list + (size_t)i * d, sizeof(double) * (size_t)d);
+        h[d] = 1;
+        if (d == 2) xy[2 * i] = h[0], xy[2 * i + 1] = h[1];
+        else if (pcl_project(L, d, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
+            return pcl_argfail(L, 1, "[%d] must be " XY_TEXT ", got a %d-D point", i + 1, d);
+    }
+    size_t lines;
+    return check(L, c, pc_hatch(c, (size_t)n, xy, a[1].x, a[2].x, color_of(&a[3]), &lines));
+}
+
+static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
+                                      A_COLOR("colour"), PCL_END};
+static int l_centre_line(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, color_of(&a[3])));
+}
+
+/* ---- framing, captions, device-unit text -------------------------------------------------- */
+
+static const char *const ASPECTS[] = {"equal", "fill", NULL};
+static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTENUM("aspect", ASPECTS, 0), PCL_END};
+static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
+static int l_fit(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    return check(L, c, pc_fit(c, a[1].present ? a[1].x : 10, a[2].n));
+}
+
+static const char *const EDGES[] = {"bottom", "top", NULL};
+static const pcl_arg caption_args[] = {{.name = "text", .kind = PCL_STRING}, A_OPTENUM("where", EDGES, 0),
+                                       A_COLOR("colour"), PCL_END};
+static int l_caption(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    int top = a[1].n;
+    pc_rect v = c->view;
+    int vs = c->view_screen;   /* the whole screen, not the VIEW: a caption is the figure's */
+    c->view = (pc_rect){0, 0, c->width - 1, c->height - 1};
+    c->view_screen = 1;
+    double wx, wy;
+    pc_screen_to_world(c, c->width / 2.0, top ? 0 : c->height - 1, &wx, &wy);
+    int st = pc_text(c, wx, wy, a[0].s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color_of(&a[2]));
+    c->view = v;
+    c->view_screen = vs;
+    return check(L, c, st);
+}
+
+/* text{x =, y =, text =, units =, color =, scale =}; the positional form goes to the drawing
+ * binding's text (kept as this closure's upvalue). */
+static const char *const UNITS[] = {"world", "device", NULL};
+static const pcl_arg text_keys[] = {{.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
+                                    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, A_OPTENUM("units", UNITS, 0),
+                                    A_COLOR("color"), {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}, PCL_END};
+static const pcl_arg text_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = text_keys}, PCL_END};
+static int l_text(lua_State *L) {
+    if (!lua_istable(L, 1)) {
+        lua_pushvalue(L, PCL_UPVALUE(1));
+        lua_insert(L, 1);
+        lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+        return lua_gettop(L);
+    }
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    double x = a[1].x, y = a[2].x;
+    if (a[4].n == 1) pc_screen_to_world(c, x, y, &x, &y);   /* device pixels, whatever the window */
+    return check(L, c, pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5])));
+}
+
+/* ---- axes, graphs, legends ------------------------------------------------------------------ */
+
+static const pcl_arg axes_keys[] = {A_NUMBERS("x", 2, 2), A_NUMBERS("y", 2, 2), A_XY("origin"),
+                                    {.name = "ticks", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = 100, .dflt = 5},
+                                    {.name = "labels", .kind = PCL_BOOLEAN, .dflt = 1}, {.name = "arrows", .kind = PCL_BOOLEAN, .dflt = 1},
+                                    {.name = "grid", .kind = PCL_BOOLEAN}, A_COLOR("color"), A_COLOR("grid_color"), PCL_END};
+static const pcl_arg axes_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = axes_keys}, PCL_END};
+static int l_axes(lua_State *L) {
+    double xr[2], yr[2];
+    pcl_val a[10] = {{0}, {.list = xr, .cap = 2}, {.list = yr, .cap = 2}};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    pc_axes_spec s = {0, 0, 0, 0, 0, 0, 5, 1, 1, 0, -1};
+    double wx0, wy0, wx1, wy1;   /* default: the window's (or the screen's) extent */
+    pc_screen_to_world(c, c->view.x0, c->view.y1, &wx0, &wy0);
+    pc_screen_to_world(c, c->view.x1, c->view.y0, &wx1, &wy1);
+    s.x0 = a[1].present ? xr[0] : fmin(wx0, wx1);
+    s.x1 = a[1].present ? xr[1] : fmax(wx0, wx1);
+    s.y0 = a[2].present ? yr[0] : fmin(wy0, wy1);
+    s.y1 = a[2].present ? yr[1] : fmax(wy0, wy1);
+    if (!(s.x0 < s.x1)) return pcl_keyfail(L, "x", "must be {lo, hi} with lo < hi");
+    if (!(s.y0 < s.y1)) return pcl_keyfail(L, "y", "must be {lo, hi} with lo < hi");
+    if (a[3].present) s.ox = a[3].v[0], s.oy = a[3].v[1];
+    s.ticks = a[4].present ? (int)a[4].x : 5;
+    s.labels = a[5].present ? (int)a[5].x : 1;
+    s.arrows = a[6].present ? (int)a[6].x : 1;
+    s.grid = a[7].present && a[7].x;
+    s.grid_color = color_of(&a[9]);
+    int n = 0;
+    check(L, c, pc_axes(c, &s, color_of(&a[8]), &n));
+    lua_pushinteger(L, n);
+    return 1;
+}
+
+static const pcl_arg graph_keys[] = {A_COLOR("color"), {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e6, .dflt = 400}, PCL_END};
+static const pcl_arg graph_args[] = {A_FUNCTION("f"), A_NUM("a"), A_NUM("b"), A_OPTIONS("options", graph_keys), PCL_END};
+static int l_graph(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    double x0 = a[1].x, x1 = a[2].x;
+    if (!(x0 < x1)) return pcl_argfail(L, 3, "must be greater than a");
+    lua_Integer n = a[5].present ? (lua_Integer)a[5].x : 400;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
+    uint8_t *verbs = lua_newuserdatauv(L, (size_t)n + 1, 0);
+    size_t m = 0, start = 0;
+    for (lua_Integer k = 0; k <= n; k++) {
+        double x = x0 + (x1 - x0) * (double)k / (double)n;
+        lua_pushvalue(L, a[0].idx);
+        lua_pushnumber(L, x);
+        lua_call(L, 1, 1);
+        int isnum;
+        double y = lua_tonumberx(L, -1, &isnum);
+        lua_pop(L, 1);
+        if (!isnum || !isfinite(y)) {   /* a gap: what came before is one piece */
+            if (m - start == 1) m = start;   /* a lone point draws nothing */
+            start = m;
+            continue;
+        }
+        xy[2 * m] = x;
+        xy[2 * m + 1] = y;
+        verbs[m] = m == start ? PC_PATH_MOVE : PC_PATH_LINE;
+        m++;
+    }
+    if (m - start == 1) m = start;
+    if (m) check(L, c, pc_path(c, m, xy, verbs, m, 0, color_of(&a[4])));
+    return 0;
+}
+
+static const char *const CORNERS[] = {"ne", "nw", "se", "sw", NULL};
+static const pcl_arg legend_args[] = {{.name = "entries", .kind = PCL_ANY, .expect = "a list of {name, colour}"},
+                                      A_OPTENUM("corner", CORNERS, 0), A_COLOR("colour"), PCL_END};
+static int l_legend(lua_State *L) {
+    static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = pcl_active_canvas(L);
+    int t = a[0].idx;
+    lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : 0;
+    if (n < 1 || n > 100) return pcl_argfail(L, 1, "must be a list of 1 to 100 {name, colour}, got %s", pcl_shown(L, t));
+    luaL_checkstack(L, 2 * (int)n + 8, "too many entries");
+    const char **names = lua_newuserdatauv(L, sizeof *names * (size_t)n, 0);
+    int *colors = lua_newuserdatauv(L, sizeof *colors * (size_t)n, 0);
+    for (lua_Integer i = 1; i <= n; i++) {   /* each name stays on the stack while it is used */
+        pcl_val col = {0};
+        if (lua_geti(L, t, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
+            return pcl_argfail(L, 1, "[%d] must be {name, colour}", (int)i);
+        names[i - 1] = lua_tostring(L, -1);
+        lua_geti(L, -2, 2);
+        if (!lua_isnil(L, -1) && !read_color(L, lua_gettop(L), NULL, &col))
+            return pcl_argfail(L, 1, "[%d] must be {name, colour}: its colour must be a colour number or \"#rrggbb\"", (int)i);
+        colors[i - 1] = lua_isnil(L, -1) ? -1 : (int)col.x;
+        lua_pop(L, 1);
+    }
+    return check(L, c, pc_legend(c, (int)n, names, colors, corner_of[a[1].n], color_of(&a[2])));
+}
+
+/* ---- map.view ------------------------------------------------------------------------------ */
+
+static const pcl_arg view_keys[] = {A_POINT("from", 3), A_POINT("to", 3), A_VECTOR("up", 3), {.name = "perspective", .kind = PCL_BOOLEAN},
+                                    A_NUM("azimuth"), {.name = "elevation", .kind = PCL_NUMBER, .dflt = 30},
+                                    {.name = "distance", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 10}, PCL_END};
+static const pcl_arg view_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = view_keys}, PCL_END};
+static int l_view(lua_State *L) {
+    pcl_val a[8] = {0};
+    PCL_READ(L, a);
+    static const double origin[3] = {0, 0, 0};
+    const double *to = a[2].present ? a[2].v : origin;
+    int persp = a[4].present && a[4].x, st;
+    pc_map f;
+    if (a[1].present) {
+        if (!a[2].present) return pcl_keyfail(L, "to", "must be given with from (the point looked at)");
+        st = pc_map_view(&f, a[1].v, to, a[3].present ? a[3].v : NULL, persp);
+    } else {
+        if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
+        st = pc_map_view_azel(&f, to, a[5].x, a[6].present ? a[6].x : 30, a[7].present ? a[7].x : 10, persp);
+    }
+    switch (st) {
+    case PC_OK: break;
+    case PC_ECOINCIDENT: return pcl_fail(L, "from and to coincide: no line of sight");
+    case PC_EZERO: return pcl_keyfail(L, "up", "is the zero vector");
+    case PC_ECOLLINEAR: return pcl_keyfail(L, "up", "is along the line of sight; give another up");
+    default: return pcl_fail(L, "%s", pc_strerror(st));
+    }
+    *pcl_newmap(L) = f;
+    return 1;
+}
+
+/* ---- registration ---------------------------------------------------------------------------- */
+
+static const pcl_fn fns[] = {
+    PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}",
+           "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
+    PCL_FN("mark", l_mark, mark_args, NULL, "A marker on a point, size pixels across (default a filled dot of 5); a 3-D point joins the camera's scene."),
+    PCL_FN("arrow", l_arrow, arrow_args, NULL, "The segment AB with a filled arrow head (9 px) at B, at A or at both."),
+    PCL_FN("vector", l_vector, vector_args, NULL, "The vector v drawn as an arrow from the point A to A + v."),
+    PCL_FN("dimension", l_dimension, dim_args, "length",
+           "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
+    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle",
+           "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
+    PCL_FN("ticks", l_ticks, ticks_args, NULL, "n (1..5) equal-length ticks across the middle of segment AB."),
+    PCL_FN("hatch", l_hatch, hatch_args, NULL,
+           "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
+    PCL_FN("centre_line", l_centre_line, centre_args, NULL,
+           "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
+    PCL_FN("fit", l_fit, fit_args, NULL,
+           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells included, at equal units on both axes (or each axis filling the view); later drawing follows the new frame."),
+    PCL_FN("caption", l_caption, caption_args, NULL,
+           "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
+    PCL_FN("axes", l_axes, axes_args, "n",
+           "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),
+    PCL_FN("graph", l_graph, graph_args, NULL, "The graph y = f(x) for x from a to b as a path of n pieces, broken where f gives no finite number."),
+    PCL_FN("legend", l_legend, legend_args, NULL, "A legend in a corner of the picture (device units): a line in each entry's colour and its name."),
+    PCL_END};
+static const pcl_fn text_fn[] = {{.name = "text", .fn = l_text, .args = text_args,
+                                  .sig = "text(x, y, string [, colour [, scale]])\ntext{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}",
+                                  .help = "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window."}, PCL_END};
+static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view_args,
+                                  .sig = "map.view{from = P, to = P [, up = V] [, perspective = true]} -> f\nmap.view{azimuth = deg, elevation = deg [, distance = d] [, to = P] [, perspective = true]} -> f",
+                                  .help = "The view with z up (docs/maps.md): from a point towards another, the picture's x to the right as seen and y along up (default the z axis), origin at to; parallel unless perspective."}, PCL_END};
+
+void pcl_open_figure_layout(lua_State *L) {
+    int module = lua_gettop(L);
+    pcl_register(L, module, fns, 0);
+    lua_getfield(L, module, "text");   /* the positional text(x, y, s) behind text{...} */
+    pcl_register(L, module, text_fn, 1);
+    if (lua_getfield(L, module, "map") == LUA_TTABLE) pcl_register(L, lua_gettop(L), view_fn, 0);
+    lua_settop(L, module);
+}

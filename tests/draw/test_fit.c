@@ -1,0 +1,114 @@
+/* Framing what is drawn (layout.h: pc_fit): every point and label cell ends inside the view
+ * with its margin, at equal units on both axes (a circle stays round, lengths keep their
+ * ratios), as large as that allows and centred; later drawing in the old coordinates lands in
+ * the new frame; PC_FIT_FILL fills both axes. */
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include "canvas.h"
+#include "layout.h"
+
+static const pc_op *first_of(const pc_canvas *c, int kind) {
+    for (size_t i = 0; i < c->nops; i++)
+        if (c->ops[i].kind == kind) return &c->ops[i];
+    return NULL;
+}
+
+static void test_fit_equal(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    /* a small figure in the corner: a 40 x 20 segment pair, a circle, a label at its right */
+    pc_line(c, 10, 10, 50, 10, 15);
+    pc_line(c, 10, 10, 10, 30, 15);
+    pc_circle(c, 30, 20, 5, 14, NAN, NAN, NAN);
+    pc_text(c, 50, 10, "B", PC_ANCHOR_E, 3, 1, 15);   /* its cell: 53..60, 2..17 */
+    assert_int_equal(pc_fit(c, 20, PC_FIT_EQUAL), PC_OK);
+    pc_box2 b;
+    assert_int_equal(pc_drawn_extent(c, &b), PC_OK);
+    assert_true(b.x0 >= 20 - 1e-9 && b.y0 >= 20 - 1e-9 && b.x1 <= 619 + 1e-9 && b.y1 <= 459 + 1e-9);
+    /* as large as it can be: one axis fills the view from margin to margin */
+    int tight_x = fabs(b.x0 - 20) < 1e-6 && fabs(b.x1 - 619) < 1e-6;
+    int tight_y = fabs(b.y0 - 20) < 1e-6 && fabs(b.y1 - 459) < 1e-6;
+    assert_true(tight_x || tight_y);
+    /* equal units: the segments keep their 2:1 ratio, the circle its roundness */
+    const pc_op *h = &c->ops[0], *v = &c->ops[1];
+    double lh = hypot(h->x2 - h->x1, h->y2 - h->y1), lv = hypot(v->x2 - v->x1, v->y2 - v->y1);
+    assert_true(fabs(lh / lv - 2) < 1e-12);
+    const pc_op *arc = first_of(c, PC_OP_ARC);
+    assert_non_null(arc);
+    assert_true(fabs(arc->rx - arc->ry) < 1e-9);
+    assert_true(fabs(arc->rx / lh - 5.0 / 40) < 1e-12);
+    /* the label kept its 3 px gap from its point, its cell unscaled */
+    const pc_op *t = first_of(c, PC_OP_TEXT);
+    assert_true(fabs(t->x1 - nearbyint(t->x2) - 3) < 1e-9);
+    assert_int_equal(t->flags, PC_ANCHOR_E);
+    /* the raster follows: the far end of the horizontal segment is lit */
+    assert_int_equal(c->pixels[(long)nearbyint(h->y2) * 640 + (long)nearbyint(h->x2)], 15);
+    /* later drawing in the old coordinates lands on the new frame */
+    size_t n = c->nops;
+    pc_line(c, 10, 10, 50, 10, 12);
+    assert_true(fabs(c->ops[n].x1 - h->x1) < 1e-9 && fabs(c->ops[n].y2 - h->y2) < 1e-9);
+    pc_canvas_free(c);
+}
+
+static void test_fit_fill_and_window(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    pc_window(c, 0, 0, 100, 100, 0);   /* world y up */
+    pc_line(c, 10, 10, 20, 10, 15);
+    pc_line(c, 10, 10, 10, 30, 15);
+    assert_int_equal(pc_fit(c, 0, PC_FIT_FILL), PC_OK);
+    pc_box2 b;
+    assert_int_equal(pc_drawn_extent(c, &b), PC_OK);
+    assert_true(fabs(b.x0) < 1e-9 && fabs(b.x1 - 639) < 1e-9);
+    assert_true(fabs(b.y0) < 1e-9 && fabs(b.y1 - 479) < 1e-9);
+    /* the world point (20, 10) is now the bottom-right corner, (10, 30) the top-left */
+    double sx, sy;
+    pc_world_to_screen(c, 20, 10, &sx, &sy);
+    assert_true(fabs(sx - 639) < 1e-9 && fabs(sy - 479) < 1e-9);
+    pc_world_to_screen(c, 10, 30, &sx, &sy);
+    assert_true(fabs(sx) < 1e-9 && fabs(sy) < 1e-9);
+    /* errors and nothing drawn */
+    assert_int_equal(pc_fit(c, -1, PC_FIT_EQUAL), PC_EARG);
+    assert_string_equal(c->error, "fit: margin must be 0 up to half the view, got -1 pixels");
+    pc_canvas *e = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_fit(e, 10, PC_FIT_EQUAL), PC_OK);
+    assert_int_equal(e->has_window, 0);
+    pc_canvas_free(e);
+    pc_canvas_free(c);
+}
+
+/* A crowd of automatic labels after fit: still placed inside, no overlaps. */
+static void test_fit_then_labels(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    for (int i = 0; i < 5; i++) {
+        pc_pset(c, 100 + 3 * i, 100, 15);
+        pc_text(c, 100 + 3 * i, 100, "Pt", PC_ANCHOR_AUTO, 0, 1, 15);
+    }
+    assert_int_equal(pc_fit(c, 30, PC_FIT_EQUAL), PC_OK);
+    pc_box2 *b;
+    size_t n;
+    assert_int_equal(pc_layout_labels(c, &b, NULL, &n), PC_OK);
+    assert_int_equal(n, 5);
+    for (size_t i = 0; i < n; i++) {
+        assert_true(b[i].x0 >= 0 && b[i].y0 >= 0 && b[i].x1 <= 640 && b[i].y1 <= 480);
+        for (size_t j = i + 1; j < n; j++) assert_false(pc_box2_overlap(b[i], b[j]));
+    }
+    free(b);
+    pc_canvas_free(c);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fit_equal),
+        cmocka_unit_test(test_fit_fill_and_window),
+        cmocka_unit_test(test_fit_then_labels),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,91 @@
+-- The 3-D scene through Lua: with camera(f, {hidden = ...}) a line behind a sphere is left out
+-- (or dashed) in the written picture whatever the order of the calls; map.view with z up;
+-- one iso family; the silhouette of a sphere is its outline circle.
+local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
+local pi, cos, sin = math.pi, math.cos, math.sin
+
+local function ppm(path)
+  local f = assert(io.open(path, "rb"))
+  local data = f:read("a")
+  f:close()
+  local w, header = data:match("^P6%s+(%d+)%s+%d+%s+255%s()")
+  return function(x, y)
+    local o = header + (y * tonumber(w) + x) * 3
+    return data:byte(o) * 65536 + data:byte(o + 1) * 256 + data:byte(o + 2)
+  end
+end
+
+local sph = surface(function(u, v) return P(cos(u) * cos(v), sin(u) * cos(v), sin(v)) end,
+  0, 2 * pi, -pi / 2, pi / 2)
+-- seen from +z, y up: 100 px per unit about the centre of the screen
+local view = map.view { from = P(0, 0, 10), to = P(0, 0, 0), up = V(0, 1, 0) }
+local f = map.translate(V(320, 240)) * map.scale({ 100, -100 }) * view
+check.eq(tostring(f(P(1, 0, 0))), "P(420, 240)", "x to the right")
+check.eq(tostring(f(P(0, 1, 5))), "P(320, 140)", "up is up, depth does not show")
+
+local function row(order, mode)
+  screen(12)
+  camera(f, { hidden = mode })
+  if order == 1 then line(P(-2, 0, -1.5), P(2, 0, -1.5), 14) end
+  sph:wireframe { nu = 0, nv = 0 }   -- no lines: the sphere only hides
+  if order == 2 then line(P(-2, 0, -1.5), P(2, 0, -1.5), 14) end
+  local out = os.tmpname() .. ".ppm"
+  save(out)
+  local px = ppm(out)
+  os.remove(out)
+  local got = {}
+  for x = 120, 520, 10 do got[#got + 1] = px(x, 240) ~= 0 and "#" or "." end
+  return table.concat(got)
+end
+local want = string.rep("#", 11) .. string.rep(".", 19) .. string.rep("#", 11)   -- |x - 320| < 100 hidden
+check.eq(row(1, "hide"), want, "drawn before the sphere: the hidden part is left out")
+check.eq(row(2, "hide"), want, "drawn after it: the same")
+check.eq(row(1, "show"), string.rep("#", 41), "show: everything")
+local dashed = row(1, "dashed")
+check.truthy(dashed:sub(12, 30):find("#") and dashed:sub(12, 30):find("%."), "dashed: some of the hidden part")
+-- labels of 3-D points: the one behind the sphere is left out, the front one placed
+screen(12)
+camera(f, { hidden = "hide" })
+label("N", P(0, 0.5, 0.87))
+label("S", P(0, 0, -1))
+sph:wireframe { nu = 0, nv = 0 }
+local texts = {}
+for _, l in ipairs(placed_labels()) do texts[#texts + 1] = l.text .. (l.auto and "*" or "") end
+check.eq(table.concat(texts, " "), "N*", "only the seen label, placed automatically")
+camera(nil)
+
+-- one iso family: nu = 4, nv = 0 draws the meridians (seen from +z: the two diameters) and no
+-- parallel; nu = 0, nv = 4 the parallels (circles of radius 0, 70.7, 100 px) and no meridian
+screen(12)
+camera(f)
+sph:wireframe { nu = 4, nv = 0, color = 10 }
+check.eq(point(320, 190), 10, "the meridian u = pi/2")
+check.eq(point(370, 190), 0, "no parallel v = pi/4")
+cls()
+sph:wireframe { nu = 0, nv = 4, color = 10 }
+check.eq(point(320, 190), 0, "no meridian")
+check.eq(point(370, 190), 10, "the parallel v = pi/4, radius 70.7 px")
+-- the silhouette of the sphere seen from +z: the circle of radius 100 px
+cls()
+sph:wireframe { nu = 0, nv = 0, silhouette = true, color = 12 }
+local on, off = 0, 0
+for k = 0, 71 do
+  local a = 2 * pi * k / 72
+  for r = 97, 103, .25 do
+    if point(math.floor(320 + r * cos(a) + .5), math.floor(240 + r * sin(a) + .5)) == 12 then on = on + 1 break end
+  end
+end
+check.eq(on, 72, "the outline circle all round")
+check.eq(point(320, 240), 0, "and nothing inside")
+-- the boundary alone: a unit square patch seen from +z shows its four edges, nothing inside
+cls()
+local sq = surface(function(u, v) return P(u, v, 0) end, 0, 1, 0, 1)
+sq:wireframe { nu = 0, nv = 0, boundary = true, color = 13 }
+check.eq(point(370, 240) .. point(420, 190) .. point(370, 140) .. point(320, 190) .. point(370, 190),
+  "131313130", "the four edges of the square (320..420, 140..240 px) and not its middle")
+check.err(function() camera(f, { hidden = "maybe" }) end,
+  'camera: argument #2 (hidden) must be "dashed", "hide" or "show", got "maybe"', "bad mode")
+check.err(function() map.view { from = P(1, 1, 1), to = P(1, 1, 1) } end,
+  "map.view: from and to coincide", "no line of sight")
+check.err(function() sph:wireframe { nu = -1 } end, "s:wireframe: option 'nu' must be an integer from 0 to 1000, got -1", "count")
+print(arg[0] .. ": " .. check.count .. " checks passed")
