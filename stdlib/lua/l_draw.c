@@ -277,8 +277,8 @@ static int l_color(lua_State *L) {
 }
 
 static const pcl_arg palette_args[] = {
-    {.name = "attribute", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_attr},
-    {.name = "colour", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_rgb,
+    {.name = "attribute", .kind = PCL_ANY, .read = read_attr, .expect = "an attribute of the screen"},
+    {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
      .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"},
     PCL_END};
 static int l_palette(lua_State *L) {
@@ -286,8 +286,6 @@ static int l_palette(lua_State *L) {
     if (lua_isnone(L, 1)) return check(L, c, pc_palette_reset(c));
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    if (!a[0].present || !a[1].present)
-        return pcl_argfail(L, a[0].present ? 2 : 1, "must be given (or no argument: the default palette)");
     pc_rgb rgb = {(uint8_t)a[1].v[0], (uint8_t)a[1].v[1], (uint8_t)a[1].v[2]};
     /* the palette is the video card's: every page shows it */
     canvas_box *b = box_at(L, PCL_UPVALUE(1));
@@ -642,69 +640,27 @@ static int canvas_gc(lua_State *L) {
 }
 
 static const pcl_fn fns[] = {
-    {.name = "screen", .fn = l_screen, .args = screen_args,
-     .sig = "screen(12) | screen(13) | screen(1|2|7|9)\nscreen{width=W, height=H [, colors=2|4|16|256]}",
-     .help = "A new blank canvas: 640x480x16 (12), 320x200x256 (13), QBasic's other modes (mode_info) or any size."},
-    {.name = "cls", .fn = l_cls, .args = NULL,
-     .sig = "cls()",
-     .help = "Clear the view to the background colour."},
-    {.name = "color", .fn = l_color, .args = color_args,
-     .sig = "color(fg [, bg])\ncolor() -> fg, bg",
-     .help = "Set the drawing colour (and the background used by cls), or read both."},
-    {.name = "palette", .fn = l_palette, .args = palette_args,
-     .sig = "palette(attr, colour)\npalette()",
-     .help = "Change what a colour number looks like (65536*b + 256*g + r in 0..63, \"#rrggbb\" or {r, g, b}); no argument restores the default."},
-    {.name = "pset", .fn = l_pset, .args = dot_args,
-     .sig = "pset(x, y [, c]) | pset(A [, c])",
-     .help = "Plot one pixel in colour c (default: the drawing colour)."},
-    {.name = "preset", .fn = l_preset, .args = dot_args,
-     .sig = "preset(x, y [, c]) | preset(A [, c])",
-     .help = "Plot one pixel in colour c (default: the background: erases)."},
-    {.name = "line", .fn = l_line, .args = line_args,
-     .sig = "line(x1, y1, x2, y2 [, c [, \"b\"|\"bf\"]]) | line(A, B [, c [, style]])",
-     .help = "A segment, or with \"b\" the outline of a box, with \"bf\" a filled box."},
-    {.name = "line_to", .fn = l_line_to, .args = line_to_args,
-     .sig = "line_to(x, y [, c [, \"b\"|\"bf\"]]) | line_to(B [, c [, style]])",
-     .help = "A segment from the last point referenced to (x, y): QBasic's LINE -(x, y)."},
-    {.name = "circle", .fn = l_circle, .args = circle_args,
-     .sig = "circle(x, y, r [, c [, start, end [, aspect]]]) | circle(A, r, ...)",
-     .help = "A circle, an ellipse (aspect) or an arc (angles in radians; a negative angle also draws that radius)."},
-    {.name = "paint", .fn = l_paint, .args = paint_args,
-     .sig = "paint(x, y [, c [, border]]) | paint(A [, c [, border]])",
-     .help = "Flood-fill from (x, y) up to pixels of the border colour (default: the paint colour)."},
-    {.name = "point", .fn = l_point, .args = point_args,
-     .sig = "point(x, y) -> colour | point(A) -> colour",
-     .help = "The colour number at (x, y), or -1 outside the view."},
-    {.name = "window", .fn = l_window, .args = window_args,
-     .sig = "window(x1, y1, x2, y2 [, \"screen\"])\nwindow()",
-     .help = "World coordinates: (x1, y1)-(x2, y2) fill the view, y up (y down with \"screen\"); no argument: pixels again."},
-    {.name = "view", .fn = l_view, .args = view_args,
-     .sig = "view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])\nview()",
-     .help = "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it."},
-    {.name = "save", .fn = l_save, .args = save_args,
-     .sig = "save(path [, \"paper\"|\"screen\"])",
-     .help = "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look."},
-    {.name = "size", .fn = l_size, .args = NULL,
-     .sig = "size() -> width, height, colours",
-     .help = "The size of the canvas and its number of colours."},
-    {.name = "last_point", .fn = l_last_point, .args = NULL,
-     .sig = "last_point() -> x, y",
-     .help = "The graphics cursor: the last point referenced, in world coordinates."},
-    {.name = "pen", .fn = l_pen, .args = pen_args,
-     .sig = "pen{width = w, dash = {on, off, ...}}\npen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}\npen \"main\"|\"thin\"|\"hidden\"|\"centre\"\npen()",
-     .help = "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default."},
-    {.name = "path", .fn = l_path, .args = path_args,
-     .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])",
-     .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment."},
-    {.name = "fill", .fn = l_fill, .args = fill_args,
-     .sig = "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
-     .help = "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG."},
-    {.name = "label", .fn = l_label, .args = label_args,
-     .sig = "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
-     .help = "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
-    {.name = "text", .fn = l_text, .args = text_args,
-     .sig = "text(x, y, string [, colour [, scale]])",
-     .help = "Text with the top-left corner of its first 8x16 cell at (x, y)."},
+    {.name = "screen", .fn = l_screen, .args = screen_args, .sig = "screen(12) | screen(13) | screen(1|2|7|9)\nscreen{width=W, height=H [, colors=2|4|16|256]}", .help = "A new blank canvas: 640x480x16 (12), 320x200x256 (13), QBasic's other modes (mode_info) or any size."},
+    {.name = "cls", .fn = l_cls, .args = NULL, .sig = "cls()", .help = "Clear the view to the background colour."},
+    {.name = "color", .fn = l_color, .args = color_args, .sig = "color(fg [, bg])\ncolor() -> fg, bg", .help = "Set the drawing colour (and the background used by cls), or read both."},
+    {.name = "palette", .fn = l_palette, .args = palette_args, .sig = "palette(attr, colour)\npalette()", .help = "Change what a colour number looks like (65536*b + 256*g + r in 0..63, \"#rrggbb\" or {r, g, b}); no argument restores the default."},
+    {.name = "pset", .fn = l_pset, .args = dot_args, .sig = "pset(x, y [, c]) | pset(A [, c])", .help = "Plot one pixel in colour c (default: the drawing colour)."},
+    {.name = "preset", .fn = l_preset, .args = dot_args, .sig = "preset(x, y [, c]) | preset(A [, c])", .help = "Plot one pixel in colour c (default: the background: erases)."},
+    {.name = "line", .fn = l_line, .args = line_args, .sig = "line(x1, y1, x2, y2 [, c [, \"b\"|\"bf\"]]) | line(A, B [, c [, style]])", .help = "A segment, or with \"b\" the outline of a box, with \"bf\" a filled box."},
+    {.name = "line_to", .fn = l_line_to, .args = line_to_args, .sig = "line_to(x, y [, c [, \"b\"|\"bf\"]]) | line_to(B [, c [, style]])", .help = "A segment from the last point referenced to (x, y): QBasic's LINE -(x, y)."},
+    {.name = "circle", .fn = l_circle, .args = circle_args, .sig = "circle(x, y, r [, c [, start, end [, aspect]]]) | circle(A, r, ...)", .help = "A circle, an ellipse (aspect) or an arc (angles in radians; a negative angle also draws that radius)."},
+    {.name = "paint", .fn = l_paint, .args = paint_args, .sig = "paint(x, y [, c [, border]]) | paint(A [, c [, border]])", .help = "Flood-fill from (x, y) up to pixels of the border colour (default: the paint colour)."},
+    {.name = "point", .fn = l_point, .args = point_args, .sig = "point(x, y) -> colour | point(A) -> colour", .help = "The colour number at (x, y), or -1 outside the view."},
+    {.name = "window", .fn = l_window, .args = window_args, .sig = "window(x1, y1, x2, y2 [, \"screen\"])\nwindow()", .help = "World coordinates: (x1, y1)-(x2, y2) fill the view, y up (y down with \"screen\"); no argument: pixels again."},
+    {.name = "view", .fn = l_view, .args = view_args, .sig = "view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])\nview()", .help = "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it."},
+    {.name = "save", .fn = l_save, .args = save_args, .sig = "save(path [, \"paper\"|\"screen\"])", .help = "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look."},
+    {.name = "size", .fn = l_size, .args = NULL, .sig = "size() -> width, height, colours", .help = "The size of the canvas and its number of colours."},
+    {.name = "last_point", .fn = l_last_point, .args = NULL, .sig = "last_point() -> x, y", .help = "The graphics cursor: the last point referenced, in world coordinates."},
+    {.name = "pen", .fn = l_pen, .args = pen_args, .sig = "pen{width = w, dash = {on, off, ...}}\npen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}\npen \"main\"|\"thin\"|\"hidden\"|\"centre\"\npen()", .help = "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default."},
+    {.name = "path", .fn = l_path, .args = path_args, .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])", .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment."},
+    {.name = "fill", .fn = l_fill, .args = fill_args, .sig = "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])", .help = "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG."},
+    {.name = "label", .fn = l_label, .args = label_args, .sig = "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])", .help = "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
+    {.name = "text", .fn = l_text, .args = text_args, .sig = "text(x, y, string [, colour [, scale]])", .help = "Text with the top-left corner of its first 8x16 cell at (x, y)."},
     PCL_END};
 
 void pcl_open_draw(lua_State *L) {
