@@ -2,7 +2,6 @@
  * and the kinds pen() and label() of l_draw.c declare: lengths with units and the label
  * options {font =, size =, halo =}. */
 #include <string.h>
-#include <lauxlib.h>
 #include "pcl_args.h"
 #include "print.h"
 
