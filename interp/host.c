@@ -103,6 +103,21 @@ static int traceback(lua_State *L) {
     return 1;
 }
 
+int host_limit_stopped = 0;
+static char qbasic_chunk[512];   /* the QBasic program being run, for its messages */
+
+/* A limit stopped a QBasic program: the runtime could not name the program's line (no Lua code
+ * runs once the time is up), so the message names the program and says what happened. */
+static void print_qbasic_limit(const char *msg) {
+    const char *what = strstr(msg, "time limit of");
+    if (!what) what = strstr(msg, "memory limit of");
+    size_t n = strcspn(what, "\n");
+    if (!strncmp(msg, qbasic_chunk, strlen(qbasic_chunk)) && msg[strlen(qbasic_chunk)] == ':')
+        fprintf(stderr, "%.*s\n", (int)(what - msg + n), msg);
+    else
+        fprintf(stderr, "%s: %.*s: the program was stopped\n", qbasic_chunk, (int)n, what);
+}
+
 int host_pcall(lua_State *L, int nargs) {
     int base = lua_gettop(L) - nargs;
     lua_pushcfunction(L, traceback);
@@ -118,7 +133,10 @@ int host_pcall(lua_State *L, int nargs) {
     if (status != LUA_OK) {
         sandbox_explain(L, status, where[0] ? where : NULL);
         const char *msg = lua_tostring(L, -1);
-        fprintf(stderr, "%s\n", msg ? msg : "(error object is not a string)");
+        int limit = msg && (strstr(msg, "time limit of") || strstr(msg, "memory limit of"));
+        host_limit_stopped = limit;
+        if (limit && qbasic_chunk[0] && !getenv("PC_QBASIC_TRACEBACK")) print_qbasic_limit(msg);
+        else fprintf(stderr, "%s\n", msg ? msg : "(error object is not a string)");
         lua_pop(L, 1);
         return 0;
     }
@@ -160,6 +178,7 @@ static int translate_qbasic(lua_State *L, const char *path) {
     lua_getfield(L, -1, "translate");
     lua_pushvalue(L, -3);
     lua_pushstring(L, strcmp(path, "-") ? path : "stdin");
+    snprintf(qbasic_chunk, sizeof qbasic_chunk, "%s", strcmp(path, "-") ? path : "stdin");
     if (lua_pcall(L, 2, 2, 0) != LUA_OK || lua_isnil(L, -2)) {
         fprintf(stderr, "%s\n", lua_tostring(L, -1));
         return 0;

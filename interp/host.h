@@ -15,6 +15,10 @@ lua_State *host_new_state(const sandbox_config *cfg);
  * On error prints "MESSAGE\nstack traceback:..." to stderr and returns 0. */
 int host_pcall(lua_State *L, int nargs);
 
+/* Whether the last host_pcall failed on the time or memory limit (a QBasic program so
+ * stopped still writes its picture). */
+extern int host_limit_stopped;
+
 /* Load a script file ("-" for standard input) as a Lua chunk, or, when qbasic is set, translate
  * it from QBasic first.  On failure prints the message and returns 0. */
 int host_load_script(lua_State *L, const char *path, int qbasic);

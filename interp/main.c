@@ -37,6 +37,8 @@ static const char usage_text[] =
     "  --qbasic      treat the script as QBasic whatever its extension\n"
     "  --emit-lua    print the Lua translation of a QBasic program and exit\n"
     "  --input FILE  standard input from FILE: what INPUT, INKEY$... of a QBasic program read\n"
+    "  --for S       a QBasic program that never ends: stop it after S seconds of its virtual\n"
+    "                clock (TIMER, SLEEP, INKEY$ polls) and write the screen as it stands\n"
     "  --safe        safe mode: no processes, C modules, binary chunks or debug library;\n"
     "                files only under the folders given with --allow\n"
     "  --allow DIR   safe mode: the script may read and write files under DIR (repeatable)\n"
@@ -61,6 +63,7 @@ typedef struct {
     int script_index;      /* argv index of the script */
     int interactive, paper, qbasic, emit_lua;
     const char *input;             /* --input FILE: standard input for INPUT/INKEY$ */
+    double run_for;                /* --for S: a QBasic program's virtual seconds */
     sandbox_config sandbox;
     render_param sets[MAX_SETS];   /* --set NAME=VALUE */
     int nsets;
@@ -183,6 +186,10 @@ static int parse(int argc, char **argv, options *o) {
             if (++i == argc) return usage_error("%s", "option --input needs a file name");
             o->input = argv[i];
         }
+        else if (!strcmp(a, "--for")) {
+            int rc = set_limit(&o->run_for, a, i + 1 < argc ? argv[++i] : NULL);
+            if (rc) return rc;
+        }
         else if (!strcmp(a, "--safe")) o->sandbox.safe = 1;
         else if (!strcmp(a, "--allow-hardlinks")) o->sandbox.allow_hardlinks = 1;
         else if (live_option(o, argc, argv, &i, &rc)) {
@@ -226,6 +233,10 @@ static int parse(int argc, char **argv, options *o) {
                 if (rc) return rc;
             } else if (!strcmp(argv[j], "--paper")) o->paper = 1;
             else if (!strcmp(argv[j], "--input") && j + 1 < argc) o->input = argv[++j];
+            else if (!strcmp(argv[j], "--for")) {
+                int rc = set_limit(&o->run_for, "--for", j + 1 < argc ? argv[++j] : NULL);
+                if (rc) return rc;
+            }
             else if (live_option(o, argc, argv, &j, &rc)) {
                 if (rc >= 0) return rc;
             } else argv[out++] = argv[j];
@@ -382,6 +393,16 @@ int main(int argc, char **argv) {
         } else ok = host_pcall(L, 0);
     }
     int ran_something = o.nchunks > 0;
+    if (ok && o.script && o.qbasic && o.run_for > 0) {
+        /* --for: the QBasic runtime's budget of virtual seconds (qbasic_screen.lua) */
+        lua_getglobal(L, "require");
+        lua_pushliteral(L, "qbasic_screen");
+        if (lua_pcall(L, 1, 1, 0) == LUA_OK) {
+            lua_pushnumber(L, o.run_for);
+            lua_setfield(L, -2, "RUN_FOR");
+        }
+        lua_pop(L, 1);
+    }
     if (ok && o.script) {
         ok = host_load_script(L, o.script, o.qbasic);
         if (ok) {
@@ -399,6 +420,13 @@ int main(int argc, char **argv) {
     int repl = ok && (o.interactive || !ran_something);
     if (repl) host_repl(L, o.watch);
     if (ok) ok = write_outputs(L, &o, repl);
+    else if (o.qbasic && host_limit_stopped) {
+        /* a QBasic program that never ends (a screen saver, a bouncing ball) stopped by
+         * --timeout or --max-memory: the screen as it stood is its picture */
+        fprintf(stderr, "%s: writing the screen as it stood when the program was stopped\n",
+                host_progname);
+        write_outputs(L, &o, 0);
+    }
     lua_close(L);
     return ok ? 0 : 1;
 }

@@ -13,7 +13,8 @@
 --   qbasic_scope    where each variable lives, Lua names, SUB parameters copied back
 --   qbasic_control  GOSUB subroutines, the definition chain, GOTO/EXIT targets
 --   qbasic_emit     Lua source (expressions: qbasic_emit_expr, screen: qbasic_emit_gfx)
--- and the runtime the translation calls: qbasic_rt, qbasic_screen.
+-- and the runtime the translation calls: qbasic_rt, qbasic_screen, qbasic_hw (the emulated
+-- VGA ports and memory), qbasic_files.
 local parse = require "qbasic_parse"
 local resolve = require "qbasic_resolve"
 local scope = require "qbasic_scope"

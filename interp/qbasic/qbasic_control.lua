@@ -36,14 +36,14 @@ end
 
 -- Split the top level of a body into plain statements and subroutines (regions); returns the
 -- new top level.  names: label -> Lua function name; proc: the procedure, nil for the module.
-local function split_regions(list, targets, names, proc)
+local function split_regions(list, targets, names, proc, handlers)
   local regions = {}
   local newtop = {}
   local cur = nil
   for _, st in ipairs(list) do
     if st.k == "label" and targets[st.name] then
       local r = { k = "region", label = st.name, lua = names[st.name], line = st.line,
-        body = { st }, proc = proc }
+        body = { st }, proc = proc, handler = handlers and handlers[st.name] ~= nil }
       if cur then cur.falls_into = r end
       cur = r
       regions[#regions + 1] = r
@@ -52,8 +52,17 @@ local function split_regions(list, targets, names, proc)
       if st.k == "return" then
         cur.return_line = st.line
         cur = nil
+      elseif st.k == "resume" and cur.handler then   -- an error handler ends at its RESUME
+        cur.body[#cur.body + 1] = st
+        cur.return_line = st.line
+        cur = nil
+      elseif st.k == "procdef" and st.proc.kind ~= "deffn" then
+        -- the SUBs and FUNCTIONs after the module's code: a subroutine without RETURN ends
+        -- before them
+        cur.open_end, cur.end_line, cur = true, st.line - 1, nil
+        newtop[#newtop + 1] = st
       elseif st.k == "procdef" then
-        qerr("SUB or FUNCTION inside a GOSUB subroutine", st.line)
+        qerr("DEF FN inside a GOSUB subroutine", st.line)
       else
         cur.body[#cur.body + 1] = st
       end
@@ -61,7 +70,9 @@ local function split_regions(list, targets, names, proc)
       newtop[#newtop + 1] = st
     end
   end
-  if cur then qerr("GOSUB subroutine without RETURN", cur.line) end
+  -- a subroutine without RETURN runs to the end of the program, which it ends (QBasic checks
+  -- RETURN only when it runs)
+  if cur then cur.open_end = true end     -- end_line: the program's last line
   -- a GOSUB target inside a block cannot be a subroutine
   for label, line in pairs(targets) do
     local found = false
@@ -86,8 +97,23 @@ local function gosub_regions(prog)
     return names
   end
   local targets = gosub_targets_of(prog.main)
+  -- the error handlers (ON ERROR GOTO label, from anywhere) are subroutines of the module
+  local handlers = {}
+  local function scan(list)
+    walk.stmts(list, function(st)
+      if st.k == "onerror" and st.label then
+        local l = prog.labels[st.label]
+        if not l or l.proc then qerr("Label not defined", st.line) end
+        handlers[st.label] = st.line
+        targets[st.label] = targets[st.label] or st.line
+      end
+    end)
+  end
+  scan(prog.main)
+  for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
+  prog.handlers = handlers
   prog.gosub_lua = names_for(targets, prog.gns, nil)
-  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil)
+  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil, handlers)
   for _, proc in ipairs(prog.procs) do
     if proc.tree then
       local t = gosub_targets_of(proc.tree)
@@ -241,10 +267,34 @@ local function check_jumps(prog)
   end
 end
 
+-- RESUME label: the label must be at the top level of the program (where the statement that
+-- failed can reach it with a goto)
+local function resume_targets(prog)
+  local top = {}
+  for _, st in ipairs(prog.main) do if st.k == "label" then top[st.name] = true end end
+  prog.resume_targets = {}
+  local function scan(list)
+    walk.stmts(list, function(st)
+      if st.k == "resume" and st.label then
+        if not prog.labels[st.label] then qerr("Label not defined", st.line) end
+        if not top[st.label] then
+          qerr("RESUME " .. st.label .. ": pointcalc resumes only at a line at the top level of "
+            .. "the program, not inside a block or subroutine", st.line)
+        end
+        prog.resume_targets[st.label] = true
+        prog.goto_targets[st.label] = true
+      end
+    end)
+  end
+  scan(prog.main)
+  for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
+end
+
 function M.control(prog)
   gosub_regions(prog)
   definition_chain(prog)
   check_jumps(prog)
+  resume_targets(prog)
   -- RESTORE label: the label must exist
   local function restores(list)
     walk.stmts(list, function(st)

@@ -20,466 +20,617 @@ local M = {}
 
 local value, cond, convert, f32, strip = X.value, X.cond, X.convert, X.f32, X.strip
 
-function M.emit(prog, chunkname)
-  local lines = prog.lines
-  local out = {}
-  for i = 1, #lines do out[i] = {} end
-  local function E(line, s) local o = out[line]; o[#o + 1] = s end
-  X.install(prog)
-  G.install(prog, E)
-  local goto_targets, label_lua = prog.goto_targets, control.label_lua
-  local cur_proc = nil      -- procedure being emitted (nil: main)
-  -- the Lua function of a GOSUB target: the module's, or the procedure's own
-  local function gosub_lua(label)
-    return (cur_proc and cur_proc.gosub_lua or prog.gosub_lua)[label]
+local label_lua = control.label_lua
+local emit_block
+
+-- the Lua function of a GOSUB target: the module's, or the procedure's own
+local function gosub_lua(S, label)
+  return (S.cur_proc and S.cur_proc.gosub_lua or S.prog.gosub_lua)[label]
+end
+
+-- a SUB returns the parameters it changes, for the caller to copy back
+local function copy_out(proc)
+  local t = {}
+  for i, p in ipairs(proc.params) do
+    if proc.modified[i] and not p.array then t[#t + 1] = p.lua end
   end
+  return table.concat(t, ", ")
+end
 
-  local cur_region = nil    -- GOSUB subroutine being emitted
-  local loops = {}          -- open loops: {kind=, exit_label=}
-  local exit_count = 0
-  local uses_stop = false
-  local emit_block
+-- what a procedure returns: a SUB its changed parameters, a FUNCTION its result and then those
+local function returned(proc)
+  local out = copy_out(proc)
+  if proc.kind == "sub" then return out end
+  if proc.kind ~= "function" or out == "" then return proc.result end   -- DEF FN: by value
+  return proc.result .. ", " .. out
+end
 
-  -- a SUB returns the parameters it changes, for the caller to copy back
-  local function copy_out(proc)
-    local t = {}
-    for i, p in ipairs(proc.params) do
-      if proc.modified[i] and not p.array then t[#t + 1] = p.lua end
+-- EXIT FOR / EXIT DO: break from the innermost loop, else a goto past the loop's end
+local function exit_loop(S, kind)
+  for i = #S.loops, 1, -1 do
+    local l = S.loops[i]
+    if l.kind == kind then
+      if i == #S.loops then return "break" end
+      if not l.exit_label then S.exit_count = S.exit_count + 1; l.exit_label = "exit_" .. S.exit_count end
+      return "goto " .. l.exit_label
     end
-    return table.concat(t, ", ")
+    if l.kind == "fn" then break end
   end
+  error("internal: EXIT outside its loop")
+end
 
-  -- EXIT FOR / EXIT DO: break from the innermost loop, else a goto past the loop's end
-  local function exit_loop(kind)
-    for i = #loops, 1, -1 do
-      local l = loops[i]
-      if l.kind == kind then
-        if i == #loops then return "break" end
-        if not l.exit_label then exit_count = exit_count + 1; l.exit_label = "exit_" .. exit_count end
-        return "goto " .. l.exit_label
+local function emit_call(S, st)
+  local proc = S.prog.proc_by_name[st.name]
+  local args = X.call_args(proc, st.args)
+  local targets, any = {}, false
+  for i, p in ipairs(proc.params) do
+    if proc.modified[i] and not p.array then
+      local a = st.args[i]
+      if (a.k == "var" and not a.const) or a.k == "index" then
+        targets[#targets + 1] = X.lvalue(a)
+        any = true
+      else
+        targets[#targets + 1] = "_"
       end
-      if l.kind == "fn" then break end
     end
-    error("internal: EXIT outside its loop")
   end
+  while targets[#targets] == "_" do targets[#targets] = nil end
+  if any then
+    S.E(st.line, table.concat(targets, ", ") .. " = " .. proc.lua .. "(" .. args .. ")")
+  else
+    S.E(st.line, proc.lua .. "(" .. args .. ")")
+  end
+end
 
-  local function emit_call(st)
-    local proc = prog.proc_by_name[st.name]
-    local args = X.call_args(proc, st.args)
-    local targets, any = {}, false
-    for i, p in ipairs(proc.params) do
-      if proc.modified[i] and not p.array then
-        local a = st.args[i]
-        if (a.k == "var" and not a.const) or a.k == "index" then
-          targets[#targets + 1] = X.lvalue(a)
-          any = true
+-- the value of a numeric literal, possibly negated, or nil
+local function literal_num(e)
+  e = strip(e)
+  if e.k == "num" then return e.v, e end
+  if e.k == "neg" then
+    local a = strip(e.a)
+    if a.k == "num" then return -a.v, a end
+  end
+end
+-- can this literal be written as is for a value of type ty?
+local function literal_fits(v, lit, ty)
+  if ty == "single" then return f32(v) == v end
+  if ty == "double" then return lit.ty == "double" or f32(v) == v end
+  return v == math.floor(v)
+end
+
+local function emit_for(S, node)
+  local line = node.line
+  local v = node.var
+  local vcode = S.prog.lua_name(v)
+  local ty = v.ty
+  local decl_names, decl_vals = {}, {}
+  -- the limit and the step are evaluated once, rounded to the variable's type
+  local lim_code
+  local lv, llit = literal_num(node.to)
+  if lv and literal_fits(lv, llit, ty) then
+    lim_code = value(node.to, 0)
+  else
+    decl_names[#decl_names + 1] = "_to"
+    decl_vals[#decl_vals + 1] = convert(node.to, ty)
+    lim_code = "_to"
+  end
+  local step, step_sign
+  if not node.step then
+    step, step_sign = "1", 1
+  else
+    local sv, slit = literal_num(node.step)
+    if sv then step_sign = sv >= 0 and 1 or -1 end
+    if sv and literal_fits(sv, slit, ty) then
+      step = value(node.step, 0)
+    else
+      decl_names[#decl_names + 1] = "_step"
+      decl_vals[#decl_vals + 1] = convert(node.step, ty)
+      step = "_step"
+    end
+  end
+  local cond
+  if step_sign == 1 then cond = vcode .. " <= " .. lim_code
+  elseif step_sign == -1 then cond = vcode .. " >= " .. lim_code
+  else cond = "for_test(" .. vcode .. ", " .. lim_code .. ", " .. step .. ")" end
+  local head = ""
+  if #decl_names > 0 then
+    head = "do local " .. table.concat(decl_names, ", ") .. " = " .. table.concat(decl_vals, ", ") .. " "
+  end
+  S.E(line, head .. vcode .. " = " .. convert(node.from, ty) .. " while " .. cond .. " do")
+  S.loops[#S.loops + 1] = { kind = "for" }
+  emit_block(S, node.body)
+  local lp = table.remove(S.loops)
+  local incr
+  local sum = vcode .. " + " .. step
+  if step:sub(1, 1) == "-" then sum = vcode .. " - " .. step:sub(2) end
+  if ty == "single" then incr = vcode .. " = csng(" .. sum .. ")"
+  elseif ty == "double" then incr = vcode .. " = " .. sum
+  elseif ty == "int" then incr = vcode .. " = cint(" .. sum .. ")"
+  else incr = vcode .. " = clng(" .. sum .. ")" end
+  local tail = incr .. " end"
+  if lp.exit_label then
+    tail = tail .. " ::" .. lp.exit_label .. "::"
+  end
+  if #decl_names > 0 then tail = tail .. " end" end
+  S.E(node.next_line, tail)
+end
+
+local function emit_while(S, node)
+  S.E(node.line, "while " .. cond(node.cond) .. " do")
+  S.loops[#S.loops + 1] = { kind = "while" }
+  emit_block(S, node.body)
+  table.remove(S.loops)
+  S.E(node.end_line, "end")
+end
+
+local function emit_do(S, node)
+  local top, bottom = node.cond_top, node.cond_bottom
+  if bottom then
+    S.E(node.line, "repeat")
+  elseif top then
+    local c = top.kind == "while" and cond(top.e) or ("not " .. cond(top.e, 12))
+    S.E(node.line, "while " .. c .. " do")
+  else
+    S.E(node.line, "while true do")
+  end
+  S.loops[#S.loops + 1] = { kind = "do" }
+  emit_block(S, node.body)
+  local lp = table.remove(S.loops)
+  local tail
+  if bottom then
+    tail = "until " .. (bottom.kind == "until" and cond(bottom.e) or ("not " .. cond(bottom.e, 12)))
+  else
+    tail = "end"
+  end
+  if lp.exit_label then
+    tail = tail .. " ::" .. lp.exit_label .. "::"
+  end
+  S.E(node.end_line, tail)
+end
+
+local function emit_ifb(S, node)
+  for i, br in ipairs(node.branches) do
+    S.E(br.line, (i == 1 and "if " or "elseif ") .. cond(br.cond) .. " then")
+    emit_block(S, br.body)
+  end
+  if node.else_body then
+    S.E(node.else_line, "else")
+    emit_block(S, node.else_body)
+  end
+  S.E(node.end_line, "end")
+end
+
+local function case_test(t, sel_ty)
+  local function rhs(e)
+    return value(e, 4, true)
+  end
+  if t.lo then
+    return "case >= " .. rhs(t.lo) .. " and case <= " .. rhs(t.hi)
+  end
+  return "case " .. X.RELOP_LUA[t.op] .. " " .. rhs(t.e)
+end
+
+local function emit_select(S, node)
+  local sel = node.expr
+  local ty = sel.ty
+  local selcode = ty == "string" and value(sel, 0) or convert(sel, ty == "double" and "double" or
+    (ty == "int" or ty == "long") and ty or "single")
+  S.E(node.line, "do local case = " .. selcode)
+  local first = true
+  for _, c in ipairs(node.cases) do
+    local tests = {}
+    for _, t in ipairs(c.tests) do
+      t.line = c.line
+      local code = case_test(t, ty)
+      if #c.tests > 1 and t.lo then code = "(" .. code .. ")" end
+      tests[#tests + 1] = code
+    end
+    S.E(c.line, (first and "if " or "elseif ") .. table.concat(tests, " or ") .. " then")
+    first = false
+    emit_block(S, c.body)
+  end
+  if node.else_body then
+    if first then S.E(node.else_line, "do") else S.E(node.else_line, "else") end
+    emit_block(S, node.else_body)
+    S.E(node.end_line, "end end")
+  elseif first then
+    S.E(node.end_line, "end")
+  else
+    S.E(node.end_line, "end end")
+  end
+end
+
+local function emit_if1(S, node)
+  local line = node.line
+  S.E(line, "if " .. cond(node.cond) .. " then")
+  emit_block(S, node.then_body)
+  if node.else_body then
+    S.E(line, "else")
+    emit_block(S, node.else_body)
+  end
+  S.E(line, "end")
+end
+
+local function end_program(S)
+  if S.cur_proc or S.cur_region then
+    S.uses_stop = true
+    return "stop()"
+  end
+  return "do return end"
+end
+
+-- ---- the statements, one function each ---------------------------------------------------
+local STMT = {}
+function STMT.label(S, st)
+  if S.prog.goto_targets[st.name] then S.E(st.line, "::" .. label_lua(st.name) .. "::") end
+  if st.name:match("^%d+$") then S.erl = st.name end   -- ERL: the last line number before
+end
+-- ON ERROR GOTO label | 0, RESUME: the handler is a subroutine (qbasic_control) the runtime's
+-- trap calls; RESUME returns what to do to the trap, which runs the failed statement again,
+-- goes on after it, or returns the label for the statement's own code to jump to
+function STMT.onerror(S, st)
+  S.E(st.line, "on_error(" .. (st.label and S.prog.gosub_lua[st.label] or "nil") .. ")")
+end
+function STMT.resume(S, st)
+  local what = st.what == "label" and st.label or st.what
+  local code = "resume_ok(" .. X.lua_string(what) .. ")"
+  if S.cur_region and S.cur_region.handler then code = "do return " .. code .. " end" end
+  S.E(st.line, code)
+end
+function STMT.let(S, st)
+  S.E(st.line, X.lvalue(st.target) .. " = " .. X.store(st.expr, st.target))
+end
+STMT["for"], STMT["while"], STMT["do"] = emit_for, emit_while, emit_do
+STMT.ifb, STMT.if1, STMT.select = emit_ifb, emit_if1, emit_select
+STMT["goto"] = function(S, st) S.E(st.line, "goto " .. label_lua(st.label)) end
+function STMT.gosub(S, st) S.E(st.line, gosub_lua(S, st.label) .. "()") end
+function STMT.on(S, st)
+  local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
+  for i, l in ipairs(st.labels) do
+    local act = st.gosub and (gosub_lua(S, l) .. "()") or ("goto " .. label_lua(l))
+    parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
+  end
+  parts[#parts + 1] = "end end"
+  S.E(st.line, table.concat(parts, " "))
+end
+STMT["return"] = function(S, st)
+  S.E(st.line, S.cur_region and "do return end" or "return_without_gosub()")
+end
+STMT["end"] = function(S, st) S.E(st.line, end_program(S)) end
+function STMT.exit(S, st)
+  if st.what == "for" or st.what == "do" then
+    S.E(st.line, exit_loop(S, st.what))
+  else
+    local p = S.cur_proc
+    local ret = returned(p)
+    S.E(st.line, "do return" .. (ret ~= "" and (" " .. ret) or "") .. " end")
+  end
+end
+-- the initial value of a scalar that needs one: a fixed-length string (NUL bytes, as QBasic
+-- leaves it), a record
+local function initial(d)
+  if d.fixed then return "fixed_init(" .. d.fixed .. ")" end
+  if K.is_record(d.ty) then return "record(" .. X.lua_string(d.ty:sub(5)) .. ")" end
+end
+-- the array constructor of a declaration, and its extra first argument
+local function array_maker(d)
+  if d.fixed then return "dim_fixed", d.fixed .. ", " end
+  if K.is_record(d.ty) then return "dim_rec", X.lua_string(d.ty:sub(5)) .. ", " end
+  return d.ty == "string" and "dim_str" or "dim", ""
+end
+function STMT.dim(S, st)
+  for _, d in ipairs(st.decls) do
+    local node = { k = d.bounds and "dimarray" or "dimvar", name = d.name, ty = d.ty,
+      text = d.text, proc = S.cur_proc }
+    -- STATIC (or DIM in a STATIC procedure): the variable is made on the first call only
+    local once = S.cur_proc and S.prog.classify(node) == "static"
+    local function init(code)
+      if once then code = "if static_new(" .. X.lua_string(S.prog.lua_name(node)) .. ") then "
+        .. code .. " end" end
+      S.E(st.line, code)
+    end
+    if not d.bounds then
+      local v = initial(d)
+      if v then init(S.prog.lua_name(node) .. " = " .. v) end
+    else
+      local bs = {}
+      for _, b in ipairs(d.bounds) do
+        if b.lo then
+          bs[#bs + 1] = "{" .. value(b.lo, 0) .. ", " .. value(b.hi, 0) .. "}"
+        elseif st.base == 1 then
+          bs[#bs + 1] = "{1, " .. value(b.hi, 0) .. "}"
         else
-          targets[#targets + 1] = "_"
+          bs[#bs + 1] = value(b.hi, 0)
         end
       end
-    end
-    while targets[#targets] == "_" do targets[#targets] = nil end
-    if any then
-      E(st.line, table.concat(targets, ", ") .. " = " .. proc.lua .. "(" .. args .. ")")
-    else
-      E(st.line, proc.lua .. "(" .. args .. ")")
+      local f, first = array_maker(d)
+      init(S.prog.lua_name(node) .. " = " .. f .. "(" .. first .. table.concat(bs, ", ") .. ")")
     end
   end
+end
+STMT.static = STMT.dim
+function STMT.erase(S, st)
+  for _, a in ipairs(st.arrays) do S.E(st.line, "erase(" .. S.prog.lua_name(a) .. ")") end
+end
+function STMT.midset(S, st)
+  local t = X.lvalue(st.target)
+  S.E(st.line, t .. " = mid_set(" .. t .. ", " .. value(st.start, 0) .. ", "
+    .. (st.len and value(st.len, 0) or "nil") .. ", " .. value(st.expr, 0) .. ")")
+end
+function STMT.const(S, st)
+  for _, d in ipairs(st.decls) do
+    S.E(st.line, S.prog.const_lua[d.const.name] .. " = " .. convert(d.expr, d.const.ty))
+  end
+end
+function STMT.read(S, st)
+  for _, t in ipairs(st.targets) do
+    local src = t.ty == "string" and "read_string()" or "read_number()"
+    local code
+    if t.ty == "string" or t.ty == "double" then code = src
+    elseif t.ty == "single" then code = "csng(" .. src .. ")"
+    elseif t.ty == "int" then code = "cint(" .. src .. ")"
+    else code = "clng(" .. src .. ")" end
+    if t.fixed then code = "fixstr(" .. code .. ", " .. t.fixed .. ")" end
+    S.E(st.line, X.lvalue(t) .. " = " .. code)
+  end
+end
+function STMT.restore(S, st)
+  S.E(st.line, st.label and ("restore(" .. X.lua_string(st.label) .. ")") or "restore()")
+end
+STMT.call = emit_call
+function STMT.randomize(S, st) S.E(st.line, "randomize(" .. value(st.expr, 0) .. ")") end
+-- ---- files (qbasic_files.lua) --------------------------------------------------------------
+STMT.finput = function(_, st) return G.input(st) end
+function STMT.close(S, st)
+  local t = {}
+  for i, a in ipairs(st.files) do t[i] = value(a, 0) end
+  S.E(st.line, "close_files(" .. table.concat(t, ", ") .. ")")
+end
+-- a value PRINT would mark as DOUBLE or LONG (WRITE prints them with their own digits)
+local function marked(e)
+  if e.ty == "double" then return "dbl(" .. value(e, 0, true) .. ")" end
+  if e.ty == "long" then return "lng(" .. value(e, 0) .. ")" end
+  return (value(e, 0))
+end
+function STMT.write(S, st)
+  local t = { st.file and value(st.file, 0) or "nil" }
+  for _, v in ipairs(st.values) do t[#t + 1] = marked(v) end
+  S.E(st.line, "write_items(" .. table.concat(t, ", ") .. ")")
+end
+-- the bytes of a variable in a record: a number type, a fixed-length or ordinary string, a
+-- TYPE's fields in order
+local function layout(S, ty, fixed)
+  if fixed then return "{fix = " .. fixed .. "}" end
+  if ty == "string" then return '"str"' end
+  if K.is_record(ty) then
+    local def = S.prog.types[ty:sub(5)]
+    local t = {}
+    for _, f in ipairs(def.order) do
+      local fd = def.fields[f]
+      t[#t + 1] = "{" .. X.lua_string(f) .. ", " .. layout(S, fd.ty, fd.fixed) .. "}"
+    end
+    return "{" .. table.concat(t, ", ") .. "}"
+  end
+  return X.lua_string(ty)
+end
+function STMT.frecord(S, st)
+  local args = { value(st.file, 0), st.record and value(st.record, 0) or "nil" }
+  if not st.var then
+    S.E(st.line, st.which .. "_record(" .. table.concat(args, ", ") .. ")")
+    return
+  end
+  local v = X.lvalue(st.var)
+  args[3], args[4] = layout(S, st.var.ty, st.var.fixed), v
+  if st.which == "get" then
+    S.E(st.line, v .. " = get_record(" .. table.concat(args, ", ") .. ")")
+  else
+    S.E(st.line, "put_record(" .. table.concat(args, ", ") .. ")")
+  end
+end
+function STMT.field(S, st)
+  local t = { (value(st.file, 0)) }
+  for _, f in ipairs(st.fields) do
+    if f.var.k ~= "var" or S.prog.classify(f.var) ~= "global" then
+      error({ qb = true, line = st.line,
+        msg = "FIELD of a procedure's variable or an array element: not supported by pointcalc" }, 0)
+    end
+    t[#t + 1] = "{" .. value(f.width, 0) .. ", " .. X.lua_string(S.prog.lua_name(f.var)) .. "}"
+  end
+  S.E(st.line, "field(" .. table.concat(t, ", ") .. ")")
+end
+-- COMMON: the values CHAIN passed (by position) into these variables
+function STMT.common(S, st)
+  local names = {}
+  for _, item in ipairs(st.items) do names[#names + 1] = X.lua_string(S.prog.lua_name(item.node)) end
+  S.E(st.line, "common({" .. table.concat(names, ", ") .. "})")
+end
+function STMT.palette_using(S, st)
+  local idx = {}
+  for i, a in ipairs(st.index) do idx[i] = value(a, 0) end
+  S.E(st.line, "palette_using(" .. S.prog.lua_name(st.array) .. ", {" .. table.concat(idx, ", ") .. "})")
+end
+-- CLEAR: the module's variables (never its CONSTs or procedures) back to their first values
+function STMT.clear(S, st)
+  local names = {}
+  for _, g in ipairs(S.prog.global_list) do names[#names + 1] = X.lua_string(g.lua) end
+  S.E(st.line, "clear({" .. table.concat(names, ", ") .. "})")
+end
+function STMT.justify(S, st)
+  local t = X.lvalue(st.target)
+  S.E(st.line, t .. " = " .. (st.right and "rset" or "lset") .. "(" .. t .. ", " .. value(st.expr, 0) .. ")")
+end
+function STMT.swap(S, st)
+  local a, b = X.lvalue(st.a), X.lvalue(st.b)
+  S.E(st.line, a .. ", " .. b .. " = " .. b .. ", " .. a)
+end
+-- the screen's statements are qbasic_emit_gfx's (it writes through the E that install gave it)
+local function gfx(g) return function(_, st) return g(st) end end
+STMT.rtcall, STMT.getput, STMT.input, STMT.print = gfx(G.rtcall), gfx(G.getput), gfx(G.input),
+  gfx(G.print)
+STMT.print_using = gfx(G.print_using)
+for _, k in ipairs({ "cls", "color", "palette", "pset", "preset", "line", "circle", "paint",
+    "window", "view" }) do
+  STMT[k] = gfx(G.gfx)
+end
+-- declarations that made their mark in the earlier passes, and DATA (collected at the end)
+local NOTHING = { data = true, endsub = true, endfunction = true, enddef = true,
+  shared = true, deftype = true }
 
-  -- the value of a numeric literal, possibly negated, or nil
-  local function literal_num(e)
-    e = strip(e)
-    if e.k == "num" then return e.v, e end
-    if e.k == "neg" then
-      local a = strip(e.a)
-      if a.k == "num" then return -a.v, a end
+local function emit_proc(S, st)
+  local proc = st.proc
+  local line = proc.line
+  local params = {}
+  for i, p in ipairs(proc.params) do params[i] = p.lua end
+  local head = "goto " .. st.skip_label .. " ::" .. st.def_label .. ":: function " .. proc.lua
+    .. "(" .. table.concat(params, ", ") .. ")"
+  -- locals: numbers, strings, arrays
+  local names, vals = {}, {}
+  if proc.result then
+    names[#names + 1] = proc.result
+    vals[#vals + 1] = proc.ty == "string" and '""' or "0"
+  end
+  local arrays = {}
+  for _, info in ipairs(proc.local_list) do
+    if info.array then
+      arrays[#arrays + 1] = info
+    else
+      names[#names + 1] = info.lua
+      vals[#vals + 1] = info.ty == "string" and '""' or "0"
     end
   end
-  -- can this literal be written as is for a value of type ty?
-  local function literal_fits(v, lit, ty)
-    if ty == "single" then return f32(v) == v end
-    if ty == "double" then return lit.ty == "double" or f32(v) == v end
-    return v == math.floor(v)
+  local decl = ""
+  if #names > 0 then decl = " local " .. table.concat(names, ", ") .. " = " .. table.concat(vals, ", ") end
+  for _, a in ipairs(arrays) do
+    if a.dimmed then
+      decl = decl .. " local " .. a.lua
+    else
+      -- an array used without DIM: subscripts OPTION BASE..10 in each dimension
+      local dims = {}
+      for i = 1, a.rank or 1 do dims[i] = S.prog.option_base == 1 and "{1, 10}" or "10" end
+      decl = decl .. " local " .. a.lua .. " = " .. (a.ty == "string" and "dim_str" or "dim")
+        .. "(" .. table.concat(dims, ", ") .. ")"
+    end
   end
+  -- GOSUB subroutines of the procedure: local functions, defined before its first statement
+  if proc.defs and #proc.defs > 0 then
+    local fns = {}
+    for i, d in ipairs(proc.defs) do fns[i] = d.lua end
+    decl = decl .. " local " .. table.concat(fns, ", ") .. " goto " .. proc.defs[1].def_label
+      .. " ::start::"
+  end
+  local saved_proc, saved_loops = S.cur_proc, S.loops
+  S.cur_proc = proc
+  S.loops = { { kind = "fn" } }
+  if proc.expr then
+    local code = convert(proc.expr, proc.ty)
+    -- a bare call would be a Lua tail call, and DEF FNa(x) = FNa(x + 1) would run forever
+    -- instead of running out of stack space as QBasic does
+    if code:match("^[%w_]+%b()$") then code = "(" .. code .. ")" end
+    S.E(line, head .. decl .. " return " .. code .. " end goto "
+      .. st.next_def .. " ::" .. st.skip_label .. "::")
+  else
+    S.E(line, head .. decl)
+    emit_block(S, proc.tree)
+    local ret = returned(proc)
+    S.E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
+      .. " ::" .. st.skip_label .. "::")
+  end
+  S.cur_proc, S.loops = saved_proc, saved_loops
+end
 
-  local function emit_for(node)
-    local line = node.line
-    local v = node.var
-    local vcode = prog.lua_name(v)
-    local ty = v.ty
-    local decl_names, decl_vals = {}, {}
-    -- the limit and the step are evaluated once, rounded to the variable's type
-    local lim_code
-    local lv, llit = literal_num(node.to)
-    if lv and literal_fits(lv, llit, ty) then
-      lim_code = value(node.to, 0)
-    else
-      decl_names[#decl_names + 1] = "_to"
-      decl_vals[#decl_vals + 1] = convert(node.to, ty)
-      lim_code = "_to"
-    end
-    local step, step_sign
-    if not node.step then
-      step, step_sign = "1", 1
-    else
-      local sv, slit = literal_num(node.step)
-      if sv then step_sign = sv >= 0 and 1 or -1 end
-      if sv and literal_fits(sv, slit, ty) then
-        step = value(node.step, 0)
-      else
-        decl_names[#decl_names + 1] = "_step"
-        decl_vals[#decl_vals + 1] = convert(node.step, ty)
-        step = "_step"
+local function emit_region(S, r)
+  local line = r.line
+  S.E(line, "goto " .. r.skip_label .. " ::" .. r.def_label .. ":: " .. r.lua .. " = function()")
+  local saved_loops = S.loops
+  S.loops = { { kind = "fn" } }
+  S.cur_region = r
+  emit_block(S, r.body)
+  S.cur_region = nil
+  S.loops = saved_loops
+  local end_line, tail
+  if r.open_end then
+    -- no RETURN: the subroutine runs to the end of the program, which it ends
+    S.uses_stop = true
+    end_line = r.end_line or #S.prog.lines
+    tail = "stop() end goto " .. r.next_def .. " ::" .. r.skip_label .. ":: " .. r.lua
+      .. "() return_without_gosub()"
+  elseif r.return_line then
+    end_line = r.return_line
+    tail = "end goto " .. r.next_def .. " ::" .. r.skip_label .. ":: " .. r.lua
+      .. "() return_without_gosub()"
+  else
+    -- runs into the next subroutine
+    end_line = r.falls_into.line
+    tail = "return " .. r.falls_into.lua .. "() end goto " .. r.next_def .. " ::" .. r.skip_label
+      .. ":: " .. r.lua .. "() return_without_gosub()"
+  end
+  S.E(end_line, tail)
+end
+
+STMT.procdef, STMT.region = emit_proc, emit_region
+
+-- In a program with an error handler, each statement of the module that can fail runs under
+-- trap(function() ... end, ERL) (the runtime's); an error in a SUB or FUNCTION is trapped at
+-- the module's statement that called it, as QBasic resumes there.
+local TRAPPED = { let = true, print = true, print_using = true, rtcall = true, cls = true,
+  color = true, palette = true, pset = true, preset = true, line = true, circle = true,
+  paint = true, window = true, view = true, input = true, getput = true, call = true,
+  dim = true, static = true, erase = true, midset = true, read = true, restore = true,
+  randomize = true, swap = true, gosub = true, justify = true, palette_using = true,
+  finput = true, close = true, write = true, frecord = true, field = true }
+local function emit_trapped(S, st, f)
+  local parts = {}
+  local sink = S.sink
+  S.sink = function(line, s)
+    if line ~= st.line then error("internal: a trapped statement spans lines") end
+    parts[#parts + 1] = s
+  end
+  f(S, st)
+  S.sink = sink
+  if #parts == 0 then return end
+  local code = "trap(function() " .. table.concat(parts, " ") .. " end, " .. S.erl .. ")"
+  local labels = {}
+  for l in pairs(S.prog.resume_targets) do labels[#labels + 1] = l end
+  if #labels > 0 then
+    -- RESUME label: the jump is the statement's own (the label is at the top level)
+    table.sort(labels)
+    local t = { "do local _r = " .. code .. " if _r then" }
+    if not S.cur_region then
+      for _, l in ipairs(labels) do
+        t[#t + 1] = "if _r == " .. X.lua_string(l) .. " then goto " .. label_lua(l) .. " end"
       end
     end
-    local cond
-    if step_sign == 1 then cond = vcode .. " <= " .. lim_code
-    elseif step_sign == -1 then cond = vcode .. " >= " .. lim_code
-    else cond = "for_test(" .. vcode .. ", " .. lim_code .. ", " .. step .. ")" end
-    local head = ""
-    if #decl_names > 0 then
-      head = "do local " .. table.concat(decl_names, ", ") .. " = " .. table.concat(decl_vals, ", ") .. " "
-    end
-    E(line, head .. vcode .. " = " .. convert(node.from, ty) .. " while " .. cond .. " do")
-    loops[#loops + 1] = { kind = "for" }
-    emit_block(node.body)
-    local lp = table.remove(loops)
-    local incr
-    local sum = vcode .. " + " .. step
-    if step:sub(1, 1) == "-" then sum = vcode .. " - " .. step:sub(2) end
-    if ty == "single" then incr = vcode .. " = csng(" .. sum .. ")"
-    elseif ty == "double" then incr = vcode .. " = " .. sum
-    elseif ty == "int" then incr = vcode .. " = cint(" .. sum .. ")"
-    else incr = vcode .. " = clng(" .. sum .. ")" end
-    local tail = incr .. " end"
-    if lp.exit_label then
-      tail = tail .. " ::" .. lp.exit_label .. "::"
-    end
-    if #decl_names > 0 then tail = tail .. " end" end
-    E(node.next_line, tail)
+    t[#t + 1] = "resume_at(_r) end end"
+    code = table.concat(t, " ")
   end
+  S.E(st.line, code)
+end
 
-  local function emit_while(node)
-    E(node.line, "while " .. cond(node.cond) .. " do")
-    loops[#loops + 1] = { kind = "while" }
-    emit_block(node.body)
-    table.remove(loops)
-    E(node.end_line, "end")
+emit_block = function(S, list)
+  for _, st in ipairs(list) do
+    local f = STMT[st.k]
+    if f then
+      if S.trapping and not S.cur_proc and TRAPPED[st.k] then emit_trapped(S, st, f)
+      else f(S, st) end
+    elseif not NOTHING[st.k] then error("cannot emit statement " .. st.k) end
   end
+end
 
-  local function emit_do(node)
-    local top, bottom = node.cond_top, node.cond_bottom
-    if bottom then
-      E(node.line, "repeat")
-    elseif top then
-      local c = top.kind == "while" and cond(top.e) or ("not " .. cond(top.e, 12))
-      E(node.line, "while " .. c .. " do")
-    else
-      E(node.line, "while true do")
-    end
-    loops[#loops + 1] = { kind = "do" }
-    emit_block(node.body)
-    local lp = table.remove(loops)
-    local tail
-    if bottom then
-      tail = "until " .. (bottom.kind == "until" and cond(bottom.e) or ("not " .. cond(bottom.e, 12)))
-    else
-      tail = "end"
-    end
-    if lp.exit_label then
-      tail = tail .. " ::" .. lp.exit_label .. "::"
-    end
-    E(node.end_line, tail)
-  end
-
-  local function emit_ifb(node)
-    for i, br in ipairs(node.branches) do
-      E(br.line, (i == 1 and "if " or "elseif ") .. cond(br.cond) .. " then")
-      emit_block(br.body)
-    end
-    if node.else_body then
-      E(node.else_line, "else")
-      emit_block(node.else_body)
-    end
-    E(node.end_line, "end")
-  end
-
-  local function case_test(t, sel_ty)
-    local function rhs(e)
-      return value(e, 4, true)
-    end
-    if t.lo then
-      return "case >= " .. rhs(t.lo) .. " and case <= " .. rhs(t.hi)
-    end
-    return "case " .. X.RELOP_LUA[t.op] .. " " .. rhs(t.e)
-  end
-
-  local function emit_select(node)
-    local sel = node.expr
-    local ty = sel.ty
-    local selcode = ty == "string" and value(sel, 0) or convert(sel, ty == "double" and "double" or
-      (ty == "int" or ty == "long") and ty or "single")
-    E(node.line, "do local case = " .. selcode)
-    local first = true
-    for _, c in ipairs(node.cases) do
-      local tests = {}
-      for _, t in ipairs(c.tests) do
-        t.line = c.line
-        local code = case_test(t, ty)
-        if #c.tests > 1 and t.lo then code = "(" .. code .. ")" end
-        tests[#tests + 1] = code
-      end
-      E(c.line, (first and "if " or "elseif ") .. table.concat(tests, " or ") .. " then")
-      first = false
-      emit_block(c.body)
-    end
-    if node.else_body then
-      if first then E(node.else_line, "do") else E(node.else_line, "else") end
-      emit_block(node.else_body)
-      E(node.end_line, "end end")
-    elseif first then
-      E(node.end_line, "end")
-    else
-      E(node.end_line, "end end")
-    end
-  end
-
-  local function emit_if1(node)
-    local line = node.line
-    E(line, "if " .. cond(node.cond) .. " then")
-    emit_block(node.then_body)
-    if node.else_body then
-      E(line, "else")
-      emit_block(node.else_body)
-    end
-    E(line, "end")
-  end
-
-  local function end_program()
-    if cur_proc or cur_region then
-      uses_stop = true
-      return "stop()"
-    end
-    return "do return end"
-  end
-
-  -- ---- the statements, one function each ---------------------------------------------------
-  local STMT = {}
-  function STMT.label(st)
-    if goto_targets[st.name] then E(st.line, "::" .. label_lua(st.name) .. "::") end
-  end
-  function STMT.let(st)
-    E(st.line, X.lvalue(st.target) .. " = " .. X.store(st.expr, st.target))
-  end
-  STMT["for"], STMT["while"], STMT["do"] = emit_for, emit_while, emit_do
-  STMT.ifb, STMT.if1, STMT.select = emit_ifb, emit_if1, emit_select
-  STMT["goto"] = function(st) E(st.line, "goto " .. label_lua(st.label)) end
-  function STMT.gosub(st) E(st.line, gosub_lua(st.label) .. "()") end
-  function STMT.on(st)
-    local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
-    for i, l in ipairs(st.labels) do
-      local act = st.gosub and (gosub_lua(l) .. "()") or ("goto " .. label_lua(l))
-      parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
-    end
-    parts[#parts + 1] = "end end"
-    E(st.line, table.concat(parts, " "))
-  end
-  STMT["return"] = function(st)
-    E(st.line, cur_region and "do return end" or "return_without_gosub()")
-  end
-  STMT["end"] = function(st) E(st.line, end_program()) end
-  function STMT.exit(st)
-    if st.what == "for" or st.what == "do" then
-      E(st.line, exit_loop(st.what))
-    else
-      local p = cur_proc
-      local ret = p.kind == "sub" and copy_out(p) or p.result
-      E(st.line, "do return" .. (ret ~= "" and (" " .. ret) or "") .. " end")
-    end
-  end
-  -- the initial value of a scalar that needs one: a fixed-length string (NUL bytes, as QBasic
-  -- leaves it), a record
-  local function initial(d)
-    if d.fixed then return "fixed_init(" .. d.fixed .. ")" end
-    if K.is_record(d.ty) then return "record(" .. X.lua_string(d.ty:sub(5)) .. ")" end
-  end
-  -- the array constructor of a declaration, and its extra first argument
-  local function array_maker(d)
-    if d.fixed then return "dim_fixed", d.fixed .. ", " end
-    if K.is_record(d.ty) then return "dim_rec", X.lua_string(d.ty:sub(5)) .. ", " end
-    return d.ty == "string" and "dim_str" or "dim", ""
-  end
-  function STMT.dim(st)
-    for _, d in ipairs(st.decls) do
-      local node = { k = d.bounds and "dimarray" or "dimvar", name = d.name, ty = d.ty,
-        text = d.text, proc = cur_proc }
-      -- STATIC (or DIM in a STATIC procedure): the variable is made on the first call only
-      local once = cur_proc and prog.classify(node) == "static"
-      local function init(code)
-        if once then code = "if static_new(" .. X.lua_string(prog.lua_name(node)) .. ") then "
-          .. code .. " end" end
-        E(st.line, code)
-      end
-      if not d.bounds then
-        local v = initial(d)
-        if v then init(prog.lua_name(node) .. " = " .. v) end
-      else
-        local bs = {}
-        for _, b in ipairs(d.bounds) do
-          if b.lo then
-            bs[#bs + 1] = "{" .. value(b.lo, 0) .. ", " .. value(b.hi, 0) .. "}"
-          elseif st.base == 1 then
-            bs[#bs + 1] = "{1, " .. value(b.hi, 0) .. "}"
-          else
-            bs[#bs + 1] = value(b.hi, 0)
-          end
-        end
-        local f, first = array_maker(d)
-        init(prog.lua_name(node) .. " = " .. f .. "(" .. first .. table.concat(bs, ", ") .. ")")
-      end
-    end
-  end
-  STMT.static = STMT.dim
-  function STMT.erase(st)
-    for _, a in ipairs(st.arrays) do E(st.line, "erase(" .. prog.lua_name(a) .. ")") end
-  end
-  function STMT.midset(st)
-    local t = X.lvalue(st.target)
-    E(st.line, t .. " = mid_set(" .. t .. ", " .. value(st.start, 0) .. ", "
-      .. (st.len and value(st.len, 0) or "nil") .. ", " .. value(st.expr, 0) .. ")")
-  end
-  function STMT.const(st)
-    for _, d in ipairs(st.decls) do
-      E(st.line, prog.const_lua[d.const.name] .. " = " .. convert(d.expr, d.const.ty))
-    end
-  end
-  function STMT.read(st)
-    for _, t in ipairs(st.targets) do
-      local src = t.ty == "string" and "read_string()" or "read_number()"
-      local code
-      if t.ty == "string" or t.ty == "double" then code = src
-      elseif t.ty == "single" then code = "csng(" .. src .. ")"
-      elseif t.ty == "int" then code = "cint(" .. src .. ")"
-      else code = "clng(" .. src .. ")" end
-      if t.fixed then code = "fixstr(" .. code .. ", " .. t.fixed .. ")" end
-      E(st.line, X.lvalue(t) .. " = " .. code)
-    end
-  end
-  function STMT.restore(st)
-    E(st.line, st.label and ("restore(" .. X.lua_string(st.label) .. ")") or "restore()")
-  end
-  STMT.call = emit_call
-  function STMT.randomize(st) E(st.line, "randomize(" .. value(st.expr, 0) .. ")") end
-  function STMT.swap(st)
-    local a, b = X.lvalue(st.a), X.lvalue(st.b)
-    E(st.line, a .. ", " .. b .. " = " .. b .. ", " .. a)
-  end
-  STMT.rtcall, STMT.getput, STMT.input, STMT.print = G.rtcall, G.getput, G.input, G.print
-  STMT.print_using = G.print_using
-  STMT.print_using = G.print_using
-  for _, k in ipairs({ "cls", "color", "palette", "pset", "preset", "line", "circle", "paint",
-      "window", "view" }) do
-    STMT[k] = G.gfx
-  end
-  -- declarations that made their mark in the earlier passes, and DATA (collected at the end)
-  local NOTHING = { data = true, endsub = true, endfunction = true, enddef = true,
-    shared = true, deftype = true }
-
-  local function emit_proc(st)
-    local proc = st.proc
-    local line = proc.line
-    local params = {}
-    for i, p in ipairs(proc.params) do params[i] = p.lua end
-    local head = "goto " .. st.skip_label .. " ::" .. st.def_label .. ":: function " .. proc.lua
-      .. "(" .. table.concat(params, ", ") .. ")"
-    -- locals: numbers, strings, arrays
-    local names, vals = {}, {}
-    if proc.result then
-      names[#names + 1] = proc.result
-      vals[#vals + 1] = proc.ty == "string" and '""' or "0"
-    end
-    local arrays = {}
-    for _, info in ipairs(proc.local_list) do
-      if info.array then
-        arrays[#arrays + 1] = info
-      else
-        names[#names + 1] = info.lua
-        vals[#vals + 1] = info.ty == "string" and '""' or "0"
-      end
-    end
-    local decl = ""
-    if #names > 0 then decl = " local " .. table.concat(names, ", ") .. " = " .. table.concat(vals, ", ") end
-    for _, a in ipairs(arrays) do
-      if a.dimmed then
-        decl = decl .. " local " .. a.lua
-      else
-        -- an array used without DIM: subscripts OPTION BASE..10 in each dimension
-        local dims = {}
-        for i = 1, a.rank or 1 do dims[i] = prog.option_base == 1 and "{1, 10}" or "10" end
-        decl = decl .. " local " .. a.lua .. " = " .. (a.ty == "string" and "dim_str" or "dim")
-          .. "(" .. table.concat(dims, ", ") .. ")"
-      end
-    end
-    -- GOSUB subroutines of the procedure: local functions, defined before its first statement
-    if proc.defs and #proc.defs > 0 then
-      local fns = {}
-      for i, d in ipairs(proc.defs) do fns[i] = d.lua end
-      decl = decl .. " local " .. table.concat(fns, ", ") .. " goto " .. proc.defs[1].def_label
-        .. " ::start::"
-    end
-    local saved_proc, saved_loops = cur_proc, loops
-    cur_proc = proc
-    loops = { { kind = "fn" } }
-    if proc.expr then
-      E(line, head .. decl .. " return " .. convert(proc.expr, proc.ty) .. " end goto "
-        .. st.next_def .. " ::" .. st.skip_label .. "::")
-    else
-      E(line, head .. decl)
-      emit_block(proc.tree)
-      local ret = proc.kind == "sub" and copy_out(proc) or proc.result
-      E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
-        .. " ::" .. st.skip_label .. "::")
-    end
-    cur_proc, loops = saved_proc, saved_loops
-  end
-
-  local function emit_region(r)
-    local line = r.line
-    E(line, "goto " .. r.skip_label .. " ::" .. r.def_label .. ":: " .. r.lua .. " = function()")
-    local saved_loops = loops
-    loops = { { kind = "fn" } }
-    cur_region = r
-    emit_block(r.body)
-    cur_region = nil
-    loops = saved_loops
-    local end_line, tail
-    if r.return_line then
-      end_line = r.return_line
-      tail = "end goto " .. r.next_def .. " ::" .. r.skip_label .. ":: " .. r.lua
-        .. "() return_without_gosub()"
-    else
-      -- runs into the next subroutine
-      end_line = r.falls_into.line
-      tail = "return " .. r.falls_into.lua .. "() end goto " .. r.next_def .. " ::" .. r.skip_label
-        .. ":: " .. r.lua .. "() return_without_gosub()"
-    end
-    E(end_line, tail)
-  end
-
-  STMT.procdef, STMT.region = emit_proc, emit_region
-
-  emit_block = function(list)
-    for _, st in ipairs(list) do
-      local f = STMT[st.k]
-      if f then f(st)
-      elseif not NOTHING[st.k] then error("cannot emit statement " .. st.k) end
-    end
-  end
-
-  -- ---- the program ------------------------------------------------------------------------
-  loops = { { kind = "fn" } }
-  emit_block(prog.main)
-  return M.assemble(prog, chunkname, out, uses_stop)
+-- ---- the program ------------------------------------------------------------------------
+-- The emitter's state S: the program, the Lua code of each source line (out, written by E),
+-- the procedure and GOSUB subroutine being emitted, the open loops.
+function M.emit(prog, chunkname)
+  local out = {}
+  for i = 1, #prog.lines do out[i] = {} end
+  local S = { prog = prog, out = out, cur_proc = nil, cur_region = nil, exit_count = 0,
+    uses_stop = false, loops = { { kind = "fn" } } }
+  function S.sink(line, s) local o = out[line]; o[#o + 1] = s end
+  function S.E(line, s) S.sink(line, s) end
+  S.trapping, S.erl = next(prog.handlers) ~= nil, "0"
+  X.install(prog)
+  G.install(prog, S.E)
+  emit_block(S, prog.main)
+  return M.assemble(prog, chunkname, out, S.uses_stop)
 end
 
 -- ---- assembling the chunk -------------------------------------------------------------------
@@ -577,6 +728,12 @@ function M.assemble(prog, chunkname, out, uses_stop)
 
   local prelude = "local _ENV = require(\"qbasic_rt\").new(_ENV, " .. X.lua_string(chunkname)
     .. ") return run(function()"
+  if #prog.direct > 0 then
+    -- GW-BASIC direct-mode lines: named on standard error when the program starts
+    local t = {}
+    for _, d in ipairs(prog.direct) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.text) end
+    prelude = prelude .. " direct_lines(" .. table.concat(t, ", ") .. ")"
+  end
   if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
   local result = {}
   for i = 1, #lines do

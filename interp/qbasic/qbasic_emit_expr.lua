@@ -187,6 +187,7 @@ function M.value(e, min, exact)
   elseif k == "not" then
     return "bnot(" .. emit_value(e.a, 0) .. ")", 20
   elseif k == "call" then
+    if e.bytes then return tostring(e.bytes), 20 end    -- LEN of a record: its size
     local fn = e.fn
     if fn == "lbound" or fn == "ubound" then
       local arr = e.args[1]
@@ -201,7 +202,27 @@ function M.value(e, min, exact)
     return fn_lua(fn) .. "(" .. args_code(e.args, ex) .. ")", 20
   elseif k == "ucall" then
     local proc = prog.proc_by_name[e.name]
-    return proc.lua .. "(" .. call_args(proc, e.args) .. ")", 20
+    local code = proc.lua .. "(" .. call_args(proc, e.args) .. ")"
+    local byref = false
+    for i, p in ipairs(proc.params) do if proc.modified[i] and not p.array then byref = true end end
+    if not byref then return code, 20 end
+    -- a FUNCTION that assigns to its parameters returns them after its result (as a SUB
+    -- does): by reference, they are copied back to the arguments that are variables
+    local targets, any = {}, false
+    for i, p in ipairs(proc.params) do
+      if proc.modified[i] and not p.array then
+        local a = e.args[i]
+        if (a.k == "var" and not a.const) or a.k == "index" then
+          targets[#targets + 1] = M.lvalue(a)
+          any = true
+        else
+          targets[#targets + 1] = "_"
+        end
+      end
+    end
+    if not any then return "(" .. code .. ")", 20 end
+    return "(function() local _r, _ _r, " .. table.concat(targets, ", ") .. " = " .. code
+      .. " return _r end)()", 20
   elseif k == "fncall" then
     local proc = prog.fn_by_name[e.name]
     local t = {}

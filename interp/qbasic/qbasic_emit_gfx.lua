@@ -102,7 +102,7 @@ function M.gfx(st)
   elseif k == "cls" then
     E(line, "cls(" .. (st.arg and value(st.arg, 0) or "") .. ")")
   elseif k == "color" then
-    E(line, "color(" .. trim_nils({ opt(st.fg), opt(st.bg) }) .. ")")
+    E(line, "color(" .. trim_nils({ opt(st.fg), opt(st.bg), opt(st.border) }) .. ")")
   elseif k == "palette" then
     if not st.attr then E(line, "palette()") return end
     E(line, "palette(" .. value(st.attr, 0) .. ", " .. value(st.color, 0) .. ")")
@@ -152,7 +152,11 @@ function M.input(st)
   for i, t in ipairs(st.targets) do kinds[i] = X.lua_string(t.ty == "string" and "s" or "n") end
   local prompt = st.prompt and X.lua_string(st.prompt) or "nil"
   local call
-  if st.line_input then
+  if st.file then         -- INPUT #n, LINE INPUT #n: the fields of the file
+    local n = value(st.file, 0)
+    call = st.line_input and ("flineinput(" .. n .. ")")
+      or ("finput(" .. n .. ", {" .. table.concat(kinds, ", ") .. "})")
+  elseif st.line_input then
     call = "line_input(" .. prompt .. ", " .. tostring(st.same_line or false) .. ")"
   else
     call = "input_fields(" .. prompt .. ", " .. tostring(st.mark) .. ", "
@@ -187,6 +191,11 @@ function M.print(st)
     end
   end
   if not st.newline then args[#args + 1] = "nonl" end
+  if st.file then   -- PRINT #n: the same items into the file
+    table.insert(args, 1, (value(st.file, 0)))
+    E(st.line, "fprint(" .. table.concat(args, ", ") .. ")")
+    return
+  end
   E(st.line, "qprint(" .. table.concat(args, ", ") .. ")")
 end
 
@@ -198,6 +207,11 @@ function M.print_using(st)
     else args[#args + 1] = (value(v, 0)) end
   end
   if not st.newline then args[#args + 1] = "nonl" end
+  if st.file then   -- PRINT #n, USING: into the file
+    table.insert(args, 1, (value(st.file, 0)))
+    E(st.line, "fprint_using(" .. table.concat(args, ", ") .. ")")
+    return
+  end
   E(st.line, "qprint_using(" .. table.concat(args, ", ") .. ")")
 end
 

@@ -79,13 +79,33 @@ K.FUNCS = {
   pmap = { args = { "n", "n" }, ty = "single" },
   ["varptr$"] = { args = { "x" }, ty = "string", lua = "varptr" },
   lbound = { args = { "arr", "?n" }, ty = "long" }, ubound = { args = { "arr", "?n" }, ty = "long" },
+  -- the emulated PC (qbasic_hw.lua): ports and memory
+  inp = { args = { "n" }, ty = "int" }, peek = { args = { "n" }, ty = "int" },
+  -- error trapping: the number of the error being handled and the line number it came from
+  err = { args = {}, ty = "int", lua = "err_" }, erl = { args = {}, ty = "long", lua = "erl_" },
+  -- numbers as the bytes QBasic stores them (records of random files), and back
+  ["mki$"] = { args = { "n" }, ty = "string", lua = "mki" },
+  ["mkl$"] = { args = { "n" }, ty = "string", lua = "mkl" },
+  ["mks$"] = { args = { "n" }, ty = "string", lua = "mks" },
+  ["mkd$"] = { args = { "n" }, ty = "string", lua = "mkd" },
+  cvi = { args = { "s" }, ty = "int" }, cvl = { args = { "s" }, ty = "long" },
+  cvs = { args = { "s" }, ty = "single" }, cvd = { args = { "s" }, ty = "double" },
+  -- the virtual clock and calendar, and an environment with nothing in it
+  ["time$"] = { args = {}, ty = "string", lua = "time_s" },
+  ["date$"] = { args = {}, ty = "string", lua = "date_s" },
+  ["environ$"] = { args = { "x" }, ty = "string", lua = "environ_s" },
+  -- files (qbasic_files.lua)
+  eof = { args = { "n" }, ty = "int", lua = "eof_" }, lof = { args = { "n" }, ty = "long", lua = "lof_" },
+  loc = { args = { "n" }, ty = "long", lua = "loc_" }, freefile = { args = {}, ty = "int" },
+  seek = { args = { "n" }, ty = "long", lua = "seek_" },
+  screen = { args = { "n", "n", "?n" }, ty = "int", lua = "screen_fn" },
 }
 
 -- functions QBasic has and pointcalc does not: named in the error
 K.UNSUPPORTED_FUNCS = {}
-for w in ([[inkey$ input$ date$ time$ csrlin pos peek inp eof pmap fre varptr environ$ err erl
-  lof loc freefile cvi cvs cvl cvd mki$ mks$ mkl$ mkd$ stick strig pen play screen sadd lpos
-  ioctl$ fileattr seek varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
+for w in ([[inkey$ input$ csrlin pos pmap fre varptr
+  stick strig pen play sadd lpos
+  ioctl$ fileattr varseg varptr$ erdev erdev$ shell command$]]):gmatch("%S+") do
   K.UNSUPPORTED_FUNCS[w] = true
 end
 
@@ -95,6 +115,9 @@ end
 K.RT_STATEMENTS = {
   screen = "nnnn", locate = "nn", width = "nn", draw = "s", pcopy = "nn", sleep = "n",
   beep = "", sound = "nn", play = "s", key_def = "ns", view_print = "nn", randomize_ask = "",
+  out_port = "nn", wait_port = "nnn", poke = "nn", def_seg = "n", error_n = "n",
+  chain = "s", run_program = "s", bsave = "snn", bload = "sn", set_time = "s", set_date = "s", open_file = "ssnn", seek_file = "nn", kill_file = "s",
+  name_file = "ss",
 }
 
 -- QBasic's strings are at most 32,767 characters
@@ -102,15 +125,11 @@ K.MAX_STRING = 32767
 
 -- statements pointcalc knows but does not implement: named in the error
 K.UNSUPPORTED_STMTS = {
-  open = "OPEN", close = "CLOSE", write = "WRITE", lprint = "LPRINT", on = "ON",
-  error = "ERROR", resume = "RESUME", chain = "CHAIN", common = "COMMON",
-  poke = "POKE", out = "OUT", wait = "WAIT", shell = "SHELL",
-  kill = "KILL", name = "NAME", files = "FILES", chdir = "CHDIR", mkdir = "MKDIR",
-  rmdir = "RMDIR", field = "FIELD", lset = "LSET", rset = "RSET", seek = "SEEK",
-  clear = "CLEAR", run = "RUN", tron = "TRON", troff = "TROFF", bload = "BLOAD",
-  bsave = "BSAVE", ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
+  lprint = "LPRINT", on = "ON", shell = "SHELL", files = "FILES", chdir = "CHDIR",
+  mkdir = "MKDIR", rmdir = "RMDIR", tron = "TRON", troff = "TROFF",
+  ioctl = "IOCTL", lock = "LOCK", unlock = "UNLOCK", reset = "RESET",
   timer = "TIMER ON/OFF", strig = "STRIG", pen = "PEN", com = "COM", signal = "SIGNAL",
-  date = "DATE$", ["date$"] = "DATE$ statement", ["time$"] = "TIME$ statement",
+  date = "DATE$",
   environ = "ENVIRON", setmem = "SETMEM", absolute = "CALL ABSOLUTE" }
 
 -- Lua's reserved words: no translated name may be one

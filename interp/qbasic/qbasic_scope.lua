@@ -212,7 +212,10 @@ function M.modified_params(prog, classify)
     each_stmt(proc, function(st)
       if st.k == "let" then mark(st.target)
       elseif st.k == "for" then mark(st.var)
-      elseif st.k == "read" then for _, t in ipairs(st.targets) do mark(t) end
+      elseif st.k == "read" or st.k == "input" or st.k == "finput" then
+        for _, t in ipairs(st.targets) do mark(t) end
+      elseif st.k == "justify" then mark(st.target)
+      elseif st.k == "frecord" and st.which == "get" and st.var then mark(st.var)
       elseif st.k == "swap" then mark(st.a); mark(st.b) end
     end)
   end
@@ -234,23 +237,6 @@ function M.modified_params(prog, classify)
         end
       end)
     end
-  end
-  -- a FUNCTION that assigns to a parameter must be given a value there, not a variable
-  local function check_calls(e)
-    if e.k ~= "ucall" then return end
-    local proc = prog.proc_by_name[e.name]
-    for i, a in ipairs(e.args) do
-      if proc.modified[i] and ((a.k == "var" and not a.const) or a.k == "index") then
-        qerr("FUNCTION " .. proc.text .. " assigns to its parameter " .. proc.params[i].text
-          .. ": pass the argument as (" .. (a.text or "x") .. ") (by value); pointcalc does not"
-          .. " pass FUNCTION arguments by reference", e.line)
-      end
-    end
-  end
-  walk.body_exprs(prog.main, check_calls)
-  for _, proc in ipairs(prog.procs) do
-    if proc.expr then walk.expr(proc.expr, check_calls) end
-    if proc.tree then walk.body_exprs(proc.tree, check_calls) end
   end
 end
 

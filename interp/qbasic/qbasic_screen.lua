@@ -23,7 +23,8 @@ M.GIVE_UP_POLLS = 200000
 -- the names this module adds: the translator keeps user names clear of them
 M.names = { "locate", "width", "draw", "pcopy", "sleep", "beep", "sound", "play", "key_def",
   "view_print", "get_into", "put_from", "input_fields", "line_input", "randomize_ask", "inkey",
-  "input_chars", "csrlin", "pos_", "pmap", "varptr", "text_out" }
+  "input_chars", "csrlin", "pos_", "pmap", "varptr", "text_out", "time_s", "date_s",
+  "environ_s", "set_time", "set_date", "screen_fn" }
 
 -- EGA's 64 colours: bits 0-2 blue, green, red at 2/3, bits 3-5 at 1/3 (PALETTE in SCREEN 9)
 local function ega64(c)
@@ -33,36 +34,56 @@ end
 -- the 16 colours of the 16-colour modes as EGA colour numbers (brown is 20, not 6)
 local EGA16 = { [0] = 0, 1, 2, 3, 4, 5, 20, 7, 56, 57, 58, 59, 60, 61, 62, 63 }
 
-function M.install(E, rt)
+local IFC = "Illegal function call"
+
+-- a host call whose error is QBasic's Illegal function call at the program's line, with the
+-- host's reason in parentheses
+local function host(level, f, ...)
+  local ok, a, b = pcall(f, ...)
+  if not ok then error(IFC .. " (" .. tostring(a):gsub("^[^:]*:%d+: ", "") .. ")", level + 1) end
+  return a, b
+end
+local function graphics(rt) return rt.get_mode() ~= 0 end
+
+-- Each install_* adds one group of statements over the screen state S (S.tx: the text
+-- screen's cursor, viewport and pages; S.clock: the virtual clock) and rt, the runtime's link.
+-- ---- the text screen ------------------------------------------------------------------
+local function install_text(E, rt, S)
   local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
-  local h_print_at, h_scroll, h_pages, h_pcopy = draw("print_at"), draw("scroll_text"),
-    draw("pages"), draw("pcopy")
-  local h_draw, h_get, h_put, h_pmap = draw("draw"), draw("get_block"), draw("put_block"), draw("pmap")
-  local h_mode_info, h_palette, h_color, h_cls = draw("mode_info"), draw("palette"), draw("color"),
-    draw("cls")
-  local h_last_point = draw("last_point")
-
-  -- a host call whose error is QBasic's Illegal function call at the program's line, with the
-  -- host's reason in parentheses
-  local function host(level, f, ...)
-    local ok, a, b = pcall(f, ...)
-    if not ok then error(IFC .. " (" .. tostring(a):gsub("^[^:]*:%d+: ", "") .. ")", level + 1) end
-    return a, b
-  end
-
-  -- ---- the text screen ------------------------------------------------------------------
-  local tx = { row = 1, col = 1, top = 1, bottom = 25, rows = 25, cols = 80, pages = 1,
-    active = 0, visual = 0 }
+  local h_print_at, h_scroll, h_cls = draw("print_at"), draw("scroll_text"), draw("cls")
+  local tx = S.tx
   local out = io.stdout
-
-  local function graphics() return rt.get_mode() ~= 0 end
+  -- the characters on the screen, for the SCREEN(row, col) function: cells[row][col] = byte
+  local cells = {}
+  S.cells = cells
+  local function remember(row, col, part)
+    local r = cells[row] or {}
+    cells[row] = r
+    for i = 1, #part do
+      if col + i - 1 <= tx.cols then r[col + i - 1] = part:byte(i) end
+    end
+  end
+  local function scroll_cells()
+    for r = tx.top, tx.bottom - 1 do cells[r] = cells[r + 1] end
+    cells[tx.bottom] = nil
+  end
+  local function forget(top, bottom) for r = top, bottom do cells[r] = nil end end
+  function E.screen_fn(row, col, flag)
+    row, col = to_int(row, -32768, 32767, 2), to_int(col, -32768, 32767, 2)
+    if row < 1 or row > tx.rows or col < 1 or col > tx.cols then error(IFC, 2) end
+    if flag ~= nil and to_int(flag, -32768, 32767, 2) ~= 0 then
+      return graphics(rt) and (draw("color")()) or 7   -- the attribute: the text colour
+    end
+    return cells[row] and cells[row][col] or 32
+  end
 
   local function newline()
     tx.col = 1
     if tx.row < tx.bottom then
       tx.row = tx.row + 1
-    elseif graphics() then
-      h_scroll(tx.top, tx.bottom, 0)
+    else
+      scroll_cells()
+      if graphics(rt) then h_scroll(tx.top, tx.bottom, 0) end
     end
   end
 
@@ -76,7 +97,9 @@ function M.install(E, rt)
       while #piece > 0 do
         local room = tx.cols - tx.col + 1
         local part = piece:sub(1, room)
-        h_print_at(tx.row, tx.col, part, nil, 0)
+        -- CHR$(0) shows as a blank cell on QBasic's screen (code page 437's glyph 0 is none)
+        h_print_at(tx.row, tx.col, (part:gsub("%z", " ")), nil, 0)
+        remember(tx.row, tx.col, part)
         tx.col = tx.col + #part
         piece = piece:sub(room + 1)
         if tx.col > tx.cols then newline() end
@@ -89,9 +112,15 @@ function M.install(E, rt)
   -- a graphics screen.  Returns the 0-based column after it, for zones and TAB.
   function rt.text_out(s)
     out:write(s)
-    if graphics() then
+    if graphics(rt) then
       screen_text(s)
     else   -- text mode: standard output is the screen; no wrapping (docs/qbasic.md)
+      local row, col = tx.row, tx.col
+      for line, sep in s:gmatch("([^\n]*)(\n?)") do
+        remember(row, col, line)
+        if sep == "" then break end
+        row, col = math.min(row + 1, tx.bottom), 1
+      end
       local nl = s:find("\n[^\n]*$")
       if nl then
         local _, n = s:gsub("\n", "")
@@ -109,6 +138,7 @@ function M.install(E, rt)
     tx.rows, tx.cols = info and info.rows or 25, info and info.cols or 80
     tx.top, tx.bottom, tx.row, tx.col = 1, tx.rows, 1, 1
     tx.pages, tx.active, tx.visual = info and info.pages or 1, 0, 0
+    forget(1, 60)
   end
 
   function E.locate(row, col)
@@ -150,7 +180,8 @@ function M.install(E, rt)
   end
   -- CLS 0 (or none): the whole screen; 1: the graphics view; 2: the text viewport
   function rt.cls(n)
-    if not graphics() then tx.row, tx.col = tx.top, 1 return end
+    if n ~= 1 then forget(n == 2 and tx.top or 1, n == 2 and tx.bottom or tx.rows) end
+    if not graphics(rt) then tx.row, tx.col = tx.top, 1 return end
     if n == 2 then
       for r = tx.top, tx.bottom do h_print_at(r, 1, string.rep(" ", tx.cols), nil, 0) end
     elseif n == 1 then
@@ -161,7 +192,13 @@ function M.install(E, rt)
     end
     tx.row, tx.col = tx.top, 1
   end
+end
 
+local function install_modes(E, rt, S)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
+  local h_pages, h_pcopy, h_mode_info = draw("pages"), draw("pcopy"), draw("mode_info")
+  local h_palette, h_color = draw("palette"), draw("color")
+  local tx = S.tx
   -- ---- modes, palettes, pages -----------------------------------------------------------
   function rt.screen_pages(apage, vpage, level)
     if apage == nil and vpage == nil then return end
@@ -171,11 +208,17 @@ function M.install(E, rt)
     h_pages(a, v)
     tx.active, tx.visual = a, v
   end
-  function rt.mode_info(m) return h_mode_info(m) end
+  function rt.mode_info(m)
+    if m == 11 then   -- VGA's 2-colour mode: SCREEN 12's layout
+      return { width = 640, height = 480, colors = 2, pages = 1, cols = 80, rows = 30, cell = 16,
+        aspect = 1 }
+    end
+    return h_mode_info(m)
+  end
 
   function E.pcopy(from, to)
     from, to = to_int(from, -32768, 32767, 2), to_int(to, -32768, 32767, 2)
-    if not graphics() then return end
+    if not graphics(rt) then return end
     if from < 0 or from >= tx.pages or to < 0 or to >= tx.pages then error(IFC, 2) end
     host(2, h_pcopy, from, to)
   end
@@ -216,7 +259,12 @@ function M.install(E, rt)
     if c < 0 or c > max then error(IFC, level + 1) end
     h_palette(attr, ega64(m == 9 and c or EGA16[c]))
   end
+end
 
+local function install_draw(E, rt)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
+  local h_draw, h_get, h_put, h_pmap = draw("draw"), draw("get_block"), draw("put_block"), draw("pmap")
+  local h_last_point = draw("last_point")
   -- ---- DRAW -----------------------------------------------------------------------------
   -- VARPTR$(v) stands for the variable in a DRAW (or PLAY) string: here its value, between
   -- markers that DRAW replaces ("X" + VARPTR$(a$) runs a$, "=" + VARPTR$(n) is n)
@@ -239,7 +287,7 @@ function M.install(E, rt)
   end
 
   function E.draw(s)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     host(2, h_draw, expand(s, 0, 2))
   end
 
@@ -268,21 +316,21 @@ function M.install(E, rt)
     return n * elem
   end
   function E.get_into(x1, y1, x2, y2, arr, at, elem)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     local b = host(2, h_get, rt.coord(x1, 2), rt.coord(y1, 2), rt.coord(x2, 2), rt.coord(y2, 2))
     if room(arr, at, elem or 2, 2) < b.bytes then error(IFC, 2) end
     blocks[arr] = blocks[arr] or {}
     blocks[arr][key_of(at)] = b
   end
   function E.put_from(x, y, arr, at, action)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     local b = blocks[arr] and blocks[arr][key_of(at)]
     if not b then error(IFC .. " (PUT of an array element no GET stored a block in)", 2) end
     host(2, h_put, rt.coord(x, 2), rt.coord(y, 2), b, action)
   end
 
   function E.pmap(v, n)
-    if not graphics() then error(IFC, 2) end
+    if not graphics(rt) then error(IFC, 2) end
     n = to_int(n, -32768, 32767, 2)
     if n < 0 or n > 3 then error(IFC, 2) end
     local r = host(2, h_pmap, v, n)
@@ -294,32 +342,80 @@ function M.install(E, rt)
     local r = h_pmap(n == 0 and x or y, n)
     return r
   end
+end
 
+local function install_clock(E, rt, S)
+  -- TIME$ and DATE$: the virtual clock (TIMER's seconds since midnight) and a settable date
+  function E.time_s()
+    local t = math.floor(S.clock) % 86400
+    return string.format("%02d:%02d:%02d", t // 3600, t // 60 % 60, t % 60)
+  end
+  function E.set_time(s)
+    local h, m, sec = s:match("^%s*(%d%d?):?(%d?%d?):?(%d?%d?)%s*$")
+    h, m, sec = tonumber(h), tonumber(m) or 0, tonumber(sec) or 0
+    if not h or h > 23 or m > 59 or sec > 59 then error(IFC, 2) end
+    S.clock = h * 3600 + m * 60 + sec
+  end
+  S.date = "01-01-1980"
+  function E.date_s() return S.date end
+  function E.set_date(s)
+    local mo, d, y = s:match("^%s*(%d%d?)[-/](%d%d?)[-/](%d+)%s*$")
+    mo, d, y = tonumber(mo), tonumber(d), tonumber(y)
+    if y and y < 100 then y = y + 1900 end
+    if not mo or mo < 1 or mo > 12 or d < 1 or d > 31 or y < 1980 or y > 2099 then error(IFC, 2) end
+    S.date = string.format("%02d-%02d-%04d", mo, d, y)
+  end
+  -- ENVIRON$: a run sees no environment variables (the same every run, and nothing leaks)
+  function E.environ_s(_) return "" end
+  rt.clock = function() return S.clock end
+  -- every step of the virtual clock: with --for SECONDS (M.RUN_FOR), a program still running
+  -- after that long on it is ended there, normally: its picture is the screen as it stands
+  local elapsed = 0
+  local function advance(dt)
+    S.clock = S.clock + dt
+    elapsed = elapsed + dt
+    if M.RUN_FOR and elapsed >= M.RUN_FOR then
+      io.stderr:write(string.format("%s:%s: ran for %g virtual seconds (--for): stopped; the "
+        .. "picture is the screen as it stands\n", rt.chunkname, rt.program_line() or "?", M.RUN_FOR))
+      E.stop()
+    end
+  end
+  rt.advance = advance
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the clock ------------------------------------------------------------------------
-  local clock = 0
   function E.timer()
-    local t = clock
-    clock = clock + M.TICK
+    local t = S.clock
+    advance(M.TICK)
     return rt.f32(t)
   end
   function E.sleep(n)
     if n ~= nil then
       n = to_int(n, -2147483648, 2147483647, 2)
-      if n > 0 then clock = clock + n end
+      if n > 0 then advance(n) end
     end
   end
   function E.beep() end
   function E.sound(freq, ticks)
     if freq - freq ~= 0 or ticks - ticks ~= 0 then error(IFC, 2) end
     if (freq ~= 0 and (freq < 37 or freq > 32767)) or ticks < 0 or ticks > 65535 then error(IFC, 2) end
-    clock = clock + ticks * M.TICK
+    advance(ticks * M.TICK)
   end
   function E.play(_) end
   function E.key_def(n, _)
     n = to_int(n, -32768, 32767, 2)
     if n < 1 or n > 31 then error(IFC, 2) end
   end
+end
 
+-- --input's names of the keys that are no character, delivered as one INKEY$ key
+local KEY_NAMES = { UP = "\0H", DOWN = "\0P", LEFT = "\0K", RIGHT = "\0M", HOME = "\0G",
+  END = "\0O", PGUP = "\0I", PGDN = "\0Q", INS = "\0R", DEL = "\0S", F1 = "\0;", F2 = "\0<",
+  F3 = "\0=", F4 = "\0>", F5 = "\0?", F6 = "\0@", F7 = "\0A", F8 = "\0B", F9 = "\0C",
+  F10 = "\0D", F11 = "\0\133", F12 = "\0\134", ESC = "\27", ENTER = "\r", TAB = "\t",
+  BKSP = "\8" }
+
+local function install_keyboard(E, rt, S)
+  local IFC, to_int, draw = rt.IFC, rt.to_int, rt.draw
   -- ---- the keyboard ---------------------------------------------------------------------
   local input = io.stdin
   local pending = ""         -- characters of standard input not yet taken
@@ -338,35 +434,64 @@ function M.install(E, rt)
     pending = ""
     return l
   end
-  function E.inkey()
+  -- the next key of the input: a character (Enter is CHR$(13)), an extended key as
+  -- CHR$(0) + its code (the bytes 0 and the code, or a name in braces: {RIGHT}, {F1}), or nil
+  local function take_key()
     fill()
-    if pending ~= "" then
-      local c = pending:sub(1, 1)
-      pending = pending:sub(2)
-      if c == "\n" then c = "\r" end       -- Enter is CHR$(13)
-      empty_polls, total_empty = 0, 0
-      return c
+    if pending == "" then return nil end
+    local name = pending:match("^{(%u+%d*)}")
+    local k
+    if name and KEY_NAMES[name] then
+      k, pending = KEY_NAMES[name], pending:sub(#name + 3)
+    elseif pending:byte(1) == 0 and #pending >= 2 then
+      k, pending = pending:sub(1, 2), pending:sub(3)
+    else
+      k, pending = pending:sub(1, 1), pending:sub(2)
+      if k == "\n" then k = "\r" end
     end
-    clock = clock + M.TICK
+    empty_polls, total_empty = 0, 0
+    S.last_key = k
+    return k
+  end
+  rt.take_key = take_key
+  -- a poll that found no key: a tick of the clock; true when it is time for the Enter that
+  -- answers "press any key"; a program still polling long after the input ended is ended
+  local function empty_poll()
+    rt.advance(M.TICK)
     empty_polls, total_empty = empty_polls + 1, total_empty + 1
     if total_empty > M.GIVE_UP_POLLS then
       io.stderr:write(rt.chunkname .. ": the program keeps waiting for a key and the input has run out: ended\n")
       E.stop()
     end
-    if empty_polls >= M.EMPTY_POLLS then
+    if empty_polls > M.EMPTY_POLLS then
       empty_polls = 0
-      return "\r"
+      return true
     end
+  end
+  rt.empty_poll = empty_poll
+  function E.inkey()
+    local k = take_key()
+    if k then return k end
+    if empty_poll() then return "\r" end
     return ""
   end
+  -- INPUT, LINE INPUT and INPUT$ with no input left: nobody will answer, so the program ends
+  -- there (normally: the picture is written), saying so
+  local function input_ended(what)
+    io.stderr:write(rt.chunkname .. ":" .. (rt.program_line() or "?") .. ": input ended (" .. what
+      .. " with no input left): the program is ended\n")
+    E.stop()
+  end
   function E.input_chars(n, file)
-    if file ~= nil then error("INPUT$ from a file: not supported by pointcalc", 2) end
+    if file ~= nil then local r = rt.file_chars(n, file) return r end   -- INPUT$(n, #f)
     n = to_int(n, -32768, 32767, 2)
     if n < 1 or n > 32767 then error(IFC, 2) end
     local t = {}
     for i = 1, n do
       fill()
-      if pending == "" then t[i] = "\r"
+      if pending == "" then
+        if i == 1 then input_ended("INPUT$") end
+        t[i] = "\r"
       else
         t[i] = pending:sub(1, 1) == "\n" and "\r" or pending:sub(1, 1)   -- Enter is CHR$(13)
         pending = pending:sub(2)
@@ -379,7 +504,11 @@ function M.install(E, rt)
     rt.qwrite(prompt .. answer .. (same_line and "" or "\n"))
   end
   function E.line_input(prompt, same_line)
-    local l = read_line() or ""
+    local l = read_line()
+    if not l then
+      echo(prompt or "", "", same_line)
+      input_ended("LINE INPUT")
+    end
     echo(prompt or "", l, same_line)
     return { l }
   end
@@ -413,9 +542,7 @@ function M.install(E, rt)
       local l = read_line()
       if not l then
         echo(p, "", same_line)
-        local r = {}
-        for i, k in ipairs(kinds) do r[i] = k == "s" and "" or 0 end
-        return r
+        input_ended("INPUT")
       end
       echo(p, l, same_line)
       local f = fields(l)
@@ -439,6 +566,16 @@ function M.install(E, rt)
     local n = tonumber(l or "") or 0
     E.randomize(n)
   end
+end
+
+function M.install(E, rt)
+  local S = { clock = 0, tx = { row = 1, col = 1, top = 1, bottom = 25, rows = 25, cols = 80,
+    pages = 1, active = 0, visual = 0 } }
+  install_text(E, rt, S)
+  install_modes(E, rt, S)
+  install_draw(E, rt)
+  install_clock(E, rt, S)
+  install_keyboard(E, rt, S)
 end
 
 return M

@@ -23,7 +23,7 @@ M.expr = expr
 local EXPRS = {}
 local function coords(p, x) if p then x(p.x); x(p.y) end end
 function EXPRS.let(st, x) x(st.target); x(st.expr) end
-function EXPRS.print(st, x) for _, it in ipairs(st.items) do x(it.e) end end
+function EXPRS.print(st, x) x(st.file); for _, it in ipairs(st.items) do x(it.e) end end
 function EXPRS.dim(st, x, fn)
   for _, d in ipairs(st.decls) do
     fn({ k = d.bounds and "dimarray" or "dimvar", decl = d })
@@ -38,13 +38,16 @@ EXPRS["for"] = function(st, x) x(st.var); x(st.from); x(st.to); x(st.step) end
 function EXPRS.if1(st, x) x(st.cond) end
 EXPRS["while"] = EXPRS.if1
 function EXPRS.midset(st, x) x(st.target); x(st.start); x(st.len); x(st.expr) end
-function EXPRS.print_using(st, x) x(st.format); for _, v in ipairs(st.values) do x(v) end end
+function EXPRS.print_using(st, x)
+  x(st.file); x(st.format)
+  for _, v in ipairs(st.values) do x(v) end
+end
 function EXPRS.erase(st, x, fn) for _, a in ipairs(st.arrays) do fn(a) end end
 function EXPRS.select(st, x) x(st.expr) end
 EXPRS.on, EXPRS.randomize = EXPRS.select, EXPRS.select
 function EXPRS.call(st, x) for _, a in ipairs(st.args) do x(a) end end
 function EXPRS.cls(st, x) x(st.arg) end
-function EXPRS.color(st, x) x(st.fg); x(st.bg) end
+function EXPRS.color(st, x) x(st.fg); x(st.bg); x(st.border) end
 function EXPRS.palette(st, x) x(st.attr); x(st.color) end
 function EXPRS.pset(st, x) coords(st.p, x); x(st.color) end
 EXPRS.preset = EXPRS.pset
@@ -57,6 +60,22 @@ function EXPRS.window(st, x) coords(st.p1, x); coords(st.p2, x); x(st.fill); x(s
 EXPRS.view = EXPRS.window
 function EXPRS.swap(st, x) x(st.a); x(st.b) end
 function EXPRS.rtcall(st, x) for i = 1, st.nargs do x(st.args[i]) end end
+function EXPRS.justify(st, x) x(st.target); x(st.expr) end
+function EXPRS.common(st, x, fn)
+  for _, item in ipairs(st.items) do
+    if item.array then fn(item.node) else x(item.node) end
+  end
+end
+function EXPRS.palette_using(st, x, fn)
+  fn(st.array)
+  for _, a in ipairs(st.index) do x(a) end
+end
+-- files
+function EXPRS.finput(st, x) x(st.file); for _, t in ipairs(st.targets) do x(t) end end
+function EXPRS.close(st, x) for _, a in ipairs(st.files) do x(a) end end
+function EXPRS.write(st, x) x(st.file); for _, v in ipairs(st.values) do x(v) end end
+function EXPRS.frecord(st, x) x(st.file); x(st.record); x(st.var) end
+function EXPRS.field(st, x) x(st.file); for _, f in ipairs(st.fields) do x(f.width); x(f.var) end end
 function EXPRS.getput(st, x, fn)
   coords(st.p1, x); coords(st.p2, x)
   fn(st.array)

@@ -6,14 +6,15 @@
 . "$(dirname "$0")/lib.sh"
 
 n=0
+cp "$QB_DIR"/progs/*.bas .     # all of them: chain.bas runs chain_next.bas
 for bas in "$QB_DIR"/progs/*.bas; do
     name=$(basename "$bas" .bas)
-    cp "$bas" "$name.bas"
     # a program that expects a person reads its answers from NAME.in (else no input at all)
     input=/dev/null
     [ -f "$QB_DIR/progs/$name.in" ] && input="$QB_DIR/progs/$name.in"
     run "$POINTCALC" "$name.bas" -o "$name.ppm" < "$input"
     expect_rc 0 "$name"
+    cp err.txt "$name.err"
     check
     if ! diff -u "$QB_DIR/progs/$name.out" out.txt >diff.txt; then
         fail "$name: output differs from $name.out:"
@@ -48,6 +49,71 @@ expect_eq "$(ppm_pixel tiles.ppm 320 100)" "ffffff" "tile row 0, x mod 8 = 0: on
 expect_eq "$(ppm_pixel tiles.ppm 321 100)" "000000" "tile row 0, x mod 8 = 1: off"
 expect_eq "$(ppm_pixel tiles.ppm 322 101)" "ffffff" "tile row 1, x mod 8 = 2: on"
 expect_eq "$(ppm_pixel tiles.ppm 500 145)" "ffffff" "DRAW A1 R24 in SCREEN 2: 10 pixels up"
+
+# vga.bas (SCREEN 13) wrote DAC entries 1-3 through the ports: orange (63, 32, 0), dark blue
+# (0, 0, 20), green (0, 40, 0), 6-bit levels widened as the VGA does (v * 4 + v \ 16); it
+# POKEd pixels of colour 40 (the default DAC's red) into video memory at row 150
+expect_eq "$(px320 vga.ppm 50 110)" "ff8200" "OUT &H3C9 changes the palette of the picture"
+expect_eq "$(px320 vga.ppm 150 110)" "000051" "the DAC write index moves on: entry 2"
+expect_eq "$(px320 vga.ppm 250 110)" "00a200" "the DAC write index moves on: entry 3"
+expect_eq "$(px320 vga.ppm 25 150)" "ff0000" "POKE into &HA000 sets a pixel"
+expect_eq "$(px320 vga.ppm 60 150)" "000000" "POKE: only the pixels written"
+# vga12.bas: in SCREEN 12 DAC entry 6 is no attribute's (brown stays), entry 62 is attribute 14's
+expect_eq "$(ppm_pixel vga12.ppm 50 110)" "aa5500" "SCREEN 12: attribute 6 shows DAC entry 20"
+expect_eq "$(ppm_pixel vga12.ppm 150 110)" "8282ff" "SCREEN 12: attribute 14 shows DAC entry 62"
+
+# the end of the input: INPUT with nothing left to read ends keyboard.bas at line 23, normally,
+# saying so
+expect_in keyboard.err "keyboard.bas:23: input ended (INPUT with no input left): the program is ended" \
+    "INPUT at the end of the input"
+
+# gwbasic.bas: the direct-mode commands between and after its numbered lines are skipped, each
+# named on standard error
+expect_in gwbasic.err 'gwbasic.bas:8: SAVE "GWDEMO.BAS",A: a GW-BASIC direct-mode command' \
+    "a GW-BASIC SAVE line is named"
+expect_eq "$(grep -c 'direct-mode command' gwbasic.err)" 3 "LIST, SAVE and RUN lines skipped"
+
+# clock_env.bas: PALETTE USING p(0) gave attribute 1 red 63, attribute 2 green 63 and left
+# attribute 4 (-1 in the array) its red 42
+expect_eq "$(ppm_pixel clock_env.ppm 50 110)" "ff0000" "PALETTE USING: attribute 1"
+expect_eq "$(ppm_pixel clock_env.ppm 150 110)" "00ff00" "PALETTE USING: attribute 2"
+expect_eq "$(ppm_pixel clock_env.ppm 250 110)" "aa0000" "PALETTE USING: -1 leaves attribute 4"
+# screen11.bas: SCREEN 11 is 640x480 in 2 colours; PALETTE 1, 42 made colour 1 red 42
+expect_eq "$(head -c 15 screen11.ppm | tr '\n' ' ')" "P6 640 480 255 " "SCREEN 11 writes 640x480"
+expect_eq "$(ppm_pixel screen11.ppm 30 30)" "aa0000" "SCREEN 11: colour 1 after PALETTE 1, 42"
+
+# files.bas under the safe mode: without --allow the first OPEN is QBasic's Permission denied
+# (70, which the program traps); with --allow of its folder it runs as before
+cp "$QB_DIR/progs/files.bas" safe_files.bas
+run "$POINTCALC" --safe safe_files.bas
+expect_rc 0 "files.bas in the safe mode"
+expect_eq "$(cat out.txt)" "error 70 " "the safe mode refuses the program's files: Permission denied"
+run "$POINTCALC" --safe --allow "$WORK" safe_files.bas
+check
+diff -q out.txt "$QB_DIR/progs/files.out" >/dev/null || fail "files.bas with --allow: output differs"
+
+# --for SECONDS: screensaver.bas stopped after 5 seconds of its virtual clock, normally, saying
+# so; the picture is its screen then: the dots of the first frames (x = 13 is colour 14), not yet
+# those of x = 200
+run "$POINTCALC" --for 5 screensaver.bas -o saver.ppm
+expect_rc 0 "--for 5"
+expect_in err.txt "screensaver.bas:13: ran for 5 virtual seconds (--for): stopped" "--for: the note"
+expect_eq "$(px320 saver.ppm 13 150)" "ffff55" "--for: the first frame's dot"
+expect_eq "$(px320 saver.ppm 200 150)" "000000" "--for: no dot the program had not reached"
+run "$POINTCALC" --for 0 screensaver.bas
+expect_rc 2 "--for 0 is a usage error"
+
+# a program that never ends (a bouncing dot, by design) stopped by --timeout: the message names
+# the program and the limit, without a Lua traceback, and the picture is still written
+printf 'SCREEN 12\nCIRCLE (320, 240), 100, 14\nDO\n  x = (x + 1) MOD 640: PSET (x, 400), 10: PSET (x, 400), 0\nLOOP\n' >forever.bas
+run "$POINTCALC" --timeout 1 forever.bas -o forever.ppm
+expect_rc 1 "a program stopped by --timeout"
+expect_eq "$(head -n 1 err.txt)" "forever.bas: time limit of 1 s exceeded: the program was stopped" \
+    "--timeout: the message names the program"
+expect_in err.txt "writing the screen as it stood" "--timeout: the note that the picture is written"
+check
+grep -q "traceback" err.txt && fail "--timeout: no Lua traceback"
+expect_eq "$(ppm_pixel forever.ppm 420 240)" "ffff55" "--timeout: the picture written (the circle)"
 
 # --input FILE feeds INPUT and INKEY$ as standard input does (standard input itself is empty)
 cp "$QB_DIR/progs/keyboard.bas" kb.bas

@@ -1,3 +1,3 @@
-' EXPECT: 3: OPEN: not supported by pointcalc
+' EXPECT: 3: SHELL: not supported by pointcalc
 SCREEN 12
-OPEN "scores.txt" FOR OUTPUT AS #1
+SHELL "dir"

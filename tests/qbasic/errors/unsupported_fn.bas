@@ -1,2 +1,2 @@
-' EXPECT: 2: DATE$ function: not supported by pointcalc
-d$ = DATE$
+' EXPECT: 2: STICK function: not supported by pointcalc
+x = STICK(0)

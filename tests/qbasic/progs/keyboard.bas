@@ -21,4 +21,4 @@ polls = 0
 DO: polls = polls + 1: LOOP WHILE INKEY$ = ""
 PRINT "answered after"; polls; "polls"
 INPUT "Last question"; q
-PRINT "no input left: q ="; q
+PRINT "not reached: INPUT with no input left ends the program"

@@ -1,0 +1,1 @@
+' A file with a CR alone at each line end (old listings): three lines, not one10 A$ = "cr"20 PRINT A$; LEN(A$)30 PRINT "done"

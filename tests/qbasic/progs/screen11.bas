@@ -1,0 +1,6 @@
+' SCREEN 11: VGA's 640x480 in 2 colours, 80x30 text; PALETTE 1 gives colour 1 its mixture
+SCREEN 11
+CIRCLE (320, 240), 100, 1: LINE (10, 10)-(49, 49), 1, BF
+PALETTE 1, 42
+LOCATE 30, 1: PRINT "bottom row";
+PRINT POINT(420, 240); POINT(320, 240); CSRLIN
