@@ -79,7 +79,7 @@ def("harmonic", "harmonic(A, B, T) -> point",
 def("cross_ratio", "cross_ratio(A, B, C, D) -> number",
   "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity).")
 def("meet", "meet(A1, A2, B1, B2) -> K, lambda, mu",
-  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance.")
+  "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve().")
 def("area", "area(A, B, C) | area(A, B, C, D, ...) -> number",
   "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon.")
 def("volume", "volume(A, B, C, D) -> number",
@@ -165,6 +165,9 @@ def("map.cavalier")
 def("map.cabinet")
 def("map.perspective")
 def("map.view")
+def("map.perspective_pqr")
+def("map.foreshortening")
+def("map.axial_affinity")
 def("f(p)", nil, nil, "method")
 def("f:xy", nil, nil, "method")
 def("f:compose", nil, nil, "method")
@@ -231,9 +234,9 @@ def("plot", {"plot(f, {t = {a, b [, step]}, color = c, map = m, tol = px})",
              "plot(f, {t = {a, b, step}, brush = \"pset\"|\"dot\"|fn | dots = true | qb = true, ...})"},
   "Draw t -> f(t) as one connected path (3-D through map or the camera); with a brush, dots = true or qb = true, dots at those steps as the listings do.")
 def("c(t)", "c(t) -> point | c:xy(t) -> x, y",
-  "The point of a curve at parameter t (a vector where a rational curve is at infinity).", "method")
-def("c:deriv", "c:deriv(t [, order]) -> vector",
-  "The first (or second) derivative, exact for every kind but Lua functions (differenced).", "method")
+  "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97).", "method")
+def("c:deriv", "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector",
+  "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there.", "method")
 def("c:tangent", "c:tangent(t) -> vector | c:normal(t) -> vector",
   "The unit tangent; the unit principal normal (in the plane: the tangent turned by +90 degrees).", "method")
 def("c:curvature", "c:curvature(t) -> number",
@@ -262,6 +265,9 @@ def("c:piece", "c:piece(i, t) -> point | c:piece_xy(i, t) -> x, y",
   "A stroke's piece i at its own parameter t.", "method")
 def("c:coef", "c:coef(k) -> a, b",
   "The Fourier coefficient lists of coordinate k of a fourier curve.", "method")
+def("c:monomial", "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}",
+  "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators).", "method")
+def("c:conic", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("equations", "Point equations",
@@ -499,6 +505,9 @@ def("buimov.sphere_frame")
 def("buimov.det")
 def("buimov.reconstruct")
 def("buimov.calibrate")
+def("plane.conic_slope")
+def("buimov.g1_next")
+def("buimov.joint")
 
 -- ---------------------------------------------------------------------------------------
 area("konopatsky", "The monograph's curves (conic.*, oneratio.*, interp.*, approx.*)",
@@ -518,6 +527,24 @@ def("conic.ceva", "conic.ceva(A1, A2, A3, k) -> curve",
   "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola.")
 def("conic.ceva_k", "conic.ceva_k(A1, A2, A3, K) -> k",
   "(2.100) k = v31/v23 of the conic of the pencil through the point K.")
+def("konopatsky.area_k")
+def("konopatsky.area_theorem")
+def("konopatsky.o_theorem")
+def("konopatsky.simplex_ratio")
+def("konopatsky.meet_line_plane")
+def("konopatsky.polar")
+def("konopatsky.rotate")
+def("konopatsky.moving_simplex")
+def("conic.ed_scheme")
+def("conic.five_scheme")
+def("conic.ceva_to_ed")
+def("conic.ed_to_ceva")
+def("conic.cones_excluded")
+def("conic.foci")
+def("conic.ceva_scheme")
+def("conic.focal_point")
+def("conic.scheme")
+def("conic.elements")
 def("conic.parabola", {"conic.parabola(A1, A3, A2) -> curve", "conic.parabola(A, C, B, tC) -> curve"},
   "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B.")
 def("conic.ellipse", "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant =, range = {t0, t1}]} -> curve",
@@ -557,6 +584,7 @@ def("oneratio.bezier3", "oneratio.bezier3(A, C1, C2, B) -> curve",
   "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers).")
 def("oneratio.smooth", "oneratio.smooth(A, B, C [, n]) -> curve",
   "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2.")
+def("oneratio.smooth_scheme")
 def("oneratio.desargues", "oneratio.desargues(A, B, C, D) -> curve",
   "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid.")
 def("oneratio.double_contact", "oneratio.double_contact(A, B, C, kp, kq [, f]) -> curve",
@@ -572,14 +600,14 @@ def("oneratio.desargues_scheme", "oneratio.desargues_scheme(A, B, C, D, t) -> {T
 
 def("interp.lagrange", "interp.lagrange(points [, params]) -> curve",
   "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve.")
-def("interp.weights", {"interp.weights(n, t) -> {w1, ...}", "interp.weights(params, t) -> {w1, ...}"},
-  "The weights of the interpolation curve at t (the book's (4.10)-(4.28) for uniform nodes); they sum to 1.")
+def("interp.weights", {"interp.weights(n, t) -> {w1, ..., w(n+1)}", "interp.weights(params, t) -> {w1, ...}"},
+  "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints.")
 def("interp.controls", "interp.controls(points [, params]) -> {C1, ...}",
   "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7).")
 def("interp.conic", "interp.conic(A, K, B, k) -> curve",
   "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k')).")
-def("interp.arc", "interp.arc(points, C2 [, Cn]) -> curve",
-  "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1).")
+def("interp.arc", "interp.arc(points, C2 [, Cn] [, params]) -> curve",
+  "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]]).")
 def("interp.adaptive", "interp.adaptive(points [, axis]) -> params",
   "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default).")
 def("interp.prototype", "interp.prototype(\"desargues\"|\"rational\"|\"exp\"|\"exp1\"|\"trig\", points [, k] [, t0, t1]) -> curve",
@@ -591,9 +619,9 @@ def("interp.rational22", "interp.rational22({M1, ..., M5}) -> curve, coef",
 
 def("approx.curve", "approx.curve(f, nodes) -> curve",
   "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t.")
-def("approx.mse", "approx.mse(f, nodes [, m]) -> mse",
-  "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), divided by m + 1.")
-def("approx.optimal_nodes", "approx.optimal_nodes(f, a, b, N [, m]) -> nodes, mse, evals",
+def("approx.mse", "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse",
+  "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge).")
+def("approx.optimal_nodes", "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals",
   "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes.")
 def("approx.chebyshev", "approx.chebyshev(N [, a, b]) -> nodes",
   "The N Chebyshev nodes (roots) on [a, b], increasing.")
@@ -655,6 +683,7 @@ def("korotky.conic_elements")
 def("korotky.two_pencils")
 def("korotky.conic_revolve")
 def("korotky.ridge_shell")
+def("korotky.plane_meet")
 
 -- ---------------------------------------------------------------------------------------
 

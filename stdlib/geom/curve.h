@@ -134,6 +134,22 @@ int pc_curve_eval(const pc_curve *c, double t, double *out);
 /* The Cartesian point and its derivatives up to order (quotient rule for rational curves):
  * out holds (order+1) rows of dim.  PC_IMPROPER at a point at infinity. */
 int pc_curve_derivs(const pc_curve *c, double t, int order, double *out);
+/* Derivatives of any order 0..PC_CURVE_MAXDEG at t, taken on one side of a joint: side -1 the
+ * piece ending at t, +1 the piece starting there, 0 the default (the piece starting at t, the
+ * last piece at the end of the domain), the same pieces as pc_curve_eval_h uses.  Bezier and
+ * B-spline curves differentiate their piece's control points exactly (orders beyond the
+ * degree are 0 for the homogeneous values, not for a rational curve's points); FUNC curves
+ * give orders up to 2 (PC_EDOMAIN beyond) and have no sides.  eval_hn: (order+1) rows of
+ * dim+1; derivs_n: (order+1) rows of dim, Leibniz's rule for the weight (PC_IMPROPER at a
+ * point at infinity). */
+int pc_curve_eval_hn(const pc_curve *c, double t, int order, int side, double *out);
+int pc_curve_derivs_n(const pc_curve *c, double t, int order, int side, double *out);
+/* The power-basis coefficients of piece `piece` (0-based: Bezier segment, or non-empty
+ * B-spline span) in the curve's own parameter t: H(t) = sum_j coef_j t^j, coef (degree + 1
+ * rows of dim + 1: the weighted coordinates and the weight polynomial; a polynomial curve has
+ * weight coefficients 1, 0, ...), *degree gets the degree.  PC_EDOMAIN for a FUNC curve or a
+ * piece out of range. */
+int pc_curve_monomial(const pc_curve *c, int piece, double *coef, int *degree);
 /* Curvature at t: signed in the plane (positive turning counter-clockwise for y up),
  * |C' x C''| / |C'|^3 otherwise.  PC_EZERO where C' = 0. */
 int pc_curve_curvature(const pc_curve *c, double t, double *k);

@@ -108,6 +108,19 @@ int pc_expr_pack(pc_expr_pool *pool, int n, const int *coords, double weight, in
 int pc_expr_dot(pc_expr_pool *pool, int a, int b, int *status);
 int pc_expr_cross(pc_expr_pool *pool, int a, int b, int *status);
 int pc_expr_unit(pc_expr_pool *pool, int a, int *status);
+/* The meet K = A1 + lambda (A2 - A1) = B1 + mu (B2 - B1) of two lines of values of one
+ * dimension (points, equations of points), as an equation: lambda from the normal equations
+ * of the two directions (exact where the lines meet; for skew lines in n-D the point of line A
+ * nearest line B), so its derivatives are exact.  *lambda, *mu (may be NULL) get their scalar
+ * equations.  Parallel lines make the denominator 0 where they are parallel (the evaluation
+ * then fails, not a silent value).  expr_meet.c. */
+int pc_expr_meet(pc_expr_pool *pool, int a1, int a2, int b1, int b2, int *lambda, int *mu,
+                 int *status);
+/* The Bezier curve of `degree` with homogeneous control rows cp (degree + 1 rows of dim + 1)
+ * over [t0, t1] at the scalar equation t: sum cp_i B_i(s), s = (t - t0)/(t1 - t0), divided
+ * by sum w_i B_i(s) when the curve is rational.  expr_curve.c. */
+int pc_expr_bezier(pc_expr_pool *pool, int dim, int degree, const double *cp, double t0,
+                   double t1, int t, int *status);
 
 /* e with parameter k replaced by the node r (a scalar): instantiating a one-parameter family
  * M(t; s) at a value of s, or changing a parameter.  Shared nodes stay shared. */

@@ -105,4 +105,21 @@ void pc_map_oblique(pc_map *f, double k, double alpha);
  * for up = 0, PC_ECOLLINEAR if up is along the ray, PC_ENONFINITE for NaN or inf. */
 int pc_map_perspective(pc_map *f, const double *e, const double *p0, const double *up);
 
+/* --- map_more.c ------------------------------------------------------------------------------ */
+/* The textbook's perspective transform by (p, q, r) (Buimov §2.8.5): the 3-D map of row-vector
+ * matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points
+ * (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three of them nonzero give the one-, two-
+ * and three-point perspectives.  Follow it with a parallel projection. */
+int pc_map_perspective_pqr(pc_map *f, double p, double q, double r);
+/* The foreshortening factors of an affine map (an axonometry: nin = 3, nout = 2 or 3): the
+ * lengths of the images of the unit axis vectors, factors[0 .. nin-1] (Buimov §2.8.3:
+ * f_x = sqrt(cos^2 phi + sin^2 phi sin^2 theta), ...).  PC_EDOMAIN for a projective map. */
+int pc_map_foreshortening(const pc_map *f, double *factors);
+/* The axial affinity of the plane with the axis through a along d, the direction s (not along
+ * the axis) and the ratio k: M = A + alpha d + beta s goes to A + alpha d + k beta s.  k = -1
+ * is the oblique reflection in the axis, k = 0 the parallel projection onto it.  PC_EZERO for a
+ * zero d or s, PC_ECOLLINEAR for s along the axis. */
+int pc_map_axial_affinity(pc_map *f, const double a[2], const double d[2], const double s[2],
+                          double k);
+
 #endif

@@ -65,6 +65,10 @@ int pc_foot(int n, const double *c, const double *a, const double *b, double *ou
  * X and Y are locations; z is a value (n+1) that may be a point or an improper point
  * (a direction, weight 0: the ratio is then -1).  Z = Y gives +inf. */
 int pc_sr(int n, const double *x, const double *y, const double *z, double *lambda);
+/* The ratio r = u/v of parallel vectors (u = r v), as in (T - A)/(T_C - A) of (2.62).  n doubles
+ * each.  PC_EZERO for v = 0; PC_ENOTCOLLINEAR when the sine of the angle between them exceeds
+ * 1e-9, with *angle (may be NULL) that angle in radians, in [0, pi/2]; u = 0 gives 0. */
+int pc_vec_ratio(int n, const double *u, const double *v, double *r, double *angle);
 /* Z with (XYZ) = lambda: Z = (X + lambda Y)/(1 + lambda), homogeneous.  x, y are values
  * (n+1).  lambda = -1 gives the improper point X - Y (weight 0); lambda = ±inf gives Y.
  * |lambda| > 1 is computed as (X/lambda + Y)/(1/lambda + 1), so a huge lambda gives a point

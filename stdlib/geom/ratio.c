@@ -110,3 +110,24 @@ int pc_cross_ratio(int n, const double *a, const double *b, const double *c, con
     else *out = lc / ld;
     return PC_OK;
 }
+
+int pc_vec_ratio(int n, const double *u, const double *v, double *r, double *angle) {
+    double vv = 0, uv = 0, uu = 0;
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(u[i]) || !isfinite(v[i])) return PC_ENONFINITE;
+        vv += v[i] * v[i];
+        uv += u[i] * v[i];
+        uu += u[i] * u[i];
+    }
+    if (!(vv > 0)) return PC_EZERO;
+    double k = uv / vv, off = 0;
+    /* the sine of the angle: the part of u off v, over |u| */
+    for (int i = 0; i < n; i++) off += (u[i] - k * v[i]) * (u[i] - k * v[i]);
+    double sn = uu > 0 ? sqrt(off / uu) : 0;
+    if (sn > 1e-9) {
+        if (angle) *angle = asin(fmin(1, sn));
+        return PC_ENOTCOLLINEAR;
+    }
+    *r = k;
+    return PC_OK;
+}

@@ -335,12 +335,13 @@ static const char *const spline_params[] = {"uniform", "chord", NULL};
 static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = spline_ends, .dflt = PC_BOOK_NATURAL},
                                       {.name = "d0", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
                                       {.name = "d1", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
-                                      {.name = "param", .kind = PCL_ENUM, .choices = spline_params}, PCL_END};
+                                      {.name = "param", .kind = PCL_ENUM, .choices = spline_params},
+                                      {.name = "lengths", .kind = PCL_NUMBERS, .lo = 1}, PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
 
 static int l_spline(lua_State *L) {
-    pcl_val a[6] = {0};
+    pcl_val a[7] = {0};
     PCL_READ(L, a);
     int n = a[0].n, d = a[0].dim, st, have_d = a[3].present + a[4].present;
     pc_book_ends ends = (pc_book_ends)a[2].n;
@@ -348,8 +349,14 @@ static int l_spline(lua_State *L) {
     if (ends == PC_BOOK_CLAMPED && have_d < 2) return pcl_fail(L, "clamped ends need both end tangents d0 and d1");
     if ((ends == PC_BOOK_CYCLIC || ends == PC_BOOK_ANTICYCLIC) && n < 4)
         return pcl_fail(L, "cyclic and anticyclic ends need at least 4 points, got %d", n);
+    if (a[6].present && a[5].present) return pcl_fail(L, "give the parameter as param or as lengths, not both");
+    if (a[6].present && a[6].n != n - 1)
+        return pcl_keyfail(L, "lengths", "must hold %d segment lengths (one per segment), got %d", n - 1, a[6].n);
+    for (int i = 0; a[6].present && i < n - 1; i++)
+        if (!(a[6].list[i] > 0)) return pcl_keyfail(L, "lengths", "[%d] must be a positive length, got %s", i + 1, pcl_pushnum(L, a[6].list[i]));
     double *tg = lua_newuserdatauv(L, sizeof(double) * (size_t)n * d, 0);
-    pc_curve *c = pc_curve_book_spline(d, n, a[0].list, a[5].n, ends, a[3].v, a[4].v, tg, &st);
+    pc_curve *c = a[6].present ? pc_curve_book_spline_tl(d, n, a[0].list, a[6].list, ends, a[3].v, a[4].v, tg, &st)
+                               : pc_curve_book_spline(d, n, a[0].list, a[5].n, ends, a[3].v, a[4].v, tg, &st);
     if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide (a chord of length 0)");
     push_curve_or_raise(L, c, st, "spline");
     lua_createtable(L, n, 0);
@@ -388,13 +395,15 @@ static int l_sphere(lua_State *L) {
     return 1;
 }
 
-static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), PCL_END};
+static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
+                                     {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
 
 static int l_sphere_frame(lua_State *L) {
-    pcl_val a[2] = {0};
+    pcl_val a[4] = {0};
     PCL_READ(L, a);
     double f[15];
-    pc_sphere_frame(a[0].x, a[1].x, f);
+    if (!a[2].present) a[2].v[0] = a[2].v[1] = a[2].v[2] = 0;
+    pc_sphere_frame_at(a[2].v, a[3].x, a[0].x, a[1].x, f);   /* the unit sphere at the origin by default */
     pcl_pushpoint(L, 3, f);
     for (int i = 1; i < 5; i++) pcl_pushvector(L, 3, f + 3 * i);
     return 5;
@@ -476,16 +485,16 @@ static const pcl_fn plane[] = {
     PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),
     PCL_FN("plane.circle2r", l_circle2r, circle2r_args, "circle1, circle2", "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left."),
     PCL_FN("plane.circle_slopes", l_circle_slopes, slopes_args, "circle [, circle2]", "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it)."),
-    PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise (a rational Bezier curve)."),
+    PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside)."),
     PCL_FN("plane.classify", l_classify, classify_args, "\"ellipse\"|\"parabola\"|\"hyperbola\", discriminant", "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1)."),
     {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args,
      .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
     PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
     {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).",
      .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
-    PCL_FN("plane.ellipse", l_ellipse, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th) as rational quadratic pieces (exact), parameter th; A = B is a circle."),
+    PCL_FN("plane.ellipse", l_ellipse, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle."),
     PCL_FN("plane.parabola", l_parabola, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
-    PCL_FN("plane.hyperbola", l_hyperbola, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5) as rational quadratic pieces (exact)."),
+    PCL_FN("plane.hyperbola", l_hyperbola, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside)."),
     PCL_FN("plane.points", l_points, points_args, "points", "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected)."),
     PCL_END};
 
@@ -497,10 +506,10 @@ static const pcl_fn book[] = {
     PCL_FN("buimov.blend", l_blend, t_arg, "F1, F2, F3, F4", "The Hermite blending functions of a normalised segment (§5.5)."),
     PCL_FN("buimov.hermite", l_hermite, hermite_args, "curve", "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default)."),
     PCL_FN("buimov.hermite_coeffs", l_hermite_coeffs, hermite_args, "B1, B2, B3, B4", "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected)."),
-    PCL_FN("buimov.spline", l_spline, spline_args, "curve, tangents", "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given."),
+    PCL_FN("buimov.spline", l_spline, spline_args, "curve, tangents", "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given; the segments' parameter lengths uniform, by chords, or the user's lengths."),
     PCL_FN("buimov.helix", l_helix, helix_args, "curve", "The helix (a cos t, a sin t, b t) (§4.1)."),
     {.name = "buimov.sphere", .fn = l_sphere, .args = sphere_args, .sig = "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s", .help = "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default."},
-    PCL_FN("buimov.sphere_frame", l_sphere_frame, frame_args, "S, S_th, S_ph, twist, N", "The unit sphere's point, tangent, twist and normal vectors (§5.1, corrected; N = S_th x S_ph points inwards)."),
+    PCL_FN("buimov.sphere_frame", l_sphere_frame, frame_args, "S, S_th, S_ph, twist, N", "The sphere's point, tangent, twist and normal vectors at (th, ph) (§5.1, corrected; N = S_th x S_ph points inwards): the unit sphere at the origin, or centre C and radius r (the vectors times r, N times r^2)."),
     PCL_FN("buimov.det", l_det, det_args, "number", "The determinant of a square matrix (§1.2): the area factor of a 2x2 map (§1.7.4)."),
     {.name = "buimov.reconstruct", .fn = l_reconstruct, .args = reconstruct_args,
      .sig = "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual", .help = "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."},

@@ -712,6 +712,7 @@ static void push_h(lua_State *L, int d, const double *h) {
 
 static int c_call(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "curve");
+    if (lua_type(L, 2) == LUA_TUSERDATA && pcl_eq_curve_apply(L, u->c, 2)) return 1;   /* C(u^2) */
     double h[PC_MAXDIM + 1];
     eval_at(L, u, pcl_checknum_m(L, u->kind, 2, "t"), h, u->kind);
     push_h(L, u->c->dim, h);
@@ -730,17 +731,74 @@ static int c_xy(lua_State *L) {
 }
 
 /* c:deriv(t [, order]) -> the derivative vector (order 1 or 2) */
+/* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
+ * "left" is asked for */
 static int c_deriv(lua_State *L) {
     lcurve *u = checkcurve(L, 1, "c:deriv");
     double t = pcl_checknum_m(L, "c:deriv", 2, "t");
-    lua_Integer order = luaL_optinteger(L, 3, 1);
-    if (order < 1 || order > 2) pcl_argerror_full(L, "c:deriv", 3, 2, "order", "1 or 2");
+    int sarg = 3;
+    lua_Integer order = 1;
+    if (lua_type(L, 3) == LUA_TNUMBER) {
+        if (!lua_isinteger(L, 3)) pcl_argerror_full(L, "c:deriv", 3, 2, "order", "a whole number from 1 to 64");
+        order = lua_tointeger(L, 3);
+        sarg = 4;
+    } else if (!lua_isnoneornil(L, 3) && lua_type(L, 3) != LUA_TSTRING) {
+        pcl_argerror_full(L, "c:deriv", 3, 2, "order", "a whole number from 1 to 64, or \"left\" / \"right\"");
+    }
+    if (order < 1 || order > PC_CURVE_MAXDEG) pcl_argerror_full(L, "c:deriv", 3, 2, "order", "a whole number from 1 to 64");
+    int side = 0;
+    if (!lua_isnoneornil(L, sarg)) {
+        const char *sd = lua_tostring(L, sarg);
+        if (lua_type(L, sarg) != LUA_TSTRING || (strcmp(sd, "left") && strcmp(sd, "right")))
+            pcl_argerror_full(L, "c:deriv", sarg, sarg - 1, "side", "\"left\" or \"right\"");
+        side = sd[0] == 'l' ? -1 : 1;
+    }
     int d = u->c->dim;
-    double out[3 * PC_MAXDIM];
-    int st = pc_curve_derivs(u->c, t, (int)order, out);
+    double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
+    pcl_callback_state(L);
+    int st = pc_curve_derivs_n(u->c, t, (int)order, side, out);
     if (st == PC_IMPROPER) return pcl_error(L, "c:deriv: the curve is at infinity at t = %s", pcl_pushnum(L, t));
+    if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
+        return pcl_error(L, "c:deriv: a function curve gives derivatives up to order 2, not %d", (int)order);
     if (st != PC_OK) return pcl_raise_status(L, "c:deriv", st);
     pcl_pushvector(L, d, out + (size_t)order * d);
+    return 1;
+}
+
+/* c:monomial([piece]): the power-basis coefficients of a piece in the curve's parameter:
+ * {{a0, a1, ...} of x, {...} of y, ...}, and w = {...} for a rational curve */
+static int c_monomial(lua_State *L) {
+    lcurve *u = checkcurve(L, 1, "c:monomial");
+    const pc_curve *c = u->c;
+    lua_Integer piece = 1;
+    if (!lua_isnoneornil(L, 2)) {
+        if (!lua_isinteger(L, 2)) pcl_argerror_full(L, "c:monomial", 2, 1, "piece", "a whole number");
+        piece = lua_tointeger(L, 2);
+    }
+    if (c->kind == PC_CURVE_FUNC)
+        return pcl_error(L, "c:monomial: a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
+    int np = c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 0;
+    if (c->kind == PC_CURVE_BSPLINE)
+        for (int k = c->degree; k < c->ncp; k++) np += c->knots[k] < c->knots[k + 1];
+    if (piece < 1 || piece > np)
+        return pcl_error(L, "c:monomial: argument #1 (piece) must be from 1 to %d (the curve's pieces), got %d", np, (int)piece);
+    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
+    int deg, st = pc_curve_monomial(c, (int)piece - 1, coef, &deg);
+    if (st != PC_OK) return pcl_raise_status(L, "c:monomial", st);
+    int n = c->dim, w = n + 1, rational = 0;
+    for (int j = 0; j <= deg; j++)
+        if (fabs(coef[j * w + n] - (j == 0)) > 1e-12) rational = 1;
+    lua_createtable(L, n, 1);
+    for (int x = 0; x <= n; x++) {
+        if (x == n && !rational) break;
+        lua_createtable(L, deg + 1, 0);
+        for (int j = 0; j <= deg; j++) {
+            lua_pushnumber(L, coef[j * w + x] + 0.0);
+            lua_rawseti(L, -2, j + 1);
+        }
+        if (x < n) lua_rawseti(L, -2, x + 1);
+        else lua_setfield(L, -2, "w");
+    }
     return 1;
 }
 
@@ -1091,7 +1149,7 @@ void pcl_open_curves(lua_State *L) {
         {"normal", c_normal}, {"curvature", c_curvature}, {"split", c_split}, {"sub", c_sub},
         {"insert_knot", c_insert_knot}, {"length", c_length}, {"bbox", c_bbox},
         {"controls", c_controls}, {"knots", c_knots}, {"piece", c_piece},
-        {"piece_xy", c_piece_xy}, {"coef", c_coef}, {"map", c_map}, {"flatten", c_flatten},
+        {"piece_xy", c_piece_xy}, {"coef", c_coef}, {"monomial", c_monomial}, {"map", c_map}, {"flatten", c_flatten},
         {NULL, NULL}};
     luaL_setfuncs(L, mfns, 0);
     lua_pushvalue(L, methods);

@@ -283,6 +283,33 @@ static int fn_pack(lua_State *L, double weight, const char *fname) {
     return done(L, fname, r, st);
 }
 
+/* meet(A1, A2, B1, B2) with equations among the ends: K, lambda, mu as equations */
+static int fn_meet(lua_State *L) {
+    static const char *nm[4] = {"A1", "A2", "B1", "B2"};
+    pc_expr_pool *p = pool(L);
+    int id[4], dim = 0;
+    for (int i = 0; i < 4; i++) {
+        id[i] = node_of(L, i + 1);
+        if (id[i] < 0 || !pc_expr_dim(p, id[i]))
+            return pcl_argerror_full(L, "meet", i + 1, i + 1, nm[i], "a point or an equation of a point");
+        int d = pc_expr_dim(p, id[i]);
+        if (i == 0) dim = d;
+        else if (d != dim)
+            return pcl_error(L, "meet: argument #%d (%s) is %d-D, but argument #1 is %d-D: dimensions cannot be mixed",
+                             i + 1, nm[i], d, dim);
+        if (weight_class(L, id[i]) != PC_KIND_POINT)
+            return pcl_error(L, "meet: argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a "
+                             "point equation sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
+    }
+    if (dim < 2) return pcl_error(L, "meet: lines meet in 2-D or more, got %d-D points", dim);
+    int st, lam, mu, k = pc_expr_meet(p, id[0], id[1], id[2], id[3], &lam, &mu, &st);
+    if (k < 0) return raise_status(L, "meet", st);
+    push_eq(L, k);
+    push_eq(L, lam);
+    push_eq(L, mu);
+    return 3;
+}
+
 int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
     int top = lua_gettop(L);
     switch (op) {
@@ -320,8 +347,24 @@ int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
     case PCL_EQ_P: case PCL_EQ_V:
         if (!any_eq(L, 1, top)) return 0;
         return fn_pack(L, op == PCL_EQ_P ? 1.0 : 0.0, op == PCL_EQ_P ? "P" : "V");
+    case PCL_EQ_MEET:
+        if (!any_eq(L, 1, 4)) return 0;
+        return fn_meet(L);
     }
     return 0;
+}
+
+int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
+    leq *e = toeq(L, idx);
+    if (!e) return 0;
+    if (pc_expr_dim(pool(L), e->id))
+        return pcl_error(L, "curve: the parameter must be a number or a scalar equation, got %s", describe(L, idx));
+    if (c->kind != PC_CURVE_BEZIER || c->nknots != 2)
+        return pcl_error(L, "curve: only a single-piece Bezier curve (a conic arc, a Bezier of any degree) "
+                         "can be applied to an equation; this one has %s",
+                         c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
+    int st, r = pc_expr_bezier(pool(L), c->dim, c->degree, c->cp, c->t0, c->t1, e->id, &st);
+    return done(L, "curve", r, st);
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_curve.h"
+#include "pcl_expr.h"
 #include "pcl_point.h"
 #include "conic.h"
 #include "konop_curves.h"
@@ -813,20 +814,54 @@ static int i_lagrange(lua_State *L) {
     return push(L, c, st, fn);
 }
 
+/* interp.weights(n, t): the book's order n (n + 1 weights at the uniform j/n), or the list
+ * of node parameters; t a number, or an equation (param "t"): then the weights are equations,
+ * the polynomials the Maple program of §4.8 prints */
 static int i_weights(lua_State *L) {
     const char *fn = "interp.weights";
     lua_settop(L, 2);
     int n;
     double *u = NULL;
     if (lua_isinteger(L, 1)) {
-        n = (int)lua_tointeger(L, 1);
-        if (n < 2 || n > PC_CURVE_MAXDEG + 1) pcl_argerror_full(L, fn, 1, 1, "n", "a number of nodes 2..65");
+        lua_Integer order = lua_tointeger(L, 1);
+        if (order < 1 || order > PC_CURVE_MAXDEG)
+            pcl_argerror_full(L, fn, 1, 1, "n", "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes)");
+        n = (int)order + 1;
     } else if (lua_istable(L, 1)) {
         n = (int)luaL_len(L, 1);
         if (n < 2 || n > PC_CURVE_MAXDEG + 1) pcl_argerror_full(L, fn, 1, 1, "params", "a list of 2..65 parameters");
         u = numlist(L, fn, 1, "params", n);
     } else {
-        return pcl_argerror_full(L, fn, 1, 1, "nodes", "a number of nodes or a list of parameters");
+        return pcl_argerror_full(L, fn, 1, 1, "n", "the book's order n or a list of node parameters");
+    }
+    if (pcl_isequation(L, 2)) {
+        double coef[(PC_CURVE_MAXDEG + 1) * (PC_CURVE_MAXDEG + 1)];
+        int st = pc_lagrange_weight_coefs(n, u, coef);
+        if (st == PC_ECOINCIDENT) pcl_error(L, "%s: argument #1 (params) must be distinct", fn);
+        statuscheck(L, fn, st);
+        lua_createtable(L, n, 0);
+        for (int j = 0; j < n; j++) {
+            /* phi_j = c0 + c1 t + c2 t^2 + ..., terms of zero coefficient left out */
+            int any = 0;
+            for (int i = 0; i < n; i++) {
+                double c = coef[(size_t)j * n + i];
+                if (c == 0) continue;
+                lua_pushnumber(L, c);
+                if (i > 0) {
+                    lua_pushvalue(L, 2);
+                    if (i > 1) {
+                        lua_pushinteger(L, i);
+                        lua_arith(L, LUA_OPPOW);
+                    }
+                    lua_arith(L, LUA_OPMUL);
+                }
+                if (any) lua_arith(L, LUA_OPADD);
+                any = 1;
+            }
+            if (!any) lua_pushnumber(L, 0);
+            lua_rawseti(L, -2, j + 1);
+        }
+        return 1;
     }
     double t = pcl_checknum(L, fn, 2, "t"), w[PC_CURVE_MAXDEG + 1];
     int st = pc_lagrange_weights(n, u, t, w);
@@ -874,15 +909,21 @@ static int i_conic(lua_State *L) {
 
 static int i_arc(lua_State *L) {
     const char *fn = "interp.arc";
-    lua_settop(L, 3);
+    lua_settop(L, 4);
     int n, d;
     double *p = ptlist(L, fn, 1, "points", 2, PC_CURVE_MAXDEG - 2, &n, &d);
     double c2[PC_MAXDIM], cn[PC_MAXDIM];
     pt(L, fn, 2, "C2", d, 1, c2);
-    int two = !lua_isnoneornil(L, 3);
+    /* interp.arc(points, C2 [, Cn] [, params]) */
+    int parg = lua_istable(L, 3) && !pcl_tovalue(L, 3) ? 3 : 4;
+    int two = parg == 4 && !lua_isnoneornil(L, 3);
     if (two) pt(L, fn, 3, "Cn", d, 1, cn);
+    double *u = lua_isnoneornil(L, parg) ? NULL : numlist(L, fn, parg, "params", n);
     int st;
-    return push(L, pc_interp_arc(d, n, p, c2, two ? cn : NULL, &st), st, fn);
+    pc_curve *c = pc_interp_arc_u(d, n, p, u, c2, two ? cn : NULL, &st);
+    if (!c && st == PC_EDOMAIN && u)
+        return pcl_error(L, "%s: argument #%d (params) must increase (one parameter per point, in order)", fn, parg);
+    return push(L, c, st, fn);
 }
 
 static int i_adaptive(lua_State *L) {
@@ -1070,25 +1111,68 @@ static int a_curve(lua_State *L) {
     return push(L, c, st, fn);
 }
 
+/* The optional m and {m =, divisor = "m+1"|"m"|"m-1"} from arg on: m as given or dflt, the
+ * divisor in *d. */
+static lua_Integer mse_opts(lua_State *L, const char *fn, int arg, lua_Integer dflt, lua_Integer lo,
+                            lua_Integer hi, pc_mse_divisor *d) {
+    lua_Integer m = dflt;
+    *d = PC_MSE_DIV_M1;
+    int opt = arg;
+    if (lua_isinteger(L, arg) || (!lua_isnoneornil(L, arg) && !lua_istable(L, arg))) {
+        if (!lua_isinteger(L, arg) || lua_tointeger(L, arg) < lo || lua_tointeger(L, arg) > hi) {
+            lua_pushfstring(L, "a number of samples %I..%I", lo, hi);
+            pcl_argerror_full(L, fn, arg, arg, "m", lua_tostring(L, -1));
+        }
+        m = lua_tointeger(L, arg);
+        opt = arg + 1;
+    }
+    if (lua_isnoneornil(L, opt)) return m;
+    if (!lua_istable(L, opt)) pcl_argerror_full(L, fn, opt, opt, "options", "a table {m =, divisor =}");
+    lua_pushnil(L);
+    while (lua_next(L, opt)) {
+        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
+        if (!k || (strcmp(k, "m") && strcmp(k, "divisor")))
+            pcl_error(L, "%s: unknown option %s (the options are m and divisor)", fn,
+                      k ? k : pcl_shown(L, lua_gettop(L) - 1));
+        lua_pop(L, 1);
+    }
+    lua_getfield(L, opt, "m");
+    if (!lua_isnil(L, -1)) {
+        if (!lua_isinteger(L, -1) || lua_tointeger(L, -1) < lo || lua_tointeger(L, -1) > hi)
+            pcl_error(L, "%s: option m must be a number of samples %d..%d, got %s", fn, (int)lo, (int)hi,
+                      pcl_shown(L, lua_gettop(L)));
+        m = lua_tointeger(L, -1);
+    }
+    lua_getfield(L, opt, "divisor");
+    if (!lua_isnil(L, -1)) {
+        const char *v = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+        if (!strcmp(v, "m+1")) *d = PC_MSE_DIV_M1;
+        else if (!strcmp(v, "m")) *d = PC_MSE_DIV_M;
+        else if (!strcmp(v, "m-1")) *d = PC_MSE_DIV_MMINUS1;
+        else pcl_error(L, "%s: option divisor must be \"m+1\" (the book's), \"m\" or \"m-1\", got %s", fn,
+                       *v ? lua_pushfstring(L, "\"%s\"", v) : pcl_shown(L, lua_gettop(L)));
+    }
+    lua_pop(L, 2);
+    return m;
+}
+
 static int a_mse(lua_State *L) {
     const char *fn = "approx.mse";
-    lua_settop(L, 3);
+    lua_settop(L, 4);
     if (!callable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function of x");
     if (!lua_istable(L, 2)) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 2..64 abscissae");
     int n = (int)luaL_len(L, 2);
     if (n < 2 || n > 64) pcl_argerror_full(L, fn, 2, 2, "nodes", "a list of 2..64 abscissae");
     double *x = numlist(L, fn, 2, "nodes", n);
-    lua_Integer m = 100;
-    if (!lua_isnoneornil(L, 3)) {
-        if (!lua_isinteger(L, 3) || lua_tointeger(L, 3) < 1 || lua_tointeger(L, 3) > 1000000)
-            pcl_argerror_full(L, fn, 3, 3, "m", "a number of samples 1..1000000");
-        m = lua_tointeger(L, 3);
-    }
+    pc_mse_divisor dv;
+    lua_Integer m = mse_opts(L, fn, 3, 100, 1, 1000000, &dv);
     luaref *r = checkfn(L, fn, 1);
     double mse;
     int st = pc_approx_mse(scalar_cb, r, n, x, (int)m, &mse);
     luaref_free(r);
     statuscheck(L, fn, st);
+    if (pc_approx_rescale(mse, (int)m, dv, &mse) != PC_OK)
+        return pcl_error(L, "%s: the divisor m - 1 is 0 for m = 1", fn);
     lua_pushnumber(L, mse);
     return 1;
 }
@@ -1101,18 +1185,15 @@ static int a_optimal_nodes(lua_State *L) {
     if (!lua_isinteger(L, 4) || lua_tointeger(L, 4) < 3 || lua_tointeger(L, 4) > 16)
         pcl_argerror_full(L, fn, 4, 4, "N", "a number of nodes 3..16");
     int N = (int)lua_tointeger(L, 4);
-    lua_Integer m = 100;
-    if (!lua_isnoneornil(L, 5)) {
-        if (!lua_isinteger(L, 5) || lua_tointeger(L, 5) < N || lua_tointeger(L, 5) > 100000)
-            pcl_argerror_full(L, fn, 5, 5, "m", "a number of samples N..100000");
-        m = lua_tointeger(L, 5);
-    }
+    pc_mse_divisor dv;
+    lua_Integer m = mse_opts(L, fn, 5, 100, N, 100000, &dv);
     luaref *r = checkfn(L, fn, 1);
     double x[16], mse;
     int evals;
     int st = pc_approx_optimal_nodes(scalar_cb, r, a, b, N, (int)m, x, &mse, &evals);
     luaref_free(r);
     statuscheck(L, fn, st);
+    pc_approx_rescale(mse, (int)m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
     pushnums(L, N, x);
     lua_pushnumber(L, mse);
     lua_pushinteger(L, evals);

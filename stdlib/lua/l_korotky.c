@@ -429,7 +429,7 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.conic_arc", l_conic_arc, arc_args, "curve, w, kind", "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\"."),
     PCL_FN("korotky.conic_sweep", l_conic_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
     PCL_FN("korotky.dome_rect", l_dome_rect, rect_args, "s", "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses."),
-    PCL_FN("korotky.dome_tri", l_dome_tri, tri_args, "s", "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D); u-isolines are the ellipses parallel to BC."),
+    PCL_FN("korotky.dome_tri", l_dome_tri, tri_args, "s", "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D) over (u, v) in [0, 1]^2 with the plan point A + (B - A) u(1 - v) + (C - A) uv: u-isolines are the ellipses parallel to BC."),
     PCL_END};
 
 void pcl_open_korotky(lua_State *L) {

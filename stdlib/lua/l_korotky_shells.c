@@ -3,8 +3,8 @@
  *   korotky.two_pencils{omega = {g1, g2, g3}, delta = {g1, g2, g3}}  -> 4-D surface (Fig. 1b)
  *   korotky.conic_revolve{A =, B =, nA =, nB =, ridge =}             -> surface (Fig. 3b)
  *   korotky.ridge_shell{U =, R =, V =, T1 =, T2 =, P =, H =, Q =}    -> surface (Fig. 3d)
- *   korotky.conic_elements(arc | {a, b, c, d, e, f})  -> {kind, coef, center, axes, semi,
- *                                                         asymptotes} (Fig. 2c)
+ *   korotky.conic_elements(arc | {a, b, c, d, e, f})  -> the table of c:conic() (Fig. 2c:
+ *                                                         kind, coef, center, axes, semi, ...)
  * A pencil's spanning point g is a 4-D curve or a fixed 4-D point (a vector: the point at
  * infinity of its direction, as the basis point Z of the z axis). */
 #include <math.h>
@@ -15,6 +15,8 @@
 #include "pencils4.h"
 #include "conic_shells.h"
 #include "conic_props.h"
+#include "quadratic.h"
+#include "pcl_books.h"
 
 /* A guide of dimension a->dim: a curve (out->obj), or a fixed point or vector (out->v, the
  * weight snapped by the one rule) when a->lo is 1. */
@@ -162,50 +164,22 @@ static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .ki
                                          .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
                                         PCL_END};
 
-static void push_vectors(lua_State *L, const double (*v)[2]) {
-    lua_createtable(L, 2, 0);
-    for (int i = 0; i < 2; i++) {
-        pcl_pushvector(L, 2, v[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
-}
-
 static int l_conic_elements(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    double *coef = a[0].v;
-    if (a[0].obj) {
-        int st = pc_conic_from_arc(((pc_curve *)a[0].obj)->cp, coef);
-        if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
-        if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1 (arc)");
-    }
-    pc_conic_elements el;
-    int st = pc_conic_elements_of(coef, &el);
+    /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
+     * weights as they are; the same table as c:conic() */
+    pc_conic_info o;
+    int st = a[0].obj ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
     if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1");
-    static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
-    lua_createtable(L, 0, 6);
-    lua_pushstring(L, kinds[el.kind]);
-    lua_setfield(L, -2, "kind");
-    pcl_push_numbers(L, 6, coef);
-    lua_setfield(L, -2, "coef");
-    if (el.central) {
-        pcl_pushpoint(L, 2, el.center);
-        lua_setfield(L, -2, "center");
-        pcl_push_numbers(L, 2, el.semi);
-        lua_setfield(L, -2, "semi");
-    }
-    push_vectors(L, (const double (*)[2])el.axis);
-    lua_setfield(L, -2, "axes");
-    if (el.nasym) {
-        push_vectors(L, (const double (*)[2])el.asym);
-        lua_setfield(L, -2, "asymptotes");
-    }
+    pcl_push_conic_info(L, &o);
     return 1;
 }
 
 static const pcl_fn fns[] = {
-    PCL_FN("korotky.conic_elements", l_conic_elements, elements_args, "{kind, coef, center, axes, semi, asymptotes}", "The conic of a 2-D conic arc (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): its kind, coefficients, centre, unit principal axes (major or transverse first), semi-axes and, for a hyperbola, the unit asymptote directions."),
+    PCL_FN("korotky.conic_elements", l_conic_elements, elements_args, "{kind, coef, center, axes, semi, foci, e, p, asymptotes, ...}", "The conic of a 2-D conic arc with any weights (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): the table of c:conic(): kind, coefficients, centre (a parabola's vertex), unit principal axes (major or transverse first), semi-axes, foci, e, p, a hyperbola's unit asymptote directions, and for an arc mu, w and the engineering discriminant k."),
     PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
     PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
     PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),

@@ -372,8 +372,28 @@ static int l_mul(lua_State *L) {
     return finite_or_error(L, r, "k * A");
 }
 
+/* u / v of two parallel vectors: the number r with u = r v ((2.62)'s (T - A)/(T_C - A)) */
+static int vec_ratio(lua_State *L, const pcl_value *u, const pcl_value *v) {
+    int n = u->n;
+    if (v->n != n) return pcl_error(L, "cannot divide a %d-D vector by a %d-D one (mixed dimensions)", n, v->n);
+    if (fabs(u->h[n]) > PC_WEIGHT_TOL || fabs(v->h[n]) > PC_WEIGHT_TOL)
+        return pcl_error(L, "cannot divide %s by %s: only a vector divides a parallel vector (u/v = r with u = r v; "
+                         "the difference of two points is a vector)", opnd_name(L, 1), opnd_name(L, 2));
+    double r, ang;
+    int st = pc_vec_ratio(n, u->h, v->h, &r, &ang);
+    if (st == PC_EZERO) return pcl_error(L, "division of a vector by the zero vector");
+    if (st == PC_ENOTCOLLINEAR)
+        return pcl_error(L, "cannot divide vectors that are not parallel: they are %s degrees apart "
+                         "(the ratio u/v needs u = r v, within 1e-9)", pcl_pushnum(L, ang * 180 / 3.14159265358979323846));
+    if (st != PC_OK) return pcl_statuserror(L, "/", st, NULL);
+    lua_pushnumber(L, r);
+    return 1;
+}
+
 static int l_div(lua_State *L) {
     pcl_value *p = topt(L, 1);
+    pcl_value *q = topt(L, 2);
+    if (p && q) return vec_ratio(L, p, q);
     if ((!p || lua_type(L, 2) != LUA_TNUMBER) && pcl_eq_hook(L, PCL_EQ_DIV)) return 1;
     if (!p) return pcl_error(L, "cannot divide %s by a point", opnd_name(L, 1));
     if (lua_type(L, 2) != LUA_TNUMBER)
@@ -766,6 +786,7 @@ static pcl_value *check_end(lua_State *L, int arg, const char *what, int n, int 
  * math.huge, math.huge; likewise a line and a line at infinity.  Skew lines (3-D and up): nil
  * and the distance between them (math.huge for a line that misses a line at infinity). */
 static int l_meet(lua_State *L) {
+    if (!(topt(L, 1) && topt(L, 2) && topt(L, 3) && topt(L, 4)) && pcl_eq_hook(L, PCL_EQ_MEET)) return 3;
     pcl_value *a1 = check_end(L, 1, "A1", 0, 0);
     int n = a1->n;
     pcl_value *a2 = check_end(L, 2, "A2", n, 1);

@@ -54,6 +54,13 @@ void pcl_open_complex(lua_State *L); /*   complex mobius (l_complex.c) */
 void pcl_open_surface(lua_State *L);  /* surface.* (l_surface.c) */
 void pcl_open_camera(lua_State *L);   /* camera, drawing curves as paths (l_camera.c) */
 void pcl_open_konopatsky(lua_State *L);  /* conic, oneratio, interp, approx (l_konopatsky.c) */
+void pcl_open_conic_elements(lua_State *L);  /* c:conic(), conic.elements (l_conic_elements.c) */
+void pcl_open_konopatsky_ch1(lua_State *L);  /* konopatsky.*: chapter 1 (l_konopatsky_ch1.c) */
+void pcl_open_konopatsky_schemes(lua_State *L);  /* conic.ed_scheme, five_scheme, ... (l_konopatsky_schemes.c) */
+void pcl_open_konopatsky_triples(lua_State *L);  /* conic.scheme: a table of triples (l_konopatsky_triples.c) */
+void pcl_open_korotky_meet(lua_State *L);  /* korotky.plane_meet (l_korotky_meet.c) */
+void pcl_open_map_more(lua_State *L);  /* map.perspective_pqr, foreshortening, axial_affinity (l_map_more.c) */
+void pcl_open_buimov_more(lua_State *L);  /* buimov.g1_next, buimov.joint (l_buimov_more.c) */
 void pcl_open_expr(lua_State *L);     /* param: point equations (l_expr.c, pcl_expr.h) */
 void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
 void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic surfaces (l_korotky.c) */

@@ -14,7 +14,8 @@
 typedef enum {
     PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM,   /* metamethods (1, 2) */
     PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT, PCL_EQ_CROSS, PCL_EQ_UNIT,
-    PCL_EQ_P, PCL_EQ_V                                          /* P(x, y ...), V(...) */
+    PCL_EQ_P, PCL_EQ_V,                                         /* P(x, y ...), V(...) */
+    PCL_EQ_MEET                                                 /* meet(A1, A2, B1, B2) */
 } pcl_eq_op;
 
 /* 1 if the value at idx is an equation. */
@@ -24,6 +25,9 @@ int pcl_isequation(lua_State *L, int idx);
 int pcl_eq_hook(lua_State *L, pcl_eq_op op);
 /* g(t) of a smoothstep for an equation at idx: push it and return 1; 0 if idx is no equation. */
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g);
+/* c(eq) of a single-piece Bezier curve c at the scalar equation at idx: push the composed
+ * point equation and return 1; 0 if idx is no equation (raises for other curves). */
+int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx);
 /* curve(eq, t0, t1) and surface(eq, u0, u1, v0, v1) with the arguments at 1..3 / 1..5: the
  * core object (its argument errors and the membership condition raised here). */
 pc_curve *pcl_eq_curve(lua_State *L, const char *fname, int *status);

@@ -22,6 +22,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_expr(L);
     pcl_open_simplex(L);
     pcl_open_map(L);
+    pcl_open_map_more(L);
     pcl_open_draw(L);
     pcl_open_qb(L);
     pcl_open_qbscreen(L);
@@ -30,9 +31,15 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_surface(L);
     pcl_open_camera(L);
     pcl_open_konopatsky(L);
+    pcl_open_konopatsky_ch1(L);
+    pcl_open_konopatsky_schemes(L);
+    pcl_open_konopatsky_triples(L);
     pcl_open_params(L);
     pcl_open_korotky(L);
+    pcl_open_korotky_meet(L);
     pcl_open_buimov(L);
+    pcl_open_buimov_more(L);
+    pcl_open_conic_elements(L);   /* after conic (konopatsky) and plane (buimov) */
     pcl_open_curvilinear(L);
     pcl_open_complex(L);
     pcl_open_figure(L);

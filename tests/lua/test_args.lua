@@ -49,7 +49,7 @@ err(function() korotky.elastic(pts, {peices = 2}) end,
 err(function() korotky.poly_spline(pts, {zzz = 1}) end,
     "korotky.poly_spline: unknown option 'zzz' (the options are ends, s0, s1)", "no near key: the known ones")
 err(function() buimov.spline(pts, {colr = 1}) end,
-    "buimov.spline: unknown option 'colr' (the options are ends, d0, d1, param)", "colr where there is no colour")
+    "buimov.spline: unknown option 'colr' (the options are ends, d0, d1, param, lengths)", "colr where there is no colour")
 err(function() korotky.poly_spline(pts, {1}) end,
     "korotky.poly_spline: argument #2 (opts) holds [1]; its options are named (key = value)", "a positional entry")
 err(function() korotky.elastic(pts, {pieces = 9}) end,
@@ -157,7 +157,7 @@ end
 truthy(n >= 60, "the converted files declare their functions (" .. n .. ")")
 
 -- every function of a converted table is declared (converters add their tables here)
-local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "surface"}
+local CONVERTED = {"korotky", "plane", "buimov", "map", "affine", "konopatsky", "surface"}
 for _, t in ipairs(CONVERTED) do
   for k, v in pairs(pointcalc[t]) do
     if type(v) == "function" then truthy(decls[t .. "." .. k], t .. "." .. k .. " has a declaration") end

@@ -104,7 +104,7 @@ same(dcc(0.5), (conic.ed(P(0, 0), P(10, 0), P(4, 6), .3)(.5) + conic.ed(P(0, 0),
      "a constant blend")
 
 -- chapter 4: weights sum to 1, curves through their nodes, the book's numbers
-local w = interp.weights(4, 0.3)
+local w = interp.weights(3, 0.3)                      -- the book's order 3: four nodes
 near(w[1], 77 / 2000, 1e-15, "(4.16) weight 1"); near(w[2], 2079 / 2000, 1e-15, "weight 2")
 local s = 0 for _, x in ipairs(interp.weights({0, 0.2, 0.7, 1}, 0.44)) do s = s + x end
 near(s, 1, 1e-14, "weights sum to 1")

@@ -67,6 +67,12 @@ int pc_book_spline_tangents(int dim, int n, const double *p, const double *tl, p
 pc_curve *pc_curve_book_spline(int dim, int n, const double *p, int chord, pc_book_ends ends,
                                const double *d0, const double *d1, double *tangents,
                                int *status);
+/* The same with the user's segment lengths tl (n - 1 positive values: the parameter runs 0,
+ * t_2, t_2 + t_3, ...; the book's two choices are pc_book_spline_params').  PC_EDOMAIN for a
+ * length <= 0. */
+pc_curve *pc_curve_book_spline_tl(int dim, int n, const double *p, const double *tl,
+                                  pc_book_ends ends, const double *d0, const double *d1,
+                                  double *tangents, int *status);
 
 /* --- the helix (§4.1) and the sphere (§5.1) ------------------------------------------------ */
 /* (a cos t, a sin t, b t), t in [t0, t1]: a FUNC curve with exact derivatives. */
@@ -76,10 +82,22 @@ pc_curve *pc_curve_helix(double a, double b, double t0, double t1, int *status);
  * - sin ph e3): out = S, S_th, S_ph, the twist S_th,ph and N = S_th x S_ph (5 rows of 3;
  * N points inwards, |N| = |sin ph|). */
 void pc_sphere_frame(double th, double ph, double out[15]);
+/* The same on the sphere of centre c and radius r: S = c + r (...), S_th, S_ph and the twist
+ * times r, N times r^2 (issue 24: the twist at a general centre).  PC_EDOMAIN unless r > 0. */
+int pc_sphere_frame_at(const double c[3], double r, double th, double ph, double out[15]);
 /* The patch c + r (cos th sin ph, sin th sin ph, cos ph), th in [th0, th1] (u), ph in
  * [ph0, ph1] (v): a FUNC surface with exact partial derivatives (Fig 5.2 is th in [0, pi/2],
  * ph in [pi/4, pi/2]).  PC_EDOMAIN unless r > 0, th0 < th1, ph0 < ph1. */
 pc_surface *pc_surface_sphere(const double c[3], double r, double th0, double th1, double ph0,
                               double ph1, int *status);
+
+/* §4.3 the G1 joint of Bezier curves: P of degree n and Q of degree m join with
+ * P_n = Q_0 and n (P_n - P_(n-1)) = g m (Q_1 - Q_0) (the print's "gm(g - Q0)" is g m (Q1 - Q0)).
+ * pc_bezier_g1_next: Q_0 and Q_1 of the next curve of degree m for the scalar g > 0 (g = 1: a
+ * C1 joint) from P's control points p (n + 1 rows of dim, Cartesian).  pc_bezier_joint: the
+ * kind of joint of P and Q (rows of dim): 0 none (P_n != Q_0), 1 C0 (a corner), 2 G1 (the
+ * three points collinear, same direction), 3 C1 (g = 1), with g.  Within 1e-9 of the size. */
+int pc_bezier_g1_next(int dim, int n, const double *p, int m, double g, double *q0, double *q1);
+int pc_bezier_joint(int dim, int n, const double *p, int m, const double *q, int *kind, double *g);
 
 #endif

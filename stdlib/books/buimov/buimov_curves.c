@@ -176,22 +176,45 @@ pc_curve *pc_curve_book_spline(int dim, int n, const double *p, int chord, pc_bo
         *status = PC_EDOMAIN;
         return NULL;
     }
-    double *tl = malloc(sizeof(double) * (size_t)n * (2 + (size_t)dim));
+    double *tl = malloc(sizeof(double) * (size_t)n);
     if (!tl) {
         *status = PC_ENOMEM;
         return NULL;
     }
-    double *u = tl + n, *tg = u + n;
     pc_curve *c = NULL;
     *status = pc_book_spline_params(dim, n, p, chord, tl);
-    if (*status == PC_OK) *status = pc_book_spline_tangents(dim, n, p, tl, ends, d0, d1, tg);
+    if (*status == PC_OK) c = pc_curve_book_spline_tl(dim, n, p, tl, ends, d0, d1, tangents, status);
+    free(tl);
+    return c;
+}
+
+pc_curve *pc_curve_book_spline_tl(int dim, int n, const double *p, const double *tl,
+                                  pc_book_ends ends, const double *d0, const double *d1,
+                                  double *tangents, int *status) {
+    if (dim < 1 || dim > PC_MAXDIM || n < 2 || n > 10000000) {
+        *status = PC_EDOMAIN;
+        return NULL;
+    }
+    for (int k = 0; k < n - 1; k++)
+        if (!isfinite(tl[k]) || !(tl[k] > 0)) {
+            *status = isfinite(tl[k]) ? PC_EDOMAIN : PC_ENONFINITE;
+            return NULL;
+        }
+    double *u = malloc(sizeof(double) * (size_t)n * (1 + (size_t)dim));
+    if (!u) {
+        *status = PC_ENOMEM;
+        return NULL;
+    }
+    double *tg = u + n;
+    pc_curve *c = NULL;
+    *status = pc_book_spline_tangents(dim, n, p, tl, ends, d0, d1, tg);
     if (*status == PC_OK) {
         u[0] = 0;
         for (int k = 1; k < n; k++) u[k] = u[k - 1] + tl[k - 1];
         c = pc_curve_hermite(dim, n, p, tg, NULL, u, 0, status);
         if (c && tangents) memcpy(tangents, tg, sizeof(double) * (size_t)n * dim);
     }
-    free(tl);
+    free(u);
     return c;
 }
 
@@ -223,4 +246,48 @@ pc_curve *pc_curve_helix(double a, double b, double t0, double t1, int *status) 
     pc_curve *c = pc_curve_func(3, t0, t1, 0, helix_eval, free, ab, status);
     if (!c) free(ab);
     return c;
+}
+
+int pc_bezier_g1_next(int dim, int n, const double *p, int m, double g, double *q0, double *q1) {
+    if (dim < 1 || dim > PC_MAXDIM || n < 1 || m < 1) return PC_EDIM;
+    if (!isfinite(g)) return PC_ENONFINITE;
+    if (!(g > 0)) return PC_EDOMAIN;
+    const double *pn = p + (size_t)n * dim, *pm = pn - dim;
+    for (int k = 0; k < dim; k++) {
+        if (!isfinite(pn[k]) || !isfinite(pm[k])) return PC_ENONFINITE;
+        q0[k] = pn[k];
+        q1[k] = pn[k] + n * (pn[k] - pm[k]) / (g * m);   /* Q1 - Q0 = n (Pn - Pn-1)/(g m) */
+    }
+    return PC_OK;
+}
+
+int pc_bezier_joint(int dim, int n, const double *p, int m, const double *q, int *kind, double *g) {
+    if (dim < 1 || dim > PC_MAXDIM || n < 1 || m < 1) return PC_EDIM;
+    const double *pn = p + (size_t)n * dim, *pm = pn - dim, *q1 = q + dim;
+    double size = 0, gap = 0, u[PC_MAXDIM], v[PC_MAXDIM], uu = 0, uv = 0, vv = 0;
+    for (int k = 0; k < dim; k++) {
+        size = fmax(size, fmax(fabs(pn[k] - pm[k]), fabs(q1[k] - q[k])));
+        gap = fmax(gap, fabs(pn[k] - q[k]));
+        u[k] = n * (pn[k] - pm[k]);     /* P'(1) */
+        v[k] = m * (q1[k] - q[k]);      /* Q'(0) */
+        uu += u[k] * u[k], uv += u[k] * v[k], vv += v[k] * v[k];
+    }
+    *g = NAN;
+    if (gap > 1e-9 * fmax(size, 1)) {
+        *kind = 0;
+        return PC_OK;
+    }
+    if (!(uu > 0) || !(vv > 0)) {     /* a zero end derivative: no tangent to compare */
+        *kind = 1;
+        return PC_OK;
+    }
+    double gg = uv / vv, off = 0;
+    for (int k = 0; k < dim; k++) off = fmax(off, fabs(u[k] - gg * v[k]));
+    if (gg > 0 && off <= 1e-9 * sqrt(uu)) {
+        *g = gg;
+        *kind = fabs(gg - 1) <= 1e-9 ? 3 : 2;
+    } else {
+        *kind = 1;
+    }
+    return PC_OK;
 }

@@ -17,6 +17,21 @@ void pc_sphere_frame(double th, double ph, double out[15]) {
     memcpy(out, v, sizeof v);
 }
 
+int pc_sphere_frame_at(const double c[3], double r, double th, double ph, double out[15]) {
+    if (!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2]) || !isfinite(r) || !isfinite(th) ||
+        !isfinite(ph))
+        return PC_ENONFINITE;
+    if (!(r > 0)) return PC_EDOMAIN;
+    pc_sphere_frame(th, ph, out);
+    /* S = c + r S1: the derivatives and the twist scale by r, N = S_th x S_ph by r^2 */
+    for (int j = 0; j < 3; j++) {
+        out[j] = c[j] + r * out[j];
+        for (int row = 1; row <= 3; row++) out[3 * row + j] *= r;
+        out[12 + j] *= r * r;
+    }
+    return PC_OK;
+}
+
 static int sphere_eval(void *ud, double u, double v, int order, double *out) {
     const double *s = ud;                       /* centre, radius */
     double f[15];

@@ -208,6 +208,64 @@ static void put_row(double *row, double x, double y, double w) {
     row[2] = w;
 }
 
+/* ---- the book's parameter on the rational pieces ------------------------------------------
+ * A rational quadratic piece of the circle (cos, sin) over [m - h, m + h] with weights
+ * (1, cos h, 1) reaches the angle m + x at its own parameter s with tan(x/2) = tan(h/2)(2s - 1);
+ * the hyperbola's (ch, sh) piece with weights (1, ch h, 1) likewise with tanh.  The affine image
+ * keeps the relation, so evaluating the piece at s(theta) gives the book's point at theta
+ * exactly, and the conic stays the rational curve it is (issue 24: before this the piece's
+ * parameter was taken for the angle, up to 0.92 degrees off between the quarter turns). */
+typedef struct {
+    pc_curve *pieces;   /* BEZIER of degree 2, breakpoints = the book's parameter */
+    int hyper;          /* 1: tanh, 0: tan */
+} reparam;
+
+static void reparam_free(void *ud) {
+    reparam *r = ud;
+    pc_curve_release(r->pieces);
+    free(r);
+}
+
+static int reparam_eval(void *ud, double th, int order, double *out) {
+    const reparam *r = ud;
+    const pc_curve *b = r->pieces;
+    int nseg = b->nknots - 1, i = 0;
+    while (i < nseg - 1 && th > b->knots[i + 1]) i++;
+    double k0 = b->knots[i], k1 = b->knots[i + 1], h = (k1 - k0) / 2, x = th - (k0 + h);
+    /* s = (1 + g(x/2)/g(h/2))/2 with g = tan or tanh; s' and s'' from g' = 1 +- g^2 */
+    double g = r->hyper ? tanh(x / 2) : tan(x / 2), gh = r->hyper ? tanh(h / 2) : tan(h / 2);
+    double dg = r->hyper ? 1 - g * g : 1 + g * g;                  /* d g / d(x/2) */
+    double s = (1 + g / gh) / 2, s1 = dg / (4 * gh);
+    double s2 = (r->hyper ? -1 : 1) * g * dg / (4 * gh);
+    if (!isfinite(s)) return PC_ENONFINITE;
+    double tau = k0 + 2 * h * s, t1 = 2 * h * s1, t2 = 2 * h * s2, hb[9];
+    int st = pc_curve_eval_h(b, tau, order, hb);
+    if (st != PC_OK) return st;
+    for (int k = 0; k < 3; k++) {
+        out[k] = hb[k];
+        if (order >= 1) out[3 + k] = hb[3 + k] * t1;
+        if (order >= 2) out[6 + k] = hb[6 + k] * t1 * t1 + hb[3 + k] * t2;
+    }
+    return PC_OK;
+}
+
+/* The FUNC curve over the pieces' breakpoints that evaluates piece i at s(theta); takes pc. */
+static pc_curve *reparam_curve(pc_curve *pc, int hyper, int closed, int *status) {
+    if (!pc) return NULL;
+    reparam *r = malloc(sizeof *r);
+    if (!r) {
+        pc_curve_release(pc);
+        *status = PC_ENOMEM;
+        return NULL;
+    }
+    r->pieces = pc;
+    r->hyper = hyper;
+    pc_curve *cv = pc_curve_func_breaks(2, pc->t0, pc->t1, closed, pc->nknots - 2, pc->knots + 1,
+                                        reparam_eval, reparam_free, r, status);
+    if (!cv) reparam_free(r);
+    return cv;
+}
+
 pc_curve *pc_curve_ellipse(const double c[2], double A, double B, double th0, double th1,
                            int *status) {
     if (!finite2(c) || !isfinite(A) || !isfinite(B) || !isfinite(th0) || !isfinite(th1)) {
@@ -238,7 +296,7 @@ pc_curve *pc_curve_ellipse(const double c[2], double A, double B, double th0, do
     pc_curve *cv = pc_curve_bezier_pieces(2, 2, nseg, cp, brk, status);
     free(cp);
     free(brk);
-    return cv;
+    return reparam_curve(cv, 0, fabs(th1 - th0 - 2 * PI) < 1e-12, status);
 }
 
 pc_curve *pc_curve_parabola(double A, double th0, double th1, int *status) {
@@ -292,7 +350,7 @@ pc_curve *pc_curve_hyperbola(double A, double B, double t0, double t1, int *stat
     pc_curve *cv = pc_curve_bezier_pieces(2, 2, nseg, cp, brk, status);
     free(cp);
     free(brk);
-    return cv;
+    return reparam_curve(cv, 1, 0, status);
 }
 
 pc_curve *pc_curve_arc3(const double p1[2], const double p2[2], const double p3[2], int *status) {

@@ -29,6 +29,13 @@ int pc_approx_mse(pc_scalar_fn f, void *ud, int N, const double *x, int m, doubl
     return PC_OK;
 }
 
+int pc_approx_rescale(double mse, int m, pc_mse_divisor d, double *out) {
+    double div = d == PC_MSE_DIV_M ? m : d == PC_MSE_DIV_MMINUS1 ? m - 1 : m + 1;
+    if (!(div > 0)) return PC_EDOMAIN;
+    *out = mse * (m + 1) / div;
+    return PC_OK;
+}
+
 typedef struct {
     pc_scalar_fn f;
     void *ud;

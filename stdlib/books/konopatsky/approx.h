@@ -12,6 +12,13 @@
  * printed 0.0000284 for Runge; digest §3.2).  PC_ENONFINITE if f gives NaN. */
 int pc_approx_mse(pc_scalar_fn f, void *ud, int N, const double *x, int m, double *mse);
 
+/* The divisor of the SSE over the m + 1 samples: the book's m + 1 (a mean, the default), or m,
+ * or m - 1 (for comparison with other reports; digest §3.2: SSE/m gives "0.0000287").  The
+ * optimal nodes do not depend on it. */
+typedef enum { PC_MSE_DIV_M1, PC_MSE_DIV_M, PC_MSE_DIV_MMINUS1 } pc_mse_divisor;
+/* mse (divided by m + 1) re-divided by d; PC_EDOMAIN for m - 1 = 0. */
+int pc_approx_rescale(double mse, int m, pc_mse_divisor d, double *out);
+
 /* The optimal nodes: x_1 = a and x_N = b fixed, the N-2 inner nodes ordered in (a, b) through
  * x = a + (b - a) cumsum(softmax(0, z)) and the MSE minimised over z by Nelder-Mead from three
  * starts (uniform, Chebyshev-like, clustered to the middle), each restarted from its best

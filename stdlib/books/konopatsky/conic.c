@@ -382,3 +382,19 @@ pc_curve *pc_triples_conic(int dim, const double *a1, const double *a2, const do
     if (!cv) free(s);
     return cv;
 }
+
+int pc_ceva_to_ed(double k, double *out) {
+    if (!isfinite(k)) return PC_ENONFINITE;
+    if (!(k > 0)) return PC_EDOMAIN;
+    double r = sqrt(k);
+    *out = 2 * r / (1 + 2 * r);
+    return PC_OK;
+}
+
+int pc_ed_to_ceva(double k, double *out) {
+    if (!isfinite(k)) return PC_ENONFINITE;
+    if (!(k > 0 && k < 1)) return PC_EDOMAIN;
+    double r = k / (2 * (1 - k));
+    *out = r * r;
+    return PC_OK;
+}

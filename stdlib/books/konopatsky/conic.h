@@ -52,6 +52,11 @@ pc_curve *pc_conic_ed3(int dim, const double *a, const double *kpt, const double
  * (1, 1/2, k) on A2, A3, A1.  k = 1/4 parabola, k < 1/4 hyperbola, k > 1/4 ellipse. */
 pc_curve *pc_conic_ceva(int dim, const double *a1, const double *a2, const double *a3, double k,
                         int *status);
+/* §2.1.7's relation to §2.1.6 (digest §5.7): the arc meets the median at t = 1/(1 + sqrt k),
+ * so k_ED = 2 sqrt k/(1 + 2 sqrt k) and k = (k_ED/(2(1 - k_ED)))^2; Ceva's 1/4 is ED's 1/2.
+ * PC_EDOMAIN for a Ceva k <= 0 or an ED k outside (0, 1) (no arc inside the triangle). */
+int pc_ceva_to_ed(double k_ceva, double *k_ed);
+int pc_ed_to_ceva(double k_ed, double *k_ceva);
 /* (2.100) k = v31/v23 of the conic of the pencil through a fifth point K:
  * K1 = A1K x A2A3, K2 = A2K x A3A1, v23 = (A2A3K1), v31 = (A3A1K2). */
 int pc_conic_ceva_k(int dim, const double *a1, const double *a2, const double *a3,

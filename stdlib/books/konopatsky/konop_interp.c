@@ -29,10 +29,39 @@ int pc_lagrange_weights(int n, const double *params, double t, double *w) {
     return PC_OK;
 }
 
+int pc_lagrange_weight_coefs(int n, const double *params, double *coef) {
+    if (n < 1 || n > MAXN) return PC_EDIM;
+    for (int j = 0; j < n; j++) {
+        /* phi_j = prod_{m != j} (t - t_m)/(t_j - t_m), multiplied out factor by factor */
+        double *c = coef + (size_t)j * n, tj = params ? params[j] : (n > 1 ? (double)j / (n - 1) : 0);
+        for (int i = 0; i < n; i++) c[i] = i == 0;
+        int deg = 0;
+        for (int m = 0; m < n; m++) {
+            if (m == j) continue;
+            double tm = params ? params[m] : (double)m / (n - 1);
+            if (!isfinite(tm) || !isfinite(tj)) return PC_ENONFINITE;
+            if (tj == tm) return PC_ECOINCIDENT;
+            double k = 1 / (tj - tm);
+            for (int i = deg + 1; i >= 0; i--)
+                c[i] = ((i > 0 ? c[i - 1] : 0) - tm * (i <= deg ? c[i] : 0)) * k;
+            deg++;
+        }
+    }
+    return PC_OK;
+}
+
 pc_curve *pc_interp_arc(int dim, int p, const double *pts, const double *c2, const double *cn,
                         int *status) {
+    return pc_interp_arc_u(dim, p, pts, NULL, c2, cn, status);
+}
+
+pc_curve *pc_interp_arc_u(int dim, int p, const double *pts, const double *params,
+                          const double *c2, const double *cn, int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     if (p < 2 || p > PC_CURVE_MAXDEG - 1) return fail(status, PC_EDOMAIN);
+    if (params)
+        for (int j = 0; j < p; j++)
+            if (!isfinite(params[j]) || (j > 0 && !(params[j] > params[j - 1]))) return fail(status, PC_EDOMAIN);
     int N = cn ? p + 1 : p, nc = N + 1;            /* degree, control points */
     double *cp = calloc((size_t)nc * (size_t)(dim + 1), sizeof(double));
     int *known = calloc((size_t)nc, sizeof(int));
@@ -56,7 +85,8 @@ pc_curve *pc_interp_arc(int dim, int p, const double *pts, const double *c2, con
         if (!known[i]) idx[nu++] = i;
     /* Bernstein values at the interior nodes u_j = j/(p - 1), j = 1..p-2 */
     for (int j = 1; j <= p - 2; j++) {
-        double u = (double)j / (p - 1), binom = 1;
+        /* the node's place on the Bezier's own [0, 1] */
+        double u = params ? (params[j] - params[0]) / (params[p - 1] - params[0]) : (double)j / (p - 1), binom = 1;
         for (int i = 0; i <= N; i++) {
             if (i > 0) binom = binom * (N - i + 1) / i;
             bern[(size_t)(j - 1) * nc + i] = binom * pow(1 - u, N - i) * pow(u, i);
@@ -76,7 +106,8 @@ pc_curve *pc_interp_arc(int dim, int p, const double *pts, const double *c2, con
     }
     for (int i = 0; i < nc; i++) CP(i, dim) = 1;
 #undef CP
-    pc_curve *cv = st ? fail(status, st) : pc_curve_bezier(dim, nc, cp, status);
+    double brk[2] = {params ? params[0] : 0, params ? params[p - 1] : 1};
+    pc_curve *cv = st ? fail(status, st) : pc_curve_bezier_pieces(dim, N, 1, cp, brk, status);
     free(cp), free(known), free(m), free(bern);
     return cv;
 }

@@ -13,12 +13,20 @@
  * (4.10), (4.16), (4.21), (4.25), (4.28) are these for n = 3..7).  PC_ECOINCIDENT for
  * repeated params. */
 int pc_lagrange_weights(int n, const double *params, double t, double *w);
+/* The same weights as polynomials in t, as the Maple program of §4.8 prints them (collect(e,
+ * SM)): coef row j (n numbers) holds phi_j = sum_i coef[j n + i] t^i.  Errors as above. */
+int pc_lagrange_weight_coefs(int n, const double *params, double *coef);
 
 /* §4.9 Interpolation contour arc: the Bezier curve through the p >= 2 points (at uniform
  * u = (j - 1)/(p - 1)) with the tangent handles c2 (M'(0) = N (c2 - M1)) and cn (M'(1) =
  * N (Mp - cn)); cn NULL keeps the start tangent only.  Degree N = p + 1 (two tangents) or p. */
 pc_curve *pc_interp_arc(int dim, int p, const double *pts, const double *c2, const double *cn,
                         int *status);
+/* The same at the node parameters params (p increasing values; NULL: uniform): the curve runs
+ * over [params[0], params[p-1]] and passes M_j at params[j].  PC_EDOMAIN when they do not
+ * increase. */
+pc_curve *pc_interp_arc_u(int dim, int p, const double *pts, const double *params,
+                          const double *c2, const double *cn, int *status);
 
 /* §4.10 Adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) from coordinate `axis` (0-based) of
  * the nodes.  PC_ECOINCIDENT if x_1 = x_n, PC_EDOMAIN if v does not increase (the book's

@@ -3,51 +3,12 @@
 #include "conic_props.h"
 #include <math.h>
 #include <string.h>
-#include "linalg.h"
+#include "quadratic.h"
 
 int pc_conic_from_arc(const double *cp, double coef[6]) {
-    for (int i = 0; i < 9; i++)
-        if (!isfinite(cp[i])) return PC_ENONFINITE;
-    /* M = [U W V] as columns; the middle row of cp is w W, so divide the weight back out
-     * (its scale only scales beta, which C accounts for with w) */
-    double M[9], w;
-    const double *U = cp, *Wh = cp + 3, *V = cp + 6;
-    if (U[2] == 0 || V[2] == 0) return PC_EDOMAIN;
-    /* w W: a finite W has weight w (so w = Wh[2]); at infinity w is the length given to the
-     * direction, which only scales beta: take W = Wh itself and w = 1 */
-    double Wn[3];
-    if (Wh[2] != 0) {
-        w = Wh[2];
-        for (int k = 0; k < 3; k++) Wn[k] = Wh[k] / w;
-    } else {
-        w = 1;
-        memcpy(Wn, Wh, sizeof Wn);
-    }
-    for (int r = 0; r < 3; r++) {
-        M[3 * r + 0] = U[r] / U[2];
-        M[3 * r + 1] = Wn[r];
-        M[3 * r + 2] = V[r] / V[2];
-    }
-    double det = M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) +
-                 M[2] * (M[3] * M[7] - M[4] * M[6]);
-    double scale = 0;
-    for (int i = 0; i < 9; i++) scale = fmax(scale, fabs(M[i]));
-    if (!(fabs(det) > 1e-13 * scale * scale * scale)) return PC_ECOLLINEAR;
-    /* N = M^-1 (adjugate / det): rows give alpha, beta, gamma of a homogeneous point */
-    double N[9] = {M[4] * M[8] - M[5] * M[7], M[2] * M[7] - M[1] * M[8], M[1] * M[5] - M[2] * M[4],
-                   M[5] * M[6] - M[3] * M[8], M[0] * M[8] - M[2] * M[6], M[2] * M[3] - M[0] * M[5],
-                   M[3] * M[7] - M[4] * M[6], M[1] * M[6] - M[0] * M[7], M[0] * M[4] - M[1] * M[3]};
-    for (int i = 0; i < 9; i++) N[i] /= det;
-    /* beta^2 - 4 w^2 alpha gamma: Q = N^T C N, C = [0 0 -2w^2; 0 1 0; -2w^2 0 0] */
-    double Q[9], k = -2 * w * w;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            Q[3 * i + j] = N[3 + i] * N[3 + j] + k * (N[i] * N[6 + j] + N[6 + i] * N[j]);
-    double c6[6] = {Q[0], 2 * Q[1], Q[4], 2 * Q[2], 2 * Q[5], Q[8]}, m = 0;
-    for (int i = 0; i < 6; i++) m = fmax(m, fabs(c6[i]));
-    if (!(m > 0) || !isfinite(m)) return PC_EDOMAIN;
-    for (int i = 0; i < 6; i++) coef[i] = c6[i] / m;
-    return PC_OK;
+    /* the kernel's conic of the homogeneous control points: the weights as they are, so an
+     * arc whose end weights are not 1 (or not positive) is read right (quadratic.h) */
+    return pc_conic_coef_rquad(cp, coef);
 }
 
 /* Unit eigenvectors of the symmetric [p r; r q] for its eigenvalues l[0], l[1]. */

@@ -9,10 +9,10 @@
 #include "plane_curves.h"
 
 /* The implicit equation of the plane arc with the homogeneous control points cp (3 rows of
- * 3: U, w W, V, as pc_conic_arc_cp writes them; W may be at infinity).  In the barycentric
- * coordinates (alpha, beta, gamma) of the triangle U, W, V the arc is beta^2 = 4 w^2 alpha
- * gamma (B.3 step 5, the bitangent pencil L_U L_V - mu L_UV^2 with mu = 1/(4 w^2)), so
- * Q = M^-T C M^-1 with M = [U W V]; coef is scaled to a largest entry of 1.  PC_ECOLLINEAR
+ * 3: U, w W, V, as pc_conic_arc_cp writes them; W may be at infinity, any weight may differ
+ * from 1).  In the barycentric coordinates (alpha, beta, gamma) of the triangle U, W, V the arc
+ * is beta^2 = 4 w^2 alpha gamma (B.3 step 5, the bitangent pencil L_U L_V - mu L_UV^2 with
+ * mu = 1/(4 w^2)): the kernel's pc_conic_coef_rquad (quadratic.h).  PC_ECOLLINEAR
  * when U, W, V are collinear (w = 0 is the chord, a double line: also PC_ECOLLINEAR),
  * PC_ENONFINITE for NaN/inf. */
 int pc_conic_from_arc(const double *cp, double coef[6]);

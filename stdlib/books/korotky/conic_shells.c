@@ -17,11 +17,6 @@ static int at(const pc_curve *c, double s, double *h) {
     return pc_curve_eval_h(c, c->t0 + s * (c->t1 - c->t0), 0, h);
 }
 
-/* The rational quadratic arc's value at v in [0, 1] from its control rows. */
-static void arc_value(const double *cp, double v, double *out) {
-    double b0 = (1 - v) * (1 - v), b1 = 2 * v * (1 - v), b2 = v * v;
-    for (int k = 0; k < 4; k++) out[k] = b0 * cp[k] + b1 * cp[4 + k] + b2 * cp[8 + k];
-}
 
 /* ---- the rotational sweep (Fig. 3b) --------------------------------------------------------- */
 
@@ -34,7 +29,7 @@ static void revolve_free(void *ud) {
 }
 
 /* The generator's control rows for the ridge parameter u. */
-static int revolve_arc(const revolve *r, double u, double *cp) {
+static int revolve_arc(const revolve *r, double u, double *cp, double *w) {
     double h[4], T[3], ab[3], at_[3], nPi[3], t[2][3];
     int st = at(r->l, u, h);
     if (st != PC_OK) return st;
@@ -58,15 +53,15 @@ static int revolve_arc(const revolve *r, double u, double *cp) {
         if (dot3(t[j], side) < 0)
             for (int k = 0; k < 3; k++) t[j][k] = -t[j][k];
     }
-    double w;
-    return pc_conic_arc_cp(3, r->A, t[0], r->B, t[1], T, cp, &w);
+    return pc_conic_arc_cp(3, r->A, t[0], r->B, t[1], T, cp, w);
 }
 
 static int revolve_eval(void *ud, double u, double v, int order, double *out) {
     if (order > 0) return PC_EDOMAIN;
     double cp[12];
-    int st = revolve_arc(ud, u, cp);
-    if (st == PC_OK) arc_value(cp, v, out);
+    double w;
+    int st = revolve_arc(ud, u, cp, &w);
+    if (st == PC_OK) pc_conic_arc_value(3, cp, w, v, out);
     return st;
 }
 
@@ -161,7 +156,7 @@ static int ridge_eval(void *ud, double u, double v, int order, double *out) {
     int st = second ? pc_conic_arc_cp(3, pt[G_R], tH, pt[G_V], tQ, pt[G_T2], cp, &w)
                     : pc_conic_arc_cp(3, pt[G_U], tP, pt[G_R], tH, pt[G_T1], cp, &w);
     if (st != PC_OK) return st;
-    arc_value(cp, second ? v - 1 : v, out);
+    pc_conic_arc_value(3, cp, w, second ? v - 1 : v, out);
     return PC_OK;
 }
 

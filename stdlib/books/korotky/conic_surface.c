@@ -96,6 +96,19 @@ int pc_conic_arc_cp(int dim, const double *U, const double *tU, const double *V,
                 N[0][2] * (N[1][0] * N[2][1] - N[1][1] * N[2][0])) / D;
     }
     double al = x[0], be = x[1], ga = x[2];
+    if (Wh[2] != 0 && fabs(al) <= 1e-12 && fabs(ga) <= 1e-12) {
+        /* T = W: alpha = gamma = 0, w = beta/(2 sqrt(alpha gamma)) is infinite.  The limit
+         * is the line pair U W V, the degenerate hyperbola AOD of Fig. 3c (digest B.3 step 3,
+         * B.6 (3c)); cp holds U, W, V as points and pc_conic_arc_value walks the two sides */
+        for (int i = 0; i < dim; i++) {
+            cp[i] = U[i];
+            cp[dim + 1 + i] = U[i] + Wh[0] * e1[i] + Wh[1] * e2[i];
+            cp[2 * (dim + 1) + i] = V[i];
+        }
+        cp[dim] = cp[2 * dim + 1] = cp[3 * dim + 2] = 1;
+        *w = INFINITY;
+        return PC_OK;
+    }
     if (!(al > 0) || !(ga > 0)) return PC_EDOMAIN;
     double ww = be / (2 * sqrt(al * ga));
     if (!(ww > -1)) return PC_EDOMAIN;
@@ -112,15 +125,43 @@ int pc_conic_arc_cp(int dim, const double *U, const double *tU, const double *V,
     return PC_OK;
 }
 
+void pc_conic_arc_value(int dim, const double *cp, double w, double v, double *out) {
+    const double *a = cp, *b = cp + dim + 1;
+    if (isinf(w)) {          /* the line pair: U -> W over [0, 1/2], W -> V over [1/2, 1] */
+        double s = 2 * v;
+        if (v > 0.5) a = b, b = cp + 2 * (dim + 1), s = 2 * v - 1;
+        for (int k = 0; k <= dim; k++) out[k] = a[k] + (b[k] - a[k]) * s;
+        return;
+    }
+    double b0 = (1 - v) * (1 - v), b1 = 2 * v * (1 - v), b2 = v * v;
+    for (int k = 0; k <= dim; k++) out[k] = b0 * cp[k] + b1 * cp[dim + 1 + k] + b2 * cp[2 * (dim + 1) + k];
+}
+
 pc_curve *pc_conic_arc(int dim, const double *U, const double *tU, const double *V,
                        const double *tV, const double *T, double *w, int *status) {
-    double cp[3 * (PC_MAXDIM + 1)];
+    double cp[5 * (PC_MAXDIM + 1)];
     *status = pc_conic_arc_cp(dim, U, tU, V, tV, T, cp, w);
     if (*status != PC_OK) return NULL;
+    if (isinf(*w)) {
+        /* the limit of the arcs as T -> W: two straight pieces U W, W V, kept as quadratic
+         * Bezier pieces (middle points at the midpoints) over 0, 1/2, 1 */
+        double *r = cp;
+        for (int k = 0; k <= dim; k++) {
+            double u = r[k], wv = r[dim + 1 + k], vv = r[2 * (dim + 1) + k];
+            r[k] = u;
+            r[dim + 1 + k] = (u + wv) / 2;
+            r[2 * (dim + 1) + k] = wv;
+            r[3 * (dim + 1) + k] = (wv + vv) / 2;
+            r[4 * (dim + 1) + k] = vv;
+        }
+        const double brk[3] = {0, 0.5, 1};
+        return pc_curve_bezier_pieces(dim, 2, 2, cp, brk, status);
+    }
     return pc_curve_bezier(dim, 3, cp, status);
 }
 
 const char *pc_conic_kind(double w) {
+    if (isinf(w)) return "line pair";
     if (fabs(w) <= 1e-12) return "segment";
     if (fabs(fabs(w) - 1) <= 1e-12) return "parabola";
     return fabs(w) < 1 ? "ellipse" : "hyperbola";
@@ -156,8 +197,7 @@ static int sweep_eval(void *ud, double u, double v, int order, double *out) {
     double cp[12], w;
     int st = pc_conic_arc_cp(3, pt[0], tan[0], pt[1], tan[1], pt[2], cp, &w);
     if (st != PC_OK) return st;
-    double b0 = (1 - v) * (1 - v), b1 = 2 * v * (1 - v), b2 = v * v;
-    for (int k = 0; k < 4; k++) out[k] = b0 * cp[k] + b1 * cp[4 + k] + b2 * cp[8 + k];
+    pc_conic_arc_value(3, cp, w, v, out);
     return PC_OK;
 }
 

@@ -15,15 +15,22 @@
  * they are parallel, then W is the direction), T = alpha U + beta W + gamma V, and the weight
  * is w = beta / (2 sqrt(alpha gamma)).  cp gets the three homogeneous control rows (dim + 1
  * each: U, w W, V), *w the weight (|w| < 1 ellipse, 1 parabola, > 1 hyperbola, 0 the chord).
+ * T = W (the degenerate section AOD of Fig. 3c): *w = +inf, the limit of the arcs, and cp holds
+ * U, W, V as points (weight 1): the line pair U W V, which pc_conic_arc_value walks.
  * PC_ECOINCIDENT for U = V, PC_EZERO for a zero tangent, PC_ESKEW when a tangent leaves the
  * plane of U, V, T, PC_EDOMAIN when T is not between the tangent lines (alpha gamma <= 0) or
  * the arc would pass through infinity (w <= -1). */
 int pc_conic_arc_cp(int dim, const double *U, const double *tU, const double *V,
                     const double *tV, const double *T, double *cp, double *w);
-/* The same arc as a curve over [0, 1]. */
+/* The homogeneous value (dim + 1) at v in [0, 1] of the arc cp, w of pc_conic_arc_cp: the
+ * rational quadratic, or for w = inf the line pair (U -> W over [0, 1/2], W -> V after). */
+void pc_conic_arc_value(int dim, const double *cp, double w, double v, double *out);
+/* The same arc as a curve over [0, 1]; for T = W the two straight pieces U W, W V (quadratic
+ * Bezier pieces over 0, 1/2, 1) with *w = inf. */
 pc_curve *pc_conic_arc(int dim, const double *U, const double *tU, const double *V,
                        const double *tV, const double *T, double *w, int *status);
-/* "ellipse", "parabola", "hyperbola" or "segment" for a weight (within 1e-12). */
+/* "ellipse", "parabola", "hyperbola", "segment" or "line pair" (w = inf) for a weight
+ * (within 1e-12). */
 const char *pc_conic_kind(double w);
 
 /* The conic sweep (B-2): for each u in [0, 1] the arc through U(u), V(u), T(u) tangent to the

@@ -1,0 +1,40 @@
+/* The symbolic method of §2.2 (digest konopatsky_ch1_2.md §5.9): a table of collinear triples
+ * (each one line of a ruler construction) becomes its construction.  Given the known points and
+ * a current point running on the line of two of them, every other point is found as the meet of
+ * two lines of the table whose other points are already known, in an order the planner finds;
+ * the curve of the result point is evaluated step by step with homogeneous meets.  The two
+ * 7-line systems of Baluba (Fig. 2.28) are two such tables; any determinate table works. */
+#ifndef PC_KONOP_TRIPLES_H
+#define PC_KONOP_TRIPLES_H
+
+#include "curve.h"
+
+#define PC_TRIPLES_MAXPTS 32
+#define PC_TRIPLES_MAXTRI 64
+
+typedef struct { int x, a, b, c, d; } pc_triple_step;   /* X = ab x cd */
+
+typedef struct {
+    int npts, nsteps;
+    pc_triple_step step[PC_TRIPLES_MAXPTS];
+    int cur, cur_a, cur_b;     /* the current point cur = cur_a t' + cur_b t */
+    int result;
+} pc_triples_plan;
+
+/* The construction of `result` from the triples tri (ntri rows of 3 point indices < npts) with
+ * the points known[i] != 0 given and cur on the line cur_a cur_b (both known).  Each step meets
+ * two lines of the table that share only the new point.  PC_EDOMAIN when the table does not
+ * determine result this way (or names a point outside npts), PC_EDIM for sizes beyond the limits. */
+int pc_triples_plan_make(int npts, int ntri, const int (*tri)[3], const unsigned char *known,
+                         int cur, int cur_a, int cur_b, int result, pc_triples_plan *plan);
+
+/* The curve of the plan's result over [t0, t1] for the known points' coordinates pts (npts rows
+ * of dim; rows of unknown points ignored): a FUNC curve (derivatives by differences); where a
+ * meet is undefined at some t the evaluation fails there.  The curve copies the data. */
+pc_curve *pc_triples_curve(const pc_triples_plan *plan, int dim, const double *pts, double t0,
+                           double t1, int *status);
+/* One evaluation: every point of the plan at t (npts rows of dim + 1, homogeneous; the known
+ * ones as given).  PC_EDOMAIN where a meet is undefined. */
+int pc_triples_eval(const pc_triples_plan *plan, int dim, const double *pts, double t, double *all);
+
+#endif

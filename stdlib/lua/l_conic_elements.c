@@ -1,0 +1,247 @@
+/* Conics that know what they are (geom/quadratic.h) in Lua:
+ *   c:conic()                              the conic a 2-D curve lies on
+ *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f} | {points =, tangents =})
+ *   plane.conic_slope(coef, X)             dy/dx of an implicit conic at its point
+ * both -> {kind, circle, discriminant, coef, center, vertex, axes, semi, a, b, foci, e, p,
+ *          asymptotes, mu, w, k, k_ceva}
+ * pcl_push_conic_info is shared with korotky.conic_elements. */
+#include <math.h>
+#include <string.h>
+#include "pcl.h"
+#include "pcl_curve.h"
+#include "pcl_point.h"
+#include "pcl_args.h"
+#include "pcl_books.h"
+#include "quadratic.h"
+
+static void setnum(lua_State *L, const char *k, double v) {
+    if (isnan(v)) return;     /* undefined for this conic: the field is absent */
+    lua_pushnumber(L, v + 0.0);
+    lua_setfield(L, -2, k);
+}
+
+static void setpair(lua_State *L, const char *k, const double v[2][2], int n, int point) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        if (point) pcl_pushpoint(L, 2, v[i]);
+        else pcl_pushvector(L, 2, v[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, k);
+}
+
+void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
+    static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
+    lua_createtable(L, 0, 20);
+    lua_pushstring(L, kinds[o->kind]);
+    lua_setfield(L, -2, "kind");
+    lua_pushboolean(L, o->circle);
+    lua_setfield(L, -2, "circle");
+    setnum(L, "discriminant", o->disc);
+    lua_createtable(L, 6, 0);
+    for (int i = 0; i < 6; i++) {
+        lua_pushnumber(L, o->coef[i] + 0.0);   /* no -0 in the listing */
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, "coef");
+    if (o->central) {
+        pcl_pushpoint(L, 2, o->center);
+        lua_setfield(L, -2, "center");
+        lua_createtable(L, 2, 0);
+        for (int i = 0; i < 2; i++) {
+            lua_pushnumber(L, o->semi[i]);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, "semi");
+        setnum(L, "a", o->semi[0]);
+        setnum(L, "b", o->semi[1]);
+    } else {
+        pcl_pushpoint(L, 2, o->vertex);
+        lua_setfield(L, -2, "vertex");
+    }
+    setpair(L, "axes", o->axis, 2, 0);
+    setpair(L, "foci", o->focus, o->nfoci, 1);
+    setnum(L, "e", o->ecc);
+    setnum(L, "p", o->param);
+    if (o->nasym) setpair(L, "asymptotes", o->asym, 2, 0);
+    setnum(L, "mu", o->mu);
+    setnum(L, "w", o->w);
+    setnum(L, "k", o->k_ed);
+    setnum(L, "k_ceva", o->k_ceva);
+}
+
+/* The message for a status of pc_curve_conic / pc_conic_info_*. */
+static int conic_error(lua_State *L, int st, int dim) {
+    switch (st) {
+    case PC_EDIM:
+        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
+    case PC_ENOTCOLLINEAR:
+        return pcl_fail(L, "the curve does not lie on one conic");
+    case PC_ECOLLINEAR:
+        return pcl_fail(L, "the points are a straight line (a middle weight 0, or collinear points): no conic");
+    case PC_EDOMAIN:
+        return pcl_fail(L, "a degenerate conic (a line pair, parallel lines, or no real points)");
+    default:
+        return pcl_raise_status(L, pcl_name(L), st);
+    }
+}
+
+static int conic_of_curve(lua_State *L, pc_curve *c) {
+    pc_conic_info o;
+    pcl_callback_state(L);
+    int st = pc_curve_conic(c, &o);
+    if (st != PC_OK) return conic_error(L, st, c->dim);
+    pcl_push_conic_info(L, &o);
+    return 1;
+}
+
+static int c_conic(lua_State *L) {
+    pc_curve *c = pcl_read(L, NULL, 0);
+    return conic_of_curve(L, c);
+}
+
+/* {points = {P, ...}, tangents = {{P, V}, ...}} at 1 (points on top of the stack): five
+ * conditions, a tangent at a point given among the points or not */
+static int conditions(lua_State *L, double coef[6]) {
+    double rows[30];
+    int nr = 0;
+    int pts = lua_gettop(L);
+    if (!lua_istable(L, pts)) return pcl_fail(L, "field points must be a list of points");
+    lua_getfield(L, 1, "tangents");
+    int tg = lua_gettop(L);
+    if (!lua_isnil(L, tg) && !lua_istable(L, tg))
+        return pcl_fail(L, "field tangents must be a list of {point, direction} pairs");
+    lua_pushnil(L);
+    while (lua_next(L, 1)) {
+        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
+        if (!k || (strcmp(k, "points") && strcmp(k, "tangents")))
+            return pcl_fail(L, "unknown field %s (the fields are points and tangents)", k ? k : "of a number index");
+        lua_pop(L, 1);
+    }
+    int np = (int)lua_rawlen(L, pts), nt = lua_isnil(L, tg) ? 0 : (int)lua_rawlen(L, tg);
+    if (np + nt != 5)
+        return pcl_fail(L, "five conditions fix a conic, got %d points and %d tangents", np, nt);
+    for (int i = 0; i < np; i++) {
+        lua_geti(L, pts, i + 1);
+        pcl_value *v = pcl_tovalue(L, -1);
+        if (!v || v->n != 2 || fabs(v->h[2] - 1) > PC_WEIGHT_TOL)
+            return pcl_fail(L, "points[%d] must be a 2-D point, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+        pc_conic_row_point(v->h[0], v->h[1], rows + 6 * nr++);
+        lua_pop(L, 1);
+    }
+    for (int i = 0; i < nt; i++) {
+        lua_geti(L, tg, i + 1);
+        int pair = lua_gettop(L);
+        lua_geti(L, pair, 1);
+        lua_geti(L, pair, 2);
+        pcl_value *p = pcl_tovalue(L, -2), *d = pcl_tovalue(L, -1);
+        if (!lua_istable(L, pair) || !p || !d || p->n != 2 || d->n != 2 || fabs(p->h[2] - 1) > PC_WEIGHT_TOL ||
+            fabs(d->h[2]) > PC_WEIGHT_TOL)
+            return pcl_fail(L, "tangents[%d] must be {a 2-D point, a 2-D vector}", i + 1);
+        pc_conic_row_tangent(p->h[0], p->h[1], d->h[0], d->h[1], rows + 6 * nr++);
+        lua_settop(L, pair - 1);
+    }
+    return pc_conic_coef_conditions(rows, coef);
+}
+
+/* plane.conic_slope(coef, X): dy/dx of the implicit conic at its point X (declared) */
+static int l_slope(lua_State *L) {
+    double q[6];
+    pcl_val a[2] = {{.list = q, .cap = 6}};
+    PCL_READ(L, a);
+    const double *x = a[1].v;
+    double v = pc_conic_eq(q, x[0], x[1]), g = hypot(2 * q[0] * x[0] + q[1] * x[1] + q[3], q[1] * x[0] + 2 * q[2] * x[1] + q[4]);
+    if (fabs(v) > 1e-9 * fmax(g, 1) * fmax(1, hypot(x[0], x[1])))
+        return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
+    double sl;
+    int st = pc_conic_slope(q, x[0], x[1], &sl);
+    if (st == PC_EPOLE) {
+        lua_pushnumber(L, HUGE_VAL);   /* a vertical tangent */
+        return 1;
+    }
+    if (st == PC_EZERO) return pcl_fail(L, "X is a singular point of the curve (both partial derivatives are 0)");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    lua_pushnumber(L, sl);
+    return 1;
+}
+
+static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
+static const pcl_fn plane_fns[] = {
+    PCL_FN("plane.conic_slope", l_slope, slope_args, "slope",
+           "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
+    PCL_END};
+
+static int l_elements(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    pc_curve *c = pcl_tocurve(L, 1);
+    if (c) return conic_of_curve(L, c);
+    pc_conic_info o;
+    int st;
+    if (lua_istable(L, 1) && (lua_getfield(L, 1, "points"), !lua_isnil(L, -1))) {
+        st = conditions(L, o.coef);
+        if (st == PC_ECOLLINEAR) return pcl_fail(L, "the conditions do not fix one conic (they are dependent)");
+        if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
+    } else if (lua_istable(L, 1)) {
+        lua_pop(L, 1);
+        if (lua_rawlen(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
+        double q[6];
+        for (int i = 0; i < 6; i++) {
+            lua_geti(L, 1, i + 1);
+            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+                return pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+            q[i] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        st = pc_conic_info_coef(q, &o);
+    } else if (pcl_tovalue(L, 1)) {
+        /* five points, each read by the one point rule */
+        static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};
+        double pts[10], q[6];
+        for (int i = 0; i < 5; i++) {
+            pcl_val v = {0};
+            pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v);
+            pts[2 * i] = v.v[0], pts[2 * i + 1] = v.v[1];
+        }
+        st = pc_conic_coef_five(pts, q);
+        if (st == PC_ECOLLINEAR)
+            return pcl_fail(L, "the five points fix no single conic (four of them are collinear, or two coincide)");
+        if (st == PC_OK) st = pc_conic_info_coef(q, &o);
+    } else {
+        return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
+                           pcl_shown(L, 1));
+    }
+    if (st != PC_OK) return conic_error(L, st, 2);
+    pcl_push_conic_info(L, &o);
+    return 1;
+}
+
+static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
+static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, {.name = "B", .kind = PCL_ANY, .flags = PCL_OPT},
+                                  {.name = "C", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "D", .kind = PCL_ANY, .flags = PCL_OPT},
+                                  {.name = "E", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
+static const pcl_fn conic_fns[] = {
+    {.name = "conic.elements", .fn = l_elements, .args = el_args,
+     .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements",
+     .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
+    PCL_END};
+static const pcl_fn method_fns[] = {
+    {.name = "c:conic", .fn = c_conic, .self = self_curve, .selftype = "curve",
+     .result = "{kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
+     .help = "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc with finite control points also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic."},
+    PCL_END};
+
+/* After pcl_open_curves and pcl_open_konopatsky, with the module table on top. */
+void pcl_open_conic_elements(lua_State *L) {
+    int module = lua_gettop(L);
+    pcl_private(L, module);
+    lua_getfield(L, -1, "curve_methods");
+    pcl_register(L, lua_gettop(L), method_fns, 0);
+    lua_settop(L, module);
+    lua_getfield(L, module, "conic");
+    pcl_register(L, lua_gettop(L), conic_fns, 0);
+    lua_settop(L, module);
+    lua_getfield(L, module, "plane");
+    if (lua_istable(L, -1)) pcl_register(L, lua_gettop(L), plane_fns, 0);
+    lua_settop(L, module);
+}

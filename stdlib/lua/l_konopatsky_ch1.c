@@ -1,0 +1,207 @@
+/* Konopatsky's chapter 1 in Lua (books/konopatsky/konop_ch1.h), the table konopatsky, declared
+ * on the argument layer:
+ *   area_k(l1, l2, l3) -> k                          (1.2)
+ *   area_theorem(A1, A2, A3, B1, B2, B3) -> {k, lambda, a, b, c, collinear}
+ *   o_theorem({A1, ..., Am}, D1, D2) -> product, ratios, B   (1.4), B homogeneous points
+ *   simplex_ratio({{p1, q1, r1}, ...}) -> det          S- and V-theorems
+ *   meet_line_plane(A1, A2, P1, P2, P3) -> K, lambda, p, q   (§1.3.5 by the V-theorem)
+ *   polar(C, A, B, rho, phi) -> M                     (2.117)/(2.118)
+ *   rotate(C, A, B, phi) -> Q                         (2.138)
+ *   moving_simplex(NA, NB, NC, gen) -> surface        Fig. 1.2
+ */
+#include <math.h>
+#include "pcl_args.h"
+#include "pcl_curve.h"
+#include "pcl_point.h"
+#include "konop_ch1.h"
+
+/* the Cartesian coordinates of k declared points into out (rows of n) */
+static void rows(const pcl_val *a, int k, int n, double *out) {
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < n; j++) out[i * n + j] = a[i].v[j];
+}
+
+static int k_area_k(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double k;
+    if (pc_k_area_k(a[0].x, a[1].x, a[2].x, &k) != PC_OK)
+        return pcl_fail(L, "a lambda is -1 (its point is at infinity): k is undefined");
+    lua_pushnumber(L, k);
+    return 1;
+}
+
+static int k_area_theorem(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    double p[6 * PC_MAXDIM];
+    rows(a, 6, n, p);
+    pc_k_areas o;
+    int st = pc_k_area_theorem(n, p, p + 3 * n, &o);
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle A1A2A3 is flat");
+    if (st == PC_ENOTCOLLINEAR) return pcl_fail(L, "each Bi must lie on its side line (B1 on A1A2, B2 on A2A3, B3 on A3A1)");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    lua_createtable(L, 0, 6);
+    lua_pushnumber(L, o.k);
+    lua_setfield(L, -2, "k");
+    pcl_push_numbers(L, 3, o.lambda);
+    lua_setfield(L, -2, "lambda");
+    static const char *abc[3] = {"a", "b", "c"};
+    for (int i = 0; i < 3; i++) {
+        lua_pushnumber(L, o.abc[i]);
+        lua_setfield(L, -2, abc[i]);
+    }
+    lua_pushboolean(L, o.collinear);
+    lua_setfield(L, -2, "collinear");
+    return 1;
+}
+
+static int k_o_theorem(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    int m = a[0].n, n = a[0].dim;
+    if (a[1].n != n) return pcl_fail(L, "argument #2 (D1) is %d-D, but the polygon is %d-D (mixed dimensions)", a[1].n, n);
+    double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
+    double d[2 * PC_MAXDIM];
+    rows(a + 1, 2, n, d);
+    int st = pc_k_o_theorem(n, m, a[0].list, d, d + n, r, b, &prod);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "the line D1D2 passes through a vertex");
+    if (st == PC_ESKEW || st == PC_ESAME_LINE)
+        return pcl_fail(L, "the line D1D2 must lie in the polygon's plane and be no side line");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    lua_pushnumber(L, prod);
+    pcl_push_numbers(L, m, r);
+    lua_createtable(L, m, 0);
+    for (int i = 0; i < m; i++) {
+        const double *h = b + (size_t)(n + 1) * i;
+        if (h[n] == 0) pcl_pushvector(L, n, h);
+        else pcl_pushpoint(L, n, h);
+        lua_rawseti(L, -2, i + 1);
+    }
+    return 3;
+}
+
+static int k_simplex_ratio(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of k + 1 rows of barycentric parameters, got %s", pcl_shown(L, 1));
+    int d = (int)lua_rawlen(L, 1);
+    if (d < 2 || d > 9) return pcl_argfail(L, 1, "must hold 2 to 9 rows, got %d", d);
+    double m[81];
+    for (int i = 0; i < d; i++) {
+        lua_geti(L, 1, i + 1);
+        if (!lua_istable(L, -1) || (int)lua_rawlen(L, -1) != d)
+            return pcl_argfail(L, 1, "[%d] must be a list of %d numbers (a square matrix)", i + 1, d);
+        for (int j = 0; j < d; j++) {
+            lua_geti(L, -1, j + 1);
+            if (lua_type(L, -1) != LUA_TNUMBER)
+                return pcl_argfail(L, 1, "[%d][%d] must be a number, got %s", i + 1, j + 1, pcl_shown(L, lua_gettop(L)));
+            m[d * i + j] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+    }
+    double r;
+    int st = pc_k_simplex_ratio(d - 1, m, &r);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "each row's parameters must sum to 1 (the membership condition)");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    lua_pushnumber(L, r);
+    return 1;
+}
+
+static int k_meet_line_plane(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    if (n < 3) return pcl_fail(L, "a line and a plane meet in 3-D or more, got %d-D points", n);
+    double p[5 * PC_MAXDIM], k[PC_MAXDIM + 1], lam, pq[2];
+    rows(a, 5, n, p);
+    int st = pc_k_meet_line_plane(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, k, &lam, pq);
+    switch (st) {
+    case PC_OK:
+        pcl_pushpoint(L, n, k);
+        lua_pushnumber(L, lam);
+        lua_pushnumber(L, pq[0]);
+        lua_pushnumber(L, pq[1]);
+        return 4;
+    case PC_IMPROPER:      /* parallel: the common point at infinity, as meet() gives it */
+        pcl_pushvector(L, n, k);
+        lua_pushnumber(L, lam);
+        return 2;
+    case PC_ESAME_LINE: return pcl_fail(L, "the line A1A2 lies in the plane P1P2P3: no single meet");
+    case PC_ESKEW: return pcl_fail(L, "the line A1A2 and the plane P1P2P3 do not meet (they span more than 3-D)");
+    case PC_ECOINCIDENT: return pcl_fail(L, "A1 and A2 coincide: no line");
+    case PC_ECOLLINEAR: return pcl_fail(L, "P1, P2, P3 are collinear: no plane");
+    default: return pcl_fail(L, "%s", pc_strerror(st));
+    }
+}
+
+static int polar_common(lua_State *L, int rotate) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    double p[3 * PC_MAXDIM], m[PC_MAXDIM];
+    rows(a, 3, n, p);
+    double rho = rotate ? pc_dist(n, p, p + n) : a[3].x, phi = rotate ? a[3].x : a[4].x;
+    int st = pc_k_polar(n, p, p + n, p + 2 * n, rho, phi, m);
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "C, A, B are collinear (or coincide): no plane, no angle");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    pcl_pushpoint(L, n, m);
+    return 1;
+}
+
+static int k_polar(lua_State *L) { return polar_common(L, 0); }
+static int k_rotate(lua_State *L) { return polar_common(L, 1); }
+
+static int k_moving_simplex(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    pc_curve *c[4] = {a[0].obj, a[1].obj, a[2].obj, a[3].obj};
+    int st;
+    pc_surface *s = pc_k_moving_simplex(c[0], c[1], c[2], c[3], &st);
+    if (!s && st == PC_EDIM)
+        return pcl_fail(L, "the guides must have one dimension (%d-D, %d-D, %d-D) and the generator gen must be 2-D (its coordinates are p and q), got %d-D",
+                        c[0]->dim, c[1]->dim, c[2]->dim, c[3]->dim);
+    if (!s && st == PC_EDOMAIN)
+        return pcl_fail(L, "the guides must run over one domain of u (NA over [%s, %s])", pcl_pushnum(L, c[0]->t0),
+                        pcl_pushnum(L, c[0]->t1));
+    if (!s) return pcl_fail(L, "%s", pc_strerror(st));
+    pcl_pushsurface(L, s, "konopatsky.moving_simplex");
+    return 1;
+}
+
+#define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
+static const pcl_arg lambdas[] = {A_NUM("l1"), A_NUM("l2"), A_NUM("l3"), PCL_END};
+static const pcl_arg six[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), SAMEPT("B1"), SAMEPT("B2"), SAMEPT("B3"), PCL_END};
+static const pcl_arg o_args[] = {A_POINTS("polygon", 0, 3, 64), A_POINT("D1", 0), {.name = "D2", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, PCL_END};
+static const pcl_arg rows_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
+static const pcl_arg lp_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("P1"), SAMEPT("P2"), SAMEPT("P3"), PCL_END};
+static const pcl_arg polar_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
+static const pcl_arg rotate_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"), PCL_END};
+static const pcl_arg ms_args[] = {A_CURVE("NA", 0), A_CURVE("NB", 0), A_CURVE("NC", 0), A_CURVE("gen", 0), PCL_END};
+
+static const pcl_fn fns[] = {
+    PCL_FN("konopatsky.area_k", k_area_k, lambdas, "k",
+           "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
+    PCL_FN("konopatsky.area_theorem", k_area_theorem, six, "{k, lambda, a, b, c, collinear}",
+           "(1.2) for B1 on A1A2, B2 on A2A3, B3 on A3A1, any dimension: the signed area ratio k, lambda_i = (AiA(i+1)Bi), the proof's a = (B1A1A2) = -1/(1 + l1), b, c; collinear is corollary 1 (k = 0, Menelaus l1 l2 l3 = -1). B3 = A3 gives k = ab (corollary 2), B1 = A1 and B3 = A3 give k = -b (corollary 3)."),
+    PCL_FN("konopatsky.o_theorem", k_o_theorem, o_args, "product, ratios, B",
+           "(1.4) The O-theorem: Bi = AiA(i+1) x D1D2 (B at infinity for a side parallel to d), ratios (AiA(i+1)Bi) and their product, (-1)^m with the closing factor (A_m A_1 B_m) the print omits."),
+    {.name = "konopatsky.simplex_ratio", .fn = k_simplex_ratio, .args = rows_args, .result = "ratio",
+     .sig = "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio",
+     .help = "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected)."},
+    PCL_FN("konopatsky.meet_line_plane", k_meet_line_plane, lp_args, "K, lambda, p, q",
+           "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet."),
+    PCL_FN("konopatsky.polar", k_polar, polar_args, "M",
+           "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
+    PCL_FN("konopatsky.rotate", k_rotate, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
+    PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface",
+           "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
+    PCL_END};
+
+void pcl_open_konopatsky_ch1(lua_State *L) {
+    lua_newtable(L);
+    pcl_register(L, -1, fns, 0);
+    lua_setfield(L, -2, "konopatsky");
+}

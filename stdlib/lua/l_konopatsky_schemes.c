@@ -1,0 +1,222 @@
+/* The scheme points of the monograph (books/konopatsky/konop_schemes.h) in Lua, declared on the
+ * argument layer:
+ *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
+ *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
+ *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
+ *   conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}            (2.105)
+ *   conic.focal_point(C, A, B, phi [, kind]) -> M, F, pa, pb         (2.17), (2.55)
+ *   conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p
+ *   conic.cones_excluded(fP, fQ) -> {u, ...}                        §2.6 (2.148), (2.151), (2.153)
+ *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
+ * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
+#include "pcl_args.h"
+#include "pcl_point.h"
+#include "konop_schemes.h"
+#include "conic.h"
+
+static void push_rows(lua_State *L, int dim, const double *h, int n, const char *const *names) {
+    lua_createtable(L, 0, n);
+    for (int i = 0; i < n; i++) {
+        const double *r = h + (size_t)(dim + 1) * i;
+        if (r[dim] == 0) {
+            pcl_pushvector(L, dim, r);
+        } else {
+            double x[PC_MAXDIM];
+            for (int k = 0; k < dim; k++) x[k] = r[k] / r[dim];
+            pcl_pushpoint(L, dim, x);
+        }
+        lua_setfield(L, -2, names[i]);
+    }
+}
+
+static int scheme_error(lua_State *L, int st, const char *flat) {
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "%s", flat);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "a meet of the scheme is undefined at this parameter (its lines coincide)");
+    return pcl_fail(L, "%s", pc_strerror(st));
+}
+
+/* the Cartesian coordinates of k declared points into out (rows of n) */
+static void rows(const pcl_val *a, int k, int n, double *out) {
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < n; j++) out[i * n + j] = a[i].v[j];
+}
+
+static int l_ed_scheme(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    double p[3 * PC_MAXDIM], o[PC_ED_NPTS * (PC_MAXDIM + 1)];
+    rows(a, 3, n, p);
+    if (a[3].x == 0) return pcl_argfail(L, 4, "must not be 0 (the arc collapses to C)");
+    int st = pc_conic_ed_scheme(n, p, p + n, p + 2 * n, a[3].x, a[4].x, o);
+    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
+    static const char *names[PC_ED_NPTS] = {"T1", "K", "T", "N", "P", "Q", "M"};
+    push_rows(L, n, o, PC_ED_NPTS, names);
+    return 1;
+}
+
+static int l_five_scheme(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    int n = a[0].n;
+    double p[5 * PC_MAXDIM], o[PC_P5_NPTS * (PC_MAXDIM + 1)];
+    rows(a, 5, n, p);
+    int st = pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, a[5].x, o);
+    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
+    static const char *names[PC_P5_NPTS] = {"S", "U", "V", "M", "U_B", "U_D", "R", "U_E"};
+    push_rows(L, n, o, PC_P5_NPTS, names);
+    return 1;
+}
+
+static int l_smooth_scheme(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n, n = (int)a[3].x;
+    double abc[3 * PC_MAXDIM];
+    rows(a, 3, d, abc);
+    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
+    double *p = buf, *q = buf + n * d, *m = q + n * d;
+    int st = pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m);
+    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
+    lua_createtable(L, 0, 3);
+    const char *side[2] = {"P", "Q"};
+    for (int s2 = 0; s2 < 2; s2++) {
+        lua_createtable(L, n, 0);
+        for (int i = 0; i < n; i++) {
+            pcl_pushpoint(L, d, (s2 ? q : p) + i * d);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, side[s2]);
+    }
+    pcl_pushpoint(L, d, m);
+    lua_setfield(L, -2, "M");
+    return 1;
+}
+
+static int l_cones_excluded(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    double u[5];
+    int n, st = pc_cones_excluded(a[0].x, a[1].x, u, &n);
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    pcl_push_numbers(L, n, u);
+    return 1;
+}
+
+static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
+
+static int l_foci(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n;
+    double p[3 * PC_MAXDIM], f1[PC_MAXDIM], f2[PC_MAXDIM], e, fp;
+    rows(a, 3, d, p);
+    int st = pc_conic_foci(d, p, p + d, p + 2 * d, a[3].n == 1, f1, f2, &e, &fp);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()");
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "a semi-axis is zero (A or B coincides with C)");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    pcl_pushpoint(L, d, f1);
+    pcl_pushpoint(L, d, f2);
+    lua_pushnumber(L, e);
+    lua_pushnumber(L, fp);
+    return 4;
+}
+
+static int l_focal_point(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n, hyp = a[4].n == 1;
+    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], pab[2];
+    rows(a, 3, d, p);
+    int st = pc_conic_focal_point(d, p, p + d, p + 2 * d, hyp, a[3].x, o, pab);
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "CA and CB must be perpendicular semi-axes%s", hyp ? "" : ", CA the major one (the foci on it)");
+    if (st == PC_EPOLE) return pcl_fail(L, "phi = %s is an asymptote's direction (1 - e cos phi = 0)", pcl_pushnum(L, a[3].x));
+    if (st != PC_OK) return scheme_error(L, st, "a semi-axis is zero");
+    pcl_pushpoint(L, d, o);
+    pcl_pushpoint(L, d, o + d);
+    lua_pushnumber(L, pab[0]);
+    lua_pushnumber(L, pab[1]);
+    return 4;
+}
+
+static int l_ceva_scheme(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n;
+    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], t3, r;
+    rows(a, 3, d, p);
+    int st = pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, a[3].x, a[4].x, o, &t3, &r);
+    if (st == PC_EDOMAIN) return pcl_argfail(L, 4, "must not be 0");
+    if (st == PC_EPOLE) return pcl_fail(L, "the arc is at infinity at t = %s", pcl_pushnum(L, a[4].x));
+    if (st != PC_OK) return scheme_error(L, st, "A1, A2, A3 are collinear");
+    lua_createtable(L, 0, 4);
+    pcl_pushpoint(L, d, o);
+    lua_setfield(L, -2, "M3");
+    pcl_pushpoint(L, d, o + d);
+    lua_setfield(L, -2, "M");
+    lua_pushnumber(L, t3);
+    lua_setfield(L, -2, "t3");
+    lua_pushnumber(L, r);
+    lua_setfield(L, -2, "r");
+    return 1;
+}
+
+static int conv(lua_State *L, int to_ed) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    double r;
+    int st = to_ed ? pc_ceva_to_ed(a[0].x, &r) : pc_ed_to_ceva(a[0].x, &r);
+    if (st == PC_EDOMAIN)
+        return pcl_argfail(L, 1, to_ed ? "must be a positive Ceva k, got %s" : "must be an engineering discriminant in (0, 1), got %s",
+                           pcl_pushnum(L, a[0].x));
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    lua_pushnumber(L, r);
+    return 1;
+}
+static int l_ceva_to_ed(lua_State *L) { return conv(L, 1); }
+static int l_ed_to_ceva(lua_State *L) { return conv(L, 0); }
+
+#define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
+static const pcl_arg ed_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("k"), A_NUM("u"), PCL_END};
+static const pcl_arg five_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), SAMEPT("E"), A_NUM("u"), PCL_END};
+static const pcl_arg smooth_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_INT("n", 1, 40), A_NUM("t"), PCL_END};
+static const pcl_arg f_args[] = {A_NUM("fP"), A_NUM("fQ"), PCL_END};
+static const pcl_arg foci_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"),
+                                    {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
+static const pcl_arg focal_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"),
+                                     {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
+static const pcl_arg ceva_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
+static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
+
+static const pcl_fn conic_fns[] = {
+    PCL_FN("conic.ed_scheme", l_ed_scheme, ed_args, "{T1, K, T, N, P, Q, M}",
+           "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
+    PCL_FN("conic.five_scheme", l_five_scheme, five_args, "{S, U, V, M, U_B, U_D, R, U_E}",
+           "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
+    PCL_FN("conic.ceva_to_ed", l_ceva_to_ed, k_args, "k_ed",
+           "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
+    PCL_FN("conic.ed_to_ceva", l_ed_to_ceva, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
+    PCL_FN("conic.ceva_scheme", l_ceva_scheme, ceva_args, "{M3, M, t3, r}",
+           "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
+    PCL_FN("conic.focal_point", l_focal_point, focal_args, "M, F, pa, pb",
+           "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.foci", l_foci, foci_args, "F1, F2, e, p",
+           "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
+    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}",
+           "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_END};
+static const pcl_fn oneratio_fns[] = {
+    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}",
+           "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
+    PCL_END};
+
+/* After pcl_open_konopatsky, with the module table on top. */
+void pcl_open_konopatsky_schemes(lua_State *L) {
+    lua_getfield(L, -1, "conic");
+    pcl_register(L, lua_gettop(L), conic_fns, 0);
+    lua_pop(L, 1);
+    lua_getfield(L, -1, "oneratio");
+    pcl_register(L, lua_gettop(L), oneratio_fns, 0);
+    lua_pop(L, 1);
+}

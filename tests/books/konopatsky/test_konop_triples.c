@@ -1,0 +1,72 @@
+/* The symbolic method of §2.2 (konop_triples.h): Baluba's two 7-line systems of Fig. 2.28 as
+ * tables; (b) against the corrected construction of conic.h (pc_triples_conic), (a) Pascal's
+ * on the conic through A1..A5; an indeterminate table refused. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include "konop_triples.h"
+#include "conic.h"
+#include "quadratic.h"
+
+#define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
+
+enum { A1, A2, A3, A4, A5, PA, PB, PC, PM, NPTS };
+
+static const double PTS[NPTS * 2] = {0, 0, 1.2, 2.1, 3, 2.9, 4.6, 1.8, 5, 0};
+
+static void test_system_b(void **state) {
+    (void)state;
+    const int tri[7][3] = {{A1, PA, PB}, {A2, PB, PC}, {A3, A2, PA}, {A4, A5, PA},
+                           {A5, A1, PC}, {PM, A3, PB}, {PM, A4, PC}};
+    unsigned char known[NPTS] = {1, 1, 1, 1, 1, 0, 0, 0, 0};
+    pc_triples_plan plan;
+    assert_int_equal(pc_triples_plan_make(NPTS, 7, tri, known, PC, A1, A5, PM, &plan), PC_OK);
+    assert_int_equal(plan.nsteps, 3);              /* A, B, M */
+    assert_int_equal(plan.step[0].x, PA);
+    int st;
+    pc_curve *c = pc_triples_curve(&plan, 2, PTS, 0.05, 0.95, &st);
+    pc_curve *ref = pc_triples_conic(2, PTS, PTS + 2, PTS + 4, PTS + 6, PTS + 8, 0.05, 0.95, &st);
+    assert_non_null(c);
+    assert_non_null(ref);
+    for (double t = 0.1; t < 0.9; t += 0.1) {
+        double x[2], y[2];
+        assert_int_equal(pc_curve_eval(c, t, x), PC_OK);
+        assert_int_equal(pc_curve_eval(ref, t, y), PC_OK);
+        NEAR(x[0], y[0], 1e-10);
+        NEAR(x[1], y[1], 1e-10);
+    }
+    pc_curve_release(c);
+    pc_curve_release(ref);
+}
+
+static void test_system_a(void **state) {
+    (void)state;
+    /* Pascal: the hexagon A1 A2 A3 A4 A5 M cut by the line A C B; C runs on A3A4 */
+    const int tri[7][3] = {{A1, A2, PA}, {A2, A3, PB}, {A3, A4, PC}, {A4, A5, PA},
+                           {A5, PM, PB}, {PM, A1, PC}, {PA, PC, PB}};
+    unsigned char known[NPTS] = {1, 1, 1, 1, 1, 0, 0, 0, 0};
+    pc_triples_plan plan;
+    assert_int_equal(pc_triples_plan_make(NPTS, 7, tri, known, PC, A3, A4, PM, &plan), PC_OK);
+    double q[6];
+    assert_int_equal(pc_conic_coef_five(PTS, q), PC_OK);
+    double all[NPTS * 3];
+    int checked = 0;
+    for (double t = -0.8; t < 2; t += 0.35) {
+        if (pc_triples_eval(&plan, 2, PTS, t, all) != PC_OK) continue;
+        const double *m = all + PM * 3;
+        if (m[2] == 0) continue;
+        NEAR(pc_conic_eq(q, m[0] / m[2], m[1] / m[2]), 0, 1e-10);
+        checked++;
+    }
+    assert_true(checked >= 6);
+    /* an indeterminate table: M only on one line */
+    const int bad[2][3] = {{A1, A2, PA}, {PM, A1, PC}};
+    assert_int_equal(pc_triples_plan_make(NPTS, 2, bad, known, PC, A3, A4, PM, &plan), PC_EDOMAIN);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_system_b), cmocka_unit_test(test_system_a)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
