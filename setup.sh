@@ -3,10 +3,11 @@
 # As root the missing ones are installed with apt-get; otherwise the exact command is printed.
 set -e
 PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux libmicrohttpd-dev libcairo2-dev libpango1.0-dev libfontconfig-dev fonts-cmu fonts-dejavu-core"
-# what the install and gallery-page tests use (man -l, luarocks make, cpack's dpkg-shlibdeps, a
-# headless browser; the print-look tests: poppler-utils, ghostscript, librsvg2-bin): installed as
-# root like the rest; without root a missing one is only noted
-TEST_PKGS="man-db luarocks dpkg-dev chromium poppler-utils ghostscript librsvg2-bin"
+# what the install, notebook and gallery-page tests use (man -l, luarocks make, cpack's
+# dpkg-shlibdeps, completion in bash and zsh, Jupyter's client and kernel libraries, a
+# headless browser; the print-look tests: poppler-utils, ghostscript, librsvg2-bin): installed
+# as root like the rest; without root a missing one is only noted
+TEST_PKGS="man-db luarocks dpkg-dev chromium poppler-utils ghostscript librsvg2-bin bash-completion zsh groff-base python3-ipykernel python3-jupyter-client jupyter-client"
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "ok installed"; }
 missing=""
 for p in $PKGS; do

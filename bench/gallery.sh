@@ -9,7 +9,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 render() {  # render JOBS: renders into $out/JOBS and prints the wall time in seconds
     start=$(date +%s.%N)
-    PC_JOBS=$1 sh examples/render_gallery.sh "$pc" "$out/$1" >/dev/null || exit 1
+    PC_JOBS=$1 PC_GALLERY_PDF=0 sh examples/render_gallery.sh "$pc" "$out/$1" >/dev/null || exit 1
     end=$(date +%s.%N)
     awk "BEGIN { printf \"%.2f\", $end - $start }"
 }

@@ -135,6 +135,31 @@ if #notes > 0 then
   for _, l in ipairs(notes) do put(roff(l), "\n") end
 end
 
+-- the REPL's commands, from the help registry (interp/help.lua), as :help prints them
+local registry = require "help"
+put(".SH REPL COMMANDS\n",
+    "In the REPL, a line is a Lua chunk (an expression's value is printed) or one of these\n",
+    "commands; Tab completes names, fields, methods, commands and file names.\n")
+for _, e in ipairs(registry.areas.repl.entries) do
+  if e.kind == "command" then
+    put(".TP\n", term(registry.forms(e)[1]), "\n", roff(e.desc), "\n")
+  end
+end
+put(".SH ENVIRONMENT\n",
+    ".TP\n.B HOME\n",
+    "the REPL keeps its history in \\fI$HOME/.pointcalc_history\\fR.\n",
+    ".TP\n.BR COLUMNS \", \" LINES\n",
+    "the size of the terminal, when it cannot be asked (the REPL's \\fB:show\\fR and \\fB:help\\fR).\n",
+    ".TP\n.BR NO_COLOR \", \" TERM \", \" COLORTERM\n",
+    "whether the REPL colours its output: none with NO_COLOR set or TERM=dumb, 24-bit colour\n",
+    "with COLORTERM=truecolor.\n",
+    ".TP\n.BR LUA_PATH_5_4 \", \" LUA_PATH \", \" LUA_CPATH_5_4 \", \" LUA_CPATH\n",
+    "where \\fBrequire\\fR looks for Lua and C modules, as in\n.BR lua5.4 (1)\n",
+    "(end the value with \\fB;;\\fR to keep the default paths); not used in the safe mode.\n",
+    ".TP\n.B XDG_DATA_DIRS\n",
+    "where bash looks for the completion of\n.BR pointcalc :\n",
+    "add \\fIPREFIX\\fR/share for an installation outside /usr and /usr/local.\n")
+
 put(".SH EXIT STATUS\n",
     "0 on success, 1 when a script fails (the message names the file and line, followed by a\n",
     "traceback), 2 on a usage error.\n",
@@ -149,6 +174,15 @@ put(".SH EXIT STATUS\n",
     "the guides and the API reference (Markdown).\n",
     ".TP\n.I lib/lua/5.4/pointcalc.so\n",
     "the Lua module.\n",
+    ".TP\n.IR lib/libpointcalc.so.0 \", \" include/pointcalc/ \", \" lib/pkgconfig/pointcalc.pc\n",
+    "the C library, its headers and its pkg-config file\n",
+    "(\\fBcc prog.c $(pkg-config \\-\\-cflags \\-\\-libs pointcalc)\\fR).\n",
+    ".TP\n.I share/pointcalc/lua-language-server/library\n",
+    "definitions for the Lua language server (completion and signatures in editors).\n",
+    ".TP\n.I share/jupyter/kernels/pointcalc\n",
+    "the Jupyter kernel: one pointcalc per notebook, figures shown inline.\n",
+    ".TP\n.I share/pointcalc/install_manifest.txt\n",
+    "what \\fB./build.sh install\\fR put under the prefix, for \\fB./build.sh uninstall\\fR.\n",
     ".SH EXAMPLES\n",
     "Render an example to PNG and SVG:\n",
     ".PP\n.RS\n.nf\n",
@@ -160,5 +194,7 @@ put(".SH EXIT STATUS\n",
     "pointcalc \\-e \\(aqcircle(P(320, 240), 100, 14)\\(aq \\-\\-watch pic.png\n",
     ".fi\n.RE\n",
     ".SH SEE ALSO\n",
+    ".BR pointcalc-api (7)\n",
+    "(every function with its signature),\n",
     ".BR lua5.4 (1)\n")
 io.write(table.concat(out))

@@ -4,7 +4,9 @@
  *   /            the page (interp/live_page.lua: static HTML and a small script)
  *   /params      JSON: the script's name, its sliders ({name, min, max, default, step,
  *                animate}, from a run with the defaults) and that run's error, if any
- *   /render?k=v  the figure as SVG with those slider values (422 and the message on an error)
+ *   /render?k=v  the figure as SVG with those slider values (422 and the message on an error);
+ *                &format=png for PNG (the page's downloads)
+ *   /script      the script's text (shown beside the figure)
  *   /version     the script file's modification time: the page polls it to reload on save
  * Every render (and /params, which runs the script too) happens in a child process forked for
  * it: in the script's folder (relative names resolve there, messages name the script by its
@@ -82,9 +84,10 @@ static void put_json_string(buf *b, const char *s) {
     put(b, "\"", 1);
 }
 
-static void put_number(buf *b, double v) {
+static void put_number(buf *b, double v) {   /* the shortest text that reads back as v */
     char t[32];
-    snprintf(t, sizeof t, "%.17g", v);
+    snprintf(t, sizeof t, "%.15g", v);
+    if (strtod(t, NULL) != v) snprintf(t, sizeof t, "%.17g", v);
     puts_(b, t);
 }
 
@@ -127,13 +130,18 @@ static char *page_html(size_t *len) {
 }
 
 /* The slider values of the query string (only names the script could declare). */
-typedef struct { render_param p[MAX_PARAMS]; int n; int bad; } query;
+typedef struct { render_param p[MAX_PARAMS]; int n; int bad, png; } query;
 
 static enum MHD_Result each_arg(void *cls, enum MHD_ValueKind kind, const char *key,
                                 const char *value) {
     (void)kind;
     query *q = cls;
     char text[128];
+    if (!strcmp(key, "format")) {   /* not a slider: the download's format */
+        q->png = value && !strcmp(value, "png");
+        q->bad |= !value || (strcmp(value, "png") && strcmp(value, "svg"));
+        return MHD_YES;
+    }
     if (!value || q->n == MAX_PARAMS || snprintf(text, sizeof text, "%s=%s", key, value) >= (int)sizeof text ||
         !render_parse_param(text, &q->p[q->n])) {
         q->bad = 1;
@@ -160,10 +168,10 @@ static void child_render(const query *q, buf *out) {
         return;
     }
     size_t len;
-    char *svg = render_encode(&r, 1, &len);
+    char *svg = render_encode(&r, !q->png, &len);
     render_close(&r);
     if (!svg) answer(out, 500, "text/plain; charset=utf-8", r.error, strlen(r.error));
-    else answer(out, 200, "image/svg+xml", svg, len);
+    else answer(out, 200, q->png ? "image/png" : "image/svg+xml", svg, len);
     free(svg);
 }
 
@@ -345,7 +353,7 @@ static enum MHD_Result run_child(struct MHD_Connection *con, const query *q) {
 static enum MHD_Result do_render(struct MHD_Connection *con) {
     query q = {.n = 0};
     MHD_get_connection_values(con, MHD_GET_ARGUMENT_KIND, each_arg, &q);
-    if (q.bad) return reply_text(con, 400, "bad slider values in the query: use name=number");
+    if (q.bad) return reply_text(con, 400, "bad query: use name=number for sliders, format=svg|png");
     return run_child(con, &q);
 }
 
@@ -358,6 +366,19 @@ static enum MHD_Result do_version(struct MHD_Connection *con) {
     else snprintf(t, sizeof t, "%lld.%09ld %lld", (long long)st.st_mtim.tv_sec,
                   st.st_mtim.tv_nsec, (long long)st.st_size);
     return reply_text(con, 200, t);
+}
+
+static enum MHD_Result do_script(struct MHD_Connection *con) {
+    FILE *f = fopen(script, "rb");
+    buf b = {0};
+    char chunk[4096];
+    size_t n;
+    if (!f) return reply_text(con, 404, "the script is missing");
+    while ((n = fread(chunk, 1, sizeof chunk, f)) > 0) put(&b, chunk, n);
+    fclose(f);
+    if (!b.s) put(&b, "", 0);
+    if (!b.s) return MHD_NO;
+    return reply(con, 200, "text/plain; charset=utf-8", b.s, b.n);
 }
 
 static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char *url,
@@ -374,6 +395,7 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     if (!strcmp(url, "/render")) return do_render(con);
     if (!strcmp(url, "/params")) return do_params(con);
     if (!strcmp(url, "/version")) return do_version(con);
+    if (!strcmp(url, "/script")) return do_script(con);
     return reply_text(con, 404, "not found");
 }
 

@@ -145,10 +145,10 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
         return NULL;
     }
     memcpy(r->pixels, c->pixels, npx * sizeof *r->pixels);
-    memcpy(r->ops, c->ops, c->nops * sizeof *r->ops);
+    if (c->nops) memcpy(r->ops, c->ops, c->nops * sizeof *r->ops);
     if (c->npts) memcpy(r->pts, c->pts, c->npts * sizeof *r->pts);
     if (c->npts) memcpy(r->tags, c->tags, c->npts * sizeof *r->tags);
-    memcpy(r->pens, c->pens, c->npens * sizeof *r->pens);
+    if (c->npens) memcpy(r->pens, c->pens, c->npens * sizeof *r->pens);
     if (c->ntext) memcpy(r->text, c->text, c->ntext);
     if (resolve_into(r) != PC_OK) {
         pc_layout_release(c, r);

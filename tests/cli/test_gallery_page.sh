@@ -32,7 +32,7 @@ check() {
 }
 
 mkdir site
-run sh "$PC_SOURCE_DIR/examples/render_gallery.sh" "$POINTCALC" site/gallery
+run env PC_GALLERY_PDF=0 sh "$PC_SOURCE_DIR/examples/render_gallery.sh" "$POINTCALC" site/gallery   # the atlas: test_gallery_atlas.sh
 expect_rc 0 "render_gallery.sh renders every example"
 nscripts=$(ls "$PC_SOURCE_DIR"/examples/*/*.lua | wc -l)
 nfigures=$(ls site/gallery/*/*.png | wc -l)
@@ -41,6 +41,7 @@ expect_eq "$nfigures" "$nscripts" "one PNG per example script"
 check "$WORK/site"
 expect_in verdict.txt "OK figures=$nscripts png=$nscripts svg=$nscripts scripts=$nscripts " \
     "every figure's image, SVG and script load and every anchor has its target"
+expect_in verdict.txt " pages=$nscripts" "every figure links its own page, and the page loads"
 nanimated=$(grep -l "animate = true" "$PC_SOURCE_DIR"/examples/*/*.lua | wc -l)
 expect_in verdict.txt " animations=$nanimated" "each animated example links its animated SVG (docs/live.md)"
 checks=$((checks + 1))
@@ -53,6 +54,12 @@ expect_in site/gallery/index.html '>Stepanov 2013, §2, example 2</a>' "example 
 expect_in site/gallery/index.html '<li id="src-stepanov-2">' "the section the citations link"
 expect_in site/gallery/index.html '"#src-buimov">Buimov 2012, §2.8.4, Fig. 2.12</a>' \
     "a textbook citation from a script's header"
+
+# the page used as a reader would: contents, the filter, large views, a figure's page
+expect_eq "$(ls site/gallery/*/*.html | wc -l)" "$nscripts" "a page per figure"
+run python3 "$PC_SOURCE_DIR/tests/cli/gallery_page.py" "$browser" "$WORK/profile2" "$WORK/site/gallery"
+cat out.txt
+expect_rc 0 "the gallery page in the browser: $(grep FAIL out.txt | head -3) $(tail -3 err.txt)"
 
 # the screenshot for the README: a PNG of the requested size
 browse "file://$WORK/site/gallery/index.html" --hide-scrollbars --window-size=1280,1000 \

@@ -11,7 +11,7 @@ if [ -z "$browser" ]; then
     exit 77
 fi
 cat > live.lua <<'LUA'
-local k = slider("k", 0, 1, .5)
+local k = slider("k", 0, 1, .35)
 local n = slider("n", 1, 8, 3, 1)
 circle(320, 240, 50 + 150 * k, 14)
 for i = 0, n - 1 do

@@ -1,13 +1,17 @@
--- LuaRocks: `luarocks --lua-version 5.4 make` in the source tree builds the C module with CMake
+-- LuaRocks: `luarocks --lua-version 5.4 make` in the source tree (or in the unpacked tarball of
+-- `./build.sh dist`) builds the C module with CMake
 -- (Lua and libpng found through pkg-config; the VGA font from Debian's console-setup-linux) and
 -- installs it, so that `lua5.4 -e 'require "pointcalc"'` works. Only the module is built: the
 -- pointcalc program, its man page and the examples come with `./build.sh install` or the .deb.
 rockspec_format = "3.0"
 package = "pointcalc"
-version = "dev-1"
+version = "0.1.0-1"
 source = {
-   -- the project has no public address yet: `luarocks make` builds from the working tree
-   url = "git+https://example.invalid/pointcalc.git",
+   -- the release tarball `./build.sh dist` writes (build/pointcalc-0.1.0.tar.gz): `luarocks pack`
+   -- and `luarocks build` run beside it fetch it from there; `luarocks make` in the unpacked
+   -- tree needs no fetching
+   url = "pointcalc-0.1.0.tar.gz",
+   dir = "pointcalc-0.1.0",
 }
 description = {
    summary = "Geometry scripting: point calculus and QBasic-style drawing (PNG, SVG, PPM)",
@@ -16,7 +20,7 @@ Weighted points and vectors, ratios, meets, simplices, projective maps, one curv
 (Bezier, B-spline/NURBS, Hermite, splines, interpolation) and one surface type, and QBasic's
 SCREEN 12 drawing statements rendering to PNG, SVG and PPM, as a Lua 5.4 C module:
 local pc = require "pointcalc".]],
-   license = "UNLICENSED",   -- no licence has been chosen yet (luarocks lint requires the field)
+   license = "MIT",   -- LICENSE
    labels = { "geometry", "graphics", "svg", "png" },
 }
 dependencies = {
