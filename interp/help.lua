@@ -251,32 +251,22 @@ area("surfaces", "Surfaces (surface.*)",
   "s:iso gives curves, s:wireframe draws the iso-lines through the camera.",
   "curves.md")
 
-def("surface", "surface(f, u0, u1, v0, v1) -> s",
-  "A Lua function (u, v) -> point as a surface.")
-def("surface.bilinear", "surface.bilinear(P00, P10, P01, P11) -> s",
-  "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1).")
-def("surface.bezier", "surface.bezier(net) -> s",
-  "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational).")
-def("surface.bspline", "surface.bspline(net, p, q [, uknots [, vknots]]) -> s",
-  "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline.")
-def("surface.hermite", "surface.hermite{P = {4}, Pu = {4}, Pv = {4}, Puv = {4}} -> s",
-  "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1)).")
-def("surface.ruled", "surface.ruled(c0, c1) -> s",
-  "The ruled surface (1 - v) c0(u) + v c1(u) between two curves.")
-def("surface.coons", "surface.coons(cu0, cu1, c0v, c1v) -> s",
-  "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v).")
-def("surface.revolution", "surface.revolution(profile, A, d [, v0, v1]) -> s",
-  "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn).")
-def("s(u, v)", "s(u, v) -> point | s:partials(u, v) -> P, Su, Sv | s:normal(u, v) -> vector",
-  "The point of a surface, its partial derivatives and its unit normal (3-D).", "method")
-def("s:iso", "s:iso(\"u\"|\"v\", value) -> curve",
-  "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches.", "method")
-def("s:map", "s:map(f) -> s",
-  "The image of the surface under a map.", "method")
-def("s:wireframe", "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
-  "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene.", "method")
-def("s:shade", "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
-  "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows.", "method")
+def("surface")
+def("surface.bilinear")
+def("surface.bezier")
+def("surface.bspline")
+def("surface.hermite")
+def("surface.ruled")
+def("surface.coons")
+def("surface.revolution")
+def("s(u, v)", nil, nil, "method")
+def("s:eval", nil, nil, "method")
+def("s:partials", nil, nil, "method")
+def("s:normal", nil, nil, "method")
+def("s:iso", nil, nil, "method")
+def("s:map", nil, nil, "method")
+def("s:wireframe", nil, nil, "method")
+def("s:shade", nil, nil, "method")
 
 -- ---------------------------------------------------------------------------------------
 area("curvilinear", "Curvilinear coordinates",
@@ -346,50 +336,30 @@ area("draw", "Drawing (QBasic SCREEN 12)",
   "may be given as one 2-D point: pset(M), line(A, B).",
   "drawing.md")
 
-def("screen", {"screen(12) | screen(13) | screen(1|2|7|9)", "screen{width=W, height=H [, colors=2|4|16|256]}"},
-  "A new blank canvas: 640x480x16 (12), 320x200x256 (13), QBasic's other modes (mode_info) or any size.")
-def("cls", "cls()",
-  "Clear the view to the background colour.")
-def("color", {"color(fg [, bg])", "color() -> fg, bg"},
-  "Set the drawing colour (and the background used by cls), or read both.")
-def("palette", {"palette(attr, colour)", "palette()"},
-  "Change what a colour number looks like (65536*b + 256*g + r in 0..63, \"#rrggbb\" or {r, g, b}); no argument restores the default.")
-def("pset", "pset(x, y [, c]) | pset(A [, c])",
-  "Plot one pixel in colour c (default: the drawing colour).")
-def("preset", "preset(x, y [, c]) | preset(A [, c])",
-  "Plot one pixel in colour c (default: the background: erases).")
-def("line", "line(x1, y1, x2, y2 [, c [, \"b\"|\"bf\"]]) | line(A, B [, c [, style]])",
-  "A segment, or with \"b\" the outline of a box, with \"bf\" a filled box.")
-def("line_to", "line_to(x, y [, c [, \"b\"|\"bf\"]]) | line_to(B [, c [, style]])",
-  "A segment from the last point referenced to (x, y): QBasic's LINE -(x, y).")
-def("circle", "circle(x, y, r [, c [, start, end [, aspect]]]) | circle(A, r, ...)",
-  "A circle, an ellipse (aspect) or an arc (angles in radians; a negative angle also draws that radius).")
-def("paint", "paint(x, y [, c [, border]]) | paint(A [, c [, border]])",
-  "Flood-fill from (x, y) up to pixels of the border colour (default: the paint colour).")
-def("point", "point(x, y) -> colour | point(A) -> colour",
-  "The colour number at (x, y), or -1 outside the view.")
-def("window", {"window(x1, y1, x2, y2 [, \"screen\"])", "window()"},
-  "World coordinates: (x1, y1)-(x2, y2) fill the view, y up (y down with \"screen\"); no argument: pixels again.")
-def("view", {"view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])", "view()"},
-  "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it.")
-def("last_point", "last_point() -> x, y",
-  "The graphics cursor: the last point referenced, in world coordinates.")
-def("size", "size() -> width, height, colours",
-  "The size of the canvas and its number of colours.")
-def("pen", {"pen{width = w, dash = {on, off, ...}}", "pen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}", "pen \"main\"|\"thin\"|\"hidden\"|\"centre\"", "pen()"},
-  "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default.")
-def("path", "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])",
-  "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment.")
-def("fill", "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])",
-  "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG.")
-def("label", "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])",
-  "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look.")
+def("screen")
+def("cls")
+def("color")
+def("palette")
+def("pset")
+def("preset")
+def("line")
+def("line_to")
+def("circle")
+def("paint")
+def("point")
+def("window")
+def("view")
+def("last_point")
+def("size")
+def("pen")
+def("path")
+def("fill")
+def("label")
 def("figure")
 def("text")
 def("slider")
 def("camera")
-def("save", "save(path [, \"paper\"|\"screen\"])",
-  "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look.")
+def("save")
 
 -- ---------------------------------------------------------------------------------------
 area("figures", "Figures: label placement, markers, arrows, dimensions",
@@ -420,26 +390,16 @@ area("qbscreen", "QBasic's screen: modes, text cells, blocks, DRAW, pages",
   "GET/PUT, DRAW, PCOPY and PMAP. Translated QBasic programs use them; scripts may too.",
   "qbasic.md")
 
-def("mode_info", "mode_info(mode) -> {width, height, colors, pages, cols, rows, cell, aspect}",
-  "The facts of SCREEN mode 1, 2, 7, 8, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13).")
-def("print_at", "print_at(row, col, text [, fg [, bg]])",
-  "Text in the character cells of a row and column (1-based; 8x8, 8x14 or 8x16 by the mode), code page 437, on an opaque background, as QBasic's PRINT.")
-def("scroll_text", "scroll_text(top, bottom [, bg])",
-  "Move the text rows top..bottom up by one row of cells; the bottom row is cleared.")
-def("get_block", "get_block(x1, y1, x2, y2) -> block",
-  "QBasic's GET: the pixels between two corners (inside the view); block.w, block.h and block.bytes (the size QBasic's array needs).")
-def("put_block", "put_block(x, y, block [, \"xor\"|\"pset\"|\"preset\"|\"and\"|\"or\"])",
-  "QBasic's PUT: the block with its top-left corner at (x, y), combined with the screen (XOR by default: twice restores).")
-def("draw", "draw(commands)",
-  "QBasic's DRAW: U D L R E F G H n, M x,y, B and N prefixes, C n, S n, A n, TA n, P paint,border, from the graphics cursor.")
-def("pages", "pages(active [, visual])",
-  "Draw on page `active` and show page `visual` (SCREEN 7 has 8 pages, SCREEN 9 two); the page shown is the one saved.")
-def("pcopy", "pcopy(from, to)",
-  "QBasic's PCOPY: page `to` becomes a copy of page `from`.")
-def("pmap", "pmap(value, fn) -> number",
-  "QBasic's PMAP: fn 0 and 1 map a world x or y to view pixels, 2 and 3 map pixels back.")
-def("paint_tile", "paint_tile(x, y, tile [, border])",
-  "QBasic's PAINT with a tile string (1..64 bytes, read as the mode keeps pixels: a bit a pixel in SCREEN 2, two in SCREEN 1, 4 bit planes a row in the 16-colour modes, a byte a pixel in SCREEN 13), up to the border colour (default: the foreground).")
+def("mode_info")
+def("print_at")
+def("scroll_text")
+def("get_block")
+def("put_block")
+def("draw")
+def("pages")
+def("pcopy")
+def("pmap")
+def("paint_tile")
 
 -- ---------------------------------------------------------------------------------------
 area("qb", "QBasic numbers (qb.*)",

@@ -10,9 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "pcl.h"
+#include "pcl_args.h"
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_qbscreen.h"
+#include "print.h"       /* named pens, the print pen's width */
 #include "pcl_scene.h"
 #include "furniture.h"
 
@@ -55,7 +56,7 @@ static canvas_box *the_box(lua_State *L) {
     return b;
 }
 
-static pc_canvas *canvas(lua_State *L) { return box_at(L, lua_upvalueindex(1))->c; }
+static pc_canvas *canvas(lua_State *L) { return box_at(L, PCL_UPVALUE(1))->c; }
 
 pc_canvas *pcl_canvas(lua_State *L) {
     canvas_box *b = the_box(L);
@@ -123,112 +124,137 @@ pc_theme pcl_theme(lua_State *L) {
     lua_pop(L, 1);
     return t;
 }
-
 /* A core call failed: raise its message as a Lua error at the caller's line. */
 static int check(lua_State *L, pc_canvas *c, int rc) {
     if (rc == PC_OK) return 0;
-    lua_Debug ar;
-    const char *name = NULL;
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) name = ar.name;
-    if (!name) name = pcl_fname(L);   /* called from C: text{...} forwarding, pcall */
     /* a core message may start with the core statement's name ("pset: coordinates ...");
-     * the caller's name replaces it, so preset reports as preset and line_to as line_to */
+     * the declared name replaces it, so preset reports as preset and line_to as line_to */
     const char *msg = c->error, *colon = strstr(msg, ": ");
     if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg))
         msg = colon + 2;
-    return pcl_error(L, "%s: %s", name, msg);
+    return pcl_fail(L, "%s", msg);
 }
 
-/* The house argument error for a string value at idx, showing the string itself, for
- * argument arg. */
-static int bad_string(lua_State *L, int idx, int arg, const char *what, const char *expected) {
-    return pcl_error(L, "%s: argument #%d (%s) must be %s, got \"%s\"", pcl_fname(L),
-                     pcl_arg_shown(L, arg), what, expected, lua_tostring(L, idx));
-}
+/* ---- the kinds of the drawing layer ------------------------------------------------------ */
 
-/* A colour value at stack index idx, part of argument arg: an attribute number of the screen
- * or a "#rrggbb" string (a true colour, allocated on first use).  `what` names it in errors
- * ("colour", "border colour"). */
-static int color_error(lua_State *L, int idx, int arg, pc_canvas *c, const char *what) {
-    char expected[64];
-    snprintf(expected, sizeof expected, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1);
-    if (lua_type(L, idx) == LUA_TSTRING)   /* the string itself says best what is wrong */
-        return bad_string(L, idx, arg, what, expected);
-    return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
-}
-
-static int color_at(lua_State *L, int idx, int arg, pc_canvas *c, const char *what) {
+/* The colour at idx on canvas c (a true colour allocated for "#rrggbb"), or -2 if none. */
+static int color_of(lua_State *L, int idx, pc_canvas *c) {
     int isint;
     lua_Integer v = lua_tointegerx(L, idx, &isint);   /* the common case first: pset runs it */
     if (isint && v >= 0 && v < c->ncolors && lua_type(L, idx) == LUA_TNUMBER) return (int)v;
+    size_t len;
+    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    pc_rgb rgb;
+    if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return -2;
+    int attr = pc_rgb_color(c, rgb);
+    if (attr < 0) pcl_error(L, "%s: %s", pcl_fname(L), c->error);
+    return attr;
+}
+
+int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *c = pcl_active_canvas(L);
+    if ((out->x = color_of(L, idx, c)) >= 0) return 1;
+    return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1));
+}
+
+/* An attribute of the screen (palette): 0..ncolors-1. */
+static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    int n = pcl_active_canvas(L)->ncolors, isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
+    return pcl_readfail(L, idx, lua_pushfstring(L, "an attribute 0..%d", n - 1));
+}
+
+/* PALETTE's colour: QBasic's 65536*blue + 256*green + red with 6-bit components, a "#rrggbb"
+ * string, or a table {r, g, b} of 0..255; into out->v[0..2]. */
+static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_rgb rgb;
     if (lua_type(L, idx) == LUA_TSTRING) {
         size_t len;
-        const char *str = lua_tolstring(L, idx, &len);
-        pc_rgb rgb;
-        if (pc_rgb_parse(str, len, &rgb) != PC_OK) return color_error(L, idx, arg, c, what);
-        int attr = pc_rgb_color(c, rgb);
-        if (attr < 0) return pcl_error(L, "%s: %s", pcl_fname(L), c->error);
-        return attr;
+        const char *s = lua_tolstring(L, idx, &len);
+        if (pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
+    } else if (lua_istable(L, idx)) {
+        for (int i = 0; i < 3; i++) {
+            int isnum = lua_geti(L, idx, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
+            lua_Integer x = lua_tointegerx(L, -1, &isint);
+            lua_pop(L, 1);
+            if (!isnum || !isint || x < 0 || x > 255) return 0;
+            out->v[i] = (double)x;
+        }
+        return 1;
+    } else if (lua_type(L, idx) == LUA_TNUMBER) {
+        int isint;
+        lua_Integer q = lua_tointegerx(L, idx, &isint);
+        int r = (int)(q & 0xff), g = (int)((q >> 8) & 0xff), b = (int)((q >> 16) & 0xff);
+        if (!isint || q < 0 || q > 0x3f3f3f || r > 63 || g > 63 || b > 63) return 0;
+        rgb = (pc_rgb){(uint8_t)((r << 2) | (r >> 4)), (uint8_t)((g << 2) | (g >> 4)),
+                       (uint8_t)((b << 2) | (b >> 4))};
+    } else {
+        return 0;
     }
-    return color_error(L, idx, arg, c, what);
+    out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
+    return 1;
 }
 
-static int check_color_arg(lua_State *L, int arg, pc_canvas *c, const char *what) {
-    return color_at(L, arg, arg, c, what);
+/* "screen" or a boolean as the last argument of WINDOW/VIEW: QBasic's SCREEN form. */
+static int read_screen_flag(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (lua_isboolean(L, idx)) return (out->x = lua_toboolean(L, idx)), 1;
+    return lua_type(L, idx) == LUA_TSTRING && !strcmp(lua_tostring(L, idx), "screen") && (out->x = 1);
 }
 
-/* An optional colour: none/nil means the default (-1 for the core). */
-static int opt_color(lua_State *L, int arg, pc_canvas *c) {
-    if (lua_isnoneornil(L, arg)) return -1;
-    return check_color_arg(L, arg, c, "colour");
+/* A text: a string (or a number, shown as Lua shows it), without NUL bytes, which would cut
+ * the label short in every writer. */
+static int read_text(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (lua_type(L, idx) != LUA_TSTRING && lua_type(L, idx) != LUA_TNUMBER) return 0;
+    size_t len;
+    out->s = lua_tolstring(L, idx, &len);
+    if (strlen(out->s) != len) return pcl_readfail(L, idx, "a string without NUL bytes");
+    return 1;
 }
 
-/* An optional number; NaN stands for "not given" in the core, so a NaN passed is refused. */
-static double opt_number(lua_State *L, int arg, const char *what, double dflt) {
-    if (lua_isnoneornil(L, arg)) return dflt;
-    int isnum;
-    double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum || isnan(v)) pcl_argerror(L, arg, what, isnum ? "a finite number" : "a number");
-    return v;
-}
+#define COLOR(nm) A_SCREEN_COLOR(nm)
+#define OPTNUM(nm, flag, l, h, exp) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | (flag), .lo = l, .hi = h, .dflt = NAN, .expect = exp}
+#define SCALE {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}
+#define SCREEN_FLAG {.name = "mode", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_screen_flag, .expect = "\"screen\", a boolean or nil"}
+#define TEXT {.name = "text", .kind = PCL_ANY, .read = read_text, .expect = "a string"}
 
 /* ---- the statements ---------------------------------------------------------------------- */
 
+static const pcl_arg screen_keys[] = {
+    {.name = "width", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 1, .hi = 16384},
+    {.name = "height", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 1, .hi = 16384},
+    {.name = "colors", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 2, .hi = 256, .dflt = 16,
+     .expect = "2, 4, 16 or 256"},
+    PCL_END};
+static const pcl_arg screen_table = {.name = "mode", .kind = PCL_OPTIONS, .keys = screen_keys};
+static const pcl_arg screen_args[] = {
+    {.name = "mode", .kind = PCL_ANY, .expect = "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 8, 9 or {width=, height=}"},
+    PCL_END};
+
 static int l_screen(lua_State *L) {
-    canvas_box *b = box_at(L, lua_upvalueindex(1));
-    int w, h, colors = 16, pages = 1;
+    pcl_val a[4] = {0};   /* mode; the table's width, height, colors */
+    PCL_READ(L, a);
+    canvas_box *b = box_at(L, PCL_UPVALUE(1));
+    pc_mode_info m = {.pages = 1};
     if (lua_istable(L, 1)) {
-        lua_getfield(L, 1, "width");
-        lua_getfield(L, 1, "height");
-        lua_getfield(L, 1, "colors");
-        /* range-checked before narrowing to int, so 2^32 + 640 is not 640 */
-        int okw, okh;
-        lua_Integer lw = lua_tointegerx(L, -3, &okw), lh = lua_tointegerx(L, -2, &okh);
-        if (!okw || lw < 1 || lw > 16384) pcl_argerror(L, 1, "width", "an integer 1..16384");
-        if (!okh || lh < 1 || lh > 16384) pcl_argerror(L, 1, "height", "an integer 1..16384");
-        w = (int)lw;
-        h = (int)lh;
-        if (!lua_isnil(L, -1)) {
-            lua_Integer lc = lua_tointeger(L, -1);
-            if (lc != 2 && lc != 4 && lc != 16 && lc != 256)
-                pcl_argerror(L, 1, "colors", "2, 4, 16 or 256");
-            colors = (int)lc;
-        }
+        pcl_read_options(L, 1, 1, &screen_table, a + 1);
+        m.width = (int)a[1].x, m.height = (int)a[2].x, m.ncolors = (int)a[3].x;
+        if (m.ncolors != 2 && m.ncolors != 4 && m.ncolors != 16 && m.ncolors != 256)
+            return pcl_keyfail(L, "colors", "must be 2, 4, 16 or 256, got %d", m.ncolors);
     } else {
         int isint;
         lua_Integer mode = lua_tointegerx(L, 1, &isint);
-        pc_mode_info m;
         if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
-            return pcl_argerror(L, 1, "mode",
-                                "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 8, 9 or {width=, height=}");
-        w = m.width;
-        h = m.height;
-        colors = m.ncolors;
-        pages = m.pages;
+            return pcl_argfail(L, 1, "must be %s, got %s", screen_args[0].expect, pcl_shown(L, 1));
     }
     single_page(b);
-    int rc = pc_canvas_reset(b->c, w, h, colors);
-    if (rc == PC_OK) b->npages = pages;
+    int rc = pc_canvas_reset(b->c, m.width, m.height, m.ncolors);
+    if (rc == PC_OK) b->npages = m.pages;
     return check(L, b->c, rc);
 }
 
@@ -237,401 +263,79 @@ static int l_cls(lua_State *L) {
     return check(L, c, pc_cls(c));
 }
 
+static const pcl_arg color_args[] = {COLOR("fg"), COLOR("bg"), PCL_END};
 static int l_color(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (lua_isnoneornil(L, 1) && lua_isnoneornil(L, 2)) {   /* query */
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    if (!a[0].present && !a[1].present) {   /* query */
         lua_pushinteger(L, c->fg);
         lua_pushinteger(L, c->bg);
         return 2;
     }
-    int fg = opt_color(L, 1, c), bg = opt_color(L, 2, c);
-    return check(L, c, pc_color(c, fg < 0 ? c->fg : fg, bg));
+    return check(L, c, pc_color(c, a[0].present ? (int)a[0].x : c->fg, (int)a[1].x));
 }
 
-/* PALETTE attr, colour: the colour is QBasic's 65536*blue + 256*green + red with 6-bit
- * components, a "#rrggbb" string, or a table {r, g, b} of 0..255. */
-static pc_rgb check_rgb(lua_State *L, int arg) {
-    if (lua_type(L, arg) == LUA_TSTRING) {
-        size_t len;
-        const char *s = lua_tolstring(L, arg, &len);
-        pc_rgb rgb;
-        if (pc_rgb_parse(s, len, &rgb) == PC_OK) return rgb;
-    } else if (lua_istable(L, arg)) {
-        int v[3];
-        for (int i = 0; i < 3; i++) {
-            int isnum = lua_geti(L, arg, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
-            lua_Integer x = lua_tointegerx(L, -1, &isint);
-            lua_pop(L, 1);
-            if (!isnum || !isint || x < 0 || x > 255) goto bad;
-            v[i] = (int)x;
-        }
-        return (pc_rgb){(uint8_t)v[0], (uint8_t)v[1], (uint8_t)v[2]};
-    } else if (lua_type(L, arg) == LUA_TNUMBER) {
-        int isint;
-        lua_Integer q = lua_tointegerx(L, arg, &isint);
-        int r = (int)(q & 0xff), g = (int)((q >> 8) & 0xff), b = (int)((q >> 16) & 0xff);
-        if (isint && q >= 0 && q <= 0x3f3f3f && r < 64 && g < 64 && b < 64)
-            return (pc_rgb){(uint8_t)((r << 2) | (r >> 4)), (uint8_t)((g << 2) | (g >> 4)),
-                            (uint8_t)((b << 2) | (b >> 4))};
-    }
-bad:;
-    static const char expected[] = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}";
-    if (lua_type(L, arg) == LUA_TSTRING) bad_string(L, arg, arg, "colour", expected);
-    pcl_argerror(L, arg, "colour", expected);
-    return (pc_rgb){0, 0, 0};
-}
-
+static const pcl_arg palette_args[] = {
+    {.name = "attribute", .kind = PCL_ANY, .read = read_attr, .expect = "an attribute of the screen"},
+    {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
+     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"},
+    PCL_END};
 static int l_palette(lua_State *L) {
     pc_canvas *c = canvas(L);
     if (lua_isnone(L, 1)) return check(L, c, pc_palette_reset(c));
-    int isint;
-    lua_Integer attr = lua_tointegerx(L, 1, &isint);
-    if (!isint || attr < 0 || attr >= c->ncolors) {
-        char expected[40];
-        snprintf(expected, sizeof expected, "an attribute 0..%d", c->ncolors - 1);
-        return pcl_argerror(L, 1, "attribute", expected);
-    }
-    pc_rgb rgb = check_rgb(L, 2);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    pc_rgb rgb = {(uint8_t)a[1].v[0], (uint8_t)a[1].v[1], (uint8_t)a[1].v[2]};
     /* the palette is the video card's: every page shows it */
-    canvas_box *b = box_at(L, lua_upvalueindex(1));
+    canvas_box *b = box_at(L, PCL_UPVALUE(1));
     for (int i = 0; i < PCL_MAX_PAGES; i++)
-        if (b->pages[i] && b->pages[i] != c) check(L, b->pages[i], pc_palette(b->pages[i], (int)attr, rgb));
-    return check(L, c, pc_palette(c, (int)attr, rgb));
+        if (b->pages[i] && b->pages[i] != c) check(L, b->pages[i], pc_palette(b->pages[i], (int)a[0].x, rgb));
+    return check(L, c, pc_palette(c, (int)a[0].x, rgb));
 }
 
+static const pcl_arg dot_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), PCL_END};
 static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
+    pcl_val a[3] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "");
-    return check(L, c, fn(c, x, y, opt_color(L, arg, c)));
+    return check(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
-
 static int l_pset(lua_State *L) { return dot(L, pc_pset); }
 static int l_preset(lua_State *L) { return dot(L, pc_preset); }
 
-/* The style argument of LINE: nil, "b" (box) or "bf" (filled box), any case. */
-static int line_style(lua_State *L, int arg) {
-    if (lua_isnoneornil(L, arg)) return 0;
-    const char *s = lua_tostring(L, arg);
-    if (s && lua_type(L, arg) == LUA_TSTRING) {
-        if (!strcmp(s, "b") || !strcmp(s, "B")) return 1;
-        if (!strcmp(s, "bf") || !strcmp(s, "BF") || !strcmp(s, "Bf") || !strcmp(s, "bF")) return 2;
-    }
-    return pcl_argerror(L, arg, "style", "\"b\" (box) or \"bf\" (filled box)");
-}
+/* LINE's style: "b" (box) or "bf" (filled box), any case; then QBasic's 16-bit pattern,
+ * 0..65535 or a signed INTEGER -32768..-1 (&HAAAA is -21846 in QBasic). */
+static const char *const BOX[] = {"b", "B", "bf", "BF", "Bf", "bF", NULL};
+#define LINE_TAIL COLOR("colour"), \
+    {.name = "style", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = BOX, .expect = "\"b\" (box) or \"bf\" (filled box)"}, \
+    {.name = "line style", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = -32768, .hi = 65535, \
+     .expect = "a 16-bit pattern -32768..65535"}, PCL_END
+static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x"), A_NUM("end y"), LINE_TAIL};
+static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
-/* QBasic's 16-bit LINE style after the box flag: 0..65535, or a signed INTEGER -32768..-1
- * (&HAAAA is -21846 in QBasic); -1 when not given. */
-static long line_pattern(lua_State *L, int arg) {
-    if (lua_isnoneornil(L, arg)) return -1;
-    int isint;
-    lua_Integer v = lua_tointegerx(L, arg, &isint);
-    if (!isint || v < -32768 || v > 65535)
-        return pcl_argerror(L, arg, "line style", "a 16-bit pattern -32768..65535");
-    return (long)(v & 0xffff);
-}
-
-static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, int arg) {
-    double x2, y2;
-    pcl_checkxy(L, &arg, &x2, &y2, "end");
-    int color = opt_color(L, arg, c);
-    int box = line_style(L, arg + 1);
-    long pattern = line_pattern(L, arg + 2);
-    if (pattern >= 0 && box != 2)   /* QBasic ignores the style of a filled box */
-        return check(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)pattern));
+static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl_val *a) {
+    double x2 = a[0].x, y2 = a[1].x;
+    int color = (int)a[2].x, box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
+    if (a[4].present && box != 2)   /* QBasic ignores the style of a filled box */
+        return check(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)((long)a[4].x & 0xffff)));
     if (box == 0) return check(L, c, pc_line(c, x1, y1, x2, y2, color));
     return check(L, c, pc_box(c, x1, y1, x2, y2, color, box == 2));
 }
 
-/* ---- beyond QBasic: pen, path, label, text ------------------------------------------------ */
-
-/* A field of an options table that must be a number in lo..hi (the value at the stack top). */
-static double field_number(lua_State *L, int arg, const char *what, double lo, double hi,
-                           const char *expected) {
-    int isnum;
-    double v = lua_tonumberx(L, -1, &isnum);
-    if (!isnum || !(v >= lo && v <= hi))
-        pcl_argerror_full(L, pcl_fname(L), lua_gettop(L), pcl_arg_shown(L, arg), what, expected);
-    return v;
-}
-
-/* pen{width = w, dash = {on, off, ...}} sets the pen; pen() restores the default. */
-static int l_pen(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    if (lua_isnoneornil(L, 1)) {
-        pc_pen_reset(c);
-        return 0;
-    }
-    if (pcl_pen_print(L, c)) return 0;   /* a named pen, or lengths with units */
-    if (!lua_istable(L, 1))
-        return pcl_argerror(L, 1, "pen", "a table {width =, dash =} or a pen's name (\"main\", "
-                                         "\"thin\", \"hidden\", \"centre\")");
-    double width = 1, dash[PC_PEN_MAXDASH];
-    int ndash = 0;
-    if (lua_getfield(L, 1, "width") != LUA_TNIL)
-        width = field_number(L, 1, "width", 1, PC_PEN_MAXWIDTH, "a number 1..256 (pixels)");
-    lua_pop(L, 1);
-    if (lua_getfield(L, 1, "dash") != LUA_TNIL) {
-        int t = lua_gettop(L);
-        lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : -1;
-        if (n < 0 || n > PC_PEN_MAXDASH || n % 2)
-            return pcl_argerror_full(L, pcl_fname(L), t, pcl_arg_shown(L, 1), "dash",
-                                     "a list of on, off lengths (an even number, at most 16)");
-        for (int i = 0; i < n; i++) {
-            lua_geti(L, t, i + 1);
-            dash[i] = field_number(L, 1, "dash length", 1e-6, 1e6, "a positive number (pixels)");
-            lua_pop(L, 1);
-        }
-        ndash = (int)n;
-    }
-    lua_pop(L, 1);
-    return check(L, c, pc_pen(c, width, dash, ndash));
-}
-
-/* The point at the stack top, element `where` ("index 3", "index [2][3]") of argument arg:
- * a 2-D point, or an n-D one with a camera for n-D points set. */
-static void list_point(lua_State *L, int arg, const char *where, const char *expected,
-                       double *x, double *y) {
-    pcl_value *p = pcl_tovalue(L, -1);
-    if (p && p->n != 2) {
-        int st = pcl_project(L, p->n, p->h, x, y);
-        if (st == PC_OK) return;
-        const char *text = luaL_tolstring(L, -1, NULL);
-        if (st == PC_IMPROPER)
-            pcl_error(L, "%s: argument #%d (points) at %s: %s projects to infinity (it lies in the "
-                         "camera's vanishing plane)", pcl_fname(L), pcl_arg_shown(L, arg), where, text);
-        if (st != PC_EDIM)
-            pcl_error(L, "%s: argument #%d (points) at %s: the image of %s is not finite",
-                      pcl_fname(L), pcl_arg_shown(L, arg), where, text);
-        pcl_error(L, "%s: argument #%d (points) must be %s, got the %d-D %s at %s (3-D points "
-                     "need a camera)", pcl_fname(L), pcl_arg_shown(L, arg), expected, p->n, text, where);
-    }
-    double loc[2];
-    if (p && pc_loc(2, p->h, loc) != PC_OK) {   /* a vector or a weighted value */
-        const char *text = luaL_tolstring(L, -1, NULL);
-        const char *w = pcl_pushnum(L, p->h[2]);
-        pcl_error(L, "%s: argument #%d (points) at %s: %s has weight %s, not 1: a location must "
-                     "be a point (the membership condition; normalize(p) for a projective point)",
-                  pcl_fname(L), pcl_arg_shown(L, arg), where, text, w);
-    }
-    if (!pcl_topoint2(L, -1, x, y))
-        pcl_error(L, "%s: argument #%d (points) must be %s, got %s at %s", pcl_fname(L),
-                  pcl_arg_shown(L, arg), expected, luaL_typename(L, -1), where);
-}
-
-/* The points argument at arg of path and fill: a list of 2-D points (one subpath) or a list
- * of such lists (one subpath each).  The coordinates and the verbs (a move at the start of
- * each subpath, lines after) go to scratch userdata left on the stack; returns the number of
- * points. */
-static size_t read_subpaths(lua_State *L, int arg, double **xy, uint8_t **verbs) {
-    static const char expected[] = "a list of 2-D points or a list of such lists";
-    if (!lua_istable(L, arg)) return (size_t)pcl_argerror(L, arg, "points", "a list of 2-D points");
-    lua_Integer m = luaL_len(L, arg);
-    if (m < 1) return (size_t)pcl_argerror(L, arg, "points", "a list of at least one point");
-    lua_geti(L, arg, 1);
-    int nested = lua_type(L, -1) == LUA_TTABLE;
-    lua_pop(L, 1);
-    size_t n = 0;
-    for (lua_Integer k = 1; nested && k <= m; k++) {   /* count the points of the subpaths */
-        if (lua_geti(L, arg, k) != LUA_TTABLE)
-            pcl_error(L, "%s: argument #%d (points) must be %s, got %s at index %d", pcl_fname(L),
-                      pcl_arg_shown(L, arg), expected, luaL_typename(L, -1), (int)k);
-        lua_Integer len = luaL_len(L, -1);
-        if (len < 1)
-            pcl_error(L, "%s: argument #%d (points) must be %s, got an empty list at index %d",
-                      pcl_fname(L), pcl_arg_shown(L, arg), expected, (int)k);
-        n += (size_t)len;
-        lua_pop(L, 1);
-    }
-    if (!nested) n = (size_t)m;
-    if (n > 100000000) pcl_error(L, "%s: argument #%d (points) holds too many points", pcl_fname(L), pcl_arg_shown(L, arg));
-    *xy = lua_newuserdatauv(L, n * 2 * sizeof **xy, 0);   /* freed by the GC */
-    *verbs = lua_newuserdatauv(L, n, 0);
-    size_t i = 0;
-    for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
-        int list = arg;
-        if (nested) {
-            lua_geti(L, arg, k);
-            list = lua_gettop(L);
-        }
-        lua_Integer len = luaL_len(L, list);
-        for (lua_Integer j = 1; j <= len; j++, i++) {
-            char where[48];
-            if (nested) snprintf(where, sizeof where, "index [%d][%d]", (int)k, (int)j);
-            else snprintf(where, sizeof where, "index %d", (int)j);
-            lua_geti(L, list, j);
-            list_point(L, arg, where, nested ? expected : "a list of 2-D points",
-                       &(*xy)[2 * i], &(*xy)[2 * i + 1]);
-            (*verbs)[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
-            lua_pop(L, 1);
-        }
-        if (nested) lua_pop(L, 1);
-    }
-    return n;
-}
-
-/* A fill rule at stack index idx, part of argument arg: "evenodd" (the default) or
- * "nonzero". */
-static int rule_at(lua_State *L, int idx, int arg, const char *what) {
-    static const char expected[] = "\"evenodd\" or \"nonzero\"";
-    if (lua_isnoneornil(L, idx)) return PC_FILL_EVENODD;
-    if (lua_type(L, idx) == LUA_TSTRING) {
-        const char *r = lua_tostring(L, idx);
-        if (!strcmp(r, "evenodd")) return PC_FILL_EVENODD;
-        if (!strcmp(r, "nonzero")) return PC_FILL_NONZERO;
-        return bad_string(L, idx, arg, what, expected);
-    }
-    return pcl_argerror_full(L, pcl_fname(L), idx, pcl_arg_shown(L, arg), what, expected);
-}
-
-/* The arrow option of path's table (argument 2): "end", "start", "both" or absent. */
-static int path_heads(lua_State *L) {
-    static const char *const heads[] = {"none", "end", "start", "both", NULL};
-    if (!lua_istable(L, 2) || lua_getfield(L, 2, "arrow") == LUA_TNIL) {
-        lua_settop(L, 2);
-        return 0;
-    }
-    const char *h = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
-    for (int k = 0; heads[k]; k++)
-        if (!strcmp(h, heads[k])) {
-            lua_settop(L, 2);
-            return k;
-        }
-    return bad_string(L, lua_gettop(L), 2, "options.arrow", "\"end\", \"start\", \"both\" or \"none\"");
-}
-
-/* path(points [, {closed =, color =, fill =, rule =, arrow =}]): the polyline through a list of 2-D
- * points (or several, one subpath each).  With fill, the closed path is filled in that
- * colour, and its outline drawn on top only when color is given too. */
-static int l_path(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    lua_settop(L, 2);
-    int closed = 0, color = -1, fill = -2, rule = PC_FILL_EVENODD;
-    if (!lua_isnil(L, 2)) {
-        if (!lua_istable(L, 2))
-            return pcl_argerror(L, 2, "options", "a table {closed =, color =, fill =, rule =}");
-        lua_getfield(L, 2, "closed");
-        closed = lua_toboolean(L, -1);
-        if (lua_getfield(L, 2, "color") != LUA_TNIL)
-            color = color_at(L, lua_gettop(L), 2, c, "options.color");
-        if (lua_getfield(L, 2, "fill") != LUA_TNIL)
-            fill = color_at(L, lua_gettop(L), 2, c, "options.fill");
-        lua_getfield(L, 2, "rule");
-        rule = rule_at(L, lua_gettop(L), 2, "options.rule");
-        lua_pop(L, 4);
-    }
-    int heads = path_heads(L);
-    double *xy;
-    uint8_t *verbs;
-    size_t n = read_subpaths(L, 1, &xy, &verbs);
-    if (fill == -2) {
-        check(L, c, pc_path(c, n, xy, verbs, n, closed, color));
-        /* arrow heads (furniture.h) on the first and last segments */
-        if ((heads & PC_ARROW_END) && n >= 2)
-            check(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
-        if ((heads & PC_ARROW_START) && n >= 2)
-            check(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
-        return 0;
-    }
-    check(L, c, pc_fill_path(c, n, xy, verbs, n, rule, fill));
-    if (color < 0) return 0;
-    return check(L, c, pc_path(c, n, xy, verbs, n, 1, color));
-}
-
-/* fill(points [, colour [, rule]]): the closed path through the points (or several, one
- * subpath each) filled; rule "evenodd" (default: a subpath inside another makes a hole) or
- * "nonzero". */
-static int l_fill(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    lua_settop(L, 3);
-    int color = opt_color(L, 2, c);
-    int rule = rule_at(L, 3, 3, "rule");
-    double *xy;
-    uint8_t *verbs;
-    size_t n = read_subpaths(L, 1, &xy, &verbs);
-    return check(L, c, pc_fill_path(c, n, xy, verbs, n, rule, color));
-}
-
-static const char *const directions[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
-
-/* The text argument: a string (or a number, shown as Lua shows it). */
-static const char *check_text(lua_State *L, int arg) {
-    int t = lua_type(L, arg);
-    if (t != LUA_TSTRING && t != LUA_TNUMBER) pcl_argerror(L, arg, "text", "a string");
-    size_t len;
-    const char *s = lua_tolstring(L, arg, &len);
-    /* the writers take C strings: a NUL would cut the label short in every one of them */
-    if (strlen(s) != len) pcl_argerror(L, arg, "text", "a string without NUL bytes");
-    return s;
-}
-
-static int opt_scale(lua_State *L, int arg) {
-    if (lua_isnoneornil(L, arg)) return 1;
-    int isint;
-    lua_Integer v = lua_tointegerx(L, arg, &isint);
-    if (!isint || v < 1 || v > 8) return pcl_argerror(L, arg, "scale", "an integer 1..8");
-    return (int)v;
-}
-
-/* label(text, P [, direction [, colour [, scale]]]): text beside a point, 3 px off it; without
- * a direction it is placed when the picture is written (stdlib/draw/layout.h). */
-static int l_label(lua_State *L) {
-    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
-    pc_canvas *c = canvas(L);
-    /* a trailing options table {font =, size =, halo =}, read first and then dropped */
-    int opts = lua_gettop(L) > 2 && lua_type(L, lua_gettop(L)) == LUA_TTABLE ? lua_gettop(L) : 0;
-    pcl_label_opts o;
-    if (opts) {
-        pcl_label_options(L, opts, &o);
-        lua_settop(L, opts - 1);
-    }
-    const char *str = check_text(L, 1);
-    int arg = 2;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "");
-    int anchor = PC_ANCHOR_AUTO;
-    if (!lua_isnoneornil(L, arg)) {
-        static const char expected[] = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"";
-        if (lua_type(L, arg) != LUA_TSTRING) return pcl_argerror(L, arg, "direction", expected);
-        const char *d = lua_tostring(L, arg);
-        int k = 0;
-        while (directions[k] && strcmp(directions[k], d)) k++;
-        if (!directions[k]) return bad_string(L, arg, arg, "direction", expected);
-        anchor = k;
-    }
-    int color = opt_color(L, arg + 1, c);
-    int scale = opt_scale(L, arg + 2);
-    check(L, c, pc_text(c, x, y, str, anchor, 3, scale, color));
-    if (opts) pcl_label_style(L, c, &o);
-    return 0;
-}
-
-/* text(x, y, string [, colour [, scale]]): the text cell's top-left corner at the point. */
-static int l_text(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "");
-    const char *str = check_text(L, arg);
-    int color = opt_color(L, arg + 1, c);
-    int scale = opt_scale(L, arg + 2);
-    return check(L, c, pc_text(c, x, y, str, PC_ANCHOR_SE, 0, scale, color));
-}
-
 static int l_line(lua_State *L) {
     if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
-    pc_canvas *c = canvas(L);
-    int arg = 1;
-    double x1, y1;
-    pcl_checkxy(L, &arg, &x1, &y1, "start");
-    return draw_line(L, c, x1, y1, arg);
+    pcl_val a[7] = {0};
+    PCL_READ_PAIRS(L, a);
+    return draw_line(L, canvas(L), a[0].x, a[1].x, a + 2);
 }
 
 /* LINE -(x, y): from the graphics cursor (the last point referenced). */
 static int l_line_to(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    return draw_line(L, c, c->last_x, c->last_y, 1);
+    return draw_line(L, c, c->last_x, c->last_y, a);
 }
 
 static int l_last_point(lua_State *L) {
@@ -641,112 +345,76 @@ static int l_last_point(lua_State *L) {
     return 2;
 }
 
+#define ANGLE(nm) OPTNUM(nm, PCL_RANGE, -2 * M_PI - 1e-6, 2 * M_PI + 1e-6, "a number between -2*pi and 2*pi")
+static const pcl_arg circle_args[] = {
+    A_X("x"), A_NUM("y"),
+    {.name = "radius", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = HUGE_VAL, .expect = "a non-negative number"},
+    COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"),
+    OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
 static int l_circle(lua_State *L) {
+    pcl_val a[7] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "centre");
-    int isnum;
-    double r = lua_tonumberx(L, arg, &isnum);
-    if (!isnum || !(r >= 0) || !isfinite(r))
-        return pcl_argerror(L, arg, "radius", "a non-negative number");
-    int color = opt_color(L, arg + 1, c);
-    double start = opt_number(L, arg + 2, "start angle", NAN);
-    double end = opt_number(L, arg + 3, "end angle", NAN);
-    double aspect = opt_number(L, arg + 4, "aspect", NAN);
-    if (!isnan(aspect) && !(aspect > 0 && isfinite(aspect)))
-        return pcl_argerror(L, arg + 4, "aspect", "a positive number");
-    if (!isnan(start) && !(fabs(start) <= 2 * M_PI + 1e-6))
-        return pcl_argerror(L, arg + 2, "start angle", "between -2*pi and 2*pi");
-    if (!isnan(end) && !(fabs(end) <= 2 * M_PI + 1e-6))
-        return pcl_argerror(L, arg + 3, "end angle", "between -2*pi and 2*pi");
-    return check(L, c, pc_circle(c, x, y, r, color, start, end, aspect));
+    return check(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
 }
 
+static const pcl_arg paint_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), COLOR("border colour"), PCL_END};
 static int l_paint(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "");
-    int color = opt_color(L, arg, c);
-    int border = -1;
-    if (!lua_isnoneornil(L, arg + 1)) border = check_color_arg(L, arg + 1, c, "border colour");
-    return check(L, c, pc_paint(c, x, y, color, border));
+    return check(L, c, pc_paint(c, a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
 }
 
+static const pcl_arg point_args[] = {A_X("x"), A_NUM("y"), PCL_END};
 static int l_point(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "");
-    lua_pushinteger(L, pc_point(c, x, y));
+    pcl_val a[2] = {0};
+    PCL_READ_PAIRS(L, a);
+    lua_pushinteger(L, pc_point(canvas(L), a[0].x, a[1].x));
     return 1;
 }
 
-/* A number as the core's messages print it (%g). */
-static const char *num(lua_State *L, double v) {
-    char b[32];
-    snprintf(b, sizeof b, "%g", v);
-    return lua_pushstring(L, b);
-}
-
-/* "screen" (string) or true as the last argument of WINDOW/VIEW means QBasic's SCREEN form. */
-static int screen_flag(lua_State *L, int arg) {
-    if (lua_isnoneornil(L, arg)) return 0;
-    if (lua_isboolean(L, arg)) return lua_toboolean(L, arg);
-    if (lua_type(L, arg) == LUA_TSTRING && !strcmp(lua_tostring(L, arg), "screen")) return 1;
-    return pcl_argerror(L, arg, "mode", "\"screen\", a boolean or nil");
-}
-
+static const pcl_arg window_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),
+                                      A_NUM("second corner y"), SCREEN_FLAG, PCL_END};
 static int l_window(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (lua_isnone(L, 1)) {
-        pc_window_reset(c);
-        return 0;
-    }
-    int arg = 1;
-    double x1, y1, x2, y2;
-    pcl_checkxy(L, &arg, &x1, &y1, "first corner");
-    pcl_checkxy(L, &arg, &x2, &y2, "second corner");
-    return check(L, c, pc_window(c, x1, y1, x2, y2, screen_flag(L, arg)));
+    if (lua_isnone(L, 1)) return pc_window_reset(c), 0;
+    pcl_val a[5] = {0};
+    PCL_READ_PAIRS(L, a);
+    return check(L, c, pc_window(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x));
 }
 
+static const pcl_arg view_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),
+                                    A_NUM("second corner y"), COLOR("fill"), COLOR("border"), SCREEN_FLAG, PCL_END};
 static int l_view(lua_State *L) {
     pc_canvas *c = canvas(L);
     if (lua_isnone(L, 1)) return check(L, c, pc_view_reset(c));
-    int arg = 1;
-    double x1, y1, x2, y2;
-    pcl_checkxy(L, &arg, &x1, &y1, "first corner");
-    pcl_checkxy(L, &arg, &x2, &y2, "second corner");
-    int fill = opt_color(L, arg, c), border = opt_color(L, arg + 1, c);
-    int screen = screen_flag(L, arg + 2);
+    pcl_val a[7] = {0};
+    PCL_READ_PAIRS(L, a);
     /* the core takes whole pixels: corners beyond any screen are refused here, before the
      * conversion to int could wrap them onto it */
     const double lim = 1e6;
-    if (!(fabs(x1) <= lim && fabs(y1) <= lim && fabs(x2) <= lim && fabs(y2) <= lim))
-        return pcl_error(L, "view: view (%s, %s)-(%s, %s) is not inside the %dx%d screen",
-                         num(L, x1), num(L, y1), num(L, x2), num(L, y2), c->width, c->height);
-    return check(L, c, pc_view(c, (int)lrint(x1), (int)lrint(y1), (int)lrint(x2), (int)lrint(y2),
-                               fill, border, screen));
+    if (!(fabs(a[0].x) <= lim && fabs(a[1].x) <= lim && fabs(a[2].x) <= lim && fabs(a[3].x) <= lim))
+        return pcl_fail(L, "view (%s, %s)-(%s, %s) is not inside the %dx%d screen", pcl_pushnum(L, a[0].x),
+                        pcl_pushnum(L, a[1].x), pcl_pushnum(L, a[2].x), pcl_pushnum(L, a[3].x), c->width, c->height);
+    return check(L, c, pc_view(c, (int)lrint(a[0].x), (int)lrint(a[1].x), (int)lrint(a[2].x),
+                               (int)lrint(a[3].x), (int)a[4].x, (int)a[5].x, (int)a[6].x));
 }
 
 /* save(path [, theme]): the format follows the extension; theme "paper" or "screen". */
+static const char *const THEMES[] = {"paper", "screen", NULL};
+static const pcl_arg save_args[] = {{.name = "path", .kind = PCL_STRING, .expect = "a file name"},
+                                    {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES},
+                                    PCL_END};
 static int l_save(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = canvas(L);
-    if (lua_type(L, 1) != LUA_TSTRING) return pcl_argerror(L, 1, "path", "a file name");
-    const char *path = lua_tostring(L, 1);
-    pc_theme theme = pcl_theme(L);
-    if (!lua_isnoneornil(L, 2)) {
-        const char *t = lua_tostring(L, 2);
-        if (t && !strcmp(t, "paper")) theme = PC_THEME_PAPER;
-        else if (t && !strcmp(t, "screen")) theme = PC_THEME_SCREEN;
-        else return pcl_argerror(L, 2, "theme", "\"paper\" or \"screen\"");
-    }
-    if (pc_format_from_path(path) == PC_FMT_UNKNOWN)
-        return pcl_argerror(L, 1, "path", "a file name ending in .png, .svg, .ppm, .pdf, .eps or .ps");
+    pc_theme theme = !a[1].present ? pcl_theme(L) : a[1].n == 0 ? PC_THEME_PAPER : PC_THEME_SCREEN;
+    if (pc_format_from_path(a[0].s) == PC_FMT_UNKNOWN)
+        return pcl_argfail(L, 1, "must be a file name ending in .png, .svg, .ppm, .pdf, .eps or .ps, got \"%s\"", a[0].s);
     char err[512];
-    if (pc_write_file(c, path, theme, err, sizeof err) != PC_OK)
-        return pcl_error(L, "save: %s", err);
+    if (pc_write_file(c, a[0].s, theme, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
     pc_canvas_mark_saved(c);
     return 0;
 }
@@ -760,6 +428,207 @@ static int l_size(lua_State *L) {
     return 3;
 }
 
+/* ---- beyond QBasic: pen, path, label, text ------------------------------------------------ */
+
+/* A pen's width: pixels 1..256, or a length with its unit (out->n = 1: the print pen). */
+static int read_pen_width(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    if (lua_type(L, idx) == LUA_TSTRING) return (out->n = 1), pcl_read_length(L, idx, a, out);
+    out->x = lua_tonumber(L, idx);
+    return lua_type(L, idx) == LUA_TNUMBER && out->x >= 1 && out->x <= PC_PEN_MAXWIDTH;
+}
+
+/* A dash pattern: on, off lengths (an even number, at most 16), pixels or lengths with units
+ * (out->n = 1), into out->v; out->dim the count. */
+static int read_dash(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    lua_Integer n = lua_istable(L, idx) ? luaL_len(L, idx) : -1;
+    if (n < 0 || n > PC_PEN_MAXDASH || n % 2) return 0;
+    out->dim = (int)n;
+    for (int i = 0; i < n; i++) {
+        int t = lua_geti(L, idx, i + 1);
+        pcl_val len = {0};
+        if (i == 0) out->n = t == LUA_TSTRING;
+        if (out->n ? !pcl_read_length(L, lua_gettop(L), a, &len) : (len.x = lua_tonumber(L, -1),
+            t != LUA_TNUMBER || !(len.x >= 1e-6 && len.x <= 1e6)))
+            return pcl_readfail(L, lua_gettop(L), out->n ? "a length with its unit such as \"3mm\""
+                                                         : "a positive number (pixels)");
+        out->v[i] = len.x;
+        lua_pop(L, 1);
+    }
+    return 1;
+}
+
+static const pcl_arg pen_keys[] = {
+    {.name = "width", .kind = PCL_ANY, .read = read_pen_width, .expect = "a number 1..256 (pixels) or a length such as \"0.5mm\""},
+    {.name = "dash", .kind = PCL_ANY, .read = read_dash, .expect = "a list of on, off lengths (an even number, at most 16)"},
+    PCL_END};
+static const pcl_arg pen_table = {.name = "pen", .kind = PCL_OPTIONS, .keys = pen_keys};
+static const pcl_arg pen_args[] = {
+    {.name = "pen", .kind = PCL_ANY, .flags = PCL_OPT,
+     .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"},
+    PCL_END};
+
+/* pen{width = w, dash = {on, off, ...}} sets the pen (pixels, or lengths with units: the
+ * print pen); pen "main" a named pen; pen() restores the default. */
+static int l_pen(lua_State *L) {
+    pcl_val a[3] = {0};   /* pen; the table's width, dash */
+    PCL_READ(L, a);
+    pc_canvas *c = canvas(L);
+    if (!a[0].present) return pc_pen_reset(c), 0;
+    if (lua_type(L, 1) == LUA_TSTRING) return check(L, c, pc_pen_named(c, lua_tostring(L, 1)));
+    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be %s, got %s", pen_args[0].expect, pcl_shown(L, 1));
+    pcl_read_options(L, 1, 1, &pen_table, a + 1);
+    int physical = (a[1].present && a[1].n) || (a[2].present && a[2].n);   /* lengths with units */
+    if (physical && a[1].present && !a[1].n)
+        return pcl_keyfail(L, "width", "must be a length with its unit, as the dash is, got %s", pcl_pushnum(L, a[1].x));
+    if (physical && a[2].present && !a[2].n)
+        return pcl_keyfail(L, "dash", "must hold lengths with their units, as the width is");
+    double width = a[1].present ? a[1].x : physical ? PC_PRINT_PEN_PT : 1;
+    return check(L, c, (physical ? pc_pen_physical : pc_pen)(c, width, a[2].v, a[2].dim));
+}
+
+/* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at
+ * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
+static void list_point(lua_State *L, int idx, const char *where, const char *expected, double *xy) {
+    pcl_value *p = pcl_tovalue(L, -1);
+    if (p && p->n != 2) {
+        int st = pcl_project(L, p->n, p->h, xy, xy + 1);
+        if (st == PC_OK) return;
+        const char *text = luaL_tolstring(L, -1, NULL);
+        if (st == PC_IMPROPER)
+            pcl_fail(L, "argument #%d (points) %s: %s projects to infinity (it lies in the camera's "
+                        "vanishing plane)", idx, where, text);
+        if (st != PC_EDIM) pcl_fail(L, "argument #%d (points) %s: the image of %s is not finite", idx, where, text);
+        pcl_fail(L, "argument #%d (points) %s must be %s, got the %d-D %s (3-D points need a camera)",
+                 idx, where, expected, p->n, text);
+    }
+    if (p && pc_loc(2, p->h, xy) != PC_OK) {   /* a vector or a weighted value */
+        const char *text = luaL_tolstring(L, -1, NULL);
+        pcl_fail(L, "argument #%d (points) %s: %s has weight %s, not 1: a location must be a point "
+                    "(the membership condition; normalize(p) for a projective point)", idx, where, text,
+                 pcl_pushnum(L, p->h[2]));
+    }
+    if (!pcl_topoint2(L, -1, xy, xy + 1))
+        pcl_fail(L, "argument #%d (points) %s must be %s, got %s", idx, where, expected, pcl_shown(L, -1));
+}
+
+/* The points of path and fill: a list of 2-D points (one subpath) or a list of such lists
+ * (one subpath each).  The coordinates (out->list) and the verbs (out->obj: a move at the start
+ * of each subpath, lines after) go to scratch userdata above the arguments; out->n points. */
+static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    static const char nested_text[] = "a list of 2-D points or a list of such lists";
+    if (!lua_istable(L, idx)) return 0;
+    lua_Integer m = luaL_len(L, idx);
+    if (m < 1) return pcl_readfail(L, idx, "a list of at least one point");
+    int nested = lua_geti(L, idx, 1) == LUA_TTABLE;
+    lua_pop(L, 1);
+    size_t n = nested ? 0 : (size_t)m;
+    for (lua_Integer k = 1; nested && k <= m; k++) {   /* count the points of the subpaths */
+        if (lua_geti(L, idx, k) != LUA_TTABLE)
+            pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
+        lua_Integer len = luaL_len(L, -1);
+        if (len < 1) pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
+        n += (size_t)len;
+        lua_pop(L, 1);
+    }
+    if (n > 100000000) pcl_fail(L, "argument #%d (points) holds too many points", idx);
+    double *xy = lua_newuserdatauv(L, n * 2 * sizeof *xy, 0);   /* freed by the GC */
+    uint8_t *verbs = lua_newuserdatauv(L, n, 0);
+    size_t i = 0;
+    for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
+        int list = idx;
+        if (nested) {
+            lua_geti(L, idx, k);
+            list = lua_gettop(L);
+        }
+        lua_Integer len = luaL_len(L, list);
+        for (lua_Integer j = 1; j <= len; j++, i++) {
+            char where[48];
+            if (nested) snprintf(where, sizeof where, "[%d][%d]", (int)k, (int)j);
+            else snprintf(where, sizeof where, "[%d]", (int)j);
+            lua_geti(L, list, j);
+            list_point(L, idx, where, nested ? "a 2-D point" : "a 2-D point", &xy[2 * i]);
+            verbs[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
+            lua_pop(L, 1);
+        }
+        if (nested) lua_pop(L, 1);
+    }
+    out->list = xy, out->obj = verbs, out->n = (int)n;
+    return 1;
+}
+
+static const char *const RULES[] = {"evenodd", "nonzero", NULL};
+#define POINTS {.name = "points", .kind = PCL_ANY, .read = read_subpaths, .expect = "a list of 2-D points"}
+#define RULE(nm) {.name = nm, .kind = PCL_ENUM, .flags = PCL_OPT, .choices = RULES}
+static const char *const HEADS[] = {"none", "end", "start", "both", NULL};   /* PC_ARROW_* bits */
+static const pcl_arg path_keys[] = {{.name = "closed", .kind = PCL_BOOLEAN}, COLOR("color"), COLOR("fill"),
+                                    RULE("rule"), {.name = "arrow", .kind = PCL_ENUM, .choices = HEADS}, PCL_END};
+static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL_END};
+
+/* path(points [, {closed =, color =, fill =, rule =, arrow =}]): the polyline through a list of
+ * 2-D points (or several, one subpath each).  With fill, the closed path is filled in that
+ * colour, and its outline drawn on top only when color is given too; arrow heads (furniture.h)
+ * on the first and last segments of an unfilled one. */
+static int l_path(lua_State *L) {
+    pcl_val a[7] = {0};   /* points, options; closed, color, fill, rule, arrow */
+    PCL_READ(L, a);
+    pc_canvas *c = canvas(L);
+    size_t n = (size_t)a[0].n;
+    int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
+    const double *xy = a[0].list;
+    if (!a[4].present) {
+        check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
+        if ((heads & PC_ARROW_END) && n >= 2)
+            check(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
+        if ((heads & PC_ARROW_START) && n >= 2) check(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
+        return 0;
+    }
+    check(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[4].x));
+    if (color < 0) return 0;
+    return check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, 1, color));
+}
+
+/* fill(points [, colour [, rule]]): the closed path through the points (or several, one
+ * subpath each) filled; rule "evenodd" (default: a subpath inside another makes a hole) or
+ * "nonzero". */
+static const pcl_arg fill_args[] = {POINTS, COLOR("colour"), RULE("rule"), PCL_END};
+static int l_fill(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    pc_canvas *c = canvas(L);
+    size_t n = (size_t)a[0].n;
+    return check(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
+}
+
+/* label(text, P [, direction [, colour [, scale]]] [, {font =, size =, halo =}]): text beside
+ * a point, 3 px off it; without a direction it is placed when the picture is written
+ * (stdlib/draw/layout.h); the options apply in the print look. */
+static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
+static const pcl_arg label_args[] = {
+    TEXT, A_X("x"), A_NUM("y"),
+    {.name = "direction", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = DIRECTIONS, .dflt = PC_ANCHOR_NE,
+     .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
+    COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
+static int l_label(lua_State *L) {
+    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
+    pcl_val a[10] = {0};   /* text, x, y, direction, colour, scale, options; font, size, halo */
+    PCL_READ_PAIRS(L, a);
+    pc_canvas *c = canvas(L);
+    int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
+    check(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
+    if (a[6].present) pcl_label_style(L, c, a + 7);
+    return 0;
+}
+
+/* text(x, y, string [, colour [, scale]]): the text cell's top-left corner at the point. */
+static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
+static int l_text(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ_PAIRS(L, a);
+    pc_canvas *c = canvas(L);
+    return check(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
+}
+
 static int canvas_gc(lua_State *L) {
     canvas_box *b = genuine_box(L, 1);
     if (!b) return 0;   /* never a forged one */
@@ -770,13 +639,29 @@ static int canvas_gc(lua_State *L) {
     return 0;
 }
 
-static const luaL_Reg draw_functions[] = {
-    {"screen", l_screen}, {"cls", l_cls},       {"color", l_color},   {"palette", l_palette},
-    {"pset", l_pset},     {"preset", l_preset}, {"line", l_line},     {"line_to", l_line_to},
-    {"circle", l_circle}, {"paint", l_paint},   {"point", l_point},   {"window", l_window},
-    {"view", l_view},     {"save", l_save},     {"size", l_size},     {"last_point", l_last_point},
-    {"pen", l_pen},       {"path", l_path},     {"label", l_label},   {"text", l_text},
-    {"fill", l_fill},     {NULL, NULL}};
+static const pcl_fn fns[] = {
+    {.name = "screen", .fn = l_screen, .args = screen_args, .sig = "screen(12) | screen(13) | screen(1|2|7|9)\nscreen{width=W, height=H [, colors=2|4|16|256]}", .help = "A new blank canvas: 640x480x16 (12), 320x200x256 (13), QBasic's other modes (mode_info) or any size."},
+    {.name = "cls", .fn = l_cls, .args = NULL, .sig = "cls()", .help = "Clear the view to the background colour."},
+    {.name = "color", .fn = l_color, .args = color_args, .sig = "color(fg [, bg])\ncolor() -> fg, bg", .help = "Set the drawing colour (and the background used by cls), or read both."},
+    {.name = "palette", .fn = l_palette, .args = palette_args, .sig = "palette(attr, colour)\npalette()", .help = "Change what a colour number looks like (65536*b + 256*g + r in 0..63, \"#rrggbb\" or {r, g, b}); no argument restores the default."},
+    {.name = "pset", .fn = l_pset, .args = dot_args, .sig = "pset(x, y [, c]) | pset(A [, c])", .help = "Plot one pixel in colour c (default: the drawing colour)."},
+    {.name = "preset", .fn = l_preset, .args = dot_args, .sig = "preset(x, y [, c]) | preset(A [, c])", .help = "Plot one pixel in colour c (default: the background: erases)."},
+    {.name = "line", .fn = l_line, .args = line_args, .sig = "line(x1, y1, x2, y2 [, c [, \"b\"|\"bf\"]]) | line(A, B [, c [, style]])", .help = "A segment, or with \"b\" the outline of a box, with \"bf\" a filled box."},
+    {.name = "line_to", .fn = l_line_to, .args = line_to_args, .sig = "line_to(x, y [, c [, \"b\"|\"bf\"]]) | line_to(B [, c [, style]])", .help = "A segment from the last point referenced to (x, y): QBasic's LINE -(x, y)."},
+    {.name = "circle", .fn = l_circle, .args = circle_args, .sig = "circle(x, y, r [, c [, start, end [, aspect]]]) | circle(A, r, ...)", .help = "A circle, an ellipse (aspect) or an arc (angles in radians; a negative angle also draws that radius)."},
+    {.name = "paint", .fn = l_paint, .args = paint_args, .sig = "paint(x, y [, c [, border]]) | paint(A [, c [, border]])", .help = "Flood-fill from (x, y) up to pixels of the border colour (default: the paint colour)."},
+    {.name = "point", .fn = l_point, .args = point_args, .sig = "point(x, y) -> colour | point(A) -> colour", .help = "The colour number at (x, y), or -1 outside the view."},
+    {.name = "window", .fn = l_window, .args = window_args, .sig = "window(x1, y1, x2, y2 [, \"screen\"])\nwindow()", .help = "World coordinates: (x1, y1)-(x2, y2) fill the view, y up (y down with \"screen\"); no argument: pixels again."},
+    {.name = "view", .fn = l_view, .args = view_args, .sig = "view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])\nview()", .help = "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it."},
+    {.name = "save", .fn = l_save, .args = save_args, .sig = "save(path [, \"paper\"|\"screen\"])", .help = "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look."},
+    {.name = "size", .fn = l_size, .args = NULL, .sig = "size() -> width, height, colours", .help = "The size of the canvas and its number of colours."},
+    {.name = "last_point", .fn = l_last_point, .args = NULL, .sig = "last_point() -> x, y", .help = "The graphics cursor: the last point referenced, in world coordinates."},
+    {.name = "pen", .fn = l_pen, .args = pen_args, .sig = "pen{width = w, dash = {on, off, ...}}\npen{width = \"0.5mm\", dash = {\"3mm\", \"1.5mm\"}}\npen \"main\"|\"thin\"|\"hidden\"|\"centre\"\npen()", .help = "The pen of lines, boxes, circles and paths: width in pixels or a length with its unit (cm, mm, in, pt, px) and a dash pattern, or a named engineering pen (main 0.5 mm, thin 0.25 mm, hidden dashed, centre chain); pen() restores the default."},
+    {.name = "path", .fn = l_path, .args = path_args, .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])", .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment."},
+    {.name = "fill", .fn = l_fill, .args = fill_args, .sig = "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])", .help = "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG."},
+    {.name = "label", .fn = l_label, .args = label_args, .sig = "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])", .help = "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
+    {.name = "text", .fn = l_text, .args = text_args, .sig = "text(x, y, string [, colour [, scale]])", .help = "Text with the top-left corner of its first 8x16 cell at (x, y)."},
+    PCL_END};
 
 void pcl_open_draw(lua_State *L) {
     /* one canvas per Lua state: reuse it if the module is opened twice */
@@ -798,8 +683,16 @@ void pcl_open_draw(lua_State *L) {
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }
-    luaL_setfuncs(L, draw_functions, 1);
+    pcl_register(L, -2, fns, 1);
 }
 
-/* The colour argument at arg for other bindings (curves, surfaces): nil for the default. */
-int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) { return opt_color(L, lua_absindex(L, arg), c); }
+/* The colour argument at arg for bindings not on the layer (c:draw): nil for the default. */
+int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) {
+    arg = lua_absindex(L, arg);
+    int color = lua_isnoneornil(L, arg) ? -1 : color_of(L, arg, c);
+    if (color == -2)
+        pcl_error(L, "%s: argument #%d (colour) must be a colour number 0..%d or \"#rrggbb\", got %s",
+                  pcl_fname(L), pcl_arg_shown(L, arg), c->ncolors - 1, lua_type(L, arg) == LUA_TSTRING
+                  ? lua_pushfstring(L, "\"%s\"", lua_tostring(L, arg)) : pcl_shown(L, arg));
+    return color;
+}

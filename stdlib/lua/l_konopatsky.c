@@ -912,7 +912,7 @@ static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* 
 static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse_divisor *dv) {
     pcl_val t[2] = {0};
     const pcl_val *o = a + 2;
-    if (lua_istable(L, k)) pcl_readopts(L, k, k, &mse_opts, t), o = t;
+    if (lua_istable(L, k)) pcl_read_options(L, k, k, &mse_opts, t), o = t;
     double m = o[0].present ? o[0].x : a[0].present && !lua_istable(L, k) ? a[0].x : 100;
     if (m < lo || m > hi) {
         if (o[0].present) pcl_keyfail(L, "m", "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));

@@ -66,7 +66,7 @@ static const pcl_arg slider_args[] = {
 static int l_slider(lua_State *L) {
     pcl_val a[5] = {0}, k[2] = {0};   /* name, min, max, default, step; the table's step, animate */
     PCL_READ(L, a);
-    if (lua_istable(L, 5)) pcl_readopts(L, 5, 5, &slider_opts, k);
+    if (lua_istable(L, 5)) pcl_read_options(L, 5, 5, &slider_opts, k);
     const char *name = a[0].s;
     double lo = a[1].x, hi = a[2].x, dflt = a[3].x, step = lua_istable(L, 5) ? k[0].x : a[4].x;
     int animate = (int)k[1].x;

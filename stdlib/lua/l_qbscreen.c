@@ -13,19 +13,19 @@
  *   paint_tile(x, y, tile [, border])         PAINT with a tile string, as the mode reads it */
 #include <math.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_qbscreen.h"
 
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
 
-/* A core call failed: its message, under the binding's name (given: through a pcall the
- * caller's name is unknown). */
-static int check(lua_State *L, pc_canvas *c, int rc, const char *name) {
+/* A core call failed: its message under the declared name (the core's own name replaced). */
+static int check(lua_State *L, pc_canvas *c, int rc) {
     if (rc == PC_OK) return 0;
     const char *msg = c->error, *colon = strstr(msg, ": ");
     if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg))
-        msg = colon + 2;   /* the binding's name replaces the core's */
-    return pcl_error(L, "%s: %s", name, msg);
+        msg = colon + 2;
+    return pcl_fail(L, "%s", msg);
 }
 
 /* The mode of the screen (its size and colours), or 0 for a canvas of another size. */
@@ -45,47 +45,53 @@ static int cell_height(const pc_canvas *c) {
     return screen_mode(c, &m) ? m.cell_h : 16;
 }
 
-static int opt_attr(lua_State *L, int arg, pc_canvas *c, const char *what) {
-    if (lua_isnoneornil(L, arg)) return -1;
-    int isint;
-    lua_Integer v = lua_tointegerx(L, arg, &isint);
-    if (!isint || v < 0 || v >= c->ncolors) {
-        char expected[48];
-        snprintf(expected, sizeof expected, "a colour number 0..%d", c->ncolors - 1);
-        return pcl_argerror(L, arg, what, expected);
-    }
+/* An attribute of the screen drawn on as a colour (no "#rrggbb": QBasic's numbers) into out->x. */
+static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    int n = pcl_active_canvas(L)->ncolors, isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
+    return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d", n - 1));
+}
+
+/* A string of lo..hi bytes (NUL bytes cut DRAW's commands short: hi 0 refuses them). */
+static int read_bytes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    size_t n;
+    if (lua_type(L, idx) != LUA_TSTRING) return 0;
+    out->s = lua_tolstring(L, idx, &n);
+    out->n = (int)n;
+    if (a->hi == 0) return strlen(out->s) == n || pcl_readfail(L, idx, "a string without zero bytes");
+    return (n >= a->lo && n <= a->hi) || pcl_readfail(L, idx, a->expect);
+}
+
+/* The integer argument k (value v) must lie in lo..hi, a range the screen sets. */
+static int in_range(lua_State *L, int k, double v, int lo, int hi) {
+    if (v < lo || v > hi) pcl_argfail(L, k, "must be an integer from %d to %d, got %s", lo, hi, pcl_pushnum(L, v));
     return (int)v;
 }
 
-static int check_int(lua_State *L, int arg, const char *what, lua_Integer lo, lua_Integer hi) {
-    int isint;
-    lua_Integer v = lua_tointegerx(L, arg, &isint);
-    if (!isint || v < lo || v > hi) {
-        char expected[64];
-        snprintf(expected, sizeof expected, "an integer %lld..%lld", (long long)lo, (long long)hi);
-        return pcl_argerror(L, arg, what, expected);
-    }
-    return (int)v;
-}
+#define ATTR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_attr, .dflt = -1}
+#define INT(nm) {.name = nm, .kind = PCL_INTEGER}
 
+static const pcl_arg print_at_args[] = {INT("row"), INT("column"), {.name = "text", .kind = PCL_STRING},
+                                        ATTR("colour"), ATTR("background colour"), PCL_END};
 static int l_print_at(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     int h = cell_height(c);
-    int row = check_int(L, 1, "row", 1, c->height / h + 1);
-    int col = check_int(L, 2, "column", 1, c->width / 8);
-    size_t n;
-    const char *s = lua_tolstring(L, 3, &n);
-    if (!s || lua_type(L, 3) != LUA_TSTRING) return pcl_argerror(L, 3, "text", "a string");
-    int fg = opt_attr(L, 4, c, "colour"), bg = opt_attr(L, 5, c, "background colour");
-    return check(L, c, pc_text_cells(c, row, col, s, n, h, fg, bg), "print_at");
+    int row = in_range(L, 1, a[0].x, 1, c->height / h + 1), col = in_range(L, 2, a[1].x, 1, c->width / 8);
+    return check(L, c, pc_text_cells(c, row, col, a[2].s, lua_rawlen(L, 3), h, (int)a[3].x, (int)a[4].x));
 }
 
+static const pcl_arg scroll_args[] = {INT("top row"), INT("bottom row"), ATTR("background colour"), PCL_END};
 static int l_scroll_text(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     int h = cell_height(c), rows = (c->height + h - 1) / h;
-    int top = check_int(L, 1, "top row", 1, rows);
-    int bottom = check_int(L, 2, "bottom row", top, rows);
-    return check(L, c, pc_text_scroll(c, top, bottom, h, opt_attr(L, 3, c, "background colour")), "scroll_text");
+    int top = in_range(L, 1, a[0].x, 1, rows), bottom = in_range(L, 2, a[1].x, top, rows);
+    return check(L, c, pc_text_scroll(c, top, bottom, h, (int)a[2].x));
 }
 
 /* ---- blocks ------------------------------------------------------------------------------ */
@@ -130,96 +136,92 @@ static int block_tostring(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg get_block_args[] = {A_X("first corner x"), A_NUM("first corner y"),
+                                         A_X("second corner x"), A_NUM("second corner y"), PCL_END};
 static int l_get_block(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double x1, y1, x2, y2;
-    pcl_checkxy(L, &arg, &x1, &y1, "first corner");
-    pcl_checkxy(L, &arg, &x2, &y2, "second corner");
     block_box *bb = lua_newuserdatauv(L, sizeof *bb, 0);
     bb->self = PCL_SELF_TAG(bb, &BLOCK_TAG);
     bb->b = NULL;
     luaL_setmetatable(L, BLOCK_MT);
-    check(L, c, pc_get_block(c, x1, y1, x2, y2, &bb->b), "get_block");
+    check(L, c, pc_get_block(c, a[0].x, a[1].x, a[2].x, a[3].x, &bb->b));
     bb->bytes = pc_block_bytes(c, bb->b->w, bb->b->h);
     return 1;
 }
 
+/* A block from get_block into out->obj. */
+static int read_block(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    block_box *bb = toblock(L, idx);
+    return bb && bb->b && (out->obj = bb->b);
+}
+
+static const char *const ACTIONS[] = {"pset", "preset", "and", "or", "xor", NULL};   /* PC_PUT_* */
+static const pcl_arg put_block_args[] = {
+    A_X("corner x"), A_NUM("corner y"), {.name = "block", .kind = PCL_ANY, .read = read_block, .expect = "a block from get_block"},
+    {.name = "action", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ACTIONS, .dflt = PC_PUT_XOR}, PCL_END};
 static int l_put_block(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "corner");
-    block_box *bb = toblock(L, arg);
-    if (!bb || !bb->b) return pcl_argerror(L, arg, "block", "a block from get_block");
-    static const char *const actions[] = {"pset", "preset", "and", "or", "xor", NULL};
-    int action = PC_PUT_XOR;
-    if (!lua_isnoneornil(L, arg + 1)) {
-        const char *a = lua_tostring(L, arg + 1);
-        action = -1;
-        for (int i = 0; a && actions[i]; i++)
-            if (!strcmp(a, actions[i])) action = i;
-        if (action < 0 || lua_type(L, arg + 1) != LUA_TSTRING)
-            return pcl_argerror(L, arg + 1, "action", "\"pset\", \"preset\", \"and\", \"or\" or \"xor\"");
-    }
-    return check(L, c, pc_put_block(c, x, y, bb->b, action), "put_block");
+    return check(L, c, pc_put_block(c, a[0].x, a[1].x, a[2].obj, a[3].n));
 }
 
 /* ---- DRAW, pages, PMAP ------------------------------------------------------------------- */
 
+static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read = read_bytes, .expect = "a string"}, PCL_END};
 static int l_draw(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    size_t n;
-    const char *s = lua_tolstring(L, 1, &n);
-    if (!s || lua_type(L, 1) != LUA_TSTRING) return pcl_argerror(L, 1, "commands", "a string");
-    if (strlen(s) != n) return pcl_argerror(L, 1, "commands", "a string without zero bytes");
     pc_draw_state *st = pcl_draw_state(L);
     pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
     st->aspect = screen_mode(c, &m) ? m.aspect : 1;
-    return check(L, c, pc_draw_macro(c, st, s), "draw");
+    return check(L, c, pc_draw_macro(c, st, a[0].s));
 }
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
+static const pcl_arg paint_tile_args[] = {
+    A_X("x"), A_NUM("y"), {.name = "tile", .kind = PCL_ANY, .read = read_bytes, .lo = 1, .hi = 64, .expect = "a string of 1..64 bytes"},
+    ATTR("border"), PCL_END};
 static int l_paint_tile(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ_PAIRS(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int arg = 1;
-    double x, y;
-    pcl_checkxy(L, &arg, &x, &y, "point");
-    size_t n;
-    const char *s = lua_type(L, arg) == LUA_TSTRING ? lua_tolstring(L, arg, &n) : NULL;
-    if (!s || n < 1 || n > 64) return pcl_argerror(L, arg, "tile", "a string of 1..64 bytes");
-    int border = opt_attr(L, arg + 1, c, "border");
     pc_tile t;
-    check(L, c, pc_tile_from_bytes(c, (const unsigned char *)s, n, &t), "paint_tile");
-    return check(L, c, pc_paint_tile(c, x, y, &t, border), "paint_tile");
+    check(L, c, pc_tile_from_bytes(c, (const unsigned char *)a[2].s, (size_t)a[2].n, &t));
+    return check(L, c, pc_paint_tile(c, a[0].x, a[1].x, &t, (int)a[3].x));
 }
 
+static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
 static int l_pages(lua_State *L) {
-    int n = pcl_npages(L);
-    int active = check_int(L, 1, "active page", 0, n - 1);
-    int visual = lua_isnoneornil(L, 2) ? active : check_int(L, 2, "visual page", 0, n - 1);
-    pcl_set_pages(L, active, visual);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = pcl_npages(L), active = in_range(L, 1, a[0].x, 0, n - 1);
+    pcl_set_pages(L, active, a[1].present ? in_range(L, 2, a[1].x, 0, n - 1) : active);
     return 0;
 }
 
+static const pcl_arg pcopy_args[] = {INT("source page"), INT("destination page"), PCL_END};
 static int l_pcopy(lua_State *L) {
-    int n = pcl_npages(L);
-    int from = check_int(L, 1, "source page", 0, n - 1);
-    int to = check_int(L, 2, "destination page", 0, n - 1);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    int n = pcl_npages(L), from = in_range(L, 1, a[0].x, 0, n - 1), to = in_range(L, 2, a[1].x, 0, n - 1);
     pc_canvas *src = pcl_page(L, from), *dst = pcl_page(L, to);
-    return check(L, dst, pc_canvas_copy_picture(dst, src), "pcopy");
+    return check(L, dst, pc_canvas_copy_picture(dst, src));
 }
 
+static const pcl_arg pmap_args[] = {A_NUM("value"), A_INT("function", 0, 3), PCL_END};
 static int l_pmap(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int isnum;
-    double v = lua_tonumberx(L, 1, &isnum);
-    if (!isnum || !isfinite(v)) return pcl_argerror(L, 1, "value", "a finite number");
-    int fn = check_int(L, 2, "function", 0, 3);
+    double v = a[0].x, sx, sy, wx, wy;
     /* physical coordinates count from the view's corner, unless VIEW SCREEN */
     double ox = c->view_screen ? 0 : c->view.x0, oy = c->view_screen ? 0 : c->view.y0;
-    double sx, sy, wx, wy;
-    switch (fn) {
+    switch ((int)a[1].x) {
     case 0: pc_world_to_screen(c, v, 0, &sx, &sy); lua_pushinteger(L, (lua_Integer)lrint(sx - ox)); break;
     case 1: pc_world_to_screen(c, 0, v, &sx, &sy); lua_pushinteger(L, (lua_Integer)lrint(sy - oy)); break;
     case 2: pc_screen_to_world(c, v + ox, oy, &wx, &wy); lua_pushnumber(L, wx); break;
@@ -228,12 +230,13 @@ static int l_pmap(lua_State *L) {
     return 1;
 }
 
+static const pcl_arg mode_info_args[] = {{.name = "mode", .kind = PCL_INTEGER, .expect = "a screen mode 1, 2, 7, 8, 9, 12 or 13"}, PCL_END};
 static int l_mode_info(lua_State *L) {
-    int isint;
-    lua_Integer mode = lua_tointegerx(L, 1, &isint);
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
     pc_mode_info m;
-    if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
-        return pcl_argerror(L, 1, "mode", "a screen mode 1, 2, 7, 8, 9, 12 or 13");
+    if (a[0].x < 0 || a[0].x > 13 || pc_mode_info_of((int)a[0].x, &m) != PC_OK)
+        return pcl_argfail(L, 1, "must be a screen mode 1, 2, 7, 8, 9, 12 or 13, got %s", pcl_pushnum(L, a[0].x));
     lua_createtable(L, 0, 8);
     lua_pushinteger(L, m.width); lua_setfield(L, -2, "width");
     lua_pushinteger(L, m.height); lua_setfield(L, -2, "height");
@@ -246,13 +249,19 @@ static int l_mode_info(lua_State *L) {
     return 1;
 }
 
-static const luaL_Reg qbscreen_functions[] = {
-    {"print_at", l_print_at}, {"scroll_text", l_scroll_text}, {"get_block", l_get_block},
-    {"put_block", l_put_block}, {"draw", l_draw},            {"pages", l_pages},
-    {"pcopy", l_pcopy},       {"pmap", l_pmap},              {"mode_info", l_mode_info},
-    {"paint_tile", l_paint_tile},
-    {NULL, NULL}};
+static const pcl_fn fns[] = {
+    {.name = "print_at", .fn = l_print_at, .args = print_at_args, .sig = "print_at(row, col, text [, fg [, bg]])", .help = "Text in the character cells of a row and column (1-based; 8x8, 8x14 or 8x16 by the mode), code page 437, on an opaque background, as QBasic's PRINT."},
+    {.name = "scroll_text", .fn = l_scroll_text, .args = scroll_args, .sig = "scroll_text(top, bottom [, bg])", .help = "Move the text rows top..bottom up by one row of cells; the bottom row is cleared."},
+    {.name = "get_block", .fn = l_get_block, .args = get_block_args, .sig = "get_block(x1, y1, x2, y2) -> block", .help = "QBasic's GET: the pixels between two corners (inside the view); block.w, block.h and block.bytes (the size QBasic's array needs)."},
+    {.name = "put_block", .fn = l_put_block, .args = put_block_args, .sig = "put_block(x, y, block [, \"xor\"|\"pset\"|\"preset\"|\"and\"|\"or\"])", .help = "QBasic's PUT: the block with its top-left corner at (x, y), combined with the screen (XOR by default: twice restores)."},
+    {.name = "draw", .fn = l_draw, .args = draw_args, .sig = "draw(commands)", .help = "QBasic's DRAW: U D L R E F G H n, M x,y, B and N prefixes, C n, S n, A n, TA n, P paint,border, from the graphics cursor."},
+    {.name = "pages", .fn = l_pages, .args = pages_args, .sig = "pages(active [, visual])", .help = "Draw on page `active` and show page `visual` (SCREEN 7 has 8 pages, SCREEN 9 two); the page shown is the one saved."},
+    {.name = "pcopy", .fn = l_pcopy, .args = pcopy_args, .sig = "pcopy(from, to)", .help = "QBasic's PCOPY: page `to` becomes a copy of page `from`."},
+    {.name = "pmap", .fn = l_pmap, .args = pmap_args, .sig = "pmap(value, fn) -> number", .help = "QBasic's PMAP: fn 0 and 1 map a world x or y to view pixels, 2 and 3 map pixels back."},
+    {.name = "mode_info", .fn = l_mode_info, .args = mode_info_args, .sig = "mode_info(mode) -> {width, height, colors, pages, cols, rows, cell, aspect}", .help = "The facts of SCREEN mode 1, 2, 7, 8, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13)."},
+    {.name = "paint_tile", .fn = l_paint_tile, .args = paint_tile_args, .sig = "paint_tile(x, y, tile [, border])", .help = "QBasic's PAINT with a tile string (1..64 bytes, read as the mode keeps pixels: a bit a pixel in SCREEN 2, two in SCREEN 1, 4 bit planes a row in the 16-colour modes, a byte a pixel in SCREEN 13), up to the border colour (default: the foreground)."},
 
+    PCL_END};
 void pcl_open_qbscreen(lua_State *L) {
     if (luaL_newmetatable(L, BLOCK_MT)) {
         lua_pushcfunction(L, block_gc);
@@ -263,5 +272,5 @@ void pcl_open_qbscreen(lua_State *L) {
         lua_setfield(L, -2, "__tostring");
     }
     lua_pop(L, 1);
-    luaL_setfuncs(L, qbscreen_functions, 0);
+    pcl_register(L, -1, fns, 0);
 }

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "pcl_args.h"
 #include "pcl_curve.h"
 #include "hidden.h"
 #include "view.h"
@@ -56,9 +57,10 @@ void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
     (void)pushsurf(L, s, PC_OK, kind);
 }
 
-static lsurf *checksurf(lua_State *L, int idx, const char *fname) {
+/* The receiver of a method: a live surface (the callbacks of a Lua surface need the state). */
+static void *self_surf(lua_State *L, int idx) {
     lsurf *u = tosurf(L, idx);
-    if (!u || !u->s) pcl_argerror_full(L, fname, idx, idx, "self", "a surface");
+    if (!u || !u->s) return NULL;
     pcl_callback_state(L);
     return u;
 }
@@ -108,240 +110,220 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
 
 /* ---- constructors ------------------------------------------------------------------------------ */
 
-static void loc_arg(lua_State *L, int arg, const char *what, int *dim, double *out) {
-    *dim = pcl_checkloc(L, arg, what, *dim, *dim ? 1 : 0, out);
-}
-
+static const pcl_arg bilinear_args[] = {A_SAMEPOINT("P00"), A_SAMEPOINT("P10"), A_SAMEPOINT("P01"),
+                                        A_SAMEPOINT("P11"), PCL_END};
 static int l_bilinear(lua_State *L) {
-    double p[4][PC_MAXDIM];
-    int d = 0;
-    static const char *names[4] = {"P00", "P10", "P01", "P11"};
-    for (int i = 0; i < 4; i++) loc_arg(L, i + 1, names[i], &d, p[i]);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
     int st;
-    pc_surface *s = pc_surface_bilinear(d, p[0], p[1], p[2], p[3], &st);
-    pushsurf(L, s, st, "surface.bilinear");
+    pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st, pcl_name(L));
     return 1;
 }
 
-/* The size of row [i] of the net at arg (a list of points). */
-static int row_len(lua_State *L, const char *fn, int arg, int i) {
-    if (lua_geti(L, arg, i) != LUA_TTABLE)
-        pcl_error(L, "%s: argument #%d (net) row [%d] must be a list of points, got %s", fn, arg,
-                  i, luaL_typename(L, -1));
+/* The length of row [i] of the net at idx (a list of points). */
+static int row_len(lua_State *L, int idx, int i) {
+    if (lua_geti(L, idx, i) != LUA_TTABLE)
+        pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
     int n = (int)luaL_len(L, -1);
     lua_pop(L, 1);
     return n;
 }
 
-/* The net at arg: a list of nu rows of nv values, as homogeneous rows in a scratch userdata
- * left on the stack. */
-static double *read_net(lua_State *L, const char *fn, int arg, int *nu, int *nv, int *dim) {
-    if (!lua_istable(L, arg)) pcl_argerror_full(L, fn, arg, arg, "net", "a list of rows of points");
-    int m = (int)luaL_len(L, arg);
-    if (m < 2) pcl_error(L, "%s: argument #%d (net) must have at least 2 rows, got %d", fn, arg, m);
-    int n = row_len(L, fn, arg, 1);
-    if (n < 2) pcl_error(L, "%s: argument #%d (net) rows must hold at least 2 points", fn, arg);
-    if ((long)m * n > 100000) pcl_error(L, "%s: argument #%d (net) is too large", fn, arg);
-    lua_geti(L, arg, 1);
+/* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
+ * homogeneous rows in a scratch userdata above the arguments: out->list, out->v = nu, nv, dim. */
+static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (!lua_istable(L, idx)) return 0;
+    int m = (int)luaL_len(L, idx), n = m < 2 ? 0 : row_len(L, idx, 1);
+    if (m < 2) return pcl_argfail(L, idx, "must have at least 2 rows, got %d", m);
+    if (n < 2) return pcl_argfail(L, idx, "rows must hold at least 2 points");
+    if ((long)m * n > 100000) return pcl_argfail(L, idx, "is too large");
+    lua_geti(L, idx, 1);
     lua_geti(L, -1, 1);
     pcl_value *first = pcl_tovalue(L, -1);
-    if (!first) pcl_error(L, "%s: argument #%d (net) [1][1] must be a point, got %s", fn, arg,
-                          luaL_typename(L, -1));
+    if (!first) return pcl_argfail(L, idx, "[1][1] must be a point, got %s", pcl_shown(L, -1));
     int d = first->n;
     lua_pop(L, 2);
     double *h = lua_newuserdatauv(L, sizeof(double) * (size_t)m * n * (d + 1), 0);
     for (int i = 1; i <= m; i++) {
-        int len = row_len(L, fn, arg, i);
-        if (len != n)
-            pcl_error(L, "%s: argument #%d (net) row [%d] holds %d points, but row [1] holds %d",
-                      fn, arg, i, len, n);
-        lua_geti(L, arg, i);
+        int len = row_len(L, idx, i);
+        if (len != n) pcl_argfail(L, idx, "row [%d] holds %d points, but row [1] holds %d", i, len, n);
+        lua_geti(L, idx, i);
         for (int j = 1; j <= n; j++) {
             lua_geti(L, -1, j);
             pcl_value *v = pcl_tovalue(L, -1);
-            if (!v) pcl_error(L, "%s: argument #%d (net) [%d][%d] must be a point, got %s", fn,
-                              arg, i, j, luaL_typename(L, -1));
-            if (v->n != d)
-                pcl_error(L, "%s: argument #%d (net) [%d][%d] is %d-D, but [1][1] is %d-D: "
-                          "dimensions cannot be mixed", fn, arg, i, j, v->n, d);
+            if (!v) pcl_argfail(L, idx, "[%d][%d] must be a point, got %s", i, j, pcl_shown(L, -1));
+            if (v->n != d) pcl_argfail(L, idx, "[%d][%d] is %d-D, but [1][1] is %d-D (mixed dimensions)", i, j, v->n, d);
             for (int k = 0; k <= d; k++) {
-                if (!isfinite(v->h[k]))
-                    pcl_error(L, "%s: argument #%d (net) [%d][%d] has NaN or infinite "
-                              "coordinates", fn, arg, i, j);
+                if (!isfinite(v->h[k])) pcl_argfail(L, idx, "[%d][%d] has NaN or infinite coordinates", i, j);
                 h[((size_t)(i - 1) * n + (j - 1)) * (d + 1) + k] = v->h[k];
             }
             lua_pop(L, 1);
         }
         lua_pop(L, 1);
     }
-    *nu = m;
-    *nv = n;
-    *dim = d;
-    return h;
+    out->list = h;
+    out->v[0] = m, out->v[1] = n, out->v[2] = d;
+    return 1;
 }
 
+#define NET {.name = "net", .kind = PCL_ANY, .read = read_net, .expect = "a list of rows of points"}
+static const pcl_arg bezier_args[] = {NET, PCL_END};
 static int l_bezier(lua_State *L) {
-    int nu, nv, d;
-    double *h = read_net(L, "surface.bezier", 1, &nu, &nv, &d);
-    int st;
-    pc_surface *s = pc_surface_bezier(d, nu - 1, nv - 1, h, &st);
-    pushsurf(L, s, st, "surface.bezier");
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
+    pushsurf(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), st, pcl_name(L));
     return 1;
 }
 
+static const pcl_arg bspline_args[] = {NET, {.name = "p", .kind = PCL_INTEGER}, {.name = "q", .kind = PCL_INTEGER},
+                                       {.name = "uknots", .kind = PCL_ANY, .flags = PCL_OPT},
+                                       {.name = "vknots", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 static int l_bspline(lua_State *L) {
-    const char *fn = "surface.bspline";
-    lua_settop(L, 5);
-    int nu, nv, d;
-    double *h = read_net(L, fn, 1, &nu, &nv, &d);
-    int p = (int)pcl_checknum(L, fn, 2, "p"), q = (int)pcl_checknum(L, fn, 3, "q");
-    if (p < 1 || p >= nu) pcl_error(L, "%s: argument #2 (p) must be 1..%d (below the %d rows)", fn, nu - 1, nu);
-    if (q < 1 || q >= nv) pcl_error(L, "%s: argument #3 (q) must be 1..%d (below the %d columns)", fn, nv - 1, nv);
-    double *uk, *vk;
-    pc_knot_kind ukind = pcl_checkknots(L, fn, 4, nu, p, &uk), vkind = pcl_checkknots(L, fn, 5, nv, q, &vk);
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    int nu = (int)a[0].v[0], nv = (int)a[0].v[1], p = (int)a[1].x, q = (int)a[2].x;
+    if (p < 1 || p >= nu) return pcl_argfail(L, 2, "must be 1..%d (below the %d rows)", nu - 1, nu);
+    if (q < 1 || q >= nv) return pcl_argfail(L, 3, "must be 1..%d (below the %d columns)", nv - 1, nv);
+    double *uk, *vk;   /* the knots as bspline reads them (l_curve.c) */
+    pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
     int st;
-    pc_surface *s = pc_surface_bspline(d, p, q, nu, nv, h, ukind, uk, vkind, vk, &st);
-    pushsurf(L, s, st, fn);
+    pushsurf(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), st, pcl_name(L));
     return 1;
 }
 
-static int l_hermite(lua_State *L) {
-    const char *fn = "surface.hermite";
-    if (!lua_istable(L, 1)) pcl_argerror_full(L, fn, 1, 1, "spec", "a table {P =, Pu =, Pv =, Puv =}");
-    static const char *fields[4] = {"P", "Pu", "Pv", "Puv"};
-    double rows[4][4 * PC_MAXDIM];
-    int d = 0;
-    for (int f = 0; f < 4; f++) {
-        if (lua_getfield(L, 1, fields[f]) != LUA_TTABLE || luaL_len(L, -1) != 4)
-            pcl_error(L, "%s: %s must be a list of 4 %s (corners (0,0), (1,0), (0,1), (1,1))", fn,
-                      fields[f], f ? "vectors" : "points");
-        for (int i = 0; i < 4; i++) {
-            lua_geti(L, -1, i + 1);
-            pcl_value *v = pcl_tovalue(L, -1);
-            double want = f ? 0 : 1;
-            if (!v || fabs(v->h[v->n] - want) > PC_WEIGHT_TOL || (d && v->n != d))
-                pcl_error(L, "%s: %s[%d] must be a %s%s", fn, fields[f], i + 1, f ? "vector" : "point",
-                          d ? " of the corners' dimension" : "");
-            d = v->n;
-            memcpy(rows[f] + i * d, v->h, sizeof(double) * (size_t)d);
-            lua_pop(L, 1);
-        }
+/* A list of 4 points (P) or 4 vectors (Pu, Pv, Puv) of the corners' dimension: out->list. */
+static int read_corners(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    if (!lua_istable(L, idx) || luaL_len(L, idx) != 4) return 0;
+    pcl_arg one = {.name = a->name, .kind = strcmp(a->name, "P") ? PCL_VECTOR : PCL_POINT, .flags = PCL_SAMEDIM};
+    double *x = lua_newuserdatauv(L, sizeof(double) * 4 * PC_MAXDIM, 0);
+    for (int i = 0; i < 4; i++) {
+        lua_geti(L, idx, i + 1);
+        pcl_val v;
+        pcl_readone(L, lua_gettop(L), 1, i + 1, &one, i ? out->n : 0, &v);   /* [1]'s dimension for all */
+        memcpy(x + i * v.n, v.v, sizeof(double) * (size_t)v.n);
+        out->n = v.n;
         lua_pop(L, 1);
     }
+    out->list = x;
+    return 1;
+}
+#define CORNERS(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_corners, \
+    .expect = "a list of 4 " what " (corners (0,0), (1,0), (0,1), (1,1))", .shown = "{4}"}
+static const pcl_arg hermite_keys[] = {CORNERS("P", "points"), CORNERS("Pu", "vectors"), CORNERS("Pv", "vectors"),
+                                       CORNERS("Puv", "vectors"), PCL_END};
+static const pcl_arg hermite_args[] = {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = hermite_keys}, PCL_END};
+static int l_hermite(lua_State *L) {
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    for (int f = 2; f <= 4; f++)
+        if (a[f].n != a[1].n)
+            return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
     int st;
-    pc_surface *s = pc_surface_hermite(d, rows[0], rows[1], rows[2], rows[3], &st);
-    pushsurf(L, s, st, fn);
+    pushsurf(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), st, pcl_name(L));
     return 1;
 }
 
-static pc_curve *curve_arg(lua_State *L, const char *fn, int arg, const char *what) {
-    pc_curve *c = pcl_tocurve(L, arg);
-    if (!c) pcl_argerror_full(L, fn, arg, arg, what, "a curve");
-    return c;
-}
-
+static const pcl_arg ruled_args[] = {A_CURVE("c0", 0), A_CURVE("c1", 0), PCL_END};
 static int l_ruled(lua_State *L) {
-    const char *fn = "surface.ruled";
-    pc_curve *a = curve_arg(L, fn, 1, "c0"), *b = curve_arg(L, fn, 2, "c1");
-    if (a->dim != b->dim) pcl_error(L, "%s: the curves are %d-D and %d-D: dimensions cannot be mixed", fn, a->dim, b->dim);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
-    pc_surface *s = pc_surface_ruled(a, b, &st);
-    pushsurf(L, s, st, fn);
+    pushsurf(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), st, pcl_name(L));
     return 1;
 }
 
+static const pcl_arg coons_args[] = {A_CURVE("cu0", 0), A_CURVE("cu1", 0), A_CURVE("c0v", 0), A_CURVE("c1v", 0), PCL_END};
 static int l_coons(lua_State *L) {
-    const char *fn = "surface.coons";
-    pc_curve *c[4];
-    static const char *names[4] = {"cu0", "cu1", "c0v", "c1v"};
-    for (int i = 0; i < 4; i++) {
-        c[i] = curve_arg(L, fn, i + 1, names[i]);
-        if (c[i]->dim != c[0]->dim) pcl_error(L, "%s: the curves must have one dimension", fn);
-    }
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    for (int i = 1; i < 4; i++)
+        if (a[i].n != a[0].n)
+            return pcl_argfail(L, i + 1, "is %d-D, but argument #1 (cu0) is %d-D (mixed dimensions)", a[i].n, a[0].n);
     int st;
-    pc_surface *s = pc_surface_coons(c[0], c[1], c[2], c[3], &st);
+    pc_surface *s = pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st);
     if (!s && st == PC_EDOMAIN)
-        return pcl_error(L, "%s: the boundary curves do not meet at the corners (cu0 and c0v "
-                            "must start together, cu0 must end where c1v starts, ...)", fn);
-    pushsurf(L, s, st, fn);
+        return pcl_fail(L, "the boundary curves do not meet at the corners (cu0 and c0v must start "
+                           "together, cu0 must end where c1v starts, ...)");
+    pushsurf(L, s, st, pcl_name(L));
     return 1;
 }
 
+static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
+                                          A_NUMOPT("v0", 0, "0"), A_NUMOPT("v1", 2 * M_PI, "2*pi"), PCL_END};
 static int l_revolution(lua_State *L) {
-    const char *fn = "surface.revolution";
-    pc_curve *c = curve_arg(L, fn, 1, "profile");
-    if (c->dim != 3) pcl_error(L, "%s: argument #1 (profile) must be a 3-D curve, got %d-D", fn, c->dim);
-    double a[3], d[3];
-    pcl_checkloc(L, 2, "A", 3, 0, a);
-    pcl_checkvec(L, 3, "d", 3, 0, d);
-    double v0 = pcl_optnum(L, fn, 4, "v0", 0), v1 = pcl_optnum(L, fn, 5, "v1", 2 * M_PI);
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
     int st;
-    pc_surface *s = pc_surface_revolution(c, a, d, v0, v1, &st);
-    if (!s && st == PC_EZERO) return pcl_error(L, "%s: argument #3 (d) must be a nonzero vector (the axis)", fn);
-    pushsurf(L, s, st, fn);
+    pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
+    if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
+    pushsurf(L, s, st, pcl_name(L));
     return 1;
 }
 
+/* f: a Lua function (u, v) -> point or a compiled point equation (l_expr.c). */
+static int read_surface_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a, (void)out;
+    return lua_isfunction(L, idx) || pcl_isequation(L, idx);
+}
+
+static const pcl_arg func_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_surface_fn,
+                                     .expect = "a function (u, v) -> point or an equation"},
+                                    A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1"), PCL_END};
 /* surface(f, u0, u1, v0, v1): the __call of the table (the table itself is argument 1) */
 static int l_func(lua_State *L) {
-    const char *fn = "surface";
+    pcl_val a[5] = {0};
+    PCL_READ(L, a);
+    const char *fn = pcl_name(L);
+    lua_settop(L, 6);
     lua_remove(L, 1);
+    int st;
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        int st;
-        pc_surface *s = pcl_eq_surface(L, fn, &st);
-        pushsurf(L, s, st, fn);
+        pushsurf(L, pcl_eq_surface(L, fn, &st), st, fn);
         return 1;
     }
-    if (!lua_isfunction(L, 1)) pcl_argerror_full(L, fn, 1, 1, "f", "a function (u, v) -> point or an equation");
-    double r[4];
-    static const char *names[4] = {"u0", "u1", "v0", "v1"};
-    for (int i = 0; i < 4; i++) r[i] = pcl_checknum(L, fn, i + 2, names[i]);
-    if (!(r[1] > r[0]) || !(r[3] > r[2])) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fn);
-    lua_settop(L, 5);
+    if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     lua_pushvalue(L, 1);
-    lua_pushnumber(L, r[0]);
-    lua_pushnumber(L, r[2]);
+    lua_pushnumber(L, a[1].x);
+    lua_pushnumber(L, a[3].x);
     lua_call(L, 2, 1);
     pcl_value *p = pcl_tovalue(L, -1);
-    if (!p) pcl_error(L, "%s: f(u0, v0) must return a point, got %s", fn, luaL_typename(L, -1));
+    if (!p) return pcl_fail(L, "f(u0, v0) must return a point, got %s", luaL_typename(L, -1));
     int d = p->n;
     lua_pop(L, 1);
     luasurf *f = malloc(sizeof *f);
-    if (!f) return pcl_error(L, "%s: out of memory", fn);
+    if (!f) return pcl_fail(L, "out of memory");
     f->dim = d;
     lua_pushvalue(L, 1);
     f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
-    int st;
-    pc_surface *s = pc_surface_func(d, r[0], r[1], r[2], r[3], luasurf_eval, luasurf_free, f, &st);
-    pushsurf(L, s, st, fn);
+    pushsurf(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), st, fn);
     return 1;
 }
 
 /* ---- methods --------------------------------------------------------------------------------- */
 
-static void uv_args(lua_State *L, const char *fn, double *u, double *v) {
-    *u = pcl_checknum_m(L, fn, 2, "u");
-    *v = pcl_checknum_m(L, fn, 3, "v");
-}
+static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
 
 static int s_call(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "surface");
-    double a, b, out[PC_MAXDIM];
-    uv_args(L, "surface", &a, &b);
-    int st = pc_surface_eval(u->s, a, b, out);
-    if (st == PC_IMPROPER) return pcl_error(L, "surface: the point at (%s, %s) is at infinity", pcl_pushnum(L, a), pcl_pushnum(L, b));
-    if (st != PC_OK) return pcl_raise_status(L, "surface", st);
+    pcl_val a[2] = {0};
+    lsurf *u = PCL_READ(L, a);
+    double out[PC_MAXDIM];
+    int st = pc_surface_eval(u->s, a[0].x, a[1].x, out);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the point at (%s, %s) is at infinity", pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     pcl_pushpoint(L, u->s->dim, out);
     return 1;
 }
 
 static int s_partials(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "s:partials");
-    double a, b, out[3 * PC_MAXDIM];
-    uv_args(L, "s:partials", &a, &b);
-    int st = pc_surface_partials(u->s, a, b, out);
-    if (st != PC_OK) return pcl_raise_status(L, "s:partials", st);
+    pcl_val a[2] = {0};
+    lsurf *u = PCL_READ(L, a);
+    double out[3 * PC_MAXDIM];
+    int st = pc_surface_partials(u->s, a[0].x, a[1].x, out);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     int d = u->s->dim;
     pcl_pushpoint(L, d, out);
     pcl_pushvector(L, d, out + d);
@@ -350,48 +332,50 @@ static int s_partials(lua_State *L) {
 }
 
 static int s_normal(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "s:normal");
-    double a, b, n[3];
-    uv_args(L, "s:normal", &a, &b);
-    if (u->s->dim != 3) return pcl_error(L, "s:normal: a normal needs a 3-D surface, this one is %d-D", u->s->dim);
-    int st = pc_surface_normal(u->s, a, b, n);
-    if (st == PC_EZERO) return pcl_error(L, "s:normal: the surface is singular at (%s, %s): its partial derivatives are parallel", pcl_pushnum(L, a), pcl_pushnum(L, b));
-    if (st != PC_OK) return pcl_raise_status(L, "s:normal", st);
+    pcl_val a[2] = {0};
+    lsurf *u = PCL_READ(L, a);
+    double n[3];
+    if (u->s->dim != 3) return pcl_fail(L, "a normal needs a 3-D surface, this one is %d-D", u->s->dim);
+    int st = pc_surface_normal(u->s, a[0].x, a[1].x, n);
+    if (st == PC_EZERO)
+        return pcl_fail(L, "the surface is singular at (%s, %s): its partial derivatives are parallel",
+                        pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     pcl_pushvector(L, 3, n);
     return 1;
 }
 
-static int iso_dir(lua_State *L, const char *fn, int idx) {
-    const char *s = lua_tostring(L, idx);
-    if (lua_type(L, idx) == LUA_TSTRING && !strcmp(s, "u")) return 0;
-    if (lua_type(L, idx) == LUA_TSTRING && !strcmp(s, "v")) return 1;
-    return pcl_argerror_full(L, fn, idx, idx - 1, "family", "\"u\" (u = const) or \"v\" (v = const)");
-}
-
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
+static const char *const FAMILIES[] = {"u", "v", NULL};
+static const pcl_arg iso_args[] = {{.name = "family", .kind = PCL_ENUM, .choices = FAMILIES,
+                                    .expect = "\"u\" (u = const) or \"v\" (v = const)"}, A_NUM("value"), PCL_END};
 static int s_iso(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "s:iso");
-    int dir = iso_dir(L, "s:iso", 2);
-    double val = pcl_checknum_m(L, "s:iso", 3, "value");
+    pcl_val a[2] = {0};
+    lsurf *u = PCL_READ(L, a);
     int st;
-    pc_curve *c = pc_surface_iso(u->s, dir, val, &st);
-    if (!c) return pcl_raise_status(L, "s:iso", st);
+    pc_curve *c = pc_surface_iso(u->s, a[0].n, a[1].x, &st);
+    if (!c) return pcl_raise_status(L, pcl_name(L), st);
     pcl_pushcurve(L, c, "iso-curve");
     return 1;
 }
 
+static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
 static int s_map(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "s:map");
-    pc_map *f = pcl_tomap(L, 2);
-    if (!f) return pcl_argerror_full(L, "s:map", 2, 1, "f", "a map");
-    if (f->nin != u->s->dim)
-        return pcl_error(L, "s:map: the map takes %d-D points, but the surface is %d-D", f->nin, u->s->dim);
+    pcl_val a[1] = {0};
+    lsurf *u = PCL_READ(L, a);
+    pc_map *f = a[0].obj;
+    if (f->nin != u->s->dim) return pcl_fail(L, "the map takes %d-D points, but the surface is %d-D", f->nin, u->s->dim);
     int st;
-    pc_surface *s = pc_surface_map(u->s, f, &st);
-    pushsurf(L, s, st, u->kind);
+    pushsurf(L, pc_surface_map(u->s, f, &st), st, u->kind);
     return 1;
 }
 
+/* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the camera. */
+static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim) {
+    const pc_map *f = m->obj;
+    if (f && (f->nout != 2 || f->nin != dim)) pcl_keyfail(L, "map", "must be a map from %d-D to 2-D", dim);
+    return f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
+}
 
 typedef struct {
     const pc_occluder *occ;
@@ -442,22 +426,11 @@ static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
     return st;
 }
 
-static int opt_count(lua_State *L, int opts, const char *field, int dflt, int min, int max) {
-    lua_getfield(L, opts, field);
-    int isint = 1;
-    lua_Integer n = lua_isnil(L, -1) ? dflt : lua_tointegerx(L, -1, &isint);
-    if (!isint || n < min || n > max)
-        pcl_error(L, "s:wireframe: %s must be an integer %d..%d, got %s", field, min, max,
-                  pcl_shown(L, -1));
-    lua_pop(L, 1);
-    return (int)n;
-}
-
 /* The wireframe in the camera's scene: the surface as an occluder, its iso-lines (and its
  * silhouette) as 3-D strokes, all resolved against every surface of the figure at write. */
 static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, int nv, int mesh,
                            int outline, int color) {
-    const char *fn = "s:wireframe";
+    const char *fn = pcl_name(L);
     int st = pc_scene_add_surface(sc, s, mesh), boundary = outline & 2;
     outline &= 1;
     for (int dir = 0; dir < 2 && st == PC_OK; dir++) {
@@ -489,45 +462,31 @@ static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, in
  * flattened and drawn as a path through the map or the camera.  With hidden, the parts the
  * surface itself hides (depth test against a mesh of mesh x mesh quads, hidden.h) are left
  * out or drawn dashed. */
+static const char *const HIDDEN[] = {"show", "hide", "dashed", NULL};   /* 0 every line, 1 hide, 2 dashed */
+#define COUNT(nm, top, d) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = top, .dflt = d, .shown = #d}
+#define COUNT0(nm) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 0, .hi = 1000, .dflt = 10, .shown = "10"}
+static const pcl_arg wireframe_keys[] = {
+    COUNT0("nu"), COUNT0("nv"), {.name = "color", .kind = PCL_ANY, .read = pcl_read_color, .dflt = -1, .shown = "c"},
+    {.name = "tol", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 0.25, .shown = "px"}, {.name = "map", .kind = PCL_MAP, .shown = "m"},
+    {.name = "hidden", .kind = PCL_ENUM, .choices = HIDDEN}, COUNT("mesh", 1024, 48),
+    {.name = "silhouette", .kind = PCL_BOOLEAN, .shown = "false"}, {.name = "boundary", .kind = PCL_BOOLEAN, .shown = "false"}, PCL_END};
+static const pcl_arg wireframe_args[] = {A_OPTIONS("opts", wireframe_keys), PCL_END};
 static int s_wireframe(lua_State *L) {
-    const char *fn = "s:wireframe";
-    lsurf *u = checksurf(L, 1, fn);
-    if (lua_isnoneornil(L, 2)) {
-        lua_settop(L, 1);
-        lua_newtable(L);
-    }
-    if (!lua_istable(L, 2)) return pcl_argerror_full(L, fn, 2, 1, "opts", "a table");
-    int nu = opt_count(L, 2, "nu", 10, 0, 1000), nv = opt_count(L, 2, "nv", 10, 0, 1000);
-    int mesh = opt_count(L, 2, "mesh", 48, 1, 1024);
-    lua_getfield(L, 2, "silhouette");
-    int outline = lua_toboolean(L, -1);
-    lua_getfield(L, 2, "boundary");
-    int boundary = lua_toboolean(L, -1);
-    lua_pop(L, 2);
-    lua_getfield(L, 2, "color");
+    pcl_val a[10] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
+    lsurf *u = PCL_READ(L, a);
+    const char *fn = pcl_name(L);
+    int nu = (int)a[1].x, nv = (int)a[2].x, color = (int)a[3].x, mode = a[6].n, mesh = (int)a[7].x;
+    int outline = (int)a[8].x, boundary = (int)a[9].x;
+    double tol = a[4].x;
     pc_canvas *cv = pcl_canvas(L);
-    int color = pcl_optcolor(L, -1, cv);
-    lua_getfield(L, 2, "tol");
-    double tol = luaL_optnumber(L, -1, 0.25);
-    if (!(tol > 0)) return pcl_error(L, "%s: tol must be a positive number of pixels", fn);
-    int mode = 0;   /* 0 every line, 1 hide, 2 dashed */
-    if (lua_getfield(L, 2, "hidden") != LUA_TNIL) {
-        const char *m = lua_tostring(L, -1);
-        if (lua_type(L, -1) == LUA_TSTRING && !strcmp(m, "hide")) mode = 1;
-        else if (lua_type(L, -1) == LUA_TSTRING && !strcmp(m, "dashed")) mode = 2;
-        else if (!(lua_type(L, -1) == LUA_TSTRING && !strcmp(m, "show")))
-            return pcl_error(L, "%s: hidden must be \"hide\", \"dashed\" or \"show\", got %s", fn,
-                             pcl_shown(L, -1));
-    }
-    lua_getfield(L, 2, "map");
     pc_surface *s = u->s;
-    const pc_map *f = pcl_drawing_map(L, lua_gettop(L), s->dim, fn);
+    const pc_map *f = drawing_map(L, &a[5], s->dim);
     if (mode && (s->dim != 3 || !f))
         return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
     if (outline && (s->dim != 3 || !f))
         return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
-    pc_scene *sc = !mode && s->dim == 3 && lua_isnil(L, -1) ? pcl_scene(L) : NULL;
+    pc_scene *sc = !mode && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
     if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline | boundary << 1, color);
     hidden_ctx h = {0};
     pc_occluder *occ = NULL;
@@ -592,96 +551,62 @@ static int s_wireframe(lua_State *L) {
 
 /* ---- shading ----------------------------------------------------------------------------- */
 
-/* The house error for a field of the options table of s:shade (argument #1 of the method);
- * the value at the stack top. */
-static int shade_field_error(lua_State *L, const char *field, const char *expected) {
-    const char *what = lua_pushfstring(L, "opts.%s", field);
-    return pcl_argerror_full(L, "s:shade", lua_gettop(L) - 1, 1, what, expected);
+/* A colour of s:shade: an attribute with a colour (a true colour included) or "#rrggbb" (a
+ * true colour, allocated); the attribute into out->x, its rgb into out->v. */
+static int read_shade_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *cv = pcl_canvas(L);
+    pc_rgb rgb;
+    int isint, ok;
+    if (lua_type(L, idx) == LUA_TSTRING) {
+        size_t len;
+        const char *h = lua_tolstring(L, idx, &len);
+        if ((ok = pc_rgb_parse(h, len, &rgb) == PC_OK) && (out->x = pc_rgb_color(cv, rgb)) < 0)
+            return pcl_fail(L, "%s", cv->error);
+    } else {
+        lua_Integer v = lua_tointegerx(L, idx, &isint);
+        ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR &&
+             pc_canvas_rgb(cv, (int)v, &rgb) == PC_OK;
+        out->x = (double)v;
+    }
+    if (!ok) return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", cv->ncolors - 1));
+    out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
+    return 1;
 }
 
-/* opts.field (at the stack top) as a colour: an attribute of the screen or "#rrggbb"; its
- * rgb into *rgb and its attribute (a true colour allocated for a string) returned. */
-static int shade_color(lua_State *L, pc_canvas *cv, const char *field, pc_rgb *rgb) {
-    char expected[64];
-    snprintf(expected, sizeof expected, "a colour number 0..%d or \"#rrggbb\"", cv->ncolors - 1);
-    if (lua_type(L, -1) == LUA_TSTRING) {
-        size_t len;
-        const char *h = lua_tolstring(L, -1, &len);
-        unsigned v[3];
-        int ok = len == 7 && h[0] == '#';
-        for (size_t k = 1; ok && k < 7; k++) ok = isxdigit((unsigned char)h[k]) != 0;
-        if (!ok || sscanf(h + 1, "%2x%2x%2x", &v[0], &v[1], &v[2]) != 3)
-            return pcl_error(L, "s:shade: argument #1 (opts.%s) must be %s, got \"%s\"", field,
-                             expected, h);
-        *rgb = (pc_rgb){(uint8_t)v[0], (uint8_t)v[1], (uint8_t)v[2]};
-        int attr = pc_rgb_color(cv, *rgb);
-        if (attr < 0) return pcl_error(L, "s:shade: %s", cv->error);
-        return attr;
-    }
-    int isint;
-    lua_Integer a = lua_tointegerx(L, -1, &isint);
-    if (lua_type(L, -1) != LUA_TNUMBER || !isint || a < 0 || a > PC_MAX_ATTR ||
-        pc_canvas_rgb(cv, (int)a, rgb) != PC_OK)
-        return shade_field_error(L, field, expected);
-    return (int)a;
-}
+#define SHADE_COLOR(nm) {.name = nm, .kind = PCL_ANY, .read = read_shade_color, .dflt = -1, .shown = "c"}
+static const pcl_arg shade_keys[] = {
+    COUNT("nu", 1024, 40), COUNT("nv", 1024, 40), SHADE_COLOR("color"),
+    {.name = "light", .kind = PCL_VECTOR, .dim = 3, .expect = "a 3-D vector (the direction towards the light)", .shown = "V(...)"},
+    {.name = "ambient", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = 1, .shown = "0"},
+    SHADE_COLOR("mesh"), {.name = "map", .kind = PCL_MAP, .shown = "m"}, PCL_END};
+static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 
 /* s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = f}: the
  * surface as nu x nv quads through the map or the camera, each filled with its Lambert shade
  * of the base colour (stdlib/geom/shade.h) in painter's order, each outline drawn over its
  * fill in the mesh colour when mesh is given.  Returns the number of quads drawn. */
 static int s_shade(lua_State *L) {
-    const char *fn = "s:shade";
-    lsurf *u = checksurf(L, 1, fn);
-    if (lua_isnoneornil(L, 2)) {
-        lua_settop(L, 1);
-        lua_newtable(L);
-    }
-    if (!lua_istable(L, 2)) return pcl_argerror_full(L, fn, 2, 1, "opts", "a table");
-    lua_settop(L, 2);
+    pcl_val a[8] = {0};   /* opts; nu, nv, color, light, ambient, mesh, map */
+    lsurf *u = PCL_READ(L, a);
+    const char *fn = pcl_name(L);
     pc_canvas *cv = pcl_canvas(L);
-    pc_shade_opts o = {.nu = 40, .nv = 40};
-    static const char *const counts[2] = {"nu", "nv"};
-    for (int k = 0; k < 2; k++) {
-        if (lua_getfield(L, 2, counts[k]) != LUA_TNIL) {
-            int isint;
-            lua_Integer v = lua_tointegerx(L, -1, &isint);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isint || v < 1 || v > 1024)
-                shade_field_error(L, counts[k], "an integer 1..1024");
-            *(k ? &o.nv : &o.nu) = (int)v;
-        }
-        lua_pop(L, 1);
-    }
+    pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
     pc_rgb base;
-    if (lua_getfield(L, 2, "color") != LUA_TNIL) shade_color(L, cv, "color", &base);
+    if (a[3].present) base = (pc_rgb){(uint8_t)a[3].v[0], (uint8_t)a[3].v[1], (uint8_t)a[3].v[2]};
     else pc_canvas_rgb(cv, cv->fg, &base);
-    lua_pop(L, 1);
-    int mesh = -1;
-    pc_rgb ignored;
-    if (lua_getfield(L, 2, "mesh") != LUA_TNIL) mesh = shade_color(L, cv, "mesh", &ignored);
-    lua_pop(L, 1);
-    if (lua_getfield(L, 2, "light") != LUA_TNIL) {
-        pcl_value *v = pcl_tovalue(L, -1);
-        if (!v || v->n != 3 || v->h[3] != 0)
-            shade_field_error(L, "light", "a 3-D vector (the direction towards the light)");
-        for (int k = 0; k < 3; k++) o.light[k] = v->h[k];
+    int mesh = (int)a[6].x;
+    if (a[4].present) {
+        memcpy(o.light, a[4].v, sizeof o.light);
         if (o.light[0] == 0 && o.light[1] == 0 && o.light[2] == 0)
-            shade_field_error(L, "light", "a nonzero vector (the direction towards the light)");
+            return pcl_keyfail(L, "light", "must be a nonzero vector (the direction towards the light), got V(0, 0, 0)");
         o.has_light = 1;
     }
-    lua_pop(L, 1);
-    if (lua_getfield(L, 2, "ambient") != LUA_TNIL) {
-        o.ambient = lua_tonumber(L, -1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !(o.ambient >= 0 && o.ambient <= 1))
-            shade_field_error(L, "ambient", "a number 0..1");
-    }
-    lua_pop(L, 1);
     pc_surface *s = u->s;
     if (s->dim != 3)
         return pcl_error(L, "%s: shading needs a 3-D surface seen through a projection, this one "
                             "is %d-D", fn, s->dim);
-    lua_getfield(L, 2, "map");
-    const pc_map *f = pcl_drawing_map(L, lua_gettop(L), 3, fn);
+    const pc_map *f = drawing_map(L, &a[7], 3);
     pc_map scr;
     pcl_screen_map(L, f, &scr);
     pcl_callback_state(L);
@@ -698,8 +623,15 @@ static int s_shade(lua_State *L) {
     return 1;
 }
 
+/* The surface a metamethod is called on (never a script's own call by name). */
+static lsurf *meta_self(lua_State *L) {
+    lsurf *u = self_surf(L, 1);
+    if (!u) pcl_error(L, "surface: a metamethod called on %s, not a surface", pcl_shown(L, 1));
+    return u;
+}
+
 static int s_index(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "surface");
+    lsurf *u = meta_self(L);
     const char *k = lua_tostring(L, 2);
     if (k) {
         pc_surface *s = u->s;
@@ -716,7 +648,7 @@ static int s_index(lua_State *L) {
 }
 
 static int s_tostring(lua_State *L) {
-    lsurf *u = checksurf(L, 1, "surface");
+    lsurf *u = meta_self(L);
     pc_surface *s = u->s;
     lua_pushfstring(L, "%s(%d-D, u in [%s, %s], v in [%s, %s])", u->kind, s->dim,
                     pcl_pushnum(L, s->u0), pcl_pushnum(L, s->u1), pcl_pushnum(L, s->v0),
@@ -724,33 +656,58 @@ static int s_tostring(lua_State *L) {
     return 1;
 }
 
+static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
+#define METHOD(nm, f, decl, res, text) {.name = nm, .fn = f, .args = decl, .result = res, .help = text, .self = self_surf, .selftype = "surface"}
+static const pcl_fn methods[] = {
+    METHOD("s:eval", s_call, uv_args, "point", "The point of the surface at (u, v), as s(u, v)."),
+    METHOD("s:partials", s_partials, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
+    METHOD("s:normal", s_normal, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
+    {.name = "s:iso", .fn = s_iso, .args = iso_args, .self = self_surf, .selftype = "surface",
+     .sig = "s:iso(\"u\"|\"v\", value) -> curve",
+     .help = "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."},
+    METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),
+    {.name = "s:wireframe", .fn = s_wireframe, .args = wireframe_args, .self = self_surf, .selftype = "surface",
+     .sig = "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
+     .help = "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."},
+    {.name = "s:shade", .fn = s_shade, .args = shade_args, .self = self_surf, .selftype = "surface",
+     .sig = "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
+     .help = "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."},
+    PCL_END};
+static const pcl_fn call[] = {{.name = "s", .fn = s_call, .args = uv_args, .self = self_surf, .selftype = "surface",
+                               .key = "__call", .topic = "s(u, v)", .callname = 1, .sig = "s(u, v) -> point",
+                               .help = "The point of a surface at (u, v); s:partials and s:normal give its derivatives and normal."}, PCL_END};
+static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = self_table,
+                                    .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
+static const pcl_fn fns[] = {
+    PCL_FN("surface.bilinear", l_bilinear, bilinear_args, "s", "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1)."),
+    PCL_FN("surface.bezier", l_bezier, bezier_args, "s", "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational)."),
+    PCL_FN("surface.bspline", l_bspline, bspline_args, "s", "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline."),
+    {.name = "surface.hermite", .fn = l_hermite, .args = hermite_args, .result = "s",
+     .help = "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1))."},
+    PCL_FN("surface.ruled", l_ruled, ruled_args, "s", "The ruled surface (1 - v) c0(u) + v c1(u) between two curves."),
+    PCL_FN("surface.coons", l_coons, coons_args, "s", "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v)."),
+    {.name = "surface.revolution", .fn = l_revolution, .args = revolution_args, .sig = "surface.revolution(profile, A, d [, v0, v1]) -> s",
+     .help = "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn)."},
+    PCL_END};
+
 void pcl_open_surface(lua_State *L) {
     int module = lua_gettop(L);
     lua_newtable(L);
-    int methods = lua_gettop(L);
-    static const luaL_Reg mfns[] = {{"eval", s_call}, {"partials", s_partials},
-                                    {"normal", s_normal}, {"iso", s_iso}, {"map", s_map},
-                                    {"wireframe", s_wireframe}, {"shade", s_shade},
-                                    {NULL, NULL}};
-    luaL_setfuncs(L, mfns, 0);
+    int methods_t = lua_gettop(L);
+    pcl_register(L, methods_t, methods, 0);
     luaL_newmetatable(L, SURF_MT);
-    static const luaL_Reg meta[] = {{"__call", s_call}, {"__tostring", s_tostring},
-                                    {"__gc", s_gc}, {NULL, NULL}};
+    pcl_register(L, -1, call, 0);
+    static const luaL_Reg meta[] = {{"__tostring", s_tostring}, {"__gc", s_gc}, {NULL, NULL}};
     luaL_setfuncs(L, meta, 0);
-    lua_pushvalue(L, methods);
+    lua_pushvalue(L, methods_t);
     lua_pushcclosure(L, s_index, 1);
     lua_setfield(L, -2, "__index");
     lua_pop(L, 2);
 
     lua_newtable(L);   /* the table `surface`, callable as surface(f, u0, u1, v0, v1) */
-    static const luaL_Reg fns[] = {{"bilinear", l_bilinear}, {"bezier", l_bezier},
-                                   {"bspline", l_bspline},   {"hermite", l_hermite},
-                                   {"ruled", l_ruled},       {"coons", l_coons},
-                                   {"revolution", l_revolution}, {NULL, NULL}};
-    luaL_setfuncs(L, fns, 0);
+    pcl_register(L, -1, fns, 0);
     lua_newtable(L);
-    lua_pushcfunction(L, l_func);
-    lua_setfield(L, -2, "__call");
+    pcl_register(L, -1, func_call, 0);
     lua_setmetatable(L, -2);
     lua_setfield(L, module, "surface");
     lua_settop(L, module);

@@ -67,11 +67,7 @@ void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic su
 void pcl_open_buimov(lua_State *L);   /* plane.*, buimov.*: the textbook's constructions (l_buimov.c) */
 void pcl_open_figure(lua_State *L);   /* figure{...}: the print look (l_figure.c) */
 void pcl_open_figure_layout(lua_State *L);  /* placed_labels, mark, arrow, dimension, ... (l_figure_layout.c) */
-/* pen "main", pen{width = "0.5mm"} (1 when it set the pen), label options (l_figure.c) */
-int pcl_pen_print(lua_State *L, pc_canvas *c);
-typedef struct { char font[64]; double size; int halo; } pcl_label_opts;
-void pcl_label_options(lua_State *L, int idx, pcl_label_opts *o);
-void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_label_opts *o);
+/* the print look's pens and label options: pcl_args.h (l_figure.c) */
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
 pc_map *pcl_tomap(lua_State *L, int idx);

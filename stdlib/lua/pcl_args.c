@@ -367,6 +367,8 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     out->dim = d;
 }
 
+static const ctx *reading;   /* the value a binding's reader is reading (pcl_readfail) */
+
 /* One value at idx as the argument (or option key) a describes. */
 static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
     int t = lua_type(L, idx);
@@ -433,9 +435,14 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     case PCL_FUNCTION:
         if (t != LUA_TFUNCTION) mismatch(L, c, idx, expected(L, a));
         return;
-    case PCL_ANY:
-        if (a->read && !a->read(L, idx, a, out)) mismatch(L, c, idx, expected(L, a));
+    case PCL_ANY: {
+        const ctx *outer = reading;
+        reading = c;                            /* for pcl_readfail */
+        int ok = !a->read || a->read(L, idx, a, out);
+        reading = outer;
+        if (!ok) mismatch(L, c, idx, expected(L, a));
         return;
+    }
     default:
         luaL_error(L, "%s: an option table inside an option table is not supported", c->fname);
     }
@@ -567,9 +574,55 @@ void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, i
     read_value(L, &c, a, idx, out);
 }
 
-void pcl_readopts(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v) {
+int pcl_readfail(lua_State *L, int idx, const char *expected) {
+    const ctx *c = reading;
+    reading = NULL;
+    if (!c) return pcl_fail(L, "must be %s, got %s", expected, shown(L, idx));
+    return mismatch(L, c, idx, expected);
+}
+
+void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v) {
     ctx c = {pcl_name(L), shown, a->name, NULL, 0, NULL};
     read_options(L, &c, a, lua_absindex(L, idx), v);
+}
+
+/* The arguments of a function with coordinate pairs (pcl_args.h): each at the slot it falls on. */
+void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
+    const pcl_fn *d = current(L);
+    int nargs = nargs_of(d), top = lua_gettop(L), opts = 0, first_pair = 0;
+    if (n < nvalues(d->args)) luaL_error(L, "%s: the binding reads %d values into %d", d->name, nvalues(d->args), n);
+    luaL_checkstack(L, 24, NULL);
+    for (int k = 0; k < nargs && !first_pair; k++)
+        if (d->args[k].flags & PCL_PAIR) first_pair = k + 1;
+    if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > first_pair && lua_istable(L, top))
+        opts = top;                             /* a trailing option table */
+    int limit = opts ? opts - 1 : top, slot = 1;
+    dimref dim = {0};
+    for (int k = 0, y = 0; k < nargs; k++, slot++) {
+        const pcl_arg *a = &d->args[k];
+        int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
+        if (a->kind == PCL_OPTIONS) {
+            ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
+            v[k].idx = opts;
+            v[k].present = opts != 0;
+            read_options(L, &c, a, opts ? opts : idx, v + nargs);
+            continue;
+        }
+        if ((a->flags & PCL_PAIR) && k + 1 < nargs && slot <= limit &&
+            lua_type(L, idx) != LUA_TNUMBER && pcl_tovalue(L, idx)) {
+            pcl_topoint2(L, idx, &v[k].x, &v[k + 1].x);   /* one point: the pair in one slot */
+            v[k].present = v[k + 1].present = 1;
+            v[k].idx = v[k + 1].idx = idx;
+            k++;
+            continue;
+        }
+        pcl_arg one = *a;
+        int coord = (a->flags & PCL_PAIR) || y;
+        y = (a->flags & PCL_PAIR) != 0;         /* the next argument is this pair's y */
+        if (coord && lua_type(L, idx) != LUA_TNUMBER) one.expect = "a number or a point";
+        ctx c = {d->name, slot, a->name, NULL, 0, &dim};
+        read_value(L, &c, &one, idx, &v[k]);
+    }
 }
 
 /* ---- registration and signatures ----------------------------------------------------------- */

@@ -43,6 +43,7 @@ typedef enum {
 #define PCL_POS     0x08u  /* numbers: x > 0 */
 #define PCL_SAMEDIM 0x10u  /* points, vectors, locations, lists: the dimension of the first one */
 #define PCL_CALLTABLE 0x20u /* the only argument, an options table: shown as NAME{...} */
+#define PCL_PAIR    0x40u  /* numbers: x of a pair x, y (the next argument) that may be one point */
 
 typedef struct pcl_val pcl_val;
 typedef struct pcl_arg pcl_arg;
@@ -110,10 +111,29 @@ void *pcl_read(lua_State *L, pcl_val *v, int n);
  * body); dimdef: the dimension PCL_SAMEDIM refers to, set by argument #1 (by [1] for an item). */
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out);
 
-/* Read the options table at stack index idx, argument #shown, declared by a (a PCL_OPTIONS
- * argument) into v, one value per key: an overload whose table may stand at another position
- * (approx.mse(f, nodes, {m =}) beside approx.mse(f, nodes, m, {divisor =})). */
-void pcl_readopts(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v);
+/* Read the declared arguments of a plain function whose coordinate pairs (x flagged PCL_PAIR,
+ * y the argument after it) may each be given as one point P (2-D, or n-D through the camera:
+ * pcl_topoint2): each argument is read at the stack slot it falls on and shown by that slot
+ * (pset(P(1, 2), 16): argument #2 (color)).  A last declared option table may trail at any
+ * slot after the first pair (label(text, P, {size = 9})).  v as for PCL_READ. */
+void pcl_read_pairs(lua_State *L, pcl_val *v, int n);
+#define PCL_READ_PAIRS(L, v) pcl_read_pairs((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
+/* Inside a reader: raise "NAME: WHERE must be EXPECTED, got VALUE" for the value at idx it is
+ * reading, with an expected text made at run time (a colour's range is the screen's). */
+int pcl_readfail(lua_State *L, int idx, const char *expected);
+/* The drawing colours (l_draw.c): an attribute of the screen drawn on or "#rrggbb" (a true
+ * colour, allocated on first use) into out->x; A_SCREEN_COLOR(name) declares an optional one. */
+int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
+#define A_SCREEN_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1}
+/* The print look (l_figure.c): a length with its unit ("0.5mm") in pt into out->x; the label
+ * options {font =, size =, halo =}, applied to a label once drawn (keys: their 3 values). */
+int pcl_read_length(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
+extern const pcl_arg pcl_label_keys[];
+void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *keys);
+/* Read the option table at idx as the option argument a, shown as argument #shown (its keys'
+ * values into v): the table form of an overloaded function, screen(12) | screen{width =}. */
+void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v);
+#define A_X(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_PAIR}
 
 /* The running function's declared name; its stack index of argument #k. */
 const char *pcl_name(lua_State *L);

@@ -77,7 +77,7 @@ path({ P(10, 450), P(100, 450), P(100, 400) }, { arrow = "both", color = 13 })
 check.eq(point(100, 402), 13, "path: a head at its end")
 check.eq(point(13, 450), 13, "and at its start")
 check.err(function() path({ P(1, 1), P(2, 2) }, { arrow = "up" }) end,
-  'path: argument #2 (options.arrow) must be "end", "start", "both" or "none", got "up"', "bad arrow")
+  'path: option \'arrow\' must be "none", "end", "start" or "both", got "up"', "bad arrow")
 check.err(function() mark(P(1, 1), "star") end,
   'mark: argument #2 (style) must be "dot", "open", "cross", "plus" or "square", got "star"', "bad style")
 check.err(function() arrow(P(1, 1), P(1, 1)) end,

@@ -22,8 +22,8 @@ pset(1, 0, "#0aFf10")
 check.truthy(point(1, 0) >= 256, "a true colour")
 
 -- numeric strings are no coordinates
-check.err(function() pset("10", "20") end, "pset: argument #1 (x) must be a number or a point, got string")
-check.err(function() pset(10, "20") end, "pset: argument #2 (y) must be a number or a point, got string")
+check.err(function() pset("10", "20") end, "pset: argument #1 (x) must be a number or a point, got \"10\"")
+check.err(function() pset(10, "20") end, "pset: argument #2 (y) must be a number or a point, got \"20\"")
 check.err(function() line(0, 0, "5", 5) end, "line: argument #3", "line's second point")
 check.err(function() pset("10", "20") end, here .. ":", "located at the caller's line")
 
@@ -171,12 +171,17 @@ check.eq(use.point(genuine.point), 1 + math.sqrt(5), "a genuine point")
 check.eq(use.complex(genuine.complex), 1 + math.sqrt(5), "a genuine complex number")
 
 -- a drawing function's canvas, the random state and a range iterator replaced by upvalue
-local box = select(2, debug.getupvalue(pset, 1))
-debug.setupvalue(pset, 1, P(1, 2))
+-- (upvalue 1 of a declared function is its declaration, upvalue 2 the canvas)
+local box = select(2, debug.getupvalue(pset, 2))
+debug.setupvalue(pset, 2, P(1, 2))
 check.err(function() pset(1, 1) end, "pset: the canvas was replaced")
-debug.setupvalue(pset, 1, "x")
+debug.setupvalue(pset, 2, "x")
 check.err(function() pset(1, 1) end, "pset: the canvas was replaced")
-debug.setupvalue(pset, 1, box)
+debug.setupvalue(pset, 2, box)
+local decl = select(2, debug.getupvalue(pset, 1))
+debug.setupvalue(pset, 1, select(2, debug.getupvalue(preset, 1)))
+check.err(function() pset(1, 1) end, "a declared function without its declaration (forged upvalue)")
+debug.setupvalue(pset, 1, decl)
 pset(2, 2, 4)
 check.eq(point(2, 2), 4, "pset works again with its canvas")
 local state = select(2, debug.getupvalue(qb.rnd, 2))   -- upvalue 1 is its declaration

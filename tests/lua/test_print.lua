@@ -34,9 +34,9 @@ label("costs \\$5", 0, 0)   -- an escaped dollar is a dollar
 label("$\\varphi$", 50, 50, "n", {size = 12, font = "sans", halo = false})
 label("B", 50, 50, {size = "14pt"})
 check.err(function() label("A", 0, 0, {colour = 3}) end,
-  "label: unknown option colour (the options are font, size and halo)", "unknown label option")
-check.err(function() label("A", 0, 0, {halo = 1}) end, "label: halo must be true or false, got 1", "halo")
-check.err(function() label("A", 0, 0, {size = 0}) end, "label: size must be 1..200 pt, got 0", "size")
+  "label: unknown option 'colour' (the options are font, size, halo)", "unknown label option")
+check.err(function() label("A", 0, 0, {halo = 1}) end, "label: option 'halo' must be a boolean, got 1", "halo")
+check.err(function() label("A", 0, 0, {size = 0}) end, "label: option 'size' must be 1 to 200 pt, got 0 pt", "size")
 check.err(function() label("A", 0, 0, {font = "No Such Face"}) end,
   "label: font 'No Such Face' is not installed", "font")
 
@@ -49,7 +49,7 @@ pen{width = "0.5mm", dash = {"3mm", "1.5mm"}}
 pen{width = "0.8pt"}
 pen()
 check.err(function() pen "bold" end, "pen: unknown pen \"bold\"", "pen name")
-check.err(function() pen{width = "2furlongs"} end, "pen: width: unknown unit 'furlongs'", "pen unit")
+check.err(function() pen{width = "2furlongs"} end, "pen: option 'width' unknown unit 'furlongs'", "pen unit")
 check.err(function() pen{width = "0.01mm"} end, "pen: width must be 0.1..100 pt", "pen range")
 check.err(function() pen{width = "1mm", dash = {"1mm"}} end, "an even number", "pen dash")
 

@@ -89,5 +89,5 @@ check.err(function() camera(f, { hiden = "hide" }) end,
   "camera: unknown option 'hiden' (did you mean 'hidden'?)", "a misspelt key of camera")
 check.err(function() map.view { from = P(1, 1, 1), to = P(1, 1, 1) } end,
   "map.view: from and to coincide", "no line of sight")
-check.err(function() sph:wireframe { nu = -1 } end, "nu must be an integer 0..1000", "count")
+check.err(function() sph:wireframe { nu = -1 } end, "s:wireframe: option 'nu' must be an integer from 0 to 1000, got -1", "count")
 print(arg[0] .. ": " .. check.count .. " checks passed")

@@ -114,7 +114,7 @@ err(function() surface.bezier({{P(0, 0)}}) end, "at least 2 rows", "too small a 
 err(function() surface.bezier({{P(0, 0), P(1, 0)}, {P(0, 1)}}) end, "row [2] holds 1 points", "ragged net")
 err(function() surface.bezier({{P(0, 0), 3}, {P(0, 1), P(1, 1)}}) end, "[1][2] must be a point", "not a point")
 err(function() surface.bspline(net, 3, 2) end, "argument #2 (p)", "degree too high")
-err(function() surface.hermite{P = {P(0, 0, 0)}} end, "P must be a list of 4 points", "Hermite corners")
+err(function() surface.hermite{P = {P(0, 0, 0)}} end, "surface.hermite: option 'P' must be a list of 4 points", "Hermite corners")
 err(function() surface.ruled(c0, 5) end, "argument #2 (c1)", "not a curve")
 err(function() surface.coons(arc, arc, arc, arc) end, "do not meet at the corners", "Coons corners")
 err(function() surface.revolution(prof, P(0, 0, 0), V(0, 0, 0)) end, "nonzero vector", "zero axis")
@@ -125,8 +125,17 @@ err(function() sph(0 / 0, 0) end, "finite", "NaN parameter")
 err(function() sph:iso("w", 0) end, "family", "bad iso family")
 err(function() sph:wireframe() end, "needs a projection", "3-D wireframe without a camera")
 camera(map.isometric())
-err(function() sph:wireframe{hidden = "maybe"} end, "hidden must be", "bad hidden mode")
-err(function() sph:wireframe{nu = -1} end, "nu must be an integer 0..1000", "bad count")
+err(function() sph:wireframe{hidden = "maybe"} end, "s:wireframe: option 'hidden' must be \"show\", \"hide\" or \"dashed\", got \"maybe\"", "bad hidden mode")
+err(function() sph:wireframe{nu = -1} end, "s:wireframe: option 'nu' must be an integer from 0 to 1000, got -1", "bad count")
+err(function() sph:wireframe{hiden = "hide"} end, "s:wireframe: unknown option 'hiden' (did you mean 'hidden'?)", "a misspelt key")
+err(function() sph:wireframe{colour = 99} end, "s:wireframe: option 'colour' must be a colour number 0..15 or \"#rrggbb\", got 99", "colour is color")
+err(function() sph.wireframe{} end, "s:wireframe: must be called on a surface, as s:wireframe(...)", "a method called with a dot")
+err(function() sph:iso("w", 0) end, "s:iso: argument #1 (family) must be \"u\" (u = const) or \"v\" (v = const), got \"w\"", "the family's message")
+err(function() surface.bezier({{P(0, 0), P(1, 0)}, {P(0, 1), P(1, 1, 1)}}) end,
+    "surface.bezier: argument #1 (net) [2][2] is 3-D, but [1][1] is 2-D (mixed dimensions)", "a net's dimensions")
+err(function() surface.hermite{P = {P(0, 0), P(1, 0), P(0, 1), P(1, 1)}, Pu = {V(1, 0), V(1, 0), P(1, 0), V(1, 0)},
+                               Pv = {V(0, 1), V(0, 1), V(0, 1), V(0, 1)}, Puv = {V(0, 0), V(0, 0), V(0, 0), V(0, 0)}} end,
+    "surface.hermite: argument #1 (Pu) [3] must be a vector", "a Hermite tangent")
 camera(nil)
 err(function() surface.bilinear(P(0, 0), P(1, 0), P(0, 1), P(1, 1)):wireframe{hidden = "hide"} end,
     "3-D surface", "hidden lines of a plane patch")
