@@ -12,7 +12,7 @@ local help = require "help"
 -- --- the model -------------------------------------------------------------------------------
 -- Types guessed from the books' naming habits: capitals are points (or vectors), t/k/x... numbers.
 local CLASS = {p = "pc.point", S = "pc.simplex", f = "pc.map", c = "pc.curve", M = "pc.equation",
-               s = "pc.surface", C = "pc.curvilinear"}
+               s = "pc.surface", C = "pc.curvilinear", z = "pc.complex"}
 local RESULT = {point = "pc.point", vector = "pc.point", value = "pc.point|number", number = "number",
                 integer = "integer", boolean = "boolean", string = "string", curve = "pc.curve",
                 c = "pc.curve", s = "pc.surface", surface = "pc.surface", f = "pc.map", map = "pc.map",
