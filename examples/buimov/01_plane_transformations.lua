@@ -42,7 +42,7 @@ poly(F, tri, 7, true)
 local rot = {}
 for i, p in ipairs(tri) do rot[i] = map.rotate(math.pi / 2)(p) end
 poly(F, rot, 14, true)
-label("A", F(tri[1]), "s", 7); label("A*", F(rot[1]), "e", 14)
+label("A", F(tri[1]), nil, 7); label("A*", F(rot[1]), nil, 14)
 
 -- Fig 1.10: reflection about y = x (yellow) and about the x axis (cyan)
 F = panel(45, 400, 13, -1, 9, -4, 9, "Fig 1.10: reflections")

@@ -22,7 +22,7 @@ local function panel(col, row, title, f, scale, centre, shift, vps)
   local view = screen * f * map.translate(shift or V(0, 0, 0))
   camera(view)
   for _, e in ipairs(edges) do line(cube[e:sub(1, 1)], cube[e:sub(2, 2)], 11) end
-  for _, n in ipairs{"A", "G"} do label(n, cube[n], "ne", 7) end
+  for _, n in ipairs{"A", "G"} do label(n, cube[n], nil, 7) end
   camera(nil)
   if vps then
     local names = {"Vx", "Vy", "Vz"}
@@ -33,7 +33,7 @@ local function panel(col, row, title, f, scale, centre, shift, vps)
         pen{dash = {2, 3}}
         for j = 2, 8, 2 do line(view(cube[along[i][j]]), s, 8) end
         pen()
-        circle(s, 3, 12); label(names[i], s, "s", 12)
+        circle(s, 3, 12); label(names[i], s, nil, 12)
       end
     end
   end

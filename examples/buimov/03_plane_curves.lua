@@ -21,20 +21,20 @@ pen{dash = {3, 3}}; s1.curve:draw{color = 8, map = F}; pen()
 s1.arc:draw{color = 14, map = F}
 line(F(P(0.2, 0.2)), F(P(1.8, 1.8)), 12)                   -- the slope 1 at the start
 line(F(s1.finish - V(0.8, 0)), F(s1.finish + V(0.8, 0)), 12)  -- slope 0 at x = 3
-label("(1, 1)", F(P(1, 1)), "w", 15); label("(3, 1.83)", F(s1.finish), "n", 15)
-circle(F(s1.centre), 2, 14); label("C(3, -1)", F(s1.centre), "e", 14)
+label("(1, 1)", F(P(1, 1)), nil, 15); label("(3, 1.83)", F(s1.finish), nil, 15)
+circle(F(s1.centre), 2, 14); label("C(3, -1)", F(s1.centre), nil, 14)
 local c3 = plane.circle3(P(1, 1), P(2, 2), P(3, 2))
 c3.arc:draw{color = 11, map = F}
 for _, p in ipairs{P(2, 2), P(3, 2)} do circle(F(p), 2, 11) end
-label("x^2+y^2-5x-y+4=0", F(P(2.5, 2.4)), "n", 11)
+label("x^2+y^2-5x-y+4=0", F(P(2.5, 2.4)), nil, 11)
 
 -- example 2: radius 5 through (1, 1) and (3, 2): both circles
 F = panel(301, 143, 9.5, "r = 5 through two points", 320, 20)
 local k1, k2 = plane.circle2r(P(1, 1), P(3, 2), 5)
 k1.curve:draw{color = 14, map = F}; k2.curve:draw{color = 10, map = F}
-for _, k in ipairs{{k1, 14, "e"}, {k2, 10, "e"}} do
+for _, k in ipairs{{k1, 14}, {k2, 10}} do   -- the centres labelled inside their circles
   circle(F(k[1].centre), 2, k[2])
-  label(string.format("(%.3f, %.3f)", k[1].centre.x, k[1].centre.y), F(k[1].centre), k[3], k[2])
+  label(string.format("(%.3f, %.3f)", k[1].centre.x, k[1].centre.y), F(k[1].centre), "e", k[2])
 end
 circle(F(P(1, 1)), 2, 15); circle(F(P(3, 2)), 2, 15)
 

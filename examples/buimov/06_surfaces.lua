@@ -21,7 +21,7 @@ local sp = buimov.sphere(0, pi / 2, pi / 4, pi / 2)
 sp:wireframe{nu = 6, nv = 6, color = 11, hidden = "dashed"}
 for _, c in ipairs{{0, pi / 2, "A"}, {0, pi / 4, "B"}, {pi / 2, pi / 4, "C"}, {pi / 2, pi / 2, "D"}} do
   local S, _, _, _, N = buimov.sphere_frame(c[1], c[2])
-  line(S, S + N * 0.5, 12); label(c[3], S, "e", 15)
+  line(S, S + N * 0.5, 12); label(c[3], S, nil, 15)
 end
 
 panel(1, 0, "bilinear", 85, P(0.5, 0.5, 0.5))

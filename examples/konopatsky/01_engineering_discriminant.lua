@@ -30,6 +30,6 @@ pen()
 for name, p in pairs{A = A, B = B, C = C, T1 = T1, T = T, P = Pp, Q = Q, M = M} do
   circle(p, 0.03, 15)
 end
-label("A", A, "sw", 15) label("B", B, "se", 15) label("C", C, "n", 15)
-label("T1", T1, "s", 15) label("T", T, "s", 15) label("P", Pp, "w", 7)
-label("Q", Q, "e", 7) label("M", M, "nw", 15)
+label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15)
+label("T1", T1, nil, 15) label("T", T, nil, 15) label("P", Pp, nil, 7)
+label("Q", Q, nil, 7) label("M", M, nil, 15)

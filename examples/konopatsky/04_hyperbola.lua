@@ -17,5 +17,5 @@ H.branch = 2
 conic.hyperbola(H):draw{color = 14}
 local F1, F2 = P(c, 0), P(-c, 0)
 for _, p in ipairs{A, B, C, F1, F2} do circle(p, 0.08, 15) end
-label("C", C, "sw", 15) label("A", A, "se", 15) label("B", B, "n", 15)
-label("F1", F1, "s", 11) label("F2", F2, "s", 11)
+label("C", C, nil, 15) label("A", A, nil, 15) label("B", B, nil, 15)
+label("F1", F1, nil, 11) label("F2", F2, nil, 11)

@@ -20,7 +20,7 @@ circle(Sbook, 0.012, 12) label("S (printed)", Sbook, "e", 12)
 for name, p in pairs{A = A, B = B, C = C, D = D, E = E, S = S, U = U, V = Vp, M = M} do
   circle(p, 0.012, 15)
 end
-label("A", A, "s", 15) label("B", B, "w", 15) label("C", C, "sw", 15) label("D", D, "nw", 15)
-label("E", E, "ne", 15) label("S", S, "w", 15) label("U", U, "s", 15) label("V", Vp, "w", 15)
-label("M", M, "se", 15)
+label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15) label("D", D, nil, 15)
+label("E", E, nil, 15) label("S", S, nil, 15) label("U", U, nil, 15) label("V", Vp, nil, 15)
+label("M", M, nil, 15)
 label(string.format("u: A 1, B %.2f, C 0, D %.2f, E %.4f", u.B, u.D, u.E), P(-0.75, -0.4), "e", 7)

@@ -24,5 +24,5 @@ pen{dash = {3, 2}}
 line(P2, Q1, 7)
 pen()
 circle(P2, 0.08, 7) circle(Q1, 0.08, 7) circle(lerp(P2, Q1, t), 0.08, 14)
-label("P2", P2, "w", 7) label("Q1", Q1, "e", 7)
-label("A", A, "sw", 15) label("B", B, "se", 15) label("C", C, "n", 15)
+label("P2", P2, nil, 7) label("Q1", Q1, nil, 7)
+label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15)

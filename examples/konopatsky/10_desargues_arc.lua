@@ -10,11 +10,11 @@ local arc = oneratio.desargues(A, B, C, D)
 arc:draw{color = 9}
 local G = (A + B + C + D) / 4
 circle(G, 0.06, 14)
-for name, p in pairs{A = A, B = B, C = C, D = D, G = G} do label(name, p, "n", 15) end
+for name, p in pairs{A = A, B = B, C = C, D = D, G = G} do label(name, p, nil, 15) end
 camera()
 view(325, 40, 630, 440)
 window(-1, -1.5, 11, 8)
 local a, b, d = P(0, 0), P(5, 7), P(10, 0)
 path({a, b, d}, {color = 12})
 oneratio.desargues(a, b, b, d):draw{color = 9}
-label("A", a, "sw", 15) label("B = C", b, "n", 15) label("D", d, "se", 15)
+label("A", a, nil, 15) label("B = C", b, "n", 15) label("D", d, nil, 15)

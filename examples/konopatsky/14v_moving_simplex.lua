@@ -10,7 +10,7 @@ local A, B, C = P(100, 400), P(540, 380), P(260, 80)
 path({A, C, B}, {color = 7})
 for name, q in pairs{A = A, B = B, C = C} do
   circle(q, 3, 15)
-  label(name, q, name == "C" and "n" or "s", 15)
+  label(name, q, nil, 15)
 end
 local function M(s) return lerp(lerp(A, C, s), B, s) end    -- N = lerp(A, C, s), then toward B
 if t > 0 then plot(M, {t = {0, t}, color = 14}) end            -- the curve so far
@@ -19,6 +19,6 @@ plot(M, {t = {t, 1}, color = 8})                              -- and still to co
 pen()
 local N = lerp(A, C, t)
 line(N, B, 10)                                                -- the moving 1-simplex NB
-circle(N, 3, 10); label("N", N, "w", 10)
-circle(M(t), 4, 12); label("M", M(t), "n", 12)
+circle(N, 3, 10); label("N", N, nil, 10)
+circle(M(t), 4, 12); label("M", M(t), nil, 12)
 label(string.format("AN/AC = NM/NB = t = %.2f", t), P(320, 450), "c", 15)

@@ -5,7 +5,7 @@
 -- digest's K(-4,0), A(4,0), B(2, sqrt 3), lambda = 0.75 fixing C = (A - K)lambda + K; N on KA
 -- (t = 0.85), L = B + N - C, the line NL parallel to BC meets BA at P and KB at Q, and
 -- M = KP x QA runs the half ellipse K -> B -> A.
-local function mark(p, name, dir, c) circle(p, 0.06, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.06, c or 15) label(name, p, nil, c or 15) end
 
 view(5, 30, 315, 470)
 window(-3.4, -2.9, 4.6, 4.2)

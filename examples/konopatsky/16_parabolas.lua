@@ -4,7 +4,7 @@
 -- A1(0,0), A2(4,0), A3(2,4).  Right (2.59)-(2.62): the parabola through A(0,0), C(1,3), B(4,0)
 -- with tC = 0.25: TC on AB, K on BC with AK parallel to TC C, T on AB at t = 0.35, N with TN
 -- parallel to TC K, and M on NB; the axis direction C_inf is that of CTC (dashed arrow).
-local function mark(p, name, dir, c) circle(p, 0.05, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.05, c or 15) label(name, p, nil, c or 15) end
 
 view(5, 40, 315, 440)
 window(-0.6, -0.8, 4.6, 4.6)

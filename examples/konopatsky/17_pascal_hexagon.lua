@@ -5,7 +5,7 @@
 -- R = AB x PQ (the Pascal line P Q R, red), M = RA2 x PA3.  The conic (green, the corrected
 -- (2.93)) and the book's printed x = 4t(9t + 0.8)/(70t^2 - 75t + 44.2),
 -- y = -8t(t - 1)/(14t^2 - 15t + 8.84) as dots: they coincide.
-local function mark(p, name, dir, c) circle(p, 0.008, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.008, c or 15) label(name, p, nil, c or 15) end
 local A, B, C = P(0, 0), P(1, 0), P(0.5, 1)
 local p1, p2, q2, q3 = 0.7, 0.7, 0.8, 0.8
 window(-0.15, -0.3, 1.6, 1.1)

@@ -4,7 +4,7 @@
 -- K1 = A1K x A2A3 and K2 = A2K x A3A1.  The current point M (t = 0.7) and its cevians: M1 on
 -- A2A3, M2 on A3A1, M3 on A1A2.  Arcs for k = 1/4 (the parabola, yellow) and k = 1 (green);
 -- the k = 1/4 arc's point at t = 2/3 halves the median A3M3 (the book's t3 = 1/2).
-local function mark(p, name, dir, c) circle(p, 0.04, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.04, c or 15) label(name, p, nil, c or 15) end
 local A1, A2, A3 = P(0, 0), P(4, 0), P(2, 3)
 window(-0.8, -1.0, 4.8, 3.4)
 path({A1, A3, A2, A1}, {color = 8})

@@ -4,7 +4,7 @@
 -- k = CK/CO = 1/2 + 2h^2/c^2 = 2 - sqrt 2, h = OK the height of the segment, O1 the centre.
 -- Right (2.115): A, C and the side B, the angle phi = MCA at C and the angle delta = AMC at M
 -- (the book's Fig. 2.25 data A(0;0), B(0,5;1), C(1;0), delta = pi/3; M at phi = 1.0).
-local function mark(p, name, dir, c, r) circle(p, r or 0.02, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c, r) circle(p, r or 0.02, c or 15) label(name, p, nil, c or 15) end
 
 view(5, 40, 315, 440)
 window(-0.3, -0.4, 1.3, 1.665)

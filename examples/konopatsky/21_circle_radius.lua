@@ -2,7 +2,7 @@
 -- The book's points A(0;0), B(0,5;1), C(1;0) and R = 0.5: M at the angle phi = MCA (here
 -- 0.8) from CA toward CB, its parameters p = S_MCB/S_ACB and q = S_ACM/S_ACB, and the aid T on
 -- AC with TM parallel to CB (dashed): M = (A - C)p + (B - C)q + C, T = (A - C)p + C.
-local function mark(p, name, dir, c) circle(p, 0.012, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.012, c or 15) label(name, p, nil, c or 15) end
 local A, B, C, R = P(0, 0), P(0.5, 1), P(1, 0), 0.5
 window(-0.4, -0.6, 1.933, 1.15)
 path({A, B, C, A}, {color = 8})

@@ -5,7 +5,7 @@
 -- A5(0,1), A(0,0): the current C on A1A5 (t = 0.6), B = AA1 x A2C, M = BA3 x CA4.  The locus
 -- (green, corrected: B uses A, not A5) is a conic through A1, A3 and A4, not through A2 and A5
 -- (a hyperbola: it breaks at its points at infinity).
-local function mark(p, name, dir, c, r) circle(p, r or 0.03, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c, r) circle(p, r or 0.03, c or 15) label(name, p, nil, c or 15) end
 
 view(5, 40, 315, 440)
 window(-2.5, -2.6, 2.5, 3.8)

@@ -3,7 +3,7 @@
 -- and K = AQ x BP (2.120, with the corrected u'v').  Consistent motions of P and Q give contour
 -- arcs AB: u = v = t (2.121, green: the engineering-discriminant arc with k = 2/3), u = t,
 -- v = t^2 (yellow) and u = t^2, v = t (cyan, chosen); the scheme at u = v = 0.4.
-local function mark(p, name, dir, c) circle(p, 0.012, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.012, c or 15) label(name, p, nil, c or 15) end
 local C, A, B = P(0, 0), P(1, 0), P(0, 1)
 window(-0.3, -0.2, 1.4, 1.1)
 path({A, C, B}, {color = 8}) line(A, B, 8)

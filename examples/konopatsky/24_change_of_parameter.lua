@@ -3,7 +3,7 @@
 -- parallelogram CKML with K = (A - C)t'^2 + C on CA and L = (B - C)t^2 + C on CB at t = 0.55,
 -- and the angle phi = MCA of the angular parametrisation (2.128).  The same curve by sigma =
 -- CK + KM (§2.4.2: the print calls it |CM|, which it is not) in two branches, dotted.
-local function mark(p, name, dir, c) circle(p, 0.04, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.04, c or 15) label(name, p, nil, c or 15) end
 local C, A, B = P(0, 0), P(4, 0), P(1, 3)
 window(-0.8, -0.7, 4.8, 3.5)
 path({A, C, B}, {color = 8})

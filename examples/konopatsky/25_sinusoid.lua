@@ -4,7 +4,7 @@
 -- theta = b phi/rho1 = m phi (rolling without slip); M on the ray CQ with |CM| = |CT| (2.137)-(2.140).
 -- Right (Fig. 2.32): the digest's C(0,0), A(1,0), B(0,1) (the book does not print its m, n):
 -- the axis circle (green), the 1st generation m = 6 (red, (2.142)) and the 2nd, n = 24 (blue, (2.144)).
-local function mark(p, name, dir, c) circle(p, 0.015, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.015, c or 15) label(name, p, nil, c or 15) end
 local C, A, B = P(0, 0), P(1, 0), P(0, 1)
 
 view(5, 60, 315, 420)

@@ -3,7 +3,7 @@
 -- D = O; the base arcs APB (fP = 0.3) and AQB (fQ = 0.8) of (2.97) in the plane ABC, the cone
 -- vertices D and N = (D - A)n + A with n = -0.5 (the book gives no n), the generators DP and NQ at
 -- u = 0.85 and the space cubic M = DP x NQ (corrected z_Q, a line meet instead of (2.159)).
-local function mark(p, name, dir, c) circle(p, 0.015, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.015, c or 15) label(name, p, nil, c or 15) end
 local A, B, C, D = P(1, 0, 0), P(0, 1, 0), P(0, 0, 1), P(0, 0, 0)
 local fP, fQ, n = 0.3, 0.8, -0.5
 local N = (D - A) * n + A

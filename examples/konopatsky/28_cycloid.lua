@@ -5,7 +5,7 @@
 -- at phi = 2 with the rolling circle.  Top: the convex arc "(3.11)" for phi in [0, pi] (green)
 -- and [0, 2 pi] (dashed, the whole arch; Fig. 2.35); bottom: the concave "(3.12)" (Fig. 2.36),
 -- from B with tangent BC to the cusp at A with tangent AC.
-local function mark(p, name, dir, c) circle(p, 0.06, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.06, c or 15) label(name, p, nil, c or 15) end
 local C, A, B = P(0, 0), P(0, 2), P(math.pi, 0)
 for row, concave in ipairs{false, true} do
   view(10, 10 + (row - 1) * 235, 630, 235 + (row - 1) * 235)

@@ -3,7 +3,7 @@
 -- B1B2 with w = u'v/(u'v + v'(1 - u)), so that B1B2 is the tangent.  u = v = t gives the
 -- parabola (2.58) (yellow); u = t, v = t^2 (green, the digest's vector) and u = sin(pi t/2),
 -- v = t^3 (cyan, chosen); the tangent B1B2 of the green arc at t = 0.5.
-local function mark(p, name, dir, c) circle(p, 0.04, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.04, c or 15) label(name, p, nil, c or 15) end
 local A1, A2, A3 = P(0, 0), P(4, 0), P(2, 4)
 window(-0.6, -0.9, 4.6, 4.3)
 path({A1, A3, A2}, {color = 8})

@@ -4,7 +4,7 @@
 -- (oneratio.simplex_scheme); the curve (3.1) M = A t'^2 + B t + C t t' (corrected).  Right, the
 -- curve in the simplex CAB with the tangent BC at B and the tangent at A along the median
 -- from A (dashed), not along AC.
-local function mark(p, name, dir, c) circle(p, 0.1, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.1, c or 15) label(name, p, nil, c or 15) end
 local A, B, C = P(0, 0), P(10, 0), P(4, 6)
 
 view(5, 60, 315, 420)

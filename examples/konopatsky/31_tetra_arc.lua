@@ -4,7 +4,7 @@
 -- the rulings PQ at t = 0.1 ... 0.9 (grey) sweep a ruled surface, but the arc (3.2) (green) is
 -- planar, the parabola with tangents AS and BS, S the midpoint of CD (3.3), through the
 -- centroid K of the tetrahedron at t = 1/2.
-local function mark(p, name, dir, c) circle(p, 0.05, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.05, c or 15) label(name, p, nil, c or 15) end
 local A, B, C, D = P(0, 0, 0), P(4, 0, 0), P(1, 3, 0), P(4, 3, 2)
 camera(map.isometric())
 window(-0.8, -1.2, 6.2, 4.05)

@@ -3,7 +3,7 @@
 -- the levels of (3.4) from oneratio.levels, P1 on AC1, P2 on C1C2, P3 on C2B (the print's
 -- P3 = (C2 - B)t + C2 has the wrong sign), Q1 on P1P2, Q2 on P2P3 and M on Q1Q2; the curve
 -- M = A t'^3 + 3 C1 t'^2 t + 3 C2 t' t^2 + B t^3 (corrected powers) in green.
-local function mark(p, name, dir, c) circle(p, 0.08, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.08, c or 15) label(name, p, nil, c or 15) end
 local A, C1, C2, B = P(0, 0), P(2, 5), P(8, 5), P(10, 0)
 window(-1, -1.5, 11, 6.5)
 path({A, C1, C2, B}, {color = 8})

@@ -3,7 +3,7 @@
 -- Q (k_q = 0.7) of (2.97) share the tangents CA, CB; at v = 0.45 the segment PQ carries
 -- M = P(1 - f(v)) + Q f(v) with f(v) = v (the linear case), and M runs the second-generation
 -- curve (green) with the same end tangents.
-local function mark(p, name, dir, c) circle(p, 0.1, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.1, c or 15) label(name, p, nil, c or 15) end
 local A, B, C = P(0, 0), P(10, 0), P(4, 6)
 window(-1, -1.5, 11, 7.5)
 path({A, C, B}, {color = 8}) line(A, B, 8)

@@ -5,7 +5,7 @@
 -- oneratio.desargues_scheme: P, Q, K on AC, CB, BD with the one ratio t; T = AB x PQ and
 -- S = CD x QK (Menelaus), R on TS, N on PQ and J on QK (the quadratic Beziers ACB and CBD),
 -- M = SN x TJ on the arc (3.6) from A (tangent AC) to D (tangent BD), green.
-local function mark(p, name, dir, c, r) circle(p, r or 0.1, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c, r) circle(p, r or 0.1, c or 15) label(name, p, nil, c or 15) end
 
 view(5, 60, 260, 420)
 window(-0.8, -1.6, 9.2, 12.5)

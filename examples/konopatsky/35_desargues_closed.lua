@@ -3,7 +3,7 @@
 -- M = (A t'^3 + B t t' + D t^3)/(2t^2 - 2t + 1) from A to D with tangents AB and BD.  Right,
 -- A = D (Fig. 3.15): the closed arc M = (A(1 - 3t t') + B t^2 t' + C t'^2 t)/(2t^2 - 2t + 1)
 -- from A back to A, leaving along AC and returning along BA; M(1/2) the centroid of A, A, B, C.
-local function mark(p, name, dir, c) circle(p, 0.08, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.08, c or 15) label(name, p, nil, c or 15) end
 
 view(5, 60, 315, 420)
 window(-1, -1.5, 11, 8)

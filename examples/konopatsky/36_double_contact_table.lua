@@ -23,7 +23,7 @@ for i, row in ipairs(rows) do
     local cell = (i - 1) * 2 + (j - 1)
     local col, r = cell % 4, cell // 4
     view(col * 160 + 1, r * 80 + 1, col * 160 + 158, r * 80 + 78)
-    window(-2, -3.5, 12, 8)
+    window(-2, -7.5, 12, 8)   -- room below the graph for the caption
     local k = row[2 + j]
     path({A, C, B}, {color = 8})
     local M = oneratio.double_contact(A, B, C, k[1], k[2], row[2])
@@ -39,6 +39,6 @@ for i, row in ipairs(rows) do
     end
     if #seg > 1 then graph[#graph + 1] = seg end
     for _, g in ipairs(graph) do if #g > 1 then path(g, {color = 9}) end end
-    label(string.format("%s  %.1f %.1f", row[1], k[1], k[2]), P(-1.8, 7.8), "se", 7)
+    label(string.format("%s  %.1f %.1f", row[1], k[1], k[2]), P(-1.8, -3.6), "se", 7)
   end
 end

@@ -2,7 +2,7 @@
 -- Chosen nodes (the book prints none).  The curve through M1..M(n+1) at t = j/n (green) is the
 -- Bezier curve on the control polygon (grey) whose inner points are the book's C = -M1/2 + 2M2 -
 -- M3/2 (4.9) and C1, C2 of (4.14)-(4.15) (interp.controls); the nodes in white.
-local function mark(p, name, dir, c) circle(p, 0.08, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.08, c or 15) label(name, p, nil, c or 15) end
 local sets = {{P(0, 0), P(4, 5), P(9, 1)}, {P(0, 0), P(2, 4), P(6, 5), P(9, 1)}}
 for i, nodes in ipairs(sets) do
   view(5 + (i - 1) * 315, 60, 310 + (i - 1) * 315, 420)

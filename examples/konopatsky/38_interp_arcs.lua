@@ -4,7 +4,7 @@
 -- through the four nodes at u = 0, 1/3, 2/3, 1 with M'(0) = 5(C2 - M1), M'(1) = 5(M4 - C5)
 -- (Fig. 4.3's scheme).  Bottom right (Fig. 4.5): the cubic through three nodes with the start
 -- tangent M1C2 only.
-local function mark(p, name, dir, c) circle(p, 0.1, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.1, c or 15) label(name, p, nil, c or 15) end
 local M = {P(0, 0), P(3, 2), P(6, 2), P(9, 0)}
 local C2 = P(0, 2)
 for i, C5 in ipairs{P(9, 2), P(9, -2)} do

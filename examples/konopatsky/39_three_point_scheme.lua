@@ -4,7 +4,7 @@
 -- divides the data along x (AN/AB = v2 of §4.10).  (a) Evenly spaced data (chosen): N = T and
 -- the arc is calm.  (b) Uneven data (the book's Fig. 4.7 nodes x = 8.89, 1.11, 0.33;
 -- y = 5, 7, 8): AN >> NB, yet the curve still puts M2 over T, so it swings back (an oscillation).
-local function mark(p, name, dir, c, r) circle(p, r or 0.08, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c, r) circle(p, r or 0.08, c or 15) label(name, p, nil, c or 15) end
 local cases = {{P(0, 0), P(4.5, 3), P(9, 0)}, {P(8.89, 5), P(1.11, 7), P(0.33, 8)}}
 local wins = {{-1.5, -2.5, 10.5, 6.5}, {-2.5, 2, 10, 11.5}}
 for i, M in ipairs(cases) do

@@ -2,7 +2,7 @@
 -- Chosen nodes (the book does not give its own) at t = 0, 1/3, 2/3, 1: on the Desargues arc (3.6),
 -- i.e. (4.35) (red; the book finds it "most preferable" for such a layout), the cubic
 -- interpolant (4.16) (green) and the fractional-rational prototype (4.36), i.e. (4.37) (brown).
-local function mark(p, name, dir) circle(p, 0.08, 15) label(name, p, dir, 15) end
+local function mark(p, name, _) circle(p, 0.08, 15) label(name, p, nil, 15) end
 local M = {P(0, 0), P(1.5, 4), P(6, 5.5), P(9, 1)}
 window(-1, -1.5, 10.5, 7.1)
 interp.prototype("desargues", M):draw{color = 12}

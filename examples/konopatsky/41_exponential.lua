@@ -5,7 +5,7 @@
 -- moves when the origin does: the same nodes shifted by (40, 0) give the dashed curve, shifted
 -- back.  Right (Fig. 4.11): the constrained variant, weights e^(k1 t), e^(k2 t) and the rest to
 -- 1, with k = (0.5, -1): affine, it does not move.
-local function mark(p, name, dir) circle(p, 0.06, 15) label(name, p, dir, 15) end
+local function mark(p, name, _) circle(p, 0.06, 15) label(name, p, nil, 15) end
 local M = {P(0, 0), P(2, 3), P(5, 1)}
 local shift = V(40, 0)
 local Ms = {M[1] + shift, M[2] + shift, M[3] + shift}

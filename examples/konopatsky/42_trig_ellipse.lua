@@ -2,7 +2,7 @@
 -- Chosen nodes M1(0,0), M2(3,3), M3(7,1) at t = 0, pi/2, pi: M = (cos t/2 - sin t/2 + 1/2)M1 +
 -- M2 sin t + (-cos t/2 - sin t/2 + 1/2)M3.  (a) t in [0, pi]: the arc through the three points;
 -- (b) t in [0, 2 pi]: the whole ellipse, centred at the midpoint of M1M3.
-local function mark(p, name, dir, c) circle(p, 0.08, c or 15) label(name, p, dir, c or 15) end
+local function mark(p, name, _, c) circle(p, 0.08, c or 15) label(name, p, nil, c or 15) end
 local M = {P(0, 0), P(3, 3), P(7, 1)}
 for i, t1 in ipairs{math.pi, 2 * math.pi} do
   view(5 + (i - 1) * 315, 60, 310 + (i - 1) * 315, 420)

@@ -25,5 +25,6 @@ local ours = {-1, -0.696219, -0.470413, -0.273767, -0.09003, 0.09003, 0.273767, 
 approx.curve(f, bookn):draw{color = 12}
 approx.curve(f, ours):draw{color = 10}
 for _, x in ipairs(ours) do circle(P(x, f(x)), 0.02, 10) end
-label(string.format("(b) m = 50: book %.4g, ours %.3g", approx.mse(f, bookn, 50), approx.mse(f, ours, 50)),
-      P(-1.08, -2.15), "e", 7)
+-- two lines, as panel (a): on one the caption ran past the view's right edge
+label(string.format("(b) m = 50: book %.4g,", approx.mse(f, bookn, 50)), P(-1.08, -2.0), "e", 7)
+label(string.format("ours %.3g", approx.mse(f, ours, 50)), P(-1.08, -2.25), "e", 7)

@@ -12,7 +12,7 @@ for i, p in ipairs(pts) do low[i] = half(p) end
 
 window(0, -1, 6.4, 5.4)
 line(P(0, 0), P(6.3, 0), 8)                 -- the axis of the compression
-label("x", P(6.3, 0), "s", 8)
+label("x", P(6.3, 0), nil, 8)
 
 local poly, coef = korotky.poly_spline(pts)
 local poly_c = korotky.poly_spline(low)
@@ -26,14 +26,14 @@ poly_c:draw{color = 14}
 for i = 1, 5 do
   circle(pts[i], .04, 15)
   circle(low[i], .04, 15)
-  label(names[i], pts[i], i == 5 and "e" or "nw", 15)
-  label(names[i] .. "'", low[i], i == 5 and "e" or "se", 7)
+  label(names[i], pts[i], nil, 15)
+  label(names[i] .. "'", low[i], nil, 7)
   line(pts[i], low[i], 8)                   -- each pin and its image on one vertical
 end
-label("1'", poly(3.3), "nw", 14)
-label("1", el(2.5), "s", 10)
-label("2'", poly_c(3.3), "nw", 14)
-label("2", el_c(2.7), "s", 10)
+label("1'", poly(3.3), nil, 14)
+label("1", el(2.5), nil, 10)
+label("2'", poly_c(3.3), nil, 14)
+label("2", el_c(2.7), nil, 10)
 label(string.format("(7): S_CD = 4 %+.4f h %+.4f h^2 %+.4f h^3", coef[3][2], coef[3][3], coef[3][4]),
       P(.1, -.45), "e", 14)
 label(string.format("deviation from the elastic line: %.3f (1')  %.3f (2')",

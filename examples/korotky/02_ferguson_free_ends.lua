@@ -30,12 +30,12 @@ label(string.format("%.4f", xE), P(xE, 0), "sw", 7)
 
 for i = 1, 5 do
   circle(pts[i], .04, 15)
-  label(names[i], pts[i], i == 1 and "nw" or (i == 5 and "e" or "n"), 15)
+  label(names[i], pts[i], nil, 15)
   local t = ex3:tangent(i - 1)               -- the given tangent at each pin, short
   line(pts[i] - t * .25, pts[i] + t * .25, 14)
 end
-label("elastic", el(2.55), "s", 10)
-label("Ex.1", ex1(2.3), "n", 13)
+label("elastic", el(2.55), nil, 10)
+label("Ex.1", ex1(2.3), nil, 13)
 label(string.format("(28) z = %.4f %.4f %.4f %.4f %.4f %.4f", z[2], z[3], z[4], z[5], z[6], z[7]),
       P(.1, -.5), "e", 14)
 label(string.format("deviation: Ex.3 %.3f   Ex.1 %.3f", korotky.deviation(ex3, el),

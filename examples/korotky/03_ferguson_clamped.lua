@@ -29,12 +29,12 @@ end
 pen()
 for i = 1, 5 do
   circle(pts[i], .04, 15)
-  label(names[i], pts[i], i == 1 and "n" or (i == 5 and "ne" or "nw"), 15)
+  label(names[i], pts[i], nil, 15)
 end
-label("(9)", p9(3.6), "n", 11)
-label("2", ex2(2.3), "sw", 13)
-label("3", ex2b(2.5), "n", 5)
-label("elastic", el(3.4), "ne", 10)
+label("(9)", p9(3.6), nil, 11)
+label("2", ex2(2.3), nil, 13)
+label("3", ex2b(2.5), nil, 5)
+label("elastic", el(3.4), nil, 10)
 label(string.format("(29) %.3f %.3f %.3f %.3f %.3f  w_E = %.3f", z[3], z[4], z[5], z[6], z[7], z[8]),
       P(.1, -.45), "e", 14)
 label(string.format("(9) d3 on CD = %.4f; deviation: (29) %.3f  Ex.2 %.3f  (9) %.3f", k9[3][4],

@@ -17,8 +17,8 @@ for i, p in ipairs(pts) do
   line(P(p.x, -2), P(p.x, 1), 8)
   label(({"A", "B", "C", "D", "E"})[i], P(p.x, 1), "n", 7)
 end
-label("kappa", P(.82, .55), "e", 7)
-label("0", P(1, 0), "w", 8)
+label("kappa", P(.82, .55), nil, 7)
+label("0", P(1, 0), nil, 8)
 for k, m in ipairs(models) do
   local c, col = m[1], m[2]
   -- kappa against x, sampled along the curve's own parameter

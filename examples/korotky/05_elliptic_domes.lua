@@ -10,8 +10,8 @@ local rect = korotky.dome_rect(2, 1, 1.5)
 rect:wireframe{nu = 10, nv = 8, color = 11, hidden = "hide"}
 local A, B, C, D = P(0, 0, 0), P(4, 0, 0), P(4, 2, 0), P(0, 2, 0)
 path({D, A, B}, {color = 7})             -- the near sides of the base (the dome hides the others)
-for n, p in pairs{A = A, B = B, C = C, D = D} do label(n, p, n == "C" and "ne" or "sw", 15) end
-label("c0", P(2, 1, 1.5), "n", 15)
+for n, p in pairs{A = A, B = B, C = C, D = D} do label(n, p, nil, 15) end
+label("c0", P(2, 1, 1.5), nil, 15)
 rect:iso("u", .5):sub(0, .5):draw{color = 14}   -- the section x = a0 up to the top (its near half)
 
 camera(map.translate(V(480, 260)) * map.scale({120, -120}) * map.perspective(P(-2.5, -4.5, 3.5), P(.55, .55, .3)))
@@ -22,10 +22,10 @@ korotky.dome_tri(TB, TC, TA, 1):wireframe{nu = 8, nv = 1, color = 13, hidden = "
 korotky.dome_tri(TC, TA, TB, 1):wireframe{nu = 8, nv = 1, color = 11, hidden = "hide"}
 local top = P(1.6 / 3, 1.6 / 3, 1)
 circle(top, 2, 15)
-label("D", top, "n", 15)
-label("A", TA, "sw", 15)
-label("B", TB, "s", 15)
-label("C", TC, "se", 15)
+label("D", top, nil, 15)
+label("A", TA, nil, 15)
+label("B", TB, nil, 15)
+label("C", TC, nil, 15)
 camera(nil)
 label("4a  dome on a rectangle", P(40, 460), "e", 11)
 label("4b  dome on a triangle", P(380, 460), "e", 10)

@@ -26,10 +26,10 @@ for k, l in ipairs{straight, bowed} do
   l:draw{color = 14}
   p:draw{color = 8}
   q:draw{color = 8}
-  label("A", P(0, 4, 0), "w", 15); label("B", P(6, 4, 0), "e", 15)
-  label("C", P(6, 0, 0), "se", 15); label("D", P(0, 0, 0), "sw", 15)
-  label("L", l(1), "n", 14); label("L'", l(0), "s", 14)
-  label("p", p(.5), "w", 8); label("q", q(.5), "e", 8)
+  label("A", P(0, 4, 0), nil, 15); label("B", P(6, 4, 0), nil, 15)
+  label("C", P(6, 0, 0), nil, 15); label("D", P(0, 0, 0), nil, 15)
+  label("L", l(1), nil, 14); label("L'", l(0), nil, 14)
+  label("p", p(.5), nil, 8); label("q", q(.5), nil, 8)
   camera(nil)
 end
 label("l straight", P(110, 460), "e", 11)

@@ -34,7 +34,7 @@ for _, view in ipairs(views) do
   foot:draw{color = 14}
   luff:draw{color = 14}
   leech:draw{color = 14}
-  label("A", A, "sw", 15); label("B", B, "se", 15); label("C", C, "n", 15)
+  label("A", A, nil, 15); label("B", B, nil, 15); label("C", C, nil, 15)
   camera(nil)
 end
 -- the linking lines of the hyper-epure: the same point in both views at the same height y

@@ -24,8 +24,8 @@ l:draw{color = 12}
 pen{dash = {4, 3}}
 line(A, B, 8)
 pen{}
-label("A", A, "sw", 15); label("B", B, "se", 15)
-label("e1", e1(.5), "w", 14); label("e2", e2(.5), "se", 14)
-label("l", l(.5), "n", 12)
+label("A", A, nil, 15); label("B", B, nil, 15)
+label("e1", e1(.5), nil, 14); label("e2", e2(.5), nil, 14)
+label("l", l(.5), nil, 12)
 camera(nil)
 label("a conic turned about AB, tangent to fixed planes at A and B", P(20, 460), "e", 7)

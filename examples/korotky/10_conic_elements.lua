@@ -19,11 +19,11 @@ pen{}
 for _, a in ipairs(el.axes) do line(O - a * 6, O + a * 6, 7) end
 k2:draw{color = 11}
 pset(O, 15); pset(W, 15); pset(T, 14)
-label("U0", U0, "sw", 15); label("V0", V0, "se", 15); label("T", T, "s", 14)
-label("W", W, "w", 15); label("O", O, "e", 15)
+label("U0", U0, nil, 15); label("V0", V0, nil, 15); label("T", T, nil, 14)
+label("W", W, nil, 15); label("O", O, nil, 15)
 for i, a in ipairs(el.asymptotes) do   -- each asymptote named where it crosses y = 0.8
   label("e" .. i, O + a * ((.8 - O.y) / a.y), a.x * a.y > 0 and "nw" or "ne", 12)
 end
-label("k2", k2(.25), "nw", 11)
+label("k2", k2(.25), nil, 11)
 label(string.format("%s, w = %.3f: centre O at y = %.3f, semi-axes %.3f, %.3f", kind, w,
                     O.y, el.semi[1], el.semi[2]), P(-5.8, -1.1), "e", 7)

@@ -23,8 +23,8 @@ local deriv = {}
 for x = 1.2, 5.5, .05 do deriv[#deriv + 1] = P(x, y0 + H * korotky.graphical_slope(samples, x)) end
 path(deriv, {color = 7})
 pset(pole, 15)
-label("p", pole, "w", 15)
-label("H", P(pole.x + H / 2, y0), "s", 8)
+label("p", pole, nil, 15)
+label("H", P(pole.x + H / 2, y0), nil, 8)
 for i, p in ipairs(pts) do
   local m = korotky.graphical_slope(samples, p.x)
   local d = unit(V(1, m)) * .9

@@ -10,9 +10,8 @@
 #include "layout.h"
 #include "math_label.h"
 
-int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, double *w,
-                    double *h) {
-    if (c && c->measure) return c->measure(c->measure_ctx, utf8, n, scale, w, h);
+/* The VGA look's box: 8 x 16 cells a character, math as text.c lays it out. */
+static int vga_measure(const char *utf8, size_t n, int scale, double *w, double *h) {
     long chars = pc_utf8_count(utf8, n, NULL);
     if (chars < 0) return PC_EARG;
     *w = (double)chars * PC_FONT_W * scale;
@@ -29,6 +28,48 @@ int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, d
         pc_mlayout_free(&L);
         free(copy);
     }
+    return PC_OK;
+}
+
+int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, double *w,
+                    double *h) {
+    if (c && c->measure) return c->measure(c->measure_ctx, utf8, n, scale, w, h);
+    return vga_measure(utf8, n, scale, w, h);
+}
+
+int pc_text_op_is_corner(const pc_op *op) {
+    return (op->flags & PC_TEXT_ANCHOR) == PC_ANCHOR_SE && !(op->flags & PC_TEXT_PLACED) &&
+           lrint(op->x1) == pc_px(op->x2) && lrint(op->y1) == pc_px(op->y2);
+}
+
+/* The gap a label with a direction was given, read back from the cell box pc_text recorded
+ * (text.c's place(): the box's near edge is gap pixels off the point's pixel). */
+static double given_gap(const pc_canvas *c, const pc_op *op) {
+    long X = pc_px(op->x2), Y = pc_px(op->y2);
+    double vw = 0, vh = 0;
+    int scale = (int)op->rx;
+    if (vga_measure(c->text + op->first, op->count, scale, &vw, &vh) != PC_OK) return 3;
+    if (op->ry > 0) vh = op->ry * op->rx;
+    switch (op->flags & PC_TEXT_ANCHOR) {
+    case PC_ANCHOR_NE: case PC_ANCHOR_E: case PC_ANCHOR_SE: return op->x1 - X;
+    case PC_ANCHOR_N: case PC_ANCHOR_NW: return Y - op->y1 - vh + 1;
+    case PC_ANCHOR_S: case PC_ANCHOR_SW: return op->y1 - Y;
+    case PC_ANCHOR_W: return X - op->x1 - lrint(vw) + 1;
+    default: return 0;
+    }
+}
+
+int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box) {
+    double w = 0, h = 0;
+    int st = pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h);
+    if (st != PC_OK) return st;
+    if (op->ry > 0 && !c->measure) h = op->ry * op->rx;   /* PRINT's 8x8 and 8x14 cells */
+    if (!c->measure || (op->flags & (PC_TEXT_AUTO | PC_TEXT_PLACED)) || pc_text_op_is_corner(op)) {
+        *box = (pc_box2){op->x1, op->y1, op->x1 + w, op->y1 + h};
+        return PC_OK;
+    }
+    double g = given_gap(c, op);
+    *box = pc_label_box(op->x2, op->y2, w, h, op->flags & PC_TEXT_ANCHOR, g > 0 ? g : 0);
     return PC_OK;
 }
 
@@ -50,16 +91,14 @@ static pc_label *collect(const pc_canvas *c, size_t *n) {
         const pc_op *op = &c->ops[i];
         if (op->kind != PC_OP_TEXT) continue;
         pc_label *l = &lab[m++];
-        double w = 0, h = 0;
-        if (pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK)
-            w = h = 0;
-        if (op->ry > 0) h = op->ry * op->rx;   /* PRINT's 8x8 and 8x14 cells */
-        l->w = w;
-        l->h = h;
+        pc_box2 b;
+        if (pc_label_op_box(c, op, &b) != PC_OK) b = (pc_box2){op->x1, op->y1, op->x1, op->y1};
+        l->w = b.x1 - b.x0;
+        l->h = b.y1 - b.y0;
         l->px = op->x2;
         l->py = op->y2;
         l->fixed = !(op->flags & PC_TEXT_AUTO);
-        l->box = (pc_box2){op->x1, op->y1, op->x1 + w, op->y1 + h};
+        l->box = b;
         l->anchor = op->flags & PC_TEXT_ANCHOR;
         /* it stays in its VIEW; a leader is an op at the list's end, in the last VIEW only */
         size_t k = pc_op_clip(c, i);

@@ -22,6 +22,15 @@ typedef struct { double x0, y0, x1, y1; } pc_box2;
 int pc_text_measure(const pc_canvas *c, const char *utf8, size_t n, int scale, double *w,
                     double *h);
 
+/* The box in screen pixels that the TEXT op occupies, measured through c's hook: a placed
+ * label's chosen box, text() from its corner, a label with a direction on that side of its
+ * point at the gap it was given (read back from the VGA cell box pc_text recorded).  With the
+ * VGA measure this is the cell box pc_text rasterised; with the print look's (print.h) it is
+ * the box the print walk draws the label in. */
+int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box);
+/* Is the TEXT op text() at a corner (no point labelled: the box starts at the point)? */
+int pc_text_op_is_corner(const pc_op *op);
+
 /* ---- placement, on its own (label_place.c) ------------------------------------------------ */
 
 /* One label to place: its point (screen pixels), its box size, and either a fixed box

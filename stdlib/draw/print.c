@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "canvas_internal.h"
+#include "dotrun.h"
+#include "layout.h"
 #include "print_backend.h"
 
 #define TWO_PI 6.283185307179586
@@ -18,6 +20,7 @@ typedef struct {
     int status;
     uint32_t *seen;           /* fill_dots: a screen pixel's place in idx, plus 1 (0: none) */
     uint32_t *idx; size_t cap;   /* a run's distinct pixels */
+    uint8_t *dense;           /* per dot of the canvas: 1 when stroked as part of a curve */
 } walk;
 
 static double X(const walk *w, double x) { return w->pg->ox + x * w->pg->s; }
@@ -89,6 +92,7 @@ static void fill_dots(walk *w, const pc_op *ops, size_t nops) {
             const pc_xy *d = &c->dots[op->first + k];
             long x = pc_px(d->x), y = pc_px(d->y);
             if (x < 0 || y < 0 || x >= c->width || y >= c->height) continue;
+            if (w->dense && w->dense[op->first + k]) continue;   /* stroked (stroke_dots) */
             uint32_t i = (uint32_t)(y * c->width + x);
             if (w->seen[i]) {   /* seen[i]: 1 + its pair's place */
                 w->idx[2 * (w->seen[i] - 1)] = op->color;
@@ -118,6 +122,44 @@ static void fill_dots(walk *w, const pc_op *ops, size_t nops) {
         i = j;
     }
     free(run);
+}
+
+/* Curves plotted dot by dot (dotrun.h): each dense run of an op's dots one polyline through
+ * the dots (a vertex every 0.75 px), stroked with the op's pen and round ends, so a PSET loop
+ * prints as a line rather than as the screen's staircase of squares.  The dots stroked are
+ * marked for fill_dots to leave out; the isolated ones stay exact pixels. */
+static void stroke_dots(walk *w, const pc_op *ops, size_t nops) {
+    const pc_canvas *c = w->c;
+    for (size_t o = 0; o < nops && w->status == PC_OK; o++) {
+        const pc_op *op = &ops[o];
+        if (op->count < PC_DOTRUN_MIN) continue;
+        const pc_xy *d = &c->dots[op->first];
+        size_t *runs = malloc(op->count * sizeof *runs);
+        pc_xy *v = malloc(op->count * sizeof *v);
+        if (!w->dense) w->dense = calloc(c->ndots ? c->ndots : 1, 1);
+        if (!runs || !v || !w->dense) {
+            free(runs);
+            free(v);
+            w->status = PC_ENOMEM;
+            return;
+        }
+        size_t m = pc_dot_runs(d, op->count, runs);
+        for (size_t r = 0; r < m; r++) {
+            size_t a = runs[2 * r], b = runs[2 * r + 1];
+            memset(w->dense + op->first + a, 1, b - a);
+            size_t nv = pc_dot_run_thin(d + a, b - a, 0.75, v);
+            w->b->move(w->b->self, X(w, v[0].x + 0.5), Y(w, v[0].y + 0.5));
+            for (size_t k = 1; k < nv; k++) w->b->line(w->b->self, X(w, v[k].x + 0.5), Y(w, v[k].y + 0.5));
+        }
+        if (m) {
+            pc_pr_pen pen;
+            pen_of(w, op, &pen);
+            pen.round = 1;
+            w->b->stroke(w->b->self, rgb(w, op->color), &pen);
+        }
+        free(runs);
+        free(v);
+    }
 }
 
 /* Folded dots (by increasing pixel index): each colour's runs of neighbours as rectangles. */
@@ -252,8 +294,11 @@ static void stroke_op(walk *w, const pc_op *op) {
     w->b->stroke(w->b->self, rgb(w, op->color), &pen);
 }
 
-/* A label: the Pango layout placed on its anchor side of the point, as the VGA look places
- * its cell box (text.c), with a gap of 0.3 em (none for text(), whose box starts at the point). */
+/* A label: through the print look's measuring hook (print_measure.c: the resolved copy of a
+ * print-look writer has it), in the box the figure layout gave it, so placement and drawing
+ * agree; without the hook (a canvas walked directly) on its anchor side of the point, as the
+ * VGA look places its cell box (text.c), with a gap of 0.3 em (none for text(), whose box
+ * starts at the point). */
 static void draw_text(walk *w, const pc_op *op) {
     const pc_canvas *c = w->c;
     if ((size_t)op->first + op->count > c->ntext) return;
@@ -267,26 +312,34 @@ static void draw_text(walk *w, const pc_op *op) {
     const char *family;
     int ok = pc_font_family(st && st->font[0] ? st->font : c->figure.font, &family, w->err, w->errlen);
     pc_mlayout L;
+    double left, base;
     if (ok == PC_OK) ok = pc_pr_layout(s, op->a0 == 1, family, size, &L, w->err, w->errlen);
     if (ok != PC_OK) {
         w->status = ok;
         free(s);
         return;
     }
-    int anchor = op->flags;
-    double px = X(w, pc_px(op->x2) + 0.5), py = Y(w, pc_px(op->y2) + 0.5);
-    int is_text = anchor == PC_ANCHOR_SE && lrint(op->x1) == pc_px(op->x2) && lrint(op->y1) == pc_px(op->y2);
-    double gap = is_text ? 0 : 0.3 * size, left, base;
-    if (is_text) px = X(w, op->x1), py = Y(w, op->y1);
-    switch (anchor) {
-    case PC_ANCHOR_NE: case PC_ANCHOR_E: case PC_ANCHOR_SE: left = px + gap; break;
-    case PC_ANCHOR_NW: case PC_ANCHOR_W: case PC_ANCHOR_SW: left = px - gap - L.width; break;
-    default: left = px - L.width / 2; break;
-    }
-    switch (anchor) {
-    case PC_ANCHOR_NW: case PC_ANCHOR_N: case PC_ANCHOR_NE: base = py - gap - L.descent; break;
-    case PC_ANCHOR_SW: case PC_ANCHOR_S: case PC_ANCHOR_SE: base = py + gap + L.ascent; break;
-    default: base = py + (L.ascent - L.descent) / 2; break;
+    int anchor = op->flags & PC_TEXT_ANCHOR;
+    pc_box2 box;
+    if (c->measure && !pc_text_op_is_corner(op) && pc_label_op_box(c, op, &box) == PC_OK) {
+        /* the box the layout placed it in (its halo inside), measured by the same hook */
+        left = X(w, box.x0) + ((box.x1 - box.x0) * w->pg->s - L.width) / 2;
+        base = Y(w, box.y0) + ((box.y1 - box.y0) * w->pg->s - L.ascent - L.descent) / 2 + L.ascent;
+    } else {
+        double px = X(w, pc_px(op->x2) + 0.5), py = Y(w, pc_px(op->y2) + 0.5);
+        int is_text = anchor == PC_ANCHOR_SE && lrint(op->x1) == pc_px(op->x2) && lrint(op->y1) == pc_px(op->y2);
+        double gap = is_text ? 0 : 0.3 * size;
+        if (is_text) px = X(w, op->x1), py = Y(w, op->y1);
+        switch (anchor) {
+        case PC_ANCHOR_NE: case PC_ANCHOR_E: case PC_ANCHOR_SE: left = px + gap; break;
+        case PC_ANCHOR_NW: case PC_ANCHOR_W: case PC_ANCHOR_SW: left = px - gap - L.width; break;
+        default: left = px - L.width / 2; break;
+        }
+        switch (anchor) {
+        case PC_ANCHOR_NW: case PC_ANCHOR_N: case PC_ANCHOR_NE: base = py - gap - L.descent; break;
+        case PC_ANCHOR_SW: case PC_ANCHOR_S: case PC_ANCHOR_SE: base = py + gap + L.ascent; break;
+        default: base = py + (L.ascent - L.descent) / 2; break;
+        }
     }
     int halo = st ? st->halo : -1;
     pc_pr_label lab = {&L, family, left, base, rgb(w, op->color), w->pal[0],
@@ -298,7 +351,7 @@ static void draw_text(walk *w, const pc_op *op) {
 
 int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char *err,
                   size_t errlen) {
-    walk w = {c, pg, b, {{0}}, err, errlen, PC_OK, NULL, NULL, 0};
+    walk w = {c, pg, b, {{0}}, err, errlen, PC_OK, NULL, NULL, 0, NULL};
     pc_theme_palette(c, PC_THEME_PAPER, w.pal);
     size_t clip = SIZE_MAX;
     for (size_t i = 0; i < c->nops && w.status == PC_OK && !b->failed; i++) {
@@ -326,7 +379,8 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
         case PC_OP_DOTS: {
             size_t j = i + 1;
             while (j < c->nops && c->ops[j].kind == PC_OP_DOTS && pc_op_clip(c, j) == k) j++;
-            fill_dots(&w, op, j - i);
+            stroke_dots(&w, op, j - i);
+            if (w.status == PC_OK) fill_dots(&w, op, j - i);
             i = j - 1;
             break;
         }
@@ -393,5 +447,6 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
     if (w.status == PC_OK && b->failed) w.status = PC_ENOMEM;
     free(w.seen);
     free(w.idx);
+    free(w.dense);
     return w.status;
 }

@@ -51,6 +51,14 @@ int pc_font_family(const char *font, const char **family, char *err, size_t errl
  * font, a label's math: the message in err), PC_ENOMEM or PC_EIO. */
 int pc_encode_print(const pc_canvas *c, pc_format fmt, FILE *out, char *err, size_t errlen);
 
+/* The print look's measuring hook (pc_canvas.measure, print_measure.c): the Pango box of a
+ * label at the figure's font and size times scale, halo included, in screen pixels; ctx is
+ * the canvas.  pc_print_resolve resolves c for a print-look writer with that hook: *tmp gets a
+ * shallow copy of c with the hook set, and the result (tmp itself when nothing is pending) is
+ * released with pc_layout_release(tmp, result). */
+int pc_print_measure(void *ctx, const char *utf8, size_t n, int scale, double *w, double *h);
+const pc_canvas *pc_print_resolve(const pc_canvas *c, pc_canvas *tmp);
+
 /* The print-look colour of an attribute: the paper theme's, "#rrggbb" exactly. */
 pc_rgb pc_print_rgb(const pc_canvas *c, int attr);
 

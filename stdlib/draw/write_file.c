@@ -166,18 +166,21 @@ typedef struct { const pc_canvas *c; pc_format fmt; pc_theme theme; } picture;
  * the print look, PNG and SVG when the script asked for a figure. */
 static int encode(void *ud, FILE *f, char *why, size_t whylen) {
     const picture *p = ud;
-    const pc_canvas *r = pc_layout_resolve(p->c);
+    int print = p->fmt == PC_FMT_PDF || p->fmt == PC_FMT_EPS || p->fmt == PC_FMT_PS ||
+                (p->c->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG));
+    pc_canvas tmp;   /* the print look places labels by their Pango boxes (print_measure.c) */
+    const pc_canvas *base = print ? &tmp : p->c;
+    const pc_canvas *r = print ? pc_print_resolve(p->c, &tmp) : pc_layout_resolve(p->c);
     if (!r) return PC_ENOMEM;
     int st;
-    if (p->fmt == PC_FMT_PDF || p->fmt == PC_FMT_EPS || p->fmt == PC_FMT_PS ||
-        (r->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG)))
+    if (print)
         st = pc_encode_print(r, p->fmt, f, why, whylen);
     else switch (p->fmt) {
     case PC_FMT_PNG: st = pc_encode_png(r, p->theme, f); break;
     case PC_FMT_SVG: st = pc_encode_svg(r, p->theme, f); break;
     default: st = pc_encode_ppm(r, p->theme, f); break;
     }
-    pc_layout_release(p->c, r);
+    pc_layout_release(base, r);
     return st;
 }
 

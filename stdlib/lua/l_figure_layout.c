@@ -12,6 +12,7 @@
 #include "pcl_curve.h"
 #include "pcl_scene.h"
 #include "layout.h"
+#include "print.h"
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
@@ -75,12 +76,14 @@ static int color_of(const pcl_val *v) { return v->present ? (int)v->x : -1; }
 
 static int l_placed_labels(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
-    const pc_canvas *r = pc_layout_resolve(c);   /* as a writer gets it: placed, scene drawn */
+    pc_canvas tmp;   /* as a writer gets it: placed (by Pango's boxes in the print look) */
+    const pc_canvas *base = c->figure.on ? &tmp : c;
+    const pc_canvas *r = c->figure.on ? pc_print_resolve(c, &tmp) : pc_layout_resolve(c);
     pc_box2 *b;
     int *side;
     size_t n;
     if (!r || pc_layout_labels(r, &b, &side, &n) != PC_OK) {
-        pc_layout_release(c, r);
+        pc_layout_release(base, r);
         return pcl_fail(L, "out of memory");
     }
     static const char *const names[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw"};
@@ -102,7 +105,7 @@ static int l_placed_labels(lua_State *L) {
     }
     free(b);
     free(side);
-    pc_layout_release(c, r);
+    pc_layout_release(base, r);
     return 1;
 }
 
