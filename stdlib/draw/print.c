@@ -112,7 +112,7 @@ static void fill_dots(walk *w, const pc_op *ops, size_t nops) {
     }
     for (size_t k = 0; k < n; k++) w->seen[w->idx[2 * k + 1]] = 0;
     if (w->status != PC_OK) return;
-    qsort(w->idx, n, 2 * sizeof *w->idx, by_color_then_index);
+    if (n) qsort(w->idx, n, 2 * sizeof *w->idx, by_color_then_index);   /* idx may be NULL when no dot was drawn */
     uint32_t *run = malloc(n * sizeof *run + 1);
     if (!run) { w->status = PC_ENOMEM; return; }
     for (size_t i = 0; i < n;) {
