@@ -148,7 +148,7 @@ int frames_main(const char *script, int nframes, double fps, const render_param 
         for (int j = 0; j < noutputs && !status; j++) {
             if (svgs[j]) {
                 size_t len;
-                char *svg = render_encode(&r, 1, &len);
+                char *svg = render_encode(&r, PC_FMT_SVG, &len);
                 if (!svg) { status = 1; break; }
                 if (k == 0) {   /* the first frame's header opens the document */
                     const char *body = strstr(svg, "<svg");
@@ -207,7 +207,7 @@ static void capture(lua_State *L) {
     for (int j = 0; j < Q.noutputs && !Q.status; j++) {
         if (Q.svgs[j]) {
             size_t len;
-            char *svg = render_encode(&r, 1, &len);
+            char *svg = render_encode(&r, PC_FMT_SVG, &len);
             if (!svg) { Q.status = 1; break; }
             if (k == 0) {
                 const char *body = strstr(svg, "<svg");

@@ -7,7 +7,7 @@
 #include <lauxlib.h>
 #include "host.h"
 #include "pcl.h"
-#include "layout.h"
+#include "writers.h"
 
 /* "file:LINE: message" and a traceback: keep the message, find the script's line in it */
 static int msgh(lua_State *L) {
@@ -74,7 +74,7 @@ void render_close(render_run *r) {
     r->L = NULL;
 }
 
-char *render_encode(render_run *r, int svg, size_t *len) {
+char *render_encode(render_run *r, pc_format fmt, size_t *len) {
     char *buf = NULL;
     size_t size = 0;
     FILE *f = open_memstream(&buf, &size);
@@ -82,14 +82,11 @@ char *render_encode(render_run *r, int svg, size_t *len) {
         snprintf(r->error, sizeof r->error, "out of memory");
         return NULL;
     }
-    pc_canvas *c = pcl_canvas(r->L);
-    const pc_canvas *placed = pc_layout_resolve(c);   /* automatic labels placed (layout.h) */
-    int rc = !placed ? PC_ENOMEM : svg ? pc_encode_svg(placed, pcl_theme(r->L), f)
-                                       : pc_encode_png(placed, pcl_theme(r->L), f);
-    pc_layout_release(c, placed);
+    char why[512] = "";
+    int rc = pc_encode(pcl_canvas(r->L), fmt, pcl_theme(r->L), f, why, sizeof why);
     if (fclose(f) != 0 || rc != PC_OK) {
         free(buf);
-        snprintf(r->error, sizeof r->error, "cannot encode the picture");
+        snprintf(r->error, sizeof r->error, "cannot encode the picture%s%s", *why ? ": " : "", why);
         return NULL;
     }
     *len = size;

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <lua.h>
 #include "sandbox.h"
+#include "writers.h"
 
 typedef struct {
     char name[65];
@@ -28,8 +29,9 @@ int render_script(const char *path, const render_param *params, int nparams,
                   const sandbox_config *cfg, render_run *r);
 void render_close(render_run *r);
 
-/* The run's canvas as SVG or PNG in memory (malloc'd; NULL with r->error on failure). */
-char *render_encode(render_run *r, int svg, size_t *len);
+/* The run's canvas in memory as pc_write_file would write it (writers.h: PNG, SVG, PDF, ...;
+ * the print look for PDF and for a script's figure{}), malloc'd; NULL with r->error on failure. */
+char *render_encode(render_run *r, pc_format fmt, size_t *len);
 
 /* Parse "name=value" (the command line's --set): 1 on success. */
 int render_parse_param(const char *s, render_param *p);

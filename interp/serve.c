@@ -5,7 +5,8 @@
  *   /params      JSON: the script's name, its sliders ({name, min, max, default, step,
  *                animate}, from a run with the defaults) and that run's error, if any
  *   /render?k=v  the figure as SVG with those slider values (422 and the message on an error);
- *                &format=png for PNG (the page's downloads)
+ *                &format=png or &format=pdf for PNG or PDF (the page's downloads; PDF is
+ *                the print look, and a script's figure{} gives it to SVG and PNG as well)
  *   /script      the script's text (shown beside the figure)
  *   /version     the script file's modification time: the page polls it to reload on save
  * Every render (and /params, which runs the script too) happens in a child process forked for
@@ -130,7 +131,7 @@ static char *page_html(size_t *len) {
 }
 
 /* The slider values of the query string (only names the script could declare). */
-typedef struct { render_param p[MAX_PARAMS]; int n; int bad, png; } query;
+typedef struct { render_param p[MAX_PARAMS]; int n; int bad; pc_format fmt; } query;
 
 static enum MHD_Result each_arg(void *cls, enum MHD_ValueKind kind, const char *key,
                                 const char *value) {
@@ -138,8 +139,10 @@ static enum MHD_Result each_arg(void *cls, enum MHD_ValueKind kind, const char *
     query *q = cls;
     char text[128];
     if (!strcmp(key, "format")) {   /* not a slider: the download's format */
-        q->png = value && !strcmp(value, "png");
-        q->bad |= !value || (strcmp(value, "png") && strcmp(value, "svg"));
+        q->fmt = !value ? PC_FMT_UNKNOWN : !strcmp(value, "svg") ? PC_FMT_SVG
+                 : !strcmp(value, "png") ? PC_FMT_PNG : !strcmp(value, "pdf") ? PC_FMT_PDF
+                                                                                : PC_FMT_UNKNOWN;
+        q->bad |= q->fmt == PC_FMT_UNKNOWN;
         return MHD_YES;
     }
     if (!value || q->n == MAX_PARAMS || snprintf(text, sizeof text, "%s=%s", key, value) >= (int)sizeof text ||
@@ -168,11 +171,13 @@ static void child_render(const query *q, buf *out) {
         return;
     }
     size_t len;
-    char *svg = render_encode(&r, !q->png, &len);
+    char *body = render_encode(&r, q->fmt, &len);
     render_close(&r);
-    if (!svg) answer(out, 500, "text/plain; charset=utf-8", r.error, strlen(r.error));
-    else answer(out, 200, q->png ? "image/png" : "image/svg+xml", svg, len);
-    free(svg);
+    const char *type = q->fmt == PC_FMT_PNG ? "image/png"
+                       : q->fmt == PC_FMT_PDF ? "application/pdf" : "image/svg+xml";
+    if (!body) answer(out, 500, "text/plain; charset=utf-8", r.error, strlen(r.error));
+    else answer(out, 200, type, body, len);
+    free(body);
 }
 
 static void child_params(buf *out) {
@@ -351,9 +356,9 @@ static enum MHD_Result run_child(struct MHD_Connection *con, const query *q) {
 }
 
 static enum MHD_Result do_render(struct MHD_Connection *con) {
-    query q = {.n = 0};
+    query q = {.n = 0, .fmt = PC_FMT_SVG};
     MHD_get_connection_values(con, MHD_GET_ARGUMENT_KIND, each_arg, &q);
-    if (q.bad) return reply_text(con, 400, "bad query: use name=number for sliders, format=svg|png");
+    if (q.bad) return reply_text(con, 400, "bad query: use name=number for sliders, format=svg|png|pdf");
     return run_child(con, &q);
 }
 

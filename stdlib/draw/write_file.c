@@ -164,24 +164,29 @@ typedef struct { const pc_canvas *c; pc_format fmt; pc_theme theme; } picture;
 
 /* The labels placed at write time (layout.h) on a resolved copy, then PDF, EPS and PS always in
  * the print look, PNG and SVG when the script asked for a figure. */
-static int encode(void *ud, FILE *f, char *why, size_t whylen) {
-    const picture *p = ud;
-    int print = p->fmt == PC_FMT_PDF || p->fmt == PC_FMT_EPS || p->fmt == PC_FMT_PS ||
-                (p->c->figure.on && (p->fmt == PC_FMT_PNG || p->fmt == PC_FMT_SVG));
+int pc_encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f, char *why, size_t whylen) {
+    int print = fmt == PC_FMT_PDF || fmt == PC_FMT_EPS || fmt == PC_FMT_PS ||
+                (c->figure.on && (fmt == PC_FMT_PNG || fmt == PC_FMT_SVG));
     pc_canvas tmp;   /* the print look places labels by their Pango boxes (print_measure.c) */
-    const pc_canvas *base = print ? &tmp : p->c;
-    const pc_canvas *r = print ? pc_print_resolve(p->c, &tmp) : pc_layout_resolve(p->c);
+    const pc_canvas *base = print ? &tmp : c;
+    const pc_canvas *r = print ? pc_print_resolve(c, &tmp) : pc_layout_resolve(c);
     if (!r) return PC_ENOMEM;
     int st;
     if (print)
-        st = pc_encode_print(r, p->fmt, f, why, whylen);
-    else switch (p->fmt) {
-    case PC_FMT_PNG: st = pc_encode_png(r, p->theme, f); break;
-    case PC_FMT_SVG: st = pc_encode_svg(r, p->theme, f); break;
-    default: st = pc_encode_ppm(r, p->theme, f); break;
+        st = pc_encode_print(r, fmt, f, why, whylen);
+    else switch (fmt) {
+    case PC_FMT_PNG: st = pc_encode_png(r, theme, f); break;
+    case PC_FMT_SVG: st = pc_encode_svg(r, theme, f); break;
+    case PC_FMT_PPM: st = pc_encode_ppm(r, theme, f); break;
+    default: st = PC_EARG; snprintf(why, whylen, "unknown format"); break;
     }
     pc_layout_release(base, r);
     return st;
+}
+
+static int encode(void *ud, FILE *f, char *why, size_t whylen) {
+    const picture *p = ud;
+    return pc_encode(p->c, p->fmt, p->theme, f, why, whylen);
 }
 
 int pc_write_file(const pc_canvas *c, const char *path, pc_theme theme, char *err, size_t errlen) {

@@ -28,6 +28,11 @@ int pc_encode_ppm(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_png(const pc_canvas *c, pc_theme theme, FILE *out);
 int pc_encode_svg(const pc_canvas *c, pc_theme theme, FILE *out);
 
+/* Encode in format fmt to an open stream, in the look the canvas asks for (as pc_write_file
+ * below): labels placed at write time, PDF/EPS/PS and a figure{}'s PNG/SVG in the print look.
+ * PC_OK, PC_ENOMEM, PC_EIO, or PC_EARG with the reason in why. */
+int pc_encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f, char *why, size_t whylen);
+
 /* Write to `path` in the format its extension names, atomically.  PDF, EPS and PS are the
  * print look (print.h); PNG and SVG are the print look when the canvas's figure is on (a
  * script's figure{}, the command line's --print, --dpi or --size), the VGA look otherwise.  On failure returns

@@ -80,6 +80,19 @@ expect_in params.json '"error": null' "no error"
 get "render?k=0.25&n=5" render.svg
 expect_eq "$code" 200 "/render"
 checks=$((checks + 1)); cmp -s render.svg set.svg || fail "the page's render differs from the headless one"
+# the downloads: PNG and PDF are the bytes -o writes for the same values
+run "$POINTCALC" live.lua --set k=0.25 --set n=5 -o set.png -o set.pdf
+get "render?k=0.25&n=5&format=png" render.png
+expect_eq "$code" 200 "/render as PNG"
+checks=$((checks + 1)); cmp -s render.png set.png || fail "the page's PNG differs from the headless one"
+get "render?k=0.25&n=5&format=pdf" render.pdf
+expect_eq "$code" 200 "/render as PDF"
+checks=$((checks + 1)); head -c 5 render.pdf | grep -q '%PDF-' || fail "the PDF download is no PDF"
+checks=$((checks + 1))
+[ "$(wc -c < render.pdf)" -gt 500 ] && [ "$(head -c 5 set.pdf)" = "%PDF-" ] || fail "the PDF download is too small"
+get "render?format=gif" bad.txt
+expect_eq "$code" 400 "an unknown format"
+expect_in bad.txt "format=svg|png|pdf" "names the formats"
 get "render?k=7" bad.txt
 expect_eq "$code" 422 "a value outside the range"
 expect_in bad.txt "live.lua:1: slider: the value 7 set for k is outside its range" "its message"
