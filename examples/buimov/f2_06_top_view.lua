@@ -44,6 +44,6 @@ for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 local screen = framing(pts, 40, 30, 600, 430)
 box(screen * f, cube, 15, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true, H = true})
 for _, pair in ipairs{{"B", "A"}, {"C", "D"}, {"F", "E"}, {"G", "H"}} do
-  label("$" .. pair[1] .. ", " .. pair[2] .. "$", (screen * f)(cube[pair[1]]), nil, 15)
+  label("$" .. pair[1] .. "$, $" .. pair[2] .. "$", (screen * f)(cube[pair[1]]), nil, 15)
 end
 caption("T = Rx(90) Pz:  [x y z 1] T = [x, -z, 0, 1]", "bottom", 7)
