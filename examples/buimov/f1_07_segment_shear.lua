@@ -2,6 +2,7 @@
 -- Buimov §1.4, Fig. 1.7: A = [0 1], B = [2 3] times T (lost in the conversion, recovered from
 -- the printed result) give A* = [3 1], B* = [11 7]; the midpoint M = [1 2] goes to M* = [7 4],
 -- the midpoint of A*B* (the same for every division ratio).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

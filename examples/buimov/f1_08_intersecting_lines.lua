@@ -2,6 +2,7 @@
 -- Buimov §1.6, Fig. 1.8: A[0 4], B[4 0] (x + y = 4) and C[-1 -1], D[3 3] (y = x) meet at
 -- [2 2]; their images A*[4 -8], B*[4 8] (x = 4) and C*[-2 0], D*[6 0] (y = 0) meet at
 -- [2 2] T = [4 0].
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -1,6 +1,7 @@
 -- A triangle turned by 90° about the origin: T = [[0, 1], [-1, 0]]
 -- Buimov §1.7.1, Fig. 1.9: A[3 -1], B[4 1], C[2 1] give A*[1 3], B*[-1 4], C*[-1 2]; the
 -- arc shows the quarter turn of A (counter-clockwise, the book's positive sense).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

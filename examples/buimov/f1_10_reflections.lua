@@ -2,6 +2,7 @@
 -- Buimov §1.7.2, Fig. 1.10: A[8 1], B[6 2], C[7 3]; T = [[0, 1], [1, 0]] (about y = x) gives
 -- A*[1 8], B*[2 6], C*[3 7]; T = [[1, 0], [0, -1]] (about y = 0) gives A**[8 -1], B**[6 -2],
 -- C**[7 -3]. The mirror y = x is dashed.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -1,6 +1,7 @@
 -- A uniform scale by 2: T = [[2, 0], [0, 2]]
 -- Buimov §1.7.3, Fig. 1.11: A[3 1], B[3 2], C[1 2] give A*[6 2], B*[6 4], C*[2 4]: the shape is
 -- kept, every length doubled, every point twice as far from the origin (the dashed rays).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -2,6 +2,7 @@
 -- Buimov §1.7.4, Fig. 1.12: [[0, 0], [1, 0], [1, 1], [0, 1]] [[a, b], [c, d]] =
 -- [[0, 0], [a, b], [a + c, b + d], [c, d]]: B* is the first row of T, D* the second. With
 -- T = [[1, 2], [3, 1]] (the book keeps T general) the area is |ad - bc| = |det T| = 5.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -1,6 +1,7 @@
 -- The unit square turned by theta: T = [[cos theta, sin theta], [-sin theta, cos theta]]
 -- Buimov §1.7.5, Fig. 1.13: A* = [0 0], B* = [cos, sin], C* = [cos - sin, cos + sin],
 -- D* = [-sin, cos]; theta = 30° here (the book keeps it general): C* = (0.366025, 1.366025).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

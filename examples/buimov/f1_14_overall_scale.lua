@@ -1,6 +1,7 @@
 -- The overall scale s of the homogeneous matrix: x* = x/s, y* = y/s
 -- Buimov §1.7.6, Fig. 1.14: [x y 1] [[1, 0, 0], [0, 1, 0], [0, 0, s]] = [x y s], the point
 -- [x/s y/s]; s = 2 here (s > 1 shrinks), the same as [[1/s, 0], [0, 1/s]].
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

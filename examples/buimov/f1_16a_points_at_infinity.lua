@@ -1,7 +1,8 @@
 -- Points at infinity: [4 3 h] runs out along y = 3x/4 as h goes to 0
--- Buimov §1.7.7 (the table after Fig. 1.16): [4 3 1], [4 3 1/2], [4 3 1/4], [4 3 1/8] are the
+-- Buimov §1.7.7 (the table of points at infinity): [4 3 1], [4 3 1/2], [4 3 1/4], [4 3 1/8] are the
 -- points (4, 3), (8, 6), (16, 12), (32, 24); [4 3 0] is the point at infinity of the line
 -- y = (3/4) x (the book's prose says "[3 4 h]", a misprint; its table has [4 3 h]).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -3,6 +3,7 @@
 -- The point (5, 7) through T1 then T2 (T1 T2 = [[0, 1], [1, 0]]) goes to (7, 5), through T2
 -- then T1 (T2 T1 = [[0, -1], [-1, 0]]) to (-7, -5): the book prints [-x -y] for [-y -x].
 -- Dashed: the intermediate points A T1 and A T2.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -2,6 +2,7 @@
 -- Buimov §1.7.8: T = Tr(-m, -n) R(theta) Tr(m, n); about (m, n) = (2, 3) by 90° its third row
 -- is [m + n, -m + n, 1] = [5 1 1] (the origin goes to (5, 1)). The triangle ABC (black), its
 -- translate and turned translate (dashed) and the result A*B*C* (colour).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -2,6 +2,7 @@
 -- Buimov §2.1, Fig. 2.1: [x y z 1] diag(a, e, j, 1) = [ax, ey, jz, 1]; the box 2 x 1 x 0.5 (the
 -- book gives no sizes) times diag(1/2, 1, 2, 1) is the unit cube (starred, moved 2.6 along x to
 -- stand beside it). Isometric view, hidden edges dashed.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -3,6 +3,7 @@
 -- Ry(90°) = [[0,0,-1,0],[0,1,0,0],[1,0,0,0],[0,0,0,1]] sends z to x and Rz(90°) sends x to y (a
 -- positive turn is counter-clockwise seen from the positive end of the axis). The block
 -- 1 x 0.5 x 0.25 (grey) and its image (colour), each pair in its own panel, isometric view.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

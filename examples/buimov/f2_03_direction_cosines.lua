@@ -3,6 +3,7 @@
 -- x, y, z; its components are their cosines and n1^2 + n2^2 + n3^2 = 1. Here n = (2, 1, 2)/3:
 -- alpha = 48.19°, beta = 70.53°, gamma = 48.19°. The dashed lines drop n's end onto the axes.
 -- Seen from the azimuth 25°, elevation 20° with z up.
+
 local O = P(0, 0, 0)
 -- the axes x, y, z through the view, lettered at their ends
 local function axes3(view, len)

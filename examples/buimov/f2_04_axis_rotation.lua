@@ -4,6 +4,7 @@
 -- the matrix is the cyclic permutation [[0,1,0,0],[0,0,1,0],[1,0,0,0],[0,0,0,1]]: P = (1, 0, 0)
 -- goes to P* = (0, 1, 0). Q = (P . n) n is the centre of P's circle about the axis, S = n x P
 -- the direction of the turn at P; the whole circle grey, the turn by theta in colour.
+
 local O = P(0, 0, 0)
 -- the axes x, y, z through the view, lettered at their ends
 local function axes3(view, len)

@@ -4,6 +4,7 @@
 -- C = (0, 0, -k) with k = 2.5 (§2.8.5: x* = x/(z/k + 1)), and the unit cube beyond the plane
 -- at (0.4, 0.3, 1). Its image in the plane is drawn in colour; the projectors are dashed where
 -- the cube hides them. Seen from the azimuth -70°, elevation 20°, z up.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

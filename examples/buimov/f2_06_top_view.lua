@@ -4,6 +4,7 @@
 -- are seen end-on and the corners coincide in pairs, the upper one (B, C, F, G) written first.
 -- Seen from +y (the book's eye for the parallel views is on the far side: its picture is this
 -- one's mirror, the book plots (x*, y*) as they come).
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

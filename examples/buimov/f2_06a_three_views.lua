@@ -1,8 +1,9 @@
 -- The unit cube in three orthographic views: front, top and side, panels apart
--- Buimov §2.8.1-§2.8.2 (with Fig. 2.6): the front view Pz onto z = 0 ([x y z 1] -> [x y]), the
+-- Buimov §2.8.1-§2.8.2 (the top view is figure 2.6): the front view Pz onto z = 0 ([x y z 1] -> [x y]), the
 -- top view Rx(90°) Pz ([x, -z]) above it and the side view Ry(-90°) Pz ([z, y]) on its right, as
 -- a draughtsman lays them out. In each view the corners coincide in pairs, each pair lettered
 -- once; the edges behind are covered by those in front (no hidden edge shows in these views).
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -2,6 +2,7 @@
 -- Buimov §2.8.3, Fig. 2.7: T = Ry(Phi) Rx(theta) Pz with sin^2 theta = fz^2/2 = 1/8 and
 -- sin Phi = tan theta: theta = 20.704811°, Phi = 22.207654°; the x and y axes are foreshortened
 -- equally, fx = fy = sqrt(7/8) = 0.935414, and fz = 0.5. Hidden edges dashed.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -3,6 +3,7 @@
 -- book does not name it); with Phi = 30°, theta = 40° the axes shrink by
 -- fx = sqrt(cos^2 Phi + sin^2 Phi sin^2 theta) = 0.9236, fy = cos theta = 0.7660 and
 -- fz = sqrt(sin^2 Phi + cos^2 Phi sin^2 theta) = 0.7424 (map.foreshortening). Hidden edges dashed.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -2,6 +2,7 @@
 -- Buimov §2.8.4, Fig. 2.8: Phi = 45°, sin^2 theta = 1/3 (theta = 35.264390°): every axis is
 -- foreshortened by sqrt(2/3) = 0.816497, and the x axis is drawn at 30° to the horizontal
 -- (tan alpha = sin Phi sin theta / cos Phi; the book prints squares, which give 18.43°).
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -2,6 +2,7 @@
 -- Buimov §2.8 has no oblique projections; these are Rogers & Adams': x' = x + k z cos alpha,
 -- y' = y + k z sin alpha with alpha = 45°; k = 1 (cavalier: the receding edges at full length)
 -- in black, k = 1/2 (cabinet) in grey, both lettered (the cabinet's corners starred).
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -3,6 +3,7 @@
 -- the point P = (y, z) = (2, 3) seen from the centre C = (0, -k), k = 2, meets it at
 -- y* = y k/(z + k) = y/(rz + 1) = 0.8 with r = 1/k (likewise x*). As k grows the projectors turn
 -- parallel and the view becomes axonometric. Equal units on both axes: z to the right, y up.
+
 local k, y, z = 2, 2, 3
 local ys = y / (z / k + 1)
 local s = 90                                              -- pixels per unit

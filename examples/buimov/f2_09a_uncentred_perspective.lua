@@ -4,6 +4,7 @@
 -- gives h = rz + 1; a parallel projection onto z = 0 follows. r = 1/2 (the book gives no value):
 -- the eye at z = -k = -2 and the vanishing point [0 0 1/r 1] = (0, 0, 2) (printed "[0 0 1/r 0]")
 -- projects to V_z = (0, 0) = A: the cube looks skewed. Hidden edges dashed.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -3,6 +3,7 @@
 -- moved by -0.5 in x and y first, then the perspective transform with r = 1/2 and the parallel
 -- projection onto z = 0: the edges along z run to the vanishing point V_z = (0, 0) in the
 -- middle of the near face, the back face is the front one shrunk by 1/(1 + r) = 2/3.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -2,6 +2,7 @@
 -- Buimov §2.8.5, Fig. 2.10 a: the 4th column [p 0 0 1] gives h = px + 1 and the vanishing point
 -- [1/p 0 0 1] of the edges along x; p = 1/2 (the book gives no value), V_x = (2, 0), then the
 -- projection onto z = 0 (the q and r cases are the next two scripts). Hidden edges dashed.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -1,6 +1,7 @@
 -- One-point perspectives by p only, q only and r only: the term q
 -- Buimov §2.8.5, Fig. 2.10 b: the 4th column [0 q 0 1] gives h = qy + 1 and the vanishing point
 -- [0 1/q 0 1] of the edges along y; q = 1/2, V_y = (0, 2), then the projection onto z = 0.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

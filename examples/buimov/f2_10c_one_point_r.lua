@@ -2,6 +2,7 @@
 -- Buimov §2.8.5, Fig. 2.10 c: the 4th column [0 0 r 1], h = rz + 1 and V_z = [0 0 1/r 1]; r = 1/2,
 -- the cube moved by (0.4, 0.3, 0) off the axis, projected onto z = 0: every edge along z runs to
 -- V_z = (0, 0), the edges along x and y stay parallel.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -3,6 +3,7 @@
 -- points [1/p 0 0 1] and [0 1/q 0 1]; p = q = 1/2 (the book gives no values), the cube moved by
 -- (0.2, 0.2, 0): the edges along x run to V_x = (2, 0), those along y to V_y = (0, 2), those
 -- along z stay parallel (they are seen end-on after the projection onto z = 0).
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -4,6 +4,7 @@
 -- book suggests, by turning the cube about two axes before the one-point transform: Ry(-35°),
 -- Rx(30°), moved by (0, -0.3, 0.4), then r = 1/k, k = 2 and the projection onto z = 0: every
 -- axis direction now has a finite image, so the edges along x, y and z all converge.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -4,6 +4,7 @@
 -- keeps them general; m = -0.5 puts the eye's level through the cube): the edges along x and z
 -- meet the x axis at -k cot theta = -1.154701 (V_x) and k tan theta = 3.464102 (V_z); those along
 -- y stay parallel. Hidden edges dashed.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -2,9 +2,10 @@
 -- Buimov §2.8.6: each view T (a projection onto z = 0) gives two equations (3.8.6.3) in x, y, z:
 -- (T11 - T14 x*) x + (T21 - T24 x*) y + (T31 - T34 x*) z + (T41 - T44 x*) = 0 and the same with
 -- y*; two views give four equations in three unknowns, solved by least squares (the book says
--- "by trial"). Left: the dimetric view (fz = 1/2), right: the two-point perspective of Fig. 2.12;
+-- "by trial"). Left: the dimetric view (fz = 1/2), right: the two-point perspective of figure 2.12;
 -- the point X = (0.7, 0.4, 0.9) of the cube is given only by its images X1, X2, and
 -- buimov.reconstruct finds it again (the residual 0: consistent images).
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),
@@ -50,6 +51,6 @@ for i, v in ipairs{{T1, X1, "$X_1$"}, {T2, X2, "$X_2$"}} do
   local screen = framing(pts, 30 + 320 * (i - 1), 60, 290 + 320 * (i - 1), 360)
   box(screen * v[1], cube, 15)
   mark(screen(v[2]), "dot", 6, 12); label(v[3], screen(v[2]), nil, 12)
-  label(i == 1 and "view 1: dimetric" or "view 2: Fig. 2.12", P(160 + 320 * (i - 1), 400), "c", 7)
+  label(i == 1 and "view 1: dimetric" or "view 2: figure 2.12", P(160 + 320 * (i - 1), 400), "c", 7)
 end
 caption(string.format("from X1 and X2 alone:  X = (%.4f, %.4f, %.4f), residual %.0e", R.x, R.y, R.z, residual), "bottom", 7)

@@ -3,8 +3,9 @@
 -- two equations for each point of space and its image, [x, 0, -x x*, y, 0, -y x*, z, 0, -z x*,
 -- 1, 0, -x*] T = 0 and the like with y* (the book prints +x*, +y*); with T44 = 1 (Rogers &
 -- Adams' normalisation, not in the book) six points fix the camera by least squares. The images
--- of six corners of the cube under the Fig. 2.12 camera (circles) give back that camera:
+-- of six corners of the cube under the figure 2.12 camera (circles) give back that camera:
 -- buimov.calibrate returns it, and the whole cube drawn through it lands on the circles.
+
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
 local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),

@@ -5,6 +5,7 @@
 -- rounds to 1.8). The slopes are read back from the implicit curve (plane.conic_slope). Beside
 -- it (example 1) the circle through (1, 1), (2, 2), (3, 2): x^2 + y^2 - 5x - y + 4 = 0 (the book
 -- prints "+ y"), centre (2.5, 0.5), r = 1.581139.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -3,6 +3,7 @@
 -- d = -8.4, e = 5.7, f = 0.7, centre (4.2, -2.85); exactly the centres are (4.179449, -2.858899)
 -- (d = -8.358899, e = 5.717798, f = 0.641101; the book's circle) and (-0.179449, 5.858899),
 -- which the book does not mention.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -4,6 +4,7 @@
 -- sin th) with a uniform step in th spaces them evenly (green), the rational ((1 - t^2)/(1 + t^2),
 -- 2t/(1 + t^2)) with a uniform step in t = tan(th/2) lies between (blue). Three radii 1, 0.8,
 -- 0.6 keep the three sets apart.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

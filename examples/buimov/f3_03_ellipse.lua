@@ -3,6 +3,7 @@
 -- n + beta sin theta) drawn from the circles of radii alpha and beta (dashed); m = 1, n = 2,
 -- alpha = 3, beta = 2 and theta = 1: the point (2.620907, 3.682942), plane.ellipse's parameter
 -- being the book's theta exactly.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

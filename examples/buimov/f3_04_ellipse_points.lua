@@ -4,6 +4,7 @@
 -- the angle give points closer together where the ellipse is flatter (near (0, +-2)) than
 -- where it turns fast. After ten steps of dth = 0.1 the recurrence is at (3 cos 1, 2 sin 1) =
 -- (1.620907, 1.682942), marked.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -3,6 +3,7 @@
 -- parametrisations give y^2 = 4px); the recurrence x' = x + y dth + p dth^2, y' = y + 2p dth
 -- (the book prints "- y dth") from the vertex, p = 1/2, dth = 0.2, ten steps to (0.5 th^2, th)
 -- with th = 2: (2, 2); the fourth quadrant by reflection. The focus F = (p, 0).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

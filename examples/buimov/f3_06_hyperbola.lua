@@ -4,6 +4,7 @@
 -- x' = beta x/(beta cos dth - y sin dth), y' = beta (y + beta tan dth)/(beta - y tan dth) (the book
 -- prints "+" in the last denominator; red) and of the ch/sh recurrence (green), dth = 0.1; the
 -- branch (alpha ch t, beta sh t) is drawn at the book's t (plane.hyperbola), both branches.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

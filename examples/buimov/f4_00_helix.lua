@@ -3,6 +3,7 @@
 -- (t from 0 to 5 pi), seen from the azimuth 30°, elevation 20° with z up: the turns behind the
 -- axis are hidden by nothing (a curve hides nothing), so the cylinder x^2 + y^2 = a^2 it lies on
 -- is drawn as a surface that hides them: the back half of every turn is dashed.
+
 local a, b = 1, 0.15
 local h = buimov.helix(a, b, 0, 5 * math.pi)
 local top = b * 5 * math.pi

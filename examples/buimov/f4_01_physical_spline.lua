@@ -4,6 +4,7 @@
 -- continuous curvature; the cubic spline is its linearised model. Here the strip through five
 -- points is the natural cubic spline (free ends, no bending moment at them: P'' = 0), the weights
 -- drawn as blocks on it.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -3,6 +3,7 @@
 -- P'(0) = P'1, P'(t2) = P'2: B1 = P1, B2 = P'1, B3 = 3(P2 - P1)/t2^2 - 2P'1/t2 - P'2/t2,
 -- B4 = 2(P1 - P2)/t2^3 + P'1/t2^2 + P'2/t2^2 (the book prints the last two with "-"). Here
 -- P1 = (0, 0), P2 = (4, 1), P'1 = (2, 3), P'2 = (3, -2), t2 = 1; the tangents drawn at a third.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -2,6 +2,7 @@
 -- Buimov §4.2, Fig. 4.3: the segment P1 = (0, 0) to P2 = (4, 0) with the end tangents along
 -- (1, 1) and (1, -1) scaled by k = 1, 2, 4, 8: the longer the tangents, the fuller the curve
 -- (the book draws such a family without numbers).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -5,6 +5,7 @@
 -- side 3(Pn - Pn-1) corrected to 3(Pn - Pn-2)); chord lengths (t_k = |P_k - P_k-1|, green) give
 -- P'2 = P'3 = (0.505431, -0.147724). The end tangents are drawn from the end points, inside the
 -- figure.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

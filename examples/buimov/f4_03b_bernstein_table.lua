@@ -2,6 +2,7 @@
 -- Buimov §4.3: J_3,i(t) = C(3, i) t^i (1 - t)^(3 - i); the table J30..J33 = 1, 0, 0, 0 at t = 0;
 -- 8/27, 4/9, 2/9, 1/27 at t = 1/3; 1/27, 2/9, 4/9, 8/27 at t = 2/3; 0, 0, 0, 1 at t = 1, so
 -- P(1/3) = 8/27 P0 + 4/9 P1 + 2/9 P2 + 1/27 P3. A graph: t and J on equal scales.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -2,6 +2,7 @@
 -- Buimov §4.3, Fig. 4.4: P(t) = sum P_i J_n,i(t), 0 <= t <= 1, through P0 and Pn, tangent there
 -- to the polygon: P'(0) = n (P1 - P0), P'(1) = n (Pn - Pn-1). The cubic on (1, 1), (2, 3),
 -- (4, 3), (3, 1) (the book gives no points) has P(0.5) = (2.75, 2.5), P'(0) = (3, 6).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -3,6 +3,7 @@
 -- vertices cross over far, a cusp when they cross just so (x'(1/2) = 0; the book gives no points;
 -- four polygons of the
 -- same end points P0 = (0, 0), P3 = (3, 0), side by side, 4.2 units apart).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

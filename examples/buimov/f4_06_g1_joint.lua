@@ -4,6 +4,7 @@
 -- Pn = Q0 and Q1 on one line (the book prints "g m (g - Q0)"). P = (0, 0), (1, 2), (3, 3),
 -- (4, 2) and a quadratic Q with g = 1.5: buimov.g1_next gives Q0 = (4, 2), Q1 = (5, 1), and
 -- buimov.joint reads the joint back as G1 with g = 1.5.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

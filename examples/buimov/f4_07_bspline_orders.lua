@@ -3,6 +3,7 @@
 -- k = 3 a curve nearer the polygon (knots [0 0 0 1 2 2 2]) and k = 4, the number of vertices, the
 -- Bezier curve (knots [0 0 0 0 1 1 1 1]); the lower the order, the closer the curve. The
 -- vertices (1, 1), (2, 3), (4, 3), (3, 1) of the Bezier example; k = 3 gives P(1) = (3, 3).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

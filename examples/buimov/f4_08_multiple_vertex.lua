@@ -4,6 +4,7 @@
 -- the order with it, and the curve is pulled towards P1 while its end slopes stay those of the
 -- polygon. The knots are the book's algorithm's: [0 0 0 0 1 1 1 1], [0 0 0 0 0 1 1 1 1 1] and
 -- [0 0 0 0 0 0 1 1 1 1 1 1] (buimov.knots).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -5,6 +5,7 @@
 -- (2.0930, 4.0366), (2.0934, 4.0375), (2.0939, 4.0384)); with k = 4 (knots
 -- [0 0 0 0 1 2 3 4 4 4 4]), drawn here, the first span t < 1 is exactly the same for all three:
 -- P(0.4) = (2.1333, 4.1280). The red dots mark t = 1, where the three curves part.
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -5,6 +5,7 @@
 -- (P1 doubled) of order 3 has the knots [0 0 0 1 1 2 3 3 3] (the book's "n = 3" is k = 3): the
 -- double knot at t = 1 makes N1,3 and N2,3 meet in a corner there. A graph: t and N on
 -- different scales (3 units of t across, N from 0 to 1 up).
+
 -- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
 local function frame(x0, y0, x1, y1, bare)
   local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)

@@ -3,6 +3,7 @@
 -- prints y = sin Theta cos Phi); a latitude is the cut by the plane z = cos Phi1, a circle of
 -- radius sin Phi1, a longitude the cut by the plane x sin Theta0 - y cos Theta0 = 0. Every 30° of
 -- Theta and Phi, the outline drawn; what the sphere hides is dashed.
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)

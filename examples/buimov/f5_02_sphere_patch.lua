@@ -4,6 +4,7 @@
 -- S_Phi (green), the twist S_ThetaPhi (magenta; zero at A and D) and the normal
 -- N = S_Theta x S_Phi (blue, inwards; N_B = -(e1 + e3)/2, the book prints -(e1 + e2)/2), all at
 -- half length; what the patch hides is dashed.
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)

@@ -3,6 +3,7 @@
 -- P(0,0) = (0, 0, 1), P(0,1) = (0, 1, 0), P(1,0) = (1, 0, 0), P(1,1) = (1, 1, 1) (the book gives no
 -- corners): a hyperbolic paraboloid whose u and w lines are straight; Q(0.5, 0.5) = (0.5, 0.5,
 -- 0.5), the mean of the corners, and Q(0.25, 0.75) = (0.25, 0.75, 0.375).
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)

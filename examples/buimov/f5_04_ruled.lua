@@ -2,6 +2,7 @@
 -- Buimov §5.3, Fig. 5.4: Q(u, w) = P(u, 0)(1 - w) + P(u, 1) w, straight lines (the rulings, grey)
 -- from each point of P(u, 0) = (2u, 0, 0.6 sin 2 pi u) to the point of P(u, 1), the segment from
 -- (0, 1.5, 1) to (2, 1.5, 0.2) (the book gives no curves); both edge curves are reproduced.
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)

@@ -4,6 +4,7 @@
 -- The boundaries P(u, 0) = (u, 0, sin pi u) and the three straight edges P(u, 1) = (u, 1, 0),
 -- P(0, w) = (0, w, 0), P(1, w) = (1, w, 0): Q(0.5, 0.5) = (0.5, 0.5, 0.5) and Q(0.25, 0.5) =
 -- (0.25, 0.5, 0.353553); the boundary is reproduced, Q(0.5, 0) = (0.5, 0, 1).
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)

@@ -4,6 +4,7 @@
 -- with z = 1 on the inner 2 x 2 and 0 elsewhere (the book gives no net): Q(0.5, 0.5) =
 -- (1.5, 1.5, 0.5625), Q(0.25, 0.5) = (0.75, 1.5, 0.421875). The net and the patch are one scene:
 -- the net is dashed where the patch hides it.
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)

@@ -4,6 +4,7 @@
 -- (i, 1.5 j, z) with the centre P32 raised to z = 2 (the book gives none; the rest of the middle
 -- row at 0.6): moving the centre moves the middle of the patch, not its boundaries. The net is
 -- dashed where the patch hides it.
+
 local pi = math.pi
 -- the view: azimuth and elevation with z up, scale px per unit, the point `to` at (cx, cy) px
 local function view3(az, el, scale, to, cx, cy)
