@@ -1,8 +1,8 @@
 -- A trimetric view of the unit cube: three different foreshortenings
 -- Buimov §2.8.3: the book's T = Ry(Phi) Rx(theta) Pz with any angles is a trimetric view (the
 -- book does not name it); with Phi = 30°, theta = 40° the axes shrink by
--- fx = sqrt(cos^2 Phi + sin^2 Phi sin^2 theta) = 0.9236, fy = cos theta = 0.7660 and
--- fz = sqrt(sin^2 Phi + cos^2 Phi sin^2 theta) = 0.7424 (map.foreshortening). Hidden edges dashed.
+-- fx = sqrt(cos^2 Phi + sin^2 Phi sin^2 theta) = 0.9237, fy = cos theta = 0.7660 and
+-- fz = sqrt(sin^2 Phi + cos^2 Phi sin^2 theta) = 0.7483 (map.foreshortening). Hidden edges dashed.
 
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}

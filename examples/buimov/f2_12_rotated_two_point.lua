@@ -1,7 +1,7 @@
 -- The cube turned about y, moved and put in one-point perspective: a two-point perspective
 -- Buimov §2.8.5, Fig. 2.12: Ry(theta) Tr(l, m, n) P_r with r = 1/k gives the 4th column
 -- [-sin theta/k, 0, cos theta/k, n/k + 1]; theta = 60°, k = 2, (l, m, n) = (0, -0.5, 0) (the book
--- keeps them general; m = -0.5 puts the eye's level through the cube): the edges along x and z
+-- keeps them general; m = -0.5 puts the eye's level y = 0 through the cube): the edges along x and z
 -- meet the x axis at -k cot theta = -1.154701 (V_x) and k tan theta = 3.464102 (V_z); those along
 -- y stay parallel. Hidden edges dashed.
 
