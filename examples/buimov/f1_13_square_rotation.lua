@@ -23,4 +23,4 @@ path(sq, {closed = true, color = 15}); path(img, {closed = true, color = 14})
 angle_mark(sq[2], sq[1], img[2], "$\\theta$", 40, 12)
 for i, n in ipairs{"A", "B", "C", "D"} do dot(sq[i], "$" .. n .. "$", 15) end
 for i, n in ipairs{"B", "C", "D"} do dot(img[i + 1], "$" .. n .. "^*$", 14) end
-caption("theta = 30°:  C* = (cos - sin, cos + sin) = (0.366, 1.366)", "bottom", 7)
+caption("$\\theta$ = 30°:  C* = (cos - sin, cos + sin) = (0.366, 1.366)", "bottom", 7)

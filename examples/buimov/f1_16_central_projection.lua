@@ -9,7 +9,7 @@ local A, B = P(1, 3), P(4, 1)
 local At, Bt = P(1, 3, 5), P(4, 1, 6)                 -- [x y 1] T, the homogeneous images
 local As, Bs = PQ(A), PQ(B)                           -- divided by h: (1/5, 3/5), (2/3, 1/6)
 local view = map.view{azimuth = -62, elevation = 22}
-camera(map.translate(V(330, 250)) * map.scale({38, -38}) * view * map.translate(V(-2, -2, -3)), {hidden = "dashed"})
+camera(map.translate(V(330, 262)) * map.scale({40, -40}) * view * map.translate(V(-2, -2, -3)), {hidden = "dashed"})
 local slope = surface(function(u, v) return P(u, v, u + v + 1) end, 0, 4.5, 0, 3.5)
 local unit = surface(function(u, v) return P(u, v, 1) end, 0, 4.5, 0, 3.5)
 slope:wireframe{nu = 5, nv = 4, boundary = true, color = 8}

@@ -28,4 +28,4 @@ path(tri, {closed = true, color = 15}); path(steps[3], {closed = true, color = 1
 plane.ellipse(C, 2, 2, 0, math.pi / 2):draw{color = 12}
 dot(C, "($m$, $n$) = (2, 3)", 12); dot(T(P(0, 0)), "$O^*$ = (5, 1)", 14)
 for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15); dot(steps[3][i], "$" .. n .. "^*$", 14) end
-caption("theta = 90°:  T = [[0, 1, 0], [-1, 0, 0], [5, 1, 1]]", "bottom", 7)
+caption("$\\theta$ = 90°:  T = [[0, 1, 0], [-1, 0, 0], [5, 1, 1]]", "bottom", 7)

@@ -47,17 +47,17 @@ for i, t in ipairs(turns) do
   local img = {}
   for _, n in ipairs(names) do img[n] = R(block[n]) end
   -- one frame for the three panels (the same scale), each panel 213 px wide
-  local screen = map.translate(V(90 + 213 * (i - 1), 250)) * map.scale({140, -140})
+  local screen = map.translate(V(82 + 213 * (i - 1), 265)) * map.scale({110, -110})
   camera(screen * f)
-  for _, ax in ipairs{{V(1.3, 0, 0), "$x$"}, {V(0, 1.3, 0), "$y$"}, {V(0, 0, 1.3), "$z$"}} do
+  for _, ax in ipairs{{V(1.15, 0, 0), "$x$"}, {V(0, 1.15, 0), "$y$"}, {V(0, 0, 1.15), "$z$"}} do
     arrow(O, O + ax[1], "end", 8)
   end
   camera(nil)
-  for _, ax in ipairs{{V(1.3, 0, 0), "$x$"}, {V(0, 1.3, 0), "$y$"}, {V(0, 0, 1.3), "$z$"}} do
+  for _, ax in ipairs{{V(1.15, 0, 0), "$x$"}, {V(0, 1.15, 0), "$y$"}, {V(0, 0, 1.15), "$z$"}} do
     label(ax[2], (screen * f)(O + ax[1]), nil, 8)
   end
   box(screen * f, block, 7, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true, H = true})
   box(screen * f, img, 14, "^*", {B = true, C = true, E = true, F = true, G = true, H = true})
-  label(t[1], P(107 + 213 * (i - 1), 400), "c", 15)
+  label(t[1], P(107 + 213 * (i - 1), 390), "c", 15)
 end
 caption("a positive turn: counter-clockwise seen from the axis' positive end", "bottom", 7)

@@ -33,5 +33,5 @@ end
 for _, c in ipairs{{P(n.x, 0, 0), "$n_1$"}, {P(0, n.y, 0), "$n_2$"}, {P(0, 0, n.z), "$n_3$"}} do
   mark(view(c[1]), "dot", 4, 15); label(c[2], view(c[1]), nil, 15)
 end
-caption(string.format("n = (2, 1, 2)/3:  alpha = %.2f°, beta = %.2f°, gamma = %.2f°",
+caption(string.format("n = (2, 1, 2)/3:  $\\alpha$ = %.2f°, $\\beta$ = %.2f°, $\\gamma$ = %.2f°",
   math.deg(math.acos(n.x)), math.deg(math.acos(n.y)), math.deg(math.acos(n.z))), "bottom", 7)

@@ -40,4 +40,4 @@ for _, m in ipairs{{Pt, "$P$", 15}, {Ps, "$P^*$", 14}, {Q, "$Q$", 7}, {Pt + S * 
 end
 angle_mark(view(Pt), view(Q), view(Ps), "$\\theta$", 26, 14)
 local function z(x) return math.abs(x) < 1e-12 and 0 or x end      -- no "-0" in the caption
-caption(string.format("n = (1, 1, 1)/sqrt 3, theta = 120°:  P* = (%g, %g, %g)", z(Ps.x), z(Ps.y), z(Ps.z)), "bottom", 7)
+caption(string.format("n = (1, 1, 1)/sqrt 3, $\\theta$ = 120°:  P* = (%g, %g, %g)", z(Ps.x), z(Ps.y), z(Ps.z)), "bottom", 7)

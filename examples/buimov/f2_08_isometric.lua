@@ -42,4 +42,4 @@ local pts = {}
 for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 local screen = framing(pts, 40, 30, 600, 430)
 box(screen * f, cube, 15)
-caption(string.format("Phi = 45°, theta = 35.264°:  fx, fy, fz = %.4f, %.4f, %.4f", map.foreshortening(f)), "bottom", 7)
+caption(string.format("$\\Phi$ = 45°, $\\theta$ = 35.264°:  fx, fy, fz = %.4f, %.4f, %.4f", map.foreshortening(f)), "bottom", 7)

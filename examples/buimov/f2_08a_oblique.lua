@@ -43,4 +43,4 @@ for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 local screen = framing(pts, 40, 30, 600, 430)
 box(screen * f, cube, 15)
 box(screen * map.cabinet(), cube, 8, "^*")
-caption("cavalier: k = 1, alpha = 45°;  cabinet: k = 1/2 (grey, starred)", "bottom", 7)
+caption("cavalier: k = 1, $\\alpha$ = 45°;  cabinet: k = 1/2 (grey, starred)", "bottom", 7)

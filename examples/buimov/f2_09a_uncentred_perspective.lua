@@ -62,4 +62,4 @@ for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption("r = 1/2:  h = z/2 + 1,  V_z = [0 0 2 1] -> (0, 0)", "bottom", 7)
+caption("r = 1/2:  h = z/2 + 1,  $V_z$ = [0 0 2 1] -> (0, 0)", "bottom", 7)

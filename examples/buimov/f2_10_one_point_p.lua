@@ -60,4 +60,4 @@ for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption("p = 1/2 (cube moved by -0.5 in y):  h = x/2 + 1,  V_x = (2, 0)", "bottom", 7)
+caption("p = 1/2 (cube moved by -0.5 in y):  h = x/2 + 1,  $V_x$ = (2, 0)", "bottom", 7)

@@ -59,4 +59,4 @@ for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption("q = 1/2 (cube moved by -0.5 in x):  h = y/2 + 1,  V_y = (0, 2)", "bottom", 7)
+caption("q = 1/2 (cube moved by -0.5 in x):  h = y/2 + 1,  $V_y$ = (0, 2)", "bottom", 7)

@@ -61,4 +61,4 @@ for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption("p = q = 1/2:  h = x/2 + y/2 + 1,  V_x = (2, 0),  V_y = (0, 2)", "bottom", 7)
+caption("p = q = 1/2:  h = x/2 + y/2 + 1,  $V_x$ = (2, 0),  $V_y$ = (0, 2)", "bottom", 7)

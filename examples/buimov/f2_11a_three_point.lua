@@ -2,7 +2,7 @@
 -- Buimov §2.8.5: the 4th column [p q r 1], h = px + qy + rz + 1, three vanishing points
 -- [1/p 0 0 1], [0 1/q 0 1], [0 0 1/r 1] (the book leaves the example to the reader). Made as the
 -- book suggests, by turning the cube about two axes before the one-point transform: Ry(-35°),
--- Rx(30°), moved by (0, -0.3, 0.4), then r = 1/k, k = 2 and the projection onto z = 0: every
+-- Rx(30°), moved by (0, -0.3, 0.6), then r = 1/k, k = 1.25 and the projection onto z = 0: every
 -- axis direction now has a finite image, so the edges along x, y and z all converge.
 
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
@@ -55,11 +55,11 @@ local function vanishing(f, screen)
   return v
 end
 
-local f = map.orthographic("z") * map.perspective_pqr(0, 0, 0.5) * map.translate(V(0, -0.3, 0.4)) * map.rotate(P(0, 0, 0), V(1, 0, 0), math.rad(30)) * map.rotate(P(0, 0, 0), V(0, 1, 0), math.rad(-35))
+local f = map.orthographic("z") * map.perspective_pqr(0, 0, 0.8) * map.translate(V(0, -0.3, 0.6)) * map.rotate(P(0, 0, 0), V(1, 0, 0), math.rad(30)) * map.rotate(P(0, 0, 0), V(0, 1, 0), math.rad(-35))
 local pts = {}
 for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption((function() local v = {f:vanishing_points()} return string.format("V_x = (%.2f, %.2f),  V_y = (%.2f, %.2f),  V_z = (%.2f, %.2f)", v[1].x, v[1].y, v[2].x, v[2].y, v[3].x, v[3].y) end)(), "bottom", 7)
+caption((function() local v = {f:vanishing_points()} return string.format("$V_x$ = (%.2f, %.2f),  $V_y$ = (%.2f, %.2f),  $V_z$ = (%.2f, %.2f)", v[1].x, v[1].y, v[2].x, v[2].y, v[3].x, v[3].y) end)(), "bottom", 7)

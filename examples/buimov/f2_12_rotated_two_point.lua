@@ -62,4 +62,4 @@ for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption("theta = 60°, k = 2:  V_x = (-k cot theta, 0) = (-1.1547, 0),  V_z = (3.4641, 0)", "bottom", 7)
+caption("$\\theta$ = 60°, k = 2:  $V_x$ = (-k cot $\\theta$, 0) = (-1.1547, 0),  $V_z$ = (3.4641, 0)", "bottom", 7)

@@ -26,4 +26,4 @@ for _, m in ipairs(sets) do
   for _, p in ipairs(pts) do dot(p, nil, m[4]) end
   label(m[5], P(r * 0.68, r * 0.68 + 0.04), nil, m[4])
 end
-caption("10 steps:  x = 0.1 r,  theta = pi/20,  t = 0.1", "bottom", 7)
+caption("10 steps:  x = 0.1 r,  $\\theta$ = $\\pi$/20,  t = 0.1", "bottom", 7)

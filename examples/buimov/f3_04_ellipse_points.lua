@@ -23,4 +23,4 @@ for _, p in ipairs(plane.points("ellipse", {A = 3, B = 2, step = 2 * math.pi / 3
 end
 local ten = plane.points("ellipse", {A = 3, B = 2, step = 0.1, n = 10, method = "recurrence"})[11]
 mark(ten, "open", 10, 12); label(string.format("(%.6f, %.6f)", ten.x, ten.y), ten, nil, 12)
-caption("32 steps of dtheta = 2 pi/32;  10 steps of 0.1 end at (3 cos 1, 2 sin 1)", "bottom", 7)
+caption("32 steps of d$\\theta$ = 2 $\\pi$/32;  10 steps of 0.1 end at (3 cos 1, 2 sin 1)", "bottom", 7)

@@ -24,4 +24,4 @@ end
 dot(P(p, 0), "$F$", 12); dot(P(2, 2), "(2, 2)", 15)
 pen{dash = {4, 3}}; line(P(-p, -2.4), P(-p, 2.4), 8); pen()
 label("$x = -p$", P(-p, 2.4), nil, 8)
-caption("p = 1/2, dtheta = 0.2:  x' = x + y dtheta + p dtheta^2,  y' = y + 2p dtheta", "bottom", 7)
+caption("p = 1/2, d$\\theta$ = 0.2:  x' = x + y d$\\theta$ + p d$\\theta$^2,  y' = y + 2p d$\\theta$", "bottom", 7)

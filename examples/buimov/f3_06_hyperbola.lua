@@ -27,4 +27,4 @@ for _, q in ipairs(plane.points("hyperbola_ch", {A = a, B = b, step = 0.1, n = 1
 for _, q in ipairs(plane.points("hyperbola", {A = a, B = b, step = 0.1, n = 9, method = "recurrence"})) do dot(q, nil, 12) end
 dot(P(a, 0), "($\\alpha$, 0)", 15); dot(P(-a, 0), "($-\\alpha$, 0)", 15)
 label("$y = \\beta x/\\alpha$", P(4, 4 * b / a), nil, 8)
-caption("alpha, beta = 2, 1.5;  dtheta = 0.1:  sec/tan (red), ch/sh (green)", "bottom", 7)
+caption("$\\alpha$, $\\beta$ = 2, 1.5;  d$\\theta$ = 0.1:  sec/tan (red), ch/sh (green)", "bottom", 7)

@@ -15,4 +15,4 @@ line(P(0, 0, 0), P(0, 0, top + 0.5), 7)
 for _, t in ipairs{0, math.pi, 2 * math.pi} do mark(h(t), "dot", 4, 15) end
 label("$t = 0$", h(0), nil, 15); label("$t = 2\\pi$", h(2 * math.pi), nil, 15); label("$z$", P(0, 0, top + 0.5), nil, 7)
 camera(nil)
-caption("a = 1, b = 0.15:  (cos t, sin t, 0.15 t), t in [0, 5 pi]", "bottom", 7)
+caption("a = 1, b = 0.15:  (cos t, sin t, 0.15 t), t in [0, 5 $\\pi$]", "bottom", 7)

@@ -27,4 +27,4 @@ camera(nil)
 for _, a in ipairs{{P(1.5, 0, 0), "$x$"}, {P(0, 1.5, 0), "$y$"}, {P(0, 0, 1.4), "$z$"}} do label(a[2], v(a[1]), nil, 7) end
 label("$\\varphi_1 = 60^\\circ$", v(s(pi / 2, ph1)), nil, 14)
 label("$\\theta_0 = 30^\\circ$", v(s(th0, 2 * pi / 3)), nil, 10)
-caption("latitude z = cos Phi1 (yellow), longitude x sin Theta0 = y cos Theta0 (green)", "bottom", 7)
+caption("latitude z = cos $\\Phi_1$ (yellow), longitude x sin $\\Theta_0$ = y cos $\\Theta_0$ (green)", "bottom", 7)
