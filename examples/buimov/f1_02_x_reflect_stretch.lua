@@ -1,6 +1,7 @@
 -- A stretch along x with a reflection about the y axis: T = [[-2, 0], [0, 1]]
--- Buimov §1.3, Fig. 1.2: a = -2 < 0: the same stretch, mirrored about the y axis. The triangle ABC (black) and its image A*B*C* (colour) under the
--- book's row-vector map p* = p T, drawn at true shape.
+-- Buimov §1.3, Fig. 1.2: a = -2 < 0: the same stretch, mirrored about the y axis. The triangle ABC
+-- (black) and its image A*B*C* (colour) under the book's row-vector map p* = p T, drawn at true
+-- shape.
 local T = map.matrix({{-2, 0, 0}, {0, 1, 0}, {0, 0, 1}}, "row")
 local tri = {P(1, 1), P(2, 1), P(1.5, 2.2)}
 local img = {}

@@ -1,6 +1,7 @@
 -- A non-uniform scale: T = [[3, 0], [0, 1/2]]
--- Buimov §1.3, Fig. 1.3: a = 3, d = 1/2 (a ≠ d): the shape is distorted, x stretched and y shrunk. The triangle ABC (black) and its image A*B*C* (colour) under the
--- book's row-vector map p* = p T, drawn at true shape.
+-- Buimov §1.3, Fig. 1.3: a = 3, d = 1/2 (a ≠ d): the shape is distorted, x stretched and y shrunk.
+-- The triangle ABC (black) and its image A*B*C* (colour) under the book's row-vector map p* = p T,
+-- drawn at true shape.
 local T = map.matrix({{3, 0, 0}, {0, 0.5, 0}, {0, 0, 1}}, "row")
 local tri = {P(0.5, 1), P(1.5, 1), P(1, 3)}
 local img = {}

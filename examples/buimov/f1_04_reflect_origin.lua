@@ -1,6 +1,7 @@
 -- A reflection through the origin: T = [[-1, 0], [0, -1]]
--- Buimov §1.3, Fig. 1.4: a = d = -1: x* = -x, y* = -y, a half turn about the origin. The triangle ABC (black) and its image A*B*C* (colour) under the
--- book's row-vector map p* = p T, drawn at true shape.
+-- Buimov §1.3, Fig. 1.4: a = d = -1: x* = -x, y* = -y, a half turn about the origin. The triangle
+-- ABC (black) and its image A*B*C* (colour) under the book's row-vector map p* = p T, drawn at true
+-- shape.
 local T = map.matrix({{-1, 0, 0}, {0, -1, 0}, {0, 0, 1}}, "row")
 local tri = {P(1, 1), P(2.5, 1), P(1.5, 2.2)}
 local img = {}

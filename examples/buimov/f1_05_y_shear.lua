@@ -1,6 +1,7 @@
 -- A shear along y: T = [[1, b], [0, 1]], b = 2
--- Buimov §1.3, Fig. 1.5: [x y] T = [x, b x + y]: x is kept, y grows with x (b is not given in the book; 2 here). The triangle ABC (black) and its image A*B*C* (colour) under the
--- book's row-vector map p* = p T, drawn at true shape.
+-- Buimov §1.3, Fig. 1.5: [x y] T = [x, b x + y]: x is kept, y grows with x (b is not given in the
+-- book; 2 here). The triangle ABC (black) and its image A*B*C* (colour) under the book's row-vector
+-- map p* = p T, drawn at true shape.
 local T = map.matrix({{1, 2, 0}, {0, 1, 0}, {0, 0, 1}}, "row")
 local tri = {P(0.5, 0.5), P(1.5, 0.5), P(1, 1.5)}
 local img = {}

@@ -1,6 +1,7 @@
 -- A shear along x: T = [[1, 0], [c, 1]], c = 3
--- Buimov §1.3, Fig. 1.6: [x y] T = [x + c y, y]: y is kept, x grows with y (c is not given in the book; 3 here; the text calls it Fig. 2.6). The triangle ABC (black) and its image A*B*C* (colour) under the
--- book's row-vector map p* = p T, drawn at true shape.
+-- Buimov §1.3, Fig. 1.6: [x y] T = [x + c y, y]: y is kept, x grows with y (c is not given in the
+-- book; 3 here; the text calls it Fig. 2.6). The triangle ABC (black) and its image A*B*C* (colour)
+-- under the book's row-vector map p* = p T, drawn at true shape.
 local T = map.matrix({{1, 0, 0}, {3, 1, 0}, {0, 0, 1}}, "row")
 local tri = {P(0.5, 0.5), P(1.5, 0.5), P(1, 1.5)}
 local img = {}

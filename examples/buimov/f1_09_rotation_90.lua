@@ -19,6 +19,8 @@ local img = {}
 for i, p in ipairs(tri) do img[i] = T(p) end
 frame(-2.5, -2, 5, 5)
 path(tri, {closed = true, color = 15}); path(img, {closed = true, color = 14})
-plane.ellipse(P(0, 0), math.sqrt(10), math.sqrt(10), math.atan(-1, 3), math.atan(3, 1)):draw{color = 8}
-for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15); dot(img[i], "$" .. n .. "^*$", 14) end
+plane.ellipse(P(0, 0), math.sqrt(10), math.sqrt(10), math.atan(-1, 3), math.atan(3,
+  1)):draw{color = 8}
+for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15)
+dot(img[i], "$" .. n .. "^*$", 14) end
 caption("[[3, -1], [4, 1], [2, 1]] [[0, 1], [-1, 0]] = [[1, 3], [-1, 4], [-1, 2]]", "bottom", 7)

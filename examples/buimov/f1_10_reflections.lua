@@ -21,9 +21,13 @@ local a, b = {}, {}
 for i, p in ipairs(tri) do a[i] = Txy(p); b[i] = Tx(p) end
 frame(-1, -4, 10, 9)
 pen{dash = {4, 3}}; line(P(0, 0), P(8.5, 8.5), 8); pen()
-path(tri, {closed = true, color = 15}); path(a, {closed = true, color = 14}); path(b, {closed = true, color = 11})
+path(tri, {closed = true, color = 15})
+path(a, {closed = true, color = 14})
+path(b, {closed = true, color = 11})
 for i, n in ipairs{"A", "B", "C"} do
-  dot(tri[i], "$" .. n .. "$", 15); dot(a[i], "$" .. n .. "^*$", 14); dot(b[i], "$" .. n .. "^{**}$", 11)
+  dot(tri[i], "$" .. n .. "$", 15)
+  dot(a[i], "$" .. n .. "^*$", 14)
+  dot(b[i], "$" .. n .. "^{**}$", 11)
 end
 label("$y = x$", P(8.5, 8.5), nil, 8)
 caption("about y = x: [[0, 1], [1, 0]];  about y = 0: [[1, 0], [0, -1]]", "bottom", 7)

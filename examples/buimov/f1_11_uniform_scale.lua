@@ -20,5 +20,6 @@ for i, p in ipairs(tri) do img[i] = T(p) end
 frame(-0.8, -0.8, 7, 5)
 pen{dash = {4, 3}}; for _, p in ipairs(img) do line(P(0, 0), p, 8) end; pen()
 path(tri, {closed = true, color = 15}); path(img, {closed = true, color = 14})
-for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15); dot(img[i], "$" .. n .. "^*$", 14) end
+for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15)
+dot(img[i], "$" .. n .. "^*$", 14) end
 caption("[[3, 1], [3, 2], [1, 2]] [[2, 0], [0, 2]] = [[6, 2], [6, 4], [2, 4]]", "bottom", 7)

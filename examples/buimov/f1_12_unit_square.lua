@@ -23,5 +23,8 @@ frame(-0.6, -0.6, 4.6, 3.6)
 path(img, {closed = true, color = 14}); hatch(img, 12, 45, 14)
 path(sq, {closed = true, color = 15})
 for i, n in ipairs{"A", "B", "C", "D"} do dot(sq[i], "$" .. n .. "$", 15) end
-dot(img[2], "$B^*$ = ($a$, $b$)", 14); dot(img[3], "$C^*$", 14); dot(img[4], "$D^*$ = ($c$, $d$)", 14)
-caption(string.format("T = [[1, 2], [3, 1]]:  S* = |det T| S = %g", math.abs(buimov.det(rows))), "bottom", 7)
+dot(img[2], "$B^*$ = ($a$, $b$)", 14)
+dot(img[3], "$C^*$", 14)
+dot(img[4], "$D^*$ = ($c$, $d$)", 14)
+caption(string.format("T = [[1, 2], [3, 1]]:  S* = |det T| S = %g",
+  math.abs(buimov.det(rows))), "bottom", 7)

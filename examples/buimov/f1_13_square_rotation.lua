@@ -14,7 +14,8 @@ local function dot(p, name, colour)
   mark(p, "dot", 4, colour); label(name, p, nil, colour)
 end
 local th = math.rad(30)
-local T = map.matrix({{math.cos(th), math.sin(th), 0}, {-math.sin(th), math.cos(th), 0}, {0, 0, 1}}, "row")
+local T = map.matrix({{math.cos(th), math.sin(th), 0}, {-math.sin(th), math.cos(th), 0}, {0, 0,
+  1}}, "row")
 local sq = {P(0, 0), P(1, 0), P(1, 1), P(0, 1)}
 local img = {}
 for i, p in ipairs(sq) do img[i] = T(p) end

@@ -20,5 +20,6 @@ for i, p in ipairs(tri) do img[i] = T(p) end
 frame(-0.8, -0.8, 7, 6)
 pen{dash = {4, 3}}; for _, p in ipairs(tri) do line(P(0, 0), p, 8) end; pen()
 path(tri, {closed = true, color = 15}); path(img, {closed = true, color = 14})
-for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15); dot(img[i], "$" .. n .. "^*$", 14) end
+for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15)
+dot(img[i], "$" .. n .. "^*$", 14) end
 caption("s = 2:  [6 2 1] T = [6 2 2] = [3 1 1]", "bottom", 7)

@@ -23,9 +23,13 @@ local tri = {P(4, 3), P(5, 4), P(4, 5)}
 local steps = {{}, {}, {}}
 for i, p in ipairs(tri) do steps[1][i] = Tr(p); steps[2][i] = R(Tr(p)); steps[3][i] = T(p) end
 frame(-2.5, -1.5, 5.8, 5.8)
-pen{dash = {4, 3}}; path(steps[1], {closed = true, color = 8}); path(steps[2], {closed = true, color = 8}); pen()
+pen{dash = {4, 3}}
+path(steps[1], {closed = true, color = 8})
+path(steps[2], {closed = true, color = 8})
+pen()
 path(tri, {closed = true, color = 15}); path(steps[3], {closed = true, color = 14})
 plane.ellipse(C, 2, 2, 0, math.pi / 2):draw{color = 12}
 dot(C, "($m$, $n$) = (2, 3)", 12); dot(T(P(0, 0)), "$O^*$ = (5, 1)", 14)
-for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15); dot(steps[3][i], "$" .. n .. "^*$", 14) end
+for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15)
+dot(steps[3][i], "$" .. n .. "^*$", 14) end
 caption("$\\theta$ = 90°:  T = [[0, 1, 0], [-1, 0, 0], [5, 1, 1]]", "bottom", 7)

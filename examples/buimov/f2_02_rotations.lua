@@ -34,14 +34,17 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 local block = {}
 for _, n in ipairs(names) do block[n] = P(cube[n].x, 0.5 * cube[n].y, 0.25 * cube[n].z) end
 local f = map.isometric()
 local O = P(0, 0, 0)
-local turns = {{"$R_x(90^\\circ)$", V(1, 0, 0)}, {"$R_y(90^\\circ)$", V(0, 1, 0)}, {"$R_z(90^\\circ)$", V(0, 0, 1)}}
+local turns = {{"$R_x(90^\\circ)$", V(1, 0, 0)}, {"$R_y(90^\\circ)$", V(0, 1, 0)},
+  {"$R_z(90^\\circ)$", V(0, 0, 1)}}
 for i, t in ipairs(turns) do
   local R = map.rotate(O, t[2], math.pi / 2)
   local img = {}
@@ -56,7 +59,9 @@ for i, t in ipairs(turns) do
   for _, ax in ipairs{{V(1.15, 0, 0), "$x$"}, {V(0, 1.15, 0), "$y$"}, {V(0, 0, 1.15), "$z$"}} do
     label(ax[2], (screen * f)(O + ax[1]), nil, 8)
   end
-  box(screen * f, block, 7, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true, H = true})
+  box(screen
+      * f, block, 7, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true,
+        H = true})
   box(screen * f, img, 14, "^*", {B = true, C = true, E = true, F = true, G = true, H = true})
   label(t[1], P(107 + 213 * (i - 1), 390), "c", 15)
 end

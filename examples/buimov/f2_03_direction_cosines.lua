@@ -16,18 +16,21 @@ local function axes3(view, len)
 end
 
 local n = V(2, 1, 2) / 3
-local view = map.translate(V(300, 360)) * map.scale({290, -290}) * map.view{azimuth = 25, elevation = 20}
+local view = map.translate(V(300, 360)) * map.scale({290, -290})
+    * map.view{azimuth = 25, elevation = 20}
 axes3(view, 1.1)
 camera(view)
 vector(O, n, 12)
 pen{dash = {4, 3}}
-for _, foot in ipairs{P(n.x, 0, 0), P(0, n.y, 0), P(0, 0, n.z), P(n.x, n.y, 0)} do line(O + n, foot, 8) end
+for _, foot in ipairs{P(n.x, 0, 0), P(0, n.y, 0), P(0, 0, n.z), P(n.x, n.y, 0)} do line(O + n,
+  foot, 8) end
 line(P(n.x, 0, 0), P(n.x, n.y, 0), 8); line(P(0, n.y, 0), P(n.x, n.y, 0), 8)
 pen()
 camera(nil)
 local E = view(O + n)
 label("$n$", E, nil, 12)
-for i, a in ipairs{{V(1, 0, 0), "$\\alpha$"}, {V(0, 1, 0), "$\\beta$"}, {V(0, 0, 1), "$\\gamma$"}} do
+for i, a in ipairs{{V(1, 0, 0), "$\\alpha$"}, {V(0, 1, 0), "$\\beta$"}, {V(0, 0, 1),
+  "$\\gamma$"}} do
   angle_mark(view(O + a[1] * 0.5), view(O), E, a[2], 30 + 8 * i, 14)
 end
 for _, c in ipairs{{P(n.x, 0, 0), "$n_1$"}, {P(0, n.y, 0), "$n_2$"}, {P(0, 0, n.z), "$n_3$"}} do

@@ -23,21 +23,26 @@ local Pt = P(1, 0, 0)
 local Ps = R(Pt)
 local Q = O + n * dot(Pt - O, n)
 local S = cross(n, Pt - O)
-local view = map.translate(V(330, 300)) * map.scale({190, -190}) * map.view{azimuth = 35, elevation = 25}
+local view = map.translate(V(330, 300)) * map.scale({190, -190})
+    * map.view{azimuth = 35, elevation = 25}
 axes3(view, 1.2)
 camera(view)
 line(O - n * 0.3, O + n * 1.5, 12)                       -- the axis
 local u, w = unit(Pt - Q), unit(cross(n, Pt - Q))
 local r = dist(Pt, Q)
-curve(function(t) return Q + u * (r * math.cos(t)) + w * (r * math.sin(t)) end, 0, 2 * math.pi):draw{color = 8}
-curve(function(t) return Q + u * (r * math.cos(t)) + w * (r * math.sin(t)) end, 0, th):draw{color = 14}
+curve(function(t) return Q + u * (r * math.cos(t)) + w * (r * math.sin(t)) end, 0, 2
+    * math.pi):draw{color = 8}
+curve(function(t) return Q + u * (r * math.cos(t)) + w * (r
+    * math.sin(t)) end, 0, th):draw{color = 14}
 line(Q, Pt, 7); line(Q, Ps, 7)
 vector(Pt, S * 0.5, 10)
 camera(nil)
-for _, m in ipairs{{Pt, "$P$", 15}, {Ps, "$P^*$", 14}, {Q, "$Q$", 7}, {Pt + S * 0.5, "$S = n \\times P$", 10},
+for _, m in ipairs{{Pt, "$P$", 15}, {Ps, "$P^*$", 14}, {Q, "$Q$", 7}, {Pt + S
+    * 0.5, "$S = n \\times P$", 10},
                    {O + n * 1.5, "$n$", 12}} do
   mark(view(m[1]), "dot", 4, m[3]); label(m[2], view(m[1]), nil, m[3])
 end
 angle_mark(view(Pt), view(Q), view(Ps), "$\\theta$", 26, 14)
 local function z(x) return math.abs(x) < 1e-12 and 0 or x end      -- no "-0" in the caption
-caption(string.format("n = (1, 1, 1)/sqrt 3, $\\theta$ = 120°:  P* = (%g, %g, %g)", z(Ps.x), z(Ps.y), z(Ps.z)), "bottom", 7)
+caption(string.format("n = (1, 1, 1)/sqrt 3, $\\theta$ = 120°:  P* = (%g, %g, %g)",
+  z(Ps.x), z(Ps.y), z(Ps.z)), "bottom", 7)

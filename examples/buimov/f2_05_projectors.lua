@@ -35,7 +35,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 local k = 2.5
@@ -46,7 +48,8 @@ local pr = map.orthographic("z") * map.perspective_pqr(0, 0, 1 / k)
 local img = {}
 for _, n in ipairs(names) do local q = pr(obj[n]); img[n] = P(q.x, q.y, 0) end
 -- z to the right, y up, x towards the viewer a little: a view from the azimuth -60°
-local view = map.translate(V(330, 225)) * map.scale({88, -88}) * map.view{azimuth = -70, elevation = 20, to = P(0.5, 0.5, 0)}
+local view = map.translate(V(330, 225)) * map.scale({88, -88})
+    * map.view{azimuth = -70, elevation = 20, to = P(0.5, 0.5, 0)}
 camera(view)
 for _, c in ipairs{{P(-0.6, -0.6, 0), P(1.6, -0.6, 0)}, {P(1.6, -0.6, 0), P(1.6, 1.6, 0)},
                    {P(1.6, 1.6, 0), P(-0.6, 1.6, 0)}, {P(-0.6, 1.6, 0), P(-0.6, -0.6, 0)}} do
@@ -65,5 +68,6 @@ for _, n in ipairs{"E", "F", "G", "H"} do line(Cc, obj[n], 12) end
 camera(nil)
 mark(view(Cc), "dot", 5, 12); label("$C$", view(Cc), nil, 12)
 label("$z = 0$", view(P(1.6, 1.6, 0)), nil, 8); label("$z$", view(P(0, 0, 2.4)), nil, 7)
-for _, n in ipairs{"E", "F", "G", "H"} do label("$" .. n .. "$", view(obj[n]), nil, 15); label("$" .. n .. "^*$", view(img[n]), nil, 14) end
+for _, n in ipairs{"E", "F", "G", "H"} do label("$" .. n .. "$", view(obj[n]), nil, 15)
+label("$" .. n .. "^*$", view(img[n]), nil, 14) end
 caption("C = (0, 0, -k), k = 2.5:  x* = x/(z/k + 1), y* = y/(z/k + 1)", "bottom", 7)

@@ -35,7 +35,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 
@@ -43,7 +45,9 @@ local f = map.orthographic("z") * map.rotate(P(0, 0, 0), V(1, 0, 0), math.pi / 2
 local pts = {}
 for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 local screen = framing(pts, 40, 30, 600, 430)
-box(screen * f, cube, 15, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true, H = true})
+box(screen
+    * f, cube, 15, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true,
+      H = true})
 for _, pair in ipairs{{"B", "A"}, {"C", "D"}, {"F", "E"}, {"G", "H"}} do
   label("$" .. pair[1] .. "$, $" .. pair[2] .. "$", (screen * f)(cube[pair[1]]), nil, 15)
 end

@@ -1,8 +1,9 @@
 -- The unit cube in three orthographic views: front, top and side, panels apart
--- Buimov §2.8.1-§2.8.2 (the top view is figure 2.6): the front view Pz onto z = 0 ([x y z 1] -> [x y]), the
--- top view Rx(90°) Pz ([x, -z]) above it and the side view Ry(-90°) Pz ([z, y]) on its right, as
--- a draughtsman lays them out. In each view the corners coincide in pairs, each pair lettered
--- once; the edges behind are covered by those in front (no hidden edge shows in these views).
+-- Buimov §2.8.1-§2.8.2 (the top view is figure 2.6): the front view Pz onto z = 0 ([x y z 1] -> [x
+-- y]), the top view Rx(90°) Pz ([x, -z]) above it and the side view Ry(-90°) Pz ([z, y]) on its
+-- right, as a draughtsman lays them out. In each view the corners coincide in pairs, each pair
+-- lettered once; the edges behind are covered by those in front (no hidden edge shows in these
+-- views).
 
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
@@ -34,7 +35,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 local pz = map.orthographic("z")
@@ -48,13 +51,18 @@ for _, v in ipairs(views) do
   local f = v[2]
   -- 120 px to the unit, the panel's square centred on (v[3], v[4])
   local c = f(P(0.5, 0.5, 0.5))
-  local screen = map.translate(V(v[3], v[4])) * map.scale({120, -120}) * map.translate(V(-c.x, -c.y))
-  box(screen * f, cube, 15, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true, H = true})
+  local screen = map.translate(V(v[3], v[4])) * map.scale({120, -120})
+      * map.translate(V(-c.x, -c.y))
+  box(screen
+      * f, cube, 15, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true,
+        H = true})
   local seen = {}
   for _, n in ipairs(names) do
     local q = (screen * f)(cube[n])
     local key = string.format("%.0f %.0f", q.x, q.y)
-    if seen[key] then seen[key].text = seen[key].text .. "$, $" .. n else seen[key] = {text = n, at = q}; seen[#seen + 1] = seen[key] end
+    if seen[key] then seen[key].text = seen[key].text .. "$, $" .. n else seen[key] = {text = n,
+      at = q}
+    seen[#seen + 1] = seen[key] end
   end
   for _, s in ipairs(seen) do label("$" .. s.text .. "$", s.at, nil, 15) end
   label(v[1], P(v[3], v[4] + 88), "c", 7)

@@ -33,7 +33,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 
@@ -42,4 +44,5 @@ local pts = {}
 for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 local screen = framing(pts, 40, 30, 600, 430)
 box(screen * f, cube, 15)
-caption(string.format("$\\theta$ = 20.705°, $\\Phi$ = 22.208°:  fx, fy, fz = %.4f, %.4f, %.4f", map.foreshortening(f)), "bottom", 7)
+caption(string.format("$\\theta$ = 20.705°, $\\Phi$ = 22.208°:  fx, fy, fz = %.4f, %.4f, %.4f",
+  map.foreshortening(f)), "bottom", 7)

@@ -12,7 +12,8 @@ arrow(P(-k - 0.5, 0), P(4.2, 0), "end", 8); label("$z$", P(4.2, 0), "s", 8)
 arrow(P(0, -0.8), P(0, 3.6), "end", 8); label("$y$", P(0, 3.6), "w", 8)
 line(P(-k, 0), P(z, y), 12)                               -- the projector from C through P
 pen{dash = {4, 3}}; line(P(z, 0), P(z, y), 8); pen()
-for _, m in ipairs{{P(-k, 0), "$C$", 12}, {P(z, y), "$P$", 15}, {P(0, ys), "$P^*$", 14}, {P(0, 0), "$O$", 7}, {P(z, 0), "$z$", 8}} do
+for _, m in ipairs{{P(-k, 0), "$C$", 12}, {P(z, y), "$P$", 15}, {P(0, ys), "$P^*$", 14}, {P(0, 0),
+  "$O$", 7}, {P(z, 0), "$z$", 8}} do
   mark(m[1], "dot", 4, m[3]); label(m[2], m[1], nil, m[3])
 end
 dimension(P(-k, 0), P(0, 0), 22, "k", 7)

@@ -35,7 +35,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 

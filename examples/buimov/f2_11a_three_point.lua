@@ -35,7 +35,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 
@@ -55,11 +57,15 @@ local function vanishing(f, screen)
   return v
 end
 
-local f = map.orthographic("z") * map.perspective_pqr(0, 0, 0.8) * map.translate(V(0, -0.3, 0.6)) * map.rotate(P(0, 0, 0), V(1, 0, 0), math.rad(30)) * map.rotate(P(0, 0, 0), V(0, 1, 0), math.rad(-35))
+local f = map.orthographic("z") * map.perspective_pqr(0, 0, 0.8) * map.translate(V(0, -0.3, 0.6))
+    * map.rotate(P(0, 0, 0), V(1, 0, 0), math.rad(30))
+        * map.rotate(P(0, 0, 0), V(0, 1, 0), math.rad(-35))
 local pts = {}
 for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end
 local screen = framing(pts, 40, 30, 600, 430)
 vanishing(f, screen)
 box(screen * f, cube, 15)
-caption((function() local v = {f:vanishing_points()} return string.format("$V_x$ = (%.2f, %.2f),  $V_y$ = (%.2f, %.2f),  $V_z$ = (%.2f, %.2f)", v[1].x, v[1].y, v[2].x, v[2].y, v[3].x, v[3].y) end)(), "bottom", 7)
+local v = {f:vanishing_points()}
+caption(string.format("$V_x$ = (%.2f, %.2f),  $V_y$ = (%.2f, %.2f),  $V_z$ = (%.2f, %.2f)",
+  v[1].x, v[1].y, v[2].x, v[2].y, v[3].x, v[3].y), "bottom", 7)

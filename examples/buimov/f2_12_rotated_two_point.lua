@@ -1,9 +1,9 @@
 -- The cube turned about y, moved and put in one-point perspective: a two-point perspective
--- Buimov §2.8.5, Fig. 2.12: Ry(theta) Tr(l, m, n) P_r with r = 1/k gives the 4th column
--- [-sin theta/k, 0, cos theta/k, n/k + 1]; theta = 60°, k = 2, (l, m, n) = (0, -0.5, 0) (the book
--- keeps them general; m = -0.5 puts the eye's level y = 0 through the cube): the edges along x and z
--- meet the x axis at -k cot theta = -1.154701 (V_x) and k tan theta = 3.464102 (V_z); those along
--- y stay parallel. Hidden edges dashed.
+-- Buimov §2.8.5, Fig. 2.12: Ry(theta) Tr(l, m, n) P_r with r = 1/k gives the 4th column [-sin
+-- theta/k, 0, cos theta/k, n/k + 1]; theta = 60°, k = 2, (l, m, n) = (0, -0.5, 0) (the book keeps
+-- them general; m = -0.5 puts the eye's level y = 0 through the cube): the edges along x and z meet
+-- the x axis at -k cot theta = -1.154701 (V_x) and k tan theta = 3.464102 (V_z); those along y stay
+-- parallel. Hidden edges dashed.
 
 -- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
 local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
@@ -35,7 +35,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 
@@ -55,7 +57,8 @@ local function vanishing(f, screen)
   return v
 end
 
-local f = map.orthographic("z") * map.perspective_pqr(0, 0, 0.5) * map.translate(V(0, -0.5, 0)) * map.rotate(P(0, 0, 0), V(0, 1, 0), math.pi / 3)
+local f = map.orthographic("z") * map.perspective_pqr(0, 0, 0.5) * map.translate(V(0, -0.5, 0))
+    * map.rotate(P(0, 0, 0), V(0, 1, 0), math.pi / 3)
 local pts = {}
 for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
 for _, v in pairs({f:vanishing_points()}) do pts[#pts + 1] = v end

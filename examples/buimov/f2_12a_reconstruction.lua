@@ -36,7 +36,9 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
 local X = P(0.7, 0.4, 0.9)
@@ -53,4 +55,5 @@ for i, v in ipairs{{T1, X1, "$X_1$"}, {T2, X2, "$X_2$"}} do
   mark(screen(v[2]), "dot", 6, 12); label(v[3], screen(v[2]), nil, 12)
   label(i == 1 and "view 1: dimetric" or "view 2: figure 2.12", P(160 + 320 * (i - 1), 400), "c", 7)
 end
-caption(string.format("from X1 and X2 alone:  X = (%.4f, %.4f, %.4f), residual %.0e", R.x, R.y, R.z, residual), "bottom", 7)
+caption(string.format("from X1 and X2 alone:  X = (%.4f, %.4f, %.4f), residual %.0e",
+  R.x, R.y, R.z, residual), "bottom", 7)

@@ -36,10 +36,13 @@ local function box(view, pts, colour, star, skip)
   for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
   camera(nil)
   for _, n in ipairs(names) do
-    if not (skip and skip[n]) then label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour) end
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
   end
 end
-local camera_in = map.orthographic("z") * map.perspective_pqr(0, 0, 0.5) * map.translate(V(0, -0.5, 0))
+local camera_in = map.orthographic("z") * map.perspective_pqr(0, 0, 0.5)
+    * map.translate(V(0, -0.5, 0))
                 * map.rotate(P(0, 0, 0), V(0, 1, 0), math.pi / 3)
 local refs = {"A", "B", "C", "D", "E", "G"}
 local space, images = {}, {}
@@ -50,4 +53,5 @@ for _, n in ipairs(names) do pts[#pts + 1] = found(cube[n]) end
 local screen = framing(pts, 60, 40, 580, 420)
 box(screen * found, cube, 15)
 for _, q in ipairs(images) do mark(screen(q), "open", 13, 12) end
-caption(string.format("six reference points A, B, C, D, E, G:  rms %.1e in the picture", rms), "bottom", 7)
+caption(string.format("six reference points A, B, C, D, E, G:  rms %.1e in the picture",
+  rms), "bottom", 7)

@@ -29,4 +29,5 @@ line(P(0.3, 1 - 0.7 * m1), P(1.8, 1 + 0.8 * m1), 12)
 line(c.finish - V(0.9, 0.9 * m2), c.finish + V(0.9, 0.9 * m2), 12)
 dot(P(1, 1), "(1, 1)", 15); dot(c.finish, "(3, 1.83)", 14); dot(c.centre, "$C$ (3, -1)", 14)
 dot(P(2, 2), nil, 11); dot(P(3, 2), nil, 11); dot(c3.centre, "(2.5, 0.5)", 11)
-caption(string.format("d, e, f = %g, %g, %g;  slopes %g at (1, 1) and %g at x = 3", c.d, c.e, c.f, m1, m2 + 0.0 == 0 and 0 or m2), "bottom", 7)
+caption(string.format("d, e, f = %g, %g, %g;  slopes %g at (1, 1) and %g at x = 3",
+  c.d, c.e, c.f, m1, m2 + 0.0 == 0 and 0 or m2), "bottom", 7)

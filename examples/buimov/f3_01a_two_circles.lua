@@ -22,4 +22,5 @@ for _, k in ipairs{{k1, 14}, {k2, 10}} do
   dot(k[1].centre, string.format("(%.6f, %.6f)", k[1].centre.x, k[1].centre.y), k[2])
 end
 dot(P(1, 1), "(1, 1)", 15); dot(P(3, 2), "(3, 2)", 15)
-caption(string.format("the book's circle: d = %.6f, e = %.6f, f = %.6f", k1.d, k1.e, k1.f), "bottom", 7)
+caption(string.format("the book's circle: d = %.6f, e = %.6f, f = %.6f",
+  k1.d, k1.e, k1.f), "bottom", 7)

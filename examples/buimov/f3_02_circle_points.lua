@@ -17,12 +17,14 @@ local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
 frame(-0.15, -0.15, 1.25, 1.15)
-local sets = {{1, "explicit", 0.1, 12, "uniform $x$"}, {0.8, "param", math.pi / 20, 10, "uniform $\\theta$"},
+local sets = {{1, "explicit", 0.1, 12, "uniform $x$"}, {0.8, "param", math.pi / 20, 10,
+  "uniform $\\theta$"},
               {0.6, "rational", 0.1, 11, "uniform $t$"}}
 for _, m in ipairs(sets) do
   local r = m[1]
   plane.ellipse(P(0, 0), r, r, 0, math.pi / 2):draw{color = 8}
-  local pts = plane.points("circle", {A = r, step = m[2] == "explicit" and r / 10 or m[3], n = 10, method = m[2]})
+  local pts = plane.points("circle", {A = r, step = m[2] == "explicit" and r / 10 or m[3], n = 10,
+    method = m[2]})
   for _, p in ipairs(pts) do dot(p, nil, m[4]) end
   label(m[5], P(r * 0.68, r * 0.68 + 0.04), nil, m[4])
 end

@@ -20,7 +20,8 @@ local e = plane.ellipse(C, a, b)
 frame(-2.6, -0.6, 4.6, 5.4)
 pen{dash = {4, 3}}
 plane.ellipse(C, a, a):draw{color = 8}; plane.ellipse(C, b, b):draw{color = 8}
-local Pa, Pb, X = C + V(a * math.cos(th), a * math.sin(th)), C + V(b * math.cos(th), b * math.sin(th)), e(th)
+local Pa, Pb, X = C + V(a * math.cos(th), a * math.sin(th)), C + V(b * math.cos(th), b
+    * math.sin(th)), e(th)
 line(C, Pa, 8); line(Pa, X, 8); line(Pb, X, 8)
 pen()
 e:draw{color = 14}

@@ -1,4 +1,4 @@
--- Points of the ellipse by the book's recurrence: uniform in theta, crowded at the ends of the long axis
+-- The ellipse's points by the book's recurrence: equal steps of theta
 -- Buimov §3.3, Fig. 3.4: x0 = alpha, y0 = 0, x' = x cos dth - (alpha/beta) y sin dth,
 -- y' = (beta/alpha) x sin dth + y cos dth, alpha = 3, beta = 2, dth = 2 pi/32: equal steps of
 -- the angle give points closer together where the ellipse is flatter (near (0, +-2)) than
@@ -18,9 +18,11 @@ local function dot(p, name, colour)
 end
 frame(-3.6, -2.6, 3.9, 2.7)
 plane.ellipse(P(0, 0), 3, 2):draw{color = 14}
-for _, p in ipairs(plane.points("ellipse", {A = 3, B = 2, step = 2 * math.pi / 32, n = 32, method = "recurrence"})) do
+for _, p in ipairs(plane.points("ellipse", {A = 3, B = 2, step = 2
+    * math.pi / 32, n = 32, method = "recurrence"})) do
   line(P(0, 0), p, 8); dot(p, nil, 15)
 end
 local ten = plane.points("ellipse", {A = 3, B = 2, step = 0.1, n = 10, method = "recurrence"})[11]
 mark(ten, "open", 10, 12); label(string.format("(%.6f, %.6f)", ten.x, ten.y), ten, nil, 12)
-caption("32 steps of d$\\theta$ = 2 $\\pi$/32;  10 steps of 0.1 end at (3 cos 1, 2 sin 1)", "bottom", 7)
+caption("32 steps of d$\\theta$ = 2 $\\pi$/32;  10 steps of 0.1 end at (3 cos 1, 2 sin 1)",
+  "bottom", 7)

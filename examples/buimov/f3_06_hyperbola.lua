@@ -23,8 +23,11 @@ line(P(-4, -4 * b / a), P(4, 4 * b / a), 8); line(P(-4, 4 * b / a), P(4, -4 * b 
 pen()
 local h = plane.hyperbola(a, b, -1.4, 1.4)
 h:draw{color = 14}; h:draw{color = 14, map = map.reflect(P(0, 0), V(1, 0))}
-for _, q in ipairs(plane.points("hyperbola_ch", {A = a, B = b, step = 0.1, n = 14, method = "recurrence"})) do dot(q, nil, 10) end
-for _, q in ipairs(plane.points("hyperbola", {A = a, B = b, step = 0.1, n = 9, method = "recurrence"})) do dot(q, nil, 12) end
+for _, q in ipairs(plane.points("hyperbola_ch", {A = a, B = b, step = 0.1, n = 14,
+  method = "recurrence"})) do dot(q, nil, 10) end
+for _, q in ipairs(plane.points("hyperbola", {A = a, B = b, step = 0.1, n = 9,
+  method = "recurrence"})) do dot(q, nil, 12) end
 dot(P(a, 0), "($\\alpha$, 0)", 15); dot(P(-a, 0), "($-\\alpha$, 0)", 15)
 label("$y = \\beta x/\\alpha$", P(4, 4 * b / a), nil, 8)
-caption("$\\alpha$, $\\beta$ = 2, 1.5;  d$\\theta$ = 0.1:  sec/tan (red), ch/sh (green)", "bottom", 7)
+caption("$\\alpha$, $\\beta$ = 2, 1.5;  d$\\theta$ = 0.1:  sec/tan (red), ch/sh (green)",
+  "bottom", 7)

@@ -30,7 +30,8 @@ for i, p in ipairs(pts) do
   local d = unit(tangents[i])
   local nrm = V(-d.y, d.x)
   -- a weight sitting on the strip: a small block above the point
-  path({p + nrm * 0.05 - d * 0.18, p + nrm * 0.05 + d * 0.18, p + nrm * 0.35 + d * 0.14, p + nrm * 0.35 - d * 0.14}, {closed = true, color = 7})
+  path({p + nrm * 0.05 - d * 0.18, p + nrm * 0.05 + d * 0.18, p + nrm * 0.35 + d * 0.14, p + nrm
+      * 0.35 - d * 0.14}, {closed = true, color = 7})
   dot(p, "$P_{" .. i .. "}$", 15)
 end
 caption("the strip: natural cubic spline through P1..P5 (chord lengths)", "bottom", 7)

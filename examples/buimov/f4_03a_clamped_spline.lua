@@ -33,4 +33,5 @@ u:draw{color = 14}; c:draw{color = 10}
 vector(pts[1], d * 0.5, 12); vector(pts[4], d * 0.5, 12)
 label("$P'_1$", pts[1] + d * 0.5, nil, 12); label("$P'_n$", pts[4] + d * 0.5, nil, 12)
 for i, p in ipairs(pts) do dot(p, "$P_" .. i .. "$", 15) end
-caption(string.format("uniform: P'2 = (%g, %g);  chord: P'2 = (%.6f, %.6f)", tu[2].x, tu[2].y, tc[2].x, tc[2].y), "bottom", 7)
+caption(string.format("uniform: P'2 = (%g, %g);  chord: P'2 = (%.6f, %.6f)",
+  tu[2].x, tu[2].y, tc[2].x, tc[2].y), "bottom", 7)

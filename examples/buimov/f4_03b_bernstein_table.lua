@@ -30,7 +30,8 @@ for _, t in ipairs{1 / 3, 2 / 3} do
   for i = 0, 3 do mark(P(t, buimov.bernstein(3, i, t)), "dot", 4, colours[i + 1]) end
 end
 local names = {"$J_{3,0}$", "$J_{3,1}$", "$J_{3,2}$", "$J_{3,3}$"}
-for i = 0, 3 do label(names[i + 1], P(0.04 + 0.3 * i, buimov.bernstein(3, i, 0.04 + 0.3 * i)), nil, colours[i + 1]) end
+for i = 0, 3 do label(names[i + 1], P(0.04 + 0.3 * i, buimov.bernstein(3, i, 0.04 + 0.3
+    * i)), nil, colours[i + 1]) end
 label("$t = 1/3$", P(1 / 3, 1), nil, 8); label("$t = 2/3$", P(2 / 3, 1), nil, 8)
 label("8/27", P(1 / 3, 8 / 27), nil, 12); label("4/9", P(1 / 3, 4 / 9), nil, 10)
 caption("t = 1/3: 8/27, 4/9, 2/9, 1/27;   t = 2/3: 1/27, 2/9, 4/9, 8/27", "bottom", 7)

@@ -27,4 +27,5 @@ polygon(pts)
 b:draw{color = 14}
 dot(b(0.5), "P(0.5) = (2.75, 2.5)", 14)
 vector(pts[1], b:deriv(0) / 6, 12); label("$P'(0)/6$", pts[1] + b:deriv(0) / 6, nil, 12)
-caption(string.format("P'(0) = (%g, %g),  P'(1) = (%g, %g)", b:deriv(0).x, b:deriv(0).y, b:deriv(1).x, b:deriv(1).y), "bottom", 7)
+caption(string.format("P'(0) = (%g, %g),  P'(1) = (%g, %g)",
+  b:deriv(0).x, b:deriv(0).y, b:deriv(1).x, b:deriv(1).y), "bottom", 7)

@@ -35,4 +35,5 @@ pen{dash = {4, 3}}; line(Pp[3], Qp[2], 12); pen()
 Pc:draw{color = 14}; Q:draw{color = 10}
 for i, p in ipairs{Pp[1], Pp[2], Pp[3]} do dot(p, "$P_" .. (i - 1) .. "$", 15) end
 dot(q0, "$P_3 = Q_0$", 15); dot(q1, "$Q_1$", 15); dot(Qp[3], "$Q_2$", 15)
-caption(string.format("n = 3, m = 2, g = 1.5:  Q1 = (%g, %g);  joint: %s, g = %g", q1.x, q1.y, kind, g), "bottom", 7)
+caption(string.format("n = 3, m = 2, g = 1.5:  Q1 = (%g, %g);  joint: %s, g = %g",
+  q1.x, q1.y, kind, g), "bottom", 7)

@@ -31,4 +31,5 @@ for k = 2, 4 do
   label("$k = " .. k .. "$", c(0.62 * q[#q]), nil, colours[k])
 end
 for i, p in ipairs(pts) do dot(p, "$P_" .. (i - 1) .. "$", 15) end
-caption("k = 2: the polygon;  k = 3;  k = 4 = the number of vertices: the Bezier curve", "bottom", 7)
+caption("k = 2: the polygon;  k = 3;  k = 4 = the number of vertices: the Bezier curve", "bottom",
+  7)

@@ -34,5 +34,8 @@ for copies = 1, 3 do
   c:draw{color = colours[copies]}
   label(#pts .. "/" .. #pts, c(0.35), nil, colours[copies])
 end
-dot(base[1], "$P_0$", 15); dot(base[2], "$P_1$ (1, 2, 3 times)", 15); dot(base[3], "$P_2$", 15); dot(base[4], "$P_3$", 15)
+dot(base[1], "$P_0$", 15)
+dot(base[2], "$P_1$ (1, 2, 3 times)", 15)
+dot(base[3], "$P_2$", 15)
+dot(base[4], "$P_3$", 15)
 caption("vertices/order 4/4, 5/5, 6/6:  the multiple vertex P1 pulls the curve", "bottom", 7)

@@ -33,7 +33,9 @@ local colours = {9, 10, 11, 12, 13, 14}
 for i = 0, #pts - 1 do
   graph(function(t) return buimov.basis(i, 3, t, q) end, 0, 3, {color = colours[i + 1], n = 600})
   local peak, at = -1, 0
-  for s = 0, 300 do local t = 3 * s / 300; local v = buimov.basis(i, 3, t, q); if v > peak then peak, at = v, t end end
+  for s = 0, 300 do local t = 3 * s / 300
+  local v = buimov.basis(i, 3, t, q)
+  if v > peak then peak, at = v, t end end
   label("$N_{" .. i .. ",3}$", P(at, peak), nil, colours[i + 1])
 end
 caption("knots [" .. table.concat(q, " ") .. "]: a double knot at t = 1", "bottom", 7)

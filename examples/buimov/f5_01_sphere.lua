@@ -18,13 +18,15 @@ local v = view3(-60, 20, 170, P(0, 0, 0), 320, 225)
 camera(v, {hidden = "dashed"})
 local s = buimov.sphere()
 s:wireframe{nu = 12, nv = 6, color = 9, silhouette = true}
-for _, ax in ipairs{V(1.5, 0, 0), V(0, 1.5, 0), V(0, 0, 1.4)} do line(P(0, 0, 0), P(0, 0, 0) + ax, 7) end
+for _, ax in ipairs{V(1.5, 0, 0), V(0, 1.5, 0), V(0, 0, 1.4)} do line(P(0, 0, 0), P(0, 0, 0) + ax,
+  7) end
 -- one latitude Phi1 = 60° and one longitude Theta0 = 30° in colour
 local ph1, th0 = pi / 3, pi / 6
 curve(function(t) return s(t, ph1) end, 0, 2 * pi):draw{color = 14}
 curve(function(t) return s(th0, t) end, 0, pi):draw{color = 10}
 camera(nil)
-for _, a in ipairs{{P(1.5, 0, 0), "$x$"}, {P(0, 1.5, 0), "$y$"}, {P(0, 0, 1.4), "$z$"}} do label(a[2], v(a[1]), nil, 7) end
+for _, a in ipairs{{P(1.5, 0, 0), "$x$"}, {P(0, 1.5, 0), "$y$"}, {P(0, 0, 1.4),
+  "$z$"}} do label(a[2], v(a[1]), nil, 7) end
 label("$\\varphi_1 = 60^\\circ$", v(s(pi / 2, ph1)), nil, 14)
 label("$\\theta_0 = 30^\\circ$", v(s(th0, 2 * pi / 3)), nil, 10)
 caption("latitude z = cos $\\Phi_1$ (yellow), longitude x sin $\\Theta_0$ = y cos $\\Theta_0$ (green)", "bottom", 7)

@@ -29,6 +29,8 @@ end
 camera(nil)
 for _, t in ipairs(tips) do dot3(v, t[1], "$" .. t[2] .. "$", 15) end
 local B = tips[2]
-label("$S_\\theta$", v(B[1] + B[3] * 0.5), nil, 12); label("$S_\\varphi$", v(B[1] + B[4] * 0.5), nil, 10)
-label("$S_{\\theta\\varphi}$", v(B[1] + B[5] * 0.5), nil, 13); label("$N$", v(B[1] + B[6] * 0.5), nil, 11)
+label("$S_\\theta$", v(B[1] + B[3] * 0.5), nil, 12)
+label("$S_\\varphi$", v(B[1] + B[4] * 0.5), nil, 10)
+label("$S_{\\theta\\varphi}$", v(B[1] + B[5] * 0.5), nil, 13)
+label("$N$", v(B[1] + B[6] * 0.5), nil, 11)
 caption("N_B = -(e1 + e3)/2;  twist e2/sqrt 2 at B, -e1/sqrt 2 at C, 0 at A, D", "bottom", 7)

@@ -20,7 +20,9 @@ local v = view3(-55, 25, 260, P(0.5, 0.5, 0.5), 320, 235)
 camera(v, {hidden = "dashed"})
 s:wireframe{nu = 8, nv = 8, boundary = true, color = 11}
 camera(nil)
-for _, c in ipairs{{P00, "$P(0,0)$"}, {P01, "$P(0,1)$"}, {P10, "$P(1,0)$"}, {P11, "$P(1,1)$"}} do dot3(v, c[1], c[2], 15) end
+for _, c in ipairs{{P00, "$P(0,0)$"}, {P01, "$P(0,1)$"}, {P10, "$P(1,0)$"}, {P11,
+  "$P(1,1)$"}} do dot3(v, c[1], c[2], 15) end
 dot3(v, s(0.5, 0.5), "$Q(0.5, 0.5)$", 14)
-caption(string.format("Q(0.5, 0.5) = (%g, %g, %g),  Q(0.25, 0.75) = (%g, %g, %g)", s(0.5, 0.5).x, s(0.5, 0.5).y, s(0.5, 0.5).z,
+caption(string.format("Q(0.5, 0.5) = (%g, %g, %g),  Q(0.25, 0.75) = (%g, %g, %g)",
+  s(0.5, 0.5).x, s(0.5, 0.5).y, s(0.5, 0.5).z,
   s(0.25, 0.75).x, s(0.25, 0.75).y, s(0.25, 0.75).z), "bottom", 7)

@@ -16,7 +16,8 @@ local function dot3(view, p, name, colour)
   mark(view(p), "dot", 4, colour); if name then label(name, view(p), nil, colour) end
 end
 local cu0 = curve(function(u) return P(u, 0, math.sin(pi * u)) end, 0, 1)
-local s = surface.coons(cu0, bezier{P(0, 1, 0), P(1, 1, 0)}, bezier{P(0, 0, 0), P(0, 1, 0)}, bezier{P(1, 0, 0), P(1, 1, 0)})
+local s = surface.coons(cu0, bezier{P(0, 1, 0), P(1, 1, 0)}, bezier{P(0, 0, 0), P(0, 1, 0)},
+  bezier{P(1, 0, 0), P(1, 1, 0)})
 local v = view3(-50, 25, 250, P(0.5, 0.5, 0.4), 320, 235)
 camera(v, {hidden = "dashed"})
 s:wireframe{nu = 10, nv = 10, color = 11}
@@ -27,5 +28,6 @@ for _, uw in ipairs{{0.5, 0.5}, {0.25, 0.5}} do
   local q = s(uw[1], uw[2])
   dot3(v, q, string.format("Q(%g, %g)", uw[1], uw[2]), 15)
 end
-caption(string.format("Q(0.5, 0.5) = (%g, %g, %g),  Q(0.25, 0.5) = (%g, %g, %.6f)", s(0.5, 0.5).x, s(0.5, 0.5).y, s(0.5, 0.5).z,
+caption(string.format("Q(0.5, 0.5) = (%g, %g, %g),  Q(0.25, 0.5) = (%g, %g, %.6f)",
+  s(0.5, 0.5).x, s(0.5, 0.5).y, s(0.5, 0.5).z,
   s(0.25, 0.5).x, s(0.25, 0.5).y, s(0.25, 0.5).z), "bottom", 7)

@@ -26,7 +26,8 @@ end
 local net = {}
 for i = 0, 3 do
   net[i + 1] = {}
-  for j = 0, 3 do net[i + 1][j + 1] = P(i, j, (i == 1 or i == 2) and (j == 1 or j == 2) and 1 or 0) end
+  for j = 0, 3 do net[i + 1][j + 1] = P(i, j,
+    (i == 1 or i == 2) and (j == 1 or j == 2) and 1 or 0) end
 end
 local s = surface.bezier(net)
 local v = view3(-60, 18, 120, P(1.5, 1.5, 0.3), 320, 230)
@@ -39,4 +40,5 @@ for _, c in ipairs{{1, 1}, {1, 4}, {4, 1}, {4, 4}} do
 end
 dot3(v, net[2][2], "$P_{22}$", 7)
 dot3(v, s(0.5, 0.5), "$Q(0.5, 0.5)$", 14)
-caption(string.format("Q(0.5, 0.5) = (%g, %g, %g):  only P11, P14, P41, P44 lie on the patch", s(0.5, 0.5).x, s(0.5, 0.5).y, s(0.5, 0.5).z), "bottom", 7)
+caption(string.format("Q(0.5, 0.5) = (%g, %g, %g):  only P11, P14, P41, P44 lie on the patch",
+  s(0.5, 0.5).x, s(0.5, 0.5).y, s(0.5, 0.5).z), "bottom", 7)
