@@ -41,9 +41,10 @@ with Browser(chromium, profile) as b:
     # the filter: by figure number, by title, by function
     type_filter(page, "fig. 2.12")
     shown = visible(page)
-    check(shown == ["basics-04_cube_projections"], "'fig. 2.12' finds Buimov's Fig. 2.12: " + repr(shown))
+    check(shown == ["basics-04_cube_projections", "buimov-f2_12_rotated_two_point"],
+          "'fig. 2.12' finds Buimov's Fig. 2.12: " + repr(shown))
     check(page.eval("document.getElementById('stepanov').hidden"), "a book without a match is hidden")
-    check(page.eval("document.getElementById('shown').textContent") == f"1 of {total} figures",
+    check(page.eval("document.getElementById('shown').textContent") == f"2 of {total} figures",
           "the count of figures shown")
     type_filter(page, "2.12")
     shown = visible(page)
@@ -75,12 +76,12 @@ with Browser(chromium, profile) as b:
     check(page.wait("document.getElementById('viewer').hidden"), "Escape closes it")
 
     # a figure's page
-    page = b.open("file://" + os.path.join(gallery, "buimov", "04_splines.html"))
+    page = b.open("file://" + os.path.join(gallery, "buimov", "f4_03c_spline_ends.html"))
     check(page.wait("document.querySelector('pre code') !== null"), "the figure's page shows its script")
-    script = open(os.path.join(gallery, "buimov", "04_splines.lua")).read()
+    script = open(os.path.join(gallery, "buimov", "f4_03c_spline_ends.lua")).read()
     check(page.eval("document.querySelector('pre code').textContent") == script, "the script as it is")
     check("Buimov 2012, §4.2" in page.eval("document.body.textContent"), "the page cites the book")
-    check(page.eval("document.querySelector('img').getAttribute('src')") == "04_splines.svg", "the page shows the SVG")
+    check(page.eval("document.querySelector('img').getAttribute('src')") == "f4_03c_spline_ends.svg", "the page shows the SVG")
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)

@@ -30,5 +30,5 @@ pdftotext gallery/basics/atlas.pdf basics.txt
 expect_in basics.txt "2.8.4, Fig. 2.12: A cube in isometric projection" \
     "a figure after the textbook captioned with its section and figure number"
 pdftotext gallery/buimov/atlas.pdf buimov.txt
-expect_in buimov.txt "ch. 3, Fig. 3.1: " "a Buimov figure captioned with its chapter and figure number"
+expect_in buimov.txt "3.2, Fig. 3.1: A circle from a point" "a Buimov figure captioned with its section and figure number"
 finish

@@ -17,9 +17,11 @@ for row, param in ipairs{"uniform", "chord"} do
     for _, p in ipairs(pts) do circle(F(p), 2, 15) end
     if e == "clamped" then
       line(F(pts[1]), F(pts[1] + d0 * 0.3), 12); line(F(pts[#pts]), F(pts[#pts] + d1 * 0.3), 12)
-      label("P'1", F(pts[1] + d0 * 0.3), nil, 12); label("P'n", F(pts[#pts] + d1 * 0.3), nil, 12)
+      label("$P'_1$", F(pts[1] + d0 * 0.3), nil, 12)
+      label("$P'_n$", F(pts[#pts] + d1 * 0.3), nil, 12)
     else   -- the end tangents the condition produced
-      line(F(pts[1]), F(pts[1] + tg[1] * 0.3), 10); line(F(pts[#pts]), F(pts[#pts] + tg[#pts] * 0.3), 13)
+      line(F(pts[1]), F(pts[1] + tg[1] * 0.3), 10)
+      line(F(pts[#pts]), F(pts[#pts] + tg[#pts] * 0.3), 13)
     end
     label(e, F(P(1.8, 2.6)), "c", 15)
   end

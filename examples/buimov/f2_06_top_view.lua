@@ -1,0 +1,54 @@
+-- The top view of the unit cube: T = Rx(90°) Pz
+-- Buimov §2.8.2, Fig. 2.6: [x y z 1] Rx(90°) Pz = [x, -z, 0, 1] (the book prints the images
+-- without the minus sign and with the rows E*, B* swapped): seen from above, the edges along y
+-- are seen end-on and the corners coincide in pairs, the upper one (B, C, F, G) written first.
+-- Seen from +y (the book's eye for the parallel views is on the far side: its picture is this
+-- one's mirror, the book plots (x*, y*) as they come).
+
+-- the unit cube lettered as in Fig. 2.12: A at the origin, B on y, D on x, E on z
+local names = {"A", "B", "C", "D", "E", "F", "G", "H"}
+local cube = {A = P(0, 0, 0), B = P(0, 1, 0), C = P(1, 1, 0), D = P(1, 0, 0),
+              E = P(0, 0, 1), F = P(0, 1, 1), G = P(1, 1, 1), H = P(1, 0, 1)}
+local faces = {"ABCD", "EFGH", "ABFE", "DCGH", "ADHE", "BCGF"}
+local edges = {"AB", "BC", "CD", "DA", "EF", "FG", "GH", "HE", "AE", "BF", "CG", "DH"}
+
+-- the screen map that frames the 2-D points pts at equal units inside the pixel box x0..x1, y0..y1
+local function framing(pts, x0, y0, x1, y1)
+  local lx, ly, hx, hy = math.huge, math.huge, -math.huge, -math.huge
+  for _, q in ipairs(pts) do
+    lx, ly, hx, hy = math.min(lx, q.x), math.min(ly, q.y), math.max(hx, q.x), math.max(hy, q.y)
+  end
+  local s = math.min((x1 - x0) / math.max(hx - lx, 1e-9), (y1 - y0) / math.max(hy - ly, 1e-9))
+  return map.translate(V((x0 + x1) / 2, (y0 + y1) / 2)) * map.scale({s, -s})
+       * map.translate(V(-(lx + hx) / 2, -(ly + hy) / 2))
+end
+
+-- a box (corners keyed A..H) through view (3-D -> screen): its faces hide, its edges are drawn,
+-- dashed where hidden; every corner lettered, the hidden ones too (placed on their images), but
+-- those in the set skip
+local function box(view, pts, colour, star, skip)
+  camera(view, {hidden = "dashed"})
+  for _, q in ipairs(faces) do
+    local function c(i) return pts[q:sub(i, i)] end
+    surface.bilinear(c(1), c(2), c(4), c(3)):wireframe{nu = 0, nv = 0}
+  end
+  for _, e in ipairs(edges) do line(pts[e:sub(1, 1)], pts[e:sub(2, 2)], colour) end
+  camera(nil)
+  for _, n in ipairs(names) do
+    if not (skip and skip[n]) then
+      label("$" .. n .. (star or "") .. "$", view(pts[n]), nil, colour)
+    end
+  end
+end
+
+local f = map.orthographic("z") * map.rotate(P(0, 0, 0), V(1, 0, 0), math.pi / 2)
+local pts = {}
+for _, n in ipairs(names) do pts[#pts + 1] = f(cube[n]) end
+local screen = framing(pts, 40, 30, 600, 430)
+box(screen
+    * f, cube, 15, nil, {A = true, B = true, C = true, D = true, E = true, F = true, G = true,
+      H = true})
+for _, pair in ipairs{{"B", "A"}, {"C", "D"}, {"F", "E"}, {"G", "H"}} do
+  label("$" .. pair[1] .. "$, $" .. pair[2] .. "$", (screen * f)(cube[pair[1]]), nil, 15)
+end
+caption("T = Rx(90) Pz:  [x y z 1] T = [x, -z, 0, 1]", "bottom", 7)

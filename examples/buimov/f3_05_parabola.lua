@@ -1,0 +1,27 @@
+-- The parabola y^2 = 4px and the points of its recurrence
+-- Buimov §3.4, Fig. 3.5: x = p th^2, y = 2p th (the book writes y^2 = 2px, but both its
+-- parametrisations give y^2 = 4px); the recurrence x' = x + y dth + p dth^2, y' = y + 2p dth
+-- (the book prints "- y dth") from the vertex, p = 1/2, dth = 0.2, ten steps to (0.5 th^2, th)
+-- with th = 2: (2, 2); the fourth quadrant by reflection. The focus F = (p, 0).
+
+-- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
+local function frame(x0, y0, x1, y1)
+  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
+  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
+  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
+  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
+end
+local function dot(p, name, colour)
+  mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
+end
+local p = 0.5
+frame(-0.5, -2.6, 3.2, 2.6)
+plane.parabola(p, -2.3, 2.3):draw{color = 14}
+for _, q in ipairs(plane.points("parabola", {A = p, step = 0.2, n = 10, method = "recurrence"})) do
+  dot(q, nil, 15); dot(P(q.x, -q.y), nil, 7)
+end
+dot(P(p, 0), "$F$", 12); dot(P(2, 2), "(2, 2)", 15)
+pen{dash = {4, 3}}; line(P(-p, -2.4), P(-p, 2.4), 8); pen()
+label("$x = -p$", P(-p, 2.4), nil, 8)
+caption("p = 1/2, d$\\theta$ = 0.2:  x' = x + y d$\\theta$ + p d$\\theta$^2,  y' = y + 2p d$\\theta$", "bottom", 7)

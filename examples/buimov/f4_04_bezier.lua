@@ -1,0 +1,31 @@
+-- A Bezier polygon and its curve
+-- Buimov §4.3, Fig. 4.4: P(t) = sum P_i J_n,i(t), 0 <= t <= 1, through P0 and Pn, tangent there
+-- to the polygon: P'(0) = n (P1 - P0), P'(1) = n (Pn - Pn-1). The cubic on (1, 1), (2, 3),
+-- (4, 3), (3, 1) (the book gives no points) has P(0.5) = (2.75, 2.5), P'(0) = (3, 6).
+
+-- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
+local function frame(x0, y0, x1, y1, bare)
+  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
+  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
+  if bare then return end
+  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
+  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
+end
+local function dot(p, name, colour)
+  mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
+end
+-- a control polygon (grey) with its vertices lettered P_0, P_1, ... (or from first)
+local function polygon(pts, first, colour)
+  for i = 1, #pts - 1 do line(pts[i], pts[i + 1], colour or 8) end
+  for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
+end
+local pts = {P(1, 1), P(2, 3), P(4, 3), P(3, 1)}
+local b = bezier(pts)
+frame(-0.3, -0.3, 4.6, 3.5)
+polygon(pts)
+b:draw{color = 14}
+dot(b(0.5), "P(0.5) = (2.75, 2.5)", 14)
+vector(pts[1], b:deriv(0) / 6, 12); label("$P'(0)/6$", pts[1] + b:deriv(0) / 6, nil, 12)
+caption(string.format("P'(0) = (%g, %g),  P'(1) = (%g, %g)",
+  b:deriv(0).x, b:deriv(0).y, b:deriv(1).x, b:deriv(1).y), "bottom", 7)
