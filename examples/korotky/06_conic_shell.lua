@@ -1,36 +1,52 @@
--- Korotky (2015) Fig. 2: a shell on a closed contour swept by conics
--- The contour ABCD is rectangular in plan: the frontal links AB (y = 4) and DC (y = 0) are
--- conic arcs, the lateral links AD and BC waves z = 0.3 sin(pi y / 4).  In each plane y = const
--- the generator is the conic through U0 on AD, V0 on BC and T on the guide l = LL', tangent to
--- the rulings U0 P and V0 Q of the conoid (AD, p) and the cylindroid (BC, q).  Left: the guide l
--- straight; right: l bowed down by 0.8 (the concave case: its middle generators flatten).
-local function seg(a, b) return bezier{a, b} end
+-- Korotky (2015) Fig. 2d, 2e, 2f: the shell on the contour ABCD for a convex, straight, concave l
+-- The contour and its determinant are those of Fig. 2a, 2b (script 12): the frontal conic
+-- links AB (y = 4) and DC (y = 0), the lateral waves AD and BC, the conoid (AD, p) and the
+-- cylindroid (BC, q).  In each plane y = const the generator is the conic through U0 on AD,
+-- V0 on BC and T on the guide l = LL', tangent to the rulings U0 P and V0 Q.  The guide l
+-- decides the fullness: bowed up by 0.8 (2d), straight (2e), bowed down to z = 0 at its
+-- middle (2f).  In 2f l crosses the chord U0 V0 twice: there T lies on the chord, the weight
+-- is 0 and the generators a and c are straight; between them the arcs are concave (w < 0).
+-- Perspective, equal units; the shell hides what lies behind it (the scene's hidden lines).
+local r3 = math.sqrt(3)
 local function wave(x)   -- a lateral link: x fixed, z = 0.3 sin(pi y / 4), as a curve in y
   return curve(function(y) return P(x, y, .3 * math.sin(math.pi * y / 4)) end, 0, 4)
 end
--- the directrices p and q of the contact surfaces, through the points 1, 2 and 3, 4 on the
--- end tangents of DC (45 degrees) and AB (60 degrees)
-local p = seg(P(1, 0, 1), P(1, 4, math.sqrt(3)))
-local q = seg(P(5, 0, 1), P(5, 4, math.sqrt(3)))
-local function shell(l)
-  return korotky.conic_sweep{U = wave(0), V = wave(6), T = l, P = p, Q = q}
+local AD, BC = wave(0), wave(6)
+local p = bezier{P(1, 0, 1), P(1, 4, r3)}
+local q = bezier{P(5, 0, 1), P(5.6, 2, 1.55), P(5, 4, r3)}
+local L, L1 = P(3, 4, 3), P(3, 0, 2)
+local guides = {
+  {name = "2d  l convex", l = bezier{L1, P(3, 2, 4.1), L}},
+  {name = "2e  l straight", l = bezier{L1, L}},
+  {name = "2f  l concave", l = bezier{L1, P(3, 2, -2.5), L}},
+}
+-- where the guide's T lies on the chord U0 V0 (the straight generators): z_l(y) = z_AD(y)
+local function straight_at(l)
+  local f = function(u) return l(u).z - AD(4 * u).z end
+  local roots, n = {}, 200
+  for i = 0, n - 1 do
+    local a, b = i / n, (i + 1) / n
+    if f(a) * f(b) < 0 then
+      for _ = 1, 50 do local m = (a + b) / 2; if f(a) * f(m) <= 0 then b = m else a = m end end
+      roots[#roots + 1] = (a + b) / 2
+    end
+  end
+  return roots
 end
-local straight = seg(P(3, 0, 2), P(3, 4, 3))
-local bowed = bezier{P(3, 0, 2), P(3, 2, 1.7), P(3, 4, 3)}
 
-for k, l in ipairs{straight, bowed} do
-  camera(map.translate(V(k == 1 and 165 or 480, 270)) * map.scale({34, -34}) *
-         map.perspective(P(-6, -9, 9), P(3, 2, 1)))
-  local s = shell(l)
-  s:wireframe{nu = 8, nv = 10, color = k == 1 and 11 or 10, hidden = "hide"}
-  l:draw{color = 14}
-  p:draw{color = 8}
-  q:draw{color = 8}
-  label("A", P(0, 4, 0), nil, 15); label("B", P(6, 4, 0), nil, 15)
-  label("C", P(6, 0, 0), nil, 15); label("D", P(0, 0, 0), nil, 15)
-  label("L", l(1), nil, 14); label("L'", l(0), nil, 14)
-  label("p", p(.5), nil, 8); label("q", q(.5), nil, 8)
+for k, g in ipairs(guides) do
+  local x0 = 110 + (k - 1) * 212
+  camera(map.translate(V(x0, 235)) * map.scale({23, -23}) *
+         map.perspective(P(-3, -10, 7), P(3, 2, 1)), {hidden = "dashed"})
+  local s = korotky.conic_sweep{U = AD, V = BC, T = g.l, P = p, Q = q}
+  s:wireframe{nu = 9, nv = 0, color = 11, boundary = true}
+  g.l:draw{color = 14}
+  label("A", P(0, 4, 0)); label("B", P(6, 4, 0)); label("C", P(6, 0, 0)); label("D", P(0, 0, 0))
+  label("l", g.l(.5))
+  for i, u in ipairs(straight_at(g.l)) do
+    line(AD(4 * u), BC(4 * u), 12)
+    label(i == 1 and "a" or "c", AD(4 * u))
+  end
   camera(nil)
+  label(g.name, P(x0 - 70, 455), "e", 11)
 end
-label("l straight", P(110, 460), "e", 11)
-label("l bowed (concave)", P(420, 460), "e", 10)
