@@ -10,13 +10,13 @@
 -- conoid with the plane of parallelism xt over the straight keel and the conic deck line.
 -- The receding axis x at 36 degrees, 0.8 of its length; y and z or t as they are.
 local L = 5                                    -- stem at y = 0, the frame CD at y = L
-local xC, zB, zD, zC = 1.4, 1.2, .3, 1.1
+local xC, zA, zB, zD, zC = 1.4, .4, 1.2, 0, 1.1
 -- the deck line's plan: a conic arc from the stem (x = 0, along the keel) to C, x = xC
 local plan = korotky.conic_arc(P(0, 0), V(1, 1.6), P(xC, L), V(0, 1), P(1.05, 2.2))
 local function deck(u) local q = plan(u); return P(q.x, q.y, zB + (zC - zB) * q.y / L, 1) end
 local BC = curve(deck, 0, 1)
-local AD = curve(function(u) return P(0, plan(u).y, zD * plan(u).y / L, 0) end, 0, 1)
-local AB = curve(function(v) return P(0, 0, zB * v, v) end, 0, 1)
+local AD = curve(function(u) return P(0, plan(u).y, zA + (zD - zA) * plan(u).y / L, 0) end, 0, 1)
+local AB = curve(function(v) return P(0, 0, zA + (zB - zA) * v, v) end, 0, 1)
 local CD = curve(function(v) return P(xC * v, L, zD + (zC - zD) * (1 - (1 - v)^2), v) end, 0, 1)
 local Z, X = V(0, 0, 1, 0), V(1, 0, 0, 0)
 local hull = korotky.two_pencils{omega = {BC, AD, Z}, delta = {X, AB, CD}}
