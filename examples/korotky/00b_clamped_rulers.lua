@@ -3,8 +3,9 @@
 -- is clamped at A and E: the thick bars are the clamps, outside the span as the article draws
 -- them, along the clamp directions (Tables A4, A5: slopes 0.2 and -0.3, halved to 0.1 and
 -- -0.15 for the compressed ruler).  Green: each ruler as the elastic line through its pins
--- with those end directions (the ruler's length left free: indicative only, the article's
--- clamped ruler has a fixed length it does not give).  Equal units on both axes.
+-- with those end directions and a fixed length between the clamps, which the article does
+-- not give: 7.70 and 5.51, the lengths whose slopes at B, C, D come nearest the measured ones
+-- (within 1.0 and 1.2 degrees; with the length left free 5 degrees off).  Equal units.
 local pts = {P(1.2, .9), P(2.1, 2.3), P(2.8, 4), P(5, 3.2), P(5.5, 2.1)}
 local names = {"A", "B", "C", "D", "E"}
 local half = map.scale({1, .5})
@@ -16,7 +17,7 @@ line(P(0, 0), P(7.5, 0), 8)                     -- the axis of the compression
 label("x", P(7.5, 0), "n", 8)
 for k, set in ipairs{pts, low} do
   local sA, sE = .2 * (k == 1 and 1 or .5), -.3 * (k == 1 and 1 or .5)
-  korotky.elastic(set, {ends = {sA, sE}}):draw{color = 10}
+  korotky.elastic(set, {ends = {sA, sE}, length = k == 1 and 7.70 or 5.51}):draw{color = 10}
   -- the clamps: thick bars from the end pin outwards, along the clamp direction
   local tA, tE = unit(V(1, sA)), unit(V(1, sE))
   pen{width = 4}

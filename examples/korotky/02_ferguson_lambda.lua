@@ -3,7 +3,7 @@
 -- directions the measured slopes 1.134 and -2.460 (magenta), against the elastic line (green):
 -- "the error reaches 4 %".  4b (right), clamped ends (slopes 0.2 and -0.3, the bars): Example 2,
 -- lambda = 1, 2, 1 (position 2, magenta) and 1, 3, 1 (position 3, red), against the elastic
--- line with those end directions: "more than 10 %".  Five controls to tune by trial, so the
+-- line with those end directions and the length 7.70 of Fig. 2: "more than 10 %".  Five controls to tune by trial, so the
 -- authors do not recommend it.  Equal units on both axes (60 px a unit).
 local pts = {P(1.2, .9), P(2.1, 2.3), P(2.8, 4), P(5, 3.2), P(5.5, 2.1)}
 local names = {"A", "B", "C", "D", "E"}
@@ -36,7 +36,7 @@ label("Ex. 1", ex1(2.3)); label("1", el(2.6))
 local d1 = korotky.deviation(ex1, el)
 
 panel(2)
-local ec = korotky.elastic(pts, {ends = {.2, -.3}})
+local ec = korotky.elastic(pts, {ends = {.2, -.3}, length = 7.70})
 local ex2 = korotky.ferguson_lambda(pts, {TA = .2, TE = -.3, lambda = {1, 2, 1}})
 local ex2b = korotky.ferguson_lambda(pts, {TA = .2, TE = -.3, lambda = {1, 3, 1}})
 ec:draw{color = 10}

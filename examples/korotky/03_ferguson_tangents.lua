@@ -4,7 +4,7 @@
 -- (yellow, the given tangents as short strokes), against the elastic line (green): "less than
 -- 0.4 %".  5b (right), clamped ends (slopes 0.2 and -0.3, the bars outside the span): Example 4,
 -- the authors' substitution (24)-(26) from w_A = w_B(1) = 2, giving (29), against the elastic
--- line with those end directions: "less than 1.5 %".  Equal units on both axes (60 px a unit).
+-- line with those end directions and the length 7.70 of Fig. 2: "less than 1.5 %".  Equal units on both axes (60 px a unit).
 local pts = {P(1.2, .9), P(2.1, 2.3), P(2.8, 4), P(5, 3.2), P(5.5, 2.1)}
 local names = {"A", "B", "C", "D", "E"}
 
@@ -42,7 +42,7 @@ local d3 = korotky.deviation(ex3, el)
 
 panel(2)
 local tc = {0.2, 5.16, 0.83, -4.36, -0.3}
-local ec = korotky.elastic(pts, {ends = {.2, -.3}})
+local ec = korotky.elastic(pts, {ends = {.2, -.3}, length = 7.70})
 local ex4, z4 = korotky.ferguson_substitution(pts, tc, 2, 2)
 ec:draw{color = 10}
 ex4:draw{color = 14}
