@@ -5,7 +5,7 @@
 -- -0.15 for the compressed ruler).  Green: each ruler as the elastic line through its pins
 -- with those end directions and a fixed length between the clamps, which the article does
 -- not give: 7.70 and 5.51, the lengths whose slopes at B, C, D come nearest the measured ones
--- (within 1.0 and 1.2 degrees; with the length left free 5 degrees off).  Equal units.
+-- (within 1.1 and 1.3 degrees; with the length left free up to 5 degrees off).  Equal units.
 local pts = {P(1.2, .9), P(2.1, 2.3), P(2.8, 4), P(5, 3.2), P(5.5, 2.1)}
 local names = {"A", "B", "C", "D", "E"}
 local half = map.scale({1, .5})
