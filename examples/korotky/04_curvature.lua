@@ -2,8 +2,8 @@
 -- kappa(x) of each model through the pins A..E with free ends: the polynomial spline (7)
 -- (yellow), the Ferguson lambda-spline of Ex. 1 (magenta), Ferguson (28) (cyan) and the
 -- elastic reference (green).  The elastic line has kappa = 0 at its free ends and the least
--- integral of kappa^2; the polynomial is C2 but swings far more; the Ferguson joints are G2 (no jumps).  A graph:
--- kappa against x, the two axes at different scales.
+-- integral of kappa^2; the polynomial is C2 but swings far more; the Ferguson joints are G2
+-- (no jumps).  A graph: kappa against x, the two axes at different scales.
 local pts = {P(1.2, .9), P(2.1, 2.3), P(2.8, 4), P(5, 3.2), P(5.5, 2.1)}
 local tg = {1.134, 2.840, 0.985, -1.8154, -2.460}
 local models = {
