@@ -34,9 +34,11 @@ local function straight_at(l)
   return roots
 end
 
+local at = {{160, 140}, {480, 140}, {330, 355}}   -- 2d, 2e above, 2f below
+local caption_at = {P(20, 30), P(340, 30), P(20, 300)}
 for k, g in ipairs(guides) do
-  local x0 = 110 + (k - 1) * 212
-  camera(map.translate(V(x0, 235)) * map.scale({23, -23}) *
+  local x0, y0 = at[k][1], at[k][2]
+  camera(map.translate(V(x0, y0)) * map.scale({27, -27}) *
          map.perspective(P(-3, -10, 7), P(3, 2, 1)), {hidden = "dashed"})
   local s = korotky.conic_sweep{U = AD, V = BC, T = g.l, P = p, Q = q}
   s:wireframe{nu = 9, nv = 0, color = 11, boundary = true}
@@ -48,5 +50,5 @@ for k, g in ipairs(guides) do
     label(i == 1 and "a" or "c", AD(4 * u))
   end
   camera(nil)
-  label(g.name, P(x0 - 70, 455), "e", 11)
+  label(g.name, caption_at[k], "e", 11)
 end
