@@ -42,6 +42,11 @@ near(dist(rect(0, 0), A), 0, 1e-12, "the inlet starts at A")
 near(dist(rect(0, .5), O), 0, 1e-12, "the inlet's corner is O")
 near(dist(rect(0, .25), mid(A, O)), 0, 1e-12, "the inlet runs along AO")
 near(dist(rect(0, .75), mid(O, D)), 0, 1e-12, "and along OD")
+-- the inlet as korotky.conic_arc gives it: the line pair, whose elements are a clear error
+local pair = korotky.conic_arc(P(-1, 0), V(1, 1.6), P(1, 0), V(-1, 1.6), P(0, 1.6))
+check.err(function() korotky.conic_elements(pair) end,
+          "korotky.conic_elements: the line pair U W V (T = W, the weight infinite) is a degenerate conic: its lines meet at W = P(0.0, 1.6)",
+          "the line pair has no centre or axes")
 local s = conic_of(rect, 1)
 truthy(s.circle, "the outlet is a circle")
 near(s.semi[1], 1, 1e-9, "of radius 1")
