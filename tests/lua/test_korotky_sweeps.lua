@@ -1,5 +1,5 @@
 -- The conic sweeps of Korotky (2015) Figs. 2f, 3a and 3c as the gallery builds them
--- (examples/korotky/06, 13, 14; issue 24): the kinds of the generators, the straight
+-- (examples/korotky/13, 14, 16; issue 24): the kinds of the generators, the straight
 -- generators of the concave shell, the degenerate inlet AOD (T = W).
 local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
 local eq, near, truthy = check.eq, check.near, check.truthy

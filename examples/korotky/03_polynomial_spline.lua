@@ -6,7 +6,8 @@
 -- "a substantial difference", which the compression makes smaller.  3b (right), clamped ends:
 -- the clamped spline (9) (its printed d3 = +0.0171 is a misprint: -0.0171 meets D) with end
 -- slopes 0.2 and -0.3, and the compressed (9) with 0.1 and -0.15, against the elastic lines
--- with those end directions and the fixed lengths 7.70 and 5.51 of Fig. 2 (script 00b).  Equal units on both axes (60 px a unit).
+-- with those end directions and the fixed lengths 7.70 and 5.51 of Fig. 2 (script 02).
+-- Equal units on both axes (60 px a unit).
 local pts = {P(1.2, .9), P(2.1, 2.3), P(2.8, 4), P(5, 3.2), P(5.5, 2.1)}
 local names = {"A", "B", "C", "D", "E"}
 local half = map.scale({1, .5})

@@ -1,5 +1,5 @@
 -- Korotky (2015) Fig. 2d, 2e, 2f: the shell on the contour ABCD for a convex, straight, concave l
--- The contour and its determinant are those of Fig. 2a, 2b (script 12): the frontal conic
+-- The contour and its determinant are those of Fig. 2a, 2b (script 11): the frontal conic
 -- links AB (y = 4) and DC (y = 0), the lateral waves AD and BC, the conoid (AD, p) and the
 -- cylindroid (BC, q).  In each plane y = const the generator is the conic through U0 on AD,
 -- V0 on BC and T on the guide l = LL', tangent to the rulings U0 P and V0 Q.  The guide l

@@ -1,7 +1,7 @@
 -- Korotky (2015) Fig. 1a: the fishing boat whose parts the 4-D constructions model
 -- The prototype of Fig. 1: the hull is four copies of the bow planking of Fig. 1c (script
--- 15), mirrored in the keel's vertical plane and about the midship frame CD (a double-ender),
--- and the sail is the triangle ABC of Fig. 1b (script 07), set on the deck with its luff AC
+-- 10), mirrored in the keel's vertical plane and about the midship frame CD (a double-ender),
+-- and the sail is the triangle ABC of Fig. 1b (script 09), set on the deck with its luff AC
 -- along the mast.  Each is the xyz projection of a 4-D surface (the meets of two pencils of
 -- 2-planes); here they are one 3-D scene, seen in axonometry at equal units: the hull and the
 -- sail hide what lies behind them (dashed).
@@ -14,7 +14,7 @@ local CD = curve(function(v) return P(xC * v, L, zD + (zC - zD) * (1 - (1 - v)^2
 local Z, X = V(0, 0, 1, 0), V(1, 0, 0, 0)
 local bow = korotky.two_pencils{omega = {BC, AD, Z}, delta = {X, AB, CD}}
 
--- the sail of Fig. 1b: x its camber, y its height, z along its foot (script 07)
+-- the sail of Fig. 1b: x its camber, y its height, z along its foot (script 09)
 local sA, sB, sC = P(0, 0, 0, 0), P(0, 0, 4, 4), P(0, 6, .3, 2)
 local sail = korotky.two_pencils{omega = {sC, bezier{sA, P(1.6, 0, 2, 2), sB}, Z},
                                  delta = {X, bezier{sA, P(0, 3, -.2, 1), sC}, bezier{sB, P(0, 3, 2.9, 3), sC}}}
