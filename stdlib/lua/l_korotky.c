@@ -6,7 +6,7 @@
  *   korotky.ferguson_tangents(points, tangents [, {wA =, wE =, start =}]) -> curve, moduli
  *   korotky.ferguson_substitution(points, tangents, wA, z1 [, "min"|"max"])
  *                                                              -> curve, moduli, quadratics
- *   korotky.elastic(points [, {ends =, pieces =}])             -> curve, energy (C2 spline)
+ *   korotky.elastic(points [, {ends =, pieces =, length =}])   -> curve, energy (C2 spline)
  *   korotky.deviation(c1, c2 [, samples])  korotky.joint_jumps(c)  korotky.energy(c)
  *   korotky.conic_arc(U, tU, V, tV, T)                         -> curve, w, kind
  *   korotky.conic_sweep{U =, V =, T =, P =, Q =}               -> surface
@@ -14,6 +14,7 @@
  *   korotky.graphical_slope(samples, x [, window])             -> slope, angle in degrees
  * A tangent is a slope tg(delta) (the direction (cos delta, sin delta), x growing) or a 2-D
  * vector.  Errors of the solvers name the knot (#1 is the first point). */
+#include <stdio.h>
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -228,16 +229,25 @@ static int read_ends(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg elastic_keys[] = {
     {.name = "ends", .kind = PCL_ANY, .read = read_ends, .shown = "{tA, tE}",
      .expect = "{tangent at the first point, tangent at the last} (slopes or non-zero 2-D vectors)"},
-    {.name = "pieces", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 4, .shown = "4"}, PCL_END};
+    {.name = "pieces", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 4, .shown = "4"},
+    {.name = "length", .kind = PCL_NUMBER, .flags = PCL_POS, .shown = "free"}, PCL_END};
 static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN), A_OPTIONS("opts", elastic_keys), PCL_END};
 
 static int l_elastic(lua_State *L) {
     double p[2 * PC_ELASTIC_MAXN], E;
-    pcl_val a[4] = {{.list = p, .cap = 2 * PC_ELASTIC_MAXN}};
+    pcl_val a[5] = {{.list = p, .cap = 2 * PC_ELASTIC_MAXN}};
     PCL_READ(L, a);
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
-    pc_curve *c = pc_elastic(n, p, pieces, a[2].present ? a[2].v : NULL, &E, &st);
+    double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
+    pc_curve *c = pc_elastic_length(n, p, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
     if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide");
+    if (!c && st == PC_EDOMAIN) {
+        char num[32];
+        snprintf(num, sizeof num, "%.6g", len);
+        return pcl_fail(L, "length %s is not longer than the polyline through the points", num);
+    }
+    if (!c && st == PC_EDIM && len > 0 && (n == 2 && pieces == 1))
+        return pcl_fail(L, "a length needs a free node: two points with one piece are a segment");
     if (!c && st == PC_EDIM)
         return pcl_fail(L, "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
     push_new_curve(L, c, st, "korotky.elastic");
@@ -421,7 +431,7 @@ static const pcl_fn fns[] = {
      "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
     PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics",
      "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
-    PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length, as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
+    PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
     PCL_FN("korotky.joint_jumps", l_joint_jumps, curve_arg, "dkappa, dangle, knot", "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump."),

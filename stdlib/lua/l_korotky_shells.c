@@ -149,7 +149,9 @@ static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
-    if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && c->ncp == 3;
+    /* an arc, or the line pair of korotky.conic_arc with T = W (two quadratic pieces, told
+     * apart in l_conic_elements) */
+    if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
     for (int i = 0; i < 6; i++) {
         lua_geti(L, idx, i + 1);
@@ -170,7 +172,27 @@ static int l_conic_elements(lua_State *L) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
     pc_conic_info o;
-    int st = a[0].obj ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
+    const pc_curve *c = a[0].obj;
+    if (c && c->ncp == 5) {   /* the degenerate section AOD of Fig. 3c: no centre, no axes */
+        double q[5][2];
+        for (int i = 0; i < 5; i++) {
+            double w = c->cp[3 * i + 2];
+            q[i][0] = w != 0 ? c->cp[3 * i] / w : NAN;
+            q[i][1] = w != 0 ? c->cp[3 * i + 1] / w : NAN;
+        }
+        /* both pieces straight: U, its midpoint, W and W, its midpoint, V */
+        int pair = 1;
+        for (int k = 0; k < 2 && pair; k++) {
+            const double *a = q[2 * k], *m = q[2 * k + 1], *b = q[2 * k + 2];
+            double cr = (m[0] - a[0]) * (b[1] - a[1]) - (m[1] - a[1]) * (b[0] - a[0]);
+            pair = isfinite(cr) && fabs(cr) <= 1e-12 * (1 + hypot(b[0] - a[0], b[1] - a[1]) * hypot(m[0] - a[0], m[1] - a[1]));
+        }
+        if (!pair)
+            return pcl_argfail(L, 1, "must be a 2-D conic arc (one rational quadratic piece) or the coefficients {a, b, c, d, e, f}, got a curve of two pieces");
+        return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: its lines meet at W = P(%f, %f)",
+                        q[2][0], q[2][1]);
+    }
+    int st = c ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
     if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1");

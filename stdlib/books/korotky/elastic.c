@@ -65,6 +65,7 @@ static double piece_energy(const double *P0, const double *P1, const double *d0,
 typedef struct {
     int n, K, nodes, clamped;
     const double *p;
+    double length, lambda, mu;  /* a fixed length: the augmented Lagrangian's target, multiplier, weight */
     double ends[4];            /* clamped: the unit end directions */
     double base[2 * EL_MAXNODES], normal[2 * EL_MAXNODES];
 } elastic_ctx;
@@ -148,22 +149,54 @@ static void model(const elastic_ctx *e, const double *v, double *xy, double *h, 
     spline_derivs(e->nodes, xy, h, e->clamped ? d0 : NULL, e->clamped ? d1 : NULL, D);
 }
 
-static double energy_of(void *ud, const double *v) {
-    const elastic_ctx *e = ud;
+/* Length of one plane Hermite piece (16-point Gauss-Legendre on two halves). */
+static double piece_length(const double *P0, const double *P1, const double *d0, const double *d1) {
+    double len = 0;
+    for (int half = 0; half < 2; half++)
+        for (int k = 0; k < 16; k++) {
+            double x = k < 8 ? 0.5 - 0.5 * GL_X[7 - k] : 0.5 + 0.5 * GL_X[k - 8];
+            double t = 0.5 * (half + x), w = 0.25 * GL_W[k < 8 ? 7 - k : k - 8];
+            double dh[4] = {-6 * t + 6 * t * t, 6 * t - 6 * t * t, 1 - 4 * t + 3 * t * t, -2 * t + 3 * t * t};
+            double r0 = dh[0] * P0[0] + dh[1] * P1[0] + dh[2] * d0[0] + dh[3] * d1[0];
+            double r1 = dh[0] * P0[1] + dh[1] * P1[1] + dh[2] * d0[1] + dh[3] * d1[1];
+            len += w * hypot(r0, r1);
+        }
+    return len;
+}
+
+/* The bending energy of the model and (if len is not NULL) its length. */
+static double energy_length(const elastic_ctx *e, const double *v, double *len) {
     double xy[2 * EL_MAXNODES], h[EL_MAXNODES], D[2 * EL_MAXNODES];
     model(e, v, xy, h, D);
-    double E = 0;
+    double E = 0, S = 0;
     for (int j = 0; j + 1 < e->nodes; j++) {
         /* piece j over t in [0, 1]: d/dt = h_j d/du */
         double d0[2] = {h[j] * D[2 * j], h[j] * D[2 * j + 1]};
         double d1[2] = {h[j] * D[2 * j + 2], h[j] * D[2 * j + 3]};
         E += piece_energy(xy + 2 * j, xy + 2 * j + 2, d0, d1);
+        if (len) S += piece_length(xy + 2 * j, xy + 2 * j + 2, d0, d1);
     }
+    if (len) *len = S;
     return E;
+}
+
+/* The objective: the energy, with a fixed length the augmented Lagrangian
+ * E + lambda (S - L) + mu/2 (S - L)^2 (its minimisers tend to the constrained minimum as
+ * lambda is updated, without mu growing: the problem stays well conditioned). */
+static double energy_of(void *ud, const double *v) {
+    const elastic_ctx *e = ud;
+    if (!(e->length > 0)) return energy_length(e, v, NULL);
+    double S, E = energy_length(e, v, &S), g = S - e->length;
+    return E + e->lambda * g + 0.5 * e->mu * g * g;
 }
 
 pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angles,
                      double *energy, int *status) {
+    return pc_elastic_length(n, p, pieces, end_angles, 0, energy, status);
+}
+
+pc_curve *pc_elastic_length(int n, const double *p, int pieces, const double *end_angles,
+                            double length, double *energy, int *status) {
     if (n < 2 || n > PC_ELASTIC_MAXN || pieces < 0 || pieces > 4) {
         *status = PC_EDIM;
         return NULL;
@@ -176,7 +209,7 @@ pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angle
             *status = PC_ENONFINITE;
             return NULL;
         }
-    if (end_angles && (!isfinite(end_angles[0]) || !isfinite(end_angles[1]))) {
+    if ((end_angles && (!isfinite(end_angles[0]) || !isfinite(end_angles[1]))) || !isfinite(length)) {
         *status = PC_ENONFINITE;
         return NULL;
     }
@@ -185,6 +218,14 @@ pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angle
             *status = PC_ECOINCIDENT;
             return NULL;
         }
+    if (length != 0) {   /* a curve through the points is longer than their polyline */
+        double poly = 0;
+        for (int i = 1; i < n; i++) poly += hypot(p[2 * i] - p[2 * i - 2], p[2 * i + 1] - p[2 * i - 1]);
+        if (!(length > poly * (1 + 1e-9))) {
+            *status = PC_EDOMAIN;
+            return NULL;
+        }
+    }
     static const elastic_ctx zero;
     elastic_ctx e = zero;
     e.n = n;
@@ -234,15 +275,40 @@ pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angle
         int iters = 0;
         int st = pc_minimize(nv, energy_of, &e, v, 1e-8, 1e-6, 20000, &E, &iters);
         if (getenv("PC_ELASTIC_DEBUG")) fprintf(stderr, "elastic: %d unknowns, %d iterations, status %d, E %.9g\n", nv, iters, st, E);
+        if (st == PC_OK && length > 0) {
+            /* the fixed length (a clamped ruler keeps its length between the clamps): from the
+             * free minimum, the augmented Lagrangian's outer loop, lambda += mu (S - L) */
+            e.length = length;
+            e.mu = 100;
+            double S = 0;
+            int outer = 0;
+            st = PC_ENOCONVERGE;
+            for (; outer < 40; outer++) {
+                /* an inner minimisation stopped by its iteration limit still improves v: the
+                 * outer loop decides by the length met */
+                int s2 = pc_minimize(nv, energy_of, &e, v, 1e-9, 1e-6, 5000, NULL, &iters);
+                if (s2 != PC_OK && s2 != PC_ENOCONVERGE) { st = s2; break; }
+                energy_length(&e, v, &S);
+                if (getenv("PC_ELASTIC_DEBUG"))
+                    fprintf(stderr, "elastic: outer %d, %d iterations, S - L %.3g\n", outer, iters, S - length);
+                if (fabs(S - length) <= 1e-8 * length) { st = PC_OK; break; }
+                e.lambda += e.mu * (S - length);
+            }
+            if (st == PC_ENOCONVERGE && fabs(S - length) <= 1e-6 * length) st = PC_OK;
+            E = energy_length(&e, v, NULL);
+        }
         if (st != PC_OK) {
             *status = st;
             return NULL;
         }
+    } else if (length > 0) {
+        *status = PC_EDIM;   /* nothing free: the length cannot be met (two points, one piece) */
+        return NULL;
     }
     double xy[2 * EL_MAXNODES], h[EL_MAXNODES], D[2 * EL_MAXNODES];
     double dout[2 * EL_MAXNODES], din[2 * EL_MAXNODES], u[EL_MAXNODES];
     model(&e, v, xy, h, D);
-    if (nv == 0) E = energy_of(&e, v);
+    if (nv == 0) E = energy_length(&e, v, NULL);
     /* span i of the result runs over [i, i + 1]: its pieces keep their parameter ratios, so
      * the curve is C2 inside a span and at a pin only the speed changes (curvature and
      * tangent are continuous there) */

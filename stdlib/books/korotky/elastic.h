@@ -27,6 +27,14 @@
 #define PC_ELASTIC_MAXN 12
 pc_curve *pc_elastic(int n, const double *p, int pieces, const double *end_angles,
                      double *energy, int *status);
+/* The same with a fixed length (length > 0; 0 leaves it free): the least-energy curve through
+ * the points whose length is `length`, as a clamped ruler keeps its length between the
+ * clamps (the article's second experiment; its length is not given).  Solved from the free
+ * minimum by an augmented Lagrangian (length met to 1e-6 relative, usually 1e-8).  PC_EDOMAIN unless the
+ * length exceeds the polyline through the points; PC_EDIM when nothing is free (two points,
+ * one piece); the other statuses as pc_elastic. */
+pc_curve *pc_elastic_length(int n, const double *p, int pieces, const double *end_angles,
+                            double length, double *energy, int *status);
 
 /* --- measures of a model against another (the article compares with the elastic line) --- */
 

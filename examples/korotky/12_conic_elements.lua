@@ -16,14 +16,14 @@ line(U0, W, 8); line(V0, W, 8); line(U0, V0, 8)
 pen{dash = {5, 3}}
 for _, a in ipairs(el.asymptotes) do line(O - a * 9, O + a * 9, 12) end
 pen{}
-for _, a in ipairs(el.axes) do line(O - a * 6, O + a * 6, 7) end
+for _, a in ipairs(el.axes) do line(O - a * 4.5, O + a * 4.5, 7) end
 k2:draw{color = 11}
 pset(O, 15); pset(W, 15); pset(T, 14)
-label("U0", U0, nil, 15); label("V0", V0, nil, 15); label("T", T, nil, 14)
+label("$U_0$", U0, nil, 15); label("$V_0$", V0, nil, 15); label("T", T, nil, 14)
 label("W", W, nil, 15); label("O", O, nil, 15)
 for i, a in ipairs(el.asymptotes) do   -- each asymptote named where it crosses y = 0.8
-  label("e" .. i, O + a * ((.8 - O.y) / a.y), a.x * a.y > 0 and "nw" or "ne", 12)
+  label("$e_" .. i .. "$", O + a * ((.8 - O.y) / a.y), a.x * a.y > 0 and "nw" or "ne", 12)
 end
-label("k2", k2(.25), nil, 11)
-label(string.format("%s, w = %.3f: centre O at y = %.3f, semi-axes %.3f, %.3f", kind, w,
-                    O.y, el.semi[1], el.semi[2]), P(-5.8, -1.1), "e", 7)
+label("$k_2$", k2(.25), nil, 11)
+label(string.format("%s, w = %.3f, centre O at y = %.3f", kind, w, O.y), P(-3.3, -.95), "e", 7)
+label(string.format("semi-axes %.3f, %.3f", el.semi[1], el.semi[2]), P(-3.3, -1.3), "e", 7)

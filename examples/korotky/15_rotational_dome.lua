@@ -5,7 +5,8 @@
 -- at A and B are the lines where that plane cuts the fixed tangent planes pi_A and pi_B of
 -- the dome (the contact surfaces degenerate to planes).  pi_A and pi_B hold the x direction
 -- (so the ground generators are e1 and e2) and lean inward at 60 degrees: the shell is
--- symmetric about the zx plane and changes from e1 to e2.
+-- symmetric about the zx plane and changes from e1 to e2.  The support ellipses, the ridge and
+-- the axis AB are strokes of the scene: dashed where the shell hides them.
 local A, B = P(0, -2.5, 0), P(0, 2.5, 0)
 local g = math.rad(60)
 local nA, nB = V(0, -math.sin(g), math.cos(g)), V(0, math.sin(g), math.cos(g))
@@ -14,18 +15,17 @@ local nA, nB = V(0, -math.sin(g), math.cos(g)), V(0, math.sin(g), math.cos(g))
 local l = korotky.conic_arc(P(-2, 0, 0), V(0, 0, 1), P(3.5, 0, 0), V(0, 0, 1), P(.4, 0, 2.4))
 local dome = korotky.conic_revolve{A = A, B = B, nA = nA, nB = nB, ridge = l}
 
-camera(map.translate(V(320, 235)) * map.scale({70, -70}) * map.perspective(P(9, -8, 8), P(.6, 0, .6)))
+camera(map.translate(V(320, 235)) * map.scale({70, -70}) * map.perspective(P(9, -8, 8), P(.6, 0, .6)),
+       {hidden = "dashed"})
 -- the ground ellipses (the generators at the ends of l) and the axis AB
 local e1, e2 = dome:iso("u", 0), dome:iso("u", 1)
-dome:wireframe{nu = 12, nv = 12, color = 11, hidden = "dashed"}
+dome:wireframe{nu = 12, nv = 12, color = 11, silhouette = true}
 e1:draw{color = 14}
 e2:draw{color = 14}
 l:draw{color = 12}
-pen{dash = {4, 3}}
 line(A, B, 8)
-pen{}
-label("A", A, nil, 15); label("B", B, nil, 15)
-label("e1", e1(.5), nil, 14); label("e2", e2(.5), nil, 14)
-label("l", l(.5), nil, 12)
+label("A", A); label("B", B)
+label("$e_1$", e1(.5)); label("$e_2$", e2(.5))
+label("l", l(.5))
 camera(nil)
 label("a conic turned about AB, tangent to fixed planes at A and B", P(20, 460), "e", 7)
