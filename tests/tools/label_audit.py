@@ -120,10 +120,19 @@ def shapes(e, clip, clips, boxes, segs):
         clip = clips.get(cp[5:-1], clip)
     mine = []
     if t == "text":
-        x, y = float(e.get("x")), float(e.get("y"))
-        fs = float(e.get("font-size", "16"))
-        w = float(e.get("textLength", str(0.5 * fs * len(e.text or ""))))
-        boxes.append((x, y - 0.75 * fs, x + w, y + 0.25 * fs))
+        # a math label is one <text> of <tspan>s (subscripts smaller and lower): its box is
+        # the union of theirs
+        parts = [e] if e.get("x") is not None else [s for s in e if tag(s) == "tspan"]
+        bs = []
+        for s in parts:
+            x, y = float(s.get("x")), float(s.get("y"))
+            fs = float(s.get("font-size", e.get("font-size", "16")))
+            w = float(s.get("textLength", str(0.5 * fs * len(s.text or ""))))
+            bs.append((x, y - 0.75 * fs, x + w, y + 0.25 * fs))
+        if bs:
+            boxes.append((min(b[0] for b in bs), min(b[1] for b in bs),
+                          max(b[2] for b in bs), max(b[3] for b in bs)))
+        return
     elif t == "path":
         mine = path_segments(e.get("d", ""))
     elif t == "line":
