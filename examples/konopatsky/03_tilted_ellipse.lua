@@ -10,7 +10,7 @@ for i, th in ipairs{0, math.pi / 4, math.pi / 2} do
   local e, Pa, Qa = conic.tilted(A, B, C, th, 2, 1)
   e:draw{color = 15}
   line(C, Pa, 10) line(C, Qa, 10)
-  label("A", A, nil, 9) label("B", B, nil, 9) label("C", C, nil, 9)
-  label("P", Pa, nil, 10) label("Q", Qa, nil, 10)
+  label("$A$", A, nil, 9) label("$B$", B, nil, 9) label("$C$", C, nil, 9)
+  label("$P$", Pa, nil, 10) label("$Q$", Qa, nil, 10)
   label(({"theta = 0", "theta = pi/4", "theta = pi/2"})[i], P(0, -5.5), "e", 7)
 end

@@ -19,4 +19,4 @@ conic.circle{A = A, B = B, C = C, R = 0.5}:draw{color = 13}
 local M = conic.circle{A = A, B = B, C = C, delta = math.pi / 3}(1.0)
 line(A, M, 7) line(C, M, 7)
 for _, p in ipairs{A, B, C, M} do circle(p, 0.015, 15) end
-label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15) label("M", M, nil, 15)
+label("$A$", A, nil, 15) label("$B$", B, nil, 15) label("$C$", C, nil, 15) label("$M$", M, nil, 15)

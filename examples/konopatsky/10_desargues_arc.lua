@@ -17,4 +17,4 @@ window(-1, -1.5, 11, 8)
 local a, b, d = P(0, 0), P(5, 7), P(10, 0)
 path({a, b, d}, {color = 12})
 oneratio.desargues(a, b, b, d):draw{color = 9}
-label("A", a, nil, 15) label("B = C", b, "n", 15) label("D", d, nil, 15)
+label("$A$", a, nil, 15) label("$B = C$", b, "n", 15) label("$D$", d, nil, 15)

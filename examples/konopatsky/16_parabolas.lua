@@ -15,8 +15,8 @@ local t = 0.3
 local B1, B2 = lerp(A1, A3, t), lerp(A3, A2, t)
 local M = lerp(B1, B2, t)
 pen{dash = {4, 3}} line(B1, B2, 7) pen()
-mark(A1, "A1", "sw") mark(A2, "A2", "se") mark(A3, "A3", "n")
-mark(B1, "B1", "w", 11) mark(B2, "B2", "e", 11) mark(M, "M", "s", 14)
+mark(A1, "$A_1$", "sw") mark(A2, "$A_2$", "se") mark(A3, "$A_3$", "n")
+mark(B1, "$B_1$", "w", 11) mark(B2, "$B_2$", "e", 11) mark(M, "$M$", "s", 14)
 label("(2.58) t = 0.3", P(-0.4, -0.5), "e", 7)
 
 view(325, 40, 635, 440)
@@ -35,7 +35,7 @@ pen{dash = {4, 3}}
 line(TC, C, 7) line(A, K, 7) line(TC, K, 7) line(T, N, 7) line(N, B, 7)
 pen()
 local axis = C - TC
-line(C, C - axis * 0.3, 12) label("C_inf", C - axis * 0.3, "e", 12)
-mark(A, "A", "sw") mark(B, "B", "se") mark(C, "C", "ne") mark(TC, "TC", "s", 11) mark(K, "K", "n", 11)
-mark(T, "T", "s", 11) mark(N, "N", "e", 11) mark(Mt, "M", "ne", 14)
+line(C, C - axis * 0.3, 12) label("$C_\\infty$", C - axis * 0.3, "e", 12)
+mark(A, "$A$", "sw") mark(B, "$B$", "se") mark(C, "$C$", "ne") mark(TC, "TC", "s", 11) mark(K, "$K$", "n", 11)
+mark(T, "$T$", "s", 11) mark(N, "$N$", "e", 11) mark(Mt, "$M$", "ne", 14)
 label("(2.62) tC = 0.25, t = 0.35", P(-1, -1.2), "e", 7)

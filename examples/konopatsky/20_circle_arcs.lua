@@ -16,8 +16,8 @@ local arc = conic.circle{A = A, B = B, C = C}
 arc:draw{color = 10}
 local K = arc(0.5)
 pen{dash = {4, 3}} line(C, O1, 7) line(O1, A, 8) line(O1, B, 8) pen()
-mark(A, "A", "se") mark(B, "B", "nw") mark(C, "C", "ne") mark(O, "O", "sw") mark(O1, "O1", "sw")
-mark(K, "K", "ne", 14)
+mark(A, "$A$", "se") mark(B, "$B$", "nw") mark(C, "$C$", "ne") mark(O, "$O$", "sw") mark(O1, "$O_1$", "sw")
+mark(K, "$K$", "ne", 14)
 label(string.format("k = 1/2 + 2h^2/c^2 = %.6f", k), P(-0.3, -0.2), "e", 7)
 label(string.format("h = %.4f  c = %.4f", dist(O, K), dist(A, B)), P(-0.3, -0.28), "e", 7)
 
@@ -40,7 +40,7 @@ local function arcmark(at, from, to, r, c)
   path(pts, {color = c})
   return at + unit(u + v) * (r * 1.5)
 end
-label("phi", arcmark(C2, A2, M, 0.12, 14), "c", 14)
-label("delta", arcmark(M, C2, A2, 0.12, 14), "c", 14)
-mark(A2, "A", "sw") mark(B2, "B", "n") mark(C2, "C", "se") mark(M, "M", "n", 14)
+label("$\\varphi$", arcmark(C2, A2, M, 0.12, 14), "c", 14)
+label("$\\delta$", arcmark(M, C2, A2, 0.12, 14), "c", 14)
+mark(A2, "$A$", "sw") mark(B2, "$B$", "n") mark(C2, "$C$", "se") mark(M, "$M$", "n", 14)
 label("angle AMC = delta = pi/3", P(-0.12, -0.38), "e", 7)

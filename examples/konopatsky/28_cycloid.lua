@@ -27,7 +27,7 @@ for row, concave in ipairs{false, true} do
     for i = 0, 40 do local a = 2 * math.pi * i / 40 pts[#pts + 1] = O + V(math.cos(a), math.sin(a)) end
     path(pts, {color = 8})
   end
-  mark(C, "C", "sw") mark(A, "A", "nw") mark(B, "B", "s") mark(Pp, "P", "w", 11) mark(Q, "Q", "s", 11)
-  mark(M, "M", "ne", 14)
+  mark(C, "$C$", "sw") mark(A, "$A$", "nw") mark(B, "$B$", "s") mark(Pp, "$P$", "w", 11) mark(Q, "$Q$", "s", 11)
+  mark(M, "$M$", "ne", 14)
   label(concave and "concave (3.12), Fig. 2.36" or "convex (3.11), Figs. 2.34-2.35", P(-4, 2.3), "e", 7)
 end

@@ -17,7 +17,7 @@ for _, t in ipairs{0.2, 0.4, 0.6, 0.8} do
 end
 curve31:draw{color = 10}
 local s = oneratio.simplex_scheme(A, B, C, 0.4)
-mark(A, "A", "sw") mark(B, "B", "se") mark(C, "C", "n") mark(s.N, "N", "nw", 11) mark(s.M, "M", "n", 14)
+mark(A, "$A$", "sw") mark(B, "$B$", "se") mark(C, "$C$", "n") mark(s.N, "$N$", "nw", 11) mark(s.M, "$M$", "n", 14)
 label("AN/AC = NM/NB = t = 0.4", P(-0.8, -1.1), "e", 7)
 
 view(325, 60, 635, 420)
@@ -27,5 +27,5 @@ curve31:draw{color = 10}
 local tA = curve31:deriv(0)
 pen{dash = {4, 3}} line(A, A + tA * 0.6, 12) line(A, mid(B, C), 8) pen()
 line(B, C, 12)
-mark(A, "A", "sw") mark(B, "B", "se") mark(C, "C", "n") mark(mid(B, C), "", "n", 8)
+mark(A, "$A$", "sw") mark(B, "$B$", "se") mark(C, "$C$", "n") mark(mid(B, C), "", "n", 8)
 label("tangent BC at B; at A the median", P(-0.8, -1.1), "e", 7)

@@ -11,6 +11,6 @@ for i, nodes in ipairs(sets) do
   path(ctrl, {color = 8})
   for j = 2, #ctrl - 1 do mark(ctrl[j], #ctrl == 3 and "C" or "C" .. (j - 1), "n", 7) end
   interp.lagrange(nodes):draw{color = 10}
-  for j, p in ipairs(nodes) do mark(p, "M" .. j, j == 1 and "sw" or "se") end
+  for j, p in ipairs(nodes) do mark(p, "$M_" .. j .. "$", j == 1 and "sw" or "se") end
   label(i == 1 and "order 2 (4.10), t = 0, 1/2, 1" or "order 3 (4.16), t = 0, 1/3, 2/3, 1", P(-1.3, -2), "e", 7)
 end

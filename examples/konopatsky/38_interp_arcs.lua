@@ -13,8 +13,8 @@ for i, C5 in ipairs{P(9, 2), P(9, -2)} do
   local arc = interp.arc(M, C2, C5)
   pen{dash = {4, 3}} line(M[1], C2, 12) line(M[4], C5, 12) pen()
   arc:draw{color = 10}
-  for j, p in ipairs(M) do mark(p, "M" .. j, "s") end
-  mark(C2, "C2", "n", 12) mark(C5, "C5", "n", 12)
+  for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", "s") end
+  mark(C2, "$C_2$", "n", 12) mark(C5, "$C_5$", "n", 12)
   label(i == 1 and "Fig. 4.4a convex" or "Fig. 4.4b inflection", P(-1.3, -2.6), "e", 7)
 end
 view(5, 245, 310, 470)
@@ -22,7 +22,7 @@ window(-1.5, -3, 10.5, 4)
 local cps = interp.controls(M)
 path(cps, {color = 8})
 interp.lagrange(M):draw{color = 14}
-for j, p in ipairs(M) do mark(p, "M" .. j, "s") end
+for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", "s") end
 label("order 3 through the same nodes", P(-1.3, -2.6), "e", 7)
 view(320, 245, 625, 470)
 window(-1.5, -3, 10.5, 4)
@@ -31,6 +31,6 @@ local C2b = P(1, 3)
 local arc3 = interp.arc(M3, C2b)
 pen{dash = {4, 3}} line(M3[1], C2b, 12) pen()
 arc3:draw{color = 10}
-for j, p in ipairs(M3) do mark(p, "M" .. j, "s") end
-mark(C2b, "C2", "n", 12)
+for j, p in ipairs(M3) do mark(p, "$M_" .. j .. "$", "s") end
+mark(C2b, "$C_2$", "n", 12)
 label("Fig. 4.5 one tangent M1C2", P(-1.3, -2.6), "e", 7)

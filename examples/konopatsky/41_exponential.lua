@@ -20,7 +20,7 @@ for i, kind in ipairs{"exp", "exp1"} do
   pen{dash = {4, 3}}
   curve(function(t) return cs(t) - shift end, 0, 1):draw{color = 6}
   pen()
-  for j, p in ipairs(M) do mark(p, "M" .. j, "n") end
+  for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", "n") end
   local _, affine = interp.basis(kind == "exp"
     and {function(t) return math.exp(0.5 * t) end, function(t) return math.exp(-t) end, function(t) return math.exp(2 * t) end}
     or {function(t) return math.exp(0.5 * t) end, function(t) return math.exp(-t) end,
