@@ -1,4 +1,4 @@
--- Konopatsky §2.1.1.4 (Fig. 2.7): the ellipse as a compressed circle, and its foci (Figs. 2.2-2.3)
+-- Konopatsky §2.1.1.4 (Fig. 2.7): the ellipse as a compressed circle
 -- Set E of the digest: C(0,0), A(4,0), B(0,2).  The circle of radius a about C, the point P on
 -- it at the angle phi, its foot Q on CA and M on QP with QM/QP = b/a; the ellipse (2.24) in
 -- green, the foci F1, F2 and the focal radii of M (|F1M| + |F2M| = 2a).  Circle and ellipse are
