@@ -1,7 +1,7 @@
 -- Konopatsky §2.1.5 (Fig. 2.18): the five-point conic tangent to CA at A (p1 = 1)
--- The scheme of Fig. 2.16 (A(0,0), B(1,0), C(0.5,1), p2 = 0.7, q2 = 0.8, the free p1, q3 as
--- there 0.7 and 0.8) with A1 moved to A (p1 = 1: the tangent CA at A, (2.94)); conic.five_points2 gives the corrected (2.93)-(2.96).  The
--- tangent lines in red.
+-- The scheme of Fig. 2.16 (A(0,0), B(1,0), C(0.5,1), p2 = 0.7, q2 = 0.8, the free p1, q3 as there
+-- 0.7 and 0.8) with A1 moved to A (p1 = 1: the tangent CA at A, (2.94)); conic.five_points2 gives
+-- the corrected (2.93)-(2.96).  The tangent lines in red.
 -- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
 local function frame(x1, y1, x2, y2)
   local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2

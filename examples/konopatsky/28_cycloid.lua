@@ -1,8 +1,8 @@
 -- Konopatsky §2.8 (Fig. 2.34): the scheme of the cycloid as a contour arc
--- The digest's C(0,0), A(0,2), B(pi,0) (|CA| = 2r, |CB| = pi r: a true cycloid).  The scheme (whose caption the
--- conversion lost): P = (A - C)(1 - cos phi)/2 + C on CA, Q = (B - C)(pi - phi + sin phi)/pi + C
--- on CB and M = P + Q - C (parallel translation), at phi = 2 with the rolling circle; the convex
--- arc "(3.11)" for phi in [0, pi] (green), the rest of the arch dashed.
+-- The digest's C(0,0), A(0,2), B(pi,0) (|CA| = 2r, |CB| = pi r: a true cycloid).  The scheme
+-- (whose caption the conversion lost): P = (A - C)(1 - cos phi)/2 + C on CA, Q = (B - C)(pi - phi
+-- + sin phi)/pi + C on CB and M = P + Q - C (parallel translation), at phi = 2 with the rolling
+-- circle; the convex arc "(3.11)" for phi in [0, pi] (green), the rest of the arch dashed.
 -- equal units on the 4:3 canvas around the figure's points, pad world units on every side
 local function frame(pts, pad)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge

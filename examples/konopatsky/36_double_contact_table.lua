@@ -1,10 +1,10 @@
 -- Konopatsky §3.4 (Table 3.1): curves of double contact for eleven blending functions, with their curvature
--- M = P(1 - f(v)) + Q f(v) of the arcs (2.97) P (k_p) and Q (k_q) in the simplex A(0,0),
--- B(10,0), C(4,6) (the table gives no coordinates): the curve in green, its curvature graph
--- (s |kappa| over v in [0, 1] along AB) in blue; two (k_p, k_q) pairs per f, as the table lists
--- them.  The book scales the curvature by 10; a panel whose peak would not fit takes the scale s
--- that brings its peak to the top (printed in its corner).  For negative k the arcs pass through
--- infinity and the curve breaks into pieces; f = ln v is taken from v = 0.001 (its limit at 0 is A).
+-- M = P(1 - f(v)) + Q f(v) of the arcs (2.97) P (k_p) and Q (k_q) in the simplex A(0,0), B(10,0),
+-- C(4,6) (the table gives no coordinates): the curve in green, its curvature graph (s |kappa| over
+-- v in [0, 1] along AB) in blue; two (k_p, k_q) pairs per f, as the table lists them.  The book
+-- scales the curvature by 10; a panel whose peak would not fit takes the scale s that brings its
+-- peak to the top (printed in its corner).  For negative k the arcs pass through infinity and the
+-- curve breaks into pieces; f = ln v is taken from v = 0.001 (its limit at 0 is A).
 local A, B, C = P(0, 0), P(10, 0), P(4, 6)
 local rows = {
   {"0.5", function() return 0.5 end, {0.3, 0.5}, {0.2, 0.8}},

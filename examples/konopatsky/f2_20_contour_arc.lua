@@ -1,7 +1,7 @@
 -- Konopatsky §2.1.5 (Fig. 2.20): the contour arc through A2 tangent to CA at A and CB at B
--- The scheme of Fig. 2.16 (A(0,0), B(1,0), C(0.5,1), p2 = 0.7, q2 = 0.8, the free p1, q3 as
--- there 0.7 and 0.8) with both (p1 = q3 = 1: a contour arc of smoothness 1 through A2, the corrected (2.96)); conic.five_points2 gives the corrected (2.93)-(2.96).  The
--- tangent lines in red.
+-- The scheme of Fig. 2.16 (A(0,0), B(1,0), C(0.5,1), p2 = 0.7, q2 = 0.8, the free p1, q3 as there
+-- 0.7 and 0.8) with both (p1 = q3 = 1: a contour arc of smoothness 1 through A2, the corrected
+-- (2.96)); conic.five_points2 gives the corrected (2.93)-(2.96).  The tangent lines in red.
 -- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
 local function frame(x1, y1, x2, y2)
   local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2

@@ -1,7 +1,7 @@
 -- Konopatsky §2.8 (Fig. 2.36): the concave cycloid
--- The digest's C(0,0), A(0,2), B(pi,0) (|CA| = 2r, |CB| = pi r: a true cycloid).  The concave arc "(3.12)" with
--- Q = (B - C)(pi - phi - sin phi)/pi + C, for phi in [0, pi] (green) from B with tangent BC to the
--- cusp at A with tangent AC, [pi, 2 pi] dashed; its scheme at phi = 2.
+-- The digest's C(0,0), A(0,2), B(pi,0) (|CA| = 2r, |CB| = pi r: a true cycloid).  The concave arc
+-- "(3.12)" with Q = (B - C)(pi - phi - sin phi)/pi + C, for phi in [0, pi] (green) from B with
+-- tangent BC to the cusp at A with tangent AC, [pi, 2 pi] dashed; its scheme at phi = 2.
 -- equal units on the 4:3 canvas around the figure's points, pad world units on every side
 local function frame(pts, pad)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge

@@ -1,6 +1,6 @@
 -- Konopatsky §5.2 (Fig. 5.3): Runge's function by Lagrange's polynomial on six Chebyshev nodes
--- f(x) = 1/(1 + 25x^2) on [-1, 1] (red) against the degree-5 Lagrange polynomial through it at
--- six Chebyshev nodes, the comparison of §5.2 (its mean square error over 101 samples in the caption,
+-- f(x) = 1/(1 + 25x^2) on [-1, 1] (red) against the degree-5 Lagrange polynomial through it at six
+-- Chebyshev nodes, the comparison of §5.2 (its mean square error over 101 samples in the caption,
 -- approx.lagrange_mse).  A graph: x and y have different scales.
 local runge = function(x) return 1 / (1 + 25 * x * x) end
 local xs = approx.chebyshev(6)
