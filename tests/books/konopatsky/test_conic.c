@@ -330,7 +330,7 @@ static void test_tilted_scheme(void **state) {
     NEAR(K[2], 0, 0);
     NEAR(K[0], 0.8, 1e-12);
     NEAR(K[1], 0.6, 1e-12);
-    double Af[2] = {3, 2.4};   /* on AB: no triangle */
+    double Af[2] = {3, 2.25};   /* on AB: no triangle */
     assert_int_equal(pc_ellipse_tilted_scheme(2, A, B, Af, 1, K, Ar, &tau), PC_ECOLLINEAR);
 }
 
