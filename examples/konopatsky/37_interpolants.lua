@@ -1,7 +1,7 @@
 -- Konopatsky §4.3 (Fig. 4.1): the interpolation curve of order 2
 -- Chosen nodes (the book prints none): the curve through M1, M2, M3 at t = 0, 1/2, 1 (green) is
 -- the quadratic Bezier curve on the control polygon (grey) whose inner point is the book's
--- C = -M1/2 + 2M2 - M3/2 (4.9) (interp.controls); the nodes in white.
+-- C = -M1/2 + 2M2 - M3/2 (4.9) (interp.controls); the nodes in white, x(t) and y(t) at the top.
 -- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
 local function frame(x1, y1, x2, y2)
   local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
@@ -14,7 +14,11 @@ for i, nodes in pairs{[1] = sets[1]} do
   local ctrl = interp.controls(nodes)
   path(ctrl, {color = 8})
   for j = 2, #ctrl - 1 do mark(ctrl[j], #ctrl == 3 and "$C$" or "$C_" .. (j - 1) .. "$", "n", 7) end
-  interp.lagrange(nodes):draw{color = 10}
+  local c = interp.lagrange(nodes)
+  c:draw{color = 10}
+  local ex, ey = konopatsky.equation(c)          -- the curve's x(t), y(t) as ch. 4 prints them
+  text{x = 8, y = 14, text = ex, units = "device", color = 10}
+  text{x = 8, y = 32, text = ey, units = "device", color = 10}
   for j, p in ipairs(nodes) do mark(p, "$M_" .. j .. "$", j == 1 and "sw" or "se") end
   label(i == 1 and "order 2 (4.10), t = 0, 1/2, 1" or "order 3 (4.16), t = 0, 1/3, 2/3, 1", P(-1.3, -2), "e", 7)
 end

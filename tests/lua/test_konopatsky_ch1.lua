@@ -182,5 +182,12 @@ check.eq(px, "x = 2v^2 + 7v", "a quadratic's x(v)")
 check.eq(py, "y = -18v^2 + 19v", "a quadratic's y(v)")
 check.err(function() konopatsky.equation(curve(function(t) return P(t, t) end, 0, 1)) end,
           "function curve has no power-basis form", "a function curve")
+-- Fig. 5.5's cubic through the book's nodes prints as the book prints it:
+-- x = -14.67944t^3 + 22.01916t^2 + 0.66028t - 4, y = -11.921353t^2 + 11.921353t
+local ell = approx.curve(function(x) return math.sqrt(math.max(9 - 9 * x * x / 16, 0)) end,
+                         {-4, -1.877016, 1.877016, 4})
+local e55x, e55y = konopatsky.equation(ell)
+check.eq(e55x, "x = -14.6794t^3 + 22.0191t^2 + 0.660284t - 4", "Fig. 5.5 x(t)")
+check.eq(e55y, "y = -11.9214t^2 + 11.9214t", "Fig. 5.5 y(t)")
 
 check.done()
