@@ -1,35 +1,40 @@
 -- Konopatsky §2.1.6 (Fig. 2.21): conic arcs by the engineering discriminant
--- Triangle ABC with the median CT1; the arcs (2.97) for k = 0.3 (hyperbola, red),
--- 0.5 (parabola, yellow) and 0.7 (ellipse, green), each through its shoulder point K on the
--- median; the construction of the current point at u = 0.4 for k = 0.7: T on AB, P = AK x CT,
--- Q = BK x CT, M = AQ x BP.
+-- Triangle ABC, A(0,0), B(4,0), C(2,3), with the median CT1; the arcs (2.97) for k = 0.3
+-- (hyperbola, red), 0.5 (parabola, yellow) and 0.7 (ellipse, green), each through its shoulder
+-- point K = (T1 - C)k + C on the median.  The scheme of the current point at u = 0.2 for
+-- k = 0.7 (conic.ed_scheme): T on AB, N its harmonic conjugate with respect to A, B, P = AK x CT,
+-- Q = BK x CT, and M = KN x BP = AQ x BP on the arc.
+-- equal units on the 4:3 canvas around the figure's points, pad world units on every side
+local function frame(pts, pad)
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for _, p in ipairs(pts) do
+    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
+  end
+  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
+end
 local A, B, C = P(0, 0), P(4, 0), P(2, 3)
-local T1 = mid(A, B)
-window(-0.6, -0.8, 4.6, 3.6)
+local k, u = 0.7, 0.2
+local s = conic.ed_scheme(A, B, C, k, u)
+frame({A, B, C, s.N}, 0.4)
 path({A, C, B, A}, {color = 8})
-pen{dash = {4, 3}}
-line(C, T1, 8)
-pen()
+line(s.N, A, 8)                          -- AB extended to N
+pen{dash = {4, 3}} line(C, s.T1, 8) pen()
 local colors = {[0.3] = 12, [0.5] = 14, [0.7] = 10}
-for _, k in ipairs{0.3, 0.5, 0.7} do
-  local arc = conic.ed(A, B, C, k)
-  arc:draw{color = colors[k]}
-  local K = arc(0.5)
-  circle(K, 0.03, colors[k])
-  label(string.format("k = %.1f", k), K, "e", colors[k])
+for _, kk in ipairs{0.3, 0.5, 0.7} do
+  local arc = conic.ed(A, B, C, kk)
+  arc:draw{color = colors[kk]}
+  mark(arc(0.5), "dot", 4, colors[kk])
+  label(string.format("$k = %.1f$", kk), arc(0.78), nil, colors[kk])
 end
--- the construction at u = 0.4 for k = 0.7
-local k, u = 0.7, 0.4
-local K = lerp(C, T1, k)
-local T = lerp(A, B, u)
-local Pp, Q = meet(A, K, C, T), meet(B, K, C, T)
-local M = meet(A, Q, B, Pp)
 pen{dash = {2, 2}}
-line(C, T, 7) line(A, Q, 7) line(B, Pp, 7)
+line(C, s.T, 7) line(A, s.Q, 7) line(B, s.P, 7) line(s.N, s.K, 7)
+line(A, s.K, 11) line(B, s.K, 11)
 pen()
-for name, p in pairs{A = A, B = B, C = C, T1 = T1, T = T, P = Pp, Q = Q, M = M} do
-  circle(p, 0.03, 15)
-end
-label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15)
-label("T1", T1, nil, 15) label("T", T, nil, 15) label("P", Pp, nil, 7)
-label("Q", Q, nil, 7) label("M", M, nil, 15)
+for _, p in ipairs{A, B, C, s.T1, s.T, s.N} do mark(p, "dot", 5, 15) end
+for _, p in ipairs{s.P, s.Q} do mark(p, "dot", 5, 11) end
+mark(s.M, "dot", 6, 14)
+label("$A$", A) label("$B$", B) label("$C$", C) label("$T_1$", s.T1) label("$T$", s.T)
+label("$N$", s.N) label("$K$", s.K, nil, 10) label("$P$", s.P, nil, 11) label("$Q$", s.Q, nil, 11)
+label("$M$", s.M, nil, 14)
+caption(string.format("k = %.1f, u = %.1f:  M = (%.6f, %.6f)", k, u, s.M.x, s.M.y), "bottom", 7)

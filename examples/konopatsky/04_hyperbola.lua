@@ -1,21 +1,30 @@
--- Konopatsky §2.1.2 (Figs. 2.10, 2.12): the hyperbola in simplex CAB and its focal parametrisation
--- Set H: C(0,0), A(3,0), B(0,2).  The fundamental rectangle, the asymptotes (dashed), the foci;
--- (2.56) drawn by the focal angle at F1: the branch through A (green, phi in the corrected range)
--- and the other branch (yellow, the book's printed range).  Both run through their points at
--- infinity, where the path breaks instead of crossing the plane.
+-- Konopatsky §2.1.2 (Fig. 2.10): the hyperbola in the simplex CAB
+-- Set H: C(0,0), A(3,0), B(0,2), angle BCA = 90 degrees: A the vertex, B the end of the
+-- imaginary semi-axis.  The fundamental rectangle on CA and CB, the asymptotes (dashed) along
+-- its diagonals, the foci F1 = (A - C)e + C and F2 = -(A - C)e + C (2.43), e = sqrt 13/3; both
+-- branches by the central angle (2.49), each breaking at its points at infinity.
+-- equal units on the 4:3 canvas around the figure's points, pad world units on every side
+local function frame(pts, pad)
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for _, p in ipairs(pts) do
+    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
+  end
+  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
+end
 local C, A, B = P(0, 0), P(3, 0), P(0, 2)
-local c = math.sqrt(13)
-window(-9, -6, 9, 6)
-line(P(-8.5, 0), P(8.5, 0), 8) line(P(0, -5.8), P(0, 5.8), 8)
-path({P(3, 2), P(-3, 2), P(-3, -2), P(3, -2), P(3, 2)}, {color = 8})
-pen{dash = {4, 3}}
-line(P(-9, -6), P(9, 6), 7) line(P(-9, 6), P(9, -6), 7)
-pen()
-local H = {C = C, A = A, B = B, by = "focal"}
+local F1, F2, e = conic.foci(C, A, B, "hyperbola")
+frame({P(-6, -3.4), P(6, 3.4)}, 0.2)
+line(P(-7, 0), P(7, 0), 8) line(P(0, -4), P(0, 4), 8)
+path({A + (B - C), 2 * C - A + (B - C), 2 * C - A - (B - C), A - (B - C), A + (B - C)}, {color = 8})
+pen{dash = {4, 3}} line(P(-7, -14 / 3), P(7, 14 / 3), 7) line(P(-7, 14 / 3), P(7, -14 / 3), 7) pen()
+local H = {C = C, A = A, B = B, by = "angle"}
 conic.hyperbola(H):draw{color = 10}
 H.branch = 2
-conic.hyperbola(H):draw{color = 14}
-local F1, F2 = P(c, 0), P(-c, 0)
-for _, p in ipairs{A, B, C, F1, F2} do circle(p, 0.08, 15) end
-label("C", C, nil, 15) label("A", A, nil, 15) label("B", B, nil, 15)
-label("F1", F1, nil, 11) label("F2", F2, nil, 11)
+conic.hyperbola(H):draw{color = 10}
+line(C, A, 15) line(C, B, 15)
+for _, p in ipairs{A, B, C} do mark(p, "dot", 5, 15) end
+for _, p in ipairs{F1, F2} do mark(p, "dot", 5, 11) end
+label("$C$", C) label("$A$", A) label("$B$", B)
+label("$F_1$", F1, nil, 11) label("$F_2$", F2, nil, 11)
+caption(string.format("a = 3, b = 2, c = |CF1| = %.6f, e = %.6f", dist(C, F1), e), "bottom", 7)

@@ -1,22 +1,27 @@
--- Konopatsky §2.1.8.2 (Figs. 2.25, 2.26): circles by an angular parameter
+-- Konopatsky §2.1.8.2 (Fig. 2.25): the circle by an angular parameter, (2.115)
 -- A(0;0), B(0,5;1), C(1;0) and delta = pi/3, as the book gives them: (2.115) for phi in
 -- [0, 2pi/3] (green, where angle AMC = delta) and [2pi/3, pi] (yellow, where it is pi - delta);
--- the circumcircle arc (2.116) A -> B -> C (cyan, delta = beta) and (2.118), the circle of radius
--- 0.5 about C (magenta).
+-- the current point M at phi = 1 with the chords MA, MC.
+-- equal units on the 4:3 canvas around the figure's points, pad world units on every side
+local function frame(pts, pad)
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for _, p in ipairs(pts) do
+    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
+  end
+  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
+end
 local A, B, C = P(0, 0), P(0.5, 1), P(1, 0)
-window(-0.7, -0.8, 1.9, 1.15)
-path({A, B, C, A}, {color = 8})
 local F = {A = A, B = B, C = C, delta = math.pi / 3}
+local M = conic.circle(F)(1.0)
+frame({P(-0.1, -0.6), P(1.1, 1.05)}, 0.05)
+path({A, B, C, A}, {color = 8})
 F.range = {0, 2 * math.pi / 3}
 conic.circle(F):draw{color = 10}
 F.range = {2 * math.pi / 3, math.pi}
 conic.circle(F):draw{color = 14}
-local beta = angle(B, A, C)
-pen{dash = {3, 2}}
-conic.circle{A = A, B = B, C = C, delta = beta, range = {0, math.pi - beta}}:draw{color = 11}
-pen()
-conic.circle{A = A, B = B, C = C, R = 0.5}:draw{color = 13}
-local M = conic.circle{A = A, B = B, C = C, delta = math.pi / 3}(1.0)
 line(A, M, 7) line(C, M, 7)
-for _, p in ipairs{A, B, C, M} do circle(p, 0.015, 15) end
-label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15) label("M", M, nil, 15)
+angle_mark(A, M, C, "$\\delta$", 22, 11)
+for _, p in ipairs{A, B, C, M} do mark(p, "dot", 5, 15) end
+label("$A$", A) label("$B$", B) label("$C$", C) label("$M$", M)
+caption(string.format("angle AMC = %.6f = pi/3", angle(M, A, C)), "bottom", 7)

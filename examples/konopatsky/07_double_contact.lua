@@ -22,7 +22,7 @@ for i, f in ipairs(fs) do
   v = 0.4
   line(Pc(v), Qc(v), 7)
   circle(M(v), 0.1, 15)
-  label("P", Pc(v), nil, 12) label("Q", Qc(v), nil, 12) label("M", M(v), nil, 10)
-  label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15)
+  label("$P$", Pc(v), nil, 12) label("$Q$", Qc(v), nil, 12) label("$M$", M(v), nil, 10)
+  label("$A$", A, nil, 15) label("$B$", B, nil, 15) label("$C$", C, nil, 15)
   label(f[1], P(0, -0.9), "e", 7)
 end

@@ -10,7 +10,7 @@ for r, k in ipairs(rows) do
     window(-1, -1.2, 11, 7.6)
     path({A, C, B, A}, {color = 8})
     oneratio.closed(A, B, C, k[1], k[2], s):draw{color = 10}
-    label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15)
+    label("$A$", A, nil, 15) label("$B$", B, nil, 15) label("$C$", C, nil, 15)
     label(string.format("scheme %d  kP = %.1f  kQ = %.1f", s, k[1], k[2]), P(-0.8, -0.9), "e", 7)
   end
 end

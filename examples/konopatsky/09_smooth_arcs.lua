@@ -1,28 +1,33 @@
--- Konopatsky §3.6 (Figs. 3.9, 3.10): contour arcs of smoothness order n = 1..5
--- A(0,0), B(10,0) and the tangents' meet C(4,6): M1 (the quadratic Bezier) to M5 in five
--- colours; the higher the order, the flatter the arc at its ends (zero curvature for n >= 2).
--- The scheme of M2 at t = 0.4: P2 on AC, Q1 on CB and M on P2Q1.  Each M_n is the general law
--- M_n = (A - C) t̄^(n+1)/D_n + (B - C) t^(n+1)/D_n + C, D_n = t̄^n + t̄^(n-1) t + ... + t^n
--- (the digest's, which gives the book's M2..M5), written as a point equation and compiled.
-local A, B, C = P(0, 0), P(10, 0), P(4, 6)
-window(-1, -1.5, 11, 7.5)
-path({A, C, B}, {color = 8})
-local colors = {15, 14, 10, 11, 13}
-local tp = param "t"
-for n = 1, 5 do
-  local D = 0
-  for k = 0, n do D = D + bar(tp)^k * tp^(n - k) end
-  local M = curve((A - C)*(bar(tp)^(n + 1)/D) + (B - C)*(tp^(n + 1)/D) + C, 0, 1)
-  M:draw{color = colors[n]}
-  label("M" .. n, M(0.5), "e", colors[n])
+-- Konopatsky §3.6 (Fig. 3.9): the scheme of the contour arc of smoothness order 2
+-- A(0,0), B(10,0) and the tangents' meet C(4,6) (chosen; the book prints none).  At t = 0.4
+-- (oneratio.smooth_scheme): P1, P2 on AC and Q1, Q2 on CB with
+-- AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t, and M on P2Q1 (yellow) on the arc
+-- M2 = (A - C)t'^3/(1 - t't) + (B - C)t^3/(1 - t't) + C (green), flat at both ends, beside the
+-- quadratic Bezier arc M1 (grey) of the same A, B, C.
+-- equal units on the 4:3 canvas around the figure's points, pad world units on every side
+local function frame(pts, pad)
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for _, p in ipairs(pts) do
+    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
+  end
+  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
 end
-local t, tb = 0.4, 0.6
-local d = 1 - tb * t
-local P2 = (A * tb * tb + C * t) / d
-local Q1 = (B * t * t + C * tb) / d
-pen{dash = {3, 2}}
-line(P2, Q1, 7)
-pen()
-circle(P2, 0.08, 7) circle(Q1, 0.08, 7) circle(lerp(P2, Q1, t), 0.08, 14)
-label("P2", P2, nil, 7) label("Q1", Q1, nil, 7)
-label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15)
+local A, B, C, t = P(0, 0), P(10, 0), P(4, 6), 0.4
+local s = oneratio.smooth_scheme(A, B, C, 2, t)
+local P1, P2, Q1, Q2, M = s.P[1], s.P[2], s.Q[1], s.Q[2], s.M
+frame({A, B, C}, 0.6)
+path({A, C, B}, {color = 8})
+oneratio.smooth(A, B, C, 1):draw{color = 7}
+oneratio.smooth(A, B, C, 2):draw{color = 10}
+pen{dash = {3, 2}} line(A, P2, 11) line(P1, C, 11) line(C, Q2, 11) line(Q1, B, 11) pen()
+line(P2, Q1, 14)
+for _, p in ipairs{A, B, C} do mark(p, "dot", 5, 15) end
+for _, p in ipairs{P1, P2, Q1, Q2} do mark(p, "dot", 5, 11) end
+mark(M, "dot", 6, 14)
+label("$A$", A) label("$B$", B) label("$C$", C)
+label("$P_1$", P1, nil, 11) label("$P_2$", P2, nil, 11)
+label("$Q_1$", Q1, nil, 11) label("$Q_2$", Q2, nil, 11) label("$M$", M, nil, 14)
+label("$M_2$", oneratio.smooth(A, B, C, 2)(0.75), nil, 10)
+label("$M_1$", oneratio.smooth(A, B, C, 1)(0.75), nil, 7)
+caption(string.format("t = %.1f:  P2M/P2Q1 = %.4f", t, dist(P2, M) / dist(P2, Q1)), "bottom", 7)

@@ -10,7 +10,7 @@ local v = interp.adaptive(nodes)
 local ada = interp.lagrange(nodes, v)
 uni:draw{color = 12}
 ada:draw{color = 10}
-for i, p in ipairs(nodes) do circle(p, 0.08, 15) label("M" .. i, p, nil, 15) end
+for i, p in ipairs(nodes) do circle(p, 0.08, 15) label("$M_" .. i .. "$", p, nil, 15) end
 local xmin = math.huge
 for t = 0, 1, 0.001 do xmin = math.min(xmin, uni(t).x) end
 label(string.format("universal (red): min x = %.4f", xmin), P(-1.3, 4.2), "e", 12)

@@ -10,7 +10,7 @@ interp.lagrange(nodes):draw{color = 14}
 pen()
 local r, co = interp.rational22(nodes)
 r:draw{color = 10}
-for i, p in ipairs(nodes) do circle(p, 0.06, 15) label("A" .. i, p, nil, 15) end
+for i, p in ipairs(nodes) do circle(p, 0.06, 15) label("$A_" .. i .. "$", p, nil, 15) end
 -- the book prints the fit with the constant of the denominator 3 (x) and 15 (y)
 label(string.format("x = (%.4g t^2 %+.4g t %+.4g)/(%.4g t^2 %+.4g t %+.4g)", 3 * co[1][1], 3 * co[1][2],
       3 * co[1][3], 3 * co[1][4], 3 * co[1][5], 3), P(0.3, 5.8), "e", 10)

@@ -19,6 +19,6 @@ plot(M, {t = {t, 1}, color = 8})                              -- and still to co
 pen()
 local N = lerp(A, C, t)
 line(N, B, 10)                                                -- the moving 1-simplex NB
-circle(N, 3, 10); label("N", N, nil, 10)
-circle(M(t), 4, 12); label("M", M(t), nil, 12)
+circle(N, 3, 10); label("$N$", N, nil, 10)
+circle(M(t), 4, 12); label("$M$", M(t), nil, 12)
 label(string.format("AN/AC = NM/NB = t = %.2f", t), P(320, 450), "c", 15)

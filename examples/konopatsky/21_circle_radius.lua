@@ -15,5 +15,5 @@ local p, q = S:params(M)
 local T = (A - C) * p + C
 line(C, M, 11)
 pen{dash = {4, 3}} line(T, M, 7) pen()
-mark(A, "A", "sw") mark(B, "B", "n") mark(C, "C", "se") mark(T, "T", "s", 11) mark(M, "M", "nw", 14)
+mark(A, "$A$", "sw") mark(B, "$B$", "n") mark(C, "$C$", "se") mark(T, "$T$", "s", 11) mark(M, "$M$", "nw", 14)
 label(string.format("R = %.1f  phi = %.1f  p = %.4f  q = %.4f", R, phi, p, q), P(-0.35, -0.53), "e", 7)

@@ -17,8 +17,8 @@ local u = 0.4
 local Pp, Q = (A - C) * (1 - u) + C, (B - C) * u + C
 local K = conic.redundant(C, A, B, u, u)
 pen{dash = {4, 3}} line(A, Q, 7) line(B, Pp, 7) pen()
-mark(C, "C", "sw") mark(A, "A", "se") mark(B, "B", "nw") mark(Pp, "P", "s", 12) mark(Q, "Q", "w", 12)
-mark(K, "K", "ne", 14)
+mark(C, "$C$", "sw") mark(A, "$A$", "se") mark(B, "$B$", "nw") mark(Pp, "$P$", "s", 12) mark(Q, "$Q$", "w", 12)
+mark(K, "$K$", "ne", 14)
 label("u = v = t (2.121)", P(0.75, 0.95), "e", 10)
 label("u = t, v = t^2", P(0.75, 0.88), "e", 14)
 label("u = t^2, v = t", P(0.75, 0.81), "e", 11)

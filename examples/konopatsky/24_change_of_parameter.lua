@@ -22,8 +22,8 @@ local phi = angle(C, A, M)
 local pts = {}
 for i = 0, 12 do local a = phi * i / 12 pts[#pts + 1] = C + V(math.cos(a), math.sin(a)) * 0.6 end
 path(pts, {color = 12})
-label("phi", C + V(math.cos(phi / 2), math.sin(phi / 2)) * 0.75, "c", 12)
-mark(C, "C", "sw") mark(A, "A", "se") mark(B, "B", "n") mark(K, "K", "s", 11) mark(L, "L", "nw", 11)
-mark(M, "M", "ne", 14)
+label("$\\varphi$", C + V(math.cos(phi / 2), math.sin(phi / 2)) * 0.75, "c", 12)
+mark(C, "$C$", "sw") mark(A, "$A$", "se") mark(B, "$B$", "n") mark(K, "$K$", "s", 11) mark(L, "$L$", "nw", 11)
+mark(M, "$M$", "ne", 14)
 label(string.format("t = %.2f: phi = %.4f, CK + KM = %.4f, |CM| = %.4f", t, phi,
       dist(C, K) + dist(K, M), dist(C, M)), P(-0.7, -0.5), "e", 7)

@@ -15,7 +15,7 @@ for i, pr in ipairs(pairs_) do
   conic.ed(A, B, C, pr[1]):draw{color = 12}
   conic.ed(A, B, C, pr[2]):draw{color = 9}
   conic.cones(A, B, C, D, pr[1], pr[2], n):draw{color = 10}
-  label("A", A, nil, 15) label("B", B, nil, 15) label("C", C, nil, 15) label("D", D, nil, 15)
+  label("$A$", A, nil, 15) label("$B$", B, nil, 15) label("$C$", C, nil, 15) label("$D$", D, nil, 15)
   camera()
   label(string.format("fP = %.1f  fQ = %.1f", pr[1], pr[2]), P(-0.4, -0.56), "e", 7)
   label(pr[3], P(-0.4, -0.70), "e", 7)   -- 16 px below the line above

@@ -21,7 +21,7 @@ local t = 0.3
 local Pp, Q = lerp(A, C, t), lerp(D, B, t)
 line(Pp, Q, 11)
 local K = (A + B + C + D) / 4
-mark(A, "A", "w") mark(B, "B", "e") mark(C, "C", "n") mark(D, "D", "n") mark(S, "S", "n", 7)
-mark(Pp, "P", "w", 11) mark(Q, "Q", "e", 11) mark(lerp(Pp, Q, t), "M", "s", 14) mark(K, "K", "se", 14)
+mark(A, "$A$", "w") mark(B, "$B$", "e") mark(C, "$C$", "n") mark(D, "$D$", "n") mark(S, "$S$", "n", 7)
+mark(Pp, "$P$", "w", 11) mark(Q, "$Q$", "e", 11) mark(lerp(Pp, Q, t), "$M$", "s", 14) mark(K, "$K$", "se", 14)
 camera()
 label("AP/AC = DQ/DB = PM/PQ = t", P(-0.7, -1.0), "e", 7)

@@ -12,7 +12,7 @@ local lv = oneratio.levels({A, C1, C2, B}, 0.4)
 local P1, P2, P3 = lv[1][1], lv[1][2], lv[1][3]
 local Q1, Q2, M = lv[2][1], lv[2][2], lv[3][1]
 pen{dash = {4, 3}} path({P1, P2, P3}, {color = 11}) line(Q1, Q2, 13) pen()
-mark(A, "A", "sw") mark(B, "B", "se") mark(C1, "C1", "n") mark(C2, "C2", "n")
-mark(P1, "P1", "w", 11) mark(P2, "P2", "n", 11) mark(P3, "P3", "e", 11)
-mark(Q1, "Q1", "nw", 13) mark(Q2, "Q2", "ne", 13) mark(M, "M", "s", 14)
+mark(A, "$A$", "sw") mark(B, "$B$", "se") mark(C1, "$C_1$", "n") mark(C2, "$C_2$", "n")
+mark(P1, "$P_1$", "w", 11) mark(P2, "$P_2$", "n", 11) mark(P3, "$P_3$", "e", 11)
+mark(Q1, "$Q_1$", "nw", 13) mark(Q2, "$Q_2$", "ne", 13) mark(M, "$M$", "s", 14)
 label("AP1/AC1 = C1P2/C1C2 = C2P3/C2B = P1Q1/P1P2 = P2Q2/P2P3 = Q1M/Q1Q2 = 0.4", P(-0.9, -1.1), "e", 7)

@@ -13,6 +13,6 @@ local M = oneratio.double_contact(A, B, C, 0.3, 0.7)
 M:draw{color = 10}
 local v = 0.45
 pen{dash = {4, 3}} line(Pc(v), Qc(v), 7) pen()
-mark(A, "A", "sw") mark(B, "B", "se") mark(C, "C", "n")
-mark(Pc(v), "P", "n", 12) mark(Qc(v), "Q", "s", 12) mark(M(v), "M", "e", 14)
+mark(A, "$A$", "sw") mark(B, "$B$", "se") mark(C, "$C$", "n")
+mark(Pc(v), "$P$", "n", 12) mark(Qc(v), "$Q$", "s", 12) mark(M(v), "$M$", "e", 14)
 label("kp = 0.3, kq = 0.7, f(v) = v, v = 0.45", P(-0.8, -1.1), "e", 7)

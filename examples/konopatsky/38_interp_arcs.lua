@@ -1,36 +1,20 @@
--- Konopatsky §4.9 (Figs. 4.3-4.5): interpolation contour arcs with end tangents
--- The digest's nodes M = (0,0), (3,2), (6,2), (9,0) with the tangent handles C2 = (0,2) and
--- C5 = (9,2) (convex, Fig. 4.4a) or C5 = (9,-2) (with an inflection, Fig. 4.4b): the quintic
--- through the four nodes at u = 0, 1/3, 2/3, 1 with M'(0) = 5(C2 - M1), M'(1) = 5(M4 - C5)
--- (Fig. 4.3's scheme).  Bottom right (Fig. 4.5): the cubic through three nodes with the start
--- tangent M1C2 only.
-local function mark(p, name, _, c) circle(p, 0.1, c or 15) label(name, p, nil, c or 15) end
-local M = {P(0, 0), P(3, 2), P(6, 2), P(9, 0)}
-local C2 = P(0, 2)
-for i, C5 in ipairs{P(9, 2), P(9, -2)} do
-  view(5 + (i - 1) * 315, 10, 310 + (i - 1) * 315, 235)
-  window(-1.5, -3, 10.5, 4)
-  local arc = interp.arc(M, C2, C5)
-  pen{dash = {4, 3}} line(M[1], C2, 12) line(M[4], C5, 12) pen()
-  arc:draw{color = 10}
-  for j, p in ipairs(M) do mark(p, "M" .. j, "s") end
-  mark(C2, "C2", "n", 12) mark(C5, "C5", "n", 12)
-  label(i == 1 and "Fig. 4.4a convex" or "Fig. 4.4b inflection", P(-1.3, -2.6), "e", 7)
+-- Konopatsky §4.9 (Fig. 4.3): the interpolation contour arc through four nodes with two end tangents
+-- The digest's nodes M = (0,0), (3,2), (6,2), (9,0) and the tangent handles C2 = (0,2),
+-- C5 = (9,2): the quintic through the nodes at u = 0, 1/3, 2/3, 1 with M'(0) = 5(C2 - M1),
+-- M'(1) = 5(M4 - C5) (interp.arc, green), beside the cubic through the same nodes without the
+-- tangents (interp.lagrange, yellow, its control polygon grey).
+-- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
+local function frame(x1, y1, x2, y2)
+  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
 end
-view(5, 245, 310, 470)
-window(-1.5, -3, 10.5, 4)
-local cps = interp.controls(M)
-path(cps, {color = 8})
+local M = {P(0, 0), P(3, 2), P(6, 2), P(9, 0)}
+local C2, C5 = P(0, 2), P(9, 2)
+frame(-1, -1.5, 10, 3.5)
+path(interp.controls(M), {color = 8})
 interp.lagrange(M):draw{color = 14}
-for j, p in ipairs(M) do mark(p, "M" .. j, "s") end
-label("order 3 through the same nodes", P(-1.3, -2.6), "e", 7)
-view(320, 245, 625, 470)
-window(-1.5, -3, 10.5, 4)
-local M3 = {P(0, 0), P(4.5, 2), P(9, 0)}
-local C2b = P(1, 3)
-local arc3 = interp.arc(M3, C2b)
-pen{dash = {4, 3}} line(M3[1], C2b, 12) pen()
-arc3:draw{color = 10}
-for j, p in ipairs(M3) do mark(p, "M" .. j, "s") end
-mark(C2b, "C2", "n", 12)
-label("Fig. 4.5 one tangent M1C2", P(-1.3, -2.6), "e", 7)
+pen{dash = {4, 3}} line(M[1], C2, 12) line(M[4], C5, 12) pen()
+interp.arc(M, C2, C5):draw{color = 10}
+for j, p in ipairs(M) do mark(p, "dot", 5, 15) label("$M_" .. j .. "$", p) end
+mark(C2, "dot", 5, 12) mark(C5, "dot", 5, 12)
+label("$C_2$", C2, nil, 12) label("$C_5$", C5, nil, 12)

@@ -4,7 +4,7 @@
 -- divides the data along x (AN/AB = v2 of §4.10).  (a) Evenly spaced data (chosen): N = T and
 -- the arc is calm.  (b) Uneven data (the book's Fig. 4.7 nodes x = 8.89, 1.11, 0.33;
 -- y = 5, 7, 8): AN >> NB, yet the curve still puts M2 over T, so it swings back (an oscillation).
-local function mark(p, name, _, c, r) circle(p, r or 0.08, c or 15) label(name, p, nil, c or 15) end
+local function pt(p, name, c) mark(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 local cases = {{P(0, 0), P(4.5, 3), P(9, 0)}, {P(8.89, 5), P(1.11, 7), P(0.33, 8)}}
 local wins = {{-1.5, -2.5, 10.5, 6.5}, {-2.5, 2, 10, 11.5}}
 for i, M in ipairs(cases) do
@@ -18,8 +18,9 @@ for i, M in ipairs(cases) do
   path(ctrl, {color = 8}) line(M[1], M[3], 8)
   pen{dash = {4, 3}} line(Cc, T, 7) pen()
   interp.lagrange(M):draw{color = 10}
-  mark(M[1], "M1 = A", "s") mark(M[2], "M2", "e") mark(M[3], "M3 = B", "n")
-  mark(Cc, "C", "n", 7) mark(N, "N", "s", 14) mark(T, "T", "s", 7)
+  pt(M[1], "$M_1 = A$") pt(M[2], "$M_2$") pt(M[3], "$M_3 = B$") pt(Cc, "$C$", 7)
+  if dist(N, T) < 1e-9 then pt(T, "$N \\equiv T$", 14)     -- (a): one point, one label
+  else pt(N, "$N$", 14) pt(T, "$T$", 7) end
   label(string.format("(%s) AN/AB = %.3f", i == 1 and "a" or "b", v[2]),
         P(wins[i][1] + 0.2, wins[i][2] + 0.5), "e", 7)
 end

@@ -8,7 +8,7 @@ window(-1, -1.5, 10.5, 7.1)
 interp.prototype("desargues", M):draw{color = 12}
 interp.lagrange(M):draw{color = 10}
 interp.prototype("rational", M):draw{color = 6}
-for j, p in ipairs(M) do mark(p, "M" .. j, j < 3 and "nw" or "ne") end
+for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", j < 3 and "nw" or "ne") end
 label("Desargues (4.35)", P(-0.8, -0.6), "e", 12)
 label("cubic (4.16)", P(3.2, -0.6), "e", 10)
 label("rational (4.37)", P(6.2, -0.6), "e", 6)

@@ -1,17 +1,19 @@
--- Konopatsky §4.11 (Figs. 4.10, 4.11): exponential interpolation against the parabola
--- Three chosen nodes at t = 0, 1/2, 1 (the book gives neither its nodes nor its k).  Left
--- (Fig. 4.10): the exponential prototype (4.39) with k = (0.5, -1, 2) (brown) against the
--- parabola (4.10) (blue); its weights do not sum to 1 (interp.basis reports it), so the curve
--- moves when the origin does: the same nodes shifted by (40, 0) give the dashed curve, shifted
--- back.  Right (Fig. 4.11): the constrained variant, weights e^(k1 t), e^(k2 t) and the rest to
--- 1, with k = (0.5, -1): affine, it does not move.
+-- Konopatsky §4.11 (Fig. 4.10): exponential interpolation against the parabola
+-- Three chosen nodes at t = 0, 1/2, 1 (the book gives neither its nodes nor its k): the
+-- exponential prototype (4.39) with k = (0.5, -1, 2) (brown) against the parabola (4.10)
+-- (blue); its weights do not sum to 1 (interp.basis reports it), so the curve moves when the
+-- origin does: the same nodes shifted by (40, 0) give the dashed curve, shifted back.
+-- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
+local function frame(x1, y1, x2, y2)
+  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
+end
 local function mark(p, name, _) circle(p, 0.06, 15) label(name, p, nil, 15) end
 local M = {P(0, 0), P(2, 3), P(5, 1)}
 local shift = V(40, 0)
 local Ms = {M[1] + shift, M[2] + shift, M[3] + shift}
-for i, kind in ipairs{"exp", "exp1"} do
-  view(5 + (i - 1) * 315, 60, 310 + (i - 1) * 315, 420)
-  window(-1, -2, 6, 5)
+for i, kind in pairs{[1] = "exp"} do
+  frame(-1, -2, 6, 5)
   local k = kind == "exp" and {0.5, -1, 2} or {0.5, -1}
   interp.lagrange(M):draw{color = 9}
   local c = interp.prototype(kind, M, k)
@@ -20,7 +22,7 @@ for i, kind in ipairs{"exp", "exp1"} do
   pen{dash = {4, 3}}
   curve(function(t) return cs(t) - shift end, 0, 1):draw{color = 6}
   pen()
-  for j, p in ipairs(M) do mark(p, "M" .. j, "n") end
+  for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", "n") end
   local _, affine = interp.basis(kind == "exp"
     and {function(t) return math.exp(0.5 * t) end, function(t) return math.exp(-t) end, function(t) return math.exp(2 * t) end}
     or {function(t) return math.exp(0.5 * t) end, function(t) return math.exp(-t) end,

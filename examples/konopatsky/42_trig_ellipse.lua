@@ -8,7 +8,7 @@ for i, t1 in ipairs{math.pi, 2 * math.pi} do
   view(5 + (i - 1) * 315, 60, 310 + (i - 1) * 315, 420)
   window(-2.5, -4.5, 9.5, 5.5)
   interp.prototype("trig", M, 0, t1):draw{color = 10}
-  for j, p in ipairs(M) do mark(p, "M" .. j, "n") end
+  for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", "n") end
   if i == 2 then mark(mid(M[1], M[3]), "centre", "s", 7) end
   label(i == 1 and "(a) t in [0, pi]" or "(b) t in [0, 2 pi]", P(-2.2, -4), "e", 7)
 end

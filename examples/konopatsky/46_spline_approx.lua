@@ -16,5 +16,5 @@ for j = 0, 6 do nodes[j + 1] = P(xs(j / 6), ys(j / 6)) end
 pen{dash = {4, 3}} interp.lagrange(nodes):draw{color = 14} pen()
 for _, p in ipairs(nodes) do circle(p, 0.6, 12) end
 local data = {P(0, 0), P(20, 0), P(45, -47), P(55, 335), P(57, 26), P(62, 387)}
-for i, p in ipairs(data) do circle(p, 0.8, 15) label("A" .. i, p, nil, 15) end
+for i, p in ipairs(data) do circle(p, 0.8, 15) label("$A_" .. i .. "$", p, nil, 15) end
 label("printed x(t), y(t) green; t = j/6 nodes red; order-6 curve through them dashed", P(-7, -1390), "e", 7)

@@ -256,12 +256,17 @@ static int c_tilted(lua_State *L) {
     pcl_val a[6] = {0};
     PCL_READ(L, a);
     int d = a[0].n, st;
-    double P[PC_MAXDIM], Q[PC_MAXDIM];
+    double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
     statuscheck(L, pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
+    statuscheck(L, pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
     push(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), st);
     pcl_pushpoint(L, d, P);
     pcl_pushpoint(L, d, Q);
-    return 3;
+    if (K[d] == 0) pcl_pushvector(L, d, K);   /* theta = 0: CP parallel to AB */
+    else pcl_pushpoint(L, d, K);
+    pcl_pushpoint(L, d, Ar);
+    lua_pushnumber(L, tau);
+    return 6;
 }
 
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
@@ -1038,7 +1043,7 @@ static const pcl_fn conic_fns[] = {
     SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
     SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
     SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
-    PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes."),
+    PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
     PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
     SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
     PCL_FN("conic.triples", c_triples, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),

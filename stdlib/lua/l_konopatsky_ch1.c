@@ -8,12 +8,14 @@
  *   polar(C, A, B, rho, phi) -> M                     (2.117)/(2.118)
  *   rotate(C, A, B, phi) -> Q                         (2.138)
  *   moving_simplex(NA, NB, NC, gen) -> surface        Fig. 1.2
+ *   equation(c [, var]) -> x, y, ...                 the coordinates as the book prints them
  */
 #include <math.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
 #include "konop_ch1.h"
+#include "konop_print.h"
 
 /* the Cartesian coordinates of k declared points into out (rows of n) */
 static void rows(const pcl_val *a, int k, int n, double *out) {
@@ -171,6 +173,26 @@ static int k_moving_simplex(lua_State *L) {
     return 1;
 }
 
+/* The book's printed coordinates of a Bezier (rational or not) or B-spline curve's first piece */
+static int k_equation(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    const pc_curve *c = a[0].obj;
+    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
+    int deg, st = pc_curve_monomial(c, 0, coef, &deg);
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "a function curve has no power-basis form (only Bezier and B-spline curves: build the equation as bezier{...} or with conic.*, oneratio.*, interp.*)");
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    const char *var = a[1].present ? a[1].s : "t";
+    for (int x = 0; x < c->dim; x++) {
+        char buf[2048];
+        st = pc_k_coordinate_text(coef, c->dim, deg, x, var, buf, sizeof buf);
+        if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+        lua_pushstring(L, buf);
+    }
+    return c->dim;
+}
+
 #define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
 static const pcl_arg lambdas[] = {A_NUM("l1"), A_NUM("l2"), A_NUM("l3"), PCL_END};
 static const pcl_arg six[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), SAMEPT("B1"), SAMEPT("B2"), SAMEPT("B3"), PCL_END};
@@ -179,6 +201,7 @@ static const pcl_arg rows_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = 
 static const pcl_arg lp_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("P1"), SAMEPT("P2"), SAMEPT("P3"), PCL_END};
 static const pcl_arg polar_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
 static const pcl_arg rotate_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"), PCL_END};
+static const pcl_arg eq_args[] = {A_CURVE("c", 0), {.name = "var", .kind = PCL_STRING, .flags = PCL_OPT, .shown = "\"t\""}, PCL_END};
 static const pcl_arg ms_args[] = {A_CURVE("NA", 0), A_CURVE("NB", 0), A_CURVE("NC", 0), A_CURVE("gen", 0), PCL_END};
 
 static const pcl_fn fns[] = {
@@ -198,6 +221,8 @@ static const pcl_fn fns[] = {
     PCL_FN("konopatsky.rotate", k_rotate, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
     PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface",
            "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
+    PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...",
+           "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
     PCL_END};
 
 void pcl_open_konopatsky_ch1(lua_State *L) {

@@ -51,6 +51,14 @@ end
 local c, Pt, Qt = conic.tilted(P(0, 0), P(4, 3), P(5, -1), pi / 4, 2, 1)
 same(Pt, P(5.282843, 0.979899), "tilted P"); same(Qt, P(5.989949, -1.141421), "tilted Q")
 same(c(pi / 4), P(6.011929, -0.241053), "tilted M(pi/4)")
+-- Fig. 2.5's auxiliary points: K = CP x AB (beyond B at pi/4), the rotated A (|CA_| = b, and
+-- Q = (A_ - C) n/b + C), tau = pi - alpha - theta; theta = 0 makes K the direction of AB
+local _, _, _, K, Ar, tau = conic.tilted(P(0, 0), P(4, 3), P(5, -1), pi / 4, 2, 1)
+same(K, P(5.76, 4.32), "tilted K"); near(dist(Ar, P(5, -1)), math.sqrt(26), 1e-12, "|C Arot| = b")
+same((Ar - P(5, -1)) / math.sqrt(26) + P(5, -1), Qt, "Q from the rotated A")
+near(tau, pi - 0.840896668643165 - pi / 4, 1e-12, "tau")
+local _, _, _, K0 = conic.tilted(P(0, 0), P(4, 3), P(5, -1), 0, 2, 1)
+same(K0, V(0.8, 0.6), "theta = 0: K at infinity")
 
 -- circles, Fig. 2.25
 local F = {A = P(0, 0), B = P(0.5, 1), C = P(1, 0)}

@@ -168,4 +168,26 @@ near(area(Cr, Ar, rotate(0.7)) / area(Cr, Ar, Br), b * math.sin(0.7) / (a * math
 near(dist(Cr, rotate(0.7)), b, 1e-12, "(2.138) keeps |CA|")
 near(angle(Cr, Ar, rotate(0.7)), 0.7, 1e-12, "(2.138) turns by phi")
 
+-- the book's printed coordinates (konopatsky.equation): Fig. 2.17's x = 4t(9t + 0,8)/(70t^2 -
+-- 75t + 44,2), y = -8t(t - 1)/(14t^2 - 15t + 8,84) from the digest's reconstructed inputs, with
+-- the denominator made monic (70 and 14 are the book's own, arbitrary, scales)
+local c217 = conic.five_points2{C = P(0.5, 1), A = P(0, 0), B = P(1, 0), p1 = 0.7, p2 = 0.7, q2 = 0.8, q3 = 0.8}
+local ex, ey = konopatsky.equation(c217)
+check.eq(ex, "x = (0.514286t^2 + 0.0457143t)/(t^2 - 1.07143t + 0.631429)", "Fig. 2.17 x(t)")
+check.eq(ey, "y = (-0.571429t^2 + 0.571429t)/(t^2 - 1.07143t + 0.631429)", "Fig. 2.17 y(t)")
+-- a polynomial curve prints as ch. 4 prints its interpolants: the order-2 curve through
+-- (0,0), (4,5), (9,1) at t = 0, 1/2, 1
+local px, py = konopatsky.equation(interp.lagrange{P(0, 0), P(4, 5), P(9, 1)}, "v")
+check.eq(px, "x = 2v^2 + 7v", "a quadratic's x(v)")
+check.eq(py, "y = -18v^2 + 19v", "a quadratic's y(v)")
+check.err(function() konopatsky.equation(curve(function(t) return P(t, t) end, 0, 1)) end,
+          "function curve has no power-basis form", "a function curve")
+-- Fig. 5.5's cubic through the book's nodes prints as the book prints it:
+-- x = -14.67944t^3 + 22.01916t^2 + 0.66028t - 4, y = -11.921353t^2 + 11.921353t
+local ell = approx.curve(function(x) return math.sqrt(math.max(9 - 9 * x * x / 16, 0)) end,
+                         {-4, -1.877016, 1.877016, 4})
+local e55x, e55y = konopatsky.equation(ell)
+check.eq(e55x, "x = -14.6794t^3 + 22.0191t^2 + 0.660284t - 4", "Fig. 5.5 x(t)")
+check.eq(e55y, "y = -11.9214t^2 + 11.9214t", "Fig. 5.5 y(t)")
+
 check.done()

@@ -271,6 +271,36 @@ int pc_ellipse_tilted_axes(int dim, const double *a, const double *b, const doub
     return PC_OK;
 }
 
+/* The derivation's auxiliary points of §2.1.1.1 (Fig. 2.5): K = CP x AB with the printed K's
+ * missing factor c restored, K = A (c sin theta - b sin(alpha + theta))/(c sin theta) +
+ * B b sin(alpha + theta)/(c sin theta), homogeneous (a direction at theta = 0, where CP is
+ * parallel to AB); A rotated about C by omega = 3 pi/2 - alpha - theta towards B with the printed
+ * (C - A) corrected to (A - C); and tau = angle ACK = pi - alpha - theta (digest §5.1). */
+int pc_ellipse_tilted_scheme(int dim, const double *a, const double *b, const double *c,
+                             double theta, double *k, double *arot, double *tau) {
+    if (dim < 1 || dim > PC_MAXDIM) return PC_EDIM;
+    if (!isfinite(theta)) return PC_ENONFINITE;
+    double u[PC_MAXDIM], v[PC_MAXDIM], ca[PC_MAXDIM], cb[PC_MAXDIM];
+    for (int i = 0; i < dim; i++)
+        u[i] = b[i] - a[i], v[i] = c[i] - a[i], ca[i] = a[i] - c[i], cb[i] = b[i] - c[i];
+    double ta = pc_norm(dim, cb), tb = pc_norm(dim, v), tc = pc_norm(dim, u), al, ga;
+    if (!(ta > 0 && tb > 0 && tc > 0)) return PC_ECOLLINEAR;
+    if (pc_angle(dim, u, v, &al) || pc_angle(dim, ca, cb, &ga)) return PC_ECOLLINEAR;
+    if (sin(al) < PC_DEGEN_TOL || sin(ga) < PC_DEGEN_TOL) return PC_ECOLLINEAR;
+    double w = tc * sin(theta), wa = w - tb * sin(al + theta), wb = tb * sin(al + theta);
+    if (fabs(w) < 1e-12 * tc) {           /* K at infinity: the direction of AB, towards B */
+        for (int i = 0; i < dim; i++) k[i] = u[i] / tc;
+        k[dim] = 0;
+    } else {
+        for (int i = 0; i < dim; i++) k[i] = (a[i] * wa + b[i] * wb) / w;
+        k[dim] = 1;
+    }
+    double ra = cos(ga + al + theta) / sin(ga), rb = -tb * cos(al + theta) / (ta * sin(ga));
+    for (int i = 0; i < dim; i++) arot[i] = ca[i] * ra + cb[i] * rb + c[i];
+    *tau = M_PI - al - theta;
+    return PC_OK;
+}
+
 /* ---- §2.6 the cubic of two cones ------------------------------------------------------------ */
 
 typedef struct {

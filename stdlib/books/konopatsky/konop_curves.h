@@ -50,6 +50,13 @@ int pc_kcurve_range(pc_kcurve_kind kind, int dim, const double *c, const double 
 int pc_ellipse_tilted_axes(int dim, const double *a, const double *b, const double *c,
                            double theta, double m, double n, double *p, double *q);
 
+/* The auxiliary points of the same construction: K = CP x AB (homogeneous, dim + 1 numbers, a
+ * direction at theta = 0), A rotated about C by 3 pi/2 - alpha - theta towards B (so that
+ * Q = (arot - C) n/b + C) and tau = angle ACK = pi - alpha - theta.  The printed K lacks the
+ * factor c, the printed rotated A has (C - A) for (A - C). */
+int pc_ellipse_tilted_scheme(int dim, const double *a, const double *b, const double *c,
+                             double theta, double *k, double *arot, double *tau);
+
 /* §2.6 The cubic as the meet of two quadric cones over the arcs APB (f_P) and AQB (f_Q) of
  * (2.97) in the plane ABC, with vertices D and N = (D - A)n + A: M = DP x NQ with Q at
  * v = f_P f_Q' u/(f_P f_Q' u + f_Q f_P' u') (2.148).  3-D or more; u in [0, 1].  The printed

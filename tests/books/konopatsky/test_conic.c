@@ -306,6 +306,34 @@ static void test_tilted(void **state) {
     }
 }
 
+/* the same construction's K = CP x AB and the rotated A (Fig. 2.5): theta = pi/4 puts K on AB
+ * beyond B at (5.76, 4.32), pi/2 at (2.72, 2.04) inside; theta = 0 makes CP parallel to AB (K a
+ * direction); |C Arot| = b = |CA| and Q = (Arot - C) n/b + C */
+static void test_tilted_scheme(void **state) {
+    (void)state;
+    double A[2] = {0, 0}, B[2] = {4, 3}, C[2] = {5, -1}, K[3], Ar[2], tau, P[2], Q[2];
+    static const double tv[2][3] = {{M_PI / 4, 5.76, 4.32}, {M_PI / 2, 2.72, 2.04}};
+    for (int i = 0; i < 2; i++) {
+        assert_int_equal(pc_ellipse_tilted_scheme(2, A, B, C, tv[i][0], K, Ar, &tau), PC_OK);
+        NEAR(K[2], 1, 0);
+        NEAR(K[0], tv[i][1], 1e-12);
+        NEAR(K[1], tv[i][2], 1e-12);
+        NEAR(hypot(Ar[0] - C[0], Ar[1] - C[1]), sqrt(26), 1e-12);
+        assert_int_equal(pc_ellipse_tilted_axes(2, A, B, C, tv[i][0], 2, 1, P, Q), PC_OK);
+        NEAR((Ar[0] - C[0]) / sqrt(26) + C[0], Q[0], 1e-12);   /* n = 1 */
+        NEAR((Ar[1] - C[1]) / sqrt(26) + C[1], Q[1], 1e-12);
+        /* K, P, C collinear */
+        NEAR((K[0] - C[0]) * (P[1] - C[1]) - (K[1] - C[1]) * (P[0] - C[0]), 0, 1e-12);
+        NEAR(tau, M_PI - (atan2(3, 4) + atan2(1, 5)) - tv[i][0], 1e-12);   /* alpha = angle BAC */
+    }
+    assert_int_equal(pc_ellipse_tilted_scheme(2, A, B, C, 0, K, Ar, &tau), PC_OK);
+    NEAR(K[2], 0, 0);
+    NEAR(K[0], 0.8, 1e-12);
+    NEAR(K[1], 0.6, 1e-12);
+    double Af[2] = {3, 2.25};   /* on AB: no triangle */
+    assert_int_equal(pc_ellipse_tilted_scheme(2, A, B, Af, 1, K, Ar, &tau), PC_ECOLLINEAR);
+}
+
 static double on_hyperbola(const double *m) {
     return m[0] * m[0] / 9 - m[1] * m[1] / 4 - 1;
 }
@@ -617,7 +645,7 @@ int main(void) {
         cmocka_unit_test(test_ed),            cmocka_unit_test(test_ed_circle),
         cmocka_unit_test(test_ed3),           cmocka_unit_test(test_ceva),
         cmocka_unit_test(test_parabolas),     cmocka_unit_test(test_ellipse),
-        cmocka_unit_test(test_tilted),        cmocka_unit_test(test_hyperbola),
+        cmocka_unit_test(test_tilted),        cmocka_unit_test(test_tilted_scheme),        cmocka_unit_test(test_hyperbola),
         cmocka_unit_test(test_circles),       cmocka_unit_test(test_five_points),
         cmocka_unit_test(test_five_points2),  cmocka_unit_test(test_triples_redundant_reparam),
         cmocka_unit_test(test_sinusoid_cycloid_cones_contour),

@@ -1,0 +1,32 @@
+-- Konopatsky §4.11 (Fig. 4.11): the constrained exponential interpolation, which is affine
+-- Three chosen nodes at t = 0, 1/2, 1 (the book gives neither its nodes nor its k): the weights
+-- e^(k1 t), e^(k2 t) and the rest to 1, k = (0.5, -1) (brown), against the parabola (4.10)
+-- (blue).  The same nodes shifted by (40, 0) give the same curve shifted (dashed, shifted back,
+-- on top of it): interp.basis reports that the weights sum to 1.
+-- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
+local function frame(x1, y1, x2, y2)
+  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
+  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
+end
+local function mark(p, name, _) circle(p, 0.06, 15) label(name, p, nil, 15) end
+local M = {P(0, 0), P(2, 3), P(5, 1)}
+local shift = V(40, 0)
+local Ms = {M[1] + shift, M[2] + shift, M[3] + shift}
+for i, kind in pairs{[2] = "exp1"} do
+  frame(-1, -2, 6, 5)
+  local k = kind == "exp" and {0.5, -1, 2} or {0.5, -1}
+  interp.lagrange(M):draw{color = 9}
+  local c = interp.prototype(kind, M, k)
+  c:draw{color = 6}
+  local cs = interp.prototype(kind, Ms, k)
+  pen{dash = {4, 3}}
+  curve(function(t) return cs(t) - shift end, 0, 1):draw{color = 6}
+  pen()
+  for j, p in ipairs(M) do mark(p, "$M_" .. j .. "$", "n") end
+  local _, affine = interp.basis(kind == "exp"
+    and {function(t) return math.exp(0.5 * t) end, function(t) return math.exp(-t) end, function(t) return math.exp(2 * t) end}
+    or {function(t) return math.exp(0.5 * t) end, function(t) return math.exp(-t) end,
+        function(t) return 1 - math.exp(0.5 * t) - math.exp(-t) end}, M, {0, 0.5, 1})
+  label(string.format("%s  weights sum to 1: %s", kind == "exp" and "(4.39)" or "constrained", tostring(affine)),
+        P(-0.8, -1.6), "e", 7)
+end
