@@ -14,18 +14,55 @@
 
 /* ---- the running declaration ------------------------------------------------------------- */
 
-/* The declaration of the running C function: its upvalue 1, trusted only when the running
- * function is the one it declares (debug.setupvalue could swap another's in). */
-static const pcl_fn *current(lua_State *L) {
-    const pcl_fn *d = lua_touserdata(L, lua_upvalueindex(1));
-    lua_Debug ar;
-    if (d && lua_getstack(L, 0, &ar) && lua_getinfo(L, "f", &ar)) {
-        lua_CFunction f = lua_tocfunction(L, -1);
-        lua_pop(L, 1);
-        if (f == d->fn) return d;
-    }
+/* Upvalue 1 of a declared function: its declaration compiled once at registration (the counts
+ * the reader needs on every call), so a call reads its arguments without walking the list. */
+typedef struct {
+    PCL_SELF;                 /* a block of another type there is refused (pcl.h) */
+    const pcl_fn *d;
+    int nargs, nvalues;       /* the declared arguments; the values PCL_READ fills */
+    int first_pair;           /* pcl_read_pairs: the argument (from 1) that starts the first pair */
+} decl_box;
+static const char BOX_TAG = 'd';
+#define BOX_MT "pointcalc.declaration"
+
+/* The declaration of the running C function.  Only debug.setupvalue could put another value
+ * in its upvalue 1, and the guard below refuses that for declared functions; the tag still
+ * refuses a block of another type. */
+static const decl_box *current_box(lua_State *L) {
+    const decl_box *b = lua_touserdata(L, lua_upvalueindex(1));
+    if (b && b->self == PCL_SELF_TAG(b, &BOX_TAG) && lua_rawlen(L, lua_upvalueindex(1)) == sizeof *b) return b;
     luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
     return NULL;
+}
+static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
+
+/* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration (whose
+ * values its body would misread): refused where it is attempted, so that no call has to ask
+ * Lua which function is running.  The other upvalues (a canvas, a random state) are checked
+ * by the bindings that use them. */
+static int setupvalue_guard(lua_State *L) {
+    int isint;
+    if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, &isint) == 1 && isint && lua_getupvalue(L, 1, 1)) {
+        int declared = luaL_testudata(L, -1, BOX_MT) != NULL;
+        lua_pop(L, 1);
+        if (declared)
+            return luaL_error(L, "debug.setupvalue: upvalue 1 of a declared function is its declaration, "
+                              "which cannot be replaced (forged upvalue)");
+    }
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+    return lua_gettop(L);
+}
+
+void pcl_guard_upvalues(lua_State *L) {
+    int top = lua_gettop(L);
+    if (lua_getglobal(L, "debug") == LUA_TTABLE && lua_getfield(L, -1, "setupvalue") == LUA_TFUNCTION &&
+        lua_tocfunction(L, -1) != setupvalue_guard) {
+        lua_pushcclosure(L, setupvalue_guard, 1);
+        lua_setfield(L, -2, "setupvalue");
+    }
+    lua_settop(L, top);
 }
 
 /* The declared name; for a __call (callname) the variable the script called, when known:
@@ -529,10 +566,33 @@ static int nargs_of(const pcl_fn *d) {
     return n;
 }
 
+/* The fast path of the common kinds: a number or integer that fits its declaration is read
+ * here with a type test and the range tests, no message made; anything else (absent, of
+ * another kind, out of range) goes to read_value, which reads it or words the message. */
+static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out) {
+    if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
+    double x = lua_tonumber(L, idx);
+    if (!isfinite(x) || (a->kind == PCL_INTEGER && x != floor(x))) return 0;
+    if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
+    if ((a->flags & PCL_POS) && !(x > 0)) return 0;
+    out->present = 1;
+    out->x = x;
+    out->idx = idx;
+    out->n = 0;
+    out->s = NULL;
+    out->obj = NULL;
+    return 1;
+}
+
+static void check_count(lua_State *L, const decl_box *b, int n) {
+    if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
+}
+
 void *pcl_read(lua_State *L, pcl_val *v, int n) {
-    const pcl_fn *d = current(L);
+    const decl_box *b = current_box(L);
+    const pcl_fn *d = b->d;
     void *self = NULL;
-    int first = 1;
+    int first = 1, nargs = b->nargs;
     if (d->self) {
         self = d->self(L, 1);
         if (!self) {
@@ -541,19 +601,20 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
         }
         first = 2;
     }
-    luaL_checkstack(L, 24, NULL);
-    const char *fname = d->callname ? pcl_name(L) : d->name;
-    int need = nvalues(d->args);
-    if (n < need) luaL_error(L, "%s: the binding reads %d values into %d", d->name, need, n);
-    int nargs = 0;
-    while (d->args && d->args[nargs].kind) nargs++;
+    check_count(L, b, n);
     if (lua_gettop(L) < first - 1 + nargs) lua_settop(L, first - 1 + nargs);   /* buffers above */
+    const char *fname = NULL;
     dimref dim = {0};
     int slot = nargs;
     for (int k = 0; k < nargs; k++) {
         const pcl_arg *a = &d->args[k];
-        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         int idx = first + k;
+        if (read_scalar(L, a, idx, &v[k])) continue;
+        if (!fname) {                        /* the general reader from here on */
+            luaL_checkstack(L, 24, NULL);
+            fname = d->callname ? pcl_name(L) : d->name;
+        }
+        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         if (a->kind == PCL_OPTIONS) {
             v[k].idx = idx;
             v[k].present = lua_istable(L, idx);
@@ -588,19 +649,22 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 
 /* The arguments of a function with coordinate pairs (pcl_args.h): each at the slot it falls on. */
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
-    const pcl_fn *d = current(L);
-    int nargs = nargs_of(d), top = lua_gettop(L), opts = 0, first_pair = 0;
-    if (n < nvalues(d->args)) luaL_error(L, "%s: the binding reads %d values into %d", d->name, nvalues(d->args), n);
+    const decl_box *b = current_box(L);
+    const pcl_fn *d = b->d;
+    int nargs = b->nargs, top = lua_gettop(L), opts = 0;
+    check_count(L, b, n);
     luaL_checkstack(L, 24, NULL);
-    for (int k = 0; k < nargs && !first_pair; k++)
-        if (d->args[k].flags & PCL_PAIR) first_pair = k + 1;
-    if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > first_pair && lua_istable(L, top))
+    if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
         opts = top;                             /* a trailing option table */
     int limit = opts ? opts - 1 : top, slot = 1;
     dimref dim = {0};
     for (int k = 0, y = 0; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
         int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
+        if (slot <= limit && read_scalar(L, a, idx, &v[k])) {
+            y = (a->flags & PCL_PAIR) != 0;
+            continue;
+        }
         if (a->kind == PCL_OPTIONS) {
             ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
             v[k].idx = opts;
@@ -616,12 +680,16 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
             k++;
             continue;
         }
-        pcl_arg one = *a;
         int coord = (a->flags & PCL_PAIR) || y;
         y = (a->flags & PCL_PAIR) != 0;         /* the next argument is this pair's y */
-        if (coord && lua_type(L, idx) != LUA_TNUMBER) one.expect = "a number or a point";
+        pcl_arg one;
+        if (coord && lua_type(L, idx) != LUA_TNUMBER) {
+            one = *a;
+            one.expect = "a number or a point";
+            a = &one;
+        }
         ctx c = {d->name, slot, a->name, NULL, 0, &dim};
-        read_value(L, &c, &one, idx, &v[k]);
+        read_value(L, &c, a, idx, &v[k]);
     }
 }
 
@@ -714,6 +782,14 @@ static void record(lua_State *L, const pcl_fn *d) {
     lua_pop(L, 1);
 }
 
+/* The metatable of the declarations: it tells them to the guard and hides itself. */
+static void box_metatable(lua_State *L) {
+    if (luaL_newmetatable(L, BOX_MT)) {
+        lua_pushliteral(L, "declaration");
+        lua_setfield(L, -2, "__metatable");
+    }
+}
+
 void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
     table = lua_absindex(L, table);
     int ups = lua_gettop(L) - nup + 1;
@@ -722,7 +798,16 @@ void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
         for (p = d->name; *p; p++)
             if (*p == '.' || *p == ':') key = p + 1;
         if (d->key) key = d->key;
-        lua_pushlightuserdata(L, (void *)d);
+        decl_box *b = lua_newuserdatauv(L, sizeof *b, 0);
+        b->self = PCL_SELF_TAG(b, &BOX_TAG);
+        b->d = d;
+        b->nargs = nargs_of(d);
+        b->nvalues = nvalues(d->args);
+        b->first_pair = 0;
+        for (int k = 0; k < b->nargs && !b->first_pair; k++)
+            if (d->args[k].flags & PCL_PAIR) b->first_pair = k + 1;
+        box_metatable(L);
+        lua_setmetatable(L, -2);
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
         lua_pushcclosure(L, d->fn, nup + 1);
         lua_setfield(L, table, key);

@@ -158,6 +158,9 @@ void pcl_push_numbers(lua_State *L, int n, const double *x);
  * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
 int pcl_snap_weight(int n, double *h);
 
+/* Refuse debug.setupvalue(f, 1, x) of a declared function f (its upvalue 1 is its declaration,
+ * which the layer trusts without asking Lua which function runs): luaopen_pointcalc calls it. */
+void pcl_guard_upvalues(lua_State *L);
 /* Push the registry of declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: the module's
  * _decl, which interp/help.lua reads. */
 void pcl_push_decls(lua_State *L);
