@@ -427,11 +427,11 @@ static int l_curve(lua_State *L) {
     pcl_val a[3] = {{0}};
     PCL_READ(L, a);
     int st;
+    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        pushcurve(L, pcl_eq_curve(L, pcl_name(L), &st), st, "equation", 0);
+        pushcurve(L, pcl_eq_curve(L, a[1].x, a[2].x, &st), st, "equation", 0);
         return 1;
     }
-    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);

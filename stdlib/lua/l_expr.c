@@ -797,25 +797,24 @@ static pc_expr_prog *compile_for(lua_State *L, const char *fname, int nwant, int
     return prog;
 }
 
-pc_curve *pcl_eq_curve(lua_State *L, const char *fname, int *status) {
-    double t0 = pcl_checknum(L, fname, 2, "t0"), t1 = pcl_checknum(L, fname, 3, "t1");
-    if (!(t1 > t0)) pcl_error(L, "%s: argument #3 (t1) must be greater than t0", fname);
+pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) {
     int in[PC_EXPR_MAXPARAM];
+    const char *fname = pcl_name(L);
     pc_expr_prog *prog = compile_for(L, fname, 1, in);
     check_weight(L, fname, prog, &t0, &t1, in);
     return pc_expr_curve(prog, t0, t1, status);
 }
 
 pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status) {
-    double r[4];
-    static const char *names[4] = {"u0", "u1", "v0", "v1"};
-    for (int i = 0; i < 4; i++) r[i] = pcl_checknum(L, fname, i + 2, names[i]);
-    if (!(r[1] > r[0]) || !(r[3] > r[2])) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fname);
+    static const pcl_arg range[4] = {A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1")};
+    pcl_val r[4];
+    for (int i = 0; i < 4; i++) pcl_readone(L, i + 2, i + 2, 0, &range[i], 0, &r[i]);
+    if (!(r[1].x > r[0].x) || !(r[3].x > r[2].x)) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fname);
     int in[PC_EXPR_MAXPARAM];
     pc_expr_prog *prog = compile_for(L, fname, 2, in);
-    double lo[2] = {r[0], r[2]}, hi[2] = {r[1], r[3]};
+    double lo[2] = {r[0].x, r[2].x}, hi[2] = {r[1].x, r[3].x};
     check_weight(L, fname, prog, lo, hi, in);
-    return pc_expr_surface(prog, r[0], r[1], r[2], r[3], status);
+    return pc_expr_surface(prog, lo[0], hi[0], lo[1], hi[1], status);
 }
 
 /* ---- registration ----------------------------------------------------------------------------------- */

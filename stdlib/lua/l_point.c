@@ -109,7 +109,7 @@ static const char *push_num_text(lua_State *L, double x) {
     return lua_tostring(L, -1);
 }
 
-/* ---- the readers of the bindings not yet on the argument layer ------------------------------ */
+/* ---- the messages of the operators and the drawing hook ------------------------------------ */
 
 /* "argument #N", or "self" for the receiver of a method call */
 static const char *argname(lua_State *L, int arg) {
@@ -138,42 +138,6 @@ static const char *argctx(lua_State *L, int arg, const char *what) {
     const char *an = argname(L, arg);
     if (what && what[0]) return lua_pushfstring(L, "%s: %s (%s)", pcl_fname(L), an, what);
     return lua_pushfstring(L, "%s: %s", pcl_fname(L), an);
-}
-
-/* the value at arg in dimension dim (pcl_checkloc, pcl_checkvec) */
-static pcl_value *checked(lua_State *L, int arg, const char *what, const char *expect, int dim, int dim_arg) {
-    pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, expect);
-    if (dim > 0 && p->n != dim && dim_arg > 0)
-        pcl_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed", argctx(L, arg, what), p->n,
-                  argname(L, dim_arg), dim);
-    if (dim > 0 && p->n != dim) pcl_error(L, "%s must be %d-D, got %d-D", argctx(L, arg, what), dim, p->n);
-    return p;
-}
-
-int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = checked(L, arg, what, "a point", dim, dim_arg);
-    if (pc_loc(p->n, p->h, out) != PC_OK) location_error(L, argctx(L, arg, what), p);
-    return p->n;
-}
-
-int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = checked(L, arg, what, "a vector", dim, dim_arg);
-    if (pc_kind_of(p->h[p->n]) != PC_KIND_VECTOR) {
-        const char *ctx = argctx(L, arg, what), *text = push_value_text(L, p);
-        return pcl_error(L, "%s must be a vector (weight 0), got %s (weight %s); a difference "
-                          "of points is a vector, e.g. B - A", ctx, text, push_num_text(L, p->h[p->n]));
-    }
-    memcpy(out, p->h, sizeof(double) * (size_t)p->n);
-    return p->n;
-}
-
-double pcl_checkfinite(lua_State *L, int arg, const char *what) {
-    int isnum;
-    double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum || lua_type(L, arg) != LUA_TNUMBER) pcl_argerror(L, arg, what, "a number");
-    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
-    return v;
 }
 
 /* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */

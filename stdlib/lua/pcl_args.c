@@ -790,7 +790,22 @@ static void box_metatable(lua_State *L) {
     }
 }
 
-void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
+void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
+    decl_box *b = lua_newuserdatauv(L, sizeof *b, 0);
+    b->self = PCL_SELF_TAG(b, &BOX_TAG);
+    b->d = d;
+    b->nargs = nargs_of(d);
+    b->nvalues = nvalues(d->args);
+    b->first_pair = 0;
+    for (int k = 0; k < b->nargs && !b->first_pair; k++)
+        if (d->args[k].flags & PCL_PAIR) b->first_pair = k + 1;
+    box_metatable(L);
+    lua_setmetatable(L, -2);
+    lua_insert(L, -1 - nup);                 /* the declaration is upvalue 1 */
+    lua_pushcclosure(L, d->fn, nup + 1);
+}
+
+static void register_all(lua_State *L, int table, const pcl_fn *fns, int nup, int documented) {
     table = lua_absindex(L, table);
     int ups = lua_gettop(L) - nup + 1;
     for (const pcl_fn *d = fns; d->name; d++) {
@@ -798,23 +813,16 @@ void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
         for (p = d->name; *p; p++)
             if (*p == '.' || *p == ':') key = p + 1;
         if (d->key) key = d->key;
-        decl_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-        b->self = PCL_SELF_TAG(b, &BOX_TAG);
-        b->d = d;
-        b->nargs = nargs_of(d);
-        b->nvalues = nvalues(d->args);
-        b->first_pair = 0;
-        for (int k = 0; k < b->nargs && !b->first_pair; k++)
-            if (d->args[k].flags & PCL_PAIR) b->first_pair = k + 1;
-        box_metatable(L);
-        lua_setmetatable(L, -2);
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
-        lua_pushcclosure(L, d->fn, nup + 1);
+        pcl_pushfn(L, d, nup);
         lua_setfield(L, table, key);
-        record(L, d);
+        if (documented) record(L, d);
     }
     lua_pop(L, nup);
 }
+
+void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) { register_all(L, table, fns, nup, 1); }
+void pcl_register_private(lua_State *L, int table, const pcl_fn *fns) { register_all(L, table, fns, 0, 0); }
 
 /* Push the registry of declarations (for pointcalc._decl). */
 void pcl_push_decls(lua_State *L) {

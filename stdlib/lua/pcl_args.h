@@ -97,6 +97,12 @@ typedef struct pcl_fn {
  * and the nup values on the stack top as upvalues 2.. (popped), and record each declaration
  * in the registry that :help and docs/api.md read (pointcalc._decl).  fns ends with {0}. */
 void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup);
+/* The same for the toolkit functions of _tk (the embedded Lua helpers call them): declared,
+ * so read and worded by the layer, but not recorded for :help. */
+void pcl_register_private(lua_State *L, int table, const pcl_fn *fns);
+/* Push one declared function with the nup values on the stack top as upvalues 2.. (popped),
+ * not recorded for :help: a toolkit function of _tk, a closure made at run time. */
+void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup);
 /* Upvalue k of a registered function (k = 1: the first of the nup shared values). */
 #define PCL_UPVALUE(k) lua_upvalueindex((k) + 1)
 
