@@ -271,6 +271,8 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
     case PCL_VALUE: return dimmed(L, a->dim, "point, vector or weighted point");
     case PCL_POINTS: return a->dim ? lua_pushfstring(L, "a list of %d-D points", a->dim) : "a list of points";
     case PCL_NUMBERS: return "a list of numbers";
+    case PCL_VALUES: return "a list of points";
+    case PCL_VECTORS: return "a list of vectors";
     case PCL_CURVE: return dimmed(L, a->dim, "curve");
     case PCL_SURFACE: return dimmed(L, a->dim, "surface");
     case PCL_MAP: return "a map";
@@ -358,7 +360,7 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     if (!isint) mismatch(L, c, idx, expected(L, a));   /* not Lua's unlocated length error */
     int m = len < 0 ? -1 : len > MAXLIST ? MAXLIST + 1 : (int)len;
     int hi = a->hi > 0 ? (int)a->hi : MAXLIST;
-    const char *unit = a->kind == PCL_POINTS ? "points" : "numbers";
+    const char *unit = a->kind == PCL_NUMBERS ? "numbers" : a->kind == PCL_VECTORS ? "vectors" : "points";
     if (m < (int)a->lo || m > hi || m < 0) count_error(L, c, a, m, unit);
     out->n = m;
     ctx e = *c;
@@ -377,27 +379,34 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
         out->list = x;
         return;
     }
-    /* points: the declared dimension, or the first one's for all (and PCL_SAMEDIM) */
-    pcl_arg pt = {.name = a->name, .kind = PCL_POINT, .dim = a->dim};
+    /* points, values, vectors: the declared dimension (or the one PCL_SAMEDIM knows), else the
+     * first one's for all; values keep their weights (rows of d + 1) */
+    static const pcl_kind item_kind[] = {[PCL_POINTS] = PCL_POINT, [PCL_VALUES] = PCL_VALUE, [PCL_VECTORS] = PCL_VECTOR};
+    int known = a->dim ? a->dim : (a->flags & PCL_SAMEDIM) && c->dim ? c->dim->n : 0;
+    pcl_arg pt = {.name = a->name, .kind = item_kind[a->kind], .dim = known,
+                  .expect = a->kind == PCL_VALUES ? "a point" : NULL};
     dimref inner = {0};
     double *x = NULL;
-    int d = a->dim;
+    int d = known, w = 0;
     for (int i = 1; i <= m; i++) {
         lua_geti(L, idx, i);
         e.item = i;
-        if (!a->dim) pt.flags = PCL_SAMEDIM, e.dim = &inner;
+        if (!known) pt.flags = PCL_SAMEDIM, e.dim = &inner;
         pcl_val one;
         read_loc(L, &e, &pt, lua_gettop(L), &one);
+        for (int j = 0; a->kind == PCL_VALUES && j <= one.n; j++)
+            if (!isfinite(one.v[j])) mismatch(L, &e, lua_gettop(L), "a value with finite coordinates");
         lua_pop(L, 1);
         if (i == 1) {
             d = one.n;
+            w = d + (a->kind == PCL_VALUES);
             pcl_arg whole = *a;
             whole.dim = 0;                     /* the list's dimension against the others' */
             check_dim(L, c, &whole, idx, d);
-            x = list_buffer(L, out, (size_t)m * (size_t)d);
+            x = list_buffer(L, out, (size_t)m * (size_t)w);
             if (!x) luaL_error(L, "%s: %d points do not fit the binding's buffer", c->fname, m);
         }
-        memcpy(x + (size_t)(i - 1) * d, one.v, sizeof(double) * (size_t)d);
+        memcpy(x + (size_t)(i - 1) * w, one.v, sizeof(double) * (size_t)w);
     }
     if (m == 0) x = list_buffer(L, out, 1);
     out->list = x;
@@ -452,7 +461,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE:
         read_loc(L, c, a, idx, out);
         return;
-    case PCL_POINTS: case PCL_NUMBERS:
+    case PCL_POINTS: case PCL_NUMBERS: case PCL_VALUES: case PCL_VECTORS:
         read_list(L, c, a, idx, out);
         return;
     case PCL_CURVE: case PCL_SURFACE: {

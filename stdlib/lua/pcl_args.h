@@ -28,6 +28,8 @@ typedef enum {
     PCL_VALUE,     /* any point, vector or weighted value: v.v homogeneous, the weight as given */
     PCL_POINTS,    /* a list of points (lo..hi of them; dim or one dimension): v.list rows */
     PCL_NUMBERS,   /* a list of finite numbers (lo..hi of them): v.list */
+    PCL_VALUES,    /* a list of values of any weight (w*P, vectors at infinity): homogeneous rows */
+    PCL_VECTORS,   /* a list of vectors: rows of their components */
     PCL_CURVE,     /* v.obj a pc_curve (dim: its dimension must be dim) */
     PCL_SURFACE,   /* v.obj a pc_surface */
     PCL_MAP,       /* v.obj a pc_map */
@@ -189,6 +191,8 @@ const char *pcl_global_hint(lua_State *L, const char *msg);
 #define A_SAMEVECTOR(nm) {.name = nm, .kind = PCL_VECTOR, .flags = PCL_SAMEDIM}
 #define A_POINTS(nm, d, a, b) {.name = nm, .kind = PCL_POINTS, .dim = d, .lo = a, .hi = b}
 #define A_NUMBERS(nm, a, b) {.name = nm, .kind = PCL_NUMBERS, .lo = a, .hi = b}
+#define A_VALUES(nm, a, b) {.name = nm, .kind = PCL_VALUES, .lo = a, .hi = b}
+#define A_VECTORS(nm) {.name = nm, .kind = PCL_VECTORS, .flags = PCL_SAMEDIM}
 #define A_CURVE(nm, d) {.name = nm, .kind = PCL_CURVE, .dim = d}
 #define A_SURFACE(nm, d) {.name = nm, .kind = PCL_SURFACE, .dim = d}
 #define A_MAP(nm) {.name = nm, .kind = PCL_MAP}
