@@ -213,22 +213,6 @@ static int m_eq(lua_State *L) {
 
 /* ---- the point functions on equations ------------------------------------------------------- */
 
-/* The weight class of a value equation over [0, 1] in each of its parameters. */
-static int weight_class(lua_State *L, int id) {
-    pc_expr_pool *p = pool(L);
-    unsigned mask = pc_expr_params(p, id);
-    int in[PC_EXPR_MAXPARAM], n = 0, st;
-    for (int k = 0; k < PC_EXPR_MAXPARAM; k++)
-        if (mask & (1u << k)) in[n++] = k;
-    pc_expr_prog *prog = pc_expr_compile(p, id, n, in, &st);
-    if (!prog) return -1;
-    double lo[PC_EXPR_MAXPARAM] = {0}, hi[PC_EXPR_MAXPARAM];
-    for (int j = 0; j < n; j++) hi[j] = 1;
-    int kind = pc_expr_prog_weight(prog, lo, hi, NULL, NULL);
-    pc_expr_prog_free(prog);
-    return kind;
-}
-
 /* "NAME: argument #K (WHAT) must be EXPECT, got DESCRIPTION" of the running declared function */
 static int operand_fail(lua_State *L, int k, const char *what, const char *expect) {
     return pcl_fail(L, "argument #%d (%s) must be %s, got %s", k, what, expect, describe(L, k));
@@ -240,7 +224,7 @@ static int vec_arg(lua_State *L, int arg, const char *what, int dim) {
     if (id < 0 || !pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a vector or a vector equation");
     int d = pc_expr_dim(pool(L), id);
     if (dim && d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", arg, what, d, dim);
-    if (weight_class(L, id) != PC_KIND_VECTOR)
+    if (pc_expr_weight_class(pool(L), id) != PC_KIND_VECTOR)
         return pcl_fail(L, "argument #%d (%s) must be a vector (weight 0), got %s whose weight is not 0; a difference of "
                         "points is a vector, e.g. B - A", arg, what, describe(L, arg));
     return id;
@@ -295,7 +279,7 @@ static int fn_meet(lua_State *L) {
         int d = pc_expr_dim(p, id[i]);
         if (i == 0) dim = d;
         else if (d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i], d, dim);
-        if (weight_class(L, id[i]) != PC_KIND_POINT)
+        if (pc_expr_weight_class(p, id[i]) != PC_KIND_POINT)
             return pcl_fail(L, "argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a point equation "
                             "sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
     }
@@ -465,24 +449,13 @@ static int l_param(lua_State *L) {
     return 1;
 }
 /* the parameters of an equation in order: their indices */
-static int params_of(lua_State *L, int id, int *in) {
-    unsigned mask = pc_expr_params(pool(L), id);
-    int n = 0;
-    for (int k = 0; k < PC_EXPR_MAXPARAM; k++)
-        if (mask & (1u << k)) in[n++] = k;
-    return n;
-}
+static int params_of(lua_State *L, int id, int *in) { return pc_expr_param_list(pool(L), id, in); }
 
 /* "t and s", "t, s and u" */
 static const char *names_of(lua_State *L, int n, const int *in) {
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    for (int j = 0; j < n; j++) {
-        if (j) luaL_addstring(&b, j == n - 1 ? " and " : ", ");
-        luaL_addstring(&b, pc_expr_param_name(pool(L), in[j]));
-    }
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
+    char buf[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 2)];
+    pc_expr_param_names(pool(L), n, in, buf, sizeof buf);
+    return lua_pushstring(L, buf);
 }
 
 static pc_expr_prog *prog_of(lua_State *L, leq *e) {
@@ -549,17 +522,9 @@ static int eq_call(lua_State *L) {
     double h[PC_MAXDIM + 1];
     int st = pc_expr_eval(prog, 1, x, 0, h, NULL);
     if (st == PC_ENONFINITE) {
-        luaL_Buffer b;
-        luaL_buffinit(L, &b);
-        for (int j = 0; j < n; j++) {
-            if (j) luaL_addstring(&b, ", ");
-            lua_pushfstring(L, "%s = %s", pc_expr_param_name(p, in[j]), pcl_pushnum(L, x[j]));
-            lua_remove(L, -2);
-            luaL_addvalue(&b);
-        }
-        luaL_pushresult(&b);
-        return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)",
-                        lua_tostring(L, -1));
+        char at[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 28)];
+        pc_expr_param_values(p, n, in, x, at, sizeof at);
+        return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)", at);
     }
     if (st != PC_OK) return done(L, -1, st);
     push_result(L, pc_expr_dim(p, e->id), h);
@@ -581,9 +546,7 @@ static int eq_with(lua_State *L) {
     lua_pushnil(L);
     while (lua_next(L, 2)) {
         const char *nm = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
-        int k = -1;
-        for (int j = 0; nm && j < pc_expr_nparams(p); j++)
-            if (!strcmp(pc_expr_param_name(p, j), nm)) k = j;
+        int k = pc_expr_find_param(p, nm);
         if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) {
             int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
             return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", nm ? nm : pcl_shown(L, -2),
