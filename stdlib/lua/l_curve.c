@@ -788,12 +788,7 @@ static int c_controls(lua_State *L) {
     }
     if (u->tk == TK_FOURIER) return pcl_fail(L, "a Fourier curve has no pieces");
     if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no control points", u->kind);
-    lua_createtable(L, u->c->ncp, 0);
-    for (int i = 0; i < u->c->ncp; i++) {
-        pcl_value *v = pcl_newvalue(L, d);
-        memcpy(v->h, u->c->cp + (size_t)i * (d + 1), sizeof(double) * (size_t)(d + 1));
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_push_values(L, u->c->ncp, d, u->c->cp, 1);
     return 1;
 }
 
@@ -1013,20 +1008,12 @@ void pcl_open_curves(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
     int tk = lua_gettop(L);
-    lua_newtable(L);   /* the methods, shared with the Lua helpers as _tk.curve_methods */
-    int methods_t = lua_gettop(L);
-    pcl_register(L, methods_t, methods, 0);
-    lua_pushvalue(L, methods_t);
-    lua_setfield(L, tk, "curve_methods");
-
-    luaL_newmetatable(L, CURVE_MT);
     static const luaL_Reg meta[] = {{"__tostring", c_tostring}, {"__gc", c_gc}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, -1, call, 0);
-    lua_pushvalue(L, methods_t);
-    lua_pushcclosure(L, c_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
+    pcl_open_type(L, CURVE_MT, meta, call, methods, c_index);
+    lua_getfield(L, -1, "__index");   /* its methods, shared with the Lua helpers */
+    lua_getupvalue(L, -1, 1);
+    lua_setfield(L, tk, "curve_methods");
+    lua_settop(L, tk);
 
     lua_pushcfunction(L, l_stroke_raw);
     lua_setfield(L, tk, "stroke");

@@ -811,27 +811,14 @@ void pcl_open_expr(lua_State *L) {
     lua_setmetatable(L, -2);
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POOL_KEY);
 
-    luaL_newmetatable(L, EQ_MT);
     static const luaL_Reg meta[] = {
         {"__add", m_add}, {"__sub", m_sub}, {"__mul", m_mul}, {"__div", m_div}, {"__unm", m_unm},
         {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", eq_concat},
         {"__gc", eq_gc}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, -1, call, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, eq_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
-
-    luaL_newmetatable(L, SAMPLES_MT);
+    pcl_open_type(L, EQ_MT, meta, call, methods, eq_index);
     static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, smeta, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, sample_methods, 0);
-    lua_pushcclosure(L, s_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
+    pcl_open_type(L, SAMPLES_MT, smeta, NULL, sample_methods, s_index);
+    lua_settop(L, module);
 
     pcl_register(L, module, fns, 0);
     wrap_math(L);

@@ -657,17 +657,10 @@ static const pcl_fn ctors[] = {
 
 void pcl_open_map(lua_State *L) {
     int module = lua_gettop(L);
-    luaL_newmetatable(L, REGKEY);                        /* the metatable of maps */
-    int mt = lua_gettop(L);
-    lua_pushliteral(L, "map");
-    lua_setfield(L, mt, "__name");
     static const luaL_Reg meta[] = {{"__mul", l_mul}, {"__tostring", l_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, mt, apply, 0);
-    lua_newtable(L);                                     /* the methods */
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, l_index, 1);
-    lua_setfield(L, mt, "__index");
+    pcl_open_type(L, REGKEY, meta, apply, methods, l_index);
+    lua_pushliteral(L, "map");
+    lua_setfield(L, -2, "__name");
 
     lua_newtable(L);                                     /* the affine table */
     pcl_register(L, -1, affine_fns, 0);

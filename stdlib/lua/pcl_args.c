@@ -833,6 +833,31 @@ static void register_all(lua_State *L, int table, const pcl_fn *fns, int nup, in
 void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) { register_all(L, table, fns, nup, 1); }
 void pcl_register_private(lua_State *L, int table, const pcl_fn *fns) { register_all(L, table, fns, 0, 0); }
 
+void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const pcl_fn *call,
+                   const pcl_fn *methods, lua_CFunction index) {
+    luaL_newmetatable(L, tname);
+    if (meta) luaL_setfuncs(L, meta, 0);
+    if (call) pcl_register(L, -1, call, 0);
+    if (!methods && !index) return;
+    lua_newtable(L);
+    if (methods) pcl_register(L, -1, methods, 0);
+    if (index) lua_pushcclosure(L, index, 1);
+    lua_setfield(L, -2, "__index");
+}
+
+void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        if (homogeneous) {
+            pcl_value *v = pcl_newvalue(L, dim);
+            memcpy(v->h, rows + (size_t)i * (size_t)(dim + 1), sizeof(double) * (size_t)(dim + 1));
+        } else {
+            pcl_pushpoint(L, dim, rows + (size_t)i * (size_t)dim);
+        }
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
 /* Push the registry of declarations (for pointcalc._decl). */
 void pcl_push_decls(lua_State *L) {
     if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {

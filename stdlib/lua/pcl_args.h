@@ -161,6 +161,15 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 
 /* Push a list {x[0], ..., x[n-1]}. */
 void pcl_push_numbers(lua_State *L, int n, const double *x);
+/* Push a list of n points of dim coordinates from rows of dim numbers, or (homogeneous) of n
+ * values from rows of dim + 1 (weights as given: w*P, vectors). */
+void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous);
+
+/* Make the metatable tname of a userdata type and leave it on the stack: its metamethods meta
+ * (luaL_Reg, may be NULL), its declared __call (call, may be NULL), and __index: a closure of
+ * index over a new table of the declared methods (index NULL: that table itself). */
+void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const pcl_fn *call,
+                   const pcl_fn *methods, lua_CFunction index);
 
 /* One weight rule: PC_KIND_POINT, PC_KIND_VECTOR or PC_KIND_WEIGHTED, with the weight in h[n]
  * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
