@@ -23,6 +23,7 @@
 #ifndef PC_EXPR_H
 #define PC_EXPR_H
 
+#include <stddef.h>
 #include "point.h"
 #include "smooth.h"
 #include "curve.h"

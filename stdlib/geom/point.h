@@ -26,6 +26,9 @@
 /* --- weights ------------------------------------------------------------------------------ */
 typedef enum { PC_KIND_POINT, PC_KIND_VECTOR, PC_KIND_WEIGHTED } pc_kind;
 pc_kind pc_kind_of(double w);                 /* classify a weight with PC_WEIGHT_TOL */
+/* weight_rule.c: classify the weight h[n] of a computed value and snap it to exactly 1 (the
+ * coordinates divided by it) or 0 within PC_WEIGHT_TOL; returns its pc_kind. */
+int pc_snap_weight(int n, double *h);
 
 /* Location of a value h (n+1 doubles) into out (n doubles).  PC_OK if the weight is 1
  * (within tolerance; the coordinates are divided by w), else PC_IMPROPER for a vector

@@ -172,15 +172,7 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
 
 /* ---- weights ----------------------------------------------------------------------------- */
 
-int pcl_snap_weight(int n, double *h) {
-    int k = pc_kind_of(h[n]);
-    if (k == PC_KIND_VECTOR) h[n] = 0;
-    else if (k == PC_KIND_POINT && h[n] != 1) {
-        for (int i = 0; i < n; i++) h[i] /= h[n];
-        h[n] = 1;
-    }
-    return k;
-}
+int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
 void pcl_push_numbers(lua_State *L, int n, const double *x) {
     lua_createtable(L, n, 0);
