@@ -64,49 +64,10 @@ pcl_value *pcl_newvalue(lua_State *L, int n) {
 
 /* ---- text ---------------------------------------------------------------------------------- */
 
-static void fmt_num(luaL_Buffer *b, double x) {
-    char s[32];
-    if (x == 0) x = 0;                                  /* no "-0" */
-    snprintf(s, sizeof s, "%.14g", x);
-    luaL_addstring(b, s);
-}
-
-/* P(1, 2), V(0, 1), or k*P(x, y) for a weight k other than 0 and 1: valid Lua that rebuilds
- * the value. */
-static void add_value(luaL_Buffer *b, const pcl_value *p) {
-    int n = p->n;
-    double w = p->h[n];
-    pc_kind kind = pc_kind_of(w);
-    double div = 1;
-    if (kind == PC_KIND_WEIGHTED) {
-        fmt_num(b, w);
-        luaL_addchar(b, '*');
-        div = w;
-    } else if (kind == PC_KIND_POINT) {
-        div = w;
-    }
-    luaL_addstring(b, kind == PC_KIND_VECTOR ? "V(" : "P(");
-    for (int i = 0; i < n; i++) {
-        if (i) luaL_addstring(b, ", ");
-        fmt_num(b, div == 1 ? p->h[i] : p->h[i] / div);
-    }
-    luaL_addchar(b, ')');
-}
-
 static const char *push_value_text(lua_State *L, const pcl_value *p) {
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    add_value(&b, p);
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
-}
-
-static const char *push_num_text(lua_State *L, double x) {
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    fmt_num(&b, x);
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
+    char s[PC_MAXDIM * 24 + 32];
+    pc_value_text(p->n, p->h, s, sizeof s);
+    return lua_pushstring(L, s);
 }
 
 /* ---- the messages of the operators and the drawing hook ------------------------------------ */
@@ -128,7 +89,7 @@ static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
     if (pc_kind_of(w) == PC_KIND_VECTOR)
         return pcl_error(L, "%s is a vector %s (weight 0), not a point: %s; to place a vector, "
                           "add it to a point, e.g. P(0, 0) + v", ctx, text, MEMBERSHIP);
-    const char *wt = push_num_text(L, w);
+    const char *wt = pcl_pushnum(L, w);
     return pcl_error(L, "%s has weight %s, so it is neither a point (weight 1) nor a vector "
                       "(weight 0): %s; write offsets with V(), e.g. V(x, y)*100 + P(320, 240), "
                       "or use normalize(p) for a projective point", ctx, wt, MEMBERSHIP);
