@@ -147,13 +147,6 @@ static lcurve *pushcurve(lua_State *L, pc_curve *c, int status, const char *kind
     return newcurve(L, c, kind, extra);
 }
 
-static int callable(lua_State *L, int idx) {
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-
 /* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
 static lcurve *tocurve(lua_State *L, int idx) {
     lcurve *u = luaL_testudata(L, idx, CURVE_MT);
@@ -332,7 +325,7 @@ static int l_interpolate(lua_State *L) {
 
 static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a, (void)out;
-    return pcl_isequation(L, idx) || callable(L, idx);
+    return pcl_isequation(L, idx) || pcl_callable(L, idx);
 }
 static const pcl_arg curve_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_curve_fn,
                                       .expect = "a function of t or an equation"}, A_NUM("t0"), A_NUM("t1"), PCL_END};
@@ -384,7 +377,7 @@ static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g, int *lua) {
     pc_hspline *h;
     if (lua_iscfunction(L, idx) && pcl_smooth_isfunc(lua_tocfunction(L, idx), &kind)) g->kind = (pc_gkind)kind;
     else if ((h = pcl_tohspline(L, idx))) g->kind = PC_G_HALF, g->h = *h;
-    else if (callable(L, idx)) *lua = 1;
+    else if (pcl_callable(L, idx)) *lua = 1;
     else return 0;
     return 1;
 }

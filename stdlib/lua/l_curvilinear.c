@@ -22,12 +22,7 @@ static const char ORESME_TAG = 'o';   /* its address tags the type (PCL_SELF_TAG
 /* ---- plane -> square ------------------------------------------------------------------------ */
 
 /* A number other than NaN: +-inf are the square's sides; NaN is no place. */
-static int read_place(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    out->x = lua_tonumber(L, idx);
-    return lua_type(L, idx) == LUA_TNUMBER && !isnan(out->x);
-}
-#define A_PLACE(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = read_place, .expect = "a number other than NaN"}
+#define A_PLACE(nm, fl) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_INF | (fl)}
 static const pcl_arg squash_args[] = {A_PLACE("p", 0), A_PLACE("q", PCL_OPT), PCL_END};
 
 static int squash_with(lua_State *L, double (*f)(double)) {
@@ -179,14 +174,7 @@ static double call_f(double x, void *ud) {
     return v;
 }
 
-static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-static const pcl_arg bisect_args[] = {A_ANY("f", read_callable, "a function"), A_NUM("a"), A_NUM("b"),
+static const pcl_arg bisect_args[] = {{.name = "f", .kind = PCL_CALLABLE}, A_NUM("a"), A_NUM("b"),
                                       A_NUMOPT("tol", 1e-10, NULL), PCL_END};
 static int l_bisect(lua_State *L) {
     pcl_val a[4] = {{0}};

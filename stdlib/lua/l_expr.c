@@ -531,12 +531,7 @@ static int eq_call(lua_State *L) {
     return 1;
 }
 
-/* a table argument (M:with, M:show) */
-static int read_table(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    return lua_istable(L, idx);
-}
-static const pcl_arg with_args[] = {A_ANY("values", read_table, "a table {name = value}"), PCL_END};
+static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expect = "a table {name = value}"}, PCL_END};
 
 static int eq_with(lua_State *L) {
     pcl_val a[1] = {0};
@@ -604,7 +599,7 @@ static int eq_tostring(lua_State *L) {
     return 1;
 }
 
-static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_table, .expect = "a table {A = A, ...}"}, PCL_END};
+static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_TABLE, .flags = PCL_OPT, .expect = "a table {A = A, ...}"}, PCL_END};
 static int eq_show(lua_State *L) {
     pcl_val a[1] = {0};
     leq *e = PCL_READ(L, a);

@@ -567,15 +567,9 @@ static int l_sr(lua_State *L) {
     return push_num(L, lam);
 }
 
-/* lambda of divide: any number but NaN (math.huge gives Y) */
-static int read_lambda(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    out->x = lua_tonumber(L, idx);
-    return lua_type(L, idx) == LUA_TNUMBER && !isnan(out->x);
-}
-
-/* divide(X, Y, lambda) = (X + lambda Y)/(1 + lambda); lambda = -1 gives the improper point. */
-static const pcl_arg divide_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), A_ANY("lambda", read_lambda, "a number (not NaN)"), PCL_END};
+/* divide(X, Y, lambda) = (X + lambda Y)/(1 + lambda); lambda = -1 gives the improper point,
+ * math.huge gives Y. */
+static const pcl_arg divide_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), {.name = "lambda", .kind = PCL_NUMBER, .flags = PCL_INF, .expect = "a number (not NaN)"}, PCL_END};
 static int l_divide(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);

@@ -174,6 +174,13 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
 
 int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
+int pcl_callable(lua_State *L, int idx) {
+    if (lua_isfunction(L, idx)) return 1;
+    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
+    lua_pop(L, 1);
+    return 1;
+}
+
 void pcl_push_numbers(lua_State *L, int n, const double *x) {
     lua_createtable(L, n, 0);
     for (int i = 0; i < n; i++) {
@@ -239,6 +246,7 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
     case PCL_NUMBER:
         if (a->flags & PCL_RANGE)
             return lua_pushfstring(L, "a number from %s to %s", num_text(L, a->lo), num_text(L, a->hi));
+        if (a->flags & PCL_INF) return "a number other than NaN";
         return a->flags & PCL_POS ? "a positive number" : "a finite number";
     case PCL_INTEGER:
         if (a->flags & PCL_RANGE)
@@ -268,7 +276,8 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
     case PCL_CURVE: return dimmed(L, a->dim, "curve");
     case PCL_SURFACE: return dimmed(L, a->dim, "surface");
     case PCL_MAP: return "a map";
-    case PCL_FUNCTION: return "a function";
+    case PCL_FUNCTION: case PCL_CALLABLE: return "a function";
+    case PCL_TABLE: return "a table";
     case PCL_OPTIONS: {                        /* a table {k1 =, k2 =} */
         luaL_Buffer b;
         luaL_buffinit(L, &b);
@@ -425,7 +434,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     case PCL_NUMBER:
     case PCL_INTEGER: {
         double x = lua_tonumber(L, idx);
-        int ok = t == LUA_TNUMBER && isfinite(x);
+        int ok = t == LUA_TNUMBER && (isfinite(x) || ((a->flags & PCL_INF) && !isnan(x)));
         if (ok && a->kind == PCL_INTEGER) ok = x == floor(x);
         if (ok && (a->flags & PCL_RANGE)) ok = x >= a->lo && x <= a->hi;
         if (ok && (a->flags & PCL_POS)) ok = x > 0;
@@ -472,6 +481,12 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         return;
     case PCL_FUNCTION:
         if (t != LUA_TFUNCTION) mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_CALLABLE:
+        if (!pcl_callable(L, idx)) mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_TABLE:
+        if (t != LUA_TTABLE) mismatch(L, c, idx, expected(L, a));
         return;
     case PCL_ANY: {
         const ctx *outer = reading;

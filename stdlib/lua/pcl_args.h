@@ -34,6 +34,8 @@ typedef enum {
     PCL_SURFACE,   /* v.obj a pc_surface */
     PCL_MAP,       /* v.obj a pc_map */
     PCL_FUNCTION,  /* v.idx its stack index */
+    PCL_CALLABLE,  /* a function or a value with __call (v.idx) */
+    PCL_TABLE,     /* any table (v.idx): the body reads it */
     PCL_OPTIONS,   /* a table of the keys[] (each with its own kind); unknown keys are errors */
     PCL_ANY,       /* anything (v.idx); with read: the binding's own reader */
 } pcl_kind;
@@ -46,6 +48,7 @@ typedef enum {
 #define PCL_SAMEDIM 0x10u  /* points, vectors, locations, lists: the dimension of the first one */
 #define PCL_CALLTABLE 0x20u /* the only argument, an options table: shown as NAME{...} */
 #define PCL_PAIR    0x40u  /* numbers: x of a pair x, y (the next argument) that may be one point */
+#define PCL_INF     0x80u  /* numbers: +-inf accepted (NaN is not) */
 
 typedef struct pcl_val pcl_val;
 typedef struct pcl_arg pcl_arg;
@@ -159,6 +162,8 @@ const char *pcl_nearest(const char *name, const char *const *candidates);
 /* The same over the string keys of the table at idx. */
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 
+/* 1 if the value at idx can be called: a function, or a value whose metatable has __call. */
+int pcl_callable(lua_State *L, int idx);
 /* Push a list {x[0], ..., x[n-1]}. */
 void pcl_push_numbers(lua_State *L, int n, const double *x);
 /* Push a list of n points of dim coordinates from rows of dim numbers, or (homogeneous) of n
