@@ -621,14 +621,15 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     if (lua_gettop(L) < first - 1 + nargs) lua_settop(L, first - 1 + nargs);   /* buffers above */
     const char *fname = NULL;
     dimref dim = {0};
-    int slot = nargs;
+    int slot = nargs, room = 0;
     for (int k = 0; k < nargs; k++) {
         const pcl_arg *a = &d->args[k];
         int idx = first + k;
         if (read_scalar(L, a, idx, &v[k])) continue;
-        if (!fname) {                        /* the general reader from here on */
+        if (!fname) fname = d->callname ? pcl_name(L) : d->name;   /* the general reader */
+        if (a->kind != PCL_ANY && !room) {   /* lists and options push; a reader pushes little */
             luaL_checkstack(L, 24, NULL);
-            fname = d->callname ? pcl_name(L) : d->name;
+            room = 1;
         }
         ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         if (a->kind == PCL_OPTIONS) {
