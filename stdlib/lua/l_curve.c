@@ -547,6 +547,15 @@ static int domain_error(lua_State *L, lcurve *u, double t) {
     return pcl_raise_status(L, pcl_name(L), PC_EDOMAIN);
 }
 
+/* A status of an evaluation at t as the message the user reads: at infinity, a zero
+ * derivative (zero: what it means, or NULL where the core's message stands), the others. */
+static int at_fail(lua_State *L, int st, double t, const char *zero) {
+    const char *ts = pcl_pushnum(L, t);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", ts);
+    if (st == PC_EZERO && zero) return pcl_fail(L, "the derivative is zero at t = %s%s", ts, zero);
+    return pcl_raise_status(L, pcl_name(L), st);
+}
+
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
     int st = pc_curve_eval_h(u->c, t, 0, h);
     if (st == PC_EDOMAIN) domain_error(L, u, t);
@@ -591,7 +600,7 @@ static int c_xy(lua_State *L) {
     double h[PC_MAXDIM + 1];
     eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
-    if (h[d] == 0) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
+    if (h[d] == 0) return at_fail(L, PC_IMPROPER, a[0].x, NULL);
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k] / h[d]);
     return d;
 }
@@ -619,10 +628,9 @@ static int c_deriv(lua_State *L) {
     }
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
     int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
     if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
         return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    if (st != PC_OK) return at_fail(L, st, a[0].x, NULL);
     pcl_pushvector(L, u->c->dim, out + (size_t)order * u->c->dim);
     return 1;
 }
@@ -665,12 +673,9 @@ static int unit_at(lua_State *L, int normal) {
     pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
-    const char *t = pcl_pushnum(L, a[0].x);
     int st = pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", t);
-    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s%s", t, normal ? "" : " (a cusp or a stop)");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", t);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", pcl_pushnum(L, a[0].x));
+    if (st != PC_OK) return at_fail(L, st, a[0].x, normal ? "" : " (a cusp or a stop)");
     pcl_pushvector(L, u->c->dim, normal ? nrm : e);
     return 1;
 }
@@ -682,9 +687,7 @@ static int c_curvature(lua_State *L) {
     lcurve *u = READ_METHOD(L, a);
     double t = a[0].x, k;
     int st = pc_curve_curvature(u->c, t, &k);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, t));
-    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    if (st != PC_OK) return at_fail(L, st, t, " (a cusp or a stop)");
     lua_pushnumber(L, k);
     return 1;
 }
