@@ -30,7 +30,7 @@ static const char BOX_TAG = 'd';
  * refuses a block of another type. */
 static const decl_box *current_box(lua_State *L) {
     const decl_box *b = lua_touserdata(L, lua_upvalueindex(1));
-    if (b && b->self == PCL_SELF_TAG(b, &BOX_TAG) && lua_rawlen(L, lua_upvalueindex(1)) == sizeof *b) return b;
+    if (b && lua_rawlen(L, lua_upvalueindex(1)) == sizeof *b && b->self == PCL_SELF_TAG(b, &BOX_TAG)) return b;
     luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
     return NULL;
 }
@@ -670,10 +670,9 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
     const pcl_fn *d = b->d;
     int nargs = b->nargs, top = lua_gettop(L), opts = 0;
     check_count(L, b, n);
-    luaL_checkstack(L, 24, NULL);
     if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
         opts = top;                             /* a trailing option table */
-    int limit = opts ? opts - 1 : top, slot = 1;
+    int limit = opts ? opts - 1 : top, slot = 1, room = 0;
     dimref dim = {0};
     for (int k = 0, y = 0; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
@@ -681,6 +680,10 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
         if (slot <= limit && read_scalar(L, a, idx, &v[k])) {
             y = (a->flags & PCL_PAIR) != 0;
             continue;
+        }
+        if (a->kind != PCL_ANY && !room) {   /* as pcl_read: a reader (the colour) pushes little */
+            luaL_checkstack(L, 24, NULL);
+            room = 1;
         }
         if (a->kind == PCL_OPTIONS) {
             ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
