@@ -178,33 +178,26 @@ static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const p
                       op, a->n, b->n);
 }
 
-static int l_add(lua_State *L) {
+/* A + B and A - B (sign -1): weights add, so a point plus a vector is a point. */
+static int add_sub(lua_State *L, double sign) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    if ((!a || !b) && pcl_eq_hook(L, PCL_EQ_ADD)) return 1;
-    if (!a || !b)
+    if ((!a || !b) && pcl_eq_hook(L, sign > 0 ? PCL_EQ_ADD : PCL_EQ_SUB)) return 1;
+    if ((!a || !b) && sign > 0)
         return pcl_error(L, "cannot add %s and %s: points and vectors add only to points and "
                           "vectors; to shift a point write A + V(dx, dy)",
                           opnd_name(L, 1), opnd_name(L, 2));
-    int n = a->n;
-    if (b->n != n) return mixed_error(L, "add", a, b);
-    pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + b->h[i];
-    return finite_or_error(L, r, "A + B");
-}
-
-static int l_sub(lua_State *L) {
-    pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    if ((!a || !b) && pcl_eq_hook(L, PCL_EQ_SUB)) return 1;
     if (!a || !b)
         return pcl_error(L, "cannot subtract %s from %s: points and vectors subtract only "
                           "points and vectors; to shift a point write A - V(dx, dy)",
                           opnd_name(L, 2), opnd_name(L, 1));
     int n = a->n;
-    if (b->n != n) return mixed_error(L, "subtract", a, b);
+    if (b->n != n) return mixed_error(L, sign > 0 ? "add" : "subtract", a, b);
     pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] - b->h[i];
-    return finite_or_error(L, r, "A - B");
+    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + sign * b->h[i];
+    return finite_or_error(L, r, sign > 0 ? "A + B" : "A - B");
 }
+static int l_add(lua_State *L) { return add_sub(L, 1.0); }
+static int l_sub(lua_State *L) { return add_sub(L, -1.0); }
 
 static int l_mul(lua_State *L) {
     pcl_value *p;
