@@ -13,14 +13,7 @@
 #define SET_KEY "pointcalc.params.set"           /* name -> value given by the host */
 #define DECLARED_KEY "pointcalc.params.declared" /* the list of declarations, in order */
 
-static void registry_table(lua_State *L, const char *key) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, key) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, key);
-    }
-}
+static void registry_table(lua_State *L, const char *key) { luaL_getsubtable(L, LUA_REGISTRYINDEX, key); }
 
 void pcl_param_set(lua_State *L, const char *name, double value) {
     registry_table(L, SET_KEY);

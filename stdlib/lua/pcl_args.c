@@ -775,12 +775,7 @@ static void push_signature(lua_State *L, const pcl_fn *d) {
 }
 
 static void record(lua_State *L, const pcl_fn *d) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, DECL_KEY);
-    }
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, DECL_KEY);
     lua_createtable(L, 0, 3);
     if (d->sig) {                                    /* forms, one per line */
         lua_newtable(L);
@@ -871,12 +866,7 @@ void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homog
 
 /* Push the registry of declarations (for pointcalc._decl). */
 void pcl_push_decls(lua_State *L) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, DECL_KEY);
-    }
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, DECL_KEY);
 }
 
 /* ---- misspelt globals ----------------------------------------------------------------------- */

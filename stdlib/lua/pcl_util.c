@@ -149,15 +149,7 @@ int pcl_statuserror(lua_State *L, const char *fname, int status, const char *con
     return pcl_error(L, "%s: %s", fname, pc_strerror(status));
 }
 
-void pcl_private(lua_State *L, int module) {
-    module = lua_absindex(L, module);
-    if (lua_getfield(L, module, "_tk") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, module, "_tk");
-    }
-}
+void pcl_private(lua_State *L, int module) { luaL_getsubtable(L, module, "_tk"); }
 
 /* ---- Lua called from the core ------------------------------------------------------------- */
 
