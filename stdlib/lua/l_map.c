@@ -179,7 +179,7 @@ static int l_translate(lua_State *L) {
     PCL_READ(L, a);
     for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
         if (!isfinite(a[0].v[i]))
-            return pcl_argerror_full(L, "map.translate", 1, 1, "V", "a finite vector");
+            return pcl_argfail(L, 1, "must be a finite vector, got %s", pcl_shown(L, 1));
     pc_map_translate(newmap(L), a[0].n, a[0].v);
     return 1;
 }
