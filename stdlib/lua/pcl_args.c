@@ -25,42 +25,49 @@ typedef struct {
 static const char BOX_TAG = 'd';
 #define BOX_MT "pointcalc.declaration"
 
+/* The declaration block at idx, or NULL: its size and its tag, which a script cannot forge. */
+static const decl_box *to_box(lua_State *L, int idx) {
+    const decl_box *b = lua_touserdata(L, idx);
+    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b && b->self == PCL_SELF_TAG(b, &BOX_TAG))
+        return b;
+    return NULL;
+}
+
 /* The declaration of the running C function.  Only debug.setupvalue could put another value
  * in its upvalue 1, and the guard below refuses that for declared functions; the tag still
  * refuses a block of another type. */
 static const decl_box *current_box(lua_State *L) {
-    const decl_box *b = lua_touserdata(L, lua_upvalueindex(1));
-    if (b && lua_rawlen(L, lua_upvalueindex(1)) == sizeof *b && b->self == PCL_SELF_TAG(b, &BOX_TAG)) return b;
-    luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
-    return NULL;
+    const decl_box *b = to_box(L, lua_upvalueindex(1));
+    if (!b) luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
+    return b;
 }
 static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
 
 /* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration (whose
  * values its body would misread): refused where it is attempted, so that no call has to ask
  * Lua which function is running.  The other upvalues (a canvas, a random state) are checked
- * by the bindings that use them. */
+ * by the bindings that use them.  Lua's function is called directly, kept where no script
+ * reaches it (not an upvalue of the guard). */
+static lua_CFunction lua_setupvalue_fn;
 static int setupvalue_guard(lua_State *L) {
     int isint;
     if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, &isint) == 1 && isint && lua_getupvalue(L, 1, 1)) {
-        int declared = luaL_testudata(L, -1, BOX_MT) != NULL;
+        int declared = to_box(L, -1) != NULL;
         lua_pop(L, 1);
         if (declared)
             return luaL_error(L, "debug.setupvalue: upvalue 1 of a declared function is its declaration, "
                               "which cannot be replaced (forged upvalue)");
     }
-    lua_pushvalue(L, lua_upvalueindex(1));
-    lua_insert(L, 1);
-    lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-    return lua_gettop(L);
+    return lua_setupvalue_fn(L);
 }
 
 void pcl_guard_upvalues(lua_State *L) {
     int top = lua_gettop(L);
     if (lua_getglobal(L, "debug") == LUA_TTABLE && lua_getfield(L, -1, "setupvalue") == LUA_TFUNCTION &&
-        lua_tocfunction(L, -1) != setupvalue_guard) {
-        lua_pushcclosure(L, setupvalue_guard, 1);
-        lua_setfield(L, -2, "setupvalue");
+        lua_tocfunction(L, -1) && lua_tocfunction(L, -1) != setupvalue_guard) {
+        lua_setupvalue_fn = lua_tocfunction(L, -1);   /* the debug library's, one per process */
+        lua_pushcfunction(L, setupvalue_guard);
+        lua_setfield(L, -3, "setupvalue");
     }
     lua_settop(L, top);
 }

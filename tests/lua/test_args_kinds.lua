@@ -65,6 +65,10 @@ err(function() return pointcalc._tk.param_set("1x", 2) end,
 local other = select(2, debug.getupvalue(dist, 1))
 err(function() debug.setupvalue(lerp, 1, other) end, "upvalue 1 of a declared function is its declaration", "swapping declarations")
 eq(dist(P(0, 0), P(3, 4)), 5, "dist still reads its own arguments")
+eq(debug.getupvalue(debug.setupvalue, 1), nil, "the guard keeps Lua's function out of reach")
+debug.setmetatable(select(2, debug.getupvalue(lerp, 1)), nil)   -- the guard does not go by it
+err(function() debug.setupvalue(lerp, 1, other) end, "cannot be replaced", "a declaration without its metatable")
+eq(tostring(lerp(P(0, 0), P(2, 2), 0.5)), "P(1, 1)", "lerp still reads its own arguments")
 eq(debug.setupvalue(function() return other end, 1, 5), "other", "a Lua function's upvalues are set as before")
 
 check.done()
