@@ -529,20 +529,20 @@ static int l_sphdir(lua_State *L) {
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
 /* A stroke piece's half-spline of fractional degree has no value past its ends: say which. */
+/* Argument #k past the domain of piece i's half-spline (s its own parameter, hi the bound above). */
+static int half_fail(lua_State *L, int k, const pc_piece *pc, double s, int i, double hi) {
+    int low = s < 0;
+    const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m), *bound = pcl_pushnum(L, low ? 0 : hi);
+    return pcl_argfail(L, k, "must be %s %s (piece %d's half-spline has the fractional degree %s = %s and "
+                       "does not extrapolate)", low ? "at least" : "at most", bound, i + 1, low ? "n" : "m", deg);
+}
+
 static int domain_error(lua_State *L, lcurve *u, double t) {
     if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) {
         double fl = floor(t);
         int i = fl < 0 ? 0 : (fl > u->np - 1 ? u->np - 1 : (int)fl);
         pc_piece *pc = &pieces(u)[i];
-        double s = t - i;
-        if (pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, s) != PC_OK) {
-            int low = s < 0;
-            const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
-            const char *bound = pcl_pushnum(L, low ? 0 : u->np);
-            return pcl_argfail(L, 1, "must be %s %s (piece %d's half-spline has the fractional degree "
-                               "%s = %s and does not extrapolate)", low ? "at least" : "at most", bound,
-                               i + 1, low ? "n" : "m", deg);
-        }
+        if (pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, t - i) != PC_OK) return half_fail(L, 1, pc, t - i, i, u->np);
     }
     return pcl_raise_status(L, pcl_name(L), PC_EDOMAIN);
 }
@@ -817,12 +817,7 @@ static int piece_at(lua_State *L, double *x) {
         pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, g, x);
         return d;
     }
-    if (pc_gfun_check(&pc->g, t) != PC_OK) {
-        int low = t < 0;
-        const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
-        pcl_argfail(L, 2, "must be %s (piece %d's half-spline has the fractional degree %s = %s and "
-                    "does not extrapolate)", low ? "at least 0" : "at most 1", i + 1, low ? "n" : "m", deg);
-    }
+    if (pc_gfun_check(&pc->g, t) != PC_OK) half_fail(L, 2, pc, t, i, 1);
     pc_piece_eval(d, pc, t, x);
     return d;
 }
