@@ -387,10 +387,11 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
         out->list = x;
         return;
     }
-    /* points, values, vectors: the declared dimension (or the one PCL_SAMEDIM knows), else the
-     * first one's for all; values keep their weights (rows of d + 1) */
+    /* points, values, vectors: the declared dimension (vectors: or the one PCL_SAMEDIM knows,
+     * "[2] must be a 2-D vector"), else the first one's for all; values keep their weights
+     * (rows of d + 1) */
     static const pcl_kind item_kind[] = {[PCL_POINTS] = PCL_POINT, [PCL_VALUES] = PCL_VALUE, [PCL_VECTORS] = PCL_VECTOR};
-    int known = a->dim ? a->dim : (a->flags & PCL_SAMEDIM) && c->dim ? c->dim->n : 0;
+    int known = a->dim ? a->dim : a->kind == PCL_VECTORS && (a->flags & PCL_SAMEDIM) && c->dim ? c->dim->n : 0;
     pcl_arg pt = {.name = a->name, .kind = item_kind[a->kind], .dim = known,
                   .expect = a->kind == PCL_VALUES ? "a point" : NULL};
     dimref inner = {0};
