@@ -805,7 +805,7 @@ static void record(lua_State *L, const pcl_fn *d) {
     lua_pop(L, 1);
 }
 
-/* The metatable of the declarations: it tells them to the guard and hides itself. */
+/* The metatable of the declarations: getmetatable(d) says "declaration" and no more. */
 static void box_metatable(lua_State *L) {
     if (luaL_newmetatable(L, BOX_MT)) {
         lua_pushliteral(L, "declaration");
