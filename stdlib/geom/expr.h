@@ -23,6 +23,7 @@
 #ifndef PC_EXPR_H
 #define PC_EXPR_H
 
+#include <stddef.h>
 #include "point.h"
 #include "smooth.h"
 #include "curve.h"
@@ -78,6 +79,17 @@ int pc_expr_param(pc_expr_pool *pool, const char *name, int *status);
 int pc_expr_nparams(const pc_expr_pool *pool);
 const char *pc_expr_param_name(const pc_expr_pool *pool, int k);   /* NULL if none */
 int pc_expr_param_index(const pc_expr_pool *pool, int e);         /* k of a PARAM node, else -1 */
+/* expr_params.c: the parameters e depends on, in order, into in (PC_EXPR_MAXPARAM): their
+ * count; the parameter called name (-1 if none); their names as a list ("t, s and u") and
+ * their values ("t = 0.5, s = 1") into buf, returning the length the whole text needs (as
+ * snprintf); the weight class of a value over the unit box of its parameters (PC_KIND_POINT,
+ * PC_KIND_VECTOR, PC_KIND_WEIGHTED; -1 for a scalar or when it does not compile). */
+int pc_expr_param_list(const pc_expr_pool *pool, int e, int *in);
+int pc_expr_find_param(const pc_expr_pool *pool, const char *name);
+size_t pc_expr_param_names(const pc_expr_pool *pool, int n, const int *in, char *buf, size_t size);
+size_t pc_expr_param_values(const pc_expr_pool *pool, int n, const int *in, const double *x, char *buf,
+                            size_t size);
+int pc_expr_weight_class(const pc_expr_pool *pool, int e);
 
 /* a + b, a - b: two scalars or two values of one dimension; -a. */
 int pc_expr_add(pc_expr_pool *pool, int a, int b, int *status);

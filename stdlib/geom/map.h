@@ -17,6 +17,7 @@
  * nor 1, so an affine map always has the last row (0 ... 0 | 1) exactly and keeps weights. */
 #ifndef PC_MAP_H
 #define PC_MAP_H
+#include <stddef.h>
 #include "point.h"
 
 typedef struct {
@@ -50,6 +51,15 @@ void pc_map_apply(const pc_map *f, const double *in, double *out);
  * when `in` had a weight (a point sent to infinity), PC_OK for a direction.  PC_EPOLE if a
  * nonzero value goes to the zero value (the centre of a central projection). */
 int pc_map_image(const pc_map *f, const double *in, double *out);
+/* map_text.c: the image by the one weight rule (point.h): pc_map_image, its weight snapped
+ * to 1 or 0 within PC_WEIGHT_TOL; a raw weight within it of 0 is a direction
+ * (map.matrix({{1, 0, 0}, {0, 1, 0}, {0, 1e-17, 1}}) sends V(0, 1) to V(0, 1), not to
+ * P(0, 1e17)): PC_IMPROPER for a point sent there, PC_EPOLE for the zero image.  And the map
+ * as text: "affine map 2-D -> 2-D [1 0 | 0; 0 1 | 0]", and its matrix aligned under a header
+ * naming the convention (rowvec: p' = p T); both return the length the text needs. */
+int pc_map_image_rule(const pc_map *f, const double *in, double *out);
+size_t pc_map_text(const pc_map *f, char *buf, size_t size);
+size_t pc_map_show(const pc_map *f, int rowvec, char *buf, size_t size);
 /* h = f o g (g first).  PC_EDIM unless g->nout == f->nin. */
 int pc_map_compose(const pc_map *f, const pc_map *g, pc_map *h);
 /* PC_EDIM unless nin == nout; PC_ESINGULAR for a singular matrix. */

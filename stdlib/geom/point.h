@@ -21,11 +21,18 @@
 #define PC_DEGEN_TOL 1e-10    /* relative size (a sine) below which directions are dependent */
 #define PC_ON_TOL 1e-9        /* relative residual below which a point lies on a line */
 
+#include <stddef.h>
 #include "status.h"
 
 /* --- weights ------------------------------------------------------------------------------ */
 typedef enum { PC_KIND_POINT, PC_KIND_VECTOR, PC_KIND_WEIGHTED } pc_kind;
 pc_kind pc_kind_of(double w);                 /* classify a weight with PC_WEIGHT_TOL */
+/* weight_rule.c: classify the weight h[n] of a computed value and snap it to exactly 1 (the
+ * coordinates divided by it) or 0 within PC_WEIGHT_TOL; returns its pc_kind. */
+int pc_snap_weight(int n, double *h);
+/* point_text.c: the value h (n + 1 doubles) as text, P(1, 2), V(0, 1) or 2*P(1, 2) (valid Lua
+ * that rebuilds it) into buf; returns the length the text needs (as snprintf). */
+size_t pc_value_text(int n, const double *h, char *buf, size_t size);
 
 /* Location of a value h (n+1 doubles) into out (n doubles).  PC_OK if the weight is 1
  * (within tolerance; the coordinates are divided by w), else PC_IMPROPER for a vector

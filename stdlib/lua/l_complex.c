@@ -297,25 +297,14 @@ static const pcl_fn mcall[] = {{.name = "M", .fn = m_call, .args = m_args, .self
 static const pcl_fn mmethods[] = {{.name = "M:inverse", .fn = m_inverse, .result = "M", .self = self_mobius, .selftype = "Moebius map",
                                    .help = "The inverse Moebius map (another automorphism of the disc)."}, PCL_END};
 
-/* the metatable name with __tostring, __index (a closure over the methods) and the rest */
-static void open_type(lua_State *L, const char *name, const luaL_Reg *meta, const pcl_fn *methods, lua_CFunction index) {
-    luaL_newmetatable(L, name);
-    luaL_setfuncs(L, meta, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, index, 1);
-    lua_setfield(L, -2, "__index");
-}
-
 void pcl_open_complex(lua_State *L) {
     int module = lua_gettop(L);
     static const luaL_Reg cmeta[] = {
         {"__add", c_add}, {"__sub", c_sub}, {"__mul", c_mul}, {"__div", c_div}, {"__pow", c_pow},
         {"__unm", c_unm}, {"__eq", c_eq}, {"__tostring", c_tostring}, {NULL, NULL}};
     static const luaL_Reg mmeta[] = {{"__tostring", m_tostring}, {NULL, NULL}};
-    open_type(L, COMPLEX_MT, cmeta, zmethods, c_index);
-    open_type(L, MOBIUS_MT, mmeta, mmethods, m_index);
-    pcl_register(L, -1, mcall, 0);
+    pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, c_index);
+    pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, m_index);
     lua_settop(L, module);
 
     lua_newtable(L);   /* complex: a table of functions, callable as the constructor */

@@ -147,13 +147,6 @@ static lcurve *pushcurve(lua_State *L, pc_curve *c, int status, const char *kind
     return newcurve(L, c, kind, extra);
 }
 
-static int callable(lua_State *L, int idx) {
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-
 /* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
 static lcurve *tocurve(lua_State *L, int idx) {
     lcurve *u = luaL_testudata(L, idx, CURVE_MT);
@@ -205,53 +198,6 @@ static int list_fail(lua_State *L, int k, const char *key, const char *fmt, ...)
     return key ? pcl_keyfail(L, key, "%s", msg) : pcl_argfail(L, k, "%s", msg);
 }
 
-static int is_table(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    return lua_istable(L, idx);
-}
-#define A_LIST(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = is_table, .expect = "a list of points"}
-#define A_VECTORS(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = is_table, .expect = "a list of vectors"}
-
-/* The list at idx (argument #k, or option key) as rows: vectors set, vectors of *dim
- * components; else homogeneous rows of any weight (w*P is a weighted control point, a vector
- * one at infinity), *dim 0 taking the first one's.  lo..hi entries (hi 0: no cap); the rows go
- * into a scratch userdata left on the stack. */
-static double *read_rows(lua_State *L, int idx, int k, const char *key, int vectors, int lo,
-                         int hi, int *count, int *dim) {
-    idx = lua_absindex(L, idx);
-    lua_Integer len = luaL_len(L, idx);
-    int m = len < 0 ? 0 : len > 100000 ? 100001 : (int)len, w = 0;
-    const char *unit = vectors ? "vectors" : "points";
-    if (hi > 0 && lo == hi && m != lo) list_fail(L, k, key, "must hold %d %s, got %d", lo, unit, m);
-    if (hi > 0 && (m < lo || m > hi)) list_fail(L, k, key, "must hold %d to %d %s, got %d", lo, hi, unit, m);
-    if (m < lo || m > 100000) list_fail(L, k, key, "must hold at least %d %s, got %d", lo, unit, m);
-    double *h = NULL;
-    for (int i = 1; i <= m; i++) {
-        lua_geti(L, idx, i);
-        int top = lua_gettop(L);
-        pcl_value *v = pcl_tovalue(L, top);
-        if (!v) list_fail(L, k, key, "[%d] must be a %s, got %s", i, vectors ? "vector" : "point", pcl_shown(L, top));
-        if (!h && !*dim) *dim = v->n;
-        if (v->n != *dim)
-            list_fail(L, k, key, vectors ? "[%d] is %d-D, but the points are %d-D (mixed dimensions)"
-                                         : "[%d] is %d-D, but [1] is %d-D (mixed dimensions)", i, v->n, *dim);
-        if (vectors && pc_kind_of(v->h[v->n]) != PC_KIND_VECTOR)
-            list_fail(L, k, key, "[%d] must be a %d-D vector, got %s; a vector has weight 0: a difference "
-                      "of points is a vector, e.g. B - A", i, *dim, pcl_shown(L, top));
-        for (int j = 0; j <= *dim; j++)
-            if (!isfinite(v->h[j])) list_fail(L, k, key, "[%d] has NaN or infinite coordinates", i);
-        if (!h) {
-            w = *dim + !vectors;
-            h = lua_newuserdatauv(L, sizeof(double) * (size_t)(m ? m : 1) * (size_t)w, 0);
-            lua_insert(L, -2);
-        }
-        memcpy(h + (size_t)(i - 1) * w, v->h, sizeof(double) * (size_t)w);
-        lua_pop(L, 1);
-    }
-    *count = m;
-    return h;
-}
-
 /* The parameters of n nodes given as option key (or argument #k): n numbers, increasing unless
  * any order will do (interpolation: distinct ones, which the core checks). */
 static const double *params(lua_State *L, const pcl_val *v, int k, const char *key, int n, int any) {
@@ -266,60 +212,37 @@ static const double *params(lua_State *L, const pcl_val *v, int k, const char *k
 
 /* ---- constructors ------------------------------------------------------------------------------ */
 
-static const pcl_arg bezier_args[] = {A_LIST("points", 0), PCL_END};
+static const pcl_arg bezier_args[] = {A_VALUES("points", 2, PC_CURVE_MAXDEG + 1), PCL_END};
 static int l_bezier(lua_State *L) {
     pcl_val a[1] = {{0}};
     PCL_READ(L, a);
-    int m, d = 0, st;
-    double *h = read_rows(L, 1, 1, NULL, 0, 2, PC_CURVE_MAXDEG + 1, &m, &d);
-    pushcurve(L, pc_curve_bezier(d, m, h, &st), st, NULL, 0);
+    int st;
+    pushcurve(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), st, NULL, 0);
     return 1;
 }
 
-/* A list of m finite numbers at arg (surface.bspline's knots, through pcl_checkknots). */
-static double *read_numbers(lua_State *L, const char *fn, int idx, const char *what, int m) {
-    idx = lua_absindex(L, idx);
-    if (!lua_istable(L, idx) || (int)luaL_len(L, idx) != m) {
-        lua_pushfstring(L, "a list of %d numbers", m);
-        pcl_error(L, "%s: %s must be %s", fn, what, lua_tostring(L, -1));
-    }
-    double *x = lua_newuserdatauv(L, sizeof(double) * (size_t)(m ? m : 1), 0);
-    for (int i = 0; i < m; i++) {
-        lua_geti(L, idx, i + 1);
-        int isnum;
-        x[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum || !isfinite(x[i]))
-            pcl_error(L, "%s: %s[%d] must be a finite number, got %s", fn, what, i + 1,
-                      isnum ? pcl_pushnum(L, x[i]) : luaL_typename(L, -1));
-        lua_pop(L, 1);
-    }
-    return x;   /* stays on the stack */
-}
-
-pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree,
-                            double **knots) {
+/* The knots at arg (bspline, surface.bspline): nil or "open", "uniform", "periodic", or a
+ * non-decreasing list of ncp + degree + 1 numbers into *knots (a buffer left on the stack). */
+pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree, double **knots) {
+    static const char *const kinds[] = {"open", "uniform", "periodic", NULL};
+    static const pc_knot_kind kind_of[] = {PC_KNOTS_OPEN, PC_KNOTS_UNIFORM, PC_KNOTS_PERIODIC};
+    static const pcl_arg named = {.name = "knots", .kind = PCL_ENUM, .choices = kinds,
+                                  .expect = "\"open\", \"uniform\", \"periodic\" or a list of numbers"};
+    static const pcl_arg list = A_NUMBERS("knots", 0, 0);
+    pcl_val v = {0};
     *knots = NULL;
     if (lua_isnoneornil(L, arg)) return PC_KNOTS_OPEN;
-    if (lua_type(L, arg) == LUA_TSTRING) {
-        const char *s = lua_tostring(L, arg);
-        if (!strcmp(s, "open")) return PC_KNOTS_OPEN;
-        if (!strcmp(s, "uniform")) return PC_KNOTS_UNIFORM;
-        if (!strcmp(s, "periodic")) return PC_KNOTS_PERIODIC;
-    } else if (lua_istable(L, arg)) {
-        int want = ncp + degree + 1, got = (int)luaL_len(L, arg);
-        if (got != want)
-            pcl_error(L, "%s: argument #%d (knots) must hold points + degree + 1 = %d knots, got %d",
-                      fn, arg, want, got);
-        *knots = read_numbers(L, fn, arg, "knots", want);
-        for (int i = 1; i < want; i++)
-            if ((*knots)[i] < (*knots)[i - 1])
-                pcl_error(L, "%s: argument #%d (knots) must be non-decreasing, but knot [%d] = %s "
-                          "is less than knot [%d] = %s", fn, arg, i + 1, pcl_pushnum(L, (*knots)[i]),
-                          i, pcl_pushnum(L, (*knots)[i - 1]));
-        return PC_KNOTS_GIVEN;
-    }
-    return pcl_argerror_full(L, fn, arg, arg, "knots",
-                       "\"open\", \"uniform\", \"periodic\" or a list of numbers");
+    pcl_readone(L, arg, arg, 0, lua_istable(L, arg) ? &list : &named, 0, &v);
+    if (!lua_istable(L, arg)) return kind_of[v.n];
+    int want = ncp + degree + 1;
+    if (v.n != want)
+        pcl_error(L, "%s: argument #%d (knots) must hold points + degree + 1 = %d knots, got %d", fn, arg, want, v.n);
+    for (int i = 1; i < want; i++)
+        if (v.list[i] < v.list[i - 1])
+            pcl_error(L, "%s: argument #%d (knots) must be non-decreasing, but knot [%d] = %s is less than "
+                      "knot [%d] = %s", fn, arg, i + 1, pcl_pushnum(L, v.list[i]), i, pcl_pushnum(L, v.list[i - 1]));
+    *knots = v.list;
+    return PC_KNOTS_GIVEN;
 }
 
 /* The knots of bspline: "open", "uniform", "periodic" or a list of numbers. */
@@ -331,58 +254,42 @@ static int read_knots(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
         if (!strcmp(lua_tostring(L, idx), kinds[i])) return (out->n = i), 1;
     return 0;
 }
-static const pcl_arg bspline_args[] = {A_LIST("points", 0), {.name = "degree", .kind = PCL_INTEGER},
+static const pcl_arg bspline_args[] = {A_VALUES("points", 2, 0), {.name = "degree", .kind = PCL_INTEGER},
     {.name = "knots", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_knots,
      .expect = "\"open\", \"uniform\", \"periodic\" or a list of numbers"}, PCL_END};
 static int l_bspline(lua_State *L) {
     pcl_val a[3] = {{0}};
     PCL_READ(L, a);
-    int m, d = 0, p = a[1].x < 1 || a[1].x > PC_CURVE_MAXDEG ? 0 : (int)a[1].x;
-    double *h = read_rows(L, 1, 1, NULL, 0, 2, 0, &m, &d);
+    int m = a[0].n, d = a[0].dim, p = a[1].x < 1 || a[1].x > PC_CURVE_MAXDEG ? 0 : (int)a[1].x;
+    double *h = a[0].list;
     int periodic = a[2].present && a[2].n == 2;
     if (p < 1 || p > (periodic ? m : m - 1))
         return periodic ? pcl_argfail(L, 2, "must be an integer from 1 to %d (the number of points), got %s",
                                       m, pcl_shown(L, 2))
                         : pcl_argfail(L, 2, "must be an integer from 1 to %d (fewer than the %d points), got %s",
                                       m > PC_CURVE_MAXDEG ? PC_CURVE_MAXDEG : m - 1, m, pcl_shown(L, 2));
-    static const pc_knot_kind kinds[] = {PC_KNOTS_OPEN, PC_KNOTS_UNIFORM, PC_KNOTS_PERIODIC};
-    pc_knot_kind kk = !a[2].present ? PC_KNOTS_OPEN : a[2].n < 0 ? PC_KNOTS_GIVEN : kinds[a[2].n];
-    double *knots = NULL;
-    if (kk == PC_KNOTS_GIVEN) {
-        static const pcl_arg list = A_NUMBERS("knots", 0, 0);
-        pcl_val kv = {0};
-        pcl_readone(L, 3, 3, 0, &list, 0, &kv);
-        if (kv.n != m + p + 1)
-            return pcl_argfail(L, 3, "must hold points + degree + 1 = %d knots, got %d", m + p + 1, kv.n);
-        knots = kv.list;
-        for (int i = 1; i < kv.n; i++)
-            if (knots[i] < knots[i - 1])
-                return pcl_argfail(L, 3, "must be non-decreasing, but knot [%d] = %s is less than knot "
-                                   "[%d] = %s", i + 1, pcl_pushnum(L, knots[i]), i, pcl_pushnum(L, knots[i - 1]));
-        if (!(knots[p] < knots[m]))   /* the domain [knot p+1, knot points+1] */
-            return pcl_argfail(L, 3, "leaves no domain: knot [%d] = %s (the start) must be less than knot "
-                               "[%d] = %s (the end)", p + 1, pcl_pushnum(L, knots[p]), m + 1, pcl_pushnum(L, knots[m]));
-    }
+    double *knots;
+    pc_knot_kind kk = pcl_checkknots(L, pcl_name(L), 3, m, p, &knots);
+    if (knots && !(knots[p] < knots[m]))   /* the domain [knot p+1, knot points+1] */
+        return pcl_argfail(L, 3, "leaves no domain: knot [%d] = %s (the start) must be less than knot "
+                           "[%d] = %s (the end)", p + 1, pcl_pushnum(L, knots[p]), m + 1, pcl_pushnum(L, knots[m]));
     int st;
     pushcurve(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), st, NULL, 0);
     return 1;
 }
 
-static const pcl_arg hermite_keys[] = {A_VECTORS("tin", 0), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
-static const pcl_arg hermite_args[] = {A_POINTS("points", 0, 2, 0), A_VECTORS("tangents", 0),
-                                       A_OPTIONS("opts", hermite_keys), PCL_END};
+static const pcl_arg hermite_keys[] = {A_VECTORS("tin"), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
+static const pcl_arg hermite_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
+                                       A_VECTORS("tangents"), A_OPTIONS("opts", hermite_keys), PCL_END};
 static int l_hermite(lua_State *L) {
     pcl_val a[6] = {{0}};   /* points, tangents, opts, tin, u, closed */
     PCL_READ(L, a);
-    int n = a[0].n, d = a[0].dim, nt;
-    double *t = read_rows(L, 2, 2, NULL, 1, n, n, &nt, &d), *tin = NULL;
-    if (a[3].present) {
-        lua_getfield(L, 3, "tin");
-        tin = read_rows(L, -1, 3, "tin", 1, n, n, &nt, &d);
-    }
+    int n = a[0].n;
+    if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d vectors, got %d", n, a[1].n);
+    if (a[3].present && a[3].n != n) return pcl_keyfail(L, "tin", "must hold %d vectors, got %d", n, a[3].n);
     int st;
-    pc_curve *c = pc_curve_hermite(d, n, a[0].list, t, tin, params(L, &a[4], 3, "u", n, 0),
-                                   (int)a[5].x, &st);
+    pc_curve *c = pc_curve_hermite(a[0].dim, n, a[0].list, a[1].list, a[3].present ? a[3].list : NULL,
+                                   params(L, &a[4], 3, "u", n, 0), (int)a[5].x, &st);
     pushcurve(L, c, st, NULL, 0);
     return 1;
 }
@@ -418,7 +325,7 @@ static int l_interpolate(lua_State *L) {
 
 static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a, (void)out;
-    return pcl_isequation(L, idx) || callable(L, idx);
+    return pcl_isequation(L, idx) || pcl_callable(L, idx);
 }
 static const pcl_arg curve_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_curve_fn,
                                       .expect = "a function of t or an equation"}, A_NUM("t0"), A_NUM("t1"), PCL_END};
@@ -427,11 +334,11 @@ static int l_curve(lua_State *L) {
     pcl_val a[3] = {{0}};
     PCL_READ(L, a);
     int st;
+    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        pushcurve(L, pcl_eq_curve(L, pcl_name(L), &st), st, "equation", 0);
+        pushcurve(L, pcl_eq_curve(L, a[1].x, a[2].x, &st), st, "equation", 0);
         return 1;
     }
-    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -470,7 +377,7 @@ static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g, int *lua) {
     pc_hspline *h;
     if (lua_iscfunction(L, idx) && pcl_smooth_isfunc(lua_tocfunction(L, idx), &kind)) g->kind = (pc_gkind)kind;
     else if ((h = pcl_tohspline(L, idx))) g->kind = PC_G_HALF, g->h = *h;
-    else if (callable(L, idx)) *lua = 1;
+    else if (pcl_callable(L, idx)) *lua = 1;
     else return 0;
     return 1;
 }
@@ -622,22 +529,31 @@ static int l_sphdir(lua_State *L) {
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
 /* A stroke piece's half-spline of fractional degree has no value past its ends: say which. */
+/* Argument #k past the domain of piece i's half-spline (s its own parameter, hi the bound above). */
+static int half_fail(lua_State *L, int k, const pc_piece *pc, double s, int i, double hi) {
+    int low = s < 0;
+    const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m), *bound = pcl_pushnum(L, low ? 0 : hi);
+    return pcl_argfail(L, k, "must be %s %s (piece %d's half-spline has the fractional degree %s = %s and "
+                       "does not extrapolate)", low ? "at least" : "at most", bound, i + 1, low ? "n" : "m", deg);
+}
+
 static int domain_error(lua_State *L, lcurve *u, double t) {
     if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) {
         double fl = floor(t);
         int i = fl < 0 ? 0 : (fl > u->np - 1 ? u->np - 1 : (int)fl);
         pc_piece *pc = &pieces(u)[i];
-        double s = t - i;
-        if (pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, s) != PC_OK) {
-            int low = s < 0;
-            const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
-            const char *bound = pcl_pushnum(L, low ? 0 : u->np);
-            return pcl_argfail(L, 1, "must be %s %s (piece %d's half-spline has the fractional degree "
-                               "%s = %s and does not extrapolate)", low ? "at least" : "at most", bound,
-                               i + 1, low ? "n" : "m", deg);
-        }
+        if (pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, t - i) != PC_OK) return half_fail(L, 1, pc, t - i, i, u->np);
     }
     return pcl_raise_status(L, pcl_name(L), PC_EDOMAIN);
+}
+
+/* A status of an evaluation at t as the message the user reads: at infinity, a zero
+ * derivative (zero: what it means, or NULL where the core's message stands), the others. */
+static int at_fail(lua_State *L, int st, double t, const char *zero) {
+    const char *ts = pcl_pushnum(L, t);
+    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", ts);
+    if (st == PC_EZERO && zero) return pcl_fail(L, "the derivative is zero at t = %s%s", ts, zero);
+    return pcl_raise_status(L, pcl_name(L), st);
 }
 
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
@@ -684,7 +600,7 @@ static int c_xy(lua_State *L) {
     double h[PC_MAXDIM + 1];
     eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
-    if (h[d] == 0) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
+    if (h[d] == 0) return at_fail(L, PC_IMPROPER, a[0].x, NULL);
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k] / h[d]);
     return d;
 }
@@ -712,10 +628,9 @@ static int c_deriv(lua_State *L) {
     }
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
     int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, a[0].x));
     if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
         return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    if (st != PC_OK) return at_fail(L, st, a[0].x, NULL);
     pcl_pushvector(L, u->c->dim, out + (size_t)order * u->c->dim);
     return 1;
 }
@@ -758,12 +673,9 @@ static int unit_at(lua_State *L, int normal) {
     pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
-    const char *t = pcl_pushnum(L, a[0].x);
     int st = pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", t);
-    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s%s", t, normal ? "" : " (a cusp or a stop)");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", t);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", pcl_pushnum(L, a[0].x));
+    if (st != PC_OK) return at_fail(L, st, a[0].x, normal ? "" : " (a cusp or a stop)");
     pcl_pushvector(L, u->c->dim, normal ? nrm : e);
     return 1;
 }
@@ -775,9 +687,7 @@ static int c_curvature(lua_State *L) {
     lcurve *u = READ_METHOD(L, a);
     double t = a[0].x, k;
     int st = pc_curve_curvature(u->c, t, &k);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", pcl_pushnum(L, t));
-    if (st == PC_EZERO) return pcl_fail(L, "the derivative is zero at t = %s (a cusp or a stop)", pcl_pushnum(L, t));
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    if (st != PC_OK) return at_fail(L, st, t, " (a cusp or a stop)");
     lua_pushnumber(L, k);
     return 1;
 }
@@ -874,12 +784,7 @@ static int c_controls(lua_State *L) {
     }
     if (u->tk == TK_FOURIER) return pcl_fail(L, "a Fourier curve has no pieces");
     if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no control points", u->kind);
-    lua_createtable(L, u->c->ncp, 0);
-    for (int i = 0; i < u->c->ncp; i++) {
-        pcl_value *v = pcl_newvalue(L, d);
-        memcpy(v->h, u->c->cp + (size_t)i * (d + 1), sizeof(double) * (size_t)(d + 1));
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_push_values(L, u->c->ncp, d, u->c->cp, 1);
     return 1;
 }
 
@@ -912,12 +817,7 @@ static int piece_at(lua_State *L, double *x) {
         pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, g, x);
         return d;
     }
-    if (pc_gfun_check(&pc->g, t) != PC_OK) {
-        int low = t < 0;
-        const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m);
-        pcl_argfail(L, 2, "must be %s (piece %d's half-spline has the fractional degree %s = %s and "
-                    "does not extrapolate)", low ? "at least 0" : "at most 1", i + 1, low ? "n" : "m", deg);
-    }
+    if (pc_gfun_check(&pc->g, t) != PC_OK) half_fail(L, 2, pc, t, i, 1);
     pc_piece_eval(d, pc, t, x);
     return d;
 }
@@ -1099,20 +999,12 @@ void pcl_open_curves(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
     int tk = lua_gettop(L);
-    lua_newtable(L);   /* the methods, shared with the Lua helpers as _tk.curve_methods */
-    int methods_t = lua_gettop(L);
-    pcl_register(L, methods_t, methods, 0);
-    lua_pushvalue(L, methods_t);
-    lua_setfield(L, tk, "curve_methods");
-
-    luaL_newmetatable(L, CURVE_MT);
     static const luaL_Reg meta[] = {{"__tostring", c_tostring}, {"__gc", c_gc}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, -1, call, 0);
-    lua_pushvalue(L, methods_t);
-    lua_pushcclosure(L, c_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
+    pcl_open_type(L, CURVE_MT, meta, call, methods, c_index);
+    lua_getfield(L, -1, "__index");   /* its methods, shared with the Lua helpers */
+    lua_getupvalue(L, -1, 1);
+    lua_setfield(L, tk, "curve_methods");
+    lua_settop(L, tk);
 
     lua_pushcfunction(L, l_stroke_raw);
     lua_setfield(L, tk, "stroke");

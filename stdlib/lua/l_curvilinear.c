@@ -22,12 +22,7 @@ static const char ORESME_TAG = 'o';   /* its address tags the type (PCL_SELF_TAG
 /* ---- plane -> square ------------------------------------------------------------------------ */
 
 /* A number other than NaN: +-inf are the square's sides; NaN is no place. */
-static int read_place(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    out->x = lua_tonumber(L, idx);
-    return lua_type(L, idx) == LUA_TNUMBER && !isnan(out->x);
-}
-#define A_PLACE(nm, fl) {.name = nm, .kind = PCL_ANY, .flags = fl, .read = read_place, .expect = "a number other than NaN"}
+#define A_PLACE(nm, fl) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_INF | (fl)}
 static const pcl_arg squash_args[] = {A_PLACE("p", 0), A_PLACE("q", PCL_OPT), PCL_END};
 
 static int squash_with(lua_State *L, double (*f)(double)) {
@@ -179,14 +174,7 @@ static double call_f(double x, void *ud) {
     return v;
 }
 
-static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-static const pcl_arg bisect_args[] = {A_ANY("f", read_callable, "a function"), A_NUM("a"), A_NUM("b"),
+static const pcl_arg bisect_args[] = {{.name = "f", .kind = PCL_CALLABLE}, A_NUM("a"), A_NUM("b"),
                                       A_NUMOPT("tol", 1e-10, NULL), PCL_END};
 static int l_bisect(lua_State *L) {
     pcl_val a[4] = {{0}};
@@ -210,31 +198,40 @@ static int l_bisect(lua_State *L) {
 /* ---- numeric helpers for the Lua side -------------------------------------------------------- */
 
 /* _tk.bilinear(P0, P1, P2, P3) -> function(t1, t2) -> x, y[, z ...] */
+static const pcl_arg t12_args[] = {A_NUM("t1"), A_NUM("t2"), PCL_END};
 static int bilinear_eval(lua_State *L) {
-    const double *c = lua_touserdata(L, lua_upvalueindex(1));
-    int d = (int)lua_tointeger(L, lua_upvalueindex(2));
-    double t1 = pcl_checknum(L, "bilinear", 1, "t1"), t2 = pcl_checknum(L, "bilinear", 2, "t2");
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    const double *c = lua_touserdata(L, PCL_UPVALUE(1));
+    int d = (int)lua_tointeger(L, PCL_UPVALUE(2));
     double out[PC_MAXDIM];
-    pc_bilinear(d, c, c + d, c + 2 * d, c + 3 * d, t1, t2, out);
+    pc_bilinear(d, c, c + d, c + 2 * d, c + 3 * d, a[0].x, a[1].x, out);
     for (int k = 0; k < d; k++) lua_pushnumber(L, out[k]);
     return d;
 }
+static const pcl_fn bilinear_fn = PCL_FN("bilinear", bilinear_eval, t12_args, "x, y, ...", NULL);
 
+static const pcl_arg corner_args[] = {A_SAMEPOINT("P0"), A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEPOINT("P3"), PCL_END};
 static int l_bilinear(lua_State *L) {
-    static const char *names[] = {"P0", "P1", "P2", "P3"};
-    double p[PC_MAXDIM];
-    int d = pcl_checkloc(L, 1, names[0], 0, 0, p);
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int d = a[0].n;
     double *c = lua_newuserdatauv(L, sizeof(double) * 4 * (size_t)d, 0);
-    memcpy(c, p, sizeof(double) * (size_t)d);
-    for (int i = 1; i < 4; i++) pcl_checkloc(L, i + 1, names[i], d, 1, c + i * d);
+    for (int i = 0; i < 4; i++) memcpy(c + i * d, a[i].v, sizeof(double) * (size_t)d);
     lua_pushinteger(L, d);
-    lua_pushcclosure(L, bilinear_eval, 2);
+    pcl_pushfn(L, &bilinear_fn, 2);
     return 1;
 }
 
-/* The n numbers the Lua helpers pass (x[0] .. x[n-1]) and the pair out they get back. */
+/* _tk.frame_point(o, e, xi, eta), _tk.frame_coords(o, e, x) -> xi, eta | nil, message,
+ * _tk.patch_blend(u0, u2, ...): the pairs as numbers x1..x9 (curvilinear.lua) */
+#define X(k) A_NUM("x" #k)
+static const pcl_arg six_args[] = {X(1), X(2), X(3), X(4), X(5), X(6), PCL_END};
+static const pcl_arg nine_args[] = {X(1), X(2), X(3), X(4), X(5), X(6), X(7), X(8), X(9), PCL_END};
 static void numbers(lua_State *L, int n, double *x) {
-    for (int i = 0; i < n; i++) x[i] = luaL_checknumber(L, i + 1);
+    pcl_val a[9] = {0};
+    PCL_READ(L, a);
+    for (int i = 0; i < n; i++) x[i] = a[i].x;
 }
 static int pair(lua_State *L, const double *out) {
     lua_pushnumber(L, out[0]);
@@ -242,8 +239,6 @@ static int pair(lua_State *L, const double *out) {
     return 2;
 }
 
-/* _tk.frame_point(o, e, xi, eta), _tk.frame_coords(o, e, x) -> xi, eta | nil, message,
- * _tk.patch_blend(u0, u2, ...): the pairs as numbers (curvilinear.lua) */
 static int l_frame_point(lua_State *L) {
     double x[6], out[2];
     numbers(L, 6, x);
@@ -291,9 +286,10 @@ void pcl_open_curvilinear(lua_State *L) {
     lua_settop(L, module);
     pcl_register(L, module, fns, 0);
     pcl_private(L, module);
-    static const luaL_Reg priv[] = {{"bilinear", l_bilinear}, {"frame_point", l_frame_point},
-                                    {"frame_coords", l_frame_coords},
-                                    {"patch_blend", l_patch_blend}, {NULL, NULL}};
-    luaL_setfuncs(L, priv, 0);
+    static const pcl_fn priv[] = {PCL_FN("bilinear", l_bilinear, corner_args, NULL, NULL),
+                                  PCL_FN("_tk.frame_point", l_frame_point, six_args, NULL, NULL),
+                                  PCL_FN("_tk.frame_coords", l_frame_coords, six_args, NULL, NULL),
+                                  PCL_FN("_tk.patch_blend", l_patch_blend, nine_args, NULL, NULL), PCL_END};
+    pcl_register_private(L, -1, priv);
     lua_settop(L, module);
 }

@@ -213,22 +213,6 @@ static int m_eq(lua_State *L) {
 
 /* ---- the point functions on equations ------------------------------------------------------- */
 
-/* The weight class of a value equation over [0, 1] in each of its parameters. */
-static int weight_class(lua_State *L, int id) {
-    pc_expr_pool *p = pool(L);
-    unsigned mask = pc_expr_params(p, id);
-    int in[PC_EXPR_MAXPARAM], n = 0, st;
-    for (int k = 0; k < PC_EXPR_MAXPARAM; k++)
-        if (mask & (1u << k)) in[n++] = k;
-    pc_expr_prog *prog = pc_expr_compile(p, id, n, in, &st);
-    if (!prog) return -1;
-    double lo[PC_EXPR_MAXPARAM] = {0}, hi[PC_EXPR_MAXPARAM];
-    for (int j = 0; j < n; j++) hi[j] = 1;
-    int kind = pc_expr_prog_weight(prog, lo, hi, NULL, NULL);
-    pc_expr_prog_free(prog);
-    return kind;
-}
-
 /* "NAME: argument #K (WHAT) must be EXPECT, got DESCRIPTION" of the running declared function */
 static int operand_fail(lua_State *L, int k, const char *what, const char *expect) {
     return pcl_fail(L, "argument #%d (%s) must be %s, got %s", k, what, expect, describe(L, k));
@@ -240,7 +224,7 @@ static int vec_arg(lua_State *L, int arg, const char *what, int dim) {
     if (id < 0 || !pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a vector or a vector equation");
     int d = pc_expr_dim(pool(L), id);
     if (dim && d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", arg, what, d, dim);
-    if (weight_class(L, id) != PC_KIND_VECTOR)
+    if (pc_expr_weight_class(pool(L), id) != PC_KIND_VECTOR)
         return pcl_fail(L, "argument #%d (%s) must be a vector (weight 0), got %s whose weight is not 0; a difference of "
                         "points is a vector, e.g. B - A", arg, what, describe(L, arg));
     return id;
@@ -295,7 +279,7 @@ static int fn_meet(lua_State *L) {
         int d = pc_expr_dim(p, id[i]);
         if (i == 0) dim = d;
         else if (d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i], d, dim);
-        if (weight_class(L, id[i]) != PC_KIND_POINT)
+        if (pc_expr_weight_class(p, id[i]) != PC_KIND_POINT)
             return pcl_fail(L, "argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a point equation "
                             "sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
     }
@@ -465,24 +449,13 @@ static int l_param(lua_State *L) {
     return 1;
 }
 /* the parameters of an equation in order: their indices */
-static int params_of(lua_State *L, int id, int *in) {
-    unsigned mask = pc_expr_params(pool(L), id);
-    int n = 0;
-    for (int k = 0; k < PC_EXPR_MAXPARAM; k++)
-        if (mask & (1u << k)) in[n++] = k;
-    return n;
-}
+static int params_of(lua_State *L, int id, int *in) { return pc_expr_param_list(pool(L), id, in); }
 
 /* "t and s", "t, s and u" */
 static const char *names_of(lua_State *L, int n, const int *in) {
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    for (int j = 0; j < n; j++) {
-        if (j) luaL_addstring(&b, j == n - 1 ? " and " : ", ");
-        luaL_addstring(&b, pc_expr_param_name(pool(L), in[j]));
-    }
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
+    char buf[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 2)];
+    pc_expr_param_names(pool(L), n, in, buf, sizeof buf);
+    return lua_pushstring(L, buf);
 }
 
 static pc_expr_prog *prog_of(lua_State *L, leq *e) {
@@ -549,29 +522,16 @@ static int eq_call(lua_State *L) {
     double h[PC_MAXDIM + 1];
     int st = pc_expr_eval(prog, 1, x, 0, h, NULL);
     if (st == PC_ENONFINITE) {
-        luaL_Buffer b;
-        luaL_buffinit(L, &b);
-        for (int j = 0; j < n; j++) {
-            if (j) luaL_addstring(&b, ", ");
-            lua_pushfstring(L, "%s = %s", pc_expr_param_name(p, in[j]), pcl_pushnum(L, x[j]));
-            lua_remove(L, -2);
-            luaL_addvalue(&b);
-        }
-        luaL_pushresult(&b);
-        return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)",
-                        lua_tostring(L, -1));
+        char at[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 28)];
+        pc_expr_param_values(p, n, in, x, at, sizeof at);
+        return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)", at);
     }
     if (st != PC_OK) return done(L, -1, st);
     push_result(L, pc_expr_dim(p, e->id), h);
     return 1;
 }
 
-/* a table argument (M:with, M:show) */
-static int read_table(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    return lua_istable(L, idx);
-}
-static const pcl_arg with_args[] = {A_ANY("values", read_table, "a table {name = value}"), PCL_END};
+static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expect = "a table {name = value}"}, PCL_END};
 
 static int eq_with(lua_State *L) {
     pcl_val a[1] = {0};
@@ -581,9 +541,7 @@ static int eq_with(lua_State *L) {
     lua_pushnil(L);
     while (lua_next(L, 2)) {
         const char *nm = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
-        int k = -1;
-        for (int j = 0; nm && j < pc_expr_nparams(p); j++)
-            if (!strcmp(pc_expr_param_name(p, j), nm)) k = j;
+        int k = pc_expr_find_param(p, nm);
         if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) {
             int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
             return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", nm ? nm : pcl_shown(L, -2),
@@ -641,7 +599,7 @@ static int eq_tostring(lua_State *L) {
     return 1;
 }
 
-static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_table, .expect = "a table {A = A, ...}"}, PCL_END};
+static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_TABLE, .flags = PCL_OPT, .expect = "a table {A = A, ...}"}, PCL_END};
 static int eq_show(lua_State *L) {
     pcl_val a[1] = {0};
     leq *e = PCL_READ(L, a);
@@ -797,25 +755,24 @@ static pc_expr_prog *compile_for(lua_State *L, const char *fname, int nwant, int
     return prog;
 }
 
-pc_curve *pcl_eq_curve(lua_State *L, const char *fname, int *status) {
-    double t0 = pcl_checknum(L, fname, 2, "t0"), t1 = pcl_checknum(L, fname, 3, "t1");
-    if (!(t1 > t0)) pcl_error(L, "%s: argument #3 (t1) must be greater than t0", fname);
+pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) {
     int in[PC_EXPR_MAXPARAM];
+    const char *fname = pcl_name(L);
     pc_expr_prog *prog = compile_for(L, fname, 1, in);
     check_weight(L, fname, prog, &t0, &t1, in);
     return pc_expr_curve(prog, t0, t1, status);
 }
 
 pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status) {
-    double r[4];
-    static const char *names[4] = {"u0", "u1", "v0", "v1"};
-    for (int i = 0; i < 4; i++) r[i] = pcl_checknum(L, fname, i + 2, names[i]);
-    if (!(r[1] > r[0]) || !(r[3] > r[2])) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fname);
+    static const pcl_arg range[4] = {A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1")};
+    pcl_val r[4];
+    for (int i = 0; i < 4; i++) pcl_readone(L, i + 2, i + 2, 0, &range[i], 0, &r[i]);
+    if (!(r[1].x > r[0].x) || !(r[3].x > r[2].x)) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fname);
     int in[PC_EXPR_MAXPARAM];
     pc_expr_prog *prog = compile_for(L, fname, 2, in);
-    double lo[2] = {r[0], r[2]}, hi[2] = {r[1], r[3]};
+    double lo[2] = {r[0].x, r[2].x}, hi[2] = {r[1].x, r[3].x};
     check_weight(L, fname, prog, lo, hi, in);
-    return pc_expr_surface(prog, r[0], r[1], r[2], r[3], status);
+    return pc_expr_surface(prog, lo[0], hi[0], lo[1], hi[1], status);
 }
 
 /* ---- registration ----------------------------------------------------------------------------------- */
@@ -849,27 +806,14 @@ void pcl_open_expr(lua_State *L) {
     lua_setmetatable(L, -2);
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POOL_KEY);
 
-    luaL_newmetatable(L, EQ_MT);
     static const luaL_Reg meta[] = {
         {"__add", m_add}, {"__sub", m_sub}, {"__mul", m_mul}, {"__div", m_div}, {"__unm", m_unm},
         {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", eq_concat},
         {"__gc", eq_gc}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, -1, call, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, eq_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
-
-    luaL_newmetatable(L, SAMPLES_MT);
+    pcl_open_type(L, EQ_MT, meta, call, methods, eq_index);
     static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, smeta, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, sample_methods, 0);
-    lua_pushcclosure(L, s_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 1);
+    pcl_open_type(L, SAMPLES_MT, smeta, NULL, sample_methods, s_index);
+    lua_settop(L, module);
 
     pcl_register(L, module, fns, 0);
     wrap_math(L);

@@ -179,7 +179,7 @@ static int l_translate(lua_State *L) {
     PCL_READ(L, a);
     for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
         if (!isfinite(a[0].v[i]))
-            return pcl_argerror_full(L, "map.translate", 1, 1, "V", "a finite vector");
+            return pcl_argfail(L, 1, "must be a finite vector, got %s", pcl_shown(L, 1));
     pc_map_translate(newmap(L), a[0].n, a[0].v);
     return 1;
 }
@@ -391,22 +391,8 @@ static int read_input(lua_State *L, const pc_map *f, int first, int last, double
     return 1;
 }
 
-/* The image of in by the one weight rule: a homogeneous weight within 1e-9 of 0 is a direction
- * (map.matrix({{1, 0, 0}, {0, 1, 0}, {0, 1e-17, 1}})(V(0, 1)) is V(0, 1), not P(0, 1e17)). */
-static int image(const pc_map *f, const double *in, double *out) {
-    double h[PC_MAXDIM + 1];
-    pc_map_apply(f, in, h);
-    if (pc_map_is_affine(f) || pc_kind_of(h[f->nout]) != PC_KIND_VECTOR) {
-        int st = pc_map_image(f, in, out);
-        pcl_snap_weight(f->nout, out);
-        return st;
-    }
-    int zero = 1;
-    for (int i = 0; i < f->nout; i++) zero &= h[i] == 0;
-    memcpy(out, h, sizeof(double) * (size_t)f->nout);
-    out[f->nout] = 0;
-    return zero ? PC_EPOLE : in[f->nin] == 0 ? PC_OK : PC_IMPROPER;
-}
+/* the image by the one weight rule (map_text.c) */
+#define image pc_map_image_rule
 
 static int pole_error(lua_State *L) {
     return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
@@ -490,12 +476,9 @@ static int l_matrix(lua_State *L) {
     pc_map_to_matrix(f, rowvec, m);
     int nr = rowvec ? f->nin + 1 : f->nout + 1, nc = rowvec ? f->nout + 1 : f->nin + 1;
     lua_createtable(L, nr, 0);
+    for (int i = 0; i < nr * nc; i++) m[i] += 0.0;   /* no -0 */
     for (int i = 0; i < nr; i++) {
-        lua_createtable(L, nc, 0);
-        for (int j = 0; j < nc; j++) {
-            lua_pushnumber(L, m[i * nc + j] == 0 ? 0.0 : m[i * nc + j]);   /* no -0 */
-            lua_rawseti(L, -2, j + 1);
-        }
+        pcl_push_numbers(L, nc, m + i * nc);
         lua_rawseti(L, -2, i + 1);
     }
     return 1;
@@ -524,52 +507,18 @@ static int l_vanishing(lua_State *L) {
     return 3;
 }
 
-static void fmt_num(char *s, size_t size, double x, const char *fmt) {
-    if (x == 0) x = 0;                            /* no -0 */
-    snprintf(s, size, fmt, x);
-}
-
 /* f:show([convention]): print the matrix with its convention, columns aligned. */
 static int l_show(lua_State *L) {
     pcl_val v[1] = {0};
     pc_map *f = PCL_READ(L, v);
-    int rowvec = v[0].n == 0;
-    double a[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
-    pc_map_to_matrix(f, rowvec, a);
-    int nr = rowvec ? f->nin + 1 : f->nout + 1, nc = rowvec ? f->nout + 1 : f->nin + 1;
-    double big = 0;                               /* rounding noise (cos 90°) prints as 0 */
-    for (int i = 0; i < nr * nc; i++) big = fmax(big, fabs(a[i]));
-    for (int i = 0; i < nr * nc; i++)
-        if (fabs(a[i]) < 1e-14 * big) a[i] = 0;
-    int width[PC_MAXDIM + 1] = {0};
-    char cell[32];
-    for (int i = 0; i < nr; i++)
-        for (int j = 0; j < nc; j++) {
-            fmt_num(cell, sizeof cell, a[i * nc + j], "%.6g");
-            int w = (int)strlen(cell);
-            if (w > width[j]) width[j] = w;
-        }
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    lua_pushfstring(L, "%s %d-D -> %d-D, %s:", pc_map_is_affine(f) ? "affine map" : "projective map",
-                    f->nin, f->nout, rowvec ? "row vectors p' = p T" : "column vectors p' = M p");
-    luaL_addvalue(&b);
-    for (int i = 0; i < nr; i++) {
-        luaL_addstring(&b, "\n ");
-        for (int j = 0; j < nc; j++) {
-            char padded[64];
-            fmt_num(cell, sizeof cell, a[i * nc + j], "%.6g");
-            snprintf(padded, sizeof padded, "%s%*s", (j == nc - 1) ? "  | " : "  ", width[j], cell);
-            luaL_addstring(&b, padded);
-        }
-    }
-    luaL_pushresult(&b);
+    char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 20 + 128];
+    pc_map_show(f, v[0].n == 0, text, sizeof text);
     lua_getglobal(L, "print");
     if (lua_isfunction(L, -1)) {
-        lua_pushvalue(L, -2);
+        lua_pushstring(L, text);
         lua_call(L, 1, 0);
     } else {
-        printf("%s\n", lua_tostring(L, -2));
+        printf("%s\n", text);
         fflush(stdout);
     }
     return 0;
@@ -578,22 +527,9 @@ static int l_show(lua_State *L) {
 static int l_tostring(lua_State *L) {
     pc_map *f = pcl_tomap(L, 1);
     if (!f) return pcl_error(L, "tostring: not a map");
-    int affine = pc_map_is_affine(f), rows = affine ? f->nout : f->nout + 1;
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    lua_pushfstring(L, "%s map %d-D -> %d-D [", affine ? "affine" : "projective", f->nin, f->nout);
-    luaL_addvalue(&b);
-    for (int i = 0; i < rows; i++) {
-        if (i) luaL_addstring(&b, "; ");
-        for (int j = 0; j <= f->nin; j++) {
-            char s[32];
-            if (j) luaL_addstring(&b, j == f->nin ? " | " : " ");
-            fmt_num(s, sizeof s, PC_MAP_AT(f, i, j), "%.14g");
-            luaL_addstring(&b, s);
-        }
-    }
-    luaL_addchar(&b, ']');
-    luaL_pushresult(&b);
+    char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 24 + 64];
+    pc_map_text(f, text, sizeof text);
+    lua_pushstring(L, text);
     return 1;
 }
 
@@ -657,17 +593,10 @@ static const pcl_fn ctors[] = {
 
 void pcl_open_map(lua_State *L) {
     int module = lua_gettop(L);
-    luaL_newmetatable(L, REGKEY);                        /* the metatable of maps */
-    int mt = lua_gettop(L);
-    lua_pushliteral(L, "map");
-    lua_setfield(L, mt, "__name");
     static const luaL_Reg meta[] = {{"__mul", l_mul}, {"__tostring", l_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, mt, apply, 0);
-    lua_newtable(L);                                     /* the methods */
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, l_index, 1);
-    lua_setfield(L, mt, "__index");
+    pcl_open_type(L, REGKEY, meta, apply, methods, l_index);
+    lua_pushliteral(L, "map");
+    lua_setfield(L, -2, "__name");
 
     lua_newtable(L);                                     /* the affine table */
     pcl_register(L, -1, affine_fns, 0);

@@ -13,14 +13,7 @@
 #define SET_KEY "pointcalc.params.set"           /* name -> value given by the host */
 #define DECLARED_KEY "pointcalc.params.declared" /* the list of declarations, in order */
 
-static void registry_table(lua_State *L, const char *key) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, key) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, key);
-    }
-}
+static void registry_table(lua_State *L, const char *key) { luaL_getsubtable(L, LUA_REGISTRYINDEX, key); }
 
 void pcl_param_set(lua_State *L, const char *name, double value) {
     registry_table(L, SET_KEY);
@@ -116,11 +109,11 @@ static int l_slider(lua_State *L) {
 }
 
 /* _tk.param_set(name, value): what the host does, for tests and Lua-side tools */
+static const pcl_arg set_args[] = {A_ANY("name", read_name, "a parameter name"), A_NUM("value"), PCL_END};
 static int l_param_set(lua_State *L) {
-    size_t len;
-    const char *name = luaL_checklstring(L, 1, &len);
-    if (!good_name(name, len)) return pcl_argerror(L, 1, "name", "a parameter name");
-    pcl_param_set(L, name, pcl_checkfinite(L, 2, "value"));
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    pcl_param_set(L, a[0].s, a[1].x);
     return 0;
 }
 
@@ -138,9 +131,8 @@ void pcl_open_params(lua_State *L) {
         PCL_END};
     pcl_register(L, module, fns, 0);
     pcl_private(L, module);
-    lua_pushcfunction(L, l_param_set);
-    lua_setfield(L, -2, "param_set");
-    lua_pushcfunction(L, l_params);
-    lua_setfield(L, -2, "params");
+    static const pcl_fn priv[] = {PCL_FN("_tk.param_set", l_param_set, set_args, NULL, NULL),
+                                  PCL_FN("_tk.params", l_params, NULL, NULL, NULL), PCL_END};
+    pcl_register_private(L, -1, priv);
     lua_settop(L, module);
 }

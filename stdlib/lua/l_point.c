@@ -64,52 +64,13 @@ pcl_value *pcl_newvalue(lua_State *L, int n) {
 
 /* ---- text ---------------------------------------------------------------------------------- */
 
-static void fmt_num(luaL_Buffer *b, double x) {
-    char s[32];
-    if (x == 0) x = 0;                                  /* no "-0" */
-    snprintf(s, sizeof s, "%.14g", x);
-    luaL_addstring(b, s);
-}
-
-/* P(1, 2), V(0, 1), or k*P(x, y) for a weight k other than 0 and 1: valid Lua that rebuilds
- * the value. */
-static void add_value(luaL_Buffer *b, const pcl_value *p) {
-    int n = p->n;
-    double w = p->h[n];
-    pc_kind kind = pc_kind_of(w);
-    double div = 1;
-    if (kind == PC_KIND_WEIGHTED) {
-        fmt_num(b, w);
-        luaL_addchar(b, '*');
-        div = w;
-    } else if (kind == PC_KIND_POINT) {
-        div = w;
-    }
-    luaL_addstring(b, kind == PC_KIND_VECTOR ? "V(" : "P(");
-    for (int i = 0; i < n; i++) {
-        if (i) luaL_addstring(b, ", ");
-        fmt_num(b, div == 1 ? p->h[i] : p->h[i] / div);
-    }
-    luaL_addchar(b, ')');
-}
-
 static const char *push_value_text(lua_State *L, const pcl_value *p) {
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    add_value(&b, p);
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
+    char s[PC_MAXDIM * 24 + 32];
+    pc_value_text(p->n, p->h, s, sizeof s);
+    return lua_pushstring(L, s);
 }
 
-static const char *push_num_text(lua_State *L, double x) {
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    fmt_num(&b, x);
-    luaL_pushresult(&b);
-    return lua_tostring(L, -1);
-}
-
-/* ---- the readers of the bindings not yet on the argument layer ------------------------------ */
+/* ---- the messages of the operators and the drawing hook ------------------------------------ */
 
 /* "argument #N", or "self" for the receiver of a method call */
 static const char *argname(lua_State *L, int arg) {
@@ -128,7 +89,7 @@ static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
     if (pc_kind_of(w) == PC_KIND_VECTOR)
         return pcl_error(L, "%s is a vector %s (weight 0), not a point: %s; to place a vector, "
                           "add it to a point, e.g. P(0, 0) + v", ctx, text, MEMBERSHIP);
-    const char *wt = push_num_text(L, w);
+    const char *wt = pcl_pushnum(L, w);
     return pcl_error(L, "%s has weight %s, so it is neither a point (weight 1) nor a vector "
                       "(weight 0): %s; write offsets with V(), e.g. V(x, y)*100 + P(320, 240), "
                       "or use normalize(p) for a projective point", ctx, wt, MEMBERSHIP);
@@ -138,42 +99,6 @@ static const char *argctx(lua_State *L, int arg, const char *what) {
     const char *an = argname(L, arg);
     if (what && what[0]) return lua_pushfstring(L, "%s: %s (%s)", pcl_fname(L), an, what);
     return lua_pushfstring(L, "%s: %s", pcl_fname(L), an);
-}
-
-/* the value at arg in dimension dim (pcl_checkloc, pcl_checkvec) */
-static pcl_value *checked(lua_State *L, int arg, const char *what, const char *expect, int dim, int dim_arg) {
-    pcl_value *p = pcl_tovalue(L, arg);
-    if (!p) pcl_argerror(L, arg, what, expect);
-    if (dim > 0 && p->n != dim && dim_arg > 0)
-        pcl_error(L, "%s is %d-D, but %s is %d-D: dimensions cannot be mixed", argctx(L, arg, what), p->n,
-                  argname(L, dim_arg), dim);
-    if (dim > 0 && p->n != dim) pcl_error(L, "%s must be %d-D, got %d-D", argctx(L, arg, what), dim, p->n);
-    return p;
-}
-
-int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = checked(L, arg, what, "a point", dim, dim_arg);
-    if (pc_loc(p->n, p->h, out) != PC_OK) location_error(L, argctx(L, arg, what), p);
-    return p->n;
-}
-
-int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out) {
-    pcl_value *p = checked(L, arg, what, "a vector", dim, dim_arg);
-    if (pc_kind_of(p->h[p->n]) != PC_KIND_VECTOR) {
-        const char *ctx = argctx(L, arg, what), *text = push_value_text(L, p);
-        return pcl_error(L, "%s must be a vector (weight 0), got %s (weight %s); a difference "
-                          "of points is a vector, e.g. B - A", ctx, text, push_num_text(L, p->h[p->n]));
-    }
-    memcpy(out, p->h, sizeof(double) * (size_t)p->n);
-    return p->n;
-}
-
-double pcl_checkfinite(lua_State *L, int arg, const char *what) {
-    int isnum;
-    double v = lua_tonumberx(L, arg, &isnum);
-    if (!isnum || lua_type(L, arg) != LUA_TNUMBER) pcl_argerror(L, arg, what, "a number");
-    if (!isfinite(v)) pcl_argerror(L, arg, what, "a finite number");
-    return v;
 }
 
 /* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */
@@ -253,33 +178,26 @@ static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const p
                       op, a->n, b->n);
 }
 
-static int l_add(lua_State *L) {
+/* A + B and A - B (sign -1): weights add, so a point plus a vector is a point. */
+static int add_sub(lua_State *L, double sign) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    if ((!a || !b) && pcl_eq_hook(L, PCL_EQ_ADD)) return 1;
-    if (!a || !b)
+    if ((!a || !b) && pcl_eq_hook(L, sign > 0 ? PCL_EQ_ADD : PCL_EQ_SUB)) return 1;
+    if ((!a || !b) && sign > 0)
         return pcl_error(L, "cannot add %s and %s: points and vectors add only to points and "
                           "vectors; to shift a point write A + V(dx, dy)",
                           opnd_name(L, 1), opnd_name(L, 2));
-    int n = a->n;
-    if (b->n != n) return mixed_error(L, "add", a, b);
-    pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + b->h[i];
-    return finite_or_error(L, r, "A + B");
-}
-
-static int l_sub(lua_State *L) {
-    pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    if ((!a || !b) && pcl_eq_hook(L, PCL_EQ_SUB)) return 1;
     if (!a || !b)
         return pcl_error(L, "cannot subtract %s from %s: points and vectors subtract only "
                           "points and vectors; to shift a point write A - V(dx, dy)",
                           opnd_name(L, 2), opnd_name(L, 1));
     int n = a->n;
-    if (b->n != n) return mixed_error(L, "subtract", a, b);
+    if (b->n != n) return mixed_error(L, sign > 0 ? "add" : "subtract", a, b);
     pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] - b->h[i];
-    return finite_or_error(L, r, "A - B");
+    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + sign * b->h[i];
+    return finite_or_error(L, r, sign > 0 ? "A + B" : "A - B");
 }
+static int l_add(lua_State *L) { return add_sub(L, 1.0); }
+static int l_sub(lua_State *L) { return add_sub(L, -1.0); }
 
 static int l_mul(lua_State *L) {
     pcl_value *p;
@@ -642,15 +560,9 @@ static int l_sr(lua_State *L) {
     return push_num(L, lam);
 }
 
-/* lambda of divide: any number but NaN (math.huge gives Y) */
-static int read_lambda(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    out->x = lua_tonumber(L, idx);
-    return lua_type(L, idx) == LUA_TNUMBER && !isnan(out->x);
-}
-
-/* divide(X, Y, lambda) = (X + lambda Y)/(1 + lambda); lambda = -1 gives the improper point. */
-static const pcl_arg divide_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), A_ANY("lambda", read_lambda, "a number (not NaN)"), PCL_END};
+/* divide(X, Y, lambda) = (X + lambda Y)/(1 + lambda); lambda = -1 gives the improper point,
+ * math.huge gives Y. */
+static const pcl_arg divide_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), {.name = "lambda", .kind = PCL_NUMBER, .flags = PCL_INF, .expect = "a number (not NaN)"}, PCL_END};
 static int l_divide(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);

@@ -214,17 +214,10 @@ static const pcl_fn ctor[] = {{.name = "simplex", .fn = l_simplex, .args = simpl
 
 void pcl_open_simplex(lua_State *L) {
     int module = lua_gettop(L);
-    luaL_newmetatable(L, REGKEY);                        /* the metatable */
-    int mt = lua_gettop(L);
-    lua_pushliteral(L, "simplex");
-    lua_setfield(L, mt, "__metatable");
     static const luaL_Reg meta[] = {{"__len", l_len}, {"__tostring", l_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    pcl_register(L, mt, call, 0);
-    lua_newtable(L);                                     /* methods */
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, l_index, 1);
-    lua_setfield(L, mt, "__index");
+    pcl_open_type(L, REGKEY, meta, call, methods, l_index);
+    lua_pushliteral(L, "simplex");
+    lua_setfield(L, -2, "__metatable");
     pcl_register(L, module, ctor, 0);
     lua_settop(L, module);
 }

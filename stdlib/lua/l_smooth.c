@@ -189,15 +189,8 @@ static const pcl_fn call[] = {{.name = "g", .fn = hs_call, .args = t_arg, .resul
 
 void pcl_open_smooth(lua_State *L) {
     int module = lua_gettop(L);
-    luaL_newmetatable(L, HSPLINE_MT);
-    int mt = lua_gettop(L);
-    lua_pushcfunction(L, hs_tostring);
-    lua_setfield(L, mt, "__tostring");
-    pcl_register(L, mt, call, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, methods, 0);
-    lua_pushcclosure(L, hs_index, 1);
-    lua_setfield(L, mt, "__index");
+    static const luaL_Reg meta[] = {{"__tostring", hs_tostring}, {NULL, NULL}};
+    pcl_open_type(L, HSPLINE_MT, meta, call, methods, hs_index);
     lua_newtable(L);
     pcl_register(L, -1, fns, 0);
     lua_setfield(L, module, "smooth");

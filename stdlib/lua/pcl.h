@@ -88,12 +88,6 @@ pc_theme pcl_theme(lua_State *L);
 /* An optional colour argument (nil: -1, the default; an attribute or "#rrggbb"), l_draw.c. */
 int pcl_optcolor(lua_State *L, int arg, pc_canvas *c);
 
-/* Coordinates at argument *arg: either a point (one argument) or two numbers.  On success
- * advances *arg past what it consumed.  Raises an error naming fname and the argument. */
-void pcl_checkxy(lua_State *L, int *arg, double *x, double *y, const char *what);
-/* Same, but returns 0 without consuming anything if argument *arg is none or nil. */
-int pcl_optxy(lua_State *L, int *arg, double *x, double *y, const char *what);
-
 /* Implemented by the point binding: if the value at idx is a point userdata, store its first
  * two coordinates and return 1 (raising the membership-condition error if its weight is not
  * 1, or a dimension error if it is not 2-D); return 0 if it is not a point. */
@@ -117,12 +111,6 @@ int pcl_error(lua_State *L, const char *fmt, ...);
 /* Push that location, "file:line: " (or ""), for a message kept rather than raised (a callback's). */
 void pcl_pushwhere(lua_State *L);
 
-/* Numbers with an explicit function name (toolkit functions live in sub-tables and objects,
- * e.g. "smooth.half", "c:split"): a finite number at arg; pcl_checknum_m for a method or
- * __call argument at stack index idx, shown as argument #idx - 1; pcl_optnum: dflt for nil. */
-double pcl_checknum(lua_State *L, const char *fname, int arg, const char *what);
-double pcl_checknum_m(lua_State *L, const char *fname, int idx, const char *what);
-double pcl_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt);
 /* Push x as text the way points print their coordinates: %.14g, no "-0". */
 const char *pcl_pushnum(lua_State *L, double x);
 /* Raise "FNAME: CONTEXT (MESSAGE)" or "FNAME: MESSAGE" for a core status. */

@@ -14,18 +14,62 @@
 
 /* ---- the running declaration ------------------------------------------------------------- */
 
-/* The declaration of the running C function: its upvalue 1, trusted only when the running
- * function is the one it declares (debug.setupvalue could swap another's in). */
-static const pcl_fn *current(lua_State *L) {
-    const pcl_fn *d = lua_touserdata(L, lua_upvalueindex(1));
-    lua_Debug ar;
-    if (d && lua_getstack(L, 0, &ar) && lua_getinfo(L, "f", &ar)) {
-        lua_CFunction f = lua_tocfunction(L, -1);
-        lua_pop(L, 1);
-        if (f == d->fn) return d;
-    }
-    luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
+/* Upvalue 1 of a declared function: its declaration compiled once at registration (the counts
+ * the reader needs on every call), so a call reads its arguments without walking the list. */
+typedef struct {
+    PCL_SELF;                 /* a block of another type there is refused (pcl.h) */
+    const pcl_fn *d;
+    int nargs, nvalues;       /* the declared arguments; the values PCL_READ fills */
+    int first_pair;           /* pcl_read_pairs: the argument (from 1) that starts the first pair */
+} decl_box;
+static const char BOX_TAG = 'd';
+#define BOX_MT "pointcalc.declaration"
+
+/* The declaration block at idx, or NULL: its size and its tag, which a script cannot forge. */
+static const decl_box *to_box(lua_State *L, int idx) {
+    const decl_box *b = lua_touserdata(L, idx);
+    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b && b->self == PCL_SELF_TAG(b, &BOX_TAG))
+        return b;
     return NULL;
+}
+
+/* The declaration of the running C function.  Only debug.setupvalue could put another value
+ * in its upvalue 1, and the guard below refuses that for declared functions; the tag still
+ * refuses a block of another type. */
+static const decl_box *current_box(lua_State *L) {
+    const decl_box *b = to_box(L, lua_upvalueindex(1));
+    if (!b) luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
+    return b;
+}
+static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
+
+/* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration (whose
+ * values its body would misread): refused where it is attempted, so that no call has to ask
+ * Lua which function is running.  The other upvalues (a canvas, a random state) are checked
+ * by the bindings that use them.  Lua's function is called directly, kept where no script
+ * reaches it (not an upvalue of the guard). */
+static lua_CFunction lua_setupvalue_fn;
+static int setupvalue_guard(lua_State *L) {
+    int isint;
+    if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, &isint) == 1 && isint && lua_getupvalue(L, 1, 1)) {
+        int declared = to_box(L, -1) != NULL;
+        lua_pop(L, 1);
+        if (declared)
+            return luaL_error(L, "debug.setupvalue: upvalue 1 of a declared function is its declaration, "
+                              "which cannot be replaced (forged upvalue)");
+    }
+    return lua_setupvalue_fn(L);
+}
+
+void pcl_guard_upvalues(lua_State *L) {
+    int top = lua_gettop(L);
+    if (lua_getglobal(L, "debug") == LUA_TTABLE && lua_getfield(L, -1, "setupvalue") == LUA_TFUNCTION &&
+        lua_tocfunction(L, -1) && lua_tocfunction(L, -1) != setupvalue_guard) {
+        lua_setupvalue_fn = lua_tocfunction(L, -1);   /* the debug library's, one per process */
+        lua_pushcfunction(L, setupvalue_guard);
+        lua_setfield(L, -3, "setupvalue");
+    }
+    lua_settop(L, top);
 }
 
 /* The declared name; for a __call (callname) the variable the script called, when known:
@@ -135,14 +179,13 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
 
 /* ---- weights ----------------------------------------------------------------------------- */
 
-int pcl_snap_weight(int n, double *h) {
-    int k = pc_kind_of(h[n]);
-    if (k == PC_KIND_VECTOR) h[n] = 0;
-    else if (k == PC_KIND_POINT && h[n] != 1) {
-        for (int i = 0; i < n; i++) h[i] /= h[n];
-        h[n] = 1;
-    }
-    return k;
+int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
+
+int pcl_callable(lua_State *L, int idx) {
+    if (lua_isfunction(L, idx)) return 1;
+    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
+    lua_pop(L, 1);
+    return 1;
 }
 
 void pcl_push_numbers(lua_State *L, int n, const double *x) {
@@ -210,6 +253,7 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
     case PCL_NUMBER:
         if (a->flags & PCL_RANGE)
             return lua_pushfstring(L, "a number from %s to %s", num_text(L, a->lo), num_text(L, a->hi));
+        if (a->flags & PCL_INF) return "a number other than NaN";
         return a->flags & PCL_POS ? "a positive number" : "a finite number";
     case PCL_INTEGER:
         if (a->flags & PCL_RANGE)
@@ -234,10 +278,13 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
     case PCL_VALUE: return dimmed(L, a->dim, "point, vector or weighted point");
     case PCL_POINTS: return a->dim ? lua_pushfstring(L, "a list of %d-D points", a->dim) : "a list of points";
     case PCL_NUMBERS: return "a list of numbers";
+    case PCL_VALUES: return "a list of points";
+    case PCL_VECTORS: return "a list of vectors";
     case PCL_CURVE: return dimmed(L, a->dim, "curve");
     case PCL_SURFACE: return dimmed(L, a->dim, "surface");
     case PCL_MAP: return "a map";
-    case PCL_FUNCTION: return "a function";
+    case PCL_FUNCTION: case PCL_CALLABLE: return "a function";
+    case PCL_TABLE: return "a table";
     case PCL_OPTIONS: {                        /* a table {k1 =, k2 =} */
         luaL_Buffer b;
         luaL_buffinit(L, &b);
@@ -321,7 +368,7 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     if (!isint) mismatch(L, c, idx, expected(L, a));   /* not Lua's unlocated length error */
     int m = len < 0 ? -1 : len > MAXLIST ? MAXLIST + 1 : (int)len;
     int hi = a->hi > 0 ? (int)a->hi : MAXLIST;
-    const char *unit = a->kind == PCL_POINTS ? "points" : "numbers";
+    const char *unit = a->kind == PCL_NUMBERS ? "numbers" : a->kind == PCL_VECTORS ? "vectors" : "points";
     if (m < (int)a->lo || m > hi || m < 0) count_error(L, c, a, m, unit);
     out->n = m;
     ctx e = *c;
@@ -340,27 +387,35 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
         out->list = x;
         return;
     }
-    /* points: the declared dimension, or the first one's for all (and PCL_SAMEDIM) */
-    pcl_arg pt = {.name = a->name, .kind = PCL_POINT, .dim = a->dim};
+    /* points, values, vectors: the declared dimension (vectors: or the one PCL_SAMEDIM knows,
+     * "[2] must be a 2-D vector"), else the first one's for all; values keep their weights
+     * (rows of d + 1) */
+    static const pcl_kind item_kind[] = {[PCL_POINTS] = PCL_POINT, [PCL_VALUES] = PCL_VALUE, [PCL_VECTORS] = PCL_VECTOR};
+    int known = a->dim ? a->dim : a->kind == PCL_VECTORS && (a->flags & PCL_SAMEDIM) && c->dim ? c->dim->n : 0;
+    pcl_arg pt = {.name = a->name, .kind = item_kind[a->kind], .dim = known,
+                  .expect = a->kind == PCL_VALUES ? "a point" : NULL};
     dimref inner = {0};
     double *x = NULL;
-    int d = a->dim;
+    int d = known, w = 0;
     for (int i = 1; i <= m; i++) {
         lua_geti(L, idx, i);
         e.item = i;
-        if (!a->dim) pt.flags = PCL_SAMEDIM, e.dim = &inner;
+        if (!known) pt.flags = PCL_SAMEDIM, e.dim = &inner;
         pcl_val one;
         read_loc(L, &e, &pt, lua_gettop(L), &one);
+        for (int j = 0; a->kind == PCL_VALUES && j <= one.n; j++)
+            if (!isfinite(one.v[j])) mismatch(L, &e, lua_gettop(L), "a value with finite coordinates");
         lua_pop(L, 1);
         if (i == 1) {
             d = one.n;
+            w = d + (a->kind == PCL_VALUES);
             pcl_arg whole = *a;
             whole.dim = 0;                     /* the list's dimension against the others' */
             check_dim(L, c, &whole, idx, d);
-            x = list_buffer(L, out, (size_t)m * (size_t)d);
+            x = list_buffer(L, out, (size_t)m * (size_t)w);
             if (!x) luaL_error(L, "%s: %d points do not fit the binding's buffer", c->fname, m);
         }
-        memcpy(x + (size_t)(i - 1) * d, one.v, sizeof(double) * (size_t)d);
+        memcpy(x + (size_t)(i - 1) * w, one.v, sizeof(double) * (size_t)w);
     }
     if (m == 0) x = list_buffer(L, out, 1);
     out->list = x;
@@ -387,7 +442,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     case PCL_NUMBER:
     case PCL_INTEGER: {
         double x = lua_tonumber(L, idx);
-        int ok = t == LUA_TNUMBER && isfinite(x);
+        int ok = t == LUA_TNUMBER && (isfinite(x) || ((a->flags & PCL_INF) && !isnan(x)));
         if (ok && a->kind == PCL_INTEGER) ok = x == floor(x);
         if (ok && (a->flags & PCL_RANGE)) ok = x >= a->lo && x <= a->hi;
         if (ok && (a->flags & PCL_POS)) ok = x > 0;
@@ -415,7 +470,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE:
         read_loc(L, c, a, idx, out);
         return;
-    case PCL_POINTS: case PCL_NUMBERS:
+    case PCL_POINTS: case PCL_NUMBERS: case PCL_VALUES: case PCL_VECTORS:
         read_list(L, c, a, idx, out);
         return;
     case PCL_CURVE: case PCL_SURFACE: {
@@ -434,6 +489,12 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         return;
     case PCL_FUNCTION:
         if (t != LUA_TFUNCTION) mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_CALLABLE:
+        if (!pcl_callable(L, idx)) mismatch(L, c, idx, expected(L, a));
+        return;
+    case PCL_TABLE:
+        if (t != LUA_TTABLE) mismatch(L, c, idx, expected(L, a));
         return;
     case PCL_ANY: {
         const ctx *outer = reading;
@@ -529,10 +590,33 @@ static int nargs_of(const pcl_fn *d) {
     return n;
 }
 
+/* The fast path of the common kinds: a number or integer that fits its declaration is read
+ * here with a type test and the range tests, no message made; anything else (absent, of
+ * another kind, out of range) goes to read_value, which reads it or words the message. */
+static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out) {
+    if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
+    double x = lua_tonumber(L, idx);
+    if (!isfinite(x) || (a->kind == PCL_INTEGER && x != floor(x))) return 0;
+    if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
+    if ((a->flags & PCL_POS) && !(x > 0)) return 0;
+    out->present = 1;
+    out->x = x;
+    out->idx = idx;
+    out->n = 0;
+    out->s = NULL;
+    out->obj = NULL;
+    return 1;
+}
+
+static void check_count(lua_State *L, const decl_box *b, int n) {
+    if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
+}
+
 void *pcl_read(lua_State *L, pcl_val *v, int n) {
-    const pcl_fn *d = current(L);
+    const decl_box *b = current_box(L);
+    const pcl_fn *d = b->d;
     void *self = NULL;
-    int first = 1;
+    int first = 1, nargs = b->nargs;
     if (d->self) {
         self = d->self(L, 1);
         if (!self) {
@@ -541,19 +625,21 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
         }
         first = 2;
     }
-    luaL_checkstack(L, 24, NULL);
-    const char *fname = d->callname ? pcl_name(L) : d->name;
-    int need = nvalues(d->args);
-    if (n < need) luaL_error(L, "%s: the binding reads %d values into %d", d->name, need, n);
-    int nargs = 0;
-    while (d->args && d->args[nargs].kind) nargs++;
+    check_count(L, b, n);
     if (lua_gettop(L) < first - 1 + nargs) lua_settop(L, first - 1 + nargs);   /* buffers above */
+    const char *fname = NULL;
     dimref dim = {0};
-    int slot = nargs;
+    int slot = nargs, room = 0;
     for (int k = 0; k < nargs; k++) {
         const pcl_arg *a = &d->args[k];
-        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         int idx = first + k;
+        if (read_scalar(L, a, idx, &v[k])) continue;
+        if (!fname) fname = d->callname ? pcl_name(L) : d->name;   /* the general reader */
+        if (a->kind != PCL_ANY && !room) {   /* lists and options push; a reader pushes little */
+            luaL_checkstack(L, 24, NULL);
+            room = 1;
+        }
+        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         if (a->kind == PCL_OPTIONS) {
             v[k].idx = idx;
             v[k].present = lua_istable(L, idx);
@@ -588,19 +674,25 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 
 /* The arguments of a function with coordinate pairs (pcl_args.h): each at the slot it falls on. */
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
-    const pcl_fn *d = current(L);
-    int nargs = nargs_of(d), top = lua_gettop(L), opts = 0, first_pair = 0;
-    if (n < nvalues(d->args)) luaL_error(L, "%s: the binding reads %d values into %d", d->name, nvalues(d->args), n);
-    luaL_checkstack(L, 24, NULL);
-    for (int k = 0; k < nargs && !first_pair; k++)
-        if (d->args[k].flags & PCL_PAIR) first_pair = k + 1;
-    if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > first_pair && lua_istable(L, top))
+    const decl_box *b = current_box(L);
+    const pcl_fn *d = b->d;
+    int nargs = b->nargs, top = lua_gettop(L), opts = 0;
+    check_count(L, b, n);
+    if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
         opts = top;                             /* a trailing option table */
-    int limit = opts ? opts - 1 : top, slot = 1;
+    int limit = opts ? opts - 1 : top, slot = 1, room = 0;
     dimref dim = {0};
     for (int k = 0, y = 0; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
         int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
+        if (slot <= limit && read_scalar(L, a, idx, &v[k])) {
+            y = (a->flags & PCL_PAIR) != 0;
+            continue;
+        }
+        if (a->kind != PCL_ANY && !room) {   /* as pcl_read: a reader (the colour) pushes little */
+            luaL_checkstack(L, 24, NULL);
+            room = 1;
+        }
         if (a->kind == PCL_OPTIONS) {
             ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
             v[k].idx = opts;
@@ -616,12 +708,16 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
             k++;
             continue;
         }
-        pcl_arg one = *a;
         int coord = (a->flags & PCL_PAIR) || y;
         y = (a->flags & PCL_PAIR) != 0;         /* the next argument is this pair's y */
-        if (coord && lua_type(L, idx) != LUA_TNUMBER) one.expect = "a number or a point";
+        pcl_arg one;
+        if (coord && lua_type(L, idx) != LUA_TNUMBER) {
+            one = *a;
+            one.expect = "a number or a point";
+            a = &one;
+        }
         ctx c = {d->name, slot, a->name, NULL, 0, &dim};
-        read_value(L, &c, &one, idx, &v[k]);
+        read_value(L, &c, a, idx, &v[k]);
     }
 }
 
@@ -687,12 +783,7 @@ static void push_signature(lua_State *L, const pcl_fn *d) {
 }
 
 static void record(lua_State *L, const pcl_fn *d) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, DECL_KEY);
-    }
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, DECL_KEY);
     lua_createtable(L, 0, 3);
     if (d->sig) {                                    /* forms, one per line */
         lua_newtable(L);
@@ -714,7 +805,30 @@ static void record(lua_State *L, const pcl_fn *d) {
     lua_pop(L, 1);
 }
 
-void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
+/* The metatable of the declarations: getmetatable(d) says "declaration" and no more. */
+static void box_metatable(lua_State *L) {
+    if (luaL_newmetatable(L, BOX_MT)) {
+        lua_pushliteral(L, "declaration");
+        lua_setfield(L, -2, "__metatable");
+    }
+}
+
+void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
+    decl_box *b = lua_newuserdatauv(L, sizeof *b, 0);
+    b->self = PCL_SELF_TAG(b, &BOX_TAG);
+    b->d = d;
+    b->nargs = nargs_of(d);
+    b->nvalues = nvalues(d->args);
+    b->first_pair = 0;
+    for (int k = 0; k < b->nargs && !b->first_pair; k++)
+        if (d->args[k].flags & PCL_PAIR) b->first_pair = k + 1;
+    box_metatable(L);
+    lua_setmetatable(L, -2);
+    lua_insert(L, -1 - nup);                 /* the declaration is upvalue 1 */
+    lua_pushcclosure(L, d->fn, nup + 1);
+}
+
+static void register_all(lua_State *L, int table, const pcl_fn *fns, int nup, int documented) {
     table = lua_absindex(L, table);
     int ups = lua_gettop(L) - nup + 1;
     for (const pcl_fn *d = fns; d->name; d++) {
@@ -722,23 +836,45 @@ void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) {
         for (p = d->name; *p; p++)
             if (*p == '.' || *p == ':') key = p + 1;
         if (d->key) key = d->key;
-        lua_pushlightuserdata(L, (void *)d);
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
-        lua_pushcclosure(L, d->fn, nup + 1);
+        pcl_pushfn(L, d, nup);
         lua_setfield(L, table, key);
-        record(L, d);
+        if (documented) record(L, d);
     }
     lua_pop(L, nup);
 }
 
+void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup) { register_all(L, table, fns, nup, 1); }
+void pcl_register_private(lua_State *L, int table, const pcl_fn *fns) { register_all(L, table, fns, 0, 0); }
+
+void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const pcl_fn *call,
+                   const pcl_fn *methods, lua_CFunction index) {
+    luaL_newmetatable(L, tname);
+    if (meta) luaL_setfuncs(L, meta, 0);
+    if (call) pcl_register(L, -1, call, 0);
+    if (!methods && !index) return;
+    lua_newtable(L);
+    if (methods) pcl_register(L, -1, methods, 0);
+    if (index) lua_pushcclosure(L, index, 1);
+    lua_setfield(L, -2, "__index");
+}
+
+void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        if (homogeneous) {
+            pcl_value *v = pcl_newvalue(L, dim);
+            memcpy(v->h, rows + (size_t)i * (size_t)(dim + 1), sizeof(double) * (size_t)(dim + 1));
+        } else {
+            pcl_pushpoint(L, dim, rows + (size_t)i * (size_t)dim);
+        }
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
 /* Push the registry of declarations (for pointcalc._decl). */
 void pcl_push_decls(lua_State *L) {
-    if (lua_getfield(L, LUA_REGISTRYINDEX, DECL_KEY) != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, LUA_REGISTRYINDEX, DECL_KEY);
-    }
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, DECL_KEY);
 }
 
 /* ---- misspelt globals ----------------------------------------------------------------------- */

@@ -28,10 +28,14 @@ typedef enum {
     PCL_VALUE,     /* any point, vector or weighted value: v.v homogeneous, the weight as given */
     PCL_POINTS,    /* a list of points (lo..hi of them; dim or one dimension): v.list rows */
     PCL_NUMBERS,   /* a list of finite numbers (lo..hi of them): v.list */
+    PCL_VALUES,    /* a list of values of any weight (w*P, vectors at infinity): homogeneous rows */
+    PCL_VECTORS,   /* a list of vectors: rows of their components */
     PCL_CURVE,     /* v.obj a pc_curve (dim: its dimension must be dim) */
     PCL_SURFACE,   /* v.obj a pc_surface */
     PCL_MAP,       /* v.obj a pc_map */
     PCL_FUNCTION,  /* v.idx its stack index */
+    PCL_CALLABLE,  /* a function or a value with __call (v.idx) */
+    PCL_TABLE,     /* any table (v.idx): the body reads it */
     PCL_OPTIONS,   /* a table of the keys[] (each with its own kind); unknown keys are errors */
     PCL_ANY,       /* anything (v.idx); with read: the binding's own reader */
 } pcl_kind;
@@ -44,6 +48,7 @@ typedef enum {
 #define PCL_SAMEDIM 0x10u  /* points, vectors, locations, lists: the dimension of the first one */
 #define PCL_CALLTABLE 0x20u /* the only argument, an options table: shown as NAME{...} */
 #define PCL_PAIR    0x40u  /* numbers: x of a pair x, y (the next argument) that may be one point */
+#define PCL_INF     0x80u  /* numbers: +-inf accepted (NaN is not) */
 
 typedef struct pcl_val pcl_val;
 typedef struct pcl_arg pcl_arg;
@@ -97,6 +102,12 @@ typedef struct pcl_fn {
  * and the nup values on the stack top as upvalues 2.. (popped), and record each declaration
  * in the registry that :help and docs/api.md read (pointcalc._decl).  fns ends with {0}. */
 void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup);
+/* The same for the toolkit functions of _tk (the embedded Lua helpers call them): declared,
+ * so read and worded by the layer, but not recorded for :help. */
+void pcl_register_private(lua_State *L, int table, const pcl_fn *fns);
+/* Push one declared function with the nup values on the stack top as upvalues 2.. (popped),
+ * not recorded for :help: a toolkit function of _tk, a closure made at run time. */
+void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup);
 /* Upvalue k of a registered function (k = 1: the first of the nup shared values). */
 #define PCL_UPVALUE(k) lua_upvalueindex((k) + 1)
 
@@ -151,13 +162,27 @@ const char *pcl_nearest(const char *name, const char *const *candidates);
 /* The same over the string keys of the table at idx. */
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 
+/* 1 if the value at idx can be called: a function, or a value whose metatable has __call. */
+int pcl_callable(lua_State *L, int idx);
 /* Push a list {x[0], ..., x[n-1]}. */
 void pcl_push_numbers(lua_State *L, int n, const double *x);
+/* Push a list of n points of dim coordinates from rows of dim numbers, or (homogeneous) of n
+ * values from rows of dim + 1 (weights as given: w*P, vectors). */
+void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous);
+
+/* Make the metatable tname of a userdata type and leave it on the stack: its metamethods meta
+ * (luaL_Reg, may be NULL), its declared __call (call, may be NULL), and __index: a closure of
+ * index over a new table of the declared methods (index NULL: that table itself). */
+void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const pcl_fn *call,
+                   const pcl_fn *methods, lua_CFunction index);
 
 /* One weight rule: PC_KIND_POINT, PC_KIND_VECTOR or PC_KIND_WEIGHTED, with the weight in h[n]
  * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
 int pcl_snap_weight(int n, double *h);
 
+/* Refuse debug.setupvalue(f, 1, x) of a declared function f (its upvalue 1 is its declaration,
+ * which the layer trusts without asking Lua which function runs): luaopen_pointcalc calls it. */
+void pcl_guard_upvalues(lua_State *L);
 /* Push the registry of declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: the module's
  * _decl, which interp/help.lua reads. */
 void pcl_push_decls(lua_State *L);
@@ -180,6 +205,8 @@ const char *pcl_global_hint(lua_State *L, const char *msg);
 #define A_SAMEVECTOR(nm) {.name = nm, .kind = PCL_VECTOR, .flags = PCL_SAMEDIM}
 #define A_POINTS(nm, d, a, b) {.name = nm, .kind = PCL_POINTS, .dim = d, .lo = a, .hi = b}
 #define A_NUMBERS(nm, a, b) {.name = nm, .kind = PCL_NUMBERS, .lo = a, .hi = b}
+#define A_VALUES(nm, a, b) {.name = nm, .kind = PCL_VALUES, .lo = a, .hi = b}
+#define A_VECTORS(nm) {.name = nm, .kind = PCL_VECTORS, .flags = PCL_SAMEDIM}
 #define A_CURVE(nm, d) {.name = nm, .kind = PCL_CURVE, .dim = d}
 #define A_SURFACE(nm, d) {.name = nm, .kind = PCL_SURFACE, .dim = d}
 #define A_MAP(nm) {.name = nm, .kind = PCL_MAP}

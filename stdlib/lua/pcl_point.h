@@ -19,18 +19,8 @@ pcl_value *pcl_tovalue(lua_State *L, int idx);
 /* Push a new value of dimension n (its doubles uninitialised). */
 pcl_value *pcl_newvalue(lua_State *L, int n);
 
-/* Argument checks of the bindings not yet on the argument layer (pcl_args.h reads the others);
- * they raise errors naming the calling function.
- * pcl_checkloc: a point (weight 1): its Cartesian coordinates go to out (n doubles);
- *   a vector or weighted value raises the membership-condition error.
- * pcl_checkvec: a vector (weight 0): its coordinates go to out.
- * dim > 0 demands that dimension (the mixed-dimensions error names argument dim_arg). */
-int pcl_checkloc(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
-int pcl_checkvec(lua_State *L, int arg, const char *what, int dim, int dim_arg, double *out);
 /* Push a point (weight 1) or a vector (weight 0) of dimension n. */
 void pcl_pushpoint(lua_State *L, int n, const double *x);
 void pcl_pushvector(lua_State *L, int n, const double *x);
-/* A finite number at arg. */
-double pcl_checkfinite(lua_State *L, int arg, const char *what);
 
 #endif

@@ -122,35 +122,6 @@ int pcl_error(lua_State *L, const char *fmt, ...) {
     return lua_error(L);
 }
 
-/* The coordinate at arg; `what` names the pair ("" or e.g. "centre"), axis is "x" or "y".
- * The label is only built on the error path: this runs for every pset. */
-static double check_coord(lua_State *L, int arg, const char *what, const char *axis) {
-    /* a number, not a numeric string: pset("10", "20") is a mistake Lua would hide */
-    int isnum = lua_type(L, arg) == LUA_TNUMBER;
-    double v = isnum ? lua_tonumber(L, arg) : 0;
-    if (isnum && isfinite(v)) return v;
-    char label[48];
-    snprintf(label, sizeof label, "%s%s%s", what, what[0] ? " " : "", axis);
-    pcl_argerror(L, arg, label, isnum ? "a finite number" : "a number or a point");
-    return 0;
-}
-
-void pcl_checkxy(lua_State *L, int *arg, double *x, double *y, const char *what) {
-    if (lua_type(L, *arg) != LUA_TNUMBER && pcl_topoint2(L, *arg, x, y)) {
-        *arg += 1;
-        return;
-    }
-    *x = check_coord(L, *arg, what, "x");
-    *y = check_coord(L, *arg + 1, what, "y");
-    *arg += 2;
-}
-
-int pcl_optxy(lua_State *L, int *arg, double *x, double *y, const char *what) {
-    if (lua_isnoneornil(L, *arg)) return 0;
-    pcl_checkxy(L, arg, x, y, what);
-    return 1;
-}
-
 /* ---- forged userdata (pcl.h) ---------------------------------------------------------------- */
 
 void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type) {
@@ -163,27 +134,6 @@ void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type) {
     pcl_error(L, "%s: a forged %s (a userdata of %d bytes given the %s metatable or put in an "
               "upvalue with the debug library), not a %s", pcl_fname(L), type, len, type, type);
     return NULL;
-}
-
-/* ---- numbers with an explicit function name ---------------------------------------------- */
-
-double pcl_checknum(lua_State *L, const char *fname, int arg, const char *what) {
-    if (lua_type(L, arg) != LUA_TNUMBER) pcl_argerror_full(L, fname, arg, arg, what, "a number");
-    double v = lua_tonumber(L, arg);
-    if (!isfinite(v)) pcl_argerror_full(L, fname, arg, arg, what, "a finite number");
-    return v;
-}
-
-double pcl_checknum_m(lua_State *L, const char *fname, int idx, const char *what) {
-    if (lua_type(L, idx) != LUA_TNUMBER) pcl_argerror_full(L, fname, idx, idx - 1, what, "a number");
-    double v = lua_tonumber(L, idx);
-    if (!isfinite(v)) pcl_argerror_full(L, fname, idx, idx - 1, what, "a finite number");
-    return v;
-}
-
-double pcl_optnum(lua_State *L, const char *fname, int arg, const char *what, double dflt) {
-    if (lua_isnoneornil(L, arg)) return dflt;
-    return pcl_checknum(L, fname, arg, what);
 }
 
 const char *pcl_pushnum(lua_State *L, double x) {
@@ -199,15 +149,7 @@ int pcl_statuserror(lua_State *L, const char *fname, int status, const char *con
     return pcl_error(L, "%s: %s", fname, pc_strerror(status));
 }
 
-void pcl_private(lua_State *L, int module) {
-    module = lua_absindex(L, module);
-    if (lua_getfield(L, module, "_tk") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        lua_newtable(L);
-        lua_pushvalue(L, -1);
-        lua_setfield(L, module, "_tk");
-    }
-}
+void pcl_private(lua_State *L, int module) { luaL_getsubtable(L, module, "_tk"); }
 
 /* ---- Lua called from the core ------------------------------------------------------------- */
 

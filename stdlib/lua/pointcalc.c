@@ -46,6 +46,7 @@ int luaopen_pointcalc(lua_State *L) {
     pcl_open_figure_layout(L);
     pcl_push_decls(L);            /* the declarations, for interp/help.lua */
     lua_setfield(L, -2, "_decl");
+    pcl_guard_upvalues(L);        /* debug.setupvalue cannot swap a declaration */
     run_lua_helpers(L);
     lua_pushliteral(L, "pointcalc " PCL_VERSION);
     lua_setfield(L, -2, "_VERSION");

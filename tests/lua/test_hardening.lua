@@ -178,10 +178,14 @@ check.err(function() pset(1, 1) end, "pset: the canvas was replaced")
 debug.setupvalue(pset, 2, "x")
 check.err(function() pset(1, 1) end, "pset: the canvas was replaced")
 debug.setupvalue(pset, 2, box)
-local decl = select(2, debug.getupvalue(pset, 1))
-debug.setupvalue(pset, 1, select(2, debug.getupvalue(preset, 1)))
-check.err(function() pset(1, 1) end, "a declared function without its declaration (forged upvalue)")
-debug.setupvalue(pset, 1, decl)
+-- a declaration swapped for another's is refused where it is attempted (the layer trusts
+-- upvalue 1 without asking Lua which function runs)
+local preset_decl = select(2, debug.getupvalue(preset, 1))
+check.err(function() debug.setupvalue(pset, 1, preset_decl) end,
+  "debug.setupvalue: upvalue 1 of a declared function is its declaration, which cannot be replaced")
+check.err(function() debug.setupvalue(pset, 1, io.stdout) end, "cannot be replaced")
+check.eq(getmetatable(preset_decl), "declaration", "a declaration's metatable is hidden")
+check.eq(debug.setupvalue(pset, 2, box), "", "the other upvalues are set as before")
 pset(2, 2, 4)
 check.eq(point(2, 2), 4, "pset works again with its canvas")
 local state = select(2, debug.getupvalue(qb.rnd, 2))   -- upvalue 1 is its declaration
