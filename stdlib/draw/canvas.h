@@ -90,6 +90,9 @@ typedef struct {
     double dpi;             /* raster outputs; 0: 96 */
     double size;            /* label size in pt; 0: 10 */
     char font[64];          /* "": serif */
+    int frame;              /* 1: the script's figure{} (not the command line's --print):
+                               without a window its coordinates are world units, y up, and
+                               the picture is framed to what is drawn when it is written */
 } pc_figure;
 
 /* A drawing operation in screen coordinates (fractional, before rounding).  The header is
@@ -175,6 +178,8 @@ typedef struct pc_canvas {
      * figure's settings, which SCREEN keeps */
     pc_textstyle *tstyles; size_t ntstyles, captstyles;
     pc_figure figure;
+    int screen_pixels;      /* the script chose its screen (SCREEN): its coordinates are that
+                               screen's pixels, so a figure{} is not framed to its content */
 
     int dirty;              /* something drawn since the last save */
     uint64_t version;       /* bumped by every change of the picture (drawing, CLS, PALETTE,

@@ -27,7 +27,8 @@ static void put(items *it, double x, double y, double dx0, double dy0, double dx
 }
 
 /* Everything drawn as items (CLEAR, the background, is not content). */
-static int gather(const pc_canvas *c, items *it) {
+static int gather(const pc_canvas *c, items *it, int flip) {
+    size_t from = it->n;
     for (size_t i = 0; i < c->nops; i++) {
         const pc_op *op = &c->ops[i];
         switch (op->kind) {
@@ -61,18 +62,25 @@ static int gather(const pc_canvas *c, items *it) {
         case PC_OP_TEXT: {
             double w, h, X = nearbyint(op->x2), Y = nearbyint(op->y2);
             if (pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK) break;
-            put(it, op->x2, op->y2, op->x1 - X, op->y1 - Y, op->x1 - X + w, op->y1 - Y + h);
+            if (op->flags & PC_TEXT_AUTO) {   /* not placed yet: room for it on any side */
+                double gx = w + PC_FIT_LABEL_GAP, gy = h + PC_FIT_LABEL_GAP;
+                put(it, op->x2, op->y2, -gx, -gy, gx, gy);
+            } else {
+                put(it, op->x2, op->y2, op->x1 - X, op->y1 - Y, op->x1 - X + w, op->y1 - Y + h);
+            }
             break;
         }
         default: break;
         }
     }
+    if (flip)   /* y up: the points mirrored, the text cells (screen pixels) as they are */
+        for (size_t i = from; i < it->n; i++) it->v[i].y = -it->v[i].y;
     return it->nomem ? PC_ENOMEM : PC_OK;
 }
 
 int pc_drawn_extent(const pc_canvas *c, pc_box2 *out) {
     items it = {0};
-    int st = gather(c, &it);
+    int st = gather(c, &it, 0);
     if (st == PC_OK && it.n == 0) st = PC_EARG;
     if (st == PC_OK) {
         *out = (pc_box2){INFINITY, INFINITY, -INFINITY, -INFINITY};
@@ -168,10 +176,14 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
         fmap(f, op->x2, op->y2, &d, &e);
         return pc_box(c, a, b, d, e, op->color, op->kind == PC_OP_FILLBOX);
     case PC_OP_ARC: {
-        double rx = op->rx * f->sx, ry = op->ry * f->sy, r = fmax(rx, ry);
+        double rx = op->rx * f->sx, ry = op->ry * fabs(f->sy), r = fmax(rx, ry);
         double aspect = rx > 0 && ry != rx ? ry / rx : NAN;
-        double s0 = op->flags & PC_ARC_FULL ? NAN : (op->flags & PC_ARC_RADIUS0 ? -op->a0 : op->a0);
-        double s1 = op->flags & PC_ARC_FULL ? NAN : (op->flags & PC_ARC_RADIUS1 ? -op->a1 : op->a1);
+        /* mirrored too (pc_fit_figure): QBasic's angles are counter-clockwise as seen, as
+         * under a WINDOW with y up, so they stay */
+        double a0 = op->a0, a1 = op->a1;
+        int r0 = op->flags & PC_ARC_RADIUS0, r1 = op->flags & PC_ARC_RADIUS1;
+        double s0 = op->flags & PC_ARC_FULL ? NAN : (r0 ? -a0 : a0);
+        double s1 = op->flags & PC_ARC_FULL ? NAN : (r1 ? -a1 : a1);
         fmap(f, op->x1, op->y1, &a, &b);
         return pc_circle(c, a, b, r, op->color, s0, s1, aspect);
     }
@@ -262,6 +274,7 @@ static int replay(pc_canvas *c, const frame *f) {
         fmap(f, r->x0, r->y0, &x0, &y0);
         fmap(f, r->x1, r->y1, &x1, &y1);
         int full = r->x0 == 0 && r->y0 == 0 && r->x1 == c->width - 1 && r->y1 == c->height - 1;
+        if (y0 > y1) { double t = y0; y0 = y1; y1 = t; }   /* mirrored */
         c->view = full ? *r : (pc_rect){(int)fmax(0, floor(x0)), (int)fmax(0, floor(y0)),
                                         (int)fmin(c->width - 1, ceil(x1)), (int)fmin(c->height - 1, ceil(y1))};
         if ((st = pc_push_clip(c)) == PC_OK) st = replay_op(c, &o, &o.ops[i], f);
@@ -276,15 +289,22 @@ static int replay(pc_canvas *c, const frame *f) {
     return st;
 }
 
-int pc_fit(pc_canvas *c, double margin, int aspect) {
-    if (!(margin >= 0 && margin < 0.5 * fmin(c->view.x1 - c->view.x0, c->view.y1 - c->view.y0)))
-        return pc_fail(c, "fit: margin must be 0 up to half the view, got %g pixels", margin);
-    if (aspect != PC_FIT_EQUAL && aspect != PC_FIT_FILL) return pc_fail(c, "fit: unknown aspect %d", aspect);
+/* The frame that puts what c has drawn in its view, margin pixels in (y mirrored with flip);
+ * 0 with *st PC_OK when nothing is drawn. */
+static int framing(pc_canvas *c, double margin, int aspect, int flip, frame *f, int *st) {
+    if (!(margin >= 0 && margin < 0.5 * fmin(c->view.x1 - c->view.x0, c->view.y1 - c->view.y0))) {
+        *st = pc_fail(c, "fit: margin must be 0 up to half the view, got %g pixels", margin);
+        return 0;
+    }
+    if (aspect != PC_FIT_EQUAL && aspect != PC_FIT_FILL) {
+        *st = pc_fail(c, "fit: unknown aspect %d", aspect);
+        return 0;
+    }
     items it = {0};
-    int st = gather(c, &it);
-    if (st != PC_OK || it.n == 0) {
+    *st = gather(c, &it, flip);
+    if (*st != PC_OK || it.n == 0) {
         free(it.v);
-        return st;   /* nothing drawn: nothing to frame */
+        return 0;   /* nothing drawn: nothing to frame */
     }
     const pc_rect *v = &c->view;
     double roomx = v->x1 - v->x0 - 2 * margin, roomy = v->y1 - v->y0 - 2 * margin;
@@ -293,13 +313,23 @@ int pc_fit(pc_canvas *c, double margin, int aspect) {
     if (aspect == PC_FIT_EQUAL) sx = sy = fmin(sx, sy);
     if (!(sx > 0 && sy > 0)) {
         free(it.v);
-        return pc_fail(c, "fit: the labels alone are larger than the view: nothing can frame them");
+        *st = pc_fail(c, "fit: the labels alone are larger than the view: nothing can frame them");
+        return 0;
     }
     double lox, loy;
     double wx = width_at(&it, 0, sx, &lox), wy = width_at(&it, 1, sy, &loy);
     free(it.v);
     /* centred in the view: the box [lo, lo + w] under s goes to the middle */
-    frame f = {sx, sy, v->x0 + margin + (roomx - wx) / 2 - lox, v->y0 + margin + (roomy - wy) / 2 - loy};
+    *f = (frame){sx, flip ? -sy : sy, v->x0 + margin + (roomx - wx) / 2 - lox,
+                 v->y0 + margin + (roomy - wy) / 2 - loy};
+    return 1;
+}
+
+int pc_fit(pc_canvas *c, double margin, int aspect) {
+    frame f;
+    int st;
+    if (!framing(c, margin, aspect, 0, &f, &st)) return st;
+    const pc_rect *v = &c->view;
     /* the window that keeps later drawing in this frame: world -> old screen -> f */
     double corner[4];
     for (int k = 0; k < 2; k++) {
@@ -309,4 +339,11 @@ int pc_fit(pc_canvas *c, double margin, int aspect) {
     int screen = c->has_window ? c->window_screen : 1;
     if ((st = replay(c, &f)) != PC_OK) return st;
     return pc_window(c, corner[0], corner[1], corner[2], corner[3], screen);
+}
+
+int pc_fit_figure(pc_canvas *c) {
+    frame f;
+    int st;
+    if (!framing(c, PC_FIT_MARGIN, PC_FIT_EQUAL, 1, &f, &st)) return st;
+    return replay(c, &f);
 }

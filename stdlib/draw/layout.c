@@ -73,8 +73,12 @@ int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box) {
     return PC_OK;
 }
 
+int pc_figure_frames(const pc_canvas *c) {
+    return c->figure.on && c->figure.frame && !c->has_window && !c->screen_pixels;
+}
+
 int pc_layout_pending(const pc_canvas *c) {
-    if (c->attach_resolve) return 1;
+    if (c->attach_resolve || pc_figure_frames(c)) return 1;
     for (size_t i = 0; i < c->nops; i++)
         if (c->ops[i].kind == PC_OP_TEXT && (c->ops[i].flags & PC_TEXT_AUTO)) return 1;
     return 0;
@@ -126,6 +130,10 @@ static int resolve_into(pc_canvas *r) {
         int st = r->attach_resolve(r->attach, r);
         if (st != PC_OK) return st;
     }
+    if (pc_figure_frames(r)) {   /* then the frame of everything, the scene included */
+        int st = pc_fit_figure(r);
+        if (st != PC_OK) return st;
+    }
     size_t n;
     pc_label *lab = collect(r, &n);
     if (!lab) return PC_ENOMEM;
@@ -161,6 +169,14 @@ static int resolve_into(pc_canvas *r) {
     return st;
 }
 
+/* A copy of n elements (room for one at least, so NULL only means no memory). */
+static void *dup(const void *p, size_t n, size_t elem, size_t *cap) {
+    void *q = malloc((n ? n : 1) * elem);
+    if (q && n) memcpy(q, p, n * elem);
+    *cap = n ? n : 1;
+    return q;
+}
+
 const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     if (!pc_layout_pending(c)) return c;
     pc_canvas *r = malloc(sizeof *r);
@@ -179,7 +195,15 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     r->captext = c->ntext + 64;
     r->text = malloc(r->captext);
     r->attach_drop = NULL;   /* the attachment stays the canvas's */
-    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text) {
+    int own = pc_figure_frames(c);   /* framing draws everything again: the copy owns it all */
+    if (own) {
+        r->dots = dup(c->dots, c->ndots, sizeof *c->dots, &r->capdots);
+        r->spans = dup(c->spans, c->nspans, sizeof *c->spans, &r->capspans);
+        r->lpx = dup(c->lpx, c->nlpx, sizeof *c->lpx, &r->caplpx);
+        r->clips = dup(c->clips, c->nclips, sizeof *c->clips, &r->capclips);
+    }
+    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text ||
+        (own && (!r->dots || !r->spans || !r->lpx || !r->clips))) {
         pc_layout_release(c, r);
         return NULL;
     }
@@ -207,6 +231,11 @@ void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved) {
     free(r->tags);
     free(r->pens);
     free(r->text);
+    /* what framing drew again is the copy's own; else shared with the canvas */
+    if (r->dots != c->dots) free(r->dots);
+    if (r->spans != c->spans) free(r->spans);
+    if (r->lpx != c->lpx) free(r->lpx);
+    if (r->clips != c->clips) free(r->clips);
     free(r);
 }
 

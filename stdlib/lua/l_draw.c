@@ -254,7 +254,7 @@ static int l_screen(lua_State *L) {
     }
     single_page(b);
     int rc = pc_canvas_reset(b->c, m.width, m.height, m.ncolors);
-    if (rc == PC_OK) b->npages = m.pages;
+    if (rc == PC_OK) b->npages = m.pages, b->c->screen_pixels = 1;   /* pixel coordinates */
     return check(L, b->c, rc);
 }
 

@@ -52,6 +52,7 @@ static int l_figure(lua_State *L) {
         strcpy(f.font, a[4].s);
     }
     if (a[5].present) f.size = a[5].x;
+    f.frame = 1;   /* a figure of its own: framed to its content when it sets no window */
     if (pc_figure_set(c, &f) != PC_OK) {   /* the core's message, its "figure: " once */
         const char *m = pc_canvas_error(c);
         return pcl_fail(L, "%s", strncmp(m, "figure: ", 8) ? m : m + 8);
