@@ -51,7 +51,11 @@ enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
  * it belongs to (all three points of a cubic are tagged CUBIC). */
 enum { PC_PATH_MOVE, PC_PATH_LINE, PC_PATH_CUBIC };
 enum { PC_PATH_CLOSED = 1 };
-/* The fill rules of a filled path (as SVG's fill-rule). */
+/* A PATH or FILLPATH op drawn at a size in pixels round an anchor (a marker, an arrow head,
+ * an angle mark, equal-length ticks): x1, y1 hold the anchor, and framing (pc_fit) moves the
+ * anchor and keeps the shape's size, mirroring it with the figure. */
+enum { PC_OP_RIGID = 0x80 };
+/* The fill rules of a filled path (as SVG's fill-rule), in the low bit of its flags. */
 enum { PC_FILL_NONZERO = 0, PC_FILL_EVENODD = 1 };
 
 /* Where text goes relative to its point: the side of the point (NE: above right). */
@@ -217,6 +221,9 @@ void pc_palette_default(pc_rgb *pal, int ncolors);
 
 /* Coordinate mapping: world -> screen (fractional) and back; length along x. */
 void pc_world_to_screen(const pc_canvas *c, double wx, double wy, double *sx, double *sy);
+/* Is c a figure{} framed to its content when written (the script's figure{}, no window, no
+ * SCREEN)?  Its world is then the screen mirrored, y up (layout.h: pc_fit_figure). */
+int pc_figure_frames(const pc_canvas *c);
 void pc_screen_to_world(const pc_canvas *c, double sx, double sy, double *wx, double *wy);
 double pc_world_xscale(const pc_canvas *c);       /* screen pixels per world x unit */
 

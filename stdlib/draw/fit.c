@@ -27,8 +27,7 @@ static void put(items *it, double x, double y, double dx0, double dy0, double dx
 }
 
 /* Everything drawn as items (CLEAR, the background, is not content). */
-static int gather(const pc_canvas *c, items *it, int flip) {
-    size_t from = it->n;
+static int gather(const pc_canvas *c, items *it) {
     for (size_t i = 0; i < c->nops; i++) {
         const pc_op *op = &c->ops[i];
         switch (op->kind) {
@@ -57,6 +56,15 @@ static int gather(const pc_canvas *c, items *it, int flip) {
             }
             break;
         case PC_OP_PATH: case PC_OP_FILLPATH:
+            if (op->flags & PC_OP_RIGID) {   /* its size in pixels round the anchor */
+                double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+                for (uint32_t k = 0; k < op->count; k++) {
+                    double dx = c->pts[op->first + k].x - op->x1, dy = c->pts[op->first + k].y - op->y1;
+                    x0 = fmin(x0, dx); y0 = fmin(y0, dy); x1 = fmax(x1, dx); y1 = fmax(y1, dy);
+                }
+                put(it, op->x1, op->y1, x0, y0, x1, y1);
+                break;
+            }
             for (uint32_t k = 0; k < op->count; k++) put(it, c->pts[op->first + k].x, c->pts[op->first + k].y, 0, 0, 0, 0);
             break;
         case PC_OP_TEXT: {
@@ -73,14 +81,12 @@ static int gather(const pc_canvas *c, items *it, int flip) {
         default: break;
         }
     }
-    if (flip)   /* y up: the points mirrored, the text cells (screen pixels) as they are */
-        for (size_t i = from; i < it->n; i++) it->v[i].y = -it->v[i].y;
     return it->nomem ? PC_ENOMEM : PC_OK;
 }
 
 int pc_drawn_extent(const pc_canvas *c, pc_box2 *out) {
     items it = {0};
-    int st = gather(c, &it, 0);
+    int st = gather(c, &it);
     if (st == PC_OK && it.n == 0) st = PC_EARG;
     if (st == PC_OK) {
         *out = (pc_box2){INFINITY, INFINITY, -INFINITY, -INFINITY};
@@ -176,14 +182,10 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
         fmap(f, op->x2, op->y2, &d, &e);
         return pc_box(c, a, b, d, e, op->color, op->kind == PC_OP_FILLBOX);
     case PC_OP_ARC: {
-        double rx = op->rx * f->sx, ry = op->ry * fabs(f->sy), r = fmax(rx, ry);
+        double rx = op->rx * f->sx, ry = op->ry * f->sy, r = fmax(rx, ry);
         double aspect = rx > 0 && ry != rx ? ry / rx : NAN;
-        /* mirrored too (pc_fit_figure): QBasic's angles are counter-clockwise as seen, as
-         * under a WINDOW with y up, so they stay */
-        double a0 = op->a0, a1 = op->a1;
-        int r0 = op->flags & PC_ARC_RADIUS0, r1 = op->flags & PC_ARC_RADIUS1;
-        double s0 = op->flags & PC_ARC_FULL ? NAN : (r0 ? -a0 : a0);
-        double s1 = op->flags & PC_ARC_FULL ? NAN : (r1 ? -a1 : a1);
+        double s0 = op->flags & PC_ARC_FULL ? NAN : (op->flags & PC_ARC_RADIUS0 ? -op->a0 : op->a0);
+        double s1 = op->flags & PC_ARC_FULL ? NAN : (op->flags & PC_ARC_RADIUS1 ? -op->a1 : op->a1);
         fmap(f, op->x1, op->y1, &a, &b);
         return pc_circle(c, a, b, r, op->color, s0, s1, aspect);
     }
@@ -208,15 +210,31 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
             return pc_fail_code(c, PC_ENOMEM, "fit: out of memory");
         }
         size_t nv = 0;
-        for (uint32_t k = 0; k < op->count; k++)
-            fmap(f, o->pts[op->first + k].x, o->pts[op->first + k].y, &xy[2 * k], &xy[2 * k + 1]);
+        int rigid = op->flags & PC_OP_RIGID;
+        double ax = 0, ay = 0;
+        if (rigid) fmap(f, op->x1, op->y1, &ax, &ay);
+        for (uint32_t k = 0; k < op->count; k++) {
+            const pc_xy *q = &o->pts[op->first + k];
+            if (rigid) {   /* moved with its anchor, its size kept */
+                xy[2 * k] = ax + (q->x - op->x1);
+                xy[2 * k + 1] = ay + (q->y - op->y1);
+            } else {
+                fmap(f, q->x, q->y, &xy[2 * k], &xy[2 * k + 1]);
+            }
+        }
         for (uint32_t k = 0; k < op->count; k += o->tags[op->first + k] == PC_PATH_CUBIC ? 3 : 1)
             verbs[nv++] = o->tags[op->first + k];   /* a cubic's three points are one verb */
         int st = op->kind == PC_OP_PATH
             ? pc_path(c, op->count, xy, verbs, nv, op->flags & PC_PATH_CLOSED, op->color)
-            : pc_fill_path(c, op->count, xy, verbs, nv, op->flags, op->color);
+            : pc_fill_path(c, op->count, xy, verbs, nv, op->flags & 1, op->color);
         free(xy);
         free(verbs);
+        if (st == PC_OK && rigid) {   /* still rigid for a later framing */
+            pc_op *t = &c->ops[c->nops - 1];
+            t->flags |= PC_OP_RIGID;
+            t->x1 = ax;
+            t->y1 = ay;
+        }
         return st;
     }
     case PC_OP_TEXT: {
@@ -265,6 +283,8 @@ static int replay(pc_canvas *c, const frame *f) {
     pc_fill_px(c->pixels, c->paper, (size_t)c->width * c->height);
     c->has_window = 0;
     c->view_screen = 1;
+    int frames = c->figure.frame;
+    c->figure.frame = 0;   /* drawn again in screen pixels, not through a figure's mirror */
     int st = PC_OK;
     size_t k = 0;
     for (size_t i = 0; i < o.nops && st == PC_OK; i++) {
@@ -274,7 +294,6 @@ static int replay(pc_canvas *c, const frame *f) {
         fmap(f, r->x0, r->y0, &x0, &y0);
         fmap(f, r->x1, r->y1, &x1, &y1);
         int full = r->x0 == 0 && r->y0 == 0 && r->x1 == c->width - 1 && r->y1 == c->height - 1;
-        if (y0 > y1) { double t = y0; y0 = y1; y1 = t; }   /* mirrored */
         c->view = full ? *r : (pc_rect){(int)fmax(0, floor(x0)), (int)fmax(0, floor(y0)),
                                         (int)fmin(c->width - 1, ceil(x1)), (int)fmin(c->height - 1, ceil(y1))};
         if ((st = pc_push_clip(c)) == PC_OK) st = replay_op(c, &o, &o.ops[i], f);
@@ -283,15 +302,16 @@ static int replay(pc_canvas *c, const frame *f) {
     c->view_screen = vs;
     c->has_window = has_window;
     c->pen = pen;
+    c->figure.frame = frames;
     if (st == PC_OK) st = pc_push_clip(c);
     free(o.ops); free(o.dots); free(o.pts); free(o.tags); free(o.spans); free(o.lpx);
     free(o.clips); free(o.text);
     return st;
 }
 
-/* The frame that puts what c has drawn in its view, margin pixels in (y mirrored with flip);
+/* The frame that puts what c has drawn in its view, margin pixels in;
  * 0 with *st PC_OK when nothing is drawn. */
-static int framing(pc_canvas *c, double margin, int aspect, int flip, frame *f, int *st) {
+static int framing(pc_canvas *c, double margin, int aspect, frame *f, int *st) {
     if (!(margin >= 0 && margin < 0.5 * fmin(c->view.x1 - c->view.x0, c->view.y1 - c->view.y0))) {
         *st = pc_fail(c, "fit: margin must be 0 up to half the view, got %g pixels", margin);
         return 0;
@@ -301,7 +321,7 @@ static int framing(pc_canvas *c, double margin, int aspect, int flip, frame *f, 
         return 0;
     }
     items it = {0};
-    *st = gather(c, &it, flip);
+    *st = gather(c, &it);
     if (*st != PC_OK || it.n == 0) {
         free(it.v);
         return 0;   /* nothing drawn: nothing to frame */
@@ -320,7 +340,7 @@ static int framing(pc_canvas *c, double margin, int aspect, int flip, frame *f, 
     double wx = width_at(&it, 0, sx, &lox), wy = width_at(&it, 1, sy, &loy);
     free(it.v);
     /* centred in the view: the box [lo, lo + w] under s goes to the middle */
-    *f = (frame){sx, flip ? -sy : sy, v->x0 + margin + (roomx - wx) / 2 - lox,
+    *f = (frame){sx, sy, v->x0 + margin + (roomx - wx) / 2 - lox,
                  v->y0 + margin + (roomy - wy) / 2 - loy};
     return 1;
 }
@@ -328,7 +348,7 @@ static int framing(pc_canvas *c, double margin, int aspect, int flip, frame *f, 
 int pc_fit(pc_canvas *c, double margin, int aspect) {
     frame f;
     int st;
-    if (!framing(c, margin, aspect, 0, &f, &st)) return st;
+    if (!framing(c, margin, aspect, &f, &st)) return st;
     const pc_rect *v = &c->view;
     /* the window that keeps later drawing in this frame: world -> old screen -> f */
     double corner[4];
@@ -336,7 +356,7 @@ int pc_fit(pc_canvas *c, double margin, int aspect) {
         double qx = k ? v->x1 : v->x0, qy = k ? v->y1 : v->y0;
         pc_screen_to_world(c, (qx - f.tx) / f.sx, (qy - f.ty) / f.sy, &corner[2 * k], &corner[2 * k + 1]);
     }
-    int screen = c->has_window ? c->window_screen : 1;
+    int screen = c->has_window ? c->window_screen : !pc_figure_frames(c);   /* y up in a figure */
     if ((st = replay(c, &f)) != PC_OK) return st;
     return pc_window(c, corner[0], corner[1], corner[2], corner[3], screen);
 }
@@ -344,6 +364,6 @@ int pc_fit(pc_canvas *c, double margin, int aspect) {
 int pc_fit_figure(pc_canvas *c) {
     frame f;
     int st;
-    if (!framing(c, PC_FIT_MARGIN, PC_FIT_EQUAL, 1, &f, &st)) return st;
+    if (!framing(c, PC_FIT_MARGIN, PC_FIT_EQUAL, &f, &st)) return st;
     return replay(c, &f);
 }

@@ -73,10 +73,6 @@ int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box) {
     return PC_OK;
 }
 
-int pc_figure_frames(const pc_canvas *c) {
-    return c->figure.on && c->figure.frame && !c->has_window && !c->screen_pixels;
-}
-
 int pc_layout_pending(const pc_canvas *c) {
     if (c->attach_resolve || pc_figure_frames(c)) return 1;
     for (size_t i = 0; i < c->nops; i++)
@@ -133,6 +129,7 @@ static int resolve_into(pc_canvas *r) {
     if (pc_figure_frames(r)) {   /* then the frame of everything, the scene included */
         int st = pc_fit_figure(r);
         if (st != PC_OK) return st;
+        r->figure.frame = 0;   /* framed: the copy draws in screen pixels from here on */
     }
     size_t n;
     pc_label *lab = collect(r, &n);

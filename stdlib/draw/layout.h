@@ -113,12 +113,10 @@ int pc_fit(pc_canvas *c, double margin, int aspect);
 /* A pending automatic label reserves its box on every side of its point, this far off, so
  * that wherever placement puts it, it stays in the frame. */
 #define PC_FIT_LABEL_GAP 3.0
-/* The framing a figure{} gets by default (pc_figure.frame, no window): what is drawn, read
- * as world units with y up, mirrored and framed at equal units PC_FIT_MARGIN pixels in from
+/* The framing a figure{} gets by default (pc_figure_frames, canvas.h): what is drawn (in
+ * world units, y up, the screen mirrored) framed at equal units PC_FIT_MARGIN pixels in from
  * the view's edges.  The writers' copy is framed (pc_layout_resolve), never the canvas. */
 #define PC_FIT_MARGIN 12.0
 int pc_fit_figure(pc_canvas *c);
-/* Does c want pc_fit_figure when written (a script's figure{}, no window, no SCREEN)? */
-int pc_figure_frames(const pc_canvas *c);
 
 #endif

@@ -11,6 +11,7 @@
 #include <string.h>
 #include <cmocka.h>
 #include "canvas.h"
+#include "furniture.h"
 #include "layout.h"
 
 static const pc_op *first_of(const pc_canvas *c, int kind) {
@@ -110,17 +111,21 @@ static void test_fit_then_labels(void **state) {
 static void test_figure_frames(void **state) {
     (void)state;
     pc_canvas *c = pc_canvas_new(640, 480, 16);
-    pc_line(c, 0, 0, 4, 0, 15);   /* world units: a 4 x 3 right triangle's legs */
-    pc_line(c, 0, 0, 0, 3, 15);
+    pc_line(c, 0, 0, 4, 0, 15);
     assert_false(pc_layout_pending(c));          /* no figure{}: pixels, as drawn */
     c->figure.on = 1;                             /* --print on a VGA script: still pixels */
     assert_false(pc_layout_pending(c));
     c->figure.frame = 1;                          /* the script's own figure{} */
     assert_true(pc_figure_frames(c));
+    pc_cls(c);
+    pc_line(c, 0, 0, 4, 0, 15);   /* world units: a 4 x 3 right triangle's legs, y up */
+    pc_line(c, 0, 0, 0, 3, 15);
+    const pc_op *v0 = &c->ops[c->nops - 1];
+    assert_true(v0->y2 == -3);                    /* the screen is the world mirrored */
     const pc_canvas *r = pc_layout_resolve(c);
     assert_non_null(r);
     assert_ptr_not_equal(r, c);
-    const pc_op *h = &r->ops[0], *v = &r->ops[1];
+    const pc_op *h = &r->ops[r->nops - 2], *v = &r->ops[r->nops - 1];
     /* y up: the vertical leg goes up the screen from the corner; equal units: 4:3 */
     assert_true(v->y2 < v->y1);
     double lh = hypot(h->x2 - h->x1, h->y2 - h->y1), lv = hypot(v->x2 - v->x1, v->y2 - v->y1);
@@ -130,13 +135,33 @@ static void test_figure_frames(void **state) {
     assert_true(fabs(v->y1 - (479 - m)) < 1e-9 && fabs(v->y2 - m) < 1e-9);
     assert_true(fabs((h->x1 + h->x2) / 2 - 319.5) < 1e-9);
     assert_int_equal(r->pixels[(long)nearbyint(v->y2) * 640 + (long)nearbyint(v->x2)], 15);
-    assert_true(c->ops[1].y2 == 3 && c->ops[0].x2 == 4);   /* the canvas keeps its list */
+    assert_true(c->ops[c->nops - 1].y2 == -3);    /* the canvas keeps its list */
     pc_layout_release(c, r);
     c->screen_pixels = 1;                         /* SCREEN 12: pixel coordinates */
     assert_false(pc_layout_pending(c));
     c->screen_pixels = 0;
     pc_window(c, -1, -1, 5, 4, 0);                /* a window: the script framed it itself */
     assert_false(pc_layout_pending(c));
+    pc_canvas_free(c);
+}
+
+/* A marker keeps its size in pixels through framing (PC_OP_RIGID), its centre on its point. */
+static void test_fit_keeps_marks(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    pc_line(c, 10, 10, 20, 10, 15);
+    assert_int_equal(pc_mark(c, 20, 10, PC_MARK_SQUARE, 6, 14), PC_OK);
+    assert_int_equal(pc_fit(c, 20, PC_FIT_EQUAL), PC_OK);   /* some 60 times larger */
+    const pc_op *l = first_of(c, PC_OP_LINE), *sq = first_of(c, PC_OP_PATH);
+    assert_true(l->x2 - l->x1 > 500);                       /* scaled up */
+    double x0 = INFINITY, x1 = -INFINITY;
+    for (uint32_t k = 0; k < sq->count; k++) {
+        x0 = fmin(x0, c->pts[sq->first + k].x);
+        x1 = fmax(x1, c->pts[sq->first + k].x);
+    }
+    assert_true(fabs(x1 - x0 - 6) < 1e-9);                  /* still 6 px across */
+    assert_true(fabs((x0 + x1) / 2 - l->x2) < 1e-9);        /* on the line's end */
+    assert_true(sq->flags & PC_OP_RIGID);
     pc_canvas_free(c);
 }
 
@@ -165,6 +190,7 @@ int main(void) {
         cmocka_unit_test(test_fit_fill_and_window),
         cmocka_unit_test(test_fit_then_labels),
         cmocka_unit_test(test_figure_frames),
+        cmocka_unit_test(test_fit_keeps_marks),
         cmocka_unit_test(test_figure_frames_labels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
