@@ -130,6 +130,8 @@ void pc_canvas_detach(pc_canvas *c) {
     c->attach = NULL;
     c->attach_resolve = NULL;
     c->attach_drop = NULL;
+    c->attach_extent = NULL;
+    c->attach_frame = NULL;
 }
 
 void pc_canvas_free(pc_canvas *c) {

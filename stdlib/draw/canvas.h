@@ -130,6 +130,10 @@ typedef struct { int x0, y0, x1, y1; } pc_rect;
  * the order of the ops, so the firsts increase strictly (a clip no op used is replaced). */
 typedef struct { pc_rect r; size_t first; } pc_clip;
 
+/* A point of a picture's extent and the box round it in pixels (layout.h: pc_fit). */
+typedef void (*pc_extent_fn)(void *ctx, double x, double y, double dx0, double dy0, double dx1,
+                             double dy1);
+
 typedef struct pc_canvas {
     int width, height;
     int ncolors;            /* palette attributes: 16 for SCREEN 12, 256 for SCREEN 13 */
@@ -202,6 +206,11 @@ typedef struct pc_canvas {
      * pc_canvas_free.  NULL: nothing attached. */
     int (*attach_resolve)(void *attach, struct pc_canvas *copy);
     void (*attach_drop)(void *attach);
+    /* What framing (layout.h: pc_fit) needs of it: every point it will draw, in screen
+     * pixels, with the box round it that does not scale (a marker, room for a label); and the
+     * framing itself, x -> sx x + tx, y -> sy y + ty, to draw it through.  NULL: none. */
+    int (*attach_extent)(void *attach, const struct pc_canvas *c, pc_extent_fn put, void *ctx);
+    void (*attach_frame)(void *attach, double sx, double sy, double tx, double ty);
     void *attach;
 } pc_canvas;
 

@@ -26,8 +26,17 @@ static void put(items *it, double x, double y, double dx0, double dy0, double dx
     it->v[it->n++] = (item){x, y, dx0, dy0, dx1, dy1};
 }
 
-/* Everything drawn as items (CLEAR, the background, is not content). */
+static void put_cb(void *ctx, double x, double y, double dx0, double dy0, double dx1, double dy1) {
+    put(ctx, x, y, dx0, dy0, dx1, dy1);
+}
+
+/* Everything drawn as items (CLEAR, the background, is not content), and what the attached
+ * scene will draw when the picture is written (through the camera). */
 static int gather(const pc_canvas *c, items *it) {
+    if (c->attach_extent) {
+        int st = c->attach_extent(c->attach, c, put_cb, it);
+        if (st != PC_OK) return st;
+    }
     for (size_t i = 0; i < c->nops; i++) {
         const pc_op *op = &c->ops[i];
         switch (op->kind) {
@@ -358,6 +367,7 @@ int pc_fit(pc_canvas *c, double margin, int aspect) {
     }
     int screen = c->has_window ? c->window_screen : !pc_figure_frames(c);   /* y up in a figure */
     if ((st = replay(c, &f)) != PC_OK) return st;
+    if (c->attach_frame) c->attach_frame(c->attach, f.sx, f.sy, f.tx, f.ty);
     return pc_window(c, corner[0], corner[1], corner[2], corner[3], screen);
 }
 

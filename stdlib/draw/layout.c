@@ -125,6 +125,7 @@ static int resolve_into(pc_canvas *r) {
     if (r->attach_resolve) {   /* a 3-D scene first: the labels then avoid its strokes */
         int st = r->attach_resolve(r->attach, r);
         if (st != PC_OK) return st;
+        r->attach_extent = NULL;   /* drawn: its strokes are in the list now */
     }
     if (pc_figure_frames(r)) {   /* then the frame of everything, the scene included */
         int st = pc_fit_figure(r);
@@ -215,6 +216,8 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
         return NULL;
     }
     r->attach_resolve = NULL;   /* resolved: nothing is pending in the copy */
+    r->attach_extent = NULL;
+    r->attach_frame = NULL;
     r->attach = NULL;
     return r;
 }

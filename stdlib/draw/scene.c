@@ -6,6 +6,7 @@
 #include <string.h>
 #include "canvas_internal.h"
 #include "furniture.h"
+#include "layout.h"
 #include "scene.h"
 
 typedef struct {
@@ -128,6 +129,34 @@ static int project(const pc_scene *sc, const double *x, double *sx, double *sy) 
     *sx = o[0] / o[2];
     *sy = o[1] / o[2];
     return isfinite(*sx) && isfinite(*sy);
+}
+
+int pc_scene_extent(const pc_scene *sc, const pc_canvas *c, pc_extent_fn put, void *ctx) {
+    for (size_t i = 0; i < sc->nst; i++) {
+        const stroke *s = &sc->st[i];
+        for (size_t k = 0; k < s->n; k++) {
+            double sx, sy, w = 0, h = 0, r = 0;
+            if (!project(sc, sc->pts + 3 * (s->first + k), &sx, &sy)) continue;
+            if (s->mark == 1) r = s->size / 2;
+            if (s->mark == 2) {   /* a label: its box on any side, PC_FIT_LABEL_GAP off */
+                int st = pc_text_measure(c, s->text, strlen(s->text), (int)s->size, &w, &h);
+                if (st != PC_OK) return st;
+                put(ctx, sx, sy, -w - PC_FIT_LABEL_GAP, -h - PC_FIT_LABEL_GAP, w + PC_FIT_LABEL_GAP,
+                    h + PC_FIT_LABEL_GAP);
+                continue;
+            }
+            put(ctx, sx, sy, -r, -r, r, r);
+        }
+    }
+    return PC_OK;
+}
+
+void pc_scene_reframe(pc_scene *sc, double sx, double sy, double tx, double ty) {
+    pc_map *f = &sc->screen;   /* rows x, y, w of a 3 -> 2 map: x' = sx x + tx w */
+    for (int j = 0; j < 4; j++) {
+        PC_MAP_AT(f, 0, j) = sx * PC_MAP_AT(f, 0, j) + tx * PC_MAP_AT(f, 2, j);
+        PC_MAP_AT(f, 1, j) = sy * PC_MAP_AT(f, 1, j) + ty * PC_MAP_AT(f, 2, j);
+    }
 }
 
 /* A run of screen points being gathered, drawn as one path when it ends. */

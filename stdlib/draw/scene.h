@@ -41,6 +41,14 @@ int pc_scene_visible(const pc_scene *sc, const double x[3]);
 size_t pc_scene_nsurfaces(const pc_scene *sc);
 size_t pc_scene_nstrokes(const pc_scene *sc);
 
+/* Every point the scene draws, on the screen (canvas.h's pc_extent_fn): the vertices of its
+ * strokes (a straight segment in space is one on the screen), its markers with their size,
+ * its labels with room for their box (measured through c) on any side.  For framing. */
+int pc_scene_extent(const pc_scene *sc, const pc_canvas *c, pc_extent_fn put, void *ctx);
+/* Draw the scene through a framing from now on: its screen x -> sx x + tx, y -> sy y + ty
+ * (sx, sy > 0; the depth order does not change). */
+void pc_scene_reframe(pc_scene *sc, double sx, double sy, double tx, double ty);
+
 /* Draw every stroke onto c, its visibility sampled 3 px apart on the screen and each change
  * found by bisection (to 1/1024 of the step): seen runs as paths in
  * their pen, hidden runs by `mode` (dashed: the pen with dashes 4 on, 3 off).  Markers that

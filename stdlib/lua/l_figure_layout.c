@@ -128,6 +128,19 @@ static int set_resolve(void *p, pc_canvas *copy) {
     return st;
 }
 
+static int set_extent(void *p, const pc_canvas *c, pc_extent_fn put, void *ctx) {
+    scene_set *set = p;
+    int st = PC_OK;
+    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_extent(set->sc[i], c, put, ctx);
+    return st;
+}
+
+/* fit{} moved the picture: the scenes are drawn through the same framing */
+static void set_frame(void *p, double sx, double sy, double tx, double ty) {
+    scene_set *set = p;
+    for (size_t i = 0; i < set->n; i++) pc_scene_reframe(set->sc[i], sx, sy, tx, ty);
+}
+
 static void set_drop(void *p) {
     scene_set *set = p;
     for (size_t i = 0; i < set->n; i++) pc_scene_free(set->sc[i]);
@@ -158,6 +171,8 @@ pc_scene *pcl_scene(lua_State *L) {
         c->attach = set;
         c->attach_resolve = set_resolve;
         c->attach_drop = set_drop;
+        c->attach_extent = set_extent;
+        c->attach_frame = set_frame;
     }
     size_t n = set->n;
     if (n && set->mode[n - 1] == mode && !memcmp(&set->map[n - 1], &scr, sizeof scr)) return set->sc[n - 1];

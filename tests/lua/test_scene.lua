@@ -83,6 +83,22 @@ local sq = surface(function(u, v) return P(u, v, 0) end, 0, 1, 0, 1)
 sq:wireframe { nu = 0, nv = 0, boundary = true, color = 13 }
 check.eq(point(370, 240) .. point(420, 190) .. point(370, 140) .. point(320, 190) .. point(370, 190),
   "131313130", "the four edges of the square (320..420, 140..240 px) and not its middle")
+-- fit{} sees the scene through the camera: a line drawn small in a corner fills the view
+-- (10 px in), and the sphere still hides its middle
+screen(12)
+local small = map.translate(V(60, 60)) * map.scale({ 10, -10 }) * view   -- 10 px a unit
+camera(small, { hidden = "hide" })
+line(P(-2, 0, -1.5), P(2, 0, -1.5), 14)
+sph:wireframe { nu = 0, nv = 0 }
+fit { margin = 10 }
+local out = os.tmpname() .. ".ppm"
+save(out)
+local px = ppm(out)
+os.remove(out)
+check.eq(px(12, 240) ~= 0 and px(627, 240) ~= 0 and px(8, 240) == 0 and px(631, 240) == 0, true,
+  "the line from x = 10 to 629, the whole view but the margin")
+check.eq(px(320, 240), 0, "its middle still behind the sphere")
+check.eq(px(100, 240) ~= 0, true, "beside the sphere, solid")
 check.err(function() camera(f, { hidden = "maybe" }) end,
   'camera: option \'hidden\' must be "show", "dashed" or "hide", got "maybe"', "bad mode")
 check.err(function() camera(f, { hiden = "hide" }) end,
