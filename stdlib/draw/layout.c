@@ -110,15 +110,82 @@ static pc_label *collect(const pc_canvas *c, size_t *n) {
     return lab;
 }
 
-/* The leader of a far label: from the point to the box's nearest point, a pixel short. */
+/* The leader of a far label (label_place.c decided where it goes). */
 static int leader(pc_canvas *c, const pc_label *l, int color) {
-    double qx = fmax(l->box.x0, fmin(l->px, l->box.x1 - 1));
-    double qy = fmax(l->box.y0, fmin(l->py, l->box.y1 - 1));
-    double dx = qx - l->px, dy = qy - l->py, d = hypot(dx, dy);
-    if (d < 4) return PC_OK;
-    double sx = l->px + 2 * dx / d, sy = l->py + 2 * dy / d;   /* clear of the point's mark */
-    return pc_line(c, nearbyint(sx), nearbyint(sy), nearbyint(qx - dx / d), nearbyint(qy - dy / d),
-                   color);
+    double seg[4];
+    if (!pc_label_leader(l, seg)) return PC_OK;
+    return pc_line(c, seg[0], seg[1], seg[2], seg[3], color);
+}
+
+/* ---- the ink mask ----------------------------------------------------------------------- */
+
+typedef struct { uint8_t *m; int w, h; pc_rect clip; } ink_mask;
+
+static void mask_seg(ink_mask *k, double x0, double y0, double x1, double y1) {
+    double n = ceil(fmax(fabs(x1 - x0), fabs(y1 - y0)));
+    if (!(n < 1e5)) return;   /* far off: nothing a label could meet */
+    for (double i = 0; i <= n; i++) {
+        double t = n > 0 ? i / n : 0;
+        long x = lrint(x0 + t * (x1 - x0)), y = lrint(y0 + t * (y1 - y0));
+        if (x >= k->clip.x0 && x <= k->clip.x1 && y >= k->clip.y0 && y <= k->clip.y1 &&
+            x >= 0 && y >= 0 && x < k->w && y < k->h)
+            k->m[(size_t)y * k->w + x] = 1;
+    }
+}
+
+/* A dashed or styled stroke drawn solid into the mask: a reader sees the line through its
+ * gaps, so a label goes no more in a gap than across the dashes. */
+static void mask_dashed(const pc_canvas *r, size_t i, ink_mask *k) {
+    const pc_op *op = &r->ops[i];
+    if (op->pen >= r->npens) return;
+    const pc_stroke *pen = &r->pens[op->pen];
+    if (!pen->ndash && !pen->style) return;
+    k->clip = r->clips[pc_op_clip(r, i)].r;
+    switch (op->kind) {
+    case PC_OP_LINE: mask_seg(k, op->x1, op->y1, op->x2, op->y2); break;
+    case PC_OP_BOX:
+        mask_seg(k, op->x1, op->y1, op->x2, op->y1); mask_seg(k, op->x2, op->y1, op->x2, op->y2);
+        mask_seg(k, op->x2, op->y2, op->x1, op->y2); mask_seg(k, op->x1, op->y2, op->x1, op->y1);
+        break;
+    case PC_OP_ARC: {   /* counter-clockwise as seen, from a0 to a1 (all round when full) */
+        double a0 = op->flags & PC_ARC_FULL ? 0 : op->a0, a1 = op->flags & PC_ARC_FULL ? 2 * 3.141592653589793 : op->a1;
+        if (a1 < a0) a1 += 2 * 3.141592653589793;
+        int n = (int)fmin(4096, fmax(8, (a1 - a0) * fmax(op->rx, op->ry) / 2));
+        for (int j = 0; j < n; j++) {
+            double t0 = a0 + (a1 - a0) * j / n, t1 = a0 + (a1 - a0) * (j + 1) / n;
+            mask_seg(k, op->x1 + op->rx * cos(t0), op->y1 - op->ry * sin(t0), op->x1 + op->rx * cos(t1),
+                     op->y1 - op->ry * sin(t1));
+        }
+        break;
+    }
+    case PC_OP_PATH: {
+        const pc_xy *p = r->pts + op->first;
+        const uint8_t *tag = r->tags + op->first;
+        size_t start = 0;
+        for (size_t j = 1; j < op->count; j++) {
+            if (tag[j] == PC_PATH_MOVE) {
+                if (op->flags & PC_PATH_CLOSED) mask_seg(k, p[j - 1].x, p[j - 1].y, p[start].x, p[start].y);
+                start = j;
+            } else if (tag[j] == PC_PATH_CUBIC && j + 2 < op->count) {
+                pc_xy q[4] = {p[j - 1], p[j], p[j + 1], p[j + 2]};
+                int m = pc_cubic_segments(q, 0.5);
+                pc_xy a = q[0];
+                for (int s = 1; s <= m; s++) {
+                    pc_xy b = pc_cubic_at(q, (double)s / m);
+                    mask_seg(k, a.x, a.y, b.x, b.y);
+                    a = b;
+                }
+                j += 2;
+            } else {
+                mask_seg(k, p[j - 1].x, p[j - 1].y, p[j].x, p[j].y);
+            }
+        }
+        if ((op->flags & PC_PATH_CLOSED) && op->count > 1)
+            mask_seg(k, p[op->count - 1].x, p[op->count - 1].y, p[start].x, p[start].y);
+        break;
+    }
+    default: break;
+    }
 }
 
 static int resolve_into(pc_canvas *r) {
@@ -141,6 +208,8 @@ static int resolve_into(pc_canvas *r) {
     int st = mask ? PC_OK : PC_ENOMEM;
     if (st == PC_OK) {
         for (size_t i = 0; i < npx; i++) mask[i] = r->pixels[i] != r->paper;
+        ink_mask k = {mask, r->width, r->height, {0, 0, 0, 0}};
+        for (size_t i = 0; i < r->nops; i++) mask_dashed(r, i, &k);
         st = pc_inkmap_init(&ink, mask, r->width, r->height);
     }
     free(mask);
