@@ -4,9 +4,11 @@ have a drawn stroke passing through them.
 
     label_audit.py [--each] FILE.svg ...
 
-A label's box is its <text>'s cell: from x to x + textLength, and from the baseline up three
-quarters of the font size to a quarter below (the VGA font's 12 of 16 rows above the
-baseline).  A stroke crosses a label when one of its segments (path outlines, lines of
+A label's box is its <text>'s cell: from x to x + textLength (without one, as the print look
+writes its labels, half an em a character), and from the baseline up three quarters of the
+font size to a quarter below (the VGA font's 12 of 16 rows above the baseline).  The text is
+all of the element's, its <tspan> runs included.  The picture's size is its viewBox where it
+has one (the print look: width and height in pt), else its width and height without a unit.  A stroke crosses a label when one of its segments (path outlines, lines of
 polylines, circles as 32-gons, outlined rectangles), cut to its group's clip rectangle, enters
 the box shrunk by one pixel on every side, so a stroke that only touches the cell's edge does
 not count.  Hidden groups and clip paths' own rectangles are not strokes.  Animated SVGs (with
@@ -82,6 +84,15 @@ def seg_hits_box(s, b):
     return True
 
 
+def length(v):
+    """An SVG length: a number with an optional unit ("226.772pt", "640", "12px"), in the
+    SVG's user units as they are written."""
+    m = re.match(r"\s*(" + NUM + r")", v or "")
+    if not m:
+        raise ValueError("not a length: %r" % v)
+    return float(m.group(1))
+
+
 def tag(e):
     return e.tag.split("}")[-1]
 
@@ -120,10 +131,12 @@ def shapes(e, clip, clips, boxes, segs):
         clip = clips.get(cp[5:-1], clip)
     mine = []
     if t == "text":
-        x, y = float(e.get("x")), float(e.get("y"))
-        fs = float(e.get("font-size", "16"))
-        w = float(e.get("textLength", str(0.5 * fs * len(e.text or ""))))
+        x, y = length(e.get("x")), length(e.get("y"))
+        fs = length(e.get("font-size", "16"))
+        text = "".join(e.itertext())
+        w = length(e.get("textLength")) if e.get("textLength") else 0.5 * fs * len(text)
         boxes.append((x, y - 0.75 * fs, x + w, y + 0.25 * fs))
+        return   # its <tspan> runs are the same label
     elif t == "path":
         mine = path_segments(e.get("d", ""))
     elif t == "line":
@@ -151,8 +164,11 @@ def audit(path):
     root = ET.parse(path).getroot()
     if any(tag(e) == "animate" for e in root.iter()):
         return None
-    width = float(root.get("width", "640"))
-    height = float(root.get("height", "480"))
+    vb = root.get("viewBox")
+    if vb:   # the print look: width and height in pt, the drawing in the viewBox's units
+        width, height = [float(v) for v in re.findall(NUM, vb)[2:4]]
+    else:
+        width, height = length(root.get("width", "640")), length(root.get("height", "480"))
     clips = {}
     for e in root.iter():
         if tag(e) == "clipPath":
