@@ -105,7 +105,7 @@ static pc_box2 far_box(const pc_label *l, int k, double gap, int *anchor) {
 #define COST_POINT 1e5
 #define COST_CROSSED 2000.0   /* any ink at all: more than going out with a leader */
 #define COST_INK 60.0
-#define LEADER_INK 300.0      /* a leader across a stroke */
+#define LEADER_INK 800.0      /* a leader across a stroke: nearly as bad as the label across it */
 #define PASSES 3              /* the greedy pass, then the labels left in conflict again */
 #define OWN_MARK 2            /* the ink this close to a label's own point is its dot's */
 
@@ -264,6 +264,17 @@ static int px_in(const double *q, pc_box2 b) {
     return q[0] >= b.x0 && q[0] < b.x1 && q[1] >= b.y0 && q[1] < b.y1;
 }
 
+/* The ink under clear box b of label k but its own point's dot. */
+static uint32_t box_ink(const placer *p, size_t k, pc_box2 b) {
+    if (!p->ink) return 0;
+    const double *q = p->pt + 2 * k;
+    pc_box2 own = {q[0] - OWN_MARK, q[1] - OWN_MARK, q[0] + OWN_MARK + 1, q[1] + OWN_MARK + 1};
+    pc_box2 both = {fmax(own.x0, b.x0), fmax(own.y0, b.y0), fmin(own.x1, b.x1), fmin(own.y1, b.y1)};
+    uint32_t ink = pc_inkmap_count(p->ink, b);
+    if (both.x1 > both.x0 && both.y1 > both.y0) ink -= pc_inkmap_count(p->ink, both);
+    return ink;
+}
+
 /* The cost of box b for label k on top of `base`; the cheap terms (the edge, the ink) first,
  * and the searches of the grids only while the total can still beat `best`. */
 static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) {
@@ -278,15 +289,8 @@ static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) 
         cost += COST_OUTSIDE + ((b.x1 - b.x0) * (b.y1 - b.y0) - inside);
     }
     pc_box2 near = b;
-    if (p->ink) {   /* the ink under it but its own point's marker */
-        const double *q = p->pt + 2 * k;
-        pc_box2 own = {q[0] - OWN_MARK, q[1] - OWN_MARK, q[0] + OWN_MARK + 1, q[1] + OWN_MARK + 1};
-        pc_box2 both = {fmax(own.x0, near.x0), fmax(own.y0, near.y0), fmin(own.x1, near.x1),
-                        fmin(own.y1, near.y1)};
-        uint32_t ink = pc_inkmap_count(p->ink, near);
-        if (both.x1 > both.x0 && both.y1 > both.y0) ink -= pc_inkmap_count(p->ink, both);
-        if (ink) cost += COST_CROSSED + COST_INK * ink;
-    }
+    uint32_t ink = box_ink(p, k, near);
+    if (ink) cost += COST_CROSSED + COST_INK * ink;
     if (cost >= best) return cost;
     /* an overlapping box is counted in the one cell holding the top-left corner of the
      * overlap, so a box in several cells counts once */
@@ -338,8 +342,10 @@ static int place_one(placer *p, size_t k, double *cost_out) {
     if (p->placed[k]) grid_remove(&p->boxes, p->box[k], k);
     if (p->has_lead[k]) grid_remove(&p->leaders, seg_box(p->lead + 4 * k), k);
     p->has_lead[k] = 0;
-    double best = INFINITY;
-    for (size_t r = 0; r < NRINGS; r++)
+    double best = INFINITY, near_cost = INFINITY;
+    pc_label near = *l;
+    for (size_t r = 0; r < NRINGS; r++) {
+        if (r == LEADER_RING) near_cost = best, near = *l;   /* the best of the eight sides */
         for (int s = 0; s < (r < LEADER_RING ? 8 : NDIRS); s++) {
             int anchor = r < LEADER_RING ? sides[s] : 0;
             pc_box2 b = r < LEADER_RING
@@ -361,6 +367,13 @@ static int place_one(placer *p, size_t k, double *cost_out) {
                 l->leader = r >= LEADER_RING && !l->no_leader;
             }
         }
+    }
+    /* gone far but crossed there too: better crossed beside its point, without a leader */
+    if (l->gap > ring_gap[LEADER_RING - 1] && near_cost < COST_OUTSIDE &&
+        box_ink(p, k, pc_label_clear(l->box)) > 0) {
+        *l = near;
+        best = near_cost;
+    }
     p->placed[k] = 1;
     p->box[k] = pc_label_clear(l->box);
     *cost_out = best;
