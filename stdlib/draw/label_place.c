@@ -226,18 +226,28 @@ int pc_label_leader(const pc_label *l, double seg[4]) {
     return 1;
 }
 
+/* Is there ink on pixel (x, y)?  Four look-ups in the summed-area table. */
+static int ink_at(const pc_inkmap *m, long x, long y) {
+    if (x < 0 || y < 0 || x >= m->w || y >= m->h) return 0;
+    size_t W = (size_t)m->w + 1;
+    const uint32_t *a = m->sum + (size_t)y * W + x, *b = a + W;
+    return b[1] - a[1] - b[0] + a[0] != 0;
+}
+
 /* What a leader costs: the ink it crosses (sampled a pixel apart) and, the most, every other
- * label it would cross. */
-static double leader_cost(placer *p, size_t k, const double *seg) {
+ * label it would cross; counting stops once it reaches `budget`. */
+static double leader_cost(placer *p, size_t k, const double *seg, double budget) {
     double cost = 0, len = hypot(seg[2] - seg[0], seg[3] - seg[1]);
     uint32_t ink = 0;
-    if (p->ink)
+    if (p->ink && len > 0) {
+        double dx = (seg[2] - seg[0]) / len, dy = (seg[3] - seg[1]) / len;
         for (double t = 0; t <= len; t += 1) {
-            double x = seg[0] + (len > 0 ? t / len : 0) * (seg[2] - seg[0]);
-            double y = seg[1] + (len > 0 ? t / len : 0) * (seg[3] - seg[1]);
-            ink += pc_inkmap_count(p->ink, (pc_box2){nearbyint(x), nearbyint(y), nearbyint(x) + 1, nearbyint(y) + 1});
+            ink += ink_at(p->ink, lrint(seg[0] + t * dx), lrint(seg[1] + t * dy));
+            if (ink && LEADER_INK >= budget) return LEADER_INK;   /* lost already */
         }
+    }
     if (ink) cost += LEADER_INK + COST_INK / 4 * ink;
+    if (cost >= budget) return cost;
     int i0, j0, i1, j1;
     p->stamp++;
     cell_range(&p->boxes, seg_box(seg), &i0, &j0, &i1, &j1);
@@ -305,6 +315,7 @@ static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) 
                 if (clampl((fmax(b.x0, q->x0) - p->boxes.ox) / CELL, 0, p->boxes.nx - 1) == i &&
                     clampl((fmax(b.y0, q->y0) - p->boxes.oy) / CELL, 0, p->boxes.ny - 1) == j)
                     cost += COST_OVERLAP;
+                if (cost >= best) return cost;   /* lost already: no need to count on */
             }
         }
     if (cost >= best) return cost;
@@ -318,6 +329,7 @@ static double cost_of(placer *p, size_t k, pc_box2 b, double base, double best) 
                 if (o == k || p->seen[o] == p->stamp) continue;
                 p->seen[o] = p->stamp;
                 if (seg_hits(p->lead + 4 * o, near)) cost += COST_CROSSED;
+                if (cost >= best) return cost;
             }
         }
     if (cost >= best) return cost;
@@ -357,7 +369,7 @@ static int place_one(placer *p, size_t k, double *cost_out) {
             if (cost < best && r >= LEADER_RING && !l->no_leader) {
                 pc_label cand = *l;
                 cand.box = b;
-                if (pc_label_leader(&cand, seg)) cost += leader_cost(p, k, seg);
+                if (pc_label_leader(&cand, seg)) cost += leader_cost(p, k, seg, best - cost);
             }
             if (cost < best) {
                 best = cost;
@@ -385,8 +397,73 @@ static int place_one(placer *p, size_t k, double *cost_out) {
     return grid_add(&p->boxes, p->box[k], k);
 }
 
+/* ---- the last placement, kept ---------------------------------------------------------------
+ * One run writes a picture to several files (PNG and SVG): each resolves its own copy of the
+ * canvas, with the same labels among the same ink.  The last placement is kept (per thread)
+ * with what it was made from: the labels as given, the picture's size and a 64-bit hash of
+ * the ink map; the same inputs give back the same result without placing again. */
+typedef struct { pc_label *in, *out; size_t n; double width, height; uint64_t ink; } kept;
+static _Thread_local kept last;
+
+/* A label as given: what placement reads, its results cleared. */
+static pc_label given(const pc_label *l) {
+    pc_label g;
+    memset(&g, 0, sizeof g);
+    g.px = l->px; g.py = l->py; g.w = l->w; g.h = l->h; g.fixed = l->fixed;
+    if (l->fixed) g.box = l->box, g.anchor = l->anchor;
+    g.bounds = l->bounds;
+    g.no_leader = l->no_leader;
+    return g;
+}
+
+static uint64_t ink_hash(const pc_inkmap *m) {
+    uint64_t h = 1469598103934665603u;   /* FNV-1a over the table's words */
+    if (!m) return h;
+    size_t N = (size_t)(m->w + 1) * (m->h + 1);
+    for (size_t i = 0; i < N; i++) h = (h ^ m->sum[i]) * 1099511628211u;
+    return h ^ ((uint64_t)m->w << 32 | (uint32_t)m->h);
+}
+
+static int recall(pc_label *lab, size_t n, uint64_t ink, double width, double height) {
+    if (!last.in || last.n != n || last.ink != ink || last.width != width || last.height != height) return 0;
+    for (size_t k = 0; k < n; k++) {
+        pc_label g = given(&lab[k]);
+        if (memcmp(&g, &last.in[k], sizeof g)) return 0;
+    }
+    memcpy(lab, last.out, n * sizeof *lab);
+    return 1;
+}
+
+static void keep(const pc_label *in, const pc_label *lab, size_t n, uint64_t ink, double width,
+                 double height) {
+    free(last.in);
+    free(last.out);
+    last = (kept){malloc(n * sizeof *lab), malloc(n * sizeof *lab), n, width, height, ink};
+    if (!last.in || !last.out) {   /* no memory: nothing kept */
+        free(last.in);
+        free(last.out);
+        last = (kept){0};
+        return;
+    }
+    memcpy(last.in, in, n * sizeof *in);
+    memcpy(last.out, lab, n * sizeof *lab);
+}
+
+static int place(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height);
+
 int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height) {
     if (n == 0) return PC_OK;
+    uint64_t h = ink_hash(ink);
+    if (recall(lab, n, h, width, height)) return PC_OK;
+    pc_label *in = malloc(n * sizeof *in);
+    for (size_t k = 0; in && k < n; k++) in[k] = given(&lab[k]);
+    int st = place(lab, n, ink, width, height);
+    if (st == PC_OK && in) keep(in, lab, n, h, width, height);
+    free(in);
+    return st;
+}
+
+static int place(pc_label *lab, size_t n, const pc_inkmap *ink, double width, double height) {
     placer p = {lab, n, ink, width, height, {0}, {0}, NULL, NULL, 0, NULL, NULL, {0}, NULL, NULL};
     /* the grids cover the picture and every point (with the farthest ring round it) */
     double x0 = 0, y0 = 0, x1 = width, y1 = height, reach = ring_gap[NRINGS - 1];
