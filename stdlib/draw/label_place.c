@@ -101,7 +101,7 @@ static pc_box2 far_box(const pc_label *l, int k, double gap, int *anchor) {
 }
 
 #define COST_OVERLAP 1e9
-#define COST_OUTSIDE 1e7
+#define COST_OUTSIDE 1e11   /* worse than an overlap: a label off the picture is lost */
 #define COST_POINT 1e5
 #define COST_CROSSED 2000.0   /* any ink at all: more than going out with a leader */
 #define COST_INK 60.0
@@ -381,7 +381,7 @@ static int place_one(placer *p, size_t k, double *cost_out) {
         }
     }
     /* gone far but crossed there too: better crossed beside its point, without a leader */
-    if (l->gap > ring_gap[LEADER_RING - 1] && near_cost < COST_OUTSIDE &&
+    if (l->gap > ring_gap[LEADER_RING - 1] && near_cost < COST_OVERLAP &&
         box_ink(p, k, pc_label_clear(l->box)) > 0) {
         *l = near;
         best = near_cost;
@@ -505,7 +505,7 @@ static int place(pc_label *lab, size_t n, const pc_inkmap *ink, double width, do
     if (!cost) st = PC_ENOMEM;
     for (int pass = 0; pass < PASSES && st == PC_OK; pass++)
         for (size_t k = 0; k < n && st == PC_OK; k++)
-            if (!lab[k].fixed && (pass == 0 || cost[k] >= COST_OUTSIDE)) st = place_one(&p, k, &cost[k]);
+            if (!lab[k].fixed && (pass == 0 || cost[k] >= COST_OVERLAP)) st = place_one(&p, k, &cost[k]);
     free(cost);
     if (p.boxes.cells) grid_free(&p.boxes);
     if (p.points.cells) grid_free(&p.points);
