@@ -125,9 +125,11 @@ int pc_arrow(pc_canvas *c, double x1, double y1, double x2, double y2, int heads
     double l = len2(d);
     if (!(l > 0) && heads) return pc_fail(c, "arrow: the two points coincide: no direction for the head");
     v2 u = l > 0 ? mul(d, 1 / l) : (v2){0, 0};
-    /* the shaft stops inside the head (at two thirds of it) so no pen blunts the tip */
-    v2 s0 = heads & PC_ARROW_START ? add(a, mul(u, fmin(len * 0.66, l / 2))) : a;
-    v2 s1 = heads & PC_ARROW_END ? sub(b, mul(u, fmin(len * 0.66, l / 2))) : b;
+    /* the shaft stops inside the head (at two thirds of it) so no pen blunts the tip; not in
+     * a figure framed when written, whose pixels are not known yet (the head is rigid) */
+    double back = pc_figure_frames(c) ? 0 : fmin(len * 0.66, l / 2);
+    v2 s0 = heads & PC_ARROW_START ? add(a, mul(u, back)) : a;
+    v2 s1 = heads & PC_ARROW_END ? sub(b, mul(u, back)) : b;
     int st = sline(c, s0, s1, color);
     if (st == PC_OK && (heads & PC_ARROW_END)) st = pc_arrow_head(c, x1, y1, x2, y2, len, color);
     if (st == PC_OK && (heads & PC_ARROW_START)) st = pc_arrow_head(c, x2, y2, x1, y1, len, color);

@@ -86,7 +86,7 @@ void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *k) {
 
 static const pcl_fn fns[] = {
     PCL_FN("figure", l_figure, figure_args, NULL,
-           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt."),
+           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt. Without a window or a screen() the coordinates are world units with y up and the figure is framed to what is drawn, at true shape."),
     PCL_END};
 
 void pcl_open_figure(lua_State *L) { pcl_register(L, -1, fns, 0); }

@@ -563,7 +563,7 @@ static const pcl_fn fns[] = {
     PCL_FN("centre_line", l_centre_line, centre_args, NULL,
            "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
     PCL_FN("fit", l_fit, fit_args, NULL,
-           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells included, at equal units on both axes (or each axis filling the view); later drawing follows the new frame."),
+           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame."),
     PCL_FN("caption", l_caption, caption_args, NULL,
            "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
     PCL_FN("axes", l_axes, axes_args, "n",
