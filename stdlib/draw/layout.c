@@ -122,8 +122,11 @@ static int leader(pc_canvas *c, const pc_label *l, int color) {
 typedef struct { uint8_t *m; int w, h; pc_rect clip; } ink_mask;
 
 static void mask_seg(ink_mask *k, double x0, double y0, double x1, double y1) {
+    if (!pc_clip_segment(&x0, &y0, &x1, &y1, k->clip.x0 - 0.5, k->clip.y0 - 0.5, k->clip.x1 + 0.5,
+                         k->clip.y1 + 0.5))
+        return;   /* only the part in its VIEW is walked */
     double n = ceil(fmax(fabs(x1 - x0), fabs(y1 - y0)));
-    if (!(n < 1e5)) return;   /* far off: nothing a label could meet */
+    if (!(n < 1e5)) return;
     for (double i = 0; i <= n; i++) {
         double t = n > 0 ? i / n : 0;
         long x = lrint(x0 + t * (x1 - x0)), y = lrint(y0 + t * (y1 - y0));

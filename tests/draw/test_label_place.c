@@ -92,6 +92,28 @@ static void test_never_across_a_line(void **state) {
     pc_canvas_free(c);
 }
 
+/* A dashed line is an obstacle through its gaps: a vertical line 5 px right of the point,
+ * 1 px on and 40 off, leaves the NE and SE boxes free of drawn pixels, yet the label goes
+ * to the west of it, clear of its column. */
+static void test_dashes_are_obstacles(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    double dash[2] = {1, 40};
+    assert_int_equal(pc_pen(c, 1, dash, 2), PC_OK);
+    pc_line(c, 305, 160, 305, 240, 15);   /* on at 160, 201; off across 162..200 and 202..240 */
+    pc_pen_reset(c);
+    pc_text(c, 300, 200, "Q", PC_ANCHOR_AUTO, 0, 1, 14);
+    pc_box2 *b;
+    int *anchor;
+    size_t n;
+    assert_int_equal(pc_layout_labels(c, &b, &anchor, &n), PC_OK);
+    assert_true(b[0].x1 + 1 <= 305 || b[0].x0 - 1 > 305);   /* its clearance misses x = 305 */
+    assert_int_equal(anchor[0], PC_ANCHOR_NW);
+    free(b);
+    free(anchor);
+    pc_canvas_free(c);
+}
+
 /* A label with a direction keeps it and is an obstacle: an automatic one on the same point
  * avoids it; at the picture's top-right corner the automatic one goes inside (SW). */
 static void test_fixed_kept_and_inside(void **state) {
@@ -179,6 +201,7 @@ static void test_inkmap(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_crowd_of_thirty),
+        cmocka_unit_test(test_dashes_are_obstacles),
         cmocka_unit_test(test_never_across_a_line),
         cmocka_unit_test(test_fixed_kept_and_inside),
         cmocka_unit_test(test_measure_hook),
