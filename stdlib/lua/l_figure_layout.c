@@ -235,6 +235,29 @@ int pcl_scene_line(lua_State *L) {
     return 1;
 }
 
+int pcl_scene_path(lua_State *L, int closed, int color) {
+    pc_scene *sc;
+    double x[3];
+    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
+    int is3 = point3(L, -1, x);
+    lua_pop(L, 1);
+    if (!is3 || !(sc = pcl_scene(L))) return 0;
+    size_t n = lua_rawlen(L, 1);   /* the arg layer read them already: n points of one path */
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (n + 1), 0);
+    for (size_t k = 0; k < n; k++) {
+        lua_rawgeti(L, 1, (lua_Integer)k + 1);
+        int ok = point3(L, -1, xyz + 3 * k);
+        lua_pop(L, 1);
+        if (!ok) return lua_pop(L, 1), 0;   /* not all 3-D points: drawn as usual */
+    }
+    if (closed && n > 1) memcpy(xyz + 3 * n, xyz, 3 * sizeof *xyz), n++;
+    pc_canvas *c = pcl_active_canvas(L);
+    int st = pc_scene_add_polyline(sc, n, xyz, NULL, color, c->pen);
+    lua_pop(L, 1);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
 int pcl_scene_label(lua_State *L) {
     static const char *const dirs[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
     double x[3];

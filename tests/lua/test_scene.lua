@@ -83,6 +83,18 @@ local sq = surface(function(u, v) return P(u, v, 0) end, 0, 1, 0, 1)
 sq:wireframe { nu = 0, nv = 0, boundary = true, color = 13 }
 check.eq(point(370, 240) .. point(420, 190) .. point(370, 140) .. point(320, 190) .. point(370, 190),
   "131313130", "the four edges of the square (320..420, 140..240 px) and not its middle")
+-- path() with 3-D points goes into the scene too: drawn before the sphere, hidden by it
+screen(12)
+camera(f, { hidden = "hide" })
+path({ P(-2, 0, -1.5), P(0, 0, -1.5), P(2, 0, -1.5) }, { color = 14 })
+sph:wireframe { nu = 0, nv = 0 }
+local pout = os.tmpname() .. ".ppm"
+save(pout)
+local ppx = ppm(pout)
+os.remove(pout)
+check.eq((ppx(150, 240) ~= 0 and "#" or ".") .. (ppx(320, 240) ~= 0 and "#" or ".") ..
+  (ppx(490, 240) ~= 0 and "#" or "."), "#.#", "the path's middle behind the sphere is left out")
+
 -- fit{} sees the scene through the camera: a line drawn small in a corner fills the view
 -- (10 px in), and the sphere still hides its middle
 screen(12)
