@@ -12,7 +12,8 @@
 typedef struct {
     size_t first, n;        /* into pts (3 numbers each) */
     int color, pen;
-    int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale */
+    int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale;
+                               a dot (3) */
     double size;
     char *text;             /* a label's text (owned) */
 } stroke;
@@ -99,6 +100,10 @@ int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8
 
 int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color) {
     return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 1, style, size, NULL});
+}
+
+int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color) {
+    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 3, 0, 0, NULL});
 }
 
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
@@ -276,6 +281,11 @@ int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode) {
             pc_screen_to_world(c, sx, sy, &wx, &wy);
             if (vis || mode == PC_HIDDEN_SHOW)
                 st = pc_text(c, wx, wy, s->text, s->style, 3, (int)s->size, s->color);
+            continue;
+        }
+        if (s->mark == 3) {   /* a dot: only where it is seen */
+            pc_screen_to_world(c, sx, sy, &wx, &wy);
+            if (vis || mode == PC_HIDDEN_SHOW) st = pc_pset(c, wx, wy, s->color);
             continue;
         }
         if (!vis && mode != PC_HIDDEN_SHOW) {

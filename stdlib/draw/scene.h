@@ -30,6 +30,10 @@ int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8
 /* A marker (furniture.h's styles) of size pixels at a 3-D point. */
 int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color);
 
+/* A dot (PSET's pixel) at a 3-D point: left out where it is hidden (unless PC_HIDDEN_SHOW),
+ * since a pixel has no dashes. */
+int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color);
+
 /* A label of a 3-D point: written when the scene is drawn if its point is seen (always with
  * PC_HIDDEN_SHOW), on side `anchor` (PC_ANCHOR_AUTO: placed with the other labels). */
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,

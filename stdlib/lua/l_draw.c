@@ -301,7 +301,10 @@ static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
     pc_canvas *c = canvas(L);
     return check(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
-static int l_pset(lua_State *L) { return dot(L, pc_pset); }
+static int l_pset(lua_State *L) {
+    if (pcl_scene_pset(L)) return 0;   /* a 3-D point into the camera's scene (pcl_scene.h) */
+    return dot(L, pc_pset);
+}
 static int l_preset(lua_State *L) { return dot(L, pc_preset); }
 
 /* LINE's style: "b" (box) or "bf" (filled box), any case; then QBasic's 16-bit pattern,

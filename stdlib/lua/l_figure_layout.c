@@ -235,6 +235,15 @@ int pcl_scene_line(lua_State *L) {
     return 1;
 }
 
+int pcl_scene_pset(lua_State *L) {
+    double x[3];
+    pc_scene *sc;
+    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
+    int st = pc_scene_add_dot(sc, x, pcl_optcolor(L, 2, pcl_active_canvas(L)));
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
 int pcl_scene_path(lua_State *L, int closed, int color) {
     pc_scene *sc;
     double x[3];

@@ -142,6 +142,13 @@ static void test_extent_and_reframe(void **state) {
     assert_int_equal(at(c, 260, 170), 0);        /* the middle, behind it: absent */
     assert_int_equal(at(c, 360, 170), 14);
     assert_int_equal(at(c, 260, 95), 12);        /* the dot at (320, 90) -> (260, 95) */
+    /* PSET dots: hidden ones left out even when the hidden lines are dashed */
+    double front[3] = {-50, 0, 120}, back[3] = {50, 0, -120};
+    assert_int_equal(pc_scene_add_dot(sc, front, 10), PC_OK);
+    assert_int_equal(pc_scene_add_dot(sc, back, 11), PC_OK);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_DASHED), PC_OK);
+    assert_int_equal(at(c, 235, 170), 10);       /* (270, 240) -> (235, 170) */
+    assert_int_not_equal(at(c, 285, 170), 11);   /* (370, 240) -> (285, 170): hidden */
     pc_canvas_free(c);
     pc_scene_free(sc);
     pc_surface_release(s);

@@ -95,6 +95,19 @@ os.remove(pout)
 check.eq((ppx(150, 240) ~= 0 and "#" or ".") .. (ppx(320, 240) ~= 0 and "#" or ".") ..
   (ppx(490, 240) ~= 0 and "#" or "."), "#.#", "the path's middle behind the sphere is left out")
 
+-- pset() with a 3-D point too: the dot behind the sphere is left out, the one in front drawn
+screen(12)
+camera(f, { hidden = "dashed" })
+pset(P(0.5, 0, -1.5), 14)    -- behind: at (370, 240)
+pset(P(-0.5, 0, 1.5), 14)    -- in front: at (270, 240)
+sph:wireframe { nu = 0, nv = 0 }
+pout = os.tmpname() .. ".ppm"
+save(pout)
+ppx = ppm(pout)
+os.remove(pout)
+check.eq(ppx(370, 240), 0, "a dot behind the sphere is left out")
+check.eq(ppx(270, 240) ~= 0, true, "a dot in front of it is drawn")
+
 -- fit{} sees the scene through the camera: a line drawn small in a corner fills the view
 -- (10 px in), and the sphere still hides its middle
 screen(12)
