@@ -64,7 +64,8 @@ enum { PC_ANCHOR_C, PC_ANCHOR_N, PC_ANCHOR_NE, PC_ANCHOR_E, PC_ANCHOR_SE, PC_ANC
        PC_ANCHOR_AUTO   /* pc_text: placed when the picture is written (layout.h) */ };
 /* A TEXT op's flags: the anchor (the low 4 bits), PC_TEXT_AUTO while an automatic label waits
  * to be placed, PC_TEXT_PLACED on one placed (in the copy the writers get, layout.h). */
-enum { PC_TEXT_AUTO = 0x80, PC_TEXT_PLACED = 0x40, PC_TEXT_ANCHOR = 0x0f };
+enum { PC_TEXT_AUTO = 0x80, PC_TEXT_PLACED = 0x40, PC_TEXT_ANCHOR = 0x0f,
+       PC_TEXT_DEVICE = 0x20   /* placed in device pixels (a caption): framing leaves it */ };
 
 /* The largest attribute: true colours take 256 .. PC_MAX_ATTR. */
 #define PC_MAX_ATTR 65535

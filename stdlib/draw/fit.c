@@ -78,6 +78,7 @@ static int gather(const pc_canvas *c, items *it) {
             break;
         case PC_OP_TEXT: {
             double w, h, X = nearbyint(op->x2), Y = nearbyint(op->y2);
+            if (op->flags & PC_TEXT_DEVICE) break;   /* not framed: it stays where it is */
             if (pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK) break;
             if (op->flags & PC_TEXT_AUTO) {   /* not placed yet: room for it on any side */
                 double gx = w + PC_FIT_LABEL_GAP, gy = h + PC_FIT_LABEL_GAP;
@@ -253,6 +254,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
         s[op->count] = 0;
         int anchor = op->flags & PC_TEXT_ANCHOR, st;
         fmap(f, op->x2, op->y2, &a, &b);
+        if (op->flags & PC_TEXT_DEVICE) a = op->x2, b = op->y2;   /* in device pixels: kept */
         if (op->flags & PC_TEXT_AUTO) {
             st = pc_text(c, a, b, s, PC_ANCHOR_AUTO, 0, (int)op->rx, op->color);
         } else {   /* the cell box keeps its offset from the point, in pixels */
@@ -263,7 +265,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
                 pc_op *t = &c->ops[c->nops - 1];
                 t->x2 = a;
                 t->y2 = b;
-                t->flags = (uint8_t)anchor;
+                t->flags = (uint8_t)(anchor | (op->flags & PC_TEXT_DEVICE));
             }
         }
         free(s);
@@ -335,8 +337,23 @@ static int framing(pc_canvas *c, double margin, int aspect, frame *f, int *st) {
         free(it.v);
         return 0;   /* nothing drawn: nothing to frame */
     }
-    const pc_rect *v = &c->view;
+    pc_rect vv = c->view;   /* less the bands that captions (device text) take */
+    for (size_t i = 0; i < c->nops; i++) {
+        const pc_op *op = &c->ops[i];
+        double w, h;
+        if (op->kind != PC_OP_TEXT || !(op->flags & PC_TEXT_DEVICE) ||
+            pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK)
+            continue;
+        if (op->y1 + h / 2 > (vv.y0 + vv.y1) / 2.0) vv.y1 = (int)fmin(vv.y1, floor(op->y1) - 1);
+        else vv.y0 = (int)fmax(vv.y0, ceil(op->y1 + h));
+    }
+    const pc_rect *v = &vv;
     double roomx = v->x1 - v->x0 - 2 * margin, roomy = v->y1 - v->y0 - 2 * margin;
+    if (!(roomy > 0)) {
+        free(it.v);
+        *st = pc_fail(c, "fit: the captions leave no room for the figure");
+        return 0;
+    }
     double cap = 1e6;
     double sx = largest_scale(&it, 0, roomx, cap), sy = largest_scale(&it, 1, roomy, cap);
     if (aspect == PC_FIT_EQUAL) sx = sy = fmin(sx, sy);

@@ -422,6 +422,7 @@ static int l_caption(lua_State *L) {
     double wx, wy;
     pc_screen_to_world(c, c->width / 2.0, top ? 0 : c->height - 1, &wx, &wy);
     int st = pc_text(c, wx, wy, a[0].s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color_of(&a[2]));
+    if (st == PC_OK) c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;   /* framing leaves it */
     c->view = v;
     c->view_screen = vs;
     return check(L, c, st);
@@ -446,7 +447,9 @@ static int l_text(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     double x = a[1].x, y = a[2].x;
     if (a[4].n == 1) pc_screen_to_world(c, x, y, &x, &y);   /* device pixels, whatever the window */
-    return check(L, c, pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5])));
+    int st = pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5]));
+    if (st == PC_OK && a[4].n == 1) c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;   /* not framed */
+    return check(L, c, st);
 }
 
 /* ---- axes, graphs, legends ------------------------------------------------------------------ */

@@ -165,6 +165,28 @@ static void test_fit_keeps_marks(void **state) {
     pc_canvas_free(c);
 }
 
+/* A caption (text in device pixels) stays where it was put, and the figure is framed above
+ * it, clear of its band. */
+static void test_figure_frames_captions(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    c->figure.on = c->figure.frame = 1;
+    pc_line(c, 0, 0, 0, 3, 15);   /* world units: a tall segment would fill the height */
+    double wx, wy;
+    pc_screen_to_world(c, 320, 479, &wx, &wy);
+    assert_int_equal(pc_text(c, wx, wy, "caption", PC_ANCHOR_N, 3, 1, 15), PC_OK);
+    c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;
+    const pc_op *t0 = &c->ops[c->nops - 1];
+    const pc_canvas *r = pc_layout_resolve(c);
+    assert_non_null(r);
+    const pc_op *l = first_of(r, PC_OP_LINE), *t = first_of(r, PC_OP_TEXT);
+    assert_true(t->x1 == t0->x1 && t->y1 == t0->y1);                 /* the caption kept */
+    assert_true(fmax(l->y1, l->y2) <= t->y1 - 1 - PC_FIT_MARGIN + 1e-9); /* framed above it */
+    assert_true(fmin(l->y1, l->y2) >= PC_FIT_MARGIN - 1e-9);
+    pc_layout_release(c, r);
+    pc_canvas_free(c);
+}
+
 /* An automatic label in a framed figure: its box stays inside whatever side it takes. */
 static void test_figure_frames_labels(void **state) {
     (void)state;
@@ -192,6 +214,7 @@ int main(void) {
         cmocka_unit_test(test_figure_frames),
         cmocka_unit_test(test_fit_keeps_marks),
         cmocka_unit_test(test_figure_frames_labels),
+        cmocka_unit_test(test_figure_frames_captions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
