@@ -130,6 +130,8 @@ void pc_canvas_detach(pc_canvas *c) {
     c->attach = NULL;
     c->attach_resolve = NULL;
     c->attach_drop = NULL;
+    c->attach_extent = NULL;
+    c->attach_frame = NULL;
 }
 
 void pc_canvas_free(pc_canvas *c) {
@@ -264,6 +266,12 @@ void pc_reset_cursor(pc_canvas *c) {
     pc_screen_to_world(c, sx, sy, &c->last_x, &c->last_y);
 }
 
+/* A figure{} framed to its content (layout.h) has world units with y up and no window yet:
+ * the screen is the world mirrored, and the writers frame it. */
+int pc_figure_frames(const pc_canvas *c) {
+    return c->figure.on && c->figure.frame && !c->has_window && !c->screen_pixels;
+}
+
 void pc_world_to_screen(const pc_canvas *c, double wx, double wy, double *sx, double *sy) {
     const pc_rect *v = &c->view;
     if (c->has_window) {
@@ -274,10 +282,10 @@ void pc_world_to_screen(const pc_canvas *c, double wx, double wy, double *sx, do
             *sy = v->y0 + (c->wy2 - wy) * (v->y1 - v->y0) / (c->wy2 - c->wy1);
     } else if (c->view_screen) {
         *sx = wx;
-        *sy = wy;
+        *sy = pc_figure_frames(c) ? -wy : wy;
     } else {
         *sx = wx + v->x0;
-        *sy = wy + v->y0;
+        *sy = (pc_figure_frames(c) ? -wy : wy) + v->y0;
     }
 }
 
@@ -292,10 +300,10 @@ void pc_screen_to_world(const pc_canvas *c, double sx, double sy, double *wx, do
             *wy = c->wy2 - (h ? (sy - v->y0) * (c->wy2 - c->wy1) / h : 0);
     } else if (c->view_screen) {
         *wx = sx;
-        *wy = sy;
+        *wy = pc_figure_frames(c) ? -sy : sy;
     } else {
         *wx = sx - v->x0;
-        *wy = sy - v->y0;
+        *wy = pc_figure_frames(c) ? v->y0 - sy : sy - v->y0;
     }
 }
 

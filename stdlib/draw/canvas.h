@@ -51,7 +51,11 @@ enum { PC_ARC_FULL = 1, PC_ARC_RADIUS0 = 2, PC_ARC_RADIUS1 = 4 };
  * it belongs to (all three points of a cubic are tagged CUBIC). */
 enum { PC_PATH_MOVE, PC_PATH_LINE, PC_PATH_CUBIC };
 enum { PC_PATH_CLOSED = 1 };
-/* The fill rules of a filled path (as SVG's fill-rule). */
+/* A PATH or FILLPATH op drawn at a size in pixels round an anchor (a marker, an arrow head,
+ * an angle mark, equal-length ticks): x1, y1 hold the anchor, and framing (pc_fit) moves the
+ * anchor and keeps the shape's size, mirroring it with the figure. */
+enum { PC_OP_RIGID = 0x80 };
+/* The fill rules of a filled path (as SVG's fill-rule), in the low bit of its flags. */
 enum { PC_FILL_NONZERO = 0, PC_FILL_EVENODD = 1 };
 
 /* Where text goes relative to its point: the side of the point (NE: above right). */
@@ -60,7 +64,8 @@ enum { PC_ANCHOR_C, PC_ANCHOR_N, PC_ANCHOR_NE, PC_ANCHOR_E, PC_ANCHOR_SE, PC_ANC
        PC_ANCHOR_AUTO   /* pc_text: placed when the picture is written (layout.h) */ };
 /* A TEXT op's flags: the anchor (the low 4 bits), PC_TEXT_AUTO while an automatic label waits
  * to be placed, PC_TEXT_PLACED on one placed (in the copy the writers get, layout.h). */
-enum { PC_TEXT_AUTO = 0x80, PC_TEXT_PLACED = 0x40, PC_TEXT_ANCHOR = 0x0f };
+enum { PC_TEXT_AUTO = 0x80, PC_TEXT_PLACED = 0x40, PC_TEXT_ANCHOR = 0x0f,
+       PC_TEXT_DEVICE = 0x20   /* placed in device pixels (a caption): framing leaves it */ };
 
 /* The largest attribute: true colours take 256 .. PC_MAX_ATTR. */
 #define PC_MAX_ATTR 65535
@@ -90,6 +95,9 @@ typedef struct {
     double dpi;             /* raster outputs; 0: 96 */
     double size;            /* label size in pt; 0: 10 */
     char font[64];          /* "": serif */
+    int frame;              /* 1: the script's figure{} (not the command line's --print):
+                               without a window its coordinates are world units, y up, and
+                               the picture is framed to what is drawn when it is written */
 } pc_figure;
 
 /* A drawing operation in screen coordinates (fractional, before rounding).  The header is
@@ -122,6 +130,10 @@ typedef struct { int x0, y0, x1, y1; } pc_rect;
 /* A VIEW in force for a run of ops: ops[first ..] up to the next clip's first.  Recorded in
  * the order of the ops, so the firsts increase strictly (a clip no op used is replaced). */
 typedef struct { pc_rect r; size_t first; } pc_clip;
+
+/* A point of a picture's extent and the box round it in pixels (layout.h: pc_fit). */
+typedef void (*pc_extent_fn)(void *ctx, double x, double y, double dx0, double dy0, double dx1,
+                             double dy1);
 
 typedef struct pc_canvas {
     int width, height;
@@ -175,6 +187,8 @@ typedef struct pc_canvas {
      * figure's settings, which SCREEN keeps */
     pc_textstyle *tstyles; size_t ntstyles, captstyles;
     pc_figure figure;
+    int screen_pixels;      /* the script chose its screen (SCREEN): its coordinates are that
+                               screen's pixels, so a figure{} is not framed to its content */
 
     int dirty;              /* something drawn since the last save */
     uint64_t version;       /* bumped by every change of the picture (drawing, CLS, PALETTE,
@@ -193,6 +207,11 @@ typedef struct pc_canvas {
      * pc_canvas_free.  NULL: nothing attached. */
     int (*attach_resolve)(void *attach, struct pc_canvas *copy);
     void (*attach_drop)(void *attach);
+    /* What framing (layout.h: pc_fit) needs of it: every point it will draw, in screen
+     * pixels, with the box round it that does not scale (a marker, room for a label); and the
+     * framing itself, x -> sx x + tx, y -> sy y + ty, to draw it through.  NULL: none. */
+    int (*attach_extent)(void *attach, const struct pc_canvas *c, pc_extent_fn put, void *ctx);
+    void (*attach_frame)(void *attach, double sx, double sy, double tx, double ty);
     void *attach;
 } pc_canvas;
 
@@ -212,6 +231,9 @@ void pc_palette_default(pc_rgb *pal, int ncolors);
 
 /* Coordinate mapping: world -> screen (fractional) and back; length along x. */
 void pc_world_to_screen(const pc_canvas *c, double wx, double wy, double *sx, double *sy);
+/* Is c a figure{} framed to its content when written (the script's figure{}, no window, no
+ * SCREEN)?  Its world is then the screen mirrored, y up (layout.h: pc_fit_figure). */
+int pc_figure_frames(const pc_canvas *c);
 void pc_screen_to_world(const pc_canvas *c, double sx, double sy, double *wx, double *wy);
 double pc_world_xscale(const pc_canvas *c);       /* screen pixels per world x unit */
 

@@ -26,8 +26,17 @@ static void put(items *it, double x, double y, double dx0, double dy0, double dx
     it->v[it->n++] = (item){x, y, dx0, dy0, dx1, dy1};
 }
 
-/* Everything drawn as items (CLEAR, the background, is not content). */
+static void put_cb(void *ctx, double x, double y, double dx0, double dy0, double dx1, double dy1) {
+    put(ctx, x, y, dx0, dy0, dx1, dy1);
+}
+
+/* Everything drawn as items (CLEAR, the background, is not content), and what the attached
+ * scene will draw when the picture is written (through the camera). */
 static int gather(const pc_canvas *c, items *it) {
+    if (c->attach_extent) {
+        int st = c->attach_extent(c->attach, c, put_cb, it);
+        if (st != PC_OK) return st;
+    }
     for (size_t i = 0; i < c->nops; i++) {
         const pc_op *op = &c->ops[i];
         switch (op->kind) {
@@ -56,12 +65,27 @@ static int gather(const pc_canvas *c, items *it) {
             }
             break;
         case PC_OP_PATH: case PC_OP_FILLPATH:
+            if (op->flags & PC_OP_RIGID) {   /* its size in pixels round the anchor */
+                double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+                for (uint32_t k = 0; k < op->count; k++) {
+                    double dx = c->pts[op->first + k].x - op->x1, dy = c->pts[op->first + k].y - op->y1;
+                    x0 = fmin(x0, dx); y0 = fmin(y0, dy); x1 = fmax(x1, dx); y1 = fmax(y1, dy);
+                }
+                put(it, op->x1, op->y1, x0, y0, x1, y1);
+                break;
+            }
             for (uint32_t k = 0; k < op->count; k++) put(it, c->pts[op->first + k].x, c->pts[op->first + k].y, 0, 0, 0, 0);
             break;
         case PC_OP_TEXT: {
             double w, h, X = nearbyint(op->x2), Y = nearbyint(op->y2);
+            if (op->flags & PC_TEXT_DEVICE) break;   /* not framed: it stays where it is */
             if (pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK) break;
-            put(it, op->x2, op->y2, op->x1 - X, op->y1 - Y, op->x1 - X + w, op->y1 - Y + h);
+            if (op->flags & PC_TEXT_AUTO) {   /* not placed yet: room for it on any side */
+                double gx = w + PC_FIT_LABEL_GAP, gy = h + PC_FIT_LABEL_GAP;
+                put(it, op->x2, op->y2, -gx, -gy, gx, gy);
+            } else {
+                put(it, op->x2, op->y2, op->x1 - X, op->y1 - Y, op->x1 - X + w, op->y1 - Y + h);
+            }
             break;
         }
         default: break;
@@ -196,15 +220,31 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
             return pc_fail_code(c, PC_ENOMEM, "fit: out of memory");
         }
         size_t nv = 0;
-        for (uint32_t k = 0; k < op->count; k++)
-            fmap(f, o->pts[op->first + k].x, o->pts[op->first + k].y, &xy[2 * k], &xy[2 * k + 1]);
+        int rigid = op->flags & PC_OP_RIGID;
+        double ax = 0, ay = 0;
+        if (rigid) fmap(f, op->x1, op->y1, &ax, &ay);
+        for (uint32_t k = 0; k < op->count; k++) {
+            const pc_xy *q = &o->pts[op->first + k];
+            if (rigid) {   /* moved with its anchor, its size kept */
+                xy[2 * k] = ax + (q->x - op->x1);
+                xy[2 * k + 1] = ay + (q->y - op->y1);
+            } else {
+                fmap(f, q->x, q->y, &xy[2 * k], &xy[2 * k + 1]);
+            }
+        }
         for (uint32_t k = 0; k < op->count; k += o->tags[op->first + k] == PC_PATH_CUBIC ? 3 : 1)
             verbs[nv++] = o->tags[op->first + k];   /* a cubic's three points are one verb */
         int st = op->kind == PC_OP_PATH
             ? pc_path(c, op->count, xy, verbs, nv, op->flags & PC_PATH_CLOSED, op->color)
-            : pc_fill_path(c, op->count, xy, verbs, nv, op->flags, op->color);
+            : pc_fill_path(c, op->count, xy, verbs, nv, op->flags & 1, op->color);
         free(xy);
         free(verbs);
+        if (st == PC_OK && rigid) {   /* still rigid for a later framing */
+            pc_op *t = &c->ops[c->nops - 1];
+            t->flags |= PC_OP_RIGID;
+            t->x1 = ax;
+            t->y1 = ay;
+        }
         return st;
     }
     case PC_OP_TEXT: {
@@ -214,6 +254,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
         s[op->count] = 0;
         int anchor = op->flags & PC_TEXT_ANCHOR, st;
         fmap(f, op->x2, op->y2, &a, &b);
+        if (op->flags & PC_TEXT_DEVICE) a = op->x2, b = op->y2;   /* in device pixels: kept */
         if (op->flags & PC_TEXT_AUTO) {
             st = pc_text(c, a, b, s, PC_ANCHOR_AUTO, 0, (int)op->rx, op->color);
         } else {   /* the cell box keeps its offset from the point, in pixels */
@@ -224,7 +265,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
                 pc_op *t = &c->ops[c->nops - 1];
                 t->x2 = a;
                 t->y2 = b;
-                t->flags = (uint8_t)anchor;
+                t->flags = (uint8_t)(anchor | (op->flags & PC_TEXT_DEVICE));
             }
         }
         free(s);
@@ -253,6 +294,8 @@ static int replay(pc_canvas *c, const frame *f) {
     pc_fill_px(c->pixels, c->paper, (size_t)c->width * c->height);
     c->has_window = 0;
     c->view_screen = 1;
+    int frames = c->figure.frame;
+    c->figure.frame = 0;   /* drawn again in screen pixels, not through a figure's mirror */
     int st = PC_OK;
     size_t k = 0;
     for (size_t i = 0; i < o.nops && st == PC_OK; i++) {
@@ -270,43 +313,84 @@ static int replay(pc_canvas *c, const frame *f) {
     c->view_screen = vs;
     c->has_window = has_window;
     c->pen = pen;
+    c->figure.frame = frames;
     if (st == PC_OK) st = pc_push_clip(c);
     free(o.ops); free(o.dots); free(o.pts); free(o.tags); free(o.spans); free(o.lpx);
     free(o.clips); free(o.text);
     return st;
 }
 
-int pc_fit(pc_canvas *c, double margin, int aspect) {
-    if (!(margin >= 0 && margin < 0.5 * fmin(c->view.x1 - c->view.x0, c->view.y1 - c->view.y0)))
-        return pc_fail(c, "fit: margin must be 0 up to half the view, got %g pixels", margin);
-    if (aspect != PC_FIT_EQUAL && aspect != PC_FIT_FILL) return pc_fail(c, "fit: unknown aspect %d", aspect);
-    items it = {0};
-    int st = gather(c, &it);
-    if (st != PC_OK || it.n == 0) {
-        free(it.v);
-        return st;   /* nothing drawn: nothing to frame */
+/* The frame that puts what c has drawn in its view, margin pixels in;
+ * 0 with *st PC_OK when nothing is drawn. */
+static int framing(pc_canvas *c, double margin, int aspect, frame *f, int *st) {
+    if (!(margin >= 0 && margin < 0.5 * fmin(c->view.x1 - c->view.x0, c->view.y1 - c->view.y0))) {
+        *st = pc_fail(c, "fit: margin must be 0 up to half the view, got %g pixels", margin);
+        return 0;
     }
-    const pc_rect *v = &c->view;
+    if (aspect != PC_FIT_EQUAL && aspect != PC_FIT_FILL) {
+        *st = pc_fail(c, "fit: unknown aspect %d", aspect);
+        return 0;
+    }
+    items it = {0};
+    *st = gather(c, &it);
+    if (*st != PC_OK || it.n == 0) {
+        free(it.v);
+        return 0;   /* nothing drawn: nothing to frame */
+    }
+    pc_rect vv = c->view;   /* less the bands that captions (device text) take */
+    for (size_t i = 0; i < c->nops; i++) {
+        const pc_op *op = &c->ops[i];
+        double w, h;
+        if (op->kind != PC_OP_TEXT || !(op->flags & PC_TEXT_DEVICE) ||
+            pc_text_measure(c, c->text + op->first, op->count, (int)op->rx, &w, &h) != PC_OK)
+            continue;
+        if (op->y1 + h / 2 > (vv.y0 + vv.y1) / 2.0) vv.y1 = (int)fmin(vv.y1, floor(op->y1) - 1);
+        else vv.y0 = (int)fmax(vv.y0, ceil(op->y1 + h));
+    }
+    const pc_rect *v = &vv;
     double roomx = v->x1 - v->x0 - 2 * margin, roomy = v->y1 - v->y0 - 2 * margin;
+    if (!(roomy > 0)) {
+        free(it.v);
+        *st = pc_fail(c, "fit: the captions leave no room for the figure");
+        return 0;
+    }
     double cap = 1e6;
     double sx = largest_scale(&it, 0, roomx, cap), sy = largest_scale(&it, 1, roomy, cap);
     if (aspect == PC_FIT_EQUAL) sx = sy = fmin(sx, sy);
     if (!(sx > 0 && sy > 0)) {
         free(it.v);
-        return pc_fail(c, "fit: the labels alone are larger than the view: nothing can frame them");
+        *st = pc_fail(c, "fit: the labels alone are larger than the view: nothing can frame them");
+        return 0;
     }
     double lox, loy;
     double wx = width_at(&it, 0, sx, &lox), wy = width_at(&it, 1, sy, &loy);
     free(it.v);
     /* centred in the view: the box [lo, lo + w] under s goes to the middle */
-    frame f = {sx, sy, v->x0 + margin + (roomx - wx) / 2 - lox, v->y0 + margin + (roomy - wy) / 2 - loy};
+    *f = (frame){sx, sy, v->x0 + margin + (roomx - wx) / 2 - lox,
+                 v->y0 + margin + (roomy - wy) / 2 - loy};
+    return 1;
+}
+
+int pc_fit(pc_canvas *c, double margin, int aspect) {
+    frame f;
+    int st;
+    if (!framing(c, margin, aspect, &f, &st)) return st;
+    const pc_rect *v = &c->view;
     /* the window that keeps later drawing in this frame: world -> old screen -> f */
     double corner[4];
     for (int k = 0; k < 2; k++) {
         double qx = k ? v->x1 : v->x0, qy = k ? v->y1 : v->y0;
         pc_screen_to_world(c, (qx - f.tx) / f.sx, (qy - f.ty) / f.sy, &corner[2 * k], &corner[2 * k + 1]);
     }
-    int screen = c->has_window ? c->window_screen : 1;
+    int screen = c->has_window ? c->window_screen : !pc_figure_frames(c);   /* y up in a figure */
     if ((st = replay(c, &f)) != PC_OK) return st;
+    if (c->attach_frame) c->attach_frame(c->attach, f.sx, f.sy, f.tx, f.ty);
     return pc_window(c, corner[0], corner[1], corner[2], corner[3], screen);
+}
+
+int pc_fit_figure(pc_canvas *c) {
+    frame f;
+    int st;
+    if (!framing(c, PC_FIT_MARGIN, PC_FIT_EQUAL, &f, &st)) return st;
+    return replay(c, &f);
 }

@@ -41,6 +41,19 @@ static int spath(pc_canvas *c, int n, const v2 *p, int closed, int filled, int c
 
 static int sline(pc_canvas *c, v2 a, v2 b, int color) { return spath(c, 2, (v2[]){a, b}, 0, 0, color); }
 
+/* The paths drawn since op `from` are pixel-sized round `at` (PC_OP_RIGID): framing moves
+ * them with their anchor and keeps their size.  Passes st through. */
+static int rigid(pc_canvas *c, size_t from, v2 at, int st) {
+    for (size_t i = from; st == PC_OK && i < c->nops; i++) {
+        pc_op *op = &c->ops[i];
+        if (op->kind != PC_OP_PATH && op->kind != PC_OP_FILLPATH) continue;
+        op->flags |= PC_OP_RIGID;
+        op->x1 = at.x;
+        op->y1 = at.y;
+    }
+    return st;
+}
+
 /* The side of a point that a label pointing along screen direction d takes. */
 static int anchor_toward(v2 d) {
     double a = atan2(-d.y, d.x);   /* counter-clockwise from east, as seen */
@@ -58,10 +71,18 @@ static int stext(pc_canvas *c, v2 p, const char *text, int anchor, int color) {
 
 /* ---- markers and arrows -------------------------------------------------------------------- */
 
+static int mark_shape(pc_canvas *c, v2 o, int style, double size, int color);
+
 int pc_mark(pc_canvas *c, double x, double y, int style, double size, int color) {
     if (finite_pts(c, "mark", 2, (double[]){x, y}) != PC_OK) return PC_EARG;
     if (!(size >= 1 && size <= 200)) return pc_fail(c, "mark: size must be 1..200 pixels, got %g", size);
-    v2 o = scr(c, x, y), p[32];
+    v2 o = scr(c, x, y);
+    size_t from = c->nops;
+    return rigid(c, from, o, mark_shape(c, o, style, size, color));
+}
+
+static int mark_shape(pc_canvas *c, v2 o, int style, double size, int color) {
+    v2 p[32];
     double r = size / 2;
     switch (style) {
     case PC_MARK_DOT: case PC_MARK_OPEN:
@@ -91,8 +112,9 @@ int pc_arrow_head(pc_canvas *c, double x1, double y1, double x2, double y2, doub
     double l = len2(d);
     if (!(l > 0)) return pc_fail(c, "arrow: the two points coincide: no direction for the head");
     v2 u = mul(d, 1 / l), n = {-u.y, u.x}, base = sub(t, mul(u, len));
-    return spath(c, 3, (v2[]){t, add(base, mul(n, 0.3 * len)), sub(base, mul(n, 0.3 * len))}, 1, 1,
-                 color);
+    size_t from = c->nops;
+    return rigid(c, from, t, spath(c, 3, (v2[]){t, add(base, mul(n, 0.3 * len)), sub(base, mul(n, 0.3 * len))},
+                                   1, 1, color));
 }
 
 int pc_arrow(pc_canvas *c, double x1, double y1, double x2, double y2, int heads, double len,
@@ -103,9 +125,11 @@ int pc_arrow(pc_canvas *c, double x1, double y1, double x2, double y2, int heads
     double l = len2(d);
     if (!(l > 0) && heads) return pc_fail(c, "arrow: the two points coincide: no direction for the head");
     v2 u = l > 0 ? mul(d, 1 / l) : (v2){0, 0};
-    /* the shaft stops inside the head (at two thirds of it) so no pen blunts the tip */
-    v2 s0 = heads & PC_ARROW_START ? add(a, mul(u, fmin(len * 0.66, l / 2))) : a;
-    v2 s1 = heads & PC_ARROW_END ? sub(b, mul(u, fmin(len * 0.66, l / 2))) : b;
+    /* the shaft stops inside the head (at two thirds of it) so no pen blunts the tip; not in
+     * a figure framed when written, whose pixels are not known yet (the head is rigid) */
+    double back = pc_figure_frames(c) ? 0 : fmin(len * 0.66, l / 2);
+    v2 s0 = heads & PC_ARROW_START ? add(a, mul(u, back)) : a;
+    v2 s1 = heads & PC_ARROW_END ? sub(b, mul(u, back)) : b;
     int st = sline(c, s0, s1, color);
     if (st == PC_OK && (heads & PC_ARROW_END)) st = pc_arrow_head(c, x1, y1, x2, y2, len, color);
     if (st == PC_OK && (heads & PC_ARROW_START)) st = pc_arrow_head(c, x2, y2, x1, y1, len, color);
@@ -157,6 +181,7 @@ int pc_angle_mark(pc_canvas *c, double ax, double ay, double ox, double oy, doub
     double th = atan2(fabs(cr), dt);
     v2 u = mul(da, 1 / len2(da)), v = mul(db, 1 / len2(db));
     int st;
+    size_t from = c->nops;
     if (fabs(th - PI / 2) < 1e-9) {   /* the right-angle square, its side 0.7 r */
         double s = 0.7 * r;
         st = spath(c, 3, (v2[]){add(o, mul(u, s)), add(o, add(mul(u, s), mul(v, s))), add(o, mul(v, s))},
@@ -171,6 +196,7 @@ int pc_angle_mark(pc_canvas *c, double ax, double ay, double ox, double oy, doub
         }
         st = spath(c, m + 1, p, 0, 0, color);
     }
+    st = rigid(c, from, o, st);
     v2 w = add(u, v);
     if (len2(w) < 1e-9) w = (v2){-u.y, u.x};
     w = mul(w, 1 / len2(w));
@@ -194,11 +220,12 @@ int pc_ticks(pc_canvas *c, double ax, double ay, double bx, double by, int n, do
     if (!(l > 0)) return pc_fail(c, "ticks: the two points coincide: no segment to mark");
     v2 u = mul(d, 1 / l), nrm = {-u.y, u.x}, m = mul(add(a, b), 0.5);
     int st = PC_OK;
+    size_t from = c->nops;
     for (int i = 0; i < n && st == PC_OK; i++) {
         v2 q = add(m, mul(u, 3.0 * (i - (n - 1) / 2.0)));
         st = sline(c, sub(q, mul(nrm, size / 2)), add(q, mul(nrm, size / 2)), color);
     }
-    return st;
+    return rigid(c, from, m, st);
 }
 
 /* ---- hatching and centre lines ------------------------------------------------------------- */

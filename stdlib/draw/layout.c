@@ -74,7 +74,7 @@ int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box) {
 }
 
 int pc_layout_pending(const pc_canvas *c) {
-    if (c->attach_resolve) return 1;
+    if (c->attach_resolve || pc_figure_frames(c)) return 1;
     for (size_t i = 0; i < c->nops; i++)
         if (c->ops[i].kind == PC_OP_TEXT && (c->ops[i].flags & PC_TEXT_AUTO)) return 1;
     return 0;
@@ -110,21 +110,97 @@ static pc_label *collect(const pc_canvas *c, size_t *n) {
     return lab;
 }
 
-/* The leader of a far label: from the point to the box's nearest point, a pixel short. */
+/* The leader of a far label (label_place.c decided where it goes). */
 static int leader(pc_canvas *c, const pc_label *l, int color) {
-    double qx = fmax(l->box.x0, fmin(l->px, l->box.x1 - 1));
-    double qy = fmax(l->box.y0, fmin(l->py, l->box.y1 - 1));
-    double dx = qx - l->px, dy = qy - l->py, d = hypot(dx, dy);
-    if (d < 4) return PC_OK;
-    double sx = l->px + 2 * dx / d, sy = l->py + 2 * dy / d;   /* clear of the point's mark */
-    return pc_line(c, nearbyint(sx), nearbyint(sy), nearbyint(qx - dx / d), nearbyint(qy - dy / d),
-                   color);
+    double seg[4];
+    if (!pc_label_leader(l, seg)) return PC_OK;
+    return pc_line(c, seg[0], seg[1], seg[2], seg[3], color);
+}
+
+/* ---- the ink mask ----------------------------------------------------------------------- */
+
+typedef struct { uint8_t *m; int w, h; pc_rect clip; } ink_mask;
+
+static void mask_seg(ink_mask *k, double x0, double y0, double x1, double y1) {
+    if (!pc_clip_segment(&x0, &y0, &x1, &y1, k->clip.x0 - 0.5, k->clip.y0 - 0.5, k->clip.x1 + 0.5,
+                         k->clip.y1 + 0.5))
+        return;   /* only the part in its VIEW is walked */
+    double n = ceil(fmax(fabs(x1 - x0), fabs(y1 - y0)));
+    if (!(n < 1e5)) return;
+    for (double i = 0; i <= n; i++) {
+        double t = n > 0 ? i / n : 0;
+        long x = lrint(x0 + t * (x1 - x0)), y = lrint(y0 + t * (y1 - y0));
+        if (x >= k->clip.x0 && x <= k->clip.x1 && y >= k->clip.y0 && y <= k->clip.y1 &&
+            x >= 0 && y >= 0 && x < k->w && y < k->h)
+            k->m[(size_t)y * k->w + x] = 1;
+    }
+}
+
+/* A dashed or styled stroke drawn solid into the mask: a reader sees the line through its
+ * gaps, so a label goes no more in a gap than across the dashes. */
+static void mask_dashed(const pc_canvas *r, size_t i, ink_mask *k) {
+    const pc_op *op = &r->ops[i];
+    if (op->pen >= r->npens) return;
+    const pc_stroke *pen = &r->pens[op->pen];
+    if (!pen->ndash && !pen->style) return;
+    k->clip = r->clips[pc_op_clip(r, i)].r;
+    switch (op->kind) {
+    case PC_OP_LINE: mask_seg(k, op->x1, op->y1, op->x2, op->y2); break;
+    case PC_OP_BOX:
+        mask_seg(k, op->x1, op->y1, op->x2, op->y1); mask_seg(k, op->x2, op->y1, op->x2, op->y2);
+        mask_seg(k, op->x2, op->y2, op->x1, op->y2); mask_seg(k, op->x1, op->y2, op->x1, op->y1);
+        break;
+    case PC_OP_ARC: {   /* counter-clockwise as seen, from a0 to a1 (all round when full) */
+        double a0 = op->flags & PC_ARC_FULL ? 0 : op->a0, a1 = op->flags & PC_ARC_FULL ? 2 * 3.141592653589793 : op->a1;
+        if (a1 < a0) a1 += 2 * 3.141592653589793;
+        int n = (int)fmin(4096, fmax(8, (a1 - a0) * fmax(op->rx, op->ry) / 2));
+        for (int j = 0; j < n; j++) {
+            double t0 = a0 + (a1 - a0) * j / n, t1 = a0 + (a1 - a0) * (j + 1) / n;
+            mask_seg(k, op->x1 + op->rx * cos(t0), op->y1 - op->ry * sin(t0), op->x1 + op->rx * cos(t1),
+                     op->y1 - op->ry * sin(t1));
+        }
+        break;
+    }
+    case PC_OP_PATH: {
+        const pc_xy *p = r->pts + op->first;
+        const uint8_t *tag = r->tags + op->first;
+        size_t start = 0;
+        for (size_t j = 1; j < op->count; j++) {
+            if (tag[j] == PC_PATH_MOVE) {
+                if (op->flags & PC_PATH_CLOSED) mask_seg(k, p[j - 1].x, p[j - 1].y, p[start].x, p[start].y);
+                start = j;
+            } else if (tag[j] == PC_PATH_CUBIC && j + 2 < op->count) {
+                pc_xy q[4] = {p[j - 1], p[j], p[j + 1], p[j + 2]};
+                int m = pc_cubic_segments(q, 0.5);
+                pc_xy a = q[0];
+                for (int s = 1; s <= m; s++) {
+                    pc_xy b = pc_cubic_at(q, (double)s / m);
+                    mask_seg(k, a.x, a.y, b.x, b.y);
+                    a = b;
+                }
+                j += 2;
+            } else {
+                mask_seg(k, p[j - 1].x, p[j - 1].y, p[j].x, p[j].y);
+            }
+        }
+        if ((op->flags & PC_PATH_CLOSED) && op->count > 1)
+            mask_seg(k, p[op->count - 1].x, p[op->count - 1].y, p[start].x, p[start].y);
+        break;
+    }
+    default: break;
+    }
 }
 
 static int resolve_into(pc_canvas *r) {
     if (r->attach_resolve) {   /* a 3-D scene first: the labels then avoid its strokes */
         int st = r->attach_resolve(r->attach, r);
         if (st != PC_OK) return st;
+        r->attach_extent = NULL;   /* drawn: its strokes are in the list now */
+    }
+    if (pc_figure_frames(r)) {   /* then the frame of everything, the scene included */
+        int st = pc_fit_figure(r);
+        if (st != PC_OK) return st;
+        r->figure.frame = 0;   /* framed: the copy draws in screen pixels from here on */
     }
     size_t n;
     pc_label *lab = collect(r, &n);
@@ -135,6 +211,8 @@ static int resolve_into(pc_canvas *r) {
     int st = mask ? PC_OK : PC_ENOMEM;
     if (st == PC_OK) {
         for (size_t i = 0; i < npx; i++) mask[i] = r->pixels[i] != r->paper;
+        ink_mask k = {mask, r->width, r->height, {0, 0, 0, 0}};
+        for (size_t i = 0; i < r->nops; i++) mask_dashed(r, i, &k);
         st = pc_inkmap_init(&ink, mask, r->width, r->height);
     }
     free(mask);
@@ -161,6 +239,14 @@ static int resolve_into(pc_canvas *r) {
     return st;
 }
 
+/* A copy of n elements (room for one at least, so NULL only means no memory). */
+static void *dup(const void *p, size_t n, size_t elem, size_t *cap) {
+    void *q = malloc((n ? n : 1) * elem);
+    if (q && n) memcpy(q, p, n * elem);
+    *cap = n ? n : 1;
+    return q;
+}
+
 const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     if (!pc_layout_pending(c)) return c;
     pc_canvas *r = malloc(sizeof *r);
@@ -179,7 +265,15 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     r->captext = c->ntext + 64;
     r->text = malloc(r->captext);
     r->attach_drop = NULL;   /* the attachment stays the canvas's */
-    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text) {
+    int own = pc_figure_frames(c);   /* framing draws everything again: the copy owns it all */
+    if (own) {
+        r->dots = dup(c->dots, c->ndots, sizeof *c->dots, &r->capdots);
+        r->spans = dup(c->spans, c->nspans, sizeof *c->spans, &r->capspans);
+        r->lpx = dup(c->lpx, c->nlpx, sizeof *c->lpx, &r->caplpx);
+        r->clips = dup(c->clips, c->nclips, sizeof *c->clips, &r->capclips);
+    }
+    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text ||
+        (own && (!r->dots || !r->spans || !r->lpx || !r->clips))) {
         pc_layout_release(c, r);
         return NULL;
     }
@@ -194,6 +288,8 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
         return NULL;
     }
     r->attach_resolve = NULL;   /* resolved: nothing is pending in the copy */
+    r->attach_extent = NULL;
+    r->attach_frame = NULL;
     r->attach = NULL;
     return r;
 }
@@ -207,6 +303,11 @@ void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved) {
     free(r->tags);
     free(r->pens);
     free(r->text);
+    /* what framing drew again is the copy's own; else shared with the canvas */
+    if (r->dots != c->dots) free(r->dots);
+    if (r->spans != c->spans) free(r->spans);
+    if (r->lpx != c->lpx) free(r->lpx);
+    if (r->clips != c->clips) free(r->clips);
     free(r);
 }
 

@@ -73,6 +73,19 @@ int pc_place_labels(pc_label *lab, size_t n, const pc_inkmap *ink, double width,
  * pc_text places its cell box for a pixel point (text.c's rule). */
 pc_box2 pc_label_box(double px, double py, double w, double h, int anchor, double gap);
 
+/* The room a label keeps clear round its box, for obstacles, the edge and other labels: the
+ * box measured is the font's cell (or Pango's), but a reader's estimate of the glyphs may be
+ * taller (an ascent of 0.92 em reaches 2.7 px over the VGA cell's 12 rows above the baseline,
+ * and a stroke on pixel row Y is drawn at Y + 0.5) and wider (0.6 em a character against the
+ * cell's 0.5), so a pixel of slack on every side, three above and a fifth more to the right. */
+static inline pc_box2 pc_label_clear(pc_box2 b) {
+    return (pc_box2){b.x0 - 1, b.y0 - 3, b.x1 + 1 + 0.2 * (b.x1 - b.x0), b.y1 + 1};
+}
+
+/* The leader line of a far label l (its box placed): from 2 px off its point to a pixel short
+ * of its clearance, in whole pixels; 0 when the box is too near to need one. */
+int pc_label_leader(const pc_label *l, double seg[4]);
+
 /* Do two boxes overlap (share any pixel)? */
 static inline int pc_box2_overlap(pc_box2 a, pc_box2 b) {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
@@ -109,5 +122,14 @@ int pc_drawn_extent(const pc_canvas *c, pc_box2 *out);
  * whatever the scale. */
 enum { PC_FIT_EQUAL, PC_FIT_FILL };
 int pc_fit(pc_canvas *c, double margin, int aspect);
+
+/* A pending automatic label reserves its box on every side of its point, this far off, so
+ * that wherever placement puts it, it stays in the frame. */
+#define PC_FIT_LABEL_GAP 3.0
+/* The framing a figure{} gets by default (pc_figure_frames, canvas.h): what is drawn (in
+ * world units, y up, the screen mirrored) framed at equal units PC_FIT_MARGIN pixels in from
+ * the view's edges.  The writers' copy is framed (pc_layout_resolve), never the canvas. */
+#define PC_FIT_MARGIN 12.0
+int pc_fit_figure(pc_canvas *c);
 
 #endif

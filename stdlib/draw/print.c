@@ -439,7 +439,7 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
             break;
         case PC_OP_FILLPATH:
             path_of(&w, op, 1);
-            b->fill(b->self, rgb(&w, op->color), op->flags == PC_FILL_EVENODD);
+            b->fill(b->self, rgb(&w, op->color), (op->flags & 1) == PC_FILL_EVENODD);
             break;
         case PC_OP_TEXT: draw_text(&w, op); break;
         }

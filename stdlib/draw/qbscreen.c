@@ -35,7 +35,9 @@ int pc_canvas_set_mode(pc_canvas *c, int mode) {
     pc_mode_info m;
     if (pc_mode_info_of(mode, &m) != PC_OK)
         return pc_fail(c, "screen: mode %d is not one of 1, 2, 7, 8, 9, 12, 13", mode);
-    return pc_canvas_reset(c, m.width, m.height, m.ncolors);
+    int st = pc_canvas_reset(c, m.width, m.height, m.ncolors);
+    if (st == PC_OK) c->screen_pixels = 1;   /* a QBasic screen: pixel coordinates */
+    return st;
 }
 
 /* ---- PAINT tiles ------------------------------------------------------------------------ */

@@ -6,12 +6,14 @@
 #include <string.h>
 #include "canvas_internal.h"
 #include "furniture.h"
+#include "layout.h"
 #include "scene.h"
 
 typedef struct {
     size_t first, n;        /* into pts (3 numbers each) */
     int color, pen;
-    int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale */
+    int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale;
+                               a dot (3) */
     double size;
     char *text;             /* a label's text (owned) */
 } stroke;
@@ -100,6 +102,10 @@ int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size,
     return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 1, style, size, NULL});
 }
 
+int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color) {
+    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 3, 0, 0, NULL});
+}
+
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
                        int color) {
     size_t n = strlen(utf8);
@@ -128,6 +134,34 @@ static int project(const pc_scene *sc, const double *x, double *sx, double *sy) 
     *sx = o[0] / o[2];
     *sy = o[1] / o[2];
     return isfinite(*sx) && isfinite(*sy);
+}
+
+int pc_scene_extent(const pc_scene *sc, const pc_canvas *c, pc_extent_fn put, void *ctx) {
+    for (size_t i = 0; i < sc->nst; i++) {
+        const stroke *s = &sc->st[i];
+        for (size_t k = 0; k < s->n; k++) {
+            double sx, sy, w = 0, h = 0, r = 0;
+            if (!project(sc, sc->pts + 3 * (s->first + k), &sx, &sy)) continue;
+            if (s->mark == 1) r = s->size / 2;
+            if (s->mark == 2) {   /* a label: its box on any side, PC_FIT_LABEL_GAP off */
+                int st = pc_text_measure(c, s->text, strlen(s->text), (int)s->size, &w, &h);
+                if (st != PC_OK) return st;
+                put(ctx, sx, sy, -w - PC_FIT_LABEL_GAP, -h - PC_FIT_LABEL_GAP, w + PC_FIT_LABEL_GAP,
+                    h + PC_FIT_LABEL_GAP);
+                continue;
+            }
+            put(ctx, sx, sy, -r, -r, r, r);
+        }
+    }
+    return PC_OK;
+}
+
+void pc_scene_reframe(pc_scene *sc, double sx, double sy, double tx, double ty) {
+    pc_map *f = &sc->screen;   /* rows x, y, w of a 3 -> 2 map: x' = sx x + tx w */
+    for (int j = 0; j < 4; j++) {
+        PC_MAP_AT(f, 0, j) = sx * PC_MAP_AT(f, 0, j) + tx * PC_MAP_AT(f, 2, j);
+        PC_MAP_AT(f, 1, j) = sy * PC_MAP_AT(f, 1, j) + ty * PC_MAP_AT(f, 2, j);
+    }
 }
 
 /* A run of screen points being gathered, drawn as one path when it ends. */
@@ -247,6 +281,11 @@ int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode) {
             pc_screen_to_world(c, sx, sy, &wx, &wy);
             if (vis || mode == PC_HIDDEN_SHOW)
                 st = pc_text(c, wx, wy, s->text, s->style, 3, (int)s->size, s->color);
+            continue;
+        }
+        if (s->mark == 3) {   /* a dot: only where it is seen */
+            pc_screen_to_world(c, sx, sy, &wx, &wy);
+            if (vis || mode == PC_HIDDEN_SHOW) st = pc_pset(c, wx, wy, s->color);
             continue;
         }
         if (!vis && mode != PC_HIDDEN_SHOW) {

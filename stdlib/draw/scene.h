@@ -30,6 +30,10 @@ int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8
 /* A marker (furniture.h's styles) of size pixels at a 3-D point. */
 int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color);
 
+/* A dot (PSET's pixel) at a 3-D point: left out where it is hidden (unless PC_HIDDEN_SHOW),
+ * since a pixel has no dashes. */
+int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color);
+
 /* A label of a 3-D point: written when the scene is drawn if its point is seen (always with
  * PC_HIDDEN_SHOW), on side `anchor` (PC_ANCHOR_AUTO: placed with the other labels). */
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
@@ -40,6 +44,14 @@ int pc_scene_visible(const pc_scene *sc, const double x[3]);
 /* The number of surfaces and strokes gathered. */
 size_t pc_scene_nsurfaces(const pc_scene *sc);
 size_t pc_scene_nstrokes(const pc_scene *sc);
+
+/* Every point the scene draws, on the screen (canvas.h's pc_extent_fn): the vertices of its
+ * strokes (a straight segment in space is one on the screen), its markers with their size,
+ * its labels with room for their box (measured through c) on any side.  For framing. */
+int pc_scene_extent(const pc_scene *sc, const pc_canvas *c, pc_extent_fn put, void *ctx);
+/* Draw the scene through a framing from now on: its screen x -> sx x + tx, y -> sy y + ty
+ * (sx, sy > 0; the depth order does not change). */
+void pc_scene_reframe(pc_scene *sc, double sx, double sy, double tx, double ty);
 
 /* Draw every stroke onto c, its visibility sampled 3 px apart on the screen and each change
  * found by bisection (to 1/1024 of the step): seen runs as paths in

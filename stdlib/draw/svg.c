@@ -1011,7 +1011,7 @@ static void emit_fillpath(svgw *w, const pc_op *op) {
     if (!path_near_clip(p, op->count, clip, MARGIN)) return;
     open_el(w, "path");
     color_attr(w, "fill", op->color);
-    if (op->flags == PC_FILL_EVENODD) fputs(" fill-rule=\"evenodd\"", w->out);
+    if ((op->flags & 1) == PC_FILL_EVENODD) fputs(" fill-rule=\"evenodd\"", w->out);
     fputs(" shape-rendering=\"crispEdges\"", w->out);
     d_begin(w);
     int far = 0;

@@ -254,7 +254,7 @@ static int l_screen(lua_State *L) {
     }
     single_page(b);
     int rc = pc_canvas_reset(b->c, m.width, m.height, m.ncolors);
-    if (rc == PC_OK) b->npages = m.pages;
+    if (rc == PC_OK) b->npages = m.pages, b->c->screen_pixels = 1;   /* pixel coordinates */
     return check(L, b->c, rc);
 }
 
@@ -301,7 +301,10 @@ static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
     pc_canvas *c = canvas(L);
     return check(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
-static int l_pset(lua_State *L) { return dot(L, pc_pset); }
+static int l_pset(lua_State *L) {
+    if (pcl_scene_pset(L)) return 0;   /* a 3-D point into the camera's scene (pcl_scene.h) */
+    return dot(L, pc_pset);
+}
 static int l_preset(lua_State *L) { return dot(L, pc_preset); }
 
 /* LINE's style: "b" (box) or "bf" (filled box), any case; then QBasic's 16-bit pattern,
@@ -576,6 +579,8 @@ static int l_path(lua_State *L) {
     size_t n = (size_t)a[0].n;
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
     const double *xy = a[0].list;
+    /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
+    if (!a[4].present && !heads && pcl_scene_path(L, closed, color)) return 0;
     if (!a[4].present) {
         check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
         if ((heads & PC_ARROW_END) && n >= 2)

@@ -52,6 +52,7 @@ static int l_figure(lua_State *L) {
         strcpy(f.font, a[4].s);
     }
     if (a[5].present) f.size = a[5].x;
+    f.frame = 1;   /* a figure of its own: framed to its content when it sets no window */
     if (pc_figure_set(c, &f) != PC_OK) {   /* the core's message, its "figure: " once */
         const char *m = pc_canvas_error(c);
         return pcl_fail(L, "%s", strncmp(m, "figure: ", 8) ? m : m + 8);
@@ -85,7 +86,7 @@ void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *k) {
 
 static const pcl_fn fns[] = {
     PCL_FN("figure", l_figure, figure_args, NULL,
-           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt."),
+           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt. Without a window or a screen() the coordinates are world units with y up and the figure is framed to what is drawn, at true shape."),
     PCL_END};
 
 void pcl_open_figure(lua_State *L) { pcl_register(L, -1, fns, 0); }

@@ -128,6 +128,19 @@ static int set_resolve(void *p, pc_canvas *copy) {
     return st;
 }
 
+static int set_extent(void *p, const pc_canvas *c, pc_extent_fn put, void *ctx) {
+    scene_set *set = p;
+    int st = PC_OK;
+    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_extent(set->sc[i], c, put, ctx);
+    return st;
+}
+
+/* fit{} moved the picture: the scenes are drawn through the same framing */
+static void set_frame(void *p, double sx, double sy, double tx, double ty) {
+    scene_set *set = p;
+    for (size_t i = 0; i < set->n; i++) pc_scene_reframe(set->sc[i], sx, sy, tx, ty);
+}
+
 static void set_drop(void *p) {
     scene_set *set = p;
     for (size_t i = 0; i < set->n; i++) pc_scene_free(set->sc[i]);
@@ -158,6 +171,8 @@ pc_scene *pcl_scene(lua_State *L) {
         c->attach = set;
         c->attach_resolve = set_resolve;
         c->attach_drop = set_drop;
+        c->attach_extent = set_extent;
+        c->attach_frame = set_frame;
     }
     size_t n = set->n;
     if (n && set->mode[n - 1] == mode && !memcmp(&set->map[n - 1], &scr, sizeof scr)) return set->sc[n - 1];
@@ -216,6 +231,38 @@ int pcl_scene_line(lua_State *L) {
     if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
     pc_canvas *c = pcl_active_canvas(L);
     int st = pc_scene_add_polyline(sc, 2, ab, NULL, pcl_optcolor(L, 3, c), c->pen);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
+int pcl_scene_pset(lua_State *L) {
+    double x[3];
+    pc_scene *sc;
+    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
+    int st = pc_scene_add_dot(sc, x, pcl_optcolor(L, 2, pcl_active_canvas(L)));
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
+int pcl_scene_path(lua_State *L, int closed, int color) {
+    pc_scene *sc;
+    double x[3];
+    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
+    int is3 = point3(L, -1, x);
+    lua_pop(L, 1);
+    if (!is3 || !(sc = pcl_scene(L))) return 0;
+    size_t n = lua_rawlen(L, 1);   /* the arg layer read them already: n points of one path */
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (n + 1), 0);
+    for (size_t k = 0; k < n; k++) {
+        lua_rawgeti(L, 1, (lua_Integer)k + 1);
+        int ok = point3(L, -1, xyz + 3 * k);
+        lua_pop(L, 1);
+        if (!ok) return lua_pop(L, 1), 0;   /* not all 3-D points: drawn as usual */
+    }
+    if (closed && n > 1) memcpy(xyz + 3 * n, xyz, 3 * sizeof *xyz), n++;
+    pc_canvas *c = pcl_active_canvas(L);
+    int st = pc_scene_add_polyline(sc, n, xyz, NULL, color, c->pen);
+    lua_pop(L, 1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
 }
@@ -375,6 +422,7 @@ static int l_caption(lua_State *L) {
     double wx, wy;
     pc_screen_to_world(c, c->width / 2.0, top ? 0 : c->height - 1, &wx, &wy);
     int st = pc_text(c, wx, wy, a[0].s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color_of(&a[2]));
+    if (st == PC_OK) c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;   /* framing leaves it */
     c->view = v;
     c->view_screen = vs;
     return check(L, c, st);
@@ -399,7 +447,9 @@ static int l_text(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     double x = a[1].x, y = a[2].x;
     if (a[4].n == 1) pc_screen_to_world(c, x, y, &x, &y);   /* device pixels, whatever the window */
-    return check(L, c, pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5])));
+    int st = pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5]));
+    if (st == PC_OK && a[4].n == 1) c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;   /* not framed */
+    return check(L, c, st);
 }
 
 /* ---- axes, graphs, legends ------------------------------------------------------------------ */
@@ -548,7 +598,7 @@ static const pcl_fn fns[] = {
     PCL_FN("centre_line", l_centre_line, centre_args, NULL,
            "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
     PCL_FN("fit", l_fit, fit_args, NULL,
-           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells included, at equal units on both axes (or each axis filling the view); later drawing follows the new frame."),
+           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame."),
     PCL_FN("caption", l_caption, caption_args, NULL,
            "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
     PCL_FN("axes", l_axes, axes_args, "n",

@@ -18,6 +18,11 @@ int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int co
 /* line(A, B [, colour]) with 3-D points and a scene: adds the segment and returns 1; else 0
  * (the caller draws as usual). */
 int pcl_scene_line(lua_State *L);
+/* pset(P [, colour]) with a 3-D point and a scene: adds the dot and returns 1; else 0. */
+int pcl_scene_pset(lua_State *L);
+/* path(points, {closed =, color =}) with 3-D points and a scene (the arguments read): adds the
+ * polyline and returns 1; else 0 (the caller draws as usual). */
+int pcl_scene_path(lua_State *L, int closed, int color);
 /* label(text, P [, direction [, colour [, scale]]]) with a 3-D point and a scene: the label
  * shows only where its point is seen; returns 1, or 0 for the caller to draw as usual. */
 int pcl_scene_label(lua_State *L);

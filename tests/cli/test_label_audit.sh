@@ -26,4 +26,18 @@ run "$POINTCALC" auto.lua -o auto.svg
 expect_rc 0 "the automatic figure renders"
 run python3 "$audit" --each auto.svg
 expect_in out.txt "labels 5 overlapping_pairs 0 outside 0 crossed 0" "automatic placement passes"
+
+# the print look's SVG (width and height in pt, a viewBox, labels as <tspan> runs): the same
+# faults counted in its own units, and automatic placement passing there too
+run "$POINTCALC" fixed.lua --print -o fixed_print.svg
+expect_rc 0 "the faulty figure in the print look"
+expect_in fixed_print.svg 'width="480.000pt" height="360.000pt" viewBox="0 0 480.000 360.000"' "a print-look SVG"
+run python3 "$audit" fixed_print.svg
+expect_rc 0 "the audit reads the print look"
+# (crossed 0: "on it" keeps its side and gap with its print box, whose halo and the font's
+# leading put the glyphs' tops 2 pt under the line)
+expect_in out.txt "labels 5 overlapping_pairs 1 outside 1 crossed 0" "the print look's faults counted"
+run "$POINTCALC" auto.lua --print -o auto_print.svg
+run python3 "$audit" auto_print.svg
+expect_in out.txt "labels 5 overlapping_pairs 0 outside 0 crossed 0" "automatic placement passes in the print look"
 finish

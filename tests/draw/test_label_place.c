@@ -68,9 +68,10 @@ static void test_never_across_a_line(void **state) {
     assert_int_equal(pc_layout_labels(c, &b, &anchor, &n), PC_OK);
     assert_int_equal(n, 1);
     assert_int_equal(anchor[0], PC_ANCHOR_SE);   /* the next free side in the order NE SE NW SW */
-    /* SE, 3 px off pixel (300, 200): the box's top-left pixel is (303, 203) */
-    assert_int_equal(b[0].x0, 303);
-    assert_int_equal(b[0].y0, 203);
+    /* SE, 8 px off pixel (300, 200): at 3 px its glyphs' ascent (layout.h: pc_label_clear)
+     * would touch the line; the box's top-left pixel is (308, 208) */
+    assert_int_equal(b[0].x0, 308);
+    assert_int_equal(b[0].y0, 208);
     /* and no ink under it in the resolved picture but its own */
     const pc_canvas *r = pc_layout_resolve(c);
     assert_non_null(r);
@@ -82,10 +83,32 @@ static void test_never_across_a_line(void **state) {
             own += r->pixels[y * 640 + x] == 14;
         }
     assert_true(own > 40);   /* the glyphs of "Label" are drawn in the copy */
-    assert_int_equal(c->pixels[205 * 640 + 305], 0);   /* the canvas itself stays pending */
+    assert_int_equal(c->pixels[210 * 640 + 310], 0);   /* the canvas itself stays pending */
     assert_true(pc_layout_pending(c));
     assert_false(pc_layout_pending(r));
     pc_layout_release(c, r);
+    free(b);
+    free(anchor);
+    pc_canvas_free(c);
+}
+
+/* A dashed line is an obstacle through its gaps: a vertical line 5 px right of the point,
+ * 1 px on and 40 off, leaves the NE and SE boxes free of drawn pixels, yet the label goes
+ * to the west of it, clear of its column. */
+static void test_dashes_are_obstacles(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    double dash[2] = {1, 40};
+    assert_int_equal(pc_pen(c, 1, dash, 2), PC_OK);
+    pc_line(c, 305, 160, 305, 240, 15);   /* on at 160, 201; off across 162..200 and 202..240 */
+    pc_pen_reset(c);
+    pc_text(c, 300, 200, "Q", PC_ANCHOR_AUTO, 0, 1, 14);
+    pc_box2 *b;
+    int *anchor;
+    size_t n;
+    assert_int_equal(pc_layout_labels(c, &b, &anchor, &n), PC_OK);
+    assert_true(b[0].x1 + 1 <= 305 || b[0].x0 - 1 > 305);   /* its clearance misses x = 305 */
+    assert_int_equal(anchor[0], PC_ANCHOR_NW);
     free(b);
     free(anchor);
     pc_canvas_free(c);
@@ -178,6 +201,7 @@ static void test_inkmap(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_crowd_of_thirty),
+        cmocka_unit_test(test_dashes_are_obstacles),
         cmocka_unit_test(test_never_across_a_line),
         cmocka_unit_test(test_fixed_kept_and_inside),
         cmocka_unit_test(test_measure_hook),

@@ -113,8 +113,50 @@ static void test_labels(void **state) {
     pc_surface_release(s);
 }
 
+static void extent_put(void *ctx, double x, double y, double dx0, double dy0, double dx1, double dy1) {
+    double *b = ctx;   /* the box of everything: x0, y0, x1, y1 */
+    b[0] = fmin(b[0], x + dx0); b[1] = fmin(b[1], y + dy0);
+    b[2] = fmax(b[2], x + dx1); b[3] = fmax(b[3], y + dy1);
+}
+
+/* The scene's extent is what it draws, through the camera; reframed, it is drawn through the
+ * framing, and its depth order is kept (the line behind the sphere stays hidden). */
+static void test_extent_and_reframe(void **state) {
+    (void)state;
+    int st;
+    pc_map f = screen();
+    pc_scene *sc = pc_scene_new(&f, &st);
+    pc_surface *s = pc_surface_func(3, 0, 2 * M_PI, -M_PI / 2, M_PI / 2, sphere_fn, NULL, NULL, &st);
+    double line[6] = {-200, 0, -150, 200, 0, -150}, dot[3] = {0, 150, 0};
+    assert_int_equal(pc_scene_add_surface(sc, s, 48), PC_OK);
+    assert_int_equal(pc_scene_add_polyline(sc, 2, line, NULL, 14, 0), PC_OK);
+    assert_int_equal(pc_scene_add_mark(sc, dot, PC_MARK_DOT, 6, 12), PC_OK);
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    double b[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+    assert_int_equal(pc_scene_extent(sc, c, extent_put, b), PC_OK);
+    /* the line's ends at x = 120 and 520, the dot's top 3 px above y = 240 - 150 */
+    assert_true(b[0] == 120 && b[2] == 520 && b[1] == 87 && b[3] == 240);
+    pc_scene_reframe(sc, 0.5, 0.5, 100, 50);   /* half size: x -> x/2 + 100 */
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_HIDE), PC_OK);
+    assert_int_equal(at(c, 165, 170), 14);       /* 330 -> 265: beside the sphere, solid */
+    assert_int_equal(at(c, 260, 170), 0);        /* the middle, behind it: absent */
+    assert_int_equal(at(c, 360, 170), 14);
+    assert_int_equal(at(c, 260, 95), 12);        /* the dot at (320, 90) -> (260, 95) */
+    /* PSET dots: hidden ones left out even when the hidden lines are dashed */
+    double front[3] = {-50, 0, 120}, back[3] = {50, 0, -120};
+    assert_int_equal(pc_scene_add_dot(sc, front, 10), PC_OK);
+    assert_int_equal(pc_scene_add_dot(sc, back, 11), PC_OK);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_DASHED), PC_OK);
+    assert_int_equal(at(c, 235, 170), 10);       /* (270, 240) -> (235, 170) */
+    assert_int_not_equal(at(c, 285, 170), 11);   /* (370, 240) -> (285, 170): hidden */
+    pc_canvas_free(c);
+    pc_scene_free(sc);
+    pc_surface_release(s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_extent_and_reframe),
         cmocka_unit_test(test_line_behind_sphere),
         cmocka_unit_test(test_line_in_front),
         cmocka_unit_test(test_labels),

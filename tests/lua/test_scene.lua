@@ -83,6 +83,47 @@ local sq = surface(function(u, v) return P(u, v, 0) end, 0, 1, 0, 1)
 sq:wireframe { nu = 0, nv = 0, boundary = true, color = 13 }
 check.eq(point(370, 240) .. point(420, 190) .. point(370, 140) .. point(320, 190) .. point(370, 190),
   "131313130", "the four edges of the square (320..420, 140..240 px) and not its middle")
+-- path() with 3-D points goes into the scene too: drawn before the sphere, hidden by it
+screen(12)
+camera(f, { hidden = "hide" })
+path({ P(-2, 0, -1.5), P(0, 0, -1.5), P(2, 0, -1.5) }, { color = 14 })
+sph:wireframe { nu = 0, nv = 0 }
+local pout = os.tmpname() .. ".ppm"
+save(pout)
+local ppx = ppm(pout)
+os.remove(pout)
+check.eq((ppx(150, 240) ~= 0 and "#" or ".") .. (ppx(320, 240) ~= 0 and "#" or ".") ..
+  (ppx(490, 240) ~= 0 and "#" or "."), "#.#", "the path's middle behind the sphere is left out")
+
+-- pset() with a 3-D point too: the dot behind the sphere is left out, the one in front drawn
+screen(12)
+camera(f, { hidden = "dashed" })
+pset(P(0.5, 0, -1.5), 14)    -- behind: at (370, 240)
+pset(P(-0.5, 0, 1.5), 14)    -- in front: at (270, 240)
+sph:wireframe { nu = 0, nv = 0 }
+pout = os.tmpname() .. ".ppm"
+save(pout)
+ppx = ppm(pout)
+os.remove(pout)
+check.eq(ppx(370, 240), 0, "a dot behind the sphere is left out")
+check.eq(ppx(270, 240) ~= 0, true, "a dot in front of it is drawn")
+
+-- fit{} sees the scene through the camera: a line drawn small in a corner fills the view
+-- (10 px in), and the sphere still hides its middle
+screen(12)
+local small = map.translate(V(60, 60)) * map.scale({ 10, -10 }) * view   -- 10 px a unit
+camera(small, { hidden = "hide" })
+line(P(-2, 0, -1.5), P(2, 0, -1.5), 14)
+sph:wireframe { nu = 0, nv = 0 }
+fit { margin = 10 }
+local out = os.tmpname() .. ".ppm"
+save(out)
+local px = ppm(out)
+os.remove(out)
+check.eq(px(12, 240) ~= 0 and px(627, 240) ~= 0 and px(8, 240) == 0 and px(631, 240) == 0, true,
+  "the line from x = 10 to 629, the whole view but the margin")
+check.eq(px(320, 240), 0, "its middle still behind the sphere")
+check.eq(px(100, 240) ~= 0, true, "beside the sphere, solid")
 check.err(function() camera(f, { hidden = "maybe" }) end,
   'camera: option \'hidden\' must be "show", "dashed" or "hide", got "maybe"', "bad mode")
 check.err(function() camera(f, { hiden = "hide" }) end,

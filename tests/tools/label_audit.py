@@ -4,9 +4,13 @@ have a drawn stroke passing through them.
 
     label_audit.py [--each] FILE.svg ...
 
-A label's box is its <text>'s cell: from x to x + textLength, and from the baseline up three
-quarters of the font size to a quarter below (the VGA font's 12 of 16 rows above the
-baseline).  A stroke crosses a label when one of its segments (path outlines, lines of
+A label's box is its <text>'s cell: from x to x + textLength (without one, as the print look
+writes its labels, half an em a character), and from the baseline up three quarters of the
+font size to a quarter below (the VGA font's 12 of 16 rows above the baseline).  A label with
+<tspan> runs (math: subscripts smaller and lower) is the union of its runs' boxes, each at its
+own x, y and size.  The picture's size is its viewBox where it has one (the print look: width
+and height in pt), else its width and height without a unit.  A stroke crosses a label when
+one of its segments (path outlines, lines of
 polylines, circles as 32-gons, outlined rectangles), cut to its group's clip rectangle, enters
 the box shrunk by one pixel on every side, so a stroke that only touches the cell's edge does
 not count.  Hidden groups and clip paths' own rectangles are not strokes.  Animated SVGs (with
@@ -82,6 +86,15 @@ def seg_hits_box(s, b):
     return True
 
 
+def length(v):
+    """An SVG length: a number with an optional unit ("226.772pt", "640", "12px"), in the
+    SVG's user units as they are written."""
+    m = re.match(r"\s*(" + NUM + r")", v or "")
+    if not m:
+        raise ValueError("not a length: %r" % v)
+    return float(m.group(1))
+
+
 def tag(e):
     return e.tag.split("}")[-1]
 
@@ -120,15 +133,20 @@ def shapes(e, clip, clips, boxes, segs):
         clip = clips.get(cp[5:-1], clip)
     mine = []
     if t == "text":
-        # a math label is one <text> of <tspan>s (subscripts smaller and lower): its box is
-        # the union of theirs
-        parts = [e] if e.get("x") is not None else [s for s in e if tag(s) == "tspan"]
-        bs = []
-        for s in parts:
-            x, y = float(s.get("x")), float(s.get("y"))
-            fs = float(s.get("font-size", e.get("font-size", "16")))
-            w = float(s.get("textLength", str(0.5 * fs * len(s.text or ""))))
+        # one label: the element's own text and its <tspan> runs (a math label's subscripts are
+        # smaller and lower), each at its x, y (a run without one follows the one before) and
+        # font size; the label's box is the union of theirs
+        runs = [(e, e.text)] + [(r, r.text) for r in e.iter() if r is not e and tag(r) == "tspan"]
+        fs0, bs, x, y = length(e.get("font-size", "16")), [], None, None
+        for r, txt in runs:
+            x = length(r.get("x")) if r.get("x") is not None else x
+            y = length(r.get("y")) if r.get("y") is not None else y
+            if not (txt or "").strip() or x is None or y is None:
+                continue
+            fs = length(r.get("font-size")) if r.get("font-size") else fs0
+            w = length(r.get("textLength")) if r.get("textLength") else 0.5 * fs * len(txt)
             bs.append((x, y - 0.75 * fs, x + w, y + 0.25 * fs))
+            x += w
         if bs:
             boxes.append((min(b[0] for b in bs), min(b[1] for b in bs),
                           max(b[2] for b in bs), max(b[3] for b in bs)))
@@ -160,8 +178,11 @@ def audit(path):
     root = ET.parse(path).getroot()
     if any(tag(e) == "animate" for e in root.iter()):
         return None
-    width = float(root.get("width", "640"))
-    height = float(root.get("height", "480"))
+    vb = root.get("viewBox")
+    if vb:   # the print look: width and height in pt, the drawing in the viewBox's units
+        width, height = [float(v) for v in re.findall(NUM, vb)[2:4]]
+    else:
+        width, height = length(root.get("width", "640")), length(root.get("height", "480"))
     clips = {}
     for e in root.iter():
         if tag(e) == "clipPath":
