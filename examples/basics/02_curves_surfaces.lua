@@ -7,7 +7,9 @@ pen{dash = {4, 3}}
 path({A, B, C, D}, {color = 8})
 pen()
 bezier{A, B, C, D}:draw{color = 14}
-for name, p in pairs{A = A, B = B, C = C, D = D} do
+local points = {A = A, B = B, C = C, D = D}
+for _, name in ipairs{"A", "B", "C", "D"} do   -- a list, not pairs: the same file every run
+  local p = points[name]
   circle(p, 2, 15)
   label(name, p, (name == "A" or name == "D") and "sw" or "n", 15)
 end

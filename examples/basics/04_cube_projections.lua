@@ -9,7 +9,7 @@ local edges = {"AB", "BC", "CD", "DA", "EF", "FG", "GH", "HE", "AE", "BF", "CG",
 
 local function draw_cube(colour, where)
   for _, e in ipairs(edges) do line(cube[e:sub(1, 1)], cube[e:sub(2, 2)], colour) end
-  for name, p in pairs(cube) do label(name, p, where[name] or "ne", 15) end
+  for name in ("ABCDEFGH"):gmatch(".") do label(name, cube[name], where[name] or "ne", 15) end
 end
 
 -- left: isometric, 90 pixels to the unit, y up; the view runs along the diagonal DF, so D

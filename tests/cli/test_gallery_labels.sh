@@ -8,9 +8,9 @@
 . "$(dirname "$0")/lib.sh"
 : "${PC_SOURCE_DIR:?PC_SOURCE_DIR must name the source tree}"
 command -v python3 >/dev/null || { echo "no python3: skipped"; exit 77; }
-MAX_OVERLAPS=3
+MAX_OVERLAPS=0
 MAX_OUTSIDE=0
-MAX_CROSSED=48
+MAX_CROSSED=12
 
 run sh "$PC_SOURCE_DIR/examples/render_gallery.sh" "$POINTCALC" gal
 expect_rc 0 "the gallery renders"
