@@ -168,26 +168,33 @@ local function check_jumps(prog)
   prog.goto_targets = goto_targets
 
   local block_id = 0
+  local trapping = next(prog.handlers) ~= nil
   local path = {}
+  local block_node = {}    -- block id -> the statement owning the block (FOR, IF, SELECT...)
   local label_at, gotos = {}, {}
   local loops = {}
   local cur_proc = nil
   local function copy_path() local c = {}; for i, v in ipairs(path) do c[i] = v end; return c end
   local body
-  local function inside(list, is_fn, loop)
+  local function inside(list, is_fn, loop, node)
     block_id = block_id + 1
     path[#path + 1] = is_fn and ("fn" .. block_id) or block_id
+    block_node[block_id] = node
+    -- under ON ERROR GOTO, the module's blocks are lowered so that an error in a condition,
+    -- a FOR's bounds or a SELECT's value is trapped where it is computed (qbasic_emit)
+    if node and trapping and not cur_proc and not in_region then node.flat = true end
     if loop then loops[#loops + 1] = loop end
     body(list)
     if loop then loops[#loops] = nil end
     path[#path] = nil
   end
   local in_region = false    -- inside a GOSUB subroutine of a procedure
-  local function in_function(list, proc, region)
-    local saved_loops, saved_proc, saved_region = loops, cur_proc, in_region
-    loops, cur_proc, in_region = { "fn" }, proc, region
+  local in_sub = false       -- inside any GOSUB subroutine
+  local function in_function(list, proc, region, sub)
+    local saved_loops, saved_proc, saved_region, saved_sub = loops, cur_proc, in_region, in_sub
+    loops, cur_proc, in_region, in_sub = { "fn" }, proc, region, sub
     inside(list, true)
-    loops, cur_proc, in_region = saved_loops, saved_proc, saved_region
+    loops, cur_proc, in_region, in_sub = saved_loops, saved_proc, saved_region, saved_sub
   end
   local function jump(label, line) gotos[#gotos + 1] = { label = label, path = copy_path(), line = line } end
   local function exit(st)
@@ -210,79 +217,86 @@ local function check_jumps(prog)
   end
   local STMT = {}
   function STMT.label(st)
-    if goto_targets[st.name] then label_at[st.name] = { path = copy_path(), line = st.line } end
+    if goto_targets[st.name] or prog.resume_targets[st.name] then
+      label_at[st.name] = { path = copy_path(), line = st.line }
+    end
   end
   STMT["goto"] = function(st) jump(st.label, st.line) end
   function STMT.on(st)
     if not st.gosub then for _, l in ipairs(st.labels) do jump(l, st.line) end end
   end
   STMT.exit = exit
-  STMT["for"] = function(st) inside(st.body, false, "for") end
-  STMT["while"] = function(st) inside(st.body, false, "while") end
-  STMT["do"] = function(st) inside(st.body, false, "do") end
+  STMT["for"] = function(st) inside(st.body, false, "for", st) end
+  STMT["while"] = function(st) inside(st.body, false, "while", st) end
+  STMT["do"] = function(st) inside(st.body, false, "do", st) end
   function STMT.ifb(st)
-    for _, br in ipairs(st.branches) do inside(br.body) end
-    if st.else_body then inside(st.else_body) end
+    for _, br in ipairs(st.branches) do inside(br.body, false, nil, st) end
+    if st.else_body then inside(st.else_body, false, nil, st) end
   end
   function STMT.select(st)
-    for _, c in ipairs(st.cases) do inside(c.body) end
-    if st.else_body then inside(st.else_body) end
+    for _, c in ipairs(st.cases) do inside(c.body, false, nil, st) end
+    if st.else_body then inside(st.else_body, false, nil, st) end
   end
   function STMT.if1(st)
-    inside(st.then_body)
-    if st.else_body then inside(st.else_body) end
+    inside(st.then_body, false, nil, st)
+    if st.else_body then inside(st.else_body, false, nil, st) end
   end
   function STMT.procdef(st) if st.proc.tree then in_function(st.proc.tree, st.proc) end end
-  function STMT.region(st) in_function(st.body, nil, st.proc ~= nil) end
+  function STMT.region(st) in_function(st.body, nil, st.proc ~= nil, true) end
+  -- a statement of the module that can fail jumps to each RESUME label from where it is
+  local resume_sites = next(prog.resume_targets) ~= nil
   body = function(list)
     for _, st in ipairs(list) do
       local f = STMT[st.k]
       if f then f(st) end
+      if resume_sites and not cur_proc and not in_sub and st.k ~= "label" then
+        for l in pairs(prog.resume_targets) do
+          gotos[#gotos + 1] = { label = l, path = copy_path(), line = st.line, resume = true }
+        end
+      end
     end
   end
   in_function(prog.main, nil)
 
+  -- A GOTO into a block of the same function (Lua's goto cannot enter a block): each block
+  -- between the label and the part of its path the GOTO shares is lowered to labels and
+  -- conditional gotos (node.flat, qbasic_emit), which puts the label in a block the GOTO can
+  -- reach.  Lowering a block only removes it from paths, so the jumps that were fine stay so.
   for _, g in ipairs(gotos) do
     local l = label_at[g.label]
     if not l then
       local def = prog.labels[g.label]
       if not def then qerr("Label not defined", g.line) end
-      qerr("GOTO " .. g.label .. ": jumps into a block or procedure (line " .. def.line
-        .. "); pointcalc translates GOTO only to a label in the same or an enclosing block", g.line)
+      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into a GOSUB subroutine or "
+        .. "another procedure (line " .. def.line .. "); pointcalc translates it only within one "
+        .. "procedure, the main program or one subroutine", g.line)
     end
-    local ok = #l.path <= #g.path
-    if ok then
-      for i = 1, #l.path do if l.path[i] ~= g.path[i] then ok = false break end end
+    local common = 0
+    while common < #l.path and common < #g.path and l.path[common + 1] == g.path[common + 1] do
+      common = common + 1
     end
-    if ok then
-      for i = #l.path + 1, #g.path do
-        if type(g.path[i]) == "string" then ok = false end
-      end
-    end
+    local ok = true
+    for i = common + 1, #g.path do if type(g.path[i]) == "string" then ok = false end end
+    for i = common + 1, #l.path do if type(l.path[i]) == "string" then ok = false end end
     if not ok then
-      qerr("GOTO " .. g.label .. ": jumps into a block or another procedure (line "
-        .. l.line .. "); pointcalc translates GOTO only to a label in the same or an enclosing block",
-        g.line)
+      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into a GOSUB subroutine "
+        .. "or another procedure (line " .. l.line .. "); pointcalc translates it only within "
+        .. "one procedure, the main program or one subroutine", g.line)
     end
+    for i = common + 1, #l.path do block_node[l.path[i]].flat = true end
   end
 end
 
--- RESUME label: the label must be at the top level of the program (where the statement that
--- failed can reach it with a goto)
+-- RESUME label: the label must be in the module (each statement that can fail jumps to it,
+-- check_jumps)
 local function resume_targets(prog)
-  local top = {}
-  for _, st in ipairs(prog.main) do if st.k == "label" then top[st.name] = true end end
   prog.resume_targets = {}
   local function scan(list)
     walk.stmts(list, function(st)
       if st.k == "resume" and st.label then
-        if not prog.labels[st.label] then qerr("Label not defined", st.line) end
-        if not top[st.label] then
-          qerr("RESUME " .. st.label .. ": pointcalc resumes only at a line at the top level of "
-            .. "the program, not inside a block or subroutine", st.line)
-        end
+        local l = prog.labels[st.label]
+        if not l or l.proc then qerr("Label not defined", st.line) end
         prog.resume_targets[st.label] = true
-        prog.goto_targets[st.label] = true
       end
     end)
   end
@@ -293,8 +307,9 @@ end
 function M.control(prog)
   gosub_regions(prog)
   definition_chain(prog)
-  check_jumps(prog)
   resume_targets(prog)
+  check_jumps(prog)
+  for l in pairs(prog.resume_targets) do prog.goto_targets[l] = true end
   -- RESTORE label: the label must exist
   local function restores(list)
     walk.stmts(list, function(st)

@@ -21,7 +21,7 @@ local M = {}
 local value, cond, convert, f32, strip = X.value, X.cond, X.convert, X.f32, X.strip
 
 local label_lua = control.label_lua
-local emit_block
+local emit_block, trapped_code
 
 -- the Lua function of a GOSUB target: the module's, or the procedure's own
 local function gosub_lua(S, label)
@@ -45,18 +45,77 @@ local function returned(proc)
   return proc.result .. ", " .. out
 end
 
--- EXIT FOR / EXIT DO: break from the innermost loop, else a goto past the loop's end
+-- EXIT FOR / EXIT DO: break from the innermost Lua loop, else a goto past the loop's end (a
+-- lowered loop, node.flat, is no Lua loop: break leaves the Lua loop around it)
 local function exit_loop(S, kind)
   for i = #S.loops, 1, -1 do
     local l = S.loops[i]
     if l.kind == kind then
-      if i == #S.loops then return "break" end
+      local inner = true
+      for j = i + 1, #S.loops do if not S.loops[j].flat then inner = false end end
+      if inner and not l.flat then return "break" end
       if not l.exit_label then S.exit_count = S.exit_count + 1; l.exit_label = "exit_" .. S.exit_count end
       return "goto " .. l.exit_label
     end
     if l.kind == "fn" then break end
   end
   error("internal: EXIT outside its loop")
+end
+
+-- A lowered block (node.flat: a GOTO jumps into it, qbasic_control) keeps what it needs
+-- across the jump in locals of its function, declared where the function starts; its labels
+-- are numbered through the program (fl<n>_...)
+local function temp(S)
+  S.temp_count = S.temp_count + 1
+  local name = "_f" .. S.temp_count
+  S.locals[#S.locals + 1] = name
+  return name
+end
+local function flat_id(S)
+  S.flat_count = S.flat_count + 1
+  return "fl" .. S.flat_count .. "_"
+end
+-- code run under the error trap (a program with ON ERROR GOTO: qbasic_rt's trap): RESUME label
+-- jumps from here (qbasic_control made every RESUME label reachable from the module's
+-- statements); block_end: the label past the block whose condition or bounds this code
+-- computes, where RESUME NEXT goes on
+trapped_code = function(S, body, block_end)
+  local code = "trap(function() " .. body .. " end, " .. S.erl .. (block_end and ", true" or "") .. ")"
+  local labels = {}
+  for l in pairs(S.prog.resume_targets) do labels[#labels + 1] = l end
+  if #labels == 0 and not block_end then return code end
+  table.sort(labels)
+  local t = { "do local _r = " .. code .. " if _r then" }
+  if block_end then t[#t + 1] = 'if _r == "next" then goto ' .. block_end .. " end" end
+  if not S.cur_region then
+    for _, l in ipairs(labels) do
+      t[#t + 1] = "if _r == " .. X.lua_string(l) .. " then goto " .. label_lua(l) .. " end"
+    end
+  end
+  t[#t + 1] = "resume_at(_r) end end"
+  return table.concat(t, " ")
+end
+-- in a lowered block: the code that goes to `target` unless the condition c holds (negate:
+-- when it holds); under the trap, the condition is computed into a local first
+local function skip_unless(S, c, target, block_end, negate)
+  if S.trapping and not S.cur_proc then
+    if not S.locals.cond then S.locals.cond = temp(S) end
+    local t = S.locals.cond
+    return trapped_code(S, t .. " = " .. c, block_end) .. " if " .. (negate and "" or "not ")
+      .. t .. " then goto " .. target .. " end"
+  end
+  return "if " .. (negate and "" or "not ") .. "(" .. c .. ") then goto " .. target .. " end"
+end
+-- in a lowered block: assignments (a FOR's bounds, a SELECT's value), trapped where needed
+local function guarded(S, code, block_end)
+  if S.trapping and not S.cur_proc then return trapped_code(S, code, block_end) end
+  return code
+end
+
+-- where the current function declares those locals: a slot filled by assemble
+local function locals_slot(S, line)
+  S.locals = {}
+  S.E(line, S.locals)
 end
 
 local function emit_call(S, st)
@@ -110,9 +169,9 @@ local function emit_for(S, node)
   if lv and literal_fits(lv, llit, ty) then
     lim_code = value(node.to, 0)
   else
-    decl_names[#decl_names + 1] = "_to"
+    lim_code = node.flat and temp(S) or "_to"
+    decl_names[#decl_names + 1] = lim_code
     decl_vals[#decl_vals + 1] = convert(node.to, ty)
-    lim_code = "_to"
   end
   local step, step_sign
   if not node.step then
@@ -123,9 +182,9 @@ local function emit_for(S, node)
     if sv and literal_fits(sv, slit, ty) then
       step = value(node.step, 0)
     else
-      decl_names[#decl_names + 1] = "_step"
+      step = node.flat and temp(S) or "_step"
+      decl_names[#decl_names + 1] = step
       decl_vals[#decl_vals + 1] = convert(node.step, ty)
-      step = "_step"
     end
   end
   local cond
@@ -133,11 +192,23 @@ local function emit_for(S, node)
   elseif step_sign == -1 then cond = vcode .. " >= " .. lim_code
   else cond = "for_test(" .. vcode .. ", " .. lim_code .. ", " .. step .. ")" end
   local head = ""
-  if #decl_names > 0 then
-    head = "do local " .. table.concat(decl_names, ", ") .. " = " .. table.concat(decl_vals, ", ") .. " "
+  local id
+  if node.flat then
+    -- lowered: the test at the top label, NEXT adds the step to the variable as it stands
+    -- (also after a GOTO into the body) and goes back to the test
+    id = flat_id(S)
+    local t = {}
+    for i, n in ipairs(decl_names) do t[#t + 1] = n .. " = " .. decl_vals[i] end
+    t[#t + 1] = vcode .. " = " .. convert(node.from, ty)
+    S.E(line, guarded(S, table.concat(t, " "), id .. "end") .. " ::" .. id .. "top:: if not ("
+      .. cond .. ") then goto " .. id .. "end end")
+  else
+    if #decl_names > 0 then
+      head = "do local " .. table.concat(decl_names, ", ") .. " = " .. table.concat(decl_vals, ", ") .. " "
+    end
+    S.E(line, head .. vcode .. " = " .. convert(node.from, ty) .. " while " .. cond .. " do")
   end
-  S.E(line, head .. vcode .. " = " .. convert(node.from, ty) .. " while " .. cond .. " do")
-  S.loops[#S.loops + 1] = { kind = "for" }
+  S.loops[#S.loops + 1] = { kind = "for", flat = node.flat }
   emit_block(S, node.body)
   local lp = table.remove(S.loops)
   local incr
@@ -147,6 +218,15 @@ local function emit_for(S, node)
   elseif ty == "double" then incr = vcode .. " = " .. sum
   elseif ty == "int" then incr = vcode .. " = cint(" .. sum .. ")"
   else incr = vcode .. " = clng(" .. sum .. ")" end
+  if node.flat then
+    -- a GOTO into the body before the FOR ever ran: QBasic's NEXT has no loop to continue
+    local guard = #decl_names > 0 and ("if " .. decl_names[1] .. " == nil then "
+      .. "next_without_for() end ") or ""
+    local tail = guard .. incr .. " goto " .. id .. "top ::" .. id .. "end::"
+    if lp.exit_label then tail = tail .. " ::" .. lp.exit_label .. "::" end
+    S.E(node.next_line, tail)
+    return
+  end
   local tail = incr .. " end"
   if lp.exit_label then
     tail = tail .. " ::" .. lp.exit_label .. "::"
@@ -156,6 +236,15 @@ local function emit_for(S, node)
 end
 
 local function emit_while(S, node)
+  if node.flat then
+    local id = flat_id(S)
+    S.E(node.line, "::" .. id .. "top:: " .. skip_unless(S, cond(node.cond), id .. "end", id .. "end"))
+    S.loops[#S.loops + 1] = { kind = "while", flat = true }
+    emit_block(S, node.body)
+    table.remove(S.loops)
+    S.E(node.end_line, "goto " .. id .. "top ::" .. id .. "end::")
+    return
+  end
   S.E(node.line, "while " .. cond(node.cond) .. " do")
   S.loops[#S.loops + 1] = { kind = "while" }
   emit_block(S, node.body)
@@ -163,7 +252,30 @@ local function emit_while(S, node)
   S.E(node.end_line, "end")
 end
 
+local function emit_do_flat(S, node)
+  local top, bottom = node.cond_top, node.cond_bottom
+  local id = flat_id(S)
+  local head = "::" .. id .. "top::"
+  if top then
+    head = head .. " " .. skip_unless(S, cond(top.e), id .. "end", id .. "end", top.kind ~= "while")
+  end
+  S.E(node.line, head)
+  S.loops[#S.loops + 1] = { kind = "do", flat = true }
+  emit_block(S, node.body)
+  local lp = table.remove(S.loops)
+  local tail
+  if bottom then
+    tail = skip_unless(S, cond(bottom.e), id .. "top", id .. "end", bottom.kind ~= "until")
+      .. " ::" .. id .. "end::"
+  else
+    tail = "goto " .. id .. "top ::" .. id .. "end::"
+  end
+  if lp.exit_label then tail = tail .. " ::" .. lp.exit_label .. "::" end
+  S.E(node.end_line, tail)
+end
+
 local function emit_do(S, node)
+  if node.flat then return emit_do_flat(S, node) end
   local top, bottom = node.cond_top, node.cond_bottom
   if bottom then
     S.E(node.line, "repeat")
@@ -188,7 +300,30 @@ local function emit_do(S, node)
   S.E(node.end_line, tail)
 end
 
+-- a lowered IF or SELECT: each branch's test skips to the next one, a branch ends with a
+-- goto past the end; tests(i) is the code of branch i's test
+local function emit_branches_flat(S, node, branches, tests, else_line)
+  local id = flat_id(S)
+  for i, br in ipairs(branches) do
+    local pre = i > 1 and ("goto " .. id .. "end ::" .. id .. (i - 1) .. ":: ") or ""
+    S.E(br.line, pre .. skip_unless(S, tests(i), id .. i, id .. "end"))
+    emit_block(S, br.body)
+  end
+  local n = #branches
+  if node.else_body then
+    if n > 0 then S.E(else_line, "goto " .. id .. "end ::" .. id .. n .. "::") end
+    emit_block(S, node.else_body)
+    S.E(node.end_line or node.line, "::" .. id .. "end::")
+  else
+    S.E(node.end_line or node.line, (n > 0 and ("::" .. id .. n .. ":: ") or "") .. "::" .. id .. "end::")
+  end
+end
+
 local function emit_ifb(S, node)
+  if node.flat then
+    return emit_branches_flat(S, node, node.branches,
+      function(i) return cond(node.branches[i].cond) end, node.else_line)
+  end
   for i, br in ipairs(node.branches) do
     S.E(br.line, (i == 1 and "if " or "elseif ") .. cond(br.cond) .. " then")
     emit_block(S, br.body)
@@ -200,14 +335,25 @@ local function emit_ifb(S, node)
   S.E(node.end_line, "end")
 end
 
-local function case_test(t, sel_ty)
+local function case_test(t, sel_ty, name)
+  name = name or "case"
   local function rhs(e)
     return value(e, 4, true)
   end
   if t.lo then
-    return "case >= " .. rhs(t.lo) .. " and case <= " .. rhs(t.hi)
+    return name .. " >= " .. rhs(t.lo) .. " and " .. name .. " <= " .. rhs(t.hi)
   end
-  return "case " .. X.RELOP_LUA[t.op] .. " " .. rhs(t.e)
+  return name .. " " .. X.RELOP_LUA[t.op] .. " " .. rhs(t.e)
+end
+local function case_tests(c, ty, name)
+  local tests = {}
+  for _, t in ipairs(c.tests) do
+    t.line = c.line
+    local code = case_test(t, ty, name)
+    if #c.tests > 1 and t.lo then code = "(" .. code .. ")" end
+    tests[#tests + 1] = code
+  end
+  return table.concat(tests, " or ")
 end
 
 local function emit_select(S, node)
@@ -215,17 +361,19 @@ local function emit_select(S, node)
   local ty = sel.ty
   local selcode = ty == "string" and value(sel, 0) or convert(sel, ty == "double" and "double" or
     (ty == "int" or ty == "long") and ty or "single")
+  if node.flat then
+    local tmp = temp(S)
+    local id = flat_id(S)
+    S.E(node.line, guarded(S, tmp .. " = " .. selcode, id .. "sel"))
+    emit_branches_flat(S, node, node.cases,
+      function(i) return case_tests(node.cases[i], ty, tmp) end, node.else_line)
+    if S.trapping and not S.cur_proc then S.E(node.end_line, "::" .. id .. "sel::") end
+    return
+  end
   S.E(node.line, "do local case = " .. selcode)
   local first = true
   for _, c in ipairs(node.cases) do
-    local tests = {}
-    for _, t in ipairs(c.tests) do
-      t.line = c.line
-      local code = case_test(t, ty)
-      if #c.tests > 1 and t.lo then code = "(" .. code .. ")" end
-      tests[#tests + 1] = code
-    end
-    S.E(c.line, (first and "if " or "elseif ") .. table.concat(tests, " or ") .. " then")
+    S.E(c.line, (first and "if " or "elseif ") .. case_tests(c, ty) .. " then")
     first = false
     emit_block(S, c.body)
   end
@@ -242,6 +390,15 @@ end
 
 local function emit_if1(S, node)
   local line = node.line
+  if node.flat then
+    local id = flat_id(S)
+    S.E(line, skip_unless(S, cond(node.cond), id .. "else", id .. "end"))
+    emit_block(S, node.then_body)
+    S.E(line, "goto " .. id .. "end ::" .. id .. "else::")
+    if node.else_body then emit_block(S, node.else_body) end
+    S.E(line, "::" .. id .. "end::")
+    return
+  end
   S.E(line, "if " .. cond(node.cond) .. " then")
   emit_block(S, node.then_body)
   if node.else_body then
@@ -518,7 +675,7 @@ local function emit_proc(S, st)
     decl = decl .. " local " .. table.concat(fns, ", ") .. " goto " .. proc.defs[1].def_label
       .. " ::start::"
   end
-  local saved_proc, saved_loops = S.cur_proc, S.loops
+  local saved_proc, saved_loops, saved_locals = S.cur_proc, S.loops, S.locals
   S.cur_proc = proc
   S.loops = { { kind = "fn" } }
   if proc.expr then
@@ -529,24 +686,27 @@ local function emit_proc(S, st)
     S.E(line, head .. decl .. " return " .. code .. " end goto "
       .. st.next_def .. " ::" .. st.skip_label .. "::")
   else
-    S.E(line, head .. decl)
+    S.E(line, head)
+    locals_slot(S, line)
+    if decl ~= "" then S.E(line, decl:sub(2)) end
     emit_block(S, proc.tree)
     local ret = returned(proc)
     S.E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
       .. " ::" .. st.skip_label .. "::")
   end
-  S.cur_proc, S.loops = saved_proc, saved_loops
+  S.cur_proc, S.loops, S.locals = saved_proc, saved_loops, saved_locals
 end
 
 local function emit_region(S, r)
   local line = r.line
   S.E(line, "goto " .. r.skip_label .. " ::" .. r.def_label .. ":: " .. r.lua .. " = function()")
-  local saved_loops = S.loops
+  local saved_loops, saved_locals = S.loops, S.locals
+  locals_slot(S, line)
   S.loops = { { kind = "fn" } }
   S.cur_region = r
   emit_block(S, r.body)
   S.cur_region = nil
-  S.loops = saved_loops
+  S.loops, S.locals = saved_loops, saved_locals
   local end_line, tail
   if r.open_end then
     -- no RETURN: the subroutine runs to the end of the program, which it ends
@@ -588,22 +748,7 @@ local function emit_trapped(S, st, f)
   f(S, st)
   S.sink = sink
   if #parts == 0 then return end
-  local code = "trap(function() " .. table.concat(parts, " ") .. " end, " .. S.erl .. ")"
-  local labels = {}
-  for l in pairs(S.prog.resume_targets) do labels[#labels + 1] = l end
-  if #labels > 0 then
-    -- RESUME label: the jump is the statement's own (the label is at the top level)
-    table.sort(labels)
-    local t = { "do local _r = " .. code .. " if _r then" }
-    if not S.cur_region then
-      for _, l in ipairs(labels) do
-        t[#t + 1] = "if _r == " .. X.lua_string(l) .. " then goto " .. label_lua(l) .. " end"
-      end
-    end
-    t[#t + 1] = "resume_at(_r) end end"
-    code = table.concat(t, " ")
-  end
-  S.E(st.line, code)
+  S.E(st.line, trapped_code(S, table.concat(parts, " ")))
 end
 
 emit_block = function(S, list)
@@ -623,20 +768,34 @@ function M.emit(prog, chunkname)
   local out = {}
   for i = 1, #prog.lines do out[i] = {} end
   local S = { prog = prog, out = out, cur_proc = nil, cur_region = nil, exit_count = 0,
-    uses_stop = false, loops = { { kind = "fn" } } }
+    uses_stop = false, loops = { { kind = "fn" } }, locals = {}, temp_count = 0, flat_count = 0 }
   function S.sink(line, s) local o = out[line]; o[#o + 1] = s end
   function S.E(line, s) S.sink(line, s) end
   S.trapping, S.erl = next(prog.handlers) ~= nil, "0"
   X.install(prog)
   G.install(prog, S.E)
   emit_block(S, prog.main)
-  return M.assemble(prog, chunkname, out, S.uses_stop)
+  return M.assemble(prog, chunkname, out, S.uses_stop, S.locals)
+end
+
+-- the code of one line: its pieces, a list of a lowered block's locals (locals_slot) as their
+-- declaration
+local function join(pieces)
+  local t = {}
+  for _, p in ipairs(pieces) do
+    if type(p) == "table" then
+      if #p > 0 then t[#t + 1] = "local " .. table.concat(p, ", ") end
+    else
+      t[#t + 1] = p
+    end
+  end
+  return table.concat(t, " ")
 end
 
 -- ---- assembling the chunk -------------------------------------------------------------------
 -- DATA items by line, the module's strings and arrays (undeclared strings are "", arrays
 -- dimension themselves 0..10), the prelude on line 1 and `run`'s table on the last line
-function M.assemble(prog, chunkname, out, uses_stop)
+function M.assemble(prog, chunkname, out, uses_stop, main_locals)
   local lines = prog.lines
   local info = {}
   -- DATA, by line
@@ -734,10 +893,13 @@ function M.assemble(prog, chunkname, out, uses_stop)
     for _, d in ipairs(prog.direct) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.text) end
     prelude = prelude .. " direct_lines(" .. table.concat(t, ", ") .. ")"
   end
+  if main_locals and #main_locals > 0 then
+    prelude = prelude .. " local " .. table.concat(main_locals, ", ")
+  end
   if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
   local result = {}
   for i = 1, #lines do
-    local code = table.concat(out[i], " ")
+    local code = join(out[i])
     if i == 1 then code = prelude .. (code ~= "" and (" " .. code) or "") end
     if i == #lines then
       code = code .. (code ~= "" and " " or "") .. "end, {" .. table.concat(info, ", ") .. "})"

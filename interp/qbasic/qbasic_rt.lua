@@ -26,7 +26,7 @@ M.names = {
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
   "rset", "direct_lines", "palette_using", "clear", "chain", "common", "run_program",
-  "fprint_using",
+  "fprint_using", "next_without_for",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -935,17 +935,20 @@ local function install_errors(E, R)
   end
   -- a statement of the module: run f; on a trappable error with a handler in force, the handler
   -- runs and says what next (RESUME: f again, RESUME NEXT: on, RESUME label: the label)
-  function E.trap(f, erl)
+  -- (block: f computes a block's condition or bounds, and RESUME NEXT returns "next" for the
+  -- code to go past the block; a RESUME label from a GOSUB subroutine comes back as its label)
+  function E.trap(f, erl, block)
     while true do
       local ok, e = pcall(f)
       if ok then return nil end
+      if type(e) == "table" and e.qb_resume then return e.qb_resume end
       local n = R.handler and not R.in_handler and error_number(e)
       if not n then error(e, 0) end
       R.err, R.erl, R.error, R.in_handler = n, erl, e, true
       local what = R.handler()
       R.in_handler, R.err = false, 0
       if what == nil then error("No RESUME", 2) end
-      if what == "next" then return nil end
+      if what == "next" then return block and "next" or nil end
       if what ~= "retry" then return what end
     end
   end
@@ -953,8 +956,10 @@ local function install_errors(E, R)
     if not R.in_handler then error("RESUME without error", 2) end
     return what
   end
+  -- RESUME label from a statement of a GOSUB subroutine: the subroutines end, up to the
+  -- module's statement that called the first, which jumps (QBasic's RESUME drops the GOSUBs)
   function E.resume_at(label)
-    error("RESUME " .. tostring(label) .. ": the line is not where this statement can jump to", 2)
+    error({ qb_resume = label }, 0)
   end
   function E.err_() return R.err end
   function E.erl_() return R.erl end
@@ -1012,6 +1017,7 @@ function M.new(host, chunkname)
   end
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
+  function E.next_without_for() error("NEXT without FOR", 2) end
   function E.direct_lines(...)
     local t = { ... }
     for i = 1, #t, 2 do

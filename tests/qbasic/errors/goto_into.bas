@@ -1,5 +1,7 @@
-' EXPECT: 2: GOTO 10: jumps into a block or another procedure (line 4); pointcalc translates GOTO only to a label in the same or an enclosing block
-GOTO 10
-FOR i = 1 TO 3
-10 PRINT i
-NEXT
+' EXPECT: 3: GOTO 110: jumps into a GOSUB subroutine or another procedure (line 6); pointcalc translates it only within one procedure, the main program or one subroutine
+10 GOSUB 100
+20 GOTO 110
+30 END
+100 PRINT "a"
+110 PRINT "b"
+120 RETURN
