@@ -67,6 +67,11 @@ end
 -- are numbered through the program (fl<n>_...)
 local function temp(S)
   S.temp_count = S.temp_count + 1
+  if #S.locals >= 100 then
+    -- (Lua allows 200 locals in a function: a big program keeps the rest in a table)
+    S.locals.table = true
+    return "_ft[" .. S.temp_count .. "]"
+  end
   local name = "_f" .. S.temp_count
   S.locals[#S.locals + 1] = name
   return name
@@ -785,6 +790,7 @@ local function join(pieces)
   for _, p in ipairs(pieces) do
     if type(p) == "table" then
       if #p > 0 then t[#t + 1] = "local " .. table.concat(p, ", ") end
+      if p.table then t[#t + 1] = "local _ft = {}" end
     else
       t[#t + 1] = p
     end
@@ -893,9 +899,7 @@ function M.assemble(prog, chunkname, out, uses_stop, main_locals)
     for _, d in ipairs(prog.direct) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.text) end
     prelude = prelude .. " direct_lines(" .. table.concat(t, ", ") .. ")"
   end
-  if main_locals and #main_locals > 0 then
-    prelude = prelude .. " local " .. table.concat(main_locals, ", ")
-  end
+  if main_locals and #main_locals > 0 then prelude = prelude .. " " .. join({ main_locals }) end
   if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
   local result = {}
   for i = 1, #lines do
