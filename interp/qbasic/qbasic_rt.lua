@@ -146,11 +146,8 @@ end
 local PURE = {}
 
 -- ---- numbers --------------------------------------------------------------------------
-function PURE.csng(x)
-  local r = f32(x)
-  if r - r ~= 0 then error("Overflow", 2) end
-  return r
-end
+-- (in C: the statement every SINGLE assignment runs; bench/qbasic)
+PURE.csng = qb.csng
 function PURE.cdbl(x)
   if x - x ~= 0 then error("Overflow", 2) end
   return x
@@ -722,9 +719,18 @@ local function install_drawing(E, R)
   function E.clear(names)
     for _, n in ipairs(names) do rawset(E, n, nil) end
   end
+  -- PSET is the statement of drawing loops: the checks of graphics, coord and colour written
+  -- out (bench/qbasic), a whole colour within the mode's attributes taken as it is
+  local tointeger = math.tointeger
   function E.pset(x, y, c)
-    graphics(2)
-    h_pset(coord(x, 2), coord(y, 2), colour(c, 2))
+    if R.mode == 0 then error(IFC, 2) end
+    x, y = f32(x), f32(y)
+    if x - x ~= 0 or y - y ~= 0 then error("Overflow", 2) end
+    if c ~= nil then
+      local k = tointeger(c)
+      if not k or k < 0 or k >= R.ncolors or R.mode == 2 then c = colour(c, 2) else c = k end
+    end
+    h_pset(x, y, c)
   end
   function E.preset(x, y, c)
     graphics(2)
