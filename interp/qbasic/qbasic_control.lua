@@ -1,8 +1,9 @@
 -- QBasic front end, pass 4: control flow.  GOSUB subroutines (a GOSUB target at the top level
 -- of the module becomes a Lua function running to its RETURN: a "region"), the chain of
 -- definitions that defines every procedure and subroutine before the program starts, and the
--- checks of GOTO, GOSUB and EXIT targets (Label not defined, a GOTO into a block, EXIT FOR
--- outside FOR...NEXT) before anything runs.
+-- checks of GOTO, GOSUB and EXIT targets (Label not defined, a GOTO into another procedure,
+-- EXIT FOR outside FOR...NEXT) before anything runs.  A GOTO or RESUME into a block marks the
+-- blocks around its label flat (node.flat): qbasic_emit lowers them to labels and gotos.
 --
 -- control(prog) adds: prog.main and proc.tree (the top level with its regions), gosub_lua
 -- (label -> function name) and defs (procdefs and regions in order, with def_label,
