@@ -25,13 +25,17 @@ local M = {}
 
 function M.translate(source, chunkname)
   chunkname = chunkname or "?"
-  local ok, res = pcall(function()
+  local function pipeline(dispatch)
     local prog = parse.parse(source)
     resolve.resolve(prog)
     scope.scope(prog)
-    control.control(prog)
+    control.control(prog, dispatch)
     return emit.emit(prog, chunkname)
-  end)
+  end
+  local ok, res = pcall(pipeline, false)
+  -- a GOTO between a GOSUB subroutine and the rest of the module, or a GOSUB into a block:
+  -- again, with the module's subroutines kept in its code (qbasic_control)
+  if not ok and type(res) == "table" and res.qb_redo then ok, res = pcall(pipeline, true) end
   if ok then return res end
   if type(res) == "table" and res.qb then
     return nil, string.format("%s:%d: %s", chunkname, res.line or 0, res.msg or "Syntax error")

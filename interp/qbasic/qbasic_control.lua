@@ -14,6 +14,8 @@ local walk = require "qbasic_walk"
 local M = {}
 
 local function qerr(msg, line) error({ qb = true, msg = msg, line = line }, 0) end
+-- the module's code needs the GOSUB dispatch (below): translate again with prog.dispatch
+local function redo() error({ qb_redo = true }, 0) end
 
 -- the Lua label of a QBasic label: L100, L_name
 function M.label_lua(name)
@@ -79,6 +81,7 @@ local function split_regions(list, targets, names, proc, handlers)
     local found = false
     for _, r in ipairs(regions) do if r.label == label then found = true end end
     if not found then
+      if not proc then redo() end
       qerr("GOSUB " .. label .. ": the target must be at the top level of the " ..
         (proc and "procedure" or "program"), line)
     end
@@ -98,6 +101,16 @@ local function gosub_regions(prog)
     return names
   end
   local targets = gosub_targets_of(prog.main)
+  -- In dispatch mode (a GOTO between a subroutine and the rest of the module, a GOSUB into a
+  -- block) the module's subroutines stay in its code: GOSUB pushes where to come back and
+  -- jumps, RETURN pops and jumps back (qbasic_emit), so any GOTO may cross them
+  if prog.dispatch then
+    for label, line in pairs(targets) do
+      local l = prog.labels[label]
+      if not l or l.proc then qerr("Label not defined", line) end
+    end
+    prog.gosub_labels, targets = targets, {}
+  end
   -- the error handlers (ON ERROR GOTO label, from anywhere) are subroutines of the module
   local handlers = {}
   local function scan(list)
@@ -183,12 +196,15 @@ local function check_jumps(prog)
     block_node[block_id] = node
     -- under ON ERROR GOTO, the module's blocks are lowered so that an error in a condition,
     -- a FOR's bounds or a SELECT's value is trapped where it is computed (qbasic_emit)
-    if node and trapping and not cur_proc and not in_region then node.flat = true end
+    if node and (trapping or prog.dispatch) and not cur_proc and not in_region then
+      node.flat = true
+    end
     if loop then loops[#loops + 1] = loop end
     body(list)
     if loop then loops[#loops] = nil end
     path[#path] = nil
   end
+  local owner = nil          -- the procedure whose code this is (nil: the module's)
   local in_region = false    -- inside a GOSUB subroutine of a procedure
   local in_sub = false       -- inside any GOSUB subroutine
   local function in_function(list, proc, region, sub)
@@ -197,7 +213,10 @@ local function check_jumps(prog)
     inside(list, true)
     loops, cur_proc, in_region, in_sub = saved_loops, saved_proc, saved_region, saved_sub
   end
-  local function jump(label, line) gotos[#gotos + 1] = { label = label, path = copy_path(), line = line } end
+  local function jump(label, line)
+    gotos[#gotos + 1] = { label = label, path = copy_path(), line = line, module = not owner,
+      owner = owner }
+  end
   local function exit(st)
     if st.what == "for" or st.what == "do" then
       for i = #loops, 1, -1 do
@@ -218,13 +237,20 @@ local function check_jumps(prog)
   end
   local STMT = {}
   function STMT.label(st)
-    if goto_targets[st.name] or prog.resume_targets[st.name] then
+    if goto_targets[st.name] or prog.resume_targets[st.name]
+        or (prog.gosub_labels and prog.gosub_labels[st.name]) then
       label_at[st.name] = { path = copy_path(), line = st.line }
     end
   end
-  STMT["goto"] = function(st) jump(st.label, st.line) end
+  STMT["goto"] = function(st) if not st.leaves_handler then jump(st.label, st.line) end end
+  local dispatch = prog.dispatch
   function STMT.on(st)
-    if not st.gosub then for _, l in ipairs(st.labels) do jump(l, st.line) end end
+    if not st.gosub or (dispatch and not cur_proc and not in_sub) then
+      for _, l in ipairs(st.labels) do jump(l, st.line) end
+    end
+  end
+  function STMT.gosub(st)
+    if dispatch and not cur_proc and not in_sub then jump(st.label, st.line) end
   end
   STMT.exit = exit
   STMT["for"] = function(st) inside(st.body, false, "for", st) end
@@ -242,7 +268,9 @@ local function check_jumps(prog)
     inside(st.then_body, false, nil, st)
     if st.else_body then inside(st.else_body, false, nil, st) end
   end
-  function STMT.procdef(st) if st.proc.tree then in_function(st.proc.tree, st.proc) end end
+  function STMT.procdef(st)
+    if st.proc.tree then owner = st.proc; in_function(st.proc.tree, st.proc); owner = nil end
+  end
   function STMT.region(st) in_function(st.body, nil, st.proc ~= nil, true) end
   -- a statement of the module that can fail jumps to each RESUME label from where it is
   local resume_sites = next(prog.resume_targets) ~= nil
@@ -265,9 +293,11 @@ local function check_jumps(prog)
   -- reach.  Lowering a block only removes it from paths, so the jumps that were fine stay so.
   for _, g in ipairs(gotos) do
     local l = label_at[g.label]
+    local def = prog.labels[g.label]
+    -- a label of another procedure is not defined where the GOTO is (QBasic's labels are local)
+    if not def or def.proc ~= g.owner then qerr("Label not defined", g.line) end
     if not l then
-      local def = prog.labels[g.label]
-      if not def then qerr("Label not defined", g.line) end
+      if g.module and not def.proc and not prog.dispatch then redo() end
       qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into a GOSUB subroutine or "
         .. "another procedure (line " .. def.line .. "); pointcalc translates it only within one "
         .. "procedure, the main program or one subroutine", g.line)
@@ -279,6 +309,7 @@ local function check_jumps(prog)
     local ok = true
     for i = common + 1, #g.path do if type(g.path[i]) == "string" then ok = false end end
     for i = common + 1, #l.path do if type(l.path[i]) == "string" then ok = false end end
+    if not ok and g.module and not prog.labels[g.label].proc and not prog.dispatch then redo() end
     if not ok then
       qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into a GOSUB subroutine "
         .. "or another procedure (line " .. l.line .. "); pointcalc translates it only within "
@@ -303,14 +334,31 @@ local function resume_targets(prog)
   end
   scan(prog.main)
   for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
+  -- a GOTO from an error handler to the module's code outside it leaves the handler as RESUME
+  -- label does (st.leaves_handler)
+  for _, r in ipairs(prog.main) do
+    if r.k == "region" and r.handler then
+      local own = {}
+      walk.stmts(r.body, function(st) if st.k == "label" then own[st.name] = true end end)
+      walk.stmts(r.body, function(st)
+        local l = st.k == "goto" and prog.labels[st.label]
+        if l and not l.proc and not own[st.label] then
+          st.leaves_handler = true
+          prog.resume_targets[st.label] = true
+        end
+      end)
+    end
+  end
 end
 
-function M.control(prog)
+function M.control(prog, dispatch)
+  prog.dispatch = dispatch
   gosub_regions(prog)
   definition_chain(prog)
   resume_targets(prog)
   check_jumps(prog)
   for l in pairs(prog.resume_targets) do prog.goto_targets[l] = true end
+  for l in pairs(prog.gosub_labels or {}) do prog.goto_targets[l] = true end
   -- RESTORE label: the label must exist
   local function restores(list)
     walk.stmts(list, function(st)

@@ -444,19 +444,61 @@ function STMT.let(S, st)
 end
 STMT["for"], STMT["while"], STMT["do"] = emit_for, emit_while, emit_do
 STMT.ifb, STMT.if1, STMT.select = emit_ifb, emit_if1, emit_select
-STMT["goto"] = function(S, st) S.E(st.line, "goto " .. label_lua(st.label)) end
-function STMT.gosub(S, st) S.E(st.line, gosub_lua(S, st.label) .. "()") end
+STMT["goto"] = function(S, st)
+  if st.leaves_handler then   -- out of the error handler: as RESUME label (qbasic_control)
+    S.E(st.line, "do return resume_ok(" .. X.lua_string(st.label) .. ") end")
+  else
+    S.E(st.line, "goto " .. label_lua(st.label))
+  end
+end
+-- In dispatch mode (qbasic_control) the module's GOSUB is a jump that pushes where to come
+-- back (the label gr<k>), and RETURN pops it and jumps to the dispatch at the end of the
+-- module's code, which jumps back
+local function dispatched(S, label)
+  return S.prog.gosub_labels and S.prog.gosub_labels[label] and not S.cur_proc
+end
+local function gosub_code(S, label, k)
+  if dispatched(S, label) then
+    if S.cur_region then
+      error({ qb = true, line = S.line, msg = "GOSUB " .. label .. " inside an error handler of a "
+        .. "program whose GOTOs cross its GOSUB subroutines: not supported by pointcalc" }, 0)
+    end
+    return "gosub_push(" .. k .. ") goto " .. label_lua(label)
+  end
+  return gosub_lua(S, label) .. "()"
+end
+local function return_label(S)
+  S.gret_count = S.gret_count + 1
+  return S.gret_count
+end
+function STMT.gosub(S, st)
+  S.line = st.line
+  if dispatched(S, st.label) then
+    local k = return_label(S)
+    S.E(st.line, gosub_code(S, st.label, k) .. " ::gr" .. k .. "::")
+  else
+    S.E(st.line, gosub_code(S, st.label))
+  end
+end
 function STMT.on(S, st)
+  S.line = st.line
   local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
+  local k = st.gosub and S.prog.gosub_labels and not S.cur_proc and return_label(S)
   for i, l in ipairs(st.labels) do
-    local act = st.gosub and (gosub_lua(S, l) .. "()") or ("goto " .. label_lua(l))
+    local act = st.gosub and gosub_code(S, l, k) or ("goto " .. label_lua(l))
     parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
   end
   parts[#parts + 1] = "end end"
+  if k then parts[#parts + 1] = "::gr" .. k .. "::" end
   S.E(st.line, table.concat(parts, " "))
 end
 STMT["return"] = function(S, st)
-  S.E(st.line, S.cur_region and "do return end" or "return_without_gosub()")
+  if S.cur_region then S.E(st.line, "do return end")
+  elseif S.prog.gosub_labels and not S.cur_proc then
+    if not S.gret_var then S.gret_var = temp(S) end
+    S.uses_gret = true
+    S.E(st.line, S.gret_var .. " = gosub_pop() goto gret")
+  else S.E(st.line, "return_without_gosub()") end
 end
 STMT["end"] = function(S, st) S.E(st.line, end_program(S)) end
 function STMT.exit(S, st)
@@ -760,7 +802,8 @@ emit_block = function(S, list)
   for _, st in ipairs(list) do
     local f = STMT[st.k]
     if f then
-      if S.trapping and not S.cur_proc and TRAPPED[st.k] then emit_trapped(S, st, f)
+      if S.trapping and not S.cur_proc and TRAPPED[st.k]
+          and not (st.k == "gosub" and dispatched(S, st.label)) then emit_trapped(S, st, f)
       else f(S, st) end
     elseif not NOTHING[st.k] then error("cannot emit statement " .. st.k) end
   end
@@ -773,13 +816,23 @@ function M.emit(prog, chunkname)
   local out = {}
   for i = 1, #prog.lines do out[i] = {} end
   local S = { prog = prog, out = out, cur_proc = nil, cur_region = nil, exit_count = 0,
-    uses_stop = false, loops = { { kind = "fn" } }, locals = {}, temp_count = 0, flat_count = 0 }
+    uses_stop = false, loops = { { kind = "fn" } }, locals = {}, temp_count = 0, flat_count = 0,
+    gret_count = 0 }
   function S.sink(line, s) local o = out[line]; o[#o + 1] = s end
   function S.E(line, s) S.sink(line, s) end
   S.trapping, S.erl = next(prog.handlers) ~= nil, "0"
   X.install(prog)
   G.install(prog, S.E)
   emit_block(S, prog.main)
+  if S.uses_gret then
+    -- the dispatch of RETURN: back after the GOSUB that pushed k
+    local t = { "do return end ::gret::" }
+    for k = 1, S.gret_count do
+      t[#t + 1] = (k == 1 and "if " or "elseif ") .. S.gret_var .. " == " .. k .. " then goto gr" .. k
+    end
+    if S.gret_count > 0 then t[#t + 1] = "end" end
+    S.E(#prog.lines, table.concat(t, " "))
+  end
   return M.assemble(prog, chunkname, out, S.uses_stop, S.locals)
 end
 

@@ -26,7 +26,7 @@ M.names = {
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
   "rset", "direct_lines", "palette_using", "clear", "chain", "common", "run_program",
-  "fprint_using", "next_without_for",
+  "fprint_using", "next_without_for", "gosub_push", "gosub_pop", "gret",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -1024,6 +1024,18 @@ function M.new(host, chunkname)
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
   function E.next_without_for() error("NEXT without FOR", 2) end
+  -- the GOSUB stack of a module whose subroutines stay in its code (qbasic_emit's dispatch
+  -- mode); as deep as QBasic's stack allows recursion about
+  local gosubs = {}
+  function E.gosub_push(k)
+    if #gosubs >= 20000 then error("Out of stack space", 2) end
+    gosubs[#gosubs + 1] = k
+  end
+  function E.gosub_pop()
+    local k = table.remove(gosubs)
+    if not k then error("RETURN without GOSUB", 2) end
+    return k
+  end
   function E.direct_lines(...)
     local t = { ... }
     for i = 1, #t, 2 do
