@@ -952,6 +952,11 @@ function M.assemble(prog, chunkname, out, uses_stop, main_locals)
     for _, d in ipairs(prog.direct) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.text) end
     prelude = prelude .. " direct_lines(" .. table.concat(t, ", ") .. ")"
   end
+  if #prog.includes > 0 then
+    local t = {}
+    for _, d in ipairs(prog.includes) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.file) end
+    prelude = prelude .. " skipped_includes(" .. table.concat(t, ", ") .. ")"
+  end
   if main_locals and #main_locals > 0 then prelude = prelude .. " " .. join({ main_locals }) end
   if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
   local result = {}

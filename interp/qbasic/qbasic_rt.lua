@@ -25,7 +25,7 @@ M.names = {
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
-  "rset", "direct_lines", "palette_using", "clear", "chain", "common", "run_program",
+  "rset", "direct_lines", "skipped_includes", "palette_using", "clear", "chain", "common", "run_program",
   "fprint_using", "next_without_for", "gosub_push", "gosub_pop", "gret",
 }
 local screen_rt = require("qbasic_screen")
@@ -1035,6 +1035,14 @@ function M.new(host, chunkname)
     local k = table.remove(gosubs)
     if not k then error("RETURN without GOSUB", 2) end
     return k
+  end
+  function E.skipped_includes(...)
+    local t = { ... }
+    for i = 1, #t, 2 do
+      io.stderr:write(chunkname .. ":" .. t[i] .. ": $INCLUDE: '" .. t[i + 1] .. "' not read: "
+        .. "pointcalc does not include other files (a name the program takes from it is "
+        .. "reported where it is used)\n")
+    end
   end
   function E.direct_lines(...)
     local t = { ... }
