@@ -195,4 +195,6 @@ expect_eq "$(ppm_pixel wild_sortdemo.ppm 5 224)" "aa5500" "wild_sortdemo: the la
 expect_eq "$(ppm_pixel wild_sortdemo.ppm 5 234)" "000000" "wild_sortdemo: below the bars"
 expect_eq "$(px320 wild_poke.ppm 25 155)" "ffff00" "wild_poke: OUT &H3C9 recolours attribute 1"
 expect_eq "$(px320 wild_poke.ppm 40 100)" "ff0000" "wild_poke: POKE colour 40 at row 100"
+# REM $INCLUDE is not read, and the run names it with its line
+expect_in wild_meta.err "wild_meta.bas:2: \$INCLUDE: 'qb.bi' not read" "\$INCLUDE named on standard error"
 finish
