@@ -1,3 +1,4 @@
+' CIRCLE arcs (negative angles draw the radii) and an ellipse by aspect
 SCREEN 12
 CONST PI = 3.14159
 CIRCLE (320, 240), 100, 14, 0, PI / 2

@@ -1,3 +1,4 @@
+' DATA with labels, RESTORE label, quoted and unquoted strings
 RESTORE colours
 FOR i = 1 TO 3
   READ c$, r, g, b

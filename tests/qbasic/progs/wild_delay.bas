@@ -1,3 +1,4 @@
+' a TIMER busy-wait and SLEEP (the virtual clock), CIRCLE in SCREEN 7
 SCREEN 7
 FOR i = 1 TO 5
   CIRCLE (160, 100), i * 15, i + 8

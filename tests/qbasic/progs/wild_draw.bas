@@ -1,3 +1,4 @@
+' DRAW strings (moves, colours, TA rotation), PAINT to a border, POINT
 SCREEN 12
 DRAW "BM100,100 C14 R50 D50 L50 U50"
 DRAW "BM300,200 C12 E20 F20 G20 H20"

@@ -1,3 +1,4 @@
+' sequential files: OUTPUT, APPEND, INPUT with EOF and LINE INPUT #, WRITE #, KILL
 OPEN "scores.txt" FOR OUTPUT AS #1
 PRINT #1, "Ann"; 30
 WRITE #1, "Bob", 20

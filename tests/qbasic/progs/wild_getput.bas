@@ -1,3 +1,4 @@
+' a sprite kept with GET and put with PUT PSET, erased with PUT XOR
 SCREEN 13
 DIM sprite(100)
 LINE (0, 0)-(9, 9), 4, BF

@@ -1,3 +1,4 @@
+' INPUT with prompts and several values, LINE INPUT, WIDTH
 INPUT "Your name"; n$
 INPUT "Age, height"; age, h
 LINE INPUT "Comment: "; c$

@@ -1,3 +1,4 @@
+' a VIEW with fill and border, PAINT with a tile pattern
 SCREEN 12
 VIEW (100, 100)-(300, 300), 1, 15
 CIRCLE (100, 100), 80, 14

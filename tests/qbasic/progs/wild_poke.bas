@@ -1,3 +1,4 @@
+' video memory at &HA000 with POKE/PEEK, the BIOS keyboard flags, the DAC ports
 SCREEN 13
 DEF SEG = &HA000
 FOR x = 0 TO 319

@@ -1,3 +1,4 @@
+' recursion (factorial, Fibonacci, Hanoi), integer division and MOD, PRINT USING
 DECLARE FUNCTION Fact# (n%)
 DECLARE FUNCTION Fib& (n%)
 DECLARE SUB Hanoi (n%, a$, b$, c$)

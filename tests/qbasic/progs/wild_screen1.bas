@@ -1,3 +1,4 @@
+' SCREEN 1: COLOR background and palette, PAINT, a styled LINE
 SCREEN 1
 COLOR 1, 0
 LINE (10, 10)-(100, 60), 3, B

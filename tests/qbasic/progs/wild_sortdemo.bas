@@ -1,3 +1,4 @@
+' SORTDEMO's kind: a bubble sort in a SUB over an INTEGER array, bars drawn with LINE BF
 DEFINT A-Z
 DECLARE SUB BubbleSort (a() AS INTEGER, n AS INTEGER)
 DECLARE SUB ShowBars (a() AS INTEGER, n AS INTEGER)

@@ -1,3 +1,4 @@
+' BEEP, SOUND and PLAY run silently
 BEEP
 SOUND 440, 2
 PLAY "T120 O3 L8 CDEFGAB O4 C"

@@ -1,3 +1,4 @@
+' STATIC variables in a FUNCTION and a STATIC SUB, DIM SHARED
 DECLARE FUNCTION Counter% ()
 DECLARE SUB Bump ()
 DIM SHARED total

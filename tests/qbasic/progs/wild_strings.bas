@@ -1,3 +1,4 @@
+' MID$ assignment, INSTR from a position, VAL of hex, INPUT$ from the keyboard
 a$ = "The quick brown fox"
 MID$(a$, 5, 5) = "QUICK"
 PRINT a$; INSTR(6, a$, "o"); LCASE$(a$)

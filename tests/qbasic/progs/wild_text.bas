@@ -1,3 +1,4 @@
+' text mode: COLOR, LOCATE, CSRLIN/POS, VIEW PRINT and the string functions
 CLS
 COLOR 14, 1
 LOCATE 5, 10: PRINT "Menu";

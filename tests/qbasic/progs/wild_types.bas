@@ -1,3 +1,4 @@
+' TYPE records in an array, SWAP of records, REDIM clearing
 TYPE Player
   nam AS STRING * 8
   score AS INTEGER

@@ -1,3 +1,4 @@
+' SCREEN 9 with WINDOW world coordinates, PMAP and SCREEN()
 SCREEN 9
 WINDOW (-2, -2)-(2, 2)
 LINE (-2, 0)-(2, 0), 8
