@@ -32,10 +32,15 @@ function M.translate(source, chunkname)
     control.control(prog, dispatch)
     return emit.emit(prog, chunkname)
   end
-  local ok, res = pcall(pipeline, false)
-  -- a GOTO between a GOSUB subroutine and the rest of the module, or a GOSUB into a block:
-  -- again, with the module's subroutines kept in its code (qbasic_control)
-  if not ok and type(res) == "table" and res.qb_redo then ok, res = pcall(pipeline, true) end
+  -- a GOTO between a GOSUB subroutine and the rest of the module (or of a procedure), or a
+  -- GOSUB into a block: again, with that body's subroutines kept in its code (qbasic_control)
+  local dispatch = { procs = {} }
+  local ok, res = pcall(pipeline, dispatch)
+  for _ = 1, 100 do
+    if ok or type(res) ~= "table" or not res.qb_redo then break end
+    if res.proc then dispatch.procs[res.proc] = true else dispatch.module = true end
+    ok, res = pcall(pipeline, dispatch)
+  end
   if ok then return res end
   if type(res) == "table" and res.qb then
     return nil, string.format("%s:%d: %s", chunkname, res.line or 0, res.msg or "Syntax error")

@@ -15,7 +15,7 @@ local M = {}
 
 local function qerr(msg, line) error({ qb = true, msg = msg, line = line }, 0) end
 -- the module's code needs the GOSUB dispatch (below): translate again with prog.dispatch
-local function redo() error({ qb_redo = true }, 0) end
+local function redo(proc) error({ qb_redo = true, proc = proc and proc.name }, 0) end
 
 -- the Lua label of a QBasic label: L100, L_name
 function M.label_lua(name)
@@ -39,7 +39,7 @@ end
 
 -- Split the top level of a body into plain statements and subroutines (regions); returns the
 -- new top level.  names: label -> Lua function name; proc: the procedure, nil for the module.
-local function split_regions(list, targets, names, proc, handlers)
+local function split_regions(list, targets, names, proc, handlers, dispatching)
   local regions = {}
   local newtop = {}
   local cur = nil
@@ -81,7 +81,7 @@ local function split_regions(list, targets, names, proc, handlers)
     local found = false
     for _, r in ipairs(regions) do if r.label == label then found = true end end
     if not found then
-      if not proc then redo() end
+      if not dispatching then redo(proc) end
       qerr("GOSUB " .. label .. ": the target must be at the top level of the " ..
         (proc and "procedure" or "program"), line)
     end
@@ -127,12 +127,16 @@ local function gosub_regions(prog)
   for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
   prog.handlers = handlers
   prog.gosub_lua = names_for(targets, prog.gns, nil)
-  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil, handlers)
+  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil, handlers, prog.dispatch)
   for _, proc in ipairs(prog.procs) do
     if proc.tree then
       local t = gosub_targets_of(proc.tree)
+      if proc.dispatch then      -- as the module's dispatch mode, within the procedure
+        names_for(t, proc.ns, proc)
+        proc.gosub_labels, t = t, {}
+      end
       proc.gosub_lua = names_for(t, proc.ns, proc)
-      proc.tree = split_regions(proc.tree, t, proc.gosub_lua, proc)
+      proc.tree = split_regions(proc.tree, t, proc.gosub_lua, proc, nil, proc.dispatch)
     end
   end
 end
@@ -181,6 +185,7 @@ local function check_jumps(prog)
   for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
   prog.goto_targets = goto_targets
 
+  local owner = nil          -- the procedure whose code this is (nil: the module's)
   local block_id = 0
   local trapping = next(prog.handlers) ~= nil
   local path = {}
@@ -199,12 +204,12 @@ local function check_jumps(prog)
     if node and (trapping or prog.dispatch) and not cur_proc and not in_region then
       node.flat = true
     end
+    if node and owner and owner.dispatch then node.flat = true end
     if loop then loops[#loops + 1] = loop end
     body(list)
     if loop then loops[#loops] = nil end
     path[#path] = nil
   end
-  local owner = nil          -- the procedure whose code this is (nil: the module's)
   local in_region = false    -- inside a GOSUB subroutine of a procedure
   local in_sub = false       -- inside any GOSUB subroutine
   local function in_function(list, proc, region, sub)
@@ -237,20 +242,23 @@ local function check_jumps(prog)
   end
   local STMT = {}
   function STMT.label(st)
-    if goto_targets[st.name] or prog.resume_targets[st.name]
-        or (prog.gosub_labels and prog.gosub_labels[st.name]) then
+    local gl = (owner or prog).gosub_labels
+    if goto_targets[st.name] or prog.resume_targets[st.name] or (gl and gl[st.name]) then
       label_at[st.name] = { path = copy_path(), line = st.line }
     end
   end
   STMT["goto"] = function(st) if not st.leaves_handler then jump(st.label, st.line) end end
   local dispatch = prog.dispatch
+  local function gosub_jumps()
+    return (dispatch and not owner and not in_sub) or (owner and owner.dispatch)
+  end
   function STMT.on(st)
-    if not st.gosub or (dispatch and not cur_proc and not in_sub) then
+    if not st.gosub or gosub_jumps() then
       for _, l in ipairs(st.labels) do jump(l, st.line) end
     end
   end
   function STMT.gosub(st)
-    if dispatch and not cur_proc and not in_sub then jump(st.label, st.line) end
+    if gosub_jumps() then jump(st.label, st.line) end
   end
   STMT.exit = exit
   STMT["for"] = function(st) inside(st.body, false, "for", st) end
@@ -298,9 +306,9 @@ local function check_jumps(prog)
     if not def or def.proc ~= g.owner then qerr("Label not defined", g.line) end
     if not l then
       if g.module and not def.proc and not prog.dispatch then redo() end
-      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into a GOSUB subroutine or "
-        .. "another procedure (line " .. def.line .. "); pointcalc translates it only within one "
-        .. "procedure, the main program or one subroutine", g.line)
+      if g.owner and not g.owner.dispatch then redo(g.owner) end
+      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into the error handler "
+        .. "(line " .. def.line .. "): not supported by pointcalc", g.line)
     end
     local common = 0
     while common < #l.path and common < #g.path and l.path[common + 1] == g.path[common + 1] do
@@ -310,10 +318,11 @@ local function check_jumps(prog)
     for i = common + 1, #g.path do if type(g.path[i]) == "string" then ok = false end end
     for i = common + 1, #l.path do if type(l.path[i]) == "string" then ok = false end end
     if not ok and g.module and not prog.labels[g.label].proc and not prog.dispatch then redo() end
+    if not ok and g.owner and not g.owner.dispatch then redo(g.owner) end
     if not ok then
-      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into a GOSUB subroutine "
-        .. "or another procedure (line " .. l.line .. "); pointcalc translates it only within "
-        .. "one procedure, the main program or one subroutine", g.line)
+      -- (what remains once the dispatch mode keeps the subroutines in their body's code)
+      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into the error handler "
+        .. "(line " .. l.line .. "): not supported by pointcalc", g.line)
     end
     for i = common + 1, #l.path do block_node[l.path[i]].flat = true end
   end
@@ -352,13 +361,18 @@ local function resume_targets(prog)
 end
 
 function M.control(prog, dispatch)
-  prog.dispatch = dispatch
+  dispatch = dispatch or { procs = {} }
+  prog.dispatch = dispatch.module
+  for _, proc in ipairs(prog.procs) do proc.dispatch = dispatch.procs[proc.name] end
   gosub_regions(prog)
   definition_chain(prog)
   resume_targets(prog)
   check_jumps(prog)
   for l in pairs(prog.resume_targets) do prog.goto_targets[l] = true end
   for l in pairs(prog.gosub_labels or {}) do prog.goto_targets[l] = true end
+  for _, proc in ipairs(prog.procs) do
+    for l in pairs(proc.gosub_labels or {}) do prog.goto_targets[l] = true end
+  end
   -- RESTORE label: the label must exist
   local function restores(list)
     walk.stmts(list, function(st)

@@ -455,21 +455,34 @@ end
 -- back (the label gr<k>), and RETURN pops it and jumps to the dispatch at the end of the
 -- module's code, which jumps back
 local function dispatched(S, label)
-  return S.prog.gosub_labels and S.prog.gosub_labels[label] and not S.cur_proc
+  local gl = (S.cur_proc or S.prog).gosub_labels
+  return gl and gl[label]
 end
+-- the GOSUB stack: the program's, or in a procedure a local one of each call
+local function stack_arg(S) return S.cur_proc and ", _gs" or "" end
 local function gosub_code(S, label, k)
   if dispatched(S, label) then
     if S.cur_region then
       error({ qb = true, line = S.line, msg = "GOSUB " .. label .. " inside an error handler of a "
         .. "program whose GOTOs cross its GOSUB subroutines: not supported by pointcalc" }, 0)
     end
-    return "gosub_push(" .. k .. ") goto " .. label_lua(label)
+    return "gosub_push(" .. k .. stack_arg(S) .. ") goto " .. label_lua(label)
   end
   return gosub_lua(S, label) .. "()"
 end
 local function return_label(S)
   S.gret_count = S.gret_count + 1
+  S.gret.list[#S.gret.list + 1] = S.gret_count
   return S.gret_count
+end
+-- the dispatch of RETURN: back after the GOSUB that pushed k (g: the function's GOSUBs)
+local function return_dispatch(g)
+  local t = { "::gret::" }
+  for i, k in ipairs(g.list) do
+    t[#t + 1] = (i == 1 and "if " or "elseif ") .. g.var .. " == " .. k .. " then goto gr" .. k
+  end
+  if #g.list > 0 then t[#t + 1] = "end" end
+  return table.concat(t, " ")
 end
 function STMT.gosub(S, st)
   S.line = st.line
@@ -483,7 +496,7 @@ end
 function STMT.on(S, st)
   S.line = st.line
   local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
-  local k = st.gosub and S.prog.gosub_labels and not S.cur_proc and return_label(S)
+  local k = st.gosub and (S.cur_proc or S.prog).gosub_labels and return_label(S)
   for i, l in ipairs(st.labels) do
     local act = st.gosub and gosub_code(S, l, k) or ("goto " .. label_lua(l))
     parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
@@ -494,10 +507,11 @@ function STMT.on(S, st)
 end
 STMT["return"] = function(S, st)
   if S.cur_region then S.E(st.line, "do return end")
-  elseif S.prog.gosub_labels and not S.cur_proc then
-    if not S.gret_var then S.gret_var = temp(S) end
-    S.uses_gret = true
-    S.E(st.line, S.gret_var .. " = gosub_pop() goto gret")
+  elseif (S.cur_proc or S.prog).gosub_labels then
+    local g = S.gret
+    if not g.var then g.var = temp(S) end
+    g.used = true
+    S.E(st.line, g.var .. " = gosub_pop(" .. stack_arg(S):sub(3) .. ") goto gret")
   else S.E(st.line, "return_without_gosub()") end
 end
 STMT["end"] = function(S, st) S.E(st.line, end_program(S)) end
@@ -722,7 +736,8 @@ local function emit_proc(S, st)
     decl = decl .. " local " .. table.concat(fns, ", ") .. " goto " .. proc.defs[1].def_label
       .. " ::start::"
   end
-  local saved_proc, saved_loops, saved_locals = S.cur_proc, S.loops, S.locals
+  local saved_proc, saved_loops, saved_locals, saved_gret = S.cur_proc, S.loops, S.locals, S.gret
+  S.gret = { list = {} }
   S.cur_proc = proc
   S.loops = { { kind = "fn" } }
   if proc.expr then
@@ -735,13 +750,17 @@ local function emit_proc(S, st)
   else
     S.E(line, head)
     locals_slot(S, line)
+    if proc.gosub_labels then S.E(line, "local _gs = {}") end
     if decl ~= "" then S.E(line, decl:sub(2)) end
     emit_block(S, proc.tree)
     local ret = returned(proc)
+    if S.gret.used then
+      S.E(proc.end_line, "goto proc_end " .. return_dispatch(S.gret) .. " ::proc_end::")
+    end
     S.E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
       .. " ::" .. st.skip_label .. "::")
   end
-  S.cur_proc, S.loops, S.locals = saved_proc, saved_loops, saved_locals
+  S.cur_proc, S.loops, S.locals, S.gret = saved_proc, saved_loops, saved_locals, saved_gret
 end
 
 local function emit_region(S, r)
@@ -817,22 +836,14 @@ function M.emit(prog, chunkname)
   for i = 1, #prog.lines do out[i] = {} end
   local S = { prog = prog, out = out, cur_proc = nil, cur_region = nil, exit_count = 0,
     uses_stop = false, loops = { { kind = "fn" } }, locals = {}, temp_count = 0, flat_count = 0,
-    gret_count = 0 }
+    gret_count = 0, gret = { list = {} } }
   function S.sink(line, s) local o = out[line]; o[#o + 1] = s end
   function S.E(line, s) S.sink(line, s) end
   S.trapping, S.erl = next(prog.handlers) ~= nil, "0"
   X.install(prog)
   G.install(prog, S.E)
   emit_block(S, prog.main)
-  if S.uses_gret then
-    -- the dispatch of RETURN: back after the GOSUB that pushed k
-    local t = { "do return end ::gret::" }
-    for k = 1, S.gret_count do
-      t[#t + 1] = (k == 1 and "if " or "elseif ") .. S.gret_var .. " == " .. k .. " then goto gr" .. k
-    end
-    if S.gret_count > 0 then t[#t + 1] = "end" end
-    S.E(#prog.lines, table.concat(t, " "))
-  end
+  if S.gret.used then S.E(#prog.lines, "do return end " .. return_dispatch(S.gret)) end
   return M.assemble(prog, chunkname, out, S.uses_stop, S.locals)
 end
 

@@ -26,7 +26,7 @@ M.names = {
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
   "rset", "direct_lines", "skipped_includes", "palette_using", "clear", "chain", "common", "run_program",
-  "fprint_using", "next_without_for", "gosub_push", "gosub_pop", "gret",
+  "fprint_using", "next_without_for", "gosub_push", "gosub_pop", "gret", "_gs", "proc_end",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -1026,13 +1026,15 @@ function M.new(host, chunkname)
   function E.next_without_for() error("NEXT without FOR", 2) end
   -- the GOSUB stack of a module whose subroutines stay in its code (qbasic_emit's dispatch
   -- mode); as deep as QBasic's stack allows recursion about
+  -- (a procedure's GOSUBs use a stack of the call, st)
   local gosubs = {}
-  function E.gosub_push(k)
-    if #gosubs >= 20000 then error("Out of stack space", 2) end
-    gosubs[#gosubs + 1] = k
+  function E.gosub_push(k, st)
+    st = st or gosubs
+    if #st >= 20000 then error("Out of stack space", 2) end
+    st[#st + 1] = k
   end
-  function E.gosub_pop()
-    local k = table.remove(gosubs)
+  function E.gosub_pop(st)
+    local k = table.remove(st or gosubs)
     if not k then error("RETURN without GOSUB", 2) end
     return k
   end
