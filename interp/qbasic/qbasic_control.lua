@@ -232,6 +232,8 @@ local function check_jumps(prog)
         st.line)
     end
     if in_region then
+      -- in dispatch mode the subroutine is in the procedure's code, where EXIT SUB works
+      if owner and not owner.dispatch then redo(owner) end
       qerr("EXIT " .. (st.what == "deffn" and "DEF" or st.what:upper()) .. " inside a GOSUB "
         .. "subroutine: not supported by pointcalc", st.line)
     end
