@@ -12,7 +12,8 @@
 --   qbasic_resolve  types and QBasic's checks, in textual order
 --   qbasic_scope    where each variable lives, Lua names, SUB parameters copied back
 --   qbasic_control  GOSUB subroutines, the definition chain, GOTO/EXIT targets
---   qbasic_emit     Lua source (expressions: qbasic_emit_expr, screen: qbasic_emit_gfx)
+--   qbasic_emit     Lua source (expressions: qbasic_emit_expr, screen: qbasic_emit_gfx,
+--                   blocks and the error trap: qbasic_emit_blocks)
 -- and the runtime the translation calls: qbasic_rt, qbasic_screen, qbasic_hw (the emulated
 -- VGA ports and memory), qbasic_files.
 local parse = require "qbasic_parse"
