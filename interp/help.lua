@@ -407,6 +407,7 @@ area("qb", "QBasic numbers (qb.*)",
   nil)
 
 def("qb.f32")
+def("qb.csng")
 def("qb.cint")
 def("qb.clng")
 def("qb.rnd")

@@ -12,7 +12,8 @@
 --   qbasic_resolve  types and QBasic's checks, in textual order
 --   qbasic_scope    where each variable lives, Lua names, SUB parameters copied back
 --   qbasic_control  GOSUB subroutines, the definition chain, GOTO/EXIT targets
---   qbasic_emit     Lua source (expressions: qbasic_emit_expr, screen: qbasic_emit_gfx)
+--   qbasic_emit     Lua source (expressions: qbasic_emit_expr, screen: qbasic_emit_gfx,
+--                   blocks and the error trap: qbasic_emit_blocks)
 -- and the runtime the translation calls: qbasic_rt, qbasic_screen, qbasic_hw (the emulated
 -- VGA ports and memory), qbasic_files.
 local parse = require "qbasic_parse"
@@ -25,13 +26,22 @@ local M = {}
 
 function M.translate(source, chunkname)
   chunkname = chunkname or "?"
-  local ok, res = pcall(function()
+  local function pipeline(dispatch)
     local prog = parse.parse(source)
     resolve.resolve(prog)
     scope.scope(prog)
-    control.control(prog)
+    control.control(prog, dispatch)
     return emit.emit(prog, chunkname)
-  end)
+  end
+  -- a GOTO between a GOSUB subroutine and the rest of the module (or of a procedure), or a
+  -- GOSUB into a block: again, with that body's subroutines kept in its code (qbasic_control)
+  local dispatch = { procs = {} }
+  local ok, res = pcall(pipeline, dispatch)
+  for _ = 1, 100 do
+    if ok or type(res) ~= "table" or not res.qb_redo then break end
+    if res.proc then dispatch.procs[res.proc] = true else dispatch.module = true end
+    ok, res = pcall(pipeline, dispatch)
+  end
   if ok then return res end
   if type(res) == "table" and res.qb then
     return nil, string.format("%s:%d: %s", chunkname, res.line or 0, res.msg or "Syntax error")

@@ -1,8 +1,9 @@
 -- QBasic front end, pass 4: control flow.  GOSUB subroutines (a GOSUB target at the top level
 -- of the module becomes a Lua function running to its RETURN: a "region"), the chain of
 -- definitions that defines every procedure and subroutine before the program starts, and the
--- checks of GOTO, GOSUB and EXIT targets (Label not defined, a GOTO into a block, EXIT FOR
--- outside FOR...NEXT) before anything runs.
+-- checks of GOTO, GOSUB and EXIT targets (Label not defined, a GOTO into another procedure,
+-- EXIT FOR outside FOR...NEXT) before anything runs.  A GOTO or RESUME into a block marks the
+-- blocks around its label flat (node.flat): qbasic_emit lowers them to labels and gotos.
 --
 -- control(prog) adds: prog.main and proc.tree (the top level with its regions), gosub_lua
 -- (label -> function name) and defs (procdefs and regions in order, with def_label,
@@ -13,6 +14,8 @@ local walk = require "qbasic_walk"
 local M = {}
 
 local function qerr(msg, line) error({ qb = true, msg = msg, line = line }, 0) end
+-- the module's code needs the GOSUB dispatch (below): translate again with prog.dispatch
+local function redo(proc) error({ qb_redo = true, proc = proc and proc.name }, 0) end
 
 -- the Lua label of a QBasic label: L100, L_name
 function M.label_lua(name)
@@ -36,7 +39,7 @@ end
 
 -- Split the top level of a body into plain statements and subroutines (regions); returns the
 -- new top level.  names: label -> Lua function name; proc: the procedure, nil for the module.
-local function split_regions(list, targets, names, proc, handlers)
+local function split_regions(list, targets, names, proc, handlers, dispatching)
   local regions = {}
   local newtop = {}
   local cur = nil
@@ -78,6 +81,7 @@ local function split_regions(list, targets, names, proc, handlers)
     local found = false
     for _, r in ipairs(regions) do if r.label == label then found = true end end
     if not found then
+      if not dispatching then redo(proc) end
       qerr("GOSUB " .. label .. ": the target must be at the top level of the " ..
         (proc and "procedure" or "program"), line)
     end
@@ -97,6 +101,16 @@ local function gosub_regions(prog)
     return names
   end
   local targets = gosub_targets_of(prog.main)
+  -- In dispatch mode (a GOTO between a subroutine and the rest of the module, a GOSUB into a
+  -- block) the module's subroutines stay in its code: GOSUB pushes where to come back and
+  -- jumps, RETURN pops and jumps back (qbasic_emit), so any GOTO may cross them
+  if prog.dispatch then
+    for label, line in pairs(targets) do
+      local l = prog.labels[label]
+      if not l or l.proc then qerr("Label not defined", line) end
+    end
+    prog.gosub_labels, targets = targets, {}
+  end
   -- the error handlers (ON ERROR GOTO label, from anywhere) are subroutines of the module
   local handlers = {}
   local function scan(list)
@@ -113,12 +127,16 @@ local function gosub_regions(prog)
   for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
   prog.handlers = handlers
   prog.gosub_lua = names_for(targets, prog.gns, nil)
-  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil, handlers)
+  prog.main = split_regions(prog.main, targets, prog.gosub_lua, nil, handlers, prog.dispatch)
   for _, proc in ipairs(prog.procs) do
     if proc.tree then
       local t = gosub_targets_of(proc.tree)
+      if proc.dispatch then      -- as the module's dispatch mode, within the procedure
+        names_for(t, proc.ns, proc)
+        proc.gosub_labels, t = t, {}
+      end
       proc.gosub_lua = names_for(t, proc.ns, proc)
-      proc.tree = split_regions(proc.tree, t, proc.gosub_lua, proc)
+      proc.tree = split_regions(proc.tree, t, proc.gosub_lua, proc, nil, proc.dispatch)
     end
   end
 end
@@ -167,29 +185,43 @@ local function check_jumps(prog)
   for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
   prog.goto_targets = goto_targets
 
+  local owner = nil          -- the procedure whose code this is (nil: the module's)
   local block_id = 0
+  local trapping = next(prog.handlers) ~= nil
   local path = {}
+  local block_node = {}    -- block id -> the statement owning the block (FOR, IF, SELECT...)
   local label_at, gotos = {}, {}
   local loops = {}
   local cur_proc = nil
   local function copy_path() local c = {}; for i, v in ipairs(path) do c[i] = v end; return c end
   local body
-  local function inside(list, is_fn, loop)
+  local function inside(list, is_fn, loop, node)
     block_id = block_id + 1
     path[#path + 1] = is_fn and ("fn" .. block_id) or block_id
+    block_node[block_id] = node
+    -- under ON ERROR GOTO, the module's blocks are lowered so that an error in a condition,
+    -- a FOR's bounds or a SELECT's value is trapped where it is computed (qbasic_emit)
+    if node and (trapping or prog.dispatch) and not cur_proc and not in_region then
+      node.flat = true
+    end
+    if node and owner and owner.dispatch then node.flat = true end
     if loop then loops[#loops + 1] = loop end
     body(list)
     if loop then loops[#loops] = nil end
     path[#path] = nil
   end
   local in_region = false    -- inside a GOSUB subroutine of a procedure
-  local function in_function(list, proc, region)
-    local saved_loops, saved_proc, saved_region = loops, cur_proc, in_region
-    loops, cur_proc, in_region = { "fn" }, proc, region
+  local in_sub = false       -- inside any GOSUB subroutine
+  local function in_function(list, proc, region, sub)
+    local saved_loops, saved_proc, saved_region, saved_sub = loops, cur_proc, in_region, in_sub
+    loops, cur_proc, in_region, in_sub = { "fn" }, proc, region, sub
     inside(list, true)
-    loops, cur_proc, in_region = saved_loops, saved_proc, saved_region
+    loops, cur_proc, in_region, in_sub = saved_loops, saved_proc, saved_region, saved_sub
   end
-  local function jump(label, line) gotos[#gotos + 1] = { label = label, path = copy_path(), line = line } end
+  local function jump(label, line)
+    gotos[#gotos + 1] = { label = label, path = copy_path(), line = line, module = not owner,
+      owner = owner }
+  end
   local function exit(st)
     if st.what == "for" or st.what == "do" then
       for i = #loops, 1, -1 do
@@ -200,6 +232,8 @@ local function check_jumps(prog)
         st.line)
     end
     if in_region then
+      -- in dispatch mode the subroutine is in the procedure's code, where EXIT SUB works
+      if owner and not owner.dispatch then redo(owner) end
       qerr("EXIT " .. (st.what == "deffn" and "DEF" or st.what:upper()) .. " inside a GOSUB "
         .. "subroutine: not supported by pointcalc", st.line)
     end
@@ -210,91 +244,137 @@ local function check_jumps(prog)
   end
   local STMT = {}
   function STMT.label(st)
-    if goto_targets[st.name] then label_at[st.name] = { path = copy_path(), line = st.line } end
+    local gl = (owner or prog).gosub_labels
+    if goto_targets[st.name] or prog.resume_targets[st.name] or (gl and gl[st.name]) then
+      label_at[st.name] = { path = copy_path(), line = st.line }
+    end
   end
-  STMT["goto"] = function(st) jump(st.label, st.line) end
+  STMT["goto"] = function(st) if not st.leaves_handler then jump(st.label, st.line) end end
+  local dispatch = prog.dispatch
+  local function gosub_jumps()
+    return (dispatch and not owner and not in_sub) or (owner and owner.dispatch)
+  end
   function STMT.on(st)
-    if not st.gosub then for _, l in ipairs(st.labels) do jump(l, st.line) end end
+    if not st.gosub or gosub_jumps() then
+      for _, l in ipairs(st.labels) do jump(l, st.line) end
+    end
+  end
+  function STMT.gosub(st)
+    if gosub_jumps() then jump(st.label, st.line) end
   end
   STMT.exit = exit
-  STMT["for"] = function(st) inside(st.body, false, "for") end
-  STMT["while"] = function(st) inside(st.body, false, "while") end
-  STMT["do"] = function(st) inside(st.body, false, "do") end
+  STMT["for"] = function(st) inside(st.body, false, "for", st) end
+  STMT["while"] = function(st) inside(st.body, false, "while", st) end
+  STMT["do"] = function(st) inside(st.body, false, "do", st) end
   function STMT.ifb(st)
-    for _, br in ipairs(st.branches) do inside(br.body) end
-    if st.else_body then inside(st.else_body) end
+    for _, br in ipairs(st.branches) do inside(br.body, false, nil, st) end
+    if st.else_body then inside(st.else_body, false, nil, st) end
   end
   function STMT.select(st)
-    for _, c in ipairs(st.cases) do inside(c.body) end
-    if st.else_body then inside(st.else_body) end
+    for _, c in ipairs(st.cases) do inside(c.body, false, nil, st) end
+    if st.else_body then inside(st.else_body, false, nil, st) end
   end
   function STMT.if1(st)
-    inside(st.then_body)
-    if st.else_body then inside(st.else_body) end
+    inside(st.then_body, false, nil, st)
+    if st.else_body then inside(st.else_body, false, nil, st) end
   end
-  function STMT.procdef(st) if st.proc.tree then in_function(st.proc.tree, st.proc) end end
-  function STMT.region(st) in_function(st.body, nil, st.proc ~= nil) end
+  function STMT.procdef(st)
+    if st.proc.tree then owner = st.proc; in_function(st.proc.tree, st.proc); owner = nil end
+  end
+  function STMT.region(st) in_function(st.body, nil, st.proc ~= nil, true) end
+  -- a statement of the module that can fail jumps to each RESUME label from where it is
+  local resume_sites = next(prog.resume_targets) ~= nil
   body = function(list)
     for _, st in ipairs(list) do
       local f = STMT[st.k]
       if f then f(st) end
+      if resume_sites and not cur_proc and not in_sub and st.k ~= "label" then
+        for l in pairs(prog.resume_targets) do
+          gotos[#gotos + 1] = { label = l, path = copy_path(), line = st.line, resume = true }
+        end
+      end
     end
   end
   in_function(prog.main, nil)
 
+  -- A GOTO into a block of the same function (Lua's goto cannot enter a block): each block
+  -- between the label and the part of its path the GOTO shares is lowered to labels and
+  -- conditional gotos (node.flat, qbasic_emit), which puts the label in a block the GOTO can
+  -- reach.  Lowering a block only removes it from paths, so the jumps that were fine stay so.
   for _, g in ipairs(gotos) do
     local l = label_at[g.label]
+    local def = prog.labels[g.label]
+    -- a label of another procedure is not defined where the GOTO is (QBasic's labels are local)
+    if not def or def.proc ~= g.owner then qerr("Label not defined", g.line) end
     if not l then
-      local def = prog.labels[g.label]
-      if not def then qerr("Label not defined", g.line) end
-      qerr("GOTO " .. g.label .. ": jumps into a block or procedure (line " .. def.line
-        .. "); pointcalc translates GOTO only to a label in the same or an enclosing block", g.line)
+      if g.module and not def.proc and not prog.dispatch then redo() end
+      if g.owner and not g.owner.dispatch then redo(g.owner) end
+      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into the error handler "
+        .. "(line " .. def.line .. "): not supported by pointcalc", g.line)
     end
-    local ok = #l.path <= #g.path
-    if ok then
-      for i = 1, #l.path do if l.path[i] ~= g.path[i] then ok = false break end end
+    local common = 0
+    while common < #l.path and common < #g.path and l.path[common + 1] == g.path[common + 1] do
+      common = common + 1
     end
-    if ok then
-      for i = #l.path + 1, #g.path do
-        if type(g.path[i]) == "string" then ok = false end
-      end
-    end
+    local ok = true
+    for i = common + 1, #g.path do if type(g.path[i]) == "string" then ok = false end end
+    for i = common + 1, #l.path do if type(l.path[i]) == "string" then ok = false end end
+    if not ok and g.module and not prog.labels[g.label].proc and not prog.dispatch then redo() end
+    if not ok and g.owner and not g.owner.dispatch then redo(g.owner) end
     if not ok then
-      qerr("GOTO " .. g.label .. ": jumps into a block or another procedure (line "
-        .. l.line .. "); pointcalc translates GOTO only to a label in the same or an enclosing block",
-        g.line)
+      -- (what remains once the dispatch mode keeps the subroutines in their body's code)
+      qerr((g.resume and "RESUME " or "GOTO ") .. g.label .. ": jumps into the error handler "
+        .. "(line " .. l.line .. "): not supported by pointcalc", g.line)
     end
+    for i = common + 1, #l.path do block_node[l.path[i]].flat = true end
   end
 end
 
--- RESUME label: the label must be at the top level of the program (where the statement that
--- failed can reach it with a goto)
+-- RESUME label: the label must be in the module (each statement that can fail jumps to it,
+-- check_jumps)
 local function resume_targets(prog)
-  local top = {}
-  for _, st in ipairs(prog.main) do if st.k == "label" then top[st.name] = true end end
   prog.resume_targets = {}
   local function scan(list)
     walk.stmts(list, function(st)
       if st.k == "resume" and st.label then
-        if not prog.labels[st.label] then qerr("Label not defined", st.line) end
-        if not top[st.label] then
-          qerr("RESUME " .. st.label .. ": pointcalc resumes only at a line at the top level of "
-            .. "the program, not inside a block or subroutine", st.line)
-        end
+        local l = prog.labels[st.label]
+        if not l or l.proc then qerr("Label not defined", st.line) end
         prog.resume_targets[st.label] = true
-        prog.goto_targets[st.label] = true
       end
     end)
   end
   scan(prog.main)
   for _, proc in ipairs(prog.procs) do if proc.tree then scan(proc.tree) end end
+  -- a GOTO from an error handler to the module's code outside it leaves the handler as RESUME
+  -- label does (st.leaves_handler)
+  for _, r in ipairs(prog.main) do
+    if r.k == "region" and r.handler then
+      local own = {}
+      walk.stmts(r.body, function(st) if st.k == "label" then own[st.name] = true end end)
+      walk.stmts(r.body, function(st)
+        local l = st.k == "goto" and prog.labels[st.label]
+        if l and not l.proc and not own[st.label] then
+          st.leaves_handler = true
+          prog.resume_targets[st.label] = true
+        end
+      end)
+    end
+  end
 end
 
-function M.control(prog)
+function M.control(prog, dispatch)
+  dispatch = dispatch or { procs = {} }
+  prog.dispatch = dispatch.module
+  for _, proc in ipairs(prog.procs) do proc.dispatch = dispatch.procs[proc.name] end
   gosub_regions(prog)
   definition_chain(prog)
-  check_jumps(prog)
   resume_targets(prog)
+  check_jumps(prog)
+  for l in pairs(prog.resume_targets) do prog.goto_targets[l] = true end
+  for l in pairs(prog.gosub_labels or {}) do prog.goto_targets[l] = true end
+  for _, proc in ipairs(prog.procs) do
+    for l in pairs(proc.gosub_labels or {}) do prog.goto_targets[l] = true end
+  end
   -- RESTORE label: the label must exist
   local function restores(list)
     walk.stmts(list, function(st)

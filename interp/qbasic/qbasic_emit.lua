@@ -1,6 +1,7 @@
 -- QBasic front end, pass 5: emit.  The resolved program (typed, named, its control flow
 -- checked) becomes Lua source, one function per statement kind in STMT below; expressions are
--- qbasic_emit_expr's, the screen's statements qbasic_emit_gfx's.
+-- qbasic_emit_expr's, the screen's statements qbasic_emit_gfx's, the blocks (loops, IF and
+-- SELECT, structured or lowered to gotos) and the error trap's code qbasic_emit_blocks'.
 --
 -- The Lua keeps the program's lines: the code for source line N sits on Lua line N, followed
 -- by the source line as a comment, so runtime errors name the QBasic line.  Variables of the
@@ -18,10 +19,12 @@ local lex = require "qbasic_lex"
 
 local M = {}
 
-local value, cond, convert, f32, strip = X.value, X.cond, X.convert, X.f32, X.strip
+local value, convert = X.value, X.convert
 
 local label_lua = control.label_lua
 local emit_block
+local B = require "qbasic_emit_blocks"
+local exit_loop, temp, locals_slot, trapped_code = B.exit_loop, B.temp, B.locals_slot, B.trapped_code
 
 -- the Lua function of a GOSUB target: the module's, or the procedure's own
 local function gosub_lua(S, label)
@@ -43,20 +46,6 @@ local function returned(proc)
   if proc.kind == "sub" then return out end
   if proc.kind ~= "function" or out == "" then return proc.result end   -- DEF FN: by value
   return proc.result .. ", " .. out
-end
-
--- EXIT FOR / EXIT DO: break from the innermost loop, else a goto past the loop's end
-local function exit_loop(S, kind)
-  for i = #S.loops, 1, -1 do
-    local l = S.loops[i]
-    if l.kind == kind then
-      if i == #S.loops then return "break" end
-      if not l.exit_label then S.exit_count = S.exit_count + 1; l.exit_label = "exit_" .. S.exit_count end
-      return "goto " .. l.exit_label
-    end
-    if l.kind == "fn" then break end
-  end
-  error("internal: EXIT outside its loop")
 end
 
 local function emit_call(S, st)
@@ -83,174 +72,6 @@ local function emit_call(S, st)
 end
 
 -- the value of a numeric literal, possibly negated, or nil
-local function literal_num(e)
-  e = strip(e)
-  if e.k == "num" then return e.v, e end
-  if e.k == "neg" then
-    local a = strip(e.a)
-    if a.k == "num" then return -a.v, a end
-  end
-end
--- can this literal be written as is for a value of type ty?
-local function literal_fits(v, lit, ty)
-  if ty == "single" then return f32(v) == v end
-  if ty == "double" then return lit.ty == "double" or f32(v) == v end
-  return v == math.floor(v)
-end
-
-local function emit_for(S, node)
-  local line = node.line
-  local v = node.var
-  local vcode = S.prog.lua_name(v)
-  local ty = v.ty
-  local decl_names, decl_vals = {}, {}
-  -- the limit and the step are evaluated once, rounded to the variable's type
-  local lim_code
-  local lv, llit = literal_num(node.to)
-  if lv and literal_fits(lv, llit, ty) then
-    lim_code = value(node.to, 0)
-  else
-    decl_names[#decl_names + 1] = "_to"
-    decl_vals[#decl_vals + 1] = convert(node.to, ty)
-    lim_code = "_to"
-  end
-  local step, step_sign
-  if not node.step then
-    step, step_sign = "1", 1
-  else
-    local sv, slit = literal_num(node.step)
-    if sv then step_sign = sv >= 0 and 1 or -1 end
-    if sv and literal_fits(sv, slit, ty) then
-      step = value(node.step, 0)
-    else
-      decl_names[#decl_names + 1] = "_step"
-      decl_vals[#decl_vals + 1] = convert(node.step, ty)
-      step = "_step"
-    end
-  end
-  local cond
-  if step_sign == 1 then cond = vcode .. " <= " .. lim_code
-  elseif step_sign == -1 then cond = vcode .. " >= " .. lim_code
-  else cond = "for_test(" .. vcode .. ", " .. lim_code .. ", " .. step .. ")" end
-  local head = ""
-  if #decl_names > 0 then
-    head = "do local " .. table.concat(decl_names, ", ") .. " = " .. table.concat(decl_vals, ", ") .. " "
-  end
-  S.E(line, head .. vcode .. " = " .. convert(node.from, ty) .. " while " .. cond .. " do")
-  S.loops[#S.loops + 1] = { kind = "for" }
-  emit_block(S, node.body)
-  local lp = table.remove(S.loops)
-  local incr
-  local sum = vcode .. " + " .. step
-  if step:sub(1, 1) == "-" then sum = vcode .. " - " .. step:sub(2) end
-  if ty == "single" then incr = vcode .. " = csng(" .. sum .. ")"
-  elseif ty == "double" then incr = vcode .. " = " .. sum
-  elseif ty == "int" then incr = vcode .. " = cint(" .. sum .. ")"
-  else incr = vcode .. " = clng(" .. sum .. ")" end
-  local tail = incr .. " end"
-  if lp.exit_label then
-    tail = tail .. " ::" .. lp.exit_label .. "::"
-  end
-  if #decl_names > 0 then tail = tail .. " end" end
-  S.E(node.next_line, tail)
-end
-
-local function emit_while(S, node)
-  S.E(node.line, "while " .. cond(node.cond) .. " do")
-  S.loops[#S.loops + 1] = { kind = "while" }
-  emit_block(S, node.body)
-  table.remove(S.loops)
-  S.E(node.end_line, "end")
-end
-
-local function emit_do(S, node)
-  local top, bottom = node.cond_top, node.cond_bottom
-  if bottom then
-    S.E(node.line, "repeat")
-  elseif top then
-    local c = top.kind == "while" and cond(top.e) or ("not " .. cond(top.e, 12))
-    S.E(node.line, "while " .. c .. " do")
-  else
-    S.E(node.line, "while true do")
-  end
-  S.loops[#S.loops + 1] = { kind = "do" }
-  emit_block(S, node.body)
-  local lp = table.remove(S.loops)
-  local tail
-  if bottom then
-    tail = "until " .. (bottom.kind == "until" and cond(bottom.e) or ("not " .. cond(bottom.e, 12)))
-  else
-    tail = "end"
-  end
-  if lp.exit_label then
-    tail = tail .. " ::" .. lp.exit_label .. "::"
-  end
-  S.E(node.end_line, tail)
-end
-
-local function emit_ifb(S, node)
-  for i, br in ipairs(node.branches) do
-    S.E(br.line, (i == 1 and "if " or "elseif ") .. cond(br.cond) .. " then")
-    emit_block(S, br.body)
-  end
-  if node.else_body then
-    S.E(node.else_line, "else")
-    emit_block(S, node.else_body)
-  end
-  S.E(node.end_line, "end")
-end
-
-local function case_test(t, sel_ty)
-  local function rhs(e)
-    return value(e, 4, true)
-  end
-  if t.lo then
-    return "case >= " .. rhs(t.lo) .. " and case <= " .. rhs(t.hi)
-  end
-  return "case " .. X.RELOP_LUA[t.op] .. " " .. rhs(t.e)
-end
-
-local function emit_select(S, node)
-  local sel = node.expr
-  local ty = sel.ty
-  local selcode = ty == "string" and value(sel, 0) or convert(sel, ty == "double" and "double" or
-    (ty == "int" or ty == "long") and ty or "single")
-  S.E(node.line, "do local case = " .. selcode)
-  local first = true
-  for _, c in ipairs(node.cases) do
-    local tests = {}
-    for _, t in ipairs(c.tests) do
-      t.line = c.line
-      local code = case_test(t, ty)
-      if #c.tests > 1 and t.lo then code = "(" .. code .. ")" end
-      tests[#tests + 1] = code
-    end
-    S.E(c.line, (first and "if " or "elseif ") .. table.concat(tests, " or ") .. " then")
-    first = false
-    emit_block(S, c.body)
-  end
-  if node.else_body then
-    if first then S.E(node.else_line, "do") else S.E(node.else_line, "else") end
-    emit_block(S, node.else_body)
-    S.E(node.end_line, "end end")
-  elseif first then
-    S.E(node.end_line, "end")
-  else
-    S.E(node.end_line, "end end")
-  end
-end
-
-local function emit_if1(S, node)
-  local line = node.line
-  S.E(line, "if " .. cond(node.cond) .. " then")
-  emit_block(S, node.then_body)
-  if node.else_body then
-    S.E(line, "else")
-    emit_block(S, node.else_body)
-  end
-  S.E(line, "end")
-end
-
 local function end_program(S)
   if S.cur_proc or S.cur_region then
     S.uses_stop = true
@@ -280,21 +101,77 @@ end
 function STMT.let(S, st)
   S.E(st.line, X.lvalue(st.target) .. " = " .. X.store(st.expr, st.target))
 end
-STMT["for"], STMT["while"], STMT["do"] = emit_for, emit_while, emit_do
-STMT.ifb, STMT.if1, STMT.select = emit_ifb, emit_if1, emit_select
-STMT["goto"] = function(S, st) S.E(st.line, "goto " .. label_lua(st.label)) end
-function STMT.gosub(S, st) S.E(st.line, gosub_lua(S, st.label) .. "()") end
+STMT["for"], STMT["while"], STMT["do"] = B.emit_for, B.emit_while, B.emit_do
+STMT.ifb, STMT.if1, STMT.select = B.emit_ifb, B.emit_if1, B.emit_select
+STMT["goto"] = function(S, st)
+  if st.leaves_handler then   -- out of the error handler: as RESUME label (qbasic_control)
+    S.E(st.line, "do return resume_ok(" .. X.lua_string(st.label) .. ") end")
+  else
+    S.E(st.line, "goto " .. label_lua(st.label))
+  end
+end
+-- In dispatch mode (qbasic_control) the module's GOSUB is a jump that pushes where to come
+-- back (the label gr<k>), and RETURN pops it and jumps to the dispatch at the end of the
+-- module's code, which jumps back
+local function dispatched(S, label)
+  local gl = (S.cur_proc or S.prog).gosub_labels
+  return gl and gl[label]
+end
+-- the GOSUB stack: the program's, or in a procedure a local one of each call
+local function stack_arg(S) return S.cur_proc and ", _gs" or "" end
+local function gosub_code(S, label, k)
+  if dispatched(S, label) then
+    if S.cur_region then
+      error({ qb = true, line = S.line, msg = "GOSUB " .. label .. " inside an error handler of a "
+        .. "program whose GOTOs cross its GOSUB subroutines: not supported by pointcalc" }, 0)
+    end
+    return "gosub_push(" .. k .. stack_arg(S) .. ") goto " .. label_lua(label)
+  end
+  return gosub_lua(S, label) .. "()"
+end
+local function return_label(S)
+  S.gret_count = S.gret_count + 1
+  S.gret.list[#S.gret.list + 1] = S.gret_count
+  return S.gret_count
+end
+-- the dispatch of RETURN: back after the GOSUB that pushed k (g: the function's GOSUBs)
+local function return_dispatch(g)
+  local t = { "::gret::" }
+  for i, k in ipairs(g.list) do
+    t[#t + 1] = (i == 1 and "if " or "elseif ") .. g.var .. " == " .. k .. " then goto gr" .. k
+  end
+  if #g.list > 0 then t[#t + 1] = "end" end
+  return table.concat(t, " ")
+end
+function STMT.gosub(S, st)
+  S.line = st.line
+  if dispatched(S, st.label) then
+    local k = return_label(S)
+    S.E(st.line, gosub_code(S, st.label, k) .. " ::gr" .. k .. "::")
+  else
+    S.E(st.line, gosub_code(S, st.label))
+  end
+end
 function STMT.on(S, st)
+  S.line = st.line
   local parts = { "do local on = on_index(" .. value(st.expr, 0) .. ")" }
+  local k = st.gosub and (S.cur_proc or S.prog).gosub_labels and return_label(S)
   for i, l in ipairs(st.labels) do
-    local act = st.gosub and (gosub_lua(S, l) .. "()") or ("goto " .. label_lua(l))
+    local act = st.gosub and gosub_code(S, l, k) or ("goto " .. label_lua(l))
     parts[#parts + 1] = (i == 1 and "if" or "elseif") .. " on == " .. i .. " then " .. act
   end
   parts[#parts + 1] = "end end"
+  if k then parts[#parts + 1] = "::gr" .. k .. "::" end
   S.E(st.line, table.concat(parts, " "))
 end
 STMT["return"] = function(S, st)
-  S.E(st.line, S.cur_region and "do return end" or "return_without_gosub()")
+  if S.cur_region then S.E(st.line, "do return end")
+  elseif (S.cur_proc or S.prog).gosub_labels then
+    local g = S.gret
+    if not g.var then g.var = temp(S) end
+    g.used = true
+    S.E(st.line, g.var .. " = gosub_pop(" .. stack_arg(S):sub(3) .. ") goto gret")
+  else S.E(st.line, "return_without_gosub()") end
 end
 STMT["end"] = function(S, st) S.E(st.line, end_program(S)) end
 function STMT.exit(S, st)
@@ -518,7 +395,8 @@ local function emit_proc(S, st)
     decl = decl .. " local " .. table.concat(fns, ", ") .. " goto " .. proc.defs[1].def_label
       .. " ::start::"
   end
-  local saved_proc, saved_loops = S.cur_proc, S.loops
+  local saved_proc, saved_loops, saved_locals, saved_gret = S.cur_proc, S.loops, S.locals, S.gret
+  S.gret = { list = {} }
   S.cur_proc = proc
   S.loops = { { kind = "fn" } }
   if proc.expr then
@@ -529,24 +407,31 @@ local function emit_proc(S, st)
     S.E(line, head .. decl .. " return " .. code .. " end goto "
       .. st.next_def .. " ::" .. st.skip_label .. "::")
   else
-    S.E(line, head .. decl)
+    S.E(line, head)
+    locals_slot(S, line)
+    if proc.gosub_labels then S.E(line, "local _gs = {}") end
+    if decl ~= "" then S.E(line, decl:sub(2)) end
     emit_block(S, proc.tree)
     local ret = returned(proc)
+    if S.gret.used then
+      S.E(proc.end_line, "goto proc_end " .. return_dispatch(S.gret) .. " ::proc_end::")
+    end
     S.E(proc.end_line, (ret ~= "" and ("return " .. ret .. " ") or "") .. "end goto " .. st.next_def
       .. " ::" .. st.skip_label .. "::")
   end
-  S.cur_proc, S.loops = saved_proc, saved_loops
+  S.cur_proc, S.loops, S.locals, S.gret = saved_proc, saved_loops, saved_locals, saved_gret
 end
 
 local function emit_region(S, r)
   local line = r.line
   S.E(line, "goto " .. r.skip_label .. " ::" .. r.def_label .. ":: " .. r.lua .. " = function()")
-  local saved_loops = S.loops
+  local saved_loops, saved_locals = S.loops, S.locals
+  locals_slot(S, line)
   S.loops = { { kind = "fn" } }
   S.cur_region = r
   emit_block(S, r.body)
   S.cur_region = nil
-  S.loops = saved_loops
+  S.loops, S.locals = saved_loops, saved_locals
   local end_line, tail
   if r.open_end then
     -- no RETURN: the subroutine runs to the end of the program, which it ends
@@ -588,33 +473,20 @@ local function emit_trapped(S, st, f)
   f(S, st)
   S.sink = sink
   if #parts == 0 then return end
-  local code = "trap(function() " .. table.concat(parts, " ") .. " end, " .. S.erl .. ")"
-  local labels = {}
-  for l in pairs(S.prog.resume_targets) do labels[#labels + 1] = l end
-  if #labels > 0 then
-    -- RESUME label: the jump is the statement's own (the label is at the top level)
-    table.sort(labels)
-    local t = { "do local _r = " .. code .. " if _r then" }
-    if not S.cur_region then
-      for _, l in ipairs(labels) do
-        t[#t + 1] = "if _r == " .. X.lua_string(l) .. " then goto " .. label_lua(l) .. " end"
-      end
-    end
-    t[#t + 1] = "resume_at(_r) end end"
-    code = table.concat(t, " ")
-  end
-  S.E(st.line, code)
+  S.E(st.line, trapped_code(S, table.concat(parts, " ")))
 end
 
 emit_block = function(S, list)
   for _, st in ipairs(list) do
     local f = STMT[st.k]
     if f then
-      if S.trapping and not S.cur_proc and TRAPPED[st.k] then emit_trapped(S, st, f)
+      if S.trapping and not S.cur_proc and TRAPPED[st.k]
+          and not (st.k == "gosub" and dispatched(S, st.label)) then emit_trapped(S, st, f)
       else f(S, st) end
     elseif not NOTHING[st.k] then error("cannot emit statement " .. st.k) end
   end
 end
+B.install(emit_block)
 
 -- ---- the program ------------------------------------------------------------------------
 -- The emitter's state S: the program, the Lua code of each source line (out, written by E),
@@ -623,20 +495,37 @@ function M.emit(prog, chunkname)
   local out = {}
   for i = 1, #prog.lines do out[i] = {} end
   local S = { prog = prog, out = out, cur_proc = nil, cur_region = nil, exit_count = 0,
-    uses_stop = false, loops = { { kind = "fn" } } }
+    uses_stop = false, loops = { { kind = "fn" } }, locals = {}, temp_count = 0, flat_count = 0,
+    gret_count = 0, gret = { list = {} } }
   function S.sink(line, s) local o = out[line]; o[#o + 1] = s end
   function S.E(line, s) S.sink(line, s) end
   S.trapping, S.erl = next(prog.handlers) ~= nil, "0"
   X.install(prog)
   G.install(prog, S.E)
   emit_block(S, prog.main)
-  return M.assemble(prog, chunkname, out, S.uses_stop)
+  if S.gret.used then S.E(#prog.lines, "do return end " .. return_dispatch(S.gret)) end
+  return M.assemble(prog, chunkname, out, S.uses_stop, S.locals)
+end
+
+-- the code of one line: its pieces, a list of a lowered block's locals (locals_slot) as their
+-- declaration
+local function join(pieces)
+  local t = {}
+  for _, p in ipairs(pieces) do
+    if type(p) == "table" then
+      if #p > 0 then t[#t + 1] = "local " .. table.concat(p, ", ") end
+      if p.table then t[#t + 1] = "local _ft = {}" end
+    else
+      t[#t + 1] = p
+    end
+  end
+  return table.concat(t, " ")
 end
 
 -- ---- assembling the chunk -------------------------------------------------------------------
 -- DATA items by line, the module's strings and arrays (undeclared strings are "", arrays
 -- dimension themselves 0..10), the prelude on line 1 and `run`'s table on the last line
-function M.assemble(prog, chunkname, out, uses_stop)
+function M.assemble(prog, chunkname, out, uses_stop, main_locals)
   local lines = prog.lines
   local info = {}
   -- DATA, by line
@@ -734,10 +623,16 @@ function M.assemble(prog, chunkname, out, uses_stop)
     for _, d in ipairs(prog.direct) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.text) end
     prelude = prelude .. " direct_lines(" .. table.concat(t, ", ") .. ")"
   end
+  if #prog.includes > 0 then
+    local t = {}
+    for _, d in ipairs(prog.includes) do t[#t + 1] = d.line .. ", " .. X.lua_string(d.file) end
+    prelude = prelude .. " skipped_includes(" .. table.concat(t, ", ") .. ")"
+  end
+  if main_locals and #main_locals > 0 then prelude = prelude .. " " .. join({ main_locals }) end
   if #prog.defs > 0 then prelude = prelude .. " goto " .. prog.defs[1].def_label .. " ::start::" end
   local result = {}
   for i = 1, #lines do
-    local code = table.concat(out[i], " ")
+    local code = join(out[i])
     if i == 1 then code = prelude .. (code ~= "" and (" " .. code) or "") end
     if i == #lines then
       code = code .. (code ~= "" and " " or "") .. "end, {" .. table.concat(info, ", ") .. "})"

@@ -1136,6 +1136,15 @@ function M.parse(source)
   local prog = { lines = split_lines(source), main = {}, procs = {}, data = {},
     data_labels = {}, labels = {}, label_list = {}, option_base = 0, types = {} }
   prog.direct = {}
+  -- the metacommand $INCLUDE (in a comment: ' $INCLUDE: 'QB.BI'): pointcalc reads no other
+  -- file while translating; the program is told on standard error when it starts
+  prog.includes = {}
+  for i, l in ipairs(prog.lines) do
+    local low = l:lower()
+    if low:match("^%s*%d*%s*'%s*%$include") or low:match("^%s*%d*%s*rem%s+%$include") then
+      prog.includes[#prog.includes + 1] = { line = i, file = l:match("%$%a+%s*:?%s*'?([^']*)") }
+    end
+  end
   for _, l in ipairs(prog.lines) do
     if l:match("^%s*%d") then prog.numbered = true break end   -- a GW-BASIC listing
   end

@@ -25,8 +25,8 @@ M.names = {
   "cat", "fixstr", "fixed_init", "dim_fixed", "record", "dim_rec", "rec_copy", "erase",
   "mid_set", "static_new", "qprint_using", "trap", "on_error", "resume_ok", "resume_at",
   "error_n", "err_", "erl_", "mki", "mkl", "mks", "mkd", "cvi", "cvl", "cvs", "cvd", "lset",
-  "rset", "direct_lines", "palette_using", "clear", "chain", "common", "run_program",
-  "fprint_using",
+  "rset", "direct_lines", "skipped_includes", "palette_using", "clear", "chain", "common", "run_program",
+  "fprint_using", "next_without_for", "gosub_push", "gosub_pop", "gret", "_gs", "proc_end",
 }
 local screen_rt = require("qbasic_screen")
 local hw_rt = require("qbasic_hw")
@@ -146,11 +146,8 @@ end
 local PURE = {}
 
 -- ---- numbers --------------------------------------------------------------------------
-function PURE.csng(x)
-  local r = f32(x)
-  if r - r ~= 0 then error("Overflow", 2) end
-  return r
-end
+-- (in C: the statement every SINGLE assignment runs; bench/qbasic)
+PURE.csng = qb.csng
 function PURE.cdbl(x)
   if x - x ~= 0 then error("Overflow", 2) end
   return x
@@ -722,9 +719,18 @@ local function install_drawing(E, R)
   function E.clear(names)
     for _, n in ipairs(names) do rawset(E, n, nil) end
   end
+  -- PSET is the statement of drawing loops: the checks of graphics, coord and colour written
+  -- out (bench/qbasic), a whole colour within the mode's attributes taken as it is
+  local tointeger = math.tointeger
   function E.pset(x, y, c)
-    graphics(2)
-    h_pset(coord(x, 2), coord(y, 2), colour(c, 2))
+    if R.mode == 0 then error(IFC, 2) end
+    x, y = f32(x), f32(y)
+    if x - x ~= 0 or y - y ~= 0 then error("Overflow", 2) end
+    if c ~= nil then
+      local k = tointeger(c)
+      if not k or k < 0 or k >= R.ncolors or R.mode == 2 then c = colour(c, 2) else c = k end
+    end
+    h_pset(x, y, c)
   end
   function E.preset(x, y, c)
     graphics(2)
@@ -935,17 +941,20 @@ local function install_errors(E, R)
   end
   -- a statement of the module: run f; on a trappable error with a handler in force, the handler
   -- runs and says what next (RESUME: f again, RESUME NEXT: on, RESUME label: the label)
-  function E.trap(f, erl)
+  -- (block: f computes a block's condition or bounds, and RESUME NEXT returns "next" for the
+  -- code to go past the block; a RESUME label from a GOSUB subroutine comes back as its label)
+  function E.trap(f, erl, block)
     while true do
       local ok, e = pcall(f)
       if ok then return nil end
+      if type(e) == "table" and e.qb_resume then return e.qb_resume end
       local n = R.handler and not R.in_handler and error_number(e)
       if not n then error(e, 0) end
       R.err, R.erl, R.error, R.in_handler = n, erl, e, true
       local what = R.handler()
       R.in_handler, R.err = false, 0
       if what == nil then error("No RESUME", 2) end
-      if what == "next" then return nil end
+      if what == "next" then return block and "next" or nil end
       if what ~= "retry" then return what end
     end
   end
@@ -953,8 +962,10 @@ local function install_errors(E, R)
     if not R.in_handler then error("RESUME without error", 2) end
     return what
   end
+  -- RESUME label from a statement of a GOSUB subroutine: the subroutines end, up to the
+  -- module's statement that called the first, which jumps (QBasic's RESUME drops the GOSUBs)
   function E.resume_at(label)
-    error("RESUME " .. tostring(label) .. ": the line is not where this statement can jump to", 2)
+    error({ qb_resume = label }, 0)
   end
   function E.err_() return R.err end
   function E.erl_() return R.erl end
@@ -1012,6 +1023,29 @@ function M.new(host, chunkname)
   end
   rt.text_mode(nil)
   function E.return_without_gosub() error("RETURN without GOSUB", 2) end
+  function E.next_without_for() error("NEXT without FOR", 2) end
+  -- the GOSUB stack of a module whose subroutines stay in its code (qbasic_emit's dispatch
+  -- mode); as deep as QBasic's stack allows recursion about
+  -- (a procedure's GOSUBs use a stack of the call, st)
+  local gosubs = {}
+  function E.gosub_push(k, st)
+    st = st or gosubs
+    if #st >= 20000 then error("Out of stack space", 2) end
+    st[#st + 1] = k
+  end
+  function E.gosub_pop(st)
+    local k = table.remove(st or gosubs)
+    if not k then error("RETURN without GOSUB", 2) end
+    return k
+  end
+  function E.skipped_includes(...)
+    local t = { ... }
+    for i = 1, #t, 2 do
+      io.stderr:write(chunkname .. ":" .. t[i] .. ": $INCLUDE: '" .. t[i + 1] .. "' not read: "
+        .. "pointcalc does not include other files (a name the program takes from it is "
+        .. "reported where it is used)\n")
+    end
+  end
   function E.direct_lines(...)
     local t = { ... }
     for i = 1, #t, 2 do

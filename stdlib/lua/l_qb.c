@@ -2,6 +2,7 @@
  * module, declared on the argument layer (pcl_args.h).
  *
  *   qb.f32(x)                 x rounded to SINGLE (float32)
+ *   qb.csng(x)                QBasic's CSNG: qb.f32, and the error "Overflow" beyond SINGLE
  *   qb.cint(x), qb.clng(x)    round to nearest, ties to even; second result false on overflow
  *   qb.rnd([n])               QBasic's RND(n) (n defaults to 1)
  *   qb.randomize(n)           QBasic's RANDOMIZE n
@@ -33,6 +34,17 @@ static int l_f32(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     lua_pushnumber(L, qb_f32(a[0].x));
+    return 1;
+}
+
+/* Every SINGLE assignment of a translated program is a CSNG: one C call, the error raised at
+ * the caller's line ("prog.bas:12: Overflow", as QBasic names it). */
+static int l_csng(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    double r = qb_f32(a[0].x);
+    if (!isfinite(r)) return luaL_error(L, "Overflow");
+    lua_pushnumber(L, r);
     return 1;
 }
 
@@ -105,6 +117,7 @@ static int l_range(lua_State *L) {
 
 static const pcl_fn fns[] = {
     PCL_FN("qb.f32", l_f32, x_arg, "number", "x rounded to QBasic's SINGLE (IEEE float32); beyond the SINGLE range (about 3.4E+38) it is +-inf, as a float32 is (translated QBasic reports Overflow)."),
+    PCL_FN("qb.csng", l_csng, x_arg, "number", "QBasic's CSNG: x rounded to SINGLE, and the error \"Overflow\" (at the caller's line) beyond the SINGLE range or for NaN."),
     PCL_FN("qb.cint", l_cint, x_arg, "integer, ok", "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow."),
     PCL_FN("qb.clng", l_clng, x_arg, "integer, ok", "CLNG: round to the nearest integer, ties to even; ok is false on LONG overflow."),
     PCL_FN("qb.range", l_range, range_args, "iterator", "A QBasic FOR loop accumulating in SINGLE: for t in qb.range(0, 1, .001) runs 1001 times, as QBasic does."),

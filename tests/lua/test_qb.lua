@@ -8,6 +8,10 @@ check.eq(qb.f32(0.1), 0.10000000149011612, "f32(.1)")
 check.eq(qb.f32(4 * math.atan(1)), 3.1415927410125732, "f32(pi)")
 check.eq(qb.f32(16777217), 16777216.0, "f32 of 2^24 + 1")
 check.eq(qb.f32(-1e39), -math.huge, "f32 beyond the SINGLE range is -inf (documented)")
+check.eq(qb.csng(0.1), 0.10000000149011612, "csng(.1) is f32(.1)")
+check.eq(qb.csng(-3.4e38), qb.f32(-3.4e38), "csng inside the SINGLE range")
+check.err(function() qb.csng(1e39) end, "Overflow", "csng beyond the SINGLE range")
+check.err(function() qb.csng(0 / 0) end, "Overflow", "csng of NaN")
 
 -- cint/clng: ties to even, overflow flag
 local v, ok = qb.cint(2.5)

@@ -184,4 +184,27 @@ expect_rc 2 "--input of a missing file"
 expect_in err.txt "cannot open 'no-such-file'" "--input of a missing file: message"
 run "$POINTCALC" --input kb.bas
 expect_rc 2 "--input without a program"
+# the programs in the styles found in the wild (wild_*.bas): the last frame of BALLPSET's
+# kind of bouncing ball (SCREEN 13, PSET and PRESET) is a ring round (307, 180), erased
+# elsewhere; SORTDEMO's bars (SCREEN 12), the longest last in colour 6; the VGA DAC entry 1
+# written through the ports (63, 63, 0) colours the box
+expect_eq "$(px320 wild_ballpset.ppm 312 180)" "ffff55" "wild_ballpset: the last ring"
+expect_eq "$(px320 wild_ballpset.ppm 307 180)" "000000" "wild_ballpset: the ring's centre"
+expect_eq "$(px320 wild_ballpset.ppm 160 100)" "000000" "wild_ballpset: the first ring erased"
+expect_eq "$(ppm_pixel wild_sortdemo.ppm 5 224)" "aa5500" "wild_sortdemo: the last bar"
+expect_eq "$(ppm_pixel wild_sortdemo.ppm 5 234)" "000000" "wild_sortdemo: below the bars"
+expect_eq "$(px320 wild_poke.ppm 25 155)" "ffff00" "wild_poke: OUT &H3C9 recolours attribute 1"
+expect_eq "$(px320 wild_poke.ppm 40 100)" "ff0000" "wild_poke: POKE colour 40 at row 100"
+# The lowered blocks (a GOTO into a block, or every block of the module under ON ERROR GOTO)
+# give the structured blocks' output: programs full of FOR, WHILE, DO, IF and SELECT run again
+# with an error handler that is never used print the same
+for name in control for_float32 operators print_format goto_into wild_gwgoto; do
+    { echo "ON ERROR GOTO zzhandler"; cat "$QB_DIR/progs/$name.bas"; echo "END"; echo "zzhandler: RESUME NEXT"; } > "trap_$name.bas"
+    run "$POINTCALC" "trap_$name.bas" -o "trap_$name.ppm" < /dev/null
+    expect_rc 0 "trap_$name"
+    check
+    diff -u "$QB_DIR/progs/$name.out" out.txt >diff.txt || { fail "trap_$name: output differs from $name.out:"; cat diff.txt >&2; }
+done
+# REM $INCLUDE is not read, and the run names it with its line
+expect_in wild_meta.err "wild_meta.bas:2: \$INCLUDE: 'qb.bi' not read" "\$INCLUDE named on standard error"
 finish

@@ -1,5 +1,6 @@
-' EXPECT: 2: GOTO 10: jumps into a block or another procedure (line 4); pointcalc translates GOTO only to a label in the same or an enclosing block
-GOTO 10
-FOR i = 1 TO 3
-10 PRINT i
-NEXT
+' EXPECT: 2: Label not defined
+GOTO inside
+END
+SUB s
+inside:
+END SUB

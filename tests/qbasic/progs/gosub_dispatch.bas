@@ -1,0 +1,25 @@
+10 REM GOTO out of a GOSUB subroutine and into another's range, GOSUB into a block
+20 N = 0
+30 GOSUB 200
+40 PRINT "back"; N
+50 IF N < 3 THEN GOSUB 500
+55 N = 2: GOSUB 200
+60 FOR I = 1 TO 2
+70   IF I = 2 THEN GOSUB 100
+80 NEXT I
+90 GOTO 300
+100 IF I > 0 THEN
+110   PRINT "in block"; I
+120   RETURN
+130 END IF
+200 N = N + 1
+210 PRINT "sub"; N
+220 IF N = 3 THEN GOTO 60
+230 RETURN
+300 PRINT "end"
+310 ON 2 GOSUB 200, 400
+320 PRINT "after on"
+330 END
+400 PRINT "four hundred"
+410 RETURN
+500 PRINT "five": GOTO 210

@@ -1,0 +1,4 @@
+'$DYNAMIC
+REM $INCLUDE: 'qb.bi'
+DIM big(100)
+PRINT UBOUND(big)

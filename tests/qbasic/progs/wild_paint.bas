@@ -1,0 +1,7 @@
+' a VIEW with fill and border, PAINT with a tile pattern
+SCREEN 12
+VIEW (100, 100)-(300, 300), 1, 15
+CIRCLE (100, 100), 80, 14
+PAINT (100, 100), CHR$(&HAA) + CHR$(&H55), 14
+VIEW
+PRINT POINT(200, 200); POINT(201, 200); POINT(99, 200)

@@ -1,0 +1,5 @@
+' BEEP, SOUND and PLAY run silently
+BEEP
+SOUND 440, 2
+PLAY "T120 O3 L8 CDEFGAB O4 C"
+PRINT "music done"
