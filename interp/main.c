@@ -447,8 +447,8 @@ int main(int argc, char **argv) {
     if (repl) host_repl(L, o.watch);
     if (o.qbasic && o.noutputs > 0 && (ok || run_failed)) qbasic_text_picture(L);
     if (ok) ok = write_outputs(L, &o, repl);
-    else if (o.qbasic && run_failed &&
-             (host_limit_stopped || o.noutputs > 0 || pc_canvas_dirty(pcl_canvas(L)))) {
+    else if (o.qbasic && (host_limit_stopped ||
+                          (run_failed && (o.noutputs > 0 || pc_canvas_dirty(pcl_canvas(L)))))) {
         /* a QBasic program that never ends (a screen saver, a bouncing ball) stopped by
          * --timeout or --max-memory, or one stopped by a runtime error it did not trap (its
          * message, with the .bas line, is above): the screen as it stood is its picture */
