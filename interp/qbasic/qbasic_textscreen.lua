@@ -21,8 +21,10 @@ function M.install(rt, tx)
       T.ch[r], T.at[r] = ch, at
     end
   end
-  -- a new layout (SCREEN 0, WIDTH): a blank screen, the cursor home
+  -- a new layout (SCREEN, WIDTH): a blank screen, the cursor home.  Only what is shown after
+  -- the last one is the picture: a graphics program that ends with SCREEN 0 keeps its drawing.
   function T.reset()
+    T.used = false
     clear_rows(1, tx.rows)
     for r = tx.rows + 1, #T.ch do T.ch[r], T.at[r] = nil, nil end
     T.row, T.col, T.pending = tx.top, 1, false

@@ -70,6 +70,15 @@ expect_in text0.svg 'width="640"' "the SVG is 640 wide"
 run "$POINTCALC" text0.bas
 expect_eq "$(ls *.png | wc -l | tr -d ' ')" 1 "no picture without -o"
 
+# a graphics program that returns to SCREEN 0 at its end keeps its drawing as the picture; one
+# that prints in text mode after it gives the text screen
+printf 'PRINT "title"\nSCREEN 12\nLINE (0, 0)-(100, 0), 14\nSCREEN 0\nWIDTH 80\n' > back0.bas
+run "$POINTCALC" back0.bas -o back0.ppm
+expect_eq "$(ppm_pixel back0.ppm 50 0)" "ffff55" "SCREEN 0 at the end: the drawing stays the picture"
+printf 'SCREEN 12\nLINE (0, 0)-(100, 0), 14\nSCREEN 0\nPRINT CHR$(219)\n' > back1.bas
+run "$POINTCALC" back1.bas -o back1.ppm
+expect_eq "$(head -c 15 back1.ppm | tr '\n' ' ')" "P6 640 400 255 " "text printed after SCREEN 0: the text screen"
+
 # ---- a runtime error writes the screen as it stood ---------------------------------------
 printf 'SCREEN 12\nLINE (0, 0)-(10, 0), 14\nx = 1 / 0\nLINE (0, 5)-(10, 5), 14\n' > stop.bas
 run "$POINTCALC" stop.bas -o stop.ppm
