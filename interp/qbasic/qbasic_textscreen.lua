@@ -73,7 +73,9 @@ function M.install(rt, tx)
   function T.picture()
     if not T.used then return end
     local cell = tx.rows == 25 and 16 or 8
-    rt.draw("screen")({ width = tx.cols * 8, height = tx.rows * cell, colors = 16 })
+    -- 43 lines are the EGA's 350 scan lines in 8-line cells (the last 6 lines stay black)
+    local height = tx.rows == 43 and 350 or tx.rows * cell
+    rt.draw("screen")({ width = tx.cols * 8, height = height, colors = 16 })
     local print_at = rt.draw("print_at")
     for r = 1, tx.rows do
       local ch, at = T.ch[r], T.at[r]

@@ -57,6 +57,11 @@ printf 'WIDTH 80, 50\nLOCATE 50, 1: PRINT CHR$(219);\n' > w50.bas
 run "$POINTCALC" w50.bas -o w50.ppm
 expect_eq "$(ppm_pixel w50.ppm 0 392)" "aaaaaa" "WIDTH 80, 50: row 50 is 8 pixels high, from y 392"
 expect_eq "$(ppm_pixel w50.ppm 0 391)" "000000" "WIDTH 80, 50: row 49 untouched"
+printf 'WIDTH , 43\nLOCATE 43, 80: PRINT CHR$(219);\n' > w43.bas
+run "$POINTCALC" w43.bas -o w43.ppm
+expect_eq "$(head -c 15 w43.ppm | tr '\n' ' ')" "P6 640 350 255 " "WIDTH , 43 writes 640x350"
+expect_eq "$(ppm_pixel w43.ppm 639 343)" "aaaaaa" "WIDTH , 43: row 43 ends at y 343"
+expect_eq "$(ppm_pixel w43.ppm 639 344)" "000000" "WIDTH , 43: the last 6 lines stay black"
 printf 'WIDTH 80, 30\n' > w30.bas
 run "$POINTCALC" w30.bas
 expect_rc 1 "WIDTH 80, 30 in text mode"
