@@ -151,11 +151,32 @@ static int color_of(lua_State *L, int idx, pc_canvas *c) {
     return attr;
 }
 
-int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    pc_canvas *c = pcl_active_canvas(L);
+/* The colour at idx on canvas c into out->x, or the reader's message naming c's range. */
+static int read_color_on(lua_State *L, int idx, pc_canvas *c, pcl_val *out) {
     if ((out->x = color_of(L, idx, c)) >= 0) return 1;
     return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1));
+}
+
+int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    return read_color_on(L, idx, pcl_active_canvas(L), out);
+}
+
+/* The colour of this file's statements, which hold the canvas as their upvalue: read on it
+ * without the registry look-up of pcl_read_color, and the canvas left in out->obj, so that
+ * pset finds its canvas once per call (stmt_canvas). */
+static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *c = canvas(L);
+    out->obj = c;
+    return read_color_on(L, idx, c, out);
+}
+
+/* The canvas of a statement whose colour argument is color: the one it was read on, else
+ * (the colour absent) the upvalue's. */
+static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
+    if (color->present) return color->obj;
+    return canvas(L);
 }
 
 /* An attribute of the screen (palette): 0..ncolors-1. */
@@ -217,7 +238,7 @@ static int read_text(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return 1;
 }
 
-#define COLOR(nm) A_SCREEN_COLOR(nm)
+#define COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = stmt_color, .dflt = -1}
 #define OPTNUM(nm, flag, l, h, exp) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | (flag), .lo = l, .hi = h, .dflt = NAN, .expect = exp}
 #define SCALE {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}
 #define SCREEN_FLAG {.name = "mode", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_screen_flag, .expect = "\"screen\", a boolean or nil"}
@@ -296,9 +317,9 @@ static int l_palette(lua_State *L) {
 
 static const pcl_arg dot_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), PCL_END};
 static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
-    pcl_val a[3] = {0};
+    pcl_val a[3];   /* PCL_READ_PAIRS sets what it reads: no 576 bytes zeroed per pixel */
     PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
+    pc_canvas *c = stmt_canvas(L, &a[2]);
     return check(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
 static int l_pset(lua_State *L) {
@@ -328,16 +349,16 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
 
 static int l_line(lua_State *L) {
     if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
-    pcl_val a[7] = {0};
+    pcl_val a[7];
     PCL_READ_PAIRS(L, a);
-    return draw_line(L, canvas(L), a[0].x, a[1].x, a + 2);
+    return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
 }
 
 /* LINE -(x, y): from the graphics cursor (the last point referenced). */
 static int l_line_to(lua_State *L) {
-    pcl_val a[5] = {0};
+    pcl_val a[5];
     PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
+    pc_canvas *c = stmt_canvas(L, &a[2]);
     return draw_line(L, c, c->last_x, c->last_y, a);
 }
 
@@ -355,9 +376,9 @@ static const pcl_arg circle_args[] = {
     COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"),
     OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
 static int l_circle(lua_State *L) {
-    pcl_val a[7] = {0};
+    pcl_val a[7];
     PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
+    pc_canvas *c = stmt_canvas(L, &a[3]);
     return check(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
 }
 

@@ -682,6 +682,13 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
         opts = top;                             /* a trailing option table */
     int limit = opts ? opts - 1 : top, slot = 1, room = 0;
     dimref dim = {0};
+    for (int k = 0; k < n; k++) {   /* the caller's array need not be zeroed (pcl_args.h) */
+        v[k].present = 0;
+        v[k].n = 0;
+        v[k].obj = NULL;
+        v[k].list = NULL;
+        v[k].cap = 0;
+    }
     for (int k = 0, y = 0; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
         int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */

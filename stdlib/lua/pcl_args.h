@@ -126,7 +126,9 @@ void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, i
  * y the argument after it) may each be given as one point P (2-D, or n-D through the camera:
  * pcl_topoint2): each argument is read at the stack slot it falls on and shown by that slot
  * (pset(P(1, 2), 16): argument #2 (color)).  A last declared option table may trail at any
- * slot after the first pair (label(text, P, {size = 9})).  v as for PCL_READ. */
+ * slot after the first pair (label(text, P, {size = 9})).  v as for PCL_READ, but it need not
+ * be initialised (no preset list buffers: the layer clears every value it is given), which
+ * spares pset zeroing its values on every call. */
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n);
 #define PCL_READ_PAIRS(L, v) pcl_read_pairs((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
 /* Inside a reader: raise "NAME: WHERE must be EXPECTED, got VALUE" for the value at idx it is
