@@ -37,17 +37,10 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 
 /* ---- Lua functions called by the core ------------------------------------------------------ */
 
-/* A function, or a table or userdata with __call (what the old checks accepted). */
-static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-#define A_FN(nm, what) {.name = nm, .kind = PCL_ANY, .read = read_callable, .expect = what}
+/* A function, or a value with __call (pcl_callable). */
+#define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
-#define A_FNOPT(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_callable, .expect = what}
+#define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
 
 typedef struct { int ref[4]; int nref; const char *fname; } luaref;   /* fname: for messages */
 
@@ -472,9 +465,10 @@ static double const_blend(void *ud, double v) {
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
     out->n = lua_type(L, idx) == LUA_TNUMBER;
     out->x = lua_tonumber(L, idx);
-    return out->n ? isfinite(out->x) : read_callable(L, idx, a, out);
+    return out->n ? isfinite(out->x) : pcl_callable(L, idx);
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
@@ -811,13 +805,14 @@ static void basisref_free(void *ud) {
 
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
 static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
     if (!lua_istable(L, idx)) return 0;
     size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
     if (len < 1 || len > 16) return 0;
     out->n = (int)len;
     for (int i = 1; i <= out->n; i++) {
         lua_geti(L, idx, i);
-        if (!read_callable(L, -1, a, out)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
+        if (!pcl_callable(L, -1)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
         lua_pop(L, 1);
     }
     return 1;
