@@ -3,6 +3,7 @@
  * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
  * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -58,23 +59,8 @@ static double call1(const luaref *r, int which, double x) {
     lua_State *L = pcl_current_state();
     lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref[which]);
     lua_pushnumber(L, x);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-        pcl_callback_failed(L);
-        return NAN;
-    }
-    int isnum;
-    double y = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) {
-        const char *got = luaL_typename(L, -1);
-        pcl_pushwhere(L);
-        lua_pushfstring(L, "%s: the function must return a number, got %s", r->fname, got);
-        lua_concat(L, 2);
-        pcl_callback_failed(L);
-        lua_pop(L, 1);
-        return NAN;
-    }
-    lua_pop(L, 1);
-    return y;
+    double y;
+    return pcl_call_number(L, 1, r->fname, "the function", &y) == PC_OK ? y : NAN;
 }
 
 static double scalar_cb(double x, void *ud) { return call1(ud, 0, x); }
@@ -772,28 +758,21 @@ static int i_prototype(lua_State *L) {
 typedef struct { int ref; const char *fname; } basisref;   /* fname: for messages */
 
 static int basis_cb(void *ud, double t, int n, double *g) {
+    const basisref *r = ud;
     lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ((basisref *)ud)->ref);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);
     for (int i = 0; i < n; i++) {
-        lua_geti(L, -1 - i, i + 1);
+        char what[40];
+        snprintf(what, sizeof what, "the basis function [%d]", i + 1);
+        lua_geti(L, -1, i + 1);
         lua_pushnumber(L, t);
-        if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-            int st = pcl_callback_failed(L);
-            lua_pop(L, i + 1);
-            return st;
-        }
-        int isnum;
-        g[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum) {
-            pcl_pushwhere(L);
-            lua_pushfstring(L, "%s: the basis function [%d] must return a number", ((basisref *)ud)->fname, i + 1);
-            lua_concat(L, 2);
-            int st = pcl_callback_failed(L);
-            lua_pop(L, i + 2);
+        int st = pcl_call_number(L, 1, r->fname, what, &g[i]);
+        if (st != PC_OK) {
+            lua_pop(L, 1);   /* the basis */
             return st;
         }
     }
-    lua_pop(L, n + 1);
+    lua_pop(L, 1);
     return PC_OK;
 }
 
@@ -985,21 +964,17 @@ static int a_lagrange_mse(lua_State *L) {
 }
 
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
-typedef struct { int ref, n, failed; } nmref;
+typedef struct { int ref, n, failed; const char *fname; } nmref;
 
 static double nm_cb(void *ud, const double *x) {
     nmref *r = ud;
     lua_State *L = pcl_current_state();
     lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);
     for (int i = 0; i < r->n; i++) lua_pushnumber(L, x[i]);
-    if (lua_pcall(L, r->n, 1, 0) != LUA_OK) {
-        pcl_callback_failed(L);
-        r->failed = 1;
-        return NAN;
-    }
-    double y = lua_tonumber(L, -1);
-    lua_pop(L, 1);
-    return y;
+    double y;
+    if (pcl_call_number(L, r->n, r->fname, "the function", &y) == PC_OK) return y;
+    r->failed = 1;
+    return NAN;
 }
 
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
@@ -1009,7 +984,7 @@ static int a_nelder_mead(lua_State *L) {
     pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
     PCL_READ(L, a);
     int n = a[1].n;
-    nmref r = {0, n, 0};
+    nmref r = {0, n, 0, pcl_name(L)};
     lua_pushvalue(L, 1);
     r.ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
