@@ -259,11 +259,8 @@ static int c_five_points(lua_State *L) {
     if (st == PC_EDOMAIN) return pcl_fail(L, "the five points must lie in one plane with no three of them collinear");
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "A, B and C must not be collinear");
     statuscheck(L, st);
-    double u0 = 0, u1 = 1;
-    /* a point whose U is the point at infinity of CA (ED parallel to CA) has |u| huge, not a
-     * range end: it is reached by the whole conic only */
-    for (int i = 0; i < 5; i++)
-        if (isfinite(u[i]) && fabs(u[i]) < 1e6) u0 = fmin(u0, u[i]), u1 = fmax(u1, u[i]);
+    double u0, u1;
+    pc_conic_five_points_span(u, &u0, &u1);
     if (a[6].present) u0 = a[6].x;
     if (a[7].present) u1 = a[7].x;
     if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
