@@ -416,21 +416,9 @@ static int l_det(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
-    int n = (int)luaL_len(L, 1);
-    if (n < 1 || n > PC_MAXDIM + 1) return pcl_argfail(L, 1, "must hold 1 to %d rows, got %d", PC_MAXDIM + 1, n);
+    int n = (int)luaL_len(L, 1), nc;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
-    for (int i = 0; i < n; i++) {
-        if (lua_geti(L, 1, i + 1) != LUA_TTABLE || (int)luaL_len(L, -1) != n)
-            pcl_argfail(L, 1, "row [%d] must be a list of %d numbers, got %s", i + 1, n, pcl_shown(L, lua_gettop(L)));
-        for (int j = 0; j < n; j++) {
-            lua_geti(L, -1, j + 1);
-            m[i * n + j] = lua_tonumber(L, -1);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(m[i * n + j]))
-                pcl_argfail(L, 1, "[%d][%d] must be a finite number, got %s", i + 1, j + 1, pcl_shown(L, lua_gettop(L)));
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
-    }
+    pcl_read_rows(L, 1, n, m, &n, &nc);   /* square: as many numbers a row as rows */
     lua_pushnumber(L, pc_det(n, m));
     return 1;
 }

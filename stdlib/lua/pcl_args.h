@@ -158,6 +158,12 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...);
 /* "NAME: option 'KEY' MESSAGE". */
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...);
 
+/* After PCL_READ: argument #k, a list of 1..PC_MAXDIM + 1 rows of finite numbers (a matrix),
+ * into m row by row; *nr its rows, *nc its columns: ncols, or (ncols 0) the length of row [1],
+ * 2..PC_MAXDIM + 1.  Its messages: "row [2] must be a list of 3 numbers, got {1}" (ncols
+ * given), "row [2] holds 2 numbers, row [1] 3: ...", "entry [2][1] must be a finite number". */
+void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc);
+
 /* The nearest of the candidates (NULL-ended) to name by edit distance (a swap of neighbours is
  * one edit), or NULL if none is near enough to suggest. */
 const char *pcl_nearest(const char *name, const char *const *candidates);
