@@ -128,6 +128,10 @@ int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
     return vfail(L, prefix, fmt, ap);
 }
 
+void pcl_point_rows(const pcl_val *a, int k, int n, double *out) {
+    for (int i = 0; i < k; i++) memcpy(out + i * n, a[i].v, sizeof(double) * (size_t)n);
+}
+
 void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc) {
     int idx = k + (current(L)->self ? 1 : 0), max = PC_MAXDIM + 1;
     int rows = (int)luaL_len(L, idx), cols = ncols;

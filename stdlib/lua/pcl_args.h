@@ -158,6 +158,9 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...);
 /* "NAME: option 'KEY' MESSAGE". */
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...);
 
+/* The Cartesian coordinates of k declared points a[0..k-1] of dimension n into out, rows of
+ * n: what the core takes as a point set. */
+void pcl_point_rows(const pcl_val *a, int k, int n, double *out);
 /* After PCL_READ: argument #k, a list of 1..PC_MAXDIM + 1 rows of finite numbers (a matrix),
  * into m row by row; *nr its rows, *nc its columns: ncols, or (ncols 0) the length of row [1],
  * 2..PC_MAXDIM + 1.  Its messages: "row [2] must be a list of 3 numbers, got {1}" (ncols
