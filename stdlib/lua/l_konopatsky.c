@@ -89,7 +89,7 @@ static int c_ed(lua_State *L) {
     PCL_READ(L, a);
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number (k = 0 collapses the arc to C), got 0");
     int st;
-    return pcl_push_made(L, pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st, NULL);
+    return pcl_push_made(L, pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 static int c_ed_k(lua_State *L) {
@@ -119,7 +119,7 @@ static int c_ceva(lua_State *L) {
     PCL_READ(L, a);
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     int st;
-    return pcl_push_made(L, pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st, NULL);
+    return pcl_push_made(L, pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 static int c_ceva_k(lua_State *L) {
@@ -139,10 +139,10 @@ static int c_parabola(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st, d = a[0].n;
-    if (!a[3].present) return pcl_push_made(L, pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st), st, NULL);
+    if (!a[3].present) return pcl_push_made(L, pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st), &st, NULL);
     if (!(a[3].x > 0 && a[3].x < 1)) return pcl_argfail(L, 4, "must be a number in (0, 1), got %s", pcl_shown(L, 4));
     /* (2.62): A, C, B = arguments 1, 2, 3 with C reached at tC */
-    return pcl_push_made(L, pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st), st, NULL);
+    return pcl_push_made(L, pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
@@ -166,7 +166,7 @@ static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, cons
             pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r0), pcl_pushnum(L, r1));
         pcl_fail(L, "the points or parameters are outside the form's conditions (see :help %s)", pcl_name(L));
     }
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static void need_point(lua_State *L, const pcl_val *v, const char *key) {
@@ -188,10 +188,10 @@ static int c_ellipse(lua_State *L) {
         need_point(L, &a[7], "K");
         if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
             return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
-        return pcl_push_made(L, pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st), st, NULL);
+        return pcl_push_made(L, pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st), &st, NULL);
     }
     need_point(L, &a[1], "C");
-    if (by == 5) return pcl_push_made(L, pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st), st, NULL);
+    if (by == 5) return pcl_push_made(L, pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
     return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
 }
 
@@ -220,7 +220,7 @@ static int c_circle(lua_State *L) {
     int st = pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k);
     if (st == PC_EDOMAIN) return pcl_fail(L, "|CA| must equal |CB| for the arc (or give delta or R)");
     statuscheck(L, st);
-    return pcl_push_made(L, pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st), st, NULL);
+    return pcl_push_made(L, pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st), &st, NULL);
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
@@ -231,7 +231,7 @@ static int c_tilted(lua_State *L) {
     double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
     statuscheck(L, pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
     statuscheck(L, pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
-    pcl_push_made(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), st, NULL);
+    pcl_push_made(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), &st, NULL);
     pcl_pushpoint(L, d, P);
     pcl_pushpoint(L, d, Q);
     if (K[d] == 0) pcl_pushvector(L, d, K);   /* theta = 0: CP parallel to AB */
@@ -257,7 +257,7 @@ static int c_five_points(lua_State *L) {
     if (a[6].present) u0 = a[6].x;
     if (a[7].present) u1 = a[7].x;
     if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
-    pcl_push_made(L, pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st), st, NULL);
+    pcl_push_made(L, pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st), &st, NULL);
     lua_createtable(L, 0, 5);
     for (int i = 0; i < 5; i++) {
         lua_pushnumber(L, u[i]);
@@ -277,7 +277,7 @@ static int c_five_points2(lua_State *L) {
     if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
         return pcl_fail(L, "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)");
     int st;
-    return pcl_push_made(L, pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st), st, NULL);
+    return pcl_push_made(L, pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st), &st, NULL);
 }
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
@@ -289,7 +289,7 @@ static int c_triples(lua_State *L) {
     int st;
     pc_curve *c = pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st);
     if (!c && st == PC_EDOMAIN) return pcl_fail(L, "the lines A2A3 and A4A5 must meet");
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
@@ -299,7 +299,7 @@ static int c_redundant(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
-        return pcl_push_made(L, pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st), st, NULL);
+        return pcl_push_made(L, pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st), &st, NULL);
     if (!a[3].present || !a[4].present) return pcl_argfail(L, a[3].present ? 5 : 4, "must be a finite number, got nil");
     double K[PC_MAXDIM];
     st = pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K);
@@ -369,7 +369,7 @@ static int c_cones(lua_State *L) {
     if (a[6].x == 0 || a[6].x == 1) return pcl_argfail(L, 7, "must be a number other than 0 and 1, got %s", pcl_shown(L, 7));
     pc_curve *c = pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st);
     if (!c && st == PC_ECOLLINEAR) return pcl_fail(L, "A, B, C, D must span a tetrahedron");
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
@@ -382,7 +382,7 @@ static int c_contour(lua_State *L) {
     luaref *r = newref(L, has_d ? 4 : 2, (int[]){4, 5, 6, 7});
     pc_curve *c = pc_contour_arc(a[0].n, a[0].v, a[1].v, a[2].v, real_cb, has_d, luaref_free, r, &st);
     if (!c) luaref_free(r);
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* ==== oneratio ============================================================================== */
@@ -402,7 +402,7 @@ static int o_tetra(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return pcl_push_made(L, pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st, NULL);
+    return pcl_push_made(L, pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
 }
 
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
@@ -415,7 +415,7 @@ static int o_bezier3(lua_State *L) {
         memcpy(cp + i * (d + 1), a[i].v, sizeof(double) * (size_t)d);
         cp[i * (d + 1) + d] = 1;
     }
-    return pcl_push_made(L, pc_curve_bezier(d, 4, cp, &st), st, NULL);
+    return pcl_push_made(L, pc_curve_bezier(d, 4, cp, &st), &st, NULL);
 }
 
 static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
@@ -424,14 +424,14 @@ static int o_smooth(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return pcl_push_made(L, pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st), st, NULL);
+    return pcl_push_made(L, pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st), &st, NULL);
 }
 
 static int o_desargues(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return pcl_push_made(L, pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st, NULL);
+    return pcl_push_made(L, pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
 }
 
 static double const_blend(void *ud, double v) {
@@ -471,7 +471,7 @@ static int o_double_contact(lua_State *L) {
         c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, blend_cb, luaref_free, r, &st);
         if (!c) luaref_free(r);
     }
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
@@ -482,7 +482,7 @@ static int o_closed(lua_State *L) {
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     int st;
-    return pcl_push_made(L, pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st), st, NULL);
+    return pcl_push_made(L, pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st), &st, NULL);
 }
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
@@ -570,7 +570,7 @@ static int i_lagrange(lua_State *L) {
     PCL_READ(L, a);
     int st;
     pc_curve *c = interpolate(L, a, &st);
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
@@ -668,7 +668,7 @@ static int i_conic(lua_State *L) {
     PCL_READ(L, a);
     if (a[3].x == 0 || a[3].x == 1) return pcl_argfail(L, 4, "must be a number other than 0 and 1, got %s", pcl_shown(L, 4));
     int st;
-    return pcl_push_made(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st, NULL);
+    return pcl_push_made(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
@@ -690,7 +690,7 @@ static int i_arc(lua_State *L) {
     need_count(L, k, u, n);
     pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
     if (!c && st == PC_EDOMAIN && u->present) return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
@@ -741,7 +741,7 @@ static int i_prototype(lua_State *L) {
     int st;
     pc_curve *c = pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st);
     if (!c && st == PC_ESINGULAR) return pcl_fail(L, "the exponents must be distinct (singular system)");
-    return pcl_push_made(L, c, st, NULL);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes */
@@ -816,7 +816,7 @@ static int i_basis(lua_State *L) {
         basisref_free(r);
         if (st == PC_ESINGULAR) return pcl_fail(L, "the collocation matrix g_i(t_j) is singular");
     }
-    pcl_push_made(L, c, st, NULL);
+    pcl_push_made(L, c, &st, NULL);
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
     statuscheck(L, pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
@@ -833,7 +833,7 @@ static int i_rational22(lua_State *L) {
     double co[5 * PC_MAXDIM];
     pc_curve *c = pc_interp_rational22(d, a[0].list, co, &st);
     if (!c && st == PC_ESINGULAR) return pcl_fail(L, "a coordinate has no rational (2,2) fit");
-    pcl_push_made(L, c, st, NULL);
+    pcl_push_made(L, c, &st, NULL);
     lua_createtable(L, d, 0);
     for (int k = 0; k < d; k++) {
         pcl_push_numbers(L, 5, co + 5 * k);
@@ -862,7 +862,7 @@ static int a_curve(lua_State *L) {
         if (!isnum || !isfinite(p[2 * j + 1])) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, x));
         lua_pop(L, 1);
     }
-    return pcl_push_made(L, pc_curve_interpolate(2, n, p, NULL, &st), st, NULL);
+    return pcl_push_made(L, pc_curve_interpolate(2, n, p, NULL, &st), &st, NULL);
 }
 
 /* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
