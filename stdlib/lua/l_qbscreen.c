@@ -19,23 +19,6 @@
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
 
-/* The mode of the screen (its size and colours), or 0 for a canvas of another size. */
-static int screen_mode(const pc_canvas *c, pc_mode_info *out) {
-    static const int modes[] = {1, 2, 7, 8, 9, 12, 13};
-    for (size_t i = 0; i < sizeof modes / sizeof *modes; i++) {
-        pc_mode_info_of(modes[i], out);
-        if (out->width == c->width && out->height == c->height && out->ncolors == c->ncolors)
-            return modes[i];
-    }
-    return 0;
-}
-
-/* The character cell height of the screen: its mode's (8, 14, 16), or 16 for other sizes. */
-static int cell_height(const pc_canvas *c) {
-    pc_mode_info m;
-    return screen_mode(c, &m) ? m.cell_h : 16;
-}
-
 /* An attribute of the screen drawn on as a colour (no "#rrggbb": QBasic's numbers) into out->x. */
 static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
@@ -70,7 +53,7 @@ static int l_print_at(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int h = cell_height(c);
+    int h = pc_cell_height(c);
     int row = in_range(L, 1, a[0].x, 1, c->height / h + 1), col = in_range(L, 2, a[1].x, 1, c->width / 8);
     return pcl_check_canvas(L, c, pc_text_cells(c, row, col, a[2].s, lua_rawlen(L, 3), h, (int)a[3].x, (int)a[4].x));
 }
@@ -80,7 +63,7 @@ static int l_scroll_text(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int h = cell_height(c), rows = (c->height + h - 1) / h;
+    int h = pc_cell_height(c), rows = (c->height + h - 1) / h;
     int top = in_range(L, 1, a[0].x, 1, rows), bottom = in_range(L, 2, a[1].x, top, rows);
     return pcl_check_canvas(L, c, pc_text_scroll(c, top, bottom, h, (int)a[2].x));
 }
@@ -169,7 +152,7 @@ static int l_draw(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     pc_draw_state *st = pcl_draw_state(L);
     pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
-    st->aspect = screen_mode(c, &m) ? m.aspect : 1;
+    st->aspect = pc_mode_of_canvas(c, &m) ? m.aspect : 1;
     return pcl_check_canvas(L, c, pc_draw_macro(c, st, a[0].s));
 }
 
