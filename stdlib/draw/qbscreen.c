@@ -31,6 +31,22 @@ int pc_mode_info_of(int mode, pc_mode_info *out) {
     return PC_EARG;
 }
 
+int pc_mode_of_canvas(const pc_canvas *c, pc_mode_info *out) {
+    for (size_t i = 0; i < sizeof modes / sizeof *modes; i++) {
+        const pc_mode_info *m = &modes[i];
+        if (m->width == c->width && m->height == c->height && m->ncolors == c->ncolors) {
+            pc_mode_info_of(m->mode, out);
+            return m->mode;
+        }
+    }
+    return 0;
+}
+
+int pc_cell_height(const pc_canvas *c) {
+    pc_mode_info m;
+    return pc_mode_of_canvas(c, &m) ? m.cell_h : 16;
+}
+
 int pc_canvas_set_mode(pc_canvas *c, int mode) {
     pc_mode_info m;
     if (pc_mode_info_of(mode, &m) != PC_OK)

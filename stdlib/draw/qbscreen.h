@@ -26,6 +26,11 @@ typedef struct {
 /* The facts of SCREEN mode (1, 2, 7, 8, 9, 12, 13); PC_EARG for a mode pointcalc does not have
  * (0, the text mode, has no canvas; 3..6, 8, 10, 11 are other adapters' modes). */
 int pc_mode_info_of(int mode, pc_mode_info *out);
+/* The mode whose size and colours canvas c has, with its facts into out; 0 for a canvas of
+ * another size (screen{width =, height =}). */
+int pc_mode_of_canvas(const pc_canvas *c, pc_mode_info *out);
+/* The character cell height of c: its mode's (8, 14 or 16), or 16 for a canvas of another size. */
+int pc_cell_height(const pc_canvas *c);
 
 /* Reset the canvas to mode's size, colours and default palette (SCREEN mode).  The palettes:
  * SCREEN 1 black, light cyan, light magenta, white (QBasic's palette 1); SCREEN 2 black and

@@ -18,11 +18,6 @@
 
 #define PI 3.14159265358979323846
 
-static void push_curve_or_raise(lua_State *L, pc_curve *c, int st, const char *kind) {
-    if (!c) pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushcurve(L, c, kind);
-}
-
 /* ==== plane.* ================================================================================ */
 
 /* a circle as a table {centre =, r =, d =, e =, f =, curve =} (curve: the whole circle) */
@@ -35,7 +30,7 @@ static void push_circle(lua_State *L, const pc_circle_eq *c) {
     lua_pushnumber(L, c->e); lua_setfield(L, -2, "e");
     lua_pushnumber(L, c->f); lua_setfield(L, -2, "f");
     int st;
-    push_curve_or_raise(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), st, "circle");
+    pcl_push_made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), &st, "circle");
     lua_setfield(L, -2, "curve");
 }
 
@@ -54,7 +49,7 @@ static int l_circle3(lua_State *L) {
     circle_status(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c));
     push_circle(L, &c);
     int st;
-    push_curve_or_raise(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), st, "arc");
+    pcl_push_made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
     lua_setfield(L, -2, "arc");
     return 1;
 }
@@ -103,7 +98,7 @@ static int l_circle_slopes(lua_State *L) {
         push_circle(L, &c[i]);
         pcl_pushpoint(L, 2, ends + 2 * i);
         lua_setfield(L, -2, "finish");
-        push_curve_or_raise(L, pc_curve_arc_dir(c[i].c, c[i].r, A, dir, ends + 2 * i, &st), st, "arc");
+        pcl_push_made(L, pc_curve_arc_dir(c[i].c, c[i].r, A, dir, ends + 2 * i, &st), &st, "arc");
         lua_setfield(L, -2, "arc");
     }
     return n;
@@ -171,7 +166,7 @@ static int l_ellipse(lua_State *L) {
     double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
     if (!(t1 > t0)) return pcl_fail(L, "need th0 < th1");
     int st;
-    push_curve_or_raise(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), st, "ellipse");
+    pcl_push_made(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), &st, "ellipse");
     return 1;
 }
 
@@ -182,7 +177,7 @@ static int l_parabola(lua_State *L) {
     PCL_READ(L, a);
     if (!(a[2].x > a[1].x)) return pcl_fail(L, "need th0 < th1");
     int st;
-    push_curve_or_raise(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), st, "parabola");
+    pcl_push_made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
     return 1;
 }
 
@@ -193,7 +188,7 @@ static int l_hyperbola(lua_State *L) {
     PCL_READ(L, a);
     if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
-    push_curve_or_raise(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), st, "hyperbola");
+    pcl_push_made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
     return 1;
 }
 
@@ -272,7 +267,7 @@ static int l_bspline(lua_State *L) {
     int st, m = a[0].n;
     pc_curve *c = pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st);
     if (!c && st == PC_EDOMAIN) return pcl_fail(L, "a vertex is repeated so often that the knots leave no span");
-    push_curve_or_raise(L, c, st, "bspline");
+    pcl_push_made(L, c, &st, "bspline");
     return 1;
 }
 
@@ -315,7 +310,7 @@ static int l_hermite(lua_State *L) {
     pcl_val a[5] = {0};
     int d = hermite_data(L, a, p, dv), st;
     double u[2] = {0, a[4].x};
-    push_curve_or_raise(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), st, "hermite");
+    pcl_push_made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
     return 1;
 }
 
@@ -358,7 +353,7 @@ static int l_spline(lua_State *L) {
     pc_curve *c = a[6].present ? pc_curve_book_spline_tl(d, n, a[0].list, a[6].list, ends, a[3].v, a[4].v, tg, &st)
                                : pc_curve_book_spline(d, n, a[0].list, a[5].n, ends, a[3].v, a[4].v, tg, &st);
     if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide (a chord of length 0)");
-    push_curve_or_raise(L, c, st, "spline");
+    pcl_push_made(L, c, &st, "spline");
     lua_createtable(L, n, 0);
     for (int i = 0; i < n; i++) {
         pcl_pushvector(L, d, tg + (size_t)i * d);
@@ -375,7 +370,7 @@ static int l_helix(lua_State *L) {
     if (a[0].x == 0) return pcl_argfail(L, 1, "must be a nonzero radius, got 0");
     if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
-    push_curve_or_raise(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), st, "helix");
+    pcl_push_made(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "helix");
     return 1;
 }
 
@@ -416,21 +411,9 @@ static int l_det(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
-    int n = (int)luaL_len(L, 1);
-    if (n < 1 || n > PC_MAXDIM + 1) return pcl_argfail(L, 1, "must hold 1 to %d rows, got %d", PC_MAXDIM + 1, n);
+    int n = (int)luaL_len(L, 1), nc;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
-    for (int i = 0; i < n; i++) {
-        if (lua_geti(L, 1, i + 1) != LUA_TTABLE || (int)luaL_len(L, -1) != n)
-            pcl_argfail(L, 1, "row [%d] must be a list of %d numbers, got %s", i + 1, n, pcl_shown(L, lua_gettop(L)));
-        for (int j = 0; j < n; j++) {
-            lua_geti(L, -1, j + 1);
-            m[i * n + j] = lua_tonumber(L, -1);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(m[i * n + j]))
-                pcl_argfail(L, 1, "[%d][%d] must be a finite number, got %s", i + 1, j + 1, pcl_shown(L, lua_gettop(L)));
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
-    }
+    pcl_read_rows(L, 1, n, m, &n, &nc);   /* square: as many numbers a row as rows */
     lua_pushnumber(L, pc_det(n, m));
     return 1;
 }

@@ -100,47 +100,49 @@ static int c_conic(lua_State *L) {
     return conic_of_curve(L, c);
 }
 
-/* {points = {P, ...}, tangents = {{P, V}, ...}} at 1 (points on top of the stack): five
- * conditions, a tangent at a point given among the points or not */
-static int conditions(lua_State *L, double coef[6]) {
-    double rows[30];
-    int nr = 0;
-    int pts = lua_gettop(L);
-    if (!lua_istable(L, pts)) return pcl_fail(L, "field points must be a list of points");
-    lua_getfield(L, 1, "tangents");
-    int tg = lua_gettop(L);
-    if (!lua_isnil(L, tg) && !lua_istable(L, tg))
-        return pcl_fail(L, "field tangents must be a list of {point, direction} pairs");
-    lua_pushnil(L);
-    while (lua_next(L, 1)) {
-        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
-        if (!k || (strcmp(k, "points") && strcmp(k, "tangents")))
-            return pcl_fail(L, "unknown field %s (the fields are points and tangents)", k ? k : "of a number index");
+/* A tangent condition {P, V}: a 2-D point and a 2-D vector (the one weight rule) into
+ * out->v[0..3]. */
+static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (!lua_istable(L, idx)) return 0;
+    int ok = 1;
+    for (int i = 0; i < 2; i++) {
+        lua_geti(L, idx, i + 1);
+        pcl_value *p = pcl_tovalue(L, -1);
+        double h[3];
+        if (p && p->n == 2) memcpy(h, p->h, sizeof h);
+        ok = ok && p && p->n == 2 && pcl_snap_weight(2, h) == (i ? PC_KIND_VECTOR : PC_KIND_POINT);
+        if (ok) out->v[2 * i] = h[0], out->v[2 * i + 1] = h[1];
         lua_pop(L, 1);
     }
-    int np = (int)lua_rawlen(L, pts), nt = lua_isnil(L, tg) ? 0 : (int)lua_rawlen(L, tg);
+    return ok;
+}
+
+static const pcl_arg tangent_item = {.name = "tangents", .kind = PCL_ANY, .read = read_tangent,
+                                     .expect = "{a 2-D point, a 2-D vector}"};
+static const pcl_arg condition_keys[] = {{.name = "points", .kind = PCL_POINTS, .dim = 2, .lo = 0, .hi = 5},
+                                         {.name = "tangents", .kind = PCL_TABLE}, PCL_END};
+static const pcl_arg condition_table = {.name = "conic", .kind = PCL_OPTIONS, .keys = condition_keys};
+
+/* {points = {P, ...}, tangents = {{P, V}, ...}} at 1: five conditions, a tangent at a point
+ * given among the points or not (quadratic.h, pc_conic_coef_conditions). */
+static int conditions(lua_State *L, double coef[6]) {
+    double pts[10], rows[30];
+    pcl_val k[2] = {{.list = pts, .cap = 10}};
+    pcl_read_options(L, 1, 1, &condition_table, k);
+    lua_getfield(L, 1, "tangents");
+    int tg = lua_gettop(L), np = k[0].n, nt = k[1].present ? (int)lua_rawlen(L, tg) : 0;
     if (np + nt != 5)
         return pcl_fail(L, "five conditions fix a conic, got %d points and %d tangents", np, nt);
-    for (int i = 0; i < np; i++) {
-        lua_geti(L, pts, i + 1);
-        pcl_value *v = pcl_tovalue(L, -1);
-        if (!v || v->n != 2 || fabs(v->h[2] - 1) > PC_WEIGHT_TOL)
-            return pcl_fail(L, "points[%d] must be a 2-D point, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
-        pc_conic_row_point(v->h[0], v->h[1], rows + 6 * nr++);
+    for (int i = 0; i < np; i++) pc_conic_row_point(pts[2 * i], pts[2 * i + 1], rows + 6 * i);
+    for (int i = 0; i < nt; i++) {
+        pcl_val t = {0};
+        lua_geti(L, tg, i + 1);
+        pcl_readone(L, tg + 1, 1, i + 1, &tangent_item, 2, &t);
+        pc_conic_row_tangent(t.v[0], t.v[1], t.v[2], t.v[3], rows + 6 * (np + i));
         lua_pop(L, 1);
     }
-    for (int i = 0; i < nt; i++) {
-        lua_geti(L, tg, i + 1);
-        int pair = lua_gettop(L);
-        lua_geti(L, pair, 1);
-        lua_geti(L, pair, 2);
-        pcl_value *p = pcl_tovalue(L, -2), *d = pcl_tovalue(L, -1);
-        if (!lua_istable(L, pair) || !p || !d || p->n != 2 || d->n != 2 || fabs(p->h[2] - 1) > PC_WEIGHT_TOL ||
-            fabs(d->h[2]) > PC_WEIGHT_TOL)
-            return pcl_fail(L, "tangents[%d] must be {a 2-D point, a 2-D vector}", i + 1);
-        pc_conic_row_tangent(p->h[0], p->h[1], d->h[0], d->h[1], rows + 6 * nr++);
-        lua_settop(L, pair - 1);
-    }
+    lua_pop(L, 1);
     return pc_conic_coef_conditions(rows, coef);
 }
 
@@ -178,21 +180,18 @@ static int l_elements(lua_State *L) {
     if (c) return conic_of_curve(L, c);
     pc_conic_info o;
     int st;
-    if (lua_istable(L, 1) && (lua_getfield(L, 1, "points"), !lua_isnil(L, -1))) {
+    int has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
+    if (lua_istable(L, 1)) lua_pop(L, 1);
+    if (has_points) {
         st = conditions(L, o.coef);
         if (st == PC_ECOLLINEAR) return pcl_fail(L, "the conditions do not fix one conic (they are dependent)");
         if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
     } else if (lua_istable(L, 1)) {
-        lua_pop(L, 1);
-        if (lua_rawlen(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
+        static const pcl_arg coef_arg = A_NUMBERS("conic", 6, 6);
         double q[6];
-        for (int i = 0; i < 6; i++) {
-            lua_geti(L, 1, i + 1);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                return pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
-            q[i] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
+        pcl_val v = {.list = q, .cap = 6};
+        if (lua_rawlen(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
+        pcl_readone(L, 1, 1, 0, &coef_arg, 0, &v);
         st = pc_conic_info_coef(q, &o);
     } else if (pcl_tovalue(L, 1)) {
         /* five points, each read by the one point rule */

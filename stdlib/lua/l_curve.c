@@ -163,6 +163,12 @@ void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
     (void)newcurve(L, c, kind, 0);
 }
 
+int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
+    if (!c) return pcl_raise_status(L, pcl_name(L), *st);
+    pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
+    return 1;
+}
+
 static void *self_curve(lua_State *L, int idx) {
     lcurve *u = tocurve(L, idx);
     return u && u->c ? u : NULL;

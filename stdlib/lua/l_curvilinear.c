@@ -62,7 +62,7 @@ static int l_projection(lua_State *L) {
     PCL_READ(L, a);
     if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
-    for (int i = 0; i < 4; i++) memcpy(c + 2 * i, a[i].v, sizeof(double) * 2);
+    pcl_point_rows(a, 4, 2, c);
     push_projection(L, c);
     return 1;
 }
@@ -217,7 +217,7 @@ static int l_bilinear(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n;
     double *c = lua_newuserdatauv(L, sizeof(double) * 4 * (size_t)d, 0);
-    for (int i = 0; i < 4; i++) memcpy(c + i * d, a[i].v, sizeof(double) * (size_t)d);
+    pcl_point_rows(a, 4, d, c);
     lua_pushinteger(L, d);
     pcl_pushfn(L, &bilinear_fn, 2);
     return 1;

@@ -125,7 +125,7 @@ pc_theme pcl_theme(lua_State *L) {
     return t;
 }
 /* A core call failed: raise its message as a Lua error at the caller's line. */
-static int check(lua_State *L, pc_canvas *c, int rc) {
+int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc) {
     if (rc == PC_OK) return 0;
     /* a core message may start with the core statement's name ("pset: coordinates ...");
      * the declared name replaces it, so preset reports as preset and line_to as line_to */
@@ -151,11 +151,32 @@ static int color_of(lua_State *L, int idx, pc_canvas *c) {
     return attr;
 }
 
-int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    pc_canvas *c = pcl_active_canvas(L);
+/* The colour at idx on canvas c into out->x, or the reader's message naming c's range. */
+static int read_color_on(lua_State *L, int idx, pc_canvas *c, pcl_val *out) {
     if ((out->x = color_of(L, idx, c)) >= 0) return 1;
     return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1));
+}
+
+int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    return read_color_on(L, idx, pcl_active_canvas(L), out);
+}
+
+/* The colour of this file's statements, which hold the canvas as their upvalue: read on it
+ * without the registry look-up of pcl_read_color, and the canvas left in out->obj, so that
+ * pset finds its canvas once per call (stmt_canvas). */
+static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_canvas *c = canvas(L);
+    out->obj = c;
+    return read_color_on(L, idx, c, out);
+}
+
+/* The canvas of a statement whose colour argument is color: the one it was read on, else
+ * (the colour absent) the upvalue's. */
+static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
+    if (color->present) return color->obj;
+    return canvas(L);
 }
 
 /* An attribute of the screen (palette): 0..ncolors-1. */
@@ -217,7 +238,7 @@ static int read_text(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return 1;
 }
 
-#define COLOR(nm) A_SCREEN_COLOR(nm)
+#define COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = stmt_color, .dflt = -1}
 #define OPTNUM(nm, flag, l, h, exp) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | (flag), .lo = l, .hi = h, .dflt = NAN, .expect = exp}
 #define SCALE {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}
 #define SCREEN_FLAG {.name = "mode", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_screen_flag, .expect = "\"screen\", a boolean or nil"}
@@ -255,12 +276,12 @@ static int l_screen(lua_State *L) {
     single_page(b);
     int rc = pc_canvas_reset(b->c, m.width, m.height, m.ncolors);
     if (rc == PC_OK) b->npages = m.pages, b->c->screen_pixels = 1;   /* pixel coordinates */
-    return check(L, b->c, rc);
+    return pcl_check_canvas(L, b->c, rc);
 }
 
 static int l_cls(lua_State *L) {
     pc_canvas *c = canvas(L);
-    return check(L, c, pc_cls(c));
+    return pcl_check_canvas(L, c, pc_cls(c));
 }
 
 static const pcl_arg color_args[] = {COLOR("fg"), COLOR("bg"), PCL_END};
@@ -273,7 +294,7 @@ static int l_color(lua_State *L) {
         lua_pushinteger(L, c->bg);
         return 2;
     }
-    return check(L, c, pc_color(c, a[0].present ? (int)a[0].x : c->fg, (int)a[1].x));
+    return pcl_check_canvas(L, c, pc_color(c, a[0].present ? (int)a[0].x : c->fg, (int)a[1].x));
 }
 
 static const pcl_arg palette_args[] = {
@@ -283,23 +304,23 @@ static const pcl_arg palette_args[] = {
     PCL_END};
 static int l_palette(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (lua_isnone(L, 1)) return check(L, c, pc_palette_reset(c));
+    if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_palette_reset(c));
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     pc_rgb rgb = {(uint8_t)a[1].v[0], (uint8_t)a[1].v[1], (uint8_t)a[1].v[2]};
     /* the palette is the video card's: every page shows it */
     canvas_box *b = box_at(L, PCL_UPVALUE(1));
     for (int i = 0; i < PCL_MAX_PAGES; i++)
-        if (b->pages[i] && b->pages[i] != c) check(L, b->pages[i], pc_palette(b->pages[i], (int)a[0].x, rgb));
-    return check(L, c, pc_palette(c, (int)a[0].x, rgb));
+        if (b->pages[i] && b->pages[i] != c) pcl_check_canvas(L, b->pages[i], pc_palette(b->pages[i], (int)a[0].x, rgb));
+    return pcl_check_canvas(L, c, pc_palette(c, (int)a[0].x, rgb));
 }
 
 static const pcl_arg dot_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), PCL_END};
 static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
-    pcl_val a[3] = {0};
+    pcl_val a[3];   /* PCL_READ_PAIRS sets what it reads: no 576 bytes zeroed per pixel */
     PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
-    return check(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
+    pc_canvas *c = stmt_canvas(L, &a[2]);
+    return pcl_check_canvas(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
 static int l_pset(lua_State *L) {
     if (pcl_scene_pset(L)) return 0;   /* a 3-D point into the camera's scene (pcl_scene.h) */
@@ -321,23 +342,23 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
     double x2 = a[0].x, y2 = a[1].x;
     int color = (int)a[2].x, box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
     if (a[4].present && box != 2)   /* QBasic ignores the style of a filled box */
-        return check(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)((long)a[4].x & 0xffff)));
-    if (box == 0) return check(L, c, pc_line(c, x1, y1, x2, y2, color));
-    return check(L, c, pc_box(c, x1, y1, x2, y2, color, box == 2));
+        return pcl_check_canvas(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)((long)a[4].x & 0xffff)));
+    if (box == 0) return pcl_check_canvas(L, c, pc_line(c, x1, y1, x2, y2, color));
+    return pcl_check_canvas(L, c, pc_box(c, x1, y1, x2, y2, color, box == 2));
 }
 
 static int l_line(lua_State *L) {
     if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
-    pcl_val a[7] = {0};
+    pcl_val a[7];
     PCL_READ_PAIRS(L, a);
-    return draw_line(L, canvas(L), a[0].x, a[1].x, a + 2);
+    return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
 }
 
 /* LINE -(x, y): from the graphics cursor (the last point referenced). */
 static int l_line_to(lua_State *L) {
-    pcl_val a[5] = {0};
+    pcl_val a[5];
     PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
+    pc_canvas *c = stmt_canvas(L, &a[2]);
     return draw_line(L, c, c->last_x, c->last_y, a);
 }
 
@@ -355,10 +376,10 @@ static const pcl_arg circle_args[] = {
     COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"),
     OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
 static int l_circle(lua_State *L) {
-    pcl_val a[7] = {0};
+    pcl_val a[7];
     PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
-    return check(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
+    pc_canvas *c = stmt_canvas(L, &a[3]);
+    return pcl_check_canvas(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
 }
 
 static const pcl_arg paint_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), COLOR("border colour"), PCL_END};
@@ -366,7 +387,7 @@ static int l_paint(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    return check(L, c, pc_paint(c, a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
+    return pcl_check_canvas(L, c, pc_paint(c, a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
 }
 
 static const pcl_arg point_args[] = {A_X("x"), A_NUM("y"), PCL_END};
@@ -384,14 +405,14 @@ static int l_window(lua_State *L) {
     if (lua_isnone(L, 1)) return pc_window_reset(c), 0;
     pcl_val a[5] = {0};
     PCL_READ_PAIRS(L, a);
-    return check(L, c, pc_window(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x));
+    return pcl_check_canvas(L, c, pc_window(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x));
 }
 
 static const pcl_arg view_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),
                                     A_NUM("second corner y"), COLOR("fill"), COLOR("border"), SCREEN_FLAG, PCL_END};
 static int l_view(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (lua_isnone(L, 1)) return check(L, c, pc_view_reset(c));
+    if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_view_reset(c));
     pcl_val a[7] = {0};
     PCL_READ_PAIRS(L, a);
     /* the core takes whole pixels: corners beyond any screen are refused here, before the
@@ -400,7 +421,7 @@ static int l_view(lua_State *L) {
     if (!(fabs(a[0].x) <= lim && fabs(a[1].x) <= lim && fabs(a[2].x) <= lim && fabs(a[3].x) <= lim))
         return pcl_fail(L, "view (%s, %s)-(%s, %s) is not inside the %dx%d screen", pcl_pushnum(L, a[0].x),
                         pcl_pushnum(L, a[1].x), pcl_pushnum(L, a[2].x), pcl_pushnum(L, a[3].x), c->width, c->height);
-    return check(L, c, pc_view(c, (int)lrint(a[0].x), (int)lrint(a[1].x), (int)lrint(a[2].x),
+    return pcl_check_canvas(L, c, pc_view(c, (int)lrint(a[0].x), (int)lrint(a[1].x), (int)lrint(a[2].x),
                                (int)lrint(a[3].x), (int)a[4].x, (int)a[5].x, (int)a[6].x));
 }
 
@@ -477,7 +498,7 @@ static int l_pen(lua_State *L) {
     PCL_READ(L, a);
     pc_canvas *c = canvas(L);
     if (!a[0].present) return pc_pen_reset(c), 0;
-    if (lua_type(L, 1) == LUA_TSTRING) return check(L, c, pc_pen_named(c, lua_tostring(L, 1)));
+    if (lua_type(L, 1) == LUA_TSTRING) return pcl_check_canvas(L, c, pc_pen_named(c, lua_tostring(L, 1)));
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be %s, got %s", pen_args[0].expect, pcl_shown(L, 1));
     pcl_read_options(L, 1, 1, &pen_table, a + 1);
     int physical = (a[1].present && a[1].n) || (a[2].present && a[2].n);   /* lengths with units */
@@ -486,7 +507,7 @@ static int l_pen(lua_State *L) {
     if (physical && a[2].present && !a[2].n)
         return pcl_keyfail(L, "dash", "must hold lengths with their units, as the width is");
     double width = a[1].present ? a[1].x : physical ? PC_PRINT_PEN_PT : 1;
-    return check(L, c, (physical ? pc_pen_physical : pc_pen)(c, width, a[2].v, a[2].dim));
+    return pcl_check_canvas(L, c, (physical ? pc_pen_physical : pc_pen)(c, width, a[2].v, a[2].dim));
 }
 
 /* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at
@@ -582,15 +603,15 @@ static int l_path(lua_State *L) {
     /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
     if (!a[4].present && !heads && pcl_scene_path(L, closed, color)) return 0;
     if (!a[4].present) {
-        check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
+        pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
         if ((heads & PC_ARROW_END) && n >= 2)
-            check(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
-        if ((heads & PC_ARROW_START) && n >= 2) check(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
+            pcl_check_canvas(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
+        if ((heads & PC_ARROW_START) && n >= 2) pcl_check_canvas(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
         return 0;
     }
-    check(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[4].x));
+    pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[4].x));
     if (color < 0) return 0;
-    return check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, 1, color));
+    return pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, 1, color));
 }
 
 /* fill(points [, colour [, rule]]): the closed path through the points (or several, one
@@ -602,7 +623,7 @@ static int l_fill(lua_State *L) {
     PCL_READ(L, a);
     pc_canvas *c = canvas(L);
     size_t n = (size_t)a[0].n;
-    return check(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
+    return pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
 }
 
 /* label(text, P [, direction [, colour [, scale]]] [, {font =, size =, halo =}]): text beside
@@ -620,7 +641,7 @@ static int l_label(lua_State *L) {
     PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
     int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
-    check(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
+    pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
     if (a[6].present) pcl_label_style(L, c, a + 7);
     return 0;
 }
@@ -631,7 +652,7 @@ static int l_text(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    return check(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
+    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
 }
 
 static int canvas_gc(lua_State *L) {

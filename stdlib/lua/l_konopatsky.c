@@ -3,6 +3,7 @@
  * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
  * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -19,13 +20,6 @@
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
 #define MAXNODES (PC_CURVE_MAXDEG + 1)
 
-/* push the curve, or raise the core status (a kept Lua error first) */
-static int push(lua_State *L, pc_curve *c, int st) {
-    if (!c) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushcurve(L, c, pcl_name(L));
-    return 1;
-}
-
 static void statuscheck(lua_State *L, int st) {
     if (st) pcl_raise_status(L, pcl_name(L), st);
 }
@@ -37,17 +31,10 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 
 /* ---- Lua functions called by the core ------------------------------------------------------ */
 
-/* A function, or a table or userdata with __call (what the old checks accepted). */
-static int read_callable(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
-    if (lua_isfunction(L, idx)) return 1;
-    if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
-    lua_pop(L, 1);
-    return 1;
-}
-#define A_FN(nm, what) {.name = nm, .kind = PCL_ANY, .read = read_callable, .expect = what}
+/* A function, or a value with __call (pcl_callable). */
+#define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
-#define A_FNOPT(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_callable, .expect = what}
+#define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
 
 typedef struct { int ref[4]; int nref; const char *fname; } luaref;   /* fname: for messages */
 
@@ -65,23 +52,8 @@ static double call1(const luaref *r, int which, double x) {
     lua_State *L = pcl_current_state();
     lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref[which]);
     lua_pushnumber(L, x);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-        pcl_callback_failed(L);
-        return NAN;
-    }
-    int isnum;
-    double y = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) {
-        const char *got = luaL_typename(L, -1);
-        pcl_pushwhere(L);
-        lua_pushfstring(L, "%s: the function must return a number, got %s", r->fname, got);
-        lua_concat(L, 2);
-        pcl_callback_failed(L);
-        lua_pop(L, 1);
-        return NAN;
-    }
-    lua_pop(L, 1);
-    return y;
+    double y;
+    return pcl_call_number(L, 1, r->fname, "the function", &y) == PC_OK ? y : NAN;
 }
 
 static double scalar_cb(double x, void *ud) { return call1(ud, 0, x); }
@@ -117,7 +89,7 @@ static int c_ed(lua_State *L) {
     PCL_READ(L, a);
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number (k = 0 collapses the arc to C), got 0");
     int st;
-    return push(L, pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
+    return pcl_push_made(L, pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 static int c_ed_k(lua_State *L) {
@@ -147,7 +119,7 @@ static int c_ceva(lua_State *L) {
     PCL_READ(L, a);
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     int st;
-    return push(L, pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
+    return pcl_push_made(L, pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 static int c_ceva_k(lua_State *L) {
@@ -167,10 +139,10 @@ static int c_parabola(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st, d = a[0].n;
-    if (!a[3].present) return push(L, pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st), st);
+    if (!a[3].present) return pcl_push_made(L, pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st), &st, NULL);
     if (!(a[3].x > 0 && a[3].x < 1)) return pcl_argfail(L, 4, "must be a number in (0, 1), got %s", pcl_shown(L, 4));
     /* (2.62): A, C, B = arguments 1, 2, 3 with C reached at tC */
-    return push(L, pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
+    return pcl_push_made(L, pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
@@ -194,7 +166,7 @@ static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, cons
             pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r0), pcl_pushnum(L, r1));
         pcl_fail(L, "the points or parameters are outside the form's conditions (see :help %s)", pcl_name(L));
     }
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static void need_point(lua_State *L, const pcl_val *v, const char *key) {
@@ -216,10 +188,10 @@ static int c_ellipse(lua_State *L) {
         need_point(L, &a[7], "K");
         if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
             return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
-        return push(L, pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st), st);
+        return pcl_push_made(L, pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st), &st, NULL);
     }
     need_point(L, &a[1], "C");
-    if (by == 5) return push(L, pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st), st);
+    if (by == 5) return pcl_push_made(L, pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
     return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
 }
 
@@ -248,7 +220,7 @@ static int c_circle(lua_State *L) {
     int st = pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k);
     if (st == PC_EDOMAIN) return pcl_fail(L, "|CA| must equal |CB| for the arc (or give delta or R)");
     statuscheck(L, st);
-    return push(L, pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st), st);
+    return pcl_push_made(L, pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st), &st, NULL);
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
@@ -259,7 +231,7 @@ static int c_tilted(lua_State *L) {
     double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
     statuscheck(L, pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
     statuscheck(L, pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
-    push(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), st);
+    pcl_push_made(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), &st, NULL);
     pcl_pushpoint(L, d, P);
     pcl_pushpoint(L, d, Q);
     if (K[d] == 0) pcl_pushvector(L, d, K);   /* theta = 0: CP parallel to AB */
@@ -280,15 +252,12 @@ static int c_five_points(lua_State *L) {
     if (st == PC_EDOMAIN) return pcl_fail(L, "the five points must lie in one plane with no three of them collinear");
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "A, B and C must not be collinear");
     statuscheck(L, st);
-    double u0 = 0, u1 = 1;
-    /* a point whose U is the point at infinity of CA (ED parallel to CA) has |u| huge, not a
-     * range end: it is reached by the whole conic only */
-    for (int i = 0; i < 5; i++)
-        if (isfinite(u[i]) && fabs(u[i]) < 1e6) u0 = fmin(u0, u[i]), u1 = fmax(u1, u[i]);
+    double u0, u1;
+    pc_conic_five_points_span(u, &u0, &u1);
     if (a[6].present) u0 = a[6].x;
     if (a[7].present) u1 = a[7].x;
     if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
-    push(L, pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st), st);
+    pcl_push_made(L, pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st), &st, NULL);
     lua_createtable(L, 0, 5);
     for (int i = 0; i < 5; i++) {
         lua_pushnumber(L, u[i]);
@@ -308,7 +277,7 @@ static int c_five_points2(lua_State *L) {
     if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
         return pcl_fail(L, "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)");
     int st;
-    return push(L, pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st), st);
+    return pcl_push_made(L, pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st), &st, NULL);
 }
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
@@ -320,7 +289,7 @@ static int c_triples(lua_State *L) {
     int st;
     pc_curve *c = pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st);
     if (!c && st == PC_EDOMAIN) return pcl_fail(L, "the lines A2A3 and A4A5 must meet");
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
@@ -330,7 +299,7 @@ static int c_redundant(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
-        return push(L, pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st), st);
+        return pcl_push_made(L, pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st), &st, NULL);
     if (!a[3].present || !a[4].present) return pcl_argfail(L, a[3].present ? 5 : 4, "must be a finite number, got nil");
     double K[PC_MAXDIM];
     st = pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K);
@@ -400,7 +369,7 @@ static int c_cones(lua_State *L) {
     if (a[6].x == 0 || a[6].x == 1) return pcl_argfail(L, 7, "must be a number other than 0 and 1, got %s", pcl_shown(L, 7));
     pc_curve *c = pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st);
     if (!c && st == PC_ECOLLINEAR) return pcl_fail(L, "A, B, C, D must span a tetrahedron");
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
@@ -413,7 +382,7 @@ static int c_contour(lua_State *L) {
     luaref *r = newref(L, has_d ? 4 : 2, (int[]){4, 5, 6, 7});
     pc_curve *c = pc_contour_arc(a[0].n, a[0].v, a[1].v, a[2].v, real_cb, has_d, luaref_free, r, &st);
     if (!c) luaref_free(r);
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* ==== oneratio ============================================================================== */
@@ -433,7 +402,7 @@ static int o_tetra(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st);
+    return pcl_push_made(L, pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
 }
 
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
@@ -446,7 +415,7 @@ static int o_bezier3(lua_State *L) {
         memcpy(cp + i * (d + 1), a[i].v, sizeof(double) * (size_t)d);
         cp[i * (d + 1) + d] = 1;
     }
-    return push(L, pc_curve_bezier(d, 4, cp, &st), st);
+    return pcl_push_made(L, pc_curve_bezier(d, 4, cp, &st), &st, NULL);
 }
 
 static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
@@ -455,14 +424,14 @@ static int o_smooth(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st), st);
+    return pcl_push_made(L, pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st), &st, NULL);
 }
 
 static int o_desargues(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return push(L, pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st);
+    return pcl_push_made(L, pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
 }
 
 static double const_blend(void *ud, double v) {
@@ -472,9 +441,10 @@ static double const_blend(void *ud, double v) {
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
     out->n = lua_type(L, idx) == LUA_TNUMBER;
     out->x = lua_tonumber(L, idx);
-    return out->n ? isfinite(out->x) : read_callable(L, idx, a, out);
+    return out->n ? isfinite(out->x) : pcl_callable(L, idx);
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
@@ -501,7 +471,7 @@ static int o_double_contact(lua_State *L) {
         c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, blend_cb, luaref_free, r, &st);
         if (!c) luaref_free(r);
     }
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
@@ -512,7 +482,7 @@ static int o_closed(lua_State *L) {
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     int st;
-    return push(L, pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st), st);
+    return pcl_push_made(L, pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st), &st, NULL);
 }
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
@@ -600,7 +570,7 @@ static int i_lagrange(lua_State *L) {
     PCL_READ(L, a);
     int st;
     pc_curve *c = interpolate(L, a, &st);
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
@@ -698,7 +668,7 @@ static int i_conic(lua_State *L) {
     PCL_READ(L, a);
     if (a[3].x == 0 || a[3].x == 1) return pcl_argfail(L, 4, "must be a number other than 0 and 1, got %s", pcl_shown(L, 4));
     int st;
-    return push(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), st);
+    return pcl_push_made(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
 }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
@@ -720,7 +690,7 @@ static int i_arc(lua_State *L) {
     need_count(L, k, u, n);
     pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
     if (!c && st == PC_EDOMAIN && u->present) return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
@@ -771,35 +741,28 @@ static int i_prototype(lua_State *L) {
     int st;
     pc_curve *c = pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st);
     if (!c && st == PC_ESINGULAR) return pcl_fail(L, "the exponents must be distinct (singular system)");
-    return push(L, c, st);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes */
 typedef struct { int ref; const char *fname; } basisref;   /* fname: for messages */
 
 static int basis_cb(void *ud, double t, int n, double *g) {
+    const basisref *r = ud;
     lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ((basisref *)ud)->ref);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);
     for (int i = 0; i < n; i++) {
-        lua_geti(L, -1 - i, i + 1);
+        char what[40];
+        snprintf(what, sizeof what, "the basis function [%d]", i + 1);
+        lua_geti(L, -1, i + 1);
         lua_pushnumber(L, t);
-        if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-            int st = pcl_callback_failed(L);
-            lua_pop(L, i + 1);
-            return st;
-        }
-        int isnum;
-        g[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum) {
-            pcl_pushwhere(L);
-            lua_pushfstring(L, "%s: the basis function [%d] must return a number", ((basisref *)ud)->fname, i + 1);
-            lua_concat(L, 2);
-            int st = pcl_callback_failed(L);
-            lua_pop(L, i + 2);
+        int st = pcl_call_number(L, 1, r->fname, what, &g[i]);
+        if (st != PC_OK) {
+            lua_pop(L, 1);   /* the basis */
             return st;
         }
     }
-    lua_pop(L, n + 1);
+    lua_pop(L, 1);
     return PC_OK;
 }
 
@@ -811,13 +774,14 @@ static void basisref_free(void *ud) {
 
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
 static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
     if (!lua_istable(L, idx)) return 0;
     size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
     if (len < 1 || len > 16) return 0;
     out->n = (int)len;
     for (int i = 1; i <= out->n; i++) {
         lua_geti(L, idx, i);
-        if (!read_callable(L, -1, a, out)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
+        if (!pcl_callable(L, -1)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
         lua_pop(L, 1);
     }
     return 1;
@@ -852,7 +816,7 @@ static int i_basis(lua_State *L) {
         basisref_free(r);
         if (st == PC_ESINGULAR) return pcl_fail(L, "the collocation matrix g_i(t_j) is singular");
     }
-    push(L, c, st);
+    pcl_push_made(L, c, &st, NULL);
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
     statuscheck(L, pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
@@ -869,7 +833,7 @@ static int i_rational22(lua_State *L) {
     double co[5 * PC_MAXDIM];
     pc_curve *c = pc_interp_rational22(d, a[0].list, co, &st);
     if (!c && st == PC_ESINGULAR) return pcl_fail(L, "a coordinate has no rational (2,2) fit");
-    push(L, c, st);
+    pcl_push_made(L, c, &st, NULL);
     lua_createtable(L, d, 0);
     for (int k = 0; k < d; k++) {
         pcl_push_numbers(L, 5, co + 5 * k);
@@ -898,7 +862,7 @@ static int a_curve(lua_State *L) {
         if (!isnum || !isfinite(p[2 * j + 1])) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, x));
         lua_pop(L, 1);
     }
-    return push(L, pc_curve_interpolate(2, n, p, NULL, &st), st);
+    return pcl_push_made(L, pc_curve_interpolate(2, n, p, NULL, &st), &st, NULL);
 }
 
 /* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
@@ -990,21 +954,17 @@ static int a_lagrange_mse(lua_State *L) {
 }
 
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
-typedef struct { int ref, n, failed; } nmref;
+typedef struct { int ref, n, failed; const char *fname; } nmref;
 
 static double nm_cb(void *ud, const double *x) {
     nmref *r = ud;
     lua_State *L = pcl_current_state();
     lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);
     for (int i = 0; i < r->n; i++) lua_pushnumber(L, x[i]);
-    if (lua_pcall(L, r->n, 1, 0) != LUA_OK) {
-        pcl_callback_failed(L);
-        r->failed = 1;
-        return NAN;
-    }
-    double y = lua_tonumber(L, -1);
-    lua_pop(L, 1);
-    return y;
+    double y;
+    if (pcl_call_number(L, r->n, r->fname, "the function", &y) == PC_OK) return y;
+    r->failed = 1;
+    return NAN;
 }
 
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
@@ -1014,7 +974,7 @@ static int a_nelder_mead(lua_State *L) {
     pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
     PCL_READ(L, a);
     int n = a[1].n;
-    nmref r = {0, n, 0};
+    nmref r = {0, n, 0, pcl_name(L)};
     lua_pushvalue(L, 1);
     r.ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);

@@ -17,12 +17,6 @@
 #include "konop_ch1.h"
 #include "konop_print.h"
 
-/* the Cartesian coordinates of k declared points into out (rows of n) */
-static void rows(const pcl_val *a, int k, int n, double *out) {
-    for (int i = 0; i < k; i++)
-        for (int j = 0; j < n; j++) out[i * n + j] = a[i].v[j];
-}
-
 static int k_area_k(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
@@ -38,7 +32,7 @@ static int k_area_theorem(lua_State *L) {
     PCL_READ(L, a);
     int n = a[0].n;
     double p[6 * PC_MAXDIM];
-    rows(a, 6, n, p);
+    pcl_point_rows(a, 6, n, p);
     pc_k_areas o;
     int st = pc_k_area_theorem(n, p, p + 3 * n, &o);
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle A1A2A3 is flat");
@@ -66,7 +60,7 @@ static int k_o_theorem(lua_State *L) {
     if (a[1].n != n) return pcl_fail(L, "argument #2 (D1) is %d-D, but the polygon is %d-D (mixed dimensions)", a[1].n, n);
     double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
     double d[2 * PC_MAXDIM];
-    rows(a + 1, 2, n, d);
+    pcl_point_rows(a + 1, 2, n, d);
     int st = pc_k_o_theorem(n, m, a[0].list, d, d + n, r, b, &prod);
     if (st == PC_EDOMAIN) return pcl_fail(L, "the line D1D2 passes through a vertex");
     if (st == PC_ESKEW || st == PC_ESAME_LINE)
@@ -118,7 +112,7 @@ static int k_meet_line_plane(lua_State *L) {
     int n = a[0].n;
     if (n < 3) return pcl_fail(L, "a line and a plane meet in 3-D or more, got %d-D points", n);
     double p[5 * PC_MAXDIM], k[PC_MAXDIM + 1], lam, pq[2];
-    rows(a, 5, n, p);
+    pcl_point_rows(a, 5, n, p);
     int st = pc_k_meet_line_plane(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, k, &lam, pq);
     switch (st) {
     case PC_OK:
@@ -144,7 +138,7 @@ static int polar_common(lua_State *L, int rotate) {
     PCL_READ(L, a);
     int n = a[0].n;
     double p[3 * PC_MAXDIM], m[PC_MAXDIM];
-    rows(a, 3, n, p);
+    pcl_point_rows(a, 3, n, p);
     double rho = rotate ? pc_dist(n, p, p + n) : a[3].x, phi = rotate ? a[3].x : a[4].x;
     int st = pc_k_polar(n, p, p + n, p + 2 * n, rho, phi, m);
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "C, A, B are collinear (or coincide): no plane, no angle");

@@ -35,18 +35,12 @@ static int scheme_error(lua_State *L, int st, const char *flat) {
     return pcl_fail(L, "%s", pc_strerror(st));
 }
 
-/* the Cartesian coordinates of k declared points into out (rows of n) */
-static void rows(const pcl_val *a, int k, int n, double *out) {
-    for (int i = 0; i < k; i++)
-        for (int j = 0; j < n; j++) out[i * n + j] = a[i].v[j];
-}
-
 static int l_ed_scheme(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
     int n = a[0].n;
     double p[3 * PC_MAXDIM], o[PC_ED_NPTS * (PC_MAXDIM + 1)];
-    rows(a, 3, n, p);
+    pcl_point_rows(a, 3, n, p);
     if (a[3].x == 0) return pcl_argfail(L, 4, "must not be 0 (the arc collapses to C)");
     int st = pc_conic_ed_scheme(n, p, p + n, p + 2 * n, a[3].x, a[4].x, o);
     if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
@@ -60,7 +54,7 @@ static int l_five_scheme(lua_State *L) {
     PCL_READ(L, a);
     int n = a[0].n;
     double p[5 * PC_MAXDIM], o[PC_P5_NPTS * (PC_MAXDIM + 1)];
-    rows(a, 5, n, p);
+    pcl_point_rows(a, 5, n, p);
     int st = pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, a[5].x, o);
     if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
     static const char *names[PC_P5_NPTS] = {"S", "U", "V", "M", "U_B", "U_D", "R", "U_E"};
@@ -73,7 +67,7 @@ static int l_smooth_scheme(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, n = (int)a[3].x;
     double abc[3 * PC_MAXDIM];
-    rows(a, 3, d, abc);
+    pcl_point_rows(a, 3, d, abc);
     double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
     double *p = buf, *q = buf + n * d, *m = q + n * d;
     int st = pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m);
@@ -110,7 +104,7 @@ static int l_foci(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n;
     double p[3 * PC_MAXDIM], f1[PC_MAXDIM], f2[PC_MAXDIM], e, fp;
-    rows(a, 3, d, p);
+    pcl_point_rows(a, 3, d, p);
     int st = pc_conic_foci(d, p, p + d, p + 2 * d, a[3].n == 1, f1, f2, &e, &fp);
     if (st == PC_EDOMAIN) return pcl_fail(L, "CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()");
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "a semi-axis is zero (A or B coincides with C)");
@@ -127,7 +121,7 @@ static int l_focal_point(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, hyp = a[4].n == 1;
     double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], pab[2];
-    rows(a, 3, d, p);
+    pcl_point_rows(a, 3, d, p);
     int st = pc_conic_focal_point(d, p, p + d, p + 2 * d, hyp, a[3].x, o, pab);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "CA and CB must be perpendicular semi-axes%s", hyp ? "" : ", CA the major one (the foci on it)");
@@ -145,7 +139,7 @@ static int l_ceva_scheme(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n;
     double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], t3, r;
-    rows(a, 3, d, p);
+    pcl_point_rows(a, 3, d, p);
     int st = pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, a[3].x, a[4].x, o, &t3, &r);
     if (st == PC_EDOMAIN) return pcl_argfail(L, 4, "must not be 0");
     if (st == PC_EPOLE) return pcl_fail(L, "the arc is at infinity at t = %s", pcl_pushnum(L, a[4].x));

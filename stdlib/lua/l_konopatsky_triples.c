@@ -39,13 +39,16 @@ static int l_scheme(lua_State *L) {
         if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
         const char *s = lua_tostring(L, -2);
         pcl_value *v = pcl_tovalue(L, -1);
-        if (!v || v->n < 2 || (dim && v->n != dim) || v->h[v->n] != 1)
+        double h[PC_MAXDIM + 1];
+        if (v) memcpy(h, v->h, sizeof(double) * (size_t)(v->n + 1));
+        /* the one weight rule: within 1e-9 of 1 is a point (pcl_snap_weight) */
+        if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
             return pcl_fail(L, "points.%s must be a %s point", s, dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
         dim = v->n;
         int i = index_of(&nm, s);
         if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
         known[i] = 1;
-        memcpy(pts + i * dim, v->h, sizeof(double) * (size_t)dim);
+        memcpy(pts + i * dim, h, sizeof(double) * (size_t)dim);
         lua_pop(L, 1);
     }
     if (!dim) return pcl_fail(L, "field points is empty");

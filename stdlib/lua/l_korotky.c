@@ -86,11 +86,6 @@ static int knot_error(lua_State *L, int st, int bad) {
     return pcl_statuserror(L, pcl_name(L), st, NULL);
 }
 
-static void push_new_curve(lua_State *L, pc_curve *c, int st, const char *kind) {
-    if (!c) pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushcurve(L, c, kind);
-}
-
 /* ---- polynomial spline -------------------------------------------------------------------- */
 
 static const char *const ENDS[] = {"natural", "clamped", NULL};
@@ -109,7 +104,7 @@ static int l_poly_spline(lua_State *L) {
     int bad = -1, st = pc_poly_spline(n, x, y, clamped ? PC_END_CLAMPED : PC_END_NATURAL, a[3].x, a[4].x, coef, &bad);
     if (st == PC_EDOMAIN) return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
     if (st != PC_OK) return knot_error(L, st, bad);
-    push_new_curve(L, pc_poly_spline_curve(n, x, coef, &st), st, "korotky.poly_spline");
+    pcl_push_made(L, pc_poly_spline_curve(n, x, coef, &st), &st, "korotky.poly_spline");
     lua_createtable(L, n - 1, 0);
     for (int i = 0; i < n - 1; i++) {
         pcl_push_numbers(L, 4, coef + 4 * i);
@@ -158,7 +153,7 @@ static int l_ferguson_lambda(lua_State *L) {
     int bad = -1, st = pc_ferguson_lambda(2, n, p, TA, TE, lam, dout, din, &bad);
     if (st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
     if (st != PC_OK) return knot_error(L, st, bad);
-    push_new_curve(L, pc_curve_hermite(2, n, p, dout, din, NULL, 0, &st), st, "korotky.ferguson_lambda");
+    pcl_push_made(L, pc_curve_hermite(2, n, p, dout, din, NULL, 0, &st), &st, "korotky.ferguson_lambda");
     return 1;
 }
 
@@ -180,7 +175,7 @@ static int l_ferguson_tangents(lua_State *L) {
     if (a[5].present) memcpy(mags + 1, start, sizeof(double) * (size_t)(2 * n - 4));
     int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
-    push_new_curve(L, pc_ferguson_curve(n, p, T, mags, &st), st, "korotky.ferguson");
+    pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
     return 2;
 }
@@ -200,7 +195,7 @@ static int l_ferguson_substitution(lua_State *L) {
     mags[1] = a[3].x;
     int bad = -1, st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
-    push_new_curve(L, pc_ferguson_curve(n, p, T, mags, &st), st, "korotky.ferguson");
+    pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
     lua_createtable(L, n - 2, 0);
     for (int i = 0; i < n - 2; i++) {
@@ -250,7 +245,7 @@ static int l_elastic(lua_State *L) {
         return pcl_fail(L, "a length needs a free node: two points with one piece are a segment");
     if (!c && st == PC_EDIM)
         return pcl_fail(L, "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
-    push_new_curve(L, c, st, "korotky.elastic");
+    pcl_push_made(L, c, &st, "korotky.elastic");
     lua_pushnumber(L, E);
     return 2;
 }

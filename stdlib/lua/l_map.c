@@ -146,24 +146,7 @@ static int l_matrix_ctor(lua_State *L) {
         return pcl_argfail(L, 1, "holds %d rows; a map of n-D to m-D takes (m + 1) rows of n + 1 numbers "
                            "(\"row\": n + 1 rows of m + 1), n and m 1..%d", nr, PC_MAXDIM);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
-    for (int i = 1; i <= nr; i++) {
-        if (lua_geti(L, 1, i) != LUA_TTABLE)
-            return pcl_argfail(L, 1, "row [%d] must be a table of numbers, got %s", i, pcl_shown(L, lua_gettop(L)));
-        int len = (int)luaL_len(L, -1);
-        if (i == 1 && (len < 2 || len > PC_MAXDIM + 1))
-            return pcl_argfail(L, 1, "row [1] holds %d numbers; a homogeneous matrix has 2..%d columns", len, PC_MAXDIM + 1);
-        if (i == 1) nc = len;
-        else if (len != nc) return pcl_argfail(L, 1, "row [%d] holds %d numbers, row [1] %d: the rows must be of one length", i, len, nc);
-        for (int j = 1; j <= nc; j++) {
-            lua_geti(L, -1, j);
-            double v = lua_tonumber(L, -1);
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(v))
-                return pcl_argfail(L, 1, "entry [%d][%d] must be a finite number, got %s", i, j, pcl_shown(L, lua_gettop(L)));
-            m[(i - 1) * nc + (j - 1)] = v;
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
-    }
+    pcl_read_rows(L, 1, 0, m, &nr, &nc);
     pc_map f;
     int st = pc_map_from_matrix(&f, rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec);
     if (st == PC_ESINGULAR) return pcl_fail(L, "the zero matrix is no map (it sends every point nowhere)");

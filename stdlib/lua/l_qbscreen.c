@@ -19,32 +19,6 @@
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
 
-/* A core call failed: its message under the declared name (the core's own name replaced). */
-static int check(lua_State *L, pc_canvas *c, int rc) {
-    if (rc == PC_OK) return 0;
-    const char *msg = c->error, *colon = strstr(msg, ": ");
-    if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg))
-        msg = colon + 2;
-    return pcl_fail(L, "%s", msg);
-}
-
-/* The mode of the screen (its size and colours), or 0 for a canvas of another size. */
-static int screen_mode(const pc_canvas *c, pc_mode_info *out) {
-    static const int modes[] = {1, 2, 7, 8, 9, 12, 13};
-    for (size_t i = 0; i < sizeof modes / sizeof *modes; i++) {
-        pc_mode_info_of(modes[i], out);
-        if (out->width == c->width && out->height == c->height && out->ncolors == c->ncolors)
-            return modes[i];
-    }
-    return 0;
-}
-
-/* The character cell height of the screen: its mode's (8, 14, 16), or 16 for other sizes. */
-static int cell_height(const pc_canvas *c) {
-    pc_mode_info m;
-    return screen_mode(c, &m) ? m.cell_h : 16;
-}
-
 /* An attribute of the screen drawn on as a colour (no "#rrggbb": QBasic's numbers) into out->x. */
 static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
@@ -81,9 +55,9 @@ static int l_print_at(lua_State *L) {
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     /* the mode's cells, or those asked for: text mode's 43 and 50 lines use the 8x8 font */
-    int h = a[5].present ? in_range(L, 6, a[5].x, 8, 16) : cell_height(c);
+    int h = a[5].present ? in_range(L, 6, a[5].x, 8, 16) : pc_cell_height(c);
     int row = in_range(L, 1, a[0].x, 1, c->height / h + 1), col = in_range(L, 2, a[1].x, 1, c->width / 8);
-    return check(L, c, pc_text_cells(c, row, col, a[2].s, lua_rawlen(L, 3), h, (int)a[3].x, (int)a[4].x));
+    return pcl_check_canvas(L, c, pc_text_cells(c, row, col, a[2].s, lua_rawlen(L, 3), h, (int)a[3].x, (int)a[4].x));
 }
 
 static const pcl_arg scroll_args[] = {INT("top row"), INT("bottom row"), ATTR("background colour"), PCL_END};
@@ -91,9 +65,9 @@ static int l_scroll_text(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int h = cell_height(c), rows = (c->height + h - 1) / h;
+    int h = pc_cell_height(c), rows = (c->height + h - 1) / h;
     int top = in_range(L, 1, a[0].x, 1, rows), bottom = in_range(L, 2, a[1].x, top, rows);
-    return check(L, c, pc_text_scroll(c, top, bottom, h, (int)a[2].x));
+    return pcl_check_canvas(L, c, pc_text_scroll(c, top, bottom, h, (int)a[2].x));
 }
 
 /* ---- blocks ------------------------------------------------------------------------------ */
@@ -148,7 +122,7 @@ static int l_get_block(lua_State *L) {
     bb->self = PCL_SELF_TAG(bb, &BLOCK_TAG);
     bb->b = NULL;
     luaL_setmetatable(L, BLOCK_MT);
-    check(L, c, pc_get_block(c, a[0].x, a[1].x, a[2].x, a[3].x, &bb->b));
+    pcl_check_canvas(L, c, pc_get_block(c, a[0].x, a[1].x, a[2].x, a[3].x, &bb->b));
     bb->bytes = pc_block_bytes(c, bb->b->w, bb->b->h);
     return 1;
 }
@@ -168,7 +142,7 @@ static int l_put_block(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ_PAIRS(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    return check(L, c, pc_put_block(c, a[0].x, a[1].x, a[2].obj, a[3].n));
+    return pcl_check_canvas(L, c, pc_put_block(c, a[0].x, a[1].x, a[2].obj, a[3].n));
 }
 
 /* ---- DRAW, pages, PMAP ------------------------------------------------------------------- */
@@ -180,8 +154,8 @@ static int l_draw(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     pc_draw_state *st = pcl_draw_state(L);
     pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
-    st->aspect = screen_mode(c, &m) ? m.aspect : 1;
-    return check(L, c, pc_draw_macro(c, st, a[0].s));
+    st->aspect = pc_mode_of_canvas(c, &m) ? m.aspect : 1;
+    return pcl_check_canvas(L, c, pc_draw_macro(c, st, a[0].s));
 }
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
@@ -193,8 +167,8 @@ static int l_paint_tile(lua_State *L) {
     PCL_READ_PAIRS(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     pc_tile t;
-    check(L, c, pc_tile_from_bytes(c, (const unsigned char *)a[2].s, (size_t)a[2].n, &t));
-    return check(L, c, pc_paint_tile(c, a[0].x, a[1].x, &t, (int)a[3].x));
+    pcl_check_canvas(L, c, pc_tile_from_bytes(c, (const unsigned char *)a[2].s, (size_t)a[2].n, &t));
+    return pcl_check_canvas(L, c, pc_paint_tile(c, a[0].x, a[1].x, &t, (int)a[3].x));
 }
 
 static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
@@ -212,7 +186,7 @@ static int l_pcopy(lua_State *L) {
     PCL_READ(L, a);
     int n = pcl_npages(L), from = in_range(L, 1, a[0].x, 0, n - 1), to = in_range(L, 2, a[1].x, 0, n - 1);
     pc_canvas *src = pcl_page(L, from), *dst = pcl_page(L, to);
-    return check(L, dst, pc_canvas_copy_picture(dst, src));
+    return pcl_check_canvas(L, dst, pc_canvas_copy_picture(dst, src));
 }
 
 static const pcl_arg pmap_args[] = {A_NUM("value"), A_INT("function", 0, 3), PCL_END};

@@ -128,6 +128,37 @@ int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
     return vfail(L, prefix, fmt, ap);
 }
 
+void pcl_point_rows(const pcl_val *a, int k, int n, double *out) {
+    for (int i = 0; i < k; i++) memcpy(out + i * n, a[i].v, sizeof(double) * (size_t)n);
+}
+
+void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc) {
+    int idx = k + (current(L)->self ? 1 : 0), max = PC_MAXDIM + 1;
+    int rows = (int)luaL_len(L, idx), cols = ncols;
+    if (rows < 1 || rows > max) pcl_argfail(L, k, "must hold 1 to %d rows, got %d", max, rows);
+    for (int i = 1; i <= rows; i++) {
+        int t = lua_geti(L, idx, i), len = t == LUA_TTABLE ? (int)luaL_len(L, -1) : -1;
+        if (ncols && len != ncols)
+            pcl_argfail(L, k, "row [%d] must be a list of %d numbers, got %s", i, ncols, pcl_shown(L, lua_gettop(L)));
+        if (len < 0) pcl_argfail(L, k, "row [%d] must be a table of numbers, got %s", i, pcl_shown(L, lua_gettop(L)));
+        if (i == 1 && !ncols && (len < 2 || len > max))
+            pcl_argfail(L, k, "row [1] holds %d numbers; a matrix here has 2..%d columns", len, max);
+        if (i == 1) cols = len;
+        if (len != cols) pcl_argfail(L, k, "row [%d] holds %d numbers, row [1] %d: the rows must be of one length", i, len, cols);
+        for (int j = 1; j <= cols; j++) {
+            lua_geti(L, -1, j);
+            double v = lua_tonumber(L, -1);
+            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(v))
+                pcl_argfail(L, k, "entry [%d][%d] must be a finite number, got %s", i, j, pcl_shown(L, lua_gettop(L)));
+            m[(i - 1) * cols + (j - 1)] = v;
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+    }
+    *nr = rows;
+    *nc = cols;
+}
+
 /* ---- nearest names ------------------------------------------------------------------------ */
 
 /* Edit distance, case-insensitive, a swap of neighbours counting as one edit (lrep -> lerp). */
@@ -682,6 +713,13 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
         opts = top;                             /* a trailing option table */
     int limit = opts ? opts - 1 : top, slot = 1, room = 0;
     dimref dim = {0};
+    for (int k = 0; k < n; k++) {   /* the caller's array need not be zeroed (pcl_args.h) */
+        v[k].present = 0;
+        v[k].n = 0;
+        v[k].obj = NULL;
+        v[k].list = NULL;
+        v[k].cap = 0;
+    }
     for (int k = 0, y = 0; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
         int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */

@@ -126,7 +126,9 @@ void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, i
  * y the argument after it) may each be given as one point P (2-D, or n-D through the camera:
  * pcl_topoint2): each argument is read at the stack slot it falls on and shown by that slot
  * (pset(P(1, 2), 16): argument #2 (color)).  A last declared option table may trail at any
- * slot after the first pair (label(text, P, {size = 9})).  v as for PCL_READ. */
+ * slot after the first pair (label(text, P, {size = 9})).  v as for PCL_READ, but it need not
+ * be initialised (no preset list buffers: the layer clears every value it is given), which
+ * spares pset zeroing its values on every call. */
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n);
 #define PCL_READ_PAIRS(L, v) pcl_read_pairs((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
 /* Inside a reader: raise "NAME: WHERE must be EXPECTED, got VALUE" for the value at idx it is
@@ -155,6 +157,15 @@ int pcl_fail(lua_State *L, const char *fmt, ...);
 int pcl_argfail(lua_State *L, int k, const char *fmt, ...);
 /* "NAME: option 'KEY' MESSAGE". */
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...);
+
+/* The Cartesian coordinates of k declared points a[0..k-1] of dimension n into out, rows of
+ * n: what the core takes as a point set. */
+void pcl_point_rows(const pcl_val *a, int k, int n, double *out);
+/* After PCL_READ: argument #k, a list of 1..PC_MAXDIM + 1 rows of finite numbers (a matrix),
+ * into m row by row; *nr its rows, *nc its columns: ncols, or (ncols 0) the length of row [1],
+ * 2..PC_MAXDIM + 1.  Its messages: "row [2] must be a list of 3 numbers, got {1}" (ncols
+ * given), "row [2] holds 2 numbers, row [1] 3: ...", "entry [2][1] must be a finite number". */
+void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc);
 
 /* The nearest of the candidates (NULL-ended) to name by edit distance (a swap of neighbours is
  * one edit), or NULL if none is near enough to suggest. */

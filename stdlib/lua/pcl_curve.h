@@ -13,6 +13,11 @@ pc_curve *pcl_tocurve(lua_State *L, int idx);
 pc_surface *pcl_tosurface(lua_State *L, int idx);
 /* Push a curve object owning the reference c (kind: the constructor's name, static). */
 void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
+/* Push the curve a core constructor made (kind as above; NULL: the running function's name),
+ * or, when it made none (c NULL), raise its status *st (a kept callback error first).  1.
+ * st by address: pcl_push_made(L, pc_x(..., &st), &st, k) reads it after pc_x has set it
+ * (C leaves the order of evaluating arguments open). */
+int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind);
 /* Push a surface object owning the reference s (not NULL; kind as for curves). */
 void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind);
 

@@ -17,5 +17,8 @@ pc_canvas *pcl_page(lua_State *L, int page);
 /* SCREEN , , apage, vpage: draw on page `active`, show page `visual` (both valid pages). */
 void pcl_set_pages(lua_State *L, int active, int visual);
 pc_draw_state *pcl_draw_state(lua_State *L);
+/* A core call on canvas c returned rc: nothing if PC_OK, else its message raised under the
+ * running function's declared name (a core statement's own name replaced: "pset: ..."). */
+int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc);
 
 #endif

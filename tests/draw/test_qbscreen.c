@@ -75,6 +75,19 @@ static void test_modes(void **state) {
     assert_int_equal(pc_canvas_set_mode(c, 4), PC_EARG);
     assert_non_null(strstr(pc_canvas_error(c), "mode 4"));
     assert_null(pc_canvas_new_mode(3));
+    /* a canvas knows its mode by its size and colours: 9 is 640x350x16 with 14-pixel cells */
+    assert_int_equal(pc_mode_of_canvas(c, &m), 9);
+    assert_int_equal(m.cell_h, 14);
+    assert_int_equal(pc_cell_height(c), 14);
+    assert_int_equal(pc_canvas_set_mode(c, 13), PC_OK);
+    assert_int_equal(pc_mode_of_canvas(c, &m), 13);
+    assert_true(fabs(m.aspect - 4.0 / 3.0 * 200 / 320) < 1e-15);
+    assert_int_equal(pc_cell_height(c), 8);
+    assert_int_equal(pc_canvas_reset(c, 320, 200, 16), PC_OK);   /* SCREEN 7's size */
+    assert_int_equal(pc_mode_of_canvas(c, &m), 7);
+    assert_int_equal(pc_canvas_reset(c, 300, 200, 16), PC_OK);   /* no mode's size */
+    assert_int_equal(pc_mode_of_canvas(c, &m), 0);
+    assert_int_equal(pc_cell_height(c), 16);
     pc_canvas_free(c);
 }
 

@@ -108,6 +108,18 @@ err(function() conic.elements{points = {P(0, 0), P(2, 0)}, tangents = {{P(0, 0),
     "conic.elements: five conditions fix a conic, got 2 points and 1 tangents", "too few")
 err(function() conic.elements{points = {P(0, 0), P(0, 0), P(2, 0), P(1, 1), P(3, 3)}} end,
     "conic.elements: the conditions do not fix one conic", "dependent")
+-- the conditions are read by the argument layer: its key check, its weight rule, its wording
+local g1 = conic.elements{points = {P(0, 0), P(2, 0), P(1, 1.5)},
+                          tangents = {{P(0, 0), V(1, r3)}, {P(2, 0) * (1 + 1e-12), V(-1, r3)}}}
+near(g1.a, 0.274519, 1e-6, "a tangent's point of weight 1 + 1e-12 is a point")
+err(function() conic.elements{points = {P(0, 0)}, tangnts = {}} end,
+    "conic.elements: unknown option 'tangnts' (did you mean 'tangents'?)", "a misspelt key")
+err(function() conic.elements{points = {P(0, 0)}, tangents = {{P(0, 0), V(1, 1)}, {P(0, 0), P(1, 1)}, 3, 4}} end,
+    "conic.elements: argument #1 (tangents) [2] must be {a 2-D point, a 2-D vector}, got table", "a tangent of two points")
+err(function() conic.elements{points = {P(0, 0), V(1, 1)}} end,
+    "conic.elements: option 'points' [2] must be a 2-D point, got V(1, 1)", "a vector among the points")
+err(function() conic.elements{1, 2, 3, "x", 5, 6} end,
+    "conic.elements: argument #1 (conic) [4] must be a finite number, got \"x\"", "a string coefficient")
 -- errors
 err(function() bezier{P(0, 0), P(1, 3), P(2, -3), P(4, 0)}:conic() end,
     "c:conic: the curve does not lie on one conic", "a cubic")

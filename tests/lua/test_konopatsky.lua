@@ -150,6 +150,10 @@ local ac = approx.curve(runge, xs)
 same(ac(0.2), P(xs[2], runge(xs[2])), "the curve through its second node", 1e-12)
 local xm, fm = approx.nelder_mead(function(x, y) return (x - 1) ^ 2 + 10 * (y + 2) ^ 2 end, {0, 0})
 near(xm[1], 1, 1e-5, "nelder_mead x"); near(xm[2], -2, 1e-5, "nelder_mead y")
+err(function() approx.nelder_mead(function(x, y) end, {0, 0}) end,
+    "approx.nelder_mead: the function must return a number, got nil", "a function returning nothing")
+err(function() interp.basis({function(t) return 1 end, function(t) return "t" end}, {P(0, 0), P(1, 1)}, {0, 1}) end,
+    "interp.basis: the basis function [2] must return a number, got string", "a basis function returning a string")
 
 -- Lua errors inside callbacks surface at the user's line; argument errors in house style
 err(function() return oneratio.double_contact(A, B, C, .3, .7, function() error("boom") end)(0.3) end,

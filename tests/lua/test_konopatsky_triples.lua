@@ -26,6 +26,15 @@ for _, t in ipairs{-0.3, 0.2, 0.6, 1.3} do
   near(q[1] * m.x ^ 2 + q[2] * m.x * m.y + q[3] * m.y ^ 2 + q[4] * m.x + q[5] * m.y + q[6], 0, 1e-10,
        "(a) Pascal: M on the conic through A1..A5 at " .. t)
 end
+-- the one weight rule: a point of weight 1 - 1e-12 (a computed one) is a point
+local pts2 = {A1 = P(0, 0) * (1 - 1e-12), A2 = pts.A2, A3 = pts.A3, A4 = pts.A4, A5 = pts.A5}
+local b2 = conic.scheme{
+  triples = {{"A1", "A", "B"}, {"A2", "B", "C"}, {"A3", "A2", "A"}, {"A4", "A5", "A"},
+             {"A5", "A1", "C"}, {"M", "A3", "B"}, {"M", "A4", "C"}},
+  points = pts2, current = {"C", "A1", "A5"}, result = "M", range = {0.05, 0.95}}
+same(b2(0.3), b(0.3), "a near-1 weight accepted as a point")
+err(function() conic.scheme{triples = {{"A1", "A2", "A"}}, points = {A1 = V(1, 0)}, current = {"C", "A1", "A2"}, result = "M"} end,
+    "conic.scheme: points.A1 must be a 2-D or more point", "a vector among the points")
 err(function() conic.scheme{triples = {{"A1", "A2", "A"}, {"M", "A1", "C"}}, points = pts, current = {"C", "A3", "A4"}, result = "M"} end,
     "conic.scheme: the table does not determine M", "indeterminate")
 err(function() conic.scheme{triples = {{"A1", "A2", "A"}}, points = pts, current = {"C", "A3", "X"}, result = "M"} end,

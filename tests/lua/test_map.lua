@@ -272,6 +272,8 @@ err(function() return map.perspective(P(0, 5), O) end, "map.perspective: argumen
 err(function() return map.matrix({{1, 0}, {0, 0 / 0}}) end, "map.matrix: argument #1 (rows) entry [2][2] must be a finite number", "matrix NaN")
 err(function() return map.matrix({{1, 0, 0}, {0, 1}}) end, "map.matrix: argument #1 (rows) row [2] holds 2 numbers, row [1] 3", "matrix ragged")
 err(function() return map.matrix({{0, 0}, {0, 0}}) end, "map.matrix: the zero matrix is no map", "matrix zero")
+err(function() return map.matrix({{1, 0}, 5}) end, "map.matrix: argument #1 (rows) row [2] must be a table of numbers, got 5", "matrix row not a table")
+err(function() return map.matrix({{1}, {0}}) end, "map.matrix: argument #1 (rows) row [1] holds 1 numbers; a matrix here has 2..17 columns", "matrix one column")
 err(function() return map.matrix({{1, 0}}) end, "map.matrix: argument #1 (rows) holds 1 rows", "matrix one row")
 err(function() return map.matrix({{1, 0}, {0, 1}}, "rows") end, "map.matrix: argument #2 (convention) must be \"row\" or \"column\", got \"rows\"", "matrix convention")
 err(function() return map.matrix(5) end, "map.matrix: argument #1 (rows) must be a table of rows (tables of numbers), got 5", "matrix not a table")

@@ -268,6 +268,16 @@ int pc_conic_five_points_params(int dim, const double *a, const double *b, const
     return PC_OK;
 }
 
+void pc_conic_five_points_span(const double upar[5], double *u0, double *u1) {
+    *u0 = 0;
+    *u1 = 1;
+    for (int i = 0; i < 5; i++) {
+        if (!isfinite(upar[i]) || fabs(upar[i]) >= 1e6) continue;
+        *u0 = fmin(*u0, upar[i]);
+        *u1 = fmax(*u1, upar[i]);
+    }
+}
+
 pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const double *c,
                                const double *d, const double *e, double u0, double u1,
                                int whole, double upar[5], int *status) {

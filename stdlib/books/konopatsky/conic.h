@@ -85,6 +85,10 @@ pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const 
 /* The parameters u of A, B, C, D, E on that conic (corrected u_B = p_E/(1 - q_E)). */
 int pc_conic_five_points_params(int dim, const double *a, const double *b, const double *c,
                                 const double *d, const double *e, double upar[5]);
+/* The default range of pc_conic_five_points: [0, 1] (C to A) widened to every u of upar,
+ * except a |u| of 1e6 or more (a point whose U is the point at infinity of CA, ED parallel to
+ * CA), which is no range end: only the whole conic reaches it. */
+void pc_conic_five_points_span(const double upar[5], double *u0, double *u1);
 
 /* §2.1.5 The conic through A (t = 0) and B (t = 1) and A1 = (A - C)p1 + C,
  * A2 = (A - C)p1 p2' q2 + (B - C)p2 q2 q3 + C, A3 = (B - C)q3 + C, by the Pascal hexagon

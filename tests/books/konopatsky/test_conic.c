@@ -426,6 +426,13 @@ static void test_five_points(void **state) {
     NEAR(u[2], 0, 0);
     NEAR(u[3], 1.9, 1e-12);
     NEAR(u[4], 2.557692308, 1e-9);
+    double u0, u1, far[5] = {1, -0.5, 0, 1e7, NAN};
+    pc_conic_five_points_span(u, &u0, &u1);   /* the default range: C (u = 0) to E */
+    NEAR(u0, 0, 0);
+    NEAR(u1, 2.557692308, 1e-9);
+    pc_conic_five_points_span(far, &u0, &u1);  /* no range end at infinity (|u| >= 1e6) */
+    NEAR(u0, -0.5, 0);
+    NEAR(u1, 1, 0);
     near_pt(c, 0.25, 0.3, 0.066667, 1e-6);
     near_pt(c, 0.5, 0.531496, 0.094488, 1e-6);
     near_pt(c, 0.75, 0.743119, 0.082569, 1e-6);
