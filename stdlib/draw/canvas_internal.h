@@ -86,5 +86,11 @@ int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin,
  * SVG writer share it), and the VGA character nearest to one the font lacks. */
 int pc_text_vga_layout(const char *utf8, int scale, pc_mlayout *L, char *err, size_t errlen);
 uint32_t pc_vga_fallback(const pc_font *f, uint32_t cp);
+/* The row offset (down positive) of pixel i of n of a \tilde's wave at a scale: one period of
+ * a sine, scale pixels each way, up first: the nearest a row of pixels comes to ~. */
+long pc_vga_tilde_dy(long i, long n, int scale);
+/* The row of an \underline at row y of a label whose baseline is at row base: the cell's last
+ * row at most, under the VGA font's descenders and inside the label's cells. */
+long pc_vga_under_y(long base, long y, int scale);
 
 #endif

@@ -269,6 +269,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
             }
         }
         free(s);
+        if (st == PC_OK) c->ops[c->nops - 1].pen = op->pen;   /* its {font, size, halo} (pc_text_style) */
         return st;
     }
     default:

@@ -615,9 +615,9 @@ static const pcl_arg label_args[] = {
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
 static int l_label(lua_State *L) {
-    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pcl_val a[10] = {0};   /* text, x, y, direction, colour, scale, options; font, size, halo */
     PCL_READ_PAIRS(L, a);
+    if (pcl_scene_label(L, a)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pc_canvas *c = canvas(L);
     int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
     check(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));

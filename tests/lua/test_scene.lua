@@ -54,6 +54,36 @@ for _, l in ipairs(placed_labels()) do texts[#texts + 1] = l.text .. (l.auto and
 check.eq(table.concat(texts, " "), "N*", "only the seen label, placed automatically")
 camera(nil)
 
+-- a scene's label is read by label's own declaration: bad math fails at the call, as in 2-D,
+-- not when the picture is written; its options are checked and kept till it is drawn
+local function svg_text(path)
+  local f = assert(io.open(path, "rb"))
+  local data = f:read("a")
+  f:close()
+  os.remove(path)
+  return data
+end
+figure {}
+camera(map.orthographic("z"), { hidden = "dashed" })
+line(P(0, 0, 0), P(100, 100, 0), 15)
+check.err(function() label("$\\nosuch A$", P(50, 50, 0)) end,
+  "label: label '$\\nosuch A$': unknown command '\\nosuch' at character 2", "bad math in a scene: at the call")
+check.err(function() label("A", P(50, 50, 0), "ne", { size = 500 }) end,
+  "label: option 'size' must be 1 to 200 pt", "a scene label's size is checked")
+check.err(function() label("A", P(50, 50, 0), "ne", { sise = 5 }) end,
+  "unknown option 'sise'", "a scene label's options are not silently dropped")
+check.err(function() label("A", P(50, 50, 0), "up") end, "argument #3 (direction)", "its direction")
+label("$\\tilde A$", P(50, 50, 0), "se", { size = 20, halo = false })
+label("B", P(100, 100, 0), "ne")
+local sout = os.tmpname() .. ".svg"
+save(sout)
+local svg = svg_text(sout)
+check.truthy(svg:find('font%-size="20.000"[^>]*data%-label="%$\\tilde A%$"'), "the scene label at its size 20 pt")
+check.truthy(not svg:find('stroke="#ffffff"[^>]*data%-label="%$\\tilde A%$"'), "halo = false kept: no halo")
+check.truthy(svg:find('font%-size="10.000"[^>]*stroke="#ffffff"'), "the other label at the figure's size, haloed")
+camera(nil)
+screen(12)
+
 -- one iso family: nu = 4, nv = 0 draws the meridians (seen from +z: the two diameters) and no
 -- parallel; nu = 0, nv = 4 the parallels (circles of radius 0, 70.7, 100 px) and no meridian
 screen(12)
