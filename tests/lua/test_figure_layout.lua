@@ -156,6 +156,7 @@ window()
 -- every function of the figure layout is declared on the argument layer (docs/bindings.md)
 -- a label's {size =, halo =} survives the write-time framing of a figure (drawn again there)
 do
+  screen(12)
   figure {}
   line(P(0, 0), P(100, 100), 15)
   label("A", P(50, 50), "se", { size = 20, halo = false })
