@@ -93,4 +93,12 @@ long pc_vga_tilde_dy(long i, long n, int scale);
  * row at most, under the VGA font's descenders and inside the label's cells. */
 long pc_vga_under_y(long base, long y, int scale);
 
+/* Deferred furniture (furniture.c; canvas.h's deferred): draw the items recorded when op `at`
+ * was next (all: at or after it) through the framing x -> sx x + tx, y -> sy y + ty of the
+ * pixels they were recorded in; put each item's points into an extent (for framing); forget
+ * them all (freed unless borrowed). */
+int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, double tx, double ty);
+void pc_furniture_extent(const pc_canvas *c, pc_extent_fn put, void *ctx);
+void pc_furniture_forget(pc_canvas *c);
+
 #endif

@@ -75,7 +75,7 @@ int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box) {
 }
 
 int pc_layout_pending(const pc_canvas *c) {
-    if (c->attach_resolve || pc_figure_frames(c)) return 1;
+    if (c->attach_resolve || pc_figure_frames(c) || c->ndeferred) return 1;
     for (size_t i = 0; i < c->nops; i++)
         if (c->ops[i].kind == PC_OP_TEXT && (c->ops[i].flags & PC_TEXT_AUTO)) return 1;
     return 0;
@@ -203,6 +203,11 @@ static int resolve_into(pc_canvas *r) {
         if (st != PC_OK) return st;
         r->figure.frame = 0;   /* framed: the copy draws in screen pixels from here on */
     }
+    if (r->ndeferred) {   /* furniture of a figure framed no more (a window set since): as called */
+        int st = pc_furniture_expand(r, 0, 1, 1, 1, 0, 0);
+        pc_furniture_forget(r);
+        if (st != PC_OK) return st;
+    }
     size_t n;
     pc_label *lab = collect(r, &n);
     if (!lab) return PC_ENOMEM;
@@ -274,6 +279,7 @@ const pc_canvas *pc_layout_resolve_why(const pc_canvas *c, int *status, char *wh
     r->text = malloc(r->captext);
     r->tstyles = dup(c->tstyles, c->ntstyles, sizeof *c->tstyles, &r->captstyles);   /* a scene's labels add */
     r->attach_drop = NULL;   /* the attachment stays the canvas's */
+    r->deferred_borrowed = 1;   /* so does its deferred furniture */
     int own = pc_figure_frames(c);   /* framing draws everything again: the copy owns it all */
     if (own) {
         r->dots = dup(c->dots, c->ndots, sizeof *c->dots, &r->capdots);
