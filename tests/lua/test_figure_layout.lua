@@ -154,26 +154,6 @@ check.err(function() axes { x = { 1, 0 } } end, "axes: option 'x' must be {lo, h
 check.err(function() legend({ 5 }) end, "legend: argument #1 (entries) [1] must be {name, colour}", "bad entry")
 window()
 -- every function of the figure layout is declared on the argument layer (docs/bindings.md)
--- a label's {size =, halo =} survives the write-time framing of a figure (drawn again there)
-do
-  screen(12)
-  figure {}
-  line(P(0, 0), P(100, 100), 15)
-  label("A", P(50, 50), "se", { size = 20, halo = false })
-  label("B", P(50, 50), "nw", { size = 5 })
-  local svg = os.tmpname() .. ".svg"
-  save(svg)
-  local f = assert(io.open(svg, "rb"))
-  local data = f:read("a")
-  f:close()
-  os.remove(svg)
-  local sizes = {}
-  for size in data:gmatch('<text[^>]-font%-size="([%d.]+)"') do sizes[#sizes + 1] = size end
-  check.eq(table.concat(sizes, " "), "20.000 5.000", "each label at its own size after framing")
-  check.truthy(not data:find('font%-size="20.000"[^>]*stroke="#ffffff"'), "halo = false kept")
-  screen(12)
-end
-
 for _, name in ipairs { "placed_labels", "mark", "arrow", "vector", "dimension", "angle_mark", "ticks",
   "hatch", "centre_line", "fit", "caption", "text", "axes", "graph", "legend", "map.view" } do
   check.truthy(pointcalc._decl[name], name .. " has a declaration")

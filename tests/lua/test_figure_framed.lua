@@ -1,0 +1,44 @@
+-- A figure{} framed when it is written (no screen(), no window): what is measured in pixels
+-- comes out in the frame's pixels.  Its own file: a fresh canvas that no screen() has made
+-- pixel-addressed.  The 4 x 3 legs below frame to 151.67 px a unit, the corner at (16.17, 467).
+local check = dofile(arg[0]:match("^(.-)[^/]*$") .. "check.lua")
+
+local function read(path)
+  local f = assert(io.open(path, "rb"))
+  local data = f:read("a")
+  f:close()
+  os.remove(path)
+  return data
+end
+
+figure {}
+line(P(0, 0), P(4, 0), 15)
+line(P(0, 0), P(0, 3), 15)
+local scale, ox, oy = (479 - 24) / 3, (639 - 4 * (479 - 24) / 3) / 2, 467
+
+-- a dimension 20 px right of the vertical leg: its text 3 px right of the line, at its middle
+check.eq(dimension(P(0, 3), P(0, 0), 20), 3, "the world's length")
+-- an angle mark: its text 22 px (radius 20 + 2) from the vertex along the bisector
+check.near(angle_mark(P(4, 0), P(0, 0), P(0, 3), "R", 20), math.pi / 2, 1e-15, "the world's angle")
+local got = {}
+for _, l in ipairs(placed_labels()) do got[l.text] = l end
+check.eq(got["3"].x, math.floor(ox + 20 + 0.5) + 3, "the dimension's text: 20 + 3 px off the leg, not 20 units")
+check.near(got["3"].y + got["3"].h / 2, (12 + oy) / 2, 1, "at the leg's middle")
+local rx, ry = ox + 22 * math.sqrt(0.5), oy - 22 * math.sqrt(0.5)
+check.near(got.R.x, rx + 3, 1.5, "the angle's text beside the bisector's point, 22 px out")
+check.near(got.R.y + got.R.h, ry - 3 + 1, 1.5, "above it (side ne)")
+check.eq(got.R.side, "ne", "its side faces away from the vertex")
+
+-- label options survive the framing (the labels are drawn again there)
+cls()
+line(P(0, 0), P(4, 0), 15)
+label("A", P(4, 0), "se", { size = 20, halo = false })
+label("B", P(4, 3), "nw", { size = 5 })
+local svg = os.tmpname() .. ".svg"
+save(svg)
+local data = read(svg)
+local sizes = {}
+for size in data:gmatch('<text[^>]-font%-size="([%d.]+)"') do sizes[#sizes + 1] = size end
+check.eq(table.concat(sizes, " "), "20.000 5.000", "each label at its own size after framing")
+check.truthy(not data:find('font%-size="20.000"[^>]*stroke="#ffffff"'), "halo = false kept")
+print(arg[0] .. ": " .. check.count .. " checks passed")
