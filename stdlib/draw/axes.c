@@ -92,6 +92,7 @@ int pc_legend(pc_canvas *c, int n, const char *const *names, const int *colors, 
     if (n < 1 || n > 100) return pc_fail(c, "legend: 1..100 entries, got %d", n);
     if (corner != PC_ANCHOR_NE && corner != PC_ANCHOR_NW && corner != PC_ANCHOR_SE && corner != PC_ANCHOR_SW)
         return pc_fail(c, "legend: the corner must be ne, nw, se or sw");
+    int st0;   /* in a figure framed when written: drawn after the framing, in device units */
     double w = 0, h = 0;
     for (int i = 0; i < n; i++) {
         double tw, th;
@@ -100,6 +101,7 @@ int pc_legend(pc_canvas *c, int n, const char *const *names, const int *colors, 
         w = fmax(w, tw);
         h += th + 2;
     }
+    if (pc_furniture_defer_legend(c, n, names, colors, corner, color, &st0)) return st0;
     double bw = 6 + 20 + 6 + w + 6, bh = h + 6;
     int east = corner == PC_ANCHOR_NE || corner == PC_ANCHOR_SE;
     int south = corner == PC_ANCHOR_SE || corner == PC_ANCHOR_SW;

@@ -100,5 +100,9 @@ long pc_vga_under_y(long base, long y, int scale);
 int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, double tx, double ty);
 void pc_furniture_extent(const pc_canvas *c, pc_extent_fn put, void *ctx);
 void pc_furniture_forget(pc_canvas *c);
+/* pc_legend in a figure framed when written: 1 with the legend kept (*st its status) to be
+ * drawn after the framing, in device units and out of the frame's extent; 0 to draw it now. */
+int pc_furniture_defer_legend(pc_canvas *c, int n, const char *const *names, const int *colors,
+                              int corner, int color, int *st);
 
 #endif

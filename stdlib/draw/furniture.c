@@ -8,6 +8,7 @@
 #include <string.h>
 #include "canvas_internal.h"
 #include "furniture.h"
+#include "axes.h"
 
 #define PI 3.14159265358979323846
 
@@ -75,13 +76,14 @@ static int stext(pc_canvas *c, v2 p, const char *text, int anchor, int color) {
  * call: a dimension's offset, an angle mark's text distance, a centre line's overshoot and
  * dashes, a hatch's spacing would all scale with the frame.  The call is kept with its points'
  * pixels of the moment (the figure's mirror of the world) and drawn once framed. */
-enum { DEF_DIMENSION, DEF_ANGLE, DEF_CENTRE, DEF_HATCH };
+enum { DEF_DIMENSION, DEF_ANGLE, DEF_CENTRE, DEF_HATCH, DEF_LEGEND };
 struct pc_deferred {
     int kind, color, pen;
     size_t at;          /* the number of ops when it was called: its place in the drawing order */
     double v[8];        /* its points in pixels, then its sizes */
-    char *text;         /* its text, the measured value formatted at the call (owned) */
-    double *xy; size_t n;   /* a hatch's region in pixels (owned) */
+    char *text;         /* its text, the measured value formatted at the call (owned); a
+                           legend's names, one after another with their NULs */
+    double *xy; size_t n;   /* a hatch's region in pixels (owned); a legend's colours */
 };
 
 static int deferring(const pc_canvas *c) { return pc_figure_frames(c); }
@@ -117,6 +119,7 @@ void pc_furniture_forget(pc_canvas *c) {
 void pc_furniture_extent(const pc_canvas *c, pc_extent_fn put, void *ctx) {
     for (size_t i = 0; i < c->ndeferred; i++) {
         const struct pc_deferred *d = &c->deferred[i];
+        if (d->kind == DEF_LEGEND) continue;   /* in device units: no part of the frame */
         int np = d->kind == DEF_ANGLE ? 3 : d->kind == DEF_HATCH ? 0 : 2;
         for (int k = 0; k < np; k++) put(ctx, d->v[2 * k], d->v[2 * k + 1], 0, 0, 0, 0);
         for (size_t k = 0; k < d->n; k++) put(ctx, d->xy[2 * k], d->xy[2 * k + 1], 0, 0, 0, 0);
@@ -152,11 +155,50 @@ int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, 
             free(w);
             break;
         }
+        case DEF_LEGEND: {
+            const char *names[100];
+            int colors[100];
+            const char *q = d->text;
+            for (size_t k = 0; k < d->n && k < 100; k++) {
+                names[k] = q;
+                q += strlen(q) + 1;
+                colors[k] = (int)d->xy[k];
+            }
+            st = pc_legend(c, (int)d->n, names, colors, (int)d->v[0], d->color);
+            break;
+        }
         default: break;
         }
     }
     c->pen = pen;
     return st;
+}
+
+int pc_furniture_defer_legend(pc_canvas *c, int n, const char *const *names, const int *colors,
+                              int corner, int color, int *st) {
+    if (!deferring(c)) return 0;
+    size_t len = 0;
+    for (int i = 0; i < n; i++) len += strlen(names[i]) + 1;
+    char *t = malloc(len ? len : 1);
+    double *cs = malloc((size_t)n * sizeof *cs);
+    if (!t || !cs) {
+        free(t);
+        free(cs);
+        *st = pc_fail_code(c, PC_ENOMEM, "legend: out of memory");
+        return 1;
+    }
+    char *q = t;
+    for (int i = 0; i < n; i++) {
+        size_t k = strlen(names[i]) + 1;
+        memcpy(q, names[i], k);
+        q += k;
+        cs[i] = colors[i];
+    }
+    *st = defer(c, (struct pc_deferred){.kind = DEF_LEGEND, .color = color, .v = {corner},
+                                        .xy = cs, .n = (size_t)n}, NULL);
+    if (*st == PC_OK) c->deferred[c->ndeferred - 1].text = t;
+    else free(t);
+    return 1;
 }
 
 /* ---- markers and arrows -------------------------------------------------------------------- */

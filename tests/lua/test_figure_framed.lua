@@ -41,4 +41,16 @@ local sizes = {}
 for size in data:gmatch('<text[^>]-font%-size="([%d.]+)"') do sizes[#sizes + 1] = size end
 check.eq(table.concat(sizes, " "), "20.000 5.000", "each label at its own size after framing")
 check.truthy(not data:find('font%-size="20.000"[^>]*stroke="#ffffff"'), "halo = false kept")
+
+-- a legend is in device units: in the corner, 8 px in, whatever the framing (not upside down
+-- in the middle of the picture, nor a part of what is framed)
+cls()
+line(P(0, 0), P(4, 0), 12)
+line(P(0, 0), P(0, 3), 9)
+legend({ { "horizontal", 12 }, { "vertical", 9 } }, "ne")
+local entries = placed_labels()
+check.eq(#entries, 2, "the two entries")
+check.eq(entries[1].text .. " " .. entries[1].y .. " " .. entries[2].y, "horizontal 12.0 30.0",
+  "the entries 4 px into the box 8 px from the top, one under the other")
+check.near(entries[1].x, 640 - 8 - (38 + entries[1].w) + 32, 1, "the box 8 px from the right edge")
 print(arg[0] .. ": " .. check.count .. " checks passed")
