@@ -49,6 +49,8 @@ int pc_axes(pc_canvas *c, const pc_axes_spec *a, int color, int *nticks) {
           a->x0 < a->x1 && a->y0 < a->y1))
         return pc_fail(c, "axes: the ranges must be finite with x0 < x1 and y0 < y1");
     if (!(isfinite(a->ox) && isfinite(a->oy))) return pc_fail(c, "axes: the origin must be finite");
+    int st0;   /* in a figure framed when written: drawn once the frame is known */
+    if (pc_furniture_defer_axes(c, a, color, nticks, &st0)) return st0;
     double ox = fmin(fmax(a->ox, a->x0), a->x1), oy = fmin(fmax(a->oy, a->y0), a->y1);
     int st = PC_OK, count = 0, gc = a->grid_color >= 0 ? a->grid_color : color;
     for (int axis = 0; axis < 2 && st == PC_OK; axis++) {

@@ -9,6 +9,7 @@
 #include "canvas_internal.h"
 #include "furniture.h"
 #include "axes.h"
+#include "layout.h"
 
 #define PI 3.14159265358979323846
 
@@ -76,7 +77,7 @@ static int stext(pc_canvas *c, v2 p, const char *text, int anchor, int color) {
  * call: a dimension's offset, an angle mark's text distance, a centre line's overshoot and
  * dashes, a hatch's spacing would all scale with the frame.  The call is kept with its points'
  * pixels of the moment (the figure's mirror of the world) and drawn once framed. */
-enum { DEF_DIMENSION, DEF_ANGLE, DEF_CENTRE, DEF_HATCH, DEF_LEGEND };
+enum { DEF_DIMENSION, DEF_ANGLE, DEF_CENTRE, DEF_HATCH, DEF_LEGEND, DEF_AXES };
 struct pc_deferred {
     int kind, color, pen;
     size_t at;          /* the number of ops when it was called: its place in the drawing order */
@@ -84,6 +85,7 @@ struct pc_deferred {
     char *text;         /* its text, the measured value formatted at the call (owned); a
                            legend's names, one after another with their NULs */
     double *xy; size_t n;   /* a hatch's region in pixels (owned); a legend's colours */
+    pc_axes_spec *axes;     /* axes' spec in world units (owned); v: the view's origin then */
 };
 
 static int deferring(const pc_canvas *c) { return pc_figure_frames(c); }
@@ -109,7 +111,8 @@ static int defer(pc_canvas *c, struct pc_deferred d, const char *text) {
 
 void pc_furniture_forget(pc_canvas *c) {
     if (!c->deferred_borrowed) {
-        for (size_t i = 0; i < c->ndeferred; i++) free(c->deferred[i].text), free(c->deferred[i].xy);
+        for (size_t i = 0; i < c->ndeferred; i++)
+            free(c->deferred[i].text), free(c->deferred[i].xy), free(c->deferred[i].axes);
         free(c->deferred);
     }
     c->deferred = NULL;
@@ -120,10 +123,76 @@ void pc_furniture_extent(const pc_canvas *c, pc_extent_fn put, void *ctx) {
     for (size_t i = 0; i < c->ndeferred; i++) {
         const struct pc_deferred *d = &c->deferred[i];
         if (d->kind == DEF_LEGEND) continue;   /* in device units: no part of the frame */
+        if (d->kind == DEF_AXES) {   /* the corners of its ranges, in the pixels of the call */
+            const pc_axes_spec *a = d->axes;
+            double w = 0, h = 0;   /* room for the tick labels: below x's, left of y's */
+            if (a->labels) {
+                char buf[64];
+                for (int k = 0; k < 4; k++) {
+                    double tw, th, val = k == 0 ? a->x0 : k == 1 ? a->x1 : k == 2 ? a->y0 : a->y1;
+                    snprintf(buf, sizeof buf, "%g", val);
+                    if (pc_text_measure(c, buf, strlen(buf), 1, &tw, &th) != PC_OK) continue;
+                    w = fmax(w, tw + 5), h = fmax(h, th + 5);
+                }
+            }
+            put(ctx, a->x0 + d->v[0], -a->y0 + d->v[1], -w, 0, 0, h);
+            put(ctx, a->x1 + d->v[0], -a->y1 + d->v[1], 0, 0, 0, 0);
+            put(ctx, a->x1 + d->v[0], -a->y0 + d->v[1], 0, 0, w / 2, h);
+            put(ctx, a->x0 + d->v[0], -a->y1 + d->v[1], -w, -h / 2, 0, 0);
+            continue;
+        }
         int np = d->kind == DEF_ANGLE ? 3 : d->kind == DEF_HATCH ? 0 : 2;
         for (int k = 0; k < np; k++) put(ctx, d->v[2 * k], d->v[2 * k + 1], 0, 0, 0, 0);
         for (size_t k = 0; k < d->n; k++) put(ctx, d->xy[2 * k], d->xy[2 * k + 1], 0, 0, 0, 0);
     }
+}
+
+/* Axes drawn through a window that puts the world where the frame put the figure's mirror of
+ * it (canvas.c: sx = x + view.x0, sy = view.y0 - y at the call), in the view being drawn: its
+ * tick labels keep the world's numbers, its ticks and heads their pixels. */
+static int expand_axes(pc_canvas *c, const struct pc_deferred *d, double sx, double sy, double tx,
+                       double ty) {
+    pc_rect V = c->view;
+    if (!(sx > 0 && sy > 0) || V.x1 <= V.x0 || V.y1 <= V.y0) return PC_OK;   /* nothing to draw in */
+    int hw = c->has_window, ws = c->window_screen;
+    double w1 = c->wx1, w2 = c->wx2, h1 = c->wy1, h2 = c->wy2;
+    c->wx1 = (V.x0 - tx) / sx - d->v[0];
+    c->wx2 = c->wx1 + (V.x1 - V.x0) / sx;
+    c->wy2 = d->v[1] - (V.y0 - ty) / sy;
+    c->wy1 = c->wy2 - (V.y1 - V.y0) / sy;
+    c->has_window = 1;
+    c->window_screen = 0;
+    int st = pc_axes(c, d->axes, d->color, NULL);
+    c->has_window = hw;
+    c->window_screen = ws;
+    c->wx1 = w1, c->wx2 = w2, c->wy1 = h1, c->wy2 = h2;
+    return st;
+}
+
+int pc_furniture_defer_axes(pc_canvas *c, const pc_axes_spec *a, int color, int *nticks, int *st) {
+    if (!deferring(c)) return 0;
+    int count = 0;
+    for (int axis = 0; axis < 2 && a->ticks > 0; axis++) {
+        double first, step;
+        int n;
+        if (pc_nice_ticks(axis ? a->y0 : a->x0, axis ? a->y1 : a->x1, a->ticks, &first, &step, &n) != PC_OK) {
+            *st = pc_fail(c, "axes: too many ticks");
+            return 1;
+        }
+        count += n;
+    }
+    pc_axes_spec *copy = malloc(sizeof *copy);
+    if (!copy) {
+        *st = pc_fail_code(c, PC_ENOMEM, "axes: out of memory");
+        return 1;
+    }
+    *copy = *a;
+    double ox, oy;   /* the view's origin of the call: the figure's mirror is x + ox, oy - y */
+    pc_world_to_screen(c, 0, 0, &ox, &oy);
+    *st = defer(c, (struct pc_deferred){.kind = DEF_AXES, .color = color, .v = {ox, oy}, .axes = copy}, NULL);
+    if (*st != PC_OK) free(copy);
+    if (nticks) *nticks = count;
+    return 1;
 }
 
 int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, double tx, double ty) {
@@ -155,6 +224,9 @@ int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, 
             free(w);
             break;
         }
+        case DEF_AXES:
+            st = expand_axes(c, d, sx, sy, tx, ty);
+            break;
         case DEF_LEGEND: {
             const char *names[100];
             int colors[100];

@@ -53,4 +53,22 @@ check.eq(#entries, 2, "the two entries")
 check.eq(entries[1].text .. " " .. entries[1].y .. " " .. entries[2].y, "horizontal 12.0 30.0",
   "the entries 4 px into the box 8 px from the top, one under the other")
 check.near(entries[1].x, 640 - 8 - (38 + entries[1].w) + 32, 1, "the box 8 px from the right edge")
+
+-- axes: drawn once framed, through the frame: tick labels with the world's numbers, at equal
+-- units on both axes, 5 px off their ticks, and all inside the picture (framed with room)
+cls()
+graph(function(x) return x * x / 4 end, 0, 4)
+check.eq(axes { x = { 0, 4 }, y = { 0, 4 } }, 10, "five ticks on each axis")
+local xs, ys = {}, {}
+for _, l in ipairs(placed_labels()) do
+  check.truthy(l.x >= 0 and l.y >= 0 and l.x + l.w <= 640 and l.y + l.h <= 480, "tick label " .. l.text .. " inside")
+  local t = l.side == "s" and xs or ys
+  t[#t + 1] = l
+end
+check.eq(#xs .. " " .. #ys, "4 4", "four labels on each axis (none at the crossing)")
+local dx, dy = xs[2].x - xs[1].x, (ys[1].y + ys[1].h / 2) - (ys[2].y + ys[2].h / 2)
+check.near(dx, dy, 1.5, "equal units: a unit as long on both axes")
+check.truthy(dx > 80, "the framing's scale, not 1 px a unit")
+local axis_y = ys[1].y + ys[1].h / 2 + dy   -- the x axis: one unit under the label "1"
+check.near(xs[1].y, axis_y + 5, 1.5, "x labels 5 px under the axis")
 print(arg[0] .. ": " .. check.count .. " checks passed")
