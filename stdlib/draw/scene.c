@@ -13,7 +13,7 @@ typedef struct {
     size_t first, n;        /* into pts (3 numbers each) */
     int color, pen;
     int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale;
-                               a dot (3) */
+                               a dot (3); an arrow head (4): its size, from point 0 to 1 */
     double size;
     char *text;             /* a label's text (owned) */
     char *font;             /* a label's {font =} (owned; NULL: the figure's) */
@@ -107,6 +107,12 @@ int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size,
 
 int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color) {
     return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 3, 0, 0, NULL, NULL, 0, -1, 0});
+}
+
+int pc_scene_add_arrow_head(pc_scene *sc, const double from[3], const double tip[3], double len,
+                            int color) {
+    double xyz[6] = {from[0], from[1], from[2], tip[0], tip[1], tip[2]};
+    return add(sc, 2, xyz, NULL, (stroke){0, 0, color, 0, 4, 0, len, NULL, NULL, 0, -1, 0});
 }
 
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
@@ -292,6 +298,15 @@ int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode) {
         }
         const double *x = sc->pts + 3 * s->first;
         double sx, sy, wx, wy;
+        if (s->mark == 4) {   /* an arrow head: only where its tip is seen */
+            double tx, ty, fx, fy, t2x, t2y;
+            if (!project(sc, x, &fx, &fy) || !project(sc, x + 3, &tx, &ty)) continue;
+            if (!pc_scene_visible(sc, x + 3) && mode != PC_HIDDEN_SHOW) continue;
+            pc_screen_to_world(c, fx, fy, &wx, &wy);
+            pc_screen_to_world(c, tx, ty, &t2x, &t2y);
+            if (fx != tx || fy != ty) st = pc_arrow_head(c, wx, wy, t2x, t2y, s->size, s->color);
+            continue;
+        }
         if (!project(sc, x, &sx, &sy)) continue;
         int vis = pc_scene_visible(sc, x);
         if (s->mark == 2) {   /* a label: only where its point is seen */

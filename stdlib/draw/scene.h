@@ -34,6 +34,11 @@ int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size,
  * since a pixel has no dashes. */
 int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color);
 
+/* An arrow head (furniture.h, len pixels long) at the 3-D point tip, pointing from `from`:
+ * drawn where its tip is seen (always with PC_HIDDEN_SHOW). */
+int pc_scene_add_arrow_head(pc_scene *sc, const double from[3], const double tip[3], double len,
+                            int color);
+
 /* A label of a 3-D point: written when the scene is drawn if its point is seen (always with
  * PC_HIDDEN_SHOW), on side `anchor` (PC_ANCHOR_AUTO: placed with the other labels). */
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,

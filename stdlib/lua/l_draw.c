@@ -580,7 +580,7 @@ static int l_path(lua_State *L) {
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
     const double *xy = a[0].list;
     /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
-    if (!a[4].present && !heads && pcl_scene_path(L, closed, color)) return 0;
+    if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
     if (!a[4].present) {
         check(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
         if ((heads & PC_ARROW_END) && n >= 2)

@@ -245,7 +245,7 @@ int pcl_scene_pset(lua_State *L) {
     return 1;
 }
 
-int pcl_scene_path(lua_State *L, int closed, int color) {
+int pcl_scene_path(lua_State *L, int closed, int color, int heads) {
     pc_scene *sc;
     double x[3];
     if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
@@ -263,6 +263,11 @@ int pcl_scene_path(lua_State *L, int closed, int color) {
     if (closed && n > 1) memcpy(xyz + 3 * n, xyz, 3 * sizeof *xyz), n++;
     pc_canvas *c = pcl_active_canvas(L);
     int st = pc_scene_add_polyline(sc, n, xyz, NULL, color, c->pen);
+    /* the heads of arrow = "end" | "start" | "both" on the path's own end segments, hidden
+     * with their tips (9 px long, as a 2-D path's) */
+    if (st == PC_OK && (heads & PC_ARROW_END) && n >= 2)
+        st = pc_scene_add_arrow_head(sc, xyz + 3 * (n - 2), xyz + 3 * (n - 1), 9, color);
+    if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_scene_add_arrow_head(sc, xyz + 3, xyz, 9, color);
     lua_pop(L, 1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;

@@ -54,6 +54,32 @@ for _, l in ipairs(placed_labels()) do texts[#texts + 1] = l.text .. (l.auto and
 check.eq(table.concat(texts, " "), "N*", "only the seen label, placed automatically")
 camera(nil)
 
+-- an arrowed path of 3-D points joins the scene: its shaft hidden behind the sphere, and its
+-- head drawn only where its tip is seen, whatever the order of the calls
+local function arrow_pixels(tip_z, sphere_first)
+  screen(12)
+  camera(f, { hidden = "hide" })
+  if sphere_first then sph:wireframe { nu = 0, nv = 0 } end
+  path({ P(-2, 0.5, tip_z), P(0, 0.5, tip_z) }, { arrow = "end", color = 14 })
+  if not sphere_first then sph:wireframe { nu = 0, nv = 0 } end
+  local out = os.tmpname() .. ".ppm"
+  save(out)
+  local px = ppm(out)
+  os.remove(out)
+  -- the tip at (320, 190): the head 9 px back from it spreads 2.7 px each side of the shaft
+  local head = 0
+  for x = 312, 319 do for y = 186, 194 do if y ~= 190 and px(x, y) ~= 0 then head = head + 1 end end end
+  return head, px(150, 190) ~= 0, px(300, 190) ~= 0
+end
+for _, first in ipairs { true, false } do
+  local head, outside, inside = arrow_pixels(-1.5, first)
+  check.eq(head .. " " .. tostring(outside) .. " " .. tostring(inside), "0 true false",
+    "the tip behind the sphere: no head, the shaft hidden over the sphere, drawn beside it")
+  head, outside, inside = arrow_pixels(1.5, first)
+  check.truthy(head > 8 and outside and inside, "the tip in front: the head and the whole shaft")
+end
+camera(nil)
+
 -- a scene's label is read by label's own declaration: bad math fails at the call, as in 2-D,
 -- not when the picture is written; its options are checked and kept till it is drawn
 local function svg_text(path)
