@@ -80,6 +80,29 @@ for _, first in ipairs { true, false } do
 end
 camera(nil)
 
+-- a shaded surface hides the scene's strokes behind it, whatever the order of the calls, and
+-- a stroke in front is drawn over its shading
+local function shaded_row(z, shade_first)
+  screen(12)
+  camera(f, { hidden = "hide" })
+  if shade_first then sph:shade { nu = 24, nv = 12, color = 9 } end
+  line(P(-2, 0, z), P(2, 0, z), 14)
+  if not shade_first then sph:shade { nu = 24, nv = 12, color = 9 } end
+  local out = os.tmpname() .. ".ppm"
+  save(out)
+  local px = ppm(out)
+  os.remove(out)
+  local yellow = px(130, 240)   -- the line beside the sphere: colour 14
+  local got = {}
+  for x = 120, 520, 10 do got[#got + 1] = px(x, 240) == yellow and "#" or "." end
+  return table.concat(got)
+end
+for _, first in ipairs { true, false } do
+  check.eq(shaded_row(-1.5, first), want, "behind the shaded sphere: the line hidden over it")
+  check.eq(shaded_row(1.5, first), string.rep("#", 41), "in front of it: drawn over the shading")
+end
+camera(nil)
+
 -- a scene's label is read by label's own declaration: bad math fails at the call, as in 2-D,
 -- not when the picture is written; its options are checked and kept till it is drawn
 local function svg_text(path)
