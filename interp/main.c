@@ -363,6 +363,21 @@ static int serve_command(int argc, char **argv) {
     return serve_main(script, (int)port);
 }
 
+/* A QBasic program that ends in text mode: its text screen drawn into the canvas
+ * (qbasic_screen.TEXT_PICTURE, qbasic_textscreen.lua), so -o writes what QBasic shows. */
+static void qbasic_text_picture(lua_State *L) {
+    int top = lua_gettop(L);
+    lua_getfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);   /* package.loaded, even sandboxed */
+    if (lua_istable(L, -1)) lua_getfield(L, -1, "qbasic_screen");
+    else lua_pushnil(L);
+    if (lua_istable(L, -1)) lua_getfield(L, -1, "TEXT_PICTURE");
+    else lua_pushnil(L);
+    if (lua_isfunction(L, -1) && lua_pcall(L, 0, 0, 0) != LUA_OK) {
+        fprintf(stderr, "%s: the text screen: %s\n", host_progname, lua_tostring(L, -1));
+    }
+    lua_settop(L, top);
+}
+
 int main(int argc, char **argv) {
     if (argc > 1 && !strcmp(argv[1], "serve")) return serve_command(argc, argv);
     options o = {0};
@@ -407,12 +422,14 @@ int main(int argc, char **argv) {
     /* --frames of a QBasic program: taken as it runs, by its virtual clock (frames.c) */
     int qframes = ok && o.script && o.qbasic && o.nframes;
     if (qframes && !frames_qbasic_begin(L, o.nframes, o.fps, o.outputs, o.noutputs)) ok = 0;
+    int run_failed = 0;   /* the script was translated and ran, but stopped with an error */
     if (ok && o.script) {
         ok = host_load_script(L, o.script, o.qbasic);
         if (ok) {
             int n;
             push_script_args(L, argv, o.script_index, &n);
             ok = host_pcall(L, n);
+            run_failed = !ok;
         }
         ran_something = 1;
     } else if (ok && !ran_something && !o.interactive && !isatty(STDIN_FILENO)) {
@@ -428,10 +445,13 @@ int main(int argc, char **argv) {
     }
     int repl = ok && (o.interactive || !ran_something);
     if (repl) host_repl(L, o.watch);
+    if (o.qbasic && o.noutputs > 0 && (ok || run_failed)) qbasic_text_picture(L);
     if (ok) ok = write_outputs(L, &o, repl);
-    else if (o.qbasic && host_limit_stopped) {
+    else if (o.qbasic && (host_limit_stopped ||
+                          (run_failed && (o.noutputs > 0 || pc_canvas_dirty(pcl_canvas(L)))))) {
         /* a QBasic program that never ends (a screen saver, a bouncing ball) stopped by
-         * --timeout or --max-memory: the screen as it stood is its picture */
+         * --timeout or --max-memory, or one stopped by a runtime error it did not trap (its
+         * message, with the .bas line, is above): the screen as it stood is its picture */
         fprintf(stderr, "%s: writing the screen as it stood when the program was stopped\n",
                 host_progname);
         write_outputs(L, &o, 0);

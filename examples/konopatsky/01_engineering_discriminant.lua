@@ -4,19 +4,10 @@
 -- point K = (T1 - C)k + C on the median.  The scheme of the current point at u = 0.2 for
 -- k = 0.7 (conic.ed_scheme): T on AB, N its harmonic conjugate with respect to A, B, P = AK x CT,
 -- Q = BK x CT, and M = KN x BP = AQ x BP on the arc.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(4, 0), P(2, 3)
 local k, u = 0.7, 0.2
 local s = conic.ed_scheme(A, B, C, k, u)
-frame({A, B, C, s.N}, 0.4)
+fit{around = {A, B, C, s.N}, pad = 0.4}
 path({A, C, B, A}, {color = 8})
 line(s.N, A, 8)                          -- AB extended to N
 pen{dash = {4, 3}} line(C, s.T1, 8) pen()

@@ -3,18 +3,9 @@
 -- imaginary semi-axis.  The fundamental rectangle on CA and CB, the asymptotes (dashed) along
 -- its diagonals, the foci F1 = (A - C)e + C and F2 = -(A - C)e + C (2.43), e = sqrt 13/3; both
 -- branches by the central angle (2.49), each breaking at its points at infinity.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(3, 0), P(0, 2)
 local F1, F2, e = conic.foci(C, A, B, "hyperbola")
-frame({P(-6, -3.4), P(6, 3.4)}, 0.2)
+fit{around = {P(-6, -3.4), P(6, 3.4)}, pad = 0.2}
 line(P(-7, 0), P(7, 0), 8) line(P(0, -4), P(0, 4), 8)
 path({A + (B - C), 2 * C - A + (B - C), 2 * C - A - (B - C), A - (B - C), A + (B - C)}, {color = 8})
 pen{dash = {4, 3}} line(P(-7, -14 / 3), P(7, 14 / 3), 7) line(P(-7, 14 / 3), P(7, -14 / 3), 7) pen()

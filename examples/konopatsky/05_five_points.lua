@@ -5,19 +5,10 @@
 -- U_D = CA x ED, R = CB x ED and U_E = RS x CA.  The whole conic (green, a hyperbola through
 -- its points at infinity) passes through all five points.  The book's printed S (red) is the
 -- meet with the parallel to CB through E, so its curve (2.74) misses B.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C, D, E = P(1, 0), P(0, 1), P(0, 0), P(0.3, 0.8), P(0.7, 0.6)
 local s = conic.five_scheme(A, B, C, D, E, 0.6)
 local conic5, u = conic.five_points(A, B, C, D, E, {whole = true})
-frame({C, s.U_E, s.V, A, B}, 0.15)
+fit{around = {C, s.U_E, s.V, A, B}, pad = 0.15}
 line(C, s.U_E + V(0.1, 0), 8) line(C, s.V + V(0, 0.1), 8)
 line(A, B, 8)
 conic5:draw{color = 10}

@@ -2,19 +2,10 @@
 -- A(0;0), B(0,5;1), C(1;0) and delta = pi/3, as the book gives them: (2.115) for phi in
 -- [0, 2pi/3] (green, where angle AMC = delta) and [2pi/3, pi] (yellow, where it is pi - delta);
 -- the current point M at phi = 1 with the chords MA, MC.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(0.5, 1), P(1, 0)
 local F = {A = A, B = B, C = C, delta = math.pi / 3}
 local M = conic.circle(F)(1.0)
-frame({P(-0.1, -0.6), P(1.1, 1.05)}, 0.05)
+fit{around = {P(-0.1, -0.6), P(1.1, 1.05)}, pad = 0.05}
 path({A, B, C, A}, {color = 8})
 F.range = {0, 2 * math.pi / 3}
 conic.circle(F):draw{color = 10}

@@ -4,19 +4,10 @@
 -- AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t, and M on P2Q1 (yellow) on the arc
 -- M2 = (A - C)t'^3/(1 - t't) + (B - C)t^3/(1 - t't) + C (green), flat at both ends, beside the
 -- quadratic Bezier arc M1 (grey) of the same A, B, C.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C, t = P(0, 0), P(10, 0), P(4, 6), 0.4
 local s = oneratio.smooth_scheme(A, B, C, 2, t)
 local P1, P2, Q1, Q2, M = s.P[1], s.P[2], s.Q[1], s.Q[2], s.M
-frame({A, B, C}, 0.6)
+fit{around = {A, B, C}, pad = 0.6}
 path({A, C, B}, {color = 8})
 oneratio.smooth(A, B, C, 1):draw{color = 7}
 oneratio.smooth(A, B, C, 2):draw{color = 10}

@@ -2,14 +2,9 @@
 -- The simplex ABCD with A(0,0,0), B(4,0,0), C(1,3,0), D(4,3,2) (chosen; the book prints none),
 -- red; the arc (3.6) (blue) from A with tangent AC to D with tangent BD, through the centroid G,
 -- in isometric projection.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C, D = P(0, 0, 0), P(4, 0, 0), P(1, 3, 0), P(4, 3, 2)
 camera(map.isometric())
-frame(-0.5, -0.5, 4.8, 3.8)
+fit{around = {P(-0.5, -0.5), P(4.8, 3.8)}}
 for _, e in ipairs{{A, B}, {A, C}, {A, D}, {B, C}, {B, D}, {C, D}} do line(e[1], e[2], 12) end
 local arc = oneratio.desargues(A, B, C, D)
 arc:draw{color = 9}

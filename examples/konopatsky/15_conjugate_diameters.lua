@@ -2,15 +2,10 @@
 -- The centre C(0,0) and the ends A(3,0), B(1,2) of two conjugate semi-diameters (a skew pair,
 -- chosen); P on CB and Q on NB with one ratio t, N = A + B - C, K = 2C - A; the rays KP and QA
 -- meet at M on the quarter A -> B (green), drawn at t = 0.6; the whole ellipse (2.24) in grey.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-3.4, -2.9, 4.6, 4.2)
+fit{around = {P(-3.4, -2.9), P(4.6, 4.2)}}
 local C, A, B = P(0, 0), P(3, 0), P(1, 2)
 local N, K = A + B - C, C * 2 - A
 path({K, A}, {color = 8}) path({C, B}, {color = 8})

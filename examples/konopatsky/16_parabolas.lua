@@ -2,15 +2,10 @@
 -- The two-link Bernstein polyline A1 A3 A2 (A3 the middle vertex, where the end tangents meet),
 -- B1 on A1A3 and B2 on A3A2 with one ratio t = 0.3, M on B1B2; the digest's A1(0,0), A2(4,0),
 -- A3(2,4).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-0.6, -0.8, 4.6, 4.6)
+fit{around = {P(-0.6, -0.8), P(4.6, 4.6)}}
 local A1, A2, A3 = P(0, 0), P(4, 0), P(2, 4)
 path({A1, A3, A2}, {color = 8})
 conic.parabola(A1, A3, A2):draw{color = 10}

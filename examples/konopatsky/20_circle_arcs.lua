@@ -2,15 +2,10 @@
 -- The 90-degree arc through A(1,0), K, B(0,1) whose tangents meet at C(1,1) (the digest's
 -- data): O the midpoint of the chord c = AB, K on the median CO with
 -- k = CK/CO = 1/2 + 2h^2/c^2 = 2 - sqrt 2, h = OK the height of the segment, O1 the centre.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-0.3, -0.4, 1.3, 1.665)
+fit{around = {P(-0.3, -0.4), P(1.3, 1.665)}}
 local A, B, C = P(1, 0), P(0, 1), P(1, 1)
 local O, O1 = mid(A, B), P(0, 0)
 path({A, C, B}, {color = 8}) line(A, B, 8)

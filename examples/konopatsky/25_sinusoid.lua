@@ -4,15 +4,6 @@
 -- rho1 = b/m about Q, P its point on the ray CQ (where theta starts) and T at the angle
 -- theta = b phi/rho1 = m phi from P (rolling without slip, (2.136)); M on the ray CQ with
 -- |CM| = |CT| (2.137)-(2.140), on the sinusoid (2.142) (red).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(1, 0), P(0, 1)
 local m, phi = 4, 0.5
 local axis = conic.circle{A = A, B = B, C = C, R = 1}
@@ -24,7 +15,7 @@ local theta = m * phi
 local Pp = Q + u * (1 / m)
 local T = Q + (u * math.cos(theta) + w * math.sin(theta)) * (1 / m)
 local M = M1(phi)
-frame({P(-1.25, -1.25), P(1.25, 1.25)}, 0.18)
+fit{around = {P(-1.25, -1.25), P(1.25, 1.25)}, pad = 0.18}
 axis:draw{color = 10}
 M1:draw{color = 12}
 circle(Q, 1 / m, 7)

@@ -3,18 +3,9 @@
 -- (whose caption the conversion lost): P = (A - C)(1 - cos phi)/2 + C on CA, Q = (B - C)(pi - phi
 -- + sin phi)/pi + C on CB and M = P + Q - C (parallel translation), at phi = 2 with the rolling
 -- circle; the convex arc "(3.11)" for phi in [0, pi] (green), the rest of the arch dashed.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(0, 2), P(math.pi, 0)
 local concave, scheme = false, true
-frame({P(-math.pi - 0.3, -0.3), P(math.pi + 0.3, 2.3)}, 0.1)
+fit{around = {P(-math.pi - 0.3, -0.3), P(math.pi + 0.3, 2.3)}, pad = 0.1}
 line(P(-math.pi - 0.3, 0), P(math.pi + 0.3, 0), 8) path({A, C}, {color = 8})
 local arc = conic.cycloid{C = C, A = A, B = B, concave = concave}
 local whole = conic.cycloid{C = C, A = A, B = B, concave = concave, range = {0, 2 * math.pi}}

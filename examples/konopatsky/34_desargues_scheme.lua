@@ -1,15 +1,10 @@
 -- Konopatsky §3.7 (Fig. 3.11): the Desargues configuration
 -- Chosen points: triangles A1B1C1 and A2B2C2 in perspective from O; the meets of corresponding
 -- sides X, Y, Z lie on the axis of perspectivity (red).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-0.6, -0.8, 8.6, 9)
+fit{around = {P(-0.6, -0.8), P(8.6, 9)}}
 local O = P(0, 4)
 local A1, B1, C1 = P(2, 6), P(2.5, 2.5), P(3.5, 4.5)
 local f1, f2, f3 = 2.2, 1.3, 1.7

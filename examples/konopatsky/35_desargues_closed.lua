@@ -1,15 +1,10 @@
 -- Konopatsky §3.7 (Fig. 3.14): the Desargues arc when C = B
 -- Chosen points (the book prints none): the planar arc
 -- M = (A t'^3 + B t t' + D t^3)/(2t^2 - 2t + 1) from A to D with tangents AB and BD.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-1, -1.5, 11, 8)
+fit{around = {P(-1, -1.5), P(11, 8)}}
 local A, B, D = P(0, 0), P(5, 7), P(10, 0)
 path({A, B, D}, {color = 12})
 oneratio.desargues(A, B, B, D):draw{color = 10}

@@ -3,14 +3,9 @@
 -- C5 = (9,2): the quintic through the nodes at u = 0, 1/3, 2/3, 1 with M'(0) = 5(C2 - M1),
 -- M'(1) = 5(M4 - C5) (interp.arc, green), beside the cubic through the same nodes without the
 -- tangents (interp.lagrange, yellow, its control polygon grey).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local M = {P(0, 0), P(3, 2), P(6, 2), P(9, 0)}
 local C2, C5 = P(0, 2), P(9, 2)
-frame(-1, -1.5, 10, 3.5)
+fit{around = {P(-1, -1.5), P(10, 3.5)}}
 path(interp.controls(M), {color = 8})
 interp.lagrange(M):draw{color = 14}
 pen{dash = {4, 3}} line(M[1], C2, 12) line(M[4], C5, 12) pen()

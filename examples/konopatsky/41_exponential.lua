@@ -3,17 +3,12 @@
 -- exponential prototype (4.39) with k = (0.5, -1, 2) (brown) against the parabola (4.10)
 -- (blue); its weights do not sum to 1 (interp.basis reports it), so the curve moves when the
 -- origin does: the same nodes shifted by (40, 0) give the dashed curve, shifted back.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local function mark(p, name, _) circle(p, 0.06, 15) label(name, p, nil, 15) end
 local M = {P(0, 0), P(2, 3), P(5, 1)}
 local shift = V(40, 0)
 local Ms = {M[1] + shift, M[2] + shift, M[3] + shift}
 for i, kind in pairs{[1] = "exp"} do
-  frame(-1, -2, 6, 5)
+  fit{around = {P(-1, -2), P(6, 5)}}
   local k = kind == "exp" and {0.5, -1, 2} or {0.5, -1}
   interp.lagrange(M):draw{color = 9}
   local c = interp.prototype(kind, M, k)

@@ -6,20 +6,10 @@
 local A, B, t = P(1, 2, 0.5), P(4, 1, 3), 0.4
 local M = (B - A) * t + A
 local view = map.view{azimuth = -35, elevation = 20}
--- frame the projected figure at equal units (4:3 canvas), as docs/figures.md advises for scenes
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    local q = view(p)
-    x0, x1, y0, y1 = math.min(x0, q.x), math.max(x1, q.x), math.min(y0, q.y), math.max(y1, q.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local O = P(0, 0, 0)
 local X, Y, Z = P(5, 0, 0), P(0, 3, 0), P(0, 0, 3.6)
-frame({O, X, Y, Z, A, B}, 0.5)
 camera(view)
+fit{around = {O, X, Y, Z, A, B}, pad = 0.5}
 for _, ax in ipairs{X, Y, Z} do arrow(O, ax, "end", 7) end
 local feet = {}
 for i, p in ipairs{A, M, B} do feet[i] = {P(p.x, 0, 0), P(0, p.y, 0), P(0, 0, p.z)} end

@@ -13,17 +13,8 @@ local NC = curve(function(u) return (C1 - C) * math.sin(math.pi * u / 2) + C end
 local gen = curve(function(v) return P((1 - v) ^ 2, v ^ 2) end, 0, 1)
 local s = konopatsky.moving_simplex(NA, NB, NC, gen)
 local view = map.view{azimuth = -40, elevation = 22}
-local function frame(pts, pad)   -- equal units on the 4:3 canvas around the projected points
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    local q = view(p)
-    x0, x1, y0, y1 = math.min(x0, q.x), math.max(x1, q.x), math.min(y0, q.y), math.max(y1, q.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
-frame({D, A, B, C, A1, C1}, 0.4)
 camera(view)
+fit{around = {D, A, B, C, A1, C1}, pad = 0.4}
 for _, e in ipairs{{D, A}, {D, B}, {D, C}, {A, B}, {B, C}, {C, A}} do line(e[1], e[2], 8) end
 s:wireframe{nu = 8, nv = 8, color = 2}
 NA:draw{color = 12} NB:draw{color = 12} NC:draw{color = 12}

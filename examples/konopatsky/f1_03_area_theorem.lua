@@ -3,21 +3,12 @@
 -- lambda2 = 2, lambda3 = -3: B_i divides the side line A_iA_(i+1) in the ratio
 -- lambda_i = A_iB_i/B_iA_(i+1), so B3 lies outside A3A1.  The signed areas give
 -- S_B1B2B3/S_A1A2A3 = k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) (konopatsky.area_theorem).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A1, A2, A3 = P(0, 0), P(6, 0), P(2, 4)
 local l = {0.5, 2, -3}
 local function on(X, Y, lam) return (X + Y * lam) / (1 + lam) end
 local B1, B2, B3 = on(A1, A2, l[1]), on(A2, A3, l[2]), on(A3, A1, l[3])
 local r = konopatsky.area_theorem(A1, A2, A3, B1, B2, B3)
-frame({A1, A2, A3, B1, B2, B3}, 0.8)
+fit{around = {A1, A2, A3, B1, B2, B3}, pad = 0.8}
 hatch({A1, A2, A3}, 8, 45, 9)
 hatch({B1, B2, B3}, 6, -45, 6)
 path({A1, A2, A3, A1}, {color = 9})

@@ -2,20 +2,11 @@
 -- Chosen triangle A1(0,0), A2(6,0), A3(2,4) and the transversal d through (1.2, 2.4) and (5, 1):
 -- B1, B2, B3 are its meets with the side lines A1A2, A2A3, A3A1, so S_B1B2B3 = 0 and (1.3)
 -- lambda1 lambda2 lambda3 = -1 (Menelaus with oriented segments; konopatsky.area_theorem).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A1, A2, A3 = P(0, 0), P(6, 0), P(2, 4)
 local D1, D2 = P(1.2, 2.4), P(5, 1)
 local B1, B2, B3 = meet(A1, A2, D1, D2), meet(A2, A3, D1, D2), meet(A3, A1, D1, D2)
 local r = konopatsky.area_theorem(A1, A2, A3, B1, B2, B3)
-frame({A1, A2, A3, B1, B2, B3, lerp(D1, D2, -0.4), lerp(D1, D2, 1.9)}, 0.8)
+fit{around = {A1, A2, A3, B1, B2, B3, lerp(D1, D2, -0.4), lerp(D1, D2, 1.9)}, pad = 0.8}
 path({A1, A2, A3, A1}, {color = 9})
 pen{dash = {4, 3}} line(A2, B1, 7) pen()     -- side lines extended
 line(lerp(D1, D2, -0.4), lerp(D1, D2, 1.9), 12)

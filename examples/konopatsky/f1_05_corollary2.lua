@@ -2,20 +2,11 @@
 -- Chosen triangle A1(0,0), A2(6,0), A3(2,4), lambda1 = 0.5, lambda2 = 2 and B3 at A3
 -- (lambda3 = 0): S_B1B2A3/S_A1A2A3 = ab with a = (B1A1A2) = -1/(1 + lambda1) and
 -- b = (B2A2A3) = -1/(1 + lambda2) (konopatsky.area_theorem's a, b).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A1, A2, A3 = P(0, 0), P(6, 0), P(2, 4)
 local function on(X, Y, lam) return (X + Y * lam) / (1 + lam) end
 local B1, B2 = on(A1, A2, 0.5), on(A2, A3, 2)
 local r = konopatsky.area_theorem(A1, A2, A3, B1, B2, A3)
-frame({A1, A2, A3, B1, B2}, 0.8)
+fit{around = {A1, A2, A3, B1, B2}, pad = 0.8}
 hatch({A1, A2, A3}, 8, 45, 9)
 hatch({B1, B2, A3}, 6, -45, 6)
 path({A1, A2, A3, A1}, {color = 9})

@@ -3,15 +3,6 @@
 -- (-2, 1.5) and (9, 2.6): B_i = A_iA_(i+1) x d (konopatsky.o_theorem), and the product of the
 -- ratios (A_iA_(i+1)B_i), the closing factor (A_5A_1B_5) included (the print omits it), is
 -- (-1)^5.  The proof's inner point C is joined to the vertices; C_j = CA_j x d.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A = {P(0, 0), P(5, -0.5), P(6.5, 3), P(3, 5.5), P(-0.5, 3)}
 local D1, D2 = P(-2, 1.5), P(9, 2.6)
 local prod, ratios, B = konopatsky.o_theorem(A, D1, D2)
@@ -21,7 +12,7 @@ for i = 1, 5 do
   Cj[i] = meet(C, A[i], D1, D2)
   pts[#pts + 1] = A[i]; pts[#pts + 1] = B[i]; pts[#pts + 1] = Cj[i]
 end
-frame(pts, 0.7)
+fit{around = pts, pad = 0.7}
 local ends = {lerp(D1, D2, -0.65), lerp(D1, D2, 0.95)}
 path({A[1], A[2], A[3], A[4], A[5], A[1]}, {color = 9})
 pen{dash = {4, 3}}

@@ -2,20 +2,11 @@
 -- Chosen simplex A(6,0), B(2,5), C(0,0) and A_i = Ap_i + Bq_i + Cr_i with the rows
 -- (0.6, 0.2, 0.2), (0.2, 0.6, 0.2), (0.1, 0.2, 0.7): S_A1A2A3/S_ABC = det of the rows
 -- (konopatsky.simplex_ratio), against the areas measured from the coordinates.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(6, 0), P(2, 5), P(0, 0)
 local rows = {{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.1, 0.2, 0.7}}
 local T = {}
 for i, r in ipairs(rows) do T[i] = A * r[1] + B * r[2] + C * r[3] end
-frame({A, B, C}, 0.6)
+fit{around = {A, B, C}, pad = 0.6}
 hatch({T[1], T[2], T[3]}, 6, -45, 6)
 path({A, B, C, A}, {color = 9})
 path({T[1], T[2], T[3], T[1]}, {color = 14})

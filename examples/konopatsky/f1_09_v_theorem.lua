@@ -11,17 +11,8 @@ local T = {}
 for i, r in ipairs(rows) do T[i] = A * r[1] + B * r[2] + C * r[3] + D * r[4] end
 local function vol(p, q, r, s) return dot(q - p, cross(r - p, s - p)) / 6 end
 local view = map.view{azimuth = -35, elevation = 20}
-local function frame(pts, pad)   -- equal units on the 4:3 canvas around the projected points
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    local q = view(p)
-    x0, x1, y0, y1 = math.min(x0, q.x), math.max(x1, q.x), math.min(y0, q.y), math.max(y1, q.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
-frame({A, B, C, D}, 0.6)
 camera(view)
+fit{around = {A, B, C, D}, pad = 0.6}
 local function edges(v, c)
   for i = 1, 4 do for j = i + 1, 4 do line(v[i], v[j], c) end end
 end

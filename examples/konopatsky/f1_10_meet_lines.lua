@@ -3,15 +3,6 @@
 -- (0.1, 0.2), (0.8, 0.6), (0.7, 0.05), (0.15, 0.75).  The current point M = (A2 - A1)lambda + A1
 -- of line A1A2 (here lambda = 0.35) and the triangle MA3A4 (hatched); K is where that area
 -- is zero, lambda of (1.5) against meet(A1, A2, A3, A4).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(6, 0), P(1, 5)
 local pq = {{0.1, 0.2}, {0.8, 0.6}, {0.7, 0.05}, {0.15, 0.75}}
 local Ai = {}
@@ -22,7 +13,7 @@ local p21, q21, p34, q34 = p2 - p1, q2 - q1, p3 - p4, q3 - q4
 local lam = (q3 * p4 - p3 * q4 - p1 * q34 + q1 * p34) / (p21 * q34 - q21 * p34)   -- (1.5)
 local K = meet(Ai[1], Ai[2], Ai[3], Ai[4])
 local M = (Ai[2] - Ai[1]) * 0.35 + Ai[1]
-frame({C, A, B}, 0.6)
+fit{around = {C, A, B}, pad = 0.6}
 hatch({M, Ai[3], Ai[4]}, 6, -45, 6)
 path({C, A, B, C}, {color = 9})
 line(Ai[1], Ai[2], 15) line(Ai[3], Ai[4], 15)

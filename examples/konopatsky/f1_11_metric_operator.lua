@@ -2,19 +2,10 @@
 -- Chosen A(0,0), B(6,0), C(2,3.5): H is the foot of the perpendicular from C to AB, alpha the
 -- angle at A, and Sigma^A_BC = Sum (B - A)(C - A) = AH AB = AB AC cos alpha =
 -- (AB^2 + AC^2 - BC^2)/2, each computed.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(6, 0), P(2, 3.5)
 local S = dot(B - A, C - A)                             -- Sigma^A_BC, coordinate by coordinate
 local H = A + (B - A) * (S / dot(B - A, B - A))         -- H = A + (B - A) Sigma^A_BC/Sigma^A_BB
-frame({A, B, C}, 0.8)
+fit{around = {A, B, C}, pad = 0.8}
 path({A, B, C, A}, {color = 15})
 pen{dash = {4, 3}} line(C, H, 7) pen()
 angle_mark(C, H, A, "", 14, 7)

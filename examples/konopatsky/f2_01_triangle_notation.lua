@@ -2,17 +2,8 @@
 -- Chosen A(0,0), B(6,0), C(2,4): the sides a = |BC|, b = |CA|, c = |AB| opposite the vertices,
 -- the angles alpha, beta, gamma at A, B, C.  In any dimension a = sqrt(Sigma^B_CC) and
 -- cos gamma = Sigma^C_AB/(ab) (the metric operator of §1.4); the caption prints them.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(6, 0), P(2, 4)
-frame({A, B, C}, 0.7)
+fit{around = {A, B, C}, pad = 0.7}
 path({A, B, C, A}, {color = 15})
 angle_mark(B, A, C, "$\\alpha$", 34, 11)
 angle_mark(C, B, A, "$\\beta$", 34, 11)

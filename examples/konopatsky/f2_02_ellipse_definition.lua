@@ -2,21 +2,12 @@
 -- Set E of the digest (a = 4, b = 2): the centre C, the vertices A1, A2 on the major axis and B1,
 -- B2 on the minor, the foci F1, F2 at c = sqrt(a^2 - b^2) from C (conic.foci), a current point M
 -- (phi = 2.2 by (2.24)) and its focal radii with |F1M| + |F2M| = 2a (2.1).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(4, 0), P(0, 2)
 local F1, F2, e = conic.foci(C, A, B)
 local el = conic.ellipse{C = C, A = A, B = B, by = "compression"}
 local M = el(2.2)
 local A1, A2, B1, B2 = A, 2 * C - A, B, 2 * C - B
-frame({A1, A2, B1, B2}, 0.6)
+fit{around = {A1, A2, B1, B2}, pad = 0.6}
 line(A2 - V(0.5, 0), A1 + V(0.5, 0), 8) line(B2 - V(0, 0.5), B1 + V(0, 0.5), 8)
 el:draw{color = 15}
 line(F1, M, 11) line(F2, M, 11)

@@ -2,18 +2,9 @@
 -- Set E: C(0,0) the centre, A(4,0) the end of the major semi-axis, B(0,2) of the minor, angle
 -- BCA = 90 degrees; the foci F1 = (A - C)e + C and F2 = -(A - C)e + C (F1 + F2 = 2C), e = c/a
 -- (conic.foci); the simplex CAB hatched.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(4, 0), P(0, 2)
 local F1, F2, e, p = conic.foci(C, A, B)
-frame({P(-4, -2), P(4, 2)}, 0.6)
+fit{around = {P(-4, -2), P(4, 2)}, pad = 0.6}
 hatch({C, A, B}, 8, 45, 8)
 path({C, A, B, C}, {color = 9})
 conic.ellipse{C = C, A = A, B = B}:draw{color = 15}

@@ -3,21 +3,12 @@
 -- F1 = (A - C)e + C and F2 (conic.foci).  The current point M at the central angle phi = pi/6
 -- from CA, its radius rho = |CM| = ab/sqrt(a^2 sin^2 phi + b^2 cos^2 phi), and the focal radii
 -- F1M, F2M with |F1M| + |F2M| = 2a, the law of cosines of (2.6)-(2.10).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(4, 0), P(0, 2)
 local F1, F2, e = conic.foci(C, A, B)
 local el = conic.ellipse{C = C, A = A, B = B, by = "angle"}
 local phi = math.pi / 6
 local M = el(phi)
-frame({P(-4, -2), P(4, 2)}, 0.6)
+fit{around = {P(-4, -2), P(4, 2)}, pad = 0.6}
 line(P(-4.6, 0), P(4.6, 0), 8) line(P(0, -2.5), P(0, 2.5), 8)
 el:draw{color = 15}
 line(C, M, 10)

@@ -4,18 +4,9 @@
 -- AB is extended, dashed), tau = angle ACK = pi - alpha - theta; P = (K - C)m/CK + C; A rotated
 -- about C by omega = tau + pi/2 towards B (the book underlines the letter; here a bar) gives
 -- Q = (A' - C)n/b + C; the ellipse (2.11) in the simplex CPQ (conic.tilted).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C, m, n, th = P(0, 0), P(4, 3), P(5, -1), 2, 1, math.pi / 4
 local e, Pa, Qa, K, Ar, tau = conic.tilted(A, B, C, th, m, n)
-frame({A, B, C, K, Ar, e(0), e(math.pi)}, 0.5)
+fit{around = {A, B, C, K, Ar, e(0), e(math.pi)}, pad = 0.5}
 path({A, B, C, A}, {color = 9})
 pen{dash = {4, 3}} line(B, K, 9) line(Pa, K, 7) line(Qa, Ar, 7) pen()
 e:draw{color = 15}

@@ -3,20 +3,11 @@
 -- phi = pi/3 measured at F2 from the direction F2 -> A, rho = |F2M| = p/(1 - e cos phi); the
 -- simplex A B F2 (dashed) in which (2.16) writes M = (A - F2) p_A + (B - F2) p_B + F2
 -- (conic.focal_point, the first term's missing factor p restored).
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(4, 0), P(0, 2)
 local F1, F2, e, p = conic.foci(C, A, B)
 local phi = math.pi / 3
 local M, F, pa, pb = conic.focal_point(C, A, B, phi)
-frame({P(-4, -2), P(4, 2)}, 0.6)
+fit{around = {P(-4, -2), P(4, 2)}, pad = 0.6}
 line(P(-4.6, 0), P(4.6, 0), 8)
 conic.ellipse{C = C, A = A, B = B, by = "focal"}:draw{color = 15}
 pen{dash = {4, 3}} path({A, B, F2, A}, {color = 9}) pen()

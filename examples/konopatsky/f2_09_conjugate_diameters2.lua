@@ -2,15 +2,10 @@
 -- The digest's K(-4,0), A(4,0), B(2, sqrt 3), lambda = 0.75 fixing C = (A - K)lambda + K; N on
 -- KA (t = 0.85), L = B + N - C, the line NL parallel to BC meets BA at P and KB at Q, and
 -- M = KP x QA runs the half ellipse K -> B -> A (green).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-4.8, -2.4, 4.8, 4.2)
+fit{around = {P(-4.8, -2.4), P(4.8, 4.2)}}
 local K2, A2, B2, lam = P(-4, 0), P(4, 0), P(2, math.sqrt(3)), 0.75
 local C2 = lerp(K2, A2, lam)
 path({K2, A2}, {color = 8}) path({K2, B2, A2}, {color = 8}) line(C2, B2, 8)

@@ -4,22 +4,13 @@
 -- through A (green) is phi in (arcsin(b/c), 2 pi - arcsin(b/c)), phi = pi giving A; the book's
 -- printed range (yellow) gives rho < 0, the other branch through 2C - A (digest §5.2).  The
 -- current point M at phi = 1.2 and its focal radius.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(3, 0), P(0, 2)
 local F1, F2, e, p = conic.foci(C, A, B, "hyperbola")
 local near = conic.hyperbola{C = C, A = A, B = B, by = "focal"}
 local far = conic.hyperbola{C = C, A = A, B = B, by = "focal", branch = 2}
 local phi = 1.2
 local M = near(phi)
-frame({P(-5, -3), P(5, 3)}, 0.2)
+fit{around = {P(-5, -3), P(5, 3)}, pad = 0.2}
 line(P(-7, 0), P(7, 0), 8)
 pen{dash = {4, 3}} line(P(-7, -14 / 3), P(7, 14 / 3), 8) line(P(-7, 14 / 3), P(7, -14 / 3), 8) pen()
 near:draw{color = 10}

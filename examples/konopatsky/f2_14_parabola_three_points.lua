@@ -2,15 +2,10 @@
 -- The parabola through A(0,0), C(1,3), B(4,0) with tC = 0.25: TC on AB, K on BC with AK parallel
 -- to TC C, T on AB at t = 0.35, N with TN parallel to TC K, and M on NB; the axis direction
 -- C_inf is that of CTC (red).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-1.4, -1.4, 5.4, 6.3)
+fit{around = {P(-1.4, -1.4), P(5.4, 6.3)}}
 local A, C, B, tC = P(0, 0), P(1, 3), P(4, 0), 0.25
 local arc = conic.parabola(A, C, B, tC)
 arc:draw{color = 10}

@@ -4,19 +4,10 @@
 -- 0.7, q2 = q3 = 0.8, so A1(0.15, 0.3), A2(0.64, 0.384), A3(0.9, 0.2).  The printed curve
 -- (yellow dots) on the corrected (2.93) of those inputs (green, conic.five_points2): they
 -- coincide (p1 = p2 hides the misprint); the equation as the library prints it in the caption.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(1, 0), P(0.5, 1)
 local arc = conic.five_points2{C = C, A = A, B = B, p1 = 0.7, p2 = 0.7, q2 = 0.8, q3 = 0.8}
 local A1, A2, A3 = P(0.15, 0.3), P(0.64, 0.384), P(0.9, 0.2)
-frame({A, B, C}, 0.08)
+fit{around = {A, B, C}, pad = 0.08}
 path({A, C, B}, {color = 8}) line(A, B, 8)
 arc:draw{color = 10}
 for i = 0, 40 do                                    -- the printed x(t), y(t)

@@ -2,14 +2,9 @@
 -- The scheme of Fig. 2.16 (A(0,0), B(1,0), C(0.5,1), p2 = 0.7, q2 = 0.8, the free p1, q3 as there
 -- 0.7 and 0.8) with A3 moved to B (q3 = 1: the tangent CB at B, (2.95)); conic.five_points2 gives
 -- the corrected (2.93)-(2.96).  The tangent lines in red.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(1, 0), P(0.5, 1)
 local p1, q3, p2, q2 = 0.7, 1, 0.7, 0.8
-frame(-0.1, -0.15, 1.1, 1.08)
+fit{around = {P(-0.1, -0.15), P(1.1, 1.08)}}
 path({A, C, B}, {color = 8}) line(A, B, 8)
 local A1, A3 = (A - C) * p1 + C, (B - C) * q3 + C
 local A2 = ((((A3 - A1) * p2 + A1) - C) * q2) + C

@@ -1,15 +1,10 @@
 -- Konopatsky §2.1.8.2 (Fig. 2.24): the construction of the circle by an angular parameter, (2.115)
 -- A, C and the side B, the angle phi = MCA at C and the angle delta = AMC at M (the book's
 -- Fig. 2.25 data A(0;0), B(0,5;1), C(1;0), delta = pi/3; M at phi = 1.0).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-0.15, -0.45, 1.15, 1.23)
+fit{around = {P(-0.15, -0.45), P(1.15, 1.23)}}
 local A2, B2, C2, delta = P(0, 0), P(0.5, 1), P(1, 0), math.pi / 3
 path({A2, B2, C2, A2}, {color = 8})
 local circ = conic.circle{A = A2, B = B2, C = C2, delta = delta}

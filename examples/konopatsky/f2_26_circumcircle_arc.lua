@@ -2,18 +2,9 @@
 -- The book's A(0;0), B(0,5;1), C(1;0): (2.115) with delta = beta, the angle at B, for phi in
 -- [0, pi - beta] (green) runs through A (phi = 0), B (phi = gamma) and C (phi = pi - beta; the
 -- print's gamma at C corrected); the rest of the circle dashed.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(0.5, 1), P(1, 0)
 local beta = angle(B, A, C)
-frame({P(-0.1, -0.45), P(1.1, 1.05)}, 0.05)
+fit{around = {P(-0.1, -0.45), P(1.1, 1.05)}, pad = 0.05}
 path({A, B, C, A}, {color = 8})
 local arc = conic.circle{A = A, B = B, C = C, delta = beta, range = {0, math.pi - beta}}
 pen{dash = {4, 3}} conic.circle{A = A, B = B, C = C, delta = beta}:draw{color = 7} pen()

@@ -2,17 +2,8 @@
 -- The digest's C(0,0), A(1,0), B(0,1) (the book does not print its m, n): the axis circle
 -- (green), the 1st generation m = 6 (red, (2.142)) and the 2nd, n = 24 waves on it (blue,
 -- (2.144)), conic.sinusoid{k = {m, n}}.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local C, A, B = P(0, 0), P(1, 0), P(0, 1)
-frame({P(-1.25, -1.25), P(1.25, 1.25)}, 0.18)
+fit{around = {P(-1.25, -1.25), P(1.25, 1.25)}, pad = 0.18}
 conic.circle{A = A, B = B, C = C, R = 1}:draw{color = 10}
 conic.sinusoid{C = C, A = A, B = B, k = {6}}:draw{color = 12}
 conic.sinusoid{C = C, A = A, B = B, k = {6, 24}}:draw{color = 9}

@@ -1,16 +1,11 @@
 -- Konopatsky §3.1 (Fig. 3.2): the curve of one ratio (3.1) in the simplex CAB
 -- Simplex A(0,0), B(10,0), C(4,6) (chosen): the curve (3.1) with the tangent BC at B and the
 -- tangent at A along the median from A to the midpoint of BC (dashed), not along AC.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 local A, B, C = P(0, 0), P(10, 0), P(4, 6)
 
-frame(-1, -1.5, 11, 7.5)
+fit{around = {P(-1, -1.5), P(11, 7.5)}}
 path({A, C, B}, {color = 8})
 local curve31 = oneratio(A, B, C)
 curve31:draw{color = 10}

@@ -3,20 +3,11 @@
 -- 3.2: P the arc (2.97) of k_P = 0.8 run from B to A (red), Q the arc (2.97) of k_Q = 0.5 from A
 -- to B (a parabola) (blue); M = P u' + Q u (green, oneratio.closed) runs from B back to B, with a
 -- corner at B.  The segment PQ and its point M at u = 0.3.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C, kP, kQ, u = P(0, 0), P(10, 0), P(4, 6), 0.8, 0.5, 0.3
 local arcP, arcQ = conic.ed(A, B, C, kP), conic.ed(A, B, C, kQ)
 local M = oneratio.closed(A, B, C, kP, kQ, 1)
 local Pu, Qu = arcP(1 - u), arcQ(u)
-frame({A, B, C}, 0.6)
+fit{around = {A, B, C}, pad = 0.6}
 path({A, C, B, A}, {color = 8})
 arcP:draw{color = 12} arcQ:draw{color = 9}
 M:draw{color = 10}

@@ -4,17 +4,8 @@
 -- n >= 2).  Each M_n is the general law M_n = (A - C)t'^(n+1)/D_n + (B - C)t^(n+1)/D_n + C,
 -- D_n = t'^n + t'^(n-1) t + ... + t^n (the digest's, which gives the book's M2..M5), written
 -- as a point equation over a param and compiled.
--- equal units on the 4:3 canvas around the figure's points, pad world units on every side
-local function frame(pts, pad)
-  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
-  for _, p in ipairs(pts) do
-    x0, x1, y0, y1 = math.min(x0, p.x), math.max(x1, p.x), math.min(y0, p.y), math.max(y1, p.y)
-  end
-  local cx, cy, h = (x0 + x1) / 2, (y0 + y1) / 2, math.max((x1 - x0) * 3 / 4, y1 - y0) / 2 + pad
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local A, B, C = P(0, 0), P(10, 0), P(4, 6)
-frame({A, B, C}, 0.6)
+fit{around = {A, B, C}, pad = 0.6}
 path({A, C, B}, {color = 8})
 local colors = {15, 14, 10, 11, 13}
 local tp = param "t"

@@ -3,15 +3,10 @@
 -- from oneratio.desargues_scheme: P, Q, K on AC, CB, BD with the one ratio t; T = AB x PQ and
 -- S = CD x QK (Menelaus), R on TS, N on PQ and J on QK (the quadratic Beziers ACB and CBD),
 -- M = SN x TJ on the arc (3.6) from A (tangent AC) to D (tangent BD), green.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-3.5, -2.5, 11, 8.5)
+fit{around = {P(-3.5, -2.5), P(11, 8.5)}}
 local A, B, C, D = P(0, 0), P(9, 5), P(1, 5), P(10, 0)
 local t = 0.3
 local s = oneratio.desargues_scheme(A, B, C, D, t)

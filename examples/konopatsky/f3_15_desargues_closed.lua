@@ -2,15 +2,10 @@
 -- Chosen points (the book prints none): M = (A(1 - 3t t') + B t^2 t' + C t'^2 t)/(2t^2 - 2t + 1)
 -- from A back to A, leaving along AC and returning along BA; M(1/2) = G, the centroid of A, A, B,
 -- C.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local dot = mark
 local function mark(p, name, _, c) dot(p, "dot", 5, c or 15) label(name, p, nil, c or 15) end
 
-frame(-2, -2, 8, 6)
+fit{around = {P(-2, -2), P(8, 6)}}
 local A2, B2, C2 = P(0, 0), P(6, 4), P(1, 5)
 path({A2, C2, B2, A2}, {color = 12})
 local arc = oneratio.desargues(A2, B2, C2, A2)

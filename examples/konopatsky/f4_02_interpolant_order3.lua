@@ -2,15 +2,10 @@
 -- Chosen nodes (the book prints none): the curve through M1..M4 at t = 0, 1/3, 2/3, 1 (green)
 -- is the cubic Bezier curve on the control polygon (grey) whose inner points are C1, C2 of
 -- (4.14)-(4.15) (interp.controls); the nodes in white, x(t) and y(t) at the top.
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local function mark(p, name, _, c) circle(p, 0.08, c or 15) label(name, p, nil, c or 15) end
 local sets = {{P(0, 0), P(4, 5), P(9, 1)}, {P(0, 0), P(2, 4), P(6, 5), P(9, 1)}}
 for i, nodes in pairs{[2] = sets[2]} do
-  frame(-1.5, -2.5, 10.5, 10.8)
+  fit{around = {P(-1.5, -2.5), P(10.5, 10.8)}}
   local ctrl = interp.controls(nodes)
   path(ctrl, {color = 8})
   for j = 2, #ctrl - 1 do mark(ctrl[j], #ctrl == 3 and "$C$" or "$C_" .. (j - 1) .. "$", "n", 7) end

@@ -2,11 +2,6 @@
 -- The digest's nodes M = (0,0), (3,2), (6,2), (9,0), C2 = (0,2) and C5 = (9,2) (a, convex, top)
 -- or C5 = (9,-2) (b, with an inflection, bottom): the quintic of interp.arc through the nodes
 -- with the end tangents M1C2 and C5M4 (red, dashed).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local M = {P(0, 0), P(3, 2), P(6, 2), P(9, 0)}
 local C2 = P(0, 2)
 for i, C5 in ipairs{P(9, 2), P(9, -2)} do

@@ -1,14 +1,9 @@
 -- Konopatsky §4.9 (Fig. 4.5): the interpolation arc through three points with one tangent
 -- Chosen nodes M1(0,0), M2(4.5,2), M3(9,0) and the start handle C2(1,3): the cubic through the
 -- nodes with the start tangent M1C2 (red, dashed) only (interp.arc(M, C2)).
--- equal units on the whole 4:3 canvas around the panel's window (x1, y1)-(x2, y2)
-local function frame(x1, y1, x2, y2)
-  local cx, cy, h = (x1 + x2) / 2, (y1 + y2) / 2, math.max((x2 - x1) * 3 / 4, y2 - y1) / 2
-  window(cx - h * 4 / 3, cy - h, cx + h * 4 / 3, cy + h)
-end
 local M = {P(0, 0), P(4.5, 2), P(9, 0)}
 local C2 = P(1, 3)
-frame(-1, -1, 10, 3.5)
+fit{around = {P(-1, -1), P(10, 3.5)}}
 pen{dash = {4, 3}} line(M[1], C2, 12) pen()
 interp.arc(M, C2):draw{color = 10}
 for j, p in ipairs(M) do mark(p, "dot", 5, 15) label("$M_" .. j .. "$", p) end

@@ -101,6 +101,17 @@ local function gosub_regions(prog)
     return names
   end
   local targets = gosub_targets_of(prog.main)
+  -- RETURN line jumps out of its subroutine: only the dispatch mode keeps subroutines in their
+  -- body's code, where that jump is a goto
+  local function returns_to_line(list)
+    local found = false
+    walk.stmts(list, function(st) if st.k == "return" and st.label then found = true end end)
+    return found
+  end
+  if not prog.dispatch and returns_to_line(prog.main) then redo() end
+  for _, proc in ipairs(prog.procs) do
+    if proc.tree and not proc.dispatch and returns_to_line(proc.tree) then redo(proc) end
+  end
   -- In dispatch mode (a GOTO between a subroutine and the rest of the module, a GOSUB into a
   -- block) the module's subroutines stay in its code: GOSUB pushes where to come back and
   -- jumps, RETURN pops and jumps back (qbasic_emit), so any GOTO may cross them
@@ -175,7 +186,7 @@ local function check_jumps(prog)
   local goto_targets = {}
   local function scan(list)
     walk.stmts(list, function(st)
-      if st.k == "goto" then goto_targets[st.label] = true
+      if st.k == "goto" or (st.k == "return" and st.label) then goto_targets[st.label] = true
       elseif st.k == "on" and not st.gosub then
         for _, l in ipairs(st.labels) do goto_targets[l] = true end
       end
@@ -262,6 +273,8 @@ local function check_jumps(prog)
   function STMT.gosub(st)
     if gosub_jumps() then jump(st.label, st.line) end
   end
+  -- RETURN line pops the GOSUB stack and jumps: the dispatch mode's (gosub_regions)
+  STMT["return"] = function(st) if st.label then jump(st.label, st.line) end end
   STMT.exit = exit
   STMT["for"] = function(st) inside(st.body, false, "for", st) end
   STMT["while"] = function(st) inside(st.body, false, "while", st) end

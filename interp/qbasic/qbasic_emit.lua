@@ -165,7 +165,12 @@ function STMT.on(S, st)
   S.E(st.line, table.concat(parts, " "))
 end
 STMT["return"] = function(S, st)
-  if S.cur_region then S.E(st.line, "do return end")
+  if st.label and not S.cur_region then   -- RETURN line: the dispatch mode's (qbasic_control)
+    S.E(st.line, "gosub_pop(" .. stack_arg(S):sub(3) .. ") goto " .. label_lua(st.label))
+  elseif S.cur_region and st.label then
+    error({ qb = true, line = st.line, msg = "RETURN " .. st.label .. " inside an error handler: "
+      .. "not supported by pointcalc" }, 0)
+  elseif S.cur_region then S.E(st.line, "do return end")
   elseif (S.cur_proc or S.prog).gosub_labels then
     local g = S.gret
     if not g.var then g.var = temp(S) end

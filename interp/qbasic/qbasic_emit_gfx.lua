@@ -176,8 +176,12 @@ function M.input(st)
   E(st.line, table.concat(parts, " ") .. " end")
 end
 
+-- PRINT's items: QBasic prints them one by one, so an item that fails (trapped, RESUME NEXT)
+-- leaves the items before it printed.  In a program with an error handler a PRINT of several
+-- items is one call per item (with the separators before it), the last call ending the line
+-- unless the PRINT does not; elsewhere one call (the items evaluated first: docs/qbasic.md).
 function M.print(st)
-  local args = {}
+  local calls, args = {}, {}
   for _, it in ipairs(st.items) do
     if it.k == "expr" then
       local e = it.e
@@ -189,14 +193,25 @@ function M.print(st)
     elseif it.k == "tab" or it.k == "spc" then
       args[#args + 1] = it.k .. "(" .. value(it.e, 0) .. ")"
     end
+    if it.k ~= "sep" then calls[#calls + 1], args = args, {} end
   end
-  if not st.newline then args[#args + 1] = "nonl" end
-  if st.file then   -- PRINT #n: the same items into the file
-    table.insert(args, 1, (value(st.file, 0)))
-    E(st.line, "fprint(" .. table.concat(args, ", ") .. ")")
-    return
+  if #args > 0 or #calls == 0 then calls[#calls + 1] = args end   -- trailing commas: zones
+  if not next(prog.handlers or {}) then   -- no error trap: one call
+    local all = {}
+    for _, c in ipairs(calls) do for _, a in ipairs(c) do all[#all + 1] = a end end
+    calls = { all }
   end
-  E(st.line, "qprint(" .. table.concat(args, ", ") .. ")")
+  if not st.newline then local last = calls[#calls] last[#last + 1] = "nonl" end
+  local fn = st.file and "fprint(" or "qprint("   -- PRINT #n: the same items into the file
+  local code = {}
+  for i, c in ipairs(calls) do
+    if i < #calls then c[#c + 1] = "nonl" end
+    if st.file then table.insert(c, 1, #calls == 1 and (value(st.file, 0)) or "_pf") end
+    code[#code + 1] = fn .. table.concat(c, ", ") .. ")"
+  end
+  if #code == 1 then E(st.line, code[1]) return end
+  local file = st.file and ("local _pf = " .. value(st.file, 0) .. " ") or ""
+  E(st.line, "do " .. file .. table.concat(code, " ") .. " end")
 end
 
 -- PRINT USING: the runtime formats the values (qbasic_using.lua)

@@ -565,9 +565,10 @@ function STMT.resume(P)
   return add(P, { k = "resume", what = "label", label = P:label_name(t) })
 end
 function STMT.error(P) return rtcall(P, "error_n", { P:expr() }) end
+-- RETURN [line]: with a line, back to that line instead of after the GOSUB (QBasic, GW-BASIC)
 STMT["return"] = function(P)
-  if not P:at_end() then P:unsupported("RETURN with a line number") end
-  return add(P, { k = "return" })
+  if P:at_end() then return add(P, { k = "return" }) end
+  return add(P, { k = "return", label = P:label_name(P:next()) })
 end
 -- ON ERROR GOTO label | 0: the error handler (qbasic_control makes it a subroutine)
 local function on_error(P)

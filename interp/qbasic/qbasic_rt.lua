@@ -688,7 +688,12 @@ local function install_drawing(E, R)
       border = to_int(border, -32768, 32767, 2)
       if border < 0 or border > 15 then error(IFC, 2) end
     end
-    if R.mode == 0 then return end       -- text colours: PRINT goes to standard output
+    if R.mode == 0 then                  -- text colours: the text screen's (qbasic_textscreen.lua)
+      if fg ~= nil then fg = to_int(fg, -32768, 32767, 2) if fg < 0 or fg > 31 then error(IFC, 2) end end
+      if bg ~= nil then bg = to_int(bg, -32768, 32767, 2) if bg < 0 or bg > 15 then error(IFC, 2) end end
+      R.rt.text_color(fg, bg)
+      return
+    end
     if R.mode ~= 11 and R.mode ~= 12 and R.mode ~= 13 then R.rt.color_other(R.mode, fg, bg, 2) return end
     if bg ~= nil then error(IFC, 2) end
     if fg ~= nil then h_color(attribute(fg, 2)) end

@@ -68,6 +68,11 @@ local function install_text(E, rt, S)
     cells[tx.bottom] = nil
   end
   local function forget(top, bottom) for r = top, bottom do cells[r] = nil end end
+  -- text mode's screen as QBasic shows it, for the picture (qbasic_textscreen.lua)
+  local TS = require("qbasic_textscreen").install(rt, tx)
+  S.tscreen = TS
+  function M.TEXT_PICTURE() if not graphics(rt) then TS.picture() end end
+  function rt.text_color(fg, bg) TS.color(fg, bg) end
   function E.screen_fn(row, col, flag)
     row, col = to_int(row, -32768, 32767, 2), to_int(col, -32768, 32767, 2)
     if row < 1 or row > tx.rows or col < 1 or col > tx.cols then error(IFC, 2) end
@@ -114,7 +119,8 @@ local function install_text(E, rt, S)
     out:write(s)
     if graphics(rt) then
       screen_text(s)
-    else   -- text mode: standard output is the screen; no wrapping (docs/qbasic.md)
+    else   -- text mode: standard output is the transcript; no wrapping (docs/qbasic.md)
+      TS.write(s)
       local row, col = tx.row, tx.col
       for line, sep in s:gmatch("([^\n]*)(\n?)") do
         remember(row, col, line)
@@ -139,6 +145,7 @@ local function install_text(E, rt, S)
     tx.top, tx.bottom, tx.row, tx.col = 1, tx.rows, 1, 1
     tx.pages, tx.active, tx.visual = info and info.pages or 1, 0, 0
     forget(1, 60)
+    TS.reset()
   end
 
   function E.locate(row, col)
@@ -154,6 +161,7 @@ local function install_text(E, rt, S)
       if col < 1 or col > tx.cols then error(IFC, 2) end
       tx.col = col
     end
+    TS.locate(row, col)
   end
   function E.csrlin() return tx.row end
   function E.pos_(_) return tx.col end
@@ -166,8 +174,10 @@ local function install_text(E, rt, S)
       tx.top, tx.bottom = top, bottom
     end
     tx.row, tx.col = tx.top, 1
+    TS.locate(tx.row, 1)
   end
-  -- WIDTH columns, rows: accepted when QBasic has the size; the mode's layout stays
+  -- WIDTH columns, rows: accepted when QBasic has the size; in text mode the screen takes that
+  -- layout (40 or 80 columns, 25, 43 or 50 lines) and is cleared, a graphics mode's stays
   function E.width(cols, rows)
     if cols ~= nil then
       cols = to_int(cols, -32768, 32767, 2)
@@ -176,12 +186,24 @@ local function install_text(E, rt, S)
     if rows ~= nil then
       rows = to_int(rows, -32768, 32767, 2)
       if rows ~= 25 and rows ~= 30 and rows ~= 43 and rows ~= 50 and rows ~= 60 then error(IFC, 2) end
+      -- VGA text mode has 25, 43 and 50 lines (30 and 60 are graphics modes' heights)
+      if not graphics(rt) and rows ~= 25 and rows ~= 43 and rows ~= 50 then error(IFC, 2) end
+    end
+    if not graphics(rt) and ((cols and cols ~= tx.cols) or (rows and rows ~= tx.rows)) then
+      tx.cols, tx.rows = cols or tx.cols, rows or tx.rows
+      tx.top, tx.bottom, tx.row, tx.col = 1, tx.rows, 1, 1
+      forget(1, 60)
+      TS.reset()
     end
   end
   -- CLS 0 (or none): the whole screen; 1: the graphics view; 2: the text viewport
   function rt.cls(n)
     if n ~= 1 then forget(n == 2 and tx.top or 1, n == 2 and tx.bottom or tx.rows) end
-    if not graphics(rt) then tx.row, tx.col = tx.top, 1 return end
+    if not graphics(rt) then
+      tx.row, tx.col = tx.top, 1
+      if n == 2 then TS.clear(tx.top, tx.bottom) else TS.clear(1, tx.rows) end
+      return
+    end
     if n == 2 then
       for r = tx.top, tx.bottom do h_print_at(r, 1, string.rep(" ", tx.cols), nil, 0) end
     elseif n == 1 then

@@ -135,4 +135,11 @@ int pc_fit(pc_canvas *c, double margin, int aspect);
 #define PC_FIT_MARGIN 12.0
 int pc_fit_figure(pc_canvas *c);
 
+/* Frame the given points (n pairs x, y in world units) before drawing: the window round their
+ * box with pad world units more on each side, at equal units at the view's aspect, centred
+ * (PC_FIT_EQUAL), or the box itself plus pad (PC_FIT_FILL); y up.  What is already drawn does
+ * not move (that is pc_fit).  PC_EARG for no points, a non-finite one, a negative pad, or a
+ * box of no size with pad 0. */
+int pc_fit_around(pc_canvas *c, size_t n, const double *xy, double pad, int aspect);
+
 #endif

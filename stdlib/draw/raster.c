@@ -675,9 +675,9 @@ int pc_cls(pc_canvas *c) {
 
 /* ---- CIRCLE ---------------------------------------------------------------------------- */
 
-/* Is the parametric angle th (0..2pi) on the arc from a0 to a1 (counter-clockwise)? */
-static int on_arc(double th, double a0, double a1) {
-    const double eps = 1e-9;
+/* Is the parametric angle th (0..2pi) on the arc from a0 to a1 (counter-clockwise), within eps
+ * of its ends? */
+static int on_arc(double th, double a0, double a1, double eps) {
     if (a0 <= a1) return th >= a0 - eps && th <= a1 + eps;
     return th >= a0 - eps || th <= a1 + eps;
 }
@@ -754,6 +754,10 @@ static void raster_ellipse(pc_canvas *c, int64_t cx, int64_t cy, int64_t rx, int
     const pc_rect *v = &c->view;
     /* a wide pen reaches into the view from outside it */
     int m = ep.s && ep.s->disc ? (int)ceil(ep.s->pen->width / 2) + 1 : 0;
+    /* an end of the arc lights the pixel its angle falls in: a pixel is on the arc when its
+     * centre is within half a pixel of the end along the curve (QBasic's CIRCLE ..., 0, 1.5708
+     * and ..., 1.5708, 3.1416 both light the top pixel, though 1.5708 is not exactly pi/2) */
+    double eps = 0.5 / (double)(rx > ry ? (rx > 0 ? rx : 1) : (ry > 0 ? ry : 1));
     for (int pass = 0; pass < 2; pass++) {
         range r[2];
         int nr = pass ? visible_offsets(cy, ry, v->y0 - m, v->y1 + m, r)
@@ -775,7 +779,8 @@ static void raster_ellipse(pc_canvas *c, int64_t cx, int64_t cy, int64_t rx, int
                         th = rx == 0 || ry == 0 ? atan2(-(double)dy, (double)dx)
                                                 : atan2(-(double)dy / (double)ry, (double)dx / (double)rx);
                         if (th < 0) th += TWO_PI;
-                        if (!full && !on_arc(th, a0, a1)) continue;
+                        if (!full && !on_arc(th, a0, a1, eps)) continue;
+                        if (!full && th < a0 && th >= a0 - eps) th = a0;   /* dash phase from 0 */
                     }
                     if (!ep.s) plot64(c, cx + dx, cy + dy, color);
                     else stroke_px(ep.s, cx + dx, cy + dy,

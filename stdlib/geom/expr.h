@@ -146,6 +146,16 @@ typedef const char *(*pc_expr_namer)(void *ud, int dim, const double *h);
 int pc_expr_print(const pc_expr_pool *pool, int e, pc_expr_namer namer, void *ud, char *buf,
                   size_t len);
 
+/* e in powers of its parameter k (expr_poly.c), for an equation built by + - * /, integer
+ * powers, dot, coordinates and constants (polynomial or rational in k): coef gets (deg + 1)
+ * rows, lowest power first; a value's rows are its dim + 1 homogeneous channels over a common
+ * denominator that cancels in each coordinate (coordinate i = row i / row dim: the form
+ * pc_curve_monomial gives), a scalar's rows are 2: numerator, denominator.  coef holds
+ * (maxdeg + 1) * (dim + 1) doubles (2 for a scalar).  PC_EDIM when e depends on another
+ * parameter, PC_EDOMAIN for a function that is not rational (sin, exp, sqrt, smoothsteps,
+ * real powers) or a degree above maxdeg, PC_ENOMEM. */
+int pc_expr_power_basis(const pc_expr_pool *pool, int e, int k, int maxdeg, double *coef, int *deg);
+
 /* --- compiling and evaluating ------------------------------------------------------------- */
 /* The program computing e from the parameters inputs[0..nin-1] (indices of parameters,
  * 0 <= nin <= PC_EXPR_MAXPARAM, derivatives are taken with respect to them, in that order).

@@ -1,7 +1,7 @@
 /* Binding of QBasic's screen (stdlib/draw/qbscreen.h): what QBasic programs do on a graphics
  * screen beyond the drawing statements, for the QBasic runtime and for scripts.
  *
- *   print_at(row, col, text [, fg [, bg]])   text in character cells (code page 437 bytes)
+ *   print_at(row, col, text [, fg [, bg [, cell]]])  text in character cells (code page 437)
  *   scroll_text(top, bottom [, bg])           the text rows top..bottom up by one
  *   get_block(x1, y1, x2, y2) -> block        GET; block.w, block.h, block.bytes
  *   put_block(x, y, block [, action])         PUT; "xor" (default), "pset", "preset", "and", "or"
@@ -74,12 +74,14 @@ static int in_range(lua_State *L, int k, double v, int lo, int hi) {
 #define INT(nm) {.name = nm, .kind = PCL_INTEGER}
 
 static const pcl_arg print_at_args[] = {INT("row"), INT("column"), {.name = "text", .kind = PCL_STRING},
-                                        ATTR("colour"), ATTR("background colour"), PCL_END};
+                                        ATTR("colour"), ATTR("background colour"),
+                                        {.name = "cell height", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
 static int l_print_at(lua_State *L) {
-    pcl_val a[5] = {0};
+    pcl_val a[6] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int h = cell_height(c);
+    /* the mode's cells, or those asked for: text mode's 43 and 50 lines use the 8x8 font */
+    int h = a[5].present ? in_range(L, 6, a[5].x, 8, 16) : cell_height(c);
     int row = in_range(L, 1, a[0].x, 1, c->height / h + 1), col = in_range(L, 2, a[1].x, 1, c->width / 8);
     return check(L, c, pc_text_cells(c, row, col, a[2].s, lua_rawlen(L, 3), h, (int)a[3].x, (int)a[4].x));
 }
@@ -250,7 +252,7 @@ static int l_mode_info(lua_State *L) {
 }
 
 static const pcl_fn fns[] = {
-    {.name = "print_at", .fn = l_print_at, .args = print_at_args, .sig = "print_at(row, col, text [, fg [, bg]])", .help = "Text in the character cells of a row and column (1-based; 8x8, 8x14 or 8x16 by the mode), code page 437, on an opaque background, as QBasic's PRINT."},
+    {.name = "print_at", .fn = l_print_at, .args = print_at_args, .sig = "print_at(row, col, text [, fg [, bg [, cell]]])", .help = "Text in the character cells of a row and column (1-based; 8x8, 8x14 or 8x16 by the mode, or cell pixels high), code page 437, on an opaque background, as QBasic's PRINT."},
     {.name = "scroll_text", .fn = l_scroll_text, .args = scroll_args, .sig = "scroll_text(top, bottom [, bg])", .help = "Move the text rows top..bottom up by one row of cells; the bottom row is cleared."},
     {.name = "get_block", .fn = l_get_block, .args = get_block_args, .sig = "get_block(x1, y1, x2, y2) -> block", .help = "QBasic's GET: the pixels between two corners (inside the view); block.w, block.h and block.bytes (the size QBasic's array needs)."},
     {.name = "put_block", .fn = l_put_block, .args = put_block_args, .sig = "put_block(x, y, block [, \"xor\"|\"pset\"|\"preset\"|\"and\"|\"or\"])", .help = "QBasic's PUT: the block with its top-left corner at (x, y), combined with the screen (XOR by default: twice restores)."},

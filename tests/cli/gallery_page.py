@@ -30,6 +30,8 @@ def type_filter(page, text):
 with Browser(chromium, profile) as b:
     page = b.open("file://" + os.path.join(gallery, "index.html"))
     check(page.wait("document.querySelectorAll('figure').length > 100"), "the page lists the figures")
+    # the page is large (300 figures): count them once it has loaded, not while it parses
+    check(page.wait("document.readyState === 'complete'", 30), "the page loads")
     total = page.eval("document.querySelectorAll('figure').length")
     books = page.eval("Array.from(document.querySelectorAll('#contents > li > a')).map(a => a.textContent)")
     check(books == ["basics", "buimov", "konopatsky", "korotky", "stepanov", "Sources"], "the contents: " + repr(books))

@@ -593,6 +593,27 @@ static void test_window_overflow_is_an_error(void **state) {
 /* A circle far larger than the screen: the visible part of its outline is exact.  Centre
  * (-99995, 5), radius 100000 on a 10x10 canvas: the rightmost point is (5, 5) and over rows
  * 0..9 the outline stays within 0.000125 px of column 5 (x = -99995 + sqrt(1e10 - dy^2)). */
+/* An arc's end lights the pixel its angle falls in, at either end: QBasic programs give
+ * pi/2 as 1.5708 (3.7e-6 past it), and CIRCLE (320,240),100,15,1.5708,3.1416 must light the
+ * top pixel (320,140) as CIRCLE ..., 0, 1.5708 does; a pixel past the end stays dark. */
+static void test_arc_end_pixels(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_circle(c, 320, 240, 100, 15, 1.5708, 3.1416, NAN), PC_OK);
+    assert_int_equal(at(c, 320, 140), 15);         /* the first pixel, at about pi/2 */
+    assert_int_equal(at(c, 220, 240), 15);         /* the last, at about pi */
+    assert_int_equal(at(c, 321, 140), 0);          /* before the start: clockwise of it */
+    assert_int_equal(at(c, 220, 241), 0);          /* past the end */
+    pc_canvas_free(c);
+    c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_circle(c, 320, 240, 100, 15, 0, 1.5708, NAN), PC_OK);
+    assert_int_equal(at(c, 320, 140), 15);
+    assert_int_equal(at(c, 420, 240), 15);
+    assert_int_equal(at(c, 319, 140), 0);
+    assert_int_equal(at(c, 420, 241), 0);
+    pc_canvas_free(c);
+}
+
 static void test_huge_circle_visible_arc(void **state) {
     (void)state;
     pc_canvas *c = small(10, 10);
@@ -641,6 +662,7 @@ int main(void) {
         cmocka_unit_test(test_lines_to_far_away),
         cmocka_unit_test(test_window_overflow_is_an_error),
         cmocka_unit_test(test_huge_circle_visible_arc),
+        cmocka_unit_test(test_arc_end_pixels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -51,4 +51,16 @@ check.err(function() paint_tile(1, 1, string.rep("x", 65)) end, "a string of 1..
 check.err(function() paint_tile(1, 1, 7) end, "(tile) must be a string", "a number as tile")
 check.err(function() paint_tile(1, 1, "ab", 16) end, "argument #4 (border) must be a colour number 0..15", "border")
 check.err(function() paint_tile("x", 1, "ab") end, "argument #1", "a bad point")
+
+-- print_at's cell height: the text mode's 43 and 50 lines use the 8x8 font on a canvas of any
+-- size; the full block CHR$(219) fills its cell exactly
+screen{width = 640, height = 400, colors = 16}
+print_at(50, 1, "\219", 7, 0, 8)
+check.eq(point(0, 392), 7, "cell 8: row 50 starts at y 392")
+check.eq(point(7, 399), 7, "cell 8: the block's last pixel")
+check.eq(point(0, 391), 0, "cell 8: row 49 untouched")
+print_at(1, 2, "\219", 14, 0)
+check.eq(point(8, 15), 14, "no cell height: 16 on a 640x400 canvas")
+check.err(function() print_at(1, 1, "x", 7, 0, 12) end, "8, 14 or 16", "cell height 12")
+check.err(function() print_at(1, 1, "x", 7, 0, 20) end, "argument #6", "cell height 20")
 check.done()

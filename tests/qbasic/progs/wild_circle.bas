@@ -1,4 +1,5 @@
-' CIRCLE arcs (negative angles draw the radii) and an ellipse by aspect
+' CIRCLE arcs (negative angles draw the radii) and an ellipse by aspect; an arc to about pi/2
+' (PI = 3.14159) lights its last pixel, the top one (320, 140)
 SCREEN 12
 CONST PI = 3.14159
 CIRCLE (320, 240), 100, 14, 0, PI / 2
