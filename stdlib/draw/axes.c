@@ -49,6 +49,8 @@ int pc_axes(pc_canvas *c, const pc_axes_spec *a, int color, int *nticks) {
           a->x0 < a->x1 && a->y0 < a->y1))
         return pc_fail(c, "axes: the ranges must be finite with x0 < x1 and y0 < y1");
     if (!(isfinite(a->ox) && isfinite(a->oy))) return pc_fail(c, "axes: the origin must be finite");
+    int st0;   /* in a figure framed when written: drawn once the frame is known */
+    if (pc_furniture_defer_axes(c, a, color, nticks, &st0)) return st0;
     double ox = fmin(fmax(a->ox, a->x0), a->x1), oy = fmin(fmax(a->oy, a->y0), a->y1);
     int st = PC_OK, count = 0, gc = a->grid_color >= 0 ? a->grid_color : color;
     for (int axis = 0; axis < 2 && st == PC_OK; axis++) {
@@ -92,6 +94,7 @@ int pc_legend(pc_canvas *c, int n, const char *const *names, const int *colors, 
     if (n < 1 || n > 100) return pc_fail(c, "legend: 1..100 entries, got %d", n);
     if (corner != PC_ANCHOR_NE && corner != PC_ANCHOR_NW && corner != PC_ANCHOR_SE && corner != PC_ANCHOR_SW)
         return pc_fail(c, "legend: the corner must be ne, nw, se or sw");
+    int st0;   /* in a figure framed when written: drawn after the framing, in device units */
     double w = 0, h = 0;
     for (int i = 0; i < n; i++) {
         double tw, th;
@@ -100,6 +103,7 @@ int pc_legend(pc_canvas *c, int n, const char *const *names, const int *colors, 
         w = fmax(w, tw);
         h += th + 2;
     }
+    if (pc_furniture_defer_legend(c, n, names, colors, corner, color, &st0)) return st0;
     double bw = 6 + 20 + 6 + w + 6, bh = h + 6;
     int east = corner == PC_ANCHOR_NE || corner == PC_ANCHOR_SE;
     int south = corner == PC_ANCHOR_SE || corner == PC_ANCHOR_SW;

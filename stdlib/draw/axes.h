@@ -23,6 +23,9 @@ typedef struct {
 /* Both axes with their ticks (6 px across), labels below the x axis and left of the y axis,
  * heads and the grid as asked.  *nticks (may be NULL) gets the number of ticks drawn. */
 int pc_axes(pc_canvas *c, const pc_axes_spec *a, int color, int *nticks);
+/* pc_axes in a figure framed when written (furniture.c): 1 with the axes kept (*st its status,
+ * *nticks the count they will have) to be drawn once the frame is known; 0 to draw them now. */
+int pc_furniture_defer_axes(pc_canvas *c, const pc_axes_spec *a, int color, int *nticks, int *st);
 
 /* A legend: n entries (a 20 px line in colour colors[i], then names[i]) in a box in the
  * corner `corner` (PC_ANCHOR_NE, NW, SE or SW) of the picture, 8 px in, in device units. */

@@ -132,6 +132,7 @@ void pc_canvas_detach(pc_canvas *c) {
     c->attach_drop = NULL;
     c->attach_extent = NULL;
     c->attach_frame = NULL;
+    pc_furniture_forget(c);
 }
 
 void pc_canvas_free(pc_canvas *c) {

@@ -213,6 +213,12 @@ typedef struct pc_canvas {
     int (*attach_extent)(void *attach, const struct pc_canvas *c, pc_extent_fn put, void *ctx);
     void (*attach_frame)(void *attach, double sx, double sy, double tx, double ty);
     void *attach;
+    /* Furniture measured in pixels between world points (furniture.c: dimension, angle_mark,
+     * centre_line, hatch) drawn in a figure framed when written: kept here with the points'
+     * pixels of the call and expanded when the frame is known (fit.c).  Dropped with the
+     * attachment; a writer's copy borrows them (deferred_borrowed: never frees them). */
+    struct pc_deferred *deferred; size_t ndeferred, capdeferred;
+    int deferred_borrowed;
 } pc_canvas;
 
 /* Drop what is attached (see pc_canvas.attach). */

@@ -86,5 +86,23 @@ int pc_clip_segment(double *x0, double *y0, double *x1, double *y1, double xmin,
  * SVG writer share it), and the VGA character nearest to one the font lacks. */
 int pc_text_vga_layout(const char *utf8, int scale, pc_mlayout *L, char *err, size_t errlen);
 uint32_t pc_vga_fallback(const pc_font *f, uint32_t cp);
+/* The row offset (down positive) of pixel i of n of a \tilde's wave at a scale: one period of
+ * a sine, scale pixels each way, up first: the nearest a row of pixels comes to ~. */
+long pc_vga_tilde_dy(long i, long n, int scale);
+/* The row of an \underline at row y of a label whose baseline is at row base: the cell's last
+ * row at most, under the VGA font's descenders and inside the label's cells. */
+long pc_vga_under_y(long base, long y, int scale);
+
+/* Deferred furniture (furniture.c; canvas.h's deferred): draw the items recorded when op `at`
+ * was next (all: at or after it) through the framing x -> sx x + tx, y -> sy y + ty of the
+ * pixels they were recorded in; put each item's points into an extent (for framing); forget
+ * them all (freed unless borrowed). */
+int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, double tx, double ty);
+void pc_furniture_extent(const pc_canvas *c, pc_extent_fn put, void *ctx);
+void pc_furniture_forget(pc_canvas *c);
+/* pc_legend in a figure framed when written: 1 with the legend kept (*st its status) to be
+ * drawn after the framing, in device units and out of the frame's extent; 0 to draw it now. */
+int pc_furniture_defer_legend(pc_canvas *c, int n, const char *const *names, const int *colors,
+                              int corner, int color, int *st);
 
 #endif

@@ -37,6 +37,7 @@ static int gather(const pc_canvas *c, items *it) {
         int st = c->attach_extent(c->attach, c, put_cb, it);
         if (st != PC_OK) return st;
     }
+    pc_furniture_extent(c, put_cb, it);   /* furniture to be drawn once framed: its points */
     for (size_t i = 0; i < c->nops; i++) {
         const pc_op *op = &c->ops[i];
         switch (op->kind) {
@@ -269,6 +270,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
             }
         }
         free(s);
+        if (st == PC_OK) c->ops[c->nops - 1].pen = op->pen;   /* its {font, size, halo} (pc_text_style) */
         return st;
     }
     default:
@@ -307,8 +309,15 @@ static int replay(pc_canvas *c, const frame *f) {
         int full = r->x0 == 0 && r->y0 == 0 && r->x1 == c->width - 1 && r->y1 == c->height - 1;
         c->view = full ? *r : (pc_rect){(int)fmax(0, floor(x0)), (int)fmax(0, floor(y0)),
                                         (int)fmin(c->width - 1, ceil(x1)), (int)fmin(c->height - 1, ceil(y1))};
-        if ((st = pc_push_clip(c)) == PC_OK) st = replay_op(c, &o, &o.ops[i], f);
+        if ((st = pc_push_clip(c)) == PC_OK && c->ndeferred)   /* furniture called before op i */
+            st = pc_furniture_expand(c, i, 0, f->sx, f->sy, f->tx, f->ty);
+        if (st == PC_OK) st = replay_op(c, &o, &o.ops[i], f);
     }
+    if (st == PC_OK && c->ndeferred) {   /* and after the last op, in the whole view */
+        c->view = view;
+        if ((st = pc_push_clip(c)) == PC_OK) st = pc_furniture_expand(c, o.nops, 1, f->sx, f->sy, f->tx, f->ty);
+    }
+    pc_furniture_forget(c);   /* drawn: ops now (a writer's copy only lets go of its borrowed list) */
     c->view = view;
     c->view_screen = vs;
     c->has_window = has_window;

@@ -8,6 +8,8 @@
 #include <string.h>
 #include "canvas_internal.h"
 #include "furniture.h"
+#include "axes.h"
+#include "layout.h"
 
 #define PI 3.14159265358979323846
 
@@ -67,6 +69,208 @@ static int stext(pc_canvas *c, v2 p, const char *text, int anchor, int color) {
     double wx, wy;
     pc_screen_to_world(c, p.x, p.y, &wx, &wy);
     return pc_text(c, wx, wy, text, anchor, 3, 1, color);
+}
+
+/* ---- furniture deferred to the frame ------------------------------------------------------ */
+
+/* In a figure framed when written, the pixels between two world points are not known at the
+ * call: a dimension's offset, an angle mark's text distance, a centre line's overshoot and
+ * dashes, a hatch's spacing would all scale with the frame.  The call is kept with its points'
+ * pixels of the moment (the figure's mirror of the world) and drawn once framed. */
+enum { DEF_DIMENSION, DEF_ANGLE, DEF_CENTRE, DEF_HATCH, DEF_LEGEND, DEF_AXES };
+struct pc_deferred {
+    int kind, color, pen;
+    size_t at;          /* the number of ops when it was called: its place in the drawing order */
+    double v[8];        /* its points in pixels, then its sizes */
+    char *text;         /* its text, the measured value formatted at the call (owned); a
+                           legend's names, one after another with their NULs */
+    double *xy; size_t n;   /* a hatch's region in pixels (owned); a legend's colours */
+    pc_axes_spec *axes;     /* axes' spec in world units (owned); v: the view's origin then */
+};
+
+static int deferring(const pc_canvas *c) { return pc_figure_frames(c); }
+
+static int defer(pc_canvas *c, struct pc_deferred d, const char *text) {
+    if (!pc_grow((void **)&c->deferred, &c->capdeferred, c->ndeferred + 1, sizeof *c->deferred)) {
+        free(d.xy);
+        return pc_fail_code(c, PC_ENOMEM, "furniture: out of memory");
+    }
+    if (text) {
+        size_t n = strlen(text);
+        if (!(d.text = malloc(n + 1))) {
+            free(d.xy);
+            return pc_fail_code(c, PC_ENOMEM, "furniture: out of memory");
+        }
+        memcpy(d.text, text, n + 1);
+    }
+    d.at = c->nops;
+    d.pen = c->pen;
+    c->deferred[c->ndeferred++] = d;
+    return PC_OK;
+}
+
+void pc_furniture_forget(pc_canvas *c) {
+    if (!c->deferred_borrowed) {
+        for (size_t i = 0; i < c->ndeferred; i++)
+            free(c->deferred[i].text), free(c->deferred[i].xy), free(c->deferred[i].axes);
+        free(c->deferred);
+    }
+    c->deferred = NULL;
+    c->ndeferred = c->capdeferred = 0;
+}
+
+void pc_furniture_extent(const pc_canvas *c, pc_extent_fn put, void *ctx) {
+    for (size_t i = 0; i < c->ndeferred; i++) {
+        const struct pc_deferred *d = &c->deferred[i];
+        if (d->kind == DEF_LEGEND) continue;   /* in device units: no part of the frame */
+        if (d->kind == DEF_AXES) {   /* the corners of its ranges, in the pixels of the call */
+            const pc_axes_spec *a = d->axes;
+            double w = 0, h = 0;   /* room for the tick labels: below x's, left of y's */
+            if (a->labels) {
+                char buf[64];
+                for (int k = 0; k < 4; k++) {
+                    double tw, th, val = k == 0 ? a->x0 : k == 1 ? a->x1 : k == 2 ? a->y0 : a->y1;
+                    snprintf(buf, sizeof buf, "%g", val);
+                    if (pc_text_measure(c, buf, strlen(buf), 1, &tw, &th) != PC_OK) continue;
+                    w = fmax(w, tw + 5), h = fmax(h, th + 5);
+                }
+            }
+            put(ctx, a->x0 + d->v[0], -a->y0 + d->v[1], -w, 0, 0, h);
+            put(ctx, a->x1 + d->v[0], -a->y1 + d->v[1], 0, 0, 0, 0);
+            put(ctx, a->x1 + d->v[0], -a->y0 + d->v[1], 0, 0, w / 2, h);
+            put(ctx, a->x0 + d->v[0], -a->y1 + d->v[1], -w, -h / 2, 0, 0);
+            continue;
+        }
+        int np = d->kind == DEF_ANGLE ? 3 : d->kind == DEF_HATCH ? 0 : 2;
+        for (int k = 0; k < np; k++) put(ctx, d->v[2 * k], d->v[2 * k + 1], 0, 0, 0, 0);
+        for (size_t k = 0; k < d->n; k++) put(ctx, d->xy[2 * k], d->xy[2 * k + 1], 0, 0, 0, 0);
+    }
+}
+
+/* Axes drawn through a window that puts the world where the frame put the figure's mirror of
+ * it (canvas.c: sx = x + view.x0, sy = view.y0 - y at the call), in the view being drawn: its
+ * tick labels keep the world's numbers, its ticks and heads their pixels. */
+static int expand_axes(pc_canvas *c, const struct pc_deferred *d, double sx, double sy, double tx,
+                       double ty) {
+    pc_rect V = c->view;
+    if (!(sx > 0 && sy > 0) || V.x1 <= V.x0 || V.y1 <= V.y0) return PC_OK;   /* nothing to draw in */
+    int hw = c->has_window, ws = c->window_screen;
+    double w1 = c->wx1, w2 = c->wx2, h1 = c->wy1, h2 = c->wy2;
+    c->wx1 = (V.x0 - tx) / sx - d->v[0];
+    c->wx2 = c->wx1 + (V.x1 - V.x0) / sx;
+    c->wy2 = d->v[1] - (V.y0 - ty) / sy;
+    c->wy1 = c->wy2 - (V.y1 - V.y0) / sy;
+    c->has_window = 1;
+    c->window_screen = 0;
+    int st = pc_axes(c, d->axes, d->color, NULL);
+    c->has_window = hw;
+    c->window_screen = ws;
+    c->wx1 = w1, c->wx2 = w2, c->wy1 = h1, c->wy2 = h2;
+    return st;
+}
+
+int pc_furniture_defer_axes(pc_canvas *c, const pc_axes_spec *a, int color, int *nticks, int *st) {
+    if (!deferring(c)) return 0;
+    int count = 0;
+    for (int axis = 0; axis < 2 && a->ticks > 0; axis++) {
+        double first, step;
+        int n;
+        if (pc_nice_ticks(axis ? a->y0 : a->x0, axis ? a->y1 : a->x1, a->ticks, &first, &step, &n) != PC_OK) {
+            *st = pc_fail(c, "axes: too many ticks");
+            return 1;
+        }
+        count += n;
+    }
+    pc_axes_spec *copy = malloc(sizeof *copy);
+    if (!copy) {
+        *st = pc_fail_code(c, PC_ENOMEM, "axes: out of memory");
+        return 1;
+    }
+    *copy = *a;
+    double ox, oy;   /* the view's origin of the call: the figure's mirror is x + ox, oy - y */
+    pc_world_to_screen(c, 0, 0, &ox, &oy);
+    *st = defer(c, (struct pc_deferred){.kind = DEF_AXES, .color = color, .v = {ox, oy}, .axes = copy}, NULL);
+    if (*st != PC_OK) free(copy);
+    if (nticks) *nticks = count;
+    return 1;
+}
+
+int pc_furniture_expand(pc_canvas *c, size_t at, int all, double sx, double sy, double tx, double ty) {
+    int st = PC_OK, pen = c->pen;
+    for (size_t i = 0; i < c->ndeferred && st == PC_OK; i++) {
+        const struct pc_deferred *d = &c->deferred[i];
+        if (all ? d->at < at : d->at != at) continue;
+        double p[6];
+        for (int k = 0; k < 3; k++) p[2 * k] = sx * d->v[2 * k] + tx, p[2 * k + 1] = sy * d->v[2 * k + 1] + ty;
+        double wp[6];   /* the points in the canvas's world as it is now (pixels once framed) */
+        for (int k = 0; k < 3; k++) pc_screen_to_world(c, p[2 * k], p[2 * k + 1], &wp[2 * k], &wp[2 * k + 1]);
+        c->pen = d->pen < (int)c->npens ? d->pen : 0;
+        switch (d->kind) {
+        case DEF_DIMENSION:
+            st = pc_dimension(c, wp[0], wp[1], wp[2], wp[3], d->v[4], d->text, d->color, NULL);
+            break;
+        case DEF_ANGLE:
+            st = pc_angle_mark(c, wp[0], wp[1], wp[2], wp[3], wp[4], wp[5], d->v[6], d->text, d->color, NULL);
+            break;
+        case DEF_CENTRE:
+            st = pc_centre_line(c, wp[0], wp[1], wp[2], wp[3], d->v[4], d->color);
+            break;
+        case DEF_HATCH: {
+            double *w = malloc(2 * d->n * sizeof *w);
+            if (!w) { st = pc_fail_code(c, PC_ENOMEM, "hatch: out of memory"); break; }
+            for (size_t k = 0; k < d->n; k++)
+                pc_screen_to_world(c, sx * d->xy[2 * k] + tx, sy * d->xy[2 * k + 1] + ty, &w[2 * k], &w[2 * k + 1]);
+            st = pc_hatch(c, d->n, w, d->v[0], d->v[1], d->color, NULL);
+            free(w);
+            break;
+        }
+        case DEF_AXES:
+            st = expand_axes(c, d, sx, sy, tx, ty);
+            break;
+        case DEF_LEGEND: {
+            const char *names[100];
+            int colors[100];
+            const char *q = d->text;
+            for (size_t k = 0; k < d->n && k < 100; k++) {
+                names[k] = q;
+                q += strlen(q) + 1;
+                colors[k] = (int)d->xy[k];
+            }
+            st = pc_legend(c, (int)d->n, names, colors, (int)d->v[0], d->color);
+            break;
+        }
+        default: break;
+        }
+    }
+    c->pen = pen;
+    return st;
+}
+
+int pc_furniture_defer_legend(pc_canvas *c, int n, const char *const *names, const int *colors,
+                              int corner, int color, int *st) {
+    if (!deferring(c)) return 0;
+    size_t len = 0;
+    for (int i = 0; i < n; i++) len += strlen(names[i]) + 1;
+    char *t = malloc(len ? len : 1);
+    double *cs = malloc((size_t)n * sizeof *cs);
+    if (!t || !cs) {
+        free(t);
+        free(cs);
+        *st = pc_fail_code(c, PC_ENOMEM, "legend: out of memory");
+        return 1;
+    }
+    char *q = t;
+    for (int i = 0; i < n; i++) {
+        size_t k = strlen(names[i]) + 1;
+        memcpy(q, names[i], k);
+        q += k;
+        cs[i] = colors[i];
+    }
+    *st = defer(c, (struct pc_deferred){.kind = DEF_LEGEND, .color = color, .v = {corner},
+                                        .xy = cs, .n = (size_t)n}, NULL);
+    if (*st == PC_OK) c->deferred[c->ndeferred - 1].text = t;
+    else free(t);
+    return 1;
 }
 
 /* ---- markers and arrows -------------------------------------------------------------------- */
@@ -148,6 +352,15 @@ int pc_dimension(pc_canvas *c, double ax, double ay, double bx, double by, doubl
     v2 u = mul(d, 1 / l), n = {u.y, -u.x};   /* the left of A->B as seen (y is down) */
     double side = offset < 0 ? -1 : 1, gap = 2, over = 3;
     v2 a1 = add(a, mul(n, offset)), b1 = add(b, mul(n, offset));
+    char buf[64];
+    if (!text) {
+        snprintf(buf, sizeof buf, "%.4g", world);
+        text = buf;
+    }
+    if (length) *length = world;
+    if (deferring(c))   /* offset and arrows in pixels of the frame: drawn once it is known */
+        return defer(c, (struct pc_deferred){.kind = DEF_DIMENSION, .color = color,
+                                             .v = {a.x, a.y, b.x, b.y, offset}}, text);
     int st = PC_OK;
     if (fabs(offset) > gap) {   /* extension lines, from a gap off the object to past the line */
         st = sline(c, add(a, mul(n, side * gap)), add(a1, mul(n, side * over)), color);
@@ -157,14 +370,8 @@ int pc_dimension(pc_canvas *c, double ax, double ay, double bx, double by, doubl
     pc_screen_to_world(c, a1.x, a1.y, &wa, &wb);
     pc_screen_to_world(c, b1.x, b1.y, &wc, &wd);
     if (st == PC_OK) st = pc_arrow(c, wa, wb, wc, wd, PC_ARROW_BOTH, fmin(8, l / 3), color);
-    char buf[64];
-    if (!text) {
-        snprintf(buf, sizeof buf, "%.4g", world);
-        text = buf;
-    }
     v2 mid = mul(add(a1, b1), 0.5), out = offset == 0 ? n : mul(n, side);
     if (st == PC_OK) st = stext(c, mid, text, anchor_toward(out), color);
-    if (length) *length = world;
     return st;
 }
 
@@ -180,6 +387,17 @@ int pc_angle_mark(pc_canvas *c, double ax, double ay, double ox, double oy, doub
     double cr = (ax - ox) * (by - oy) - (ay - oy) * (bx - ox), dt = (ax - ox) * (bx - ox) + (ay - oy) * (by - oy);
     double th = atan2(fabs(cr), dt);
     v2 u = mul(da, 1 / len2(da)), v = mul(db, 1 / len2(db));
+    if (angle) *angle = th;
+    char buf[64];
+    if (!text) {
+        snprintf(buf, sizeof buf, "%.4g\xc2\xb0", th * 180 / PI);
+        text = buf;
+    }
+    if (deferring(c)) {   /* its text r + 2 px off the vertex, its square: in the frame's pixels */
+        v2 a = add(o, da), b = add(o, db);
+        return defer(c, (struct pc_deferred){.kind = DEF_ANGLE, .color = color,
+                                             .v = {a.x, a.y, o.x, o.y, b.x, b.y, r}}, text);
+    }
     int st;
     size_t from = c->nops;
     if (fabs(th - PI / 2) < 1e-9) {   /* the right-angle square, its side 0.7 r */
@@ -200,13 +418,7 @@ int pc_angle_mark(pc_canvas *c, double ax, double ay, double ox, double oy, doub
     v2 w = add(u, v);
     if (len2(w) < 1e-9) w = (v2){-u.y, u.x};
     w = mul(w, 1 / len2(w));
-    char buf[64];
-    if (!text) {
-        snprintf(buf, sizeof buf, "%.4g\xc2\xb0", th * 180 / PI);
-        text = buf;
-    }
     if (st == PC_OK && *text) st = stext(c, add(o, mul(w, r + 2)), text, anchor_toward(w), color);
-    if (angle) *angle = th;
     return st;
 }
 
@@ -240,6 +452,16 @@ int pc_hatch(pc_canvas *c, size_t n, const double *xy, double spacing, double an
     if (n < 3) return pc_fail(c, "hatch: a region needs at least 3 points, got %zu", n);
     if (!(spacing >= 1 && spacing <= 1e4)) return pc_fail(c, "hatch: spacing must be 1..1e4 pixels, got %g", spacing);
     if (!isfinite(angle)) return pc_fail(c, "hatch: the angle must be a finite number of degrees");
+    for (size_t i = 0; i < 2 * n; i++)
+        if (!isfinite(xy[i])) return pc_fail(c, "hatch: coordinates must be finite numbers");
+    if (deferring(c)) {   /* the spacing is in pixels of the frame: the region kept in today's */
+        double *px = malloc(2 * n * sizeof *px);
+        if (!px) return pc_fail_code(c, PC_ENOMEM, "hatch: out of memory");
+        for (size_t i = 0; i < n; i++) pc_world_to_screen(c, xy[2 * i], xy[2 * i + 1], &px[2 * i], &px[2 * i + 1]);
+        if (nlines) *nlines = 0;   /* not known till the frame is */
+        return defer(c, (struct pc_deferred){.kind = DEF_HATCH, .color = color, .v = {spacing, angle},
+                                             .xy = px, .n = n}, NULL);
+    }
     double a = angle * PI / 180;
     v2 d = {cos(a), -sin(a)}, nr = {sin(a), cos(a)};   /* along the hatch (as seen), across it */
     v2 *p = malloc(n * sizeof *p);
@@ -289,6 +511,9 @@ int pc_centre_line(pc_canvas *c, double ax, double ay, double bx, double by, dou
     double l = len2(d);
     if (!(l > 0)) return pc_fail(c, "centre_line: the two points coincide: no direction");
     if (!(extend >= 0 && extend <= 1e5)) return pc_fail(c, "centre_line: extend must be 0..1e5 pixels, got %g", extend);
+    if (deferring(c))   /* its overshoot and its dashes in pixels of the frame */
+        return defer(c, (struct pc_deferred){.kind = DEF_CENTRE, .color = color,
+                                             .v = {a.x, a.y, b.x, b.y, extend}}, NULL);
     v2 u = mul(d, 1 / l);
     pc_stroke old = c->pens[c->pen];
     double dash[4] = {12 * old.width, 3 * old.width, 2 * old.width, 3 * old.width};   /* ISO 128 type 04 */

@@ -3,6 +3,7 @@
  * the canvas keeps its labels pending and a later save places them again against what was
  * drawn in between. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "canvas_internal.h"
@@ -74,7 +75,7 @@ int pc_label_op_box(const pc_canvas *c, const pc_op *op, pc_box2 *box) {
 }
 
 int pc_layout_pending(const pc_canvas *c) {
-    if (c->attach_resolve || pc_figure_frames(c)) return 1;
+    if (c->attach_resolve || pc_figure_frames(c) || c->ndeferred) return 1;
     for (size_t i = 0; i < c->nops; i++)
         if (c->ops[i].kind == PC_OP_TEXT && (c->ops[i].flags & PC_TEXT_AUTO)) return 1;
     return 0;
@@ -202,6 +203,11 @@ static int resolve_into(pc_canvas *r) {
         if (st != PC_OK) return st;
         r->figure.frame = 0;   /* framed: the copy draws in screen pixels from here on */
     }
+    if (r->ndeferred) {   /* furniture of a figure framed no more (a window set since): as called */
+        int st = pc_furniture_expand(r, 0, 1, 1, 1, 0, 0);
+        pc_furniture_forget(r);
+        if (st != PC_OK) return st;
+    }
     size_t n;
     pc_label *lab = collect(r, &n);
     if (!lab) return PC_ENOMEM;
@@ -248,10 +254,17 @@ static void *dup(const void *p, size_t n, size_t elem, size_t *cap) {
 }
 
 const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
+    int st;
+    return pc_layout_resolve_why(c, &st, NULL, 0);
+}
+
+const pc_canvas *pc_layout_resolve_why(const pc_canvas *c, int *status, char *why, size_t whylen) {
+    *status = PC_ENOMEM;
     if (!pc_layout_pending(c)) return c;
     pc_canvas *r = malloc(sizeof *r);
     if (!r) return NULL;
     *r = *c;
+    r->error[0] = 0;   /* a message from here on is the resolution's */
     /* what the resolution may add to is the copy's own: pixels, ops, path points, pens, text */
     size_t npx = (size_t)c->width * c->height;
     r->pixels = malloc(npx * sizeof *r->pixels);
@@ -264,7 +277,9 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     r->pens = malloc(r->cappens * sizeof *r->pens);
     r->captext = c->ntext + 64;
     r->text = malloc(r->captext);
+    r->tstyles = dup(c->tstyles, c->ntstyles, sizeof *c->tstyles, &r->captstyles);   /* a scene's labels add */
     r->attach_drop = NULL;   /* the attachment stays the canvas's */
+    r->deferred_borrowed = 1;   /* so does its deferred furniture */
     int own = pc_figure_frames(c);   /* framing draws everything again: the copy owns it all */
     if (own) {
         r->dots = dup(c->dots, c->ndots, sizeof *c->dots, &r->capdots);
@@ -272,7 +287,7 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
         r->lpx = dup(c->lpx, c->nlpx, sizeof *c->lpx, &r->caplpx);
         r->clips = dup(c->clips, c->nclips, sizeof *c->clips, &r->capclips);
     }
-    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text ||
+    if (!r->pixels || !r->ops || !r->pts || !r->tags || !r->pens || !r->text || !r->tstyles ||
         (own && (!r->dots || !r->spans || !r->lpx || !r->clips))) {
         pc_layout_release(c, r);
         return NULL;
@@ -283,7 +298,10 @@ const pc_canvas *pc_layout_resolve(const pc_canvas *c) {
     if (c->npts) memcpy(r->tags, c->tags, c->npts * sizeof *r->tags);
     if (c->npens) memcpy(r->pens, c->pens, c->npens * sizeof *r->pens);
     if (c->ntext) memcpy(r->text, c->text, c->ntext);
-    if (resolve_into(r) != PC_OK) {
+    int st = resolve_into(r);
+    if (st != PC_OK) {   /* the copy's message says what failed (a label's math in a scene) */
+        *status = st;
+        if (why && whylen) snprintf(why, whylen, "%s", r->error[0] ? r->error : "out of memory");
         pc_layout_release(c, r);
         return NULL;
     }
@@ -303,6 +321,7 @@ void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved) {
     free(r->tags);
     free(r->pens);
     free(r->text);
+    free(r->tstyles);
     /* what framing drew again is the copy's own; else shared with the canvas */
     if (r->dots != c->dots) free(r->dots);
     if (r->spans != c->spans) free(r->spans);

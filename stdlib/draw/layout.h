@@ -99,6 +99,9 @@ int pc_layout_pending(const pc_canvas *c);
  * copied; the rest shared, read-only), or c itself when nothing is pending.  NULL when memory
  * runs out.  Release with pc_layout_release. */
 const pc_canvas *pc_layout_resolve(const pc_canvas *c);
+/* The same, saying why on NULL: *status PC_ENOMEM, or the status of what the resolution drew
+ * (a 3-D scene's label with bad math: PC_EARG) with its message in why. */
+const pc_canvas *pc_layout_resolve_why(const pc_canvas *c, int *status, char *why, size_t whylen);
 void pc_layout_release(const pc_canvas *c, const pc_canvas *resolved);
 
 /* The placed labels of c, in the order they were drawn: *out gets a malloc'd array of

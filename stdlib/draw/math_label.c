@@ -119,6 +119,18 @@ static double top_of(const parser *p, size_t r0) {
     return top;
 }
 
+/* The bottom of the runs from run index r0 on (negative: below the baseline): where a line
+ * under them goes; a descender is about 0.22 em deep. */
+static double bottom_of(const parser *p, size_t r0) {
+    double bottom = 0;
+    for (size_t i = r0; i < p->L->nruns; i++) {
+        const pc_mrun *r = &p->L->runs[i];
+        double b = r->rise - 0.22 * r->size;
+        if (b < bottom) bottom = b;
+    }
+    return bottom;
+}
+
 /* The space TeX puts around a relation (= < >, thickmuskip, about 0.28 em) and a binary
  * operator (+ -, medmuskip, about 0.22 em), in text style only (none in scripts, as TeX). */
 static double op_space(const char *utf8, int level) {
@@ -174,23 +186,39 @@ static void parse_command(parser *p, int level, double rise, int upright) {
         return;
     }
     p->s += n;
-    if ((n == 3 && !strncmp(name, "bar", 3)) || (n == 8 && !strncmp(name, "overline", 8)) ||
-        (n == 3 && !strncmp(name, "vec", 3))) {
+    static const struct { const char *name; int kind; } accents[] = {
+        {"bar", PC_DECO_BAR}, {"overline", PC_DECO_BAR}, {"vec", PC_DECO_VEC},
+        {"tilde", PC_DECO_TILDE}, {"underline", PC_DECO_UNDER}};
+    for (size_t a = 0; a < sizeof accents / sizeof accents[0]; a++) {
+        if (strlen(accents[a].name) != n || strncmp(name, accents[a].name, n)) continue;
+        char what[16];
+        snprintf(what, sizeof what, "\\%s", accents[a].name);
         double x0 = p->x;
         size_t r0 = p->L->nruns;
-        parse_atom(p, level, rise, upright, n == 3 && name[0] == 'v' ? "\\vec" : n == 3 ? "\\bar" : "\\overline");
+        p->last_end = -1;   /* its group in runs of its own (not merged into the one before) */
+        parse_atom(p, level, rise, upright, what);
+        p->last_end = -1;   /* nor what follows into its last */
         if (p->status != PC_OK) return;
         pc_mlayout *L = p->L;
         if (!grow((void **)&L->decos, &p->cdecos, L->ndecos + 1, sizeof *L->decos)) {
             p->status = PC_ENOMEM;
             return;
         }
-        double s = level_size(p, level), top = top_of(p, r0) + 0.12 * s;
-        /* a bar over one letter is narrower than the letter, as TeX's \bar accent */
-        double inset = name[0] == 'b' ? 0.12 * (p->x - x0) : 0;
-        L->decos[L->ndecos++] = (pc_mdeco){name[0] == 'v' ? PC_DECO_VEC : PC_DECO_BAR,
-                                           x0 + inset, p->x - inset, top};
-        if (top + 0.08 * s > L->ascent) L->ascent = top + 0.08 * s;
+        int kind = accents[a].kind;
+        double s = level_size(p, level);
+        /* a bar or a tilde over one letter is narrower than the letter, as TeX's accents */
+        double inset = (a == 0 || kind == PC_DECO_TILDE) ? 0.12 * (p->x - x0) : 0;
+        if (kind == PC_DECO_UNDER) {   /* below the lowest run's descenders, as TeX's rule */
+            double y = bottom_of(p, r0) - 0.08 * s;
+            L->decos[L->ndecos++] = (pc_mdeco){kind, x0, p->x, y};
+            if (0.04 * s - y > L->descent) L->descent = 0.04 * s - y;
+            return;
+        }
+        /* the wave's amplitude (0.06 em each side) sits it a little higher than a bar */
+        double top = top_of(p, r0) + (kind == PC_DECO_TILDE ? 0.18 : 0.12) * s;
+        L->decos[L->ndecos++] = (pc_mdeco){kind, x0 + inset, p->x - inset, top};
+        double up = kind == PC_DECO_TILDE ? 0.12 : 0.08;
+        if (top + up * s > L->ascent) L->ascent = top + up * s;
         return;
     }
     if (n == 6 && !strncmp(name, "mathrm", 6)) {
@@ -334,4 +362,12 @@ int pc_math_plain(const char *label, char *out, size_t outlen) {
     snprintf(out, outlen, "%s", l.text ? l.text : "");
     pc_mlayout_free(&l);
     return PC_OK;
+}
+
+int pc_math_check(const char *label, char *err, size_t errlen) {
+    if (!pc_has_math(label)) return PC_OK;
+    pc_mlayout l;
+    int st = pc_math_layout(label, 1, 1, 0, count_chars, NULL, &l, err, errlen);
+    if (st == PC_OK) pc_mlayout_free(&l);
+    return st;
 }

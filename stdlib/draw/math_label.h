@@ -3,7 +3,8 @@
  * "$A_1$", "$\varphi$", "$\bar{t}$", "$\overline{AB}$", "$M''$", "$P_{0,3}^{2}$": letters are
  * italic, digits and punctuation upright; `_` and `^` take one character or a {group} (nested);
  * primes become ′ ″; Greek letters and symbols by name (the table in math_label.c, docs/print.md);
- * \bar, \overline and \vec put a line or an arrow over their group; \mathrm{} is upright.
+ * \bar, \overline, \vec and \tilde put a line, an arrow or a wave over their group, \underline a
+ * line under it; \mathrm{} is upright.
  * Text outside $ is plain UTF-8, as it is; "\$" is a dollar sign.
  *
  * The layout is independent of the renderer: it asks a measuring function for the advance of
@@ -23,8 +24,9 @@ typedef struct {
     double rise;         /* its baseline above the label's baseline (subscripts are negative) */
 } pc_mrun;
 
-/* A line over a stretch of the label (\bar, \overline) or an arrow (\vec). */
-enum { PC_DECO_BAR, PC_DECO_VEC };
+/* A line over a stretch of the label (\bar, \overline), an arrow (\vec), a wave (\tilde) or a
+ * line under it (\underline: rise negative, below the baseline). */
+enum { PC_DECO_BAR, PC_DECO_VEC, PC_DECO_TILDE, PC_DECO_UNDER };
 typedef struct {
     int kind;
     double x0, x1;       /* its extent along the baseline */
@@ -59,6 +61,10 @@ int pc_plain_layout(const char *text, double size, double ascent_em, double desc
 
 /* The label as plain UTF-8 (math resolved, markup dropped): what a writer without runs puts. */
 int pc_math_plain(const char *label, char *out, size_t outlen);
+
+/* Is the label's math well formed?  PC_OK, or pc_math_layout's status and message (for a call
+ * that records a label now and lays it out later: a label of a 3-D scene). */
+int pc_math_check(const char *label, char *err, size_t errlen);
 
 /* The command table, for the docs and the tests: name, its UTF-8 result, its style. */
 typedef struct { const char *name, *utf8; int italic; } pc_mcommand;

@@ -58,6 +58,9 @@ int pc_encode_print(const pc_canvas *c, pc_format fmt, FILE *out, char *err, siz
  * released with pc_layout_release(tmp, result). */
 int pc_print_measure(void *ctx, const char *utf8, size_t n, int scale, double *w, double *h);
 const pc_canvas *pc_print_resolve(const pc_canvas *c, pc_canvas *tmp);
+/* The same, saying why on NULL (layout.h's pc_layout_resolve_why). */
+const pc_canvas *pc_print_resolve_why(const pc_canvas *c, pc_canvas *tmp, int *status, char *why,
+                                      size_t whylen);
 
 /* The print-look colour of an attribute: the paper theme's, "#rrggbb" exactly. */
 pc_rgb pc_print_rgb(const pc_canvas *c, int attr);

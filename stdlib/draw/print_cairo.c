@@ -78,8 +78,13 @@ static void c_text(void *s, const pc_pr_label *lab) {
             const pc_mdeco *dc = &L->decos[i];
             double y = lab->y - dc->rise, x0 = lab->x + dc->x0, x1 = lab->x + dc->x1;
             double w = 0.05 * (L->runs[0].size ? L->runs[0].size : 10);
-            cairo_move_to(cr, x0, y);
-            cairo_line_to(cr, x1, y);
+            if (dc->kind == PC_DECO_TILDE) {   /* the wave of print_svg.c */
+                cairo_move_to(cr, x0, y + w);
+                cairo_curve_to(cr, x0 + (x1 - x0) / 3, y - 3 * w, x0 + 2 * (x1 - x0) / 3, y + 3 * w, x1, y - w);
+            } else {
+                cairo_move_to(cr, x0, y);
+                cairo_line_to(cr, x1, y);
+            }
             if (dc->kind == PC_DECO_VEC) {   /* the arrow's head at the right end */
                 cairo_move_to(cr, x1 - 4 * w, y - 2 * w);
                 cairo_line_to(cr, x1, y);

@@ -46,9 +46,15 @@ int pc_print_measure(void *ctx, const char *utf8, size_t n, int scale, double *w
 }
 
 const pc_canvas *pc_print_resolve(const pc_canvas *c, pc_canvas *tmp) {
+    int st;
+    return pc_print_resolve_why(c, tmp, &st, NULL, 0);
+}
+
+const pc_canvas *pc_print_resolve_why(const pc_canvas *c, pc_canvas *tmp, int *status, char *why,
+                                      size_t whylen) {
     *tmp = *c;   /* shares everything: pc_layout_resolve copies what it changes */
     tmp->measure = pc_print_measure;
     tmp->measure_ctx = tmp;
     tmp->attach_drop = NULL;
-    return pc_layout_resolve(tmp);
+    return pc_layout_resolve_why(tmp, status, why, whylen);
 }

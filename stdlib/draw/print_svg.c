@@ -133,7 +133,11 @@ static void s_text(void *self, const pc_pr_label *lab) {
         const pc_mdeco *dc = &L->decos[i];
         double y = lab->y - dc->rise, x0 = lab->x + dc->x0, x1 = lab->x + dc->x1;
         double w = 0.05 * L->runs[0].size;
-        fprintf(s->out, "<path d=\"M%.3f %.3fH%.3f", x0, y, x1);
+        if (dc->kind == PC_DECO_TILDE)   /* one period of a wave, up first: TeX's ~ accent */
+            fprintf(s->out, "<path d=\"M%.3f %.3fC%.3f %.3f %.3f %.3f %.3f %.3f", x0, y + w,
+                    x0 + (x1 - x0) / 3, y - 3 * w, x0 + 2 * (x1 - x0) / 3, y + 3 * w, x1, y - w);
+        else
+            fprintf(s->out, "<path d=\"M%.3f %.3fH%.3f", x0, y, x1);
         if (dc->kind == PC_DECO_VEC)
             fprintf(s->out, "M%.3f %.3fL%.3f %.3fL%.3f %.3f", x1 - 4 * w, y - 2 * w, x1, y,
                     x1 - 4 * w, y + 2 * w);

@@ -13,9 +13,12 @@ typedef struct {
     size_t first, n;        /* into pts (3 numbers each) */
     int color, pen;
     int mark, style;        /* a marker (1): its style and size; a label (2): anchor, scale;
-                               a dot (3) */
+                               a dot (3); an arrow head (4): its size, from point 0 to 1 */
     double size;
     char *text;             /* a label's text (owned) */
+    char *font;             /* a label's {font =} (owned; NULL: the figure's) */
+    double pt;              /* its {size =} in pt (0: the figure's) */
+    int halo, styled;       /* its {halo =} (-1: the figure's); styled: pc_text_style it */
 } stroke;
 
 struct pc_scene {
@@ -56,7 +59,7 @@ pc_scene *pc_scene_new(const pc_map *screen, int *status) {
 void pc_scene_free(pc_scene *sc) {
     if (!sc) return;
     for (size_t i = 0; i < sc->nocc; i++) pc_occluder_free(sc->occ[i]);
-    for (size_t i = 0; i < sc->nst; i++) free(sc->st[i].text);
+    for (size_t i = 0; i < sc->nst; i++) free(sc->st[i].text), free(sc->st[i].font);
     free(sc->occ);
     free(sc->st);
     free(sc->pts);
@@ -95,15 +98,21 @@ static int add(pc_scene *sc, size_t n, const double *xyz, const uint8_t *brk, st
 int pc_scene_add_polyline(pc_scene *sc, size_t n, const double *xyz, const uint8_t *brk,
                           int color, int pen) {
     if (n == 0) return PC_OK;
-    return add(sc, n, xyz, brk, (stroke){0, 0, color, pen, 0, 0, 0, NULL});
+    return add(sc, n, xyz, brk, (stroke){0, 0, color, pen, 0, 0, 0, NULL, NULL, 0, -1, 0});
 }
 
 int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size, int color) {
-    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 1, style, size, NULL});
+    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 1, style, size, NULL, NULL, 0, -1, 0});
 }
 
 int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color) {
-    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 3, 0, 0, NULL});
+    return add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 3, 0, 0, NULL, NULL, 0, -1, 0});
+}
+
+int pc_scene_add_arrow_head(pc_scene *sc, const double from[3], const double tip[3], double len,
+                            int color) {
+    double xyz[6] = {from[0], from[1], from[2], tip[0], tip[1], tip[2]};
+    return add(sc, 2, xyz, NULL, (stroke){0, 0, color, 0, 4, 0, len, NULL, NULL, 0, -1, 0});
 }
 
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
@@ -112,9 +121,23 @@ int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int 
     char *t = malloc(n + 1);
     if (!t) return PC_ENOMEM;
     memcpy(t, utf8, n + 1);
-    int st = add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 2, anchor, scale, t});
+    int st = add(sc, 1, xyz, NULL, (stroke){0, 0, color, 0, 2, anchor, scale, t, NULL, 0, -1, 0});
     if (st != PC_OK) free(t);
     return st;
+}
+
+int pc_scene_style_label(pc_scene *sc, const char *font, double size_pt, int halo) {
+    stroke *s = sc->nst ? &sc->st[sc->nst - 1] : NULL;
+    if (!s || s->mark != 2) return PC_EARG;
+    if (font && *font) {
+        size_t n = strlen(font);
+        if (!(s->font = malloc(n + 1))) return PC_ENOMEM;
+        memcpy(s->font, font, n + 1);
+    }
+    s->pt = size_pt;
+    s->halo = halo;
+    s->styled = 1;
+    return PC_OK;
 }
 
 size_t pc_scene_nsurfaces(const pc_scene *sc) { return sc->nocc; }
@@ -275,12 +298,23 @@ int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode) {
         }
         const double *x = sc->pts + 3 * s->first;
         double sx, sy, wx, wy;
+        if (s->mark == 4) {   /* an arrow head: only where its tip is seen */
+            double tx, ty, fx, fy, t2x, t2y;
+            if (!project(sc, x, &fx, &fy) || !project(sc, x + 3, &tx, &ty)) continue;
+            if (!pc_scene_visible(sc, x + 3) && mode != PC_HIDDEN_SHOW) continue;
+            pc_screen_to_world(c, fx, fy, &wx, &wy);
+            pc_screen_to_world(c, tx, ty, &t2x, &t2y);
+            if (fx != tx || fy != ty) st = pc_arrow_head(c, wx, wy, t2x, t2y, s->size, s->color);
+            continue;
+        }
         if (!project(sc, x, &sx, &sy)) continue;
         int vis = pc_scene_visible(sc, x);
         if (s->mark == 2) {   /* a label: only where its point is seen */
             pc_screen_to_world(c, sx, sy, &wx, &wy);
             if (vis || mode == PC_HIDDEN_SHOW)
                 st = pc_text(c, wx, wy, s->text, s->style, 3, (int)s->size, s->color);
+            if (st == PC_OK && s->styled && (vis || mode == PC_HIDDEN_SHOW))
+                st = pc_text_style(c, s->font ? s->font : "", s->pt, s->halo);
             continue;
         }
         if (s->mark == 3) {   /* a dot: only where it is seen */

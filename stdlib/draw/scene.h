@@ -34,10 +34,18 @@ int pc_scene_add_mark(pc_scene *sc, const double xyz[3], int style, double size,
  * since a pixel has no dashes. */
 int pc_scene_add_dot(pc_scene *sc, const double xyz[3], int color);
 
+/* An arrow head (furniture.h, len pixels long) at the 3-D point tip, pointing from `from`:
+ * drawn where its tip is seen (always with PC_HIDDEN_SHOW). */
+int pc_scene_add_arrow_head(pc_scene *sc, const double from[3], const double tip[3], double len,
+                            int color);
+
 /* A label of a 3-D point: written when the scene is drawn if its point is seen (always with
  * PC_HIDDEN_SHOW), on side `anchor` (PC_ANCHOR_AUTO: placed with the other labels). */
 int pc_scene_add_label(pc_scene *sc, const double xyz[3], const char *utf8, int anchor, int scale,
                        int color);
+/* The last label added drawn in the print look's {font =, size =, halo =} (canvas.h's
+ * pc_text_style: "" or NULL, 0, -1 keep the figure's); PC_EARG if the last stroke is no label. */
+int pc_scene_style_label(pc_scene *sc, const char *font, double size_pt, int halo);
 
 /* Is the 3-D point x seen (no surface of the scene in front of it)? */
 int pc_scene_visible(const pc_scene *sc, const double x[3]);

@@ -1108,9 +1108,21 @@ static void emit_math_text(svgw *w, const pc_op *op, const char *s, size_t n) {
     fputs("</text>\n", w->out);
     for (size_t i = 0; i < L.ndecos; i++) {
         const pc_mdeco *d = &L.decos[i];
-        long y = base - lrint(d->rise);
+        long y = base - lrint(d->rise), x0 = left + lrint(d->x0), x1 = left + lrint(d->x1);
+        if (d->kind == PC_DECO_UNDER) y = pc_vga_under_y(base, y, (int)scale);
         open_el(w, "path");
-        fprintf(w->out, " d=\"M%ld %ld.5H%ld\"", left + lrint(d->x0), y, left + lrint(d->x1));
+        if (d->kind == PC_DECO_TILDE) {   /* the raster's wave: one piece per row it is on */
+            fputs(" d=\"", w->out);
+            for (long x = x0; x < x1;) {
+                long dy = pc_vga_tilde_dy(x - x0, x1 - x0, (int)scale), e = x + 1;
+                while (e < x1 && pc_vga_tilde_dy(e - x0, x1 - x0, (int)scale) == dy) e++;
+                fprintf(w->out, "M%ld %ld.5H%ld", x, y + dy, e);
+                x = e;
+            }
+            fputc('"', w->out);
+        } else {
+            fprintf(w->out, " d=\"M%ld %ld.5H%ld\"", x0, y, x1);
+        }
         color_attr(w, "stroke", op->color);
         fputs("/>\n", w->out);
     }

@@ -103,16 +103,31 @@ static void raster_math(pc_canvas *c, const pc_mlayout *L, long left, long top, 
             x += PC_FONT_W * scale;
         }
     }
-    for (size_t i = 0; i < L->ndecos; i++) {   /* bars and arrows: a row of pixels */
+    for (size_t i = 0; i < L->ndecos; i++) {   /* bars, arrows and waves: a row of pixels */
         const pc_mdeco *d = &L->decos[i];
         long y = base - lrint(d->rise), x0 = left + lrint(d->x0), x1 = left + lrint(d->x1) - 1;
-        for (long x = x0; x <= x1; x++) pc_plot(c, (int)x, (int)y, color);
+        if (d->kind == PC_DECO_UNDER) y = pc_vga_under_y(base, y, scale);
+        for (long x = x0; x <= x1; x++)
+            pc_plot(c, (int)x, (int)(y + (d->kind == PC_DECO_TILDE ? pc_vga_tilde_dy(x - x0, x1 - x0 + 1, scale) : 0)), color);
         if (d->kind == PC_DECO_VEC)
             for (int k = 1; k <= 2 * scale; k++) {
                 pc_plot(c, (int)(x1 - k), (int)(y - k), color);
                 pc_plot(c, (int)(x1 - k), (int)(y + k), color);
             }
     }
+}
+
+long pc_vga_under_y(long base, long y, int scale) {
+    long last = base + (long)(PC_FONT_H - PC_FONT_BASELINE) * scale - 1;
+    return y > last ? last : y;
+}
+
+long pc_vga_tilde_dy(long i, long n, int scale) {
+    if (n <= 0) return 0;
+    /* rounded with ties (and a rounding error's worth) toward the middle row: the same
+     * pixels on every machine where sin(pi/6) comes out a hair either side of 1/2 */
+    double v = scale * sin(2 * M_PI * (i + 0.5) / n);
+    return -(long)trunc(v + (v > 0 ? 0.4 : -0.4));
 }
 
 int pc_text_style(pc_canvas *c, const char *font, double size_pt, int halo) {

@@ -169,9 +169,10 @@ int pc_encode(const pc_canvas *c, pc_format fmt, pc_theme theme, FILE *f, char *
                 (c->figure.on && (fmt == PC_FMT_PNG || fmt == PC_FMT_SVG));
     pc_canvas tmp;   /* the print look places labels by their Pango boxes (print_measure.c) */
     const pc_canvas *base = print ? &tmp : c;
-    const pc_canvas *r = print ? pc_print_resolve(c, &tmp) : pc_layout_resolve(c);
-    if (!r) return PC_ENOMEM;
     int st;
+    const pc_canvas *r = print ? pc_print_resolve_why(c, &tmp, &st, why, whylen)
+                               : pc_layout_resolve_why(c, &st, why, whylen);
+    if (!r) return st;   /* why says what: memory, or a label's math drawn from a 3-D scene */
     if (print)
         st = pc_encode_print(r, fmt, f, why, whylen);
     else switch (fmt) {

@@ -601,7 +601,7 @@ static int l_path(lua_State *L) {
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
     const double *xy = a[0].list;
     /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
-    if (!a[4].present && !heads && pcl_scene_path(L, closed, color)) return 0;
+    if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
     if (!a[4].present) {
         pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
         if ((heads & PC_ARROW_END) && n >= 2)
@@ -636,9 +636,9 @@ static const pcl_arg label_args[] = {
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
 static int l_label(lua_State *L) {
-    if (pcl_scene_label(L)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pcl_val a[10] = {0};   /* text, x, y, direction, colour, scale, options; font, size, halo */
     PCL_READ_PAIRS(L, a);
+    if (pcl_scene_label(L, a)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
     pc_canvas *c = canvas(L);
     int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
     pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));

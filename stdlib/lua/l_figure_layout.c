@@ -16,6 +16,7 @@
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
+#include "math_label.h"
 
 /* A core failure as the house error: the declared name, the core's message without its own. */
 static int check(lua_State *L, pc_canvas *c, int rc) {
@@ -244,7 +245,7 @@ int pcl_scene_pset(lua_State *L) {
     return 1;
 }
 
-int pcl_scene_path(lua_State *L, int closed, int color) {
+int pcl_scene_path(lua_State *L, int closed, int color, int heads) {
     pc_scene *sc;
     double x[3];
     if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
@@ -262,30 +263,28 @@ int pcl_scene_path(lua_State *L, int closed, int color) {
     if (closed && n > 1) memcpy(xyz + 3 * n, xyz, 3 * sizeof *xyz), n++;
     pc_canvas *c = pcl_active_canvas(L);
     int st = pc_scene_add_polyline(sc, n, xyz, NULL, color, c->pen);
+    /* the heads of arrow = "end" | "start" | "both" on the path's own end segments, hidden
+     * with their tips (9 px long, as a 2-D path's) */
+    if (st == PC_OK && (heads & PC_ARROW_END) && n >= 2)
+        st = pc_scene_add_arrow_head(sc, xyz + 3 * (n - 2), xyz + 3 * (n - 1), 9, color);
+    if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_scene_add_arrow_head(sc, xyz + 3, xyz, 9, color);
     lua_pop(L, 1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
 }
 
-int pcl_scene_label(lua_State *L) {
-    static const char *const dirs[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
+int pcl_scene_label(lua_State *L, const pcl_val *a) {
     double x[3];
     pc_scene *sc;
     if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
-    pc_canvas *c = pcl_active_canvas(L);
-    int t = lua_type(L, 1);
-    if (t != LUA_TSTRING && t != LUA_TNUMBER) return pcl_argerror(L, 1, "text", "a string");
-    const char *s = lua_tostring(L, 1);
-    int anchor = PC_ANCHOR_AUTO;
-    if (!lua_isnoneornil(L, 3)) {
-        const char *d = lua_type(L, 3) == LUA_TSTRING ? lua_tostring(L, 3) : "";
-        for (anchor = 0; dirs[anchor] && strcmp(dirs[anchor], d); anchor++) {}
-        if (!dirs[anchor]) return pcl_argerror(L, 3, "direction", "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\"");
-    }
-    int color = pcl_optcolor(L, 4, c);
-    lua_Integer scale = luaL_optinteger(L, 5, 1);
-    if (scale < 1 || scale > 8) return pcl_argerror(L, 5, "scale", "an integer 1..8");
-    int st = pc_scene_add_label(sc, x, s, anchor, (int)scale, color);
+    /* the markup is checked now, as a 2-D label's is, not when the scene is drawn at write */
+    char err[200];
+    if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
+    int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
+    int st = pc_scene_add_label(sc, x, a[0].s, anchor, (int)a[5].x, (int)a[4].x);
+    if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
+        st = pc_scene_style_label(sc, a[7].present ? a[7].s : "", a[8].present ? a[8].x : 0,
+                                  a[9].present ? (int)a[9].x : -1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
 }

@@ -619,6 +619,12 @@ static int s_shade(lua_State *L) {
     int drawn = pc_draw_shaded(cv, q, n, base, mesh);
     free(q);
     if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
+    /* through the camera's scene (pcl_scene.h): the shaded surface hides the scene's strokes
+     * behind it too, whatever the order of the calls (its quads are drawn now, the strokes at
+     * write, over them where they are seen); the occluder as fine as the quads, 48 at least */
+    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;
+    int res = o.nu > o.nv ? o.nu : o.nv;
+    if (sc && (st = pc_scene_add_surface(sc, s, res > 48 ? res : 48)) != PC_OK) return pcl_raise_status(L, fn, st);
     lua_pushinteger(L, (lua_Integer)n);
     return 1;
 }

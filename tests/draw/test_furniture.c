@@ -10,6 +10,7 @@
 #include <cmocka.h>
 #include "canvas.h"
 #include "furniture.h"
+#include "layout.h"
 
 static int at(const pc_canvas *c, int x, int y) { return c->pixels[y * c->width + x]; }
 
@@ -101,6 +102,90 @@ static void test_dimension(void **state) {
     pc_canvas_free(c);
 }
 
+/* The PATH ops of r after op `from` with n points, in order. */
+static const pc_op *nth_path(const pc_canvas *r, size_t from, uint32_t n, int k) {
+    for (size_t i = from; i < r->nops; i++)
+        if (r->ops[i].kind == PC_OP_PATH && r->ops[i].count == n && k-- == 0) return &r->ops[i];
+    return NULL;
+}
+
+/* In a figure framed when written, a dimension, an angle mark, a centre line and a hatch are
+ * drawn once the frame is known: their pixel sizes (offset, gap, square, overshoot, spacing)
+ * come out in the frame's pixels, their numbers are the world's. */
+static void test_furniture_in_framed_figure(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    c->figure.on = c->figure.frame = 1;
+    pc_line(c, 0, 0, 4, 0, 15);   /* world units: legs of a 4 x 3 right triangle, y up */
+    pc_line(c, 0, 0, 0, 3, 15);
+    double len = 0, ang = 0;
+    size_t nl = 99;
+    assert_int_equal(pc_dimension(c, 0, 0, 4, 0, -20, NULL, 15, &len), PC_OK);
+    assert_true(len == 4);
+    assert_int_equal(pc_angle_mark(c, 4, 0, 0, 0, 0, 3, 20, NULL, 15, &ang), PC_OK);
+    assert_true(fabs(ang - M_PI / 2) < 1e-15);
+    assert_int_equal(pc_centre_line(c, 0, 1.5, 4, 1.5, 10, 15), PC_OK);
+    assert_int_equal(pc_hatch(c, 4, (double[]){1, 1, 2, 1, 2, 2, 1, 2}, 8, 45, 15, &nl), PC_OK);
+    assert_int_equal(c->nops, 2);          /* kept for the frame, not drawn yet */
+    assert_int_equal(c->ndeferred, 4);
+    const pc_canvas *r = pc_layout_resolve(c);
+    assert_non_null(r);
+    const pc_op *h = &r->ops[0], *v = &r->ops[1];
+    double m = PC_FIT_MARGIN, ox = h->x1, oy = h->y1, ex = h->x2, s = (479 - 2 * m) / 3;
+    assert_true(fabs(oy - (479 - m)) < 1e-9 && fabs(v->y2 - m) < 1e-9);   /* framed as ever */
+    /* the dimension: extension lines from 2 px under the leg to 3 px past the line 20 px under */
+    const pc_op *e1 = nth_path(r, 2, 2, 0), *e2 = nth_path(r, 2, 2, 1), *shaft = nth_path(r, 2, 2, 2);
+    assert_non_null(shaft);
+    const pc_xy *p = &r->pts[e1->first];
+    assert_true(fabs(p[0].x - ox) < 1e-9 && fabs(p[0].y - (oy + 2)) < 1e-9 && fabs(p[1].y - (oy + 23)) < 1e-9);
+    assert_true(fabs(r->pts[e2->first].x - ex) < 1e-9);
+    p = &r->pts[shaft->first];
+    assert_true(fabs(p[0].y - (oy + 20)) < 1e-9 && fabs(p[1].y - (oy + 20)) < 1e-9);
+    char t[64];
+    texts(r, t, sizeof t);
+    assert_string_equal(t, "4|90\xc2\xb0|");   /* the world's length and angle */
+    /* the right-angle square: 0.7 of 20 px along each side from the vertex */
+    const pc_op *sq = nth_path(r, 2, 3, 0);
+    assert_non_null(sq);
+    p = &r->pts[sq->first];
+    assert_true(fabs(p[0].x - (ox + 14)) < 1e-9 && fabs(p[0].y - oy) < 1e-9);
+    assert_true(fabs(p[2].x - ox) < 1e-9 && fabs(p[2].y - (oy - 14)) < 1e-9);
+    /* the centre line: 10 px past each end, at the middle height, dashed */
+    const pc_op *cl = NULL;
+    for (int k = 0; (cl = nth_path(r, 2, 2, k)) && fabs(r->pts[cl->first].y - (oy - 1.5 * s)) > 1e-6; k++) {}
+    assert_non_null(cl);
+    assert_true(fabs(r->pts[cl->first].x - (ox - 10)) < 1e-9 && fabs(r->pts[cl->first + 1].x - (ex + 10)) < 1e-9);
+    assert_int_equal(r->pens[cl->pen].ndash, 4);
+    /* the hatch: 45 degree lines 8 px apart across (the frame's pixels, not 8 world units) */
+    size_t first = (size_t)(cl - r->ops) + 1, nh = 0;
+    double prev = NAN;
+    for (size_t i = first; i < r->nops; i++) {
+        if (r->ops[i].kind != PC_OP_PATH) continue;
+        const pc_xy *q = &r->pts[r->ops[i].first];
+        double across = (q[0].x + q[0].y) * sqrt(0.5);   /* nr = (sin 45, cos 45) */
+        if (nh++) assert_true(fabs(across - prev - 8) < 1e-6 || fabs(prev - across - 8) < 1e-6);
+        prev = across;
+    }
+    assert_true(nh >= (size_t)floor(s * sqrt(2) / 8) - 1 && nh <= (size_t)ceil(s * sqrt(2) / 8) + 1);
+    pc_layout_release(c, r);
+    assert_int_equal(c->ndeferred, 4);     /* the canvas keeps them: each write frames its own */
+    /* fit{} on the canvas itself draws them and lets them go */
+    assert_int_equal(pc_fit(c, 12, PC_FIT_EQUAL), PC_OK);
+    assert_int_equal(c->ndeferred, 0);
+    assert_true(c->nops > 10);
+    assert_int_equal(pc_dimension(c, 0, 0, 4, 0, -20, NULL, 15, NULL), PC_OK);
+    assert_int_equal(c->ndeferred, 0);     /* framed now (a window): drawn at once */
+    pc_canvas_free(c);
+    c = pc_canvas_new(640, 480, 16);
+    c->figure.on = c->figure.frame = 1;
+    assert_int_equal(pc_dimension(c, 0, 0, 4, 0, -20, NULL, 15, NULL), PC_OK);
+    assert_int_equal(c->ndeferred, 1);
+    pc_cls(c);                              /* a full CLS forgets them with the rest */
+    assert_int_equal(c->ndeferred, 0);
+    assert_int_equal(pc_centre_line(c, 0, 0, 4, 0, 5, 15), PC_OK);
+    pc_canvas_free(c);                      /* and freeing the canvas frees them */
+}
+
 static void test_angle_mark(void **state) {
     (void)state;
     pc_canvas *c = pc_canvas_new(640, 480, 16);
@@ -176,6 +261,7 @@ int main(void) {
         cmocka_unit_test(test_marks),
         cmocka_unit_test(test_arrow),
         cmocka_unit_test(test_dimension),
+        cmocka_unit_test(test_furniture_in_framed_figure),
         cmocka_unit_test(test_angle_mark),
         cmocka_unit_test(test_ticks_hatch_centre),
     };

@@ -134,6 +134,67 @@ static void test_accents(void **state) {
     pc_mlayout_free(&L);
 }
 
+/* \tilde: a wave over its group, a little higher than a bar; \underline: a line under the
+ * descenders (0.22 em) 0.08 em lower; an accent's group in runs of its own, so a bar over the
+ * second t of "t\bar{t}" sits over that t, above its top. */
+static void test_tilde_underline(void **state) {
+    (void)state;
+    pc_mlayout L = lay("$\\tilde A$");
+    assert_int_equal(L.ndecos, 1);
+    assert_int_equal(L.decos[0].kind, PC_DECO_TILDE);
+    CHECK_NEAR(L.decos[0].x0, 0.6);    /* inset 0.12 of the letter's 5 */
+    CHECK_NEAR(L.decos[0].x1, 4.4);
+    CHECK_NEAR(L.decos[0].rise, 8.8);  /* the capital's 7 and 0.18 em */
+    CHECK_NEAR(L.ascent, 10);          /* its wave's 1.2 above that */
+    pc_mlayout_free(&L);
+    L = lay("$\\underline{xy}$");
+    assert_int_equal(L.ndecos, 1);
+    assert_int_equal(L.decos[0].kind, PC_DECO_UNDER);
+    CHECK_NEAR(L.decos[0].x0, 0);      /* the whole group */
+    CHECK_NEAR(L.decos[0].x1, 10);
+    CHECK_NEAR(L.decos[0].rise, -3);   /* 2.2 + 0.8 below the baseline */
+    CHECK_NEAR(L.descent, 3.4);        /* its thickness below it */
+    run_is(&L, 0, "xy", 1);
+    pc_mlayout_free(&L);
+    L = lay("$t\\bar{t}$");
+    assert_int_equal(L.nruns, 2);
+    CHECK_NEAR(L.decos[0].x0, 5.6);
+    CHECK_NEAR(L.decos[0].x1, 9.4);
+    CHECK_NEAR(L.decos[0].rise, 8.2);  /* over the second t's top, not on its baseline */
+    pc_mlayout_free(&L);
+    char plain[32];
+    assert_int_equal(pc_math_plain("$\\tilde{A}\\underline B$", plain, sizeof plain), PC_OK);
+    assert_string_equal(plain, "AB");
+    assert_int_equal(pc_math_check("$\\tilde{A}$", NULL, 0), PC_OK);
+    assert_int_equal(pc_math_check("no math \\tilde", NULL, 0), PC_OK);
+    char err[200];
+    assert_int_equal(pc_math_check("$\\tidle A$", err, sizeof err), PC_EARG);
+    assert_string_equal(err, "label '$\\tidle A$': unknown command '\\tidle' at character 2");
+}
+
+/* The VGA look: the wave is one row of pixels a sine's period long, up first; the underline the
+ * 8x16 cell's last row. */
+static void test_vga_tilde_underline_pixels(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(32, 32, 16);
+    assert_int_equal(pc_text(c, 0, 8, "$\\tilde A$", PC_ANCHOR_SE, 0, 1, 15), PC_OK);
+    /* baseline row 20; rise 14.08 -> row 6; x 1..6 (inset 0.96 of 8) */
+    static const int wave[][2] = {{1, 6}, {2, 5}, {3, 6}, {4, 6}, {5, 7}, {6, 6}};
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 8; x++) {
+            int want = 0;
+            for (size_t k = 0; k < 6; k++) want |= wave[k][0] == x && wave[k][1] == y;
+            assert_int_equal(c->pixels[y * 32 + x], want ? 15 : 0);
+        }
+    pc_canvas_free(c);
+    c = pc_canvas_new(32, 32, 16);
+    assert_int_equal(pc_text(c, 0, 0, "$\\underline{A}$", PC_ANCHOR_SE, 0, 1, 15), PC_OK);
+    for (int x = 0; x < 32; x++) assert_int_equal(c->pixels[15 * 32 + x], x < 8 ? 15 : 0);
+    for (int y = 16; y < 32; y++)
+        for (int x = 0; x < 32; x++) assert_int_equal(c->pixels[y * 32 + x], 0);
+    pc_canvas_free(c);
+}
+
 static void expect_error(const char *label, const char *msg) {
     pc_mlayout L;
     char err[200];
@@ -152,6 +213,8 @@ static void test_errors_name_label_and_position(void **state) {
     expect_error("$x^$", "label '$x^$': '^' needs a character or a {group} after it at character 4");
     expect_error("$\\bar$", "label '$\\bar$': \\bar needs a character or a {group} after it at character 6");
     expect_error("$a\\", "label '$a\\': '\\' at the end at character 3");
+    expect_error("$\\tilde$", "label '$\\tilde$': \\tilde needs a character or a {group} after it at character 8");
+    expect_error("$\\underline{$", "label '$\\underline{$': unbalanced '{' at character 12");
 }
 
 /* The VGA look: a subscript in the 8x8 cells, lower than the base's 8x16 cell. */
@@ -199,6 +262,8 @@ int main(void) {
         cmocka_unit_test(test_greek_symbols_primes),
         cmocka_unit_test(test_plain_text_unchanged),
         cmocka_unit_test(test_accents),
+        cmocka_unit_test(test_tilde_underline),
+        cmocka_unit_test(test_vga_tilde_underline_pixels),
         cmocka_unit_test(test_errors_name_label_and_position),
         cmocka_unit_test(test_vga_subscript_pixels),
     };

@@ -6,12 +6,14 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
 #include "canvas.h"
 #include "furniture.h"
 #include "scene.h"
+#include "writers.h"
 
 static int sphere_fn(void *ud, double u, double v, int order, double *out) {
     (void)ud;
@@ -113,6 +115,57 @@ static void test_labels(void **state) {
     pc_surface_release(s);
 }
 
+/* A label's {font, size, halo} is kept till the scene draws it, then applied to its text. */
+static void test_label_style(void **state) {
+    (void)state;
+    int st;
+    pc_map f = screen();
+    pc_scene *sc = pc_scene_new(&f, &st);
+    double x[3] = {10, 20, 0};
+    assert_int_equal(pc_scene_style_label(sc, "Serif", 9, 0), PC_EARG);   /* no label yet */
+    assert_int_equal(pc_scene_add_label(sc, x, "A", PC_ANCHOR_NE, 1, 14), PC_OK);
+    assert_int_equal(pc_scene_style_label(sc, "Serif", 9, 0), PC_OK);
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_HIDE), PC_OK);
+    assert_int_equal(c->nops, 1);
+    assert_int_equal(c->ops[0].pen, 1);   /* the first text style */
+    assert_int_equal(c->ntstyles, 1);
+    assert_string_equal(c->tstyles[0].font, "Serif");
+    assert_true(c->tstyles[0].size == 9 && c->tstyles[0].halo == 0);
+    pc_canvas_free(c);
+    pc_scene_free(sc);
+}
+
+static int resolve_hide(void *attach, pc_canvas *copy) { return pc_scene_draw(attach, copy, PC_HIDDEN_HIDE); }
+
+/* A label with bad math that reaches the scene (the C API does not check it) fails its drawing
+ * with the markup's message, and a writer says that message, not "out of memory". */
+static void test_label_bad_math(void **state) {
+    (void)state;
+    int st;
+    pc_map f = screen();
+    pc_scene *sc = pc_scene_new(&f, &st);
+    double x[3] = {10, 20, 0};
+    assert_int_equal(pc_scene_add_label(sc, x, "$\\nosuch A$", PC_ANCHOR_NE, 1, 14), PC_OK);
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_HIDE), PC_EARG);
+    assert_non_null(strstr(pc_canvas_error(c), "unknown command '\\nosuch' at character 2"));
+    pc_canvas_free(c);
+    c = pc_canvas_new(640, 480, 16);
+    c->attach = sc;
+    c->attach_resolve = resolve_hide;
+    char why[200] = "";
+    FILE *out = tmpfile();
+    assert_non_null(out);
+    assert_int_equal(pc_encode(c, PC_FMT_PNG, PC_THEME_SCREEN, out, why, sizeof why), PC_EARG);
+    assert_non_null(strstr(why, "label '$\\nosuch A$': unknown command '\\nosuch' at character 2"));
+    fclose(out);
+    c->attach = NULL;
+    c->attach_resolve = NULL;
+    pc_canvas_free(c);
+    pc_scene_free(sc);
+}
+
 static void extent_put(void *ctx, double x, double y, double dx0, double dy0, double dx1, double dy1) {
     double *b = ctx;   /* the box of everything: x0, y0, x1, y1 */
     b[0] = fmin(b[0], x + dx0); b[1] = fmin(b[1], y + dy0);
@@ -157,6 +210,8 @@ static void test_extent_and_reframe(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_extent_and_reframe),
+        cmocka_unit_test(test_label_style),
+        cmocka_unit_test(test_label_bad_math),
         cmocka_unit_test(test_line_behind_sphere),
         cmocka_unit_test(test_line_in_front),
         cmocka_unit_test(test_labels),

@@ -54,6 +54,85 @@ for _, l in ipairs(placed_labels()) do texts[#texts + 1] = l.text .. (l.auto and
 check.eq(table.concat(texts, " "), "N*", "only the seen label, placed automatically")
 camera(nil)
 
+-- an arrowed path of 3-D points joins the scene: its shaft hidden behind the sphere, and its
+-- head drawn only where its tip is seen, whatever the order of the calls
+local function arrow_pixels(tip_z, sphere_first)
+  screen(12)
+  camera(f, { hidden = "hide" })
+  if sphere_first then sph:wireframe { nu = 0, nv = 0 } end
+  path({ P(-2, 0.5, tip_z), P(0, 0.5, tip_z) }, { arrow = "end", color = 14 })
+  if not sphere_first then sph:wireframe { nu = 0, nv = 0 } end
+  local out = os.tmpname() .. ".ppm"
+  save(out)
+  local px = ppm(out)
+  os.remove(out)
+  -- the tip at (320, 190): the head 9 px back from it spreads 2.7 px each side of the shaft
+  local head = 0
+  for x = 312, 319 do for y = 186, 194 do if y ~= 190 and px(x, y) ~= 0 then head = head + 1 end end end
+  return head, px(150, 190) ~= 0, px(300, 190) ~= 0
+end
+for _, first in ipairs { true, false } do
+  local head, outside, inside = arrow_pixels(-1.5, first)
+  check.eq(head .. " " .. tostring(outside) .. " " .. tostring(inside), "0 true false",
+    "the tip behind the sphere: no head, the shaft hidden over the sphere, drawn beside it")
+  head, outside, inside = arrow_pixels(1.5, first)
+  check.truthy(head > 8 and outside and inside, "the tip in front: the head and the whole shaft")
+end
+camera(nil)
+
+-- a shaded surface hides the scene's strokes behind it, whatever the order of the calls, and
+-- a stroke in front is drawn over its shading
+local function shaded_row(z, shade_first)
+  screen(12)
+  camera(f, { hidden = "hide" })
+  if shade_first then sph:shade { nu = 24, nv = 12, color = 9 } end
+  line(P(-2, 0, z), P(2, 0, z), 14)
+  if not shade_first then sph:shade { nu = 24, nv = 12, color = 9 } end
+  local out = os.tmpname() .. ".ppm"
+  save(out)
+  local px = ppm(out)
+  os.remove(out)
+  local yellow = px(130, 240)   -- the line beside the sphere: colour 14
+  local got = {}
+  for x = 120, 520, 10 do got[#got + 1] = px(x, 240) == yellow and "#" or "." end
+  return table.concat(got)
+end
+for _, first in ipairs { true, false } do
+  check.eq(shaded_row(-1.5, first), want, "behind the shaded sphere: the line hidden over it")
+  check.eq(shaded_row(1.5, first), string.rep("#", 41), "in front of it: drawn over the shading")
+end
+camera(nil)
+
+-- a scene's label is read by label's own declaration: bad math fails at the call, as in 2-D,
+-- not when the picture is written; its options are checked and kept till it is drawn
+local function svg_text(path)
+  local f = assert(io.open(path, "rb"))
+  local data = f:read("a")
+  f:close()
+  os.remove(path)
+  return data
+end
+figure {}
+camera(map.orthographic("z"), { hidden = "dashed" })
+line(P(0, 0, 0), P(100, 100, 0), 15)
+check.err(function() label("$\\nosuch A$", P(50, 50, 0)) end,
+  "label: label '$\\nosuch A$': unknown command '\\nosuch' at character 2", "bad math in a scene: at the call")
+check.err(function() label("A", P(50, 50, 0), "ne", { size = 500 }) end,
+  "label: option 'size' must be 1 to 200 pt", "a scene label's size is checked")
+check.err(function() label("A", P(50, 50, 0), "ne", { sise = 5 }) end,
+  "unknown option 'sise'", "a scene label's options are not silently dropped")
+check.err(function() label("A", P(50, 50, 0), "up") end, "argument #3 (direction)", "its direction")
+label("$\\tilde A$", P(50, 50, 0), "se", { size = 20, halo = false })
+label("B", P(100, 100, 0), "ne")
+local sout = os.tmpname() .. ".svg"
+save(sout)
+local svg = svg_text(sout)
+check.truthy(svg:find('font%-size="20.000"[^>]*data%-label="%$\\tilde A%$"'), "the scene label at its size 20 pt")
+check.truthy(not svg:find('stroke="#ffffff"[^>]*data%-label="%$\\tilde A%$"'), "halo = false kept: no halo")
+check.truthy(svg:find('font%-size="10.000"[^>]*stroke="#ffffff"'), "the other label at the figure's size, haloed")
+camera(nil)
+screen(12)
+
 -- one iso family: nu = 4, nv = 0 draws the meridians (seen from +z: the two diameters) and no
 -- parallel; nu = 0, nv = 4 the parallels (circles of radius 0, 70.7, 100 px) and no meridian
 screen(12)
