@@ -9,7 +9,7 @@ end
 local T = map.matrix({{1, 2, 0}, {3, 1, 0}, {0, 0, 1}}, "row")
 local A, B = P(0, 1), P(2, 3)
 local M = mid(A, B)
-fit{around = {P(-1, -1), P(12.5, 8)}, pad = 0.81, band = 20}
+fit{around = {P(-1, -1), P(12.5, 8)}, pad = 0.7, band = 20}
 axes{x = {-1, 12.5}, y = {-1, 8}, ticks = 0, labels = false, color = 8}
 label("$x$", P(12.5, 0), "s", 8); label("$y$", P(0, 8), "w", 8)
 line(A, B, 15); line(T(A), T(B), 14)

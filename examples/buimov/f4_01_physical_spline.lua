@@ -14,7 +14,7 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local pts = {P(0, 0.5), P(1.5, 1.6), P(3.2, 1.1), P(4.6, 2.0), P(6.2, 1.2)}
-fit{around = {P(-0.4, -0.4), P(6.6, 2.8)}, pad = 0.42, band = 20}
+fit{around = {P(-0.4, -0.4), P(6.6, 2.8)}, pad = 0.36, band = 20}
 local s, tangents = buimov.spline(pts, {ends = "natural", param = "chord"})
 s:draw{color = 14}
 for i, p in ipairs(pts) do

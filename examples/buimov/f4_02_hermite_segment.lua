@@ -15,7 +15,7 @@ end
 local P1, P2, D1, D2 = P(0, 0), P(4, 1), V(2, 3), V(3, -2)
 local seg = buimov.hermite(P1, P2, D1, D2)
 local B1, B2, B3, B4 = buimov.hermite_coeffs(P1, P2, D1, D2)
-fit{around = {P(-0.6, -0.8), P(5.6, 2.4)}, pad = 0.37, band = 20}
+fit{around = {P(-0.6, -0.8), P(5.6, 2.4)}, pad = 0.32, band = 20}
 axes{x = {-0.6, 5.6}, y = {-0.8, 2.4}, ticks = 0, labels = false, color = 8}
 label("$x$", P(5.6, 0), "s", 8); label("$y$", P(0, 2.4), "w", 8)
 seg:draw{color = 14}

@@ -18,7 +18,7 @@ local sets = {
   {P(0, 0), P(3.5, 2), P(-0.5, 2), P(3, 0)},
   {P(0, 0), P(3, 2), P(0, 2), P(3, 0)},
 }
-fit{around = {P(-0.4, -1.8), P(16.6, 2.4)}, pad = 1, band = 20}
+fit{around = {P(-0.4, -1.8), P(16.6, 2.4)}, pad = 0.88, band = 20}
 for k, s in ipairs(sets) do
   local sh = {}
   for i, p in ipairs(s) do sh[i] = p + V(4.3 * (k - 1), 0) end

@@ -19,7 +19,7 @@ local q0, q1 = buimov.g1_next(Pc, 2, 1.5)
 local Qp = {q0, q1, P(7, 0)}
 local Q = bezier(Qp)
 local kind, g = buimov.joint(Pc, Q)
-fit{around = {P(-0.4, -0.6), P(7.6, 3.6)}, pad = 0.48, band = 20}
+fit{around = {P(-0.4, -0.6), P(7.6, 3.6)}, pad = 0.41, band = 20}
 for i = 1, 3 do line(Pp[i], Pp[i + 1], 8) end
 line(Qp[1], Qp[2], 8); line(Qp[2], Qp[3], 8)
 pen{dash = {4, 3}}; line(Pp[3], Qp[2], 12); pen()

@@ -15,7 +15,7 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local base = {P(0, 2), P(2, 5), P(5, 4), P(4, 1), nil, P(8, 1), P(10, 4)}
-fit{around = {P(-0.5, -0.5), P(10.6, 5.6)}, pad = 0.67, band = 20}
+fit{around = {P(-0.5, -0.5), P(10.6, 5.6)}, pad = 0.57, band = 20}
 local colours = {14, 10, 11}
 for j, p4 in ipairs{P(5, 0), P(6, 2), P(7, 4)} do
   base[5] = p4
