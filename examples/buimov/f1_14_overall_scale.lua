@@ -2,14 +2,6 @@
 -- Buimov §1.7.6, Fig. 1.14: [x y 1] [[1, 0, 0], [0, 1, 0], [0, 0, s]] = [x y s], the point
 -- [x/s y/s]; s = 2 here (s > 1 shrinks), the same as [[1/s, 0], [0, 1/s]].
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); label(name, p, nil, colour)
 end
@@ -17,7 +9,9 @@ local T = map.matrix({{1, 0, 0}, {0, 1, 0}, {0, 0, 2}}, "row")
 local tri = {P(2, 1), P(6, 2), P(3, 5)}
 local img = {}
 for i, p in ipairs(tri) do img[i] = T(p) end
-frame(-0.8, -0.8, 7, 6)
+fit{around = {P(-0.8, -0.8), P(7, 6)}, pad = 0.61, band = 20}
+axes{x = {-0.8, 7}, y = {-0.8, 6}, ticks = 0, labels = false, color = 8}
+label("$x$", P(7, 0), "s", 8); label("$y$", P(0, 6), "w", 8)
 pen{dash = {4, 3}}; for _, p in ipairs(tri) do line(P(0, 0), p, 8) end; pen()
 path(tri, {closed = true, color = 15}); path(img, {closed = true, color = 14})
 for i, n in ipairs{"A", "B", "C"} do dot(tri[i], "$" .. n .. "$", 15)

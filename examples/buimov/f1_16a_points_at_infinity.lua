@@ -3,18 +3,12 @@
 -- points (4, 3), (8, 6), (16, 12), (32, 24); [4 3 0] is the point at infinity of the line
 -- y = (3/4) x (the book's prose says "[3 4 h]", a misprint; its table has [4 3 h]).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); label(name, p, nil, colour)
 end
-frame(-2, -2, 36, 27)
+fit{around = {P(-2, -2), P(36, 27)}, pad = 2.6, band = 20}
+axes{x = {-2, 36}, y = {-2, 27}, ticks = 0, labels = false, color = 8}
+label("$x$", P(36, 0), "s", 8); label("$y$", P(0, 27), "w", 8)
 pen{dash = {4, 3}}; line(P(0, 0), P(34, 25.5), 8); pen()
 for _, h in ipairs{1, 1 / 2, 1 / 4, 1 / 8} do
   local p = P(4 / h, 3 / h)

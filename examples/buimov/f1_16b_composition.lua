@@ -4,21 +4,15 @@
 -- then T1 (T2 T1 = [[0, -1], [-1, 0]]) to (-7, -5): the book prints [-x -y] for [-y -x].
 -- Dashed: the intermediate points A T1 and A T2.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); label(name, p, nil, colour)
 end
 local T1 = map.matrix({{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}}, "row")
 local T2 = map.matrix({{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, "row")
 local A = P(5, 7)
-frame(-8.5, -6.5, 8.5, 8.5)
+fit{around = {P(-8.5, -6.5), P(8.5, 8.5)}, pad = 1.3, band = 20}
+axes{x = {-8.5, 8.5}, y = {-6.5, 8.5}, ticks = 0, labels = false, color = 8}
+label("$x$", P(8.5, 0), "s", 8); label("$y$", P(0, 8.5), "w", 8)
 local a1, a2 = T1(A), T2(A)
 pen{dash = {4, 3}}
 line(A, a1, 8); line(a1, T2(a1), 10); line(A, a2, 8); line(a2, T1(a2), 12)

@@ -3,14 +3,6 @@
 -- is [m + n, -m + n, 1] = [5 1 1] (the origin goes to (5, 1)). The triangle ABC (black), its
 -- translate and turned translate (dashed) and the result A*B*C* (colour).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); label(name, p, nil, colour)
 end
@@ -22,7 +14,9 @@ local T = Tb * R * Tr                                 -- the book's Tr R Tr', ap
 local tri = {P(4, 3), P(5, 4), P(4, 5)}
 local steps = {{}, {}, {}}
 for i, p in ipairs(tri) do steps[1][i] = Tr(p); steps[2][i] = R(Tr(p)); steps[3][i] = T(p) end
-frame(-2.5, -1.5, 5.8, 5.8)
+fit{around = {P(-2.5, -1.5), P(5.8, 5.8)}, pad = 0.66, band = 20}
+axes{x = {-2.5, 5.8}, y = {-1.5, 5.8}, ticks = 0, labels = false, color = 8}
+label("$x$", P(5.8, 0), "s", 8); label("$y$", P(0, 5.8), "w", 8)
 pen{dash = {4, 3}}
 path(steps[1], {closed = true, color = 8})
 path(steps[2], {closed = true, color = 8})

@@ -6,21 +6,15 @@
 -- it (example 1) the circle through (1, 1), (2, 2), (3, 2): x^2 + y^2 - 5x - y + 4 = 0 (the book
 -- prints "+ y"), centre (2.5, 0.5), r = 1.581139.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
 local c = plane.circle_slopes(P(1, 1), 1, 3, 0)
 local coef = {1, 0, 1, c.d, c.e, c.f}
 local c3 = plane.circle3(P(1, 1), P(2, 2), P(3, 2))
-frame(-0.6, -4.2, 6.4, 2.9)
+fit{around = {P(-0.6, -4.2), P(6.4, 2.9)}, pad = 0.64, band = 20}
+axes{x = {-0.6, 6.4}, y = {-4.2, 2.9}, ticks = 0, labels = false, color = 8}
+label("$x$", P(6.4, 0), "s", 8); label("$y$", P(0, 2.9), "w", 8)
 pen{dash = {4, 3}}; c.curve:draw{color = 8}; c3.curve:draw{color = 8}; pen()
 c.arc:draw{color = 14}; c3.arc:draw{color = 11}
 -- the two tangents, with the slopes of the implicit curve at the ends

@@ -4,19 +4,13 @@
 -- (d = -8.358899, e = 5.717798, f = 0.641101; the book's circle) and (-0.179449, 5.858899),
 -- which the book does not mention.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
 local k1, k2 = plane.circle2r(P(1, 1), P(3, 2), 5)
-frame(-5.8, -8.2, 9.6, 11.2)
+fit{around = {P(-5.8, -8.2), P(9.6, 11.2)}, pad = 1.7, band = 20}
+axes{x = {-5.8, 9.6}, y = {-8.2, 11.2}, ticks = 0, labels = false, color = 8}
+label("$x$", P(9.6, 0), "s", 8); label("$y$", P(0, 11.2), "w", 8)
 k1.curve:draw{color = 14}; k2.curve:draw{color = 10}
 for _, k in ipairs{{k1, 14}, {k2, 10}} do
   dot(k[1].centre, string.format("(%.6f, %.6f)", k[1].centre.x, k[1].centre.y), k[2])

@@ -5,18 +5,12 @@
 -- 2t/(1 + t^2)) with a uniform step in t = tan(th/2) lies between (blue). Three radii 1, 0.8,
 -- 0.6 keep the three sets apart.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
-frame(-0.15, -0.15, 1.25, 1.15)
+fit{around = {P(-0.15, -0.15), P(1.25, 1.15)}, pad = 0.12, band = 20}
+axes{x = {-0.15, 1.25}, y = {-0.15, 1.15}, ticks = 0, labels = false, color = 8}
+label("$x$", P(1.25, 0), "s", 8); label("$y$", P(0, 1.15), "w", 8)
 local sets = {{1, "explicit", 0.1, 12, "uniform $x$"}, {0.8, "param", math.pi / 20, 10,
   "uniform $\\theta$"},
               {0.6, "rational", 0.1, 11, "uniform $t$"}}

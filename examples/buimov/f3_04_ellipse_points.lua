@@ -5,18 +5,12 @@
 -- where it turns fast. After ten steps of dth = 0.1 the recurrence is at (3 cos 1, 2 sin 1) =
 -- (1.620907, 1.682942), marked.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
-frame(-3.6, -2.6, 3.9, 2.7)
+fit{around = {P(-3.6, -2.6), P(3.9, 2.7)}, pad = 0.48, band = 20}
+axes{x = {-3.6, 3.9}, y = {-2.6, 2.7}, ticks = 0, labels = false, color = 8}
+label("$x$", P(3.9, 0), "s", 8); label("$y$", P(0, 2.7), "w", 8)
 plane.ellipse(P(0, 0), 3, 2):draw{color = 14}
 for _, p in ipairs(plane.points("ellipse", {A = 3, B = 2, step = 2
     * math.pi / 32, n = 32, method = "recurrence"})) do

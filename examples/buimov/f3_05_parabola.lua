@@ -4,19 +4,13 @@
 -- (the book prints "- y dth") from the vertex, p = 1/2, dth = 0.2, ten steps to (0.5 th^2, th)
 -- with th = 2: (2, 2); the fourth quadrant by reflection. The focus F = (p, 0).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
 local p = 0.5
-frame(-0.5, -2.6, 3.2, 2.6)
+fit{around = {P(-0.5, -2.6), P(3.2, 2.6)}, pad = 0.47, band = 20}
+axes{x = {-0.5, 3.2}, y = {-2.6, 2.6}, ticks = 0, labels = false, color = 8}
+label("$x$", P(3.2, 0), "s", 8); label("$y$", P(0, 2.6), "w", 8)
 plane.parabola(p, -2.3, 2.3):draw{color = 14}
 for _, q in ipairs(plane.points("parabola", {A = p, step = 0.2, n = 10, method = "recurrence"})) do
   dot(q, nil, 15); dot(P(q.x, -q.y), nil, 7)

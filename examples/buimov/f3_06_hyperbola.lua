@@ -5,19 +5,13 @@
 -- prints "+" in the last denominator; red) and of the ch/sh recurrence (green), dth = 0.1; the
 -- branch (alpha ch t, beta sh t) is drawn at the book's t (plane.hyperbola), both branches.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
 local a, b = 2, 1.5
-frame(-4.4, -3.2, 4.4, 3.2)
+fit{around = {P(-4.4, -3.2), P(4.4, 3.2)}, pad = 0.57, band = 20}
+axes{x = {-4.4, 4.4}, y = {-3.2, 3.2}, ticks = 0, labels = false, color = 8}
+label("$x$", P(4.4, 0), "s", 8); label("$y$", P(0, 3.2), "w", 8)
 pen{dash = {4, 3}}
 line(P(-4, -4 * b / a), P(4, 4 * b / a), 8); line(P(-4, 4 * b / a), P(4, -4 * b / a), 8)
 pen()

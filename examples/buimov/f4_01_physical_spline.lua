@@ -5,15 +5,6 @@
 -- points is the natural cubic spline (free ends, no bending moment at them: P'' = 0), the weights
 -- drawn as blocks on it.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -23,7 +14,7 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local pts = {P(0, 0.5), P(1.5, 1.6), P(3.2, 1.1), P(4.6, 2.0), P(6.2, 1.2)}
-frame(-0.4, -0.4, 6.6, 2.8, true)
+fit{around = {P(-0.4, -0.4), P(6.6, 2.8)}, pad = 0.36, band = 20}
 local s, tangents = buimov.spline(pts, {ends = "natural", param = "chord"})
 s:draw{color = 14}
 for i, p in ipairs(pts) do

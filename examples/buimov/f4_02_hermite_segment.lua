@@ -4,15 +4,6 @@
 -- B4 = 2(P1 - P2)/t2^3 + P'1/t2^2 + P'2/t2^2 (the book prints the last two with "-"). Here
 -- P1 = (0, 0), P2 = (4, 1), P'1 = (2, 3), P'2 = (3, -2), t2 = 1; the tangents drawn at a third.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -24,7 +15,9 @@ end
 local P1, P2, D1, D2 = P(0, 0), P(4, 1), V(2, 3), V(3, -2)
 local seg = buimov.hermite(P1, P2, D1, D2)
 local B1, B2, B3, B4 = buimov.hermite_coeffs(P1, P2, D1, D2)
-frame(-0.6, -0.8, 5.6, 2.4)
+fit{around = {P(-0.6, -0.8), P(5.6, 2.4)}, pad = 0.32, band = 20}
+axes{x = {-0.6, 5.6}, y = {-0.8, 2.4}, ticks = 0, labels = false, color = 8}
+label("$x$", P(5.6, 0), "s", 8); label("$y$", P(0, 2.4), "w", 8)
 seg:draw{color = 14}
 vector(P1, D1 / 3, 12); vector(P2, D2 / 3, 12)
 dot(P1, "$P_1$", 15); dot(P2, "$P_2$", 15)

@@ -3,15 +3,6 @@
 -- (1, 1) and (1, -1) scaled by k = 1, 2, 4, 8: the longer the tangents, the fuller the curve
 -- (the book draws such a family without numbers).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -21,7 +12,9 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local P1, P2 = P(0, 0), P(4, 0)
-frame(-0.6, -0.6, 4.8, 3.3)
+fit{around = {P(-0.6, -0.6), P(4.8, 3.3)}, pad = 0.35, band = 20}
+axes{x = {-0.6, 4.8}, y = {-0.6, 3.3}, ticks = 0, labels = false, color = 8}
+label("$x$", P(4.8, 0), "s", 8); label("$y$", P(0, 3.3), "w", 8)
 local colours = {11, 10, 14, 12}
 for i, k in ipairs{1, 2, 4, 8} do
   local seg = buimov.hermite(P1, P2, V(k, k), V(k, -k))

@@ -6,15 +6,6 @@
 -- P'2 = P'3 = (0.505431, -0.147724). The end tangents are drawn from the end points, inside the
 -- figure.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -25,7 +16,7 @@ local function polygon(pts, first, colour)
 end
 local pts = {P(0, 0), P(1, 1), P(2, -1), P(3, 0)}
 local d = V(1, 1)
-frame(-0.4, -1.5, 3.7, 1.7, true)
+fit{around = {P(-0.4, -1.5), P(3.7, 1.7)}, pad = 0.29, band = 20}
 for i = 1, #pts - 1 do line(pts[i], pts[i + 1], 8) end
 local u, tu = buimov.spline(pts, {ends = "clamped", d0 = d, d1 = d})
 local c, tc = buimov.spline(pts, {ends = "clamped", d0 = d, d1 = d, param = "chord"})

@@ -3,15 +3,6 @@
 -- 8/27, 4/9, 2/9, 1/27 at t = 1/3; 1/27, 2/9, 4/9, 8/27 at t = 2/3; 0, 0, 0, 1 at t = 1, so
 -- P(1/3) = 8/27 P0 + 4/9 P1 + 2/9 P2 + 1/27 P3. A graph: t and J on equal scales.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -20,7 +11,9 @@ local function polygon(pts, first, colour)
   for i = 1, #pts - 1 do line(pts[i], pts[i + 1], colour or 8) end
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
-frame(-0.12, -0.12, 1.15, 1.08)
+fit{around = {P(-0.12, -0.12), P(1.15, 1.08)}, pad = 0.11, band = 20}
+axes{x = {-0.12, 1.15}, y = {-0.12, 1.08}, ticks = 0, labels = false, color = 8}
+label("$x$", P(1.15, 0), "s", 8); label("$y$", P(0, 1.08), "w", 8)
 local colours = {12, 10, 11, 14}
 for i = 0, 3 do
   graph(function(t) return buimov.bernstein(3, i, t) end, 0, 1, {color = colours[i + 1]})

@@ -3,15 +3,6 @@
 -- to the polygon: P'(0) = n (P1 - P0), P'(1) = n (Pn - Pn-1). The cubic on (1, 1), (2, 3),
 -- (4, 3), (3, 1) (the book gives no points) has P(0.5) = (2.75, 2.5), P'(0) = (3, 6).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -22,7 +13,9 @@ local function polygon(pts, first, colour)
 end
 local pts = {P(1, 1), P(2, 3), P(4, 3), P(3, 1)}
 local b = bezier(pts)
-frame(-0.3, -0.3, 4.6, 3.5)
+fit{around = {P(-0.3, -0.3), P(4.6, 3.5)}, pad = 0.34, band = 20}
+axes{x = {-0.3, 4.6}, y = {-0.3, 3.5}, ticks = 0, labels = false, color = 8}
+label("$x$", P(4.6, 0), "s", 8); label("$y$", P(0, 3.5), "w", 8)
 polygon(pts)
 b:draw{color = 14}
 dot(b(0.5), "P(0.5) = (2.75, 2.5)", 14)

@@ -5,15 +5,6 @@
 -- (4, 2) and a quadratic Q with g = 1.5: buimov.g1_next gives Q0 = (4, 2), Q1 = (5, 1), and
 -- buimov.joint reads the joint back as G1 with g = 1.5.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -28,7 +19,7 @@ local q0, q1 = buimov.g1_next(Pc, 2, 1.5)
 local Qp = {q0, q1, P(7, 0)}
 local Q = bezier(Qp)
 local kind, g = buimov.joint(Pc, Q)
-frame(-0.4, -0.6, 7.6, 3.6, true)
+fit{around = {P(-0.4, -0.6), P(7.6, 3.6)}, pad = 0.41, band = 20}
 for i = 1, 3 do line(Pp[i], Pp[i + 1], 8) end
 line(Qp[1], Qp[2], 8); line(Qp[2], Qp[3], 8)
 pen{dash = {4, 3}}; line(Pp[3], Qp[2], 12); pen()

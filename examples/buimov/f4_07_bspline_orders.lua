@@ -4,15 +4,6 @@
 -- Bezier curve (knots [0 0 0 0 1 1 1 1]); the lower the order, the closer the curve. The
 -- vertices (1, 1), (2, 3), (4, 3), (3, 1) of the Bezier example; k = 3 gives P(1) = (3, 3).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -22,7 +13,7 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local pts = {P(1, 1), P(2, 3), P(4, 3), P(3, 1)}
-frame(0.4, 0.4, 4.6, 3.6, true)
+fit{around = {P(0.4, 0.4), P(4.6, 3.6)}, pad = 0.29, band = 20}
 local colours = {[2] = 12, [3] = 10, [4] = 14}
 for k = 2, 4 do
   local c = buimov.bspline(pts, k)

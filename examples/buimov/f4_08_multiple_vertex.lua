@@ -5,15 +5,6 @@
 -- polygon. The knots are the book's algorithm's: [0 0 0 0 1 1 1 1], [0 0 0 0 0 1 1 1 1 1] and
 -- [0 0 0 0 0 0 1 1 1 1 1 1] (buimov.knots).
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -23,7 +14,7 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local base = {P(0, 0), P(1, 3), P(3.5, 3.2), P(4.5, 0.5)}
-frame(-0.4, -0.4, 4.9, 3.7, true)
+fit{around = {P(-0.4, -0.4), P(4.9, 3.7)}, pad = 0.37, band = 20}
 for i = 1, 3 do line(base[i], base[i + 1], 8) end
 local colours = {14, 10, 11}
 for copies = 1, 3 do

@@ -6,15 +6,6 @@
 -- [0 0 0 0 1 2 3 4 4 4 4]), drawn here, the first span t < 1 is exactly the same for all three:
 -- P(0.4) = (2.1333, 4.1280). The red dots mark t = 1, where the three curves part.
 
--- equal units on both axes: the box (x0, y0)-(x1, y1) centred above the caption line
-local function frame(x0, y0, x1, y1, bare)
-  local s = math.max((x1 - x0) / 580, (y1 - y0) / 390)
-  local cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-  window(cx - 320 * s, cy - 250 * s, cx + 320 * s, cy + 230 * s)
-  if bare then return end
-  arrow(P(x0, 0), P(x1, 0), "end", 8); arrow(P(0, y0), P(0, y1), "end", 8)
-  label("$x$", P(x1, 0), "s", 8); label("$y$", P(0, y1), "w", 8)
-end
 local function dot(p, name, colour)
   mark(p, "dot", 4, colour); if name then label(name, p, nil, colour) end
 end
@@ -24,7 +15,7 @@ local function polygon(pts, first, colour)
   for i, p in ipairs(pts) do dot(p, "$P_{" .. (i - 1 + (first or 0)) .. "}$", 15) end
 end
 local base = {P(0, 2), P(2, 5), P(5, 4), P(4, 1), nil, P(8, 1), P(10, 4)}
-frame(-0.5, -0.5, 10.6, 5.6, true)
+fit{around = {P(-0.5, -0.5), P(10.6, 5.6)}, pad = 0.57, band = 20}
 local colours = {14, 10, 11}
 for j, p4 in ipairs{P(5, 0), P(6, 2), P(7, 4)} do
   base[5] = p4

@@ -141,5 +141,9 @@ int pc_fit_figure(pc_canvas *c);
  * not move (that is pc_fit).  PC_EARG for no points, a non-finite one, a negative pad, or a
  * box of no size with pad 0. */
 int pc_fit_around(pc_canvas *c, size_t n, const double *xy, double pad, int aspect);
+/* The same with band pixels kept free at the bottom of the view (a caption's line): the points
+ * are framed in the view less the band, and the window reaches down over it at the same units.
+ * PC_EARG as above, or for a band < 0 or not below the view's height. */
+int pc_fit_around_band(pc_canvas *c, size_t n, const double *xy, double pad, double band, int aspect);
 
 #endif

@@ -399,9 +399,9 @@ static int l_centre_line(lua_State *L) {
 static const char *const ASPECTS[] = {"equal", "fill", NULL};
 static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTENUM("aspect", ASPECTS, 0),
                                    {.name = "around", .kind = PCL_POINTS, .flags = PCL_OPT, .lo = 1},
-                                   A_OPTNUM("pad", 0, 1e300, 0, "0"), PCL_END};
+                                   A_OPTNUM("pad", 0, 1e300, 0, "0"), A_OPTNUM("band", 0, 1e5, 0, "0"), PCL_END};
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
-/* fit{around = points, pad =}: the frame of the given points (n-D through the camera), set
+/* fit{around = points, pad =, band =}: the frame of the given points (n-D through the camera), set
  * before drawing; margin (pixels, of what is drawn) and pad (world units, of the points) each
  * belong to one of the two framings, so the other is refused rather than ignored. */
 static int fit_around(lua_State *L, pc_canvas *c, const pcl_val *a) {
@@ -416,14 +416,15 @@ static int fit_around(lua_State *L, pc_canvas *c, const pcl_val *a) {
         else if (pcl_project(L, d, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
             return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", i + 1, d);
     }
-    return check(L, c, pc_fit_around(c, (size_t)n, xy, a[4].x, a[2].n));
+    return check(L, c, pc_fit_around_band(c, (size_t)n, xy, a[4].x, a[5].present ? a[5].x : 0, a[2].n));
 }
 static int l_fit(lua_State *L) {
-    pcl_val a[5] = {0};
+    pcl_val a[6] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     if (a[3].present) return fit_around(L, c, a);
     if (a[4].present) return pcl_fail(L, "pad is the room round the points of around: give around too (or margin)");
+    if (a[5].present) return pcl_fail(L, "band is the caption's room under the points of around: give around too");
     return check(L, c, pc_fit(c, a[1].present ? a[1].x : 10, a[2].n));
 }
 
@@ -618,7 +619,7 @@ static const pcl_fn fns[] = {
     PCL_FN("centre_line", l_centre_line, centre_args, NULL,
            "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
     PCL_FN("fit", l_fit, fit_args, NULL,
-           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"); what is drawn already stays."),
+           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"), band = px keeping that many pixels free at the bottom for a caption; what is drawn already stays."),
     PCL_FN("caption", l_caption, caption_args, NULL,
            "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
     PCL_FN("axes", l_axes, axes_args, "n",

@@ -91,12 +91,41 @@ static void test_errors(void **state) {
     pc_canvas_free(c);
 }
 
+/* band: 39 pixels kept free at the bottom; the points framed in the 440 px above, same units */
+static void test_caption_band(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    const double tri[] = {0, 0, 4, 0, 2, 3};   /* height 3 + 2 pad decides: 4 * 440/639 < 3 */
+    assert_int_equal(pc_fit_around_band(c, 3, tri, 0.5, 39, PC_FIT_EQUAL), PC_OK);
+    double ux, uy, sx, sy;
+    units(c, &ux, &uy);
+    assert_true(fabs(ux - 110) < 1e-9 && fabs(uy - 110) < 1e-9);   /* 440 px over 4 units */
+    assert_true(fabs(c->wy2 - 3.5) < 1e-12 && fabs(c->wy1 - (-0.5 - 39.0 / 110)) < 1e-12);
+    pc_world_to_screen(c, 2, 1.5, &sx, &sy);    /* the box's centre: the middle of the 440 px */
+    assert_true(fabs(sx - 319.5) < 1e-9 && fabs(sy - 220) < 1e-9);
+    pc_world_to_screen(c, 2, -0.5, &sx, &sy);   /* the pad's lower edge: the band's top */
+    assert_true(fabs(sy - 440) < 1e-9);
+    /* fill: the box plus pad over the 440 px, the band below at the same y units */
+    const double sq[] = {0, 0, 2, 2};
+    assert_int_equal(pc_fit_around_band(c, 2, sq, 0, 39, PC_FIT_FILL), PC_OK);
+    pc_world_to_screen(c, 0, 0, &sx, &sy);
+    assert_true(fabs(sx - 0) < 1e-9 && fabs(sy - 440) < 1e-9);
+    /* band 0 is pc_fit_around's frame exactly */
+    assert_int_equal(pc_fit_around_band(c, 3, tri, 0.5, 0, PC_FIT_EQUAL), PC_OK);
+    assert_true(fabs(c->wy1 - -0.5) < 1e-12 && fabs(c->wy2 - 3.5) < 1e-12);
+    assert_int_equal(pc_fit_around_band(c, 3, tri, 0.5, -1, PC_FIT_EQUAL), PC_EARG);
+    assert_int_equal(pc_fit_around_band(c, 3, tri, 0.5, 479, PC_FIT_EQUAL), PC_EARG);
+    assert_non_null(strstr(c->error, "band must be a number of pixels >= 0 and below the view's 479, got 479"));
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_equal_units),
         cmocka_unit_test(test_view_aspect_and_fill),
         cmocka_unit_test(test_drawn_stays),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_caption_band),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

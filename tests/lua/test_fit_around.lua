@@ -65,6 +65,20 @@ end end
 check.eq(n11, 0, "the 3-D point drawn where its projection is (overdrawn by it)")
 check.eq(n10, 1, "the projection's pixel")
 
+-- band = 39: those pixels kept free at the bottom (a caption's line); the triangle framed in the
+-- 440 px above at 110 px a unit, its pad's lower edge on row 440, centred on x = 2 (319.5)
+cls()
+fit { around = { A, B, C }, pad = 0.5, band = 39 }
+h = pixel_of(P(2.25, 0), 12)
+check.eq(#h, 1, "one pixel for (2.25, 0)")
+check.eq(h[1][1], 347, "x = 2.25: 319.5 + 0.25 * 110")
+check.eq(h[1][2], 385, "y = 0: half a unit above row 440")
+cls()
+fit { around = { A, B, C }, pad = 0.5, band = 39 }
+h = pixel_of(P(2.25, 3), 12)
+check.eq(h[1][2], 55, "y = 3: half a unit below the top")
+cls()
+
 -- errors name the call and the option
 check.err(function() fit { around = { A, B }, margin = 5 } end,
   "fit: margin frames what is drawn (in pixels); with around give pad (world units)", "margin with around")
@@ -76,4 +90,9 @@ check.err(function() fit { around = { A, B }, pad = -1 } end, "fit: option 'pad'
 check.err(function() fit { around = {} } end, "fit: option 'around' must hold at least 1", "no points")
 check.err(function() fit { around = { P(0, 0, 0), P(1, 1, 1) } } end,
   "fit: option 'around' [1] must be a 2-D point (or an n-D one through the camera), got a 3-D point", "3-D without a camera")
+check.err(function() fit { band = 20 } end,
+  "fit: band is the caption's room under the points of around: give around too", "band alone")
+check.err(function() fit { around = { A, B }, pad = 1, band = 479 } end,
+  "fit: band must be a number of pixels >= 0 and below the view's 479, got 479", "band too tall")
+check.err(function() fit { around = { A, B }, band = -1 } end, "fit: option 'band' must be", "negative band")
 check.done()
