@@ -2,7 +2,7 @@
 -- The digest's triangle A(0,0), B(4,3), C(5,-1), semi-axes m = 2, n = 1 and theta = pi/4: the
 -- major axis CP meets line AB at K with angle AKC = theta (K = CP x AB falls beyond B here, so
 -- AB is extended, dashed), tau = angle ACK = pi - alpha - theta; P = (K - C)m/CK + C; A rotated
--- about C by omega = tau + pi/2 towards B (the book underlines the letter; here a bar) gives
+-- about C by omega = tau + pi/2 towards B (underlined, as the book writes it) gives
 -- Q = (A' - C)n/b + C; the ellipse (2.11) in the simplex CPQ (conic.tilted).
 local A, B, C, m, n, th = P(0, 0), P(4, 3), P(5, -1), 2, 1, math.pi / 4
 local e, Pa, Qa, K, Ar, tau = conic.tilted(A, B, C, th, m, n)
@@ -19,6 +19,6 @@ for _, p in ipairs{Pa, Qa} do mark(p, "dot", 5, 10) end
 mark(K, "dot", 5, 14) mark(Ar, "dot", 5, 7)
 label("$A$", A, nil, 9) label("$B$", B, nil, 9) label("$C$", C, nil, 9)
 label("$P$", Pa, nil, 10) label("$Q$", Qa, nil, 10) label("$K$", K, nil, 14)
-label("$\\bar A$", Ar, nil, 7)
+label("$\\underline{A}$", Ar, nil, 7)
 label("$m$", lerp(C, Pa, 0.5), nil, 10) label("$n$", lerp(C, Qa, 0.5), nil, 10)
 caption(string.format("theta = pi/4,  tau = %.4f,  |CP| = %g,  |CQ| = %g", tau, dist(C, Pa), dist(C, Qa)), "bottom", 7)
