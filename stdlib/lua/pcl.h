@@ -11,7 +11,6 @@
 #include "writers.h"
 #include "map.h"
 
-#define PCL_MODULE "pointcalc"
 #define PCL_VERSION "0.1.0"
 
 /* The userdata at idx if its metatable is the value at index mt (a pseudo-index such as an
@@ -39,35 +38,16 @@ void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type);
  * so one type's object given another's metatable is refused as well. */
 #define PCL_SELF_TAG(p, tag) ((uintptr_t)(const void *)(p) ^ (uintptr_t)(const void *)(tag))
 
-/* module openers, called by luaopen_pointcalc in this order */
-void pcl_open_errors(lua_State *L);  /* _tk.raise, _tk.argerror, ...: the errors of the Lua helpers */
-void pcl_open_point(lua_State *L);
-void pcl_open_simplex(lua_State *L);   /* simplex() (l_simplex.c) */
-void pcl_open_map(lua_State *L);       /* affine, affine.frame, map.* (l_map.c) */
-void pcl_open_draw(lua_State *L);
-void pcl_open_qb(lua_State *L);     /* the sub-table qb: QBasic numbers (l_qb.c) */
-void pcl_open_qbscreen(lua_State *L); /* print_at get_block put_block draw pages pcopy pmap ... (l_qbscreen.c) */
-void pcl_open_smooth(lua_State *L);  /* the curvilinear-coordinates toolkit (docs/toolkit.md): */
-void pcl_open_curves(lua_State *L);  /*   smooth; curves: bezier bspline ... spline2 stroke fourier (l_smooth.c, l_curve.c) */
-void pcl_open_curvilinear(lua_State *L);    /*   squash oblique projection oresme bisect (l_curvilinear.c) */
-void pcl_open_complex(lua_State *L); /*   complex mobius (l_complex.c) */
-void pcl_open_surface(lua_State *L);  /* surface.* (l_surface.c) */
-void pcl_open_camera(lua_State *L);   /* camera, drawing curves as paths (l_camera.c) */
-void pcl_open_konopatsky(lua_State *L);  /* conic, oneratio, interp, approx (l_konopatsky.c) */
-void pcl_open_conic_elements(lua_State *L);  /* c:conic(), conic.elements (l_conic_elements.c) */
-void pcl_open_konopatsky_ch1(lua_State *L);  /* konopatsky.*: chapter 1 (l_konopatsky_ch1.c) */
-void pcl_open_konopatsky_schemes(lua_State *L);  /* conic.ed_scheme, five_scheme, ... (l_konopatsky_schemes.c) */
-void pcl_open_konopatsky_triples(lua_State *L);  /* conic.scheme: a table of triples (l_konopatsky_triples.c) */
-void pcl_open_korotky_meet(lua_State *L);  /* korotky.plane_meet (l_korotky_meet.c) */
-void pcl_open_map_more(lua_State *L);  /* map.perspective_pqr, foreshortening, axial_affinity (l_map_more.c) */
-void pcl_open_buimov_more(lua_State *L);  /* buimov.g1_next, buimov.joint (l_buimov_more.c) */
-void pcl_open_expr(lua_State *L);     /* param: point equations (l_expr.c, pcl_expr.h) */
-void pcl_open_params(lua_State *L);   /* slider: a script's declared parameters (l_params.c) */
-void pcl_open_korotky(lua_State *L);  /* korotky.*: nature-like curves, conic surfaces (l_korotky.c) */
-void pcl_open_buimov(lua_State *L);   /* plane.*, buimov.*: the textbook's constructions (l_buimov.c) */
-void pcl_open_figure(lua_State *L);   /* figure{...}: the print look (l_figure.c) */
-void pcl_open_figure_layout(lua_State *L);  /* placed_labels, mark, arrow, dimension, ... (l_figure_layout.c) */
-/* the print look's pens and label options: pcl_args.h (l_figure.c) */
+/* The module openers pcl_open_NAME (l_NAME.c; errors: pcl_util.c, curves: l_curve.c), each adding
+ * its functions to the module table on the stack top, in the order luaopen_pointcalc calls them:
+ * conic_elements after konopatsky (conic) and buimov (plane).  The print look's pens and label
+ * options: pcl_args.h. */
+#define PCL_MODULES(X) X(errors) X(point) X(expr) X(simplex) X(map) X(map_more) X(draw) X(qb) X(qbscreen) \
+    X(smooth) X(curves) X(surface) X(camera) X(konopatsky) X(konopatsky_ch1) X(konopatsky_schemes) \
+    X(konopatsky_triples) X(params) X(korotky) X(korotky_meet) X(buimov) X(buimov_more) X(conic_elements) \
+    X(curvilinear) X(complex) X(figure) X(figure_layout)
+#define PCL_DECLARE_OPEN(name) void pcl_open_##name(lua_State *L);
+PCL_MODULES(PCL_DECLARE_OPEN)
 
 /* The map userdata (l_map.c): the map at idx or NULL; push a new one (its matrix unset). */
 pc_map *pcl_tomap(lua_State *L, int idx);
@@ -93,11 +73,8 @@ int pcl_optcolor(lua_State *L, int arg, pc_canvas *c);
  * 1, or a dimension error if it is not 2-D); return 0 if it is not a point. */
 int pcl_topoint2(lua_State *L, int idx, double *x, double *y);
 
-/* The house error style, one implementation for every binding:
- * "NAME: argument #ARG (WHAT) must be EXPECTED, got VALUE" where NAME is the running function
- * and ARG is counted as Lua counts it (in A:dist(B), B is argument #1; A is "self"). */
-int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected);
-/* The same with an explicit function name and shown argument number (methods, sub-tables). */
+/* The house error style, "FNAME: argument #SHOWN (WHAT) must be EXPECTED, got VALUE" for the
+ * value at idx (shown 0: "self"), for a binding not on the declared layer (pcl_args.h). */
 int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
                       const char *expected);
 /* The value at idx as the messages show it ("got VALUE"): numbers by value, P(...) for a point,

@@ -1,10 +1,10 @@
 /* The declared argument layer (pcl_args.h): registration, the one reader of declared
  * arguments, one wording of every message, and the registry of declarations :help reads. */
-#include <ctype.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "names.h"
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
@@ -159,42 +159,9 @@ void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc) 
     *nc = cols;
 }
 
-/* ---- nearest names ------------------------------------------------------------------------ */
+/* ---- nearest names (names.c) ---------------------------------------------------------------- */
 
-/* Edit distance, case-insensitive, a swap of neighbours counting as one edit (lrep -> lerp). */
-static int distance(const char *a, const char *b) {
-    int n = (int)strlen(a), m = (int)strlen(b);
-    if (n > 40 || m > 40) return 99;
-    int d[41][41];
-    for (int i = 0; i <= n; i++) d[i][0] = i;
-    for (int j = 0; j <= m; j++) d[0][j] = j;
-    for (int i = 1; i <= n; i++)
-        for (int j = 1; j <= m; j++) {
-            int ca = tolower((unsigned char)a[i - 1]), cb = tolower((unsigned char)b[j - 1]);
-            int v = d[i - 1][j - 1] + (ca != cb);
-            if (d[i - 1][j] + 1 < v) v = d[i - 1][j] + 1;
-            if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
-            if (i > 1 && j > 1 && ca == tolower((unsigned char)b[j - 2]) &&
-                tolower((unsigned char)a[i - 2]) == cb && d[i - 2][j - 2] + 1 < v)
-                v = d[i - 2][j - 2] + 1;
-            d[i][j] = v;
-        }
-    return d[n][m];
-}
-
-/* Keep the best candidate: nearer, or as near and first in alphabetical order. */
-static void consider(const char *name, const char *cand, const char **best, int *bestd) {
-    int len = (int)strlen(name), d = distance(name, cand);
-    if (d > (len <= 3 ? 1 : 2) || d == 0) return;
-    if (d < *bestd || (d == *bestd && strcmp(cand, *best) < 0)) *best = cand, *bestd = d;
-}
-
-const char *pcl_nearest(const char *name, const char *const *candidates) {
-    const char *best = NULL;
-    int bestd = 99;
-    for (int i = 0; candidates[i]; i++) consider(name, candidates[i], &best, &bestd);
-    return best;
-}
+const char *pcl_nearest(const char *name, const char *const *candidates) { return pc_nearest_name(name, candidates); }
 
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
     idx = lua_absindex(L, idx);
@@ -203,7 +170,7 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
     lua_pushnil(L);
     while (lua_next(L, idx)) {
         lua_pop(L, 1);
-        if (lua_type(L, -1) == LUA_TSTRING) consider(name, lua_tostring(L, -1), &best, &bestd);
+        if (lua_type(L, -1) == LUA_TSTRING) pc_nearer_name(name, lua_tostring(L, -1), &best, &bestd);
     }
     return best;   /* a key of the table, which keeps the string alive */
 }
@@ -270,66 +237,59 @@ static int mismatch(lua_State *L, const ctx *c, int idx, const char *expected) {
     return mismatch_hint(L, c, idx, expected, NULL);
 }
 
-static const char *num_text(lua_State *L, double x) { return pcl_pushnum(L, x); }
-
-/* "a 2-D point", "a point" */
-static const char *dimmed(lua_State *L, int dim, const char *what) {
-    return dim > 0 ? lua_pushfstring(L, "a %d-D %s", dim, what) : lua_pushfstring(L, "a %s", what);
+/* Push the strings items[] (NULL-ended), each as fmt shows it, joined by sep, the last by last:
+ * "a", "b" or "c". */
+static const char *push_list(lua_State *L, const char *const *items, const char *fmt, const char *sep,
+                             const char *last) {
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    for (int i = 0; items[i]; i++) {
+        if (i) luaL_addstring(&b, items[i + 1] ? sep : last);
+        lua_pushfstring(L, fmt, items[i]);
+        luaL_addvalue(&b);
+    }
+    luaL_pushresult(&b);
+    return lua_tostring(L, -1);
 }
+
+/* The names of the keys of an option table into names (NULL-ended); their count. */
+static int key_names(const pcl_arg *keys, const char **names, int max) {
+    int n = 0;
+    for (; keys[n].name && n < max - 1; n++) names[n] = keys[n].name;
+    names[n] = NULL;
+    return n;
+}
+
+/* The expected text of each kind that holds no numbers: "a point", made "a 2-D point" for a
+ * kind with a dimension. */
+static const char *const EXPECTED[] = {
+    [PCL_BOOLEAN] = "a boolean", [PCL_STRING] = "a string", [PCL_POINT] = "a point", [PCL_VECTOR] = "a vector",
+    [PCL_LOC] = "a point or vector", [PCL_VALUE] = "a point, vector or weighted point",
+    [PCL_NUMBERS] = "a list of numbers", [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors",
+    [PCL_CURVE] = "a curve", [PCL_SURFACE] = "a surface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
+    [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table", [PCL_ANY] = "a value"};
 
 /* The expected text of a kind (what the messages say after "must be"). */
 static const char *expected(lua_State *L, const pcl_arg *a) {
+    const char *names[64];
     if (a->expect) return a->expect;
     switch (a->kind) {
-    case PCL_NUMBER:
+    case PCL_NUMBER: case PCL_INTEGER:
         if (a->flags & PCL_RANGE)
-            return lua_pushfstring(L, "a number from %s to %s", num_text(L, a->lo), num_text(L, a->hi));
+            return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
+                                   pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
+        if (a->kind == PCL_INTEGER) return "an integer";
         if (a->flags & PCL_INF) return "a number other than NaN";
         return a->flags & PCL_POS ? "a positive number" : "a finite number";
-    case PCL_INTEGER:
-        if (a->flags & PCL_RANGE)
-            return lua_pushfstring(L, "an integer from %s to %s", num_text(L, a->lo), num_text(L, a->hi));
-        return "an integer";
-    case PCL_BOOLEAN: return "a boolean";
-    case PCL_STRING: return "a string";
-    case PCL_ENUM: {
-        luaL_Buffer b;
-        luaL_buffinit(L, &b);
-        for (int i = 0; a->choices[i]; i++) {
-            if (i) luaL_addstring(&b, a->choices[i + 1] ? ", " : " or ");
-            lua_pushfstring(L, "\"%s\"", a->choices[i]);
-            luaL_addvalue(&b);
-        }
-        luaL_pushresult(&b);
-        return lua_tostring(L, -1);
-    }
-    case PCL_POINT: return dimmed(L, a->dim, "point");
-    case PCL_VECTOR: return dimmed(L, a->dim, "vector");
-    case PCL_LOC: return dimmed(L, a->dim, "point or vector");
-    case PCL_VALUE: return dimmed(L, a->dim, "point, vector or weighted point");
+    case PCL_ENUM: return push_list(L, a->choices, "\"%s\"", ", ", " or ");
     case PCL_POINTS: return a->dim ? lua_pushfstring(L, "a list of %d-D points", a->dim) : "a list of points";
-    case PCL_NUMBERS: return "a list of numbers";
-    case PCL_VALUES: return "a list of points";
-    case PCL_VECTORS: return "a list of vectors";
-    case PCL_CURVE: return dimmed(L, a->dim, "curve");
-    case PCL_SURFACE: return dimmed(L, a->dim, "surface");
-    case PCL_MAP: return "a map";
-    case PCL_FUNCTION: case PCL_CALLABLE: return "a function";
-    case PCL_TABLE: return "a table";
-    case PCL_OPTIONS: {                        /* a table {k1 =, k2 =} */
-        luaL_Buffer b;
-        luaL_buffinit(L, &b);
-        luaL_addstring(&b, "a table {");
-        for (const pcl_arg *k = a->keys; k->name; k++) {
-            if (k != a->keys) luaL_addstring(&b, ", ");
-            luaL_addstring(&b, k->name);
-            luaL_addstring(&b, " =");
-        }
-        luaL_addchar(&b, '}');
-        luaL_pushresult(&b);
-        return lua_tostring(L, -1);
-    }
-    default: return "a value";
+    case PCL_OPTIONS:                                   /* a table {k1 =, k2 =} */
+        key_names(a->keys, names, 64);
+        return lua_pushfstring(L, "a table {%s}", push_list(L, names, "%s =", ", ", ", "));
+    case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE: case PCL_CURVE: case PCL_SURFACE:
+        if (a->dim > 0) return lua_pushfstring(L, "a %d-D %s", a->dim, EXPECTED[a->kind] + 2);
+        return EXPECTED[a->kind];
+    default: return a->kind > PCL_NONE && a->kind <= PCL_ANY ? EXPECTED[a->kind] : "a value";
     }
 }
 
@@ -363,7 +323,7 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     int k = pcl_snap_weight(n, out->v);
     const char *weight = k == PC_KIND_WEIGHTED ? lua_pushfstring(L, "its weight is %s, and a point "
         "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
-        num_text(L, p->h[n])) : NULL;
+        pcl_pushnum(L, p->h[n])) : NULL;
     if (a->kind == PCL_POINT && k != PC_KIND_POINT)
         mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_VECTOR
                       ? "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
@@ -453,6 +413,26 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     out->dim = d;
 }
 
+/* The fast path of the common kinds: a number or integer that fits its declaration is read
+ * here with a type test and the range tests, no message made; anything else (absent, of
+ * another kind, out of range) goes to read_value, which reads it or words the message.  Only
+ * an infinite or NaN number looks at PCL_INF. */
+static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out) {
+    if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
+    double x = lua_tonumber(L, idx);
+    if (!isfinite(x) && !((a->flags & PCL_INF) && !isnan(x))) return 0;
+    if (a->kind == PCL_INTEGER && x != floor(x)) return 0;
+    if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
+    if ((a->flags & PCL_POS) && !(x > 0)) return 0;
+    out->present = 1;
+    out->x = x;
+    out->idx = idx;
+    out->n = 0;
+    out->s = NULL;
+    out->obj = NULL;
+    return 1;
+}
+
 static const ctx *reading;   /* the value a binding's reader is reading (pcl_readfail) */
 
 /* One value at idx as the argument (or option key) a describes. */
@@ -470,17 +450,10 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         return;
     }
     switch (a->kind) {
-    case PCL_NUMBER:
-    case PCL_INTEGER: {
-        double x = lua_tonumber(L, idx);
-        int ok = t == LUA_TNUMBER && (isfinite(x) || ((a->flags & PCL_INF) && !isnan(x)));
-        if (ok && a->kind == PCL_INTEGER) ok = x == floor(x);
-        if (ok && (a->flags & PCL_RANGE)) ok = x >= a->lo && x <= a->hi;
-        if (ok && (a->flags & PCL_POS)) ok = x > 0;
-        if (!ok) mismatch(L, c, idx, expected(L, a));
-        out->x = x;
+    case PCL_NUMBER: case PCL_INTEGER:
+        if (!read_scalar(L, a, idx, out)) mismatch(L, c, idx, expected(L, a));
+        out->idx = c->key ? 0 : idx;
         return;
-    }
     case PCL_BOOLEAN:
         if (t != LUA_TBOOLEAN) mismatch(L, c, idx, expected(L, a));
         out->x = lua_toboolean(L, idx);
@@ -540,56 +513,39 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     }
 }
 
-/* The keys of an options table at idx into v (one per key); unknown keys are errors. */
-static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_val *v) {
-    int nk = 0;
-    while (a->keys[nk].name) nk++;
-    if (!lua_istable(L, idx)) {
-        if (!lua_isnoneornil(L, idx) || !(a->flags & PCL_OPT)) mismatch(L, c, idx, expected(L, a));
-        for (int k = 0; k < nk; k++) {
-            ctx kc = *c;
-            kc.key = a->keys[k].name;
-            read_value(L, &kc, &a->keys[k], idx, &v[k]);   /* the defaults; required keys fail */
-        }
-        return;
-    }
-    const char *known[64];
-    int has_color = 0;
-    for (int k = 0; k < nk && k < 63; k++) {
-        known[k] = a->keys[k].name;
-        has_color |= !strcmp(known[k], "color");
-    }
-    known[nk < 63 ? nk : 63] = NULL;
+/* Every key of the option table at idx must be one of known (nk of them): else "unknown option". */
+static void check_keys(lua_State *L, const ctx *c, int idx, const char *const *known, int nk) {
     lua_pushnil(L);
     while (lua_next(L, idx)) {
         lua_pop(L, 1);
-        if (lua_type(L, -1) != LUA_TSTRING) {
-            const char *k = pcl_shown(L, lua_gettop(L));
-            pcl_error(L, "%s: %s holds [%s]; its options are named (key = value)", c->fname,
-                      where(L, c), k);
-        }
+        if (lua_type(L, -1) != LUA_TSTRING)
+            pcl_error(L, "%s: %s holds [%s]; its options are named (key = value)", c->fname, where(L, c),
+                      pcl_shown(L, lua_gettop(L)));
         const char *key = lua_tostring(L, -1);
         int found = 0;
-        for (int k = 0; k < nk && !found; k++) found = !strcmp(key, known[k]);
-        if (!found && has_color && !strcmp(key, "colour")) found = 1;   /* the docs' spelling */
-        if (!found) {
-            const char *near = pcl_nearest(key, known);
-            if (near) pcl_error(L, "%s: unknown option '%s' (did you mean '%s'?)", c->fname, key, near);
-            luaL_Buffer b;
-            luaL_buffinit(L, &b);
-            for (int k = 0; k < nk; k++) {
-                if (k) luaL_addstring(&b, ", ");
-                luaL_addstring(&b, known[k]);
-            }
-            luaL_pushresult(&b);
-            pcl_error(L, "%s: unknown option '%s' (the options are %s)", c->fname, key, lua_tostring(L, -1));
-        }
+        for (int k = 0; k < nk && !found; k++)   /* colour = is the docs' spelling of color = */
+            found = !strcmp(key, known[k]) || (!strcmp(key, "colour") && !strcmp(known[k], "color"));
+        if (found) continue;
+        const char *near = pc_nearest_name(key, known);
+        if (near) pcl_error(L, "%s: unknown option '%s' (did you mean '%s'?)", c->fname, key, near);
+        pcl_error(L, "%s: unknown option '%s' (the options are %s)", c->fname, key,
+                  push_list(L, known, "%s", ", ", ", "));
     }
+}
+
+/* The keys of an options table at idx into v (one per key); unknown keys are errors.  Absent
+ * (nil, when optional), each key takes its default and a required one fails. */
+static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_val *v) {
+    const char *known[64];
+    int nk = key_names(a->keys, known, 64), table = lua_istable(L, idx);
+    if (!table && (!lua_isnoneornil(L, idx) || !(a->flags & PCL_OPT))) mismatch(L, c, idx, expected(L, a));
+    if (table) check_keys(L, c, idx, known, nk);
     for (int k = 0; k < nk; k++) {
         ctx kc = *c;
-        kc.key = a->keys[k].name;
-        int t = lua_getfield(L, idx, kc.key);
-        if (!strcmp(kc.key, "color")) {               /* colour = is the same option */
+        kc.key = known[k];
+        int t = table ? lua_getfield(L, idx, kc.key) : LUA_TNIL;
+        if (!table) lua_pushnil(L);
+        if (table && !strcmp(kc.key, "color")) {      /* colour = is the same option */
             if (lua_getfield(L, idx, "colour") != LUA_TNIL) {
                 if (t != LUA_TNIL)
                     pcl_error(L, "%s: options 'color' and 'colour' are one option: give one", c->fname);
@@ -605,13 +561,10 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
     }
 }
 
-static int nvalues(const pcl_arg *args) {
-    int n = 0;
-    for (const pcl_arg *a = args; a && a->kind; a++) {
-        n++;
-        if (a->kind == PCL_OPTIONS)
-            for (const pcl_arg *k = a->keys; k->name; k++) n++;
-    }
+/* The values an argument fills: 1, and one per key of an option table. */
+static int nvalues(const pcl_arg *a) {
+    int n = 1;
+    for (const pcl_arg *k = a->kind == PCL_OPTIONS ? a->keys : NULL; k && k->name; k++) n++;
     return n;
 }
 
@@ -621,26 +574,16 @@ static int nargs_of(const pcl_fn *d) {
     return n;
 }
 
-/* The fast path of the common kinds: a number or integer that fits its declaration is read
- * here with a type test and the range tests, no message made; anything else (absent, of
- * another kind, out of range) goes to read_value, which reads it or words the message. */
-static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out) {
-    if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
-    double x = lua_tonumber(L, idx);
-    if (!isfinite(x) || (a->kind == PCL_INTEGER && x != floor(x))) return 0;
-    if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
-    if ((a->flags & PCL_POS) && !(x > 0)) return 0;
-    out->present = 1;
-    out->x = x;
-    out->idx = idx;
-    out->n = 0;
-    out->s = NULL;
-    out->obj = NULL;
-    return 1;
-}
-
 static void check_count(lua_State *L, const decl_box *b, int n) {
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
+}
+
+/* Room on the stack for the general reader, once a call: lists and options push; a reader (the
+ * colour) pushes little, and pset does not pay for the check. */
+static void make_room(lua_State *L, const pcl_arg *a, int *room) {
+    if (a->kind == PCL_ANY || *room) return;
+    luaL_checkstack(L, 24, NULL);
+    *room = 1;
 }
 
 void *pcl_read(lua_State *L, pcl_val *v, int n) {
@@ -666,16 +609,13 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
         int idx = first + k;
         if (read_scalar(L, a, idx, &v[k])) continue;
         if (!fname) fname = d->callname ? pcl_name(L) : d->name;   /* the general reader */
-        if (a->kind != PCL_ANY && !room) {   /* lists and options push; a reader pushes little */
-            luaL_checkstack(L, 24, NULL);
-            room = 1;
-        }
+        make_room(L, a, &room);
         ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         if (a->kind == PCL_OPTIONS) {
             v[k].idx = idx;
             v[k].present = lua_istable(L, idx);
             read_options(L, &c, a, idx, v + slot);
-            for (const pcl_arg *kk = a->keys; kk->name; kk++) slot++;
+            slot += nvalues(a) - 1;
         } else {
             read_value(L, &c, a, idx, &v[k]);
         }
@@ -727,10 +667,7 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
             y = (a->flags & PCL_PAIR) != 0;
             continue;
         }
-        if (a->kind != PCL_ANY && !room) {   /* as pcl_read: a reader (the colour) pushes little */
-            luaL_checkstack(L, 24, NULL);
-            room = 1;
-        }
+        make_room(L, a, &room);
         if (a->kind == PCL_OPTIONS) {
             ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
             v[k].idx = opts;
@@ -764,10 +701,8 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
 /* The text of one argument in a signature: its name, an enum's choices, an option table's keys. */
 static void add_arg(luaL_Buffer *b, lua_State *L, const pcl_arg *a) {
     if (a->kind == PCL_ENUM) {
-        for (int i = 0; a->choices[i]; i++) {
-            lua_pushfstring(L, "%s\"%s\"", i ? "|" : "", a->choices[i]);
-            luaL_addvalue(b);
-        }
+        push_list(L, a->choices, "\"%s\"", "|", "|");
+        luaL_addvalue(b);
         return;
     }
     if (a->kind != PCL_OPTIONS) {
@@ -776,16 +711,10 @@ static void add_arg(luaL_Buffer *b, lua_State *L, const pcl_arg *a) {
     }
     luaL_addchar(b, '{');
     for (const pcl_arg *k = a->keys; k->name; k++) {
-        if (k != a->keys) luaL_addstring(b, ", ");
-        luaL_addstring(b, k->name);
-        luaL_addstring(b, " =");
-        if (k->kind == PCL_ENUM) {
-            luaL_addchar(b, ' ');
-            add_arg(b, L, k);
-        } else if (k->shown) {
-            luaL_addchar(b, ' ');
-            luaL_addstring(b, k->shown);
-        }
+        lua_pushfstring(L, "%s%s =%s", k == a->keys ? "" : ", ", k->name, k->kind == PCL_ENUM || k->shown ? " " : "");
+        luaL_addvalue(b);
+        if (k->kind == PCL_ENUM) add_arg(b, L, k);
+        else if (k->shown) luaL_addstring(b, k->shown);
     }
     luaL_addchar(b, '}');
 }
@@ -796,27 +725,18 @@ static void push_signature(lua_State *L, const pcl_fn *d) {
     luaL_buffinit(L, &b);
     luaL_addstring(&b, d->name);
     const pcl_arg *a = d->args;
-    if (a && a->kind == PCL_OPTIONS && (a->flags & PCL_CALLTABLE)) {
+    int calltable = a && a->kind == PCL_OPTIONS && (a->flags & PCL_CALLTABLE), open = 0;
+    if (!calltable) luaL_addchar(&b, '(');
+    for (int k = 0; a && a->kind; a++, k++) {
+        int opt = !calltable && (a->flags & PCL_OPT);
+        luaL_addstring(&b, opt ? (k ? " [, " : "[") : k ? ", " : "");
+        open += opt;
         add_arg(&b, L, a);
-    } else {
-        luaL_addchar(&b, '(');
-        int open = 0, k = 0;
-        for (; a && a->kind; a++, k++) {
-            if (a->flags & PCL_OPT) {
-                luaL_addstring(&b, k ? " [, " : "[");
-                open++;
-            } else if (k) {
-                luaL_addstring(&b, ", ");
-            }
-            add_arg(&b, L, a);
-        }
-        while (open--) luaL_addchar(&b, ']');
-        luaL_addchar(&b, ')');
     }
-    if (d->result) {
-        luaL_addstring(&b, " -> ");
-        luaL_addstring(&b, d->result);
-    }
+    while (open--) luaL_addchar(&b, ']');
+    if (!calltable) luaL_addchar(&b, ')');
+    luaL_addstring(&b, d->result ? " -> " : "");
+    luaL_addstring(&b, d->result ? d->result : "");
     luaL_pushresult(&b);
 }
 
@@ -856,10 +776,11 @@ void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
     b->self = PCL_SELF_TAG(b, &BOX_TAG);
     b->d = d;
     b->nargs = nargs_of(d);
-    b->nvalues = nvalues(d->args);
-    b->first_pair = 0;
-    for (int k = 0; k < b->nargs && !b->first_pair; k++)
-        if (d->args[k].flags & PCL_PAIR) b->first_pair = k + 1;
+    b->nvalues = b->first_pair = 0;
+    for (int k = 0; k < b->nargs; k++) {
+        b->nvalues += nvalues(&d->args[k]);
+        if ((d->args[k].flags & PCL_PAIR) && !b->first_pair) b->first_pair = k + 1;
+    }
     box_metatable(L);
     lua_setmetatable(L, -2);
     lua_insert(L, -1 - nup);                 /* the declaration is upvalue 1 */

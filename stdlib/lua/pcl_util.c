@@ -1,48 +1,45 @@
 /* Argument checking shared by all bindings: the house error style
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
-#include <math.h>
 #include <stdarg.h>
-#include <stdio.h>
 #include <string.h>
+#include "names.h"
 #include "pcl_args.h"
 
-/* The global name of the function at the top ("label", "qb.rnd"), looked up in _G and its
- * tables, or NULL; pops the function.  Only for a function Lua cannot name: pcall(label, 5). */
-static const char *global_name(lua_State *L) {
-    int f = lua_gettop(L);
-    const char *found = NULL;
-    lua_pushglobaltable(L);
+/* The string key under which the table at t holds the value at f, or NULL (the table keeps the
+ * string alive). */
+static const char *key_of(lua_State *L, int t, int f) {
     lua_pushnil(L);
-    while (lua_next(L, f + 1)) {           /* a global first: label, not pointcalc.label */
+    while (lua_next(L, t)) {
         if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f)) {
-            found = lua_tostring(L, -2);   /* a key of _G, which keeps it alive */
-            lua_settop(L, f - 1);
-            return found;
+            const char *key = lua_tostring(L, -2);
+            lua_pop(L, 2);
+            return key;
         }
         lua_pop(L, 1);
     }
-    lua_pushnil(L);
-    while (!found && lua_next(L, f + 1)) {
-        if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f)) {
-            found = lua_pushfstring(L, "%s", lua_tostring(L, -2));
-        } else if (lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TTABLE &&
-                   strcmp(lua_tostring(L, -2), "_G") && strcmp(lua_tostring(L, -2), "package")) {
-            lua_pushnil(L);
-            while (!found && lua_next(L, -2)) {
-                if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f))
-                    found = lua_pushfstring(L, "%s.%s", lua_tostring(L, -4), lua_tostring(L, -2));
-                else lua_pop(L, 1);
-            }
-            if (found) break;
-        }
-        if (!found) lua_pop(L, 1);
-    }
-    if (!found) {
+    return NULL;
+}
+
+/* The global name of the function at the top ("label", "qb.rnd"), looked up in _G and its
+ * tables, or NULL; pops the function (a "qb.rnd" takes its place).  Only for a function Lua
+ * cannot name: pcall(label, 5). */
+static const char *global_name(lua_State *L) {
+    int f = lua_gettop(L), g = f + 1;
+    lua_pushglobaltable(L);
+    const char *found = key_of(L, g, f);   /* a global first: label, not pointcalc.label */
+    if (found) {
         lua_settop(L, f - 1);
-        return NULL;
+        return found;
     }
-    lua_replace(L, f);                      /* keep the name where the function was */
-    lua_settop(L, f);
+    lua_pushnil(L);
+    while (!found && lua_next(L, g)) {
+        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "_G";
+        const char *inner = lua_istable(L, -1) && strcmp(k, "_G") && strcmp(k, "package") ? key_of(L, g + 2, f) : NULL;
+        if (inner) found = lua_pushfstring(L, "%s.%s", k, inner);
+        else lua_pop(L, 1);
+    }
+    if (found) lua_replace(L, f);          /* keep the name where the function was */
+    lua_settop(L, found ? f : f - 1);
     return found;
 }
 
@@ -84,17 +81,18 @@ const char *pcl_shown(lua_State *L, int idx) {
     return luaL_typename(L, idx);
 }
 
-int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
-                      const char *expected) {
+/* "FNAME: FIELD must be EXPECTED, got VALUE", the value at idx. */
+static int field_error(lua_State *L, const char *fname, const char *field, const char *expected, int idx) {
     const char *value = pcl_shown(L, idx);
-    const char *arg = shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
-    if (what && what[0])
-        return pcl_error(L, "%s: %s (%s) must be %s, got %s", fname, arg, what, expected, value);
-    return pcl_error(L, "%s: %s must be %s, got %s", fname, arg, expected, value);
+    return pcl_error(L, "%s: %s must be %s, got %s", fname, field, expected, value);
 }
 
-int pcl_argerror(lua_State *L, int arg, const char *what, const char *expected) {
-    return pcl_argerror_full(L, pcl_fname(L), arg, pcl_arg_shown(L, arg), what, expected);
+int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
+                      const char *expected) {
+    idx = lua_absindex(L, idx);
+    const char *arg = shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+    if (what && what[0]) arg = lua_pushfstring(L, "%s (%s)", arg, what);
+    return field_error(L, fname, arg, expected, idx);
 }
 
 /* Push "file:line: " of the code the error belongs to: the innermost Lua function that is not
@@ -138,9 +136,7 @@ void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type) {
 
 const char *pcl_pushnum(lua_State *L, double x) {
     char buf[40];
-    if (x == 0) x = 0;   /* no "-0" */
-    snprintf(buf, sizeof buf, "%.14g", x);
-    return lua_pushstring(L, buf);
+    return lua_pushstring(L, pc_num_text(x, buf, sizeof buf));
 }
 
 int pcl_statuserror(lua_State *L, const char *fname, int status, const char *context) {
@@ -206,18 +202,14 @@ static int tk_shown(lua_State *L) {
  * got VALUE" at the user's line */
 static int tk_argerror(lua_State *L) {
     lua_settop(L, 5);
-    const char *value = pcl_shown(L, 5);
-    return pcl_error(L, "%s: argument #%d (%s) must be %s, got %s", luaL_checkstring(L, 1),
-                     (int)luaL_checkinteger(L, 2), luaL_checkstring(L, 3), luaL_checkstring(L, 4),
-                     value);
+    const char *arg = lua_pushfstring(L, "argument #%d (%s)", (int)luaL_checkinteger(L, 2), luaL_checkstring(L, 3));
+    return field_error(L, luaL_checkstring(L, 1), arg, luaL_checkstring(L, 4), 5);
 }
 
 /* _tk.fielderror(fname, field, expected, value): "FNAME: FIELD must be EXPECTED, got VALUE" */
 static int tk_fielderror(lua_State *L) {
     lua_settop(L, 4);
-    const char *value = pcl_shown(L, 4);
-    return pcl_error(L, "%s: %s must be %s, got %s", luaL_checkstring(L, 1),
-                     luaL_checkstring(L, 2), luaL_checkstring(L, 3), value);
+    return field_error(L, luaL_checkstring(L, 1), luaL_checkstring(L, 2), luaL_checkstring(L, 3), 4);
 }
 
 /* _tk.global_hint(msg): "(did you mean 'label'?)" for a misspelt global, or nil (the REPL) */
