@@ -28,7 +28,8 @@ static const char BOX_TAG = 'd';
 /* The declaration block at idx, or NULL: its size and its tag, which a script cannot forge. */
 static const decl_box *to_box(lua_State *L, int idx) {
     const decl_box *b = lua_touserdata(L, idx);
-    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b && b->self == PCL_SELF_TAG(b, &BOX_TAG))
+    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b &&
+        b->self == PCL_SELF_TAG(b, &BOX_TAG))
         return b;
     return NULL;
 }
@@ -94,8 +95,7 @@ static int vfail(lua_State *L, const char *prefix, const char *fmt, va_list ap) 
 int pcl_fail(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    const char *prefix = lua_pushfstring(L, "%s: ", pcl_name(L));
-    return vfail(L, prefix, fmt, ap);
+    return vfail(L, lua_pushfstring(L, "%s: ", pcl_name(L)), fmt, ap);
 }
 
 /* A plain function called with a colon (p:dist(B), a value's method table holds it): the
@@ -117,15 +117,13 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
     const pcl_fn *d = current(L);
     va_list ap;
     va_start(ap, fmt);
-    const char *prefix = lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, d->args[k - 1].name));
-    return vfail(L, prefix, fmt, ap);
+    return vfail(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, d->args[k - 1].name)), fmt, ap);
 }
 
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    const char *prefix = lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key);
-    return vfail(L, prefix, fmt, ap);
+    return vfail(L, lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key), fmt, ap);
 }
 
 void pcl_point_rows(const pcl_val *a, int k, int n, double *out) {
@@ -144,7 +142,8 @@ void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc) 
         if (i == 1 && !ncols && (len < 2 || len > max))
             pcl_argfail(L, k, "row [1] holds %d numbers; a matrix here has 2..%d columns", len, max);
         if (i == 1) cols = len;
-        if (len != cols) pcl_argfail(L, k, "row [%d] holds %d numbers, row [1] %d: the rows must be of one length", i, len, cols);
+        if (len != cols)
+            pcl_argfail(L, k, "row [%d] holds %d numbers, row [1] %d: the rows must be of one length", i, len, cols);
         for (int j = 1; j <= cols; j++) {
             lua_geti(L, -1, j);
             double v = lua_tonumber(L, -1);
@@ -228,9 +227,7 @@ static const char *shown(lua_State *L, int idx) {
 
 /* "NAME: WHERE must be EXPECTED, got VALUE[; HINT]" */
 static int mismatch_hint(lua_State *L, const ctx *c, int idx, const char *expected, const char *hint) {
-    const char *value = shown(L, idx);
-    const char *w = where(L, c);
-    return pcl_error(L, "%s: %s must be %s, got %s%s%s", c->fname, w, expected, value,
+    return pcl_error(L, "%s: %s must be %s, got %s%s%s", c->fname, where(L, c), expected, shown(L, idx),
                      hint ? "; " : "", hint ? hint : "");
 }
 static int mismatch(lua_State *L, const ctx *c, int idx, const char *expected) {
@@ -381,7 +378,8 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     /* points, values, vectors: the declared dimension (vectors: or the one PCL_SAMEDIM knows,
      * "[2] must be a 2-D vector"), else the first one's for all; values keep their weights
      * (rows of d + 1) */
-    static const pcl_kind item_kind[] = {[PCL_POINTS] = PCL_POINT, [PCL_VALUES] = PCL_VALUE, [PCL_VECTORS] = PCL_VECTOR};
+    static const pcl_kind item_kind[] = {[PCL_POINTS] = PCL_POINT, [PCL_VALUES] = PCL_VALUE,
+                                         [PCL_VECTORS] = PCL_VECTOR};
     int known = a->dim ? a->dim : a->kind == PCL_VECTORS && (a->flags & PCL_SAMEDIM) && c->dim ? c->dim->n : 0;
     pcl_arg pt = {.name = a->name, .kind = item_kind[a->kind], .dim = known,
                   .expect = a->kind == PCL_VALUES ? "a point" : NULL};
@@ -546,14 +544,11 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
         int t = table ? lua_getfield(L, idx, kc.key) : LUA_TNIL;
         if (!table) lua_pushnil(L);
         if (table && !strcmp(kc.key, "color")) {      /* colour = is the same option */
-            if (lua_getfield(L, idx, "colour") != LUA_TNIL) {
-                if (t != LUA_TNIL)
-                    pcl_error(L, "%s: options 'color' and 'colour' are one option: give one", c->fname);
-                kc.key = "colour";
-                lua_remove(L, -2);
-            } else {
-                lua_pop(L, 1);
-            }
+            int given = lua_getfield(L, idx, "colour") != LUA_TNIL;
+            if (given && t != LUA_TNIL)
+                pcl_error(L, "%s: options 'color' and 'colour' are one option: give one", c->fname);
+            if (given) kc.key = "colour";
+            lua_remove(L, given ? -2 : -1);
         }
         int top = lua_gettop(L);
         read_value(L, &kc, &a->keys[k], top, &v[k]);
@@ -625,7 +620,8 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
 
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out) {
     const pcl_fn *d = current(L);
-    const char *name = a->name ? a->name : shown >= 1 && d->args && shown <= nargs_of(d) ? d->args[shown - 1].name : NULL;
+    const char *name = a->name;
+    if (!name && shown >= 1 && d->args && shown <= nargs_of(d)) name = d->args[shown - 1].name;
     dimref dim = {dimdef, {pcl_name(L), item ? shown : 1, item ? name : NULL, NULL, item ? 1 : 0, NULL}};
     ctx c = {dim.who.fname, shown, name, NULL, item, &dim};
     read_value(L, &c, a, idx, out);

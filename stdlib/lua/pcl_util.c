@@ -83,8 +83,7 @@ const char *pcl_shown(lua_State *L, int idx) {
 
 /* "FNAME: FIELD must be EXPECTED, got VALUE", the value at idx. */
 static int field_error(lua_State *L, const char *fname, const char *field, const char *expected, int idx) {
-    const char *value = pcl_shown(L, idx);
-    return pcl_error(L, "%s: %s must be %s, got %s", fname, field, expected, value);
+    return pcl_error(L, "%s: %s must be %s, got %s", fname, field, expected, pcl_shown(L, idx));
 }
 
 int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
@@ -221,9 +220,8 @@ static int tk_global_hint(lua_State *L) {
 void pcl_open_errors(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
-    static const luaL_Reg fns[] = {{"raise", tk_raise}, {"shown", tk_shown},
-                                   {"argerror", tk_argerror}, {"fielderror", tk_fielderror}, {"global_hint", tk_global_hint},
-                                   {NULL, NULL}};
+    static const luaL_Reg fns[] = {{"raise", tk_raise}, {"shown", tk_shown}, {"argerror", tk_argerror},
+                                   {"fielderror", tk_fielderror}, {"global_hint", tk_global_hint}, {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
     lua_settop(L, module);
 }
