@@ -414,11 +414,11 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
 /* The fast path of the common kinds: a number or integer that fits its declaration is read
  * here with a type test and the range tests, no message made; anything else (absent, of
  * another kind, out of range) goes to read_value, which reads it or words the message.  Only
- * an infinite or NaN number looks at PCL_INF. */
-static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out) {
+ * read_value (general) takes an infinite number for PCL_INF: the fast path tests isfinite alone. */
+static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out, int general) {
     if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
     double x = lua_tonumber(L, idx);
-    if (!isfinite(x) && !((a->flags & PCL_INF) && !isnan(x))) return 0;
+    if (!isfinite(x) && !(general && (a->flags & PCL_INF) && !isnan(x))) return 0;
     if (a->kind == PCL_INTEGER && x != floor(x)) return 0;
     if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
     if ((a->flags & PCL_POS) && !(x > 0)) return 0;
@@ -449,7 +449,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     }
     switch (a->kind) {
     case PCL_NUMBER: case PCL_INTEGER:
-        if (!read_scalar(L, a, idx, out)) mismatch(L, c, idx, expected(L, a));
+        if (!read_scalar(L, a, idx, out, 1)) mismatch(L, c, idx, expected(L, a));
         out->idx = c->key ? 0 : idx;
         return;
     case PCL_BOOLEAN:
@@ -573,14 +573,6 @@ static void check_count(lua_State *L, const decl_box *b, int n) {
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
 }
 
-/* Room on the stack for the general reader, once a call: lists and options push; a reader (the
- * colour) pushes little, and pset does not pay for the check. */
-static void make_room(lua_State *L, const pcl_arg *a, int *room) {
-    if (a->kind == PCL_ANY || *room) return;
-    luaL_checkstack(L, 24, NULL);
-    *room = 1;
-}
-
 void *pcl_read(lua_State *L, pcl_val *v, int n) {
     const decl_box *b = current_box(L);
     const pcl_fn *d = b->d;
@@ -602,15 +594,18 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     for (int k = 0; k < nargs; k++) {
         const pcl_arg *a = &d->args[k];
         int idx = first + k;
-        if (read_scalar(L, a, idx, &v[k])) continue;
+        if (read_scalar(L, a, idx, &v[k], 0)) continue;
         if (!fname) fname = d->callname ? pcl_name(L) : d->name;   /* the general reader */
-        make_room(L, a, &room);
+        if (a->kind != PCL_ANY && !room) {   /* lists and options push; a reader pushes little */
+            luaL_checkstack(L, 24, NULL);
+            room = 1;
+        }
         ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         if (a->kind == PCL_OPTIONS) {
             v[k].idx = idx;
             v[k].present = lua_istable(L, idx);
             read_options(L, &c, a, idx, v + slot);
-            slot += nvalues(a) - 1;
+            for (const pcl_arg *kk = a->keys; kk->name; kk++) slot++;
         } else {
             read_value(L, &c, a, idx, &v[k]);
         }
@@ -659,11 +654,14 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
     for (int k = 0, y = 0; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
         int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
-        if (slot <= limit && read_scalar(L, a, idx, &v[k])) {
+        if (slot <= limit && read_scalar(L, a, idx, &v[k], 0)) {
             y = (a->flags & PCL_PAIR) != 0;
             continue;
         }
-        make_room(L, a, &room);
+        if (a->kind != PCL_ANY && !room) {   /* as pcl_read: a reader (the colour) pushes little */
+            luaL_checkstack(L, 24, NULL);
+            room = 1;
+        }
         if (a->kind == PCL_OPTIONS) {
             ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
             v[k].idx = opts;
