@@ -9,7 +9,6 @@
 #include "pcl_curve.h"
 #include "pcl_point.h"
 
-#define DECL_KEY "pointcalc.decl"      /* registry: name -> {sig =, desc =} */
 #define MAXLIST 100000                 /* no list of a binding is longer */
 
 /* ---- the running declaration ------------------------------------------------------------- */
@@ -433,6 +432,10 @@ static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *
 
 static const ctx *reading;   /* the value a binding's reader is reading (pcl_readfail) */
 
+/* The kinds that are a Lua type. */
+static const int LUA_TYPE_OF[] = {[PCL_BOOLEAN] = LUA_TBOOLEAN, [PCL_STRING] = LUA_TSTRING,
+                                  [PCL_FUNCTION] = LUA_TFUNCTION, [PCL_TABLE] = LUA_TTABLE};
+
 /* One value at idx as the argument (or option key) a describes. */
 static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_val *out) {
     int t = lua_type(L, idx);
@@ -452,13 +455,10 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         if (!read_scalar(L, a, idx, out, 1)) mismatch(L, c, idx, expected(L, a));
         out->idx = c->key ? 0 : idx;
         return;
-    case PCL_BOOLEAN:
-        if (t != LUA_TBOOLEAN) mismatch(L, c, idx, expected(L, a));
-        out->x = lua_toboolean(L, idx);
-        return;
-    case PCL_STRING:
-        if (t != LUA_TSTRING) mismatch(L, c, idx, expected(L, a));
-        out->s = lua_tostring(L, idx);
+    case PCL_BOOLEAN: case PCL_STRING: case PCL_FUNCTION: case PCL_TABLE:
+        if (t != LUA_TYPE_OF[a->kind]) mismatch(L, c, idx, expected(L, a));
+        if (a->kind == PCL_BOOLEAN) out->x = lua_toboolean(L, idx);
+        if (a->kind == PCL_STRING) out->s = lua_tostring(L, idx);
         return;
     case PCL_ENUM:
         if (t == LUA_TSTRING)
@@ -489,14 +489,8 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     case PCL_MAP:
         if (!(out->obj = pcl_tomap(L, idx))) mismatch(L, c, idx, expected(L, a));
         return;
-    case PCL_FUNCTION:
-        if (t != LUA_TFUNCTION) mismatch(L, c, idx, expected(L, a));
-        return;
     case PCL_CALLABLE:
         if (!pcl_callable(L, idx)) mismatch(L, c, idx, expected(L, a));
-        return;
-    case PCL_TABLE:
-        if (t != LUA_TTABLE) mismatch(L, c, idx, expected(L, a));
         return;
     case PCL_ANY: {
         const ctx *outer = reading;
@@ -735,7 +729,7 @@ static void push_signature(lua_State *L, const pcl_fn *d) {
 }
 
 static void record(lua_State *L, const pcl_fn *d) {
-    luaL_getsubtable(L, LUA_REGISTRYINDEX, DECL_KEY);
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, PCL_DECL_KEY);
     lua_createtable(L, 0, 3);
     if (d->sig) {                                    /* forms, one per line */
         lua_newtable(L);
@@ -823,11 +817,6 @@ void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homog
         }
         lua_rawseti(L, -2, i + 1);
     }
-}
-
-/* Push the registry of declarations (for pointcalc._decl). */
-void pcl_push_decls(lua_State *L) {
-    luaL_getsubtable(L, LUA_REGISTRYINDEX, DECL_KEY);
 }
 
 /* ---- misspelt globals ----------------------------------------------------------------------- */

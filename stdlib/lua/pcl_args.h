@@ -1,14 +1,9 @@
 /* The declared argument layer: a binding declares each function once (the name as the user
  * writes it, the C function, its arguments, its result and its help line) and reads all its
- * arguments with one call.  The same declaration gives :help, docs/api.md and every message:
- *   NAME: argument #N (WHAT) must be EXPECTED, got VALUE
- *   NAME: option 'KEY' must be EXPECTED, got VALUE
- *   NAME: unknown option 'colr' (did you mean 'color'?)
- *   NAME: argument #1 (points) [3] must be a 2-D point, got V(1, 2)
- *   NAME: argument #1 (points) must hold 2 to 64 points, got 66
- *   NAME: argument #2 (B) is 3-D, but argument #1 (A) is 2-D (mixed dimensions)
- * One weight rule for every location (point.h, PC_WEIGHT_TOL): |w - 1| <= 1e-9 is a point,
- * |w| <= 1e-9 a direction.  docs/bindings.md is the guide; l_korotky.c a model. */
+ * arguments with one call.  The same declaration gives :help, docs/api.md and every message
+ * ("NAME: argument #N (WHAT) must be EXPECTED, got VALUE"), with one weight rule for every
+ * location (point.h, PC_WEIGHT_TOL).  docs/bindings.md is the guide (the kinds, the messages,
+ * registration); l_korotky.c a model. */
 #ifndef PCL_ARGS_H
 #define PCL_ARGS_H
 
@@ -148,7 +143,7 @@ void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *keys);
 void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v);
 #define A_X(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_PAIR}
 
-/* The running function's declared name; its stack index of argument #k. */
+/* The running function's declared name (a __call's: the variable called, when Lua knows it). */
 const char *pcl_name(lua_State *L);
 /* "NAME: MESSAGE" at the user's line. */
 int pcl_fail(lua_State *L, const char *fmt, ...);
@@ -194,9 +189,9 @@ int pcl_snap_weight(int n, double *h);
 /* Refuse debug.setupvalue(f, 1, x) of a declared function f (its upvalue 1 is its declaration,
  * which the layer trusts without asking Lua which function runs): luaopen_pointcalc calls it. */
 void pcl_guard_upvalues(lua_State *L);
-/* Push the registry of declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: the module's
- * _decl, which interp/help.lua reads. */
-void pcl_push_decls(lua_State *L);
+/* The registry's table of declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: the
+ * module's _decl, which interp/help.lua reads. */
+#define PCL_DECL_KEY "pointcalc.decl"
 /* Push and return "(did you mean 'label'?)" for an error message about a nil global near a
  * global's name, else NULL: one hint for scripts, -e chunks and the REPL (_tk.global_hint). */
 const char *pcl_global_hint(lua_State *L, const char *msg);

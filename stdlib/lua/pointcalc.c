@@ -20,7 +20,7 @@ static void run_lua_helpers(lua_State *L) {
 int luaopen_pointcalc(lua_State *L) {
     lua_newtable(L);
     PCL_MODULES(PCL_CALL_OPEN)
-    pcl_push_decls(L);            /* the declarations, for interp/help.lua */
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, PCL_DECL_KEY);   /* the declarations, for interp/help.lua */
     lua_setfield(L, -2, "_decl");
     pcl_guard_upvalues(L);        /* debug.setupvalue cannot swap a declaration */
     run_lua_helpers(L);
