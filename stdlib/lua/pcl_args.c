@@ -99,11 +99,7 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
 
 /* A plain function called with a colon (p:dist(B), a value's method table holds it): the
  * receiver is "self" and the arguments count after it, as the user wrote them. */
-static int colon_call(lua_State *L) {
-    lua_Debug ar;
-    return !current(L)->self && lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) &&
-           ar.namewhat && !strcmp(ar.namewhat, "method");
-}
+static int colon_call(lua_State *L) { return !current(L)->self && pcl_arg_shown(L, 1) == 0; }
 
 static const char *arg_label(lua_State *L, int shown, const char *name) {
     if (colon_call(L) && --shown == 0)
@@ -173,7 +169,7 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
     return best;   /* a key of the table, which keeps the string alive */
 }
 
-/* ---- weights ----------------------------------------------------------------------------- */
+/* ---- weights, callables, lists of numbers ------------------------------------------------ */
 
 int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
@@ -574,10 +570,9 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     int first = 1, nargs = b->nargs;
     if (d->self) {
         self = d->self(L, 1);
-        if (!self) {
+        if (!self)
             pcl_error(L, "%s: must be called on %s %s, as %s(...)", d->name,
                       strchr("aeiou", d->selftype[0]) ? "an" : "a", d->selftype, d->topic ? d->topic : d->name);
-        }
         first = 2;
     }
     check_count(L, b, n);
