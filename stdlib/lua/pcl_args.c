@@ -728,13 +728,11 @@ static void record(lua_State *L, const pcl_fn *d) {
     lua_createtable(L, 0, 3);
     if (d->sig) {                                    /* forms, one per line */
         lua_newtable(L);
-        int i = 0;
         for (const char *s = d->sig; *s;) {
-            const char *e = strchr(s, '\n');
-            size_t len = e ? (size_t)(e - s) : strlen(s);
+            size_t len = strcspn(s, "\n");
             lua_pushlstring(L, s, len);
-            lua_rawseti(L, -2, ++i);
-            s += len + (e != NULL);
+            lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
+            s += len + (s[len] == '\n');
         }
     } else {
         push_signature(L, d);
