@@ -2,9 +2,7 @@
  * arguments, one wording of every message, and the registry of declarations :help reads. */
 #include <math.h>
 #include <stdarg.h>
-#include <stdio.h>
 #include <string.h>
-#include "names.h"
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
@@ -170,8 +168,6 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
 }
 
 /* ---- weights, callables, lists of numbers ------------------------------------------------ */
-
-int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
 int pcl_callable(lua_State *L, int idx) {
     if (lua_isfunction(L, idx)) return 1;

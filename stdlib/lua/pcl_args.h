@@ -8,6 +8,7 @@
 #define PCL_ARGS_H
 
 #include "pcl.h"
+#include "names.h"
 #include "point.h"
 
 typedef enum {
@@ -163,7 +164,7 @@ void pcl_point_rows(const pcl_val *a, int k, int n, double *out);
 void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc);
 
 /* The nearest of the candidates (NULL-ended) to name by edit distance (a swap of neighbours is
- * one edit), or NULL if none is near enough to suggest. */
+ * one edit), or NULL if none is near enough to suggest (names.h). */
 const char *pcl_nearest(const char *name, const char *const *candidates);
 /* The same over the string keys of the table at idx. */
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
@@ -184,7 +185,7 @@ void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const 
 
 /* One weight rule: PC_KIND_POINT, PC_KIND_VECTOR or PC_KIND_WEIGHTED, with the weight in h[n]
  * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
-int pcl_snap_weight(int n, double *h);
+static inline int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
 /* Refuse debug.setupvalue(f, 1, x) of a declared function f (its upvalue 1 is its declaration,
  * which the layer trusts without asking Lua which function runs): luaopen_pointcalc calls it. */

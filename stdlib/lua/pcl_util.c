@@ -2,7 +2,6 @@
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
 #include <stdarg.h>
 #include <string.h>
-#include "names.h"
 #include "pcl_args.h"
 
 /* The string key under which the table at t holds the value at f, or NULL (the table keeps the
