@@ -354,12 +354,11 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     if (a->kind == PCL_NUMBERS) {
         double *x = list_buffer(L, out, (size_t)m);
         if (!x) luaL_error(L, "%s: %d numbers do not fit the binding's buffer", c->fname, m);
-        pcl_arg num = {.name = a->name, .kind = PCL_NUMBER};
         for (int i = 1; i <= m; i++) {
             lua_geti(L, idx, i);
             e.item = i;
             if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                mismatch(L, &e, lua_gettop(L), expected(L, &num));
+                mismatch(L, &e, lua_gettop(L), "a finite number");
             x[i - 1] = lua_tonumber(L, -1);
             lua_pop(L, 1);
         }
