@@ -192,22 +192,6 @@ int pc_point_fn_text(int op, int st, int n, const double *const v[4], double x, 
 
 /* ---- the operators -------------------------------------------------------------------------- */
 
-int pc_value_arith(int op, int n, const double *a, const double *b, double k, double *out) {
-    if ((op == '*' || op == '/') && !isfinite(k)) return PC_ENONFINITE;
-    if (op == '/' && k == 0) return PC_EZERO;
-    switch (op) {
-    case '+': for (int i = 0; i <= n; i++) out[i] = a[i] + b[i]; break;
-    case '-': for (int i = 0; i <= n; i++) out[i] = a[i] - b[i]; break;
-    case '*': for (int i = 0; i <= n; i++) out[i] = a[i] * k; break;
-    case '/': for (int i = 0; i <= n; i++) out[i] = a[i] / k; break;   /* the weight is divided too */
-    case 'u': for (int i = 0; i <= n; i++) out[i] = -a[i]; return PC_OK;
-    default: return PC_EARG;
-    }
-    for (int i = 0; i <= n; i++)
-        if (!isfinite(out[i])) return PC_ENONFINITE;
-    return PC_OK;
-}
-
 int pc_value_ratio(int n, const double *u, const double *v, double *r) {
     if (fabs(u[n]) > PC_WEIGHT_TOL || fabs(v[n]) > PC_WEIGHT_TOL) return PC_EWEIGHT;
     return pc_vec_ratio(n, u, v, r, NULL);
@@ -280,10 +264,10 @@ size_t pc_location_text(const char *ctx, int n, const double *h, char *buf, size
 }
 
 size_t pc_coord_text(int n, const double *h, int i, const char *key, char *buf, size_t size) {
-    char s[PC_MAXDIM * 24 + 32], ctx[PC_MAXDIM * 24 + 64];
+    char s[PC_MAXDIM * 24 + 32], ctx[sizeof s + 64];
     pc_value_text(n, h, s, sizeof s);
     if (i >= n) return put(buf, size, "%s is %d-D: it has no coordinate .%s", s, n, key);
-    if (key) snprintf(ctx, sizeof ctx, "reading .%s: the value %s", key, s);
+    if (key) snprintf(ctx, sizeof ctx, "reading .%.8s: the value %s", key, s);
     else snprintf(ctx, sizeof ctx, "reading p[%d]: the value %s", i + 1, s);
     return pc_location_text(ctx, n, h, buf, size);
 }

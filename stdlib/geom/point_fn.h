@@ -5,6 +5,7 @@
 #ifndef PC_POINT_FN_H
 #define PC_POINT_FN_H
 
+#include <math.h>
 #include <stddef.h>
 #include "point.h"
 
@@ -32,8 +33,23 @@ int pc_point_fn_text(int op, int st, int n, const double *const v[4], double x, 
 
 /* The operators on values h (n + 1 doubles): op '+' a + b, '-' a - b, '*' a k, '/' a / k, 'u' -a
  * (b is used by + and - only).  PC_ENONFINITE when k or the result is not finite (an overflow),
- * PC_EZERO for a division by 0. */
-int pc_value_arith(int op, int n, const double *a, const double *b, double k, double *out);
+ * PC_EZERO for a division by 0.  Inline: the operators are the hot path of every script. */
+static inline int pc_value_arith(int op, int n, const double *a, const double *b, double k, double *out) {
+    if ((op == '*' || op == '/') && !isfinite(k)) return PC_ENONFINITE;
+    if (op == '/' && k == 0) return PC_EZERO;
+    switch (op) {
+    case '+': for (int i = 0; i <= n; i++) out[i] = a[i] + b[i]; break;
+    case '-': for (int i = 0; i <= n; i++) out[i] = a[i] - b[i]; break;
+    case '*': for (int i = 0; i <= n; i++) out[i] = a[i] * k; break;
+    case '/': for (int i = 0; i <= n; i++) out[i] = a[i] / k; break;   /* the weight is divided too */
+    case 'u': for (int i = 0; i <= n; i++) out[i] = -a[i]; return PC_OK;
+    default: return PC_EARG;
+    }
+    for (int i = 0; i <= n; i++)
+        if (!isfinite(out[i])) return PC_ENONFINITE;
+    return PC_OK;
+}
+
 /* u / v of two values that are vectors (weights within 1e-9 of 0): the number r with u = r v
  * ((2.62)'s (T - A)/(T_C - A)).  PC_EWEIGHT for another weight, else as pc_vec_ratio. */
 int pc_value_ratio(int n, const double *u, const double *v, double *r);

@@ -143,7 +143,7 @@ static pc_operand operand(lua_State *L, int idx) {
 
 /* A + B, A - B, k*A, A*k, A/k and -A: weights add, so a point plus a vector is a point; u/v of
  * two parallel vectors is the number r with u = r v ((2.62)'s (T - A)/(T_C - A)). */
-static int arith(lua_State *L, int op, pcl_eq_op hook) {
+static inline int arith(lua_State *L, int op, pcl_eq_op hook) {
     pcl_value *a = topt(L, 1), *b = op == 'u' ? NULL : topt(L, 2), *p = a ? a : b;
     int fits, st = PC_OK, knum = lua_type(L, a ? 2 : 1) == LUA_TNUMBER;   /* the k of k*A, A*k, A/k */
     if (op == '+' || op == '-' || (op == '/' && b)) fits = a && b && a->n == b->n;
