@@ -1,10 +1,6 @@
-/* Binding of the smoothsteps (stdlib/geom/smooth.h): the table smooth with
- *   smooth.sine(t)  smooth.cubic(t)  smooth.power(n [, t])  smooth.half(n, m, t0 [, t])
- *   smooth.locus(n, m, t0)  smooth.clamp(t)  smooth.clamp_qb(t [, prev])
- * smooth.power(n) and smooth.half(n, m, t0) without t return a half-spline object g: g(t)
- * evaluates, g:deriv(t) is the slope, and g.n g.m g.t0 g.c1 g.c2 g.v (the junction ordinate
- * v(t0)) are its parameters.  The curve builders accept these objects, smooth.sine and
- * smooth.cubic as smoothsteps they evaluate natively. */
+/* Binding of the smoothsteps (stdlib/geom/smooth.h): the table smooth, and the half-spline object g
+ * of smooth.power(n) and smooth.half(n, m, t0) without t.  The curve builders accept these
+ * objects, smooth.sine and smooth.cubic as smoothsteps they evaluate natively (pcl_tk.h). */
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -102,29 +98,19 @@ static int l_half(lua_State *L) {
     return make(L, a[0].x, a[1].x, a[2].x, &a[3], 4);
 }
 
-static const pcl_arg locus_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_NUMIN("t0", 0, 1), PCL_END};
-static int l_locus(lua_State *L) {
+/* smooth.locus, smooth.clamp, smooth.clamp_qb (t finite, as smooth.clamp's: QBasic has no NaN) */
+static int numeric(lua_State *L, char op) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
-    lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
+    if (op == 'l') lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
+    else lua_pushnumber(L, op == 'c' ? pc_smooth_clamp(a[0].x) : pc_smooth_clamp_qb(a[0].x, a[1].x));
     return 1;
 }
-
-static int l_clamp(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_smooth_clamp(a[0].x));
-    return 1;
-}
-
-/* t finite, as smooth.clamp's (QBasic has no NaN) */
+static int l_locus(lua_State *L) { return numeric(L, 'l'); }
+static int l_clamp(lua_State *L) { return numeric(L, 'c'); }
+static int l_clamp_qb(lua_State *L) { return numeric(L, 'q'); }
+static const pcl_arg locus_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_NUMIN("t0", 0, 1), PCL_END};
 static const pcl_arg clamp_qb_args[] = {A_NUM("t"), A_NUMOPT("prev", 0, NULL), PCL_END};
-static int l_clamp_qb(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_smooth_clamp_qb(a[0].x, a[1].x));
-    return 1;
-}
 
 /* ---- the half-spline object ------------------------------------------------------------- */
 
@@ -150,18 +136,14 @@ static int hs_deriv(lua_State *L) {
     return 1;
 }
 
+/* g.n g.m g.t0 g.c1 g.c2 g.v (the junction ordinate v(t0)), then the methods */
 static int hs_index(lua_State *L) {
     pc_hspline *h = pcl_tohspline(L, 1);
     const char *k = lua_tostring(L, 2);
+    double x;
     if (!h || !k) return 0;
-    if (!strcmp(k, "n")) lua_pushnumber(L, h->n);
-    else if (!strcmp(k, "m")) lua_pushnumber(L, h->m);
-    else if (!strcmp(k, "t0")) lua_pushnumber(L, h->t0);
-    else if (!strcmp(k, "c1")) lua_pushnumber(L, h->c1);
-    else if (!strcmp(k, "c2")) lua_pushnumber(L, h->c2);
-    else if (!strcmp(k, "v")) lua_pushnumber(L, pc_hspline_eval(h, h->t0));
-    else if (!strcmp(k, "deriv")) lua_getfield(L, lua_upvalueindex(1), "deriv");
-    else return 0;
+    if (pc_hspline_field(h, k, &x)) lua_pushnumber(L, x);
+    else lua_getfield(L, lua_upvalueindex(1), k);
     return 1;
 }
 
