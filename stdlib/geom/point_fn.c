@@ -190,6 +190,15 @@ int pc_point_fn_text(int op, int st, int n, const double *const v[4], double x, 
     return 0;
 }
 
+int pc_near(int n, const double *a, const double *b, double eps) {
+    double scale = 1, d = 0;
+    for (int i = 0; i <= n; i++) {
+        scale = fmax(scale, fmax(fabs(a[i]), fabs(b[i])));
+        d = fmax(d, fabs(a[i] - b[i]));
+    }
+    return d <= eps * scale;
+}
+
 /* ---- the operators -------------------------------------------------------------------------- */
 
 int pc_value_ratio(int n, const double *u, const double *v, double *r) {

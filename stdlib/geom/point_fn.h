@@ -31,6 +31,10 @@ int pc_point_fn(int op, int n, const double *const v[4], double x, double *out, 
  * "argument #k (NAME) TEXT", or 0 when it is about the call. */
 int pc_point_fn_text(int op, int st, int n, const double *const v[4], double x, char *buf, size_t size);
 
+/* near(a, b, eps): the n + 1 doubles a and b (values; n = 0: two numbers) equal within eps
+ * relative to their size (at least 1): 1 or 0. */
+int pc_near(int n, const double *a, const double *b, double eps);
+
 /* The operators on values h (n + 1 doubles): op '+' a + b, '-' a - b, '*' a k, '/' a / k, 'u' -a
  * (b is used by + and - only).  PC_ENONFINITE when k or the result is not finite (an overflow),
  * PC_EZERO for a division by 0.  Inline: the operators are the hot path of every script. */

@@ -165,13 +165,9 @@ static inline int arith(lua_State *L, int op, pcl_eq_op hook) {
 }
 
 static int l_add(lua_State *L) { return arith(L, '+', PCL_EQ_ADD); }
-
 static int l_sub(lua_State *L) { return arith(L, '-', PCL_EQ_SUB); }
-
 static int l_mul(lua_State *L) { return arith(L, '*', PCL_EQ_MUL); }
-
 static int l_div(lua_State *L) { return arith(L, '/', PCL_EQ_DIV); }
-
 static int l_unm(lua_State *L) { return arith(L, 'u', PCL_EQ_UNM); }
 
 static int l_eq(lua_State *L) {
@@ -379,27 +375,16 @@ static int l_dot(lua_State *L) {
 }
 
 static int l_cross(lua_State *L) { return hooked(L, 2, PCL_EQ_CROSS, PC_FN_CROSS); }
-
 static int l_unit(lua_State *L) { return hooked(L, 1, PCL_EQ_UNIT, PC_FN_UNIT); }
-
 static int l_perp(lua_State *L) { return apply(L, PC_FN_PERP); }
-
 static int l_foot(lua_State *L) { return apply(L, PC_FN_FOOT); }
-
 static int l_sigma(lua_State *L) { return apply(L, PC_FN_SIGMA); }
-
 static int l_sr(lua_State *L) { return apply(L, PC_FN_SR); }
-
 static int l_divide(lua_State *L) { return apply(L, PC_FN_DIVIDE); }
-
 static int l_harmonic(lua_State *L) { return apply(L, PC_FN_HARMONIC); }
-
 static int l_cross_ratio(lua_State *L) { return apply(L, PC_FN_CROSS_RATIO); }
-
 static int l_volume(lua_State *L) { return apply(L, PC_FN_VOLUME); }
-
 static int l_normalize(lua_State *L) { return apply(L, PC_FN_NORMALIZE); }
-
 static int l_weight(lua_State *L) { return apply(L, PC_FN_WEIGHT); }
 
 /* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu
@@ -468,22 +453,16 @@ static const pcl_arg near_args[] = {A_ANY("a", NULL, NUM_OR_VALUE), A_ANY("b", N
                                      .dflt = 1e-9, .expect = "a non-negative number"}, PCL_END};
 static const pcl_arg near_value = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = NUM_OR_VALUE};
 static int l_near(lua_State *L) {
-    pcl_val a[3] = {0}, p, q;
+    pcl_val a[3] = {0}, p = {0}, q = {0};
     PCL_READ(L, a);
-    double eps = a[2].x;
     if (lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
-        double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2);
-        lua_pushboolean(L, fabs(x - y) <= eps * fmax(1.0, fmax(fabs(x), fabs(y))));
-        return 1;
+        p.v[0] = lua_tonumber(L, 1);
+        q.v[0] = lua_tonumber(L, 2);
+    } else {
+        pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
+        pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
     }
-    pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
-    pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
-    double scale = 1, d = 0;
-    for (int i = 0; i <= p.n; i++) {
-        scale = fmax(scale, fmax(fabs(p.v[i]), fabs(q.v[i])));
-        d = fmax(d, fabs(p.v[i] - q.v[i]));
-    }
-    lua_pushboolean(L, d <= eps * scale);
+    lua_pushboolean(L, pc_near(p.n, p.v, q.v, a[2].x));
     return 1;
 }
 

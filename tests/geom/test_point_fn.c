@@ -96,6 +96,15 @@ static void test_failures(void **state) {
     assert_string_equal(msg, "V(1, 2) has weight 0 (a vector, or a point at infinity), so it has no finite location");
 }
 
+static void test_near(void **state) {
+    (void)state;
+    assert_true(pc_near(0, (double[]){1}, (double[]){1 + 5e-10}, 1e-9));
+    assert_false(pc_near(0, (double[]){1}, (double[]){1 + 2e-9}, 1e-9));
+    assert_true(pc_near(0, (double[]){1e6}, (double[]){1e6 + 5e-4}, 1e-9));       /* relative to the size */
+    assert_true(pc_near(2, (double[]){1, 2, 1}, (double[]){1, 2 + 1e-10, 1}, 1e-9));
+    assert_false(pc_near(2, (double[]){1, 2, 1}, (double[]){1, 2, 0}, 1e-9));     /* P(1, 2) and V(1, 2) */
+}
+
 static void test_arith(void **state) {
     (void)state;
     double a[] = {1, 2, 1}, b[] = {3, -1, 0}, out[3], r = 0;
@@ -149,7 +158,7 @@ static void test_locations(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_numbers), cmocka_unit_test(test_values),
-                                       cmocka_unit_test(test_failures), cmocka_unit_test(test_arith),
+                                       cmocka_unit_test(test_failures), cmocka_unit_test(test_near), cmocka_unit_test(test_arith),
                                        cmocka_unit_test(test_arith_text), cmocka_unit_test(test_locations)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
