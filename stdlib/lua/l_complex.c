@@ -76,13 +76,9 @@ static int arith(lua_State *L, char op) {
 }
 
 static int c_add(lua_State *L) { return arith(L, '+'); }
-
 static int c_sub(lua_State *L) { return arith(L, '-'); }
-
 static int c_mul(lua_State *L) { return arith(L, '*'); }
-
 static int c_div(lua_State *L) { return arith(L, '/'); }
-
 static int c_pow(lua_State *L) { return arith(L, '^'); }
 
 static int c_unm(lua_State *L) {
@@ -120,13 +116,9 @@ static int zfn(lua_State *L, char op) {
 }
 
 static int c_conj(lua_State *L) { return zfn(L, 'c'); }
-
 static int c_abs(lua_State *L) { return zfn(L, 'a'); }
-
 static int c_arg(lua_State *L) { return zfn(L, 'g'); }
-
 static int c_exp(lua_State *L) { return zfn(L, 'e'); }
-
 static int c_point(lua_State *L) { return zfn(L, 'p'); }
 
 static int c_index(lua_State *L) {
