@@ -51,11 +51,9 @@ static void numbers(lua_State *L, int m, const char *label, double *x) {
     for (int i = 0; i < m; i++) {
         char what[24];
         pcl_arg num = {.kind = PCL_NUMBER, .name = label};
-        if (label) {                          /* the label only on the error path */
-            if (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2))) {
-                snprintf(what, sizeof what, "%s %d", label, i + 1);
-                num.name = what;
-            }
+        if (label && (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2)))) {
+            snprintf(what, sizeof what, "%s %d", label, i + 1);   /* the label only on the error path */
+            num.name = what;
         }
         pcl_val v;
         pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);
@@ -132,20 +130,15 @@ static int l_ratio(lua_State *L) {
 static int l_index(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "index: not a simplex");
-    if (lua_type(L, 2) == LUA_TNUMBER) {
-        int isint;
-        lua_Integer i = lua_tointegerx(L, 2, &isint);
-        if (isint && i >= 1 && i <= s->k + 1) {
-            pcl_value *r = pcl_newvalue(L, s->n);
-            memcpy(r->h, PC_SIMPLEX_V(s) + (i - 1) * s->n, sizeof(double) * (size_t)s->n);
-            r->h[s->n] = 1.0;
-            return 1;
-        }
-        lua_pushnil(L);
+    if (lua_type(L, 2) != LUA_TNUMBER) {
+        lua_pushvalue(L, 2);
+        lua_rawget(L, lua_upvalueindex(1));
         return 1;
     }
-    lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(1));
+    int isint;
+    lua_Integer i = lua_tointegerx(L, 2, &isint);
+    if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
+    else lua_pushnil(L);
     return 1;
 }
 
