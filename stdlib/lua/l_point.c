@@ -145,16 +145,16 @@ static pc_operand operand(lua_State *L, int idx) {
  * two parallel vectors is the number r with u = r v ((2.62)'s (T - A)/(T_C - A)). */
 static inline int arith(lua_State *L, int op, pcl_eq_op hook) {
     pcl_value *a = topt(L, 1), *b = op == 'u' ? NULL : topt(L, 2), *p = a ? a : b;
-    int fits, st = PC_OK, knum = lua_type(L, a ? 2 : 1) == LUA_TNUMBER;   /* the k of k*A, A*k, A/k */
+    int fits, knum = lua_type(L, a ? 2 : 1) == LUA_TNUMBER;   /* the k of k*A, A*k, A/k */
     if (op == '+' || op == '-' || (op == '/' && b)) fits = a && b && a->n == b->n;
     else if (op == 'u') fits = a != NULL;
     else fits = (op == '*' ? p != NULL : a && !b) && !(a && b) && knum;
     if (fits && op == '/' && b) {
         double r;
-        if ((st = pc_value_ratio(a->n, a->h, b->h, &r)) == PC_OK) return push_num(L, r);
+        if (pc_value_ratio(a->n, a->h, b->h, &r) == PC_OK) return push_num(L, r);
     } else if (fits) {
         pcl_value *r = newpt(L, p->n);
-        if ((st = pc_value_arith(op, p->n, p->h, b ? b->h : NULL, lua_tonumber(L, a ? 2 : 1), r->h)) == PC_OK) return 1;
+        if (pc_value_arith(op, p->n, p->h, b ? b->h : NULL, lua_tonumber(L, a ? 2 : 1), r->h) == PC_OK) return 1;
     } else if (pcl_eq_hook(L, hook)) {
         return 1;
     }
