@@ -76,13 +76,27 @@ int pc_point_fn(int op, int n, const double *const v[4], double x, double *out, 
     default:
         isvalue = 0;
         switch (op) {
-        case PC_FN_DIST: out[0] = pc_dist(n, v[0], v[1]); break;
-        case PC_FN_NORM: out[0] = pc_norm(n, v[0]); break;
-        case PC_FN_DOT: out[0] = pc_dot(n, v[0], v[1]); break;
-        case PC_FN_SIGMA: out[0] = pc_sigma(n, v[0], v[1], v[2]); break;
-        case PC_FN_SR: st = pc_sr(n, v[0], v[1], v[2], out); break;
-        case PC_FN_CROSS_RATIO: st = pc_cross_ratio(n, v[0], v[1], v[2], v[3], out); break;
-        case PC_FN_WEIGHT: out[0] = v[0][n]; break;
+        case PC_FN_DIST:
+            out[0] = pc_dist(n, v[0], v[1]);
+            break;
+        case PC_FN_NORM:
+            out[0] = pc_norm(n, v[0]);
+            break;
+        case PC_FN_DOT:
+            out[0] = pc_dot(n, v[0], v[1]);
+            break;
+        case PC_FN_SIGMA:
+            out[0] = pc_sigma(n, v[0], v[1], v[2]);
+            break;
+        case PC_FN_SR:
+            st = pc_sr(n, v[0], v[1], v[2], out);
+            break;
+        case PC_FN_CROSS_RATIO:
+            st = pc_cross_ratio(n, v[0], v[1], v[2], v[3], out);
+            break;
+        case PC_FN_WEIGHT:
+            out[0] = v[0][n];
+            break;
         case PC_FN_VOLUME:
             if (n < 3) return PC_EDIM;
             for (int j = 0; j < 4; j++) memcpy(e + j * n, v[j], sizeof(double) * (size_t)n);
@@ -109,9 +123,15 @@ int pc_point_fn(int op, int n, const double *const v[4], double x, double *out, 
 
 static int ratio_text(int st, char *buf, size_t size) {
     switch (st) {
-    case PC_ECOINCIDENT: put(buf, size, "the points coincide, so the ratio is undefined"); break;
-    case PC_ENOTCOLLINEAR: put(buf, size, "the points are not collinear"); break;
-    case PC_EZERO: put(buf, size, "a point at infinity with a zero direction"); break;
+    case PC_ECOINCIDENT:
+        put(buf, size, "the points coincide, so the ratio is undefined");
+        break;
+    case PC_ENOTCOLLINEAR:
+        put(buf, size, "the points are not collinear");
+        break;
+    case PC_EZERO:
+        put(buf, size, "a point at infinity with a zero direction");
+        break;
     default: put(buf, size, "%s", pc_strerror(st));
     }
     return 0;

@@ -42,11 +42,21 @@ static inline int pc_value_arith(int op, int n, const double *a, const double *b
     if ((op == '*' || op == '/') && !isfinite(k)) return PC_ENONFINITE;
     if (op == '/' && k == 0) return PC_EZERO;
     switch (op) {
-    case '+': for (int i = 0; i <= n; i++) out[i] = a[i] + b[i]; break;
-    case '-': for (int i = 0; i <= n; i++) out[i] = a[i] - b[i]; break;
-    case '*': for (int i = 0; i <= n; i++) out[i] = a[i] * k; break;
-    case '/': for (int i = 0; i <= n; i++) out[i] = a[i] / k; break;   /* the weight is divided too */
-    case 'u': for (int i = 0; i <= n; i++) out[i] = -a[i]; return PC_OK;
+    case '+':
+        for (int i = 0; i <= n; i++) out[i] = a[i] + b[i];
+        break;
+    case '-':
+        for (int i = 0; i <= n; i++) out[i] = a[i] - b[i];
+        break;
+    case '*':
+        for (int i = 0; i <= n; i++) out[i] = a[i] * k;
+        break;
+    case '/': /* the weight is divided too */
+        for (int i = 0; i <= n; i++) out[i] = a[i] / k;
+        break;
+    case 'u':
+        for (int i = 0; i <= n; i++) out[i] = -a[i];
+        return PC_OK;
     default: return PC_EARG;
     }
     for (int i = 0; i <= n; i++)
