@@ -157,7 +157,8 @@ static int meet_text(int st, int n, const double *const v[4], char *buf, size_t 
         int bad_a = pc_meet_h(n, v[0], v[1], v[0], v[1], out, NULL, NULL, NULL) == st;
         const char *names = bad_a ? "A1 and A2" : "B1 and B2";
         if (v[bad_a ? 0 : 2][n] == 0)
-            put(buf, size, "%s are the same point at infinity (parallel directions), so they do not define a line", names);
+            put(buf, size, "%s are the same point at infinity (parallel directions), so they do not define a line",
+                names);
         else
             put(buf, size, "%s coincide, so they do not define a line", names);
         return 0;
@@ -264,7 +265,8 @@ size_t pc_arith_text(int op, const pc_operand *l, const pc_operand *r, char *buf
     case '*':
         if (!lp && !rp) return put(buf, size, "cannot multiply %s by %s", l->what, r->what);
         if (lp && rp)
-            return put(buf, size, "cannot multiply a point by a point: use dot(u, v) or cross(u, v) for products of vectors");
+            return put(buf, size, "cannot multiply a point by a point: use dot(u, v) or cross(u, v) for products "
+                       "of vectors");
         if (!k->isnum) return put(buf, size, "cannot multiply a point by %s", k->what);
         if (!isfinite(k->k)) return put(buf, size, "cannot multiply a point by %.14g", k->k);
         return put(buf, size, OVERFLOW, "k * A");

@@ -22,9 +22,13 @@ static void *totagged(lua_State *L, int idx, const char *tname, size_t size, con
     return pcl_genuine(L, idx, p, !p || (lua_rawlen(L, idx) == size && *p == PCL_SELF_TAG(p, tag)), type);
 }
 
-static void *tocnum(lua_State *L, int idx) { return totagged(L, idx, COMPLEX_MT, sizeof(cnum), &COMPLEX_TAG, "complex number"); }
+static void *tocnum(lua_State *L, int idx) {
+    return totagged(L, idx, COMPLEX_MT, sizeof(cnum), &COMPLEX_TAG, "complex number");
+}
 
-static void *tomobius(lua_State *L, int idx) { return totagged(L, idx, MOBIUS_MT, sizeof(mobius), &MOBIUS_TAG, "Moebius map"); }
+static void *tomobius(lua_State *L, int idx) {
+    return totagged(L, idx, MOBIUS_MT, sizeof(mobius), &MOBIUS_TAG, "Moebius map");
+}
 
 static void pushc(lua_State *L, pc_cnum w) {
     cnum *z = lua_newuserdatauv(L, sizeof *z, 0);
@@ -69,7 +73,8 @@ static int arith(lua_State *L, char op) {
     pc_cnum a = operand(L, fn, 1), b = operand(L, fn, 2), r;
     int st = pc_cnum_arith(op, a, b, &r);
     if (st == PC_EPOLE)
-        return pcl_error(L, "%s: division by zero%s", fn, op == '^' ? " (zero to a power whose real part is not positive)" : "");
+        return pcl_error(L, "%s: division by zero%s", fn,
+                         op == '^' ? " (zero to a power whose real part is not positive)" : "");
     if (st != PC_OK) return pcl_error(L, "%s: the result overflows (not finite)", fn);
     pushc(L, r);
     return 1;

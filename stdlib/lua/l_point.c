@@ -137,7 +137,8 @@ static const char *opnd_name(lua_State *L, int idx) {
 
 static pc_operand operand(lua_State *L, int idx) {
     pcl_value *p = topt(L, idx);
-    pc_operand o = {p ? p->n : 0, p ? p->h : NULL, lua_type(L, idx) == LUA_TNUMBER, lua_tonumber(L, idx), opnd_name(L, idx)};
+    pc_operand o = {p ? p->n : 0, p ? p->h : NULL, lua_type(L, idx) == LUA_TNUMBER, lua_tonumber(L, idx),
+                    opnd_name(L, idx)};
     return o;
 }
 
@@ -339,7 +340,8 @@ static int l_mid(lua_State *L) {
         for (int i = 0; i <= n; i++) s[i] += v.v[i] / m;
     }
     for (int i = 0; i <= n; i++)
-        if (!isfinite(s[i])) return pcl_error(L, "%s: the result is out of range (not finite: a coordinate overflowed)", pcl_name(L));
+        if (!isfinite(s[i]))
+            return pcl_error(L, "%s: the result is out of range (not finite: a coordinate overflowed)", pcl_name(L));
     push_h(L, n, s);
     return 1;
 }

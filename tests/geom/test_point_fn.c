@@ -158,7 +158,8 @@ static void test_locations(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_numbers), cmocka_unit_test(test_values),
-                                       cmocka_unit_test(test_failures), cmocka_unit_test(test_near), cmocka_unit_test(test_arith),
+                                       cmocka_unit_test(test_failures), cmocka_unit_test(test_near),
+                                       cmocka_unit_test(test_arith),
                                        cmocka_unit_test(test_arith_text), cmocka_unit_test(test_locations)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
