@@ -44,3 +44,14 @@ int pc_cnum_exp(pc_cnum z, pc_cnum *out) {
     if (!is_finite(z)) return PC_ENONFINITE;
     return put(cexp(CMPLX(z.re, z.im)), out);
 }
+
+int pc_cnum_fn(char op, pc_cnum z, pc_cnum *out) {
+    double complex x = CMPLX(z.re, z.im);
+    switch (op) {
+    case 'c': return put(conj(x), out);
+    case 'a': return put(cabs(x), out);
+    case 'g': return put(carg(x), out);
+    case 'e': return pc_cnum_exp(z, out);
+    default: return PC_EDOMAIN;
+    }
+}

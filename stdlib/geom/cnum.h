@@ -18,5 +18,9 @@ typedef struct {
 int pc_cnum_arith(char op, pc_cnum a, pc_cnum b, pc_cnum *out);
 /* e^z; PC_ENONFINITE when it overflows. */
 int pc_cnum_exp(pc_cnum z, pc_cnum *out);
+/* A function of z: op 'c' its conjugate, 'a' its modulus |z| and 'g' its argument atan2(im, re)
+ * (both into out->re, out->im 0), 'e' e^z.  PC_ENONFINITE when z or the result is not finite,
+ * PC_EDOMAIN for an unknown op. */
+int pc_cnum_fn(char op, pc_cnum z, pc_cnum *out);
 
 #endif

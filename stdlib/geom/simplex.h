@@ -43,4 +43,11 @@ double pc_simplex_measure(const pc_simplex *s);
  * *residual: largest distance of a point from the flat. */
 double pc_simplex_ratio(const pc_simplex *s, const double *pts, double *residual);
 
+/* simplex_text.c: the failure st of pc_simplex_init(n, k, vertices v) as text into buf ("the 3
+ * points are collinear: a flat (degenerate) triangle"; v may be NULL for PC_EDIM with k > n), and
+ * the simplex as text, simplex(P(0, 0), P(1, 0), P(0, 1)).  Both return the length the text
+ * needs (as snprintf). */
+size_t pc_simplex_init_text(int st, int n, int k, const double *v, char *buf, size_t size);
+size_t pc_simplex_text(const pc_simplex *s, char *buf, size_t size);
+
 #endif

@@ -1,6 +1,7 @@
 /* Smoothsteps and half-splines (stepanov_examples.md examples 3-8, 20-22). */
 #include "smooth.h"
 #include <math.h>
+#include <string.h>
 
 static const double PI = 3.14159265358979323846;
 
@@ -77,4 +78,15 @@ double pc_gfun_eval(const pc_gfun *g, double t) {
 
 int pc_gfun_check(const pc_gfun *g, double t) {
     return g->kind == PC_G_HALF ? pc_hspline_check(&g->h, t) : PC_OK;
+}
+
+int pc_hspline_field(const pc_hspline *h, const char *name, double *x) {
+    static const char *const names[] = {"n", "m", "t0", "c1", "c2", "v", NULL};
+    double values[] = {h->n, h->m, h->t0, h->c1, h->c2, pc_hspline_eval(h, h->t0)};
+    for (int i = 0; names[i]; i++)
+        if (strcmp(name, names[i]) == 0) {
+            *x = values[i];
+            return 1;
+        }
+    return 0;
 }

@@ -36,6 +36,9 @@ double pc_hspline_deriv(const pc_hspline *h, double t);
 int pc_hspline_check(const pc_hspline *h, double t);
 /* The locus of the junction points (example 8): v(t0) = m t0 / (n - n t0 + m t0). */
 double pc_hspline_locus(double n, double m, double t0);
+/* The parameter name of h ("n", "m", "t0", "c1", "c2", or "v" the junction ordinate g(t0)) into
+ * *x: 1, or 0 for another name. */
+int pc_hspline_field(const pc_hspline *h, const char *name, double *x);
 
 /* Clamped smoothstep of examples 20-22 ("characteristic function"): 0 for t <= 0, 2t^2 on
  * [0, 1/2], 1 - 2(1 - t)^2 on [1/2, 1], 1 for t >= 1. */

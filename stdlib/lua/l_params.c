@@ -26,13 +26,8 @@ void pcl_push_params(lua_State *L) { registry_table(L, DECLARED_KEY); }
 
 /* A name a URL and a command line can carry: letters, digits, _ (not first a digit). */
 static int good_name(const char *s, size_t len) {
-    if (len == 0 || len > 64 || (s[0] >= '0' && s[0] <= '9')) return 0;
-    for (size_t i = 0; i < len; i++) {
-        char c = s[i];
-        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'))
-            return 0;
-    }
-    return 1;
+    static const char OK[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_";
+    return len > 0 && len <= 64 && !(s[0] >= '0' && s[0] <= '9') && strspn(s, OK) == len;
 }
 
 /* the name: a string of letters, digits and _ */
@@ -81,14 +76,12 @@ static int l_slider(lua_State *L) {
         lua_createtable(L, 0, 6);
         lua_pushvalue(L, 1);
         lua_setfield(L, -2, "name");
-        lua_pushnumber(L, lo);
-        lua_setfield(L, -2, "min");
-        lua_pushnumber(L, hi);
-        lua_setfield(L, -2, "max");
-        lua_pushnumber(L, dflt);
-        lua_setfield(L, -2, "default");
-        lua_pushnumber(L, step);
-        lua_setfield(L, -2, "step");
+        const char *keys[] = {"min", "max", "default", "step"};
+        double values[] = {lo, hi, dflt, step};
+        for (int i = 0; i < 4; i++) {
+            lua_pushnumber(L, values[i]);
+            lua_setfield(L, -2, keys[i]);
+        }
         lua_pushboolean(L, animate);
         lua_setfield(L, -2, "animate");
         lua_rawseti(L, decl, n + 1);
@@ -96,15 +89,11 @@ static int l_slider(lua_State *L) {
 
     /* the value: the host's, checked against the range, else the default */
     registry_table(L, SET_KEY);
-    if (lua_getfield(L, -1, name) == LUA_TNUMBER) {
-        double v = lua_tonumber(L, -1);
-        if (v < lo || v > hi)
-            return pcl_fail(L, "the value %s set for %s is outside its range [%s, %s]", pcl_pushnum(L, v), name,
-                            pcl_pushnum(L, lo), pcl_pushnum(L, hi));
-        lua_pushnumber(L, v);
-        return 1;
-    }
-    lua_pushnumber(L, dflt);
+    double v = lua_getfield(L, -1, name) == LUA_TNUMBER ? lua_tonumber(L, -1) : dflt;
+    if (v < lo || v > hi)
+        return pcl_fail(L, "the value %s set for %s is outside its range [%s, %s]", pcl_pushnum(L, v), name,
+                        pcl_pushnum(L, lo), pcl_pushnum(L, hi));
+    lua_pushnumber(L, v);
     return 1;
 }
 

@@ -1,6 +1,5 @@
-/* Binding of the point calculus values (stdlib/geom/point.h): P V, the operators, and
- * lerp bar mid dist dot cross unit perp angle foot sr divide harmonic cross_ratio meet area
- * volume Sigma normalize weight coords near, declared on the argument layer (pcl_args.h).
+/* Binding of the point calculus values (stdlib/geom/point.h, point_fn.h): P V, the operators,
+ * and the functions of the registration table below.
  *
  * A value is a full userdata of variable size (header + n+1 doubles).  Every C function here
  * has the point metatable as upvalue 2 (upvalue 1 is a declared function's declaration), so
@@ -14,7 +13,9 @@
 #include "pcl_point.h"
 #include "pcl_curve.h"
 #include "pcl_expr.h"   /* equations take over when an operand is one (l_expr.c) */
+#include "point_fn.h"
 
+#define MSG_SIZE (PC_MAXDIM * 48 + 400)             /* a message of point_fn.h */
 static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the metatable */
 #define MT lua_upvalueindex(2)
 #define METHODS lua_upvalueindex(3)         /* __index only: the method table */
@@ -70,35 +71,11 @@ static const char *push_value_text(lua_State *L, const pcl_value *p) {
     return lua_pushstring(L, s);
 }
 
-/* ---- the messages of the operators and the drawing hook ------------------------------------ */
-
-/* "argument #N", or "self" for the receiver of a method call */
-static const char *argname(lua_State *L, int arg) {
+/* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
+static const char *argctx(lua_State *L, int arg) {
     int shown = pcl_arg_shown(L, arg);
-    return shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
-}
-
-static const char MEMBERSHIP[] =
-    "the coefficients of a point equation must sum to 1 for a point and to 0 for a vector "
-    "(the membership condition)";
-
-/* A value used as a location whose weight is not 1.  ctx names where it was used. */
-static int location_error(lua_State *L, const char *ctx, const pcl_value *p) {
-    const char *text = push_value_text(L, p);
-    double w = p->h[p->n];
-    if (pc_kind_of(w) == PC_KIND_VECTOR)
-        return pcl_error(L, "%s is a vector %s (weight 0), not a point: %s; to place a vector, "
-                          "add it to a point, e.g. P(0, 0) + v", ctx, text, MEMBERSHIP);
-    const char *wt = pcl_pushnum(L, w);
-    return pcl_error(L, "%s has weight %s, so it is neither a point (weight 1) nor a vector "
-                      "(weight 0): %s; write offsets with V(), e.g. V(x, y)*100 + P(320, 240), "
-                      "or use normalize(p) for a projective point", ctx, wt, MEMBERSHIP);
-}
-
-static const char *argctx(lua_State *L, int arg, const char *what) {
-    const char *an = argname(L, arg);
-    if (what && what[0]) return lua_pushfstring(L, "%s: %s (%s)", pcl_fname(L), an, what);
-    return lua_pushfstring(L, "%s: %s", pcl_fname(L), an);
+    if (shown == 0) return lua_pushfstring(L, "%s: self", pcl_fname(L));
+    return lua_pushfstring(L, "%s: argument #%d", pcl_fname(L), shown);
 }
 
 /* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */
@@ -108,9 +85,9 @@ static void fill(pcl_value *r, int n, const double *x, double w) {
 }
 void pcl_pushpoint(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 1.0); }
 void pcl_pushvector(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 0.0); }
-static void push_w(lua_State *L, int n, const double *x, double w) { fill(newpt(L, n), n, x, w); }
 /* the n + 1 homogeneous h */
 static void push_h(lua_State *L, int n, const double *h) { fill(newpt(L, n), n, h, h[n]); }
+
 static int push_num(lua_State *L, double x) {
     lua_pushnumber(L, x);
     return 1;
@@ -151,120 +128,48 @@ static int make(lua_State *L, double weight) {
 static int l_P(lua_State *L) { return make(L, 1.0); }
 static int l_V(lua_State *L) { return make(L, 0.0); }
 
-/* ---- operators ---------------------------------------------------------------------------- */
-
 static const char *opnd_name(lua_State *L, int idx) {
     if (topt(L, idx)) return "a point";
     if (lua_type(L, idx) == LUA_TNUMBER) return "a number";
-    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) {
-        const char *s = lua_pushfstring(L, "a %s", lua_tostring(L, -1));
-        return s;
-    }
+    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) return lua_pushfstring(L, "a %s", lua_tostring(L, -1));
     return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
 }
 
-/* A result that overflowed (1e308 + 1e308) or became NaN is an error, never a point drawn at
- * infinity: 1 when r is finite. */
-static int finite_or_error(lua_State *L, const pcl_value *r, const char *what) {
-    for (int i = 0; i <= r->n; i++)
-        if (!isfinite(r->h[i]))
-            return pcl_error(L, "%s: the result is out of range (not finite: a coordinate "
-                             "overflowed)", what);
-    return 1;
+static pc_operand operand(lua_State *L, int idx) {
+    pcl_value *p = topt(L, idx);
+    pc_operand o = {p ? p->n : 0, p ? p->h : NULL, lua_type(L, idx) == LUA_TNUMBER, lua_tonumber(L, idx),
+                    opnd_name(L, idx)};
+    return o;
 }
 
-static int mixed_error(lua_State *L, const char *op, const pcl_value *a, const pcl_value *b) {
-    return pcl_error(L, "cannot %s a %d-D value and a %d-D value: dimensions cannot be mixed",
-                      op, a->n, b->n);
-}
-
-/* A + B and A - B (sign -1): weights add, so a point plus a vector is a point. */
-static int add_sub(lua_State *L, double sign) {
-    pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    if ((!a || !b) && pcl_eq_hook(L, sign > 0 ? PCL_EQ_ADD : PCL_EQ_SUB)) return 1;
-    if ((!a || !b) && sign > 0)
-        return pcl_error(L, "cannot add %s and %s: points and vectors add only to points and "
-                          "vectors; to shift a point write A + V(dx, dy)",
-                          opnd_name(L, 1), opnd_name(L, 2));
-    if (!a || !b)
-        return pcl_error(L, "cannot subtract %s from %s: points and vectors subtract only "
-                          "points and vectors; to shift a point write A - V(dx, dy)",
-                          opnd_name(L, 2), opnd_name(L, 1));
-    int n = a->n;
-    if (b->n != n) return mixed_error(L, sign > 0 ? "add" : "subtract", a, b);
-    pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = a->h[i] + sign * b->h[i];
-    return finite_or_error(L, r, sign > 0 ? "A + B" : "A - B");
-}
-static int l_add(lua_State *L) { return add_sub(L, 1.0); }
-static int l_sub(lua_State *L) { return add_sub(L, -1.0); }
-
-static int l_mul(lua_State *L) {
-    pcl_value *p;
-    int k_idx;
-    if ((p = topt(L, 1)) != NULL) k_idx = 2;
-    else if ((p = topt(L, 2)) != NULL) k_idx = 1;
-    else if (pcl_eq_hook(L, PCL_EQ_MUL)) return 1;
-    else return pcl_error(L, "cannot multiply %s by %s", opnd_name(L, 1), opnd_name(L, 2));
-    if (lua_type(L, k_idx) != LUA_TNUMBER) {
-        if (pcl_eq_hook(L, PCL_EQ_MUL)) return 1;
-        if (topt(L, k_idx))
-            return pcl_error(L, "cannot multiply a point by a point: use dot(u, v) or "
-                              "cross(u, v) for products of vectors");
-        return pcl_error(L, "cannot multiply a point by %s", opnd_name(L, k_idx));
+/* A + B, A - B, k*A, A*k, A/k and -A: weights add, so a point plus a vector is a point; u/v of
+ * two parallel vectors is the number r with u = r v ((2.62)'s (T - A)/(T_C - A)). */
+static inline int arith(lua_State *L, int op, pcl_eq_op hook) {
+    pcl_value *a = topt(L, 1), *b = op == 'u' ? NULL : topt(L, 2), *p = a ? a : b;
+    int fits, knum = lua_type(L, a ? 2 : 1) == LUA_TNUMBER;   /* the k of k*A, A*k, A/k */
+    if (op == '+' || op == '-' || (op == '/' && b)) fits = a && b && a->n == b->n;
+    else if (op == 'u') fits = a != NULL;
+    else fits = (op == '*' ? p != NULL : a && !b) && !(a && b) && knum;
+    if (fits && op == '/' && b) {
+        double r;
+        if (pc_value_ratio(a->n, a->h, b->h, &r) == PC_OK) return push_num(L, r);
+    } else if (fits) {
+        pcl_value *r = newpt(L, p->n);
+        if (pc_value_arith(op, p->n, p->h, b ? b->h : NULL, lua_tonumber(L, a ? 2 : 1), r->h) == PC_OK) return 1;
+    } else if (pcl_eq_hook(L, hook)) {
+        return 1;
     }
-    double k = lua_tonumber(L, k_idx);
-    if (!isfinite(k)) return pcl_error(L, "cannot multiply a point by %f", k);
-    int n = p->n;
-    pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = p->h[i] * k;
-    return finite_or_error(L, r, "k * A");
+    char msg[MSG_SIZE];
+    pc_operand l = operand(L, 1), r = operand(L, 2);
+    pc_arith_text(op, &l, &r, msg, sizeof msg);
+    return pcl_error(L, "%s", msg);
 }
 
-/* u / v of two parallel vectors: the number r with u = r v ((2.62)'s (T - A)/(T_C - A)) */
-static int vec_ratio(lua_State *L, const pcl_value *u, const pcl_value *v) {
-    int n = u->n;
-    if (v->n != n) return pcl_error(L, "cannot divide a %d-D vector by a %d-D one (mixed dimensions)", n, v->n);
-    if (fabs(u->h[n]) > PC_WEIGHT_TOL || fabs(v->h[n]) > PC_WEIGHT_TOL)
-        return pcl_error(L, "cannot divide %s by %s: only a vector divides a parallel vector (u/v = r with u = r v; "
-                         "the difference of two points is a vector)", opnd_name(L, 1), opnd_name(L, 2));
-    double r, ang;
-    int st = pc_vec_ratio(n, u->h, v->h, &r, &ang);
-    if (st == PC_EZERO) return pcl_error(L, "division of a vector by the zero vector");
-    if (st == PC_ENOTCOLLINEAR)
-        return pcl_error(L, "cannot divide vectors that are not parallel: they are %s degrees apart "
-                         "(the ratio u/v needs u = r v, within 1e-9)", pcl_pushnum(L, ang * 180 / 3.14159265358979323846));
-    if (st != PC_OK) return pcl_statuserror(L, "/", st, NULL);
-    lua_pushnumber(L, r);
-    return 1;
-}
-
-static int l_div(lua_State *L) {
-    pcl_value *p = topt(L, 1);
-    pcl_value *q = topt(L, 2);
-    if (p && q) return vec_ratio(L, p, q);
-    if ((!p || lua_type(L, 2) != LUA_TNUMBER) && pcl_eq_hook(L, PCL_EQ_DIV)) return 1;
-    if (!p) return pcl_error(L, "cannot divide %s by a point", opnd_name(L, 1));
-    if (lua_type(L, 2) != LUA_TNUMBER)
-        return pcl_error(L, "cannot divide a point by %s", opnd_name(L, 2));
-    double k = lua_tonumber(L, 2);
-    if (k == 0) return pcl_error(L, "division of a point by zero");
-    if (!isfinite(k)) return pcl_error(L, "cannot divide a point by %f", k);
-    int n = p->n;
-    pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = p->h[i] / k;   /* the weight is divided too */
-    return finite_or_error(L, r, "A / k");
-}
-
-static int l_unm(lua_State *L) {
-    pcl_value *p = topt(L, 1);
-    if (!p && pcl_eq_hook(L, PCL_EQ_UNM)) return 1;
-    if (!p) return pcl_error(L, "cannot negate %s", opnd_name(L, 1));
-    int n = p->n;
-    pcl_value *r = newpt(L, n);
-    for (int i = 0; i <= n; i++) r->h[i] = -p->h[i];
-    return 1;
-}
+static int l_add(lua_State *L) { return arith(L, '+', PCL_EQ_ADD); }
+static int l_sub(lua_State *L) { return arith(L, '-', PCL_EQ_SUB); }
+static int l_mul(lua_State *L) { return arith(L, '*', PCL_EQ_MUL); }
+static int l_div(lua_State *L) { return arith(L, '/', PCL_EQ_DIV); }
+static int l_unm(lua_State *L) { return arith(L, 'u', PCL_EQ_UNM); }
 
 static int l_eq(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
@@ -296,26 +201,15 @@ static int l_concat(lua_State *L) {
     return 1;
 }
 
-/* The membership-condition error for reading coordinate i (0-based) of p; key is the field
- * name (NULL for p[i]). */
-static int coord_error(lua_State *L, pcl_value *p, int i, const char *key) {
-    const char *label = key ? lua_pushfstring(L, ".%s", key) : lua_pushfstring(L, "p[%d]", i + 1);
-    const char *ctx = lua_pushfstring(L, "reading %s: the value %s", label, push_value_text(L, p));
-    return location_error(L, ctx, p);
-}
-
-/* coordinate i (0-based) of p as a location or vector component */
+/* coordinate i (0-based) of p as a location or vector component; key the field (NULL: p[i]) */
 static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key) {
     double w = p->h[p->n];
-    if (w == 1.0 || w == 0.0) {                         /* the common case */
-        lua_pushnumber(L, p->h[i]);
-        return 1;
-    }
-    switch (pc_kind_of(w)) {
-    case PC_KIND_POINT: lua_pushnumber(L, p->h[i] / w); return 1;
-    case PC_KIND_VECTOR: lua_pushnumber(L, p->h[i]); return 1;
-    default: return coord_error(L, p, i, key);
-    }
+    if (i < p->n && (w == 1.0 || w == 0.0)) return push_num(L, p->h[i]);    /* the common case */
+    int kind = pc_kind_of(w);
+    if (i < p->n && kind != PC_KIND_WEIGHTED) return push_num(L, kind == PC_KIND_POINT ? p->h[i] / w : p->h[i]);
+    char msg[MSG_SIZE];
+    pc_coord_text(p->n, p->h, i, key, msg, sizeof msg);
+    return pcl_error(L, "%s", msg);
 }
 
 /* __index: .x .y .z (coordinates), .w (the weight), p[i], then the methods.  Only the VM calls
@@ -329,23 +223,8 @@ static int l_index(lua_State *L) {
     if (t == LUA_TSTRING) {
         size_t len;
         const char *k = lua_tolstring(L, 2, &len);
-        if (len == 1) {
-            int i;
-            switch (k[0]) {
-            case 'x': i = 0; break;
-            case 'y': i = 1; break;
-            case 'z': i = 2; break;
-            case 'w': lua_pushnumber(L, p->h[p->n]); return 1;     /* the weight */
-            default: i = -1;
-            }
-            if (i >= 0) {
-                if (i >= p->n) {
-                    const char *text = push_value_text(L, p);
-                    return pcl_error(L, "%s is %d-D: it has no coordinate .%s", text, p->n, k);
-                }
-                return push_coord(L, p, i, k);
-            }
-        }
+        if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
+        if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);      /* the weight */
         lua_pushvalue(L, 2);
         lua_rawget(L, METHODS);
         return 1;
@@ -363,13 +242,51 @@ static int l_newindex(lua_State *L) {
     return pcl_error(L, "points are immutable: make a new one instead, e.g. P(x, p.y)");
 }
 
-/* ---- helpers ----------------------------------------------------------------------------- */
+/* ---- functions ------------------------------------------------------------------------------ */
 
 /* A located argument of any weight (lerp, mid), and an end that may be a point at infinity. */
 #define A_VAL(nm) {.name = nm, .kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = "a point or vector"}
 #define A_PROJ(nm) {.name = nm, .kind = PCL_LOC, .flags = PCL_SAMEDIM, .expect = "a point (or a point at infinity)"}
 static const pcl_arg more_val = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = "a point or vector"};
 static const pcl_arg more_pt = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
+
+/* The core's point function op of the read arguments a (an absent one repeats the one before:
+ * Sigma(A, B) is Sigma(A, B, B)): its number or value pushed, or its message raised. */
+static int finish(lua_State *L, int op, const pcl_val *a) {
+    const double *v[4] = {a[0].v, a[1].v, a[2].v, a[3].v};
+    for (int k = 1; k < 4; k++)
+        if (!a[k].present) v[k] = v[k - 1];
+    double out[PC_MAXDIM + 3];
+    int value, n = a[0].n, st = pc_point_fn(op, n, v, a[2].x, out, &value);
+    if (st == PC_ESKEW) {                               /* meet: skew lines, nil and their distance */
+        lua_pushnil(L);
+        return 1 + push_num(L, out[0]);
+    }
+    if (st != PC_OK && st != PC_IMPROPER) {
+        char msg[MSG_SIZE];
+        int k = pc_point_fn_text(op, st, n, v, a[2].x, msg, sizeof msg);
+        return k ? pcl_argfail(L, k, "%s", msg) : pcl_fail(L, "%s", msg);
+    }
+    if (!value) return push_num(L, out[0]);
+    push_h(L, n, out);
+    if (op != PC_FN_MEET) return 1;
+    lua_pushnumber(L, out[n + 1]);                      /* lambda, mu */
+    return 2 + push_num(L, out[n + 2]);
+}
+
+/* the declared arguments read, then finish */
+static int apply(lua_State *L, int op) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    return finish(L, op, a);
+}
+
+/* apply, after the equations' hook when one of the m arguments is not a point */
+static int hooked(lua_State *L, int m, pcl_eq_op hook, int op) {
+    for (int k = 1; k <= m; k++)
+        if (!topt(L, k)) return pcl_eq_hook(L, hook) ? (op == PC_FN_MEET ? 3 : 1) : apply(L, op);
+    return apply(L, op);
+}
 
 static int out_of_range(lua_State *L, double t) {
     return pcl_fail(L, "the result is out of range (not finite) for t = %s", pcl_pushnum(L, t));
@@ -422,14 +339,16 @@ static int l_mid(lua_State *L) {
         pcl_readone(L, j, j, 0, &more_val, n, &v);
         for (int i = 0; i <= n; i++) s[i] += v.v[i] / m;
     }
-    pcl_value *r = newpt(L, n);
-    fill(r, n, s, s[n]);
-    return finite_or_error(L, r, pcl_name(L));
+    for (int i = 0; i <= n; i++)
+        if (!isfinite(s[i]))
+            return pcl_error(L, "%s: the result is out of range (not finite: a coordinate overflowed)", pcl_name(L));
+    push_h(L, n, s);
+    return 1;
 }
 
-/* The hot path of dist, dot and cross: two values of one dimension whose weights are exactly
- * w (1: points, 0: vectors).  Anything else goes to the layer, which reads it by the one
- * weight rule or words the message. */
+/* The hot path of dist and dot: two values of one dimension whose weights are exactly w (1:
+ * points, 0: vectors).  Anything else goes to the layer, which reads it by the one weight rule
+ * or words the message. */
 static int exact_pair(lua_State *L, double w, pcl_value **a, pcl_value **b) {
     *a = topt(L, 1), *b = topt(L, 2);
     return *a && *b && (*a)->n == (*b)->n && (*a)->h[(*a)->n] == w && (*b)->h[(*b)->n] == w;
@@ -442,206 +361,62 @@ static const pcl_arg one_vector[] = {A_VECTOR("v", 0), PCL_END};
 static int l_dist(lua_State *L) {
     pcl_value *p, *q;
     if (exact_pair(L, 1.0, &p, &q)) return push_num(L, pc_dist(p->n, p->h, q->h));
-    pcl_val a[2] = {0};
+    pcl_val a[4] = {0};
     if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
         pcl_readone(L, 1, 1, 0, &one_vector[0], 0, &a[0]);
-        return push_num(L, pc_norm(a[0].n, a[0].v));
+        return finish(L, PC_FN_NORM, a);
     }
-    PCL_READ(L, a);
-    return push_num(L, pc_dist(a[0].n, a[0].v, a[1].v));
+    return apply(L, PC_FN_DIST);
 }
 
 static const pcl_arg uv_args[] = {A_SAMEVECTOR("u"), A_SAMEVECTOR("v"), PCL_END};
 static int l_dot(lua_State *L) {
     pcl_value *u, *v;
     if (exact_pair(L, 0.0, &u, &v)) return push_num(L, pc_dot(u->n, u->h, v->h));
-    if ((!u || !v) && pcl_eq_hook(L, PCL_EQ_DOT)) return 1;
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    return push_num(L, pc_dot(a[0].n, a[0].v, a[1].v));
+    return hooked(L, 2, PCL_EQ_DOT, PC_FN_DOT);
 }
 
-/* cross(u, v): a vector in 3-D, the number u.x v.y - u.y v.x in 2-D. */
-static int l_cross(lua_State *L) {
-    if ((!topt(L, 1) || !topt(L, 2)) && pcl_eq_hook(L, PCL_EQ_CROSS)) return 1;
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    double w[3];
-    if (a[0].n == 2) {
-        return push_num(L, pc_cross2(a[0].v, a[1].v));
-    }
-    if (a[0].n != 3) return pcl_fail(L, "vectors must be 2-D or 3-D, got %d-D", a[0].n);
-    pc_cross3(a[0].v, a[1].v, w);
-    push_w(L, 3, w, 0.0);
-    return 1;
-}
+static int l_cross(lua_State *L) { return hooked(L, 2, PCL_EQ_CROSS, PC_FN_CROSS); }
+static int l_unit(lua_State *L) { return hooked(L, 1, PCL_EQ_UNIT, PC_FN_UNIT); }
+static int l_perp(lua_State *L) { return apply(L, PC_FN_PERP); }
+static int l_foot(lua_State *L) { return apply(L, PC_FN_FOOT); }
+static int l_sigma(lua_State *L) { return apply(L, PC_FN_SIGMA); }
+static int l_sr(lua_State *L) { return apply(L, PC_FN_SR); }
+static int l_divide(lua_State *L) { return apply(L, PC_FN_DIVIDE); }
+static int l_harmonic(lua_State *L) { return apply(L, PC_FN_HARMONIC); }
+static int l_cross_ratio(lua_State *L) { return apply(L, PC_FN_CROSS_RATIO); }
+static int l_volume(lua_State *L) { return apply(L, PC_FN_VOLUME); }
+static int l_normalize(lua_State *L) { return apply(L, PC_FN_NORMALIZE); }
+static int l_weight(lua_State *L) { return apply(L, PC_FN_WEIGHT); }
 
-static int l_unit(lua_State *L) {
-    if (!topt(L, 1) && pcl_eq_hook(L, PCL_EQ_UNIT)) return 1;
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    double w[PC_MAXDIM];
-    if (pc_unit(a[0].n, a[0].v, w) != PC_OK) return pcl_fail(L, "the zero vector has no direction");
-    push_w(L, a[0].n, w, 0.0);
-    return 1;
-}
+/* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu
+ * (pc_meet_h: an end may be a point at infinity); skew lines give nil and their distance. */
+static int l_meet(lua_State *L) { return hooked(L, 4, PCL_EQ_MEET, PC_FN_MEET); }
 
-static int l_perp(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    double w[2];
-    if (a[0].n != 2)
-        return pcl_argfail(L, 1, "must be a 2-D vector, got %d-D (in space a perpendicular is not unique: use cross(u, v))", a[0].n);
-    pc_perp2(a[0].v, w);
-    push_w(L, 2, w, 0.0);
-    return 1;
-}
-
-/* angle(A, B, C): the angle at A of triangle ABC; angle(u, v): between two vectors.
- * Unsigned, in radians, in [0, pi].  The form follows the first argument (a vector or not),
- * so that angle(A, B, nil) names the missing argument #3. */
+/* angle(A, B, C): the angle at A of triangle ABC; angle(u, v): between two vectors.  The form
+ * follows the first argument (a vector or not), so that angle(A, B, nil) names argument #3. */
 static const pcl_arg three_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), PCL_END};
 static int l_angle(lua_State *L) {
     pcl_value *first = topt(L, 1);
-    pcl_val a[3] = {0};
-    double b[PC_MAXDIM], c[PC_MAXDIM], ang;
+    pcl_val a[4] = {0};
     if (first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR : lua_isnoneornil(L, 3)) {
         pcl_readone(L, 1, 1, 0, &uv_args[0], 0, &a[0]);
         pcl_readone(L, 2, 2, 0, &uv_args[1], a[0].n, &a[1]);
-        memcpy(b, a[0].v, sizeof b);
-        memcpy(c, a[1].v, sizeof c);
-    } else {
-        PCL_READ(L, a);
-        for (int i = 0; i < a[0].n; i++) b[i] = a[1].v[i] - a[0].v[i], c[i] = a[2].v[i] - a[0].v[i];
+        return finish(L, PC_FN_ANGLE_UV, a);
     }
-    if (pc_angle(a[0].n, b, c, &ang) != PC_OK) return pcl_fail(L, "a side has zero length, so the angle is undefined");
-    return push_num(L, ang);
+    return apply(L, PC_FN_ANGLE);
 }
 
 static const pcl_arg foot_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), A_SAMEPOINT("B"), PCL_END};
-static int l_foot(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    double h[PC_MAXDIM];
-    if (pc_foot(a[0].n, a[0].v, a[1].v, a[2].v, h) != PC_OK) return pcl_fail(L, "A and B coincide, so they do not define a line");
-    push_w(L, a[0].n, h, 1.0);
-    return 1;
-}
-
 static const pcl_arg sigma_args[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"),
                                      {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_OPT}, PCL_END};
-static int l_sigma(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_sigma(a[0].n, a[0].v, a[1].v, a[a[2].present ? 2 : 1].v));   /* Σ^A_BB = AB² */
-    return 1;
-}
-
-/* ---- ratios -------------------------------------------------------------------------------- */
-
-static int ratio_error(lua_State *L, int st) {
-    switch (st) {
-    case PC_ECOINCIDENT: return pcl_fail(L, "the points coincide, so the ratio is undefined");
-    case PC_ENOTCOLLINEAR: return pcl_fail(L, "the points are not collinear");
-    case PC_EZERO: return pcl_fail(L, "a point at infinity with a zero direction");
-    default: return pcl_fail(L, "%s", pc_strerror(st));
-    }
-}
-
-/* sr(X, Y, Z) = (X - Z)/(Z - Y): Z divides XY in this ratio.  math.huge when Z = Y; -1 when Z
- * is the improper point of the line. */
 static const pcl_arg sr_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), A_PROJ("Z"), PCL_END};
-static int l_sr(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    double lam;
-    int st = pc_sr(a[0].n, a[0].v, a[1].v, a[2].v, &lam);
-    if (st != PC_OK) return ratio_error(L, st);
-    return push_num(L, lam);
-}
-
-/* divide(X, Y, lambda) = (X + lambda Y)/(1 + lambda); lambda = -1 gives the improper point,
- * math.huge gives Y. */
 static const pcl_arg divide_args[] = {A_SAMEPOINT("X"), A_SAMEPOINT("Y"), {.name = "lambda", .kind = PCL_NUMBER, .flags = PCL_INF, .expect = "a number (not NaN)"}, PCL_END};
-static int l_divide(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    double out[PC_MAXDIM + 1];
-    if (pc_divide(n, a[0].v, a[1].v, a[2].x, out) == PC_ENONFINITE)
-        return pcl_fail(L, "the point is out of range (not finite) for lambda = %s", pcl_pushnum(L, a[2].x));
-    push_h(L, n, out);
-    return 1;
-}
-
 static const pcl_arg harmonic_args[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_PROJ("T"), PCL_END};
-static int l_harmonic(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    double out[PC_MAXDIM + 1];
-    int st = pc_harmonic(a[0].n, a[0].v, a[1].v, a[2].v, out);
-    if (st != PC_OK && st != PC_IMPROPER) return ratio_error(L, st);
-    push_h(L, a[0].n, out);
-    return 1;
-}
-
 static const pcl_arg cross_ratio_args[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_PROJ("C"), A_PROJ("D"), PCL_END};
-static int l_cross_ratio(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    double r;
-    int st = pc_cross_ratio(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &r);
-    if (st != PC_OK) return ratio_error(L, st);
-    return push_num(L, r);
-}
-
-/* ---- incidence and measure ---------------------------------------------------------------- */
-
-/* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu.
- * An end may be a point at infinity (a direction, weight 0), as in the book's homogeneous
- * meet: a point P and a direction D (either order) give the line through P along D, with
- * K = P + D lambda; two directions give the line at infinity (of their plane).
- * Parallel lines: their common improper point (the direction of the first line, weight 0),
- * math.huge, math.huge; likewise a line and a line at infinity.  Skew lines (3-D and up): nil
- * and the distance between them (math.huge for a line that misses a line at infinity). */
 static const pcl_arg meet_args[] = {A_PROJ("A1"), A_PROJ("A2"), A_PROJ("B1"), A_PROJ("B2"), PCL_END};
-static int l_meet(lua_State *L) {
-    if (!(topt(L, 1) && topt(L, 2) && topt(L, 3) && topt(L, 4)) && pcl_eq_hook(L, PCL_EQ_MEET)) return 3;
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    for (int k = 0; k < 4; k++)
-        if (a[k].v[n] == 0 && pc_norm(n, a[k].v) == 0)
-            return pcl_argfail(L, k + 1, "is the zero vector %s, which has no direction, so it is no point at infinity",
-                               push_value_text(L, topt(L, k + 1)));
-    double out[PC_MAXDIM + 1], lam, mu, res;
-    int st = pc_meet_h(n, a[0].v, a[1].v, a[2].v, a[3].v, out, &lam, &mu, &res);
-    switch (st) {
-    case PC_OK:
-    case PC_IMPROPER:
-        push_h(L, n, out);
-        lua_pushnumber(L, lam);
-        lua_pushnumber(L, mu);
-        return 3;
-    case PC_ESKEW:
-        lua_pushnil(L);
-        lua_pushnumber(L, res);
-        return 2;
-    case PC_ESAME_LINE:
-        return pcl_fail(L, "the two lines coincide, so they have no single meet");
-    case PC_ECOINCIDENT: {
-        /* which line: the meet of line A with itself fails the same way only if A is bad */
-        int bad_a = pc_meet_h(n, a[0].v, a[1].v, a[0].v, a[1].v, out, NULL, NULL, NULL) == st;
-        const char *names = bad_a ? "A1 and A2" : "B1 and B2";
-        if (a[bad_a ? 0 : 2].v[n] == 0)
-            return pcl_fail(L, "%s are the same point at infinity (parallel directions), so they do not define a line", names);
-        return pcl_fail(L, "%s coincide, so they do not define a line", names);
-    }
-    case PC_EDIM:
-        return pcl_fail(L, "lines in 1-D all coincide; meet needs 2-D or more");
-    }
-    return pcl_fail(L, "%s", pc_strerror(st));
-}
+static const pcl_arg four_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), A_SAMEPOINT("D"), PCL_END};
+static const pcl_arg any_value[] = {{.name = "p", .kind = PCL_VALUE, .expect = "a point or vector"}, PCL_END};
 
 /* area(A, B, C): signed in 2-D (counter-clockwise positive), unsigned in any dimension;
  * area(A, B, C, D, ...) in 2-D: the signed area of the polygon. */
@@ -652,9 +427,7 @@ static int l_area(lua_State *L) {
     int n = a[0].n;
     if (n < 2) return pcl_fail(L, "points must be 2-D or more, got 1-D");
     if (n > 2 && m > 3) return pcl_fail(L, "a polygon area needs 2-D points; in %d-D give a triangle", n);
-    if (n > 2) {
-        return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
-    }
+    if (n > 2) return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
     double s = pc_area2(a[0].v, a[1].v, a[2].v), prev[2] = {a[2].v[0], a[2].v[1]};
     for (int j = 4; j <= m; j++) {
         pcl_readone(L, j, j, 0, &more_pt, 2, &d);
@@ -662,39 +435,6 @@ static int l_area(lua_State *L) {
         prev[0] = d.v[0], prev[1] = d.v[1];
     }
     return push_num(L, s);
-}
-
-/* volume(A, B, C, D): signed in 3-D (positive when B - A, C - A, D - A are right-handed),
- * unsigned in 4-D and up. */
-static const pcl_arg four_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), A_SAMEPOINT("D"), PCL_END};
-static int l_volume(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    if (n < 3) return pcl_fail(L, "points must be 3-D or more, got %d-D", n);
-    double v[4 * PC_MAXDIM];
-    for (int j = 0; j < 4; j++) memcpy(v + j * n, a[j].v, sizeof(double) * (size_t)n);
-    return push_num(L, n == 3 ? pc_volume3(v, v + 3, v + 6, v + 9) : pc_measure(n, 3, v));
-}
-
-/* ---- weights -------------------------------------------------------------------------------- */
-
-static const pcl_arg any_value[] = {{.name = "p", .kind = PCL_VALUE, .expect = "a point or vector"}, PCL_END};
-static int l_normalize(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    double out[PC_MAXDIM + 1];
-    if (pc_normalize(a[0].n, a[0].v, out) != PC_OK)
-        return pcl_fail(L, "%s has weight 0 (a vector, or a point at infinity), so it has no finite location",
-                        push_value_text(L, topt(L, 1)));
-    push_h(L, a[0].n, out);
-    return 1;
-}
-
-static int l_weight(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    return push_num(L, a[0].v[a[0].n]);
 }
 
 /* coords(p) -> x, y, ...: the coordinates of a point or the components of a vector. */
@@ -715,22 +455,16 @@ static const pcl_arg near_args[] = {A_ANY("a", NULL, NUM_OR_VALUE), A_ANY("b", N
                                      .dflt = 1e-9, .expect = "a non-negative number"}, PCL_END};
 static const pcl_arg near_value = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = NUM_OR_VALUE};
 static int l_near(lua_State *L) {
-    pcl_val a[3] = {0}, p, q;
+    pcl_val a[3] = {0}, p = {0}, q = {0};
     PCL_READ(L, a);
-    double eps = a[2].x;
     if (lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
-        double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2);
-        lua_pushboolean(L, fabs(x - y) <= eps * fmax(1.0, fmax(fabs(x), fabs(y))));
-        return 1;
+        p.v[0] = lua_tonumber(L, 1);
+        q.v[0] = lua_tonumber(L, 2);
+    } else {
+        pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
+        pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
     }
-    pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
-    pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
-    double scale = 1, d = 0;
-    for (int i = 0; i <= p.n; i++) {
-        scale = fmax(scale, fmax(fabs(p.v[i]), fabs(q.v[i])));
-        d = fmax(d, fabs(p.v[i] - q.v[i]));
-    }
-    lua_pushboolean(L, d <= eps * scale);
+    lua_pushboolean(L, pc_near(p.n, p.v, q.v, a[2].x));
     return 1;
 }
 
@@ -747,19 +481,19 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
         if (st == PC_IMPROPER)
             return pcl_error(L, "%s: argument #%d (%s) projects to infinity (it lies in the "
                               "camera's vanishing plane)", pcl_fname(L), idx, push_value_text(L, p));
-        const char *text = push_value_text(L, p);
-        return pcl_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L),
-                          idx, p->n, text);
+        return pcl_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L), idx, p->n,
+                         push_value_text(L, p));
     }
     double loc[2];
-    if (pc_loc(2, p->h, loc) != PC_OK) location_error(L, argctx(L, idx, NULL), p);
+    char msg[MSG_SIZE];
+    if (pc_loc(2, p->h, loc) != PC_OK && pc_location_text(argctx(L, idx), 2, p->h, msg, sizeof msg))
+        return pcl_error(L, "%s", msg);
     if (!isfinite(loc[0]) || !isfinite(loc[1]))        /* arithmetic overflowed */
-        return pcl_error(L, "%s has infinite or NaN coordinates", argctx(L, idx, NULL));
+        return pcl_error(L, "%s has infinite or NaN coordinates", argctx(L, idx));
     *x = loc[0];
     *y = loc[1];
     return 1;
 }
-
 
 /* ---- registration --------------------------------------------------------------------------- */
 
@@ -774,8 +508,7 @@ static const pcl_fn fns[] = {
     PCL_FN("cross", l_cross, uv_args, "vector | number", "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D."),
     PCL_FN("unit", l_unit, one_vector, "vector", "The vector v scaled to length 1; the zero vector is an error."),
     PCL_FN("perp", l_perp, one_vector, "vector", "The 2-D vector v turned by +90 degrees: V(-v.y, v.x)."),
-    {.name = "angle", .fn = l_angle, .args = three_points, .sig = "angle(A, B, C) | angle(u, v) -> number",
-     .help = "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi."},
+    {.name = "angle", .fn = l_angle, .args = three_points, .sig = "angle(A, B, C) | angle(u, v) -> number", .help = "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi."},
     PCL_FN("foot", l_foot, foot_args, "point", "The foot of the perpendicular from C to line AB."),
     PCL_FN("Sigma", l_sigma, sigma_args, "number", "The metric operator (B - A).(C - A) of three points; Sigma(A, B) is the squared distance AB^2."),
     PCL_FN("sr", l_sr, sr_args, "number", "The simple ratio (XYZ) = (X - Z)/(Z - Y) in which Z divides XY; math.huge when Z = Y, -1 for the point at infinity."),
@@ -783,8 +516,7 @@ static const pcl_fn fns[] = {
     PCL_FN("harmonic", l_harmonic, harmonic_args, "point", "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity."),
     PCL_FN("cross_ratio", l_cross_ratio, cross_ratio_args, "number", "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity)."),
     PCL_FN("meet", l_meet, meet_args, "K, lambda, mu", "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
-    {.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number",
-     .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."},
+    {.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number", .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."},
     PCL_FN("volume", l_volume, four_points, "number", "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up."),
     PCL_FN("normalize", l_normalize, any_value, "point", "Divide a weighted value by its weight (projective normalisation); weight 0 is an error."),
     PCL_FN("weight", l_weight, any_value, "number", "The weight of a value: 1 for a point, 0 for a vector, k for k*A."),

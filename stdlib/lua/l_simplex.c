@@ -1,12 +1,5 @@
-/* Binding of simplices (stdlib/geom/simplex.h): simplex(C, A, B, ...) and its methods.
- *
- *   S = simplex(C, A, B)       C is the initial point (the book's "simplex CAB")
- *   S(p, q)                    (A - C)p + (B - C)q + C, the natural parameters
- *   S:bary(p, q, r)            Ap + Bq + Cr (weighted if p + q + r is not 1)
- *   S:params(M)                p, q, residual (least squares in any ambient dimension)
- *   S:measure()                length, area, volume ... (signed when the simplex is full-dimensional)
- *   S:ratio(P1, P2, P3)        S-/V-theorem: signed measure ratio of P1P2P3 to S, and a residual
- *   S[i], #S                   vertex i (1 = the initial point), number of vertices */
+/* Binding of simplices (stdlib/geom/simplex.h): simplex(C, A, B, ...), S(p, q), its methods, S[i]
+ * (vertex i, 1 the initial point) and #S (the number of vertices). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -27,15 +20,6 @@ static pc_simplex *tosimplex(lua_State *L, int idx) {
 }
 static void *self_simplex(lua_State *L, int idx) { return tosimplex(L, idx); }
 
-static const char *shape(int k) {
-    switch (k) {
-    case 1: return "segment";
-    case 2: return "triangle";
-    case 3: return "tetrahedron";
-    default: return "simplex";
-    }
-}
-
 /* simplex(C, A, B, ...): the vertices after C are read one by one in C's dimension */
 static const pcl_arg simplex_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), PCL_END};
 
@@ -44,9 +28,9 @@ static int l_simplex(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     int n = a[0].n;
-    if (k > n)
-        return pcl_fail(L, "%d points in %d-D are always dependent: a simplex has at most dimension + 1 = %d vertices", m, n, n + 1);
     double v[(PC_MAXDIM + 1) * PC_MAXDIM];
+    char msg[160];
+    if (k > n && pc_simplex_init_text(PC_EDIM, n, k, NULL, msg, sizeof msg)) return pcl_fail(L, "%s", msg);
     static const pcl_arg vertex = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
     memcpy(v, a[0].v, sizeof(double) * (size_t)n);
     memcpy(v + n, a[1].v, sizeof(double) * (size_t)n);
@@ -57,16 +41,7 @@ static int l_simplex(lua_State *L) {
     }
     pc_simplex *s = lua_newuserdatauv(L, pc_simplex_size(n, k), 0);
     int st = pc_simplex_init(s, n, k, v);
-    if (st == PC_ECOINCIDENT) {
-        for (int i = 1; i <= k; i++)
-            if (pc_dist(n, v, v + i * n) == 0)
-                return pcl_fail(L, "argument #%d coincides with argument #1 (the initial point): a degenerate simplex", i + 1);
-    }
-    if (st == PC_ECOLLINEAR) {
-        const char *how = k == 2 ? "collinear" : k == 3 ? "coplanar" : "dependent";
-        return pcl_fail(L, "the %d points are %s: a flat (degenerate) %s", m, how, shape(k));
-    }
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    if (st != PC_OK && pc_simplex_init_text(st, n, k, v, msg, sizeof msg)) return pcl_fail(L, "%s", msg);
     luaL_setmetatable(L, REGKEY);
     return 1;
 }
@@ -76,11 +51,9 @@ static void numbers(lua_State *L, int m, const char *label, double *x) {
     for (int i = 0; i < m; i++) {
         char what[24];
         pcl_arg num = {.kind = PCL_NUMBER, .name = label};
-        if (label) {                          /* the label only on the error path */
-            if (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2))) {
-                snprintf(what, sizeof what, "%s %d", label, i + 1);
-                num.name = what;
-            }
+        if (label && (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2)))) {
+            snprintf(what, sizeof what, "%s %d", label, i + 1);   /* the label only on the error path */
+            num.name = what;
         }
         pcl_val v;
         pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);
@@ -157,20 +130,15 @@ static int l_ratio(lua_State *L) {
 static int l_index(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "index: not a simplex");
-    if (lua_type(L, 2) == LUA_TNUMBER) {
-        int isint;
-        lua_Integer i = lua_tointegerx(L, 2, &isint);
-        if (isint && i >= 1 && i <= s->k + 1) {
-            pcl_value *r = pcl_newvalue(L, s->n);
-            memcpy(r->h, PC_SIMPLEX_V(s) + (i - 1) * s->n, sizeof(double) * (size_t)s->n);
-            r->h[s->n] = 1.0;
-            return 1;
-        }
-        lua_pushnil(L);
+    if (lua_type(L, 2) != LUA_TNUMBER) {
+        lua_pushvalue(L, 2);
+        lua_rawget(L, lua_upvalueindex(1));
         return 1;
     }
-    lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(1));
+    int isint;
+    lua_Integer i = lua_tointegerx(L, 2, &isint);
+    if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
+    else lua_pushnil(L);
     return 1;
 }
 
@@ -184,19 +152,9 @@ static int l_len(lua_State *L) {
 static int l_tostring(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "tostring: not a simplex");
-    luaL_Buffer b;
-    luaL_buffinit(L, &b);
-    luaL_addstring(&b, "simplex(");
-    for (int i = 0; i <= s->k; i++) {
-        if (i) luaL_addstring(&b, ", ");
-        lua_pushinteger(L, i + 1);
-        lua_gettable(L, 1);                               /* the vertex as a point */
-        luaL_tolstring(L, -1, NULL);
-        lua_remove(L, -2);
-        luaL_addvalue(&b);
-    }
-    luaL_addchar(&b, ')');
-    luaL_pushresult(&b);
+    char buf[(PC_MAXDIM + 1) * (PC_MAXDIM * 24 + 40)];
+    pc_simplex_text(s, buf, sizeof buf);
+    lua_pushstring(L, buf);
     return 1;
 }
 

@@ -1,10 +1,6 @@
-/* Binding of the smoothsteps (stdlib/geom/smooth.h): the table smooth with
- *   smooth.sine(t)  smooth.cubic(t)  smooth.power(n [, t])  smooth.half(n, m, t0 [, t])
- *   smooth.locus(n, m, t0)  smooth.clamp(t)  smooth.clamp_qb(t [, prev])
- * smooth.power(n) and smooth.half(n, m, t0) without t return a half-spline object g: g(t)
- * evaluates, g:deriv(t) is the slope, and g.n g.m g.t0 g.c1 g.c2 g.v (the junction ordinate
- * v(t0)) are its parameters.  The curve builders accept these objects, smooth.sine and
- * smooth.cubic as smoothsteps they evaluate natively. */
+/* Binding of the smoothsteps (stdlib/geom/smooth.h): the table smooth, and the half-spline object g
+ * of smooth.power(n) and smooth.half(n, m, t0) without t.  The curve builders accept these
+ * objects, smooth.sine and smooth.cubic as smoothsteps they evaluate natively (pcl_tk.h). */
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -23,21 +19,26 @@ static int push_value(lua_State *L, double t, double g) {
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 
-/* smooth.sine and smooth.cubic: a number, or an equation (a smoothstep of it) */
-static int step(lua_State *L, const pc_gfun *g, double (*f)(double)) {
-    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, g)) return 1;
-    pcl_val a[1] = {0};
+/* smooth.sine and smooth.cubic (a number, or an equation: a smoothstep of it), smooth.locus,
+ * smooth.clamp and smooth.clamp_qb (t finite, as smooth.clamp's: QBasic has no NaN) */
+enum { LOCUS = PC_G_LINEAR + 1, CLAMP, CLAMP_QB };
+static int numeric(lua_State *L, int kind) {
+    pc_gfun g = {kind, {0, 0, 0, 0, 0}};
+    if (kind < LOCUS && lua_type(L, 1) != LUA_TNUMBER && pcl_eq_smooth(L, 1, &g)) return 1;
+    pcl_val a[3] = {0};
     PCL_READ(L, a);
-    return push_value(L, a[0].x, f(a[0].x));
+    if (kind < LOCUS) return push_value(L, a[0].x, pc_gfun_eval(&g, a[0].x));
+    if (kind == LOCUS) lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
+    else lua_pushnumber(L, kind == CLAMP ? pc_smooth_clamp(a[0].x) : pc_smooth_clamp_qb(a[0].x, a[1].x));
+    return 1;
 }
-static int l_sine(lua_State *L) {
-    static const pc_gfun g = {PC_G_SINE, {0, 0, 0, 0, 0}};
-    return step(L, &g, pc_smooth_sine);
-}
-static int l_cubic(lua_State *L) {
-    static const pc_gfun g = {PC_G_CUBIC, {0, 0, 0, 0, 0}};
-    return step(L, &g, pc_smooth_cubic);
-}
+static int l_sine(lua_State *L) { return numeric(L, PC_G_SINE); }
+static int l_cubic(lua_State *L) { return numeric(L, PC_G_CUBIC); }
+static int l_locus(lua_State *L) { return numeric(L, LOCUS); }
+static int l_clamp(lua_State *L) { return numeric(L, CLAMP); }
+static int l_clamp_qb(lua_State *L) { return numeric(L, CLAMP_QB); }
+static const pcl_arg locus_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_NUMIN("t0", 0, 1), PCL_END};
+static const pcl_arg clamp_qb_args[] = {A_NUM("t"), A_NUMOPT("prev", 0, NULL), PCL_END};
 
 /* the smoothsteps the curve bindings recognise by identity */
 int pcl_smooth_isfunc(lua_CFunction f, int *kind) {
@@ -102,66 +103,35 @@ static int l_half(lua_State *L) {
     return make(L, a[0].x, a[1].x, a[2].x, &a[3], 4);
 }
 
-static const pcl_arg locus_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_NUMIN("t0", 0, 1), PCL_END};
-static int l_locus(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
-    return 1;
-}
-
-static int l_clamp(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_smooth_clamp(a[0].x));
-    return 1;
-}
-
-/* t finite, as smooth.clamp's (QBasic has no NaN) */
-static const pcl_arg clamp_qb_args[] = {A_NUM("t"), A_NUMOPT("prev", 0, NULL), PCL_END};
-static int l_clamp_qb(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_smooth_clamp_qb(a[0].x, a[1].x));
-    return 1;
-}
-
 /* ---- the half-spline object ------------------------------------------------------------- */
 
-static int hs_call(lua_State *L) {
+/* g(t) (t an equation: an equation) and g:deriv(t) */
+static int hs_at(lua_State *L, int deriv) {
     pc_hspline *h = pcl_tohspline(L, 1);
-    if (h && lua_type(L, 2) != LUA_TNUMBER) {
+    if (!deriv && h && lua_type(L, 2) != LUA_TNUMBER) {
         pc_gfun g = {PC_G_HALF, *h};
         if (pcl_eq_smooth(L, 2, &g)) return 1;
     }
     pcl_val a[1] = {{.x = lua_tonumber(L, 2)}};
     if (!h || lua_type(L, 2) != LUA_TNUMBER || !isfinite(a[0].x)) h = PCL_READ(L, a);   /* the message */
-    return eval_at(L, h, a[0].x, 1);
-}
-
-static int hs_deriv(lua_State *L) {
-    pcl_val a[1] = {0};
-    pc_hspline *h = PCL_READ(L, a);
-    if (pc_hspline_check(h, a[0].x) != PC_OK) return eval_at(L, h, a[0].x, 1);   /* its message */
+    if (!deriv || pc_hspline_check(h, a[0].x) != PC_OK) return eval_at(L, h, a[0].x, 1);
     double d = pc_hspline_deriv(h, a[0].x);
     /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
     if (!isfinite(d)) return pcl_fail(L, "the slope at t = %s is infinite (a degree below 1)", pcl_pushnum(L, a[0].x));
     lua_pushnumber(L, d);
     return 1;
 }
+static int hs_call(lua_State *L) { return hs_at(L, 0); }
+static int hs_deriv(lua_State *L) { return hs_at(L, 1); }
 
+/* g.n g.m g.t0 g.c1 g.c2 g.v (the junction ordinate v(t0)), then the methods */
 static int hs_index(lua_State *L) {
     pc_hspline *h = pcl_tohspline(L, 1);
     const char *k = lua_tostring(L, 2);
+    double x;
     if (!h || !k) return 0;
-    if (!strcmp(k, "n")) lua_pushnumber(L, h->n);
-    else if (!strcmp(k, "m")) lua_pushnumber(L, h->m);
-    else if (!strcmp(k, "t0")) lua_pushnumber(L, h->t0);
-    else if (!strcmp(k, "c1")) lua_pushnumber(L, h->c1);
-    else if (!strcmp(k, "c2")) lua_pushnumber(L, h->c2);
-    else if (!strcmp(k, "v")) lua_pushnumber(L, pc_hspline_eval(h, h->t0));
-    else if (!strcmp(k, "deriv")) lua_getfield(L, lua_upvalueindex(1), "deriv");
-    else return 0;
+    if (pc_hspline_field(h, k, &x)) lua_pushnumber(L, x);
+    else lua_getfield(L, lua_upvalueindex(1), k);
     return 1;
 }
 

@@ -61,11 +61,29 @@ static void test_errors(void **state) {
     assert_true(r.re == 7 && r.im == 7);   /* untouched on error */
 }
 
+/* conj(3 + 4i) = 3 - 4i, |3 + 4i| = 5, arg(-1) = pi, e^(i pi) = -1 */
+static void test_functions(void **state) {
+    (void)state;
+    pc_cnum z = {3, 4}, r;
+    assert_int_equal(pc_cnum_fn('c', z, &r), PC_OK);
+    assert_true(r.re == 3 && r.im == -4);
+    assert_int_equal(pc_cnum_fn('a', z, &r), PC_OK);
+    assert_true(r.re == 5 && r.im == 0);
+    pc_cnum_fn('g', (pc_cnum){-1, 0}, &r);
+    assert_float_equal(r.re, 3.14159265358979323846, 1e-15);
+    pc_cnum_fn('e', (pc_cnum){0, 3.14159265358979323846}, &r);
+    assert_float_equal(r.re, -1, 1e-15);
+    assert_float_equal(r.im, 0, 1e-15);
+    assert_int_equal(pc_cnum_fn('e', (pc_cnum){1000, 0}, &r), PC_ENONFINITE);
+    assert_int_equal(pc_cnum_fn('?', z, &r), PC_EDOMAIN);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ops),
         cmocka_unit_test(test_powers),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_functions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

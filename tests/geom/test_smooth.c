@@ -175,12 +175,28 @@ static void test_gfun(void **state) {
     assert_string_equal(pc_strerror(PC_ENOBRACKET), "no sign change: the interval brackets no root");
 }
 
+/* the fields of the half-spline (2, 3, 0.4): c1 = m/((n - n t0 + m t0) t0^(n-1)) = 3/(2.4 * 0.4) */
+static void test_fields(void **state) {
+    (void)state;
+    pc_hspline h;
+    double x = 0;
+    assert_int_equal(pc_hspline_init(&h, 2, 3, 0.4), PC_OK);
+    assert_int_equal(pc_hspline_field(&h, "c1", &x), 1);
+    assert_float_equal(x, 3 / (2.4 * 0.4), 1e-12);
+    assert_int_equal(pc_hspline_field(&h, "t0", &x), 1);
+    assert_float_equal(x, 0.4, 0);
+    assert_int_equal(pc_hspline_field(&h, "v", &x), 1);
+    assert_float_equal(x, pc_hspline_locus(2, 3, 0.4), 1e-12);
+    assert_int_equal(pc_hspline_field(&h, "deriv", &x), 0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sine_cubic), cmocka_unit_test(test_power),
         cmocka_unit_test(test_hspline),    cmocka_unit_test(test_domain),
         cmocka_unit_test(test_clamp),
         cmocka_unit_test(test_gfun),
+        cmocka_unit_test(test_fields),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
