@@ -1,15 +1,7 @@
-/* Binding of 3-D drawing: the current projection and the drawing of curves as paths.
- *   camera(f)      set the current projection (a map from n-D to 2-D); with one set, every
- *                  drawing call takes n-D points and draws their images
- *   camera(f, {hidden = "dashed"|"hide"|"show"})  and 3-D curves, lines, markers and
- *                  wireframes form a scene whose hidden lines are resolved at write
- *   camera(nil)    back to plain 2-D drawing;  camera() -> the current map or nil
- *   c:draw{...}    a curve as one path: the C path from the object through the current camera
- *                  (or map), WINDOW and VIEW to the canvas, one conversion from world to device
- * and, for stdlib/lua/curves.lua, _tk.draw_curve(c, colour, tol, map, pieces, fname): the same
- * path for plot and the curvilinear systems' lines. */
+/* Binding of 3-D drawing: camera(f), the current projection, and the drawing of curves as one
+ * path (c:draw; _tk.draw_curve for plot and the lines of curvilinear.lua), the C path from the
+ * object through the camera (or a map), WINDOW and VIEW to the canvas (curve_path.h). */
 #include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
@@ -33,11 +25,8 @@ static int l_camera(lua_State *L) {
         lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
         return 1;
     }
-    if (a[0].present) {
-        pc_map *f = pcl_tomap(L, 1);
-        if (!f) return pcl_argfail(L, 1, "must be a map to the plane (or nil), got %s", pcl_shown(L, 1));
-        if (f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
-    }
+    pc_map *f = a[0].obj;
+    if (f && f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
     /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
     pcl_set_hidden_mode(L, a[2].present ? a[2].n : -1);
     lua_settop(L, 1);
@@ -200,7 +189,8 @@ static int tk_nearest(lua_State *L) {
 
 static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */
 static const pcl_arg camera_keys[] = {A_ENUM("hidden", HIDDEN), PCL_END};
-static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_ANY, .flags = PCL_OPT},
+static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_MAP, .flags = PCL_OPT,
+                                       .expect = "a map to the plane (or nil)"},
                                       A_OPTIONS("opts", camera_keys), PCL_END};
 static const pcl_fn fns[] = {
     {.name = "camera", .fn = l_camera, .args = camera_args,

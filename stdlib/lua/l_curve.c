@@ -1,17 +1,6 @@
-/* Binding of the one curve type (stdlib/geom/curve.h) and its constructors, on the declared
- * argument layer (pcl_args.h; c:draw is in l_camera.c, c:each in curves.lua):
- *   bezier{P0, P1, ...}                 Bezier of any degree; weighted points (w*P) make it
- *                                       rational, vectors are control points at infinity
- *   bspline(points, degree [, knots])   B-spline / NURBS; knots "open" (default), "uniform",
- *                                       "periodic" or a list
- *   hermite(points, tangents [, opts])  piecewise cubic Hermite {tin =, u =, closed =}
- *   cubic_spline(points [, opts])       the C2 spline {ends = "natural"|"clamped"|"periodic",
- *                                       d0 =, d1 =, u =}
- *   interpolate(points [, params])      the polynomial curve through the points
- *   curve(f, t0, t1)                    a Lua function of t as a curve
- *   spline2, stroke (via _tk.stroke), fourier: Stepanov's curves (examples 5, 10, 12)
- * All are one userdata "curve".  c(t) is the point, c:xy(t) its coordinates; the methods are
- * in the table _tk.curve_methods so that stdlib/lua/curves.lua adds draw and each. */
+/* Binding of the one curve type (stdlib/geom/curve.h) and its constructors, Stepanov's curves
+ * among them (examples 5, 10, 12).  All are one userdata "curve"; its methods are in the table
+ * _tk.curve_methods, to which l_camera.c adds c:draw and stdlib/lua/curves.lua c:each. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -440,15 +429,6 @@ static int half_fail(lua_State *L, int k, const pc_piece *pc, double s, int i, d
                        "does not extrapolate)", low ? "at least" : "at most", bound, i + 1, low ? "n" : "m", deg);
 }
 
-/* a stroke's piece past its ends, or the core's status */
-static int domain_error(lua_State *L, lcurve *u, double t) {
-    int i;
-    double s;
-    const pc_piece *pc = pc_stroke_past(u->c, t, &i, &s);
-    if (pc) return half_fail(L, 1, pc, s, i, u->c->t1);
-    return pcl_raise_status(L, pcl_name(L), PC_EDOMAIN);
-}
-
 /* A status of an evaluation at t as the message the user reads: at infinity, a zero
  * derivative (zero: what it means, or NULL where the core's message stands), the others. */
 static int at_fail(lua_State *L, int st, double t, const char *zero) {
@@ -458,9 +438,12 @@ static int at_fail(lua_State *L, int st, double t, const char *zero) {
     return pcl_raise_status(L, pcl_name(L), st);
 }
 
+/* the value at t of argument #1, or the error: a stroke's piece past its half-spline's reach */
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
-    int st = pc_curve_eval_h(u->c, t, 0, h);
-    if (st == PC_EDOMAIN) domain_error(L, u, t);
+    int st = pc_curve_eval_h(u->c, t, 0, h), i;
+    double s;
+    const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(u->c, t, &i, &s) : NULL;
+    if (pc) half_fail(L, 1, pc, s, i, u->c->t1);
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
 }
 

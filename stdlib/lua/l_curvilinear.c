@@ -1,12 +1,5 @@
-/* Binding of the coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h, numeric.h):
- *   squash(p [, q])  squash01(p [, q])     the plane onto the open square (examples 26-28)
- *   oblique(C0, r, k, u)                    the oblique projection of examples 32-34
- *   projection(C0, C1, C2, C3)              the projection by four screen points
- *                                           (both are 3-D -> 2-D maps of l_map.c: pr(X), pr:xy, pr.C0)
- *   oresme(lambda [, m [, y0, y1]])         Oresme's lambda-function (example 31)
- *   bisect(f, a, b [, tol])                 bisection (example 30)
- * and, for stdlib/lua/curvilinear.lua, the numeric helpers _tk.bilinear, _tk.frame_point,
- * _tk.frame_coords, _tk.patch_blend. */
+/* Binding of Stepanov's coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h,
+ * numeric.h), and the numeric helpers of stdlib/lua/curvilinear.lua in _tk. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
