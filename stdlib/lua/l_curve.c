@@ -10,6 +10,7 @@
 #include "pcl_curve.h"
 #include "spline.h"
 #include "fourier.h"
+#include "curve_text.h"
 #include "pcl_expr.h"
 
 #define CURVE_MT "curve"
@@ -800,21 +801,9 @@ static int c_index(lua_State *L) {
 static int c_tostring(lua_State *L) {
     lcurve *u = self_curve(L, 1);
     if (!u) return 0;
-    const pc_curve *c = u->c;
-    int n, np;
-    if (pc_curve_fourier_coefs(c, &n))
-        lua_pushfstring(L, "fourier(%d points, %d-D)", 2 * n, c->dim);
-    else if (pc_curve_stroke_pieces(c, &np) && !strcmp(u->kind, "spline2"))
-        lua_pushfstring(L, "spline2(%d-D)", c->dim);
-    else if (np)
-        lua_pushfstring(L, "stroke(%d nodes, %d pieces, %d-D%s)", c->closed ? np : np + 1, np, c->dim,
-                        c->closed ? ", closed" : "");
-    else if (c->kind == PC_CURVE_FUNC)
-        lua_pushfstring(L, "%s(%d-D, t in [%s, %s])", u->kind, c->dim, pcl_pushnum(L, c->t0),
-                        pcl_pushnum(L, c->t1));
-    else
-        lua_pushfstring(L, "%s(%d-D, degree %d, %d control points, t in [%s, %s])", u->kind,
-                        c->dim, c->degree, c->ncp, pcl_pushnum(L, c->t0), pcl_pushnum(L, c->t1));
+    char text[200];
+    pc_curve_text(u->c, u->kind, text, sizeof text);
+    lua_pushstring(L, text);
     return 1;
 }
 
