@@ -530,24 +530,15 @@ static int c_monomial(lua_State *L) {
     const pc_curve *c = u->c;
     if (c->kind == PC_CURVE_FUNC)
         return pcl_fail(L, "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
-    int np = c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 0;
-    if (c->kind == PC_CURVE_BSPLINE)
-        for (int k = c->degree; k < c->ncp; k++) np += c->knots[k] < c->knots[k + 1];
+    int np = pc_curve_npieces(c), n = c->dim, deg, rational;
     if (a[0].x < 1 || a[0].x > np)
         return pcl_argfail(L, 1, "must be from 1 to %d (the curve's pieces), got %s", np, pcl_pushnum(L, a[0].x));
-    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
-    int deg, st = pc_curve_monomial(c, (int)a[0].x - 1, coef, &deg);
+    double rows[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
+    int st = pc_curve_monomial_rows(c, (int)a[0].x - 1, rows, &deg, &rational);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    int n = c->dim, w = n + 1, rational = 0;
-    for (int j = 0; j <= deg; j++)
-        if (fabs(coef[j * w + n] - (j == 0)) > 1e-12) rational = 1;
     lua_createtable(L, n, 1);
     for (int x = 0; x <= n - !rational; x++) {
-        lua_createtable(L, deg + 1, 0);
-        for (int j = 0; j <= deg; j++) {
-            lua_pushnumber(L, coef[j * w + x] + 0.0);
-            lua_rawseti(L, -2, j + 1);
-        }
+        pcl_push_numbers(L, deg + 1, rows + x * (deg + 1));
         if (x < n) lua_rawseti(L, -2, x + 1);
         else lua_setfield(L, -2, "w");
     }
