@@ -342,15 +342,10 @@ static int l_spline2(lua_State *L) {
     pcl_val a[5] = {{0}};
     PCL_READ(L, a);
     int d = a[0].n, lua;
+    pc_gfun g;
     pc_piece pc;
-    memset(&pc, 0, sizeof pc);
-    to_g(L, 5, PC_G_CUBIC, &pc.g, &lua);
-    for (int k = 0; k < d; k++) {
-        pc.a[k] = a[0].v[k];
-        pc.p[k] = a[0].v[k] + a[1].v[k];
-        pc.q[k] = a[2].v[k] - a[3].v[k];
-        pc.b[k] = a[2].v[k];
-    }
+    to_g(L, 5, PC_G_CUBIC, &g, &lua);
+    pc_spline2_piece(d, a[0].v, a[1].v, a[2].v, a[3].v, &g, &pc);
     return push_stroke(L, NULL, d, 1, 0, &pc, lua, 5);
 }
 
@@ -751,17 +746,12 @@ static int c_flatten(lua_State *L) {
         return pcl_raise_status(L, pcl_name(L), st);
     }
     lua_newtable(L);
-    int npl = 0, nv = 0;
-    for (size_t i = 0; i < pl.n; i++) {
-        if (i == 0 || pl.move[i]) {
-            if (i) lua_rawseti(L, -2, ++npl);
-            lua_newtable(L);
-            nv = 0;
+    for (size_t i = 0, start = 0, npl = 0; i < pl.n; i++)   /* one list of points per piece */
+        if (i + 1 == pl.n || pl.move[i + 1]) {
+            pcl_push_values(L, (int)(i + 1 - start), 2, pl.xy + 2 * start, 0);
+            lua_rawseti(L, -2, (lua_Integer)++npl);
+            start = i + 1;
         }
-        pcl_pushpoint(L, 2, pl.xy + 2 * i);
-        lua_rawseti(L, -2, ++nv);
-    }
-    if (pl.n) lua_rawseti(L, -2, ++npl);
     pc_polyline_free(&pl);
     return 1;
 }

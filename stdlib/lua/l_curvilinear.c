@@ -6,7 +6,6 @@
 #include "pcl_args.h"
 #include "pcl_tk.h"
 #include "curvilinear.h"
-#include "map.h"
 #include "numeric.h"
 
 #define ORESME_MT "oresme"
@@ -29,22 +28,13 @@ static int l_squash01(lua_State *L) { return squash_with(L, pc_squash01); }
 
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
-/* The 3-D -> 2-D affine map (x, y, z) -> C0 + x (C1 - C0) + y (C2 - C0) + z (C3 - C0) of the
- * four screen points c[8]; its translation and axes give the same sums as pc_project4. */
-static void push_projection(lua_State *L, const double c[8]) {
-    double axes[6];
-    for (int i = 0; i < 3; i++)
-        for (int d = 0; d < 2; d++) axes[2 * i + d] = c[2 * (i + 1) + d] - c[d];
-    pc_map_frame(pcl_newmap(L), 2, 3, c, axes);
-}
-
 static const pcl_arg oblique_args[] = {A_POINT("C0", 2), A_NUM("r"), A_NUM("k"), A_NUM("u"), PCL_END};
 static int l_oblique(lua_State *L) {
     pcl_val a[4] = {{0}};
     PCL_READ(L, a);
     double c[8];
     pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
-    push_projection(L, c);
+    pc_map_project4(pcl_newmap(L), c);
     return 1;
 }
 
@@ -56,7 +46,7 @@ static int l_projection(lua_State *L) {
     if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
     pcl_point_rows(a, 4, 2, c);
-    push_projection(L, c);
+    pc_map_project4(pcl_newmap(L), c);
     return 1;
 }
 
@@ -122,8 +112,7 @@ static int oresme_len(lua_State *L) {
 
 static int oresme_tostring(lua_State *L) {
     oresme *o = checkoresme(L, "tostring");
-    pcl_pushnum(L, o->lambda);
-    lua_pushfstring(L, "oresme(%s, %d)", lua_tostring(L, -1), o->m);
+    lua_pushfstring(L, "oresme(%s, %d)", pcl_pushnum(L, o->lambda), o->m);
     return 1;
 }
 

@@ -28,6 +28,18 @@ void pc_piece_eval(int d, const pc_piece *pc, double t, double *out) {
     pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, pc_gfun_eval(&pc->g, t), out);
 }
 
+void pc_spline2_piece(int d, const double *A, const double *a, const double *B, const double *b,
+                      const pc_gfun *g, pc_piece *out) {
+    memset(out, 0, sizeof *out);
+    for (int k = 0; k < d; k++) {
+        out->a[k] = A[k];
+        out->p[k] = A[k] + a[k];
+        out->q[k] = B[k] - b[k];
+        out->b[k] = B[k];
+    }
+    out->g = *g;
+}
+
 int pc_stroke_npieces(int nnodes, int closed) {
     if (nnodes < 2) return 0;
     return closed ? nnodes : nnodes - 1;

@@ -30,6 +30,11 @@ typedef struct {
     pc_gfun g;
 } pc_piece;
 
+/* Example 5's piece from A leaving along a to B arriving along b (rows of d): the
+ * quadrilateral A, A + a, B - b, B blended by g. */
+void pc_spline2_piece(int d, const double *A, const double *a, const double *B, const double *b,
+                      const pc_gfun *g, pc_piece *out);
+
 /* X(t) of one piece with its own smoothstep. */
 void pc_piece_eval(int d, const pc_piece *pc, double t, double *out);
 

@@ -225,6 +225,21 @@ static void test_errors(void **state) {
     assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EDIM);
 }
 
+/* example 5's quadrilateral: A, A + a, B - b, B with the smoothstep given */
+static void test_spline2_piece(void **state) {
+    (void)state;
+    double A[2] = {1, 2}, a[2] = {3, 0}, B[2] = {5, 6}, b[2] = {0, 4}, X[2];
+    pc_gfun g = {.kind = PC_G_SINE};
+    pc_piece pc;
+    pc_spline2_piece(2, A, a, B, b, &g, &pc);
+    NEAR(pc.p[0], 4, 0); NEAR(pc.p[1], 2, 0);
+    NEAR(pc.q[0], 5, 0); NEAR(pc.q[1], 2, 0);
+    NEAR(pc.b[1], 6, 0);
+    assert_int_equal(pc.g.kind, PC_G_SINE);
+    pc_piece_eval(2, &pc, 1, X);
+    NEAR(X[0], 5, 1e-15); NEAR(X[1], 6, 1e-15);
+}
+
 /* a smoothstep callback: g(t) = t^2 counting its calls; failing past t = 5 */
 static int calls;
 static int square_g(void *ud, double t, double *g) {
@@ -314,6 +329,7 @@ int main(void) {
         cmocka_unit_test(test_example10),      cmocka_unit_test(test_closed_defaults),
         cmocka_unit_test(test_3d),             cmocka_unit_test(test_errors),
         cmocka_unit_test(test_stroke_callback), cmocka_unit_test(test_stroke_past),
+        cmocka_unit_test(test_spline2_piece),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
