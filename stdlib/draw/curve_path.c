@@ -1,8 +1,19 @@
 /* A curve drawn as one path (curve_path.h). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "curve_path.h"
+
+int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y) {
+    if (!f || f->nin != n) return PC_EDIM;
+    double o[3];
+    pc_map_apply(f, h, o);
+    if (o[2] == 0) return PC_IMPROPER;
+    *x = o[0] / o[2];
+    *y = o[1] / o[2];
+    return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
+}
 
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out) {
     double o[2], ex[2], ey[2];

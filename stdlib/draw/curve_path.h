@@ -8,6 +8,10 @@
 #include "canvas.h"
 #include "curve.h"
 
+/* The image (x, y) under f (to the plane) of the homogeneous n-D value h: PC_OK, PC_EDIM when f
+ * takes points of another dimension (or is NULL), PC_IMPROPER where h goes to infinity,
+ * PC_ENONFINITE. */
+int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y);
 /* The map to screen pixels: f (to the plane; NULL for plain 2-D points) then WINDOW and VIEW. */
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out);
 /* Append to out c over [a, b] flattened through f (NULL: c is 2-D as it is) to within tol,

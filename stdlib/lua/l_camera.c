@@ -35,14 +35,7 @@ static int l_camera(lua_State *L) {
 }
 
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y) {
-    pc_map *f = pcl_camera(L);
-    if (!f || f->nin != n) return PC_EDIM;
-    double o[3];
-    pc_map_apply(f, h, o);
-    if (o[2] == 0) return PC_IMPROPER;
-    *x = o[0] / o[2];
-    *y = o[1] / o[2];
-    return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
+    return pc_map_image_xy(pcl_camera(L), n, h, x, y);
 }
 
 /* ---- flattening through the projection and the window (stdlib/draw/curve_path.h) ---------- */

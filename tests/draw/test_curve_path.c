@@ -22,6 +22,22 @@ static void test_screen_map(void **state) {
     pc_canvas_free(cv);
 }
 
+/* a perspective-like map (x, y, z) -> (x, y) / (z + 1): images, infinity, another dimension */
+static void test_image_xy(void **state) {
+    (void)state;
+    pc_map f;
+    double axes[6] = {1, 0, 0, 1, 0, 0}, o[2] = {0, 0};
+    assert_int_equal(pc_map_frame(&f, 2, 3, o, axes), PC_OK);
+    PC_MAP_AT(&f, 2, 2) = 1;   /* w' = z + w */
+    double x, y, h[4] = {2, 4, 1, 1}, far[4] = {2, 4, -1, 1}, flat[3] = {1, 1, 1};
+    assert_int_equal(pc_map_image_xy(&f, 3, h, &x, &y), PC_OK);
+    assert_float_equal(x, 1, 1e-15);
+    assert_float_equal(y, 2, 1e-15);
+    assert_int_equal(pc_map_image_xy(&f, 3, far, &x, &y), PC_IMPROPER);
+    assert_int_equal(pc_map_image_xy(&f, 2, flat, &x, &y), PC_EDIM);
+    assert_int_equal(pc_map_image_xy(NULL, 3, h, &x, &y), PC_EDIM);
+}
+
 /* a straight segment from (0, 0) to (8, 0) flattened in 4 parts: one unbroken polyline from
  * end to end, the joins kept once */
 static void test_flatten_parts(void **state) {
@@ -81,6 +97,7 @@ static void test_stroke(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_screen_map),
+        cmocka_unit_test(test_image_xy),
         cmocka_unit_test(test_flatten_parts),
         cmocka_unit_test(test_flatten_needs_map),
         cmocka_unit_test(test_stroke),
