@@ -150,6 +150,12 @@ int pc_curve_derivs_n(const pc_curve *c, double t, int order, int side, double *
  * weight coefficients 1, 0, ...), *degree gets the degree.  PC_EDOMAIN for a FUNC curve or a
  * piece out of range. */
 int pc_curve_monomial(const pc_curve *c, int piece, double *coef, int *degree);
+/* The pieces pc_curve_monomial counts: Bezier segments, non-empty B-spline spans (FUNC: 0). */
+int pc_curve_npieces(const pc_curve *c);
+/* pc_curve_monomial by coordinate: rows[x (degree + 1) + j] the coefficient of t^j of the
+ * weighted coordinate x, the weight's last (dim + 1 rows; no -0); *rational is 1 when the
+ * weight polynomial is not 1 (within 1e-12). */
+int pc_curve_monomial_rows(const pc_curve *c, int piece, double *rows, int *degree, int *rational);
 /* Curvature at t: signed in the plane (positive turning counter-clockwise for y up),
  * |C' x C''| / |C'|^3 otherwise.  PC_EZERO where C' = 0. */
 int pc_curve_curvature(const pc_curve *c, double t, double *k);

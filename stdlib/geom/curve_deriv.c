@@ -115,3 +115,24 @@ int pc_curve_monomial(const pc_curve *c, int piece, double *coef, int *degree) {
     *degree = p;
     return pcc_finite((size_t)(p + 1) * w, coef) ? PC_OK : PC_ENONFINITE;
 }
+
+int pc_curve_npieces(const pc_curve *c) {
+    if (c->kind == PC_CURVE_FUNC) return 0;
+    if (c->kind == PC_CURVE_BEZIER) return c->nknots - 1;
+    int n = 0;
+    for (int k = c->degree; k < c->ncp; k++) n += c->knots[k] < c->knots[k + 1];
+    return n;
+}
+
+int pc_curve_monomial_rows(const pc_curve *c, int piece, double *rows, int *degree, int *rational) {
+    double coef[PCC_ROWS * PCC_W];
+    int st = pc_curve_monomial(c, piece, coef, degree);
+    if (st != PC_OK) return st;
+    int p = *degree, w = c->dim + 1;
+    *rational = 0;
+    for (int j = 0; j <= p; j++) {
+        for (int x = 0; x < w; x++) rows[x * (p + 1) + j] = coef[j * w + x] + 0.0;   /* no -0 */
+        if (fabs(coef[j * w + c->dim] - (j == 0)) > 1e-12) *rational = 1;
+    }
+    return PC_OK;
+}

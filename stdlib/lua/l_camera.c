@@ -1,18 +1,11 @@
-/* Binding of 3-D drawing: the current projection and the drawing of curves as paths.
- *   camera(f)      set the current projection (a map from n-D to 2-D); with one set, every
- *                  drawing call takes n-D points and draws their images
- *   camera(f, {hidden = "dashed"|"hide"|"show"})  and 3-D curves, lines, markers and
- *                  wireframes form a scene whose hidden lines are resolved at write
- *   camera(nil)    back to plain 2-D drawing;  camera() -> the current map or nil
- *   c:draw{...}    a curve as one path: the C path from the object through the current camera
- *                  (or map), WINDOW and VIEW to the canvas, one conversion from world to device
- * and, for stdlib/lua/curves.lua, _tk.draw_curve(c, colour, tol, map, pieces, fname): the same
- * path for plot and the curvilinear systems' lines. */
+/* Binding of 3-D drawing: camera(f), the current projection, and the drawing of curves as one
+ * path (c:draw; _tk.draw_curve for plot and the lines of curvilinear.lua), the C path from the
+ * object through the camera (or a map), WINDOW and VIEW to the canvas (curve_path.h). */
 #include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
+#include "curve_path.h"
 
 #define CAMERA_KEY "pointcalc.camera"
 
@@ -32,11 +25,8 @@ static int l_camera(lua_State *L) {
         lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
         return 1;
     }
-    if (a[0].present) {
-        pc_map *f = pcl_tomap(L, 1);
-        if (!f) return pcl_argfail(L, 1, "must be a map to the plane (or nil), got %s", pcl_shown(L, 1));
-        if (f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
-    }
+    pc_map *f = a[0].obj;
+    if (f && f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
     /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
     pcl_set_hidden_mode(L, a[2].present ? a[2].n : -1);
     lua_settop(L, 1);
@@ -45,33 +35,13 @@ static int l_camera(lua_State *L) {
 }
 
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y) {
-    pc_map *f = pcl_camera(L);
-    if (!f || f->nin != n) return PC_EDIM;
-    double o[3];
-    pc_map_apply(f, h, o);
-    if (o[2] == 0) return PC_IMPROPER;
-    *x = o[0] / o[2];
-    *y = o[1] / o[2];
-    return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
+    return pc_map_image_xy(pcl_camera(L), n, h, x, y);
 }
 
-/* ---- flattening through the projection and the window ---------------------------------------- */
+/* ---- flattening through the projection and the window (stdlib/draw/curve_path.h) ---------- */
 
 void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out) {
-    pc_canvas *cv = pcl_canvas(L);
-    double o[2], ex[2], ey[2];
-    pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);
-    pc_world_to_screen(cv, 1, 0, &ex[0], &ex[1]);
-    pc_world_to_screen(cv, 0, 1, &ey[0], &ey[1]);
-    pc_map w;
-    pc_map_identity(&w, 2);
-    for (int r = 0; r < 2; r++) {
-        PC_MAP_AT(&w, r, 0) = ex[r] - o[r];
-        PC_MAP_AT(&w, r, 1) = ey[r] - o[r];
-        PC_MAP_AT(&w, r, 2) = o[r];
-    }
-    if (f) pc_map_compose(&w, f, out);
-    else *out = w;
+    pc_screen_map(pcl_canvas(L), f, out);
 }
 
 int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
@@ -82,23 +52,7 @@ int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const
         f = &scr;
     }
     pcl_callback_state(L);
-    if (!f && c->dim != 2) return PC_EDIM;
-    if (pieces < 1) pieces = 1;
-    for (int i = 0; i < pieces; i++) {
-        double lo = a + (b - a) * i / pieces, hi = i == pieces - 1 ? b : a + (b - a) * (i + 1) / pieces;
-        size_t before = out->n;
-        int st = pc_curve_flatten_map(c, lo, hi, f, tol, out);
-        if (st != PC_OK) return st;
-        /* the next part starts where this one ended: keep one vertex, no break */
-        if (before > 0 && out->n > before && out->xy[2 * before] == out->xy[2 * before - 2] &&
-            out->xy[2 * before + 1] == out->xy[2 * before - 1]) {
-            memmove(out->xy + 2 * before, out->xy + 2 * (before + 1),
-                    sizeof(double) * 2 * (out->n - before - 1));
-            memmove(out->move + before, out->move + before + 1, out->n - before - 1);
-            out->n--;
-        }
-    }
-    return PC_OK;
+    return pc_curve_flatten_parts(c, a, b, pieces, f, tol, out);
 }
 
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname) {
@@ -118,34 +72,16 @@ const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname)
     return f;
 }
 
-/* Draw a screen-space polyline as one path: its vertices are screen points already (the one
- * conversion from world to device was the screen map they were flattened through), so they go
- * to the canvas as they are.  Returns the canvas status (its message in the canvas's error)
- * rather than raising, so that the caller can free the polyline first. */
 int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed) {
-    pc_canvas *cv = pcl_canvas(L);
-    if (pl->n == 0) return PC_OK;
-    uint8_t *verbs = lua_newuserdatauv(L, pl->n, 0);
-    for (size_t i = 0; i < pl->n; i++) verbs[i] = (i == 0 || pl->move[i]) ? PC_PATH_MOVE : PC_PATH_LINE;
-    int rc = pc_path_screen(cv, pl->n, pl->xy, verbs, pl->n, closed, color);
-    lua_pop(L, 1);
-    return rc;   /* the message is in the canvas */
+    return pc_polyline_stroke(pcl_canvas(L), pl, color, closed);
 }
 
-/* The C path of drawing a curve: c flattened through f (NULL: c is 2-D as it is) then WINDOW
- * and VIEW, the one conversion from world to device coordinates, to within tol pixels, and
- * stroked on the canvas as one path (closed when c is, or closed is set, and its polyline is
- * unbroken).  pieces: equal parts to begin the flattening with.  Errors name fname. */
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname) {
     pc_canvas *cv = pcl_canvas(L);
     pc_polyline pl = {0};
-    /* what can be seen: the canvas and a margin as wide as it (a wide pen, a dash pattern
-     * leaving and coming back keep their look) */
-    double m = cv->width > cv->height ? cv->width : cv->height;
-    double clip[4] = {-m, -m, cv->width + m, cv->height + m};
-    pl.clip = clip;
-    int st = pcl_flatten(L, c, c->t0, c->t1, pieces, f, 1, tol, &pl);
+    pcl_callback_state(L);
+    int st = pc_curve_flatten_screen(cv, c, f, pieces, tol, &pl);
     if (st != PC_OK) {
         int capped = st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX;
         pc_polyline_free(&pl);
@@ -162,9 +98,7 @@ void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, doub
         if (st != PC_OK) pcl_raise_status(L, fname, st);
         return;
     }
-    int unbroken = 1;
-    for (size_t i = 1; i < pl.n; i++) unbroken &= !pl.move[i];
-    st = pcl_draw_polyline(L, &pl, color, (c->closed || closed) && unbroken);
+    st = pc_polyline_stroke(cv, &pl, color, (c->closed || closed) && !pc_polyline_broken(&pl));
     pc_polyline_free(&pl);
     if (st != PC_OK) pcl_error(L, "%s: %s", fname, cv->error);
 }
@@ -189,8 +123,7 @@ static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
 
 enum { O_TABLE, O_COLOR, O_TOL, O_MAP, O_CLOSED, O_T, O_BRUSH, O_DOTS, O_QB, O_N };
 static const pcl_arg draw_keys[] = {
-    {.name = "color", .kind = PCL_ANY, .read = read_color, .dflt = -1,
-     .expect = COLOR_EXPECT},
+    {.name = "color", .kind = PCL_ANY, .read = pcl_read_color, .dflt = -1},
     {.name = "tol", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 0.25, .shown = "0.25"},
     {.name = "map", .kind = PCL_ANY}, {.name = "closed", .kind = PCL_BOOLEAN},
     {.name = "t", .kind = PCL_ANY}, {.name = "brush", .kind = PCL_ANY},
@@ -249,7 +182,8 @@ static int tk_nearest(lua_State *L) {
 
 static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */
 static const pcl_arg camera_keys[] = {A_ENUM("hidden", HIDDEN), PCL_END};
-static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_ANY, .flags = PCL_OPT},
+static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_MAP, .flags = PCL_OPT,
+                                       .expect = "a map to the plane (or nil)"},
                                       A_OPTIONS("opts", camera_keys), PCL_END};
 static const pcl_fn fns[] = {
     {.name = "camera", .fn = l_camera, .args = camera_args,

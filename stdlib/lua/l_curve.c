@@ -1,17 +1,6 @@
-/* Binding of the one curve type (stdlib/geom/curve.h) and its constructors, on the declared
- * argument layer (pcl_args.h; c:draw is in l_camera.c, c:each in curves.lua):
- *   bezier{P0, P1, ...}                 Bezier of any degree; weighted points (w*P) make it
- *                                       rational, vectors are control points at infinity
- *   bspline(points, degree [, knots])   B-spline / NURBS; knots "open" (default), "uniform",
- *                                       "periodic" or a list
- *   hermite(points, tangents [, opts])  piecewise cubic Hermite {tin =, u =, closed =}
- *   cubic_spline(points [, opts])       the C2 spline {ends = "natural"|"clamped"|"periodic",
- *                                       d0 =, d1 =, u =}
- *   interpolate(points [, params])      the polynomial curve through the points
- *   curve(f, t0, t1)                    a Lua function of t as a curve
- *   spline2, stroke (via _tk.stroke), fourier: Stepanov's curves (examples 5, 10, 12)
- * All are one userdata "curve".  c(t) is the point, c:xy(t) its coordinates; the methods are
- * in the table _tk.curve_methods so that stdlib/lua/curves.lua adds draw and each. */
+/* Binding of the one curve type (stdlib/geom/curve.h) and its constructors, Stepanov's curves
+ * among them (examples 5, 10, 12).  All are one userdata "curve"; its methods are in the table
+ * _tk.curve_methods, to which l_camera.c adds c:draw and stdlib/lua/curves.lua c:each. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -21,32 +10,34 @@
 #include "pcl_curve.h"
 #include "spline.h"
 #include "fourier.h"
+#include "curve_text.h"
 #include "pcl_expr.h"
 
 #define CURVE_MT "curve"
 static const char CURVE_TAG = 'c';   /* its address tags the type (PCL_SELF_TAG) */
 
-enum { TK_NONE, TK_SPLINE2, TK_STROKE, TK_FOURIER };
-
 typedef struct {
     PCL_SELF;           /* its own address: a forged curve is refused (pcl.h) */
     pc_curve *c;
     const char *kind;   /* the constructor's name (a static string) */
-    int tk, np, n;      /* Stepanov's kinds: pieces of a stroke, n of a Fourier curve */
-    double data[];      /* stroke pieces (pc_piece[np]) or Fourier coefficients */
 } lcurve;
-
-static pc_piece *pieces(lcurve *u) { return (pc_piece *)u->data; }
 
 /* ---- Lua functions called from the core ---------------------------------------------------
  * For curve(f, ...) and for strokes whose smoothstep is a Lua function (pcl.h: a Lua error
  * must not unwind through the core's frames, so the callback keeps it). */
 typedef struct {
     int ref;            /* the Lua function (registry reference) */
-    int dim;
-    int np;             /* > 0: a stroke blended by the Lua smoothstep ref */
-    pc_piece p[];
+    int dim;            /* of the values it returns (curve(f)) */
 } luafn;
+
+static luafn *new_luafn(lua_State *L, int idx, int dim) {
+    luafn *f = malloc(sizeof *f);
+    if (!f) pcl_fail(L, "out of memory");
+    f->dim = dim;
+    lua_pushvalue(L, idx);
+    f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    return f;
+}
 
 static void luafn_free(void *ud) {
     luafn *f = ud;
@@ -55,35 +46,36 @@ static void luafn_free(void *ud) {
     free(f);
 }
 
-/* The value a Lua curve function returned (at the top nres results) as homogeneous h. */
+/* The value a Lua curve function returned (the top nres results) as homogeneous h: its
+ * dimension, or 0 with the message pushed.  dim 0: any dimension (the call that finds it). */
 static int read_result(lua_State *L, int nres, int dim, double *h) {
     int base = lua_gettop(L) - nres + 1;
     pcl_value *v = nres >= 1 ? pcl_tovalue(L, base) : NULL;
-    if (v) {
-        if (v->n != dim) {
-            lua_pushfstring(L, "curve: the function returned a %d-D value, but the curve is %d-D",
-                            v->n, dim);
-            return 0;
-        }
-        memcpy(h, v->h, sizeof(double) * (size_t)(dim + 1));
-        return 1;
-    }
-    if (nres != dim) {
-        lua_pushfstring(L, "curve: the function must return a %d-D point or %d numbers, got %s",
-                        dim, dim, nres ? luaL_typename(L, base) : "nothing");
+    int d = v ? v->n : nres;
+    const char *got = nres ? luaL_typename(L, base) : "nothing", *who = dim ? "curve: the function" : "a curve";
+    if (dim && d != dim) {
+        if (v) lua_pushfstring(L, "curve: the function returned a %d-D value, but the curve is %d-D", d, dim);
+        else lua_pushfstring(L, "curve: the function must return a %d-D point or %d numbers, got %s", dim, dim, got);
         return 0;
     }
-    for (int k = 0; k < dim; k++) {
+    if (d < 1 || d > PC_MAXDIM) {
+        lua_pushfstring(L, "%s must return a point or 1..%d numbers, got %s", who, PC_MAXDIM, got);
+        return 0;
+    }
+    if (v) {
+        memcpy(h, v->h, sizeof(double) * (size_t)(d + 1));
+        return d;
+    }
+    for (int k = 0; k < d; k++) {
         int isnum;
         h[k] = lua_tonumberx(L, base + k, &isnum);
         if (!isnum) {
-            lua_pushfstring(L, "curve: the function must return numbers, got %s",
-                            luaL_typename(L, base + k));
+            lua_pushfstring(L, "%s must return a point or numbers, got %s", who, luaL_typename(L, base + k));
             return 0;
         }
     }
-    h[dim] = 1;
-    return 1;
+    h[d] = 1;
+    return d;
 }
 
 static int luafn_eval(void *ud, double t, int order, double *out) {
@@ -93,80 +85,56 @@ static int luafn_eval(void *ud, double t, int order, double *out) {
     int top = lua_gettop(L);
     if (!lua_checkstack(L, f->dim + 4)) return PC_ENOMEM;
     lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref);
-    if (f->np == 0) {
-        lua_pushnumber(L, t);
-        if (lua_pcall(L, 1, LUA_MULTRET, 0) != LUA_OK) return pcl_callback_failed(L);
-        int ok = read_result(L, lua_gettop(L) - top, f->dim, out);
-        if (!ok) return pcl_callback_failed(L);
-        lua_settop(L, top);
-        return PC_OK;
-    }
-    /* a stroke with a Lua smoothstep: piece floor(t), the ends extrapolating */
-    double fl = floor(t);
-    int i = fl < 0 ? 0 : (fl > f->np - 1 ? f->np - 1 : (int)fl);
-    double s = t - i;
-    lua_pushnumber(L, s);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) return pcl_callback_failed(L);
-    int isnum;
-    double g = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) {
-        lua_pushfstring(L, "curve: the smoothstep g must return a number, got %s",
-                        luaL_typename(L, -1));
-        return pcl_callback_failed(L);
-    }
-    if (!isfinite(g)) {
-        const char *ts = pcl_pushnum(L, s), *gs = pcl_pushnum(L, g);
-        lua_pushfstring(L, "curve: the smoothstep g must return a finite number, got g(%s) = %s",
-                        ts, gs);
-        return pcl_callback_failed(L);
-    }
+    lua_pushnumber(L, t);
+    if (lua_pcall(L, 1, LUA_MULTRET, 0) != LUA_OK) return pcl_callback_failed(L);
+    if (!read_result(L, lua_gettop(L) - top, f->dim, out)) return pcl_callback_failed(L);
     lua_settop(L, top);
-    const pc_piece *p = &f->p[i];
-    pc_qspline(f->dim, p->a, p->p, p->q, p->b, s, g, out);
-    out[f->dim] = 1;
     return PC_OK;
+}
+
+/* a stroke's Lua smoothstep g(t) (pc_gcall) */
+static int luag_eval(void *ud, double t, double *g) {
+    lua_State *L = pcl_current_state();
+    if (!lua_checkstack(L, 4)) return PC_ENOMEM;
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ((luafn *)ud)->ref);
+    lua_pushnumber(L, t);
+    if (pcl_call_number(L, 1, "curve", "the smoothstep g", g) != PC_OK) return PC_EARG;
+    if (isfinite(*g)) return PC_OK;
+    const char *ts = pcl_pushnum(L, t), *gs = pcl_pushnum(L, *g);
+    lua_pushfstring(L, "curve: the smoothstep g must return a finite number, got g(%s) = %s", ts, gs);
+    return pcl_callback_failed(L);
 }
 
 /* ---- the userdata ---------------------------------------------------------------------------- */
 
-static lcurve *newcurve(lua_State *L, pc_curve *c, const char *kind, size_t extra) {
-    lcurve *u = lua_newuserdatauv(L, sizeof(lcurve) + extra, 1);   /* uv 1: a Lua smoothstep */
-    memset(u, 0, sizeof *u);
+void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
+    lcurve *u = lua_newuserdatauv(L, sizeof(lcurve), 0);
     u->self = PCL_SELF_TAG(u, &CURVE_TAG);
     u->c = c;
     u->kind = kind;
     luaL_setmetatable(L, CURVE_MT);
-    return u;
 }
 
-/* Push a new curve object for c (or raise the core's status, naming the call, when c is NULL);
- * kind NULL: the constructor's declared name (a static string). */
-static lcurve *pushcurve(lua_State *L, pc_curve *c, int status, const char *kind, size_t extra) {
-    if (!c) pcl_raise_status(L, pcl_name(L), status);
-    if (!kind) kind = pcl_name(L);
-    return newcurve(L, c, kind, extra);
+/* kind NULL: the constructor's declared name (a static string) */
+int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
+    if (!c) return pcl_raise_status(L, pcl_name(L), *st);
+    pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
+    return 1;
+}
+
+static int genuine(lua_State *L, int idx, const lcurve *u) {
+    return lua_rawlen(L, idx) >= sizeof *u && u->self == PCL_SELF_TAG(u, &CURVE_TAG);
 }
 
 /* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
 static lcurve *tocurve(lua_State *L, int idx) {
     lcurve *u = luaL_testudata(L, idx, CURVE_MT);
-    int ok = !u || (lua_rawlen(L, idx) >= sizeof *u && u->self == PCL_SELF_TAG(u, &CURVE_TAG));
-    return pcl_genuine(L, idx, u, ok, "curve");
+    return pcl_genuine(L, idx, u, !u || genuine(L, idx, u), "curve");
 }
 
 pc_curve *pcl_tocurve(lua_State *L, int idx) {
     lcurve *u = tocurve(L, idx);
     return u ? u->c : NULL;
-}
-
-void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
-    (void)newcurve(L, c, kind, 0);
-}
-
-int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
-    if (!c) return pcl_raise_status(L, pcl_name(L), *st);
-    pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
-    return 1;
 }
 
 static void *self_curve(lua_State *L, int idx) {
@@ -184,8 +152,7 @@ static lcurve *read_method(lua_State *L, pcl_val *a, int n) {
 
 static int c_gc(lua_State *L) {
     lcurve *u = luaL_testudata(L, 1, CURVE_MT);
-    /* never a forged one */
-    if (u && lua_rawlen(L, 1) >= sizeof *u && u->self == PCL_SELF_TAG(u, &CURVE_TAG) && u->c) {
+    if (u && genuine(L, 1, u) && u->c) {   /* never a forged one */
         pcl_callback_state(L);
         pc_curve_release(u->c);
         u->c = NULL;
@@ -193,26 +160,18 @@ static int c_gc(lua_State *L) {
     return 0;
 }
 
-/* ---- lists of values ------------------------------------------------------------------------ */
-
-/* "NAME: argument #k ..." or, for an option key, "NAME: option 'key' ..." */
-static int list_fail(lua_State *L, int k, const char *key, const char *fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
-    const char *msg = lua_pushvfstring(L, fmt, ap);
-    va_end(ap);
-    return key ? pcl_keyfail(L, key, "%s", msg) : pcl_argfail(L, k, "%s", msg);
-}
-
 /* The parameters of n nodes given as option key (or argument #k): n numbers, increasing unless
  * any order will do (interpolation: distinct ones, which the core checks). */
 static const double *params(lua_State *L, const pcl_val *v, int k, const char *key, int n, int any) {
     if (!v->present) return NULL;
-    if (v->n != n) list_fail(L, k, key, "must hold %d numbers (one per point), got %d", n, v->n);
-    for (int i = 1; i < n && !any; i++)
+    const char *bad = NULL;
+    if (v->n != n) bad = lua_pushfstring(L, "must hold %d numbers (one per point), got %d", n, v->n);
+    for (int i = 1; !bad && !any && i < n; i++)
         if (!(v->list[i] > v->list[i - 1]))
-            list_fail(L, k, key, "must increase, but [%d] = %s follows [%d] = %s", i + 1,
-                      pcl_pushnum(L, v->list[i]), i, pcl_pushnum(L, v->list[i - 1]));
+            bad = lua_pushfstring(L, "must increase, but [%d] = %s follows [%d] = %s", i + 1,
+                                  pcl_pushnum(L, v->list[i]), i, pcl_pushnum(L, v->list[i - 1]));
+    if (bad && key) pcl_keyfail(L, key, "%s", bad);
+    if (bad) pcl_argfail(L, k, "%s", bad);
     return v->list;
 }
 
@@ -223,8 +182,7 @@ static int l_bezier(lua_State *L) {
     pcl_val a[1] = {{0}};
     PCL_READ(L, a);
     int st;
-    pushcurve(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), st, NULL, 0);
-    return 1;
+    return pcl_push_made(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), &st, NULL);
 }
 
 /* The knots at arg (bspline, surface.bspline): nil or "open", "uniform", "periodic", or a
@@ -251,24 +209,14 @@ pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int 
     return PC_KNOTS_GIVEN;
 }
 
-/* The knots of bspline: "open", "uniform", "periodic" or a list of numbers. */
-static int read_knots(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    static const char *const kinds[] = {"open", "uniform", "periodic", NULL};
-    (void)a;
-    if (lua_istable(L, idx)) return (out->n = -1), 1;
-    for (int i = 0; lua_type(L, idx) == LUA_TSTRING && kinds[i]; i++)
-        if (!strcmp(lua_tostring(L, idx), kinds[i])) return (out->n = i), 1;
-    return 0;
-}
 static const pcl_arg bspline_args[] = {A_VALUES("points", 2, 0), {.name = "degree", .kind = PCL_INTEGER},
-    {.name = "knots", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_knots,
-     .expect = "\"open\", \"uniform\", \"periodic\" or a list of numbers"}, PCL_END};
+                                       {.name = "knots", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 static int l_bspline(lua_State *L) {
     pcl_val a[3] = {{0}};
     PCL_READ(L, a);
     int m = a[0].n, d = a[0].dim, p = a[1].x < 1 || a[1].x > PC_CURVE_MAXDEG ? 0 : (int)a[1].x;
     double *h = a[0].list;
-    int periodic = a[2].present && a[2].n == 2;
+    int periodic = lua_type(L, 3) == LUA_TSTRING && !strcmp(lua_tostring(L, 3), "periodic");
     if (p < 1 || p > (periodic ? m : m - 1))
         return periodic ? pcl_argfail(L, 2, "must be an integer from 1 to %d (the number of points), got %s",
                                       m, pcl_shown(L, 2))
@@ -280,8 +228,7 @@ static int l_bspline(lua_State *L) {
         return pcl_argfail(L, 3, "leaves no domain: knot [%d] = %s (the start) must be less than knot "
                            "[%d] = %s (the end)", p + 1, pcl_pushnum(L, knots[p]), m + 1, pcl_pushnum(L, knots[m]));
     int st;
-    pushcurve(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), st, NULL, 0);
-    return 1;
+    return pcl_push_made(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), &st, NULL);
 }
 
 static const pcl_arg hermite_keys[] = {A_VECTORS("tin"), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
@@ -290,14 +237,12 @@ static const pcl_arg hermite_args[] = {{.name = "points", .kind = PCL_POINTS, .f
 static int l_hermite(lua_State *L) {
     pcl_val a[6] = {{0}};   /* points, tangents, opts, tin, u, closed */
     PCL_READ(L, a);
-    int n = a[0].n;
+    int n = a[0].n, st;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d vectors, got %d", n, a[1].n);
     if (a[3].present && a[3].n != n) return pcl_keyfail(L, "tin", "must hold %d vectors, got %d", n, a[3].n);
-    int st;
     pc_curve *c = pc_curve_hermite(a[0].dim, n, a[0].list, a[1].list, a[3].present ? a[3].list : NULL,
                                    params(L, &a[4], 3, "u", n, 0), (int)a[5].x, &st);
-    pushcurve(L, c, st, NULL, 0);
-    return 1;
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const char *const ENDS[] = {"natural", "clamped", "periodic", NULL};
@@ -314,8 +259,7 @@ static int l_cubic_spline(lua_State *L) {
     int n = a[0].n, st;
     pc_curve *c = pc_curve_cubic_spline(a[0].dim, n, a[0].list, params(L, &a[5], 2, "u", n, 0),
                                         kinds[a[2].n], a[3].v, a[4].v, &st);
-    pushcurve(L, c, st, NULL, 0);
-    return 1;
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static const pcl_arg interpolate_args[] = {A_POINTS("points", 0, 2, PC_CURVE_MAXDEG + 1),
@@ -325,8 +269,7 @@ static int l_interpolate(lua_State *L) {
     PCL_READ(L, a);
     int st;
     pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, params(L, &a[1], 2, NULL, a[0].n, 1), &st);
-    pushcurve(L, c, st, NULL, 0);
-    return 1;
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -341,33 +284,20 @@ static int l_curve(lua_State *L) {
     PCL_READ(L, a);
     int st;
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
-    if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        pushcurve(L, pcl_eq_curve(L, a[1].x, a[2].x, &st), st, "equation", 0);
-        return 1;
-    }
+    if (pcl_isequation(L, 1))                  /* a compiled point equation (l_expr.c) */
+        return pcl_push_made(L, pcl_eq_curve(L, a[1].x, a[2].x, &st), &st, "equation");
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
     lua_call(L, 1, LUA_MULTRET);
-    int nres = lua_gettop(L) - 3;
-    pcl_value *v = nres ? pcl_tovalue(L, 4) : NULL;
-    int d = v ? v->n : nres;
-    for (int i = 0; !v && i < nres; i++)
-        if (lua_type(L, 4 + i) != LUA_TNUMBER)
-            return pcl_fail(L, "a curve must return a point or numbers, got %s", luaL_typename(L, 4 + i));
-    if (d < 1 || d > PC_MAXDIM)
-        return pcl_fail(L, "a curve must return a point or 1..%d numbers, got %s", PC_MAXDIM,
-                        nres ? luaL_typename(L, 4) : "nothing");
-    lua_settop(L, 3);
-    luafn *f = malloc(sizeof *f);
-    if (!f) return pcl_fail(L, "out of memory");
-    f->dim = d;
-    f->np = 0;
-    lua_pushvalue(L, 1);
-    f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    double h[PC_MAXDIM + 1];
+    int d = read_result(L, lua_gettop(L) - 3, 0, h);
+    if (!d) return pcl_fail(L, "%s", lua_tostring(L, -1));
+    luafn *f = new_luafn(L, 1, d);
     pcl_callback_state(L);
-    pushcurve(L, pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, luafn_free, f, &st), st, NULL, 0);
-    return 1;
+    pc_curve *c = pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, luafn_free, f, &st);
+    if (!c) luafn_free(f);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 /* ---- Stepanov's curves ------------------------------------------------------------------------- */
@@ -394,34 +324,16 @@ static int read_g(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return to_g(L, idx, PC_G_CUBIC, &g, &lua);
 }
 
-/* A stroke (or spline2) of np pieces as a curve: C smoothsteps in the core, a Lua one through
- * the callback. */
-static lcurve *push_stroke(lua_State *L, const char *kind, int tk, int d, int np, int closed,
-                           const pc_piece *pc, int lua, int gidx) {
+/* A stroke (or spline2) of np pieces as a curve: C smoothsteps in the core, a Lua one (at
+ * gidx) through the callback. */
+static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed,
+                       const pc_piece *pc, int lua, int gidx) {
     int st;
-    pc_curve *c;
     pcl_callback_state(L);
-    if (lua) {
-        luafn *f = malloc(sizeof *f + sizeof(pc_piece) * (size_t)np);
-        if (!f) pcl_error(L, "%s: out of memory", kind);
-        f->dim = d;
-        f->np = np;
-        memcpy(f->p, pc, sizeof(pc_piece) * (size_t)np);
-        lua_pushvalue(L, gidx);
-        f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
-        c = pc_curve_func(d, 0, np, closed, luafn_eval, luafn_free, f, &st);
-    } else {
-        c = pc_curve_stroke(d, np, pc, closed, &st);
-    }
-    lcurve *u = pushcurve(L, c, st, kind, sizeof(pc_piece) * (size_t)np);
-    u->tk = tk;
-    u->np = np;
-    memcpy(pieces(u), pc, sizeof(pc_piece) * (size_t)np);
-    if (lua) {
-        lua_pushvalue(L, gidx);
-        lua_setiuservalue(L, -2, 1);
-    }
-    return u;
+    luafn *f = lua ? new_luafn(L, gidx, 1) : NULL;
+    pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, lua ? luag_eval : NULL, lua ? luafn_free : NULL, f, &st);
+    if (!c && f) luafn_free(f);
+    return pcl_push_made(L, c, &st, kind);
 }
 
 static const pcl_arg spline2_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("a"), A_SAMEPOINT("B"), A_SAMEVECTOR("b"),
@@ -431,27 +343,15 @@ static int l_spline2(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, lua;
     pc_gfun g;
-    to_g(L, 5, PC_G_CUBIC, &g, &lua);
     pc_piece pc;
-    memset(&pc, 0, sizeof pc);
-    for (int k = 0; k < d; k++) {
-        pc.a[k] = a[0].v[k];
-        pc.p[k] = a[0].v[k] + a[1].v[k];
-        pc.q[k] = a[2].v[k] - a[3].v[k];
-        pc.b[k] = a[2].v[k];
-    }
-    pc.g = g;
-    push_stroke(L, pcl_name(L), TK_SPLINE2, d, 1, 0, &pc, lua, 5);
-    return 1;
+    to_g(L, 5, PC_G_CUBIC, &g, &lua);
+    pc_spline2_piece(d, a[0].v, a[1].v, a[2].v, a[3].v, &g, &pc);
+    return push_stroke(L, NULL, d, 1, 0, &pc, lua, 5);
 }
 
-/* a flat array of numbers from table arg (nil allowed when optional): count entries, NaN for
- * a missing one */
-static double *flat_numbers(lua_State *L, int arg, int count, double *buf, int optional) {
-    if (lua_isnoneornil(L, arg)) {
-        if (optional) return NULL;
-        pcl_error(L, "_tk.stroke: argument #%d missing", arg);
-    }
+/* the flat list of count numbers at arg (NaN for an entry that is none), or NULL for nil */
+static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
+    if (lua_isnoneornil(L, arg)) return NULL;
     luaL_checktype(L, arg, LUA_TTABLE);
     for (int i = 0; i < count; i++) {
         lua_geti(L, arg, i + 1);
@@ -465,32 +365,25 @@ static double *flat_numbers(lua_State *L, int arg, int count, double *buf, int o
 
 /* _tk.stroke(d, closed, nodes, ein, eout, rin, rout, n, m, t0 [, g]) -> curve, or
  * nil, status, bad node (1-based), message.  Arrays are flat (nodes, ein, eout: k rows of d)
- * with NaN for "default"; ein, eout, rin, rout may be nil. */
+ * with NaN for "default"; all but nodes may be nil. */
 static int l_stroke_raw(lua_State *L) {
     lua_settop(L, 11);
-    int d = (int)luaL_checkinteger(L, 1);
-    int closed = lua_toboolean(L, 2);
+    int d = (int)luaL_checkinteger(L, 1), closed = lua_toboolean(L, 2), lua;
     luaL_checktype(L, 3, LUA_TTABLE);
     int k = (int)(luaL_len(L, 3) / (d > 0 ? d : 1));
     if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) pcl_error(L, "_tk.stroke: bad dimension or count");
-    size_t sz = (size_t)k * (size_t)d;
-    double *buf = lua_newuserdatauv(L, sizeof(double) * (sz * 3 + (size_t)k * 5), 0);
-    double *nodes = flat_numbers(L, 3, (int)sz, buf, 0);
-    double *ein = flat_numbers(L, 4, (int)sz, buf + sz, 1);
-    double *eout = flat_numbers(L, 5, (int)sz, buf + 2 * sz, 1);
-    double *rin = flat_numbers(L, 6, k, buf + 3 * sz, 1);
-    double *rout = flat_numbers(L, 7, k, buf + 3 * sz + k, 1);
-    double *n = flat_numbers(L, 8, k, buf + 3 * sz + 2 * k, 1);
-    double *m = flat_numbers(L, 9, k, buf + 3 * sz + 3 * k, 1);
-    double *t0 = flat_numbers(L, 10, k, buf + 3 * sz + 4 * k, 1);
+    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)k * (size_t)(3 * d + 5), 0), *arr[8];
+    for (int i = 0, off = 0; i < 8; i++) {   /* nodes, ein, eout: rows of d; rin, rout, n, m, t0 */
+        int len = i < 3 ? k * d : k;
+        arr[i] = flat_numbers(L, 3 + i, len, buf + off);
+        off += len;
+    }
     pc_gfun g;
-    int lua;
     if (!to_g(L, 11, PC_G_HALF, &g, &lua)) return pcl_error(L, "stroke: option 'g' must be a smoothstep (a function of t), got %s", pcl_shown(L, 11));
-    int np = pc_stroke_npieces(k, closed);
-    pc_stroke_spec spec = {.d = d, .nnodes = k, .closed = closed, .nodes = nodes, .ein = ein,
-                           .eout = eout, .rin = rin, .rout = rout, .n = n, .m = m, .t0 = t0};
+    int np = pc_stroke_npieces(k, closed), bad;
+    pc_stroke_spec spec = {.d = d, .nnodes = k, .closed = closed, .nodes = arr[0], .ein = arr[1], .eout = arr[2],
+                           .rin = arr[3], .rout = arr[4], .n = arr[5], .m = arr[6], .t0 = arr[7]};
     pc_piece *pc = lua_newuserdatauv(L, sizeof(pc_piece) * (size_t)np, 0);
-    int bad;
     int st = pc_stroke_build(&spec, pc, &bad);
     if (st != PC_OK) {
         lua_pushnil(L);
@@ -499,27 +392,17 @@ static int l_stroke_raw(lua_State *L) {
         lua_pushstring(L, pc_strerror(st));
         return 4;
     }
-    if (lua || !lua_isnoneornil(L, 11))
-        for (int i = 0; i < np; i++) pc[i].g = g;
-    push_stroke(L, "stroke", TK_STROKE, d, np, closed, pc, lua, 11);
-    return 1;
+    for (int i = 0; !lua && !lua_isnil(L, 11) && i < np; i++) pc[i].g = g;
+    return push_stroke(L, "stroke", d, np, closed, pc, lua, 11);
 }
 
 static const pcl_arg fourier_args[] = {A_POINTS("points", 0, 2, 0), PCL_END};
 static int l_fourier(lua_State *L) {
     pcl_val a[1] = {{0}};
     PCL_READ(L, a);
-    int count = a[0].n, d = a[0].dim, n = count / 2, m = n + 1, st;
+    int count = a[0].n, st;
     if (count % 2) return pcl_argfail(L, 1, "must hold an even number (2n >= 2) of points, got %d", count);
-    double *samples = a[0].list;
-    lcurve *u = pushcurve(L, pc_curve_fourier(d, n, samples, &st), st, NULL, sizeof(double) * (size_t)(2 * m * d));
-    u->tk = TK_FOURIER;
-    u->n = n;
-    for (int k = 0; k < d; k++) {   /* the coefficients again, for c:coef */
-        st = pc_fourier_coef(n, samples + k, d, u->data + 2 * k * m, u->data + (2 * k + 1) * m);
-        if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "points");
-    }
-    return 1;
+    return pcl_push_made(L, pc_curve_fourier(a[0].dim, count / 2, a[0].list, &st), &st, NULL);
 }
 
 static const pcl_arg sphdir_args[] = {A_NUM("u1"), A_NUM("u2"), PCL_END};
@@ -534,23 +417,12 @@ static int l_sphdir(lua_State *L) {
 
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
-/* A stroke piece's half-spline of fractional degree has no value past its ends: say which. */
 /* Argument #k past the domain of piece i's half-spline (s its own parameter, hi the bound above). */
 static int half_fail(lua_State *L, int k, const pc_piece *pc, double s, int i, double hi) {
     int low = s < 0;
     const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m), *bound = pcl_pushnum(L, low ? 0 : hi);
     return pcl_argfail(L, k, "must be %s %s (piece %d's half-spline has the fractional degree %s = %s and "
                        "does not extrapolate)", low ? "at least" : "at most", bound, i + 1, low ? "n" : "m", deg);
-}
-
-static int domain_error(lua_State *L, lcurve *u, double t) {
-    if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) {
-        double fl = floor(t);
-        int i = fl < 0 ? 0 : (fl > u->np - 1 ? u->np - 1 : (int)fl);
-        pc_piece *pc = &pieces(u)[i];
-        if (pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, t - i) != PC_OK) return half_fail(L, 1, pc, t - i, i, u->np);
-    }
-    return pcl_raise_status(L, pcl_name(L), PC_EDOMAIN);
 }
 
 /* A status of an evaluation at t as the message the user reads: at infinity, a zero
@@ -562,9 +434,12 @@ static int at_fail(lua_State *L, int st, double t, const char *zero) {
     return pcl_raise_status(L, pcl_name(L), st);
 }
 
+/* the value at t of argument #1, or the error: a stroke's piece past its half-spline's reach */
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
-    int st = pc_curve_eval_h(u->c, t, 0, h);
-    if (st == PC_EDOMAIN) domain_error(L, u, t);
+    int st = pc_curve_eval_h(u->c, t, 0, h), i;
+    double s;
+    const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(u->c, t, &i, &s) : NULL;
+    if (pc) half_fail(L, 1, pc, s, i, u->c->t1);
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
 }
 
@@ -650,24 +525,15 @@ static int c_monomial(lua_State *L) {
     const pc_curve *c = u->c;
     if (c->kind == PC_CURVE_FUNC)
         return pcl_fail(L, "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
-    int np = c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 0;
-    if (c->kind == PC_CURVE_BSPLINE)
-        for (int k = c->degree; k < c->ncp; k++) np += c->knots[k] < c->knots[k + 1];
+    int np = pc_curve_npieces(c), n = c->dim, deg, rational;
     if (a[0].x < 1 || a[0].x > np)
         return pcl_argfail(L, 1, "must be from 1 to %d (the curve's pieces), got %s", np, pcl_pushnum(L, a[0].x));
-    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
-    int deg, st = pc_curve_monomial(c, (int)a[0].x - 1, coef, &deg);
+    double rows[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
+    int st = pc_curve_monomial_rows(c, (int)a[0].x - 1, rows, &deg, &rational);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    int n = c->dim, w = n + 1, rational = 0;
-    for (int j = 0; j <= deg; j++)
-        if (fabs(coef[j * w + n] - (j == 0)) > 1e-12) rational = 1;
     lua_createtable(L, n, 1);
     for (int x = 0; x <= n - !rational; x++) {
-        lua_createtable(L, deg + 1, 0);
-        for (int j = 0; j <= deg; j++) {
-            lua_pushnumber(L, coef[j * w + x] + 0.0);
-            lua_rawseti(L, -2, j + 1);
-        }
+        pcl_push_numbers(L, deg + 1, rows + x * (deg + 1));
         if (x < n) lua_rawseti(L, -2, x + 1);
         else lua_setfield(L, -2, "w");
     }
@@ -727,8 +593,7 @@ static int c_sub(lua_State *L) {
         return pcl_fail(L, "need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
                         pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
     int st;
-    pushcurve(L, pc_curve_sub(u->c, a[0].x, a[1].x, &st), st, u->kind, 0);
-    return 1;
+    return pcl_push_made(L, pc_curve_sub(u->c, a[0].x, a[1].x, &st), &st, u->kind);
 }
 
 static const pcl_arg u_arg[] = {A_NUM("u"), PCL_END};
@@ -737,8 +602,7 @@ static int c_insert_knot(lua_State *L) {
     lcurve *u = READ_METHOD(L, a);
     if (u->c->kind != PC_CURVE_BSPLINE) return pcl_fail(L, "not a B-spline (a %s)", u->kind);
     int st;
-    pushcurve(L, pc_curve_insert_knot(u->c, inside(L, u, a[0].x), &st), st, u->kind, 0);
-    return 1;
+    return pcl_push_made(L, pc_curve_insert_knot(u->c, inside(L, u, a[0].x), &st), &st, u->kind);
 }
 
 static const pcl_arg ab_opt[] = {A_NUMOPT("a", 0, NULL), A_NUMOPT("b", 0, NULL), PCL_END};
@@ -767,9 +631,9 @@ static int c_bbox(lua_State *L) {
 }
 
 /* A stroke's piece number at argument #1 (1..np), 0-based. */
-static int piece_no(lua_State *L, lcurve *u, const pcl_val *v) {
-    if (!(v->x >= 1 && v->x <= u->np))
-        pcl_argfail(L, 1, "must be a piece number 1..%d, got %s", u->np, pcl_pushnum(L, v->x));
+static int piece_no(lua_State *L, int np, const pcl_val *v) {
+    if (!(v->x >= 1 && v->x <= np))
+        pcl_argfail(L, 1, "must be a piece number 1..%d, got %s", np, pcl_pushnum(L, v->x));
     return (int)v->x - 1;
 }
 
@@ -779,16 +643,17 @@ static const pcl_arg i_opt[] = {{.name = "i", .kind = PCL_INTEGER, .flags = PCL_
 static int c_controls(lua_State *L) {
     pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
-    int d = u->c->dim;
-    if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) {
-        pc_piece *pc = &pieces(u)[u->np == 1 && !a[0].present ? 0 : piece_no(L, u, &a[0])];
+    int d = u->c->dim, np;
+    const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
+    if (pcs) {
+        const pc_piece *pc = &pcs[np == 1 && !a[0].present ? 0 : piece_no(L, np, &a[0])];
         pcl_pushpoint(L, d, pc->a);
         pcl_pushpoint(L, d, pc->p);
         pcl_pushpoint(L, d, pc->q);
         pcl_pushpoint(L, d, pc->b);
         return 4;
     }
-    if (u->tk == TK_FOURIER) return pcl_fail(L, "a Fourier curve has no pieces");
+    if (pc_curve_fourier_coefs(u->c, NULL)) return pcl_fail(L, "a Fourier curve has no pieces");
     if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no control points", u->kind);
     pcl_push_values(L, u->c->ncp, d, u->c->cp, 1);
     return 1;
@@ -808,24 +673,13 @@ static const pcl_arg piece_args[] = {{.name = "i", .kind = PCL_INTEGER}, A_NUM("
 static int piece_at(lua_State *L, double *x) {
     pcl_val a[2] = {{0}};
     lcurve *u = READ_METHOD(L, a);
-    if (u->tk != TK_STROKE && u->tk != TK_SPLINE2)
-        return pcl_fail(L, "a %s curve has no pieces", u->tk == TK_FOURIER ? "Fourier" : u->kind);
-    int i = piece_no(L, u, &a[0]), d = u->c->dim;
-    double t = a[1].x;
-    pc_piece *pc = &pieces(u)[i];
-    if (lua_getiuservalue(L, 1, 1) != LUA_TNIL) {   /* a Lua smoothstep */
-        lua_pushnumber(L, t);
-        lua_call(L, 1, 1);
-        int isnum;
-        double g = lua_tonumberx(L, -1, &isnum);
-        if (!isnum || !isfinite(g))
-            pcl_fail(L, "the smoothstep g must return a finite number, got %s", isnum ? pcl_pushnum(L, g) : luaL_typename(L, -1));
-        pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, g, x);
-        return d;
-    }
-    if (pc_gfun_check(&pc->g, t) != PC_OK) half_fail(L, 2, pc, t, i, 1);
-    pc_piece_eval(d, pc, t, x);
-    return d;
+    int np;
+    const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
+    if (!pcs) return pcl_fail(L, "a %s curve has no pieces", pc_curve_fourier_coefs(u->c, NULL) ? "Fourier" : u->kind);
+    int i = piece_no(L, np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
+    if (st == PC_EDOMAIN) half_fail(L, 2, &pcs[i], a[1].x, i, 1);
+    if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
+    return u->c->dim;
 }
 
 static int c_piece(lua_State *L) {
@@ -847,12 +701,14 @@ static const pcl_arg k_opt[] = {{.name = "k", .kind = PCL_INTEGER, .flags = PCL_
 static int c_coef(lua_State *L) {
     pcl_val a[1] = {{0}};
     lcurve *u = READ_METHOD(L, a);
-    if (u->tk != TK_FOURIER) return pcl_fail(L, "not a Fourier curve");
-    int d = u->c->dim, m = u->n + 1;
+    int n;
+    const double *coef = pc_curve_fourier_coefs(u->c, &n);
+    if (!coef) return pcl_fail(L, "not a Fourier curve");
+    int d = u->c->dim, m = n + 1;
     if (!(a[0].x >= 1 && a[0].x <= d)) return pcl_argfail(L, 1, "must be a coordinate number 1..%d, got %s", d, pcl_pushnum(L, a[0].x));
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);
-        const double *v = u->data + (2 * ((int)a[0].x - 1) + ab) * m;
+        const double *v = coef + (2 * ((int)a[0].x - 1) + ab) * m;
         for (int j = 0; j < m; j++) {
             lua_pushnumber(L, v[j]);
             lua_rawseti(L, -2, j);
@@ -869,8 +725,7 @@ static int c_map(lua_State *L) {
     pc_map *f = a[0].obj;
     if (f->nin != u->c->dim) return pcl_argfail(L, 1, "takes %d-D points, but the curve is %d-D", f->nin, u->c->dim);
     int st;
-    pushcurve(L, pc_curve_map(u->c, f, &st), st, u->kind, 0);
-    return 1;
+    return pcl_push_made(L, pc_curve_map(u->c, f, &st), &st, u->kind);
 }
 
 /* c:flatten([tol [, map]]) -> a list of polylines (lists of 2-D points) within tol of the curve
@@ -891,17 +746,12 @@ static int c_flatten(lua_State *L) {
         return pcl_raise_status(L, pcl_name(L), st);
     }
     lua_newtable(L);
-    int npl = 0, nv = 0;
-    for (size_t i = 0; i < pl.n; i++) {
-        if (i == 0 || pl.move[i]) {
-            if (i) lua_rawseti(L, -2, ++npl);
-            lua_newtable(L);
-            nv = 0;
+    for (size_t i = 0, start = 0, npl = 0; i < pl.n; i++)   /* one list of points per piece */
+        if (i + 1 == pl.n || pl.move[i + 1]) {
+            pcl_push_values(L, (int)(i + 1 - start), 2, pl.xy + 2 * start, 0);
+            lua_rawseti(L, -2, (lua_Integer)++npl);
+            start = i + 1;
         }
-        pcl_pushpoint(L, 2, pl.xy + 2 * i);
-        lua_rawseti(L, -2, ++nv);
-    }
-    if (pl.n) lua_rawseti(L, -2, ++npl);
     pc_polyline_free(&pl);
     return 1;
 }
@@ -910,44 +760,31 @@ static int c_index(lua_State *L) {
     lcurve *u = self_curve(L, 1);
     if (!u) return 0;
     const char *k = lua_tostring(L, 2);
-    if (k) {
-        pc_curve *c = u->c;
-        if (!strcmp(k, "dim")) { lua_pushinteger(L, c->dim); return 1; }
-        if (!strcmp(k, "kind")) { lua_pushstring(L, u->kind); return 1; }
-        if (!strcmp(k, "lo") || !strcmp(k, "t0")) { lua_pushnumber(L, c->t0); return 1; }
-        if (!strcmp(k, "hi") || !strcmp(k, "t1")) { lua_pushnumber(L, c->t1); return 1; }
-        if (!strcmp(k, "closed")) { lua_pushboolean(L, c->closed); return 1; }
-        if (!strcmp(k, "degree") && c->kind != PC_CURVE_FUNC) { lua_pushinteger(L, c->degree); return 1; }
-        if (!strcmp(k, "pieces")) {
-            if (u->tk == TK_STROKE || u->tk == TK_SPLINE2) lua_pushinteger(L, u->np);
-            else if (c->kind == PC_CURVE_BEZIER) lua_pushinteger(L, c->nknots - 1);
-            else lua_pushinteger(L, 1);
-            return 1;
-        }
-        if (!strcmp(k, "n") && u->tk == TK_FOURIER) { lua_pushinteger(L, u->n); return 1; }
+    const pc_curve *c = u->c;
+    int np, n;
+    if (!k) k = "";
+    if (!strcmp(k, "dim")) lua_pushinteger(L, c->dim);
+    else if (!strcmp(k, "kind")) lua_pushstring(L, u->kind);
+    else if (!strcmp(k, "lo") || !strcmp(k, "t0")) lua_pushnumber(L, c->t0);
+    else if (!strcmp(k, "hi") || !strcmp(k, "t1")) lua_pushnumber(L, c->t1);
+    else if (!strcmp(k, "closed")) lua_pushboolean(L, c->closed);
+    else if (!strcmp(k, "degree") && c->kind != PC_CURVE_FUNC) lua_pushinteger(L, c->degree);
+    else if (!strcmp(k, "pieces") && pc_curve_stroke_pieces(c, &np)) lua_pushinteger(L, np);
+    else if (!strcmp(k, "pieces")) lua_pushinteger(L, c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 1);
+    else if (!strcmp(k, "n") && pc_curve_fourier_coefs(c, &n)) lua_pushinteger(L, n);
+    else {
+        lua_pushvalue(L, 2);
+        lua_rawget(L, lua_upvalueindex(1));
     }
-    lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(1));
     return 1;
 }
 
 static int c_tostring(lua_State *L) {
     lcurve *u = self_curve(L, 1);
     if (!u) return 0;
-    pc_curve *c = u->c;
-    if (u->tk == TK_FOURIER)
-        lua_pushfstring(L, "fourier(%d points, %d-D)", 2 * u->n, c->dim);
-    else if (u->tk == TK_SPLINE2)
-        lua_pushfstring(L, "spline2(%d-D)", c->dim);
-    else if (u->tk == TK_STROKE)
-        lua_pushfstring(L, "stroke(%d nodes, %d pieces, %d-D%s)", c->closed ? u->np : u->np + 1,
-                        u->np, c->dim, c->closed ? ", closed" : "");
-    else if (c->kind == PC_CURVE_FUNC)
-        lua_pushfstring(L, "%s(%d-D, t in [%s, %s])", u->kind, c->dim, pcl_pushnum(L, c->t0),
-                        pcl_pushnum(L, c->t1));
-    else
-        lua_pushfstring(L, "%s(%d-D, degree %d, %d control points, t in [%s, %s])", u->kind,
-                        c->dim, c->degree, c->ncp, pcl_pushnum(L, c->t0), pcl_pushnum(L, c->t1));
+    char text[200];
+    pc_curve_text(u->c, u->kind, text, sizeof text);
+    lua_pushstring(L, text);
     return 1;
 }
 

@@ -1,19 +1,11 @@
-/* Binding of the coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h, numeric.h):
- *   squash(p [, q])  squash01(p [, q])     the plane onto the open square (examples 26-28)
- *   oblique(C0, r, k, u)                    the oblique projection of examples 32-34
- *   projection(C0, C1, C2, C3)              the projection by four screen points
- *                                           (both are 3-D -> 2-D maps of l_map.c: pr(X), pr:xy, pr.C0)
- *   oresme(lambda [, m [, y0, y1]])         Oresme's lambda-function (example 31)
- *   bisect(f, a, b [, tol])                 bisection (example 30)
- * and, for stdlib/lua/curvilinear.lua, the numeric helpers _tk.bilinear, _tk.frame_point,
- * _tk.frame_coords, _tk.patch_blend. */
+/* Binding of Stepanov's coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h,
+ * numeric.h), and the numeric helpers of stdlib/lua/curvilinear.lua in _tk. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_tk.h"
 #include "curvilinear.h"
-#include "map.h"
 #include "numeric.h"
 
 #define ORESME_MT "oresme"
@@ -36,22 +28,13 @@ static int l_squash01(lua_State *L) { return squash_with(L, pc_squash01); }
 
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
-/* The 3-D -> 2-D affine map (x, y, z) -> C0 + x (C1 - C0) + y (C2 - C0) + z (C3 - C0) of the
- * four screen points c[8]; its translation and axes give the same sums as pc_project4. */
-static void push_projection(lua_State *L, const double c[8]) {
-    double axes[6];
-    for (int i = 0; i < 3; i++)
-        for (int d = 0; d < 2; d++) axes[2 * i + d] = c[2 * (i + 1) + d] - c[d];
-    pc_map_frame(pcl_newmap(L), 2, 3, c, axes);
-}
-
 static const pcl_arg oblique_args[] = {A_POINT("C0", 2), A_NUM("r"), A_NUM("k"), A_NUM("u"), PCL_END};
 static int l_oblique(lua_State *L) {
     pcl_val a[4] = {{0}};
     PCL_READ(L, a);
     double c[8];
     pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
-    push_projection(L, c);
+    pc_map_project4(pcl_newmap(L), c);
     return 1;
 }
 
@@ -63,7 +46,7 @@ static int l_projection(lua_State *L) {
     if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
     pcl_point_rows(a, 4, 2, c);
-    push_projection(L, c);
+    pc_map_project4(pcl_newmap(L), c);
     return 1;
 }
 
@@ -129,8 +112,7 @@ static int oresme_len(lua_State *L) {
 
 static int oresme_tostring(lua_State *L) {
     oresme *o = checkoresme(L, "tostring");
-    pcl_pushnum(L, o->lambda);
-    lua_pushfstring(L, "oresme(%s, %d)", lua_tostring(L, -1), o->m);
+    lua_pushfstring(L, "oresme(%s, %d)", pcl_pushnum(L, o->lambda), o->m);
     return 1;
 }
 

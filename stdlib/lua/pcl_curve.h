@@ -1,6 +1,6 @@
 /* Shared by the bindings of curves, surfaces, maps and 3-D drawing (l_curve.c, l_surface.c,
  * l_map.c, l_camera.c): the objects of the one curve, surface and map types, the current
- * projection, and the calls from the core back into Lua. */
+ * projection, and the drawing of curves and polylines (stdlib/draw/curve_path.h). */
 #ifndef PCL_CURVE_H
 #define PCL_CURVE_H
 
@@ -11,15 +11,13 @@
 /* The core object of a curve / surface userdata at idx, or NULL (maps: pcl_tomap, pcl.h). */
 pc_curve *pcl_tocurve(lua_State *L, int idx);
 pc_surface *pcl_tosurface(lua_State *L, int idx);
-/* Push a curve object owning the reference c (kind: the constructor's name, static). */
+/* Push a curve / surface object owning the reference c (kind: the constructor's name, static). */
 void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
-/* Push the curve a core constructor made (kind as above; NULL: the running function's name),
- * or, when it made none (c NULL), raise its status *st (a kept callback error first).  1.
- * st by address: pcl_push_made(L, pc_x(..., &st), &st, k) reads it after pc_x has set it
- * (C leaves the order of evaluating arguments open). */
-int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind);
-/* Push a surface object owning the reference s (not NULL; kind as for curves). */
 void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind);
+/* Push the curve a core constructor made (kind NULL: the running function's name), or, when it
+ * made none (c NULL), raise its status *st (a kept callback error first).  1.  st by address:
+ * pcl_push_made(L, pc_x(..., &st), &st, k) reads it after pc_x has set it. */
+int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind);
 
 /* The knots argument at arg of a B-spline of ncp control points: nil ("open"), "open",
  * "uniform", "periodic", or a non-decreasing list of ncp + degree + 1 numbers (then *knots
@@ -32,22 +30,20 @@ pc_map *pcl_camera(lua_State *L);
 /* The image under the camera of the homogeneous n-D value h: PC_OK, PC_EDIM (no camera for
  * n-D points), PC_IMPROPER (it projects to infinity), PC_ENONFINITE. */
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y);
-/* The map to screen pixels: f (to the plane; NULL for plain 2-D) then WINDOW and VIEW. */
+/* pc_screen_map on the current canvas. */
 void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out);
-/* Flatten c over [a, b] in `pieces` equal parts to begin with, through f (NULL: c is 2-D)
- * and, when screen is set, WINDOW and VIEW: the tolerance is then in pixels and the
- * polyline in screen coordinates. */
+/* pc_curve_flatten_parts of c over [a, b] through f, and WINDOW and VIEW when screen is set
+ * (the tolerance is then in pixels and the polyline in screen coordinates). */
 int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
                 int screen, double tol, pc_polyline *out);
 /* The projection to use for drawing a dim-D object with the map at idx (none or nil: the
  * camera); raises a clear error when there is none. */
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname);
-/* Draw a screen-space polyline as one path (its vertices go to the canvas as they are); the
- * canvas status (message in the canvas). */
+/* pc_polyline_stroke on the current canvas (the message of a failure in the canvas). */
 int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed);
-/* Draw c as one path: flattened through f (NULL: c is 2-D), WINDOW and VIEW (the one
- * conversion from world to device coordinates) to within tol pixels, starting from `pieces`
- * equal parts; closed when c is or `closed` is set.  Raises errors naming fname. */
+/* Draw c as one path: flattened through f (NULL: c is 2-D), WINDOW and VIEW to within tol
+ * pixels from `pieces` equal parts, into the scene of a hidden-line camera or onto the canvas,
+ * closed when c is or `closed` is set.  Raises errors naming fname. */
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname);
 

@@ -1,6 +1,5 @@
 /* Shared by the toolkit bindings (l_smooth.c, l_curve.c, l_curvilinear.c, l_complex.c): the
- * hooks through which the curve builders recognise the smoothsteps of l_smooth.c.  Argument
- * checks are the one layer of pcl.h / pcl_point.h. */
+ * hooks through which the curve builders recognise the smoothsteps of l_smooth.c. */
 #ifndef PCL_TK_H
 #define PCL_TK_H
 
@@ -8,8 +7,8 @@
 #include "status.h"
 #include "smooth.h"
 
-/* From l_smooth.c, for the curve builders: is f smooth.sine or smooth.cubic (*kind is then a
- * pc_gkind)?  The half-spline object at idx, or NULL. */
+/* Is f smooth.sine or smooth.cubic (*kind is then a pc_gkind)?  The half-spline object at
+ * idx, or NULL. */
 int pcl_smooth_isfunc(lua_CFunction f, int *kind);
 pc_hspline *pcl_tohspline(lua_State *L, int idx);
 #endif

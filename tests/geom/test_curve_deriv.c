@@ -114,9 +114,38 @@ static void test_rational(void **state) {
     pc_curve_release(c);
 }
 
+/* the coefficients by coordinate, the pieces counted, the weight polynomial told */
+static void test_monomial_rows(void **state) {
+    (void)state;
+    const double r2 = sqrt(0.5), cp[9] = {1, 0, 1, r2, r2, r2, 0, 1, 1};
+    int st, deg = -1, rational = -1;
+    pc_curve *c = pc_curve_bezier(2, 3, cp, &st);
+    double rows[9], m[9];
+    assert_int_equal(pc_curve_npieces(c), 1);
+    assert_int_equal(pc_curve_monomial_rows(c, 0, rows, &deg, &rational), PC_OK);
+    assert_int_equal(pc_curve_monomial(c, 0, m, &deg), PC_OK);
+    assert_int_equal(deg, 2);
+    assert_int_equal(rational, 1);
+    for (int x = 0; x < 3; x++)
+        for (int j = 0; j <= 2; j++) NEAR(rows[x * 3 + j], m[j * 3 + x], 0);
+    NEAR(rows[6], 1, 1e-15); NEAR(rows[7], 2 * (r2 - 1), 1e-14);   /* the weight's row */
+    assert_int_equal(pc_curve_monomial_rows(c, 1, rows, &deg, &rational), PC_EDOMAIN);
+    pc_curve_release(c);
+    /* a polynomial B-spline (open knots 0 0 0 1 2 2 2: two spans), the weight 1 */
+    const double bp[12] = {0, 0, 1, 1, 2, 1, 3, 0, 1, 4, 2, 1};
+    pc_curve *b = pc_curve_bspline(2, 2, 4, bp, PC_KNOTS_OPEN, NULL, &st);
+    assert_int_equal(pc_curve_npieces(b), 2);
+    assert_int_equal(pc_curve_monomial_rows(b, 1, rows, &deg, &rational), PC_OK);
+    assert_int_equal(rational, 0);
+    NEAR(rows[6], 1, 1e-15); NEAR(rows[7], 0, 0); NEAR(rows[8], 0, 0);
+    assert_true(!signbit(rows[8]));   /* no -0 */
+    pc_curve_release(b);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cubic), cmocka_unit_test(test_joints), cmocka_unit_test(test_rational),
+        cmocka_unit_test(test_monomial_rows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -88,7 +88,7 @@ static void check_flatten(const pc_curve *c, const pc_map *m, double a, double b
         if (!(dev <= tol * 1.0001 && vdev <= tol * 1e-6 + 1e-9))
             fail_msg("way %d: curve to polyline %g, vertex to curve %g, tol %g (%zu vertices)",
                      way, dev, vdev, tol, pl.n);
-        double q[2];
+        double q[2] = {0, 0};
         assert_true(image(c, m, a, q));
         assert_true(fabs(q[0] - pl.xy[0]) <= 1e-9 * (1 + fabs(q[0])));
         assert_true(image(c, m, b, q));

@@ -58,6 +58,13 @@ void pc_project4(const double c[8], double x, double y, double z, double out[2])
     out[1] = c[1] + x * (c[3] - c[1]) + y * (c[5] - c[1]) + z * (c[7] - c[1]);
 }
 
+int pc_map_project4(pc_map *f, const double c[8]) {
+    double axes[6];
+    for (int i = 0; i < 3; i++)
+        for (int d = 0; d < 2; d++) axes[2 * i + d] = c[2 * (i + 1) + d] - c[d];
+    return pc_map_frame(f, 2, 3, c, axes);
+}
+
 int pc_mobius(double z0re, double z0im, double phi, double re, double im, double *wre,
               double *wim) {
     /* the listing's arithmetic: (p1 + i q1) / (p2 + i q2) with

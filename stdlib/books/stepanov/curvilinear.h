@@ -6,6 +6,7 @@
 #define PC_CURVILINEAR_H
 
 #include "status.h"
+#include "map.h"
 
 /* X(t1, t2) = P0 + t1 (P1 - P0) + t2 (P3 - P0) + t1 t2 (P2 - P3 - P1 + P0) (example 2, §4):
  * P0, P1, P2, P3 at the corners (0,0), (1,0), (1,1), (0,1).  d doubles per point. */
@@ -44,6 +45,9 @@ double pc_squash01(double p);
  *   C0 + x (C1 - C0) + y (C2 - C0) + z (C3 - C0). */
 void pc_oblique_axes(const double c0[2], double r, double k, double u, double c[8]);
 void pc_project4(const double c[8], double x, double y, double z, double out[2]);
+/* The same projection as a 3-D -> 2-D map of the one map type (the affine map of the frame C0,
+ * C1 - C0, C2 - C0, C3 - C0): pc_map_frame's status. */
+int pc_map_project4(pc_map *f, const double c[8]);
 
 /* The Moebius automorphism of the unit disc (examples 15, 16):
  *   w = e^(i phi) (z - z0) / (1 - conj(z0) z)

@@ -87,3 +87,11 @@ pc_curve *pc_curve_fourier(int d, int n, const double *samples, int *status) {
     if (status) *status = st;
     return c;
 }
+
+const double *pc_curve_fourier_coefs(const pc_curve *c, int *n) {
+    int whole = c && c->kind == PC_CURVE_FUNC && c->func->eval == fourier_fn && c->t0 == 0 &&
+                c->t1 == 2 * PI;
+    const fourier_curve *f = whole ? c->func->ud : NULL;
+    if (n) *n = f ? f->n : 0;
+    return f ? f->coef : NULL;
+}

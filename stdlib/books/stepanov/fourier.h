@@ -23,5 +23,8 @@ double pc_fourier_deriv(int n, const double *a, const double *b, double u, int o
  * breakpoints at the samples.  PC_EDIM (d out of 1..PC_MAXDIM), PC_EDOMAIN (n < 1), PC_EARG
  * (samples NULL), PC_ENONFINITE, PC_ENOMEM. */
 pc_curve *pc_curve_fourier(int d, int n, const double *samples, int *status);
+/* The coefficients of such a curve over its whole domain, *n its n: per coordinate k, a[0..n]
+ * from 2k(n + 1), then b[0..n]; NULL (and 0) for any other curve, a part or an image of one. */
+const double *pc_curve_fourier_coefs(const pc_curve *c, int *n);
 
 #endif

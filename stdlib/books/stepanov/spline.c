@@ -28,6 +28,18 @@ void pc_piece_eval(int d, const pc_piece *pc, double t, double *out) {
     pc_qspline(d, pc->a, pc->p, pc->q, pc->b, t, pc_gfun_eval(&pc->g, t), out);
 }
 
+void pc_spline2_piece(int d, const double *A, const double *a, const double *B, const double *b,
+                      const pc_gfun *g, pc_piece *out) {
+    memset(out, 0, sizeof *out);
+    for (int k = 0; k < d; k++) {
+        out->a[k] = A[k];
+        out->p[k] = A[k] + a[k];
+        out->q[k] = B[k] - b[k];
+        out->b[k] = B[k];
+    }
+    out->g = *g;
+}
+
 int pc_stroke_npieces(int nnodes, int closed) {
     if (nnodes < 2) return 0;
     return closed ? nnodes : nnodes - 1;
@@ -142,15 +154,44 @@ static double gfun_deriv(const pc_gfun *g, double t, int order) {
 
 typedef struct {
     int d, np;
+    pc_gcall g;               /* NULL: each piece's own smoothstep */
+    void (*gfree)(void *ud);
+    void *gud;
     pc_piece pieces[];
 } stroke_curve;
 
+static void stroke_free(void *ud) {
+    stroke_curve *sc = ud;
+    if (sc->gfree) sc->gfree(sc->gud);
+    free(sc);
+}
+
+/* the piece of s in [0, np]: floor(s), the first and last extrapolating */
+static int piece_of(const stroke_curve *sc, double s) {
+    double f = floor(s);
+    return f < 0 ? 0 : (f > sc->np - 1 ? sc->np - 1 : (int)f);
+}
+
+/* piece i at its own t, blended by the callback g */
+static int piece_by_callback(const stroke_curve *sc, int i, double t, double *out) {
+    double g;
+    int st = sc->g(sc->gud, t, &g);
+    if (st != PC_OK) return st;
+    const pc_piece *pc = &sc->pieces[i];
+    pc_qspline(sc->d, pc->a, pc->p, pc->q, pc->b, t, g, out);
+    return PC_OK;
+}
+
 static int stroke_fn(void *ud, double s, int order, double *out) {
     const stroke_curve *sc = ud;
-    double f = floor(s);
-    int i = f < 0 ? 0 : (f > sc->np - 1 ? sc->np - 1 : (int)f), d = sc->d, w = d + 1;
+    int i = piece_of(sc, s), d = sc->d, w = d + 1;
     double t = s - i;
     const pc_piece *pc = &sc->pieces[i];
+    if (sc->g) {   /* the core differences the callback's values */
+        if (order > 0) return PC_EDOMAIN;
+        out[d] = 1;
+        return piece_by_callback(sc, i, t, out);
+    }
     if (pc_gfun_check(&pc->g, t) != PC_OK) return PC_EDOMAIN;
     double g = pc_gfun_eval(&pc->g, t);
     double g1 = order >= 1 ? gfun_deriv(&pc->g, t, 1) : 0, g2 = order >= 2 ? gfun_deriv(&pc->g, t, 2) : 0;
@@ -168,6 +209,11 @@ static int stroke_fn(void *ud, double s, int order, double *out) {
 }
 
 pc_curve *pc_curve_stroke(int d, int npieces, const pc_piece *pieces, int closed, int *status) {
+    return pc_curve_stroke_fn(d, npieces, pieces, closed, NULL, NULL, NULL, status);
+}
+
+pc_curve *pc_curve_stroke_fn(int d, int npieces, const pc_piece *pieces, int closed, pc_gcall g,
+                             void (*gfree)(void *ud), void *gud, int *status) {
     int st = PC_OK;
     if (d < 1 || d > PC_CURVE_MAXDIM || npieces < 1 || npieces > (1 << 24)) st = PC_EDIM;
     else if (!pieces) st = PC_EARG;
@@ -187,14 +233,46 @@ pc_curve *pc_curve_stroke(int d, int npieces, const pc_piece *pieces, int closed
     }
     pc_curve *c = NULL;
     if (!st) {
-        sc->d = d;
-        sc->np = npieces;
+        *sc = (stroke_curve){.d = d, .np = npieces, .g = g, .gfree = gfree, .gud = gud};
         memcpy(sc->pieces, pieces, sizeof(pc_piece) * (size_t)npieces);
         for (int i = 1; i < npieces; i++) brk[i - 1] = i;
-        c = pc_curve_func_breaks(d, 0, npieces, closed, npieces - 1, brk, stroke_fn, free, sc, &st);
+        /* a callback's function is sampled as a function curve is, from the whole domain */
+        c = pc_curve_func_breaks(d, 0, npieces, closed, g ? 0 : npieces - 1, brk, stroke_fn,
+                                 stroke_free, sc, &st);
     }
     if (!c) free(sc);
     free(brk);
     if (status) *status = st;
     return c;
+}
+
+/* the stroke behind c when c is one over its whole domain */
+static const stroke_curve *stroke_of(const pc_curve *c) {
+    if (!c || c->kind != PC_CURVE_FUNC || c->func->eval != stroke_fn) return NULL;
+    const stroke_curve *sc = c->func->ud;
+    return c->t0 == 0 && c->t1 == sc->np ? sc : NULL;
+}
+
+const pc_piece *pc_curve_stroke_pieces(const pc_curve *c, int *npieces) {
+    const stroke_curve *sc = stroke_of(c);
+    if (npieces) *npieces = sc ? sc->np : 0;
+    return sc ? sc->pieces : NULL;
+}
+
+int pc_stroke_piece_at(const pc_curve *c, int i, double t, double *out) {
+    const stroke_curve *sc = stroke_of(c);
+    if (!sc || i < 0 || i >= sc->np) return PC_EARG;
+    if (sc->g) return piece_by_callback(sc, i, t, out);
+    if (pc_gfun_check(&sc->pieces[i].g, t) != PC_OK) return PC_EDOMAIN;
+    pc_piece_eval(sc->d, &sc->pieces[i], t, out);
+    return PC_OK;
+}
+
+const pc_piece *pc_stroke_past(const pc_curve *c, double s, int *piece, double *t) {
+    const stroke_curve *sc = stroke_of(c);
+    if (!sc || sc->g) return NULL;
+    *piece = piece_of(sc, s);
+    *t = s - *piece;
+    const pc_piece *pc = &sc->pieces[*piece];
+    return pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, *t) != PC_OK ? pc : NULL;
 }

@@ -30,6 +30,11 @@ typedef struct {
     pc_gfun g;
 } pc_piece;
 
+/* Example 5's piece from A leaving along a to B arriving along b (rows of d): the
+ * quadrilateral A, A + a, B - b, B blended by g. */
+void pc_spline2_piece(int d, const double *A, const double *a, const double *B, const double *b,
+                      const pc_gfun *g, pc_piece *out);
+
 /* X(t) of one piece with its own smoothstep. */
 void pc_piece_eval(int d, const pc_piece *pc, double t, double *out);
 
@@ -65,5 +70,26 @@ int pc_stroke_build(const pc_stroke_spec *s, pc_piece *out, int *bad);
  * extrapolate (pc_gfun_check) the evaluation fails with PC_EDOMAIN.  PC_EDIM (d out of
  * 1..PC_CURVE_MAXDIM, npieces < 1), PC_EARG (pieces NULL), PC_ENONFINITE, PC_ENOMEM. */
 pc_curve *pc_curve_stroke(int d, int npieces, const pc_piece *pieces, int closed, int *status);
+
+/* A smoothstep given by a callback (a script's function): g(t) into *g; PC_OK or a failure
+ * status, with which the evaluation fails. */
+typedef int (*pc_gcall)(void *ud, double t, double *g);
+/* pc_curve_stroke with every piece blended by the callback g (NULL: by its own smoothstep);
+ * gfree(gud), if set, when the last curve using it goes (on failure the caller keeps gud).  A
+ * callback's stroke has no breakpoints and no derivatives of its own: the core samples and
+ * differences it as any function curve. */
+pc_curve *pc_curve_stroke_fn(int d, int npieces, const pc_piece *pieces, int closed, pc_gcall g,
+                             void (*gfree)(void *ud), void *gud, int *status);
+/* The pieces of a stroke made by pc_curve_stroke(_fn), over its whole domain [0, npieces], and
+ * *npieces; NULL (and 0) for any other curve, a part or an image of a stroke. */
+const pc_piece *pc_curve_stroke_pieces(const pc_curve *c, int *npieces);
+/* Piece i (0-based) of the stroke c at its own parameter t, any t (the formula extrapolates
+ * where the smoothstep has values): PC_EDOMAIN where its half-spline of fractional degree does
+ * not (pc_gfun_check), PC_EARG for no stroke or no piece i, else the callback's status. */
+int pc_stroke_piece_at(const pc_curve *c, int i, double t, double *out);
+/* When the stroke c has no value at s because the half-spline of s's piece (floor(s), the
+ * ends extrapolating) is of fractional degree and does not extrapolate there: that piece, *i
+ * its index and *t its own parameter; else NULL. */
+const pc_piece *pc_stroke_past(const pc_curve *c, double s, int *i, double *t);
 
 #endif

@@ -184,6 +184,15 @@ static void test_oblique(void **state) {
     pc_project4(c, cos(a), sin(a), 0, X);
     NEAR(X[0], 320 + 150 * cos(M_PI / 6 + a), 1e-12);
     NEAR(X[1], 400 - 150 * .3 * sin(M_PI / 6 + a), 1e-12);
+    /* the same projection as a map: the images of pc_project4 */
+    pc_map f;
+    assert_int_equal(pc_map_project4(&f, c), PC_OK);
+    double h[4] = {cos(a), sin(a), 2, 1}, o[3];
+    pc_map_apply(&f, h, o);
+    pc_project4(c, cos(a), sin(a), 2, X);
+    NEAR(o[0] / o[2], X[0], 1e-12);
+    NEAR(o[1] / o[2], X[1], 1e-12);
+    NEAR(o[1] / o[2], 400 - 150 * .3 * sin(M_PI / 6 + a) - 300, 1e-12);   /* z = 2 goes up 2r */
 }
 
 static void test_mobius(void **state) {

@@ -63,10 +63,50 @@ static void test_exact(void **state) {
     assert_int_equal(pc_fourier_coef(N, f, 2, a, b), PC_ENONFINITE);
 }
 
+/* a Fourier curve gives back the coefficients it was made of; its part, another curve, none */
+static void test_coefs_of_curve(void **state) {
+    (void)state;
+    enum { N = 4 };
+    double xy[2 * N * 2], a[N + 1], b[N + 1];
+    for (int i = 0; i < 2 * N; i++) {
+        double u = i * M_PI / N;
+        xy[2 * i] = 1 + 2 * cos(u) - 3 * sin(2 * u);
+        xy[2 * i + 1] = sin(u);
+    }
+    int st, n = -1;
+    pc_curve *c = pc_curve_fourier(2, N, xy, &st);
+    assert_non_null(c);
+    const double *coef = pc_curve_fourier_coefs(c, &n);
+    assert_non_null(coef);
+    assert_int_equal(n, N);
+    assert_int_equal(pc_fourier_coef(N, xy + 1, 2, a, b), PC_OK);   /* y: from 2(N + 1) on */
+    for (int k = 0; k <= N; k++) {
+        NEAR(coef[2 * (N + 1) + k], a[k], 1e-15);
+        NEAR(coef[3 * (N + 1) + k], b[k], 1e-15);
+    }
+    NEAR(coef[0], 2, 1e-14);        /* x: a0 = 2, a1 = 2, b2 = -3 */
+    NEAR(coef[1], 2, 1e-14);
+    NEAR(coef[N + 1 + 2], -3, 1e-14);
+    NEAR(coef[3 * (N + 1) + 1], 1, 1e-14);   /* y = sin u: b1 = 1 */
+    pc_curve *l, *r;
+    assert_int_equal(pc_curve_split(c, 1, &l, &r), PC_OK);
+    assert_null(pc_curve_fourier_coefs(l, &n));
+    assert_int_equal(n, 0);
+    double cp[] = {0, 0, 1, 1, 1, 1};
+    pc_curve *line = pc_curve_bezier(2, 2, cp, &st);
+    assert_null(pc_curve_fourier_coefs(line, NULL));
+    assert_null(pc_curve_fourier_coefs(NULL, NULL));
+    pc_curve_release(l);
+    pc_curve_release(r);
+    pc_curve_release(line);
+    pc_curve_release(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_interpolates),
         cmocka_unit_test(test_exact),
+        cmocka_unit_test(test_coefs_of_curve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

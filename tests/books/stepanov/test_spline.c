@@ -225,11 +225,111 @@ static void test_errors(void **state) {
     assert_int_equal(pc_stroke_build(&s, pcs, &bad), PC_EDIM);
 }
 
+/* example 5's quadrilateral: A, A + a, B - b, B with the smoothstep given */
+static void test_spline2_piece(void **state) {
+    (void)state;
+    double A[2] = {1, 2}, a[2] = {3, 0}, B[2] = {5, 6}, b[2] = {0, 4}, X[2];
+    pc_gfun g = {.kind = PC_G_SINE};
+    pc_piece pc;
+    pc_spline2_piece(2, A, a, B, b, &g, &pc);
+    NEAR(pc.p[0], 4, 0); NEAR(pc.p[1], 2, 0);
+    NEAR(pc.q[0], 5, 0); NEAR(pc.q[1], 2, 0);
+    NEAR(pc.b[1], 6, 0);
+    assert_int_equal(pc.g.kind, PC_G_SINE);
+    pc_piece_eval(2, &pc, 1, X);
+    NEAR(X[0], 5, 1e-15); NEAR(X[1], 6, 1e-15);
+}
+
+/* a smoothstep callback: g(t) = t^2 counting its calls; failing past t = 5 */
+static int calls;
+static int square_g(void *ud, double t, double *g) {
+    (void)ud;
+    calls++;
+    *g = t * t;
+    return t > 5 ? PC_EARG : PC_OK;
+}
+static int freed;
+static void count_free(void *ud) {
+    (void)ud;
+    freed++;
+}
+
+/* the stroke of two pieces of the square's corners with the callback: X = M + g (N - M) of
+ * each piece at its own t, the ends extrapolating; its pieces come back, those of a part not */
+static void test_stroke_callback(void **state) {
+    (void)state;
+    double sq[8] = {0, 0, 3, 0, 3, 3, 0, 3};
+    pc_stroke_spec s = {.d = 2, .nnodes = 3, .nodes = sq};
+    pc_piece pcs[2];
+    assert_int_equal(pc_stroke_build(&s, pcs, NULL), PC_OK);
+    int st, np = -1;
+    pc_curve *c = pc_curve_stroke_fn(2, 2, pcs, 0, square_g, count_free, NULL, &st);
+    assert_non_null(c);
+    assert_true(pc_curve_stroke_pieces(c, &np) != NULL);
+    assert_int_equal(np, 2);
+    NEAR(pc_curve_stroke_pieces(c, NULL)[1].b[1], 3, 0);
+    double X[2], Y[2], h[3];
+    pc_qspline(2, pcs[1].a, pcs[1].p, pcs[1].q, pcs[1].b, .25, .0625, Y);
+    calls = 0;
+    assert_int_equal(pc_curve_eval_h(c, 1.25, 0, h), PC_OK);   /* piece 2 at t = .25 */
+    assert_int_equal(calls, 1);
+    NEAR(h[0], Y[0], 1e-15);
+    NEAR(h[1], Y[1], 1e-15);
+    NEAR(h[2], 1, 0);
+    assert_int_equal(pc_stroke_piece_at(c, 1, .25, X), PC_OK);
+    NEAR(X[0], Y[0], 1e-15);
+    NEAR(X[1], Y[1], 1e-15);
+    assert_int_equal(pc_stroke_piece_at(c, 1, 6, X), PC_EARG);   /* the callback's status */
+    assert_int_equal(pc_stroke_piece_at(c, 2, .5, X), PC_EARG);  /* no piece 3 */
+    assert_null(pc_stroke_past(c, -1, &np, X));                   /* a callback extrapolates */
+    pc_curve *l, *r;
+    assert_int_equal(pc_curve_split(c, .5, &l, &r), PC_OK);
+    assert_null(pc_curve_stroke_pieces(l, &np));
+    assert_int_equal(np, 0);
+    assert_int_equal(pc_stroke_piece_at(l, 0, .5, X), PC_EARG);
+    pc_curve_release(l);
+    pc_curve_release(r);
+    freed = 0;
+    pc_curve_release(c);
+    assert_int_equal(freed, 1);   /* the callback's data goes with the last curve */
+}
+
+/* a half-spline of fractional degree n = 2.5 does not extrapolate before its piece: the stroke
+ * says which piece and where, and evaluates inside */
+static void test_stroke_past(void **state) {
+    (void)state;
+    double two[4] = {0, 0, 3, 0}, n[2] = {2.5, 2.5};
+    pc_stroke_spec s = {.d = 2, .nnodes = 2, .nodes = two, .n = n};
+    pc_piece pc;
+    assert_int_equal(pc_stroke_build(&s, &pc, NULL), PC_OK);
+    int st, i = -1;
+    double t = 0, X[2], Y[2];
+    pc_curve *c = pc_curve_stroke(2, 1, &pc, 0, &st);
+    assert_true(pc_stroke_past(c, -.5, &i, &t) == pc_curve_stroke_pieces(c, NULL));
+    assert_int_equal(i, 0);
+    NEAR(t, -.5, 0);
+    assert_null(pc_stroke_past(c, .5, &i, &t));
+    assert_int_equal(pc_stroke_piece_at(c, 0, -.5, X), PC_EDOMAIN);
+    assert_int_equal(pc_stroke_piece_at(c, 0, .5, X), PC_OK);
+    pc_piece_eval(2, &pc, .5, Y);
+    NEAR(X[0], Y[0], 0);
+    NEAR(X[1], 0, 0);                     /* a straight stroke stays on its line */
+    assert_true(X[0] > 1 && X[0] < 2);    /* between P = (1, 0) and Q = (2, 0) */
+    double cp[] = {0, 0, 1, 1, 1, 1};
+    pc_curve *line = pc_curve_bezier(2, 2, cp, &st);
+    assert_null(pc_stroke_past(line, -.5, &i, &t));
+    assert_null(pc_curve_stroke_pieces(line, NULL));
+    pc_curve_release(line);
+    pc_curve_release(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dirs),           cmocka_unit_test(test_example5),
         cmocka_unit_test(test_example10),      cmocka_unit_test(test_closed_defaults),
         cmocka_unit_test(test_3d),             cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_stroke_callback), cmocka_unit_test(test_stroke_past),
+        cmocka_unit_test(test_spline2_piece),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,84 @@
+/* A curve drawn as one path (curve_path.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "curve_path.h"
+
+int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y) {
+    if (!f || f->nin != n) return PC_EDIM;
+    double o[3];
+    pc_map_apply(f, h, o);
+    if (o[2] == 0) return PC_IMPROPER;
+    *x = o[0] / o[2];
+    *y = o[1] / o[2];
+    return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
+}
+
+void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out) {
+    double o[2], ex[2], ey[2];
+    pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);
+    pc_world_to_screen(cv, 1, 0, &ex[0], &ex[1]);
+    pc_world_to_screen(cv, 0, 1, &ey[0], &ey[1]);
+    pc_map w;
+    pc_map_identity(&w, 2);
+    for (int r = 0; r < 2; r++) {
+        PC_MAP_AT(&w, r, 0) = ex[r] - o[r];
+        PC_MAP_AT(&w, r, 1) = ey[r] - o[r];
+        PC_MAP_AT(&w, r, 2) = o[r];
+    }
+    if (f) pc_map_compose(&w, f, out);
+    else *out = w;
+}
+
+int pc_curve_flatten_parts(const pc_curve *c, double a, double b, int pieces, const pc_map *f,
+                           double tol, pc_polyline *out) {
+    if (!f && c->dim != 2) return PC_EDIM;
+    if (pieces < 1) pieces = 1;
+    for (int i = 0; i < pieces; i++) {
+        double lo = a + (b - a) * i / pieces, hi = i == pieces - 1 ? b : a + (b - a) * (i + 1) / pieces;
+        size_t before = out->n;
+        int st = pc_curve_flatten_map(c, lo, hi, f, tol, out);
+        if (st != PC_OK) return st;
+        /* the next part starts where this one ended: keep one vertex, no break */
+        if (before > 0 && out->n > before && out->xy[2 * before] == out->xy[2 * before - 2] &&
+            out->xy[2 * before + 1] == out->xy[2 * before - 1]) {
+            memmove(out->xy + 2 * before, out->xy + 2 * (before + 1),
+                    sizeof(double) * 2 * (out->n - before - 1));
+            memmove(out->move + before, out->move + before + 1, out->n - before - 1);
+            out->n--;
+        }
+    }
+    return PC_OK;
+}
+
+int pc_curve_flatten_screen(const pc_canvas *cv, const pc_curve *c, const pc_map *f, int pieces,
+                            double tol, pc_polyline *out) {
+    pc_map scr;
+    pc_screen_map(cv, f, &scr);
+    double m = cv->width > cv->height ? cv->width : cv->height;
+    double clip[4] = {-m, -m, cv->width + m, cv->height + m};
+    out->clip = clip;
+    int st = pc_curve_flatten_parts(c, c->t0, c->t1, pieces, &scr, tol, out);
+    out->clip = NULL;
+    return st;
+}
+
+int pc_polyline_broken(const pc_polyline *pl) {
+    for (size_t i = 1; i < pl->n; i++)
+        if (pl->move[i]) return 1;
+    return 0;
+}
+
+int pc_polyline_stroke(pc_canvas *cv, const pc_polyline *pl, int color, int closed) {
+    if (pl->n == 0) return PC_OK;
+    uint8_t *verbs = malloc(pl->n);
+    if (!verbs) {
+        snprintf(cv->error, sizeof cv->error, "%s", pc_strerror(PC_ENOMEM));
+        return PC_ENOMEM;
+    }
+    for (size_t i = 0; i < pl->n; i++) verbs[i] = (i == 0 || pl->move[i]) ? PC_PATH_MOVE : PC_PATH_LINE;
+    int st = pc_path_screen(cv, pl->n, pl->xy, verbs, pl->n, closed, color);
+    free(verbs);
+    return st;
+}

@@ -1,0 +1,34 @@
+/* A curve of the core drawn as one path on a canvas (c:draw, plot, the lines of surfaces and
+ * of the curvilinear systems): the map to screen pixels (a projection, then WINDOW and VIEW,
+ * the one conversion from world to device coordinates), the adaptive flattening through it
+ * and the stroking of the polyline. */
+#ifndef PC_CURVE_PATH_H
+#define PC_CURVE_PATH_H
+
+#include "canvas.h"
+#include "curve.h"
+
+/* The image (x, y) under f (to the plane) of the homogeneous n-D value h: PC_OK, PC_EDIM when f
+ * takes points of another dimension (or is NULL), PC_IMPROPER where h goes to infinity,
+ * PC_ENONFINITE. */
+int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y);
+/* The map to screen pixels: f (to the plane; NULL for plain 2-D points) then WINDOW and VIEW. */
+void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out);
+/* Append to out c over [a, b] flattened through f (NULL: c is 2-D as it is) to within tol,
+ * starting from `pieces` equal parts (at least 1) that join without a break.  PC_EDIM for a
+ * curve that is not 2-D without f, else pc_curve_flatten_map's status. */
+int pc_curve_flatten_parts(const pc_curve *c, double a, double b, int pieces, const pc_map *f,
+                           double tol, pc_polyline *out);
+/* c over its domain flattened through f and the screen map of cv to within tol pixels into
+ * out (screen coordinates), leaving out what lies beyond the canvas and a margin as wide as
+ * it (a wide pen, a dash pattern leaving and coming back keep their look). */
+int pc_curve_flatten_screen(const pc_canvas *cv, const pc_curve *c, const pc_map *f, int pieces,
+                            double tol, pc_polyline *out);
+/* Does pl break anywhere (a vertex after the first starting a new piece)? */
+int pc_polyline_broken(const pc_polyline *pl);
+/* Stroke the screen-space polyline pl as one path (its vertices go to the canvas as they are),
+ * each piece closed when closed is set: pc_path_screen's status, or PC_ENOMEM (the message in
+ * cv->error either way). */
+int pc_polyline_stroke(pc_canvas *cv, const pc_polyline *pl, int color, int closed);
+
+#endif

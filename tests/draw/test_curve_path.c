@@ -1,0 +1,106 @@
+/* A curve drawn as one path (stdlib/draw/curve_path.h): the screen map of WINDOW, the
+ * flattening in equal parts joined without a break, and the stroke of the polyline. */
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include "curve_path.h"
+
+/* WINDOW (0, 0)-(10, 10) on 11 x 11 pixels: world (x, y) is pixel (x, 10 - y), y up */
+static void test_screen_map(void **state) {
+    (void)state;
+    pc_canvas *cv = pc_canvas_new(11, 11, 16);
+    assert_int_equal(pc_window(cv, 0, 0, 10, 10, 0), PC_OK);
+    pc_map m;
+    pc_screen_map(cv, NULL, &m);
+    double h[3] = {2, 3, 1}, o[3];
+    pc_map_apply(&m, h, o);
+    assert_float_equal(o[0] / o[2], 2, 1e-12);
+    assert_float_equal(o[1] / o[2], 7, 1e-12);
+    pc_canvas_free(cv);
+}
+
+/* a perspective-like map (x, y, z) -> (x, y) / (z + 1): images, infinity, another dimension */
+static void test_image_xy(void **state) {
+    (void)state;
+    pc_map f;
+    double axes[6] = {1, 0, 0, 1, 0, 0}, o[2] = {0, 0};
+    assert_int_equal(pc_map_frame(&f, 2, 3, o, axes), PC_OK);
+    PC_MAP_AT(&f, 2, 2) = 1;   /* w' = z + w */
+    double x, y, h[4] = {2, 4, 1, 1}, far[4] = {2, 4, -1, 1}, flat[3] = {1, 1, 1};
+    assert_int_equal(pc_map_image_xy(&f, 3, h, &x, &y), PC_OK);
+    assert_float_equal(x, 1, 1e-15);
+    assert_float_equal(y, 2, 1e-15);
+    assert_int_equal(pc_map_image_xy(&f, 3, far, &x, &y), PC_IMPROPER);
+    assert_int_equal(pc_map_image_xy(&f, 2, flat, &x, &y), PC_EDIM);
+    assert_int_equal(pc_map_image_xy(NULL, 3, h, &x, &y), PC_EDIM);
+}
+
+/* a straight segment from (0, 0) to (8, 0) flattened in 4 parts: one unbroken polyline from
+ * end to end, the joins kept once */
+static void test_flatten_parts(void **state) {
+    (void)state;
+    double cp[] = {0, 0, 1, 8, 0, 1};
+    int st;
+    pc_curve *c = pc_curve_bezier(2, 2, cp, &st);
+    assert_non_null(c);
+    pc_polyline pl = {0};
+    assert_int_equal(pc_curve_flatten_parts(c, 0, 1, 4, NULL, 0.25, &pl), PC_OK);
+    assert_true(pl.n >= 2);
+    assert_float_equal(pl.xy[0], 0, 1e-12);
+    assert_float_equal(pl.xy[2 * pl.n - 2], 8, 1e-12);
+    for (size_t i = 1; i < pl.n; i++) {
+        assert_true(pl.xy[2 * i] > pl.xy[2 * i - 2]);   /* no vertex twice */
+        assert_float_equal(pl.xy[2 * i + 1], 0, 1e-12);
+    }
+    assert_int_equal(pc_polyline_broken(&pl), 0);
+    pc_polyline_free(&pl);
+    pc_curve_release(c);
+}
+
+/* a 3-D curve needs a map to the plane */
+static void test_flatten_needs_map(void **state) {
+    (void)state;
+    double cp[] = {0, 0, 0, 1, 1, 1, 1, 1};
+    int st;
+    pc_curve *c = pc_curve_bezier(3, 2, cp, &st);
+    pc_polyline pl = {0};
+    assert_int_equal(pc_curve_flatten_parts(c, 0, 1, 1, NULL, 0.25, &pl), PC_EDIM);
+    assert_int_equal((int)pl.n, 0);
+    pc_curve_release(c);
+}
+
+/* the segment from world (1, 5) to (9, 5) under WINDOW lands on row 5, pixels 1..9 */
+static void test_stroke(void **state) {
+    (void)state;
+    pc_canvas *cv = pc_canvas_new(11, 11, 16);
+    assert_int_equal(pc_window(cv, 0, 0, 10, 10, 0), PC_OK);
+    double cp[] = {1, 5, 1, 9, 5, 1};
+    int st;
+    pc_curve *c = pc_curve_bezier(2, 2, cp, &st);
+    pc_polyline pl = {0};
+    assert_int_equal(pc_curve_flatten_screen(cv, c, NULL, 1, 0.25, &pl), PC_OK);
+    assert_null(pl.clip);
+    assert_float_equal(pl.xy[0], 1, 1e-12);
+    assert_float_equal(pl.xy[1], 5, 1e-12);
+    assert_int_equal(pc_polyline_stroke(cv, &pl, 12, 0), PC_OK);
+    for (int x = 0; x < 11; x++) assert_int_equal(pc_point(cv, x, 5), x >= 1 && x <= 9 ? 12 : 0);
+    assert_int_equal(pc_point(cv, 5, 4), 0);
+    pc_polyline_free(&pl);
+    assert_int_equal(pc_polyline_stroke(cv, &pl, 12, 0), PC_OK);   /* nothing to draw */
+    pc_curve_release(c);
+    pc_canvas_free(cv);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_screen_map),
+        cmocka_unit_test(test_image_xy),
+        cmocka_unit_test(test_flatten_parts),
+        cmocka_unit_test(test_flatten_needs_map),
+        cmocka_unit_test(test_stroke),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
