@@ -16,9 +16,10 @@
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
-#include "hidden.h"
+#include "wireframe.h"
 #include "view.h"
 #include "pcl_scene.h"
+#include "pcl_qbscreen.h"
 #include "shaded.h"
 #include "pcl_expr.h"
 
@@ -377,86 +378,6 @@ static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim) {
     return f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
 }
 
-typedef struct {
-    const pc_occluder *occ;
-    pc_map scr;
-    pc_polyline seen, hidden;
-} hidden_ctx;
-
-/* the screen point of the iso-curve at t and whether it is seen; 0 if it has no image */
-static int sample(hidden_ctx *h, const pc_curve *c, double t, double xy[2], int *vis) {
-    double x[PC_MAXDIM], hx[4], s[3];
-    if (pc_curve_eval(c, t, x) != PC_OK) return 0;
-    hx[0] = x[0], hx[1] = x[1], hx[2] = x[2], hx[3] = 1;
-    pc_map_apply(&h->scr, hx, s);
-    if (s[2] == 0) return 0;
-    xy[0] = s[0] / s[2];
-    xy[1] = s[1] / s[2];
-    if (!isfinite(xy[0]) || !isfinite(xy[1])) return 0;
-    *vis = pc_occluder_visible(h->occ, x);
-    return 1;
-}
-
-/* Split the iso-curve c into its seen and hidden runs (samples at least as dense as the
- * flattened path, each change of visibility located by bisection). */
-static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
-    double prev_t = c->t0;
-    int prev_ok = 0, prev_vis = 1, st = PC_OK;
-    for (int k = 0; k <= n && st == PC_OK; k++) {
-        double t = c->t0 + (c->t1 - c->t0) * k / n, xy[2];
-        int vis, ok = sample(h, c, t, xy, &vis);
-        if (ok && prev_ok && vis != prev_vis) {
-            double lo = prev_t, hi = t, mxy[2] = {xy[0], xy[1]};
-            for (int i = 0; i < 30; i++) {   /* where the visibility changes */
-                double mid = (lo + hi) / 2, m[2];
-                int mv;
-                if (!sample(h, c, mid, m, &mv)) break;
-                if (mv == prev_vis) lo = mid; else { hi = mid; mxy[0] = m[0]; mxy[1] = m[1]; }
-            }
-            pc_polyline *from = prev_vis ? &h->seen : &h->hidden, *to = vis ? &h->seen : &h->hidden;
-            st = pc_polyline_push(from, mxy[0], mxy[1], 0);
-            if (st == PC_OK) st = pc_polyline_push(to, mxy[0], mxy[1], 1);
-        }
-        if (ok && st == PC_OK)   /* a run starts after a gap; a change started one above */
-            st = pc_polyline_push(vis ? &h->seen : &h->hidden, xy[0], xy[1], !prev_ok);
-        prev_t = t;
-        prev_ok = ok;
-        if (ok) prev_vis = vis;
-    }
-    return st;
-}
-
-/* The wireframe in the camera's scene: the surface as an occluder, its iso-lines (and its
- * silhouette) as 3-D strokes, all resolved against every surface of the figure at write. */
-static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, int nv, int mesh,
-                           int outline, int color) {
-    const char *fn = pcl_name(L);
-    int st = pc_scene_add_surface(sc, s, mesh), boundary = outline & 2;
-    outline &= 1;
-    for (int dir = 0; dir < 2 && st == PC_OK; dir++) {
-        int n = dir == 0 ? nu : nv;
-        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
-        double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        for (int i = 0; n > 0 && i <= n && st == PC_OK; i++) {
-            pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
-            if (!c) break;
-            st = pcl_scene_curve(L, sc, c, 256, color);
-            pc_curve_release(c);
-        }
-    }
-    if (outline && st == PC_OK) {
-        double *seg;
-        size_t nseg;
-        pc_map scr;
-        pcl_screen_map(L, pcl_camera(L), &scr);
-        st = pc_surface_silhouette(s, &scr, 4 * mesh, 4 * mesh, &seg, &nseg);
-        for (size_t i = 0; st == PC_OK && i < nseg; i++)
-            st = pc_scene_add_polyline(sc, 2, seg + 6 * i, NULL, color, pcl_canvas(L)->pen);
-        if (st == PC_OK || nseg) free(seg);
-    }
-    return st == PC_OK ? 0 : pcl_raise_status(L, fn, st);
-}
-
 /* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f, hidden = "hide"|"dashed",
  * mesh = 48}: the iso-lines u = u0 + i (u1 - u0)/nu and v = v0 + j (v1 - v0)/nv, each
  * flattened and drawn as a path through the map or the camera.  With hidden, the parts the
@@ -475,75 +396,21 @@ static int s_wireframe(lua_State *L) {
     pcl_val a[10] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
     lsurf *u = PCL_READ(L, a);
     const char *fn = pcl_name(L);
-    int nu = (int)a[1].x, nv = (int)a[2].x, color = (int)a[3].x, mode = a[6].n, mesh = (int)a[7].x;
-    int outline = (int)a[8].x, boundary = (int)a[9].x;
-    double tol = a[4].x;
+    pc_wireframe_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .color = (int)a[3].x, .tol = a[4].x, .hidden = a[6].n,
+                           .mesh = (int)a[7].x, .silhouette = (int)a[8].x, .boundary = (int)a[9].x};
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
     const pc_map *f = drawing_map(L, &a[5], s->dim);
-    if (mode && (s->dim != 3 || !f))
+    if (o.hidden && (s->dim != 3 || !f))
         return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
-    if (outline && (s->dim != 3 || !f))
+    if (o.silhouette && (s->dim != 3 || !f))
         return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
+    pc_map scr;
+    pcl_screen_map(L, f, &scr);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
-    pc_scene *sc = !mode && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
-    if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline | boundary << 1, color);
-    hidden_ctx h = {0};
-    pc_occluder *occ = NULL;
-    if (mode) {
-        int st;
-        pcl_screen_map(L, f, &h.scr);
-        occ = pc_occluder_new(s, &h.scr, mesh, mesh, &st);
-        if (!occ) return pcl_raise_status(L, fn, st);
-        h.occ = occ;
-    }
-    pc_stroke pen = cv->pens[cv->pen];   /* to restore after the dashed hidden parts */
-    int st = PC_OK, drawn = PC_OK;
-    for (int dir = 0; dir < 2 && st == PC_OK && drawn == PC_OK; dir++) {
-        int n = dir == 0 ? nu : nv;
-        double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
-        for (int i = 0; n > 0 && i <= n && st == PC_OK && drawn == PC_OK; i++) {
-            pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
-            if (!c) break;
-            pc_polyline pl = {0};
-            st = pcl_flatten(L, c, c->t0, c->t1, 1, f, 1, tol, &pl);
-            if (st == PC_OK && !mode) drawn = pcl_draw_polyline(L, &pl, color, 0);
-            if (st == PC_OK && mode) {
-                int samples = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
-                st = split_visibility(&h, c, samples);
-                if (st == PC_OK) drawn = pcl_draw_polyline(L, &h.seen, color, 0);
-                if (st == PC_OK && drawn == PC_OK && mode == 2 && h.hidden.n) {
-                    double dash[2] = {3, 3};
-                    pc_pen(cv, pen.width, dash, 2);
-                    drawn = pcl_draw_polyline(L, &h.hidden, color, 0);
-                    pc_pen(cv, pen.width, pen.dash, pen.ndash);
-                }
-                h.seen.n = h.hidden.n = 0;
-            }
-            pc_polyline_free(&pl);
-            pc_curve_release(c);
-        }
-    }
-    if (outline && st == PC_OK && drawn == PC_OK) {   /* the silhouette, hidden by the surface too */
-        double *seg;
-        size_t nseg;
-        pcl_screen_map(L, f, &h.scr);
-        st = pc_surface_silhouette(s, &h.scr, 4 * mesh, 4 * mesh, &seg, &nseg);
-        for (size_t i = 0; st == PC_OK && drawn == PC_OK && i < nseg; i++) {
-            double xy[4];
-            for (int e = 0; e < 2; e++) {
-                double hx[4] = {seg[6 * i + 3 * e], seg[6 * i + 3 * e + 1], seg[6 * i + 3 * e + 2], 1}, o[3];
-                pc_map_apply(&h.scr, hx, o);
-                pc_screen_to_world(cv, o[0] / o[2], o[1] / o[2], &xy[2 * e], &xy[2 * e + 1]);
-            }
-            drawn = pc_path(cv, 2, xy, NULL, 0, 0, color);
-        }
-        if (st == PC_OK) free(seg);
-    }
-    pc_polyline_free(&h.seen);
-    pc_polyline_free(&h.hidden);
-    pc_occluder_free(occ);
+    pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
+    int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
+                               : pc_draw_wireframe(cv, s, &scr, &o, &drawn);
     if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
     if (st != PC_OK) return pcl_raise_status(L, fn, st);
     return 0;
