@@ -145,66 +145,36 @@ static int raise_status(lua_State *L, const char *fname, int st) {
     return pcl_error(L, "%s: %s", fname, pc_strerror(st));
 }
 
-/* ---- operators -------------------------------------------------------------------------------- */
+/* ---- operations (checked and worded in the core: pc_expr_apply) ---------------------------- */
 
-static const char *const OPNAME[] = {"add", "subtract", "multiply", "divide", "negate"};
-
-static int arith(lua_State *L, pcl_eq_op op) {
-    pc_expr_pool *p = pool(L);
-    int a = node_of(L, 1), b = op == PCL_EQ_UNM ? 0 : node_of(L, 2);
-    if (a < 0 || b < 0) {
-        if (op == PCL_EQ_UNM) return pcl_error(L, "cannot negate %s", describe(L, 1));
-        return pcl_error(L, "cannot %s %s and %s: equations combine with numbers, points, "
-                         "vectors and equations", OPNAME[op], describe(L, 1), describe(L, 2));
-    }
-    int st = PC_OK, r;
-    switch (op) {
-    case PCL_EQ_ADD: r = pc_expr_add(p, a, b, &st); break;
-    case PCL_EQ_SUB: r = pc_expr_sub(p, a, b, &st); break;
-    case PCL_EQ_MUL: r = pc_expr_mul(p, a, b, &st); break;
-    case PCL_EQ_DIV: r = pc_expr_div(p, a, b, &st); break;
-    default: r = pc_expr_neg(p, a, &st); break;
-    }
-    if (r >= 0) {
-        push_eq(L, r);
-        return 1;
-    }
-    int da = pc_expr_dim(p, a), db = op == PCL_EQ_UNM ? 0 : pc_expr_dim(p, b);
-    if (st == PC_EDIM) {
-        if (da && db && da != db)
-            return pcl_error(L, "cannot %s %s and %s: dimensions cannot be mixed", OPNAME[op],
-                             describe(L, 1), describe(L, 2));
-        if (op == PCL_EQ_MUL)
-            return pcl_error(L, "cannot multiply %s by %s: use dot(u, v) or cross(u, v) for "
-                             "products of vectors", describe(L, 1), describe(L, 2));
-        if (op == PCL_EQ_DIV)
-            return pcl_error(L, "cannot divide %s by %s: divide by numbers or scalar equations",
-                             describe(L, 1), describe(L, 2));
-        return pcl_error(L, "cannot %s %s and %s: points and vectors add only to points and "
-                         "vectors; to shift a point write A + V(dx, dy)", OPNAME[op],
-                         describe(L, 1), describe(L, 2));
-    }
-    if (st == PC_EDOMAIN && op == PCL_EQ_DIV) return pcl_error(L, "division of an equation by zero");
-    return raise_status(L, "equation", st);
+/* the failure st of making or running an equation, in the running declared function's name */
+static int status_fail(lua_State *L, int st) {
+    if (st == PC_ENOMEM) return pcl_fail(L, "out of memory (too many equation nodes)");
+    return pcl_fail(L, "%s", pc_strerror(st));
 }
 
-static int m_add(lua_State *L) { return arith(L, PCL_EQ_ADD); }
-static int m_sub(lua_State *L) { return arith(L, PCL_EQ_SUB); }
-static int m_mul(lua_State *L) { return arith(L, PCL_EQ_MUL); }
-static int m_div(lua_State *L) { return arith(L, PCL_EQ_DIV); }
-static int m_unm(lua_State *L) { return arith(L, PCL_EQ_UNM); }
-
-static int m_pow(lua_State *L) {
-    pc_expr_pool *p = pool(L);
-    int a = node_of(L, 1), b = node_of(L, 2);
-    if (a < 0 || b < 0 || pc_expr_dim(p, a) || pc_expr_dim(p, b))
-        return pcl_error(L, "cannot raise %s to %s: powers are of numbers and scalar equations",
-                         describe(L, 1), describe(L, 2));
-    int st, r = pc_expr_pow(p, a, b, &st);
-    if (r < 0) return raise_status(L, "^", st);
-    push_eq(L, r);
-    return 1;
+/* v of the n operands from stack index first: push the results, or raise the core's message
+ * with each "@k" replaced by what operand k is (a metamethod's message is whole) */
+static int apply(lua_State *L, pc_expr_verb v, int first, int n, const pc_expr_how *how) {
+    int ids[PC_MAXDIM], res[3], given = n < PC_MAXDIM ? n : PC_MAXDIM;
+    char why[512];
+    for (int i = 0; i < given; i++) ids[i] = node_of(L, first + i);
+    int m = pc_expr_apply(pool(L), v, n, ids, how, res, why, sizeof why);
+    if (m < 0) {
+        const char *msg = why;
+        for (int k = given; k >= 1; k--) msg = luaL_gsub(L, msg, lua_pushfstring(L, "@%d", k), describe(L, first + k - 1));
+        return v <= PC_EQV_NEG || v == PC_EQV_POW ? pcl_error(L, "%s", msg) : pcl_fail(L, "%s", msg);
+    }
+    for (int i = 0; i < m; i++) push_eq(L, res[i]);
+    return m;
 }
+
+static int m_add(lua_State *L) { return apply(L, PC_EQV_ADD, 1, 2, NULL); }
+static int m_sub(lua_State *L) { return apply(L, PC_EQV_SUB, 1, 2, NULL); }
+static int m_mul(lua_State *L) { return apply(L, PC_EQV_MUL, 1, 2, NULL); }
+static int m_div(lua_State *L) { return apply(L, PC_EQV_DIV, 1, 2, NULL); }
+static int m_unm(lua_State *L) { return apply(L, PC_EQV_NEG, 1, 1, NULL); }
+static int m_pow(lua_State *L) { return apply(L, PC_EQV_POW, 1, 2, NULL); }
 
 static int m_eq(lua_State *L) {
     leq *a = toeq(L, 1), *b = toeq(L, 2);
@@ -212,128 +182,13 @@ static int m_eq(lua_State *L) {
     return 1;
 }
 
-/* ---- the point functions on equations ------------------------------------------------------- */
-
-/* "NAME: argument #K (WHAT) must be EXPECT, got DESCRIPTION" of the running declared function */
-static int operand_fail(lua_State *L, int k, const char *what, const char *expect) {
-    return pcl_fail(L, "argument #%d (%s) must be %s, got %s", k, what, expect, describe(L, k));
-}
-
-/* a value operand of dot, cross, unit: a vector (weight 0), its node */
-static int vec_arg(lua_State *L, int arg, const char *what, int dim) {
-    int id = node_of(L, arg);
-    if (id < 0 || !pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a vector or a vector equation");
-    int d = pc_expr_dim(pool(L), id);
-    if (dim && d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", arg, what, d, dim);
-    if (pc_expr_weight_class(pool(L), id) != PC_KIND_VECTOR)
-        return pcl_fail(L, "argument #%d (%s) must be a vector (weight 0), got %s whose weight is not 0; a difference of "
-                        "points is a vector, e.g. B - A", arg, what, describe(L, arg));
-    return id;
-}
-
-static int scalar_arg(lua_State *L, int arg, const char *what) {
-    int id = node_of(L, arg);
-    if (id < 0 || pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a number or a scalar equation");
-    return id;
-}
-
-/* push the equation r, or the failure st of making it */
-static int done(lua_State *L, int r, int st) {
-    if (r < 0 && st == PC_ENOMEM) return pcl_fail(L, "out of memory (too many equation nodes)");
-    if (r < 0) return pcl_fail(L, "%s", pc_strerror(st));
-    push_eq(L, r);
-    return 1;
-}
-
-static int fn_lerp(lua_State *L) {
-    pc_expr_pool *p = pool(L);
-    int t = scalar_arg(L, 3, "t");
-    int a = node_of(L, 1), b = node_of(L, 2);
-    if (a < 0) return operand_fail(L, 1, "A", "a point, a vector, a number or an equation");
-    if (b < 0) return operand_fail(L, 2, "B", "a point, a vector, a number or an equation");
-    int da = pc_expr_dim(p, a), db = pc_expr_dim(p, b);
-    if (da != db && da && db) return pcl_fail(L, "argument #2 (B) is %d-D, but argument #1 (A) is %d-D (mixed dimensions)", db, da);
-    if (da != db)
-        return pcl_fail(L, "A and B must both be points (or vectors) or both numbers, got %s and %s", describe(L, 1), describe(L, 2));
-    int st, r = pc_expr_lerp(p, a, b, t, &st);
-    return done(L, r, st);
-}
-
-static int fn_pack(lua_State *L, double weight) {
-    int n = lua_gettop(L);
-    if (n < 1 || n > PC_MAXDIM) return pcl_fail(L, "needs 1 to %d coordinates, got %d", PC_MAXDIM, n);
-    int x[PC_MAXDIM];
-    static const char *xyz[] = {"x", "y", "z"};
-    for (int i = 0; i < n; i++) x[i] = scalar_arg(L, i + 1, i < 3 ? xyz[i] : "coordinate");
-    int st, r = pc_expr_pack(pool(L), n, x, weight, &st);
-    return done(L, r, st);
-}
-
-/* meet(A1, A2, B1, B2) with equations among the ends: K, lambda, mu as equations */
-static int fn_meet(lua_State *L) {
-    static const char *nm[4] = {"A1", "A2", "B1", "B2"};
-    pc_expr_pool *p = pool(L);
-    int id[4], dim = 0;
-    for (int i = 0; i < 4; i++) {
-        id[i] = node_of(L, i + 1);
-        if (id[i] < 0 || !pc_expr_dim(p, id[i])) return operand_fail(L, i + 1, nm[i], "a point or an equation of a point");
-        int d = pc_expr_dim(p, id[i]);
-        if (i == 0) dim = d;
-        else if (d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i], d, dim);
-        if (pc_expr_weight_class(p, id[i]) != PC_KIND_POINT)
-            return pcl_fail(L, "argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a point equation "
-                            "sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
-    }
-    if (dim < 2) return pcl_fail(L, "lines meet in 2-D or more, got %d-D points", dim);
-    int st, lam, mu, k = pc_expr_meet(p, id[0], id[1], id[2], id[3], &lam, &mu, &st);
-    if (k < 0) return done(L, -1, st);
-    push_eq(L, k);
-    push_eq(L, lam);
-    push_eq(L, mu);
-    return 3;
-}
+/* the operands each hook looks at for an equation (-1: all); the order of pcl_eq_op */
+static const signed char HOOK_ARGS[] = {2, 2, 2, 2, 1, 3, 1, 2, 2, 1, -1, -1, 4};
 
 int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
-    int top = lua_gettop(L);
-    switch (op) {
-    case PCL_EQ_ADD: case PCL_EQ_SUB: case PCL_EQ_MUL: case PCL_EQ_DIV:
-        if (!any_eq(L, 1, 2)) return 0;
-        return arith(L, op);
-    case PCL_EQ_UNM:
-        if (!any_eq(L, 1, 1)) return 0;
-        return arith(L, op);
-    case PCL_EQ_LERP:
-        if (!any_eq(L, 1, 3)) return 0;
-        return fn_lerp(L);
-    case PCL_EQ_BAR: {
-        if (!any_eq(L, 1, 1)) return 0;
-        int t = scalar_arg(L, 1, "t"), st;
-        return done(L, pc_expr_bar(pool(L), t, &st), st);
-    }
-    case PCL_EQ_DOT: case PCL_EQ_CROSS: {
-        if (!any_eq(L, 1, 2)) return 0;
-        int u = vec_arg(L, 1, "u", 0);
-        int v = vec_arg(L, 2, "v", pc_expr_dim(pool(L), u)), st;
-        if (op == PCL_EQ_CROSS && pc_expr_dim(pool(L), u) != 2 && pc_expr_dim(pool(L), u) != 3)
-            return pcl_fail(L, "vectors must be 2-D or 3-D, got %d-D", pc_expr_dim(pool(L), u));
-        int r = op == PCL_EQ_DOT ? pc_expr_dot(pool(L), u, v, &st) : pc_expr_cross(pool(L), u, v, &st);
-        return done(L, r, st);
-    }
-    case PCL_EQ_UNIT: {
-        if (!any_eq(L, 1, 1)) return 0;
-        int u = vec_arg(L, 1, "v", 0), st;
-        int r = pc_expr_unit(pool(L), u, &st);
-        if (r < 0 && st == PC_EZERO) return pcl_fail(L, "the zero vector has no direction");
-        return done(L, r, st);
-    }
-    case PCL_EQ_P: case PCL_EQ_V:
-        if (!any_eq(L, 1, top)) return 0;
-        return fn_pack(L, op == PCL_EQ_P ? 1.0 : 0.0);
-    case PCL_EQ_MEET:
-        if (!any_eq(L, 1, 4)) return 0;
-        return fn_meet(L);
-    }
-    return 0;
+    int n = HOOK_ARGS[op] < 0 ? lua_gettop(L) : HOOK_ARGS[op];
+    if (!any_eq(L, 1, n)) return 0;
+    return apply(L, (pc_expr_verb)op, 1, n, NULL);
 }
 
 int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
@@ -352,12 +207,9 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
-    leq *e = toeq(L, idx);
-    if (!e) return 0;
-    if (pc_expr_dim(pool(L), e->id))
-        return pcl_fail(L, "argument #1 (t) must be a number or a scalar equation, got %s", describe(L, idx));
-    int st;
-    return done(L, pc_expr_smooth(pool(L), g, e->id, &st), st);
+    if (!toeq(L, idx)) return 0;
+    pc_expr_how how = {.g = g};
+    return apply(L, PC_EQV_SMOOTH, idx, 1, &how);
 }
 
 /* ---- math.* on equations ------------------------------------------------------------------- */
@@ -377,17 +229,12 @@ static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number other than 1");
 
 static int math_eq(lua_State *L, int i) {
-    int a = scalar_arg(L, 1, "x"), st;
-    pc_expr_pool *p = pool(L);
-    int r = pc_expr_fn(p, MATHFN[i].op, a, &st);
-    if (r >= 0 && MATHFN[i].op == PC_EX_LOG && !lua_isnoneornil(L, 2)) {     /* log(x, base) */
-        pcl_val base;
+    pc_expr_how how = {.fn = MATHFN[i].op};
+    pcl_val base = {0};
+    if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), toeq(L, 1)->id))   /* log(x, base) */
         pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
-        int k = pc_expr_const(p, 1 / log(base.x), &st);
-        r = k < 0 ? -1 : pc_expr_mul(p, r, k, &st);
-    }
-    if (r < 0 && st == PC_EDOMAIN) return pcl_fail(L, "argument #1 (x) is outside the function's domain");
-    return done(L, r, st);
+    how.base = base.x;
+    return apply(L, PC_EQV_MATH, 1, 1, &how);
 }
 
 /* A number takes one type test and goes to Lua's function: math.sin(x) keeps its speed (and
@@ -464,7 +311,7 @@ static pc_expr_prog *prog_of(lua_State *L, leq *e) {
         int in[PC_EXPR_MAXPARAM], st;
         int n = params_of(L, e->id, in);
         e->prog = pc_expr_compile(pool(L), e->id, n, in, &st);
-        if (!e->prog) done(L, -1, st);
+        if (!e->prog) status_fail(L, st);
     }
     return e->prog;
 }
@@ -527,7 +374,7 @@ static int eq_call(lua_State *L) {
         pc_expr_param_values(p, n, in, x, at, sizeof at);
         return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)", at);
     }
-    if (st != PC_OK) return done(L, -1, st);
+    if (st != PC_OK) return status_fail(L, st);
     push_result(L, pc_expr_dim(p, e->id), h);
     return 1;
 }
@@ -678,7 +525,7 @@ static int eq_sample(lua_State *L) {
         double t = n > 1 ? a[0].x + (a[1].x - a[0].x) * (double)bad / (double)(n - 1) : a[0].x;
         return pcl_fail(L, "the value at %s = %s is not finite", pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, t));
     }
-    if (st != PC_OK) return done(L, -1, st);
+    if (st != PC_OK) return status_fail(L, st);
     return 1;
 }
 
