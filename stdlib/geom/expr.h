@@ -164,6 +164,13 @@ typedef struct {
 int pc_expr_apply(pc_expr_pool *pool, pc_expr_verb v, int n, const int *ids, const pc_expr_how *how,
                   int *res, char *why, size_t size);
 
+/* The program of the point equation e for a curve (nwant 1) or a surface (nwant 2) over the box
+ * lo..hi of its parameters, the membership condition checked there (pc_expr_prog_weight); or
+ * NULL with the reason in why, about "argument #1 (equation)" ("@1" stands for the equation
+ * as the caller shows a constant). */
+pc_expr_prog *pc_expr_compile_point(const pc_expr_pool *pool, int e, int nwant, const double *lo,
+                                    const double *hi, char *why, size_t size);
+
 /* e with parameter k replaced by the node r (a scalar): instantiating a one-parameter family
  * M(t; s) at a value of s, or changing a parameter.  Shared nodes stay shared. */
 int pc_expr_subst(pc_expr_pool *pool, int e, int k, int r, int *status);

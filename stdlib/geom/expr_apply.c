@@ -171,3 +171,38 @@ int pc_expr_apply(pc_expr_pool *pool, pc_expr_verb v, int n, const int *ids, con
     res[0] = r;
     return 1;
 }
+
+static const char MEMBERSHIP[] =
+    "the coefficients of a point equation must sum to 1 for a point and to 0 for a vector "
+    "(the membership condition)";
+
+pc_expr_prog *pc_expr_compile_point(const pc_expr_pool *pool, int e, int nwant, const double *lo,
+                                    const double *hi, char *why, size_t size) {
+    ctx c = {(pc_expr_pool *)pool, NULL, why, size};
+    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(pool, e, in), st;
+    char names[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 2)];
+    if (!pc_expr_dim(pool, e))
+        return say(&c, "argument #1 (equation) must be a point equation, got a scalar equation"), NULL;
+    if (n == 0) return say(&c, "argument #1 (equation) has no parameter (it is the constant @1)"), NULL;
+    if (n != nwant) {
+        pc_expr_param_names(pool, n, in, names, sizeof names);
+        return say(&c, "argument #1 (equation) depends on %s, but a %s has %d parameter%s: fix the others with "
+                   "M:with{name = value}", names, nwant == 1 ? "curve" : "surface", nwant, nwant == 1 ? "" : "s"), NULL;
+    }
+    pc_expr_prog *prog = pc_expr_compile(pool, e, n, in, &st);
+    if (!prog) return built(&c, -1, st, ""), NULL;
+    double xb[PC_EXPR_MAXPARAM], wb;
+    int kind = pc_expr_prog_weight(prog, lo, hi, xb, &wb);
+    if (kind == PC_KIND_POINT) return prog;
+    pc_expr_prog_free(prog);
+    if (kind == PC_KIND_VECTOR)
+        say(&c, "argument #1 (equation) is a vector equation (weight 0), not a point: %s; to place a vector, add it "
+            "to a point, e.g. P(0, 0) + v", MEMBERSHIP);
+    else if (kind == -2)
+        say(&c, "argument #1 (equation) has no finite value anywhere it was probed in its domain");
+    else
+        say(&c, "argument #1 (equation) has weight %.14g at %s = %.14g, so it is neither a point (weight 1) nor a "
+            "vector (weight 0): %s; write offsets with V(), or divide a rational equation by its total weight",
+            wb == 0 ? 0 : wb, pc_expr_param_name(pool, in[0]), xb[0] == 0 ? 0 : xb[0], MEMBERSHIP);
+    return NULL;
+}

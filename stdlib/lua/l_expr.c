@@ -30,10 +30,6 @@ static const char EQ_TAG = 'e', SAMPLES_TAG = 'S';   /* its address tags the typ
 #define SAMPLES_MT "samples"
 static const char POOL_KEY = 'q';
 
-static const char MEMBERSHIP[] =
-    "the coefficients of a point equation must sum to 1 for a point and to 0 for a vector "
-    "(the membership condition)";
-
 typedef struct {
     PCL_SELF;               /* its own address: a forged equation is refused (pcl.h) */
     int id;
@@ -596,62 +592,19 @@ static int s_tostring(lua_State *L) {
 
 /* ---- curve(M, t0, t1), surface(M, u0, u1, v0, v1) ------------------------------------------------ */
 
-/* the membership condition over the parameters' box */
-static void check_weight(lua_State *L, const char *fname, pc_expr_prog *prog, const double *lo,
-                         const double *hi, const int *in) {
-    double xb[PC_EXPR_MAXPARAM], wb;
-    int kind = pc_expr_prog_weight(prog, lo, hi, xb, &wb);
-    if (kind == PC_KIND_POINT) return;
-    pc_expr_prog_free(prog);
-    if (kind == PC_KIND_VECTOR)
-        pcl_error(L, "%s: argument #1 (equation) is a vector equation (weight 0), not a point: %s; "
-                  "to place a vector, add it to a point, e.g. P(0, 0) + v", fname, MEMBERSHIP);
-    if (kind == -2)
-        pcl_error(L, "%s: argument #1 (equation) has no finite value anywhere it was probed in "
-                  "its domain", fname);
-    const char *at = lua_pushfstring(L, "%s = %s", pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, xb[0]));
-    pcl_error(L, "%s: argument #1 (equation) has weight %s at %s, so it is neither a point "
-              "(weight 1) nor a vector (weight 0): %s; write offsets with V(), or divide a "
-              "rational equation by its total weight", fname, pcl_pushnum(L, wb), at, MEMBERSHIP);
-}
-
-static pc_expr_prog *compile_for(lua_State *L, const char *fname, int nwant, int *in) {
-    leq *e = toeq(L, 1);
-    pc_expr_pool *p = pool(L);
-    if (!pc_expr_dim(p, e->id))
-        pcl_error(L, "%s: argument #1 (equation) must be a point equation, got a scalar equation", fname);
-    int n = params_of(L, e->id, in);
-    if (n != nwant) {
-        if (n == 0) pcl_error(L, "%s: argument #1 (equation) has no parameter (it is the constant %s)",
-                              fname, luaL_tolstring(L, 1, NULL));
-        pcl_error(L, "%s: argument #1 (equation) depends on %s, but a %s has %d parameter%s: fix "
-                  "the others with M:with{name = value}", fname, names_of(L, n, in),
-                  nwant == 1 ? "curve" : "surface", nwant, nwant == 1 ? "" : "s");
-    }
-    int st;
-    pc_expr_prog *prog = pc_expr_compile(p, e->id, n, in, &st);
-    if (!prog) raise_status(L, fname, st);
-    return prog;
-}
-
-pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) {
-    int in[PC_EXPR_MAXPARAM];
-    const char *fname = pcl_name(L);
-    pc_expr_prog *prog = compile_for(L, fname, 1, in);
-    check_weight(L, fname, prog, &t0, &t1, in);
-    return pc_expr_curve(prog, t0, t1, status);
-}
-
-pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status) {
-    static const pcl_arg range[4] = {A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1")};
-    pcl_val r[4];
-    for (int i = 0; i < 4; i++) pcl_readone(L, i + 2, i + 2, 0, &range[i], 0, &r[i]);
-    if (!(r[1].x > r[0].x) || !(r[3].x > r[2].x)) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fname);
-    int in[PC_EXPR_MAXPARAM];
-    pc_expr_prog *prog = compile_for(L, fname, 2, in);
-    double lo[2] = {r[0].x, r[2].x}, hi[2] = {r[1].x, r[3].x};
-    check_weight(L, fname, prog, lo, hi, in);
+/* the curve or surface of the point equation at 1 over the box lo..hi of its parameters */
+static void *eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
+    char why[1024];
+    pc_expr_prog *prog = pc_expr_compile_point(pool(L), toeq(L, 1)->id, nwant, lo, hi, why, sizeof why);
+    if (!prog) pcl_error(L, "%s: %s", pcl_name(L), luaL_gsub(L, why, "@1", luaL_tolstring(L, 1, NULL)));
+    if (nwant == 1) return pc_expr_curve(prog, lo[0], hi[0], status);
     return pc_expr_surface(prog, lo[0], hi[0], lo[1], hi[1], status);
+}
+
+pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) { return eq_object(L, 1, &t0, &t1, status); }
+
+pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *status) {
+    return eq_object(L, 2, lo, hi, status);
 }
 
 /* ---- registration ----------------------------------------------------------------------------------- */

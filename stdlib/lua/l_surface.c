@@ -281,11 +281,12 @@ static int l_func(lua_State *L) {
     lua_settop(L, 6);
     lua_remove(L, 1);
     int st;
+    if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        pushsurf(L, pcl_eq_surface(L, fn, &st), st, fn);
+        double lo[2] = {a[1].x, a[3].x}, hi[2] = {a[2].x, a[4].x};
+        pushsurf(L, pcl_eq_surface(L, lo, hi, &st), st, fn);
         return 1;
     }
-    if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
     lua_pushnumber(L, a[3].x);

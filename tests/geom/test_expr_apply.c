@@ -92,11 +92,35 @@ static void test_messages(void **state) {
     assert_string_equal(why, "cannot raise @1 to @2: powers are of numbers and scalar equations");
 }
 
+/* A curve's program: A + (B - A) t is a point throughout; B - A a vector; 2 A t has weight 2t */
+static void test_compile_point(void **state) {
+    (void)state;
+    int r[1], ids[3] = {val(1, 2, 1), val(5, 10, 1), t};
+    assert_int_equal(pc_expr_apply(P, PC_EQV_LERP, 3, ids, NULL, r, why, sizeof why), 1);
+    double lo = 0, hi = 1;
+    pc_expr_prog *p = pc_expr_compile_point(P, r[0], 1, &lo, &hi, why, sizeof why);
+    assert_non_null(p);
+    assert_int_equal(pc_expr_prog_dim(p), 2);
+    pc_expr_prog_free(p);
+    assert_null(pc_expr_compile_point(P, r[0], 2, &lo, &hi, why, sizeof why));
+    assert_string_equal(why, "argument #1 (equation) depends on t, but a surface has 2 parameters: fix the others "
+                             "with M:with{name = value}");
+    assert_null(pc_expr_compile_point(P, val(1, 2, 1), 1, &lo, &hi, why, sizeof why));
+    assert_string_equal(why, "argument #1 (equation) has no parameter (it is the constant @1)");
+    assert_null(pc_expr_compile_point(P, t, 1, &lo, &hi, why, sizeof why));
+    assert_string_equal(why, "argument #1 (equation) must be a point equation, got a scalar equation");
+    int twice = pc_expr_mul(P, pc_expr_mul(P, val(1, 2, 1), t, &st), pc_expr_const(P, 2, &st), &st);
+    assert_null(pc_expr_compile_point(P, twice, 1, &lo, &hi, why, sizeof why));
+    assert_non_null(strstr(why, "argument #1 (equation) has weight "));
+    assert_non_null(strstr(why, "so it is neither a point (weight 1) nor a vector (weight 0)"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lerp_and_pack),
         cmocka_unit_test(test_meet),
         cmocka_unit_test(test_messages),
+        cmocka_unit_test(test_compile_point),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
