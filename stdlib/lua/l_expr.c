@@ -214,7 +214,6 @@ static const struct { const char *name; pc_expr_op op; } MATHFN[] = {
     {"sin", PC_EX_SIN}, {"cos", PC_EX_COS}, {"tan", PC_EX_TAN}, {"exp", PC_EX_EXP},
     {"log", PC_EX_LOG}, {"sqrt", PC_EX_SQRT}, {"abs", PC_EX_ABS}};
 enum { NMATH = sizeof MATHFN / sizeof *MATHFN };
-static lua_CFunction math_orig[NMATH];   /* Lua's own functions (one library per process) */
 
 /* the base of math.log(x, base): a positive number other than 1 */
 static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -224,8 +223,12 @@ static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number other than 1");
 
-static int math_eq(lua_State *L, int i) {
-    pc_expr_how how = {.fn = MATHFN[i].op};
+/* math.NAME, upvalues Lua's own function and the index into MATHFN: a number takes one type
+ * test and goes to Lua's function, so math.sin(x) keeps its speed (and Lua's own messages for
+ * what is neither a number nor an equation). */
+static int math_fn(lua_State *L) {
+    if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return lua_tocfunction(L, PCL_UPVALUE(1))(L);
+    pc_expr_how how = {.fn = MATHFN[lua_tointeger(L, PCL_UPVALUE(2))].op};
     pcl_val base = {0};
     if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), toeq(L, 1)->id))   /* log(x, base) */
         pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
@@ -233,29 +236,14 @@ static int math_eq(lua_State *L, int i) {
     return apply(L, PC_EQV_MATH, 1, 1, &how);
 }
 
-/* A number takes one type test and goes to Lua's function: math.sin(x) keeps its speed (and
- * Lua's own messages for what is neither a number nor an equation). */
-#define MATH_WRAPPER(i, name) \
-    static int math_##name(lua_State *L) { \
-        if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return math_orig[i](L); \
-        return math_eq(L, i); \
-    }
-MATH_WRAPPER(0, sin)
-MATH_WRAPPER(1, cos)
-MATH_WRAPPER(2, tan)
-MATH_WRAPPER(3, exp)
-MATH_WRAPPER(4, log)
-MATH_WRAPPER(5, sqrt)
-MATH_WRAPPER(6, abs)
-
 static const pcl_arg x_arg[] = {A_ANY("x", NULL, "a number or a scalar equation"), PCL_END};
-#define MATHDECL(nm, f) {PCL_FN("math." nm, f, x_arg, "number | equation", \
-                                "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
+#define MATHDECL(nm) {PCL_FN("math." nm, math_fn, x_arg, "number | equation", \
+                             "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
 static const pcl_fn MATHDECL_OF[NMATH][2] = {
-    MATHDECL("sin", math_sin), MATHDECL("cos", math_cos), MATHDECL("tan", math_tan), MATHDECL("exp", math_exp),
-    {{.name = "math.log", .fn = math_log, .sig = "math.log(x [, base]) -> number | equation",
+    MATHDECL("sin"), MATHDECL("cos"), MATHDECL("tan"), MATHDECL("exp"),
+    {{.name = "math.log", .fn = math_fn, .sig = "math.log(x [, base]) -> number | equation",
       .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
-    MATHDECL("sqrt", math_sqrt), MATHDECL("abs", math_abs)};
+    MATHDECL("sqrt"), MATHDECL("abs")};
 
 static void wrap_math(lua_State *L) {
     if (lua_getglobal(L, "math") != LUA_TTABLE) {
@@ -265,10 +253,13 @@ static void wrap_math(lua_State *L) {
     for (int i = 0; i < NMATH; i++) {
         lua_getfield(L, -1, MATHFN[i].name);
         lua_CFunction f = lua_tocfunction(L, -1);
-        lua_pop(L, 1);
-        if (!f) continue;                                  /* not Lua's: left alone */
-        if (f != MATHDECL_OF[i][0].fn) math_orig[i] = f;   /* else wrapped already */
-        pcl_register(L, -1, MATHDECL_OF[i], 0);
+        if (f == math_fn) lua_getupvalue(L, -1, 2);   /* wrapped already: Lua's function again */
+        lua_CFunction orig = lua_tocfunction(L, -1);
+        lua_settop(L, lua_gettop(L) - (f == math_fn ? 2 : 1));
+        if (!orig) continue;                          /* not Lua's: left alone */
+        lua_pushcfunction(L, orig);
+        lua_pushinteger(L, i);
+        pcl_register(L, -3, MATHDECL_OF[i], 2);
     }
     lua_pop(L, 1);
 }
