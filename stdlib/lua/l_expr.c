@@ -23,7 +23,7 @@
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "expr.h"
-#include "konop_print.h"   /* the book's printed form of expanded coordinates */
+#include "konop_expanded.h"   /* the book's printed form of expanded coordinates */
 
 #define EQ_MT "equation"
 static const char EQ_TAG = 'e', SAMPLES_TAG = 'S';   /* its address tags the type (PCL_SELF_TAG) */
@@ -442,34 +442,17 @@ static int eq_show(lua_State *L) {
     return 1;
 }
 
-/* M:expanded(): the coordinates x(t), y(t), ... expanded in powers of the equation's one
- * parameter as the book prints them (Fig. 2.17: x = 4t(9t + 0,8)/(70t^2 - 75t + 44,2)), with
- * the printer of konopatsky.equation; a scalar equation gives its one expression. */
+/* M:expanded(): the coordinates expanded in powers of the equation's one parameter as the
+ * book prints them (konop_expanded.h) */
 static const pcl_arg expanded_args[] = {PCL_END};
 static int eq_expanded(lua_State *L) {
     leq *e = pcl_read(L, NULL, 0);
-    pc_expr_pool *p = pool(L);
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), dim = pc_expr_dim(p, e->id);
-    if (n != 1)
-        return n ? pcl_fail(L, "the equation has the parameters %s: fix all but one with M:with{...} first", names_of(L, n, in))
-                 : pcl_fail(L, "the equation has no parameter: it is a constant");
-    int rows = dim ? dim + 1 : 2, deg;
-    double *coef = lua_newuserdatauv(L, sizeof(double) * (size_t)(PC_CURVE_MAXDEG + 1) * (size_t)rows, 0);
-    int st = pc_expr_power_basis(p, e->id, in[0], PC_CURVE_MAXDEG, coef, &deg);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "only an equation rational in its parameter expands in its powers (built by + - * /, integer powers, "
-                           "dot, lerp, bar; no sin, exp, sqrt, smoothsteps or real powers) of degree up to %d", PC_CURVE_MAXDEG);
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    const char *var = pc_expr_param_name(p, in[0]);
-    int axes = dim ? dim : 1;
+    enum { EACH = 4096 };
+    char *texts = lua_newuserdatauv(L, (size_t)PC_MAXDIM * EACH, 0), why[512];
+    int axes = pc_k_expanded(pool(L), e->id, texts, EACH, why, sizeof why);
+    if (axes < 0) return pcl_fail(L, "%s", why);
     luaL_checkstack(L, axes, "M:expanded");
-    for (int x = 0; x < axes; x++) {
-        char buf[4096];
-        st = pc_k_coordinate_text(coef, axes, deg, x, var, buf, sizeof buf);
-        if (st == PC_EDOMAIN) return pcl_fail(L, "the equation's weight (its denominator) is identically 0");
-        if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-        lua_pushstring(L, dim ? buf : buf + 4);   /* a scalar: no "x = " */
-    }
+    for (int x = 0; x < axes; x++) lua_pushstring(L, texts + (size_t)x * EACH);
     return axes;
 }
 
