@@ -316,9 +316,16 @@ static void push_result(lua_State *L, int dim, const double *h) {
 static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
 static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
 
+/* "the equation has no parameter KEY (its parameters: t and s)", the key at idx */
+static int no_param(lua_State *L, int idx, int id) {
+    int in[PC_EXPR_MAXPARAM], n = params_of(L, id, in);
+    const char *k = lua_type(L, idx) == LUA_TSTRING ? lua_tostring(L, idx) : pcl_shown(L, idx);
+    return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", k, n ? names_of(L, n, in) : "none");
+}
+
 /* Every key of M{t = ..., s = ...} at idx names a parameter of M: a misspelt one is an error
  * with the nearest name, not ignored. */
-static void check_keys(lua_State *L, int idx, int n, const int *in) {
+static void check_keys(lua_State *L, int idx, int id, int n, const int *in) {
     const char *names[PC_EXPR_MAXPARAM + 1];
     for (int j = 0; j < n; j++) names[j] = pc_expr_param_name(pool(L), in[j]);
     names[n] = NULL;
@@ -331,7 +338,7 @@ static void check_keys(lua_State *L, int idx, int n, const int *in) {
         if (j < n) continue;
         const char *near = k ? pcl_nearest(k, names) : NULL;
         if (near) pcl_fail(L, "the equation has no parameter %s (did you mean %s?)", k, near);
-        pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", k ? k : pcl_shown(L, -1), n ? names_of(L, n, in) : "none");
+        no_param(L, -1, id);
     }
 }
 
@@ -342,7 +349,7 @@ static int eq_call(lua_State *L) {
     double x[PC_EXPR_MAXPARAM];
     pc_expr_pool *p = pool(L);
     int table = lua_istable(L, 2), given = lua_gettop(L) - 1;
-    if (table) check_keys(L, 2, n, in);
+    if (table) check_keys(L, 2, e->id, n, in);
     if (!table && given != n)
         return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
     for (int j = 0; j < n; j++) {
@@ -377,11 +384,7 @@ static int eq_with(lua_State *L) {
     while (lua_next(L, 2)) {
         const char *nm = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
         int k = pc_expr_find_param(p, nm);
-        if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) {
-            int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
-            return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", nm ? nm : pcl_shown(L, -2),
-                            n ? names_of(L, n, in) : "none");
-        }
+        if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) return no_param(L, -2, e->id);
         int v = node_of(L, -1);
         if (v < 0 || pc_expr_dim(p, v)) return pcl_fail(L, "%s must be a number or a scalar equation, got %s", nm, describe(L, -1));
         int st;
@@ -413,17 +416,13 @@ static const char *namer(void *ud, int dim, const double *h) {
     return found;
 }
 
+/* the text of equation id (names: the stack index of M:show's table, or 0), measured first */
 static void push_text(lua_State *L, int id, int names) {
     namer_ud ud = {L, names};
-    char small[512];
-    int len = pc_expr_print(pool(L), id, names ? namer : NULL, &ud, small, sizeof small);
-    if (len < (int)sizeof small) {
-        lua_pushstring(L, small);
-        return;
-    }
-    char *big = lua_newuserdatauv(L, (size_t)len + 1, 0);
-    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, big, (size_t)len + 1);
-    lua_pushstring(L, big);
+    int len = pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
+    char *buf = lua_newuserdatauv(L, (size_t)len + 1, 0);
+    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, buf, (size_t)len + 1);
+    lua_pushlstring(L, buf, (size_t)len);
     lua_remove(L, -2);
 }
 
