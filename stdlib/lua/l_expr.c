@@ -1,18 +1,9 @@
-/* Binding of the point equations (stdlib/geom/expr.h):
- *   param "t"                 a symbolic parameter: arithmetic on it builds an equation
- *   M = A*bar(t)^2 + 2*B*t*bar(t) + C*t^2      with + - * / ^ unary -, lerp bar dot cross unit,
- *                             P(x, y) of scalar equations, math.sin cos tan exp log sqrt abs,
- *                             smooth.sine smooth.cubic and half-splines
- *   M(0.3), M{t = .3, s = 1}  the value (a point, vector, weighted point or number)
- *   M:with{s = 0.5}           the family M(t; s) at s = 0.5 (or s = another equation)
- *   M:show{A = A, B = B}      the text with the points named; tostring(M) without names
- *   M:sample(a, b, n [, s])   n values at evenly spaced t, computed in C (a "samples" object;
- *                             given s, into it again)
- *   M.dim, M.params           0 for a scalar; the parameters' names in order
- *   curve(M, t0, t1), surface(M, u0, u1, v0, v1): see pcl_expr.h.
- * The functions a script calls by name are declared on the argument layer (pcl_args.h); the
- * hooks below run inside a declared point function (lerp, dot, P, ...) and word their messages
- * with its name, the metamethods (+ - * / ^) with the operation.
+/* Binding of the point equations (stdlib/geom/expr.h): param "t" makes a symbolic parameter,
+ * and arithmetic on it builds an equation (M = A*bar(t)^2 + 2*B*t*bar(t) + C*t^2), evaluated
+ * as M(0.3) or M{t = .3}, shown, expanded and sampled by its methods (declared below).
+ * The hooks (pcl_expr.h) run inside a declared point function (lerp, dot, P, ...) and word
+ * their messages with its name, the metamethods (+ - * / ^) with the operation; the core
+ * checks the operands and words what is wrong (pc_expr_apply).
  * Every Lua state has one pool of nodes (the equations share their common parts); compiled
  * programs are copies, so curves outlive nothing.  The math functions are wrapped once for
  * the whole module: a number goes straight to Lua's own function. */

@@ -1,23 +1,12 @@
-/* Binding of the one surface type (stdlib/geom/surface.h), in the table `surface`:
- *   surface.bilinear(P00, P10, P01, P11)      surface.bezier(net)
- *   surface.bspline(net, p, q [, uknots [, vknots]])
- *   surface.hermite{P = {4}, Pu = {4}, Pv = {4}, Puv = {4}}   corners (0,0), (1,0), (0,1), (1,1)
- *   surface.ruled(c0, c1)    surface.coons(cu0, cu1, c0v, c1v)
- *   surface.revolution(profile, A, d [, v0, v1])
- *   surface(f, u0, u1, v0, v1)                a Lua function (u, v) -> point
- * net: a list of rows, row i (along u) a list of points (weighted points make it rational).
- * s(u, v) is the point; s:partials(u, v), s:normal(u, v), s:iso("u"|"v", value) -> curve,
- * s:wireframe{nu =, nv =, color =, map =}, s:shade{nu =, nv =, color =, light =, mesh =, map =},
- * s:map(f). */
-#include <ctype.h>
+/* Binding of the one surface type (stdlib/geom/surface.h): the table `surface` of constructors,
+ * callable as surface(f, u0, u1, v0, v1) for a Lua function or a point equation, and the
+ * methods of a surface s (s(u, v), s:iso, s:wireframe, s:shade, ...), declared below. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "wireframe.h"
-#include "view.h"
 #include "pcl_scene.h"
 #include "pcl_qbscreen.h"
 #include "shaded.h"
@@ -566,18 +555,9 @@ static const pcl_fn fns[] = {
 
 void pcl_open_surface(lua_State *L) {
     int module = lua_gettop(L);
-    lua_newtable(L);
-    int methods_t = lua_gettop(L);
-    pcl_register(L, methods_t, methods, 0);
-    luaL_newmetatable(L, SURF_MT);
-    pcl_register(L, -1, call, 0);
     static const luaL_Reg meta[] = {{"__tostring", s_tostring}, {"__gc", s_gc}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    lua_pushvalue(L, methods_t);
-    lua_pushcclosure(L, s_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 2);
-
+    pcl_open_type(L, SURF_MT, meta, call, methods, s_index);
+    lua_pop(L, 1);
     lua_newtable(L);   /* the table `surface`, callable as surface(f, u0, u1, v0, v1) */
     pcl_register(L, -1, fns, 0);
     lua_newtable(L);
