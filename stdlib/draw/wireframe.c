@@ -131,7 +131,8 @@ int pc_scene_wireframe(pc_scene *sc, pc_surface *s, const pc_map *screen,
         size_t nseg;
         int sil = pc_surface_silhouette(s, screen, 4 * o->mesh, 4 * o->mesh, &seg, &nseg);
         st = sil;
-        for (size_t i = 0; st == PC_OK && i < nseg; i++) st = pc_scene_add_polyline(sc, 2, seg + 6 * i, NULL, o->color, pen);
+        for (size_t i = 0; st == PC_OK && i < nseg; i++)
+            st = pc_scene_add_polyline(sc, 2, seg + 6 * i, NULL, o->color, pen);
         if (sil == PC_OK) free(seg);
     }
     return st;

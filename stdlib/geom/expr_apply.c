@@ -31,7 +31,8 @@ static int dim(ctx *c, int id) { return pc_expr_dim(c->p, id); }
 /* operand k (1-based) where a number or a scalar equation goes */
 static int scalar(ctx *c, int k, const char *what) {
     int id = c->ids[k - 1];
-    if (id < 0 || dim(c, id)) return say(c, "argument #%d (%s) must be a number or a scalar equation, got @%d", k, what, k);
+    if (id < 0 || dim(c, id))
+        return say(c, "argument #%d (%s) must be a number or a scalar equation, got @%d", k, what, k);
     return id;
 }
 
@@ -39,7 +40,8 @@ static int scalar(ctx *c, int k, const char *what) {
 static int vector(ctx *c, int k, const char *what, int d) {
     int id = c->ids[k - 1], dk = id < 0 ? 0 : dim(c, id);
     if (!dk) return say(c, "argument #%d (%s) must be a vector or a vector equation, got @%d", k, what, k);
-    if (d && dk != d) return say(c, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", k, what, dk, d);
+    if (d && dk != d)
+        return say(c, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", k, what, dk, d);
     if (pc_expr_weight_class(c->p, id) != PC_KIND_VECTOR)
         return say(c, "argument #%d (%s) must be a vector (weight 0), got @%d whose weight is not 0; a difference of "
                    "points is a vector, e.g. B - A", k, what, k);
@@ -81,7 +83,8 @@ static int lerp(ctx *c) {
     if (a < 0) return say(c, "argument #1 (A) must be a point, a vector, a number or an equation, got @1");
     if (b < 0) return say(c, "argument #2 (B) must be a point, a vector, a number or an equation, got @2");
     int da = dim(c, a), db = dim(c, b);
-    if (da != db && da && db) return say(c, "argument #2 (B) is %d-D, but argument #1 (A) is %d-D (mixed dimensions)", db, da);
+    if (da != db && da && db)
+        return say(c, "argument #2 (B) is %d-D, but argument #1 (A) is %d-D (mixed dimensions)", db, da);
     if (da != db) return say(c, "A and B must both be points (or vectors) or both numbers, got @1 and @2");
     return built(c, pc_expr_lerp(c->p, a, b, t, &st), st, "");
 }
@@ -95,7 +98,8 @@ static int products(ctx *c, pc_expr_verb v) {
         return built(c, r, st, "");
     }
     if ((w = vector(c, 2, "v", dim(c, u))) < 0) return -1;
-    if (v == PC_EQV_CROSS && dim(c, u) != 2 && dim(c, u) != 3) return say(c, "vectors must be 2-D or 3-D, got %d-D", dim(c, u));
+    if (v == PC_EQV_CROSS && dim(c, u) != 2 && dim(c, u) != 3)
+        return say(c, "vectors must be 2-D or 3-D, got %d-D", dim(c, u));
     r = v == PC_EQV_DOT ? pc_expr_dot(c->p, u, w, &st) : pc_expr_cross(c->p, u, w, &st);
     return built(c, r, st, "");
 }
@@ -115,10 +119,12 @@ static int meet(ctx *c, int *res) {
     int d = 0, st;
     for (int i = 0; i < 4; i++) {
         int id = c->ids[i], di = id < 0 ? 0 : dim(c, id);
-        if (!di) return say(c, "argument #%d (%s) must be a point or an equation of a point, got @%d", i + 1, nm[i], i + 1);
+        if (!di)
+            return say(c, "argument #%d (%s) must be a point or an equation of a point, got @%d", i + 1, nm[i], i + 1);
         if (i == 0) d = di;
         else if (di != d)
-            return say(c, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i], di, d);
+            return say(c, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i],
+                       di, d);
         if (pc_expr_weight_class(c->p, id) != PC_KIND_POINT)
             return say(c, "argument #%d (%s) must be a point (weight 1), got @%d: the coefficients of a point equation "
                        "sum to 1 (membership condition)", i + 1, nm[i], i + 1);

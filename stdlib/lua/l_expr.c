@@ -149,7 +149,8 @@ static int apply(lua_State *L, pc_expr_verb v, int first, int n, const pc_expr_h
     int m = pc_expr_apply(pool(L), v, n, ids, how, res, why, sizeof why);
     if (m < 0) {
         const char *msg = why;
-        for (int k = given; k >= 1; k--) msg = luaL_gsub(L, msg, lua_pushfstring(L, "@%d", k), describe(L, first + k - 1));
+        for (int k = given; k >= 1; k--)
+            msg = luaL_gsub(L, msg, lua_pushfstring(L, "@%d", k), describe(L, first + k - 1));
         return v <= PC_EQV_NEG || v == PC_EQV_POW ? pcl_error(L, "%s", msg) : pcl_fail(L, "%s", msg);
     }
     for (int i = 0; i < m; i++) push_eq(L, res[i]);
