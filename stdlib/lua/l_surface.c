@@ -363,11 +363,7 @@ static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim) {
     return f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
 }
 
-/* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f, hidden = "hide"|"dashed",
- * mesh = 48}: the iso-lines u = u0 + i (u1 - u0)/nu and v = v0 + j (v1 - v0)/nv, each
- * flattened and drawn as a path through the map or the camera.  With hidden, the parts the
- * surface itself hides (depth test against a mesh of mesh x mesh quads, hidden.h) are left
- * out or drawn dashed. */
+/* s:wireframe{...}: the iso-lines drawn by the core (wireframe.h) through the map or the camera */
 static const char *const HIDDEN[] = {"show", "hide", "dashed", NULL};   /* 0 every line, 1 hide, 2 dashed */
 #define COUNT(nm, top, d) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = top, .dflt = d, .shown = #d}
 #define COUNT0(nm) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 0, .hi = 1000, .dflt = 10, .shown = "10"}
