@@ -1,4 +1,4 @@
-/* Drawing a surface as its iso-lines (wireframe.h). */
+/* Drawing a surface as its iso-lines or shaded (wireframe.h). */
 #include "wireframe.h"
 #include "view.h"
 #include <math.h>
@@ -136,4 +136,17 @@ int pc_scene_wireframe(pc_scene *sc, pc_surface *s, const pc_map *screen,
         if (sil == PC_OK) free(seg);
     }
     return st;
+}
+
+int pc_draw_shaded_surface(pc_canvas *cv, pc_scene *sc, const pc_surface *s, const pc_map *screen,
+                           const pc_shade_opts *o, pc_rgb base, int mesh, size_t *n, int *drawn) {
+    pc_shade_quad *q;
+    *drawn = PC_OK;
+    int st = pc_shade_quads(s, screen, o, &q, n);
+    if (st != PC_OK) return st;
+    *drawn = pc_draw_shaded(cv, q, *n, base, mesh);
+    free(q);
+    int res = o->nu > o->nv ? o->nu : o->nv;
+    if (*drawn != PC_OK || !sc) return PC_OK;
+    return pc_scene_add_surface(sc, s, res > 48 ? res : 48);
 }

@@ -127,11 +127,6 @@ static int any_eq(lua_State *L, int from, int to) {
     return 0;
 }
 
-static int raise_status(lua_State *L, const char *fname, int st) {
-    if (st == PC_ENOMEM) return pcl_error(L, "%s: out of memory (too many equation nodes)", fname);
-    return pcl_error(L, "%s: %s", fname, pc_strerror(st));
-}
-
 /* ---- operations (checked and worded in the core: pc_expr_apply) ---------------------------- */
 
 /* the failure st of making or running an equation, in the running declared function's name */
@@ -189,7 +184,8 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
                          "can be applied to an equation; this one has %s",
                          c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
     int st, r = pc_expr_bezier(pool(L), c->dim, c->degree, c->cp, c->t0, c->t1, e->id, &st);
-    if (r < 0) return raise_status(L, "curve", st);   /* c(t) names "curve" itself (it may not be declared) */
+    if (r < 0)   /* c(t) names "curve" itself (it may not be declared) */
+        return pcl_error(L, "curve: %s", st == PC_ENOMEM ? "out of memory (too many equation nodes)" : pc_strerror(st));
     push_eq(L, r);
     return 1;
 }

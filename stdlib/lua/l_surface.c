@@ -9,7 +9,6 @@
 #include "wireframe.h"
 #include "pcl_scene.h"
 #include "pcl_qbscreen.h"
-#include "shaded.h"
 #include "pcl_expr.h"
 
 #define SURF_MT "surface"
@@ -430,10 +429,7 @@ static const pcl_arg shade_keys[] = {
     SHADE_COLOR("mesh"), {.name = "map", .kind = PCL_MAP, .shown = "m"}, PCL_END};
 static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 
-/* s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = f}: the
- * surface as nu x nv quads through the map or the camera, each filled with its Lambert shade
- * of the base colour (stdlib/geom/shade.h) in painter's order, each outline drawn over its
- * fill in the mesh colour when mesh is given.  Returns the number of quads drawn. */
+/* s:shade{...}: the quads drawn by the core (wireframe.h) through the map or the camera; their count */
 static int s_shade(lua_State *L) {
     pcl_val a[8] = {0};   /* opts; nu, nv, color, light, ambient, mesh, map */
     lsurf *u = PCL_READ(L, a);
@@ -458,21 +454,13 @@ static int s_shade(lua_State *L) {
     pc_map scr;
     pcl_screen_map(L, f, &scr);
     pcl_callback_state(L);
-    pc_shade_quad *q;
+    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
     size_t n;
-    int st = pc_shade_quads(s, &scr, &o, &q, &n);
+    int drawn, st = pc_draw_shaded_surface(cv, sc, s, &scr, &o, base, mesh, &n, &drawn);
     if (st == PC_ESINGULAR)
         return pcl_error(L, "%s: the projection is singular (it flattens space onto a line)", fn);
-    if (st != PC_OK) return pcl_raise_status(L, fn, st);
-    int drawn = pc_draw_shaded(cv, q, n, base, mesh);
-    free(q);
     if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
-    /* through the camera's scene (pcl_scene.h): the shaded surface hides the scene's strokes
-     * behind it too, whatever the order of the calls (its quads are drawn now, the strokes at
-     * write, over them where they are seen); the occluder as fine as the quads, 48 at least */
-    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;
-    int res = o.nu > o.nv ? o.nu : o.nv;
-    if (sc && (st = pc_scene_add_surface(sc, s, res > 48 ? res : 48)) != PC_OK) return pcl_raise_status(L, fn, st);
+    if (st != PC_OK) return pcl_raise_status(L, fn, st);
     lua_pushinteger(L, (lua_Integer)n);
     return 1;
 }

@@ -93,10 +93,40 @@ static void test_scene(void **state) {
     pc_surface_release(s);
 }
 
+/* the square shaded as 3 x 3 quads lit from the viewer: one full shade over its image, and in a
+ * scene it hides a line behind it */
+static void test_shaded(void **state) {
+    (void)state;
+    pc_surface *s = square3();
+    pc_map scr = screen_map();
+    int st;
+    pc_scene *sc = pc_scene_new(&scr, &st);
+    assert_non_null(sc);
+    pc_canvas *c = pc_canvas_new(40, 40, 16);
+    pc_shade_opts o = {.nu = 3, .nv = 3, .has_light = 1, .light = {0, 0, 1}};
+    size_t n;
+    int drawn;
+    assert_int_equal(pc_draw_shaded_surface(c, sc, s, &scr, &o, (pc_rgb){200, 120, 40}, -1, &n, &drawn), PC_OK);
+    assert_int_equal(drawn, PC_OK);
+    assert_int_equal(n, 9);
+    int full = pc_rgb_color(c, (pc_rgb){200, 120, 40});
+    assert_int_equal(at(c, 20, 20), full);
+    assert_int_equal(at(c, 2, 20), 0);
+    double behind[6] = {-1, 1.5, -1, 4, 1.5, -1};   /* y = 1.5 under the square, x -1 .. 4 */
+    assert_int_equal(pc_scene_add_polyline(sc, 2, behind, NULL, 15, 0), PC_OK);
+    assert_int_equal(pc_scene_draw(sc, c, PC_HIDDEN_HIDE), PC_OK);
+    assert_int_equal(at(c, 2, 20), 15);    /* beside the square: seen */
+    assert_int_equal(at(c, 20, 20), full); /* behind it: hidden */
+    pc_canvas_free(c);
+    pc_scene_free(sc);
+    pc_surface_release(s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lines_and_boundary),
         cmocka_unit_test(test_scene),
+        cmocka_unit_test(test_shaded),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
