@@ -10,7 +10,8 @@
 #include "surface.h"
 #include "smooth.h"
 
-/* The operations the point binding defers, with its arguments on the stack as it got them. */
+/* The operations the point binding defers, with its arguments on the stack as it got them
+ * (in the order of the core's pc_expr_verb, expr.h, which checks and words them). */
 typedef enum {
     PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM,   /* metamethods (1, 2) */
     PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT, PCL_EQ_CROSS, PCL_EQ_UNIT,
