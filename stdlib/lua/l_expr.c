@@ -304,49 +304,36 @@ static void push_result(lua_State *L, int dim, const double *h) {
 static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
 static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
 
-/* "the equation has no parameter KEY (its parameters: t and s)", the key at idx */
-static int no_param(lua_State *L, int idx, int id) {
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, id, in);
-    const char *k = lua_type(L, idx) == LUA_TSTRING ? lua_tostring(L, idx) : pcl_shown(L, idx);
-    return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", k, n ? names_of(L, n, in) : "none");
-}
-
-/* Every key of M{t = ..., s = ...} at idx names a parameter of M: a misspelt one is an error
- * with the nearest name, not ignored. */
-static void check_keys(lua_State *L, int idx, int id, int n, const int *in) {
-    const char *names[PC_EXPR_MAXPARAM + 1];
-    for (int j = 0; j < n; j++) names[j] = pc_expr_param_name(pool(L), in[j]);
-    names[n] = NULL;
-    lua_pushnil(L);
-    while (lua_next(L, idx)) {
-        lua_pop(L, 1);
-        const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
-        int j = 0;
-        while (j < n && (!k || strcmp(k, names[j]))) j++;
-        if (j < n) continue;
-        const char *near = k ? pcl_nearest(k, names) : NULL;
-        if (near) pcl_fail(L, "the equation has no parameter %s (did you mean %s?)", k, near);
-        no_param(L, -1, id);
+/* The parameters in[0..n-1] as the keys of an option table {t =, s =}, each as key declares
+ * it: M{t = ..., s = ...} and M:with{s = ...} are read and worded by the layer. */
+static void param_keys(lua_State *L, int n, const int *in, pcl_arg key, pcl_arg *keys) {
+    for (int j = 0; j < n; j++, keys++) {
+        *keys = key;
+        keys->name = pc_expr_param_name(pool(L), in[j]);
     }
+    *keys = (pcl_arg){0};
 }
 
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
     leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
+    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), given = lua_gettop(L) - 1;
     double x[PC_EXPR_MAXPARAM];
     pc_expr_pool *p = pool(L);
-    int table = lua_istable(L, 2), given = lua_gettop(L) - 1;
-    if (table) check_keys(L, 2, e->id, n, in);
-    if (!table && given != n)
+    if (lua_istable(L, 2)) {
+        pcl_arg keys[PC_EXPR_MAXPARAM + 1], table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
+        pcl_val v[PC_EXPR_MAXPARAM] = {0};
+        param_keys(L, n, in, (pcl_arg){.kind = PCL_NUMBER, .flags = PCL_REQ}, keys);
+        pcl_read_options(L, 2, 1, &table, v);
+        for (int j = 0; j < n; j++) x[j] = v[j].x;
+    } else if (given != n) {
         return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
-    for (int j = 0; j < n; j++) {
+    }
+    for (int j = 0; j < n && !lua_istable(L, 2); j++) {
         pcl_arg num = {.name = pc_expr_param_name(p, in[j]), .kind = PCL_NUMBER};
         pcl_val v;
-        int idx = table ? (lua_getfield(L, 2, num.name), lua_gettop(L)) : j + 2;
-        x[j] = lua_tonumber(L, idx);
-        if (lua_type(L, idx) != LUA_TNUMBER || !isfinite(x[j]))   /* the message: {t = } is #1 too */
-            pcl_readone(L, idx, table ? 1 : j + 1, 0, &num, 0, &v);
+        x[j] = lua_tonumber(L, j + 2);
+        if (lua_type(L, j + 2) != LUA_TNUMBER || !isfinite(x[j])) pcl_readone(L, j + 2, j + 1, 0, &num, 0, &v);
     }
     pc_expr_prog *prog = prog_of(L, e);
     double h[PC_MAXDIM + 1];
@@ -361,28 +348,29 @@ static int eq_call(lua_State *L) {
     return 1;
 }
 
+/* A value of M:with{s = ...}: a number or a scalar equation, its node into out->n. */
+static int read_subst(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->n = node_of(L, idx);
+    return out->n >= 0 && !pc_expr_dim(pool(L), out->n);
+}
+
 static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expect = "a table {name = value}"}, PCL_END};
 
 static int eq_with(lua_State *L) {
-    pcl_val a[1] = {0};
+    pcl_val a[1] = {0}, v[PC_EXPR_MAXPARAM] = {0};
     leq *e = PCL_READ(L, a);
-    pc_expr_pool *p = pool(L);
-    int r = e->id;
-    lua_pushnil(L);
-    while (lua_next(L, 2)) {
-        const char *nm = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
-        int k = pc_expr_find_param(p, nm);
-        if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) return no_param(L, -2, e->id);
-        int v = node_of(L, -1);
-        if (v < 0 || pc_expr_dim(p, v)) return pcl_fail(L, "%s must be a number or a scalar equation, got %s", nm, describe(L, -1));
-        int st;
-        r = pc_expr_subst(p, r, k, v, &st);
-        if (r < 0) return pcl_fail(L, "%s = %s: %s", nm, pcl_shown(L, -1), pc_strerror(st));
-        lua_pop(L, 1);
-    }
+    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), r = e->id, st;
+    pcl_arg keys[PC_EXPR_MAXPARAM + 1], table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
+    param_keys(L, n, in, (pcl_arg)A_ANY(NULL, read_subst, "a number or a scalar equation"), keys);
+    pcl_read_options(L, 2, 1, &table, v);
+    for (int j = 0; j < n; j++)
+        if (v[j].present && (r = pc_expr_subst(pool(L), r, in[j], v[j].n, &st)) < 0)
+            return pcl_keyfail(L, keys[j].name, "cannot be substituted: %s", pc_strerror(st));
     push_eq(L, r);
     return 1;
 }
+
 /* The names given to M:show, looked up by value */
 typedef struct { lua_State *L; int tbl; } namer_ud;
 

@@ -112,39 +112,28 @@ static int l_bilinear(lua_State *L) {
     return pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
 }
 
-/* The length of row [i] of the net at idx (a list of points). */
-static int row_len(lua_State *L, int idx, int i) {
-    if (lua_geti(L, idx, i) != LUA_TTABLE)
-        pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
-    int n = (int)luaL_len(L, -1);
-    lua_pop(L, 1);
-    return n;
-}
-
 /* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
  * homogeneous rows in a scratch userdata above the arguments: out->list, out->v = nu, nv, dim. */
 static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     if (!lua_istable(L, idx)) return 0;
-    int m = (int)luaL_len(L, idx), n = m < 2 ? 0 : row_len(L, idx, 1);
+    int m = (int)luaL_len(L, idx), n = 0, d = 0;
     if (m < 2) return pcl_argfail(L, idx, "must have at least 2 rows, got %d", m);
-    if (n < 2) return pcl_argfail(L, idx, "rows must hold at least 2 points");
-    if ((long)m * n > 100000) return pcl_argfail(L, idx, "is too large");
-    lua_geti(L, idx, 1);
-    lua_geti(L, -1, 1);
-    pcl_value *first = pcl_tovalue(L, -1);
-    if (!first) return pcl_argfail(L, idx, "[1][1] must be a point, got %s", pcl_shown(L, -1));
-    int d = first->n;
-    lua_pop(L, 2);
-    double *h = lua_newuserdatauv(L, sizeof(double) * (size_t)m * n * (d + 1), 0);
+    double *h = NULL;
     for (int i = 1; i <= m; i++) {
-        int len = row_len(L, idx, i);
-        if (len != n) pcl_argfail(L, idx, "row [%d] holds %d points, but row [1] holds %d", i, len, n);
-        lua_geti(L, idx, i);
+        if (lua_geti(L, idx, i) != LUA_TTABLE) pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
+        int len = (int)luaL_len(L, -1);
+        if (i > 1 && len != n) pcl_argfail(L, idx, "row [%d] holds %d points, but row [1] holds %d", i, len, n);
+        if ((n = len) < 2) return pcl_argfail(L, idx, "rows must hold at least 2 points");
+        if ((long)m * n > 100000) return pcl_argfail(L, idx, "is too large");
         for (int j = 1; j <= n; j++) {
             lua_geti(L, -1, j);
             pcl_value *v = pcl_tovalue(L, -1);
             if (!v) pcl_argfail(L, idx, "[%d][%d] must be a point, got %s", i, j, pcl_shown(L, -1));
+            if (!h) {                     /* [1][1] sets the dimension; the buffer goes below row [1] */
+                h = lua_newuserdatauv(L, sizeof(double) * (size_t)m * n * ((d = v->n) + 1), 0);
+                lua_insert(L, -3);
+            }
             if (v->n != d) pcl_argfail(L, idx, "[%d][%d] is %d-D, but [1][1] is %d-D (mixed dimensions)", i, j, v->n, d);
             for (int k = 0; k <= d; k++) {
                 if (!isfinite(v->h[k])) pcl_argfail(L, idx, "[%d][%d] has NaN or infinite coordinates", i, j);
@@ -381,10 +370,8 @@ static int s_wireframe(lua_State *L) {
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
     const pc_map *f = drawing_map(L, &a[5], s->dim);
-    if (o.hidden && (s->dim != 3 || !f))
-        return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
-    if (o.silhouette && (s->dim != 3 || !f))
-        return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
+    if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
+        return pcl_fail(L, "%s a 3-D surface seen through a projection", o.hidden ? "hidden lines need" : "a silhouette needs");
     pc_map scr;
     pcl_screen_map(L, f, &scr);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
@@ -398,26 +385,15 @@ static int s_wireframe(lua_State *L) {
 
 /* ---- shading ----------------------------------------------------------------------------- */
 
-/* A colour of s:shade: an attribute with a colour (a true colour included) or "#rrggbb" (a
- * true colour, allocated); the attribute into out->x, its rgb into out->v. */
+/* A colour of s:shade: any attribute that has a colour (a true colour above the screen's
+ * colours included), else what pcl_read_color reads ("#rrggbb" allocates a true colour). */
 static int read_shade_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    pc_canvas *cv = pcl_canvas(L);
+    int isint;
     pc_rgb rgb;
-    int isint, ok;
-    if (lua_type(L, idx) == LUA_TSTRING) {
-        size_t len;
-        const char *h = lua_tolstring(L, idx, &len);
-        if ((ok = pc_rgb_parse(h, len, &rgb) == PC_OK) && (out->x = pc_rgb_color(cv, rgb)) < 0)
-            return pcl_fail(L, "%s", cv->error);
-    } else {
-        lua_Integer v = lua_tointegerx(L, idx, &isint);
-        ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR &&
-             pc_canvas_rgb(cv, (int)v, &rgb) == PC_OK;
-        out->x = (double)v;
-    }
-    if (!ok) return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", cv->ncolors - 1));
-    out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) != LUA_TNUMBER || !isint || v < 0 || v > PC_MAX_ATTR || pc_canvas_rgb(pcl_canvas(L), (int)v, &rgb))
+        return pcl_read_color(L, idx, a, out);
+    out->x = (double)v;
     return 1;
 }
 
@@ -437,8 +413,7 @@ static int s_shade(lua_State *L) {
     pc_canvas *cv = pcl_canvas(L);
     pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
     pc_rgb base;
-    if (a[3].present) base = (pc_rgb){(uint8_t)a[3].v[0], (uint8_t)a[3].v[1], (uint8_t)a[3].v[2]};
-    else pc_canvas_rgb(cv, cv->fg, &base);
+    pc_canvas_rgb(cv, a[3].present ? (int)a[3].x : cv->fg, &base);
     int mesh = (int)a[6].x;
     if (a[4].present) {
         memcpy(o.light, a[4].v, sizeof o.light);
