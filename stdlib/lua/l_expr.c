@@ -233,11 +233,9 @@ static const pcl_fn MATHDECL_OF[NMATH][2] = {
       .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
     MATHDECL("sqrt"), MATHDECL("abs")};
 
+/* (pcl_open_expr restores the stack) */
 static void wrap_math(lua_State *L) {
-    if (lua_getglobal(L, "math") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        return;
-    }
+    if (lua_getglobal(L, "math") != LUA_TTABLE) return;
     for (int i = 0; i < NMATH; i++) {
         lua_getfield(L, -1, MATHFN[i].name);
         lua_CFunction f = lua_tocfunction(L, -1);
@@ -249,7 +247,6 @@ static void wrap_math(lua_State *L) {
         lua_pushinteger(L, i);
         pcl_register(L, -3, MATHDECL_OF[i], 2);
     }
-    lua_pop(L, 1);
 }
 
 /* ---- param, evaluation, methods -------------------------------------------------------------- */

@@ -121,7 +121,8 @@ static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (m < 2) return pcl_argfail(L, idx, "must have at least 2 rows, got %d", m);
     double *h = NULL;
     for (int i = 1; i <= m; i++) {
-        if (lua_geti(L, idx, i) != LUA_TTABLE) pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
+        if (lua_geti(L, idx, i) != LUA_TTABLE)
+            pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
         int len = (int)luaL_len(L, -1);
         if (i > 1 && len != n) pcl_argfail(L, idx, "row [%d] holds %d points, but row [1] holds %d", i, len, n);
         if ((n = len) < 2) return pcl_argfail(L, idx, "rows must hold at least 2 points");
@@ -364,23 +365,22 @@ static const pcl_arg wireframe_args[] = {A_OPTIONS("opts", wireframe_keys), PCL_
 static int s_wireframe(lua_State *L) {
     pcl_val a[10] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
     lsurf *u = PCL_READ(L, a);
-    const char *fn = pcl_name(L);
     pc_wireframe_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .color = (int)a[3].x, .tol = a[4].x, .hidden = a[6].n,
                            .mesh = (int)a[7].x, .silhouette = (int)a[8].x, .boundary = (int)a[9].x};
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
     const pc_map *f = drawing_map(L, &a[5], s->dim);
     if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
-        return pcl_fail(L, "%s a 3-D surface seen through a projection", o.hidden ? "hidden lines need" : "a silhouette needs");
+        return pcl_fail(L, "%s a 3-D surface seen through a projection",
+                        o.hidden ? "hidden lines need" : "a silhouette needs");
     pc_map scr;
     pcl_screen_map(L, f, &scr);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
     pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
     int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
                                : pc_draw_wireframe(cv, s, &scr, &o, &drawn);
-    if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
-    if (st != PC_OK) return pcl_raise_status(L, fn, st);
-    return 0;
+    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
+    return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
 }
 
 /* ---- shading ----------------------------------------------------------------------------- */
@@ -391,7 +391,8 @@ static int read_shade_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *ou
     int isint;
     pc_rgb rgb;
     lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (lua_type(L, idx) != LUA_TNUMBER || !isint || v < 0 || v > PC_MAX_ATTR || pc_canvas_rgb(pcl_canvas(L), (int)v, &rgb))
+    int ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR;
+    if (!ok || pc_canvas_rgb(pcl_canvas(L), (int)v, &rgb) != PC_OK)
         return pcl_read_color(L, idx, a, out);
     out->x = (double)v;
     return 1;
@@ -409,7 +410,6 @@ static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 static int s_shade(lua_State *L) {
     pcl_val a[8] = {0};   /* opts; nu, nv, color, light, ambient, mesh, map */
     lsurf *u = PCL_READ(L, a);
-    const char *fn = pcl_name(L);
     pc_canvas *cv = pcl_canvas(L);
     pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
     pc_rgb base;
@@ -423,8 +423,7 @@ static int s_shade(lua_State *L) {
     }
     pc_surface *s = u->s;
     if (s->dim != 3)
-        return pcl_error(L, "%s: shading needs a 3-D surface seen through a projection, this one "
-                            "is %d-D", fn, s->dim);
+        return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", s->dim);
     const pc_map *f = drawing_map(L, &a[7], 3);
     pc_map scr;
     pcl_screen_map(L, f, &scr);
@@ -432,10 +431,9 @@ static int s_shade(lua_State *L) {
     pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
     size_t n;
     int drawn, st = pc_draw_shaded_surface(cv, sc, s, &scr, &o, base, mesh, &n, &drawn);
-    if (st == PC_ESINGULAR)
-        return pcl_error(L, "%s: the projection is singular (it flattens space onto a line)", fn);
-    if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
-    if (st != PC_OK) return pcl_raise_status(L, fn, st);
+    if (st == PC_ESINGULAR) return pcl_fail(L, "the projection is singular (it flattens space onto a line)");
+    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     lua_pushinteger(L, (lua_Integer)n);
     return 1;
 }
