@@ -121,12 +121,6 @@ static int node_of(lua_State *L, int idx) {
     return -1;
 }
 
-static int any_eq(lua_State *L, int from, int to) {
-    for (int i = from; i <= to; i++)
-        if (toeq(L, i)) return 1;
-    return 0;
-}
-
 /* ---- operations (checked and worded in the core: pc_expr_apply) ---------------------------- */
 
 /* the failure st of making or running an equation, in the running declared function's name */
@@ -170,8 +164,9 @@ static const signed char HOOK_ARGS[] = {2, 2, 2, 2, 1, 3, 1, 2, 2, 1, -1, -1, 4}
 
 int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
     int n = HOOK_ARGS[op] < 0 ? lua_gettop(L) : HOOK_ARGS[op];
-    if (!any_eq(L, 1, n)) return 0;
-    return apply(L, (pc_expr_verb)op, 1, n, NULL);
+    for (int i = 1; i <= n; i++)
+        if (toeq(L, i)) return apply(L, (pc_expr_verb)op, 1, n, NULL);
+    return 0;
 }
 
 int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
