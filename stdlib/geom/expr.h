@@ -134,6 +134,43 @@ int pc_expr_meet(pc_expr_pool *pool, int a1, int a2, int b1, int b2, int *lambda
 int pc_expr_bezier(pc_expr_pool *pool, int dim, int degree, const double *cp, double t0,
                    double t1, int t, int *status);
 
+/* --- operations with their checks (expr_apply.c) ------------------------------------------
+ * The operations of the point calculus on operands that may be equations, each checking its
+ * operands as a script's call needs (a scalar where a parameter goes, vectors for dot and
+ * cross, points for meet) and wording what is wrong.  The order is that of the binding's hooks
+ * (pcl_expr.h), then the operations the bindings call themselves. */
+typedef enum {
+    PC_EQV_ADD, PC_EQV_SUB, PC_EQV_MUL, PC_EQV_DIV, PC_EQV_NEG,   /* + - * / unary - */
+    PC_EQV_LERP, PC_EQV_BAR, PC_EQV_DOT, PC_EQV_CROSS, PC_EQV_UNIT,
+    PC_EQV_P, PC_EQV_V,                                         /* P(x, y, ...), V(...) of scalars */
+    PC_EQV_MEET,                                                /* K, lambda, mu of meet(A1, A2, B1, B2) */
+    PC_EQV_POW,                                                 /* a ^ b */
+    PC_EQV_MATH,                                                /* how->fn of x (how->base: log's base) */
+    PC_EQV_SMOOTH                                               /* the smoothstep how->g of t */
+} pc_expr_verb;
+
+typedef struct {
+    pc_expr_op fn;          /* PC_EQV_MATH: PC_EX_SIN .. PC_EX_ABS */
+    double base;            /* PC_EQV_MATH with PC_EX_LOG: a base other than e (0: none) */
+    const pc_gfun *g;       /* PC_EQV_SMOOTH */
+} pc_expr_how;
+
+/* Apply v to the n operand nodes ids (-1: an operand that is no number, value or equation):
+ * the result nodes into res (3 for meet, else 1) and their count; or -1 with the message in
+ * why: "@k" in it stands for the description of operand k (1-based; its caller knows what the
+ * script passed), arguments counted from 1.  The messages of + - * / unary - and ^ are whole
+ * ("cannot add ..."), the others follow the name of the function called ("argument #3 (t)
+ * must be ..."). */
+int pc_expr_apply(pc_expr_pool *pool, pc_expr_verb v, int n, const int *ids, const pc_expr_how *how,
+                  int *res, char *why, size_t size);
+
+/* The program of the point equation e for a curve (nwant 1) or a surface (nwant 2) over the box
+ * lo..hi of its parameters, the membership condition checked there (pc_expr_prog_weight); or
+ * NULL with the reason in why, about "argument #1 (equation)" ("@1" stands for the equation
+ * as the caller shows a constant). */
+pc_expr_prog *pc_expr_compile_point(const pc_expr_pool *pool, int e, int nwant, const double *lo,
+                                    const double *hi, char *why, size_t size);
+
 /* e with parameter k replaced by the node r (a scalar): instantiating a one-parameter family
  * M(t; s) at a value of s, or changing a parameter.  Shared nodes stay shared. */
 int pc_expr_subst(pc_expr_pool *pool, int e, int k, int r, int *status);

@@ -214,3 +214,52 @@ int pc_occluder_visible(const pc_occluder *o, const double *x) {
     }
     return 1;
 }
+
+/* the screen point of c at t and whether it is seen; 0 if it has no finite image */
+static int split_sample(const pc_occluder *o, const pc_map *screen, const pc_curve *c, double t,
+                        double xy[2], int *vis) {
+    double x[PC_MAXDIM], hx[4], s[3];
+    if (pc_curve_eval(c, t, x) != PC_OK) return 0;
+    hx[0] = x[0], hx[1] = x[1], hx[2] = x[2], hx[3] = 1;
+    pc_map_apply(screen, hx, s);
+    if (s[2] == 0) return 0;
+    xy[0] = s[0] / s[2];
+    xy[1] = s[1] / s[2];
+    if (!isfinite(xy[0]) || !isfinite(xy[1])) return 0;
+    *vis = pc_occluder_visible(o, x);
+    return 1;
+}
+
+int pc_occluder_split(const pc_occluder *o, const pc_map *screen, const pc_curve *c, int n,
+                      pc_polyline *seen, pc_polyline *hidden) {
+    double prev_t = c->t0;
+    int prev_ok = 0, prev_vis = 1, st = PC_OK;
+    for (int k = 0; k <= n && st == PC_OK; k++) {
+        double t = c->t0 + (c->t1 - c->t0) * k / n, xy[2];
+        int vis, ok = split_sample(o, screen, c, t, xy, &vis);
+        if (ok && prev_ok && vis != prev_vis) {
+            double lo = prev_t, hi = t, mxy[2] = {xy[0], xy[1]};
+            for (int i = 0; i < 30; i++) {   /* where the visibility changes */
+                double mid = (lo + hi) / 2, m[2];
+                int mv;
+                if (!split_sample(o, screen, c, mid, m, &mv)) break;
+                if (mv == prev_vis) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                    mxy[0] = m[0];
+                    mxy[1] = m[1];
+                }
+            }
+            pc_polyline *from = prev_vis ? seen : hidden, *to = vis ? seen : hidden;
+            st = pc_polyline_push(from, mxy[0], mxy[1], 0);
+            if (st == PC_OK) st = pc_polyline_push(to, mxy[0], mxy[1], 1);
+        }
+        if (ok && st == PC_OK)   /* a run starts after a gap; a change started one above */
+            st = pc_polyline_push(vis ? seen : hidden, xy[0], xy[1], !prev_ok);
+        prev_t = t;
+        prev_ok = ok;
+        if (ok) prev_vis = vis;
+    }
+    return st;
+}

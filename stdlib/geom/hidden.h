@@ -42,5 +42,12 @@ void pc_occluder_free(pc_occluder *o);
 int pc_occluder_visible(const pc_occluder *o, const double *x);
 /* The depth used: larger is nearer the viewer (pc_viewer_depth of the map's viewer). */
 double pc_occluder_depth(const pc_occluder *o, const double *x);
+/* The 3-D curve c drawn through `screen` split into its seen and hidden runs, appended to the
+ * screen polylines seen and hidden: n + 1 evenly spaced samples (at least as dense as the
+ * flattened path should be), each change of visibility located by bisection and ending one
+ * run where the other begins.  A sample without a finite image breaks the run.  PC_OK or
+ * PC_ENOMEM. */
+int pc_occluder_split(const pc_occluder *o, const pc_map *screen, const pc_curve *c, int n,
+                      pc_polyline *seen, pc_polyline *hidden);
 
 #endif

@@ -1,18 +1,9 @@
-/* Binding of the point equations (stdlib/geom/expr.h):
- *   param "t"                 a symbolic parameter: arithmetic on it builds an equation
- *   M = A*bar(t)^2 + 2*B*t*bar(t) + C*t^2      with + - * / ^ unary -, lerp bar dot cross unit,
- *                             P(x, y) of scalar equations, math.sin cos tan exp log sqrt abs,
- *                             smooth.sine smooth.cubic and half-splines
- *   M(0.3), M{t = .3, s = 1}  the value (a point, vector, weighted point or number)
- *   M:with{s = 0.5}           the family M(t; s) at s = 0.5 (or s = another equation)
- *   M:show{A = A, B = B}      the text with the points named; tostring(M) without names
- *   M:sample(a, b, n [, s])   n values at evenly spaced t, computed in C (a "samples" object;
- *                             given s, into it again)
- *   M.dim, M.params           0 for a scalar; the parameters' names in order
- *   curve(M, t0, t1), surface(M, u0, u1, v0, v1): see pcl_expr.h.
- * The functions a script calls by name are declared on the argument layer (pcl_args.h); the
- * hooks below run inside a declared point function (lerp, dot, P, ...) and word their messages
- * with its name, the metamethods (+ - * / ^) with the operation.
+/* Binding of the point equations (stdlib/geom/expr.h): param "t" makes a symbolic parameter,
+ * and arithmetic on it builds an equation (M = A*bar(t)^2 + 2*B*t*bar(t) + C*t^2), evaluated
+ * as M(0.3) or M{t = .3}, shown, expanded and sampled by its methods (declared below).
+ * The hooks (pcl_expr.h) run inside a declared point function (lerp, dot, P, ...) and word
+ * their messages with its name, the metamethods (+ - * / ^) with the operation; the core
+ * checks the operands and words what is wrong (pc_expr_apply).
  * Every Lua state has one pool of nodes (the equations share their common parts); compiled
  * programs are copies, so curves outlive nothing.  The math functions are wrapped once for
  * the whole module: a number goes straight to Lua's own function. */
@@ -23,16 +14,12 @@
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "expr.h"
-#include "konop_print.h"   /* the book's printed form of expanded coordinates */
+#include "konop_expanded.h"   /* the book's printed form of expanded coordinates */
 
 #define EQ_MT "equation"
 static const char EQ_TAG = 'e', SAMPLES_TAG = 'S';   /* its address tags the type (PCL_SELF_TAG) */
 #define SAMPLES_MT "samples"
 static const char POOL_KEY = 'q';
-
-static const char MEMBERSHIP[] =
-    "the coefficients of a point equation must sum to 1 for a point and to 0 for a vector "
-    "(the membership condition)";
 
 typedef struct {
     PCL_SELF;               /* its own address: a forged equation is refused (pcl.h) */
@@ -134,77 +121,37 @@ static int node_of(lua_State *L, int idx) {
     return -1;
 }
 
-static int any_eq(lua_State *L, int from, int to) {
-    for (int i = from; i <= to; i++)
-        if (toeq(L, i)) return 1;
-    return 0;
+/* ---- operations (checked and worded in the core: pc_expr_apply) ---------------------------- */
+
+/* the failure st of making or running an equation, in the running declared function's name */
+static int status_fail(lua_State *L, int st) {
+    if (st == PC_ENOMEM) return pcl_fail(L, "out of memory (too many equation nodes)");
+    return pcl_fail(L, "%s", pc_strerror(st));
 }
 
-static int raise_status(lua_State *L, const char *fname, int st) {
-    if (st == PC_ENOMEM) return pcl_error(L, "%s: out of memory (too many equation nodes)", fname);
-    return pcl_error(L, "%s: %s", fname, pc_strerror(st));
+/* v of the n operands from stack index first: push the results, or raise the core's message
+ * with each "@k" replaced by what operand k is (a metamethod's message is whole) */
+static int apply(lua_State *L, pc_expr_verb v, int first, int n, const pc_expr_how *how) {
+    int ids[PC_MAXDIM], res[3], given = n < PC_MAXDIM ? n : PC_MAXDIM;
+    char why[512];
+    for (int i = 0; i < given; i++) ids[i] = node_of(L, first + i);
+    int m = pc_expr_apply(pool(L), v, n, ids, how, res, why, sizeof why);
+    if (m < 0) {
+        const char *msg = why;
+        for (int k = given; k >= 1; k--)
+            msg = luaL_gsub(L, msg, lua_pushfstring(L, "@%d", k), describe(L, first + k - 1));
+        return v <= PC_EQV_NEG || v == PC_EQV_POW ? pcl_error(L, "%s", msg) : pcl_fail(L, "%s", msg);
+    }
+    for (int i = 0; i < m; i++) push_eq(L, res[i]);
+    return m;
 }
 
-/* ---- operators -------------------------------------------------------------------------------- */
-
-static const char *const OPNAME[] = {"add", "subtract", "multiply", "divide", "negate"};
-
-static int arith(lua_State *L, pcl_eq_op op) {
-    pc_expr_pool *p = pool(L);
-    int a = node_of(L, 1), b = op == PCL_EQ_UNM ? 0 : node_of(L, 2);
-    if (a < 0 || b < 0) {
-        if (op == PCL_EQ_UNM) return pcl_error(L, "cannot negate %s", describe(L, 1));
-        return pcl_error(L, "cannot %s %s and %s: equations combine with numbers, points, "
-                         "vectors and equations", OPNAME[op], describe(L, 1), describe(L, 2));
-    }
-    int st = PC_OK, r;
-    switch (op) {
-    case PCL_EQ_ADD: r = pc_expr_add(p, a, b, &st); break;
-    case PCL_EQ_SUB: r = pc_expr_sub(p, a, b, &st); break;
-    case PCL_EQ_MUL: r = pc_expr_mul(p, a, b, &st); break;
-    case PCL_EQ_DIV: r = pc_expr_div(p, a, b, &st); break;
-    default: r = pc_expr_neg(p, a, &st); break;
-    }
-    if (r >= 0) {
-        push_eq(L, r);
-        return 1;
-    }
-    int da = pc_expr_dim(p, a), db = op == PCL_EQ_UNM ? 0 : pc_expr_dim(p, b);
-    if (st == PC_EDIM) {
-        if (da && db && da != db)
-            return pcl_error(L, "cannot %s %s and %s: dimensions cannot be mixed", OPNAME[op],
-                             describe(L, 1), describe(L, 2));
-        if (op == PCL_EQ_MUL)
-            return pcl_error(L, "cannot multiply %s by %s: use dot(u, v) or cross(u, v) for "
-                             "products of vectors", describe(L, 1), describe(L, 2));
-        if (op == PCL_EQ_DIV)
-            return pcl_error(L, "cannot divide %s by %s: divide by numbers or scalar equations",
-                             describe(L, 1), describe(L, 2));
-        return pcl_error(L, "cannot %s %s and %s: points and vectors add only to points and "
-                         "vectors; to shift a point write A + V(dx, dy)", OPNAME[op],
-                         describe(L, 1), describe(L, 2));
-    }
-    if (st == PC_EDOMAIN && op == PCL_EQ_DIV) return pcl_error(L, "division of an equation by zero");
-    return raise_status(L, "equation", st);
-}
-
-static int m_add(lua_State *L) { return arith(L, PCL_EQ_ADD); }
-static int m_sub(lua_State *L) { return arith(L, PCL_EQ_SUB); }
-static int m_mul(lua_State *L) { return arith(L, PCL_EQ_MUL); }
-static int m_div(lua_State *L) { return arith(L, PCL_EQ_DIV); }
-static int m_unm(lua_State *L) { return arith(L, PCL_EQ_UNM); }
-
-static int m_pow(lua_State *L) {
-    pc_expr_pool *p = pool(L);
-    int a = node_of(L, 1), b = node_of(L, 2);
-    if (a < 0 || b < 0 || pc_expr_dim(p, a) || pc_expr_dim(p, b))
-        return pcl_error(L, "cannot raise %s to %s: powers are of numbers and scalar equations",
-                         describe(L, 1), describe(L, 2));
-    int st, r = pc_expr_pow(p, a, b, &st);
-    if (r < 0) return raise_status(L, "^", st);
-    push_eq(L, r);
-    return 1;
-}
+static int m_add(lua_State *L) { return apply(L, PC_EQV_ADD, 1, 2, NULL); }
+static int m_sub(lua_State *L) { return apply(L, PC_EQV_SUB, 1, 2, NULL); }
+static int m_mul(lua_State *L) { return apply(L, PC_EQV_MUL, 1, 2, NULL); }
+static int m_div(lua_State *L) { return apply(L, PC_EQV_DIV, 1, 2, NULL); }
+static int m_unm(lua_State *L) { return apply(L, PC_EQV_NEG, 1, 1, NULL); }
+static int m_pow(lua_State *L) { return apply(L, PC_EQV_POW, 1, 2, NULL); }
 
 static int m_eq(lua_State *L) {
     leq *a = toeq(L, 1), *b = toeq(L, 2);
@@ -212,127 +159,13 @@ static int m_eq(lua_State *L) {
     return 1;
 }
 
-/* ---- the point functions on equations ------------------------------------------------------- */
-
-/* "NAME: argument #K (WHAT) must be EXPECT, got DESCRIPTION" of the running declared function */
-static int operand_fail(lua_State *L, int k, const char *what, const char *expect) {
-    return pcl_fail(L, "argument #%d (%s) must be %s, got %s", k, what, expect, describe(L, k));
-}
-
-/* a value operand of dot, cross, unit: a vector (weight 0), its node */
-static int vec_arg(lua_State *L, int arg, const char *what, int dim) {
-    int id = node_of(L, arg);
-    if (id < 0 || !pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a vector or a vector equation");
-    int d = pc_expr_dim(pool(L), id);
-    if (dim && d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (u) is %d-D (mixed dimensions)", arg, what, d, dim);
-    if (pc_expr_weight_class(pool(L), id) != PC_KIND_VECTOR)
-        return pcl_fail(L, "argument #%d (%s) must be a vector (weight 0), got %s whose weight is not 0; a difference of "
-                        "points is a vector, e.g. B - A", arg, what, describe(L, arg));
-    return id;
-}
-
-static int scalar_arg(lua_State *L, int arg, const char *what) {
-    int id = node_of(L, arg);
-    if (id < 0 || pc_expr_dim(pool(L), id)) return operand_fail(L, arg, what, "a number or a scalar equation");
-    return id;
-}
-
-/* push the equation r, or the failure st of making it */
-static int done(lua_State *L, int r, int st) {
-    if (r < 0 && st == PC_ENOMEM) return pcl_fail(L, "out of memory (too many equation nodes)");
-    if (r < 0) return pcl_fail(L, "%s", pc_strerror(st));
-    push_eq(L, r);
-    return 1;
-}
-
-static int fn_lerp(lua_State *L) {
-    pc_expr_pool *p = pool(L);
-    int t = scalar_arg(L, 3, "t");
-    int a = node_of(L, 1), b = node_of(L, 2);
-    if (a < 0) return operand_fail(L, 1, "A", "a point, a vector, a number or an equation");
-    if (b < 0) return operand_fail(L, 2, "B", "a point, a vector, a number or an equation");
-    int da = pc_expr_dim(p, a), db = pc_expr_dim(p, b);
-    if (da != db && da && db) return pcl_fail(L, "argument #2 (B) is %d-D, but argument #1 (A) is %d-D (mixed dimensions)", db, da);
-    if (da != db)
-        return pcl_fail(L, "A and B must both be points (or vectors) or both numbers, got %s and %s", describe(L, 1), describe(L, 2));
-    int st, r = pc_expr_lerp(p, a, b, t, &st);
-    return done(L, r, st);
-}
-
-static int fn_pack(lua_State *L, double weight) {
-    int n = lua_gettop(L);
-    if (n < 1 || n > PC_MAXDIM) return pcl_fail(L, "needs 1 to %d coordinates, got %d", PC_MAXDIM, n);
-    int x[PC_MAXDIM];
-    static const char *xyz[] = {"x", "y", "z"};
-    for (int i = 0; i < n; i++) x[i] = scalar_arg(L, i + 1, i < 3 ? xyz[i] : "coordinate");
-    int st, r = pc_expr_pack(pool(L), n, x, weight, &st);
-    return done(L, r, st);
-}
-
-/* meet(A1, A2, B1, B2) with equations among the ends: K, lambda, mu as equations */
-static int fn_meet(lua_State *L) {
-    static const char *nm[4] = {"A1", "A2", "B1", "B2"};
-    pc_expr_pool *p = pool(L);
-    int id[4], dim = 0;
-    for (int i = 0; i < 4; i++) {
-        id[i] = node_of(L, i + 1);
-        if (id[i] < 0 || !pc_expr_dim(p, id[i])) return operand_fail(L, i + 1, nm[i], "a point or an equation of a point");
-        int d = pc_expr_dim(p, id[i]);
-        if (i == 0) dim = d;
-        else if (d != dim) return pcl_fail(L, "argument #%d (%s) is %d-D, but argument #1 (A1) is %d-D (mixed dimensions)", i + 1, nm[i], d, dim);
-        if (pc_expr_weight_class(p, id[i]) != PC_KIND_POINT)
-            return pcl_fail(L, "argument #%d (%s) must be a point (weight 1), got %s: the coefficients of a point equation "
-                            "sum to 1 (membership condition)", i + 1, nm[i], describe(L, i + 1));
-    }
-    if (dim < 2) return pcl_fail(L, "lines meet in 2-D or more, got %d-D points", dim);
-    int st, lam, mu, k = pc_expr_meet(p, id[0], id[1], id[2], id[3], &lam, &mu, &st);
-    if (k < 0) return done(L, -1, st);
-    push_eq(L, k);
-    push_eq(L, lam);
-    push_eq(L, mu);
-    return 3;
-}
+/* the operands each hook looks at for an equation (-1: all); the order of pcl_eq_op */
+static const signed char HOOK_ARGS[] = {2, 2, 2, 2, 1, 3, 1, 2, 2, 1, -1, -1, 4};
 
 int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
-    int top = lua_gettop(L);
-    switch (op) {
-    case PCL_EQ_ADD: case PCL_EQ_SUB: case PCL_EQ_MUL: case PCL_EQ_DIV:
-        if (!any_eq(L, 1, 2)) return 0;
-        return arith(L, op);
-    case PCL_EQ_UNM:
-        if (!any_eq(L, 1, 1)) return 0;
-        return arith(L, op);
-    case PCL_EQ_LERP:
-        if (!any_eq(L, 1, 3)) return 0;
-        return fn_lerp(L);
-    case PCL_EQ_BAR: {
-        if (!any_eq(L, 1, 1)) return 0;
-        int t = scalar_arg(L, 1, "t"), st;
-        return done(L, pc_expr_bar(pool(L), t, &st), st);
-    }
-    case PCL_EQ_DOT: case PCL_EQ_CROSS: {
-        if (!any_eq(L, 1, 2)) return 0;
-        int u = vec_arg(L, 1, "u", 0);
-        int v = vec_arg(L, 2, "v", pc_expr_dim(pool(L), u)), st;
-        if (op == PCL_EQ_CROSS && pc_expr_dim(pool(L), u) != 2 && pc_expr_dim(pool(L), u) != 3)
-            return pcl_fail(L, "vectors must be 2-D or 3-D, got %d-D", pc_expr_dim(pool(L), u));
-        int r = op == PCL_EQ_DOT ? pc_expr_dot(pool(L), u, v, &st) : pc_expr_cross(pool(L), u, v, &st);
-        return done(L, r, st);
-    }
-    case PCL_EQ_UNIT: {
-        if (!any_eq(L, 1, 1)) return 0;
-        int u = vec_arg(L, 1, "v", 0), st;
-        int r = pc_expr_unit(pool(L), u, &st);
-        if (r < 0 && st == PC_EZERO) return pcl_fail(L, "the zero vector has no direction");
-        return done(L, r, st);
-    }
-    case PCL_EQ_P: case PCL_EQ_V:
-        if (!any_eq(L, 1, top)) return 0;
-        return fn_pack(L, op == PCL_EQ_P ? 1.0 : 0.0);
-    case PCL_EQ_MEET:
-        if (!any_eq(L, 1, 4)) return 0;
-        return fn_meet(L);
-    }
+    int n = HOOK_ARGS[op] < 0 ? lua_gettop(L) : HOOK_ARGS[op];
+    for (int i = 1; i <= n; i++)
+        if (toeq(L, i)) return apply(L, (pc_expr_verb)op, 1, n, NULL);
     return 0;
 }
 
@@ -346,18 +179,16 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
                          "can be applied to an equation; this one has %s",
                          c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
     int st, r = pc_expr_bezier(pool(L), c->dim, c->degree, c->cp, c->t0, c->t1, e->id, &st);
-    if (r < 0) return raise_status(L, "curve", st);   /* c(t) names "curve" itself (it may not be declared) */
+    if (r < 0)   /* c(t) names "curve" itself (it may not be declared) */
+        return pcl_error(L, "curve: %s", st == PC_ENOMEM ? "out of memory (too many equation nodes)" : pc_strerror(st));
     push_eq(L, r);
     return 1;
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
-    leq *e = toeq(L, idx);
-    if (!e) return 0;
-    if (pc_expr_dim(pool(L), e->id))
-        return pcl_fail(L, "argument #1 (t) must be a number or a scalar equation, got %s", describe(L, idx));
-    int st;
-    return done(L, pc_expr_smooth(pool(L), g, e->id, &st), st);
+    if (!toeq(L, idx)) return 0;
+    pc_expr_how how = {.g = g};
+    return apply(L, PC_EQV_SMOOTH, idx, 1, &how);
 }
 
 /* ---- math.* on equations ------------------------------------------------------------------- */
@@ -366,7 +197,6 @@ static const struct { const char *name; pc_expr_op op; } MATHFN[] = {
     {"sin", PC_EX_SIN}, {"cos", PC_EX_COS}, {"tan", PC_EX_TAN}, {"exp", PC_EX_EXP},
     {"log", PC_EX_LOG}, {"sqrt", PC_EX_SQRT}, {"abs", PC_EX_ABS}};
 enum { NMATH = sizeof MATHFN / sizeof *MATHFN };
-static lua_CFunction math_orig[NMATH];   /* Lua's own functions (one library per process) */
 
 /* the base of math.log(x, base): a positive number other than 1 */
 static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -376,58 +206,42 @@ static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number other than 1");
 
-static int math_eq(lua_State *L, int i) {
-    int a = scalar_arg(L, 1, "x"), st;
-    pc_expr_pool *p = pool(L);
-    int r = pc_expr_fn(p, MATHFN[i].op, a, &st);
-    if (r >= 0 && MATHFN[i].op == PC_EX_LOG && !lua_isnoneornil(L, 2)) {     /* log(x, base) */
-        pcl_val base;
+/* math.NAME, upvalues Lua's own function and the index into MATHFN: a number takes one type
+ * test and goes to Lua's function, so math.sin(x) keeps its speed (and Lua's own messages for
+ * what is neither a number nor an equation). */
+static int math_fn(lua_State *L) {
+    if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return lua_tocfunction(L, PCL_UPVALUE(1))(L);
+    pc_expr_how how = {.fn = MATHFN[lua_tointeger(L, PCL_UPVALUE(2))].op};
+    pcl_val base = {0};
+    if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), toeq(L, 1)->id))   /* log(x, base) */
         pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
-        int k = pc_expr_const(p, 1 / log(base.x), &st);
-        r = k < 0 ? -1 : pc_expr_mul(p, r, k, &st);
-    }
-    if (r < 0 && st == PC_EDOMAIN) return pcl_fail(L, "argument #1 (x) is outside the function's domain");
-    return done(L, r, st);
+    how.base = base.x;
+    return apply(L, PC_EQV_MATH, 1, 1, &how);
 }
 
-/* A number takes one type test and goes to Lua's function: math.sin(x) keeps its speed (and
- * Lua's own messages for what is neither a number nor an equation). */
-#define MATH_WRAPPER(i, name) \
-    static int math_##name(lua_State *L) { \
-        if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return math_orig[i](L); \
-        return math_eq(L, i); \
-    }
-MATH_WRAPPER(0, sin)
-MATH_WRAPPER(1, cos)
-MATH_WRAPPER(2, tan)
-MATH_WRAPPER(3, exp)
-MATH_WRAPPER(4, log)
-MATH_WRAPPER(5, sqrt)
-MATH_WRAPPER(6, abs)
-
 static const pcl_arg x_arg[] = {A_ANY("x", NULL, "a number or a scalar equation"), PCL_END};
-#define MATHDECL(nm, f) {PCL_FN("math." nm, f, x_arg, "number | equation", \
-                                "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
+#define MATHDECL(nm) {PCL_FN("math." nm, math_fn, x_arg, "number | equation", \
+                             "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
 static const pcl_fn MATHDECL_OF[NMATH][2] = {
-    MATHDECL("sin", math_sin), MATHDECL("cos", math_cos), MATHDECL("tan", math_tan), MATHDECL("exp", math_exp),
-    {{.name = "math.log", .fn = math_log, .sig = "math.log(x [, base]) -> number | equation",
+    MATHDECL("sin"), MATHDECL("cos"), MATHDECL("tan"), MATHDECL("exp"),
+    {{.name = "math.log", .fn = math_fn, .sig = "math.log(x [, base]) -> number | equation",
       .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
-    MATHDECL("sqrt", math_sqrt), MATHDECL("abs", math_abs)};
+    MATHDECL("sqrt"), MATHDECL("abs")};
 
+/* (pcl_open_expr restores the stack) */
 static void wrap_math(lua_State *L) {
-    if (lua_getglobal(L, "math") != LUA_TTABLE) {
-        lua_pop(L, 1);
-        return;
-    }
+    if (lua_getglobal(L, "math") != LUA_TTABLE) return;
     for (int i = 0; i < NMATH; i++) {
         lua_getfield(L, -1, MATHFN[i].name);
         lua_CFunction f = lua_tocfunction(L, -1);
-        lua_pop(L, 1);
-        if (!f) continue;                                  /* not Lua's: left alone */
-        if (f != MATHDECL_OF[i][0].fn) math_orig[i] = f;   /* else wrapped already */
-        pcl_register(L, -1, MATHDECL_OF[i], 0);
+        if (f == math_fn) lua_getupvalue(L, -1, 2);   /* wrapped already: Lua's function again */
+        lua_CFunction orig = lua_tocfunction(L, -1);
+        lua_settop(L, lua_gettop(L) - (f == math_fn ? 2 : 1));
+        if (!orig) continue;                          /* not Lua's: left alone */
+        lua_pushcfunction(L, orig);
+        lua_pushinteger(L, i);
+        pcl_register(L, -3, MATHDECL_OF[i], 2);
     }
-    lua_pop(L, 1);
 }
 
 /* ---- param, evaluation, methods -------------------------------------------------------------- */
@@ -464,7 +278,7 @@ static pc_expr_prog *prog_of(lua_State *L, leq *e) {
         int in[PC_EXPR_MAXPARAM], st;
         int n = params_of(L, e->id, in);
         e->prog = pc_expr_compile(pool(L), e->id, n, in, &st);
-        if (!e->prog) done(L, -1, st);
+        if (!e->prog) status_fail(L, st);
     }
     return e->prog;
 }
@@ -482,42 +296,36 @@ static void push_result(lua_State *L, int dim, const double *h) {
 static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
 static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
 
-/* Every key of M{t = ..., s = ...} at idx names a parameter of M: a misspelt one is an error
- * with the nearest name, not ignored. */
-static void check_keys(lua_State *L, int idx, int n, const int *in) {
-    const char *names[PC_EXPR_MAXPARAM + 1];
-    for (int j = 0; j < n; j++) names[j] = pc_expr_param_name(pool(L), in[j]);
-    names[n] = NULL;
-    lua_pushnil(L);
-    while (lua_next(L, idx)) {
-        lua_pop(L, 1);
-        const char *k = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
-        int j = 0;
-        while (j < n && (!k || strcmp(k, names[j]))) j++;
-        if (j < n) continue;
-        const char *near = k ? pcl_nearest(k, names) : NULL;
-        if (near) pcl_fail(L, "the equation has no parameter %s (did you mean %s?)", k, near);
-        pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", k ? k : pcl_shown(L, -1), n ? names_of(L, n, in) : "none");
+/* The parameters in[0..n-1] as the keys of an option table {t =, s =}, each as key declares
+ * it: M{t = ..., s = ...} and M:with{s = ...} are read and worded by the layer. */
+static void param_keys(lua_State *L, int n, const int *in, pcl_arg key, pcl_arg *keys) {
+    for (int j = 0; j < n; j++, keys++) {
+        *keys = key;
+        keys->name = pc_expr_param_name(pool(L), in[j]);
     }
+    *keys = (pcl_arg){0};
 }
 
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
     leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
+    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), given = lua_gettop(L) - 1;
     double x[PC_EXPR_MAXPARAM];
     pc_expr_pool *p = pool(L);
-    int table = lua_istable(L, 2), given = lua_gettop(L) - 1;
-    if (table) check_keys(L, 2, n, in);
-    if (!table && given != n)
+    if (lua_istable(L, 2)) {
+        pcl_arg keys[PC_EXPR_MAXPARAM + 1], table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
+        pcl_val v[PC_EXPR_MAXPARAM] = {0};
+        param_keys(L, n, in, (pcl_arg){.kind = PCL_NUMBER, .flags = PCL_REQ}, keys);
+        pcl_read_options(L, 2, 1, &table, v);
+        for (int j = 0; j < n; j++) x[j] = v[j].x;
+    } else if (given != n) {
         return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
-    for (int j = 0; j < n; j++) {
+    }
+    for (int j = 0; j < n && !lua_istable(L, 2); j++) {
         pcl_arg num = {.name = pc_expr_param_name(p, in[j]), .kind = PCL_NUMBER};
         pcl_val v;
-        int idx = table ? (lua_getfield(L, 2, num.name), lua_gettop(L)) : j + 2;
-        x[j] = lua_tonumber(L, idx);
-        if (lua_type(L, idx) != LUA_TNUMBER || !isfinite(x[j]))   /* the message: {t = } is #1 too */
-            pcl_readone(L, idx, table ? 1 : j + 1, 0, &num, 0, &v);
+        x[j] = lua_tonumber(L, j + 2);
+        if (lua_type(L, j + 2) != LUA_TNUMBER || !isfinite(x[j])) pcl_readone(L, j + 2, j + 1, 0, &num, 0, &v);
     }
     pc_expr_prog *prog = prog_of(L, e);
     double h[PC_MAXDIM + 1];
@@ -527,37 +335,34 @@ static int eq_call(lua_State *L) {
         pc_expr_param_values(p, n, in, x, at, sizeof at);
         return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)", at);
     }
-    if (st != PC_OK) return done(L, -1, st);
+    if (st != PC_OK) return status_fail(L, st);
     push_result(L, pc_expr_dim(p, e->id), h);
     return 1;
+}
+
+/* A value of M:with{s = ...}: a number or a scalar equation, its node into out->n. */
+static int read_subst(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    out->n = node_of(L, idx);
+    return out->n >= 0 && !pc_expr_dim(pool(L), out->n);
 }
 
 static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expect = "a table {name = value}"}, PCL_END};
 
 static int eq_with(lua_State *L) {
-    pcl_val a[1] = {0};
+    pcl_val a[1] = {0}, v[PC_EXPR_MAXPARAM] = {0};
     leq *e = PCL_READ(L, a);
-    pc_expr_pool *p = pool(L);
-    int r = e->id;
-    lua_pushnil(L);
-    while (lua_next(L, 2)) {
-        const char *nm = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
-        int k = pc_expr_find_param(p, nm);
-        if (k < 0 || !(pc_expr_params(p, e->id) & (1u << k))) {
-            int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
-            return pcl_fail(L, "the equation has no parameter %s (its parameters: %s)", nm ? nm : pcl_shown(L, -2),
-                            n ? names_of(L, n, in) : "none");
-        }
-        int v = node_of(L, -1);
-        if (v < 0 || pc_expr_dim(p, v)) return pcl_fail(L, "%s must be a number or a scalar equation, got %s", nm, describe(L, -1));
-        int st;
-        r = pc_expr_subst(p, r, k, v, &st);
-        if (r < 0) return pcl_fail(L, "%s = %s: %s", nm, pcl_shown(L, -1), pc_strerror(st));
-        lua_pop(L, 1);
-    }
+    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), r = e->id, st;
+    pcl_arg keys[PC_EXPR_MAXPARAM + 1], table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
+    param_keys(L, n, in, (pcl_arg)A_ANY(NULL, read_subst, "a number or a scalar equation"), keys);
+    pcl_read_options(L, 2, 1, &table, v);
+    for (int j = 0; j < n; j++)
+        if (v[j].present && (r = pc_expr_subst(pool(L), r, in[j], v[j].n, &st)) < 0)
+            return pcl_keyfail(L, keys[j].name, "cannot be substituted: %s", pc_strerror(st));
     push_eq(L, r);
     return 1;
 }
+
 /* The names given to M:show, looked up by value */
 typedef struct { lua_State *L; int tbl; } namer_ud;
 
@@ -579,17 +384,13 @@ static const char *namer(void *ud, int dim, const double *h) {
     return found;
 }
 
+/* the text of equation id (names: the stack index of M:show's table, or 0), measured first */
 static void push_text(lua_State *L, int id, int names) {
     namer_ud ud = {L, names};
-    char small[512];
-    int len = pc_expr_print(pool(L), id, names ? namer : NULL, &ud, small, sizeof small);
-    if (len < (int)sizeof small) {
-        lua_pushstring(L, small);
-        return;
-    }
-    char *big = lua_newuserdatauv(L, (size_t)len + 1, 0);
-    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, big, (size_t)len + 1);
-    lua_pushstring(L, big);
+    int len = pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
+    char *buf = lua_newuserdatauv(L, (size_t)len + 1, 0);
+    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, buf, (size_t)len + 1);
+    lua_pushlstring(L, buf, (size_t)len);
     lua_remove(L, -2);
 }
 
@@ -608,34 +409,17 @@ static int eq_show(lua_State *L) {
     return 1;
 }
 
-/* M:expanded(): the coordinates x(t), y(t), ... expanded in powers of the equation's one
- * parameter as the book prints them (Fig. 2.17: x = 4t(9t + 0,8)/(70t^2 - 75t + 44,2)), with
- * the printer of konopatsky.equation; a scalar equation gives its one expression. */
+/* M:expanded(): the coordinates expanded in powers of the equation's one parameter as the
+ * book prints them (konop_expanded.h) */
 static const pcl_arg expanded_args[] = {PCL_END};
 static int eq_expanded(lua_State *L) {
     leq *e = pcl_read(L, NULL, 0);
-    pc_expr_pool *p = pool(L);
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), dim = pc_expr_dim(p, e->id);
-    if (n != 1)
-        return n ? pcl_fail(L, "the equation has the parameters %s: fix all but one with M:with{...} first", names_of(L, n, in))
-                 : pcl_fail(L, "the equation has no parameter: it is a constant");
-    int rows = dim ? dim + 1 : 2, deg;
-    double *coef = lua_newuserdatauv(L, sizeof(double) * (size_t)(PC_CURVE_MAXDEG + 1) * (size_t)rows, 0);
-    int st = pc_expr_power_basis(p, e->id, in[0], PC_CURVE_MAXDEG, coef, &deg);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "only an equation rational in its parameter expands in its powers (built by + - * /, integer powers, "
-                           "dot, lerp, bar; no sin, exp, sqrt, smoothsteps or real powers) of degree up to %d", PC_CURVE_MAXDEG);
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    const char *var = pc_expr_param_name(p, in[0]);
-    int axes = dim ? dim : 1;
+    enum { EACH = 4096 };
+    char *texts = lua_newuserdatauv(L, (size_t)PC_MAXDIM * EACH, 0), why[512];
+    int axes = pc_k_expanded(pool(L), e->id, texts, EACH, why, sizeof why);
+    if (axes < 0) return pcl_fail(L, "%s", why);
     luaL_checkstack(L, axes, "M:expanded");
-    for (int x = 0; x < axes; x++) {
-        char buf[4096];
-        st = pc_k_coordinate_text(coef, axes, deg, x, var, buf, sizeof buf);
-        if (st == PC_EDOMAIN) return pcl_fail(L, "the equation's weight (its denominator) is identically 0");
-        if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-        lua_pushstring(L, dim ? buf : buf + 4);   /* a scalar: no "x = " */
-    }
+    for (int x = 0; x < axes; x++) lua_pushstring(L, texts + (size_t)x * EACH);
     return axes;
 }
 
@@ -678,7 +462,7 @@ static int eq_sample(lua_State *L) {
         double t = n > 1 ? a[0].x + (a[1].x - a[0].x) * (double)bad / (double)(n - 1) : a[0].x;
         return pcl_fail(L, "the value at %s = %s is not finite", pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, t));
     }
-    if (st != PC_OK) return done(L, -1, st);
+    if (st != PC_OK) return status_fail(L, st);
     return 1;
 }
 
@@ -749,62 +533,19 @@ static int s_tostring(lua_State *L) {
 
 /* ---- curve(M, t0, t1), surface(M, u0, u1, v0, v1) ------------------------------------------------ */
 
-/* the membership condition over the parameters' box */
-static void check_weight(lua_State *L, const char *fname, pc_expr_prog *prog, const double *lo,
-                         const double *hi, const int *in) {
-    double xb[PC_EXPR_MAXPARAM], wb;
-    int kind = pc_expr_prog_weight(prog, lo, hi, xb, &wb);
-    if (kind == PC_KIND_POINT) return;
-    pc_expr_prog_free(prog);
-    if (kind == PC_KIND_VECTOR)
-        pcl_error(L, "%s: argument #1 (equation) is a vector equation (weight 0), not a point: %s; "
-                  "to place a vector, add it to a point, e.g. P(0, 0) + v", fname, MEMBERSHIP);
-    if (kind == -2)
-        pcl_error(L, "%s: argument #1 (equation) has no finite value anywhere it was probed in "
-                  "its domain", fname);
-    const char *at = lua_pushfstring(L, "%s = %s", pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, xb[0]));
-    pcl_error(L, "%s: argument #1 (equation) has weight %s at %s, so it is neither a point "
-              "(weight 1) nor a vector (weight 0): %s; write offsets with V(), or divide a "
-              "rational equation by its total weight", fname, pcl_pushnum(L, wb), at, MEMBERSHIP);
-}
-
-static pc_expr_prog *compile_for(lua_State *L, const char *fname, int nwant, int *in) {
-    leq *e = toeq(L, 1);
-    pc_expr_pool *p = pool(L);
-    if (!pc_expr_dim(p, e->id))
-        pcl_error(L, "%s: argument #1 (equation) must be a point equation, got a scalar equation", fname);
-    int n = params_of(L, e->id, in);
-    if (n != nwant) {
-        if (n == 0) pcl_error(L, "%s: argument #1 (equation) has no parameter (it is the constant %s)",
-                              fname, luaL_tolstring(L, 1, NULL));
-        pcl_error(L, "%s: argument #1 (equation) depends on %s, but a %s has %d parameter%s: fix "
-                  "the others with M:with{name = value}", fname, names_of(L, n, in),
-                  nwant == 1 ? "curve" : "surface", nwant, nwant == 1 ? "" : "s");
-    }
-    int st;
-    pc_expr_prog *prog = pc_expr_compile(p, e->id, n, in, &st);
-    if (!prog) raise_status(L, fname, st);
-    return prog;
-}
-
-pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) {
-    int in[PC_EXPR_MAXPARAM];
-    const char *fname = pcl_name(L);
-    pc_expr_prog *prog = compile_for(L, fname, 1, in);
-    check_weight(L, fname, prog, &t0, &t1, in);
-    return pc_expr_curve(prog, t0, t1, status);
-}
-
-pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status) {
-    static const pcl_arg range[4] = {A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1")};
-    pcl_val r[4];
-    for (int i = 0; i < 4; i++) pcl_readone(L, i + 2, i + 2, 0, &range[i], 0, &r[i]);
-    if (!(r[1].x > r[0].x) || !(r[3].x > r[2].x)) pcl_error(L, "%s: need u0 < u1 and v0 < v1", fname);
-    int in[PC_EXPR_MAXPARAM];
-    pc_expr_prog *prog = compile_for(L, fname, 2, in);
-    double lo[2] = {r[0].x, r[2].x}, hi[2] = {r[1].x, r[3].x};
-    check_weight(L, fname, prog, lo, hi, in);
+/* the curve or surface of the point equation at 1 over the box lo..hi of its parameters */
+static void *eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
+    char why[1024];
+    pc_expr_prog *prog = pc_expr_compile_point(pool(L), toeq(L, 1)->id, nwant, lo, hi, why, sizeof why);
+    if (!prog) pcl_error(L, "%s: %s", pcl_name(L), luaL_gsub(L, why, "@1", luaL_tolstring(L, 1, NULL)));
+    if (nwant == 1) return pc_expr_curve(prog, lo[0], hi[0], status);
     return pc_expr_surface(prog, lo[0], hi[0], lo[1], hi[1], status);
+}
+
+pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) { return eq_object(L, 1, &t0, &t1, status); }
+
+pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *status) {
+    return eq_object(L, 2, lo, hi, status);
 }
 
 /* ---- registration ----------------------------------------------------------------------------------- */

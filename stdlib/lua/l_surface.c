@@ -1,25 +1,14 @@
-/* Binding of the one surface type (stdlib/geom/surface.h), in the table `surface`:
- *   surface.bilinear(P00, P10, P01, P11)      surface.bezier(net)
- *   surface.bspline(net, p, q [, uknots [, vknots]])
- *   surface.hermite{P = {4}, Pu = {4}, Pv = {4}, Puv = {4}}   corners (0,0), (1,0), (0,1), (1,1)
- *   surface.ruled(c0, c1)    surface.coons(cu0, cu1, c0v, c1v)
- *   surface.revolution(profile, A, d [, v0, v1])
- *   surface(f, u0, u1, v0, v1)                a Lua function (u, v) -> point
- * net: a list of rows, row i (along u) a list of points (weighted points make it rational).
- * s(u, v) is the point; s:partials(u, v), s:normal(u, v), s:iso("u"|"v", value) -> curve,
- * s:wireframe{nu =, nv =, color =, map =}, s:shade{nu =, nv =, color =, light =, mesh =, map =},
- * s:map(f). */
-#include <ctype.h>
+/* Binding of the one surface type (stdlib/geom/surface.h): the table `surface` of constructors,
+ * callable as surface(f, u0, u1, v0, v1) for a Lua function or a point equation, and the
+ * methods of a surface s (s(u, v), s:iso, s:wireframe, s:shade, ...), declared below. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
-#include "hidden.h"
-#include "view.h"
+#include "wireframe.h"
 #include "pcl_scene.h"
-#include "shaded.h"
+#include "pcl_qbscreen.h"
 #include "pcl_expr.h"
 
 #define SURF_MT "surface"
@@ -43,18 +32,22 @@ pc_surface *pcl_tosurface(lua_State *L, int idx) {
     return u ? u->s : NULL;
 }
 
-static lsurf *pushsurf(lua_State *L, pc_surface *s, int status, const char *kind) {
-    if (!s) pcl_raise_status(L, kind, status);
+/* Push the surface a core constructor made, or raise its status *status when it made none
+ * (by address: read after the constructor has set it, whatever the order C evaluates the
+ * arguments in).  1. */
+static int pushsurf(lua_State *L, pc_surface *s, const int *status, const char *kind) {
+    if (!s) pcl_raise_status(L, kind, *status);
     lsurf *u = lua_newuserdatauv(L, sizeof *u, 0);
     u->self = PCL_SELF_TAG(u, &SURF_TAG);
     u->s = s;
     u->kind = kind;
     luaL_setmetatable(L, SURF_MT);
-    return u;
+    return 1;
 }
 
 void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
-    (void)pushsurf(L, s, PC_OK, kind);
+    int ok = PC_OK;
+    pushsurf(L, s, &ok, kind);
 }
 
 /* The receiver of a method: a live surface (the callbacks of a Lua surface need the state). */
@@ -116,17 +109,7 @@ static int l_bilinear(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), st, pcl_name(L));
-    return 1;
-}
-
-/* The length of row [i] of the net at idx (a list of points). */
-static int row_len(lua_State *L, int idx, int i) {
-    if (lua_geti(L, idx, i) != LUA_TTABLE)
-        pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
-    int n = (int)luaL_len(L, -1);
-    lua_pop(L, 1);
-    return n;
+    return pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
 }
 
 /* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
@@ -134,25 +117,24 @@ static int row_len(lua_State *L, int idx, int i) {
 static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     if (!lua_istable(L, idx)) return 0;
-    int m = (int)luaL_len(L, idx), n = m < 2 ? 0 : row_len(L, idx, 1);
+    int m = (int)luaL_len(L, idx), n = 0, d = 0;
     if (m < 2) return pcl_argfail(L, idx, "must have at least 2 rows, got %d", m);
-    if (n < 2) return pcl_argfail(L, idx, "rows must hold at least 2 points");
-    if ((long)m * n > 100000) return pcl_argfail(L, idx, "is too large");
-    lua_geti(L, idx, 1);
-    lua_geti(L, -1, 1);
-    pcl_value *first = pcl_tovalue(L, -1);
-    if (!first) return pcl_argfail(L, idx, "[1][1] must be a point, got %s", pcl_shown(L, -1));
-    int d = first->n;
-    lua_pop(L, 2);
-    double *h = lua_newuserdatauv(L, sizeof(double) * (size_t)m * n * (d + 1), 0);
+    double *h = NULL;
     for (int i = 1; i <= m; i++) {
-        int len = row_len(L, idx, i);
-        if (len != n) pcl_argfail(L, idx, "row [%d] holds %d points, but row [1] holds %d", i, len, n);
-        lua_geti(L, idx, i);
+        if (lua_geti(L, idx, i) != LUA_TTABLE)
+            pcl_argfail(L, idx, "row [%d] must be a list of points, got %s", i, pcl_shown(L, -1));
+        int len = (int)luaL_len(L, -1);
+        if (i > 1 && len != n) pcl_argfail(L, idx, "row [%d] holds %d points, but row [1] holds %d", i, len, n);
+        if ((n = len) < 2) return pcl_argfail(L, idx, "rows must hold at least 2 points");
+        if ((long)m * n > 100000) return pcl_argfail(L, idx, "is too large");
         for (int j = 1; j <= n; j++) {
             lua_geti(L, -1, j);
             pcl_value *v = pcl_tovalue(L, -1);
             if (!v) pcl_argfail(L, idx, "[%d][%d] must be a point, got %s", i, j, pcl_shown(L, -1));
+            if (!h) {                     /* [1][1] sets the dimension; the buffer goes below row [1] */
+                h = lua_newuserdatauv(L, sizeof(double) * (size_t)m * n * ((d = v->n) + 1), 0);
+                lua_insert(L, -3);
+            }
             if (v->n != d) pcl_argfail(L, idx, "[%d][%d] is %d-D, but [1][1] is %d-D (mixed dimensions)", i, j, v->n, d);
             for (int k = 0; k <= d; k++) {
                 if (!isfinite(v->h[k])) pcl_argfail(L, idx, "[%d][%d] has NaN or infinite coordinates", i, j);
@@ -173,8 +155,7 @@ static int l_bezier(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
-    pushsurf(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), st, pcl_name(L));
-    return 1;
+    return pushsurf(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg bspline_args[] = {NET, {.name = "p", .kind = PCL_INTEGER}, {.name = "q", .kind = PCL_INTEGER},
@@ -189,8 +170,8 @@ static int l_bspline(lua_State *L) {
     double *uk, *vk;   /* the knots as bspline reads them (l_curve.c) */
     pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
     int st;
-    pushsurf(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), st, pcl_name(L));
-    return 1;
+    pc_surface *s = pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st);
+    return pushsurf(L, s, &st, pcl_name(L));
 }
 
 /* A list of 4 points (P) or 4 vectors (Pu, Pv, Puv) of the corners' dimension: out->list. */
@@ -221,8 +202,7 @@ static int l_hermite(lua_State *L) {
         if (a[f].n != a[1].n)
             return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
     int st;
-    pushsurf(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), st, pcl_name(L));
-    return 1;
+    return pushsurf(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg ruled_args[] = {A_CURVE("c0", 0), A_CURVE("c1", 0), PCL_END};
@@ -231,8 +211,7 @@ static int l_ruled(lua_State *L) {
     PCL_READ(L, a);
     if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
-    pushsurf(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), st, pcl_name(L));
-    return 1;
+    return pushsurf(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg coons_args[] = {A_CURVE("cu0", 0), A_CURVE("cu1", 0), A_CURVE("c0v", 0), A_CURVE("c1v", 0), PCL_END};
@@ -247,8 +226,7 @@ static int l_coons(lua_State *L) {
     if (!s && st == PC_EDOMAIN)
         return pcl_fail(L, "the boundary curves do not meet at the corners (cu0 and c0v must start "
                            "together, cu0 must end where c1v starts, ...)");
-    pushsurf(L, s, st, pcl_name(L));
-    return 1;
+    return pushsurf(L, s, &st, pcl_name(L));
 }
 
 static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
@@ -259,8 +237,7 @@ static int l_revolution(lua_State *L) {
     int st;
     pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
     if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
-    pushsurf(L, s, st, pcl_name(L));
-    return 1;
+    return pushsurf(L, s, &st, pcl_name(L));
 }
 
 /* f: a Lua function (u, v) -> point or a compiled point equation (l_expr.c). */
@@ -280,11 +257,11 @@ static int l_func(lua_State *L) {
     lua_settop(L, 6);
     lua_remove(L, 1);
     int st;
-    if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
-        pushsurf(L, pcl_eq_surface(L, fn, &st), st, fn);
-        return 1;
-    }
     if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
+    if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
+        double lo[2] = {a[1].x, a[3].x}, hi[2] = {a[2].x, a[4].x};
+        return pushsurf(L, pcl_eq_surface(L, lo, hi, &st), &st, fn);
+    }
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
     lua_pushnumber(L, a[3].x);
@@ -299,8 +276,7 @@ static int l_func(lua_State *L) {
     lua_pushvalue(L, 1);
     f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
-    pushsurf(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), st, fn);
-    return 1;
+    return pushsurf(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st, fn);
 }
 
 /* ---- methods --------------------------------------------------------------------------------- */
@@ -366,8 +342,7 @@ static int s_map(lua_State *L) {
     pc_map *f = a[0].obj;
     if (f->nin != u->s->dim) return pcl_fail(L, "the map takes %d-D points, but the surface is %d-D", f->nin, u->s->dim);
     int st;
-    pushsurf(L, pc_surface_map(u->s, f, &st), st, u->kind);
-    return 1;
+    return pushsurf(L, pc_surface_map(u->s, f, &st), &st, u->kind);
 }
 
 /* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the camera. */
@@ -377,91 +352,7 @@ static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim) {
     return f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
 }
 
-typedef struct {
-    const pc_occluder *occ;
-    pc_map scr;
-    pc_polyline seen, hidden;
-} hidden_ctx;
-
-/* the screen point of the iso-curve at t and whether it is seen; 0 if it has no image */
-static int sample(hidden_ctx *h, const pc_curve *c, double t, double xy[2], int *vis) {
-    double x[PC_MAXDIM], hx[4], s[3];
-    if (pc_curve_eval(c, t, x) != PC_OK) return 0;
-    hx[0] = x[0], hx[1] = x[1], hx[2] = x[2], hx[3] = 1;
-    pc_map_apply(&h->scr, hx, s);
-    if (s[2] == 0) return 0;
-    xy[0] = s[0] / s[2];
-    xy[1] = s[1] / s[2];
-    if (!isfinite(xy[0]) || !isfinite(xy[1])) return 0;
-    *vis = pc_occluder_visible(h->occ, x);
-    return 1;
-}
-
-/* Split the iso-curve c into its seen and hidden runs (samples at least as dense as the
- * flattened path, each change of visibility located by bisection). */
-static int split_visibility(hidden_ctx *h, const pc_curve *c, int n) {
-    double prev_t = c->t0;
-    int prev_ok = 0, prev_vis = 1, st = PC_OK;
-    for (int k = 0; k <= n && st == PC_OK; k++) {
-        double t = c->t0 + (c->t1 - c->t0) * k / n, xy[2];
-        int vis, ok = sample(h, c, t, xy, &vis);
-        if (ok && prev_ok && vis != prev_vis) {
-            double lo = prev_t, hi = t, mxy[2] = {xy[0], xy[1]};
-            for (int i = 0; i < 30; i++) {   /* where the visibility changes */
-                double mid = (lo + hi) / 2, m[2];
-                int mv;
-                if (!sample(h, c, mid, m, &mv)) break;
-                if (mv == prev_vis) lo = mid; else { hi = mid; mxy[0] = m[0]; mxy[1] = m[1]; }
-            }
-            pc_polyline *from = prev_vis ? &h->seen : &h->hidden, *to = vis ? &h->seen : &h->hidden;
-            st = pc_polyline_push(from, mxy[0], mxy[1], 0);
-            if (st == PC_OK) st = pc_polyline_push(to, mxy[0], mxy[1], 1);
-        }
-        if (ok && st == PC_OK)   /* a run starts after a gap; a change started one above */
-            st = pc_polyline_push(vis ? &h->seen : &h->hidden, xy[0], xy[1], !prev_ok);
-        prev_t = t;
-        prev_ok = ok;
-        if (ok) prev_vis = vis;
-    }
-    return st;
-}
-
-/* The wireframe in the camera's scene: the surface as an occluder, its iso-lines (and its
- * silhouette) as 3-D strokes, all resolved against every surface of the figure at write. */
-static int scene_wireframe(lua_State *L, pc_scene *sc, pc_surface *s, int nu, int nv, int mesh,
-                           int outline, int color) {
-    const char *fn = pcl_name(L);
-    int st = pc_scene_add_surface(sc, s, mesh), boundary = outline & 2;
-    outline &= 1;
-    for (int dir = 0; dir < 2 && st == PC_OK; dir++) {
-        int n = dir == 0 ? nu : nv;
-        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
-        double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        for (int i = 0; n > 0 && i <= n && st == PC_OK; i++) {
-            pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
-            if (!c) break;
-            st = pcl_scene_curve(L, sc, c, 256, color);
-            pc_curve_release(c);
-        }
-    }
-    if (outline && st == PC_OK) {
-        double *seg;
-        size_t nseg;
-        pc_map scr;
-        pcl_screen_map(L, pcl_camera(L), &scr);
-        st = pc_surface_silhouette(s, &scr, 4 * mesh, 4 * mesh, &seg, &nseg);
-        for (size_t i = 0; st == PC_OK && i < nseg; i++)
-            st = pc_scene_add_polyline(sc, 2, seg + 6 * i, NULL, color, pcl_canvas(L)->pen);
-        if (st == PC_OK || nseg) free(seg);
-    }
-    return st == PC_OK ? 0 : pcl_raise_status(L, fn, st);
-}
-
-/* s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = f, hidden = "hide"|"dashed",
- * mesh = 48}: the iso-lines u = u0 + i (u1 - u0)/nu and v = v0 + j (v1 - v0)/nv, each
- * flattened and drawn as a path through the map or the camera.  With hidden, the parts the
- * surface itself hides (depth test against a mesh of mesh x mesh quads, hidden.h) are left
- * out or drawn dashed. */
+/* s:wireframe{...}: the iso-lines drawn by the core (wireframe.h) through the map or the camera */
 static const char *const HIDDEN[] = {"show", "hide", "dashed", NULL};   /* 0 every line, 1 hide, 2 dashed */
 #define COUNT(nm, top, d) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = top, .dflt = d, .shown = #d}
 #define COUNT0(nm) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 0, .hi = 1000, .dflt = 10, .shown = "10"}
@@ -474,103 +365,36 @@ static const pcl_arg wireframe_args[] = {A_OPTIONS("opts", wireframe_keys), PCL_
 static int s_wireframe(lua_State *L) {
     pcl_val a[10] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
     lsurf *u = PCL_READ(L, a);
-    const char *fn = pcl_name(L);
-    int nu = (int)a[1].x, nv = (int)a[2].x, color = (int)a[3].x, mode = a[6].n, mesh = (int)a[7].x;
-    int outline = (int)a[8].x, boundary = (int)a[9].x;
-    double tol = a[4].x;
+    pc_wireframe_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .color = (int)a[3].x, .tol = a[4].x, .hidden = a[6].n,
+                           .mesh = (int)a[7].x, .silhouette = (int)a[8].x, .boundary = (int)a[9].x};
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
     const pc_map *f = drawing_map(L, &a[5], s->dim);
-    if (mode && (s->dim != 3 || !f))
-        return pcl_error(L, "%s: hidden lines need a 3-D surface seen through a projection", fn);
-    if (outline && (s->dim != 3 || !f))
-        return pcl_error(L, "%s: a silhouette needs a 3-D surface seen through a projection", fn);
+    if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
+        return pcl_fail(L, "%s a 3-D surface seen through a projection",
+                        o.hidden ? "hidden lines need" : "a silhouette needs");
+    pc_map scr;
+    pcl_screen_map(L, f, &scr);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
-    pc_scene *sc = !mode && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
-    if (sc) return scene_wireframe(L, sc, s, nu, nv, mesh, outline | boundary << 1, color);
-    hidden_ctx h = {0};
-    pc_occluder *occ = NULL;
-    if (mode) {
-        int st;
-        pcl_screen_map(L, f, &h.scr);
-        occ = pc_occluder_new(s, &h.scr, mesh, mesh, &st);
-        if (!occ) return pcl_raise_status(L, fn, st);
-        h.occ = occ;
-    }
-    pc_stroke pen = cv->pens[cv->pen];   /* to restore after the dashed hidden parts */
-    int st = PC_OK, drawn = PC_OK;
-    for (int dir = 0; dir < 2 && st == PC_OK && drawn == PC_OK; dir++) {
-        int n = dir == 0 ? nu : nv;
-        double lo = dir == 0 ? s->u0 : s->v0, hi = dir == 0 ? s->u1 : s->v1;
-        if (n == 0 && boundary) n = 1;   /* the two edges of this family */
-        for (int i = 0; n > 0 && i <= n && st == PC_OK && drawn == PC_OK; i++) {
-            pc_curve *c = pc_surface_iso(s, dir, lo + (hi - lo) * i / n, &st);
-            if (!c) break;
-            pc_polyline pl = {0};
-            st = pcl_flatten(L, c, c->t0, c->t1, 1, f, 1, tol, &pl);
-            if (st == PC_OK && !mode) drawn = pcl_draw_polyline(L, &pl, color, 0);
-            if (st == PC_OK && mode) {
-                int samples = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
-                st = split_visibility(&h, c, samples);
-                if (st == PC_OK) drawn = pcl_draw_polyline(L, &h.seen, color, 0);
-                if (st == PC_OK && drawn == PC_OK && mode == 2 && h.hidden.n) {
-                    double dash[2] = {3, 3};
-                    pc_pen(cv, pen.width, dash, 2);
-                    drawn = pcl_draw_polyline(L, &h.hidden, color, 0);
-                    pc_pen(cv, pen.width, pen.dash, pen.ndash);
-                }
-                h.seen.n = h.hidden.n = 0;
-            }
-            pc_polyline_free(&pl);
-            pc_curve_release(c);
-        }
-    }
-    if (outline && st == PC_OK && drawn == PC_OK) {   /* the silhouette, hidden by the surface too */
-        double *seg;
-        size_t nseg;
-        pcl_screen_map(L, f, &h.scr);
-        st = pc_surface_silhouette(s, &h.scr, 4 * mesh, 4 * mesh, &seg, &nseg);
-        for (size_t i = 0; st == PC_OK && drawn == PC_OK && i < nseg; i++) {
-            double xy[4];
-            for (int e = 0; e < 2; e++) {
-                double hx[4] = {seg[6 * i + 3 * e], seg[6 * i + 3 * e + 1], seg[6 * i + 3 * e + 2], 1}, o[3];
-                pc_map_apply(&h.scr, hx, o);
-                pc_screen_to_world(cv, o[0] / o[2], o[1] / o[2], &xy[2 * e], &xy[2 * e + 1]);
-            }
-            drawn = pc_path(cv, 2, xy, NULL, 0, 0, color);
-        }
-        if (st == PC_OK) free(seg);
-    }
-    pc_polyline_free(&h.seen);
-    pc_polyline_free(&h.hidden);
-    pc_occluder_free(occ);
-    if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
-    if (st != PC_OK) return pcl_raise_status(L, fn, st);
-    return 0;
+    pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
+    int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
+                               : pc_draw_wireframe(cv, s, &scr, &o, &drawn);
+    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
+    return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
 }
 
 /* ---- shading ----------------------------------------------------------------------------- */
 
-/* A colour of s:shade: an attribute with a colour (a true colour included) or "#rrggbb" (a
- * true colour, allocated); the attribute into out->x, its rgb into out->v. */
+/* A colour of s:shade: any attribute that has a colour (a true colour above the screen's
+ * colours included), else what pcl_read_color reads ("#rrggbb" allocates a true colour). */
 static int read_shade_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    pc_canvas *cv = pcl_canvas(L);
+    int isint;
     pc_rgb rgb;
-    int isint, ok;
-    if (lua_type(L, idx) == LUA_TSTRING) {
-        size_t len;
-        const char *h = lua_tolstring(L, idx, &len);
-        if ((ok = pc_rgb_parse(h, len, &rgb) == PC_OK) && (out->x = pc_rgb_color(cv, rgb)) < 0)
-            return pcl_fail(L, "%s", cv->error);
-    } else {
-        lua_Integer v = lua_tointegerx(L, idx, &isint);
-        ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR &&
-             pc_canvas_rgb(cv, (int)v, &rgb) == PC_OK;
-        out->x = (double)v;
-    }
-    if (!ok) return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", cv->ncolors - 1));
-    out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    int ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR;
+    if (!ok || pc_canvas_rgb(pcl_canvas(L), (int)v, &rgb) != PC_OK)
+        return pcl_read_color(L, idx, a, out);
+    out->x = (double)v;
     return 1;
 }
 
@@ -582,19 +406,14 @@ static const pcl_arg shade_keys[] = {
     SHADE_COLOR("mesh"), {.name = "map", .kind = PCL_MAP, .shown = "m"}, PCL_END};
 static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 
-/* s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = f}: the
- * surface as nu x nv quads through the map or the camera, each filled with its Lambert shade
- * of the base colour (stdlib/geom/shade.h) in painter's order, each outline drawn over its
- * fill in the mesh colour when mesh is given.  Returns the number of quads drawn. */
+/* s:shade{...}: the quads drawn by the core (wireframe.h) through the map or the camera; their count */
 static int s_shade(lua_State *L) {
     pcl_val a[8] = {0};   /* opts; nu, nv, color, light, ambient, mesh, map */
     lsurf *u = PCL_READ(L, a);
-    const char *fn = pcl_name(L);
     pc_canvas *cv = pcl_canvas(L);
     pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
     pc_rgb base;
-    if (a[3].present) base = (pc_rgb){(uint8_t)a[3].v[0], (uint8_t)a[3].v[1], (uint8_t)a[3].v[2]};
-    else pc_canvas_rgb(cv, cv->fg, &base);
+    pc_canvas_rgb(cv, a[3].present ? (int)a[3].x : cv->fg, &base);
     int mesh = (int)a[6].x;
     if (a[4].present) {
         memcpy(o.light, a[4].v, sizeof o.light);
@@ -604,27 +423,17 @@ static int s_shade(lua_State *L) {
     }
     pc_surface *s = u->s;
     if (s->dim != 3)
-        return pcl_error(L, "%s: shading needs a 3-D surface seen through a projection, this one "
-                            "is %d-D", fn, s->dim);
+        return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", s->dim);
     const pc_map *f = drawing_map(L, &a[7], 3);
     pc_map scr;
     pcl_screen_map(L, f, &scr);
     pcl_callback_state(L);
-    pc_shade_quad *q;
+    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
     size_t n;
-    int st = pc_shade_quads(s, &scr, &o, &q, &n);
-    if (st == PC_ESINGULAR)
-        return pcl_error(L, "%s: the projection is singular (it flattens space onto a line)", fn);
-    if (st != PC_OK) return pcl_raise_status(L, fn, st);
-    int drawn = pc_draw_shaded(cv, q, n, base, mesh);
-    free(q);
-    if (drawn != PC_OK) return pcl_error(L, "%s: %s", fn, cv->error);
-    /* through the camera's scene (pcl_scene.h): the shaded surface hides the scene's strokes
-     * behind it too, whatever the order of the calls (its quads are drawn now, the strokes at
-     * write, over them where they are seen); the occluder as fine as the quads, 48 at least */
-    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;
-    int res = o.nu > o.nv ? o.nu : o.nv;
-    if (sc && (st = pc_scene_add_surface(sc, s, res > 48 ? res : 48)) != PC_OK) return pcl_raise_status(L, fn, st);
+    int drawn, st = pc_draw_shaded_surface(cv, sc, s, &scr, &o, base, mesh, &n, &drawn);
+    if (st == PC_ESINGULAR) return pcl_fail(L, "the projection is singular (it flattens space onto a line)");
+    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
+    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     lua_pushinteger(L, (lua_Integer)n);
     return 1;
 }
@@ -698,18 +507,9 @@ static const pcl_fn fns[] = {
 
 void pcl_open_surface(lua_State *L) {
     int module = lua_gettop(L);
-    lua_newtable(L);
-    int methods_t = lua_gettop(L);
-    pcl_register(L, methods_t, methods, 0);
-    luaL_newmetatable(L, SURF_MT);
-    pcl_register(L, -1, call, 0);
     static const luaL_Reg meta[] = {{"__tostring", s_tostring}, {"__gc", s_gc}, {NULL, NULL}};
-    luaL_setfuncs(L, meta, 0);
-    lua_pushvalue(L, methods_t);
-    lua_pushcclosure(L, s_index, 1);
-    lua_setfield(L, -2, "__index");
-    lua_pop(L, 2);
-
+    pcl_open_type(L, SURF_MT, meta, call, methods, s_index);
+    lua_pop(L, 1);
     lua_newtable(L);   /* the table `surface`, callable as surface(f, u0, u1, v0, v1) */
     pcl_register(L, -1, fns, 0);
     lua_newtable(L);

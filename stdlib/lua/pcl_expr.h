@@ -10,7 +10,8 @@
 #include "surface.h"
 #include "smooth.h"
 
-/* The operations the point binding defers, with its arguments on the stack as it got them. */
+/* The operations the point binding defers, with its arguments on the stack as it got them
+ * (in the order of the core's pc_expr_verb, expr.h, which checks and words them). */
 typedef enum {
     PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM,   /* metamethods (1, 2) */
     PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT, PCL_EQ_CROSS, PCL_EQ_UNIT,
@@ -28,9 +29,9 @@ int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g);
 /* c(eq) of a single-piece Bezier curve c at the scalar equation at idx: push the composed
  * point equation and return 1; 0 if idx is no equation (raises for other curves). */
 int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx);
-/* curve(eq, t0, t1) (t0 < t1 read by the caller) and surface(eq, u0, u1, v0, v1) with the
- * arguments at 1..5: the core object (the membership condition raised here). */
+/* curve(eq, t0, t1) and surface(eq, u0, u1, v0, v1) (lo < hi checked by the caller) of the
+ * equation at 1: the core object (the membership condition raised here). */
 pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status);
-pc_surface *pcl_eq_surface(lua_State *L, const char *fname, int *status);
+pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *status);
 
 #endif

@@ -111,6 +111,48 @@ static void test_perspective(void **state) {
     pc_surface_release(s);
 }
 
+/* A line behind the unit sphere seen from +z: hidden exactly where its image falls inside the
+ * sphere's (|x| < 1), so its seen runs are x in [-2, -1] and [1, 2], its hidden run between. */
+static void test_split(void **state) {
+    (void)state;
+    pc_surface *s = sphere();
+    pc_map ortho;
+    pc_map_orthographic(&ortho, 'z');
+    pc_map scr = screen_of(&ortho);
+    int st;
+    pc_occluder *o = pc_occluder_new(s, &scr, 48, 48, &st);
+    assert_non_null(o);
+    double cp[8] = {-2, 0, -0.5, 1, 2, 0, -0.5, 1};
+    pc_curve *c = pc_curve_bezier(3, 2, cp, &st);
+    assert_non_null(c);
+    pc_polyline seen = {0}, hidden = {0};
+    assert_int_equal(pc_occluder_split(o, &scr, c, 40, &seen, &hidden), PC_OK);
+    /* seen: 120 .. 220 then a move to 420 .. 520 (y 240 throughout) */
+    assert_true(seen.n > 4 && hidden.n >= 2);
+    assert_int_equal(seen.move[0], 1);
+    assert_float_equal(seen.xy[0], 120, 1e-9);
+    assert_float_equal(seen.xy[2 * seen.n - 2], 520, 1e-9);
+    int moves = 0;
+    for (size_t i = 0; i < seen.n; i++) {
+        assert_float_equal(seen.xy[2 * i + 1], 240, 1e-9);
+        if (seen.move[i] && i > 0) {
+            moves++;
+            assert_float_equal(seen.xy[2 * i - 2], 220, 1.0);   /* the change, bisected */
+            assert_float_equal(seen.xy[2 * i], 420, 1.0);
+        }
+    }
+    assert_int_equal(moves, 1);
+    assert_int_equal(hidden.move[0], 1);
+    assert_float_equal(hidden.xy[0], 220, 1.0);
+    assert_float_equal(hidden.xy[2 * hidden.n - 2], 420, 1.0);
+    for (size_t i = 1; i < hidden.n; i++) assert_int_equal(hidden.move[i], 0);
+    pc_polyline_free(&seen);
+    pc_polyline_free(&hidden);
+    pc_curve_release(c);
+    pc_occluder_free(o);
+    pc_surface_release(s);
+}
+
 static void test_errors(void **state) {
     (void)state;
     pc_surface *s = sphere();
@@ -134,6 +176,7 @@ int main(void) {
         cmocka_unit_test(test_sphere_parallel),
         cmocka_unit_test(test_plane_and_isometric),
         cmocka_unit_test(test_perspective),
+        cmocka_unit_test(test_split),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -129,4 +129,14 @@ end, 0, 1, 0, 1)
 check.err(function() failing:shade{nu = 2, nv = 2} end, "no value here", "the function's error")
 camera(nil)
 
+-- a true colour's attribute (above the screen's 16) is a colour of s:shade as well
+fresh()
+square(0):shade{nu = 1, nv = 1, color = "#c87828", light = V(0, 0, 1)}
+local true_attr = point(20, 20)
+check.truthy(true_attr > 15, "a true colour has an attribute above 15")
+fresh()
+square(0):shade{nu = 1, nv = 1, color = "#c87828", light = V(0, 0, 1)}
+check.eq(square(0):shade{nu = 1, nv = 1, color = true_attr, light = V(0, 0, 1)}, 1, "the attribute accepted")
+check.eq(rgb_at(20, 20), "c87828", "and drawn in its colour")
+
 check.done()

@@ -113,6 +113,9 @@ err(function() surface.bilinear(P(0, 0), P(1, 0), P(0, 1), P(1, 1, 1)) end, "dim
 err(function() surface.bezier({{P(0, 0)}}) end, "at least 2 rows", "too small a net")
 err(function() surface.bezier({{P(0, 0), P(1, 0)}, {P(0, 1)}}) end, "row [2] holds 1 points", "ragged net")
 err(function() surface.bezier({{P(0, 0), 3}, {P(0, 1), P(1, 1)}}) end, "[1][2] must be a point", "not a point")
+err(function() surface.bezier({{P(0, 0), P(1, 0)}, 5}) end, "surface.bezier: argument #1 (net) row [2] must be a list of points, got 5", "a row that is no list")
+err(function() surface.bezier({{P(0, 0), P(1, 0)}, {P(0, 1, 0), P(1, 1)}}) end,
+    "surface.bezier: argument #1 (net) [2][1] is 3-D, but [1][1] is 2-D (mixed dimensions)", "mixed dimensions in row [2]")
 err(function() surface.bspline(net, 3, 2) end, "argument #2 (p)", "degree too high")
 err(function() surface.hermite{P = {P(0, 0, 0)}} end, "surface.hermite: option 'P' must be a list of 4 points", "Hermite corners")
 err(function() surface.ruled(c0, 5) end, "argument #2 (c1)", "not a curve")
