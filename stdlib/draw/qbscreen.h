@@ -99,6 +99,35 @@ typedef struct {
 } pc_draw_state;
 void pc_draw_state_reset(pc_draw_state *st);
 
+/* ---- pages: QBasic's video memory (qbpages.c) --------------------------------------------- */
+
+#define PC_MAX_PAGES 8
+/* The pages of a screen: c the page drawn on (the active one), pages[0..npages-1] the screen's
+ * pages (pages[0] the first canvas, the others made on first use), `visual` the page shown
+ * and saved, and DRAW's state kept between statements. */
+typedef struct {
+    pc_canvas *c;
+    pc_canvas *pages[PC_MAX_PAGES];
+    int npages, active, visual;
+    pc_draw_state draw;
+} pc_pages;
+/* One page of SCREEN 12; PC_ENOMEM. */
+int pc_pages_init(pc_pages *p);
+void pc_pages_free(pc_pages *p);
+/* The page shown: the visual page, or the page drawn on before any was made. */
+pc_canvas *pc_pages_shown(const pc_pages *p);
+/* Page n, made on first use as a blank screen like page 0 (its palette too); NULL when the
+ * screen has no page n, or out of memory. */
+pc_canvas *pc_pages_page(pc_pages *p, int n);
+/* SCREEN: back to one page (the page drawn on becomes page 0, the others dropped), reset to
+ * m's size and colours with m's number of pages, in pixel coordinates; DRAW's state reset. */
+int pc_pages_screen(pc_pages *p, const pc_mode_info *m);
+/* SCREEN , , active, visual: draw on one page, show another (both made); PC_EARG for a page
+ * the screen does not have, PC_ENOMEM. */
+int pc_pages_set(pc_pages *p, int active, int visual);
+/* PALETTE: the palette is the video card's, so every page takes the change. */
+int pc_pages_palette(pc_pages *p, int attr, pc_rgb rgb);
+
 /* Run a DRAW string from the graphics cursor: U D L R E F G H n (default 1), M x,y (absolute
  * in view pixels) and M +-x,+-y (relative), the prefixes B (move only) and N (return after),
  * C n, S n, A n, TA n, P paint,border.  Spaces and ';' separate commands.  Distances are in

@@ -12,7 +12,7 @@
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 #include "print.h"       /* named pens, the print pen's width */
 #include "pcl_scene.h"
 #include "furniture.h"
@@ -22,14 +22,9 @@ static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG
 #define THEME_KEY "pointcalc.theme"
 #define CANVAS_MT "pointcalc.Canvas"
 
-/* c is the page drawn on; pages[] are QBasic's screen pages (pages[0] is the first canvas,
- * the others made on first use), `visual` the one shown and saved by the host. */
 typedef struct {
     PCL_SELF;             /* its own address: a forged box is refused (pcl.h) */
-    pc_canvas *c;
-    pc_canvas *pages[PCL_MAX_PAGES];
-    int npages, active, visual;
-    pc_draw_state draw;   /* DRAW's colour, scale and angle, kept between statements */
+    pc_pages p;           /* QBasic's pages, the one drawn on, DRAW's state (qbscreen.h) */
 } canvas_box;
 
 /* The box at idx, or NULL: the debug library can put something else in the registry entry
@@ -49,68 +44,23 @@ static canvas_box *box_at(lua_State *L, int idx) {
 }
 
 /* the host asks outside any protected call: no error, NULL as for no canvas */
-static canvas_box *the_box(lua_State *L) {
+pc_pages *pcl_pages(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     canvas_box *b = genuine_box(L, -1);
     lua_pop(L, 1);
-    return b;
+    return b ? &b->p : NULL;
 }
 
-static pc_canvas *canvas(lua_State *L) { return box_at(L, PCL_UPVALUE(1))->c; }
+static pc_canvas *canvas(lua_State *L) { return box_at(L, PCL_UPVALUE(1))->p.c; }
 
 pc_canvas *pcl_canvas(lua_State *L) {
-    canvas_box *b = the_box(L);
-    if (!b) return NULL;
-    return b->pages[b->visual] ? b->pages[b->visual] : b->c;
+    pc_pages *p = pcl_pages(L);
+    return p ? pc_pages_shown(p) : NULL;
 }
 
 pc_canvas *pcl_active_canvas(lua_State *L) {
-    canvas_box *b = the_box(L);
-    return b ? b->c : NULL;
-}
-
-int pcl_npages(lua_State *L) {
-    canvas_box *b = the_box(L);
-    return b ? b->npages : 0;
-}
-
-pc_canvas *pcl_page(lua_State *L, int page) {
-    canvas_box *b = the_box(L);
-    if (!b || page < 0 || page >= b->npages) return NULL;
-    if (!b->pages[page]) {   /* a page first used: a blank screen like page 0's */
-        pc_canvas *p0 = b->pages[0];
-        pc_canvas *p = pc_canvas_new(p0->width, p0->height, p0->ncolors);
-        if (!p) pcl_error(L, "screen: out of memory for page %d", page);
-        memcpy(p->palette, p0->palette, 256 * sizeof *p->palette);
-        b->pages[page] = p;
-    }
-    return b->pages[page];
-}
-
-void pcl_set_pages(lua_State *L, int active, int visual) {
-    canvas_box *b = the_box(L);
-    pc_canvas *a = pcl_page(L, active);
-    pcl_page(L, visual);
-    b->c = a;
-    b->active = active;
-    b->visual = visual;
-}
-
-pc_draw_state *pcl_draw_state(lua_State *L) {
-    canvas_box *b = the_box(L);
-    return &b->draw;
-}
-
-/* Back to one page, page 0 (SCREEN): the other pages are dropped. */
-static void single_page(canvas_box *b) {
-    for (int i = 0; i < PCL_MAX_PAGES; i++) {   /* the page drawn on becomes page 0 */
-        if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
-        b->pages[i] = NULL;
-    }
-    b->pages[0] = b->c;
-    b->npages = 1;
-    b->active = b->visual = 0;
-    pc_draw_state_reset(&b->draw);
+    pc_pages *p = pcl_pages(L);
+    return p ? p->c : NULL;
 }
 
 void pcl_set_theme(lua_State *L, pc_theme theme) {
@@ -273,10 +223,7 @@ static int l_screen(lua_State *L) {
         if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
             return pcl_argfail(L, 1, "must be %s, got %s", screen_args[0].expect, pcl_shown(L, 1));
     }
-    single_page(b);
-    int rc = pc_canvas_reset(b->c, m.width, m.height, m.ncolors);
-    if (rc == PC_OK) b->npages = m.pages, b->c->screen_pixels = 1;   /* pixel coordinates */
-    return pcl_check_canvas(L, b->c, rc);
+    return pcl_check_canvas(L, b->p.c, pc_pages_screen(&b->p, &m));
 }
 
 static int l_cls(lua_State *L) {
@@ -308,11 +255,7 @@ static int l_palette(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     pc_rgb rgb = {(uint8_t)a[1].v[0], (uint8_t)a[1].v[1], (uint8_t)a[1].v[2]};
-    /* the palette is the video card's: every page shows it */
-    canvas_box *b = box_at(L, PCL_UPVALUE(1));
-    for (int i = 0; i < PCL_MAX_PAGES; i++)
-        if (b->pages[i] && b->pages[i] != c) pcl_check_canvas(L, b->pages[i], pc_palette(b->pages[i], (int)a[0].x, rgb));
-    return pcl_check_canvas(L, c, pc_palette(c, (int)a[0].x, rgb));
+    return pcl_check_canvas(L, c, pc_pages_palette(&box_at(L, PCL_UPVALUE(1))->p, (int)a[0].x, rgb));
 }
 
 static const pcl_arg dot_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), PCL_END};
@@ -658,9 +601,7 @@ static int l_text(lua_State *L) {
 static int canvas_gc(lua_State *L) {
     canvas_box *b = genuine_box(L, 1);
     if (!b) return 0;   /* never a forged one */
-    for (int i = 0; i < PCL_MAX_PAGES; i++)
-        if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
-    pc_canvas_free(b->c);
+    pc_pages_free(&b->p);
     memset(b, 0, sizeof *b);
     return 0;
 }
@@ -695,17 +636,12 @@ void pcl_open_draw(lua_State *L) {
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-        memset(b, 0, sizeof *b);
         b->self = PCL_SELF_TAG(b, &CANVAS_TAG);
+        if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         luaL_newmetatable(L, CANVAS_MT);
         lua_pushcfunction(L, canvas_gc);
         lua_setfield(L, -2, "__gc");
         lua_setmetatable(L, -2);
-        b->c = pc_canvas_new_mode(12);
-        if (!b->c) pcl_error(L, "pointcalc: out of memory for the canvas");
-        b->pages[0] = b->c;
-        b->npages = 1;
-        pc_draw_state_reset(&b->draw);
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
 #include "layout.h"
@@ -114,43 +114,6 @@ static int l_placed_labels(lua_State *L) {
 
 #define HIDDEN_KEY "pointcalc.hidden"
 
-/* The scenes of a canvas: a new one each time the camera's screen map or mode changes. */
-typedef struct {
-    pc_scene **sc;
-    int *mode;
-    pc_map *map;
-    size_t n, cap;
-} scene_set;
-
-static int set_resolve(void *p, pc_canvas *copy) {
-    scene_set *set = p;
-    int st = PC_OK;
-    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_draw(set->sc[i], copy, set->mode[i]);
-    return st;
-}
-
-static int set_extent(void *p, const pc_canvas *c, pc_extent_fn put, void *ctx) {
-    scene_set *set = p;
-    int st = PC_OK;
-    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_extent(set->sc[i], c, put, ctx);
-    return st;
-}
-
-/* fit{} moved the picture: the scenes are drawn through the same framing */
-static void set_frame(void *p, double sx, double sy, double tx, double ty) {
-    scene_set *set = p;
-    for (size_t i = 0; i < set->n; i++) pc_scene_reframe(set->sc[i], sx, sy, tx, ty);
-}
-
-static void set_drop(void *p) {
-    scene_set *set = p;
-    for (size_t i = 0; i < set->n; i++) pc_scene_free(set->sc[i]);
-    free(set->sc);
-    free(set->mode);
-    free(set->map);
-    free(set);
-}
-
 void pcl_set_hidden_mode(lua_State *L, int mode) {
     lua_pushinteger(L, mode);
     lua_setfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
@@ -158,64 +121,18 @@ void pcl_set_hidden_mode(lua_State *L, int mode) {
 
 pc_scene *pcl_scene(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
-    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1;
+    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1, st;
     lua_pop(L, 1);
-    pc_map *f = pcl_camera(L);
+    pc_map *f = pcl_camera(L), scr;
     if (mode < 0 || !f || f->nin != 3) return NULL;
-    pc_map scr;
     pcl_screen_map(L, f, &scr);
-    pc_canvas *c = pcl_active_canvas(L);
-    scene_set *set = c->attach_resolve == set_resolve ? c->attach : NULL;
-    if (!set) {
-        if (c->attach) return NULL;   /* something else is attached: draw as usual */
-        if (!(set = calloc(1, sizeof *set))) pcl_error(L, "%s: out of memory", pcl_fname(L));
-        c->attach = set;
-        c->attach_resolve = set_resolve;
-        c->attach_drop = set_drop;
-        c->attach_extent = set_extent;
-        c->attach_frame = set_frame;
-    }
-    size_t n = set->n;
-    if (n && set->mode[n - 1] == mode && !memcmp(&set->map[n - 1], &scr, sizeof scr)) return set->sc[n - 1];
-    if (n == set->cap) {
-        size_t cap = set->cap ? 2 * set->cap : 4;
-        pc_scene **a = realloc(set->sc, cap * sizeof *a);
-        if (a) set->sc = a;
-        int *m = realloc(set->mode, cap * sizeof *m);
-        if (m) set->mode = m;
-        pc_map *mp = realloc(set->map, cap * sizeof *mp);
-        if (mp) set->map = mp;
-        if (!a || !m || !mp) pcl_error(L, "%s: out of memory", pcl_fname(L));
-        set->cap = cap;
-    }
-    int st;
-    pc_scene *sc = pc_scene_new(&scr, &st);
-    if (!sc) return pcl_raise_status(L, pcl_fname(L), st), NULL;
-    set->sc[n] = sc;
-    set->mode[n] = mode;
-    set->map[n] = scr;
-    set->n++;
+    pc_scene *sc = pc_canvas_scene(pcl_active_canvas(L), &scr, mode, &st);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return sc;
 }
 
 int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (size_t)(n + 1), 0);
-    uint8_t *brk = lua_newuserdatauv(L, (size_t)n + 1, 0);
-    size_t m = 0;
-    int gap = 1;
-    for (int k = 0; k <= n; k++) {
-        double x[PC_MAXDIM];
-        if (pc_curve_eval(c, c->t0 + (c->t1 - c->t0) * k / n, x) != PC_OK) {
-            gap = 1;   /* a point at infinity: the curve breaks there */
-            continue;
-        }
-        memcpy(xyz + 3 * m, x, 3 * sizeof *x);
-        brk[m++] = (uint8_t)gap;
-        gap = 0;
-    }
-    int st = pc_scene_add_polyline(sc, m, xyz, brk, color, pcl_active_canvas(L)->pen);
-    lua_pop(L, 2);
-    return st;
+    return pc_scene_add_curve(sc, c, n, color, pcl_active_canvas(L)->pen);
 }
 
 /* A 3-D point at stack index idx, or 0. */

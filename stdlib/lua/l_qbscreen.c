@@ -14,7 +14,7 @@
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
@@ -151,11 +151,10 @@ static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read 
 static int l_draw(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    pc_draw_state *st = pcl_draw_state(L);
+    pc_pages *p = pcl_pages(L);
     pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
-    st->aspect = pc_mode_of_canvas(c, &m) ? m.aspect : 1;
-    return pcl_check_canvas(L, c, pc_draw_macro(c, st, a[0].s));
+    p->draw.aspect = pc_mode_of_canvas(p->c, &m) ? m.aspect : 1;
+    return pcl_check_canvas(L, p->c, pc_draw_macro(p->c, &p->draw, a[0].s));
 }
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
@@ -175,17 +174,20 @@ static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page",
 static int l_pages(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int n = pcl_npages(L), active = in_range(L, 1, a[0].x, 0, n - 1);
-    pcl_set_pages(L, active, a[1].present ? in_range(L, 2, a[1].x, 0, n - 1) : active);
-    return 0;
+    pc_pages *p = pcl_pages(L);
+    int active = in_range(L, 1, a[0].x, 0, p->npages - 1);
+    int visual = a[1].present ? in_range(L, 2, a[1].x, 0, p->npages - 1) : active;
+    return pc_pages_set(p, active, visual) == PC_OK ? 0 : pcl_fail(L, "out of memory for a page");
 }
 
 static const pcl_arg pcopy_args[] = {INT("source page"), INT("destination page"), PCL_END};
 static int l_pcopy(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int n = pcl_npages(L), from = in_range(L, 1, a[0].x, 0, n - 1), to = in_range(L, 2, a[1].x, 0, n - 1);
-    pc_canvas *src = pcl_page(L, from), *dst = pcl_page(L, to);
+    pc_pages *p = pcl_pages(L);
+    int from = in_range(L, 1, a[0].x, 0, p->npages - 1), to = in_range(L, 2, a[1].x, 0, p->npages - 1);
+    pc_canvas *src = pc_pages_page(p, from), *dst = pc_pages_page(p, to);
+    if (!src || !dst) return pcl_fail(L, "out of memory for a page");
     return pcl_check_canvas(L, dst, pc_canvas_copy_picture(dst, src));
 }
 
