@@ -146,4 +146,17 @@ int pc_fit_around(pc_canvas *c, size_t n, const double *xy, double pad, int aspe
  * PC_EARG as above, or for a band < 0 or not below the view's height. */
 int pc_fit_around_band(pc_canvas *c, size_t n, const double *xy, double pad, double band, int aspect);
 
+/* A label as the writers place it (figure_items.c): its text (a copy, NUL-ended), its box in
+ * screen pixels, its side ("c", "n", "ne", ...) and whether it was placed automatically. */
+typedef struct {
+    const char *text;
+    size_t len;
+    pc_box2 box;
+    const char *side;
+    int autoplaced;
+} pc_placed;
+/* Every label of c as a writer places it, *n of them, in one block (free() it); NULL when out
+ * of memory. */
+pc_placed *pc_placed_labels(const pc_canvas *c, size_t *n);
+
 #endif

@@ -87,11 +87,11 @@ int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc) {
 
 /* ---- the kinds of the drawing layer ------------------------------------------------------ */
 
-/* The colour at idx on canvas c (a true colour allocated for "#rrggbb"), or -2 if none. */
-static int color_of(lua_State *L, int idx, pc_canvas *c) {
+int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors) {
     int isint;
     lua_Integer v = lua_tointegerx(L, idx, &isint);   /* the common case first: pset runs it */
     if (isint && v >= 0 && v < c->ncolors && lua_type(L, idx) == LUA_TNUMBER) return (int)v;
+    if (truecolors && isint && v >= 256 && v < 256 + c->ntrue && lua_type(L, idx) == LUA_TNUMBER) return (int)v;
     size_t len;
     const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
     pc_rgb rgb;
@@ -102,14 +102,13 @@ static int color_of(lua_State *L, int idx, pc_canvas *c) {
 }
 
 /* The colour at idx on canvas c into out->x, or the reader's message naming c's range. */
-static int read_color_on(lua_State *L, int idx, pc_canvas *c, pcl_val *out) {
-    if ((out->x = color_of(L, idx, c)) >= 0) return 1;
+static int read_color_on(lua_State *L, int idx, pc_canvas *c, int truecolors, pcl_val *out) {
+    if ((out->x = pcl_color_at(L, idx, c, truecolors)) >= 0) return 1;
     return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1));
 }
 
 int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    return read_color_on(L, idx, pcl_active_canvas(L), out);
+    return read_color_on(L, idx, pcl_active_canvas(L), a->dim == 1, out);
 }
 
 /* The colour of this file's statements, which hold the canvas as their upvalue: read on it
@@ -119,7 +118,7 @@ static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     pc_canvas *c = canvas(L);
     out->obj = c;
-    return read_color_on(L, idx, c, out);
+    return read_color_on(L, idx, c, 0, out);
 }
 
 /* The canvas of a statement whose colour argument is color: the one it was read on, else
@@ -651,7 +650,7 @@ void pcl_open_draw(lua_State *L) {
 /* The colour argument at arg for bindings not on the layer (c:draw): nil for the default. */
 int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) {
     arg = lua_absindex(L, arg);
-    int color = lua_isnoneornil(L, arg) ? -1 : color_of(L, arg, c);
+    int color = lua_isnoneornil(L, arg) ? -1 : pcl_color_at(L, arg, c, 0);
     if (color == -2)
         pcl_error(L, "%s: argument #%d (colour) must be a colour number 0..%d or \"#rrggbb\", got %s",
                   pcl_fname(L), pcl_arg_shown(L, arg), c->ncolors - 1, lua_type(L, arg) == LUA_TSTRING
