@@ -166,4 +166,16 @@ int pc_paint_tile(pc_canvas *c, double x, double y, const pc_tile *tile, int bor
  * VIEW, colours and cursor.  Both must have the same size and colours. */
 int pc_canvas_copy_picture(pc_canvas *dst, const pc_canvas *src);
 
+/* ---- the statements' arguments (qbstatements.c) ------------------------------------------ */
+
+/* VIEW with the corners as given: rounded to whole pixels; corners beyond any screen (over
+ * 1e6 away) refused as not inside the screen. */
+int pc_view_at(pc_canvas *c, double x1, double y1, double x2, double y2, int fill, int border, int screen);
+/* PALETTE's colour number 65536*blue + 256*green + red, each 0..63, as 8-bit rgb; PC_EARG for
+ * any other number. */
+int pc_rgb_qbasic(long long q, pc_rgb *out);
+/* PMAP(v, fn): fn 0 and 1 a world x or y to view pixels (rounded), 2 and 3 pixels back to the
+ * world; the pixels count from the view's corner unless VIEW SCREEN. */
+double pc_pmap(const pc_canvas *c, double v, int fn);
+
 #endif

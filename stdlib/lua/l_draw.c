@@ -155,15 +155,10 @@ static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
             out->v[i] = (double)x;
         }
         return 1;
-    } else if (lua_type(L, idx) == LUA_TNUMBER) {
+    } else {
         int isint;
         lua_Integer q = lua_tointegerx(L, idx, &isint);
-        int r = (int)(q & 0xff), g = (int)((q >> 8) & 0xff), b = (int)((q >> 16) & 0xff);
-        if (!isint || q < 0 || q > 0x3f3f3f || r > 63 || g > 63 || b > 63) return 0;
-        rgb = (pc_rgb){(uint8_t)((r << 2) | (r >> 4)), (uint8_t)((g << 2) | (g >> 4)),
-                       (uint8_t)((b << 2) | (b >> 4))};
-    } else {
-        return 0;
+        if (lua_type(L, idx) != LUA_TNUMBER || !isint || pc_rgb_qbasic(q, &rgb) != PC_OK) return 0;
     }
     out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
     return 1;
@@ -357,14 +352,7 @@ static int l_view(lua_State *L) {
     if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_view_reset(c));
     pcl_val a[7] = {0};
     PCL_READ_PAIRS(L, a);
-    /* the core takes whole pixels: corners beyond any screen are refused here, before the
-     * conversion to int could wrap them onto it */
-    const double lim = 1e6;
-    if (!(fabs(a[0].x) <= lim && fabs(a[1].x) <= lim && fabs(a[2].x) <= lim && fabs(a[3].x) <= lim))
-        return pcl_fail(L, "view (%s, %s)-(%s, %s) is not inside the %dx%d screen", pcl_pushnum(L, a[0].x),
-                        pcl_pushnum(L, a[1].x), pcl_pushnum(L, a[2].x), pcl_pushnum(L, a[3].x), c->width, c->height);
-    return pcl_check_canvas(L, c, pc_view(c, (int)lrint(a[0].x), (int)lrint(a[1].x), (int)lrint(a[2].x),
-                               (int)lrint(a[3].x), (int)a[4].x, (int)a[5].x, (int)a[6].x));
+    return pcl_check_canvas(L, c, pc_view_at(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x, (int)a[5].x, (int)a[6].x));
 }
 
 /* save(path [, theme]): the format follows the extension; theme "paper" or "screen". */

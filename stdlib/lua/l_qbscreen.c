@@ -195,16 +195,9 @@ static const pcl_arg pmap_args[] = {A_NUM("value"), A_INT("function", 0, 3), PCL
 static int l_pmap(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    double v = a[0].x, sx, sy, wx, wy;
-    /* physical coordinates count from the view's corner, unless VIEW SCREEN */
-    double ox = c->view_screen ? 0 : c->view.x0, oy = c->view_screen ? 0 : c->view.y0;
-    switch ((int)a[1].x) {
-    case 0: pc_world_to_screen(c, v, 0, &sx, &sy); lua_pushinteger(L, (lua_Integer)lrint(sx - ox)); break;
-    case 1: pc_world_to_screen(c, 0, v, &sx, &sy); lua_pushinteger(L, (lua_Integer)lrint(sy - oy)); break;
-    case 2: pc_screen_to_world(c, v + ox, oy, &wx, &wy); lua_pushnumber(L, wx); break;
-    default: pc_screen_to_world(c, ox, v + oy, &wx, &wy); lua_pushnumber(L, wy); break;
-    }
+    double r = pc_pmap(pcl_active_canvas(L), a[0].x, (int)a[1].x);
+    if (a[1].x < 2) lua_pushinteger(L, (lua_Integer)r);
+    else lua_pushnumber(L, r);
     return 1;
 }
 
@@ -215,15 +208,12 @@ static int l_mode_info(lua_State *L) {
     pc_mode_info m;
     if (a[0].x < 0 || a[0].x > 13 || pc_mode_info_of((int)a[0].x, &m) != PC_OK)
         return pcl_argfail(L, 1, "must be a screen mode 1, 2, 7, 8, 9, 12 or 13, got %s", pcl_pushnum(L, a[0].x));
+    static const char *const names[] = {"width", "height", "colors", "pages", "cols", "rows", "cell"};
+    const double facts[] = {m.width, m.height, m.ncolors, m.pages, m.cols, m.rows, m.cell_h};
     lua_createtable(L, 0, 8);
-    lua_pushinteger(L, m.width); lua_setfield(L, -2, "width");
-    lua_pushinteger(L, m.height); lua_setfield(L, -2, "height");
-    lua_pushinteger(L, m.ncolors); lua_setfield(L, -2, "colors");
-    lua_pushinteger(L, m.pages); lua_setfield(L, -2, "pages");
-    lua_pushinteger(L, m.cols); lua_setfield(L, -2, "cols");
-    lua_pushinteger(L, m.rows); lua_setfield(L, -2, "rows");
-    lua_pushinteger(L, m.cell_h); lua_setfield(L, -2, "cell");
-    lua_pushnumber(L, m.aspect); lua_setfield(L, -2, "aspect");
+    pcl_set_fields(L, 7, names, facts, 1);
+    lua_pushnumber(L, m.aspect);
+    lua_setfield(L, -2, "aspect");
     return 1;
 }
 
