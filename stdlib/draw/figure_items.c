@@ -98,3 +98,17 @@ pc_placed *pc_placed_labels(const pc_canvas *c, size_t *count) {
     *count = k;
     return out;
 }
+
+int pc_path_stmt(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, int closed, int color, int heads,
+                 int filled, int fill_color, int rule) {
+    int st;
+    if (filled) {
+        st = pc_fill_path(c, n, xy, verbs, n, rule, fill_color);
+        return st == PC_OK && color >= 0 ? pc_path(c, n, xy, verbs, n, 1, color) : st;
+    }
+    st = pc_path(c, n, xy, verbs, n, closed, color);
+    if (st == PC_OK && (heads & PC_ARROW_END) && n >= 2)
+        st = pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color);
+    if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color);
+    return st;
+}

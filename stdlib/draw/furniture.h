@@ -68,4 +68,10 @@ int pc_text_device(pc_canvas *c, double x, double y, const char *utf8, int scale
 typedef int (*pc_graph_fn)(void *ctx, double x, double *y, int *have);
 int pc_graph(pc_canvas *c, double x0, double x1, int n, pc_graph_fn f, void *ctx, int color);
 
+/* path{}: the polyline through n points (verbs as pc_path's), closed or not, in colour color,
+ * with arrow heads 9 px long (PC_ARROW_* bits) on its last and first segments; or, filled, the
+ * closed path filled in fill_color by rule (PC_FILL_*) and its outline on top if color >= 0. */
+int pc_path_stmt(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, int closed, int color, int heads,
+                 int filled, int fill_color, int rule);
+
 #endif

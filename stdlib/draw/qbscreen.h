@@ -178,4 +178,11 @@ int pc_rgb_qbasic(long long q, pc_rgb *out);
  * world; the pixels count from the view's corner unless VIEW SCREEN. */
 double pc_pmap(const pc_canvas *c, double v, int fn);
 
+/* LINE: a segment, with box 1 a box's outline, box 2 a filled box; pattern 0..0xffff is the
+ * 16-bit line style (QBasic's INTEGER -21846 is 0xAAAA), which a filled box ignores; -1 none. */
+int pc_line_stmt(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int box, long pattern);
+/* The message of c's last failure without a leading statement name ("pset: "), for the
+ * caller to put its own name first. */
+const char *pc_canvas_message(const pc_canvas *c);
+
 #endif

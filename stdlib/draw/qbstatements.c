@@ -1,6 +1,7 @@
 /* What QBasic's statements resolve from their arguments before drawing (qbscreen.h): VIEW's
  * corners as whole pixels, PALETTE's colour numbers, PMAP's conversions. */
 #include <math.h>
+#include <string.h>
 #include "qbscreen.h"
 #include "canvas_internal.h"
 
@@ -40,4 +41,19 @@ double pc_pmap(const pc_canvas *c, double v, int fn) {
         pc_screen_to_world(c, ox, v + oy, &wx, &wy);
         return wy;
     }
+}
+
+int pc_line_stmt(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int box, long pattern) {
+    if (pattern >= 0 && box != 2)   /* QBasic ignores the style of a filled box */
+        return pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)(pattern & 0xffff));
+    if (box == 0) return pc_line(c, x1, y1, x2, y2, color);
+    return pc_box(c, x1, y1, x2, y2, color, box == 2);
+}
+
+const char *pc_canvas_message(const pc_canvas *c) {
+    /* a core message may start with the core statement's name ("pset: coordinates ..."): the
+     * caller's name replaces it, so preset reports as preset and line_to as line_to */
+    const char *msg = c->error, *colon = strstr(msg, ": ");
+    if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg)) return colon + 2;
+    return msg;
 }

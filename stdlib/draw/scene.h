@@ -77,4 +77,8 @@ pc_scene *pc_canvas_scene(pc_canvas *c, const pc_map *screen, int mode, int *sta
 struct pc_curve;
 int pc_scene_add_curve(pc_scene *sc, const struct pc_curve *c, int n, int color, int pen);
 
+/* A path of n 3-D points (closed: back to the first), with arrow heads (furniture.h's
+ * PC_ARROW_* bits) on its last and first segments, 9 px long, each drawn where its tip is seen. */
+int pc_scene_add_path(pc_scene *sc, size_t n, const double *xyz, int closed, int heads, int color, int pen);
+
 #endif

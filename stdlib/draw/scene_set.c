@@ -5,6 +5,7 @@
 #include <string.h>
 #include "scene.h"
 #include "curve.h"
+#include "furniture.h"
 
 typedef struct {
     pc_scene **sc;
@@ -102,5 +103,23 @@ int pc_scene_add_curve(pc_scene *sc, const pc_curve *c, int n, int color, int pe
     int st = pc_scene_add_polyline(sc, m, xyz, brk, color, pen);
     free(xyz);
     free(brk);
+    return st;
+}
+
+int pc_scene_add_path(pc_scene *sc, size_t n, const double *xyz, int closed, int heads, int color, int pen) {
+    double *p = malloc(sizeof(double) * 3 * (n + 1));
+    if (!p) return PC_ENOMEM;
+    memcpy(p, xyz, sizeof(double) * 3 * n);
+    if (closed && n > 1) {
+        memcpy(p + 3 * n, p, 3 * sizeof *p);
+        n++;
+    }
+    int st = pc_scene_add_polyline(sc, n, p, NULL, color, pen);
+    /* the heads on the path's own end segments, hidden with their tips (9 px long, as a 2-D
+     * path's) */
+    if (st == PC_OK && (heads & PC_ARROW_END) && n >= 2)
+        st = pc_scene_add_arrow_head(sc, p + 3 * (n - 2), p + 3 * (n - 1), 9, color);
+    if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_scene_add_arrow_head(sc, p + 3, p, 9, color);
+    free(p);
     return st;
 }

@@ -1,16 +1,10 @@
-/* Binding of the QBasic drawing layer (stdlib/draw): screen cls color palette pset preset line
- * line_to circle paint point window view save last_point, and beyond QBasic: pen path fill
- * label text.  Every colour argument is an attribute number or a "#rrggbb" string.
- *
+/* Binding of the QBasic drawing layer (stdlib/draw) and beyond QBasic: pen path fill label text.
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
- * around a pc_canvas pointer, so SCREEN can replace the canvas in place); the registry keeps
- * it too, for the host.  Coordinate pairs may always be given as one 2-D point. */
-#include <ctype.h>
+ * around QBasic's pages, so SCREEN can replace the canvas in place); the registry keeps it
+ * too, for the host. */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include "pcl_args.h"
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_draw.h"
 #include "print.h"       /* named pens, the print pen's width */
@@ -74,15 +68,9 @@ pc_theme pcl_theme(lua_State *L) {
     lua_pop(L, 1);
     return t;
 }
-/* A core call failed: raise its message as a Lua error at the caller's line. */
+
 int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc) {
-    if (rc == PC_OK) return 0;
-    /* a core message may start with the core statement's name ("pset: coordinates ...");
-     * the declared name replaces it, so preset reports as preset and line_to as line_to */
-    const char *msg = c->error, *colon = strstr(msg, ": ");
-    if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg))
-        msg = colon + 2;
-    return pcl_fail(L, "%s", msg);
+    return rc == PC_OK ? 0 : pcl_fail(L, "%s", pc_canvas_message(c));
 }
 
 /* ---- the kinds of the drawing layer ------------------------------------------------------ */
@@ -276,12 +264,9 @@ static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
 static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl_val *a) {
-    double x2 = a[0].x, y2 = a[1].x;
-    int color = (int)a[2].x, box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
-    if (a[4].present && box != 2)   /* QBasic ignores the style of a filled box */
-        return pcl_check_canvas(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)((long)a[4].x & 0xffff)));
-    if (box == 0) return pcl_check_canvas(L, c, pc_line(c, x1, y1, x2, y2, color));
-    return pcl_check_canvas(L, c, pc_box(c, x1, y1, x2, y2, color, box == 2));
+    int box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
+    long pattern = a[4].present ? (long)a[4].x & 0xffff : -1;
+    return pcl_check_canvas(L, c, pc_line_stmt(c, x1, y1, a[0].x, a[1].x, (int)a[2].x, box, pattern));
 }
 
 static int l_line(lua_State *L) {
@@ -355,7 +340,6 @@ static int l_view(lua_State *L) {
     return pcl_check_canvas(L, c, pc_view_at(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x, (int)a[5].x, (int)a[6].x));
 }
 
-/* save(path [, theme]): the format follows the extension; theme "paper" or "screen". */
 static const char *const THEMES[] = {"paper", "screen", NULL};
 static const pcl_arg save_args[] = {{.name = "path", .kind = PCL_STRING, .expect = "a file name"},
                                     {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES},
@@ -373,7 +357,6 @@ static int l_save(lua_State *L) {
     return 0;
 }
 
-/* size() -> width, height, colours of the current screen */
 static int l_size(lua_State *L) {
     pc_canvas *c = canvas(L);
     lua_pushinteger(L, c->width);
@@ -421,8 +404,6 @@ static const pcl_arg pen_args[] = {
      .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"},
     PCL_END};
 
-/* pen{width = w, dash = {on, off, ...}} sets the pen (pixels, or lengths with units: the
- * print pen); pen "main" a named pen; pen() restores the default. */
 static int l_pen(lua_State *L) {
     pcl_val a[3] = {0};   /* pen; the table's width, dash */
     PCL_READ(L, a);
@@ -442,7 +423,7 @@ static int l_pen(lua_State *L) {
 
 /* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at
  * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
-static void list_point(lua_State *L, int idx, const char *where, const char *expected, double *xy) {
+static void list_point(lua_State *L, int idx, const char *where, double *xy) {
     pcl_value *p = pcl_tovalue(L, -1);
     if (p && p->n != 2) {
         int st = pcl_project(L, p->n, p->h, xy, xy + 1);
@@ -452,8 +433,8 @@ static void list_point(lua_State *L, int idx, const char *where, const char *exp
             pcl_fail(L, "argument #%d (points) %s: %s projects to infinity (it lies in the camera's "
                         "vanishing plane)", idx, where, text);
         if (st != PC_EDIM) pcl_fail(L, "argument #%d (points) %s: the image of %s is not finite", idx, where, text);
-        pcl_fail(L, "argument #%d (points) %s must be %s, got the %d-D %s (3-D points need a camera)",
-                 idx, where, expected, p->n, text);
+        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got the %d-D %s (3-D points need a camera)",
+                 idx, where, p->n, text);
     }
     if (p && pc_loc(2, p->h, xy) != PC_OK) {   /* a vector or a weighted value */
         const char *text = luaL_tolstring(L, -1, NULL);
@@ -462,7 +443,7 @@ static void list_point(lua_State *L, int idx, const char *where, const char *exp
                  pcl_pushnum(L, p->h[2]));
     }
     if (!pcl_topoint2(L, -1, xy, xy + 1))
-        pcl_fail(L, "argument #%d (points) %s must be %s, got %s", idx, where, expected, pcl_shown(L, -1));
+        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
 }
 
 /* The points of path and fill: a list of 2-D points (one subpath) or a list of such lists
@@ -501,7 +482,7 @@ static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
             if (nested) snprintf(where, sizeof where, "[%d][%d]", (int)k, (int)j);
             else snprintf(where, sizeof where, "[%d]", (int)j);
             lua_geti(L, list, j);
-            list_point(L, idx, where, nested ? "a 2-D point" : "a 2-D point", &xy[2 * i]);
+            list_point(L, idx, where, &xy[2 * i]);
             verbs[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
             lua_pop(L, 1);
         }
@@ -519,34 +500,18 @@ static const pcl_arg path_keys[] = {{.name = "closed", .kind = PCL_BOOLEAN}, COL
                                     RULE("rule"), {.name = "arrow", .kind = PCL_ENUM, .choices = HEADS}, PCL_END};
 static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL_END};
 
-/* path(points [, {closed =, color =, fill =, rule =, arrow =}]): the polyline through a list of
- * 2-D points (or several, one subpath each).  With fill, the closed path is filled in that
- * colour, and its outline drawn on top only when color is given too; arrow heads (furniture.h)
- * on the first and last segments of an unfilled one. */
 static int l_path(lua_State *L) {
     pcl_val a[7] = {0};   /* points, options; closed, color, fill, rule, arrow */
     PCL_READ(L, a);
-    pc_canvas *c = canvas(L);
-    size_t n = (size_t)a[0].n;
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
-    const double *xy = a[0].list;
     /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
     if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
-    if (!a[4].present) {
-        pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
-        if ((heads & PC_ARROW_END) && n >= 2)
-            pcl_check_canvas(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
-        if ((heads & PC_ARROW_START) && n >= 2) pcl_check_canvas(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
-        return 0;
-    }
-    pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[4].x));
-    if (color < 0) return 0;
-    return pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, 1, color));
+    pc_canvas *c = canvas(L);
+    int rule = a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
+    return pcl_check_canvas(L, c, pc_path_stmt(c, (size_t)a[0].n, a[0].list, a[0].obj, closed, color, heads,
+                                               a[4].present, (int)a[4].x, rule));
 }
 
-/* fill(points [, colour [, rule]]): the closed path through the points (or several, one
- * subpath each) filled; rule "evenodd" (default: a subpath inside another makes a hole) or
- * "nonzero". */
 static const pcl_arg fill_args[] = {POINTS, COLOR("colour"), RULE("rule"), PCL_END};
 static int l_fill(lua_State *L) {
     pcl_val a[3] = {0};
@@ -556,9 +521,6 @@ static int l_fill(lua_State *L) {
     return pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
 }
 
-/* label(text, P [, direction [, colour [, scale]]] [, {font =, size =, halo =}]): text beside
- * a point, 3 px off it; without a direction it is placed when the picture is written
- * (stdlib/draw/layout.h); the options apply in the print look. */
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
 static const pcl_arg label_args[] = {
     TEXT, A_X("x"), A_NUM("y"),
@@ -576,7 +538,6 @@ static int l_label(lua_State *L) {
     return 0;
 }
 
-/* text(x, y, string [, colour [, scale]]): the text cell's top-left corner at the point. */
 static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
 static int l_text(lua_State *L) {
     pcl_val a[5] = {0};

@@ -129,21 +129,14 @@ int pcl_scene_path(lua_State *L, int closed, int color, int heads) {
     lua_pop(L, 1);
     if (!is3 || !(sc = pcl_scene(L))) return 0;
     size_t n = lua_rawlen(L, 1);   /* the arg layer read them already: n points of one path */
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (n + 1), 0);
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
     for (size_t k = 0; k < n; k++) {
         lua_rawgeti(L, 1, (lua_Integer)k + 1);
         int ok = point3(L, -1, xyz + 3 * k);
         lua_pop(L, 1);
         if (!ok) return lua_pop(L, 1), 0;   /* not all 3-D points: drawn as usual */
     }
-    if (closed && n > 1) memcpy(xyz + 3 * n, xyz, 3 * sizeof *xyz), n++;
-    pc_canvas *c = pcl_active_canvas(L);
-    int st = pc_scene_add_polyline(sc, n, xyz, NULL, color, c->pen);
-    /* the heads of arrow = "end" | "start" | "both" on the path's own end segments, hidden
-     * with their tips (9 px long, as a 2-D path's) */
-    if (st == PC_OK && (heads & PC_ARROW_END) && n >= 2)
-        st = pc_scene_add_arrow_head(sc, xyz + 3 * (n - 2), xyz + 3 * (n - 1), 9, color);
-    if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_scene_add_arrow_head(sc, xyz + 3, xyz, 9, color);
+    int st = pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen);
     lua_pop(L, 1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;

@@ -120,9 +120,30 @@ static void test_placed_labels(void **state) {
     pc_canvas_free(c);
 }
 
+/* path{}: a head at the end only, a filled square with and without its outline */
+static void test_path_stmt(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    double xy[4] = {100, 100, 200, 100};
+    assert_int_equal(pc_path_stmt(c, 2, xy, NULL, 0, 14, PC_ARROW_END, 0, -1, PC_FILL_EVENODD), PC_OK);
+    assert_int_equal(px(c, 150, 100), 14);
+    assert_true(ink(c, 190, 97, 199, 103, 14) > 12);   /* the head's triangle at B */
+    assert_int_equal(ink(c, 100, 96, 110, 99, 14) + ink(c, 100, 101, 110, 104, 14), 0);   /* none at A */
+    double sq[8] = {300, 300, 340, 300, 340, 340, 300, 340};
+    assert_int_equal(pc_path_stmt(c, 4, sq, NULL, 0, -1, 0, 1, 9, PC_FILL_EVENODD), PC_OK);
+    assert_int_equal(px(c, 320, 320), 9);
+    assert_int_equal(px(c, 300, 320), 9);   /* no outline: the fill's own edge pixel */
+    double sq2[8] = {400, 300, 440, 300, 440, 340, 400, 340};
+    assert_int_equal(pc_path_stmt(c, 4, sq2, NULL, 0, 12, 0, 1, 9, PC_FILL_EVENODD), PC_OK);
+    assert_int_equal(px(c, 420, 320), 9);
+    assert_int_equal(px(c, 400, 320), 12);   /* the outline on top */
+    assert_int_equal(px(c, 420, 340), 12);
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_caption_and_device_text), cmocka_unit_test(test_axes_default),
-        cmocka_unit_test(test_graph), cmocka_unit_test(test_placed_labels)};
+        cmocka_unit_test(test_graph), cmocka_unit_test(test_placed_labels), cmocka_unit_test(test_path_stmt)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

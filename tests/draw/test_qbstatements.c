@@ -55,8 +55,36 @@ static void test_pmap(void **state) {
     pc_canvas_free(c);
 }
 
+static void test_line_stmt(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_line_stmt(c, 10, 10, 20, 10, 5, 0, -1), PC_OK);
+    assert_int_equal(c->pixels[10 * 640 + 15], 5);
+    assert_int_equal(pc_line_stmt(c, 30, 30, 40, 40, 6, 2, 0), PC_OK);   /* a filled box ignores the style */
+    assert_int_equal(c->pixels[35 * 640 + 35], 6);
+    assert_int_equal(pc_line_stmt(c, 50, 50, 60, 60, 7, 1, -1), PC_OK);   /* an outline */
+    assert_int_equal(c->pixels[50 * 640 + 55], 7);
+    assert_int_equal(c->pixels[55 * 640 + 55], 0);
+    /* &HAAAA: every other pixel, bit 15 first */
+    assert_int_equal(pc_line_stmt(c, 100, 100, 115, 100, 8, 0, 0xAAAA), PC_OK);
+    int on = 0;
+    for (int x = 100; x <= 115; x++) on += c->pixels[100 * 640 + x] == 8;
+    assert_int_equal(on, 8);
+    assert_int_equal(pc_line_stmt(c, 1e300, 0, 0, 0, 99, 0, -1), PC_EARG);
+    assert_string_equal(pc_canvas_message(c), "colour 99 out of range 0..15");
+    strcpy(c->error, "pset: coordinates out of range");
+    assert_string_equal(pc_canvas_message(c), "coordinates out of range");
+    strcpy(c->error, "view (1, 2) is not inside");
+    assert_string_equal(pc_canvas_message(c), "view (1, 2) is not inside");
+    strcpy(c->error, "line_to: no such");
+    assert_string_equal(pc_canvas_message(c), "no such");
+    strcpy(c->error, "Line: kept");
+    assert_string_equal(pc_canvas_message(c), "Line: kept");
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_view_at), cmocka_unit_test(test_rgb_qbasic),
-                                       cmocka_unit_test(test_pmap)};
+                                       cmocka_unit_test(test_pmap), cmocka_unit_test(test_line_stmt)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -10,6 +10,7 @@
 #include <cmocka.h>
 #include "canvas.h"
 #include "curve.h"
+#include "furniture.h"
 #include "scene.h"
 
 /* seen from +z: screen x = 320 + x, y = 240 - y */
@@ -66,7 +67,30 @@ static void test_scene_set(void **state) {
     pc_canvas_free(c);
 }
 
+/* a closed 3-D path: the closing side drawn too; a head at its end */
+static void test_scene_path(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    pc_map f = screen(0);
+    int st;
+    pc_scene *sc = pc_canvas_scene(c, &f, PC_HIDDEN_SHOW, &st);
+    double tri[9] = {0, 0, 0, 100, 0, 0, 100, 100, 0};
+    assert_int_equal(pc_scene_add_path(sc, 3, tri, 1, 0, 13, 0), PC_OK);
+    double seg[6] = {-200, -100, 0, -100, -100, 0};
+    assert_int_equal(pc_scene_add_path(sc, 2, seg, 0, PC_ARROW_END, 11, 0), PC_OK);
+    assert_int_equal(c->attach_resolve(c->attach, c), PC_OK);
+    assert_int_equal(c->pixels[240 * 640 + 370], 13);   /* (50, 0) */
+    assert_int_equal(c->pixels[190 * 640 + 370], 13);   /* (50, 50): the closing side */
+    assert_int_equal(c->pixels[190 * 640 + 420], 13);   /* (100, 50) */
+    assert_int_equal(c->pixels[340 * 640 + 170], 11);   /* (-150, -100) */
+    int head = 0;
+    for (int y = 336; y <= 344; y++)
+        for (int x = 208; x <= 219; x++) head += c->pixels[y * 640 + x] == 11 && y != 340;
+    assert_true(head > 6);   /* the head's triangle at (-100, -100) */
+    pc_canvas_free(c);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_scene_set)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_scene_set), cmocka_unit_test(test_scene_path)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
