@@ -1,16 +1,6 @@
 /* Binding of QBasic's screen (stdlib/draw/qbscreen.h): what QBasic programs do on a graphics
- * screen beyond the drawing statements, for the QBasic runtime and for scripts.
- *
- *   print_at(row, col, text [, fg [, bg [, cell]]])  text in character cells (code page 437)
- *   scroll_text(top, bottom [, bg])           the text rows top..bottom up by one
- *   get_block(x1, y1, x2, y2) -> block        GET; block.w, block.h, block.bytes
- *   put_block(x, y, block [, action])         PUT; "xor" (default), "pset", "preset", "and", "or"
- *   draw(commands)                            DRAW's macro language
- *   pages(active [, visual])                  SCREEN , , apage, vpage
- *   pcopy(from, to)                           PCOPY
- *   pmap(value, fn)                           PMAP: fn 0/1 world -> view pixels, 2/3 back
- *   mode_info(mode) -> table                  width height colors pages cols rows cell aspect
- *   paint_tile(x, y, tile [, border])         PAINT with a tile string, as the mode reads it */
+ * screen beyond the drawing statements (text in cells, GET/PUT, DRAW, pages, PMAP), for the
+ * QBasic runtime and for scripts. */
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -228,17 +218,12 @@ static const pcl_fn fns[] = {
     {.name = "pmap", .fn = l_pmap, .args = pmap_args, .sig = "pmap(value, fn) -> number", .help = "QBasic's PMAP: fn 0 and 1 map a world x or y to view pixels, 2 and 3 map pixels back."},
     {.name = "mode_info", .fn = l_mode_info, .args = mode_info_args, .sig = "mode_info(mode) -> {width, height, colors, pages, cols, rows, cell, aspect}", .help = "The facts of SCREEN mode 1, 2, 7, 8, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13)."},
     {.name = "paint_tile", .fn = l_paint_tile, .args = paint_tile_args, .sig = "paint_tile(x, y, tile [, border])", .help = "QBasic's PAINT with a tile string (1..64 bytes, read as the mode keeps pixels: a bit a pixel in SCREEN 2, two in SCREEN 1, 4 bit planes a row in the 16-colour modes, a byte a pixel in SCREEN 13), up to the border colour (default: the foreground)."},
-
     PCL_END};
+
 void pcl_open_qbscreen(lua_State *L) {
-    if (luaL_newmetatable(L, BLOCK_MT)) {
-        lua_pushcfunction(L, block_gc);
-        lua_setfield(L, -2, "__gc");
-        lua_pushcfunction(L, block_index);
-        lua_setfield(L, -2, "__index");
-        lua_pushcfunction(L, block_tostring);
-        lua_setfield(L, -2, "__tostring");
-    }
+    static const luaL_Reg meta[] = {{"__gc", block_gc}, {"__index", block_index}, {"__tostring", block_tostring},
+                                    {NULL, NULL}};
+    if (luaL_newmetatable(L, BLOCK_MT)) luaL_setfuncs(L, meta, 0);
     lua_pop(L, 1);
     pcl_register(L, -1, fns, 0);
 }
