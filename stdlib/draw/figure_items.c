@@ -8,6 +8,7 @@
 #include "axes.h"
 #include "layout.h"
 #include "print.h"
+#include "canvas_internal.h"
 
 /* The text op just recorded is in device units: framing leaves it where it is. */
 static int device(pc_canvas *c, int st) {
@@ -111,4 +112,15 @@ int pc_path_stmt(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs,
         st = pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color);
     if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color);
     return st;
+}
+
+int pc_fit_options(pc_canvas *c, const pc_fit_opts *o) {
+    /* margin (pixels, of what is drawn) and pad (world units, of the points) each belong to one
+     * of the two framings, so the other is refused rather than ignored */
+    if (o->around && o->has_margin)
+        return pc_fail(c, "margin frames what is drawn (in pixels); with around give pad (world units)");
+    if (o->around) return pc_fit_around_band(c, o->n, o->xy, o->pad, o->band, o->aspect);
+    if (o->has_pad) return pc_fail(c, "pad is the room round the points of around: give around too (or margin)");
+    if (o->has_band) return pc_fail(c, "band is the caption's room under the points of around: give around too");
+    return pc_fit(c, o->margin, o->aspect);
 }

@@ -159,4 +159,15 @@ typedef struct {
  * of memory. */
 pc_placed *pc_placed_labels(const pc_canvas *c, size_t *n);
 
+/* fit{}: with around, the frame of the n points xy (pc_fit_around_band, pad and band); else
+ * the frame of what is drawn (pc_fit, margin).  Each framing's own option given to the other
+ * is PC_EARG with the reason (figure_items.c). */
+typedef struct {
+    int has_margin, has_pad, has_band, around, aspect;
+    double margin, pad, band;
+    size_t n;
+    const double *xy;
+} pc_fit_opts;
+int pc_fit_options(pc_canvas *c, const pc_fit_opts *o);
+
 #endif

@@ -264,25 +264,16 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
                                    {.name = "around", .kind = PCL_POINTS, .flags = PCL_OPT, .lo = 1},
                                    A_OPTNUM("pad", 0, 1e300, 0, "0"), A_OPTNUM("band", 0, 1e5, 0, "0"), PCL_END};
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
-/* fit{around = points, pad =, band =}: the frame of the given points (n-D through the camera), set
- * before drawing; margin (pixels, of what is drawn) and pad (world units, of the points) each
- * belong to one of the two framings, so the other is refused rather than ignored. */
-static int fit_around(lua_State *L, pc_canvas *c, const pcl_val *a) {
-    if (a[1].present) return pcl_fail(L, "margin frames what is drawn (in pixels); with around give pad (world units)");
-    int n = a[3].n, d = a[3].dim;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
-    int bad = pcl_rows_to_xy(L, n, d, a[3].list, xy);
-    if (bad >= 0) return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
-    return pcl_check_canvas(L, c, pc_fit_around_band(c, (size_t)n, xy, a[4].x, a[5].x, a[2].n));
-}
 static int l_fit(lua_State *L) {
-    pcl_val a[6] = {0};
+    pcl_val a[6] = {0};   /* options; margin, aspect, around, pad, band */
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    if (a[3].present) return fit_around(L, c, a);
-    if (a[4].present) return pcl_fail(L, "pad is the room round the points of around: give around too (or margin)");
-    if (a[5].present) return pcl_fail(L, "band is the caption's room under the points of around: give around too");
-    return pcl_check_canvas(L, c, pc_fit(c, a[1].x, a[2].n));
+    int n = a[3].present ? a[3].n : 0, d = a[3].dim;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n + 1, 0);
+    int bad = pcl_rows_to_xy(L, n, d, a[3].list, xy);
+    if (bad >= 0) return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
+    pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n, a[1].x, a[4].x, a[5].x, (size_t)n, xy};
+    return pcl_check_canvas(L, c, pc_fit_options(c, &o));
 }
 
 static const char *const EDGES[] = {"bottom", "top", NULL};

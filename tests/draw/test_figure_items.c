@@ -141,9 +141,34 @@ static void test_path_stmt(void **state) {
     pc_canvas_free(c);
 }
 
+/* fit{}: each framing refuses the other's option; around sets the window round the points */
+static void test_fit_options(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    double xy[4] = {0, 0, 4, 3};
+    pc_fit_opts o = {.has_margin = 1, .margin = 5, .around = 1, .n = 2, .xy = xy};
+    assert_int_equal(pc_fit_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "margin frames what is drawn (in pixels); with around give pad (world units)");
+    o = (pc_fit_opts){.has_pad = 1, .pad = 1};
+    assert_int_equal(pc_fit_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "pad is the room round the points of around: give around too (or margin)");
+    o = (pc_fit_opts){.has_band = 1, .band = 20};
+    assert_int_equal(pc_fit_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "band is the caption's room under the points of around: give around too");
+    o = (pc_fit_opts){.around = 1, .n = 2, .xy = xy, .aspect = PC_FIT_FILL};
+    assert_int_equal(pc_fit_options(c, &o), PC_OK);
+    double sx, sy;
+    pc_world_to_screen(c, 4, 3, &sx, &sy);   /* the box itself fills the view, y up */
+    assert_true(fabs(sx - 639) < 1e-6 && fabs(sy) < 1e-6);
+    pc_world_to_screen(c, 0, 0, &sx, &sy);
+    assert_true(fabs(sx) < 1e-6 && fabs(sy - 479) < 1e-6);
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_caption_and_device_text), cmocka_unit_test(test_axes_default),
-        cmocka_unit_test(test_graph), cmocka_unit_test(test_placed_labels), cmocka_unit_test(test_path_stmt)};
+        cmocka_unit_test(test_graph), cmocka_unit_test(test_placed_labels), cmocka_unit_test(test_path_stmt),
+        cmocka_unit_test(test_fit_options)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
