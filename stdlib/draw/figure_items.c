@@ -124,3 +124,13 @@ int pc_fit_options(pc_canvas *c, const pc_fit_opts *o) {
     if (o->has_band) return pc_fail(c, "band is the caption's room under the points of around: give around too");
     return pc_fit(c, o->margin, o->aspect);
 }
+
+int pc_pen_options(pc_canvas *c, const pc_pen_opts *o) {
+    int physical = (o->has_width && o->width_len) || (o->has_dash && o->dash_len);   /* lengths with units */
+    if (physical && o->has_width && !o->width_len)
+        return pc_fail(c, "option 'width' must be a length with its unit, as the dash is, got %.14g", o->width);
+    if (physical && o->has_dash && !o->dash_len)
+        return pc_fail(c, "option 'dash' must hold lengths with their units, as the width is");
+    double width = o->has_width ? o->width : physical ? PC_PRINT_PEN_PT : 1;
+    return (physical ? pc_pen_physical : pc_pen)(c, width, o->dash, o->ndash);
+}

@@ -412,13 +412,8 @@ static int l_pen(lua_State *L) {
     if (lua_type(L, 1) == LUA_TSTRING) return pcl_check_canvas(L, c, pc_pen_named(c, lua_tostring(L, 1)));
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be %s, got %s", pen_args[0].expect, pcl_shown(L, 1));
     pcl_read_options(L, 1, 1, &pen_table, a + 1);
-    int physical = (a[1].present && a[1].n) || (a[2].present && a[2].n);   /* lengths with units */
-    if (physical && a[1].present && !a[1].n)
-        return pcl_keyfail(L, "width", "must be a length with its unit, as the dash is, got %s", pcl_pushnum(L, a[1].x));
-    if (physical && a[2].present && !a[2].n)
-        return pcl_keyfail(L, "dash", "must hold lengths with their units, as the width is");
-    double width = a[1].present ? a[1].x : physical ? PC_PRINT_PEN_PT : 1;
-    return pcl_check_canvas(L, c, (physical ? pc_pen_physical : pc_pen)(c, width, a[2].v, a[2].dim));
+    pc_pen_opts o = {a[1].present, a[1].present && a[1].n, a[2].present, a[2].present && a[2].n, a[2].dim, a[1].x, a[2].v};
+    return pcl_check_canvas(L, c, pc_pen_options(c, &o));
 }
 
 /* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at

@@ -403,14 +403,14 @@ static int l_view(lua_State *L) {
     PCL_READ(L, a);
     static const double origin[3] = {0, 0, 0};
     const double *to = a[2].present ? a[2].v : origin;
-    int persp = a[4].present && a[4].x, st;
+    int persp = (int)a[4].x, st;
     pc_map f;
     if (a[1].present) {
         if (!a[2].present) return pcl_keyfail(L, "to", "must be given with from (the point looked at)");
         st = pc_map_view(&f, a[1].v, to, a[3].present ? a[3].v : NULL, persp);
     } else {
         if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
-        st = pc_map_view_azel(&f, to, a[5].x, a[6].present ? a[6].x : 30, a[7].present ? a[7].x : 10, persp);
+        st = pc_map_view_azel(&f, to, a[5].x, a[6].x, a[7].x, persp);
     }
     switch (st) {
     case PC_OK: break;

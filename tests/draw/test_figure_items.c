@@ -13,6 +13,7 @@
 #include "axes.h"
 #include "furniture.h"
 #include "layout.h"
+#include "print.h"
 
 static int px(const pc_canvas *c, int x, int y) { return c->pixels[(size_t)y * c->width + x]; }
 
@@ -165,10 +166,27 @@ static void test_fit_options(void **state) {
     pc_canvas_free(c);
 }
 
+/* pen{}: pixels or lengths, never mixed */
+static void test_pen_options(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    double px_dash[2] = {4, 2}, pt_dash[2] = {8.5, 4.25};
+    pc_pen_opts o = {.has_width = 1, .width = 3, .has_dash = 1, .ndash = 2, .dash = px_dash};
+    assert_int_equal(pc_pen_options(c, &o), PC_OK);
+    assert_true(fabs(c->pens[c->pen].width - 3) < 1e-9);
+    o = (pc_pen_opts){.has_width = 1, .width = 2, .has_dash = 1, .dash_len = 1, .ndash = 2, .dash = pt_dash};
+    assert_int_equal(pc_pen_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "option 'width' must be a length with its unit, as the dash is, got 2");
+    o = (pc_pen_opts){.has_width = 1, .width_len = 1, .width = 1.42, .has_dash = 1, .ndash = 0};
+    assert_int_equal(pc_pen_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "option 'dash' must hold lengths with their units, as the width is");
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_caption_and_device_text), cmocka_unit_test(test_axes_default),
         cmocka_unit_test(test_graph), cmocka_unit_test(test_placed_labels), cmocka_unit_test(test_path_stmt),
-        cmocka_unit_test(test_fit_options)};
+        cmocka_unit_test(test_fit_options), cmocka_unit_test(test_pen_options)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
