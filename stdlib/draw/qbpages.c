@@ -42,8 +42,10 @@ int pc_pages_screen(pc_pages *p, const pc_mode_info *m) {
     p->active = p->visual = 0;
     pc_draw_state_reset(&p->draw);
     int rc = pc_canvas_reset(p->c, m->width, m->height, m->ncolors);
-    if (rc == PC_OK) p->npages = m->pages, p->c->screen_pixels = 1;   /* pixel coordinates */
-    return rc;
+    if (rc != PC_OK) return rc;
+    p->npages = m->pages;
+    p->c->screen_pixels = 1;   /* pixel coordinates */
+    return PC_OK;
 }
 
 int pc_pages_set(pc_pages *p, int active, int visual) {

@@ -61,7 +61,10 @@ pc_scene *pc_canvas_scene(pc_canvas *c, const pc_map *screen, int mode, int *sta
     scene_set *set = c->attach_resolve == set_resolve ? c->attach : NULL;
     if (!set) {
         if (c->attach) return NULL;   /* something else is attached: draw as usual */
-        if (!(set = calloc(1, sizeof *set))) return *status = PC_ENOMEM, NULL;
+        if (!(set = calloc(1, sizeof *set))) {
+            *status = PC_ENOMEM;
+            return NULL;
+        }
         c->attach = set;
         c->attach_resolve = set_resolve;
         c->attach_drop = set_drop;

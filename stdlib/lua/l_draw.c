@@ -412,7 +412,8 @@ static int l_pen(lua_State *L) {
     if (lua_type(L, 1) == LUA_TSTRING) return pcl_check_canvas(L, c, pc_pen_named(c, lua_tostring(L, 1)));
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be %s, got %s", pen_args[0].expect, pcl_shown(L, 1));
     pcl_read_options(L, 1, 1, &pen_table, a + 1);
-    pc_pen_opts o = {a[1].present, a[1].present && a[1].n, a[2].present, a[2].present && a[2].n, a[2].dim, a[1].x, a[2].v};
+    pc_pen_opts o = {a[1].present, a[1].present && a[1].n, a[2].present, a[2].present && a[2].n, a[2].dim,
+                     a[1].x, a[2].v};
     return pcl_check_canvas(L, c, pc_pen_options(c, &o));
 }
 
@@ -441,24 +442,34 @@ static void list_point(lua_State *L, int idx, const char *where, double *xy) {
         pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
 }
 
+/* Subpath k of the points at idx pushed (nested: a list of lists), or the list itself: its
+ * stack index. */
+static int subpath(lua_State *L, int idx, lua_Integer k, int nested) {
+    static const char nested_text[] = "a list of 2-D points or a list of such lists";
+    if (!nested) {
+        lua_pushvalue(L, idx);
+        return lua_gettop(L);
+    }
+    if (lua_geti(L, idx, k) != LUA_TTABLE)
+        pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
+    if (luaL_len(L, -1) < 1)
+        pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
+    return lua_gettop(L);
+}
+
 /* The points of path and fill: a list of 2-D points (one subpath) or a list of such lists
  * (one subpath each).  The coordinates (out->list) and the verbs (out->obj: a move at the start
  * of each subpath, lines after) go to scratch userdata above the arguments; out->n points. */
 static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    static const char nested_text[] = "a list of 2-D points or a list of such lists";
     if (!lua_istable(L, idx)) return 0;
     lua_Integer m = luaL_len(L, idx);
     if (m < 1) return pcl_readfail(L, idx, "a list of at least one point");
     int nested = lua_geti(L, idx, 1) == LUA_TTABLE;
     lua_pop(L, 1);
-    size_t n = nested ? 0 : (size_t)m;
-    for (lua_Integer k = 1; nested && k <= m; k++) {   /* count the points of the subpaths */
-        if (lua_geti(L, idx, k) != LUA_TTABLE)
-            pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
-        lua_Integer len = luaL_len(L, -1);
-        if (len < 1) pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
-        n += (size_t)len;
+    size_t n = 0;
+    for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {   /* count the points of the subpaths */
+        n += (size_t)luaL_len(L, subpath(L, idx, k, nested));
         lua_pop(L, 1);
     }
     if (n > 100000000) pcl_fail(L, "argument #%d (points) holds too many points", idx);
@@ -466,13 +477,8 @@ static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
     uint8_t *verbs = lua_newuserdatauv(L, n, 0);
     size_t i = 0;
     for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
-        int list = idx;
-        if (nested) {
-            lua_geti(L, idx, k);
-            list = lua_gettop(L);
-        }
-        lua_Integer len = luaL_len(L, list);
-        for (lua_Integer j = 1; j <= len; j++, i++) {
+        int list = subpath(L, idx, k, nested);
+        for (lua_Integer j = 1, len = luaL_len(L, list); j <= len; j++, i++) {
             char where[48];
             if (nested) snprintf(where, sizeof where, "[%d][%d]", (int)k, (int)j);
             else snprintf(where, sizeof where, "[%d]", (int)j);
@@ -481,7 +487,7 @@ static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
             verbs[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
             lua_pop(L, 1);
         }
-        if (nested) lua_pop(L, 1);
+        lua_pop(L, 1);
     }
     out->list = xy, out->obj = verbs, out->n = (int)n;
     return 1;

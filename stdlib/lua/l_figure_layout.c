@@ -149,11 +149,9 @@ int pcl_scene_label(lua_State *L, const pcl_val *a) {
     /* the markup is checked now, as a 2-D label's is, not when the scene is drawn at write */
     char err[200];
     if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
-    int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
-    int st = pc_scene_add_label(sc, x, a[0].s, anchor, (int)a[5].x, (int)a[4].x);
+    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
     if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
-        st = pc_scene_style_label(sc, a[7].present ? a[7].s : "", a[8].present ? a[8].x : 0,
-                                  a[9].present ? (int)a[9].x : -1);
+        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
 }
@@ -205,8 +203,8 @@ static int l_dimension(lua_State *L) {
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     double len = 0;
-    pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x,
-                             a[3].present ? a[3].s : NULL, (int)a[4].x, &len));
+    pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, a[3].s, (int)a[4].x,
+                                        &len));
     lua_pushnumber(L, len);
     return 1;
 }
@@ -219,7 +217,7 @@ static int l_angle_mark(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     double th = 0;
     pcl_check_canvas(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
-                              a[4].x, a[3].present ? a[3].s : NULL, (int)a[5].x, &th));
+                              a[4].x, a[3].s, (int)a[5].x, &th));
     lua_pushnumber(L, th);
     return 1;
 }
@@ -272,7 +270,8 @@ static int l_fit(lua_State *L) {
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n + 1, 0);
     int bad = pcl_rows_to_xy(L, n, d, a[3].list, xy);
     if (bad >= 0) return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
-    pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n, a[1].x, a[4].x, a[5].x, (size_t)n, xy};
+    pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n,
+                     a[1].x, a[4].x, a[5].x, (size_t)n, xy};
     return pcl_check_canvas(L, c, pc_fit_options(c, &o));
 }
 
