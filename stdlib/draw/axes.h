@@ -32,4 +32,8 @@ int pc_furniture_defer_axes(pc_canvas *c, const pc_axes_spec *a, int color, int 
 int pc_legend(pc_canvas *c, int n, const char *const *names, const int *colors, int corner,
               int color);
 
+/* The spec of axes{} without options: the ranges the window's (or the screen's) view shows,
+ * crossing at the origin, 5 ticks, labels, arrows, no grid. */
+void pc_axes_default(const pc_canvas *c, pc_axes_spec *s);
+
 #endif

@@ -56,4 +56,22 @@ int pc_hatch(pc_canvas *c, size_t n, const double *xy, double spacing, double an
 int pc_centre_line(pc_canvas *c, double ax, double ay, double bx, double by, double extend,
                    int color);
 
+/* A caption centred at the bottom (top: at the top) edge of the picture, whatever the window
+ * and the view, in device units: framing leaves it (figure_items.c). */
+int pc_caption(pc_canvas *c, const char *utf8, int top, int color);
+/* Text with its first cell's top-left corner at the screen pixel (x, y), whatever the window,
+ * in device units: framing leaves it. */
+int pc_text_device(pc_canvas *c, double x, double y, const char *utf8, int scale, int color);
+/* The graph y = f(x) for x from x0 to x1 as a path of n pieces: f sets *have = 0 (or gives a
+ * non-finite y) where there is no value, and the path breaks there (a lone point draws
+ * nothing); a status other than PC_OK from f stops the graph and is returned. */
+typedef int (*pc_graph_fn)(void *ctx, double x, double *y, int *have);
+int pc_graph(pc_canvas *c, double x0, double x1, int n, pc_graph_fn f, void *ctx, int color);
+
+/* path{}: the polyline through n points (verbs as pc_path's), closed or not, in colour color,
+ * with arrow heads 9 px long (PC_ARROW_* bits) on its last and first segments; or, filled, the
+ * closed path filled in fill_color by rule (PC_FILL_*) and its outline on top if color >= 0. */
+int pc_path_stmt(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, int closed, int color, int heads,
+                 int filled, int fill_color, int rule);
+
 #endif

@@ -146,4 +146,28 @@ int pc_fit_around(pc_canvas *c, size_t n, const double *xy, double pad, int aspe
  * PC_EARG as above, or for a band < 0 or not below the view's height. */
 int pc_fit_around_band(pc_canvas *c, size_t n, const double *xy, double pad, double band, int aspect);
 
+/* A label as the writers place it (figure_items.c): its text (a copy, NUL-ended), its box in
+ * screen pixels, its side ("c", "n", "ne", ...) and whether it was placed automatically. */
+typedef struct {
+    const char *text;
+    size_t len;
+    pc_box2 box;
+    const char *side;
+    int autoplaced;
+} pc_placed;
+/* Every label of c as a writer places it, *n of them, in one block (free() it); NULL when out
+ * of memory. */
+pc_placed *pc_placed_labels(const pc_canvas *c, size_t *n);
+
+/* fit{}: with around, the frame of the n points xy (pc_fit_around_band, pad and band); else
+ * the frame of what is drawn (pc_fit, margin).  Each framing's own option given to the other
+ * is PC_EARG with the reason (figure_items.c). */
+typedef struct {
+    int has_margin, has_pad, has_band, around, aspect;
+    double margin, pad, band;
+    size_t n;
+    const double *xy;
+} pc_fit_opts;
+int pc_fit_options(pc_canvas *c, const pc_fit_opts *o);
+
 #endif

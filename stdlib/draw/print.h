@@ -65,4 +65,13 @@ const pc_canvas *pc_print_resolve_why(const pc_canvas *c, pc_canvas *tmp, int *s
 /* The print-look colour of an attribute: the paper theme's, "#rrggbb" exactly. */
 pc_rgb pc_print_rgb(const pc_canvas *c, int attr);
 
+/* pen{width =, dash =}: pixels, or lengths in pt with their units (the print pen), never
+ * mixed (PC_EARG naming the option); no width: 1 px, or the print pen's 0.25 mm. */
+typedef struct {
+    int has_width, width_len, has_dash, dash_len, ndash;
+    double width;
+    const double *dash;
+} pc_pen_opts;
+int pc_pen_options(pc_canvas *c, const pc_pen_opts *o);
+
 #endif

@@ -99,6 +99,35 @@ typedef struct {
 } pc_draw_state;
 void pc_draw_state_reset(pc_draw_state *st);
 
+/* ---- pages: QBasic's video memory (qbpages.c) --------------------------------------------- */
+
+#define PC_MAX_PAGES 8
+/* The pages of a screen: c the page drawn on (the active one), pages[0..npages-1] the screen's
+ * pages (pages[0] the first canvas, the others made on first use), `visual` the page shown
+ * and saved, and DRAW's state kept between statements. */
+typedef struct {
+    pc_canvas *c;
+    pc_canvas *pages[PC_MAX_PAGES];
+    int npages, active, visual;
+    pc_draw_state draw;
+} pc_pages;
+/* One page of SCREEN 12; PC_ENOMEM. */
+int pc_pages_init(pc_pages *p);
+void pc_pages_free(pc_pages *p);
+/* The page shown: the visual page, or the page drawn on before any was made. */
+pc_canvas *pc_pages_shown(const pc_pages *p);
+/* Page n, made on first use as a blank screen like page 0 (its palette too); NULL when the
+ * screen has no page n, or out of memory. */
+pc_canvas *pc_pages_page(pc_pages *p, int n);
+/* SCREEN: back to one page (the page drawn on becomes page 0, the others dropped), reset to
+ * m's size and colours with m's number of pages, in pixel coordinates; DRAW's state reset. */
+int pc_pages_screen(pc_pages *p, const pc_mode_info *m);
+/* SCREEN , , active, visual: draw on one page, show another (both made); PC_EARG for a page
+ * the screen does not have, PC_ENOMEM. */
+int pc_pages_set(pc_pages *p, int active, int visual);
+/* PALETTE: the palette is the video card's, so every page takes the change. */
+int pc_pages_palette(pc_pages *p, int attr, pc_rgb rgb);
+
 /* Run a DRAW string from the graphics cursor: U D L R E F G H n (default 1), M x,y (absolute
  * in view pixels) and M +-x,+-y (relative), the prefixes B (move only) and N (return after),
  * C n, S n, A n, TA n, P paint,border.  Spaces and ';' separate commands.  Distances are in
@@ -136,5 +165,24 @@ int pc_paint_tile(pc_canvas *c, double x, double y, const pc_tile *tile, int bor
 /* PCOPY: make dst's picture a copy of src's (pixels and display list); dst keeps its WINDOW,
  * VIEW, colours and cursor.  Both must have the same size and colours. */
 int pc_canvas_copy_picture(pc_canvas *dst, const pc_canvas *src);
+
+/* ---- the statements' arguments (qbstatements.c) ------------------------------------------ */
+
+/* VIEW with the corners as given: rounded to whole pixels; corners beyond any screen (over
+ * 1e6 away) refused as not inside the screen. */
+int pc_view_at(pc_canvas *c, double x1, double y1, double x2, double y2, int fill, int border, int screen);
+/* PALETTE's colour number 65536*blue + 256*green + red, each 0..63, as 8-bit rgb; PC_EARG for
+ * any other number. */
+int pc_rgb_qbasic(long long q, pc_rgb *out);
+/* PMAP(v, fn): fn 0 and 1 a world x or y to view pixels (rounded), 2 and 3 pixels back to the
+ * world; the pixels count from the view's corner unless VIEW SCREEN. */
+double pc_pmap(const pc_canvas *c, double v, int fn);
+
+/* LINE: a segment, with box 1 a box's outline, box 2 a filled box; pattern 0..0xffff is the
+ * 16-bit line style (QBasic's INTEGER -21846 is 0xAAAA), which a filled box ignores; -1 none. */
+int pc_line_stmt(pc_canvas *c, double x1, double y1, double x2, double y2, int color, int box, long pattern);
+/* The message of c's last failure without a leading statement name ("pset: "), for the
+ * caller to put its own name first. */
+const char *pc_canvas_message(const pc_canvas *c);
 
 #endif

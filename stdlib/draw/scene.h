@@ -67,4 +67,18 @@ void pc_scene_reframe(pc_scene *sc, double sx, double sy, double tx, double ty);
  * are hidden are left out unless mode is SHOW.  Returns PC_OK or the canvas's status. */
 int pc_scene_draw(const pc_scene *sc, pc_canvas *c, pc_hidden_mode mode);
 
+/* The scene the 3-D strokes seen through `screen` go into on canvas c, drawn in `mode`
+ * (scene_set.c): the last one attached to c when its map and mode are these, else a new one
+ * attached after it (the writers draw them all, in order, and fit{} reframes them).  NULL with
+ * *status PC_OK when c has another attachment (draw as usual), else with the failure status. */
+pc_scene *pc_canvas_scene(pc_canvas *c, const pc_map *screen, int mode, int *status);
+/* Curve c (3-D) sampled at n + 1 equally spaced parameters as a polyline of the scene, broken
+ * where it passes through a point at infinity. */
+struct pc_curve;
+int pc_scene_add_curve(pc_scene *sc, const struct pc_curve *c, int n, int color, int pen);
+
+/* A path of n 3-D points (closed: back to the first), with arrow heads (furniture.h's
+ * PC_ARROW_* bits) on its last and first segments, 9 px long, each drawn where its tip is seen. */
+int pc_scene_add_path(pc_scene *sc, size_t n, const double *xyz, int closed, int heads, int color, int pen);
+
 #endif

@@ -1,18 +1,12 @@
-/* Binding of the QBasic drawing layer (stdlib/draw): screen cls color palette pset preset line
- * line_to circle paint point window view save last_point, and beyond QBasic: pen path fill
- * label text.  Every colour argument is an attribute number or a "#rrggbb" string.
- *
+/* Binding of the QBasic drawing layer (stdlib/draw) and beyond QBasic: pen path fill label text.
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
- * around a pc_canvas pointer, so SCREEN can replace the canvas in place); the registry keeps
- * it too, for the host.  Coordinate pairs may always be given as one 2-D point. */
-#include <ctype.h>
+ * around QBasic's pages, so SCREEN can replace the canvas in place); the registry keeps it
+ * too, for the host. */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include "pcl_args.h"
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 #include "print.h"       /* named pens, the print pen's width */
 #include "pcl_scene.h"
 #include "furniture.h"
@@ -22,14 +16,9 @@ static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG
 #define THEME_KEY "pointcalc.theme"
 #define CANVAS_MT "pointcalc.Canvas"
 
-/* c is the page drawn on; pages[] are QBasic's screen pages (pages[0] is the first canvas,
- * the others made on first use), `visual` the one shown and saved by the host. */
 typedef struct {
     PCL_SELF;             /* its own address: a forged box is refused (pcl.h) */
-    pc_canvas *c;
-    pc_canvas *pages[PCL_MAX_PAGES];
-    int npages, active, visual;
-    pc_draw_state draw;   /* DRAW's colour, scale and angle, kept between statements */
+    pc_pages p;           /* QBasic's pages, the one drawn on, DRAW's state (qbscreen.h) */
 } canvas_box;
 
 /* The box at idx, or NULL: the debug library can put something else in the registry entry
@@ -49,68 +38,23 @@ static canvas_box *box_at(lua_State *L, int idx) {
 }
 
 /* the host asks outside any protected call: no error, NULL as for no canvas */
-static canvas_box *the_box(lua_State *L) {
+pc_pages *pcl_pages(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     canvas_box *b = genuine_box(L, -1);
     lua_pop(L, 1);
-    return b;
+    return b ? &b->p : NULL;
 }
 
-static pc_canvas *canvas(lua_State *L) { return box_at(L, PCL_UPVALUE(1))->c; }
+static pc_canvas *canvas(lua_State *L) { return box_at(L, PCL_UPVALUE(1))->p.c; }
 
 pc_canvas *pcl_canvas(lua_State *L) {
-    canvas_box *b = the_box(L);
-    if (!b) return NULL;
-    return b->pages[b->visual] ? b->pages[b->visual] : b->c;
+    pc_pages *p = pcl_pages(L);
+    return p ? pc_pages_shown(p) : NULL;
 }
 
 pc_canvas *pcl_active_canvas(lua_State *L) {
-    canvas_box *b = the_box(L);
-    return b ? b->c : NULL;
-}
-
-int pcl_npages(lua_State *L) {
-    canvas_box *b = the_box(L);
-    return b ? b->npages : 0;
-}
-
-pc_canvas *pcl_page(lua_State *L, int page) {
-    canvas_box *b = the_box(L);
-    if (!b || page < 0 || page >= b->npages) return NULL;
-    if (!b->pages[page]) {   /* a page first used: a blank screen like page 0's */
-        pc_canvas *p0 = b->pages[0];
-        pc_canvas *p = pc_canvas_new(p0->width, p0->height, p0->ncolors);
-        if (!p) pcl_error(L, "screen: out of memory for page %d", page);
-        memcpy(p->palette, p0->palette, 256 * sizeof *p->palette);
-        b->pages[page] = p;
-    }
-    return b->pages[page];
-}
-
-void pcl_set_pages(lua_State *L, int active, int visual) {
-    canvas_box *b = the_box(L);
-    pc_canvas *a = pcl_page(L, active);
-    pcl_page(L, visual);
-    b->c = a;
-    b->active = active;
-    b->visual = visual;
-}
-
-pc_draw_state *pcl_draw_state(lua_State *L) {
-    canvas_box *b = the_box(L);
-    return &b->draw;
-}
-
-/* Back to one page, page 0 (SCREEN): the other pages are dropped. */
-static void single_page(canvas_box *b) {
-    for (int i = 0; i < PCL_MAX_PAGES; i++) {   /* the page drawn on becomes page 0 */
-        if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
-        b->pages[i] = NULL;
-    }
-    b->pages[0] = b->c;
-    b->npages = 1;
-    b->active = b->visual = 0;
-    pc_draw_state_reset(&b->draw);
+    pc_pages *p = pcl_pages(L);
+    return p ? p->c : NULL;
 }
 
 void pcl_set_theme(lua_State *L, pc_theme theme) {
@@ -124,24 +68,18 @@ pc_theme pcl_theme(lua_State *L) {
     lua_pop(L, 1);
     return t;
 }
-/* A core call failed: raise its message as a Lua error at the caller's line. */
+
 int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc) {
-    if (rc == PC_OK) return 0;
-    /* a core message may start with the core statement's name ("pset: coordinates ...");
-     * the declared name replaces it, so preset reports as preset and line_to as line_to */
-    const char *msg = c->error, *colon = strstr(msg, ": ");
-    if (colon && colon > msg && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg))
-        msg = colon + 2;
-    return pcl_fail(L, "%s", msg);
+    return rc == PC_OK ? 0 : pcl_fail(L, "%s", pc_canvas_message(c));
 }
 
 /* ---- the kinds of the drawing layer ------------------------------------------------------ */
 
-/* The colour at idx on canvas c (a true colour allocated for "#rrggbb"), or -2 if none. */
-static int color_of(lua_State *L, int idx, pc_canvas *c) {
+int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors) {
     int isint;
     lua_Integer v = lua_tointegerx(L, idx, &isint);   /* the common case first: pset runs it */
     if (isint && v >= 0 && v < c->ncolors && lua_type(L, idx) == LUA_TNUMBER) return (int)v;
+    if (truecolors && isint && v >= 256 && v < 256 + c->ntrue && lua_type(L, idx) == LUA_TNUMBER) return (int)v;
     size_t len;
     const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
     pc_rgb rgb;
@@ -152,14 +90,13 @@ static int color_of(lua_State *L, int idx, pc_canvas *c) {
 }
 
 /* The colour at idx on canvas c into out->x, or the reader's message naming c's range. */
-static int read_color_on(lua_State *L, int idx, pc_canvas *c, pcl_val *out) {
-    if ((out->x = color_of(L, idx, c)) >= 0) return 1;
+static int read_color_on(lua_State *L, int idx, pc_canvas *c, int truecolors, pcl_val *out) {
+    if ((out->x = pcl_color_at(L, idx, c, truecolors)) >= 0) return 1;
     return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d or \"#rrggbb\"", c->ncolors - 1));
 }
 
 int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    return read_color_on(L, idx, pcl_active_canvas(L), out);
+    return read_color_on(L, idx, pcl_active_canvas(L), a->dim == 1, out);
 }
 
 /* The colour of this file's statements, which hold the canvas as their upvalue: read on it
@@ -169,7 +106,7 @@ static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
     pc_canvas *c = canvas(L);
     out->obj = c;
-    return read_color_on(L, idx, c, out);
+    return read_color_on(L, idx, c, 0, out);
 }
 
 /* The canvas of a statement whose colour argument is color: the one it was read on, else
@@ -206,15 +143,10 @@ static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
             out->v[i] = (double)x;
         }
         return 1;
-    } else if (lua_type(L, idx) == LUA_TNUMBER) {
+    } else {
         int isint;
         lua_Integer q = lua_tointegerx(L, idx, &isint);
-        int r = (int)(q & 0xff), g = (int)((q >> 8) & 0xff), b = (int)((q >> 16) & 0xff);
-        if (!isint || q < 0 || q > 0x3f3f3f || r > 63 || g > 63 || b > 63) return 0;
-        rgb = (pc_rgb){(uint8_t)((r << 2) | (r >> 4)), (uint8_t)((g << 2) | (g >> 4)),
-                       (uint8_t)((b << 2) | (b >> 4))};
-    } else {
-        return 0;
+        if (lua_type(L, idx) != LUA_TNUMBER || !isint || pc_rgb_qbasic(q, &rgb) != PC_OK) return 0;
     }
     out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
     return 1;
@@ -273,10 +205,7 @@ static int l_screen(lua_State *L) {
         if (!isint || mode < 0 || mode > 13 || pc_mode_info_of((int)mode, &m) != PC_OK)
             return pcl_argfail(L, 1, "must be %s, got %s", screen_args[0].expect, pcl_shown(L, 1));
     }
-    single_page(b);
-    int rc = pc_canvas_reset(b->c, m.width, m.height, m.ncolors);
-    if (rc == PC_OK) b->npages = m.pages, b->c->screen_pixels = 1;   /* pixel coordinates */
-    return pcl_check_canvas(L, b->c, rc);
+    return pcl_check_canvas(L, b->p.c, pc_pages_screen(&b->p, &m));
 }
 
 static int l_cls(lua_State *L) {
@@ -308,11 +237,7 @@ static int l_palette(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     pc_rgb rgb = {(uint8_t)a[1].v[0], (uint8_t)a[1].v[1], (uint8_t)a[1].v[2]};
-    /* the palette is the video card's: every page shows it */
-    canvas_box *b = box_at(L, PCL_UPVALUE(1));
-    for (int i = 0; i < PCL_MAX_PAGES; i++)
-        if (b->pages[i] && b->pages[i] != c) pcl_check_canvas(L, b->pages[i], pc_palette(b->pages[i], (int)a[0].x, rgb));
-    return pcl_check_canvas(L, c, pc_palette(c, (int)a[0].x, rgb));
+    return pcl_check_canvas(L, c, pc_pages_palette(&box_at(L, PCL_UPVALUE(1))->p, (int)a[0].x, rgb));
 }
 
 static const pcl_arg dot_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), PCL_END};
@@ -339,12 +264,9 @@ static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
 static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl_val *a) {
-    double x2 = a[0].x, y2 = a[1].x;
-    int color = (int)a[2].x, box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
-    if (a[4].present && box != 2)   /* QBasic ignores the style of a filled box */
-        return pcl_check_canvas(L, c, pc_line_styled(c, x1, y1, x2, y2, color, box, (unsigned)((long)a[4].x & 0xffff)));
-    if (box == 0) return pcl_check_canvas(L, c, pc_line(c, x1, y1, x2, y2, color));
-    return pcl_check_canvas(L, c, pc_box(c, x1, y1, x2, y2, color, box == 2));
+    int box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
+    long pattern = a[4].present ? (long)a[4].x & 0xffff : -1;
+    return pcl_check_canvas(L, c, pc_line_stmt(c, x1, y1, a[0].x, a[1].x, (int)a[2].x, box, pattern));
 }
 
 static int l_line(lua_State *L) {
@@ -415,17 +337,9 @@ static int l_view(lua_State *L) {
     if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_view_reset(c));
     pcl_val a[7] = {0};
     PCL_READ_PAIRS(L, a);
-    /* the core takes whole pixels: corners beyond any screen are refused here, before the
-     * conversion to int could wrap them onto it */
-    const double lim = 1e6;
-    if (!(fabs(a[0].x) <= lim && fabs(a[1].x) <= lim && fabs(a[2].x) <= lim && fabs(a[3].x) <= lim))
-        return pcl_fail(L, "view (%s, %s)-(%s, %s) is not inside the %dx%d screen", pcl_pushnum(L, a[0].x),
-                        pcl_pushnum(L, a[1].x), pcl_pushnum(L, a[2].x), pcl_pushnum(L, a[3].x), c->width, c->height);
-    return pcl_check_canvas(L, c, pc_view(c, (int)lrint(a[0].x), (int)lrint(a[1].x), (int)lrint(a[2].x),
-                               (int)lrint(a[3].x), (int)a[4].x, (int)a[5].x, (int)a[6].x));
+    return pcl_check_canvas(L, c, pc_view_at(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x, (int)a[5].x, (int)a[6].x));
 }
 
-/* save(path [, theme]): the format follows the extension; theme "paper" or "screen". */
 static const char *const THEMES[] = {"paper", "screen", NULL};
 static const pcl_arg save_args[] = {{.name = "path", .kind = PCL_STRING, .expect = "a file name"},
                                     {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES},
@@ -443,7 +357,6 @@ static int l_save(lua_State *L) {
     return 0;
 }
 
-/* size() -> width, height, colours of the current screen */
 static int l_size(lua_State *L) {
     pc_canvas *c = canvas(L);
     lua_pushinteger(L, c->width);
@@ -491,8 +404,6 @@ static const pcl_arg pen_args[] = {
      .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"},
     PCL_END};
 
-/* pen{width = w, dash = {on, off, ...}} sets the pen (pixels, or lengths with units: the
- * print pen); pen "main" a named pen; pen() restores the default. */
 static int l_pen(lua_State *L) {
     pcl_val a[3] = {0};   /* pen; the table's width, dash */
     PCL_READ(L, a);
@@ -501,18 +412,14 @@ static int l_pen(lua_State *L) {
     if (lua_type(L, 1) == LUA_TSTRING) return pcl_check_canvas(L, c, pc_pen_named(c, lua_tostring(L, 1)));
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be %s, got %s", pen_args[0].expect, pcl_shown(L, 1));
     pcl_read_options(L, 1, 1, &pen_table, a + 1);
-    int physical = (a[1].present && a[1].n) || (a[2].present && a[2].n);   /* lengths with units */
-    if (physical && a[1].present && !a[1].n)
-        return pcl_keyfail(L, "width", "must be a length with its unit, as the dash is, got %s", pcl_pushnum(L, a[1].x));
-    if (physical && a[2].present && !a[2].n)
-        return pcl_keyfail(L, "dash", "must hold lengths with their units, as the width is");
-    double width = a[1].present ? a[1].x : physical ? PC_PRINT_PEN_PT : 1;
-    return pcl_check_canvas(L, c, (physical ? pc_pen_physical : pc_pen)(c, width, a[2].v, a[2].dim));
+    pc_pen_opts o = {a[1].present, a[1].present && a[1].n, a[2].present, a[2].present && a[2].n, a[2].dim,
+                     a[1].x, a[2].v};
+    return pcl_check_canvas(L, c, pc_pen_options(c, &o));
 }
 
 /* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at
  * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
-static void list_point(lua_State *L, int idx, const char *where, const char *expected, double *xy) {
+static void list_point(lua_State *L, int idx, const char *where, double *xy) {
     pcl_value *p = pcl_tovalue(L, -1);
     if (p && p->n != 2) {
         int st = pcl_project(L, p->n, p->h, xy, xy + 1);
@@ -522,8 +429,8 @@ static void list_point(lua_State *L, int idx, const char *where, const char *exp
             pcl_fail(L, "argument #%d (points) %s: %s projects to infinity (it lies in the camera's "
                         "vanishing plane)", idx, where, text);
         if (st != PC_EDIM) pcl_fail(L, "argument #%d (points) %s: the image of %s is not finite", idx, where, text);
-        pcl_fail(L, "argument #%d (points) %s must be %s, got the %d-D %s (3-D points need a camera)",
-                 idx, where, expected, p->n, text);
+        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got the %d-D %s (3-D points need a camera)",
+                 idx, where, p->n, text);
     }
     if (p && pc_loc(2, p->h, xy) != PC_OK) {   /* a vector or a weighted value */
         const char *text = luaL_tolstring(L, -1, NULL);
@@ -532,7 +439,22 @@ static void list_point(lua_State *L, int idx, const char *where, const char *exp
                  pcl_pushnum(L, p->h[2]));
     }
     if (!pcl_topoint2(L, -1, xy, xy + 1))
-        pcl_fail(L, "argument #%d (points) %s must be %s, got %s", idx, where, expected, pcl_shown(L, -1));
+        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
+}
+
+/* Subpath k of the points at idx pushed (nested: a list of lists), or the list itself: its
+ * stack index. */
+static int subpath(lua_State *L, int idx, lua_Integer k, int nested) {
+    static const char nested_text[] = "a list of 2-D points or a list of such lists";
+    if (!nested) {
+        lua_pushvalue(L, idx);
+        return lua_gettop(L);
+    }
+    if (lua_geti(L, idx, k) != LUA_TTABLE)
+        pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
+    if (luaL_len(L, -1) < 1)
+        pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
+    return lua_gettop(L);
 }
 
 /* The points of path and fill: a list of 2-D points (one subpath) or a list of such lists
@@ -540,19 +462,14 @@ static void list_point(lua_State *L, int idx, const char *where, const char *exp
  * of each subpath, lines after) go to scratch userdata above the arguments; out->n points. */
 static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    static const char nested_text[] = "a list of 2-D points or a list of such lists";
     if (!lua_istable(L, idx)) return 0;
     lua_Integer m = luaL_len(L, idx);
     if (m < 1) return pcl_readfail(L, idx, "a list of at least one point");
     int nested = lua_geti(L, idx, 1) == LUA_TTABLE;
     lua_pop(L, 1);
-    size_t n = nested ? 0 : (size_t)m;
-    for (lua_Integer k = 1; nested && k <= m; k++) {   /* count the points of the subpaths */
-        if (lua_geti(L, idx, k) != LUA_TTABLE)
-            pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
-        lua_Integer len = luaL_len(L, -1);
-        if (len < 1) pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
-        n += (size_t)len;
+    size_t n = 0;
+    for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {   /* count the points of the subpaths */
+        n += (size_t)luaL_len(L, subpath(L, idx, k, nested));
         lua_pop(L, 1);
     }
     if (n > 100000000) pcl_fail(L, "argument #%d (points) holds too many points", idx);
@@ -560,22 +477,17 @@ static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
     uint8_t *verbs = lua_newuserdatauv(L, n, 0);
     size_t i = 0;
     for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
-        int list = idx;
-        if (nested) {
-            lua_geti(L, idx, k);
-            list = lua_gettop(L);
-        }
-        lua_Integer len = luaL_len(L, list);
-        for (lua_Integer j = 1; j <= len; j++, i++) {
+        int list = subpath(L, idx, k, nested);
+        for (lua_Integer j = 1, len = luaL_len(L, list); j <= len; j++, i++) {
             char where[48];
             if (nested) snprintf(where, sizeof where, "[%d][%d]", (int)k, (int)j);
             else snprintf(where, sizeof where, "[%d]", (int)j);
             lua_geti(L, list, j);
-            list_point(L, idx, where, nested ? "a 2-D point" : "a 2-D point", &xy[2 * i]);
+            list_point(L, idx, where, &xy[2 * i]);
             verbs[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
             lua_pop(L, 1);
         }
-        if (nested) lua_pop(L, 1);
+        lua_pop(L, 1);
     }
     out->list = xy, out->obj = verbs, out->n = (int)n;
     return 1;
@@ -589,34 +501,18 @@ static const pcl_arg path_keys[] = {{.name = "closed", .kind = PCL_BOOLEAN}, COL
                                     RULE("rule"), {.name = "arrow", .kind = PCL_ENUM, .choices = HEADS}, PCL_END};
 static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL_END};
 
-/* path(points [, {closed =, color =, fill =, rule =, arrow =}]): the polyline through a list of
- * 2-D points (or several, one subpath each).  With fill, the closed path is filled in that
- * colour, and its outline drawn on top only when color is given too; arrow heads (furniture.h)
- * on the first and last segments of an unfilled one. */
 static int l_path(lua_State *L) {
     pcl_val a[7] = {0};   /* points, options; closed, color, fill, rule, arrow */
     PCL_READ(L, a);
-    pc_canvas *c = canvas(L);
-    size_t n = (size_t)a[0].n;
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
-    const double *xy = a[0].list;
     /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
     if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
-    if (!a[4].present) {
-        pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, closed, color));
-        if ((heads & PC_ARROW_END) && n >= 2)
-            pcl_check_canvas(L, c, pc_arrow_head(c, xy[2 * n - 4], xy[2 * n - 3], xy[2 * n - 2], xy[2 * n - 1], 9, color));
-        if ((heads & PC_ARROW_START) && n >= 2) pcl_check_canvas(L, c, pc_arrow_head(c, xy[2], xy[3], xy[0], xy[1], 9, color));
-        return 0;
-    }
-    pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[4].x));
-    if (color < 0) return 0;
-    return pcl_check_canvas(L, c, pc_path(c, n, a[0].list, a[0].obj, n, 1, color));
+    pc_canvas *c = canvas(L);
+    int rule = a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
+    return pcl_check_canvas(L, c, pc_path_stmt(c, (size_t)a[0].n, a[0].list, a[0].obj, closed, color, heads,
+                                               a[4].present, (int)a[4].x, rule));
 }
 
-/* fill(points [, colour [, rule]]): the closed path through the points (or several, one
- * subpath each) filled; rule "evenodd" (default: a subpath inside another makes a hole) or
- * "nonzero". */
 static const pcl_arg fill_args[] = {POINTS, COLOR("colour"), RULE("rule"), PCL_END};
 static int l_fill(lua_State *L) {
     pcl_val a[3] = {0};
@@ -626,9 +522,6 @@ static int l_fill(lua_State *L) {
     return pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
 }
 
-/* label(text, P [, direction [, colour [, scale]]] [, {font =, size =, halo =}]): text beside
- * a point, 3 px off it; without a direction it is placed when the picture is written
- * (stdlib/draw/layout.h); the options apply in the print look. */
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
 static const pcl_arg label_args[] = {
     TEXT, A_X("x"), A_NUM("y"),
@@ -646,7 +539,6 @@ static int l_label(lua_State *L) {
     return 0;
 }
 
-/* text(x, y, string [, colour [, scale]]): the text cell's top-left corner at the point. */
 static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
 static int l_text(lua_State *L) {
     pcl_val a[5] = {0};
@@ -658,9 +550,7 @@ static int l_text(lua_State *L) {
 static int canvas_gc(lua_State *L) {
     canvas_box *b = genuine_box(L, 1);
     if (!b) return 0;   /* never a forged one */
-    for (int i = 0; i < PCL_MAX_PAGES; i++)
-        if (b->pages[i] != b->c) pc_canvas_free(b->pages[i]);
-    pc_canvas_free(b->c);
+    pc_pages_free(&b->p);
     memset(b, 0, sizeof *b);
     return 0;
 }
@@ -695,17 +585,12 @@ void pcl_open_draw(lua_State *L) {
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-        memset(b, 0, sizeof *b);
         b->self = PCL_SELF_TAG(b, &CANVAS_TAG);
+        if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         luaL_newmetatable(L, CANVAS_MT);
         lua_pushcfunction(L, canvas_gc);
         lua_setfield(L, -2, "__gc");
         lua_setmetatable(L, -2);
-        b->c = pc_canvas_new_mode(12);
-        if (!b->c) pcl_error(L, "pointcalc: out of memory for the canvas");
-        b->pages[0] = b->c;
-        b->npages = 1;
-        pc_draw_state_reset(&b->draw);
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }
@@ -715,7 +600,7 @@ void pcl_open_draw(lua_State *L) {
 /* The colour argument at arg for bindings not on the layer (c:draw): nil for the default. */
 int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) {
     arg = lua_absindex(L, arg);
-    int color = lua_isnoneornil(L, arg) ? -1 : color_of(L, arg, c);
+    int color = lua_isnoneornil(L, arg) ? -1 : pcl_color_at(L, arg, c, 0);
     if (color == -2)
         pcl_error(L, "%s: argument #%d (colour) must be a colour number 0..%d or \"#rrggbb\", got %s",
                   pcl_fname(L), pcl_arg_shown(L, arg), c->ncolors - 1, lua_type(L, arg) == LUA_TSTRING

@@ -2,7 +2,7 @@
  * and the kinds pen() and label() of l_draw.c declare: lengths with units and the label
  * options {font =, size =, halo =}. */
 #include <string.h>
-#include "pcl_args.h"
+#include "pcl_draw.h"
 #include "print.h"
 
 /* A length option: a string with its unit ("12cm"), in pt. */
@@ -53,11 +53,7 @@ static int l_figure(lua_State *L) {
     }
     if (a[5].present) f.size = a[5].x;
     f.frame = 1;   /* a figure of its own: framed to its content when it sets no window */
-    if (pc_figure_set(c, &f) != PC_OK) {   /* the core's message, its "figure: " once */
-        const char *m = pc_canvas_error(c);
-        return pcl_fail(L, "%s", strncmp(m, "figure: ", 8) ? m : m + 8);
-    }
-    return 0;
+    return pcl_check_canvas(L, c, pc_figure_set(c, &f));   /* the core's message, its "figure: " once */
 }
 
 /* A font the print look can set: a name fontconfig knows. */
@@ -78,10 +74,7 @@ const pcl_arg pcl_label_keys[] = {
     PCL_END};
 
 void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *k) {
-    if (pc_text_style(c, k[0].present ? k[0].s : "", k[1].present ? k[1].x : 0, k[2].present ? (int)k[2].x : -1) != PC_OK) {
-        const char *m = pc_canvas_error(c), *colon = strstr(m, ": ");
-        pcl_fail(L, "%s", colon ? colon + 2 : m);
-    }
+    pcl_check_canvas(L, c, pc_text_style(c, k[0].s, k[1].x, k[2].present ? (int)k[2].x : -1));
 }
 
 static const pcl_fn fns[] = {

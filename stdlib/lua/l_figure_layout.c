@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
 #include "layout.h"
@@ -18,15 +18,7 @@
 #include "view.h"
 #include "math_label.h"
 
-/* A core failure as the house error: the declared name, the core's message without its own. */
-static int check(lua_State *L, pc_canvas *c, int rc) {
-    if (rc == PC_OK) return 0;
-    const char *msg = c->error, *colon = strstr(msg, ": ");
-    if (colon && strspn(msg, "abcdefghijklmnopqrstuvwxyz_") == (size_t)(colon - msg)) msg = colon + 2;
-    return pcl_fail(L, "%s", msg);
-}
-
-/* ---- the readers: a place (a 2-D point, or n-D through the camera) and a colour ----------- */
+/* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
 /* v[0], v[1]: the 2-D place; a 3-D point also keeps its coordinates in v[2..4] (n = 3). */
 static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -46,27 +38,8 @@ static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 #define XY_TEXT "a 2-D point (or an n-D one through the camera)"
 #define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = XY_TEXT}
 
-static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    pc_canvas *c = pcl_active_canvas(L);
-    int isint;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (lua_type(L, idx) == LUA_TNUMBER && isint && ((v >= 0 && v < c->ncolors) || (v >= 256 && v < 256 + c->ntrue))) {
-        out->x = (double)v;
-        return 1;
-    }
-    size_t len;
-    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
-    pc_rgb rgb;
-    if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
-    int attr = pc_rgb_color(c, rgb);
-    if (attr < 0) pcl_fail(L, "%s", c->error);
-    out->x = attr;
-    return 1;
-}
-#define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_color, \
-                     .expect = "a colour number or \"#rrggbb\""}
-static int color_of(const pcl_val *v) { return v->present ? (int)v->x : -1; }
+/* a colour, true colours (256..) included */
+#define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}
 
 #define A_OPTNUM(nm, a, b, d, txt) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_RANGE, \
                                     .lo = a, .hi = b, .dflt = d, .shown = txt}
@@ -76,80 +49,29 @@ static int color_of(const pcl_val *v) { return v->present ? (int)v->x : -1; }
 /* ---- placed labels ---------------------------------------------------------------------- */
 
 static int l_placed_labels(lua_State *L) {
-    pc_canvas *c = pcl_active_canvas(L);
-    pc_canvas tmp;   /* as a writer gets it: placed (by Pango's boxes in the print look) */
-    const pc_canvas *base = c->figure.on ? &tmp : c;
-    const pc_canvas *r = c->figure.on ? pc_print_resolve(c, &tmp) : pc_layout_resolve(c);
-    pc_box2 *b;
-    int *side;
     size_t n;
-    if (!r || pc_layout_labels(r, &b, &side, &n) != PC_OK) {
-        pc_layout_release(base, r);
-        return pcl_fail(L, "out of memory");
-    }
-    static const char *const names[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw"};
+    pc_placed *p = pc_placed_labels(pcl_active_canvas(L), &n);
+    if (!p) return pcl_fail(L, "out of memory");
     lua_createtable(L, (int)n, 0);
-    size_t k = 0;
-    for (size_t i = 0; i < r->nops && k < n; i++) {
-        const pc_op *op = &r->ops[i];
-        if (op->kind != PC_OP_TEXT) continue;
+    for (size_t k = 0; k < n; k++) {
+        const double box[4] = {p[k].box.x0, p[k].box.y0, p[k].box.x1 - p[k].box.x0, p[k].box.y1 - p[k].box.y0};
         lua_createtable(L, 0, 7);
-        lua_pushlstring(L, r->text + op->first, op->count);
+        lua_pushlstring(L, p[k].text, p[k].len);
         lua_setfield(L, -2, "text");
-        lua_pushnumber(L, b[k].x0); lua_setfield(L, -2, "x");
-        lua_pushnumber(L, b[k].y0); lua_setfield(L, -2, "y");
-        lua_pushnumber(L, b[k].x1 - b[k].x0); lua_setfield(L, -2, "w");
-        lua_pushnumber(L, b[k].y1 - b[k].y0); lua_setfield(L, -2, "h");
-        lua_pushstring(L, names[side[k] >= 0 && side[k] <= 8 ? side[k] : 0]); lua_setfield(L, -2, "side");
-        lua_pushboolean(L, (op->flags & (PC_TEXT_AUTO | PC_TEXT_PLACED)) != 0); lua_setfield(L, -2, "auto");
-        lua_rawseti(L, -2, (lua_Integer)++k);
+        pcl_set_fields(L, 4, (const char *const[]){"x", "y", "w", "h"}, box, 0);
+        lua_pushstring(L, p[k].side);
+        lua_setfield(L, -2, "side");
+        lua_pushboolean(L, p[k].autoplaced);
+        lua_setfield(L, -2, "auto");
+        lua_rawseti(L, -2, (lua_Integer)k + 1);
     }
-    free(b);
-    free(side);
-    pc_layout_release(base, r);
+    free(p);
     return 1;
 }
 
 /* ---- the 3-D scene ----------------------------------------------------------------------- */
 
 #define HIDDEN_KEY "pointcalc.hidden"
-
-/* The scenes of a canvas: a new one each time the camera's screen map or mode changes. */
-typedef struct {
-    pc_scene **sc;
-    int *mode;
-    pc_map *map;
-    size_t n, cap;
-} scene_set;
-
-static int set_resolve(void *p, pc_canvas *copy) {
-    scene_set *set = p;
-    int st = PC_OK;
-    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_draw(set->sc[i], copy, set->mode[i]);
-    return st;
-}
-
-static int set_extent(void *p, const pc_canvas *c, pc_extent_fn put, void *ctx) {
-    scene_set *set = p;
-    int st = PC_OK;
-    for (size_t i = 0; i < set->n && st == PC_OK; i++) st = pc_scene_extent(set->sc[i], c, put, ctx);
-    return st;
-}
-
-/* fit{} moved the picture: the scenes are drawn through the same framing */
-static void set_frame(void *p, double sx, double sy, double tx, double ty) {
-    scene_set *set = p;
-    for (size_t i = 0; i < set->n; i++) pc_scene_reframe(set->sc[i], sx, sy, tx, ty);
-}
-
-static void set_drop(void *p) {
-    scene_set *set = p;
-    for (size_t i = 0; i < set->n; i++) pc_scene_free(set->sc[i]);
-    free(set->sc);
-    free(set->mode);
-    free(set->map);
-    free(set);
-}
 
 void pcl_set_hidden_mode(lua_State *L, int mode) {
     lua_pushinteger(L, mode);
@@ -158,64 +80,18 @@ void pcl_set_hidden_mode(lua_State *L, int mode) {
 
 pc_scene *pcl_scene(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
-    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1;
+    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1, st;
     lua_pop(L, 1);
-    pc_map *f = pcl_camera(L);
+    pc_map *f = pcl_camera(L), scr;
     if (mode < 0 || !f || f->nin != 3) return NULL;
-    pc_map scr;
     pcl_screen_map(L, f, &scr);
-    pc_canvas *c = pcl_active_canvas(L);
-    scene_set *set = c->attach_resolve == set_resolve ? c->attach : NULL;
-    if (!set) {
-        if (c->attach) return NULL;   /* something else is attached: draw as usual */
-        if (!(set = calloc(1, sizeof *set))) pcl_error(L, "%s: out of memory", pcl_fname(L));
-        c->attach = set;
-        c->attach_resolve = set_resolve;
-        c->attach_drop = set_drop;
-        c->attach_extent = set_extent;
-        c->attach_frame = set_frame;
-    }
-    size_t n = set->n;
-    if (n && set->mode[n - 1] == mode && !memcmp(&set->map[n - 1], &scr, sizeof scr)) return set->sc[n - 1];
-    if (n == set->cap) {
-        size_t cap = set->cap ? 2 * set->cap : 4;
-        pc_scene **a = realloc(set->sc, cap * sizeof *a);
-        if (a) set->sc = a;
-        int *m = realloc(set->mode, cap * sizeof *m);
-        if (m) set->mode = m;
-        pc_map *mp = realloc(set->map, cap * sizeof *mp);
-        if (mp) set->map = mp;
-        if (!a || !m || !mp) pcl_error(L, "%s: out of memory", pcl_fname(L));
-        set->cap = cap;
-    }
-    int st;
-    pc_scene *sc = pc_scene_new(&scr, &st);
-    if (!sc) return pcl_raise_status(L, pcl_fname(L), st), NULL;
-    set->sc[n] = sc;
-    set->mode[n] = mode;
-    set->map[n] = scr;
-    set->n++;
+    pc_scene *sc = pc_canvas_scene(pcl_active_canvas(L), &scr, mode, &st);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return sc;
 }
 
 int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (size_t)(n + 1), 0);
-    uint8_t *brk = lua_newuserdatauv(L, (size_t)n + 1, 0);
-    size_t m = 0;
-    int gap = 1;
-    for (int k = 0; k <= n; k++) {
-        double x[PC_MAXDIM];
-        if (pc_curve_eval(c, c->t0 + (c->t1 - c->t0) * k / n, x) != PC_OK) {
-            gap = 1;   /* a point at infinity: the curve breaks there */
-            continue;
-        }
-        memcpy(xyz + 3 * m, x, 3 * sizeof *x);
-        brk[m++] = (uint8_t)gap;
-        gap = 0;
-    }
-    int st = pc_scene_add_polyline(sc, m, xyz, brk, color, pcl_active_canvas(L)->pen);
-    lua_pop(L, 2);
-    return st;
+    return pc_scene_add_curve(sc, c, n, color, pcl_active_canvas(L)->pen);
 }
 
 /* A 3-D point at stack index idx, or 0. */
@@ -253,21 +129,14 @@ int pcl_scene_path(lua_State *L, int closed, int color, int heads) {
     lua_pop(L, 1);
     if (!is3 || !(sc = pcl_scene(L))) return 0;
     size_t n = lua_rawlen(L, 1);   /* the arg layer read them already: n points of one path */
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * (n + 1), 0);
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
     for (size_t k = 0; k < n; k++) {
         lua_rawgeti(L, 1, (lua_Integer)k + 1);
         int ok = point3(L, -1, xyz + 3 * k);
         lua_pop(L, 1);
         if (!ok) return lua_pop(L, 1), 0;   /* not all 3-D points: drawn as usual */
     }
-    if (closed && n > 1) memcpy(xyz + 3 * n, xyz, 3 * sizeof *xyz), n++;
-    pc_canvas *c = pcl_active_canvas(L);
-    int st = pc_scene_add_polyline(sc, n, xyz, NULL, color, c->pen);
-    /* the heads of arrow = "end" | "start" | "both" on the path's own end segments, hidden
-     * with their tips (9 px long, as a 2-D path's) */
-    if (st == PC_OK && (heads & PC_ARROW_END) && n >= 2)
-        st = pc_scene_add_arrow_head(sc, xyz + 3 * (n - 2), xyz + 3 * (n - 1), 9, color);
-    if (st == PC_OK && (heads & PC_ARROW_START) && n >= 2) st = pc_scene_add_arrow_head(sc, xyz + 3, xyz, 9, color);
+    int st = pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen);
     lua_pop(L, 1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
@@ -280,11 +149,9 @@ int pcl_scene_label(lua_State *L, const pcl_val *a) {
     /* the markup is checked now, as a 2-D label's is, not when the scene is drawn at write */
     char err[200];
     if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
-    int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
-    int st = pc_scene_add_label(sc, x, a[0].s, anchor, (int)a[5].x, (int)a[4].x);
+    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
     if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
-        st = pc_scene_style_label(sc, a[7].present ? a[7].s : "", a[8].present ? a[8].x : 0,
-                                  a[9].present ? (int)a[9].x : -1);
+        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
     if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
 }
@@ -300,10 +167,10 @@ static int l_mark(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     pc_scene *sc = a[0].n == 3 ? pcl_scene(L) : NULL;
     if (sc) {
-        int st = pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, color_of(&a[3]));
+        int st = pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, (int)a[3].x);
         return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
     }
-    return check(L, c, pc_mark(c, a[0].v[0], a[0].v[1], a[1].n, a[2].x, color_of(&a[3])));
+    return pcl_check_canvas(L, c, pc_mark(c, a[0].v[0], a[0].v[1], a[1].n, a[2].x, (int)a[3].x));
 }
 
 static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
@@ -313,7 +180,7 @@ static int l_arrow(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    return check(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, color_of(&a[3])));
+    return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
 }
 
 /* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
@@ -326,7 +193,7 @@ static int l_vector(lua_State *L) {
     lua_pushvalue(L, 2);
     lua_arith(L, LUA_OPADD);
     if (!read_xy(L, lua_gettop(L), NULL, &end)) return pcl_argfail(L, 2, "must have A's dimension");
-    return check(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9, color_of(&a[2])));
+    return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9, (int)a[2].x));
 }
 
 static const pcl_arg dim_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("offset", -1e5, 1e5, 20, "20"),
@@ -336,8 +203,8 @@ static int l_dimension(lua_State *L) {
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     double len = 0;
-    check(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x,
-                             a[3].present ? a[3].s : NULL, color_of(&a[4]), &len));
+    pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, a[3].s, (int)a[4].x,
+                                        &len));
     lua_pushnumber(L, len);
     return 1;
 }
@@ -349,8 +216,8 @@ static int l_angle_mark(lua_State *L) {
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     double th = 0;
-    check(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
-                              a[4].x, a[3].present ? a[3].s : NULL, color_of(&a[5]), &th));
+    pcl_check_canvas(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
+                              a[4].x, a[3].s, (int)a[5].x, &th));
     lua_pushnumber(L, th);
     return 1;
 }
@@ -362,7 +229,7 @@ static int l_ticks(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    return check(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, color_of(&a[3])));
+    return pcl_check_canvas(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
 }
 
 static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
@@ -373,16 +240,10 @@ static int l_hatch(lua_State *L) {
     pc_canvas *c = pcl_active_canvas(L);
     int n = a[0].n, d = a[0].dim;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
-    for (int i = 0; i < n; i++) {
-        double h[PC_MAXDIM + 1];
-        memcpy(h, a[0].list + (size_t)i * d, sizeof(double) * (size_t)d);
-        h[d] = 1;
-        if (d == 2) xy[2 * i] = h[0], xy[2 * i + 1] = h[1];
-        else if (pcl_project(L, d, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
-            return pcl_argfail(L, 1, "[%d] must be " XY_TEXT ", got a %d-D point", i + 1, d);
-    }
+    int bad = pcl_rows_to_xy(L, n, d, a[0].list, xy);
+    if (bad >= 0) return pcl_argfail(L, 1, "[%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
     size_t lines;
-    return check(L, c, pc_hatch(c, (size_t)n, xy, a[1].x, a[2].x, color_of(&a[3]), &lines));
+    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
 }
 
 static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
@@ -391,7 +252,7 @@ static int l_centre_line(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    return check(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, color_of(&a[3])));
+    return pcl_check_canvas(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
 }
 
 /* ---- framing, captions, device-unit text -------------------------------------------------- */
@@ -401,31 +262,17 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
                                    {.name = "around", .kind = PCL_POINTS, .flags = PCL_OPT, .lo = 1},
                                    A_OPTNUM("pad", 0, 1e300, 0, "0"), A_OPTNUM("band", 0, 1e5, 0, "0"), PCL_END};
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
-/* fit{around = points, pad =, band =}: the frame of the given points (n-D through the camera), set
- * before drawing; margin (pixels, of what is drawn) and pad (world units, of the points) each
- * belong to one of the two framings, so the other is refused rather than ignored. */
-static int fit_around(lua_State *L, pc_canvas *c, const pcl_val *a) {
-    if (a[1].present) return pcl_fail(L, "margin frames what is drawn (in pixels); with around give pad (world units)");
-    int n = a[3].n, d = a[3].dim;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
-    for (int i = 0; i < n; i++) {
-        double h[PC_MAXDIM + 1];
-        memcpy(h, a[3].list + (size_t)i * d, sizeof(double) * (size_t)d);
-        h[d] = 1;
-        if (d == 2) xy[2 * i] = h[0], xy[2 * i + 1] = h[1];
-        else if (pcl_project(L, d, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
-            return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", i + 1, d);
-    }
-    return check(L, c, pc_fit_around_band(c, (size_t)n, xy, a[4].x, a[5].present ? a[5].x : 0, a[2].n));
-}
 static int l_fit(lua_State *L) {
-    pcl_val a[6] = {0};
+    pcl_val a[6] = {0};   /* options; margin, aspect, around, pad, band */
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    if (a[3].present) return fit_around(L, c, a);
-    if (a[4].present) return pcl_fail(L, "pad is the room round the points of around: give around too (or margin)");
-    if (a[5].present) return pcl_fail(L, "band is the caption's room under the points of around: give around too");
-    return check(L, c, pc_fit(c, a[1].present ? a[1].x : 10, a[2].n));
+    int n = a[3].present ? a[3].n : 0, d = a[3].dim;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n + 1, 0);
+    int bad = pcl_rows_to_xy(L, n, d, a[3].list, xy);
+    if (bad >= 0) return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
+    pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n,
+                     a[1].x, a[4].x, a[5].x, (size_t)n, xy};
+    return pcl_check_canvas(L, c, pc_fit_options(c, &o));
 }
 
 static const char *const EDGES[] = {"bottom", "top", NULL};
@@ -435,18 +282,7 @@ static int l_caption(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    int top = a[1].n;
-    pc_rect v = c->view;
-    int vs = c->view_screen;   /* the whole screen, not the VIEW: a caption is the figure's */
-    c->view = (pc_rect){0, 0, c->width - 1, c->height - 1};
-    c->view_screen = 1;
-    double wx, wy;
-    pc_screen_to_world(c, c->width / 2.0, top ? 0 : c->height - 1, &wx, &wy);
-    int st = pc_text(c, wx, wy, a[0].s, top ? PC_ANCHOR_S : PC_ANCHOR_N, 3, 1, color_of(&a[2]));
-    if (st == PC_OK) c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;   /* framing leaves it */
-    c->view = v;
-    c->view_screen = vs;
-    return check(L, c, st);
+    return pcl_check_canvas(L, c, pc_caption(c, a[0].s, a[1].n, (int)a[2].x));
 }
 
 /* text{x =, y =, text =, units =, color =, scale =}; the positional form goes to the drawing
@@ -466,11 +302,8 @@ static int l_text(lua_State *L) {
     pcl_val a[7] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    double x = a[1].x, y = a[2].x;
-    if (a[4].n == 1) pc_screen_to_world(c, x, y, &x, &y);   /* device pixels, whatever the window */
-    int st = pc_text(c, x, y, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, color_of(&a[5]));
-    if (st == PC_OK && a[4].n == 1) c->ops[c->nops - 1].flags |= PC_TEXT_DEVICE;   /* not framed */
-    return check(L, c, st);
+    if (a[4].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[1].x, a[2].x, a[3].s, (int)a[6].x, (int)a[5].x));
+    return pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, (int)a[5].x));
 }
 
 /* ---- axes, graphs, legends ------------------------------------------------------------------ */
@@ -485,61 +318,50 @@ static int l_axes(lua_State *L) {
     pcl_val a[10] = {{0}, {.list = xr, .cap = 2}, {.list = yr, .cap = 2}};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    pc_axes_spec s = {0, 0, 0, 0, 0, 0, 5, 1, 1, 0, -1};
-    double wx0, wy0, wx1, wy1;   /* default: the window's (or the screen's) extent */
-    pc_screen_to_world(c, c->view.x0, c->view.y1, &wx0, &wy0);
-    pc_screen_to_world(c, c->view.x1, c->view.y0, &wx1, &wy1);
-    s.x0 = a[1].present ? xr[0] : fmin(wx0, wx1);
-    s.x1 = a[1].present ? xr[1] : fmax(wx0, wx1);
-    s.y0 = a[2].present ? yr[0] : fmin(wy0, wy1);
-    s.y1 = a[2].present ? yr[1] : fmax(wy0, wy1);
+    pc_axes_spec s;
+    pc_axes_default(c, &s);
+    if (a[1].present) s.x0 = xr[0], s.x1 = xr[1];
+    if (a[2].present) s.y0 = yr[0], s.y1 = yr[1];
     if (!(s.x0 < s.x1)) return pcl_keyfail(L, "x", "must be {lo, hi} with lo < hi");
     if (!(s.y0 < s.y1)) return pcl_keyfail(L, "y", "must be {lo, hi} with lo < hi");
     if (a[3].present) s.ox = a[3].v[0], s.oy = a[3].v[1];
-    s.ticks = a[4].present ? (int)a[4].x : 5;
-    s.labels = a[5].present ? (int)a[5].x : 1;
-    s.arrows = a[6].present ? (int)a[6].x : 1;
-    s.grid = a[7].present && a[7].x;
-    s.grid_color = color_of(&a[9]);
+    s.ticks = (int)a[4].x;
+    s.labels = (int)a[5].x;
+    s.arrows = (int)a[6].x;
+    s.grid = (int)a[7].x;
+    s.grid_color = (int)a[9].x;
     int n = 0;
-    check(L, c, pc_axes(c, &s, color_of(&a[8]), &n));
+    pcl_check_canvas(L, c, pc_axes(c, &s, (int)a[8].x, &n));
     lua_pushinteger(L, n);
     return 1;
 }
 
 static const pcl_arg graph_keys[] = {A_COLOR("color"), {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e6, .dflt = 400}, PCL_END};
 static const pcl_arg graph_args[] = {A_FUNCTION("f"), A_NUM("a"), A_NUM("b"), A_OPTIONS("options", graph_keys), PCL_END};
+typedef struct {
+    lua_State *L;
+    int f, failed;
+} graph_ctx;
+
+/* f(x), run protected so that the core frees its buffers: an error stays on the stack */
+static int graph_y(void *p, double x, double *y, int *have) {
+    graph_ctx *g = p;
+    lua_pushvalue(g->L, g->f);
+    lua_pushnumber(g->L, x);
+    if ((g->failed = lua_pcall(g->L, 1, 1, 0) != LUA_OK)) return PC_EARG;
+    *y = lua_tonumberx(g->L, -1, have);
+    lua_pop(g->L, 1);
+    return PC_OK;
+}
+
 static int l_graph(lua_State *L) {
     pcl_val a[6] = {0};
     PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
-    double x0 = a[1].x, x1 = a[2].x;
-    if (!(x0 < x1)) return pcl_argfail(L, 3, "must be greater than a");
-    lua_Integer n = a[5].present ? (lua_Integer)a[5].x : 400;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
-    uint8_t *verbs = lua_newuserdatauv(L, (size_t)n + 1, 0);
-    size_t m = 0, start = 0;
-    for (lua_Integer k = 0; k <= n; k++) {
-        double x = x0 + (x1 - x0) * (double)k / (double)n;
-        lua_pushvalue(L, a[0].idx);
-        lua_pushnumber(L, x);
-        lua_call(L, 1, 1);
-        int isnum;
-        double y = lua_tonumberx(L, -1, &isnum);
-        lua_pop(L, 1);
-        if (!isnum || !isfinite(y)) {   /* a gap: what came before is one piece */
-            if (m - start == 1) m = start;   /* a lone point draws nothing */
-            start = m;
-            continue;
-        }
-        xy[2 * m] = x;
-        xy[2 * m + 1] = y;
-        verbs[m] = m == start ? PC_PATH_MOVE : PC_PATH_LINE;
-        m++;
-    }
-    if (m - start == 1) m = start;
-    if (m) check(L, c, pc_path(c, m, xy, verbs, m, 0, color_of(&a[4])));
-    return 0;
+    if (!(a[1].x < a[2].x)) return pcl_argfail(L, 3, "must be greater than a");
+    graph_ctx g = {L, a[0].idx, 0};
+    int st = pc_graph(c, a[1].x, a[2].x, (int)a[5].x, graph_y, &g, (int)a[4].x);
+    return g.failed ? lua_error(L) : pcl_check_canvas(L, c, st);
 }
 
 static const char *const CORNERS[] = {"ne", "nw", "se", "sw", NULL};
@@ -557,17 +379,16 @@ static int l_legend(lua_State *L) {
     const char **names = lua_newuserdatauv(L, sizeof *names * (size_t)n, 0);
     int *colors = lua_newuserdatauv(L, sizeof *colors * (size_t)n, 0);
     for (lua_Integer i = 1; i <= n; i++) {   /* each name stays on the stack while it is used */
-        pcl_val col = {0};
         if (lua_geti(L, t, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
             return pcl_argfail(L, 1, "[%d] must be {name, colour}", (int)i);
         names[i - 1] = lua_tostring(L, -1);
         lua_geti(L, -2, 2);
-        if (!lua_isnil(L, -1) && !read_color(L, lua_gettop(L), NULL, &col))
+        colors[i - 1] = lua_isnil(L, -1) ? -1 : pcl_color_at(L, -1, c, 1);
+        if (colors[i - 1] == -2)
             return pcl_argfail(L, 1, "[%d] must be {name, colour}: its colour must be a colour number or \"#rrggbb\"", (int)i);
-        colors[i - 1] = lua_isnil(L, -1) ? -1 : (int)col.x;
         lua_pop(L, 1);
     }
-    return check(L, c, pc_legend(c, (int)n, names, colors, corner_of[a[1].n], color_of(&a[2])));
+    return pcl_check_canvas(L, c, pc_legend(c, (int)n, names, colors, corner_of[a[1].n], (int)a[2].x));
 }
 
 /* ---- map.view ------------------------------------------------------------------------------ */
@@ -581,14 +402,14 @@ static int l_view(lua_State *L) {
     PCL_READ(L, a);
     static const double origin[3] = {0, 0, 0};
     const double *to = a[2].present ? a[2].v : origin;
-    int persp = a[4].present && a[4].x, st;
+    int persp = (int)a[4].x, st;
     pc_map f;
     if (a[1].present) {
         if (!a[2].present) return pcl_keyfail(L, "to", "must be given with from (the point looked at)");
         st = pc_map_view(&f, a[1].v, to, a[3].present ? a[3].v : NULL, persp);
     } else {
         if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
-        st = pc_map_view_azel(&f, to, a[5].x, a[6].present ? a[6].x : 30, a[7].present ? a[7].x : 10, persp);
+        st = pc_map_view_azel(&f, to, a[5].x, a[6].x, a[7].x, persp);
     }
     switch (st) {
     case PC_OK: break;

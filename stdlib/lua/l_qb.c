@@ -1,17 +1,6 @@
 /* Binding of the QBasic number semantics (interp/qbasic/qbnum): the sub-table `qb` of the
- * module, declared on the argument layer (pcl_args.h).
- *
- *   qb.f32(x)                 x rounded to SINGLE (float32)
- *   qb.csng(x)                QBasic's CSNG: qb.f32, and the error "Overflow" beyond SINGLE
- *   qb.cint(x), qb.clng(x)    round to nearest, ties to even; second result false on overflow
- *   qb.rnd([n])               QBasic's RND(n) (n defaults to 1)
- *   qb.randomize(n)           QBasic's RANDOMIZE n
- *   qb.seed([s])              the generator's 24-bit seed (returned; set when s is given)
- *   qb.range(a, b [, step])   iterator over a FOR loop accumulating in float32:
- *                             for t in qb.range(0, 1, .001) do ... end  runs 1001 times
- *
- * The RND state belongs to the Lua state: a userdata shared as upvalue by rnd, randomize and
- * seed.  It starts at QBasic's initial seed. */
+ * module.  The RND state belongs to the Lua state: a userdata shared as upvalue by rnd,
+ * randomize and seed; it starts at QBasic's initial seed. */
 #include <math.h>
 #include "pcl_args.h"
 #include "qbnum.h"

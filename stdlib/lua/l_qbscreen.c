@@ -1,20 +1,10 @@
 /* Binding of QBasic's screen (stdlib/draw/qbscreen.h): what QBasic programs do on a graphics
- * screen beyond the drawing statements, for the QBasic runtime and for scripts.
- *
- *   print_at(row, col, text [, fg [, bg [, cell]]])  text in character cells (code page 437)
- *   scroll_text(top, bottom [, bg])           the text rows top..bottom up by one
- *   get_block(x1, y1, x2, y2) -> block        GET; block.w, block.h, block.bytes
- *   put_block(x, y, block [, action])         PUT; "xor" (default), "pset", "preset", "and", "or"
- *   draw(commands)                            DRAW's macro language
- *   pages(active [, visual])                  SCREEN , , apage, vpage
- *   pcopy(from, to)                           PCOPY
- *   pmap(value, fn)                           PMAP: fn 0/1 world -> view pixels, 2/3 back
- *   mode_info(mode) -> table                  width height colors pages cols rows cell aspect
- *   paint_tile(x, y, tile [, border])         PAINT with a tile string, as the mode reads it */
+ * screen beyond the drawing statements (text in cells, GET/PUT, DRAW, pages, PMAP), for the
+ * QBasic runtime and for scripts. */
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
@@ -151,11 +141,10 @@ static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read 
 static int l_draw(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    pc_draw_state *st = pcl_draw_state(L);
+    pc_pages *p = pcl_pages(L);
     pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
-    st->aspect = pc_mode_of_canvas(c, &m) ? m.aspect : 1;
-    return pcl_check_canvas(L, c, pc_draw_macro(c, st, a[0].s));
+    p->draw.aspect = pc_mode_of_canvas(p->c, &m) ? m.aspect : 1;
+    return pcl_check_canvas(L, p->c, pc_draw_macro(p->c, &p->draw, a[0].s));
 }
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
@@ -175,17 +164,20 @@ static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page",
 static int l_pages(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int n = pcl_npages(L), active = in_range(L, 1, a[0].x, 0, n - 1);
-    pcl_set_pages(L, active, a[1].present ? in_range(L, 2, a[1].x, 0, n - 1) : active);
-    return 0;
+    pc_pages *p = pcl_pages(L);
+    int active = in_range(L, 1, a[0].x, 0, p->npages - 1);
+    int visual = a[1].present ? in_range(L, 2, a[1].x, 0, p->npages - 1) : active;
+    return pc_pages_set(p, active, visual) == PC_OK ? 0 : pcl_fail(L, "out of memory for a page");
 }
 
 static const pcl_arg pcopy_args[] = {INT("source page"), INT("destination page"), PCL_END};
 static int l_pcopy(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int n = pcl_npages(L), from = in_range(L, 1, a[0].x, 0, n - 1), to = in_range(L, 2, a[1].x, 0, n - 1);
-    pc_canvas *src = pcl_page(L, from), *dst = pcl_page(L, to);
+    pc_pages *p = pcl_pages(L);
+    int from = in_range(L, 1, a[0].x, 0, p->npages - 1), to = in_range(L, 2, a[1].x, 0, p->npages - 1);
+    pc_canvas *src = pc_pages_page(p, from), *dst = pc_pages_page(p, to);
+    if (!src || !dst) return pcl_fail(L, "out of memory for a page");
     return pcl_check_canvas(L, dst, pc_canvas_copy_picture(dst, src));
 }
 
@@ -193,16 +185,9 @@ static const pcl_arg pmap_args[] = {A_NUM("value"), A_INT("function", 0, 3), PCL
 static int l_pmap(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    double v = a[0].x, sx, sy, wx, wy;
-    /* physical coordinates count from the view's corner, unless VIEW SCREEN */
-    double ox = c->view_screen ? 0 : c->view.x0, oy = c->view_screen ? 0 : c->view.y0;
-    switch ((int)a[1].x) {
-    case 0: pc_world_to_screen(c, v, 0, &sx, &sy); lua_pushinteger(L, (lua_Integer)lrint(sx - ox)); break;
-    case 1: pc_world_to_screen(c, 0, v, &sx, &sy); lua_pushinteger(L, (lua_Integer)lrint(sy - oy)); break;
-    case 2: pc_screen_to_world(c, v + ox, oy, &wx, &wy); lua_pushnumber(L, wx); break;
-    default: pc_screen_to_world(c, ox, v + oy, &wx, &wy); lua_pushnumber(L, wy); break;
-    }
+    double r = pc_pmap(pcl_active_canvas(L), a[0].x, (int)a[1].x);
+    if (a[1].x < 2) lua_pushinteger(L, (lua_Integer)r);
+    else lua_pushnumber(L, r);
     return 1;
 }
 
@@ -213,15 +198,12 @@ static int l_mode_info(lua_State *L) {
     pc_mode_info m;
     if (a[0].x < 0 || a[0].x > 13 || pc_mode_info_of((int)a[0].x, &m) != PC_OK)
         return pcl_argfail(L, 1, "must be a screen mode 1, 2, 7, 8, 9, 12 or 13, got %s", pcl_pushnum(L, a[0].x));
+    static const char *const names[] = {"width", "height", "colors", "pages", "cols", "rows", "cell"};
+    const double facts[] = {m.width, m.height, m.ncolors, m.pages, m.cols, m.rows, m.cell_h};
     lua_createtable(L, 0, 8);
-    lua_pushinteger(L, m.width); lua_setfield(L, -2, "width");
-    lua_pushinteger(L, m.height); lua_setfield(L, -2, "height");
-    lua_pushinteger(L, m.ncolors); lua_setfield(L, -2, "colors");
-    lua_pushinteger(L, m.pages); lua_setfield(L, -2, "pages");
-    lua_pushinteger(L, m.cols); lua_setfield(L, -2, "cols");
-    lua_pushinteger(L, m.rows); lua_setfield(L, -2, "rows");
-    lua_pushinteger(L, m.cell_h); lua_setfield(L, -2, "cell");
-    lua_pushnumber(L, m.aspect); lua_setfield(L, -2, "aspect");
+    pcl_set_fields(L, 7, names, facts, 1);
+    lua_pushnumber(L, m.aspect);
+    lua_setfield(L, -2, "aspect");
     return 1;
 }
 
@@ -236,17 +218,12 @@ static const pcl_fn fns[] = {
     {.name = "pmap", .fn = l_pmap, .args = pmap_args, .sig = "pmap(value, fn) -> number", .help = "QBasic's PMAP: fn 0 and 1 map a world x or y to view pixels, 2 and 3 map pixels back."},
     {.name = "mode_info", .fn = l_mode_info, .args = mode_info_args, .sig = "mode_info(mode) -> {width, height, colors, pages, cols, rows, cell, aspect}", .help = "The facts of SCREEN mode 1, 2, 7, 8, 9, 12 or 13: aspect is CIRCLE's default (4/3 * height/width: 0.8333 in SCREEN 13)."},
     {.name = "paint_tile", .fn = l_paint_tile, .args = paint_tile_args, .sig = "paint_tile(x, y, tile [, border])", .help = "QBasic's PAINT with a tile string (1..64 bytes, read as the mode keeps pixels: a bit a pixel in SCREEN 2, two in SCREEN 1, 4 bit planes a row in the 16-colour modes, a byte a pixel in SCREEN 13), up to the border colour (default: the foreground)."},
-
     PCL_END};
+
 void pcl_open_qbscreen(lua_State *L) {
-    if (luaL_newmetatable(L, BLOCK_MT)) {
-        lua_pushcfunction(L, block_gc);
-        lua_setfield(L, -2, "__gc");
-        lua_pushcfunction(L, block_index);
-        lua_setfield(L, -2, "__index");
-        lua_pushcfunction(L, block_tostring);
-        lua_setfield(L, -2, "__tostring");
-    }
+    static const luaL_Reg meta[] = {{"__gc", block_gc}, {"__index", block_index}, {"__tostring", block_tostring},
+                                    {NULL, NULL}};
+    if (luaL_newmetatable(L, BLOCK_MT)) luaL_setfuncs(L, meta, 0);
     lua_pop(L, 1);
     pcl_register(L, -1, fns, 0);
 }
