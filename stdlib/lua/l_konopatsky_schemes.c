@@ -10,30 +10,13 @@
  *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
  * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
 #include "pcl_args.h"
-#include "pcl_point.h"
+#include "pcl_core.h"
 #include "konop_schemes.h"
+#include "konop_why.h"
 #include "conic.h"
 
-static void push_rows(lua_State *L, int dim, const double *h, int n, const char *const *names) {
-    lua_createtable(L, 0, n);
-    for (int i = 0; i < n; i++) {
-        const double *r = h + (size_t)(dim + 1) * i;
-        if (r[dim] == 0) {
-            pcl_pushvector(L, dim, r);
-        } else {
-            double x[PC_MAXDIM];
-            for (int k = 0; k < dim; k++) x[k] = r[k] / r[dim];
-            pcl_pushpoint(L, dim, x);
-        }
-        lua_setfield(L, -2, names[i]);
-    }
-}
-
-static int scheme_error(lua_State *L, int st, const char *flat) {
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "%s", flat);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "a meet of the scheme is undefined at this parameter (its lines coincide)");
-    return pcl_fail(L, "%s", pc_strerror(st));
-}
+#define CHECK(st) pcl_check(L, (st), pc_konop_why)
+#define ROW(i) (o + (size_t)(n + 1) * (i))
 
 static int l_ed_scheme(lua_State *L) {
     pcl_val a[5] = {0};
@@ -42,11 +25,8 @@ static int l_ed_scheme(lua_State *L) {
     double p[3 * PC_MAXDIM], o[PC_ED_NPTS * (PC_MAXDIM + 1)];
     pcl_point_rows(a, 3, n, p);
     if (a[3].x == 0) return pcl_argfail(L, 4, "must not be 0 (the arc collapses to C)");
-    int st = pc_conic_ed_scheme(n, p, p + n, p + 2 * n, a[3].x, a[4].x, o);
-    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
-    static const char *names[PC_ED_NPTS] = {"T1", "K", "T", "N", "P", "Q", "M"};
-    push_rows(L, n, o, PC_ED_NPTS, names);
-    return 1;
+    CHECK(pc_conic_ed_scheme(n, p, p + n, p + 2 * n, a[3].x, a[4].x, o));
+    return pcl_push_results(L, n, "T1=h K=h T=h N=h P=h Q=h M=h", ROW(0), ROW(1), ROW(2), ROW(3), ROW(4), ROW(5), ROW(6));
 }
 
 static int l_five_scheme(lua_State *L) {
@@ -55,11 +35,9 @@ static int l_five_scheme(lua_State *L) {
     int n = a[0].n;
     double p[5 * PC_MAXDIM], o[PC_P5_NPTS * (PC_MAXDIM + 1)];
     pcl_point_rows(a, 5, n, p);
-    int st = pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, a[5].x, o);
-    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
-    static const char *names[PC_P5_NPTS] = {"S", "U", "V", "M", "U_B", "U_D", "R", "U_E"};
-    push_rows(L, n, o, PC_P5_NPTS, names);
-    return 1;
+    CHECK(pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, a[5].x, o));
+    return pcl_push_results(L, n, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h", ROW(0), ROW(1), ROW(2), ROW(3), ROW(4),
+                            ROW(5), ROW(6), ROW(7));
 }
 
 static int l_smooth_scheme(lua_State *L) {
@@ -70,31 +48,17 @@ static int l_smooth_scheme(lua_State *L) {
     pcl_point_rows(a, 3, d, abc);
     double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
     double *p = buf, *q = buf + n * d, *m = q + n * d;
-    int st = pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m);
-    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
-    lua_createtable(L, 0, 3);
-    const char *side[2] = {"P", "Q"};
-    for (int s2 = 0; s2 < 2; s2++) {
-        lua_createtable(L, n, 0);
-        for (int i = 0; i < n; i++) {
-            pcl_pushpoint(L, d, (s2 ? q : p) + i * d);
-            lua_rawseti(L, -2, i + 1);
-        }
-        lua_setfield(L, -2, side[s2]);
-    }
-    pcl_pushpoint(L, d, m);
-    lua_setfield(L, -2, "M");
-    return 1;
+    CHECK(pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m));
+    return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
 
 static int l_cones_excluded(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     double u[5];
-    int n, st = pc_cones_excluded(a[0].x, a[1].x, u, &n);
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    pcl_push_numbers(L, n, u);
-    return 1;
+    int n;
+    CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
+    return pcl_push_results(L, 0, "N", n, u);
 }
 
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
@@ -105,15 +69,8 @@ static int l_foci(lua_State *L) {
     int d = a[0].n;
     double p[3 * PC_MAXDIM], f1[PC_MAXDIM], f2[PC_MAXDIM], e, fp;
     pcl_point_rows(a, 3, d, p);
-    int st = pc_conic_foci(d, p, p + d, p + 2 * d, a[3].n == 1, f1, f2, &e, &fp);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "a semi-axis is zero (A or B coincides with C)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    pcl_pushpoint(L, d, f1);
-    pcl_pushpoint(L, d, f2);
-    lua_pushnumber(L, e);
-    lua_pushnumber(L, fp);
-    return 4;
+    CHECK(pc_conic_foci(d, p, p + d, p + 2 * d, a[3].n == 1, f1, f2, &e, &fp));
+    return pcl_push_results(L, d, "p p n n", f1, f2, e, fp);
 }
 
 static int l_focal_point(lua_State *L) {
@@ -125,13 +82,8 @@ static int l_focal_point(lua_State *L) {
     int st = pc_conic_focal_point(d, p, p + d, p + 2 * d, hyp, a[3].x, o, pab);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "CA and CB must be perpendicular semi-axes%s", hyp ? "" : ", CA the major one (the foci on it)");
-    if (st == PC_EPOLE) return pcl_fail(L, "phi = %s is an asymptote's direction (1 - e cos phi = 0)", pcl_pushnum(L, a[3].x));
-    if (st != PC_OK) return scheme_error(L, st, "a semi-axis is zero");
-    pcl_pushpoint(L, d, o);
-    pcl_pushpoint(L, d, o + d);
-    lua_pushnumber(L, pab[0]);
-    lua_pushnumber(L, pab[1]);
-    return 4;
+    CHECK(st);
+    return pcl_push_results(L, d, "p p n n", o, o + d, pab[0], pab[1]);
 }
 
 static int l_ceva_scheme(lua_State *L) {
@@ -140,33 +92,16 @@ static int l_ceva_scheme(lua_State *L) {
     int d = a[0].n;
     double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], t3, r;
     pcl_point_rows(a, 3, d, p);
-    int st = pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, a[3].x, a[4].x, o, &t3, &r);
-    if (st == PC_EDOMAIN) return pcl_argfail(L, 4, "must not be 0");
-    if (st == PC_EPOLE) return pcl_fail(L, "the arc is at infinity at t = %s", pcl_pushnum(L, a[4].x));
-    if (st != PC_OK) return scheme_error(L, st, "A1, A2, A3 are collinear");
-    lua_createtable(L, 0, 4);
-    pcl_pushpoint(L, d, o);
-    lua_setfield(L, -2, "M3");
-    pcl_pushpoint(L, d, o + d);
-    lua_setfield(L, -2, "M");
-    lua_pushnumber(L, t3);
-    lua_setfield(L, -2, "t3");
-    lua_pushnumber(L, r);
-    lua_setfield(L, -2, "r");
-    return 1;
+    CHECK(pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, a[3].x, a[4].x, o, &t3, &r));
+    return pcl_push_results(L, d, "M3=p M=p t3=n r=n", o, o + d, t3, r);
 }
 
 static int conv(lua_State *L, int to_ed) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     double r;
-    int st = to_ed ? pc_ceva_to_ed(a[0].x, &r) : pc_ed_to_ceva(a[0].x, &r);
-    if (st == PC_EDOMAIN)
-        return pcl_argfail(L, 1, to_ed ? "must be a positive Ceva k, got %s" : "must be an engineering discriminant in (0, 1), got %s",
-                           pcl_pushnum(L, a[0].x));
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    lua_pushnumber(L, r);
-    return 1;
+    CHECK(to_ed ? pc_ceva_to_ed(a[0].x, &r) : pc_ed_to_ceva(a[0].x, &r));
+    return pcl_push_results(L, 0, "n", r);
 }
 static int l_ceva_to_ed(lua_State *L) { return conv(L, 1); }
 static int l_ed_to_ceva(lua_State *L) { return conv(L, 0); }
