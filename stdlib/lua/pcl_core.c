@@ -31,21 +31,32 @@ static void push_h(lua_State *L, int dim, const double *h) {
     else pcl_pushpoint(L, dim, x);
 }
 
+static void push_vectors(lua_State *L, int n, int dim, const double *rows) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        pcl_pushvector(L, dim, rows + (size_t)i * dim);
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
 /* push one value of kind c from ap; 0 when it is left out (o of NaN) */
 static int push_one(lua_State *L, int dim, char c, va_list *ap) {
     if (c == 'n' || c == 'o') {
         double x = va_arg(*ap, double);
         if (c == 'o' && isnan(x)) return 0;
-        lua_pushnumber(L, x + 0.0);   /* no -0 */
+        lua_pushnumber(L, c == 'o' ? x + 0.0 : x);   /* o: no -0 */
     } else if (c == 'i') {
         lua_pushinteger(L, va_arg(*ap, int));
     } else if (c == 'b') {
         lua_pushboolean(L, va_arg(*ap, int));
-    } else if (c == 'N' || c == 'P') {
+    } else if (c == 's') {
+        lua_pushstring(L, va_arg(*ap, const char *));
+    } else if (c == 'N' || c == 'P' || c == 'V') {
         int n = va_arg(*ap, int);
         const double *x = va_arg(*ap, const double *);
         if (c == 'N') pcl_push_numbers(L, n, x);
-        else pcl_push_values(L, n, dim, x, 0);
+        else if (c == 'P') pcl_push_values(L, n, dim, x, 0);
+        else push_vectors(L, n, dim, x);
     } else {
         const double *x = va_arg(*ap, const double *);
         if (c == 'p') pcl_pushpoint(L, dim, x);
