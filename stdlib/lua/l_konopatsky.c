@@ -16,6 +16,7 @@
 #include "konop_interp.h"
 #include "approx.h"
 #include "konop_why.h"
+#include "konop_make.h"
 
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
@@ -41,53 +42,28 @@ static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END}
 static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
-static int c_ed(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st));
-}
 
-static int c_ed_k(lua_State *L) {
-    pcl_val a[4] = {0};
+/* A construction of pc_konop_make or pc_konop_number: the declared points, then the numbers. */
+static int made(lua_State *L, pc_konop_kind kind) {
+    pcl_val a[6] = {0};
     PCL_READ(L, a);
-    double k;
-    CHECK(pc_conic_ed_k(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &k));
+    int np = pc_konop_npoints(kind), d = a[0].n, st;
+    double p[4 * PC_MAXDIM], x[2] = {a[np].x, a[np + 1].x}, k;
+    pcl_point_rows(a, np, d, p);
+    if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
+    CHECK(pc_konop_number(kind, d, p, &k));
     return pcl_push_results(L, 0, "n", k);
 }
 
-static int c_circle_k(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    double k;
-    CHECK(pc_conic_ed_circle_k(a[0].n, a[0].v, a[1].v, a[2].v, &k));
-    return pcl_push_results(L, 0, "n", k);
-}
+static int c_ed(lua_State *L) { return made(L, PC_KM_ED); }
+static int c_ed_k(lua_State *L) { return made(L, PC_KM_ED_K); }
+static int c_circle_k(lua_State *L) { return made(L, PC_KM_CIRCLE_K); }
+static int c_ceva(lua_State *L) { return made(L, PC_KM_CEVA); }
+static int c_ceva_k(lua_State *L) { return made(L, PC_KM_CEVA_K); }
+static int c_parabola(lua_State *L) { return made(L, PC_KM_PARABOLA); }
 
-static int c_ceva(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st));
-}
-
-static int c_ceva_k(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    double k;
-    CHECK(pc_conic_ceva_k(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &k));
-    return pcl_push_results(L, 0, "n", k);
-}
-
-static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-static int c_parabola(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st, d = a[0].n;
-    if (!a[3].present) return MADE(pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st));
-    /* (2.62): A, C, B = arguments 1, 2, 3 with C reached at tC */
-    return MADE(pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st));
-}
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN},
+                                        PCL_END};
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
@@ -316,36 +292,14 @@ static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is t
     return pcl_push_made(L, pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st), &st, "oneratio.simplex");
 }
 
-static int o_tetra(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st));
-}
+static int o_tetra(lua_State *L) { return made(L, PC_KM_TETRA); }
+static int o_bezier3(lua_State *L) { return made(L, PC_KM_BEZIER3); }
+static int o_smooth(lua_State *L) { return made(L, PC_KM_SMOOTH); }
+static int o_desargues(lua_State *L) { return made(L, PC_KM_DESARGUES); }
 
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
-static int o_bezier3(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_oneratio_bezier3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st));
-}
-
 static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
-static int o_smooth(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st));
-}
-
-static int o_desargues(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st));
-}
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -522,12 +476,7 @@ static int i_controls(lua_State *L) {
 }
 
 static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
-static int i_conic(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return MADE(pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st));
-}
+static int i_conic(lua_State *L) { return made(L, PC_KM_ED3); }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
