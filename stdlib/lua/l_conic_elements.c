@@ -1,10 +1,5 @@
-/* Conics that know what they are (geom/quadratic.h) in Lua:
- *   c:conic()                              the conic a 2-D curve lies on
- *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f} | {points =, tangents =})
- *   plane.conic_slope(coef, X)             dy/dx of an implicit conic at its point
- * both -> {kind, circle, discriminant, coef, center, vertex, axes, semi, a, b, foci, e, p,
- *          asymptotes, mu, w, k, k_ceva}
- * pcl_push_conic_info is shared with korotky.conic_elements. */
+/* Conics that know what they are (geom/quadratic.h) in Lua: c:conic(), conic.elements and
+ * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements. */
 #include <math.h>
 #include <string.h>
 #include "pcl_args.h"
@@ -12,6 +7,7 @@
 #include "pcl_core.h"
 #include "pcl_point.h"
 #include "quadratic.h"
+#include "quadratic_on.h"
 #include "konop_why.h"
 
 /* The fields of every conic, then those of a central one or of a parabola. */
@@ -104,18 +100,11 @@ static int l_slope(lua_State *L) {
     double q[6];
     pcl_val a[2] = {{.list = q, .cap = 6}};
     PCL_READ(L, a);
-    const double *x = a[1].v;
-    double v = pc_conic_eq(q, x[0], x[1]), g = hypot(2 * q[0] * x[0] + q[1] * x[1] + q[3], q[1] * x[0] + 2 * q[2] * x[1] + q[4]);
-    if (fabs(v) > 1e-9 * fmax(g, 1) * fmax(1, hypot(x[0], x[1])))
-        return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
-    double sl;
-    int st = pc_conic_slope(q, x[0], x[1], &sl);
-    if (st == PC_EPOLE) {
-        lua_pushnumber(L, HUGE_VAL);   /* a vertical tangent */
-        return 1;
-    }
-    pcl_check(L, st, pc_konop_why);
-    return pcl_push_results(L, 0, "n", sl);
+    double sl, v;
+    int st = pc_conic_slope_on(q, a[1].v[0], a[1].v[1], &sl, &v);
+    if (st == PC_EDOMAIN) return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
+    if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
+    return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
 }
 
 static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};

@@ -1,15 +1,5 @@
-/* Konopatsky's chapter 1 in Lua (books/konopatsky/konop_ch1.h), the table konopatsky, declared
- * on the argument layer:
- *   area_k(l1, l2, l3) -> k                          (1.2)
- *   area_theorem(A1, A2, A3, B1, B2, B3) -> {k, lambda, a, b, c, collinear}
- *   o_theorem({A1, ..., Am}, D1, D2) -> product, ratios, B   (1.4), B homogeneous points
- *   simplex_ratio({{p1, q1, r1}, ...}) -> det          S- and V-theorems
- *   meet_line_plane(A1, A2, P1, P2, P3) -> K, lambda, p, q   (§1.3.5 by the V-theorem)
- *   polar(C, A, B, rho, phi) -> M                     (2.117)/(2.118)
- *   rotate(C, A, B, phi) -> Q                         (2.138)
- *   moving_simplex(NA, NB, NC, gen) -> surface        Fig. 1.2
- *   equation(c [, var]) -> x, y, ...                 the coordinates as the book prints them
- */
+/* Konopatsky's chapter 1 in Lua (books/konopatsky/konop_ch1.h): the table konopatsky, declared
+ * on the argument layer. */
 #include <math.h>
 #include "pcl_args.h"
 #include "pcl_core.h"

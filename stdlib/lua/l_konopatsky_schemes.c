@@ -1,14 +1,6 @@
 /* The scheme points of the monograph (books/konopatsky/konop_schemes.h) in Lua, declared on the
- * argument layer:
- *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
- *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
- *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
- *   conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}            (2.105)
- *   conic.focal_point(C, A, B, phi [, kind]) -> M, F, pa, pb         (2.17), (2.55)
- *   conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p
- *   conic.cones_excluded(fP, fQ) -> {u, ...}                        §2.6 (2.148), (2.151), (2.153)
- *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
- * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
+ * argument layer: each a point, or a vector where the scheme's point is at infinity (N at
+ * u = 1/2 of conic.ed_scheme). */
 #include "pcl_args.h"
 #include "pcl_core.h"
 #include "konop_schemes.h"

@@ -1,7 +1,4 @@
-/* The symbolic method of §2.2 in Lua (books/konopatsky/konop_triples.h):
- *   conic.scheme{triples = {{"A1", "A", "B"}, ...}, points = {A1 = P(...), ...}, (declared)
- *                current = {"C", "A1", "A5"}, result = "M" [, range = {t0, t1}]}
- *     -> curve, steps ({"A = A3A2 x A4A5", ...}) */
+/* The symbolic method of §2.2 in Lua (books/konopatsky/konop_triples.h): conic.scheme{...}. */
 #include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
