@@ -340,16 +340,6 @@ static int o_closed(lua_State *L) {
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
 
-static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
-static int o_simplex_scheme(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double N[PC_MAXDIM], M[PC_MAXDIM];
-    CHECK(pc_oneratio_simplex_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, N, M));
-    return pcl_push_results(L, d, "N=p M=p", N, M);
-}
-
 static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
 static int o_levels(lua_State *L) {
     double p[16 * PC_MAXDIM], out[120 * PC_MAXDIM];
@@ -365,17 +355,6 @@ static int o_levels(lua_State *L) {
         row += (n - level) * d;
     }
     return 1;
-}
-
-static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
-static int o_desargues_scheme(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n, r = d + 1;
-    double h[7 * (PC_MAXDIM + 1)], pq[2];
-    CHECK(pc_desargues_scheme(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, h, pq));
-    return pcl_push_results(L, d, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n", h, h + r, h + 2 * r, h + 3 * r, h + 4 * r,
-                            h + 5 * r, h + 6 * r, pq[0], pq[1]);
 }
 
 /* ==== interp ================================================================================ */
@@ -781,9 +760,7 @@ static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.desargues", o_desargues, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
     PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
     PCL_FN("oneratio.closed", o_closed, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
-    PCL_FN("oneratio.simplex_scheme", o_simplex_scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
     PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
-    PCL_FN("oneratio.desargues_scheme", o_desargues_scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
     PCL_END};
 
 static const pcl_fn interp_fns[] = {

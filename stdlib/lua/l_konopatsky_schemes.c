@@ -5,31 +5,29 @@
 #include "pcl_core.h"
 #include "konop_schemes.h"
 #include "konop_why.h"
+#include "konop_make.h"
 #include "conic.h"
 
 #define CHECK(st) pcl_check(L, (st), pc_konop_why)
-#define ROW(i) (o + (size_t)(n + 1) * (i))
 
-static int l_ed_scheme(lua_State *L) {
-    pcl_val a[5] = {0};
+/* A scheme of pc_konop_scheme: the declared points, then the numbers; its points and numbers
+ * pushed by spec (pcl_push_packed). */
+static int scheme(lua_State *L, pc_konop_scheme_kind kind, const char *spec) {
+    pcl_val a[7] = {0};
     PCL_READ(L, a);
-    int n = a[0].n;
-    double p[3 * PC_MAXDIM], o[PC_ED_NPTS * (PC_MAXDIM + 1)];
-    pcl_point_rows(a, 3, n, p);
-    if (a[3].x == 0) return pcl_argfail(L, 4, "must not be 0 (the arc collapses to C)");
-    CHECK(pc_conic_ed_scheme(n, p, p + n, p + 2 * n, a[3].x, a[4].x, o));
-    return pcl_push_results(L, n, "T1=h K=h T=h N=h P=h Q=h M=h", ROW(0), ROW(1), ROW(2), ROW(3), ROW(4), ROW(5), ROW(6));
+    int np = pc_konop_scheme_npoints(kind), d = a[0].n;
+    double p[5 * PC_MAXDIM], x[2] = {a[np].x, a[np + 1].x}, o[8 * (PC_MAXDIM + 1)];
+    pcl_point_rows(a, np, d, p);
+    CHECK(pc_konop_scheme(kind, d, p, x, o));
+    return pcl_push_packed(L, d, spec, o);
 }
 
-static int l_five_scheme(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    double p[5 * PC_MAXDIM], o[PC_P5_NPTS * (PC_MAXDIM + 1)];
-    pcl_point_rows(a, 5, n, p);
-    CHECK(pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, a[5].x, o));
-    return pcl_push_results(L, n, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h", ROW(0), ROW(1), ROW(2), ROW(3), ROW(4),
-                            ROW(5), ROW(6), ROW(7));
+static int l_ed_scheme(lua_State *L) { return scheme(L, PC_KS_ED, "T1=h K=h T=h N=h P=h Q=h M=h"); }
+static int l_five_scheme(lua_State *L) { return scheme(L, PC_KS_FIVE, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h"); }
+static int l_ceva_scheme(lua_State *L) { return scheme(L, PC_KS_CEVA, "M3=p M=p t3=n r=n"); }
+static int l_simplex_scheme(lua_State *L) { return scheme(L, PC_KS_SIMPLEX, "N=p M=p"); }
+static int l_desargues_scheme(lua_State *L) {
+    return scheme(L, PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n");
 }
 
 static int l_smooth_scheme(lua_State *L) {
@@ -78,16 +76,6 @@ static int l_focal_point(lua_State *L) {
     return pcl_push_results(L, d, "p p n n", o, o + d, pab[0], pab[1]);
 }
 
-static int l_ceva_scheme(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], t3, r;
-    pcl_point_rows(a, 3, d, p);
-    CHECK(pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, a[3].x, a[4].x, o, &t3, &r));
-    return pcl_push_results(L, d, "M3=p M=p t3=n r=n", o, o + d, t3, r);
-}
-
 static int conv(lua_State *L, int to_ed) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
@@ -109,6 +97,8 @@ static const pcl_arg focal_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NU
                                      {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
 static const pcl_arg ceva_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
 static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
+static const pcl_arg abct_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("t"), PCL_END};
+static const pcl_arg abcdt_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), A_NUM("t"), PCL_END};
 
 static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ed_scheme", l_ed_scheme, ed_args, "{T1, K, T, N, P, Q, M}",
@@ -128,6 +118,8 @@ static const pcl_fn conic_fns[] = {
            "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_END};
 static const pcl_fn oneratio_fns[] = {
+    PCL_FN("oneratio.simplex_scheme", l_simplex_scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", l_desargues_scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
     PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}",
            "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
     PCL_END};

@@ -66,24 +66,47 @@ static int push_one(lua_State *L, int dim, char c, va_list *ap) {
     return 1;
 }
 
+/* the value on the stack top into the table below it, by the name of the token tok (NAME=x) */
+static void store(lua_State *L, const char *tok) {
+    lua_pushlstring(L, tok, strcspn(tok, "="));
+    lua_insert(L, -2);
+    lua_rawset(L, -3);
+}
+
+/* the kind letter of the token at s, and the start of the next one */
+static char token(const char **s) {
+    size_t len = strcspn(*s, " ");
+    char c = (*s)[len - 1];
+    *s += len + ((*s)[len] == ' ');
+    return c;
+}
+
 int pcl_push_results(lua_State *L, int dim, const char *spec, ...) {
     va_list ap;
     va_start(ap, spec);
     int named = strchr(spec, '=') != NULL, count = 0;
     if (named) lua_newtable(L);
-    for (const char *s = spec; *s;) {
-        size_t len = strcspn(s, " ");
-        const char *eq = memchr(s, '=', len);
-        int pushed = push_one(L, dim, s[len - 1], &ap);
-        if (named && pushed) {
-            lua_pushlstring(L, s, (size_t)(eq - s));
-            lua_insert(L, -2);
-            lua_rawset(L, -3);
-        }
+    for (const char *s = spec, *tok = s; *s; tok = s) {
+        int pushed = push_one(L, dim, token(&s), &ap);
+        if (named && pushed) store(L, tok);
         count += pushed;
-        s += len + (s[len] == ' ');
     }
     va_end(ap);
+    return named ? 1 : count;
+}
+
+int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
+    int named = strchr(spec, '=') != NULL, count = 0;
+    if (named) lua_newtable(L);
+    for (const char *s = spec, *tok = s; *s; tok = s, count++) {
+        char c = token(&s);
+        if (c == 'n') lua_pushnumber(L, *v);
+        else if (c == 'h') push_h(L, dim, v);
+        else if (c == 'v') pcl_pushvector(L, dim, v);
+        else pcl_pushpoint(L, dim, v);
+        v += c == 'n' ? 1 : c == 'h' ? dim + 1 : dim;
+        if (named) store(L, tok);
+    }
     return named ? 1 : count;
 }
 

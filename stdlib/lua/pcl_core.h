@@ -22,6 +22,8 @@ int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table);
  * Tokens NAME=x go into one table by name (1 pushed); else each is pushed in turn.  Returns
  * the count pushed. */
 int pcl_push_results(lua_State *L, int dim, const char *spec, ...);
+/* The same for values packed in order in v (p and v: dim numbers, h: dim + 1, n: one). */
+int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v);
 
 /* References to Lua functions the core calls (callbacks, pcl.h): made of the values at the
  * stack indices idx[0..n-1] (at most 16), with the callback state set; freed by

@@ -4,6 +4,7 @@
 #include "konop_make.h"
 #include "conic.h"
 #include "oneratio.h"
+#include "konop_schemes.h"
 
 int pc_konop_npoints(pc_konop_kind kind) {
     switch (kind) {
@@ -43,4 +44,22 @@ int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, double *out)
     case PC_KM_CEVA_K: return pc_conic_ceva_k(dim, a, b, c, d, out);
     default: return PC_EDOMAIN;
     }
+}
+
+int pc_konop_scheme_npoints(pc_konop_scheme_kind kind) {
+    return kind == PC_KS_FIVE ? 5 : kind == PC_KS_DESARGUES ? 4 : 3;
+}
+
+int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const double *x, double *out) {
+    const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim, *e = pts + 4 * dim;
+    switch (kind) {
+    case PC_KS_ED:
+        if (x[0] == 0) return PC_EARG;
+        return pc_conic_ed_scheme(dim, a, b, c, x[0], x[1], out);
+    case PC_KS_FIVE: return pc_conic_five_scheme(dim, a, b, c, d, e, x[0], out);
+    case PC_KS_CEVA: return pc_conic_ceva_scheme(dim, a, b, c, x[0], x[1], out, out + 2 * dim, out + 2 * dim + 1);
+    case PC_KS_SIMPLEX: return pc_oneratio_simplex_scheme(dim, a, b, c, x[0], out, out + dim);
+    case PC_KS_DESARGUES: return pc_desargues_scheme(dim, a, b, c, d, x[0], out, out + 7 * (dim + 1));
+    }
+    return PC_EDOMAIN;
 }

@@ -29,4 +29,21 @@ pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const do
  * function (PC_EDOMAIN for another kind). */
 int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, double *out);
 
+/* The schemes whose points figures label, by kind: pc_konop_scheme fills out with the points
+ * in order, then the numbers (rows of dim + 1 homogeneous where a point may be at infinity,
+ * of dim where not). */
+typedef enum {
+    PC_KS_ED,          /* A, B, C; k, u -> T1, K, T, N, P, Q, M (homogeneous): §2.1.6 */
+    PC_KS_FIVE,        /* A, B, C, D, E; u -> S, U, V, M, U_B, U_D, R, U_E (homogeneous): §2.1.4 */
+    PC_KS_CEVA,        /* A1, A2, A3; k, t -> M3, M (rows of dim), t3, r: (2.105) */
+    PC_KS_SIMPLEX,     /* A, B, C; t -> N, M (rows of dim): Fig. 3.1 */
+    PC_KS_DESARGUES    /* A, B, C, D; t -> T, S, R, N, J, Q, M (homogeneous), pJ, qJ: Fig. 3.12 */
+} pc_konop_scheme_kind;
+
+/* How many points the scheme takes. */
+int pc_konop_scheme_npoints(pc_konop_scheme_kind kind);
+/* The scheme's points and numbers into out (at most 8 (PC_MAXDIM + 1) doubles): the status of
+ * the scheme's own function; PC_EARG for a zero k of PC_KS_ED (the arc collapses to C). */
+int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const double *x, double *out);
+
 #endif

@@ -22,6 +22,7 @@ const pc_why pc_konop_why[] = {
     {"conic.triples", PC_EDOMAIN, 0, NULL, "the lines A2A3 and A4A5 must meet"},
     {"conic.redundant", PC_EPOLE, 0, NULL, "u = 0 and v = 1 make both lines AB: K is undefined"},
     {"conic.cones", PC_ECOLLINEAR, 0, NULL, "A, B, C, D must span a tetrahedron"},
+    {"conic.ed_scheme", PC_EARG, 4, NULL, "must not be 0 (the arc collapses to C)"},
     {"conic.ed_scheme", PC_ECOLLINEAR, 0, NULL, "A, B, C are collinear"},
     {"conic.ed_scheme", PC_EDOMAIN, 0, NULL, NO_MEET},
     {"conic.five_scheme", PC_ECOLLINEAR, 0, NULL, "A, B, C are collinear"},

@@ -8,6 +8,7 @@
 #include "konop_make.h"
 #include "conic.h"
 #include "oneratio.h"
+#include "konop_schemes.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -72,10 +73,46 @@ static void test_numbers(void **state) {
     assert_int_equal(pc_konop_number(PC_KM_ED, 2, p, &k), PC_EDOMAIN);
 }
 
+/* the schemes by kind: their own functions' points, packed in order */
+static void test_schemes(void **state) {
+    (void)state;
+    const double *a = PTS, *b = PTS + 2, *c = PTS + 4, *d = PTS + 6;
+    double out[8 * 3], ref[8 * 3], x[2] = {0.3, 0.25};
+    assert_int_equal(pc_konop_scheme(PC_KS_ED, 2, PTS, x, out), PC_OK);
+    assert_int_equal(pc_conic_ed_scheme(2, a, b, c, 0.3, 0.25, ref), PC_OK);
+    for (int i = 0; i < 7 * 3; i++) NEAR(out[i], ref[i], 0);
+    assert_int_equal(pc_konop_scheme(PC_KS_ED, 2, PTS, (double[]){0, 0.25}, out), PC_EARG);
+    double t3, r;
+    assert_int_equal(pc_konop_scheme(PC_KS_CEVA, 2, PTS, x, out), PC_OK);
+    assert_int_equal(pc_conic_ceva_scheme(2, a, b, c, 0.3, 0.25, ref, &t3, &r), PC_OK);
+    for (int i = 0; i < 4; i++) NEAR(out[i], ref[i], 0);
+    NEAR(out[4], t3, 0);
+    NEAR(out[5], r, 0);
+    assert_int_equal(pc_konop_scheme(PC_KS_SIMPLEX, 2, PTS, x, out), PC_OK);
+    NEAR(out[0], 0.7 * a[0] + 0.3 * c[0], 1e-15);           /* N = A t' + C t */
+    NEAR(out[1], 0.7 * a[1] + 0.3 * c[1], 1e-15);
+    NEAR(out[2], 0.7 * out[0] + 0.3 * b[0], 1e-15);          /* M = N t' + B t */
+    double pq[2];
+    assert_int_equal(pc_konop_scheme(PC_KS_DESARGUES, 2, PTS, (double[]){0.5}, out), PC_OK);
+    assert_int_equal(pc_desargues_scheme(2, a, b, c, d, 0.5, ref, pq), PC_OK);
+    for (int i = 0; i < 7 * 3; i++) NEAR(out[i], ref[i], 0);
+    NEAR(out[21], pq[0], 0);
+    NEAR(out[22], pq[1], 0);
+    NEAR(out[2], 0, 0);                                      /* T at infinity at t = 1/2 */
+    assert_int_equal(pc_konop_scheme_npoints(PC_KS_FIVE), 5);
+    assert_int_equal(pc_konop_scheme_npoints(PC_KS_DESARGUES), 4);
+    assert_int_equal(pc_konop_scheme_npoints(PC_KS_CEVA), 3);
+    double five[10] = {0, 0, 4, 0, 1, 3, 4, 3, 2, 4}, o5[8 * 3], r5[8 * 3];
+    assert_int_equal(pc_konop_scheme(PC_KS_FIVE, 2, five, x, o5), PC_OK);
+    assert_int_equal(pc_conic_five_scheme(2, five, five + 2, five + 4, five + 6, five + 8, 0.3, r5), PC_OK);
+    for (int i = 0; i < 8 * 3; i++) NEAR(o5[i], r5[i], 0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_curves),
         cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_schemes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
