@@ -10,13 +10,14 @@
 
 #define CHECK(st) pcl_check(L, (st), pc_konop_why)
 
-/* A scheme of pc_konop_scheme: the declared points, then the numbers; its points and numbers
- * pushed by spec (pcl_push_packed). */
+/* A scheme of pc_konop_scheme: the declared points, then the numbers (an enum's choice by its
+ * index); its points and numbers pushed by spec (pcl_push_packed). */
 static int scheme(lua_State *L, pc_konop_scheme_kind kind, const char *spec) {
     pcl_val a[7] = {0};
     PCL_READ(L, a);
     int np = pc_konop_scheme_npoints(kind), d = a[0].n;
-    double p[5 * PC_MAXDIM], x[2] = {a[np].x, a[np + 1].x}, o[8 * (PC_MAXDIM + 1)];
+    double p[5 * PC_MAXDIM], x[2], o[8 * (PC_MAXDIM + 1)];
+    for (int i = 0; i < 2; i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
     pcl_point_rows(a, np, d, p);
     CHECK(pc_konop_scheme(kind, d, p, x, o));
     return pcl_push_packed(L, d, spec, o);
@@ -26,6 +27,7 @@ static int l_ed_scheme(lua_State *L) { return scheme(L, PC_KS_ED, "T1=h K=h T=h 
 static int l_five_scheme(lua_State *L) { return scheme(L, PC_KS_FIVE, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h"); }
 static int l_ceva_scheme(lua_State *L) { return scheme(L, PC_KS_CEVA, "M3=p M=p t3=n r=n"); }
 static int l_simplex_scheme(lua_State *L) { return scheme(L, PC_KS_SIMPLEX, "N=p M=p"); }
+static int l_foci(lua_State *L) { return scheme(L, PC_KS_FOCI, "p p n n"); }
 static int l_desargues_scheme(lua_State *L) {
     return scheme(L, PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n");
 }
@@ -52,16 +54,6 @@ static int l_cones_excluded(lua_State *L) {
 }
 
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
-
-static int l_foci(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double p[3 * PC_MAXDIM], f1[PC_MAXDIM], f2[PC_MAXDIM], e, fp;
-    pcl_point_rows(a, 3, d, p);
-    CHECK(pc_conic_foci(d, p, p + d, p + 2 * d, a[3].n == 1, f1, f2, &e, &fp));
-    return pcl_push_results(L, d, "p p n n", f1, f2, e, fp);
-}
 
 static int l_focal_point(lua_State *L) {
     pcl_val a[5] = {0};

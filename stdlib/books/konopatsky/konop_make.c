@@ -60,6 +60,7 @@ int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const
     case PC_KS_CEVA: return pc_conic_ceva_scheme(dim, a, b, c, x[0], x[1], out, out + 2 * dim, out + 2 * dim + 1);
     case PC_KS_SIMPLEX: return pc_oneratio_simplex_scheme(dim, a, b, c, x[0], out, out + dim);
     case PC_KS_DESARGUES: return pc_desargues_scheme(dim, a, b, c, d, x[0], out, out + 7 * (dim + 1));
+    case PC_KS_FOCI: return pc_conic_foci(dim, a, b, c, x[0] == 1, out, out + dim, out + 2 * dim, out + 2 * dim + 1);
     }
     return PC_EDOMAIN;
 }

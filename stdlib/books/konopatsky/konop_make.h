@@ -37,7 +37,8 @@ typedef enum {
     PC_KS_FIVE,        /* A, B, C, D, E; u -> S, U, V, M, U_B, U_D, R, U_E (homogeneous): §2.1.4 */
     PC_KS_CEVA,        /* A1, A2, A3; k, t -> M3, M (rows of dim), t3, r: (2.105) */
     PC_KS_SIMPLEX,     /* A, B, C; t -> N, M (rows of dim): Fig. 3.1 */
-    PC_KS_DESARGUES    /* A, B, C, D; t -> T, S, R, N, J, Q, M (homogeneous), pJ, qJ: Fig. 3.12 */
+    PC_KS_DESARGUES,   /* A, B, C, D; t -> T, S, R, N, J, Q, M (homogeneous), pJ, qJ: Fig. 3.12 */
+    PC_KS_FOCI         /* C, A, B; 0 ellipse or 1 hyperbola -> F1, F2 (rows of dim), e, p */
 } pc_konop_scheme_kind;
 
 /* How many points the scheme takes. */

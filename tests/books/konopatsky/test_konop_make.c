@@ -99,6 +99,15 @@ static void test_schemes(void **state) {
     NEAR(out[21], pq[0], 0);
     NEAR(out[22], pq[1], 0);
     NEAR(out[2], 0, 0);                                      /* T at infinity at t = 1/2 */
+    /* the ellipse of centre (0, 0), semi-axes 5 and 3: foci (+-4, 0), e = 4/5, p = 9/5 */
+    double cab[6] = {0, 0, 5, 0, 0, 3};
+    assert_int_equal(pc_konop_scheme(PC_KS_FOCI, 2, cab, (double[]){0}, out), PC_OK);
+    NEAR(fabs(out[0]), 4, 1e-14);
+    NEAR(out[0] + out[2], 0, 1e-14);
+    NEAR(out[4], 0.8, 1e-15);
+    NEAR(out[5], 1.8, 1e-14);
+    assert_int_equal(pc_konop_scheme(PC_KS_FOCI, 2, cab, (double[]){1}, out), PC_OK);   /* hyperbola */
+    NEAR(fabs(out[0]), sqrt(34), 1e-14);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_FIVE), 5);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_DESARGUES), 4);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_CEVA), 3);
