@@ -608,19 +608,13 @@ static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END}
 static int a_curve(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int n = a[1].n, st;
-    double p[128];
-    for (int j = 0; j < n; j++) {       /* the nodes (x_j, f(x_j)) at uniform t */
-        double x = a[1].list[j];
-        lua_pushvalue(L, 1);
-        lua_pushnumber(L, x);
-        lua_call(L, 1, 1);
-        int isnum;
-        p[2 * j] = x, p[2 * j + 1] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum || !isfinite(p[2 * j + 1])) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, x));
-        lua_pop(L, 1);
-    }
-    return MADE(pc_curve_interpolate(2, n, p, NULL, &st));
+    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){1});
+    int st, bad = 0;
+    pc_curve *c = pc_approx_curve(pcl_luafn_of, f, a[1].n, a[1].list, &bad, &st);
+    int failed = f->failed;   /* a kept error of f: raised by MADE */
+    pcl_luafn_free(f);
+    if (!c && st == PC_ENONFINITE && !failed) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, a[1].list[bad]));
+    return MADE(c);
 }
 
 /* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;

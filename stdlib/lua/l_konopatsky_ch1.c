@@ -33,7 +33,6 @@ static int k_o_theorem(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     int m = a[0].n, n = a[0].dim;
-    if (a[1].n != n) return pcl_fail(L, "argument #2 (D1) is %d-D, but the polygon is %d-D (mixed dimensions)", a[1].n, n);
     double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
     double d[2 * PC_MAXDIM];
     pcl_point_rows(a + 1, 2, n, d);
@@ -121,7 +120,8 @@ static int k_equation(lua_State *L) {
 #define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
 static const pcl_arg lambdas[] = {A_NUM("l1"), A_NUM("l2"), A_NUM("l3"), PCL_END};
 static const pcl_arg six[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), SAMEPT("B1"), SAMEPT("B2"), SAMEPT("B3"), PCL_END};
-static const pcl_arg o_args[] = {A_POINTS("polygon", 0, 3, 64), A_POINT("D1", 0), {.name = "D2", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, PCL_END};
+static const pcl_arg o_args[] = {{.name = "polygon", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 3, .hi = 64}, SAMEPT("D1"),
+                                 SAMEPT("D2"), PCL_END};
 static const pcl_arg rows_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
 static const pcl_arg lp_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("P1"), SAMEPT("P2"), SAMEPT("P3"), PCL_END};
 static const pcl_arg polar_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
