@@ -44,10 +44,7 @@ static int conic_of_curve(lua_State *L, pc_curve *c) {
     return 1;
 }
 
-static int c_conic(lua_State *L) {
-    pc_curve *c = pcl_read(L, NULL, 0);
-    return conic_of_curve(L, c);
-}
+static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)); }
 
 /* A tangent condition {P, V}: a 2-D point and a 2-D vector (the one weight rule) into
  * out->v[0..3]. */

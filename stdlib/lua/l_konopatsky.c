@@ -439,8 +439,7 @@ static int i_weights(lua_State *L) {
     CHECK(pc_lagrange_weights(n, a[0].list, t, w));
     for (int i = 0; i < n; i++)   /* a t far outside the nodes overflows the products */
         if (!isfinite(w[i])) return pcl_fail(L, "the weights are out of range (not finite) for t = %s", pcl_pushnum(L, t));
-    pcl_push_numbers(L, n, w);
-    return 1;
+    return pcl_push_results(L, 0, "N", n, w);
 }
 
 static int i_controls(lua_State *L) {
@@ -493,8 +492,7 @@ static int i_adaptive(lua_State *L) {
         return pcl_fail(L, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
                         "the nodes must be the order of the parameters)", axis);
     CHECK(st);
-    pcl_push_numbers(L, n, v);
-    return 1;
+    return pcl_push_results(L, 0, "N", n, v);
 }
 
 static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};
@@ -580,9 +578,7 @@ static int i_basis(lua_State *L) {
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
     CHECK(pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
-    lua_pushboolean(L, dev <= 1e-9);
-    lua_pushnumber(L, dev);
-    return 3;
+    return 1 + pcl_push_results(L, 0, "b n", dev <= 1e-9, dev);
 }
 
 static const pcl_arg r22_args[] = {A_POINTS("points", 0, 5, 5), PCL_END};
@@ -683,8 +679,7 @@ static int a_chebyshev(lua_State *L) {
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     double x[64];
     pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x);
-    pcl_push_numbers(L, (int)a[0].x, x);
-    return 1;
+    return pcl_push_results(L, 0, "N", (int)a[0].x, x);
 }
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
