@@ -20,7 +20,8 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     double coef[6];
     for (int i = 0; i < 6; i++) coef[i] = o->coef[i] + 0.0;   /* no -0 in the listing */
     if (o->central)
-        pcl_push_results(L, 2, COMMON " center=p semi=N a=o b=o", COMMON_OF(o), o->center, 2, o->semi, o->semi[0], o->semi[1]);
+        pcl_push_results(L, 2, COMMON " center=p semi=N a=o b=o", COMMON_OF(o), o->center, 2, o->semi, o->semi[0],
+                         o->semi[1]);
     else
         pcl_push_results(L, 2, COMMON " vertex=p", COMMON_OF(o), o->vertex);
     if (o->nasym) {
@@ -31,7 +32,8 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
 
 /* The message for a status of pc_curve_conic / pc_conic_info_*. */
 static int conic_error(lua_State *L, int st, int dim) {
-    if (st == PC_EDIM) return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
+    if (st == PC_EDIM)
+        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
     return pcl_check(L, st, pc_konop_why);
 }
 
@@ -99,7 +101,8 @@ static int l_slope(lua_State *L) {
     PCL_READ(L, a);
     double sl, v;
     int st = pc_conic_slope_on(q, a[1].v[0], a[1].v[1], &sl, &v);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
     if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
     return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
 }

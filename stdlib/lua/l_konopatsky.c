@@ -62,8 +62,8 @@ static int c_ceva(lua_State *L) { return made(L, PC_KM_CEVA); }
 static int c_ceva_k(lua_State *L) { return made(L, PC_KM_CEVA_K); }
 static int c_parabola(lua_State *L) { return made(L, PC_KM_PARABOLA); }
 
-static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN},
-                                        PCL_END};
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
+                                        {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN}, PCL_END};
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
@@ -318,11 +318,12 @@ static int o_double_contact(lua_State *L) {
     if (kq == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     if (kp == kq) return pcl_argfail(L, 5, "must be different from kp (else M is the conic P = Q)");
     int st, d = a[0].n;
+    const double *A = a[0].v, *B = a[1].v, *C = a[2].v;
     if (!a[5].present || a[5].n)   /* f(v) = v, or a constant */
-        return MADE(a[5].present ? pc_oneratio_double_contact_const(d, a[0].v, a[1].v, a[2].v, kp, kq, a[5].x, &st)
-                                 : pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, NULL, NULL, NULL, &st));
+        return MADE(a[5].present ? pc_oneratio_double_contact_const(d, A, B, C, kp, kq, a[5].x, &st)
+                                 : pc_oneratio_double_contact(d, A, B, C, kp, kq, NULL, NULL, NULL, &st));
     pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){6});
-    pc_curve *c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, pcl_luafn_blend, pcl_luafn_free, f, &st);
+    pc_curve *c = pc_oneratio_double_contact(d, A, B, C, kp, kq, pcl_luafn_blend, pcl_luafn_free, f, &st);
     if (!c) pcl_luafn_free(f);
     return MADE(c);
 }
@@ -609,7 +610,8 @@ static int a_curve(lua_State *L) {
     pc_curve *c = pc_approx_curve(pcl_luafn_of, f, a[1].n, a[1].list, &bad, &st);
     int failed = f->failed;   /* a kept error of f: raised by MADE */
     pcl_luafn_free(f);
-    if (!c && st == PC_ENONFINITE && !failed) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, a[1].list[bad]));
+    if (!c && st == PC_ENONFINITE && !failed)
+        return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, a[1].list[bad]));
     return MADE(c);
 }
 

@@ -25,8 +25,8 @@ static int k_area_theorem(lua_State *L) {
     pcl_point_rows(a, 6, n, p);
     pc_k_areas o;
     CHECK(pc_k_area_theorem(n, p, p + 3 * n, &o));
-    return pcl_push_results(L, 0, "k=n lambda=N a=n b=n c=n collinear=b", o.k, 3, o.lambda, o.abc[0], o.abc[1], o.abc[2],
-                            o.collinear);
+    return pcl_push_results(L, 0, "k=n lambda=N a=n b=n c=n collinear=b", o.k, 3, o.lambda, o.abc[0], o.abc[1],
+                            o.abc[2], o.collinear);
 }
 
 static int k_o_theorem(lua_State *L) {
@@ -49,7 +49,8 @@ static int k_simplex_ratio(lua_State *L) {
     int d, cols;
     pcl_read_rows(L, 1, 0, m, &d, &cols);
     if (d != cols || d < 2 || d > 9)
-        return pcl_argfail(L, 1, "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", d, cols);
+        return pcl_argfail(L, 1, "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", d,
+                           cols);
     double r;
     CHECK(pc_k_simplex_ratio(d - 1, m, &r));
     return pcl_push_results(L, 0, "n", r);
@@ -120,9 +121,10 @@ static int k_equation(lua_State *L) {
 #define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
 static const pcl_arg lambdas[] = {A_NUM("l1"), A_NUM("l2"), A_NUM("l3"), PCL_END};
 static const pcl_arg six[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), SAMEPT("B1"), SAMEPT("B2"), SAMEPT("B3"), PCL_END};
-static const pcl_arg o_args[] = {{.name = "polygon", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 3, .hi = 64}, SAMEPT("D1"),
-                                 SAMEPT("D2"), PCL_END};
-static const pcl_arg rows_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
+static const pcl_arg o_args[] = {{.name = "polygon", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 3, .hi = 64},
+                                 SAMEPT("D1"), SAMEPT("D2"), PCL_END};
+static const pcl_arg rows_args[] = {
+    {.name = "rows", .kind = PCL_TABLE, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
 static const pcl_arg lp_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("P1"), SAMEPT("P2"), SAMEPT("P3"), PCL_END};
 static const pcl_arg polar_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
 static const pcl_arg rotate_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"), PCL_END};

@@ -55,7 +55,8 @@ static int l_scheme(lua_State *L) {
         if (!names3(L, &nm, tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
     }
     lua_getfield(L, 1, "current");
-    if (!names3(L, &nm, cur)) return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
+    if (!names3(L, &nm, cur))
+        return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
     if (!known[cur[1]] || !known[cur[2]])
         return pcl_fail(L, "the current point's line current[2], current[3] must join two given points");
     int res = pc_triples_name(&nm, a[4].s);

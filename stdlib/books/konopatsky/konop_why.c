@@ -4,7 +4,8 @@
 #include <stddef.h>
 #include "konop_why.h"
 
-#define ANY_ARC "a function curve has no power-basis form (only Bezier and B-spline curves: build the equation as bezier{...} or with conic.*, oneratio.*, interp.*)"
+#define ANY_ARC "a function curve has no power-basis form (only Bezier and B-spline curves: build the equation " \
+    "as bezier{...} or with conic.*, oneratio.*, interp.*)"
 #define NO_MEET "a meet of the scheme is undefined at this parameter (its lines coincide)"
 
 const pc_why pc_konop_why[] = {
@@ -30,7 +31,8 @@ const pc_why pc_konop_why[] = {
     {"conic.ceva_scheme", PC_EDOMAIN, 4, NULL, "must not be 0"},
     {"conic.ceva_scheme", PC_EPOLE, -5, NULL, "the arc is at infinity at t = %s"},
     {"conic.ceva_scheme", PC_ECOLLINEAR, 0, NULL, "A1, A2, A3 are collinear"},
-    {"conic.foci", PC_EDOMAIN, 0, NULL, "CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()"},
+    {"conic.foci", PC_EDOMAIN, 0, NULL,
+     "CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()"},
     {"conic.foci", PC_ECOLLINEAR, 0, NULL, "a semi-axis is zero (A or B coincides with C)"},
     {"conic.focal_point", PC_EPOLE, -4, NULL, "phi = %s is an asymptote's direction (1 - e cos phi = 0)"},
     {"conic.focal_point", PC_ECOLLINEAR, 0, NULL, "a semi-axis is zero"},
@@ -56,7 +58,8 @@ const pc_why pc_konop_why[] = {
      "each Bi must lie on its side line (B1 on A1A2, B2 on A2A3, B3 on A3A1)"},
     {"konopatsky.o_theorem", PC_EDOMAIN, 0, NULL, "the line D1D2 passes through a vertex"},
     {"konopatsky.o_theorem", PC_ESKEW, 0, NULL, "the line D1D2 must lie in the polygon's plane and be no side line"},
-    {"konopatsky.o_theorem", PC_ESAME_LINE, 0, NULL, "the line D1D2 must lie in the polygon's plane and be no side line"},
+    {"konopatsky.o_theorem", PC_ESAME_LINE, 0, NULL,
+     "the line D1D2 must lie in the polygon's plane and be no side line"},
     {"konopatsky.simplex_ratio", PC_EDOMAIN, 0, NULL, "each row's parameters must sum to 1 (the membership condition)"},
     {"konopatsky.meet_line_plane", PC_ESAME_LINE, 0, NULL, "the line A1A2 lies in the plane P1P2P3: no single meet"},
     {"konopatsky.meet_line_plane", PC_ESKEW, 0, NULL,
@@ -68,7 +71,8 @@ const pc_why pc_konop_why[] = {
     {"konopatsky.equation", PC_EDOMAIN, 0, NULL, ANY_ARC},
     /* the conic a curve lies on (quadratic.h) */
     {"c:conic", PC_ENOTCOLLINEAR, 0, NULL, "the curve does not lie on one conic"},
-    {"c:conic", PC_ECOLLINEAR, 0, NULL, "the points are a straight line (a middle weight 0, or collinear points): no conic"},
+    {"c:conic", PC_ECOLLINEAR, 0, NULL,
+     "the points are a straight line (a middle weight 0, or collinear points): no conic"},
     {"c:conic", PC_EDOMAIN, 0, NULL, "a degenerate conic (a line pair, parallel lines, or no real points)"},
     {"conic.elements", PC_ENOTCOLLINEAR, 0, NULL, "the curve does not lie on one conic"},
     {"conic.elements", PC_ECOLLINEAR, 0, NULL,
