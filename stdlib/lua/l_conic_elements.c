@@ -174,13 +174,8 @@ static const pcl_fn method_fns[] = {
 void pcl_open_conic_elements(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
-    lua_getfield(L, -1, "curve_methods");
-    pcl_register(L, lua_gettop(L), method_fns, 0);
+    pcl_register_into(L, module + 1, "curve_methods", method_fns);
     lua_settop(L, module);
-    lua_getfield(L, module, "conic");
-    pcl_register(L, lua_gettop(L), conic_fns, 0);
-    lua_settop(L, module);
-    lua_getfield(L, module, "plane");
-    if (lua_istable(L, -1)) pcl_register(L, lua_gettop(L), plane_fns, 0);
-    lua_settop(L, module);
+    pcl_register_into(L, module, "conic", conic_fns);
+    pcl_register_into(L, module, "plane", plane_fns);
 }

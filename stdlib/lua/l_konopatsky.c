@@ -605,12 +605,10 @@ static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END}
 static int a_curve(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     int st, bad = 0;
-    pc_curve *c = pc_approx_curve(pcl_luafn_of, f, a[1].n, a[1].list, &bad, &st);
-    int failed = f->failed;   /* a kept error of f: raised by MADE */
-    pcl_luafn_free(f);
-    if (!c && st == PC_ENONFINITE && !failed)
+    pc_curve *c = pc_approx_curve(pcl_luafn_of, &f, a[1].n, a[1].list, &bad, &st);
+    if (!c && st == PC_ENONFINITE && !f.failed)   /* a kept error of f: raised by MADE */
         return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, a[1].list[bad]));
     return MADE(c);
 }
@@ -647,14 +645,11 @@ static int a_mse(lua_State *L) {
     PCL_READ(L, a);
     pc_mse_divisor dv;
     int m = samples(L, 3, &a[2], 1, 1000000, &dv);
-    pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
-    int st = pc_approx_mse(pcl_luafn_of, r, a[1].n, a[1].list, m, &mse);
-    pcl_luafn_free(r);
-    CHECK(st);
+    CHECK(pc_approx_mse(pcl_luafn_of, &f, a[1].n, a[1].list, m, &mse));
     if (pc_approx_rescale(mse, m, dv, &mse) != PC_OK) return pcl_fail(L, "the divisor m - 1 is 0 for m = 1");
-    lua_pushnumber(L, mse);
-    return 1;
+    return pcl_push_results(L, 0, "n", mse);
 }
 
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
@@ -665,11 +660,10 @@ static int a_optimal_nodes(lua_State *L) {
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     pc_mse_divisor dv;
     int m = samples(L, 5, &a[4], N, 100000, &dv);
-    pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     double x[16], mse;
-    int evals, st = pc_approx_optimal_nodes(pcl_luafn_of, r, a[1].x, a[2].x, N, m, x, &mse, &evals);
-    pcl_luafn_free(r);
-    CHECK(st);
+    int evals;
+    CHECK(pc_approx_optimal_nodes(pcl_luafn_of, &f, a[1].x, a[2].x, N, m, x, &mse, &evals));
     pc_approx_rescale(mse, m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
     return pcl_push_results(L, 0, "N n i", N, x, mse, evals);
 }
@@ -689,11 +683,9 @@ static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"
 static int a_lagrange_mse(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
-    pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
-    int st = pc_lagrange_mse_x(pcl_luafn_of, r, a[1].n, a[1].list, a[2].x, a[3].x, (int)a[4].x, &mse);
-    pcl_luafn_free(r);
-    CHECK(st);
+    CHECK(pc_lagrange_mse_x(pcl_luafn_of, &f, a[1].n, a[1].list, a[2].x, a[3].x, (int)a[4].x, &mse));
     return pcl_push_results(L, 0, "n", mse);
 }
 
@@ -705,12 +697,11 @@ static int a_nelder_mead(lua_State *L) {
     pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
     PCL_READ(L, a);
     int n = a[1].n, it;
-    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){1});
-    f->nargs = n;
+    pcl_luafn f = pcl_luafn_at(L, 1);
+    f.nargs = n;
     double fx;
-    int st = pc_nelder_mead(n, pcl_luafn_point, f, x, a[2].x, 1e-14, 1e-10, 20000, &fx, &it), failed = f->failed;
-    pcl_luafn_free(f);
-    if (failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
+    int st = pc_nelder_mead(n, pcl_luafn_point, &f, x, a[2].x, 1e-14, 1e-10, 20000, &fx, &it);
+    if (f.failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
     if (st != PC_ENOCONVERGE) CHECK(st);
     return pcl_push_results(L, 0, "N n i", n, x, fx, it);
 }

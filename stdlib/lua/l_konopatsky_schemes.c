@@ -118,10 +118,6 @@ static const pcl_fn oneratio_fns[] = {
 
 /* After pcl_open_konopatsky, with the module table on top. */
 void pcl_open_konopatsky_schemes(lua_State *L) {
-    lua_getfield(L, -1, "conic");
-    pcl_register(L, lua_gettop(L), conic_fns, 0);
-    lua_pop(L, 1);
-    lua_getfield(L, -1, "oneratio");
-    pcl_register(L, lua_gettop(L), oneratio_fns, 0);
-    lua_pop(L, 1);
+    pcl_register_into(L, lua_gettop(L), "conic", conic_fns);
+    pcl_register_into(L, lua_gettop(L), "oneratio", oneratio_fns);
 }

@@ -1,7 +1,7 @@
 /* The symbolic method of §2.2 in Lua (books/konopatsky/konop_triples.h): conic.scheme{...}. */
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_point.h"
 #include "konop_triples.h"
 
@@ -95,7 +95,5 @@ static const pcl_fn fns[] = {
 
 /* After pcl_open_konopatsky, with the module table on top. */
 void pcl_open_konopatsky_triples(lua_State *L) {
-    lua_getfield(L, -1, "conic");
-    pcl_register(L, lua_gettop(L), fns, 0);
-    lua_pop(L, 1);
+    pcl_register_into(L, lua_gettop(L), "conic", fns);
 }

@@ -110,12 +110,18 @@ int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
     return named ? 1 : count;
 }
 
+void pcl_register_into(lua_State *L, int t, const char *name, const pcl_fn *fns) {
+    if (lua_getfield(L, t, name) == LUA_TTABLE) pcl_register(L, lua_gettop(L), fns, 0);
+    lua_pop(L, 1);
+}
+
 pcl_luafn *pcl_luafn_new(lua_State *L, int n, const int *idx) {
     pcl_luafn *f = malloc(sizeof *f);
     if (!f) pcl_fail(L, "out of memory");
     f->n = n;
     f->nargs = 1;
     f->failed = 0;
+    f->stack = 0;
     f->fname = pcl_name(L);   /* the declaration's static string */
     for (int i = 0; i < n; i++) {
         lua_pushvalue(L, idx[i]);
@@ -123,6 +129,11 @@ pcl_luafn *pcl_luafn_new(lua_State *L, int n, const int *idx) {
     }
     pcl_callback_state(L);
     return f;
+}
+
+pcl_luafn pcl_luafn_at(lua_State *L, int idx) {
+    pcl_callback_state(L);
+    return (pcl_luafn){.n = 0, .nargs = 1, .stack = lua_absindex(L, idx), .fname = pcl_name(L)};
 }
 
 void pcl_luafn_free(void *ud) {
@@ -135,7 +146,8 @@ void pcl_luafn_free(void *ud) {
 
 double pcl_luafn_call(pcl_luafn *f, int which, int item, const char *what, int nargs, const double *x) {
     lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[which]);
+    if (f->stack) lua_pushvalue(L, f->stack);
+    else lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[which]);
     if (item > 0) {
         lua_geti(L, -1, item);
         lua_remove(L, -2);

@@ -25,15 +25,22 @@ int pcl_push_results(lua_State *L, int dim, const char *spec, ...);
 /* The same for values packed in order in v (p and v: dim numbers, h: dim + 1, n: one). */
 int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v);
 
+/* pcl_register into the table t[name] of the table t at index t (nothing when it is no table). */
+void pcl_register_into(lua_State *L, int t, const char *name, const pcl_fn *fns);
+
 /* References to Lua functions the core calls (callbacks, pcl.h): made of the values at the
  * stack indices idx[0..n-1] (at most 16), with the callback state set; freed by
  * pcl_luafn_free (a core destructor).  failed: how many calls raised (the error kept); nargs: the
  * numbers pcl_luafn_point passes (1 when made). */
 typedef struct {
     int n, nargs, failed, ref[16];
+    int stack;              /* pcl_luafn_at: the function's stack index, else 0 */
     const char *fname;      /* the declaration's name, for the messages */
 } pcl_luafn;
 pcl_luafn *pcl_luafn_new(lua_State *L, int n, const int *idx);
+/* The function at stack index idx for calls made while the binding runs (no reference, nothing
+ * to free), with the callback state set. */
+pcl_luafn pcl_luafn_at(lua_State *L, int idx);
 void pcl_luafn_free(void *f);
 /* Call function `which` (item > 0: element [item] of that table) with the nargs numbers x:
  * a number, or NaN with the error kept; what names it in a message (NULL: "the function"). */
