@@ -1,89 +1,40 @@
-/* Conics that know what they are (geom/quadratic.h) in Lua:
- *   c:conic()                              the conic a 2-D curve lies on
- *   conic.elements(c | A, B, C, D, E | {a, b, c, d, e, f} | {points =, tangents =})
- *   plane.conic_slope(coef, X)             dy/dx of an implicit conic at its point
- * both -> {kind, circle, discriminant, coef, center, vertex, axes, semi, a, b, foci, e, p,
- *          asymptotes, mu, w, k, k_ceva}
- * pcl_push_conic_info is shared with korotky.conic_elements. */
+/* Conics that know what they are (geom/quadratic.h) in Lua: c:conic(), conic.elements and
+ * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements. */
 #include <math.h>
 #include <string.h>
-#include "pcl.h"
-#include "pcl_curve.h"
-#include "pcl_point.h"
 #include "pcl_args.h"
 #include "pcl_books.h"
+#include "pcl_core.h"
+#include "pcl_point.h"
 #include "quadratic.h"
+#include "quadratic_on.h"
+#include "konop_why.h"
 
-static void setnum(lua_State *L, const char *k, double v) {
-    if (isnan(v)) return;     /* undefined for this conic: the field is absent */
-    lua_pushnumber(L, v + 0.0);
-    lua_setfield(L, -2, k);
-}
-
-static void setpair(lua_State *L, const char *k, const double v[2][2], int n, int point) {
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        if (point) pcl_pushpoint(L, 2, v[i]);
-        else pcl_pushvector(L, 2, v[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
-    lua_setfield(L, -2, k);
-}
+/* The fields of every conic, then those of a central one or of a parabola. */
+#define COMMON "kind=s circle=b discriminant=o coef=N axes=V foci=P e=o p=o mu=o w=o k=o k_ceva=o"
+#define COMMON_OF(o) kinds[(o)->kind], (o)->circle, (o)->disc, 6, coef, 2, &(o)->axis[0][0], (o)->nfoci, \
+    &(o)->focus[0][0], (o)->ecc, (o)->param, (o)->mu, (o)->w, (o)->k_ed, (o)->k_ceva
 
 void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
-    lua_createtable(L, 0, 20);
-    lua_pushstring(L, kinds[o->kind]);
-    lua_setfield(L, -2, "kind");
-    lua_pushboolean(L, o->circle);
-    lua_setfield(L, -2, "circle");
-    setnum(L, "discriminant", o->disc);
-    lua_createtable(L, 6, 0);
-    for (int i = 0; i < 6; i++) {
-        lua_pushnumber(L, o->coef[i] + 0.0);   /* no -0 in the listing */
-        lua_rawseti(L, -2, i + 1);
+    double coef[6];
+    for (int i = 0; i < 6; i++) coef[i] = o->coef[i] + 0.0;   /* no -0 in the listing */
+    if (o->central)
+        pcl_push_results(L, 2, COMMON " center=p semi=N a=o b=o", COMMON_OF(o), o->center, 2, o->semi, o->semi[0],
+                         o->semi[1]);
+    else
+        pcl_push_results(L, 2, COMMON " vertex=p", COMMON_OF(o), o->vertex);
+    if (o->nasym) {
+        pcl_push_results(L, 2, "V", 2, &o->asym[0][0]);
+        lua_setfield(L, -2, "asymptotes");
     }
-    lua_setfield(L, -2, "coef");
-    if (o->central) {
-        pcl_pushpoint(L, 2, o->center);
-        lua_setfield(L, -2, "center");
-        lua_createtable(L, 2, 0);
-        for (int i = 0; i < 2; i++) {
-            lua_pushnumber(L, o->semi[i]);
-            lua_rawseti(L, -2, i + 1);
-        }
-        lua_setfield(L, -2, "semi");
-        setnum(L, "a", o->semi[0]);
-        setnum(L, "b", o->semi[1]);
-    } else {
-        pcl_pushpoint(L, 2, o->vertex);
-        lua_setfield(L, -2, "vertex");
-    }
-    setpair(L, "axes", o->axis, 2, 0);
-    setpair(L, "foci", o->focus, o->nfoci, 1);
-    setnum(L, "e", o->ecc);
-    setnum(L, "p", o->param);
-    if (o->nasym) setpair(L, "asymptotes", o->asym, 2, 0);
-    setnum(L, "mu", o->mu);
-    setnum(L, "w", o->w);
-    setnum(L, "k", o->k_ed);
-    setnum(L, "k_ceva", o->k_ceva);
 }
 
 /* The message for a status of pc_curve_conic / pc_conic_info_*. */
 static int conic_error(lua_State *L, int st, int dim) {
-    switch (st) {
-    case PC_EDIM:
+    if (st == PC_EDIM)
         return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
-    case PC_ENOTCOLLINEAR:
-        return pcl_fail(L, "the curve does not lie on one conic");
-    case PC_ECOLLINEAR:
-        return pcl_fail(L, "the points are a straight line (a middle weight 0, or collinear points): no conic");
-    case PC_EDOMAIN:
-        return pcl_fail(L, "a degenerate conic (a line pair, parallel lines, or no real points)");
-    default:
-        return pcl_raise_status(L, pcl_name(L), st);
-    }
+    return pcl_check(L, st, pc_konop_why);
 }
 
 static int conic_of_curve(lua_State *L, pc_curve *c) {
@@ -95,10 +46,7 @@ static int conic_of_curve(lua_State *L, pc_curve *c) {
     return 1;
 }
 
-static int c_conic(lua_State *L) {
-    pc_curve *c = pcl_read(L, NULL, 0);
-    return conic_of_curve(L, c);
-}
+static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)); }
 
 /* A tangent condition {P, V}: a 2-D point and a 2-D vector (the one weight rule) into
  * out->v[0..3]. */
@@ -151,20 +99,12 @@ static int l_slope(lua_State *L) {
     double q[6];
     pcl_val a[2] = {{.list = q, .cap = 6}};
     PCL_READ(L, a);
-    const double *x = a[1].v;
-    double v = pc_conic_eq(q, x[0], x[1]), g = hypot(2 * q[0] * x[0] + q[1] * x[1] + q[3], q[1] * x[0] + 2 * q[2] * x[1] + q[4]);
-    if (fabs(v) > 1e-9 * fmax(g, 1) * fmax(1, hypot(x[0], x[1])))
+    double sl, v;
+    int st = pc_conic_slope_on(q, a[1].v[0], a[1].v[1], &sl, &v);
+    if (st == PC_EDOMAIN)
         return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
-    double sl;
-    int st = pc_conic_slope(q, x[0], x[1], &sl);
-    if (st == PC_EPOLE) {
-        lua_pushnumber(L, HUGE_VAL);   /* a vertical tangent */
-        return 1;
-    }
-    if (st == PC_EZERO) return pcl_fail(L, "X is a singular point of the curve (both partial derivatives are 0)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    lua_pushnumber(L, sl);
-    return 1;
+    if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
+    return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
 }
 
 static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
@@ -234,13 +174,8 @@ static const pcl_fn method_fns[] = {
 void pcl_open_conic_elements(lua_State *L) {
     int module = lua_gettop(L);
     pcl_private(L, module);
-    lua_getfield(L, -1, "curve_methods");
-    pcl_register(L, lua_gettop(L), method_fns, 0);
+    pcl_register_into(L, module + 1, "curve_methods", method_fns);
     lua_settop(L, module);
-    lua_getfield(L, module, "conic");
-    pcl_register(L, lua_gettop(L), conic_fns, 0);
-    lua_settop(L, module);
-    lua_getfield(L, module, "plane");
-    if (lua_istable(L, -1)) pcl_register(L, lua_gettop(L), plane_fns, 0);
-    lua_settop(L, module);
+    pcl_register_into(L, module, "conic", conic_fns);
+    pcl_register_into(L, module, "plane", plane_fns);
 }

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "conic.h"
@@ -15,67 +15,25 @@
 #include "oneratio.h"
 #include "konop_interp.h"
 #include "approx.h"
+#include "konop_why.h"
+#include "konop_make.h"
 
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
 #define MAXNODES (PC_CURVE_MAXDEG + 1)
-
-static void statuscheck(lua_State *L, int st) {
-    if (st) pcl_raise_status(L, pcl_name(L), st);
-}
+#define WHY pc_konop_why
+#define CHECK(st) pcl_check(L, (st), WHY)
+#define MADE(c) pcl_made(L, (c), &st, WHY)
 
 /* the params (argument #k), if given: one per point */
 static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
     if (v->present && v->n != n) pcl_fail(L, "argument #%d (params) must hold %d numbers (one per point), got %d", k, n, v->n);
 }
 
-/* ---- Lua functions called by the core ------------------------------------------------------ */
-
 /* A function, or a value with __call (pcl_callable). */
 #define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 #define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
-
-typedef struct { int ref[4]; int nref; const char *fname; } luaref;   /* fname: for messages */
-
-static void luaref_free(void *ud) {
-    luaref *r = ud;
-    lua_State *L = pcl_current_state();
-    if (L)
-        for (int i = 0; i < r->nref; i++) luaL_unref(L, LUA_REGISTRYINDEX, r->ref[i]);
-    free(r);
-}
-
-/* call function r->ref[which] with x; a number, or NaN with the error kept (located at the
- * user's line and naming the function that called it, as every message is) */
-static double call1(const luaref *r, int which, double x) {
-    lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref[which]);
-    lua_pushnumber(L, x);
-    double y;
-    return pcl_call_number(L, 1, r->fname, "the function", &y) == PC_OK ? y : NAN;
-}
-
-static double scalar_cb(double x, void *ud) { return call1(ud, 0, x); }
-static double blend_cb(void *ud, double v) { return call1(ud, 0, v); }
-static double real_cb(void *ud, int which, double t) {
-    luaref *r = ud;
-    return which < r->nref ? call1(r, which, t) : NAN;
-}
-
-/* references to the functions at the stack indices idx[0..n-1]; the callback state set */
-static luaref *newref(lua_State *L, int n, const int *idx) {
-    luaref *r = malloc(sizeof *r);
-    if (!r) pcl_fail(L, "out of memory");
-    r->nref = n;
-    r->fname = pcl_name(L);   /* the declaration's static string */
-    for (int i = 0; i < n; i++) {
-        lua_pushvalue(L, idx[i]);
-        r->ref[i] = luaL_ref(L, LUA_REGISTRYINDEX);
-    }
-    pcl_callback_state(L);
-    return r;
-}
 
 /* ==== conic ================================================================================= */
 
@@ -84,66 +42,28 @@ static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END}
 static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
-static int c_ed(lua_State *L) {
-    pcl_val a[4] = {0};
+
+/* A construction of pc_konop_make or pc_konop_number: the declared points, then the numbers. */
+static int made(lua_State *L, pc_konop_kind kind) {
+    pcl_val a[6] = {0};
     PCL_READ(L, a);
-    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number (k = 0 collapses the arc to C), got 0");
-    int st;
-    return pcl_push_made(L, pc_conic_ed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
+    int np = pc_konop_npoints(kind), d = a[0].n, st;
+    double p[4 * PC_MAXDIM], x[2] = {a[np].x, a[np + 1].x}, k;
+    pcl_point_rows(a, np, d, p);
+    if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
+    CHECK(pc_konop_number(kind, d, p, &k));
+    return pcl_push_results(L, 0, "n", k);
 }
 
-static int c_ed_k(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    double k;
-    int st = pc_conic_ed_k(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &k);
-    if (st == PC_ENOTCOLLINEAR) return pcl_argfail(L, 4, "must lie on the median from C to the midpoint of AB");
-    statuscheck(L, st);
-    lua_pushnumber(L, k);
-    return 1;
-}
+static int c_ed(lua_State *L) { return made(L, PC_KM_ED); }
+static int c_ed_k(lua_State *L) { return made(L, PC_KM_ED_K); }
+static int c_circle_k(lua_State *L) { return made(L, PC_KM_CIRCLE_K); }
+static int c_ceva(lua_State *L) { return made(L, PC_KM_CEVA); }
+static int c_ceva_k(lua_State *L) { return made(L, PC_KM_CEVA_K); }
+static int c_parabola(lua_State *L) { return made(L, PC_KM_PARABOLA); }
 
-static int c_circle_k(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    double k;
-    int st = pc_conic_ed_circle_k(a[0].n, a[0].v, a[1].v, a[2].v, &k);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "|CA| must equal |CB| (tangents from C to a circle)");
-    statuscheck(L, st);
-    lua_pushnumber(L, k);
-    return 1;
-}
-
-static int c_ceva(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
-    int st;
-    return pcl_push_made(L, pc_conic_ceva(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
-}
-
-static int c_ceva_k(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    double k;
-    int st = pc_conic_ceva_k(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &k);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the cevians through K must meet the sides A2A3 and A3A1 at finite points other than A3");
-    statuscheck(L, st);
-    lua_pushnumber(L, k);
-    return 1;
-}
-
-static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-static int c_parabola(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st, d = a[0].n;
-    if (!a[3].present) return pcl_push_made(L, pc_conic_parabola(d, a[0].v, a[1].v, a[2].v, &st), &st, NULL);
-    if (!(a[3].x > 0 && a[3].x < 1)) return pcl_argfail(L, 4, "must be a number in (0, 1), got %s", pcl_shown(L, 4));
-    /* (2.62): A, C, B = arguments 1, 2, 3 with C reached at tC */
-    return pcl_push_made(L, pc_conic_parabola3(d, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
-}
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
+                                        {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN}, PCL_END};
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
@@ -166,7 +86,7 @@ static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, cons
             pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r0), pcl_pushnum(L, r1));
         pcl_fail(L, "the points or parameters are outside the form's conditions (see :help %s)", pcl_name(L));
     }
-    return pcl_push_made(L, c, &st, NULL);
+    return MADE(c);
 }
 
 static void need_point(lua_State *L, const pcl_val *v, const char *key) {
@@ -188,10 +108,10 @@ static int c_ellipse(lua_State *L) {
         need_point(L, &a[7], "K");
         if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
             return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
-        return pcl_push_made(L, pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st), &st, NULL);
+        return MADE(pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st));
     }
     need_point(L, &a[1], "C");
-    if (by == 5) return pcl_push_made(L, pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
+    if (by == 5) return MADE(pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st));
     return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
 }
 
@@ -217,10 +137,8 @@ static int c_circle(lua_State *L) {
     if (a[6].present) return kcurve_from(L, a, PC_KC_CIRCLE_RADIUS, &a[6].x, 1);
     /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
     double k;
-    int st = pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "|CA| must equal |CB| for the arc (or give delta or R)");
-    statuscheck(L, st);
-    return pcl_push_made(L, pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st), &st, NULL);
+    int st = CHECK(pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k));
+    return MADE(pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st));
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
@@ -229,16 +147,10 @@ static int c_tilted(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, st;
     double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
-    statuscheck(L, pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
-    statuscheck(L, pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
-    pcl_push_made(L, pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st), &st, NULL);
-    pcl_pushpoint(L, d, P);
-    pcl_pushpoint(L, d, Q);
-    if (K[d] == 0) pcl_pushvector(L, d, K);   /* theta = 0: CP parallel to AB */
-    else pcl_pushpoint(L, d, K);
-    pcl_pushpoint(L, d, Ar);
-    lua_pushnumber(L, tau);
-    return 6;
+    CHECK(pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
+    CHECK(pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
+    MADE(pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st));
+    return 1 + pcl_push_results(L, d, "p p h p n", P, Q, K, Ar, tau);   /* K: a vector at theta = 0 */
 }
 
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
@@ -248,22 +160,14 @@ static int c_five_points(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n;
     double u[5];
-    int st = pc_conic_five_points_params(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "the five points must lie in one plane with no three of them collinear");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "A, B and C must not be collinear");
-    statuscheck(L, st);
+    int st = CHECK(pc_conic_five_points_params(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u));
     double u0, u1;
     pc_conic_five_points_span(u, &u0, &u1);
     if (a[6].present) u0 = a[6].x;
     if (a[7].present) u1 = a[7].x;
     if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
-    pcl_push_made(L, pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st), &st, NULL);
-    lua_createtable(L, 0, 5);
-    for (int i = 0; i < 5; i++) {
-        lua_pushnumber(L, u[i]);
-        lua_setfield(L, -2, (const char[]){(char)('A' + i), 0});
-    }
-    return 2;
+    MADE(pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st));
+    return 1 + pcl_push_results(L, 0, "A=n B=n C=n D=n E=n", u[0], u[1], u[2], u[3], u[4]);
 }
 
 #define REQNUM(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_REQ}
@@ -277,7 +181,7 @@ static int c_five_points2(lua_State *L) {
     if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
         return pcl_fail(L, "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)");
     int st;
-    return pcl_push_made(L, pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st), &st, NULL);
+    return MADE(pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st));
 }
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
@@ -287,9 +191,7 @@ static int c_triples(lua_State *L) {
     PCL_READ(L, a);
     if (!(a[6].x > a[5].x)) return pcl_argfail(L, 7, "must be greater than t0");
     int st;
-    pc_curve *c = pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st);
-    if (!c && st == PC_EDOMAIN) return pcl_fail(L, "the lines A2A3 and A4A5 must meet");
-    return pcl_push_made(L, c, &st, NULL);
+    return MADE(pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st));
 }
 
 static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
@@ -299,14 +201,11 @@ static int c_redundant(lua_State *L) {
     PCL_READ(L, a);
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
-        return pcl_push_made(L, pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st), &st, NULL);
+        return MADE(pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st));
     if (!a[3].present || !a[4].present) return pcl_argfail(L, a[3].present ? 5 : 4, "must be a finite number, got nil");
     double K[PC_MAXDIM];
-    st = pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K);
-    if (st == PC_EPOLE) return pcl_fail(L, "u = 0 and v = 1 make both lines AB: K is undefined");
-    statuscheck(L, st);
-    pcl_pushpoint(L, d, K);
-    return 1;
+    CHECK(pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K));
+    return pcl_push_results(L, d, "p", K);
 }
 
 static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
@@ -367,9 +266,7 @@ static int c_cones(lua_State *L) {
     for (int k = 4; k < 6; k++)
         if (!(a[k].x > 0 && a[k].x < 1)) return pcl_argfail(L, k + 1, "must be a number in (0, 1), got %s", pcl_shown(L, k + 1));
     if (a[6].x == 0 || a[6].x == 1) return pcl_argfail(L, 7, "must be a number other than 0 and 1, got %s", pcl_shown(L, 7));
-    pc_curve *c = pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st);
-    if (!c && st == PC_ECOLLINEAR) return pcl_fail(L, "A, B, C, D must span a tetrahedron");
-    return pcl_push_made(L, c, &st, NULL);
+    return MADE(pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st));
 }
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
@@ -379,10 +276,10 @@ static int c_contour(lua_State *L) {
     PCL_READ(L, a);
     int has_d = a[5].present, st;
     if (has_d && !a[6].present) return pcl_argfail(L, 7, "must be a function of t (with du), got nil");
-    luaref *r = newref(L, has_d ? 4 : 2, (int[]){4, 5, 6, 7});
-    pc_curve *c = pc_contour_arc(a[0].n, a[0].v, a[1].v, a[2].v, real_cb, has_d, luaref_free, r, &st);
-    if (!c) luaref_free(r);
-    return pcl_push_made(L, c, &st, NULL);
+    pcl_luafn *r = pcl_luafn_new(L, has_d ? 4 : 2, (int[]){4, 5, 6, 7});
+    pc_curve *c = pc_contour_arc(a[0].n, a[0].v, a[1].v, a[2].v, pcl_luafn_which, has_d, pcl_luafn_free, r, &st);
+    if (!c) pcl_luafn_free(r);
+    return MADE(c);
 }
 
 /* ==== oneratio ============================================================================== */
@@ -391,53 +288,18 @@ static const pcl_arg abcd_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), PCL_END}
 static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is the receiver */
     pcl_val a[3] = {0};
     PCL_READ(L, a);
-    int st;
-    pc_curve *c = pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st);
-    if (!c) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushcurve(L, c, "oneratio.simplex");   /* the one kind, however it was called */
-    return 1;
+    int st;   /* the one kind, however it was called */
+    return pcl_push_made(L, pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st), &st, "oneratio.simplex");
 }
 
-static int o_tetra(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return pcl_push_made(L, pc_oneratio_tetra(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
-}
+static int o_tetra(lua_State *L) { return made(L, PC_KM_TETRA); }
+static int o_bezier3(lua_State *L) { return made(L, PC_KM_BEZIER3); }
+static int o_smooth(lua_State *L) { return made(L, PC_KM_SMOOTH); }
+static int o_desargues(lua_State *L) { return made(L, PC_KM_DESARGUES); }
 
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
-static int o_bezier3(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n, st;
-    double cp[4 * (PC_MAXDIM + 1)];
-    for (int i = 0; i < 4; i++) {      /* (3.4) with the corrected t' powers */
-        memcpy(cp + i * (d + 1), a[i].v, sizeof(double) * (size_t)d);
-        cp[i * (d + 1) + d] = 1;
-    }
-    return pcl_push_made(L, pc_curve_bezier(d, 4, cp, &st), &st, NULL);
-}
-
 static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
-static int o_smooth(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return pcl_push_made(L, pc_oneratio_smooth(a[0].n, a[0].v, a[1].v, a[2].v, (int)a[3].x, &st), &st, NULL);
-}
-
-static int o_desargues(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int st;
-    return pcl_push_made(L, pc_oneratio_desargues(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, NULL);
-}
-
-static double const_blend(void *ud, double v) {
-    (void)v;
-    return *(double *)ud;
-}
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -456,22 +318,14 @@ static int o_double_contact(lua_State *L) {
     if (kq == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     if (kp == kq) return pcl_argfail(L, 5, "must be different from kp (else M is the conic P = Q)");
     int st, d = a[0].n;
-    pc_curve *c;
-    pcl_callback_state(L);
-    if (!a[5].present) {
-        c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, NULL, NULL, NULL, &st);
-    } else if (a[5].n) {
-        double *f = malloc(sizeof *f);
-        if (!f) return pcl_fail(L, "out of memory");
-        *f = a[5].x;
-        c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, const_blend, free, f, &st);
-        if (!c) free(f);
-    } else {
-        luaref *r = newref(L, 1, (int[]){6});
-        c = pc_oneratio_double_contact(d, a[0].v, a[1].v, a[2].v, kp, kq, blend_cb, luaref_free, r, &st);
-        if (!c) luaref_free(r);
-    }
-    return pcl_push_made(L, c, &st, NULL);
+    const double *A = a[0].v, *B = a[1].v, *C = a[2].v;
+    if (!a[5].present || a[5].n)   /* f(v) = v, or a constant */
+        return MADE(a[5].present ? pc_oneratio_double_contact_const(d, A, B, C, kp, kq, a[5].x, &st)
+                                 : pc_oneratio_double_contact(d, A, B, C, kp, kq, NULL, NULL, NULL, &st));
+    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){6});
+    pc_curve *c = pc_oneratio_double_contact(d, A, B, C, kp, kq, pcl_luafn_blend, pcl_luafn_free, f, &st);
+    if (!c) pcl_luafn_free(f);
+    return MADE(c);
 }
 
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
@@ -482,34 +336,10 @@ static int o_closed(lua_State *L) {
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     int st;
-    return pcl_push_made(L, pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st), &st, NULL);
+    return MADE(pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st));
 }
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
-
-/* a homogeneous row: the point, or the direction (a vector) where its weight is 0 */
-static void push_h(lua_State *L, int dim, const double *h) {
-    double x[PC_MAXDIM];
-    int inf = fabs(h[dim]) <= 1e-12;
-    for (int k = 0; k < dim; k++) x[k] = inf ? h[k] : h[k] / h[dim];
-    if (inf) pcl_pushvector(L, dim, x);
-    else pcl_pushpoint(L, dim, x);
-}
-
-static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
-static int o_simplex_scheme(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double N[PC_MAXDIM], M[PC_MAXDIM];
-    statuscheck(L, pc_oneratio_simplex_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, N, M));
-    lua_createtable(L, 0, 2);
-    pcl_pushpoint(L, d, N);
-    lua_setfield(L, -2, "N");
-    pcl_pushpoint(L, d, M);
-    lua_setfield(L, -2, "M");
-    return 1;
-}
 
 static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
 static int o_levels(lua_State *L) {
@@ -517,38 +347,14 @@ static int o_levels(lua_State *L) {
     pcl_val a[2] = {{.list = p, .cap = 16 * PC_MAXDIM}};
     PCL_READ(L, a);
     int n = a[0].n, d = a[0].dim;
-    statuscheck(L, pc_decasteljau_levels(d, n, p, a[1].x, out));
+    CHECK(pc_decasteljau_levels(d, n, p, a[1].x, out));
     lua_createtable(L, n - 1, 0);
     const double *row = out;
     for (int level = 1; level < n; level++) {
-        lua_createtable(L, n - level, 0);
-        for (int i = 0; i < n - level; i++) {
-            pcl_pushpoint(L, d, row + i * d);
-            lua_rawseti(L, -2, i + 1);
-        }
+        pcl_push_values(L, n - level, d, row, 0);
         lua_rawseti(L, -2, level);
         row += (n - level) * d;
     }
-    return 1;
-}
-
-static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
-static int o_desargues_scheme(lua_State *L) {
-    static const char *names[7] = {"T", "S", "R", "N", "J", "Q", "M"};
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double h[7 * (PC_MAXDIM + 1)], pq[2];
-    statuscheck(L, pc_desargues_scheme(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, h, pq));
-    lua_createtable(L, 0, 9);
-    for (int i = 0; i < 7; i++) {
-        push_h(L, d, h + i * (d + 1));
-        lua_setfield(L, -2, names[i]);
-    }
-    lua_pushnumber(L, pq[0]);
-    lua_setfield(L, -2, "pJ");
-    lua_pushnumber(L, pq[1]);
-    lua_setfield(L, -2, "qJ");
     return 1;
 }
 
@@ -560,17 +366,14 @@ static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES),
 /* the interpolation curve through a[0] at the parameters a[1] (uniform when absent) */
 static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
     need_count(L, 2, &a[1], a[0].n);
-    pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, st);
-    if (!c && *st == PC_ECOINCIDENT) pcl_argfail(L, 2, "must be distinct");
-    return c;
+    return pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, st);
 }
 
 static int i_lagrange(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     int st;
-    pc_curve *c = interpolate(L, a, &st);
-    return pcl_push_made(L, c, &st, NULL);
+    return MADE(interpolate(L, a, &st));
 }
 
 /* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
@@ -603,9 +406,7 @@ static const pcl_arg weights_args[] = {{.name = "n", .kind = PCL_ANY, .read = re
  * prints, phi_j = c0 + c1 t + c2 t^2 + ..., terms of zero coefficient left out */
 static int weight_equations(lua_State *L, int n, const double *u) {
     double coef[MAXNODES * MAXNODES];
-    int st = pc_lagrange_weight_coefs(n, u, coef);
-    if (st == PC_ECOINCIDENT) return pcl_fail(L, "argument #1 (params) must be distinct");
-    statuscheck(L, st);
+    CHECK(pc_lagrange_weight_coefs(n, u, coef));
     lua_createtable(L, n, 0);
     for (int j = 0; j < n; j++) {
         int any = 0;
@@ -636,40 +437,25 @@ static int i_weights(lua_State *L) {
     int n = a[0].n;
     if (a[1].n) return weight_equations(L, n, a[0].list);
     double t = a[1].x, w[MAXNODES];
-    int st = pc_lagrange_weights(n, a[0].list, t, w);
-    if (st == PC_ECOINCIDENT) return pcl_fail(L, "argument #1 (params) must be distinct");
-    statuscheck(L, st);
+    CHECK(pc_lagrange_weights(n, a[0].list, t, w));
     for (int i = 0; i < n; i++)   /* a t far outside the nodes overflows the products */
         if (!isfinite(w[i])) return pcl_fail(L, "the weights are out of range (not finite) for t = %s", pcl_pushnum(L, t));
-    pcl_push_numbers(L, n, w);
-    return 1;
+    return pcl_push_results(L, 0, "N", n, w);
 }
 
 static int i_controls(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int st, d = a[0].dim;
+    int st;
     pc_curve *c = interpolate(L, a, &st);
-    if (!c) return pcl_raise_status(L, pcl_name(L), st);
-    lua_createtable(L, c->ncp, 0);
-    for (int i = 0; i < c->ncp; i++) {
-        double x[PC_MAXDIM];
-        pc_normalize(d, c->cp + i * (d + 1), x);
-        pcl_pushpoint(L, d, x);
-        lua_rawseti(L, -2, i + 1);
-    }
+    if (!c) return CHECK(st);
+    pcl_push_values(L, c->ncp, a[0].dim, c->cp, 1);   /* a polynomial curve: weights 1 */
     pc_curve_release(c);
     return 1;
 }
 
 static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
-static int i_conic(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    if (a[3].x == 0 || a[3].x == 1) return pcl_argfail(L, 4, "must be a number other than 0 and 1, got %s", pcl_shown(L, 4));
-    int st;
-    return pcl_push_made(L, pc_conic_ed3(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, &st), &st, NULL);
-}
+static int i_conic(lua_State *L) { return made(L, PC_KM_ED3); }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
@@ -690,7 +476,7 @@ static int i_arc(lua_State *L) {
     need_count(L, k, u, n);
     pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
     if (!c && st == PC_EDOMAIN && u->present) return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
-    return pcl_push_made(L, c, &st, NULL);
+    return MADE(c);
 }
 
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
@@ -706,9 +492,8 @@ static int i_adaptive(lua_State *L) {
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
                         "the nodes must be the order of the parameters)", axis);
-    statuscheck(L, st);
-    pcl_push_numbers(L, n, v);
-    return 1;
+    CHECK(st);
+    return pcl_push_results(L, 0, "N", n, v);
 }
 
 static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};
@@ -739,37 +524,19 @@ static int i_prototype(lua_State *L) {
         if (!(t1 > t0)) return pcl_fail(L, "argument #%d (t1) must be greater than t0", next + 1);
     }
     int st;
-    pc_curve *c = pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st);
-    if (!c && st == PC_ESINGULAR) return pcl_fail(L, "the exponents must be distinct (singular system)");
-    return pcl_push_made(L, c, &st, NULL);
+    return MADE(pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st));
 }
 
-/* interp.basis{g1, g2, ...}: Lua prototypes */
-typedef struct { int ref; const char *fname; } basisref;   /* fname: for messages */
-
+/* interp.basis{g1, g2, ...}: Lua prototypes, the elements of the table (function 0) */
 static int basis_cb(void *ud, double t, int n, double *g) {
-    const basisref *r = ud;
-    lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);
-    for (int i = 0; i < n; i++) {
+    pcl_luafn *f = ud;
+    for (int i = 0, failed = f->failed; i < n; i++) {
         char what[40];
         snprintf(what, sizeof what, "the basis function [%d]", i + 1);
-        lua_geti(L, -1, i + 1);
-        lua_pushnumber(L, t);
-        int st = pcl_call_number(L, 1, r->fname, what, &g[i]);
-        if (st != PC_OK) {
-            lua_pop(L, 1);   /* the basis */
-            return st;
-        }
+        g[i] = pcl_luafn_call(f, 0, i + 1, what, 1, &t);
+        if (f->failed > failed) return PC_EARG;
     }
-    lua_pop(L, 1);
     return PC_OK;
-}
-
-static void basisref_free(void *ud) {
-    lua_State *L = pcl_current_state();
-    if (L) luaL_unref(L, LUA_REGISTRYINDEX, ((basisref *)ud)->ref);
-    free(ud);
 }
 
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
@@ -804,25 +571,15 @@ static int i_basis(lua_State *L) {
         t0 = a[3].x, t1 = a[4].x;
     }
     if (!(t1 > t0)) return pcl_fail(L, "the parameter range must not be empty");
-    basisref *r = malloc(sizeof *r);
-    if (!r) return pcl_fail(L, "out of memory");
-    lua_pushvalue(L, 1);
-    r->ref = luaL_ref(L, LUA_REGISTRYINDEX);
-    r->fname = pcl_name(L);
+    pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
     int st;
-    pcl_callback_state(L);
-    pc_curve *c = pc_interp_basis(d, n, a[1].list, u, basis_cb, basisref_free, r, t0, t1, &st);
-    if (!c) {
-        basisref_free(r);
-        if (st == PC_ESINGULAR) return pcl_fail(L, "the collocation matrix g_i(t_j) is singular");
-    }
-    pcl_push_made(L, c, &st, NULL);
+    pc_curve *c = pc_interp_basis(d, n, a[1].list, u, basis_cb, pcl_luafn_free, r, t0, t1, &st);
+    if (!c) pcl_luafn_free(r);
+    MADE(c);
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
-    statuscheck(L, pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
-    lua_pushboolean(L, dev <= 1e-9);
-    lua_pushnumber(L, dev);
-    return 3;
+    CHECK(pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
+    return 1 + pcl_push_results(L, 0, "b n", dev <= 1e-9, dev);
 }
 
 static const pcl_arg r22_args[] = {A_POINTS("points", 0, 5, 5), PCL_END};
@@ -831,9 +588,7 @@ static int i_rational22(lua_State *L) {
     PCL_READ(L, a);
     int st, d = a[0].dim;
     double co[5 * PC_MAXDIM];
-    pc_curve *c = pc_interp_rational22(d, a[0].list, co, &st);
-    if (!c && st == PC_ESINGULAR) return pcl_fail(L, "a coordinate has no rational (2,2) fit");
-    pcl_push_made(L, c, &st, NULL);
+    MADE(pc_interp_rational22(d, a[0].list, co, &st));
     lua_createtable(L, d, 0);
     for (int k = 0; k < d; k++) {
         pcl_push_numbers(L, 5, co + 5 * k);
@@ -850,19 +605,12 @@ static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END}
 static int a_curve(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    int n = a[1].n, st;
-    double p[128];
-    for (int j = 0; j < n; j++) {       /* the nodes (x_j, f(x_j)) at uniform t */
-        double x = a[1].list[j];
-        lua_pushvalue(L, 1);
-        lua_pushnumber(L, x);
-        lua_call(L, 1, 1);
-        int isnum;
-        p[2 * j] = x, p[2 * j + 1] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum || !isfinite(p[2 * j + 1])) return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, x));
-        lua_pop(L, 1);
-    }
-    return pcl_push_made(L, pc_curve_interpolate(2, n, p, NULL, &st), &st, NULL);
+    pcl_luafn f = pcl_luafn_at(L, 1);
+    int st, bad = 0;
+    pc_curve *c = pc_approx_curve(pcl_luafn_of, &f, a[1].n, a[1].list, &bad, &st);
+    if (!c && st == PC_ENONFINITE && !f.failed)   /* a kept error of f: raised by MADE */
+        return pcl_fail(L, "f(%s) must be a finite number", pcl_pushnum(L, a[1].list[bad]));
+    return MADE(c);
 }
 
 /* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
@@ -897,14 +645,11 @@ static int a_mse(lua_State *L) {
     PCL_READ(L, a);
     pc_mse_divisor dv;
     int m = samples(L, 3, &a[2], 1, 1000000, &dv);
-    luaref *r = newref(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
-    int st = pc_approx_mse(scalar_cb, r, a[1].n, a[1].list, m, &mse);
-    luaref_free(r);
-    statuscheck(L, st);
+    CHECK(pc_approx_mse(pcl_luafn_of, &f, a[1].n, a[1].list, m, &mse));
     if (pc_approx_rescale(mse, m, dv, &mse) != PC_OK) return pcl_fail(L, "the divisor m - 1 is 0 for m = 1");
-    lua_pushnumber(L, mse);
-    return 1;
+    return pcl_push_results(L, 0, "n", mse);
 }
 
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
@@ -915,16 +660,12 @@ static int a_optimal_nodes(lua_State *L) {
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     pc_mse_divisor dv;
     int m = samples(L, 5, &a[4], N, 100000, &dv);
-    luaref *r = newref(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     double x[16], mse;
-    int evals, st = pc_approx_optimal_nodes(scalar_cb, r, a[1].x, a[2].x, N, m, x, &mse, &evals);
-    luaref_free(r);
-    statuscheck(L, st);
+    int evals;
+    CHECK(pc_approx_optimal_nodes(pcl_luafn_of, &f, a[1].x, a[2].x, N, m, x, &mse, &evals));
     pc_approx_rescale(mse, m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
-    pcl_push_numbers(L, N, x);
-    lua_pushnumber(L, mse);
-    lua_pushinteger(L, evals);
-    return 3;
+    return pcl_push_results(L, 0, "N n i", N, x, mse, evals);
 }
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
@@ -934,8 +675,7 @@ static int a_chebyshev(lua_State *L) {
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     double x[64];
     pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x);
-    pcl_push_numbers(L, (int)a[0].x, x);
-    return 1;
+    return pcl_push_results(L, 0, "N", (int)a[0].x, x);
 }
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
@@ -943,51 +683,27 @@ static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"
 static int a_lagrange_mse(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
-    luaref *r = newref(L, 1, (int[]){1});
+    pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
-    int st = pc_lagrange_mse_x(scalar_cb, r, a[1].n, a[1].list, a[2].x, a[3].x, (int)a[4].x, &mse);
-    luaref_free(r);
-    if (st == PC_ECOINCIDENT) return pcl_argfail(L, 2, "must be distinct");
-    statuscheck(L, st);
-    lua_pushnumber(L, mse);
-    return 1;
+    CHECK(pc_lagrange_mse_x(pcl_luafn_of, &f, a[1].n, a[1].list, a[2].x, a[3].x, (int)a[4].x, &mse));
+    return pcl_push_results(L, 0, "n", mse);
 }
 
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
-typedef struct { int ref, n, failed; const char *fname; } nmref;
-
-static double nm_cb(void *ud, const double *x) {
-    nmref *r = ud;
-    lua_State *L = pcl_current_state();
-    lua_rawgeti(L, LUA_REGISTRYINDEX, r->ref);
-    for (int i = 0; i < r->n; i++) lua_pushnumber(L, x[i]);
-    double y;
-    if (pcl_call_number(L, r->n, r->fname, "the function", &y) == PC_OK) return y;
-    r->failed = 1;
-    return NAN;
-}
-
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
     {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
 static int a_nelder_mead(lua_State *L) {
     double x[32];
     pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
     PCL_READ(L, a);
-    int n = a[1].n;
-    nmref r = {0, n, 0, pcl_name(L)};
-    lua_pushvalue(L, 1);
-    r.ref = luaL_ref(L, LUA_REGISTRYINDEX);
-    pcl_callback_state(L);
+    int n = a[1].n, it;
+    pcl_luafn f = pcl_luafn_at(L, 1);
+    f.nargs = n;
     double fx;
-    int it;
-    int st = pc_nelder_mead(n, nm_cb, &r, x, a[2].x, 1e-14, 1e-10, 20000, &fx, &it);
-    luaL_unref(L, LUA_REGISTRYINDEX, r.ref);
-    if (r.failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
-    if (st != PC_OK && st != PC_ENOCONVERGE) pcl_raise_status(L, pcl_name(L), st);
-    pcl_push_numbers(L, n, x);
-    lua_pushnumber(L, fx);
-    lua_pushinteger(L, it);
-    return 3;
+    int st = pc_nelder_mead(n, pcl_luafn_point, &f, x, a[2].x, 1e-14, 1e-10, 20000, &fx, &it);
+    if (f.failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
+    if (st != PC_ENOCONVERGE) CHECK(st);
+    return pcl_push_results(L, 0, "N n i", n, x, fx, it);
 }
 
 /* ==== registration ========================================================================== */
@@ -1026,9 +742,7 @@ static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.desargues", o_desargues, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
     PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
     PCL_FN("oneratio.closed", o_closed, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
-    PCL_FN("oneratio.simplex_scheme", o_simplex_scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
     PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
-    PCL_FN("oneratio.desargues_scheme", o_desargues_scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
     PCL_END};
 
 static const pcl_fn interp_fns[] = {

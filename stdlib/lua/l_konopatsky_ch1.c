@@ -1,30 +1,20 @@
-/* Konopatsky's chapter 1 in Lua (books/konopatsky/konop_ch1.h), the table konopatsky, declared
- * on the argument layer:
- *   area_k(l1, l2, l3) -> k                          (1.2)
- *   area_theorem(A1, A2, A3, B1, B2, B3) -> {k, lambda, a, b, c, collinear}
- *   o_theorem({A1, ..., Am}, D1, D2) -> product, ratios, B   (1.4), B homogeneous points
- *   simplex_ratio({{p1, q1, r1}, ...}) -> det          S- and V-theorems
- *   meet_line_plane(A1, A2, P1, P2, P3) -> K, lambda, p, q   (§1.3.5 by the V-theorem)
- *   polar(C, A, B, rho, phi) -> M                     (2.117)/(2.118)
- *   rotate(C, A, B, phi) -> Q                         (2.138)
- *   moving_simplex(NA, NB, NC, gen) -> surface        Fig. 1.2
- *   equation(c [, var]) -> x, y, ...                 the coordinates as the book prints them
- */
+/* Konopatsky's chapter 1 in Lua (books/konopatsky/konop_ch1.h): the table konopatsky, declared
+ * on the argument layer. */
 #include <math.h>
 #include "pcl_args.h"
-#include "pcl_curve.h"
-#include "pcl_point.h"
+#include "pcl_core.h"
 #include "konop_ch1.h"
 #include "konop_print.h"
+#include "konop_why.h"
+
+#define CHECK(st) pcl_check(L, (st), pc_konop_why)
 
 static int k_area_k(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     double k;
-    if (pc_k_area_k(a[0].x, a[1].x, a[2].x, &k) != PC_OK)
-        return pcl_fail(L, "a lambda is -1 (its point is at infinity): k is undefined");
-    lua_pushnumber(L, k);
-    return 1;
+    CHECK(pc_k_area_k(a[0].x, a[1].x, a[2].x, &k));
+    return pcl_push_results(L, 0, "n", k);
 }
 
 static int k_area_theorem(lua_State *L) {
@@ -34,76 +24,36 @@ static int k_area_theorem(lua_State *L) {
     double p[6 * PC_MAXDIM];
     pcl_point_rows(a, 6, n, p);
     pc_k_areas o;
-    int st = pc_k_area_theorem(n, p, p + 3 * n, &o);
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle A1A2A3 is flat");
-    if (st == PC_ENOTCOLLINEAR) return pcl_fail(L, "each Bi must lie on its side line (B1 on A1A2, B2 on A2A3, B3 on A3A1)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    lua_createtable(L, 0, 6);
-    lua_pushnumber(L, o.k);
-    lua_setfield(L, -2, "k");
-    pcl_push_numbers(L, 3, o.lambda);
-    lua_setfield(L, -2, "lambda");
-    static const char *abc[3] = {"a", "b", "c"};
-    for (int i = 0; i < 3; i++) {
-        lua_pushnumber(L, o.abc[i]);
-        lua_setfield(L, -2, abc[i]);
-    }
-    lua_pushboolean(L, o.collinear);
-    lua_setfield(L, -2, "collinear");
-    return 1;
+    CHECK(pc_k_area_theorem(n, p, p + 3 * n, &o));
+    return pcl_push_results(L, 0, "k=n lambda=N a=n b=n c=n collinear=b", o.k, 3, o.lambda, o.abc[0], o.abc[1],
+                            o.abc[2], o.collinear);
 }
 
 static int k_o_theorem(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     int m = a[0].n, n = a[0].dim;
-    if (a[1].n != n) return pcl_fail(L, "argument #2 (D1) is %d-D, but the polygon is %d-D (mixed dimensions)", a[1].n, n);
     double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
     double d[2 * PC_MAXDIM];
     pcl_point_rows(a + 1, 2, n, d);
-    int st = pc_k_o_theorem(n, m, a[0].list, d, d + n, r, b, &prod);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "the line D1D2 passes through a vertex");
-    if (st == PC_ESKEW || st == PC_ESAME_LINE)
-        return pcl_fail(L, "the line D1D2 must lie in the polygon's plane and be no side line");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    lua_pushnumber(L, prod);
-    pcl_push_numbers(L, m, r);
-    lua_createtable(L, m, 0);
-    for (int i = 0; i < m; i++) {
-        const double *h = b + (size_t)(n + 1) * i;
-        if (h[n] == 0) pcl_pushvector(L, n, h);
-        else pcl_pushpoint(L, n, h);
-        lua_rawseti(L, -2, i + 1);
-    }
+    CHECK(pc_k_o_theorem(n, m, a[0].list, d, d + n, r, b, &prod));
+    pcl_push_results(L, 0, "n N", prod, m, r);
+    pcl_push_values(L, m, n, b, 1);   /* weight 0: B at infinity */
     return 3;
 }
 
 static int k_simplex_ratio(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of k + 1 rows of barycentric parameters, got %s", pcl_shown(L, 1));
-    int d = (int)lua_rawlen(L, 1);
-    if (d < 2 || d > 9) return pcl_argfail(L, 1, "must hold 2 to 9 rows, got %d", d);
-    double m[81];
-    for (int i = 0; i < d; i++) {
-        lua_geti(L, 1, i + 1);
-        if (!lua_istable(L, -1) || (int)lua_rawlen(L, -1) != d)
-            return pcl_argfail(L, 1, "[%d] must be a list of %d numbers (a square matrix)", i + 1, d);
-        for (int j = 0; j < d; j++) {
-            lua_geti(L, -1, j + 1);
-            if (lua_type(L, -1) != LUA_TNUMBER)
-                return pcl_argfail(L, 1, "[%d][%d] must be a number, got %s", i + 1, j + 1, pcl_shown(L, lua_gettop(L)));
-            m[d * i + j] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
-    }
+    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
+    int d, cols;
+    pcl_read_rows(L, 1, 0, m, &d, &cols);
+    if (d != cols || d < 2 || d > 9)
+        return pcl_argfail(L, 1, "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", d,
+                           cols);
     double r;
-    int st = pc_k_simplex_ratio(d - 1, m, &r);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "each row's parameters must sum to 1 (the membership condition)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    lua_pushnumber(L, r);
-    return 1;
+    CHECK(pc_k_simplex_ratio(d - 1, m, &r));
+    return pcl_push_results(L, 0, "n", r);
 }
 
 static int k_meet_line_plane(lua_State *L) {
@@ -114,23 +64,10 @@ static int k_meet_line_plane(lua_State *L) {
     double p[5 * PC_MAXDIM], k[PC_MAXDIM + 1], lam, pq[2];
     pcl_point_rows(a, 5, n, p);
     int st = pc_k_meet_line_plane(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, k, &lam, pq);
-    switch (st) {
-    case PC_OK:
-        pcl_pushpoint(L, n, k);
-        lua_pushnumber(L, lam);
-        lua_pushnumber(L, pq[0]);
-        lua_pushnumber(L, pq[1]);
-        return 4;
-    case PC_IMPROPER:      /* parallel: the common point at infinity, as meet() gives it */
-        pcl_pushvector(L, n, k);
-        lua_pushnumber(L, lam);
-        return 2;
-    case PC_ESAME_LINE: return pcl_fail(L, "the line A1A2 lies in the plane P1P2P3: no single meet");
-    case PC_ESKEW: return pcl_fail(L, "the line A1A2 and the plane P1P2P3 do not meet (they span more than 3-D)");
-    case PC_ECOINCIDENT: return pcl_fail(L, "A1 and A2 coincide: no line");
-    case PC_ECOLLINEAR: return pcl_fail(L, "P1, P2, P3 are collinear: no plane");
-    default: return pcl_fail(L, "%s", pc_strerror(st));
-    }
+    if (st == PC_IMPROPER)      /* parallel: the common point at infinity, as meet() gives it */
+        return pcl_push_results(L, n, "v n", k, lam);
+    CHECK(st);
+    return pcl_push_results(L, n, "p n n n", k, lam, pq[0], pq[1]);
 }
 
 static int polar_common(lua_State *L, int rotate) {
@@ -140,11 +77,8 @@ static int polar_common(lua_State *L, int rotate) {
     double p[3 * PC_MAXDIM], m[PC_MAXDIM];
     pcl_point_rows(a, 3, n, p);
     double rho = rotate ? pc_dist(n, p, p + n) : a[3].x, phi = rotate ? a[3].x : a[4].x;
-    int st = pc_k_polar(n, p, p + n, p + 2 * n, rho, phi, m);
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "C, A, B are collinear (or coincide): no plane, no angle");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    pcl_pushpoint(L, n, m);
-    return 1;
+    CHECK(pc_k_polar(n, p, p + n, p + 2 * n, rho, phi, m));
+    return pcl_push_results(L, n, "p", m);
 }
 
 static int k_polar(lua_State *L) { return polar_common(L, 0); }
@@ -162,7 +96,7 @@ static int k_moving_simplex(lua_State *L) {
     if (!s && st == PC_EDOMAIN)
         return pcl_fail(L, "the guides must run over one domain of u (NA over [%s, %s])", pcl_pushnum(L, c[0]->t0),
                         pcl_pushnum(L, c[0]->t1));
-    if (!s) return pcl_fail(L, "%s", pc_strerror(st));
+    if (!s) return CHECK(st);
     pcl_pushsurface(L, s, "konopatsky.moving_simplex");
     return 1;
 }
@@ -173,15 +107,12 @@ static int k_equation(lua_State *L) {
     PCL_READ(L, a);
     const pc_curve *c = a[0].obj;
     double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
-    int deg, st = pc_curve_monomial(c, 0, coef, &deg);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "a function curve has no power-basis form (only Bezier and B-spline curves: build the equation as bezier{...} or with conic.*, oneratio.*, interp.*)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    int deg;
+    CHECK(pc_curve_monomial(c, 0, coef, &deg));
     const char *var = a[1].present ? a[1].s : "t";
     for (int x = 0; x < c->dim; x++) {
         char buf[2048];
-        st = pc_k_coordinate_text(coef, c->dim, deg, x, var, buf, sizeof buf);
-        if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+        CHECK(pc_k_coordinate_text(coef, c->dim, deg, x, var, buf, sizeof buf));
         lua_pushstring(L, buf);
     }
     return c->dim;
@@ -190,8 +121,10 @@ static int k_equation(lua_State *L) {
 #define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
 static const pcl_arg lambdas[] = {A_NUM("l1"), A_NUM("l2"), A_NUM("l3"), PCL_END};
 static const pcl_arg six[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), SAMEPT("B1"), SAMEPT("B2"), SAMEPT("B3"), PCL_END};
-static const pcl_arg o_args[] = {A_POINTS("polygon", 0, 3, 64), A_POINT("D1", 0), {.name = "D2", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, PCL_END};
-static const pcl_arg rows_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
+static const pcl_arg o_args[] = {{.name = "polygon", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 3, .hi = 64},
+                                 SAMEPT("D1"), SAMEPT("D2"), PCL_END};
+static const pcl_arg rows_args[] = {
+    {.name = "rows", .kind = PCL_TABLE, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
 static const pcl_arg lp_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("P1"), SAMEPT("P2"), SAMEPT("P3"), PCL_END};
 static const pcl_arg polar_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
 static const pcl_arg rotate_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"), PCL_END};

@@ -1,65 +1,35 @@
 /* The scheme points of the monograph (books/konopatsky/konop_schemes.h) in Lua, declared on the
- * argument layer:
- *   conic.ed_scheme(A, B, C, k, u) -> {T1, K, T, N, P, Q, M}        §2.1.6, Fig. 2.21
- *   conic.five_scheme(A, B, C, D, E, u) -> {S, U, V, M, U_B, U_D, R, U_E}   §2.1.4, Fig. 2.15
- *   conic.ceva_to_ed(k), conic.ed_to_ceva(k)                        §2.1.7 <-> §2.1.6
- *   conic.ceva_scheme(A1, A2, A3, k, t) -> {M3, M, t3, r}            (2.105)
- *   conic.focal_point(C, A, B, phi [, kind]) -> M, F, pa, pb         (2.17), (2.55)
- *   conic.foci(C, A, B [, "ellipse"|"hyperbola"]) -> F1, F2, e, p
- *   conic.cones_excluded(fP, fQ) -> {u, ...}                        §2.6 (2.148), (2.151), (2.153)
- *   oneratio.smooth_scheme(A, B, C, n, t) -> {P = {...}, Q = {...}, M}  §3.6, Figs. 3.9, 3.10
- * Each a point, or a vector where the scheme's point is at infinity (N at u = 1/2). */
+ * argument layer: each a point, or a vector where the scheme's point is at infinity (N at
+ * u = 1/2 of conic.ed_scheme). */
 #include "pcl_args.h"
-#include "pcl_point.h"
+#include "pcl_core.h"
 #include "konop_schemes.h"
+#include "konop_why.h"
+#include "konop_make.h"
 #include "conic.h"
 
-static void push_rows(lua_State *L, int dim, const double *h, int n, const char *const *names) {
-    lua_createtable(L, 0, n);
-    for (int i = 0; i < n; i++) {
-        const double *r = h + (size_t)(dim + 1) * i;
-        if (r[dim] == 0) {
-            pcl_pushvector(L, dim, r);
-        } else {
-            double x[PC_MAXDIM];
-            for (int k = 0; k < dim; k++) x[k] = r[k] / r[dim];
-            pcl_pushpoint(L, dim, x);
-        }
-        lua_setfield(L, -2, names[i]);
-    }
-}
+#define CHECK(st) pcl_check(L, (st), pc_konop_why)
 
-static int scheme_error(lua_State *L, int st, const char *flat) {
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "%s", flat);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "a meet of the scheme is undefined at this parameter (its lines coincide)");
-    return pcl_fail(L, "%s", pc_strerror(st));
-}
-
-static int l_ed_scheme(lua_State *L) {
-    pcl_val a[5] = {0};
+/* A scheme of pc_konop_scheme: the declared points, then the numbers (an enum's choice by its
+ * index); its points and numbers pushed by spec (pcl_push_packed). */
+static int scheme(lua_State *L, pc_konop_scheme_kind kind, const char *spec) {
+    pcl_val a[7] = {0};
     PCL_READ(L, a);
-    int n = a[0].n;
-    double p[3 * PC_MAXDIM], o[PC_ED_NPTS * (PC_MAXDIM + 1)];
-    pcl_point_rows(a, 3, n, p);
-    if (a[3].x == 0) return pcl_argfail(L, 4, "must not be 0 (the arc collapses to C)");
-    int st = pc_conic_ed_scheme(n, p, p + n, p + 2 * n, a[3].x, a[4].x, o);
-    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
-    static const char *names[PC_ED_NPTS] = {"T1", "K", "T", "N", "P", "Q", "M"};
-    push_rows(L, n, o, PC_ED_NPTS, names);
-    return 1;
+    int np = pc_konop_scheme_npoints(kind), d = a[0].n;
+    double p[5 * PC_MAXDIM], x[2], o[8 * (PC_MAXDIM + 1)];
+    for (int i = 0; i < 2; i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
+    pcl_point_rows(a, np, d, p);
+    CHECK(pc_konop_scheme(kind, d, p, x, o));
+    return pcl_push_packed(L, d, spec, o);
 }
 
-static int l_five_scheme(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    double p[5 * PC_MAXDIM], o[PC_P5_NPTS * (PC_MAXDIM + 1)];
-    pcl_point_rows(a, 5, n, p);
-    int st = pc_conic_five_scheme(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, a[5].x, o);
-    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
-    static const char *names[PC_P5_NPTS] = {"S", "U", "V", "M", "U_B", "U_D", "R", "U_E"};
-    push_rows(L, n, o, PC_P5_NPTS, names);
-    return 1;
+static int l_ed_scheme(lua_State *L) { return scheme(L, PC_KS_ED, "T1=h K=h T=h N=h P=h Q=h M=h"); }
+static int l_five_scheme(lua_State *L) { return scheme(L, PC_KS_FIVE, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h"); }
+static int l_ceva_scheme(lua_State *L) { return scheme(L, PC_KS_CEVA, "M3=p M=p t3=n r=n"); }
+static int l_simplex_scheme(lua_State *L) { return scheme(L, PC_KS_SIMPLEX, "N=p M=p"); }
+static int l_foci(lua_State *L) { return scheme(L, PC_KS_FOCI, "p p n n"); }
+static int l_desargues_scheme(lua_State *L) {
+    return scheme(L, PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n");
 }
 
 static int l_smooth_scheme(lua_State *L) {
@@ -70,51 +40,20 @@ static int l_smooth_scheme(lua_State *L) {
     pcl_point_rows(a, 3, d, abc);
     double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
     double *p = buf, *q = buf + n * d, *m = q + n * d;
-    int st = pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m);
-    if (st != PC_OK) return scheme_error(L, st, "A, B, C are collinear");
-    lua_createtable(L, 0, 3);
-    const char *side[2] = {"P", "Q"};
-    for (int s2 = 0; s2 < 2; s2++) {
-        lua_createtable(L, n, 0);
-        for (int i = 0; i < n; i++) {
-            pcl_pushpoint(L, d, (s2 ? q : p) + i * d);
-            lua_rawseti(L, -2, i + 1);
-        }
-        lua_setfield(L, -2, side[s2]);
-    }
-    pcl_pushpoint(L, d, m);
-    lua_setfield(L, -2, "M");
-    return 1;
+    CHECK(pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m));
+    return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
 
 static int l_cones_excluded(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
     double u[5];
-    int n, st = pc_cones_excluded(a[0].x, a[1].x, u, &n);
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    pcl_push_numbers(L, n, u);
-    return 1;
+    int n;
+    CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
+    return pcl_push_results(L, 0, "N", n, u);
 }
 
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
-
-static int l_foci(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double p[3 * PC_MAXDIM], f1[PC_MAXDIM], f2[PC_MAXDIM], e, fp;
-    pcl_point_rows(a, 3, d, p);
-    int st = pc_conic_foci(d, p, p + d, p + 2 * d, a[3].n == 1, f1, f2, &e, &fp);
-    if (st == PC_EDOMAIN) return pcl_fail(L, "CA and CB must be the axes (perpendicular); for conjugate semi-diameters use c:conic()");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "a semi-axis is zero (A or B coincides with C)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    pcl_pushpoint(L, d, f1);
-    pcl_pushpoint(L, d, f2);
-    lua_pushnumber(L, e);
-    lua_pushnumber(L, fp);
-    return 4;
-}
 
 static int l_focal_point(lua_State *L) {
     pcl_val a[5] = {0};
@@ -125,48 +64,16 @@ static int l_focal_point(lua_State *L) {
     int st = pc_conic_focal_point(d, p, p + d, p + 2 * d, hyp, a[3].x, o, pab);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "CA and CB must be perpendicular semi-axes%s", hyp ? "" : ", CA the major one (the foci on it)");
-    if (st == PC_EPOLE) return pcl_fail(L, "phi = %s is an asymptote's direction (1 - e cos phi = 0)", pcl_pushnum(L, a[3].x));
-    if (st != PC_OK) return scheme_error(L, st, "a semi-axis is zero");
-    pcl_pushpoint(L, d, o);
-    pcl_pushpoint(L, d, o + d);
-    lua_pushnumber(L, pab[0]);
-    lua_pushnumber(L, pab[1]);
-    return 4;
-}
-
-static int l_ceva_scheme(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
-    int d = a[0].n;
-    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], t3, r;
-    pcl_point_rows(a, 3, d, p);
-    int st = pc_conic_ceva_scheme(d, p, p + d, p + 2 * d, a[3].x, a[4].x, o, &t3, &r);
-    if (st == PC_EDOMAIN) return pcl_argfail(L, 4, "must not be 0");
-    if (st == PC_EPOLE) return pcl_fail(L, "the arc is at infinity at t = %s", pcl_pushnum(L, a[4].x));
-    if (st != PC_OK) return scheme_error(L, st, "A1, A2, A3 are collinear");
-    lua_createtable(L, 0, 4);
-    pcl_pushpoint(L, d, o);
-    lua_setfield(L, -2, "M3");
-    pcl_pushpoint(L, d, o + d);
-    lua_setfield(L, -2, "M");
-    lua_pushnumber(L, t3);
-    lua_setfield(L, -2, "t3");
-    lua_pushnumber(L, r);
-    lua_setfield(L, -2, "r");
-    return 1;
+    CHECK(st);
+    return pcl_push_results(L, d, "p p n n", o, o + d, pab[0], pab[1]);
 }
 
 static int conv(lua_State *L, int to_ed) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     double r;
-    int st = to_ed ? pc_ceva_to_ed(a[0].x, &r) : pc_ed_to_ceva(a[0].x, &r);
-    if (st == PC_EDOMAIN)
-        return pcl_argfail(L, 1, to_ed ? "must be a positive Ceva k, got %s" : "must be an engineering discriminant in (0, 1), got %s",
-                           pcl_pushnum(L, a[0].x));
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    lua_pushnumber(L, r);
-    return 1;
+    CHECK(to_ed ? pc_ceva_to_ed(a[0].x, &r) : pc_ed_to_ceva(a[0].x, &r));
+    return pcl_push_results(L, 0, "n", r);
 }
 static int l_ceva_to_ed(lua_State *L) { return conv(L, 1); }
 static int l_ed_to_ceva(lua_State *L) { return conv(L, 0); }
@@ -182,6 +89,8 @@ static const pcl_arg focal_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NU
                                      {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
 static const pcl_arg ceva_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
 static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
+static const pcl_arg abct_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("t"), PCL_END};
+static const pcl_arg abcdt_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), A_NUM("t"), PCL_END};
 
 static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ed_scheme", l_ed_scheme, ed_args, "{T1, K, T, N, P, Q, M}",
@@ -201,16 +110,14 @@ static const pcl_fn conic_fns[] = {
            "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_END};
 static const pcl_fn oneratio_fns[] = {
+    PCL_FN("oneratio.simplex_scheme", l_simplex_scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", l_desargues_scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
     PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}",
            "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
     PCL_END};
 
 /* After pcl_open_konopatsky, with the module table on top. */
 void pcl_open_konopatsky_schemes(lua_State *L) {
-    lua_getfield(L, -1, "conic");
-    pcl_register(L, lua_gettop(L), conic_fns, 0);
-    lua_pop(L, 1);
-    lua_getfield(L, -1, "oneratio");
-    pcl_register(L, lua_gettop(L), oneratio_fns, 0);
-    lua_pop(L, 1);
+    pcl_register_into(L, lua_gettop(L), "conic", conic_fns);
+    pcl_register_into(L, lua_gettop(L), "oneratio", oneratio_fns);
 }

@@ -1,39 +1,34 @@
-/* The symbolic method of §2.2 in Lua (books/konopatsky/konop_triples.h):
- *   conic.scheme{triples = {{"A1", "A", "B"}, ...}, points = {A1 = P(...), ...}, (declared)
- *                current = {"C", "A1", "A5"}, result = "M" [, range = {t0, t1}]}
- *     -> curve, steps ({"A = A3A2 x A4A5", ...}) */
+/* The symbolic method of §2.2 in Lua (books/konopatsky/konop_triples.h): conic.scheme{...}. */
 #include <string.h>
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_point.h"
 #include "konop_triples.h"
 
-typedef struct {
-    int n;
-    const char *name[PC_TRIPLES_MAXPTS];
-} names;
-
-/* the index of name s (added when new); -1 when there are too many */
-static int index_of(names *nm, const char *s) {
-    for (int i = 0; i < nm->n; i++)
-        if (!strcmp(nm->name[i], s)) return i;
-    if (nm->n == PC_TRIPLES_MAXPTS) return -1;
-    nm->name[nm->n] = s;
-    return nm->n++;
+/* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
+ * no such list */
+static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
+    int t = lua_gettop(L), ok = lua_istable(L, t) && lua_rawlen(L, t) == 3;
+    for (int k = 0; ok && k < 3; k++) {
+        ok = lua_geti(L, t, k + 1) == LUA_TSTRING;
+        idx[k] = ok ? pc_triples_name(nm, lua_tostring(L, -1)) : 0;   /* the name stays alive in the table */
+        if (idx[k] < 0) pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return ok;
 }
 
 static int l_scheme(lua_State *L) {
     pcl_val a[6] = {0};   /* the table, then triples, points, current, result, range */
     PCL_READ(L, a);
-    names nm = {0};
-    int tri[PC_TRIPLES_MAXTRI][3], ntri;
+    pc_triples_names nm = {0};
+    int tri[PC_TRIPLES_MAXTRI][3], cur[3], dim = 0;
     unsigned char known[PC_TRIPLES_MAXPTS] = {0};
     double pts[PC_TRIPLES_MAXPTS * PC_MAXDIM];
-    int dim = 0;
     /* the known points first: their names are the keys of points */
     lua_getfield(L, 1, "points");
     int ip = lua_gettop(L);
-    if (!lua_istable(L, ip)) return pcl_fail(L, "field points must be a table {A1 = P(...), ...}");
     lua_pushnil(L);
     while (lua_next(L, ip)) {
         if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
@@ -45,7 +40,7 @@ static int l_scheme(lua_State *L) {
         if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
             return pcl_fail(L, "points.%s must be a %s point", s, dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
         dim = v->n;
-        int i = index_of(&nm, s);
+        int i = pc_triples_name(&nm, s);
         if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
         known[i] = 1;
         memcpy(pts + i * dim, h, sizeof(double) * (size_t)dim);
@@ -53,37 +48,18 @@ static int l_scheme(lua_State *L) {
     }
     if (!dim) return pcl_fail(L, "field points is empty");
     lua_getfield(L, 1, "triples");
-    int it = lua_gettop(L);
-    if (!lua_istable(L, it)) return pcl_fail(L, "field triples must be a list of {\"X\", \"Y\", \"Z\"}");
-    ntri = (int)lua_rawlen(L, it);
+    int it = lua_gettop(L), ntri = (int)lua_rawlen(L, it);
     if (ntri < 1 || ntri > PC_TRIPLES_MAXTRI) return pcl_fail(L, "1 to %d triples, got %d", PC_TRIPLES_MAXTRI, ntri);
     for (int j = 0; j < ntri; j++) {
         lua_geti(L, it, j + 1);
-        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 3)
-            return pcl_fail(L, "triples[%d] must be three point names", j + 1);
-        for (int k = 0; k < 3; k++) {
-            lua_geti(L, -1, k + 1);
-            if (lua_type(L, -1) != LUA_TSTRING) return pcl_fail(L, "triples[%d][%d] must be a point name", j + 1, k + 1);
-            tri[j][k] = index_of(&nm, lua_tostring(L, -1));
-            if (tri[j][k] < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
-            lua_pop(L, 1);       /* the name stays alive in the table */
-        }
-        lua_pop(L, 1);
+        if (!names3(L, &nm, tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
     }
     lua_getfield(L, 1, "current");
-    int ic = lua_gettop(L), cur[3];
-    if (!lua_istable(L, ic) || lua_rawlen(L, ic) != 3)
-        return pcl_fail(L, "field current must be {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
-    for (int k = 0; k < 3; k++) {
-        lua_geti(L, ic, k + 1);
-        if (lua_type(L, -1) != LUA_TSTRING) return pcl_fail(L, "current[%d] must be a point name", k + 1);
-        cur[k] = index_of(&nm, lua_tostring(L, -1));
-        lua_pop(L, 1);
-    }
+    if (!names3(L, &nm, cur))
+        return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
     if (!known[cur[1]] || !known[cur[2]])
         return pcl_fail(L, "the current point's line current[2], current[3] must join two given points");
-    lua_getfield(L, 1, "result");
-    int res = index_of(&nm, lua_tostring(L, -1));   /* a string: declared */
+    int res = pc_triples_name(&nm, a[4].s);
     double t0 = 0, t1 = 1;
     if (a[5].present) {
         t0 = a[5].list[0], t1 = a[5].list[1];
@@ -92,24 +68,22 @@ static int l_scheme(lua_State *L) {
     pc_triples_plan plan;
     int st = pc_triples_plan_make(nm.n, ntri, (const int (*)[3])tri, known, cur[0], cur[1], cur[2], res, &plan);
     if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)",
-                         nm.name[res]);
+        return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pc_curve *c = pc_triples_curve(&plan, dim, pts, t0, t1, &st);
-    if (!c) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushcurve(L, c, "conic.scheme");
+    pcl_push_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, "conic.scheme");
     lua_createtable(L, plan.nsteps, 0);
     for (int s = 0; s < plan.nsteps; s++) {
-        const pc_triple_step *p = &plan.step[s];
-        lua_pushfstring(L, "%s = %s%s x %s%s", nm.name[p->x], nm.name[p->a], nm.name[p->b], nm.name[p->c], nm.name[p->d]);
+        char text[4 * 64];
+        pc_triples_step_text(&plan, s, &nm, text, sizeof text);
+        lua_pushstring(L, text);
         lua_rawseti(L, -2, s + 1);
     }
     return 2;
 }
 
 static const pcl_arg scheme_keys[] = {
-    {.name = "triples", .kind = PCL_ANY, .flags = PCL_REQ, .expect = "a list of {\"X\", \"Y\", \"Z\"}"},
-    {.name = "points", .kind = PCL_ANY, .flags = PCL_REQ, .expect = "a table {A1 = P(...), ...}"},
+    {.name = "triples", .kind = PCL_TABLE, .flags = PCL_REQ, .expect = "a list of {\"X\", \"Y\", \"Z\"}"},
+    {.name = "points", .kind = PCL_TABLE, .flags = PCL_REQ, .expect = "a table {A1 = P(...), ...}"},
     {.name = "current", .kind = PCL_ANY, .flags = PCL_REQ, .expect = "{\"C\", \"P\", \"Q\"}"},
     {.name = "result", .kind = PCL_STRING, .flags = PCL_REQ},
     {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2}, PCL_END};
@@ -121,7 +95,5 @@ static const pcl_fn fns[] = {
 
 /* After pcl_open_konopatsky, with the module table on top. */
 void pcl_open_konopatsky_triples(lua_State *L) {
-    lua_getfield(L, -1, "conic");
-    pcl_register(L, lua_gettop(L), fns, 0);
-    lua_pop(L, 1);
+    pcl_register_into(L, lua_gettop(L), "conic", fns);
 }

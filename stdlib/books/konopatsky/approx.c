@@ -6,6 +6,23 @@
 
 /* ---- the book's approximation measure -------------------------------------------------------- */
 
+pc_curve *pc_approx_curve(pc_scalar_fn f, void *ud, int N, const double *x, int *bad, int *status) {
+    double p[128];
+    if (N < 2 || N > 64) {
+        *status = PC_EDOMAIN;
+        return NULL;
+    }
+    for (int j = 0; j < N; j++) {
+        p[2 * j] = x[j], p[2 * j + 1] = f(x[j], ud);
+        if (!isfinite(p[2 * j + 1])) {
+            *bad = j;
+            *status = PC_ENONFINITE;
+            return NULL;
+        }
+    }
+    return pc_curve_interpolate(2, N, p, NULL, status);
+}
+
 int pc_approx_mse(pc_scalar_fn f, void *ud, int N, const double *x, int m, double *mse) {
     if (N < 2 || N > 64 || m < 1) return PC_EDOMAIN;
     double y[64], sse = 0;

@@ -6,6 +6,12 @@
 #define PC_APPROX_H
 
 #include "optimize.h"
+#include "curve.h"
+
+/* §5.1 The approximation curve through (x_j, f(x_j)), j = 1..N (2 <= N <= 64), at uniform t:
+ * the interpolation curve of the nodes.  PC_ENONFINITE, *bad the node j, where f(x_j) is not a
+ * finite number. */
+pc_curve *pc_approx_curve(pc_scalar_fn f, void *ud, int N, const double *x, int *bad, int *status);
 
 /* The book's mean-square error of the curve through (x_j, f(x_j)), j = 1..N (N >= 2): samples
  * t_i = i/m, i = 0..m, residual f(x(t_i)) - y(t_i), SSE/(m + 1) (the convention that gives the

@@ -1,6 +1,7 @@
 /* The symbolic method of §2.2: a table of triples as a construction (konop_triples.h). */
 #include "konop_triples.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "point.h"
@@ -106,4 +107,18 @@ pc_curve *pc_triples_curve(const pc_triples_plan *plan, int dim, const double *p
     pc_curve *c = pc_curve_func(dim, t0, t1, 0, triples_fn, free, u, status);
     if (!c) free(u);
     return c;
+}
+
+int pc_triples_name(pc_triples_names *nm, const char *s) {
+    for (int i = 0; i < nm->n; i++)
+        if (!strcmp(nm->name[i], s)) return i;
+    if (nm->n == PC_TRIPLES_MAXPTS) return -1;
+    nm->name[nm->n] = s;
+    return nm->n++;
+}
+
+void pc_triples_step_text(const pc_triples_plan *plan, int s, const pc_triples_names *nm, char *buf, size_t size) {
+    const pc_triple_step *p = &plan->step[s];
+    snprintf(buf, size, "%s = %s%s x %s%s", nm->name[p->x], nm->name[p->a], nm->name[p->b], nm->name[p->c],
+             nm->name[p->d]);
 }

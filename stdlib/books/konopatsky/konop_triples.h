@@ -7,6 +7,7 @@
 #ifndef PC_KONOP_TRIPLES_H
 #define PC_KONOP_TRIPLES_H
 
+#include <stddef.h>
 #include "curve.h"
 
 #define PC_TRIPLES_MAXPTS 32
@@ -36,5 +37,15 @@ pc_curve *pc_triples_curve(const pc_triples_plan *plan, int dim, const double *p
 /* One evaluation: every point of the plan at t (npts rows of dim + 1, homogeneous; the known
  * ones as given).  PC_EDOMAIN where a meet is undefined. */
 int pc_triples_eval(const pc_triples_plan *plan, int dim, const double *pts, double t, double *all);
+
+/* The names of a table's points (the strings borrowed): pc_triples_name gives the index of s,
+ * adding it when new, or -1 when there are PC_TRIPLES_MAXPTS names already. */
+typedef struct {
+    int n;
+    const char *name[PC_TRIPLES_MAXPTS];
+} pc_triples_names;
+int pc_triples_name(pc_triples_names *nm, const char *s);
+/* Step s of the plan as the book writes it, "A = A3A2 x A4A5", into buf (size bytes). */
+void pc_triples_step_text(const pc_triples_plan *plan, int s, const pc_triples_names *nm, char *buf, size_t size);
 
 #endif

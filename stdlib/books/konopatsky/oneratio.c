@@ -155,6 +155,33 @@ pc_curve *pc_oneratio_double_contact(int dim, const double *a, const double *b,
     return new_blend(0, dim, a, b, c, kp, kq, f, fn_free, ud, status);
 }
 
+static double const_blend(void *ud, double v) {
+    (void)v;
+    return *(double *)ud;
+}
+
+pc_curve *pc_oneratio_double_contact_const(int dim, const double *a, const double *b,
+                                           const double *c, double kp, double kq, double f,
+                                           int *status) {
+    double *ud = malloc(sizeof *ud);
+    if (!ud) return fail(status, PC_ENOMEM);
+    *ud = f;
+    pc_curve *cv = pc_oneratio_double_contact(dim, a, b, c, kp, kq, const_blend, free, ud, status);
+    if (!cv) free(ud);
+    return cv;
+}
+
+pc_curve *pc_oneratio_bezier3(int dim, const double *a, const double *c1, const double *c2,
+                              const double *b, int *status) {
+    if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
+    double cp[4 * (PC_MAXDIM + 1)];
+    hpoint(dim, a, 1, cp);
+    hpoint(dim, c1, 1, cp + dim + 1);
+    hpoint(dim, c2, 1, cp + 2 * (dim + 1));
+    hpoint(dim, b, 1, cp + 3 * (dim + 1));
+    return pc_curve_bezier(dim, 4, cp, status);
+}
+
 pc_curve *pc_oneratio_closed(int dim, const double *a, const double *b, const double *c,
                              double kp, double kq, int scheme, int *status) {
     if (scheme != 1 && scheme != 2) return fail(status, PC_EDOMAIN);

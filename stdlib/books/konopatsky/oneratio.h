@@ -35,6 +35,13 @@ typedef double (*pc_blend_fn)(void *ud, double v);
 pc_curve *pc_oneratio_double_contact(int dim, const double *a, const double *b,
                                      const double *c, double kp, double kq, pc_blend_fn f,
                                      void (*fn_free)(void *ud), void *ud, int *status);
+/* The same with the constant f(v) = f. */
+pc_curve *pc_oneratio_double_contact_const(int dim, const double *a, const double *b,
+                                           const double *c, double kp, double kq, double f,
+                                           int *status);
+/* (3.4) The cubic Bezier curve of the de Casteljau scheme on A, C1, C2, B (corrected powers). */
+pc_curve *pc_oneratio_bezier3(int dim, const double *a, const double *c1, const double *c2,
+                              const double *b, int *status);
 /* §3.5 Closed curves: M = P u' + Q u with P the arc (2.97) kP run from B to A and Q run
  * A -> B (scheme 1) or Q = (C - A)kQ u'^2/d + (B - A)kQ u^2/d + A run C -> B (scheme 2, the
  * printed Q with u^2 and u'^2 exchanged as the printed final M demands; digest §1.5).

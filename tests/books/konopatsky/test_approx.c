@@ -41,6 +41,33 @@ static double runge(double x, void *ud) { (void)ud; return 1 / (1 + 25 * x * x);
 static double ellipse(double x, void *ud) { (void)ud; return sqrt(fmax(9 - 9 * x * x / 16, 0)); }
 static double sines(double x, void *ud) { (void)ud; return sin(x) + sin(10 * x); }
 
+static double pole(double x, void *ud) {
+    (void)ud;
+    return 1 / x;
+}
+
+/* §5.1 the curve through (x_j, f(x_j)) at uniform t */
+static void test_curve(void **state) {
+    (void)state;
+    const double x[3] = {-1, 0.25, 1};
+    int st, bad = -1;
+    pc_curve *c = pc_approx_curve(runge, NULL, 3, x, &bad, &st);
+    assert_non_null(c);
+    double m[2];
+    assert_int_equal(pc_curve_eval(c, 0.5, m), PC_OK);    /* the middle node at t = 1/2 */
+    NEAR(m[0], 0.25, 1e-15);
+    NEAR(m[1], runge(0.25, NULL), 1e-15);
+    assert_int_equal(pc_curve_eval(c, 1, m), PC_OK);
+    NEAR(m[1], 1.0 / 26, 1e-15);
+    pc_curve_release(c);
+    const double y[3] = {-1, 0, 1};
+    assert_null(pc_approx_curve(pole, NULL, 3, y, &bad, &st));
+    assert_int_equal(st, PC_ENONFINITE);
+    assert_int_equal(bad, 1);
+    assert_null(pc_approx_curve(runge, NULL, 1, y, &bad, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+}
+
 /* the book's nodes give the book's MSE (with SSE/(m + 1)) */
 static void test_mse(void **state) {
     (void)state;
@@ -122,7 +149,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rosenbrock),   cmocka_unit_test(test_mse),
         cmocka_unit_test(test_runge_search), cmocka_unit_test(test_table),
-        cmocka_unit_test(test_chebyshev),
+        cmocka_unit_test(test_chebyshev),    cmocka_unit_test(test_curve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,6 +6,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
+#include <stdio.h>
 #include "konop_triples.h"
 #include "conic.h"
 #include "quadratic.h"
@@ -66,7 +67,36 @@ static void test_system_a(void **state) {
     assert_int_equal(pc_triples_plan_make(NPTS, 2, bad, known, PC, A3, A4, PM, &plan), PC_EDOMAIN);
 }
 
+/* the table by names: indices in order of appearance, the steps as the book writes them */
+static void test_names(void **state) {
+    (void)state;
+    pc_triples_names nm = {0};
+    const char *pts[] = {"A1", "A2", "A3", "A4", "A5"};
+    for (int i = 0; i < 5; i++) assert_int_equal(pc_triples_name(&nm, pts[i]), i);
+    assert_int_equal(pc_triples_name(&nm, "A3"), A3);       /* known already */
+    const char *more[] = {"A", "B", "C", "M"};
+    for (int i = 0; i < 4; i++) assert_int_equal(pc_triples_name(&nm, more[i]), PA + i);
+    assert_int_equal(nm.n, NPTS);
+    const int tri[7][3] = {{A1, PA, PB}, {A2, PB, PC}, {A3, A2, PA}, {A4, A5, PA},
+                           {A5, A1, PC}, {PM, A3, PB}, {PM, A4, PC}};
+    unsigned char known[NPTS] = {1, 1, 1, 1, 1, 0, 0, 0, 0};
+    pc_triples_plan plan;
+    assert_int_equal(pc_triples_plan_make(NPTS, 7, tri, known, PC, A1, A5, PM, &plan), PC_OK);
+    char buf[64];
+    pc_triples_step_text(&plan, 0, &nm, buf, sizeof buf);
+    assert_string_equal(buf, "A = A3A2 x A4A5");
+    pc_triples_step_text(&plan, 2, &nm, buf, sizeof buf);
+    assert_int_equal(buf[0], 'M');
+    char name[PC_TRIPLES_MAXPTS][16];
+    for (int i = nm.n; i < PC_TRIPLES_MAXPTS; i++) {
+        snprintf(name[i], sizeof name[i], "X%d", i);
+        assert_int_equal(pc_triples_name(&nm, name[i]), i);
+    }
+    assert_int_equal(pc_triples_name(&nm, "Y"), -1);         /* full */
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_system_b), cmocka_unit_test(test_system_a)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_system_b), cmocka_unit_test(test_system_a),
+                                       cmocka_unit_test(test_names)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

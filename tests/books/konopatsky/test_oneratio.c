@@ -8,6 +8,7 @@
 #include <cmocka.h>
 #include <math.h>
 #include "oneratio.h"
+#include "conic.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -129,6 +130,41 @@ static void test_desargues(void **state) {
 
 static double f_sq(void *ud, double v) { (void)ud; return v * v; }
 static double f_sqrt(void *ud, double v) { (void)ud; return sqrt(v); }
+
+/* (3.4): the cubic Bezier A, C1, C2, B of the de Casteljau scheme */
+static void test_bezier3(void **state) {
+    (void)state;
+    int st;
+    pc_curve *c = pc_oneratio_bezier3(3, A, C, D, B, &st);
+    assert_non_null(c);
+    near3(c, 0, 0, 0, 0, 1e-14);
+    near3(c, 1, 4, 0, 0, 1e-14);
+    near3(c, 0.5, (A[0] + 3 * C[0] + 3 * D[0] + B[0]) / 8, (3 * C[1] + 3 * D[1]) / 8, 3 * D[2] / 8, 1e-14);
+    pc_curve_release(c);
+    assert_null(pc_oneratio_bezier3(0, A, C, D, B, &st));
+    assert_int_equal(st, PC_EDIM);
+}
+
+/* a constant blend f = 1/4: M = P 3/4 + Q/4 of the arcs (2.97) kp, kq */
+static void test_double_contact_const(void **state) {
+    (void)state;
+    int st;
+    double a2[2] = {0, 0}, b2[2] = {10, 0}, c2[2] = {4, 6};
+    pc_curve *c = pc_oneratio_double_contact_const(2, a2, b2, c2, 0.3, 0.7, 0.25, &st);
+    pc_curve *p = pc_conic_ed(2, a2, b2, c2, 0.3, &st), *q = pc_conic_ed(2, a2, b2, c2, 0.7, &st);
+    for (double v = 0.1; v < 1; v += 0.2) {
+        double m[2], mp[2], mq[2];
+        assert_int_equal(pc_curve_eval(c, v, m), PC_OK);
+        pc_curve_eval(p, v, mp);
+        pc_curve_eval(q, v, mq);
+        for (int k = 0; k < 2; k++) NEAR(m[k], 0.75 * mp[k] + 0.25 * mq[k], 1e-12);
+    }
+    pc_curve_release(c);
+    pc_curve_release(p);
+    pc_curve_release(q);
+    assert_null(pc_oneratio_double_contact_const(2, a2, b2, c2, 0.4, 0.4, 0.5, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+}
 
 static void test_double_contact(void **state) {
     (void)state;
@@ -272,6 +308,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_simplex_tetra), cmocka_unit_test(test_smooth),
         cmocka_unit_test(test_desargues),     cmocka_unit_test(test_double_contact),
+        cmocka_unit_test(test_bezier3),      cmocka_unit_test(test_double_contact_const),
         cmocka_unit_test(test_closed),       cmocka_unit_test(test_schemes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

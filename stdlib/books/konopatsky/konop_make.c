@@ -1,0 +1,66 @@
+/* The constructions by kind (konop_make.h). */
+#include <math.h>
+#include <stddef.h>
+#include "konop_make.h"
+#include "conic.h"
+#include "oneratio.h"
+#include "konop_schemes.h"
+
+int pc_konop_npoints(pc_konop_kind kind) {
+    switch (kind) {
+    case PC_KM_TETRA:
+    case PC_KM_BEZIER3:
+    case PC_KM_DESARGUES:
+    case PC_KM_ED_K:
+    case PC_KM_CEVA_K: return 4;
+    default: return 3;
+    }
+}
+
+pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const double *x, int *status) {
+    const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim;
+    switch (kind) {
+    case PC_KM_ED: return pc_conic_ed(dim, a, b, c, x[0], status);
+    case PC_KM_CEVA: return pc_conic_ceva(dim, a, b, c, x[0], status);
+    case PC_KM_PARABOLA:
+        if (isnan(x[0])) return pc_conic_parabola(dim, a, b, c, status);
+        return pc_conic_parabola3(dim, a, b, c, x[0], status);   /* A, C, B with C reached at tC */
+    case PC_KM_ED3: return pc_conic_ed3(dim, a, b, c, x[0], status);
+    case PC_KM_TETRA: return pc_oneratio_tetra(dim, a, b, c, d, status);
+    case PC_KM_BEZIER3: return pc_oneratio_bezier3(dim, a, b, c, d, status);
+    case PC_KM_SMOOTH: return pc_oneratio_smooth(dim, a, b, c, (int)x[0], status);
+    case PC_KM_DESARGUES: return pc_oneratio_desargues(dim, a, b, c, d, status);
+    default: break;
+    }
+    if (status) *status = PC_EDOMAIN;
+    return NULL;
+}
+
+int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, double *out) {
+    const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim;
+    switch (kind) {
+    case PC_KM_ED_K: return pc_conic_ed_k(dim, a, b, c, d, out);
+    case PC_KM_CIRCLE_K: return pc_conic_ed_circle_k(dim, a, b, c, out);
+    case PC_KM_CEVA_K: return pc_conic_ceva_k(dim, a, b, c, d, out);
+    default: return PC_EDOMAIN;
+    }
+}
+
+int pc_konop_scheme_npoints(pc_konop_scheme_kind kind) {
+    return kind == PC_KS_FIVE ? 5 : kind == PC_KS_DESARGUES ? 4 : 3;
+}
+
+int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const double *x, double *out) {
+    const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim, *e = pts + 4 * dim;
+    switch (kind) {
+    case PC_KS_ED:
+        if (x[0] == 0) return PC_EARG;
+        return pc_conic_ed_scheme(dim, a, b, c, x[0], x[1], out);
+    case PC_KS_FIVE: return pc_conic_five_scheme(dim, a, b, c, d, e, x[0], out);
+    case PC_KS_CEVA: return pc_conic_ceva_scheme(dim, a, b, c, x[0], x[1], out, out + 2 * dim, out + 2 * dim + 1);
+    case PC_KS_SIMPLEX: return pc_oneratio_simplex_scheme(dim, a, b, c, x[0], out, out + dim);
+    case PC_KS_DESARGUES: return pc_desargues_scheme(dim, a, b, c, d, x[0], out, out + 7 * (dim + 1));
+    case PC_KS_FOCI: return pc_conic_foci(dim, a, b, c, x[0] == 1, out, out + dim, out + 2 * dim, out + 2 * dim + 1);
+    }
+    return PC_EDOMAIN;
+}

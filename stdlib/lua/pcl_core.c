@@ -1,0 +1,170 @@
+/* Calling the core from a binding (pcl_core.h). */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include "pcl_args.h"
+#include "pcl_core.h"
+#include "pcl_point.h"
+
+int pcl_check(lua_State *L, int st, const pc_why *table) {
+    if (st == PC_OK) return st;
+    const pc_why *w = pc_why_find(table, pcl_name(L), st);
+    if (!w) return pcl_raise_status(L, pcl_name(L), st);
+    if (w->arg > 0) return pcl_argfail(L, w->arg, w->text, pcl_shown(L, w->arg));
+    if (w->arg < 0) return pcl_fail(L, w->text, pcl_shown(L, -w->arg));
+    if (w->key) return pcl_keyfail(L, w->key, "%s", w->text);
+    return pcl_fail(L, "%s", w->text);
+}
+
+int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table) {
+    if (!c && pc_why_find(table, pcl_name(L), *st)) pcl_check(L, *st, table);
+    return pcl_push_made(L, c, st, NULL);
+}
+
+/* a homogeneous row: the point, or the direction (a vector) where its weight is 0 */
+static void push_h(lua_State *L, int dim, const double *h) {
+    double x[PC_MAXDIM];
+    int inf = fabs(h[dim]) <= 1e-12;
+    for (int k = 0; k < dim; k++) x[k] = inf ? h[k] : h[k] / h[dim];
+    if (inf) pcl_pushvector(L, dim, x);
+    else pcl_pushpoint(L, dim, x);
+}
+
+static void push_vectors(lua_State *L, int n, int dim, const double *rows) {
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        pcl_pushvector(L, dim, rows + (size_t)i * dim);
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
+/* push one value of kind c from ap; 0 when it is left out (o of NaN) */
+static int push_one(lua_State *L, int dim, char c, va_list *ap) {
+    if (c == 'n' || c == 'o') {
+        double x = va_arg(*ap, double);
+        if (c == 'o' && isnan(x)) return 0;
+        lua_pushnumber(L, c == 'o' ? x + 0.0 : x);   /* o: no -0 */
+    } else if (c == 'i') {
+        lua_pushinteger(L, va_arg(*ap, int));
+    } else if (c == 'b') {
+        lua_pushboolean(L, va_arg(*ap, int));
+    } else if (c == 's') {
+        lua_pushstring(L, va_arg(*ap, const char *));
+    } else if (c == 'N' || c == 'P' || c == 'V') {
+        int n = va_arg(*ap, int);
+        const double *x = va_arg(*ap, const double *);
+        if (c == 'N') pcl_push_numbers(L, n, x);
+        else if (c == 'P') pcl_push_values(L, n, dim, x, 0);
+        else push_vectors(L, n, dim, x);
+    } else {
+        const double *x = va_arg(*ap, const double *);
+        if (c == 'p') pcl_pushpoint(L, dim, x);
+        else if (c == 'v') pcl_pushvector(L, dim, x);
+        else push_h(L, dim, x);
+    }
+    return 1;
+}
+
+/* the value on the stack top into the table below it, by the name of the token tok (NAME=x) */
+static void store(lua_State *L, const char *tok) {
+    lua_pushlstring(L, tok, strcspn(tok, "="));
+    lua_insert(L, -2);
+    lua_rawset(L, -3);
+}
+
+/* the kind letter of the token at s, and the start of the next one */
+static char token(const char **s) {
+    size_t len = strcspn(*s, " ");
+    char c = (*s)[len - 1];
+    *s += len + ((*s)[len] == ' ');
+    return c;
+}
+
+int pcl_push_results(lua_State *L, int dim, const char *spec, ...) {
+    va_list ap;
+    va_start(ap, spec);
+    int named = strchr(spec, '=') != NULL, count = 0;
+    if (named) lua_newtable(L);
+    for (const char *s = spec, *tok = s; *s; tok = s) {
+        int pushed = push_one(L, dim, token(&s), &ap);
+        if (named && pushed) store(L, tok);
+        count += pushed;
+    }
+    va_end(ap);
+    return named ? 1 : count;
+}
+
+int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
+    int named = strchr(spec, '=') != NULL, count = 0;
+    if (named) lua_newtable(L);
+    for (const char *s = spec, *tok = s; *s; tok = s, count++) {
+        char c = token(&s);
+        if (c == 'n') lua_pushnumber(L, *v);
+        else if (c == 'h') push_h(L, dim, v);
+        else if (c == 'v') pcl_pushvector(L, dim, v);
+        else pcl_pushpoint(L, dim, v);
+        v += c == 'n' ? 1 : c == 'h' ? dim + 1 : dim;
+        if (named) store(L, tok);
+    }
+    return named ? 1 : count;
+}
+
+void pcl_register_into(lua_State *L, int t, const char *name, const pcl_fn *fns) {
+    if (lua_getfield(L, t, name) == LUA_TTABLE) pcl_register(L, lua_gettop(L), fns, 0);
+    lua_pop(L, 1);
+}
+
+pcl_luafn *pcl_luafn_new(lua_State *L, int n, const int *idx) {
+    pcl_luafn *f = malloc(sizeof *f);
+    if (!f) pcl_fail(L, "out of memory");
+    f->n = n;
+    f->nargs = 1;
+    f->failed = 0;
+    f->stack = 0;
+    f->fname = pcl_name(L);   /* the declaration's static string */
+    for (int i = 0; i < n; i++) {
+        lua_pushvalue(L, idx[i]);
+        f->ref[i] = luaL_ref(L, LUA_REGISTRYINDEX);
+    }
+    pcl_callback_state(L);
+    return f;
+}
+
+pcl_luafn pcl_luafn_at(lua_State *L, int idx) {
+    pcl_callback_state(L);
+    return (pcl_luafn){.n = 0, .nargs = 1, .stack = lua_absindex(L, idx), .fname = pcl_name(L)};
+}
+
+void pcl_luafn_free(void *ud) {
+    pcl_luafn *f = ud;
+    lua_State *L = pcl_current_state();
+    if (L)
+        for (int i = 0; i < f->n; i++) luaL_unref(L, LUA_REGISTRYINDEX, f->ref[i]);
+    free(f);
+}
+
+double pcl_luafn_call(pcl_luafn *f, int which, int item, const char *what, int nargs, const double *x) {
+    lua_State *L = pcl_current_state();
+    if (f->stack) lua_pushvalue(L, f->stack);
+    else lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[which]);
+    if (item > 0) {
+        lua_geti(L, -1, item);
+        lua_remove(L, -2);
+    }
+    for (int i = 0; i < nargs; i++) lua_pushnumber(L, x[i]);
+    double y;
+    if (pcl_call_number(L, nargs, f->fname, what ? what : "the function", &y) == PC_OK) return y;
+    f->failed++;
+    return NAN;
+}
+
+double pcl_luafn_of(double x, void *f) { return pcl_luafn_call(f, 0, 0, NULL, 1, &x); }
+
+double pcl_luafn_blend(void *f, double x) { return pcl_luafn_call(f, 0, 0, NULL, 1, &x); }
+
+double pcl_luafn_which(void *f, int which, double x) {
+    return which < ((pcl_luafn *)f)->n ? pcl_luafn_call(f, which, 0, NULL, 1, &x) : NAN;
+}
+
+double pcl_luafn_point(void *f, const double *x) { return pcl_luafn_call(f, 0, 0, NULL, ((pcl_luafn *)f)->nargs, x); }

@@ -1,0 +1,42 @@
+/* The explanations of the statuses of Konopatsky's constructions (konop_why.h): one row per
+ * operation and status (a second would never be found), each with a text, and the argument
+ * numbers those of the declarations. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <string.h>
+#include "konop_why.h"
+
+static void test_rows(void **state) {
+    (void)state;
+    int n = 0;
+    for (const pc_why *w = pc_konop_why; w->op; w++, n++) {
+        assert_non_null(w->text);
+        assert_true(strlen(w->text) > 5);
+        assert_true(w->status != PC_OK);
+        assert_true(w->arg >= -7 && w->arg <= 7);
+        assert_ptr_equal(pc_why_find(pc_konop_why, w->op, w->status), w);   /* the first: unique */
+    }
+    assert_true(n > 40);
+}
+
+static void test_lookups(void **state) {
+    (void)state;
+    const pc_why *w = pc_why_find(pc_konop_why, "conic.ed_k", PC_ENOTCOLLINEAR);
+    assert_non_null(w);
+    assert_int_equal(w->arg, 4);                      /* K */
+    w = pc_why_find(pc_konop_why, "conic.ceva_scheme", PC_EPOLE);
+    assert_int_equal(w->arg, -5);                     /* shows t */
+    assert_non_null(strstr(w->text, "%s"));
+    assert_null(pc_why_find(pc_konop_why, "conic.ed_k", PC_EDOMAIN));
+    assert_null(pc_why_find(pc_konop_why, "conic.nothing", PC_EDOMAIN));
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rows),
+        cmocka_unit_test(test_lookups),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
