@@ -12,6 +12,7 @@
 #include "reconstruct.h"
 #include "linalg.h"
 #include "buimov_parts.h"
+#include "pcl_books.h"
 
 #define PI 3.14159265358979323846
 
@@ -291,10 +292,8 @@ static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_S
 static int hermite_data(lua_State *L, pcl_val *a, double *p, double *dv) {
     pcl_read(L, a, 5);
     int d = a[0].n;
-    memcpy(p, a[0].v, sizeof(double) * (size_t)d);
-    memcpy(p + d, a[1].v, sizeof(double) * (size_t)d);
-    memcpy(dv, a[2].v, sizeof(double) * (size_t)d);
-    memcpy(dv + d, a[3].v, sizeof(double) * (size_t)d);
+    pcl_point_rows(a, 2, d, p);
+    pcl_point_rows(a + 2, 2, d, dv);
     return d;
 }
 
@@ -378,9 +377,7 @@ static int l_sphere(lua_State *L) {
     if (!(a[1].x > a[0].x) || !(a[3].x > a[2].x)) return pcl_fail(L, "need th0 < th1 and ph0 < ph1");
     int st;
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "buimov.sphere");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "buimov.sphere");
 }
 
 static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},

@@ -324,9 +324,7 @@ static int l_conic_sweep(lua_State *L) {
     if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
         return pcl_fail(L, "no conic through U, V, T with the tangents towards P and Q at u = %s (%s)", pcl_pushnum(L, u),
                         st == PC_EDOMAIN ? "T must lie between the tangent lines" : pc_strerror(st));
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.conic_sweep");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
 }
 
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"),
@@ -337,9 +335,7 @@ static int l_dome_rect(lua_State *L) {
     PCL_READ(L, a);
     int st;
     pc_surface *s = pc_surface_dome_rect(a[0].x, a[1].x, a[2].x, a[3].present ? a[3].v : NULL, &st);
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.dome_rect");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.dome_rect");
 }
 
 /* A corner of the triangle: a 2-D point (z = 0) or a 3-D one. */
@@ -375,9 +371,7 @@ static int l_dome_tri(lua_State *L) {
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
     if (!s && st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle ABC is flat in plan");
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.dome_tri");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 
 /* ---- the shells of 2015 -------------------------------------------------------------------- */
@@ -478,9 +472,7 @@ static int l_ridge_shell(lua_State *L) {
     if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
         return pcl_fail(L, "no conic arc of the profile at u = %s (%s)", pcl_pushnum(L, u),
                         st == PC_EDOMAIN ? "a T must lie between the tangent lines" : pc_strerror(st));
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.ridge_shell");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.ridge_shell");
 }
 
 /* ---- the conic's centre, axes and asymptotes ---------------------------------------------- */
@@ -531,8 +523,8 @@ static int l_plane_meet(lua_State *L) {
     pcl_val a[6] = {0};
     PCL_READ(L, a);
     double p[3][5], q[3][5], out[5];
-    for (int i = 0; i < 6; i++)
-        for (int k = 0; k < 5; k++) (i < 3 ? p[i] : q[i - 3])[k] = a[i].v[k];
+    pcl_point_rows(a, 3, 5, p[0]);
+    pcl_point_rows(a + 3, 3, 5, q[0]);
     int st = pc_meet_planes4(p, q, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pcl_snap_weight(4, out);
