@@ -81,7 +81,8 @@ static int l_poly_spline(lua_State *L) {
     int n = a[0].n, clamped = a[2].n == 1, bad = -1, st;
     if (clamped && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
-    pc_curve *c = pc_poly_spline_points(n, p, clamped ? PC_END_CLAMPED : PC_END_NATURAL, a[3].x, a[4].x, coef, &bad, &st);
+    pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
+    pc_curve *c = pc_poly_spline_points(n, p, ends, a[3].x, a[4].x, coef, &bad, &st);
     if (st == PC_EDOMAIN) return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
     if (!c) return knot_error(L, st, bad);
     pcl_pushcurve(L, c, "korotky.poly_spline");
@@ -510,7 +511,8 @@ static int l_conic_elements(lua_State *L) {
     if (c && c->ncp == 5 && !pc_conic_line_pair(c->cp, w))   /* the degenerate section AOD of Fig. 3c */
         return pcl_argfail(L, 1, "must be a 2-D conic arc (one rational quadratic piece) or the coefficients {a, b, c, d, e, f}, got a curve of two pieces");
     if (c && c->ncp == 5)
-        return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: its lines meet at W = P(%f, %f)", w[0], w[1]);
+        return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: "
+                        "its lines meet at W = P(%f, %f)", w[0], w[1]);
     int st = c ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
     if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");

@@ -409,9 +409,10 @@ static int compose(lua_State *L, pc_map *f, pc_map *g) {
 
 static int l_mul(lua_State *L) {
     pc_map *f = pcl_tomap(L, 1), *g = pcl_tomap(L, 2);
+    const char *kind = pc_map_is_affine(f ? f : g) ? "an affine map" : "a projective map";
     if (!f || !g)
-        return pcl_error(L, "cannot multiply %s by a %s: f * g composes two maps, and f(p) applies one",
-                         pc_map_is_affine(f ? f : g) ? "an affine map" : "a projective map", luaL_typename(L, f ? 2 : 1));
+        return pcl_error(L, "cannot multiply %s by a %s: f * g composes two maps, and f(p) applies one", kind,
+                         luaL_typename(L, f ? 2 : 1));
     return compose(L, f, g);
 }
 

@@ -38,11 +38,15 @@ static void test_vanishing(void **state) {
 
 static void test_why(void **state) {
     (void)state;
-    assert_string_equal(pc_map_points_why(PC_ECOLLINEAR, 2), "the source points are collinear, so they do not fix an affine map");
-    assert_string_equal(pc_map_points_why(PC_ECOLLINEAR, 3), "the source points are coplanar, so they do not fix an affine map");
-    assert_string_equal(pc_map_points_why(PC_ECOINCIDENT, 1), "the source points coincide, so they do not fix an affine map");
+    assert_string_equal(pc_map_points_why(PC_ECOLLINEAR, 2),
+                        "the source points are collinear, so they do not fix an affine map");
+    assert_string_equal(pc_map_points_why(PC_ECOLLINEAR, 3),
+                        "the source points are coplanar, so they do not fix an affine map");
+    assert_string_equal(pc_map_points_why(PC_ECOINCIDENT, 1),
+                        "the source points coincide, so they do not fix an affine map");
     assert_string_equal(pc_map_points_why(PC_EDIM, 2), pc_strerror(PC_EDIM));
-    assert_string_equal(pc_map_perspective_why(PC_ECOINCIDENT, 0), "the eye and p0 coincide, so there is no direction of view");
+    assert_string_equal(pc_map_perspective_why(PC_ECOINCIDENT, 0),
+                        "the eye and p0 coincide, so there is no direction of view");
     assert_non_null(strstr(pc_map_perspective_why(PC_ECOLLINEAR, 0), "the default up, the z axis,"));
     assert_non_null(strstr(pc_map_perspective_why(PC_ECOLLINEAR, 1), "argument #3 (up) is along"));
     assert_string_equal(pc_map_perspective_why(PC_ENONFINITE, 1), pc_strerror(PC_ENONFINITE));
