@@ -57,8 +57,8 @@ void pc_map_to_matrix(const pc_map *f, int rowvec, double *a) {
     int nin = f->nin, nout = f->nout;
     for (int i = 0; i <= nout; i++)
         for (int j = 0; j <= nin; j++) {
-            if (rowvec) a[j * (nout + 1) + i] = PC_MAP_AT(f, i, j);
-            else a[i * (nin + 1) + j] = PC_MAP_AT(f, i, j);
+            if (rowvec) a[j * (nout + 1) + i] = PC_MAP_AT(f, i, j) + 0.0;   /* no -0 */
+            else a[i * (nin + 1) + j] = PC_MAP_AT(f, i, j) + 0.0;
         }
 }
 

@@ -35,7 +35,7 @@ void pc_map_identity(pc_map *f, int n);
  * A last row (0 ... 0 | s), s != 0, is divided out (the textbook's overall scale: x* = x/s),
  * which gives an affine map. */
 int pc_map_from_matrix(pc_map *f, int nin, int nout, const double *a, int rowvec);
-/* The matrix in either convention, into a ((nin+1) * (nout+1) doubles). */
+/* The matrix in either convention, into a ((nin+1) * (nout+1) doubles; no -0). */
 void pc_map_to_matrix(const pc_map *f, int rowvec, double *a);
 /* Is the last row (0 ... 0 | 1) (exactly)? */
 int pc_map_is_affine(const pc_map *f);
@@ -131,5 +131,19 @@ int pc_map_foreshortening(const pc_map *f, double *factors);
  * zero d or s, PC_ECOLLINEAR for s along the axis. */
 int pc_map_axial_affinity(pc_map *f, const double a[2], const double d[2], const double s[2],
                           double k);
+
+/* --- map_parts.c ----------------------------------------------------------------------------- */
+/* The image (pc_map_image) of the origin (i = 0) or of the unit point of axis i (1..nin): a
+ * projection's screen points C0, C1, ...  PC_EDOMAIN for i out of range. */
+int pc_map_unit_image(const pc_map *f, int i, double *out);
+/* The vanishing points of a map from 3-D to 2-D or 3-D: the images of the x, y and z
+ * directions, rows of nout + 1 in out; finite[i] 0 for a direction that stays at infinity.
+ * PC_EDIM for other dimensions. */
+int pc_map_vanishing_points(const pc_map *f, double out[3][PC_MAXDIM + 1], int finite[3]);
+/* What a failure of pc_map_affine_points from nin-D means ("the source points are collinear,
+ * so they do not fix an affine map"), and of pc_map_perspective (up_given: whether up was
+ * given, else the default z axis); other statuses: pc_strerror. */
+const char *pc_map_points_why(int st, int nin);
+const char *pc_map_perspective_why(int st, int up_given);
 
 #endif

@@ -1,10 +1,6 @@
-/* Binding of the textbook's constructions (Buimov; stdlib/books/buimov/plane_curves.h, buimov.h,
- * reconstruct.h), in two tables:
- *   plane.*   ch. 3: circle3 circle2r circle_slopes arc3 classify rotate_conic conic_coef
- *             ellipse parabola hyperbola points
- *   buimov.*  ch. 2.8.6, 4, 5: knots basis bspline bernstein blend hermite hermite_coeffs
- *             spline helix sphere sphere_frame reconstruct calibrate
- * Curves and surfaces are the one curve and surface types, maps the one map type. */
+/* Binding of the textbook's constructions (Buimov; stdlib/books/buimov/), in the tables plane
+ * (ch. 3) and buimov (ch. 1.2, 2.8.6, 4, 5).  Curves and surfaces are the one curve and surface
+ * types, maps the one map type. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +11,8 @@
 #include "buimov.h"
 #include "reconstruct.h"
 #include "linalg.h"
+#include "buimov_parts.h"
+#include "pcl_books.h"
 
 #define PI 3.14159265358979323846
 
@@ -212,11 +210,7 @@ static int l_points(lua_State *L) {
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the steps leave the curve's domain (the explicit circle beyond x = -A, the sec form at 90 degrees)");
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    lua_createtable(L, n + 1, 0);
-    for (int i = 0; i <= n; i++) {
-        pcl_pushpoint(L, 2, xy + 2 * i);
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_push_values(L, n + 1, 2, xy, 0);
     return 1;
 }
 
@@ -298,10 +292,8 @@ static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_S
 static int hermite_data(lua_State *L, pcl_val *a, double *p, double *dv) {
     pcl_read(L, a, 5);
     int d = a[0].n;
-    memcpy(p, a[0].v, sizeof(double) * (size_t)d);
-    memcpy(p + d, a[1].v, sizeof(double) * (size_t)d);
-    memcpy(dv, a[2].v, sizeof(double) * (size_t)d);
-    memcpy(dv + d, a[3].v, sizeof(double) * (size_t)d);
+    pcl_point_rows(a, 2, d, p);
+    pcl_point_rows(a + 2, 2, d, dv);
     return d;
 }
 
@@ -385,9 +377,7 @@ static int l_sphere(lua_State *L) {
     if (!(a[1].x > a[0].x) || !(a[3].x > a[2].x)) return pcl_fail(L, "need th0 < th1 and ph0 < ph1");
     int st;
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "buimov.sphere");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "buimov.sphere");
 }
 
 static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
@@ -464,6 +454,45 @@ static int l_calibrate(lua_State *L) {
     return 2;
 }
 
+/* §4.3 the G1 joint of Bezier curves */
+#define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
+
+static int l_g1_next(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    const pc_curve *c = a[0].obj;
+    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q0[PC_MAXDIM], q1[PC_MAXDIM];
+    int n = pc_bezier_points(c, p);
+    if (n < 0) return pcl_argfail(L, 1, NOT_POLY);
+    if (!(a[2].x > 0)) return pcl_argfail(L, 3, "must be positive (the tangents keep their direction)");
+    int st = pc_bezier_g1_next(c->dim, n, p, (int)a[1].x, a[2].x, q0, q1);
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    pcl_pushpoint(L, c->dim, q0);
+    pcl_pushpoint(L, c->dim, q1);
+    return 2;
+}
+
+static int l_joint(lua_State *L) {
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    const pc_curve *P = a[0].obj, *Q = a[1].obj;
+    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], g;
+    int n = pc_bezier_points(P, p), m = pc_bezier_points(Q, q), kind;
+    if (n < 0 || m < 0) return pcl_argfail(L, n < 0 ? 1 : 2, NOT_POLY);
+    if (P->dim != Q->dim)
+        return pcl_fail(L, "argument #2 (Q) is %d-D, but argument #1 (P) is %d-D (mixed dimensions)", Q->dim, P->dim);
+    int st = pc_bezier_joint(P->dim, n, p, m, q, &kind, &g);
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    lua_pushstring(L, pc_bezier_joint_name(kind));
+    if (isnan(g)) lua_pushnil(L);
+    else lua_pushnumber(L, g);
+    return 2;
+}
+
+static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
+                                  A_NUMOPT("g", 1, "1"), PCL_END};
+static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
+
 static const pcl_fn plane[] = {
     PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),
     PCL_FN("plane.circle2r", l_circle2r, circle2r_args, "circle1, circle2", "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left."),
@@ -497,6 +526,10 @@ static const pcl_fn book[] = {
     {.name = "buimov.reconstruct", .fn = l_reconstruct, .args = reconstruct_args,
      .sig = "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual", .help = "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."},
     PCL_FN("buimov.calibrate", l_calibrate, calibrate_args, "map, rms", "The camera (a map from 3-D to 2-D) sending six or more points of space to their images, by least squares with T44 = 1 (§2.8.6)."),
+    PCL_FN("buimov.g1_next", l_g1_next, g1_args, "Q0, Q1",
+           "§4.3 The first two control points of the next Bezier curve of degree m joined to P with G1: Q0 = P_n, n (P_n - P_(n-1)) = g m (Q1 - Q0) (g = 1: C1)."),
+    PCL_FN("buimov.joint", l_joint, joint_args, "\"none\"|\"C0\"|\"G1\"|\"C1\", g",
+           "§4.3 The kind of joint of two polynomial Bezier curves and the g of n (P_n - P_(n-1)) = g m (Q1 - Q0)."),
     PCL_END};
 
 void pcl_open_buimov(lua_State *L) {
@@ -508,3 +541,6 @@ void pcl_open_buimov(lua_State *L) {
     pcl_register(L, -1, book, 0);
     lua_setfield(L, module, "buimov");
 }
+
+/* pointcalc.c still calls it: buimov.g1_next and buimov.joint are registered by pcl_open_buimov. */
+void pcl_open_buimov_more(lua_State *L) { (void)L; }

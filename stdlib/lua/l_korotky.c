@@ -1,19 +1,8 @@
-/* Binding of Korotky's nature-like curves and conic surfaces (stdlib/books/korotky/ferguson.h,
- * elastic.h, conic_surface.h), in the table `korotky`:
- *   korotky.poly_spline(points [, {ends =, s0 =, s1 =}])      -> curve, coefficients
- *   korotky.ferguson(points, tangents, moduli)                 -> curve
- *   korotky.ferguson_lambda(points, {TA =, TE =, wA =, wE =, lambda =})  -> curve
- *   korotky.ferguson_tangents(points, tangents [, {wA =, wE =, start =}]) -> curve, moduli
- *   korotky.ferguson_substitution(points, tangents, wA, z1 [, "min"|"max"])
- *                                                              -> curve, moduli, quadratics
- *   korotky.elastic(points [, {ends =, pieces =, length =}])   -> curve, energy (C2 spline)
- *   korotky.deviation(c1, c2 [, samples])  korotky.joint_jumps(c)  korotky.energy(c)
- *   korotky.conic_arc(U, tU, V, tV, T)                         -> curve, w, kind
- *   korotky.conic_sweep{U =, V =, T =, P =, Q =}               -> surface
- *   korotky.dome_rect(a0, b0, c0 [, origin])  korotky.dome_tri(A, B, C, h | D) -> surface
- *   korotky.graphical_slope(samples, x [, window])             -> slope, angle in degrees
- * A tangent is a slope tg(delta) (the direction (cos delta, sin delta), x growing) or a 2-D
- * vector.  Errors of the solvers name the knot (#1 is the first point). */
+/* Binding of Korotky's nature-like curves, conic surfaces and shells of 2015 (stdlib/books/
+ * korotky/), in the table `korotky`.  A tangent is a slope tg(delta) (the direction
+ * (cos delta, sin delta), x growing) or a 2-D vector.  Errors of the solvers name the knot (#1
+ * is the first point).  A guide or a pencil's spanning point is a curve or a fixed point (a
+ * vector: the point at infinity of its direction, as the basis point Z of the z axis). */
 #include <stdio.h>
 #include <math.h>
 #include <string.h>
@@ -23,10 +12,13 @@
 #include "elastic.h"
 #include "conic_surface.h"
 #include "graphdiff.h"
+#include "korotky_parts.h"
+#include "conic_props.h"
+#include "quadratic.h"
+#include "pcl_point.h"
+#include "pcl_books.h"
 
 #define MAXPTS PC_FERGUSON_MAXN
-
-void pcl_korotky_shells(lua_State *L);   /* the shells of 2015 (l_korotky_shells.c) */
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
@@ -69,20 +61,9 @@ static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, i
     }
 }
 
-/* the Cartesian rows of a list of 2-D points as x and y columns */
-static void columns(const pcl_val *p, double *x, double *y) {
-    for (int i = 0; i < p->n; i++) x[i] = p->list[2 * i], y[i] = p->list[2 * i + 1];
-}
-
 /* A solver's failure at knot bad (0-based). */
 static int knot_error(lua_State *L, int st, int bad) {
-    const char *why = st == PC_EDOMAIN      ? "no positive derivative moduli"
-                      : st == PC_ENOCONVERGE ? "Newton's method does not converge"
-                      : st == PC_ESINGULAR   ? "the system is singular"
-                      : st == PC_EZERO       ? "the tangent is the zero vector"
-                      : st == PC_ECOINCIDENT ? "the point repeats the one before"
-                                             : pc_strerror(st);
-    if (bad >= 0) return pcl_fail(L, "%s at knot #%d", why, bad + 1);
+    if (bad >= 0) return pcl_fail(L, "%s at knot #%d", pc_ferguson_why(st), bad + 1);
     return pcl_statuserror(L, pcl_name(L), st, NULL);
 }
 
@@ -94,22 +75,18 @@ static const pcl_arg poly_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices 
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
 
 static int l_poly_spline(lua_State *L) {
-    double p[2 * MAXPTS], x[MAXPTS], y[MAXPTS], coef[4 * MAXPTS];
+    double p[2 * MAXPTS], coef[4 * MAXPTS];
     pcl_val a[5] = {{.list = p, .cap = 2 * MAXPTS}};
     PCL_READ(L, a);
-    int n = a[0].n, clamped = a[2].n == 1;
-    columns(&a[0], x, y);
+    int n = a[0].n, clamped = a[2].n == 1, bad = -1, st;
     if (clamped && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
-    int bad = -1, st = pc_poly_spline(n, x, y, clamped ? PC_END_CLAMPED : PC_END_NATURAL, a[3].x, a[4].x, coef, &bad);
+    pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
+    pc_curve *c = pc_poly_spline_points(n, p, ends, a[3].x, a[4].x, coef, &bad, &st);
     if (st == PC_EDOMAIN) return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
-    if (st != PC_OK) return knot_error(L, st, bad);
-    pcl_push_made(L, pc_poly_spline_curve(n, x, coef, &st), &st, "korotky.poly_spline");
-    lua_createtable(L, n - 1, 0);
-    for (int i = 0; i < n - 1; i++) {
-        pcl_push_numbers(L, 4, coef + 4 * i);
-        lua_rawseti(L, -2, i + 1);
-    }
+    if (!c) return knot_error(L, st, bad);
+    pcl_pushcurve(L, c, "korotky.poly_spline");
+    pcl_push_rows(L, n - 1, 4, coef);
     return 2;
 }
 
@@ -197,11 +174,7 @@ static int l_ferguson_substitution(lua_State *L) {
     if (st != PC_OK) return knot_error(L, st, bad);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
-    lua_createtable(L, n - 2, 0);
-    for (int i = 0; i < n - 2; i++) {
-        pcl_push_numbers(L, 3, quad + 3 * i);
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_push_rows(L, n - 2, 3, quad);
     return 3;
 }
 
@@ -329,14 +302,7 @@ static int l_conic_arc(lua_State *L) {
     if (d < 2) return pcl_fail(L, "the points must be 2-D or more");
     double w;
     pc_curve *c = pc_conic_arc(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, &w, &st);
-    if (!c) {
-        const char *why = st == PC_ESKEW      ? "the tangents must lie in the plane of U, V and T"
-                          : st == PC_EDOMAIN  ? "T must lie between the tangent lines, on an arc from U to V that stays finite"
-                          : st == PC_ECOINCIDENT ? "U and V coincide"
-                          : st == PC_EZERO    ? "a tangent is the zero vector"
-                                              : pc_strerror(st);
-        return pcl_fail(L, "%s", why);
-    }
+    if (!c) return pcl_fail(L, "%s", pc_conic_arc_why(st));
     pcl_pushcurve(L, c, "korotky.conic_arc");
     lua_pushnumber(L, w);
     lua_pushstring(L, pc_conic_kind(w));
@@ -359,9 +325,7 @@ static int l_conic_sweep(lua_State *L) {
     if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
         return pcl_fail(L, "no conic through U, V, T with the tangents towards P and Q at u = %s (%s)", pcl_pushnum(L, u),
                         st == PC_EDOMAIN ? "T must lie between the tangent lines" : pc_strerror(st));
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.conic_sweep");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
 }
 
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"),
@@ -372,9 +336,7 @@ static int l_dome_rect(lua_State *L) {
     PCL_READ(L, a);
     int st;
     pc_surface *s = pc_surface_dome_rect(a[0].x, a[1].x, a[2].x, a[3].present ? a[3].v : NULL, &st);
-    if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.dome_rect");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.dome_rect");
 }
 
 /* A corner of the triangle: a 2-D point (z = 0) or a 3-D one. */
@@ -410,11 +372,172 @@ static int l_dome_tri(lua_State *L) {
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
     if (!s && st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle ABC is flat in plan");
+    return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
+}
+
+/* ---- the shells of 2015 -------------------------------------------------------------------- */
+
+/* A guide of dimension a->dim: a curve (out->obj), or a fixed point or vector (out->v, the
+ * weight snapped by the one rule) when a->lo is 1. */
+static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    pc_curve *c = pcl_tocurve(L, idx);
+    out->obj = c;
+    if (c) return c->dim == a->dim;
+    pcl_value *v = a->lo ? pcl_tovalue(L, idx) : NULL;
+    if (!v || v->n != a->dim) return 0;
+    memcpy(out->v, v->h, sizeof(double) * (size_t)(a->dim + 1));
+    return pcl_snap_weight(a->dim, out->v) != PC_KIND_WEIGHTED;
+}
+
+/* ---- the key construction in 4-D --------------------------------------------------------- */
+
+/* a pencil: three 4-D points, vectors or curves (the table in the argument keeps them alive) */
+static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
+    pc_pencil_point *g = (pc_pencil_point *)out->list;
+    static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4, .lo = 1};
+    for (int i = 0; i < 3; i++) {
+        pcl_val v = {0};
+        lua_geti(L, idx, i + 1);
+        if (!read_guide(L, lua_gettop(L), &g4, &v))
+            pcl_keyfail(L, a->name, "[%d] must be a 4-D point, vector or curve, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+        lua_pop(L, 1);
+        g[i].c = v.obj;
+        if (!v.obj) memcpy(g[i].h, v.v, sizeof g[i].h);
+    }
+    return 1;
+}
+#define PENCIL(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_pencil, .shown = "{g1, g2, g3}", \
+                    .expect = "a list of three 4-D points, vectors or curves"}
+static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
+static const pcl_arg pencils_args[] = {{.name = "pencils", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = pencil_keys}, PCL_END};
+
+static int l_two_pencils(lua_State *L) {
+    pc_pencil_point om[3], de[3];
+    pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
+    PCL_READ(L, a);
+    int st;
+    pc_surface *s = pc_surface_two_pencils(om, de, &st);
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.dome_tri");
+    /* a surface whose every meet fails is a mistake in the data: say so now */
+    double out[5];
+    st = s->fn(s->ud, .5, .5, 0, out);
+    if (st != PC_OK) {
+        pc_surface_release(s);
+        return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(st, 1));
+    }
+    pcl_pushsurface(L, s, "korotky.two_pencils");
     return 1;
 }
 
+/* ---- the rotational sweep and the ridge shell ---------------------------------------------- */
+
+static const pcl_arg revolve_keys[] = {{.name = "A", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "B", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "nA", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "nB", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
+                                       {.name = "ridge", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
+static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
+
+static int l_conic_revolve(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    int st;
+    double u = 0;
+    pc_surface *s = pc_surface_conic_revolve(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &u, &st);
+    if (!s && (st == PC_ECOLLINEAR || st == PC_EDOMAIN))
+        return pcl_fail(L, "%s at u = %s", pc_conic_revolve_why(st), pcl_pushnum(L, u));
+    if (!s) return pcl_fail(L, "%s", pc_conic_revolve_why(st));
+    pcl_pushsurface(L, s, "korotky.conic_revolve");
+    return 1;
+}
+
+#define GUIDE(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_guide, .dim = 3, .lo = 1, \
+                   .expect = "a 3-D curve, point or vector"}
+static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
+                                     GUIDE("H"), GUIDE("Q"), PCL_END};
+static const pcl_arg ridge_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = ridge_keys}, PCL_END};
+
+static int l_ridge_shell(lua_State *L) {
+    pcl_val a[9] = {0};
+    PCL_READ(L, a);
+    pc_pencil_point g[8];
+    for (int i = 0; i < 8; i++) {
+        g[i].c = a[i + 1].obj;
+        memcpy(g[i].h, a[i + 1].v, sizeof(double) * 4);
+    }
+    int st;
+    double u = 0;
+    pc_surface *s = pc_surface_ridge_shell_of(g, &u, &st);
+    if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
+        return pcl_fail(L, "no conic arc of the profile at u = %s (%s)", pcl_pushnum(L, u),
+                        st == PC_EDOMAIN ? "a T must lie between the tangent lines" : pc_strerror(st));
+    return pcl_push_made_surface(L, s, &st, "korotky.ridge_shell");
+}
+
+/* ---- the conic's centre, axes and asymptotes ---------------------------------------------- */
+
+/* a 2-D conic arc (a rational quadratic Bezier curve, out->obj) or six finite numbers (out->v) */
+static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    pc_curve *c = pcl_tocurve(L, idx);
+    out->obj = c;
+    /* an arc, or the line pair of korotky.conic_arc with T = W (two quadratic pieces, told
+     * apart in l_conic_elements) */
+    if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
+    if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
+    for (int i = 0; i < 6; i++) {
+        lua_geti(L, idx, i + 1);
+        out->v[i] = lua_tonumber(L, -1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(out->v[i]))
+            pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+        lua_pop(L, 1);
+    }
+    return 1;
+}
+static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .kind = PCL_ANY, .read = read_conic,
+                                         .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
+                                        PCL_END};
+
+static int l_conic_elements(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
+     * weights as they are; the same table as c:conic() */
+    pc_conic_info o;
+    const pc_curve *c = a[0].obj;
+    double w[2];
+    if (c && c->ncp == 5 && !pc_conic_line_pair(c->cp, w))   /* the degenerate section AOD of Fig. 3c */
+        return pcl_argfail(L, 1, "must be a 2-D conic arc (one rational quadratic piece) or the coefficients {a, b, c, d, e, f}, got a curve of two pieces");
+    if (c && c->ncp == 5)
+        return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: "
+                        "its lines meet at W = P(%f, %f)", w[0], w[1]);
+    int st = c ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
+    if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");
+    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1");
+    pcl_push_conic_info(L, &o);
+    return 1;
+}
+
+static int l_plane_meet(lua_State *L) {
+    pcl_val a[6] = {0};
+    PCL_READ(L, a);
+    double p[3][5], q[3][5], out[5];
+    pcl_point_rows(a, 3, 5, p[0]);
+    pcl_point_rows(a + 3, 3, 5, q[0]);
+    int st = pc_meet_planes4(p, q, out);
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
+    pcl_snap_weight(4, out);
+    pcl_value *r = pcl_newvalue(L, 4);
+    for (int k = 0; k < 5; k++) r->h[k] = out[k];
+    return 1;
+}
+
+#define A_LOC4(nm) {.name = nm, .kind = PCL_LOC, .dim = 4}
+static const pcl_arg meet_args[] = {A_LOC4("P1"), A_LOC4("P2"), A_LOC4("P3"),
+                                    A_LOC4("Q1"), A_LOC4("Q2"), A_LOC4("Q3"), PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef",
      "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
@@ -435,11 +558,19 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.conic_sweep", l_conic_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
     PCL_FN("korotky.dome_rect", l_dome_rect, rect_args, "s", "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses."),
     PCL_FN("korotky.dome_tri", l_dome_tri, tri_args, "s", "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D) over (u, v) in [0, 1]^2 with the plan point A + (B - A) u(1 - v) + (C - A) uv: u-isolines are the ellipses parallel to BC."),
+    PCL_FN("korotky.conic_elements", l_conic_elements, elements_args, "{kind, coef, center, axes, semi, foci, e, p, asymptotes, ...}", "The conic of a 2-D conic arc with any weights (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): the table of c:conic(): kind, coefficients, centre (a parabola's vertex), unit principal axes (major or transverse first), semi-axes, foci, e, p, a hyperbola's unit asymptote directions, and for an arc mu, w and the engineering discriminant k."),
+    PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
+    PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
+    PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
+    PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K",
+           "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
     PCL_END};
 
 void pcl_open_korotky(lua_State *L) {
     lua_newtable(L);
     pcl_register(L, -1, fns, 0);
-    pcl_korotky_shells(L);
     lua_setfield(L, -2, "korotky");
 }
+
+/* pointcalc.c still calls it: korotky.plane_meet is registered by pcl_open_korotky. */
+void pcl_open_korotky_meet(lua_State *L) { (void)L; }

@@ -1,24 +1,6 @@
 /* Binding of the one map type (stdlib/geom/map.h): one userdata "map" for affine and
- * projective maps, the 3-D -> 2-D projections and the textbook's matrices.
- *
- *   f = affine({A, B, C}, {A2, B2, C2})   the map sending A to A2, B to B2, C to C2 (2-D by 3 pairs,
- *                                          3-D by 4; the images may have another dimension)
- *   f = affine.frame(O, X, Y [, Z])        (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); axes
- *                                          may also be given as vectors
- *   affine.identity(n)
- *   map.matrix(rows [, "row"|"column"])    the homogeneous matrix; "row": the textbook's p' = p T
- *   map.translate(V)  map.scale(k | {kx, ky, ...} [, centre | n])  map.rotate(angle [, centre])
- *   map.rotate(A, B | direction, angle)    map.reflect(A, normal)  map.shear(n, i, j, k)
- *   map.orthographic("z"|"y"|"x")  map.axonometric(phi, theta)  map.isometric()  map.dimetric(fz)
- *   map.oblique(k, alpha)  map.cavalier([alpha])  map.cabinet([alpha])  map.perspective(eye, p0 [, up])
- *   f(p), f(x, y, ...)                     apply (vectors ignore a translation; a point sent to
- *                                          infinity gives its direction, a vector)
- *   f:xy(p), f:xy(x, y, ...)               the image's coordinates as numbers
- *   f * g, f:compose(g)                    g first, then f
- *   f:inverse()                            singular or non-square maps are an error
- *   f:matrix([convention])  f:is_affine()  f:vanishing_points()  f:show([convention])
- *   f.nin, f.nout, f.C0, f.C1, ...         dimensions; the images of the origin and unit points
- * The projections of l_curvilinear.c (projection, oblique) are maps of this type too. */
+ * projective maps, the 3-D -> 2-D projections and the textbook's matrices, in the tables
+ * affine and map; the projections of l_curvilinear.c are maps of this type too. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,6 +8,7 @@
 #include "pcl_args.h"
 #include "pcl_point.h"
 #include "pcl_curve.h"
+#include "pcl_books.h"
 #include "map.h"
 
 static const char REGKEY[] = "pointcalc.map";      /* the metatable in the registry */
@@ -46,19 +29,14 @@ pc_map *pcl_newmap(lua_State *L) {
 }
 #define newmap pcl_newmap
 
-static const char *kind_of(const pc_map *f) {
-    return pc_map_is_affine(f) ? "an affine map" : "a projective map";
-}
-
 static const char *const CONVENTIONS[] = {"row", "column", NULL};   /* index 0: the textbook's rows */
 #define CONVENTION {.name = "convention", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = CONVENTIONS, .dflt = 1}
 
 /* ---- affine(src, dst), affine.frame, affine.identity ----------------------------------------- */
 
-/* The points of argument #k (a table, or a simplex) into out; returns their count, *dim their
- * dimension. */
+/* The points of argument #k (a table, or a simplex) into out; their count, *dim their dimension. */
 static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
-    int t = lua_type(L, idx);                        /* a table, or a simplex */
+    int t = lua_type(L, idx);
     if (t == LUA_TUSERDATA && luaL_getmetafield(L, idx, "__len") != LUA_TNIL) lua_pop(L, 1);
     else if (t != LUA_TTABLE) return pcl_argfail(L, k, "must be a table of points or a simplex, got %s", pcl_shown(L, idx));
     int m = (int)luaL_len(L, idx);
@@ -90,14 +68,8 @@ static int l_affine(lua_State *L) {
     if (m < 2) return pcl_argfail(L, 1, "holds %d points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", m);
     if (m != nin + 1) return pcl_argfail(L, 1, "holds %d %d-D points; a map of %d-D needs %d (dimension + 1)", m, nin, nin, nin + 1);
     if (m2 != m) return pcl_argfail(L, 2, "holds %d points, argument #1 %d: they must pair up", m2, m);
-    pc_map *f = newmap(L);
-    int st = pc_map_affine_points(f, nin, nout, src, dst);
-    if (st == PC_ECOINCIDENT || st == PC_ECOLLINEAR) {
-        const char *how = nin == 1 ? "coincide" : nin == 2 ? "are collinear" : nin == 3 ? "are coplanar" : "are dependent";
-        return pcl_fail(L, "the source points %s, so they do not fix an affine map", how);
-    }
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    return 1;
+    int st = pc_map_affine_points(newmap(L), nin, nout, src, dst);
+    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_points_why(st, nin));
 }
 
 /* affine.frame(O, X, Y [, Z ...]): axes given as unit points or as vectors */
@@ -147,12 +119,9 @@ static int l_matrix_ctor(lua_State *L) {
                            "(\"row\": n + 1 rows of m + 1), n and m 1..%d", nr, PC_MAXDIM);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, 0, m, &nr, &nc);
-    pc_map f;
-    int st = pc_map_from_matrix(&f, rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec);
+    int st = pc_map_from_matrix(newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec);
     if (st == PC_ESINGULAR) return pcl_fail(L, "the zero matrix is no map (it sends every point nowhere)");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    *newmap(L) = f;
-    return 1;
+    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
 }
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
@@ -219,14 +188,11 @@ static int l_rotate(lua_State *L) {
         pcl_readone(L, 3, 3, 0, &angle, 0, &t);
         double d[3];
         for (int i = 0; i < 3; i++) d[i] = B.v[i] - (is_dir ? 0 : A.v[i]);
-        pc_map f;
-        int st = pc_map_rotate3(&f, A.v, d, t.x);
+        int st = pc_map_rotate3(newmap(L), A.v, d, t.x);
         if (st == PC_EZERO)
             return pcl_fail(L, "%s", is_dir ? "argument #2 (direction) is the zero vector, which gives no axis"
                                             : "the axis points A and B coincide, so they give no axis");
-        if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-        *newmap(L) = f;
-        return 1;
+        return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
     }
     pcl_readone(L, 1, 1, 0, &angle, 0, &t);
     if (a[1].present) {
@@ -245,12 +211,9 @@ static const pcl_arg reflect_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("normal"),
 static int l_reflect(lua_State *L) {
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    pc_map f;
-    int st = pc_map_reflect(&f, a[0].n, a[0].v, a[1].v);
+    int st = pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v);
     if (st == PC_EZERO) return pcl_argfail(L, 2, "is the zero vector, which gives no mirror");
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    *newmap(L) = f;
-    return 1;
+    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
 }
 
 /* Argument #k, an axis: 1..n or "x", "y", "z", "w"; returns it 0-based. */
@@ -332,20 +295,42 @@ static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name
 static int l_perspective(lua_State *L) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
-    pc_map f;
-    int st = pc_map_perspective(&f, a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
-    switch (st) {
-    case PC_OK: break;
-    case PC_ECOINCIDENT: return pcl_fail(L, "the eye and p0 coincide, so there is no direction of view");
-    case PC_EZERO: return pcl_argfail(L, 3, "is the zero vector");
-    case PC_ECOLLINEAR:
-        return pcl_fail(L, "%s is along the line of sight, so it gives no upward direction in the picture; give another up",
-                        a[2].present ? "argument #3 (up)" : "the default up, the z axis,");
-    default: return pcl_fail(L, "%s", pc_strerror(st));
-    }
-    *newmap(L) = f;
-    return 1;
+    int st = pc_map_perspective(newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
+    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
 }
+
+/* the textbook's perspective by (p, q, r) (§2.8.5), the foreshortening of an axonometry (§2.8.3),
+ * the plane's axial affinity (geom/map_more.c) */
+static int l_perspective_pqr(lua_State *L) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    int st = pc_map_perspective_pqr(newmap(L), a[0].x, a[1].x, a[2].x);
+    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+}
+
+static int l_foreshortening(lua_State *L) {
+    pcl_val a[1] = {0};
+    PCL_READ(L, a);
+    const pc_map *f = a[0].obj;
+    double k[PC_MAXDIM];
+    if (pc_map_foreshortening(f, k) != PC_OK)
+        return pcl_fail(L, "a perspective (projective) map has no constant foreshortening; give an affine map (an axonometry)");
+    for (int i = 0; i < f->nin; i++) lua_pushnumber(L, k[i]);
+    return f->nin;
+}
+
+static int l_axial_affinity(lua_State *L) {
+    pcl_val a[4] = {0};
+    PCL_READ(L, a);
+    int st = pc_map_axial_affinity(newmap(L), a[0].v, a[1].v, a[2].v, a[3].x);
+    if (st == PC_EZERO) return pcl_fail(L, "the directions d and s must not be zero");
+    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the direction s lies along the axis d: no affinity");
+    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+}
+
+static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
+static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
+static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
 
 /* ---- applying a map ------------------------------------------------------------------------- */
 
@@ -417,18 +402,17 @@ static int l_xy(lua_State *L) {
 }
 
 static int compose(lua_State *L, pc_map *f, pc_map *g) {
-    pc_map h;
-    if (pc_map_compose(f, g, &h) != PC_OK)
+    if (pc_map_compose(f, g, newmap(L)) != PC_OK)
         return pcl_error(L, "cannot compose: the first map applied gives %d-D, the second takes %d-D", g->nout, f->nin);
-    *newmap(L) = h;
     return 1;
 }
 
 static int l_mul(lua_State *L) {
     pc_map *f = pcl_tomap(L, 1), *g = pcl_tomap(L, 2);
+    const char *kind = pc_map_is_affine(f ? f : g) ? "an affine map" : "a projective map";
     if (!f || !g)
-        return pcl_error(L, "cannot multiply %s by a %s: f * g composes two maps, and f(p) applies one",
-                         kind_of(f ? f : g), luaL_typename(L, f ? 2 : 1));
+        return pcl_error(L, "cannot multiply %s by a %s: f * g composes two maps, and f(p) applies one", kind,
+                         luaL_typename(L, f ? 2 : 1));
     return compose(L, f, g);
 }
 
@@ -441,12 +425,10 @@ static int l_compose(lua_State *L) {
 }
 
 static int l_inverse(lua_State *L) {
-    pc_map *f = pcl_read(L, NULL, 0), inv;
-    int st = pc_map_inverse(f, &inv);
+    pc_map *f = pcl_read(L, NULL, 0);
+    int st = pc_map_inverse(f, newmap(L));
     if (st == PC_EDIM) return pcl_fail(L, "a map from %d-D to %d-D (a projection or an embedding) has no inverse", f->nin, f->nout);
-    if (st != PC_OK) return pcl_fail(L, "the map is singular (it flattens space), so it has no inverse");
-    *newmap(L) = inv;
-    return 1;
+    return st == PC_OK ? 1 : pcl_fail(L, "the map is singular (it flattens space), so it has no inverse");
 }
 
 static const pcl_arg conv_arg[] = {CONVENTION, PCL_END};
@@ -457,13 +439,7 @@ static int l_matrix(lua_State *L) {
     int rowvec = a[0].n == 0;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pc_map_to_matrix(f, rowvec, m);
-    int nr = rowvec ? f->nin + 1 : f->nout + 1, nc = rowvec ? f->nout + 1 : f->nin + 1;
-    lua_createtable(L, nr, 0);
-    for (int i = 0; i < nr * nc; i++) m[i] += 0.0;   /* no -0 */
-    for (int i = 0; i < nr; i++) {
-        pcl_push_numbers(L, nc, m + i * nc);
-        lua_rawseti(L, -2, i + 1);
-    }
+    pcl_push_rows(L, rowvec ? f->nin + 1 : f->nout + 1, rowvec ? f->nout + 1 : f->nin + 1, m);
     return 1;
 }
 
@@ -474,18 +450,14 @@ static int l_is_affine(lua_State *L) {
 
 static int l_vanishing(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
-    if (f->nin != 3 || f->nout < 2 || f->nout > 3)
+    double out[3][PC_MAXDIM + 1];
+    int finite[3];
+    if (pc_map_vanishing_points(f, out, finite) != PC_OK)
         return pcl_fail(L, "the map goes from %d-D to %d-D; vanishing points are the images of the axis "
                         "directions of a map from 3-D to 2-D or 3-D", f->nin, f->nout);
     for (int i = 0; i < 3; i++) {
-        double in[4] = {0, 0, 0, 0}, out[4];
-        in[i] = 1;
-        if (image(f, in, out) != PC_OK || out[f->nout] == 0) {
-            lua_pushnil(L);                    /* the direction stays at infinity */
-        } else {
-            pcl_value *v = pcl_newvalue(L, f->nout);
-            memcpy(v->h, out, sizeof(double) * (size_t)(f->nout + 1));
-        }
+        if (finite[i]) memcpy(pcl_newvalue(L, f->nout)->h, out[i], sizeof(double) * (size_t)(f->nout + 1));
+        else lua_pushnil(L);                   /* the direction stays at infinity */
     }
     return 3;
 }
@@ -525,20 +497,15 @@ static int l_index(lua_State *L) {
     pc_map *f = pcl_tomap(L, 1);
     if (!f) return 0;
     const char *k = lua_tostring(L, 2);
-    if (!strcmp(k, "nin")) { lua_pushinteger(L, f->nin); return 1; }
-    if (!strcmp(k, "nout")) { lua_pushinteger(L, f->nout); return 1; }
-    if (k[0] == 'C' && k[1] >= '0' && k[1] <= '9') {
-        char *end;
-        long i = strtol(k + 1, &end, 10);
-        if (*end || i > f->nin || (k[1] == '0' && k[2])) return 0;
-        double in[PC_MAXDIM + 1] = {0};
-        in[f->nin] = 1;
-        if (i > 0) in[i - 1] = 1;
-        pcl_value *v = pcl_newvalue(L, f->nout);
-        if (pc_map_image(f, in, v->h) == PC_EPOLE) return 0;
+    if (!strcmp(k, "nin") || !strcmp(k, "nout")) {
+        lua_pushinteger(L, k[1] == 'i' ? f->nin : f->nout);
         return 1;
     }
-    return 0;
+    char *end;
+    long i = k[0] == 'C' && k[1] >= '0' && k[1] <= '9' ? strtol(k + 1, &end, 10) : -1;
+    if (i < 0 || *end || (k[1] == '0' && k[2])) return 0;
+    int st = pc_map_unit_image(f, (int)i, pcl_newvalue(L, f->nout)->h);
+    return st != PC_EPOLE && st != PC_EDOMAIN;   /* a point at infinity is its direction */
 }
 
 #define METHOD(nm, f, a, res, text) {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_map, .selftype = "map"}
@@ -572,6 +539,12 @@ static const pcl_fn ctors[] = {
     PCL_FN("map.cavalier", l_cavalier, alpha_arg, "f", "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees."),
     PCL_FN("map.cabinet", l_cabinet, alpha_arg, "f", "The oblique projection with k = 1/2; alpha defaults to 45 degrees."),
     PCL_FN("map.perspective", l_perspective, persp_args, "f", "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point."),
+    PCL_FN("map.perspective_pqr", l_perspective_pqr, pqr_args, "f",
+           "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
+    {.name = "map.foreshortening", .fn = l_foreshortening, .args = map_args, .result = "fx, fy, fz",
+     .help = "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3)."},
+    PCL_FN("map.axial_affinity", l_axial_affinity, affinity_args, "f",
+           "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection)."),
     PCL_END};
 
 void pcl_open_map(lua_State *L) {
@@ -593,3 +566,6 @@ void pcl_open_map(lua_State *L) {
     lua_setfield(L, module, "map");
     lua_settop(L, module);
 }
+
+/* pointcalc.c still calls it: map.perspective_pqr and the rest are registered by pcl_open_map. */
+void pcl_open_map_more(lua_State *L) { (void)L; }

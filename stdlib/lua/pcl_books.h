@@ -1,4 +1,5 @@
-/* Shared by the bindings of the books' conics (l_conic_elements.c, l_korotky_shells.c). */
+/* Shared by the bindings of the books and the maps (l_buimov.c, l_korotky.c, l_map.c,
+ * l_conic_elements.c). */
 #ifndef PCL_BOOKS_H
 #define PCL_BOOKS_H
 #include "pcl.h"
@@ -7,5 +8,11 @@
  * center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva. */
 struct pc_conic_info;
 void pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
+/* Push a table of nr rows, each a list of nc numbers, from m row by row (pcl_books.c). */
+void pcl_push_rows(lua_State *L, int nr, int nc, const double *m);
+/* Push the surface a core constructor made (kind: the constructor's name, static) and return
+ * 1, or, when it made none (s NULL), raise its status *st: the surfaces' pcl_push_made. */
+struct pc_surface;
+int pcl_push_made_surface(lua_State *L, struct pc_surface *s, const int *st, const char *kind);
 
 #endif

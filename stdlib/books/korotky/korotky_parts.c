@@ -1,0 +1,90 @@
+/* The parts of Korotky's constructions the bindings need (korotky_parts.h). */
+#include <math.h>
+#include <string.h>
+#include "korotky_parts.h"
+
+pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
+                                double *coef, int *bad, int *status) {
+    double x[PC_FERGUSON_MAXN], y[PC_FERGUSON_MAXN];
+    if (n < 2 || n > PC_FERGUSON_MAXN) {
+        *status = PC_EARG;
+        return NULL;
+    }
+    for (int i = 0; i < n; i++) x[i] = p[2 * i], y[i] = p[2 * i + 1];
+    *status = pc_poly_spline(n, x, y, ends, s0, s1, coef, bad);
+    return *status == PC_OK ? pc_poly_spline_curve(n, x, coef, status) : NULL;
+}
+
+/* a constant curve at the homogeneous 3-D point h */
+static pc_curve *constant_curve(const double *h, int *status) {
+    double cp[8];
+    memcpy(cp, h, sizeof(double) * 4);
+    memcpy(cp + 4, h, sizeof(double) * 4);
+    return pc_curve_bezier(3, 2, cp, status);
+}
+
+pc_surface *pc_surface_ridge_shell_of(const pc_pencil_point g[8], double *bad_u, int *status) {
+    pc_curve *c[8];
+    int ok = 1;
+    for (int i = 0; i < 8; i++) {
+        c[i] = g[i].c ? pc_curve_retain(g[i].c) : constant_curve(g[i].h, status);
+        ok &= c[i] != NULL;
+    }
+    pc_ridge_shell r = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]};
+    pc_surface *s = ok ? pc_surface_ridge_shell(&r, bad_u, status) : NULL;
+    for (int i = 0; i < 8; i++) pc_curve_release(c[i]);
+    return s;
+}
+
+int pc_conic_line_pair(const double *cp, double w[2]) {
+    double q[5][2];
+    for (int i = 0; i < 5; i++) {
+        double wt = cp[3 * i + 2];
+        q[i][0] = wt != 0 ? cp[3 * i] / wt : NAN;
+        q[i][1] = wt != 0 ? cp[3 * i + 1] / wt : NAN;
+    }
+    /* both pieces straight: U, its midpoint, W and W, its midpoint, V */
+    for (int k = 0; k < 2; k++) {
+        const double *a = q[2 * k], *m = q[2 * k + 1], *b = q[2 * k + 2];
+        double cr = (m[0] - a[0]) * (b[1] - a[1]) - (m[1] - a[1]) * (b[0] - a[0]);
+        double tol = 1e-12 * (1 + hypot(b[0] - a[0], b[1] - a[1]) * hypot(m[0] - a[0], m[1] - a[1]));
+        if (!(isfinite(cr) && fabs(cr) <= tol)) return 0;
+    }
+    w[0] = q[2][0], w[1] = q[2][1];
+    return 1;
+}
+
+const char *pc_ferguson_why(int st) {
+    return st == PC_EDOMAIN      ? "no positive derivative moduli"
+           : st == PC_ENOCONVERGE ? "Newton's method does not converge"
+           : st == PC_ESINGULAR   ? "the system is singular"
+           : st == PC_EZERO       ? "the tangent is the zero vector"
+           : st == PC_ECOINCIDENT ? "the point repeats the one before"
+                                  : pc_strerror(st);
+}
+
+const char *pc_conic_arc_why(int st) {
+    return st == PC_ESKEW        ? "the tangents must lie in the plane of U, V and T"
+           : st == PC_EDOMAIN     ? "T must lie between the tangent lines, on an arc from U to V that stays finite"
+           : st == PC_ECOINCIDENT ? "U and V coincide"
+           : st == PC_EZERO       ? "a tangent is the zero vector"
+                                  : pc_strerror(st);
+}
+
+const char *pc_conic_revolve_why(int st) {
+    return st == PC_ECOLLINEAR   ? "the ridge point lies on the axis AB"
+           : st == PC_EDOMAIN     ? "no conic through A, B and the ridge point with those tangent planes"
+           : st == PC_ECOINCIDENT ? "A and B coincide"
+           : st == PC_EZERO       ? "a tangent plane's normal is the zero vector"
+                                  : pc_strerror(st);
+}
+
+const char *pc_meet_planes4_why(int st, int pencil) {
+    if (st == PC_ESAME_LINE)
+        return pencil ? "the planes share a line (a plane of one pencil holds the other's basis points)"
+                      : "the planes share a line (more than one common point)";
+    if (st == PC_ESKEW)
+        return pencil ? "the flats do not meet (a pencil's points span only a line)"
+                      : "the planes do not meet (a spanning triple is collinear, or they are parallel)";
+    return pc_strerror(st);
+}

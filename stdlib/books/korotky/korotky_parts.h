@@ -1,0 +1,31 @@
+/* What the bindings of Korotky's constructions need besides the constructions themselves
+ * (korotky_parts.c): the polynomial spline of a list of points, the ridge shell of guides that
+ * may be fixed points, the line pair of a degenerate conic section, and what each
+ * construction's failure statuses mean, in the words the messages use. */
+#ifndef PC_KOROTKY_PARTS_H
+#define PC_KOROTKY_PARTS_H
+
+#include "ferguson.h"
+#include "pencils4.h"
+#include "conic_shells.h"
+
+/* pc_poly_spline and pc_poly_spline_curve of the points p (n rows of 2, x increasing): the
+ * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
+pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
+                                double *coef, int *bad, int *status);
+/* pc_surface_ridge_shell of the guides U, R, V, T1, T2, P, H, Q in that order, each a 3-D
+ * curve or (c NULL) the fixed homogeneous point h[0..3] (a constant curve). */
+pc_surface *pc_surface_ridge_shell_of(const pc_pencil_point g[8], double *bad_u, int *status);
+/* The two quadratic pieces of korotky.conic_arc with T = W (5 homogeneous 2-D control points
+ * cp, U .. W .. V): 1 if both are straight (the line pair U W V), with W into w[2]; else 0. */
+int pc_conic_line_pair(const double *cp, double w[2]);
+
+/* The meaning of a failure status: of the Ferguson solvers (at a knot), of pc_conic_arc, of
+ * pc_surface_conic_revolve, of pc_meet_planes4 (plane_meet: two planes given; pencil: the
+ * planes of two pencils).  Other statuses: pc_strerror. */
+const char *pc_ferguson_why(int st);
+const char *pc_conic_arc_why(int st);
+const char *pc_conic_revolve_why(int st);
+const char *pc_meet_planes4_why(int st, int pencil);
+
+#endif

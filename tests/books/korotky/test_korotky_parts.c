@@ -1,0 +1,94 @@
+/* The parts of Korotky's constructions the bindings use (korotky_parts.h): the spline of a
+ * list of points, the ridge shell of fixed guides, the line pair of a degenerate section and
+ * the meaning of the failure statuses. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include <string.h>
+#include "korotky_parts.h"
+
+#define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
+
+static void test_poly_spline_points(void **state) {
+    (void)state;
+    /* y = x^2 sampled at 0, 1, 2 with clamped slopes 0 and 4: the spline is the parabola */
+    const double p[6] = {0, 0, 1, 1, 2, 4};
+    double coef[8], xy[2];
+    int bad = -1, st;
+    pc_curve *c = pc_poly_spline_points(3, p, PC_END_CLAMPED, 0, 4, coef, &bad, &st);
+    assert_non_null(c);
+    assert_int_equal(st, PC_OK);
+    NEAR(coef[0], 0, 1e-14); NEAR(coef[1], 0, 1e-14); NEAR(coef[2], 1, 1e-14); NEAR(coef[3], 0, 1e-14);
+    assert_int_equal(pc_curve_eval(c, 1.5, xy), PC_OK);
+    NEAR(xy[0], 1.5, 1e-14); NEAR(xy[1], 2.25, 1e-14);
+    pc_curve_release(c);
+    const double back[6] = {0, 0, 1, 1, 1, 4};   /* x does not increase at the third point */
+    assert_null(pc_poly_spline_points(3, back, PC_END_NATURAL, 0, 0, coef, &bad, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_int_equal(bad, 2);
+}
+
+static pc_curve *segment(double x0, double y0, double z0, double x1, double y1, double z1) {
+    double cp[8] = {x0, y0, z0, 1, x1, y1, z1, 1};
+    int st;
+    return pc_curve_bezier(3, 2, cp, &st);
+}
+
+static void test_ridge_shell_of(void **state) {
+    (void)state;
+    /* the quarter ellipse from U = (x, -2, 0) to R = (x, 0, 1.5), then the straight segment
+     * down to V = (x, 2, 0), as test_korotky_shells.c, with P, H, Q fixed directions */
+    const double c = sqrt(.5);
+    pc_pencil_point g[8] = {{segment(0, -2, 0, 4, -2, 0), {0}}, {segment(0, 0, 1.5, 4, 0, 1.5), {0}},
+                            {segment(0, 2, 0, 4, 2, 0), {0}},
+                            {segment(0, -2 * c, 1.5 * c, 4, -2 * c, 1.5 * c), {0}},
+                            {segment(0, 1, .75, 4, 1, .75), {0}}, {NULL, {0, 0, 1, 0}}, {NULL, {0, 1, 0, 0}},
+                            {NULL, {0, 0, 1, 0}}};
+    int st;
+    pc_surface *s = pc_surface_ridge_shell_of(g, NULL, &st);
+    assert_non_null(s);
+    for (int j = 0; j <= 8; j++) {
+        double S[3];
+        assert_int_equal(pc_surface_eval(s, .5, j / 8.0, S), PC_OK);
+        NEAR(S[0], 2, 1e-12);
+        NEAR(S[1] * S[1] / 4 + S[2] * S[2] / 2.25, 1, 1e-12);
+    }
+    pc_surface_release(s);
+    for (int i = 0; i < 5; i++) pc_curve_release(g[i].c);
+}
+
+static void test_line_pair(void **state) {
+    (void)state;
+    /* U = (0, 0), its midpoint with W, W = (1, 1) twice, then towards V = (2, 0); weights 2 */
+    const double pair[15] = {0, 0, 2, 1, 1, 2, 2, 2, 2, 3, 1, 2, 4, 0, 2};
+    double w[2];
+    assert_int_equal(pc_conic_line_pair(pair, w), 1);
+    NEAR(w[0], 1, 0); NEAR(w[1], 1, 0);
+    const double bent[15] = {0, 0, 1, 1, 0, 1, 1, 1, 1, 1.5, .5, 1, 2, 0, 1};
+    assert_int_equal(pc_conic_line_pair(bent, w), 0);
+}
+
+static void test_why(void **state) {
+    (void)state;
+    assert_string_equal(pc_ferguson_why(PC_ENOCONVERGE), "Newton's method does not converge");
+    assert_string_equal(pc_ferguson_why(PC_ECOINCIDENT), "the point repeats the one before");
+    assert_string_equal(pc_ferguson_why(PC_EDIM), pc_strerror(PC_EDIM));
+    assert_string_equal(pc_conic_arc_why(PC_ECOINCIDENT), "U and V coincide");
+    assert_string_equal(pc_conic_arc_why(PC_ESKEW), "the tangents must lie in the plane of U, V and T");
+    assert_string_equal(pc_conic_revolve_why(PC_ECOLLINEAR), "the ridge point lies on the axis AB");
+    assert_string_equal(pc_conic_revolve_why(PC_EZERO), "a tangent plane's normal is the zero vector");
+    assert_non_null(strstr(pc_meet_planes4_why(PC_ESAME_LINE, 0), "more than one common point"));
+    assert_non_null(strstr(pc_meet_planes4_why(PC_ESAME_LINE, 1), "a plane of one pencil"));
+    assert_non_null(strstr(pc_meet_planes4_why(PC_ESKEW, 1), "span only a line"));
+    assert_string_equal(pc_meet_planes4_why(PC_ENONFINITE, 0), pc_strerror(PC_ENONFINITE));
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_poly_spline_points), cmocka_unit_test(test_ridge_shell_of),
+        cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
