@@ -541,6 +541,3 @@ void pcl_open_buimov(lua_State *L) {
     pcl_register(L, -1, book, 0);
     lua_setfield(L, module, "buimov");
 }
-
-/* pointcalc.c still calls it: buimov.g1_next and buimov.joint are registered by pcl_open_buimov. */
-void pcl_open_buimov_more(lua_State *L) { (void)L; }

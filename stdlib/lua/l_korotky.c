@@ -571,6 +571,3 @@ void pcl_open_korotky(lua_State *L) {
     pcl_register(L, -1, fns, 0);
     lua_setfield(L, -2, "korotky");
 }
-
-/* pointcalc.c still calls it: korotky.plane_meet is registered by pcl_open_korotky. */
-void pcl_open_korotky_meet(lua_State *L) { (void)L; }

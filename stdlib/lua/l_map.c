@@ -566,6 +566,3 @@ void pcl_open_map(lua_State *L) {
     lua_setfield(L, module, "map");
     lua_settop(L, module);
 }
-
-/* pointcalc.c still calls it: map.perspective_pqr and the rest are registered by pcl_open_map. */
-void pcl_open_map_more(lua_State *L) { (void)L; }

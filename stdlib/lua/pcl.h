@@ -42,9 +42,9 @@ void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type);
  * its functions to the module table on the stack top, in the order luaopen_pointcalc calls them:
  * conic_elements after konopatsky (conic) and buimov (plane).  The print look's pens and label
  * options: pcl_args.h. */
-#define PCL_MODULES(X) X(errors) X(point) X(expr) X(simplex) X(map) X(map_more) X(draw) X(qb) X(qbscreen) \
+#define PCL_MODULES(X) X(errors) X(point) X(expr) X(simplex) X(map) X(draw) X(qb) X(qbscreen) \
     X(smooth) X(curves) X(surface) X(camera) X(konopatsky) X(konopatsky_ch1) X(konopatsky_schemes) \
-    X(konopatsky_triples) X(params) X(korotky) X(korotky_meet) X(buimov) X(buimov_more) X(conic_elements) \
+    X(konopatsky_triples) X(params) X(korotky) X(buimov) X(conic_elements) \
     X(curvilinear) X(complex) X(figure) X(figure_layout)
 #define PCL_DECLARE_OPEN(name) void pcl_open_##name(lua_State *L);
 PCL_MODULES(PCL_DECLARE_OPEN)
