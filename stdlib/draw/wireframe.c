@@ -93,27 +93,6 @@ int pc_draw_wireframe(pc_canvas *cv, pc_surface *s, const pc_map *screen,
     return st;
 }
 
-int pc_scene_add_curve(pc_scene *sc, const pc_curve *c, int n, int color, int pen) {
-    double *xyz = malloc(sizeof(double) * 3 * (size_t)(n + 1));
-    uint8_t *brk = malloc((size_t)n + 1);
-    size_t m = 0;
-    int gap = 1, st = xyz && brk ? PC_OK : PC_ENOMEM;
-    for (int k = 0; k <= n && st == PC_OK; k++) {
-        double x[PC_MAXDIM];
-        if (pc_curve_eval(c, c->t0 + (c->t1 - c->t0) * k / n, x) != PC_OK) {
-            gap = 1;   /* a point at infinity: the curve breaks there */
-            continue;
-        }
-        memcpy(xyz + 3 * m, x, 3 * sizeof *x);
-        brk[m++] = (uint8_t)gap;
-        gap = 0;
-    }
-    if (st == PC_OK) st = pc_scene_add_polyline(sc, m, xyz, brk, color, pen);
-    free(xyz);
-    free(brk);
-    return st;
-}
-
 int pc_scene_wireframe(pc_scene *sc, pc_surface *s, const pc_map *screen,
                        const pc_wireframe_opts *o, int pen) {
     int st = pc_scene_add_surface(sc, s, o->mesh);

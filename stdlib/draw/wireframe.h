@@ -36,8 +36,5 @@ int pc_scene_wireframe(pc_scene *sc, pc_surface *s, const pc_map *screen,
  * flattens space onto a line); *drawn the canvas's. */
 int pc_draw_shaded_surface(pc_canvas *cv, pc_scene *sc, const pc_surface *s, const pc_map *screen,
                            const pc_shade_opts *o, pc_rgb base, int mesh, size_t *n, int *drawn);
-/* Add the 3-D curve c, sampled at n + 1 evenly spaced parameters, to the scene as a polyline
- * broken where the curve passes through a point at infinity. */
-int pc_scene_add_curve(pc_scene *sc, const pc_curve *c, int n, int color, int pen);
 
 #endif

@@ -8,7 +8,7 @@
 #include "pcl_curve.h"
 #include "wireframe.h"
 #include "pcl_scene.h"
-#include "pcl_qbscreen.h"
+#include "pcl_draw.h"
 #include "pcl_expr.h"
 
 #define SURF_MT "surface"
