@@ -108,9 +108,11 @@ static const char *arg_label(lua_State *L, int shown, const char *name) {
 
 int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
     const pcl_fn *d = current(L);
+    const char *name = NULL;   /* an argument past the declared ones (or none declared): unnamed */
+    for (int i = 0; d->args && i < k && d->args[i].kind != PCL_NONE; i++) name = i == k - 1 ? d->args[i].name : NULL;
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, d->args[k - 1].name)), fmt, ap);
+    return vfail(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, name)), fmt, ap);
 }
 
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
