@@ -2,8 +2,6 @@
  * among them (examples 5, 10, 12).  All are one userdata "curve"; its methods are in the table
  * _tk.curve_methods, to which l_camera.c adds c:draw and stdlib/lua/curves.lua c:each. */
 #include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pcl_args.h"
