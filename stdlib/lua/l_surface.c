@@ -35,7 +35,7 @@ pc_surface *pcl_tosurface(lua_State *L, int idx) {
 /* Push the surface a core constructor made, or raise its status *status when it made none
  * (by address: read after the constructor has set it, whatever the order C evaluates the
  * arguments in).  1. */
-static int pushsurf(lua_State *L, pc_surface *s, const int *status, const char *kind) {
+int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const char *kind) {
     if (!s) pcl_raise_status(L, kind, *status);
     lsurf *u = lua_newuserdatauv(L, sizeof *u, 0);
     u->self = PCL_SELF_TAG(u, &SURF_TAG);
@@ -47,7 +47,7 @@ static int pushsurf(lua_State *L, pc_surface *s, const int *status, const char *
 
 void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
     int ok = PC_OK;
-    pushsurf(L, s, &ok, kind);
+    pcl_push_made_surface(L, s, &ok, kind);
 }
 
 /* The receiver of a method: a live surface (the callbacks of a Lua surface need the state). */
@@ -109,7 +109,7 @@ static int l_bilinear(lua_State *L) {
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     int st;
-    return pushsurf(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
+    return pcl_push_made_surface(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
 }
 
 /* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
@@ -155,7 +155,7 @@ static int l_bezier(lua_State *L) {
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
-    return pushsurf(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st, pcl_name(L));
+    return pcl_push_made_surface(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg bspline_args[] = {NET, {.name = "p", .kind = PCL_INTEGER}, {.name = "q", .kind = PCL_INTEGER},
@@ -171,7 +171,7 @@ static int l_bspline(lua_State *L) {
     pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
     int st;
     pc_surface *s = pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st);
-    return pushsurf(L, s, &st, pcl_name(L));
+    return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 
 /* A list of 4 points (P) or 4 vectors (Pu, Pv, Puv) of the corners' dimension: out->list. */
@@ -202,7 +202,7 @@ static int l_hermite(lua_State *L) {
         if (a[f].n != a[1].n)
             return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
     int st;
-    return pushsurf(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st, pcl_name(L));
+    return pcl_push_made_surface(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg ruled_args[] = {A_CURVE("c0", 0), A_CURVE("c1", 0), PCL_END};
@@ -211,7 +211,7 @@ static int l_ruled(lua_State *L) {
     PCL_READ(L, a);
     if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
-    return pushsurf(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st, pcl_name(L));
+    return pcl_push_made_surface(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg coons_args[] = {A_CURVE("cu0", 0), A_CURVE("cu1", 0), A_CURVE("c0v", 0), A_CURVE("c1v", 0), PCL_END};
@@ -226,7 +226,7 @@ static int l_coons(lua_State *L) {
     if (!s && st == PC_EDOMAIN)
         return pcl_fail(L, "the boundary curves do not meet at the corners (cu0 and c0v must start "
                            "together, cu0 must end where c1v starts, ...)");
-    return pushsurf(L, s, &st, pcl_name(L));
+    return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 
 static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
@@ -237,7 +237,7 @@ static int l_revolution(lua_State *L) {
     int st;
     pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
     if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
-    return pushsurf(L, s, &st, pcl_name(L));
+    return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 
 /* f: a Lua function (u, v) -> point or a compiled point equation (l_expr.c). */
@@ -260,7 +260,7 @@ static int l_func(lua_State *L) {
     if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
         double lo[2] = {a[1].x, a[3].x}, hi[2] = {a[2].x, a[4].x};
-        return pushsurf(L, pcl_eq_surface(L, lo, hi, &st), &st, fn);
+        return pcl_push_made_surface(L, pcl_eq_surface(L, lo, hi, &st), &st, fn);
     }
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -276,7 +276,7 @@ static int l_func(lua_State *L) {
     lua_pushvalue(L, 1);
     f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
-    return pushsurf(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st, fn);
+    return pcl_push_made_surface(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st, fn);
 }
 
 /* ---- methods --------------------------------------------------------------------------------- */
@@ -342,7 +342,7 @@ static int s_map(lua_State *L) {
     pc_map *f = a[0].obj;
     if (f->nin != u->s->dim) return pcl_fail(L, "the map takes %d-D points, but the surface is %d-D", f->nin, u->s->dim);
     int st;
-    return pushsurf(L, pc_surface_map(u->s, f, &st), &st, u->kind);
+    return pcl_push_made_surface(L, pc_surface_map(u->s, f, &st), &st, u->kind);
 }
 
 /* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the camera. */

@@ -1,7 +1,6 @@
 /* Pushers shared by the bindings of the books and the maps (pcl_books.h). */
 #include "pcl_args.h"
 #include "pcl_books.h"
-#include "pcl_curve.h"
 
 void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
     lua_createtable(L, nr, 0);
@@ -9,10 +8,4 @@ void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
         pcl_push_numbers(L, nc, m + (size_t)i * nc);
         lua_rawseti(L, -2, i + 1);
     }
-}
-
-int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *st, const char *kind) {
-    if (!s) return pcl_statuserror(L, pcl_name(L), *st, NULL);
-    pcl_pushsurface(L, s, kind);
-    return 1;
 }

@@ -10,9 +10,5 @@ struct pc_conic_info;
 void pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
 /* Push a table of nr rows, each a list of nc numbers, from m row by row (pcl_books.c). */
 void pcl_push_rows(lua_State *L, int nr, int nc, const double *m);
-/* Push the surface a core constructor made (kind: the constructor's name, static) and return
- * 1, or, when it made none (s NULL), raise its status *st: the surfaces' pcl_push_made. */
-struct pc_surface;
-int pcl_push_made_surface(lua_State *L, struct pc_surface *s, const int *st, const char *kind);
 
 #endif

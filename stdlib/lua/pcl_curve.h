@@ -14,6 +14,9 @@ pc_surface *pcl_tosurface(lua_State *L, int idx);
 /* Push a curve / surface object owning the reference c (kind: the constructor's name, static). */
 void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
 void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind);
+/* Push the surface a core constructor made (kind: the constructor's name, static) and return
+ * 1, or, when it made none (s NULL), raise its status *st (l_surface.c): pcl_push_made's twin. */
+int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *st, const char *kind);
 /* Push the curve a core constructor made (kind NULL: the running function's name), or, when it
  * made none (c NULL), raise its status *st (a kept callback error first).  1.  st by address:
  * pcl_push_made(L, pc_x(..., &st), &st, k) reads it after pc_x has set it. */
