@@ -40,9 +40,7 @@ static void circle_status(lua_State *L, int st) {
 
 static const pcl_arg abc_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), PCL_END};
 
-static int l_circle3(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_circle3, a) {
     pc_circle_eq c;
     circle_status(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c));
     push_circle(L, &c);
@@ -52,9 +50,7 @@ static int l_circle3(lua_State *L) {
     return 1;
 }
 
-static int l_arc3(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_arc3, a) {
     int st;
     pc_curve *arc = pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st);
     if (!arc) circle_status(L, st);
@@ -64,9 +60,7 @@ static int l_arc3(lua_State *L) {
 
 static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
 
-static int l_circle2r(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_circle2r, a) {
     double *A = a[0].v, *B = a[1].v, r = a[2].x;
     pc_circle_eq c[2];
     int st = pc_circle2r(A, B, r, c);
@@ -82,9 +76,7 @@ static int l_circle2r(lua_State *L) {
 
 static const pcl_arg slopes_args[] = {A_POINT("A", 2), A_NUM("m1"), A_NUM("x_end"), A_NUM("m2"), PCL_END};
 
-static int l_circle_slopes(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_circle_slopes, a) {
     double *A = a[0].v, m1 = a[1].x, xe = a[2].x, ends[4];
     pc_circle_eq c[2];
     int n, st = pc_circle_slopes(A, m1, xe, a[3].x, c, ends, &n);
@@ -105,9 +97,7 @@ static int l_circle_slopes(lua_State *L) {
 static const char *const conic_names[3] = {"ellipse", "parabola", "hyperbola"};
 static const pcl_arg classify_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("c"), PCL_END};
 
-static int l_classify(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_classify, a) {
     pc_conic_class k;
     if (pc_conic_classify(a[0].x, a[1].x, a[2].x, &k) != PC_OK) return pcl_fail(L, "a = b = c = 0 is a line, not a conic");
     lua_pushstring(L, conic_names[k]);
@@ -141,9 +131,7 @@ static const char *const coef_kinds[] = {"ellipse", "hyperbola", "parabola", NUL
 static const pcl_arg coef_args[] = {A_ENUM("kind", coef_kinds), A_POINT("centre", 2), A_NUM("A"),
                                     {.name = "B", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 
-static int l_conic_coef(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_conic_coef, a) {
     double *c = a[1].v, A = a[2].x, B = a[3].x, out[6];
     if (a[0].n == 2) pc_conic_parabola_coef(c[0], c[1], A, out);
     else {
@@ -158,9 +146,7 @@ static int l_conic_coef(lua_State *L) {
 static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"),
                                        A_NUMOPT("th0", 0, "0"), {.name = "th1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 
-static int l_ellipse(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_ellipse, a) {
     double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
     if (!(t1 > t0)) return pcl_fail(L, "need th0 < th1");
     int st;
@@ -170,9 +156,7 @@ static int l_ellipse(lua_State *L) {
 
 static const pcl_arg parabola_args[] = {A_POSNUM("p"), A_NUM("th0"), A_NUM("th1"), PCL_END};
 
-static int l_parabola(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_parabola, a) {
     if (!(a[2].x > a[1].x)) return pcl_fail(L, "need th0 < th1");
     int st;
     pcl_push_made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
@@ -181,9 +165,7 @@ static int l_parabola(lua_State *L) {
 
 static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300), A_NUMIN("t1", -300, 300), PCL_END};
 
-static int l_hyperbola(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_hyperbola, a) {
     if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
     pcl_push_made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
@@ -199,9 +181,7 @@ static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags =
                                       {.name = "method", .kind = PCL_ENUM, .choices = point_methods}, PCL_END};
 static const pcl_arg points_args[] = {A_ENUM("kind", point_kinds), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
 
-static int l_points(lua_State *L) {
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_points, a) {
     int kind = a[0].n, method = a[6].n, n = (int)a[5].x;
     if ((kind == 1 || kind >= 3) && !a[3].present) return pcl_keyfail(L, "B", "must be a positive number (the %s's), got nil", a[0].s);
     if (method >= 2 && kind != 0) return pcl_fail(L, "the %s method is the circle's only", a[6].s);
@@ -225,9 +205,7 @@ static int order(lua_State *L, int m, double k) {
 
 static const pcl_arg knots_args[] = {A_POINTS("points", 0, 2, 0), A_INT("k", 2, PC_CURVE_MAXDEG + 1), PCL_END};
 
-static int l_knots(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_knots, a) {
     int m = a[0].n, k = order(L, m, a[1].x);
     double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + k), 0);
     pc_book_knots(a[0].dim, m, a[0].list, k, q);
@@ -242,9 +220,7 @@ static int l_knots(lua_State *L) {
 static const pcl_arg basis_args[] = {A_INT("i", 0, 1000000), A_INT("k", 1, PC_CURVE_MAXDEG + 1), A_NUM("t"),
                                      A_NUMBERS("knots", 0, 1000000), PCL_END};
 
-static int l_basis(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_basis, a) {
     int i = (int)a[0].x, k = (int)a[1].x, nq = a[3].n;
     for (int j = 1; j < nq; j++)
         if (a[3].list[j] < a[3].list[j - 1]) return pcl_argfail(L, 4, "must not decrease ([%d])", j + 1);
@@ -255,9 +231,7 @@ static int l_basis(lua_State *L) {
     return 1;
 }
 
-static int l_bspline(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_bspline, a) {
     int st, m = a[0].n;
     pc_curve *c = pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st);
     if (!c && st == PC_EDOMAIN) return pcl_fail(L, "a vertex is repeated so often that the knots leave no span");
@@ -267,18 +241,14 @@ static int l_bspline(lua_State *L) {
 
 static const pcl_arg bernstein_args[] = {A_INT("n", 0, 1000), A_INT("i", 0, 1000), A_NUM("t"), PCL_END};
 
-static int l_bernstein(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_bernstein, a) {
     lua_pushnumber(L, pc_bernstein((int)a[0].x, (int)a[1].x, a[2].x));
     return 1;
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 
-static int l_blend(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_blend, a) {
     double F[4];
     pc_hermite_blend(a[0].x, F);
     for (int i = 0; i < 4; i++) lua_pushnumber(L, F[i]);
@@ -327,9 +297,7 @@ static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choice
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
 
-static int l_spline(lua_State *L) {
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_spline, a) {
     int n = a[0].n, d = a[0].dim, st, have_d = a[3].present + a[4].present;
     pc_book_ends ends = (pc_book_ends)a[2].n;
     if (!a[2].present && have_d == 2) ends = PC_BOOK_CLAMPED;   /* tangents given without ends: clamped */
@@ -356,9 +324,7 @@ static int l_spline(lua_State *L) {
 
 static const pcl_arg helix_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("t0"), A_NUM("t1"), PCL_END};
 
-static int l_helix(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_helix, a) {
     if (a[0].x == 0) return pcl_argfail(L, 1, "must be a nonzero radius, got 0");
     if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
@@ -370,9 +336,7 @@ static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2
                                       A_NUMOPT("ph1", PI, "pi"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
                                       {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
 
-static int l_sphere(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_sphere, a) {
     if (!a[4].present) a[4].v[0] = a[4].v[1] = a[4].v[2] = 0;
     if (!(a[1].x > a[0].x) || !(a[3].x > a[2].x)) return pcl_fail(L, "need th0 < th1 and ph0 < ph1");
     int st;
@@ -383,9 +347,7 @@ static int l_sphere(lua_State *L) {
 static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
                                      {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
 
-static int l_sphere_frame(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_sphere_frame, a) {
     double f[15];
     if (!a[2].present) a[2].v[0] = a[2].v[1] = a[2].v[2] = 0;
     pc_sphere_frame_at(a[2].v, a[3].x, a[0].x, a[1].x, f);   /* the unit sphere at the origin by default */
@@ -397,9 +359,7 @@ static int l_sphere_frame(lua_State *L) {
 /* buimov.det(rows): the determinant of a square matrix (§1.2; the area factor of §1.7.4) */
 static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a square matrix (a list of rows)"}, PCL_END};
 
-static int l_det(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_det, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1), nc;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
@@ -411,9 +371,7 @@ static int l_det(lua_State *L) {
 static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_ANY, .expect = "a list of maps from 3-D to 2-D"},
                                            A_POINTS("images", 2, 2, 64), PCL_END};
 
-static int l_reconstruct(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_reconstruct, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of maps from 3-D to 2-D, got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1);
     if (n < 2 || n > 64) return pcl_argfail(L, 1, "must hold 2 to 64 views, got %d", n);
@@ -438,9 +396,7 @@ static int l_reconstruct(lua_State *L) {
 
 static const pcl_arg calibrate_args[] = {A_POINTS("points", 3, 6, 0), A_POINTS("images", 2, 6, 0), PCL_END};
 
-static int l_calibrate(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_calibrate, a) {
     int n = a[0].n;
     if (a[1].n != n) return pcl_fail(L, "%d points but %d images", n, a[1].n);
     pc_map *cam = pcl_newmap(L);
@@ -457,9 +413,7 @@ static int l_calibrate(lua_State *L) {
 /* §4.3 the G1 joint of Bezier curves */
 #define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
 
-static int l_g1_next(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_g1_next, a) {
     const pc_curve *c = a[0].obj;
     double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q0[PC_MAXDIM], q1[PC_MAXDIM];
     int n = pc_bezier_points(c, p);
@@ -472,9 +426,7 @@ static int l_g1_next(lua_State *L) {
     return 2;
 }
 
-static int l_joint(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_joint, a) {
     const pc_curve *P = a[0].obj, *Q = a[1].obj;
     double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], g;
     int n = pc_bezier_points(P, p), m = pc_bezier_points(Q, q), kind;

@@ -132,9 +132,7 @@ static const pcl_arg draw_args[] = {A_OPTIONS("opts", draw_keys), PCL_END};
 
 /* c:draw{...}: a path through the C path above; dots (t, brush, dots, qb) and maps that are
  * plain functions go to the Lua walkers of curves.lua (_tk.draw_dots, _tk.draw_mapped). */
-static int c_draw(lua_State *L) {
-    pcl_val o[O_N] = {{0}};
-    pc_curve *c = PCL_READ(L, o);
+PCL_METHOD(c_draw, pc_curve *c, o) {
     const char *via = o[O_T].present || o[O_BRUSH].present || o[O_DOTS].x || o[O_QB].x ? "draw_dots" : NULL;
     const pc_map *f = NULL;
     if (o[O_MAP].present) {

@@ -158,9 +158,7 @@ static int c_new(lua_State *L) {
 }
 
 static const pcl_arg polar_args[] = {A_NUM("r"), A_NUM("u"), PCL_END};
-static int c_polar(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(c_polar, a) {
     pushc(L, (pc_cnum){a[0].x * cos(a[1].x), a[0].x * sin(a[1].x)});
     return 1;
 }
@@ -238,9 +236,7 @@ static int m_tostring(lua_State *L) {
 }
 
 static const pcl_arg mobius_args[] = {A_COMPLEX("z0"), A_NUMOPT("phi", 0, NULL), PCL_END};
-static int l_mobius(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_mobius, a) {
     if (hypot(a[0].v[0], a[0].v[1]) >= 1)
         return pcl_argfail(L, 1, "must be a point inside the unit disc (|z0| < 1), got %s", luaL_tolstring(L, 1, NULL));
     pushm(L, (pc_cnum){a[0].v[0], a[0].v[1]}, a[1].x);

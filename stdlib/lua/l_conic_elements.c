@@ -113,9 +113,7 @@ static const pcl_fn plane_fns[] = {
            "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
     PCL_END};
 
-static int l_elements(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_elements, a) {
     pc_curve *c = pcl_tocurve(L, 1);
     if (c) return conic_of_curve(L, c);
     pc_conic_info o;

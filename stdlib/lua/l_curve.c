@@ -176,9 +176,7 @@ static const double *params(lua_State *L, const pcl_val *v, int k, const char *k
 /* ---- constructors ------------------------------------------------------------------------------ */
 
 static const pcl_arg bezier_args[] = {A_VALUES("points", 2, PC_CURVE_MAXDEG + 1), PCL_END};
-static int l_bezier(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_bezier, a) {
     int st;
     return pcl_push_made(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), &st, NULL);
 }
@@ -209,9 +207,7 @@ pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int 
 
 static const pcl_arg bspline_args[] = {A_VALUES("points", 2, 0), {.name = "degree", .kind = PCL_INTEGER},
                                        {.name = "knots", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-static int l_bspline(lua_State *L) {
-    pcl_val a[3] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_bspline, a) {
     int m = a[0].n, d = a[0].dim, p = a[1].x < 1 || a[1].x > PC_CURVE_MAXDEG ? 0 : (int)a[1].x;
     double *h = a[0].list;
     int periodic = lua_type(L, 3) == LUA_TSTRING && !strcmp(lua_tostring(L, 3), "periodic");
@@ -232,9 +228,7 @@ static int l_bspline(lua_State *L) {
 static const pcl_arg hermite_keys[] = {A_VECTORS("tin"), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
 static const pcl_arg hermite_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                        A_VECTORS("tangents"), A_OPTIONS("opts", hermite_keys), PCL_END};
-static int l_hermite(lua_State *L) {
-    pcl_val a[6] = {{0}};   /* points, tangents, opts, tin, u, closed */
-    PCL_READ(L, a);
+PCL_BODY(l_hermite, a) {   /* points, tangents, opts, tin, u, closed */
     int n = a[0].n, st;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d vectors, got %d", n, a[1].n);
     if (a[3].present && a[3].n != n) return pcl_keyfail(L, "tin", "must hold %d vectors, got %d", n, a[3].n);
@@ -248,9 +242,7 @@ static const pcl_arg spline_keys[] = {A_ENUM("ends", ENDS), {.name = "d0", .kind
                                       {.name = "d1", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM}, A_NUMBERS("u", 0, 0), PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
-static int l_cubic_spline(lua_State *L) {
-    pcl_val a[6] = {{0}};   /* points, opts, ends, d0, d1, u */
-    PCL_READ(L, a);
+PCL_BODY(l_cubic_spline, a) {   /* points, opts, ends, d0, d1, u */
     static const pc_end_kind kinds[] = {PC_END_NATURAL, PC_END_CLAMPED, PC_END_PERIODIC};
     if (a[2].n == 1 && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end derivatives d0 and d1 (vectors)");
@@ -262,9 +254,7 @@ static int l_cubic_spline(lua_State *L) {
 
 static const pcl_arg interpolate_args[] = {A_POINTS("points", 0, 2, PC_CURVE_MAXDEG + 1),
                                            {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT}, PCL_END};
-static int l_interpolate(lua_State *L) {
-    pcl_val a[2] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_interpolate, a) {
     int st;
     pc_curve *c = pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, params(L, &a[1], 2, NULL, a[0].n, 1), &st);
     return pcl_push_made(L, c, &st, NULL);
@@ -277,9 +267,7 @@ static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
 static const pcl_arg curve_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_curve_fn,
                                       .expect = "a function of t or an equation"}, A_NUM("t0"), A_NUM("t1"), PCL_END};
 /* curve(f, t0, t1): the dimension is that of f(t0) */
-static int l_curve(lua_State *L) {
-    pcl_val a[3] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_curve, a) {
     int st;
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     if (pcl_isequation(L, 1))                  /* a compiled point equation (l_expr.c) */
@@ -336,9 +324,7 @@ static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed
 
 static const pcl_arg spline2_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("a"), A_SAMEPOINT("B"), A_SAMEVECTOR("b"),
     {.name = "g", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_g, .expect = "a smoothstep (a function of t)"}, PCL_END};
-static int l_spline2(lua_State *L) {
-    pcl_val a[5] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_spline2, a) {
     int d = a[0].n, lua;
     pc_gfun g;
     pc_piece pc;
@@ -395,18 +381,14 @@ static int l_stroke_raw(lua_State *L) {
 }
 
 static const pcl_arg fourier_args[] = {A_POINTS("points", 0, 2, 0), PCL_END};
-static int l_fourier(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_fourier, a) {
     int count = a[0].n, st;
     if (count % 2) return pcl_argfail(L, 1, "must hold an even number (2n >= 2) of points, got %d", count);
     return pcl_push_made(L, pc_curve_fourier(a[0].dim, count / 2, a[0].list, &st), &st, NULL);
 }
 
 static const pcl_arg sphdir_args[] = {A_NUM("u1"), A_NUM("u2"), PCL_END};
-static int l_sphdir(lua_State *L) {
-    pcl_val a[2] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_sphdir, a) {
     double e[3];
     pc_dir3(a[0].x, a[1].x, e);
     pcl_pushvector(L, 3, e);
@@ -463,9 +445,7 @@ static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x)) || pcl_isequation(L, idx);
 }
 static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or a scalar equation"}, PCL_END};
-static int c_call(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_call, lcurve *u, a) {
     if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
     double h[PC_MAXDIM + 1];
     eval_at(L, u, a[0].x, h);
@@ -473,9 +453,7 @@ static int c_call(lua_State *L) {
     return 1;
 }
 
-static int c_xy(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_xy, lcurve *u, a) {
     double h[PC_MAXDIM + 1];
     eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
@@ -489,9 +467,7 @@ static int c_xy(lua_State *L) {
 static const char *const SIDES[] = {"left", "right", NULL};
 static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT},
     {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
-static int c_deriv(lua_State *L) {
-    pcl_val a[3] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_deriv, lcurve *u, a) {
     int order = 1, side = a[2].present ? (a[2].n ? 1 : -1) : 0;
     double x = lua_tonumber(L, 3);
     if (lua_type(L, 3) == LUA_TSTRING && !a[2].present) {
@@ -517,9 +493,7 @@ static int c_deriv(lua_State *L) {
 /* c:monomial([piece]): the power-basis coefficients of a piece in the curve's parameter:
  * {{a0, a1, ...} of x, {...} of y, ...}, and w = {...} for a rational curve */
 static const pcl_arg piece_opt[] = {{.name = "piece", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"}, PCL_END};
-static int c_monomial(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_monomial, lcurve *u, a) {
     const pc_curve *c = u->c;
     if (c->kind == PC_CURVE_FUNC)
         return pcl_fail(L, "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
@@ -552,9 +526,7 @@ static int unit_at(lua_State *L, int normal) {
 static int c_tangent(lua_State *L) { return unit_at(L, 0); }
 static int c_normal(lua_State *L) { return unit_at(L, 1); }
 
-static int c_curvature(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_curvature, lcurve *u, a) {
     double t = a[0].x, k;
     int st = pc_curve_curvature(u->c, t, &k);
     if (st != PC_OK) return at_fail(L, st, t, " (a cusp or a stop)");
@@ -572,9 +544,7 @@ static double inside(lua_State *L, lcurve *u, double t) {
     return t;
 }
 
-static int c_split(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_split, lcurve *u, a) {
     pc_curve *l, *r;
     int st = pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
@@ -584,9 +554,7 @@ static int c_split(lua_State *L) {
 }
 
 static const pcl_arg ab_args[] = {A_NUM("a"), A_NUM("b"), PCL_END};
-static int c_sub(lua_State *L) {
-    pcl_val a[2] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_sub, lcurve *u, a) {
     if (!(a[0].x >= u->c->t0 && a[1].x <= u->c->t1 && a[0].x < a[1].x))
         return pcl_fail(L, "need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
                         pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
@@ -595,18 +563,14 @@ static int c_sub(lua_State *L) {
 }
 
 static const pcl_arg u_arg[] = {A_NUM("u"), PCL_END};
-static int c_insert_knot(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_insert_knot, lcurve *u, a) {
     if (u->c->kind != PC_CURVE_BSPLINE) return pcl_fail(L, "not a B-spline (a %s)", u->kind);
     int st;
     return pcl_push_made(L, pc_curve_insert_knot(u->c, inside(L, u, a[0].x), &st), &st, u->kind);
 }
 
 static const pcl_arg ab_opt[] = {A_NUMOPT("a", 0, NULL), A_NUMOPT("b", 0, NULL), PCL_END};
-static int c_length(lua_State *L) {
-    pcl_val a[2] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_length, lcurve *u, a) {
     if (a[0].present != a[1].present) return pcl_fail(L, "give both ends a and b, or neither");
     double len;
     int st = pc_curve_length(u->c, a[0].present ? a[0].x : u->c->t0, a[1].present ? a[1].x : u->c->t1, 1e-10, &len);
@@ -616,9 +580,7 @@ static int c_length(lua_State *L) {
     return 1;
 }
 
-static int c_bbox(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_bbox, lcurve *u, a) {
     double lo[PC_MAXDIM], hi[PC_MAXDIM];
     int st = pc_curve_bbox(u->c, 1e-9, lo, hi);
     if (st == PC_IMPROPER) return pcl_fail(L, "the curve passes through infinity: it has no bounding box");
@@ -638,9 +600,7 @@ static int piece_no(lua_State *L, int np, const pcl_val *v) {
 /* c:controls(): the control values (weighted points as given); a stroke's c:controls(i) is
  * its piece's quadrilateral A, P, Q, B as before. */
 static const pcl_arg i_opt[] = {{.name = "i", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
-static int c_controls(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_controls, lcurve *u, a) {
     int d = u->c->dim, np;
     const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
     if (pcs) {
@@ -657,9 +617,7 @@ static int c_controls(lua_State *L) {
     return 1;
 }
 
-static int c_knots(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_knots, lcurve *u, a) {
     if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no knots", u->kind);
     pcl_push_numbers(L, u->c->nknots, u->c->knots);
     return 1;
@@ -696,9 +654,7 @@ static int c_piece_xy(lua_State *L) {
 
 /* c:coef([k]) -> a, b: the Fourier coefficient lists of coordinate k (a[0] .. a[n]) */
 static const pcl_arg k_opt[] = {{.name = "k", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"}, PCL_END};
-static int c_coef(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_coef, lcurve *u, a) {
     int n;
     const double *coef = pc_curve_fourier_coefs(u->c, &n);
     if (!coef) return pcl_fail(L, "not a Fourier curve");
@@ -717,9 +673,7 @@ static int c_coef(lua_State *L) {
 
 /* c:map(f): the image under a map (also f(c)) */
 static const pcl_arg f_arg[] = {A_MAP("f"), PCL_END};
-static int c_map(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_map, lcurve *u, a) {
     pc_map *f = a[0].obj;
     if (f->nin != u->c->dim) return pcl_argfail(L, 1, "takes %d-D points, but the curve is %d-D", f->nin, u->c->dim);
     int st;
@@ -730,9 +684,7 @@ static int c_map(lua_State *L) {
  * in its own units (default 1e-3); map projects a curve of another dimension to the plane. */
 static const pcl_arg flatten_args[] = {{.name = "tol", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1e-3, .shown = "1e-3"},
                                        {.name = "map", .kind = PCL_MAP, .flags = PCL_OPT}, PCL_END};
-static int c_flatten(lua_State *L) {
-    pcl_val a[2] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+PCL_METHOD(c_flatten, lcurve *u, a) {
     pc_map *f = a[1].obj;
     if (f && (f->nin != u->c->dim || f->nout != 2))
         return pcl_argfail(L, 2, "must be a map from %d-D to 2-D", u->c->dim);

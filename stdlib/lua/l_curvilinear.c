@@ -29,9 +29,7 @@ static int l_squash01(lua_State *L) { return squash_with(L, pc_squash01); }
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
 static const pcl_arg oblique_args[] = {A_POINT("C0", 2), A_NUM("r"), A_NUM("k"), A_NUM("u"), PCL_END};
-static int l_oblique(lua_State *L) {
-    pcl_val a[4] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_oblique, a) {
     double c[8];
     pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
     pc_map_project4(pcl_newmap(L), c);
@@ -40,9 +38,7 @@ static int l_oblique(lua_State *L) {
 
 static const pcl_arg projection_args[] = {A_SAMEPOINT("C0"), A_SAMEPOINT("C1"), A_SAMEPOINT("C2"),
                                           A_SAMEPOINT("C3"), PCL_END};
-static int l_projection(lua_State *L) {
-    pcl_val a[4] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_projection, a) {
     if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
     pcl_point_rows(a, 4, 2, c);
@@ -80,9 +76,7 @@ static oresme *checkoresme(lua_State *L, const char *fn) {
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
-static int oresme_call(lua_State *L) {
-    pcl_val a[1] = {{0}};
-    oresme *o = PCL_READ(L, a);
+PCL_METHOD(oresme_call, oresme *o, a) {
     lua_pushnumber(L, pc_oresme_at(o->y, o->m, a[0].x));
     return 1;
 }
@@ -120,9 +114,7 @@ static const pcl_arg oresme_args[] = {
     A_NUM("lambda"), {.name = "m", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .hi = PC_ORESME_MAXLEVEL,
                       .dflt = 12, .expect = "an integer 0..24 (2^m cells)"},
     A_NUMOPT("y0", 0, NULL), A_NUMOPT("y1", 1, NULL), PCL_END};
-static int l_oresme(lua_State *L) {
-    pcl_val a[4] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_oresme, a) {
     int m = (int)a[1].x;
     long n = 1L << m;
     oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
@@ -158,9 +150,7 @@ static double call_f(double x, void *ud) {
 
 static const pcl_arg bisect_args[] = {{.name = "f", .kind = PCL_CALLABLE}, A_NUM("a"), A_NUM("b"),
                                       A_NUMOPT("tol", 1e-10, NULL), PCL_END};
-static int l_bisect(lua_State *L) {
-    pcl_val a[4] = {{0}};
-    PCL_READ(L, a);
+PCL_BODY(l_bisect, a) {
     double x;
     int iters;
     int st = pc_bisect(call_f, L, a[1].x, a[2].x, a[3].x, &x, &iters);
@@ -181,9 +171,7 @@ static int l_bisect(lua_State *L) {
 
 /* _tk.bilinear(P0, P1, P2, P3) -> function(t1, t2) -> x, y[, z ...] */
 static const pcl_arg t12_args[] = {A_NUM("t1"), A_NUM("t2"), PCL_END};
-static int bilinear_eval(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(bilinear_eval, a) {
     const double *c = lua_touserdata(L, PCL_UPVALUE(1));
     int d = (int)lua_tointeger(L, PCL_UPVALUE(2));
     double out[PC_MAXDIM];
@@ -194,9 +182,7 @@ static int bilinear_eval(lua_State *L) {
 static const pcl_fn bilinear_fn = PCL_FN("bilinear", bilinear_eval, t12_args, "x, y, ...", NULL);
 
 static const pcl_arg corner_args[] = {A_SAMEPOINT("P0"), A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEPOINT("P3"), PCL_END};
-static int l_bilinear(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_bilinear, a) {
     int d = a[0].n;
     double *c = lua_newuserdatauv(L, sizeof(double) * 4 * (size_t)d, 0);
     pcl_point_rows(a, 4, d, c);

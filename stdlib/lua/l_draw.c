@@ -344,9 +344,7 @@ static const char *const THEMES[] = {"paper", "screen", NULL};
 static const pcl_arg save_args[] = {{.name = "path", .kind = PCL_STRING, .expect = "a file name"},
                                     {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES},
                                     PCL_END};
-static int l_save(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_save, a) {
     pc_canvas *c = canvas(L);
     pc_theme theme = !a[1].present ? pcl_theme(L) : a[1].n == 0 ? PC_THEME_PAPER : PC_THEME_SCREEN;
     if (pc_format_from_path(a[0].s) == PC_FMT_UNKNOWN)
@@ -501,9 +499,7 @@ static const pcl_arg path_keys[] = {{.name = "closed", .kind = PCL_BOOLEAN}, COL
                                     RULE("rule"), {.name = "arrow", .kind = PCL_ENUM, .choices = HEADS}, PCL_END};
 static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL_END};
 
-static int l_path(lua_State *L) {
-    pcl_val a[7] = {0};   /* points, options; closed, color, fill, rule, arrow */
-    PCL_READ(L, a);
+PCL_BODY(l_path, a) {   /* points, options; closed, color, fill, rule, arrow */
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
     /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
     if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
@@ -514,9 +510,7 @@ static int l_path(lua_State *L) {
 }
 
 static const pcl_arg fill_args[] = {POINTS, COLOR("colour"), RULE("rule"), PCL_END};
-static int l_fill(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_fill, a) {
     pc_canvas *c = canvas(L);
     size_t n = (size_t)a[0].n;
     return pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));

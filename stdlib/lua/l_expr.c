@@ -255,9 +255,7 @@ static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg param_args[] = {A_ANY("name", read_name, "a name of 1 to 31 characters"), PCL_END};
 
-static int l_param(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_param, a) {
     int st, id = pc_expr_param(pool(L), a[0].s, &st);
     if (id < 0) return pcl_fail(L, "at most %d parameters per script, and %s would be one more", PC_EXPR_MAXPARAM, a[0].s);
     push_eq(L, id);
@@ -402,9 +400,7 @@ static int eq_tostring(lua_State *L) {
 }
 
 static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_TABLE, .flags = PCL_OPT, .expect = "a table {A = A, ...}"}, PCL_END};
-static int eq_show(lua_State *L) {
-    pcl_val a[1] = {0};
-    leq *e = PCL_READ(L, a);
+PCL_METHOD(eq_show, leq *e, a) {
     push_text(L, e->id, a[0].present ? 2 : 0);
     return 1;
 }
@@ -435,9 +431,7 @@ static int eq_concat(lua_State *L) {
 static const pcl_arg sample_args[] = {A_NUM("a"), A_NUM("b"),
     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e8, .dflt = 1001, .expect = "a count from 1 to 10^8"},
     {.name = "into", .kind = PCL_ANY, .flags = PCL_OPT, .expect = "samples (from M:sample)"}, PCL_END};
-static int eq_sample(lua_State *L) {
-    pcl_val a[4] = {0};
-    leq *e = PCL_READ(L, a);
+PCL_METHOD(eq_sample, leq *e, a) {
     long n = (long)a[2].x;
     int in[PC_EXPR_MAXPARAM], np = params_of(L, e->id, in);
     if (np != 1) return pcl_fail(L, "the equation must have one parameter, it has %s", np ? names_of(L, np, in) : "none");

@@ -37,9 +37,7 @@ static const pcl_arg figure_args[] = {
 
 /* figure{width = "12cm", height = "8cm", dpi = 300, font = "serif", size = 10}: the print
  * look for every output, at that size; a width alone keeps the window's aspect. */
-static int l_figure(lua_State *L) {
-    pcl_val a[6] = {0};   /* options, width, height, dpi, font, size */
-    PCL_READ(L, a);
+PCL_BODY(l_figure, a) {   /* options, width, height, dpi, font, size */
     pc_canvas *c = pcl_canvas(L);
     pc_figure f = c->figure;
     if (a[1].present || a[2].present) {

@@ -161,9 +161,7 @@ int pcl_scene_label(lua_State *L, const pcl_val *a) {
 static const char *const STYLES[] = {"dot", "open", "cross", "plus", "square", NULL};
 static const pcl_arg mark_args[] = {A_XY("P"), A_OPTENUM("style", STYLES, 0),
                                     A_OPTNUM("size", 1, 200, 5, "5"), A_COLOR("colour"), PCL_END};
-static int l_mark(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_mark, a) {
     pc_canvas *c = pcl_active_canvas(L);
     pc_scene *sc = a[0].n == 3 ? pcl_scene(L) : NULL;
     if (sc) {
@@ -176,9 +174,7 @@ static int l_mark(lua_State *L) {
 static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
 static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1),
                                      A_COLOR("colour"), PCL_END};
-static int l_arrow(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_arrow, a) {
     pc_canvas *c = pcl_active_canvas(L);
     return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
 }
@@ -198,9 +194,7 @@ static int l_vector(lua_State *L) {
 
 static const pcl_arg dim_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("offset", -1e5, 1e5, 20, "20"),
                                    A_OPTSTR("text"), A_COLOR("colour"), PCL_END};
-static int l_dimension(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_dimension, a) {
     pc_canvas *c = pcl_active_canvas(L);
     double len = 0;
     pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, a[3].s, (int)a[4].x,
@@ -211,9 +205,7 @@ static int l_dimension(lua_State *L) {
 
 static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
                                      A_OPTNUM("radius", 2, 1000, 24, "24"), A_COLOR("colour"), PCL_END};
-static int l_angle_mark(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_angle_mark, a) {
     pc_canvas *c = pcl_active_canvas(L);
     double th = 0;
     pcl_check_canvas(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
@@ -225,18 +217,14 @@ static int l_angle_mark(lua_State *L) {
 static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
                                      {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 5, .dflt = 1, .shown = "1"},
                                      A_COLOR("colour"), PCL_END};
-static int l_ticks(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_ticks, a) {
     pc_canvas *c = pcl_active_canvas(L);
     return pcl_check_canvas(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
 }
 
 static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
                                      A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
-static int l_hatch(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_hatch, a) {
     pc_canvas *c = pcl_active_canvas(L);
     int n = a[0].n, d = a[0].dim;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
@@ -248,9 +236,7 @@ static int l_hatch(lua_State *L) {
 
 static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
                                       A_COLOR("colour"), PCL_END};
-static int l_centre_line(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_centre_line, a) {
     pc_canvas *c = pcl_active_canvas(L);
     return pcl_check_canvas(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
 }
@@ -262,9 +248,7 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
                                    {.name = "around", .kind = PCL_POINTS, .flags = PCL_OPT, .lo = 1},
                                    A_OPTNUM("pad", 0, 1e300, 0, "0"), A_OPTNUM("band", 0, 1e5, 0, "0"), PCL_END};
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
-static int l_fit(lua_State *L) {
-    pcl_val a[6] = {0};   /* options; margin, aspect, around, pad, band */
-    PCL_READ(L, a);
+PCL_BODY(l_fit, a) {   /* options; margin, aspect, around, pad, band */
     pc_canvas *c = pcl_active_canvas(L);
     int n = a[3].present ? a[3].n : 0, d = a[3].dim;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n + 1, 0);
@@ -278,9 +262,7 @@ static int l_fit(lua_State *L) {
 static const char *const EDGES[] = {"bottom", "top", NULL};
 static const pcl_arg caption_args[] = {{.name = "text", .kind = PCL_STRING}, A_OPTENUM("where", EDGES, 0),
                                        A_COLOR("colour"), PCL_END};
-static int l_caption(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_caption, a) {
     pc_canvas *c = pcl_active_canvas(L);
     return pcl_check_canvas(L, c, pc_caption(c, a[0].s, a[1].n, (int)a[2].x));
 }
@@ -354,9 +336,7 @@ static int graph_y(void *p, double x, double *y, int *have) {
     return PC_OK;
 }
 
-static int l_graph(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_graph, a) {
     pc_canvas *c = pcl_active_canvas(L);
     if (!(a[1].x < a[2].x)) return pcl_argfail(L, 3, "must be greater than a");
     graph_ctx g = {L, a[0].idx, 0};
@@ -397,9 +377,7 @@ static const pcl_arg view_keys[] = {A_POINT("from", 3), A_POINT("to", 3), A_VECT
                                     A_NUM("azimuth"), {.name = "elevation", .kind = PCL_NUMBER, .dflt = 30},
                                     {.name = "distance", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 10}, PCL_END};
 static const pcl_arg view_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = view_keys}, PCL_END};
-static int l_view(lua_State *L) {
-    pcl_val a[8] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_view, a) {
     static const double origin[3] = {0, 0, 0};
     const double *to = a[2].present ? a[2].v : origin;
     int persp = (int)a[4].x, st;

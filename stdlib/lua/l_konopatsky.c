@@ -100,9 +100,7 @@ static const pc_kcurve_kind ellipse_kinds[] = {PC_KC_ELLIPSE_ANGLE, PC_KC_ELLIPS
 static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
                                        {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"), PCL_END};
 static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
-static int c_ellipse(lua_State *L) {
-    pcl_val a[9] = {0};   /* spec; C, A, B, range, by, quadrant, K, lambda */
-    PCL_READ(L, a);
+PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     int st, by = a[5].n;
     if (by == 6) {                                   /* §2.1.1.6: K, A, B, lambda */
         need_point(L, &a[7], "K");
@@ -119,17 +117,13 @@ static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};
 static const pc_kcurve_kind hyperbola_kinds[] = {PC_KC_HYPERBOLA_ANGLE, PC_KC_HYPERBOLA_RADIUS, PC_KC_HYPERBOLA_FOCAL};
 static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
 static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
-static int c_hyperbola(lua_State *L) {
-    pcl_val a[7] = {0};   /* spec; C, A, B, range, by, branch */
-    PCL_READ(L, a);
+PCL_BODY(c_hyperbola, a) {   /* spec; C, A, B, range, by, branch */
     return kcurve_from(L, a, hyperbola_kinds[a[5].n], &a[6].x, 1);
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
 static const pcl_arg circle_args[] = SPEC(circle_keys);
-static int c_circle(lua_State *L) {
-    pcl_val a[7] = {0};   /* spec; C, A, B, range, delta, R */
-    PCL_READ(L, a);
+PCL_BODY(c_circle, a) {   /* spec; C, A, B, range, delta, R */
     if (a[5].present) {
         if (!(a[5].x > 0 && a[5].x < M_PI)) return pcl_keyfail(L, "delta", "must be an angle in (0, pi), got %s", pcl_pushnum(L, a[5].x));
         return kcurve_from(L, a, PC_KC_CIRCLE_ANGLE, &a[5].x, 1);
@@ -142,9 +136,7 @@ static int c_circle(lua_State *L) {
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
-static int c_tilted(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(c_tilted, a) {
     int d = a[0].n, st;
     double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
     CHECK(pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
@@ -155,9 +147,7 @@ static int c_tilted(lua_State *L) {
 
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
 static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
-static int c_five_points(lua_State *L) {
-    pcl_val a[9] = {0};   /* A..E, opts, u0, u1, whole */
-    PCL_READ(L, a);
+PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
     int d = a[0].n;
     double u[5];
     int st = CHECK(pc_conic_five_points_params(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u));
@@ -173,9 +163,7 @@ static int c_five_points(lua_State *L) {
 #define REQNUM(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_REQ}
 static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"), REQNUM("q3"), PCL_END};
 static const pcl_arg five2_args[] = SPEC(five2_keys);
-static int c_five_points2(lua_State *L) {
-    pcl_val a[8] = {0};   /* spec; C, A, B, p1, p2, q2, q3 */
-    PCL_READ(L, a);
+PCL_BODY(c_five_points2, a) {   /* spec; C, A, B, p1, p2, q2, q3 */
     double p1 = a[4].x, p2 = a[5].x, q2 = a[6].x, q3 = a[7].x;
     if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1)) return pcl_fail(L, "options 'p1' and 'q3' must be in (0, 1]");
     if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
@@ -186,9 +174,7 @@ static int c_five_points2(lua_State *L) {
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
                                        A_NUMOPT("t1", 1, NULL), PCL_END};
-static int c_triples(lua_State *L) {
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
+PCL_BODY(c_triples, a) {
     if (!(a[6].x > a[5].x)) return pcl_argfail(L, 7, "must be greater than t0");
     int st;
     return MADE(pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st));
@@ -196,9 +182,7 @@ static int c_triples(lua_State *L) {
 
 static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
                                          {.name = "v", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-static int c_redundant(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(c_redundant, a) {
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
         return MADE(pc_conic_ed(d, a[1].v, a[2].v, a[0].v, 2.0 / 3, &st));
@@ -211,9 +195,7 @@ static int c_redundant(lua_State *L) {
 static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
 static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
 static const pcl_arg reparam_args[] = SPEC(reparam_keys);
-static int c_reparam(lua_State *L) {
-    pcl_val a[7] = {0};   /* spec; C, A, B, range, by, branch */
-    PCL_READ(L, a);
+PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch */
     if (a[5].n == 0) return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE, NULL, 0);
     return kcurve_from(L, a, PC_KC_PARABOLA_SIGMA, &a[6].x, 1);
 }
@@ -243,24 +225,18 @@ static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_waves,
     .shown = "{m, n, ...}", .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
 static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
-static int c_sinusoid(lua_State *L) {
-    pcl_val a[6] = {0};   /* spec; C, A, B, range, k */
-    PCL_READ(L, a);
+PCL_BODY(c_sinusoid, a) {   /* spec; C, A, B, range, k */
     return kcurve_from(L, a, PC_KC_SINUSOID, a[5].v, (int)a[5].v[0] + 1);
 }
 
 static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
 static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
-static int c_cycloid(lua_State *L) {
-    pcl_val a[6] = {0};   /* spec; C, A, B, range, concave */
-    PCL_READ(L, a);
+PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
     return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1);
 }
 
 static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
-static int c_cones(lua_State *L) {
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
+PCL_BODY(c_cones, a) {
     int d = a[0].n, st;
     if (d < 3) return pcl_fail(L, "the points must be 3-D or more (a tetrahedron ABCD), got %d-D", d);
     for (int k = 4; k < 6; k++)
@@ -271,9 +247,7 @@ static int c_cones(lua_State *L) {
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
                                        A_FNOPT("du", "a function of t"), A_FNOPT("dv", "a function of t"), PCL_END};
-static int c_contour(lua_State *L) {
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
+PCL_BODY(c_contour, a) {
     int has_d = a[5].present, st;
     if (has_d && !a[6].present) return pcl_argfail(L, 7, "must be a function of t (with du), got nil");
     pcl_luafn *r = pcl_luafn_new(L, has_d ? 4 : 2, (int[]){4, 5, 6, 7});
@@ -310,9 +284,7 @@ static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
-static int o_double_contact(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(o_double_contact, a) {
     double kp = a[3].x, kq = a[4].x;
     if (kp == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     if (kq == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
@@ -330,9 +302,7 @@ static int o_double_contact(lua_State *L) {
 
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
     {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
-static int o_closed(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(o_closed, a) {
     if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
     if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     int st;
@@ -369,9 +339,7 @@ static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
     return pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, st);
 }
 
-static int i_lagrange(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_lagrange, a) {
     int st;
     return MADE(interpolate(L, a, &st));
 }
@@ -431,9 +399,7 @@ static int weight_equations(lua_State *L, int n, const double *u) {
     return 1;
 }
 
-static int i_weights(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_weights, a) {
     int n = a[0].n;
     if (a[1].n) return weight_equations(L, n, a[0].list);
     double t = a[1].x, w[MAXNODES];
@@ -443,9 +409,7 @@ static int i_weights(lua_State *L) {
     return pcl_push_results(L, 0, "N", n, w);
 }
 
-static int i_controls(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_controls, a) {
     int st;
     pc_curve *c = interpolate(L, a, &st);
     if (!c) return CHECK(st);
@@ -481,9 +445,7 @@ static int i_arc(lua_State *L) {
 
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
                                         {.name = "axis", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1}, PCL_END};
-static int i_adaptive(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_adaptive, a) {
     int n = a[0].n, d = a[0].dim, axis = (int)a[1].x;
     if (axis < 1 || axis > d) return pcl_argfail(L, 2, "must be an axis number 1..%d, got %d", d, axis);
     double v[MAXNODES];
@@ -557,9 +519,7 @@ static const pcl_arg basis_args[] = {{.name = "basis", .kind = PCL_ANY, .read = 
                                      A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
                                      {.name = "t0", .kind = PCL_NUMBER, .flags = PCL_OPT},
                                      {.name = "t1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-static int i_basis(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_basis, a) {
     int n = a[0].n, d = a[1].dim;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);
     need_count(L, 3, &a[2], n);
@@ -583,9 +543,7 @@ static int i_basis(lua_State *L) {
 }
 
 static const pcl_arg r22_args[] = {A_POINTS("points", 0, 5, 5), PCL_END};
-static int i_rational22(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_rational22, a) {
     int st, d = a[0].dim;
     double co[5 * PC_MAXDIM];
     MADE(pc_interp_rational22(d, a[0].list, co, &st));
@@ -602,9 +560,7 @@ static int i_rational22(lua_State *L) {
 #define F_OF_X A_FN("f", "a function of x")
 
 static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END};
-static int a_curve(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(a_curve, a) {
     pcl_luafn f = pcl_luafn_at(L, 1);
     int st, bad = 0;
     pc_curve *c = pc_approx_curve(pcl_luafn_of, &f, a[1].n, a[1].list, &bad, &st);
@@ -640,9 +596,7 @@ static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse
 }
 
 static const pcl_arg mse_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
-static int a_mse(lua_State *L) {
-    pcl_val a[6] = {0};   /* f, nodes, m, opts, m =, divisor = */
-    PCL_READ(L, a);
+PCL_BODY(a_mse, a) {   /* f, nodes, m, opts, m =, divisor = */
     pc_mse_divisor dv;
     int m = samples(L, 3, &a[2], 1, 1000000, &dv);
     pcl_luafn f = pcl_luafn_at(L, 1);
@@ -653,9 +607,7 @@ static int a_mse(lua_State *L) {
 }
 
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
-static int a_optimal_nodes(lua_State *L) {
-    pcl_val a[8] = {0};   /* f, a, b, N, m, opts, m =, divisor = */
-    PCL_READ(L, a);
+PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
     int N = (int)a[3].x;
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     pc_mse_divisor dv;
@@ -669,9 +621,7 @@ static int a_optimal_nodes(lua_State *L) {
 }
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
-static int a_chebyshev(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(a_chebyshev, a) {
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     double x[64];
     pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x);
@@ -680,9 +630,7 @@ static int a_chebyshev(lua_State *L) {
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
     {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101, .expect = "an integer >= 2"}, PCL_END};
-static int a_lagrange_mse(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(a_lagrange_mse, a) {
     pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
     CHECK(pc_lagrange_mse_x(pcl_luafn_of, &f, a[1].n, a[1].list, a[2].x, a[3].x, (int)a[4].x, &mse));

@@ -9,17 +9,13 @@
 
 #define CHECK(st) pcl_check(L, (st), pc_konop_why)
 
-static int k_area_k(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_area_k, a) {
     double k;
     CHECK(pc_k_area_k(a[0].x, a[1].x, a[2].x, &k));
     return pcl_push_results(L, 0, "n", k);
 }
 
-static int k_area_theorem(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_area_theorem, a) {
     int n = a[0].n;
     double p[6 * PC_MAXDIM];
     pcl_point_rows(a, 6, n, p);
@@ -29,9 +25,7 @@ static int k_area_theorem(lua_State *L) {
                             o.abc[2], o.collinear);
 }
 
-static int k_o_theorem(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_o_theorem, a) {
     int m = a[0].n, n = a[0].dim;
     double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
     double d[2 * PC_MAXDIM];
@@ -42,9 +36,7 @@ static int k_o_theorem(lua_State *L) {
     return 3;
 }
 
-static int k_simplex_ratio(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_simplex_ratio, a) {
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     int d, cols;
     pcl_read_rows(L, 1, 0, m, &d, &cols);
@@ -56,9 +48,7 @@ static int k_simplex_ratio(lua_State *L) {
     return pcl_push_results(L, 0, "n", r);
 }
 
-static int k_meet_line_plane(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_meet_line_plane, a) {
     int n = a[0].n;
     if (n < 3) return pcl_fail(L, "a line and a plane meet in 3-D or more, got %d-D points", n);
     double p[5 * PC_MAXDIM], k[PC_MAXDIM + 1], lam, pq[2];
@@ -84,9 +74,7 @@ static int polar_common(lua_State *L, int rotate) {
 static int k_polar(lua_State *L) { return polar_common(L, 0); }
 static int k_rotate(lua_State *L) { return polar_common(L, 1); }
 
-static int k_moving_simplex(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_moving_simplex, a) {
     pc_curve *c[4] = {a[0].obj, a[1].obj, a[2].obj, a[3].obj};
     int st;
     pc_surface *s = pc_k_moving_simplex(c[0], c[1], c[2], c[3], &st);
@@ -102,9 +90,7 @@ static int k_moving_simplex(lua_State *L) {
 }
 
 /* The book's printed coordinates of a Bezier (rational or not) or B-spline curve's first piece */
-static int k_equation(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(k_equation, a) {
     const pc_curve *c = a[0].obj;
     double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
     int deg;

@@ -32,9 +32,7 @@ static int l_desargues_scheme(lua_State *L) {
     return scheme(L, PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n");
 }
 
-static int l_smooth_scheme(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_smooth_scheme, a) {
     int d = a[0].n, n = (int)a[3].x;
     double abc[3 * PC_MAXDIM];
     pcl_point_rows(a, 3, d, abc);
@@ -44,9 +42,7 @@ static int l_smooth_scheme(lua_State *L) {
     return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
 
-static int l_cones_excluded(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_cones_excluded, a) {
     double u[5];
     int n;
     CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
@@ -55,9 +51,7 @@ static int l_cones_excluded(lua_State *L) {
 
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
 
-static int l_focal_point(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_focal_point, a) {
     int d = a[0].n, hyp = a[4].n == 1;
     double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], pab[2];
     pcl_point_rows(a, 3, d, p);

@@ -19,9 +19,7 @@ static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
     return ok;
 }
 
-static int l_scheme(lua_State *L) {
-    pcl_val a[6] = {0};   /* the table, then triples, points, current, result, range */
-    PCL_READ(L, a);
+PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, range */
     pc_triples_names nm = {0};
     int tri[PC_TRIPLES_MAXTRI][3], cur[3], dim = 0;
     unsigned char known[PC_TRIPLES_MAXPTS] = {0};

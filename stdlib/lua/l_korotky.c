@@ -227,9 +227,7 @@ static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference
                                          {.name = "samples", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE,
                                           .lo = 8, .hi = 4096, .dflt = 64}, PCL_END};
 
-static int l_deviation(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_deviation, a) {
     pc_curve *m = a[0].obj, *r = a[1].obj;
     if (m->dim != r->dim)
         return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)", r->dim, m->dim);
@@ -243,9 +241,7 @@ static int l_deviation(lua_State *L) {
 
 static const pcl_arg curve_arg[] = {A_CURVE("curve", 0), PCL_END};
 
-static int l_joint_jumps(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_joint_jumps, a) {
     double dk, da;
     int at, st = pc_curve_joint_jumps(a[0].obj, &dk, &da, &at);
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
@@ -255,9 +251,7 @@ static int l_joint_jumps(lua_State *L) {
     return 3;
 }
 
-static int l_energy(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_energy, a) {
     pcl_callback_state(L);
     double E;
     int st = pc_curve_bending_energy(a[0].obj, &E);
@@ -271,9 +265,7 @@ static int l_energy(lua_State *L) {
 static const pcl_arg slope_args[] = {A_POINTS("samples", 2, 3, 0), A_NUM("x"),
                                      {.name = "window", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
 
-static int l_graphical_slope(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_graphical_slope, a) {
     int n = a[0].n, wn = a[2].present ? (int)a[2].x : n >= 7 ? 7 : n % 2 ? n : n - 1;
     const double *xy = a[0].list;
     if (wn < 3 || wn > n) return pcl_argfail(L, 3, "must be an integer 3 to %d, got %d", n, wn);
@@ -295,9 +287,7 @@ static int l_graphical_slope(lua_State *L) {
 static const pcl_arg arc_args[] = {A_SAMEPOINT("U"), A_SAMEVECTOR("tU"), A_SAMEPOINT("V"), A_SAMEVECTOR("tV"),
                                    A_SAMEPOINT("T"), PCL_END};
 
-static int l_conic_arc(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_conic_arc, a) {
     int d = a[0].n, st;
     if (d < 2) return pcl_fail(L, "the points must be 2-D or more");
     double w;
@@ -316,9 +306,7 @@ static const pcl_arg sweep_keys[] = {{.name = "U", .kind = PCL_CURVE, .flags = P
                                      {.name = "Q", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
 static const pcl_arg sweep_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = sweep_keys}, PCL_END};
 
-static int l_conic_sweep(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_conic_sweep, a) {
     int st;
     double u = 0;
     pc_surface *s = pc_surface_conic_sweep(a[1].obj, a[2].obj, a[3].obj, a[4].obj, a[5].obj, &u, &st);
@@ -331,9 +319,7 @@ static int l_conic_sweep(lua_State *L) {
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"),
                                     {.name = "origin", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3}, PCL_END};
 
-static int l_dome_rect(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_dome_rect, a) {
     int st;
     pc_surface *s = pc_surface_dome_rect(a[0].x, a[1].x, a[2].x, a[3].present ? a[3].v : NULL, &st);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_rect");
@@ -360,9 +346,7 @@ static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
                                    {.name = "h | D", .kind = PCL_ANY, .read = read_height,
                                     .expect = "a positive number or the 3-D apex D"}, PCL_END};
 
-static int l_dome_tri(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_dome_tri, a) {
     double h = a[3].x;
     if (a[3].n == 3) {
         int st = pc_dome_tri_height_through(a[0].v, a[1].v, a[2].v, a[3].v, &h);
@@ -440,9 +424,7 @@ static const pcl_arg revolve_keys[] = {{.name = "A", .kind = PCL_POINT, .flags =
                                        {.name = "ridge", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
 static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
 
-static int l_conic_revolve(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_conic_revolve, a) {
     int st;
     double u = 0;
     pc_surface *s = pc_surface_conic_revolve(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &u, &st);
@@ -459,9 +441,7 @@ static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("
                                      GUIDE("H"), GUIDE("Q"), PCL_END};
 static const pcl_arg ridge_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = ridge_keys}, PCL_END};
 
-static int l_ridge_shell(lua_State *L) {
-    pcl_val a[9] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_ridge_shell, a) {
     pc_pencil_point g[8];
     for (int i = 0; i < 8; i++) {
         g[i].c = a[i + 1].obj;
@@ -500,9 +480,7 @@ static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .ki
                                          .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
                                         PCL_END};
 
-static int l_conic_elements(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
     pc_conic_info o;
@@ -521,9 +499,7 @@ static int l_conic_elements(lua_State *L) {
     return 1;
 }
 
-static int l_plane_meet(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_plane_meet, a) {
     double p[3][5], q[3][5], out[5];
     pcl_point_rows(a, 3, 5, p[0]);
     pcl_point_rows(a + 3, 3, 5, q[0]);

@@ -60,9 +60,7 @@ static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (v
 static const pcl_arg affine_args[] = {{.name = "source points", .kind = PCL_ANY, .expect = POINTSET},
                                       {.name = "image points", .kind = PCL_ANY, .expect = POINTSET}, PCL_END};
 
-static int l_affine(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_affine, a) {
     double src[(PC_MAXDIM + 1) * PC_MAXDIM], dst[(PC_MAXDIM + 1) * PC_MAXDIM];
     int nin = 0, nout = 0, m = read_points(L, 1, 2, src, &nin), m2 = read_points(L, 2, 3, dst, &nout);
     if (m < 2) return pcl_argfail(L, 1, "holds %d points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", m);
@@ -98,9 +96,7 @@ static int l_frame(lua_State *L) {
 
 static const pcl_arg dim_arg[] = {A_INT("n", 1, PC_MAXDIM), PCL_END};
 
-static int l_identity(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_identity, a) {
     pc_map_identity(newmap(L), (int)a[0].x);
     return 1;
 }
@@ -109,9 +105,7 @@ static int l_identity(lua_State *L) {
 
 static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
 
-static int l_matrix_ctor(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_matrix_ctor, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a table of rows (tables of numbers), got %s", pcl_shown(L, 1));
     int rowvec = a[1].n == 0, nr = (int)luaL_len(L, 1), nc = 0;
     if (nr < 2 || nr > PC_MAXDIM + 1)
@@ -126,9 +120,7 @@ static int l_matrix_ctor(lua_State *L) {
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
 
-static int l_translate(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_translate, a) {
     for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
         if (!isfinite(a[0].v[i]))
             return pcl_argfail(L, 1, "must be a finite vector, got %s", pcl_shown(L, 1));
@@ -208,9 +200,7 @@ static int l_rotate(lua_State *L) {
 
 static const pcl_arg reflect_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("normal"), PCL_END};
 
-static int l_reflect(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_reflect, a) {
     int st = pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v);
     if (st == PC_EZERO) return pcl_argfail(L, 2, "is the zero vector, which gives no mirror");
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
@@ -228,9 +218,7 @@ static int axis_of(lua_State *L, int k, int n) {
 static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .kind = PCL_ANY}, {.name = "j", .kind = PCL_ANY},
                                      A_NUM("k"), PCL_END};
 
-static int l_shear(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
     if (i == j) return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
     pc_map_shear(newmap(L), n, i, j, a[3].x);
@@ -240,18 +228,14 @@ static int l_shear(lua_State *L) {
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const pcl_arg ortho_args[] = {{.name = "axis", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = AXES, .dflt = 2}, PCL_END};
 
-static int l_orthographic(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_orthographic, a) {
     pc_map_orthographic(newmap(L), a[0].s[0]);
     return 1;
 }
 
 static const pcl_arg axono_args[] = {A_NUM("phi"), A_NUM("theta"), PCL_END};
 
-static int l_axonometric(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_axonometric, a) {
     pc_map_axonometric(newmap(L), a[0].x, a[1].x);
     return 1;
 }
@@ -263,9 +247,7 @@ static int l_isometric(lua_State *L) {
 
 static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = "a number between 0 and 1 (the foreshortening of the z axis)"}, PCL_END};
 
-static int l_dimetric(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_dimetric, a) {
     if (pc_map_dimetric(newmap(L), a[0].x) != PC_OK)
         return pcl_argfail(L, 1, "must be a number between 0 and 1 (the foreshortening of the z axis), got %s", pcl_shown(L, 1));
     return 1;
@@ -275,9 +257,7 @@ static int l_dimetric(lua_State *L) {
 static const pcl_arg oblique_args[] = {A_NUM("k"), ALPHA, PCL_END};
 static const pcl_arg alpha_arg[] = {ALPHA, PCL_END};
 
-static int l_oblique(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_oblique, a) {
     pc_map_oblique(newmap(L), a[0].x, a[1].x);
     return 1;
 }
@@ -292,25 +272,19 @@ static int l_cabinet(lua_State *L) { return oblique_k(L, 0.5); }
 
 static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
 
-static int l_perspective(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_perspective, a) {
     int st = pc_map_perspective(newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
 }
 
 /* the textbook's perspective by (p, q, r) (§2.8.5), the foreshortening of an axonometry (§2.8.3),
  * the plane's axial affinity (geom/map_more.c) */
-static int l_perspective_pqr(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_perspective_pqr, a) {
     int st = pc_map_perspective_pqr(newmap(L), a[0].x, a[1].x, a[2].x);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
 }
 
-static int l_foreshortening(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_foreshortening, a) {
     const pc_map *f = a[0].obj;
     double k[PC_MAXDIM];
     if (pc_map_foreshortening(f, k) != PC_OK)
@@ -319,9 +293,7 @@ static int l_foreshortening(lua_State *L) {
     return f->nin;
 }
 
-static int l_axial_affinity(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_axial_affinity, a) {
     int st = pc_map_axial_affinity(newmap(L), a[0].v, a[1].v, a[2].v, a[3].x);
     if (st == PC_EZERO) return pcl_fail(L, "the directions d and s must not be zero");
     if (st == PC_ECOLLINEAR) return pcl_fail(L, "the direction s lies along the axis d: no affinity");
@@ -418,9 +390,7 @@ static int l_mul(lua_State *L) {
 
 static const pcl_arg g_arg[] = {A_MAP("g"), PCL_END};
 
-static int l_compose(lua_State *L) {
-    pcl_val a[1] = {0};
-    pc_map *f = PCL_READ(L, a);
+PCL_METHOD(l_compose, pc_map *f, a) {
     return compose(L, f, a[0].obj);
 }
 
@@ -433,9 +403,7 @@ static int l_inverse(lua_State *L) {
 
 static const pcl_arg conv_arg[] = {CONVENTION, PCL_END};
 
-static int l_matrix(lua_State *L) {
-    pcl_val a[1] = {0};
-    pc_map *f = PCL_READ(L, a);
+PCL_METHOD(l_matrix, pc_map *f, a) {
     int rowvec = a[0].n == 0;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pc_map_to_matrix(f, rowvec, m);
@@ -463,9 +431,7 @@ static int l_vanishing(lua_State *L) {
 }
 
 /* f:show([convention]): print the matrix with its convention, columns aligned. */
-static int l_show(lua_State *L) {
-    pcl_val v[1] = {0};
-    pc_map *f = PCL_READ(L, v);
+PCL_METHOD(l_show, pc_map *f, v) {
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 20 + 128];
     pc_map_show(f, v[0].n == 0, text, sizeof text);
     lua_getglobal(L, "print");

@@ -99,9 +99,7 @@ static int l_slider(lua_State *L) {
 
 /* _tk.param_set(name, value): what the host does, for tests and Lua-side tools */
 static const pcl_arg set_args[] = {A_ANY("name", read_name, "a parameter name"), A_NUM("value"), PCL_END};
-static int l_param_set(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_param_set, a) {
     pcl_param_set(L, a[0].s, a[1].x);
     return 0;
 }

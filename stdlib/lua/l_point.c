@@ -439,9 +439,7 @@ static int l_area(lua_State *L) {
 
 /* coords(p) -> x, y, ...: the coordinates of a point or the components of a vector. */
 static const pcl_arg one_loc[] = {{.name = "p", .kind = PCL_LOC}, PCL_END};
-static int l_coords(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_coords, a) {
     luaL_checkstack(L, a[0].n, "too many coordinates");
     for (int i = 0; i < a[0].n; i++) lua_pushnumber(L, a[0].v[i]);
     return a[0].n;

@@ -19,18 +19,14 @@ static const pcl_arg n_arg[] = {A_NUM("n"), PCL_END};
 static const pcl_arg seed_arg[] = {{.name = "s", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = 0xFFFFFF}, PCL_END};
 static const pcl_arg range_args[] = {A_NUM("start"), A_NUM("limit"), A_NUMOPT("step", 1, NULL), PCL_END};
 
-static int l_f32(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_f32, a) {
     lua_pushnumber(L, qb_f32(a[0].x));
     return 1;
 }
 
 /* Every SINGLE assignment of a translated program is a CSNG: one C call, the error raised at
  * the caller's line ("prog.bas:12: Overflow", as QBasic names it). */
-static int l_csng(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_csng, a) {
     double r = qb_f32(a[0].x);
     if (!isfinite(r)) return luaL_error(L, "Overflow");
     lua_pushnumber(L, r);
@@ -63,23 +59,17 @@ static qb_rnd_state *rnd_state(lua_State *L) {
     return upvalue_state(L, PCL_UPVALUE(1), sizeof(qb_rnd_state), "random-number state");
 }
 
-static int l_rnd(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_rnd, a) {
     lua_pushnumber(L, qb_rnd(rnd_state(L), a[0].present ? a[0].x : 1.0));
     return 1;
 }
 
-static int l_randomize(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_randomize, a) {
     qb_randomize(rnd_state(L), a[0].x);
     return 0;
 }
 
-static int l_seed(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_seed, a) {
     qb_rnd_state *s = rnd_state(L);
     lua_pushinteger(L, s->seed);
     if (a[0].present) s->seed = (uint32_t)a[0].x;
@@ -94,9 +84,7 @@ static int range_iter(lua_State *L) {
     return 1;
 }
 
-static int l_range(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_range, a) {
     if (qb_f32(a[2].x) == 0) return pcl_argfail(L, 3, "must be non-zero (in SINGLE), got %s", pcl_pushnum(L, a[2].x));
     qb_range *r = lua_newuserdatauv(L, sizeof *r, 0);
     qb_range_init(r, a[0].x, a[1].x, a[2].x);

@@ -40,9 +40,7 @@ static int in_range(lua_State *L, int k, double v, int lo, int hi) {
 static const pcl_arg print_at_args[] = {INT("row"), INT("column"), {.name = "text", .kind = PCL_STRING},
                                         ATTR("colour"), ATTR("background colour"),
                                         {.name = "cell height", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
-static int l_print_at(lua_State *L) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_print_at, a) {
     pc_canvas *c = pcl_active_canvas(L);
     /* the mode's cells, or those asked for: text mode's 43 and 50 lines use the 8x8 font */
     int h = a[5].present ? in_range(L, 6, a[5].x, 8, 16) : pc_cell_height(c);
@@ -51,9 +49,7 @@ static int l_print_at(lua_State *L) {
 }
 
 static const pcl_arg scroll_args[] = {INT("top row"), INT("bottom row"), ATTR("background colour"), PCL_END};
-static int l_scroll_text(lua_State *L) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_scroll_text, a) {
     pc_canvas *c = pcl_active_canvas(L);
     int h = pc_cell_height(c), rows = (c->height + h - 1) / h;
     int top = in_range(L, 1, a[0].x, 1, rows), bottom = in_range(L, 2, a[1].x, top, rows);
@@ -138,9 +134,7 @@ static int l_put_block(lua_State *L) {
 /* ---- DRAW, pages, PMAP ------------------------------------------------------------------- */
 
 static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read = read_bytes, .expect = "a string"}, PCL_END};
-static int l_draw(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_draw, a) {
     pc_pages *p = pcl_pages(L);
     pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
     p->draw.aspect = pc_mode_of_canvas(p->c, &m) ? m.aspect : 1;
@@ -161,9 +155,7 @@ static int l_paint_tile(lua_State *L) {
 }
 
 static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
-static int l_pages(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_pages, a) {
     pc_pages *p = pcl_pages(L);
     int active = in_range(L, 1, a[0].x, 0, p->npages - 1);
     int visual = a[1].present ? in_range(L, 2, a[1].x, 0, p->npages - 1) : active;
@@ -171,9 +163,7 @@ static int l_pages(lua_State *L) {
 }
 
 static const pcl_arg pcopy_args[] = {INT("source page"), INT("destination page"), PCL_END};
-static int l_pcopy(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_pcopy, a) {
     pc_pages *p = pcl_pages(L);
     int from = in_range(L, 1, a[0].x, 0, p->npages - 1), to = in_range(L, 2, a[1].x, 0, p->npages - 1);
     pc_canvas *src = pc_pages_page(p, from), *dst = pc_pages_page(p, to);
@@ -182,9 +172,7 @@ static int l_pcopy(lua_State *L) {
 }
 
 static const pcl_arg pmap_args[] = {A_NUM("value"), A_INT("function", 0, 3), PCL_END};
-static int l_pmap(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_pmap, a) {
     double r = pc_pmap(pcl_active_canvas(L), a[0].x, (int)a[1].x);
     if (a[1].x < 2) lua_pushinteger(L, (lua_Integer)r);
     else lua_pushnumber(L, r);
@@ -192,9 +180,7 @@ static int l_pmap(lua_State *L) {
 }
 
 static const pcl_arg mode_info_args[] = {{.name = "mode", .kind = PCL_INTEGER, .expect = "a screen mode 1, 2, 7, 8, 9, 12 or 13"}, PCL_END};
-static int l_mode_info(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_mode_info, a) {
     pc_mode_info m;
     if (a[0].x < 0 || a[0].x > 13 || pc_mode_info_of((int)a[0].x, &m) != PC_OK)
         return pcl_argfail(L, 1, "must be a screen mode 1, 2, 7, 8, 9, 12 or 13, got %s", pcl_pushnum(L, a[0].x));

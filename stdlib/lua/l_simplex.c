@@ -92,9 +92,7 @@ static int l_bary(lua_State *L) {
 
 static const pcl_arg params_args[] = {A_POINT("M", 0), PCL_END};
 
-static int l_params(lua_State *L) {
-    pcl_val a[1] = {0};
-    pc_simplex *s = PCL_READ(L, a);
+PCL_METHOD(l_params, pc_simplex *s, a) {
     double p[PC_MAXDIM], res;
     if (a[0].n != s->n)
         return pcl_fail(L, "argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", a[0].n, s->n);

@@ -89,17 +89,13 @@ static int make(lua_State *L, double n, double m, double t0, const pcl_val *t, i
 }
 
 static const pcl_arg power_args[] = {A_POSNUM("n"), A_NUMOPT("t", 0, NULL), PCL_END};
-static int l_power(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_power, a) {
     return make(L, a[0].x, a[0].x, 0.5, &a[1], 2);
 }
 
 static const pcl_arg half_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_ANY("t0", open_unit, "a number in (0, 1)"),
                                     A_NUMOPT("t", 0, NULL), PCL_END};
-static int l_half(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_half, a) {
     return make(L, a[0].x, a[1].x, a[2].x, &a[3], 4);
 }
 

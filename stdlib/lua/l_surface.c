@@ -105,9 +105,7 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
 
 static const pcl_arg bilinear_args[] = {A_SAMEPOINT("P00"), A_SAMEPOINT("P10"), A_SAMEPOINT("P01"),
                                         A_SAMEPOINT("P11"), PCL_END};
-static int l_bilinear(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_bilinear, a) {
     int st;
     return pcl_push_made_surface(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
 }
@@ -151,9 +149,7 @@ static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 
 #define NET {.name = "net", .kind = PCL_ANY, .read = read_net, .expect = "a list of rows of points"}
 static const pcl_arg bezier_args[] = {NET, PCL_END};
-static int l_bezier(lua_State *L) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_bezier, a) {
     int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
     return pcl_push_made_surface(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st, pcl_name(L));
 }
@@ -161,9 +157,7 @@ static int l_bezier(lua_State *L) {
 static const pcl_arg bspline_args[] = {NET, {.name = "p", .kind = PCL_INTEGER}, {.name = "q", .kind = PCL_INTEGER},
                                        {.name = "uknots", .kind = PCL_ANY, .flags = PCL_OPT},
                                        {.name = "vknots", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-static int l_bspline(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_bspline, a) {
     int nu = (int)a[0].v[0], nv = (int)a[0].v[1], p = (int)a[1].x, q = (int)a[2].x;
     if (p < 1 || p >= nu) return pcl_argfail(L, 2, "must be 1..%d (below the %d rows)", nu - 1, nu);
     if (q < 1 || q >= nv) return pcl_argfail(L, 3, "must be 1..%d (below the %d columns)", nv - 1, nv);
@@ -195,9 +189,7 @@ static int read_corners(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg hermite_keys[] = {CORNERS("P", "points"), CORNERS("Pu", "vectors"), CORNERS("Pv", "vectors"),
                                        CORNERS("Puv", "vectors"), PCL_END};
 static const pcl_arg hermite_args[] = {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = hermite_keys}, PCL_END};
-static int l_hermite(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_hermite, a) {
     for (int f = 2; f <= 4; f++)
         if (a[f].n != a[1].n)
             return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
@@ -206,18 +198,14 @@ static int l_hermite(lua_State *L) {
 }
 
 static const pcl_arg ruled_args[] = {A_CURVE("c0", 0), A_CURVE("c1", 0), PCL_END};
-static int l_ruled(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_ruled, a) {
     if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
     return pcl_push_made_surface(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st, pcl_name(L));
 }
 
 static const pcl_arg coons_args[] = {A_CURVE("cu0", 0), A_CURVE("cu1", 0), A_CURVE("c0v", 0), A_CURVE("c1v", 0), PCL_END};
-static int l_coons(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_coons, a) {
     for (int i = 1; i < 4; i++)
         if (a[i].n != a[0].n)
             return pcl_argfail(L, i + 1, "is %d-D, but argument #1 (cu0) is %d-D (mixed dimensions)", a[i].n, a[0].n);
@@ -231,9 +219,7 @@ static int l_coons(lua_State *L) {
 
 static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
                                           A_NUMOPT("v0", 0, "0"), A_NUMOPT("v1", 2 * M_PI, "2*pi"), PCL_END};
-static int l_revolution(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_revolution, a) {
     int st;
     pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
     if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
@@ -250,9 +236,7 @@ static const pcl_arg func_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_
                                      .expect = "a function (u, v) -> point or an equation"},
                                     A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1"), PCL_END};
 /* surface(f, u0, u1, v0, v1): the __call of the table (the table itself is argument 1) */
-static int l_func(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_func, a) {
     const char *fn = pcl_name(L);
     lua_settop(L, 6);
     lua_remove(L, 1);
@@ -283,9 +267,7 @@ static int l_func(lua_State *L) {
 
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
 
-static int s_call(lua_State *L) {
-    pcl_val a[2] = {0};
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_call, lsurf *u, a) {
     double out[PC_MAXDIM];
     int st = pc_surface_eval(u->s, a[0].x, a[1].x, out);
     if (st == PC_IMPROPER) return pcl_fail(L, "the point at (%s, %s) is at infinity", pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
@@ -294,9 +276,7 @@ static int s_call(lua_State *L) {
     return 1;
 }
 
-static int s_partials(lua_State *L) {
-    pcl_val a[2] = {0};
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_partials, lsurf *u, a) {
     double out[3 * PC_MAXDIM];
     int st = pc_surface_partials(u->s, a[0].x, a[1].x, out);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
@@ -307,9 +287,7 @@ static int s_partials(lua_State *L) {
     return 3;
 }
 
-static int s_normal(lua_State *L) {
-    pcl_val a[2] = {0};
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_normal, lsurf *u, a) {
     double n[3];
     if (u->s->dim != 3) return pcl_fail(L, "a normal needs a 3-D surface, this one is %d-D", u->s->dim);
     int st = pc_surface_normal(u->s, a[0].x, a[1].x, n);
@@ -325,9 +303,7 @@ static int s_normal(lua_State *L) {
 static const char *const FAMILIES[] = {"u", "v", NULL};
 static const pcl_arg iso_args[] = {{.name = "family", .kind = PCL_ENUM, .choices = FAMILIES,
                                     .expect = "\"u\" (u = const) or \"v\" (v = const)"}, A_NUM("value"), PCL_END};
-static int s_iso(lua_State *L) {
-    pcl_val a[2] = {0};
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_iso, lsurf *u, a) {
     int st;
     pc_curve *c = pc_surface_iso(u->s, a[0].n, a[1].x, &st);
     if (!c) return pcl_raise_status(L, pcl_name(L), st);
@@ -336,9 +312,7 @@ static int s_iso(lua_State *L) {
 }
 
 static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
-static int s_map(lua_State *L) {
-    pcl_val a[1] = {0};
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_map, lsurf *u, a) {
     pc_map *f = a[0].obj;
     if (f->nin != u->s->dim) return pcl_fail(L, "the map takes %d-D points, but the surface is %d-D", f->nin, u->s->dim);
     int st;
@@ -362,9 +336,7 @@ static const pcl_arg wireframe_keys[] = {
     {.name = "hidden", .kind = PCL_ENUM, .choices = HIDDEN}, COUNT("mesh", 1024, 48),
     {.name = "silhouette", .kind = PCL_BOOLEAN, .shown = "false"}, {.name = "boundary", .kind = PCL_BOOLEAN, .shown = "false"}, PCL_END};
 static const pcl_arg wireframe_args[] = {A_OPTIONS("opts", wireframe_keys), PCL_END};
-static int s_wireframe(lua_State *L) {
-    pcl_val a[10] = {0};   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_wireframe, lsurf *u, a) {   /* opts; nu, nv, color, tol, map, hidden, mesh, silhouette, boundary */
     pc_wireframe_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .color = (int)a[3].x, .tol = a[4].x, .hidden = a[6].n,
                            .mesh = (int)a[7].x, .silhouette = (int)a[8].x, .boundary = (int)a[9].x};
     pc_canvas *cv = pcl_canvas(L);
@@ -407,9 +379,7 @@ static const pcl_arg shade_keys[] = {
 static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 
 /* s:shade{...}: the quads drawn by the core (wireframe.h) through the map or the camera; their count */
-static int s_shade(lua_State *L) {
-    pcl_val a[8] = {0};   /* opts; nu, nv, color, light, ambient, mesh, map */
-    lsurf *u = PCL_READ(L, a);
+PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mesh, map */
     pc_canvas *cv = pcl_canvas(L);
     pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
     pc_rgb base;

@@ -599,6 +599,17 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     return self;
 }
 
+int pcl_nvalues(lua_State *L) {
+    int n = current_box(L)->nvalues;
+    return n > 0 ? n : 1;
+}
+
+void *pcl_read_all(lua_State *L, pcl_val *v, int n) {
+    memset(v, 0, sizeof *v * (size_t)n);
+    pcl_callback_state(L);
+    return pcl_read(L, v, n);
+}
+
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out) {
     const pcl_fn *d = current(L);
     const char *name = a->name;

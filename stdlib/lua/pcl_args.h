@@ -113,6 +113,34 @@ void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup);
  * the arguments on the stack: every argument keeps its stack index. */
 void *pcl_read(lua_State *L, pcl_val *v, int n);
 #define PCL_READ(L, v) pcl_read((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
+/* A binding's body, its declared arguments already read into the values a (the layer reads
+ * them as PCL_READ does, into a block sized by the declaration) and Lua callbacks armed
+ * (pcl_callback_state):
+ *     PCL_BODY(l_bezier, a) { ... a[0].list ... return pcl_push_made(L, c, &st, NULL); }
+ *     PCL_METHOD(c_length, lcurve *u, a) { ... }     the receiver of a method as u
+ * The function defined is l_bezier (a lua_CFunction, registered as any other). */
+#define PCL_BODY(f, a) \
+    static int f##_body(lua_State *L, pcl_val *a); \
+    static int f(lua_State *L) { \
+        pcl_val f##_v[pcl_nvalues(L)]; \
+        pcl_read_all(L, f##_v, (int)(sizeof f##_v / sizeof f##_v[0])); \
+        return f##_body(L, f##_v); \
+    } \
+    static int f##_body(lua_State *L, PCL_UNUSED pcl_val *a)
+#define PCL_METHOD(f, self, a) \
+    static int f##_body(lua_State *L, self, pcl_val *a); \
+    static int f(lua_State *L) { \
+        pcl_val f##_v[pcl_nvalues(L)]; \
+        void *f##_self = pcl_read_all(L, f##_v, (int)(sizeof f##_v / sizeof f##_v[0])); \
+        return f##_body(L, f##_self, f##_v); \
+    } \
+    static int f##_body(lua_State *L, self, PCL_UNUSED pcl_val *a)
+#define PCL_UNUSED __attribute__((unused))
+/* The values the running function's declaration fills (at least 1: PCL_BODY's block). */
+int pcl_nvalues(lua_State *L);
+/* pcl_read into n values it clears first, with Lua callbacks armed: PCL_BODY's reader. */
+void *pcl_read_all(lua_State *L, pcl_val *v, int n);
+
 /* Read the one value at stack index idx as the argument a shown as argument #shown, or its
  * element [item] when item > 0 (variadic functions: simplex(C, A, B, ...); lists read by the
  * body); dimdef: the dimension PCL_SAMEDIM refers to, set by argument #1 (by [1] for an item). */
