@@ -1,9 +1,6 @@
 /* Binding of the textbook's constructions (Buimov; stdlib/books/buimov/), in the tables plane
  * (ch. 3) and buimov (ch. 1.2, 2.8.6, 4, 5).  Curves and surfaces are the one curve and surface
  * types, maps the one map type. */
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"

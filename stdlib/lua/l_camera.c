@@ -1,7 +1,6 @@
 /* Binding of 3-D drawing: camera(f), the current projection, and the drawing of curves as one
  * path (c:draw; _tk.draw_curve for plot and the lines of curvilinear.lua), the C path from the
  * object through the camera (or a map), WINDOW and VIEW to the canvas (curve_path.h). */
-#include <math.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"

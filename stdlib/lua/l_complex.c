@@ -1,7 +1,5 @@
 /* Complex numbers and the Moebius map of the unit disc (examples 15, 16): the arithmetic is the
  * core's pc_cnum_arith and pc_cnum_fn (stdlib/geom/cnum.h), the Moebius map its pc_mobius. */
-#include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_tk.h"
 #include "curvilinear.h"

@@ -1,7 +1,5 @@
 /* Conics that know what they are (geom/quadratic.h) in Lua: c:conic(), conic.elements and
  * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements. */
-#include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_books.h"
 #include "pcl_core.h"

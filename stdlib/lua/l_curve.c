@@ -1,9 +1,6 @@
 /* Binding of the one curve type (stdlib/geom/curve.h) and its constructors, Stepanov's curves
  * among them (examples 5, 10, 12).  All are one userdata "curve"; its methods are in the table
  * _tk.curve_methods, to which l_camera.c adds c:draw and stdlib/lua/curves.lua c:each. */
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "spline.h"

@@ -1,8 +1,5 @@
 /* Binding of Stepanov's coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h,
  * numeric.h), and the numeric helpers of stdlib/lua/curvilinear.lua in _tk. */
-#include <math.h>
-#include <stdio.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_tk.h"
 #include "curvilinear.h"

@@ -2,9 +2,6 @@
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
  * around QBasic's pages, so SCREEN can replace the canvas in place); the registry keeps it
  * too, for the host. */
-#include <math.h>
-#include <stdio.h>
-#include <string.h>
 #include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_draw.h"
 #include "print.h"       /* named pens, the print pen's width */

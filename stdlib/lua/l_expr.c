@@ -7,9 +7,6 @@
  * Every Lua state has one pool of nodes (the equations share their common parts); compiled
  * programs are copies, so curves outlive nothing.  The math functions are wrapped once for
  * the whole module: a number goes straight to Lua's own function. */
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"

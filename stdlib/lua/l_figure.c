@@ -1,7 +1,6 @@
 /* The print look's bindings on the declared argument layer (docs/bindings.md): figure{...},
  * and the kinds pen() and label() of l_draw.c declare: lengths with units and the label
  * options {font =, size =, halo =}. */
-#include <string.h>
 #include "pcl_draw.h"
 #include "print.h"
 

@@ -4,9 +4,6 @@
  * and map.view; text{units = "device"} in front of the drawing binding's text.  Points are
  * 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene (pcl_scene.h):
  * the strokes of a camera with hidden lines, resolved when the picture is written. */
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_draw.h"
 #include "pcl_curve.h"

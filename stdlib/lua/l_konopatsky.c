@@ -2,10 +2,6 @@
  * konop_interp.h, approx.h): the tables conic, oneratio, interp and approx, declared on the
  * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
  * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_core.h"
 #include "pcl_expr.h"

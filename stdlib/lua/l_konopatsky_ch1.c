@@ -1,6 +1,5 @@
 /* Konopatsky's chapter 1 in Lua (books/konopatsky/konop_ch1.h): the table konopatsky, declared
  * on the argument layer. */
-#include <math.h>
 #include "pcl_args.h"
 #include "pcl_core.h"
 #include "konop_ch1.h"

@@ -1,5 +1,4 @@
 /* The symbolic method of §2.2 in Lua (books/konopatsky/konop_triples.h): conic.scheme{...}. */
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_core.h"
 #include "pcl_point.h"

@@ -3,9 +3,6 @@
  * (cos delta, sin delta), x growing) or a 2-D vector.  Errors of the solvers name the knot (#1
  * is the first point).  A guide or a pencil's spanning point is a curve or a fixed point (a
  * vector: the point at infinity of its direction, as the basis point Z of the z axis). */
-#include <stdio.h>
-#include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "ferguson.h"

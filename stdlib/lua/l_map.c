@@ -1,10 +1,6 @@
 /* Binding of the one map type (stdlib/geom/map.h): one userdata "map" for affine and
  * projective maps, the 3-D -> 2-D projections and the textbook's matrices, in the tables
  * affine and map; the projections of l_curvilinear.c are maps of this type too. */
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_point.h"
 #include "pcl_curve.h"

@@ -5,8 +5,6 @@
  * recorded in order, so the host can build the page's sliders or run the frames of the
  * parameter marked animate.
  * The host's side (pcl.h): pcl_param_set before running a script, pcl_push_params after. */
-#include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_point.h"
 

@@ -6,9 +6,6 @@
  * recognising a point is a pointer comparison, never a registry lookup by name; the hot paths
  * (P, lerp, + - * /, .x) allocate exactly one userdata and read nothing twice: the layer reads
  * the arguments again only to word an error. */
-#include <math.h>
-#include <stdio.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_point.h"
 #include "pcl_curve.h"

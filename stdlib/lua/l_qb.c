@@ -1,7 +1,6 @@
 /* Binding of the QBasic number semantics (interp/qbasic/qbnum): the sub-table `qb` of the
  * module.  The RND state belongs to the Lua state: a userdata shared as upvalue by rnd,
  * randomize and seed; it starts at QBasic's initial seed. */
-#include <math.h>
 #include "pcl_args.h"
 #include "qbnum.h"
 

@@ -1,8 +1,6 @@
 /* Binding of QBasic's screen (stdlib/draw/qbscreen.h): what QBasic programs do on a graphics
  * screen beyond the drawing statements (text in cells, GET/PUT, DRAW, pages, PMAP), for the
  * QBasic runtime and for scripts. */
-#include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_draw.h"
 

@@ -1,8 +1,5 @@
 /* Binding of simplices (stdlib/geom/simplex.h): simplex(C, A, B, ...), S(p, q), its methods, S[i]
  * (vertex i, 1 the initial point) and #S (the number of vertices). */
-#include <math.h>
-#include <stdio.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_point.h"
 #include "simplex.h"

@@ -1,8 +1,6 @@
 /* Binding of the smoothsteps (stdlib/geom/smooth.h): the table smooth, and the half-spline object g
  * of smooth.power(n) and smooth.half(n, m, t0) without t.  The curve builders accept these
  * objects, smooth.sine and smooth.cubic as smoothsteps they evaluate natively (pcl_tk.h). */
-#include <math.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_tk.h"
 #include "pcl_expr.h"   /* g(t) of an equation t builds an equation (l_expr.c) */

@@ -1,9 +1,6 @@
 /* Binding of the one surface type (stdlib/geom/surface.h): the table `surface` of constructors,
  * callable as surface(f, u0, u1, v0, v1) for a Lua function or a point equation, and the
  * methods of a surface s (s(u, v), s:iso, s:wireframe, s:shade, ...), declared below. */
-#include <math.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "wireframe.h"

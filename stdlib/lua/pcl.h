@@ -4,7 +4,11 @@
 #ifndef PCL_H
 #define PCL_H
 
+#include <math.h>      /* the C library every binding uses */
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <lua.h>
 #include <lauxlib.h>
 #include "canvas.h"

@@ -1,8 +1,6 @@
 /* The declared argument layer (pcl_args.h): registration, the one reader of declared
  * arguments, one wording of every message, and the registry of declarations :help reads. */
-#include <math.h>
 #include <stdarg.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"

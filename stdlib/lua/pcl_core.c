@@ -1,8 +1,5 @@
 /* Calling the core from a binding (pcl_core.h). */
-#include <math.h>
 #include <stdarg.h>
-#include <stdlib.h>
-#include <string.h>
 #include "pcl_args.h"
 #include "pcl_core.h"
 #include "pcl_point.h"

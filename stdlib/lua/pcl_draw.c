@@ -1,6 +1,5 @@
 /* Facilities the drawing bindings share (pcl_draw.h): fields of a result table, and lists of
  * n-D points as places on the screen. */
-#include <string.h>
 #include "pcl_draw.h"
 #include "pcl_curve.h"
 

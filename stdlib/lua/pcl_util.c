@@ -1,7 +1,6 @@
 /* Argument checking shared by all bindings: the house error style
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
 #include <stdarg.h>
-#include <string.h>
 #include "pcl_args.h"
 
 /* The string key under which the table at t holds the value at f, or NULL (the table keeps the

@@ -1,7 +1,6 @@
 /* luaopen_pointcalc: builds the module table from the binding files, then runs the Lua-side
  * helpers embedded from the .lua files of stdlib/lua (each receives the table as its argument). */
 #include "pcl_args.h"
-#include <stdio.h>
 #include "pcl_embed.h"
 
 static void run_lua_helpers(lua_State *L) {
