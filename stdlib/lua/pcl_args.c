@@ -39,6 +39,8 @@ static const decl_box *current_box(lua_State *L) {
 }
 static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
 
+int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
+
 /* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration (whose
  * values its body would misread): refused where it is attempted, so that no call has to ask
  * Lua which function is running.  The other upvalues (a canvas, a random state) are checked
@@ -104,10 +106,14 @@ static const char *arg_label(lua_State *L, int shown, const char *name) {
                 : lua_pushfstring(L, "argument #%d", shown);
 }
 
+/* The name of declared argument #k, or NULL past the declared ones (or none declared). */
+static const char *arg_name(lua_State *L, int k) {
+    const decl_box *b = current_box(L);
+    return k >= 1 && k <= b->nargs ? b->d->args[k - 1].name : NULL;
+}
+
 int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
-    const pcl_fn *d = current(L);
-    const char *name = NULL;   /* an argument past the declared ones (or none declared): unnamed */
-    for (int i = 0; d->args && i < k && d->args[i].kind != PCL_NONE; i++) name = i == k - 1 ? d->args[i].name : NULL;
+    const char *name = arg_name(L, k);
     va_list ap;
     va_start(ap, fmt);
     return vfail(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, name)), fmt, ap);
@@ -167,21 +173,13 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
     return best;   /* a key of the table, which keeps the string alive */
 }
 
-/* ---- weights, callables, lists of numbers ------------------------------------------------ */
+/* ---- callables ------------------------------------------------------------------------------ */
 
 int pcl_callable(lua_State *L, int idx) {
     if (lua_isfunction(L, idx)) return 1;
     if (luaL_getmetafield(L, idx, "__call") == LUA_TNIL) return 0;
     lua_pop(L, 1);
     return 1;
-}
-
-void pcl_push_numbers(lua_State *L, int n, const double *x) {
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        lua_pushnumber(L, x[i]);
-        lua_rawseti(L, -2, i + 1);
-    }
 }
 
 /* ---- reading one value ------------------------------------------------------------------- */
@@ -330,11 +328,10 @@ static double *list_buffer(lua_State *L, pcl_val *out, size_t need) {
 }
 
 static void count_error(lua_State *L, const ctx *c, const pcl_arg *a, int m, const char *unit) {
-    const char *w = where(L, c);
     int lo = (int)a->lo, hi = (int)a->hi;
-    if (hi <= 0) pcl_error(L, "%s: %s must hold at least %d %s, got %d", c->fname, w, lo, unit, m);
-    if (lo == hi) pcl_error(L, "%s: %s must hold %d %s, got %d", c->fname, w, lo, unit, m);
-    pcl_error(L, "%s: %s must hold %d to %d %s, got %d", c->fname, w, lo, hi, unit, m);
+    const char *count = hi <= 0 ? lua_pushfstring(L, "at least %d", lo)
+                        : lo == hi ? lua_pushfstring(L, "%d", lo) : lua_pushfstring(L, "%d to %d", lo, hi);
+    pcl_error(L, "%s: %s must hold %s %s, got %d", c->fname, where(L, c), count, unit, m);
 }
 
 /* A list of points or numbers at idx. */
@@ -548,52 +545,74 @@ static int nvalues(const pcl_arg *a) {
     return n;
 }
 
-static int nargs_of(const pcl_fn *d) {
-    int n = 0;
-    while (d->args && d->args[n].kind) n++;
-    return n;
-}
-
 static void check_count(lua_State *L, const decl_box *b, int n) {
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
 }
 
-void *pcl_read(lua_State *L, pcl_val *v, int n) {
-    const decl_box *b = current_box(L);
+/* The declared arguments from stack slot first on into v, argument k + 1 shown as #k + 1; with
+ * pairs (pcl_read_pairs) each is read at the slot it falls on and shown by that slot, a pair
+ * given as one point fills x and y, and a last option table may trail. */
+static void read_args(lua_State *L, const decl_box *b, pcl_val *v, int first, int pairs) {
     const pcl_fn *d = b->d;
-    void *self = NULL;
-    int first = 1, nargs = b->nargs;
-    if (d->self) {
-        self = d->self(L, 1);
-        if (!self)
-            pcl_error(L, "%s: must be called on %s %s, as %s(...)", d->name,
-                      strchr("aeiou", d->selftype[0]) ? "an" : "a", d->selftype, d->topic ? d->topic : d->name);
-        first = 2;
-    }
-    check_count(L, b, n);
-    if (lua_gettop(L) < first - 1 + nargs) lua_settop(L, first - 1 + nargs);   /* buffers above */
+    int nargs = b->nargs, top = lua_gettop(L), opts = 0;
+    if (pairs && nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
+        opts = top;                             /* a trailing option table */
+    int limit = opts ? opts - 1 : top, keys = nargs, room = 0, y = 0;
     const char *fname = NULL;
     dimref dim = {0};
-    int slot = nargs, room = 0;
-    for (int k = 0; k < nargs; k++) {
+    for (int k = 0, slot = first; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
-        int idx = first + k;
-        if (read_scalar(L, a, idx, &v[k], 0)) continue;
+        int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
+        if (slot <= limit && read_scalar(L, a, idx, &v[k], 0)) {
+            y = (a->flags & PCL_PAIR) != 0;
+            continue;
+        }
         if (!fname) fname = d->callname ? pcl_name(L) : d->name;   /* the general reader */
         if (a->kind != PCL_ANY && !room) {   /* lists and options push; a reader pushes little */
             luaL_checkstack(L, 24, NULL);
             room = 1;
         }
-        ctx c = {fname, k + 1, a->name, NULL, 0, &dim};
         if (a->kind == PCL_OPTIONS) {
-            v[k].idx = idx;
-            v[k].present = lua_istable(L, idx);
-            read_options(L, &c, a, idx, v + slot);
-            for (const pcl_arg *kk = a->keys; kk->name; kk++) slot++;
-        } else {
-            read_value(L, &c, a, idx, &v[k]);
+            int at = pairs ? opts : idx;
+            ctx c = {fname, (at ? at : idx) - first + 1, a->name, NULL, 0, &dim};
+            v[k].idx = at;
+            v[k].present = at && lua_istable(L, at);
+            read_options(L, &c, a, at ? at : idx, v + keys);
+            for (const pcl_arg *kk = a->keys; kk->name; kk++) keys++;
+            continue;
         }
+        if (pairs && (a->flags & PCL_PAIR) && k + 1 < nargs && slot <= limit &&
+            lua_type(L, idx) != LUA_TNUMBER && pcl_tovalue(L, idx)) {
+            pcl_topoint2(L, idx, &v[k].x, &v[k + 1].x);   /* one point: the pair in one slot */
+            v[k].present = v[k + 1].present = 1;
+            v[k].idx = v[k + 1].idx = idx;
+            k++;
+            continue;
+        }
+        int coord = pairs && ((a->flags & PCL_PAIR) || y);
+        y = (a->flags & PCL_PAIR) != 0;         /* the next argument is this pair's y */
+        pcl_arg one;
+        if (coord && lua_type(L, idx) != LUA_TNUMBER) {
+            one = *a;
+            one.expect = "a number or a point";
+            a = &one;
+        }
+        ctx c = {fname, slot - first + 1, a->name, NULL, 0, &dim};
+        read_value(L, &c, a, idx, &v[k]);
     }
+}
+
+void *pcl_read(lua_State *L, pcl_val *v, int n) {
+    const decl_box *b = current_box(L);
+    const pcl_fn *d = b->d;
+    void *self = d->self ? d->self(L, 1) : NULL;
+    if (d->self && !self)
+        pcl_error(L, "%s: must be called on %s %s, as %s(...)", d->name,
+                  strchr("aeiou", d->selftype[0]) ? "an" : "a", d->selftype, d->topic ? d->topic : d->name);
+    check_count(L, b, n);
+    int first = self ? 2 : 1;
+    if (lua_gettop(L) < first - 1 + b->nargs) lua_settop(L, first - 1 + b->nargs);   /* buffers above */
+    read_args(L, b, v, first, 0);
     return self;
 }
 
@@ -609,9 +628,7 @@ void *pcl_read_all(lua_State *L, pcl_val *v, int n) {
 }
 
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out) {
-    const pcl_fn *d = current(L);
-    const char *name = a->name;
-    if (!name && shown >= 1 && d->args && shown <= nargs_of(d)) name = d->args[shown - 1].name;
+    const char *name = a->name ? a->name : arg_name(L, shown);
     dimref dim = {dimdef, {pcl_name(L), item ? shown : 1, item ? name : NULL, NULL, item ? 1 : 0, NULL}};
     ctx c = {dim.who.fname, shown, name, NULL, item, &dim};
     read_value(L, &c, a, idx, out);
@@ -629,60 +646,15 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
     read_options(L, &c, a, lua_absindex(L, idx), v);
 }
 
-/* The arguments of a function with coordinate pairs (pcl_args.h): each at the slot it falls on. */
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
     const decl_box *b = current_box(L);
-    const pcl_fn *d = b->d;
-    int nargs = b->nargs, top = lua_gettop(L), opts = 0;
     check_count(L, b, n);
-    if (nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
-        opts = top;                             /* a trailing option table */
-    int limit = opts ? opts - 1 : top, slot = 1, room = 0;
-    dimref dim = {0};
     for (int k = 0; k < n; k++) {   /* the caller's array need not be zeroed (pcl_args.h) */
-        v[k].present = 0;
-        v[k].n = 0;
+        v[k].present = v[k].n = v[k].cap = 0;
         v[k].obj = NULL;
         v[k].list = NULL;
-        v[k].cap = 0;
     }
-    for (int k = 0, y = 0; k < nargs; k++, slot++) {
-        const pcl_arg *a = &d->args[k];
-        int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
-        if (slot <= limit && read_scalar(L, a, idx, &v[k], 0)) {
-            y = (a->flags & PCL_PAIR) != 0;
-            continue;
-        }
-        if (a->kind != PCL_ANY && !room) {   /* as pcl_read: a reader (the colour) pushes little */
-            luaL_checkstack(L, 24, NULL);
-            room = 1;
-        }
-        if (a->kind == PCL_OPTIONS) {
-            ctx c = {d->name, opts ? opts : slot, a->name, NULL, 0, &dim};
-            v[k].idx = opts;
-            v[k].present = opts != 0;
-            read_options(L, &c, a, opts ? opts : idx, v + nargs);
-            continue;
-        }
-        if ((a->flags & PCL_PAIR) && k + 1 < nargs && slot <= limit &&
-            lua_type(L, idx) != LUA_TNUMBER && pcl_tovalue(L, idx)) {
-            pcl_topoint2(L, idx, &v[k].x, &v[k + 1].x);   /* one point: the pair in one slot */
-            v[k].present = v[k + 1].present = 1;
-            v[k].idx = v[k + 1].idx = idx;
-            k++;
-            continue;
-        }
-        int coord = (a->flags & PCL_PAIR) || y;
-        y = (a->flags & PCL_PAIR) != 0;         /* the next argument is this pair's y */
-        pcl_arg one;
-        if (coord && lua_type(L, idx) != LUA_TNUMBER) {
-            one = *a;
-            one.expect = "a number or a point";
-            a = &one;
-        }
-        ctx c = {d->name, slot, a->name, NULL, 0, &dim};
-        read_value(L, &c, a, idx, &v[k]);
-    }
+    read_args(L, b, v, 1, 1);
 }
 
 /* ---- registration and signatures ----------------------------------------------------------- */
@@ -762,8 +734,8 @@ void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
     decl_box *b = lua_newuserdatauv(L, sizeof *b, 0);
     b->self = PCL_SELF_TAG(b, &BOX_TAG);
     b->d = d;
-    b->nargs = nargs_of(d);
-    b->nvalues = b->first_pair = 0;
+    b->nargs = b->nvalues = b->first_pair = 0;
+    while (d->args && d->args[b->nargs].kind) b->nargs++;
     for (int k = 0; k < b->nargs; k++) {
         b->nvalues += nvalues(&d->args[k]);
         if ((d->args[k].flags & PCL_PAIR) && !b->first_pair) b->first_pair = k + 1;
@@ -803,19 +775,6 @@ void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const 
     if (methods) pcl_register(L, -1, methods, 0);
     if (index) lua_pushcclosure(L, index, 1);
     lua_setfield(L, -2, "__index");
-}
-
-void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous) {
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        if (homogeneous) {
-            pcl_value *v = pcl_newvalue(L, dim);
-            memcpy(v->h, rows + (size_t)i * (size_t)(dim + 1), sizeof(double) * (size_t)(dim + 1));
-        } else {
-            pcl_pushpoint(L, dim, rows + (size_t)i * (size_t)dim);
-        }
-        lua_rawseti(L, -2, i + 1);
-    }
 }
 
 /* ---- misspelt globals ----------------------------------------------------------------------- */

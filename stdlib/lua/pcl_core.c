@@ -19,21 +19,41 @@ int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table) {
     return pcl_push_made(L, c, st, NULL);
 }
 
-/* a homogeneous row: the point, or the direction (a vector) where its weight is 0 */
-static void push_h(lua_State *L, int dim, const double *h) {
-    double x[PC_MAXDIM];
-    int inf = fabs(h[dim]) <= 1e-12;
-    for (int k = 0; k < dim; k++) x[k] = inf ? h[k] : h[k] / h[dim];
-    if (inf) pcl_pushvector(L, dim, x);
-    else pcl_pushpoint(L, dim, x);
+/* One value of kind c from x: n a number, p a point, v a vector, h a homogeneous row (the point,
+ * or the direction where its weight is 0), w a value of weight as given (w*P, a vector). */
+static void push_loc(lua_State *L, int dim, char c, const double *x) {
+    double y[PC_MAXDIM];
+    int inf = c == 'h' && fabs(x[dim]) <= 1e-12;
+    if (c == 'n') {
+        lua_pushnumber(L, *x);
+    } else if (c == 'w') {
+        memcpy(pcl_newvalue(L, dim)->h, x, sizeof(double) * (size_t)(dim + 1));
+    } else if (c == 'h') {
+        for (int k = 0; k < dim; k++) y[k] = inf ? x[k] : x[k] / x[dim];
+        push_loc(L, dim, inf ? 'v' : 'p', y);
+    } else if (c == 'v') {
+        pcl_pushvector(L, dim, x);
+    } else {
+        pcl_pushpoint(L, dim, x);
+    }
 }
 
-static void push_vectors(lua_State *L, int n, int dim, const double *rows) {
+/* the numbers a value of kind c takes in packed rows */
+static size_t width(int dim, char c) { return c == 'n' ? 1 : c == 'h' || c == 'w' ? (size_t)dim + 1 : (size_t)dim; }
+
+/* a list of n values of kind c from rows */
+static void push_list(lua_State *L, int n, int dim, char c, const double *rows) {
     lua_createtable(L, n, 0);
     for (int i = 0; i < n; i++) {
-        pcl_pushvector(L, dim, rows + (size_t)i * dim);
+        push_loc(L, dim, c, rows + (size_t)i * width(dim, c));
         lua_rawseti(L, -2, i + 1);
     }
+}
+
+void pcl_push_numbers(lua_State *L, int n, const double *x) { push_list(L, n, 0, 'n', x); }
+
+void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous) {
+    push_list(L, n, dim, homogeneous ? 'w' : 'p', rows);
 }
 
 /* push one value of kind c from ap; 0 when it is left out (o of NaN) */
@@ -50,15 +70,9 @@ static int push_one(lua_State *L, int dim, char c, va_list *ap) {
         lua_pushstring(L, va_arg(*ap, const char *));
     } else if (c == 'N' || c == 'P' || c == 'V') {
         int n = va_arg(*ap, int);
-        const double *x = va_arg(*ap, const double *);
-        if (c == 'N') pcl_push_numbers(L, n, x);
-        else if (c == 'P') pcl_push_values(L, n, dim, x, 0);
-        else push_vectors(L, n, dim, x);
+        push_list(L, n, dim, c == 'N' ? 'n' : c == 'P' ? 'p' : 'v', va_arg(*ap, const double *));
     } else {
-        const double *x = va_arg(*ap, const double *);
-        if (c == 'p') pcl_pushpoint(L, dim, x);
-        else if (c == 'v') pcl_pushvector(L, dim, x);
-        else push_h(L, dim, x);
+        push_loc(L, dim, c, va_arg(*ap, const double *));
     }
     return 1;
 }
@@ -97,11 +111,8 @@ int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
     if (named) lua_newtable(L);
     for (const char *s = spec, *tok = s; *s; tok = s, count++) {
         char c = token(&s);
-        if (c == 'n') lua_pushnumber(L, *v);
-        else if (c == 'h') push_h(L, dim, v);
-        else if (c == 'v') pcl_pushvector(L, dim, v);
-        else pcl_pushpoint(L, dim, v);
-        v += c == 'n' ? 1 : c == 'h' ? dim + 1 : dim;
+        push_loc(L, dim, c, v);
+        v += width(dim, c);
         if (named) store(L, tok);
     }
     return named ? 1 : count;

@@ -3,53 +3,13 @@
 #include <stdarg.h>
 #include "pcl_args.h"
 
-/* The string key under which the table at t holds the value at f, or NULL (the table keeps the
- * string alive). */
-static const char *key_of(lua_State *L, int t, int f) {
-    lua_pushnil(L);
-    while (lua_next(L, t)) {
-        if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, f)) {
-            const char *key = lua_tostring(L, -2);
-            lua_pop(L, 2);
-            return key;
-        }
-        lua_pop(L, 1);
-    }
-    return NULL;
-}
-
-/* The global name of the function at the top ("label", "qb.rnd"), looked up in _G and its
- * tables, or NULL; pops the function (a "qb.rnd" takes its place).  Only for a function Lua
- * cannot name: pcall(label, 5). */
-static const char *global_name(lua_State *L) {
-    int f = lua_gettop(L), g = f + 1;
-    lua_pushglobaltable(L);
-    const char *found = key_of(L, g, f);   /* a global first: label, not pointcalc.label */
-    if (found) {
-        lua_settop(L, f - 1);
-        return found;
-    }
-    lua_pushnil(L);
-    while (!found && lua_next(L, g)) {
-        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "_G";
-        const char *inner = lua_istable(L, -1) && strcmp(k, "_G") && strcmp(k, "package") ? key_of(L, g + 2, f) : NULL;
-        if (inner) found = lua_pushfstring(L, "%s.%s", k, inner);
-        else lua_pop(L, 1);
-    }
-    if (found) lua_replace(L, f);          /* keep the name where the function was */
-    lua_settop(L, found ? f : f - 1);
-    return found;
-}
-
+/* A declared function's name is its declaration's (pcl_name: whatever the script called it
+ * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
+ * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
 const char *pcl_fname(lua_State *L) {
     lua_Debug ar;
+    if (pcl_declared(L)) return pcl_name(L);
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
-    /* called from C: by pcall(label, 5) (the name is the function's own), or through the
-     * safe mode's wrapper of save (the name the script used is the caller's) */
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "f", &ar)) {
-        const char *g = global_name(L);
-        if (g) return g;
-    }
     if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
         return ar.name;
     return "pointcalc";
