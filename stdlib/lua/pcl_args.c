@@ -9,8 +9,7 @@
 
 /* ---- the running declaration ------------------------------------------------------------- */
 
-/* Upvalue 1 of a declared function: its declaration compiled once at registration (the counts
- * the reader needs on every call), so a call reads its arguments without walking the list. */
+/* Upvalue 1 of a declared function: its declaration with the counts a call needs, made once. */
 typedef struct {
     PCL_SELF;                 /* a block of another type there is refused (pcl.h) */
     const pcl_fn *d;
@@ -29,9 +28,7 @@ static const decl_box *to_box(lua_State *L, int idx) {
     return NULL;
 }
 
-/* The declaration of the running C function.  Only debug.setupvalue could put another value
- * in its upvalue 1, and the guard below refuses that for declared functions; the tag still
- * refuses a block of another type. */
+/* The declaration of the running C function (the guard below keeps debug.setupvalue off it). */
 static const decl_box *current_box(lua_State *L) {
     const decl_box *b = to_box(L, lua_upvalueindex(1));
     if (!b) luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
@@ -41,11 +38,9 @@ static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
 
 int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
 
-/* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration (whose
- * values its body would misread): refused where it is attempted, so that no call has to ask
- * Lua which function is running.  The other upvalues (a canvas, a random state) are checked
- * by the bindings that use them.  Lua's function is called directly, kept where no script
- * reaches it (not an upvalue of the guard). */
+/* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration: refused
+ * where it is attempted, so that no call asks Lua which function runs.  Lua's own function is
+ * kept where no script reaches it (not an upvalue of the guard). */
 static lua_CFunction lua_setupvalue_fn;
 static int setupvalue_guard(lua_State *L) {
     int isint;
@@ -219,9 +214,7 @@ static int mismatch_hint(lua_State *L, const ctx *c, int idx, const char *expect
     return pcl_error(L, "%s: %s must be %s, got %s%s%s", c->fname, where(L, c), expected, shown(L, idx),
                      hint ? "; " : "", hint ? hint : "");
 }
-static int mismatch(lua_State *L, const ctx *c, int idx, const char *expected) {
-    return mismatch_hint(L, c, idx, expected, NULL);
-}
+#define mismatch(L, c, idx, expected) mismatch_hint((L), (c), (idx), (expected), NULL)
 
 /* Push the strings items[] (NULL-ended), each as fmt shows it, joined by sep, the last by last:
  * "a", "b" or "c". */
@@ -787,16 +780,10 @@ const char *pcl_global_hint(lua_State *L, const char *msg) {
     p += strlen("a nil value (global '");
     const char *e = strchr(p, '\'');
     if (!e || e - p > 40) return NULL;
-    char name[48];
-    memcpy(name, p, (size_t)(e - p));
-    name[e - p] = 0;
     lua_pushglobaltable(L);
-    const char *best = pcl_nearest_key(L, name, -1);
-    if (!best) {
-        lua_pop(L, 1);
-        return NULL;
-    }
-    const char *h = lua_pushfstring(L, "(did you mean '%s'?)", best);
-    lua_remove(L, -2);
+    const char *best = pcl_nearest_key(L, lua_pushlstring(L, p, (size_t)(e - p)), -2);
+    const char *h = best ? lua_pushfstring(L, "(did you mean '%s'?)", best) : NULL;
+    lua_rotate(L, -2 - (h != NULL), h != NULL);   /* the hint (if any) below the table and name */
+    lua_pop(L, 2);
     return h;
 }

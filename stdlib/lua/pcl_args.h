@@ -1,9 +1,6 @@
-/* The declared argument layer: a binding declares each function once (the name as the user
- * writes it, the C function, its arguments, its result and its help line) and reads all its
- * arguments with one call.  The same declaration gives :help, docs/api.md and every message
- * ("NAME: argument #N (WHAT) must be EXPECTED, got VALUE"), with one weight rule for every
- * location (point.h, PC_WEIGHT_TOL).  docs/bindings.md is the guide (the kinds, the messages,
- * registration); l_korotky.c a model. */
+/* The declared argument layer: a binding declares each function once and the layer reads its
+ * arguments, words every message and gives :help and docs/api.md.  docs/bindings.md is the
+ * guide (the kinds, the messages, registration); l_korotky.c a model. */
 #ifndef PCL_ARGS_H
 #define PCL_ARGS_H
 
@@ -48,8 +45,7 @@ typedef enum {
 
 typedef struct pcl_val pcl_val;
 typedef struct pcl_arg pcl_arg;
-/* A binding's own reader (kind PCL_ANY with read set): 1 if the value at idx fits (filled into
- * out), 0 if not; the layer then raises "... must be EXPECT, got VALUE". */
+/* A binding's own reader (PCL_ANY): 1 if the value at idx fits (filled into out), 0 if not. */
 typedef int (*pcl_reader)(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
 
 struct pcl_arg {
@@ -95,27 +91,22 @@ typedef struct pcl_fn {
 } pcl_fn;
 
 /* Set table[the last part of each name] = a closure of fn with its declaration as upvalue 1
- * and the nup values on the stack top as upvalues 2.. (popped), and record each declaration
- * in the registry that :help and docs/api.md read (pointcalc._decl).  fns ends with {0}. */
+ * and the nup values on the stack top as upvalues 2.. (popped); record each for :help. */
 void pcl_register(lua_State *L, int table, const pcl_fn *fns, int nup);
-/* The same for the toolkit functions of _tk (the embedded Lua helpers call them): declared,
- * so read and worded by the layer, but not recorded for :help. */
+/* The same, not recorded for :help: the toolkit functions of _tk. */
 void pcl_register_private(lua_State *L, int table, const pcl_fn *fns);
-/* Push one declared function with the nup values on the stack top as upvalues 2.. (popped),
- * not recorded for :help: a toolkit function of _tk, a closure made at run time. */
+/* Push one declared function (upvalues as pcl_register), not recorded: a closure made at run time. */
 void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup);
 /* Upvalue k of a registered function (k = 1: the first of the nup shared values). */
 #define PCL_UPVALUE(k) lua_upvalueindex((k) + 1)
 
-/* Read every declared argument of the running function into v (n values: one per argument,
- * then one per key of each option table, in order).  Returns the receiver of a method (NULL
- * for a plain function).  Lists without a preset buffer get one from the layer, kept above
- * the arguments on the stack: every argument keeps its stack index. */
+/* Read the running function's declared arguments into v (one value per argument, then one per
+ * key of each option table); the receiver of a method, or NULL.  Lists without a preset buffer
+ * get one above the arguments on the stack. */
 void *pcl_read(lua_State *L, pcl_val *v, int n);
 #define PCL_READ(L, v) pcl_read((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
-/* A binding's body, its declared arguments already read into the values a (the layer reads
- * them as PCL_READ does, into a block sized by the declaration) and Lua callbacks armed
- * (pcl_callback_state):
+/* A binding's body, its declared arguments read into a (as PCL_READ, into a cleared block
+ * sized by the declaration) and Lua callbacks armed (pcl_callback_state):
  *     PCL_BODY(l_bezier, a) { ... a[0].list ... return pcl_push_made(L, c, &st, NULL); }
  *     PCL_METHOD(c_length, lcurve *u, a) { ... }     the receiver of a method as u
  * The function defined is l_bezier (a lua_CFunction, registered as any other). */
@@ -141,34 +132,26 @@ int pcl_nvalues(lua_State *L);
 /* pcl_read into n values it clears first, with Lua callbacks armed: PCL_BODY's reader. */
 void *pcl_read_all(lua_State *L, pcl_val *v, int n);
 
-/* Read the one value at stack index idx as the argument a shown as argument #shown, or its
- * element [item] when item > 0 (variadic functions: simplex(C, A, B, ...); lists read by the
- * body); dimdef: the dimension PCL_SAMEDIM refers to, set by argument #1 (by [1] for an item). */
+/* Read the value at idx as the argument a shown as argument #shown (its element [item] when
+ * item > 0: variadic functions); dimdef: the dimension PCL_SAMEDIM refers to. */
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out);
 
-/* Read the declared arguments of a plain function whose coordinate pairs (x flagged PCL_PAIR,
- * y the argument after it) may each be given as one point P (2-D, or n-D through the camera:
- * pcl_topoint2): each argument is read at the stack slot it falls on and shown by that slot
- * (pset(P(1, 2), 16): argument #2 (color)).  A last declared option table may trail at any
- * slot after the first pair (label(text, P, {size = 9})).  v as for PCL_READ, but it need not
- * be initialised (no preset list buffers: the layer clears every value it is given), which
- * spares pset zeroing its values on every call. */
+/* PCL_READ for a plain function whose coordinate pairs (x flagged PCL_PAIR, y after it) may
+ * each be one point (pcl_topoint2): each argument is read and shown by the slot it falls on, a
+ * last option table may trail; v need not be initialised (no preset buffers). */
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n);
 #define PCL_READ_PAIRS(L, v) pcl_read_pairs((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
-/* Inside a reader: raise "NAME: WHERE must be EXPECTED, got VALUE" for the value at idx it is
- * reading, with an expected text made at run time (a colour's range is the screen's). */
+/* Inside a reader: raise "NAME: WHERE must be EXPECTED, got VALUE" for the value at idx. */
 int pcl_readfail(lua_State *L, int idx, const char *expected);
-/* The drawing colours (l_draw.c): an attribute of the screen drawn on or "#rrggbb" (a true
- * colour, allocated on first use) into out->x; A_SCREEN_COLOR(name) declares an optional one. */
+/* The drawing colour (l_draw.c): an attribute or "#rrggbb" into out->x; optional: A_SCREEN_COLOR. */
 int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
 #define A_SCREEN_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1}
 /* The print look (l_figure.c): a length with its unit ("0.5mm") in pt into out->x; the label
- * options {font =, size =, halo =}, applied to a label once drawn (keys: their 3 values). */
+ * options {font =, size =, halo =}, applied to a label once drawn. */
 int pcl_read_length(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
 extern const pcl_arg pcl_label_keys[];
 void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *keys);
-/* Read the option table at idx as the option argument a, shown as argument #shown (its keys'
- * values into v): the table form of an overloaded function, screen(12) | screen{width =}. */
+/* Read the option table at idx as the argument a, shown as #shown, its keys into v: screen{...}. */
 void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_val *v);
 #define A_X(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_PAIR}
 
@@ -184,17 +167,13 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...);
 /* "NAME: option 'KEY' MESSAGE". */
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...);
 
-/* The Cartesian coordinates of k declared points a[0..k-1] of dimension n into out, rows of
- * n: what the core takes as a point set. */
+/* The coordinates of k declared points a[0..k-1] of dimension n into out, rows of n. */
 void pcl_point_rows(const pcl_val *a, int k, int n, double *out);
-/* After PCL_READ: argument #k, a list of 1..PC_MAXDIM + 1 rows of finite numbers (a matrix),
- * into m row by row; *nr its rows, *nc its columns: ncols, or (ncols 0) the length of row [1],
- * 2..PC_MAXDIM + 1.  Its messages: "row [2] must be a list of 3 numbers, got {1}" (ncols
- * given), "row [2] holds 2 numbers, row [1] 3: ...", "entry [2][1] must be a finite number". */
+/* Argument #k, a matrix of 1..PC_MAXDIM + 1 rows of finite numbers, into m row by row: *nr
+ * rows, *nc columns (ncols, or with ncols 0 the length of row [1], 2..PC_MAXDIM + 1). */
 void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc);
 
-/* The nearest of the candidates (NULL-ended) to name by edit distance (a swap of neighbours is
- * one edit), or NULL if none is near enough to suggest (names.h). */
+/* The nearest of the candidates (NULL-ended) to name, or NULL (names.h: pc_nearest_name). */
 const char *pcl_nearest(const char *name, const char *const *candidates);
 /* The same over the string keys of the table at idx. */
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
@@ -203,28 +182,22 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 int pcl_callable(lua_State *L, int idx);
 /* Push a list {x[0], ..., x[n-1]}. */
 void pcl_push_numbers(lua_State *L, int n, const double *x);
-/* Push a list of n points of dim coordinates from rows of dim numbers, or (homogeneous) of n
- * values from rows of dim + 1 (weights as given: w*P, vectors). */
+/* Push a list of n points from rows of dim, or (homogeneous) of values from rows of dim + 1. */
 void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homogeneous);
 
-/* Make the metatable tname of a userdata type and leave it on the stack: its metamethods meta
- * (luaL_Reg, may be NULL), its declared __call (call, may be NULL), and __index: a closure of
- * index over a new table of the declared methods (index NULL: that table itself). */
+/* Make and leave the metatable tname: metamethods meta, a declared __call, and __index: a
+ * closure of index over the table of the declared methods (index NULL: that table). */
 void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const pcl_fn *call,
                    const pcl_fn *methods, lua_CFunction index);
 
-/* One weight rule: PC_KIND_POINT, PC_KIND_VECTOR or PC_KIND_WEIGHTED, with the weight in h[n]
- * snapped to exactly 1 or 0 within PC_WEIGHT_TOL (a computed result, e.g. a map's image). */
+/* One weight rule: PC_KIND_POINT, _VECTOR or _WEIGHTED, h[n] snapped to 1 or 0 (point.h). */
 static inline int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
-/* Refuse debug.setupvalue(f, 1, x) of a declared function f (its upvalue 1 is its declaration,
- * which the layer trusts without asking Lua which function runs): luaopen_pointcalc calls it. */
+/* Refuse debug.setupvalue(f, 1, x) of a declared function (upvalue 1, which the layer trusts). */
 void pcl_guard_upvalues(lua_State *L);
-/* The registry's table of declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: the
- * module's _decl, which interp/help.lua reads. */
+/* The registry's declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: pointcalc._decl. */
 #define PCL_DECL_KEY "pointcalc.decl"
-/* Push and return "(did you mean 'label'?)" for an error message about a nil global near a
- * global's name, else NULL: one hint for scripts, -e chunks and the REPL (_tk.global_hint). */
+/* Push and return "(did you mean 'label'?)" for a message about a misspelt global, else NULL. */
 const char *pcl_global_hint(lua_State *L, const char *msg);
 
 /* Shorthands for declarations (designated initialisers work as well). */

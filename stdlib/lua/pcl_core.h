@@ -1,5 +1,5 @@
-/* Calling the core from a binding: its statuses explained by a table (why.h), its results
- * pushed by a spec, and the Lua functions it calls back.  Generic: any module may use it. */
+/* Calling the core from a binding: statuses explained (why.h), results pushed by a spec, the
+ * Lua functions the core calls back. */
 #ifndef PCL_CORE_H
 #define PCL_CORE_H
 
@@ -28,9 +28,8 @@ int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v);
 /* pcl_register into the table t[name] of the table t at index t (nothing when it is no table). */
 void pcl_register_into(lua_State *L, int t, const char *name, const pcl_fn *fns);
 
-/* References to Lua functions the core calls (callbacks, pcl.h): made of the values at the
- * stack indices idx[0..n-1] (at most 16), with the callback state set; freed by
- * pcl_luafn_free (a core destructor).  failed: how many calls raised (the error kept); nargs: the
+/* References to the Lua functions at stack indices idx[0..n-1] (at most 16) the core calls,
+ * the callback state set; freed by pcl_luafn_free.  failed: the calls that raised; nargs: the
  * numbers pcl_luafn_point passes (1 when made). */
 typedef struct {
     int n, nargs, failed, ref[16];
@@ -38,8 +37,7 @@ typedef struct {
     const char *fname;      /* the declaration's name, for the messages */
 } pcl_luafn;
 pcl_luafn *pcl_luafn_new(lua_State *L, int n, const int *idx);
-/* The function at stack index idx for calls made while the binding runs (no reference, nothing
- * to free), with the callback state set. */
+/* The function at stack index idx for calls while the binding runs (nothing to free). */
 pcl_luafn pcl_luafn_at(lua_State *L, int idx);
 void pcl_luafn_free(void *f);
 /* Call function `which` (item > 0: element [item] of that table) with the nargs numbers x:
