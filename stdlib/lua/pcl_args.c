@@ -314,6 +314,26 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
 }
 
+/* The fast path of the common kinds: a number or integer that fits its declaration is read
+ * here with a type test and the range tests, no message made; anything else (absent, of
+ * another kind, out of range) goes to read_value, which reads it or words the message.  Only
+ * read_value (general) takes an infinite number for PCL_INF: the fast path tests isfinite alone. */
+static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out, int general) {
+    if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
+    double x = lua_tonumber(L, idx);
+    if (!isfinite(x) && !(general && (a->flags & PCL_INF) && !isnan(x))) return 0;
+    if (a->kind == PCL_INTEGER && x != floor(x)) return 0;
+    if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
+    if ((a->flags & PCL_POS) && !(x > 0)) return 0;
+    out->present = 1;
+    out->x = x;
+    out->idx = idx;
+    out->n = 0;
+    out->s = NULL;
+    out->obj = NULL;
+    return 1;
+}
+
 static double *list_buffer(lua_State *L, pcl_val *out, size_t need) {
     if (out->list && (size_t)out->cap >= need) return out->list;
     if (out->list) return NULL;                       /* a caller's buffer too small */
@@ -340,75 +360,45 @@ static void read_list(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl
     const char *unit = a->kind == PCL_NUMBERS ? "numbers" : a->kind == PCL_VECTORS ? "vectors" : "points";
     if (m < (int)a->lo || m > hi || m < 0) count_error(L, c, a, m, unit);
     out->n = m;
-    ctx e = *c;
-    if (a->kind == PCL_NUMBERS) {
-        double *x = list_buffer(L, out, (size_t)m);
-        if (!x) luaL_error(L, "%s: %d numbers do not fit the binding's buffer", c->fname, m);
-        for (int i = 1; i <= m; i++) {
-            lua_geti(L, idx, i);
-            e.item = i;
-            if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-                mismatch(L, &e, lua_gettop(L), "a finite number");
-            x[i - 1] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-        out->list = x;
-        return;
-    }
-    /* points, values, vectors: the declared dimension (vectors: or the one PCL_SAMEDIM knows,
-     * "[2] must be a 2-D vector"), else the first one's for all; values keep their weights
-     * (rows of d + 1) */
+    /* each element as one value: a number, or a point, value or vector of the declared
+     * dimension (vectors: or the one PCL_SAMEDIM knows, "[2] must be a 2-D vector"), else the
+     * first one's for all; values keep their weights (rows of d + 1) */
     static const pcl_kind item_kind[] = {[PCL_POINTS] = PCL_POINT, [PCL_VALUES] = PCL_VALUE,
-                                         [PCL_VECTORS] = PCL_VECTOR};
+                                         [PCL_VECTORS] = PCL_VECTOR, [PCL_NUMBERS] = PCL_NUMBER};
+    int numbers = a->kind == PCL_NUMBERS;
     int known = a->dim ? a->dim : a->kind == PCL_VECTORS && (a->flags & PCL_SAMEDIM) && c->dim ? c->dim->n : 0;
     pcl_arg pt = {.name = a->name, .kind = item_kind[a->kind], .dim = known,
-                  .expect = a->kind == PCL_VALUES ? "a point" : NULL};
+                  .expect = a->kind == PCL_VALUES ? "a point" : numbers ? "a finite number" : NULL};
+    ctx e = *c;
     dimref inner = {0};
-    double *x = NULL;
-    int d = known, w = 0;
+    double *x = numbers ? list_buffer(L, out, (size_t)m) : NULL;
+    int d = known, w = 1;
     for (int i = 1; i <= m; i++) {
         lua_geti(L, idx, i);
+        int top = lua_gettop(L);
         e.item = i;
-        if (!known) pt.flags = PCL_SAMEDIM, e.dim = &inner;
+        if (!known && !numbers) pt.flags = PCL_SAMEDIM, e.dim = &inner;
         pcl_val one;
-        read_loc(L, &e, &pt, lua_gettop(L), &one);
+        if (numbers && !read_scalar(L, &pt, top, &one, 0)) mismatch(L, &e, top, pt.expect);
+        if (numbers) one.v[0] = one.x;
+        else read_loc(L, &e, &pt, top, &one);
         for (int j = 0; a->kind == PCL_VALUES && j <= one.n; j++)
-            if (!isfinite(one.v[j])) mismatch(L, &e, lua_gettop(L), "a value with finite coordinates");
+            if (!isfinite(one.v[j])) mismatch(L, &e, top, "a value with finite coordinates");
         lua_pop(L, 1);
-        if (i == 1) {
+        if (i == 1 && !numbers) {
             d = one.n;
             w = d + (a->kind == PCL_VALUES);
             pcl_arg whole = *a;
             whole.dim = 0;                     /* the list's dimension against the others' */
             check_dim(L, c, &whole, idx, d);
             x = list_buffer(L, out, (size_t)m * (size_t)w);
-            if (!x) luaL_error(L, "%s: %d points do not fit the binding's buffer", c->fname, m);
         }
+        if (!x) luaL_error(L, "%s: %d %s do not fit the binding's buffer", c->fname, m, unit);
         memcpy(x + (size_t)(i - 1) * w, one.v, sizeof(double) * (size_t)w);
     }
-    if (m == 0) x = list_buffer(L, out, 1);
+    if (!x) x = list_buffer(L, out, 1);
     out->list = x;
-    out->dim = d;
-}
-
-/* The fast path of the common kinds: a number or integer that fits its declaration is read
- * here with a type test and the range tests, no message made; anything else (absent, of
- * another kind, out of range) goes to read_value, which reads it or words the message.  Only
- * read_value (general) takes an infinite number for PCL_INF: the fast path tests isfinite alone. */
-static inline int read_scalar(lua_State *L, const pcl_arg *a, int idx, pcl_val *out, int general) {
-    if ((a->kind != PCL_NUMBER && a->kind != PCL_INTEGER) || lua_type(L, idx) != LUA_TNUMBER) return 0;
-    double x = lua_tonumber(L, idx);
-    if (!isfinite(x) && !(general && (a->flags & PCL_INF) && !isnan(x))) return 0;
-    if (a->kind == PCL_INTEGER && x != floor(x)) return 0;
-    if ((a->flags & PCL_RANGE) && !(x >= a->lo && x <= a->hi)) return 0;
-    if ((a->flags & PCL_POS) && !(x > 0)) return 0;
-    out->present = 1;
-    out->x = x;
-    out->idx = idx;
-    out->n = 0;
-    out->s = NULL;
-    out->obj = NULL;
-    return 1;
+    if (!numbers) out->dim = d;
 }
 
 static const ctx *reading;   /* the value a binding's reader is reading (pcl_readfail) */
