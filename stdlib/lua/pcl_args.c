@@ -535,7 +535,8 @@ static void check_count(lua_State *L, const decl_box *b, int n) {
 /* The declared arguments from stack slot first on into v, argument k + 1 shown as #k + 1; with
  * pairs (pcl_read_pairs) each is read at the slot it falls on and shown by that slot, a pair
  * given as one point fills x and y, and a last option table may trail. */
-static void read_args(lua_State *L, const decl_box *b, pcl_val *v, int first, int pairs) {
+static inline __attribute__((always_inline))   /* one copy per reader: pairs a constant */
+void read_args(lua_State *L, const decl_box *b, pcl_val *v, int first, int pairs) {
     const pcl_fn *d = b->d;
     int nargs = b->nargs, top = lua_gettop(L), opts = 0;
     if (pairs && nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
@@ -545,8 +546,9 @@ static void read_args(lua_State *L, const decl_box *b, pcl_val *v, int first, in
     dimref dim = {0};
     for (int k = 0, slot = first; k < nargs; k++, slot++) {
         const pcl_arg *a = &d->args[k];
-        int idx = slot <= limit ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
-        if (slot <= limit && read_scalar(L, a, idx, &v[k], 0)) {
+        int given = !pairs || slot <= limit;    /* pcl_read made room for every argument */
+        int idx = given ? slot : lua_gettop(L) + 1;   /* beyond the values: none */
+        if (given && read_scalar(L, a, idx, &v[k], 0)) {
             y = (a->flags & PCL_PAIR) != 0;
             continue;
         }
