@@ -4,7 +4,7 @@
  * is the first point).  A guide or a pencil's spanning point is a curve or a fixed point (a
  * vector: the point at infinity of its direction, as the basis point Z of the z axis). */
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "ferguson.h"
 #include "elastic.h"
 #include "conic_surface.h"
@@ -71,15 +71,13 @@ static const pcl_arg poly_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices 
                                     A_NUM("s0"), A_NUM("s1"), PCL_END};
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
 
-static int l_poly_spline(lua_State *L) {
-    double p[2 * MAXPTS], coef[4 * MAXPTS];
-    pcl_val a[5] = {{.list = p, .cap = 2 * MAXPTS}};
-    PCL_READ(L, a);
+PCL_BODY(l_poly_spline, a) {
+    double coef[4 * MAXPTS];
     int n = a[0].n, clamped = a[2].n == 1, bad = -1, st;
     if (clamped && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
     pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
-    pc_curve *c = pc_poly_spline_points(n, p, ends, a[3].x, a[4].x, coef, &bad, &st);
+    pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
     if (st == PC_EDOMAIN) return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
     if (!c) return knot_error(L, st, bad);
     pcl_pushcurve(L, c, "korotky.poly_spline");
@@ -92,14 +90,12 @@ static int l_poly_spline(lua_State *L) {
 static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
                                         A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
 
-static int l_ferguson(lua_State *L) {
-    double p[2 * MAXPTS], T[2 * MAXPTS], mags[2 * MAXPTS];
-    pcl_val a[3] = {{.list = p, .cap = 2 * MAXPTS}, {0}, {.list = mags, .cap = 2 * MAXPTS}};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson, a) {
+    double T[2 * MAXPTS];
     int n = a[0].n, st;
     tangents(L, 2, &a[1], n, T);
     need_count(L, &a[2], NULL, 3, 2 * n - 2);
-    pc_curve *c = pc_ferguson_curve(n, p, T, mags, &st);
+    pc_curve *c = pc_ferguson_curve(n, a[0].list, T, a[2].list, &st);
     if (!c) return pcl_statuserror(L, pcl_name(L), st, "argument #2 (tangents)");
     pcl_pushcurve(L, c, "korotky.ferguson");
     return 1;
@@ -113,18 +109,15 @@ static const pcl_arg lambda_keys[] = {
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
 
-static int l_ferguson_lambda(lua_State *L) {
-    double p[2 * MAXPTS], lam[MAXPTS], dout[2 * MAXPTS], din[2 * MAXPTS];
-    pcl_val a[7] = {{.list = p, .cap = 2 * MAXPTS}};
-    a[6] = (pcl_val){.list = lam, .cap = MAXPTS};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson_lambda, a) {
+    double *p = a[0].list, dout[2 * MAXPTS], din[2 * MAXPTS];
     int n = a[0].n;
     double *TA = a[2].v, *TE = a[3].v, lA = hypot(TA[0], TA[1]), lE = hypot(TE[0], TE[1]);
     if (!(lA > 0) || !(lE > 0)) return pcl_fail(L, "the end tangents must not be zero vectors");
     for (int k = 0; k < 2; k++) TA[k] *= a[4].x / lA, TE[k] *= a[5].x / lE;
     if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
     need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
-    int bad = -1, st = pc_ferguson_lambda(2, n, p, TA, TE, lam, dout, din, &bad);
+    int bad = -1, st = pc_ferguson_lambda(2, n, p, TA, TE, a[6].list, dout, din, &bad);
     if (st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
     if (st != PC_OK) return knot_error(L, st, bad);
     pcl_push_made(L, pc_curve_hermite(2, n, p, dout, din, NULL, 0, &st), &st, "korotky.ferguson_lambda");
@@ -136,17 +129,14 @@ static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
 
-static int l_ferguson_tangents(lua_State *L) {
-    double p[2 * MAXPTS], T[2 * MAXPTS], mags[2 * MAXPTS], start[2 * MAXPTS];
-    pcl_val a[6] = {{.list = p, .cap = 2 * MAXPTS}};
-    a[5] = (pcl_val){.list = start, .cap = 2 * MAXPTS};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson_tangents, a) {
+    double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS];
     int n = a[0].n;
     tangents(L, 2, &a[1], n, T);
     need_count(L, &a[5], "start", 0, 2 * n - 4);
     mags[0] = a[3].x;
     mags[2 * n - 3] = a[4].x;
-    if (a[5].present) memcpy(mags + 1, start, sizeof(double) * (size_t)(2 * n - 4));
+    if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
     int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
@@ -159,10 +149,8 @@ static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("ta
                                      A_POSNUM("z1"), {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS},
                                      PCL_END};
 
-static int l_ferguson_substitution(lua_State *L) {
-    double p[2 * MAXPTS], T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
-    pcl_val a[5] = {{.list = p, .cap = 2 * MAXPTS}};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson_substitution, a) {
+    double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     int n = a[0].n;
     tangents(L, 2, &a[1], n, T);
     mags[0] = a[2].x;
@@ -198,26 +186,20 @@ static const pcl_arg elastic_keys[] = {
     {.name = "length", .kind = PCL_NUMBER, .flags = PCL_POS, .shown = "free"}, PCL_END};
 static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN), A_OPTIONS("opts", elastic_keys), PCL_END};
 
-static int l_elastic(lua_State *L) {
-    double p[2 * PC_ELASTIC_MAXN], E;
-    pcl_val a[5] = {{.list = p, .cap = 2 * PC_ELASTIC_MAXN}};
-    PCL_READ(L, a);
+PCL_BODY(l_elastic, a) {
+    double E;
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
     double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
-    pc_curve *c = pc_elastic_length(n, p, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
+    pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
     if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide");
-    if (!c && st == PC_EDOMAIN) {
-        char num[32];
-        snprintf(num, sizeof num, "%.6g", len);
-        return pcl_fail(L, "length %s is not longer than the polyline through the points", num);
-    }
+    if (!c && st == PC_EDOMAIN)
+        return pcl_fail(L, "length %s is not longer than the polyline through the points", pcl_pushnum(L, len));
     if (!c && st == PC_EDIM && len > 0 && (n == 2 && pieces == 1))
         return pcl_fail(L, "a length needs a free node: two points with one piece are a segment");
     if (!c && st == PC_EDIM)
         return pcl_fail(L, "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
     pcl_push_made(L, c, &st, "korotky.elastic");
-    lua_pushnumber(L, E);
-    return 2;
+    return 1 + pcl_push_results(L, 0, "n", E);
 }
 
 static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference", 0),
@@ -228,12 +210,10 @@ PCL_BODY(l_deviation, a) {
     pc_curve *m = a[0].obj, *r = a[1].obj;
     if (m->dim != r->dim)
         return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)", r->dim, m->dim);
-    pcl_callback_state(L);
     double d;
     int st = pc_curve_hausdorff(m, r, (int)a[2].x, &d);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    lua_pushnumber(L, d);
-    return 1;
+    return pcl_push_results(L, 0, "n", d);
 }
 
 static const pcl_arg curve_arg[] = {A_CURVE("curve", 0), PCL_END};
@@ -242,19 +222,14 @@ PCL_BODY(l_joint_jumps, a) {
     double dk, da;
     int at, st = pc_curve_joint_jumps(a[0].obj, &dk, &da, &at);
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
-    lua_pushnumber(L, dk);
-    lua_pushnumber(L, da);
-    lua_pushinteger(L, at + 1);
-    return 3;
+    return pcl_push_results(L, 0, "n n i", dk, da, at + 1);
 }
 
 PCL_BODY(l_energy, a) {
-    pcl_callback_state(L);
     double E;
     int st = pc_curve_bending_energy(a[0].obj, &E);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    lua_pushnumber(L, E);
-    return 1;
+    return pcl_push_results(L, 0, "n", E);
 }
 
 /* Graphical differentiation: the slope at x of a curve known by samples (2-D points, x
@@ -274,9 +249,7 @@ PCL_BODY(l_graphical_slope, a) {
         return pcl_argfail(L, 2, "must lie within the samples [%s, %s], got %s", pcl_pushnum(L, xy[0]),
                            pcl_pushnum(L, xy[2 * n - 2]), pcl_pushnum(L, a[1].x));
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1 (samples)");
-    lua_pushnumber(L, m);
-    lua_pushnumber(L, atan(m) * 180 / M_PI);
-    return 2;
+    return pcl_push_results(L, 0, "n n", m, atan(m) * 180 / M_PI);
 }
 
 /* ---- conics and conic surfaces ------------------------------------------------------------ */
@@ -291,9 +264,7 @@ PCL_BODY(l_conic_arc, a) {
     pc_curve *c = pc_conic_arc(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, &w, &st);
     if (!c) return pcl_fail(L, "%s", pc_conic_arc_why(st));
     pcl_pushcurve(L, c, "korotky.conic_arc");
-    lua_pushnumber(L, w);
-    lua_pushstring(L, pc_conic_kind(w));
-    return 3;
+    return 1 + pcl_push_results(L, 0, "n s", w, pc_conic_kind(w));
 }
 
 static const pcl_arg sweep_keys[] = {{.name = "U", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
@@ -512,16 +483,11 @@ PCL_BODY(l_plane_meet, a) {
 static const pcl_arg meet_args[] = {A_LOC4("P1"), A_LOC4("P2"), A_LOC4("P3"),
                                     A_LOC4("Q1"), A_LOC4("Q2"), A_LOC4("Q3"), PCL_END};
 static const pcl_fn fns[] = {
-    PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef",
-     "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
-    PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve",
-     "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
-    PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve",
-     "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
-    PCL_FN("korotky.ferguson_tangents", l_ferguson_tangents, tangents_args, "curve, moduli",
-     "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
-    PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics",
-     "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
+    PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef", "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
+    PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve", "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
+    PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve", "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
+    PCL_FN("korotky.ferguson_tangents", l_ferguson_tangents, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
+    PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
     PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
@@ -535,8 +501,7 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
     PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
     PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
-    PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K",
-           "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
+    PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K", "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
     PCL_END};
 
 void pcl_open_korotky(lua_State *L) {

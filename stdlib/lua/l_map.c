@@ -3,9 +3,9 @@
  * affine and map; the projections of l_curvilinear.c are maps of this type too. */
 #include "pcl_args.h"
 #include "pcl_point.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_books.h"
-#include "map.h"
+#include "map_make.h"
 
 static const char REGKEY[] = "pointcalc.map";      /* the metatable in the registry */
 
@@ -24,6 +24,21 @@ pc_map *pcl_newmap(lua_State *L) {
     return f;
 }
 #define newmap pcl_newmap
+
+/* the new map on the stack top (1), or its status explained by the why-table */
+static int made(lua_State *L, int st) {
+    pcl_check(L, st, pc_map_why);
+    return 1;
+}
+
+/* A map of pc_map_make: the declared numbers in order (an enum: the index of its choice). */
+static int make(lua_State *L, pc_map_kind kind) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double x[3];
+    for (int i = 0; i < 3; i++) x[i] = a[i].s ? a[i].n : a[i].x;
+    return made(L, pc_map_make(newmap(L), kind, x));
+}
 
 static const char *const CONVENTIONS[] = {"row", "column", NULL};   /* index 0: the textbook's rows */
 #define CONVENTION {.name = "convention", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = CONVENTIONS, .dflt = 1}
@@ -91,11 +106,7 @@ static int l_frame(lua_State *L) {
 }
 
 static const pcl_arg dim_arg[] = {A_INT("n", 1, PC_MAXDIM), PCL_END};
-
-PCL_BODY(l_identity, a) {
-    pc_map_identity(newmap(L), (int)a[0].x);
-    return 1;
-}
+static int l_identity(lua_State *L) { return make(L, PC_MM_IDENTITY); }
 
 /* ---- the constructors of the map table ------------------------------------------------------ */
 
@@ -109,9 +120,7 @@ PCL_BODY(l_matrix_ctor, a) {
                            "(\"row\": n + 1 rows of m + 1), n and m 1..%d", nr, PC_MAXDIM);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, 0, m, &nr, &nc);
-    int st = pc_map_from_matrix(newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec);
-    if (st == PC_ESINGULAR) return pcl_fail(L, "the zero matrix is no map (it sends every point nowhere)");
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+    return made(L, pc_map_from_matrix(newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec));
 }
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
@@ -180,7 +189,7 @@ static int l_rotate(lua_State *L) {
         if (st == PC_EZERO)
             return pcl_fail(L, "%s", is_dir ? "argument #2 (direction) is the zero vector, which gives no axis"
                                             : "the axis points A and B coincide, so they give no axis");
-        return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+        return made(L, st);
     }
     pcl_readone(L, 1, 1, 0, &angle, 0, &t);
     if (a[1].present) {
@@ -197,9 +206,7 @@ static int l_rotate(lua_State *L) {
 static const pcl_arg reflect_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("normal"), PCL_END};
 
 PCL_BODY(l_reflect, a) {
-    int st = pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v);
-    if (st == PC_EZERO) return pcl_argfail(L, 2, "is the zero vector, which gives no mirror");
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+    return made(L, pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v));
 }
 
 /* Argument #k, an axis: 1..n or "x", "y", "z", "w"; returns it 0-based. */
@@ -223,48 +230,20 @@ PCL_BODY(l_shear, a) {
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const pcl_arg ortho_args[] = {{.name = "axis", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = AXES, .dflt = 2}, PCL_END};
-
-PCL_BODY(l_orthographic, a) {
-    pc_map_orthographic(newmap(L), a[0].s[0]);
-    return 1;
-}
-
 static const pcl_arg axono_args[] = {A_NUM("phi"), A_NUM("theta"), PCL_END};
-
-PCL_BODY(l_axonometric, a) {
-    pc_map_axonometric(newmap(L), a[0].x, a[1].x);
-    return 1;
-}
-
-static int l_isometric(lua_State *L) {
-    pc_map_isometric(newmap(L));
-    return 1;
-}
-
 static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = "a number between 0 and 1 (the foreshortening of the z axis)"}, PCL_END};
-
-PCL_BODY(l_dimetric, a) {
-    if (pc_map_dimetric(newmap(L), a[0].x) != PC_OK)
-        return pcl_argfail(L, 1, "must be a number between 0 and 1 (the foreshortening of the z axis), got %s", pcl_shown(L, 1));
-    return 1;
-}
-
 #define ALPHA {.name = "alpha", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = 0.78539816339744831}
 static const pcl_arg oblique_args[] = {A_NUM("k"), ALPHA, PCL_END};
 static const pcl_arg alpha_arg[] = {ALPHA, PCL_END};
-
-PCL_BODY(l_oblique, a) {
-    pc_map_oblique(newmap(L), a[0].x, a[1].x);
-    return 1;
-}
-static int oblique_k(lua_State *L, double k) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    pc_map_oblique(newmap(L), k, a[0].x);
-    return 1;
-}
-static int l_cavalier(lua_State *L) { return oblique_k(L, 1.0); }
-static int l_cabinet(lua_State *L) { return oblique_k(L, 0.5); }
+static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
+static int l_orthographic(lua_State *L) { return make(L, PC_MM_ORTHOGRAPHIC); }
+static int l_axonometric(lua_State *L) { return make(L, PC_MM_AXONOMETRIC); }
+static int l_isometric(lua_State *L) { return make(L, PC_MM_ISOMETRIC); }
+static int l_dimetric(lua_State *L) { return make(L, PC_MM_DIMETRIC); }
+static int l_oblique(lua_State *L) { return make(L, PC_MM_OBLIQUE); }
+static int l_cavalier(lua_State *L) { return make(L, PC_MM_CAVALIER); }
+static int l_cabinet(lua_State *L) { return make(L, PC_MM_CABINET); }
+static int l_perspective_pqr(lua_State *L) { return make(L, PC_MM_PERSPECTIVE_PQR); }
 
 static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
 
@@ -273,30 +252,19 @@ PCL_BODY(l_perspective, a) {
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
 }
 
-/* the textbook's perspective by (p, q, r) (§2.8.5), the foreshortening of an axonometry (§2.8.3),
- * the plane's axial affinity (geom/map_more.c) */
-PCL_BODY(l_perspective_pqr, a) {
-    int st = pc_map_perspective_pqr(newmap(L), a[0].x, a[1].x, a[2].x);
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
-}
-
+/* the foreshortening of an axonometry (§2.8.3), the plane's axial affinity (geom/map_more.c) */
 PCL_BODY(l_foreshortening, a) {
     const pc_map *f = a[0].obj;
     double k[PC_MAXDIM];
-    if (pc_map_foreshortening(f, k) != PC_OK)
-        return pcl_fail(L, "a perspective (projective) map has no constant foreshortening; give an affine map (an axonometry)");
+    pcl_check(L, pc_map_foreshortening(f, k), pc_map_why);
     for (int i = 0; i < f->nin; i++) lua_pushnumber(L, k[i]);
     return f->nin;
 }
 
 PCL_BODY(l_axial_affinity, a) {
-    int st = pc_map_axial_affinity(newmap(L), a[0].v, a[1].v, a[2].v, a[3].x);
-    if (st == PC_EZERO) return pcl_fail(L, "the directions d and s must not be zero");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the direction s lies along the axis d: no affinity");
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+    return made(L, pc_map_axial_affinity(newmap(L), a[0].v, a[1].v, a[2].v, a[3].x));
 }
 
-static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
 static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
 static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
 
@@ -394,7 +362,7 @@ static int l_inverse(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
     int st = pc_map_inverse(f, newmap(L));
     if (st == PC_EDIM) return pcl_fail(L, "a map from %d-D to %d-D (a projection or an embedding) has no inverse", f->nin, f->nout);
-    return st == PC_OK ? 1 : pcl_fail(L, "the map is singular (it flattens space), so it has no inverse");
+    return made(L, st);
 }
 
 static const pcl_arg conv_arg[] = {CONVENTION, PCL_END};
@@ -501,12 +469,9 @@ static const pcl_fn ctors[] = {
     PCL_FN("map.cavalier", l_cavalier, alpha_arg, "f", "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees."),
     PCL_FN("map.cabinet", l_cabinet, alpha_arg, "f", "The oblique projection with k = 1/2; alpha defaults to 45 degrees."),
     PCL_FN("map.perspective", l_perspective, persp_args, "f", "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point."),
-    PCL_FN("map.perspective_pqr", l_perspective_pqr, pqr_args, "f",
-           "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
-    {.name = "map.foreshortening", .fn = l_foreshortening, .args = map_args, .result = "fx, fy, fz",
-     .help = "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3)."},
-    PCL_FN("map.axial_affinity", l_axial_affinity, affinity_args, "f",
-           "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection)."),
+    PCL_FN("map.perspective_pqr", l_perspective_pqr, pqr_args, "f", "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
+    {.name = "map.foreshortening", .fn = l_foreshortening, .args = map_args, .result = "fx, fy, fz", .help = "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3)."},
+    PCL_FN("map.axial_affinity", l_axial_affinity, affinity_args, "f", "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection)."),
     PCL_END};
 
 void pcl_open_map(lua_State *L) {

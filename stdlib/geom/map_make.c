@@ -1,0 +1,41 @@
+/* The maps made of numbers alone, by kind, and the map operations' why-table (map_make.h). */
+#include "map_make.h"
+
+int pc_map_make(pc_map *f, pc_map_kind kind, const double *x) {
+    switch (kind) {
+    case PC_MM_IDENTITY:
+        if (!(x[0] >= 1 && x[0] <= PC_MAXDIM)) return PC_EDOMAIN;
+        pc_map_identity(f, (int)x[0]);
+        return PC_OK;
+    case PC_MM_ORTHOGRAPHIC:
+        return x[0] >= 0 && x[0] < 3 ? pc_map_orthographic(f, "xyz"[(int)x[0]]) : PC_EDOMAIN;
+    case PC_MM_AXONOMETRIC:
+        pc_map_axonometric(f, x[0], x[1]);
+        return PC_OK;
+    case PC_MM_ISOMETRIC:
+        pc_map_isometric(f);
+        return PC_OK;
+    case PC_MM_DIMETRIC:
+        return pc_map_dimetric(f, x[0]);
+    case PC_MM_OBLIQUE:
+    case PC_MM_CAVALIER:
+    case PC_MM_CABINET:
+        pc_map_oblique(f, kind == PC_MM_OBLIQUE ? x[0] : kind == PC_MM_CAVALIER ? 1.0 : 0.5,
+                       kind == PC_MM_OBLIQUE ? x[1] : x[0]);
+        return PC_OK;
+    case PC_MM_PERSPECTIVE_PQR:
+        return pc_map_perspective_pqr(f, x[0], x[1], x[2]);
+    }
+    return PC_EDOMAIN;
+}
+
+const pc_why pc_map_why[] = {
+    {"map.matrix", PC_ESINGULAR, 0, NULL, "the zero matrix is no map (it sends every point nowhere)"},
+    {"map.reflect", PC_EZERO, 2, NULL, "is the zero vector, which gives no mirror"},
+    {"map.dimetric", PC_EDOMAIN, 1, NULL, "must be a number between 0 and 1 (the foreshortening of the z axis), got %s"},
+    {"map.axial_affinity", PC_EZERO, 0, NULL, "the directions d and s must not be zero"},
+    {"map.axial_affinity", PC_ECOLLINEAR, 0, NULL, "the direction s lies along the axis d: no affinity"},
+    {"map.foreshortening", PC_EDOMAIN, 0, NULL,
+     "a perspective (projective) map has no constant foreshortening; give an affine map (an axonometry)"},
+    {"f:inverse", PC_ESINGULAR, 0, NULL, "the map is singular (it flattens space), so it has no inverse"},
+    {NULL, 0, 0, NULL, NULL}};

@@ -1,0 +1,28 @@
+/* The maps made of numbers alone, by kind: one entry for callers that hold the numbers in
+ * order (the constructors of the map and affine tables), and the explanation of each status
+ * of each map operation, by the name the API gives it (why.h). */
+#ifndef PC_MAP_MAKE_H
+#define PC_MAP_MAKE_H
+
+#include "map.h"
+#include "why.h"
+
+typedef enum {
+    PC_MM_IDENTITY,         /* n: pc_map_identity */
+    PC_MM_ORTHOGRAPHIC,     /* the axis dropped, 0 x, 1 y, 2 z: pc_map_orthographic */
+    PC_MM_AXONOMETRIC,      /* phi, theta */
+    PC_MM_ISOMETRIC,        /* no numbers */
+    PC_MM_DIMETRIC,         /* fz */
+    PC_MM_OBLIQUE,          /* k, alpha */
+    PC_MM_CAVALIER,         /* alpha: the oblique projection with k = 1 */
+    PC_MM_CABINET,          /* alpha: k = 1/2 */
+    PC_MM_PERSPECTIVE_PQR   /* p, q, r */
+} pc_map_kind;
+
+/* The map of the kind from its numbers x in order into f: the status of the kind's own
+ * function (PC_EDOMAIN for an unknown kind or axis, n outside 1..PC_MAXDIM). */
+int pc_map_make(pc_map *f, pc_map_kind kind, const double *x);
+
+extern const pc_why pc_map_why[];
+
+#endif

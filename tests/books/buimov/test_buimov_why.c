@@ -1,0 +1,80 @@
+/* The textbook's why-table (buimov_why.h): each row explains the status its construction
+ * really returns for the failing condition, and pc_conic_coef by kind (§3.3-§3.5). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include <string.h>
+#include "buimov_why.h"
+#include "plane_curves.h"
+#include "buimov.h"
+
+#define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
+
+/* the row of op for status st, which must exist */
+static const char *why(const char *op, int st) {
+    const pc_why *w = pc_why_find(pc_buimov_why, op, st);
+    assert_non_null(w);
+    return w->text;
+}
+
+static void circles_explained(void **state) {
+    (void)state;
+    pc_circle_eq c[2];
+    double a[2] = {1, 1}, b[2] = {3, 3}, m[2] = {2, 2}, ends[4];
+    int n;
+    assert_string_equal(why("plane.circle3", pc_circle3(a, a, b, c)), "two of the points coincide");
+    assert_non_null(strstr(why("plane.circle3", pc_circle3(a, m, b, c)), "lie on one line"));
+    assert_non_null(strstr(why("plane.circle2r", pc_circle2r(a, a, 1, c)), "coincide"));
+    assert_non_null(strstr(why("plane.circle_slopes", pc_circle_slopes(a, 0, 3, 0, c, ends, &n)), "no circle"));
+    pc_conic_class k;
+    assert_non_null(strstr(why("plane.classify", pc_conic_classify(0, 0, 0, &k)), "not a conic"));
+    /* no row for a status the construction does not return */
+    assert_null(pc_why_find(pc_buimov_why, "plane.circle3", PC_EDOMAIN));
+}
+
+static void curves_explained(void **state) {
+    (void)state;
+    int st;
+    double c[2] = {0, 0}, p[6] = {0, 0, 1, 1, 1, 1};
+    assert_null(pc_curve_ellipse(c, 1, 2, 1, 1, &st));
+    assert_non_null(strstr(why("plane.ellipse", st), "th0 < th1"));
+    assert_null(pc_curve_parabola(1, 2, 1, &st));
+    assert_string_equal(why("plane.parabola", st), "need th0 < th1");
+    assert_null(pc_curve_hyperbola(1, 1, 1, 0, &st));
+    assert_string_equal(why("plane.hyperbola", st), "need t0 < t1");
+    assert_null(pc_curve_helix(1, 1, 1, 0, &st));
+    assert_string_equal(why("buimov.helix", st), "need t0 < t1");
+    double o[3] = {0, 0, 0};
+    assert_null(pc_surface_sphere(o, 1, 0, 1, 1, 0, &st));
+    assert_string_equal(why("buimov.sphere", st), "need th0 < th1 and ph0 < ph1");
+    assert_null(pc_curve_book_spline(2, 3, p, 1, PC_BOOK_NATURAL, NULL, NULL, NULL, &st));
+    assert_non_null(strstr(why("buimov.spline", st), "chord of length 0"));
+}
+
+static void conic_coef_by_kind(void **state) {
+    (void)state;
+    double c[2] = {1, 2}, k[6], e[6];
+    assert_int_equal(pc_conic_coef(0, c, 3, 2, k), PC_OK);     /* the ellipse of §3.3 */
+    pc_conic_ellipse_coef(1, 2, 3, 2, e);
+    for (int i = 0; i < 6; i++) NEAR(k[i], e[i], 0);
+    NEAR(pc_conic_value(k, 4, 2), 0, 1e-12);                    /* the end of the major axis */
+    assert_int_equal(pc_conic_coef(1, c, 2, 1.5, k), PC_OK);   /* the hyperbola: vertex (3, 2) */
+    NEAR(pc_conic_value(k, 3, 2), 0, 1e-12);
+    NEAR(k[2], -4, 0);
+    assert_int_equal(pc_conic_coef(2, c, 0.5, NAN, k), PC_OK); /* the parabola: B unused */
+    NEAR(k[4], -2, 0);
+    NEAR(k[5], 1 + 4 * 0.5 * 2, 1e-12);                         /* f = m^2 + 4pn */
+    assert_int_equal(pc_conic_coef(0, c, 3, 0, k), PC_EDOMAIN);
+    assert_int_equal(pc_conic_coef(1, c, -1, 2, k), PC_EDOMAIN);
+    assert_non_null(strstr(why("plane.conic_coef", PC_EDOMAIN), "semi-axes"));
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(circles_explained), cmocka_unit_test(curves_explained),
+        cmocka_unit_test(conic_coef_by_kind),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
