@@ -32,7 +32,6 @@ static void push_circle(lua_State *L, const pc_circle_eq *c) {
 }
 
 static const pcl_arg abc_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), PCL_END};
-
 PCL_BODY(l_circle3, a) {
     pc_circle_eq c;
     pcl_check(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c), WHY);
@@ -49,7 +48,6 @@ PCL_BODY(l_arc3, a) {
 }
 
 static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
-
 PCL_BODY(l_circle2r, a) {
     double *A = a[0].v, *B = a[1].v, r = a[2].x;
     pc_circle_eq c[2];
@@ -64,7 +62,6 @@ PCL_BODY(l_circle2r, a) {
 }
 
 static const pcl_arg slopes_args[] = {A_POINT("A", 2), A_NUM("m1"), A_NUM("x_end"), A_NUM("m2"), PCL_END};
-
 PCL_BODY(l_circle_slopes, a) {
     double *A = a[0].v, m1 = a[1].x, xe = a[2].x, ends[4];
     pc_circle_eq c[2];
@@ -84,7 +81,6 @@ PCL_BODY(l_circle_slopes, a) {
 
 static const char *const conic_names[3] = {"ellipse", "parabola", "hyperbola"};
 static const pcl_arg classify_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("c"), PCL_END};
-
 PCL_BODY(l_classify, a) {
     pc_conic_class k;
     pcl_check(L, pc_conic_classify(a[0].x, a[1].x, a[2].x, &k), WHY);
@@ -93,7 +89,6 @@ PCL_BODY(l_classify, a) {
 
 #define COEF {.name = "coef", .kind = PCL_NUMBERS, .lo = 6, .hi = 6}
 static const pcl_arg rotate_args[] = {COEF, A_NUM("alpha"), PCL_END};
-
 PCL_BODY(l_rotate_conic, a) {
     double out[6];
     pc_conic_rotate(a[0].list, a[1].x, out);
@@ -101,7 +96,6 @@ PCL_BODY(l_rotate_conic, a) {
 }
 
 static const pcl_arg value_args[] = {COEF, A_POINT("X", 2), PCL_END};
-
 PCL_BODY(l_conic_value, a) {
     return pcl_push_results(L, 0, "n", pc_conic_value(a[0].list, a[1].v[0], a[1].v[1]));
 }
@@ -109,7 +103,6 @@ PCL_BODY(l_conic_value, a) {
 static const char *const coef_kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
 static const pcl_arg coef_args[] = {A_ENUM("kind", coef_kinds), A_POINT("centre", 2), A_NUM("A"),
                                     {.name = "B", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 PCL_BODY(l_conic_coef, a) {
     double out[6];
     if (a[0].n != 2 && !a[3].present)
@@ -120,7 +113,6 @@ PCL_BODY(l_conic_coef, a) {
 
 static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"),
                                        A_NUMOPT("th0", 0, "0"), {.name = "th1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 PCL_BODY(l_ellipse, a) {
     double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
     int st;
@@ -128,14 +120,12 @@ PCL_BODY(l_ellipse, a) {
 }
 
 static const pcl_arg parabola_args[] = {A_POSNUM("p"), A_NUM("th0"), A_NUM("th1"), PCL_END};
-
 PCL_BODY(l_parabola, a) {
     int st;
     return made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
 }
 
 static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300), A_NUMIN("t1", -300, 300), PCL_END};
-
 PCL_BODY(l_hyperbola, a) {
     int st;
     return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
@@ -149,7 +139,6 @@ static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags =
                                       {.name = "n", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 0, .hi = 1000000},
                                       {.name = "method", .kind = PCL_ENUM, .choices = point_methods}, PCL_END};
 static const pcl_arg points_args[] = {A_ENUM("kind", point_kinds), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
-
 PCL_BODY(l_points, a) {
     int kind = a[0].n, method = a[6].n, n = (int)a[5].x;
     if ((kind == 1 || kind >= 3) && !a[3].present) return pcl_keyfail(L, "B", "must be a positive number (the %s's), got nil", a[0].s);
@@ -169,7 +158,6 @@ static int order(lua_State *L, int m, double k) {
 }
 
 static const pcl_arg knots_args[] = {A_POINTS("points", 0, 2, 0), A_INT("k", 2, PC_CURVE_MAXDEG + 1), PCL_END};
-
 PCL_BODY(l_knots, a) {
     int m = a[0].n, k = order(L, m, a[1].x);
     double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + k), 0);
@@ -184,7 +172,6 @@ PCL_BODY(l_knots, a) {
 
 static const pcl_arg basis_args[] = {A_INT("i", 0, 1000000), A_INT("k", 1, PC_CURVE_MAXDEG + 1), A_NUM("t"),
                                      A_NUMBERS("knots", 0, 1000000), PCL_END};
-
 PCL_BODY(l_basis, a) {
     int i = (int)a[0].x, k = (int)a[1].x, nq = a[3].n;
     for (int j = 1; j < nq; j++)
@@ -201,13 +188,11 @@ PCL_BODY(l_bspline, a) {
 }
 
 static const pcl_arg bernstein_args[] = {A_INT("n", 0, 1000), A_INT("i", 0, 1000), A_NUM("t"), PCL_END};
-
 PCL_BODY(l_bernstein, a) {
     return pcl_push_results(L, 0, "n", pc_bernstein((int)a[0].x, (int)a[1].x, a[2].x));
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
-
 PCL_BODY(l_blend, a) {
     double F[4];
     pc_hermite_blend(a[0].x, F);
@@ -217,7 +202,6 @@ PCL_BODY(l_blend, a) {
 /* P1, P2 (points), D1, D2 (vectors) [, t]: the data of a Hermite segment */
 static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
                                        {.name = "t", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
-
 PCL_BODY(l_hermite, a) {
     double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x};
     int d = a[0].n, st;
@@ -242,7 +226,6 @@ static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choice
                                       {.name = "lengths", .kind = PCL_NUMBERS, .lo = 1}, PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
-
 PCL_BODY(l_spline, a) {
     int n = a[0].n, d = a[0].dim, st, have_d = a[3].present + a[4].present;
     pc_book_ends ends = (pc_book_ends)a[2].n;
@@ -263,7 +246,6 @@ PCL_BODY(l_spline, a) {
 }
 
 static const pcl_arg helix_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("t0"), A_NUM("t1"), PCL_END};
-
 PCL_BODY(l_helix, a) {
     if (a[0].x == 0) return pcl_argfail(L, 1, "must be a nonzero radius, got 0");
     int st;
@@ -273,7 +255,6 @@ PCL_BODY(l_helix, a) {
 static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
                                       A_NUMOPT("ph1", PI, "pi"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
                                       {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
-
 PCL_BODY(l_sphere, a) {
     int st;   /* C absent: its cleared value, the origin */
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
@@ -283,7 +264,6 @@ PCL_BODY(l_sphere, a) {
 
 static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
                                      {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
-
 PCL_BODY(l_sphere_frame, a) {
     double f[15];
     pc_sphere_frame_at(a[2].v, a[3].x, a[0].x, a[1].x, f);   /* the unit sphere at the origin by default */
@@ -292,7 +272,6 @@ PCL_BODY(l_sphere_frame, a) {
 
 /* buimov.det(rows): the determinant of a square matrix (§1.2; the area factor of §1.7.4) */
 static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a square matrix (a list of rows)"}, PCL_END};
-
 PCL_BODY(l_det, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1), nc;
@@ -303,7 +282,6 @@ PCL_BODY(l_det, a) {
 
 static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_ANY, .expect = "a list of maps from 3-D to 2-D"},
                                            A_POINTS("images", 2, 2, 64), PCL_END};
-
 PCL_BODY(l_reconstruct, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of maps from 3-D to 2-D, got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1);
@@ -324,7 +302,6 @@ PCL_BODY(l_reconstruct, a) {
 }
 
 static const pcl_arg calibrate_args[] = {A_POINTS("points", 3, 6, 0), A_POINTS("images", 2, 6, 0), PCL_END};
-
 PCL_BODY(l_calibrate, a) {
     int n = a[0].n;
     if (a[1].n != n) return pcl_fail(L, "%d points but %d images", n, a[1].n);

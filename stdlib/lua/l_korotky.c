@@ -70,7 +70,6 @@ static const char *const ENDS[] = {"natural", "clamped", NULL};
 static const pcl_arg poly_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = ENDS},
                                     A_NUM("s0"), A_NUM("s1"), PCL_END};
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
-
 PCL_BODY(l_poly_spline, a) {
     double coef[4 * MAXPTS];
     int n = a[0].n, clamped = a[2].n == 1, bad = -1, st;
@@ -89,7 +88,6 @@ PCL_BODY(l_poly_spline, a) {
 
 static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
                                         A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
-
 PCL_BODY(l_ferguson, a) {
     double T[2 * MAXPTS];
     int n = a[0].n, st;
@@ -108,7 +106,6 @@ static const pcl_arg lambda_keys[] = {
     PCL_END};
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
-
 PCL_BODY(l_ferguson_lambda, a) {
     double *p = a[0].list, dout[2 * MAXPTS], din[2 * MAXPTS];
     int n = a[0].n;
@@ -128,7 +125,6 @@ static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1
                                         {.name = "start", .kind = PCL_NUMBERS, .hi = 2 * MAXPTS, .shown = "{...}"}, PCL_END};
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
-
 PCL_BODY(l_ferguson_tangents, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS];
     int n = a[0].n;
@@ -148,7 +144,6 @@ static const char *const ROOTS[] = {"min", "max", NULL};
 static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL), A_NUM("wA"),
                                      A_POSNUM("z1"), {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS},
                                      PCL_END};
-
 PCL_BODY(l_ferguson_substitution, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     int n = a[0].n;
@@ -185,7 +180,6 @@ static const pcl_arg elastic_keys[] = {
     {.name = "pieces", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 4, .shown = "4"},
     {.name = "length", .kind = PCL_NUMBER, .flags = PCL_POS, .shown = "free"}, PCL_END};
 static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN), A_OPTIONS("opts", elastic_keys), PCL_END};
-
 PCL_BODY(l_elastic, a) {
     double E;
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
@@ -205,7 +199,6 @@ PCL_BODY(l_elastic, a) {
 static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference", 0),
                                          {.name = "samples", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE,
                                           .lo = 8, .hi = 4096, .dflt = 64}, PCL_END};
-
 PCL_BODY(l_deviation, a) {
     pc_curve *m = a[0].obj, *r = a[1].obj;
     if (m->dim != r->dim)
@@ -217,7 +210,6 @@ PCL_BODY(l_deviation, a) {
 }
 
 static const pcl_arg curve_arg[] = {A_CURVE("curve", 0), PCL_END};
-
 PCL_BODY(l_joint_jumps, a) {
     double dk, da;
     int at, st = pc_curve_joint_jumps(a[0].obj, &dk, &da, &at);
@@ -236,7 +228,6 @@ PCL_BODY(l_energy, a) {
  * increasing), the way the article measured the ruler's slopes (Tables A2-A5). */
 static const pcl_arg slope_args[] = {A_POINTS("samples", 2, 3, 0), A_NUM("x"),
                                      {.name = "window", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
-
 PCL_BODY(l_graphical_slope, a) {
     int n = a[0].n, wn = a[2].present ? (int)a[2].x : n >= 7 ? 7 : n % 2 ? n : n - 1;
     const double *xy = a[0].list;
@@ -256,7 +247,6 @@ PCL_BODY(l_graphical_slope, a) {
 
 static const pcl_arg arc_args[] = {A_SAMEPOINT("U"), A_SAMEVECTOR("tU"), A_SAMEPOINT("V"), A_SAMEVECTOR("tV"),
                                    A_SAMEPOINT("T"), PCL_END};
-
 PCL_BODY(l_conic_arc, a) {
     int d = a[0].n, st;
     if (d < 2) return pcl_fail(L, "the points must be 2-D or more");
@@ -267,13 +257,10 @@ PCL_BODY(l_conic_arc, a) {
     return 1 + pcl_push_results(L, 0, "n s", w, pc_conic_kind(w));
 }
 
-static const pcl_arg sweep_keys[] = {{.name = "U", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "V", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "T", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "P", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "Q", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
+#define REQ3(nm, k) {.name = nm, .kind = k, .flags = PCL_REQ, .dim = 3}   /* a required 3-D key */
+static const pcl_arg sweep_keys[] = {REQ3("U", PCL_CURVE), REQ3("V", PCL_CURVE), REQ3("T", PCL_CURVE),
+                                     REQ3("P", PCL_CURVE), REQ3("Q", PCL_CURVE), PCL_END};
 static const pcl_arg sweep_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = sweep_keys}, PCL_END};
-
 PCL_BODY(l_conic_sweep, a) {
     int st;
     double u = 0;
@@ -286,7 +273,6 @@ PCL_BODY(l_conic_sweep, a) {
 
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"),
                                     {.name = "origin", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3}, PCL_END};
-
 PCL_BODY(l_dome_rect, a) {
     int st;
     pc_surface *s = pc_surface_dome_rect(a[0].x, a[1].x, a[2].x, a[3].present ? a[3].v : NULL, &st);
@@ -313,7 +299,6 @@ static int read_height(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
                                    {.name = "h | D", .kind = PCL_ANY, .read = read_height,
                                     .expect = "a positive number or the 3-D apex D"}, PCL_END};
-
 PCL_BODY(l_dome_tri, a) {
     double h = a[3].x;
     if (a[3].n == 3) {
@@ -364,7 +349,6 @@ static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
                     .expect = "a list of three 4-D points, vectors or curves"}
 static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
 static const pcl_arg pencils_args[] = {{.name = "pencils", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = pencil_keys}, PCL_END};
-
 static int l_two_pencils(lua_State *L) {
     pc_pencil_point om[3], de[3];
     pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
@@ -385,13 +369,9 @@ static int l_two_pencils(lua_State *L) {
 
 /* ---- the rotational sweep and the ridge shell ---------------------------------------------- */
 
-static const pcl_arg revolve_keys[] = {{.name = "A", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "B", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "nA", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "nB", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "ridge", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
+static const pcl_arg revolve_keys[] = {REQ3("A", PCL_POINT), REQ3("B", PCL_POINT), REQ3("nA", PCL_VECTOR),
+                                       REQ3("nB", PCL_VECTOR), REQ3("ridge", PCL_CURVE), PCL_END};
 static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
-
 PCL_BODY(l_conic_revolve, a) {
     int st;
     double u = 0;
@@ -408,7 +388,6 @@ PCL_BODY(l_conic_revolve, a) {
 static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
                                      GUIDE("H"), GUIDE("Q"), PCL_END};
 static const pcl_arg ridge_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = ridge_keys}, PCL_END};
-
 PCL_BODY(l_ridge_shell, a) {
     pc_pencil_point g[8];
     for (int i = 0; i < 8; i++) {
@@ -447,7 +426,6 @@ static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .kind = PCL_ANY, .read = read_conic,
                                          .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
                                         PCL_END};
-
 PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */

@@ -70,7 +70,6 @@ static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (v
 #define POINTSET "a table of points or a simplex"
 static const pcl_arg affine_args[] = {{.name = "source points", .kind = PCL_ANY, .expect = POINTSET},
                                       {.name = "image points", .kind = PCL_ANY, .expect = POINTSET}, PCL_END};
-
 PCL_BODY(l_affine, a) {
     double src[(PC_MAXDIM + 1) * PC_MAXDIM], dst[(PC_MAXDIM + 1) * PC_MAXDIM];
     int nin = 0, nout = 0, m = read_points(L, 1, 2, src, &nin), m2 = read_points(L, 2, 3, dst, &nout);
@@ -85,7 +84,6 @@ PCL_BODY(l_affine, a) {
 static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), {.name = "X", .kind = PCL_LOC, .flags = PCL_SAMEDIM},
                                      {.name = "Y", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT},
                                      {.name = "Z", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT}, PCL_END};
-
 static int l_frame(lua_State *L) {
     int m = lua_gettop(L);
     if (m - 1 > PC_MAXDIM) return pcl_fail(L, "%d axes; the largest dimension is %d", m - 1, PC_MAXDIM);
@@ -111,7 +109,6 @@ static int l_identity(lua_State *L) { return make(L, PC_MM_IDENTITY); }
 /* ---- the constructors of the map table ------------------------------------------------------ */
 
 static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
-
 PCL_BODY(l_matrix_ctor, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a table of rows (tables of numbers), got %s", pcl_shown(L, 1));
     int rowvec = a[1].n == 0, nr = (int)luaL_len(L, 1), nc = 0;
@@ -124,7 +121,6 @@ PCL_BODY(l_matrix_ctor, a) {
 }
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
-
 PCL_BODY(l_translate, a) {
     for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
         if (!isfinite(a[0].v[i]))
@@ -136,7 +132,6 @@ PCL_BODY(l_translate, a) {
 /* map.scale(k, centre | n) | map.scale({kx, ky, ...} [, centre]) */
 static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = "a number or a list of numbers {kx, ky, ...}"},
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-
 static int l_scale(lua_State *L) {
     pcl_val a[2] = {0}, c = {0};
     PCL_READ(L, a);
@@ -167,7 +162,6 @@ static int l_scale(lua_State *L) {
 /* map.rotate(angle [, centre]) | map.rotate(A, B | direction, angle) */
 static const pcl_arg rotate_args[] = {{.name = "angle | A", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "centre | B", .kind = PCL_ANY, .flags = PCL_OPT},
                                       {.name = "angle", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-
 static int l_rotate(lua_State *L) {
     pcl_val a[3] = {0}, A = {0}, B = {0}, t = {0};
     PCL_READ(L, a);
@@ -204,7 +198,6 @@ static int l_rotate(lua_State *L) {
 }
 
 static const pcl_arg reflect_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("normal"), PCL_END};
-
 PCL_BODY(l_reflect, a) {
     return made(L, pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v));
 }
@@ -220,7 +213,6 @@ static int axis_of(lua_State *L, int k, int n) {
 }
 static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .kind = PCL_ANY}, {.name = "j", .kind = PCL_ANY},
                                      A_NUM("k"), PCL_END};
-
 PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
     if (i == j) return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
@@ -246,7 +238,6 @@ static int l_cabinet(lua_State *L) { return make(L, PC_MM_CABINET); }
 static int l_perspective_pqr(lua_State *L) { return make(L, PC_MM_PERSPECTIVE_PQR); }
 
 static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
-
 PCL_BODY(l_perspective, a) {
     int st = pc_map_perspective(newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
@@ -353,7 +344,6 @@ static int l_mul(lua_State *L) {
 }
 
 static const pcl_arg g_arg[] = {A_MAP("g"), PCL_END};
-
 PCL_METHOD(l_compose, pc_map *f, a) {
     return compose(L, f, a[0].obj);
 }
@@ -366,7 +356,6 @@ static int l_inverse(lua_State *L) {
 }
 
 static const pcl_arg conv_arg[] = {CONVENTION, PCL_END};
-
 PCL_METHOD(l_matrix, pc_map *f, a) {
     int rowvec = a[0].n == 0;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];

@@ -29,5 +29,6 @@ const pc_why pc_buimov_why[] = {
     /* chapter 2.8.6: views and cameras */
     {"buimov.reconstruct", PC_ESINGULAR, 0, NULL, "the views do not fix a point (their lines of sight are parallel)"},
     {"buimov.calibrate", PC_ESINGULAR, 0, NULL,
-     "the points do not fix a camera (they lie in one plane, or the origin is on the camera's vanishing plane, where T44 = 0)"},
+     "the points do not fix a camera (they lie in one plane, or the origin is on the camera's vanishing plane, "
+     "where T44 = 0)"},
     {NULL, 0, 0, NULL, NULL}};
