@@ -1,4 +1,5 @@
 /* The maps made of numbers alone, by kind, and the map operations' why-table (map_make.h). */
+#include <math.h>
 #include "map_make.h"
 
 int pc_map_make(pc_map *f, pc_map_kind kind, const double *x) {
@@ -29,7 +30,15 @@ int pc_map_make(pc_map *f, pc_map_kind kind, const double *x) {
     return PC_EDOMAIN;
 }
 
+int pc_map_translate_finite(pc_map *f, int n, const double *v) {
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i])) return PC_ENONFINITE;
+    pc_map_translate(f, n, v);
+    return PC_OK;
+}
+
 const pc_why pc_map_why[] = {
+    {"map.translate", PC_ENONFINITE, 1, NULL, "must be a finite vector, got %s"},
     {"map.matrix", PC_ESINGULAR, 0, NULL, "the zero matrix is no map (it sends every point nowhere)"},
     {"map.reflect", PC_EZERO, 2, NULL, "is the zero vector, which gives no mirror"},
     {"map.dimetric", PC_EDOMAIN, 1, NULL, "must be a number between 0 and 1 (the foreshortening of the z axis), got %s"},

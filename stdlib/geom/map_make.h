@@ -23,6 +23,9 @@ typedef enum {
  * function (PC_EDOMAIN for an unknown kind or axis, n outside 1..PC_MAXDIM). */
 int pc_map_make(pc_map *f, pc_map_kind kind, const double *x);
 
+/* pc_map_translate by a finite vector v (one made by overflow gives no map): PC_ENONFINITE. */
+int pc_map_translate_finite(pc_map *f, int n, const double *v);
+
 extern const pc_why pc_map_why[];
 
 #endif

@@ -131,7 +131,6 @@ PCL_BODY(l_hyperbola, a) {
     return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
 }
 
-/* plane.points(kind, {A =, B =, step =, n =, method =}) */
 static const char *const point_kinds[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
 static const char *const point_methods[] = {"param", "recurrence", "rational", "explicit", NULL};
 static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, {.name = "B", .kind = PCL_NUMBER, .flags = PCL_POS},
@@ -199,7 +198,6 @@ PCL_BODY(l_blend, a) {
     return pcl_push_results(L, 0, "n n n n", F[0], F[1], F[2], F[3]);
 }
 
-/* P1, P2 (points), D1, D2 (vectors) [, t]: the data of a Hermite segment */
 static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
                                        {.name = "t", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
 PCL_BODY(l_hermite, a) {
@@ -313,17 +311,19 @@ PCL_BODY(l_calibrate, a) {
 
 /* §4.3 the G1 joint of Bezier curves */
 #define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
-
+static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
+                                  {.name = "g", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1, .shown = "1",
+                                   .expect = "a positive number (the tangents keep their direction)"}, PCL_END};
 PCL_BODY(l_g1_next, a) {
     const pc_curve *c = a[0].obj;
     double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q0[PC_MAXDIM], q1[PC_MAXDIM];
     int n = pc_bezier_points(c, p);
     if (n < 0) return pcl_argfail(L, 1, NOT_POLY);
-    if (!(a[2].x > 0)) return pcl_argfail(L, 3, "must be positive (the tangents keep their direction)");
     pcl_check(L, pc_bezier_g1_next(c->dim, n, p, (int)a[1].x, a[2].x, q0, q1), WHY);
     return pcl_push_results(L, c->dim, "p p", q0, q1);
 }
 
+static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
 PCL_BODY(l_joint, a) {
     const pc_curve *P = a[0].obj, *Q = a[1].obj;
     double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], g;
@@ -337,10 +337,6 @@ PCL_BODY(l_joint, a) {
     else lua_pushnumber(L, g);
     return 2;
 }
-
-static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
-                                  A_NUMOPT("g", 1, "1"), PCL_END};
-static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
 
 static const pcl_fn plane[] = {
     PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),

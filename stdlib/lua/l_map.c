@@ -122,19 +122,13 @@ PCL_BODY(l_matrix_ctor, a) {
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
 PCL_BODY(l_translate, a) {
-    for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
-        if (!isfinite(a[0].v[i]))
-            return pcl_argfail(L, 1, "must be a finite vector, got %s", pcl_shown(L, 1));
-    pc_map_translate(newmap(L), a[0].n, a[0].v);
-    return 1;
+    return made(L, pc_map_translate_finite(newmap(L), a[0].n, a[0].v));
 }
 
-/* map.scale(k, centre | n) | map.scale({kx, ky, ...} [, centre]) */
 static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = "a number or a list of numbers {kx, ky, ...}"},
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-static int l_scale(lua_State *L) {
-    pcl_val a[2] = {0}, c = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_scale, a) {
+    pcl_val c = {0};
     double k[PC_MAXDIM];
     int n = 0;
     static const pcl_arg factors = {.name = "k", .kind = PCL_NUMBERS, .lo = 1, .hi = PC_MAXDIM};
@@ -159,12 +153,10 @@ static int l_scale(lua_State *L) {
     return 1;
 }
 
-/* map.rotate(angle [, centre]) | map.rotate(A, B | direction, angle) */
 static const pcl_arg rotate_args[] = {{.name = "angle | A", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "centre | B", .kind = PCL_ANY, .flags = PCL_OPT},
                                       {.name = "angle", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-static int l_rotate(lua_State *L) {
-    pcl_val a[3] = {0}, A = {0}, B = {0}, t = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_rotate, a) {
+    pcl_val A = {0}, B = {0}, t = {0};
     static const pcl_arg angle = A_NUM("angle");
     if (lua_type(L, 1) != LUA_TNUMBER && pcl_tovalue(L, 1)) {       /* about an axis in space */
         static const pcl_arg pA = A_POINT("A", 3), pB = {.name = "B", .kind = PCL_LOC, .flags = PCL_SAMEDIM};

@@ -77,9 +77,24 @@ static void statuses_explained(void **state) {
     assert_non_null(pc_why_find(pc_map_why, "map.foreshortening", st));
 }
 
+static void translate_finite(void **state) {
+    (void)state;
+    pc_map f;
+    double v[2] = {1, -2}, o[3];
+    assert_int_equal(pc_map_translate_finite(&f, 2, v), PC_OK);
+    double in[3] = {3, 4, 1};
+    pc_map_image(&f, in, o);
+    NEAR(o[0], 4, 0); NEAR(o[1], 2, 0); NEAR(o[2], 1, 0);
+    v[1] = INFINITY;
+    int st = pc_map_translate_finite(&f, 2, v);
+    assert_int_equal(st, PC_ENONFINITE);
+    assert_int_equal(pc_why_find(pc_map_why, "map.translate", st)->arg, 1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(same_as_constructors), cmocka_unit_test(statuses_explained),
+        cmocka_unit_test(translate_finite),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
