@@ -353,16 +353,10 @@ static int l_two_pencils(lua_State *L) {
     pc_pencil_point om[3], de[3];
     pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
     PCL_READ(L, a);
-    int st;
-    pc_surface *s = pc_surface_two_pencils(om, de, &st);
+    int st, meet;
+    pc_surface *s = pc_surface_two_pencils_checked(om, de, &st, &meet);
+    if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    /* a surface whose every meet fails is a mistake in the data: say so now */
-    double out[5];
-    st = s->fn(s->ud, .5, .5, 0, out);
-    if (st != PC_OK) {
-        pc_surface_release(s);
-        return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(st, 1));
-    }
     pcl_pushsurface(L, s, "korotky.two_pencils");
     return 1;
 }

@@ -120,6 +120,20 @@ static void test_sail(void **state) {
     pc_pencil_point om2[3] = {{NULL, {0, 6, .3, 2, 1}}, {bad, {0}}, {NULL, {0, 0, 1, 0, 0}}};
     assert_null(pc_surface_two_pencils(om2, de, &st));
     assert_int_equal(st, PC_EDIM);
+    /* checked: the sail is made, the pencils sharing a line at the centre refused there */
+    int meet;
+    s = pc_surface_two_pencils_checked(om, de, &st, &meet);
+    assert_non_null(s);
+    assert_int_equal(meet, PC_OK);
+    assert_int_equal(pc_surface_eval(s, .5, 1, S), PC_OK);
+    for (int k = 0; k < 4; k++) NEAR(S[k], C[k], 1e-12);
+    pc_surface_release(s);
+    assert_null(pc_surface_two_pencils_checked(om, de2, &st, &meet));
+    assert_int_equal(meet, PC_ESAME_LINE);
+    assert_int_equal(st, PC_ESAME_LINE);
+    assert_null(pc_surface_two_pencils_checked(om2, de, &st, &meet));
+    assert_int_equal(meet, PC_OK);
+    assert_int_equal(st, PC_EDIM);
     pc_curve_release(bad);
     pc_curve_release(ab);
     pc_curve_release(ac);
