@@ -1,5 +1,6 @@
 /* The maps made of numbers alone, by kind, and the map operations' why-table (map_make.h). */
 #include <math.h>
+#include <stdlib.h>
 #include "map_make.h"
 
 int pc_map_make(pc_map *f, pc_map_kind kind, const double *x) {
@@ -35,6 +36,13 @@ int pc_map_translate_finite(pc_map *f, int n, const double *v) {
         if (!isfinite(v[i])) return PC_ENONFINITE;
     pc_map_translate(f, n, v);
     return PC_OK;
+}
+
+int pc_map_unit_name(const char *name) {
+    if (name[0] != 'C' || name[1] < '0' || name[1] > '9' || (name[1] == '0' && name[2])) return -1;
+    char *end;
+    long i = strtol(name + 1, &end, 10);
+    return *end || i > PC_MAXDIM ? -1 : (int)i;
 }
 
 const pc_why pc_map_why[] = {

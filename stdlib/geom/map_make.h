@@ -26,6 +26,10 @@ int pc_map_make(pc_map *f, pc_map_kind kind, const double *x);
 /* pc_map_translate by a finite vector v (one made by overflow gives no map): PC_ENONFINITE. */
 int pc_map_translate_finite(pc_map *f, int n, const double *v);
 
+/* The index i of the field name "Ci" of a map (C0, C1, ...: the image of the origin and of the
+ * axes' unit points, pc_map_unit_image), no leading zero; -1 for any other name. */
+int pc_map_unit_name(const char *name);
+
 extern const pc_why pc_map_why[];
 
 #endif

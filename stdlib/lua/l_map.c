@@ -412,10 +412,9 @@ static int l_index(lua_State *L) {
         lua_pushinteger(L, k[1] == 'i' ? f->nin : f->nout);
         return 1;
     }
-    char *end;
-    long i = k[0] == 'C' && k[1] >= '0' && k[1] <= '9' ? strtol(k + 1, &end, 10) : -1;
-    if (i < 0 || *end || (k[1] == '0' && k[2])) return 0;
-    int st = pc_map_unit_image(f, (int)i, pcl_newvalue(L, f->nout)->h);
+    int i = pc_map_unit_name(k);
+    if (i < 0) return 0;
+    int st = pc_map_unit_image(f, i, pcl_newvalue(L, f->nout)->h);
     return st != PC_EPOLE && st != PC_EDOMAIN;   /* a point at infinity is its direction */
 }
 

@@ -91,10 +91,22 @@ static void translate_finite(void **state) {
     assert_int_equal(pc_why_find(pc_map_why, "map.translate", st)->arg, 1);
 }
 
+static void unit_names(void **state) {
+    (void)state;
+    assert_int_equal(pc_map_unit_name("C0"), 0);
+    assert_int_equal(pc_map_unit_name("C3"), 3);
+    assert_int_equal(pc_map_unit_name("C12"), 12);
+    assert_int_equal(pc_map_unit_name("C01"), -1);
+    assert_int_equal(pc_map_unit_name("C"), -1);
+    assert_int_equal(pc_map_unit_name("C3x"), -1);
+    assert_int_equal(pc_map_unit_name("D1"), -1);
+    assert_int_equal(pc_map_unit_name("C99999999999999999999"), -1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(same_as_constructors), cmocka_unit_test(statuses_explained),
-        cmocka_unit_test(translate_finite),
+        cmocka_unit_test(translate_finite), cmocka_unit_test(unit_names),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
