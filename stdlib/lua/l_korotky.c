@@ -16,6 +16,7 @@
 #include "pcl_books.h"
 
 #define MAXPTS PC_FERGUSON_MAXN
+#define WHY pc_korotky_why
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
@@ -185,14 +186,13 @@ PCL_BODY(l_elastic, a) {
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
     double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
     pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
-    if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide");
     if (!c && st == PC_EDOMAIN)
         return pcl_fail(L, "length %s is not longer than the polyline through the points", pcl_pushnum(L, len));
     if (!c && st == PC_EDIM && len > 0 && (n == 2 && pieces == 1))
         return pcl_fail(L, "a length needs a free node: two points with one piece are a segment");
     if (!c && st == PC_EDIM)
         return pcl_fail(L, "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
-    pcl_push_made(L, c, &st, "korotky.elastic");
+    pcl_made(L, c, &st, WHY);
     return 1 + pcl_push_results(L, 0, "n", E);
 }
 
@@ -308,7 +308,7 @@ PCL_BODY(l_dome_tri, a) {
     }
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
-    if (!s && st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle ABC is flat in plan");
+    if (!s) pcl_check(L, st, WHY);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 
@@ -424,17 +424,12 @@ PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
     pc_conic_info o;
-    const pc_curve *c = a[0].obj;
     double w[2];
-    if (c && c->ncp == 5 && !pc_conic_line_pair(c->cp, w))   /* the degenerate section AOD of Fig. 3c */
-        return pcl_argfail(L, 1, "must be a 2-D conic arc (one rational quadratic piece) or the coefficients {a, b, c, d, e, f}, got a curve of two pieces");
-    if (c && c->ncp == 5)
+    int st = a[0].obj ? pc_conic_info_arc(a[0].obj, &o, w) : pc_conic_info_coef(a[0].v, &o);
+    if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
         return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: "
                         "its lines meet at W = P(%f, %f)", w[0], w[1]);
-    int st = c ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
-    if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1");
+    pcl_check(L, st, WHY);
     pcl_push_conic_info(L, &o);
     return 1;
 }

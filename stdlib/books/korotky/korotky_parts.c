@@ -88,3 +88,19 @@ const char *pc_meet_planes4_why(int st, int pencil) {
                       : "the planes do not meet (a spanning triple is collinear, or they are parallel)";
     return pc_strerror(st);
 }
+
+int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
+    if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || (c->ncp != 3 && c->ncp != 5)) return PC_EDIM;
+    if (c->ncp == 5) return pc_conic_line_pair(c->cp, w) ? PC_ESAME_LINE : PC_EDIM;
+    return pc_conic_info_rquad(c->cp, out);
+}
+
+const pc_why pc_korotky_why[] = {
+    {"korotky.elastic", PC_ECOINCIDENT, 0, NULL, "two consecutive points coincide"},
+    {"korotky.dome_tri", PC_ECOLLINEAR, 0, NULL, "the triangle ABC is flat in plan"},
+    {"korotky.conic_elements", PC_EDIM, 1, NULL, "must be a 2-D conic arc (one rational quadratic piece) or the "
+     "coefficients {a, b, c, d, e, f}, got a curve of two pieces"},
+    {"korotky.conic_elements", PC_ECOLLINEAR, 0, NULL, "the arc is a straight segment (weight 0): no conic"},
+    {"korotky.conic_elements", PC_EDOMAIN, 0, NULL, "a degenerate conic (a line pair, or no real points)"},
+    {"korotky.conic_elements", PC_ENONFINITE, 1, NULL, "must be finite (it holds a NaN or an infinity)"},
+    {NULL, 0, 0, NULL, NULL}};

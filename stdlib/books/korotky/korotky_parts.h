@@ -8,6 +8,8 @@
 #include "ferguson.h"
 #include "pencils4.h"
 #include "conic_shells.h"
+#include "quadratic.h"
+#include "why.h"
 
 /* pc_poly_spline and pc_poly_spline_curve of the points p (n rows of 2, x increasing): the
  * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
@@ -27,5 +29,15 @@ const char *pc_ferguson_why(int st);
 const char *pc_conic_arc_why(int st);
 const char *pc_conic_revolve_why(int st);
 const char *pc_meet_planes4_why(int st, int pencil);
+
+/* The elements of a 2-D conic arc c: one rational quadratic piece (pc_conic_info_rquad and its
+ * statuses), or the two pieces of korotky.conic_arc with T = W: PC_ESAME_LINE when they are the
+ * line pair U W V (the degenerate section AOD of Fig. 3c), its lines meeting at W (into w), else
+ * PC_EDIM.  PC_EDIM for any other curve. */
+int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]);
+
+/* The explanations of the statuses of the constructions of the korotky table, by the name the
+ * API gives each (why.h). */
+extern const pc_why pc_korotky_why[];
 
 #endif

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 #include "korotky_parts.h"
+#include "conic_surface.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -85,10 +86,41 @@ static void test_why(void **state) {
     assert_string_equal(pc_meet_planes4_why(PC_ENONFINITE, 0), pc_strerror(PC_ENONFINITE));
 }
 
+/* the conic of an arc of korotky.conic_arc: (x - 1)^2 + 4 y^2 = 1 (test_korotky_shells.lua's
+ * ellipse); with T = W the line pair U W V, its lines meeting at W */
+static void test_conic_info_arc(void **state) {
+    (void)state;
+    const double U[2] = {0, 0}, tU[2] = {0, 1}, V[2] = {2, 0}, tV[2] = {0, 1}, T[2] = {1, .5};
+    double w, W[2];
+    int st;
+    pc_curve *c = pc_conic_arc(2, U, tU, V, tV, T, &w, &st);
+    assert_non_null(c);
+    pc_conic_info o;
+    assert_int_equal(pc_conic_info_arc(c, &o, W), PC_OK);
+    assert_int_equal(o.kind, PC_CK_ELLIPSE);
+    NEAR(o.center[0], 1, 1e-12); NEAR(o.center[1], 0, 1e-12);
+    NEAR(o.semi[0], 1, 1e-12); NEAR(o.semi[1], .5, 1e-12);
+    pc_curve_release(c);
+    const double sU[2] = {1, 1}, sV[2] = {1, -1}, Wp[2] = {1, 1};
+    c = pc_conic_arc(2, U, sU, V, sV, Wp, &w, &st);
+    assert_non_null(c);
+    assert_int_equal(pc_conic_info_arc(c, &o, W), PC_ESAME_LINE);
+    NEAR(W[0], 1, 1e-12); NEAR(W[1], 1, 1e-12);
+    pc_curve_release(c);
+    const double cub[12] = {0, 0, 1, 1, 2, 1, 2, 1, 1, 3, 0, 1};   /* a cubic: no conic arc */
+    c = pc_curve_bezier(2, 4, cub, &st);
+    assert_non_null(c);
+    assert_int_equal(pc_conic_info_arc(c, &o, W), PC_EDIM);
+    assert_int_equal(pc_why_find(pc_korotky_why, "korotky.conic_elements", PC_EDIM)->arg, 1);
+    pc_curve_release(c);
+    assert_non_null(strstr(pc_why_find(pc_korotky_why, "korotky.dome_tri", PC_ECOLLINEAR)->text, "flat"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_poly_spline_points), cmocka_unit_test(test_ridge_shell_of),
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
+        cmocka_unit_test(test_conic_info_arc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
