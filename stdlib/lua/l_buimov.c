@@ -268,7 +268,6 @@ PCL_BODY(l_sphere_frame, a) {
     return pcl_push_results(L, 3, "p v v v v", f, f + 3, f + 6, f + 9, f + 12);
 }
 
-/* buimov.det(rows): the determinant of a square matrix (§1.2; the area factor of §1.7.4) */
 static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a square matrix (a list of rows)"}, PCL_END};
 PCL_BODY(l_det, a) {
     if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));

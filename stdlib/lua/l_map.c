@@ -23,7 +23,6 @@ pc_map *pcl_newmap(lua_State *L) {
     luaL_setmetatable(L, REGKEY);
     return f;
 }
-#define newmap pcl_newmap
 
 /* the new map on the stack top (1), or its status explained by the why-table */
 static int made(lua_State *L, int st) {
@@ -37,7 +36,7 @@ static int make(lua_State *L, pc_map_kind kind) {
     PCL_READ(L, a);
     double x[3];
     for (int i = 0; i < 3; i++) x[i] = a[i].s ? a[i].n : a[i].x;
-    return made(L, pc_map_make(newmap(L), kind, x));
+    return made(L, pc_map_make(pcl_newmap(L), kind, x));
 }
 
 static const char *const CONVENTIONS[] = {"row", "column", NULL};   /* index 0: the textbook's rows */
@@ -65,7 +64,6 @@ static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
     return m;
 }
 
-/* affine(src, dst), the __call of the affine table */
 static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 #define POINTSET "a table of points or a simplex"
 static const pcl_arg affine_args[] = {{.name = "source points", .kind = PCL_ANY, .expect = POINTSET},
@@ -76,11 +74,10 @@ PCL_BODY(l_affine, a) {
     if (m < 2) return pcl_argfail(L, 1, "holds %d points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", m);
     if (m != nin + 1) return pcl_argfail(L, 1, "holds %d %d-D points; a map of %d-D needs %d (dimension + 1)", m, nin, nin, nin + 1);
     if (m2 != m) return pcl_argfail(L, 2, "holds %d points, argument #1 %d: they must pair up", m2, m);
-    int st = pc_map_affine_points(newmap(L), nin, nout, src, dst);
+    int st = pc_map_affine_points(pcl_newmap(L), nin, nout, src, dst);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_points_why(st, nin));
 }
 
-/* affine.frame(O, X, Y [, Z ...]): axes given as unit points or as vectors */
 static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), {.name = "X", .kind = PCL_LOC, .flags = PCL_SAMEDIM},
                                      {.name = "Y", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT},
                                      {.name = "Z", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT}, PCL_END};
@@ -99,7 +96,7 @@ static int l_frame(lua_State *L) {
         if (!v->present) break;
         for (int i = 0; i < n; i++) axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);   /* a unit point: X - O */
     }
-    pc_map_frame(newmap(L), n, k, a[0].v, axes);
+    pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes);
     return 1;
 }
 
@@ -117,12 +114,12 @@ PCL_BODY(l_matrix_ctor, a) {
                            "(\"row\": n + 1 rows of m + 1), n and m 1..%d", nr, PC_MAXDIM);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, 0, m, &nr, &nc);
-    return made(L, pc_map_from_matrix(newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec));
+    return made(L, pc_map_from_matrix(pcl_newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec));
 }
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
 PCL_BODY(l_translate, a) {
-    return made(L, pc_map_translate_finite(newmap(L), a[0].n, a[0].v));
+    return made(L, pc_map_translate_finite(pcl_newmap(L), a[0].n, a[0].v));
 }
 
 static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = "a number or a list of numbers {kx, ky, ...}"},
@@ -149,7 +146,7 @@ PCL_BODY(l_scale, a) {
     } else {
         return pcl_argfail(L, 1, "must be a number or a list of numbers {kx, ky, ...}, got %s", pcl_shown(L, 1));
     }
-    pc_map_scale(newmap(L), n, k, c.present ? c.v : NULL);
+    pc_map_scale(pcl_newmap(L), n, k, c.present ? c.v : NULL);
     return 1;
 }
 
@@ -171,7 +168,7 @@ PCL_BODY(l_rotate, a) {
         pcl_readone(L, 3, 3, 0, &angle, 0, &t);
         double d[3];
         for (int i = 0; i < 3; i++) d[i] = B.v[i] - (is_dir ? 0 : A.v[i]);
-        int st = pc_map_rotate3(newmap(L), A.v, d, t.x);
+        int st = pc_map_rotate3(pcl_newmap(L), A.v, d, t.x);
         if (st == PC_EZERO)
             return pcl_fail(L, "%s", is_dir ? "argument #2 (direction) is the zero vector, which gives no axis"
                                             : "the axis points A and B coincide, so they give no axis");
@@ -185,13 +182,13 @@ PCL_BODY(l_rotate, a) {
             return pcl_argfail(L, 2, "must be 2-D, got %d-D (a rotation in space is map.rotate(A, B or direction, angle))", p->n);
         pcl_readone(L, 2, 2, 0, &centre, 0, &B);
     }
-    pc_map_rotate2(newmap(L), t.x, B.present ? B.v : NULL);
+    pc_map_rotate2(pcl_newmap(L), t.x, B.present ? B.v : NULL);
     return 1;
 }
 
 static const pcl_arg reflect_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("normal"), PCL_END};
 PCL_BODY(l_reflect, a) {
-    return made(L, pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v));
+    return made(L, pc_map_reflect(pcl_newmap(L), a[0].n, a[0].v, a[1].v));
 }
 
 /* Argument #k, an axis: 1..n or "x", "y", "z", "w"; returns it 0-based. */
@@ -208,7 +205,7 @@ static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .ki
 PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
     if (i == j) return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
-    pc_map_shear(newmap(L), n, i, j, a[3].x);
+    pc_map_shear(pcl_newmap(L), n, i, j, a[3].x);
     return 1;
 }
 
@@ -231,7 +228,7 @@ static int l_perspective_pqr(lua_State *L) { return make(L, PC_MM_PERSPECTIVE_PQ
 
 static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
 PCL_BODY(l_perspective, a) {
-    int st = pc_map_perspective(newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
+    int st = pc_map_perspective(pcl_newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
 }
 
@@ -245,7 +242,7 @@ PCL_BODY(l_foreshortening, a) {
 }
 
 PCL_BODY(l_axial_affinity, a) {
-    return made(L, pc_map_axial_affinity(newmap(L), a[0].v, a[1].v, a[2].v, a[3].x));
+    return made(L, pc_map_axial_affinity(pcl_newmap(L), a[0].v, a[1].v, a[2].v, a[3].x));
 }
 
 static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
@@ -278,9 +275,6 @@ static int read_input(lua_State *L, const pc_map *f, int first, int last, double
     return 1;
 }
 
-/* the image by the one weight rule (map_text.c) */
-#define image pc_map_image_rule
-
 static int pole_error(lua_State *L) {
     return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
 }
@@ -300,17 +294,16 @@ static int l_apply(lua_State *L) {
     double in[PC_MAXDIM + 1];
     read_input(L, f, 2, lua_gettop(L), in);
     pcl_value *r = pcl_newvalue(L, f->nout);
-    if (image(f, in, r->h) == PC_EPOLE) return pole_error(L);
+    if (pc_map_image_rule(f, in, r->h) == PC_EPOLE) return pole_error(L);
     return 1;
 }
 
-/* f:xy(p) or f:xy(x, y, ...): the coordinates of the image point as numbers. */
 static int l_xy(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
     double in[PC_MAXDIM + 1], out[PC_MAXDIM + 1];
     if (!read_input(L, f, 2, lua_gettop(L), in) && in[f->nin] != 1)
         return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[f->nin]));
-    int st = image(f, in, out);
+    int st = pc_map_image_rule(f, in, out);
     if (st == PC_EPOLE) return pole_error(L);
     if (st == PC_IMPROPER || out[f->nout] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
@@ -321,7 +314,7 @@ static int l_xy(lua_State *L) {
 }
 
 static int compose(lua_State *L, pc_map *f, pc_map *g) {
-    if (pc_map_compose(f, g, newmap(L)) != PC_OK)
+    if (pc_map_compose(f, g, pcl_newmap(L)) != PC_OK)
         return pcl_error(L, "cannot compose: the first map applied gives %d-D, the second takes %d-D", g->nout, f->nin);
     return 1;
 }
@@ -342,7 +335,7 @@ PCL_METHOD(l_compose, pc_map *f, a) {
 
 static int l_inverse(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
-    int st = pc_map_inverse(f, newmap(L));
+    int st = pc_map_inverse(f, pcl_newmap(L));
     if (st == PC_EDIM) return pcl_fail(L, "a map from %d-D to %d-D (a projection or an embedding) has no inverse", f->nin, f->nout);
     return made(L, st);
 }
@@ -375,7 +368,6 @@ static int l_vanishing(lua_State *L) {
     return 3;
 }
 
-/* f:show([convention]): print the matrix with its convention, columns aligned. */
 PCL_METHOD(l_show, pc_map *f, v) {
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 20 + 128];
     pc_map_show(f, v[0].n == 0, text, sizeof text);
