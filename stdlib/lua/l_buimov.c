@@ -268,19 +268,17 @@ PCL_BODY(l_sphere_frame, a) {
     return pcl_push_results(L, 3, "p v v v v", f, f + 3, f + 6, f + 9, f + 12);
 }
 
-static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a square matrix (a list of rows)"}, PCL_END};
+static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a square matrix (a list of rows)"}, PCL_END};
 PCL_BODY(l_det, a) {
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1), nc;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, n, m, &n, &nc);   /* square: as many numbers a row as rows */
     return pcl_push_results(L, 0, "n", pc_det(n, m));
 }
 
-static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_ANY, .expect = "a list of maps from 3-D to 2-D"},
+static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_TABLE, .expect = "a list of maps from 3-D to 2-D"},
                                            A_POINTS("images", 2, 2, 64), PCL_END};
 PCL_BODY(l_reconstruct, a) {
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of maps from 3-D to 2-D, got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1);
     if (n < 2 || n > 64) return pcl_argfail(L, 1, "must hold 2 to 64 views, got %d", n);
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold one point per view (%d), got %d", n, a[1].n);

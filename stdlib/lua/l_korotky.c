@@ -37,10 +37,10 @@ static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return tangent_at(L, idx, out->v);
 }
 #define TANGENT "a slope or a 2-D vector"
+#define TANGENTS {.name = "tangents", .kind = PCL_TABLE, .expect = "a list of slopes or 2-D vectors"}
 
 /* The n tangents of argument #k (a list, one per point) into T. */
 static void tangents(lua_State *L, int k, const pcl_val *v, int n, double *T) {
-    if (!lua_istable(L, v->idx)) pcl_argfail(L, k, "must be a list of slopes or 2-D vectors, got %s", pcl_shown(L, v->idx));
     int m = (int)luaL_len(L, v->idx);
     if (m != n) pcl_argfail(L, k, "must hold one tangent per point (%d), got %d", n, m);
     for (int i = 1; i <= n; i++) {
@@ -87,7 +87,7 @@ PCL_BODY(l_poly_spline, a) {
 
 /* ---- Ferguson splines --------------------------------------------------------------------- */
 
-static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
+static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
 PCL_BODY(l_ferguson, a) {
     double T[2 * MAXPTS];
@@ -124,7 +124,7 @@ PCL_BODY(l_ferguson_lambda, a) {
 
 static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"),
                                         {.name = "start", .kind = PCL_NUMBERS, .hi = 2 * MAXPTS, .shown = "{...}"}, PCL_END};
-static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
+static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
 PCL_BODY(l_ferguson_tangents, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS];
@@ -142,7 +142,7 @@ PCL_BODY(l_ferguson_tangents, a) {
 }
 
 static const char *const ROOTS[] = {"min", "max", NULL};
-static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL), A_NUM("wA"),
+static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"),
                                      A_POSNUM("z1"), {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS},
                                      PCL_END};
 PCL_BODY(l_ferguson_substitution, a) {

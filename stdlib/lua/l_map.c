@@ -105,9 +105,8 @@ static int l_identity(lua_State *L) { return make(L, PC_MM_IDENTITY); }
 
 /* ---- the constructors of the map table ------------------------------------------------------ */
 
-static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
+static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
 PCL_BODY(l_matrix_ctor, a) {
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a table of rows (tables of numbers), got %s", pcl_shown(L, 1));
     int rowvec = a[1].n == 0, nr = (int)luaL_len(L, 1), nc = 0;
     if (nr < 2 || nr > PC_MAXDIM + 1)
         return pcl_argfail(L, 1, "holds %d rows; a map of n-D to m-D takes (m + 1) rows of n + 1 numbers "
@@ -417,12 +416,12 @@ static const pcl_fn methods[] = {
     METHODSIG("f:xy", l_xy, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
     METHOD("f:is_affine", l_is_affine, NULL, "boolean", "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors."), METHOD("f:vanishing_points", l_vanishing, NULL, "Vx, Vy, Vz", "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity."),
     METHOD("f:show", l_show, conv_arg, NULL, "Print the matrix with its convention named and the columns aligned."), PCL_END};
-static const pcl_fn apply[] = {{.name = "f", .fn = l_apply, .self = self_map, .selftype = "map", .key = "__call",
-                                .topic = "f(p)", .callname = 1,
-                                .sig = "f(p) | f(x, y, ...) -> value", .help = "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector."}, PCL_END};
-static const pcl_fn affine_call[] = {{.name = "affine", .fn = l_affine, .args = affine_args, .result = "f", .self = self_table,
-                                      .selftype = "table", .key = "__call",
-                                      .sig = "affine({A, B, C}, {A2, B2, C2}) -> f", .help = "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension)."}, PCL_END};
+static const pcl_fn apply[] = {
+    {.name = "f", .fn = l_apply, .self = self_map, .selftype = "map", .key = "__call", .topic = "f(p)", .callname = 1, .sig = "f(p) | f(x, y, ...) -> value", .help = "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector."},
+    PCL_END};
+static const pcl_fn affine_call[] = {
+    {.name = "affine", .fn = l_affine, .args = affine_args, .result = "f", .self = self_table, .selftype = "table", .key = "__call", .sig = "affine({A, B, C}, {A2, B2, C2}) -> f", .help = "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension)."},
+    PCL_END};
 static const pcl_fn affine_fns[] = {
     {.name = "affine.frame", .fn = l_frame, .args = frame_args, .sig = "affine.frame(O, X, Y [, Z]) -> f", .help = "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors."},
     PCL_FN("affine.identity", l_identity, dim_arg, "f", "The identity map of n-space."), PCL_END};
