@@ -401,20 +401,14 @@ PCL_BODY(l_ridge_shell, a) {
 
 /* a 2-D conic arc (a rational quadratic Bezier curve, out->obj) or six finite numbers (out->v) */
 static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
     /* an arc, or the line pair of korotky.conic_arc with T = W (two quadratic pieces, told
      * apart in l_conic_elements) */
     if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
-    for (int i = 0; i < 6; i++) {
-        lua_geti(L, idx, i + 1);
-        out->v[i] = lua_tonumber(L, -1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(out->v[i]))
-            pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
-        lua_pop(L, 1);
-    }
+    pcl_val coef = {.list = out->v, .cap = 6};
+    pcl_readone(L, idx, 1, 0, &(const pcl_arg){.name = a->name, .kind = PCL_NUMBERS, .lo = 6, .hi = 6}, 0, &coef);
     return 1;
 }
 static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .kind = PCL_ANY, .read = read_conic,
