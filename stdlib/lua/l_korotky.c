@@ -32,8 +32,7 @@ static int tangent_at(lua_State *L, int idx, double *t) {
     t[0] = v->h[0], t[1] = v->h[1];
     return 1;
 }
-static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     return tangent_at(L, idx, out->v);
 }
 #define TANGENT "a slope or a 2-D vector"
@@ -108,18 +107,14 @@ static const pcl_arg lambda_keys[] = {
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
 PCL_BODY(l_ferguson_lambda, a) {
-    double *p = a[0].list, dout[2 * MAXPTS], din[2 * MAXPTS];
-    int n = a[0].n;
-    double *TA = a[2].v, *TE = a[3].v, lA = hypot(TA[0], TA[1]), lE = hypot(TE[0], TE[1]);
-    if (!(lA > 0) || !(lE > 0)) return pcl_fail(L, "the end tangents must not be zero vectors");
-    for (int k = 0; k < 2; k++) TA[k] *= a[4].x / lA, TE[k] *= a[5].x / lE;
+    int n = a[0].n, bad = -1, st;
     if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
     need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
-    int bad = -1, st = pc_ferguson_lambda(2, n, p, TA, TE, a[6].list, dout, din, &bad);
-    if (st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
-    if (st != PC_OK) return knot_error(L, st, bad);
-    pcl_push_made(L, pc_curve_hermite(2, n, p, dout, din, NULL, 0, &st), &st, "korotky.ferguson_lambda");
-    return 1;
+    pc_curve *c = pc_ferguson_lambda_curve(n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, a[6].list, &bad, &st);
+    if (!c && st == PC_EZERO) return pcl_fail(L, "the end tangents must not be zero vectors");
+    if (!c && st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
+    if (!c) return knot_error(L, st, bad);
+    return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
 }
 
 static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"),
@@ -137,8 +132,7 @@ PCL_BODY(l_ferguson_tangents, a) {
     int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
-    pcl_push_numbers(L, 2 * n - 2, mags);
-    return 2;
+    return 1 + pcl_push_results(L, 0, "N", 2 * n - 2, mags);
 }
 
 static const char *const ROOTS[] = {"min", "max", NULL};
@@ -162,8 +156,7 @@ PCL_BODY(l_ferguson_substitution, a) {
 /* ---- the elastic reference and the measures ------------------------------------------------ */
 
 /* ends = {tangent at the first point, tangent at the last}: their angles into out->v */
-static int read_ends(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_ends(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 2) return 0;
     for (int i = 0; i < 2; i++) {
         double t[2];
@@ -280,15 +273,13 @@ PCL_BODY(l_dome_rect, a) {
 }
 
 /* A corner of the triangle: a 2-D point (z = 0) or a 3-D one. */
-static int read_corner(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_corner(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     out->v[2] = 0;
     return v && (v->n == 2 || v->n == 3) && pc_loc(v->n, v->h, out->v) == PC_OK;
 }
 /* The height h, or the apex D (a 3-D point) the dome passes through. */
-static int read_height(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     out->x = lua_tonumber(L, idx);
     out->n = v ? 3 : 0;
@@ -330,7 +321,6 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 
 /* a pencil: three 4-D points, vectors or curves (the table in the argument keeps them alive) */
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
     pc_pencil_point *g = (pc_pencil_point *)out->list;
     static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4, .lo = 1};

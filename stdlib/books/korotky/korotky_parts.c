@@ -89,6 +89,20 @@ const char *pc_meet_planes4_why(int st, int pencil) {
     return pc_strerror(st);
 }
 
+pc_curve *pc_ferguson_lambda_curve(int n, const double *p, const double tA[2], const double tE[2], double wA,
+                                   double wE, const double *lambda, int *bad, int *status) {
+    double lA = hypot(tA[0], tA[1]), lE = hypot(tE[0], tE[1]), dA[2], dE[2];
+    double dout[2 * PC_FERGUSON_MAXN], din[2 * PC_FERGUSON_MAXN];
+    if (!(lA > 0) || !(lE > 0)) {
+        *status = PC_EZERO;
+        return NULL;
+    }
+    for (int k = 0; k < 2; k++) dA[k] = tA[k] * wA / lA, dE[k] = tE[k] * wE / lE;
+    if (n > PC_FERGUSON_MAXN) *status = PC_EDIM;
+    else *status = pc_ferguson_lambda(2, n, p, dA, dE, lambda, dout, din, bad);
+    return *status == PC_OK ? pc_curve_hermite(2, n, p, dout, din, NULL, 0, status) : NULL;
+}
+
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
     if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || (c->ncp != 3 && c->ncp != 5)) return PC_EDIM;
     if (c->ncp == 5) return pc_conic_line_pair(c->cp, w) ? PC_ESAME_LINE : PC_EDIM;

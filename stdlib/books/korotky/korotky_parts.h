@@ -15,6 +15,12 @@
  * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status);
+/* The Ferguson spline of system (22) through the n points p (rows of 2) with the unit end
+ * tangents tA, tE scaled to the moduli wA, wE and the n - 2 ratios lambda: pc_ferguson_lambda's
+ * Hermite segments as a curve (NULL: *status and *bad as pc_ferguson_lambda; PC_EZERO for a
+ * zero end tangent). */
+pc_curve *pc_ferguson_lambda_curve(int n, const double *p, const double tA[2], const double tE[2], double wA,
+                                   double wE, const double *lambda, int *bad, int *status);
 /* pc_surface_ridge_shell of the guides U, R, V, T1, T2, P, H, Q in that order, each a 3-D
  * curve or (c NULL) the fixed homogeneous point h[0..3] (a constant curve). */
 pc_surface *pc_surface_ridge_shell_of(const pc_pencil_point g[8], double *bad_u, int *status);

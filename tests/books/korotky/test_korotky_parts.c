@@ -116,11 +116,33 @@ static void test_conic_info_arc(void **state) {
     assert_non_null(strstr(pc_why_find(pc_korotky_why, "korotky.dome_tri", PC_ECOLLINEAR)->text, "flat"));
 }
 
+/* system (22) with the end tangents as directions scaled to the moduli: two points are one
+ * Hermite segment with the end derivatives w_A t_A / |t_A| and w_E t_E / |t_E| */
+static void test_ferguson_lambda_curve(void **state) {
+    (void)state;
+    const double p[4] = {0, 0, 1, 0}, tA[2] = {2, 0}, tE[2] = {0, 3};
+    int bad = -1, st;
+    pc_curve *c = pc_ferguson_lambda_curve(2, p, tA, tE, 1, 2, NULL, &bad, &st);
+    assert_non_null(c);
+    double d[4];
+    assert_int_equal(pc_curve_derivs(c, c->t0, 1, d), PC_OK);
+    NEAR(d[0], 0, 1e-15); NEAR(d[1], 0, 1e-15); NEAR(d[2], 1, 1e-14); NEAR(d[3], 0, 1e-14);
+    assert_int_equal(pc_curve_derivs(c, c->t1, 1, d), PC_OK);
+    NEAR(d[0], 1, 1e-15); NEAR(d[1], 0, 1e-15); NEAR(d[2], 0, 1e-14); NEAR(d[3], 2, 1e-14);
+    pc_curve_release(c);
+    const double zero[2] = {0, 0}, q[6] = {0, 0, 1, 1, 2, 0}, lam[1] = {-1};
+    assert_null(pc_ferguson_lambda_curve(2, p, zero, tE, 1, 1, NULL, &bad, &st));
+    assert_int_equal(st, PC_EZERO);
+    assert_null(pc_ferguson_lambda_curve(3, q, tA, tE, 1, 1, lam, &bad, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_int_equal(bad, 1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_poly_spline_points), cmocka_unit_test(test_ridge_shell_of),
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
-        cmocka_unit_test(test_conic_info_arc),
+        cmocka_unit_test(test_conic_info_arc), cmocka_unit_test(test_ferguson_lambda_curve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
