@@ -172,12 +172,9 @@ PCL_BODY(l_knots, a) {
 static const pcl_arg basis_args[] = {A_INT("i", 0, 1000000), A_INT("k", 1, PC_CURVE_MAXDEG + 1), A_NUM("t"),
                                      A_NUMBERS("knots", 0, 1000000), PCL_END};
 PCL_BODY(l_basis, a) {
-    int i = (int)a[0].x, k = (int)a[1].x, nq = a[3].n;
-    for (int j = 1; j < nq; j++)
-        if (a[3].list[j] < a[3].list[j - 1]) return pcl_argfail(L, 4, "must not decrease ([%d])", j + 1);
     double N;
-    if (pc_book_basis(a[3].list, nq, i, k, a[2].x, &N) != PC_OK)
-        return pcl_fail(L, "N(i = %d, k = %d) needs the knots q[i] .. q[i + k]: %d knots given", i, k, nq);
+    pc_why_call why;
+    pcl_check(L, pc_book_basis_checked(a[3].list, a[3].n, (int)a[0].x, (int)a[1].x, a[2].x, &N, &why), why.row);
     return pcl_push_results(L, 0, "n", N);
 }
 
@@ -225,17 +222,11 @@ static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choice
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
 PCL_BODY(l_spline, a) {
-    int n = a[0].n, d = a[0].dim, st, have_d = a[3].present + a[4].present;
+    int n = a[0].n, d = a[0].dim, st;
     pc_book_ends ends = (pc_book_ends)a[2].n;
-    if (!a[2].present && have_d == 2) ends = PC_BOOK_CLAMPED;   /* tangents given without ends: clamped */
-    if (ends == PC_BOOK_CLAMPED && have_d < 2) return pcl_fail(L, "clamped ends need both end tangents d0 and d1");
-    if ((ends == PC_BOOK_CYCLIC || ends == PC_BOOK_ANTICYCLIC) && n < 4)
-        return pcl_fail(L, "cyclic and anticyclic ends need at least 4 points, got %d", n);
-    if (a[6].present && a[5].present) return pcl_fail(L, "give the parameter as param or as lengths, not both");
-    if (a[6].present && a[6].n != n - 1)
-        return pcl_keyfail(L, "lengths", "must hold %d segment lengths (one per segment), got %d", n - 1, a[6].n);
-    for (int i = 0; a[6].present && i < n - 1; i++)
-        if (!(a[6].list[i] > 0)) return pcl_keyfail(L, "lengths", "[%d] must be a positive length, got %s", i + 1, pcl_pushnum(L, a[6].list[i]));
+    pc_why_call why;
+    pcl_check(L, pc_book_spline_check(n, &ends, a[2].present, a[3].present + a[4].present, a[5].present,
+                                      a[6].present ? a[6].n : -1, a[6].list, &why), why.row);
     double *tg = lua_newuserdatauv(L, sizeof(double) * (size_t)n * d, 0);
     pc_curve *c = a[6].present ? pc_curve_book_spline_tl(d, n, a[0].list, a[6].list, ends, a[3].v, a[4].v, tg, &st)
                                : pc_curve_book_spline(d, n, a[0].list, a[5].n, ends, a[3].v, a[4].v, tg, &st);

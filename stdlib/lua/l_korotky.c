@@ -179,13 +179,9 @@ PCL_BODY(l_elastic, a) {
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
     double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
     pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
-    if (!c && st == PC_EDOMAIN)
-        return pcl_fail(L, "length %s is not longer than the polyline through the points", pcl_pushnum(L, len));
-    if (!c && st == PC_EDIM && len > 0 && (n == 2 && pieces == 1))
-        return pcl_fail(L, "a length needs a free node: two points with one piece are a segment");
-    if (!c && st == PC_EDIM)
-        return pcl_fail(L, "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
-    pcl_made(L, c, &st, WHY);
+    pc_why_call why;
+    if (!c) pcl_check(L, pc_elastic_explain(st, n, pieces, len, &why), why.row);
+    pcl_push_made(L, c, &st, "korotky.elastic");
     return 1 + pcl_push_results(L, 0, "n", E);
 }
 
@@ -223,16 +219,9 @@ static const pcl_arg slope_args[] = {A_POINTS("samples", 2, 3, 0), A_NUM("x"),
                                      {.name = "window", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_graphical_slope, a) {
     int n = a[0].n, wn = a[2].present ? (int)a[2].x : n >= 7 ? 7 : n % 2 ? n : n - 1;
-    const double *xy = a[0].list;
-    if (wn < 3 || wn > n) return pcl_argfail(L, 3, "must be an integer 3 to %d, got %d", n, wn);
-    for (int i = 1; i < n; i++)
-        if (!(xy[2 * i] > xy[2 * i - 2])) return pcl_argfail(L, 1, "[%d] must lie right of the sample before (x must increase)", i + 1);
     double m;
-    int st = pc_graphical_slope(n, xy, a[1].x, wn, &m);
-    if (st == PC_EDOMAIN)
-        return pcl_argfail(L, 2, "must lie within the samples [%s, %s], got %s", pcl_pushnum(L, xy[0]),
-                           pcl_pushnum(L, xy[2 * n - 2]), pcl_pushnum(L, a[1].x));
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1 (samples)");
+    pc_why_call why;
+    pcl_check(L, pc_graphical_slope_checked(n, a[0].list, a[1].x, wn, &m, &why), why.row);
     return pcl_push_results(L, 0, "n n", m, atan(m) * 180 / M_PI);
 }
 

@@ -2,6 +2,8 @@
 #include <math.h>
 #include <string.h>
 #include "korotky_parts.h"
+#include "graphdiff.h"
+#include "names.h"
 
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status) {
@@ -109,8 +111,39 @@ int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
     return pc_conic_info_rquad(c->cp, out);
 }
 
+int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {
+    const char *op = "korotky.elastic";
+    char num[40];
+    if (st == PC_ECOINCIDENT) return pc_why_call_set(w, op, st, 0, NULL, "two consecutive points coincide");
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 0, NULL, "length %s is not longer than the polyline through the points",
+                               pc_num_text(len, num, sizeof num));
+    if (st == PC_EDIM && len > 0 && n == 2 && pieces == 1)
+        return pc_why_call_set(w, op, st, 0, NULL, "a length needs a free node: two points with one piece are a segment");
+    if (st == PC_EDIM)
+        return pc_why_call_set(w, op, st, 0, NULL,
+                               "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+}
+
+int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w) {
+    const char *op = "korotky.graphical_slope";
+    char lo[40], hi[40], at[40];
+    if (window < 3 || window > n)
+        return pc_why_call_set(w, op, PC_EDIM, 3, NULL, "must be an integer 3 to %d, got %d", n, window);
+    for (int i = 1; i < n; i++)
+        if (!(xy[2 * i] > xy[2 * i - 2]))
+            return pc_why_call_set(w, op, PC_EDOMAIN, 1, NULL, "[%d] must lie right of the sample before (x must increase)",
+                                   i + 1);
+    int st = pc_graphical_slope(n, xy, x, window, slope);
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 2, NULL, "must lie within the samples [%s, %s], got %s",
+                               pc_num_text(xy[0], lo, sizeof lo), pc_num_text(xy[2 * n - 2], hi, sizeof hi),
+                               pc_num_text(x, at, sizeof at));
+    return pc_why_call_set(w, op, st, 1, NULL, "(%s)", pc_strerror(st));
+}
+
 const pc_why pc_korotky_why[] = {
-    {"korotky.elastic", PC_ECOINCIDENT, 0, NULL, "two consecutive points coincide"},
     {"korotky.dome_tri", PC_ECOLLINEAR, 0, NULL, "the triangle ABC is flat in plan"},
     {"korotky.conic_elements", PC_EDIM, 1, NULL, "must be a 2-D conic arc (one rational quadratic piece) or the "
      "coefficients {a, b, c, d, e, f}, got a curve of two pieces"},

@@ -9,7 +9,7 @@
 #include "pencils4.h"
 #include "conic_shells.h"
 #include "quadratic.h"
-#include "why.h"
+#include "why_call.h"
 
 /* pc_poly_spline and pc_poly_spline_curve of the points p (n rows of 2, x increasing): the
  * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
@@ -41,6 +41,14 @@ const char *pc_meet_planes4_why(int st, int pencil);
  * line pair U W V (the degenerate section AOD of Fig. 3c), its lines meeting at W (into w), else
  * PC_EDIM.  PC_EDIM for any other curve. */
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]);
+
+/* The failure st of pc_elastic_length for n points, pieces per span (0: as the points allow)
+ * and the length len (0: free), explained in w (korotky.elastic; an empty table for a status
+ * it does not explain); returns st. */
+int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
+/* pc_graphical_slope with its conditions explained in w (korotky.graphical_slope): the window
+ * 3..n, the x increasing, x within the samples. */
+int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);
 
 /* The explanations of the statuses of the constructions of the korotky table, by the name the
  * API gives each (why.h). */

@@ -9,6 +9,7 @@
 #include "buimov_why.h"
 #include "plane_curves.h"
 #include "buimov.h"
+#include "buimov_parts.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -71,10 +72,50 @@ static void conic_coef_by_kind(void **state) {
     assert_non_null(strstr(why("plane.conic_coef", PC_EDOMAIN), "semi-axes"));
 }
 
+/* the conditions of buimov.spline's options, in the order the messages come */
+static void spline_options(void **state) {
+    (void)state;
+    pc_why_call w;
+    pc_book_ends e = PC_BOOK_NATURAL;
+    double len[3] = {1, 2, 3}, bad[3] = {1, 0, 2};
+    assert_int_equal(pc_book_spline_check(4, &e, 0, 2, 0, -1, NULL, &w), PC_OK);
+    assert_int_equal(e, PC_BOOK_CLAMPED);                        /* tangents without ends */
+    e = PC_BOOK_CLAMPED;
+    assert_int_equal(pc_book_spline_check(4, &e, 1, 1, 0, -1, NULL, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "clamped ends need both end tangents d0 and d1");
+    e = PC_BOOK_CYCLIC;
+    assert_int_equal(pc_book_spline_check(3, &e, 1, 0, 0, -1, NULL, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "cyclic and anticyclic ends need at least 4 points, got 3");
+    e = PC_BOOK_NATURAL;
+    assert_int_equal(pc_book_spline_check(4, &e, 0, 0, 1, 3, len, &w), PC_EDOMAIN);
+    assert_non_null(strstr(w.row[0].text, "not both"));
+    assert_int_equal(pc_book_spline_check(4, &e, 0, 0, 0, 2, len, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].key, "lengths");
+    assert_string_equal(w.row[0].text, "must hold 3 segment lengths (one per segment), got 2");
+    assert_int_equal(pc_book_spline_check(4, &e, 0, 0, 0, 3, bad, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "[2] must be a positive length, got 0");
+    assert_int_equal(pc_book_spline_check(4, &e, 0, 0, 0, 3, len, &w), PC_OK);
+    assert_int_equal(e, PC_BOOK_NATURAL);
+}
+
+static void basis_checked(void **state) {
+    (void)state;
+    pc_why_call w;
+    double q[6] = {0, 0, 1, 2, 3, 3}, N;
+    assert_int_equal(pc_book_basis_checked(q, 6, 0, 2, 0.5, &N, &w), PC_OK);
+    NEAR(N, 0.5, 1e-15);                                          /* the hat on [0, 1]: 1 - t */
+    assert_int_equal(pc_book_basis_checked(q, 6, 4, 2, 0.5, &N, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "N(i = 4, k = 2) needs the knots q[i] .. q[i + k]: 6 knots given");
+    double down[3] = {0, 1, 0};
+    assert_int_equal(pc_book_basis_checked(down, 3, 0, 2, 0.5, &N, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 4);
+    assert_string_equal(w.row[0].text, "must not decrease ([3])");
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_explained), cmocka_unit_test(curves_explained),
-        cmocka_unit_test(conic_coef_by_kind),
+        cmocka_unit_test(conic_coef_by_kind), cmocka_unit_test(spline_options), cmocka_unit_test(basis_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

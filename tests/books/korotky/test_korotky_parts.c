@@ -138,11 +138,41 @@ static void test_ferguson_lambda_curve(void **state) {
     assert_int_equal(bad, 1);
 }
 
+/* the elastic reference's failures and the graphical slope's conditions, with their values */
+static void test_explained(void **state) {
+    (void)state;
+    pc_why_call w;
+    assert_int_equal(pc_elastic_explain(PC_EDOMAIN, 3, 0, 1.5, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "length 1.5 is not longer than the polyline through the points");
+    pc_elastic_explain(PC_EDIM, 2, 1, 3, &w);
+    assert_non_null(strstr(w.row[0].text, "a length needs a free node"));
+    pc_elastic_explain(PC_EDIM, 9, 4, 0, &w);
+    assert_string_equal(w.row[0].text, "9 points with 4 pieces per span are too many unknowns; use fewer pieces");
+    pc_elastic_explain(PC_ENOMEM, 9, 4, 0, &w);
+    assert_null(pc_why_find(w.row, "korotky.elastic", PC_ENOMEM));
+    /* y = x^2 sampled: the slope 2x at x = 1.5 from the parabola through the window */
+    const double xy[10] = {0, 0, 1, 1, 2, 4, 3, 9, 4, 16};
+    double m;
+    assert_int_equal(pc_graphical_slope_checked(5, xy, 1.5, 5, &m, &w), PC_OK);
+    NEAR(m, 3, 1e-12);
+    assert_int_equal(pc_graphical_slope_checked(5, xy, 1.5, 7, &m, &w), PC_EDIM);
+    assert_int_equal(w.row[0].arg, 3);
+    assert_string_equal(w.row[0].text, "must be an integer 3 to 5, got 7");
+    assert_int_equal(pc_graphical_slope_checked(5, xy, 9, 5, &m, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 2);
+    assert_string_equal(w.row[0].text, "must lie within the samples [0, 4], got 9");
+    const double back[6] = {0, 0, 2, 1, 1, 2};
+    assert_int_equal(pc_graphical_slope_checked(3, back, 1, 3, &m, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 1);
+    assert_non_null(strstr(w.row[0].text, "[3] must lie right of the sample before"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_poly_spline_points), cmocka_unit_test(test_ridge_shell_of),
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
         cmocka_unit_test(test_conic_info_arc), cmocka_unit_test(test_ferguson_lambda_curve),
+        cmocka_unit_test(test_explained),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
