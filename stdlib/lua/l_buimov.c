@@ -49,13 +49,9 @@ PCL_BODY(l_arc3, a) {
 
 static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
 PCL_BODY(l_circle2r, a) {
-    double *A = a[0].v, *B = a[1].v, r = a[2].x;
     pc_circle_eq c[2];
-    int st = pc_circle2r(A, B, r, c);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the points are %s apart, farther than the diameter 2r = %s",
-                        pcl_pushnum(L, hypot(B[0] - A[0], B[1] - A[1])), pcl_pushnum(L, 2 * r));
-    pcl_check(L, st, WHY);
+    pc_why_call why;
+    pcl_check(L, pc_circle2r_checked(a[0].v, a[1].v, a[2].x, c, &why), why.row);
     push_circle(L, &c[0]);
     push_circle(L, &c[1]);
     return 2;
@@ -65,9 +61,9 @@ static const pcl_arg slopes_args[] = {A_POINT("A", 2), A_NUM("m1"), A_NUM("x_end
 PCL_BODY(l_circle_slopes, a) {
     double *A = a[0].v, m1 = a[1].x, xe = a[2].x, ends[4];
     pc_circle_eq c[2];
-    int n, st = pc_circle_slopes(A, m1, xe, a[3].x, c, ends, &n);
-    if (st == PC_EDOMAIN && xe == A[0]) return pcl_argfail(L, 3, "equals the abscissa of A");
-    pcl_check(L, st, WHY);
+    pc_why_call why;
+    int n, st;
+    pcl_check(L, pc_circle_slopes_checked(A, m1, xe, a[3].x, c, ends, &n, &why), why.row);
     double dir[2] = {xe > A[0] ? 1 : -1, xe > A[0] ? m1 : -m1};
     for (int i = 0; i < n; i++) {
         push_circle(L, &c[i]);
@@ -100,14 +96,12 @@ PCL_BODY(l_conic_value, a) {
     return pcl_push_results(L, 0, "n", pc_conic_value(a[0].list, a[1].v[0], a[1].v[1]));
 }
 
-static const char *const coef_kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
-static const pcl_arg coef_args[] = {A_ENUM("kind", coef_kinds), A_POINT("centre", 2), A_NUM("A"),
+static const pcl_arg coef_args[] = {A_ENUM("kind", pc_conic_coef_kinds), A_POINT("centre", 2), A_NUM("A"),
                                     {.name = "B", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_conic_coef, a) {
     double out[6];
-    if (a[0].n != 2 && !a[3].present)
-        return pcl_argfail(L, 4, "must be a finite number (the %s's second semi-axis), got nil", a[0].s);
-    pcl_check(L, pc_conic_coef(a[0].n, a[1].v, a[2].x, a[3].x, out), WHY);
+    pc_why_call why;
+    pcl_check(L, pc_conic_coef_checked(a[0].n, a[1].v, a[2].x, a[3].present, a[3].x, out, &why), why.row);
     return pcl_push_results(L, 0, "N", 6, out);
 }
 
@@ -131,19 +125,16 @@ PCL_BODY(l_hyperbola, a) {
     return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
 }
 
-static const char *const point_kinds[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
-static const char *const point_methods[] = {"param", "recurrence", "rational", "explicit", NULL};
 static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, {.name = "B", .kind = PCL_NUMBER, .flags = PCL_POS},
                                       {.name = "step", .kind = PCL_NUMBER, .flags = PCL_REQ},
                                       {.name = "n", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 0, .hi = 1000000},
-                                      {.name = "method", .kind = PCL_ENUM, .choices = point_methods}, PCL_END};
-static const pcl_arg points_args[] = {A_ENUM("kind", point_kinds), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
+                                      {.name = "method", .kind = PCL_ENUM, .choices = pc_gen_method_names}, PCL_END};
+static const pcl_arg points_args[] = {A_ENUM("kind", pc_gen_kind_names), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
 PCL_BODY(l_points, a) {
-    int kind = a[0].n, method = a[6].n, n = (int)a[5].x;
-    if ((kind == 1 || kind >= 3) && !a[3].present) return pcl_keyfail(L, "B", "must be a positive number (the %s's), got nil", a[0].s);
-    if (method >= 2 && kind != 0) return pcl_fail(L, "the %s method is the circle's only", a[6].s);
+    int n = (int)a[5].x;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
-    pcl_check(L, pc_conic_points((pc_gen_kind)kind, (pc_gen_method)method, a[2].x, a[3].x, a[4].x, n, xy), WHY);
+    pc_why_call why;
+    pcl_check(L, pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why), why.row);
     return pcl_push_results(L, 2, "P", n + 1, xy);
 }
 

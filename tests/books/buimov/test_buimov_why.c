@@ -27,8 +27,19 @@ static void circles_explained(void **state) {
     int n;
     assert_string_equal(why("plane.circle3", pc_circle3(a, a, b, c)), "two of the points coincide");
     assert_non_null(strstr(why("plane.circle3", pc_circle3(a, m, b, c)), "lie on one line"));
-    assert_non_null(strstr(why("plane.circle2r", pc_circle2r(a, a, 1, c)), "coincide"));
-    assert_non_null(strstr(why("plane.circle_slopes", pc_circle_slopes(a, 0, 3, 0, c, ends, &n)), "no circle"));
+    pc_why_call w;
+    assert_int_equal(pc_circle2r_checked(a, a, 1, c, &w), PC_ECOINCIDENT);
+    assert_non_null(strstr(w.row[0].text, "coincide"));
+    assert_int_equal(pc_circle2r_checked(a, b, 1, c, &w), PC_EDOMAIN);   /* |AB| = 2 sqrt 2 > 2r */
+    assert_string_equal(w.row[0].text, "the points are 2.8284271247462 apart, farther than the diameter 2r = 2");
+    assert_int_equal(pc_circle2r_checked(a, b, 2, c, &w), PC_OK);
+    NEAR(hypot(c[0].c[0] - 1, c[0].c[1] - 1), 2, 1e-12);              /* both circles through A */
+    NEAR(hypot(c[1].c[0] - 3, c[1].c[1] - 3), 2, 1e-12);
+    assert_int_equal(pc_circle_slopes_checked(a, 0, 3, 0, c, ends, &n, &w), PC_EDOMAIN);
+    assert_non_null(strstr(w.row[0].text, "no circle"));
+    assert_int_equal(pc_circle_slopes_checked(a, 1, 1, 0, c, ends, &n, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 3);
+    assert_string_equal(w.row[0].text, "equals the abscissa of A");
     pc_conic_class k;
     assert_non_null(strstr(why("plane.classify", pc_conic_classify(0, 0, 0, &k)), "not a conic"));
     /* no row for a status the construction does not return */
@@ -69,7 +80,26 @@ static void conic_coef_by_kind(void **state) {
     NEAR(k[5], 1 + 4 * 0.5 * 2, 1e-12);                         /* f = m^2 + 4pn */
     assert_int_equal(pc_conic_coef(0, c, 3, 0, k), PC_EDOMAIN);
     assert_int_equal(pc_conic_coef(1, c, -1, 2, k), PC_EDOMAIN);
-    assert_non_null(strstr(why("plane.conic_coef", PC_EDOMAIN), "semi-axes"));
+    pc_why_call w;
+    assert_int_equal(pc_conic_coef_checked(0, c, 3, 1, 0, k, &w), PC_EDOMAIN);
+    assert_non_null(strstr(w.row[0].text, "semi-axes"));
+    assert_int_equal(pc_conic_coef_checked(1, c, 3, 0, 0, k, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 4);
+    assert_non_null(strstr(w.row[0].text, "the hyperbola's second semi-axis"));
+    assert_int_equal(pc_conic_coef_checked(2, c, 0.5, 0, 0, k, &w), PC_OK);
+    NEAR(k[4], -2, 0);
+    /* plane.points: B where the kind needs it, the circle's own methods, the domain */
+    double xy[20];
+    assert_int_equal(pc_conic_points_checked(PC_GEN_ELLIPSE, PC_GEN_PARAM, 1, 0, 0, 0.1, 5, xy, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].key, "B");
+    assert_string_equal(w.row[0].text, "must be a positive number (the ellipse's), got nil");
+    assert_int_equal(pc_conic_points_checked(PC_GEN_ELLIPSE, PC_GEN_RATIONAL, 1, 1, 1, 0.1, 5, xy, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "the rational method is the circle's only");
+    assert_int_equal(pc_conic_points_checked(PC_GEN_CIRCLE, PC_GEN_EXPLICIT, 2, 0, 0, 0.5, 9, xy, &w), PC_EDOMAIN);
+    assert_non_null(strstr(w.row[0].text, "the steps leave the curve's domain"));
+    assert_int_equal(pc_conic_points_checked(PC_GEN_CIRCLE, PC_GEN_PARAM, 2, 0, 0, 0.5, 4, xy, &w), PC_OK);
+    NEAR(xy[2], 2 * cos(0.5), 1e-15); NEAR(xy[3], 2 * sin(0.5), 1e-15);
+    assert_string_equal(pc_gen_kind_names[PC_GEN_HYPERBOLA_COSH], "hyperbola_ch");
 }
 
 /* the conditions of buimov.spline's options, in the order the messages come */
