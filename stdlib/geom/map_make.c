@@ -38,6 +38,27 @@ int pc_map_translate_finite(pc_map *f, int n, const double *v) {
     return PC_OK;
 }
 
+int pc_map_rotate_axis(pc_map *f, const double a[3], const double b[3], int b_is_direction, double angle) {
+    double d[3];
+    for (int i = 0; i < 3; i++) d[i] = b[i] - (b_is_direction ? 0 : a[i]);
+    int st = pc_map_rotate3(f, a, d, angle);
+    return st == PC_EZERO && !b_is_direction ? PC_ECOINCIDENT : st;
+}
+
+int pc_map_affine_checked(pc_map *f, int m, int nin, int m2, int nout, const double *src, const double *dst,
+                          pc_why_call *w) {
+    if (m < 2)
+        return pc_why_call_set(w, "affine", PC_EDIM, 1, NULL,
+                               "holds %d points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", m);
+    if (m != nin + 1)
+        return pc_why_call_set(w, "affine", PC_EDIM, 1, NULL, "holds %d %d-D points; a map of %d-D needs %d (dimension + 1)",
+                               m, nin, nin, nin + 1);
+    if (m2 != m)
+        return pc_why_call_set(w, "affine", PC_EDIM, 2, NULL, "holds %d points, argument #1 %d: they must pair up", m2, m);
+    int st = pc_map_affine_points(f, nin, nout, src, dst);
+    return pc_why_call_set(w, "affine", st, 0, NULL, "%s", pc_map_points_why(st, nin));
+}
+
 int pc_map_unit_name(const char *name) {
     if (name[0] != 'C' || name[1] < '0' || name[1] > '9' || (name[1] == '0' && name[2])) return -1;
     char *end;
@@ -54,5 +75,7 @@ const pc_why pc_map_why[] = {
     {"map.axial_affinity", PC_ECOLLINEAR, 0, NULL, "the direction s lies along the axis d: no affinity"},
     {"map.foreshortening", PC_EDOMAIN, 0, NULL,
      "a perspective (projective) map has no constant foreshortening; give an affine map (an axonometry)"},
+    {"map.rotate", PC_EZERO, 0, NULL, "argument #2 (direction) is the zero vector, which gives no axis"},
+    {"map.rotate", PC_ECOINCIDENT, 0, NULL, "the axis points A and B coincide, so they give no axis"},
     {"f:inverse", PC_ESINGULAR, 0, NULL, "the map is singular (it flattens space), so it has no inverse"},
     {NULL, 0, 0, NULL, NULL}};

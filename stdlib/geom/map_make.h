@@ -5,7 +5,7 @@
 #define PC_MAP_MAKE_H
 
 #include "map.h"
-#include "why.h"
+#include "why_call.h"
 
 typedef enum {
     PC_MM_IDENTITY,         /* n: pc_map_identity */
@@ -25,6 +25,14 @@ int pc_map_make(pc_map *f, pc_map_kind kind, const double *x);
 
 /* pc_map_translate by a finite vector v (one made by overflow gives no map): PC_ENONFINITE. */
 int pc_map_translate_finite(pc_map *f, int n, const double *v);
+
+/* Space turned by angle about the axis through a and b, or (b_is_direction) through a along
+ * b: pc_map_rotate3, with PC_ECOINCIDENT for b = a and PC_EZERO for a zero direction. */
+int pc_map_rotate_axis(pc_map *f, const double a[3], const double b[3], int b_is_direction, double angle);
+/* pc_map_affine_points from m source points of nin-D to m2 image points of nout-D, their
+ * counts and dependence explained in w (affine(src, dst)). */
+int pc_map_affine_checked(pc_map *f, int m, int nin, int m2, int nout, const double *src, const double *dst,
+                          pc_why_call *w);
 
 /* The index i of the field name "Ci" of a map (C0, C1, ...: the image of the origin and of the
  * axes' unit points, pc_map_unit_image), no leading zero; -1 for any other name. */

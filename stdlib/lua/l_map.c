@@ -71,11 +71,9 @@ static const pcl_arg affine_args[] = {{.name = "source points", .kind = PCL_ANY,
 PCL_BODY(l_affine, a) {
     double src[(PC_MAXDIM + 1) * PC_MAXDIM], dst[(PC_MAXDIM + 1) * PC_MAXDIM];
     int nin = 0, nout = 0, m = read_points(L, 1, 2, src, &nin), m2 = read_points(L, 2, 3, dst, &nout);
-    if (m < 2) return pcl_argfail(L, 1, "holds %d points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", m);
-    if (m != nin + 1) return pcl_argfail(L, 1, "holds %d %d-D points; a map of %d-D needs %d (dimension + 1)", m, nin, nin, nin + 1);
-    if (m2 != m) return pcl_argfail(L, 2, "holds %d points, argument #1 %d: they must pair up", m2, m);
-    int st = pc_map_affine_points(pcl_newmap(L), nin, nout, src, dst);
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_points_why(st, nin));
+    pc_why_call why;
+    pcl_check(L, pc_map_affine_checked(pcl_newmap(L), m, nin, m2, nout, src, dst, &why), why.row);
+    return 1;
 }
 
 static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), {.name = "X", .kind = PCL_LOC, .flags = PCL_SAMEDIM},
@@ -165,13 +163,7 @@ PCL_BODY(l_rotate, a) {
         if (!q) return pcl_argfail(L, 2, "must be a point of the axis or its direction, got %s", pcl_shown(L, 2));
         pcl_readone(L, 2, 2, 0, is_dir ? &dir : &pB, 3, &B);
         pcl_readone(L, 3, 3, 0, &angle, 0, &t);
-        double d[3];
-        for (int i = 0; i < 3; i++) d[i] = B.v[i] - (is_dir ? 0 : A.v[i]);
-        int st = pc_map_rotate3(pcl_newmap(L), A.v, d, t.x);
-        if (st == PC_EZERO)
-            return pcl_fail(L, "%s", is_dir ? "argument #2 (direction) is the zero vector, which gives no axis"
-                                            : "the axis points A and B coincide, so they give no axis");
-        return made(L, st);
+        return made(L, pc_map_rotate_axis(pcl_newmap(L), A.v, B.v, is_dir, t.x));
     }
     pcl_readone(L, 1, 1, 0, &angle, 0, &t);
     if (a[1].present) {

@@ -103,10 +103,50 @@ static void unit_names(void **state) {
     assert_int_equal(pc_map_unit_name("C99999999999999999999"), -1);
 }
 
+static void rotate_about_axis(void **state) {
+    (void)state;
+    pc_map f;
+    double a[3] = {1, 0, 0}, b[3] = {1, 0, 5}, up[3] = {0, 0, 2}, o[3];
+    assert_int_equal(pc_map_rotate_axis(&f, a, b, 0, PI / 2), PC_OK);   /* about x = 1, y = 0 */
+    xy(&f, 2, 0, 7, o);
+    NEAR(o[0], 1, 1e-15); NEAR(o[1], 1, 1e-15); NEAR(o[2], 7, 1e-15);
+    assert_int_equal(pc_map_rotate_axis(&f, a, up, 1, PI), PC_OK);      /* along the direction z */
+    xy(&f, 2, 0, 0, o);
+    NEAR(o[0], 0, 1e-15); NEAR(o[1], 0, 1e-15);
+    assert_int_equal(pc_map_rotate_axis(&f, a, a, 0, 1), PC_ECOINCIDENT);
+    double zero[3] = {0, 0, 0};
+    assert_int_equal(pc_map_rotate_axis(&f, a, zero, 1, 1), PC_EZERO);
+    assert_non_null(pc_why_find(pc_map_why, "map.rotate", PC_ECOINCIDENT));
+    assert_non_null(pc_why_find(pc_map_why, "map.rotate", PC_EZERO));
+}
+
+static void affine_counts(void **state) {
+    (void)state;
+    pc_map f;
+    pc_why_call w;
+    double src[6] = {0, 0, 1, 0, 0, 1}, dst[6] = {1, 1, 2, 1, 1, 2}, o[2];
+    assert_int_equal(pc_map_affine_checked(&f, 3, 2, 3, 2, src, dst, &w), PC_OK);
+    double in[3] = {3, 3, 1}, h[3];
+    pc_map_image(&f, in, h);
+    o[0] = h[0] / h[2], o[1] = h[1] / h[2];
+    NEAR(o[0], 4, 1e-15); NEAR(o[1], 4, 1e-15);
+    assert_int_equal(pc_map_affine_checked(&f, 1, 2, 1, 2, src, dst, &w), PC_EDIM);
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "holds 1 points; a map of n-D needs n + 1 (3 in the plane, 4 in space)");
+    assert_int_equal(pc_map_affine_checked(&f, 2, 2, 2, 2, src, dst, &w), PC_EDIM);
+    assert_string_equal(w.row[0].text, "holds 2 2-D points; a map of 2-D needs 3 (dimension + 1)");
+    assert_int_equal(pc_map_affine_checked(&f, 3, 2, 2, 2, src, dst, &w), PC_EDIM);
+    assert_int_equal(w.row[0].arg, 2);
+    double line[6] = {0, 0, 1, 0, 2, 0};
+    assert_int_not_equal(pc_map_affine_checked(&f, 3, 2, 3, 2, line, dst, &w), PC_OK);
+    assert_non_null(strstr(w.row[0].text, "collinear"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(same_as_constructors), cmocka_unit_test(statuses_explained),
         cmocka_unit_test(translate_finite), cmocka_unit_test(unit_names),
+        cmocka_unit_test(rotate_about_axis), cmocka_unit_test(affine_counts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
