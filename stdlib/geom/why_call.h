@@ -13,8 +13,8 @@ typedef struct {
 } pc_why_call;
 
 /* Make w the table of one row {op, st, arg, key, the text of fmt (printf)} and return st;
- * with st PC_OK or op NULL the table is empty.  The text holds no '%' (a raiser may take it
- * as a format, as it takes any row's text). */
+ * with st PC_OK or op NULL the table is empty.  The text is a row's text as any table's: a
+ * "%s" in it (written "%%s" in fmt) shows the argument's value, and it holds no other '%'. */
 int pc_why_call_set(pc_why_call *w, const char *op, int st, int arg, const char *key, const char *fmt, ...);
 
 #endif

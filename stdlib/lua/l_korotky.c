@@ -246,10 +246,9 @@ static const pcl_arg sweep_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .fl
 PCL_BODY(l_conic_sweep, a) {
     int st;
     double u = 0;
+    pc_why_call why;
     pc_surface *s = pc_surface_conic_sweep(a[1].obj, a[2].obj, a[3].obj, a[4].obj, a[5].obj, &u, &st);
-    if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
-        return pcl_fail(L, "no conic through U, V, T with the tangents towards P and Q at u = %s (%s)", pcl_pushnum(L, u),
-                        st == PC_EDOMAIN ? "T must lie between the tangent lines" : pc_strerror(st));
+    if (!s) pcl_check(L, pc_sweep_explain(0, st, u, &why), why.row);
     return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
 }
 
@@ -281,11 +280,8 @@ static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
                                     .expect = "a positive number or the 3-D apex D"}, PCL_END};
 PCL_BODY(l_dome_tri, a) {
     double h = a[3].x;
-    if (a[3].n == 3) {
-        int st = pc_dome_tri_height_through(a[0].v, a[1].v, a[2].v, a[3].v, &h);
-        if (st == PC_EDOMAIN) return pcl_argfail(L, 4, "must stand above the inside of the triangle, got %s", pcl_shown(L, 4));
-        if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "the triangle");
-    }
+    pc_why_call why;
+    if (a[3].n == 3) pcl_check(L, pc_dome_tri_height_checked(a[0].v, a[1].v, a[2].v, a[3].v, &h, &why), why.row);
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
     if (!s) pcl_check(L, st, WHY);
@@ -347,11 +343,9 @@ static const pcl_arg revolve_keys[] = {REQ3("A", PCL_POINT), REQ3("B", PCL_POINT
 static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
 PCL_BODY(l_conic_revolve, a) {
     int st;
-    double u = 0;
-    pc_surface *s = pc_surface_conic_revolve(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &u, &st);
-    if (!s && (st == PC_ECOLLINEAR || st == PC_EDOMAIN))
-        return pcl_fail(L, "%s at u = %s", pc_conic_revolve_why(st), pcl_pushnum(L, u));
-    if (!s) return pcl_fail(L, "%s", pc_conic_revolve_why(st));
+    pc_why_call why;
+    pc_surface *s = pc_conic_revolve_explained(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &st, &why);
+    if (!s) pcl_check(L, st, why.row);
     pcl_pushsurface(L, s, "korotky.conic_revolve");
     return 1;
 }
@@ -369,10 +363,9 @@ PCL_BODY(l_ridge_shell, a) {
     }
     int st;
     double u = 0;
+    pc_why_call why;
     pc_surface *s = pc_surface_ridge_shell_of(g, &u, &st);
-    if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
-        return pcl_fail(L, "no conic arc of the profile at u = %s (%s)", pcl_pushnum(L, u),
-                        st == PC_EDOMAIN ? "a T must lie between the tangent lines" : pc_strerror(st));
+    if (!s) pcl_check(L, pc_sweep_explain(1, st, u, &why), why.row);
     return pcl_push_made_surface(L, s, &st, "korotky.ridge_shell");
 }
 
@@ -414,8 +407,7 @@ PCL_BODY(l_plane_meet, a) {
     int st = pc_meet_planes4(p, q, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pcl_snap_weight(4, out);
-    pcl_value *r = pcl_newvalue(L, 4);
-    for (int k = 0; k < 5; k++) r->h[k] = out[k];
+    memcpy(pcl_newvalue(L, 4)->h, out, sizeof out);
     return 1;
 }
 

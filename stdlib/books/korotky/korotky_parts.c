@@ -3,6 +3,7 @@
 #include <string.h>
 #include "korotky_parts.h"
 #include "graphdiff.h"
+#include "conic_surface.h"
 #include "names.h"
 
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
@@ -141,6 +142,41 @@ int pc_graphical_slope_checked(int n, const double *xy, double x, int window, do
                                pc_num_text(xy[0], lo, sizeof lo), pc_num_text(xy[2 * n - 2], hi, sizeof hi),
                                pc_num_text(x, at, sizeof at));
     return pc_why_call_set(w, op, st, 1, NULL, "(%s)", pc_strerror(st));
+}
+
+int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w) {
+    char at[40];
+    if (st != PC_EDOMAIN && st != PC_ESKEW && st != PC_ECOINCIDENT && st != PC_EZERO)
+        return pc_why_call_set(w, NULL, st, 0, NULL, "");
+    const char *why = st != PC_EDOMAIN ? pc_strerror(st) : ridge ? "a T must lie between the tangent lines"
+                                                                 : "T must lie between the tangent lines";
+    pc_num_text(u, at, sizeof at);
+    if (ridge)
+        return pc_why_call_set(w, "korotky.ridge_shell", st, 0, NULL, "no conic arc of the profile at u = %s (%s)", at, why);
+    return pc_why_call_set(w, "korotky.conic_sweep", st, 0, NULL,
+                           "no conic through U, V, T with the tangents towards P and Q at u = %s (%s)", at, why);
+}
+
+pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], const double nA[3], const double nB[3],
+                                       pc_curve *ridge, int *status, pc_why_call *w) {
+    double u = 0;
+    char at[40];
+    pc_surface *s = pc_surface_conic_revolve(A, B, nA, nB, ridge, &u, status);
+    if (s) return s;
+    if (*status == PC_ECOLLINEAR || *status == PC_EDOMAIN)
+        pc_why_call_set(w, "korotky.conic_revolve", *status, 0, NULL, "%s at u = %s", pc_conic_revolve_why(*status),
+                        pc_num_text(u, at, sizeof at));
+    else
+        pc_why_call_set(w, "korotky.conic_revolve", *status, 0, NULL, "%s", pc_conic_revolve_why(*status));
+    return NULL;
+}
+
+int pc_dome_tri_height_checked(const double *A, const double *B, const double *C, const double *D, double *h,
+                               pc_why_call *w) {
+    int st = pc_dome_tri_height_through(A, B, C, D, h);
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, "korotky.dome_tri", st, 4, NULL, "must stand above the inside of the triangle, got %%s");
+    return pc_why_call_set(w, "korotky.dome_tri", st, 0, NULL, "the triangle (%s)", pc_strerror(st));
 }
 
 const pc_why pc_korotky_why[] = {

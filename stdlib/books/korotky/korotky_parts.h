@@ -50,6 +50,15 @@ int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
  * 3..n, the x increasing, x within the samples. */
 int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);
 
+/* The failure st at u of a sweep's conic explained in w (ridge: korotky.ridge_shell's profile
+ * arcs, else korotky.conic_sweep's conics; korotky.conic_revolve's are pc_conic_revolve_why's). */
+int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w);
+pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], const double nA[3], const double nB[3],
+                                       pc_curve *ridge, int *status, pc_why_call *w);
+/* pc_dome_tri_height_through explained in w (korotky.dome_tri: the apex D is argument #4). */
+int pc_dome_tri_height_checked(const double *A, const double *B, const double *C, const double *D, double *h,
+                               pc_why_call *w);
+
 /* The explanations of the statuses of the constructions of the korotky table, by the name the
  * API gives each (why.h). */
 extern const pc_why pc_korotky_why[];

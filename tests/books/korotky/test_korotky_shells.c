@@ -9,6 +9,7 @@
 #include <string.h>
 #include "pencils4.h"
 #include "conic_shells.h"
+#include "korotky_parts.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -215,6 +216,21 @@ static void test_revolve(void **state) {
     assert_null(pc_surface_conic_revolve(A, B, n, n, through_axis, &bad_u, &st));
     assert_int_equal(st, PC_ECOLLINEAR);
     NEAR(bad_u, 0, 0);
+    pc_why_call w;   /* explained with the u where it failed */
+    assert_null(pc_conic_revolve_explained(A, B, n, n, through_axis, &st, &w));
+    assert_int_equal(st, PC_ECOLLINEAR);
+    assert_string_equal(w.row[0].text, "the ridge point lies on the axis AB at u = 0");
+    s = pc_conic_revolve_explained(A, B, n, n, ridge, &st, &w);
+    assert_non_null(s);
+    pc_surface_release(s);
+    assert_int_equal(pc_sweep_explain(1, PC_EDOMAIN, 0.25, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].op, "korotky.ridge_shell");
+    assert_string_equal(w.row[0].text, "no conic arc of the profile at u = 0.25 (a T must lie between the tangent lines)");
+    pc_sweep_explain(0, PC_ESKEW, 0.5, &w);
+    assert_string_equal(w.row[0].op, "korotky.conic_sweep");
+    assert_non_null(strstr(w.row[0].text, "at u = 0.5 ("));
+    pc_sweep_explain(0, PC_ENOMEM, 0.5, &w);
+    assert_null(w.row[0].op);
     const double flat[3] = {0, 0, 1};
     assert_null(pc_surface_conic_revolve(A, B, flat, n, ridge, &bad_u, &st));
     assert_int_equal(st, PC_EDOMAIN);
