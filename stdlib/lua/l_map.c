@@ -202,19 +202,19 @@ PCL_BODY(l_shear, a) {
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const pcl_arg ortho_args[] = {{.name = "axis", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = AXES, .dflt = 2}, PCL_END};
-static const pcl_arg axono_args[] = {A_NUM("phi"), A_NUM("theta"), PCL_END};
-static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = "a number between 0 and 1 (the foreshortening of the z axis)"}, PCL_END};
-#define ALPHA {.name = "alpha", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = 0.78539816339744831}
-static const pcl_arg oblique_args[] = {A_NUM("k"), ALPHA, PCL_END};
-static const pcl_arg alpha_arg[] = {ALPHA, PCL_END};
-static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
 static int l_orthographic(lua_State *L) { return make(L, PC_MM_ORTHOGRAPHIC); }
+static const pcl_arg axono_args[] = {A_NUM("phi"), A_NUM("theta"), PCL_END};
 static int l_axonometric(lua_State *L) { return make(L, PC_MM_AXONOMETRIC); }
 static int l_isometric(lua_State *L) { return make(L, PC_MM_ISOMETRIC); }
+static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = "a number between 0 and 1 (the foreshortening of the z axis)"}, PCL_END};
 static int l_dimetric(lua_State *L) { return make(L, PC_MM_DIMETRIC); }
+#define ALPHA {.name = "alpha", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = 0.78539816339744831}
+static const pcl_arg oblique_args[] = {A_NUM("k"), ALPHA, PCL_END};
 static int l_oblique(lua_State *L) { return make(L, PC_MM_OBLIQUE); }
+static const pcl_arg alpha_arg[] = {ALPHA, PCL_END};
 static int l_cavalier(lua_State *L) { return make(L, PC_MM_CAVALIER); }
 static int l_cabinet(lua_State *L) { return make(L, PC_MM_CABINET); }
+static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
 static int l_perspective_pqr(lua_State *L) { return make(L, PC_MM_PERSPECTIVE_PQR); }
 
 static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
@@ -224,6 +224,7 @@ PCL_BODY(l_perspective, a) {
 }
 
 /* the foreshortening of an axonometry (§2.8.3), the plane's axial affinity (geom/map_more.c) */
+static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
 PCL_BODY(l_foreshortening, a) {
     const pc_map *f = a[0].obj;
     double k[PC_MAXDIM];
@@ -232,12 +233,10 @@ PCL_BODY(l_foreshortening, a) {
     return f->nin;
 }
 
+static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
 PCL_BODY(l_axial_affinity, a) {
     return made(L, pc_map_axial_affinity(pcl_newmap(L), a[0].v, a[1].v, a[2].v, a[3].x));
 }
-
-static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
-static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
 
 /* ---- applying a map ------------------------------------------------------------------------- */
 
