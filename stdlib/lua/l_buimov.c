@@ -2,7 +2,7 @@
  * (ch. 3) and buimov (ch. 1.2, 2.8.6, 4, 5).  Curves and surfaces are the one curve and surface
  * types, maps the one map type. */
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_point.h"
 #include "plane_curves.h"
 #include "buimov.h"
@@ -10,82 +10,66 @@
 #include "linalg.h"
 #include "buimov_parts.h"
 #include "pcl_books.h"
+#include "buimov_why.h"
 
 #define PI 3.14159265358979323846
+#define WHY pc_buimov_why
+
+/* the curve a construction made (kind: its name), or its status explained by the why-table */
+static int made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
+    if (!c) pcl_check(L, *st, WHY);
+    return pcl_push_made(L, c, st, kind);
+}
 
 /* ==== plane.* ================================================================================ */
 
 /* a circle as a table {centre =, r =, d =, e =, f =, curve =} (curve: the whole circle) */
 static void push_circle(lua_State *L, const pc_circle_eq *c) {
-    lua_createtable(L, 0, 7);
-    pcl_pushpoint(L, 2, c->c);
-    lua_setfield(L, -2, "centre");
-    lua_pushnumber(L, c->r); lua_setfield(L, -2, "r");
-    lua_pushnumber(L, c->d); lua_setfield(L, -2, "d");
-    lua_pushnumber(L, c->e); lua_setfield(L, -2, "e");
-    lua_pushnumber(L, c->f); lua_setfield(L, -2, "f");
     int st;
-    pcl_push_made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), &st, "circle");
+    pcl_push_results(L, 2, "centre=p r=n d=n e=n f=n", c->c, c->r, c->d, c->e, c->f);
+    made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), &st, "circle");
     lua_setfield(L, -2, "curve");
 }
 
-static void circle_status(lua_State *L, int st) {
-    if (st == PC_ECOINCIDENT) pcl_fail(L, "two of the points coincide");
-    if (st == PC_ECOLLINEAR) pcl_fail(L, "the three points lie on one line, so no circle passes through them");
-    if (st != PC_OK) pcl_statuserror(L, pcl_name(L), st, NULL);
-}
-
 static const pcl_arg abc_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), PCL_END};
-
 PCL_BODY(l_circle3, a) {
     pc_circle_eq c;
-    circle_status(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c));
+    pcl_check(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c), WHY);
     push_circle(L, &c);
     int st;
-    pcl_push_made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
+    made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
     lua_setfield(L, -2, "arc");
     return 1;
 }
 
 PCL_BODY(l_arc3, a) {
     int st;
-    pc_curve *arc = pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st);
-    if (!arc) circle_status(L, st);
-    pcl_pushcurve(L, arc, "arc");
-    return 1;
+    return made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
 }
 
 static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
-
 PCL_BODY(l_circle2r, a) {
-    double *A = a[0].v, *B = a[1].v, r = a[2].x;
     pc_circle_eq c[2];
-    int st = pc_circle2r(A, B, r, c);
-    if (st == PC_ECOINCIDENT) return pcl_fail(L, "the points A and B coincide (any circle of radius r through A will do)");
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the points are %s apart, farther than the diameter 2r = %s",
-                        pcl_pushnum(L, hypot(B[0] - A[0], B[1] - A[1])), pcl_pushnum(L, 2 * r));
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
+    pc_why_call why;
+    pcl_check(L, pc_circle2r_checked(a[0].v, a[1].v, a[2].x, c, &why), why.row);
     push_circle(L, &c[0]);
     push_circle(L, &c[1]);
     return 2;
 }
 
 static const pcl_arg slopes_args[] = {A_POINT("A", 2), A_NUM("m1"), A_NUM("x_end"), A_NUM("m2"), PCL_END};
-
 PCL_BODY(l_circle_slopes, a) {
     double *A = a[0].v, m1 = a[1].x, xe = a[2].x, ends[4];
     pc_circle_eq c[2];
-    int n, st = pc_circle_slopes(A, m1, xe, a[3].x, c, ends, &n);
-    if (st == PC_EDOMAIN && xe == A[0]) return pcl_argfail(L, 3, "equals the abscissa of A");
-    if (st == PC_EDOMAIN) return pcl_fail(L, "no circle through A has these slopes");
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
+    pc_why_call why;
+    int n, st;
+    pcl_check(L, pc_circle_slopes_checked(A, m1, xe, a[3].x, c, ends, &n, &why), why.row);
     double dir[2] = {xe > A[0] ? 1 : -1, xe > A[0] ? m1 : -m1};
     for (int i = 0; i < n; i++) {
         push_circle(L, &c[i]);
         pcl_pushpoint(L, 2, ends + 2 * i);
         lua_setfield(L, -2, "finish");
-        pcl_push_made(L, pc_curve_arc_dir(c[i].c, c[i].r, A, dir, ends + 2 * i, &st), &st, "arc");
+        made(L, pc_curve_arc_dir(c[i].c, c[i].r, A, dir, ends + 2 * i, &st), &st, "arc");
         lua_setfield(L, -2, "arc");
     }
     return n;
@@ -93,102 +77,65 @@ PCL_BODY(l_circle_slopes, a) {
 
 static const char *const conic_names[3] = {"ellipse", "parabola", "hyperbola"};
 static const pcl_arg classify_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("c"), PCL_END};
-
 PCL_BODY(l_classify, a) {
     pc_conic_class k;
-    if (pc_conic_classify(a[0].x, a[1].x, a[2].x, &k) != PC_OK) return pcl_fail(L, "a = b = c = 0 is a line, not a conic");
-    lua_pushstring(L, conic_names[k]);
-    lua_pushnumber(L, a[1].x * a[1].x - 4 * a[0].x * a[2].x);
-    return 2;
+    pcl_check(L, pc_conic_classify(a[0].x, a[1].x, a[2].x, &k), WHY);
+    return pcl_push_results(L, 0, "s n", conic_names[k], a[1].x * a[1].x - 4 * a[0].x * a[2].x);
 }
 
 #define COEF {.name = "coef", .kind = PCL_NUMBERS, .lo = 6, .hi = 6}
 static const pcl_arg rotate_args[] = {COEF, A_NUM("alpha"), PCL_END};
-
-static int l_rotate_conic(lua_State *L) {
-    double k[6], out[6];
-    pcl_val a[2] = {{.list = k, .cap = 6}};
-    PCL_READ(L, a);
-    pc_conic_rotate(k, a[1].x, out);
-    pcl_push_numbers(L, 6, out);
-    return 1;
+PCL_BODY(l_rotate_conic, a) {
+    double out[6];
+    pc_conic_rotate(a[0].list, a[1].x, out);
+    return pcl_push_results(L, 0, "N", 6, out);
 }
 
 static const pcl_arg value_args[] = {COEF, A_POINT("X", 2), PCL_END};
-
-static int l_conic_value(lua_State *L) {
-    double k[6];
-    pcl_val a[2] = {{.list = k, .cap = 6}};
-    PCL_READ(L, a);
-    lua_pushnumber(L, pc_conic_value(k, a[1].v[0], a[1].v[1]));
-    return 1;
+PCL_BODY(l_conic_value, a) {
+    return pcl_push_results(L, 0, "n", pc_conic_value(a[0].list, a[1].v[0], a[1].v[1]));
 }
 
-static const char *const coef_kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
-static const pcl_arg coef_args[] = {A_ENUM("kind", coef_kinds), A_POINT("centre", 2), A_NUM("A"),
+static const pcl_arg coef_args[] = {A_ENUM("kind", pc_conic_coef_kinds), A_POINT("centre", 2), A_NUM("A"),
                                     {.name = "B", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 PCL_BODY(l_conic_coef, a) {
-    double *c = a[1].v, A = a[2].x, B = a[3].x, out[6];
-    if (a[0].n == 2) pc_conic_parabola_coef(c[0], c[1], A, out);
-    else {
-        if (!a[3].present) return pcl_argfail(L, 4, "must be a finite number (the %s's second semi-axis), got nil", a[0].s);
-        if (!(A > 0) || !(B > 0)) return pcl_fail(L, "the semi-axes A and B must be positive");
-        (a[0].n ? pc_conic_hyperbola_coef : pc_conic_ellipse_coef)(c[0], c[1], A, B, out);
-    }
-    pcl_push_numbers(L, 6, out);
-    return 1;
+    double out[6];
+    pc_why_call why;
+    pcl_check(L, pc_conic_coef_checked(a[0].n, a[1].v, a[2].x, a[3].present, a[3].x, out, &why), why.row);
+    return pcl_push_results(L, 0, "N", 6, out);
 }
 
 static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"),
                                        A_NUMOPT("th0", 0, "0"), {.name = "th1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
-
 PCL_BODY(l_ellipse, a) {
     double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
-    if (!(t1 > t0)) return pcl_fail(L, "need th0 < th1");
     int st;
-    pcl_push_made(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), &st, "ellipse");
-    return 1;
+    return made(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), &st, "ellipse");
 }
 
 static const pcl_arg parabola_args[] = {A_POSNUM("p"), A_NUM("th0"), A_NUM("th1"), PCL_END};
-
 PCL_BODY(l_parabola, a) {
-    if (!(a[2].x > a[1].x)) return pcl_fail(L, "need th0 < th1");
     int st;
-    pcl_push_made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
-    return 1;
+    return made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
 }
 
 static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300), A_NUMIN("t1", -300, 300), PCL_END};
-
 PCL_BODY(l_hyperbola, a) {
-    if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
-    pcl_push_made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
-    return 1;
+    return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
 }
 
-/* plane.points(kind, {A =, B =, step =, n =, method =}) */
-static const char *const point_kinds[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
-static const char *const point_methods[] = {"param", "recurrence", "rational", "explicit", NULL};
 static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, {.name = "B", .kind = PCL_NUMBER, .flags = PCL_POS},
                                       {.name = "step", .kind = PCL_NUMBER, .flags = PCL_REQ},
                                       {.name = "n", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 0, .hi = 1000000},
-                                      {.name = "method", .kind = PCL_ENUM, .choices = point_methods}, PCL_END};
-static const pcl_arg points_args[] = {A_ENUM("kind", point_kinds), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
-
+                                      {.name = "method", .kind = PCL_ENUM, .choices = pc_gen_method_names}, PCL_END};
+static const pcl_arg points_args[] = {A_ENUM("kind", pc_gen_kind_names), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
 PCL_BODY(l_points, a) {
-    int kind = a[0].n, method = a[6].n, n = (int)a[5].x;
-    if ((kind == 1 || kind >= 3) && !a[3].present) return pcl_keyfail(L, "B", "must be a positive number (the %s's), got nil", a[0].s);
-    if (method >= 2 && kind != 0) return pcl_fail(L, "the %s method is the circle's only", a[6].s);
+    int n = (int)a[5].x;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
-    int st = pc_conic_points((pc_gen_kind)kind, (pc_gen_method)method, a[2].x, a[3].x, a[4].x, n, xy);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the steps leave the curve's domain (the explicit circle beyond x = -A, the sec form at 90 degrees)");
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_push_values(L, n + 1, 2, xy, 0);
-    return 1;
+    pc_why_call why;
+    pcl_check(L, pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why), why.row);
+    return pcl_push_results(L, 2, "P", n + 1, xy);
 }
 
 /* ==== buimov.* =============================================================================== */
@@ -201,7 +148,6 @@ static int order(lua_State *L, int m, double k) {
 }
 
 static const pcl_arg knots_args[] = {A_POINTS("points", 0, 2, 0), A_INT("k", 2, PC_CURVE_MAXDEG + 1), PCL_END};
-
 PCL_BODY(l_knots, a) {
     int m = a[0].n, k = order(L, m, a[1].x);
     double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + k), 0);
@@ -216,72 +162,45 @@ PCL_BODY(l_knots, a) {
 
 static const pcl_arg basis_args[] = {A_INT("i", 0, 1000000), A_INT("k", 1, PC_CURVE_MAXDEG + 1), A_NUM("t"),
                                      A_NUMBERS("knots", 0, 1000000), PCL_END};
-
 PCL_BODY(l_basis, a) {
-    int i = (int)a[0].x, k = (int)a[1].x, nq = a[3].n;
-    for (int j = 1; j < nq; j++)
-        if (a[3].list[j] < a[3].list[j - 1]) return pcl_argfail(L, 4, "must not decrease ([%d])", j + 1);
     double N;
-    if (pc_book_basis(a[3].list, nq, i, k, a[2].x, &N) != PC_OK)
-        return pcl_fail(L, "N(i = %d, k = %d) needs the knots q[i] .. q[i + k]: %d knots given", i, k, nq);
-    lua_pushnumber(L, N);
-    return 1;
+    pc_why_call why;
+    pcl_check(L, pc_book_basis_checked(a[3].list, a[3].n, (int)a[0].x, (int)a[1].x, a[2].x, &N, &why), why.row);
+    return pcl_push_results(L, 0, "n", N);
 }
 
 PCL_BODY(l_bspline, a) {
     int st, m = a[0].n;
-    pc_curve *c = pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st);
-    if (!c && st == PC_EDOMAIN) return pcl_fail(L, "a vertex is repeated so often that the knots leave no span");
-    pcl_push_made(L, c, &st, "bspline");
-    return 1;
+    return made(L, pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st), &st, "bspline");
 }
 
 static const pcl_arg bernstein_args[] = {A_INT("n", 0, 1000), A_INT("i", 0, 1000), A_NUM("t"), PCL_END};
-
 PCL_BODY(l_bernstein, a) {
-    lua_pushnumber(L, pc_bernstein((int)a[0].x, (int)a[1].x, a[2].x));
-    return 1;
+    return pcl_push_results(L, 0, "n", pc_bernstein((int)a[0].x, (int)a[1].x, a[2].x));
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
-
 PCL_BODY(l_blend, a) {
     double F[4];
     pc_hermite_blend(a[0].x, F);
-    for (int i = 0; i < 4; i++) lua_pushnumber(L, F[i]);
-    return 4;
+    return pcl_push_results(L, 0, "n n n n", F[0], F[1], F[2], F[3]);
 }
 
-/* P1, P2 (points), D1, D2 (vectors) [, t]: the data of a Hermite segment */
 static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
                                        {.name = "t", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
-
-static int hermite_data(lua_State *L, pcl_val *a, double *p, double *dv) {
-    pcl_read(L, a, 5);
-    int d = a[0].n;
+PCL_BODY(l_hermite, a) {
+    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x};
+    int d = a[0].n, st;
     pcl_point_rows(a, 2, d, p);
     pcl_point_rows(a + 2, 2, d, dv);
-    return d;
+    return made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
 }
 
-static int l_hermite(lua_State *L) {
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM];
-    pcl_val a[5] = {0};
-    int d = hermite_data(L, a, p, dv), st;
-    double u[2] = {0, a[4].x};
-    pcl_push_made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
-    return 1;
-}
-
-static int l_hermite_coeffs(lua_State *L) {
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], B[4 * PC_MAXDIM];
-    pcl_val a[5] = {0};
-    int d = hermite_data(L, a, p, dv);
-    int st = pc_hermite_coeffs(d, p, p + d, dv, dv + d, a[4].x, B);
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushpoint(L, d, B);
-    for (int i = 1; i < 4; i++) pcl_pushvector(L, d, B + i * d);
-    return 4;
+PCL_BODY(l_hermite_coeffs, a) {
+    double *p = a[0].v, *dv = a[2].v, B[4 * PC_MAXDIM];
+    int d = a[0].n;
+    pcl_check(L, pc_hermite_coeffs(d, p, a[1].v, dv, a[3].v, a[4].x, B), WHY);
+    return pcl_push_results(L, d, "p v v v", B, B + d, B + 2 * d, B + 3 * d);
 }
 
 static const char *const spline_ends[] = {"clamped", "natural", "cyclic", "anticyclic", NULL};
@@ -293,83 +212,55 @@ static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choice
                                       {.name = "lengths", .kind = PCL_NUMBERS, .lo = 1}, PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
-
 PCL_BODY(l_spline, a) {
-    int n = a[0].n, d = a[0].dim, st, have_d = a[3].present + a[4].present;
+    int n = a[0].n, d = a[0].dim, st;
     pc_book_ends ends = (pc_book_ends)a[2].n;
-    if (!a[2].present && have_d == 2) ends = PC_BOOK_CLAMPED;   /* tangents given without ends: clamped */
-    if (ends == PC_BOOK_CLAMPED && have_d < 2) return pcl_fail(L, "clamped ends need both end tangents d0 and d1");
-    if ((ends == PC_BOOK_CYCLIC || ends == PC_BOOK_ANTICYCLIC) && n < 4)
-        return pcl_fail(L, "cyclic and anticyclic ends need at least 4 points, got %d", n);
-    if (a[6].present && a[5].present) return pcl_fail(L, "give the parameter as param or as lengths, not both");
-    if (a[6].present && a[6].n != n - 1)
-        return pcl_keyfail(L, "lengths", "must hold %d segment lengths (one per segment), got %d", n - 1, a[6].n);
-    for (int i = 0; a[6].present && i < n - 1; i++)
-        if (!(a[6].list[i] > 0)) return pcl_keyfail(L, "lengths", "[%d] must be a positive length, got %s", i + 1, pcl_pushnum(L, a[6].list[i]));
+    pc_why_call why;
+    pcl_check(L, pc_book_spline_check(n, &ends, a[2].present, a[3].present + a[4].present, a[5].present,
+                                      a[6].present ? a[6].n : -1, a[6].list, &why), why.row);
     double *tg = lua_newuserdatauv(L, sizeof(double) * (size_t)n * d, 0);
     pc_curve *c = a[6].present ? pc_curve_book_spline_tl(d, n, a[0].list, a[6].list, ends, a[3].v, a[4].v, tg, &st)
                                : pc_curve_book_spline(d, n, a[0].list, a[5].n, ends, a[3].v, a[4].v, tg, &st);
-    if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide (a chord of length 0)");
-    pcl_push_made(L, c, &st, "spline");
-    lua_createtable(L, n, 0);
-    for (int i = 0; i < n; i++) {
-        pcl_pushvector(L, d, tg + (size_t)i * d);
-        lua_rawseti(L, -2, i + 1);
-    }
-    return 2;
+    made(L, c, &st, "spline");
+    return 1 + pcl_push_results(L, d, "V", n, tg);
 }
 
 static const pcl_arg helix_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("t0"), A_NUM("t1"), PCL_END};
-
 PCL_BODY(l_helix, a) {
     if (a[0].x == 0) return pcl_argfail(L, 1, "must be a nonzero radius, got 0");
-    if (!(a[3].x > a[2].x)) return pcl_fail(L, "need t0 < t1");
     int st;
-    pcl_push_made(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "helix");
-    return 1;
+    return made(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "helix");
 }
 
 static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
                                       A_NUMOPT("ph1", PI, "pi"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
                                       {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
-
 PCL_BODY(l_sphere, a) {
-    if (!a[4].present) a[4].v[0] = a[4].v[1] = a[4].v[2] = 0;
-    if (!(a[1].x > a[0].x) || !(a[3].x > a[2].x)) return pcl_fail(L, "need th0 < th1 and ph0 < ph1");
-    int st;
+    int st;   /* C absent: its cleared value, the origin */
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
+    if (!s) pcl_check(L, st, WHY);
     return pcl_push_made_surface(L, s, &st, "buimov.sphere");
 }
 
 static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
                                      {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
-
 PCL_BODY(l_sphere_frame, a) {
     double f[15];
-    if (!a[2].present) a[2].v[0] = a[2].v[1] = a[2].v[2] = 0;
     pc_sphere_frame_at(a[2].v, a[3].x, a[0].x, a[1].x, f);   /* the unit sphere at the origin by default */
-    pcl_pushpoint(L, 3, f);
-    for (int i = 1; i < 5; i++) pcl_pushvector(L, 3, f + 3 * i);
-    return 5;
+    return pcl_push_results(L, 3, "p v v v v", f, f + 3, f + 6, f + 9, f + 12);
 }
 
-/* buimov.det(rows): the determinant of a square matrix (§1.2; the area factor of §1.7.4) */
-static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a square matrix (a list of rows)"}, PCL_END};
-
+static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a square matrix (a list of rows)"}, PCL_END};
 PCL_BODY(l_det, a) {
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a square matrix (a list of rows), got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1), nc;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, n, m, &n, &nc);   /* square: as many numbers a row as rows */
-    lua_pushnumber(L, pc_det(n, m));
-    return 1;
+    return pcl_push_results(L, 0, "n", pc_det(n, m));
 }
 
-static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_ANY, .expect = "a list of maps from 3-D to 2-D"},
+static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_TABLE, .expect = "a list of maps from 3-D to 2-D"},
                                            A_POINTS("images", 2, 2, 64), PCL_END};
-
 PCL_BODY(l_reconstruct, a) {
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a list of maps from 3-D to 2-D, got %s", pcl_shown(L, 1));
     int n = (int)luaL_len(L, 1);
     if (n < 2 || n > 64) return pcl_argfail(L, 1, "must hold 2 to 64 views, got %d", n);
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold one point per view (%d), got %d", n, a[1].n);
@@ -383,46 +274,35 @@ PCL_BODY(l_reconstruct, a) {
         lua_pop(L, 1);
     }
     double x[3], res;
-    int st = pc_reconstruct_point(n, v, a[1].list, x, &res);
-    if (st == PC_ESINGULAR) return pcl_fail(L, "the views do not fix a point (their lines of sight are parallel)");
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushpoint(L, 3, x);
-    lua_pushnumber(L, res);
-    return 2;
+    pcl_check(L, pc_reconstruct_point(n, v, a[1].list, x, &res), WHY);
+    return pcl_push_results(L, 3, "p n", x, res);
 }
 
 static const pcl_arg calibrate_args[] = {A_POINTS("points", 3, 6, 0), A_POINTS("images", 2, 6, 0), PCL_END};
-
 PCL_BODY(l_calibrate, a) {
     int n = a[0].n;
     if (a[1].n != n) return pcl_fail(L, "%d points but %d images", n, a[1].n);
     pc_map *cam = pcl_newmap(L);
     double rms;
-    int st = pc_calibrate_camera(n, a[0].list, a[1].list, cam, &rms);
-    if (st == PC_ESINGULAR)
-        return pcl_fail(L, "the points do not fix a camera (they lie in one plane, or the origin is on the "
-                        "camera's vanishing plane, where T44 = 0)");
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    lua_pushnumber(L, rms);
-    return 2;
+    pcl_check(L, pc_calibrate_camera(n, a[0].list, a[1].list, cam, &rms), WHY);
+    return 1 + pcl_push_results(L, 0, "n", rms);
 }
 
 /* §4.3 the G1 joint of Bezier curves */
 #define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
-
+static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
+                                  {.name = "g", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1, .shown = "1",
+                                   .expect = "a positive number (the tangents keep their direction)"}, PCL_END};
 PCL_BODY(l_g1_next, a) {
     const pc_curve *c = a[0].obj;
     double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q0[PC_MAXDIM], q1[PC_MAXDIM];
     int n = pc_bezier_points(c, p);
     if (n < 0) return pcl_argfail(L, 1, NOT_POLY);
-    if (!(a[2].x > 0)) return pcl_argfail(L, 3, "must be positive (the tangents keep their direction)");
-    int st = pc_bezier_g1_next(c->dim, n, p, (int)a[1].x, a[2].x, q0, q1);
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    pcl_pushpoint(L, c->dim, q0);
-    pcl_pushpoint(L, c->dim, q1);
-    return 2;
+    pcl_check(L, pc_bezier_g1_next(c->dim, n, p, (int)a[1].x, a[2].x, q0, q1), WHY);
+    return pcl_push_results(L, c->dim, "p p", q0, q1);
 }
 
+static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
 PCL_BODY(l_joint, a) {
     const pc_curve *P = a[0].obj, *Q = a[1].obj;
     double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], g;
@@ -430,17 +310,12 @@ PCL_BODY(l_joint, a) {
     if (n < 0 || m < 0) return pcl_argfail(L, n < 0 ? 1 : 2, NOT_POLY);
     if (P->dim != Q->dim)
         return pcl_fail(L, "argument #2 (Q) is %d-D, but argument #1 (P) is %d-D (mixed dimensions)", Q->dim, P->dim);
-    int st = pc_bezier_joint(P->dim, n, p, m, q, &kind, &g);
-    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
+    pcl_check(L, pc_bezier_joint(P->dim, n, p, m, q, &kind, &g), WHY);
     lua_pushstring(L, pc_bezier_joint_name(kind));
     if (isnan(g)) lua_pushnil(L);
     else lua_pushnumber(L, g);
     return 2;
 }
-
-static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
-                                  A_NUMOPT("g", 1, "1"), PCL_END};
-static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
 
 static const pcl_fn plane[] = {
     PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),
@@ -448,11 +323,9 @@ static const pcl_fn plane[] = {
     PCL_FN("plane.circle_slopes", l_circle_slopes, slopes_args, "circle [, circle2]", "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it)."),
     PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside)."),
     PCL_FN("plane.classify", l_classify, classify_args, "\"ellipse\"|\"parabola\"|\"hyperbola\", discriminant", "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1)."),
-    {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args,
-     .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
+    {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args, .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
     PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
-    {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).",
-     .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
+    {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).", .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
     PCL_FN("plane.ellipse", l_ellipse, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle."),
     PCL_FN("plane.parabola", l_parabola, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
     PCL_FN("plane.hyperbola", l_hyperbola, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside)."),
@@ -472,13 +345,10 @@ static const pcl_fn book[] = {
     {.name = "buimov.sphere", .fn = l_sphere, .args = sphere_args, .sig = "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s", .help = "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default."},
     PCL_FN("buimov.sphere_frame", l_sphere_frame, frame_args, "S, S_th, S_ph, twist, N", "The sphere's point, tangent, twist and normal vectors at (th, ph) (§5.1, corrected; N = S_th x S_ph points inwards): the unit sphere at the origin, or centre C and radius r (the vectors times r, N times r^2)."),
     PCL_FN("buimov.det", l_det, det_args, "number", "The determinant of a square matrix (§1.2): the area factor of a 2x2 map (§1.7.4)."),
-    {.name = "buimov.reconstruct", .fn = l_reconstruct, .args = reconstruct_args,
-     .sig = "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual", .help = "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."},
+    {.name = "buimov.reconstruct", .fn = l_reconstruct, .args = reconstruct_args, .sig = "buimov.reconstruct({T1, T2, ...}, {X1, X2, ...}) -> point, residual", .help = "The point of space whose images under the views (maps from 3-D to 2-D) are X1, X2, ... by least squares (§2.8.6)."},
     PCL_FN("buimov.calibrate", l_calibrate, calibrate_args, "map, rms", "The camera (a map from 3-D to 2-D) sending six or more points of space to their images, by least squares with T44 = 1 (§2.8.6)."),
-    PCL_FN("buimov.g1_next", l_g1_next, g1_args, "Q0, Q1",
-           "§4.3 The first two control points of the next Bezier curve of degree m joined to P with G1: Q0 = P_n, n (P_n - P_(n-1)) = g m (Q1 - Q0) (g = 1: C1)."),
-    PCL_FN("buimov.joint", l_joint, joint_args, "\"none\"|\"C0\"|\"G1\"|\"C1\", g",
-           "§4.3 The kind of joint of two polynomial Bezier curves and the g of n (P_n - P_(n-1)) = g m (Q1 - Q0)."),
+    PCL_FN("buimov.g1_next", l_g1_next, g1_args, "Q0, Q1", "§4.3 The first two control points of the next Bezier curve of degree m joined to P with G1: Q0 = P_n, n (P_n - P_(n-1)) = g m (Q1 - Q0) (g = 1: C1)."),
+    PCL_FN("buimov.joint", l_joint, joint_args, "\"none\"|\"C0\"|\"G1\"|\"C1\", g", "§4.3 The kind of joint of two polynomial Bezier curves and the g of n (P_n - P_(n-1)) = g m (Q1 - Q0)."),
     PCL_END};
 
 void pcl_open_buimov(lua_State *L) {

@@ -4,7 +4,7 @@
  * is the first point).  A guide or a pencil's spanning point is a curve or a fixed point (a
  * vector: the point at infinity of its direction, as the basis point Z of the z axis). */
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "ferguson.h"
 #include "elastic.h"
 #include "conic_surface.h"
@@ -16,6 +16,7 @@
 #include "pcl_books.h"
 
 #define MAXPTS PC_FERGUSON_MAXN
+#define WHY pc_korotky_why
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
@@ -31,15 +32,14 @@ static int tangent_at(lua_State *L, int idx, double *t) {
     t[0] = v->h[0], t[1] = v->h[1];
     return 1;
 }
-static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     return tangent_at(L, idx, out->v);
 }
 #define TANGENT "a slope or a 2-D vector"
+#define TANGENTS {.name = "tangents", .kind = PCL_TABLE, .expect = "a list of slopes or 2-D vectors"}
 
 /* The n tangents of argument #k (a list, one per point) into T. */
 static void tangents(lua_State *L, int k, const pcl_val *v, int n, double *T) {
-    if (!lua_istable(L, v->idx)) pcl_argfail(L, k, "must be a list of slopes or 2-D vectors, got %s", pcl_shown(L, v->idx));
     int m = (int)luaL_len(L, v->idx);
     if (m != n) pcl_argfail(L, k, "must hold one tangent per point (%d), got %d", n, m);
     for (int i = 1; i <= n; i++) {
@@ -70,16 +70,13 @@ static const char *const ENDS[] = {"natural", "clamped", NULL};
 static const pcl_arg poly_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = ENDS},
                                     A_NUM("s0"), A_NUM("s1"), PCL_END};
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
-
-static int l_poly_spline(lua_State *L) {
-    double p[2 * MAXPTS], coef[4 * MAXPTS];
-    pcl_val a[5] = {{.list = p, .cap = 2 * MAXPTS}};
-    PCL_READ(L, a);
+PCL_BODY(l_poly_spline, a) {
+    double coef[4 * MAXPTS];
     int n = a[0].n, clamped = a[2].n == 1, bad = -1, st;
     if (clamped && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
     pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
-    pc_curve *c = pc_poly_spline_points(n, p, ends, a[3].x, a[4].x, coef, &bad, &st);
+    pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
     if (st == PC_EDOMAIN) return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
     if (!c) return knot_error(L, st, bad);
     pcl_pushcurve(L, c, "korotky.poly_spline");
@@ -89,17 +86,14 @@ static int l_poly_spline(lua_State *L) {
 
 /* ---- Ferguson splines --------------------------------------------------------------------- */
 
-static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
+static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
-
-static int l_ferguson(lua_State *L) {
-    double p[2 * MAXPTS], T[2 * MAXPTS], mags[2 * MAXPTS];
-    pcl_val a[3] = {{.list = p, .cap = 2 * MAXPTS}, {0}, {.list = mags, .cap = 2 * MAXPTS}};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson, a) {
+    double T[2 * MAXPTS];
     int n = a[0].n, st;
     tangents(L, 2, &a[1], n, T);
     need_count(L, &a[2], NULL, 3, 2 * n - 2);
-    pc_curve *c = pc_ferguson_curve(n, p, T, mags, &st);
+    pc_curve *c = pc_ferguson_curve(n, a[0].list, T, a[2].list, &st);
     if (!c) return pcl_statuserror(L, pcl_name(L), st, "argument #2 (tangents)");
     pcl_pushcurve(L, c, "korotky.ferguson");
     return 1;
@@ -112,57 +106,41 @@ static const pcl_arg lambda_keys[] = {
     PCL_END};
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
-
-static int l_ferguson_lambda(lua_State *L) {
-    double p[2 * MAXPTS], lam[MAXPTS], dout[2 * MAXPTS], din[2 * MAXPTS];
-    pcl_val a[7] = {{.list = p, .cap = 2 * MAXPTS}};
-    a[6] = (pcl_val){.list = lam, .cap = MAXPTS};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    double *TA = a[2].v, *TE = a[3].v, lA = hypot(TA[0], TA[1]), lE = hypot(TE[0], TE[1]);
-    if (!(lA > 0) || !(lE > 0)) return pcl_fail(L, "the end tangents must not be zero vectors");
-    for (int k = 0; k < 2; k++) TA[k] *= a[4].x / lA, TE[k] *= a[5].x / lE;
+PCL_BODY(l_ferguson_lambda, a) {
+    int n = a[0].n, bad = -1, st;
     if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
     need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
-    int bad = -1, st = pc_ferguson_lambda(2, n, p, TA, TE, lam, dout, din, &bad);
-    if (st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
-    if (st != PC_OK) return knot_error(L, st, bad);
-    pcl_push_made(L, pc_curve_hermite(2, n, p, dout, din, NULL, 0, &st), &st, "korotky.ferguson_lambda");
-    return 1;
+    pc_curve *c = pc_ferguson_lambda_curve(n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, a[6].list, &bad, &st);
+    if (!c && st == PC_EZERO) return pcl_fail(L, "the end tangents must not be zero vectors");
+    if (!c && st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
+    if (!c) return knot_error(L, st, bad);
+    return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
 }
 
 static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"),
                                         {.name = "start", .kind = PCL_NUMBERS, .hi = 2 * MAXPTS, .shown = "{...}"}, PCL_END};
-static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL),
+static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
-
-static int l_ferguson_tangents(lua_State *L) {
-    double p[2 * MAXPTS], T[2 * MAXPTS], mags[2 * MAXPTS], start[2 * MAXPTS];
-    pcl_val a[6] = {{.list = p, .cap = 2 * MAXPTS}};
-    a[5] = (pcl_val){.list = start, .cap = 2 * MAXPTS};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson_tangents, a) {
+    double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS];
     int n = a[0].n;
     tangents(L, 2, &a[1], n, T);
     need_count(L, &a[5], "start", 0, 2 * n - 4);
     mags[0] = a[3].x;
     mags[2 * n - 3] = a[4].x;
-    if (a[5].present) memcpy(mags + 1, start, sizeof(double) * (size_t)(2 * n - 4));
+    if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
     int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     if (st != PC_OK) return knot_error(L, st, bad);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
-    pcl_push_numbers(L, 2 * n - 2, mags);
-    return 2;
+    return 1 + pcl_push_results(L, 0, "N", 2 * n - 2, mags);
 }
 
 static const char *const ROOTS[] = {"min", "max", NULL};
-static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_ANY("tangents", NULL, NULL), A_NUM("wA"),
+static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"),
                                      A_POSNUM("z1"), {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS},
                                      PCL_END};
-
-static int l_ferguson_substitution(lua_State *L) {
-    double p[2 * MAXPTS], T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
-    pcl_val a[5] = {{.list = p, .cap = 2 * MAXPTS}};
-    PCL_READ(L, a);
+PCL_BODY(l_ferguson_substitution, a) {
+    double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     int n = a[0].n;
     tangents(L, 2, &a[1], n, T);
     mags[0] = a[2].x;
@@ -178,8 +156,7 @@ static int l_ferguson_substitution(lua_State *L) {
 /* ---- the elastic reference and the measures ------------------------------------------------ */
 
 /* ends = {tangent at the first point, tangent at the last}: their angles into out->v */
-static int read_ends(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_ends(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 2) return 0;
     for (int i = 0; i < 2; i++) {
         double t[2];
@@ -197,93 +174,61 @@ static const pcl_arg elastic_keys[] = {
     {.name = "pieces", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 4, .shown = "4"},
     {.name = "length", .kind = PCL_NUMBER, .flags = PCL_POS, .shown = "free"}, PCL_END};
 static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN), A_OPTIONS("opts", elastic_keys), PCL_END};
-
-static int l_elastic(lua_State *L) {
-    double p[2 * PC_ELASTIC_MAXN], E;
-    pcl_val a[5] = {{.list = p, .cap = 2 * PC_ELASTIC_MAXN}};
-    PCL_READ(L, a);
+PCL_BODY(l_elastic, a) {
+    double E;
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
     double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
-    pc_curve *c = pc_elastic_length(n, p, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
-    if (!c && st == PC_ECOINCIDENT) return pcl_fail(L, "two consecutive points coincide");
-    if (!c && st == PC_EDOMAIN) {
-        char num[32];
-        snprintf(num, sizeof num, "%.6g", len);
-        return pcl_fail(L, "length %s is not longer than the polyline through the points", num);
-    }
-    if (!c && st == PC_EDIM && len > 0 && (n == 2 && pieces == 1))
-        return pcl_fail(L, "a length needs a free node: two points with one piece are a segment");
-    if (!c && st == PC_EDIM)
-        return pcl_fail(L, "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
+    pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
+    pc_why_call why;
+    if (!c) pcl_check(L, pc_elastic_explain(st, n, pieces, len, &why), why.row);
     pcl_push_made(L, c, &st, "korotky.elastic");
-    lua_pushnumber(L, E);
-    return 2;
+    return 1 + pcl_push_results(L, 0, "n", E);
 }
 
 static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference", 0),
                                          {.name = "samples", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE,
                                           .lo = 8, .hi = 4096, .dflt = 64}, PCL_END};
-
 PCL_BODY(l_deviation, a) {
     pc_curve *m = a[0].obj, *r = a[1].obj;
     if (m->dim != r->dim)
         return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)", r->dim, m->dim);
-    pcl_callback_state(L);
     double d;
     int st = pc_curve_hausdorff(m, r, (int)a[2].x, &d);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    lua_pushnumber(L, d);
-    return 1;
+    return pcl_push_results(L, 0, "n", d);
 }
 
 static const pcl_arg curve_arg[] = {A_CURVE("curve", 0), PCL_END};
-
 PCL_BODY(l_joint_jumps, a) {
     double dk, da;
     int at, st = pc_curve_joint_jumps(a[0].obj, &dk, &da, &at);
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
-    lua_pushnumber(L, dk);
-    lua_pushnumber(L, da);
-    lua_pushinteger(L, at + 1);
-    return 3;
+    return pcl_push_results(L, 0, "n n i", dk, da, at + 1);
 }
 
 PCL_BODY(l_energy, a) {
-    pcl_callback_state(L);
     double E;
     int st = pc_curve_bending_energy(a[0].obj, &E);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    lua_pushnumber(L, E);
-    return 1;
+    return pcl_push_results(L, 0, "n", E);
 }
 
 /* Graphical differentiation: the slope at x of a curve known by samples (2-D points, x
  * increasing), the way the article measured the ruler's slopes (Tables A2-A5). */
 static const pcl_arg slope_args[] = {A_POINTS("samples", 2, 3, 0), A_NUM("x"),
                                      {.name = "window", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
-
 PCL_BODY(l_graphical_slope, a) {
     int n = a[0].n, wn = a[2].present ? (int)a[2].x : n >= 7 ? 7 : n % 2 ? n : n - 1;
-    const double *xy = a[0].list;
-    if (wn < 3 || wn > n) return pcl_argfail(L, 3, "must be an integer 3 to %d, got %d", n, wn);
-    for (int i = 1; i < n; i++)
-        if (!(xy[2 * i] > xy[2 * i - 2])) return pcl_argfail(L, 1, "[%d] must lie right of the sample before (x must increase)", i + 1);
     double m;
-    int st = pc_graphical_slope(n, xy, a[1].x, wn, &m);
-    if (st == PC_EDOMAIN)
-        return pcl_argfail(L, 2, "must lie within the samples [%s, %s], got %s", pcl_pushnum(L, xy[0]),
-                           pcl_pushnum(L, xy[2 * n - 2]), pcl_pushnum(L, a[1].x));
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1 (samples)");
-    lua_pushnumber(L, m);
-    lua_pushnumber(L, atan(m) * 180 / M_PI);
-    return 2;
+    pc_why_call why;
+    pcl_check(L, pc_graphical_slope_checked(n, a[0].list, a[1].x, wn, &m, &why), why.row);
+    return pcl_push_results(L, 0, "n n", m, atan(m) * 180 / M_PI);
 }
 
 /* ---- conics and conic surfaces ------------------------------------------------------------ */
 
 static const pcl_arg arc_args[] = {A_SAMEPOINT("U"), A_SAMEVECTOR("tU"), A_SAMEPOINT("V"), A_SAMEVECTOR("tV"),
                                    A_SAMEPOINT("T"), PCL_END};
-
 PCL_BODY(l_conic_arc, a) {
     int d = a[0].n, st;
     if (d < 2) return pcl_fail(L, "the points must be 2-D or more");
@@ -291,31 +236,24 @@ PCL_BODY(l_conic_arc, a) {
     pc_curve *c = pc_conic_arc(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, &w, &st);
     if (!c) return pcl_fail(L, "%s", pc_conic_arc_why(st));
     pcl_pushcurve(L, c, "korotky.conic_arc");
-    lua_pushnumber(L, w);
-    lua_pushstring(L, pc_conic_kind(w));
-    return 3;
+    return 1 + pcl_push_results(L, 0, "n s", w, pc_conic_kind(w));
 }
 
-static const pcl_arg sweep_keys[] = {{.name = "U", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "V", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "T", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "P", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3},
-                                     {.name = "Q", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
+#define REQ3(nm, k) {.name = nm, .kind = k, .flags = PCL_REQ, .dim = 3}   /* a required 3-D key */
+static const pcl_arg sweep_keys[] = {REQ3("U", PCL_CURVE), REQ3("V", PCL_CURVE), REQ3("T", PCL_CURVE),
+                                     REQ3("P", PCL_CURVE), REQ3("Q", PCL_CURVE), PCL_END};
 static const pcl_arg sweep_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = sweep_keys}, PCL_END};
-
 PCL_BODY(l_conic_sweep, a) {
     int st;
     double u = 0;
+    pc_why_call why;
     pc_surface *s = pc_surface_conic_sweep(a[1].obj, a[2].obj, a[3].obj, a[4].obj, a[5].obj, &u, &st);
-    if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
-        return pcl_fail(L, "no conic through U, V, T with the tangents towards P and Q at u = %s (%s)", pcl_pushnum(L, u),
-                        st == PC_EDOMAIN ? "T must lie between the tangent lines" : pc_strerror(st));
+    if (!s) pcl_check(L, pc_sweep_explain(0, st, u, &why), why.row);
     return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
 }
 
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"),
                                     {.name = "origin", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3}, PCL_END};
-
 PCL_BODY(l_dome_rect, a) {
     int st;
     pc_surface *s = pc_surface_dome_rect(a[0].x, a[1].x, a[2].x, a[3].present ? a[3].v : NULL, &st);
@@ -323,15 +261,13 @@ PCL_BODY(l_dome_rect, a) {
 }
 
 /* A corner of the triangle: a 2-D point (z = 0) or a 3-D one. */
-static int read_corner(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_corner(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     out->v[2] = 0;
     return v && (v->n == 2 || v->n == 3) && pc_loc(v->n, v->h, out->v) == PC_OK;
 }
 /* The height h, or the apex D (a 3-D point) the dome passes through. */
-static int read_height(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     out->x = lua_tonumber(L, idx);
     out->n = v ? 3 : 0;
@@ -342,17 +278,13 @@ static int read_height(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
                                    {.name = "h | D", .kind = PCL_ANY, .read = read_height,
                                     .expect = "a positive number or the 3-D apex D"}, PCL_END};
-
 PCL_BODY(l_dome_tri, a) {
     double h = a[3].x;
-    if (a[3].n == 3) {
-        int st = pc_dome_tri_height_through(a[0].v, a[1].v, a[2].v, a[3].v, &h);
-        if (st == PC_EDOMAIN) return pcl_argfail(L, 4, "must stand above the inside of the triangle, got %s", pcl_shown(L, 4));
-        if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "the triangle");
-    }
+    pc_why_call why;
+    if (a[3].n == 3) pcl_check(L, pc_dome_tri_height_checked(a[0].v, a[1].v, a[2].v, a[3].v, &h, &why), why.row);
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
-    if (!s && st == PC_ECOLLINEAR) return pcl_fail(L, "the triangle ABC is flat in plan");
+    if (!s) pcl_check(L, st, WHY);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 
@@ -374,7 +306,6 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 
 /* a pencil: three 4-D points, vectors or curves (the table in the argument keeps them alive) */
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
     pc_pencil_point *g = (pc_pencil_point *)out->list;
     static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4, .lo = 1};
@@ -393,41 +324,28 @@ static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
                     .expect = "a list of three 4-D points, vectors or curves"}
 static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
 static const pcl_arg pencils_args[] = {{.name = "pencils", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = pencil_keys}, PCL_END};
-
 static int l_two_pencils(lua_State *L) {
     pc_pencil_point om[3], de[3];
     pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
     PCL_READ(L, a);
-    int st;
-    pc_surface *s = pc_surface_two_pencils(om, de, &st);
+    int st, meet;
+    pc_surface *s = pc_surface_two_pencils_checked(om, de, &st, &meet);
+    if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    /* a surface whose every meet fails is a mistake in the data: say so now */
-    double out[5];
-    st = s->fn(s->ud, .5, .5, 0, out);
-    if (st != PC_OK) {
-        pc_surface_release(s);
-        return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(st, 1));
-    }
     pcl_pushsurface(L, s, "korotky.two_pencils");
     return 1;
 }
 
 /* ---- the rotational sweep and the ridge shell ---------------------------------------------- */
 
-static const pcl_arg revolve_keys[] = {{.name = "A", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "B", .kind = PCL_POINT, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "nA", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "nB", .kind = PCL_VECTOR, .flags = PCL_REQ, .dim = 3},
-                                       {.name = "ridge", .kind = PCL_CURVE, .flags = PCL_REQ, .dim = 3}, PCL_END};
+static const pcl_arg revolve_keys[] = {REQ3("A", PCL_POINT), REQ3("B", PCL_POINT), REQ3("nA", PCL_VECTOR),
+                                       REQ3("nB", PCL_VECTOR), REQ3("ridge", PCL_CURVE), PCL_END};
 static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
-
 PCL_BODY(l_conic_revolve, a) {
     int st;
-    double u = 0;
-    pc_surface *s = pc_surface_conic_revolve(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &u, &st);
-    if (!s && (st == PC_ECOLLINEAR || st == PC_EDOMAIN))
-        return pcl_fail(L, "%s at u = %s", pc_conic_revolve_why(st), pcl_pushnum(L, u));
-    if (!s) return pcl_fail(L, "%s", pc_conic_revolve_why(st));
+    pc_why_call why;
+    pc_surface *s = pc_conic_revolve_explained(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &st, &why);
+    if (!s) pcl_check(L, st, why.row);
     pcl_pushsurface(L, s, "korotky.conic_revolve");
     return 1;
 }
@@ -437,7 +355,6 @@ PCL_BODY(l_conic_revolve, a) {
 static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
                                      GUIDE("H"), GUIDE("Q"), PCL_END};
 static const pcl_arg ridge_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = ridge_keys}, PCL_END};
-
 PCL_BODY(l_ridge_shell, a) {
     pc_pencil_point g[8];
     for (int i = 0; i < 8; i++) {
@@ -446,10 +363,9 @@ PCL_BODY(l_ridge_shell, a) {
     }
     int st;
     double u = 0;
+    pc_why_call why;
     pc_surface *s = pc_surface_ridge_shell_of(g, &u, &st);
-    if (!s && (st == PC_EDOMAIN || st == PC_ESKEW || st == PC_ECOINCIDENT || st == PC_EZERO))
-        return pcl_fail(L, "no conic arc of the profile at u = %s (%s)", pcl_pushnum(L, u),
-                        st == PC_EDOMAIN ? "a T must lie between the tangent lines" : pc_strerror(st));
+    if (!s) pcl_check(L, pc_sweep_explain(1, st, u, &why), why.row);
     return pcl_push_made_surface(L, s, &st, "korotky.ridge_shell");
 }
 
@@ -457,41 +373,29 @@ PCL_BODY(l_ridge_shell, a) {
 
 /* a 2-D conic arc (a rational quadratic Bezier curve, out->obj) or six finite numbers (out->v) */
 static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
     /* an arc, or the line pair of korotky.conic_arc with T = W (two quadratic pieces, told
      * apart in l_conic_elements) */
     if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
-    for (int i = 0; i < 6; i++) {
-        lua_geti(L, idx, i + 1);
-        out->v[i] = lua_tonumber(L, -1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(out->v[i]))
-            pcl_argfail(L, 1, "[%d] must be a finite number, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
-        lua_pop(L, 1);
-    }
+    pcl_val coef = {.list = out->v, .cap = 6};
+    pcl_readone(L, idx, 1, 0, &(const pcl_arg){.name = a->name, .kind = PCL_NUMBERS, .lo = 6, .hi = 6}, 0, &coef);
     return 1;
 }
 static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .kind = PCL_ANY, .read = read_conic,
                                          .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
                                         PCL_END};
-
 PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
     pc_conic_info o;
-    const pc_curve *c = a[0].obj;
     double w[2];
-    if (c && c->ncp == 5 && !pc_conic_line_pair(c->cp, w))   /* the degenerate section AOD of Fig. 3c */
-        return pcl_argfail(L, 1, "must be a 2-D conic arc (one rational quadratic piece) or the coefficients {a, b, c, d, e, f}, got a curve of two pieces");
-    if (c && c->ncp == 5)
+    int st = a[0].obj ? pc_conic_info_arc(a[0].obj, &o, w) : pc_conic_info_coef(a[0].v, &o);
+    if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
         return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: "
                         "its lines meet at W = P(%f, %f)", w[0], w[1]);
-    int st = c ? pc_conic_info_rquad(((pc_curve *)a[0].obj)->cp, &o) : pc_conic_info_coef(a[0].v, &o);
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the arc is a straight segment (weight 0): no conic");
-    if (st == PC_EDOMAIN) return pcl_fail(L, "a degenerate conic (a line pair, or no real points)");
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "argument #1");
+    pcl_check(L, st, WHY);
     pcl_push_conic_info(L, &o);
     return 1;
 }
@@ -503,8 +407,7 @@ PCL_BODY(l_plane_meet, a) {
     int st = pc_meet_planes4(p, q, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pcl_snap_weight(4, out);
-    pcl_value *r = pcl_newvalue(L, 4);
-    for (int k = 0; k < 5; k++) r->h[k] = out[k];
+    memcpy(pcl_newvalue(L, 4)->h, out, sizeof out);
     return 1;
 }
 
@@ -512,16 +415,11 @@ PCL_BODY(l_plane_meet, a) {
 static const pcl_arg meet_args[] = {A_LOC4("P1"), A_LOC4("P2"), A_LOC4("P3"),
                                     A_LOC4("Q1"), A_LOC4("Q2"), A_LOC4("Q3"), PCL_END};
 static const pcl_fn fns[] = {
-    PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef",
-     "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
-    PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve",
-     "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
-    PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve",
-     "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
-    PCL_FN("korotky.ferguson_tangents", l_ferguson_tangents, tangents_args, "curve, moduli",
-     "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
-    PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics",
-     "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
+    PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef", "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
+    PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve", "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
+    PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve", "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
+    PCL_FN("korotky.ferguson_tangents", l_ferguson_tangents, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
+    PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
     PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
@@ -535,8 +433,7 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
     PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
     PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
-    PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K",
-           "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
+    PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K", "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
     PCL_END};
 
 void pcl_open_korotky(lua_State *L) {

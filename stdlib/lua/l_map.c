@@ -3,9 +3,9 @@
  * affine and map; the projections of l_curvilinear.c are maps of this type too. */
 #include "pcl_args.h"
 #include "pcl_point.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_books.h"
-#include "map.h"
+#include "map_make.h"
 
 static const char REGKEY[] = "pointcalc.map";      /* the metatable in the registry */
 
@@ -23,7 +23,21 @@ pc_map *pcl_newmap(lua_State *L) {
     luaL_setmetatable(L, REGKEY);
     return f;
 }
-#define newmap pcl_newmap
+
+/* the new map on the stack top (1), or its status explained by the why-table */
+static int made(lua_State *L, int st) {
+    pcl_check(L, st, pc_map_why);
+    return 1;
+}
+
+/* A map of pc_map_make: the declared numbers in order (an enum: the index of its choice). */
+static int make(lua_State *L, pc_map_kind kind) {
+    pcl_val a[3] = {0};
+    PCL_READ(L, a);
+    double x[3];
+    for (int i = 0; i < 3; i++) x[i] = a[i].s ? a[i].n : a[i].x;
+    return made(L, pc_map_make(pcl_newmap(L), kind, x));
+}
 
 static const char *const CONVENTIONS[] = {"row", "column", NULL};   /* index 0: the textbook's rows */
 #define CONVENTION {.name = "convention", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = CONVENTIONS, .dflt = 1}
@@ -50,27 +64,21 @@ static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
     return m;
 }
 
-/* affine(src, dst), the __call of the affine table */
 static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 #define POINTSET "a table of points or a simplex"
 static const pcl_arg affine_args[] = {{.name = "source points", .kind = PCL_ANY, .expect = POINTSET},
                                       {.name = "image points", .kind = PCL_ANY, .expect = POINTSET}, PCL_END};
-
 PCL_BODY(l_affine, a) {
     double src[(PC_MAXDIM + 1) * PC_MAXDIM], dst[(PC_MAXDIM + 1) * PC_MAXDIM];
     int nin = 0, nout = 0, m = read_points(L, 1, 2, src, &nin), m2 = read_points(L, 2, 3, dst, &nout);
-    if (m < 2) return pcl_argfail(L, 1, "holds %d points; a map of n-D needs n + 1 (3 in the plane, 4 in space)", m);
-    if (m != nin + 1) return pcl_argfail(L, 1, "holds %d %d-D points; a map of %d-D needs %d (dimension + 1)", m, nin, nin, nin + 1);
-    if (m2 != m) return pcl_argfail(L, 2, "holds %d points, argument #1 %d: they must pair up", m2, m);
-    int st = pc_map_affine_points(newmap(L), nin, nout, src, dst);
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_points_why(st, nin));
+    pc_why_call why;
+    pcl_check(L, pc_map_affine_checked(pcl_newmap(L), m, nin, m2, nout, src, dst, &why), why.row);
+    return 1;
 }
 
-/* affine.frame(O, X, Y [, Z ...]): axes given as unit points or as vectors */
 static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), {.name = "X", .kind = PCL_LOC, .flags = PCL_SAMEDIM},
                                      {.name = "Y", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT},
                                      {.name = "Z", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT}, PCL_END};
-
 static int l_frame(lua_State *L) {
     int m = lua_gettop(L);
     if (m - 1 > PC_MAXDIM) return pcl_fail(L, "%d axes; the largest dimension is %d", m - 1, PC_MAXDIM);
@@ -86,51 +94,35 @@ static int l_frame(lua_State *L) {
         if (!v->present) break;
         for (int i = 0; i < n; i++) axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);   /* a unit point: X - O */
     }
-    pc_map_frame(newmap(L), n, k, a[0].v, axes);
+    pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes);
     return 1;
 }
 
 static const pcl_arg dim_arg[] = {A_INT("n", 1, PC_MAXDIM), PCL_END};
-
-PCL_BODY(l_identity, a) {
-    pc_map_identity(newmap(L), (int)a[0].x);
-    return 1;
-}
+static int l_identity(lua_State *L) { return make(L, PC_MM_IDENTITY); }
 
 /* ---- the constructors of the map table ------------------------------------------------------ */
 
-static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_ANY, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
-
+static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
 PCL_BODY(l_matrix_ctor, a) {
-    if (!lua_istable(L, 1)) return pcl_argfail(L, 1, "must be a table of rows (tables of numbers), got %s", pcl_shown(L, 1));
     int rowvec = a[1].n == 0, nr = (int)luaL_len(L, 1), nc = 0;
     if (nr < 2 || nr > PC_MAXDIM + 1)
         return pcl_argfail(L, 1, "holds %d rows; a map of n-D to m-D takes (m + 1) rows of n + 1 numbers "
                            "(\"row\": n + 1 rows of m + 1), n and m 1..%d", nr, PC_MAXDIM);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, 0, m, &nr, &nc);
-    int st = pc_map_from_matrix(newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec);
-    if (st == PC_ESINGULAR) return pcl_fail(L, "the zero matrix is no map (it sends every point nowhere)");
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+    return made(L, pc_map_from_matrix(pcl_newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec));
 }
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
-
 PCL_BODY(l_translate, a) {
-    for (int i = 0; i < a[0].n; i++)   /* a vector made by overflow: no map by infinity */
-        if (!isfinite(a[0].v[i]))
-            return pcl_argfail(L, 1, "must be a finite vector, got %s", pcl_shown(L, 1));
-    pc_map_translate(newmap(L), a[0].n, a[0].v);
-    return 1;
+    return made(L, pc_map_translate_finite(pcl_newmap(L), a[0].n, a[0].v));
 }
 
-/* map.scale(k, centre | n) | map.scale({kx, ky, ...} [, centre]) */
 static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = "a number or a list of numbers {kx, ky, ...}"},
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-
-static int l_scale(lua_State *L) {
-    pcl_val a[2] = {0}, c = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_scale, a) {
+    pcl_val c = {0};
     double k[PC_MAXDIM];
     int n = 0;
     static const pcl_arg factors = {.name = "k", .kind = PCL_NUMBERS, .lo = 1, .hi = PC_MAXDIM};
@@ -151,17 +143,14 @@ static int l_scale(lua_State *L) {
     } else {
         return pcl_argfail(L, 1, "must be a number or a list of numbers {kx, ky, ...}, got %s", pcl_shown(L, 1));
     }
-    pc_map_scale(newmap(L), n, k, c.present ? c.v : NULL);
+    pc_map_scale(pcl_newmap(L), n, k, c.present ? c.v : NULL);
     return 1;
 }
 
-/* map.rotate(angle [, centre]) | map.rotate(A, B | direction, angle) */
 static const pcl_arg rotate_args[] = {{.name = "angle | A", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "centre | B", .kind = PCL_ANY, .flags = PCL_OPT},
                                       {.name = "angle", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
-
-static int l_rotate(lua_State *L) {
-    pcl_val a[3] = {0}, A = {0}, B = {0}, t = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_rotate, a) {
+    pcl_val A = {0}, B = {0}, t = {0};
     static const pcl_arg angle = A_NUM("angle");
     if (lua_type(L, 1) != LUA_TNUMBER && pcl_tovalue(L, 1)) {       /* about an axis in space */
         static const pcl_arg pA = A_POINT("A", 3), pB = {.name = "B", .kind = PCL_LOC, .flags = PCL_SAMEDIM};
@@ -174,13 +163,7 @@ static int l_rotate(lua_State *L) {
         if (!q) return pcl_argfail(L, 2, "must be a point of the axis or its direction, got %s", pcl_shown(L, 2));
         pcl_readone(L, 2, 2, 0, is_dir ? &dir : &pB, 3, &B);
         pcl_readone(L, 3, 3, 0, &angle, 0, &t);
-        double d[3];
-        for (int i = 0; i < 3; i++) d[i] = B.v[i] - (is_dir ? 0 : A.v[i]);
-        int st = pc_map_rotate3(newmap(L), A.v, d, t.x);
-        if (st == PC_EZERO)
-            return pcl_fail(L, "%s", is_dir ? "argument #2 (direction) is the zero vector, which gives no axis"
-                                            : "the axis points A and B coincide, so they give no axis");
-        return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+        return made(L, pc_map_rotate_axis(pcl_newmap(L), A.v, B.v, is_dir, t.x));
     }
     pcl_readone(L, 1, 1, 0, &angle, 0, &t);
     if (a[1].present) {
@@ -190,16 +173,13 @@ static int l_rotate(lua_State *L) {
             return pcl_argfail(L, 2, "must be 2-D, got %d-D (a rotation in space is map.rotate(A, B or direction, angle))", p->n);
         pcl_readone(L, 2, 2, 0, &centre, 0, &B);
     }
-    pc_map_rotate2(newmap(L), t.x, B.present ? B.v : NULL);
+    pc_map_rotate2(pcl_newmap(L), t.x, B.present ? B.v : NULL);
     return 1;
 }
 
 static const pcl_arg reflect_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("normal"), PCL_END};
-
 PCL_BODY(l_reflect, a) {
-    int st = pc_map_reflect(newmap(L), a[0].n, a[0].v, a[1].v);
-    if (st == PC_EZERO) return pcl_argfail(L, 2, "is the zero vector, which gives no mirror");
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
+    return made(L, pc_map_reflect(pcl_newmap(L), a[0].n, a[0].v, a[1].v));
 }
 
 /* Argument #k, an axis: 1..n or "x", "y", "z", "w"; returns it 0-based. */
@@ -213,92 +193,50 @@ static int axis_of(lua_State *L, int k, int n) {
 }
 static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .kind = PCL_ANY}, {.name = "j", .kind = PCL_ANY},
                                      A_NUM("k"), PCL_END};
-
 PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
     if (i == j) return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
-    pc_map_shear(newmap(L), n, i, j, a[3].x);
+    pc_map_shear(pcl_newmap(L), n, i, j, a[3].x);
     return 1;
 }
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const pcl_arg ortho_args[] = {{.name = "axis", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = AXES, .dflt = 2}, PCL_END};
-
-PCL_BODY(l_orthographic, a) {
-    pc_map_orthographic(newmap(L), a[0].s[0]);
-    return 1;
-}
-
+static int l_orthographic(lua_State *L) { return make(L, PC_MM_ORTHOGRAPHIC); }
 static const pcl_arg axono_args[] = {A_NUM("phi"), A_NUM("theta"), PCL_END};
-
-PCL_BODY(l_axonometric, a) {
-    pc_map_axonometric(newmap(L), a[0].x, a[1].x);
-    return 1;
-}
-
-static int l_isometric(lua_State *L) {
-    pc_map_isometric(newmap(L));
-    return 1;
-}
-
+static int l_axonometric(lua_State *L) { return make(L, PC_MM_AXONOMETRIC); }
+static int l_isometric(lua_State *L) { return make(L, PC_MM_ISOMETRIC); }
 static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = "a number between 0 and 1 (the foreshortening of the z axis)"}, PCL_END};
-
-PCL_BODY(l_dimetric, a) {
-    if (pc_map_dimetric(newmap(L), a[0].x) != PC_OK)
-        return pcl_argfail(L, 1, "must be a number between 0 and 1 (the foreshortening of the z axis), got %s", pcl_shown(L, 1));
-    return 1;
-}
-
+static int l_dimetric(lua_State *L) { return make(L, PC_MM_DIMETRIC); }
 #define ALPHA {.name = "alpha", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = 0.78539816339744831}
 static const pcl_arg oblique_args[] = {A_NUM("k"), ALPHA, PCL_END};
+static int l_oblique(lua_State *L) { return make(L, PC_MM_OBLIQUE); }
 static const pcl_arg alpha_arg[] = {ALPHA, PCL_END};
-
-PCL_BODY(l_oblique, a) {
-    pc_map_oblique(newmap(L), a[0].x, a[1].x);
-    return 1;
-}
-static int oblique_k(lua_State *L, double k) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    pc_map_oblique(newmap(L), k, a[0].x);
-    return 1;
-}
-static int l_cavalier(lua_State *L) { return oblique_k(L, 1.0); }
-static int l_cabinet(lua_State *L) { return oblique_k(L, 0.5); }
+static int l_cavalier(lua_State *L) { return make(L, PC_MM_CAVALIER); }
+static int l_cabinet(lua_State *L) { return make(L, PC_MM_CABINET); }
+static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
+static int l_perspective_pqr(lua_State *L) { return make(L, PC_MM_PERSPECTIVE_PQR); }
 
 static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
-
 PCL_BODY(l_perspective, a) {
-    int st = pc_map_perspective(newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
+    int st = pc_map_perspective(pcl_newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
 }
 
-/* the textbook's perspective by (p, q, r) (§2.8.5), the foreshortening of an axonometry (§2.8.3),
- * the plane's axial affinity (geom/map_more.c) */
-PCL_BODY(l_perspective_pqr, a) {
-    int st = pc_map_perspective_pqr(newmap(L), a[0].x, a[1].x, a[2].x);
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
-}
-
+/* the foreshortening of an axonometry (§2.8.3), the plane's axial affinity (geom/map_more.c) */
+static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
 PCL_BODY(l_foreshortening, a) {
     const pc_map *f = a[0].obj;
     double k[PC_MAXDIM];
-    if (pc_map_foreshortening(f, k) != PC_OK)
-        return pcl_fail(L, "a perspective (projective) map has no constant foreshortening; give an affine map (an axonometry)");
+    pcl_check(L, pc_map_foreshortening(f, k), pc_map_why);
     for (int i = 0; i < f->nin; i++) lua_pushnumber(L, k[i]);
     return f->nin;
 }
 
-PCL_BODY(l_axial_affinity, a) {
-    int st = pc_map_axial_affinity(newmap(L), a[0].v, a[1].v, a[2].v, a[3].x);
-    if (st == PC_EZERO) return pcl_fail(L, "the directions d and s must not be zero");
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the direction s lies along the axis d: no affinity");
-    return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_strerror(st));
-}
-
-static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
-static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
 static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
+PCL_BODY(l_axial_affinity, a) {
+    return made(L, pc_map_axial_affinity(pcl_newmap(L), a[0].v, a[1].v, a[2].v, a[3].x));
+}
 
 /* ---- applying a map ------------------------------------------------------------------------- */
 
@@ -327,9 +265,6 @@ static int read_input(lua_State *L, const pc_map *f, int first, int last, double
     return 1;
 }
 
-/* the image by the one weight rule (map_text.c) */
-#define image pc_map_image_rule
-
 static int pole_error(lua_State *L) {
     return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
 }
@@ -349,17 +284,16 @@ static int l_apply(lua_State *L) {
     double in[PC_MAXDIM + 1];
     read_input(L, f, 2, lua_gettop(L), in);
     pcl_value *r = pcl_newvalue(L, f->nout);
-    if (image(f, in, r->h) == PC_EPOLE) return pole_error(L);
+    if (pc_map_image_rule(f, in, r->h) == PC_EPOLE) return pole_error(L);
     return 1;
 }
 
-/* f:xy(p) or f:xy(x, y, ...): the coordinates of the image point as numbers. */
 static int l_xy(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
     double in[PC_MAXDIM + 1], out[PC_MAXDIM + 1];
     if (!read_input(L, f, 2, lua_gettop(L), in) && in[f->nin] != 1)
         return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[f->nin]));
-    int st = image(f, in, out);
+    int st = pc_map_image_rule(f, in, out);
     if (st == PC_EPOLE) return pole_error(L);
     if (st == PC_IMPROPER || out[f->nout] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
@@ -370,7 +304,7 @@ static int l_xy(lua_State *L) {
 }
 
 static int compose(lua_State *L, pc_map *f, pc_map *g) {
-    if (pc_map_compose(f, g, newmap(L)) != PC_OK)
+    if (pc_map_compose(f, g, pcl_newmap(L)) != PC_OK)
         return pcl_error(L, "cannot compose: the first map applied gives %d-D, the second takes %d-D", g->nout, f->nin);
     return 1;
 }
@@ -385,20 +319,18 @@ static int l_mul(lua_State *L) {
 }
 
 static const pcl_arg g_arg[] = {A_MAP("g"), PCL_END};
-
 PCL_METHOD(l_compose, pc_map *f, a) {
     return compose(L, f, a[0].obj);
 }
 
 static int l_inverse(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
-    int st = pc_map_inverse(f, newmap(L));
+    int st = pc_map_inverse(f, pcl_newmap(L));
     if (st == PC_EDIM) return pcl_fail(L, "a map from %d-D to %d-D (a projection or an embedding) has no inverse", f->nin, f->nout);
-    return st == PC_OK ? 1 : pcl_fail(L, "the map is singular (it flattens space), so it has no inverse");
+    return made(L, st);
 }
 
 static const pcl_arg conv_arg[] = {CONVENTION, PCL_END};
-
 PCL_METHOD(l_matrix, pc_map *f, a) {
     int rowvec = a[0].n == 0;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
@@ -426,7 +358,6 @@ static int l_vanishing(lua_State *L) {
     return 3;
 }
 
-/* f:show([convention]): print the matrix with its convention, columns aligned. */
 PCL_METHOD(l_show, pc_map *f, v) {
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 20 + 128];
     pc_map_show(f, v[0].n == 0, text, sizeof text);
@@ -463,10 +394,9 @@ static int l_index(lua_State *L) {
         lua_pushinteger(L, k[1] == 'i' ? f->nin : f->nout);
         return 1;
     }
-    char *end;
-    long i = k[0] == 'C' && k[1] >= '0' && k[1] <= '9' ? strtol(k + 1, &end, 10) : -1;
-    if (i < 0 || *end || (k[1] == '0' && k[2])) return 0;
-    int st = pc_map_unit_image(f, (int)i, pcl_newvalue(L, f->nout)->h);
+    int i = pc_map_unit_name(k);
+    if (i < 0) return 0;
+    int st = pc_map_unit_image(f, i, pcl_newvalue(L, f->nout)->h);
     return st != PC_EPOLE && st != PC_EDOMAIN;   /* a point at infinity is its direction */
 }
 
@@ -477,12 +407,12 @@ static const pcl_fn methods[] = {
     METHODSIG("f:xy", l_xy, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
     METHOD("f:is_affine", l_is_affine, NULL, "boolean", "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors."), METHOD("f:vanishing_points", l_vanishing, NULL, "Vx, Vy, Vz", "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity."),
     METHOD("f:show", l_show, conv_arg, NULL, "Print the matrix with its convention named and the columns aligned."), PCL_END};
-static const pcl_fn apply[] = {{.name = "f", .fn = l_apply, .self = self_map, .selftype = "map", .key = "__call",
-                                .topic = "f(p)", .callname = 1,
-                                .sig = "f(p) | f(x, y, ...) -> value", .help = "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector."}, PCL_END};
-static const pcl_fn affine_call[] = {{.name = "affine", .fn = l_affine, .args = affine_args, .result = "f", .self = self_table,
-                                      .selftype = "table", .key = "__call",
-                                      .sig = "affine({A, B, C}, {A2, B2, C2}) -> f", .help = "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension)."}, PCL_END};
+static const pcl_fn apply[] = {
+    {.name = "f", .fn = l_apply, .self = self_map, .selftype = "map", .key = "__call", .topic = "f(p)", .callname = 1, .sig = "f(p) | f(x, y, ...) -> value", .help = "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector."},
+    PCL_END};
+static const pcl_fn affine_call[] = {
+    {.name = "affine", .fn = l_affine, .args = affine_args, .result = "f", .self = self_table, .selftype = "table", .key = "__call", .sig = "affine({A, B, C}, {A2, B2, C2}) -> f", .help = "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension)."},
+    PCL_END};
 static const pcl_fn affine_fns[] = {
     {.name = "affine.frame", .fn = l_frame, .args = frame_args, .sig = "affine.frame(O, X, Y [, Z]) -> f", .help = "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors."},
     PCL_FN("affine.identity", l_identity, dim_arg, "f", "The identity map of n-space."), PCL_END};
@@ -501,12 +431,9 @@ static const pcl_fn ctors[] = {
     PCL_FN("map.cavalier", l_cavalier, alpha_arg, "f", "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees."),
     PCL_FN("map.cabinet", l_cabinet, alpha_arg, "f", "The oblique projection with k = 1/2; alpha defaults to 45 degrees."),
     PCL_FN("map.perspective", l_perspective, persp_args, "f", "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point."),
-    PCL_FN("map.perspective_pqr", l_perspective_pqr, pqr_args, "f",
-           "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
-    {.name = "map.foreshortening", .fn = l_foreshortening, .args = map_args, .result = "fx, fy, fz",
-     .help = "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3)."},
-    PCL_FN("map.axial_affinity", l_axial_affinity, affinity_args, "f",
-           "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection)."),
+    PCL_FN("map.perspective_pqr", l_perspective_pqr, pqr_args, "f", "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
+    {.name = "map.foreshortening", .fn = l_foreshortening, .args = map_args, .result = "fx, fy, fz", .help = "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3)."},
+    PCL_FN("map.axial_affinity", l_axial_affinity, affinity_args, "f", "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection)."),
     PCL_END};
 
 void pcl_open_map(lua_State *L) {

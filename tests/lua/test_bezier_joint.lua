@@ -17,7 +17,7 @@ local c0, c1 = buimov.g1_next(Pc, 3)
 eq((buimov.joint(Pc, bezier{c0, c1, P(6, 1), P(8, 3)})), "C1", "g = 1 is C1")
 eq((buimov.joint(Pc, bezier{P(4, 2), P(5, 2), P(7, 0)})), "C0", "a corner")
 eq((buimov.joint(Pc, bezier{P(4.5, 2), P(5, 2), P(7, 0)})), "none", "apart")
-err(function() buimov.g1_next(Pc, 2, -1) end, "buimov.g1_next: argument #3 (g) must be positive", "g < 0")
+err(function() buimov.g1_next(Pc, 2, -1) end, "buimov.g1_next: argument #3 (g) must be a positive number (the tangents keep their direction), got -1", "g < 0")
 err(function() buimov.joint(Pc, conic.ed(P(0, 0), P(4, 0), P(2, 3), 0.7)) end,
     "buimov.joint: argument #2 (Q) must be a polynomial Bezier curve", "rational")
 near(conic.ceva_to_ed(0.25), 0.5, 1e-15, "Ceva 1/4 is ED 1/2")

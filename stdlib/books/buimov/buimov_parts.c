@@ -1,5 +1,7 @@
 /* The parts of the textbook's constructions the bindings need (buimov_parts.h). */
 #include "buimov_parts.h"
+#include <math.h>
+#include "names.h"
 
 int pc_bezier_points(const pc_curve *c, double *out) {
     int ok = c->kind == PC_CURVE_BEZIER && c->nknots == 2;
@@ -13,4 +15,81 @@ int pc_bezier_points(const pc_curve *c, double *out) {
 const char *pc_bezier_joint_name(int kind) {
     static const char *names[4] = {"none", "C0", "G1", "C1"};
     return kind >= 0 && kind < 4 ? names[kind] : "none";
+}
+
+int pc_book_spline_check(int n, pc_book_ends *ends, int ends_given, int nd, int param_given, int nlen,
+                         const double *len, pc_why_call *w) {
+    const char *op = "buimov.spline";
+    char num[40];
+    if (!ends_given && nd == 2) *ends = PC_BOOK_CLAMPED;
+    if (*ends == PC_BOOK_CLAMPED && nd < 2)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 0, NULL, "clamped ends need both end tangents d0 and d1");
+    if ((*ends == PC_BOOK_CYCLIC || *ends == PC_BOOK_ANTICYCLIC) && n < 4)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 0, NULL, "cyclic and anticyclic ends need at least 4 points, got %d", n);
+    if (nlen >= 0 && param_given)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 0, NULL, "give the parameter as param or as lengths, not both");
+    if (nlen >= 0 && nlen != n - 1)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 0, "lengths", "must hold %d segment lengths (one per segment), got %d",
+                               n - 1, nlen);
+    for (int i = 0; i < nlen; i++)
+        if (!(len[i] > 0))
+            return pc_why_call_set(w, op, PC_EDOMAIN, 0, "lengths", "[%d] must be a positive length, got %s", i + 1,
+                                   pc_num_text(len[i], num, sizeof num));
+    return pc_why_call_set(w, op, PC_OK, 0, NULL, "");
+}
+
+int pc_book_basis_checked(const double *q, int nq, int i, int k, double t, double *out, pc_why_call *w) {
+    const char *op = "buimov.basis";
+    for (int j = 1; j < nq; j++)
+        if (q[j] < q[j - 1]) return pc_why_call_set(w, op, PC_EDOMAIN, 4, NULL, "must not decrease ([%d])", j + 1);
+    int st = pc_book_basis(q, nq, i, k, t, out);
+    return pc_why_call_set(w, op, st, 0, NULL, "N(i = %d, k = %d) needs the knots q[i] .. q[i + k]: %d knots given",
+                           i, k, nq);
+}
+
+const char *const pc_gen_kind_names[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
+const char *const pc_gen_method_names[] = {"param", "recurrence", "rational", "explicit", NULL};
+const char *const pc_conic_coef_kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
+
+int pc_circle2r_checked(const double p1[2], const double p2[2], double r, pc_circle_eq out[2], pc_why_call *w) {
+    const char *op = "plane.circle2r";
+    char d[40], r2[40];
+    int st = pc_circle2r(p1, p2, r, out);
+    if (st == PC_ECOINCIDENT)
+        return pc_why_call_set(w, op, st, 0, NULL, "the points A and B coincide (any circle of radius r through A will do)");
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 0, NULL, "the points are %s apart, farther than the diameter 2r = %s",
+                               pc_num_text(hypot(p2[0] - p1[0], p2[1] - p1[1]), d, sizeof d), pc_num_text(2 * r, r2, sizeof r2));
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+}
+
+int pc_circle_slopes_checked(const double p1[2], double m1, double x_end, double m2, pc_circle_eq out[2],
+                             double ends[4], int *nsol, pc_why_call *w) {
+    const char *op = "plane.circle_slopes";
+    int st = pc_circle_slopes(p1, m1, x_end, m2, out, ends, nsol);
+    if (st == PC_EDOMAIN && x_end == p1[0]) return pc_why_call_set(w, op, st, 3, NULL, "equals the abscissa of A");
+    if (st == PC_EDOMAIN) return pc_why_call_set(w, op, st, 0, NULL, "no circle through A has these slopes");
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+}
+
+int pc_conic_coef_checked(int kind, const double c[2], double A, int has_B, double B, double out[6], pc_why_call *w) {
+    const char *op = "plane.conic_coef";
+    if (kind != 2 && !has_B)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 4, NULL, "must be a finite number (the %s's second semi-axis), got nil",
+                               pc_conic_coef_kinds[kind]);
+    int st = pc_conic_coef(kind, c, A, B, out);
+    return pc_why_call_set(w, op, st, 0, NULL, "the semi-axes A and B must be positive");
+}
+
+int pc_conic_points_checked(pc_gen_kind kind, pc_gen_method method, double A, int has_B, double B, double step,
+                            int n, double *xy, pc_why_call *w) {
+    const char *op = "plane.points";
+    if ((kind == PC_GEN_ELLIPSE || kind >= PC_GEN_HYPERBOLA_SEC) && !has_B)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 0, "B", "must be a positive number (the %s's), got nil",
+                               pc_gen_kind_names[kind]);
+    if (method >= PC_GEN_RATIONAL && kind != PC_GEN_CIRCLE)
+        return pc_why_call_set(w, op, PC_EDOMAIN, 0, NULL, "the %s method is the circle's only", pc_gen_method_names[method]);
+    int st = pc_conic_points(kind, method, A, B, step, n, xy);
+    return pc_why_call_set(w, st == PC_EDOMAIN ? op : NULL, st, 0, NULL,
+                           "the steps leave the curve's domain (the explicit circle beyond x = -A, the sec form at 90 degrees)");
 }

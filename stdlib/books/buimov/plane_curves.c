@@ -137,6 +137,17 @@ void pc_conic_parabola_coef(double m, double n, double p, double out[6]) {
     out[3] = -2 * m; out[4] = -4 * p; out[5] = m * m + 4 * p * n;
 }
 
+/* the coefficients of a conic by kind: 0 ellipse, 1 hyperbola (semi-axes A, B), 2 parabola (p = A) */
+int pc_conic_coef(int kind, const double c[2], double A, double B, double out[6]) {
+    if (kind == 2) {
+        pc_conic_parabola_coef(c[0], c[1], A, out);
+        return PC_OK;
+    }
+    if (!(A > 0) || !(B > 0)) return PC_EDOMAIN;
+    (kind ? pc_conic_hyperbola_coef : pc_conic_ellipse_coef)(c[0], c[1], A, B, out);
+    return PC_OK;
+}
+
 /* --- generators ----------------------------------------------------------------------------- */
 
 int pc_conic_points(pc_gen_kind kind, pc_gen_method method, double A, double B, double step,

@@ -52,6 +52,10 @@ void pc_conic_ellipse_coef(double m, double n, double A, double B, double out[6]
 void pc_conic_hyperbola_coef(double m, double n, double A, double B, double out[6]);
 void pc_conic_parabola_coef(double m, double n, double p, double out[6]);
 
+/* The same by kind (0 ellipse, 1 hyperbola: semi-axes A, B; 2 parabola: p = A, vertex c):
+ * PC_EDOMAIN unless A > 0 and B > 0 for an ellipse or a hyperbola. */
+int pc_conic_coef(int kind, const double c[2], double A, double B, double out[6]);
+
 /* --- the book's point generators ------------------------------------------------------------ */
 typedef enum {
     PC_GEN_CIRCLE,          /* radius A: x = A cos th, y = A sin th */

@@ -2,6 +2,9 @@
 #include <math.h>
 #include <string.h>
 #include "korotky_parts.h"
+#include "graphdiff.h"
+#include "conic_surface.h"
+#include "names.h"
 
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status) {
@@ -88,3 +91,99 @@ const char *pc_meet_planes4_why(int st, int pencil) {
                       : "the planes do not meet (a spanning triple is collinear, or they are parallel)";
     return pc_strerror(st);
 }
+
+pc_curve *pc_ferguson_lambda_curve(int n, const double *p, const double tA[2], const double tE[2], double wA,
+                                   double wE, const double *lambda, int *bad, int *status) {
+    double lA = hypot(tA[0], tA[1]), lE = hypot(tE[0], tE[1]), dA[2], dE[2];
+    double dout[2 * PC_FERGUSON_MAXN], din[2 * PC_FERGUSON_MAXN];
+    if (!(lA > 0) || !(lE > 0)) {
+        *status = PC_EZERO;
+        return NULL;
+    }
+    for (int k = 0; k < 2; k++) dA[k] = tA[k] * wA / lA, dE[k] = tE[k] * wE / lE;
+    if (n > PC_FERGUSON_MAXN) *status = PC_EDIM;
+    else *status = pc_ferguson_lambda(2, n, p, dA, dE, lambda, dout, din, bad);
+    return *status == PC_OK ? pc_curve_hermite(2, n, p, dout, din, NULL, 0, status) : NULL;
+}
+
+int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
+    if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || (c->ncp != 3 && c->ncp != 5)) return PC_EDIM;
+    if (c->ncp == 5) return pc_conic_line_pair(c->cp, w) ? PC_ESAME_LINE : PC_EDIM;
+    return pc_conic_info_rquad(c->cp, out);
+}
+
+int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {
+    const char *op = "korotky.elastic";
+    char num[40];
+    if (st == PC_ECOINCIDENT) return pc_why_call_set(w, op, st, 0, NULL, "two consecutive points coincide");
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 0, NULL, "length %s is not longer than the polyline through the points",
+                               pc_num_text(len, num, sizeof num));
+    if (st == PC_EDIM && len > 0 && n == 2 && pieces == 1)
+        return pc_why_call_set(w, op, st, 0, NULL, "a length needs a free node: two points with one piece are a segment");
+    if (st == PC_EDIM)
+        return pc_why_call_set(w, op, st, 0, NULL,
+                               "%d points with %d pieces per span are too many unknowns; use fewer pieces", n, pieces);
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+}
+
+int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w) {
+    const char *op = "korotky.graphical_slope";
+    char lo[40], hi[40], at[40];
+    if (window < 3 || window > n)
+        return pc_why_call_set(w, op, PC_EDIM, 3, NULL, "must be an integer 3 to %d, got %d", n, window);
+    for (int i = 1; i < n; i++)
+        if (!(xy[2 * i] > xy[2 * i - 2]))
+            return pc_why_call_set(w, op, PC_EDOMAIN, 1, NULL, "[%d] must lie right of the sample before (x must increase)",
+                                   i + 1);
+    int st = pc_graphical_slope(n, xy, x, window, slope);
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 2, NULL, "must lie within the samples [%s, %s], got %s",
+                               pc_num_text(xy[0], lo, sizeof lo), pc_num_text(xy[2 * n - 2], hi, sizeof hi),
+                               pc_num_text(x, at, sizeof at));
+    return pc_why_call_set(w, op, st, 1, NULL, "(%s)", pc_strerror(st));
+}
+
+int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w) {
+    char at[40];
+    if (st != PC_EDOMAIN && st != PC_ESKEW && st != PC_ECOINCIDENT && st != PC_EZERO)
+        return pc_why_call_set(w, NULL, st, 0, NULL, "");
+    const char *why = st != PC_EDOMAIN ? pc_strerror(st) : ridge ? "a T must lie between the tangent lines"
+                                                                 : "T must lie between the tangent lines";
+    pc_num_text(u, at, sizeof at);
+    if (ridge)
+        return pc_why_call_set(w, "korotky.ridge_shell", st, 0, NULL, "no conic arc of the profile at u = %s (%s)", at, why);
+    return pc_why_call_set(w, "korotky.conic_sweep", st, 0, NULL,
+                           "no conic through U, V, T with the tangents towards P and Q at u = %s (%s)", at, why);
+}
+
+pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], const double nA[3], const double nB[3],
+                                       pc_curve *ridge, int *status, pc_why_call *w) {
+    double u = 0;
+    char at[40];
+    pc_surface *s = pc_surface_conic_revolve(A, B, nA, nB, ridge, &u, status);
+    if (s) return s;
+    if (*status == PC_ECOLLINEAR || *status == PC_EDOMAIN)
+        pc_why_call_set(w, "korotky.conic_revolve", *status, 0, NULL, "%s at u = %s", pc_conic_revolve_why(*status),
+                        pc_num_text(u, at, sizeof at));
+    else
+        pc_why_call_set(w, "korotky.conic_revolve", *status, 0, NULL, "%s", pc_conic_revolve_why(*status));
+    return NULL;
+}
+
+int pc_dome_tri_height_checked(const double *A, const double *B, const double *C, const double *D, double *h,
+                               pc_why_call *w) {
+    int st = pc_dome_tri_height_through(A, B, C, D, h);
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, "korotky.dome_tri", st, 4, NULL, "must stand above the inside of the triangle, got %%s");
+    return pc_why_call_set(w, "korotky.dome_tri", st, 0, NULL, "the triangle (%s)", pc_strerror(st));
+}
+
+const pc_why pc_korotky_why[] = {
+    {"korotky.dome_tri", PC_ECOLLINEAR, 0, NULL, "the triangle ABC is flat in plan"},
+    {"korotky.conic_elements", PC_EDIM, 1, NULL, "must be a 2-D conic arc (one rational quadratic piece) or the "
+     "coefficients {a, b, c, d, e, f}, got a curve of two pieces"},
+    {"korotky.conic_elements", PC_ECOLLINEAR, 0, NULL, "the arc is a straight segment (weight 0): no conic"},
+    {"korotky.conic_elements", PC_EDOMAIN, 0, NULL, "a degenerate conic (a line pair, or no real points)"},
+    {"korotky.conic_elements", PC_ENONFINITE, 1, NULL, "must be finite (it holds a NaN or an infinity)"},
+    {NULL, 0, 0, NULL, NULL}};

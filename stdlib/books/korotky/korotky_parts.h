@@ -8,11 +8,19 @@
 #include "ferguson.h"
 #include "pencils4.h"
 #include "conic_shells.h"
+#include "quadratic.h"
+#include "why_call.h"
 
 /* pc_poly_spline and pc_poly_spline_curve of the points p (n rows of 2, x increasing): the
  * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status);
+/* The Ferguson spline of system (22) through the n points p (rows of 2) with the unit end
+ * tangents tA, tE scaled to the moduli wA, wE and the n - 2 ratios lambda: pc_ferguson_lambda's
+ * Hermite segments as a curve (NULL: *status and *bad as pc_ferguson_lambda; PC_EZERO for a
+ * zero end tangent). */
+pc_curve *pc_ferguson_lambda_curve(int n, const double *p, const double tA[2], const double tE[2], double wA,
+                                   double wE, const double *lambda, int *bad, int *status);
 /* pc_surface_ridge_shell of the guides U, R, V, T1, T2, P, H, Q in that order, each a 3-D
  * curve or (c NULL) the fixed homogeneous point h[0..3] (a constant curve). */
 pc_surface *pc_surface_ridge_shell_of(const pc_pencil_point g[8], double *bad_u, int *status);
@@ -27,5 +35,32 @@ const char *pc_ferguson_why(int st);
 const char *pc_conic_arc_why(int st);
 const char *pc_conic_revolve_why(int st);
 const char *pc_meet_planes4_why(int st, int pencil);
+
+/* The elements of a 2-D conic arc c: one rational quadratic piece (pc_conic_info_rquad and its
+ * statuses), or the two pieces of korotky.conic_arc with T = W: PC_ESAME_LINE when they are the
+ * line pair U W V (the degenerate section AOD of Fig. 3c), its lines meeting at W (into w), else
+ * PC_EDIM.  PC_EDIM for any other curve. */
+int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]);
+
+/* The failure st of pc_elastic_length for n points, pieces per span (0: as the points allow)
+ * and the length len (0: free), explained in w (korotky.elastic; an empty table for a status
+ * it does not explain); returns st. */
+int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
+/* pc_graphical_slope with its conditions explained in w (korotky.graphical_slope): the window
+ * 3..n, the x increasing, x within the samples. */
+int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);
+
+/* The failure st at u of a sweep's conic explained in w (ridge: korotky.ridge_shell's profile
+ * arcs, else korotky.conic_sweep's conics; korotky.conic_revolve's are pc_conic_revolve_why's). */
+int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w);
+pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], const double nA[3], const double nB[3],
+                                       pc_curve *ridge, int *status, pc_why_call *w);
+/* pc_dome_tri_height_through explained in w (korotky.dome_tri: the apex D is argument #4). */
+int pc_dome_tri_height_checked(const double *A, const double *B, const double *C, const double *D, double *h,
+                               pc_why_call *w);
+
+/* The explanations of the statuses of the constructions of the korotky table, by the name the
+ * API gives each (why.h). */
+extern const pc_why pc_korotky_why[];
 
 #endif

@@ -137,3 +137,14 @@ pc_surface *pc_surface_two_pencils(const pc_pencil_point om[3], const pc_pencil_
     if (!s) pencils_free(d);
     return s;
 }
+
+pc_surface *pc_surface_two_pencils_checked(const pc_pencil_point om[3], const pc_pencil_point de[3],
+                                           int *status, int *meet) {
+    double out[5];
+    pc_surface *s = pc_surface_two_pencils(om, de, status);
+    *meet = s ? pc_surface_eval_h(s, .5, .5, 0, out) : PC_OK;
+    if (*meet == PC_OK) return s;
+    pc_surface_release(s);
+    *status = *meet;
+    return NULL;
+}

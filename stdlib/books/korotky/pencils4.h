@@ -33,5 +33,10 @@ typedef struct {
  * with pc_meet_planes4's status.  PC_EDIM unless every curve is 4-D. */
 pc_surface *pc_surface_two_pencils(const pc_pencil_point om[3], const pc_pencil_point de[3],
                                    int *status);
+/* The same, refused when the planes do not meet in one point at u = v = 0.5 (a surface whose
+ * every meet fails is a mistake in the data): then NULL with *meet (and *status) the status
+ * of pc_meet_planes4 there; *meet is PC_OK otherwise. */
+pc_surface *pc_surface_two_pencils_checked(const pc_pencil_point om[3], const pc_pencil_point de[3],
+                                           int *status, int *meet);
 
 #endif

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <string.h>
 #include "conic_surface.h"
+#include "korotky_parts.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -189,6 +190,12 @@ static void test_dome_tri(void **state) {
     NEAR(h, 2, 1e-12);
     double Dout[3] = {1, 1, 1};
     assert_int_equal(pc_dome_tri_height_through(A, B, C, Dout, &h), PC_EDOMAIN);
+    pc_why_call w;   /* explained: D is argument #4, its value shown by the raiser */
+    assert_int_equal(pc_dome_tri_height_checked(A, B, C, Dout, &h, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 4);
+    assert_string_equal(w.row[0].text, "must stand above the inside of the triangle, got %s");
+    assert_int_equal(pc_dome_tri_height_checked(A, B, C, D, &h, &w), PC_OK);
+    NEAR(h, 2, 1e-12);
     double F[3] = {2, 0, 0};
     assert_null(pc_surface_dome_tri(A, B, F, 1, &st));
     assert_int_equal(st, PC_ECOLLINEAR);

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 #include "korotky_parts.h"
+#include "conic_surface.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -85,10 +86,93 @@ static void test_why(void **state) {
     assert_string_equal(pc_meet_planes4_why(PC_ENONFINITE, 0), pc_strerror(PC_ENONFINITE));
 }
 
+/* the conic of an arc of korotky.conic_arc: (x - 1)^2 + 4 y^2 = 1 (test_korotky_shells.lua's
+ * ellipse); with T = W the line pair U W V, its lines meeting at W */
+static void test_conic_info_arc(void **state) {
+    (void)state;
+    const double U[2] = {0, 0}, tU[2] = {0, 1}, V[2] = {2, 0}, tV[2] = {0, 1}, T[2] = {1, .5};
+    double w, W[2];
+    int st;
+    pc_curve *c = pc_conic_arc(2, U, tU, V, tV, T, &w, &st);
+    assert_non_null(c);
+    pc_conic_info o;
+    assert_int_equal(pc_conic_info_arc(c, &o, W), PC_OK);
+    assert_int_equal(o.kind, PC_CK_ELLIPSE);
+    NEAR(o.center[0], 1, 1e-12); NEAR(o.center[1], 0, 1e-12);
+    NEAR(o.semi[0], 1, 1e-12); NEAR(o.semi[1], .5, 1e-12);
+    pc_curve_release(c);
+    const double sU[2] = {1, 1}, sV[2] = {1, -1}, Wp[2] = {1, 1};
+    c = pc_conic_arc(2, U, sU, V, sV, Wp, &w, &st);
+    assert_non_null(c);
+    assert_int_equal(pc_conic_info_arc(c, &o, W), PC_ESAME_LINE);
+    NEAR(W[0], 1, 1e-12); NEAR(W[1], 1, 1e-12);
+    pc_curve_release(c);
+    const double cub[12] = {0, 0, 1, 1, 2, 1, 2, 1, 1, 3, 0, 1};   /* a cubic: no conic arc */
+    c = pc_curve_bezier(2, 4, cub, &st);
+    assert_non_null(c);
+    assert_int_equal(pc_conic_info_arc(c, &o, W), PC_EDIM);
+    assert_int_equal(pc_why_find(pc_korotky_why, "korotky.conic_elements", PC_EDIM)->arg, 1);
+    pc_curve_release(c);
+    assert_non_null(strstr(pc_why_find(pc_korotky_why, "korotky.dome_tri", PC_ECOLLINEAR)->text, "flat"));
+}
+
+/* system (22) with the end tangents as directions scaled to the moduli: two points are one
+ * Hermite segment with the end derivatives w_A t_A / |t_A| and w_E t_E / |t_E| */
+static void test_ferguson_lambda_curve(void **state) {
+    (void)state;
+    const double p[4] = {0, 0, 1, 0}, tA[2] = {2, 0}, tE[2] = {0, 3};
+    int bad = -1, st;
+    pc_curve *c = pc_ferguson_lambda_curve(2, p, tA, tE, 1, 2, NULL, &bad, &st);
+    assert_non_null(c);
+    double d[4];
+    assert_int_equal(pc_curve_derivs(c, c->t0, 1, d), PC_OK);
+    NEAR(d[0], 0, 1e-15); NEAR(d[1], 0, 1e-15); NEAR(d[2], 1, 1e-14); NEAR(d[3], 0, 1e-14);
+    assert_int_equal(pc_curve_derivs(c, c->t1, 1, d), PC_OK);
+    NEAR(d[0], 1, 1e-15); NEAR(d[1], 0, 1e-15); NEAR(d[2], 0, 1e-14); NEAR(d[3], 2, 1e-14);
+    pc_curve_release(c);
+    const double zero[2] = {0, 0}, q[6] = {0, 0, 1, 1, 2, 0}, lam[1] = {-1};
+    assert_null(pc_ferguson_lambda_curve(2, p, zero, tE, 1, 1, NULL, &bad, &st));
+    assert_int_equal(st, PC_EZERO);
+    assert_null(pc_ferguson_lambda_curve(3, q, tA, tE, 1, 1, lam, &bad, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_int_equal(bad, 1);
+}
+
+/* the elastic reference's failures and the graphical slope's conditions, with their values */
+static void test_explained(void **state) {
+    (void)state;
+    pc_why_call w;
+    assert_int_equal(pc_elastic_explain(PC_EDOMAIN, 3, 0, 1.5, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "length 1.5 is not longer than the polyline through the points");
+    pc_elastic_explain(PC_EDIM, 2, 1, 3, &w);
+    assert_non_null(strstr(w.row[0].text, "a length needs a free node"));
+    pc_elastic_explain(PC_EDIM, 9, 4, 0, &w);
+    assert_string_equal(w.row[0].text, "9 points with 4 pieces per span are too many unknowns; use fewer pieces");
+    pc_elastic_explain(PC_ENOMEM, 9, 4, 0, &w);
+    assert_null(pc_why_find(w.row, "korotky.elastic", PC_ENOMEM));
+    /* y = x^2 sampled: the slope 2x at x = 1.5 from the parabola through the window */
+    const double xy[10] = {0, 0, 1, 1, 2, 4, 3, 9, 4, 16};
+    double m;
+    assert_int_equal(pc_graphical_slope_checked(5, xy, 1.5, 5, &m, &w), PC_OK);
+    NEAR(m, 3, 1e-12);
+    assert_int_equal(pc_graphical_slope_checked(5, xy, 1.5, 7, &m, &w), PC_EDIM);
+    assert_int_equal(w.row[0].arg, 3);
+    assert_string_equal(w.row[0].text, "must be an integer 3 to 5, got 7");
+    assert_int_equal(pc_graphical_slope_checked(5, xy, 9, 5, &m, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 2);
+    assert_string_equal(w.row[0].text, "must lie within the samples [0, 4], got 9");
+    const double back[6] = {0, 0, 2, 1, 1, 2};
+    assert_int_equal(pc_graphical_slope_checked(3, back, 1, 3, &m, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 1);
+    assert_non_null(strstr(w.row[0].text, "[3] must lie right of the sample before"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_poly_spline_points), cmocka_unit_test(test_ridge_shell_of),
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
+        cmocka_unit_test(test_conic_info_arc), cmocka_unit_test(test_ferguson_lambda_curve),
+        cmocka_unit_test(test_explained),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "pencils4.h"
 #include "conic_shells.h"
+#include "korotky_parts.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -120,6 +121,20 @@ static void test_sail(void **state) {
     pc_pencil_point om2[3] = {{NULL, {0, 6, .3, 2, 1}}, {bad, {0}}, {NULL, {0, 0, 1, 0, 0}}};
     assert_null(pc_surface_two_pencils(om2, de, &st));
     assert_int_equal(st, PC_EDIM);
+    /* checked: the sail is made, the pencils sharing a line at the centre refused there */
+    int meet;
+    s = pc_surface_two_pencils_checked(om, de, &st, &meet);
+    assert_non_null(s);
+    assert_int_equal(meet, PC_OK);
+    assert_int_equal(pc_surface_eval(s, .5, 1, S), PC_OK);
+    for (int k = 0; k < 4; k++) NEAR(S[k], C[k], 1e-12);
+    pc_surface_release(s);
+    assert_null(pc_surface_two_pencils_checked(om, de2, &st, &meet));
+    assert_int_equal(meet, PC_ESAME_LINE);
+    assert_int_equal(st, PC_ESAME_LINE);
+    assert_null(pc_surface_two_pencils_checked(om2, de, &st, &meet));
+    assert_int_equal(meet, PC_OK);
+    assert_int_equal(st, PC_EDIM);
     pc_curve_release(bad);
     pc_curve_release(ab);
     pc_curve_release(ac);
@@ -201,6 +216,21 @@ static void test_revolve(void **state) {
     assert_null(pc_surface_conic_revolve(A, B, n, n, through_axis, &bad_u, &st));
     assert_int_equal(st, PC_ECOLLINEAR);
     NEAR(bad_u, 0, 0);
+    pc_why_call w;   /* explained with the u where it failed */
+    assert_null(pc_conic_revolve_explained(A, B, n, n, through_axis, &st, &w));
+    assert_int_equal(st, PC_ECOLLINEAR);
+    assert_string_equal(w.row[0].text, "the ridge point lies on the axis AB at u = 0");
+    s = pc_conic_revolve_explained(A, B, n, n, ridge, &st, &w);
+    assert_non_null(s);
+    pc_surface_release(s);
+    assert_int_equal(pc_sweep_explain(1, PC_EDOMAIN, 0.25, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].op, "korotky.ridge_shell");
+    assert_string_equal(w.row[0].text, "no conic arc of the profile at u = 0.25 (a T must lie between the tangent lines)");
+    pc_sweep_explain(0, PC_ESKEW, 0.5, &w);
+    assert_string_equal(w.row[0].op, "korotky.conic_sweep");
+    assert_non_null(strstr(w.row[0].text, "at u = 0.5 ("));
+    pc_sweep_explain(0, PC_ENOMEM, 0.5, &w);
+    assert_null(w.row[0].op);
     const double flat[3] = {0, 0, 1};
     assert_null(pc_surface_conic_revolve(A, B, flat, n, ridge, &bad_u, &st));
     assert_int_equal(st, PC_EDOMAIN);

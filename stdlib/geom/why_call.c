@@ -1,0 +1,14 @@
+/* A why-table made for one call (why_call.h). */
+#include <stdarg.h>
+#include <stdio.h>
+#include "why_call.h"
+
+int pc_why_call_set(pc_why_call *w, const char *op, int st, int arg, const char *key, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(w->text, sizeof w->text, fmt, ap);
+    va_end(ap);
+    w->row[0] = (pc_why){st == 0 ? NULL : op, st, arg, key, w->text};
+    w->row[1] = (pc_why){NULL, 0, 0, NULL, NULL};
+    return st;
+}
