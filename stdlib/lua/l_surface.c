@@ -2,7 +2,7 @@
  * callable as surface(f, u0, u1, v0, v1) for a Lua function or a point equation, and the
  * methods of a surface s (s(u, v), s:iso, s:wireframe, s:shade, ...), declared below. */
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "wireframe.h"
 #include "pcl_scene.h"
 #include "pcl_draw.h"
@@ -17,11 +17,14 @@ typedef struct {
     const char *kind;
 } lsurf;
 
+static int genuine(lua_State *L, int idx, const lsurf *u) {
+    return lua_rawlen(L, idx) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG);
+}
+
 /* The surface object at idx or NULL; one given the metatable by the debug library is refused. */
 static lsurf *tosurf(lua_State *L, int idx) {
     lsurf *u = luaL_testudata(L, idx, SURF_MT);
-    int ok = !u || (lua_rawlen(L, idx) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG));
-    return pcl_genuine(L, idx, u, ok, "surface");
+    return pcl_genuine(L, idx, u, !u || genuine(L, idx, u), "surface");
 }
 
 pc_surface *pcl_tosurface(lua_State *L, int idx) {
@@ -57,8 +60,7 @@ static void *self_surf(lua_State *L, int idx) {
 
 static int s_gc(lua_State *L) {
     lsurf *u = luaL_testudata(L, 1, SURF_MT);
-    /* never a forged one */
-    if (u && lua_rawlen(L, 1) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG) && u->s) {
+    if (u && genuine(L, 1, u) && u->s) {   /* never a forged one */
         pcl_callback_state(L);
         pc_surface_release(u->s);
         u->s = NULL;
@@ -100,11 +102,17 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
 
 /* ---- constructors ------------------------------------------------------------------------------ */
 
+/* Push the surface a constructor made, or raise its status as pc_surface_why explains it. */
+static int made(lua_State *L, pc_surface *s, const int *st) {
+    if (!s) pcl_check(L, *st, pc_surface_why);
+    return pcl_push_made_surface(L, s, st, pcl_name(L));
+}
+
 static const pcl_arg bilinear_args[] = {A_SAMEPOINT("P00"), A_SAMEPOINT("P10"), A_SAMEPOINT("P01"),
                                         A_SAMEPOINT("P11"), PCL_END};
 PCL_BODY(l_bilinear, a) {
     int st;
-    return pcl_push_made_surface(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
+    return made(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st);
 }
 
 /* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
@@ -148,7 +156,7 @@ static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg bezier_args[] = {NET, PCL_END};
 PCL_BODY(l_bezier, a) {
     int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
-    return pcl_push_made_surface(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st, pcl_name(L));
+    return made(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st);
 }
 
 static const pcl_arg bspline_args[] = {NET, {.name = "p", .kind = PCL_INTEGER}, {.name = "q", .kind = PCL_INTEGER},
@@ -161,8 +169,7 @@ PCL_BODY(l_bspline, a) {
     double *uk, *vk;   /* the knots as bspline reads them (l_curve.c) */
     pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
     int st;
-    pc_surface *s = pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st);
-    return pcl_push_made_surface(L, s, &st, pcl_name(L));
+    return made(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), &st);
 }
 
 /* A list of 4 points (P) or 4 vectors (Pu, Pv, Puv) of the corners' dimension: out->list. */
@@ -191,36 +198,38 @@ PCL_BODY(l_hermite, a) {
         if (a[f].n != a[1].n)
             return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
     int st;
-    return pcl_push_made_surface(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st, pcl_name(L));
+    return made(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st);
 }
 
-static const pcl_arg ruled_args[] = {A_CURVE("c0", 0), A_CURVE("c1", 0), PCL_END};
+/* A curve of the dimension of argument #1, a curve too (ruled, coons: a plain function's). */
+static int read_like_first(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    pc_curve *c = pcl_tocurve(L, idx), *first = pcl_tocurve(L, 1);
+    if (!c) return 0;
+    if (idx > 1 && first && c->dim != first->dim)
+        pcl_argfail(L, idx, "is %d-D, but argument #1 (%s) is %d-D (mixed dimensions)", c->dim, a[1 - idx].name, first->dim);
+    out->obj = c;
+    return 1;
+}
+#define A_CURVE_LIKE(nm) {.name = nm, .kind = PCL_ANY, .read = read_like_first, .expect = "a curve"}
+
+static const pcl_arg ruled_args[] = {A_CURVE_LIKE("c0"), A_CURVE_LIKE("c1"), PCL_END};
 PCL_BODY(l_ruled, a) {
-    if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
-    return pcl_push_made_surface(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st, pcl_name(L));
+    return made(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st);
 }
 
-static const pcl_arg coons_args[] = {A_CURVE("cu0", 0), A_CURVE("cu1", 0), A_CURVE("c0v", 0), A_CURVE("c1v", 0), PCL_END};
+static const pcl_arg coons_args[] = {A_CURVE_LIKE("cu0"), A_CURVE_LIKE("cu1"), A_CURVE_LIKE("c0v"), A_CURVE_LIKE("c1v"),
+                                     PCL_END};
 PCL_BODY(l_coons, a) {
-    for (int i = 1; i < 4; i++)
-        if (a[i].n != a[0].n)
-            return pcl_argfail(L, i + 1, "is %d-D, but argument #1 (cu0) is %d-D (mixed dimensions)", a[i].n, a[0].n);
     int st;
-    pc_surface *s = pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st);
-    if (!s && st == PC_EDOMAIN)
-        return pcl_fail(L, "the boundary curves do not meet at the corners (cu0 and c0v must start "
-                           "together, cu0 must end where c1v starts, ...)");
-    return pcl_push_made_surface(L, s, &st, pcl_name(L));
+    return made(L, pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st), &st);
 }
 
 static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
                                           A_NUMOPT("v0", 0, "0"), A_NUMOPT("v1", 2 * M_PI, "2*pi"), PCL_END};
 PCL_BODY(l_revolution, a) {
     int st;
-    pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
-    if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
-    return pcl_push_made_surface(L, s, &st, pcl_name(L));
+    return made(L, pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st), &st);
 }
 
 /* f: a Lua function (u, v) -> point or a compiled point equation (l_expr.c). */
@@ -234,14 +243,13 @@ static const pcl_arg func_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_
                                     A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1"), PCL_END};
 /* surface(f, u0, u1, v0, v1): the __call of the table (the table itself is argument 1) */
 PCL_BODY(l_func, a) {
-    const char *fn = pcl_name(L);
     lua_settop(L, 6);
     lua_remove(L, 1);
     int st;
     if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
         double lo[2] = {a[1].x, a[3].x}, hi[2] = {a[2].x, a[4].x};
-        return pcl_push_made_surface(L, pcl_eq_surface(L, lo, hi, &st), &st, fn);
+        return made(L, pcl_eq_surface(L, lo, hi, &st), &st);
     }
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -257,7 +265,7 @@ PCL_BODY(l_func, a) {
     lua_pushvalue(L, 1);
     f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
     pcl_callback_state(L);
-    return pcl_push_made_surface(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st, fn);
+    return made(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st);
 }
 
 /* ---- methods --------------------------------------------------------------------------------- */
@@ -302,10 +310,7 @@ static const pcl_arg iso_args[] = {{.name = "family", .kind = PCL_ENUM, .choices
                                     .expect = "\"u\" (u = const) or \"v\" (v = const)"}, A_NUM("value"), PCL_END};
 PCL_METHOD(s_iso, lsurf *u, a) {
     int st;
-    pc_curve *c = pc_surface_iso(u->s, a[0].n, a[1].x, &st);
-    if (!c) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushcurve(L, c, "iso-curve");
-    return 1;
+    return pcl_push_made(L, pc_surface_iso(u->s, a[0].n, a[1].x, &st), &st, "iso-curve");
 }
 
 static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
@@ -316,11 +321,14 @@ PCL_METHOD(s_map, lsurf *u, a) {
     return pcl_push_made_surface(L, pc_surface_map(u->s, f, &st), &st, u->kind);
 }
 
-/* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the camera. */
-static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim) {
+/* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the
+ * camera, and the map to the screen through it into scr. */
+static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim, pc_map *scr) {
     const pc_map *f = m->obj;
     if (f && (f->nout != 2 || f->nin != dim)) pcl_keyfail(L, "map", "must be a map from %d-D to 2-D", dim);
-    return f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
+    f = f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
+    pcl_screen_map(L, f, scr);
+    return f;
 }
 
 /* s:wireframe{...}: the iso-lines drawn by the core (wireframe.h) through the map or the camera */
@@ -338,36 +346,23 @@ PCL_METHOD(s_wireframe, lsurf *u, a) {   /* opts; nu, nv, color, tol, map, hidde
                            .mesh = (int)a[7].x, .silhouette = (int)a[8].x, .boundary = (int)a[9].x};
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
-    const pc_map *f = drawing_map(L, &a[5], s->dim);
-    if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
-        return pcl_fail(L, "%s a 3-D surface seen through a projection",
-                        o.hidden ? "hidden lines need" : "a silhouette needs");
     pc_map scr;
-    pcl_screen_map(L, f, &scr);
+    const pc_map *f = drawing_map(L, &a[5], s->dim, &scr);
+    if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
+        return pcl_fail(L, "%s a 3-D surface seen through a projection", o.hidden ? "hidden lines need" : "a silhouette needs");
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
     pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
     int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
                                : pc_draw_wireframe(cv, s, &scr, &o, &drawn);
-    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
-    return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
+    pcl_check_canvas(L, cv, drawn);
+    pcl_check(L, st, NULL);
+    return 0;
 }
 
 /* ---- shading ----------------------------------------------------------------------------- */
 
-/* A colour of s:shade: any attribute that has a colour (a true colour above the screen's
- * colours included), else what pcl_read_color reads ("#rrggbb" allocates a true colour). */
-static int read_shade_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    int isint;
-    pc_rgb rgb;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    int ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR;
-    if (!ok || pc_canvas_rgb(pcl_canvas(L), (int)v, &rgb) != PC_OK)
-        return pcl_read_color(L, idx, a, out);
-    out->x = (double)v;
-    return 1;
-}
-
-#define SHADE_COLOR(nm) {.name = nm, .kind = PCL_ANY, .read = read_shade_color, .dflt = -1, .shown = "c"}
+/* A colour of s:shade: a true colour's attribute above the screen's colours too (dim 1). */
+#define SHADE_COLOR(nm) {.name = nm, .kind = PCL_ANY, .read = pcl_read_color, .dim = 1, .dflt = -1, .shown = "c"}
 static const pcl_arg shade_keys[] = {
     COUNT("nu", 1024, 40), COUNT("nv", 1024, 40), SHADE_COLOR("color"),
     {.name = "light", .kind = PCL_VECTOR, .dim = 3, .expect = "a 3-D vector (the direction towards the light)", .shown = "V(...)"},
@@ -378,29 +373,20 @@ static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 /* s:shade{...}: the quads drawn by the core (wireframe.h) through the map or the camera; their count */
 PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mesh, map */
     pc_canvas *cv = pcl_canvas(L);
-    pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
+    pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .has_light = a[4].present, .ambient = a[5].x};
     pc_rgb base;
-    pc_canvas_rgb(cv, a[3].present ? (int)a[3].x : cv->fg, &base);
-    int mesh = (int)a[6].x;
-    if (a[4].present) {
-        memcpy(o.light, a[4].v, sizeof o.light);
-        if (o.light[0] == 0 && o.light[1] == 0 && o.light[2] == 0)
-            return pcl_keyfail(L, "light", "must be a nonzero vector (the direction towards the light), got V(0, 0, 0)");
-        o.has_light = 1;
-    }
-    pc_surface *s = u->s;
-    if (s->dim != 3)
-        return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", s->dim);
-    const pc_map *f = drawing_map(L, &a[7], 3);
     pc_map scr;
-    pcl_screen_map(L, f, &scr);
+    size_t n;
+    memcpy(o.light, a[4].v, sizeof o.light);
+    pc_canvas_rgb(cv, a[3].present ? (int)a[3].x : cv->fg, &base);
+    if (u->s->dim != 3)
+        return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", u->s->dim);
+    drawing_map(L, &a[7], 3, &scr);
     pcl_callback_state(L);
     pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
-    size_t n;
-    int drawn, st = pc_draw_shaded_surface(cv, sc, s, &scr, &o, base, mesh, &n, &drawn);
-    if (st == PC_ESINGULAR) return pcl_fail(L, "the projection is singular (it flattens space onto a line)");
-    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    int drawn, st = pc_draw_shaded_surface(cv, sc, u->s, &scr, &o, base, (int)a[6].x, &n, &drawn);
+    pcl_check_canvas(L, cv, drawn);   /* (a failing canvas and a failing geometry exclude each other) */
+    pcl_check(L, st, pc_surface_why);
     lua_pushinteger(L, (lua_Integer)n);
     return 1;
 }
@@ -412,64 +398,51 @@ static lsurf *meta_self(lua_State *L) {
     return u;
 }
 
+/* the fields s.dim, s.kind (its constructor's name without "surface."), s.u0 .. s.v1, then the methods */
 static int s_index(lua_State *L) {
+    static const char *const DOMAIN[] = {"u0", "u1", "v0", "v1", NULL};
     lsurf *u = meta_self(L);
-    const char *k = lua_tostring(L, 2);
-    if (k) {
-        pc_surface *s = u->s;
-        if (!strcmp(k, "dim")) { lua_pushinteger(L, s->dim); return 1; }
-        if (!strcmp(k, "kind")) { lua_pushstring(L, u->kind + (strncmp(u->kind, "surface.", 8) ? 0 : 8)); return 1; }
-        if (!strcmp(k, "u0")) { lua_pushnumber(L, s->u0); return 1; }
-        if (!strcmp(k, "u1")) { lua_pushnumber(L, s->u1); return 1; }
-        if (!strcmp(k, "v0")) { lua_pushnumber(L, s->v0); return 1; }
-        if (!strcmp(k, "v1")) { lua_pushnumber(L, s->v1); return 1; }
-    }
-    lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(1));
+    const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "";
+    double domain[4] = {u->s->u0, u->s->u1, u->s->v0, u->s->v1};
+    int i = 0;
+    while (DOMAIN[i] && strcmp(DOMAIN[i], k)) i++;
+    if (!strcmp(k, "dim")) lua_pushinteger(L, u->s->dim);
+    else if (!strcmp(k, "kind")) lua_pushstring(L, u->kind + (strncmp(u->kind, "surface.", 8) ? 0 : 8));
+    else if (DOMAIN[i]) lua_pushnumber(L, domain[i]);
+    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top */
     return 1;
 }
 
 static int s_tostring(lua_State *L) {
     lsurf *u = meta_self(L);
     pc_surface *s = u->s;
-    lua_pushfstring(L, "%s(%d-D, u in [%s, %s], v in [%s, %s])", u->kind, s->dim,
-                    pcl_pushnum(L, s->u0), pcl_pushnum(L, s->u1), pcl_pushnum(L, s->v0),
-                    pcl_pushnum(L, s->v1));
+    lua_pushfstring(L, "%s(%d-D, u in [%s, %s], v in [%s, %s])", u->kind, s->dim, pcl_pushnum(L, s->u0),
+                    pcl_pushnum(L, s->u1), pcl_pushnum(L, s->v0), pcl_pushnum(L, s->v1));
     return 1;
 }
 
 static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 #define METHOD(nm, f, decl, res, text) {.name = nm, .fn = f, .args = decl, .result = res, .help = text, .self = self_surf, .selftype = "surface"}
+#define METHOD_SIG(nm, f, decl, forms, text) {.name = nm, .fn = f, .args = decl, .sig = forms, .help = text, .self = self_surf, .selftype = "surface"}
 static const pcl_fn methods[] = {
     METHOD("s:eval", s_call, uv_args, "point", "The point of the surface at (u, v), as s(u, v)."),
     METHOD("s:partials", s_partials, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
     METHOD("s:normal", s_normal, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
-    {.name = "s:iso", .fn = s_iso, .args = iso_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:iso(\"u\"|\"v\", value) -> curve",
-     .help = "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."},
+    METHOD_SIG("s:iso", s_iso, iso_args, "s:iso(\"u\"|\"v\", value) -> curve", "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."),
     METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),
-    {.name = "s:wireframe", .fn = s_wireframe, .args = wireframe_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
-     .help = "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."},
-    {.name = "s:shade", .fn = s_shade, .args = shade_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
-     .help = "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."},
+    METHOD_SIG("s:wireframe", s_wireframe, wireframe_args, "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}", "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."),
+    METHOD_SIG("s:shade", s_shade, shade_args, "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads", "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "s", .fn = s_call, .args = uv_args, .self = self_surf, .selftype = "surface",
-                               .key = "__call", .topic = "s(u, v)", .callname = 1, .sig = "s(u, v) -> point",
-                               .help = "The point of a surface at (u, v); s:partials and s:normal give its derivatives and normal."}, PCL_END};
-static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = self_table,
-                                    .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
+static const pcl_fn call[] = {{.name = "s", .fn = s_call, .args = uv_args, .self = self_surf, .selftype = "surface", .key = "__call", .topic = "s(u, v)", .callname = 1, .sig = "s(u, v) -> point", .help = "The point of a surface at (u, v); s:partials and s:normal give its derivatives and normal."}, PCL_END};
+static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = self_table, .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("surface.bilinear", l_bilinear, bilinear_args, "s", "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1)."),
     PCL_FN("surface.bezier", l_bezier, bezier_args, "s", "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational)."),
     PCL_FN("surface.bspline", l_bspline, bspline_args, "s", "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline."),
-    {.name = "surface.hermite", .fn = l_hermite, .args = hermite_args, .result = "s",
-     .help = "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1))."},
+    {.name = "surface.hermite", .fn = l_hermite, .args = hermite_args, .result = "s", .help = "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1))."},
     PCL_FN("surface.ruled", l_ruled, ruled_args, "s", "The ruled surface (1 - v) c0(u) + v c1(u) between two curves."),
     PCL_FN("surface.coons", l_coons, coons_args, "s", "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v)."),
-    {.name = "surface.revolution", .fn = l_revolution, .args = revolution_args, .sig = "surface.revolution(profile, A, d [, v0, v1]) -> s",
-     .help = "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn)."},
+    {.name = "surface.revolution", .fn = l_revolution, .args = revolution_args, .sig = "surface.revolution(profile, A, d [, v0, v1]) -> s", .help = "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn)."},
     PCL_END};
 
 void pcl_open_surface(lua_State *L) {
