@@ -172,33 +172,15 @@ PCL_BODY(l_bspline, a) {
     return made(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), &st);
 }
 
-/* A list of 4 points (P) or 4 vectors (Pu, Pv, Puv) of the corners' dimension: out->list. */
-static int read_corners(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    if (!lua_istable(L, idx) || luaL_len(L, idx) != 4) return 0;
-    pcl_arg one = {.name = a->name, .kind = strcmp(a->name, "P") ? PCL_VECTOR : PCL_POINT, .flags = PCL_SAMEDIM};
-    double *x = lua_newuserdatauv(L, sizeof(double) * 4 * PC_MAXDIM, 0);
-    for (int i = 0; i < 4; i++) {
-        lua_geti(L, idx, i + 1);
-        pcl_val v;
-        pcl_readone(L, lua_gettop(L), 1, i + 1, &one, i ? out->n : 0, &v);   /* [1]'s dimension for all */
-        memcpy(x + i * v.n, v.v, sizeof(double) * (size_t)v.n);
-        out->n = v.n;
-        lua_pop(L, 1);
-    }
-    out->list = x;
-    return 1;
-}
-#define CORNERS(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_corners, \
+/* P: 4 points, Pu, Pv, Puv: 4 vectors of their dimension, at the corners in this order */
+#define CORNERS(nm, k, what) {.name = nm, .kind = k, .flags = PCL_REQ | PCL_SAMEDIM, .lo = 4, .hi = 4, \
     .expect = "a list of 4 " what " (corners (0,0), (1,0), (0,1), (1,1))", .shown = "{4}"}
-static const pcl_arg hermite_keys[] = {CORNERS("P", "points"), CORNERS("Pu", "vectors"), CORNERS("Pv", "vectors"),
-                                       CORNERS("Puv", "vectors"), PCL_END};
+static const pcl_arg hermite_keys[] = {CORNERS("P", PCL_POINTS, "points"), CORNERS("Pu", PCL_VECTORS, "vectors"),
+                                       CORNERS("Pv", PCL_VECTORS, "vectors"), CORNERS("Puv", PCL_VECTORS, "vectors"), PCL_END};
 static const pcl_arg hermite_args[] = {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = hermite_keys}, PCL_END};
-PCL_BODY(l_hermite, a) {
-    for (int f = 2; f <= 4; f++)
-        if (a[f].n != a[1].n)
-            return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
+PCL_BODY(l_hermite, a) {   /* spec; P, Pu, Pv, Puv */
     int st;
-    return made(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st);
+    return made(L, pc_surface_hermite(a[1].dim, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st);
 }
 
 /* A curve of the dimension of argument #1, a curve too (ruled, coons: a plain function's). */
