@@ -31,14 +31,10 @@ typedef struct {
     double v[];
 } lsamples;
 
-/* ---- the pool and the userdata ------------------------------------------------------------ */
-
 static int pool_gc(lua_State *L) {
-    pc_expr_pool **pp = lua_touserdata(L, 1);
-    if (pp && *pp) {
-        pc_expr_pool_free(*pp);
-        *pp = NULL;
-    }
+    pc_expr_pool **pp = lua_touserdata(L, 1);   /* the registry's, never a script's */
+    pc_expr_pool_free(*pp);
+    *pp = NULL;
     return 0;
 }
 
@@ -113,8 +109,6 @@ static int node_of(lua_State *L, int idx) {
     return lua_type(L, idx) == LUA_TNUMBER && isfinite(x) ? pc_expr_const(pool(L), x, &st) : -1;
 }
 
-/* ---- operations (checked and worded in the core: pc_expr_apply) ---------------------------- */
-
 /* the failure st of making or running an equation, in the running declared function's name */
 static int status_fail(lua_State *L, int st) { return pcl_fail(L, "%s", pc_expr_why(st)); }
 
@@ -172,8 +166,6 @@ int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
     return toeq(L, idx) ? apply(L, PC_EQV_SMOOTH, idx, 1, &how) : 0;
 }
 
-/* ---- math.* on equations ------------------------------------------------------------------- */
-
 /* the base of math.log(x, base): a positive number other than 1 */
 static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
@@ -220,8 +212,6 @@ static void wrap_math(lua_State *L) {
     }
 }
 
-/* ---- param, evaluation, methods -------------------------------------------------------------- */
-
 /* a parameter's name: a string of 1 to 31 characters without a zero byte */
 static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
@@ -237,9 +227,6 @@ PCL_BODY(l_param, a) {
     push_eq(L, id);
     return 1;
 }
-/* the parameters of an equation in order: their indices */
-static int params_of(lua_State *L, int id, int *in) { return pc_expr_param_list(pool(L), id, in); }
-
 /* "t and s", "t, s and u"; "none" */
 static const char *names_of(lua_State *L, int n, const int *in) {
     char buf[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 2)];
@@ -250,7 +237,7 @@ static const char *names_of(lua_State *L, int n, const int *in) {
 static pc_expr_prog *prog_of(lua_State *L, leq *e) {
     if (!e->prog) {
         int in[PC_EXPR_MAXPARAM], st;
-        int n = params_of(L, e->id, in);
+        int n = pc_expr_param_list(pool(L), e->id, in);
         e->prog = pc_expr_compile(pool(L), e->id, n, in, &st);
         if (!e->prog) status_fail(L, st);
     }
@@ -276,7 +263,7 @@ static void read_named(lua_State *L, int n, const int *in, pcl_arg key, pcl_arg 
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
     leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), given = lua_gettop(L) - 1;
+    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(pool(L), e->id, in), given = lua_gettop(L) - 1;
     double x[PC_EXPR_MAXPARAM], h[PC_MAXDIM + 1];
     char why[512];
     pc_expr_pool *p = pool(L);
@@ -313,7 +300,7 @@ static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expec
 PCL_METHOD(eq_with, leq *e, a) {
     pcl_val v[PC_EXPR_MAXPARAM] = {0};
     pcl_arg keys[PC_EXPR_MAXPARAM + 1];
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), r = e->id, st;
+    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(pool(L), e->id, in), r = e->id, st;
     read_named(L, n, in, (pcl_arg)A_ANY(NULL, read_subst, "a number or a scalar equation"), keys, v);
     for (int j = 0; j < n; j++)
         if (v[j].present && (r = pc_expr_subst(pool(L), r, in[j], v[j].n, &st)) < 0)
@@ -392,7 +379,7 @@ static const pcl_arg sample_args[] = {A_NUM("a"), A_NUM("b"),
     {.name = "into", .kind = PCL_ANY, .flags = PCL_OPT, .expect = "samples (from M:sample)"}, PCL_END};
 PCL_METHOD(eq_sample, leq *e, a) {
     long n = (long)a[2].x;
-    int in[PC_EXPR_MAXPARAM], np = params_of(L, e->id, in);
+    int in[PC_EXPR_MAXPARAM], np = pc_expr_param_list(pool(L), e->id, in);
     if (np != 1) return pcl_fail(L, "the equation must have one parameter, it has %s", names_of(L, np, in));
     pc_expr_prog *prog = prog_of(L, e);
     int dim = pc_expr_prog_dim(prog), w = dim ? dim : 1;
@@ -419,7 +406,7 @@ PCL_METHOD(eq_sample, leq *e, a) {
 static int eq_index(lua_State *L) {
     leq *e = toeq(L, 1);
     const char *k = e ? lua_tostring(L, 2) : NULL;
-    int in[PC_EXPR_MAXPARAM], n = k && !strcmp(k, "params") ? params_of(L, e->id, in) : -1;
+    int in[PC_EXPR_MAXPARAM], n = k && !strcmp(k, "params") ? pc_expr_param_list(pool(L), e->id, in) : -1;
     if (k && !strcmp(k, "dim")) lua_pushinteger(L, pc_expr_dim(pool(L), e->id));
     else if (n < 0) lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top */
     else lua_createtable(L, n, 0);
@@ -429,8 +416,6 @@ static int eq_index(lua_State *L) {
     }
     return 1;
 }
-
-/* ---- samples ----------------------------------------------------------------------------------- */
 
 static int s_len(lua_State *L) {
     lsamples *s = tosamples(L, 1);
@@ -469,8 +454,6 @@ static int s_tostring(lua_State *L) {
     return 1;
 }
 
-/* ---- curve(M, t0, t1), surface(M, u0, u1, v0, v1) ------------------------------------------------ */
-
 /* the curve or surface of the point equation at 1 over the box lo..hi of its parameters */
 static void *eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
     char why[1024];
@@ -485,8 +468,6 @@ pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) { return
 pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *status) {
     return eq_object(L, 2, lo, hi, status);
 }
-
-/* ---- registration ----------------------------------------------------------------------------------- */
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = self_eq, .selftype = "equation"}
 static const pcl_fn methods[] = {

@@ -68,8 +68,7 @@ static int s_gc(lua_State *L) {
     return 0;
 }
 
-/* ---- a Lua function as a surface ------------------------------------------------------------- */
-
+/* A Lua function as a surface */
 typedef struct { int ref, dim; } luasurf;
 
 static void luasurf_free(void *ud) {
@@ -99,8 +98,6 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     lua_settop(L, top);
     return PC_OK;
 }
-
-/* ---- constructors ------------------------------------------------------------------------------ */
 
 /* Push the surface a constructor made, or raise its status as pc_surface_why explains it. */
 static int made(lua_State *L, pc_surface *s, const int *st) {
@@ -250,28 +247,21 @@ PCL_BODY(l_func, a) {
     return made(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st);
 }
 
-/* ---- methods --------------------------------------------------------------------------------- */
-
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
 
 PCL_METHOD(s_call, lsurf *u, a) {
     double out[PC_MAXDIM];
     int st = pc_surface_eval(u->s, a[0].x, a[1].x, out);
     if (st == PC_IMPROPER) return pcl_fail(L, "the point at (%s, %s) is at infinity", pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushpoint(L, u->s->dim, out);
-    return 1;
+    pcl_check(L, st, NULL);
+    return pcl_push_results(L, u->s->dim, "p", out);
 }
 
 PCL_METHOD(s_partials, lsurf *u, a) {
     double out[3 * PC_MAXDIM];
-    int st = pc_surface_partials(u->s, a[0].x, a[1].x, out);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     int d = u->s->dim;
-    pcl_pushpoint(L, d, out);
-    pcl_pushvector(L, d, out + d);
-    pcl_pushvector(L, d, out + 2 * d);
-    return 3;
+    pcl_check(L, pc_surface_partials(u->s, a[0].x, a[1].x, out), NULL);
+    return pcl_push_results(L, d, "p v v", out, out + d, out + 2 * d);
 }
 
 PCL_METHOD(s_normal, lsurf *u, a) {
@@ -281,9 +271,8 @@ PCL_METHOD(s_normal, lsurf *u, a) {
     if (st == PC_EZERO)
         return pcl_fail(L, "the surface is singular at (%s, %s): its partial derivatives are parallel",
                         pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushvector(L, 3, n);
-    return 1;
+    pcl_check(L, st, NULL);
+    return pcl_push_results(L, 3, "v", n);
 }
 
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
@@ -340,8 +329,6 @@ PCL_METHOD(s_wireframe, lsurf *u, a) {   /* opts; nu, nv, color, tol, map, hidde
     pcl_check(L, st, NULL);
     return 0;
 }
-
-/* ---- shading ----------------------------------------------------------------------------- */
 
 /* A colour of s:shade: a true colour's attribute above the screen's colours too (dim 1). */
 #define SHADE_COLOR(nm) {.name = nm, .kind = PCL_ANY, .read = pcl_read_color, .dim = 1, .dflt = -1, .shown = "c"}
