@@ -332,12 +332,11 @@ static const char *namer(void *ud, int dim, const double *h) {
 
 /* the text of equation id (names: the stack index of M:show's table, or 0), measured first */
 static void push_text(lua_State *L, int id, int names) {
-    namer_ud ud = {L, names};
-    int len = pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
-    char *buf = lua_newuserdatauv(L, (size_t)len + 1, 0);
-    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, buf, (size_t)len + 1);
-    lua_pushlstring(L, buf, (size_t)len);
-    lua_remove(L, -2);
+    namer_ud ud = {L, names};   /* (the namer's use of the stack is balanced, as a buffer needs) */
+    luaL_Buffer b;
+    size_t len = (size_t)pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
+    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, luaL_buffinitsize(L, &b, len + 1), len + 1);
+    luaL_pushresultsize(&b, len);
 }
 
 static int eq_tostring(lua_State *L) {
