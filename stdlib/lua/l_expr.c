@@ -69,9 +69,7 @@ int pcl_isequation(lua_State *L, int idx) { return toeq(L, idx) != NULL; }
 
 static void push_eq(lua_State *L, int id) {
     leq *e = lua_newuserdatauv(L, sizeof *e, 0);
-    e->self = PCL_SELF_TAG(e, &EQ_TAG);
-    e->id = id;
-    e->prog = NULL;
+    *e = (leq){PCL_SELF_TAG(e, &EQ_TAG), id, NULL};
     luaL_setmetatable(L, EQ_MT);
 }
 
@@ -234,13 +232,11 @@ static const char *names_of(lua_State *L, int n, const int *in) {
     return lua_pushstring(L, n ? buf : "none");
 }
 
+/* the program of e, compiled on first use with its parameters in order as inputs */
 static pc_expr_prog *prog_of(lua_State *L, leq *e) {
-    if (!e->prog) {
-        int in[PC_EXPR_MAXPARAM], st;
-        int n = pc_expr_param_list(pool(L), e->id, in);
-        e->prog = pc_expr_compile(pool(L), e->id, n, in, &st);
-        if (!e->prog) status_fail(L, st);
-    }
+    int in[PC_EXPR_MAXPARAM], st;
+    if (!e->prog) e->prog = pc_expr_compile(pool(L), e->id, pc_expr_param_list(pool(L), e->id, in), in, &st);
+    if (!e->prog) status_fail(L, st);
     return e->prog;
 }
 

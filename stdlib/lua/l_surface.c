@@ -38,9 +38,7 @@ pc_surface *pcl_tosurface(lua_State *L, int idx) {
 int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const char *kind) {
     if (!s) pcl_raise_status(L, kind, *status);
     lsurf *u = lua_newuserdatauv(L, sizeof *u, 0);
-    u->self = PCL_SELF_TAG(u, &SURF_TAG);
-    u->s = s;
-    u->kind = kind;
+    *u = (lsurf){PCL_SELF_TAG(u, &SURF_TAG), s, kind};
     luaL_setmetatable(L, SURF_MT);
     return 1;
 }
