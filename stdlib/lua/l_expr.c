@@ -218,7 +218,6 @@ static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return out->s && len > 0 && len < PC_EXPR_MAXNAME && strlen(out->s) == len;
 }
 static const pcl_arg param_args[] = {A_ANY("name", read_name, "a name of 1 to 31 characters"), PCL_END};
-
 PCL_BODY(l_param, a) {
     int st, id = pc_expr_param(pool(L), a[0].s, &st);
     if (id < 0) return pcl_fail(L, "at most %d parameters per script, and %s would be one more", PC_EXPR_MAXPARAM, a[0].s);
@@ -292,7 +291,6 @@ static int read_subst(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 
 static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expect = "a table {name = value}"}, PCL_END};
-
 PCL_METHOD(eq_with, leq *e, a) {
     pcl_val v[PC_EXPR_MAXPARAM] = {0};
     pcl_arg keys[PC_EXPR_MAXPARAM + 1];
@@ -387,9 +385,7 @@ PCL_METHOD(eq_sample, leq *e, a) {
         lua_pushvalue(L, 5);
     } else {
         s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
-        s->self = PCL_SELF_TAG(s, &SAMPLES_TAG);
-        s->n = n;
-        s->dim = dim;
+        *s = (lsamples){PCL_SELF_TAG(s, &SAMPLES_TAG), n, dim};
         luaL_setmetatable(L, SAMPLES_MT);
     }
     if (pc_expr_sample_at(pool(L), prog, in[0], a[0].x, a[1].x, n, s->v, why, sizeof why) != PC_OK)

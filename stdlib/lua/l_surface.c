@@ -66,15 +66,8 @@ static int s_gc(lua_State *L) {
     return 0;
 }
 
-/* A Lua function as a surface */
-typedef struct { int ref, dim; } luasurf;
-
-static void luasurf_free(void *ud) {
-    luasurf *f = ud;
-    lua_State *L = pcl_current_state();
-    if (L) luaL_unref(L, LUA_REGISTRYINDEX, f->ref);
-    free(f);
-}
+/* A Lua function as a surface: its reference in fn first, so pcl_luafn_free frees it all */
+typedef struct { pcl_luafn fn; int dim; } luasurf;
 
 static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     luasurf *f = ud;
@@ -82,7 +75,7 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     lua_State *L = pcl_current_state();
     int top = lua_gettop(L);
     if (!lua_checkstack(L, f->dim + 4)) return PC_ENOMEM;
-    lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, f->fn.ref[0]);
     lua_pushnumber(L, u);
     lua_pushnumber(L, v);
     if (lua_pcall(L, 2, 1, 0) != LUA_OK) return pcl_callback_failed(L);
@@ -238,15 +231,13 @@ PCL_BODY(l_func, a) {
     lua_pop(L, 1);
     luasurf *f = malloc(sizeof *f);
     if (!f) return pcl_fail(L, "out of memory");
-    f->dim = d;
     lua_pushvalue(L, 1);
-    f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    *f = (luasurf){.fn = {.n = 1, .ref = {luaL_ref(L, LUA_REGISTRYINDEX)}, .fname = pcl_name(L)}, .dim = d};
     pcl_callback_state(L);
-    return made(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st);
+    return made(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, pcl_luafn_free, f, &st), &st);
 }
 
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
-
 PCL_METHOD(s_call, lsurf *u, a) {
     double out[PC_MAXDIM];
     int st = pc_surface_eval(u->s, a[0].x, a[1].x, out);
@@ -335,9 +326,8 @@ static const pcl_arg shade_keys[] = {
     {.name = "light", .kind = PCL_VECTOR, .dim = 3, .expect = "a 3-D vector (the direction towards the light)", .shown = "V(...)"},
     {.name = "ambient", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = 1, .shown = "0"},
     SHADE_COLOR("mesh"), {.name = "map", .kind = PCL_MAP, .shown = "m"}, PCL_END};
-static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
-
 /* s:shade{...}: the quads drawn by the core (wireframe.h) through the map or the camera; their count */
+static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mesh, map */
     pc_canvas *cv = pcl_canvas(L);
     pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .has_light = a[4].present, .ambient = a[5].x};
