@@ -59,8 +59,8 @@ static leq *toeq(lua_State *L, int idx) {
 static lsamples *tosamples(lua_State *L, int idx) {
     lsamples *s = luaL_testudata(L, idx, SAMPLES_MT);
     size_t len = lua_rawlen(L, idx);
-    int ok = !s || (len >= sizeof *s && s->self == PCL_SELF_TAG(s, &SAMPLES_TAG) && s->dim >= 0 && s->dim <= PC_MAXDIM &&
-                    s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
+    int ok = !s || (len >= sizeof *s && s->self == PCL_SELF_TAG(s, &SAMPLES_TAG) && s->dim >= 0 &&
+                    s->dim <= PC_MAXDIM && s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
                     len == sizeof *s + sizeof(double) * (size_t)s->n * (size_t)(s->dim ? s->dim : 1));
     return pcl_genuine(L, idx, s, ok, "samples");
 }
@@ -190,8 +190,7 @@ static const pcl_arg x_arg[] = {A_ANY("x", NULL, "a number or a scalar equation"
                              "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
 static const pcl_fn MATHDECL[][2] = {
     MATHDECL("sin"), MATHDECL("cos"), MATHDECL("tan"), MATHDECL("exp"),
-    {{.name = "math.log", .fn = math_fn, .sig = "math.log(x [, base]) -> number | equation",
-      .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
+    {{.name = "math.log", .fn = math_fn, .sig = "math.log(x [, base]) -> number | equation", .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
     MATHDECL("sqrt"), MATHDECL("abs")};
 
 /* (pcl_open_expr restores the stack) */

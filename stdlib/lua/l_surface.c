@@ -164,19 +164,22 @@ PCL_BODY(l_bspline, a) {
 #define CORNERS(nm, k, what) {.name = nm, .kind = k, .flags = PCL_REQ | PCL_SAMEDIM, .lo = 4, .hi = 4, \
     .expect = "a list of 4 " what " (corners (0,0), (1,0), (0,1), (1,1))", .shown = "{4}"}
 static const pcl_arg hermite_keys[] = {CORNERS("P", PCL_POINTS, "points"), CORNERS("Pu", PCL_VECTORS, "vectors"),
-                                       CORNERS("Pv", PCL_VECTORS, "vectors"), CORNERS("Puv", PCL_VECTORS, "vectors"), PCL_END};
+                                       CORNERS("Pv", PCL_VECTORS, "vectors"), CORNERS("Puv", PCL_VECTORS, "vectors"),
+                                       PCL_END};
 static const pcl_arg hermite_args[] = {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = hermite_keys}, PCL_END};
 PCL_BODY(l_hermite, a) {   /* spec; P, Pu, Pv, Puv */
     int st;
     return made(L, pc_surface_hermite(a[1].dim, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st);
 }
 
-/* A curve of the dimension of argument #1, a curve too (ruled, coons: a plain function's). */
+/* A curve of argument #1's dimension (ruled, coons: plain functions, so the value at idx is
+ * argument #idx, declared by a, and a[1 - idx] declares argument #1). */
 static int read_like_first(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pc_curve *c = pcl_tocurve(L, idx), *first = pcl_tocurve(L, 1);
     if (!c) return 0;
     if (idx > 1 && first && c->dim != first->dim)
-        pcl_argfail(L, idx, "is %d-D, but argument #1 (%s) is %d-D (mixed dimensions)", c->dim, a[1 - idx].name, first->dim);
+        pcl_argfail(L, idx, "is %d-D, but argument #1 (%s) is %d-D (mixed dimensions)", c->dim, a[1 - idx].name,
+                    first->dim);
     out->obj = c;
     return 1;
 }
@@ -309,7 +312,8 @@ PCL_METHOD(s_wireframe, lsurf *u, a) {   /* opts; nu, nv, color, tol, map, hidde
     pc_map scr;
     const pc_map *f = drawing_map(L, &a[5], s->dim, &scr);
     if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
-        return pcl_fail(L, "%s a 3-D surface seen through a projection", o.hidden ? "hidden lines need" : "a silhouette needs");
+        return pcl_fail(L, "%s a 3-D surface seen through a projection",
+                        o.hidden ? "hidden lines need" : "a silhouette needs");
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
     pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
     int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
