@@ -85,14 +85,11 @@ static int eq_gc(lua_State *L) {
 /* "a 2-D point equation", "a scalar equation", "a number", "a point", ... */
 static const char *describe(lua_State *L, int idx) {
     leq *e = toeq(L, idx);
-    if (e) {
-        int d = pc_expr_dim(pool(L), e->id);
-        return d ? lua_pushfstring(L, "a %d-D point equation", d) : "a scalar equation";
-    }
-    pcl_value *v = pcl_tovalue(L, idx);
+    pcl_value *v = e ? NULL : pcl_tovalue(L, idx);
+    int d = e ? pc_expr_dim(pool(L), e->id) : 0;
+    if (e) return d ? lua_pushfstring(L, "a %d-D point equation", d) : "a scalar equation";
     if (v) return lua_pushfstring(L, "the %d-D value %s", v->n, luaL_tolstring(L, idx, NULL));
-    if (lua_type(L, idx) == LUA_TNUMBER) return "a number";
-    return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
+    return lua_type(L, idx) == LUA_TNUMBER ? "a number" : lua_pushfstring(L, "a %s", luaL_typename(L, idx));
 }
 
 /* The node of an operand: an equation, a number (a constant), a point or vector (a constant
@@ -165,8 +162,7 @@ int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
 }
 
 /* the base of math.log(x, base): a positive number other than 1 */
-static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_base(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x) && out->x > 0 && out->x != 1;
 }
@@ -210,8 +206,7 @@ static void wrap_math(lua_State *L) {
 }
 
 /* a parameter's name: a string of 1 to 31 characters without a zero byte */
-static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_name(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     size_t len = 0;
     out->s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
     return out->s && len > 0 && len < PC_EXPR_MAXNAME && strlen(out->s) == len;
@@ -283,8 +278,7 @@ static int eq_call(lua_State *L) {
 }
 
 /* A value of M:with{s = ...}: a number or a scalar equation, its node into out->n. */
-static int read_subst(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_subst(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->n = node_of(L, idx);
     return out->n >= 0 && !pc_expr_dim(pool(L), out->n);
 }

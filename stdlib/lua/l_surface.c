@@ -105,8 +105,7 @@ PCL_BODY(l_bilinear, a) {
 
 /* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
  * homogeneous rows in a scratch userdata above the arguments: out->list, out->v = nu, nv, dim. */
-static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_net(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
     int m = (int)luaL_len(L, idx), n = 0, d = 0;
     if (m < 2) return pcl_argfail(L, idx, "must have at least 2 rows, got %d", m);
@@ -206,8 +205,7 @@ PCL_BODY(l_revolution, a) {
 }
 
 /* f: a Lua function (u, v) -> point or a compiled point equation (l_expr.c). */
-static int read_surface_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
+static int read_surface_fn(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     return lua_isfunction(L, idx) || pcl_isequation(L, idx);
 }
 
@@ -417,5 +415,4 @@ void pcl_open_surface(lua_State *L) {
     pcl_register(L, -1, func_call, 0);
     lua_setmetatable(L, -2);
     lua_setfield(L, module, "surface");
-    lua_settop(L, module);
 }
