@@ -133,6 +133,13 @@ int pc_expr_meet(pc_expr_pool *pool, int a1, int a2, int b1, int b2, int *lambda
  * by sum w_i B_i(s) when the curve is rational.  expr_curve.c. */
 int pc_expr_bezier(pc_expr_pool *pool, int dim, int degree, const double *cp, double t0,
                    double t1, int t, int *status);
+/* The curve c applied to the scalar equation t (c(t) of a param): pc_expr_bezier of a
+ * single-piece Bezier curve; or -1 with the reason in why (t not scalar, c of another kind or
+ * of several pieces, out of memory). */
+int pc_expr_curve_at(pc_expr_pool *pool, const pc_curve *c, int t, char *why, size_t size);
+/* What a failure st of making or running an equation means: "out of memory (too many equation
+ * nodes)", else pc_strerror's text.  expr_run.c. */
+const char *pc_expr_why(int st);
 
 /* --- operations with their checks (expr_apply.c) ------------------------------------------
  * The operations of the point calculus on operands that may be equations, each checking its
@@ -222,6 +229,13 @@ int pc_expr_eval(pc_expr_prog *p, int m, const double *x, int order, double *out
  * Cartesian: n rows of dim (a value's coordinates divided by its weight; a weight-0 value
  * as it is).  PC_ENONFINITE (with *bad) as pc_expr_eval. */
 int pc_expr_sample(pc_expr_prog *p, double a, double b, long n, double *out, long *bad);
+/* The same with the reason a call fails worded in why (expr_run.c): the value of p at x, the
+ * parameters in[0..n-1] (PC_ENONFINITE: "the value at t = 0.5 is not finite (...)"), and the
+ * samples of p in its parameter k ("the value at t = 0.25 is not finite"); the status. */
+int pc_expr_value_at(const pc_expr_pool *pool, pc_expr_prog *p, int n, const int *in, const double *x,
+                     double *h, char *why, size_t size);
+int pc_expr_sample_at(const pc_expr_pool *pool, pc_expr_prog *p, int k, double a, double b, long n,
+                      double *out, char *why, size_t size);
 
 /* The weight of a value program over the box lo..hi of its inputs (nin each), probed at a
  * fixed set of points inside it: PC_KIND_POINT if it is 1 throughout, PC_KIND_VECTOR if 0,

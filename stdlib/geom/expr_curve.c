@@ -1,6 +1,8 @@
 /* A Bezier curve applied to a scalar equation (expr.h pc_expr_bezier): the composed point
  * equation, so C(u^2) or conic.ed(...)(t) with t a param is written as the book writes it
- * ((2.97) retyped no more), with exact derivatives. */
+ * ((2.97) retyped no more), with exact derivatives; and the same for any curve, with the reason
+ * it cannot be applied worded (pc_expr_curve_at). */
+#include <stdio.h>
 #include "expr.h"
 #include "status.h"
 
@@ -49,4 +51,20 @@ int pc_expr_bezier(pc_expr_pool *pool, int dim, int degree, const double *cp, do
     }
     /* a rational curve: the weighted sum over its weight, a point again (weight 1) */
     return rational ? pc_expr_div(pool, num, wsum, status) : num;
+}
+
+int pc_expr_curve_at(pc_expr_pool *pool, const pc_curve *c, int t, char *why, size_t size) {
+    int d = pc_expr_dim(pool, t), st;
+    if (d) {
+        snprintf(why, size, "the parameter must be a number or a scalar equation, got a %d-D point equation", d);
+        return -1;
+    }
+    if (c->kind != PC_CURVE_BEZIER || c->nknots != 2) {
+        snprintf(why, size, "only a single-piece Bezier curve (a conic arc, a Bezier of any degree) can be applied "
+                 "to an equation; this one has %s", c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
+        return -1;
+    }
+    int r = pc_expr_bezier(pool, c->dim, c->degree, c->cp, c->t0, c->t1, t, &st);
+    if (r < 0) snprintf(why, size, "%s", pc_expr_why(st));
+    return r;
 }

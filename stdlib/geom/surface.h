@@ -14,6 +14,7 @@
 #ifndef PC_SURFACE_H
 #define PC_SURFACE_H
 #include "curve.h"
+#include "why.h"
 
 typedef enum {
     PC_SURF_BEZIER, PC_SURF_BSPLINE, PC_SURF_RULED, PC_SURF_COONS, PC_SURF_REVOLUTION,
@@ -108,6 +109,10 @@ pc_curve *pc_surface_iso(pc_surface *s, int dir, double value, int *status);
  * patches (a projective map keeps them rational), a FUNC surface holding a reference to s
  * otherwise. */
 pc_surface *pc_surface_map(pc_surface *s, const pc_map *f, int *status);
+
+/* The explanations of the statuses of the surface constructors and of s:shade, by the names
+ * the bindings give them (surface_why.c). */
+extern const pc_why pc_surface_why[];
 
 /* --- internal to stdlib/geom/surface*.c (not an API) ------------------------------------- */
 pc_surface *pc_surf_alloc(pc_surface_kind kind, int dim, int *status);

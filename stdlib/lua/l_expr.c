@@ -31,14 +31,10 @@ typedef struct {
     double v[];
 } lsamples;
 
-/* ---- the pool and the userdata ------------------------------------------------------------ */
-
 static int pool_gc(lua_State *L) {
-    pc_expr_pool **pp = lua_touserdata(L, 1);
-    if (pp && *pp) {
-        pc_expr_pool_free(*pp);
-        *pp = NULL;
-    }
+    pc_expr_pool **pp = lua_touserdata(L, 1);   /* the registry's, never a script's */
+    pc_expr_pool_free(*pp);
+    *pp = NULL;
     return 0;
 }
 
@@ -62,11 +58,10 @@ static leq *toeq(lua_State *L, int idx) {
 /* Samples: exactly the header and n values of max(dim, 1) numbers (pcl.h: forged userdata). */
 static lsamples *tosamples(lua_State *L, int idx) {
     lsamples *s = luaL_testudata(L, idx, SAMPLES_MT);
-    if (!s) return NULL;
     size_t len = lua_rawlen(L, idx);
-    int ok = len >= sizeof *s && s->self == PCL_SELF_TAG(s, &SAMPLES_TAG) && s->dim >= 0 && s->dim <= PC_MAXDIM && s->n >= 0 &&
-             (size_t)s->n <= len / sizeof(double) &&
-             len == sizeof *s + sizeof(double) * (size_t)s->n * (size_t)(s->dim ? s->dim : 1);
+    int ok = !s || (len >= sizeof *s && s->self == PCL_SELF_TAG(s, &SAMPLES_TAG) && s->dim >= 0 &&
+                    s->dim <= PC_MAXDIM && s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
+                    len == sizeof *s + sizeof(double) * (size_t)s->n * (size_t)(s->dim ? s->dim : 1));
     return pcl_genuine(L, idx, s, ok, "samples");
 }
 
@@ -74,9 +69,7 @@ int pcl_isequation(lua_State *L, int idx) { return toeq(L, idx) != NULL; }
 
 static void push_eq(lua_State *L, int id) {
     leq *e = lua_newuserdatauv(L, sizeof *e, 0);
-    e->self = PCL_SELF_TAG(e, &EQ_TAG);
-    e->id = id;
-    e->prog = NULL;
+    *e = (leq){PCL_SELF_TAG(e, &EQ_TAG), id, NULL};
     luaL_setmetatable(L, EQ_MT);
 }
 
@@ -92,39 +85,27 @@ static int eq_gc(lua_State *L) {
 /* "a 2-D point equation", "a scalar equation", "a number", "a point", ... */
 static const char *describe(lua_State *L, int idx) {
     leq *e = toeq(L, idx);
-    if (e) {
-        int d = pc_expr_dim(pool(L), e->id);
-        return d ? lua_pushfstring(L, "a %d-D point equation", d) : "a scalar equation";
-    }
-    pcl_value *v = pcl_tovalue(L, idx);
+    pcl_value *v = e ? NULL : pcl_tovalue(L, idx);
+    int d = e ? pc_expr_dim(pool(L), e->id) : 0;
+    if (e) return d ? lua_pushfstring(L, "a %d-D point equation", d) : "a scalar equation";
     if (v) return lua_pushfstring(L, "the %d-D value %s", v->n, luaL_tolstring(L, idx, NULL));
-    if (lua_type(L, idx) == LUA_TNUMBER) return "a number";
-    return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
+    return lua_type(L, idx) == LUA_TNUMBER ? "a number" : lua_pushfstring(L, "a %s", luaL_typename(L, idx));
 }
 
 /* The node of an operand: an equation, a number (a constant), a point or vector (a constant
  * value); -1 for anything else. */
 static int node_of(lua_State *L, int idx) {
     leq *e = toeq(L, idx);
-    if (e) return e->id;
+    pcl_value *v = e ? NULL : pcl_tovalue(L, idx);
+    double x = lua_tonumber(L, idx);
     int st;
-    if (lua_type(L, idx) == LUA_TNUMBER) {
-        double x = lua_tonumber(L, idx);
-        if (!isfinite(x)) return -1;
-        return pc_expr_const(pool(L), x, &st);
-    }
-    pcl_value *v = pcl_tovalue(L, idx);
+    if (e) return e->id;
     if (v) return pc_expr_vconst(pool(L), v->n, v->h, &st);
-    return -1;
+    return lua_type(L, idx) == LUA_TNUMBER && isfinite(x) ? pc_expr_const(pool(L), x, &st) : -1;
 }
-
-/* ---- operations (checked and worded in the core: pc_expr_apply) ---------------------------- */
 
 /* the failure st of making or running an equation, in the running declared function's name */
-static int status_fail(lua_State *L, int st) {
-    if (st == PC_ENOMEM) return pcl_fail(L, "out of memory (too many equation nodes)");
-    return pcl_fail(L, "%s", pc_strerror(st));
-}
+static int status_fail(lua_State *L, int st) { return pcl_fail(L, "%s", pc_expr_why(st)); }
 
 /* v of the n operands from stack index first: push the results, or raise the core's message
  * with each "@k" replaced by what operand k is (a metamethod's message is whole) */
@@ -168,47 +149,31 @@ int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
 
 int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
     leq *e = toeq(L, idx);
-    if (!e) return 0;
-    if (pc_expr_dim(pool(L), e->id))
-        return pcl_error(L, "curve: the parameter must be a number or a scalar equation, got %s", describe(L, idx));
-    if (c->kind != PC_CURVE_BEZIER || c->nknots != 2)
-        return pcl_error(L, "curve: only a single-piece Bezier curve (a conic arc, a Bezier of any degree) "
-                         "can be applied to an equation; this one has %s",
-                         c->kind == PC_CURVE_FUNC ? "a function" : "several pieces");
-    int st, r = pc_expr_bezier(pool(L), c->dim, c->degree, c->cp, c->t0, c->t1, e->id, &st);
-    if (r < 0)   /* c(t) names "curve" itself (it may not be declared) */
-        return pcl_error(L, "curve: %s", st == PC_ENOMEM ? "out of memory (too many equation nodes)" : pc_strerror(st));
-    push_eq(L, r);
-    return 1;
+    char why[512];
+    int r = e ? pc_expr_curve_at(pool(L), c, e->id, why, sizeof why) : 0;
+    if (r < 0) return pcl_error(L, "curve: %s", why);   /* c(t) names "curve" itself (it may not be declared) */
+    if (e) push_eq(L, r);
+    return e != NULL;
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
-    if (!toeq(L, idx)) return 0;
     pc_expr_how how = {.g = g};
-    return apply(L, PC_EQV_SMOOTH, idx, 1, &how);
+    return toeq(L, idx) ? apply(L, PC_EQV_SMOOTH, idx, 1, &how) : 0;
 }
 
-/* ---- math.* on equations ------------------------------------------------------------------- */
-
-static const struct { const char *name; pc_expr_op op; } MATHFN[] = {
-    {"sin", PC_EX_SIN}, {"cos", PC_EX_COS}, {"tan", PC_EX_TAN}, {"exp", PC_EX_EXP},
-    {"log", PC_EX_LOG}, {"sqrt", PC_EX_SQRT}, {"abs", PC_EX_ABS}};
-enum { NMATH = sizeof MATHFN / sizeof *MATHFN };
-
 /* the base of math.log(x, base): a positive number other than 1 */
-static int read_base(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_base(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x) && out->x > 0 && out->x != 1;
 }
 static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number other than 1");
 
-/* math.NAME, upvalues Lua's own function and the index into MATHFN: a number takes one type
+/* math.NAME, upvalues Lua's own function and the index into MATHDECL: a number takes one type
  * test and goes to Lua's function, so math.sin(x) keeps its speed (and Lua's own messages for
  * what is neither a number nor an equation). */
 static int math_fn(lua_State *L) {
     if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return lua_tocfunction(L, PCL_UPVALUE(1))(L);
-    pc_expr_how how = {.fn = MATHFN[lua_tointeger(L, PCL_UPVALUE(2))].op};
+    pc_expr_how how = {.fn = PC_EX_SIN + (pc_expr_op)lua_tointeger(L, PCL_UPVALUE(2))};   /* in the order of MATHDECL */
     pcl_val base = {0};
     if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), toeq(L, 1)->id))   /* log(x, base) */
         pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
@@ -219,17 +184,16 @@ static int math_fn(lua_State *L) {
 static const pcl_arg x_arg[] = {A_ANY("x", NULL, "a number or a scalar equation"), PCL_END};
 #define MATHDECL(nm) {PCL_FN("math." nm, math_fn, x_arg, "number | equation", \
                              "Lua's math." nm " of a number; of a scalar equation (param), the equation of it."), PCL_END}
-static const pcl_fn MATHDECL_OF[NMATH][2] = {
+static const pcl_fn MATHDECL[][2] = {
     MATHDECL("sin"), MATHDECL("cos"), MATHDECL("tan"), MATHDECL("exp"),
-    {{.name = "math.log", .fn = math_fn, .sig = "math.log(x [, base]) -> number | equation",
-      .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
+    {{.name = "math.log", .fn = math_fn, .sig = "math.log(x [, base]) -> number | equation", .help = "Lua's math.log of a number; of a scalar equation (param), the equation of its logarithm (to base, default e)."}, PCL_END},
     MATHDECL("sqrt"), MATHDECL("abs")};
 
 /* (pcl_open_expr restores the stack) */
 static void wrap_math(lua_State *L) {
     if (lua_getglobal(L, "math") != LUA_TTABLE) return;
-    for (int i = 0; i < NMATH; i++) {
-        lua_getfield(L, -1, MATHFN[i].name);
+    for (int i = 0; i < (int)(sizeof MATHDECL / sizeof *MATHDECL); i++) {
+        lua_getfield(L, -1, MATHDECL[i][0].name + 5);   /* "math.sin" */
         lua_CFunction f = lua_tocfunction(L, -1);
         if (f == math_fn) lua_getupvalue(L, -1, 2);   /* wrapped already: Lua's function again */
         lua_CFunction orig = lua_tocfunction(L, -1);
@@ -237,84 +201,68 @@ static void wrap_math(lua_State *L) {
         if (!orig) continue;                          /* not Lua's: left alone */
         lua_pushcfunction(L, orig);
         lua_pushinteger(L, i);
-        pcl_register(L, -3, MATHDECL_OF[i], 2);
+        pcl_register(L, -3, MATHDECL[i], 2);
     }
 }
 
-/* ---- param, evaluation, methods -------------------------------------------------------------- */
-
 /* a parameter's name: a string of 1 to 31 characters without a zero byte */
-static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_name(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     size_t len = 0;
     out->s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
     return out->s && len > 0 && len < PC_EXPR_MAXNAME && strlen(out->s) == len;
 }
 static const pcl_arg param_args[] = {A_ANY("name", read_name, "a name of 1 to 31 characters"), PCL_END};
-
 PCL_BODY(l_param, a) {
     int st, id = pc_expr_param(pool(L), a[0].s, &st);
     if (id < 0) return pcl_fail(L, "at most %d parameters per script, and %s would be one more", PC_EXPR_MAXPARAM, a[0].s);
     push_eq(L, id);
     return 1;
 }
-/* the parameters of an equation in order: their indices */
-static int params_of(lua_State *L, int id, int *in) { return pc_expr_param_list(pool(L), id, in); }
-
-/* "t and s", "t, s and u" */
+/* "t and s", "t, s and u"; "none" */
 static const char *names_of(lua_State *L, int n, const int *in) {
     char buf[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 2)];
     pc_expr_param_names(pool(L), n, in, buf, sizeof buf);
-    return lua_pushstring(L, buf);
+    return lua_pushstring(L, n ? buf : "none");
 }
 
+/* the program of e, compiled on first use with its parameters in order as inputs */
 static pc_expr_prog *prog_of(lua_State *L, leq *e) {
-    if (!e->prog) {
-        int in[PC_EXPR_MAXPARAM], st;
-        int n = params_of(L, e->id, in);
-        e->prog = pc_expr_compile(pool(L), e->id, n, in, &st);
-        if (!e->prog) status_fail(L, st);
-    }
+    int in[PC_EXPR_MAXPARAM], st;
+    if (!e->prog) e->prog = pc_expr_compile(pool(L), e->id, pc_expr_param_list(pool(L), e->id, in), in, &st);
+    if (!e->prog) status_fail(L, st);
     return e->prog;
 }
-
-static void push_result(lua_State *L, int dim, const double *h) {
-    if (!dim) {
-        lua_pushnumber(L, h[0]);
-        return;
-    }
-    pcl_value *v = pcl_newvalue(L, dim);
-    memcpy(v->h, h, sizeof(double) * (size_t)(dim + 1));
-}
-
 
 static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
 static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
 
-/* The parameters in[0..n-1] as the keys of an option table {t =, s =}, each as key declares
- * it: M{t = ..., s = ...} and M:with{s = ...} are read and worded by the layer. */
-static void param_keys(lua_State *L, int n, const int *in, pcl_arg key, pcl_arg *keys) {
-    for (int j = 0; j < n; j++, keys++) {
-        *keys = key;
-        keys->name = pc_expr_param_name(pool(L), in[j]);
+/* The table at 2 as an option table whose keys are the parameters in[0..n-1], each declared
+ * as key (keys: n + 1), into v: M{t = ..., s = ...} and M:with{s = ...} are read and worded by
+ * the layer. */
+static void read_named(lua_State *L, int n, const int *in, pcl_arg key, pcl_arg *keys, pcl_val *v) {
+    pcl_arg table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
+    for (int j = 0; j < n; j++) {
+        keys[j] = key;
+        keys[j].name = pc_expr_param_name(pool(L), in[j]);
     }
-    *keys = (pcl_arg){0};
+    keys[n] = (pcl_arg){0};
+    pcl_read_options(L, 2, 1, &table, v);
 }
 
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
     leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), given = lua_gettop(L) - 1;
-    double x[PC_EXPR_MAXPARAM];
+    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(pool(L), e->id, in), given = lua_gettop(L) - 1;
+    double x[PC_EXPR_MAXPARAM], h[PC_MAXDIM + 1];
+    char why[512];
     pc_expr_pool *p = pool(L);
     if (lua_istable(L, 2)) {
-        pcl_arg keys[PC_EXPR_MAXPARAM + 1], table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
+        pcl_arg keys[PC_EXPR_MAXPARAM + 1];
         pcl_val v[PC_EXPR_MAXPARAM] = {0};
-        param_keys(L, n, in, (pcl_arg){.kind = PCL_NUMBER, .flags = PCL_REQ}, keys);
-        pcl_read_options(L, 2, 1, &table, v);
+        read_named(L, n, in, (pcl_arg){.kind = PCL_NUMBER, .flags = PCL_REQ}, keys, v);
         for (int j = 0; j < n; j++) x[j] = v[j].x;
     } else if (given != n) {
-        return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", n ? names_of(L, n, in) : "none", given);
+        return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", names_of(L, n, in), given);
     }
     for (int j = 0; j < n && !lua_istable(L, 2); j++) {
         pcl_arg num = {.name = pc_expr_param_name(p, in[j]), .kind = PCL_NUMBER};
@@ -322,35 +270,25 @@ static int eq_call(lua_State *L) {
         x[j] = lua_tonumber(L, j + 2);
         if (lua_type(L, j + 2) != LUA_TNUMBER || !isfinite(x[j])) pcl_readone(L, j + 2, j + 1, 0, &num, 0, &v);
     }
-    pc_expr_prog *prog = prog_of(L, e);
-    double h[PC_MAXDIM + 1];
-    int st = pc_expr_eval(prog, 1, x, 0, h, NULL);
-    if (st == PC_ENONFINITE) {
-        char at[PC_EXPR_MAXPARAM * (PC_EXPR_MAXNAME + 28)];
-        pc_expr_param_values(p, n, in, x, at, sizeof at);
-        return pcl_fail(L, "the value at %s is not finite (NaN or infinite: outside the domain of a function, or a division by zero)", at);
-    }
-    if (st != PC_OK) return status_fail(L, st);
-    push_result(L, pc_expr_dim(p, e->id), h);
+    if (pc_expr_value_at(p, prog_of(L, e), n, in, x, h, why, sizeof why) != PC_OK) return pcl_fail(L, "%s", why);
+    int dim = pc_expr_dim(p, e->id);
+    if (dim) memcpy(pcl_newvalue(L, dim)->h, h, sizeof(double) * (size_t)(dim + 1));
+    else lua_pushnumber(L, h[0]);
     return 1;
 }
 
 /* A value of M:with{s = ...}: a number or a scalar equation, its node into out->n. */
-static int read_subst(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_subst(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->n = node_of(L, idx);
     return out->n >= 0 && !pc_expr_dim(pool(L), out->n);
 }
 
 static const pcl_arg with_args[] = {{.name = "values", .kind = PCL_TABLE, .expect = "a table {name = value}"}, PCL_END};
-
-static int eq_with(lua_State *L) {
-    pcl_val a[1] = {0}, v[PC_EXPR_MAXPARAM] = {0};
-    leq *e = PCL_READ(L, a);
-    int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in), r = e->id, st;
-    pcl_arg keys[PC_EXPR_MAXPARAM + 1], table = {.name = "values", .kind = PCL_OPTIONS, .keys = keys};
-    param_keys(L, n, in, (pcl_arg)A_ANY(NULL, read_subst, "a number or a scalar equation"), keys);
-    pcl_read_options(L, 2, 1, &table, v);
+PCL_METHOD(eq_with, leq *e, a) {
+    pcl_val v[PC_EXPR_MAXPARAM] = {0};
+    pcl_arg keys[PC_EXPR_MAXPARAM + 1];
+    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(pool(L), e->id, in), r = e->id, st;
+    read_named(L, n, in, (pcl_arg)A_ANY(NULL, read_subst, "a number or a scalar equation"), keys, v);
     for (int j = 0; j < n; j++)
         if (v[j].present && (r = pc_expr_subst(pool(L), r, in[j], v[j].n, &st)) < 0)
             return pcl_keyfail(L, keys[j].name, "cannot be substituted: %s", pc_strerror(st));
@@ -364,29 +302,28 @@ typedef struct { lua_State *L; int tbl; } namer_ud;
 static const char *namer(void *ud, int dim, const double *h) {
     namer_ud *n = ud;
     lua_State *L = n->L;
-    const char *found = NULL;
     lua_pushnil(L);
-    while (!found && lua_next(L, n->tbl)) {
+    while (lua_next(L, n->tbl)) {
         pcl_value *v = pcl_tovalue(L, -1);
-        if (v && v->n == dim && lua_type(L, -2) == LUA_TSTRING) {
-            int same = 1;
-            for (int i = 0; same && i <= dim; i++) same = v->h[i] == h[i];
-            if (same) found = lua_tostring(L, -2);   /* the key stays in the table */
-        }
+        int same = v && v->n == dim && lua_type(L, -2) == LUA_TSTRING;
+        for (int i = 0; same && i <= dim; i++) same = v->h[i] == h[i];
         lua_pop(L, 1);
+        if (same) {
+            const char *name = lua_tostring(L, -1);   /* the key, which stays in the table */
+            lua_pop(L, 1);
+            return name;
+        }
     }
-    if (found) lua_pop(L, 1);
-    return found;
+    return NULL;
 }
 
 /* the text of equation id (names: the stack index of M:show's table, or 0), measured first */
 static void push_text(lua_State *L, int id, int names) {
-    namer_ud ud = {L, names};
-    int len = pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
-    char *buf = lua_newuserdatauv(L, (size_t)len + 1, 0);
-    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, buf, (size_t)len + 1);
-    lua_pushlstring(L, buf, (size_t)len);
-    lua_remove(L, -2);
+    namer_ud ud = {L, names};   /* (the namer's use of the stack is balanced, as a buffer needs) */
+    luaL_Buffer b;
+    size_t len = (size_t)pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
+    pc_expr_print(pool(L), id, names ? namer : NULL, &ud, luaL_buffinitsize(L, &b, len + 1), len + 1);
+    luaL_pushresultsize(&b, len);
 }
 
 static int eq_tostring(lua_State *L) {
@@ -404,9 +341,7 @@ PCL_METHOD(eq_show, leq *e, a) {
 
 /* M:expanded(): the coordinates expanded in powers of the equation's one parameter as the
  * book prints them (konop_expanded.h) */
-static const pcl_arg expanded_args[] = {PCL_END};
-static int eq_expanded(lua_State *L) {
-    leq *e = pcl_read(L, NULL, 0);
+PCL_METHOD(eq_expanded, leq *e, a) {
     enum { EACH = 4096 };
     char *texts = lua_newuserdatauv(L, (size_t)PC_MAXDIM * EACH, 0), why[512];
     int axes = pc_k_expanded(pool(L), e->id, texts, EACH, why, sizeof why);
@@ -430,10 +365,11 @@ static const pcl_arg sample_args[] = {A_NUM("a"), A_NUM("b"),
     {.name = "into", .kind = PCL_ANY, .flags = PCL_OPT, .expect = "samples (from M:sample)"}, PCL_END};
 PCL_METHOD(eq_sample, leq *e, a) {
     long n = (long)a[2].x;
-    int in[PC_EXPR_MAXPARAM], np = params_of(L, e->id, in);
-    if (np != 1) return pcl_fail(L, "the equation must have one parameter, it has %s", np ? names_of(L, np, in) : "none");
+    int in[PC_EXPR_MAXPARAM], np = pc_expr_param_list(pool(L), e->id, in);
+    if (np != 1) return pcl_fail(L, "the equation must have one parameter, it has %s", names_of(L, np, in));
     pc_expr_prog *prog = prog_of(L, e);
     int dim = pc_expr_prog_dim(prog), w = dim ? dim : 1;
+    char why[256];
     lsamples *s;
     if (a[3].present) {                           /* M:sample(a, b, n, s): into s again */
         s = tosamples(L, 5);
@@ -442,42 +378,28 @@ PCL_METHOD(eq_sample, leq *e, a) {
         lua_pushvalue(L, 5);
     } else {
         s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
-        s->self = PCL_SELF_TAG(s, &SAMPLES_TAG);
-        s->n = n;
-        s->dim = dim;
+        *s = (lsamples){PCL_SELF_TAG(s, &SAMPLES_TAG), n, dim};
         luaL_setmetatable(L, SAMPLES_MT);
     }
-    long bad = 0;
-    int st = pc_expr_sample(prog, a[0].x, a[1].x, n, s->v, &bad);
-    if (st == PC_ENONFINITE) {
-        double t = n > 1 ? a[0].x + (a[1].x - a[0].x) * (double)bad / (double)(n - 1) : a[0].x;
-        return pcl_fail(L, "the value at %s = %s is not finite", pc_expr_param_name(pool(L), in[0]), pcl_pushnum(L, t));
-    }
-    if (st != PC_OK) return status_fail(L, st);
+    if (pc_expr_sample_at(pool(L), prog, in[0], a[0].x, a[1].x, n, s->v, why, sizeof why) != PC_OK)
+        return pcl_fail(L, "%s", why);
     return 1;
 }
 
+/* the fields M.dim and M.params (the parameters' names in order), then the methods */
 static int eq_index(lua_State *L) {
     leq *e = toeq(L, 1);
-    const char *k = lua_tostring(L, 2);
-    if (e && k) {
-        if (!strcmp(k, "dim")) { lua_pushinteger(L, pc_expr_dim(pool(L), e->id)); return 1; }
-        if (!strcmp(k, "params")) {
-            int in[PC_EXPR_MAXPARAM], n = params_of(L, e->id, in);
-            lua_createtable(L, n, 0);
-            for (int j = 0; j < n; j++) {
-                lua_pushstring(L, pc_expr_param_name(pool(L), in[j]));
-                lua_rawseti(L, -2, j + 1);
-            }
-            return 1;
-        }
+    const char *k = e ? lua_tostring(L, 2) : NULL;
+    int in[PC_EXPR_MAXPARAM], n = k && !strcmp(k, "params") ? pc_expr_param_list(pool(L), e->id, in) : -1;
+    if (k && !strcmp(k, "dim")) lua_pushinteger(L, pc_expr_dim(pool(L), e->id));
+    else if (n < 0) lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top */
+    else lua_createtable(L, n, 0);
+    for (int j = 0; j < n; j++) {
+        lua_pushstring(L, pc_expr_param_name(pool(L), in[j]));
+        lua_rawseti(L, -2, j + 1);
     }
-    lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(1));
     return 1;
 }
-
-/* ---- samples ----------------------------------------------------------------------------------- */
 
 static int s_len(lua_State *L) {
     lsamples *s = tosamples(L, 1);
@@ -487,31 +409,25 @@ static int s_len(lua_State *L) {
 }
 
 /* s:sum(): the sum of every coordinate (a checksum) */
-static int s_sum(lua_State *L) {
-    lsamples *s = pcl_read(L, NULL, 0);
+PCL_METHOD(s_sum, lsamples *s, a) {
     double sum = 0;
     for (long i = 0; i < s->n * (s->dim ? s->dim : 1); i++) sum += s->v[i];
     lua_pushnumber(L, sum);
     return 1;
 }
 
+/* s[i] (a number or a point; nil past the ends), s.dim, then the methods */
 static int s_index(lua_State *L) {
     lsamples *s = tosamples(L, 1);
+    int number = lua_type(L, 2) == LUA_TNUMBER;
+    lua_Integer i = lua_tointeger(L, 2);
+    const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : NULL;
     if (!s) return pcl_error(L, "index: not samples");
-    if (lua_type(L, 2) == LUA_TNUMBER) {
-        lua_Integer i = lua_tointeger(L, 2);
-        if (i < 1 || i > s->n) {
-            lua_pushnil(L);
-            return 1;
-        }
-        if (!s->dim) lua_pushnumber(L, s->v[i - 1]);
-        else pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
-        return 1;
-    }
-    const char *k = lua_tostring(L, 2);
-    if (k && !strcmp(k, "dim")) lua_pushinteger(L, s->dim);
-    else if (k) lua_getfield(L, lua_upvalueindex(1), k);    /* sum */
-    else lua_pushnil(L);
+    if (number && (i < 1 || i > s->n)) lua_pushnil(L);
+    else if (number && !s->dim) lua_pushnumber(L, s->v[i - 1]);
+    else if (number) pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
+    else if (k && !strcmp(k, "dim")) lua_pushinteger(L, s->dim);
+    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top: sum */
     return 1;
 }
 
@@ -521,8 +437,6 @@ static int s_tostring(lua_State *L) {
     lua_pushfstring(L, "samples(%d, %d-D)", (int)s->n, s->dim);
     return 1;
 }
-
-/* ---- curve(M, t0, t1), surface(M, u0, u1, v0, v1) ------------------------------------------------ */
 
 /* the curve or surface of the point equation at 1 over the box lo..hi of its parameters */
 static void *eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
@@ -539,24 +453,15 @@ pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int
     return eq_object(L, 2, lo, hi, status);
 }
 
-/* ---- registration ----------------------------------------------------------------------------------- */
-
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = self_eq, .selftype = "equation"}
 static const pcl_fn methods[] = {
-    METHOD("M:with", eq_with, with_args, "M:with{s = value | equation, ...} -> equation",
-           "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation)."),
-    METHOD("M:show", eq_show, show_args, "M:show{A = A, B = B, ...} -> string",
-           "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y))."),
-    METHOD("M:expanded", eq_expanded, expanded_args, "M:expanded() -> x, y, ...",
-           "The coordinates expanded in powers of the equation's one parameter as the book prints them: x = 3t^2 - 2t + 1, or for a rational equation x = (numerator)/(denominator) with the denominator monic; numbers in %.6g; a scalar equation gives its one expression."),
-    METHOD("M:sample", eq_sample, sample_args, "M:sample(a, b [, n = 1001 [, s]]) -> samples",
-           "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum()."),
+    METHOD("M:with", eq_with, with_args, "M:with{s = value | equation, ...} -> equation", "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation)."),
+    METHOD("M:show", eq_show, show_args, "M:show{A = A, B = B, ...} -> string", "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y))."),
+    METHOD("M:expanded", eq_expanded, NULL, "M:expanded() -> x, y, ...", "The coordinates expanded in powers of the equation's one parameter as the book prints them: x = 3t^2 - 2t + 1, or for a rational equation x = (numerator)/(denominator) with the denominator monic; numbers in %.6g; a scalar equation gives its one expression."),
+    METHOD("M:sample", eq_sample, sample_args, "M:sample(a, b [, n = 1001 [, s]]) -> samples", "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum()."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "M", .fn = eq_call, .self = self_eq, .selftype = "equation", .key = "__call", .topic = "M(t)",
-                               .callname = 1, .sig = "M(t [, s ...]) -> value\nM{t = ..., s = ...} -> value",
-                               .help = "The equation's value at parameter values given in the order of M.params, or by name."}, PCL_END};
-static const pcl_fn sample_methods[] = {{.name = "s:sum", .fn = s_sum, .result = "number", .self = self_samples, .selftype = "samples object",
-                                         .help = "The sum of every coordinate of the samples of M:sample (a checksum)."}, PCL_END};
+static const pcl_fn call[] = {{.name = "M", .fn = eq_call, .self = self_eq, .selftype = "equation", .key = "__call", .topic = "M(t)", .callname = 1, .sig = "M(t [, s ...]) -> value\nM{t = ..., s = ...} -> value", .help = "The equation's value at parameter values given in the order of M.params, or by name."}, PCL_END};
+static const pcl_fn sample_methods[] = {{.name = "s:sum", .fn = s_sum, .result = "number", .self = self_samples, .selftype = "samples object", .help = "The sum of every coordinate of the samples of M:sample (a checksum)."}, PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("param", l_param, param_args, "equation", "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value."),
     PCL_END};

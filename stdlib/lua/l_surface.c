@@ -2,7 +2,7 @@
  * callable as surface(f, u0, u1, v0, v1) for a Lua function or a point equation, and the
  * methods of a surface s (s(u, v), s:iso, s:wireframe, s:shade, ...), declared below. */
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "wireframe.h"
 #include "pcl_scene.h"
 #include "pcl_draw.h"
@@ -17,11 +17,14 @@ typedef struct {
     const char *kind;
 } lsurf;
 
+static int genuine(lua_State *L, int idx, const lsurf *u) {
+    return lua_rawlen(L, idx) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG);
+}
+
 /* The surface object at idx or NULL; one given the metatable by the debug library is refused. */
 static lsurf *tosurf(lua_State *L, int idx) {
     lsurf *u = luaL_testudata(L, idx, SURF_MT);
-    int ok = !u || (lua_rawlen(L, idx) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG));
-    return pcl_genuine(L, idx, u, ok, "surface");
+    return pcl_genuine(L, idx, u, !u || genuine(L, idx, u), "surface");
 }
 
 pc_surface *pcl_tosurface(lua_State *L, int idx) {
@@ -35,9 +38,7 @@ pc_surface *pcl_tosurface(lua_State *L, int idx) {
 int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const char *kind) {
     if (!s) pcl_raise_status(L, kind, *status);
     lsurf *u = lua_newuserdatauv(L, sizeof *u, 0);
-    u->self = PCL_SELF_TAG(u, &SURF_TAG);
-    u->s = s;
-    u->kind = kind;
+    *u = (lsurf){PCL_SELF_TAG(u, &SURF_TAG), s, kind};
     luaL_setmetatable(L, SURF_MT);
     return 1;
 }
@@ -57,8 +58,7 @@ static void *self_surf(lua_State *L, int idx) {
 
 static int s_gc(lua_State *L) {
     lsurf *u = luaL_testudata(L, 1, SURF_MT);
-    /* never a forged one */
-    if (u && lua_rawlen(L, 1) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG) && u->s) {
+    if (u && genuine(L, 1, u) && u->s) {   /* never a forged one */
         pcl_callback_state(L);
         pc_surface_release(u->s);
         u->s = NULL;
@@ -66,16 +66,8 @@ static int s_gc(lua_State *L) {
     return 0;
 }
 
-/* ---- a Lua function as a surface ------------------------------------------------------------- */
-
-typedef struct { int ref, dim; } luasurf;
-
-static void luasurf_free(void *ud) {
-    luasurf *f = ud;
-    lua_State *L = pcl_current_state();
-    if (L) luaL_unref(L, LUA_REGISTRYINDEX, f->ref);
-    free(f);
-}
+/* A Lua function as a surface: its reference in fn first, so pcl_luafn_free frees it all */
+typedef struct { pcl_luafn fn; int dim; } luasurf;
 
 static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     luasurf *f = ud;
@@ -83,7 +75,7 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     lua_State *L = pcl_current_state();
     int top = lua_gettop(L);
     if (!lua_checkstack(L, f->dim + 4)) return PC_ENOMEM;
-    lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, f->fn.ref[0]);
     lua_pushnumber(L, u);
     lua_pushnumber(L, v);
     if (lua_pcall(L, 2, 1, 0) != LUA_OK) return pcl_callback_failed(L);
@@ -98,19 +90,22 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     return PC_OK;
 }
 
-/* ---- constructors ------------------------------------------------------------------------------ */
+/* Push the surface a constructor made, or raise its status as pc_surface_why explains it. */
+static int made(lua_State *L, pc_surface *s, const int *st) {
+    if (!s) pcl_check(L, *st, pc_surface_why);
+    return pcl_push_made_surface(L, s, st, pcl_name(L));
+}
 
 static const pcl_arg bilinear_args[] = {A_SAMEPOINT("P00"), A_SAMEPOINT("P10"), A_SAMEPOINT("P01"),
                                         A_SAMEPOINT("P11"), PCL_END};
 PCL_BODY(l_bilinear, a) {
     int st;
-    return pcl_push_made_surface(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st, pcl_name(L));
+    return made(L, pc_surface_bilinear(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, &st), &st);
 }
 
 /* A net: a list of nu >= 2 rows of nv >= 2 values (weighted points make it rational), as
  * homogeneous rows in a scratch userdata above the arguments: out->list, out->v = nu, nv, dim. */
-static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_net(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
     int m = (int)luaL_len(L, idx), n = 0, d = 0;
     if (m < 2) return pcl_argfail(L, idx, "must have at least 2 rows, got %d", m);
@@ -148,7 +143,7 @@ static int read_net(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static const pcl_arg bezier_args[] = {NET, PCL_END};
 PCL_BODY(l_bezier, a) {
     int st, nu = (int)a[0].v[0], nv = (int)a[0].v[1];
-    return pcl_push_made_surface(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st, pcl_name(L));
+    return made(L, pc_surface_bezier((int)a[0].v[2], nu - 1, nv - 1, a[0].list, &st), &st);
 }
 
 static const pcl_arg bspline_args[] = {NET, {.name = "p", .kind = PCL_INTEGER}, {.name = "q", .kind = PCL_INTEGER},
@@ -161,71 +156,56 @@ PCL_BODY(l_bspline, a) {
     double *uk, *vk;   /* the knots as bspline reads them (l_curve.c) */
     pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
     int st;
-    pc_surface *s = pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st);
-    return pcl_push_made_surface(L, s, &st, pcl_name(L));
+    return made(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), &st);
 }
 
-/* A list of 4 points (P) or 4 vectors (Pu, Pv, Puv) of the corners' dimension: out->list. */
-static int read_corners(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    if (!lua_istable(L, idx) || luaL_len(L, idx) != 4) return 0;
-    pcl_arg one = {.name = a->name, .kind = strcmp(a->name, "P") ? PCL_VECTOR : PCL_POINT, .flags = PCL_SAMEDIM};
-    double *x = lua_newuserdatauv(L, sizeof(double) * 4 * PC_MAXDIM, 0);
-    for (int i = 0; i < 4; i++) {
-        lua_geti(L, idx, i + 1);
-        pcl_val v;
-        pcl_readone(L, lua_gettop(L), 1, i + 1, &one, i ? out->n : 0, &v);   /* [1]'s dimension for all */
-        memcpy(x + i * v.n, v.v, sizeof(double) * (size_t)v.n);
-        out->n = v.n;
-        lua_pop(L, 1);
-    }
-    out->list = x;
+/* P: 4 points, Pu, Pv, Puv: 4 vectors of their dimension, at the corners in this order */
+#define CORNERS(nm, k, what) {.name = nm, .kind = k, .flags = PCL_REQ | PCL_SAMEDIM, .lo = 4, .hi = 4, \
+    .expect = "a list of 4 " what " (corners (0,0), (1,0), (0,1), (1,1))", .shown = "{4}"}
+static const pcl_arg hermite_keys[] = {CORNERS("P", PCL_POINTS, "points"), CORNERS("Pu", PCL_VECTORS, "vectors"),
+                                       CORNERS("Pv", PCL_VECTORS, "vectors"), CORNERS("Puv", PCL_VECTORS, "vectors"),
+                                       PCL_END};
+static const pcl_arg hermite_args[] = {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = hermite_keys}, PCL_END};
+PCL_BODY(l_hermite, a) {   /* spec; P, Pu, Pv, Puv */
+    int st;
+    return made(L, pc_surface_hermite(a[1].dim, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st);
+}
+
+/* A curve of argument #1's dimension (ruled, coons: plain functions, so the value at idx is
+ * argument #idx, declared by a, and a[1 - idx] declares argument #1). */
+static int read_like_first(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    pc_curve *c = pcl_tocurve(L, idx), *first = pcl_tocurve(L, 1);
+    if (!c) return 0;
+    if (idx > 1 && first && c->dim != first->dim)
+        pcl_argfail(L, idx, "is %d-D, but argument #1 (%s) is %d-D (mixed dimensions)", c->dim, a[1 - idx].name,
+                    first->dim);
+    out->obj = c;
     return 1;
 }
-#define CORNERS(nm, what) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_corners, \
-    .expect = "a list of 4 " what " (corners (0,0), (1,0), (0,1), (1,1))", .shown = "{4}"}
-static const pcl_arg hermite_keys[] = {CORNERS("P", "points"), CORNERS("Pu", "vectors"), CORNERS("Pv", "vectors"),
-                                       CORNERS("Puv", "vectors"), PCL_END};
-static const pcl_arg hermite_args[] = {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = hermite_keys}, PCL_END};
-PCL_BODY(l_hermite, a) {
-    for (int f = 2; f <= 4; f++)
-        if (a[f].n != a[1].n)
-            return pcl_keyfail(L, hermite_keys[f - 1].name, "is %d-D, but P is %d-D (mixed dimensions)", a[f].n, a[1].n);
-    int st;
-    return pcl_push_made_surface(L, pc_surface_hermite(a[1].n, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st, pcl_name(L));
-}
+#define A_CURVE_LIKE(nm) {.name = nm, .kind = PCL_ANY, .read = read_like_first, .expect = "a curve"}
 
-static const pcl_arg ruled_args[] = {A_CURVE("c0", 0), A_CURVE("c1", 0), PCL_END};
+static const pcl_arg ruled_args[] = {A_CURVE_LIKE("c0"), A_CURVE_LIKE("c1"), PCL_END};
 PCL_BODY(l_ruled, a) {
-    if (a[0].n != a[1].n) return pcl_fail(L, "the curves are %d-D and %d-D (mixed dimensions)", a[0].n, a[1].n);
     int st;
-    return pcl_push_made_surface(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st, pcl_name(L));
+    return made(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st);
 }
 
-static const pcl_arg coons_args[] = {A_CURVE("cu0", 0), A_CURVE("cu1", 0), A_CURVE("c0v", 0), A_CURVE("c1v", 0), PCL_END};
+static const pcl_arg coons_args[] = {A_CURVE_LIKE("cu0"), A_CURVE_LIKE("cu1"), A_CURVE_LIKE("c0v"), A_CURVE_LIKE("c1v"),
+                                     PCL_END};
 PCL_BODY(l_coons, a) {
-    for (int i = 1; i < 4; i++)
-        if (a[i].n != a[0].n)
-            return pcl_argfail(L, i + 1, "is %d-D, but argument #1 (cu0) is %d-D (mixed dimensions)", a[i].n, a[0].n);
     int st;
-    pc_surface *s = pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st);
-    if (!s && st == PC_EDOMAIN)
-        return pcl_fail(L, "the boundary curves do not meet at the corners (cu0 and c0v must start "
-                           "together, cu0 must end where c1v starts, ...)");
-    return pcl_push_made_surface(L, s, &st, pcl_name(L));
+    return made(L, pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st), &st);
 }
 
 static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
                                           A_NUMOPT("v0", 0, "0"), A_NUMOPT("v1", 2 * M_PI, "2*pi"), PCL_END};
 PCL_BODY(l_revolution, a) {
     int st;
-    pc_surface *s = pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st);
-    if (!s && st == PC_EZERO) return pcl_argfail(L, 3, "must be a nonzero vector (the axis)");
-    return pcl_push_made_surface(L, s, &st, pcl_name(L));
+    return made(L, pc_surface_revolution(a[0].obj, a[1].v, a[2].v, a[3].x, a[4].x, &st), &st);
 }
 
 /* f: a Lua function (u, v) -> point or a compiled point equation (l_expr.c). */
-static int read_surface_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
+static int read_surface_fn(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     return lua_isfunction(L, idx) || pcl_isequation(L, idx);
 }
 
@@ -234,14 +214,13 @@ static const pcl_arg func_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_
                                     A_NUM("u0"), A_NUM("u1"), A_NUM("v0"), A_NUM("v1"), PCL_END};
 /* surface(f, u0, u1, v0, v1): the __call of the table (the table itself is argument 1) */
 PCL_BODY(l_func, a) {
-    const char *fn = pcl_name(L);
     lua_settop(L, 6);
     lua_remove(L, 1);
     int st;
     if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
         double lo[2] = {a[1].x, a[3].x}, hi[2] = {a[2].x, a[4].x};
-        return pcl_push_made_surface(L, pcl_eq_surface(L, lo, hi, &st), &st, fn);
+        return made(L, pcl_eq_surface(L, lo, hi, &st), &st);
     }
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -253,35 +232,26 @@ PCL_BODY(l_func, a) {
     lua_pop(L, 1);
     luasurf *f = malloc(sizeof *f);
     if (!f) return pcl_fail(L, "out of memory");
-    f->dim = d;
     lua_pushvalue(L, 1);
-    f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    *f = (luasurf){.fn = {.n = 1, .ref = {luaL_ref(L, LUA_REGISTRYINDEX)}, .fname = pcl_name(L)}, .dim = d};
     pcl_callback_state(L);
-    return pcl_push_made_surface(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, luasurf_free, f, &st), &st, fn);
+    return made(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, pcl_luafn_free, f, &st), &st);
 }
 
-/* ---- methods --------------------------------------------------------------------------------- */
-
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
-
 PCL_METHOD(s_call, lsurf *u, a) {
     double out[PC_MAXDIM];
     int st = pc_surface_eval(u->s, a[0].x, a[1].x, out);
     if (st == PC_IMPROPER) return pcl_fail(L, "the point at (%s, %s) is at infinity", pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushpoint(L, u->s->dim, out);
-    return 1;
+    pcl_check(L, st, NULL);
+    return pcl_push_results(L, u->s->dim, "p", out);
 }
 
 PCL_METHOD(s_partials, lsurf *u, a) {
     double out[3 * PC_MAXDIM];
-    int st = pc_surface_partials(u->s, a[0].x, a[1].x, out);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     int d = u->s->dim;
-    pcl_pushpoint(L, d, out);
-    pcl_pushvector(L, d, out + d);
-    pcl_pushvector(L, d, out + 2 * d);
-    return 3;
+    pcl_check(L, pc_surface_partials(u->s, a[0].x, a[1].x, out), NULL);
+    return pcl_push_results(L, d, "p v v", out, out + d, out + 2 * d);
 }
 
 PCL_METHOD(s_normal, lsurf *u, a) {
@@ -291,9 +261,8 @@ PCL_METHOD(s_normal, lsurf *u, a) {
     if (st == PC_EZERO)
         return pcl_fail(L, "the surface is singular at (%s, %s): its partial derivatives are parallel",
                         pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushvector(L, 3, n);
-    return 1;
+    pcl_check(L, st, NULL);
+    return pcl_push_results(L, 3, "v", n);
 }
 
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
@@ -302,10 +271,7 @@ static const pcl_arg iso_args[] = {{.name = "family", .kind = PCL_ENUM, .choices
                                     .expect = "\"u\" (u = const) or \"v\" (v = const)"}, A_NUM("value"), PCL_END};
 PCL_METHOD(s_iso, lsurf *u, a) {
     int st;
-    pc_curve *c = pc_surface_iso(u->s, a[0].n, a[1].x, &st);
-    if (!c) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushcurve(L, c, "iso-curve");
-    return 1;
+    return pcl_push_made(L, pc_surface_iso(u->s, a[0].n, a[1].x, &st), &st, "iso-curve");
 }
 
 static const pcl_arg map_args[] = {A_MAP("f"), PCL_END};
@@ -316,11 +282,14 @@ PCL_METHOD(s_map, lsurf *u, a) {
     return pcl_push_made_surface(L, pc_surface_map(u->s, f, &st), &st, u->kind);
 }
 
-/* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the camera. */
-static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim) {
+/* The drawing map option of s:wireframe and s:shade: the map given (from dim-D to 2-D) or the
+ * camera, and the map to the screen through it into scr. */
+static const pc_map *drawing_map(lua_State *L, const pcl_val *m, int dim, pc_map *scr) {
     const pc_map *f = m->obj;
     if (f && (f->nout != 2 || f->nin != dim)) pcl_keyfail(L, "map", "must be a map from %d-D to 2-D", dim);
-    return f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
+    f = f ? f : pcl_drawing_map(L, 0, dim, pcl_name(L));
+    pcl_screen_map(L, f, scr);
+    return f;
 }
 
 /* s:wireframe{...}: the iso-lines drawn by the core (wireframe.h) through the map or the camera */
@@ -338,69 +307,45 @@ PCL_METHOD(s_wireframe, lsurf *u, a) {   /* opts; nu, nv, color, tol, map, hidde
                            .mesh = (int)a[7].x, .silhouette = (int)a[8].x, .boundary = (int)a[9].x};
     pc_canvas *cv = pcl_canvas(L);
     pc_surface *s = u->s;
-    const pc_map *f = drawing_map(L, &a[5], s->dim);
+    pc_map scr;
+    const pc_map *f = drawing_map(L, &a[5], s->dim, &scr);
     if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
         return pcl_fail(L, "%s a 3-D surface seen through a projection",
                         o.hidden ? "hidden lines need" : "a silhouette needs");
-    pc_map scr;
-    pcl_screen_map(L, f, &scr);
     /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
     pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
     int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
                                : pc_draw_wireframe(cv, s, &scr, &o, &drawn);
-    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
-    return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
+    pcl_check_canvas(L, cv, drawn);
+    pcl_check(L, st, NULL);
+    return 0;
 }
 
-/* ---- shading ----------------------------------------------------------------------------- */
-
-/* A colour of s:shade: any attribute that has a colour (a true colour above the screen's
- * colours included), else what pcl_read_color reads ("#rrggbb" allocates a true colour). */
-static int read_shade_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    int isint;
-    pc_rgb rgb;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    int ok = lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v <= PC_MAX_ATTR;
-    if (!ok || pc_canvas_rgb(pcl_canvas(L), (int)v, &rgb) != PC_OK)
-        return pcl_read_color(L, idx, a, out);
-    out->x = (double)v;
-    return 1;
-}
-
-#define SHADE_COLOR(nm) {.name = nm, .kind = PCL_ANY, .read = read_shade_color, .dflt = -1, .shown = "c"}
+/* A colour of s:shade: a true colour's attribute above the screen's colours too (dim 1). */
+#define SHADE_COLOR(nm) {.name = nm, .kind = PCL_ANY, .read = pcl_read_color, .dim = 1, .dflt = -1, .shown = "c"}
 static const pcl_arg shade_keys[] = {
     COUNT("nu", 1024, 40), COUNT("nv", 1024, 40), SHADE_COLOR("color"),
     {.name = "light", .kind = PCL_VECTOR, .dim = 3, .expect = "a 3-D vector (the direction towards the light)", .shown = "V(...)"},
     {.name = "ambient", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = 1, .shown = "0"},
     SHADE_COLOR("mesh"), {.name = "map", .kind = PCL_MAP, .shown = "m"}, PCL_END};
-static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
-
 /* s:shade{...}: the quads drawn by the core (wireframe.h) through the map or the camera; their count */
+static const pcl_arg shade_args[] = {A_OPTIONS("opts", shade_keys), PCL_END};
 PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mesh, map */
     pc_canvas *cv = pcl_canvas(L);
-    pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .ambient = a[5].present ? a[5].x : 0};
+    pc_shade_opts o = {.nu = (int)a[1].x, .nv = (int)a[2].x, .has_light = a[4].present, .ambient = a[5].x};
     pc_rgb base;
-    pc_canvas_rgb(cv, a[3].present ? (int)a[3].x : cv->fg, &base);
-    int mesh = (int)a[6].x;
-    if (a[4].present) {
-        memcpy(o.light, a[4].v, sizeof o.light);
-        if (o.light[0] == 0 && o.light[1] == 0 && o.light[2] == 0)
-            return pcl_keyfail(L, "light", "must be a nonzero vector (the direction towards the light), got V(0, 0, 0)");
-        o.has_light = 1;
-    }
-    pc_surface *s = u->s;
-    if (s->dim != 3)
-        return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", s->dim);
-    const pc_map *f = drawing_map(L, &a[7], 3);
     pc_map scr;
-    pcl_screen_map(L, f, &scr);
+    size_t n;
+    memcpy(o.light, a[4].v, sizeof o.light);
+    pc_canvas_rgb(cv, a[3].present ? (int)a[3].x : cv->fg, &base);
+    if (u->s->dim != 3)
+        return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", u->s->dim);
+    drawing_map(L, &a[7], 3, &scr);
     pcl_callback_state(L);
     pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
-    size_t n;
-    int drawn, st = pc_draw_shaded_surface(cv, sc, s, &scr, &o, base, mesh, &n, &drawn);
-    if (st == PC_ESINGULAR) return pcl_fail(L, "the projection is singular (it flattens space onto a line)");
-    if (drawn != PC_OK) return pcl_fail(L, "%s", cv->error);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    int drawn, st = pc_draw_shaded_surface(cv, sc, u->s, &scr, &o, base, (int)a[6].x, &n, &drawn);
+    pcl_check_canvas(L, cv, drawn);   /* (a failing canvas and a failing geometry exclude each other) */
+    pcl_check(L, st, pc_surface_why);
     lua_pushinteger(L, (lua_Integer)n);
     return 1;
 }
@@ -412,64 +357,51 @@ static lsurf *meta_self(lua_State *L) {
     return u;
 }
 
+/* the fields s.dim, s.kind (its constructor's name without "surface."), s.u0 .. s.v1, then the methods */
 static int s_index(lua_State *L) {
+    static const char *const DOMAIN[] = {"u0", "u1", "v0", "v1", NULL};
     lsurf *u = meta_self(L);
-    const char *k = lua_tostring(L, 2);
-    if (k) {
-        pc_surface *s = u->s;
-        if (!strcmp(k, "dim")) { lua_pushinteger(L, s->dim); return 1; }
-        if (!strcmp(k, "kind")) { lua_pushstring(L, u->kind + (strncmp(u->kind, "surface.", 8) ? 0 : 8)); return 1; }
-        if (!strcmp(k, "u0")) { lua_pushnumber(L, s->u0); return 1; }
-        if (!strcmp(k, "u1")) { lua_pushnumber(L, s->u1); return 1; }
-        if (!strcmp(k, "v0")) { lua_pushnumber(L, s->v0); return 1; }
-        if (!strcmp(k, "v1")) { lua_pushnumber(L, s->v1); return 1; }
-    }
-    lua_pushvalue(L, 2);
-    lua_rawget(L, lua_upvalueindex(1));
+    const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "";
+    double domain[4] = {u->s->u0, u->s->u1, u->s->v0, u->s->v1};
+    int i = 0;
+    while (DOMAIN[i] && strcmp(DOMAIN[i], k)) i++;
+    if (!strcmp(k, "dim")) lua_pushinteger(L, u->s->dim);
+    else if (!strcmp(k, "kind")) lua_pushstring(L, u->kind + (strncmp(u->kind, "surface.", 8) ? 0 : 8));
+    else if (DOMAIN[i]) lua_pushnumber(L, domain[i]);
+    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top */
     return 1;
 }
 
 static int s_tostring(lua_State *L) {
     lsurf *u = meta_self(L);
     pc_surface *s = u->s;
-    lua_pushfstring(L, "%s(%d-D, u in [%s, %s], v in [%s, %s])", u->kind, s->dim,
-                    pcl_pushnum(L, s->u0), pcl_pushnum(L, s->u1), pcl_pushnum(L, s->v0),
-                    pcl_pushnum(L, s->v1));
+    lua_pushfstring(L, "%s(%d-D, u in [%s, %s], v in [%s, %s])", u->kind, s->dim, pcl_pushnum(L, s->u0),
+                    pcl_pushnum(L, s->u1), pcl_pushnum(L, s->v0), pcl_pushnum(L, s->v1));
     return 1;
 }
 
 static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 #define METHOD(nm, f, decl, res, text) {.name = nm, .fn = f, .args = decl, .result = res, .help = text, .self = self_surf, .selftype = "surface"}
+#define METHOD_SIG(nm, f, decl, forms, text) {.name = nm, .fn = f, .args = decl, .sig = forms, .help = text, .self = self_surf, .selftype = "surface"}
 static const pcl_fn methods[] = {
     METHOD("s:eval", s_call, uv_args, "point", "The point of the surface at (u, v), as s(u, v)."),
     METHOD("s:partials", s_partials, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
     METHOD("s:normal", s_normal, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
-    {.name = "s:iso", .fn = s_iso, .args = iso_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:iso(\"u\"|\"v\", value) -> curve",
-     .help = "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."},
+    METHOD_SIG("s:iso", s_iso, iso_args, "s:iso(\"u\"|\"v\", value) -> curve", "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."),
     METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),
-    {.name = "s:wireframe", .fn = s_wireframe, .args = wireframe_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}",
-     .help = "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."},
-    {.name = "s:shade", .fn = s_shade, .args = shade_args, .self = self_surf, .selftype = "surface",
-     .sig = "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads",
-     .help = "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."},
+    METHOD_SIG("s:wireframe", s_wireframe, wireframe_args, "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}", "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."),
+    METHOD_SIG("s:shade", s_shade, shade_args, "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads", "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "s", .fn = s_call, .args = uv_args, .self = self_surf, .selftype = "surface",
-                               .key = "__call", .topic = "s(u, v)", .callname = 1, .sig = "s(u, v) -> point",
-                               .help = "The point of a surface at (u, v); s:partials and s:normal give its derivatives and normal."}, PCL_END};
-static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = self_table,
-                                    .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
+static const pcl_fn call[] = {{.name = "s", .fn = s_call, .args = uv_args, .self = self_surf, .selftype = "surface", .key = "__call", .topic = "s(u, v)", .callname = 1, .sig = "s(u, v) -> point", .help = "The point of a surface at (u, v); s:partials and s:normal give its derivatives and normal."}, PCL_END};
+static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = self_table, .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("surface.bilinear", l_bilinear, bilinear_args, "s", "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1)."),
     PCL_FN("surface.bezier", l_bezier, bezier_args, "s", "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational)."),
     PCL_FN("surface.bspline", l_bspline, bspline_args, "s", "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline."),
-    {.name = "surface.hermite", .fn = l_hermite, .args = hermite_args, .result = "s",
-     .help = "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1))."},
+    {.name = "surface.hermite", .fn = l_hermite, .args = hermite_args, .result = "s", .help = "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1))."},
     PCL_FN("surface.ruled", l_ruled, ruled_args, "s", "The ruled surface (1 - v) c0(u) + v c1(u) between two curves."),
     PCL_FN("surface.coons", l_coons, coons_args, "s", "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v)."),
-    {.name = "surface.revolution", .fn = l_revolution, .args = revolution_args, .sig = "surface.revolution(profile, A, d [, v0, v1]) -> s",
-     .help = "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn)."},
+    {.name = "surface.revolution", .fn = l_revolution, .args = revolution_args, .sig = "surface.revolution(profile, A, d [, v0, v1]) -> s", .help = "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn)."},
     PCL_END};
 
 void pcl_open_surface(lua_State *L) {
@@ -483,5 +415,4 @@ void pcl_open_surface(lua_State *L) {
     pcl_register(L, -1, func_call, 0);
     lua_setmetatable(L, -2);
     lua_setfield(L, module, "surface");
-    lua_settop(L, module);
 }

@@ -6,20 +6,16 @@
 #define PCL_EXPR_H
 
 #include "pcl.h"
-#include "curve.h"
 #include "surface.h"
 #include "smooth.h"
 
-/* The operations the point binding defers, with its arguments on the stack as it got them
- * (in the order of the core's pc_expr_verb, expr.h, which checks and words them). */
+/* The operations the point binding defers, with its arguments on the stack as it got them, in
+ * the order of the core's pc_expr_verb (expr.h), which checks and words them. */
 typedef enum {
-    PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM,   /* metamethods (1, 2) */
-    PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT, PCL_EQ_CROSS, PCL_EQ_UNIT,
-    PCL_EQ_P, PCL_EQ_V,                                         /* P(x, y ...), V(...) */
-    PCL_EQ_MEET                                                 /* meet(A1, A2, B1, B2) */
+    PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM, PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT,
+    PCL_EQ_CROSS, PCL_EQ_UNIT, PCL_EQ_P, PCL_EQ_V, PCL_EQ_MEET   /* P(x, y ...), V(...), meet(A1, A2, B1, B2) */
 } pcl_eq_op;
 
-/* 1 if the value at idx is an equation. */
 int pcl_isequation(lua_State *L, int idx);
 /* If one of the operation's arguments is an equation: push the resulting equation and return
  * 1 (or raise the operation's error); else return 0 and leave the stack as it was. */

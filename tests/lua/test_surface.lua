@@ -117,7 +117,7 @@ err(function() surface.bezier({{P(0, 0), P(1, 0)}, 5}) end, "surface.bezier: arg
 err(function() surface.bezier({{P(0, 0), P(1, 0)}, {P(0, 1, 0), P(1, 1)}}) end,
     "surface.bezier: argument #1 (net) [2][1] is 3-D, but [1][1] is 2-D (mixed dimensions)", "mixed dimensions in row [2]")
 err(function() surface.bspline(net, 3, 2) end, "argument #2 (p)", "degree too high")
-err(function() surface.hermite{P = {P(0, 0, 0)}} end, "surface.hermite: option 'P' must be a list of 4 points", "Hermite corners")
+err(function() surface.hermite{P = {P(0, 0, 0)}} end, "surface.hermite: option 'P' must hold 4 points, got 1", "Hermite corners")
 err(function() surface.ruled(c0, 5) end, "argument #2 (c1)", "not a curve")
 err(function() surface.coons(arc, arc, arc, arc) end, "do not meet at the corners", "Coons corners")
 err(function() surface.revolution(prof, P(0, 0, 0), V(0, 0, 0)) end, "nonzero vector", "zero axis")
@@ -138,7 +138,7 @@ err(function() surface.bezier({{P(0, 0), P(1, 0)}, {P(0, 1), P(1, 1, 1)}}) end,
     "surface.bezier: argument #1 (net) [2][2] is 3-D, but [1][1] is 2-D (mixed dimensions)", "a net's dimensions")
 err(function() surface.hermite{P = {P(0, 0), P(1, 0), P(0, 1), P(1, 1)}, Pu = {V(1, 0), V(1, 0), P(1, 0), V(1, 0)},
                                Pv = {V(0, 1), V(0, 1), V(0, 1), V(0, 1)}, Puv = {V(0, 0), V(0, 0), V(0, 0), V(0, 0)}} end,
-    "surface.hermite: argument #1 (Pu) [3] must be a vector", "a Hermite tangent")
+    "surface.hermite: option 'Pu' [3] must be a 2-D vector, got P(1, 0)", "a Hermite tangent")
 camera(nil)
 err(function() surface.bilinear(P(0, 0), P(1, 0), P(0, 1), P(1, 1)):wireframe{hidden = "hide"} end,
     "3-D surface", "hidden lines of a plane patch")
