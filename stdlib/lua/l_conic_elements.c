@@ -107,8 +107,7 @@ static int l_slope(lua_State *L) {
 
 static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
 static const pcl_fn plane_fns[] = {
-    PCL_FN("plane.conic_slope", l_slope, slope_args, "slope",
-           "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
+    PCL_FN("plane.conic_slope", l_slope, slope_args, "slope", "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
     PCL_END};
 
 PCL_BODY(l_elements, a) {
@@ -156,14 +155,10 @@ static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, {.name = "
                                   {.name = "C", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "D", .kind = PCL_ANY, .flags = PCL_OPT},
                                   {.name = "E", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 static const pcl_fn conic_fns[] = {
-    {.name = "conic.elements", .fn = l_elements, .args = el_args,
-     .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements",
-     .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
+    {.name = "conic.elements", .fn = l_elements, .args = el_args, .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements", .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
     PCL_END};
 static const pcl_fn method_fns[] = {
-    {.name = "c:conic", .fn = c_conic, .self = self_curve, .selftype = "curve",
-     .result = "{kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
-     .help = "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc with finite control points also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic."},
+    {.name = "c:conic", .fn = c_conic, .self = self_curve, .selftype = "curve", .result = "{kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}", .help = "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc with finite control points also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic."},
     PCL_END};
 
 /* After pcl_open_curves and pcl_open_konopatsky, with the module table on top. */

@@ -39,24 +39,19 @@ static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
 
-/* A construction of pc_konop_make or pc_konop_number: the declared points, then the numbers. */
-static int made(lua_State *L, pc_konop_kind kind) {
-    pcl_val a[6] = {0};
+/* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
+ * declared points, then the number. */
+static int made(lua_State *L) {
+    pcl_val a[5] = {0};
     PCL_READ(L, a);
+    pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
     int np = pc_konop_npoints(kind), d = a[0].n, st;
-    double p[4 * PC_MAXDIM], x[2] = {a[np].x, a[np + 1].x}, k;
+    double p[4 * PC_MAXDIM], x = a[np].x, k;
     pcl_point_rows(a, np, d, p);
-    if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
+    if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, &x, &st));
     CHECK(pc_konop_number(kind, d, p, &k));
     return pcl_push_results(L, 0, "n", k);
 }
-
-static int c_ed(lua_State *L) { return made(L, PC_KM_ED); }
-static int c_ed_k(lua_State *L) { return made(L, PC_KM_ED_K); }
-static int c_circle_k(lua_State *L) { return made(L, PC_KM_CIRCLE_K); }
-static int c_ceva(lua_State *L) { return made(L, PC_KM_CEVA); }
-static int c_ceva_k(lua_State *L) { return made(L, PC_KM_CEVA_K); }
-static int c_parabola(lua_State *L) { return made(L, PC_KM_PARABOLA); }
 
 static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
                                         {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN}, PCL_END};
@@ -69,19 +64,11 @@ static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
 
 /* The form `kind` of the table read into a[1..4] (C, A, B, range) with its parameters. */
 static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, const double *par, int npar) {
-    double t0 = NAN, t1 = NAN;
-    if (a[4].present) {
-        t0 = a[4].list[0], t1 = a[4].list[1];
-        if (!(t1 > t0)) pcl_keyfail(L, "range", "must be two finite numbers t0 < t1");
-    }
     int st, d = a[2].n;
+    double t0 = a[4].present ? a[4].list[0] : NAN, t1 = a[4].present ? a[4].list[1] : NAN, r[2];
     pc_curve *c = pc_kcurve(kind, d, a[1].v, a[2].v, a[3].v, par, npar, t0, t1, &st);
-    if (!c && st == PC_EDOMAIN) {
-        double r0, r1;
-        if (pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, &r0, &r1) == PC_OK)
-            pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r0), pcl_pushnum(L, r1));
-        pcl_fail(L, "the points or parameters are outside the form's conditions (see :help %s)", pcl_name(L));
-    }
+    if (!c && st == PC_EDOMAIN3 && pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, r, r + 1) == PC_OK)
+        return pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r[0]), pcl_pushnum(L, r[1]));
     return MADE(c);
 }
 
@@ -151,7 +138,6 @@ PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
     pc_conic_five_points_span(u, &u0, &u1);
     if (a[6].present) u0 = a[6].x;
     if (a[7].present) u1 = a[7].x;
-    if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
     MADE(pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st));
     return 1 + pcl_push_results(L, 0, "A=n B=n C=n D=n E=n", u[0], u[1], u[2], u[3], u[4]);
 }
@@ -160,18 +146,13 @@ PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
 static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"), REQNUM("q3"), PCL_END};
 static const pcl_arg five2_args[] = SPEC(five2_keys);
 PCL_BODY(c_five_points2, a) {   /* spec; C, A, B, p1, p2, q2, q3 */
-    double p1 = a[4].x, p2 = a[5].x, q2 = a[6].x, q3 = a[7].x;
-    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1)) return pcl_fail(L, "options 'p1' and 'q3' must be in (0, 1]");
-    if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
-        return pcl_fail(L, "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)");
     int st;
-    return MADE(pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st));
+    return MADE(pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, a[7].x, &st));
 }
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
                                        A_NUMOPT("t1", 1, NULL), PCL_END};
 PCL_BODY(c_triples, a) {
-    if (!(a[6].x > a[5].x)) return pcl_argfail(L, 7, "must be greater than t0");
     int st;
     return MADE(pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st));
 }
@@ -233,12 +214,8 @@ PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
 
 static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
 PCL_BODY(c_cones, a) {
-    int d = a[0].n, st;
-    if (d < 3) return pcl_fail(L, "the points must be 3-D or more (a tetrahedron ABCD), got %d-D", d);
-    for (int k = 4; k < 6; k++)
-        if (!(a[k].x > 0 && a[k].x < 1)) return pcl_argfail(L, k + 1, "must be a number in (0, 1), got %s", pcl_shown(L, k + 1));
-    if (a[6].x == 0 || a[6].x == 1) return pcl_argfail(L, 7, "must be a number other than 0 and 1, got %s", pcl_shown(L, 7));
-    return MADE(pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st));
+    int st;
+    return MADE(pc_cubic_cones(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st));
 }
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
@@ -262,11 +239,6 @@ static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is t
     return pcl_push_made(L, pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st), &st, "oneratio.simplex");
 }
 
-static int o_tetra(lua_State *L) { return made(L, PC_KM_TETRA); }
-static int o_bezier3(lua_State *L) { return made(L, PC_KM_BEZIER3); }
-static int o_smooth(lua_State *L) { return made(L, PC_KM_SMOOTH); }
-static int o_desargues(lua_State *L) { return made(L, PC_KM_DESARGUES); }
-
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
 static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
@@ -282,9 +254,6 @@ static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
 PCL_BODY(o_double_contact, a) {
     double kp = a[3].x, kq = a[4].x;
-    if (kp == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
-    if (kq == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
-    if (kp == kq) return pcl_argfail(L, 5, "must be different from kp (else M is the conic P = Q)");
     int st, d = a[0].n;
     const double *A = a[0].v, *B = a[1].v, *C = a[2].v;
     if (!a[5].present || a[5].n)   /* f(v) = v, or a constant */
@@ -299,8 +268,6 @@ PCL_BODY(o_double_contact, a) {
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
     {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
 PCL_BODY(o_closed, a) {
-    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
-    if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
     int st;
     return MADE(pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st));
 }
@@ -415,7 +382,6 @@ PCL_BODY(i_controls, a) {
 }
 
 static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
-static int i_conic(lua_State *L) { return made(L, PC_KM_ED3); }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
@@ -654,12 +620,12 @@ static int a_nelder_mead(lua_State *L) {
 
 #define SIG(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text}
 static const pcl_fn conic_fns[] = {
-    PCL_FN("conic.ed", c_ed, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
-    PCL_FN("conic.ed_k", c_ed_k, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
-    PCL_FN("conic.circle_k", c_circle_k, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
-    PCL_FN("conic.ceva", c_ceva, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
-    PCL_FN("conic.ceva_k", c_ceva_k, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
-    SIG("conic.parabola", c_parabola, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
+    PCL_FN("conic.ed", made, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
+    PCL_FN("conic.ed_k", made, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
+    PCL_FN("conic.circle_k", made, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
+    PCL_FN("conic.ceva", made, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
+    PCL_FN("conic.ceva_k", made, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
+    SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
     SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
     SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
     SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
@@ -676,14 +642,13 @@ static const pcl_fn conic_fns[] = {
     PCL_END};
 
 static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
-static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table,
-                                        .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
+static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table, .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
 static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.simplex", o_simplex, abc_args, "curve", "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B."),
-    PCL_FN("oneratio.tetra", o_tetra, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
-    PCL_FN("oneratio.bezier3", o_bezier3, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
-    PCL_FN("oneratio.smooth", o_smooth, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
-    PCL_FN("oneratio.desargues", o_desargues, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
+    PCL_FN("oneratio.tetra", made, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
+    PCL_FN("oneratio.bezier3", made, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
+    PCL_FN("oneratio.smooth", made, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
+    PCL_FN("oneratio.desargues", made, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
     PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
     PCL_FN("oneratio.closed", o_closed, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
     PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
@@ -693,7 +658,7 @@ static const pcl_fn interp_fns[] = {
     PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
     SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
     PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
-    PCL_FN("interp.conic", i_conic, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
+    PCL_FN("interp.conic", made, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
     SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
     PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
     SIG("interp.prototype", i_prototype, proto_args, "interp.prototype(\"desargues\"|\"rational\"|\"trig\", points [, t0, t1]) -> curve\ninterp.prototype(\"exp\"|\"exp1\", points, k [, t0, t1]) -> curve", "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40); desargues and rational take 4 points, the others 3."),

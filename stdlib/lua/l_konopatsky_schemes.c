@@ -10,26 +10,19 @@
 
 #define CHECK(st) pcl_check(L, (st), pc_konop_why)
 
-/* A scheme of pc_konop_scheme: the declared points, then the numbers (an enum's choice by its
- * index); its points and numbers pushed by spec (pcl_push_packed). */
-static int scheme(lua_State *L, pc_konop_scheme_kind kind, const char *spec) {
+/* A scheme of pc_konop_scheme, the kind by the name it is called: the declared points, then the
+ * numbers (an enum's choice by its index); its points and numbers pushed by its fields. */
+static int scheme(lua_State *L) {
     pcl_val a[7] = {0};
     PCL_READ(L, a);
+    const char *fields;
+    pc_konop_scheme_kind kind = pc_konop_scheme_of(pcl_name(L), &fields);
     int np = pc_konop_scheme_npoints(kind), d = a[0].n;
     double p[5 * PC_MAXDIM], x[2], o[8 * (PC_MAXDIM + 1)];
     for (int i = 0; i < 2; i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
     pcl_point_rows(a, np, d, p);
     CHECK(pc_konop_scheme(kind, d, p, x, o));
-    return pcl_push_packed(L, d, spec, o);
-}
-
-static int l_ed_scheme(lua_State *L) { return scheme(L, PC_KS_ED, "T1=h K=h T=h N=h P=h Q=h M=h"); }
-static int l_five_scheme(lua_State *L) { return scheme(L, PC_KS_FIVE, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h"); }
-static int l_ceva_scheme(lua_State *L) { return scheme(L, PC_KS_CEVA, "M3=p M=p t3=n r=n"); }
-static int l_simplex_scheme(lua_State *L) { return scheme(L, PC_KS_SIMPLEX, "N=p M=p"); }
-static int l_foci(lua_State *L) { return scheme(L, PC_KS_FOCI, "p p n n"); }
-static int l_desargues_scheme(lua_State *L) {
-    return scheme(L, PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n");
+    return pcl_push_packed(L, d, fields, o);
 }
 
 PCL_BODY(l_smooth_scheme, a) {
@@ -52,13 +45,10 @@ PCL_BODY(l_cones_excluded, a) {
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
 
 PCL_BODY(l_focal_point, a) {
-    int d = a[0].n, hyp = a[4].n == 1;
+    int d = a[0].n;
     double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], pab[2];
     pcl_point_rows(a, 3, d, p);
-    int st = pc_conic_focal_point(d, p, p + d, p + 2 * d, hyp, a[3].x, o, pab);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "CA and CB must be perpendicular semi-axes%s", hyp ? "" : ", CA the major one (the foci on it)");
-    CHECK(st);
+    CHECK(pc_conic_focal_point(d, p, p + d, p + 2 * d, a[4].n == 1, a[3].x, o, pab));
     return pcl_push_results(L, d, "p p n n", o, o + d, pab[0], pab[1]);
 }
 
@@ -87,27 +77,19 @@ static const pcl_arg abct_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM
 static const pcl_arg abcdt_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), A_NUM("t"), PCL_END};
 
 static const pcl_fn conic_fns[] = {
-    PCL_FN("conic.ed_scheme", l_ed_scheme, ed_args, "{T1, K, T, N, P, Q, M}",
-           "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
-    PCL_FN("conic.five_scheme", l_five_scheme, five_args, "{S, U, V, M, U_B, U_D, R, U_E}",
-           "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
-    PCL_FN("conic.ceva_to_ed", l_ceva_to_ed, k_args, "k_ed",
-           "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
+    PCL_FN("conic.ed_scheme", scheme, ed_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
+    PCL_FN("conic.five_scheme", scheme, five_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
+    PCL_FN("conic.ceva_to_ed", l_ceva_to_ed, k_args, "k_ed", "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
     PCL_FN("conic.ed_to_ceva", l_ed_to_ceva, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
-    PCL_FN("conic.ceva_scheme", l_ceva_scheme, ceva_args, "{M3, M, t3, r}",
-           "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
-    PCL_FN("conic.focal_point", l_focal_point, focal_args, "M, F, pa, pb",
-           "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
-    PCL_FN("conic.foci", l_foci, foci_args, "F1, F2, e, p",
-           "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
-    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}",
-           "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_FN("conic.ceva_scheme", scheme, ceva_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
+    PCL_FN("conic.focal_point", l_focal_point, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
+    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_END};
 static const pcl_fn oneratio_fns[] = {
-    PCL_FN("oneratio.simplex_scheme", l_simplex_scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
-    PCL_FN("oneratio.desargues_scheme", l_desargues_scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
-    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}",
-           "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
+    PCL_FN("oneratio.simplex_scheme", scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
+    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}", "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
     PCL_END};
 
 /* After pcl_open_konopatsky, with the module table on top. */

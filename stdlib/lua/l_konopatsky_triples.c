@@ -86,8 +86,7 @@ static const pcl_arg scheme_keys[] = {
     {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2}, PCL_END};
 static const pcl_arg scheme_args[] = {{.name = "scheme", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = scheme_keys}, PCL_END};
 static const pcl_fn fns[] = {
-    PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps",
-           "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
+    PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
     PCL_END};
 
 /* After pcl_open_konopatsky, with the module table on top. */

@@ -286,7 +286,7 @@ pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const 
     int st = five_setup(dim, a, b, c, d, e, &f);
     if (st) return fail(status, st);
     if (upar) five_params(&f, upar);
-    if (!(u1 > u0) || !isfinite(u0) || !isfinite(u1)) return fail(status, PC_EDOMAIN);
+    if (!(u1 > u0) || !isfinite(u0) || !isfinite(u1)) return fail(status, PC_EDOMAIN2);
     double h[3][ROW(PC_MAXDIM)];
     for (int i = 0; i < 3; i++) {
         double x, y, den;
@@ -314,8 +314,8 @@ pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const 
 pc_curve *pc_conic_five_points2(int dim, const double *c, const double *a, const double *b,
                                 double p1, double p2, double q2, double q3, int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
-    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1 && p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
-        return fail(status, PC_EDOMAIN);
+    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1)) return fail(status, PC_EDOMAIN);
+    if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1)) return fail(status, PC_EDOMAIN2);
     double h[3][ROW(PC_MAXDIM)], p2b = 1 - p2;
     double y0 = p2 * q2 * q3, k0 = 1 - p2b * q2;      /* Y0, K0 of (2.90) */
     for (int i = 0; i < 3; i++) {
@@ -374,7 +374,7 @@ pc_curve *pc_triples_conic(int dim, const double *a1, const double *a2, const do
     if (dim < 2 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     const double *pts[5] = {a1, a2, a3, a4, a5};
     if (!finite_pts(dim, 5, pts)) return fail(status, PC_ENONFINITE);
-    if (!(t1 > t0)) return fail(status, PC_EDOMAIN);
+    if (!(t1 > t0)) return fail(status, PC_EDOMAIN2);
     triples *s = malloc(sizeof *s);
     if (!s) return fail(status, PC_ENOMEM);
     s->dim = dim;

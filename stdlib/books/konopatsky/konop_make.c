@@ -1,6 +1,7 @@
 /* The constructions by kind (konop_make.h). */
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 #include "konop_make.h"
 #include "conic.h"
 #include "oneratio.h"
@@ -15,6 +16,18 @@ int pc_konop_npoints(pc_konop_kind kind) {
     case PC_KM_CEVA_K: return 4;
     default: return 3;
     }
+}
+
+static const struct { const char *name; pc_konop_kind kind; } names[] = {
+    {"conic.ed", PC_KM_ED}, {"conic.ed_k", PC_KM_ED_K}, {"conic.circle_k", PC_KM_CIRCLE_K},
+    {"conic.ceva", PC_KM_CEVA}, {"conic.ceva_k", PC_KM_CEVA_K}, {"conic.parabola", PC_KM_PARABOLA},
+    {"oneratio.tetra", PC_KM_TETRA}, {"oneratio.bezier3", PC_KM_BEZIER3}, {"oneratio.smooth", PC_KM_SMOOTH},
+    {"oneratio.desargues", PC_KM_DESARGUES}, {"interp.conic", PC_KM_ED3}};
+
+int pc_konop_kind_of(const char *name) {
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (strcmp(names[i].name, name) == 0) return (int)names[i].kind;
+    return -1;
 }
 
 pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const double *x, int *status) {
@@ -48,6 +61,24 @@ int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, double *out)
 
 int pc_konop_scheme_npoints(pc_konop_scheme_kind kind) {
     return kind == PC_KS_FIVE ? 5 : kind == PC_KS_DESARGUES ? 4 : 3;
+}
+
+static const struct { const char *name; pc_konop_scheme_kind kind; const char *fields; } schemes[] = {
+    {"conic.ed_scheme", PC_KS_ED, "T1=h K=h T=h N=h P=h Q=h M=h"},
+    {"conic.five_scheme", PC_KS_FIVE, "S=h U=h V=h M=h U_B=h U_D=h R=h U_E=h"},
+    {"conic.ceva_scheme", PC_KS_CEVA, "M3=p M=p t3=n r=n"},
+    {"oneratio.simplex_scheme", PC_KS_SIMPLEX, "N=p M=p"},
+    {"conic.foci", PC_KS_FOCI, "p p n n"},
+    {"oneratio.desargues_scheme", PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n"}};
+
+int pc_konop_scheme_of(const char *name, const char **fields) {
+    for (size_t i = 0; i < sizeof schemes / sizeof schemes[0]; i++) {
+        if (strcmp(schemes[i].name, name) == 0) {
+            *fields = schemes[i].fields;
+            return (int)schemes[i].kind;
+        }
+    }
+    return -1;
 }
 
 int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const double *x, double *out) {

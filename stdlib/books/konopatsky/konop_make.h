@@ -22,6 +22,8 @@ typedef enum {
 
 /* How many points the construction takes. */
 int pc_konop_npoints(pc_konop_kind kind);
+/* The kind of the construction the API calls name ("conic.ed", "oneratio.tetra", ...), or -1. */
+int pc_konop_kind_of(const char *name);
 /* The curve of a construction PC_KM_ED .. PC_KM_DESARGUES, or NULL with *status set (the
  * status of the construction's own function; PC_EDOMAIN for another kind). */
 pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const double *x, int *status);
@@ -43,6 +45,10 @@ typedef enum {
 
 /* How many points the scheme takes. */
 int pc_konop_scheme_npoints(pc_konop_scheme_kind kind);
+/* The kind of the scheme the API calls name ("conic.ed_scheme", "conic.foci", ...), or -1, and
+ * in *fields its results in the order of pc_konop_scheme's out, a pcl_push_packed spec
+ * ("T1=h K=h ...": NAME= a field of one table, h a homogeneous row, p a point, n a number). */
+int pc_konop_scheme_of(const char *name, const char **fields);
 /* The scheme's points and numbers into out (at most 8 (PC_MAXDIM + 1) doubles): the status of
  * the scheme's own function; PC_EARG for a zero k of PC_KS_ED (the arc collapses to C). */
 int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const double *x, double *out);

@@ -7,6 +7,10 @@
 #define ANY_ARC "a function curve has no power-basis form (only Bezier and B-spline curves: build the equation " \
     "as bezier{...} or with conic.*, oneratio.*, interp.*)"
 #define NO_MEET "a meet of the scheme is undefined at this parameter (its lines coincide)"
+#define OUTSIDE(op) "the points or parameters are outside the form's conditions (see :help " op ")"
+#define FORM(op) {op, PC_EDOMAIN, 0, NULL, OUTSIDE(op)}, {op, PC_EDOMAIN2, 0, "range", "must be two finite numbers t0 < t1"}
+#define NONZERO "must be a non-zero number, got 0"
+#define PERPENDICULAR "CA and CB must be perpendicular semi-axes"
 
 const pc_why pc_konop_why[] = {
     /* chapter 2: conic */
@@ -14,13 +18,27 @@ const pc_why pc_konop_why[] = {
     {"conic.ed_k", PC_ENOTCOLLINEAR, 4, NULL, "must lie on the median from C to the midpoint of AB"},
     {"conic.circle_k", PC_EDOMAIN, 0, NULL, "|CA| must equal |CB| (tangents from C to a circle)"},
     {"conic.circle", PC_EDOMAIN, 0, NULL, "|CA| must equal |CB| for the arc (or give delta or R)"},
+    {"conic.circle", PC_EDOMAIN2, 0, "range", "must be two finite numbers t0 < t1"},
+    FORM("conic.ellipse"), FORM("conic.hyperbola"), FORM("conic.reparam"), FORM("conic.sinusoid"),
+    FORM("conic.cycloid"),
+    {"conic.five_points2", PC_EDOMAIN, 0, NULL, "options 'p1' and 'q3' must be in (0, 1]"},
+    {"conic.five_points2", PC_EDOMAIN2, 0, NULL,
+     "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)"},
+    {"conic.cones", PC_EDIM, -1, NULL, "the points must be 3-D or more (a tetrahedron ABCD), got A = %s"},
+    {"conic.cones", PC_EDOMAIN, 5, NULL, "must be a number in (0, 1), got %s"},
+    {"conic.cones", PC_EDOMAIN2, 6, NULL, "must be a number in (0, 1), got %s"},
+    {"conic.cones", PC_EDOMAIN3, 7, NULL, "must be a number other than 0 and 1, got %s"},
+    {"conic.focal_point", PC_EDOMAIN, 0, NULL, PERPENDICULAR},
+    {"conic.focal_point", PC_EDOMAIN2, 0, NULL, PERPENDICULAR ", CA the major one (the foci on it)"},
     {"conic.ceva", PC_EDOMAIN, 4, NULL, "must be a non-zero number, got 0"},
     {"conic.ceva_k", PC_EDOMAIN, 0, NULL,
      "the cevians through K must meet the sides A2A3 and A3A1 at finite points other than A3"},
     {"conic.parabola", PC_EDOMAIN, 4, NULL, "must be a number in (0, 1), got %s"},
     {"conic.five_points", PC_EDOMAIN, 0, NULL, "the five points must lie in one plane with no three of them collinear"},
     {"conic.five_points", PC_ECOLLINEAR, 0, NULL, "A, B and C must not be collinear"},
+    {"conic.five_points", PC_EDOMAIN2, 0, "u1", "must be greater than u0"},
     {"conic.triples", PC_EDOMAIN, 0, NULL, "the lines A2A3 and A4A5 must meet"},
+    {"conic.triples", PC_EDOMAIN2, 7, NULL, "must be greater than t0"},
     {"conic.redundant", PC_EPOLE, 0, NULL, "u = 0 and v = 1 make both lines AB: K is undefined"},
     {"conic.cones", PC_ECOLLINEAR, 0, NULL, "A, B, C, D must span a tetrahedron"},
     {"conic.ed_scheme", PC_EARG, 4, NULL, "must not be 0 (the arc collapses to C)"},
@@ -39,6 +57,11 @@ const pc_why pc_konop_why[] = {
     {"conic.ceva_to_ed", PC_EDOMAIN, 1, NULL, "must be a positive Ceva k, got %s"},
     {"conic.ed_to_ceva", PC_EDOMAIN, 1, NULL, "must be an engineering discriminant in (0, 1), got %s"},
     /* chapter 3: oneratio */
+    {"oneratio.double_contact", PC_EDOMAIN, 4, NULL, NONZERO},
+    {"oneratio.double_contact", PC_EDOMAIN2, 5, NULL, NONZERO},
+    {"oneratio.double_contact", PC_EDOMAIN3, 5, NULL, "must be different from kp (else M is the conic P = Q)"},
+    {"oneratio.closed", PC_EDOMAIN, 4, NULL, NONZERO},
+    {"oneratio.closed", PC_EDOMAIN2, 5, NULL, NONZERO},
     {"oneratio.smooth_scheme", PC_ECOLLINEAR, 0, NULL, "A, B, C are collinear"},
     {"oneratio.smooth_scheme", PC_EDOMAIN, 0, NULL, NO_MEET},
     /* chapter 4: interp */

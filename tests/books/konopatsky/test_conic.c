@@ -361,6 +361,9 @@ static void test_hyperbola(void **state) {
     near_pt(c, 6, 5.262348, 2.882307, 1e-6);
     pc_curve_release(c);
     assert_null(pc_kcurve(PC_KC_HYPERBOLA_RADIUS, 2, C, A, B, NULL, 0, 2, 8, &st));
+    assert_int_equal(st, PC_EDOMAIN3);   /* rho = 2 < a = 3: no real point */
+    assert_null(pc_kcurve(PC_KC_HYPERBOLA_RADIUS, 2, C, A, B, NULL, 0, 8, 3, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* an empty range */
 
     /* (2.56): the branch through A by default; the book's printed range is the other one */
     c = pc_kcurve(PC_KC_HYPERBOLA_FOCAL, 2, C, A, B, NULL, 0, NAN, NAN, &st);
@@ -466,6 +469,8 @@ static void test_five_points(void **state) {
         NEAR(conic_val(co, mid) / (1 + mid[0] * mid[0] + mid[1] * mid[1]), 0, 1e-9);
     }
     pc_curve_release(c);
+    assert_null(pc_conic_five_points(2, A, B, C, D, E, 1, 0.5, 0, NULL, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* u1 < u0 */
     double F[2] = {0.5, 0.5};    /* on AB: A, B, F collinear */
     assert_null(pc_conic_five_points(2, A, B, C, D, F, 0, 1, 0, NULL, &st));
     assert_int_equal(st, PC_EDOMAIN);
@@ -510,6 +515,10 @@ static void test_five_points2(void **state) {
         near_pt(c, t, qb * qb * (1 - t) * (1 - t) / Dl, p2 * (1 - p2) * q2 * q2 * t * t / Dl, 1e-12);
     }
     pc_curve_release(c);
+    assert_null(pc_conic_five_points2(2, C1, A1, B1, 1.5, p2, q2, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN);    /* p1 outside (0, 1] */
+    assert_null(pc_conic_five_points2(2, C1, A1, B1, 1, p2, 1, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* q2 = 1: A2 on the side */
 }
 
 /* 2.2 (b), 2.3, 2.4 */
@@ -533,6 +542,8 @@ static void test_triples_redundant_reparam(void **state) {
     assert_true(fabs(conic_val(co, A2)) > 1e-3);
     assert_true(fabs(conic_val(co, A5)) > 1e-3);
     pc_curve_release(c);
+    assert_null(pc_triples_conic(2, A1, A2, A3, A4, A5, 1, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* an empty range */
 
     /* (2.120) and (2.121) = the ED arc k = 2/3 */
     double C[2] = {0, 0}, A[2] = {1, 0}, B[2] = {0, 1}, K[2];
@@ -618,6 +629,12 @@ static void test_sinusoid_cycloid_cones_contour(void **state) {
     pc_curve_release(q);
     assert_null(pc_cubic_cones(2, A, B, C, O, 0.3, 0.8, 2, &st));
     assert_int_equal(st, PC_EDIM);
+    assert_null(pc_cubic_cones(3, E1, E2, E3, O, 1, 0.8, 2, &st));
+    assert_int_equal(st, PC_EDOMAIN);    /* fP outside (0, 1) */
+    assert_null(pc_cubic_cones(3, E1, E2, E3, O, 0.3, 0, 2, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* fQ outside (0, 1) */
+    assert_null(pc_cubic_cones(3, E1, E2, E3, O, 0.3, 0.8, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN3);   /* n = 1: N = D */
 }
 
 static double uv_t_t2(void *ud, int which, double t) {

@@ -117,8 +117,26 @@ static void test_schemes(void **state) {
     for (int i = 0; i < 8 * 3; i++) NEAR(o5[i], r5[i], 0);
 }
 
+/* the kinds by the names the API gives them */
+static void test_names(void **state) {
+    (void)state;
+    assert_int_equal(pc_konop_kind_of("conic.ed"), PC_KM_ED);
+    assert_int_equal(pc_konop_kind_of("conic.ceva_k"), PC_KM_CEVA_K);
+    assert_int_equal(pc_konop_kind_of("interp.conic"), PC_KM_ED3);
+    assert_int_equal(pc_konop_kind_of("oneratio.desargues"), PC_KM_DESARGUES);
+    assert_int_equal(pc_konop_kind_of("conic.ellipse"), -1);
+    const char *fields = NULL;
+    assert_int_equal(pc_konop_scheme_of("conic.ceva_scheme", &fields), PC_KS_CEVA);
+    assert_string_equal(fields, "M3=p M=p t3=n r=n");
+    assert_int_equal(pc_konop_scheme_of("conic.foci", &fields), PC_KS_FOCI);
+    assert_string_equal(fields, "p p n n");
+    assert_int_equal(pc_konop_scheme_of("oneratio.desargues_scheme", &fields), PC_KS_DESARGUES);
+    assert_int_equal(pc_konop_scheme_of("conic.ed", &fields), -1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_names),
         cmocka_unit_test(test_curves),
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_schemes),
