@@ -3,6 +3,7 @@
  * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
  * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
 #include "pcl_args.h"
+#include "pcl_books.h"
 #include "pcl_core.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"
@@ -38,9 +39,10 @@ static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END}
 static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
+static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
 
 /* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
- * declared points, then the number. */
+ * declared points, then the number (a[0] when there are no points). */
 static int made(lua_State *L) {
     pcl_val a[5] = {0};
     PCL_READ(L, a);
@@ -49,7 +51,7 @@ static int made(lua_State *L) {
     double p[4 * PC_MAXDIM], x = a[np].x, k;
     pcl_point_rows(a, np, d, p);
     if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, &x, &st));
-    CHECK(pc_konop_number(kind, d, p, &k));
+    CHECK(pc_konop_number(kind, d, p, &x, &k));
     return pcl_push_results(L, 0, "n", k);
 }
 
@@ -232,9 +234,7 @@ PCL_BODY(c_contour, a) {
 /* ==== oneratio ============================================================================== */
 
 static const pcl_arg abcd_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), PCL_END};
-static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is the receiver */
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(o_simplex, a) {   /* also oneratio(A, B, C): the table is the receiver */
     int st;   /* the one kind, however it was called */
     return pcl_push_made(L, pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st), &st, "oneratio.simplex");
 }
@@ -275,12 +275,10 @@ PCL_BODY(o_closed, a) {
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
 
 static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
-static int o_levels(lua_State *L) {
-    double p[16 * PC_MAXDIM], out[120 * PC_MAXDIM];
-    pcl_val a[2] = {{.list = p, .cap = 16 * PC_MAXDIM}};
-    PCL_READ(L, a);
+PCL_BODY(o_levels, a) {
+    double out[120 * PC_MAXDIM];
     int n = a[0].n, d = a[0].dim;
-    CHECK(pc_decasteljau_levels(d, n, p, a[1].x, out));
+    CHECK(pc_decasteljau_levels(d, n, a[0].list, a[1].x, out));
     lua_createtable(L, n - 1, 0);
     const double *row = out;
     for (int level = 1; level < n; level++) {
@@ -365,10 +363,8 @@ static int weight_equations(lua_State *L, int n, const double *u) {
 PCL_BODY(i_weights, a) {
     int n = a[0].n;
     if (a[1].n) return weight_equations(L, n, a[0].list);
-    double t = a[1].x, w[MAXNODES];
-    CHECK(pc_lagrange_weights(n, a[0].list, t, w));
-    for (int i = 0; i < n; i++)   /* a t far outside the nodes overflows the products */
-        if (!isfinite(w[i])) return pcl_fail(L, "the weights are out of range (not finite) for t = %s", pcl_pushnum(L, t));
+    double w[MAXNODES];
+    CHECK(pc_lagrange_weights(n, a[0].list, a[1].x, w));
     return pcl_push_results(L, 0, "N", n, w);
 }
 
@@ -509,11 +505,7 @@ PCL_BODY(i_rational22, a) {
     int st, d = a[0].dim;
     double co[5 * PC_MAXDIM];
     MADE(pc_interp_rational22(d, a[0].list, co, &st));
-    lua_createtable(L, d, 0);
-    for (int k = 0; k < d; k++) {
-        pcl_push_numbers(L, 5, co + 5 * k);
-        lua_rawseti(L, -2, k + 1);
-    }
+    pcl_push_rows(L, d, 5, co);
     return 2;
 }
 
@@ -571,7 +563,6 @@ PCL_BODY(a_mse, a) {   /* f, nodes, m, opts, m =, divisor = */
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
 PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
     int N = (int)a[3].x;
-    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     pc_mse_divisor dv;
     int m = samples(L, 5, &a[4], N, 100000, &dv);
     pcl_luafn f = pcl_luafn_at(L, 1);
@@ -602,10 +593,8 @@ PCL_BODY(a_lagrange_mse, a) {
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
     {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
-static int a_nelder_mead(lua_State *L) {
-    double x[32];
-    pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
-    PCL_READ(L, a);
+PCL_BODY(a_nelder_mead, a) {
+    double *x = a[1].list;   /* the layer's buffer, minimised in place */
     int n = a[1].n, it;
     pcl_luafn f = pcl_luafn_at(L, 1);
     f.nargs = n;
@@ -625,6 +614,8 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.circle_k", made, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
     PCL_FN("conic.ceva", made, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
     PCL_FN("conic.ceva_k", made, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
+    PCL_FN("conic.ceva_to_ed", made, k_args, "k_ed", "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
+    PCL_FN("conic.ed_to_ceva", made, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
     SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
     SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
     SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),

@@ -27,9 +27,7 @@ PCL_BODY(k_area_theorem, a) {
 PCL_BODY(k_o_theorem, a) {
     int m = a[0].n, n = a[0].dim;
     double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
-    double d[2 * PC_MAXDIM];
-    pcl_point_rows(a + 1, 2, n, d);
-    CHECK(pc_k_o_theorem(n, m, a[0].list, d, d + n, r, b, &prod));
+    CHECK(pc_k_o_theorem(n, m, a[0].list, a[1].v, a[2].v, r, b, &prod));
     pcl_push_results(L, 0, "n N", prod, m, r);
     pcl_push_values(L, m, n, b, 1);   /* weight 0: B at infinity */
     return 3;
@@ -50,28 +48,20 @@ PCL_BODY(k_simplex_ratio, a) {
 PCL_BODY(k_meet_line_plane, a) {
     int n = a[0].n;
     if (n < 3) return pcl_fail(L, "a line and a plane meet in 3-D or more, got %d-D points", n);
-    double p[5 * PC_MAXDIM], k[PC_MAXDIM + 1], lam, pq[2];
-    pcl_point_rows(a, 5, n, p);
-    int st = pc_k_meet_line_plane(n, p, p + n, p + 2 * n, p + 3 * n, p + 4 * n, k, &lam, pq);
+    double k[PC_MAXDIM + 1], lam, pq[2];
+    int st = pc_k_meet_line_plane(n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, k, &lam, pq);
     if (st == PC_IMPROPER)      /* parallel: the common point at infinity, as meet() gives it */
         return pcl_push_results(L, n, "v n", k, lam);
     CHECK(st);
     return pcl_push_results(L, n, "p n n n", k, lam, pq[0], pq[1]);
 }
 
-static int polar_common(lua_State *L, int rotate) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
-    double p[3 * PC_MAXDIM], m[PC_MAXDIM];
-    pcl_point_rows(a, 3, n, p);
-    double rho = rotate ? pc_dist(n, p, p + n) : a[3].x, phi = rotate ? a[3].x : a[4].x;
-    CHECK(pc_k_polar(n, p, p + n, p + 2 * n, rho, phi, m));
+PCL_BODY(k_polar, a) {   /* also konopatsky.rotate(C, A, B, phi), declared without rho: rho = |CA| */
+    int n = a[0].n, rotate = pcl_nvalues(L) == 4;
+    double m[PC_MAXDIM], rho = rotate ? pc_dist(n, a[0].v, a[1].v) : a[3].x;
+    CHECK(pc_k_polar(n, a[0].v, a[1].v, a[2].v, rho, a[rotate ? 3 : 4].x, m));
     return pcl_push_results(L, n, "p", m);
 }
-
-static int k_polar(lua_State *L) { return polar_common(L, 0); }
-static int k_rotate(lua_State *L) { return polar_common(L, 1); }
 
 PCL_BODY(k_moving_simplex, a) {
     pc_curve *c[4] = {a[0].obj, a[1].obj, a[2].obj, a[3].obj};
@@ -123,7 +113,7 @@ static const pcl_fn fns[] = {
     {.name = "konopatsky.simplex_ratio", .fn = k_simplex_ratio, .args = rows_args, .result = "ratio", .sig = "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio", .help = "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected)."},
     PCL_FN("konopatsky.meet_line_plane", k_meet_line_plane, lp_args, "K, lambda, p, q", "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet."),
     PCL_FN("konopatsky.polar", k_polar, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
-    PCL_FN("konopatsky.rotate", k_rotate, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
+    PCL_FN("konopatsky.rotate", k_polar, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
     PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface", "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
     PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...", "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
     PCL_END};

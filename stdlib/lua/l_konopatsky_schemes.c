@@ -27,11 +27,9 @@ static int scheme(lua_State *L) {
 
 PCL_BODY(l_smooth_scheme, a) {
     int d = a[0].n, n = (int)a[3].x;
-    double abc[3 * PC_MAXDIM];
-    pcl_point_rows(a, 3, d, abc);
     double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
     double *p = buf, *q = buf + n * d, *m = q + n * d;
-    CHECK(pc_oneratio_smooth_chain(d, abc, abc + d, abc + 2 * d, n, a[4].x, p, q, m));
+    CHECK(pc_oneratio_smooth_chain(d, a[0].v, a[1].v, a[2].v, n, a[4].x, p, q, m));
     return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
 
@@ -44,23 +42,6 @@ PCL_BODY(l_cones_excluded, a) {
 
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
 
-PCL_BODY(l_focal_point, a) {
-    int d = a[0].n;
-    double p[3 * PC_MAXDIM], o[2 * PC_MAXDIM], pab[2];
-    pcl_point_rows(a, 3, d, p);
-    CHECK(pc_conic_focal_point(d, p, p + d, p + 2 * d, a[4].n == 1, a[3].x, o, pab));
-    return pcl_push_results(L, d, "p p n n", o, o + d, pab[0], pab[1]);
-}
-
-static int conv(lua_State *L, int to_ed) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
-    double r;
-    CHECK(to_ed ? pc_ceva_to_ed(a[0].x, &r) : pc_ed_to_ceva(a[0].x, &r));
-    return pcl_push_results(L, 0, "n", r);
-}
-static int l_ceva_to_ed(lua_State *L) { return conv(L, 1); }
-static int l_ed_to_ceva(lua_State *L) { return conv(L, 0); }
 
 #define SAMEPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM}
 static const pcl_arg ed_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("k"), A_NUM("u"), PCL_END};
@@ -72,17 +53,14 @@ static const pcl_arg foci_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"),
 static const pcl_arg focal_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"),
                                      {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
 static const pcl_arg ceva_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
-static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
 static const pcl_arg abct_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("t"), PCL_END};
 static const pcl_arg abcdt_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), A_NUM("t"), PCL_END};
 
 static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ed_scheme", scheme, ed_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
     PCL_FN("conic.five_scheme", scheme, five_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
-    PCL_FN("conic.ceva_to_ed", l_ceva_to_ed, k_args, "k_ed", "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
-    PCL_FN("conic.ed_to_ceva", l_ed_to_ceva, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
     PCL_FN("conic.ceva_scheme", scheme, ceva_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
-    PCL_FN("conic.focal_point", l_focal_point, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
     PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
     PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_END};

@@ -25,6 +25,7 @@ int pc_lagrange_weights(int n, const double *params, double t, double *w) {
             p *= (t - tm) / (tj - tm);
         }
         w[j] = p;
+        if (!isfinite(p)) return PC_ENONFINITE;   /* a t far outside the nodes overflows the products */
     }
     return PC_OK;
 }

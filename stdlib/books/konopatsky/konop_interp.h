@@ -11,7 +11,7 @@
 /* The weights phi_j(t) of the interpolation curve through n nodes at the distinct params
  * (NULL: uniform j/(n-1)), i.e. M(t) = sum M_j phi_j(t); they sum to 1 (§4.2-4.7: the book's
  * (4.10), (4.16), (4.21), (4.25), (4.28) are these for n = 3..7).  PC_ECOINCIDENT for
- * repeated params. */
+ * repeated params, PC_ENONFINITE for a t so far outside the nodes that a weight overflows. */
 int pc_lagrange_weights(int n, const double *params, double t, double *w);
 /* The same weights as polynomials in t, as the Maple program of §4.8 prints them (collect(e,
  * SM)): coef row j (n numbers) holds phi_j = sum_i coef[j n + i] t^i.  Errors as above. */

@@ -14,6 +14,8 @@ int pc_konop_npoints(pc_konop_kind kind) {
     case PC_KM_DESARGUES:
     case PC_KM_ED_K:
     case PC_KM_CEVA_K: return 4;
+    case PC_KM_CEVA_TO_ED:
+    case PC_KM_ED_TO_CEVA: return 0;
     default: return 3;
     }
 }
@@ -22,7 +24,8 @@ static const struct { const char *name; pc_konop_kind kind; } names[] = {
     {"conic.ed", PC_KM_ED}, {"conic.ed_k", PC_KM_ED_K}, {"conic.circle_k", PC_KM_CIRCLE_K},
     {"conic.ceva", PC_KM_CEVA}, {"conic.ceva_k", PC_KM_CEVA_K}, {"conic.parabola", PC_KM_PARABOLA},
     {"oneratio.tetra", PC_KM_TETRA}, {"oneratio.bezier3", PC_KM_BEZIER3}, {"oneratio.smooth", PC_KM_SMOOTH},
-    {"oneratio.desargues", PC_KM_DESARGUES}, {"interp.conic", PC_KM_ED3}};
+    {"oneratio.desargues", PC_KM_DESARGUES}, {"interp.conic", PC_KM_ED3}, {"conic.ceva_to_ed", PC_KM_CEVA_TO_ED},
+    {"conic.ed_to_ceva", PC_KM_ED_TO_CEVA}};
 
 int pc_konop_kind_of(const char *name) {
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
@@ -49,12 +52,14 @@ pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const do
     return NULL;
 }
 
-int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, double *out) {
+int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, const double *x, double *out) {
     const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim;
     switch (kind) {
     case PC_KM_ED_K: return pc_conic_ed_k(dim, a, b, c, d, out);
     case PC_KM_CIRCLE_K: return pc_conic_ed_circle_k(dim, a, b, c, out);
     case PC_KM_CEVA_K: return pc_conic_ceva_k(dim, a, b, c, d, out);
+    case PC_KM_CEVA_TO_ED: return pc_ceva_to_ed(x[0], out);
+    case PC_KM_ED_TO_CEVA: return pc_ed_to_ceva(x[0], out);
     default: return PC_EDOMAIN;
     }
 }
@@ -69,7 +74,8 @@ static const struct { const char *name; pc_konop_scheme_kind kind; const char *f
     {"conic.ceva_scheme", PC_KS_CEVA, "M3=p M=p t3=n r=n"},
     {"oneratio.simplex_scheme", PC_KS_SIMPLEX, "N=p M=p"},
     {"conic.foci", PC_KS_FOCI, "p p n n"},
-    {"oneratio.desargues_scheme", PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n"}};
+    {"oneratio.desargues_scheme", PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n"},
+    {"conic.focal_point", PC_KS_FOCAL, "p p n n"}};
 
 int pc_konop_scheme_of(const char *name, const char **fields) {
     for (size_t i = 0; i < sizeof schemes / sizeof schemes[0]; i++) {
@@ -92,6 +98,7 @@ int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const
     case PC_KS_SIMPLEX: return pc_oneratio_simplex_scheme(dim, a, b, c, x[0], out, out + dim);
     case PC_KS_DESARGUES: return pc_desargues_scheme(dim, a, b, c, d, x[0], out, out + 7 * (dim + 1));
     case PC_KS_FOCI: return pc_conic_foci(dim, a, b, c, x[0] == 1, out, out + dim, out + 2 * dim, out + 2 * dim + 1);
+    case PC_KS_FOCAL: return pc_conic_focal_point(dim, a, b, c, x[1] == 1, x[0], out, out + 2 * dim);
     }
     return PC_EDOMAIN;
 }

@@ -68,11 +68,13 @@ const pc_why pc_konop_why[] = {
     {"interp.lagrange", PC_ECOINCIDENT, 2, NULL, "must be distinct"},
     {"interp.controls", PC_ECOINCIDENT, 2, NULL, "must be distinct"},
     {"interp.weights", PC_ECOINCIDENT, 0, NULL, "argument #1 (params) must be distinct"},
+    {"interp.weights", PC_ENONFINITE, -2, NULL, "the weights are out of range (not finite) for t = %s"},
     {"interp.conic", PC_EDOMAIN, 4, NULL, "must be a number other than 0 and 1, got %s"},
     {"interp.prototype", PC_ESINGULAR, 0, NULL, "the exponents must be distinct (singular system)"},
     {"interp.basis", PC_ESINGULAR, 0, NULL, "the collocation matrix g_i(t_j) is singular"},
     {"interp.rational22", PC_ESINGULAR, 0, NULL, "a coordinate has no rational (2,2) fit"},
     /* chapter 5: approx */
+    {"approx.optimal_nodes", PC_EDOMAIN, 3, NULL, "must be greater than a"},
     {"approx.lagrange_mse", PC_ECOINCIDENT, 2, NULL, "must be distinct"},
     /* chapter 1: konopatsky */
     {"konopatsky.area_k", PC_EPOLE, 0, NULL, "a lambda is -1 (its point is at infinity): k is undefined"},

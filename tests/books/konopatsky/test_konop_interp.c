@@ -52,6 +52,7 @@ static void test_weights(void **state) {
                + 22.7 * tb * tb * pow(t, 4) - 8.7 * tb * pow(t, 5) + pow(t, 6), 1e-13);
     double dup[3] = {0, 0.5, 0.5};
     assert_int_equal(pc_lagrange_weights(3, dup, 0.2, w), PC_ECOINCIDENT);
+    assert_int_equal(pc_lagrange_weights(7, NULL, 1e300, w), PC_ENONFINITE);   /* the products overflow */
 }
 
 /* the Bezier control points of the interpolation curves: (4.9), §4.4, §4.6, §4.7 */

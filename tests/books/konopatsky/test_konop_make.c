@@ -57,20 +57,27 @@ static void test_numbers(void **state) {
     (void)state;
     /* K on the median from C = (1, 3) to T1 = (2, 0) at k = 1/4 of the way */
     double p[8] = {0, 0, 4, 0, 1, 3, 1.25, 2.25}, k;
-    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, &k), PC_OK);
+    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, NULL, &k), PC_OK);
     NEAR(k, 0.25, 1e-14);
     /* tangents from C = (2, 2) to the circle through A = (0, 0), B = (4, 0): the quarter arc,
      * k = 1/(1 + cos 45 deg) */
     double q[6] = {0, 0, 4, 0, 2, 2};
-    assert_int_equal(pc_konop_number(PC_KM_CIRCLE_K, 2, q, &k), PC_OK);
+    assert_int_equal(pc_konop_number(PC_KM_CIRCLE_K, 2, q, NULL, &k), PC_OK);
     NEAR(k, 1 / (1 + sqrt(0.5)), 1e-12);
     double ref = 0;
     k = 0;
-    assert_int_equal(pc_konop_number(PC_KM_CEVA_K, 2, p, &k), pc_conic_ceva_k(2, p, p + 2, p + 4, p + 6, &ref));
+    assert_int_equal(pc_konop_number(PC_KM_CEVA_K, 2, p, NULL, &k), pc_conic_ceva_k(2, p, p + 2, p + 4, p + 6, &ref));
     NEAR(k, ref, 0);
     p[6] = 3;   /* off the median */
-    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, &k), PC_ENOTCOLLINEAR);
-    assert_int_equal(pc_konop_number(PC_KM_ED, 2, p, &k), PC_EDOMAIN);
+    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, NULL, &k), PC_ENOTCOLLINEAR);
+    assert_int_equal(pc_konop_number(PC_KM_ED, 2, p, NULL, &k), PC_EDOMAIN);
+    /* the two readings of one arc: Ceva's 1/4 is the engineering discriminant's 1/2 */
+    assert_int_equal(pc_konop_number(PC_KM_CEVA_TO_ED, 0, NULL, (double[]){0.25}, &k), PC_OK);
+    NEAR(k, 0.5, 1e-15);
+    assert_int_equal(pc_konop_number(PC_KM_ED_TO_CEVA, 0, NULL, (double[]){0.5}, &k), PC_OK);
+    NEAR(k, 0.25, 1e-15);
+    assert_int_equal(pc_konop_number(PC_KM_ED_TO_CEVA, 0, NULL, (double[]){1}, &k), PC_EDOMAIN);
+    assert_int_equal(pc_konop_npoints(PC_KM_CEVA_TO_ED), 0);
 }
 
 /* the schemes by kind: their own functions' points, packed in order */
@@ -108,6 +115,13 @@ static void test_schemes(void **state) {
     NEAR(out[5], 1.8, 1e-14);
     assert_int_equal(pc_konop_scheme(PC_KS_FOCI, 2, cab, (double[]){1}, out), PC_OK);   /* hyperbola */
     NEAR(fabs(out[0]), sqrt(34), 1e-14);
+    double pab[2];
+    assert_int_equal(pc_konop_scheme(PC_KS_FOCAL, 2, cab, (double[]){0.7, 0}, out), PC_OK);
+    assert_int_equal(pc_conic_focal_point(2, cab, cab + 2, cab + 4, 0, 0.7, ref, pab), PC_OK);
+    for (int i = 0; i < 4; i++) NEAR(out[i], ref[i], 0);      /* M, F */
+    NEAR(out[4], pab[0], 0);
+    NEAR(out[5], pab[1], 0);
+    NEAR(out[2], -4, 1e-14);                                 /* F = F2 = C - (A - C)e */
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_FIVE), 5);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_DESARGUES), 4);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_CEVA), 3);
