@@ -4,7 +4,7 @@
 #include "pcl_books.h"
 #include "pcl_core.h"
 #include "pcl_point.h"
-#include "quadratic.h"
+#include "quadratic_given.h"
 #include "quadratic_on.h"
 #include "konop_why.h"
 
@@ -71,41 +71,35 @@ static const pcl_arg condition_keys[] = {{.name = "points", .kind = PCL_POINTS, 
 static const pcl_arg condition_table = {.name = "conic", .kind = PCL_OPTIONS, .keys = condition_keys};
 
 /* {points = {P, ...}, tangents = {{P, V}, ...}} at 1: five conditions, a tangent at a point
- * given among the points or not (quadratic.h, pc_conic_coef_conditions). */
-static int conditions(lua_State *L, double coef[6]) {
-    double pts[10], rows[30];
+ * given among the points or not (quadratic_given.h). */
+static int conditions(lua_State *L, pc_conic_info *o) {
+    double pts[10], tangents[20];
     pcl_val k[2] = {{.list = pts, .cap = 10}};
     pcl_read_options(L, 1, 1, &condition_table, k);
     lua_getfield(L, 1, "tangents");
     int tg = lua_gettop(L), np = k[0].n, nt = k[1].present ? (int)lua_rawlen(L, tg) : 0;
     if (np + nt != 5)
         return pcl_fail(L, "five conditions fix a conic, got %d points and %d tangents", np, nt);
-    for (int i = 0; i < np; i++) pc_conic_row_point(pts[2 * i], pts[2 * i + 1], rows + 6 * i);
     for (int i = 0; i < nt; i++) {
         pcl_val t = {0};
         lua_geti(L, tg, i + 1);
         pcl_readone(L, tg + 1, 1, i + 1, &tangent_item, 2, &t);
-        pc_conic_row_tangent(t.v[0], t.v[1], t.v[2], t.v[3], rows + 6 * (np + i));
+        memcpy(tangents + 4 * i, t.v, sizeof(double) * 4);
         lua_pop(L, 1);
     }
-    lua_pop(L, 1);
-    return pc_conic_coef_conditions(rows, coef);
+    return pc_conic_info_given(np, pts, nt, tangents, o);
 }
 
-/* plane.conic_slope(coef, X): dy/dx of the implicit conic at its point X (declared) */
-static int l_slope(lua_State *L) {
-    double q[6];
-    pcl_val a[2] = {{.list = q, .cap = 6}};
-    PCL_READ(L, a);
+static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
+PCL_BODY(l_slope, a) {
     double sl, v;
-    int st = pc_conic_slope_on(q, a[1].v[0], a[1].v[1], &sl, &v);
+    int st = pc_conic_slope_on(a[0].list, a[1].v[0], a[1].v[1], &sl, &v);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
     if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
     return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
 }
 
-static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
 static const pcl_fn plane_fns[] = {
     PCL_FN("plane.conic_slope", l_slope, slope_args, "slope", "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
     PCL_END};
@@ -114,13 +108,10 @@ PCL_BODY(l_elements, a) {
     pc_curve *c = pcl_tocurve(L, 1);
     if (c) return conic_of_curve(L, c);
     pc_conic_info o;
-    int st;
-    int has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
+    int st, has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
     if (lua_istable(L, 1)) lua_pop(L, 1);
     if (has_points) {
-        st = conditions(L, o.coef);
-        if (st == PC_ECOLLINEAR) return pcl_fail(L, "the conditions do not fix one conic (they are dependent)");
-        if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
+        st = conditions(L, &o);
     } else if (lua_istable(L, 1)) {
         static const pcl_arg coef_arg = A_NUMBERS("conic", 6, 6);
         double q[6];
@@ -131,16 +122,13 @@ PCL_BODY(l_elements, a) {
     } else if (pcl_tovalue(L, 1)) {
         /* five points, each read by the one point rule */
         static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};
-        double pts[10], q[6];
+        double pts[10];
         for (int i = 0; i < 5; i++) {
             pcl_val v = {0};
             pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v);
-            pts[2 * i] = v.v[0], pts[2 * i + 1] = v.v[1];
+            memcpy(pts + 2 * i, v.v, sizeof(double) * 2);
         }
-        st = pc_conic_coef_five(pts, q);
-        if (st == PC_ECOLLINEAR)
-            return pcl_fail(L, "the five points fix no single conic (four of them are collinear, or two coincide)");
-        if (st == PC_OK) st = pc_conic_info_coef(q, &o);
+        st = pc_conic_info_five(pts, &o);
     } else {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
                            pcl_shown(L, 1));

@@ -3,6 +3,9 @@
 #include "pcl_core.h"
 #include "pcl_point.h"
 #include "konop_triples.h"
+#include "konop_why.h"
+
+#define CHECK(st) pcl_check(L, (st), pc_konop_why)
 
 /* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
  * no such list */
@@ -54,20 +57,14 @@ PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, r
     lua_getfield(L, 1, "current");
     if (!names3(L, &nm, cur))
         return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
-    if (!known[cur[1]] || !known[cur[2]])
-        return pcl_fail(L, "the current point's line current[2], current[3] must join two given points");
     int res = pc_triples_name(&nm, a[4].s);
-    double t0 = 0, t1 = 1;
-    if (a[5].present) {
-        t0 = a[5].list[0], t1 = a[5].list[1];
-        if (!(t1 > t0)) return pcl_keyfail(L, "range", "must be {t0, t1} with t0 < t1");
-    }
     pc_triples_plan plan;
     int st = pc_triples_plan_make(nm.n, ntri, (const int (*)[3])tri, known, cur[0], cur[1], cur[2], res, &plan);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_push_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, "conic.scheme");
+    CHECK(st);
+    double t0 = a[5].present ? a[5].list[0] : 0, t1 = a[5].present ? a[5].list[1] : 1;
+    pcl_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, pc_konop_why);
     lua_createtable(L, plan.nsteps, 0);
     for (int s = 0; s < plan.nsteps; s++) {
         char text[4 * 64];

@@ -39,6 +39,9 @@ const pc_why pc_konop_why[] = {
     {"conic.five_points", PC_EDOMAIN2, 0, "u1", "must be greater than u0"},
     {"conic.triples", PC_EDOMAIN, 0, NULL, "the lines A2A3 and A4A5 must meet"},
     {"conic.triples", PC_EDOMAIN2, 7, NULL, "must be greater than t0"},
+    {"conic.scheme", PC_EDOMAIN2, 0, NULL,
+     "the current point's line current[2], current[3] must join two given points"},
+    {"conic.scheme", PC_EDOMAIN3, 0, "range", "must be {t0, t1} with t0 < t1"},
     {"conic.redundant", PC_EPOLE, 0, NULL, "u = 0 and v = 1 make both lines AB: K is undefined"},
     {"conic.cones", PC_ECOLLINEAR, 0, NULL, "A, B, C, D must span a tetrahedron"},
     {"conic.ed_scheme", PC_EARG, 4, NULL, "must not be 0 (the arc collapses to C)"},
@@ -103,5 +106,8 @@ const pc_why pc_konop_why[] = {
     {"conic.elements", PC_ECOLLINEAR, 0, NULL,
      "the points are a straight line (a middle weight 0, or collinear points): no conic"},
     {"conic.elements", PC_EDOMAIN, 0, NULL, "a degenerate conic (a line pair, parallel lines, or no real points)"},
+    {"conic.elements", PC_ESINGULAR, 0, NULL, "the conditions do not fix one conic (they are dependent)"},
+    {"conic.elements", PC_ECOINCIDENT, 0, NULL,
+     "the five points fix no single conic (four of them are collinear, or two coincide)"},
     {"plane.conic_slope", PC_EZERO, 0, NULL, "X is a singular point of the curve (both partial derivatives are 0)"},
     {0}};
