@@ -382,11 +382,10 @@ static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_E
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
                                    SP("C2"), A_LATER("Cn"), {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
-static int i_arc(lua_State *L) {
+PCL_BODY(i_arc, a) {
     static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
                          u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
-    pcl_val a[4] = {0}, cn = {0}, p3 = {0};
-    PCL_READ(L, a);
+    pcl_val cn = {0}, p3 = {0};
     int n = a[0].n, d = a[0].dim, k = 4, st;
     const pcl_val *u = &a[3];
     if (lua_istable(L, 3)) {
@@ -416,35 +415,26 @@ PCL_BODY(i_adaptive, a) {
     return pcl_push_results(L, 0, "N", n, v);
 }
 
-static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};
-static const struct { pc_proto_kind kind; int n, nk; } protos[] = {
-    {PC_PROTO_DESARGUES, 4, 0}, {PC_PROTO_RATIONAL, 4, 0}, {PC_PROTO_EXP, 3, 3}, {PC_PROTO_EXP_AFFINE, 3, 2},
-    {PC_PROTO_TRIG, 3, 0}};
+static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};   /* pc_proto_kind */
 static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
                                      A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
 static int i_prototype(lua_State *L) {
-    pcl_val a[5] = {0}, p = {0}, k = {0}, t = {0};
+    pcl_val a[5] = {0}, p = {0}, k = {0}, v = {0};
     PCL_READ(L, a);
-    int i = a[0].n, n = protos[i].n, nk = protos[i].nk, next = nk ? 4 : 3;
+    int n, nk, st;
+    pc_interp_prototype_shape((pc_proto_kind)a[0].n, &n, &nk);
     /* the count of points the prototype takes, whatever came (nil included) */
     if (!lua_istable(L, 2)) return pcl_argfail(L, 2, "must hold %d points (the \"%s\" prototype), got %s", n, a[0].s, pcl_shown(L, 2));
-    pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta = A_NUM("t0");
+    pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta[2] = {A_NUM("t0"), A_NUM("t1")};
     pcl_readone(L, 2, 2, 0, &pa, 0, &p);
-    double kk[3] = {0, 0, 0}, t0 = NAN, t1 = NAN;
-    if (nk) {
-        pcl_readone(L, 3, 3, 0, &ka, 0, &k);
-        memcpy(kk, k.list, sizeof(double) * (size_t)nk);
+    if (nk) pcl_readone(L, 3, 3, 0, &ka, 0, &k);
+    double t[2] = {NAN, NAN}, none[3] = {0};
+    for (int j = 0, at = nk ? 4 : 3; j < 2 && !lua_isnoneornil(L, at); j++) {   /* t1 must follow t0 */
+        pcl_readone(L, at + j, at + j, 0, &ta[j], 0, &v);
+        t[j] = v.x;
     }
-    if (!lua_isnoneornil(L, next)) {
-        pcl_readone(L, next, next, 0, &ta, 0, &t);
-        t0 = t.x;
-        ta.name = "t1";
-        pcl_readone(L, next + 1, next + 1, 0, &ta, 0, &t);
-        t1 = t.x;
-        if (!(t1 > t0)) return pcl_fail(L, "argument #%d (t1) must be greater than t0", next + 1);
-    }
-    int st;
-    return MADE(pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st));
+    if (!(t[1] > t[0]) && !isnan(t[0])) return pcl_fail(L, "argument #%d (t1) must be greater than t0", nk ? 5 : 4);
+    return MADE(pc_interp_prototype((pc_proto_kind)a[0].n, p.dim, n, p.list, nk ? k.list : none, t[0], t[1], &st));
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes, the elements of the table (function 0) */
@@ -481,22 +471,16 @@ PCL_BODY(i_basis, a) {
     int n = a[0].n, d = a[1].dim;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);
     need_count(L, 3, &a[2], n);
-    const double *u = a[2].list;
-    double t0 = u[0], t1 = u[0];
-    for (int i = 1; i < n; i++) t0 = fmin(t0, u[i]), t1 = fmax(t1, u[i]);
-    if (a[3].present) {
-        if (!a[4].present) return pcl_argfail(L, 5, "must be a finite number (with t0), got nil");
-        t0 = a[3].x, t1 = a[4].x;
-    }
-    if (!(t1 > t0)) return pcl_fail(L, "the parameter range must not be empty");
+    if (a[3].present && !a[4].present) return pcl_argfail(L, 5, "must be a finite number (with t0), got nil");
     pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
     int st;
-    pc_curve *c = pc_interp_basis(d, n, a[1].list, u, basis_cb, pcl_luafn_free, r, t0, t1, &st);
+    pc_curve *c = pc_interp_basis(d, n, a[1].list, a[2].list, basis_cb, pcl_luafn_free, r, a[3].present ? a[3].x : NAN,
+                                  a[3].present ? a[4].x : NAN, &st);
     if (!c) pcl_luafn_free(r);
     MADE(c);
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
-    CHECK(pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
+    CHECK(pc_interp_basis_membership(n, a[2].list, basis_cb, r, c->t0, c->t1, 65, &dev));
     return 1 + pcl_push_results(L, 0, "b n", dev <= 1e-9, dev);
 }
 

@@ -199,7 +199,11 @@ pc_curve *pc_interp_basis(int dim, int n, const double *pts, const double *param
                           double t1, int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     if (n < 1 || n > 16) return fail(status, PC_EDOMAIN);
-    if (!(t1 > t0)) return fail(status, PC_EDOMAIN);
+    if (isnan(t0) && isnan(t1)) {                     /* the nodes' range */
+        t0 = t1 = params[0];
+        for (int i = 1; i < n; i++) t0 = fmin(t0, params[i]), t1 = fmax(t1, params[i]);
+    }
+    if (!(t1 > t0)) return fail(status, PC_EDOMAIN2);
     basis *s = calloc(1, sizeof *s);
     if (!s) return fail(status, PC_ENOMEM);
     s->dim = dim, s->n = n, s->g = g, s->ud = ud;
@@ -294,6 +298,11 @@ int pc_interp_prototype_weights(pc_proto_kind kind, int n, const double *k, doub
     if (!st) st = collocation_inverse(proto_g, &p, n, params, ginv);
     if (!st) st = basis_phi(proto_g, &p, ginv, n, t, w);
     return st;
+}
+
+void pc_interp_prototype_shape(pc_proto_kind kind, int *n, int *nk) {
+    *n = kind == PC_PROTO_DESARGUES || kind == PC_PROTO_RATIONAL ? 4 : 3;
+    *nk = kind == PC_PROTO_EXP ? 3 : kind == PC_PROTO_EXP_AFFINE ? 2 : 0;
 }
 
 pc_curve *pc_interp_prototype(pc_proto_kind kind, int dim, int n, const double *pts,

@@ -75,6 +75,7 @@ const pc_why pc_konop_why[] = {
     {"interp.conic", PC_EDOMAIN, 4, NULL, "must be a number other than 0 and 1, got %s"},
     {"interp.prototype", PC_ESINGULAR, 0, NULL, "the exponents must be distinct (singular system)"},
     {"interp.basis", PC_ESINGULAR, 0, NULL, "the collocation matrix g_i(t_j) is singular"},
+    {"interp.basis", PC_EDOMAIN2, 0, NULL, "the parameter range must not be empty"},
     {"interp.rational22", PC_ESINGULAR, 0, NULL, "a coordinate has no rational (2,2) fit"},
     /* chapter 5: approx */
     {"approx.optimal_nodes", PC_EDOMAIN, 3, NULL, "must be greater than a"},

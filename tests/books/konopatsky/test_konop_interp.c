@@ -250,12 +250,35 @@ static void test_membership(void **state) {
     assert_int_equal(pc_interp_basis_membership(3, half, bern_g, NULL, 0, 1, 1, &dev), PC_EDOMAIN);
 }
 
+static int line_basis(void *ud, double t, int n, double *g) {   /* 1, t */
+    (void)ud;
+    (void)n;
+    g[0] = 1, g[1] = t;
+    return PC_OK;
+}
+
+/* the engine's domain: the nodes' range by default, and an empty range refused */
+static void test_basis_range(void **state) {
+    (void)state;
+    const double pts[4] = {0, 0, 2, 4}, params[2] = {0.75, 0.25};
+    int st;
+    pc_curve *c = pc_interp_basis(2, 2, pts, params, line_basis, NULL, NULL, NAN, NAN, &st);
+    assert_non_null(c);
+    assert_true(c->t0 == 0.25 && c->t1 == 0.75);
+    double m[2];
+    assert_int_equal(pc_curve_eval(c, 0.5, m), PC_OK);   /* halfway between the nodes */
+    assert_true(fabs(m[0] - 1) < 1e-14 && fabs(m[1] - 2) < 1e-14);
+    pc_curve_release(c);
+    assert_null(pc_interp_basis(2, 2, pts, params, line_basis, NULL, NULL, 0.5, 0.5, &st));
+    assert_int_equal(st, PC_EDOMAIN2);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_weights),    cmocka_unit_test(test_controls),
         cmocka_unit_test(test_arc),        cmocka_unit_test(test_adaptive),
         cmocka_unit_test(test_prototypes), cmocka_unit_test(test_rational22),
-        cmocka_unit_test(test_membership),
+        cmocka_unit_test(test_membership), cmocka_unit_test(test_basis_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
