@@ -74,10 +74,6 @@ static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, cons
     return MADE(c);
 }
 
-static void need_point(lua_State *L, const pcl_val *v, const char *key) {
-    if (!v->present) pcl_keyfail(L, key, "must be a point, got nil");
-}
-
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
 static const pc_kcurve_kind ellipse_kinds[] = {PC_KC_ELLIPSE_ANGLE, PC_KC_ELLIPSE_RADIUS, PC_KC_ELLIPSE_FOCAL,
@@ -88,12 +84,12 @@ static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
 PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     int st, by = a[5].n;
     if (by == 6) {                                   /* §2.1.1.6: K, A, B, lambda */
-        need_point(L, &a[7], "K");
+        if (!a[7].present) return pcl_keyfail(L, "K", "must be a point, got nil");
         if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
             return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
         return MADE(pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st));
     }
-    need_point(L, &a[1], "C");
+    if (!a[1].present) return pcl_keyfail(L, "C", "must be a point, got nil");
     if (by == 5) return MADE(pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st));
     return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
 }
@@ -133,14 +129,9 @@ PCL_BODY(c_tilted, a) {
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
 static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
 PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
-    int d = a[0].n;
-    double u[5];
-    int st = CHECK(pc_conic_five_points_params(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u));
-    double u0, u1;
-    pc_conic_five_points_span(u, &u0, &u1);
-    if (a[6].present) u0 = a[6].x;
-    if (a[7].present) u1 = a[7].x;
-    MADE(pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st));
+    int st;
+    double u[5], u0 = a[6].present ? a[6].x : NAN, u1 = a[7].present ? a[7].x : NAN;
+    MADE(pc_conic_five_points(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, u, &st));
     return 1 + pcl_push_results(L, 0, "A=n B=n C=n D=n E=n", u[0], u[1], u[2], u[3], u[4]);
 }
 
@@ -182,23 +173,15 @@ PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch */
 /* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
 static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    int g = 1;
-    if (lua_type(L, idx) == LUA_TNUMBER) {
-        out->v[1] = lua_tonumber(L, idx);
-    } else {
-        if (!lua_istable(L, idx)) return 0;
-        size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
-        if (len < 1 || len > PC_KC_MAXPAR - 1) return 0;
-        g = (int)len;
-        for (int i = 1; i <= g; i++) {
-            lua_geti(L, idx, i);
-            out->v[i] = lua_type(L, -1) == LUA_TNUMBER ? lua_tonumber(L, -1) : NAN;
-            lua_pop(L, 1);
-        }
-    }
+    int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
+    if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
     out->v[0] = g;
-    for (int i = 1; i <= g; i++)
+    for (int i = 1; i <= g; i++) {
+        int t = list ? lua_geti(L, idx, i) : lua_type(L, idx);
+        out->v[i] = t == LUA_TNUMBER ? lua_tonumber(L, list ? -1 : idx) : NAN;
+        lua_pop(L, list);   /* the element, when k is a list */
         if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
+    }
     return 1;
 }
 static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_waves,

@@ -285,7 +285,12 @@ pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const 
     five f;
     int st = five_setup(dim, a, b, c, d, e, &f);
     if (st) return fail(status, st);
-    if (upar) five_params(&f, upar);
+    double up[5], s0, s1;
+    five_params(&f, up);
+    if (upar) memcpy(upar, up, sizeof up);
+    pc_conic_five_points_span(up, &s0, &s1);
+    if (isnan(u0)) u0 = s0;
+    if (isnan(u1)) u1 = s1;
     if (!(u1 > u0) || !isfinite(u0) || !isfinite(u1)) return fail(status, PC_EDOMAIN2);
     double h[3][ROW(PC_MAXDIM)];
     for (int i = 0; i < 3; i++) {

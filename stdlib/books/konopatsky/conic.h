@@ -74,7 +74,8 @@ pc_curve *pc_conic_conjugate2(int dim, const double *kpt, const double *a, const
 /* §2.1.4 The conic through five coplanar points by Pascal's hexagon A D M E B C, in the
  * corrected form (the printed S (2.68) is the meet with the line through E parallel to CB, so
  * the printed (2.74) misses B; digest §5.4): S = BE x AD, U = (A - C)u + C, V = SU x CB,
- * M = UE x VD.  The curve runs over [u0, u1] in the book's u (C at u = 0, A at u = 1); upar
+ * M = UE x VD.  The curve runs over [u0, u1] in the book's u (C at u = 0, A at u = 1; NaN: the
+ * end of pc_conic_five_points_span); upar
  * (may be NULL) gets u of A, B, C, D, E.  whole: a second piece over [u1, 2 u1 - u0] adds the
  * complementary arc (the middle control point negated; not the book's u), closing the conic.
  * PC_ECOLLINEAR if A, B, C are collinear, PC_EDOMAIN

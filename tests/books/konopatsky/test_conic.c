@@ -436,6 +436,12 @@ static void test_five_points(void **state) {
     pc_conic_five_points_span(far, &u0, &u1);  /* no range end at infinity (|u| >= 1e6) */
     NEAR(u0, -0.5, 0);
     NEAR(u1, 1, 0);
+    pc_curve *dflt = pc_conic_five_points(2, A, B, C, D, E, NAN, NAN, 0, NULL, &st);   /* the span */
+    assert_true(dflt->t0 == 0 && fabs(dflt->t1 - 2.557692308) < 1e-9);
+    pc_curve_release(dflt);
+    dflt = pc_conic_five_points(2, A, B, C, D, E, NAN, 2, 0, NULL, &st);
+    assert_true(dflt->t0 == 0 && dflt->t1 == 2);
+    pc_curve_release(dflt);
     near_pt(c, 0.25, 0.3, 0.066667, 1e-6);
     near_pt(c, 0.5, 0.531496, 0.094488, 1e-6);
     near_pt(c, 0.75, 0.743119, 0.082569, 1e-6);
