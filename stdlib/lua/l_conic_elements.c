@@ -64,10 +64,8 @@ static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return ok;
 }
 
-static const pcl_arg tangent_item = {.name = "tangents", .kind = PCL_ANY, .read = read_tangent,
-                                     .expect = "{a 2-D point, a 2-D vector}"};
-static const pcl_arg condition_keys[] = {{.name = "points", .kind = PCL_POINTS, .dim = 2, .lo = 0, .hi = 5},
-                                         {.name = "tangents", .kind = PCL_TABLE}, PCL_END};
+static const pcl_arg tangent_item = A_ANY("tangents", read_tangent, "{a 2-D point, a 2-D vector}");
+static const pcl_arg condition_keys[] = {A_POINTS("points", 2, 0, 5), {.name = "tangents", .kind = PCL_TABLE}, PCL_END};
 static const pcl_arg condition_table = {.name = "conic", .kind = PCL_OPTIONS, .keys = condition_keys};
 
 /* {points = {P, ...}, tangents = {{P, V}, ...}} at 1: five conditions, a tangent at a point
@@ -139,9 +137,8 @@ PCL_BODY(l_elements, a) {
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
-static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, {.name = "B", .kind = PCL_ANY, .flags = PCL_OPT},
-                                  {.name = "C", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "D", .kind = PCL_ANY, .flags = PCL_OPT},
-                                  {.name = "E", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
+#define LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
+static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, LATER("B"), LATER("C"), LATER("D"), LATER("E"), PCL_END};
 static const pcl_fn conic_fns[] = {
     {.name = "conic.elements", .fn = l_elements, .args = el_args, .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements", .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
     PCL_END};

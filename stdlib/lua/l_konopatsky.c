@@ -31,6 +31,8 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 #define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 #define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
+#define A_INTOPT(nm, l, h, d) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = l, .hi = h, .dflt = d}
+#define A_PARAMS {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}   /* one per point */
 
 /* ==== conic ================================================================================= */
 
@@ -55,8 +57,7 @@ static int made(lua_State *L) {
     return pcl_push_results(L, 0, "n", k);
 }
 
-static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
-                                        {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN}, PCL_END};
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), A_NUMOPT("tC", NAN, NULL), PCL_END};
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
@@ -150,8 +151,7 @@ PCL_BODY(c_triples, a) {
     return MADE(pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st));
 }
 
-static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
-                                         {.name = "v", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
+static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), A_NUMOPT("u", 0, NULL), A_NUMOPT("v", 0, NULL), PCL_END};
 PCL_BODY(c_redundant, a) {
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
@@ -223,8 +223,7 @@ PCL_BODY(o_simplex, a) {   /* also oneratio(A, B, C): the table is the receiver 
 }
 
 static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
-static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
-    {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
+static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"), A_INTOPT("n", 1, 40, 2), PCL_END};
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -274,8 +273,7 @@ PCL_BODY(o_levels, a) {
 
 /* ==== interp ================================================================================ */
 
-static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES),
-    {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
+static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES), A_PARAMS, PCL_END};
 
 /* the interpolation curve through a[0] at the parameters a[1] (uniform when absent) */
 static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
@@ -364,7 +362,7 @@ static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_E
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
-                                   SP("C2"), A_LATER("Cn"), {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
+                                   SP("C2"), A_LATER("Cn"), A_PARAMS, PCL_END};
 PCL_BODY(i_arc, a) {
     static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
                          u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
@@ -448,8 +446,7 @@ static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg basis_args[] = {{.name = "basis", .kind = PCL_ANY, .read = read_basis, .expect = "a list of 1 to 16 functions of t"},
                                      A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
-                                     {.name = "t0", .kind = PCL_NUMBER, .flags = PCL_OPT},
-                                     {.name = "t1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
+                                     A_NUMOPT("t0", 0, NULL), A_NUMOPT("t1", 0, NULL), PCL_END};
 PCL_BODY(i_basis, a) {
     int n = a[0].n, d = a[1].dim;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);

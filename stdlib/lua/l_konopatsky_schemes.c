@@ -48,10 +48,9 @@ static const pcl_arg ed_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("
 static const pcl_arg five_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), SAMEPT("E"), A_NUM("u"), PCL_END};
 static const pcl_arg smooth_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_INT("n", 1, 40), A_NUM("t"), PCL_END};
 static const pcl_arg f_args[] = {A_NUM("fP"), A_NUM("fQ"), PCL_END};
-static const pcl_arg foci_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"),
-                                    {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
-static const pcl_arg focal_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"),
-                                     {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}, PCL_END};
+#define KIND {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}
+static const pcl_arg foci_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), KIND, PCL_END};
+static const pcl_arg focal_args[] = {SAMEPT("C"), SAMEPT("A"), SAMEPT("B"), A_NUM("phi"), KIND, PCL_END};
 static const pcl_arg ceva_args[] = {SAMEPT("A1"), SAMEPT("A2"), SAMEPT("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
 static const pcl_arg abct_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), A_NUM("t"), PCL_END};
 static const pcl_arg abcdt_args[] = {SAMEPT("A"), SAMEPT("B"), SAMEPT("C"), SAMEPT("D"), A_NUM("t"), PCL_END};
