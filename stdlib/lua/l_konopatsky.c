@@ -1,7 +1,7 @@
-/* Binding of Konopatsky's curves (stdlib/books/konopatsky/conic.h, konop_curves.h, oneratio.h,
- * konop_interp.h, approx.h): the tables conic, oneratio, interp and approx, declared on the
- * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
- * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
+/* Binding of Konopatsky's curves (stdlib/books/konopatsky/: conic.h, konop_curves.h, oneratio.h,
+ * konop_interp.h, approx.h, konop_schemes.h, konop_triples.h): the tables conic, oneratio,
+ * interp and approx, declared on the argument layer (pcl_args.h, docs/bindings.md).  Every curve
+ * is the one curve userdata (pcl_pushcurve); the constructions are in the core (docs/konopatsky.md). */
 #include "pcl_args.h"
 #include "pcl_books.h"
 #include "pcl_core.h"
@@ -14,6 +14,8 @@
 #include "approx.h"
 #include "konop_why.h"
 #include "konop_make.h"
+#include "konop_schemes.h"
+#include "konop_triples.h"
 
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
@@ -646,4 +648,156 @@ void pcl_open_konopatsky(lua_State *L) {
     lua_setfield(L, -2, "oneratio");
     module(L, "interp", interp_fns);
     module(L, "approx", approx_fns);
+}
+
+/* ==== the scheme points of the monograph (konop_schemes.h): each a point, or a vector where the
+ * scheme's point is at infinity (N at u = 1/2 of conic.ed_scheme) ========================== */
+
+/* A scheme of pc_konop_scheme, the kind by the name it is called: the declared points, then the
+ * numbers (an enum's choice by its index); its points and numbers pushed by its fields. */
+static int scheme(lua_State *L) {
+    pcl_val a[7] = {0};
+    PCL_READ(L, a);
+    const char *fields;
+    pc_konop_scheme_kind kind = pc_konop_scheme_of(pcl_name(L), &fields);
+    int np = pc_konop_scheme_npoints(kind), d = a[0].n;
+    double p[5 * PC_MAXDIM], x[2], o[8 * (PC_MAXDIM + 1)];
+    for (int i = 0; i < 2; i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
+    pcl_point_rows(a, np, d, p);
+    CHECK(pc_konop_scheme(kind, d, p, x, o));
+    return pcl_push_packed(L, d, fields, o);
+}
+
+PCL_BODY(l_smooth_scheme, a) {
+    int d = a[0].n, n = (int)a[3].x;
+    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
+    double *p = buf, *q = buf + n * d, *m = q + n * d;
+    CHECK(pc_oneratio_smooth_chain(d, a[0].v, a[1].v, a[2].v, n, a[4].x, p, q, m));
+    return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
+}
+
+PCL_BODY(l_cones_excluded, a) {
+    double u[5];
+    int n;
+    CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
+    return pcl_push_results(L, 0, "N", n, u);
+}
+
+static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
+
+static const pcl_arg ed_scheme_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("k"), A_NUM("u"), PCL_END};
+static const pcl_arg five_scheme_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_NUM("u"), PCL_END};
+static const pcl_arg smooth_scheme_args[] = {SP("A"), SP("B"), SP("C"), A_INT("n", 1, 40), A_NUM("t"), PCL_END};
+static const pcl_arg f_args[] = {A_NUM("fP"), A_NUM("fQ"), PCL_END};
+#define KIND {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}
+static const pcl_arg foci_args[] = {SP("C"), SP("A"), SP("B"), KIND, PCL_END};
+static const pcl_arg focal_args[] = {SP("C"), SP("A"), SP("B"), A_NUM("phi"), KIND, PCL_END};
+static const pcl_arg ceva_scheme_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
+static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
+static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
+
+static const pcl_fn scheme_conic_fns[] = {
+    PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
+    PCL_FN("conic.five_scheme", scheme, five_scheme_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
+    PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
+    PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
+    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_END};
+static const pcl_fn scheme_oneratio_fns[] = {
+    PCL_FN("oneratio.simplex_scheme", scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
+    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_scheme_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}", "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
+    PCL_END};
+
+/* After pcl_open_konopatsky, with the module table on top (pcl.h, PCL_MODULES). */
+void pcl_open_konopatsky_schemes(lua_State *L) {
+    pcl_register_into(L, lua_gettop(L), "conic", scheme_conic_fns);
+    pcl_register_into(L, lua_gettop(L), "oneratio", scheme_oneratio_fns);
+}
+
+/* ==== the symbolic method of §2.2 (konop_triples.h): conic.scheme{...} ====================== */
+
+/* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
+ * no such list */
+static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
+    int t = lua_gettop(L), ok = lua_istable(L, t) && lua_rawlen(L, t) == 3;
+    for (int k = 0; ok && k < 3; k++) {
+        ok = lua_geti(L, t, k + 1) == LUA_TSTRING;
+        idx[k] = ok ? pc_triples_name(nm, lua_tostring(L, -1)) : 0;   /* the name stays alive in the table */
+        if (idx[k] < 0) pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return ok;
+}
+
+PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, range */
+    pc_triples_names nm = {0};
+    int tri[PC_TRIPLES_MAXTRI][3], cur[3], dim = 0;
+    unsigned char known[PC_TRIPLES_MAXPTS] = {0};
+    double pts[PC_TRIPLES_MAXPTS * PC_MAXDIM];
+    /* the known points first: their names are the keys of points */
+    lua_getfield(L, 1, "points");
+    int ip = lua_gettop(L);
+    lua_pushnil(L);
+    while (lua_next(L, ip)) {
+        if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
+        const char *s = lua_tostring(L, -2);
+        pcl_value *v = pcl_tovalue(L, -1);
+        double h[PC_MAXDIM + 1];
+        if (v) memcpy(h, v->h, sizeof(double) * (size_t)(v->n + 1));
+        /* the one weight rule: within 1e-9 of 1 is a point (pcl_snap_weight) */
+        if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
+            return pcl_fail(L, "points.%s must be a %s point", s, dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
+        dim = v->n;
+        int i = pc_triples_name(&nm, s);
+        if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        known[i] = 1;
+        memcpy(pts + i * dim, h, sizeof(double) * (size_t)dim);
+        lua_pop(L, 1);
+    }
+    if (!dim) return pcl_fail(L, "field points is empty");
+    lua_getfield(L, 1, "triples");
+    int it = lua_gettop(L), ntri = (int)lua_rawlen(L, it);
+    if (ntri < 1 || ntri > PC_TRIPLES_MAXTRI) return pcl_fail(L, "1 to %d triples, got %d", PC_TRIPLES_MAXTRI, ntri);
+    for (int j = 0; j < ntri; j++) {
+        lua_geti(L, it, j + 1);
+        if (!names3(L, &nm, tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
+    }
+    lua_getfield(L, 1, "current");
+    if (!names3(L, &nm, cur))
+        return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
+    int res = pc_triples_name(&nm, a[4].s);
+    pc_triples_plan plan;
+    int st = pc_triples_plan_make(nm.n, ntri, (const int (*)[3])tri, known, cur[0], cur[1], cur[2], res, &plan);
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
+    CHECK(st);
+    double t0 = a[5].present ? a[5].list[0] : 0, t1 = a[5].present ? a[5].list[1] : 1;
+    pcl_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, pc_konop_why);
+    lua_createtable(L, plan.nsteps, 0);
+    for (int s = 0; s < plan.nsteps; s++) {
+        char text[4 * 64];
+        pc_triples_step_text(&plan, s, &nm, text, sizeof text);
+        lua_pushstring(L, text);
+        lua_rawseti(L, -2, s + 1);
+    }
+    return 2;
+}
+
+static const pcl_arg scheme_keys[] = {
+    {.name = "triples", .kind = PCL_TABLE, .flags = PCL_REQ, .expect = "a list of {\"X\", \"Y\", \"Z\"}"},
+    {.name = "points", .kind = PCL_TABLE, .flags = PCL_REQ, .expect = "a table {A1 = P(...), ...}"},
+    {.name = "current", .kind = PCL_ANY, .flags = PCL_REQ, .expect = "{\"C\", \"P\", \"Q\"}"},
+    {.name = "result", .kind = PCL_STRING, .flags = PCL_REQ},
+    {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2}, PCL_END};
+static const pcl_arg scheme_args[] = {{.name = "scheme", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = scheme_keys}, PCL_END};
+static const pcl_fn triples_fns[] = {
+    PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
+    PCL_END};
+
+/* After pcl_open_konopatsky, with the module table on top (pcl.h, PCL_MODULES). */
+void pcl_open_konopatsky_triples(lua_State *L) {
+    pcl_register_into(L, lua_gettop(L), "conic", triples_fns);
 }
