@@ -389,11 +389,9 @@ PCL_BODY(i_adaptive, a) {
     int n = a[0].n, d = a[0].dim, axis = (int)a[1].x;
     if (axis < 1 || axis > d) return pcl_argfail(L, 2, "must be an axis number 1..%d, got %d", d, axis);
     double v[MAXNODES];
+    char why[200];
     int st = pc_interp_adaptive_params(d, n, a[0].list, axis - 1, v);
-    if (st == PC_ECOINCIDENT) return pcl_fail(L, "the first and last nodes have the same coordinate on axis %d", axis);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
-                        "the nodes must be the order of the parameters)", axis);
+    if (pc_interp_adaptive_why(st, axis - 1, why, sizeof why)) return pcl_fail(L, "%s", why);
     CHECK(st);
     return pcl_push_results(L, 0, "N", n, v);
 }

@@ -2,6 +2,7 @@
  * on the argument layer. */
 #include "pcl_args.h"
 #include "pcl_core.h"
+#include "pcl_curve.h"
 #include "konop_ch1.h"
 #include "konop_print.h"
 #include "konop_why.h"
@@ -64,30 +65,20 @@ PCL_BODY(k_polar, a) {   /* also konopatsky.rotate(C, A, B, phi), declared witho
 }
 
 PCL_BODY(k_moving_simplex, a) {
-    pc_curve *c[4] = {a[0].obj, a[1].obj, a[2].obj, a[3].obj};
     int st;
-    pc_surface *s = pc_k_moving_simplex(c[0], c[1], c[2], c[3], &st);
-    if (!s && st == PC_EDIM)
-        return pcl_fail(L, "the guides must have one dimension (%d-D, %d-D, %d-D) and the generator gen must be 2-D (its coordinates are p and q), got %d-D",
-                        c[0]->dim, c[1]->dim, c[2]->dim, c[3]->dim);
-    if (!s && st == PC_EDOMAIN)
-        return pcl_fail(L, "the guides must run over one domain of u (NA over [%s, %s])", pcl_pushnum(L, c[0]->t0),
-                        pcl_pushnum(L, c[0]->t1));
-    if (!s) return CHECK(st);
-    pcl_pushsurface(L, s, "konopatsky.moving_simplex");
-    return 1;
+    char why[200];
+    pc_surface *s = pc_k_moving_simplex(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st);
+    if (!s && pc_k_moving_simplex_why(st, a[0].obj, a[1].obj, a[2].obj, a[3].obj, why, sizeof why))
+        return pcl_fail(L, "%s", why);
+    return pcl_push_made_surface(L, s, &st, "konopatsky.moving_simplex");
 }
 
 /* The book's printed coordinates of a Bezier (rational or not) or B-spline curve's first piece */
 PCL_BODY(k_equation, a) {
     const pc_curve *c = a[0].obj;
-    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
-    int deg;
-    CHECK(pc_curve_monomial(c, 0, coef, &deg));
-    const char *var = a[1].present ? a[1].s : "t";
     for (int x = 0; x < c->dim; x++) {
         char buf[2048];
-        CHECK(pc_k_coordinate_text(coef, c->dim, deg, x, var, buf, sizeof buf));
+        CHECK(pc_k_curve_text(c, x, a[1].present ? a[1].s : "t", buf, sizeof buf));
         lua_pushstring(L, buf);
     }
     return c->dim;

@@ -1,6 +1,7 @@
 /* Interpolation curves of Konopatsky's chapter 4 (konop_interp.h; digest konopatsky_ch3_5.md
  * §2). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "konop_interp.h"
@@ -123,6 +124,15 @@ int pc_interp_adaptive_params(int dim, int n, const double *pts, int axis, doubl
         if (j > 0 && !(v[j] > v[j - 1])) return PC_EDOMAIN;
     }
     return PC_OK;
+}
+
+int pc_interp_adaptive_why(int st, int axis, char *buf, size_t n) {
+    if (st == PC_ECOINCIDENT)
+        snprintf(buf, n, "the first and last nodes have the same coordinate on axis %d", axis + 1);
+    else if (st == PC_EDOMAIN)
+        snprintf(buf, n, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
+                 "the nodes must be the order of the parameters)", axis + 1);
+    return st == PC_ECOINCIDENT || st == PC_EDOMAIN;
 }
 
 /* ---- the basis engine ------------------------------------------------------------------------- */

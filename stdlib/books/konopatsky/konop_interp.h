@@ -6,6 +6,8 @@
 #ifndef PC_KONOP_INTERP_H
 #define PC_KONOP_INTERP_H
 
+#include <stddef.h>
+
 #include "curve.h"
 
 /* The weights phi_j(t) of the interpolation curve through n nodes at the distinct params
@@ -32,6 +34,9 @@ pc_curve *pc_interp_arc_u(int dim, int p, const double *pts, const double *param
  * the nodes.  PC_ECOINCIDENT if x_1 = x_n, PC_EDOMAIN if v does not increase (the book's
  * limitation: the order of the nodes must be the order of the parameters). */
 int pc_interp_adaptive_params(int dim, int n, const double *pts, int axis, double *v);
+/* What failed in pc_interp_adaptive_params with status st on that axis, as text into buf (n
+ * bytes); 0 (nothing written) for a status it does not explain. */
+int pc_interp_adaptive_why(int st, int axis, char *buf, size_t n);
 
 /* §4.11 The simplex-replacement engine on any prototype: basis functions g_1..g_n (g(ud, t, n,
  * out) fills n values, non-zero status fails), nodes M_j at params t_j; the collocation matrix

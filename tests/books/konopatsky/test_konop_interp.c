@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
+#include <string.h>
 #include "konop_interp.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
@@ -148,6 +149,14 @@ static void test_adaptive(void **state) {
     pc_curve_release(ada);
     double bad[6] = {0, 0, 2, 0, 1, 0};
     assert_int_equal(pc_interp_adaptive_params(2, 3, bad, 0, v), PC_EDOMAIN);
+    char why[200];
+    assert_true(pc_interp_adaptive_why(PC_EDOMAIN, 0, why, sizeof why));
+    assert_non_null(strstr(why, "advance along axis 1 in their order"));
+    double same[6] = {0, 0, 2, 0, 0, 1};
+    assert_int_equal(pc_interp_adaptive_params(2, 3, same, 0, v), PC_ECOINCIDENT);
+    assert_true(pc_interp_adaptive_why(PC_ECOINCIDENT, 0, why, sizeof why));
+    assert_string_equal(why, "the first and last nodes have the same coordinate on axis 1");
+    assert_false(pc_interp_adaptive_why(PC_OK, 0, why, sizeof why));
 }
 
 /* §4.11 the prototypes against the book's closed forms */
