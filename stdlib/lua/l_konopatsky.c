@@ -113,10 +113,8 @@ PCL_BODY(c_circle, a) {   /* spec; C, A, B, range, delta, R */
         return kcurve_from(L, a, PC_KC_CIRCLE_ANGLE, &a[5].x, 1);
     }
     if (a[6].present) return kcurve_from(L, a, PC_KC_CIRCLE_RADIUS, &a[6].x, 1);
-    /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
-    double k;
-    int st = CHECK(pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k));
-    return MADE(pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st));
+    int st;   /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
+    return MADE(pc_conic_circle_arc(a[1].n, a[2].v, a[3].v, a[1].v, &st));
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
@@ -489,8 +487,7 @@ PCL_BODY(a_curve, a) {
 
 /* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
  * a points to m's value, then the table, then its keys (m, divisor) */
-static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};
-static const pc_mse_divisor divisors[] = {PC_MSE_DIV_M1, PC_MSE_DIV_M, PC_MSE_DIV_MMINUS1};
+static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};   /* pc_mse_divisor */
 static const pcl_arg mse_keys[] = {{.name = "m", .kind = PCL_INTEGER}, A_ENUM("divisor", DIVISORS), PCL_END};
 static const pcl_arg mse_opts = A_OPTIONS("opts", mse_keys);
 static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* an integer or the table */
@@ -509,7 +506,7 @@ static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse
         if (o[0].present) pcl_keyfail(L, "m", "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
         pcl_argfail(L, k, "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
     }
-    *dv = divisors[o[1].n];
+    *dv = (pc_mse_divisor)o[1].n;
     return (int)m;
 }
 
@@ -539,9 +536,8 @@ PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
 PCL_BODY(a_chebyshev, a) {
-    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     double x[64];
-    pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x);
+    CHECK(pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x));
     return pcl_push_results(L, 0, "N", (int)a[0].x, x);
 }
 
@@ -630,22 +626,19 @@ static const pcl_fn approx_fns[] = {
     PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
     PCL_END};
 
-static void module(lua_State *L, const char *name, const pcl_fn *fns) {
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    lua_setfield(L, -2, name);
-}
-
 void pcl_open_konopatsky(lua_State *L) {
-    module(L, "conic", conic_fns);
-    lua_newtable(L);
-    pcl_register(L, -1, oneratio_fns, 0);
-    lua_newtable(L);                    /* oneratio(A, B, C) is oneratio.simplex */
-    pcl_register(L, -1, oneratio_call, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, -2, "oneratio");
-    module(L, "interp", interp_fns);
-    module(L, "approx", approx_fns);
+    static const char *const names[] = {"conic", "oneratio", "interp", "approx"};
+    const pcl_fn *const fns[] = {conic_fns, oneratio_fns, interp_fns, approx_fns};
+    for (int i = 0; i < 4; i++) {
+        lua_newtable(L);
+        pcl_register(L, -1, fns[i], 0);
+        if (fns[i] == oneratio_fns) {   /* oneratio(A, B, C) is oneratio.simplex */
+            lua_newtable(L);
+            pcl_register(L, -1, oneratio_call, 0);
+            lua_setmetatable(L, -2);
+        }
+        lua_setfield(L, -2, names[i]);
+    }
 }
 
 /* ==== the scheme points of the monograph (konop_schemes.h): each a point, or a vector where the

@@ -140,6 +140,12 @@ int pc_conic_ed_circle_k(int dim, const double *a, const double *b, const double
     return PC_OK;
 }
 
+pc_curve *pc_conic_circle_arc(int dim, const double *a, const double *b, const double *c, int *status) {
+    double k;
+    int st = pc_conic_ed_circle_k(dim, a, b, c, &k);
+    return st ? fail(status, st) : pc_conic_ed(dim, a, b, c, k, status);
+}
+
 pc_curve *pc_conic_ed3(int dim, const double *a, const double *kpt, const double *b, double k,
                        int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);

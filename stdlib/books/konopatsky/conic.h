@@ -43,6 +43,9 @@ int pc_conic_ed_k(int dim, const double *a, const double *b, const double *c, co
 /* (2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB| required,
  * PC_EDOMAIN otherwise): k = 1/2 + 2 h^2 / c^2, c the chord, h the height of the segment. */
 int pc_conic_ed_circle_k(int dim, const double *a, const double *b, const double *c, double *k);
+/* §2.1.8.1 The circular arc AB whose tangents meet at C: (2.97) with the k of (2.107); the
+ * statuses of pc_conic_ed_circle_k. */
+pc_curve *pc_conic_circle_arc(int dim, const double *a, const double *b, const double *c, int *status);
 /* §4.1 The arc through A (u = 0), K (u = 1/2), B (u = 1) with discriminant k (k != 0, 1): the
  * apex C = K/k' - (A + B) k/(2k') (the print has K/k, digest §2.1 ch. 3-5), then (2.97). */
 pc_curve *pc_conic_ed3(int dim, const double *a, const double *kpt, const double *b, double k,

@@ -79,6 +79,7 @@ const pc_why pc_konop_why[] = {
     {"interp.rational22", PC_ESINGULAR, 0, NULL, "a coordinate has no rational (2,2) fit"},
     /* chapter 5: approx */
     {"approx.optimal_nodes", PC_EDOMAIN, 3, NULL, "must be greater than a"},
+    {"approx.chebyshev", PC_EDOMAIN, 3, NULL, "must be greater than a"},
     {"approx.lagrange_mse", PC_ECOINCIDENT, 2, NULL, "must be distinct"},
     /* chapter 1: konopatsky */
     {"konopatsky.area_k", PC_EPOLE, 0, NULL, "a lambda is -1 (its point is at infinity): k is undefined"},

@@ -121,8 +121,13 @@ static void test_ed_circle(void **state) {
         NEAR(hypot(m[0], m[1]), 1, 1e-12);
     }
     pc_curve_release(c);
+    c = pc_conic_circle_arc(2, A, B, C, &st);       /* the same arc in one call */
+    near_pt(c, 0.5, 0.707107, 0.707107, 1e-6);
+    pc_curve_release(c);
     double C2[2] = {2, 1};
     assert_int_equal(pc_conic_ed_circle_k(2, A, B, C2, &k), PC_EDOMAIN);
+    assert_null(pc_conic_circle_arc(2, A, B, C2, &st));
+    assert_int_equal(st, PC_EDOMAIN);
 }
 
 /* §4.1: the arc through A, K, B; u = 0.3 -> (18/19, 30/19) */
