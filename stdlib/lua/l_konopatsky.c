@@ -47,12 +47,10 @@ static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
 
 /* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
  * declared points, then the number (a[0] when there are no points). */
-static int made(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ(L, a);
+PCL_BODY(made, a) {
     pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
     int np = pc_konop_npoints(kind), d = a[0].n, st;
-    double p[4 * PC_MAXDIM], x = a[np].x, k;
+    double p[4 * PC_MAXDIM], x = np < pcl_nvalues(L) ? a[np].x : 0, k;
     pcl_point_rows(a, np, d, p);
     if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, &x, &st));
     CHECK(pc_konop_number(kind, d, p, &x, &k));
@@ -397,9 +395,8 @@ PCL_BODY(i_adaptive, a) {
 static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};   /* pc_proto_kind */
 static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
                                      A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
-static int i_prototype(lua_State *L) {
-    pcl_val a[5] = {0}, p = {0}, k = {0}, v = {0};
-    PCL_READ(L, a);
+PCL_BODY(i_prototype, a) {
+    pcl_val p = {0}, k = {0}, v = {0};
     int n, nk, st;
     pc_interp_prototype_shape((pc_proto_kind)a[0].n, &n, &nk);
     /* the count of points the prototype takes, whatever came (nil included) */
@@ -646,14 +643,12 @@ void pcl_open_konopatsky(lua_State *L) {
 
 /* A scheme of pc_konop_scheme, the kind by the name it is called: the declared points, then the
  * numbers (an enum's choice by its index); its points and numbers pushed by its fields. */
-static int scheme(lua_State *L) {
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
+PCL_BODY(scheme, a) {
     const char *fields;
     pc_konop_scheme_kind kind = pc_konop_scheme_of(pcl_name(L), &fields);
     int np = pc_konop_scheme_npoints(kind), d = a[0].n;
-    double p[5 * PC_MAXDIM], x[2], o[8 * (PC_MAXDIM + 1)];
-    for (int i = 0; i < 2; i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
+    double p[5 * PC_MAXDIM], x[2] = {0, 0}, o[8 * (PC_MAXDIM + 1)];
+    for (int i = 0; i < 2 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
     pcl_point_rows(a, np, d, p);
     CHECK(pc_konop_scheme(kind, d, p, x, o));
     return pcl_push_packed(L, d, fields, o);
