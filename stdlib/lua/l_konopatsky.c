@@ -317,23 +317,17 @@ static int weight_equations(lua_State *L, int n, const double *u) {
     CHECK(pc_lagrange_weight_coefs(n, u, coef));
     lua_createtable(L, n, 0);
     for (int j = 0; j < n; j++) {
-        int any = 0;
+        int terms = 0;
         for (int i = 0; i < n; i++) {
-            double c = coef[(size_t)j * n + i];
-            if (c == 0) continue;
-            lua_pushnumber(L, c);
-            if (i > 0) {
-                lua_pushvalue(L, 2);
-                if (i > 1) {
-                    lua_pushinteger(L, i);
-                    lua_arith(L, LUA_OPPOW);
-                }
-                lua_arith(L, LUA_OPMUL);
-            }
-            if (any) lua_arith(L, LUA_OPADD);
-            any = 1;
+            if (coef[(size_t)j * n + i] == 0) continue;
+            lua_pushnumber(L, coef[(size_t)j * n + i]);   /* c t^i: the equations make t^1 t and c t^0 c */
+            lua_pushvalue(L, 2);
+            lua_pushinteger(L, i);
+            lua_arith(L, LUA_OPPOW);
+            lua_arith(L, LUA_OPMUL);
+            if (terms++) lua_arith(L, LUA_OPADD);
         }
-        if (!any) lua_pushnumber(L, 0);
+        if (!terms) lua_pushnumber(L, 0);
         lua_rawseti(L, -2, j + 1);
     }
     return 1;
