@@ -46,14 +46,15 @@ static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_
 static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
 
 /* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
- * declared points, then the number (a[0] when there are no points). */
+ * declared points, then the numbers (from a[0] when there are no points). */
 PCL_BODY(made, a) {
     pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
     int np = pc_konop_npoints(kind), d = a[0].n, st;
-    double p[4 * PC_MAXDIM], x = np < pcl_nvalues(L) ? a[np].x : 0, k;
+    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k;
+    for (int i = 0; i < 3 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].x;
     pcl_point_rows(a, np, d, p);
-    if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, &x, &st));
-    CHECK(pc_konop_number(kind, d, p, &x, &k));
+    if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
+    CHECK(pc_konop_number(kind, d, p, x, &k));
     return pcl_push_results(L, 0, "n", k);
 }
 
@@ -144,10 +145,6 @@ PCL_BODY(c_five_points2, a) {   /* spec; C, A, B, p1, p2, q2, q3 */
 
 static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
                                        A_NUMOPT("t1", 1, NULL), PCL_END};
-PCL_BODY(c_triples, a) {
-    int st;
-    return MADE(pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st));
-}
 
 static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), A_NUMOPT("u", 0, NULL), A_NUMOPT("v", 0, NULL), PCL_END};
 PCL_BODY(c_redundant, a) {
@@ -196,10 +193,6 @@ PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
 }
 
 static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
-PCL_BODY(c_cones, a) {
-    int st;
-    return MADE(pc_cubic_cones(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st));
-}
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
                                        A_FNOPT("du", "a function of t"), A_FNOPT("dv", "a function of t"), PCL_END};
@@ -247,10 +240,6 @@ PCL_BODY(o_double_contact, a) {
 
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
     {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
-PCL_BODY(o_closed, a) {
-    int st;
-    return MADE(pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st));
-}
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
 
@@ -574,12 +563,12 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
     PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
     SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
-    PCL_FN("conic.triples", c_triples, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
+    PCL_FN("conic.triples", made, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
     SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
     SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
     SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
     SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
-    PCL_FN("conic.cones", c_cones, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
+    PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
     SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
     PCL_END};
 
@@ -592,7 +581,7 @@ static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.smooth", made, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
     PCL_FN("oneratio.desargues", made, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
     PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
-    PCL_FN("oneratio.closed", o_closed, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
+    PCL_FN("oneratio.closed", made, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
     PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
     PCL_END};
 

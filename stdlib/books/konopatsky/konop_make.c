@@ -6,10 +6,13 @@
 #include "conic.h"
 #include "oneratio.h"
 #include "konop_schemes.h"
+#include "konop_curves.h"
 
 int pc_konop_npoints(pc_konop_kind kind) {
     switch (kind) {
+    case PC_KM_TRIPLES: return 5;
     case PC_KM_TETRA:
+    case PC_KM_CONES:
     case PC_KM_BEZIER3:
     case PC_KM_DESARGUES:
     case PC_KM_ED_K:
@@ -24,7 +27,8 @@ static const struct { const char *name; pc_konop_kind kind; } names[] = {
     {"conic.ed", PC_KM_ED}, {"conic.ed_k", PC_KM_ED_K}, {"conic.circle_k", PC_KM_CIRCLE_K},
     {"conic.ceva", PC_KM_CEVA}, {"conic.ceva_k", PC_KM_CEVA_K}, {"conic.parabola", PC_KM_PARABOLA},
     {"oneratio.tetra", PC_KM_TETRA}, {"oneratio.bezier3", PC_KM_BEZIER3}, {"oneratio.smooth", PC_KM_SMOOTH},
-    {"oneratio.desargues", PC_KM_DESARGUES}, {"interp.conic", PC_KM_ED3}, {"conic.ceva_to_ed", PC_KM_CEVA_TO_ED},
+    {"oneratio.desargues", PC_KM_DESARGUES}, {"conic.cones", PC_KM_CONES}, {"conic.triples", PC_KM_TRIPLES},
+    {"oneratio.closed", PC_KM_CLOSED}, {"interp.conic", PC_KM_ED3}, {"conic.ceva_to_ed", PC_KM_CEVA_TO_ED},
     {"conic.ed_to_ceva", PC_KM_ED_TO_CEVA}};
 
 int pc_konop_kind_of(const char *name) {
@@ -34,7 +38,7 @@ int pc_konop_kind_of(const char *name) {
 }
 
 pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const double *x, int *status) {
-    const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim;
+    const double *a = pts, *b = pts + dim, *c = pts + 2 * dim, *d = pts + 3 * dim, *e = pts + 4 * dim;
     switch (kind) {
     case PC_KM_ED: return pc_conic_ed(dim, a, b, c, x[0], status);
     case PC_KM_CEVA: return pc_conic_ceva(dim, a, b, c, x[0], status);
@@ -46,6 +50,9 @@ pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const do
     case PC_KM_BEZIER3: return pc_oneratio_bezier3(dim, a, b, c, d, status);
     case PC_KM_SMOOTH: return pc_oneratio_smooth(dim, a, b, c, (int)x[0], status);
     case PC_KM_DESARGUES: return pc_oneratio_desargues(dim, a, b, c, d, status);
+    case PC_KM_CONES: return pc_cubic_cones(dim, a, b, c, d, x[0], x[1], x[2], status);
+    case PC_KM_TRIPLES: return pc_triples_conic(dim, a, b, c, d, e, x[0], x[1], status);
+    case PC_KM_CLOSED: return pc_oneratio_closed(dim, a, b, c, x[0], x[1], (int)x[2], status);
     default: break;
     }
     if (status) *status = PC_EDOMAIN;

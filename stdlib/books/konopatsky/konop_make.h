@@ -15,6 +15,9 @@ typedef enum {
     PC_KM_BEZIER3,     /* A, C1, C2, B: (3.4) */
     PC_KM_SMOOTH,      /* A, B, C; n: the contour arc of smoothness order n, §3.6 */
     PC_KM_DESARGUES,   /* A, B, C, D: (3.6) */
+    PC_KM_CONES,       /* A, B, C, D; fP, fQ, n: the space cubic of two cones, §2.6 (pc_cubic_cones) */
+    PC_KM_TRIPLES,     /* A1 .. A5; t0, t1: the system of triples (b), §2.2 (pc_triples_conic) */
+    PC_KM_CLOSED,      /* A, B, C; kP, kQ, scheme: the closed curve of §3.5 (pc_oneratio_closed) */
     PC_KM_ED_K,        /* A, B, C, K: the discriminant k of (2.97) through K (pc_conic_ed_k) */
     PC_KM_CIRCLE_K,    /* A, B, C: k of the circular arc (2.107) */
     PC_KM_CEVA_K,      /* A1, A2, A3, K: Ceva's k (2.100) */
@@ -26,8 +29,9 @@ typedef enum {
 int pc_konop_npoints(pc_konop_kind kind);
 /* The kind of the construction the API calls name ("conic.ed", "oneratio.tetra", ...), or -1. */
 int pc_konop_kind_of(const char *name);
-/* The curve of a construction PC_KM_ED .. PC_KM_DESARGUES, or NULL with *status set (the
- * status of the construction's own function; PC_EDOMAIN for another kind). */
+/* The curve of a construction PC_KM_ED .. PC_KM_CLOSED of the points and the numbers x (as many
+ * as the kind takes), or NULL with *status set (the status of the construction's own function;
+ * PC_EDOMAIN for another kind). */
 pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const double *x, int *status);
 /* The number of a construction PC_KM_ED_K .. PC_KM_ED_TO_CEVA of the points and the numbers x
  * into *out: the status of its own function (PC_EDOMAIN for another kind). */

@@ -9,6 +9,7 @@
 #include "conic.h"
 #include "oneratio.h"
 #include "konop_schemes.h"
+#include "konop_curves.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -43,6 +44,24 @@ static void test_curves(void **state) {
     same(pc_konop_make(PC_KM_BEZIER3, 2, PTS, NULL, &st), pc_oneratio_bezier3(2, a, b, c, d, &st));
     same(pc_konop_make(PC_KM_SMOOTH, 2, PTS, (double[]){3}, &st), pc_oneratio_smooth(2, a, b, c, 3, &st));
     same(pc_konop_make(PC_KM_DESARGUES, 2, PTS, NULL, &st), pc_oneratio_desargues(2, a, b, c, d, &st));
+    same(pc_konop_make(PC_KM_CLOSED, 2, PTS, (double[]){0.8, 0.5, 2}, &st),
+         pc_oneratio_closed(2, a, b, c, 0.8, 0.5, 2, &st));
+    const double five[10] = {3.0, 0.2, 1.2, 0.9, 2.0, 1.8, 0.2, 1.3, 0.5, 2.7}, *f = five;
+    same(pc_konop_make(PC_KM_TRIPLES, 2, five, (double[]){0.1, 0.9}, &st),
+         pc_triples_conic(2, f, f + 2, f + 4, f + 6, f + 8, 0.1, 0.9, &st));
+    /* the cubic of two cones over the tetrahedron (0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1) */
+    const double tet[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, *T = tet;
+    pc_curve *q = pc_konop_make(PC_KM_CONES, 3, tet, (double[]){0.3, 0.8, 2}, &st);
+    pc_curve *qref = pc_cubic_cones(3, T, T + 3, T + 6, T + 9, 0.3, 0.8, 2, &st);
+    double mq[3], mr[3];
+    assert_int_equal(pc_curve_eval(q, 0.25, mq), PC_OK);
+    assert_int_equal(pc_curve_eval(qref, 0.25, mr), PC_OK);
+    for (int i = 0; i < 3; i++) NEAR(mq[i], mr[i], 0);
+    NEAR(mq[0], 0.005718, 1e-6);                                  /* test_conic's value */
+    pc_curve_release(q);
+    pc_curve_release(qref);
+    assert_int_equal(pc_konop_npoints(PC_KM_TRIPLES), 5);
+    assert_int_equal(pc_konop_kind_of("conic.cones"), PC_KM_CONES);
     /* the statuses of the constructions' own checks */
     assert_null(pc_konop_make(PC_KM_ED, 2, PTS, (double[]){0}, &st));
     assert_int_equal(st, PC_EDOMAIN);
