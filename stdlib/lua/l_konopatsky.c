@@ -119,11 +119,9 @@ PCL_BODY(c_circle, a) {   /* spec; C, A, B, range, delta, R */
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
 PCL_BODY(c_tilted, a) {
     int d = a[0].n, st;
-    double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
-    CHECK(pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
-    CHECK(pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
-    MADE(pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st));
-    return 1 + pcl_push_results(L, d, "p p h p n", P, Q, K, Ar, tau);   /* K: a vector at theta = 0 */
+    double o[4 * PC_MAXDIM + 2];
+    MADE(pc_ellipse_tilted(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, o, &st));
+    return 1 + pcl_push_packed(L, d, "p p h p n", o);   /* K: a vector at theta = 0 */
 }
 
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
@@ -277,16 +275,14 @@ PCL_BODY(i_lagrange, a) {
  * parameters (out->list, out->n: the count of nodes) */
 static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    if (lua_isinteger(L, idx)) {
-        lua_Integer order = lua_tointeger(L, idx);
-        if (order < 1 || order > PC_CURVE_MAXDEG) return 0;
-        out->n = (int)order + 1, out->list = NULL;
+    if (lua_istable(L, idx)) {
+        static const pcl_arg params = A_NUMBERS("params", 2, MAXNODES);
+        pcl_readone(L, idx, 1, 0, &params, 0, out);
         return 1;
     }
-    if (!lua_istable(L, idx)) return 0;
-    static const pcl_arg params = A_NUMBERS("params", 2, MAXNODES);
-    pcl_readone(L, idx, 1, 0, &params, 0, out);
-    return 1;
+    lua_Integer order = lua_isinteger(L, idx) ? lua_tointeger(L, idx) : 0;
+    out->n = (int)order + 1, out->list = NULL;
+    return order >= 1 && order <= PC_CURVE_MAXDEG;
 }
 /* t: a finite number, or an equation (out->n = 1) */
 static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -411,10 +407,8 @@ static int basis_cb(void *ud, double t, int n, double *g) {
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
 static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    if (!lua_istable(L, idx)) return 0;
-    size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
-    if (len < 1 || len > 16) return 0;
-    out->n = (int)len;
+    out->n = lua_istable(L, idx) ? (int)lua_rawlen(L, idx) : 0;   /* raw: a __len cannot raise inside the reader */
+    if (out->n < 1 || out->n > 16) return 0;
     for (int i = 1; i <= out->n; i++) {
         lua_geti(L, idx, i);
         if (!pcl_callable(L, -1)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));

@@ -301,6 +301,14 @@ int pc_ellipse_tilted_scheme(int dim, const double *a, const double *b, const do
     return PC_OK;
 }
 
+pc_curve *pc_ellipse_tilted(int dim, const double *a, const double *b, const double *c, double theta,
+                            double m, double n, double *out, int *status) {
+    double *p = out, *q = out + dim, *k = out + 2 * dim, *arot = k + dim + 1;
+    int st = pc_ellipse_tilted_axes(dim, a, b, c, theta, m, n, p, q);
+    if (!st) st = pc_ellipse_tilted_scheme(dim, a, b, c, theta, k, arot, arot + dim);
+    return st ? fail(status, st) : pc_kcurve(PC_KC_ELLIPSE_ANGLE, dim, c, p, q, NULL, 0, NAN, NAN, status);
+}
+
 /* ---- §2.6 the cubic of two cones ------------------------------------------------------------ */
 
 typedef struct {

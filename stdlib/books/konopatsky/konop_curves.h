@@ -57,6 +57,10 @@ int pc_ellipse_tilted_axes(int dim, const double *a, const double *b, const doub
  * factor c, the printed rotated A has (C - A) for (A - C). */
 int pc_ellipse_tilted_scheme(int dim, const double *a, const double *b, const double *c,
                              double theta, double *k, double *arot, double *tau);
+/* The whole construction: the ellipse (PC_KC_ELLIPSE_ANGLE in the simplex C P Q), and into out
+ * P, Q (dim each), K (dim + 1), the rotated A (dim) and tau; the statuses of the two above. */
+pc_curve *pc_ellipse_tilted(int dim, const double *a, const double *b, const double *c, double theta,
+                            double m, double n, double *out, int *status);
 
 /* §2.6 The cubic as the meet of two quadric cones over the arcs APB (f_P) and AQB (f_Q) of
  * (2.97) in the plane ABC, with vertices D and N = (D - A)n + A: M = DP x NQ with Q at

@@ -331,6 +331,18 @@ static void test_tilted_scheme(void **state) {
         NEAR((K[0] - C[0]) * (P[1] - C[1]) - (K[1] - C[1]) * (P[0] - C[0]), 0, 1e-12);
         NEAR(tau, M_PI - (atan2(3, 4) + atan2(1, 5)) - tv[i][0], 1e-12);   /* alpha = angle BAC */
     }
+    double o[2 + 2 + 3 + 2 + 1], m[2];
+    int st;
+    pc_curve *e = pc_ellipse_tilted(2, A, B, C, M_PI / 4, 2, 1, o, &st);   /* all in one: P, Q, K, Arot, tau */
+    NEAR(o[0], 5.282843, 1e-6);
+    NEAR(o[3], -1.141421, 1e-6);
+    NEAR(o[4], 5.76, 1e-12);
+    NEAR(o[9], M_PI - (atan2(3, 4) + atan2(1, 5)) - M_PI / 4, 1e-12);
+    at(e, M_PI / 4, m);
+    NEAR(m[0], 6.011929, 1e-6);
+    pc_curve_release(e);
+    assert_null(pc_ellipse_tilted(2, A, B, C, M_PI / 4, 0, 1, o, &st));
+    assert_int_equal(st, PC_EDOMAIN);
     assert_int_equal(pc_ellipse_tilted_scheme(2, A, B, C, 0, K, Ar, &tau), PC_OK);
     NEAR(K[2], 0, 0);
     NEAR(K[0], 0.8, 1e-12);
