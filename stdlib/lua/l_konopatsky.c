@@ -223,16 +223,14 @@ static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
-PCL_BODY(o_double_contact, a) {
-    double kp = a[3].x, kq = a[4].x;
-    int st, d = a[0].n;
+PCL_BODY(o_double_contact, a) {   /* f: a function of v, a number, or absent: f(v) = v */
+    int st, d = a[0].n, fn = a[5].present && !a[5].n;
     const double *A = a[0].v, *B = a[1].v, *C = a[2].v;
-    if (!a[5].present || a[5].n)   /* f(v) = v, or a constant */
-        return MADE(a[5].present ? pc_oneratio_double_contact_const(d, A, B, C, kp, kq, a[5].x, &st)
-                                 : pc_oneratio_double_contact(d, A, B, C, kp, kq, NULL, NULL, NULL, &st));
-    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){6});
-    pc_curve *c = pc_oneratio_double_contact(d, A, B, C, kp, kq, pcl_luafn_blend, pcl_luafn_free, f, &st);
-    if (!c) pcl_luafn_free(f);
+    if (a[5].present && !fn) return MADE(pc_oneratio_double_contact_const(d, A, B, C, a[3].x, a[4].x, a[5].x, &st));
+    pcl_luafn *f = fn ? pcl_luafn_new(L, 1, (int[]){6}) : NULL;
+    pc_curve *c = pc_oneratio_double_contact(d, A, B, C, a[3].x, a[4].x, fn ? pcl_luafn_blend : NULL,
+                                             fn ? pcl_luafn_free : NULL, f, &st);
+    if (!c && f) pcl_luafn_free(f);
     return MADE(c);
 }
 
