@@ -112,11 +112,10 @@ PCL_BODY(l_elements, a) {
         st = conditions(L, &o);
     } else if (lua_istable(L, 1)) {
         static const pcl_arg coef_arg = A_NUMBERS("conic", 6, 6);
-        double q[6];
-        pcl_val v = {.list = q, .cap = 6};
+        pcl_val v = {.list = o.coef, .cap = 6};   /* pc_conic_info_coef may read its own out->coef */
         if (lua_rawlen(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
         pcl_readone(L, 1, 1, 0, &coef_arg, 0, &v);
-        st = pc_conic_info_coef(q, &o);
+        st = pc_conic_info_coef(o.coef, &o);
     } else if (pcl_tovalue(L, 1)) {
         /* five points, each read by the one point rule */
         static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};

@@ -76,10 +76,9 @@ static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, cons
     return MADE(c);
 }
 
+/* by: the forms PC_KC_ELLIPSE_ANGLE .. PC_KC_ELLIPSE_ALGEBRAIC in order, then two of conic.h */
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
-static const pc_kcurve_kind ellipse_kinds[] = {PC_KC_ELLIPSE_ANGLE, PC_KC_ELLIPSE_RADIUS, PC_KC_ELLIPSE_FOCAL,
-                                               PC_KC_ELLIPSE_COMPRESSION, PC_KC_ELLIPSE_ALGEBRAIC};
 static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
                                        {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"), PCL_END};
 static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
@@ -93,15 +92,14 @@ PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     }
     if (!a[1].present) return pcl_keyfail(L, "C", "must be a point, got nil");
     if (by == 5) return MADE(pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st));
-    return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
+    return kcurve_from(L, a, (pc_kcurve_kind)(PC_KC_ELLIPSE_ANGLE + by), &a[6].x, 1);
 }
 
-static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};
-static const pc_kcurve_kind hyperbola_kinds[] = {PC_KC_HYPERBOLA_ANGLE, PC_KC_HYPERBOLA_RADIUS, PC_KC_HYPERBOLA_FOCAL};
+static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
 static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
 static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
 PCL_BODY(c_hyperbola, a) {   /* spec; C, A, B, range, by, branch */
-    return kcurve_from(L, a, hyperbola_kinds[a[5].n], &a[6].x, 1);
+    return kcurve_from(L, a, (pc_kcurve_kind)(PC_KC_HYPERBOLA_ANGLE + a[5].n), &a[6].x, 1);
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
@@ -631,8 +629,8 @@ PCL_BODY(scheme, a) {
 
 PCL_BODY(l_smooth_scheme, a) {
     int d = a[0].n, n = (int)a[3].x;
-    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0);
-    double *p = buf, *q = buf + n * d, *m = q + n * d;
+    double *p = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0), *q = p + n * d;
+    double *m = q + n * d;
     CHECK(pc_oneratio_smooth_chain(d, a[0].v, a[1].v, a[2].v, n, a[4].x, p, q, m));
     return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
