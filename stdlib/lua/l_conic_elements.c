@@ -28,20 +28,19 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     }
 }
 
-/* The message for a status of pc_curve_conic / pc_conic_info_*. */
-static int conic_error(lua_State *L, int st, int dim) {
+/* The elements o, or the message for the status st of pc_curve_conic / pc_conic_info_*. */
+static int push_elements(lua_State *L, int st, int dim, const pc_conic_info *o) {
     if (st == PC_EDIM)
         return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
-    return pcl_check(L, st, pc_konop_why);
+    pcl_check(L, st, pc_konop_why);
+    pcl_push_conic_info(L, o);
+    return 1;
 }
 
 static int conic_of_curve(lua_State *L, pc_curve *c) {
     pc_conic_info o;
     pcl_callback_state(L);
-    int st = pc_curve_conic(c, &o);
-    if (st != PC_OK) return conic_error(L, st, c->dim);
-    pcl_push_conic_info(L, &o);
-    return 1;
+    return push_elements(L, pc_curve_conic(c, &o), c->dim, &o);
 }
 
 static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)); }
@@ -130,14 +129,13 @@ PCL_BODY(l_elements, a) {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
                            pcl_shown(L, 1));
     }
-    if (st != PC_OK) return conic_error(L, st, 2);
-    pcl_push_conic_info(L, &o);
-    return 1;
+    return push_elements(L, st, 2, &o);
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
 #define LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
-static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, LATER("B"), LATER("C"), LATER("D"), LATER("E"), PCL_END};
+static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, LATER("B"), LATER("C"), LATER("D"), LATER("E"),
+                                  PCL_END};
 static const pcl_fn conic_fns[] = {
     {.name = "conic.elements", .fn = l_elements, .args = el_args, .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements", .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
     PCL_END};

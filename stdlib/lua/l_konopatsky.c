@@ -36,17 +36,28 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 #define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 #define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
-#define A_INTOPT(nm, l, h, d) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = l, .hi = h, .dflt = d}
+#define A_INTOPT(nm, l, h, d) \
+    {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = l, .hi = h, .dflt = d}
 #define A_PARAMS {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}   /* one per point */
 
 /* ==== conic ================================================================================= */
 
+/* the constructions of made (below) */
 static const pcl_arg abck_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("k"), PCL_END};
 static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END};
 static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
 static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
+static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
+static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"), A_INTOPT("n", 1, 40, 2), PCL_END};
+static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), A_NUMOPT("tC", NAN, NULL), PCL_END};
+static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
+                                       A_NUMOPT("t1", 1, NULL), PCL_END};
+static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
+static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
+    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
 
 /* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
  * declared points, then the numbers (from a[0] when there are no points). */
@@ -61,8 +72,6 @@ PCL_BODY(made, a) {
     return pcl_push_results(L, 0, "n", k);
 }
 
-static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), A_NUMOPT("tC", NAN, NULL), PCL_END};
-
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
     {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2, .shown = "{t0, t1}"}
@@ -75,7 +84,8 @@ static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, cons
     double t0 = a[4].present ? a[4].list[0] : NAN, t1 = a[4].present ? a[4].list[1] : NAN, r[2];
     pc_curve *c = pc_kcurve(kind, d, a[1].v, a[2].v, a[3].v, par, npar, t0, t1, &st);
     if (!c && st == PC_EDOMAIN3 && pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, r, r + 1) == PC_OK)
-        return pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r[0]), pcl_pushnum(L, r[1]));
+        return pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r[0]),
+                           pcl_pushnum(L, r[1]));
     return MADE(c);
 }
 
@@ -142,10 +152,8 @@ PCL_BODY(c_five_points2, a) {   /* spec; C, A, B, p1, p2, q2, q3 */
     return MADE(pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, a[7].x, &st));
 }
 
-static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
-                                       A_NUMOPT("t1", 1, NULL), PCL_END};
-
-static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), A_NUMOPT("u", 0, NULL), A_NUMOPT("v", 0, NULL), PCL_END};
+static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), A_NUMOPT("u", 0, NULL), A_NUMOPT("v", 0, NULL),
+                                         PCL_END};
 PCL_BODY(c_redundant, a) {
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
@@ -191,8 +199,6 @@ PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
     return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1);
 }
 
-static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
-
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
                                        A_FNOPT("du", "a function of t"), A_FNOPT("dv", "a function of t"), PCL_END};
 PCL_BODY(c_contour, a) {
@@ -211,9 +217,6 @@ PCL_BODY(o_simplex, a) {   /* also oneratio(A, B, C): the table is the receiver 
     int st;   /* the one kind, however it was called */
     return pcl_push_made(L, pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st), &st, "oneratio.simplex");
 }
-
-static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
-static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"), A_INTOPT("n", 1, 40, 2), PCL_END};
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -234,9 +237,6 @@ PCL_BODY(o_double_contact, a) {   /* f: a function of v, a number, or absent: f(
     if (!c && f) pcl_luafn_free(f);
     return MADE(c);
 }
-
-static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
-    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
 
@@ -333,8 +333,6 @@ PCL_BODY(i_controls, a) {
     pc_curve_release(c);
     return 1;
 }
-
-static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},

@@ -8,7 +8,8 @@
     "as bezier{...} or with conic.*, oneratio.*, interp.*)"
 #define NO_MEET "a meet of the scheme is undefined at this parameter (its lines coincide)"
 #define OUTSIDE(op) "the points or parameters are outside the form's conditions (see :help " op ")"
-#define FORM(op) {op, PC_EDOMAIN, 0, NULL, OUTSIDE(op)}, {op, PC_EDOMAIN2, 0, "range", "must be two finite numbers t0 < t1"}
+#define FORM(op) {op, PC_EDOMAIN, 0, NULL, OUTSIDE(op)}, \
+    {op, PC_EDOMAIN2, 0, "range", "must be two finite numbers t0 < t1"}
 #define NONZERO "must be a non-zero number, got 0"
 #define PERPENDICULAR "CA and CB must be perpendicular semi-axes"
 

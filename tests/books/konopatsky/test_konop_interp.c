@@ -266,6 +266,22 @@ static int line_basis(void *ud, double t, int n, double *g) {   /* 1, t */
     return PC_OK;
 }
 
+/* how many nodes and exponents each prototype takes */
+static void test_prototype_shape(void **state) {
+    (void)state;
+    int n, nk;
+    pc_interp_prototype_shape(PC_PROTO_DESARGUES, &n, &nk);
+    assert_true(n == 4 && nk == 0);
+    pc_interp_prototype_shape(PC_PROTO_RATIONAL, &n, &nk);
+    assert_true(n == 4 && nk == 0);
+    pc_interp_prototype_shape(PC_PROTO_EXP, &n, &nk);
+    assert_true(n == 3 && nk == 3);
+    pc_interp_prototype_shape(PC_PROTO_EXP_AFFINE, &n, &nk);
+    assert_true(n == 3 && nk == 2);
+    pc_interp_prototype_shape(PC_PROTO_TRIG, &n, &nk);
+    assert_true(n == 3 && nk == 0);
+}
+
 /* the engine's domain: the nodes' range by default, and an empty range refused */
 static void test_basis_range(void **state) {
     (void)state;
@@ -288,6 +304,7 @@ int main(void) {
         cmocka_unit_test(test_arc),        cmocka_unit_test(test_adaptive),
         cmocka_unit_test(test_prototypes), cmocka_unit_test(test_rational22),
         cmocka_unit_test(test_membership), cmocka_unit_test(test_basis_range),
+        cmocka_unit_test(test_prototype_shape),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
