@@ -22,6 +22,8 @@ const char *pc_strerror(int status) {
     case PC_ENOMEM: return "out of memory";
     case PC_EIO: return "cannot write the file";
     case PC_ENOCONVERGE: return "the iteration did not converge";
+    case PC_EDOMAIN2: return "a second parameter outside its domain";
+    case PC_EDOMAIN3: return "a third parameter outside its domain";
     }
     return "unknown error";
 }

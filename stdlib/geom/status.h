@@ -24,7 +24,9 @@ enum {
     PC_EARG,          /* an argument out of range (the canvas's message says which) */
     PC_ENOMEM,        /* out of memory, or a size beyond the core's limits */
     PC_EIO,           /* a writer could not write its file */
-    PC_ENOCONVERGE    /* an iteration (Newton, optimiser) did not converge */
+    PC_ENOCONVERGE,   /* an iteration (Newton, optimiser) did not converge */
+    PC_EDOMAIN2,      /* a second parameter outside its domain (a why-table, why.h, says which) */
+    PC_EDOMAIN3       /* a third parameter outside its domain */
 };
 
 /* A short English description of a status code: it names the condition; the caller adds

@@ -4,7 +4,7 @@
 #include "pcl_books.h"
 #include "pcl_core.h"
 #include "pcl_point.h"
-#include "quadratic.h"
+#include "quadratic_given.h"
 #include "quadratic_on.h"
 #include "konop_why.h"
 
@@ -28,20 +28,19 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     }
 }
 
-/* The message for a status of pc_curve_conic / pc_conic_info_*. */
-static int conic_error(lua_State *L, int st, int dim) {
+/* The elements o, or the message for the status st of pc_curve_conic / pc_conic_info_*. */
+static int push_elements(lua_State *L, int st, int dim, const pc_conic_info *o) {
     if (st == PC_EDIM)
         return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
-    return pcl_check(L, st, pc_konop_why);
+    pcl_check(L, st, pc_konop_why);
+    pcl_push_conic_info(L, o);
+    return 1;
 }
 
 static int conic_of_curve(lua_State *L, pc_curve *c) {
     pc_conic_info o;
     pcl_callback_state(L);
-    int st = pc_curve_conic(c, &o);
-    if (st != PC_OK) return conic_error(L, st, c->dim);
-    pcl_push_conic_info(L, &o);
-    return 1;
+    return push_elements(L, pc_curve_conic(c, &o), c->dim, &o);
 }
 
 static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)); }
@@ -64,106 +63,84 @@ static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return ok;
 }
 
-static const pcl_arg tangent_item = {.name = "tangents", .kind = PCL_ANY, .read = read_tangent,
-                                     .expect = "{a 2-D point, a 2-D vector}"};
-static const pcl_arg condition_keys[] = {{.name = "points", .kind = PCL_POINTS, .dim = 2, .lo = 0, .hi = 5},
-                                         {.name = "tangents", .kind = PCL_TABLE}, PCL_END};
+static const pcl_arg tangent_item = A_ANY("tangents", read_tangent, "{a 2-D point, a 2-D vector}");
+static const pcl_arg condition_keys[] = {A_POINTS("points", 2, 0, 5), {.name = "tangents", .kind = PCL_TABLE}, PCL_END};
 static const pcl_arg condition_table = {.name = "conic", .kind = PCL_OPTIONS, .keys = condition_keys};
 
 /* {points = {P, ...}, tangents = {{P, V}, ...}} at 1: five conditions, a tangent at a point
- * given among the points or not (quadratic.h, pc_conic_coef_conditions). */
-static int conditions(lua_State *L, double coef[6]) {
-    double pts[10], rows[30];
+ * given among the points or not (quadratic_given.h). */
+static int conditions(lua_State *L, pc_conic_info *o) {
+    double pts[10], tangents[20];
     pcl_val k[2] = {{.list = pts, .cap = 10}};
     pcl_read_options(L, 1, 1, &condition_table, k);
     lua_getfield(L, 1, "tangents");
     int tg = lua_gettop(L), np = k[0].n, nt = k[1].present ? (int)lua_rawlen(L, tg) : 0;
     if (np + nt != 5)
         return pcl_fail(L, "five conditions fix a conic, got %d points and %d tangents", np, nt);
-    for (int i = 0; i < np; i++) pc_conic_row_point(pts[2 * i], pts[2 * i + 1], rows + 6 * i);
     for (int i = 0; i < nt; i++) {
         pcl_val t = {0};
         lua_geti(L, tg, i + 1);
         pcl_readone(L, tg + 1, 1, i + 1, &tangent_item, 2, &t);
-        pc_conic_row_tangent(t.v[0], t.v[1], t.v[2], t.v[3], rows + 6 * (np + i));
+        memcpy(tangents + 4 * i, t.v, sizeof(double) * 4);
         lua_pop(L, 1);
     }
-    lua_pop(L, 1);
-    return pc_conic_coef_conditions(rows, coef);
+    return pc_conic_info_given(np, pts, nt, tangents, o);
 }
 
-/* plane.conic_slope(coef, X): dy/dx of the implicit conic at its point X (declared) */
-static int l_slope(lua_State *L) {
-    double q[6];
-    pcl_val a[2] = {{.list = q, .cap = 6}};
-    PCL_READ(L, a);
+static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
+PCL_BODY(l_slope, a) {
     double sl, v;
-    int st = pc_conic_slope_on(q, a[1].v[0], a[1].v[1], &sl, &v);
+    int st = pc_conic_slope_on(a[0].list, a[1].v[0], a[1].v[1], &sl, &v);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
     if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
     return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
 }
 
-static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
 static const pcl_fn plane_fns[] = {
-    PCL_FN("plane.conic_slope", l_slope, slope_args, "slope",
-           "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
+    PCL_FN("plane.conic_slope", l_slope, slope_args, "slope", "The slope dy/dx = -(2ax + by + d)/(bx + 2cy + e) of the implicit conic {a, b, c, d, e, f} at its point X (math.huge for a vertical tangent; an error off the curve or at a singular point)."),
     PCL_END};
 
 PCL_BODY(l_elements, a) {
     pc_curve *c = pcl_tocurve(L, 1);
     if (c) return conic_of_curve(L, c);
     pc_conic_info o;
-    int st;
-    int has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
+    int st, has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
     if (lua_istable(L, 1)) lua_pop(L, 1);
     if (has_points) {
-        st = conditions(L, o.coef);
-        if (st == PC_ECOLLINEAR) return pcl_fail(L, "the conditions do not fix one conic (they are dependent)");
-        if (st == PC_OK) st = pc_conic_info_coef(o.coef, &o);
+        st = conditions(L, &o);
     } else if (lua_istable(L, 1)) {
         static const pcl_arg coef_arg = A_NUMBERS("conic", 6, 6);
-        double q[6];
-        pcl_val v = {.list = q, .cap = 6};
+        pcl_val v = {.list = o.coef, .cap = 6};   /* pc_conic_info_coef may read its own out->coef */
         if (lua_rawlen(L, 1) != 6) return pcl_argfail(L, 1, "must be a list of 6 numbers {a, b, c, d, e, f}");
         pcl_readone(L, 1, 1, 0, &coef_arg, 0, &v);
-        st = pc_conic_info_coef(q, &o);
+        st = pc_conic_info_coef(o.coef, &o);
     } else if (pcl_tovalue(L, 1)) {
         /* five points, each read by the one point rule */
         static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};
-        double pts[10], q[6];
+        double pts[10];
         for (int i = 0; i < 5; i++) {
             pcl_val v = {0};
             pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v);
-            pts[2 * i] = v.v[0], pts[2 * i + 1] = v.v[1];
+            memcpy(pts + 2 * i, v.v, sizeof(double) * 2);
         }
-        st = pc_conic_coef_five(pts, q);
-        if (st == PC_ECOLLINEAR)
-            return pcl_fail(L, "the five points fix no single conic (four of them are collinear, or two coincide)");
-        if (st == PC_OK) st = pc_conic_info_coef(q, &o);
+        st = pc_conic_info_five(pts, &o);
     } else {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
                            pcl_shown(L, 1));
     }
-    if (st != PC_OK) return conic_error(L, st, 2);
-    pcl_push_conic_info(L, &o);
-    return 1;
+    return push_elements(L, st, 2, &o);
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
-static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, {.name = "B", .kind = PCL_ANY, .flags = PCL_OPT},
-                                  {.name = "C", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "D", .kind = PCL_ANY, .flags = PCL_OPT},
-                                  {.name = "E", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
+#define LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
+static const pcl_arg el_args[] = {{.name = "conic", .kind = PCL_ANY}, LATER("B"), LATER("C"), LATER("D"), LATER("E"),
+                                  PCL_END};
 static const pcl_fn conic_fns[] = {
-    {.name = "conic.elements", .fn = l_elements, .args = el_args,
-     .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements",
-     .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
+    {.name = "conic.elements", .fn = l_elements, .args = el_args, .sig = "conic.elements(c) -> elements\nconic.elements(A, B, C, D, E) -> elements\nconic.elements({a, b, c, d, e, f}) -> elements\nconic.elements{points = {...}, tangents = {{P, V}, ...}} -> elements", .help = "What a conic is: the table of c:conic() for a curve, for the conic through five points, for the coefficients of a x^2 + b xy + c y^2 + d x + e y + f = 0, or for five general conditions (points, and tangent directions at points) (kind, centre or vertex, axes, semi-axes, foci, e, p, asymptotes, the implicit equation)."},
     PCL_END};
 static const pcl_fn method_fns[] = {
-    {.name = "c:conic", .fn = c_conic, .self = self_curve, .selftype = "curve",
-     .result = "{kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}",
-     .help = "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc with finite control points also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic."},
+    {.name = "c:conic", .fn = c_conic, .self = self_curve, .selftype = "curve", .result = "{kind, circle, discriminant, coef, center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva}", .help = "The conic a 2-D curve lies on: a rational quadratic arc with any weights (signs and points at infinity included) by its control points, any other curve by five of its points checked at eleven more. kind is \"ellipse\", \"parabola\" or \"hyperbola\" (circle = true for equal semi-axes); coef {a, b, c, d, e, f} of a x^2 + b xy + c y^2 + d x + e y + f = 0; axes[1] the major, transverse or parabola axis (into the curve); foci, eccentricity e and focal parameter p = b^2/a; for an arc with finite control points also mu = w1^2/(w0 w2), the normalised middle weight w, the engineering discriminant k = 1/(1 + w) of (2.97) and Ceva's k_ceva = 1/(4 mu) of (2.104). An error when the curve is not on one conic."},
     PCL_END};
 
 /* After pcl_open_curves and pcl_open_konopatsky, with the module table on top. */

@@ -1,8 +1,9 @@
-/* Binding of Konopatsky's curves (stdlib/books/konopatsky/conic.h, konop_curves.h, oneratio.h,
- * konop_interp.h, approx.h): the tables conic, oneratio, interp and approx, declared on the
- * argument layer (pcl_args.h, docs/bindings.md).  Every curve is the one curve userdata
- * (pcl_pushcurve); the constructions are in the core.  Guide: docs/konopatsky.md. */
+/* Binding of Konopatsky's monograph (stdlib/books/konopatsky/): the tables conic, oneratio,
+ * interp, approx and konopatsky (chapter 1), declared on the argument layer (pcl_args.h,
+ * docs/bindings.md).  Every curve is the one curve userdata (pcl_pushcurve); the constructions
+ * are in the core (docs/konopatsky.md). */
 #include "pcl_args.h"
+#include "pcl_books.h"
 #include "pcl_core.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"
@@ -13,6 +14,11 @@
 #include "approx.h"
 #include "konop_why.h"
 #include "konop_make.h"
+#include "konop_schemes.h"
+#include "konop_triples.h"
+#include "konop_ch1.h"
+#include "konop_print.h"
+#include "pcl_curve.h"
 
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
@@ -30,36 +36,41 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 #define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 #define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
+#define A_INTOPT(nm, l, h, d) \
+    {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = l, .hi = h, .dflt = d}
+#define A_PARAMS {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}   /* one per point */
 
 /* ==== conic ================================================================================= */
 
+/* the constructions of made (below) */
 static const pcl_arg abck_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("k"), PCL_END};
 static const pcl_arg abcK_args[] = {SP("A"), SP("B"), SP("C"), SP("K"), PCL_END};
 static const pcl_arg abc_args[] = {SP("A"), SP("B"), SP("C"), PCL_END};
 static const pcl_arg ceva_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), PCL_END};
 static const pcl_arg cevaK_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("K"), PCL_END};
+static const pcl_arg k_args[] = {A_NUM("k"), PCL_END};
+static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
+static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"), A_INTOPT("n", 1, 40, 2), PCL_END};
+static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
+static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"), A_NUMOPT("tC", NAN, NULL), PCL_END};
+static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
+                                       A_NUMOPT("t1", 1, NULL), PCL_END};
+static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
+static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
+    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
 
-/* A construction of pc_konop_make or pc_konop_number: the declared points, then the numbers. */
-static int made(lua_State *L, pc_konop_kind kind) {
-    pcl_val a[6] = {0};
-    PCL_READ(L, a);
+/* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
+ * declared points, then the numbers (from a[0] when there are no points). */
+PCL_BODY(made, a) {
+    pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
     int np = pc_konop_npoints(kind), d = a[0].n, st;
-    double p[4 * PC_MAXDIM], x[2] = {a[np].x, a[np + 1].x}, k;
+    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k;
+    for (int i = 0; i < 3 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].x;
     pcl_point_rows(a, np, d, p);
     if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
-    CHECK(pc_konop_number(kind, d, p, &k));
+    CHECK(pc_konop_number(kind, d, p, x, &k));
     return pcl_push_results(L, 0, "n", k);
 }
-
-static int c_ed(lua_State *L) { return made(L, PC_KM_ED); }
-static int c_ed_k(lua_State *L) { return made(L, PC_KM_ED_K); }
-static int c_circle_k(lua_State *L) { return made(L, PC_KM_CIRCLE_K); }
-static int c_ceva(lua_State *L) { return made(L, PC_KM_CEVA); }
-static int c_ceva_k(lua_State *L) { return made(L, PC_KM_CEVA_K); }
-static int c_parabola(lua_State *L) { return made(L, PC_KM_PARABOLA); }
-
-static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
-                                        {.name = "tC", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = NAN}, PCL_END};
 
 /* The tables of the book's forms: C, A, B and the range first in each (a[1..4]). */
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
@@ -69,52 +80,39 @@ static const pcl_arg parabola_args[] = {SP("A1"), SP("A3"), SP("A2"),
 
 /* The form `kind` of the table read into a[1..4] (C, A, B, range) with its parameters. */
 static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, const double *par, int npar) {
-    double t0 = NAN, t1 = NAN;
-    if (a[4].present) {
-        t0 = a[4].list[0], t1 = a[4].list[1];
-        if (!(t1 > t0)) pcl_keyfail(L, "range", "must be two finite numbers t0 < t1");
-    }
     int st, d = a[2].n;
+    double t0 = a[4].present ? a[4].list[0] : NAN, t1 = a[4].present ? a[4].list[1] : NAN, r[2];
     pc_curve *c = pc_kcurve(kind, d, a[1].v, a[2].v, a[3].v, par, npar, t0, t1, &st);
-    if (!c && st == PC_EDOMAIN) {
-        double r0, r1;
-        if (pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, &r0, &r1) == PC_OK)
-            pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r0), pcl_pushnum(L, r1));
-        pcl_fail(L, "the points or parameters are outside the form's conditions (see :help %s)", pcl_name(L));
-    }
+    if (!c && st == PC_EDOMAIN3 && pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, r, r + 1) == PC_OK)
+        return pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r[0]),
+                           pcl_pushnum(L, r[1]));
     return MADE(c);
 }
 
-static void need_point(lua_State *L, const pcl_val *v, const char *key) {
-    if (!v->present) pcl_keyfail(L, key, "must be a point, got nil");
-}
-
+/* by: the forms PC_KC_ELLIPSE_ANGLE .. PC_KC_ELLIPSE_ALGEBRAIC in order, then two of conic.h */
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
-static const pc_kcurve_kind ellipse_kinds[] = {PC_KC_ELLIPSE_ANGLE, PC_KC_ELLIPSE_RADIUS, PC_KC_ELLIPSE_FOCAL,
-                                               PC_KC_ELLIPSE_COMPRESSION, PC_KC_ELLIPSE_ALGEBRAIC};
 static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
                                        {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"), PCL_END};
 static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
 PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     int st, by = a[5].n;
     if (by == 6) {                                   /* §2.1.1.6: K, A, B, lambda */
-        need_point(L, &a[7], "K");
+        if (!a[7].present) return pcl_keyfail(L, "K", "must be a point, got nil");
         if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
             return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
         return MADE(pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st));
     }
-    need_point(L, &a[1], "C");
+    if (!a[1].present) return pcl_keyfail(L, "C", "must be a point, got nil");
     if (by == 5) return MADE(pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st));
-    return kcurve_from(L, a, ellipse_kinds[by], &a[6].x, 1);
+    return kcurve_from(L, a, (pc_kcurve_kind)(PC_KC_ELLIPSE_ANGLE + by), &a[6].x, 1);
 }
 
-static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};
-static const pc_kcurve_kind hyperbola_kinds[] = {PC_KC_HYPERBOLA_ANGLE, PC_KC_HYPERBOLA_RADIUS, PC_KC_HYPERBOLA_FOCAL};
+static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
 static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
 static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
 PCL_BODY(c_hyperbola, a) {   /* spec; C, A, B, range, by, branch */
-    return kcurve_from(L, a, hyperbola_kinds[a[5].n], &a[6].x, 1);
+    return kcurve_from(L, a, (pc_kcurve_kind)(PC_KC_HYPERBOLA_ANGLE + a[5].n), &a[6].x, 1);
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
@@ -125,34 +123,24 @@ PCL_BODY(c_circle, a) {   /* spec; C, A, B, range, delta, R */
         return kcurve_from(L, a, PC_KC_CIRCLE_ANGLE, &a[5].x, 1);
     }
     if (a[6].present) return kcurve_from(L, a, PC_KC_CIRCLE_RADIUS, &a[6].x, 1);
-    /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
-    double k;
-    int st = CHECK(pc_conic_ed_circle_k(a[1].n, a[2].v, a[3].v, a[1].v, &k));
-    return MADE(pc_conic_ed(a[1].n, a[2].v, a[3].v, a[1].v, k, &st));
+    int st;   /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
+    return MADE(pc_conic_circle_arc(a[1].n, a[2].v, a[3].v, a[1].v, &st));
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
 PCL_BODY(c_tilted, a) {
     int d = a[0].n, st;
-    double P[PC_MAXDIM], Q[PC_MAXDIM], K[PC_MAXDIM + 1], Ar[PC_MAXDIM], tau;
-    CHECK(pc_ellipse_tilted_axes(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, P, Q));
-    CHECK(pc_ellipse_tilted_scheme(d, a[0].v, a[1].v, a[2].v, a[3].x, K, Ar, &tau));
-    MADE(pc_kcurve(PC_KC_ELLIPSE_ANGLE, d, a[2].v, P, Q, NULL, 0, NAN, NAN, &st));
-    return 1 + pcl_push_results(L, d, "p p h p n", P, Q, K, Ar, tau);   /* K: a vector at theta = 0 */
+    double o[4 * PC_MAXDIM + 2];
+    MADE(pc_ellipse_tilted(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, a[5].x, o, &st));
+    return 1 + pcl_push_packed(L, d, "p p h p n", o);   /* K: a vector at theta = 0 */
 }
 
 static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
 static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
 PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
-    int d = a[0].n;
-    double u[5];
-    int st = CHECK(pc_conic_five_points_params(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u));
-    double u0, u1;
-    pc_conic_five_points_span(u, &u0, &u1);
-    if (a[6].present) u0 = a[6].x;
-    if (a[7].present) u1 = a[7].x;
-    if (!(u1 > u0)) return pcl_keyfail(L, "u1", "must be greater than u0");
-    MADE(pc_conic_five_points(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, NULL, &st));
+    int st;
+    double u[5], u0 = a[6].present ? a[6].x : NAN, u1 = a[7].present ? a[7].x : NAN;
+    MADE(pc_conic_five_points(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, u0, u1, (int)a[8].x, u, &st));
     return 1 + pcl_push_results(L, 0, "A=n B=n C=n D=n E=n", u[0], u[1], u[2], u[3], u[4]);
 }
 
@@ -160,24 +148,12 @@ PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
 static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"), REQNUM("q3"), PCL_END};
 static const pcl_arg five2_args[] = SPEC(five2_keys);
 PCL_BODY(c_five_points2, a) {   /* spec; C, A, B, p1, p2, q2, q3 */
-    double p1 = a[4].x, p2 = a[5].x, q2 = a[6].x, q3 = a[7].x;
-    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1)) return pcl_fail(L, "options 'p1' and 'q3' must be in (0, 1]");
-    if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
-        return pcl_fail(L, "options 'p2' and 'q2' must be in (0, 1) (A2 inside the triangle C A1 A3)");
     int st;
-    return MADE(pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, p1, p2, q2, q3, &st));
+    return MADE(pc_conic_five_points2(a[2].n, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, a[7].x, &st));
 }
 
-static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), SP("A5"), A_NUMOPT("t0", 0, NULL),
-                                       A_NUMOPT("t1", 1, NULL), PCL_END};
-PCL_BODY(c_triples, a) {
-    if (!(a[6].x > a[5].x)) return pcl_argfail(L, 7, "must be greater than t0");
-    int st;
-    return MADE(pc_triples_conic(a[0].n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, a[5].x, a[6].x, &st));
-}
-
-static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), {.name = "u", .kind = PCL_NUMBER, .flags = PCL_OPT},
-                                         {.name = "v", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
+static const pcl_arg redundant_args[] = {SP("C"), SP("A"), SP("B"), A_NUMOPT("u", 0, NULL), A_NUMOPT("v", 0, NULL),
+                                         PCL_END};
 PCL_BODY(c_redundant, a) {
     int d = a[0].n, st;
     if (!a[3].present && !a[4].present)   /* (2.121) u = v = t: the ED arc with k = 2/3 */
@@ -199,23 +175,15 @@ PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch */
 /* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
 static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    int g = 1;
-    if (lua_type(L, idx) == LUA_TNUMBER) {
-        out->v[1] = lua_tonumber(L, idx);
-    } else {
-        if (!lua_istable(L, idx)) return 0;
-        size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
-        if (len < 1 || len > PC_KC_MAXPAR - 1) return 0;
-        g = (int)len;
-        for (int i = 1; i <= g; i++) {
-            lua_geti(L, idx, i);
-            out->v[i] = lua_type(L, -1) == LUA_TNUMBER ? lua_tonumber(L, -1) : NAN;
-            lua_pop(L, 1);
-        }
-    }
+    int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
+    if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
     out->v[0] = g;
-    for (int i = 1; i <= g; i++)
+    for (int i = 1; i <= g; i++) {
+        int t = list ? lua_geti(L, idx, i) : lua_type(L, idx);
+        out->v[i] = t == LUA_TNUMBER ? lua_tonumber(L, list ? -1 : idx) : NAN;
+        lua_pop(L, list);   /* the element, when k is a list */
         if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
+    }
     return 1;
 }
 static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_waves,
@@ -229,16 +197,6 @@ static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .ki
 static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
 PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
     return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1);
-}
-
-static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
-PCL_BODY(c_cones, a) {
-    int d = a[0].n, st;
-    if (d < 3) return pcl_fail(L, "the points must be 3-D or more (a tetrahedron ABCD), got %d-D", d);
-    for (int k = 4; k < 6; k++)
-        if (!(a[k].x > 0 && a[k].x < 1)) return pcl_argfail(L, k + 1, "must be a number in (0, 1), got %s", pcl_shown(L, k + 1));
-    if (a[6].x == 0 || a[6].x == 1) return pcl_argfail(L, 7, "must be a number other than 0 and 1, got %s", pcl_shown(L, 7));
-    return MADE(pc_cubic_cones(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].x, a[5].x, a[6].x, &st));
 }
 
 static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
@@ -255,21 +213,10 @@ PCL_BODY(c_contour, a) {
 /* ==== oneratio ============================================================================== */
 
 static const pcl_arg abcd_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), PCL_END};
-static int o_simplex(lua_State *L) {   /* also oneratio(A, B, C): the table is the receiver */
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
+PCL_BODY(o_simplex, a) {   /* also oneratio(A, B, C): the table is the receiver */
     int st;   /* the one kind, however it was called */
     return pcl_push_made(L, pc_oneratio_simplex(a[0].n, a[0].v, a[1].v, a[2].v, &st), &st, "oneratio.simplex");
 }
-
-static int o_tetra(lua_State *L) { return made(L, PC_KM_TETRA); }
-static int o_bezier3(lua_State *L) { return made(L, PC_KM_BEZIER3); }
-static int o_smooth(lua_State *L) { return made(L, PC_KM_SMOOTH); }
-static int o_desargues(lua_State *L) { return made(L, PC_KM_DESARGUES); }
-
-static const pcl_arg bezier3_args[] = {SP("A"), SP("C1"), SP("C2"), SP("B"), PCL_END};
-static const pcl_arg smooth_args[] = {SP("A"), SP("B"), SP("C"),
-    {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 40, .dflt = 2}, PCL_END};
 
 /* f: a function of v or a number */
 static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -280,40 +227,24 @@ static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
     {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
-PCL_BODY(o_double_contact, a) {
-    double kp = a[3].x, kq = a[4].x;
-    if (kp == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
-    if (kq == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
-    if (kp == kq) return pcl_argfail(L, 5, "must be different from kp (else M is the conic P = Q)");
-    int st, d = a[0].n;
+PCL_BODY(o_double_contact, a) {   /* f: a function of v, a number, or absent: f(v) = v */
+    int st, d = a[0].n, fn = a[5].present && !a[5].n;
     const double *A = a[0].v, *B = a[1].v, *C = a[2].v;
-    if (!a[5].present || a[5].n)   /* f(v) = v, or a constant */
-        return MADE(a[5].present ? pc_oneratio_double_contact_const(d, A, B, C, kp, kq, a[5].x, &st)
-                                 : pc_oneratio_double_contact(d, A, B, C, kp, kq, NULL, NULL, NULL, &st));
-    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){6});
-    pc_curve *c = pc_oneratio_double_contact(d, A, B, C, kp, kq, pcl_luafn_blend, pcl_luafn_free, f, &st);
-    if (!c) pcl_luafn_free(f);
+    if (a[5].present && !fn) return MADE(pc_oneratio_double_contact_const(d, A, B, C, a[3].x, a[4].x, a[5].x, &st));
+    pcl_luafn *f = fn ? pcl_luafn_new(L, 1, (int[]){6}) : NULL;
+    pc_curve *c = pc_oneratio_double_contact(d, A, B, C, a[3].x, a[4].x, fn ? pcl_luafn_blend : NULL,
+                                             fn ? pcl_luafn_free : NULL, f, &st);
+    if (!c && f) pcl_luafn_free(f);
     return MADE(c);
-}
-
-static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
-    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
-PCL_BODY(o_closed, a) {
-    if (a[3].x == 0) return pcl_argfail(L, 4, "must be a non-zero number, got 0");
-    if (a[4].x == 0) return pcl_argfail(L, 5, "must be a non-zero number, got 0");
-    int st;
-    return MADE(pc_oneratio_closed(a[0].n, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, (int)a[5].x, &st));
 }
 
 /* ---- the schemes' intermediate points (for figures that label them) ----------------------- */
 
 static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
-static int o_levels(lua_State *L) {
-    double p[16 * PC_MAXDIM], out[120 * PC_MAXDIM];
-    pcl_val a[2] = {{.list = p, .cap = 16 * PC_MAXDIM}};
-    PCL_READ(L, a);
+PCL_BODY(o_levels, a) {
+    double out[120 * PC_MAXDIM];
     int n = a[0].n, d = a[0].dim;
-    CHECK(pc_decasteljau_levels(d, n, p, a[1].x, out));
+    CHECK(pc_decasteljau_levels(d, n, a[0].list, a[1].x, out));
     lua_createtable(L, n - 1, 0);
     const double *row = out;
     for (int level = 1; level < n; level++) {
@@ -326,8 +257,7 @@ static int o_levels(lua_State *L) {
 
 /* ==== interp ================================================================================ */
 
-static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES),
-    {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
+static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES), A_PARAMS, PCL_END};
 
 /* the interpolation curve through a[0] at the parameters a[1] (uniform when absent) */
 static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
@@ -344,16 +274,14 @@ PCL_BODY(i_lagrange, a) {
  * parameters (out->list, out->n: the count of nodes) */
 static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    if (lua_isinteger(L, idx)) {
-        lua_Integer order = lua_tointeger(L, idx);
-        if (order < 1 || order > PC_CURVE_MAXDEG) return 0;
-        out->n = (int)order + 1, out->list = NULL;
+    if (lua_istable(L, idx)) {
+        static const pcl_arg params = A_NUMBERS("params", 2, MAXNODES);
+        pcl_readone(L, idx, 1, 0, &params, 0, out);
         return 1;
     }
-    if (!lua_istable(L, idx)) return 0;
-    static const pcl_arg params = A_NUMBERS("params", 2, MAXNODES);
-    pcl_readone(L, idx, 1, 0, &params, 0, out);
-    return 1;
+    lua_Integer order = lua_isinteger(L, idx) ? lua_tointeger(L, idx) : 0;
+    out->n = (int)order + 1, out->list = NULL;
+    return order >= 1 && order <= PC_CURVE_MAXDEG;
 }
 /* t: a finite number, or an equation (out->n = 1) */
 static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -373,23 +301,17 @@ static int weight_equations(lua_State *L, int n, const double *u) {
     CHECK(pc_lagrange_weight_coefs(n, u, coef));
     lua_createtable(L, n, 0);
     for (int j = 0; j < n; j++) {
-        int any = 0;
+        int terms = 0;
         for (int i = 0; i < n; i++) {
-            double c = coef[(size_t)j * n + i];
-            if (c == 0) continue;
-            lua_pushnumber(L, c);
-            if (i > 0) {
-                lua_pushvalue(L, 2);
-                if (i > 1) {
-                    lua_pushinteger(L, i);
-                    lua_arith(L, LUA_OPPOW);
-                }
-                lua_arith(L, LUA_OPMUL);
-            }
-            if (any) lua_arith(L, LUA_OPADD);
-            any = 1;
+            if (coef[(size_t)j * n + i] == 0) continue;
+            lua_pushnumber(L, coef[(size_t)j * n + i]);   /* c t^i: the equations make t^1 t and c t^0 c */
+            lua_pushvalue(L, 2);
+            lua_pushinteger(L, i);
+            lua_arith(L, LUA_OPPOW);
+            lua_arith(L, LUA_OPMUL);
+            if (terms++) lua_arith(L, LUA_OPADD);
         }
-        if (!any) lua_pushnumber(L, 0);
+        if (!terms) lua_pushnumber(L, 0);
         lua_rawseti(L, -2, j + 1);
     }
     return 1;
@@ -398,10 +320,8 @@ static int weight_equations(lua_State *L, int n, const double *u) {
 PCL_BODY(i_weights, a) {
     int n = a[0].n;
     if (a[1].n) return weight_equations(L, n, a[0].list);
-    double t = a[1].x, w[MAXNODES];
-    CHECK(pc_lagrange_weights(n, a[0].list, t, w));
-    for (int i = 0; i < n; i++)   /* a t far outside the nodes overflows the products */
-        if (!isfinite(w[i])) return pcl_fail(L, "the weights are out of range (not finite) for t = %s", pcl_pushnum(L, t));
+    double w[MAXNODES];
+    CHECK(pc_lagrange_weights(n, a[0].list, a[1].x, w));
     return pcl_push_results(L, 0, "N", n, w);
 }
 
@@ -414,17 +334,13 @@ PCL_BODY(i_controls, a) {
     return 1;
 }
 
-static const pcl_arg akbk_args[] = {SP("A"), SP("K"), SP("B"), A_NUM("k"), PCL_END};
-static int i_conic(lua_State *L) { return made(L, PC_KM_ED3); }
-
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
-                                   SP("C2"), A_LATER("Cn"), {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}, PCL_END};
-static int i_arc(lua_State *L) {
+                                   SP("C2"), A_LATER("Cn"), A_PARAMS, PCL_END};
+PCL_BODY(i_arc, a) {
     static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
                          u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
-    pcl_val a[4] = {0}, cn = {0}, p3 = {0};
-    PCL_READ(L, a);
+    pcl_val cn = {0}, p3 = {0};
     int n = a[0].n, d = a[0].dim, k = 4, st;
     const pcl_val *u = &a[3];
     if (lua_istable(L, 3)) {
@@ -445,44 +361,32 @@ PCL_BODY(i_adaptive, a) {
     int n = a[0].n, d = a[0].dim, axis = (int)a[1].x;
     if (axis < 1 || axis > d) return pcl_argfail(L, 2, "must be an axis number 1..%d, got %d", d, axis);
     double v[MAXNODES];
+    char why[200];
     int st = pc_interp_adaptive_params(d, n, a[0].list, axis - 1, v);
-    if (st == PC_ECOINCIDENT) return pcl_fail(L, "the first and last nodes have the same coordinate on axis %d", axis);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
-                        "the nodes must be the order of the parameters)", axis);
+    if (pc_interp_adaptive_why(st, axis - 1, why, sizeof why)) return pcl_fail(L, "%s", why);
     CHECK(st);
     return pcl_push_results(L, 0, "N", n, v);
 }
 
-static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};
-static const struct { pc_proto_kind kind; int n, nk; } protos[] = {
-    {PC_PROTO_DESARGUES, 4, 0}, {PC_PROTO_RATIONAL, 4, 0}, {PC_PROTO_EXP, 3, 3}, {PC_PROTO_EXP_AFFINE, 3, 2},
-    {PC_PROTO_TRIG, 3, 0}};
+static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};   /* pc_proto_kind */
 static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
                                      A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
-static int i_prototype(lua_State *L) {
-    pcl_val a[5] = {0}, p = {0}, k = {0}, t = {0};
-    PCL_READ(L, a);
-    int i = a[0].n, n = protos[i].n, nk = protos[i].nk, next = nk ? 4 : 3;
+PCL_BODY(i_prototype, a) {
+    pcl_val p = {0}, k = {0}, v = {0};
+    int n, nk, st;
+    pc_interp_prototype_shape((pc_proto_kind)a[0].n, &n, &nk);
     /* the count of points the prototype takes, whatever came (nil included) */
     if (!lua_istable(L, 2)) return pcl_argfail(L, 2, "must hold %d points (the \"%s\" prototype), got %s", n, a[0].s, pcl_shown(L, 2));
-    pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta = A_NUM("t0");
+    pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta[2] = {A_NUM("t0"), A_NUM("t1")};
     pcl_readone(L, 2, 2, 0, &pa, 0, &p);
-    double kk[3] = {0, 0, 0}, t0 = NAN, t1 = NAN;
-    if (nk) {
-        pcl_readone(L, 3, 3, 0, &ka, 0, &k);
-        memcpy(kk, k.list, sizeof(double) * (size_t)nk);
+    if (nk) pcl_readone(L, 3, 3, 0, &ka, 0, &k);
+    double t[2] = {NAN, NAN}, none[3] = {0};
+    for (int j = 0, at = nk ? 4 : 3; j < 2 && !lua_isnoneornil(L, at); j++) {   /* t1 must follow t0 */
+        pcl_readone(L, at + j, at + j, 0, &ta[j], 0, &v);
+        t[j] = v.x;
     }
-    if (!lua_isnoneornil(L, next)) {
-        pcl_readone(L, next, next, 0, &ta, 0, &t);
-        t0 = t.x;
-        ta.name = "t1";
-        pcl_readone(L, next + 1, next + 1, 0, &ta, 0, &t);
-        t1 = t.x;
-        if (!(t1 > t0)) return pcl_fail(L, "argument #%d (t1) must be greater than t0", next + 1);
-    }
-    int st;
-    return MADE(pc_interp_prototype(protos[i].kind, p.dim, n, p.list, kk, t0, t1, &st));
+    if (!(t[1] > t[0]) && !isnan(t[0])) return pcl_fail(L, "argument #%d (t1) must be greater than t0", nk ? 5 : 4);
+    return MADE(pc_interp_prototype((pc_proto_kind)a[0].n, p.dim, n, p.list, nk ? k.list : none, t[0], t[1], &st));
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes, the elements of the table (function 0) */
@@ -500,10 +404,8 @@ static int basis_cb(void *ud, double t, int n, double *g) {
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
 static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    if (!lua_istable(L, idx)) return 0;
-    size_t len = lua_rawlen(L, idx);   /* raw: a __len cannot raise inside the reader */
-    if (len < 1 || len > 16) return 0;
-    out->n = (int)len;
+    out->n = lua_istable(L, idx) ? (int)lua_rawlen(L, idx) : 0;   /* raw: a __len cannot raise inside the reader */
+    if (out->n < 1 || out->n > 16) return 0;
     for (int i = 1; i <= out->n; i++) {
         lua_geti(L, idx, i);
         if (!pcl_callable(L, -1)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
@@ -513,28 +415,21 @@ static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg basis_args[] = {{.name = "basis", .kind = PCL_ANY, .read = read_basis, .expect = "a list of 1 to 16 functions of t"},
                                      A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
-                                     {.name = "t0", .kind = PCL_NUMBER, .flags = PCL_OPT},
-                                     {.name = "t1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
+                                     A_NUMOPT("t0", 0, NULL), A_NUMOPT("t1", 0, NULL), PCL_END};
 PCL_BODY(i_basis, a) {
     int n = a[0].n, d = a[1].dim;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);
     need_count(L, 3, &a[2], n);
-    const double *u = a[2].list;
-    double t0 = u[0], t1 = u[0];
-    for (int i = 1; i < n; i++) t0 = fmin(t0, u[i]), t1 = fmax(t1, u[i]);
-    if (a[3].present) {
-        if (!a[4].present) return pcl_argfail(L, 5, "must be a finite number (with t0), got nil");
-        t0 = a[3].x, t1 = a[4].x;
-    }
-    if (!(t1 > t0)) return pcl_fail(L, "the parameter range must not be empty");
+    if (a[3].present && !a[4].present) return pcl_argfail(L, 5, "must be a finite number (with t0), got nil");
     pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
     int st;
-    pc_curve *c = pc_interp_basis(d, n, a[1].list, u, basis_cb, pcl_luafn_free, r, t0, t1, &st);
+    pc_curve *c = pc_interp_basis(d, n, a[1].list, a[2].list, basis_cb, pcl_luafn_free, r, a[3].present ? a[3].x : NAN,
+                                  a[3].present ? a[4].x : NAN, &st);
     if (!c) pcl_luafn_free(r);
     MADE(c);
     /* the membership condition: do the weights sum to 1 over [t0, t1]? (the curve owns r) */
     double dev;
-    CHECK(pc_interp_basis_membership(n, u, basis_cb, r, t0, t1, 65, &dev));
+    CHECK(pc_interp_basis_membership(n, a[2].list, basis_cb, r, c->t0, c->t1, 65, &dev));
     return 1 + pcl_push_results(L, 0, "b n", dev <= 1e-9, dev);
 }
 
@@ -543,11 +438,7 @@ PCL_BODY(i_rational22, a) {
     int st, d = a[0].dim;
     double co[5 * PC_MAXDIM];
     MADE(pc_interp_rational22(d, a[0].list, co, &st));
-    lua_createtable(L, d, 0);
-    for (int k = 0; k < d; k++) {
-        pcl_push_numbers(L, 5, co + 5 * k);
-        lua_rawseti(L, -2, k + 1);
-    }
+    pcl_push_rows(L, d, 5, co);
     return 2;
 }
 
@@ -567,8 +458,7 @@ PCL_BODY(a_curve, a) {
 
 /* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
  * a points to m's value, then the table, then its keys (m, divisor) */
-static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};
-static const pc_mse_divisor divisors[] = {PC_MSE_DIV_M1, PC_MSE_DIV_M, PC_MSE_DIV_MMINUS1};
+static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};   /* pc_mse_divisor */
 static const pcl_arg mse_keys[] = {{.name = "m", .kind = PCL_INTEGER}, A_ENUM("divisor", DIVISORS), PCL_END};
 static const pcl_arg mse_opts = A_OPTIONS("opts", mse_keys);
 static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* an integer or the table */
@@ -587,7 +477,7 @@ static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse
         if (o[0].present) pcl_keyfail(L, "m", "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
         pcl_argfail(L, k, "must be a number of samples %d..%d, got %s", lo, hi, pcl_pushnum(L, m));
     }
-    *dv = divisors[o[1].n];
+    *dv = (pc_mse_divisor)o[1].n;
     return (int)m;
 }
 
@@ -605,7 +495,6 @@ PCL_BODY(a_mse, a) {   /* f, nodes, m, opts, m =, divisor = */
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
 PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
     int N = (int)a[3].x;
-    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     pc_mse_divisor dv;
     int m = samples(L, 5, &a[4], N, 100000, &dv);
     pcl_luafn f = pcl_luafn_at(L, 1);
@@ -618,9 +507,8 @@ PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
 PCL_BODY(a_chebyshev, a) {
-    if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than a");
     double x[64];
-    pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x);
+    CHECK(pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x));
     return pcl_push_results(L, 0, "N", (int)a[0].x, x);
 }
 
@@ -636,10 +524,8 @@ PCL_BODY(a_lagrange_mse, a) {
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
     {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
-static int a_nelder_mead(lua_State *L) {
-    double x[32];
-    pcl_val a[3] = {[1] = {.list = x, .cap = 32}};
-    PCL_READ(L, a);
+PCL_BODY(a_nelder_mead, a) {
+    double *x = a[1].list;   /* the layer's buffer, minimised in place */
     int n = a[1].n, it;
     pcl_luafn f = pcl_luafn_at(L, 1);
     f.nargs = n;
@@ -654,38 +540,39 @@ static int a_nelder_mead(lua_State *L) {
 
 #define SIG(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text}
 static const pcl_fn conic_fns[] = {
-    PCL_FN("conic.ed", c_ed, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
-    PCL_FN("conic.ed_k", c_ed_k, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
-    PCL_FN("conic.circle_k", c_circle_k, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
-    PCL_FN("conic.ceva", c_ceva, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
-    PCL_FN("conic.ceva_k", c_ceva_k, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
-    SIG("conic.parabola", c_parabola, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
+    PCL_FN("conic.ed", made, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
+    PCL_FN("conic.ed_k", made, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
+    PCL_FN("conic.circle_k", made, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
+    PCL_FN("conic.ceva", made, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
+    PCL_FN("conic.ceva_k", made, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
+    PCL_FN("conic.ceva_to_ed", made, k_args, "k_ed", "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
+    PCL_FN("conic.ed_to_ceva", made, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
+    SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
     SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
     SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
     SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
     PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
     PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
     SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
-    PCL_FN("conic.triples", c_triples, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
+    PCL_FN("conic.triples", made, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
     SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
     SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
     SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
     SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
-    PCL_FN("conic.cones", c_cones, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
+    PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
     SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
     PCL_END};
 
 static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
-static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table,
-                                        .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
+static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table, .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
 static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.simplex", o_simplex, abc_args, "curve", "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B."),
-    PCL_FN("oneratio.tetra", o_tetra, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
-    PCL_FN("oneratio.bezier3", o_bezier3, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
-    PCL_FN("oneratio.smooth", o_smooth, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
-    PCL_FN("oneratio.desargues", o_desargues, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
+    PCL_FN("oneratio.tetra", made, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
+    PCL_FN("oneratio.bezier3", made, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
+    PCL_FN("oneratio.smooth", made, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
+    PCL_FN("oneratio.desargues", made, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
     PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
-    PCL_FN("oneratio.closed", o_closed, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
+    PCL_FN("oneratio.closed", made, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
     PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
     PCL_END};
 
@@ -693,7 +580,7 @@ static const pcl_fn interp_fns[] = {
     PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
     SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
     PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
-    PCL_FN("interp.conic", i_conic, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
+    PCL_FN("interp.conic", made, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
     SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
     PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
     SIG("interp.prototype", i_prototype, proto_args, "interp.prototype(\"desargues\"|\"rational\"|\"trig\", points [, t0, t1]) -> curve\ninterp.prototype(\"exp\"|\"exp1\", points, k [, t0, t1]) -> curve", "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40); desargues and rational take 4 points, the others 3."),
@@ -710,20 +597,275 @@ static const pcl_fn approx_fns[] = {
     PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
     PCL_END};
 
-static void module(lua_State *L, const char *name, const pcl_fn *fns) {
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    lua_setfield(L, -2, name);
+void pcl_open_konopatsky(lua_State *L) {
+    static const char *const names[] = {"conic", "oneratio", "interp", "approx"};
+    const pcl_fn *const fns[] = {conic_fns, oneratio_fns, interp_fns, approx_fns};
+    for (int i = 0; i < 4; i++) {
+        lua_newtable(L);
+        pcl_register(L, -1, fns[i], 0);
+        if (fns[i] == oneratio_fns) {   /* oneratio(A, B, C) is oneratio.simplex */
+            lua_newtable(L);
+            pcl_register(L, -1, oneratio_call, 0);
+            lua_setmetatable(L, -2);
+        }
+        lua_setfield(L, -2, names[i]);
+    }
 }
 
-void pcl_open_konopatsky(lua_State *L) {
-    module(L, "conic", conic_fns);
+/* ==== the scheme points of the monograph (konop_schemes.h): each a point, or a vector where the
+ * scheme's point is at infinity (N at u = 1/2 of conic.ed_scheme) ========================== */
+
+/* A scheme of pc_konop_scheme, the kind by the name it is called: the declared points, then the
+ * numbers (an enum's choice by its index); its points and numbers pushed by its fields. */
+PCL_BODY(scheme, a) {
+    const char *fields;
+    pc_konop_scheme_kind kind = pc_konop_scheme_of(pcl_name(L), &fields);
+    int np = pc_konop_scheme_npoints(kind), d = a[0].n;
+    double p[5 * PC_MAXDIM], x[2] = {0, 0}, o[8 * (PC_MAXDIM + 1)];
+    for (int i = 0; i < 2 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
+    pcl_point_rows(a, np, d, p);
+    CHECK(pc_konop_scheme(kind, d, p, x, o));
+    return pcl_push_packed(L, d, fields, o);
+}
+
+PCL_BODY(l_smooth_scheme, a) {
+    int d = a[0].n, n = (int)a[3].x;
+    double *p = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0), *q = p + n * d;
+    double *m = q + n * d;
+    CHECK(pc_oneratio_smooth_chain(d, a[0].v, a[1].v, a[2].v, n, a[4].x, p, q, m));
+    return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
+}
+
+PCL_BODY(l_cones_excluded, a) {
+    double u[5];
+    int n;
+    CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
+    return pcl_push_results(L, 0, "N", n, u);
+}
+
+static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
+
+static const pcl_arg ed_scheme_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("k"), A_NUM("u"), PCL_END};
+static const pcl_arg five_scheme_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_NUM("u"), PCL_END};
+static const pcl_arg smooth_scheme_args[] = {SP("A"), SP("B"), SP("C"), A_INT("n", 1, 40), A_NUM("t"), PCL_END};
+static const pcl_arg f_args[] = {A_NUM("fP"), A_NUM("fQ"), PCL_END};
+#define KIND {.name = "kind", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = KINDS}
+static const pcl_arg foci_args[] = {SP("C"), SP("A"), SP("B"), KIND, PCL_END};
+static const pcl_arg focal_args[] = {SP("C"), SP("A"), SP("B"), A_NUM("phi"), KIND, PCL_END};
+static const pcl_arg ceva_scheme_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("k"), A_NUM("t"), PCL_END};
+static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
+static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
+
+static const pcl_fn scheme_conic_fns[] = {
+    PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
+    PCL_FN("conic.five_scheme", scheme, five_scheme_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
+    PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
+    PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
+    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_END};
+static const pcl_fn scheme_oneratio_fns[] = {
+    PCL_FN("oneratio.simplex_scheme", scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
+    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_scheme_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}", "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
+    PCL_END};
+
+/* After pcl_open_konopatsky, with the module table on top (pcl.h, PCL_MODULES). */
+void pcl_open_konopatsky_schemes(lua_State *L) {
+    pcl_register_into(L, lua_gettop(L), "conic", scheme_conic_fns);
+    pcl_register_into(L, lua_gettop(L), "oneratio", scheme_oneratio_fns);
+}
+
+/* ==== the symbolic method of §2.2 (konop_triples.h): conic.scheme{...} ====================== */
+
+/* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
+ * no such list */
+static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
+    int t = lua_gettop(L), ok = lua_istable(L, t) && lua_rawlen(L, t) == 3;
+    for (int k = 0; ok && k < 3; k++) {
+        ok = lua_geti(L, t, k + 1) == LUA_TSTRING;
+        idx[k] = ok ? pc_triples_name(nm, lua_tostring(L, -1)) : 0;   /* the name stays alive in the table */
+        if (idx[k] < 0) pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return ok;
+}
+
+PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, range */
+    pc_triples_names nm = {0};
+    int tri[PC_TRIPLES_MAXTRI][3], cur[3], dim = 0;
+    unsigned char known[PC_TRIPLES_MAXPTS] = {0};
+    double pts[PC_TRIPLES_MAXPTS * PC_MAXDIM];
+    /* the known points first: their names are the keys of points */
+    lua_getfield(L, 1, "points");
+    int ip = lua_gettop(L);
+    lua_pushnil(L);
+    while (lua_next(L, ip)) {
+        if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
+        const char *s = lua_tostring(L, -2);
+        pcl_value *v = pcl_tovalue(L, -1);
+        double h[PC_MAXDIM + 1];
+        if (v) memcpy(h, v->h, sizeof(double) * (size_t)(v->n + 1));
+        /* the one weight rule: within 1e-9 of 1 is a point (pcl_snap_weight) */
+        if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
+            return pcl_fail(L, "points.%s must be a %s point", s, dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
+        dim = v->n;
+        int i = pc_triples_name(&nm, s);
+        if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        known[i] = 1;
+        memcpy(pts + i * dim, h, sizeof(double) * (size_t)dim);
+        lua_pop(L, 1);
+    }
+    if (!dim) return pcl_fail(L, "field points is empty");
+    lua_getfield(L, 1, "triples");
+    int it = lua_gettop(L), ntri = (int)lua_rawlen(L, it);
+    if (ntri < 1 || ntri > PC_TRIPLES_MAXTRI) return pcl_fail(L, "1 to %d triples, got %d", PC_TRIPLES_MAXTRI, ntri);
+    for (int j = 0; j < ntri; j++) {
+        lua_geti(L, it, j + 1);
+        if (!names3(L, &nm, tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
+    }
+    lua_getfield(L, 1, "current");
+    if (!names3(L, &nm, cur))
+        return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
+    int res = pc_triples_name(&nm, a[4].s);
+    pc_triples_plan plan;
+    int st = pc_triples_plan_make(nm.n, ntri, (const int (*)[3])tri, known, cur[0], cur[1], cur[2], res, &plan);
+    if (st == PC_EDOMAIN)
+        return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
+    CHECK(st);
+    double t0 = a[5].present ? a[5].list[0] : 0, t1 = a[5].present ? a[5].list[1] : 1;
+    pcl_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, pc_konop_why);
+    lua_createtable(L, plan.nsteps, 0);
+    for (int s = 0; s < plan.nsteps; s++) {
+        char text[4 * 64];
+        pc_triples_step_text(&plan, s, &nm, text, sizeof text);
+        lua_pushstring(L, text);
+        lua_rawseti(L, -2, s + 1);
+    }
+    return 2;
+}
+
+static const pcl_arg scheme_keys[] = {
+    {.name = "triples", .kind = PCL_TABLE, .flags = PCL_REQ, .expect = "a list of {\"X\", \"Y\", \"Z\"}"},
+    {.name = "points", .kind = PCL_TABLE, .flags = PCL_REQ, .expect = "a table {A1 = P(...), ...}"},
+    {.name = "current", .kind = PCL_ANY, .flags = PCL_REQ, .expect = "{\"C\", \"P\", \"Q\"}"},
+    {.name = "result", .kind = PCL_STRING, .flags = PCL_REQ},
+    {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2}, PCL_END};
+static const pcl_arg scheme_args[] = {{.name = "scheme", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = scheme_keys}, PCL_END};
+static const pcl_fn triples_fns[] = {
+    PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
+    PCL_END};
+
+/* After pcl_open_konopatsky, with the module table on top (pcl.h, PCL_MODULES). */
+void pcl_open_konopatsky_triples(lua_State *L) {
+    pcl_register_into(L, lua_gettop(L), "conic", triples_fns);
+}
+
+/* ==== konopatsky: chapter 1 (konop_ch1.h) ================================================== */
+
+PCL_BODY(k_area_k, a) {
+    double k;
+    CHECK(pc_k_area_k(a[0].x, a[1].x, a[2].x, &k));
+    return pcl_push_results(L, 0, "n", k);
+}
+
+PCL_BODY(k_area_theorem, a) {
+    int n = a[0].n;
+    double p[6 * PC_MAXDIM];
+    pcl_point_rows(a, 6, n, p);
+    pc_k_areas o;
+    CHECK(pc_k_area_theorem(n, p, p + 3 * n, &o));
+    return pcl_push_results(L, 0, "k=n lambda=N a=n b=n c=n collinear=b", o.k, 3, o.lambda, o.abc[0], o.abc[1],
+                            o.abc[2], o.collinear);
+}
+
+PCL_BODY(k_o_theorem, a) {
+    int m = a[0].n, n = a[0].dim;
+    double *r = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + m * (n + 1)), 0), *b = r + m, prod;
+    CHECK(pc_k_o_theorem(n, m, a[0].list, a[1].v, a[2].v, r, b, &prod));
+    pcl_push_results(L, 0, "n N", prod, m, r);
+    pcl_push_values(L, m, n, b, 1);   /* weight 0: B at infinity */
+    return 3;
+}
+
+PCL_BODY(k_simplex_ratio, a) {
+    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
+    int d, cols;
+    pcl_read_rows(L, 1, 0, m, &d, &cols);
+    if (d != cols || d < 2 || d > 9)
+        return pcl_argfail(L, 1, "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", d,
+                           cols);
+    double r;
+    CHECK(pc_k_simplex_ratio(d - 1, m, &r));
+    return pcl_push_results(L, 0, "n", r);
+}
+
+PCL_BODY(k_meet_line_plane, a) {
+    int n = a[0].n;
+    if (n < 3) return pcl_fail(L, "a line and a plane meet in 3-D or more, got %d-D points", n);
+    double k[PC_MAXDIM + 1], lam, pq[2];
+    int st = pc_k_meet_line_plane(n, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, k, &lam, pq);
+    if (st == PC_IMPROPER)      /* parallel: the common point at infinity, as meet() gives it */
+        return pcl_push_results(L, n, "v n", k, lam);
+    CHECK(st);
+    return pcl_push_results(L, n, "p n n n", k, lam, pq[0], pq[1]);
+}
+
+PCL_BODY(k_polar, a) {   /* also konopatsky.rotate(C, A, B, phi), declared without rho: rho = |CA| */
+    int n = a[0].n, rotate = pcl_nvalues(L) == 4;
+    double m[PC_MAXDIM], rho = rotate ? pc_dist(n, a[0].v, a[1].v) : a[3].x;
+    CHECK(pc_k_polar(n, a[0].v, a[1].v, a[2].v, rho, a[rotate ? 3 : 4].x, m));
+    return pcl_push_results(L, n, "p", m);
+}
+
+PCL_BODY(k_moving_simplex, a) {
+    int st;
+    char why[200];
+    pc_surface *s = pc_k_moving_simplex(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st);
+    if (!s && pc_k_moving_simplex_why(st, a[0].obj, a[1].obj, a[2].obj, a[3].obj, why, sizeof why))
+        return pcl_fail(L, "%s", why);
+    return pcl_push_made_surface(L, s, &st, "konopatsky.moving_simplex");
+}
+
+/* The book's printed coordinates of a Bezier (rational or not) or B-spline curve's first piece */
+PCL_BODY(k_equation, a) {
+    const pc_curve *c = a[0].obj;
+    for (int x = 0; x < c->dim; x++) {
+        char buf[2048];
+        CHECK(pc_k_curve_text(c, x, a[1].present ? a[1].s : "t", buf, sizeof buf));
+        lua_pushstring(L, buf);
+    }
+    return c->dim;
+}
+
+static const pcl_arg lambdas[] = {A_NUM("l1"), A_NUM("l2"), A_NUM("l3"), PCL_END};
+static const pcl_arg six[] = {SP("A1"), SP("A2"), SP("A3"), SP("B1"), SP("B2"), SP("B3"), PCL_END};
+static const pcl_arg o_args[] = {{.name = "polygon", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 3, .hi = 64},
+                                 SP("D1"), SP("D2"), PCL_END};
+static const pcl_arg rows_args[] = {
+    {.name = "rows", .kind = PCL_TABLE, .expect = "a list of k + 1 rows of barycentric parameters"}, PCL_END};
+static const pcl_arg lp_args[] = {SP("A1"), SP("A2"), SP("P1"), SP("P2"), SP("P3"), PCL_END};
+static const pcl_arg polar_args[] = {SP("C"), SP("A"), SP("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
+static const pcl_arg rotate_args[] = {SP("C"), SP("A"), SP("B"), A_NUM("phi"), PCL_END};
+static const pcl_arg eq_args[] = {A_CURVE("c", 0), {.name = "var", .kind = PCL_STRING, .flags = PCL_OPT, .shown = "\"t\""}, PCL_END};
+static const pcl_arg ms_args[] = {A_CURVE("NA", 0), A_CURVE("NB", 0), A_CURVE("NC", 0), A_CURVE("gen", 0), PCL_END};
+
+static const pcl_fn ch1_fns[] = {
+    PCL_FN("konopatsky.area_k", k_area_k, lambdas, "k", "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
+    PCL_FN("konopatsky.area_theorem", k_area_theorem, six, "{k, lambda, a, b, c, collinear}", "(1.2) for B1 on A1A2, B2 on A2A3, B3 on A3A1, any dimension: the signed area ratio k, lambda_i = (AiA(i+1)Bi), the proof's a = (B1A1A2) = -1/(1 + l1), b, c; collinear is corollary 1 (k = 0, Menelaus l1 l2 l3 = -1). B3 = A3 gives k = ab (corollary 2), B1 = A1 and B3 = A3 give k = -b (corollary 3)."),
+    PCL_FN("konopatsky.o_theorem", k_o_theorem, o_args, "product, ratios, B", "(1.4) The O-theorem: Bi = AiA(i+1) x D1D2 (B at infinity for a side parallel to d), ratios (AiA(i+1)Bi) and their product, (-1)^m with the closing factor (A_m A_1 B_m) the print omits."),
+    {.name = "konopatsky.simplex_ratio", .fn = k_simplex_ratio, .args = rows_args, .result = "ratio", .sig = "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio", .help = "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected)."},
+    PCL_FN("konopatsky.meet_line_plane", k_meet_line_plane, lp_args, "K, lambda, p, q", "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet."),
+    PCL_FN("konopatsky.polar", k_polar, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
+    PCL_FN("konopatsky.rotate", k_polar, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
+    PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface", "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
+    PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...", "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
+    PCL_END};
+
+/* After pcl_open_konopatsky (pcl.h, PCL_MODULES). */
+void pcl_open_konopatsky_ch1(lua_State *L) {
     lua_newtable(L);
-    pcl_register(L, -1, oneratio_fns, 0);
-    lua_newtable(L);                    /* oneratio(A, B, C) is oneratio.simplex */
-    pcl_register(L, -1, oneratio_call, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, -2, "oneratio");
-    module(L, "interp", interp_fns);
-    module(L, "approx", approx_fns);
+    pcl_register(L, -1, ch1_fns, 0);
+    lua_setfield(L, -2, "konopatsky");
 }

@@ -132,11 +132,13 @@ int pc_approx_optimal_nodes(pc_scalar_fn f, void *ud, double a, double b, int N,
     return PC_OK;
 }
 
-void pc_chebyshev_nodes(int N, double a, double b, double *x) {
+int pc_chebyshev_nodes(int N, double a, double b, double *x) {
+    if (!(b > a) || N < 1) return PC_EDOMAIN;
     for (int k = 0; k < N; k++) {
         double c = cos((2.0 * (N - 1 - k) + 1) * M_PI / (2.0 * N));   /* increasing */
         x[k] = 0.5 * (a + b) + 0.5 * (b - a) * c;
     }
+    return PC_OK;
 }
 
 int pc_lagrange_mse_x(pc_scalar_fn f, void *ud, int N, const double *x, double a, double b,

@@ -33,8 +33,9 @@ int pc_approx_rescale(double mse, int m, pc_mse_divisor d, double *out);
 int pc_approx_optimal_nodes(pc_scalar_fn f, void *ud, double a, double b, int N, int m,
                             double *nodes, double *mse, int *evals);
 
-/* Chebyshev nodes: the roots cos((2k + 1)pi/(2N)) mapped to [a, b], increasing. */
-void pc_chebyshev_nodes(int N, double a, double b, double *x);
+/* Chebyshev nodes: the roots cos((2k + 1)pi/(2N)) mapped to [a, b], increasing.  PC_EDOMAIN
+ * unless a < b and N >= 1. */
+int pc_chebyshev_nodes(int N, double a, double b, double *x);
 /* The MSE of Lagrange's polynomial through (x_j, f(x_j)) against f over M uniform x in [a, b]
  * (the measure of the book's Chebyshev comparison, §5.2). */
 int pc_lagrange_mse_x(pc_scalar_fn f, void *ud, int N, const double *x, double a, double b,

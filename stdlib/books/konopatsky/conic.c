@@ -140,6 +140,12 @@ int pc_conic_ed_circle_k(int dim, const double *a, const double *b, const double
     return PC_OK;
 }
 
+pc_curve *pc_conic_circle_arc(int dim, const double *a, const double *b, const double *c, int *status) {
+    double k;
+    int st = pc_conic_ed_circle_k(dim, a, b, c, &k);
+    return st ? fail(status, st) : pc_conic_ed(dim, a, b, c, k, status);
+}
+
 pc_curve *pc_conic_ed3(int dim, const double *a, const double *kpt, const double *b, double k,
                        int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
@@ -285,8 +291,13 @@ pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const 
     five f;
     int st = five_setup(dim, a, b, c, d, e, &f);
     if (st) return fail(status, st);
-    if (upar) five_params(&f, upar);
-    if (!(u1 > u0) || !isfinite(u0) || !isfinite(u1)) return fail(status, PC_EDOMAIN);
+    double up[5], s0, s1;
+    five_params(&f, up);
+    if (upar) memcpy(upar, up, sizeof up);
+    pc_conic_five_points_span(up, &s0, &s1);
+    if (isnan(u0)) u0 = s0;
+    if (isnan(u1)) u1 = s1;
+    if (!(u1 > u0) || !isfinite(u0) || !isfinite(u1)) return fail(status, PC_EDOMAIN2);
     double h[3][ROW(PC_MAXDIM)];
     for (int i = 0; i < 3; i++) {
         double x, y, den;
@@ -314,8 +325,8 @@ pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const 
 pc_curve *pc_conic_five_points2(int dim, const double *c, const double *a, const double *b,
                                 double p1, double p2, double q2, double q3, int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
-    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1 && p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1))
-        return fail(status, PC_EDOMAIN);
+    if (!(p1 > 0 && p1 <= 1 && q3 > 0 && q3 <= 1)) return fail(status, PC_EDOMAIN);
+    if (!(p2 > 0 && p2 < 1 && q2 > 0 && q2 < 1)) return fail(status, PC_EDOMAIN2);
     double h[3][ROW(PC_MAXDIM)], p2b = 1 - p2;
     double y0 = p2 * q2 * q3, k0 = 1 - p2b * q2;      /* Y0, K0 of (2.90) */
     for (int i = 0; i < 3; i++) {
@@ -374,7 +385,7 @@ pc_curve *pc_triples_conic(int dim, const double *a1, const double *a2, const do
     if (dim < 2 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     const double *pts[5] = {a1, a2, a3, a4, a5};
     if (!finite_pts(dim, 5, pts)) return fail(status, PC_ENONFINITE);
-    if (!(t1 > t0)) return fail(status, PC_EDOMAIN);
+    if (!(t1 > t0)) return fail(status, PC_EDOMAIN2);
     triples *s = malloc(sizeof *s);
     if (!s) return fail(status, PC_ENOMEM);
     s->dim = dim;

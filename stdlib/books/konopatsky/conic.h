@@ -43,6 +43,9 @@ int pc_conic_ed_k(int dim, const double *a, const double *b, const double *c, co
 /* (2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB| required,
  * PC_EDOMAIN otherwise): k = 1/2 + 2 h^2 / c^2, c the chord, h the height of the segment. */
 int pc_conic_ed_circle_k(int dim, const double *a, const double *b, const double *c, double *k);
+/* §2.1.8.1 The circular arc AB whose tangents meet at C: (2.97) with the k of (2.107); the
+ * statuses of pc_conic_ed_circle_k. */
+pc_curve *pc_conic_circle_arc(int dim, const double *a, const double *b, const double *c, int *status);
 /* §4.1 The arc through A (u = 0), K (u = 1/2), B (u = 1) with discriminant k (k != 0, 1): the
  * apex C = K/k' - (A + B) k/(2k') (the print has K/k, digest §2.1 ch. 3-5), then (2.97). */
 pc_curve *pc_conic_ed3(int dim, const double *a, const double *kpt, const double *b, double k,
@@ -74,11 +77,13 @@ pc_curve *pc_conic_conjugate2(int dim, const double *kpt, const double *a, const
 /* §2.1.4 The conic through five coplanar points by Pascal's hexagon A D M E B C, in the
  * corrected form (the printed S (2.68) is the meet with the line through E parallel to CB, so
  * the printed (2.74) misses B; digest §5.4): S = BE x AD, U = (A - C)u + C, V = SU x CB,
- * M = UE x VD.  The curve runs over [u0, u1] in the book's u (C at u = 0, A at u = 1); upar
+ * M = UE x VD.  The curve runs over [u0, u1] in the book's u (C at u = 0, A at u = 1; NaN: the
+ * end of pc_conic_five_points_span); upar
  * (may be NULL) gets u of A, B, C, D, E.  whole: a second piece over [u1, 2 u1 - u0] adds the
  * complementary arc (the middle control point negated; not the book's u), closing the conic.
  * PC_ECOLLINEAR if A, B, C are collinear, PC_EDOMAIN
- * if D or E is off their plane or four of the points are collinear. */
+ * if D or E is off their plane or four of the points are collinear, PC_EDOMAIN2 unless
+ * u0 < u1. */
 pc_curve *pc_conic_five_points(int dim, const double *a, const double *b, const double *c,
                                const double *d, const double *e, double u0, double u1,
                                int whole, double upar[5], int *status);
@@ -93,7 +98,8 @@ void pc_conic_five_points_span(const double upar[5], double *u0, double *u1);
 /* §2.1.5 The conic through A (t = 0) and B (t = 1) and A1 = (A - C)p1 + C,
  * A2 = (A - C)p1 p2' q2 + (B - C)p2 q2 q3 + C, A3 = (B - C)q3 + C, by the Pascal hexagon
  * A A1 A2 M A3 B, in the corrected (2.93) (digest §5.5: q2(p2 t' + p1 p2') and (t' - p1)).
- * p1 = 1 and q3 = 1 give the tangent cases (2.94)-(2.96). */
+ * p1 = 1 and q3 = 1 give the tangent cases (2.94)-(2.96).  PC_EDOMAIN unless p1 and q3 are in
+ * (0, 1], PC_EDOMAIN2 unless p2 and q2 are in (0, 1) (A2 inside the triangle C A1 A3). */
 pc_curve *pc_conic_five_points2(int dim, const double *c, const double *a, const double *b,
                                 double p1, double p2, double q2, double q3, int *status);
 
@@ -105,7 +111,8 @@ int pc_redundant_point(int dim, const double *c, const double *a, const double *
 
 /* §2.2 (b) The system of triples without a Pascal line: A = A2A3 x A4A5, C = A1 t' + A5 t,
  * B = AA1 x A2C, M = BA3 x CA4.  Corrected (digest §5.9: B uses A, not A5), the locus is a
- * conic through A1 (t = 0), A3 and A4, not through A2 and A5.  A FUNC curve over [t0, t1]. */
+ * conic through A1 (t = 0), A3 and A4, not through A2 and A5.  A FUNC curve over [t0, t1].
+ * PC_EDOMAIN if A2A3 and A4A5 do not meet, PC_EDOMAIN2 unless t0 < t1. */
 pc_curve *pc_triples_conic(int dim, const double *a1, const double *a2, const double *a3,
                            const double *a4, const double *a5, double t0, double t1,
                            int *status);

@@ -1,10 +1,12 @@
 /* Konopatsky's chapter 1: the theorems and the moving simplex (konop_ch1.h). */
 #include "konop_ch1.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "linalg.h"
 #include "point.h"
+#include "names.h"
 
 static int finite_rows(int n, int rows, const double *x) {
     for (int i = 0; i < n * rows; i++)
@@ -207,6 +209,18 @@ static int ms_eval(void *ud, double u, double v, int order, double *out) {
     out[n] = 1;
     if (order) out[2 * n + 1] = out[3 * n + 2] = 0;
     return PC_OK;
+}
+
+int pc_k_moving_simplex_why(int st, const pc_curve *na, const pc_curve *nb, const pc_curve *nc,
+                            const pc_curve *gen, char *buf, size_t n) {
+    char t0[32], t1[32];
+    if (st == PC_EDIM)
+        snprintf(buf, n, "the guides must have one dimension (%d-D, %d-D, %d-D) and the generator gen must be 2-D "
+                 "(its coordinates are p and q), got %d-D", na->dim, nb->dim, nc->dim, gen->dim);
+    else if (st == PC_EDOMAIN)
+        snprintf(buf, n, "the guides must run over one domain of u (NA over [%s, %s])",
+                 pc_num_text(na->t0, t0, sizeof t0), pc_num_text(na->t1, t1, sizeof t1));
+    return st == PC_EDIM || st == PC_EDOMAIN;
 }
 
 pc_surface *pc_k_moving_simplex(pc_curve *na, pc_curve *nb, pc_curve *nc, pc_curve *gen,

@@ -69,6 +69,11 @@ int pc_k_polar(int n, const double *c, const double *a, const double *b, double 
  * a conic of ch. 2 gives a surface of conic sections).  The surface retains the curves.
  * PC_EDIM for guides of different dimensions or a generator that is not 2-D, PC_EDOMAIN for
  * guides over different domains. */
+/* What failed in pc_k_moving_simplex with status st, as text into buf (n bytes) with the
+ * curves' dimensions (PC_EDIM) or NA's domain (PC_EDOMAIN); 0 (and nothing written) for
+ * another status. */
+int pc_k_moving_simplex_why(int st, const pc_curve *na, const pc_curve *nb, const pc_curve *nc,
+                            const pc_curve *gen, char *buf, size_t n);
 pc_surface *pc_k_moving_simplex(pc_curve *na, pc_curve *nb, pc_curve *nc, pc_curve *gen,
                                 int *status);
 

@@ -226,7 +226,7 @@ pc_curve *pc_kcurve(pc_kcurve_kind kind, int dim, const double *c, const double 
     if (isnan(t1)) t1 = r1;
     if (!(t1 > t0) || !isfinite(t0) || !isfinite(t1)) {
         free(k);
-        return fail(status, PC_EDOMAIN);
+        return fail(status, PC_EDOMAIN2);
     }
     /* the radial forms have no real points outside their range */
     if ((kind == PC_KC_ELLIPSE_RADIUS && (t0 < r0 - 1e-12 || t1 > r1 + 1e-12)) ||
@@ -235,7 +235,7 @@ pc_curve *pc_kcurve(pc_kcurve_kind kind, int dim, const double *c, const double 
         (kind == PC_KC_ELLIPSE_ALGEBRAIC && (t0 < -1 || t1 > 1)) ||
         (kind == PC_KC_PARABOLA_ANGLE && (t0 < 0 || t1 > r1 + 1e-12))) {
         free(k);
-        return fail(status, PC_EDOMAIN);
+        return fail(status, PC_EDOMAIN3);
     }
     int closed = (kind == PC_KC_ELLIPSE_ANGLE || kind == PC_KC_ELLIPSE_COMPRESSION ||
                   kind == PC_KC_ELLIPSE_FOCAL || kind == PC_KC_CIRCLE_RADIUS ||
@@ -301,6 +301,14 @@ int pc_ellipse_tilted_scheme(int dim, const double *a, const double *b, const do
     return PC_OK;
 }
 
+pc_curve *pc_ellipse_tilted(int dim, const double *a, const double *b, const double *c, double theta,
+                            double m, double n, double *out, int *status) {
+    double *p = out, *q = out + dim, *k = out + 2 * dim, *arot = k + dim + 1;
+    int st = pc_ellipse_tilted_axes(dim, a, b, c, theta, m, n, p, q);
+    if (!st) st = pc_ellipse_tilted_scheme(dim, a, b, c, theta, k, arot, arot + dim);
+    return st ? fail(status, st) : pc_kcurve(PC_KC_ELLIPSE_ANGLE, dim, c, p, q, NULL, 0, NAN, NAN, status);
+}
+
 /* ---- §2.6 the cubic of two cones ------------------------------------------------------------ */
 
 typedef struct {
@@ -344,7 +352,9 @@ pc_curve *pc_cubic_cones(int dim, const double *a, const double *b, const double
                          const double *d, double fp, double fq, double n, int *status) {
     if (dim < 3 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     if (!isfinite(fp) || !isfinite(fq) || !isfinite(n)) return fail(status, PC_ENONFINITE);
-    if (!(fp > 0 && fp < 1 && fq > 0 && fq < 1) || n == 0 || n == 1) return fail(status, PC_EDOMAIN);
+    if (!(fp > 0 && fp < 1)) return fail(status, PC_EDOMAIN);
+    if (!(fq > 0 && fq < 1)) return fail(status, PC_EDOMAIN2);
+    if (n == 0 || n == 1) return fail(status, PC_EDOMAIN3);
     cones *s = malloc(sizeof *s);
     if (!s) return fail(status, PC_ENOMEM);
     s->dim = dim, s->fp = fp, s->fq = fq;

@@ -35,7 +35,8 @@ typedef enum {
 /* The curve of `kind` in the simplex CAB (Cartesian points of dim), with par[0..npar-1] as the
  * kind says, over [t0, t1]; t0 and t1 NaN: the book's range (pc_kcurve_range).  PC_ECOLLINEAR
  * for a flat triangle, PC_EDOMAIN for parameters outside the book's conditions (a <= b for
- * the radial ellipse, delta not in (0, pi), a range the formula does not cover, ...). */
+ * the radial ellipse, delta not in (0, pi), ...), PC_EDOMAIN2 unless t0 < t1 (both finite),
+ * PC_EDOMAIN3 for a range beyond the form's real points (pc_kcurve_range). */
 pc_curve *pc_kcurve(pc_kcurve_kind kind, int dim, const double *c, const double *a,
                     const double *b, const double *par, int npar, double t0, double t1,
                     int *status);
@@ -56,12 +57,17 @@ int pc_ellipse_tilted_axes(int dim, const double *a, const double *b, const doub
  * factor c, the printed rotated A has (C - A) for (A - C). */
 int pc_ellipse_tilted_scheme(int dim, const double *a, const double *b, const double *c,
                              double theta, double *k, double *arot, double *tau);
+/* The whole construction: the ellipse (PC_KC_ELLIPSE_ANGLE in the simplex C P Q), and into out
+ * P, Q (dim each), K (dim + 1), the rotated A (dim) and tau; the statuses of the two above. */
+pc_curve *pc_ellipse_tilted(int dim, const double *a, const double *b, const double *c, double theta,
+                            double m, double n, double *out, int *status);
 
 /* §2.6 The cubic as the meet of two quadric cones over the arcs APB (f_P) and AQB (f_Q) of
  * (2.97) in the plane ABC, with vertices D and N = (D - A)n + A: M = DP x NQ with Q at
  * v = f_P f_Q' u/(f_P f_Q' u + f_Q f_P' u') (2.148).  3-D or more; u in [0, 1].  The printed
  * z_Q has f_Q^2 for f_Q'^2 (digest §5.13); the line meet replaces the per-axis quotient
- * (2.159). */
+ * (2.159).  PC_EDIM below 3-D, PC_EDOMAIN unless 0 < f_P < 1, PC_EDOMAIN2 unless 0 < f_Q < 1,
+ * PC_EDOMAIN3 for n = 0 or 1, PC_ECOLLINEAR unless ABCD is a tetrahedron. */
 pc_curve *pc_cubic_cones(int dim, const double *a, const double *b, const double *c,
                          const double *d, double fp, double fq, double n, int *status);
 

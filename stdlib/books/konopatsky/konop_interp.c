@@ -1,6 +1,7 @@
 /* Interpolation curves of Konopatsky's chapter 4 (konop_interp.h; digest konopatsky_ch3_5.md
  * §2). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "konop_interp.h"
@@ -25,6 +26,7 @@ int pc_lagrange_weights(int n, const double *params, double t, double *w) {
             p *= (t - tm) / (tj - tm);
         }
         w[j] = p;
+        if (!isfinite(p)) return PC_ENONFINITE;   /* a t far outside the nodes overflows the products */
     }
     return PC_OK;
 }
@@ -124,6 +126,15 @@ int pc_interp_adaptive_params(int dim, int n, const double *pts, int axis, doubl
     return PC_OK;
 }
 
+int pc_interp_adaptive_why(int st, int axis, char *buf, size_t n) {
+    if (st == PC_ECOINCIDENT)
+        snprintf(buf, n, "the first and last nodes have the same coordinate on axis %d", axis + 1);
+    else if (st == PC_EDOMAIN)
+        snprintf(buf, n, "the nodes must advance along axis %d in their order (the book's limitation: the order of "
+                 "the nodes must be the order of the parameters)", axis + 1);
+    return st == PC_ECOINCIDENT || st == PC_EDOMAIN;
+}
+
 /* ---- the basis engine ------------------------------------------------------------------------- */
 
 typedef struct {
@@ -198,7 +209,11 @@ pc_curve *pc_interp_basis(int dim, int n, const double *pts, const double *param
                           double t1, int *status) {
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     if (n < 1 || n > 16) return fail(status, PC_EDOMAIN);
-    if (!(t1 > t0)) return fail(status, PC_EDOMAIN);
+    if (isnan(t0) && isnan(t1)) {                     /* the nodes' range */
+        t0 = t1 = params[0];
+        for (int i = 1; i < n; i++) t0 = fmin(t0, params[i]), t1 = fmax(t1, params[i]);
+    }
+    if (!(t1 > t0)) return fail(status, PC_EDOMAIN2);
     basis *s = calloc(1, sizeof *s);
     if (!s) return fail(status, PC_ENOMEM);
     s->dim = dim, s->n = n, s->g = g, s->ud = ud;
@@ -293,6 +308,11 @@ int pc_interp_prototype_weights(pc_proto_kind kind, int n, const double *k, doub
     if (!st) st = collocation_inverse(proto_g, &p, n, params, ginv);
     if (!st) st = basis_phi(proto_g, &p, ginv, n, t, w);
     return st;
+}
+
+void pc_interp_prototype_shape(pc_proto_kind kind, int *n, int *nk) {
+    *n = kind == PC_PROTO_DESARGUES || kind == PC_PROTO_RATIONAL ? 4 : 3;
+    *nk = kind == PC_PROTO_EXP ? 3 : kind == PC_PROTO_EXP_AFFINE ? 2 : 0;
 }
 
 pc_curve *pc_interp_prototype(pc_proto_kind kind, int dim, int n, const double *pts,

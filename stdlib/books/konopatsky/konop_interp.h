@@ -6,12 +6,14 @@
 #ifndef PC_KONOP_INTERP_H
 #define PC_KONOP_INTERP_H
 
+#include <stddef.h>
+
 #include "curve.h"
 
 /* The weights phi_j(t) of the interpolation curve through n nodes at the distinct params
  * (NULL: uniform j/(n-1)), i.e. M(t) = sum M_j phi_j(t); they sum to 1 (§4.2-4.7: the book's
  * (4.10), (4.16), (4.21), (4.25), (4.28) are these for n = 3..7).  PC_ECOINCIDENT for
- * repeated params. */
+ * repeated params, PC_ENONFINITE for a t so far outside the nodes that a weight overflows. */
 int pc_lagrange_weights(int n, const double *params, double t, double *w);
 /* The same weights as polynomials in t, as the Maple program of §4.8 prints them (collect(e,
  * SM)): coef row j (n numbers) holds phi_j = sum_i coef[j n + i] t^i.  Errors as above. */
@@ -32,13 +34,17 @@ pc_curve *pc_interp_arc_u(int dim, int p, const double *pts, const double *param
  * the nodes.  PC_ECOINCIDENT if x_1 = x_n, PC_EDOMAIN if v does not increase (the book's
  * limitation: the order of the nodes must be the order of the parameters). */
 int pc_interp_adaptive_params(int dim, int n, const double *pts, int axis, double *v);
+/* What failed in pc_interp_adaptive_params with status st on that axis, as text into buf (n
+ * bytes); 0 (nothing written) for a status it does not explain. */
+int pc_interp_adaptive_why(int st, int axis, char *buf, size_t n);
 
 /* §4.11 The simplex-replacement engine on any prototype: basis functions g_1..g_n (g(ud, t, n,
  * out) fills n values, non-zero status fails), nodes M_j at params t_j; the collocation matrix
  * G_ji = g_i(t_j) is inverted once and M(t) = sum_j M_j phi_j(t), phi_j = sum_i g_i (G^-1)_ij.
  * The curve is evaluated coordinatewise as the book does, so a basis whose phi do not sum to 1
- * (the exponential (4.39)) depends on the origin.  Domain [t0, t1].  PC_ESINGULAR if the
- * collocation matrix is singular. */
+ * (the exponential (4.39)) depends on the origin.  Domain [t0, t1] (both NaN: from the least
+ * to the greatest param).  PC_ESINGULAR if the collocation matrix is singular, PC_EDOMAIN2
+ * unless t0 < t1. */
 typedef int (*pc_basis_fn)(void *ud, double t, int n, double *g);
 pc_curve *pc_interp_basis(int dim, int n, const double *pts, const double *params,
                           pc_basis_fn g, void (*fn_free)(void *ud), void *ud, double t0,
@@ -59,6 +65,8 @@ typedef enum {
     PC_PROTO_EXP_AFFINE,  /* the constrained variant: e^(k1 t), e^(k2 t), 1 - both */
     PC_PROTO_TRIG         /* (4.40) (A1 - A2)cos t + (A3 - A2)sin t + A2, nodes 0, pi/2, pi */
 } pc_proto_kind;
+/* How many nodes (points) the prototype takes, and how many exponents k (0 for most). */
+void pc_interp_prototype_shape(pc_proto_kind kind, int *n, int *nk);
 /* The prototype's interpolation curve through its nodes (4 or 3 points, as above) at the
  * book's params, over [t0, t1] (NaN: the params' range); k: the exponents (2 or 3). */
 pc_curve *pc_interp_prototype(pc_proto_kind kind, int dim, int n, const double *pts,

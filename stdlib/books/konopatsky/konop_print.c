@@ -5,6 +5,7 @@
 #include "status.h"
 #include "point.h"
 #include "konop_print.h"
+#include "curve.h"
 
 typedef struct { char *p; size_t left; int over; } out;
 
@@ -71,4 +72,10 @@ int pc_k_coordinate_text(const double *coef, int dim, int deg, int axis, const c
         put(&o, ")");
     }
     return o.over ? PC_ENOMEM : PC_OK;
+}
+
+int pc_k_curve_text(const pc_curve *c, int axis, const char *var, char *buf, size_t n) {
+    double coef[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
+    int deg, st = pc_curve_monomial(c, 0, coef, &deg);
+    return st ? st : pc_k_coordinate_text(coef, c->dim, deg, axis, var, buf, n);
 }

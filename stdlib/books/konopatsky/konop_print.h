@@ -14,5 +14,9 @@
  * when buf is too short. */
 int pc_k_coordinate_text(const double *coef, int dim, int deg, int axis, const char *var,
                          char *buf, size_t n);
+/* The same of coordinate `axis` of the curve c's first piece (pc_curve_monomial): PC_EDOMAIN
+ * for a function curve, which has no power-basis form. */
+struct pc_curve;
+int pc_k_curve_text(const struct pc_curve *c, int axis, const char *var, char *buf, size_t n);
 
 #endif

@@ -203,8 +203,8 @@ int pc_conic_focal_point(int dim, const double *c, const double *a, const double
     if (!finite_pt(dim, a) || !finite_pt(dim, b) || !finite_pt(dim, c) || !isfinite(phi)) return PC_ENONFINITE;
     double la = pc_dist(dim, c, a), lb = pc_dist(dim, c, b);
     if (!(la > 0) || !(lb > 0)) return PC_ECOLLINEAR;
-    if (fabs(pc_sigma(dim, c, a, b)) > 1e-9 * la * lb) return PC_EDOMAIN;
-    if (!hyperbola && !(la > lb)) return PC_EDOMAIN;
+    if (fabs(pc_sigma(dim, c, a, b)) > 1e-9 * la * lb || (!hyperbola && !(la > lb)))
+        return hyperbola ? PC_EDOMAIN : PC_EDOMAIN2;
     double cf = hyperbola ? hypot(la, lb) : sqrt(la * la - lb * lb), e = cf / la;
     double den = la * (1 - e * cos(phi));
     if (!(fabs(den) > 1e-14 * la)) return PC_EPOLE;

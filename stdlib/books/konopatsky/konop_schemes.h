@@ -63,8 +63,9 @@ int pc_conic_ceva_scheme(int dim, const double *a1, const double *a2, const doub
  *   ellipse:   pa = b(b cos phi - c sin phi)/(a(1 - e cos phi)(a + c)),
  *   hyperbola: pa = b(b cos phi + c sin phi)/(a(1 - e cos phi)(a - c))  (the print: - c sin, c - a),
  *   pb = b sin phi/(a(1 - e cos phi)); the same points as (2.18), (2.56).  out: M then F (2 rows
- * of dim), pab: pa, pb.  PC_EDOMAIN unless CA, CB are perpendicular (and a > b for the
- * ellipse: the foci on CA), PC_EPOLE where 1 - e cos phi = 0 (an asymptote's direction). */
+ * of dim), pab: pa, pb.  Unless CA, CB are perpendicular (and a > b for the ellipse: the foci
+ * on CA) PC_EDOMAIN for the hyperbola, PC_EDOMAIN2 for the ellipse; PC_EPOLE where
+ * 1 - e cos phi = 0 (an asymptote's direction). */
 int pc_conic_focal_point(int dim, const double *c, const double *a, const double *b,
                          int hyperbola, double phi, double *out, double pab[2]);
 

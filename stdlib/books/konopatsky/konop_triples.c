@@ -15,7 +15,8 @@ int pc_triples_plan_make(int npts, int ntri, const int (*tri)[3], const unsigned
     for (int j = 0; j < ntri; j++)
         for (int k = 0; k < 3; k++)
             if (tri[j][k] < 0 || tri[j][k] >= npts) return PC_EDOMAIN;
-    if (!known[cur_a] || !known[cur_b] || cur_a == cur_b || known[cur]) return PC_EDOMAIN;
+    if (!known[cur_a] || !known[cur_b] || cur_a == cur_b) return PC_EDOMAIN2;
+    if (known[cur]) return PC_EDOMAIN;
     unsigned char have[PC_TRIPLES_MAXPTS];
     memcpy(have, known, (size_t)npts);
     have[cur] = 1;
@@ -92,8 +93,8 @@ static int triples_fn(void *ud, double t, int order, double *out) {
 
 pc_curve *pc_triples_curve(const pc_triples_plan *plan, int dim, const double *pts, double t0,
                            double t1, int *status) {
-    if (dim < 2 || dim > PC_MAXDIM) {
-        *status = PC_EDIM;
+    if (dim < 2 || dim > PC_MAXDIM || !(t1 > t0)) {
+        *status = dim < 2 || dim > PC_MAXDIM ? PC_EDIM : PC_EDOMAIN3;
         return NULL;
     }
     triples_ud *u = malloc(sizeof *u);

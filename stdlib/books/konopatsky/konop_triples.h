@@ -25,13 +25,15 @@ typedef struct {
 /* The construction of `result` from the triples tri (ntri rows of 3 point indices < npts) with
  * the points known[i] != 0 given and cur on the line cur_a cur_b (both known).  Each step meets
  * two lines of the table that share only the new point.  PC_EDOMAIN when the table does not
- * determine result this way (or names a point outside npts), PC_EDIM for sizes beyond the limits. */
+ * determine result this way (or names a point outside npts), PC_EDOMAIN2 unless cur_a and cur_b
+ * are two known points, PC_EDIM for sizes beyond the limits. */
 int pc_triples_plan_make(int npts, int ntri, const int (*tri)[3], const unsigned char *known,
                          int cur, int cur_a, int cur_b, int result, pc_triples_plan *plan);
 
 /* The curve of the plan's result over [t0, t1] for the known points' coordinates pts (npts rows
  * of dim; rows of unknown points ignored): a FUNC curve (derivatives by differences); where a
- * meet is undefined at some t the evaluation fails there.  The curve copies the data. */
+ * meet is undefined at some t the evaluation fails there.  The curve copies the data.
+ * PC_EDOMAIN3 unless t0 < t1. */
 pc_curve *pc_triples_curve(const pc_triples_plan *plan, int dim, const double *pts, double t0,
                            double t1, int *status);
 /* One evaluation: every point of the plan at t (npts rows of dim + 1, homogeneous; the known

@@ -133,7 +133,9 @@ static pc_curve *new_blend(int mode, int dim, const double *a, const double *b, 
     if (dim < 1 || dim > PC_MAXDIM) return fail(status, PC_EDIM);
     const double *pts[3] = {a, b, c};
     if (!finite_rows(dim, 3, pts) || !isfinite(kp) || !isfinite(kq)) return fail(status, PC_ENONFINITE);
-    if (kp == 0 || kq == 0 || (mode == 0 && kp == kq)) return fail(status, PC_EDOMAIN);
+    if (kp == 0) return fail(status, PC_EDOMAIN);
+    if (kq == 0) return fail(status, PC_EDOMAIN2);
+    if (mode == 0 && kp == kq) return fail(status, PC_EDOMAIN3);
     blend *s = malloc(sizeof *s);
     if (!s) return fail(status, PC_ENOMEM);
     s->dim = dim, s->mode = mode, s->kp = kp, s->kq = kq, s->f = f, s->ud = ud, s->ffree = NULL;
@@ -184,7 +186,7 @@ pc_curve *pc_oneratio_bezier3(int dim, const double *a, const double *c1, const 
 
 pc_curve *pc_oneratio_closed(int dim, const double *a, const double *b, const double *c,
                              double kp, double kq, int scheme, int *status) {
-    if (scheme != 1 && scheme != 2) return fail(status, PC_EDOMAIN);
+    if (scheme != 1 && scheme != 2) return fail(status, PC_EARG);
     return new_blend(scheme, dim, a, b, c, kp, kq, NULL, NULL, NULL, status);
 }
 

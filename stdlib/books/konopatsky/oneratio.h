@@ -31,7 +31,8 @@ typedef double (*pc_blend_fn)(void *ud, double v);
 /* §3.4 Double contact: P and Q the arcs (2.97) of A, B, C with discriminants kp != kq, and
  * M = P (1 - f(v)) + Q f(v), v in [0, 1].  f NULL: f(v) = v (the linear case of [14]).
  * Tangent to CA at A and to CB at B for any bounded f.  A pole of P or Q (k < 0) is a point
- * at infinity of M (weight 0).  PC_EDOMAIN for kp = kq or a zero k. */
+ * at infinity of M (weight 0).  PC_EDOMAIN for kp = 0, PC_EDOMAIN2 for kq = 0, PC_EDOMAIN3 for
+ * kp = kq. */
 pc_curve *pc_oneratio_double_contact(int dim, const double *a, const double *b,
                                      const double *c, double kp, double kq, pc_blend_fn f,
                                      void (*fn_free)(void *ud), void *ud, int *status);
@@ -45,7 +46,7 @@ pc_curve *pc_oneratio_bezier3(int dim, const double *a, const double *c1, const 
 /* §3.5 Closed curves: M = P u' + Q u with P the arc (2.97) kP run from B to A and Q run
  * A -> B (scheme 1) or Q = (C - A)kQ u'^2/d + (B - A)kQ u^2/d + A run C -> B (scheme 2, the
  * printed Q with u^2 and u'^2 exchanged as the printed final M demands; digest §1.5).
- * M(0) = M(1) = B. */
+ * M(0) = M(1) = B.  PC_EDOMAIN for kP = 0, PC_EDOMAIN2 for kQ = 0, PC_EARG for another scheme. */
 pc_curve *pc_oneratio_closed(int dim, const double *a, const double *b, const double *c,
                              double kp, double kq, int scheme, int *status);
 

@@ -131,11 +131,12 @@ static void test_table(void **state) {
 static void test_chebyshev(void **state) {
     (void)state;
     double x[23], mse;
-    pc_chebyshev_nodes(23, -1, 1, x);
+    assert_int_equal(pc_chebyshev_nodes(23, -1, 1, x), PC_OK);
     assert_true(x[0] < x[22]);
     NEAR(x[22], cos(M_PI / 46), 1e-15);
     assert_int_equal(pc_lagrange_mse_x(runge, NULL, 23, x, -1, 1, 101, &mse), PC_OK);
     NEAR(mse, 2.53e-5, 0.01e-5);          /* book 0.0000253 */
+    assert_int_equal(pc_chebyshev_nodes(2, 1, 1, x), PC_EDOMAIN);   /* an empty interval */
     pc_chebyshev_nodes(6, -1, 1, x);
     pc_lagrange_mse_x(runge, NULL, 6, x, -1, 1, 101, &mse);
     NEAR(mse, 0.0314, 0.0001);            /* the number the book leaves blank */

@@ -121,8 +121,13 @@ static void test_ed_circle(void **state) {
         NEAR(hypot(m[0], m[1]), 1, 1e-12);
     }
     pc_curve_release(c);
+    c = pc_conic_circle_arc(2, A, B, C, &st);       /* the same arc in one call */
+    near_pt(c, 0.5, 0.707107, 0.707107, 1e-6);
+    pc_curve_release(c);
     double C2[2] = {2, 1};
     assert_int_equal(pc_conic_ed_circle_k(2, A, B, C2, &k), PC_EDOMAIN);
+    assert_null(pc_conic_circle_arc(2, A, B, C2, &st));
+    assert_int_equal(st, PC_EDOMAIN);
 }
 
 /* §4.1: the arc through A, K, B; u = 0.3 -> (18/19, 30/19) */
@@ -326,6 +331,18 @@ static void test_tilted_scheme(void **state) {
         NEAR((K[0] - C[0]) * (P[1] - C[1]) - (K[1] - C[1]) * (P[0] - C[0]), 0, 1e-12);
         NEAR(tau, M_PI - (atan2(3, 4) + atan2(1, 5)) - tv[i][0], 1e-12);   /* alpha = angle BAC */
     }
+    double o[2 + 2 + 3 + 2 + 1], m[2];
+    int st;
+    pc_curve *e = pc_ellipse_tilted(2, A, B, C, M_PI / 4, 2, 1, o, &st);   /* all in one: P, Q, K, Arot, tau */
+    NEAR(o[0], 5.282843, 1e-6);
+    NEAR(o[3], -1.141421, 1e-6);
+    NEAR(o[4], 5.76, 1e-12);
+    NEAR(o[9], M_PI - (atan2(3, 4) + atan2(1, 5)) - M_PI / 4, 1e-12);
+    at(e, M_PI / 4, m);
+    NEAR(m[0], 6.011929, 1e-6);
+    pc_curve_release(e);
+    assert_null(pc_ellipse_tilted(2, A, B, C, M_PI / 4, 0, 1, o, &st));
+    assert_int_equal(st, PC_EDOMAIN);
     assert_int_equal(pc_ellipse_tilted_scheme(2, A, B, C, 0, K, Ar, &tau), PC_OK);
     NEAR(K[2], 0, 0);
     NEAR(K[0], 0.8, 1e-12);
@@ -361,6 +378,9 @@ static void test_hyperbola(void **state) {
     near_pt(c, 6, 5.262348, 2.882307, 1e-6);
     pc_curve_release(c);
     assert_null(pc_kcurve(PC_KC_HYPERBOLA_RADIUS, 2, C, A, B, NULL, 0, 2, 8, &st));
+    assert_int_equal(st, PC_EDOMAIN3);   /* rho = 2 < a = 3: no real point */
+    assert_null(pc_kcurve(PC_KC_HYPERBOLA_RADIUS, 2, C, A, B, NULL, 0, 8, 3, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* an empty range */
 
     /* (2.56): the branch through A by default; the book's printed range is the other one */
     c = pc_kcurve(PC_KC_HYPERBOLA_FOCAL, 2, C, A, B, NULL, 0, NAN, NAN, &st);
@@ -433,6 +453,12 @@ static void test_five_points(void **state) {
     pc_conic_five_points_span(far, &u0, &u1);  /* no range end at infinity (|u| >= 1e6) */
     NEAR(u0, -0.5, 0);
     NEAR(u1, 1, 0);
+    pc_curve *dflt = pc_conic_five_points(2, A, B, C, D, E, NAN, NAN, 0, NULL, &st);   /* the span */
+    assert_true(dflt->t0 == 0 && fabs(dflt->t1 - 2.557692308) < 1e-9);
+    pc_curve_release(dflt);
+    dflt = pc_conic_five_points(2, A, B, C, D, E, NAN, 2, 0, NULL, &st);
+    assert_true(dflt->t0 == 0 && dflt->t1 == 2);
+    pc_curve_release(dflt);
     near_pt(c, 0.25, 0.3, 0.066667, 1e-6);
     near_pt(c, 0.5, 0.531496, 0.094488, 1e-6);
     near_pt(c, 0.75, 0.743119, 0.082569, 1e-6);
@@ -466,6 +492,8 @@ static void test_five_points(void **state) {
         NEAR(conic_val(co, mid) / (1 + mid[0] * mid[0] + mid[1] * mid[1]), 0, 1e-9);
     }
     pc_curve_release(c);
+    assert_null(pc_conic_five_points(2, A, B, C, D, E, 1, 0.5, 0, NULL, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* u1 < u0 */
     double F[2] = {0.5, 0.5};    /* on AB: A, B, F collinear */
     assert_null(pc_conic_five_points(2, A, B, C, D, F, 0, 1, 0, NULL, &st));
     assert_int_equal(st, PC_EDOMAIN);
@@ -510,6 +538,10 @@ static void test_five_points2(void **state) {
         near_pt(c, t, qb * qb * (1 - t) * (1 - t) / Dl, p2 * (1 - p2) * q2 * q2 * t * t / Dl, 1e-12);
     }
     pc_curve_release(c);
+    assert_null(pc_conic_five_points2(2, C1, A1, B1, 1.5, p2, q2, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN);    /* p1 outside (0, 1] */
+    assert_null(pc_conic_five_points2(2, C1, A1, B1, 1, p2, 1, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* q2 = 1: A2 on the side */
 }
 
 /* 2.2 (b), 2.3, 2.4 */
@@ -533,6 +565,8 @@ static void test_triples_redundant_reparam(void **state) {
     assert_true(fabs(conic_val(co, A2)) > 1e-3);
     assert_true(fabs(conic_val(co, A5)) > 1e-3);
     pc_curve_release(c);
+    assert_null(pc_triples_conic(2, A1, A2, A3, A4, A5, 1, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* an empty range */
 
     /* (2.120) and (2.121) = the ED arc k = 2/3 */
     double C[2] = {0, 0}, A[2] = {1, 0}, B[2] = {0, 1}, K[2];
@@ -618,6 +652,12 @@ static void test_sinusoid_cycloid_cones_contour(void **state) {
     pc_curve_release(q);
     assert_null(pc_cubic_cones(2, A, B, C, O, 0.3, 0.8, 2, &st));
     assert_int_equal(st, PC_EDIM);
+    assert_null(pc_cubic_cones(3, E1, E2, E3, O, 1, 0.8, 2, &st));
+    assert_int_equal(st, PC_EDOMAIN);    /* fP outside (0, 1) */
+    assert_null(pc_cubic_cones(3, E1, E2, E3, O, 0.3, 0, 2, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* fQ outside (0, 1) */
+    assert_null(pc_cubic_cones(3, E1, E2, E3, O, 0.3, 0.8, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN3);   /* n = 1: N = D */
 }
 
 static double uv_t_t2(void *ud, int which, double t) {

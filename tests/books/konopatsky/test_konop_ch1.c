@@ -10,6 +10,7 @@
 #include <math.h>
 #include "konop_ch1.h"
 #include "point.h"
+#include <string.h>
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -257,9 +258,16 @@ static void test_moving_simplex(void **state) {
     pc_surface_release(s);
     assert_null(pc_k_moving_simplex(na, nb, nc, na, &st));
     assert_int_equal(st, PC_EDIM);
+    char why[200];
+    assert_true(pc_k_moving_simplex_why(st, na, nb, nc, na, why, sizeof why));
+    assert_non_null(strstr(why, "one dimension (3-D, 3-D, 3-D) and the generator gen must be 2-D"));
+    assert_non_null(strstr(why, "got 3-D"));
     pc_curve *half = pc_curve_sub(nc, 0, 0.5, &st);
-    assert_null(pc_k_moving_simplex(na, nb, half, gen, &st));
+    assert_null(pc_k_moving_simplex(na, half, nc, gen, &st));
     assert_int_equal(st, PC_EDOMAIN);
+    assert_true(pc_k_moving_simplex_why(st, na, half, nc, gen, why, sizeof why));
+    assert_string_equal(why, "the guides must run over one domain of u (NA over [0, 1])");
+    assert_false(pc_k_moving_simplex_why(PC_ENOMEM, na, nb, nc, gen, why, sizeof why));
     pc_curve_release(half);
     pc_curve_release(na); pc_curve_release(nb); pc_curve_release(nc); pc_curve_release(gen);
 }

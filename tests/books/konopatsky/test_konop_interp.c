@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
+#include <string.h>
 #include "konop_interp.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
@@ -52,6 +53,7 @@ static void test_weights(void **state) {
                + 22.7 * tb * tb * pow(t, 4) - 8.7 * tb * pow(t, 5) + pow(t, 6), 1e-13);
     double dup[3] = {0, 0.5, 0.5};
     assert_int_equal(pc_lagrange_weights(3, dup, 0.2, w), PC_ECOINCIDENT);
+    assert_int_equal(pc_lagrange_weights(7, NULL, 1e300, w), PC_ENONFINITE);   /* the products overflow */
 }
 
 /* the Bezier control points of the interpolation curves: (4.9), §4.4, §4.6, §4.7 */
@@ -147,6 +149,14 @@ static void test_adaptive(void **state) {
     pc_curve_release(ada);
     double bad[6] = {0, 0, 2, 0, 1, 0};
     assert_int_equal(pc_interp_adaptive_params(2, 3, bad, 0, v), PC_EDOMAIN);
+    char why[200];
+    assert_true(pc_interp_adaptive_why(PC_EDOMAIN, 0, why, sizeof why));
+    assert_non_null(strstr(why, "advance along axis 1 in their order"));
+    double same[6] = {0, 0, 2, 0, 0, 1};
+    assert_int_equal(pc_interp_adaptive_params(2, 3, same, 0, v), PC_ECOINCIDENT);
+    assert_true(pc_interp_adaptive_why(PC_ECOINCIDENT, 0, why, sizeof why));
+    assert_string_equal(why, "the first and last nodes have the same coordinate on axis 1");
+    assert_false(pc_interp_adaptive_why(PC_OK, 0, why, sizeof why));
 }
 
 /* §4.11 the prototypes against the book's closed forms */
@@ -249,12 +259,52 @@ static void test_membership(void **state) {
     assert_int_equal(pc_interp_basis_membership(3, half, bern_g, NULL, 0, 1, 1, &dev), PC_EDOMAIN);
 }
 
+static int line_basis(void *ud, double t, int n, double *g) {   /* 1, t */
+    (void)ud;
+    (void)n;
+    g[0] = 1, g[1] = t;
+    return PC_OK;
+}
+
+/* how many nodes and exponents each prototype takes */
+static void test_prototype_shape(void **state) {
+    (void)state;
+    int n, nk;
+    pc_interp_prototype_shape(PC_PROTO_DESARGUES, &n, &nk);
+    assert_true(n == 4 && nk == 0);
+    pc_interp_prototype_shape(PC_PROTO_RATIONAL, &n, &nk);
+    assert_true(n == 4 && nk == 0);
+    pc_interp_prototype_shape(PC_PROTO_EXP, &n, &nk);
+    assert_true(n == 3 && nk == 3);
+    pc_interp_prototype_shape(PC_PROTO_EXP_AFFINE, &n, &nk);
+    assert_true(n == 3 && nk == 2);
+    pc_interp_prototype_shape(PC_PROTO_TRIG, &n, &nk);
+    assert_true(n == 3 && nk == 0);
+}
+
+/* the engine's domain: the nodes' range by default, and an empty range refused */
+static void test_basis_range(void **state) {
+    (void)state;
+    const double pts[4] = {0, 0, 2, 4}, params[2] = {0.75, 0.25};
+    int st;
+    pc_curve *c = pc_interp_basis(2, 2, pts, params, line_basis, NULL, NULL, NAN, NAN, &st);
+    assert_non_null(c);
+    assert_true(c->t0 == 0.25 && c->t1 == 0.75);
+    double m[2];
+    assert_int_equal(pc_curve_eval(c, 0.5, m), PC_OK);   /* halfway between the nodes */
+    assert_true(fabs(m[0] - 1) < 1e-14 && fabs(m[1] - 2) < 1e-14);
+    pc_curve_release(c);
+    assert_null(pc_interp_basis(2, 2, pts, params, line_basis, NULL, NULL, 0.5, 0.5, &st));
+    assert_int_equal(st, PC_EDOMAIN2);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_weights),    cmocka_unit_test(test_controls),
         cmocka_unit_test(test_arc),        cmocka_unit_test(test_adaptive),
         cmocka_unit_test(test_prototypes), cmocka_unit_test(test_rational22),
-        cmocka_unit_test(test_membership),
+        cmocka_unit_test(test_membership), cmocka_unit_test(test_basis_range),
+        cmocka_unit_test(test_prototype_shape),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

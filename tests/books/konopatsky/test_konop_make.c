@@ -9,6 +9,7 @@
 #include "conic.h"
 #include "oneratio.h"
 #include "konop_schemes.h"
+#include "konop_curves.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -43,6 +44,24 @@ static void test_curves(void **state) {
     same(pc_konop_make(PC_KM_BEZIER3, 2, PTS, NULL, &st), pc_oneratio_bezier3(2, a, b, c, d, &st));
     same(pc_konop_make(PC_KM_SMOOTH, 2, PTS, (double[]){3}, &st), pc_oneratio_smooth(2, a, b, c, 3, &st));
     same(pc_konop_make(PC_KM_DESARGUES, 2, PTS, NULL, &st), pc_oneratio_desargues(2, a, b, c, d, &st));
+    same(pc_konop_make(PC_KM_CLOSED, 2, PTS, (double[]){0.8, 0.5, 2}, &st),
+         pc_oneratio_closed(2, a, b, c, 0.8, 0.5, 2, &st));
+    const double five[10] = {3.0, 0.2, 1.2, 0.9, 2.0, 1.8, 0.2, 1.3, 0.5, 2.7}, *f = five;
+    same(pc_konop_make(PC_KM_TRIPLES, 2, five, (double[]){0.1, 0.9}, &st),
+         pc_triples_conic(2, f, f + 2, f + 4, f + 6, f + 8, 0.1, 0.9, &st));
+    /* the cubic of two cones over the tetrahedron (0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1) */
+    const double tet[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, *T = tet;
+    pc_curve *q = pc_konop_make(PC_KM_CONES, 3, tet, (double[]){0.3, 0.8, 2}, &st);
+    pc_curve *qref = pc_cubic_cones(3, T, T + 3, T + 6, T + 9, 0.3, 0.8, 2, &st);
+    double mq[3], mr[3];
+    assert_int_equal(pc_curve_eval(q, 0.25, mq), PC_OK);
+    assert_int_equal(pc_curve_eval(qref, 0.25, mr), PC_OK);
+    for (int i = 0; i < 3; i++) NEAR(mq[i], mr[i], 0);
+    NEAR(mq[0], 0.005718, 1e-6);                                  /* test_conic's value */
+    pc_curve_release(q);
+    pc_curve_release(qref);
+    assert_int_equal(pc_konop_npoints(PC_KM_TRIPLES), 5);
+    assert_int_equal(pc_konop_kind_of("conic.cones"), PC_KM_CONES);
     /* the statuses of the constructions' own checks */
     assert_null(pc_konop_make(PC_KM_ED, 2, PTS, (double[]){0}, &st));
     assert_int_equal(st, PC_EDOMAIN);
@@ -57,20 +76,27 @@ static void test_numbers(void **state) {
     (void)state;
     /* K on the median from C = (1, 3) to T1 = (2, 0) at k = 1/4 of the way */
     double p[8] = {0, 0, 4, 0, 1, 3, 1.25, 2.25}, k;
-    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, &k), PC_OK);
+    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, NULL, &k), PC_OK);
     NEAR(k, 0.25, 1e-14);
     /* tangents from C = (2, 2) to the circle through A = (0, 0), B = (4, 0): the quarter arc,
      * k = 1/(1 + cos 45 deg) */
     double q[6] = {0, 0, 4, 0, 2, 2};
-    assert_int_equal(pc_konop_number(PC_KM_CIRCLE_K, 2, q, &k), PC_OK);
+    assert_int_equal(pc_konop_number(PC_KM_CIRCLE_K, 2, q, NULL, &k), PC_OK);
     NEAR(k, 1 / (1 + sqrt(0.5)), 1e-12);
     double ref = 0;
     k = 0;
-    assert_int_equal(pc_konop_number(PC_KM_CEVA_K, 2, p, &k), pc_conic_ceva_k(2, p, p + 2, p + 4, p + 6, &ref));
+    assert_int_equal(pc_konop_number(PC_KM_CEVA_K, 2, p, NULL, &k), pc_conic_ceva_k(2, p, p + 2, p + 4, p + 6, &ref));
     NEAR(k, ref, 0);
     p[6] = 3;   /* off the median */
-    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, &k), PC_ENOTCOLLINEAR);
-    assert_int_equal(pc_konop_number(PC_KM_ED, 2, p, &k), PC_EDOMAIN);
+    assert_int_equal(pc_konop_number(PC_KM_ED_K, 2, p, NULL, &k), PC_ENOTCOLLINEAR);
+    assert_int_equal(pc_konop_number(PC_KM_ED, 2, p, NULL, &k), PC_EDOMAIN);
+    /* the two readings of one arc: Ceva's 1/4 is the engineering discriminant's 1/2 */
+    assert_int_equal(pc_konop_number(PC_KM_CEVA_TO_ED, 0, NULL, (double[]){0.25}, &k), PC_OK);
+    NEAR(k, 0.5, 1e-15);
+    assert_int_equal(pc_konop_number(PC_KM_ED_TO_CEVA, 0, NULL, (double[]){0.5}, &k), PC_OK);
+    NEAR(k, 0.25, 1e-15);
+    assert_int_equal(pc_konop_number(PC_KM_ED_TO_CEVA, 0, NULL, (double[]){1}, &k), PC_EDOMAIN);
+    assert_int_equal(pc_konop_npoints(PC_KM_CEVA_TO_ED), 0);
 }
 
 /* the schemes by kind: their own functions' points, packed in order */
@@ -108,6 +134,13 @@ static void test_schemes(void **state) {
     NEAR(out[5], 1.8, 1e-14);
     assert_int_equal(pc_konop_scheme(PC_KS_FOCI, 2, cab, (double[]){1}, out), PC_OK);   /* hyperbola */
     NEAR(fabs(out[0]), sqrt(34), 1e-14);
+    double pab[2];
+    assert_int_equal(pc_konop_scheme(PC_KS_FOCAL, 2, cab, (double[]){0.7, 0}, out), PC_OK);
+    assert_int_equal(pc_conic_focal_point(2, cab, cab + 2, cab + 4, 0, 0.7, ref, pab), PC_OK);
+    for (int i = 0; i < 4; i++) NEAR(out[i], ref[i], 0);      /* M, F */
+    NEAR(out[4], pab[0], 0);
+    NEAR(out[5], pab[1], 0);
+    NEAR(out[2], -4, 1e-14);                                 /* F = F2 = C - (A - C)e */
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_FIVE), 5);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_DESARGUES), 4);
     assert_int_equal(pc_konop_scheme_npoints(PC_KS_CEVA), 3);
@@ -117,8 +150,26 @@ static void test_schemes(void **state) {
     for (int i = 0; i < 8 * 3; i++) NEAR(o5[i], r5[i], 0);
 }
 
+/* the kinds by the names the API gives them */
+static void test_names(void **state) {
+    (void)state;
+    assert_int_equal(pc_konop_kind_of("conic.ed"), PC_KM_ED);
+    assert_int_equal(pc_konop_kind_of("conic.ceva_k"), PC_KM_CEVA_K);
+    assert_int_equal(pc_konop_kind_of("interp.conic"), PC_KM_ED3);
+    assert_int_equal(pc_konop_kind_of("oneratio.desargues"), PC_KM_DESARGUES);
+    assert_int_equal(pc_konop_kind_of("conic.ellipse"), -1);
+    const char *fields = NULL;
+    assert_int_equal(pc_konop_scheme_of("conic.ceva_scheme", &fields), PC_KS_CEVA);
+    assert_string_equal(fields, "M3=p M=p t3=n r=n");
+    assert_int_equal(pc_konop_scheme_of("conic.foci", &fields), PC_KS_FOCI);
+    assert_string_equal(fields, "p p n n");
+    assert_int_equal(pc_konop_scheme_of("oneratio.desargues_scheme", &fields), PC_KS_DESARGUES);
+    assert_int_equal(pc_konop_scheme_of("conic.ed", &fields), -1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_names),
         cmocka_unit_test(test_curves),
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_schemes),

@@ -7,6 +7,7 @@
 #include <cmocka.h>
 #include <string.h>
 #include "konop_print.h"
+#include "curve.h"
 #include "status.h"
 
 /* x = 4t(9t + 0,8)/(70t^2 - 75t + 44,2) and y = -8t(t - 1)/(14t^2 - 15t + 8,84), the book's
@@ -48,11 +49,26 @@ static void test_failures(void **state) {
     assert_int_equal(pc_k_coordinate_text(line, 1, 1, 0, "t", buf, 5), PC_ENOMEM);
 }
 
+/* a curve's own coordinates: the parabola B(t) on (0, 0), (1, 2), (2, 0): x = 2t, y = -4t^2 + 4t */
+static void test_curve_text(void **state) {
+    (void)state;
+    const double cp[9] = {0, 0, 1, 1, 2, 1, 2, 0, 1};
+    int st;
+    pc_curve *c = pc_curve_bezier(2, 3, cp, &st);
+    char buf[80];
+    assert_int_equal(pc_k_curve_text(c, 0, "t", buf, sizeof buf), PC_OK);
+    assert_string_equal(buf, "x = 2t");
+    assert_int_equal(pc_k_curve_text(c, 1, "s", buf, sizeof buf), PC_OK);
+    assert_string_equal(buf, "y = -4s^2 + 4s");
+    pc_curve_release(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fig217),
         cmocka_unit_test(test_polynomial),
         cmocka_unit_test(test_failures),
+        cmocka_unit_test(test_curve_text),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

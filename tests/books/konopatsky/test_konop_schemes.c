@@ -228,7 +228,9 @@ static void test_focal_forms(void **state) {
         NEAR(pab[0], pa54, 1e-12);                       /* (2.54) corrected = (2.55) corrected */
     }
     assert_int_equal(pc_conic_focal_point(2, C, AH, B, 1, acos(3 / sqrt(13)), o, pab), PC_EPOLE);
-    assert_int_equal(pc_conic_focal_point(2, C, B, A, 0, 1, o, pab), PC_EDOMAIN);   /* CA the minor axis */
+    assert_int_equal(pc_conic_focal_point(2, C, B, A, 0, 1, o, pab), PC_EDOMAIN2);   /* CA the minor axis */
+    const double skew[2] = {C[0] + 1, C[1] + 1};   /* CA, CB not perpendicular */
+    assert_int_equal(pc_conic_focal_point(2, C, AH, skew, 1, 1, o, pab), PC_EDOMAIN);
 }
 
 int main(void) {

@@ -65,6 +65,12 @@ static void test_system_a(void **state) {
     /* an indeterminate table: M only on one line */
     const int bad[2][3] = {{A1, A2, PA}, {PM, A1, PC}};
     assert_int_equal(pc_triples_plan_make(NPTS, 2, bad, known, PC, A3, A4, PM, &plan), PC_EDOMAIN);
+    /* the current point's line must join two given points */
+    assert_int_equal(pc_triples_plan_make(NPTS, 7, tri, known, PC, A3, PM, PM, &plan), PC_EDOMAIN2);
+    assert_int_equal(pc_triples_plan_make(NPTS, 7, tri, known, PC, A3, A4, PM, &plan), PC_OK);
+    int st;
+    assert_null(pc_triples_curve(&plan, 2, PTS, 0.5, 0.5, &st));
+    assert_int_equal(st, PC_EDOMAIN3);   /* an empty range */
 }
 
 /* the table by names: indices in order of appearance, the steps as the book writes them */

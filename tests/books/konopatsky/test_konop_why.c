@@ -31,6 +31,15 @@ static void test_lookups(void **state) {
     assert_non_null(strstr(w->text, "%s"));
     assert_null(pc_why_find(pc_konop_why, "conic.ed_k", PC_EDOMAIN));
     assert_null(pc_why_find(pc_konop_why, "conic.nothing", PC_EDOMAIN));
+    /* causes the core tells apart by PC_EDOMAIN, PC_EDOMAIN2, PC_EDOMAIN3 */
+    assert_int_equal(pc_why_find(pc_konop_why, "oneratio.double_contact", PC_EDOMAIN)->arg, 4);     /* kp = 0 */
+    assert_int_equal(pc_why_find(pc_konop_why, "oneratio.double_contact", PC_EDOMAIN2)->arg, 5);    /* kq = 0 */
+    w = pc_why_find(pc_konop_why, "oneratio.double_contact", PC_EDOMAIN3);
+    assert_non_null(strstr(w->text, "different from kp"));
+    assert_int_equal(pc_why_find(pc_konop_why, "conic.cones", PC_EDOMAIN3)->arg, 7);                /* n */
+    assert_string_equal(pc_why_find(pc_konop_why, "conic.sinusoid", PC_EDOMAIN2)->key, "range");
+    w = pc_why_find(pc_konop_why, "conic.focal_point", PC_EDOMAIN2);
+    assert_non_null(strstr(w->text, "the major one"));
 }
 
 int main(void) {

@@ -163,7 +163,7 @@ static void test_double_contact_const(void **state) {
     pc_curve_release(p);
     pc_curve_release(q);
     assert_null(pc_oneratio_double_contact_const(2, a2, b2, c2, 0.4, 0.4, 0.5, &st));
-    assert_int_equal(st, PC_EDOMAIN);
+    assert_int_equal(st, PC_EDOMAIN3);
 }
 
 static void test_double_contact(void **state) {
@@ -208,7 +208,11 @@ static void test_double_contact(void **state) {
     NEAR(h[2], 0, 1e-14);
     pc_curve_release(c);
     assert_null(pc_oneratio_double_contact(2, a2, b2, c2, 0.4, 0.4, NULL, NULL, NULL, &st));
-    assert_int_equal(st, PC_EDOMAIN);
+    assert_int_equal(st, PC_EDOMAIN3);   /* kp = kq: M is the conic P = Q */
+    assert_null(pc_oneratio_double_contact(2, a2, b2, c2, 0, 0.4, NULL, NULL, NULL, &st));
+    assert_int_equal(st, PC_EDOMAIN);    /* kp = 0 */
+    assert_null(pc_oneratio_double_contact(2, a2, b2, c2, 0.4, 0, NULL, NULL, NULL, &st));
+    assert_int_equal(st, PC_EDOMAIN2);   /* kq = 0 */
 }
 
 static void test_closed(void **state) {
@@ -230,6 +234,11 @@ static void test_closed(void **state) {
     pc_curve_release(c1);
     pc_curve_release(c2);
     assert_null(pc_oneratio_closed(3, A, B, C, 0.8, 0.5, 3, &st));
+    assert_int_equal(st, PC_EARG);
+    assert_null(pc_oneratio_closed(3, A, B, C, 0, 0.5, 1, &st));
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_null(pc_oneratio_closed(3, A, B, C, 0.8, 0, 2, &st));
+    assert_int_equal(st, PC_EDOMAIN2);
 }
 
 /* homogeneous row h (dim 3 + weight) to a point */
