@@ -17,8 +17,11 @@ pc_map *pcl_camera(lua_State *L) {
 }
 
 /* camera(f [, {hidden =}]), camera(nil), camera() */
-PCL_BODY(l_camera, a) {   /* projection, opts, hidden */
-    if (lua_isnone(L, 1)) {
+static int l_camera(lua_State *L) {
+    int given = !lua_isnone(L, 1);
+    pcl_val a[3] = {{0}};   /* projection, opts, hidden */
+    PCL_READ(L, a);
+    if (!given) {
         lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
         return 1;
     }
