@@ -44,59 +44,22 @@ void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out) {
     pc_screen_map(pcl_canvas(L), f, out);
 }
 
-int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
-                int screen, double tol, pc_polyline *out) {
-    pc_map scr;
-    if (screen) {
-        pcl_screen_map(L, f, &scr);
-        f = &scr;
-    }
-    pcl_callback_state(L);
-    return pc_curve_flatten_parts(c, a, b, pieces, f, tol, out);
-}
-
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname) {
-    if (idx && !lua_isnoneornil(L, idx)) {
-        pc_map *f = pcl_tomap(L, idx);
-        if (!f || f->nout != 2 || f->nin != dim)
-            pcl_error(L, "%s: map must be a map from %d-D to 2-D", fname, dim);
-        return f;
-    }
-    pc_map *f = pcl_camera(L);
-    if (dim == 2) return f && f->nin == 2 ? f : NULL;   /* a 3-D camera leaves 2-D drawing alone */
-    if (!f)
-        pcl_error(L, "%s: a %d-D object needs a projection: set one with camera(f) or give "
-                     "map = f", fname, dim);
-    if (f->nin != dim)
-        pcl_error(L, "%s: the camera takes %d-D points, but this is %d-D", fname, f->nin, dim);
+    char why[160];
+    int given = idx && !lua_isnoneornil(L, idx);
+    const pc_map *f = pc_drawing_map(given ? pcl_tomap(L, idx) : NULL, given, pcl_camera(L), dim, why, sizeof why);
+    if (*why) pcl_error(L, "%s: %s", fname, why);
     return f;
 }
 
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname) {
-    pc_canvas *cv = pcl_canvas(L);
-    pc_polyline pl = {0};
-    pcl_callback_state(L);
-    int st = pc_curve_flatten_screen(cv, c, f, pieces, tol, &pl);
-    if (st != PC_OK) {
-        int capped = st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX;
-        pc_polyline_free(&pl);
-        if (capped)
-            pcl_error(L, "%s: the curve needs more than %d vertices at tol = %s px; draw it with a "
-                         "larger tol", fname, (int)PC_POLYLINE_MAX, pcl_pushnum(L, tol));
-        pcl_raise_status(L, fname, st);
-    }
+    char why[200];
     pc_scene *sc = c->dim == 3 && f == pcl_camera(L) ? pcl_scene(L) : NULL;
-    if (sc) {   /* through the camera into the scene, sampled as densely as the flattened path */
-        int n = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
-        pc_polyline_free(&pl);
-        st = pcl_scene_curve(L, sc, c, n, color);
-        if (st != PC_OK) pcl_raise_status(L, fname, st);
-        return;
-    }
-    st = pc_polyline_stroke(cv, &pl, color, (c->closed || closed) && !pc_polyline_broken(&pl));
-    pc_polyline_free(&pl);
-    if (st != PC_OK) pcl_error(L, "%s: %s", fname, cv->error);
+    pcl_callback_state(L);
+    int st = pc_curve_draw(pcl_canvas(L), sc, pcl_active_canvas(L)->pen, c, f, pieces, tol, color, closed, why, sizeof why);
+    if (st != PC_OK && *why) pcl_error(L, "%s: %s", fname, why);
+    if (st != PC_OK) pcl_raise_status(L, fname, st);
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }

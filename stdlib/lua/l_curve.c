@@ -8,6 +8,7 @@
 #include "curve_text.h"
 #include "pcl_expr.h"
 #include "curve_why.h"
+#include "curve_path.h"
 
 #define CURVE_MT "curve"
 static const char CURVE_TAG = 'c';   /* its address tags the type (PCL_SELF_TAG) */
@@ -605,7 +606,8 @@ PCL_METHOD(c_flatten, lcurve *u, a) {
         return pcl_argfail(L, 2, "must be a map from %d-D to 2-D", u->c->dim);
     if (!f && u->c->dim != 2) return pcl_fail(L, "a %d-D curve needs a map to the plane (argument #2)", u->c->dim);
     pc_polyline pl = {0};
-    int st = pcl_flatten(L, u->c, u->c->t0, u->c->t1, 1, f, 0, a[0].x, &pl);
+    pcl_callback_state(L);
+    int st = pc_curve_flatten_parts(u->c, u->c->t0, u->c->t1, 1, f, a[0].x, &pl);
     if (st != PC_OK) {
         pc_polyline_free(&pl);
         return pcl_raise_status(L, pcl_name(L), st);

@@ -36,10 +36,6 @@ pc_map *pcl_camera(lua_State *L);
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y);
 /* pc_screen_map on the current canvas. */
 void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out);
-/* pc_curve_flatten_parts of c over [a, b] through f, and WINDOW and VIEW when screen is set
- * (the tolerance is then in pixels and the polyline in screen coordinates). */
-int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
-                int screen, double tol, pc_polyline *out);
 /* The projection to use for drawing a dim-D object with the map at idx (none or nil: the
  * camera); raises a clear error when there is none. */
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname);
