@@ -627,18 +627,12 @@ static int c_index(lua_State *L) {
     lcurve *u = self_curve(L, 1);
     if (!u) return 0;
     const char *k = lua_tostring(L, 2);
-    const pc_curve *c = u->c;
-    int np, n;
-    if (!k) k = "";
-    if (!strcmp(k, "dim")) lua_pushinteger(L, c->dim);
-    else if (!strcmp(k, "kind")) lua_pushstring(L, u->kind);
-    else if (!strcmp(k, "lo") || !strcmp(k, "t0")) lua_pushnumber(L, c->t0);
-    else if (!strcmp(k, "hi") || !strcmp(k, "t1")) lua_pushnumber(L, c->t1);
-    else if (!strcmp(k, "closed")) lua_pushboolean(L, c->closed);
-    else if (!strcmp(k, "degree") && c->kind != PC_CURVE_FUNC) lua_pushinteger(L, c->degree);
-    else if (!strcmp(k, "pieces") && pc_curve_stroke_pieces(c, &np)) lua_pushinteger(L, np);
-    else if (!strcmp(k, "pieces")) lua_pushinteger(L, c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 1);
-    else if (!strcmp(k, "n") && pc_curve_fourier_coefs(c, &n)) lua_pushinteger(L, n);
+    double v;
+    pc_field_type type = k ? pc_curve_field(u->c, k, &v) : PC_FIELD_NONE;
+    if (k && !strcmp(k, "kind")) lua_pushstring(L, u->kind);
+    else if (type == PC_FIELD_INTEGER) lua_pushinteger(L, (lua_Integer)v);
+    else if (type == PC_FIELD_NUMBER) lua_pushnumber(L, v);
+    else if (type == PC_FIELD_BOOLEAN) lua_pushboolean(L, v != 0);
     else {
         lua_pushvalue(L, 2);
         lua_rawget(L, lua_upvalueindex(1));
