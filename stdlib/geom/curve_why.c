@@ -67,3 +67,27 @@ int pc_params_why(int n, int got, const double *u, int any, char *why, size_t si
         }
     return PC_OK;
 }
+
+int pc_number_why(const char *what, double v, int n, char *why, size_t size) {
+    char got[40];
+    if (v >= 1 && v <= n) return PC_OK;
+    snprintf(why, size, "must be a %s number 1..%d, got %s", what, n, pc_num_text(v, got, sizeof got));
+    return PC_EDOMAIN;
+}
+
+int pc_curve_inside_why(const pc_curve *c, double t, char *why, size_t size) {
+    char lo[40], hi[40], got[40];
+    if (t > c->t0 && t < c->t1) return PC_OK;
+    snprintf(why, size, "must be inside the domain (%s, %s), got %s", pc_num_text(c->t0, lo, sizeof lo),
+             pc_num_text(c->t1, hi, sizeof hi), pc_num_text(t, got, sizeof got));
+    return PC_EDOMAIN;
+}
+
+int pc_curve_part_why(const pc_curve *c, double a, double b, char *why, size_t size) {
+    char lo[40], hi[40], ta[40], tb[40];
+    if (a >= c->t0 && b <= c->t1 && a < b) return PC_OK;
+    snprintf(why, size, "need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
+             pc_num_text(c->t0, lo, sizeof lo), pc_num_text(c->t1, hi, sizeof hi), pc_num_text(a, ta, sizeof ta),
+             pc_num_text(b, tb, sizeof tb));
+    return PC_EDOMAIN;
+}

@@ -25,5 +25,14 @@ int pc_knots_why(int ncp, int degree, int n, const double *knots, char *why, siz
  * interpolation's: distinct, which its constructor checks): PC_OK, or PC_EDOMAIN with the
  * broken condition into why ("must increase, but [3] = 1 follows [2] = 2"). */
 int pc_params_why(int n, int got, const double *u, int any, char *why, size_t size);
+/* A whole number v from 1 to n naming one of n things (what: "piece", "coordinate"): PC_OK,
+ * or PC_EDOMAIN with "must be a piece number 1..3, got 4" into why. */
+int pc_number_why(const char *what, double v, int n, char *why, size_t size);
+/* A parameter t strictly inside c's domain (where c splits): PC_OK, or PC_EDOMAIN with "must be
+ * inside the domain (0, 1), got 1" into why. */
+int pc_curve_inside_why(const pc_curve *c, double t, char *why, size_t size);
+/* A part [a, b] of c's domain, a < b: PC_OK, or PC_EDOMAIN with the condition, the domain and
+ * the ends given into why. */
+int pc_curve_part_why(const pc_curve *c, double a, double b, char *why, size_t size);
 
 #endif

@@ -101,7 +101,6 @@ int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
     return 1;
 }
 
-/* kind NULL: the constructor's declared name (a static string) */
 int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
     if (!c) return pcl_raise_status(L, pcl_name(L), *st);
     return pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
@@ -154,8 +153,6 @@ PCL_BODY(l_bezier, a) {
     return pcl_push_made(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), &st, NULL);
 }
 
-/* The knots at arg (bspline, surface.bspline): nil or "open", "uniform", "periodic", or a
- * list into *knots (a buffer left on the stack) whose conditions the core checks. */
 pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree, double **knots) {
     static const char *const kinds[] = {"open", "uniform", "periodic", NULL};
     static const pc_knot_kind kind_of[] = {PC_KNOTS_OPEN, PC_KNOTS_UNIFORM, PC_KNOTS_PERIODIC};
@@ -477,9 +474,8 @@ PCL_METHOD(c_curvature, lcurve *u, a) {
 
 /* The parameter of argument #1 strictly inside the domain. */
 static double inside(lua_State *L, lcurve *u, double t) {
-    if (!(t > u->c->t0 && t < u->c->t1))
-        pcl_argfail(L, 1, "must be inside the domain (%s, %s), got %s", pcl_pushnum(L, u->c->t0),
-                    pcl_pushnum(L, u->c->t1), pcl_pushnum(L, t));
+    char why[160];
+    if (pc_curve_inside_why(u->c, t, why, sizeof why) != PC_OK) pcl_argfail(L, 1, "%s", why);
     return t;
 }
 
@@ -493,9 +489,8 @@ PCL_METHOD(c_split, lcurve *u, a) {
 
 static const pcl_arg ab_args[] = {A_NUM("a"), A_NUM("b"), PCL_END};
 PCL_METHOD(c_sub, lcurve *u, a) {
-    if (!(a[0].x >= u->c->t0 && a[1].x <= u->c->t1 && a[0].x < a[1].x))
-        return pcl_fail(L, "need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
-                        pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
+    char why[200];
+    if (pc_curve_part_why(u->c, a[0].x, a[1].x, why, sizeof why) != PC_OK) return pcl_fail(L, "%s", why);
     int st;
     return pcl_push_made(L, pc_curve_sub(u->c, a[0].x, a[1].x, &st), &st, u->kind);
 }
@@ -522,10 +517,10 @@ PCL_METHOD(c_bbox, lcurve *u, a) {
     return pcl_push_results(L, u->c->dim, "p p", lo, hi);
 }
 
-/* A stroke's piece number at argument #1 (1..np), 0-based. */
-static int piece_no(lua_State *L, int np, const pcl_val *v) {
-    if (!(v->x >= 1 && v->x <= np))
-        pcl_argfail(L, 1, "must be a piece number 1..%d, got %s", np, pcl_pushnum(L, v->x));
+/* Argument #1 a whole number 1..n (what: "piece", "coordinate"), 0-based. */
+static int number_arg(lua_State *L, const char *what, int n, const pcl_val *v) {
+    char why[160];
+    if (pc_number_why(what, v->x, n, why, sizeof why) != PC_OK) pcl_argfail(L, 1, "%s", why);
     return (int)v->x - 1;
 }
 
@@ -536,7 +531,7 @@ PCL_METHOD(c_controls, lcurve *u, a) {
     int d = u->c->dim, np;
     const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
     if (pcs) {
-        const pc_piece *pc = &pcs[np == 1 && !a[0].present ? 0 : piece_no(L, np, &a[0])];
+        const pc_piece *pc = &pcs[np == 1 && !a[0].present ? 0 : number_arg(L, "piece", np, &a[0])];
         return pcl_push_results(L, d, "p p p p", pc->a, pc->p, pc->q, pc->b);
     }
     if (pc_curve_fourier_coefs(u->c, NULL)) return pcl_fail(L, "a Fourier curve has no pieces");
@@ -560,7 +555,7 @@ PCL_METHOD(c_piece, lcurve *u, a) {
     double x[PC_MAXDIM];
     const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
     if (!pcs) return pcl_fail(L, "a %s curve has no pieces", pc_curve_fourier_coefs(u->c, NULL) ? "Fourier" : u->kind);
-    int i = piece_no(L, np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
+    int i = number_arg(L, "piece", np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
     if (st == PC_EDOMAIN) half_fail(L, 2, &pcs[i], a[1].x, i, 1);
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
     if (!strcmp(pcl_name(L), "c:piece")) return pcl_push_results(L, d, "p", x);
@@ -574,11 +569,10 @@ PCL_METHOD(c_coef, lcurve *u, a) {
     int n;
     const double *coef = pc_curve_fourier_coefs(u->c, &n);
     if (!coef) return pcl_fail(L, "not a Fourier curve");
-    int d = u->c->dim, m = n + 1;
-    if (!(a[0].x >= 1 && a[0].x <= d)) return pcl_argfail(L, 1, "must be a coordinate number 1..%d, got %s", d, pcl_pushnum(L, a[0].x));
+    int k = number_arg(L, "coordinate", u->c->dim, &a[0]), m = n + 1;
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);
-        const double *v = coef + (2 * ((int)a[0].x - 1) + ab) * m;
+        const double *v = coef + (2 * k + ab) * m;
         for (int j = 0; j < m; j++) {
             lua_pushnumber(L, v[j]);
             lua_rawseti(L, -2, j);

@@ -58,12 +58,35 @@ static void test_params(void **state) {
     assert_int_equal(pc_params_why(3, 3, back, 1, why, sizeof why), PC_OK);   /* any order */
 }
 
+/* piece and coordinate numbers, a parameter inside the domain, a part of it */
+static void test_ranges(void **state) {
+    (void)state;
+    char why[200];
+    double cp[] = {0, 0, 1, 4, 0, 1};
+    int st;
+    pc_curve *c = pc_curve_bezier(2, 2, cp, &st);
+    assert_int_equal(pc_number_why("piece", 3, 3, why, sizeof why), PC_OK);
+    assert_int_equal(pc_number_why("piece", 4, 3, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be a piece number 1..3, got 4");
+    assert_int_equal(pc_number_why("coordinate", 0, 2, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be a coordinate number 1..2, got 0");
+    assert_int_equal(pc_curve_inside_why(c, 0.5, why, sizeof why), PC_OK);
+    assert_int_equal(pc_curve_inside_why(c, 1, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be inside the domain (0, 1), got 1");
+    assert_int_equal(pc_curve_part_why(c, 0, 1, why, sizeof why), PC_OK);
+    assert_int_equal(pc_curve_part_why(c, 0.5, 0.25, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "need t0 <= a < b <= t1 in the domain [0, 1], got a = 0.5, b = 0.25");
+    assert_int_equal(pc_curve_part_why(c, -1, 0.5, why, sizeof why), PC_EDOMAIN);
+    pc_curve_release(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_method_rows),
         cmocka_unit_test(test_degree),
         cmocka_unit_test(test_knots),
         cmocka_unit_test(test_params),
+        cmocka_unit_test(test_ranges),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
