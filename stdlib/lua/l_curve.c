@@ -327,10 +327,7 @@ static int l_stroke_raw(lua_State *L) {
     int st = pc_stroke_build(&spec, pc, &bad);
     if (st != PC_OK) {
         lua_pushnil(L);
-        lua_pushinteger(L, st);
-        lua_pushinteger(L, bad + 1);
-        lua_pushstring(L, pc_strerror(st));
-        return 4;
+        return pcl_push_results(L, 0, "i i s", st, bad + 1, pc_strerror(st)) + 1;
     }
     for (int i = 0; !lua && !lua_isnil(L, 11) && i < np; i++) pc[i].g = g;
     return push_stroke(L, "stroke", d, np, closed, pc, lua, 11);
@@ -353,20 +350,13 @@ PCL_BODY(l_sphdir, a) {
 
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
-/* Argument #k past the domain of piece i's half-spline (s its own parameter, hi the bound above). */
-static int half_fail(lua_State *L, int k, const pc_piece *pc, double s, int i, double hi) {
-    int low = s < 0;
-    const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m), *bound = pcl_pushnum(L, low ? 0 : hi);
-    return pcl_argfail(L, k, "must be %s %s (piece %d's half-spline has the fractional degree %s = %s and "
-                       "does not extrapolate)", low ? "at least" : "at most", bound, i + 1, low ? "n" : "m", deg);
-}
-
 /* the value at t of argument #1, or the error: a stroke's piece past its half-spline's reach */
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
     int st = pc_curve_eval_h(u->c, t, 0, h), i;
     double s;
+    char why[200];
     const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(u->c, t, &i, &s) : NULL;
-    if (pc) half_fail(L, 1, pc, s, i, u->c->t1);
+    if (pc) pcl_argfail(L, 1, "%s", pc_half_why(pc, s, i, u->c->t1, why, sizeof why));
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
 }
 
@@ -556,7 +546,8 @@ PCL_METHOD(c_piece, lcurve *u, a) {
     const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
     if (!pcs) return pcl_fail(L, "a %s curve has no pieces", pc_curve_fourier_coefs(u->c, NULL) ? "Fourier" : u->kind);
     int i = number_arg(L, "piece", np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
-    if (st == PC_EDOMAIN) half_fail(L, 2, &pcs[i], a[1].x, i, 1);
+    char why[200];
+    if (st == PC_EDOMAIN) pcl_argfail(L, 2, "%s", pc_half_why(&pcs[i], a[1].x, i, 1, why, sizeof why));
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
     if (!strcmp(pcl_name(L), "c:piece")) return pcl_push_results(L, d, "p", x);
     for (int k = 0; k < d; k++) lua_pushnumber(L, x[k]);

@@ -202,8 +202,7 @@ PCL_BODY(l_frame, a) {
     else st = pc_frame_coords(x, x + 2, x + 4, &out[0], &out[1]);
     if (st == PC_OK) return pcl_push_results(L, 0, "n n", out[0], out[1]);
     lua_pushnil(L);
-    lua_pushstring(L, pc_strerror(st));
-    return 2;
+    return pcl_push_results(L, 0, "s", pc_strerror(st)) + 1;
 }
 
 static const pcl_fn fns[] = {
