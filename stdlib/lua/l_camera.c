@@ -57,7 +57,8 @@ void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, doub
     char why[200];
     pc_scene *sc = c->dim == 3 && f == pcl_camera(L) ? pcl_scene(L) : NULL;
     pcl_callback_state(L);
-    int st = pc_curve_draw(pcl_canvas(L), sc, pcl_active_canvas(L)->pen, c, f, pieces, tol, color, closed, why, sizeof why);
+    int st = pc_curve_draw(pcl_canvas(L), sc, pcl_active_canvas(L)->pen, c, f, pieces, tol, color, closed, why,
+                           sizeof why);
     if (st != PC_OK && *why) pcl_error(L, "%s: %s", fname, why);
     if (st != PC_OK) pcl_raise_status(L, fname, st);
 }
