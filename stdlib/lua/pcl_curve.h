@@ -39,9 +39,8 @@ void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out);
 /* The projection to use for drawing a dim-D object with the map at idx (none or nil: the
  * camera); raises a clear error when there is none. */
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname);
-/* Draw c as one path: flattened through f (NULL: c is 2-D), WINDOW and VIEW to within tol
- * pixels from `pieces` equal parts, into the scene of a hidden-line camera or onto the canvas,
- * closed when c is or `closed` is set.  Raises errors naming fname. */
+/* pc_curve_draw (curve_path.h) of c through f (NULL: c is 2-D) onto the canvas, or into the
+ * scene of a hidden-line camera; raises errors naming fname. */
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname);
 
