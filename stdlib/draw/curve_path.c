@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "curve_path.h"
+#include "names.h"
 
 int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y) {
     if (!f || f->nin != n) return PC_EDIM;
@@ -81,4 +82,36 @@ int pc_polyline_stroke(pc_canvas *cv, const pc_polyline *pl, int color, int clos
     int st = pc_path_screen(cv, pl->n, pl->xy, verbs, pl->n, closed, color);
     free(verbs);
     return st;
+}
+
+int pc_curve_draw(pc_canvas *cv, pc_scene *sc, int pen, const pc_curve *c, const pc_map *f, int pieces,
+                  double tol, int color, int closed, char *why, size_t size) {
+    pc_polyline pl = {0};
+    char num[40];
+    *why = 0;
+    int st = pc_curve_flatten_screen(cv, c, f, pieces, tol, &pl);
+    if (st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX)
+        snprintf(why, size, "the curve needs more than %d vertices at tol = %s px; draw it with a larger tol",
+                 (int)PC_POLYLINE_MAX, pc_num_text(tol, num, sizeof num));
+    if (st == PC_OK && sc)   /* into the scene, sampled as densely as the flattened path */
+        st = pc_scene_add_curve(sc, c, (int)fmin(8192, fmax(64, 4.0 * (double)pl.n)), color, pen);
+    else if (st == PC_OK) {
+        st = pc_polyline_stroke(cv, &pl, color, (c->closed || closed) && !pc_polyline_broken(&pl));
+        if (st != PC_OK) snprintf(why, size, "%s", cv->error);
+    }
+    pc_polyline_free(&pl);
+    return st;
+}
+
+const pc_map *pc_drawing_map(const pc_map *f, int given, const pc_map *camera, int dim, char *why, size_t size) {
+    *why = 0;
+    if (given && (!f || f->nout != 2 || f->nin != dim))
+        snprintf(why, size, "map must be a map from %d-D to 2-D", dim);
+    if (given) return *why ? NULL : f;
+    if (dim == 2) return camera && camera->nin == 2 ? camera : NULL;   /* a 3-D camera leaves 2-D drawing alone */
+    if (!camera)
+        snprintf(why, size, "a %d-D object needs a projection: set one with camera(f) or give map = f", dim);
+    else if (camera->nin != dim)
+        snprintf(why, size, "the camera takes %d-D points, but this is %d-D", camera->nin, dim);
+    return *why ? NULL : camera;
 }

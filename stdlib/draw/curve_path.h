@@ -7,6 +7,7 @@
 
 #include "canvas.h"
 #include "curve.h"
+#include "scene.h"
 
 /* The image (x, y) under f (to the plane) of the homogeneous n-D value h: PC_OK, PC_EDIM when f
  * takes points of another dimension (or is NULL), PC_IMPROPER where h goes to infinity,
@@ -30,5 +31,17 @@ int pc_polyline_broken(const pc_polyline *pl);
  * each piece closed when closed is set: pc_path_screen's status, or PC_ENOMEM (the message in
  * cv->error either way). */
 int pc_polyline_stroke(pc_canvas *cv, const pc_polyline *pl, int color, int closed);
+/* Draw c as one path: flattened through f and the screen map of cv to within tol pixels from
+ * `pieces` equal parts, then into the scene sc when one is given (a hidden-line camera's,
+ * sampled as densely as the flattened path, with the pen) or stroked onto cv, closed when c is
+ * or `closed` is set.  PC_OK, or the status, with why set when there is more to say than it (a
+ * curve needing more vertices than a polyline holds at tol; the canvas's message). */
+int pc_curve_draw(pc_canvas *cv, pc_scene *sc, int pen, const pc_curve *c, const pc_map *f, int pieces,
+                  double tol, int color, int closed, char *why, size_t size);
+/* The projection for drawing a dim-D object: the map given (given set; f NULL when the argument
+ * is no map), which must take dim-D points to the plane, else the camera, which a 2-D object
+ * uses only when it takes 2-D points.  NULL with why set when there is none to use (why empty:
+ * a 2-D object drawn as it is). */
+const pc_map *pc_drawing_map(const pc_map *f, int given, const pc_map *camera, int dim, char *why, size_t size);
 
 #endif

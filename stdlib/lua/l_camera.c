@@ -4,6 +4,7 @@
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
+#include "pcl_draw.h"
 #include "curve_path.h"
 
 #define CAMERA_KEY "pointcalc.camera"
@@ -43,79 +44,23 @@ void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out) {
     pc_screen_map(pcl_canvas(L), f, out);
 }
 
-int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
-                int screen, double tol, pc_polyline *out) {
-    pc_map scr;
-    if (screen) {
-        pcl_screen_map(L, f, &scr);
-        f = &scr;
-    }
-    pcl_callback_state(L);
-    return pc_curve_flatten_parts(c, a, b, pieces, f, tol, out);
-}
-
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname) {
-    if (idx && !lua_isnoneornil(L, idx)) {
-        pc_map *f = pcl_tomap(L, idx);
-        if (!f || f->nout != 2 || f->nin != dim)
-            pcl_error(L, "%s: map must be a map from %d-D to 2-D", fname, dim);
-        return f;
-    }
-    pc_map *f = pcl_camera(L);
-    if (dim == 2) return f && f->nin == 2 ? f : NULL;   /* a 3-D camera leaves 2-D drawing alone */
-    if (!f)
-        pcl_error(L, "%s: a %d-D object needs a projection: set one with camera(f) or give "
-                     "map = f", fname, dim);
-    if (f->nin != dim)
-        pcl_error(L, "%s: the camera takes %d-D points, but this is %d-D", fname, f->nin, dim);
+    char why[160];
+    int given = idx && !lua_isnoneornil(L, idx);
+    const pc_map *f = pc_drawing_map(given ? pcl_tomap(L, idx) : NULL, given, pcl_camera(L), dim, why, sizeof why);
+    if (*why) pcl_error(L, "%s: %s", fname, why);
     return f;
-}
-
-int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed) {
-    return pc_polyline_stroke(pcl_canvas(L), pl, color, closed);
 }
 
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname) {
-    pc_canvas *cv = pcl_canvas(L);
-    pc_polyline pl = {0};
-    pcl_callback_state(L);
-    int st = pc_curve_flatten_screen(cv, c, f, pieces, tol, &pl);
-    if (st != PC_OK) {
-        int capped = st == PC_ENOMEM && pl.n >= PC_POLYLINE_MAX;
-        pc_polyline_free(&pl);
-        if (capped)
-            pcl_error(L, "%s: the curve needs more than %d vertices at tol = %s px; draw it with a "
-                         "larger tol", fname, (int)PC_POLYLINE_MAX, pcl_pushnum(L, tol));
-        pcl_raise_status(L, fname, st);
-    }
+    char why[200];
     pc_scene *sc = c->dim == 3 && f == pcl_camera(L) ? pcl_scene(L) : NULL;
-    if (sc) {   /* through the camera into the scene, sampled as densely as the flattened path */
-        int n = (int)fmin(8192, fmax(64, 4.0 * (double)pl.n));
-        pc_polyline_free(&pl);
-        st = pcl_scene_curve(L, sc, c, n, color);
-        if (st != PC_OK) pcl_raise_status(L, fname, st);
-        return;
-    }
-    st = pc_polyline_stroke(cv, &pl, color, (c->closed || closed) && !pc_polyline_broken(&pl));
-    pc_polyline_free(&pl);
-    if (st != PC_OK) pcl_error(L, "%s: %s", fname, cv->error);
-}
-
-/* A colour: an attribute of the screen or "#rrggbb" (a true colour, allocated on first use). */
-#define COLOR_EXPECT "a colour number of the screen or \"#rrggbb\""
-static int read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    pc_canvas *cv = pcl_canvas(L);
-    size_t len;
-    pc_rgb rgb;
-    int isint;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (lua_type(L, idx) == LUA_TNUMBER) return isint && v >= 0 && v < cv->ncolors ? (out->x = (double)v, 1) : 0;
-    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
-    if (!s || pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
-    if ((out->x = pc_rgb_color(cv, rgb)) < 0) pcl_error(L, "%s", cv->error);
-    return 1;
+    pcl_callback_state(L);
+    int st = pc_curve_draw(pcl_canvas(L), sc, pcl_active_canvas(L)->pen, c, f, pieces, tol, color, closed, why,
+                           sizeof why);
+    if (st != PC_OK && *why) pcl_error(L, "%s: %s", fname, why);
+    if (st != PC_OK) pcl_raise_status(L, fname, st);
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
@@ -159,13 +104,15 @@ static int tk_draw_curve(lua_State *L) {
     pc_curve *c = pcl_tocurve(L, 1);
     const char *fname = luaL_optstring(L, 6, "c:draw");
     if (!c) return pcl_error(L, "%s: not a curve", fname);
-    pcl_val col = {.x = -1};
-    if (!lua_isnoneornil(L, 2) && !read_color(L, 2, NULL, &col))
-        return pcl_error(L, "%s: option 'color' must be %s, got %s", fname, COLOR_EXPECT, pcl_shown(L, 2));
+    pc_canvas *cv = pcl_canvas(L);
+    int color = lua_isnoneornil(L, 2) ? -1 : pcl_color_at(L, 2, cv, 0);
+    if (color == -2)
+        return pcl_error(L, "%s: option 'color' must be a colour number 0..%d or \"#rrggbb\", got %s", fname,
+                         cv->ncolors - 1, pcl_shown(L, 2));
     double tol = luaL_optnumber(L, 3, 0.25);
     if (!(tol > 0)) return pcl_error(L, "%s: option 'tol' must be a positive number, got %s", fname, pcl_shown(L, 3));
     const pc_map *f = pcl_drawing_map(L, 4, c->dim, fname);
-    pcl_draw_curve(L, c, f, (int)luaL_optinteger(L, 5, 1), tol, (int)col.x, 0, fname);
+    pcl_draw_curve(L, c, f, (int)luaL_optinteger(L, 5, 1), tol, color, 0, fname);
     return 0;
 }
 
@@ -183,14 +130,10 @@ static const pcl_arg camera_args[] = {{.name = "projection", .kind = PCL_MAP, .f
                                        .expect = "a map to the plane (or nil)"},
                                       A_OPTIONS("opts", camera_keys), PCL_END};
 static const pcl_fn fns[] = {
-    {.name = "camera", .fn = l_camera, .args = camera_args,
-     .sig = "camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])\ncamera(nil)\ncamera() -> f",
-     .help = "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order."},
+    {.name = "camera", .fn = l_camera, .args = camera_args, .sig = "camera(f [, {hidden = \"dashed\"|\"hide\"|\"show\"}])\ncamera(nil)\ncamera() -> f", .help = "The current projection (a map to 2-D): with one set, drawing calls take its points (3-D) and draw their images; with hidden, 3-D lines, curves, marks and wireframes form a scene whose hidden parts are resolved when the picture is written, whatever the drawing order."},
     PCL_END};
 static const pcl_fn methods[] = {
-    {.name = "c:draw", .fn = c_draw, .args = draw_args, .self = self_curve, .selftype = "curve",
-     .sig = "c:draw{color = c, tol = px, map = m, closed = false}\nc:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, dots = true, qb = false, ...}",
-     .help = "Draw the curve as one path, flattened to within tol pixels (default 1/4) through map or the camera; with t or a brush, dots as the listings draw them."},
+    {.name = "c:draw", .fn = c_draw, .args = draw_args, .self = self_curve, .selftype = "curve", .sig = "c:draw{color = c, tol = px, map = m, closed = false}\nc:draw{t = {a, b, step}, brush = \"pset\"|\"dot\"|fn, dots = true, qb = false, ...}", .help = "Draw the curve as one path, flattened to within tol pixels (default 1/4) through map or the camera; with t or a brush, dots as the listings draw them."},
     PCL_END};
 
 void pcl_open_camera(lua_State *L) {

@@ -2,11 +2,13 @@
  * among them (examples 5, 10, 12).  All are one userdata "curve"; its methods are in the table
  * _tk.curve_methods, to which l_camera.c adds c:draw and stdlib/lua/curves.lua c:each. */
 #include "pcl_args.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "spline.h"
 #include "fourier.h"
 #include "curve_text.h"
 #include "pcl_expr.h"
+#include "curve_why.h"
+#include "curve_path.h"
 
 #define CURVE_MT "curve"
 static const char CURVE_TAG = 'c';   /* its address tags the type (PCL_SELF_TAG) */
@@ -17,29 +19,9 @@ typedef struct {
     const char *kind;   /* the constructor's name (a static string) */
 } lcurve;
 
-/* ---- Lua functions called from the core ---------------------------------------------------
- * For curve(f, ...) and for strokes whose smoothstep is a Lua function (pcl.h: a Lua error
- * must not unwind through the core's frames, so the callback keeps it). */
-typedef struct {
-    int ref;            /* the Lua function (registry reference) */
-    int dim;            /* of the values it returns (curve(f)) */
-} luafn;
-
-static luafn *new_luafn(lua_State *L, int idx, int dim) {
-    luafn *f = malloc(sizeof *f);
-    if (!f) pcl_fail(L, "out of memory");
-    f->dim = dim;
-    lua_pushvalue(L, idx);
-    f->ref = luaL_ref(L, LUA_REGISTRYINDEX);
-    return f;
-}
-
-static void luafn_free(void *ud) {
-    luafn *f = ud;
-    lua_State *L = pcl_current_state();
-    if (L) luaL_unref(L, LUA_REGISTRYINDEX, f->ref);
-    free(f);
-}
+/* ---- Lua functions called from the core (pcl_luafn, pcl_core.h) -----------------------------
+ * For curve(f), whose function's nargs is the dimension of its values (it is called with t
+ * alone), and for strokes whose smoothstep is a Lua function. */
 
 /* The value a Lua curve function returned (the top nres results) as homogeneous h: its
  * dimension, or 0 with the message pushed.  dim 0: any dimension (the call that finds it). */
@@ -74,47 +56,54 @@ static int read_result(lua_State *L, int nres, int dim, double *h) {
 }
 
 static int luafn_eval(void *ud, double t, int order, double *out) {
-    luafn *f = ud;
+    pcl_luafn *f = ud;
     lua_State *L = pcl_current_state();
     if (order > 0) return PC_EDOMAIN;            /* the core differences */
     int top = lua_gettop(L);
-    if (!lua_checkstack(L, f->dim + 4)) return PC_ENOMEM;
-    lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref);
+    if (!lua_checkstack(L, f->nargs + 4)) return PC_ENOMEM;
+    lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[0]);
     lua_pushnumber(L, t);
     if (lua_pcall(L, 1, LUA_MULTRET, 0) != LUA_OK) return pcl_callback_failed(L);
-    if (!read_result(L, lua_gettop(L) - top, f->dim, out)) return pcl_callback_failed(L);
+    if (!read_result(L, lua_gettop(L) - top, f->nargs, out)) return pcl_callback_failed(L);
     lua_settop(L, top);
     return PC_OK;
 }
 
 /* a stroke's Lua smoothstep g(t) (pc_gcall) */
 static int luag_eval(void *ud, double t, double *g) {
-    lua_State *L = pcl_current_state();
-    if (!lua_checkstack(L, 4)) return PC_ENOMEM;
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ((luafn *)ud)->ref);
-    lua_pushnumber(L, t);
-    if (pcl_call_number(L, 1, "curve", "the smoothstep g", g) != PC_OK) return PC_EARG;
+    pcl_luafn *f = ud;
+    int failed = f->failed;
+    *g = pcl_luafn_call(f, 0, 0, "the smoothstep g", 1, &t);
+    if (f->failed > failed) return PC_EARG;
     if (isfinite(*g)) return PC_OK;
+    lua_State *L = pcl_current_state();
     const char *ts = pcl_pushnum(L, t), *gs = pcl_pushnum(L, *g);
     lua_pushfstring(L, "curve: the smoothstep g must return a finite number, got g(%s) = %s", ts, gs);
     return pcl_callback_failed(L);
 }
 
+/* A Lua function at idx for the core (fname: the name its messages start with). */
+static pcl_luafn *keep_fn(lua_State *L, int idx, int nargs) {
+    pcl_luafn *f = pcl_luafn_new(L, 1, &idx);
+    f->nargs = nargs;
+    f->fname = "curve";
+    return f;
+}
+
 /* ---- the userdata ---------------------------------------------------------------------------- */
 
-void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
+int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
     lcurve *u = lua_newuserdatauv(L, sizeof(lcurve), 0);
     u->self = PCL_SELF_TAG(u, &CURVE_TAG);
     u->c = c;
     u->kind = kind;
     luaL_setmetatable(L, CURVE_MT);
+    return 1;
 }
 
-/* kind NULL: the constructor's declared name (a static string) */
 int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
     if (!c) return pcl_raise_status(L, pcl_name(L), *st);
-    pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
-    return 1;
+    return pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
 }
 
 static int genuine(lua_State *L, int idx, const lcurve *u) {
@@ -137,14 +126,6 @@ static void *self_curve(lua_State *L, int idx) {
     return u && u->c ? u : NULL;
 }
 
-/* The receiver of a method with its declared arguments read into a; Lua curves evaluate. */
-static lcurve *read_method(lua_State *L, pcl_val *a, int n) {
-    lcurve *u = pcl_read(L, a, n);
-    pcl_callback_state(L);
-    return u;
-}
-#define READ_METHOD(L, a) read_method((L), (a), (int)(sizeof(a) / sizeof((a)[0])))
-
 static int c_gc(lua_State *L) {
     lcurve *u = luaL_testudata(L, 1, CURVE_MT);
     if (u && genuine(L, 1, u) && u->c) {   /* never a forged one */
@@ -155,19 +136,13 @@ static int c_gc(lua_State *L) {
     return 0;
 }
 
-/* The parameters of n nodes given as option key (or argument #k): n numbers, increasing unless
- * any order will do (interpolation: distinct ones, which the core checks). */
+/* The parameters of n nodes given as option key (or argument #k), checked by the core. */
 static const double *params(lua_State *L, const pcl_val *v, int k, const char *key, int n, int any) {
-    if (!v->present) return NULL;
-    const char *bad = NULL;
-    if (v->n != n) bad = lua_pushfstring(L, "must hold %d numbers (one per point), got %d", n, v->n);
-    for (int i = 1; !bad && !any && i < n; i++)
-        if (!(v->list[i] > v->list[i - 1]))
-            bad = lua_pushfstring(L, "must increase, but [%d] = %s follows [%d] = %s", i + 1,
-                                  pcl_pushnum(L, v->list[i]), i, pcl_pushnum(L, v->list[i - 1]));
-    if (bad && key) pcl_keyfail(L, key, "%s", bad);
-    if (bad) pcl_argfail(L, k, "%s", bad);
-    return v->list;
+    char why[160];
+    if (!v->present || pc_params_why(n, v->n, v->list, any, why, sizeof why) == PC_OK) return v->present ? v->list : NULL;
+    if (key) pcl_keyfail(L, key, "%s", why);
+    pcl_argfail(L, k, "%s", why);
+    return NULL;
 }
 
 /* ---- constructors ------------------------------------------------------------------------------ */
@@ -178,8 +153,6 @@ PCL_BODY(l_bezier, a) {
     return pcl_push_made(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), &st, NULL);
 }
 
-/* The knots at arg (bspline, surface.bspline): nil or "open", "uniform", "periodic", or a
- * non-decreasing list of ncp + degree + 1 numbers into *knots (a buffer left on the stack). */
 pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree, double **knots) {
     static const char *const kinds[] = {"open", "uniform", "periodic", NULL};
     static const pc_knot_kind kind_of[] = {PC_KNOTS_OPEN, PC_KNOTS_UNIFORM, PC_KNOTS_PERIODIC};
@@ -187,17 +160,13 @@ pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int 
                                   .expect = "\"open\", \"uniform\", \"periodic\" or a list of numbers"};
     static const pcl_arg list = A_NUMBERS("knots", 0, 0);
     pcl_val v = {0};
+    char why[160];
     *knots = NULL;
     if (lua_isnoneornil(L, arg)) return PC_KNOTS_OPEN;
     pcl_readone(L, arg, arg, 0, lua_istable(L, arg) ? &list : &named, 0, &v);
     if (!lua_istable(L, arg)) return kind_of[v.n];
-    int want = ncp + degree + 1;
-    if (v.n != want)
-        pcl_error(L, "%s: argument #%d (knots) must hold points + degree + 1 = %d knots, got %d", fn, arg, want, v.n);
-    for (int i = 1; i < want; i++)
-        if (v.list[i] < v.list[i - 1])
-            pcl_error(L, "%s: argument #%d (knots) must be non-decreasing, but knot [%d] = %s is less than "
-                      "knot [%d] = %s", fn, arg, i + 1, pcl_pushnum(L, v.list[i]), i, pcl_pushnum(L, v.list[i - 1]));
+    if (pc_knots_why(ncp, degree, v.n, v.list, why, sizeof why) != PC_OK)
+        pcl_error(L, "%s: argument #%d (knots) %s", fn, arg, why);
     *knots = v.list;
     return PC_KNOTS_GIVEN;
 }
@@ -205,21 +174,12 @@ pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int 
 static const pcl_arg bspline_args[] = {A_VALUES("points", 2, 0), {.name = "degree", .kind = PCL_INTEGER},
                                        {.name = "knots", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_bspline, a) {
-    int m = a[0].n, d = a[0].dim, p = a[1].x < 1 || a[1].x > PC_CURVE_MAXDEG ? 0 : (int)a[1].x;
-    double *h = a[0].list;
-    int periodic = lua_type(L, 3) == LUA_TSTRING && !strcmp(lua_tostring(L, 3), "periodic");
-    if (p < 1 || p > (periodic ? m : m - 1))
-        return periodic ? pcl_argfail(L, 2, "must be an integer from 1 to %d (the number of points), got %s",
-                                      m, pcl_shown(L, 2))
-                        : pcl_argfail(L, 2, "must be an integer from 1 to %d (fewer than the %d points), got %s",
-                                      m > PC_CURVE_MAXDEG ? PC_CURVE_MAXDEG : m - 1, m, pcl_shown(L, 2));
+    int m = a[0].n, st, periodic = lua_type(L, 3) == LUA_TSTRING && !strcmp(lua_tostring(L, 3), "periodic");
+    char why[160];
+    if (pc_bspline_degree_why(m, a[1].x, periodic, why, sizeof why) != PC_OK) return pcl_argfail(L, 2, "%s", why);
     double *knots;
-    pc_knot_kind kk = pcl_checkknots(L, pcl_name(L), 3, m, p, &knots);
-    if (knots && !(knots[p] < knots[m]))   /* the domain [knot p+1, knot points+1] */
-        return pcl_argfail(L, 3, "leaves no domain: knot [%d] = %s (the start) must be less than knot "
-                           "[%d] = %s (the end)", p + 1, pcl_pushnum(L, knots[p]), m + 1, pcl_pushnum(L, knots[m]));
-    int st;
-    return pcl_push_made(L, pc_curve_bspline(d, p, m, h, kk, knots, &st), &st, NULL);
+    pc_knot_kind kk = pcl_checkknots(L, pcl_name(L), 3, m, (int)a[1].x, &knots);
+    return pcl_push_made(L, pc_curve_bspline(a[0].dim, (int)a[1].x, m, a[0].list, kk, knots, &st), &st, NULL);
 }
 
 static const pcl_arg hermite_keys[] = {A_VECTORS("tin"), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
@@ -276,10 +236,9 @@ PCL_BODY(l_curve, a) {
     double h[PC_MAXDIM + 1];
     int d = read_result(L, lua_gettop(L) - 3, 0, h);
     if (!d) return pcl_fail(L, "%s", lua_tostring(L, -1));
-    luafn *f = new_luafn(L, 1, d);
-    pcl_callback_state(L);
-    pc_curve *c = pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, luafn_free, f, &st);
-    if (!c) luafn_free(f);
+    pcl_luafn *f = keep_fn(L, 1, d);
+    pc_curve *c = pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, pcl_luafn_free, f, &st);
+    if (!c) pcl_luafn_free(f);
     return pcl_push_made(L, c, &st, NULL);
 }
 
@@ -313,9 +272,9 @@ static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed
                        const pc_piece *pc, int lua, int gidx) {
     int st;
     pcl_callback_state(L);
-    luafn *f = lua ? new_luafn(L, gidx, 1) : NULL;
-    pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, lua ? luag_eval : NULL, lua ? luafn_free : NULL, f, &st);
-    if (!c && f) luafn_free(f);
+    pcl_luafn *f = lua ? keep_fn(L, gidx, 1) : NULL;
+    pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, lua ? luag_eval : NULL, lua ? pcl_luafn_free : NULL, f, &st);
+    if (!c && f) pcl_luafn_free(f);
     return pcl_push_made(L, c, &st, kind);
 }
 
@@ -368,10 +327,7 @@ static int l_stroke_raw(lua_State *L) {
     int st = pc_stroke_build(&spec, pc, &bad);
     if (st != PC_OK) {
         lua_pushnil(L);
-        lua_pushinteger(L, st);
-        lua_pushinteger(L, bad + 1);
-        lua_pushstring(L, pc_strerror(st));
-        return 4;
+        return pcl_push_results(L, 0, "i i s", st, bad + 1, pc_strerror(st)) + 1;
     }
     for (int i = 0; !lua && !lua_isnil(L, 11) && i < np; i++) pc[i].g = g;
     return push_stroke(L, "stroke", d, np, closed, pc, lua, 11);
@@ -394,29 +350,13 @@ PCL_BODY(l_sphdir, a) {
 
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
-/* Argument #k past the domain of piece i's half-spline (s its own parameter, hi the bound above). */
-static int half_fail(lua_State *L, int k, const pc_piece *pc, double s, int i, double hi) {
-    int low = s < 0;
-    const char *deg = pcl_pushnum(L, low ? pc->g.h.n : pc->g.h.m), *bound = pcl_pushnum(L, low ? 0 : hi);
-    return pcl_argfail(L, k, "must be %s %s (piece %d's half-spline has the fractional degree %s = %s and "
-                       "does not extrapolate)", low ? "at least" : "at most", bound, i + 1, low ? "n" : "m", deg);
-}
-
-/* A status of an evaluation at t as the message the user reads: at infinity, a zero
- * derivative (zero: what it means, or NULL where the core's message stands), the others. */
-static int at_fail(lua_State *L, int st, double t, const char *zero) {
-    const char *ts = pcl_pushnum(L, t);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve is at infinity at t = %s", ts);
-    if (st == PC_EZERO && zero) return pcl_fail(L, "the derivative is zero at t = %s%s", ts, zero);
-    return pcl_raise_status(L, pcl_name(L), st);
-}
-
 /* the value at t of argument #1, or the error: a stroke's piece past its half-spline's reach */
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
     int st = pc_curve_eval_h(u->c, t, 0, h), i;
     double s;
+    char why[200];
     const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(u->c, t, &i, &s) : NULL;
-    if (pc) half_fail(L, 1, pc, s, i, u->c->t1);
+    if (pc) pcl_argfail(L, 1, "%s", pc_half_why(pc, s, i, u->c->t1, why, sizeof why));
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
 }
 
@@ -454,37 +394,34 @@ PCL_METHOD(c_xy, lcurve *u, a) {
     double h[PC_MAXDIM + 1];
     eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
-    if (h[d] == 0) return at_fail(L, PC_IMPROPER, a[0].x, NULL);
+    if (h[d] == 0) return pcl_check(L, PC_IMPROPER, pc_curve_why);
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k] / h[d]);
     return d;
 }
 
 /* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
- * "left" is asked for (the side may stand in the order's place) */
+ * "left" is asked for.  The side may stand in the order's place: read_order gives it in n. */
+static int read_order(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tostring(L, idx) : NULL;
+    if (s && strcmp(s, "left") && strcmp(s, "right"))
+        return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
+    out->x = s ? 1 : lua_tonumber(L, idx);
+    out->n = s ? (s[0] == 'l' ? -1 : 1) : 0;
+    return s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 && out->x <= PC_CURVE_MAXDEG);
+}
 static const char *const SIDES[] = {"left", "right", NULL};
-static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT},
+static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_order,
+    .expect = "a whole number from 1 to 64, or \"left\" / \"right\""},
     {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
 PCL_METHOD(c_deriv, lcurve *u, a) {
-    int order = 1, side = a[2].present ? (a[2].n ? 1 : -1) : 0;
-    double x = lua_tonumber(L, 3);
-    if (lua_type(L, 3) == LUA_TSTRING && !a[2].present) {
-        const char *s = lua_tostring(L, 3);
-        if (strcmp(s, "left") && strcmp(s, "right"))
-            return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
-        side = s[0] == 'l' ? -1 : 1;
-    } else if (a[1].present) {
-        if (lua_type(L, 3) != LUA_TNUMBER || x != floor(x) || x < 1 || x > PC_CURVE_MAXDEG)
-            return pcl_argfail(L, 2, "must be a whole number from 1 to %d, or \"left\" / \"right\", got %s",
-                               PC_CURVE_MAXDEG, pcl_shown(L, 3));
-        order = (int)x;
-    }
+    int order = a[1].present ? (int)a[1].x : 1, side = a[2].present ? (a[2].n ? 1 : -1) : a[1].n;
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
     int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
     if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
         return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
-    if (st != PC_OK) return at_fail(L, st, a[0].x, NULL);
-    pcl_pushvector(L, u->c->dim, out + (size_t)order * u->c->dim);
-    return 1;
+    pcl_check(L, st, pc_curve_why);
+    return pcl_push_results(L, u->c->dim, "v", out + (size_t)order * u->c->dim);
 }
 
 /* c:monomial([piece]): the power-basis coefficients of a piece in the curve's parameter:
@@ -509,35 +446,26 @@ PCL_METHOD(c_monomial, lcurve *u, a) {
     return 1;
 }
 
-/* c:tangent(t), c:normal(t) (pc_curve_frame) */
-static int unit_at(lua_State *L, int normal) {
-    pcl_val a[1] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
+/* c:tangent(t) and c:normal(t), one body told apart by the declared name (pc_curve_frame) */
+PCL_METHOD(c_frame, lcurve *u, a) {
+    int normal = !strcmp(pcl_name(L), "c:normal");
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
-    int st = pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL);
-    if (st == PC_ECOLLINEAR) return pcl_fail(L, "the curve is straight at t = %s (no principal normal)", pcl_pushnum(L, a[0].x));
-    if (st != PC_OK) return at_fail(L, st, a[0].x, normal ? "" : " (a cusp or a stop)");
-    pcl_pushvector(L, u->c->dim, normal ? nrm : e);
-    return 1;
+    pcl_check(L, pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL), pc_curve_why);
+    return pcl_push_results(L, u->c->dim, "v", normal ? nrm : e);
 }
-static int c_tangent(lua_State *L) { return unit_at(L, 0); }
-static int c_normal(lua_State *L) { return unit_at(L, 1); }
 
 PCL_METHOD(c_curvature, lcurve *u, a) {
-    double t = a[0].x, k;
-    int st = pc_curve_curvature(u->c, t, &k);
-    if (st != PC_OK) return at_fail(L, st, t, " (a cusp or a stop)");
-    lua_pushnumber(L, k);
-    return 1;
+    double k;
+    pcl_check(L, pc_curve_curvature(u->c, a[0].x, &k), pc_curve_why);
+    return pcl_push_results(L, 0, "n", k);
 }
 
 /* ---- operations --------------------------------------------------------------------------------- */
 
 /* The parameter of argument #1 strictly inside the domain. */
 static double inside(lua_State *L, lcurve *u, double t) {
-    if (!(t > u->c->t0 && t < u->c->t1))
-        pcl_argfail(L, 1, "must be inside the domain (%s, %s), got %s", pcl_pushnum(L, u->c->t0),
-                    pcl_pushnum(L, u->c->t1), pcl_pushnum(L, t));
+    char why[160];
+    if (pc_curve_inside_why(u->c, t, why, sizeof why) != PC_OK) pcl_argfail(L, 1, "%s", why);
     return t;
 }
 
@@ -546,15 +474,13 @@ PCL_METHOD(c_split, lcurve *u, a) {
     int st = pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
     pcl_pushcurve(L, l, u->kind);
-    pcl_pushcurve(L, r, u->kind);
-    return 2;
+    return pcl_pushcurve(L, r, u->kind) + 1;
 }
 
 static const pcl_arg ab_args[] = {A_NUM("a"), A_NUM("b"), PCL_END};
 PCL_METHOD(c_sub, lcurve *u, a) {
-    if (!(a[0].x >= u->c->t0 && a[1].x <= u->c->t1 && a[0].x < a[1].x))
-        return pcl_fail(L, "need t0 <= a < b <= t1 in the domain [%s, %s], got a = %s, b = %s",
-                        pcl_pushnum(L, u->c->t0), pcl_pushnum(L, u->c->t1), pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
+    char why[200];
+    if (pc_curve_part_why(u->c, a[0].x, a[1].x, why, sizeof why) != PC_OK) return pcl_fail(L, "%s", why);
     int st;
     return pcl_push_made(L, pc_curve_sub(u->c, a[0].x, a[1].x, &st), &st, u->kind);
 }
@@ -570,27 +496,21 @@ static const pcl_arg ab_opt[] = {A_NUMOPT("a", 0, NULL), A_NUMOPT("b", 0, NULL),
 PCL_METHOD(c_length, lcurve *u, a) {
     if (a[0].present != a[1].present) return pcl_fail(L, "give both ends a and b, or neither");
     double len;
-    int st = pc_curve_length(u->c, a[0].present ? a[0].x : u->c->t0, a[1].present ? a[1].x : u->c->t1, 1e-10, &len);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve passes through infinity: its length is infinite");
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    lua_pushnumber(L, len);
-    return 1;
+    pcl_check(L, pc_curve_length(u->c, a[0].present ? a[0].x : u->c->t0, a[1].present ? a[1].x : u->c->t1, 1e-10, &len),
+              pc_curve_why);
+    return pcl_push_results(L, 0, "n", len);
 }
 
 PCL_METHOD(c_bbox, lcurve *u, a) {
     double lo[PC_MAXDIM], hi[PC_MAXDIM];
-    int st = pc_curve_bbox(u->c, 1e-9, lo, hi);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the curve passes through infinity: it has no bounding box");
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    pcl_pushpoint(L, u->c->dim, lo);
-    pcl_pushpoint(L, u->c->dim, hi);
-    return 2;
+    pcl_check(L, pc_curve_bbox(u->c, 1e-9, lo, hi), pc_curve_why);
+    return pcl_push_results(L, u->c->dim, "p p", lo, hi);
 }
 
-/* A stroke's piece number at argument #1 (1..np), 0-based. */
-static int piece_no(lua_State *L, int np, const pcl_val *v) {
-    if (!(v->x >= 1 && v->x <= np))
-        pcl_argfail(L, 1, "must be a piece number 1..%d, got %s", np, pcl_pushnum(L, v->x));
+/* Argument #1 a whole number 1..n (what: "piece", "coordinate"), 0-based. */
+static int number_arg(lua_State *L, const char *what, int n, const pcl_val *v) {
+    char why[160];
+    if (pc_number_why(what, v->x, n, why, sizeof why) != PC_OK) pcl_argfail(L, 1, "%s", why);
     return (int)v->x - 1;
 }
 
@@ -601,12 +521,8 @@ PCL_METHOD(c_controls, lcurve *u, a) {
     int d = u->c->dim, np;
     const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
     if (pcs) {
-        const pc_piece *pc = &pcs[np == 1 && !a[0].present ? 0 : piece_no(L, np, &a[0])];
-        pcl_pushpoint(L, d, pc->a);
-        pcl_pushpoint(L, d, pc->p);
-        pcl_pushpoint(L, d, pc->q);
-        pcl_pushpoint(L, d, pc->b);
-        return 4;
+        const pc_piece *pc = &pcs[np == 1 && !a[0].present ? 0 : number_arg(L, "piece", np, &a[0])];
+        return pcl_push_results(L, d, "p p p p", pc->a, pc->p, pc->q, pc->b);
     }
     if (pc_curve_fourier_coefs(u->c, NULL)) return pcl_fail(L, "a Fourier curve has no pieces");
     if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no control points", u->kind);
@@ -620,31 +536,20 @@ PCL_METHOD(c_knots, lcurve *u, a) {
     return 1;
 }
 
-/* c:piece(i, t), c:piece_xy(i, t): a stroke's piece i at its own parameter t (any t: the
- * piece's formula extrapolates, where its smoothstep has values) */
+/* c:piece(i, t), c:piece_xy(i, t), one body told apart by the declared name: a stroke's piece i
+ * at its own parameter t (any t: the piece's formula extrapolates, where its smoothstep has
+ * values) */
 static const pcl_arg piece_args[] = {{.name = "i", .kind = PCL_INTEGER}, A_NUM("t"), PCL_END};
-static int piece_at(lua_State *L, double *x) {
-    pcl_val a[2] = {{0}};
-    lcurve *u = READ_METHOD(L, a);
-    int np;
+PCL_METHOD(c_piece, lcurve *u, a) {
+    int np, d = u->c->dim;
+    double x[PC_MAXDIM];
     const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
     if (!pcs) return pcl_fail(L, "a %s curve has no pieces", pc_curve_fourier_coefs(u->c, NULL) ? "Fourier" : u->kind);
-    int i = piece_no(L, np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
-    if (st == PC_EDOMAIN) half_fail(L, 2, &pcs[i], a[1].x, i, 1);
+    int i = number_arg(L, "piece", np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
+    char why[200];
+    if (st == PC_EDOMAIN) pcl_argfail(L, 2, "%s", pc_half_why(&pcs[i], a[1].x, i, 1, why, sizeof why));
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
-    return u->c->dim;
-}
-
-static int c_piece(lua_State *L) {
-    double x[PC_MAXDIM];
-    int d = piece_at(L, x);
-    pcl_pushpoint(L, d, x);
-    return 1;
-}
-
-static int c_piece_xy(lua_State *L) {
-    double x[PC_MAXDIM];
-    int d = piece_at(L, x);
+    if (!strcmp(pcl_name(L), "c:piece")) return pcl_push_results(L, d, "p", x);
     for (int k = 0; k < d; k++) lua_pushnumber(L, x[k]);
     return d;
 }
@@ -655,11 +560,10 @@ PCL_METHOD(c_coef, lcurve *u, a) {
     int n;
     const double *coef = pc_curve_fourier_coefs(u->c, &n);
     if (!coef) return pcl_fail(L, "not a Fourier curve");
-    int d = u->c->dim, m = n + 1;
-    if (!(a[0].x >= 1 && a[0].x <= d)) return pcl_argfail(L, 1, "must be a coordinate number 1..%d, got %s", d, pcl_pushnum(L, a[0].x));
+    int k = number_arg(L, "coordinate", u->c->dim, &a[0]), m = n + 1;
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);
-        const double *v = coef + (2 * ((int)a[0].x - 1) + ab) * m;
+        const double *v = coef + (2 * k + ab) * m;
         for (int j = 0; j < m; j++) {
             lua_pushnumber(L, v[j]);
             lua_rawseti(L, -2, j);
@@ -687,7 +591,8 @@ PCL_METHOD(c_flatten, lcurve *u, a) {
         return pcl_argfail(L, 2, "must be a map from %d-D to 2-D", u->c->dim);
     if (!f && u->c->dim != 2) return pcl_fail(L, "a %d-D curve needs a map to the plane (argument #2)", u->c->dim);
     pc_polyline pl = {0};
-    int st = pcl_flatten(L, u->c, u->c->t0, u->c->t1, 1, f, 0, a[0].x, &pl);
+    pcl_callback_state(L);
+    int st = pc_curve_flatten_parts(u->c, u->c->t0, u->c->t1, 1, f, a[0].x, &pl);
     if (st != PC_OK) {
         pc_polyline_free(&pl);
         return pcl_raise_status(L, pcl_name(L), st);
@@ -707,18 +612,12 @@ static int c_index(lua_State *L) {
     lcurve *u = self_curve(L, 1);
     if (!u) return 0;
     const char *k = lua_tostring(L, 2);
-    const pc_curve *c = u->c;
-    int np, n;
-    if (!k) k = "";
-    if (!strcmp(k, "dim")) lua_pushinteger(L, c->dim);
-    else if (!strcmp(k, "kind")) lua_pushstring(L, u->kind);
-    else if (!strcmp(k, "lo") || !strcmp(k, "t0")) lua_pushnumber(L, c->t0);
-    else if (!strcmp(k, "hi") || !strcmp(k, "t1")) lua_pushnumber(L, c->t1);
-    else if (!strcmp(k, "closed")) lua_pushboolean(L, c->closed);
-    else if (!strcmp(k, "degree") && c->kind != PC_CURVE_FUNC) lua_pushinteger(L, c->degree);
-    else if (!strcmp(k, "pieces") && pc_curve_stroke_pieces(c, &np)) lua_pushinteger(L, np);
-    else if (!strcmp(k, "pieces")) lua_pushinteger(L, c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 1);
-    else if (!strcmp(k, "n") && pc_curve_fourier_coefs(c, &n)) lua_pushinteger(L, n);
+    double v;
+    pc_field_type type = k ? pc_curve_field(u->c, k, &v) : PC_FIELD_NONE;
+    if (k && !strcmp(k, "kind")) lua_pushstring(L, u->kind);
+    else if (type == PC_FIELD_INTEGER) lua_pushinteger(L, (lua_Integer)v);
+    else if (type == PC_FIELD_NUMBER) lua_pushnumber(L, v);
+    else if (type == PC_FIELD_BOOLEAN) lua_pushboolean(L, v != 0);
     else {
         lua_pushvalue(L, 2);
         lua_rawget(L, lua_upvalueindex(1));
@@ -737,20 +636,14 @@ static int c_tostring(lua_State *L) {
 
 #define CTOR(nm, f, a, text) {.name = nm, .fn = f, .args = a, .result = "curve", .help = text}
 static const pcl_fn ctors[] = {
-    {.name = "bezier", .fn = l_bezier, .args = bezier_args, .sig = "bezier{P0, P1, ..., Pn} -> curve",
-     .help = "The Bezier curve of degree n over [0, 1] (2 to 65 points); weighted points w*P make it rational (a conic), vectors are control points at infinity."},
-    {.name = "bspline", .fn = l_bspline, .args = bspline_args, .sig = "bspline(points, degree [, \"open\"|\"uniform\"|\"periodic\"|knots]) -> curve",
-     .help = "The B-spline (NURBS with weighted points) of that degree; open knots by default, or a non-decreasing list of points + degree + 1 knots."},
-    {.name = "hermite", .fn = l_hermite, .args = hermite_args, .sig = "hermite(points, tangents [, {tin = {...}, u = {...}, closed = false}]) -> curve",
-     .help = "Piecewise cubic Hermite through the points with these derivatives (tin: the arriving ones, for corners); u: the parameters of the nodes."},
-    {.name = "cubic_spline", .fn = l_cubic_spline, .args = spline_args, .sig = "cubic_spline(points [, {ends = \"natural\"|\"clamped\"|\"periodic\", d0 = V, d1 = V, u = {...}}]) -> curve",
-     .help = "The C2 cubic spline through the points (parameters: accumulated chord lengths unless u is given)."},
+    {.name = "bezier", .fn = l_bezier, .args = bezier_args, .sig = "bezier{P0, P1, ..., Pn} -> curve", .help = "The Bezier curve of degree n over [0, 1] (2 to 65 points); weighted points w*P make it rational (a conic), vectors are control points at infinity."},
+    {.name = "bspline", .fn = l_bspline, .args = bspline_args, .sig = "bspline(points, degree [, \"open\"|\"uniform\"|\"periodic\"|knots]) -> curve", .help = "The B-spline (NURBS with weighted points) of that degree; open knots by default, or a non-decreasing list of points + degree + 1 knots."},
+    {.name = "hermite", .fn = l_hermite, .args = hermite_args, .sig = "hermite(points, tangents [, {tin = {...}, u = {...}, closed = false}]) -> curve", .help = "Piecewise cubic Hermite through the points with these derivatives (tin: the arriving ones, for corners); u: the parameters of the nodes."},
+    {.name = "cubic_spline", .fn = l_cubic_spline, .args = spline_args, .sig = "cubic_spline(points [, {ends = \"natural\"|\"clamped\"|\"periodic\", d0 = V, d1 = V, u = {...}}]) -> curve", .help = "The C2 cubic spline through the points (parameters: accumulated chord lengths unless u is given)."},
     CTOR("interpolate", l_interpolate, interpolate_args, "The polynomial curve of degree n - 1 through n points (2 to 65) at the given parameters (default evenly spaced in [0, 1])."),
     CTOR("curve", l_curve, curve_args, "A Lua function t -> point (or numbers) over [t0, t1] as a curve: it flattens, measures and draws like any other."),
-    {.name = "spline2", .fn = l_spline2, .args = spline2_args, .result = "curve",
-     .help = "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): Stepanov's example 5."},
-    {.name = "fourier", .fn = l_fourier, .args = fourier_args, .sig = "fourier({P1, P2, ..., P2n}) -> curve",
-     .help = "The closed curve through 2n points by a finite Fourier series (example 12), t in [0, 2 pi]."},
+    {.name = "spline2", .fn = l_spline2, .args = spline2_args, .result = "curve", .help = "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): Stepanov's example 5."},
+    {.name = "fourier", .fn = l_fourier, .args = fourier_args, .sig = "fourier({P1, P2, ..., P2n}) -> curve", .help = "The closed curve through 2n points by a finite Fourier series (example 12), t in [0, 2 pi]."},
     PCL_FN("sphdir", l_sphdir, sphdir_args, "vector", "The unit vector of longitude u1 and latitude u2 (example 33)."),
     PCL_END};
 
@@ -758,32 +651,25 @@ static const pcl_fn ctors[] = {
 static const pcl_fn methods[] = {
     METHOD("c:xy", c_xy, t_arg, "x, y", "The coordinates of the point at t as numbers."),
     METHOD("c:eval", c_call, t_or_eq, "point", "The point at t, as c(t)."),
-    {.name = "c:deriv", .fn = c_deriv, .args = deriv_args, .sig = "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector", .self = self_curve, .selftype = "curve",
-     .help = "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there."},
-    {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve",
-     .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
-    METHOD("c:tangent", c_tangent, t_arg, "vector", "The unit tangent."),
-    METHOD("c:normal", c_normal, t_arg, "vector", "The unit principal normal (in the plane: the tangent turned by +90 degrees)."),
+    {.name = "c:deriv", .fn = c_deriv, .args = deriv_args, .sig = "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector", .self = self_curve, .selftype = "curve", .help = "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there."},
+    {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve", .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
+    METHOD("c:tangent", c_frame, t_arg, "vector", "The unit tangent."),
+    METHOD("c:normal", c_frame, t_arg, "vector", "The unit principal normal (in the plane: the tangent turned by +90 degrees)."),
     METHOD("c:curvature", c_curvature, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
     METHOD("c:split", c_split, t_arg, "left, right", "The two parts at t (de Casteljau, knot insertion), of the same kind."),
     METHOD("c:sub", c_sub, ab_args, "curve", "The part over [a, b], of the same kind."),
     METHOD("c:insert_knot", c_insert_knot, u_arg, "curve", "The same B-spline with the knot u inserted (one more control point)."),
-    {.name = "c:length", .fn = c_length, .args = ab_opt, .sig = "c:length([a, b]) -> number", .self = self_curve, .selftype = "curve",
-     .help = "The arc length over the domain or [a, b] (adaptive Gauss-Legendre)."},
+    {.name = "c:length", .fn = c_length, .args = ab_opt, .sig = "c:length([a, b]) -> number", .self = self_curve, .selftype = "curve", .help = "The arc length over the domain or [a, b] (adaptive Gauss-Legendre)."},
     METHOD("c:bbox", c_bbox, NULL, "lo, hi", "The corners of the axis-aligned bounding box."),
-    {.name = "c:controls", .fn = c_controls, .args = i_opt, .sig = "c:controls() -> {values}\nc:controls(i) -> A, P, Q, B", .self = self_curve, .selftype = "curve",
-     .help = "The control values (weighted as given); for a stroke, the quadrilateral of piece i."},
+    {.name = "c:controls", .fn = c_controls, .args = i_opt, .sig = "c:controls() -> {values}\nc:controls(i) -> A, P, Q, B", .self = self_curve, .selftype = "curve", .help = "The control values (weighted as given); for a stroke, the quadrilateral of piece i."},
     METHOD("c:knots", c_knots, NULL, "{numbers}", "The knot vector of a B-spline, or the breakpoints of pieces."),
     METHOD("c:piece", c_piece, piece_args, "point", "A stroke's piece i at its own parameter t."),
-    METHOD("c:piece_xy", c_piece_xy, piece_args, "x, y", "The coordinates of a stroke's piece i at its own parameter t."),
+    METHOD("c:piece_xy", c_piece, piece_args, "x, y", "The coordinates of a stroke's piece i at its own parameter t."),
     METHOD("c:coef", c_coef, k_opt, "a, b", "The Fourier coefficient lists of coordinate k of a fourier curve."),
-    {.name = "c:map", .fn = c_map, .args = f_arg, .sig = "c:map(f) -> curve | f(c)", .self = self_curve, .selftype = "curve",
-     .help = "The image under a map: control points mapped exactly, so a projective map keeps a rational curve rational."},
+    {.name = "c:map", .fn = c_map, .args = f_arg, .sig = "c:map(f) -> curve | f(c)", .self = self_curve, .selftype = "curve", .help = "The image under a map: control points mapped exactly, so a projective map keeps a rational curve rational."},
     METHOD("c:flatten", c_flatten, flatten_args, "{polylines}", "Adaptive polylines within tol of the curve (projected by map to the plane), broken where the curve passes through infinity."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "c", .fn = c_call, .args = t_or_eq, .result = "point", .key = "__call", .topic = "c(t)",
-                               .callname = 1, .self = self_curve, .selftype = "curve",
-                               .help = "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97)."}, PCL_END};
+static const pcl_fn call[] = {{.name = "c", .fn = c_call, .args = t_or_eq, .result = "point", .key = "__call", .topic = "c(t)", .callname = 1, .self = self_curve, .selftype = "curve", .help = "The point of a curve at parameter t (a vector where a rational curve is at infinity). With t a scalar equation (param \"t\", t^2, ...) a single-piece Bezier curve gives the composed point equation: conic.ed(A, B, C, k)(t) is (2.97)."}, PCL_END};
 
 void pcl_open_curves(lua_State *L) {
     int module = lua_gettop(L);

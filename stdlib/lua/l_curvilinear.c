@@ -1,7 +1,7 @@
 /* Binding of Stepanov's coordinate maps and scalar numerics (stdlib/books/stepanov/curvilinear.h,
  * numeric.h), and the numeric helpers of stdlib/lua/curvilinear.lua in _tk. */
 #include "pcl_args.h"
-#include "pcl_tk.h"
+#include "pcl_core.h"
 #include "curvilinear.h"
 #include "numeric.h"
 
@@ -14,14 +14,12 @@ static const char ORESME_TAG = 'o';   /* its address tags the type (PCL_SELF_TAG
 #define A_PLACE(nm, fl) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_INF | (fl)}
 static const pcl_arg squash_args[] = {A_PLACE("p", 0), A_PLACE("q", PCL_OPT), PCL_END};
 
-static int squash_with(lua_State *L, double (*f)(double)) {
-    pcl_val a[2] = {{0}};
-    PCL_READ(L, a);
+/* squash and squash01, one body told apart by the declared name */
+PCL_BODY(l_squash, a) {
+    double (*f)(double) = strcmp(pcl_name(L), "squash") ? pc_squash01 : pc_squash;
     for (int i = 0; i < 1 + a[1].present; i++) lua_pushnumber(L, f(a[i].x));
     return 1 + a[1].present;
 }
-static int l_squash(lua_State *L) { return squash_with(L, pc_squash); }
-static int l_squash01(lua_State *L) { return squash_with(L, pc_squash01); }
 
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
@@ -189,72 +187,46 @@ PCL_BODY(l_bilinear, a) {
 }
 
 /* _tk.frame_point(o, e, xi, eta), _tk.frame_coords(o, e, x) -> xi, eta | nil, message,
- * _tk.patch_blend(u0, u2, ...): the pairs as numbers x1..x9 (curvilinear.lua) */
+ * _tk.patch_blend(u0, u2, ...): the pairs as numbers x1..x9 (curvilinear.lua), one body told
+ * apart by the declared name */
 #define X(k) A_NUM("x" #k)
 static const pcl_arg six_args[] = {X(1), X(2), X(3), X(4), X(5), X(6), PCL_END};
 static const pcl_arg nine_args[] = {X(1), X(2), X(3), X(4), X(5), X(6), X(7), X(8), X(9), PCL_END};
-static void numbers(lua_State *L, int n, double *x) {
-    pcl_val a[9] = {0};
-    PCL_READ(L, a);
-    for (int i = 0; i < n; i++) x[i] = a[i].x;
-}
-static int pair(lua_State *L, const double *out) {
-    lua_pushnumber(L, out[0]);
-    lua_pushnumber(L, out[1]);
-    return 2;
-}
-
-static int l_frame_point(lua_State *L) {
-    double x[6], out[2];
-    numbers(L, 6, x);
-    pc_frame_point(x, x + 2, x[4], x[5], out);
-    return pair(L, out);
-}
-
-static int l_frame_coords(lua_State *L) {
-    double x[6], out[2];
-    numbers(L, 6, x);
-    int st = pc_frame_coords(x, x + 2, x + 4, &out[0], &out[1]);
-    if (st == PC_OK) return pair(L, out);
-    lua_pushnil(L);
-    lua_pushstring(L, pc_strerror(st));
-    return 2;
-}
-
-static int l_patch_blend(lua_State *L) {
+PCL_BODY(l_frame, a) {
+    const char *name = pcl_name(L);
+    int n = strcmp(name, "_tk.patch_blend") ? 6 : 9, st = PC_OK;
     double x[9], out[2];
-    numbers(L, 9, x);
-    pc_patch_blend(x, x + 2, x[4], x[5], x[6], x[7], x[8], out);
-    return pair(L, out);
+    for (int i = 0; i < n; i++) x[i] = a[i].x;
+    if (n == 9) pc_patch_blend(x, x + 2, x[4], x[5], x[6], x[7], x[8], out);
+    else if (!strcmp(name, "_tk.frame_point")) pc_frame_point(x, x + 2, x[4], x[5], out);
+    else st = pc_frame_coords(x, x + 2, x + 4, &out[0], &out[1]);
+    if (st == PC_OK) return pcl_push_results(L, 0, "n n", out[0], out[1]);
+    lua_pushnil(L);
+    return pcl_push_results(L, 0, "s", pc_strerror(st)) + 1;
 }
 
 static const pcl_fn fns[] = {
     PCL_FN("squash", l_squash, squash_args, "numbers", "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28)."),
-    PCL_FN("squash01", l_squash01, squash_args, "numbers", "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument."),
+    PCL_FN("squash01", l_squash, squash_args, "numbers", "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument."),
     PCL_FN("oblique", l_oblique, oblique_args, "map", "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up."),
     PCL_FN("projection", l_projection, projection_args, "map", "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0."),
-    {.name = "oresme", .fn = l_oresme, .args = oresme_args, .result = "o", .sig = "oresme(lambda [, m [, y0, y1]]) -> o",
-     .help = "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o."},
+    {.name = "oresme", .fn = l_oresme, .args = oresme_args, .result = "o", .sig = "oresme(lambda [, m [, y0, y1]]) -> o", .help = "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o."},
     PCL_FN("bisect", l_bisect, bisect_args, "x, iterations", "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default)."),
     PCL_END};
-static const pcl_fn ocall[] = {{.name = "o", .fn = oresme_call, .args = t_arg, .result = "number", .key = "__call",
-                                .topic = "o(t)", .callname = 1, .self = self_oresme, .selftype = "sequence made by oresme",
-                                .help = "The value at t in [0, 1]: y[floor(t 2^m)], the ends outside (a step function)."}, PCL_END};
+static const pcl_fn ocall[] = {{.name = "o", .fn = oresme_call, .args = t_arg, .result = "number", .key = "__call", .topic = "o(t)", .callname = 1, .self = self_oresme, .selftype = "sequence made by oresme", .help = "The value at t in [0, 1]: y[floor(t 2^m)], the ends outside (a step function)."}, PCL_END};
 
 void pcl_open_curvilinear(lua_State *L) {
     int module = lua_gettop(L);
-    luaL_newmetatable(L, ORESME_MT);
     static const luaL_Reg ometa[] = {{"__index", oresme_index}, {"__len", oresme_len},
                                      {"__tostring", oresme_tostring}, {NULL, NULL}};
-    luaL_setfuncs(L, ometa, 0);
-    pcl_register(L, -1, ocall, 0);
+    pcl_open_type(L, ORESME_MT, ometa, ocall, NULL, NULL);
     lua_settop(L, module);
     pcl_register(L, module, fns, 0);
     pcl_private(L, module);
     static const pcl_fn priv[] = {PCL_FN("bilinear", l_bilinear, corner_args, NULL, NULL),
-                                  PCL_FN("_tk.frame_point", l_frame_point, six_args, NULL, NULL),
-                                  PCL_FN("_tk.frame_coords", l_frame_coords, six_args, NULL, NULL),
-                                  PCL_FN("_tk.patch_blend", l_patch_blend, nine_args, NULL, NULL), PCL_END};
+                                  PCL_FN("_tk.frame_point", l_frame, six_args, NULL, NULL),
+                                  PCL_FN("_tk.frame_coords", l_frame, six_args, NULL, NULL),
+                                  PCL_FN("_tk.patch_blend", l_frame, nine_args, NULL, NULL), PCL_END};
     pcl_register_private(L, -1, priv);
     lua_settop(L, module);
 }

@@ -11,8 +11,9 @@
 /* The core object of a curve / surface userdata at idx, or NULL (maps: pcl_tomap, pcl.h). */
 pc_curve *pcl_tocurve(lua_State *L, int idx);
 pc_surface *pcl_tosurface(lua_State *L, int idx);
-/* Push a curve / surface object owning the reference c (kind: the constructor's name, static). */
-void pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
+/* Push a curve / surface object owning the reference c (kind: the constructor's name, static);
+ * pcl_pushcurve returns 1, the count pushed. */
+int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
 void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind);
 /* Push the surface a core constructor made (kind: the constructor's name, static) and return
  * 1, or, when it made none (s NULL), raise its status *st (l_surface.c): pcl_push_made's twin. */
@@ -35,18 +36,11 @@ pc_map *pcl_camera(lua_State *L);
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y);
 /* pc_screen_map on the current canvas. */
 void pcl_screen_map(lua_State *L, const pc_map *f, pc_map *out);
-/* pc_curve_flatten_parts of c over [a, b] through f, and WINDOW and VIEW when screen is set
- * (the tolerance is then in pixels and the polyline in screen coordinates). */
-int pcl_flatten(lua_State *L, pc_curve *c, double a, double b, int pieces, const pc_map *f,
-                int screen, double tol, pc_polyline *out);
 /* The projection to use for drawing a dim-D object with the map at idx (none or nil: the
  * camera); raises a clear error when there is none. */
 const pc_map *pcl_drawing_map(lua_State *L, int idx, int dim, const char *fname);
-/* pc_polyline_stroke on the current canvas (the message of a failure in the canvas). */
-int pcl_draw_polyline(lua_State *L, const pc_polyline *pl, int color, int closed);
-/* Draw c as one path: flattened through f (NULL: c is 2-D), WINDOW and VIEW to within tol
- * pixels from `pieces` equal parts, into the scene of a hidden-line camera or onto the canvas,
- * closed when c is or `closed` is set.  Raises errors naming fname. */
+/* pc_curve_draw (curve_path.h) of c through f (NULL: c is 2-D) onto the canvas, or into the
+ * scene of a hidden-line camera; raises errors naming fname. */
 void pcl_draw_curve(lua_State *L, pc_curve *c, const pc_map *f, int pieces, double tol,
                     int color, int closed, const char *fname);
 

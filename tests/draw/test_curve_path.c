@@ -6,6 +6,7 @@
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
+#include <string.h>
 #include "curve_path.h"
 
 /* WINDOW (0, 0)-(10, 10) on 11 x 11 pixels: world (x, y) is pixel (x, 10 - y), y up */
@@ -94,6 +95,50 @@ static void test_stroke(void **state) {
     pc_canvas_free(cv);
 }
 
+/* pc_curve_draw strokes the segment from world (1, 5) to (9, 5) on row 5, pixels 1..9; a 3-D
+ * curve without a map is refused with the status alone */
+static void test_curve_draw(void **state) {
+    (void)state;
+    pc_canvas *cv = pc_canvas_new(11, 11, 16);
+    assert_int_equal(pc_window(cv, 0, 0, 10, 10, 0), PC_OK);
+    double cp[] = {1, 5, 1, 9, 5, 1}, cp3[] = {0, 0, 0, 1, 1, 1, 1, 1};
+    int st;
+    char why[200];
+    pc_curve *c = pc_curve_bezier(2, 2, cp, &st), *c3 = pc_curve_bezier(3, 2, cp3, &st);
+    assert_int_equal(pc_curve_draw(cv, NULL, 0, c, NULL, 1, 0.25, 12, 0, why, sizeof why), PC_OK);
+    assert_string_equal(why, "");
+    for (int x = 0; x < 11; x++) assert_int_equal(pc_point(cv, x, 5), x >= 1 && x <= 9 ? 12 : 0);
+    assert_int_equal(pc_point(cv, 5, 6), 0);
+    assert_int_equal(pc_curve_draw(cv, NULL, 0, c3, NULL, 1, 0.25, 12, 0, why, sizeof why), PC_EDIM);
+    assert_string_equal(why, "");
+    pc_curve_release(c);
+    pc_curve_release(c3);
+    pc_canvas_free(cv);
+}
+
+/* the map for a dim-D object: a given map checked, else the camera of that dimension */
+static void test_drawing_map(void **state) {
+    (void)state;
+    pc_map cam3, plane;
+    double axes[6] = {1, 0, 0, 1, 0, 0}, o[2] = {0, 0};
+    assert_int_equal(pc_map_frame(&cam3, 2, 3, o, axes), PC_OK);
+    pc_map_identity(&plane, 2);
+    char why[160];
+    assert_ptr_equal(pc_drawing_map(&cam3, 1, NULL, 3, why, sizeof why), &cam3);
+    assert_null(pc_drawing_map(&cam3, 1, NULL, 2, why, sizeof why));
+    assert_string_equal(why, "map must be a map from 2-D to 2-D");
+    assert_null(pc_drawing_map(NULL, 1, &cam3, 3, why, sizeof why));
+    assert_string_equal(why, "map must be a map from 3-D to 2-D");
+    assert_ptr_equal(pc_drawing_map(NULL, 0, &cam3, 3, why, sizeof why), &cam3);
+    assert_null(pc_drawing_map(NULL, 0, &cam3, 2, why, sizeof why));   /* a 3-D camera: 2-D as it is */
+    assert_string_equal(why, "");
+    assert_ptr_equal(pc_drawing_map(NULL, 0, &plane, 2, why, sizeof why), &plane);
+    assert_null(pc_drawing_map(NULL, 0, NULL, 3, why, sizeof why));
+    assert_string_equal(why, "a 3-D object needs a projection: set one with camera(f) or give map = f");
+    assert_null(pc_drawing_map(NULL, 0, &plane, 3, why, sizeof why));
+    assert_string_equal(why, "the camera takes 2-D points, but this is 3-D");
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_screen_map),
@@ -101,6 +146,8 @@ int main(void) {
         cmocka_unit_test(test_flatten_parts),
         cmocka_unit_test(test_flatten_needs_map),
         cmocka_unit_test(test_stroke),
+        cmocka_unit_test(test_curve_draw),
+        cmocka_unit_test(test_drawing_map),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

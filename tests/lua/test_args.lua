@@ -84,7 +84,7 @@ err(function() plot(diag, {t = {0, 1}, widht = 3}) end, "plot: unknown option 'w
 err(function() stroke{nodes = {P(0, 0), P(1, 1)}, closd = true} end, "stroke: unknown option 'closd' (did you mean 'closed'?)", "stroke{closd}")
 err(function() cd:each{tt = {0, 1, .5}} end, "c:each: unknown option 'tt' (did you mean 't'?)", "c:each{tt}")
 err(function() plot(diag, {t = {0, 1}, color = {}}) end,
-    "plot: option 'color' must be a colour number of the screen or \"#rrggbb\", got table", "plot's colour names plot, not its helper")
+    "plot: option 'color' must be a colour number 0..15 or \"#rrggbb\", got table", "plot's colour names plot, not its helper")
 screen(12)
 plot(diag, {t = {0, 100}, colour = 4})
 eq(point(50, 50), 4, "plot{colour = 4} draws in colour 4")

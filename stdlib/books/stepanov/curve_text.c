@@ -24,3 +24,18 @@ size_t pc_curve_text(const pc_curve *c, const char *kind, char *buf, size_t size
                        c->dim, c->degree, c->ncp, t0, t1);
     return len < 0 ? 0 : (size_t)len;
 }
+
+pc_field_type pc_curve_field(const pc_curve *c, const char *key, double *v) {
+    int np, n;
+    pc_field_type type = PC_FIELD_INTEGER;
+    if (!strcmp(key, "dim")) *v = c->dim;
+    else if (!strcmp(key, "lo") || !strcmp(key, "t0")) *v = c->t0, type = PC_FIELD_NUMBER;
+    else if (!strcmp(key, "hi") || !strcmp(key, "t1")) *v = c->t1, type = PC_FIELD_NUMBER;
+    else if (!strcmp(key, "closed")) *v = c->closed, type = PC_FIELD_BOOLEAN;
+    else if (!strcmp(key, "degree") && c->kind != PC_CURVE_FUNC) *v = c->degree;
+    else if (!strcmp(key, "pieces") && pc_curve_stroke_pieces(c, &np)) *v = np;
+    else if (!strcmp(key, "pieces")) *v = c->kind == PC_CURVE_BEZIER ? c->nknots - 1 : 1;
+    else if (!strcmp(key, "n") && pc_curve_fourier_coefs(c, &n)) *v = n;
+    else type = PC_FIELD_NONE;
+    return type;
+}

@@ -2,7 +2,9 @@
 #include "spline.h"
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
+#include "names.h"
 
 void pc_dir2(double u, int ccw, double out[2]) {
     out[0] = cos(u);
@@ -275,4 +277,13 @@ const pc_piece *pc_stroke_past(const pc_curve *c, double s, int *piece, double *
     *t = s - *piece;
     const pc_piece *pc = &sc->pieces[*piece];
     return pc->g.kind == PC_G_HALF && pc_gfun_check(&pc->g, *t) != PC_OK ? pc : NULL;
+}
+
+const char *pc_half_why(const pc_piece *pc, double s, int i, double hi, char *why, size_t size) {
+    int low = s < 0;
+    char deg[40], bound[40];
+    snprintf(why, size, "must be %s %s (piece %d's half-spline has the fractional degree %s = %s and does not "
+             "extrapolate)", low ? "at least" : "at most", pc_num_text(low ? 0 : hi, bound, sizeof bound), i + 1,
+             low ? "n" : "m", pc_num_text(low ? pc->g.h.n : pc->g.h.m, deg, sizeof deg));
+    return why;
 }

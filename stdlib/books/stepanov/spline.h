@@ -91,5 +91,9 @@ int pc_stroke_piece_at(const pc_curve *c, int i, double t, double *out);
  * ends extrapolating) is of fractional degree and does not extrapolate there: that piece, *i
  * its index and *t its own parameter; else NULL. */
 const pc_piece *pc_stroke_past(const pc_curve *c, double s, int *i, double *t);
+/* Why the parameter s of piece pc (index i), below 0 or above hi, is past the reach of its
+ * half-spline, into why (returned): "must be at least 0 (piece 1's half-spline has the
+ * fractional degree n = 2.5 and does not extrapolate)". */
+const char *pc_half_why(const pc_piece *pc, double s, int i, double hi, char *why, size_t size);
 
 #endif

@@ -49,7 +49,37 @@ static void test_kinds(void **state) {
     for (int i = 0; i < 6; i++) pc_curve_release(all[i]);
 }
 
+/* the fields a script reads: c.dim, c.t0, c.closed, c.degree, c.pieces, c.n */
+static void test_fields(void **state) {
+    (void)state;
+    int st;
+    double v, cp[] = {0, 0, 1, 1, 0, 1, 1, 1, 1, 2, -.5, 1}, sq[8] = {0, 0, 3, 0, 3, 3, 0, 3};
+    pc_curve *b = pc_curve_bezier(2, 4, cp, &st), *f = pc_curve_func(1, -1, 2.5, 0, half, NULL, NULL, &st);
+    pc_curve *four = pc_curve_fourier(2, 2, sq, &st);
+    assert_int_equal(pc_curve_field(b, "dim", &v), PC_FIELD_INTEGER);
+    assert_float_equal(v, 2, 0);
+    assert_int_equal(pc_curve_field(b, "degree", &v), PC_FIELD_INTEGER);
+    assert_float_equal(v, 3, 0);
+    assert_int_equal(pc_curve_field(b, "pieces", &v), PC_FIELD_INTEGER);
+    assert_float_equal(v, 1, 0);
+    assert_int_equal(pc_curve_field(b, "closed", &v), PC_FIELD_BOOLEAN);
+    assert_float_equal(v, 0, 0);
+    assert_int_equal(pc_curve_field(f, "t0", &v), PC_FIELD_NUMBER);
+    assert_float_equal(v, -1, 0);
+    assert_int_equal(pc_curve_field(f, "hi", &v), PC_FIELD_NUMBER);
+    assert_float_equal(v, 2.5, 0);
+    assert_int_equal(pc_curve_field(f, "degree", &v), PC_FIELD_NONE);
+    assert_int_equal(pc_curve_field(f, "n", &v), PC_FIELD_NONE);
+    assert_int_equal(pc_curve_field(four, "n", &v), PC_FIELD_INTEGER);
+    assert_float_equal(v, 2, 0);
+    assert_int_equal(pc_curve_field(four, "closed", &v), PC_FIELD_BOOLEAN);
+    assert_float_equal(v, 1, 0);
+    assert_int_equal(pc_curve_field(b, "eval", &v), PC_FIELD_NONE);
+    pc_curve *all[] = {b, f, four};
+    for (int i = 0; i < 3; i++) pc_curve_release(all[i]);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_kinds)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_kinds), cmocka_unit_test(test_fields)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

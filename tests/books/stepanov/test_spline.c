@@ -308,6 +308,13 @@ static void test_stroke_past(void **state) {
     assert_true(pc_stroke_past(c, -.5, &i, &t) == pc_curve_stroke_pieces(c, NULL));
     assert_int_equal(i, 0);
     NEAR(t, -.5, 0);
+    char why[200];
+    assert_string_equal(pc_half_why(&pc, t, i, 1, why, sizeof why),
+                        "must be at least 0 (piece 1's half-spline has the fractional degree n = 2.5 and does not "
+                        "extrapolate)");
+    assert_string_equal(pc_half_why(&pc, 3, 1, 2, why, sizeof why),
+                        "must be at most 2 (piece 2's half-spline has the fractional degree m = 2 and does not "
+                        "extrapolate)");
     assert_null(pc_stroke_past(c, .5, &i, &t));
     assert_int_equal(pc_stroke_piece_at(c, 0, -.5, X), PC_EDOMAIN);
     assert_int_equal(pc_stroke_piece_at(c, 0, .5, X), PC_OK);

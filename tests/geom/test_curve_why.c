@@ -1,0 +1,92 @@
+/* The explanations of the curve type's failures (curve_why.h): the methods' rows, and the
+ * B-spline's degree and knot conditions with the numbers that break them. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include "curve_why.h"
+
+static void test_method_rows(void **state) {
+    (void)state;
+    const pc_why *w = pc_why_find(pc_curve_why, "c:normal", PC_ECOLLINEAR);
+    assert_non_null(w);
+    assert_int_equal(w->arg, -2);
+    assert_string_equal(w->text, "the curve is straight at t = %s (no principal normal)");
+    w = pc_why_find(pc_curve_why, "c:tangent", PC_EZERO);
+    assert_string_equal(w->text, "the derivative is zero at t = %s (a cusp or a stop)");
+    w = pc_why_find(pc_curve_why, "c:length", PC_IMPROPER);
+    assert_int_equal(w->arg, 0);
+    assert_string_equal(w->text, "the curve passes through infinity: its length is infinite");
+    assert_null(pc_why_find(pc_curve_why, "c:deriv", PC_EZERO));   /* the core's own message stands */
+}
+
+static void test_degree(void **state) {
+    (void)state;
+    char why[160];
+    assert_int_equal(pc_bspline_degree_why(4, 3, 0, why, sizeof why), PC_OK);
+    assert_int_equal(pc_bspline_degree_why(4, 4, 1, why, sizeof why), PC_OK);
+    assert_int_equal(pc_bspline_degree_why(4, 4, 0, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be an integer from 1 to 3 (fewer than the 4 points), got 4");
+    assert_int_equal(pc_bspline_degree_why(4, 0, 1, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be an integer from 1 to 4 (the number of points), got 0");
+    assert_int_equal(pc_bspline_degree_why(100, 70, 0, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be an integer from 1 to 64 (fewer than the 100 points), got 70");
+}
+
+static void test_knots(void **state) {
+    (void)state;
+    char why[160];
+    const double good[] = {0, 0, 0, 1, 2, 2, 2}, back[] = {0, 0, 1, 0, 2, 2, 2}, flat[] = {0, 0, 0, 0, 0, 0, 1};
+    assert_int_equal(pc_knots_why(4, 2, 7, good, why, sizeof why), PC_OK);
+    assert_int_equal(pc_knots_why(4, 2, 6, good, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must hold points + degree + 1 = 7 knots, got 6");
+    assert_int_equal(pc_knots_why(4, 2, 7, back, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be non-decreasing, but knot [4] = 0 is less than knot [3] = 1");
+    assert_int_equal(pc_knots_why(4, 2, 7, flat, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "leaves no domain: knot [3] = 0 (the start) must be less than knot [5] = 0 (the end)");
+}
+
+static void test_params(void **state) {
+    (void)state;
+    char why[160];
+    const double up[] = {0, 1, 2}, back[] = {0, 2, 1};
+    assert_int_equal(pc_params_why(3, 3, up, 0, why, sizeof why), PC_OK);
+    assert_int_equal(pc_params_why(3, 2, up, 0, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must hold 3 numbers (one per point), got 2");
+    assert_int_equal(pc_params_why(3, 3, back, 0, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must increase, but [3] = 1 follows [2] = 2");
+    assert_int_equal(pc_params_why(3, 3, back, 1, why, sizeof why), PC_OK);   /* any order */
+}
+
+/* piece and coordinate numbers, a parameter inside the domain, a part of it */
+static void test_ranges(void **state) {
+    (void)state;
+    char why[200];
+    double cp[] = {0, 0, 1, 4, 0, 1};
+    int st;
+    pc_curve *c = pc_curve_bezier(2, 2, cp, &st);
+    assert_int_equal(pc_number_why("piece", 3, 3, why, sizeof why), PC_OK);
+    assert_int_equal(pc_number_why("piece", 4, 3, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be a piece number 1..3, got 4");
+    assert_int_equal(pc_number_why("coordinate", 0, 2, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be a coordinate number 1..2, got 0");
+    assert_int_equal(pc_curve_inside_why(c, 0.5, why, sizeof why), PC_OK);
+    assert_int_equal(pc_curve_inside_why(c, 1, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "must be inside the domain (0, 1), got 1");
+    assert_int_equal(pc_curve_part_why(c, 0, 1, why, sizeof why), PC_OK);
+    assert_int_equal(pc_curve_part_why(c, 0.5, 0.25, why, sizeof why), PC_EDOMAIN);
+    assert_string_equal(why, "need t0 <= a < b <= t1 in the domain [0, 1], got a = 0.5, b = 0.25");
+    assert_int_equal(pc_curve_part_why(c, -1, 0.5, why, sizeof why), PC_EDOMAIN);
+    pc_curve_release(c);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_method_rows),
+        cmocka_unit_test(test_degree),
+        cmocka_unit_test(test_knots),
+        cmocka_unit_test(test_params),
+        cmocka_unit_test(test_ranges),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
