@@ -38,19 +38,8 @@ static const pcl_arg figure_args[] = {
  * look for every output, at that size; a width alone keeps the window's aspect. */
 PCL_BODY(l_figure, a) {   /* options, width, height, dpi, font, size */
     pc_canvas *c = pcl_canvas(L);
-    pc_figure f = c->figure;
-    if (a[1].present || a[2].present) {
-        f.width = a[1].present ? a[1].x : 0;
-        f.height = a[2].present ? a[2].x : 0;
-    }
-    if (a[3].present) f.dpi = a[3].x;
-    if (a[4].present) {
-        if (strlen(a[4].s) >= sizeof f.font) return pcl_keyfail(L, "font", "is too long");
-        strcpy(f.font, a[4].s);
-    }
-    if (a[5].present) f.size = a[5].x;
-    f.frame = 1;   /* a figure of its own: framed to its content when it sets no window */
-    return pcl_check_canvas(L, c, pc_figure_set(c, &f));   /* the core's message, its "figure: " once */
+    pc_figure_opts o = {a[1].present, a[2].present, a[3].present, a[5].present, a[1].x, a[2].x, a[3].x, a[5].x, a[4].s};
+    return pcl_check_canvas(L, c, pc_figure_options(c, &o));   /* the core's message, its "figure: " once */
 }
 
 /* A font the print look can set: a name fontconfig knows. */
@@ -75,8 +64,7 @@ void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *k) {
 }
 
 static const pcl_fn fns[] = {
-    PCL_FN("figure", l_figure, figure_args, NULL,
-           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt. Without a window or a screen() the coordinates are world units with y up and the figure is framed to what is drawn, at true shape."),
+    PCL_FN("figure", l_figure, figure_args, NULL, "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt. Without a window or a screen() the coordinates are world units with y up and the figure is framed to what is drawn, at true shape."),
     PCL_END};
 
 void pcl_open_figure(lua_State *L) { pcl_register(L, -1, fns, 0); }

@@ -4,9 +4,8 @@
  * and map.view; text{units = "device"} in front of the drawing binding's text.  Points are
  * 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene (pcl_scene.h):
  * the strokes of a camera with hidden lines, resolved when the picture is written. */
-#include "pcl_args.h"
 #include "pcl_draw.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_scene.h"
 #include "layout.h"
 #include "print.h"
@@ -51,15 +50,9 @@ static int l_placed_labels(lua_State *L) {
     if (!p) return pcl_fail(L, "out of memory");
     lua_createtable(L, (int)n, 0);
     for (size_t k = 0; k < n; k++) {
-        const double box[4] = {p[k].box.x0, p[k].box.y0, p[k].box.x1 - p[k].box.x0, p[k].box.y1 - p[k].box.y0};
-        lua_createtable(L, 0, 7);
-        lua_pushlstring(L, p[k].text, p[k].len);
-        lua_setfield(L, -2, "text");
-        pcl_set_fields(L, 4, (const char *const[]){"x", "y", "w", "h"}, box, 0);
-        lua_pushstring(L, p[k].side);
-        lua_setfield(L, -2, "side");
-        lua_pushboolean(L, p[k].autoplaced);
-        lua_setfield(L, -2, "auto");
+        const pc_box2 *b = &p[k].box;
+        pcl_push_results(L, 0, "text=s x=n y=n w=n h=n side=s auto=b", p[k].text, b->x0, b->y0, b->x1 - b->x0,
+                         b->y1 - b->y0, p[k].side, p[k].autoplaced);
         lua_rawseti(L, -2, (lua_Integer)k + 1);
     }
     free(p);
@@ -292,25 +285,12 @@ static const pcl_arg axes_keys[] = {A_NUMBERS("x", 2, 2), A_NUMBERS("y", 2, 2), 
                                     {.name = "labels", .kind = PCL_BOOLEAN, .dflt = 1}, {.name = "arrows", .kind = PCL_BOOLEAN, .dflt = 1},
                                     {.name = "grid", .kind = PCL_BOOLEAN}, A_COLOR("color"), A_COLOR("grid_color"), PCL_END};
 static const pcl_arg axes_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = axes_keys}, PCL_END};
-static int l_axes(lua_State *L) {
-    double xr[2], yr[2];
-    pcl_val a[10] = {{0}, {.list = xr, .cap = 2}, {.list = yr, .cap = 2}};
-    PCL_READ(L, a);
+PCL_BODY(l_axes, a) {   /* options; x, y, origin, ticks, labels, arrows, grid, color, grid_color */
     pc_canvas *c = pcl_active_canvas(L);
-    pc_axes_spec s;
-    pc_axes_default(c, &s);
-    if (a[1].present) s.x0 = xr[0], s.x1 = xr[1];
-    if (a[2].present) s.y0 = yr[0], s.y1 = yr[1];
-    if (!(s.x0 < s.x1)) return pcl_keyfail(L, "x", "must be {lo, hi} with lo < hi");
-    if (!(s.y0 < s.y1)) return pcl_keyfail(L, "y", "must be {lo, hi} with lo < hi");
-    if (a[3].present) s.ox = a[3].v[0], s.oy = a[3].v[1];
-    s.ticks = (int)a[4].x;
-    s.labels = (int)a[5].x;
-    s.arrows = (int)a[6].x;
-    s.grid = (int)a[7].x;
-    s.grid_color = (int)a[9].x;
+    pc_axes_opts o = {a[1].list, a[2].list, a[3].present ? a[3].v : NULL, (int)a[4].x, (int)a[5].x, (int)a[6].x,
+                      (int)a[7].x, (int)a[9].x};
     int n = 0;
-    pcl_check_canvas(L, c, pc_axes(c, &s, (int)a[8].x, &n));
+    pcl_check_canvas(L, c, pc_axes_options(c, &o, (int)a[8].x, &n));
     lua_pushinteger(L, n);
     return 1;
 }
@@ -400,26 +380,18 @@ PCL_BODY(l_view, a) {
 /* ---- registration ---------------------------------------------------------------------------- */
 
 static const pcl_fn fns[] = {
-    PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}",
-           "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
+    PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}", "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
     PCL_FN("mark", l_mark, mark_args, NULL, "A marker on a point, size pixels across (default a filled dot of 5); a 3-D point joins the camera's scene."),
     PCL_FN("arrow", l_arrow, arrow_args, NULL, "The segment AB with a filled arrow head (9 px) at B, at A or at both."),
     PCL_FN("vector", l_vector, vector_args, NULL, "The vector v drawn as an arrow from the point A to A + v."),
-    PCL_FN("dimension", l_dimension, dim_args, "length",
-           "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
-    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle",
-           "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
+    PCL_FN("dimension", l_dimension, dim_args, "length", "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
+    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle", "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
     PCL_FN("ticks", l_ticks, ticks_args, NULL, "n (1..5) equal-length ticks across the middle of segment AB."),
-    PCL_FN("hatch", l_hatch, hatch_args, NULL,
-           "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
-    PCL_FN("centre_line", l_centre_line, centre_args, NULL,
-           "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
-    PCL_FN("fit", l_fit, fit_args, NULL,
-           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"), band = px keeping that many pixels free at the bottom for a caption; what is drawn already stays."),
-    PCL_FN("caption", l_caption, caption_args, NULL,
-           "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
-    PCL_FN("axes", l_axes, axes_args, "n",
-           "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),
+    PCL_FN("hatch", l_hatch, hatch_args, NULL, "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
+    PCL_FN("centre_line", l_centre_line, centre_args, NULL, "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
+    PCL_FN("fit", l_fit, fit_args, NULL, "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"), band = px keeping that many pixels free at the bottom for a caption; what is drawn already stays."),
+    PCL_FN("caption", l_caption, caption_args, NULL, "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
+    PCL_FN("axes", l_axes, axes_args, "n", "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),
     PCL_FN("graph", l_graph, graph_args, NULL, "The graph y = f(x) for x from a to b as a path of n pieces, broken where f gives no finite number."),
     PCL_FN("legend", l_legend, legend_args, NULL, "A legend in a corner of the picture (device units): a line in each entry's colour and its name."),
     PCL_END};
