@@ -7,6 +7,7 @@
 #include "print.h"       /* named pens, the print pen's width */
 #include "pcl_scene.h"
 #include "furniture.h"
+#include "math_label.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
@@ -20,13 +21,7 @@ typedef struct {
 
 /* The box at idx, or NULL: the debug library can put something else in the registry entry
  * or in a drawing function's upvalue (debug.setupvalue), so its size and self are checked. */
-static canvas_box *genuine_box(lua_State *L, int idx) {
-    canvas_box *b = lua_touserdata(L, idx);
-    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b &&
-        b->self == PCL_SELF_TAG(b, &CANVAS_TAG))
-        return b;
-    return NULL;
-}
+static canvas_box *genuine_box(lua_State *L, int idx) { return pcl_tagged(L, idx, sizeof(canvas_box), &CANVAS_TAG); }
 
 static canvas_box *box_at(lua_State *L, int idx) {
     canvas_box *b = genuine_box(L, idx);
@@ -113,25 +108,11 @@ static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
     return canvas(L);
 }
 
-/* An attribute of the screen (palette): 0..ncolors-1. */
-static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    int n = pcl_active_canvas(L)->ncolors, isint;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
-    return pcl_readfail(L, idx, lua_pushfstring(L, "an attribute 0..%d", n - 1));
-}
-
 /* PALETTE's colour: QBasic's 65536*blue + 256*green + red with 6-bit components, a "#rrggbb"
  * string, or a table {r, g, b} of 0..255; into out->v[0..2]. */
 static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    pc_rgb rgb;
-    if (lua_type(L, idx) == LUA_TSTRING) {
-        size_t len;
-        const char *s = lua_tolstring(L, idx, &len);
-        if (pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
-    } else if (lua_istable(L, idx)) {
+    if (lua_istable(L, idx)) {
         for (int i = 0; i < 3; i++) {
             int isnum = lua_geti(L, idx, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
             lua_Integer x = lua_tointegerx(L, -1, &isint);
@@ -140,11 +121,13 @@ static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
             out->v[i] = (double)x;
         }
         return 1;
-    } else {
-        int isint;
-        lua_Integer q = lua_tointegerx(L, idx, &isint);
-        if (lua_type(L, idx) != LUA_TNUMBER || !isint || pc_rgb_qbasic(q, &rgb) != PC_OK) return 0;
     }
+    pc_rgb rgb;
+    size_t len = 0;
+    int isint = 0, t = lua_type(L, idx);
+    const char *s = t == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    lua_Integer q = t == LUA_TNUMBER ? lua_tointegerx(L, idx, &isint) : 0;
+    if (s ? pc_rgb_parse(s, len, &rgb) != PC_OK : !isint || pc_rgb_qbasic(q, &rgb) != PC_OK) return 0;
     out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
     return 1;
 }
@@ -224,7 +207,7 @@ static int l_color(lua_State *L) {
 }
 
 static const pcl_arg palette_args[] = {
-    {.name = "attribute", .kind = PCL_ANY, .read = read_attr, .expect = "an attribute of the screen"},
+    {.name = "attribute", .kind = PCL_ANY, .read = pcl_read_attr, .dim = 1, .expect = "an attribute of the screen"},
     {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
      .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"},
     PCL_END};
@@ -244,11 +227,6 @@ static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
     pc_canvas *c = stmt_canvas(L, &a[2]);
     return pcl_check_canvas(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
-static int l_pset(lua_State *L) {
-    if (pcl_scene_pset(L)) return 0;   /* a 3-D point into the camera's scene (pcl_scene.h) */
-    return dot(L, pc_pset);
-}
-static int l_preset(lua_State *L) { return dot(L, pc_preset); }
 
 /* LINE's style: "b" (box) or "bf" (filled box), any case; then QBasic's 16-bit pattern,
  * 0..65535 or a signed INTEGER -32768..-1 (&HAAAA is -21846 in QBasic). */
@@ -260,6 +238,84 @@ static const char *const BOX[] = {"b", "B", "bf", "BF", "Bf", "bF", NULL};
 static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x"), A_NUM("end y"), LINE_TAIL};
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
+/* ---- 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write -- */
+
+/* A 3-D point at stack index idx, or 0. */
+static int point3(lua_State *L, int idx, double x[3]) {
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
+    for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
+    return 1;
+}
+
+/* A statement's 3-D stroke added to the scene with status st: 1 (done), or its error raised. */
+static int scene_added(lua_State *L, int st) {
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
+/* The colour argument #k of a statement with 3-D points, read as its declaration a says. */
+static int scene_color(lua_State *L, int k, const pcl_arg *a) {
+    pcl_val v = {0};
+    pcl_readone(L, k, k, 0, a, 0, &v);
+    return (int)v.x;
+}
+
+/* pset(P [, colour]) with a 3-D point and a scene: the dot added, 1; else 0 (drawn as usual). */
+static int scene_pset(lua_State *L) {
+    double x[3];
+    pc_scene *sc;
+    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
+    return scene_added(L, pc_scene_add_dot(sc, x, scene_color(L, 2, &dot_args[2])));
+}
+
+/* line(A, B [, colour]) with 3-D points and a scene: the segment added, 1; else 0. */
+static int scene_line(lua_State *L) {
+    double ab[6];
+    pc_scene *sc;
+    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
+    int color = scene_color(L, 3, &line_args[4]);
+    return scene_added(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen));
+}
+
+/* path(points, {closed =, color =, arrow =}) with 3-D points (read already) and a scene: the
+ * polyline and its heads (PC_ARROW_* bits) added, 1; else 0. */
+static int scene_path(lua_State *L, int closed, int color, int heads) {
+    pc_scene *sc;
+    double x[3];
+    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
+    int is3 = point3(L, -1, x);
+    lua_pop(L, 1);
+    if (!is3 || !(sc = pcl_scene(L))) return 0;
+    size_t n = lua_rawlen(L, 1);   /* n points of one path */
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
+    for (size_t k = 0; k < n; k++) {
+        lua_rawgeti(L, 1, (lua_Integer)k + 1);
+        int ok = point3(L, -1, xyz + 3 * k);
+        lua_pop(L, 1);
+        if (!ok) return 0;   /* not all 3-D points: drawn as usual */
+    }
+    return scene_added(L, pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen));
+}
+
+/* label(text, P, ...) with a 3-D point and a scene, its arguments a read by label's
+ * declaration: the markup checked now, as a 2-D label's is, and the label shown only where its
+ * point is seen; 1, else 0. */
+static int scene_label(lua_State *L, const pcl_val *a) {
+    double x[3];
+    pc_scene *sc;
+    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
+    char err[200];
+    if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
+    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
+    if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
+        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
+    return scene_added(L, st);
+}
+
+static int l_pset(lua_State *L) { return scene_pset(L) ? 0 : dot(L, pc_pset); }
+static int l_preset(lua_State *L) { return dot(L, pc_preset); }
+
 static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl_val *a) {
     int box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
     long pattern = a[4].present ? (long)a[4].x & 0xffff : -1;
@@ -267,16 +323,14 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
 }
 
 static int l_line(lua_State *L) {
-    if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
+    if (scene_line(L)) return 0;
     pcl_val a[7];
     PCL_READ_PAIRS(L, a);
     return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
 }
 
 /* LINE -(x, y): from the graphics cursor (the last point referenced). */
-static int l_line_to(lua_State *L) {
-    pcl_val a[5];
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_line_to, a) {
     pc_canvas *c = stmt_canvas(L, &a[2]);
     return draw_line(L, c, c->last_x, c->last_y, a);
 }
@@ -294,25 +348,19 @@ static const pcl_arg circle_args[] = {
     {.name = "radius", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = HUGE_VAL, .expect = "a non-negative number"},
     COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"),
     OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
-static int l_circle(lua_State *L) {
-    pcl_val a[7];
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_circle, a) {
     pc_canvas *c = stmt_canvas(L, &a[3]);
     return pcl_check_canvas(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
 }
 
 static const pcl_arg paint_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), COLOR("border colour"), PCL_END};
-static int l_paint(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_paint, a) {
     pc_canvas *c = canvas(L);
     return pcl_check_canvas(L, c, pc_paint(c, a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
 }
 
 static const pcl_arg point_args[] = {A_X("x"), A_NUM("y"), PCL_END};
-static int l_point(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_point, a) {
     lua_pushinteger(L, pc_point(canvas(L), a[0].x, a[1].x));
     return 1;
 }
@@ -498,8 +546,7 @@ static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL
 
 PCL_BODY(l_path, a) {   /* points, options; closed, color, fill, rule, arrow */
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
-    /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
-    if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
+    if (!a[4].present && scene_path(L, closed, color, heads)) return 0;
     pc_canvas *c = canvas(L);
     int rule = a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
     return pcl_check_canvas(L, c, pc_path_stmt(c, (size_t)a[0].n, a[0].list, a[0].obj, closed, color, heads,
@@ -519,10 +566,8 @@ static const pcl_arg label_args[] = {
     {.name = "direction", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = DIRECTIONS, .dflt = PC_ANCHOR_NE,
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
-static int l_label(lua_State *L) {
-    pcl_val a[10] = {0};   /* text, x, y, direction, colour, scale, options; font, size, halo */
-    PCL_READ_PAIRS(L, a);
-    if (pcl_scene_label(L, a)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
+PCL_PAIRS_BODY(l_label, a) {   /* text, x, y, direction, colour, scale, options; font, size, halo */
+    if (scene_label(L, a)) return 0;
     pc_canvas *c = canvas(L);
     int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
     pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
@@ -531,9 +576,7 @@ static int l_label(lua_State *L) {
 }
 
 static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
-static int l_text(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_text, a) {
     pc_canvas *c = canvas(L);
     return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
 }
@@ -586,15 +629,4 @@ void pcl_open_draw(lua_State *L) {
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }
     pcl_register(L, -2, fns, 1);
-}
-
-/* The colour argument at arg for bindings not on the layer (c:draw): nil for the default. */
-int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) {
-    arg = lua_absindex(L, arg);
-    int color = lua_isnoneornil(L, arg) ? -1 : pcl_color_at(L, arg, c, 0);
-    if (color == -2)
-        pcl_error(L, "%s: argument #%d (colour) must be a colour number 0..%d or \"#rrggbb\", got %s",
-                  pcl_fname(L), pcl_arg_shown(L, arg), c->ncolors - 1, lua_type(L, arg) == LUA_TSTRING
-                  ? lua_pushfstring(L, "\"%s\"", lua_tostring(L, arg)) : pcl_shown(L, arg));
-    return color;
 }

@@ -12,7 +12,6 @@
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
-#include "math_label.h"
 
 /* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
@@ -82,68 +81,6 @@ pc_scene *pcl_scene(lua_State *L) {
 
 int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
     return pc_scene_add_curve(sc, c, n, color, pcl_active_canvas(L)->pen);
-}
-
-/* A 3-D point at stack index idx, or 0. */
-static int point3(lua_State *L, int idx, double x[3]) {
-    pcl_value *p = pcl_tovalue(L, idx);
-    if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
-    for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
-    return 1;
-}
-
-int pcl_scene_line(lua_State *L) {
-    double ab[6];
-    pc_scene *sc;
-    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
-    pc_canvas *c = pcl_active_canvas(L);
-    int st = pc_scene_add_polyline(sc, 2, ab, NULL, pcl_optcolor(L, 3, c), c->pen);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
-int pcl_scene_pset(lua_State *L) {
-    double x[3];
-    pc_scene *sc;
-    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
-    int st = pc_scene_add_dot(sc, x, pcl_optcolor(L, 2, pcl_active_canvas(L)));
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
-int pcl_scene_path(lua_State *L, int closed, int color, int heads) {
-    pc_scene *sc;
-    double x[3];
-    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
-    int is3 = point3(L, -1, x);
-    lua_pop(L, 1);
-    if (!is3 || !(sc = pcl_scene(L))) return 0;
-    size_t n = lua_rawlen(L, 1);   /* the arg layer read them already: n points of one path */
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
-    for (size_t k = 0; k < n; k++) {
-        lua_rawgeti(L, 1, (lua_Integer)k + 1);
-        int ok = point3(L, -1, xyz + 3 * k);
-        lua_pop(L, 1);
-        if (!ok) return lua_pop(L, 1), 0;   /* not all 3-D points: drawn as usual */
-    }
-    int st = pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen);
-    lua_pop(L, 1);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
-int pcl_scene_label(lua_State *L, const pcl_val *a) {
-    double x[3];
-    pc_scene *sc;
-    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
-    /* the markup is checked now, as a 2-D label's is, not when the scene is drawn at write */
-    char err[200];
-    if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
-    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
-    if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
-        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
 }
 
 /* ---- markers, arrows, furniture -------------------------------------------------------------- */

@@ -1,14 +1,20 @@
-/* Facilities the drawing bindings share (pcl_draw.h): fields of a result table, and lists of
- * n-D points as places on the screen. */
+/* Facilities the drawing bindings share (pcl_draw.h): the attribute reader, genuine tagged
+ * userdata, lists of n-D points as places on the screen. */
 #include "pcl_draw.h"
 #include "pcl_curve.h"
 
-void pcl_set_fields(lua_State *L, int n, const char *const *names, const double *x, int integers) {
-    for (int i = 0; i < n; i++) {
-        if (integers) lua_pushinteger(L, (lua_Integer)x[i]);
-        else lua_pushnumber(L, x[i]);
-        lua_setfield(L, -2, names[i]);
-    }
+int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    int n = pcl_active_canvas(L)->ncolors, isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
+    return pcl_readfail(L, idx, lua_pushfstring(L, "%s 0..%d", a->dim ? "an attribute" : "a colour number", n - 1));
+}
+
+void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag) {
+    uintptr_t *self = lua_touserdata(L, idx);
+    if (self && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == size && *self == PCL_SELF_TAG(self, tag))
+        return self;
+    return NULL;
 }
 
 int pcl_rows_to_xy(lua_State *L, int n, int dim, const double *rows, double *xy) {
