@@ -15,6 +15,13 @@ int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *
     return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
 }
 
+int pc_place_xy(const pc_map *f, int n, const double *h, double *x, double *y) {
+    if (n != 2) return pc_map_image_xy(f, n, h, x, y);
+    *x = h[0] / h[2];
+    *y = h[1] / h[2];
+    return PC_OK;
+}
+
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out) {
     double o[2], ex[2], ey[2];
     pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);

@@ -12,6 +12,9 @@
  * takes points of another dimension (or is NULL), PC_IMPROPER where h goes to infinity,
  * PC_ENONFINITE. */
 int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y);
+/* The place on the plane of a drawn point h (homogeneous, weight 1): a 2-D one as it is, an
+ * n-D one its image under the camera f as pc_map_image_xy gives it. */
+int pc_place_xy(const pc_map *f, int n, const double *h, double *x, double *y);
 /* The map to screen pixels: f (to the plane; NULL for plain 2-D points) then WINDOW and VIEW. */
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out);
 /* Append to out c over [a, b] flattened through f (NULL: c is 2-D as it is) to within tol,

@@ -138,6 +138,9 @@ int pc_pages_palette(pc_pages *p, int attr, pc_rgb rgb);
  * (substrings) and '=' (numbers from variables) are the caller's to expand first.  A command
  * it cannot read is PC_EARG with the position named. */
 int pc_draw_macro(pc_canvas *c, pc_draw_state *st, const char *cmds);
+/* DRAW on the page drawn on with the pages' state, its turns at the aspect of the mode the
+ * canvas is in (SCREEN 1, 2...: a figure keeps its size on a 4:3 monitor), else 1. */
+int pc_pages_draw(pc_pages *p, const char *cmds);
 
 /* ---- PAINT with a tile ------------------------------------------------------------------ */
 

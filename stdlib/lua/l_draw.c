@@ -2,8 +2,8 @@
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
  * around QBasic's pages, so SCREEN can replace the canvas in place); the registry keeps it
  * too, for the host. */
-#include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_draw.h"
+#include "pcl_core.h"   /* pcl_project (3-D points through the camera), pcl_push_results */
 #include "print.h"       /* named pens, the print pen's width */
 #include "pcl_scene.h"
 #include "furniture.h"
@@ -198,11 +198,7 @@ static int l_color(lua_State *L) {
     pc_canvas *c = canvas(L);
     pcl_val a[2] = {0};
     PCL_READ(L, a);
-    if (!a[0].present && !a[1].present) {   /* query */
-        lua_pushinteger(L, c->fg);
-        lua_pushinteger(L, c->bg);
-        return 2;
-    }
+    if (!a[0].present && !a[1].present) return pcl_push_results(L, 0, "i i", c->fg, c->bg);   /* query */
     return pcl_check_canvas(L, c, pc_color(c, a[0].present ? (int)a[0].x : c->fg, (int)a[1].x));
 }
 
@@ -337,9 +333,7 @@ PCL_PAIRS_BODY(l_line_to, a) {
 
 static int l_last_point(lua_State *L) {
     pc_canvas *c = canvas(L);
-    lua_pushnumber(L, c->last_x);
-    lua_pushnumber(L, c->last_y);
-    return 2;
+    return pcl_push_results(L, 0, "n n", c->last_x, c->last_y);
 }
 
 #define ANGLE(nm) OPTNUM(nm, PCL_RANGE, -2 * M_PI - 1e-6, 2 * M_PI + 1e-6, "a number between -2*pi and 2*pi")
@@ -402,10 +396,7 @@ PCL_BODY(l_save, a) {
 
 static int l_size(lua_State *L) {
     pc_canvas *c = canvas(L);
-    lua_pushinteger(L, c->width);
-    lua_pushinteger(L, c->height);
-    lua_pushinteger(L, c->ncolors);
-    return 3;
+    return pcl_push_results(L, 0, "i i i", c->width, c->height, c->ncolors);
 }
 
 /* ---- beyond QBasic: pen, path, label, text ------------------------------------------------ */

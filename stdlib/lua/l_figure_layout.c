@@ -12,6 +12,7 @@
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
+#include "curve_path.h"
 
 /* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
@@ -21,17 +22,10 @@ static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p || fabs(p->h[p->n] - 1) > PC_WEIGHT_TOL) return 0;
     out->n = p->n;
-    if (p->n == 3)
-        for (int k = 0; k < 3; k++) out->v[2 + k] = p->h[k] / p->h[3];
-    if (p->n == 2) {
-        out->v[0] = p->h[0] / p->h[2];
-        out->v[1] = p->h[1] / p->h[2];
-        return 1;
-    }
-    return pcl_project(L, p->n, p->h, &out->v[0], &out->v[1]) == PC_OK;
+    for (int k = 0; k < 3 && p->n == 3; k++) out->v[2 + k] = p->h[k] / p->h[3];
+    return pc_place_xy(pcl_camera(L), p->n, p->h, &out->v[0], &out->v[1]) == PC_OK;
 }
-#define XY_TEXT "a 2-D point (or an n-D one through the camera)"
-#define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = XY_TEXT}
+#define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = PCL_PLACE_TEXT}
 
 /* a colour, true colours (256..) included */
 #define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}
@@ -153,12 +147,9 @@ static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spac
                                      A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_hatch, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    int n = a[0].n, d = a[0].dim;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
-    int bad = pcl_rows_to_xy(L, n, d, a[0].list, xy);
-    if (bad >= 0) return pcl_argfail(L, 1, "[%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
+    const double *xy = pcl_places(L, &a[0], "argument #1 (points)");
     size_t lines;
-    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
+    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)a[0].n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
 }
 
 static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
@@ -177,12 +168,9 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
 PCL_BODY(l_fit, a) {   /* options; margin, aspect, around, pad, band */
     pc_canvas *c = pcl_active_canvas(L);
-    int n = a[3].present ? a[3].n : 0, d = a[3].dim;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n + 1, 0);
-    int bad = pcl_rows_to_xy(L, n, d, a[3].list, xy);
-    if (bad >= 0) return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
+    const double *xy = pcl_places(L, &a[3], "option 'around'");
     pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n,
-                     a[1].x, a[4].x, a[5].x, (size_t)n, xy};
+                     a[1].x, a[4].x, a[5].x, (size_t)a[3].n, xy};
     return pcl_check_canvas(L, c, pc_fit_options(c, &o));
 }
 

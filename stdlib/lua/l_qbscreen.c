@@ -119,9 +119,7 @@ PCL_PAIRS_BODY(l_put_block, a) {
 static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read = read_bytes, .expect = "a string"}, PCL_END};
 PCL_BODY(l_draw, a) {
     pc_pages *p = pcl_pages(L);
-    pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
-    p->draw.aspect = pc_mode_of_canvas(p->c, &m) ? m.aspect : 1;
-    return pcl_check_canvas(L, p->c, pc_draw_macro(p->c, &p->draw, a[0].s));
+    return pcl_check_canvas(L, p->c, pc_pages_draw(p, a[0].s));
 }
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */

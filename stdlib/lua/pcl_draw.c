@@ -2,6 +2,7 @@
  * userdata, lists of n-D points as places on the screen. */
 #include "pcl_draw.h"
 #include "pcl_curve.h"
+#include "curve_path.h"
 
 int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     int n = pcl_active_canvas(L)->ncolors, isint;
@@ -17,13 +18,16 @@ void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag) {
     return NULL;
 }
 
-int pcl_rows_to_xy(lua_State *L, int n, int dim, const double *rows, double *xy) {
-    for (int i = 0; i < n; i++) {
+double *pcl_places(lua_State *L, const pcl_val *list, const char *what) {
+    const pc_map *f = pcl_camera(L);
+    int dim = list->dim;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)list->n + 1, 0);
+    for (int i = 0; i < list->n; i++) {
         double h[PC_MAXDIM + 1];
-        memcpy(h, rows + (size_t)i * dim, sizeof(double) * (size_t)dim);
+        memcpy(h, list->list + (size_t)i * dim, sizeof(double) * (size_t)dim);
         h[dim] = 1;
-        if (dim == 2) xy[2 * i] = h[0], xy[2 * i + 1] = h[1];
-        else if (pcl_project(L, dim, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK) return i;
+        if (pc_place_xy(f, dim, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
+            pcl_fail(L, "%s [%d] must be " PCL_PLACE_TEXT ", got a %d-D point", what, i + 1, dim);
     }
-    return -1;
+    return xy;
 }

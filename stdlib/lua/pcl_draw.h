@@ -36,8 +36,9 @@ void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag);
         return f##_body(L, f##_v); \
     } \
     static int f##_body(lua_State *L, pcl_val *a)
-/* n rows of dim coordinates as places on the screen into xy (2-D as they are, n-D through
- * the camera): -1, or the index of the first that has no place. */
-int pcl_rows_to_xy(lua_State *L, int n, int dim, const double *rows, double *xy);
+/* The points of a declared list (rows of list->dim) as places on the screen, 2-D as they are,
+ * n-D through the camera, in a scratch userdata pushed; else "NAME: WHAT [i] must be ...". */
+double *pcl_places(lua_State *L, const pcl_val *list, const char *what);
+#define PCL_PLACE_TEXT "a 2-D point (or an n-D one through the camera)"
 
 #endif

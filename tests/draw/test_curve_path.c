@@ -36,6 +36,14 @@ static void test_image_xy(void **state) {
     assert_int_equal(pc_map_image_xy(&f, 3, far, &x, &y), PC_IMPROPER);
     assert_int_equal(pc_map_image_xy(&f, 2, flat, &x, &y), PC_EDIM);
     assert_int_equal(pc_map_image_xy(NULL, 3, h, &x, &y), PC_EDIM);
+    /* a drawn point's place: 2-D as it is (the camera is for n-D points), n-D through it */
+    double w2[3] = {3, -6, 2};
+    assert_int_equal(pc_place_xy(&f, 2, w2, &x, &y), PC_OK);
+    assert_float_equal(x, 1.5, 1e-15);
+    assert_float_equal(y, -3, 1e-15);
+    assert_int_equal(pc_place_xy(&f, 3, h, &x, &y), PC_OK);
+    assert_float_equal(x, 1, 1e-15);
+    assert_int_equal(pc_place_xy(NULL, 3, h, &x, &y), PC_EDIM);
 }
 
 /* a straight segment from (0, 0) to (8, 0) flattened in 4 parts: one unbroken polyline from
