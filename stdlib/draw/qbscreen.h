@@ -162,6 +162,8 @@ int pc_tile_from_bytes(pc_canvas *c, const unsigned char *bytes, size_t n, pc_ti
  * < 0: the foreground colour) filled with the tile; the painted box is recorded as pixels
  * for the SVG writer (raster.c). */
 int pc_paint_tile(pc_canvas *c, double x, double y, const pc_tile *tile, int border);
+/* The two in one: PAINT (x, y), tile$, border with the tile string's n bytes (paint_tile). */
+int pc_paint_tile_bytes(pc_canvas *c, double x, double y, const unsigned char *bytes, size_t n, int border);
 
 /* ---- pages ------------------------------------------------------------------------------ */
 

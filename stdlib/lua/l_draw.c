@@ -8,6 +8,7 @@
 #include "pcl_scene.h"
 #include "furniture.h"
 #include "math_label.h"
+#include "curve_path.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
@@ -65,6 +66,8 @@ int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc) {
     return rc == PC_OK ? 0 : pcl_fail(L, "%s", pc_canvas_message(c));
 }
 
+int pcl_drawn(lua_State *L, int rc) { return pcl_check_canvas(L, pcl_active_canvas(L), rc); }
+
 /* ---- the kinds of the drawing layer ------------------------------------------------------ */
 
 int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors) {
@@ -104,8 +107,7 @@ static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 /* The canvas of a statement whose colour argument is color: the one it was read on, else
  * (the colour absent) the upvalue's. */
 static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
-    if (color->present) return color->obj;
-    return canvas(L);
+    return color->present ? color->obj : canvas(L);
 }
 
 /* PALETTE's colour: QBasic's 65536*blue + 256*green + red with 6-bit components, a "#rrggbb"
@@ -162,8 +164,7 @@ static const pcl_arg screen_keys[] = {
     {.name = "width", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 1, .hi = 16384},
     {.name = "height", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 1, .hi = 16384},
     {.name = "colors", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 2, .hi = 256, .dflt = 16,
-     .expect = "2, 4, 16 or 256"},
-    PCL_END};
+     .expect = "2, 4, 16 or 256"}, PCL_END};
 static const pcl_arg screen_table = {.name = "mode", .kind = PCL_OPTIONS, .keys = screen_keys};
 static const pcl_arg screen_args[] = {
     {.name = "mode", .kind = PCL_ANY, .expect = "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 8, 9 or {width=, height=}"},
@@ -188,16 +189,11 @@ static int l_screen(lua_State *L) {
     return pcl_check_canvas(L, b->p.c, pc_pages_screen(&b->p, &m));
 }
 
-static int l_cls(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    return pcl_check_canvas(L, c, pc_cls(c));
-}
+static int l_cls(lua_State *L) { return pcl_drawn(L, pc_cls(canvas(L))); }
 
 static const pcl_arg color_args[] = {COLOR("fg"), COLOR("bg"), PCL_END};
-static int l_color(lua_State *L) {
+PCL_BODY(l_color, a) {
     pc_canvas *c = canvas(L);
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
     if (!a[0].present && !a[1].present) return pcl_push_results(L, 0, "i i", c->fg, c->bg);   /* query */
     return pcl_check_canvas(L, c, pc_color(c, a[0].present ? (int)a[0].x : c->fg, (int)a[1].x));
 }
@@ -205,8 +201,7 @@ static int l_color(lua_State *L) {
 static const pcl_arg palette_args[] = {
     {.name = "attribute", .kind = PCL_ANY, .read = pcl_read_attr, .dim = 1, .expect = "an attribute of the screen"},
     {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
-     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"},
-    PCL_END};
+     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"}, PCL_END};
 static int l_palette(lua_State *L) {
     pc_canvas *c = canvas(L);
     if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_palette_reset(c));
@@ -337,11 +332,9 @@ static int l_last_point(lua_State *L) {
 }
 
 #define ANGLE(nm) OPTNUM(nm, PCL_RANGE, -2 * M_PI - 1e-6, 2 * M_PI + 1e-6, "a number between -2*pi and 2*pi")
-static const pcl_arg circle_args[] = {
-    A_X("x"), A_NUM("y"),
+static const pcl_arg circle_args[] = {A_X("x"), A_NUM("y"),
     {.name = "radius", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = HUGE_VAL, .expect = "a non-negative number"},
-    COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"),
-    OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
+    COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"), OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
 PCL_PAIRS_BODY(l_circle, a) {
     pc_canvas *c = stmt_canvas(L, &a[3]);
     return pcl_check_canvas(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
@@ -349,8 +342,7 @@ PCL_PAIRS_BODY(l_circle, a) {
 
 static const pcl_arg paint_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), COLOR("border colour"), PCL_END};
 PCL_PAIRS_BODY(l_paint, a) {
-    pc_canvas *c = canvas(L);
-    return pcl_check_canvas(L, c, pc_paint(c, a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
+    return pcl_drawn(L, pc_paint(canvas(L), a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
 }
 
 static const pcl_arg point_args[] = {A_X("x"), A_NUM("y"), PCL_END};
@@ -381,8 +373,7 @@ static int l_view(lua_State *L) {
 
 static const char *const THEMES[] = {"paper", "screen", NULL};
 static const pcl_arg save_args[] = {{.name = "path", .kind = PCL_STRING, .expect = "a file name"},
-                                    {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES},
-                                    PCL_END};
+                                    {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES}, PCL_END};
 PCL_BODY(l_save, a) {
     pc_canvas *c = canvas(L);
     pc_theme theme = !a[1].present ? pcl_theme(L) : a[1].n == 0 ? PC_THEME_PAPER : PC_THEME_SCREEN;
@@ -435,8 +426,7 @@ static const pcl_arg pen_keys[] = {
 static const pcl_arg pen_table = {.name = "pen", .kind = PCL_OPTIONS, .keys = pen_keys};
 static const pcl_arg pen_args[] = {
     {.name = "pen", .kind = PCL_ANY, .flags = PCL_OPT,
-     .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"},
-    PCL_END};
+     .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"}, PCL_END};
 
 static int l_pen(lua_State *L) {
     pcl_val a[3] = {0};   /* pen; the table's width, dash */
@@ -455,23 +445,9 @@ static int l_pen(lua_State *L) {
  * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
 static void list_point(lua_State *L, int idx, const char *where, double *xy) {
     pcl_value *p = pcl_tovalue(L, -1);
-    if (p && p->n != 2) {
-        int st = pcl_project(L, p->n, p->h, xy, xy + 1);
-        if (st == PC_OK) return;
-        const char *text = luaL_tolstring(L, -1, NULL);
-        if (st == PC_IMPROPER)
-            pcl_fail(L, "argument #%d (points) %s: %s projects to infinity (it lies in the camera's "
-                        "vanishing plane)", idx, where, text);
-        if (st != PC_EDIM) pcl_fail(L, "argument #%d (points) %s: the image of %s is not finite", idx, where, text);
-        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got the %d-D %s (3-D points need a camera)",
-                 idx, where, p->n, text);
-    }
-    if (p && pc_loc(2, p->h, xy) != PC_OK) {   /* a vector or a weighted value */
-        const char *text = luaL_tolstring(L, -1, NULL);
-        pcl_fail(L, "argument #%d (points) %s: %s has weight %s, not 1: a location must be a point "
-                    "(the membership condition; normalize(p) for a projective point)", idx, where, text,
-                 pcl_pushnum(L, p->h[2]));
-    }
+    char why[200];
+    if (p && pc_place_why(pcl_camera(L), p->n, p->h, xy, why, sizeof why) != PC_OK)
+        pcl_fail(L, "argument #%d (points) %s%s", idx, where, lua_pushfstring(L, why, luaL_tolstring(L, -1, NULL)));
     if (!pcl_topoint2(L, -1, xy, xy + 1))
         pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
 }
@@ -552,8 +528,7 @@ PCL_BODY(l_fill, a) {
 }
 
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
-static const pcl_arg label_args[] = {
-    TEXT, A_X("x"), A_NUM("y"),
+static const pcl_arg label_args[] = {TEXT, A_X("x"), A_NUM("y"),
     {.name = "direction", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = DIRECTIONS, .dflt = PC_ANCHOR_NE,
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
@@ -566,10 +541,25 @@ PCL_PAIRS_BODY(l_label, a) {   /* text, x, y, direction, colour, scale, options;
     return 0;
 }
 
+/* text(x, y, s ...), or text{x =, y =, text =, units =, color =, scale =}: (x, y) in screen
+ * pixels with units = "device", whatever the window. */
+static const char *const UNITS[] = {"world", "device", NULL};
+static const pcl_arg text_keys[] = {
+    {.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
+    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, {.name = "units", .kind = PCL_ENUM, .choices = UNITS},
+    {.name = "color", .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}, SCALE, PCL_END};
+static const pcl_arg text_table = {.name = "options", .kind = PCL_OPTIONS, .keys = text_keys};
 static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
-PCL_PAIRS_BODY(l_text, a) {
+static int l_text(lua_State *L) {
     pc_canvas *c = canvas(L);
-    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
+    pcl_val a[6] = {0};   /* x, y, text, colour, scale; the table's x, y, text, units, color, scale */
+    if (!lua_istable(L, 1)) {
+        PCL_READ_PAIRS(L, a);
+        return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
+    }
+    pcl_read_options(L, 1, 1, &text_table, a);
+    if (a[3].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[0].x, a[1].x, a[2].s, (int)a[5].x, (int)a[4].x));
+    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[5].x, (int)a[4].x));
 }
 
 static int canvas_gc(lua_State *L) {
@@ -601,7 +591,7 @@ static const pcl_fn fns[] = {
     {.name = "path", .fn = l_path, .args = path_args, .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])", .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment."},
     {.name = "fill", .fn = l_fill, .args = fill_args, .sig = "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])", .help = "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG."},
     {.name = "label", .fn = l_label, .args = label_args, .sig = "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])", .help = "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
-    {.name = "text", .fn = l_text, .args = text_args, .sig = "text(x, y, string [, colour [, scale]])", .help = "Text with the top-left corner of its first 8x16 cell at (x, y)."},
+    {.name = "text", .fn = l_text, .args = text_args, .sig = "text(x, y, string [, colour [, scale]])\ntext{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}", .help = "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window."},
     PCL_END};
 
 void pcl_open_draw(lua_State *L) {

@@ -28,11 +28,9 @@ static const pcl_arg figure_keys[] = {
     {.name = "height", .kind = PCL_ANY, .read = pcl_read_length, .expect = LENGTH, .shown = "\"8cm\""},
     {.name = "dpi", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 10, .hi = 2400, .shown = "300"},
     {.name = "font", .kind = PCL_STRING, .shown = "\"serif\"|\"sans\"|\"mono\""},
-    {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)", .shown = "10"},
-    PCL_END};
+    {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)", .shown = "10"}, PCL_END};
 static const pcl_arg figure_args[] = {
-    {.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = figure_keys},
-    PCL_END};
+    {.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = figure_keys}, PCL_END};
 
 /* figure{width = "12cm", height = "8cm", dpi = 300, font = "serif", size = 10}: the print
  * look for every output, at that size; a width alone keeps the window's aspect. */
@@ -53,11 +51,9 @@ static int read_font(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return 1;
 }
 
-const pcl_arg pcl_label_keys[] = {
-    {.name = "font", .kind = PCL_ANY, .read = read_font, .expect = "a font name"},
+const pcl_arg pcl_label_keys[] = {{.name = "font", .kind = PCL_ANY, .read = read_font, .expect = "a font name"},
     {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)"},
-    {.name = "halo", .kind = PCL_BOOLEAN},
-    PCL_END};
+    {.name = "halo", .kind = PCL_BOOLEAN}, PCL_END};
 
 void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *k) {
     pcl_check_canvas(L, c, pc_text_style(c, k[0].s, k[1].x, k[2].present ? (int)k[2].x : -1));

@@ -1,9 +1,8 @@
 /* Binding of the figure layout and its furniture (stdlib/draw/layout.h, furniture.h, axes.h),
  * on the declared argument layer (pcl_args.h, docs/bindings.md): placed_labels, mark, arrow,
  * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
- * and map.view; text{units = "device"} in front of the drawing binding's text.  Points are
- * 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene (pcl_scene.h):
- * the strokes of a camera with hidden lines, resolved when the picture is written. */
+ * and map.view.  Points are 2-D, or n-D through the camera; sizes are screen pixels.  And the
+ * 3-D scene (pcl_scene.h) a camera with hidden lines keeps, resolved when a picture is written. */
 #include "pcl_draw.h"
 #include "pcl_core.h"
 #include "pcl_scene.h"
@@ -93,18 +92,16 @@ PCL_BODY(l_mark, a) {
 }
 
 static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
-static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1),
-                                     A_COLOR("colour"), PCL_END};
+static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_arrow, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
+    return pcl_drawn(L, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
 }
 
 /* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
 static const pcl_arg vector_args[] = {A_XY("A"), {.name = "v", .kind = PCL_VECTOR}, A_COLOR("colour"), PCL_END};
-static int l_vector(lua_State *L) {
-    pcl_val a[3] = {0}, end = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_vector, a) {
+    pcl_val end = {0};
     pc_canvas *c = pcl_active_canvas(L);
     lua_pushvalue(L, 1);
     lua_pushvalue(L, 2);
@@ -140,7 +137,7 @@ static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
                                      A_COLOR("colour"), PCL_END};
 PCL_BODY(l_ticks, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
+    return pcl_drawn(L, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
 }
 
 static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
@@ -156,7 +153,7 @@ static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0
                                       A_COLOR("colour"), PCL_END};
 PCL_BODY(l_centre_line, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
+    return pcl_drawn(L, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
 }
 
 /* ---- framing, captions, device-unit text -------------------------------------------------- */
@@ -178,29 +175,7 @@ static const char *const EDGES[] = {"bottom", "top", NULL};
 static const pcl_arg caption_args[] = {{.name = "text", .kind = PCL_STRING}, A_OPTENUM("where", EDGES, 0),
                                        A_COLOR("colour"), PCL_END};
 PCL_BODY(l_caption, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_caption(c, a[0].s, a[1].n, (int)a[2].x));
-}
-
-/* text{x =, y =, text =, units =, color =, scale =}; the positional form goes to the drawing
- * binding's text (kept as this closure's upvalue). */
-static const char *const UNITS[] = {"world", "device", NULL};
-static const pcl_arg text_keys[] = {{.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
-                                    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, A_OPTENUM("units", UNITS, 0),
-                                    A_COLOR("color"), {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}, PCL_END};
-static const pcl_arg text_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = text_keys}, PCL_END};
-static int l_text(lua_State *L) {
-    if (!lua_istable(L, 1)) {
-        lua_pushvalue(L, PCL_UPVALUE(1));
-        lua_insert(L, 1);
-        lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-        return lua_gettop(L);
-    }
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    if (a[4].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[1].x, a[2].x, a[3].s, (int)a[6].x, (int)a[5].x));
-    return pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, (int)a[5].x));
+    return pcl_drawn(L, pc_caption(pcl_active_canvas(L), a[0].s, a[1].n, (int)a[2].x));
 }
 
 /* ---- axes, graphs, legends ------------------------------------------------------------------ */
@@ -249,10 +224,8 @@ PCL_BODY(l_graph, a) {
 static const char *const CORNERS[] = {"ne", "nw", "se", "sw", NULL};
 static const pcl_arg legend_args[] = {{.name = "entries", .kind = PCL_ANY, .expect = "a list of {name, colour}"},
                                       A_OPTENUM("corner", CORNERS, 0), A_COLOR("colour"), PCL_END};
-static int l_legend(lua_State *L) {
+PCL_BODY(l_legend, a) {
     static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     int t = a[0].idx;
     lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : 0;
@@ -279,6 +252,10 @@ static const pcl_arg view_keys[] = {A_POINT("from", 3), A_POINT("to", 3), A_VECT
                                     A_NUM("azimuth"), {.name = "elevation", .kind = PCL_NUMBER, .dflt = 30},
                                     {.name = "distance", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 10}, PCL_END};
 static const pcl_arg view_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = view_keys}, PCL_END};
+static const pc_why view_why[] = {{"map.view", PC_ECOINCIDENT, 0, NULL, "from and to coincide: no line of sight"},
+                                  {"map.view", PC_EZERO, 0, "up", "is the zero vector"},
+                                  {"map.view", PC_ECOLLINEAR, 0, "up", "is along the line of sight; give another up"},
+                                  {0}};
 PCL_BODY(l_view, a) {
     static const double origin[3] = {0, 0, 0};
     const double *to = a[2].present ? a[2].v : origin;
@@ -291,13 +268,7 @@ PCL_BODY(l_view, a) {
         if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
         st = pc_map_view_azel(&f, to, a[5].x, a[6].x, a[7].x, persp);
     }
-    switch (st) {
-    case PC_OK: break;
-    case PC_ECOINCIDENT: return pcl_fail(L, "from and to coincide: no line of sight");
-    case PC_EZERO: return pcl_keyfail(L, "up", "is the zero vector");
-    case PC_ECOLLINEAR: return pcl_keyfail(L, "up", "is along the line of sight; give another up");
-    default: return pcl_fail(L, "%s", pc_strerror(st));
-    }
+    pcl_check(L, st, view_why);
     *pcl_newmap(L) = f;
     return 1;
 }
@@ -320,9 +291,6 @@ static const pcl_fn fns[] = {
     PCL_FN("graph", l_graph, graph_args, NULL, "The graph y = f(x) for x from a to b as a path of n pieces, broken where f gives no finite number."),
     PCL_FN("legend", l_legend, legend_args, NULL, "A legend in a corner of the picture (device units): a line in each entry's colour and its name."),
     PCL_END};
-static const pcl_fn text_fn[] = {{.name = "text", .fn = l_text, .args = text_args,
-                                  .sig = "text(x, y, string [, colour [, scale]])\ntext{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}",
-                                  .help = "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window."}, PCL_END};
 static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view_args,
                                   .sig = "map.view{from = P, to = P [, up = V] [, perspective = true]} -> f\nmap.view{azimuth = deg, elevation = deg [, distance = d] [, to = P] [, perspective = true]} -> f",
                                   .help = "The view with z up (docs/maps.md): from a point towards another, the picture's x to the right as seen and y along up (default the z axis), origin at to; parallel unless perspective."}, PCL_END};
@@ -330,8 +298,6 @@ static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view
 void pcl_open_figure_layout(lua_State *L) {
     int module = lua_gettop(L);
     pcl_register(L, module, fns, 0);
-    lua_getfield(L, module, "text");   /* the positional text(x, y, s) behind text{...} */
-    pcl_register(L, module, text_fn, 1);
     if (lua_getfield(L, module, "map") == LUA_TTABLE) pcl_register(L, lua_gettop(L), view_fn, 0);
     lua_settop(L, module);
 }

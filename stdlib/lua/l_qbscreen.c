@@ -71,11 +71,10 @@ static int block_gc(lua_State *L) {
 
 static int block_index(lua_State *L) {
     block_box *bb = checkblock(L, "block.field");
-    const char *k = lua_tostring(L, 2);
-    if (bb->b && k && !strcmp(k, "w")) lua_pushinteger(L, bb->b->w);
-    else if (bb->b && k && !strcmp(k, "h")) lua_pushinteger(L, bb->b->h);
-    else if (bb->b && k && !strcmp(k, "bytes")) lua_pushinteger(L, bb->bytes);
-    else lua_pushnil(L);
+    if (!bb->b) return 0;
+    pcl_push_results(L, 0, "w=i h=i bytes=i", bb->b->w, bb->b->h, (int)bb->bytes);
+    lua_pushvalue(L, 2);
+    lua_rawget(L, -2);
     return 1;
 }
 
@@ -90,8 +89,7 @@ static const pcl_arg get_block_args[] = {A_X("first corner x"), A_NUM("first cor
 PCL_PAIRS_BODY(l_get_block, a) {
     pc_canvas *c = pcl_active_canvas(L);
     block_box *bb = lua_newuserdatauv(L, sizeof *bb, 0);
-    bb->self = PCL_SELF_TAG(bb, &BLOCK_TAG);
-    bb->b = NULL;
+    *bb = (block_box){PCL_SELF_TAG(bb, &BLOCK_TAG), NULL, 0};
     luaL_setmetatable(L, BLOCK_MT);
     pcl_check_canvas(L, c, pc_get_block(c, a[0].x, a[1].x, a[2].x, a[3].x, &bb->b));
     bb->bytes = pc_block_bytes(c, bb->b->w, bb->b->h);
@@ -110,8 +108,7 @@ static const pcl_arg put_block_args[] = {
     A_X("corner x"), A_NUM("corner y"), {.name = "block", .kind = PCL_ANY, .read = read_block, .expect = "a block from get_block"},
     {.name = "action", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ACTIONS, .dflt = PC_PUT_XOR}, PCL_END};
 PCL_PAIRS_BODY(l_put_block, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_put_block(c, a[0].x, a[1].x, a[2].obj, a[3].n));
+    return pcl_drawn(L, pc_put_block(pcl_active_canvas(L), a[0].x, a[1].x, a[2].obj, a[3].n));
 }
 
 /* ---- DRAW, pages, PMAP ------------------------------------------------------------------- */
@@ -127,10 +124,8 @@ static const pcl_arg paint_tile_args[] = {
     A_X("x"), A_NUM("y"), {.name = "tile", .kind = PCL_ANY, .read = read_bytes, .lo = 1, .hi = 64, .expect = "a string of 1..64 bytes"},
     ATTR("border"), PCL_END};
 PCL_PAIRS_BODY(l_paint_tile, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    pc_tile t;
-    pcl_check_canvas(L, c, pc_tile_from_bytes(c, (const unsigned char *)a[2].s, (size_t)a[2].n, &t));
-    return pcl_check_canvas(L, c, pc_paint_tile(c, a[0].x, a[1].x, &t, (int)a[3].x));
+    const unsigned char *tile = (const unsigned char *)a[2].s;
+    return pcl_drawn(L, pc_paint_tile_bytes(pcl_active_canvas(L), a[0].x, a[1].x, tile, (size_t)a[2].n, (int)a[3].x));
 }
 
 static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};

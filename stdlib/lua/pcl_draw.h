@@ -14,6 +14,8 @@ pc_canvas *pcl_active_canvas(lua_State *L);
 /* A core call on canvas c returned rc: nothing if PC_OK, else its message raised under the
  * running function's declared name (a core statement's own name replaced: "pset: ..."). */
 int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc);
+/* The same for a core call on the active canvas (pcl_active_canvas). */
+int pcl_drawn(lua_State *L, int rc);
 
 /* The colour at idx on canvas c: an attribute 0..ncolors-1 (with truecolors, also a true
  * colour's number 256..) or "#rrggbb" (a true colour, allocated on first use); -2 if none.
