@@ -104,8 +104,7 @@ static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return read_color_on(L, idx, c, 0, out);
 }
 
-/* The canvas of a statement whose colour argument is color: the one it was read on, else
- * (the colour absent) the upvalue's. */
+/* The canvas of a statement: the one its colour was read on, else the upvalue's. */
 static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
     return color->present ? color->obj : canvas(L);
 }
@@ -347,8 +346,7 @@ PCL_PAIRS_BODY(l_paint, a) {
 
 static const pcl_arg point_args[] = {A_X("x"), A_NUM("y"), PCL_END};
 PCL_PAIRS_BODY(l_point, a) {
-    lua_pushinteger(L, pc_point(canvas(L), a[0].x, a[1].x));
-    return 1;
+    return pcl_push_results(L, 0, "i", pc_point(canvas(L), a[0].x, a[1].x));
 }
 
 static const pcl_arg window_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),

@@ -117,8 +117,7 @@ PCL_BODY(l_dimension, a) {
     double len = 0;
     pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, a[3].s, (int)a[4].x,
                                         &len));
-    lua_pushnumber(L, len);
-    return 1;
+    return pcl_push_results(L, 0, "n", len);
 }
 
 static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
@@ -128,8 +127,7 @@ PCL_BODY(l_angle_mark, a) {
     double th = 0;
     pcl_check_canvas(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
                               a[4].x, a[3].s, (int)a[5].x, &th));
-    lua_pushnumber(L, th);
-    return 1;
+    return pcl_push_results(L, 0, "n", th);
 }
 
 static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
@@ -191,8 +189,7 @@ PCL_BODY(l_axes, a) {   /* options; x, y, origin, ticks, labels, arrows, grid, c
                       (int)a[7].x, (int)a[9].x};
     int n = 0;
     pcl_check_canvas(L, c, pc_axes_options(c, &o, (int)a[8].x, &n));
-    lua_pushinteger(L, n);
-    return 1;
+    return pcl_push_results(L, 0, "i", n);
 }
 
 static const pcl_arg graph_keys[] = {A_COLOR("color"), {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e6, .dflt = 400}, PCL_END};

@@ -11,13 +11,6 @@ int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return pcl_readfail(L, idx, lua_pushfstring(L, "%s 0..%d", a->dim ? "an attribute" : "a colour number", n - 1));
 }
 
-void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag) {
-    uintptr_t *self = lua_touserdata(L, idx);
-    if (self && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == size && *self == PCL_SELF_TAG(self, tag))
-        return self;
-    return NULL;
-}
-
 double *pcl_places(lua_State *L, const pcl_val *list, const char *what) {
     const pc_map *f = pcl_camera(L);
     int dim = list->dim;

@@ -27,7 +27,11 @@ int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors);
 int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
 /* The userdata at idx if its block is a genuine one of size bytes tagged by tag (PCL_SELF,
  * pcl.h), else NULL: a canvas box, a block of get_block. */
-void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag);
+static inline void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag) {   /* inline: pset's path */
+    uintptr_t *self = lua_touserdata(L, idx);
+    int ok = self && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == size && *self == PCL_SELF_TAG(self, tag);
+    return ok ? self : NULL;
+}
 /* PCL_BODY for a statement whose coordinate pairs may each be one point (pcl_read_pairs). */
 #define PCL_PAIRS_BODY(f, a) \
     static int f##_body(lua_State *L, pcl_val *a); \
