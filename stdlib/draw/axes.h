@@ -35,5 +35,12 @@ int pc_legend(pc_canvas *c, int n, const char *const *names, const int *colors, 
 /* The spec of axes{} without options: the ranges the window's (or the screen's) view shows,
  * crossing at the origin, 5 ticks, labels, arrows, no grid. */
 void pc_axes_default(const pc_canvas *c, pc_axes_spec *s);
+/* axes{}: the default spec with the options given (x, y: {lo, hi}, NULL for the window's;
+ * origin NULL: (0, 0)); PC_EARG naming the option unless lo < hi. */
+typedef struct {
+    const double *x, *y, *origin;
+    int ticks, labels, arrows, grid, grid_color;
+} pc_axes_opts;
+int pc_axes_options(pc_canvas *c, const pc_axes_opts *o, int color, int *nticks);
 
 #endif

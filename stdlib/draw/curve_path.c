@@ -16,6 +16,28 @@ int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *
     return isfinite(*x) && isfinite(*y) ? PC_OK : PC_ENONFINITE;
 }
 
+int pc_place_xy(const pc_map *f, int n, const double *h, double *x, double *y) {
+    if (n != 2) return pc_map_image_xy(f, n, h, x, y);
+    *x = h[0] / h[2];
+    *y = h[1] / h[2];
+    return PC_OK;
+}
+
+int pc_place_why(const pc_map *f, int n, const double *h, double *xy, char *why, size_t len) {
+    if (n == 2) {
+        char w[40];
+        if (pc_loc(2, h, xy) == PC_OK) return PC_OK;
+        snprintf(why, len, ": %%s has weight %s, not 1: a location must be a point (the membership condition; "
+                 "normalize(p) for a projective point)", pc_num_text(h[2], w, sizeof w));
+        return PC_EARG;
+    }
+    int st = pc_map_image_xy(f, n, h, xy, xy + 1);
+    if (st == PC_IMPROPER) snprintf(why, len, ": %%s projects to infinity (it lies in the camera's vanishing plane)");
+    else if (st == PC_EDIM) snprintf(why, len, " must be a 2-D point, got the %d-D %%s (3-D points need a camera)", n);
+    else if (st != PC_OK) snprintf(why, len, ": the image of %%s is not finite");
+    return st;
+}
+
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out) {
     double o[2], ex[2], ey[2];
     pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);

@@ -13,6 +13,14 @@
  * takes points of another dimension (or is NULL), PC_IMPROPER where h goes to infinity,
  * PC_ENONFINITE. */
 int pc_map_image_xy(const pc_map *f, int n, const double *h, double *x, double *y);
+/* The place on the plane of a drawn point h (homogeneous, weight 1): a 2-D one as it is, an
+ * n-D one its image under the camera f as pc_map_image_xy gives it. */
+int pc_place_xy(const pc_map *f, int n, const double *h, double *x, double *y);
+/* The same for a point h of a list drawn (path, fill), a 2-D one of weight 1 only: PC_OK, or
+ * pc_map_image_xy's status (PC_EARG for a 2-D value of another weight) with why the words
+ * that follow the element's position ("[2]"), the point's text in place of their one %s:
+ * ": %s has weight 2, not 1: ...", " must be a 2-D point, got the 3-D %s (...)". */
+int pc_place_why(const pc_map *f, int n, const double *h, double *xy, char *why, size_t len);
 /* The map to screen pixels: f (to the plane; NULL for plain 2-D points) then WINDOW and VIEW. */
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out);
 /* Append to out c over [a, b] flattened through f (NULL: c is 2-D as it is) to within tol,

@@ -41,6 +41,18 @@ void pc_axes_default(const pc_canvas *c, pc_axes_spec *s) {
     *s = (pc_axes_spec){fmin(wx0, wx1), fmax(wx0, wx1), fmin(wy0, wy1), fmax(wy0, wy1), 0, 0, 5, 1, 1, 0, -1};
 }
 
+int pc_axes_options(pc_canvas *c, const pc_axes_opts *o, int color, int *nticks) {
+    pc_axes_spec s;
+    pc_axes_default(c, &s);
+    if (o->x) s.x0 = o->x[0], s.x1 = o->x[1];
+    if (o->y) s.y0 = o->y[0], s.y1 = o->y[1];
+    if (!(s.x0 < s.x1)) return pc_fail(c, "option 'x' must be {lo, hi} with lo < hi");
+    if (!(s.y0 < s.y1)) return pc_fail(c, "option 'y' must be {lo, hi} with lo < hi");
+    if (o->origin) s.ox = o->origin[0], s.oy = o->origin[1];
+    s.ticks = o->ticks, s.labels = o->labels, s.arrows = o->arrows, s.grid = o->grid, s.grid_color = o->grid_color;
+    return pc_axes(c, &s, color, nticks);
+}
+
 int pc_graph(pc_canvas *c, double x0, double x1, int n, pc_graph_fn f, void *ctx, int color) {
     double *xy = malloc(sizeof(double) * 2 * ((size_t)n + 1));
     uint8_t *verbs = malloc((size_t)n + 1);
@@ -123,6 +135,22 @@ int pc_fit_options(pc_canvas *c, const pc_fit_opts *o) {
     if (o->has_pad) return pc_fail(c, "pad is the room round the points of around: give around too (or margin)");
     if (o->has_band) return pc_fail(c, "band is the caption's room under the points of around: give around too");
     return pc_fit(c, o->margin, o->aspect);
+}
+
+int pc_figure_options(pc_canvas *c, const pc_figure_opts *o) {
+    pc_figure f = c->figure;
+    if (o->has_width || o->has_height) {
+        f.width = o->has_width ? o->width : 0;
+        f.height = o->has_height ? o->height : 0;
+    }
+    if (o->has_dpi) f.dpi = o->dpi;
+    if (o->font) {
+        if (strlen(o->font) >= sizeof f.font) return pc_fail(c, "option 'font' is too long");
+        strcpy(f.font, o->font);
+    }
+    if (o->has_size) f.size = o->size;
+    f.frame = 1;   /* a figure of its own: framed to its content when it sets no window */
+    return pc_figure_set(c, &f);
 }
 
 int pc_pen_options(pc_canvas *c, const pc_pen_opts *o) {

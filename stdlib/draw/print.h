@@ -73,5 +73,14 @@ typedef struct {
     const double *dash;
 } pc_pen_opts;
 int pc_pen_options(pc_canvas *c, const pc_pen_opts *o);
+/* figure{width =, height =, dpi =, font =, size =} (pt; each with has_*): the canvas's figure
+ * with those given, framed to its content (frame = 1), set by pc_figure_set; a width or a
+ * height given clears the other when absent (a width alone keeps the window's aspect). */
+typedef struct {
+    int has_width, has_height, has_dpi, has_size;
+    double width, height, dpi, size;
+    const char *font;   /* NULL: the figure's */
+} pc_figure_opts;
+int pc_figure_options(pc_canvas *c, const pc_figure_opts *o);
 
 #endif

@@ -48,6 +48,12 @@ int pc_pages_screen(pc_pages *p, const pc_mode_info *m) {
     return PC_OK;
 }
 
+int pc_pages_draw(pc_pages *p, const char *cmds) {
+    pc_mode_info m;
+    p->draw.aspect = pc_mode_of_canvas(p->c, &m) ? m.aspect : 1;
+    return pc_draw_macro(p->c, &p->draw, cmds);
+}
+
 int pc_pages_set(pc_pages *p, int active, int visual) {
     if (active < 0 || active >= p->npages || visual < 0 || visual >= p->npages) return PC_EARG;
     pc_canvas *a = pc_pages_page(p, active);

@@ -58,6 +58,12 @@ int pc_canvas_set_mode(pc_canvas *c, int mode) {
 
 /* ---- PAINT tiles ------------------------------------------------------------------------ */
 
+int pc_paint_tile_bytes(pc_canvas *c, double x, double y, const unsigned char *bytes, size_t n, int border) {
+    pc_tile t;
+    int st = pc_tile_from_bytes(c, bytes, n, &t);
+    return st == PC_OK ? pc_paint_tile(c, x, y, &t, border) : st;
+}
+
 int pc_tile_from_bytes(pc_canvas *c, const unsigned char *bytes, size_t n, pc_tile *out) {
     if (n < 1 || n > 64) return pc_fail(c, "paint: a tile has 1..64 bytes, got %zu", n);
     memset(out, 0, sizeof *out);

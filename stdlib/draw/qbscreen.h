@@ -138,6 +138,9 @@ int pc_pages_palette(pc_pages *p, int attr, pc_rgb rgb);
  * (substrings) and '=' (numbers from variables) are the caller's to expand first.  A command
  * it cannot read is PC_EARG with the position named. */
 int pc_draw_macro(pc_canvas *c, pc_draw_state *st, const char *cmds);
+/* DRAW on the page drawn on with the pages' state, its turns at the aspect of the mode the
+ * canvas is in (SCREEN 1, 2...: a figure keeps its size on a 4:3 monitor), else 1. */
+int pc_pages_draw(pc_pages *p, const char *cmds);
 
 /* ---- PAINT with a tile ------------------------------------------------------------------ */
 
@@ -159,6 +162,8 @@ int pc_tile_from_bytes(pc_canvas *c, const unsigned char *bytes, size_t n, pc_ti
  * < 0: the foreground colour) filled with the tile; the painted box is recorded as pixels
  * for the SVG writer (raster.c). */
 int pc_paint_tile(pc_canvas *c, double x, double y, const pc_tile *tile, int border);
+/* The two in one: PAINT (x, y), tile$, border with the tile string's n bytes (paint_tile). */
+int pc_paint_tile_bytes(pc_canvas *c, double x, double y, const unsigned char *bytes, size_t n, int border);
 
 /* ---- pages ------------------------------------------------------------------------------ */
 

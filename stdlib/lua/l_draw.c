@@ -2,11 +2,13 @@
  * The canvas lives in a full userdata that every function holds as its first upvalue (a box
  * around QBasic's pages, so SCREEN can replace the canvas in place); the registry keeps it
  * too, for the host. */
-#include "pcl_curve.h"   /* pcl_project: 3-D points through the camera */
 #include "pcl_draw.h"
+#include "pcl_core.h"   /* pcl_project (3-D points through the camera), pcl_push_results */
 #include "print.h"       /* named pens, the print pen's width */
 #include "pcl_scene.h"
 #include "furniture.h"
+#include "math_label.h"
+#include "curve_path.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */
@@ -20,13 +22,7 @@ typedef struct {
 
 /* The box at idx, or NULL: the debug library can put something else in the registry entry
  * or in a drawing function's upvalue (debug.setupvalue), so its size and self are checked. */
-static canvas_box *genuine_box(lua_State *L, int idx) {
-    canvas_box *b = lua_touserdata(L, idx);
-    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b &&
-        b->self == PCL_SELF_TAG(b, &CANVAS_TAG))
-        return b;
-    return NULL;
-}
+static canvas_box *genuine_box(lua_State *L, int idx) { return pcl_tagged(L, idx, sizeof(canvas_box), &CANVAS_TAG); }
 
 static canvas_box *box_at(lua_State *L, int idx) {
     canvas_box *b = genuine_box(L, idx);
@@ -70,6 +66,8 @@ int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc) {
     return rc == PC_OK ? 0 : pcl_fail(L, "%s", pc_canvas_message(c));
 }
 
+int pcl_drawn(lua_State *L, int rc) { return pcl_check_canvas(L, pcl_active_canvas(L), rc); }
+
 /* ---- the kinds of the drawing layer ------------------------------------------------------ */
 
 int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors) {
@@ -106,32 +104,16 @@ static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return read_color_on(L, idx, c, 0, out);
 }
 
-/* The canvas of a statement whose colour argument is color: the one it was read on, else
- * (the colour absent) the upvalue's. */
+/* The canvas of a statement: the one its colour was read on, else the upvalue's. */
 static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
-    if (color->present) return color->obj;
-    return canvas(L);
-}
-
-/* An attribute of the screen (palette): 0..ncolors-1. */
-static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    int n = pcl_active_canvas(L)->ncolors, isint;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
-    return pcl_readfail(L, idx, lua_pushfstring(L, "an attribute 0..%d", n - 1));
+    return color->present ? color->obj : canvas(L);
 }
 
 /* PALETTE's colour: QBasic's 65536*blue + 256*green + red with 6-bit components, a "#rrggbb"
  * string, or a table {r, g, b} of 0..255; into out->v[0..2]. */
 static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     (void)a;
-    pc_rgb rgb;
-    if (lua_type(L, idx) == LUA_TSTRING) {
-        size_t len;
-        const char *s = lua_tolstring(L, idx, &len);
-        if (pc_rgb_parse(s, len, &rgb) != PC_OK) return 0;
-    } else if (lua_istable(L, idx)) {
+    if (lua_istable(L, idx)) {
         for (int i = 0; i < 3; i++) {
             int isnum = lua_geti(L, idx, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
             lua_Integer x = lua_tointegerx(L, -1, &isint);
@@ -140,11 +122,13 @@ static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
             out->v[i] = (double)x;
         }
         return 1;
-    } else {
-        int isint;
-        lua_Integer q = lua_tointegerx(L, idx, &isint);
-        if (lua_type(L, idx) != LUA_TNUMBER || !isint || pc_rgb_qbasic(q, &rgb) != PC_OK) return 0;
     }
+    pc_rgb rgb;
+    size_t len = 0;
+    int isint = 0, t = lua_type(L, idx);
+    const char *s = t == LUA_TSTRING ? lua_tolstring(L, idx, &len) : NULL;
+    lua_Integer q = t == LUA_TNUMBER ? lua_tointegerx(L, idx, &isint) : 0;
+    if (s ? pc_rgb_parse(s, len, &rgb) != PC_OK : !isint || pc_rgb_qbasic(q, &rgb) != PC_OK) return 0;
     out->v[0] = rgb.r, out->v[1] = rgb.g, out->v[2] = rgb.b;
     return 1;
 }
@@ -179,8 +163,7 @@ static const pcl_arg screen_keys[] = {
     {.name = "width", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 1, .hi = 16384},
     {.name = "height", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 1, .hi = 16384},
     {.name = "colors", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 2, .hi = 256, .dflt = 16,
-     .expect = "2, 4, 16 or 256"},
-    PCL_END};
+     .expect = "2, 4, 16 or 256"}, PCL_END};
 static const pcl_arg screen_table = {.name = "mode", .kind = PCL_OPTIONS, .keys = screen_keys};
 static const pcl_arg screen_args[] = {
     {.name = "mode", .kind = PCL_ANY, .expect = "12 (640x480x16), 13 (320x200x256), 1, 2, 7, 8, 9 or {width=, height=}"},
@@ -205,29 +188,19 @@ static int l_screen(lua_State *L) {
     return pcl_check_canvas(L, b->p.c, pc_pages_screen(&b->p, &m));
 }
 
-static int l_cls(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    return pcl_check_canvas(L, c, pc_cls(c));
-}
+static int l_cls(lua_State *L) { return pcl_drawn(L, pc_cls(canvas(L))); }
 
 static const pcl_arg color_args[] = {COLOR("fg"), COLOR("bg"), PCL_END};
-static int l_color(lua_State *L) {
+PCL_BODY(l_color, a) {
     pc_canvas *c = canvas(L);
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    if (!a[0].present && !a[1].present) {   /* query */
-        lua_pushinteger(L, c->fg);
-        lua_pushinteger(L, c->bg);
-        return 2;
-    }
+    if (!a[0].present && !a[1].present) return pcl_push_results(L, 0, "i i", c->fg, c->bg);   /* query */
     return pcl_check_canvas(L, c, pc_color(c, a[0].present ? (int)a[0].x : c->fg, (int)a[1].x));
 }
 
 static const pcl_arg palette_args[] = {
-    {.name = "attribute", .kind = PCL_ANY, .read = read_attr, .expect = "an attribute of the screen"},
+    {.name = "attribute", .kind = PCL_ANY, .read = pcl_read_attr, .dim = 1, .expect = "an attribute of the screen"},
     {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
-     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"},
-    PCL_END};
+     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"}, PCL_END};
 static int l_palette(lua_State *L) {
     pc_canvas *c = canvas(L);
     if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_palette_reset(c));
@@ -244,11 +217,6 @@ static int dot(lua_State *L, int (*fn)(pc_canvas *, double, double, int)) {
     pc_canvas *c = stmt_canvas(L, &a[2]);
     return pcl_check_canvas(L, c, fn(c, a[0].x, a[1].x, (int)a[2].x));
 }
-static int l_pset(lua_State *L) {
-    if (pcl_scene_pset(L)) return 0;   /* a 3-D point into the camera's scene (pcl_scene.h) */
-    return dot(L, pc_pset);
-}
-static int l_preset(lua_State *L) { return dot(L, pc_preset); }
 
 /* LINE's style: "b" (box) or "bf" (filled box), any case; then QBasic's 16-bit pattern,
  * 0..65535 or a signed INTEGER -32768..-1 (&HAAAA is -21846 in QBasic). */
@@ -260,6 +228,84 @@ static const char *const BOX[] = {"b", "B", "bf", "BF", "Bf", "bF", NULL};
 static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x"), A_NUM("end y"), LINE_TAIL};
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
+/* ---- 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write -- */
+
+/* A 3-D point at stack index idx, or 0. */
+static int point3(lua_State *L, int idx, double x[3]) {
+    pcl_value *p = pcl_tovalue(L, idx);
+    if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
+    for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
+    return 1;
+}
+
+/* A statement's 3-D stroke added to the scene with status st: 1 (done), or its error raised. */
+static int scene_added(lua_State *L, int st) {
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return 1;
+}
+
+/* The colour argument #k of a statement with 3-D points, read as its declaration a says. */
+static int scene_color(lua_State *L, int k, const pcl_arg *a) {
+    pcl_val v = {0};
+    pcl_readone(L, k, k, 0, a, 0, &v);
+    return (int)v.x;
+}
+
+/* pset(P [, colour]) with a 3-D point and a scene: the dot added, 1; else 0 (drawn as usual). */
+static int scene_pset(lua_State *L) {
+    double x[3];
+    pc_scene *sc;
+    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
+    return scene_added(L, pc_scene_add_dot(sc, x, scene_color(L, 2, &dot_args[2])));
+}
+
+/* line(A, B [, colour]) with 3-D points and a scene: the segment added, 1; else 0. */
+static int scene_line(lua_State *L) {
+    double ab[6];
+    pc_scene *sc;
+    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
+    int color = scene_color(L, 3, &line_args[4]);
+    return scene_added(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen));
+}
+
+/* path(points, {closed =, color =, arrow =}) with 3-D points (read already) and a scene: the
+ * polyline and its heads (PC_ARROW_* bits) added, 1; else 0. */
+static int scene_path(lua_State *L, int closed, int color, int heads) {
+    pc_scene *sc;
+    double x[3];
+    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
+    int is3 = point3(L, -1, x);
+    lua_pop(L, 1);
+    if (!is3 || !(sc = pcl_scene(L))) return 0;
+    size_t n = lua_rawlen(L, 1);   /* n points of one path */
+    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
+    for (size_t k = 0; k < n; k++) {
+        lua_rawgeti(L, 1, (lua_Integer)k + 1);
+        int ok = point3(L, -1, xyz + 3 * k);
+        lua_pop(L, 1);
+        if (!ok) return 0;   /* not all 3-D points: drawn as usual */
+    }
+    return scene_added(L, pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen));
+}
+
+/* label(text, P, ...) with a 3-D point and a scene, its arguments a read by label's
+ * declaration: the markup checked now, as a 2-D label's is, and the label shown only where its
+ * point is seen; 1, else 0. */
+static int scene_label(lua_State *L, const pcl_val *a) {
+    double x[3];
+    pc_scene *sc;
+    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
+    char err[200];
+    if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
+    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
+    if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
+        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
+    return scene_added(L, st);
+}
+
+static int l_pset(lua_State *L) { return scene_pset(L) ? 0 : dot(L, pc_pset); }
+static int l_preset(lua_State *L) { return dot(L, pc_preset); }
+
 static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl_val *a) {
     int box = !a[3].present ? 0 : a[3].n < 2 ? 1 : 2;
     long pattern = a[4].present ? (long)a[4].x & 0xffff : -1;
@@ -267,54 +313,40 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
 }
 
 static int l_line(lua_State *L) {
-    if (pcl_scene_line(L)) return 0;   /* 3-D points into the camera's scene (pcl_scene.h) */
+    if (scene_line(L)) return 0;
     pcl_val a[7];
     PCL_READ_PAIRS(L, a);
     return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
 }
 
 /* LINE -(x, y): from the graphics cursor (the last point referenced). */
-static int l_line_to(lua_State *L) {
-    pcl_val a[5];
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_line_to, a) {
     pc_canvas *c = stmt_canvas(L, &a[2]);
     return draw_line(L, c, c->last_x, c->last_y, a);
 }
 
 static int l_last_point(lua_State *L) {
     pc_canvas *c = canvas(L);
-    lua_pushnumber(L, c->last_x);
-    lua_pushnumber(L, c->last_y);
-    return 2;
+    return pcl_push_results(L, 0, "n n", c->last_x, c->last_y);
 }
 
 #define ANGLE(nm) OPTNUM(nm, PCL_RANGE, -2 * M_PI - 1e-6, 2 * M_PI + 1e-6, "a number between -2*pi and 2*pi")
-static const pcl_arg circle_args[] = {
-    A_X("x"), A_NUM("y"),
+static const pcl_arg circle_args[] = {A_X("x"), A_NUM("y"),
     {.name = "radius", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 0, .hi = HUGE_VAL, .expect = "a non-negative number"},
-    COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"),
-    OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
-static int l_circle(lua_State *L) {
-    pcl_val a[7];
-    PCL_READ_PAIRS(L, a);
+    COLOR("colour"), ANGLE("start angle"), ANGLE("end angle"), OPTNUM("aspect", PCL_POS, 0, 0, NULL), PCL_END};
+PCL_PAIRS_BODY(l_circle, a) {
     pc_canvas *c = stmt_canvas(L, &a[3]);
     return pcl_check_canvas(L, c, pc_circle(c, a[0].x, a[1].x, a[2].x, (int)a[3].x, a[4].x, a[5].x, a[6].x));
 }
 
 static const pcl_arg paint_args[] = {A_X("x"), A_NUM("y"), COLOR("colour"), COLOR("border colour"), PCL_END};
-static int l_paint(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ_PAIRS(L, a);
-    pc_canvas *c = canvas(L);
-    return pcl_check_canvas(L, c, pc_paint(c, a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
+PCL_PAIRS_BODY(l_paint, a) {
+    return pcl_drawn(L, pc_paint(canvas(L), a[0].x, a[1].x, (int)a[2].x, (int)a[3].x));
 }
 
 static const pcl_arg point_args[] = {A_X("x"), A_NUM("y"), PCL_END};
-static int l_point(lua_State *L) {
-    pcl_val a[2] = {0};
-    PCL_READ_PAIRS(L, a);
-    lua_pushinteger(L, pc_point(canvas(L), a[0].x, a[1].x));
-    return 1;
+PCL_PAIRS_BODY(l_point, a) {
+    return pcl_push_results(L, 0, "i", pc_point(canvas(L), a[0].x, a[1].x));
 }
 
 static const pcl_arg window_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),
@@ -339,8 +371,7 @@ static int l_view(lua_State *L) {
 
 static const char *const THEMES[] = {"paper", "screen", NULL};
 static const pcl_arg save_args[] = {{.name = "path", .kind = PCL_STRING, .expect = "a file name"},
-                                    {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES},
-                                    PCL_END};
+                                    {.name = "theme", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = THEMES}, PCL_END};
 PCL_BODY(l_save, a) {
     pc_canvas *c = canvas(L);
     pc_theme theme = !a[1].present ? pcl_theme(L) : a[1].n == 0 ? PC_THEME_PAPER : PC_THEME_SCREEN;
@@ -354,10 +385,7 @@ PCL_BODY(l_save, a) {
 
 static int l_size(lua_State *L) {
     pc_canvas *c = canvas(L);
-    lua_pushinteger(L, c->width);
-    lua_pushinteger(L, c->height);
-    lua_pushinteger(L, c->ncolors);
-    return 3;
+    return pcl_push_results(L, 0, "i i i", c->width, c->height, c->ncolors);
 }
 
 /* ---- beyond QBasic: pen, path, label, text ------------------------------------------------ */
@@ -396,8 +424,7 @@ static const pcl_arg pen_keys[] = {
 static const pcl_arg pen_table = {.name = "pen", .kind = PCL_OPTIONS, .keys = pen_keys};
 static const pcl_arg pen_args[] = {
     {.name = "pen", .kind = PCL_ANY, .flags = PCL_OPT,
-     .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"},
-    PCL_END};
+     .expect = "a table {width =, dash =} or a pen's name (\"main\", \"thin\", \"hidden\", \"centre\")"}, PCL_END};
 
 static int l_pen(lua_State *L) {
     pcl_val a[3] = {0};   /* pen; the table's width, dash */
@@ -416,23 +443,9 @@ static int l_pen(lua_State *L) {
  * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
 static void list_point(lua_State *L, int idx, const char *where, double *xy) {
     pcl_value *p = pcl_tovalue(L, -1);
-    if (p && p->n != 2) {
-        int st = pcl_project(L, p->n, p->h, xy, xy + 1);
-        if (st == PC_OK) return;
-        const char *text = luaL_tolstring(L, -1, NULL);
-        if (st == PC_IMPROPER)
-            pcl_fail(L, "argument #%d (points) %s: %s projects to infinity (it lies in the camera's "
-                        "vanishing plane)", idx, where, text);
-        if (st != PC_EDIM) pcl_fail(L, "argument #%d (points) %s: the image of %s is not finite", idx, where, text);
-        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got the %d-D %s (3-D points need a camera)",
-                 idx, where, p->n, text);
-    }
-    if (p && pc_loc(2, p->h, xy) != PC_OK) {   /* a vector or a weighted value */
-        const char *text = luaL_tolstring(L, -1, NULL);
-        pcl_fail(L, "argument #%d (points) %s: %s has weight %s, not 1: a location must be a point "
-                    "(the membership condition; normalize(p) for a projective point)", idx, where, text,
-                 pcl_pushnum(L, p->h[2]));
-    }
+    char why[200];
+    if (p && pc_place_why(pcl_camera(L), p->n, p->h, xy, why, sizeof why) != PC_OK)
+        pcl_fail(L, "argument #%d (points) %s%s", idx, where, lua_pushfstring(L, why, luaL_tolstring(L, -1, NULL)));
     if (!pcl_topoint2(L, -1, xy, xy + 1))
         pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
 }
@@ -498,8 +511,7 @@ static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL
 
 PCL_BODY(l_path, a) {   /* points, options; closed, color, fill, rule, arrow */
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
-    /* 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write */
-    if (!a[4].present && pcl_scene_path(L, closed, color, heads)) return 0;
+    if (!a[4].present && scene_path(L, closed, color, heads)) return 0;
     pc_canvas *c = canvas(L);
     int rule = a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
     return pcl_check_canvas(L, c, pc_path_stmt(c, (size_t)a[0].n, a[0].list, a[0].obj, closed, color, heads,
@@ -514,15 +526,12 @@ PCL_BODY(l_fill, a) {
 }
 
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
-static const pcl_arg label_args[] = {
-    TEXT, A_X("x"), A_NUM("y"),
+static const pcl_arg label_args[] = {TEXT, A_X("x"), A_NUM("y"),
     {.name = "direction", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = DIRECTIONS, .dflt = PC_ANCHOR_NE,
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
-static int l_label(lua_State *L) {
-    pcl_val a[10] = {0};   /* text, x, y, direction, colour, scale, options; font, size, halo */
-    PCL_READ_PAIRS(L, a);
-    if (pcl_scene_label(L, a)) return 0;   /* a 3-D point in the camera's scene (pcl_scene.h) */
+PCL_PAIRS_BODY(l_label, a) {   /* text, x, y, direction, colour, scale, options; font, size, halo */
+    if (scene_label(L, a)) return 0;
     pc_canvas *c = canvas(L);
     int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
     pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
@@ -530,12 +539,25 @@ static int l_label(lua_State *L) {
     return 0;
 }
 
+/* text(x, y, s ...), or text{x =, y =, text =, units =, color =, scale =}: (x, y) in screen
+ * pixels with units = "device", whatever the window. */
+static const char *const UNITS[] = {"world", "device", NULL};
+static const pcl_arg text_keys[] = {
+    {.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
+    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, {.name = "units", .kind = PCL_ENUM, .choices = UNITS},
+    {.name = "color", .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}, SCALE, PCL_END};
+static const pcl_arg text_table = {.name = "options", .kind = PCL_OPTIONS, .keys = text_keys};
 static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
 static int l_text(lua_State *L) {
-    pcl_val a[5] = {0};
-    PCL_READ_PAIRS(L, a);
     pc_canvas *c = canvas(L);
-    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
+    pcl_val a[6] = {0};   /* x, y, text, colour, scale; the table's x, y, text, units, color, scale */
+    if (!lua_istable(L, 1)) {
+        PCL_READ_PAIRS(L, a);
+        return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
+    }
+    pcl_read_options(L, 1, 1, &text_table, a);
+    if (a[3].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[0].x, a[1].x, a[2].s, (int)a[5].x, (int)a[4].x));
+    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[5].x, (int)a[4].x));
 }
 
 static int canvas_gc(lua_State *L) {
@@ -567,7 +589,7 @@ static const pcl_fn fns[] = {
     {.name = "path", .fn = l_path, .args = path_args, .sig = "path(points [, {closed = false, color = c, fill = c, rule = \"evenodd\"|\"nonzero\", arrow = \"end\"|\"start\"|\"both\"}])", .help = "A polyline through the points (or a list of lists: one subpath each) as one path (SVG keeps it a <path>); with fill, the closed path filled, its outline drawn on top only if color is given; arrow puts filled heads on its last and/or first segment."},
     {.name = "fill", .fn = l_fill, .args = fill_args, .sig = "fill(points [, colour [, \"evenodd\"|\"nonzero\"]])", .help = "Fill the closed path through the points (or a list of lists: subpaths; even-odd by default, so a subpath inside another is a hole): the pixels whose centres are inside, shared edges covered once; a filled <path> in SVG."},
     {.name = "label", .fn = l_label, .args = label_args, .sig = "label(text, P | x, y [, direction [, colour [, scale]]] [, {font =, size =, halo =}])", .help = "Text beside a point: direction \"n\", \"ne\", \"e\", \"se\", \"s\", \"sw\", \"w\", \"nw\" or \"c\", 3 px away; without one (or nil) it is placed when the picture is written, clear of other labels, lines and the edge; $...$ is math ($A_1$, $\\varphi$, $\\bar{t}$); the VGA 8x16 font in the VGA look, the figure's font (size in pt, a halo unless halo = false) in the print look."},
-    {.name = "text", .fn = l_text, .args = text_args, .sig = "text(x, y, string [, colour [, scale]])", .help = "Text with the top-left corner of its first 8x16 cell at (x, y)."},
+    {.name = "text", .fn = l_text, .args = text_args, .sig = "text(x, y, string [, colour [, scale]])\ntext{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}", .help = "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window."},
     PCL_END};
 
 void pcl_open_draw(lua_State *L) {
@@ -586,15 +608,4 @@ void pcl_open_draw(lua_State *L) {
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }
     pcl_register(L, -2, fns, 1);
-}
-
-/* The colour argument at arg for bindings not on the layer (c:draw): nil for the default. */
-int pcl_optcolor(lua_State *L, int arg, pc_canvas *c) {
-    arg = lua_absindex(L, arg);
-    int color = lua_isnoneornil(L, arg) ? -1 : pcl_color_at(L, arg, c, 0);
-    if (color == -2)
-        pcl_error(L, "%s: argument #%d (colour) must be a colour number 0..%d or \"#rrggbb\", got %s",
-                  pcl_fname(L), pcl_arg_shown(L, arg), c->ncolors - 1, lua_type(L, arg) == LUA_TSTRING
-                  ? lua_pushfstring(L, "\"%s\"", lua_tostring(L, arg)) : pcl_shown(L, arg));
-    return color;
 }

@@ -28,29 +28,16 @@ static const pcl_arg figure_keys[] = {
     {.name = "height", .kind = PCL_ANY, .read = pcl_read_length, .expect = LENGTH, .shown = "\"8cm\""},
     {.name = "dpi", .kind = PCL_NUMBER, .flags = PCL_RANGE, .lo = 10, .hi = 2400, .shown = "300"},
     {.name = "font", .kind = PCL_STRING, .shown = "\"serif\"|\"sans\"|\"mono\""},
-    {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)", .shown = "10"},
-    PCL_END};
+    {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)", .shown = "10"}, PCL_END};
 static const pcl_arg figure_args[] = {
-    {.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = figure_keys},
-    PCL_END};
+    {.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = figure_keys}, PCL_END};
 
 /* figure{width = "12cm", height = "8cm", dpi = 300, font = "serif", size = 10}: the print
  * look for every output, at that size; a width alone keeps the window's aspect. */
 PCL_BODY(l_figure, a) {   /* options, width, height, dpi, font, size */
     pc_canvas *c = pcl_canvas(L);
-    pc_figure f = c->figure;
-    if (a[1].present || a[2].present) {
-        f.width = a[1].present ? a[1].x : 0;
-        f.height = a[2].present ? a[2].x : 0;
-    }
-    if (a[3].present) f.dpi = a[3].x;
-    if (a[4].present) {
-        if (strlen(a[4].s) >= sizeof f.font) return pcl_keyfail(L, "font", "is too long");
-        strcpy(f.font, a[4].s);
-    }
-    if (a[5].present) f.size = a[5].x;
-    f.frame = 1;   /* a figure of its own: framed to its content when it sets no window */
-    return pcl_check_canvas(L, c, pc_figure_set(c, &f));   /* the core's message, its "figure: " once */
+    pc_figure_opts o = {a[1].present, a[2].present, a[3].present, a[5].present, a[1].x, a[2].x, a[3].x, a[5].x, a[4].s};
+    return pcl_check_canvas(L, c, pc_figure_options(c, &o));   /* the core's message, its "figure: " once */
 }
 
 /* A font the print look can set: a name fontconfig knows. */
@@ -64,19 +51,16 @@ static int read_font(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return 1;
 }
 
-const pcl_arg pcl_label_keys[] = {
-    {.name = "font", .kind = PCL_ANY, .read = read_font, .expect = "a font name"},
+const pcl_arg pcl_label_keys[] = {{.name = "font", .kind = PCL_ANY, .read = read_font, .expect = "a font name"},
     {.name = "size", .kind = PCL_ANY, .read = read_size, .expect = "a size in pt (1 to 200)"},
-    {.name = "halo", .kind = PCL_BOOLEAN},
-    PCL_END};
+    {.name = "halo", .kind = PCL_BOOLEAN}, PCL_END};
 
 void pcl_label_style(lua_State *L, pc_canvas *c, const pcl_val *k) {
     pcl_check_canvas(L, c, pc_text_style(c, k[0].s, k[1].x, k[2].present ? (int)k[2].x : -1));
 }
 
 static const pcl_fn fns[] = {
-    PCL_FN("figure", l_figure, figure_args, NULL,
-           "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt. Without a window or a screen() the coordinates are world units with y up and the figure is framed to what is drawn, at true shape."),
+    PCL_FN("figure", l_figure, figure_args, NULL, "The print look for every output (PDF, EPS and PS always have it): the canvas at that size (a width alone keeps the window's aspect), PNG at dpi, labels in the font at size pt. Without a window or a screen() the coordinates are world units with y up and the figure is framed to what is drawn, at true shape."),
     PCL_END};
 
 void pcl_open_figure(lua_State *L) { pcl_register(L, -1, fns, 0); }

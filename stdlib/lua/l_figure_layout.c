@@ -1,19 +1,17 @@
 /* Binding of the figure layout and its furniture (stdlib/draw/layout.h, furniture.h, axes.h),
  * on the declared argument layer (pcl_args.h, docs/bindings.md): placed_labels, mark, arrow,
  * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
- * and map.view; text{units = "device"} in front of the drawing binding's text.  Points are
- * 2-D, or n-D through the camera; sizes are screen pixels.  And the 3-D scene (pcl_scene.h):
- * the strokes of a camera with hidden lines, resolved when the picture is written. */
-#include "pcl_args.h"
+ * and map.view.  Points are 2-D, or n-D through the camera; sizes are screen pixels.  And the
+ * 3-D scene (pcl_scene.h) a camera with hidden lines keeps, resolved when a picture is written. */
 #include "pcl_draw.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_scene.h"
 #include "layout.h"
 #include "print.h"
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
-#include "math_label.h"
+#include "curve_path.h"
 
 /* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
@@ -23,17 +21,10 @@ static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p || fabs(p->h[p->n] - 1) > PC_WEIGHT_TOL) return 0;
     out->n = p->n;
-    if (p->n == 3)
-        for (int k = 0; k < 3; k++) out->v[2 + k] = p->h[k] / p->h[3];
-    if (p->n == 2) {
-        out->v[0] = p->h[0] / p->h[2];
-        out->v[1] = p->h[1] / p->h[2];
-        return 1;
-    }
-    return pcl_project(L, p->n, p->h, &out->v[0], &out->v[1]) == PC_OK;
+    for (int k = 0; k < 3 && p->n == 3; k++) out->v[2 + k] = p->h[k] / p->h[3];
+    return pc_place_xy(pcl_camera(L), p->n, p->h, &out->v[0], &out->v[1]) == PC_OK;
 }
-#define XY_TEXT "a 2-D point (or an n-D one through the camera)"
-#define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = XY_TEXT}
+#define A_XY(nm) {.name = nm, .kind = PCL_ANY, .read = read_xy, .expect = PCL_PLACE_TEXT}
 
 /* a colour, true colours (256..) included */
 #define A_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}
@@ -51,15 +42,9 @@ static int l_placed_labels(lua_State *L) {
     if (!p) return pcl_fail(L, "out of memory");
     lua_createtable(L, (int)n, 0);
     for (size_t k = 0; k < n; k++) {
-        const double box[4] = {p[k].box.x0, p[k].box.y0, p[k].box.x1 - p[k].box.x0, p[k].box.y1 - p[k].box.y0};
-        lua_createtable(L, 0, 7);
-        lua_pushlstring(L, p[k].text, p[k].len);
-        lua_setfield(L, -2, "text");
-        pcl_set_fields(L, 4, (const char *const[]){"x", "y", "w", "h"}, box, 0);
-        lua_pushstring(L, p[k].side);
-        lua_setfield(L, -2, "side");
-        lua_pushboolean(L, p[k].autoplaced);
-        lua_setfield(L, -2, "auto");
+        const pc_box2 *b = &p[k].box;
+        pcl_push_results(L, 0, "text=s x=n y=n w=n h=n side=s auto=b", p[k].text, b->x0, b->y0, b->x1 - b->x0,
+                         b->y1 - b->y0, p[k].side, p[k].autoplaced);
         lua_rawseti(L, -2, (lua_Integer)k + 1);
     }
     free(p);
@@ -91,68 +76,6 @@ int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int co
     return pc_scene_add_curve(sc, c, n, color, pcl_active_canvas(L)->pen);
 }
 
-/* A 3-D point at stack index idx, or 0. */
-static int point3(lua_State *L, int idx, double x[3]) {
-    pcl_value *p = pcl_tovalue(L, idx);
-    if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
-    for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
-    return 1;
-}
-
-int pcl_scene_line(lua_State *L) {
-    double ab[6];
-    pc_scene *sc;
-    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
-    pc_canvas *c = pcl_active_canvas(L);
-    int st = pc_scene_add_polyline(sc, 2, ab, NULL, pcl_optcolor(L, 3, c), c->pen);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
-int pcl_scene_pset(lua_State *L) {
-    double x[3];
-    pc_scene *sc;
-    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
-    int st = pc_scene_add_dot(sc, x, pcl_optcolor(L, 2, pcl_active_canvas(L)));
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
-int pcl_scene_path(lua_State *L, int closed, int color, int heads) {
-    pc_scene *sc;
-    double x[3];
-    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
-    int is3 = point3(L, -1, x);
-    lua_pop(L, 1);
-    if (!is3 || !(sc = pcl_scene(L))) return 0;
-    size_t n = lua_rawlen(L, 1);   /* the arg layer read them already: n points of one path */
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
-    for (size_t k = 0; k < n; k++) {
-        lua_rawgeti(L, 1, (lua_Integer)k + 1);
-        int ok = point3(L, -1, xyz + 3 * k);
-        lua_pop(L, 1);
-        if (!ok) return lua_pop(L, 1), 0;   /* not all 3-D points: drawn as usual */
-    }
-    int st = pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen);
-    lua_pop(L, 1);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
-int pcl_scene_label(lua_State *L, const pcl_val *a) {
-    double x[3];
-    pc_scene *sc;
-    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
-    /* the markup is checked now, as a 2-D label's is, not when the scene is drawn at write */
-    char err[200];
-    if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
-    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
-    if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
-        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
 /* ---- markers, arrows, furniture -------------------------------------------------------------- */
 
 static const char *const STYLES[] = {"dot", "open", "cross", "plus", "square", NULL};
@@ -169,18 +92,16 @@ PCL_BODY(l_mark, a) {
 }
 
 static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
-static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1),
-                                     A_COLOR("colour"), PCL_END};
+static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_arrow, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
+    return pcl_drawn(L, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
 }
 
 /* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
 static const pcl_arg vector_args[] = {A_XY("A"), {.name = "v", .kind = PCL_VECTOR}, A_COLOR("colour"), PCL_END};
-static int l_vector(lua_State *L) {
-    pcl_val a[3] = {0}, end = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_vector, a) {
+    pcl_val end = {0};
     pc_canvas *c = pcl_active_canvas(L);
     lua_pushvalue(L, 1);
     lua_pushvalue(L, 2);
@@ -196,8 +117,7 @@ PCL_BODY(l_dimension, a) {
     double len = 0;
     pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, a[3].s, (int)a[4].x,
                                         &len));
-    lua_pushnumber(L, len);
-    return 1;
+    return pcl_push_results(L, 0, "n", len);
 }
 
 static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
@@ -207,8 +127,7 @@ PCL_BODY(l_angle_mark, a) {
     double th = 0;
     pcl_check_canvas(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
                               a[4].x, a[3].s, (int)a[5].x, &th));
-    lua_pushnumber(L, th);
-    return 1;
+    return pcl_push_results(L, 0, "n", th);
 }
 
 static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
@@ -216,26 +135,23 @@ static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
                                      A_COLOR("colour"), PCL_END};
 PCL_BODY(l_ticks, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
+    return pcl_drawn(L, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
 }
 
 static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
                                      A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_hatch, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    int n = a[0].n, d = a[0].dim;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n, 0);
-    int bad = pcl_rows_to_xy(L, n, d, a[0].list, xy);
-    if (bad >= 0) return pcl_argfail(L, 1, "[%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
+    const double *xy = pcl_places(L, &a[0], "argument #1 (points)");
     size_t lines;
-    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
+    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)a[0].n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
 }
 
 static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
                                       A_COLOR("colour"), PCL_END};
 PCL_BODY(l_centre_line, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
+    return pcl_drawn(L, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
 }
 
 /* ---- framing, captions, device-unit text -------------------------------------------------- */
@@ -247,12 +163,9 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
 PCL_BODY(l_fit, a) {   /* options; margin, aspect, around, pad, band */
     pc_canvas *c = pcl_active_canvas(L);
-    int n = a[3].present ? a[3].n : 0, d = a[3].dim;
-    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)n + 1, 0);
-    int bad = pcl_rows_to_xy(L, n, d, a[3].list, xy);
-    if (bad >= 0) return pcl_fail(L, "option 'around' [%d] must be " XY_TEXT ", got a %d-D point", bad + 1, d);
+    const double *xy = pcl_places(L, &a[3], "option 'around'");
     pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n,
-                     a[1].x, a[4].x, a[5].x, (size_t)n, xy};
+                     a[1].x, a[4].x, a[5].x, (size_t)a[3].n, xy};
     return pcl_check_canvas(L, c, pc_fit_options(c, &o));
 }
 
@@ -260,29 +173,7 @@ static const char *const EDGES[] = {"bottom", "top", NULL};
 static const pcl_arg caption_args[] = {{.name = "text", .kind = PCL_STRING}, A_OPTENUM("where", EDGES, 0),
                                        A_COLOR("colour"), PCL_END};
 PCL_BODY(l_caption, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_caption(c, a[0].s, a[1].n, (int)a[2].x));
-}
-
-/* text{x =, y =, text =, units =, color =, scale =}; the positional form goes to the drawing
- * binding's text (kept as this closure's upvalue). */
-static const char *const UNITS[] = {"world", "device", NULL};
-static const pcl_arg text_keys[] = {{.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
-                                    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, A_OPTENUM("units", UNITS, 0),
-                                    A_COLOR("color"), {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}, PCL_END};
-static const pcl_arg text_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = text_keys}, PCL_END};
-static int l_text(lua_State *L) {
-    if (!lua_istable(L, 1)) {
-        lua_pushvalue(L, PCL_UPVALUE(1));
-        lua_insert(L, 1);
-        lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-        return lua_gettop(L);
-    }
-    pcl_val a[7] = {0};
-    PCL_READ(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    if (a[4].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[1].x, a[2].x, a[3].s, (int)a[6].x, (int)a[5].x));
-    return pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[3].s, PC_ANCHOR_SE, 0, (int)a[6].x, (int)a[5].x));
+    return pcl_drawn(L, pc_caption(pcl_active_canvas(L), a[0].s, a[1].n, (int)a[2].x));
 }
 
 /* ---- axes, graphs, legends ------------------------------------------------------------------ */
@@ -292,27 +183,13 @@ static const pcl_arg axes_keys[] = {A_NUMBERS("x", 2, 2), A_NUMBERS("y", 2, 2), 
                                     {.name = "labels", .kind = PCL_BOOLEAN, .dflt = 1}, {.name = "arrows", .kind = PCL_BOOLEAN, .dflt = 1},
                                     {.name = "grid", .kind = PCL_BOOLEAN}, A_COLOR("color"), A_COLOR("grid_color"), PCL_END};
 static const pcl_arg axes_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = axes_keys}, PCL_END};
-static int l_axes(lua_State *L) {
-    double xr[2], yr[2];
-    pcl_val a[10] = {{0}, {.list = xr, .cap = 2}, {.list = yr, .cap = 2}};
-    PCL_READ(L, a);
+PCL_BODY(l_axes, a) {   /* options; x, y, origin, ticks, labels, arrows, grid, color, grid_color */
     pc_canvas *c = pcl_active_canvas(L);
-    pc_axes_spec s;
-    pc_axes_default(c, &s);
-    if (a[1].present) s.x0 = xr[0], s.x1 = xr[1];
-    if (a[2].present) s.y0 = yr[0], s.y1 = yr[1];
-    if (!(s.x0 < s.x1)) return pcl_keyfail(L, "x", "must be {lo, hi} with lo < hi");
-    if (!(s.y0 < s.y1)) return pcl_keyfail(L, "y", "must be {lo, hi} with lo < hi");
-    if (a[3].present) s.ox = a[3].v[0], s.oy = a[3].v[1];
-    s.ticks = (int)a[4].x;
-    s.labels = (int)a[5].x;
-    s.arrows = (int)a[6].x;
-    s.grid = (int)a[7].x;
-    s.grid_color = (int)a[9].x;
+    pc_axes_opts o = {a[1].list, a[2].list, a[3].present ? a[3].v : NULL, (int)a[4].x, (int)a[5].x, (int)a[6].x,
+                      (int)a[7].x, (int)a[9].x};
     int n = 0;
-    pcl_check_canvas(L, c, pc_axes(c, &s, (int)a[8].x, &n));
-    lua_pushinteger(L, n);
-    return 1;
+    pcl_check_canvas(L, c, pc_axes_options(c, &o, (int)a[8].x, &n));
+    return pcl_push_results(L, 0, "i", n);
 }
 
 static const pcl_arg graph_keys[] = {A_COLOR("color"), {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e6, .dflt = 400}, PCL_END};
@@ -344,10 +221,8 @@ PCL_BODY(l_graph, a) {
 static const char *const CORNERS[] = {"ne", "nw", "se", "sw", NULL};
 static const pcl_arg legend_args[] = {{.name = "entries", .kind = PCL_ANY, .expect = "a list of {name, colour}"},
                                       A_OPTENUM("corner", CORNERS, 0), A_COLOR("colour"), PCL_END};
-static int l_legend(lua_State *L) {
+PCL_BODY(l_legend, a) {
     static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
     pc_canvas *c = pcl_active_canvas(L);
     int t = a[0].idx;
     lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : 0;
@@ -374,6 +249,10 @@ static const pcl_arg view_keys[] = {A_POINT("from", 3), A_POINT("to", 3), A_VECT
                                     A_NUM("azimuth"), {.name = "elevation", .kind = PCL_NUMBER, .dflt = 30},
                                     {.name = "distance", .kind = PCL_NUMBER, .flags = PCL_POS, .dflt = 10}, PCL_END};
 static const pcl_arg view_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = view_keys}, PCL_END};
+static const pc_why view_why[] = {{"map.view", PC_ECOINCIDENT, 0, NULL, "from and to coincide: no line of sight"},
+                                  {"map.view", PC_EZERO, 0, "up", "is the zero vector"},
+                                  {"map.view", PC_ECOLLINEAR, 0, "up", "is along the line of sight; give another up"},
+                                  {0}};
 PCL_BODY(l_view, a) {
     static const double origin[3] = {0, 0, 0};
     const double *to = a[2].present ? a[2].v : origin;
@@ -386,13 +265,7 @@ PCL_BODY(l_view, a) {
         if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
         st = pc_map_view_azel(&f, to, a[5].x, a[6].x, a[7].x, persp);
     }
-    switch (st) {
-    case PC_OK: break;
-    case PC_ECOINCIDENT: return pcl_fail(L, "from and to coincide: no line of sight");
-    case PC_EZERO: return pcl_keyfail(L, "up", "is the zero vector");
-    case PC_ECOLLINEAR: return pcl_keyfail(L, "up", "is along the line of sight; give another up");
-    default: return pcl_fail(L, "%s", pc_strerror(st));
-    }
+    pcl_check(L, st, view_why);
     *pcl_newmap(L) = f;
     return 1;
 }
@@ -400,32 +273,21 @@ PCL_BODY(l_view, a) {
 /* ---- registration ---------------------------------------------------------------------------- */
 
 static const pcl_fn fns[] = {
-    PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}",
-           "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
+    PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}", "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
     PCL_FN("mark", l_mark, mark_args, NULL, "A marker on a point, size pixels across (default a filled dot of 5); a 3-D point joins the camera's scene."),
     PCL_FN("arrow", l_arrow, arrow_args, NULL, "The segment AB with a filled arrow head (9 px) at B, at A or at both."),
     PCL_FN("vector", l_vector, vector_args, NULL, "The vector v drawn as an arrow from the point A to A + v."),
-    PCL_FN("dimension", l_dimension, dim_args, "length",
-           "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
-    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle",
-           "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
+    PCL_FN("dimension", l_dimension, dim_args, "length", "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
+    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle", "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
     PCL_FN("ticks", l_ticks, ticks_args, NULL, "n (1..5) equal-length ticks across the middle of segment AB."),
-    PCL_FN("hatch", l_hatch, hatch_args, NULL,
-           "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
-    PCL_FN("centre_line", l_centre_line, centre_args, NULL,
-           "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
-    PCL_FN("fit", l_fit, fit_args, NULL,
-           "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"), band = px keeping that many pixels free at the bottom for a caption; what is drawn already stays."),
-    PCL_FN("caption", l_caption, caption_args, NULL,
-           "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
-    PCL_FN("axes", l_axes, axes_args, "n",
-           "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),
+    PCL_FN("hatch", l_hatch, hatch_args, NULL, "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
+    PCL_FN("centre_line", l_centre_line, centre_args, NULL, "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
+    PCL_FN("fit", l_fit, fit_args, NULL, "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"), band = px keeping that many pixels free at the bottom for a caption; what is drawn already stays."),
+    PCL_FN("caption", l_caption, caption_args, NULL, "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
+    PCL_FN("axes", l_axes, axes_args, "n", "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),
     PCL_FN("graph", l_graph, graph_args, NULL, "The graph y = f(x) for x from a to b as a path of n pieces, broken where f gives no finite number."),
     PCL_FN("legend", l_legend, legend_args, NULL, "A legend in a corner of the picture (device units): a line in each entry's colour and its name."),
     PCL_END};
-static const pcl_fn text_fn[] = {{.name = "text", .fn = l_text, .args = text_args,
-                                  .sig = "text(x, y, string [, colour [, scale]])\ntext{x =, y =, text =, units = \"world\"|\"device\", color =, scale =}",
-                                  .help = "Text with the top-left corner of its first 8x16 cell at (x, y); units = \"device\" takes (x, y) in screen pixels whatever the window."}, PCL_END};
 static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view_args,
                                   .sig = "map.view{from = P, to = P [, up = V] [, perspective = true]} -> f\nmap.view{azimuth = deg, elevation = deg [, distance = d] [, to = P] [, perspective = true]} -> f",
                                   .help = "The view with z up (docs/maps.md): from a point towards another, the picture's x to the right as seen and y along up (default the z axis), origin at to; parallel unless perspective."}, PCL_END};
@@ -433,8 +295,6 @@ static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view
 void pcl_open_figure_layout(lua_State *L) {
     int module = lua_gettop(L);
     pcl_register(L, module, fns, 0);
-    lua_getfield(L, module, "text");   /* the positional text(x, y, s) behind text{...} */
-    pcl_register(L, module, text_fn, 1);
     if (lua_getfield(L, module, "map") == LUA_TTABLE) pcl_register(L, lua_gettop(L), view_fn, 0);
     lua_settop(L, module);
 }

@@ -1,20 +1,11 @@
 /* Binding of QBasic's screen (stdlib/draw/qbscreen.h): what QBasic programs do on a graphics
  * screen beyond the drawing statements (text in cells, GET/PUT, DRAW, pages, PMAP), for the
  * QBasic runtime and for scripts. */
-#include "pcl_args.h"
 #include "pcl_draw.h"
+#include "pcl_core.h"
 
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
-
-/* An attribute of the screen drawn on as a colour (no "#rrggbb": QBasic's numbers) into out->x. */
-static int read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    int n = pcl_active_canvas(L)->ncolors, isint;
-    lua_Integer v = lua_tointegerx(L, idx, &isint);
-    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
-    return pcl_readfail(L, idx, lua_pushfstring(L, "a colour number 0..%d", n - 1));
-}
 
 /* A string of lo..hi bytes (NUL bytes cut DRAW's commands short: hi 0 refuses them). */
 static int read_bytes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
@@ -32,7 +23,7 @@ static int in_range(lua_State *L, int k, double v, int lo, int hi) {
     return (int)v;
 }
 
-#define ATTR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = read_attr, .dflt = -1}
+#define ATTR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_attr, .dflt = -1}
 #define INT(nm) {.name = nm, .kind = PCL_INTEGER}
 
 static const pcl_arg print_at_args[] = {INT("row"), INT("column"), {.name = "text", .kind = PCL_STRING},
@@ -61,8 +52,7 @@ typedef struct { PCL_SELF; pc_block *b; long bytes; } block_box;   /* self: pcl.
 /* The block at idx or NULL; one given the metatable by the debug library is refused. */
 static block_box *toblock(lua_State *L, int idx) {
     block_box *bb = luaL_testudata(L, idx, BLOCK_MT);
-    int ok = !bb || (lua_rawlen(L, idx) == sizeof *bb && bb->self == PCL_SELF_TAG(bb, &BLOCK_TAG));
-    return pcl_genuine(L, idx, bb, ok, "block");
+    return pcl_genuine(L, idx, bb, !bb || pcl_tagged(L, idx, sizeof *bb, &BLOCK_TAG), "block");
 }
 
 static block_box *checkblock(lua_State *L, const char *fn) {
@@ -72,9 +62,8 @@ static block_box *checkblock(lua_State *L, const char *fn) {
 }
 
 static int block_gc(lua_State *L) {
-    block_box *bb = luaL_testudata(L, 1, BLOCK_MT);
-    if (!bb || lua_rawlen(L, 1) != sizeof *bb || bb->self != PCL_SELF_TAG(bb, &BLOCK_TAG))
-        return 0;   /* never a forged one */
+    block_box *bb = pcl_tagged(L, 1, sizeof *bb, &BLOCK_TAG);
+    if (!bb) return 0;   /* never a forged one */
     pc_block_free(bb->b);
     bb->b = NULL;
     return 0;
@@ -82,11 +71,10 @@ static int block_gc(lua_State *L) {
 
 static int block_index(lua_State *L) {
     block_box *bb = checkblock(L, "block.field");
-    const char *k = lua_tostring(L, 2);
-    if (bb->b && k && !strcmp(k, "w")) lua_pushinteger(L, bb->b->w);
-    else if (bb->b && k && !strcmp(k, "h")) lua_pushinteger(L, bb->b->h);
-    else if (bb->b && k && !strcmp(k, "bytes")) lua_pushinteger(L, bb->bytes);
-    else lua_pushnil(L);
+    if (!bb->b) return 0;
+    pcl_push_results(L, 0, "w=i h=i bytes=i", bb->b->w, bb->b->h, (int)bb->bytes);
+    lua_pushvalue(L, 2);
+    lua_rawget(L, -2);
     return 1;
 }
 
@@ -98,13 +86,10 @@ static int block_tostring(lua_State *L) {
 
 static const pcl_arg get_block_args[] = {A_X("first corner x"), A_NUM("first corner y"),
                                          A_X("second corner x"), A_NUM("second corner y"), PCL_END};
-static int l_get_block(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ_PAIRS(L, a);
+PCL_PAIRS_BODY(l_get_block, a) {
     pc_canvas *c = pcl_active_canvas(L);
     block_box *bb = lua_newuserdatauv(L, sizeof *bb, 0);
-    bb->self = PCL_SELF_TAG(bb, &BLOCK_TAG);
-    bb->b = NULL;
+    *bb = (block_box){PCL_SELF_TAG(bb, &BLOCK_TAG), NULL, 0};
     luaL_setmetatable(L, BLOCK_MT);
     pcl_check_canvas(L, c, pc_get_block(c, a[0].x, a[1].x, a[2].x, a[3].x, &bb->b));
     bb->bytes = pc_block_bytes(c, bb->b->w, bb->b->h);
@@ -122,11 +107,8 @@ static const char *const ACTIONS[] = {"pset", "preset", "and", "or", "xor", NULL
 static const pcl_arg put_block_args[] = {
     A_X("corner x"), A_NUM("corner y"), {.name = "block", .kind = PCL_ANY, .read = read_block, .expect = "a block from get_block"},
     {.name = "action", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ACTIONS, .dflt = PC_PUT_XOR}, PCL_END};
-static int l_put_block(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ_PAIRS(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_check_canvas(L, c, pc_put_block(c, a[0].x, a[1].x, a[2].obj, a[3].n));
+PCL_PAIRS_BODY(l_put_block, a) {
+    return pcl_drawn(L, pc_put_block(pcl_active_canvas(L), a[0].x, a[1].x, a[2].obj, a[3].n));
 }
 
 /* ---- DRAW, pages, PMAP ------------------------------------------------------------------- */
@@ -134,22 +116,16 @@ static int l_put_block(lua_State *L) {
 static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read = read_bytes, .expect = "a string"}, PCL_END};
 PCL_BODY(l_draw, a) {
     pc_pages *p = pcl_pages(L);
-    pc_mode_info m;   /* turns keep a figure's size on a 4:3 monitor (SCREEN 1, 2...) */
-    p->draw.aspect = pc_mode_of_canvas(p->c, &m) ? m.aspect : 1;
-    return pcl_check_canvas(L, p->c, pc_draw_macro(p->c, &p->draw, a[0].s));
+    return pcl_check_canvas(L, p->c, pc_pages_draw(p, a[0].s));
 }
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
 static const pcl_arg paint_tile_args[] = {
     A_X("x"), A_NUM("y"), {.name = "tile", .kind = PCL_ANY, .read = read_bytes, .lo = 1, .hi = 64, .expect = "a string of 1..64 bytes"},
     ATTR("border"), PCL_END};
-static int l_paint_tile(lua_State *L) {
-    pcl_val a[4] = {0};
-    PCL_READ_PAIRS(L, a);
-    pc_canvas *c = pcl_active_canvas(L);
-    pc_tile t;
-    pcl_check_canvas(L, c, pc_tile_from_bytes(c, (const unsigned char *)a[2].s, (size_t)a[2].n, &t));
-    return pcl_check_canvas(L, c, pc_paint_tile(c, a[0].x, a[1].x, &t, (int)a[3].x));
+PCL_PAIRS_BODY(l_paint_tile, a) {
+    const unsigned char *tile = (const unsigned char *)a[2].s;
+    return pcl_drawn(L, pc_paint_tile_bytes(pcl_active_canvas(L), a[0].x, a[1].x, tile, (size_t)a[2].n, (int)a[3].x));
 }
 
 static const pcl_arg pages_args[] = {INT("active page"), {.name = "visual page", .kind = PCL_INTEGER, .flags = PCL_OPT}, PCL_END};
@@ -182,13 +158,8 @@ PCL_BODY(l_mode_info, a) {
     pc_mode_info m;
     if (a[0].x < 0 || a[0].x > 13 || pc_mode_info_of((int)a[0].x, &m) != PC_OK)
         return pcl_argfail(L, 1, "must be a screen mode 1, 2, 7, 8, 9, 12 or 13, got %s", pcl_pushnum(L, a[0].x));
-    static const char *const names[] = {"width", "height", "colors", "pages", "cols", "rows", "cell"};
-    const double facts[] = {m.width, m.height, m.ncolors, m.pages, m.cols, m.rows, m.cell_h};
-    lua_createtable(L, 0, 8);
-    pcl_set_fields(L, 7, names, facts, 1);
-    lua_pushnumber(L, m.aspect);
-    lua_setfield(L, -2, "aspect");
-    return 1;
+    return pcl_push_results(L, 0, "width=i height=i colors=i pages=i cols=i rows=i cell=i aspect=n", m.width, m.height,
+                            m.ncolors, m.pages, m.cols, m.rows, m.cell_h, m.aspect);
 }
 
 static const pcl_fn fns[] = {

@@ -1,23 +1,26 @@
-/* Facilities the drawing bindings share (pcl_draw.h): fields of a result table, and lists of
- * n-D points as places on the screen. */
+/* Facilities the drawing bindings share (pcl_draw.h): the attribute reader, genuine tagged
+ * userdata, lists of n-D points as places on the screen. */
 #include "pcl_draw.h"
 #include "pcl_curve.h"
+#include "curve_path.h"
 
-void pcl_set_fields(lua_State *L, int n, const char *const *names, const double *x, int integers) {
-    for (int i = 0; i < n; i++) {
-        if (integers) lua_pushinteger(L, (lua_Integer)x[i]);
-        else lua_pushnumber(L, x[i]);
-        lua_setfield(L, -2, names[i]);
-    }
+int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    int n = pcl_active_canvas(L)->ncolors, isint;
+    lua_Integer v = lua_tointegerx(L, idx, &isint);
+    if (lua_type(L, idx) == LUA_TNUMBER && isint && v >= 0 && v < n) return (out->x = (double)v), 1;
+    return pcl_readfail(L, idx, lua_pushfstring(L, "%s 0..%d", a->dim ? "an attribute" : "a colour number", n - 1));
 }
 
-int pcl_rows_to_xy(lua_State *L, int n, int dim, const double *rows, double *xy) {
-    for (int i = 0; i < n; i++) {
+double *pcl_places(lua_State *L, const pcl_val *list, const char *what) {
+    const pc_map *f = pcl_camera(L);
+    int dim = list->dim;
+    double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)list->n + 1, 0);
+    for (int i = 0; i < list->n; i++) {
         double h[PC_MAXDIM + 1];
-        memcpy(h, rows + (size_t)i * dim, sizeof(double) * (size_t)dim);
+        memcpy(h, list->list + (size_t)i * dim, sizeof(double) * (size_t)dim);
         h[dim] = 1;
-        if (dim == 2) xy[2 * i] = h[0], xy[2 * i + 1] = h[1];
-        else if (pcl_project(L, dim, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK) return i;
+        if (pc_place_xy(f, dim, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
+            pcl_fail(L, "%s [%d] must be " PCL_PLACE_TEXT ", got a %d-D point", what, i + 1, dim);
     }
-    return -1;
+    return xy;
 }

@@ -14,16 +14,37 @@ pc_canvas *pcl_active_canvas(lua_State *L);
 /* A core call on canvas c returned rc: nothing if PC_OK, else its message raised under the
  * running function's declared name (a core statement's own name replaced: "pset: ..."). */
 int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc);
+/* The same for a core call on the active canvas (pcl_active_canvas). */
+int pcl_drawn(lua_State *L, int rc);
 
 /* The colour at idx on canvas c: an attribute 0..ncolors-1 (with truecolors, also a true
  * colour's number 256..) or "#rrggbb" (a true colour, allocated on first use); -2 if none.
  * pcl_read_color (pcl_args.h) reads one as a declared argument, true colours too when the
  * argument's dim is 1. */
 int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors);
-/* Set the fields names[0..n-1] of the table on the stack top to x[0..n-1] (as integers). */
-void pcl_set_fields(lua_State *L, int n, const char *const *names, const double *x, int integers);
-/* n rows of dim coordinates as places on the screen into xy (2-D as they are, n-D through
- * the camera): -1, or the index of the first that has no place. */
-int pcl_rows_to_xy(lua_State *L, int n, int dim, const double *rows, double *xy);
+/* An attribute 0..ncolors-1 of the screen drawn on (no "#rrggbb": QBasic's numbers) into
+ * out->x; its message names the screen's range, as an attribute (a->dim 1) or a colour number. */
+int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
+/* The userdata at idx if its block is a genuine one of size bytes tagged by tag (PCL_SELF,
+ * pcl.h), else NULL: a canvas box, a block of get_block. */
+static inline void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag) {   /* inline: pset's path */
+    uintptr_t *self = lua_touserdata(L, idx);
+    int ok = self && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == size && *self == PCL_SELF_TAG(self, tag);
+    return ok ? self : NULL;
+}
+/* PCL_BODY for a statement whose coordinate pairs may each be one point (pcl_read_pairs). */
+#define PCL_PAIRS_BODY(f, a) \
+    static int f##_body(lua_State *L, pcl_val *a); \
+    static int f(lua_State *L) { \
+        pcl_val f##_v[pcl_nvalues(L)]; \
+        memset(f##_v, 0, sizeof f##_v); \
+        pcl_read_pairs(L, f##_v, (int)(sizeof f##_v / sizeof f##_v[0])); \
+        return f##_body(L, f##_v); \
+    } \
+    static int f##_body(lua_State *L, pcl_val *a)
+/* The points of a declared list (rows of list->dim) as places on the screen, 2-D as they are,
+ * n-D through the camera, in a scratch userdata pushed; else "NAME: WHAT [i] must be ...". */
+double *pcl_places(lua_State *L, const pcl_val *list, const char *what);
+#define PCL_PLACE_TEXT "a 2-D point (or an n-D one through the camera)"
 
 #endif

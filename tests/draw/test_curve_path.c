@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <string.h>
 #include <cmocka.h>
 #include <string.h>
 #include "curve_path.h"
@@ -37,6 +38,31 @@ static void test_image_xy(void **state) {
     assert_int_equal(pc_map_image_xy(&f, 3, far, &x, &y), PC_IMPROPER);
     assert_int_equal(pc_map_image_xy(&f, 2, flat, &x, &y), PC_EDIM);
     assert_int_equal(pc_map_image_xy(NULL, 3, h, &x, &y), PC_EDIM);
+    /* a drawn point's place: 2-D as it is (the camera is for n-D points), n-D through it */
+    double w2[3] = {3, -6, 2};
+    assert_int_equal(pc_place_xy(&f, 2, w2, &x, &y), PC_OK);
+    assert_float_equal(x, 1.5, 1e-15);
+    assert_float_equal(y, -3, 1e-15);
+    assert_int_equal(pc_place_xy(&f, 3, h, &x, &y), PC_OK);
+    assert_float_equal(x, 1, 1e-15);
+    assert_int_equal(pc_place_xy(NULL, 3, h, &x, &y), PC_EDIM);
+    /* a list element's place and why it has none */
+    double xy[2], one[3] = {4, 6, 1}, vec[3] = {1, 1, 0};
+    char why[200];
+    assert_int_equal(pc_place_why(&f, 2, one, xy, why, sizeof why), PC_OK);
+    assert_float_equal(xy[0], 4, 1e-15);
+    assert_float_equal(xy[1], 6, 1e-15);
+    assert_int_equal(pc_place_why(&f, 2, w2, xy, why, sizeof why), PC_EARG);
+    assert_string_equal(why, ": %s has weight 2, not 1: a location must be a point (the membership condition; "
+                             "normalize(p) for a projective point)");
+    assert_int_equal(pc_place_why(&f, 2, vec, xy, why, sizeof why), PC_EARG);
+    assert_non_null(strstr(why, "has weight 0, not 1"));
+    assert_int_equal(pc_place_why(&f, 3, h, xy, why, sizeof why), PC_OK);
+    assert_float_equal(xy[1], 2, 1e-15);
+    assert_int_equal(pc_place_why(&f, 3, far, xy, why, sizeof why), PC_IMPROPER);
+    assert_string_equal(why, ": %s projects to infinity (it lies in the camera's vanishing plane)");
+    assert_int_equal(pc_place_why(NULL, 3, h, xy, why, sizeof why), PC_EDIM);
+    assert_string_equal(why, " must be a 2-D point, got the 3-D %s (3-D points need a camera)");
 }
 
 /* a straight segment from (0, 0) to (8, 0) flattened in 4 parts: one unbroken polyline from

@@ -183,10 +183,56 @@ static void test_pen_options(void **state) {
     pc_canvas_free(c);
 }
 
+/* axes{}: the window's ranges unless given, checked; the ticks counted */
+static void test_axes_options(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    assert_int_equal(pc_window(c, -5, -5, 5, 5, 0), PC_OK);
+    const double x[2] = {0, 4}, bad[2] = {2, 1}, origin[2] = {1, 1};
+    pc_axes_opts o = {.x = x, .origin = origin, .ticks = 4, .labels = 0, .arrows = 0, .grid_color = -1};
+    int n = 0;
+    assert_int_equal(pc_axes_options(c, &o, 15, &n), PC_OK);
+    assert_int_equal(n, 5 + 5);   /* 0..4 by 1 on x; -4..4 by 2 on y, the window's range */
+    o.y = bad;
+    assert_int_equal(pc_axes_options(c, &o, 15, &n), PC_EARG);
+    assert_string_equal(c->error, "option 'y' must be {lo, hi} with lo < hi");
+    o = (pc_axes_opts){.x = bad};
+    assert_int_equal(pc_axes_options(c, &o, 15, &n), PC_EARG);
+    assert_string_equal(c->error, "option 'x' must be {lo, hi} with lo < hi");
+    pc_canvas_free(c);
+}
+
+/* figure{}: the options given over the canvas's figure, framed; a width alone clears the height */
+static void test_figure_options(void **state) {
+    (void)state;
+    pc_canvas *c = pc_canvas_new(640, 480, 16);
+    pc_figure_opts o = {.has_width = 1, .has_height = 1, .width = 300, .height = 200, .has_dpi = 1, .dpi = 150,
+                        .font = "sans", .has_size = 1, .size = 9};
+    assert_int_equal(pc_figure_options(c, &o), PC_OK);
+    assert_true(c->figure.on && c->figure.frame);
+    assert_true(c->figure.width == 300 && c->figure.height == 200 && c->figure.dpi == 150 && c->figure.size == 9);
+    assert_string_equal(c->figure.font, "sans");
+    o = (pc_figure_opts){.has_width = 1, .width = 400};
+    assert_int_equal(pc_figure_options(c, &o), PC_OK);
+    assert_true(c->figure.width == 400 && c->figure.height == 0 && c->figure.dpi == 150);
+    assert_string_equal(c->figure.font, "sans");
+    char long_font[80];
+    memset(long_font, 'a', sizeof long_font - 1);
+    long_font[sizeof long_font - 1] = 0;
+    o = (pc_figure_opts){.font = long_font};
+    assert_int_equal(pc_figure_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "option 'font' is too long");
+    o = (pc_figure_opts){.has_dpi = 1, .dpi = 5};
+    assert_int_equal(pc_figure_options(c, &o), PC_EARG);
+    assert_string_equal(c->error, "figure: dpi must be 10..2400, got 5");
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_caption_and_device_text), cmocka_unit_test(test_axes_default),
         cmocka_unit_test(test_graph), cmocka_unit_test(test_placed_labels), cmocka_unit_test(test_path_stmt),
-        cmocka_unit_test(test_fit_options), cmocka_unit_test(test_pen_options)};
+        cmocka_unit_test(test_fit_options), cmocka_unit_test(test_pen_options),
+        cmocka_unit_test(test_axes_options), cmocka_unit_test(test_figure_options)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,6 +1,7 @@
 /* QBasic's screen pages (qbscreen.h: pc_pages): SCREEN 7's eight pages made on first use with
  * page 0's palette, drawing on the active page while another is shown, PALETTE on every page,
  * SCREEN dropping the other pages and keeping the page drawn on as page 0. */
+#include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -56,7 +57,25 @@ static void test_pages(void **state) {
     assert_null(p.c);
 }
 
+/* DRAW through the pages: turns at the mode's aspect (SCREEN 2: 0.4167), square pixels else */
+static void test_pages_draw(void **state) {
+    (void)state;
+    pc_pages p;
+    assert_int_equal(pc_pages_init(&p), PC_OK);
+    assert_int_equal(pc_pages_draw(&p, "BM100,100 R10"), PC_OK);
+    assert_true(fabs(p.draw.aspect - 1) < 1e-12);
+    assert_true(fabs(p.c->last_x - 110) < 1e-9 && fabs(p.c->last_y - 100) < 1e-9);
+    pc_mode_info m;
+    assert_int_equal(pc_mode_info_of(2, &m), PC_OK);
+    assert_int_equal(pc_pages_screen(&p, &m), PC_OK);
+    assert_int_equal(pc_pages_draw(&p, "BM100,100 A1 R12"), PC_OK);
+    assert_true(fabs(p.draw.aspect - 4.0 / 3.0 * 200 / 640) < 1e-12);
+    assert_true(fabs(p.c->last_x - 100) < 1e-9 && fabs(p.c->last_y - 95) < 1e-9);   /* up 12 * 0.4167 */
+    assert_int_equal(pc_pages_draw(&p, "Q"), PC_EARG);
+    pc_pages_free(&p);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_pages)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_pages), cmocka_unit_test(test_pages_draw)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -326,6 +326,13 @@ static void test_paint_tile(void **state) {
     assert_int_equal(px(c2, 1, 0), 0);
     assert_int_equal(px(c2, 0, 1), 0);
     assert_int_equal(px(c2, 1, 1), 1);
+    /* the same from the bytes in one call: the tile read, then painted; an empty one refused */
+    assert_int_equal(pc_cls(c2), PC_OK);
+    assert_int_equal(pc_paint_tile_bytes(c2, 5, 5, row2, 2, -1), PC_OK);
+    assert_int_equal(px(c2, 2, 0), 1);
+    assert_int_equal(px(c2, 3, 0), 0);
+    assert_int_equal(px(c2, 3, 1), 1);
+    assert_int_equal(pc_paint_tile_bytes(c2, 5, 5, row2, 0, -1), PC_EARG);
     /* SCREEN 13: a byte a pixel, 8 a row */
     pc_canvas *c13 = pc_canvas_new_mode(13);
     const unsigned char row13[] = {40, 41, 42, 43, 44, 45, 46, 47};
