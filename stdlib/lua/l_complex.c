@@ -44,8 +44,7 @@ static int toc(lua_State *L, int idx, pc_cnum *z) {
 }
 
 /* The declared kind "a finite complex number or number": re, im into v[0], v[1]. */
-static int read_c(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_c(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pc_cnum z = {0, 0};
     if (!toc(L, idx, &z) || !isfinite(z.re) || !isfinite(z.im)) return 0;
     out->v[0] = z.re, out->v[1] = z.im;

@@ -54,8 +54,7 @@ pc_hspline *pcl_tohspline(lua_State *L, int idx) {
 static void *self_hs(lua_State *L, int idx) { return pcl_tohspline(L, idx); }
 
 /* A number strictly between 0 and 1 (the junction t0 of smooth.half). */
-static int open_unit(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int open_unit(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return lua_type(L, idx) == LUA_TNUMBER && out->x > 0 && out->x < 1;
 }
