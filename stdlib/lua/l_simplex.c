@@ -20,20 +20,15 @@ static void *self_simplex(lua_State *L, int idx) { return tosimplex(L, idx); }
 /* simplex(C, A, B, ...): the vertices after C are read one by one in C's dimension */
 static const pcl_arg simplex_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), PCL_END};
 
-static int l_simplex(lua_State *L) {
-    int m = lua_gettop(L), k = m - 1;
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
+PCL_BODY(l_simplex, a) {
+    int m = lua_gettop(L), k = m - 1, n = a[0].n;
     double v[(PC_MAXDIM + 1) * PC_MAXDIM];
     char msg[160];
     if (k > n && pc_simplex_init_text(PC_EDIM, n, k, NULL, msg, sizeof msg)) return pcl_fail(L, "%s", msg);
     static const pcl_arg vertex = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
-    memcpy(v, a[0].v, sizeof(double) * (size_t)n);
-    memcpy(v + n, a[1].v, sizeof(double) * (size_t)n);
-    for (int i = 3; i <= m; i++) {
-        pcl_val p;
-        pcl_readone(L, i, i, 0, &vertex, n, &p);
+    for (int i = 1; i <= m; i++) {
+        pcl_val p = i < 3 ? a[i - 1] : (pcl_val){0};
+        if (i > 2) pcl_readone(L, i, i, 0, &vertex, n, &p);
         memcpy(v + (i - 1) * n, p.v, sizeof(double) * (size_t)n);
     }
     pc_simplex *s = lua_newuserdatauv(L, pc_simplex_size(n, k), 0);
@@ -62,8 +57,7 @@ static void numbers(lua_State *L, int m, const char *label, double *x) {
  * ignored, so that S(S:params(M)) works (params returns the residual last); with
  * coefficients summing to 1 it is also the initial point's barycentric coefficient, which
  * the natural parameters already imply. */
-static int l_call(lua_State *L) {
-    pc_simplex *s = pcl_read(L, NULL, 0);
+PCL_METHOD(l_call, pc_simplex *s, a) {
     int m = lua_gettop(L) - 1, k = s->k;
     if (m != k && m != k + 1)
         return pcl_fail(L, "a %d-simplex takes %d natural parameters, got %d (for barycentric parameters use S:bary)", k, k, m);
@@ -76,14 +70,12 @@ static int l_call(lua_State *L) {
 }
 
 /* S:bary(p, q, ..., r): coefficients of vertices 2..k+1, then of the initial point. */
-static int l_bary(lua_State *L) {
-    pc_simplex *s = pcl_read(L, NULL, 0);
+PCL_METHOD(l_bary, pc_simplex *s, a) {
     int k = s->k, m = lua_gettop(L) - 1;
     if (m != k + 1) return pcl_fail(L, "a %d-simplex takes %d barycentric parameters, got %d", k, k + 1, m);
     double c[PC_MAXDIM + 1];
     numbers(L, m, NULL, c);
-    pcl_value *r = pcl_newvalue(L, s->n);
-    pc_simplex_bary(s, c, r->h);
+    pc_simplex_bary(s, c, pcl_newvalue(L, s->n)->h);
     return 1;
 }
 
@@ -100,13 +92,12 @@ PCL_METHOD(l_params, pc_simplex *s, a) {
     return s->k + 1;
 }
 
-static int l_measure(lua_State *L) {
-    lua_pushnumber(L, pc_simplex_measure(pcl_read(L, NULL, 0)));
+PCL_METHOD(l_measure, pc_simplex *s, a) {
+    lua_pushnumber(L, pc_simplex_measure(s));
     return 1;
 }
 
-static int l_ratio(lua_State *L) {
-    pc_simplex *s = pcl_read(L, NULL, 0);
+PCL_METHOD(l_ratio, pc_simplex *s, a) {
     int k = s->k, n = s->n, m = lua_gettop(L) - 1;
     if (m != k + 1) return pcl_fail(L, "a %d-simplex compares with %d points, got %d", k, k + 1, m);
     double pts[(PC_MAXDIM + 1) * PC_MAXDIM], res;
@@ -125,14 +116,10 @@ static int l_ratio(lua_State *L) {
 static int l_index(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "index: not a simplex");
-    if (lua_type(L, 2) != LUA_TNUMBER) {
-        lua_pushvalue(L, 2);
-        lua_rawget(L, lua_upvalueindex(1));
-        return 1;
-    }
     int isint;
     lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
+    if (lua_type(L, 2) != LUA_TNUMBER) lua_rawget(L, lua_upvalueindex(1));    /* a method */
+    else if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
     else lua_pushnil(L);
     return 1;
 }
