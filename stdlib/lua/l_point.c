@@ -123,18 +123,13 @@ static int make(lua_State *L, double weight) {
 static int l_P(lua_State *L) { return make(L, 1.0); }
 static int l_V(lua_State *L) { return make(L, 0.0); }
 
-static const char *opnd_name(lua_State *L, int idx) {
-    if (topt(L, idx)) return "a point";
-    if (lua_type(L, idx) == LUA_TNUMBER) return "a number";
-    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) return lua_pushfstring(L, "a %s", lua_tostring(L, -1));
-    return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
-}
-
+/* An operand as the operators' messages show it: a value, a number, or another thing by its type */
 static pc_operand operand(lua_State *L, int idx) {
     pcl_value *p = topt(L, idx);
-    pc_operand o = {p ? p->n : 0, p ? p->h : NULL, lua_type(L, idx) == LUA_TNUMBER, lua_tonumber(L, idx),
-                    opnd_name(L, idx)};
-    return o;
+    int isnum = lua_type(L, idx) == LUA_TNUMBER;
+    const char *type = luaL_getmetafield(L, idx, "__name") == LUA_TSTRING ? lua_tostring(L, -1) : luaL_typename(L, idx);
+    const char *what = p ? "a point" : isnum ? "a number" : lua_pushfstring(L, "a %s", type);
+    return (pc_operand){p ? p->n : 0, p ? p->h : NULL, isnum, lua_tonumber(L, idx), what};
 }
 
 /* A + B, A - B, k*A, A*k, A/k and -A: weights add, so a point plus a vector is a point; u/v of
