@@ -2,6 +2,7 @@
  * core's pc_cnum_arith and pc_cnum_fn (stdlib/geom/cnum.h), the Moebius map its pc_mobius. */
 #include "pcl_args.h"
 #include "pcl_tk.h"
+#include "pcl_core.h"
 #include "curvilinear.h"
 #include "cnum.h"
 
@@ -165,20 +166,14 @@ static const pcl_arg m_args[] = {A_ANY("z", read_c, "a complex number, a 2-D poi
 static const pcl_arg coord_x = A_NUM("x"), coord_y = A_NUM("y");
 
 static int m_call(lua_State *L) {
-    mobius *m = tomobius(L, 1);           /* a __call: the map itself (PCL_READ checks it) */
     pcl_val a[2] = {0};
-    if (lua_type(L, 2) == LUA_TNUMBER && !lua_isnoneornil(L, 3)) {
-        pcl_readone(L, 2, 1, 0, &coord_x, 0, &a[0]);
-        pcl_readone(L, 3, 2, 0, &coord_y, 0, &a[1]);
-        pc_cnum w = apply(L, m, a[0].x, a[1].x);
-        lua_pushnumber(L, w.re);
-        lua_pushnumber(L, w.im);
-        return 2;
-    }
-    int point = pcl_tovalue(L, 2) != NULL;
-    if (point) pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
-    else m = PCL_READ(L, a);
-    pc_cnum w = apply(L, m, a[0].v[0], a[0].v[1]);
+    mobius *m = tomobius(L, 1);      /* a __call; called on another value: the layer's message */
+    int xy = lua_type(L, 2) == LUA_TNUMBER && !lua_isnoneornil(L, 3), point = !xy && pcl_tovalue(L, 2);
+    if (!m || !(xy || point)) m = PCL_READ(L, a);
+    if (xy || point) pcl_readone(L, 2, 1, 0, xy ? &coord_x : &point_arg, 0, &a[0]);
+    if (xy) pcl_readone(L, 3, 2, 0, &coord_y, 0, &a[1]);
+    pc_cnum w = apply(L, m, xy ? a[0].x : a[0].v[0], xy ? a[1].x : a[0].v[1]);
+    if (xy) return pcl_push_results(L, 0, "n n", w.re, w.im);
     if (point) pcl_pushpoint(L, 2, (double[]){w.re, w.im});
     else pushc(L, w);
     return 1;
