@@ -130,15 +130,10 @@ static const pcl_arg point_arg = A_POINT("P", 2);
 static int c_new(lua_State *L) {
     cnum *z = tocnum(L, 2);
     pcl_val a[2] = {0};
-    if (z) {
-        pushc(L, z->z);
-    } else if (pcl_tovalue(L, 2)) {
-        pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
-        pushc(L, cval(&a[0]));
-    } else {
-        PCL_READ(L, a);
-        pushc(L, (pc_cnum){a[0].x, a[1].x});
-    }
+    int point = pcl_tovalue(L, 2) != NULL;
+    if (point) pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
+    else if (!z) PCL_READ(L, a);
+    pushc(L, z ? z->z : point ? cval(&a[0]) : (pc_cnum){a[0].x, a[1].x});
     return 1;
 }
 
