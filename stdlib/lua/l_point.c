@@ -274,6 +274,13 @@ static int run(lua_State *L, int op, int hook) {
     return finish(L, op, a);
 }
 
+/* An overload's other form: its m arguments args read one by one, in one dimension, then op */
+static int other_form(lua_State *L, int op, int m, const pcl_arg *args) {
+    pcl_val a[4] = {0};
+    for (int k = 0; k < m; k++) pcl_readone(L, k + 1, k + 1, 0, &args[k], a[0].n, &a[k]);
+    return finish(L, op, a);
+}
+
 /* The functions of pc_point_fn's one entry: the op and the hook are upvalues 2 and 3. */
 static int l_fn(lua_State *L) {
     return run(L, (int)lua_tointeger(L, PCL_UPVALUE(2)), (int)lua_tointeger(L, PCL_UPVALUE(3)));
@@ -350,11 +357,8 @@ static const pcl_arg one_vector[] = {A_VECTOR("v", 0), PCL_END};
 static int l_dist(lua_State *L) {
     pcl_value *p, *q;
     if (exact_pair(L, 1.0, &p, &q)) return push_num(L, pc_dist(p->n, p->h, q->h));
-    pcl_val a[4] = {0};
-    if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
-        pcl_readone(L, 1, 1, 0, &one_vector[0], 0, &a[0]);
-        return finish(L, PC_FN_NORM, a);
-    }
+    if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2))
+        return other_form(L, PC_FN_NORM, 1, one_vector);
     return run(L, PC_FN_DIST, NOHOOK);
 }
 
@@ -370,12 +374,8 @@ static int l_dot(lua_State *L) {
 static const pcl_arg three_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), PCL_END};
 static int l_angle(lua_State *L) {
     pcl_value *first = topt(L, 1);
-    pcl_val a[4] = {0};
-    if (first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR : lua_isnoneornil(L, 3)) {
-        pcl_readone(L, 1, 1, 0, &uv_args[0], 0, &a[0]);
-        pcl_readone(L, 2, 2, 0, &uv_args[1], a[0].n, &a[1]);
-        return finish(L, PC_FN_ANGLE_UV, a);
-    }
+    if (first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR : lua_isnoneornil(L, 3))
+        return other_form(L, PC_FN_ANGLE_UV, 2, uv_args);
     return run(L, PC_FN_ANGLE, NOHOOK);
 }
 
@@ -507,10 +507,8 @@ static const luaL_Reg point_meta[] = {
 void pcl_open_point(lua_State *L) {
     int module = lua_gettop(L);
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
-    lua_newtable(L);
+    luaL_newmetatable(L, "point");                     /* __name "point" */
     int mt = lua_gettop(L);
-    lua_pushliteral(L, "point");
-    lua_setfield(L, mt, "__name");
     lua_pushliteral(L, "point");                       /* getmetatable(p) == "point" */
     lua_setfield(L, mt, "__metatable");
     lua_pushvalue(L, mt);
