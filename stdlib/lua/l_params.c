@@ -10,6 +10,7 @@
 
 #define SET_KEY "pointcalc.params.set"           /* name -> value given by the host */
 #define DECLARED_KEY "pointcalc.params.declared" /* the list of declarations, in order */
+#define NAMES_KEY "pointcalc.params.names"       /* name -> true once declared */
 
 static void registry_table(lua_State *L, const char *key) { luaL_getsubtable(L, LUA_REGISTRYINDEX, key); }
 
@@ -54,18 +55,13 @@ PCL_BODY(l_slider, a) {
     if (step < 0 || step > hi - lo) return pcl_argfail(L, 5, "must be between 0 and max - min");
 
     /* the declaration, once per name (a script may ask for its slider again) */
-    registry_table(L, DECLARED_KEY);
-    int decl = lua_gettop(L);
-    lua_Integer n = luaL_len(L, decl), found = 0;
-    for (lua_Integer i = 1; i <= n && !found; i++) {
-        lua_geti(L, decl, i);
-        lua_getfield(L, -1, "name");
-        if (strcmp(lua_tostring(L, -1), name) == 0) found = i;
-        lua_pop(L, 2);
-    }
-    if (!found) {
+    registry_table(L, NAMES_KEY);
+    if (lua_getfield(L, -1, name) == LUA_TNIL) {
+        lua_pushboolean(L, 1);
+        lua_setfield(L, -3, name);
+        registry_table(L, DECLARED_KEY);
         pcl_push_results(L, 0, "name=s min=n max=n default=n step=n animate=b", name, lo, hi, dflt, step, animate);
-        lua_rawseti(L, decl, n + 1);
+        lua_rawseti(L, -2, luaL_len(L, -2) + 1);
     }
 
     /* the value: the host's, checked against the range, else the default */
