@@ -2,6 +2,7 @@
  * (vertex i, 1 the initial point) and #S (the number of vertices). */
 #include "pcl_args.h"
 #include "pcl_point.h"
+#include "pcl_core.h"
 #include "simplex.h"
 
 static const char REGKEY[] = "pointcalc.simplex";   /* the metatable in the registry */
@@ -41,15 +42,13 @@ PCL_BODY(l_simplex, a) {
 /* Numbers #1..#m at the stack indices 2..m + 1 (after the simplex) into x. */
 static void numbers(lua_State *L, int m, const char *label, double *x) {
     for (int i = 0; i < m; i++) {
-        char what[24];
-        pcl_arg num = {.kind = PCL_NUMBER, .name = label};
-        if (label && (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2)))) {
-            snprintf(what, sizeof what, "%s %d", label, i + 1);   /* the label only on the error path */
-            num.name = what;
-        }
+        x[i] = lua_tonumber(L, i + 2);
+        if (lua_type(L, i + 2) == LUA_TNUMBER && isfinite(x[i])) continue;
+        char what[24];                              /* the label only on the error path */
+        snprintf(what, sizeof what, "%s %d", label ? label : "", i + 1);
+        pcl_arg num = {.kind = PCL_NUMBER, .name = label ? what : NULL};
         pcl_val v;
-        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);
-        x[i] = v.x;
+        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);   /* the message */
     }
 }
 
@@ -82,13 +81,12 @@ PCL_METHOD(l_bary, pc_simplex *s, a) {
 static const pcl_arg params_args[] = {A_POINT("M", 0), PCL_END};
 
 PCL_METHOD(l_params, pc_simplex *s, a) {
-    double p[PC_MAXDIM], res;
+    double p[PC_MAXDIM + 1];   /* the parameters, then the residual */
     if (a[0].n != s->n)
         return pcl_fail(L, "argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", a[0].n, s->n);
-    pc_simplex_params(s, a[0].v, p, &res);
+    pc_simplex_params(s, a[0].v, p, &p[s->k]);
     luaL_checkstack(L, s->k + 1, NULL);
-    for (int i = 0; i < s->k; i++) lua_pushnumber(L, p[i]);
-    lua_pushnumber(L, res);
+    for (int i = 0; i <= s->k; i++) lua_pushnumber(L, p[i]);
     return s->k + 1;
 }
 
@@ -108,9 +106,8 @@ PCL_METHOD(l_ratio, pc_simplex *s, a) {
         if (v.n != n) return pcl_fail(L, "argument #%d is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", i + 1, v.n, n);
         memcpy(pts + i * n, v.v, sizeof(double) * (size_t)n);
     }
-    lua_pushnumber(L, pc_simplex_ratio(s, pts, &res));
-    lua_pushnumber(L, res);
-    return 2;
+    double ratio = pc_simplex_ratio(s, pts, &res);
+    return pcl_push_results(L, 0, "n n", ratio, res);
 }
 
 static int l_index(lua_State *L) {
