@@ -60,12 +60,6 @@ pcl_value *pcl_newvalue(lua_State *L, int n) {
 
 /* ---- text ---------------------------------------------------------------------------------- */
 
-static const char *push_value_text(lua_State *L, const pcl_value *p) {
-    char s[PC_MAXDIM * 24 + 32];
-    pc_value_text(p->n, p->h, s, sizeof s);
-    return lua_pushstring(L, s);
-}
-
 /* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
 static const char *argctx(lua_State *L, int arg) {
     int shown = pcl_arg_shown(L, arg);
@@ -179,7 +173,9 @@ static int l_len(lua_State *L) {
 static int l_tostring(lua_State *L) {
     pcl_value *p = topt(L, 1);
     if (!p) return pcl_error(L, "tostring: not a point");
-    push_value_text(L, p);
+    char s[PC_MAXDIM * 24 + 32];
+    pc_value_text(p->n, p->h, s, sizeof s);
+    lua_pushstring(L, s);
     return 1;
 }
 
@@ -441,24 +437,13 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
     idx = lua_absindex(L, idx);
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p) return 0;
-    if (p->n != 2) {
-        /* with a camera set, drawing takes its points (3-D) and draws their images */
-        int st = pcl_project(L, p->n, p->h, x, y);
-        if (st == PC_OK) return 1;
-        if (st == PC_IMPROPER)
-            return pcl_error(L, "%s: argument #%d (%s) projects to infinity (it lies in the "
-                              "camera's vanishing plane)", pcl_fname(L), idx, push_value_text(L, p));
-        return pcl_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L), idx, p->n,
-                         push_value_text(L, p));
-    }
-    double loc[2];
+    double xy[2];
     char msg[MSG_SIZE];
-    if (pc_loc(2, p->h, loc) != PC_OK && pc_location_text(argctx(L, idx), 2, p->h, msg, sizeof msg))
-        return pcl_error(L, "%s", msg);
-    if (!isfinite(loc[0]) || !isfinite(loc[1]))        /* arithmetic overflowed */
-        return pcl_error(L, "%s has infinite or NaN coordinates", argctx(L, idx));
-    *x = loc[0];
-    *y = loc[1];
+    /* with a camera set, drawing takes its points (3-D) and draws their images */
+    int st = pc_drawn(p->n, p->h, p->n == 2 ? PC_OK : pcl_project(L, p->n, p->h, &xy[0], &xy[1]), xy);
+    if (st != PC_OK && pc_drawn_text(argctx(L, idx), st, p->n, p->h, msg, sizeof msg)) return pcl_error(L, "%s", msg);
+    *x = xy[0];
+    *y = xy[1];
     return 1;
 }
 
