@@ -8,15 +8,13 @@
 static const char REGKEY[] = "pointcalc.simplex";   /* the metatable in the registry */
 
 /* A genuine simplex's block is exactly pc_simplex_size(n, k) (pcl.h: forged userdata). */
-static pc_simplex *tosimplex(lua_State *L, int idx) {
+static void *tosimplex(lua_State *L, int idx) {
     pc_simplex *s = luaL_testudata(L, idx, REGKEY);
-    if (!s) return NULL;
-    size_t len = lua_rawlen(L, idx);
-    int ok = len >= sizeof(pc_simplex) && s->n >= 1 && s->n <= PC_MAXDIM && s->k >= 1 &&
+    size_t len = s ? lua_rawlen(L, idx) : 0;
+    int ok = s && len >= sizeof(pc_simplex) && s->n >= 1 && s->n <= PC_MAXDIM && s->k >= 1 &&
              s->k <= s->n && len == pc_simplex_size(s->n, s->k);
     return pcl_genuine(L, idx, s, ok, "simplex");
 }
-static void *self_simplex(lua_State *L, int idx) { return tosimplex(L, idx); }
 
 /* simplex(C, A, B, ...): the vertices after C are read one by one in C's dimension */
 static const pcl_arg simplex_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), PCL_END};
@@ -138,14 +136,14 @@ static int l_tostring(lua_State *L) {
 }
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, \
-                                      .self = self_simplex, .selftype = "simplex"}
+                                      .self = tosimplex, .selftype = "simplex"}
 static const pcl_fn methods[] = {
     METHOD("S:bary", l_bary, NULL, "S:bary(p, q, ..., r) -> value", "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1)."),
     METHOD("S:params", l_params, params_args, "S:params(M) -> p, q, ..., residual", "The natural parameters of M (least squares off the simplex's flat) and M's distance from that flat."),
     METHOD("S:measure", l_measure, NULL, "S:measure() -> number", "Length, area, volume...: signed when the simplex is full-dimensional."),
     METHOD("S:ratio", l_ratio, NULL, "S:ratio(P1, P2, ...) -> ratio, residual", "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "S", .fn = l_call, .self = self_simplex, .selftype = "simplex", .key = "__call",
+static const pcl_fn call[] = {{.name = "S", .fn = l_call, .self = tosimplex, .selftype = "simplex", .key = "__call",
                                .topic = "S(p, q)", .callname = 1, .sig = "S(p, q, ...) -> point", .help = "The point of simplex S with natural parameters p, q, ..."}, PCL_END};
 static const pcl_fn ctor[] = {{.name = "simplex", .fn = l_simplex, .args = simplex_args, .sig = "simplex(C, A, B, ...) -> S", .help = "A simplex with initial point C (the book's simplex CAB): S(p, q) = (A - C)p + (B - C)q + C."}, PCL_END};
 
