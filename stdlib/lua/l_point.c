@@ -15,7 +15,7 @@
 #define MSG_SIZE (PC_MAXDIM * 48 + 400)             /* a message of point_fn.h */
 static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the metatable */
 #define MT lua_upvalueindex(2)
-#define METHODS lua_upvalueindex(3)         /* __index only: the method table */
+#define METHODS lua_upvalueindex(3)         /* metamethods: the method table (__index) */
 
 /* ---- recognising and making values ------------------------------------------------------- */
 
@@ -209,15 +209,12 @@ static int l_index(lua_State *L) {
         const char *k = lua_tolstring(L, 2, &len);
         if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
         if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);      /* the weight */
-        lua_pushvalue(L, 2);
-        lua_rawget(L, METHODS);
+        lua_rawget(L, METHODS);                                             /* the key k on the top */
         return 1;
     }
-    if (t == LUA_TNUMBER) {
-        int isint;
-        lua_Integer i = lua_tointegerx(L, 2, &isint);
-        if (isint && i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
-    }
+    int isint;
+    lua_Integer i = lua_tointegerx(L, 2, &isint);
+    if (t == LUA_TNUMBER && isint && i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
     lua_pushnil(L);
     return 1;
 }
@@ -485,12 +482,14 @@ static const struct {
 static const luaL_Reg point_meta[] = {
     {"__add", l_add}, {"__sub", l_sub}, {"__mul", l_mul}, {"__div", l_div}, {"__unm", l_unm},
     {"__eq", l_eq}, {"__len", l_len}, {"__tostring", l_tostring}, {"__concat", l_concat},
-    {"__newindex", l_newindex},
+    {"__newindex", l_newindex}, {"__index", l_index},
     {NULL, NULL}
 };
 
 void pcl_open_point(lua_State *L) {
     int module = lua_gettop(L);
+    lua_newtable(L);                                   /* methods for p:name(...), filled below */
+    int methods = lua_gettop(L);
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
     luaL_newmetatable(L, "point");                     /* __name "point" */
     int mt = lua_gettop(L);
@@ -500,10 +499,9 @@ void pcl_open_point(lua_State *L) {
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
     lua_pushboolean(L, 0);                             /* upvalue 1: no declaration */
     lua_pushvalue(L, mt);
-    luaL_setfuncs(L, point_meta, 2);                   /* metamethods, upvalue 2 = mt */
+    lua_pushvalue(L, methods);
+    luaL_setfuncs(L, point_meta, 3);                   /* metamethods, upvalues 2, 3 = mt, methods */
 
-    lua_newtable(L);                                   /* methods for p:name(...) */
-    int methods = lua_gettop(L);
     for (size_t i = 0; i < sizeof fns / sizeof fns[0]; i++) {
         lua_pushvalue(L, mt);                          /* upvalues 2..4: mt, op, hook */
         lua_pushinteger(L, fns[i].op);
@@ -513,10 +511,5 @@ void pcl_open_point(lua_State *L) {
         lua_getfield(L, module, fns[i].fn[0].name);
         lua_setfield(L, methods, fns[i].fn[0].name);
     }
-    lua_pushboolean(L, 0);
-    lua_pushvalue(L, mt);
-    lua_pushvalue(L, methods);
-    lua_pushcclosure(L, l_index, 3);
-    lua_setfield(L, mt, "__index");
     lua_settop(L, module);
 }
