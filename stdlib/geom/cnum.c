@@ -36,6 +36,7 @@ int pc_cnum_arith(char op, pc_cnum a, pc_cnum b, pc_cnum *out) {
     case '*': return put(x * y, out);
     case '/': return y == 0 ? PC_EPOLE : put(x / y, out);
     case '^': return power(x, y, out);
+    case 'u': return put(-x, out);
     default: return PC_EDOMAIN;
     }
 }

@@ -10,7 +10,7 @@ typedef struct {
     double re, im;
 } pc_cnum;
 
-/* out = a op b for op one of + - * / ^.  PC_EPOLE for a division by zero and for zero
+/* out = a op b for op one of + - * / ^, or -a for op 'u' (b unused, but finite).  PC_EPOLE for a division by zero and for zero
  * raised to a power whose real part is not positive; PC_ENONFINITE when an operand or the
  * result is not finite (an overflow); PC_EDOMAIN for an unknown op.  Integer powers
  * |k| <= 64 are repeated multiplications, exact where the operands are (i^2 = -1, not

@@ -294,6 +294,22 @@ size_t pc_location_text(const char *ctx, int n, const double *h, char *buf, size
                "or use normalize(p) for a projective point", ctx, num(h[n], w), MEMBERSHIP);
 }
 
+int pc_drawn(int n, const double *h, int st, double *xy) {
+    if (n != 2) return st == PC_OK || st == PC_IMPROPER ? st : PC_EDIM;
+    if (pc_loc(2, h, xy) != PC_OK) return PC_EWEIGHT;
+    return isfinite(xy[0]) && isfinite(xy[1]) ? PC_OK : PC_ENONFINITE;
+}
+
+size_t pc_drawn_text(const char *ctx, int st, int n, const double *h, char *buf, size_t size) {
+    char s[PC_MAXDIM * 24 + 32];
+    pc_value_text(n, h, s, sizeof s);
+    if (st == PC_IMPROPER)
+        return put(buf, size, "%s (%s) projects to infinity (it lies in the camera's vanishing plane)", ctx, s);
+    if (st == PC_EDIM) return put(buf, size, "%s must be a 2-D point, got the %d-D %s", ctx, n, s);
+    if (st == PC_EWEIGHT) return pc_location_text(ctx, n, h, buf, size);
+    return put(buf, size, "%s has infinite or NaN coordinates", ctx);
+}
+
 size_t pc_coord_text(int n, const double *h, int i, const char *key, char *buf, size_t size) {
     char s[PC_MAXDIM * 24 + 32], ctx[sizeof s + 64];
     pc_value_text(n, h, s, sizeof s);

@@ -83,6 +83,12 @@ size_t pc_arith_text(int op, const pc_operand *l, const pc_operand *r, char *buf
 /* The value h (its weight not 1) used as a location where ctx says ("f: argument #2"): the
  * membership condition, and V() or normalize() as the remedy. */
 size_t pc_location_text(const char *ctx, int n, const double *h, char *buf, size_t size);
+/* The value h drawn as a 2-D point: n = 2, its location into xy; else st, the status of its
+ * projection by the camera (xy its image when PC_OK).  PC_OK; PC_EWEIGHT (2-D, not a point),
+ * PC_ENONFINITE (an overflowed location), PC_IMPROPER (it projects to infinity) or PC_EDIM
+ * (not 2-D and not projected: no camera), which pc_drawn_text words with ctx ("line: argument #2"). */
+int pc_drawn(int n, const double *h, int st, double *xy);
+size_t pc_drawn_text(const char *ctx, int st, int n, const double *h, char *buf, size_t size);
 /* Reading coordinate i (0-based) of h as .KEY (key "x", "y", "z"), or as p[i + 1] (key NULL):
  * "... has no coordinate .z" past the dimension, else the location text of a weighted value. */
 size_t pc_coord_text(int n, const double *h, int i, const char *key, char *buf, size_t size);

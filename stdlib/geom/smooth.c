@@ -1,7 +1,9 @@
 /* Smoothsteps and half-splines (stepanov_examples.md examples 3-8, 20-22). */
 #include "smooth.h"
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+#include "names.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -45,6 +47,23 @@ int pc_hspline_check(const pc_hspline *h, double t) {
     if (t < 0 && h->n != floor(h->n)) return PC_EDOMAIN;
     if (t > 1 && h->m != floor(h->m)) return PC_EDOMAIN;
     return PC_OK;
+}
+
+size_t pc_hspline_check_text(const pc_hspline *h, double t, char *buf, size_t size) {
+    if (pc_hspline_check(h, t) == PC_OK) return 0;
+    int low = t < 0;
+    char d[40];
+    pc_num_text(low ? h->n : h->m, d, sizeof d);
+    int len = snprintf(buf, size, "must be %s (the degree %s = %s is fractional, so the formula does not extrapolate past %s)",
+                       low ? "at least 0" : "at most 1", low ? "n" : "m", d, low ? "0" : "1");
+    return len < 0 ? 0 : (size_t)len;
+}
+
+size_t pc_hspline_init_text(double n, double m, double t0, char *buf, size_t size) {
+    char tn[40], tm[40], tt[40];
+    int len = snprintf(buf, size, "the degrees n = %s, m = %s are too large for t0 = %s: the coefficients c1, c2 overflow a double",
+                       pc_num_text(n, tn, sizeof tn), pc_num_text(m, tm, sizeof tm), pc_num_text(t0, tt, sizeof tt));
+    return len < 0 ? 0 : (size_t)len;
 }
 
 double pc_hspline_locus(double n, double m, double t0) {

@@ -5,6 +5,7 @@
 #ifndef PC_SMOOTH_H
 #define PC_SMOOTH_H
 
+#include <stddef.h>
 #include "status.h"
 
 /* (1 - cos(pi t)) / 2, examples 3 and 4. */
@@ -34,6 +35,12 @@ double pc_hspline_deriv(const pc_hspline *h, double t);
  * whole degree.  PC_EDOMAIN when t < 0 and n is fractional, or t > 1 and m is (eval and
  * deriv would give NaN there); PC_OK otherwise. */
 int pc_hspline_check(const pc_hspline *h, double t);
+/* Why pc_hspline_check refuses t, as the message of the argument t: "must be at least 0 (the
+ * degree n = 2.5 is fractional, so the formula does not extrapolate past 0)" into buf; 0 (buf
+ * untouched) when it accepts t, else the length. */
+size_t pc_hspline_check_text(const pc_hspline *h, double t, char *buf, size_t size);
+/* Why pc_hspline_init refused degrees n, m > 0 and 0 < t0 < 1: c1 or c2 overflows a double. */
+size_t pc_hspline_init_text(double n, double m, double t0, char *buf, size_t size);
 /* The locus of the junction points (example 8): v(t0) = m t0 / (n - n t0 + m t0). */
 double pc_hspline_locus(double n, double m, double t0);
 /* The parameter name of h ("n", "m", "t0", "c1", "c2", or "v" the junction ordinate g(t0)) into

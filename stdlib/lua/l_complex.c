@@ -2,6 +2,7 @@
  * core's pc_cnum_arith and pc_cnum_fn (stdlib/geom/cnum.h), the Moebius map its pc_mobius. */
 #include "pcl_args.h"
 #include "pcl_tk.h"
+#include "pcl_core.h"
 #include "curvilinear.h"
 #include "cnum.h"
 
@@ -43,37 +44,28 @@ static int toc(lua_State *L, int idx, pc_cnum *z) {
     return c || lua_type(L, idx) == LUA_TNUMBER;
 }
 
-/* The declared kind "a finite complex number or number": re, im into v[0], v[1]. */
-static int read_c(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+/* The declared kinds "a complex number or number", re, im into v[0], v[1]: one that is not
+ * finite is refused as "a finite number". */
+static int read_c(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pc_cnum z = {0, 0};
-    if (!toc(L, idx, &z) || !isfinite(z.re) || !isfinite(z.im)) return 0;
+    if (!toc(L, idx, &z)) return 0;
+    if (!isfinite(z.re) || !isfinite(z.im)) return pcl_readfail(L, idx, "a finite number");
     out->v[0] = z.re, out->v[1] = z.im;
     return 1;
 }
 #define A_COMPLEX(nm) A_ANY(nm, read_c, "a finite complex number or number")
+static pc_cnum cval(const pcl_val *v) { return (pc_cnum){v->v[0], v->v[1]}; }
 
-/* ---- the operators (metamethods: not called by name, so not declared) ------------------ */
-
-static pc_cnum operand(lua_State *L, const char *fn, int idx) {
-    pc_cnum z = {0, 0};
-    const char *what = idx == 1 ? "left" : "right";
-    if (!toc(L, idx, &z))
-        pcl_error(L, "%s: argument #%d (%s) must be a complex number or a number, got %s", fn, idx, what, pcl_shown(L, idx));
-    if (!isfinite(z.re) || !isfinite(z.im))
-        pcl_error(L, "%s: argument #%d (%s) must be a finite number, got %s", fn, idx, what, pcl_shown(L, idx));
-    return z;
-}
+/* ---- the operators: metamethods, declared for their messages ("complex +: argument #2 ...") */
 
 static int arith(lua_State *L, char op) {
-    static const char *const names[] = {"complex +", "complex -", "complex *", "complex /", "complex ^"};
-    const char *fn = names[strchr("+-*/^", op) - "+-*/^"];
-    pc_cnum a = operand(L, fn, 1), b = operand(L, fn, 2), r;
-    int st = pc_cnum_arith(op, a, b, &r);
+    pcl_val a[2] = {0};
+    PCL_READ(L, a);
+    pc_cnum r;
+    int st = pc_cnum_arith(op, cval(&a[0]), cval(&a[1]), &r);
     if (st == PC_EPOLE)
-        return pcl_error(L, "%s: division by zero%s", fn,
-                         op == '^' ? " (zero to a power whose real part is not positive)" : "");
-    if (st != PC_OK) return pcl_error(L, "%s: the result overflows (not finite)", fn);
+        return pcl_fail(L, "division by zero%s", op == '^' ? " (zero to a power whose real part is not positive)" : "");
+    if (st != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
     pushc(L, r);
     return 1;
 }
@@ -83,12 +75,7 @@ static int c_sub(lua_State *L) { return arith(L, '-'); }
 static int c_mul(lua_State *L) { return arith(L, '*'); }
 static int c_div(lua_State *L) { return arith(L, '/'); }
 static int c_pow(lua_State *L) { return arith(L, '^'); }
-
-static int c_unm(lua_State *L) {
-    pc_cnum z = operand(L, "complex -", 1);
-    pushc(L, (pc_cnum){-z.re, -z.im});
-    return 1;
-}
+static int c_unm(lua_State *L) { return arith(L, 'u'); }    /* Lua calls it with (z, z) */
 
 static int c_eq(lua_State *L) {
     pc_cnum a = {0, 0}, b = {0, 0};
@@ -109,7 +96,7 @@ static int c_tostring(lua_State *L) {
 static int zfn(lua_State *L, char op) {
     pcl_val a[1] = {0};
     cnum *z = PCL_READ(L, a);
-    pc_cnum w, in = z ? z->z : (pc_cnum){a[0].v[0], a[0].v[1]};
+    pc_cnum w, in = z ? z->z : cval(&a[0]);
     if (op == 'p') w = in;
     else if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
     if (op == 'a' || op == 'g') lua_pushnumber(L, w.re);
@@ -143,15 +130,10 @@ static const pcl_arg point_arg = A_POINT("P", 2);
 static int c_new(lua_State *L) {
     cnum *z = tocnum(L, 2);
     pcl_val a[2] = {0};
-    if (z) {
-        pushc(L, z->z);
-    } else if (pcl_tovalue(L, 2)) {
-        pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
-        pushc(L, (pc_cnum){a[0].v[0], a[0].v[1]});
-    } else {
-        PCL_READ(L, a);
-        pushc(L, (pc_cnum){a[0].x, a[1].x});
-    }
+    int point = pcl_tovalue(L, 2) != NULL;
+    if (point) pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
+    else if (!z) PCL_READ(L, a);
+    pushc(L, z ? z->z : point ? cval(&a[0]) : (pc_cnum){a[0].x, a[1].x});
     return 1;
 }
 
@@ -179,20 +161,14 @@ static const pcl_arg m_args[] = {A_ANY("z", read_c, "a complex number, a 2-D poi
 static const pcl_arg coord_x = A_NUM("x"), coord_y = A_NUM("y");
 
 static int m_call(lua_State *L) {
-    mobius *m = tomobius(L, 1);           /* a __call: the map itself (PCL_READ checks it) */
     pcl_val a[2] = {0};
-    if (lua_type(L, 2) == LUA_TNUMBER && !lua_isnoneornil(L, 3)) {
-        pcl_readone(L, 2, 1, 0, &coord_x, 0, &a[0]);
-        pcl_readone(L, 3, 2, 0, &coord_y, 0, &a[1]);
-        pc_cnum w = apply(L, m, a[0].x, a[1].x);
-        lua_pushnumber(L, w.re);
-        lua_pushnumber(L, w.im);
-        return 2;
-    }
-    int point = pcl_tovalue(L, 2) != NULL;
-    if (point) pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
-    else m = PCL_READ(L, a);
-    pc_cnum w = apply(L, m, a[0].v[0], a[0].v[1]);
+    mobius *m = tomobius(L, 1);      /* a __call; called on another value: the layer's message */
+    int xy = lua_type(L, 2) == LUA_TNUMBER && !lua_isnoneornil(L, 3), point = !xy && pcl_tovalue(L, 2);
+    if (!m || !(xy || point)) m = PCL_READ(L, a);
+    if (xy || point) pcl_readone(L, 2, 1, 0, xy ? &coord_x : &point_arg, 0, &a[0]);
+    if (xy) pcl_readone(L, 3, 2, 0, &coord_y, 0, &a[1]);
+    pc_cnum w = apply(L, m, xy ? a[0].x : a[0].v[0], xy ? a[1].x : a[0].v[1]);
+    if (xy) return pcl_push_results(L, 0, "n n", w.re, w.im);
     if (point) pcl_pushpoint(L, 2, (double[]){w.re, w.im});
     else pushc(L, w);
     return 1;
@@ -237,7 +213,7 @@ static const pcl_arg mobius_args[] = {A_COMPLEX("z0"), A_NUMOPT("phi", 0, NULL),
 PCL_BODY(l_mobius, a) {
     if (hypot(a[0].v[0], a[0].v[1]) >= 1)
         return pcl_argfail(L, 1, "must be a point inside the unit disc (|z0| < 1), got %s", luaL_tolstring(L, 1, NULL));
-    pushm(L, (pc_cnum){a[0].v[0], a[0].v[1]}, a[1].x);
+    pushm(L, cval(&a[0]), a[1].x);
     return 1;
 }
 
@@ -247,6 +223,12 @@ static const pcl_fn zmethods[] = {
     ZMETHOD("z:conj", c_conj, "z", "The complex conjugate re - i im."), ZMETHOD("z:abs", c_abs, "number", "The modulus |z|."),
     ZMETHOD("z:arg", c_arg, "number", "The argument of z: atan2(im, re), in radians."), ZMETHOD("z:exp", c_exp, "z", "The complex exponential e^z."),
     ZMETHOD("z:point", c_point, "P", "The 2-D point (re, im) of the complex plane."), PCL_END};
+#define A_OPERAND(nm) A_ANY(nm, read_c, "a complex number or a number")
+static const pcl_arg operands[] = {A_OPERAND("left"), A_OPERAND("right"), PCL_END};
+#define OPERATOR(op, f, mm) {.name = "complex " op, .fn = f, .args = operands, .key = mm}
+static const pcl_fn operators[] = {OPERATOR("+", c_add, "__add"), OPERATOR("-", c_sub, "__sub"),
+                                   OPERATOR("*", c_mul, "__mul"), OPERATOR("/", c_div, "__div"),
+                                   OPERATOR("^", c_pow, "__pow"), OPERATOR("-", c_unm, "__unm"), PCL_END};
 static const pcl_fn cfns[] = {
     PCL_FN("complex.polar", c_polar, polar_args, "z", "The complex number r e^(iu)."),
     PCL_FN("complex.exp", c_exp, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_abs, z_arg, "number", "The modulus |z|."),
@@ -262,11 +244,10 @@ static const pcl_fn mmethods[] = {{.name = "M:inverse", .fn = m_inverse, .result
 
 void pcl_open_complex(lua_State *L) {
     int module = lua_gettop(L);
-    static const luaL_Reg cmeta[] = {
-        {"__add", c_add}, {"__sub", c_sub}, {"__mul", c_mul}, {"__div", c_div}, {"__pow", c_pow},
-        {"__unm", c_unm}, {"__eq", c_eq}, {"__tostring", c_tostring}, {NULL, NULL}};
+    static const luaL_Reg cmeta[] = {{"__eq", c_eq}, {"__tostring", c_tostring}, {NULL, NULL}};
     static const luaL_Reg mmeta[] = {{"__tostring", m_tostring}, {NULL, NULL}};
     pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, c_index);
+    pcl_register_private(L, -1, operators);
     pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, m_index);
     lua_settop(L, module);
 

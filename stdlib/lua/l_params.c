@@ -6,10 +6,11 @@
  * parameter marked animate.
  * The host's side (pcl.h): pcl_param_set before running a script, pcl_push_params after. */
 #include "pcl_args.h"
-#include "pcl_point.h"
+#include "pcl_core.h"
 
 #define SET_KEY "pointcalc.params.set"           /* name -> value given by the host */
 #define DECLARED_KEY "pointcalc.params.declared" /* the list of declarations, in order */
+#define NAMES_KEY "pointcalc.params.names"       /* name -> true once declared */
 
 static void registry_table(lua_State *L, const char *key) { luaL_getsubtable(L, LUA_REGISTRYINDEX, key); }
 
@@ -22,22 +23,16 @@ void pcl_param_set(lua_State *L, const char *name, double value) {
 
 void pcl_push_params(lua_State *L) { registry_table(L, DECLARED_KEY); }
 
-/* A name a URL and a command line can carry: letters, digits, _ (not first a digit). */
-static int good_name(const char *s, size_t len) {
+/* The name: one a URL and a command line can carry, letters, digits, _ (not first a digit). */
+static int read_name(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     static const char OK[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_";
-    return len > 0 && len <= 64 && !(s[0] >= '0' && s[0] <= '9') && strspn(s, OK) == len;
-}
-
-/* the name: a string of letters, digits and _ */
-static int read_name(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
     size_t len;
-    out->s = lua_tolstring(L, idx, &len);
-    return lua_type(L, idx) == LUA_TSTRING && good_name(out->s, len);
+    const char *s = out->s = lua_tolstring(L, idx, &len);
+    return lua_type(L, idx) == LUA_TSTRING && len > 0 && len <= 64 && !(s[0] >= '0' && s[0] <= '9') &&
+           strspn(s, OK) == len;
 }
 /* step: a number, or the table {step =, animate =} (read by the body) */
-static int read_step(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_step(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
 }
@@ -49,9 +44,8 @@ static const pcl_arg slider_args[] = {
     {.name = "step", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_step, .expect = "a number or a table {step =, animate =}"},
     PCL_END};
 
-static int l_slider(lua_State *L) {
-    pcl_val a[5] = {0}, k[2] = {0};   /* name, min, max, default, step; the table's step, animate */
-    PCL_READ(L, a);
+PCL_BODY(l_slider, a) {
+    pcl_val k[2] = {0};   /* a: name, min, max, default, step; k: the table's step, animate */
     if (lua_istable(L, 5)) pcl_read_options(L, 5, 5, &slider_opts, k);
     const char *name = a[0].s;
     double lo = a[1].x, hi = a[2].x, dflt = a[3].x, step = lua_istable(L, 5) ? k[0].x : a[4].x;
@@ -61,28 +55,13 @@ static int l_slider(lua_State *L) {
     if (step < 0 || step > hi - lo) return pcl_argfail(L, 5, "must be between 0 and max - min");
 
     /* the declaration, once per name (a script may ask for its slider again) */
-    registry_table(L, DECLARED_KEY);
-    int decl = lua_gettop(L);
-    lua_Integer n = luaL_len(L, decl), found = 0;
-    for (lua_Integer i = 1; i <= n && !found; i++) {
-        lua_geti(L, decl, i);
-        lua_getfield(L, -1, "name");
-        if (strcmp(lua_tostring(L, -1), name) == 0) found = i;
-        lua_pop(L, 2);
-    }
-    if (!found) {
-        lua_createtable(L, 0, 6);
-        lua_pushvalue(L, 1);
-        lua_setfield(L, -2, "name");
-        const char *keys[] = {"min", "max", "default", "step"};
-        double values[] = {lo, hi, dflt, step};
-        for (int i = 0; i < 4; i++) {
-            lua_pushnumber(L, values[i]);
-            lua_setfield(L, -2, keys[i]);
-        }
-        lua_pushboolean(L, animate);
-        lua_setfield(L, -2, "animate");
-        lua_rawseti(L, decl, n + 1);
+    registry_table(L, NAMES_KEY);
+    if (lua_getfield(L, -1, name) == LUA_TNIL) {
+        lua_pushboolean(L, 1);
+        lua_setfield(L, -3, name);
+        registry_table(L, DECLARED_KEY);
+        pcl_push_results(L, 0, "name=s min=n max=n default=n step=n animate=b", name, lo, hi, dflt, step, animate);
+        lua_rawseti(L, -2, luaL_len(L, -2) + 1);
     }
 
     /* the value: the host's, checked against the range, else the default */

@@ -15,31 +15,31 @@
 #define MSG_SIZE (PC_MAXDIM * 48 + 400)             /* a message of point_fn.h */
 static const char POINT_MT_KEY = 'p';       /* registry key (its address) of the metatable */
 #define MT lua_upvalueindex(2)
-#define METHODS lua_upvalueindex(3)         /* __index only: the method table */
+#define METHODS lua_upvalueindex(3)         /* metamethods: the method table (__index) */
 
 /* ---- recognising and making values ------------------------------------------------------- */
 
-/* A genuine value's block is exactly its header and n + 1 doubles, n = 1..PC_MAXDIM: a
- * userdata given the point metatable by the debug library has another size (pcl.h). */
-static inline int genuine_value(lua_State *L, int idx, const pcl_value *p) {
-    size_t len = lua_rawlen(L, idx);
-    return len >= sizeof(pcl_value) && p->n >= 1 && p->n <= PC_MAXDIM &&
-           len == sizeof(pcl_value) + (size_t)(p->n + 1) * sizeof(double);
-}
-
-static inline pcl_value *topt(lua_State *L, int idx) {
-    pcl_value *p = pcl_testudata(L, idx, MT);
-    if (p && !genuine_value(L, idx, p)) pcl_genuine(L, idx, p, 0, "point");
+/* p if it is NULL or a genuine value: its block exactly its header and n + 1 doubles, n =
+ * 1..PC_MAXDIM (a userdata given the point metatable by the debug library has another size). */
+static inline pcl_value *genuine(lua_State *L, int idx, pcl_value *p) {
+    size_t len = p ? lua_rawlen(L, idx) : 0;
+    if (p && !(len >= sizeof(pcl_value) && p->n >= 1 && p->n <= PC_MAXDIM &&
+               len == sizeof(pcl_value) + (size_t)(p->n + 1) * sizeof(double)))
+        pcl_genuine(L, idx, p, 0, "point");
     return p;
 }
 
-static inline pcl_value *newpt(lua_State *L, int n) {
+static inline pcl_value *topt(lua_State *L, int idx) { return genuine(L, idx, pcl_testudata(L, idx, MT)); }
+
+/* a new value of dimension n with the metatable at index mt */
+static inline pcl_value *alloc(lua_State *L, int n, int mt) {
     pcl_value *p = lua_newuserdatauv(L, sizeof(pcl_value) + (size_t)(n + 1) * sizeof(double), 0);
     p->n = n;
-    lua_pushvalue(L, MT);
+    lua_pushvalue(L, mt);
     lua_setmetatable(L, -2);
     return p;
 }
+#define newpt(L, n) alloc((L), (n), MT)
 
 void pcl_push_point_mt(lua_State *L) { lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY); }
 
@@ -48,25 +48,17 @@ pcl_value *pcl_tovalue(lua_State *L, int idx) {
     pcl_push_point_mt(L);
     pcl_value *p = pcl_testudata(L, idx, lua_gettop(L));
     lua_pop(L, 1);
-    if (p && !genuine_value(L, idx, p)) pcl_genuine(L, idx, p, 0, "point");
-    return p;
+    return genuine(L, idx, p);
 }
 
 pcl_value *pcl_newvalue(lua_State *L, int n) {
-    pcl_value *p = lua_newuserdatauv(L, sizeof(pcl_value) + (size_t)(n + 1) * sizeof(double), 0);
-    p->n = n;
     pcl_push_point_mt(L);
-    lua_setmetatable(L, -2);
+    pcl_value *p = alloc(L, n, lua_gettop(L));
+    lua_remove(L, -2);
     return p;
 }
 
 /* ---- text ---------------------------------------------------------------------------------- */
-
-static const char *push_value_text(lua_State *L, const pcl_value *p) {
-    char s[PC_MAXDIM * 24 + 32];
-    pc_value_text(p->n, p->h, s, sizeof s);
-    return lua_pushstring(L, s);
-}
 
 /* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
 static const char *argctx(lua_State *L, int arg) {
@@ -125,18 +117,13 @@ static int make(lua_State *L, double weight) {
 static int l_P(lua_State *L) { return make(L, 1.0); }
 static int l_V(lua_State *L) { return make(L, 0.0); }
 
-static const char *opnd_name(lua_State *L, int idx) {
-    if (topt(L, idx)) return "a point";
-    if (lua_type(L, idx) == LUA_TNUMBER) return "a number";
-    if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) return lua_pushfstring(L, "a %s", lua_tostring(L, -1));
-    return lua_pushfstring(L, "a %s", luaL_typename(L, idx));
-}
-
+/* An operand as the operators' messages show it: a value, a number, or another thing by its type */
 static pc_operand operand(lua_State *L, int idx) {
     pcl_value *p = topt(L, idx);
-    pc_operand o = {p ? p->n : 0, p ? p->h : NULL, lua_type(L, idx) == LUA_TNUMBER, lua_tonumber(L, idx),
-                    opnd_name(L, idx)};
-    return o;
+    int isnum = lua_type(L, idx) == LUA_TNUMBER;
+    const char *type = luaL_getmetafield(L, idx, "__name") == LUA_TSTRING ? lua_tostring(L, -1) : luaL_typename(L, idx);
+    const char *what = p ? "a point" : isnum ? "a number" : lua_pushfstring(L, "a %s", type);
+    return (pc_operand){p ? p->n : 0, p ? p->h : NULL, isnum, lua_tonumber(L, idx), what};
 }
 
 /* A + B, A - B, k*A, A*k, A/k and -A: weights add, so a point plus a vector is a point; u/v of
@@ -177,9 +164,8 @@ static int l_eq(lua_State *L) {
 }
 
 static int l_len(lua_State *L) {
-    pcl_value *p = lua_touserdata(L, 1);                /* only the VM calls it */
+    pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));    /* only the VM calls it */
     if (!p) return pcl_error(L, "#: not a point");
-    if (!genuine_value(L, 1, p)) pcl_genuine(L, 1, p, 0, "point");
     lua_pushinteger(L, p->n);
     return 1;
 }
@@ -187,7 +173,9 @@ static int l_len(lua_State *L) {
 static int l_tostring(lua_State *L) {
     pcl_value *p = topt(L, 1);
     if (!p) return pcl_error(L, "tostring: not a point");
-    push_value_text(L, p);
+    char s[PC_MAXDIM * 24 + 32];
+    pc_value_text(p->n, p->h, s, sizeof s);
+    lua_pushstring(L, s);
     return 1;
 }
 
@@ -212,25 +200,21 @@ static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key)
 /* __index: .x .y .z (coordinates), .w (the weight), p[i], then the methods.  Only the VM calls
  * it (the metatable is protected by __metatable), always with a point as argument 1. */
 static int l_index(lua_State *L) {
-    pcl_value *p = lua_touserdata(L, 1);
-    if (!p) return pcl_error(L, "index: not a point");
     /* the VM calls it for any userdata with this metatable, a forged one too */
-    if (!genuine_value(L, 1, p)) pcl_genuine(L, 1, p, 0, "point");
+    pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));
+    if (!p) return pcl_error(L, "index: not a point");
     int t = lua_type(L, 2);
     if (t == LUA_TSTRING) {
         size_t len;
         const char *k = lua_tolstring(L, 2, &len);
         if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
         if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);      /* the weight */
-        lua_pushvalue(L, 2);
-        lua_rawget(L, METHODS);
+        lua_rawget(L, METHODS);                                             /* the key k on the top */
         return 1;
     }
-    if (t == LUA_TNUMBER) {
-        int isint;
-        lua_Integer i = lua_tointegerx(L, 2, &isint);
-        if (isint && i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
-    }
+    int isint;
+    lua_Integer i = lua_tointegerx(L, 2, &isint);
+    if (t == LUA_TNUMBER && isint && i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
     lua_pushnil(L);
     return 1;
 }
@@ -271,18 +255,28 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
     return 2 + push_num(L, out[n + 2]);
 }
 
-/* the declared arguments read, then finish */
-static int apply(lua_State *L, int op) {
+/* The core's function op of the declared arguments, after the equations' hook (NOHOOK: none)
+ * when an argument is not a point. */
+#define NOHOOK (-1)
+static int run(lua_State *L, int op, int hook) {
+    int k = 1, m = lua_gettop(L);
+    while (hook != NOHOOK && k <= m && topt(L, k)) k++;
+    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, (pcl_eq_op)hook)) return op == PC_FN_MEET ? 3 : 1;
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     return finish(L, op, a);
 }
 
-/* apply, after the equations' hook when one of the m arguments is not a point */
-static int hooked(lua_State *L, int m, pcl_eq_op hook, int op) {
-    for (int k = 1; k <= m; k++)
-        if (!topt(L, k)) return pcl_eq_hook(L, hook) ? (op == PC_FN_MEET ? 3 : 1) : apply(L, op);
-    return apply(L, op);
+/* An overload's other form: its m arguments args read one by one, in one dimension, then op */
+static int other_form(lua_State *L, int op, int m, const pcl_arg *args) {
+    pcl_val a[4] = {0};
+    for (int k = 0; k < m; k++) pcl_readone(L, k + 1, k + 1, 0, &args[k], a[0].n, &a[k]);
+    return finish(L, op, a);
+}
+
+/* The functions of pc_point_fn's one entry: the op and the hook are upvalues 2 and 3. */
+static int l_fn(lua_State *L) {
+    return run(L, (int)lua_tointeger(L, PCL_UPVALUE(2)), (int)lua_tointeger(L, PCL_UPVALUE(3)));
 }
 
 static int out_of_range(lua_State *L, double t) {
@@ -325,11 +319,9 @@ static int l_bar(lua_State *L) {
 
 /* mid(A, B, ...): the midpoint, or the centroid of several values. */
 static const pcl_arg mid_args[] = {A_VAL("A"), A_VAL("B"), PCL_END};
-static int l_mid(lua_State *L) {
-    int m = lua_gettop(L);
-    pcl_val a[2] = {0}, v;
-    PCL_READ(L, a);
-    int n = a[0].n;
+PCL_BODY(l_mid, a) {
+    int m = lua_gettop(L), n = a[0].n;
+    pcl_val v;
     double s[PC_MAXDIM + 1];   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
     for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m + a[1].v[i] / m;
     for (int j = 3; j <= m; j++) {
@@ -358,50 +350,26 @@ static const pcl_arg one_vector[] = {A_VECTOR("v", 0), PCL_END};
 static int l_dist(lua_State *L) {
     pcl_value *p, *q;
     if (exact_pair(L, 1.0, &p, &q)) return push_num(L, pc_dist(p->n, p->h, q->h));
-    pcl_val a[4] = {0};
-    if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2)) {
-        pcl_readone(L, 1, 1, 0, &one_vector[0], 0, &a[0]);
-        return finish(L, PC_FN_NORM, a);
-    }
-    return apply(L, PC_FN_DIST);
+    if (p && pc_kind_of(p->h[p->n]) == PC_KIND_VECTOR && lua_isnoneornil(L, 2))
+        return other_form(L, PC_FN_NORM, 1, one_vector);
+    return run(L, PC_FN_DIST, NOHOOK);
 }
 
 static const pcl_arg uv_args[] = {A_SAMEVECTOR("u"), A_SAMEVECTOR("v"), PCL_END};
 static int l_dot(lua_State *L) {
     pcl_value *u, *v;
     if (exact_pair(L, 0.0, &u, &v)) return push_num(L, pc_dot(u->n, u->h, v->h));
-    return hooked(L, 2, PCL_EQ_DOT, PC_FN_DOT);
+    return run(L, PC_FN_DOT, PCL_EQ_DOT);
 }
-
-static int l_cross(lua_State *L) { return hooked(L, 2, PCL_EQ_CROSS, PC_FN_CROSS); }
-static int l_unit(lua_State *L) { return hooked(L, 1, PCL_EQ_UNIT, PC_FN_UNIT); }
-static int l_perp(lua_State *L) { return apply(L, PC_FN_PERP); }
-static int l_foot(lua_State *L) { return apply(L, PC_FN_FOOT); }
-static int l_sigma(lua_State *L) { return apply(L, PC_FN_SIGMA); }
-static int l_sr(lua_State *L) { return apply(L, PC_FN_SR); }
-static int l_divide(lua_State *L) { return apply(L, PC_FN_DIVIDE); }
-static int l_harmonic(lua_State *L) { return apply(L, PC_FN_HARMONIC); }
-static int l_cross_ratio(lua_State *L) { return apply(L, PC_FN_CROSS_RATIO); }
-static int l_volume(lua_State *L) { return apply(L, PC_FN_VOLUME); }
-static int l_normalize(lua_State *L) { return apply(L, PC_FN_NORMALIZE); }
-static int l_weight(lua_State *L) { return apply(L, PC_FN_WEIGHT); }
-
-/* meet(A1, A2, B1, B2) -> K, lambda, mu with K = A1 + (A2 - A1) lambda = B1 + (B2 - B1) mu
- * (pc_meet_h: an end may be a point at infinity); skew lines give nil and their distance. */
-static int l_meet(lua_State *L) { return hooked(L, 4, PCL_EQ_MEET, PC_FN_MEET); }
 
 /* angle(A, B, C): the angle at A of triangle ABC; angle(u, v): between two vectors.  The form
  * follows the first argument (a vector or not), so that angle(A, B, nil) names argument #3. */
 static const pcl_arg three_points[] = {A_SAMEPOINT("A"), A_SAMEPOINT("B"), A_SAMEPOINT("C"), PCL_END};
 static int l_angle(lua_State *L) {
     pcl_value *first = topt(L, 1);
-    pcl_val a[4] = {0};
-    if (first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR : lua_isnoneornil(L, 3)) {
-        pcl_readone(L, 1, 1, 0, &uv_args[0], 0, &a[0]);
-        pcl_readone(L, 2, 2, 0, &uv_args[1], a[0].n, &a[1]);
-        return finish(L, PC_FN_ANGLE_UV, a);
-    }
-    return apply(L, PC_FN_ANGLE);
+    if (first ? pc_kind_of(first->h[first->n]) == PC_KIND_VECTOR : lua_isnoneornil(L, 3))
+        return other_form(L, PC_FN_ANGLE_UV, 2, uv_args);
+    return run(L, PC_FN_ANGLE, NOHOOK);
 }
 
 static const pcl_arg foot_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), A_SAMEPOINT("B"), PCL_END};
@@ -417,11 +385,9 @@ static const pcl_arg any_value[] = {{.name = "p", .kind = PCL_VALUE, .expect = "
 
 /* area(A, B, C): signed in 2-D (counter-clockwise positive), unsigned in any dimension;
  * area(A, B, C, D, ...) in 2-D: the signed area of the polygon. */
-static int l_area(lua_State *L) {
-    int m = lua_gettop(L);
-    pcl_val a[3] = {0}, d;
-    PCL_READ(L, a);
-    int n = a[0].n;
+PCL_BODY(l_area, a) {
+    int m = lua_gettop(L), n = a[0].n;
+    pcl_val d;
     if (n < 2) return pcl_fail(L, "points must be 2-D or more, got 1-D");
     if (n > 2 && m > 3) return pcl_fail(L, "a polygon area needs 2-D points; in %d-D give a triangle", n);
     if (n > 2) return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
@@ -449,9 +415,8 @@ static const pcl_arg near_args[] = {A_ANY("a", NULL, NUM_OR_VALUE), A_ANY("b", N
                                     {.name = "eps", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = HUGE_VAL,
                                      .dflt = 1e-9, .expect = "a non-negative number"}, PCL_END};
 static const pcl_arg near_value = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expect = NUM_OR_VALUE};
-static int l_near(lua_State *L) {
-    pcl_val a[3] = {0}, p = {0}, q = {0};
-    PCL_READ(L, a);
+PCL_BODY(l_near, a) {
+    pcl_val p = {0}, q = {0};
     if (lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
         p.v[0] = lua_tonumber(L, 1);
         q.v[0] = lua_tonumber(L, 2);
@@ -469,97 +434,82 @@ int pcl_topoint2(lua_State *L, int idx, double *x, double *y) {
     idx = lua_absindex(L, idx);
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p) return 0;
-    if (p->n != 2) {
-        /* with a camera set, drawing takes its points (3-D) and draws their images */
-        int st = pcl_project(L, p->n, p->h, x, y);
-        if (st == PC_OK) return 1;
-        if (st == PC_IMPROPER)
-            return pcl_error(L, "%s: argument #%d (%s) projects to infinity (it lies in the "
-                              "camera's vanishing plane)", pcl_fname(L), idx, push_value_text(L, p));
-        return pcl_error(L, "%s: argument #%d must be a 2-D point, got the %d-D %s", pcl_fname(L), idx, p->n,
-                         push_value_text(L, p));
-    }
-    double loc[2];
+    double xy[2];
     char msg[MSG_SIZE];
-    if (pc_loc(2, p->h, loc) != PC_OK && pc_location_text(argctx(L, idx), 2, p->h, msg, sizeof msg))
-        return pcl_error(L, "%s", msg);
-    if (!isfinite(loc[0]) || !isfinite(loc[1]))        /* arithmetic overflowed */
-        return pcl_error(L, "%s has infinite or NaN coordinates", argctx(L, idx));
-    *x = loc[0];
-    *y = loc[1];
+    /* with a camera set, drawing takes its points (3-D) and draws their images */
+    int st = pc_drawn(p->n, p->h, p->n == 2 ? PC_OK : pcl_project(L, p->n, p->h, &xy[0], &xy[1]), xy);
+    if (st != PC_OK && pc_drawn_text(argctx(L, idx), st, p->n, p->h, msg, sizeof msg)) return pcl_error(L, "%s", msg);
+    *x = xy[0];
+    *y = xy[1];
     return 1;
 }
 
 /* ---- registration --------------------------------------------------------------------------- */
 
-static const pcl_fn fns[] = {
-    {.name = "P", .fn = l_P, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."},
-    {.name = "V", .fn = l_V, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."},
-    PCL_FN("lerp", l_lerp, lerp_args, "value", "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers."),
-    PCL_FN("bar", l_bar, t_arg, "number", "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t."),
-    {.name = "mid", .fn = l_mid, .args = mid_args, .sig = "mid(A, B, ...) -> value", .help = "The midpoint of two values, or the centroid of several."},
-    {.name = "dist", .fn = l_dist, .args = two_points, .sig = "dist(A, B) | dist(v) -> number", .help = "The distance between two points, or the length of a vector."},
-    PCL_FN("dot", l_dot, uv_args, "number", "The scalar product of two vectors."),
-    PCL_FN("cross", l_cross, uv_args, "vector | number", "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D."),
-    PCL_FN("unit", l_unit, one_vector, "vector", "The vector v scaled to length 1; the zero vector is an error."),
-    PCL_FN("perp", l_perp, one_vector, "vector", "The 2-D vector v turned by +90 degrees: V(-v.y, v.x)."),
-    {.name = "angle", .fn = l_angle, .args = three_points, .sig = "angle(A, B, C) | angle(u, v) -> number", .help = "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi."},
-    PCL_FN("foot", l_foot, foot_args, "point", "The foot of the perpendicular from C to line AB."),
-    PCL_FN("Sigma", l_sigma, sigma_args, "number", "The metric operator (B - A).(C - A) of three points; Sigma(A, B) is the squared distance AB^2."),
-    PCL_FN("sr", l_sr, sr_args, "number", "The simple ratio (XYZ) = (X - Z)/(Z - Y) in which Z divides XY; math.huge when Z = Y, -1 for the point at infinity."),
-    PCL_FN("divide", l_divide, divide_args, "point", "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY."),
-    PCL_FN("harmonic", l_harmonic, harmonic_args, "point", "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity."),
-    PCL_FN("cross_ratio", l_cross_ratio, cross_ratio_args, "number", "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity)."),
-    PCL_FN("meet", l_meet, meet_args, "K, lambda, mu", "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
-    {.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number", .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."},
-    PCL_FN("volume", l_volume, four_points, "number", "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up."),
-    PCL_FN("normalize", l_normalize, any_value, "point", "Divide a weighted value by its weight (projective normalisation); weight 0 is an error."),
-    PCL_FN("weight", l_weight, any_value, "number", "The weight of a value: 1 for a point, 0 for a vector, k for k*A."),
-    PCL_FN("coords", l_coords, one_loc, "x, y, ...", "The coordinates of a point or the components of a vector, as numbers."),
-    PCL_FN("near", l_near, near_args, "boolean", "Numbers, or values of one dimension, equal within eps (default 1e-9) relative to their size."),
-    PCL_END};
-
-/* p:method() for the one-receiver functions */
-static const char *const method_names[] = {
-    "lerp", "mid", "dist", "dot", "cross", "unit", "perp", "angle", "normalize", "weight",
-    "coords", "near", NULL
+/* The registration table: a declaration (each ended, to register alone with its upvalues), the
+ * op and hook of l_fn, and whether it is also a method p:name(). */
+#define OP(nm, args, res, op, hook, method, text) {{PCL_FN(nm, l_fn, args, res, text)}, op, hook, method}
+static const struct {
+    pcl_fn fn[2];
+    int op, hook, method;
+} fns[] = {
+    {{{.name = "P", .fn = l_P, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."}}, .method = 0},
+    {{{.name = "V", .fn = l_V, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."}}, .method = 0},
+    {{PCL_FN("lerp", l_lerp, lerp_args, "value", "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers.")}, .method = 1},
+    {{PCL_FN("bar", l_bar, t_arg, "number", "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t.")}, .method = 0},
+    {{{.name = "mid", .fn = l_mid, .args = mid_args, .sig = "mid(A, B, ...) -> value", .help = "The midpoint of two values, or the centroid of several."}}, .method = 1},
+    {{{.name = "dist", .fn = l_dist, .args = two_points, .sig = "dist(A, B) | dist(v) -> number", .help = "The distance between two points, or the length of a vector."}}, .method = 1},
+    {{PCL_FN("dot", l_dot, uv_args, "number", "The scalar product of two vectors.")}, .method = 1},
+    OP("cross", uv_args, "vector | number", PC_FN_CROSS, PCL_EQ_CROSS, 1, "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D."),
+    OP("unit", one_vector, "vector", PC_FN_UNIT, PCL_EQ_UNIT, 1, "The vector v scaled to length 1; the zero vector is an error."),
+    OP("perp", one_vector, "vector", PC_FN_PERP, NOHOOK, 1, "The 2-D vector v turned by +90 degrees: V(-v.y, v.x)."),
+    {{{.name = "angle", .fn = l_angle, .args = three_points, .sig = "angle(A, B, C) | angle(u, v) -> number", .help = "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi."}}, .method = 1},
+    OP("foot", foot_args, "point", PC_FN_FOOT, NOHOOK, 0, "The foot of the perpendicular from C to line AB."),
+    OP("Sigma", sigma_args, "number", PC_FN_SIGMA, NOHOOK, 0, "The metric operator (B - A).(C - A) of three points; Sigma(A, B) is the squared distance AB^2."),
+    OP("sr", sr_args, "number", PC_FN_SR, NOHOOK, 0, "The simple ratio (XYZ) = (X - Z)/(Z - Y) in which Z divides XY; math.huge when Z = Y, -1 for the point at infinity."),
+    OP("divide", divide_args, "point", PC_FN_DIVIDE, NOHOOK, 0, "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY."),
+    OP("harmonic", harmonic_args, "point", PC_FN_HARMONIC, NOHOOK, 0, "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity."),
+    OP("cross_ratio", cross_ratio_args, "number", PC_FN_CROSS_RATIO, NOHOOK, 0, "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity)."),
+    OP("meet", meet_args, "K, lambda, mu", PC_FN_MEET, PCL_EQ_MEET, 0, "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
+    {{{.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number", .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."}}, .method = 0},
+    OP("volume", four_points, "number", PC_FN_VOLUME, NOHOOK, 0, "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up."),
+    OP("normalize", any_value, "point", PC_FN_NORMALIZE, NOHOOK, 1, "Divide a weighted value by its weight (projective normalisation); weight 0 is an error."),
+    OP("weight", any_value, "number", PC_FN_WEIGHT, NOHOOK, 1, "The weight of a value: 1 for a point, 0 for a vector, k for k*A."),
+    {{PCL_FN("coords", l_coords, one_loc, "x, y, ...", "The coordinates of a point or the components of a vector, as numbers.")}, .method = 1},
+    {{PCL_FN("near", l_near, near_args, "boolean", "Numbers, or values of one dimension, equal within eps (default 1e-9) relative to their size.")}, .method = 1},
 };
 
 static const luaL_Reg point_meta[] = {
     {"__add", l_add}, {"__sub", l_sub}, {"__mul", l_mul}, {"__div", l_div}, {"__unm", l_unm},
     {"__eq", l_eq}, {"__len", l_len}, {"__tostring", l_tostring}, {"__concat", l_concat},
-    {"__newindex", l_newindex},
+    {"__newindex", l_newindex}, {"__index", l_index},
     {NULL, NULL}
 };
 
 void pcl_open_point(lua_State *L) {
     int module = lua_gettop(L);
+    lua_newtable(L);                                   /* methods for p:name(...), filled below */
+    int methods = lua_gettop(L);
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
-    lua_newtable(L);
+    luaL_newmetatable(L, "point");                     /* __name "point" */
     int mt = lua_gettop(L);
-    lua_pushliteral(L, "point");
-    lua_setfield(L, mt, "__name");
     lua_pushliteral(L, "point");                       /* getmetatable(p) == "point" */
     lua_setfield(L, mt, "__metatable");
     lua_pushvalue(L, mt);
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
     lua_pushboolean(L, 0);                             /* upvalue 1: no declaration */
     lua_pushvalue(L, mt);
-    luaL_setfuncs(L, point_meta, 2);                   /* metamethods, upvalue 2 = mt */
-
-    lua_pushvalue(L, mt);                              /* functions, upvalue 2 = mt */
-    pcl_register(L, module, fns, 1);
-
-    lua_newtable(L);                                   /* methods for p:name(...) */
-    int methods = lua_gettop(L);
-    for (const char *const *m = method_names; *m; m++) {
-        lua_getfield(L, module, *m);
-        lua_setfield(L, methods, *m);
-    }
-    lua_pushboolean(L, 0);
-    lua_pushvalue(L, mt);
     lua_pushvalue(L, methods);
-    lua_pushcclosure(L, l_index, 3);
-    lua_setfield(L, mt, "__index");
+    luaL_setfuncs(L, point_meta, 3);                   /* metamethods, upvalues 2, 3 = mt, methods */
+
+    for (size_t i = 0; i < sizeof fns / sizeof fns[0]; i++) {
+        lua_pushvalue(L, mt);                          /* upvalues 2..4: mt, op, hook */
+        lua_pushinteger(L, fns[i].op);
+        lua_pushinteger(L, fns[i].hook);
+        pcl_register(L, module, fns[i].fn, 3);
+        if (!fns[i].method) continue;
+        lua_getfield(L, module, fns[i].fn[0].name);
+        lua_setfield(L, methods, fns[i].fn[0].name);
+    }
     lua_settop(L, module);
 }

@@ -2,38 +2,32 @@
  * (vertex i, 1 the initial point) and #S (the number of vertices). */
 #include "pcl_args.h"
 #include "pcl_point.h"
+#include "pcl_core.h"
 #include "simplex.h"
 
 static const char REGKEY[] = "pointcalc.simplex";   /* the metatable in the registry */
 
 /* A genuine simplex's block is exactly pc_simplex_size(n, k) (pcl.h: forged userdata). */
-static pc_simplex *tosimplex(lua_State *L, int idx) {
+static void *tosimplex(lua_State *L, int idx) {
     pc_simplex *s = luaL_testudata(L, idx, REGKEY);
-    if (!s) return NULL;
-    size_t len = lua_rawlen(L, idx);
-    int ok = len >= sizeof(pc_simplex) && s->n >= 1 && s->n <= PC_MAXDIM && s->k >= 1 &&
+    size_t len = s ? lua_rawlen(L, idx) : 0;
+    int ok = s && len >= sizeof(pc_simplex) && s->n >= 1 && s->n <= PC_MAXDIM && s->k >= 1 &&
              s->k <= s->n && len == pc_simplex_size(s->n, s->k);
     return pcl_genuine(L, idx, s, ok, "simplex");
 }
-static void *self_simplex(lua_State *L, int idx) { return tosimplex(L, idx); }
 
 /* simplex(C, A, B, ...): the vertices after C are read one by one in C's dimension */
 static const pcl_arg simplex_args[] = {A_SAMEPOINT("C"), A_SAMEPOINT("A"), PCL_END};
 
-static int l_simplex(lua_State *L) {
-    int m = lua_gettop(L), k = m - 1;
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    int n = a[0].n;
+PCL_BODY(l_simplex, a) {
+    int m = lua_gettop(L), k = m - 1, n = a[0].n;
     double v[(PC_MAXDIM + 1) * PC_MAXDIM];
     char msg[160];
     if (k > n && pc_simplex_init_text(PC_EDIM, n, k, NULL, msg, sizeof msg)) return pcl_fail(L, "%s", msg);
     static const pcl_arg vertex = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
-    memcpy(v, a[0].v, sizeof(double) * (size_t)n);
-    memcpy(v + n, a[1].v, sizeof(double) * (size_t)n);
-    for (int i = 3; i <= m; i++) {
-        pcl_val p;
-        pcl_readone(L, i, i, 0, &vertex, n, &p);
+    for (int i = 1; i <= m; i++) {
+        pcl_val p = i < 3 ? a[i - 1] : (pcl_val){0};
+        if (i > 2) pcl_readone(L, i, i, 0, &vertex, n, &p);
         memcpy(v + (i - 1) * n, p.v, sizeof(double) * (size_t)n);
     }
     pc_simplex *s = lua_newuserdatauv(L, pc_simplex_size(n, k), 0);
@@ -46,15 +40,13 @@ static int l_simplex(lua_State *L) {
 /* Numbers #1..#m at the stack indices 2..m + 1 (after the simplex) into x. */
 static void numbers(lua_State *L, int m, const char *label, double *x) {
     for (int i = 0; i < m; i++) {
-        char what[24];
-        pcl_arg num = {.kind = PCL_NUMBER, .name = label};
-        if (label && (lua_type(L, i + 2) != LUA_TNUMBER || !isfinite(lua_tonumber(L, i + 2)))) {
-            snprintf(what, sizeof what, "%s %d", label, i + 1);   /* the label only on the error path */
-            num.name = what;
-        }
+        x[i] = lua_tonumber(L, i + 2);
+        if (lua_type(L, i + 2) == LUA_TNUMBER && isfinite(x[i])) continue;
+        char what[24];                              /* the label only on the error path */
+        snprintf(what, sizeof what, "%s %d", label ? label : "", i + 1);
+        pcl_arg num = {.kind = PCL_NUMBER, .name = label ? what : NULL};
         pcl_val v;
-        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);
-        x[i] = v.x;
+        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);   /* the message */
     }
 }
 
@@ -62,8 +54,7 @@ static void numbers(lua_State *L, int m, const char *label, double *x) {
  * ignored, so that S(S:params(M)) works (params returns the residual last); with
  * coefficients summing to 1 it is also the initial point's barycentric coefficient, which
  * the natural parameters already imply. */
-static int l_call(lua_State *L) {
-    pc_simplex *s = pcl_read(L, NULL, 0);
+PCL_METHOD(l_call, pc_simplex *s, a) {
     int m = lua_gettop(L) - 1, k = s->k;
     if (m != k && m != k + 1)
         return pcl_fail(L, "a %d-simplex takes %d natural parameters, got %d (for barycentric parameters use S:bary)", k, k, m);
@@ -76,37 +67,33 @@ static int l_call(lua_State *L) {
 }
 
 /* S:bary(p, q, ..., r): coefficients of vertices 2..k+1, then of the initial point. */
-static int l_bary(lua_State *L) {
-    pc_simplex *s = pcl_read(L, NULL, 0);
+PCL_METHOD(l_bary, pc_simplex *s, a) {
     int k = s->k, m = lua_gettop(L) - 1;
     if (m != k + 1) return pcl_fail(L, "a %d-simplex takes %d barycentric parameters, got %d", k, k + 1, m);
     double c[PC_MAXDIM + 1];
     numbers(L, m, NULL, c);
-    pcl_value *r = pcl_newvalue(L, s->n);
-    pc_simplex_bary(s, c, r->h);
+    pc_simplex_bary(s, c, pcl_newvalue(L, s->n)->h);
     return 1;
 }
 
 static const pcl_arg params_args[] = {A_POINT("M", 0), PCL_END};
 
 PCL_METHOD(l_params, pc_simplex *s, a) {
-    double p[PC_MAXDIM], res;
+    double p[PC_MAXDIM + 1];   /* the parameters, then the residual */
     if (a[0].n != s->n)
         return pcl_fail(L, "argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", a[0].n, s->n);
-    pc_simplex_params(s, a[0].v, p, &res);
+    pc_simplex_params(s, a[0].v, p, &p[s->k]);
     luaL_checkstack(L, s->k + 1, NULL);
-    for (int i = 0; i < s->k; i++) lua_pushnumber(L, p[i]);
-    lua_pushnumber(L, res);
+    for (int i = 0; i <= s->k; i++) lua_pushnumber(L, p[i]);
     return s->k + 1;
 }
 
-static int l_measure(lua_State *L) {
-    lua_pushnumber(L, pc_simplex_measure(pcl_read(L, NULL, 0)));
+PCL_METHOD(l_measure, pc_simplex *s, a) {
+    lua_pushnumber(L, pc_simplex_measure(s));
     return 1;
 }
 
-static int l_ratio(lua_State *L) {
-    pc_simplex *s = pcl_read(L, NULL, 0);
+PCL_METHOD(l_ratio, pc_simplex *s, a) {
     int k = s->k, n = s->n, m = lua_gettop(L) - 1;
     if (m != k + 1) return pcl_fail(L, "a %d-simplex compares with %d points, got %d", k, k + 1, m);
     double pts[(PC_MAXDIM + 1) * PC_MAXDIM], res;
@@ -117,22 +104,17 @@ static int l_ratio(lua_State *L) {
         if (v.n != n) return pcl_fail(L, "argument #%d is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", i + 1, v.n, n);
         memcpy(pts + i * n, v.v, sizeof(double) * (size_t)n);
     }
-    lua_pushnumber(L, pc_simplex_ratio(s, pts, &res));
-    lua_pushnumber(L, res);
-    return 2;
+    double ratio = pc_simplex_ratio(s, pts, &res);
+    return pcl_push_results(L, 0, "n n", ratio, res);
 }
 
 static int l_index(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "index: not a simplex");
-    if (lua_type(L, 2) != LUA_TNUMBER) {
-        lua_pushvalue(L, 2);
-        lua_rawget(L, lua_upvalueindex(1));
-        return 1;
-    }
     int isint;
     lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
+    if (lua_type(L, 2) != LUA_TNUMBER) lua_rawget(L, lua_upvalueindex(1));    /* a method */
+    else if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
     else lua_pushnil(L);
     return 1;
 }
@@ -154,14 +136,14 @@ static int l_tostring(lua_State *L) {
 }
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, \
-                                      .self = self_simplex, .selftype = "simplex"}
+                                      .self = tosimplex, .selftype = "simplex"}
 static const pcl_fn methods[] = {
     METHOD("S:bary", l_bary, NULL, "S:bary(p, q, ..., r) -> value", "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1)."),
     METHOD("S:params", l_params, params_args, "S:params(M) -> p, q, ..., residual", "The natural parameters of M (least squares off the simplex's flat) and M's distance from that flat."),
     METHOD("S:measure", l_measure, NULL, "S:measure() -> number", "Length, area, volume...: signed when the simplex is full-dimensional."),
     METHOD("S:ratio", l_ratio, NULL, "S:ratio(P1, P2, ...) -> ratio, residual", "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "S", .fn = l_call, .self = self_simplex, .selftype = "simplex", .key = "__call",
+static const pcl_fn call[] = {{.name = "S", .fn = l_call, .self = tosimplex, .selftype = "simplex", .key = "__call",
                                .topic = "S(p, q)", .callname = 1, .sig = "S(p, q, ...) -> point", .help = "The point of simplex S with natural parameters p, q, ..."}, PCL_END};
 static const pcl_fn ctor[] = {{.name = "simplex", .fn = l_simplex, .args = simplex_args, .sig = "simplex(C, A, B, ...) -> S", .help = "A simplex with initial point C (the book's simplex CAB): S(p, q) = (A - C)p + (B - C)q + C."}, PCL_END};
 

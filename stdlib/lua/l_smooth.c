@@ -40,10 +40,8 @@ static const pcl_arg clamp_qb_args[] = {A_NUM("t"), A_NUMOPT("prev", 0, NULL), P
 
 /* the smoothsteps the curve bindings recognise by identity */
 int pcl_smooth_isfunc(lua_CFunction f, int *kind) {
-    if (f == l_sine) *kind = PC_G_SINE;
-    else if (f == l_cubic) *kind = PC_G_CUBIC;
-    else return 0;
-    return 1;
+    *kind = f == l_sine ? PC_G_SINE : PC_G_CUBIC;
+    return f == l_sine || f == l_cubic;
 }
 
 /* The half-spline at idx or NULL; one given the metatable by the debug library is refused. */
@@ -54,8 +52,7 @@ pc_hspline *pcl_tohspline(lua_State *L, int idx) {
 static void *self_hs(lua_State *L, int idx) { return pcl_tohspline(L, idx); }
 
 /* A number strictly between 0 and 1 (the junction t0 of smooth.half). */
-static int open_unit(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int open_unit(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return lua_type(L, idx) == LUA_TNUMBER && out->x > 0 && out->x < 1;
 }
@@ -63,11 +60,8 @@ static int open_unit(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 /* g(t) with the extrapolation domain of a fractional degree: t^n needs t >= 0, (1 - t)^m
  * needs t <= 1 unless the degree is whole. */
 static int eval_at(lua_State *L, const pc_hspline *h, double t, int k) {
-    if (pc_hspline_check(h, t) != PC_OK) {
-        int low = t < 0;
-        return pcl_argfail(L, k, "must be %s (the degree %s = %s is fractional, so the formula does not extrapolate past %s)",
-                           low ? "at least 0" : "at most 1", low ? "n" : "m", pcl_pushnum(L, low ? h->n : h->m), low ? "0" : "1");
-    }
+    char msg[200];
+    if (pc_hspline_check_text(h, t, msg, sizeof msg)) return pcl_argfail(L, k, "%s", msg);
     return push_value(L, t, pc_hspline_eval(h, t));
 }
 
@@ -75,10 +69,9 @@ static int eval_at(lua_State *L, const pc_hspline *h, double t, int k) {
  * Degrees in the hundreds make t0^(n-1) underflow: the coefficients would be inf and NaN. */
 static int make(lua_State *L, double n, double m, double t0, const pcl_val *t, int k) {
     pc_hspline h;
-    if (pc_hspline_init(&h, n, m, t0) != PC_OK) {
-        const char *tn = pcl_pushnum(L, n), *tm = pcl_pushnum(L, m), *tt = pcl_pushnum(L, t0);
-        return pcl_fail(L, "the degrees n = %s, m = %s are too large for t0 = %s: the coefficients c1, c2 overflow a double", tn, tm, tt);
-    }
+    char msg[200];
+    if (pc_hspline_init(&h, n, m, t0) != PC_OK && pc_hspline_init_text(n, m, t0, msg, sizeof msg))
+        return pcl_fail(L, "%s", msg);
     if (t->present) return eval_at(L, &h, t->x, k);
     pc_hspline *g = lua_newuserdatauv(L, sizeof *g, 0);
     *g = h;

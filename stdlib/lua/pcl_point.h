@@ -12,13 +12,11 @@ typedef struct {
     double h[];     /* h[0..n-1] weighted coordinates, h[n] the weight */
 } pcl_value;
 
-/* Push the point metatable. */
 void pcl_push_point_mt(lua_State *L);
 /* The value at idx, or NULL if it is not a point/vector. */
 pcl_value *pcl_tovalue(lua_State *L, int idx);
 /* Push a new value of dimension n (its doubles uninitialised). */
 pcl_value *pcl_newvalue(lua_State *L, int n);
-
 /* Push a point (weight 1) or a vector (weight 0) of dimension n. */
 void pcl_pushpoint(lua_State *L, int n, const double *x);
 void pcl_pushvector(lua_State *L, int n, const double *x);

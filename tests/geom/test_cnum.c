@@ -23,6 +23,10 @@ static void test_ops(void **state) {
     NEAR(r.re, 5, 0); NEAR(r.im, 5, 0);
     assert_int_equal(pc_cnum_arith('/', z, C(0, 1), &r), PC_OK);   /* (1 + 2i)/i = 2 - i */
     NEAR(r.re, 2, 1e-15); NEAR(r.im, -1, 1e-15);
+    assert_int_equal(pc_cnum_arith('u', z, z, &r), PC_OK);   /* -(1 + 2i) */
+    NEAR(r.re, -1, 0); NEAR(r.im, -2, 0);
+    assert_int_equal(pc_cnum_arith('u', C(0, 0), C(0, 0), &r), PC_OK);   /* -0: the signs flip */
+    assert_true(signbit(r.re) && signbit(r.im));
     assert_int_equal(pc_cnum_arith('?', z, w, &r), PC_EDOMAIN);
 }
 

@@ -150,6 +150,24 @@ static void test_locations(void **state) {
     assert_string_equal(msg, "pset: argument #1 is a vector V(1, 0) (weight 0), not a point: the coefficients of a "
                              "point equation must sum to 1 for a point and to 0 for a vector (the membership "
                              "condition); to place a vector, add it to a point, e.g. P(0, 0) + v");
+    double xy[2] = {0, 0};
+    assert_int_equal(pc_drawn(2, (double[]){2, 4, 2}, PC_OK, xy), PC_EWEIGHT);
+    pc_drawn_text("pset: argument #1", PC_EWEIGHT, 2, (double[]){2, 4, 2}, msg, sizeof msg);
+    assert_true(strncmp(msg, "pset: argument #1 has weight 2, so it is neither", 48) == 0);
+    assert_int_equal(pc_drawn(2, (double[]){INFINITY, 4, 1}, PC_OK, xy), PC_ENONFINITE);   /* an overflow */
+    pc_drawn_text("pset: self", PC_ENONFINITE, 2, (double[]){INFINITY, 4, 1}, msg, sizeof msg);
+    assert_string_equal(msg, "pset: self has infinite or NaN coordinates");
+    assert_int_equal(pc_drawn(2, (double[]){3, 4, 1}, PC_OK, xy), PC_OK);
+    assert_true(xy[0] == 3 && xy[1] == 4);
+    assert_int_equal(pc_drawn(3, (double[]){1, 2, 3, 1}, PC_EARG, xy), PC_EDIM);   /* no camera */
+    pc_drawn_text("line: argument #3", PC_EDIM, 3, (double[]){1, 2, 3, 1}, msg, sizeof msg);
+    assert_string_equal(msg, "line: argument #3 must be a 2-D point, got the 3-D P(1, 2, 3)");
+    assert_int_equal(pc_drawn(3, (double[]){1, 2, 3, 1}, PC_IMPROPER, xy), PC_IMPROPER);
+    pc_drawn_text("line: argument #1", PC_IMPROPER, 3, (double[]){1, 2, 3, 1}, msg, sizeof msg);
+    assert_string_equal(msg, "line: argument #1 (P(1, 2, 3)) projects to infinity (it lies in the camera's vanishing plane)");
+    xy[0] = 7;
+    assert_int_equal(pc_drawn(3, (double[]){1, 2, 3, 1}, PC_OK, xy), PC_OK);   /* projected: xy kept */
+    assert_true(xy[0] == 7);
     pc_coord_text(2, (double[]){1, 2, 1}, 2, "z", msg, sizeof msg);
     assert_string_equal(msg, "P(1, 2) is 2-D: it has no coordinate .z");
     pc_coord_text(2, (double[]){2, 4, 2}, 0, NULL, msg, sizeof msg);

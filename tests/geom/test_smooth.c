@@ -109,6 +109,11 @@ static void test_hspline(void **state) {
     assert_int_equal(pc_hspline_init(&h, 2, -1, 0.5), PC_EDOMAIN);
     assert_int_equal(pc_hspline_init(&h, NAN, 2, 0.5), PC_ENONFINITE);
     assert_true(h.c1 == 0);   /* untouched */
+    /* degrees in the hundreds: t0^(n-1) underflows, c1 would be inf */
+    assert_int_equal(pc_hspline_init(&h, 800, 2, 0.1), PC_EDOMAIN);
+    char msg[200];
+    assert_true(pc_hspline_init_text(800, 2, 0.1, msg, sizeof msg) > 0);
+    assert_string_equal(msg, "the degrees n = 800, m = 2 are too large for t0 = 0.1: the coefficients c1, c2 overflow a double");
 }
 
 /* Outside [0, 1] the pieces extrapolate (example 5 shows the cubic doing so); with a
@@ -127,6 +132,15 @@ static void test_domain(void **state) {
     assert_int_equal(pc_hspline_check(&h, -2), PC_OK);
     NEAR(pc_hspline_eval(&h, -2), h.c1 * 4, 1e-15);
     assert_int_equal(pc_hspline_check(&h, 1 + 1e-12), PC_EDOMAIN);
+    char msg[200] = "untouched";
+    assert_int_equal(pc_hspline_check_text(&h, 1, msg, sizeof msg), 0);
+    assert_string_equal(msg, "untouched");
+    assert_true(pc_hspline_check_text(&h, 1.5, msg, sizeof msg) > 0);
+    assert_string_equal(msg, "must be at most 1 (the degree m = 3.5 is fractional, so the formula does not extrapolate past 1)");
+    assert_int_equal(pc_hspline_init(&h, 2.5, 2, 0.5), PC_OK);
+    assert_true(pc_hspline_check_text(&h, -0.25, msg, sizeof msg) > 0);
+    assert_string_equal(msg, "must be at least 0 (the degree n = 2.5 is fractional, so the formula does not extrapolate past 0)");
+    assert_int_equal(pc_hspline_init(&h, 2, 3.5, 0.5), PC_OK);
     pc_gfun g = {.kind = PC_G_HALF, .h = h};
     assert_int_equal(pc_gfun_check(&g, 2), PC_EDOMAIN);
     g.kind = PC_G_CUBIC;
