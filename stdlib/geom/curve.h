@@ -128,6 +128,9 @@ pc_curve *pc_curve_func_breaks(int dim, double t0, double t1, int closed, int nb
  * dim+1).  t outside the domain extrapolates the end piece (a Bezier's polynomial, the
  * B-spline's end span).  Status from a FUNC callback, or PC_ENONFINITE. */
 int pc_curve_eval_h(const pc_curve *c, double t, int order, double *out);
+/* The value at t as c(t) shows it (dim + 1 doubles): a point of weight 1 (divided by the
+ * weight), or a vector (weight exactly 0, the coordinates as they are).  pc_curve_eval_h's status. */
+int pc_curve_value(const pc_curve *c, double t, double *out);
 /* The Cartesian point at t (dim doubles).  PC_IMPROPER if the weight is 0 (out is then the
  * direction, the homogeneous coordinates as they are). */
 int pc_curve_eval(const pc_curve *c, double t, double *out);

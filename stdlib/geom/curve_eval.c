@@ -103,6 +103,15 @@ static int func_diff(const pc_curve *c, double t, int order, double *out) {
 }
 
 /* --- the value and its derivatives ------------------------------------------------------- */
+int pc_curve_value(const pc_curve *c, double t, double *out) {
+    int st = pc_curve_eval_h(c, t, 0, out);
+    if (st != PC_OK) return st;
+    double w = out[c->dim];
+    for (int k = 0; w != 0 && k < c->dim; k++) out[k] /= w;
+    out[c->dim] = w != 0;
+    return PC_OK;
+}
+
 int pc_curve_eval_h(const pc_curve *c, double t, int order, double *out) {
     if (!c || !out) return PC_EARG;
     if (order < 0 || order > 2) return PC_EDOMAIN;

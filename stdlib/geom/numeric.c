@@ -1,6 +1,8 @@
 /* Oresme lambda-functions and bisection (stepanov_examples.md examples 30, 31). */
 #include "numeric.h"
 #include <math.h>
+#include <stdio.h>
+#include "names.h"
 
 int pc_oresme_fill(double lambda, int m, double y0, double y1, double *y) {
     if (m < 0 || m > PC_ORESME_MAXLEVEL) return PC_EDOMAIN;
@@ -177,4 +179,40 @@ int pc_newton(int n, pc_system_fn f, void *ud, double *x, double tol, int maxit,
         *worst = w;
     }
     return PC_ENOCONVERGE;
+}
+
+/* f with its calls watched: the last x and f(x), and f(a), f(b) (the first two calls) */
+typedef struct {
+    pc_scalar_fn f;
+    void *ud;
+    int calls;
+    double x, y, ends[2];
+} watched_fn;
+
+static double watch(double x, void *ud) {
+    watched_fn *w = ud;
+    w->x = x;
+    w->y = w->f(x, w->ud);
+    if (w->calls < 2) w->ends[w->calls] = w->y;
+    w->calls++;
+    return w->y;
+}
+
+int pc_bisect_why(pc_scalar_fn f, void *ud, double a, double b, double tol, double *x, int *iters,
+                  char *why, size_t n) {
+    watched_fn w = {.f = f, .ud = ud};
+    int st = pc_bisect(watch, &w, a, b, tol, x, iters);
+    char t[4][40];
+    why[0] = 0;
+    if (st == PC_ENOBRACKET)
+        snprintf(why, n, "f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): the interval "
+                 "brackets no root",
+                 pc_num_text(a, t[0], 40), pc_num_text(w.ends[0], t[1], 40), pc_num_text(b, t[2], 40),
+                 pc_num_text(w.ends[1], t[3], 40));
+    else if (st == PC_ENONFINITE && !w.calls)
+        snprintf(why, n, "the ends a and b must be finite numbers");
+    else if (st == PC_ENONFINITE)
+        snprintf(why, n, "f(%s) must return a finite number, got %s", pc_num_text(w.x, t[0], 40),
+                 pc_num_text(w.y, t[1], 40));
+    return st;
 }

@@ -3,6 +3,7 @@
 #ifndef PC_NUMERIC_H
 #define PC_NUMERIC_H
 
+#include <stddef.h>
 #include "status.h"
 
 #define PC_ORESME_MAXLEVEL 24
@@ -25,6 +26,11 @@ double pc_oresme_at(const double *y, int m, double t);
  * *iters (if not NULL) gets the number of midpoints evaluated. */
 typedef double (*pc_scalar_fn)(double x, void *ud);
 int pc_bisect(pc_scalar_fn f, void *ud, double a, double b, double tol, double *x, int *iters);
+/* pc_bisect with its failures worded into why (size n; "" on success), as the binding shows
+ * them: "f(a) and f(b) have the same sign (f(0) = 1, f(1) = 2): the interval brackets no root",
+ * "f(1) must return a finite number, got inf" (the x where f failed), or non-finite ends. */
+int pc_bisect_why(pc_scalar_fn f, void *ud, double a, double b, double tol, double *x, int *iters,
+                  char *why, size_t n);
 
 /* --- small nonlinear systems and minimisation (Korotky's Ferguson splines, eq. (23), and the
  * elastic reference curve) ---------------------------------------------------------------- */

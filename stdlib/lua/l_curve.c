@@ -139,7 +139,8 @@ static int c_gc(lua_State *L) {
 /* The parameters of n nodes given as option key (or argument #k), checked by the core. */
 static const double *params(lua_State *L, const pcl_val *v, int k, const char *key, int n, int any) {
     char why[160];
-    if (!v->present || pc_params_why(n, v->n, v->list, any, why, sizeof why) == PC_OK) return v->present ? v->list : NULL;
+    if (!v->present) return NULL;
+    if (pc_params_why(n, v->n, v->list, any, why, sizeof why) == PC_OK) return v->list;
     if (key) pcl_keyfail(L, key, "%s", why);
     pcl_argfail(L, k, "%s", why);
     return NULL;
@@ -182,7 +183,8 @@ PCL_BODY(l_bspline, a) {
     return pcl_push_made(L, pc_curve_bspline(a[0].dim, (int)a[1].x, m, a[0].list, kk, knots, &st), &st, NULL);
 }
 
-static const pcl_arg hermite_keys[] = {A_VECTORS("tin"), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN}, PCL_END};
+static const pcl_arg hermite_keys[] = {A_VECTORS("tin"), A_NUMBERS("u", 0, 0), {.name = "closed", .kind = PCL_BOOLEAN},
+                                       PCL_END};
 static const pcl_arg hermite_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                        A_VECTORS("tangents"), A_OPTIONS("opts", hermite_keys), PCL_END};
 PCL_BODY(l_hermite, a) {   /* points, tangents, opts, tin, u, closed */
@@ -195,8 +197,8 @@ PCL_BODY(l_hermite, a) {   /* points, tangents, opts, tin, u, closed */
 }
 
 static const char *const ENDS[] = {"natural", "clamped", "periodic", NULL};
-static const pcl_arg spline_keys[] = {A_ENUM("ends", ENDS), {.name = "d0", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
-                                      {.name = "d1", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM}, A_NUMBERS("u", 0, 0), PCL_END};
+static const pcl_arg spline_keys[] = {A_ENUM("ends", ENDS), A_SAMEVECTOR("d0"), A_SAMEVECTOR("d1"),
+                                      A_NUMBERS("u", 0, 0), PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
 PCL_BODY(l_cubic_spline, a) {   /* points, opts, ends, d0, d1, u */
@@ -279,7 +281,8 @@ static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed
 }
 
 static const pcl_arg spline2_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("a"), A_SAMEPOINT("B"), A_SAMEVECTOR("b"),
-    {.name = "g", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_g, .expect = "a smoothstep (a function of t)"}, PCL_END};
+    {.name = "g", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_g, .expect = "a smoothstep (a function of t)"},
+    PCL_END};
 PCL_BODY(l_spline2, a) {
     int d = a[0].n, lua;
     pc_gfun g;
@@ -319,7 +322,8 @@ static int l_stroke_raw(lua_State *L) {
         off += len;
     }
     pc_gfun g;
-    if (!to_g(L, 11, PC_G_HALF, &g, &lua)) return pcl_error(L, "stroke: option 'g' must be a smoothstep (a function of t), got %s", pcl_shown(L, 11));
+    if (!to_g(L, 11, PC_G_HALF, &g, &lua))
+        return pcl_error(L, "stroke: option 'g' must be a smoothstep (a function of t), got %s", pcl_shown(L, 11));
     int np = pc_stroke_npieces(k, closed), bad;
     pc_stroke_spec spec = {.d = d, .nnodes = k, .closed = closed, .nodes = arr[0], .ein = arr[1], .eout = arr[2],
                            .rin = arr[3], .rout = arr[4], .n = arr[5], .m = arr[6], .t0 = arr[7]};
@@ -350,28 +354,15 @@ PCL_BODY(l_sphdir, a) {
 
 /* ---- evaluation methods ------------------------------------------------------------------------ */
 
-/* the value at t of argument #1, or the error: a stroke's piece past its half-spline's reach */
+/* the value at t of argument #1 as c(t) shows it (pc_curve_value), or the error: a stroke's
+ * piece past its half-spline's reach */
 static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
-    int st = pc_curve_eval_h(u->c, t, 0, h), i;
+    int st = pc_curve_value(u->c, t, h), i;
     double s;
     char why[200];
     const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(u->c, t, &i, &s) : NULL;
     if (pc) pcl_argfail(L, 1, "%s", pc_half_why(pc, s, i, u->c->t1, why, sizeof why));
     if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
-}
-
-/* c(t): the value at t, a point (a vector where the curve is at infinity; a rational curve's
- * value is normalised to weight 1) */
-static void push_h(lua_State *L, int d, const double *h) {
-    pcl_value *v = pcl_newvalue(L, d);
-    double w = h[d];
-    if (w != 0) {
-        for (int k = 0; k < d; k++) v->h[k] = h[k] / w;
-        v->h[d] = 1;
-    } else {
-        memcpy(v->h, h, sizeof(double) * (size_t)d);
-        v->h[d] = 0;
-    }
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
@@ -381,12 +372,11 @@ static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x)) || pcl_isequation(L, idx);
 }
-static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or a scalar equation"}, PCL_END};
+static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t,
+                                   .expect = "a finite number or a scalar equation"}, PCL_END};
 PCL_METHOD(c_call, lcurve *u, a) {
     if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
-    double h[PC_MAXDIM + 1];
-    eval_at(L, u, a[0].x, h);
-    push_h(L, u->c->dim, h);
+    eval_at(L, u, a[0].x, pcl_newvalue(L, u->c->dim)->h);   /* a point, or a vector at infinity */
     return 1;
 }
 
@@ -395,7 +385,7 @@ PCL_METHOD(c_xy, lcurve *u, a) {
     eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
     if (h[d] == 0) return pcl_check(L, PC_IMPROPER, pc_curve_why);
-    for (int k = 0; k < d; k++) lua_pushnumber(L, h[k] / h[d]);
+    for (int k = 0; k < d; k++) lua_pushnumber(L, h[k]);
     return d;
 }
 
@@ -408,11 +398,13 @@ static int read_order(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
         return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
     out->x = s ? 1 : lua_tonumber(L, idx);
     out->n = s ? (s[0] == 'l' ? -1 : 1) : 0;
-    return s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 && out->x <= PC_CURVE_MAXDEG);
+    return s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 &&
+                 out->x <= PC_CURVE_MAXDEG);
 }
 static const char *const SIDES[] = {"left", "right", NULL};
-static const pcl_arg deriv_args[] = {A_NUM("t"), {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_order,
-    .expect = "a whole number from 1 to 64, or \"left\" / \"right\""},
+static const pcl_arg deriv_args[] = {A_NUM("t"),
+    {.name = "order", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_order,
+     .expect = "a whole number from 1 to 64, or \"left\" / \"right\""},
     {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
 PCL_METHOD(c_deriv, lcurve *u, a) {
     int order = a[1].present ? (int)a[1].x : 1, side = a[2].present ? (a[2].n ? 1 : -1) : a[1].n;
@@ -426,7 +418,8 @@ PCL_METHOD(c_deriv, lcurve *u, a) {
 
 /* c:monomial([piece]): the power-basis coefficients of a piece in the curve's parameter:
  * {{a0, a1, ...} of x, {...} of y, ...}, and w = {...} for a rational curve */
-static const pcl_arg piece_opt[] = {{.name = "piece", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"}, PCL_END};
+static const pcl_arg piece_opt[] = {{.name = "piece", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"},
+                                    PCL_END};
 PCL_METHOD(c_monomial, lcurve *u, a) {
     const pc_curve *c = u->c;
     if (c->kind == PC_CURVE_FUNC)
@@ -583,8 +576,8 @@ PCL_METHOD(c_map, lcurve *u, a) {
 
 /* c:flatten([tol [, map]]) -> a list of polylines (lists of 2-D points) within tol of the curve
  * in its own units (default 1e-3); map projects a curve of another dimension to the plane. */
-static const pcl_arg flatten_args[] = {{.name = "tol", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1e-3, .shown = "1e-3"},
-                                       {.name = "map", .kind = PCL_MAP, .flags = PCL_OPT}, PCL_END};
+static const pcl_arg flatten_args[] = {{.name = "tol", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1e-3,
+                                        .shown = "1e-3"}, {.name = "map", .kind = PCL_MAP, .flags = PCL_OPT}, PCL_END};
 PCL_METHOD(c_flatten, lcurve *u, a) {
     pc_map *f = a[1].obj;
     if (f && (f->nin != u->c->dim || f->nout != 2))
@@ -634,20 +627,20 @@ static int c_tostring(lua_State *L) {
     return 1;
 }
 
-#define CTOR(nm, f, a, text) {.name = nm, .fn = f, .args = a, .result = "curve", .help = text}
 static const pcl_fn ctors[] = {
     {.name = "bezier", .fn = l_bezier, .args = bezier_args, .sig = "bezier{P0, P1, ..., Pn} -> curve", .help = "The Bezier curve of degree n over [0, 1] (2 to 65 points); weighted points w*P make it rational (a conic), vectors are control points at infinity."},
     {.name = "bspline", .fn = l_bspline, .args = bspline_args, .sig = "bspline(points, degree [, \"open\"|\"uniform\"|\"periodic\"|knots]) -> curve", .help = "The B-spline (NURBS with weighted points) of that degree; open knots by default, or a non-decreasing list of points + degree + 1 knots."},
     {.name = "hermite", .fn = l_hermite, .args = hermite_args, .sig = "hermite(points, tangents [, {tin = {...}, u = {...}, closed = false}]) -> curve", .help = "Piecewise cubic Hermite through the points with these derivatives (tin: the arriving ones, for corners); u: the parameters of the nodes."},
     {.name = "cubic_spline", .fn = l_cubic_spline, .args = spline_args, .sig = "cubic_spline(points [, {ends = \"natural\"|\"clamped\"|\"periodic\", d0 = V, d1 = V, u = {...}}]) -> curve", .help = "The C2 cubic spline through the points (parameters: accumulated chord lengths unless u is given)."},
-    CTOR("interpolate", l_interpolate, interpolate_args, "The polynomial curve of degree n - 1 through n points (2 to 65) at the given parameters (default evenly spaced in [0, 1])."),
-    CTOR("curve", l_curve, curve_args, "A Lua function t -> point (or numbers) over [t0, t1] as a curve: it flattens, measures and draws like any other."),
+    PCL_FN("interpolate", l_interpolate, interpolate_args, "curve", "The polynomial curve of degree n - 1 through n points (2 to 65) at the given parameters (default evenly spaced in [0, 1])."),
+    PCL_FN("curve", l_curve, curve_args, "curve", "A Lua function t -> point (or numbers) over [t0, t1] as a curve: it flattens, measures and draws like any other."),
     {.name = "spline2", .fn = l_spline2, .args = spline2_args, .result = "curve", .help = "The curve from A with direction a to B with direction b, blended by the smoothstep g (default smooth.cubic): Stepanov's example 5."},
     {.name = "fourier", .fn = l_fourier, .args = fourier_args, .sig = "fourier({P1, P2, ..., P2n}) -> curve", .help = "The closed curve through 2n points by a finite Fourier series (example 12), t in [0, 2 pi]."},
     PCL_FN("sphdir", l_sphdir, sphdir_args, "vector", "The unit vector of longitude u1 and latitude u2 (example 33)."),
     PCL_END};
 
-#define METHOD(nm, f, a, res, text) {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_curve, .selftype = "curve"}
+#define METHOD(nm, f, a, res, text) \
+    {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_curve, .selftype = "curve"}
 static const pcl_fn methods[] = {
     METHOD("c:xy", c_xy, t_arg, "x, y", "The coordinates of the point at t as numbers."),
     METHOD("c:eval", c_call, t_or_eq, "point", "The point at t, as c(t)."),

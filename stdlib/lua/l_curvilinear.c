@@ -124,6 +124,7 @@ PCL_BODY(l_oresme, a) {
 
 /* ---- bisection --------------------------------------------------------------------------------- */
 
+/* f(x) for the core, which words the failures of finite numbers (pc_bisect_why) */
 static double call_f(double x, void *ud) {
     lua_State *L = ud;
     lua_pushvalue(L, 1);
@@ -131,14 +132,8 @@ static double call_f(double x, void *ud) {
     lua_call(L, 1, 1);
     int isnum;
     double v = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) {
-        const char *type = luaL_typename(L, -1);
-        pcl_fail(L, "f(%s) must return a number, got %s", pcl_pushnum(L, x), type);
-    }
-    if (!isfinite(v)) {   /* name the x (the core would only say that some f(x) was not finite) */
-        const char *tx = pcl_pushnum(L, x), *tv = pcl_pushnum(L, v);
-        pcl_fail(L, "f(%s) must return a finite number, got %s", tx, tv);
-    }
+    const char *type = luaL_typename(L, -1);
+    if (!isnum) pcl_fail(L, "f(%s) must return a number, got %s", pcl_pushnum(L, x), type);
     lua_pop(L, 1);
     return v;
 }
@@ -148,18 +143,10 @@ static const pcl_arg bisect_args[] = {{.name = "f", .kind = PCL_CALLABLE}, A_NUM
 PCL_BODY(l_bisect, a) {
     double x;
     int iters;
-    int st = pc_bisect(call_f, L, a[1].x, a[2].x, a[3].x, &x, &iters);
-    if (st == PC_ENOBRACKET) {
-        double fa = call_f(a[1].x, L), fb = call_f(a[2].x, L);
-        const char *ta = pcl_pushnum(L, a[1].x), *tfa = pcl_pushnum(L, fa);
-        const char *tb = pcl_pushnum(L, a[2].x), *tfb = pcl_pushnum(L, fb);
-        return pcl_fail(L, "f(a) and f(b) have the same sign (f(%s) = %s, f(%s) = %s): the interval "
-                           "brackets no root", ta, tfa, tb, tfb);
-    }
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "f returned NaN or an infinity");
-    lua_pushnumber(L, x);
-    lua_pushinteger(L, iters);
-    return 2;
+    char why[200];
+    if (pc_bisect_why(call_f, L, a[1].x, a[2].x, a[3].x, &x, &iters, why, sizeof why) != PC_OK)
+        return pcl_fail(L, "%s", why);
+    return pcl_push_results(L, 0, "n i", x, iters);
 }
 
 /* ---- numeric helpers for the Lua side -------------------------------------------------------- */

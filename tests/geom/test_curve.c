@@ -1069,8 +1069,29 @@ static void test_frame(void **state) {
     pc_curve_release(c);
 }
 
+/* c(t) as the binding shows it: a rational value normalised to weight 1, or a vector at infinity */
+static void test_curve_value(void **state) {
+    (void)state;
+    int st;
+    double cp[] = {0, 0, 1, 2, 2, 2, 2, 0, 1}, out[3];
+    pc_curve *c = pc_curve_bezier(2, 3, cp, &st);
+    assert_int_equal(pc_curve_value(c, .5, out), PC_OK);   /* (1.5, 1, 1.5) / 1.5 */
+    NEAR(out[0], 1, 1e-15);
+    NEAR(out[1], 2.0 / 3, 1e-15);
+    assert_true(out[2] == 1);
+    pc_curve_release(c);
+    double line[] = {0, 0, 1, 2, 4, -1};
+    c = pc_curve_bezier(2, 2, line, &st);
+    assert_int_equal(pc_curve_value(c, .5, out), PC_OK);   /* (1, 2, 0): the direction */
+    NEAR(out[0], 1, 1e-15);
+    NEAR(out[1], 2, 1e-15);
+    assert_true(out[2] == 0 && !signbit(out[2]));
+    pc_curve_release(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_curve_value),
         cmocka_unit_test(test_bezier_bernstein), cmocka_unit_test(test_bezier_buimov),
         cmocka_unit_test(test_bspline_is_bezier), cmocka_unit_test(test_bspline_buimov),
         cmocka_unit_test(test_knot_insertion),   cmocka_unit_test(test_split),

@@ -5,6 +5,7 @@
 #include <cmocka.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "numeric.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
@@ -87,10 +88,35 @@ static void test_bisect(void **state) {
     assert_int_equal(pc_bisect(step, NULL, 0, INFINITY, .001, &x, NULL), PC_ENONFINITE);
 }
 
+static double inf_past(double x, void *ud) {
+    (void)ud;
+    return x > .3 ? INFINITY : -1;
+}
+
+static void test_bisect_why(void **state) {
+    (void)state;
+    double c = 1, x;
+    int it;
+    char why[200];
+    assert_int_equal(pc_bisect_why(cubic, &c, -c, 0, .001, &x, &it, why, sizeof why), PC_OK);
+    NEAR(x, -0.6823278038280193, .001);
+    assert_string_equal(why, "");
+    assert_int_equal(pc_bisect_why(cubic, &c, 0, 1.5, .001, &x, NULL, why, sizeof why), PC_ENOBRACKET);
+    assert_string_equal(why, "f(a) and f(b) have the same sign (f(0) = 1, f(1.5) = 5.875): "
+                             "the interval brackets no root");
+    assert_int_equal(pc_bisect_why(inf_past, NULL, 0, 1, .001, &x, NULL, why, sizeof why), PC_ENONFINITE);
+    assert_string_equal(why, "f(1) must return a finite number, got inf");
+    assert_int_equal(pc_bisect_why(step, NULL, -.5, 1, .001, &x, NULL, why, sizeof why), PC_OK);
+    NEAR(x, .5, .001);
+    assert_int_equal(pc_bisect_why(step, NULL, NAN, 1, .001, &x, NULL, why, sizeof why), PC_ENONFINITE);
+    assert_string_equal(why, "the ends a and b must be finite numbers");
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_oresme),
         cmocka_unit_test(test_bisect),
+        cmocka_unit_test(test_bisect_why),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
