@@ -8,8 +8,10 @@
  * programs are copies, so curves outlive nothing.  The math functions are wrapped once for
  * the whole module: a number goes straight to Lua's own function. */
 #include "pcl_args.h"
+#include "pcl_core.h"
 #include "pcl_expr.h"
 #include "pcl_point.h"
+#include "pcl_tagged.h"
 #include "expr.h"
 #include "konop_expanded.h"   /* the book's printed form of expanded coordinates */
 
@@ -46,36 +48,27 @@ static pc_expr_pool *pool(lua_State *L) {
     return *pp;
 }
 
-static int genuine_eq(lua_State *L, int idx, const leq *e) {
-    return lua_rawlen(L, idx) == sizeof *e && e->self == PCL_SELF_TAG(e, &EQ_TAG);
-}
-
-static leq *toeq(lua_State *L, int idx) {
-    leq *e = luaL_testudata(L, idx, EQ_MT);
-    return pcl_genuine(L, idx, e, !e || genuine_eq(L, idx, e), "equation");
-}
+static leq *toeq(lua_State *L, int idx) { return pcl_tagged(L, idx, &EQ_TAG, EQ_MT, sizeof(leq), 0); }
 
 /* Samples: exactly the header and n values of max(dim, 1) numbers (pcl.h: forged userdata). */
 static lsamples *tosamples(lua_State *L, int idx) {
-    lsamples *s = luaL_testudata(L, idx, SAMPLES_MT);
+    lsamples *s = pcl_tagged(L, idx, &SAMPLES_TAG, SAMPLES_MT, sizeof *s, PCL_TAG_ATLEAST);
     size_t len = lua_rawlen(L, idx);
-    int ok = !s || (len >= sizeof *s && s->self == PCL_SELF_TAG(s, &SAMPLES_TAG) && s->dim >= 0 &&
-                    s->dim <= PC_MAXDIM && s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
+    int ok = !s || (s->dim >= 0 && s->dim <= PC_MAXDIM && s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
                     len == sizeof *s + sizeof(double) * (size_t)s->n * (size_t)(s->dim ? s->dim : 1));
-    return pcl_genuine(L, idx, s, ok, "samples");
+    return pcl_genuine(L, idx, s, ok, SAMPLES_MT);
 }
 
 int pcl_isequation(lua_State *L, int idx) { return toeq(L, idx) != NULL; }
 
 static void push_eq(lua_State *L, int id) {
-    leq *e = lua_newuserdatauv(L, sizeof *e, 0);
-    *e = (leq){PCL_SELF_TAG(e, &EQ_TAG), id, NULL};
-    luaL_setmetatable(L, EQ_MT);
+    leq *e = pcl_tagged_new(L, sizeof *e, &EQ_TAG, EQ_MT);
+    *e = (leq){e->self, id, NULL};
 }
 
 static int eq_gc(lua_State *L) {
-    leq *e = luaL_testudata(L, 1, EQ_MT);
-    if (e && genuine_eq(L, 1, e) && e->prog) {   /* never a forged one */
+    leq *e = pcl_tagged(L, 1, &EQ_TAG, EQ_MT, sizeof *e, PCL_TAG_GC);   /* never a forged one */
+    if (e) {
         pc_expr_prog_free(e->prog);
         e->prog = NULL;
     }
@@ -252,29 +245,24 @@ static void read_named(lua_State *L, int n, const int *in, pcl_arg key, pcl_arg 
 /* M(t [, s ...]) with values in the order of M.params, or M{t = ..., s = ...} */
 static int eq_call(lua_State *L) {
     leq *e = toeq(L, 1);                  /* a __call: always an equation (the hot path) */
-    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(pool(L), e->id, in), given = lua_gettop(L) - 1;
+    pc_expr_pool *p = pool(L);
+    int in[PC_EXPR_MAXPARAM], n = pc_expr_param_list(p, e->id, in), given = lua_gettop(L) - 1;
+    int named = lua_istable(L, 2), dim = pc_expr_dim(p, e->id);
     double x[PC_EXPR_MAXPARAM], h[PC_MAXDIM + 1];
     char why[512];
-    pc_expr_pool *p = pool(L);
-    if (lua_istable(L, 2)) {
-        pcl_arg keys[PC_EXPR_MAXPARAM + 1];
-        pcl_val v[PC_EXPR_MAXPARAM] = {0};
-        read_named(L, n, in, (pcl_arg){.kind = PCL_NUMBER, .flags = PCL_REQ}, keys, v);
-        for (int j = 0; j < n; j++) x[j] = v[j].x;
-    } else if (given != n) {
+    pcl_arg keys[PC_EXPR_MAXPARAM + 1];
+    pcl_val v[PC_EXPR_MAXPARAM] = {0};
+    if (named) read_named(L, n, in, (pcl_arg){.kind = PCL_NUMBER, .flags = PCL_REQ}, keys, v);
+    else if (given != n)
         return pcl_fail(L, "needs %d parameter value%s (%s), got %d", n, n == 1 ? "" : "s", names_of(L, n, in), given);
-    }
-    for (int j = 0; j < n && !lua_istable(L, 2); j++) {
+    for (int j = 0; j < n; j++) {
         pcl_arg num = {.name = pc_expr_param_name(p, in[j]), .kind = PCL_NUMBER};
-        pcl_val v;
-        x[j] = lua_tonumber(L, j + 2);
-        if (lua_type(L, j + 2) != LUA_TNUMBER || !isfinite(x[j])) pcl_readone(L, j + 2, j + 1, 0, &num, 0, &v);
+        x[j] = named ? v[j].x : lua_tonumber(L, j + 2);
+        if (!named && (lua_type(L, j + 2) != LUA_TNUMBER || !isfinite(x[j])))
+            pcl_readone(L, j + 2, j + 1, 0, &num, 0, v);
     }
     if (pc_expr_value_at(p, prog_of(L, e), n, in, x, h, why, sizeof why) != PC_OK) return pcl_fail(L, "%s", why);
-    int dim = pc_expr_dim(p, e->id);
-    if (dim) memcpy(pcl_newvalue(L, dim)->h, h, sizeof(double) * (size_t)(dim + 1));
-    else lua_pushnumber(L, h[0]);
-    return 1;
+    return pcl_push_packed(L, dim, dim ? "w" : "n", h);
 }
 
 /* A value of M:with{s = ...}: a number or a scalar equation, its node into out->n. */
@@ -377,9 +365,8 @@ PCL_METHOD(eq_sample, leq *e, a) {
             return pcl_argfail(L, 4, "must be samples of %d %d-D values (from M:sample), got %s", (int)n, dim, luaL_tolstring(L, 5, NULL));
         lua_pushvalue(L, 5);
     } else {
-        s = lua_newuserdatauv(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, 0);
-        *s = (lsamples){PCL_SELF_TAG(s, &SAMPLES_TAG), n, dim};
-        luaL_setmetatable(L, SAMPLES_MT);
+        s = pcl_tagged_new(L, sizeof *s + sizeof(double) * (size_t)n * (size_t)w, &SAMPLES_TAG, SAMPLES_MT);
+        *s = (lsamples){s->self, n, dim};
     }
     if (pc_expr_sample_at(pool(L), prog, in[0], a[0].x, a[1].x, n, s->v, why, sizeof why) != PC_OK)
         return pcl_fail(L, "%s", why);
@@ -449,9 +436,7 @@ static void *eq_object(lua_State *L, int nwant, const double *lo, const double *
 
 pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) { return eq_object(L, 1, &t0, &t1, status); }
 
-pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *status) {
-    return eq_object(L, 2, lo, hi, status);
-}
+pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *st) { return eq_object(L, 2, lo, hi, st); }
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = self_eq, .selftype = "equation"}
 static const pcl_fn methods[] = {

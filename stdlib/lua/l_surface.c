@@ -7,6 +7,7 @@
 #include "pcl_scene.h"
 #include "pcl_draw.h"
 #include "pcl_expr.h"
+#include "pcl_tagged.h"
 
 #define SURF_MT "surface"
 static const char SURF_TAG = 's';   /* its address tags the type (PCL_SELF_TAG) */
@@ -17,15 +18,8 @@ typedef struct {
     const char *kind;
 } lsurf;
 
-static int genuine(lua_State *L, int idx, const lsurf *u) {
-    return lua_rawlen(L, idx) == sizeof *u && u->self == PCL_SELF_TAG(u, &SURF_TAG);
-}
-
 /* The surface object at idx or NULL; one given the metatable by the debug library is refused. */
-static lsurf *tosurf(lua_State *L, int idx) {
-    lsurf *u = luaL_testudata(L, idx, SURF_MT);
-    return pcl_genuine(L, idx, u, !u || genuine(L, idx, u), "surface");
-}
+static lsurf *tosurf(lua_State *L, int idx) { return pcl_tagged(L, idx, &SURF_TAG, SURF_MT, sizeof(lsurf), 0); }
 
 pc_surface *pcl_tosurface(lua_State *L, int idx) {
     lsurf *u = tosurf(L, idx);
@@ -37,9 +31,8 @@ pc_surface *pcl_tosurface(lua_State *L, int idx) {
  * arguments in).  1. */
 int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const char *kind) {
     if (!s) pcl_raise_status(L, kind, *status);
-    lsurf *u = lua_newuserdatauv(L, sizeof *u, 0);
-    *u = (lsurf){PCL_SELF_TAG(u, &SURF_TAG), s, kind};
-    luaL_setmetatable(L, SURF_MT);
+    lsurf *u = pcl_tagged_new(L, sizeof *u, &SURF_TAG, SURF_MT);
+    *u = (lsurf){u->self, s, kind};
     return 1;
 }
 
@@ -57,8 +50,8 @@ static void *self_surf(lua_State *L, int idx) {
 }
 
 static int s_gc(lua_State *L) {
-    lsurf *u = luaL_testudata(L, 1, SURF_MT);
-    if (u && genuine(L, 1, u) && u->s) {   /* never a forged one */
+    lsurf *u = pcl_tagged(L, 1, &SURF_TAG, SURF_MT, sizeof *u, PCL_TAG_GC);
+    if (u && u->s) {   /* never a forged one */
         pcl_callback_state(L);
         pc_surface_release(u->s);
         u->s = NULL;
@@ -66,26 +59,24 @@ static int s_gc(lua_State *L) {
     return 0;
 }
 
-/* A Lua function as a surface: its reference in fn first, so pcl_luafn_free frees it all */
-typedef struct { pcl_luafn fn; int dim; } luasurf;
-
+/* A Lua function as a surface (pcl_luafn, pcl_core.h), whose nargs is the dimension of its points */
 static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
-    luasurf *f = ud;
+    pcl_luafn *f = ud;
     if (order > 0) return PC_EDOMAIN;
     lua_State *L = pcl_current_state();
     int top = lua_gettop(L);
-    if (!lua_checkstack(L, f->dim + 4)) return PC_ENOMEM;
-    lua_rawgeti(L, LUA_REGISTRYINDEX, f->fn.ref[0]);
+    if (!lua_checkstack(L, f->nargs + 4)) return PC_ENOMEM;
+    lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[0]);
     lua_pushnumber(L, u);
     lua_pushnumber(L, v);
     if (lua_pcall(L, 2, 1, 0) != LUA_OK) return pcl_callback_failed(L);
     pcl_value *p = pcl_tovalue(L, -1);
-    if (!p || p->n != f->dim) {
-        lua_pushfstring(L, "surface: the function must return a %d-D point, got %s", f->dim,
+    if (!p || p->n != f->nargs) {
+        lua_pushfstring(L, "surface: the function must return a %d-D point, got %s", f->nargs,
                         p ? "another dimension" : luaL_typename(L, -1));
         return pcl_callback_failed(L);
     }
-    memcpy(out, p->h, sizeof(double) * (size_t)(f->dim + 1));
+    memcpy(out, p->h, sizeof(double) * (size_t)(f->nargs + 1));
     lua_settop(L, top);
     return PC_OK;
 }
@@ -228,14 +219,9 @@ PCL_BODY(l_func, a) {
     lua_call(L, 2, 1);
     pcl_value *p = pcl_tovalue(L, -1);
     if (!p) return pcl_fail(L, "f(u0, v0) must return a point, got %s", luaL_typename(L, -1));
-    int d = p->n;
-    lua_pop(L, 1);
-    luasurf *f = malloc(sizeof *f);
-    if (!f) return pcl_fail(L, "out of memory");
-    lua_pushvalue(L, 1);
-    *f = (luasurf){.fn = {.n = 1, .ref = {luaL_ref(L, LUA_REGISTRYINDEX)}, .fname = pcl_name(L)}, .dim = d};
-    pcl_callback_state(L);
-    return made(L, pc_surface_func(d, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, pcl_luafn_free, f, &st), &st);
+    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){1});
+    f->nargs = p->n;
+    return made(L, pc_surface_func(p->n, a[1].x, a[2].x, a[3].x, a[4].x, luasurf_eval, pcl_luafn_free, f, &st), &st);
 }
 
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
