@@ -72,44 +72,35 @@ pc_scene *pcl_scene(lua_State *L) {
     return sc;
 }
 
-int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
-    return pc_scene_add_curve(sc, c, n, color, pcl_active_canvas(L)->pen);
-}
-
 /* ---- markers, arrows, furniture -------------------------------------------------------------- */
 
 static const char *const STYLES[] = {"dot", "open", "cross", "plus", "square", NULL};
 static const pcl_arg mark_args[] = {A_XY("P"), A_OPTENUM("style", STYLES, 0),
                                     A_OPTNUM("size", 1, 200, 5, "5"), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_mark, a) {
-    pc_canvas *c = pcl_active_canvas(L);
     pc_scene *sc = a[0].n == 3 ? pcl_scene(L) : NULL;
-    if (sc) {
-        int st = pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, (int)a[3].x);
-        return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
-    }
-    return pcl_check_canvas(L, c, pc_mark(c, a[0].v[0], a[0].v[1], a[1].n, a[2].x, (int)a[3].x));
+    if (sc) return pcl_check(L, pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, (int)a[3].x), NULL);
+    return pcl_drawn(L, pc_mark(pcl_active_canvas(L), a[0].v[0], a[0].v[1], a[1].n, a[2].x, (int)a[3].x));
 }
 
 /* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
 static const pcl_arg vector_args[] = {A_XY("A"), {.name = "v", .kind = PCL_VECTOR}, A_COLOR("colour"), PCL_END};
 PCL_BODY(l_vector, a) {
     pcl_val end = {0};
-    pc_canvas *c = pcl_active_canvas(L);
     lua_pushvalue(L, 1);
     lua_pushvalue(L, 2);
     lua_arith(L, LUA_OPADD);
     if (!read_xy(L, lua_gettop(L), NULL, &end)) return pcl_argfail(L, 2, "must have A's dimension");
-    return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9, (int)a[2].x));
+    return pcl_drawn(L, pc_arrow(pcl_active_canvas(L), a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9,
+                                 (int)a[2].x));
 }
 
 static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
                                      A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_hatch, a) {
-    pc_canvas *c = pcl_active_canvas(L);
     const double *xy = pcl_places(L, &a[0], "argument #1 (points)");
     size_t lines;
-    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)a[0].n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
+    return pcl_drawn(L, pc_hatch(pcl_active_canvas(L), (size_t)a[0].n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
 }
 
 static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
@@ -146,11 +137,10 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
                                    A_OPTNUM("pad", 0, 1e300, 0, "0"), A_OPTNUM("band", 0, 1e5, 0, "0"), PCL_END};
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
 PCL_BODY(l_fit, a) {   /* options; margin, aspect, around, pad, band */
-    pc_canvas *c = pcl_active_canvas(L);
     const double *xy = pcl_places(L, &a[3], "option 'around'");
     pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n,
                      a[1].x, a[4].x, a[5].x, (size_t)a[3].n, xy};
-    return pcl_check_canvas(L, c, pc_fit_options(c, &o));
+    return pcl_drawn(L, pc_fit_options(pcl_active_canvas(L), &o));
 }
 
 static const char *const EDGES[] = {"bottom", "top", NULL};
@@ -168,11 +158,10 @@ static const pcl_arg axes_keys[] = {A_NUMBERS("x", 2, 2), A_NUMBERS("y", 2, 2), 
                                     {.name = "grid", .kind = PCL_BOOLEAN}, A_COLOR("color"), A_COLOR("grid_color"), PCL_END};
 static const pcl_arg axes_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = axes_keys}, PCL_END};
 PCL_BODY(l_axes, a) {   /* options; x, y, origin, ticks, labels, arrows, grid, color, grid_color */
-    pc_canvas *c = pcl_active_canvas(L);
     pc_axes_opts o = {a[1].list, a[2].list, a[3].present ? a[3].v : NULL, (int)a[4].x, (int)a[5].x, (int)a[6].x,
                       (int)a[7].x, (int)a[9].x};
     int n = 0;
-    pcl_check_canvas(L, c, pc_axes_options(c, &o, (int)a[8].x, &n));
+    pcl_drawn(L, pc_axes_options(pcl_active_canvas(L), &o, (int)a[8].x, &n));
     return pcl_push_results(L, 0, "i", n);
 }
 
