@@ -74,4 +74,16 @@ int pc_graph(pc_canvas *c, double x0, double x1, int n, pc_graph_fn f, void *ctx
 int pc_path_stmt(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs, int closed, int color, int heads,
                  int filled, int fill_color, int rule);
 
+/* The furniture drawn through two or three points (one binding over them all): arrow,
+ * dimension, angle mark (A, O, B), ticks, centre line, found by the name a script calls. */
+typedef enum { PC_FURN_ARROW, PC_FURN_DIMENSION, PC_FURN_ANGLE, PC_FURN_TICKS, PC_FURN_CENTRE } pc_furniture_kind;
+/* The kind named "arrow", "dimension", "angle_mark", "ticks" or "centre_line", or -1. */
+int pc_furniture_kind_of(const char *name);
+/* Furniture of that kind through the points xy (x, y pairs) with its one size (the arrow's
+ * heads PC_ARROW_*, the dimension's offset, the angle's radius, the ticks' count, the centre
+ * line's extension), text (dimension and angle; NULL: the number) and colour, as the functions
+ * above draw it; *measure the length or the angle of the two that measure (else 0). */
+int pc_furniture(pc_canvas *c, pc_furniture_kind kind, const double *xy, double size, const char *text, int color,
+                 double *measure);
+
 #endif

@@ -544,20 +544,18 @@ PCL_PAIRS_BODY(l_label, a) {   /* text, x, y, direction, colour, scale, options;
 static const char *const UNITS[] = {"world", "device", NULL};
 static const pcl_arg text_keys[] = {
     {.name = "x", .kind = PCL_NUMBER, .flags = PCL_REQ}, {.name = "y", .kind = PCL_NUMBER, .flags = PCL_REQ},
-    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ}, {.name = "units", .kind = PCL_ENUM, .choices = UNITS},
-    {.name = "color", .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}, SCALE, PCL_END};
+    {.name = "text", .kind = PCL_STRING, .flags = PCL_REQ},
+    {.name = "color", .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1, .dim = 1}, SCALE,
+    {.name = "units", .kind = PCL_ENUM, .choices = UNITS}, PCL_END};
 static const pcl_arg text_table = {.name = "options", .kind = PCL_OPTIONS, .keys = text_keys};
 static const pcl_arg text_args[] = {A_X("x"), A_NUM("y"), TEXT, COLOR("colour"), SCALE, PCL_END};
 static int l_text(lua_State *L) {
     pc_canvas *c = canvas(L);
-    pcl_val a[6] = {0};   /* x, y, text, colour, scale; the table's x, y, text, units, color, scale */
-    if (!lua_istable(L, 1)) {
-        PCL_READ_PAIRS(L, a);
-        return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
-    }
-    pcl_read_options(L, 1, 1, &text_table, a);
-    if (a[3].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[0].x, a[1].x, a[2].s, (int)a[5].x, (int)a[4].x));
-    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[5].x, (int)a[4].x));
+    pcl_val a[6] = {0};   /* x, y, text, colour, scale; the table's units */
+    if (lua_istable(L, 1)) pcl_read_options(L, 1, 1, &text_table, a);
+    else PCL_READ_PAIRS(L, a);
+    if (a[5].n == 1) return pcl_check_canvas(L, c, pc_text_device(c, a[0].x, a[1].x, a[2].s, (int)a[4].x, (int)a[3].x));
+    return pcl_check_canvas(L, c, pc_text(c, a[0].x, a[1].x, a[2].s, PC_ANCHOR_SE, 0, (int)a[4].x, (int)a[3].x));
 }
 
 static int canvas_gc(lua_State *L) {

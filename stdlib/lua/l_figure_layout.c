@@ -72,86 +72,61 @@ pc_scene *pcl_scene(lua_State *L) {
     return sc;
 }
 
-int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color) {
-    return pc_scene_add_curve(sc, c, n, color, pcl_active_canvas(L)->pen);
-}
-
 /* ---- markers, arrows, furniture -------------------------------------------------------------- */
 
 static const char *const STYLES[] = {"dot", "open", "cross", "plus", "square", NULL};
 static const pcl_arg mark_args[] = {A_XY("P"), A_OPTENUM("style", STYLES, 0),
                                     A_OPTNUM("size", 1, 200, 5, "5"), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_mark, a) {
-    pc_canvas *c = pcl_active_canvas(L);
     pc_scene *sc = a[0].n == 3 ? pcl_scene(L) : NULL;
-    if (sc) {
-        int st = pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, (int)a[3].x);
-        return st == PC_OK ? 0 : pcl_raise_status(L, pcl_name(L), st);
-    }
-    return pcl_check_canvas(L, c, pc_mark(c, a[0].v[0], a[0].v[1], a[1].n, a[2].x, (int)a[3].x));
-}
-
-static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
-static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1), A_COLOR("colour"), PCL_END};
-PCL_BODY(l_arrow, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_drawn(L, pc_arrow(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].n, 9, (int)a[3].x));
+    if (sc) return pcl_check(L, pc_scene_add_mark(sc, a[0].v + 2, a[1].n, a[2].x, (int)a[3].x), NULL);
+    return pcl_drawn(L, pc_mark(pcl_active_canvas(L), a[0].v[0], a[0].v[1], a[1].n, a[2].x, (int)a[3].x));
 }
 
 /* vector(A, v [, colour]): the arrow from A to A + v (the sum taken as a script would). */
 static const pcl_arg vector_args[] = {A_XY("A"), {.name = "v", .kind = PCL_VECTOR}, A_COLOR("colour"), PCL_END};
 PCL_BODY(l_vector, a) {
     pcl_val end = {0};
-    pc_canvas *c = pcl_active_canvas(L);
     lua_pushvalue(L, 1);
     lua_pushvalue(L, 2);
     lua_arith(L, LUA_OPADD);
     if (!read_xy(L, lua_gettop(L), NULL, &end)) return pcl_argfail(L, 2, "must have A's dimension");
-    return pcl_check_canvas(L, c, pc_arrow(c, a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9, (int)a[2].x));
-}
-
-static const pcl_arg dim_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("offset", -1e5, 1e5, 20, "20"),
-                                   A_OPTSTR("text"), A_COLOR("colour"), PCL_END};
-PCL_BODY(l_dimension, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    double len = 0;
-    pcl_check_canvas(L, c, pc_dimension(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, a[3].s, (int)a[4].x,
-                                        &len));
-    return pcl_push_results(L, 0, "n", len);
-}
-
-static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
-                                     A_OPTNUM("radius", 2, 1000, 24, "24"), A_COLOR("colour"), PCL_END};
-PCL_BODY(l_angle_mark, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    double th = 0;
-    pcl_check_canvas(L, c, pc_angle_mark(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].v[0], a[2].v[1],
-                              a[4].x, a[3].s, (int)a[5].x, &th));
-    return pcl_push_results(L, 0, "n", th);
-}
-
-static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
-                                     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 5, .dflt = 1, .shown = "1"},
-                                     A_COLOR("colour"), PCL_END};
-PCL_BODY(l_ticks, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_drawn(L, pc_ticks(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], (int)a[2].x, 8, (int)a[3].x));
+    return pcl_drawn(L, pc_arrow(pcl_active_canvas(L), a[0].v[0], a[0].v[1], end.v[0], end.v[1], PC_ARROW_END, 9,
+                                 (int)a[2].x));
 }
 
 static const pcl_arg hatch_args[] = {A_POINTS("points", 0, 3, 0), A_OPTNUM("spacing", 1, 1e4, 8, "8"),
                                      A_OPTNUM("angle", -1e6, 1e6, 45, "45"), A_COLOR("colour"), PCL_END};
 PCL_BODY(l_hatch, a) {
-    pc_canvas *c = pcl_active_canvas(L);
     const double *xy = pcl_places(L, &a[0], "argument #1 (points)");
     size_t lines;
-    return pcl_check_canvas(L, c, pc_hatch(c, (size_t)a[0].n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
+    return pcl_drawn(L, pc_hatch(pcl_active_canvas(L), (size_t)a[0].n, xy, a[1].x, a[2].x, (int)a[3].x, &lines));
 }
 
+static const char *const HEADS[] = {"none", "end", "start", "both", NULL};
+static const pcl_arg arrow_args[] = {A_XY("A"), A_XY("B"), A_OPTENUM("heads", HEADS, 1), A_COLOR("colour"), PCL_END};
+static const pcl_arg dim_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("offset", -1e5, 1e5, 20, "20"),
+                                   A_OPTSTR("text"), A_COLOR("colour"), PCL_END};
+static const pcl_arg angle_args[] = {A_XY("A"), A_XY("O"), A_XY("B"), A_OPTSTR("text"),
+                                     A_OPTNUM("radius", 2, 1000, 24, "24"), A_COLOR("colour"), PCL_END};
+static const pcl_arg ticks_args[] = {A_XY("A"), A_XY("B"),
+                                     {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 5, .dflt = 1, .shown = "1"},
+                                     A_COLOR("colour"), PCL_END};
 static const pcl_arg centre_args[] = {A_XY("A"), A_XY("B"), A_OPTNUM("extend", 0, 1e5, 10, "10"),
                                       A_COLOR("colour"), PCL_END};
-PCL_BODY(l_centre_line, a) {
-    pc_canvas *c = pcl_active_canvas(L);
-    return pcl_drawn(L, pc_centre_line(c, a[0].v[0], a[0].v[1], a[1].v[0], a[1].v[1], a[2].x, (int)a[3].x));
+/* arrow, dimension, angle_mark, ticks, centre_line: one body, the kind by the name called; the
+ * slots of the declared size, text (-1: none) and colour after the points */
+static const struct { int points, size, text, color; } FURNITURE[] = {
+    [PC_FURN_ARROW] = {2, 2, -1, 3}, [PC_FURN_DIMENSION] = {2, 2, 3, 4}, [PC_FURN_ANGLE] = {3, 4, 3, 5},
+    [PC_FURN_TICKS] = {2, 2, -1, 3}, [PC_FURN_CENTRE] = {2, 2, -1, 3}};
+PCL_BODY(l_furniture, a) {
+    pc_furniture_kind kind = pc_furniture_kind_of(pcl_name(L));
+    int size = FURNITURE[kind].size, text = FURNITURE[kind].text;
+    double xy[6], measure;
+    for (int i = 0; i < FURNITURE[kind].points; i++) memcpy(xy + 2 * i, a[i].v, 2 * sizeof *xy);
+    pcl_drawn(L, pc_furniture(pcl_active_canvas(L), kind, xy, kind == PC_FURN_ARROW ? a[size].n : a[size].x,
+                              text < 0 ? NULL : a[text].s, (int)a[FURNITURE[kind].color].x, &measure));
+    return text < 0 ? 0 : pcl_push_results(L, 0, "n", measure);
 }
 
 /* ---- framing, captions, device-unit text -------------------------------------------------- */
@@ -162,11 +137,10 @@ static const pcl_arg fit_keys[] = {A_OPTNUM("margin", 0, 1e5, 10, "10"), A_OPTEN
                                    A_OPTNUM("pad", 0, 1e300, 0, "0"), A_OPTNUM("band", 0, 1e5, 0, "0"), PCL_END};
 static const pcl_arg fit_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = fit_keys}, PCL_END};
 PCL_BODY(l_fit, a) {   /* options; margin, aspect, around, pad, band */
-    pc_canvas *c = pcl_active_canvas(L);
     const double *xy = pcl_places(L, &a[3], "option 'around'");
     pc_fit_opts o = {a[1].present, a[4].present, a[5].present, a[3].present, a[2].n,
                      a[1].x, a[4].x, a[5].x, (size_t)a[3].n, xy};
-    return pcl_check_canvas(L, c, pc_fit_options(c, &o));
+    return pcl_drawn(L, pc_fit_options(pcl_active_canvas(L), &o));
 }
 
 static const char *const EDGES[] = {"bottom", "top", NULL};
@@ -184,11 +158,10 @@ static const pcl_arg axes_keys[] = {A_NUMBERS("x", 2, 2), A_NUMBERS("y", 2, 2), 
                                     {.name = "grid", .kind = PCL_BOOLEAN}, A_COLOR("color"), A_COLOR("grid_color"), PCL_END};
 static const pcl_arg axes_args[] = {{.name = "options", .kind = PCL_OPTIONS, .flags = PCL_OPT | PCL_CALLTABLE, .keys = axes_keys}, PCL_END};
 PCL_BODY(l_axes, a) {   /* options; x, y, origin, ticks, labels, arrows, grid, color, grid_color */
-    pc_canvas *c = pcl_active_canvas(L);
     pc_axes_opts o = {a[1].list, a[2].list, a[3].present ? a[3].v : NULL, (int)a[4].x, (int)a[5].x, (int)a[6].x,
                       (int)a[7].x, (int)a[9].x};
     int n = 0;
-    pcl_check_canvas(L, c, pc_axes_options(c, &o, (int)a[8].x, &n));
+    pcl_drawn(L, pc_axes_options(pcl_active_canvas(L), &o, (int)a[8].x, &n));
     return pcl_push_results(L, 0, "i", n);
 }
 
@@ -275,13 +248,13 @@ PCL_BODY(l_view, a) {
 static const pcl_fn fns[] = {
     PCL_FN("placed_labels", l_placed_labels, NULL, "{{text =, x =, y =, w =, h =, side =, auto =}, ...}", "Where every label goes when the picture is written: its box in screen pixels and its side; auto for the ones placed automatically."),
     PCL_FN("mark", l_mark, mark_args, NULL, "A marker on a point, size pixels across (default a filled dot of 5); a 3-D point joins the camera's scene."),
-    PCL_FN("arrow", l_arrow, arrow_args, NULL, "The segment AB with a filled arrow head (9 px) at B, at A or at both."),
+    PCL_FN("arrow", l_furniture, arrow_args, NULL, "The segment AB with a filled arrow head (9 px) at B, at A or at both."),
     PCL_FN("vector", l_vector, vector_args, NULL, "The vector v drawn as an arrow from the point A to A + v."),
-    PCL_FN("dimension", l_dimension, dim_args, "length", "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
-    PCL_FN("angle_mark", l_angle_mark, angle_args, "angle", "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
-    PCL_FN("ticks", l_ticks, ticks_args, NULL, "n (1..5) equal-length ticks across the middle of segment AB."),
+    PCL_FN("dimension", l_furniture, dim_args, "length", "A dimension line of AB offset pixels to its left (negative: right), with extension lines, two heads and the length |AB| in world units (or text)."),
+    PCL_FN("angle_mark", l_furniture, angle_args, "angle", "The angle AOB (the smaller one, in radians, measured in world units) marked by an arc of radius pixels, or the square of a right angle, with its degrees (or text)."),
+    PCL_FN("ticks", l_furniture, ticks_args, NULL, "n (1..5) equal-length ticks across the middle of segment AB."),
     PCL_FN("hatch", l_hatch, hatch_args, NULL, "Hatch the closed region through the points (even-odd) with lines at angle degrees (ISO 128: 45) spacing pixels apart."),
-    PCL_FN("centre_line", l_centre_line, centre_args, NULL, "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
+    PCL_FN("centre_line", l_furniture, centre_args, NULL, "A centre line through A and B, extend pixels beyond each, long dash and dot (ISO 128 type 04)."),
     PCL_FN("fit", l_fit, fit_args, NULL, "Frame what is drawn: everything moved and scaled into the view, margin pixels in, text cells and room for every automatic label included, the 3-D scene through its camera too, at equal units on both axes (or each axis filling the view); markers keep their size; later drawing follows the new frame. fit{around = points, pad = p}: before drawing, the window round the points (n-D through the camera) with p world units more on each side, at equal units at the view's aspect (or the box itself with aspect = \"fill\"), band = px keeping that many pixels free at the bottom for a caption; what is drawn already stays."),
     PCL_FN("caption", l_caption, caption_args, NULL, "Text centred at the bottom (or top) edge of the picture, in device units, so a window cannot move it off."),
     PCL_FN("axes", l_axes, axes_args, "n", "Both axes in world units (default: the window's extent) with ticks at round numbers (1, 2, 5 x 10^k), their labels, an arrow on each and an optional dotted grid; returns the number of ticks."),

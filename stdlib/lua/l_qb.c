@@ -18,32 +18,24 @@ static const pcl_arg n_arg[] = {A_NUM("n"), PCL_END};
 static const pcl_arg seed_arg[] = {{.name = "s", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 0, .hi = 0xFFFFFF}, PCL_END};
 static const pcl_arg range_args[] = {A_NUM("start"), A_NUM("limit"), A_NUMOPT("step", 1, NULL), PCL_END};
 
+/* qb.f32, and qb.csng: every SINGLE assignment of a translated program is a CSNG, one C call,
+ * the error raised at the caller's line ("prog.bas:12: Overflow", as QBasic names it). */
 PCL_BODY(l_f32, a) {
-    lua_pushnumber(L, qb_f32(a[0].x));
-    return 1;
-}
-
-/* Every SINGLE assignment of a translated program is a CSNG: one C call, the error raised at
- * the caller's line ("prog.bas:12: Overflow", as QBasic names it). */
-PCL_BODY(l_csng, a) {
     double r = qb_f32(a[0].x);
-    if (!isfinite(r)) return luaL_error(L, "Overflow");
+    if (!isfinite(r) && !strcmp(pcl_name(L), "qb.csng")) return luaL_error(L, "Overflow");
     lua_pushnumber(L, r);
     return 1;
 }
 
-static int push_rounded(lua_State *L, double (*fn)(double, int *)) {
-    pcl_val a[1] = {0};
-    PCL_READ(L, a);
+/* qb.cint and qb.clng, by the name called */
+PCL_BODY(l_round, a) {
     int ok;
-    double r = fn(a[0].x, &ok);
+    double r = (strcmp(pcl_name(L), "qb.cint") ? qb_clng : qb_cint)(a[0].x, &ok);
     if (ok) lua_pushinteger(L, (lua_Integer)r);
     else lua_pushnumber(L, r);
     lua_pushboolean(L, ok);
     return 2;
 }
-static int l_cint(lua_State *L) { return push_rounded(L, qb_cint); }
-static int l_clng(lua_State *L) { return push_rounded(L, qb_clng); }
 
 /* The state in the shared upvalue: the debug library can replace it (debug.setupvalue), so
  * its type and size are checked (pcl.h: forged userdata). */
@@ -93,9 +85,9 @@ PCL_BODY(l_range, a) {
 
 static const pcl_fn fns[] = {
     PCL_FN("qb.f32", l_f32, x_arg, "number", "x rounded to QBasic's SINGLE (IEEE float32); beyond the SINGLE range (about 3.4E+38) it is +-inf, as a float32 is (translated QBasic reports Overflow)."),
-    PCL_FN("qb.csng", l_csng, x_arg, "number", "QBasic's CSNG: x rounded to SINGLE, and the error \"Overflow\" (at the caller's line) beyond the SINGLE range or for NaN."),
-    PCL_FN("qb.cint", l_cint, x_arg, "integer, ok", "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow."),
-    PCL_FN("qb.clng", l_clng, x_arg, "integer, ok", "CLNG: round to the nearest integer, ties to even; ok is false on LONG overflow."),
+    PCL_FN("qb.csng", l_f32, x_arg, "number", "QBasic's CSNG: x rounded to SINGLE, and the error \"Overflow\" (at the caller's line) beyond the SINGLE range or for NaN."),
+    PCL_FN("qb.cint", l_round, x_arg, "integer, ok", "CINT: round to the nearest integer, ties to even; ok is false on INTEGER overflow."),
+    PCL_FN("qb.clng", l_round, x_arg, "integer, ok", "CLNG: round to the nearest integer, ties to even; ok is false on LONG overflow."),
     PCL_FN("qb.range", l_range, range_args, "iterator", "A QBasic FOR loop accumulating in SINGLE: for t in qb.range(0, 1, .001) runs 1001 times, as QBasic does."),
     PCL_END};
 static const pcl_fn rnd_fns[] = {   /* sharing the generator's state */

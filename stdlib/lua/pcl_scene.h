@@ -5,7 +5,6 @@
 #define PCL_SCENE_H
 
 #include "pcl.h"
-#include "curve.h"
 #include "scene.h"
 
 /* The camera's hidden-line mode: -1 none, else a pc_hidden_mode (l_camera.c sets it). */
@@ -13,7 +12,5 @@ void pcl_set_hidden_mode(lua_State *L, int mode);
 /* The scene 3-D strokes go into now, or NULL when the camera has no hidden mode (or is not
  * 3-D). */
 pc_scene *pcl_scene(lua_State *L);
-/* Add curve c (3-D), sampled at n + 1 parameters, to the scene in colour color. */
-int pcl_scene_curve(lua_State *L, pc_scene *sc, const pc_curve *c, int n, int color);
 
 #endif
