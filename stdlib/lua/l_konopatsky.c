@@ -8,7 +8,7 @@
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "conic.h"
-#include "konop_curves.h"
+#include "konop_form.h"
 #include "oneratio.h"
 #include "konop_interp.h"
 #include "approx.h"
@@ -29,7 +29,8 @@
 
 /* the params (argument #k), if given: one per point */
 static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
-    if (v->present && v->n != n) pcl_fail(L, "argument #%d (params) must hold %d numbers (one per point), got %d", k, n, v->n);
+    if (v->present && v->n != n)
+        pcl_fail(L, "argument #%d (params) must hold %d numbers (one per point), got %d", k, n, v->n);
 }
 
 /* A function, or a value with __call (pcl_callable). */
@@ -57,7 +58,8 @@ static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), S
                                        A_NUMOPT("t1", 1, NULL), PCL_END};
 static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
-    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .expect = "1 or 2"}, PCL_END};
+    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1,
+     .expect = "1 or 2"}, PCL_END};
 
 /* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
  * declared points, then the numbers (from a[0] when there are no points). */
@@ -76,55 +78,46 @@ PCL_BODY(made, a) {
 #define KC_KEYS(req) {.name = "C", .kind = PCL_POINT, .flags = PCL_SAMEDIM | (req)}, REQPT("A"), REQPT("B"), \
     {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2, .shown = "{t0, t1}"}
 #define SPEC(k) {{.name = "spec", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = k}, PCL_END}
-#define BRANCH {.name = "branch", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, .shown = "1|2", .expect = "1 or 2"}
+#define BRANCH {.name = "branch", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1, \
+    .shown = "1|2", .expect = "1 or 2"}
 
-/* The form `kind` of the table read into a[1..4] (C, A, B, range) with its parameters. */
-static int kcurve_from(lua_State *L, const pcl_val *a, pc_kcurve_kind kind, const double *par, int npar) {
-    int st, d = a[2].n;
-    double t0 = a[4].present ? a[4].list[0] : NAN, t1 = a[4].present ? a[4].list[1] : NAN, r[2];
-    pc_curve *c = pc_kcurve(kind, d, a[1].v, a[2].v, a[3].v, par, npar, t0, t1, &st);
-    if (!c && st == PC_EDOMAIN3 && pc_kcurve_range(kind, d, a[1].v, a[2].v, a[3].v, par, npar, r, r + 1) == PC_OK)
-        return pcl_keyfail(L, "range", "must lie within the form's real range [%s, %s]", pcl_pushnum(L, r[0]),
-                           pcl_pushnum(L, r[1]));
-    return MADE(c);
+/* The form (konop_form.h) of the table read into a[1..4] (C, A, B, range) with its parameters
+ * and the point K (or NULL). */
+static int kcurve_from(lua_State *L, const pcl_val *a, int form, const double *par, int npar, const pcl_val *K) {
+    int st;
+    double t0 = a[4].present ? a[4].list[0] : NAN, t1 = a[4].present ? a[4].list[1] : NAN;
+    pc_why_call why;
+    pc_curve *c = pc_konop_form(pcl_name(L), form, a[2].n, a[1].present ? a[1].v : NULL, a[2].v, a[3].v,
+                                K && K->present ? K->v : NULL, par, npar, t0, t1, &st, &why);
+    return pcl_made(L, c, &st, why.row);
 }
 
 /* by: the forms PC_KC_ELLIPSE_ANGLE .. PC_KC_ELLIPSE_ALGEBRAIC in order, then two of conic.h */
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
 static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
-                                       {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"), PCL_END};
+                                       {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"),
+                                       PCL_END};
 static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
 PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
-    int st, by = a[5].n;
-    if (by == 6) {                                   /* §2.1.1.6: K, A, B, lambda */
-        if (!a[7].present) return pcl_keyfail(L, "K", "must be a point, got nil");
-        if (!(a[8].present && a[8].x > 0 && a[8].x < 1))
-            return pcl_keyfail(L, "lambda", "must be a number in (0, 1), got %s", a[8].present ? pcl_pushnum(L, a[8].x) : "nil");
-        return MADE(pc_conic_conjugate2(a[2].n, a[7].v, a[2].v, a[3].v, a[8].x, &st));
-    }
-    if (!a[1].present) return pcl_keyfail(L, "C", "must be a point, got nil");
-    if (by == 5) return MADE(pc_conic_conjugate(a[2].n, a[1].v, a[2].v, a[3].v, &st));
-    return kcurve_from(L, a, (pc_kcurve_kind)(PC_KC_ELLIPSE_ANGLE + by), &a[6].x, 1);
+    int by = a[5].n;
+    double lambda = a[8].present ? a[8].x : NAN;
+    return kcurve_from(L, a, by < 5 ? PC_KC_ELLIPSE_ANGLE + by : PC_KF_CONJUGATE + by - 5, by == 6 ? &lambda : &a[6].x,
+                       1, &a[7]);
 }
 
 static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
 static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
 static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
 PCL_BODY(c_hyperbola, a) {   /* spec; C, A, B, range, by, branch */
-    return kcurve_from(L, a, (pc_kcurve_kind)(PC_KC_HYPERBOLA_ANGLE + a[5].n), &a[6].x, 1);
+    return kcurve_from(L, a, PC_KC_HYPERBOLA_ANGLE + a[5].n, &a[6].x, 1, NULL);
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
 static const pcl_arg circle_args[] = SPEC(circle_keys);
 PCL_BODY(c_circle, a) {   /* spec; C, A, B, range, delta, R */
-    if (a[5].present) {
-        if (!(a[5].x > 0 && a[5].x < M_PI)) return pcl_keyfail(L, "delta", "must be an angle in (0, pi), got %s", pcl_pushnum(L, a[5].x));
-        return kcurve_from(L, a, PC_KC_CIRCLE_ANGLE, &a[5].x, 1);
-    }
-    if (a[6].present) return kcurve_from(L, a, PC_KC_CIRCLE_RADIUS, &a[6].x, 1);
-    int st;   /* §2.1.8.1: the arc AB with tangents meeting at C, by the engineering discriminant */
-    return MADE(pc_conic_circle_arc(a[1].n, a[2].v, a[3].v, a[1].v, &st));
+    int form = a[5].present ? PC_KC_CIRCLE_ANGLE : a[6].present ? PC_KC_CIRCLE_RADIUS : PC_KF_CIRCLE_ARC;
+    return kcurve_from(L, a, form, a[5].present ? &a[5].x : &a[6].x, 1, NULL);
 }
 
 static const pcl_arg tilted_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("theta"), A_POSNUM("m"), A_POSNUM("n"), PCL_END};
@@ -135,7 +128,8 @@ PCL_BODY(c_tilted, a) {
     return 1 + pcl_push_packed(L, d, "p p h p n", o);   /* K: a vector at theta = 0 */
 }
 
-static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
+static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"},
+                                    PCL_END};
 static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
 PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
     int st;
@@ -145,7 +139,8 @@ PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
 }
 
 #define REQNUM(nm) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_REQ}
-static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"), REQNUM("q3"), PCL_END};
+static const pcl_arg five2_keys[] = {REQPT("C"), REQPT("A"), REQPT("B"), REQNUM("p1"), REQNUM("p2"), REQNUM("q2"),
+                                     REQNUM("q3"), PCL_END};
 static const pcl_arg five2_args[] = SPEC(five2_keys);
 PCL_BODY(c_five_points2, a) {   /* spec; C, A, B, p1, p2, q2, q3 */
     int st;
@@ -168,8 +163,8 @@ static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
 static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
 static const pcl_arg reparam_args[] = SPEC(reparam_keys);
 PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch */
-    if (a[5].n == 0) return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE, NULL, 0);
-    return kcurve_from(L, a, PC_KC_PARABOLA_SIGMA, &a[6].x, 1);
+    if (a[5].n == 0) return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE, NULL, 0, NULL);
+    return kcurve_from(L, a, PC_KC_PARABOLA_SIGMA, &a[6].x, 1, NULL);
 }
 
 /* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
@@ -186,21 +181,24 @@ static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     }
     return 1;
 }
-static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_waves,
-    .shown = "{m, n, ...}", .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
+static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ,
+    .read = read_waves, .shown = "{m, n, ...}",
+    .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
 static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
 PCL_BODY(c_sinusoid, a) {   /* spec; C, A, B, range, k */
-    return kcurve_from(L, a, PC_KC_SINUSOID, a[5].v, (int)a[5].v[0] + 1);
+    return kcurve_from(L, a, PC_KC_SINUSOID, a[5].v, (int)a[5].v[0] + 1, NULL);
 }
 
-static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"}, PCL_END};
+static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"},
+                                       PCL_END};
 static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
 PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
-    return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1);
+    return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1, NULL);
 }
 
-static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", "a function of t"), A_FN("v", "a function of t"),
-                                       A_FNOPT("du", "a function of t"), A_FNOPT("dv", "a function of t"), PCL_END};
+#define OF_T "a function of t"
+static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", OF_T), A_FN("v", OF_T),
+                                       A_FNOPT("du", OF_T), A_FNOPT("dv", OF_T), PCL_END};
 PCL_BODY(c_contour, a) {
     int has_d = a[5].present, st;
     if (has_d && !a[6].present) return pcl_argfail(L, 7, "must be a function of t (with du), got nil");
@@ -226,7 +224,8 @@ static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return out->n ? isfinite(out->x) : pcl_callable(L, idx);
 }
 static const pcl_arg contact_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kp"), A_NUM("kq"),
-    {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"}, PCL_END};
+    {.name = "f", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_blend, .expect = "a function of v or a number"},
+    PCL_END};
 PCL_BODY(o_double_contact, a) {   /* f: a function of v, a number, or absent: f(v) = v */
     int st, d = a[0].n, fn = a[5].present && !a[5].n;
     const double *A = a[0].v, *B = a[1].v, *C = a[2].v;
@@ -291,7 +290,8 @@ static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return out->n || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
 }
 static const pcl_arg weights_args[] = {{.name = "n", .kind = PCL_ANY, .read = read_nodes,
-    .expect = "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes) or a list of node parameters"},
+    .expect = "the book's order 1..64 (a curve through n + 1 nodes; not the number of nodes) or a list of node "
+              "parameters"},
     {.name = "t", .kind = PCL_ANY, .read = read_t, .expect = "a finite number or an equation (param \"t\")"}, PCL_END};
 
 /* the weights as equations in t (stack index 2): the polynomials the Maple program of §4.8
@@ -335,8 +335,8 @@ PCL_BODY(i_controls, a) {
 }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
-static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2, .hi = PC_CURVE_MAXDEG - 2},
-                                   SP("C2"), A_LATER("Cn"), A_PARAMS, PCL_END};
+static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2,
+                                    .hi = PC_CURVE_MAXDEG - 2}, SP("C2"), A_LATER("Cn"), A_PARAMS, PCL_END};
 PCL_BODY(i_arc, a) {
     static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
                          u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
@@ -351,7 +351,8 @@ PCL_BODY(i_arc, a) {
     }
     need_count(L, k, u, n);
     pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
-    if (!c && st == PC_EDOMAIN && u->present) return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
+    if (!c && st == PC_EDOMAIN && u->present)
+        return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
     return MADE(c);
 }
 
@@ -376,7 +377,8 @@ PCL_BODY(i_prototype, a) {
     int n, nk, st;
     pc_interp_prototype_shape((pc_proto_kind)a[0].n, &n, &nk);
     /* the count of points the prototype takes, whatever came (nil included) */
-    if (!lua_istable(L, 2)) return pcl_argfail(L, 2, "must hold %d points (the \"%s\" prototype), got %s", n, a[0].s, pcl_shown(L, 2));
+    if (!lua_istable(L, 2))
+        return pcl_argfail(L, 2, "must hold %d points (the \"%s\" prototype), got %s", n, a[0].s, pcl_shown(L, 2));
     pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta[2] = {A_NUM("t0"), A_NUM("t1")};
     pcl_readone(L, 2, 2, 0, &pa, 0, &p);
     if (nk) pcl_readone(L, 3, 3, 0, &ka, 0, &k);
@@ -408,12 +410,13 @@ static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (out->n < 1 || out->n > 16) return 0;
     for (int i = 1; i <= out->n; i++) {
         lua_geti(L, idx, i);
-        if (!pcl_callable(L, -1)) pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
+        if (!pcl_callable(L, -1))
+            pcl_argfail(L, 1, "[%d] must be a function of t, got %s", i, pcl_shown(L, lua_gettop(L)));
         lua_pop(L, 1);
     }
     return 1;
 }
-static const pcl_arg basis_args[] = {{.name = "basis", .kind = PCL_ANY, .read = read_basis, .expect = "a list of 1 to 16 functions of t"},
+static const pcl_arg basis_args[] = {A_ANY("basis", read_basis, "a list of 1 to 16 functions of t"),
                                      A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
                                      A_NUMOPT("t0", 0, NULL), A_NUMOPT("t1", 0, NULL), PCL_END};
 PCL_BODY(i_basis, a) {
@@ -466,7 +469,8 @@ static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* 
     out->x = lua_tonumber(L, idx);
     return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && isfinite(out->x));
 }
-#define A_M {.name = "m", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_m, .expect = "a number of samples or a table {m =, divisor =}"}
+#define A_M {.name = "m", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_m, \
+    .expect = "a number of samples or a table {m =, divisor =}"}
 
 static int samples(lua_State *L, int k, const pcl_val *a, int lo, int hi, pc_mse_divisor *dv) {
     pcl_val t[2] = {0};
@@ -492,7 +496,8 @@ PCL_BODY(a_mse, a) {   /* f, nodes, m, opts, m =, divisor = */
     return pcl_push_results(L, 0, "n", mse);
 }
 
-static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M, A_OPTIONS("opts", mse_keys), PCL_END};
+static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M,
+                                       A_OPTIONS("opts", mse_keys), PCL_END};
 PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
     int N = (int)a[3].x;
     pc_mse_divisor dv;
@@ -513,7 +518,8 @@ PCL_BODY(a_chebyshev, a) {
 }
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
-    {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101, .expect = "an integer >= 2"}, PCL_END};
+    {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101,
+     .expect = "an integer >= 2"}, PCL_END};
 PCL_BODY(a_lagrange_mse, a) {
     pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
@@ -534,82 +540,6 @@ PCL_BODY(a_nelder_mead, a) {
     if (f.failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
     if (st != PC_ENOCONVERGE) CHECK(st);
     return pcl_push_results(L, 0, "N n i", n, x, fx, it);
-}
-
-/* ==== registration ========================================================================== */
-
-#define SIG(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text}
-static const pcl_fn conic_fns[] = {
-    PCL_FN("conic.ed", made, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
-    PCL_FN("conic.ed_k", made, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
-    PCL_FN("conic.circle_k", made, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
-    PCL_FN("conic.ceva", made, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
-    PCL_FN("conic.ceva_k", made, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
-    PCL_FN("conic.ceva_to_ed", made, k_args, "k_ed", "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
-    PCL_FN("conic.ed_to_ceva", made, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
-    SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
-    SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
-    SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
-    SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
-    PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
-    PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
-    SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
-    PCL_FN("conic.triples", made, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
-    SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
-    SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
-    SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
-    SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
-    PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
-    SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
-    PCL_END};
-
-static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
-static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table, .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
-static const pcl_fn oneratio_fns[] = {
-    PCL_FN("oneratio.simplex", o_simplex, abc_args, "curve", "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B."),
-    PCL_FN("oneratio.tetra", made, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
-    PCL_FN("oneratio.bezier3", made, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
-    PCL_FN("oneratio.smooth", made, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
-    PCL_FN("oneratio.desargues", made, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
-    PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
-    PCL_FN("oneratio.closed", made, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
-    PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
-    PCL_END};
-
-static const pcl_fn interp_fns[] = {
-    PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
-    SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
-    PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
-    PCL_FN("interp.conic", made, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
-    SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
-    PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
-    SIG("interp.prototype", i_prototype, proto_args, "interp.prototype(\"desargues\"|\"rational\"|\"trig\", points [, t0, t1]) -> curve\ninterp.prototype(\"exp\"|\"exp1\", points, k [, t0, t1]) -> curve", "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40); desargues and rational take 4 points, the others 3."),
-    SIG("interp.basis", i_basis, basis_args, "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve, affine, deviation", "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params; affine: the weights sum to 1 (membership condition) over [t0, t1], deviation the largest |sum - 1|."),
-    SIG("interp.rational22", i_rational22, r22_args, "interp.rational22({M1, ..., M5}) -> curve, coef", "(4.38) Per coordinate (a1 t^2 + a2 t + a3)/(a4 t^2 + a5 t + 1) through 5 points at t = j/4."),
-    PCL_END};
-
-static const pcl_fn approx_fns[] = {
-    PCL_FN("approx.curve", a_curve, curve_args, "curve", "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t."),
-    SIG("approx.mse", a_mse, mse_args, "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge)."),
-    SIG("approx.optimal_nodes", a_optimal_nodes, optimal_args, "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
-    PCL_FN("approx.chebyshev", a_chebyshev, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
-    PCL_FN("approx.lagrange_mse", a_lagrange_mse, lmse_args, "mse", "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x."),
-    PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
-    PCL_END};
-
-void pcl_open_konopatsky(lua_State *L) {
-    static const char *const names[] = {"conic", "oneratio", "interp", "approx"};
-    const pcl_fn *const fns[] = {conic_fns, oneratio_fns, interp_fns, approx_fns};
-    for (int i = 0; i < 4; i++) {
-        lua_newtable(L);
-        pcl_register(L, -1, fns[i], 0);
-        if (fns[i] == oneratio_fns) {   /* oneratio(A, B, C) is oneratio.simplex */
-            lua_newtable(L);
-            pcl_register(L, -1, oneratio_call, 0);
-            lua_setmetatable(L, -2);
-        }
-        lua_setfield(L, -2, names[i]);
-    }
 }
 
 /* ==== the scheme points of the monograph (konop_schemes.h): each a point, or a vector where the
@@ -656,26 +586,6 @@ static const pcl_arg ceva_scheme_args[] = {SP("A1"), SP("A2"), SP("A3"), A_NUM("
 static const pcl_arg abct_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("t"), PCL_END};
 static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("t"), PCL_END};
 
-static const pcl_fn scheme_conic_fns[] = {
-    PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
-    PCL_FN("conic.five_scheme", scheme, five_scheme_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
-    PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
-    PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
-    PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
-    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
-    PCL_END};
-static const pcl_fn scheme_oneratio_fns[] = {
-    PCL_FN("oneratio.simplex_scheme", scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
-    PCL_FN("oneratio.desargues_scheme", scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
-    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_scheme_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}", "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
-    PCL_END};
-
-/* After pcl_open_konopatsky, with the module table on top (pcl.h, PCL_MODULES). */
-void pcl_open_konopatsky_schemes(lua_State *L) {
-    pcl_register_into(L, lua_gettop(L), "conic", scheme_conic_fns);
-    pcl_register_into(L, lua_gettop(L), "oneratio", scheme_oneratio_fns);
-}
-
 /* ==== the symbolic method of §2.2 (konop_triples.h): conic.scheme{...} ====================== */
 
 /* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
@@ -709,7 +619,8 @@ PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, r
         if (v) memcpy(h, v->h, sizeof(double) * (size_t)(v->n + 1));
         /* the one weight rule: within 1e-9 of 1 is a point (pcl_snap_weight) */
         if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
-            return pcl_fail(L, "points.%s must be a %s point", s, dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
+            return pcl_fail(L, "points.%s must be a %s point", s,
+                            dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
         dim = v->n;
         int i = pc_triples_name(&nm, s);
         if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
@@ -752,15 +663,7 @@ static const pcl_arg scheme_keys[] = {
     {.name = "current", .kind = PCL_ANY, .flags = PCL_REQ, .expect = "{\"C\", \"P\", \"Q\"}"},
     {.name = "result", .kind = PCL_STRING, .flags = PCL_REQ},
     {.name = "range", .kind = PCL_NUMBERS, .lo = 2, .hi = 2}, PCL_END};
-static const pcl_arg scheme_args[] = {{.name = "scheme", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = scheme_keys}, PCL_END};
-static const pcl_fn triples_fns[] = {
-    PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
-    PCL_END};
-
-/* After pcl_open_konopatsky, with the module table on top (pcl.h, PCL_MODULES). */
-void pcl_open_konopatsky_triples(lua_State *L) {
-    pcl_register_into(L, lua_gettop(L), "conic", triples_fns);
-}
+static const pcl_arg scheme_args[] = SPEC(scheme_keys);
 
 /* ==== konopatsky: chapter 1 (konop_ch1.h) ================================================== */
 
@@ -848,8 +751,80 @@ static const pcl_arg rows_args[] = {
 static const pcl_arg lp_args[] = {SP("A1"), SP("A2"), SP("P1"), SP("P2"), SP("P3"), PCL_END};
 static const pcl_arg polar_args[] = {SP("C"), SP("A"), SP("B"), A_NUM("rho"), A_NUM("phi"), PCL_END};
 static const pcl_arg rotate_args[] = {SP("C"), SP("A"), SP("B"), A_NUM("phi"), PCL_END};
-static const pcl_arg eq_args[] = {A_CURVE("c", 0), {.name = "var", .kind = PCL_STRING, .flags = PCL_OPT, .shown = "\"t\""}, PCL_END};
+static const pcl_arg eq_args[] = {A_CURVE("c", 0),
+                                  {.name = "var", .kind = PCL_STRING, .flags = PCL_OPT, .shown = "\"t\""}, PCL_END};
 static const pcl_arg ms_args[] = {A_CURVE("NA", 0), A_CURVE("NB", 0), A_CURVE("NC", 0), A_CURVE("gen", 0), PCL_END};
+
+/* ==== registration ========================================================================== */
+
+#define SIG(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text}
+static const pcl_fn conic_fns[] = {
+    PCL_FN("conic.ed", made, abck_args, "curve", "(2.97) The engineering-discriminant arc A -> B with tangents CA, CB through K = kT1 + (1 - k)C on the median: k < 1/2 hyperbola, 1/2 parabola, > 1/2 ellipse."),
+    PCL_FN("conic.ed_k", made, abcK_args, "k", "The discriminant k = CK/CT1 of the arc (2.97) through K on the median from C."),
+    PCL_FN("conic.circle_k", made, abc_args, "k", "(2.107) k of the circular arc AB whose tangents meet at C (|CA| = |CB|): 1/2 + 2h^2/c^2."),
+    PCL_FN("conic.ceva", made, ceva_args, "curve", "(2.104) Ceva's parametrisation: A2 (t = 0) to A1 (t = 1), tangents through A3; k = 1/4 parabola, < 1/4 hyperbola."),
+    PCL_FN("conic.ceva_k", made, cevaK_args, "k", "(2.100) k = v31/v23 of the conic of the pencil through the point K."),
+    PCL_FN("conic.ceva_to_ed", made, k_args, "k_ed", "§2.1.7 <-> §2.1.6: the engineering discriminant of Ceva's k, the two readings of one arc: k_ED = 2 sqrt k/(1 + 2 sqrt k) (Ceva's 1/4 is ED's 1/2)."),
+    PCL_FN("conic.ed_to_ceva", made, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
+    SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
+    SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
+    SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
+    SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
+    PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
+    PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
+    SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
+    PCL_FN("conic.triples", made, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
+    SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
+    SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
+    SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
+    SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
+    PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
+    SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
+    PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
+    PCL_FN("conic.five_scheme", scheme, five_scheme_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
+    PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
+    PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
+    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
+    PCL_END};
+
+static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
+static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table, .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
+static const pcl_fn oneratio_fns[] = {
+    PCL_FN("oneratio.simplex", o_simplex, abc_args, "curve", "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B."),
+    PCL_FN("oneratio.tetra", made, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
+    PCL_FN("oneratio.bezier3", made, bezier3_args, "curve", "(3.4) The cubic Bezier curve of the de Casteljau scheme (corrected powers)."),
+    PCL_FN("oneratio.smooth", made, smooth_args, "curve", "§3.6 The contour arc of smoothness order n (2 by default): zero curvature at the ends for n >= 2."),
+    PCL_FN("oneratio.desargues", made, abcd_args, "curve", "(3.6) The Desargues arc A -> D with tangents AC and BD, through the centroid."),
+    PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
+    PCL_FN("oneratio.closed", made, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
+    PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
+    PCL_FN("oneratio.simplex_scheme", scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
+    PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_scheme_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}", "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
+    PCL_END};
+
+static const pcl_fn interp_fns[] = {
+    PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
+    SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
+    PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
+    PCL_FN("interp.conic", made, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
+    SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
+    PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
+    SIG("interp.prototype", i_prototype, proto_args, "interp.prototype(\"desargues\"|\"rational\"|\"trig\", points [, t0, t1]) -> curve\ninterp.prototype(\"exp\"|\"exp1\", points, k [, t0, t1]) -> curve", "§4.11 Interpolation on the book's prototypes: (4.35), (4.37), (4.39) with exponents k, its affine variant, (4.40); desargues and rational take 4 points, the others 3."),
+    SIG("interp.basis", i_basis, basis_args, "interp.basis({g1, g2, ...}, points, params [, t0, t1]) -> curve, affine, deviation", "§4.11 The simplex-replacement engine on any basis of Lua functions g_i(t), nodes at params; affine: the weights sum to 1 (membership condition) over [t0, t1], deviation the largest |sum - 1|."),
+    SIG("interp.rational22", i_rational22, r22_args, "interp.rational22({M1, ..., M5}) -> curve, coef", "(4.38) Per coordinate (a1 t^2 + a2 t + a3)/(a4 t^2 + a5 t + 1) through 5 points at t = j/4."),
+    PCL_END};
+
+static const pcl_fn approx_fns[] = {
+    PCL_FN("approx.curve", a_curve, curve_args, "curve", "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t."),
+    SIG("approx.mse", a_mse, mse_args, "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge)."),
+    SIG("approx.optimal_nodes", a_optimal_nodes, optimal_args, "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
+    PCL_FN("approx.chebyshev", a_chebyshev, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
+    PCL_FN("approx.lagrange_mse", a_lagrange_mse, lmse_args, "mse", "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x."),
+    PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
+    PCL_END};
 
 static const pcl_fn ch1_fns[] = {
     PCL_FN("konopatsky.area_k", k_area_k, lambdas, "k", "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
@@ -863,9 +838,19 @@ static const pcl_fn ch1_fns[] = {
     PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...", "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
     PCL_END};
 
-/* After pcl_open_konopatsky (pcl.h, PCL_MODULES). */
-void pcl_open_konopatsky_ch1(lua_State *L) {
-    lua_newtable(L);
-    pcl_register(L, -1, ch1_fns, 0);
-    lua_setfield(L, -2, "konopatsky");
+/* The tables conic, oneratio, interp, approx and konopatsky, in the order :help lists them. */
+void pcl_open_konopatsky(lua_State *L) {
+    static const char *const names[] = {"conic", "oneratio", "interp", "approx", "konopatsky"};
+    const pcl_fn *const fns[] = {conic_fns, oneratio_fns, interp_fns, approx_fns, ch1_fns};
+    int module = lua_gettop(L);
+    for (int i = 0; i < 5; i++) {
+        lua_newtable(L);
+        pcl_register(L, -1, fns[i], 0);
+        if (fns[i] == oneratio_fns) {   /* oneratio(A, B, C) is oneratio.simplex */
+            lua_newtable(L);
+            pcl_register(L, -1, oneratio_call, 0);
+            lua_setmetatable(L, -2);
+        }
+        lua_setfield(L, module, names[i]);
+    }
 }

@@ -33,4 +33,15 @@ err(function() approx.mse(runge, x, {1}) end, "approx.mse: argument #3 (opts) ho
 err(function() approx.optimal_nodes(runge, -1, 1, 4, 2) end, "approx.optimal_nodes: argument #5 (m) must be a number of samples 4..100000, got 2", "m below N")
 err(function() interp.arc(pts, P(0.3, 1), {0, 1}) end, "interp.arc: argument #3 (params) must hold 4 numbers (one per point), got 2", "params third")
 err(function() interp.arc(pts, P(0.3, 1), P(1, 1, 1)) end, "interp.arc: argument #3 (Cn) is 3-D", "Cn's dimension")
+-- the spec forms' checks (konop_form.c): the row shows the value that broke the condition
+err(function() conic.ellipse{by = "diameter", A = P(4, 0), B = P(2, 1), lambda = 0.5} end,
+    "conic.ellipse: option 'K' must be a point, got nil", "diameter without K")
+err(function() conic.ellipse{by = "diameter", K = P(-4, 0), A = P(4, 0), B = P(2, 1), lambda = 1.5} end,
+    "conic.ellipse: option 'lambda' must be a number in (0, 1), got 1.5", "lambda outside (0, 1)")
+err(function() conic.ellipse{by = "diameter", K = P(-4, 0), A = P(4, 0), B = P(2, 1)} end,
+    "conic.ellipse: option 'lambda' must be a number in (0, 1), got nil", "lambda missing")
+err(function() conic.ellipse{A = P(4, 0), B = P(0, 2)} end, "conic.ellipse: option 'C' must be a point, got nil",
+    "C missing")
+err(function() conic.circle{C = P(0, 0), A = P(1, 0), B = P(0, 1), delta = 4} end,
+    "conic.circle: option 'delta' must be an angle in (0, pi), got 4", "delta outside (0, pi)")
 check.done()
