@@ -408,8 +408,7 @@ PCL_BODY(l_plane_meet, a) {
     int st = pc_meet_planes4(p, q, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pcl_snap_weight(4, out);
-    memcpy(pcl_newvalue(L, 4)->h, out, sizeof out);
-    return 1;
+    return pcl_push_results(L, 4, "w", out);
 }
 
 #define A_LOC4(nm) {.name = nm, .kind = PCL_LOC, .dim = 4}

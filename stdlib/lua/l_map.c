@@ -392,10 +392,7 @@ static int l_index(lua_State *L) {
     pc_map *f = pcl_tomap(L, 1);
     if (!f) return 0;
     const char *k = lua_tostring(L, 2);
-    if (!strcmp(k, "nin") || !strcmp(k, "nout")) {
-        lua_pushinteger(L, k[1] == 'i' ? f->nin : f->nout);
-        return 1;
-    }
+    if (!strcmp(k, "nin") || !strcmp(k, "nout")) return pcl_push_results(L, 0, "i", k[1] == 'i' ? f->nin : f->nout);
     int i = pc_map_unit_name(k);
     if (i < 0) return 0;
     int st = pc_map_unit_image(f, i, pcl_newvalue(L, f->nout)->h);
