@@ -1,6 +1,7 @@
 /* The maps made of numbers alone, by kind, and the map operations' why-table (map_make.h). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "map_make.h"
 
 int pc_map_make(pc_map *f, pc_map_kind kind, const double *x) {
@@ -29,6 +30,14 @@ int pc_map_make(pc_map *f, pc_map_kind kind, const double *x) {
         return pc_map_perspective_pqr(f, x[0], x[1], x[2]);
     }
     return PC_EDOMAIN;
+}
+
+int pc_map_kind_named(const char *name) {
+    static const char *const names[] = {"identity", "orthographic", "axonometric", "isometric", "dimetric",
+                                        "oblique", "cavalier", "cabinet", "perspective_pqr"};
+    for (int i = 0; i < (int)(sizeof names / sizeof names[0]); i++)
+        if (!strcmp(name, names[i])) return i;
+    return -1;
 }
 
 int pc_map_translate_finite(pc_map *f, int n, const double *v) {

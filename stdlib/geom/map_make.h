@@ -22,6 +22,9 @@ typedef enum {
 /* The map of the kind from its numbers x in order into f: the status of the kind's own
  * function (PC_EDOMAIN for an unknown kind or axis, n outside 1..PC_MAXDIM). */
 int pc_map_make(pc_map *f, pc_map_kind kind, const double *x);
+/* The kind the API names ("identity", "orthographic", ..., "perspective_pqr": the enum's names
+ * in lower case), or -1 for any other name. */
+int pc_map_kind_named(const char *name);
 
 /* pc_map_translate by a finite vector v (one made by overflow gives no map): PC_ENONFINITE. */
 int pc_map_translate_finite(pc_map *f, int n, const double *v);

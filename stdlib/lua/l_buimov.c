@@ -105,8 +105,8 @@ PCL_BODY(l_conic_coef, a) {
     return pcl_push_results(L, 0, "N", 6, out);
 }
 
-static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"),
-                                       A_NUMOPT("th0", 0, "0"), {.name = "th1", .kind = PCL_NUMBER, .flags = PCL_OPT}, PCL_END};
+static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"), A_NUMOPT("th0", 0, "0"),
+                                       A_NUMOPT("th1", 0, NULL), PCL_END};
 PCL_BODY(l_ellipse, a) {
     double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
     int st;
@@ -119,22 +119,25 @@ PCL_BODY(l_parabola, a) {
     return made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
 }
 
-static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300), A_NUMIN("t1", -300, 300), PCL_END};
+static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300),
+                                         A_NUMIN("t1", -300, 300), PCL_END};
 PCL_BODY(l_hyperbola, a) {
     int st;
     return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
 }
 
-static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, {.name = "B", .kind = PCL_NUMBER, .flags = PCL_POS},
+static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, A_POSNUM("B"),
                                       {.name = "step", .kind = PCL_NUMBER, .flags = PCL_REQ},
-                                      {.name = "n", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .lo = 0, .hi = 1000000},
-                                      {.name = "method", .kind = PCL_ENUM, .choices = pc_gen_method_names}, PCL_END};
-static const pcl_arg points_args[] = {A_ENUM("kind", pc_gen_kind_names), {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
+                                      {.name = "n", .kind = PCL_INTEGER, .flags = PCL_REQ | PCL_RANGE, .hi = 1000000},
+                                      A_ENUM("method", pc_gen_method_names), PCL_END};
+static const pcl_arg points_args[] = {A_ENUM("kind", pc_gen_kind_names),
+                                      {.name = "opts", .kind = PCL_OPTIONS, .keys = points_keys}, PCL_END};
 PCL_BODY(l_points, a) {
     int n = (int)a[5].x;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
     pc_why_call why;
-    pcl_check(L, pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why), why.row);
+    int st = pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why);
+    pcl_check(L, st, why.row);
     return pcl_push_results(L, 2, "P", n + 1, xy);
 }
 
@@ -187,7 +190,7 @@ PCL_BODY(l_blend, a) {
 }
 
 static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
-                                       {.name = "t", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
+                                       A_POSOPT("t", 1), PCL_END};
 PCL_BODY(l_hermite, a) {
     double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x};
     int d = a[0].n, st;
@@ -205,10 +208,9 @@ PCL_BODY(l_hermite_coeffs, a) {
 
 static const char *const spline_ends[] = {"clamped", "natural", "cyclic", "anticyclic", NULL};
 static const char *const spline_params[] = {"uniform", "chord", NULL};
-static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = spline_ends, .dflt = PC_BOOK_NATURAL},
-                                      {.name = "d0", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
-                                      {.name = "d1", .kind = PCL_VECTOR, .flags = PCL_SAMEDIM},
-                                      {.name = "param", .kind = PCL_ENUM, .choices = spline_params},
+static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = spline_ends,
+                                       .dflt = PC_BOOK_NATURAL}, A_SAMEVECTOR("d0"), A_SAMEVECTOR("d1"),
+                                      A_ENUM("param", spline_params),
                                       {.name = "lengths", .kind = PCL_NUMBERS, .lo = 1}, PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};
@@ -233,8 +235,7 @@ PCL_BODY(l_helix, a) {
 }
 
 static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
-                                      A_NUMOPT("ph1", PI, "pi"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
-                                      {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
+                                      A_NUMOPT("ph1", PI, "pi"), A_POINTOPT("C", 3), A_POSOPT("r", 1), PCL_END};
 PCL_BODY(l_sphere, a) {
     int st;   /* C absent: its cleared value, the origin */
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
@@ -242,15 +243,15 @@ PCL_BODY(l_sphere, a) {
     return pcl_push_made_surface(L, s, &st, "buimov.sphere");
 }
 
-static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), {.name = "C", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3},
-                                     {.name = "r", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1}, PCL_END};
+static const pcl_arg frame_args[] = {A_NUM("th"), A_NUM("ph"), A_POINTOPT("C", 3), A_POSOPT("r", 1), PCL_END};
 PCL_BODY(l_sphere_frame, a) {
     double f[15];
     pc_sphere_frame_at(a[2].v, a[3].x, a[0].x, a[1].x, f);   /* the unit sphere at the origin by default */
     return pcl_push_results(L, 3, "p v v v v", f, f + 3, f + 6, f + 9, f + 12);
 }
 
-static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a square matrix (a list of rows)"}, PCL_END};
+static const pcl_arg det_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a square matrix (a list of rows)"},
+                                   PCL_END};
 PCL_BODY(l_det, a) {
     int n = (int)luaL_len(L, 1), nc;
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
@@ -258,7 +259,8 @@ PCL_BODY(l_det, a) {
     return pcl_push_results(L, 0, "n", pc_det(n, m));
 }
 
-static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_TABLE, .expect = "a list of maps from 3-D to 2-D"},
+#define VIEWS "a list of maps from 3-D to 2-D"
+static const pcl_arg reconstruct_args[] = {{.name = "views", .kind = PCL_TABLE, .expect = VIEWS},
                                            A_POINTS("images", 2, 2, 64), PCL_END};
 PCL_BODY(l_reconstruct, a) {
     int n = (int)luaL_len(L, 1);

@@ -77,7 +77,8 @@ PCL_BODY(l_poly_spline, a) {
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
     pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
     pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
-    if (st == PC_EDOMAIN) return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
+    if (st == PC_EDOMAIN)
+        return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
     if (!c) return knot_error(L, st, bad);
     pcl_pushcurve(L, c, "korotky.poly_spline");
     pcl_push_rows(L, n - 1, 4, coef);
@@ -99,11 +100,11 @@ PCL_BODY(l_ferguson, a) {
     return 1;
 }
 
-static const pcl_arg lambda_keys[] = {
-    {.name = "TA", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_tangent, .expect = TANGENT " (the tangent at the first point)"},
-    {.name = "TE", .kind = PCL_ANY, .flags = PCL_REQ, .read = read_tangent, .expect = TANGENT " (the tangent at the last point)"},
-    A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"), {.name = "lambda", .kind = PCL_NUMBERS, .hi = MAXPTS, .shown = "{...}"},
-    PCL_END};
+#define END_TANGENT(nm, at) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_tangent, \
+                           .expect = TANGENT " (the tangent at the " at " point)"}
+#define A_LIST(nm, n) {.name = nm, .kind = PCL_NUMBERS, .hi = n, .shown = "{...}"}   /* an optional key */
+static const pcl_arg lambda_keys[] = {END_TANGENT("TA", "first"), END_TANGENT("TE", "last"), A_NUMOPT("wA", 1, "1"),
+                                      A_NUMOPT("wE", 1, "1"), A_LIST("lambda", MAXPTS), PCL_END};
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
 PCL_BODY(l_ferguson_lambda, a) {
@@ -117,8 +118,8 @@ PCL_BODY(l_ferguson_lambda, a) {
     return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
 }
 
-static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"),
-                                        {.name = "start", .kind = PCL_NUMBERS, .hi = 2 * MAXPTS, .shown = "{...}"}, PCL_END};
+static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"), A_LIST("start", 2 * MAXPTS),
+                                        PCL_END};
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
 PCL_BODY(l_ferguson_tangents, a) {
@@ -136,9 +137,8 @@ PCL_BODY(l_ferguson_tangents, a) {
 }
 
 static const char *const ROOTS[] = {"min", "max", NULL};
-static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"),
-                                     A_POSNUM("z1"), {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS},
-                                     PCL_END};
+static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"), A_POSNUM("z1"),
+                                     {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS}, PCL_END};
 PCL_BODY(l_ferguson_substitution, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     int n = a[0].n;
@@ -173,7 +173,8 @@ static const pcl_arg elastic_keys[] = {
      .expect = "{tangent at the first point, tangent at the last} (slopes or non-zero 2-D vectors)"},
     {.name = "pieces", .kind = PCL_INTEGER, .flags = PCL_RANGE, .lo = 1, .hi = 4, .shown = "4"},
     {.name = "length", .kind = PCL_NUMBER, .flags = PCL_POS, .shown = "free"}, PCL_END};
-static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN), A_OPTIONS("opts", elastic_keys), PCL_END};
+static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN), A_OPTIONS("opts", elastic_keys),
+                                       PCL_END};
 PCL_BODY(l_elastic, a) {
     double E;
     int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
@@ -191,7 +192,8 @@ static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference
 PCL_BODY(l_deviation, a) {
     pc_curve *m = a[0].obj, *r = a[1].obj;
     if (m->dim != r->dim)
-        return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)", r->dim, m->dim);
+        return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)",
+                        r->dim, m->dim);
     double d;
     int st = pc_curve_hausdorff(m, r, (int)a[2].x, &d);
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
@@ -242,7 +244,8 @@ PCL_BODY(l_conic_arc, a) {
 #define REQ3(nm, k) {.name = nm, .kind = k, .flags = PCL_REQ, .dim = 3}   /* a required 3-D key */
 static const pcl_arg sweep_keys[] = {REQ3("U", PCL_CURVE), REQ3("V", PCL_CURVE), REQ3("T", PCL_CURVE),
                                      REQ3("P", PCL_CURVE), REQ3("Q", PCL_CURVE), PCL_END};
-static const pcl_arg sweep_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = sweep_keys}, PCL_END};
+#define CALLTABLE(nm, k) {.name = nm, .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = k}   /* korotky.x{...} */
+static const pcl_arg sweep_args[] = {CALLTABLE("guides", sweep_keys), PCL_END};
 PCL_BODY(l_conic_sweep, a) {
     int st;
     double u = 0;
@@ -252,8 +255,7 @@ PCL_BODY(l_conic_sweep, a) {
     return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
 }
 
-static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"),
-                                    {.name = "origin", .kind = PCL_POINT, .flags = PCL_OPT, .dim = 3}, PCL_END};
+static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"), A_POINTOPT("origin", 3), PCL_END};
 PCL_BODY(l_dome_rect, a) {
     int st;
     pc_surface *s = pc_surface_dome_rect(a[0].x, a[1].x, a[2].x, a[3].present ? a[3].v : NULL, &st);
@@ -274,10 +276,9 @@ static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_v
     if (lua_type(L, idx) == LUA_TNUMBER) return isfinite(out->x) && out->x > 0;
     return v && v->n == 3 && pc_loc(3, v->h, out->v) == PC_OK;
 }
-#define CORNER(nm) {.name = nm, .kind = PCL_ANY, .read = read_corner, .expect = "a 2-D or 3-D point"}
+#define CORNER(nm) A_ANY(nm, read_corner, "a 2-D or 3-D point")
 static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
-                                   {.name = "h | D", .kind = PCL_ANY, .read = read_height,
-                                    .expect = "a positive number or the 3-D apex D"}, PCL_END};
+                                   A_ANY("h | D", read_height, "a positive number or the 3-D apex D"), PCL_END};
 PCL_BODY(l_dome_tri, a) {
     double h = a[3].x;
     pc_why_call why;
@@ -313,7 +314,8 @@ static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
         pcl_val v = {0};
         lua_geti(L, idx, i + 1);
         if (!read_guide(L, lua_gettop(L), &g4, &v))
-            pcl_keyfail(L, a->name, "[%d] must be a 4-D point, vector or curve, got %s", i + 1, pcl_shown(L, lua_gettop(L)));
+            pcl_keyfail(L, a->name, "[%d] must be a 4-D point, vector or curve, got %s", i + 1,
+                        pcl_shown(L, lua_gettop(L)));
         lua_pop(L, 1);
         g[i].c = v.obj;
         if (!v.obj) memcpy(g[i].h, v.v, sizeof g[i].h);
@@ -323,7 +325,7 @@ static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 #define PENCIL(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_pencil, .shown = "{g1, g2, g3}", \
                     .expect = "a list of three 4-D points, vectors or curves"}
 static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
-static const pcl_arg pencils_args[] = {{.name = "pencils", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = pencil_keys}, PCL_END};
+static const pcl_arg pencils_args[] = {CALLTABLE("pencils", pencil_keys), PCL_END};
 static int l_two_pencils(lua_State *L) {
     pc_pencil_point om[3], de[3];
     pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
@@ -340,7 +342,7 @@ static int l_two_pencils(lua_State *L) {
 
 static const pcl_arg revolve_keys[] = {REQ3("A", PCL_POINT), REQ3("B", PCL_POINT), REQ3("nA", PCL_VECTOR),
                                        REQ3("nB", PCL_VECTOR), REQ3("ridge", PCL_CURVE), PCL_END};
-static const pcl_arg revolve_args[] = {{.name = "data", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = revolve_keys}, PCL_END};
+static const pcl_arg revolve_args[] = {CALLTABLE("data", revolve_keys), PCL_END};
 PCL_BODY(l_conic_revolve, a) {
     int st;
     pc_why_call why;
@@ -354,7 +356,7 @@ PCL_BODY(l_conic_revolve, a) {
                    .expect = "a 3-D curve, point or vector"}
 static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
                                      GUIDE("H"), GUIDE("Q"), PCL_END};
-static const pcl_arg ridge_args[] = {{.name = "guides", .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = ridge_keys}, PCL_END};
+static const pcl_arg ridge_args[] = {CALLTABLE("guides", ridge_keys), PCL_END};
 PCL_BODY(l_ridge_shell, a) {
     pc_pencil_point g[8];
     for (int i = 0; i < 8; i++) {
@@ -383,9 +385,8 @@ static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pcl_readone(L, idx, 1, 0, &(const pcl_arg){.name = a->name, .kind = PCL_NUMBERS, .lo = 6, .hi = 6}, 0, &coef);
     return 1;
 }
-static const pcl_arg elements_args[] = {{.name = "arc | {a, b, c, d, e, f}", .kind = PCL_ANY, .read = read_conic,
-                                         .expect = "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"},
-                                        PCL_END};
+#define CONIC "a 2-D conic arc (a rational quadratic Bezier curve) or the coefficients {a, b, c, d, e, f}"
+static const pcl_arg elements_args[] = {A_ANY("arc | {a, b, c, d, e, f}", read_conic, CONIC), PCL_END};
 PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
@@ -407,8 +408,7 @@ PCL_BODY(l_plane_meet, a) {
     int st = pc_meet_planes4(p, q, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pcl_snap_weight(4, out);
-    memcpy(pcl_newvalue(L, 4)->h, out, sizeof out);
-    return 1;
+    return pcl_push_results(L, 4, "w", out);
 }
 
 #define A_LOC4(nm) {.name = nm, .kind = PCL_LOC, .dim = 4}

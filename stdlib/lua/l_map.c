@@ -30,13 +30,12 @@ static int made(lua_State *L, int st) {
     return 1;
 }
 
-/* A map of pc_map_make: the declared numbers in order (an enum: the index of its choice). */
-static int make(lua_State *L, pc_map_kind kind) {
-    pcl_val a[3] = {0};
-    PCL_READ(L, a);
-    double x[3];
-    for (int i = 0; i < 3; i++) x[i] = a[i].s ? a[i].n : a[i].x;
-    return made(L, pc_map_make(pcl_newmap(L), kind, x));
+/* A map of pc_map_make, of the kind the function is named by (map.isometric): the declared
+ * numbers in order (an enum: the index of its choice). */
+PCL_BODY(l_make, a) {
+    double x[3] = {0};
+    for (int i = 0; i < pcl_nvalues(L) && i < 3; i++) x[i] = a[i].s ? a[i].n : a[i].x;
+    return made(L, pc_map_make(pcl_newmap(L), pc_map_kind_named(strrchr(pcl_name(L), '.') + 1), x));
 }
 
 static const char *const CONVENTIONS[] = {"row", "column", NULL};   /* index 0: the textbook's rows */
@@ -48,7 +47,8 @@ static const char *const CONVENTIONS[] = {"row", "column", NULL};   /* index 0: 
 static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
     int t = lua_type(L, idx);
     if (t == LUA_TUSERDATA && luaL_getmetafield(L, idx, "__len") != LUA_TNIL) lua_pop(L, 1);
-    else if (t != LUA_TTABLE) return pcl_argfail(L, k, "must be a table of points or a simplex, got %s", pcl_shown(L, idx));
+    else if (t != LUA_TTABLE)
+        return pcl_argfail(L, k, "must be a table of points or a simplex, got %s", pcl_shown(L, idx));
     int m = (int)luaL_len(L, idx);
     if (m > PC_MAXDIM + 1) return pcl_argfail(L, k, "holds %d points; the largest dimension is %d", m, PC_MAXDIM);
     static const pcl_arg pt = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
@@ -76,9 +76,8 @@ PCL_BODY(l_affine, a) {
     return 1;
 }
 
-static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), {.name = "X", .kind = PCL_LOC, .flags = PCL_SAMEDIM},
-                                     {.name = "Y", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT},
-                                     {.name = "Z", .kind = PCL_LOC, .flags = PCL_SAMEDIM | PCL_OPT}, PCL_END};
+static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), A_SAMELOC("X", 0), A_SAMELOC("Y", PCL_OPT),
+                                     A_SAMELOC("Z", PCL_OPT), PCL_END};
 static int l_frame(lua_State *L) {
     int m = lua_gettop(L);
     if (m - 1 > PC_MAXDIM) return pcl_fail(L, "%d axes; the largest dimension is %d", m - 1, PC_MAXDIM);
@@ -86,24 +85,25 @@ static int l_frame(lua_State *L) {
     PCL_READ(L, a);
     int n = a[0].n;
     double axes[PC_MAXDIM * PC_MAXDIM];
-    static const pcl_arg more = {.kind = PCL_LOC, .flags = PCL_SAMEDIM};
+    static const pcl_arg more = A_SAMELOC(NULL, 0);
     int k = 0;
     for (int j = 2; j <= m; j++, k++) {
         pcl_val extra, *v = j <= 4 ? &a[j - 1] : &extra;
         if (j > 4) pcl_readone(L, j, j, 0, &more, n, &extra);
         if (!v->present) break;
-        for (int i = 0; i < n; i++) axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);   /* a unit point: X - O */
+        for (int i = 0; i < n; i++)   /* a unit point: X - O */
+            axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);
     }
     pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes);
     return 1;
 }
 
 static const pcl_arg dim_arg[] = {A_INT("n", 1, PC_MAXDIM), PCL_END};
-static int l_identity(lua_State *L) { return make(L, PC_MM_IDENTITY); }
 
 /* ---- the constructors of the map table ------------------------------------------------------ */
 
-static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = "a table of rows (tables of numbers)"}, CONVENTION, PCL_END};
+#define ROWS "a table of rows (tables of numbers)"
+static const pcl_arg matrix_args[] = {{.name = "rows", .kind = PCL_TABLE, .expect = ROWS}, CONVENTION, PCL_END};
 PCL_BODY(l_matrix_ctor, a) {
     int rowvec = a[1].n == 0, nr = (int)luaL_len(L, 1), nc = 0;
     if (nr < 2 || nr > PC_MAXDIM + 1)
@@ -111,7 +111,8 @@ PCL_BODY(l_matrix_ctor, a) {
                            "(\"row\": n + 1 rows of m + 1), n and m 1..%d", nr, PC_MAXDIM);
     double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
     pcl_read_rows(L, 1, 0, m, &nr, &nc);
-    return made(L, pc_map_from_matrix(pcl_newmap(L), rowvec ? nr - 1 : nc - 1, rowvec ? nc - 1 : nr - 1, m, rowvec));
+    int nin = rowvec ? nr - 1 : nc - 1, nout = rowvec ? nc - 1 : nr - 1;
+    return made(L, pc_map_from_matrix(pcl_newmap(L), nin, nout, m, rowvec));
 }
 
 static const pcl_arg translate_args[] = {A_VECTOR("V", 0), PCL_END};
@@ -119,7 +120,8 @@ PCL_BODY(l_translate, a) {
     return made(L, pc_map_translate_finite(pcl_newmap(L), a[0].n, a[0].v));
 }
 
-static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = "a number or a list of numbers {kx, ky, ...}"},
+#define FACTORS "a number or a list of numbers {kx, ky, ...}"
+static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = FACTORS},
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_scale, a) {
     pcl_val c = {0};
@@ -133,7 +135,8 @@ PCL_BODY(l_scale, a) {
         pcl_readone(L, 1, 1, 0, &k0, 0, &v);
         if (lua_type(L, 2) == LUA_TNUMBER) pcl_readone(L, 2, 2, 0, &dim, 0, &c), n = (int)c.x, c.present = 0;
         else if (pcl_tovalue(L, 2)) pcl_readone(L, 2, 2, 0, &centre, 0, &c), n = c.n;
-        else return pcl_argfail(L, 2, "must be a point or a dimension (a single factor k needs one), got %s", pcl_shown(L, 2));
+        else return pcl_argfail(L, 2, "must be a point or a dimension (a single factor k needs one), got %s",
+                                pcl_shown(L, 2));
         for (int i = 0; i < n; i++) k[i] = v.x;
     } else if (lua_istable(L, 1)) {
         pcl_val v = {.list = k, .cap = PC_MAXDIM};
@@ -141,22 +144,22 @@ PCL_BODY(l_scale, a) {
         n = v.n;
         if (a[1].present) pcl_readone(L, 2, 2, 0, &centre, n, &c);
     } else {
-        return pcl_argfail(L, 1, "must be a number or a list of numbers {kx, ky, ...}, got %s", pcl_shown(L, 1));
+        return pcl_argfail(L, 1, "must be " FACTORS ", got %s", pcl_shown(L, 1));
     }
     pc_map_scale(pcl_newmap(L), n, k, c.present ? c.v : NULL);
     return 1;
 }
 
-static const pcl_arg rotate_args[] = {{.name = "angle | A", .kind = PCL_ANY, .flags = PCL_OPT}, {.name = "centre | B", .kind = PCL_ANY, .flags = PCL_OPT},
-                                      {.name = "angle", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
+#define A_ANYOPT(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}
+static const pcl_arg rotate_args[] = {A_ANYOPT("angle | A"), A_ANYOPT("centre | B"), A_ANYOPT("angle"), PCL_END};
 PCL_BODY(l_rotate, a) {
     pcl_val A = {0}, B = {0}, t = {0};
     static const pcl_arg angle = A_NUM("angle");
     if (lua_type(L, 1) != LUA_TNUMBER && pcl_tovalue(L, 1)) {       /* about an axis in space */
-        static const pcl_arg pA = A_POINT("A", 3), pB = {.name = "B", .kind = PCL_LOC, .flags = PCL_SAMEDIM};
-        static const pcl_arg dir = {.name = "direction", .kind = PCL_LOC, .flags = PCL_SAMEDIM};
+        static const pcl_arg pA = A_POINT("A", 3), pB = A_SAMELOC("B", 0), dir = A_SAMELOC("direction", 0);
         if (pcl_tovalue(L, 1)->n != 3)
-            return pcl_argfail(L, 1, "must be 3-D, got %d-D (a rotation in the plane is map.rotate(angle [, centre]))", pcl_tovalue(L, 1)->n);
+            return pcl_argfail(L, 1, "must be 3-D, got %d-D (a rotation in the plane is map.rotate(angle [, centre]))",
+                               pcl_tovalue(L, 1)->n);
         pcl_readone(L, 1, 1, 0, &pA, 0, &A);
         pcl_value *q = pcl_tovalue(L, 2);
         int is_dir = q && pc_kind_of(q->h[q->n]) == PC_KIND_VECTOR;
@@ -170,7 +173,8 @@ PCL_BODY(l_rotate, a) {
         static const pcl_arg centre = A_POINT("centre", 2);
         pcl_value *p = pcl_tovalue(L, 2);
         if (p && p->n != 2)
-            return pcl_argfail(L, 2, "must be 2-D, got %d-D (a rotation in space is map.rotate(A, B or direction, angle))", p->n);
+            return pcl_argfail(L, 2, "must be 2-D, got %d-D (a rotation in space is map.rotate(A, B or direction, "
+                               "angle))", p->n);
         pcl_readone(L, 2, 2, 0, &centre, 0, &B);
     }
     pc_map_rotate2(pcl_newmap(L), t.x, B.present ? B.v : NULL);
@@ -191,33 +195,29 @@ static int axis_of(lua_State *L, int k, int n) {
     if (!s && lua_type(L, k) == LUA_TNUMBER && i == floor(i) && i >= 1 && i <= n) return (int)i - 1;
     return pcl_argfail(L, k, "must be an axis 1..%d (or \"x\", \"y\", ...), got %s", n, pcl_shown(L, k));
 }
-static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .kind = PCL_ANY}, {.name = "j", .kind = PCL_ANY},
-                                     A_NUM("k"), PCL_END};
+static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .kind = PCL_ANY},
+                                     {.name = "j", .kind = PCL_ANY}, A_NUM("k"), PCL_END};
 PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
-    if (i == j) return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
+    if (i == j)
+        return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
     pc_map_shear(pcl_newmap(L), n, i, j, a[3].x);
     return 1;
 }
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
-static const pcl_arg ortho_args[] = {{.name = "axis", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = AXES, .dflt = 2}, PCL_END};
-static int l_orthographic(lua_State *L) { return make(L, PC_MM_ORTHOGRAPHIC); }
+static const pcl_arg ortho_args[] = {{.name = "axis", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = AXES, .dflt = 2},
+                                     PCL_END};
 static const pcl_arg axono_args[] = {A_NUM("phi"), A_NUM("theta"), PCL_END};
-static int l_axonometric(lua_State *L) { return make(L, PC_MM_AXONOMETRIC); }
-static int l_isometric(lua_State *L) { return make(L, PC_MM_ISOMETRIC); }
-static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = "a number between 0 and 1 (the foreshortening of the z axis)"}, PCL_END};
-static int l_dimetric(lua_State *L) { return make(L, PC_MM_DIMETRIC); }
+#define FZ "a number between 0 and 1 (the foreshortening of the z axis)"
+static const pcl_arg dimetric_args[] = {{.name = "fz", .kind = PCL_NUMBER, .expect = FZ}, PCL_END};
 #define ALPHA {.name = "alpha", .kind = PCL_NUMBER, .flags = PCL_OPT, .dflt = 0.78539816339744831}
 static const pcl_arg oblique_args[] = {A_NUM("k"), ALPHA, PCL_END};
-static int l_oblique(lua_State *L) { return make(L, PC_MM_OBLIQUE); }
 static const pcl_arg alpha_arg[] = {ALPHA, PCL_END};
-static int l_cavalier(lua_State *L) { return make(L, PC_MM_CAVALIER); }
-static int l_cabinet(lua_State *L) { return make(L, PC_MM_CABINET); }
 static const pcl_arg pqr_args[] = {A_NUM("p"), A_NUM("q"), A_NUM("r"), PCL_END};
-static int l_perspective_pqr(lua_State *L) { return make(L, PC_MM_PERSPECTIVE_PQR); }
 
-static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3), {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
+static const pcl_arg persp_args[] = {A_POINT("eye", 3), A_POINT("p0", 3),
+                                     {.name = "up", .kind = PCL_VECTOR, .flags = PCL_OPT, .dim = 3}, PCL_END};
 PCL_BODY(l_perspective, a) {
     int st = pc_map_perspective(pcl_newmap(L), a[0].v, a[1].v, a[2].present ? a[2].v : NULL);
     return st == PC_OK ? 1 : pcl_fail(L, "%s", pc_map_perspective_why(st, a[2].present));
@@ -247,14 +247,16 @@ static int read_input(lua_State *L, const pc_map *f, int first, int last, double
     pcl_value *p = m >= 1 ? pcl_tovalue(L, first) : NULL;
     if (p) {
         if (m != 1) return pcl_fail(L, "takes one point or vector, got %d arguments", m);
-        if (p->n != nin) return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
+        if (p->n != nin)
+            return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
         memcpy(in, p->h, sizeof(double) * (size_t)(nin + 1));
         pcl_snap_weight(nin, in);
         return 0;
     }
+    const char *got = !m ? "nothing" : lua_istable(L, first) ? "a table (map a list with a loop, or a curve with f(c))"
+                                                              : luaL_typename(L, first);
     if (m != nin || lua_type(L, first) != LUA_TNUMBER)
-        return pcl_fail(L, "takes a %d-D point or vector, or %d coordinates; got %s", nin, nin,
-                        m ? (lua_istable(L, first) ? "a table (map a list with a loop, or a curve with f(c))" : luaL_typename(L, first)) : "nothing");
+        return pcl_fail(L, "takes a %d-D point or vector, or %d coordinates; got %s", nin, nin, got);
     static const pcl_arg x = {.kind = PCL_NUMBER};
     for (int i = 0; i < nin; i++) {
         pcl_val v;
@@ -326,7 +328,8 @@ PCL_METHOD(l_compose, pc_map *f, a) {
 static int l_inverse(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
     int st = pc_map_inverse(f, pcl_newmap(L));
-    if (st == PC_EDIM) return pcl_fail(L, "a map from %d-D to %d-D (a projection or an embedding) has no inverse", f->nin, f->nout);
+    if (st == PC_EDIM)
+        return pcl_fail(L, "a map from %d-D to %d-D (a projection or an embedding) has no inverse", f->nin, f->nout);
     return made(L, st);
 }
 
@@ -340,8 +343,7 @@ PCL_METHOD(l_matrix, pc_map *f, a) {
 }
 
 static int l_is_affine(lua_State *L) {
-    lua_pushboolean(L, pc_map_is_affine(pcl_read(L, NULL, 0)));
-    return 1;
+    return pcl_push_results(L, 0, "b", pc_map_is_affine(pcl_read(L, NULL, 0)));
 }
 
 static int l_vanishing(lua_State *L) {
@@ -390,10 +392,7 @@ static int l_index(lua_State *L) {
     pc_map *f = pcl_tomap(L, 1);
     if (!f) return 0;
     const char *k = lua_tostring(L, 2);
-    if (!strcmp(k, "nin") || !strcmp(k, "nout")) {
-        lua_pushinteger(L, k[1] == 'i' ? f->nin : f->nout);
-        return 1;
-    }
+    if (!strcmp(k, "nin") || !strcmp(k, "nout")) return pcl_push_results(L, 0, "i", k[1] == 'i' ? f->nin : f->nout);
     int i = pc_map_unit_name(k);
     if (i < 0) return 0;
     int st = pc_map_unit_image(f, i, pcl_newvalue(L, f->nout)->h);
@@ -415,7 +414,7 @@ static const pcl_fn affine_call[] = {
     PCL_END};
 static const pcl_fn affine_fns[] = {
     {.name = "affine.frame", .fn = l_frame, .args = frame_args, .sig = "affine.frame(O, X, Y [, Z]) -> f", .help = "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors."},
-    PCL_FN("affine.identity", l_identity, dim_arg, "f", "The identity map of n-space."), PCL_END};
+    PCL_FN("affine.identity", l_make, dim_arg, "f", "The identity map of n-space."), PCL_END};
 static const pcl_fn ctors[] = {
     PCL_FN("map.matrix", l_matrix_ctor, matrix_args, "f", "The map of a homogeneous matrix (a table of rows): by default (m+1) rows of n+1 acting on column vectors; \"row\": the textbook's p' = p T, n+1 rows of m+1."),
     PCL_FN("map.translate", l_translate, translate_args, "f", "The translation x -> x + V, in the dimension of V."),
@@ -423,15 +422,15 @@ static const pcl_fn ctors[] = {
     {.name = "map.rotate", .fn = l_rotate, .args = rotate_args, .sig = "map.rotate(angle [, centre]) -> f\nmap.rotate(A, B | direction, angle) -> f", .help = "The plane turned counter-clockwise about centre (default: the origin), or space turned about the axis through A and B (or through A along direction) by the right-hand rule."},
     PCL_FN("map.reflect", l_reflect, reflect_args, "f", "The reflection in the line (plane, hyperplane) through A perpendicular to the vector normal."),
     PCL_FN("map.shear", l_shear, shear_args, "f", "The shear of n-space adding k times coordinate j to coordinate i (axes 1..n or \"x\", \"y\", \"z\")."),
-    PCL_FN("map.orthographic", l_orthographic, ortho_args, "f", "Space onto a coordinate plane, dropping that axis: \"z\" (the default) keeps (x, y), \"y\" keeps (x, z), \"x\" keeps (y, z)."),
-    PCL_FN("map.axonometric", l_axonometric, axono_args, "f", "Space turned about y by phi, then about x by theta, then projected along z (the textbook's T = Ry Rx Pz)."),
-    PCL_FN("map.isometric", l_isometric, NULL, "f", "The isometric projection: phi = 45 degrees, theta = 35.26 degrees, all axes foreshortened by sqrt(2/3)."),
-    PCL_FN("map.dimetric", l_dimetric, dimetric_args, "f", "The dimetric projection with the z axis foreshortened by fz (0 < fz < 1) and x, y equally: sin^2 theta = fz^2/2."),
-    PCL_FN("map.oblique", l_oblique, oblique_args, "f", "The oblique projection x' = x + k z cos(alpha), y' = y + k z sin(alpha)."),
-    PCL_FN("map.cavalier", l_cavalier, alpha_arg, "f", "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees."),
-    PCL_FN("map.cabinet", l_cabinet, alpha_arg, "f", "The oblique projection with k = 1/2; alpha defaults to 45 degrees."),
+    PCL_FN("map.orthographic", l_make, ortho_args, "f", "Space onto a coordinate plane, dropping that axis: \"z\" (the default) keeps (x, y), \"y\" keeps (x, z), \"x\" keeps (y, z)."),
+    PCL_FN("map.axonometric", l_make, axono_args, "f", "Space turned about y by phi, then about x by theta, then projected along z (the textbook's T = Ry Rx Pz)."),
+    PCL_FN("map.isometric", l_make, NULL, "f", "The isometric projection: phi = 45 degrees, theta = 35.26 degrees, all axes foreshortened by sqrt(2/3)."),
+    PCL_FN("map.dimetric", l_make, dimetric_args, "f", "The dimetric projection with the z axis foreshortened by fz (0 < fz < 1) and x, y equally: sin^2 theta = fz^2/2."),
+    PCL_FN("map.oblique", l_make, oblique_args, "f", "The oblique projection x' = x + k z cos(alpha), y' = y + k z sin(alpha)."),
+    PCL_FN("map.cavalier", l_make, alpha_arg, "f", "The oblique projection with k = 1 (receding axis at full length); alpha defaults to 45 degrees."),
+    PCL_FN("map.cabinet", l_make, alpha_arg, "f", "The oblique projection with k = 1/2; alpha defaults to 45 degrees."),
     PCL_FN("map.perspective", l_perspective, persp_args, "f", "The central projection from eye onto the plane through p0 facing it: picture origin at p0, x to the right, y along up (default: the z axis); a direction goes to its vanishing point."),
-    PCL_FN("map.perspective_pqr", l_perspective_pqr, pqr_args, "f", "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
+    PCL_FN("map.perspective_pqr", l_make, pqr_args, "f", "The textbook's perspective transform (Buimov §2.8.5): the 3-D map of row-vector matrix [[1,0,0,p],[0,1,0,q],[0,0,1,r],[0,0,0,1]], h = px + qy + rz + 1, vanishing points (1/p, 0, 0), (0, 1/q, 0), (0, 0, 1/r); one, two or three nonzero give the one-, two- and three-point perspectives. Follow it with a parallel projection."),
     {.name = "map.foreshortening", .fn = l_foreshortening, .args = map_args, .result = "fx, fy, fz", .help = "The foreshortening factors of an affine map (any axonometry, trimetric included): the lengths of the images of the unit axis vectors (§2.8.3)."},
     PCL_FN("map.axial_affinity", l_axial_affinity, affinity_args, "f", "The axial affinity of the plane: the axis through A along d fixed, each point moved along s with its distance (measured along s) from the axis multiplied by k (k = -1 an oblique reflection)."),
     PCL_END};

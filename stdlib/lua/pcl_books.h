@@ -11,4 +11,10 @@ void pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
 /* Push a table of nr rows, each a list of nc numbers, from m row by row (pcl_books.c). */
 void pcl_push_rows(lua_State *L, int nr, int nc, const double *m);
 
+/* Declarations they share: an optional number > 0 (default d); an optional point of dimension
+ * dm (absent: its cleared value, the origin); an optional location of the first's dimension. */
+#define A_POSOPT(nm, d) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = d}
+#define A_POINTOPT(nm, dm) {.name = nm, .kind = PCL_POINT, .flags = PCL_OPT, .dim = dm}
+#define A_SAMELOC(nm, fl) {.name = nm, .kind = PCL_LOC, .flags = PCL_SAMEDIM | (fl)}
+
 #endif

@@ -142,9 +142,25 @@ static void affine_counts(void **state) {
     assert_non_null(strstr(w.row[0].text, "collinear"));
 }
 
+static void kinds_named(void **state) {
+    (void)state;
+    assert_int_equal(pc_map_kind_named("identity"), PC_MM_IDENTITY);
+    assert_int_equal(pc_map_kind_named("isometric"), PC_MM_ISOMETRIC);
+    assert_int_equal(pc_map_kind_named("cabinet"), PC_MM_CABINET);
+    assert_int_equal(pc_map_kind_named("perspective_pqr"), PC_MM_PERSPECTIVE_PQR);
+    assert_int_equal(pc_map_kind_named("perspective"), -1);
+    assert_int_equal(pc_map_kind_named(""), -1);
+    pc_map f;
+    double o[3];
+    assert_int_equal(pc_map_make(&f, pc_map_kind_named("cavalier"), (double[]){0}), PC_OK);
+    xy(&f, 1, 2, 3, o);
+    NEAR(o[0], 4, 1e-12);
+    NEAR(o[1], 2, 1e-12);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(same_as_constructors), cmocka_unit_test(statuses_explained),
+        cmocka_unit_test(same_as_constructors), cmocka_unit_test(kinds_named), cmocka_unit_test(statuses_explained),
         cmocka_unit_test(translate_finite), cmocka_unit_test(unit_names),
         cmocka_unit_test(rotate_about_axis), cmocka_unit_test(affine_counts),
     };
