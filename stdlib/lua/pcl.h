@@ -39,8 +39,8 @@ void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type);
 /* The module openers pcl_open_NAME (errors: pcl_util.c, curves: l_curve.c), in the order
  * luaopen_pointcalc calls them: conic_elements after konopatsky (conic) and buimov (plane). */
 #define PCL_MODULES(X) X(errors) X(point) X(expr) X(simplex) X(map) X(draw) X(qb) X(qbscreen) \
-    X(smooth) X(curves) X(surface) X(camera) X(konopatsky) X(konopatsky_ch1) X(konopatsky_schemes) \
-    X(konopatsky_triples) X(params) X(korotky) X(buimov) X(conic_elements) \
+    X(smooth) X(curves) X(surface) X(camera) X(konopatsky) \
+    X(params) X(korotky) X(buimov) X(conic_elements) \
     X(curvilinear) X(complex) X(figure) X(figure_layout)
 #define PCL_DECLARE_OPEN(name) void pcl_open_##name(lua_State *L);
 PCL_MODULES(PCL_DECLARE_OPEN)
@@ -59,9 +59,6 @@ pc_canvas *pcl_canvas(lua_State *L);
 /* The theme used by save() and the host's -o (set by --paper). */
 void pcl_set_theme(lua_State *L, pc_theme theme);
 pc_theme pcl_theme(lua_State *L);
-
-/* An optional colour argument (nil: -1, the default; an attribute or "#rrggbb"), l_draw.c. */
-int pcl_optcolor(lua_State *L, int arg, pc_canvas *c);
 
 /* l_point.c: a point at idx into x, y and 1 (its weight must be 1, it 2-D), or 0 if no point. */
 int pcl_topoint2(lua_State *L, int idx, double *x, double *y);
