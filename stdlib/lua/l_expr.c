@@ -48,11 +48,11 @@ static pc_expr_pool *pool(lua_State *L) {
     return *pp;
 }
 
-static leq *toeq(lua_State *L, int idx) { return pcl_tagged(L, idx, &EQ_TAG, EQ_MT, sizeof(leq), 0); }
+static leq *toeq(lua_State *L, int idx) { return pcl_tagged_udata(L, idx, &EQ_TAG, EQ_MT, sizeof(leq), 0); }
 
 /* Samples: exactly the header and n values of max(dim, 1) numbers (pcl.h: forged userdata). */
 static lsamples *tosamples(lua_State *L, int idx) {
-    lsamples *s = pcl_tagged(L, idx, &SAMPLES_TAG, SAMPLES_MT, sizeof *s, PCL_TAG_ATLEAST);
+    lsamples *s = pcl_tagged_udata(L, idx, &SAMPLES_TAG, SAMPLES_MT, sizeof *s, PCL_TAG_ATLEAST);
     size_t len = lua_rawlen(L, idx);
     int ok = !s || (s->dim >= 0 && s->dim <= PC_MAXDIM && s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
                     len == sizeof *s + sizeof(double) * (size_t)s->n * (size_t)(s->dim ? s->dim : 1));
@@ -67,7 +67,7 @@ static void push_eq(lua_State *L, int id) {
 }
 
 static int eq_gc(lua_State *L) {
-    leq *e = pcl_tagged(L, 1, &EQ_TAG, EQ_MT, sizeof *e, PCL_TAG_GC);   /* never a forged one */
+    leq *e = pcl_tagged_udata(L, 1, &EQ_TAG, EQ_MT, sizeof *e, PCL_TAG_GC);   /* never a forged one */
     if (e) {
         pc_expr_prog_free(e->prog);
         e->prog = NULL;

@@ -19,7 +19,7 @@ typedef struct {
 } lsurf;
 
 /* The surface object at idx or NULL; one given the metatable by the debug library is refused. */
-static lsurf *tosurf(lua_State *L, int idx) { return pcl_tagged(L, idx, &SURF_TAG, SURF_MT, sizeof(lsurf), 0); }
+static lsurf *tosurf(lua_State *L, int idx) { return pcl_tagged_udata(L, idx, &SURF_TAG, SURF_MT, sizeof(lsurf), 0); }
 
 pc_surface *pcl_tosurface(lua_State *L, int idx) {
     lsurf *u = tosurf(L, idx);
@@ -50,7 +50,7 @@ static void *self_surf(lua_State *L, int idx) {
 }
 
 static int s_gc(lua_State *L) {
-    lsurf *u = pcl_tagged(L, 1, &SURF_TAG, SURF_MT, sizeof *u, PCL_TAG_GC);
+    lsurf *u = pcl_tagged_udata(L, 1, &SURF_TAG, SURF_MT, sizeof *u, PCL_TAG_GC);
     if (u && u->s) {   /* never a forged one */
         pcl_callback_state(L);
         pc_surface_release(u->s);

@@ -17,7 +17,7 @@ static inline void *pcl_tagged_new(lua_State *L, size_t size, const char *tag, c
  * a header of size bytes, the type checks the rest), NULL when idx holds none; a forged one raises
  * (pcl_genuine), or for a __gc (PCL_TAG_GC) gives NULL. */
 enum { PCL_TAG_ATLEAST = 1, PCL_TAG_GC = 2 };
-static inline void *pcl_tagged(lua_State *L, int idx, const char *tag, const char *type, size_t size, int flags) {
+static inline void *pcl_tagged_udata(lua_State *L, int idx, const char *tag, const char *type, size_t size, int flags) {
     uintptr_t *self = luaL_testudata(L, idx, type);
     size_t len = lua_rawlen(L, idx);
     int ok = self && (flags & PCL_TAG_ATLEAST ? len >= size : len == size) && *self == PCL_SELF_TAG(self, tag);
