@@ -1,6 +1,5 @@
 /* The declared argument layer (pcl_args.h): registration, the one reader of declared
  * arguments, one wording of every message, and the registry of declarations :help reads. */
-#include <stdarg.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
@@ -65,18 +64,10 @@ const char *pcl_name(lua_State *L) {
     return d->name;
 }
 
-static int vfail(lua_State *L, const char *prefix, const char *fmt, va_list ap) {
-    pcl_pushwhere(L);
-    lua_pushstring(L, prefix);
-    lua_pushvfstring(L, fmt, ap);
-    lua_concat(L, 3);
-    return lua_error(L);
-}
-
 int pcl_fail(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: ", pcl_name(L)), fmt, ap);
+    return pcl_verror(L, lua_pushfstring(L, "%s: ", pcl_name(L)), fmt, ap);
 }
 
 /* A plain function called with a colon (p:dist(B), a value's method table holds it): the
@@ -100,13 +91,13 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
     const char *name = arg_name(L, k);
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, name)), fmt, ap);
+    return pcl_verror(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, name)), fmt, ap);
 }
 
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key), fmt, ap);
+    return pcl_verror(L, lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key), fmt, ap);
 }
 
 void pcl_point_rows(const pcl_val *a, int k, int n, double *out) {

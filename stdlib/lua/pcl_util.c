@@ -1,6 +1,5 @@
 /* Argument checking shared by all bindings: the house error style
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
-#include <stdarg.h>
 #include "pcl_args.h"
 
 /* A declared function's name is its declaration's (pcl_name: whatever the script called it
@@ -62,14 +61,18 @@ void pcl_pushwhere(lua_State *L) {
     lua_pushliteral(L, "");
 }
 
+int pcl_verror(lua_State *L, const char *prefix, const char *fmt, va_list ap) {
+    pcl_pushwhere(L);
+    lua_pushstring(L, prefix);
+    lua_pushvfstring(L, fmt, ap);
+    lua_concat(L, 3);
+    return lua_error(L);
+}
+
 int pcl_error(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    pcl_pushwhere(L);
-    lua_pushvfstring(L, fmt, ap);
-    va_end(ap);
-    lua_concat(L, 2);
-    return lua_error(L);
+    return pcl_verror(L, "", fmt, ap);
 }
 
 /* ---- forged userdata (pcl.h) ---------------------------------------------------------------- */
