@@ -577,7 +577,10 @@ void *pcl_read(lua_State *L, pcl_val *v, int n) {
     return read_self(L, b, v);
 }
 
-int pcl_nvalues(lua_State *L) { return current_box(L)->nvalues; }
+int pcl_nvalues(lua_State *L) {
+    int n = current_box(L)->nvalues;
+    return n > 0 ? n : 1;
+}
 
 const pcl_decl *pcl_running(lua_State *L) { return current_box(L); }
 
@@ -687,7 +690,6 @@ void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
         for (const pcl_arg *k = a->kind == PCL_OPTIONS ? a->keys : NULL; k && k->name; k++) b->nvalues++;
         if ((a->flags & PCL_PAIR) && !b->first_pair) b->first_pair = b->nargs;
     }
-    b->nvalues += !b->nvalues;               /* PCL_BODY's block holds one value at least */
     if (luaL_newmetatable(L, BOX_MT)) {      /* getmetatable(d) says "declaration" and no more */
         lua_pushliteral(L, "declaration");
         lua_setfield(L, -2, "__metatable");

@@ -109,7 +109,7 @@ void *pcl_read(lua_State *L, pcl_val *v, int n);
 typedef struct {
     PCL_SELF;                 /* a block of another type there is refused (pcl.h) */
     const pcl_fn *d;
-    int nargs, nvalues;       /* the declared arguments; the values PCL_READ fills (at least 1) */
+    int nargs, nvalues;       /* the declared arguments; the values PCL_READ fills */
     int first_pair;           /* pcl_read_pairs: the argument (from 1) that starts the first pair */
 } pcl_decl;
 /* The running function's declaration, checked; pcl_read into its nvalues values of v, cleared
@@ -123,7 +123,7 @@ void *pcl_read_decl(lua_State *L, const pcl_decl *b, pcl_val *v);
 #define PCL_CALL_BODY(f, ...) \
     static int f(lua_State *L) { \
         const pcl_decl *f##_d = pcl_running(L); \
-        pcl_val f##_v[f##_d->nvalues]; \
+        pcl_val f##_v[f##_d->nvalues > 0 ? f##_d->nvalues : 1]; \
         PCL_UNUSED void *f##_self = pcl_read_decl(L, f##_d, f##_v); \
         return f##_body(L, __VA_ARGS__); \
     }
