@@ -3,6 +3,7 @@
 #define PCL_H
 
 #include <math.h>      /* the C library every binding uses */
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,8 +73,10 @@ const char *pcl_shown(lua_State *L, int idx);
 /* The running C function's name (a declared one's: pcl_name); the number arg is shown as. */
 const char *pcl_fname(lua_State *L);
 int pcl_arg_shown(lua_State *L, int arg);
-/* luaL_error, but located at the user's code: frames of the embedded Lua helpers are skipped. */
+/* luaL_error, but located at the user's code: frames of the embedded Lua helpers are skipped
+ * (pcl_verror: PREFIX then the message). */
 int pcl_error(lua_State *L, const char *fmt, ...);
+int pcl_verror(lua_State *L, const char *prefix, const char *fmt, va_list ap);
 /* Push that location, "file:line: " (or ""), for a message kept rather than raised (a callback's). */
 void pcl_pushwhere(lua_State *L);
 

@@ -1,6 +1,5 @@
 /* The declared argument layer (pcl_args.h): registration, the one reader of declared
  * arguments, one wording of every message, and the registry of declarations :help reads. */
-#include <stdarg.h>
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_point.h"
@@ -9,28 +8,18 @@
 
 /* ---- the running declaration ------------------------------------------------------------- */
 
-/* Upvalue 1 of a declared function: its declaration with the counts a call needs, made once. */
-typedef struct {
-    PCL_SELF;                 /* a block of another type there is refused (pcl.h) */
-    const pcl_fn *d;
-    int nargs, nvalues;       /* the declared arguments; the values PCL_READ fills */
-    int first_pair;           /* pcl_read_pairs: the argument (from 1) that starts the first pair */
-} decl_box;
 static const char BOX_TAG = 'd';
 #define BOX_MT "pointcalc.declaration"
-
 /* The declaration block at idx, or NULL: its size and its tag, which a script cannot forge. */
-static const decl_box *to_box(lua_State *L, int idx) {
-    const decl_box *b = lua_touserdata(L, idx);
-    if (b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b &&
-        b->self == PCL_SELF_TAG(b, &BOX_TAG))
-        return b;
-    return NULL;
+static const pcl_decl *to_box(lua_State *L, int idx) {
+    const pcl_decl *b = lua_touserdata(L, idx);
+    int ok = b && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == sizeof *b;
+    return ok && b->self == PCL_SELF_TAG(b, &BOX_TAG) ? b : NULL;
 }
 
 /* The declaration of the running C function (the guard below keeps debug.setupvalue off it). */
-static const decl_box *current_box(lua_State *L) {
-    const decl_box *b = to_box(L, lua_upvalueindex(1));
+static const pcl_decl *current_box(lua_State *L) {
+    const pcl_decl *b = to_box(L, lua_upvalueindex(1));
     if (!b) luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
     return b;
 }
@@ -38,9 +27,8 @@ static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
 
 int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
 
-/* debug.setupvalue(f, 1, x) of a declared function would give it another's declaration: refused
- * where it is attempted, so that no call asks Lua which function runs.  Lua's own function is
- * kept where no script reaches it (not an upvalue of the guard). */
+/* debug.setupvalue(f, 1, x) of a declared function is refused, so that no call asks Lua which
+ * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
 static lua_CFunction lua_setupvalue_fn;
 static int setupvalue_guard(lua_State *L) {
     int isint;
@@ -76,18 +64,10 @@ const char *pcl_name(lua_State *L) {
     return d->name;
 }
 
-static int vfail(lua_State *L, const char *prefix, const char *fmt, va_list ap) {
-    pcl_pushwhere(L);
-    lua_pushstring(L, prefix);
-    lua_pushvfstring(L, fmt, ap);
-    lua_concat(L, 3);
-    return lua_error(L);
-}
-
 int pcl_fail(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: ", pcl_name(L)), fmt, ap);
+    return pcl_verror(L, lua_pushfstring(L, "%s: ", pcl_name(L)), fmt, ap);
 }
 
 /* A plain function called with a colon (p:dist(B), a value's method table holds it): the
@@ -103,7 +83,7 @@ static const char *arg_label(lua_State *L, int shown, const char *name) {
 
 /* The name of declared argument #k, or NULL past the declared ones (or none declared). */
 static const char *arg_name(lua_State *L, int k) {
-    const decl_box *b = current_box(L);
+    const pcl_decl *b = current_box(L);
     return k >= 1 && k <= b->nargs ? b->d->args[k - 1].name : NULL;
 }
 
@@ -111,13 +91,13 @@ int pcl_argfail(lua_State *L, int k, const char *fmt, ...) {
     const char *name = arg_name(L, k);
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, name)), fmt, ap);
+    return pcl_verror(L, lua_pushfstring(L, "%s: %s ", pcl_name(L), arg_label(L, k, name)), fmt, ap);
 }
 
 int pcl_keyfail(lua_State *L, const char *key, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    return vfail(L, lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key), fmt, ap);
+    return pcl_verror(L, lua_pushfstring(L, "%s: option '%s' ", pcl_name(L), key), fmt, ap);
 }
 
 void pcl_point_rows(const pcl_val *a, int k, int n, double *out) {
@@ -153,8 +133,6 @@ void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc) 
 }
 
 /* ---- nearest names (names.c) ---------------------------------------------------------------- */
-
-const char *pcl_nearest(const char *name, const char *const *candidates) { return pc_nearest_name(name, candidates); }
 
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx) {
     idx = lua_absindex(L, idx);
@@ -521,14 +499,7 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
     }
 }
 
-/* The values an argument fills: 1, and one per key of an option table. */
-static int nvalues(const pcl_arg *a) {
-    int n = 1;
-    for (const pcl_arg *k = a->kind == PCL_OPTIONS ? a->keys : NULL; k && k->name; k++) n++;
-    return n;
-}
-
-static void check_count(lua_State *L, const decl_box *b, int n) {
+static void check_count(lua_State *L, const pcl_decl *b, int n) {
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
 }
 
@@ -536,7 +507,7 @@ static void check_count(lua_State *L, const decl_box *b, int n) {
  * pairs (pcl_read_pairs) each is read at the slot it falls on and shown by that slot, a pair
  * given as one point fills x and y, and a last option table may trail. */
 static inline __attribute__((always_inline))   /* one copy per reader: pairs a constant */
-void read_args(lua_State *L, const decl_box *b, pcl_val *v, int first, int pairs) {
+void read_args(lua_State *L, const pcl_decl *b, pcl_val *v, int first, int pairs) {
     const pcl_fn *d = b->d;
     int nargs = b->nargs, top = lua_gettop(L), opts = 0;
     if (pairs && nargs && d->args[nargs - 1].kind == PCL_OPTIONS && top > b->first_pair && lua_istable(L, top))
@@ -587,18 +558,23 @@ void read_args(lua_State *L, const decl_box *b, pcl_val *v, int first, int pairs
     }
 }
 
-void *pcl_read(lua_State *L, pcl_val *v, int n) {
-    const decl_box *b = current_box(L);
+/* The receiver of a method (checked), then the declared arguments into v. */
+static void *read_self(lua_State *L, const pcl_decl *b, pcl_val *v) {
     const pcl_fn *d = b->d;
     void *self = d->self ? d->self(L, 1) : NULL;
     if (d->self && !self)
         pcl_error(L, "%s: must be called on %s %s, as %s(...)", d->name,
                   strchr("aeiou", d->selftype[0]) ? "an" : "a", d->selftype, d->topic ? d->topic : d->name);
-    check_count(L, b, n);
     int first = self ? 2 : 1;
     if (lua_gettop(L) < first - 1 + b->nargs) lua_settop(L, first - 1 + b->nargs);   /* buffers above */
     read_args(L, b, v, first, 0);
     return self;
+}
+
+void *pcl_read(lua_State *L, pcl_val *v, int n) {
+    const pcl_decl *b = current_box(L);
+    check_count(L, b, n);
+    return read_self(L, b, v);
 }
 
 int pcl_nvalues(lua_State *L) {
@@ -606,10 +582,12 @@ int pcl_nvalues(lua_State *L) {
     return n > 0 ? n : 1;
 }
 
-void *pcl_read_all(lua_State *L, pcl_val *v, int n) {
-    memset(v, 0, sizeof *v * (size_t)n);
+const pcl_decl *pcl_running(lua_State *L) { return current_box(L); }
+
+void *pcl_read_decl(lua_State *L, const pcl_decl *b, pcl_val *v) {
+    memset(v, 0, sizeof *v * (size_t)b->nvalues);
     pcl_callback_state(L);
-    return pcl_read(L, v, n);
+    return read_self(L, b, v);
 }
 
 void pcl_readone(lua_State *L, int idx, int shown, int item, const pcl_arg *a, int dimdef, pcl_val *out) {
@@ -632,13 +610,9 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 }
 
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
-    const decl_box *b = current_box(L);
+    const pcl_decl *b = current_box(L);
     check_count(L, b, n);
-    for (int k = 0; k < n; k++) {   /* the caller's array need not be zeroed (pcl_args.h) */
-        v[k].present = v[k].n = v[k].cap = 0;
-        v[k].obj = NULL;
-        v[k].list = NULL;
-    }
+    memset(v, 0, sizeof *v * (size_t)n);   /* the caller's array need not be zeroed (pcl_args.h) */
     read_args(L, b, v, 1, 1);
 }
 
@@ -707,25 +681,19 @@ static void record(lua_State *L, const pcl_fn *d) {
     lua_pop(L, 1);
 }
 
-/* The metatable of the declarations: getmetatable(d) says "declaration" and no more. */
-static void box_metatable(lua_State *L) {
-    if (luaL_newmetatable(L, BOX_MT)) {
+void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
+    pcl_decl *b = lua_newuserdatauv(L, sizeof *b, 0);
+    *b = (pcl_decl){.self = PCL_SELF_TAG(b, &BOX_TAG), .d = d};
+    for (const pcl_arg *a = d->args; a && a->kind; a++) {
+        b->nargs++;
+        b->nvalues++;                        /* one value, and one per key of an option table */
+        for (const pcl_arg *k = a->kind == PCL_OPTIONS ? a->keys : NULL; k && k->name; k++) b->nvalues++;
+        if ((a->flags & PCL_PAIR) && !b->first_pair) b->first_pair = b->nargs;
+    }
+    if (luaL_newmetatable(L, BOX_MT)) {      /* getmetatable(d) says "declaration" and no more */
         lua_pushliteral(L, "declaration");
         lua_setfield(L, -2, "__metatable");
     }
-}
-
-void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup) {
-    decl_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-    b->self = PCL_SELF_TAG(b, &BOX_TAG);
-    b->d = d;
-    b->nargs = b->nvalues = b->first_pair = 0;
-    while (d->args && d->args[b->nargs].kind) b->nargs++;
-    for (int k = 0; k < b->nargs; k++) {
-        b->nvalues += nvalues(&d->args[k]);
-        if ((d->args[k].flags & PCL_PAIR) && !b->first_pair) b->first_pair = k + 1;
-    }
-    box_metatable(L);
     lua_setmetatable(L, -2);
     lua_insert(L, -1 - nup);                 /* the declaration is upvalue 1 */
     lua_pushcclosure(L, d->fn, nup + 1);
@@ -735,8 +703,8 @@ static void register_all(lua_State *L, int table, const pcl_fn *fns, int nup, in
     table = lua_absindex(L, table);
     int ups = lua_gettop(L) - nup + 1;
     for (const pcl_fn *d = fns; d->name; d++) {
-        const char *key = d->name, *p;
-        for (p = d->name; *p; p++)
+        const char *key = d->name;
+        for (const char *p = d->name; *p; p++)
             if (*p == '.' || *p == ':') key = p + 1;
         if (d->key) key = d->key;
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);

@@ -105,32 +105,39 @@ void pcl_pushfn(lua_State *L, const pcl_fn *d, int nup);
  * get one above the arguments on the stack. */
 void *pcl_read(lua_State *L, pcl_val *v, int n);
 #define PCL_READ(L, v) pcl_read((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
-/* A binding's body, its declared arguments read into a (as PCL_READ, into a cleared block
- * sized by the declaration) and Lua callbacks armed (pcl_callback_state):
+/* Upvalue 1 of a declared function: its declaration with the counts a call needs, made once. */
+typedef struct {
+    PCL_SELF;                 /* a block of another type there is refused (pcl.h) */
+    const pcl_fn *d;
+    int nargs, nvalues;       /* the declared arguments; the values PCL_READ fills */
+    int first_pair;           /* pcl_read_pairs: the argument (from 1) that starts the first pair */
+} pcl_decl;
+/* The running function's declaration, checked; pcl_read into its nvalues values of v, cleared
+ * first, with Lua callbacks armed (PCL_BODY: the declaration found once per call). */
+const pcl_decl *pcl_running(lua_State *L);
+void *pcl_read_decl(lua_State *L, const pcl_decl *b, pcl_val *v);
+/* A binding's body, its declared arguments read into a and Lua callbacks armed:
  *     PCL_BODY(l_bezier, a) { ... a[0].list ... return pcl_push_made(L, c, &st, NULL); }
  *     PCL_METHOD(c_length, lcurve *u, a) { ... }     the receiver of a method as u
  * The function defined is l_bezier (a lua_CFunction, registered as any other). */
+#define PCL_CALL_BODY(f, ...) \
+    static int f(lua_State *L) { \
+        const pcl_decl *f##_d = pcl_running(L); \
+        pcl_val f##_v[f##_d->nvalues > 0 ? f##_d->nvalues : 1]; \
+        PCL_UNUSED void *f##_self = pcl_read_decl(L, f##_d, f##_v); \
+        return f##_body(L, __VA_ARGS__); \
+    }
 #define PCL_BODY(f, a) \
     static int f##_body(lua_State *L, pcl_val *a); \
-    static int f(lua_State *L) { \
-        pcl_val f##_v[pcl_nvalues(L)]; \
-        pcl_read_all(L, f##_v, (int)(sizeof f##_v / sizeof f##_v[0])); \
-        return f##_body(L, f##_v); \
-    } \
+    PCL_CALL_BODY(f, f##_v) \
     static int f##_body(lua_State *L, PCL_UNUSED pcl_val *a)
 #define PCL_METHOD(f, self, a) \
     static int f##_body(lua_State *L, self, pcl_val *a); \
-    static int f(lua_State *L) { \
-        pcl_val f##_v[pcl_nvalues(L)]; \
-        void *f##_self = pcl_read_all(L, f##_v, (int)(sizeof f##_v / sizeof f##_v[0])); \
-        return f##_body(L, f##_self, f##_v); \
-    } \
+    PCL_CALL_BODY(f, f##_self, f##_v) \
     static int f##_body(lua_State *L, self, PCL_UNUSED pcl_val *a)
 #define PCL_UNUSED __attribute__((unused))
 /* The values the running function's declaration fills (at least 1: PCL_BODY's block). */
 int pcl_nvalues(lua_State *L);
-/* pcl_read into n values it clears first, with Lua callbacks armed: PCL_BODY's reader. */
-void *pcl_read_all(lua_State *L, pcl_val *v, int n);
 
 /* Read the value at idx as the argument a shown as argument #shown (its element [item] when
  * item > 0: variadic functions); dimdef: the dimension PCL_SAMEDIM refers to. */
@@ -143,9 +150,8 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n);
 #define PCL_READ_PAIRS(L, v) pcl_read_pairs((L), (v), (int)(sizeof(v) / sizeof((v)[0])))
 /* Inside a reader: raise "NAME: WHERE must be EXPECTED, got VALUE" for the value at idx. */
 int pcl_readfail(lua_State *L, int idx, const char *expected);
-/* The drawing colour (l_draw.c): an attribute or "#rrggbb" into out->x; optional: A_SCREEN_COLOR. */
+/* The drawing colour (l_draw.c): an attribute or "#rrggbb" into out->x. */
 int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
-#define A_SCREEN_COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = pcl_read_color, .dflt = -1}
 /* The print look (l_figure.c): a length with its unit ("0.5mm") in pt into out->x; the label
  * options {font =, size =, halo =}, applied to a label once drawn. */
 int pcl_read_length(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
@@ -173,9 +179,7 @@ void pcl_point_rows(const pcl_val *a, int k, int n, double *out);
  * rows, *nc columns (ncols, or with ncols 0 the length of row [1], 2..PC_MAXDIM + 1). */
 void pcl_read_rows(lua_State *L, int k, int ncols, double *m, int *nr, int *nc);
 
-/* The nearest of the candidates (NULL-ended) to name, or NULL (names.h: pc_nearest_name). */
-const char *pcl_nearest(const char *name, const char *const *candidates);
-/* The same over the string keys of the table at idx. */
+/* The nearest of the string keys of the table at idx to name, or NULL (names.h: pc_nearest_name). */
 const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 
 /* 1 if the value at idx can be called: a function, or a value whose metatable has __call. */
@@ -218,7 +222,6 @@ const char *pcl_global_hint(lua_State *L, const char *msg);
 #define A_VALUES(nm, a, b) {.name = nm, .kind = PCL_VALUES, .lo = a, .hi = b}
 #define A_VECTORS(nm) {.name = nm, .kind = PCL_VECTORS, .flags = PCL_SAMEDIM}
 #define A_CURVE(nm, d) {.name = nm, .kind = PCL_CURVE, .dim = d}
-#define A_SURFACE(nm, d) {.name = nm, .kind = PCL_SURFACE, .dim = d}
 #define A_MAP(nm) {.name = nm, .kind = PCL_MAP}
 #define A_FUNCTION(nm) {.name = nm, .kind = PCL_FUNCTION}
 #define A_OPTIONS(nm, k) {.name = nm, .kind = PCL_OPTIONS, .flags = PCL_OPT, .keys = k}

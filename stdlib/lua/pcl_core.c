@@ -1,5 +1,4 @@
 /* Calling the core from a binding (pcl_core.h). */
-#include <stdarg.h>
 #include "pcl_args.h"
 #include "pcl_core.h"
 #include "pcl_point.h"

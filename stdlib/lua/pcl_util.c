@@ -1,6 +1,5 @@
 /* Argument checking shared by all bindings: the house error style
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
-#include <stdarg.h>
 #include "pcl_args.h"
 
 /* A declared function's name is its declaration's (pcl_name: whatever the script called it
@@ -39,17 +38,12 @@ const char *pcl_shown(lua_State *L, int idx) {
     return luaL_typename(L, idx);
 }
 
-/* "FNAME: FIELD must be EXPECTED, got VALUE", the value at idx. */
-static int field_error(lua_State *L, const char *fname, const char *field, const char *expected, int idx) {
-    return pcl_error(L, "%s: %s must be %s, got %s", fname, field, expected, pcl_shown(L, idx));
-}
-
 int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const char *what,
                       const char *expected) {
     idx = lua_absindex(L, idx);
     const char *arg = shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
     if (what && what[0]) arg = lua_pushfstring(L, "%s (%s)", arg, what);
-    return field_error(L, fname, arg, expected, idx);
+    return pcl_error(L, "%s: %s must be %s, got %s", fname, arg, expected, pcl_shown(L, idx));
 }
 
 /* Push "file:line: " of the code the error belongs to: the innermost Lua function that is not
@@ -67,14 +61,18 @@ void pcl_pushwhere(lua_State *L) {
     lua_pushliteral(L, "");
 }
 
+int pcl_verror(lua_State *L, const char *prefix, const char *fmt, va_list ap) {
+    pcl_pushwhere(L);
+    lua_pushstring(L, prefix);
+    lua_pushvfstring(L, fmt, ap);
+    lua_concat(L, 3);
+    return lua_error(L);
+}
+
 int pcl_error(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
-    pcl_pushwhere(L);
-    lua_pushvfstring(L, fmt, ap);
-    va_end(ap);
-    lua_concat(L, 2);
-    return lua_error(L);
+    return pcl_verror(L, "", fmt, ap);
 }
 
 /* ---- forged userdata (pcl.h) ---------------------------------------------------------------- */
@@ -97,9 +95,8 @@ const char *pcl_pushnum(lua_State *L, double x) {
 }
 
 int pcl_statuserror(lua_State *L, const char *fname, int status, const char *context) {
-    if (context && context[0])
-        return pcl_error(L, "%s: %s (%s)", fname, context, pc_strerror(status));
-    return pcl_error(L, "%s: %s", fname, pc_strerror(status));
+    int ctx = context && context[0];
+    return pcl_error(L, ctx ? "%s: %s (%s)" : "%s: %s%s", fname, ctx ? context : "", pc_strerror(status));
 }
 
 void pcl_private(lua_State *L, int module) { luaL_getsubtable(L, module, "_tk"); }
@@ -159,14 +156,15 @@ static int tk_shown(lua_State *L) {
  * got VALUE" at the user's line */
 static int tk_argerror(lua_State *L) {
     lua_settop(L, 5);
-    const char *arg = lua_pushfstring(L, "argument #%d (%s)", (int)luaL_checkinteger(L, 2), luaL_checkstring(L, 3));
-    return field_error(L, luaL_checkstring(L, 1), arg, luaL_checkstring(L, 4), 5);
+    return pcl_argerror_full(L, luaL_checkstring(L, 1), 5, (int)luaL_checkinteger(L, 2), luaL_checkstring(L, 3),
+                             luaL_checkstring(L, 4));
 }
 
 /* _tk.fielderror(fname, field, expected, value): "FNAME: FIELD must be EXPECTED, got VALUE" */
 static int tk_fielderror(lua_State *L) {
     lua_settop(L, 4);
-    return field_error(L, luaL_checkstring(L, 1), luaL_checkstring(L, 2), luaL_checkstring(L, 3), 4);
+    const char *fname = luaL_checkstring(L, 1), *field = luaL_checkstring(L, 2), *expected = luaL_checkstring(L, 3);
+    return pcl_error(L, "%s: %s must be %s, got %s", fname, field, expected, pcl_shown(L, 4));
 }
 
 /* _tk.global_hint(msg): "(did you mean 'label'?)" for a misspelt global, or nil (the REPL) */
