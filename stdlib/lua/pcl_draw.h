@@ -32,12 +32,12 @@ static inline void *pcl_tagged(lua_State *L, int idx, size_t size, const void *t
     int ok = self && lua_type(L, idx) == LUA_TUSERDATA && lua_rawlen(L, idx) == size && *self == PCL_SELF_TAG(self, tag);
     return ok ? self : NULL;
 }
-/* PCL_BODY for a statement whose coordinate pairs may each be one point (pcl_read_pairs). */
+/* PCL_BODY for a statement whose coordinate pairs may each be one point (pcl_read_pairs, which
+ * clears the values itself). */
 #define PCL_PAIRS_BODY(f, a) \
     static int f##_body(lua_State *L, pcl_val *a); \
     static int f(lua_State *L) { \
         pcl_val f##_v[pcl_nvalues(L)]; \
-        memset(f##_v, 0, sizeof f##_v); \
         pcl_read_pairs(L, f##_v, (int)(sizeof f##_v / sizeof f##_v[0])); \
         return f##_body(L, f##_v); \
     } \
