@@ -95,9 +95,5 @@ void pcl_callback_state(lua_State *L);
 lua_State *pcl_current_state(void);
 int pcl_callback_failed(lua_State *L);
 int pcl_raise_status(lua_State *L, const char *fname, int status);
-/* Inside a callback: call the function below the nargs arguments on the stack top, protected,
- * for one number into *y; PC_OK, or PC_EARG with the error kept ("FNAME: WHAT must return a
- * number, got TYPE").  The function and its arguments are popped. */
-int pcl_call_number(lua_State *L, int nargs, const char *fname, const char *what, double *y);
 
 #endif

@@ -730,6 +730,18 @@ void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const 
     lua_setfield(L, -2, "__index");
 }
 
+void pcl_new_table(lua_State *L, int module, const char *name, const pcl_fn *fns, const pcl_fn *call) {
+    module = lua_absindex(L, module);
+    lua_newtable(L);
+    pcl_register(L, -1, fns, 0);
+    if (call) {
+        lua_newtable(L);
+        pcl_register(L, -1, call, 0);
+        lua_setmetatable(L, -2);
+    }
+    lua_setfield(L, module, name);
+}
+
 /* ---- misspelt globals ----------------------------------------------------------------------- */
 
 /* Push "(did you mean 'label'?)" for a message about a nil global near a known name, and

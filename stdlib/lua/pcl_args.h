@@ -193,6 +193,9 @@ void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homog
  * closure of index over the table of the declared methods (index NULL: that table). */
 void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const pcl_fn *call,
                    const pcl_fn *methods, lua_CFunction index);
+/* module[name] = a new table of the declared functions fns; with call, the table is callable
+ * through a declared __call in its metatable (oneratio(A, B, C) is oneratio.simplex). */
+void pcl_new_table(lua_State *L, int module, const char *name, const pcl_fn *fns, const pcl_fn *call);
 
 /* One weight rule: PC_KIND_POINT, _VECTOR or _WEIGHTED, h[n] snapped to 1 or 0 (point.h). */
 static inline int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }

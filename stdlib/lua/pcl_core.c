@@ -160,10 +160,23 @@ double pcl_luafn_call(pcl_luafn *f, int which, int item, const char *what, int n
         lua_remove(L, -2);
     }
     for (int i = 0; i < nargs; i++) lua_pushnumber(L, x[i]);
-    double y;
-    if (pcl_call_number(L, nargs, f->fname, what ? what : "the function", &y) == PC_OK) return y;
-    f->failed++;
-    return NAN;
+    if (lua_pcall(L, nargs, 1, 0) != LUA_OK) {
+        pcl_callback_failed(L);
+        f->failed++;
+        return NAN;
+    }
+    int isnum;
+    double y = lua_tonumberx(L, -1, &isnum);
+    if (!isnum) {   /* kept as the callback's error, raised when the core gives up */
+        const char *got = luaL_typename(L, -1);
+        pcl_pushwhere(L);
+        lua_pushfstring(L, "%s: %s must return a number, got %s", f->fname, what ? what : "the function", got);
+        lua_concat(L, 2);
+        pcl_callback_failed(L);
+        f->failed++;
+    }
+    lua_pop(L, 1);   /* the result */
+    return isnum ? y : NAN;
 }
 
 double pcl_luafn_of(double x, void *f) { return pcl_luafn_call(f, 0, 0, NULL, 1, &x); }

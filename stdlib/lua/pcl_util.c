@@ -115,21 +115,6 @@ int pcl_callback_failed(lua_State *L) {
     return PC_EARG;
 }
 
-int pcl_call_number(lua_State *L, int nargs, const char *fname, const char *what, double *y) {
-    if (lua_pcall(L, nargs, 1, 0) != LUA_OK) return pcl_callback_failed(L);
-    int isnum;
-    *y = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) {
-        const char *got = luaL_typename(L, -1);
-        pcl_pushwhere(L);
-        lua_pushfstring(L, "%s: %s must return a number, got %s", fname, what, got);
-        lua_concat(L, 2);
-        pcl_callback_failed(L);
-    }
-    lua_pop(L, 1);   /* the result */
-    return isnum ? PC_OK : PC_EARG;
-}
-
 int pcl_raise_status(lua_State *L, const char *fname, int status) {
     if (lua_getfield(L, LUA_REGISTRYINDEX, CBERR_KEY) != LUA_TNIL) {
         lua_pushnil(L);
