@@ -9,6 +9,7 @@
 #include "pcl_expr.h"
 #include "curve_why.h"
 #include "curve_path.h"
+#include "pcl_tagged.h"
 
 #define CURVE_MT "curve"
 static const char CURVE_TAG = 'c';   /* its address tags the type (PCL_SELF_TAG) */
@@ -30,28 +31,21 @@ static int read_result(lua_State *L, int nres, int dim, double *h) {
     pcl_value *v = nres >= 1 ? pcl_tovalue(L, base) : NULL;
     int d = v ? v->n : nres;
     const char *got = nres ? luaL_typename(L, base) : "nothing", *who = dim ? "curve: the function" : "a curve";
-    if (dim && d != dim) {
-        if (v) lua_pushfstring(L, "curve: the function returned a %d-D value, but the curve is %d-D", d, dim);
-        else lua_pushfstring(L, "curve: the function must return a %d-D point or %d numbers, got %s", dim, dim, got);
-        return 0;
-    }
-    if (d < 1 || d > PC_MAXDIM) {
-        lua_pushfstring(L, "%s must return a point or 1..%d numbers, got %s", who, PC_MAXDIM, got);
-        return 0;
-    }
-    if (v) {
-        memcpy(h, v->h, sizeof(double) * (size_t)(d + 1));
-        return d;
-    }
-    for (int k = 0; k < d; k++) {
+    const char *msg = NULL;   /* pushed when set */
+    if (dim && d != dim)
+        msg = v ? lua_pushfstring(L, "%s returned a %d-D value, but the curve is %d-D", who, d, dim)
+                : lua_pushfstring(L, "%s must return a %d-D point or %d numbers, got %s", who, dim, dim, got);
+    else if (d < 1 || d > PC_MAXDIM)
+        msg = lua_pushfstring(L, "%s must return a point or 1..%d numbers, got %s", who, PC_MAXDIM, got);
+    for (int k = 0; !msg && !v && k < d; k++) {
         int isnum;
         h[k] = lua_tonumberx(L, base + k, &isnum);
-        if (!isnum) {
-            lua_pushfstring(L, "%s must return a point or numbers, got %s", who, luaL_typename(L, base + k));
-            return 0;
-        }
+        got = luaL_typename(L, base + k);
+        if (!isnum) msg = lua_pushfstring(L, "%s must return a point or numbers, got %s", who, got);
     }
-    h[d] = 1;
+    if (msg) return 0;
+    if (v) memcpy(h, v->h, sizeof(double) * (size_t)(d + 1));
+    else h[d] = 1;
     return d;
 }
 
@@ -93,11 +87,8 @@ static pcl_luafn *keep_fn(lua_State *L, int idx, int nargs) {
 /* ---- the userdata ---------------------------------------------------------------------------- */
 
 int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
-    lcurve *u = lua_newuserdatauv(L, sizeof(lcurve), 0);
-    u->self = PCL_SELF_TAG(u, &CURVE_TAG);
-    u->c = c;
-    u->kind = kind;
-    luaL_setmetatable(L, CURVE_MT);
+    lcurve *u = pcl_tagged_new(L, sizeof *u, &CURVE_TAG, CURVE_MT);
+    *u = (lcurve){u->self, c, kind};
     return 1;
 }
 
@@ -106,14 +97,9 @@ int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
     return pcl_pushcurve(L, c, kind ? kind : pcl_name(L));
 }
 
-static int genuine(lua_State *L, int idx, const lcurve *u) {
-    return lua_rawlen(L, idx) >= sizeof *u && u->self == PCL_SELF_TAG(u, &CURVE_TAG);
-}
-
 /* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
 static lcurve *tocurve(lua_State *L, int idx) {
-    lcurve *u = luaL_testudata(L, idx, CURVE_MT);
-    return pcl_genuine(L, idx, u, !u || genuine(L, idx, u), "curve");
+    return pcl_tagged_udata(L, idx, &CURVE_TAG, CURVE_MT, sizeof(lcurve), 0);
 }
 
 pc_curve *pcl_tocurve(lua_State *L, int idx) {
@@ -127,8 +113,8 @@ static void *self_curve(lua_State *L, int idx) {
 }
 
 static int c_gc(lua_State *L) {
-    lcurve *u = luaL_testudata(L, 1, CURVE_MT);
-    if (u && genuine(L, 1, u) && u->c) {   /* never a forged one */
+    lcurve *u = pcl_tagged_udata(L, 1, &CURVE_TAG, CURVE_MT, sizeof *u, PCL_TAG_GC);
+    if (u && u->c) {   /* never a forged one */
         pcl_callback_state(L);
         pc_curve_release(u->c);
         u->c = NULL;
@@ -297,10 +283,7 @@ static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
     if (lua_isnoneornil(L, arg)) return NULL;
     luaL_checktype(L, arg, LUA_TTABLE);
     for (int i = 0; i < count; i++) {
-        lua_geti(L, arg, i + 1);
-        int isnum;
-        buf[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum) buf[i] = NAN;
+        buf[i] = lua_geti(L, arg, i + 1) == LUA_TNUMBER ? lua_tonumber(L, -1) : NAN;
         lua_pop(L, 1);
     }
     return buf;
@@ -374,16 +357,13 @@ static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t,
                                    .expect = "a finite number or a scalar equation"}, PCL_END};
+/* c(t), c:eval(t) and c:xy(t), one body told apart by the declared name */
 PCL_METHOD(c_call, lcurve *u, a) {
-    if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
-    eval_at(L, u, a[0].x, pcl_newvalue(L, u->c->dim)->h);   /* a point, or a vector at infinity */
-    return 1;
-}
-
-PCL_METHOD(c_xy, lcurve *u, a) {
     double h[PC_MAXDIM + 1];
-    eval_at(L, u, a[0].x, h);
     int d = u->c->dim;
+    if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
+    eval_at(L, u, a[0].x, h);
+    if (strcmp(pcl_name(L), "c:xy")) return pcl_push_packed(L, d, "w", h);   /* a point, or a vector at infinity */
     if (h[d] == 0) return pcl_check(L, PC_IMPROPER, pc_curve_why);
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k]);
     return d;
@@ -642,7 +622,7 @@ static const pcl_fn ctors[] = {
 #define METHOD(nm, f, a, res, text) \
     {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_curve, .selftype = "curve"}
 static const pcl_fn methods[] = {
-    METHOD("c:xy", c_xy, t_arg, "x, y", "The coordinates of the point at t as numbers."),
+    METHOD("c:xy", c_call, t_arg, "x, y", "The coordinates of the point at t as numbers."),
     METHOD("c:eval", c_call, t_or_eq, "point", "The point at t, as c(t)."),
     {.name = "c:deriv", .fn = c_deriv, .args = deriv_args, .sig = "c:deriv(t [, order] [, \"left\"|\"right\"]) -> vector", .self = self_curve, .selftype = "curve", .help = "The derivative of any order (default 1) at t, exact for Bezier and B-spline curves (rational ones by Leibniz's rule; up to order 2 for function curves). At a joint the default is the piece that starts there (the right-hand side, the left at the end of the domain); \"left\" takes the piece that ends there."},
     {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve", .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
