@@ -283,7 +283,10 @@ static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
     if (lua_isnoneornil(L, arg)) return NULL;
     luaL_checktype(L, arg, LUA_TTABLE);
     for (int i = 0; i < count; i++) {
-        buf[i] = lua_geti(L, arg, i + 1) == LUA_TNUMBER ? lua_tonumber(L, -1) : NAN;
+        lua_geti(L, arg, i + 1);
+        int isnum;
+        buf[i] = lua_tonumberx(L, -1, &isnum);
+        if (!isnum) buf[i] = NAN;
         lua_pop(L, 1);
     }
     return buf;
