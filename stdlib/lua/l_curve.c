@@ -334,22 +334,10 @@ static const pcl_arg sphdir_args[] = {A_NUM("u1"), A_NUM("u2"), PCL_END};
 PCL_BODY(l_sphdir, a) {
     double e[3];
     pc_dir3(a[0].x, a[1].x, e);
-    pcl_pushvector(L, 3, e);
-    return 1;
+    return pcl_push_results(L, 3, "v", e);
 }
 
 /* ---- evaluation methods ------------------------------------------------------------------------ */
-
-/* the value at t of argument #1 as c(t) shows it (pc_curve_value), or the error: a stroke's
- * piece past its half-spline's reach */
-static void eval_at(lua_State *L, lcurve *u, double t, double *h) {
-    int st = pc_curve_value(u->c, t, h), i;
-    double s;
-    char why[200];
-    const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(u->c, t, &i, &s) : NULL;
-    if (pc) pcl_argfail(L, 1, "%s", pc_half_why(pc, s, i, u->c->t1, why, sizeof why));
-    if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
-}
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 /* c(t), and c(u^2) of a scalar equation: a single-piece Bezier composed with it (l_expr.c) */
@@ -364,8 +352,9 @@ static const pcl_arg t_or_eq[] = {{.name = "t", .kind = PCL_ANY, .read = read_t,
 PCL_METHOD(c_call, lcurve *u, a) {
     double h[PC_MAXDIM + 1];
     int d = u->c->dim;
+    pc_why_call why;
     if (pcl_eq_curve_apply(L, u->c, 2)) return 1;
-    eval_at(L, u, a[0].x, h);
+    pcl_check(L, pc_stroke_value_checked(pcl_name(L), u->c, a[0].x, h, &why), why.row);
     if (strcmp(pcl_name(L), "c:xy")) return pcl_push_packed(L, d, "w", h);   /* a point, or a vector at infinity */
     if (h[d] == 0) return pcl_check(L, PC_IMPROPER, pc_curve_why);
     for (int k = 0; k < d; k++) lua_pushnumber(L, h[k]);
@@ -508,8 +497,7 @@ PCL_METHOD(c_controls, lcurve *u, a) {
 
 PCL_METHOD(c_knots, lcurve *u, a) {
     if (u->c->kind == PC_CURVE_FUNC) return pcl_fail(L, "a %s curve has no knots", u->kind);
-    pcl_push_numbers(L, u->c->nknots, u->c->knots);
-    return 1;
+    return pcl_push_results(L, 0, "N", u->c->nknots, u->c->knots);
 }
 
 /* c:piece(i, t), c:piece_xy(i, t), one body told apart by the declared name: a stroke's piece i
@@ -519,12 +507,11 @@ static const pcl_arg piece_args[] = {{.name = "i", .kind = PCL_INTEGER}, A_NUM("
 PCL_METHOD(c_piece, lcurve *u, a) {
     int np, d = u->c->dim;
     double x[PC_MAXDIM];
-    const pc_piece *pcs = pc_curve_stroke_pieces(u->c, &np);
-    if (!pcs) return pcl_fail(L, "a %s curve has no pieces", pc_curve_fourier_coefs(u->c, NULL) ? "Fourier" : u->kind);
-    int i = number_arg(L, "piece", np, &a[0]), st = pc_stroke_piece_at(u->c, i, a[1].x, x);
-    char why[200];
-    if (st == PC_EDOMAIN) pcl_argfail(L, 2, "%s", pc_half_why(&pcs[i], a[1].x, i, 1, why, sizeof why));
-    if (st != PC_OK) pcl_raise_status(L, pcl_name(L), st);
+    if (!pc_curve_stroke_pieces(u->c, &np))
+        return pcl_fail(L, "a %s curve has no pieces", pc_curve_fourier_coefs(u->c, NULL) ? "Fourier" : u->kind);
+    pc_why_call why;
+    int i = number_arg(L, "piece", np, &a[0]);
+    pcl_check(L, pc_stroke_piece_checked(pcl_name(L), u->c, i, a[1].x, x, &why), why.row);
     if (!strcmp(pcl_name(L), "c:piece")) return pcl_push_results(L, d, "p", x);
     for (int k = 0; k < d; k++) lua_pushnumber(L, x[k]);
     return d;
@@ -569,10 +556,8 @@ PCL_METHOD(c_flatten, lcurve *u, a) {
     pc_polyline pl = {0};
     pcl_callback_state(L);
     int st = pc_curve_flatten_parts(u->c, u->c->t0, u->c->t1, 1, f, a[0].x, &pl);
-    if (st != PC_OK) {
-        pc_polyline_free(&pl);
-        return pcl_raise_status(L, pcl_name(L), st);
-    }
+    if (st != PC_OK) pc_polyline_free(&pl);
+    pcl_check(L, st, NULL);
     lua_newtable(L);
     for (size_t i = 0, start = 0, npl = 0; i < pl.n; i++)   /* one list of points per piece */
         if (i + 1 == pl.n || pl.move[i + 1]) {

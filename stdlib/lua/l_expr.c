@@ -51,7 +51,7 @@ static pc_expr_pool *pool(lua_State *L) {
 static leq *toeq(lua_State *L, int idx) { return pcl_tagged_udata(L, idx, &EQ_TAG, EQ_MT, sizeof(leq), 0); }
 
 /* Samples: exactly the header and n values of max(dim, 1) numbers (pcl.h: forged userdata). */
-static lsamples *tosamples(lua_State *L, int idx) {
+static void *tosamples(lua_State *L, int idx) {
     lsamples *s = pcl_tagged_udata(L, idx, &SAMPLES_TAG, SAMPLES_MT, sizeof *s, PCL_TAG_ATLEAST);
     size_t len = lua_rawlen(L, idx);
     int ok = !s || (s->dim >= 0 && s->dim <= PC_MAXDIM && s->n >= 0 && (size_t)s->n <= len / sizeof(double) &&
@@ -61,9 +61,10 @@ static lsamples *tosamples(lua_State *L, int idx) {
 
 int pcl_isequation(lua_State *L, int idx) { return toeq(L, idx) != NULL; }
 
-static void push_eq(lua_State *L, int id) {
+static int push_eq(lua_State *L, int id) {
     leq *e = pcl_tagged_new(L, sizeof *e, &EQ_TAG, EQ_MT);
     *e = (leq){e->self, id, NULL};
+    return 1;
 }
 
 static int eq_gc(lua_State *L) {
@@ -145,8 +146,7 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
     char why[512];
     int r = e ? pc_expr_curve_at(pool(L), c, e->id, why, sizeof why) : 0;
     if (r < 0) return pcl_error(L, "curve: %s", why);   /* c(t) names "curve" itself (it may not be declared) */
-    if (e) push_eq(L, r);
-    return e != NULL;
+    return e ? push_eq(L, r) : 0;
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
@@ -208,8 +208,7 @@ static const pcl_arg param_args[] = {A_ANY("name", read_name, "a name of 1 to 31
 PCL_BODY(l_param, a) {
     int st, id = pc_expr_param(pool(L), a[0].s, &st);
     if (id < 0) return pcl_fail(L, "at most %d parameters per script, and %s would be one more", PC_EXPR_MAXPARAM, a[0].s);
-    push_eq(L, id);
-    return 1;
+    return push_eq(L, id);
 }
 /* "t and s", "t, s and u"; "none" */
 static const char *names_of(lua_State *L, int n, const int *in) {
@@ -227,7 +226,6 @@ static pc_expr_prog *prog_of(lua_State *L, leq *e) {
 }
 
 static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
-static void *self_samples(lua_State *L, int idx) { return tosamples(L, idx); }
 
 /* The table at 2 as an option table whose keys are the parameters in[0..n-1], each declared
  * as key (keys: n + 1), into v: M{t = ..., s = ...} and M:with{s = ...} are read and worded by
@@ -280,8 +278,7 @@ PCL_METHOD(eq_with, leq *e, a) {
     for (int j = 0; j < n; j++)
         if (v[j].present && (r = pc_expr_subst(pool(L), r, in[j], v[j].n, &st)) < 0)
             return pcl_keyfail(L, keys[j].name, "cannot be substituted: %s", pc_strerror(st));
-    push_eq(L, r);
-    return 1;
+    return push_eq(L, r);
 }
 
 /* The names given to M:show, looked up by value */
@@ -399,8 +396,7 @@ static int s_len(lua_State *L) {
 PCL_METHOD(s_sum, lsamples *s, a) {
     double sum = 0;
     for (long i = 0; i < s->n * (s->dim ? s->dim : 1); i++) sum += s->v[i];
-    lua_pushnumber(L, sum);
-    return 1;
+    return pcl_push_results(L, 0, "n", sum);
 }
 
 /* s[i] (a number or a point; nil past the ends), s.dim, then the methods */
@@ -446,7 +442,7 @@ static const pcl_fn methods[] = {
     METHOD("M:sample", eq_sample, sample_args, "M:sample(a, b [, n = 1001 [, s]]) -> samples", "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum()."),
     PCL_END};
 static const pcl_fn call[] = {{.name = "M", .fn = eq_call, .self = self_eq, .selftype = "equation", .key = "__call", .topic = "M(t)", .callname = 1, .sig = "M(t [, s ...]) -> value\nM{t = ..., s = ...} -> value", .help = "The equation's value at parameter values given in the order of M.params, or by name."}, PCL_END};
-static const pcl_fn sample_methods[] = {{.name = "s:sum", .fn = s_sum, .result = "number", .self = self_samples, .selftype = "samples object", .help = "The sum of every coordinate of the samples of M:sample (a checksum)."}, PCL_END};
+static const pcl_fn sample_methods[] = {{.name = "s:sum", .fn = s_sum, .result = "number", .self = tosamples, .selftype = "samples object", .help = "The sum of every coordinate of the samples of M:sample (a checksum)."}, PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("param", l_param, param_args, "equation", "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value."),
     PCL_END};

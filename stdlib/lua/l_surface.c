@@ -176,16 +176,14 @@ static int read_like_first(lua_State *L, int idx, const pcl_arg *a, pcl_val *out
 #define A_CURVE_LIKE(nm) {.name = nm, .kind = PCL_ANY, .read = read_like_first, .expect = "a curve"}
 
 static const pcl_arg ruled_args[] = {A_CURVE_LIKE("c0"), A_CURVE_LIKE("c1"), PCL_END};
-PCL_BODY(l_ruled, a) {
-    int st;
-    return made(L, pc_surface_ruled(a[0].obj, a[1].obj, &st), &st);
-}
-
 static const pcl_arg coons_args[] = {A_CURVE_LIKE("cu0"), A_CURVE_LIKE("cu1"), A_CURVE_LIKE("c0v"), A_CURVE_LIKE("c1v"),
                                      PCL_END};
-PCL_BODY(l_coons, a) {
+/* surface.ruled(c0, c1) and surface.coons(cu0, cu1, c0v, c1v), one body told apart by the declared name */
+PCL_BODY(l_curves, a) {
     int st;
-    return made(L, pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st), &st);
+    pc_surface *s = strcmp(pcl_name(L), "surface.ruled") ? pc_surface_coons(a[0].obj, a[1].obj, a[2].obj, a[3].obj, &st)
+                                                         : pc_surface_ruled(a[0].obj, a[1].obj, &st);
+    return made(L, s, &st);
 }
 
 static const pcl_arg revolution_args[] = {A_CURVE("profile", 3), A_POINT("A", 3), A_VECTOR("d", 3),
@@ -332,8 +330,7 @@ PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mes
     int drawn, st = pc_draw_shaded_surface(cv, sc, u->s, &scr, &o, base, (int)a[6].x, &n, &drawn);
     pcl_check_canvas(L, cv, drawn);   /* (a failing canvas and a failing geometry exclude each other) */
     pcl_check(L, st, pc_surface_why);
-    lua_pushinteger(L, (lua_Integer)n);
-    return 1;
+    return pcl_push_results(L, 0, "i", (int)n);
 }
 
 /* The surface a metamethod is called on (never a script's own call by name). */
@@ -385,8 +382,8 @@ static const pcl_fn fns[] = {
     PCL_FN("surface.bezier", l_bezier, bezier_args, "s", "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational)."),
     PCL_FN("surface.bspline", l_bspline, bspline_args, "s", "The tensor-product B-spline (NURBS) patch of degrees p, q; knots as for bspline."),
     {.name = "surface.hermite", .fn = l_hermite, .args = hermite_args, .result = "s", .help = "The bicubic Hermite (Coons) patch from corner points, tangents and twists (corners (0,0), (1,0), (0,1), (1,1))."},
-    PCL_FN("surface.ruled", l_ruled, ruled_args, "s", "The ruled surface (1 - v) c0(u) + v c1(u) between two curves."),
-    PCL_FN("surface.coons", l_coons, coons_args, "s", "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v)."),
+    PCL_FN("surface.ruled", l_curves, ruled_args, "s", "The ruled surface (1 - v) c0(u) + v c1(u) between two curves."),
+    PCL_FN("surface.coons", l_curves, coons_args, "s", "The linear Coons patch of four boundary curves meeting at the corners: S(u, 0), S(u, 1), S(0, v), S(1, v)."),
     {.name = "surface.revolution", .fn = l_revolution, .args = revolution_args, .sig = "surface.revolution(profile, A, d [, v0, v1]) -> s", .help = "A 3-D profile curve turned about the axis through A with direction d by v in [v0, v1] (default a whole turn)."},
     PCL_END};
 
@@ -395,10 +392,5 @@ void pcl_open_surface(lua_State *L) {
     static const luaL_Reg meta[] = {{"__tostring", s_tostring}, {"__gc", s_gc}, {NULL, NULL}};
     pcl_open_type(L, SURF_MT, meta, call, methods, s_index);
     lua_pop(L, 1);
-    lua_newtable(L);   /* the table `surface`, callable as surface(f, u0, u1, v0, v1) */
-    pcl_register(L, -1, fns, 0);
-    lua_newtable(L);
-    pcl_register(L, -1, func_call, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, module, "surface");
+    pcl_new_table(L, module, "surface", fns, func_call);   /* callable as surface(f, u0, u1, v0, v1) */
 }

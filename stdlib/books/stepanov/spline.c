@@ -287,3 +287,20 @@ const char *pc_half_why(const pc_piece *pc, double s, int i, double hi, char *wh
              low ? "n" : "m", pc_num_text(low ? pc->g.h.n : pc->g.h.m, deg, sizeof deg));
     return why;
 }
+
+int pc_stroke_value_checked(const char *op, const pc_curve *c, double t, double *h, pc_why_call *why) {
+    int st = pc_curve_value(c, t, h), i;
+    double s;
+    char text[200];
+    const pc_piece *pc = st == PC_EDOMAIN ? pc_stroke_past(c, t, &i, &s) : NULL;
+    if (!pc) return pc_why_call_set(why, NULL, st, 0, NULL, "");
+    return pc_why_call_set(why, op, st, 1, NULL, "%s", pc_half_why(pc, s, i, c->t1, text, sizeof text));
+}
+
+int pc_stroke_piece_checked(const char *op, const pc_curve *c, int i, double t, double *x, pc_why_call *why) {
+    int np, st = pc_stroke_piece_at(c, i, t, x);
+    const pc_piece *pcs = pc_curve_stroke_pieces(c, &np);
+    char text[200];
+    if (st != PC_EDOMAIN) return pc_why_call_set(why, NULL, st, 0, NULL, "");
+    return pc_why_call_set(why, op, st, 2, NULL, "%s", pc_half_why(&pcs[i], t, i, 1, text, sizeof text));
+}

@@ -12,6 +12,7 @@
 
 #include "smooth.h"
 #include "curve.h"
+#include "why_call.h"
 
 #define PC_CURVE_MAXDIM PC_MAXDIM   /* strokes go to every dimension points have */
 
@@ -95,5 +96,12 @@ const pc_piece *pc_stroke_past(const pc_curve *c, double s, int *i, double *t);
  * half-spline, into why (returned): "must be at least 0 (piece 1's half-spline has the
  * fractional degree n = 2.5 and does not extrapolate)". */
 const char *pc_half_why(const pc_piece *pc, double s, int i, double hi, char *why, size_t size);
+/* pc_curve_value of c at t for the call op, its failure explained in why (why_call.h): a
+ * stroke's piece past its half-spline's reach as argument 1 (pc_half_why); another failure
+ * leaves why empty. */
+int pc_stroke_value_checked(const char *op, const pc_curve *c, double t, double *h, pc_why_call *why);
+/* pc_stroke_piece_at of piece i at t for the call op, PC_EDOMAIN explained in why as argument
+ * 2 past the reach of the piece's half-spline; another failure leaves why empty. */
+int pc_stroke_piece_checked(const char *op, const pc_curve *c, int i, double t, double *x, pc_why_call *why);
 
 #endif

@@ -326,6 +326,33 @@ static void test_stroke_past(void **state) {
     pc_curve *line = pc_curve_bezier(2, 2, cp, &st);
     assert_null(pc_stroke_past(line, -.5, &i, &t));
     assert_null(pc_curve_stroke_pieces(line, NULL));
+    /* the same failures as the bindings raise them: a row for the call, naming the argument */
+    pc_why_call w;
+    double h[3];
+    assert_int_equal(pc_stroke_value_checked("c", c, -.5, h, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].op, "c");
+    assert_int_equal(w.row[0].status, PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "must be at least 0 (piece 1's half-spline has the fractional degree n = 2.5 "
+                                       "and does not extrapolate)");
+    assert_null(w.row[1].op);
+    assert_int_equal(pc_stroke_value_checked("c", c, .5, h, &w), PC_OK);
+    assert_null(w.row[0].op);
+    NEAR(h[0], Y[0], 1e-15);
+    NEAR(h[2], 1, 0);
+    assert_int_equal(pc_stroke_piece_checked("c:piece", c, 0, -.5, X, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].op, "c:piece");
+    assert_int_equal(w.row[0].arg, 2);
+    assert_string_equal(w.row[0].text, "must be at least 0 (piece 1's half-spline has the fractional degree n = 2.5 "
+                                       "and does not extrapolate)");
+    assert_int_equal(pc_stroke_piece_checked("c:piece", c, 0, .5, X, &w), PC_OK);
+    assert_null(w.row[0].op);
+    NEAR(X[0], Y[0], 0);
+    assert_int_equal(pc_stroke_piece_checked("c:piece", line, 0, .5, X, &w), PC_EARG);   /* no stroke: no row */
+    assert_null(w.row[0].op);
+    assert_int_equal(pc_stroke_value_checked("c", line, 2, h, &w), PC_OK);   /* a Bezier curve extrapolates */
+    assert_null(w.row[0].op);
+    NEAR(h[0], 2, 1e-15);
     pc_curve_release(line);
     pc_curve_release(c);
 }
