@@ -15,6 +15,7 @@
 #define PC_SURFACE_H
 #include "curve.h"
 #include "why.h"
+#include "why_call.h"
 
 typedef enum {
     PC_SURF_BEZIER, PC_SURF_BSPLINE, PC_SURF_RULED, PC_SURF_COONS, PC_SURF_REVOLUTION,
@@ -113,6 +114,11 @@ pc_surface *pc_surface_map(pc_surface *s, const pc_map *f, int *status);
 /* The explanations of the statuses of the surface constructors and of s:shade, by the names
  * the bindings give them (surface_why.c). */
 extern const pc_why pc_surface_why[];
+/* pc_surface_eval and pc_surface_normal for the call op, their geometric failures explained in
+ * why (why_call.h): a point at infinity ("the point at (0.5, 1) is at infinity"), a surface not
+ * 3-D and a singular point for the normal; another failure leaves why empty. */
+int pc_surface_eval_checked(const char *op, const pc_surface *s, double u, double v, double *out, pc_why_call *why);
+int pc_surface_normal_checked(const char *op, const pc_surface *s, double u, double v, double *n, pc_why_call *why);
 
 /* --- internal to stdlib/geom/surface*.c (not an API) ------------------------------------- */
 pc_surface *pc_surf_alloc(pc_surface_kind kind, int dim, int *status);

@@ -225,9 +225,8 @@ PCL_BODY(l_func, a) {
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
 PCL_METHOD(s_call, lsurf *u, a) {
     double out[PC_MAXDIM];
-    int st = pc_surface_eval(u->s, a[0].x, a[1].x, out);
-    if (st == PC_IMPROPER) return pcl_fail(L, "the point at (%s, %s) is at infinity", pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
-    pcl_check(L, st, NULL);
+    pc_why_call why;
+    pcl_check(L, pc_surface_eval_checked(pcl_name(L), u->s, a[0].x, a[1].x, out, &why), why.row);
     return pcl_push_results(L, u->s->dim, "p", out);
 }
 
@@ -240,12 +239,8 @@ PCL_METHOD(s_partials, lsurf *u, a) {
 
 PCL_METHOD(s_normal, lsurf *u, a) {
     double n[3];
-    if (u->s->dim != 3) return pcl_fail(L, "a normal needs a 3-D surface, this one is %d-D", u->s->dim);
-    int st = pc_surface_normal(u->s, a[0].x, a[1].x, n);
-    if (st == PC_EZERO)
-        return pcl_fail(L, "the surface is singular at (%s, %s): its partial derivatives are parallel",
-                        pcl_pushnum(L, a[0].x), pcl_pushnum(L, a[1].x));
-    pcl_check(L, st, NULL);
+    pc_why_call why;
+    pcl_check(L, pc_surface_normal_checked(pcl_name(L), u->s, a[0].x, a[1].x, n, &why), why.row);
     return pcl_push_results(L, 3, "v", n);
 }
 

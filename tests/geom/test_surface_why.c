@@ -54,11 +54,40 @@ static void test_shade_rows(void **state) {
     assert_null(pc_why_find(pc_surface_why, "surface.coons", PC_EZERO));
 }
 
+/* s(u, v) at a point at infinity and s:normal where it has none: a row for the call with the
+ * parameters' values; a point that evaluates leaves the table empty */
+static void test_eval_normal_checked(void **state) {
+    (void)state;
+    double cp[12] = {0, 0, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1};   /* P(0, 0), V(1, 0); P(0, 1), P(1, 1) */
+    double line[12] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0}, out[3], n[3];
+    int st;
+    pc_why_call w;
+    pc_surface *s = pc_surface_bezier(2, 1, 1, cp, &st);
+    pc_surface *flat = pc_surface_bilinear(3, line, line + 3, line + 6, line + 9, &st);   /* on the x axis */
+    assert_non_null(s);
+    assert_non_null(flat);
+    assert_int_equal(pc_surface_eval_checked("s", s, 0, 1, out, &w), PC_IMPROPER);
+    assert_string_equal(w.row[0].op, "s");
+    assert_int_equal(w.row[0].arg, 0);
+    assert_string_equal(w.row[0].text, "the point at (0, 1) is at infinity");
+    assert_null(w.row[1].op);
+    assert_int_equal(pc_surface_eval_checked("s", s, 0.5, 0, out, &w), PC_OK);
+    assert_null(w.row[0].op);
+    assert_int_equal(pc_surface_normal_checked("s:normal", s, 0.5, 0, n, &w), PC_EDIM);
+    assert_string_equal(w.row[0].text, "a normal needs a 3-D surface, this one is 2-D");
+    assert_int_equal(pc_surface_normal_checked("s:normal", flat, 0.25, 0.5, n, &w), PC_EZERO);
+    assert_string_equal(w.row[0].op, "s:normal");
+    assert_string_equal(w.row[0].text, "the surface is singular at (0.25, 0.5): its partial derivatives are parallel");
+    pc_surface_release(s);
+    pc_surface_release(flat);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_revolution_axis),
         cmocka_unit_test(test_coons_corners),
         cmocka_unit_test(test_shade_rows),
+        cmocka_unit_test(test_eval_normal_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
