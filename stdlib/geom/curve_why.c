@@ -91,3 +91,16 @@ int pc_curve_part_why(const pc_curve *c, double a, double b, char *why, size_t s
              pc_num_text(b, tb, sizeof tb));
     return PC_EDOMAIN;
 }
+
+int pc_curve_monomial_checked(const char *op, const pc_curve *c, double piece, double *rows, int *degree, int *rational,
+                              pc_why_call *why) {
+    char got[40];
+    int np = pc_curve_npieces(c);
+    if (c->kind == PC_CURVE_FUNC)
+        return pc_why_call_set(why, op, PC_EDOMAIN, 0, NULL,
+                               "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
+    if (piece < 1 || piece > np)
+        return pc_why_call_set(why, op, PC_EDOMAIN, 1, NULL, "must be from 1 to %d (the curve's pieces), got %s", np,
+                               pc_num_text(piece, got, sizeof got));
+    return pc_why_call_set(why, NULL, pc_curve_monomial_rows(c, (int)piece - 1, rows, degree, rational), 0, NULL, "");
+}

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include "curve.h"
 #include "why.h"
+#include "why_call.h"
 
 /* The methods' statuses: op the method as scripts call it ("c:tangent"); arg -2 shows t. */
 extern const pc_why pc_curve_why[];
@@ -34,5 +35,10 @@ int pc_curve_inside_why(const pc_curve *c, double t, char *why, size_t size);
 /* A part [a, b] of c's domain, a < b: PC_OK, or PC_EDOMAIN with the condition, the domain and
  * the ends given into why. */
 int pc_curve_part_why(const pc_curve *c, double a, double b, char *why, size_t size);
+/* pc_curve_monomial_rows of piece (1-based, as a script gives it) for the call op, its
+ * conditions explained in why (why_call.h): a function curve has no power basis, piece must be
+ * 1..npieces (argument 1); another failure leaves why empty. */
+int pc_curve_monomial_checked(const char *op, const pc_curve *c, double piece, double *rows, int *degree, int *rational,
+                              pc_why_call *why);
 
 #endif

@@ -393,15 +393,10 @@ PCL_METHOD(c_deriv, lcurve *u, a) {
 static const pcl_arg piece_opt[] = {{.name = "piece", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1, .shown = "1"},
                                     PCL_END};
 PCL_METHOD(c_monomial, lcurve *u, a) {
-    const pc_curve *c = u->c;
-    if (c->kind == PC_CURVE_FUNC)
-        return pcl_fail(L, "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
-    int np = pc_curve_npieces(c), n = c->dim, deg, rational;
-    if (a[0].x < 1 || a[0].x > np)
-        return pcl_argfail(L, 1, "must be from 1 to %d (the curve's pieces), got %s", np, pcl_pushnum(L, a[0].x));
+    int n = u->c->dim, deg, rational;
     double rows[(PC_CURVE_MAXDEG + 1) * (PC_MAXDIM + 1)];
-    int st = pc_curve_monomial_rows(c, (int)a[0].x - 1, rows, &deg, &rational);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pc_why_call why;
+    pcl_check(L, pc_curve_monomial_checked(pcl_name(L), u->c, a[0].x, rows, &deg, &rational, &why), why.row);
     lua_createtable(L, n, 1);
     for (int x = 0; x <= n - !rational; x++) {
         pcl_push_numbers(L, deg + 1, rows + x * (deg + 1));

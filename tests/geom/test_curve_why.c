@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include <math.h>
 #include "curve_why.h"
 
 static void test_method_rows(void **state) {
@@ -80,6 +81,38 @@ static void test_ranges(void **state) {
     pc_curve_release(c);
 }
 
+/* c:monomial's conditions: a function curve, a piece out of range; a piece in range gives its rows */
+static int line_x(void *ud, double t, int order, double *out) {
+    (void)ud, (void)order;
+    out[0] = t, out[1] = 1;
+    return PC_OK;
+}
+
+static void test_monomial_checked(void **state) {
+    (void)state;
+    double cp[] = {0, 0, 1, 4, 0, 1, 8, 2, 1}, rows[3 * 3];
+    int st, deg, rational;
+    pc_why_call w;
+    pc_curve *c = pc_curve_bezier(2, 3, cp, &st), *f = pc_curve_func(1, 0, 1, 0, line_x, NULL, NULL, &st);
+    assert_non_null(f);
+    assert_int_equal(pc_curve_monomial_checked("c:monomial", c, 2, rows, &deg, &rational, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].op, "c:monomial");
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "must be from 1 to 1 (the curve's pieces), got 2");
+    assert_int_equal(pc_curve_monomial_checked("c:monomial", f, 1, rows, &deg, &rational, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 0);
+    assert_string_equal(w.row[0].text,
+                        "a function curve has no power-basis coefficients (only Bezier and B-spline curves)");
+    assert_int_equal(pc_curve_monomial_checked("c:monomial", c, 1, rows, &deg, &rational, &w), PC_OK);
+    assert_null(w.row[0].op);
+    assert_int_equal(deg, 2);
+    assert_int_equal(rational, 0);
+    double want[6] = {0, 8, 0, 0, 0, 2};   /* x = 2 (1 - t) t 4 + t^2 8 = 8t, y = 2t^2 */
+    for (int i = 0; i < 6; i++) assert_true(fabs(rows[i] - want[i]) < 1e-12);
+    pc_curve_release(c);
+    pc_curve_release(f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_method_rows),
@@ -87,6 +120,7 @@ int main(void) {
         cmocka_unit_test(test_knots),
         cmocka_unit_test(test_params),
         cmocka_unit_test(test_ranges),
+        cmocka_unit_test(test_monomial_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
