@@ -75,6 +75,17 @@ int pc_curve_flatten_parts(const pc_curve *c, double a, double b, int pieces, co
     return PC_OK;
 }
 
+int pc_curve_flatten_checked(const char *op, const pc_curve *c, const pc_map *f, double tol, pc_polyline *out,
+                             pc_why_call *why) {
+    if (f && (f->nin != c->dim || f->nout != 2))
+        return pc_why_call_set(why, op, PC_EDIM, 2, NULL, "must be a map from %d-D to 2-D", c->dim);
+    if (!f && c->dim != 2)
+        return pc_why_call_set(why, op, PC_EDIM, 0, NULL, "a %d-D curve needs a map to the plane (argument #2)", c->dim);
+    int st = pc_curve_flatten_parts(c, c->t0, c->t1, 1, f, tol, out);
+    if (st != PC_OK) pc_polyline_free(out);
+    return pc_why_call_set(why, NULL, st, 0, NULL, "");
+}
+
 int pc_curve_flatten_screen(const pc_canvas *cv, const pc_curve *c, const pc_map *f, int pieces,
                             double tol, pc_polyline *out) {
     pc_map scr;

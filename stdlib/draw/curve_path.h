@@ -8,6 +8,7 @@
 #include "canvas.h"
 #include "curve.h"
 #include "scene.h"
+#include "why_call.h"
 
 /* The image (x, y) under f (to the plane) of the homogeneous n-D value h: PC_OK, PC_EDIM when f
  * takes points of another dimension (or is NULL), PC_IMPROPER where h goes to infinity,
@@ -28,6 +29,12 @@ void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out);
  * curve that is not 2-D without f, else pc_curve_flatten_map's status. */
 int pc_curve_flatten_parts(const pc_curve *c, double a, double b, int pieces, const pc_map *f,
                            double tol, pc_polyline *out);
+/* c:flatten: c over its domain flattened through f as pc_curve_flatten_parts, for the call op,
+ * the map's dimensions explained in why (why_call.h): f must take c's points to the plane
+ * (argument 2), a curve that is not 2-D needs one; another failure leaves why empty.  out is
+ * freed on a failure. */
+int pc_curve_flatten_checked(const char *op, const pc_curve *c, const pc_map *f, double tol, pc_polyline *out,
+                             pc_why_call *why);
 /* c over its domain flattened through f and the screen map of cv to within tol pixels into
  * out (screen coordinates), leaving out what lies beyond the canvas and a margin as wide as
  * it (a wide pen, a dash pattern leaving and coming back keep their look). */

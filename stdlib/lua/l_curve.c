@@ -544,15 +544,10 @@ PCL_METHOD(c_map, lcurve *u, a) {
 static const pcl_arg flatten_args[] = {{.name = "tol", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1e-3,
                                         .shown = "1e-3"}, {.name = "map", .kind = PCL_MAP, .flags = PCL_OPT}, PCL_END};
 PCL_METHOD(c_flatten, lcurve *u, a) {
-    pc_map *f = a[1].obj;
-    if (f && (f->nin != u->c->dim || f->nout != 2))
-        return pcl_argfail(L, 2, "must be a map from %d-D to 2-D", u->c->dim);
-    if (!f && u->c->dim != 2) return pcl_fail(L, "a %d-D curve needs a map to the plane (argument #2)", u->c->dim);
     pc_polyline pl = {0};
+    pc_why_call why;
     pcl_callback_state(L);
-    int st = pc_curve_flatten_parts(u->c, u->c->t0, u->c->t1, 1, f, a[0].x, &pl);
-    if (st != PC_OK) pc_polyline_free(&pl);
-    pcl_check(L, st, NULL);
+    pcl_check(L, pc_curve_flatten_checked(pcl_name(L), u->c, a[1].obj, a[0].x, &pl, &why), why.row);
     lua_newtable(L);
     for (size_t i = 0, start = 0, npl = 0; i < pl.n; i++)   /* one list of points per piece */
         if (i + 1 == pl.n || pl.move[i + 1]) {

@@ -99,6 +99,34 @@ static void test_flatten_needs_map(void **state) {
     pc_curve_release(c);
 }
 
+/* c:flatten's map: to the plane from the curve's dimension, needed for a 3-D curve */
+static void test_flatten_checked(void **state) {
+    (void)state;
+    double cp[] = {0, 0, 0, 1, 1, 1, 1, 1}, axes[6] = {1, 0, 0, 1, 0, 0}, o[2] = {0, 0};
+    int st;
+    pc_curve *c = pc_curve_bezier(3, 2, cp, &st);
+    pc_map cam3, plane;
+    assert_int_equal(pc_map_frame(&cam3, 2, 3, o, axes), PC_OK);
+    pc_map_identity(&plane, 2);
+    pc_polyline pl = {0};
+    pc_why_call w;
+    assert_int_equal(pc_curve_flatten_checked("c:flatten", c, NULL, 1e-3, &pl, &w), PC_EDIM);
+    assert_string_equal(w.row[0].op, "c:flatten");
+    assert_int_equal(w.row[0].arg, 0);
+    assert_string_equal(w.row[0].text, "a 3-D curve needs a map to the plane (argument #2)");
+    assert_int_equal(pc_curve_flatten_checked("c:flatten", c, &plane, 1e-3, &pl, &w), PC_EDIM);
+    assert_int_equal(w.row[0].arg, 2);
+    assert_string_equal(w.row[0].text, "must be a map from 3-D to 2-D");
+    assert_int_equal((int)pl.n, 0);
+    assert_int_equal(pc_curve_flatten_checked("c:flatten", c, &cam3, 1e-3, &pl, &w), PC_OK);
+    assert_null(w.row[0].op);
+    assert_int_equal((int)pl.n, 2);   /* a straight segment: its two ends */
+    assert_float_equal(pl.xy[2], 1, 1e-15);
+    assert_float_equal(pl.xy[3], 1, 1e-15);
+    pc_polyline_free(&pl);
+    pc_curve_release(c);
+}
+
 /* the segment from world (1, 5) to (9, 5) under WINDOW lands on row 5, pixels 1..9 */
 static void test_stroke(void **state) {
     (void)state;
@@ -171,6 +199,7 @@ int main(void) {
         cmocka_unit_test(test_image_xy),
         cmocka_unit_test(test_flatten_parts),
         cmocka_unit_test(test_flatten_needs_map),
+        cmocka_unit_test(test_flatten_checked),
         cmocka_unit_test(test_stroke),
         cmocka_unit_test(test_curve_draw),
         cmocka_unit_test(test_drawing_map),
