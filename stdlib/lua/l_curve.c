@@ -521,9 +521,8 @@ PCL_METHOD(c_coef, lcurve *u, a) {
     int k = number_arg(L, "coordinate", u->c->dim, &a[0]), m = n + 1;
     for (int ab = 0; ab < 2; ab++) {
         lua_createtable(L, m, 0);
-        const double *v = coef + (2 * k + ab) * m;
         for (int j = 0; j < m; j++) {
-            lua_pushnumber(L, v[j]);
+            lua_pushnumber(L, coef[(2 * k + ab) * m + j]);
             lua_rawseti(L, -2, j);
         }
     }
@@ -581,8 +580,7 @@ static int c_tostring(lua_State *L) {
     if (!u) return 0;
     char text[200];
     pc_curve_text(u->c, u->kind, text, sizeof text);
-    lua_pushstring(L, text);
-    return 1;
+    return pcl_push_results(L, 0, "s", text);
 }
 
 static const pcl_fn ctors[] = {

@@ -127,8 +127,7 @@ static int m_pow(lua_State *L) { return apply(L, PC_EQV_POW, 1, 2, NULL); }
 
 static int m_eq(lua_State *L) {
     leq *a = toeq(L, 1), *b = toeq(L, 2);
-    lua_pushboolean(L, a && b && a->id == b->id);        /* hash-consed: one node, one equation */
-    return 1;
+    return pcl_push_results(L, 0, "b", a && b && a->id == b->id);   /* hash-consed: one node, one equation */
 }
 
 /* the operands each hook looks at for an equation (-1: all); the order of pcl_eq_op */
@@ -303,25 +302,24 @@ static const char *namer(void *ud, int dim, const double *h) {
 }
 
 /* the text of equation id (names: the stack index of M:show's table, or 0), measured first */
-static void push_text(lua_State *L, int id, int names) {
+static int push_text(lua_State *L, int id, int names) {
     namer_ud ud = {L, names};   /* (the namer's use of the stack is balanced, as a buffer needs) */
     luaL_Buffer b;
     size_t len = (size_t)pc_expr_print(pool(L), id, names ? namer : NULL, &ud, NULL, 0);
     pc_expr_print(pool(L), id, names ? namer : NULL, &ud, luaL_buffinitsize(L, &b, len + 1), len + 1);
     luaL_pushresultsize(&b, len);
+    return 1;
 }
 
 static int eq_tostring(lua_State *L) {
     leq *e = toeq(L, 1);
     if (!e) return pcl_error(L, "tostring: not an equation");
-    push_text(L, e->id, 0);
-    return 1;
+    return push_text(L, e->id, 0);
 }
 
 static const pcl_arg show_args[] = {{.name = "names", .kind = PCL_TABLE, .flags = PCL_OPT, .expect = "a table {A = A, ...}"}, PCL_END};
 PCL_METHOD(eq_show, leq *e, a) {
-    push_text(L, e->id, a[0].present ? 2 : 0);
-    return 1;
+    return push_text(L, e->id, a[0].present ? 2 : 0);
 }
 
 /* M:expanded(): the coordinates expanded in powers of the equation's one parameter as the
@@ -388,8 +386,7 @@ static int eq_index(lua_State *L) {
 static int s_len(lua_State *L) {
     lsamples *s = tosamples(L, 1);
     if (!s) return pcl_error(L, "#: not samples");
-    lua_pushinteger(L, s->n);
-    return 1;
+    return pcl_push_results(L, 0, "i", (int)s->n);
 }
 
 /* s:sum(): the sum of every coordinate (a checksum) */

@@ -26,9 +26,6 @@ pc_surface *pcl_tosurface(lua_State *L, int idx) {
     return u ? u->s : NULL;
 }
 
-/* Push the surface a core constructor made, or raise its status *status when it made none
- * (by address: read after the constructor has set it, whatever the order C evaluates the
- * arguments in).  1. */
 int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const char *kind) {
     if (!s) pcl_raise_status(L, kind, *status);
     lsurf *u = pcl_tagged_new(L, sizeof *u, &SURF_TAG, SURF_MT);
