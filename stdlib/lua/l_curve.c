@@ -140,7 +140,7 @@ PCL_BODY(l_bezier, a) {
     return pcl_push_made(L, pc_curve_bezier(a[0].dim, a[0].n, a[0].list, &st), &st, NULL);
 }
 
-pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree, double **knots) {
+pc_knot_kind pcl_checkknots(lua_State *L, int arg, int ncp, int degree, double **knots) {
     static const char *const kinds[] = {"open", "uniform", "periodic", NULL};
     static const pc_knot_kind kind_of[] = {PC_KNOTS_OPEN, PC_KNOTS_UNIFORM, PC_KNOTS_PERIODIC};
     static const pcl_arg named = {.name = "knots", .kind = PCL_ENUM, .choices = kinds,
@@ -153,7 +153,7 @@ pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int 
     pcl_readone(L, arg, arg, 0, lua_istable(L, arg) ? &list : &named, 0, &v);
     if (!lua_istable(L, arg)) return kind_of[v.n];
     if (pc_knots_why(ncp, degree, v.n, v.list, why, sizeof why) != PC_OK)
-        pcl_error(L, "%s: argument #%d (knots) %s", fn, arg, why);
+        pcl_error(L, "%s: argument #%d (knots) %s", pcl_name(L), arg, why);
     *knots = v.list;
     return PC_KNOTS_GIVEN;
 }
@@ -165,7 +165,7 @@ PCL_BODY(l_bspline, a) {
     char why[160];
     if (pc_bspline_degree_why(m, a[1].x, periodic, why, sizeof why) != PC_OK) return pcl_argfail(L, 2, "%s", why);
     double *knots;
-    pc_knot_kind kk = pcl_checkknots(L, pcl_name(L), 3, m, (int)a[1].x, &knots);
+    pc_knot_kind kk = pcl_checkknots(L, 3, m, (int)a[1].x, &knots);
     return pcl_push_made(L, pc_curve_bspline(a[0].dim, (int)a[1].x, m, a[0].list, kk, knots, &st), &st, NULL);
 }
 

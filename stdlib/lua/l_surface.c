@@ -142,7 +142,7 @@ PCL_BODY(l_bspline, a) {
     if (p < 1 || p >= nu) return pcl_argfail(L, 2, "must be 1..%d (below the %d rows)", nu - 1, nu);
     if (q < 1 || q >= nv) return pcl_argfail(L, 3, "must be 1..%d (below the %d columns)", nv - 1, nv);
     double *uk, *vk;   /* the knots as bspline reads them (l_curve.c) */
-    pc_knot_kind ukind = pcl_checkknots(L, pcl_name(L), 4, nu, p, &uk), vkind = pcl_checkknots(L, pcl_name(L), 5, nv, q, &vk);
+    pc_knot_kind ukind = pcl_checkknots(L, 4, nu, p, &uk), vkind = pcl_checkknots(L, 5, nv, q, &vk);
     int st;
     return made(L, pc_surface_bspline((int)a[0].v[2], p, q, nu, nv, a[0].list, ukind, uk, vkind, vk, &st), &st);
 }

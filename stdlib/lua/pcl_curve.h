@@ -26,8 +26,7 @@ int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind);
 /* The knots argument at arg of a B-spline of ncp control points: nil ("open"), "open",
  * "uniform", "periodic", or a non-decreasing list of ncp + degree + 1 numbers (then *knots
  * points at them, in a scratch userdata left on the stack; else NULL). */
-pc_knot_kind pcl_checkknots(lua_State *L, const char *fn, int arg, int ncp, int degree,
-                            double **knots);
+pc_knot_kind pcl_checkknots(lua_State *L, int arg, int ncp, int degree, double **knots);
 
 /* The current projection set by camera(), or NULL. */
 pc_map *pcl_camera(lua_State *L);
