@@ -98,9 +98,6 @@ static int node_of(lua_State *L, int idx) {
     return lua_type(L, idx) == LUA_TNUMBER && isfinite(x) ? pc_expr_const(pool(L), x, &st) : -1;
 }
 
-/* the failure st of making or running an equation, in the running declared function's name */
-static int status_fail(lua_State *L, int st) { return pcl_fail(L, "%s", pc_expr_why(st)); }
-
 /* v of the n operands from stack index first: push the results, or raise the core's message
  * with each "@k" replaced by what operand k is (a metamethod's message is whole) */
 static int apply(lua_State *L, pc_expr_verb v, int first, int n, const pc_expr_how *how) {
@@ -220,7 +217,7 @@ static const char *names_of(lua_State *L, int n, const int *in) {
 static pc_expr_prog *prog_of(lua_State *L, leq *e) {
     int in[PC_EXPR_MAXPARAM], st;
     if (!e->prog) e->prog = pc_expr_compile(pool(L), e->id, pc_expr_param_list(pool(L), e->id, in), in, &st);
-    if (!e->prog) status_fail(L, st);
+    if (!e->prog) pcl_fail(L, "%s", pc_expr_why(st));
     return e->prog;
 }
 
