@@ -545,7 +545,6 @@ static const pcl_arg flatten_args[] = {{.name = "tol", .kind = PCL_NUMBER, .flag
 PCL_METHOD(c_flatten, lcurve *u, a) {
     pc_polyline pl = {0};
     pc_why_call why;
-    pcl_callback_state(L);
     pcl_check(L, pc_curve_flatten_checked(pcl_name(L), u->c, a[1].obj, a[0].x, &pl, &why), why.row);
     lua_newtable(L);
     for (size_t i = 0, start = 0, npl = 0; i < pl.n; i++)   /* one list of points per piece */
@@ -561,6 +560,7 @@ PCL_METHOD(c_flatten, lcurve *u, a) {
 static int c_index(lua_State *L) {
     lcurve *u = self_curve(L, 1);
     if (!u) return 0;
+    lua_settop(L, 2);
     const char *k = lua_tostring(L, 2);
     double v;
     pc_field_type type = k ? pc_curve_field(u->c, k, &v) : PC_FIELD_NONE;
@@ -568,10 +568,7 @@ static int c_index(lua_State *L) {
     else if (type == PC_FIELD_INTEGER) lua_pushinteger(L, (lua_Integer)v);
     else if (type == PC_FIELD_NUMBER) lua_pushnumber(L, v);
     else if (type == PC_FIELD_BOOLEAN) lua_pushboolean(L, v != 0);
-    else {
-        lua_pushvalue(L, 2);
-        lua_rawget(L, lua_upvalueindex(1));
-    }
+    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top */
     return 1;
 }
 

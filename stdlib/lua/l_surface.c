@@ -38,12 +38,10 @@ void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
     pcl_push_made_surface(L, s, &ok, kind);
 }
 
-/* The receiver of a method: a live surface (the callbacks of a Lua surface need the state). */
+/* The receiver of a method: a live surface (the layer arms the callbacks of a Lua surface). */
 static void *self_surf(lua_State *L, int idx) {
     lsurf *u = tosurf(L, idx);
-    if (!u || !u->s) return NULL;
-    pcl_callback_state(L);
-    return u;
+    return u && u->s ? u : NULL;
 }
 
 static int s_gc(lua_State *L) {
@@ -317,7 +315,6 @@ PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mes
     if (u->s->dim != 3)
         return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", u->s->dim);
     drawing_map(L, &a[7], 3, &scr);
-    pcl_callback_state(L);
     pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
     int drawn, st = pc_draw_shaded_surface(cv, sc, u->s, &scr, &o, base, (int)a[6].x, &n, &drawn);
     pcl_check_canvas(L, cv, drawn);   /* (a failing canvas and a failing geometry exclude each other) */
