@@ -2,6 +2,7 @@
  * core's pc_cnum_arith and pc_cnum_fn (stdlib/geom/cnum.h), the Moebius map its pc_mobius. */
 #include "pcl_args.h"
 #include "pcl_tk.h"
+#include "pcl_tagged.h"
 #include "pcl_core.h"
 #include "curvilinear.h"
 #include "cnum.h"
@@ -30,10 +31,7 @@ static void *tomobius(lua_State *L, int idx) {
 }
 
 static void pushc(lua_State *L, pc_cnum w) {
-    cnum *z = lua_newuserdatauv(L, sizeof *z, 0);
-    z->self = PCL_SELF_TAG(z, &COMPLEX_TAG);
-    z->z = w;
-    luaL_setmetatable(L, COMPLEX_MT);
+    ((cnum *)pcl_tagged_new(L, sizeof(cnum), &COMPLEX_TAG, COMPLEX_MT))->z = w;
 }
 
 /* a complex operand: a complex or a real number (not checked for finiteness) */
@@ -56,11 +54,12 @@ static int read_c(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *o
 #define A_COMPLEX(nm) A_ANY(nm, read_c, "a finite complex number or number")
 static pc_cnum cval(const pcl_val *v) { return (pc_cnum){v->v[0], v->v[1]}; }
 
-/* ---- the operators: metamethods, declared for their messages ("complex +: argument #2 ...") */
-
-static int arith(lua_State *L, char op) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
+/* ---- the operators: metamethods, declared for their messages ("complex +: argument #2 ...");
+ * one body, the operator the last character of the declared name, the unary minus its key's
+ * (Lua calls __unm with (z, z)) */
+PCL_BODY(c_arith, a) {
+    const pcl_fn *d = pcl_running(L)->d;
+    char op = strcmp(d->key, "__unm") ? d->name[strlen(d->name) - 1] : 'u';
     pc_cnum r;
     int st = pc_cnum_arith(op, cval(&a[0]), cval(&a[1]), &r);
     if (st == PC_EPOLE)
@@ -69,13 +68,6 @@ static int arith(lua_State *L, char op) {
     pushc(L, r);
     return 1;
 }
-
-static int c_add(lua_State *L) { return arith(L, '+'); }
-static int c_sub(lua_State *L) { return arith(L, '-'); }
-static int c_mul(lua_State *L) { return arith(L, '*'); }
-static int c_div(lua_State *L) { return arith(L, '/'); }
-static int c_pow(lua_State *L) { return arith(L, '^'); }
-static int c_unm(lua_State *L) { return arith(L, 'u'); }    /* Lua calls it with (z, z) */
 
 static int c_eq(lua_State *L) {
     pc_cnum a = {0, 0}, b = {0, 0};
@@ -91,11 +83,11 @@ static int c_tostring(lua_State *L) {
     return 1;
 }
 
-/* ---- complex.f(z) and z:f(): one body, the value an argument or the receiver ------------- */
-
-static int zfn(lua_State *L, char op) {
-    pcl_val a[1] = {0};
-    cnum *z = PCL_READ(L, a);
+/* ---- complex.f(z) and z:f(): one body, the value an argument or the receiver, the function
+ * the last part of the declared name (conj, abs, arg, exp: pc_cnum_fn's c, a, g, e; point) */
+PCL_METHOD(c_fn, cnum *z, a) {
+    const char *name = pcl_running(L)->d->name, *f = name + strcspn(name, ".:") + 1;
+    char op = strcmp(f, "arg") ? f[0] : 'g';
     pc_cnum w, in = z ? z->z : cval(&a[0]);
     if (op == 'p') w = in;
     else if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
@@ -104,12 +96,6 @@ static int zfn(lua_State *L, char op) {
     else pushc(L, w);
     return 1;
 }
-
-static int c_conj(lua_State *L) { return zfn(L, 'c'); }
-static int c_abs(lua_State *L) { return zfn(L, 'a'); }
-static int c_arg(lua_State *L) { return zfn(L, 'g'); }
-static int c_exp(lua_State *L) { return zfn(L, 'e'); }
-static int c_point(lua_State *L) { return zfn(L, 'p'); }
 
 static int c_index(lua_State *L) {
     cnum *z = tocnum(L, 1);
@@ -175,11 +161,9 @@ static int m_call(lua_State *L) {
 }
 
 static void pushm(lua_State *L, pc_cnum z0, double phi) {
-    mobius *m = lua_newuserdatauv(L, sizeof *m, 0);
-    m->self = PCL_SELF_TAG(m, &MOBIUS_TAG);
+    mobius *m = pcl_tagged_new(L, sizeof *m, &MOBIUS_TAG, MOBIUS_MT);
     m->z0 = z0;
     m->phi = phi;
-    luaL_setmetatable(L, MOBIUS_MT);
 }
 
 static int m_inverse(lua_State *L) {
@@ -218,22 +202,21 @@ PCL_BODY(l_mobius, a) {
 }
 
 static const pcl_arg z_arg[] = {A_COMPLEX("z"), PCL_END};
-#define ZMETHOD(nm, f, res, text) {.name = nm, .fn = f, .result = res, .help = text, .self = tocnum, .selftype = "complex number"}
+#define ZMETHOD(nm, res, text) {.name = nm, .fn = c_fn, .result = res, .help = text, .self = tocnum, .selftype = "complex number"}
 static const pcl_fn zmethods[] = {
-    ZMETHOD("z:conj", c_conj, "z", "The complex conjugate re - i im."), ZMETHOD("z:abs", c_abs, "number", "The modulus |z|."),
-    ZMETHOD("z:arg", c_arg, "number", "The argument of z: atan2(im, re), in radians."), ZMETHOD("z:exp", c_exp, "z", "The complex exponential e^z."),
-    ZMETHOD("z:point", c_point, "P", "The 2-D point (re, im) of the complex plane."), PCL_END};
+    ZMETHOD("z:conj", "z", "The complex conjugate re - i im."), ZMETHOD("z:abs", "number", "The modulus |z|."),
+    ZMETHOD("z:arg", "number", "The argument of z: atan2(im, re), in radians."), ZMETHOD("z:exp", "z", "The complex exponential e^z."),
+    ZMETHOD("z:point", "P", "The 2-D point (re, im) of the complex plane."), PCL_END};
 #define A_OPERAND(nm) A_ANY(nm, read_c, "a complex number or a number")
 static const pcl_arg operands[] = {A_OPERAND("left"), A_OPERAND("right"), PCL_END};
-#define OPERATOR(op, f, mm) {.name = "complex " op, .fn = f, .args = operands, .key = mm}
-static const pcl_fn operators[] = {OPERATOR("+", c_add, "__add"), OPERATOR("-", c_sub, "__sub"),
-                                   OPERATOR("*", c_mul, "__mul"), OPERATOR("/", c_div, "__div"),
-                                   OPERATOR("^", c_pow, "__pow"), OPERATOR("-", c_unm, "__unm"), PCL_END};
+#define OPERATOR(op, mm) {.name = "complex " op, .fn = c_arith, .args = operands, .key = mm}
+static const pcl_fn operators[] = {OPERATOR("+", "__add"), OPERATOR("-", "__sub"), OPERATOR("*", "__mul"),
+                                   OPERATOR("/", "__div"), OPERATOR("^", "__pow"), OPERATOR("-", "__unm"), PCL_END};
 static const pcl_fn cfns[] = {
     PCL_FN("complex.polar", c_polar, polar_args, "z", "The complex number r e^(iu)."),
-    PCL_FN("complex.exp", c_exp, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_abs, z_arg, "number", "The modulus |z|."),
-    PCL_FN("complex.arg", c_arg, z_arg, "number", "The argument of z: atan2(im, re), in radians."),
-    PCL_FN("complex.conj", c_conj, z_arg, "z", "The complex conjugate."), PCL_END};
+    PCL_FN("complex.exp", c_fn, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_fn, z_arg, "number", "The modulus |z|."),
+    PCL_FN("complex.arg", c_fn, z_arg, "number", "The argument of z: atan2(im, re), in radians."),
+    PCL_FN("complex.conj", c_fn, z_arg, "z", "The complex conjugate."), PCL_END};
 static const pcl_fn cnew[] = {{.name = "complex", .fn = c_new, .args = new_args, .self = self_table, .selftype = "table", .key = "__call",
                                .sig = "complex(re [, im]) | complex(P) -> z", .help = "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point()."}, PCL_END};
 static const pcl_fn mfns[] = {PCL_FN("mobius", l_mobius, mobius_args, "M", "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse()."), PCL_END};
@@ -251,13 +234,10 @@ void pcl_open_complex(lua_State *L) {
     pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, m_index);
     lua_settop(L, module);
 
-    lua_newtable(L);   /* complex: a table of functions, callable as the constructor */
-    pcl_register(L, -1, cfns, 0);
+    pcl_new_table(L, module, "complex", cfns, cnew);   /* a table of functions, callable as the constructor */
+    lua_getfield(L, module, "complex");
     pushc(L, (pc_cnum){0, 1});
     lua_setfield(L, -2, "i");
-    lua_newtable(L);
-    pcl_register(L, -1, cnew, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, module, "complex");
     pcl_register(L, module, mfns, 0);
+    lua_settop(L, module);
 }
