@@ -442,15 +442,7 @@ void pcl_open_map(lua_State *L) {
     lua_pushliteral(L, "map");
     lua_setfield(L, -2, "__name");
 
-    lua_newtable(L);                                     /* the affine table */
-    pcl_register(L, -1, affine_fns, 0);
-    lua_newtable(L);                                     /* its metatable: affine(src, dst) */
-    pcl_register(L, -1, affine_call, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, module, "affine");
-
-    lua_newtable(L);                                     /* the map table */
-    pcl_register(L, -1, ctors, 0);
-    lua_setfield(L, module, "map");
+    pcl_new_table(L, module, "affine", affine_fns, affine_call);   /* affine(src, dst) its __call */
+    pcl_new_table(L, module, "map", ctors, NULL);
     lua_settop(L, module);
 }
