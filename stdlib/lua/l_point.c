@@ -8,7 +8,7 @@
  * the arguments again only to word an error. */
 #include "pcl_args.h"
 #include "pcl_point.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_expr.h"   /* equations take over when an operand is one (l_expr.c) */
 #include "point_fn.h"
 
@@ -41,18 +41,16 @@ static inline pcl_value *alloc(lua_State *L, int n, int mt) {
 }
 #define newpt(L, n) alloc((L), (n), MT)
 
-void pcl_push_point_mt(lua_State *L) { lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY); }
-
 pcl_value *pcl_tovalue(lua_State *L, int idx) {
     idx = lua_absindex(L, idx);
-    pcl_push_point_mt(L);
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
     pcl_value *p = pcl_testudata(L, idx, lua_gettop(L));
     lua_pop(L, 1);
     return genuine(L, idx, p);
 }
 
 pcl_value *pcl_newvalue(lua_State *L, int n) {
-    pcl_push_point_mt(L);
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
     pcl_value *p = alloc(L, n, lua_gettop(L));
     lua_remove(L, -2);
     return p;
@@ -74,8 +72,6 @@ static void fill(pcl_value *r, int n, const double *x, double w) {
 }
 void pcl_pushpoint(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 1.0); }
 void pcl_pushvector(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 0.0); }
-/* the n + 1 homogeneous h */
-static void push_h(lua_State *L, int n, const double *h) { fill(newpt(L, n), n, h, h[n]); }
 
 static int push_num(lua_State *L, double x) {
     lua_pushnumber(L, x);
@@ -97,7 +93,9 @@ static double coordinate(lua_State *L, int idx, int i, int table) {
     return v.x;
 }
 
-static int make(lua_State *L, double weight) {
+/* P(...) and V(...): the weight is the op of the registration table (upvalue 2) */
+static int l_make(lua_State *L) {
+    double weight = (double)lua_tointeger(L, PCL_UPVALUE(2));
     int n = lua_gettop(L), table = n == 1 && lua_type(L, 1) == LUA_TTABLE;   /* P{1, 2} */
     if (table) n = (int)lua_rawlen(L, 1);
     for (int i = 0; !table && i < n; i++)       /* an equation among the coordinates: P of it */
@@ -113,9 +111,6 @@ static int make(lua_State *L, double weight) {
     p->h[n] = weight;
     return 1;
 }
-
-static int l_P(lua_State *L) { return make(L, 1.0); }
-static int l_V(lua_State *L) { return make(L, 0.0); }
 
 /* An operand as the operators' messages show it: a value, a number, or another thing by its type */
 static pc_operand operand(lua_State *L, int idx) {
@@ -249,10 +244,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
         return k ? pcl_argfail(L, k, "%s", msg) : pcl_fail(L, "%s", msg);
     }
     if (!value) return push_num(L, out[0]);
-    push_h(L, n, out);
-    if (op != PC_FN_MEET) return 1;
-    lua_pushnumber(L, out[n + 1]);                      /* lambda, mu */
-    return 2 + push_num(L, out[n + 2]);
+    return pcl_push_packed(L, n, op == PC_FN_MEET ? "w n n" : "w", out);   /* meet: K, lambda, mu */
 }
 
 /* The core's function op of the declared arguments, after the equations' hook (NOHOOK: none)
@@ -331,8 +323,7 @@ PCL_BODY(l_mid, a) {
     for (int i = 0; i <= n; i++)
         if (!isfinite(s[i]))
             return pcl_error(L, "%s: the result is out of range (not finite: a coordinate overflowed)", pcl_name(L));
-    push_h(L, n, s);
-    return 1;
+    return pcl_push_packed(L, n, "w", s);
 }
 
 /* The hot path of dist and dot: two values of one dimension whose weights are exactly w (1:
@@ -424,8 +415,7 @@ PCL_BODY(l_near, a) {
         pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
         pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
     }
-    lua_pushboolean(L, pc_near(p.n, p.v, q.v, a[2].x));
-    return 1;
+    return pcl_push_results(L, 0, "b", pc_near(p.n, p.v, q.v, a[2].x));
 }
 
 /* ---- the drawing layer's hook --------------------------------------------------------------- */
@@ -453,8 +443,8 @@ static const struct {
     pcl_fn fn[2];
     int op, hook, method;
 } fns[] = {
-    {{{.name = "P", .fn = l_P, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."}}, .method = 0},
-    {{{.name = "V", .fn = l_V, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."}}, .method = 0},
+    {{{.name = "P", .fn = l_make, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."}}, .op = 1},
+    {{{.name = "V", .fn = l_make, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."}}, .method = 0},
     {{PCL_FN("lerp", l_lerp, lerp_args, "value", "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers.")}, .method = 1},
     {{PCL_FN("bar", l_bar, t_arg, "number", "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t.")}, .method = 0},
     {{{.name = "mid", .fn = l_mid, .args = mid_args, .sig = "mid(A, B, ...) -> value", .help = "The midpoint of two values, or the centroid of several."}}, .method = 1},
