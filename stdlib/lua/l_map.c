@@ -267,15 +267,13 @@ static int read_input(lua_State *L, const pc_map *f, int first, int last, double
     return 1;
 }
 
-static int pole_error(lua_State *L) {
-    return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
-}
-
 /* f(p) or f(x, y, ...): the image, its weight snapped by the one rule (a weight of 1e-17 from
- * a projective matrix is a direction, not a point at 1e17) */
+ * a projective matrix is a direction, not a point at 1e17); f:xy(...), the same body: the
+ * coordinates of the image of a point as numbers */
 static int l_apply(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
-    if (pcl_tocurve(L, 2) || pcl_tosurface(L, 2)) {   /* f(c) is c:map(f) */
+    int xy = !strcmp(pcl_running(L)->d->name, "f:xy"), n = f->nout;
+    if (!xy && (pcl_tocurve(L, 2) || pcl_tosurface(L, 2))) {   /* f(c) is c:map(f) */
         lua_settop(L, 2);
         lua_getfield(L, 2, "map");
         lua_pushvalue(L, 2);
@@ -283,23 +281,14 @@ static int l_apply(lua_State *L) {
         lua_call(L, 2, 1);
         return 1;
     }
-    double in[PC_MAXDIM + 1];
-    read_input(L, f, 2, lua_gettop(L), in);
-    pcl_value *r = pcl_newvalue(L, f->nout);
-    if (pc_map_image_rule(f, in, r->h) == PC_EPOLE) return pole_error(L);
-    return 1;
-}
-
-static int l_xy(lua_State *L) {
-    pc_map *f = pcl_read(L, NULL, 0);
     double in[PC_MAXDIM + 1], out[PC_MAXDIM + 1];
-    if (!read_input(L, f, 2, lua_gettop(L), in) && in[f->nin] != 1)
+    if (!read_input(L, f, 2, lua_gettop(L), in) && xy && in[f->nin] != 1)
         return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[f->nin]));
     int st = pc_map_image_rule(f, in, out);
-    if (st == PC_EPOLE) return pole_error(L);
-    if (st == PC_IMPROPER || out[f->nout] == 0)
+    if (st == PC_EPOLE) return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
+    if (!xy) return pcl_push_packed(L, n, "w", out);
+    if (st == PC_IMPROPER || out[n] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
-    int n = f->nout;
     luaL_checkstack(L, n, NULL);
     for (int i = 0; i < n; i++) lua_pushnumber(L, out[i] / out[n]);
     return n;
@@ -403,7 +392,7 @@ static int l_index(lua_State *L) {
 #define METHODSIG(nm, f, forms, text) {.name = nm, .fn = f, .sig = forms, .help = text, .self = self_map, .selftype = "map"}
 static const pcl_fn methods[] = {
     {.name = "f:compose", .fn = l_compose, .args = g_arg, .sig = "f:compose(g) | f * g -> map", .self = self_map, .selftype = "map", .help = "The map applying g first, then f."}, METHOD("f:inverse", l_inverse, NULL, "map", "The inverse map; a singular or non-square map is an error."),
-    METHODSIG("f:xy", l_xy, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
+    METHODSIG("f:xy", l_apply, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
     METHOD("f:is_affine", l_is_affine, NULL, "boolean", "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors."), METHOD("f:vanishing_points", l_vanishing, NULL, "Vx, Vy, Vz", "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity."),
     METHOD("f:show", l_show, conv_arg, NULL, "Print the matrix with its convention named and the columns aligned."), PCL_END};
 static const pcl_fn apply[] = {
