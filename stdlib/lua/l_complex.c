@@ -71,8 +71,7 @@ PCL_BODY(c_arith, a) {
 
 static int c_eq(lua_State *L) {
     pc_cnum a = {0, 0}, b = {0, 0};
-    lua_pushboolean(L, toc(L, 1, &a) && toc(L, 2, &b) && a.re == b.re && a.im == b.im);
-    return 1;
+    return pcl_push_results(L, 0, "b", toc(L, 1, &a) && toc(L, 2, &b) && a.re == b.re && a.im == b.im);
 }
 
 static int c_tostring(lua_State *L) {

@@ -368,8 +368,7 @@ static int l_tostring(lua_State *L) {
     if (!f) return pcl_error(L, "tostring: not a map");
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 24 + 64];
     pc_map_text(f, text, sizeof text);
-    lua_pushstring(L, text);
-    return 1;
+    return pcl_push_results(L, 0, "s", text);
 }
 
 /* __index: the methods, then f.nin, f.nout and f.C0, f.C1, ... (the images of the origin and

@@ -70,8 +70,7 @@ PCL_BODY(l_slider, a) {
     if (v < lo || v > hi)
         return pcl_fail(L, "the value %s set for %s is outside its range [%s, %s]", pcl_pushnum(L, v), name,
                         pcl_pushnum(L, lo), pcl_pushnum(L, hi));
-    lua_pushnumber(L, v);
-    return 1;
+    return pcl_push_results(L, 0, "n", v);
 }
 
 /* _tk.param_set(name, value): what the host does, for tests and Lua-side tools */

@@ -154,15 +154,13 @@ static int l_eq(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
     int eq = a && b && a->n == b->n;
     for (int i = 0; eq && i <= a->n; i++) eq = a->h[i] == b->h[i];
-    lua_pushboolean(L, eq);
-    return 1;
+    return pcl_push_results(L, 0, "b", eq);
 }
 
 static int l_len(lua_State *L) {
     pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));    /* only the VM calls it */
     if (!p) return pcl_error(L, "#: not a point");
-    lua_pushinteger(L, p->n);
-    return 1;
+    return pcl_push_results(L, 0, "i", p->n);
 }
 
 static int l_tostring(lua_State *L) {
@@ -170,8 +168,7 @@ static int l_tostring(lua_State *L) {
     if (!p) return pcl_error(L, "tostring: not a point");
     char s[PC_MAXDIM * 24 + 32];
     pc_value_text(p->n, p->h, s, sizeof s);
-    lua_pushstring(L, s);
-    return 1;
+    return pcl_push_results(L, 0, "s", s);
 }
 
 static int l_concat(lua_State *L) {

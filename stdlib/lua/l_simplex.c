@@ -109,8 +109,7 @@ static int l_index(lua_State *L) {
 static int l_len(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "#: not a simplex");
-    lua_pushinteger(L, s->k + 1);
-    return 1;
+    return pcl_push_results(L, 0, "i", s->k + 1);
 }
 
 static int l_tostring(lua_State *L) {
@@ -118,8 +117,7 @@ static int l_tostring(lua_State *L) {
     if (!s) return pcl_error(L, "tostring: not a simplex");
     char buf[(PC_MAXDIM + 1) * (PC_MAXDIM * 24 + 40)];
     pc_simplex_text(s, buf, sizeof buf);
-    lua_pushstring(L, buf);
-    return 1;
+    return pcl_push_results(L, 0, "s", buf);
 }
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, \
