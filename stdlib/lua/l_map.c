@@ -55,7 +55,6 @@ static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
     for (int i = 1; i <= m; i++) {
         pcl_val v;
         lua_geti(L, idx, i);
-        if (!pcl_tovalue(L, -1)) pcl_argfail(L, k, "[%d] must be a point, got %s", i, pcl_shown(L, lua_gettop(L)));
         pcl_readone(L, lua_gettop(L), k, i, &pt, i > 1 ? *dim : 0, &v);
         if (i == 1) *dim = v.n;
         memcpy(out + (i - 1) * v.n, v.v, sizeof(double) * (size_t)v.n);

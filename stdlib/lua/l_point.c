@@ -283,19 +283,14 @@ static int l_lerp(lua_State *L) {
         pcl_val v[3] = {0};
         if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
             pcl_readone(L, 3, 3, 0, &lerp_args[2], 0, &v[2]);
-            double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2), r = x * (1 - v[2].x) + y * v[2].x;
-            if (!isfinite(r)) return out_of_range(L, v[2].x);
-            return push_num(L, r);
+            double x[2] = {lua_tonumber(L, 1), 1}, y[2] = {lua_tonumber(L, 2), 1}, r[2];
+            return pc_lerp(1, x, y, v[2].x, r) == PC_OK ? push_num(L, r[0]) : out_of_range(L, v[2].x);
         }
         PCL_READ(L, v);                                  /* the message, or two values and t */
         a = topt(L, 1), b = topt(L, 2), t = v[2].x;
     }
-    int n = a->n;
-    pcl_value *r = newpt(L, n);
-    pc_lerp(n, a->h, b->h, t, r->h);     /* equal weights kept exactly (t = 1e16) */
-    for (int i = 0; i <= n; i++)
-        if (!isfinite(r->h[i])) return out_of_range(L, t);
-    return 1;
+    pcl_value *r = newpt(L, a->n);
+    return pc_lerp(a->n, a->h, b->h, t, r->h) == PC_OK ? 1 : out_of_range(L, t);   /* equal weights kept exactly */
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
