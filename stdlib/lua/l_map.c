@@ -78,18 +78,16 @@ PCL_BODY(l_affine, a) {
 static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), A_SAMELOC("X", 0), A_SAMELOC("Y", PCL_OPT),
                                      A_SAMELOC("Z", PCL_OPT), PCL_END};
 static int l_frame(lua_State *L) {
-    int m = lua_gettop(L);
+    int m = lua_gettop(L), k = 0;
     if (m - 1 > PC_MAXDIM) return pcl_fail(L, "%d axes; the largest dimension is %d", m - 1, PC_MAXDIM);
-    pcl_val a[4] = {0};
+    pcl_val a[4] = {0}, extra;
     PCL_READ(L, a);
     int n = a[0].n;
     double axes[PC_MAXDIM * PC_MAXDIM];
     static const pcl_arg more = A_SAMELOC(NULL, 0);
-    int k = 0;
-    for (int j = 2; j <= m; j++, k++) {
-        pcl_val extra, *v = j <= 4 ? &a[j - 1] : &extra;
+    for (int j = 2; j <= m && (j > 4 || a[j - 1].present); j++, k++) {   /* the axes up to the first absent */
+        const pcl_val *v = j <= 4 ? &a[j - 1] : &extra;
         if (j > 4) pcl_readone(L, j, j, 0, &more, n, &extra);
-        if (!v->present) break;
         for (int i = 0; i < n; i++)   /* a unit point: X - O */
             axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);
     }
@@ -123,29 +121,21 @@ PCL_BODY(l_translate, a) {
 static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = FACTORS},
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_scale, a) {
-    pcl_val c = {0};
-    double k[PC_MAXDIM];
-    int n = 0;
+    static const pcl_arg k0 = A_NUM("k"), dim = A_INT("n", 1, PC_MAXDIM);
     static const pcl_arg factors = {.name = "k", .kind = PCL_NUMBERS, .lo = 1, .hi = PC_MAXDIM};
     static const pcl_arg centre = {.name = "centre", .kind = PCL_POINT, .flags = PCL_SAMEDIM};
-    if (lua_type(L, 1) == LUA_TNUMBER) {
-        static const pcl_arg k0 = A_NUM("k"), dim = A_INT("n", 1, PC_MAXDIM);
-        pcl_val v;
-        pcl_readone(L, 1, 1, 0, &k0, 0, &v);
-        if (lua_type(L, 2) == LUA_TNUMBER) pcl_readone(L, 2, 2, 0, &dim, 0, &c), n = (int)c.x, c.present = 0;
-        else if (pcl_tovalue(L, 2)) pcl_readone(L, 2, 2, 0, &centre, 0, &c), n = c.n;
-        else return pcl_argfail(L, 2, "must be a point or a dimension (a single factor k needs one), got %s",
-                                pcl_shown(L, 2));
-        for (int i = 0; i < n; i++) k[i] = v.x;
-    } else if (lua_istable(L, 1)) {
-        pcl_val v = {.list = k, .cap = PC_MAXDIM};
-        pcl_readone(L, 1, 1, 0, &factors, 0, &v);
-        n = v.n;
-        if (a[1].present) pcl_readone(L, 2, 2, 0, &centre, n, &c);
-    } else {
-        return pcl_argfail(L, 1, "must be " FACTORS ", got %s", pcl_shown(L, 1));
-    }
-    pc_map_scale(pcl_newmap(L), n, k, c.present ? c.v : NULL);
+    double k[PC_MAXDIM];
+    pcl_val v = {.list = k, .cap = PC_MAXDIM}, c = {0};
+    int single = lua_type(L, 1) == LUA_TNUMBER, ndim = single && lua_type(L, 2) == LUA_TNUMBER;
+    if (!single && !lua_istable(L, 1)) return pcl_argfail(L, 1, "must be " FACTORS ", got %s", pcl_shown(L, 1));
+    pcl_readone(L, 1, 1, 0, single ? &k0 : &factors, 0, &v);
+    if (single && !ndim && !pcl_tovalue(L, 2))
+        return pcl_argfail(L, 2, "must be a point or a dimension (a single factor k needs one), got %s",
+                           pcl_shown(L, 2));
+    if (a[1].present) pcl_readone(L, 2, 2, 0, ndim ? &dim : &centre, single ? 0 : v.n, &c);
+    int n = ndim ? (int)c.x : single ? c.n : v.n;
+    for (int i = 0; single && i < n; i++) k[i] = v.x;       /* one factor for every axis */
+    pc_map_scale(pcl_newmap(L), n, k, c.present && !ndim ? c.v : NULL);
     return 1;
 }
 
