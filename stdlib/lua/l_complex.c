@@ -130,17 +130,6 @@ PCL_BODY(c_polar, a) {
 
 /* ---- Moebius ------------------------------------------------------------------------------- */
 
-static pc_cnum apply(lua_State *L, const mobius *m, double re, double im) {
-    pc_cnum w;
-    int st = pc_mobius(m->z0.re, m->z0.im, m->phi, re, im, &w.re, &w.im);
-    if (st == PC_EPOLE) {
-        const char *tre = pcl_pushnum(L, re), *tim = pcl_pushnum(L, im);
-        pcl_fail(L, "z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
-    }
-    if (st != PC_OK) pcl_fail(L, "%s", pc_strerror(st));
-    return w;
-}
-
 /* M(z), M(x, y), M(P): the form follows the arguments */
 static const pcl_arg m_args[] = {A_ANY("z", read_c, "a complex number, a 2-D point or x, y"), PCL_END};
 static const pcl_arg coord_x = A_NUM("x"), coord_y = A_NUM("y");
@@ -152,7 +141,13 @@ static int m_call(lua_State *L) {
     if (!m || !(xy || point)) m = PCL_READ(L, a);
     if (xy || point) pcl_readone(L, 2, 1, 0, xy ? &coord_x : &point_arg, 0, &a[0]);
     if (xy) pcl_readone(L, 3, 2, 0, &coord_y, 0, &a[1]);
-    pc_cnum w = apply(L, m, xy ? a[0].x : a[0].v[0], xy ? a[1].x : a[0].v[1]);
+    double re = xy ? a[0].x : a[0].v[0], im = xy ? a[1].x : a[0].v[1];
+    pc_cnum w;
+    int st = pc_mobius(m->z0.re, m->z0.im, m->phi, re, im, &w.re, &w.im);
+    if (st == PC_EPOLE)
+        return pcl_fail(L, "z = complex(%s, %s) is the pole 1/conj(z0) of the map", pcl_pushnum(L, re),
+                        pcl_pushnum(L, im));
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
     if (xy) return pcl_push_results(L, 0, "n n", w.re, w.im);
     if (point) pcl_pushpoint(L, 2, (double[]){w.re, w.im});
     else pushc(L, w);

@@ -56,8 +56,6 @@ pcl_value *pcl_newvalue(lua_State *L, int n) {
     return p;
 }
 
-/* ---- text ---------------------------------------------------------------------------------- */
-
 /* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
 static const char *argctx(lua_State *L, int arg) {
     int shown = pcl_arg_shown(L, arg);
