@@ -96,13 +96,16 @@ PCL_METHOD(c_fn, cnum *z, a) {
     return 1;
 }
 
-static int c_index(lua_State *L) {
+/* __index of both types: z.re, z.im, M.z0, M.phi, then the type's methods (upvalue 1) */
+static int l_index(lua_State *L) {
     cnum *z = tocnum(L, 1);
+    mobius *m = z ? NULL : tomobius(L, 1);
     const char *k = lua_tostring(L, 2);
-    if (!z || !k) return 0;
-    if (!strcmp(k, "re")) lua_pushnumber(L, z->z.re);
-    else if (!strcmp(k, "im")) lua_pushnumber(L, z->z.im);
-    else lua_getfield(L, lua_upvalueindex(1), k);          /* the methods */
+    if (!(z || m) || !k) return 0;
+    if (z && (!strcmp(k, "re") || !strcmp(k, "im"))) lua_pushnumber(L, k[0] == 'r' ? z->z.re : z->z.im);
+    else if (m && !strcmp(k, "z0")) pushc(L, m->z0);
+    else if (m && !strcmp(k, "phi")) lua_pushnumber(L, m->phi);
+    else lua_getfield(L, lua_upvalueindex(1), k);
     return 1;
 }
 
@@ -169,16 +172,6 @@ static int m_inverse(lua_State *L) {
     return 1;
 }
 
-static int m_index(lua_State *L) {
-    mobius *m = tomobius(L, 1);
-    const char *k = lua_tostring(L, 2);
-    if (!m || !k) return 0;
-    if (!strcmp(k, "z0")) pushc(L, m->z0);
-    else if (!strcmp(k, "phi")) lua_pushnumber(L, m->phi);
-    else lua_getfield(L, lua_upvalueindex(1), k);          /* inverse */
-    return 1;
-}
-
 static int m_tostring(lua_State *L) {
     mobius *m = tomobius(L, 1);
     if (!m) return pcl_error(L, "tostring: not a Moebius map");
@@ -223,9 +216,9 @@ void pcl_open_complex(lua_State *L) {
     int module = lua_gettop(L);
     static const luaL_Reg cmeta[] = {{"__eq", c_eq}, {"__tostring", c_tostring}, {NULL, NULL}};
     static const luaL_Reg mmeta[] = {{"__tostring", m_tostring}, {NULL, NULL}};
-    pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, c_index);
+    pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, l_index);
     pcl_register_private(L, -1, operators);
-    pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, m_index);
+    pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, l_index);
     lua_settop(L, module);
 
     pcl_new_table(L, module, "complex", cfns, cnew);   /* a table of functions, callable as the constructor */
