@@ -229,39 +229,12 @@ PCL_BODY(l_axial_affinity, a) {
 
 /* ---- applying a map ------------------------------------------------------------------------- */
 
-/* The value to map from the stack indices first..last (a point or vector, or nin numbers) into
- * in, its weight by the one rule; the first is argument #1.  Returns 1 if they were numbers. */
-static int read_input(lua_State *L, const pc_map *f, int first, int last, double *in) {
-    int m = last - first + 1, nin = f->nin;
-    pcl_value *p = m >= 1 ? pcl_tovalue(L, first) : NULL;
-    if (p) {
-        if (m != 1) return pcl_fail(L, "takes one point or vector, got %d arguments", m);
-        if (p->n != nin)
-            return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
-        memcpy(in, p->h, sizeof(double) * (size_t)(nin + 1));
-        pcl_snap_weight(nin, in);
-        return 0;
-    }
-    const char *got = !m ? "nothing" : lua_istable(L, first) ? "a table (map a list with a loop, or a curve with f(c))"
-                                                              : luaL_typename(L, first);
-    if (m != nin || lua_type(L, first) != LUA_TNUMBER)
-        return pcl_fail(L, "takes a %d-D point or vector, or %d coordinates; got %s", nin, nin, got);
-    static const pcl_arg x = {.kind = PCL_NUMBER};
-    for (int i = 0; i < nin; i++) {
-        pcl_val v;
-        pcl_readone(L, first + i, i + 1, 0, &x, 0, &v);
-        in[i] = v.x;
-    }
-    in[nin] = 1.0;
-    return 1;
-}
-
 /* f(p) or f(x, y, ...): the image, its weight snapped by the one rule (a weight of 1e-17 from
  * a projective matrix is a direction, not a point at 1e17); f:xy(...), the same body: the
- * coordinates of the image of a point as numbers */
+ * coordinates of the image of a point as numbers.  The value is argument #1, or nin numbers. */
 static int l_apply(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
-    int xy = !strcmp(pcl_running(L)->d->name, "f:xy"), n = f->nout;
+    int xy = !strcmp(pcl_running(L)->d->name, "f:xy"), m = lua_gettop(L) - 1, nin = f->nin, n = f->nout;
     if (!xy && (pcl_tocurve(L, 2) || pcl_tosurface(L, 2))) {   /* f(c) is c:map(f) */
         lua_settop(L, 2);
         lua_getfield(L, 2, "map");
@@ -271,8 +244,28 @@ static int l_apply(lua_State *L) {
         return 1;
     }
     double in[PC_MAXDIM + 1], out[PC_MAXDIM + 1];
-    if (!read_input(L, f, 2, lua_gettop(L), in) && xy && in[f->nin] != 1)
-        return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[f->nin]));
+    pcl_value *p = pcl_tovalue(L, 2);
+    if (p) {
+        if (m != 1) return pcl_fail(L, "takes one point or vector, got %d arguments", m);
+        if (p->n != nin)
+            return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
+        memcpy(in, p->h, sizeof(double) * (size_t)(nin + 1));
+        pcl_snap_weight(nin, in);
+        if (xy && in[nin] != 1)
+            return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[nin]));
+    } else {
+        const char *got = !m ? "nothing" : lua_istable(L, 2) ? "a table (map a list with a loop, or a curve with f(c))"
+                                                             : luaL_typename(L, 2);
+        if (m != nin || lua_type(L, 2) != LUA_TNUMBER)
+            return pcl_fail(L, "takes a %d-D point or vector, or %d coordinates; got %s", nin, nin, got);
+        static const pcl_arg x = {.kind = PCL_NUMBER};
+        for (int i = 0; i < nin; i++) {
+            pcl_val v;
+            pcl_readone(L, i + 2, i + 1, 0, &x, 0, &v);
+            in[i] = v.x;
+        }
+        in[nin] = 1.0;
+    }
     int st = pc_map_image_rule(f, in, out);
     if (st == PC_EPOLE) return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
     if (!xy) return pcl_push_packed(L, n, "w", out);
