@@ -188,10 +188,7 @@ static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .ki
                                      {.name = "j", .kind = PCL_ANY}, A_NUM("k"), PCL_END};
 PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
-    if (i == j)
-        return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
-    pc_map_shear(pcl_newmap(L), n, i, j, a[3].x);
-    return 1;
+    return made(L, pc_map_shear(pcl_newmap(L), n, i, j, a[3].x));   /* the axes in range: i == j fails */
 }
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
