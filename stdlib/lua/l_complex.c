@@ -88,11 +88,10 @@ PCL_METHOD(c_fn, cnum *z, a) {
     const char *name = pcl_running(L)->d->name, *f = name + strcspn(name, ".:") + 1;
     char op = strcmp(f, "arg") ? f[0] : 'g';
     pc_cnum w, in = z ? z->z : cval(&a[0]);
-    if (op == 'p') w = in;
-    else if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
-    if (op == 'a' || op == 'g') lua_pushnumber(L, w.re);
-    else if (op == 'p') pcl_pushpoint(L, 2, (double[]){w.re, w.im});
-    else pushc(L, w);
+    if (op == 'p') return pcl_push_results(L, 2, "p", (double[]){in.re, in.im});
+    if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
+    if (op == 'a' || op == 'g') return pcl_push_results(L, 0, "n", w.re);
+    pushc(L, w);
     return 1;
 }
 
@@ -219,8 +218,6 @@ void pcl_open_complex(lua_State *L) {
     pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, l_index);
     pcl_register_private(L, -1, operators);
     pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, l_index);
-    lua_settop(L, module);
-
     pcl_new_table(L, module, "complex", cfns, cnew);   /* a table of functions, callable as the constructor */
     lua_getfield(L, module, "complex");
     pushc(L, (pc_cnum){0, 1});
