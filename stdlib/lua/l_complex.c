@@ -156,18 +156,12 @@ static int m_call(lua_State *L) {
     return 1;
 }
 
-static void pushm(lua_State *L, pc_cnum z0, double phi) {
-    mobius *m = pcl_tagged_new(L, sizeof *m, &MOBIUS_TAG, MOBIUS_MT);
-    m->z0 = z0;
-    m->phi = phi;
-}
+/* a new Moebius map on the stack top, its fields unset */
+static mobius *newm(lua_State *L) { return pcl_tagged_new(L, sizeof(mobius), &MOBIUS_TAG, MOBIUS_MT); }
 
 static int m_inverse(lua_State *L) {
-    mobius *m = pcl_read(L, NULL, 0);
-    pc_cnum z0;
-    double phi;
-    pc_mobius_inverse(m->z0.re, m->z0.im, m->phi, &z0.re, &z0.im, &phi);
-    pushm(L, z0, phi);
+    mobius *m = pcl_read(L, NULL, 0), *r = newm(L);
+    pc_mobius_inverse(m->z0.re, m->z0.im, m->phi, &r->z0.re, &r->z0.im, &r->phi);
     return 1;
 }
 
@@ -183,7 +177,9 @@ static const pcl_arg mobius_args[] = {A_COMPLEX("z0"), A_NUMOPT("phi", 0, NULL),
 PCL_BODY(l_mobius, a) {
     if (hypot(a[0].v[0], a[0].v[1]) >= 1)
         return pcl_argfail(L, 1, "must be a point inside the unit disc (|z0| < 1), got %s", luaL_tolstring(L, 1, NULL));
-    pushm(L, cval(&a[0]), a[1].x);
+    mobius *m = newm(L);
+    m->z0 = cval(&a[0]);
+    m->phi = a[1].x;
     return 1;
 }
 
