@@ -24,11 +24,8 @@ pc_map *pcl_newmap(lua_State *L) {
     return f;
 }
 
-/* the new map on the stack top (1), or its status explained by the why-table */
-static int made(lua_State *L, int st) {
-    pcl_check(L, st, pc_map_why);
-    return 1;
-}
+/* the new map on the stack top (1: pcl_check returns PC_OK), or its status explained by the why-table */
+static int made(lua_State *L, int st) { return pcl_check(L, st, pc_map_why) == PC_OK; }
 
 /* A map of pc_map_make, of the kind the function is named by (map.isometric): the declared
  * numbers in order (an enum: the index of its choice). */
@@ -310,9 +307,7 @@ PCL_METHOD(l_matrix, pc_map *f, a) {
     return 1;
 }
 
-static int l_is_affine(lua_State *L) {
-    return pcl_push_results(L, 0, "b", pc_map_is_affine(pcl_read(L, NULL, 0)));
-}
+static int l_is_affine(lua_State *L) { return pcl_push_results(L, 0, "b", pc_map_is_affine(pcl_read(L, NULL, 0))); }
 
 static int l_vanishing(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
@@ -321,10 +316,9 @@ static int l_vanishing(lua_State *L) {
     if (pc_map_vanishing_points(f, out, finite) != PC_OK)
         return pcl_fail(L, "the map goes from %d-D to %d-D; vanishing points are the images of the axis "
                         "directions of a map from 3-D to 2-D or 3-D", f->nin, f->nout);
-    for (int i = 0; i < 3; i++) {
-        if (finite[i]) memcpy(pcl_newvalue(L, f->nout)->h, out[i], sizeof(double) * (size_t)(f->nout + 1));
+    for (int i = 0; i < 3; i++)
+        if (finite[i]) pcl_push_packed(L, f->nout, "w", out[i]);
         else lua_pushnil(L);                   /* the direction stays at infinity */
-    }
     return 3;
 }
 

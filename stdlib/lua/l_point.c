@@ -468,11 +468,10 @@ static const luaL_Reg point_meta[] = {
 
 void pcl_open_point(lua_State *L) {
     int module = lua_gettop(L);
+    int methods = module + 1, mt = module + 2;
     lua_newtable(L);                                   /* methods for p:name(...), filled below */
-    int methods = lua_gettop(L);
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
     luaL_newmetatable(L, "point");                     /* __name "point" */
-    int mt = lua_gettop(L);
     lua_pushliteral(L, "point");                       /* getmetatable(p) == "point" */
     lua_setfield(L, mt, "__metatable");
     lua_pushvalue(L, mt);
