@@ -30,9 +30,9 @@ static void *tomobius(lua_State *L, int idx) {
     return totagged(L, idx, MOBIUS_MT, sizeof(mobius), &MOBIUS_TAG, "Moebius map");
 }
 
-static void pushc(lua_State *L, pc_cnum w) {
-    ((cnum *)pcl_tagged_new(L, sizeof(cnum), &COMPLEX_TAG, COMPLEX_MT))->z = w;
-}
+/* a new complex number on the stack top: its value unset (newc), or w */
+static cnum *newc(lua_State *L) { return pcl_tagged_new(L, sizeof(cnum), &COMPLEX_TAG, COMPLEX_MT); }
+static void pushc(lua_State *L, pc_cnum w) { newc(L)->z = w; }
 
 /* a complex operand: a complex or a real number (not checked for finiteness) */
 static int toc(lua_State *L, int idx, pc_cnum *z) {
@@ -60,13 +60,10 @@ static pc_cnum cval(const pcl_val *v) { return (pc_cnum){v->v[0], v->v[1]}; }
 PCL_BODY(c_arith, a) {
     const pcl_fn *d = pcl_running(L)->d;
     char op = strcmp(d->key, "__unm") ? d->name[strlen(d->name) - 1] : 'u';
-    pc_cnum r;
-    int st = pc_cnum_arith(op, cval(&a[0]), cval(&a[1]), &r);
+    int st = pc_cnum_arith(op, cval(&a[0]), cval(&a[1]), &newc(L)->z);
     if (st == PC_EPOLE)
         return pcl_fail(L, "division by zero%s", op == '^' ? " (zero to a power whose real part is not positive)" : "");
-    if (st != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
-    pushc(L, r);
-    return 1;
+    return st == PC_OK ? 1 : pcl_fail(L, "the result overflows (not finite)");
 }
 
 static int c_eq(lua_State *L) {
