@@ -86,5 +86,7 @@ const pc_why pc_map_why[] = {
      "a perspective (projective) map has no constant foreshortening; give an affine map (an axonometry)"},
     {"map.rotate", PC_EZERO, 0, NULL, "argument #2 (direction) is the zero vector, which gives no axis"},
     {"map.rotate", PC_ECOINCIDENT, 0, NULL, "the axis points A and B coincide, so they give no axis"},
+    {"map.shear", PC_EDOMAIN, 0, NULL,
+     "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i"},
     {"f:inverse", PC_ESINGULAR, 0, NULL, "the map is singular (it flattens space), so it has no inverse"},
     {NULL, 0, 0, NULL, NULL}};

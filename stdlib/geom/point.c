@@ -40,12 +40,15 @@ void pc_scale(int n, const double *a, double k, double *out) {
     for (int i = 0; i <= n; i++) out[i] = a[i] * k;
 }
 
-void pc_lerp(int n, const double *a, const double *b, double t, double *out) {
+int pc_lerp(int n, const double *a, const double *b, double t, double *out) {
     double s = 1.0 - t;                       /* t̄, the complement of the parameter */
     for (int i = 0; i < n; i++) out[i] = a[i] * s + b[i] * t;
     /* equal weights stay exact: w t̄ + w t = w, but rounded at t = 1e16 it is 0 and two
      * points would give a vector */
     out[n] = a[n] == b[n] ? a[n] : a[n] * s + b[n] * t;
+    for (int i = 0; i <= n; i++)
+        if (!isfinite(out[i])) return PC_ENONFINITE;
+    return PC_OK;
 }
 
 double pc_dot(int n, const double *u, const double *v) {

@@ -48,8 +48,9 @@ void pc_scale(int n, const double *a, double k, double *out);
 /* (B - A) t + A, eq. of the segment (Fig. 1.1), computed as A(1 - t) + B t so that t = 0
  * and t = 1 give A and B exactly.  Works on values of any weight; two values of one weight give
  * that weight exactly at every t (two points a point, never a vector by rounding).  Large t
- * may overflow the coordinates: callers check the result is finite. */
-void pc_lerp(int n, const double *a, const double *b, double t, double *out);
+ * may overflow the coordinates: PC_ENONFINITE when a number of out is not finite (t not
+ * finite, or an overflow), else PC_OK.  n = 1 with weights 1 lerps two numbers a[0], b[0]. */
+int pc_lerp(int n, const double *a, const double *b, double t, double *out);
 
 /* --- metric (locations or vector coordinates, n doubles) ------------------------------------ */
 double pc_dot(int n, const double *u, const double *v);

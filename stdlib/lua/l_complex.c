@@ -2,6 +2,7 @@
  * core's pc_cnum_arith and pc_cnum_fn (stdlib/geom/cnum.h), the Moebius map its pc_mobius. */
 #include "pcl_args.h"
 #include "pcl_tk.h"
+#include "pcl_tagged.h"
 #include "pcl_core.h"
 #include "curvilinear.h"
 #include "cnum.h"
@@ -29,12 +30,9 @@ static void *tomobius(lua_State *L, int idx) {
     return totagged(L, idx, MOBIUS_MT, sizeof(mobius), &MOBIUS_TAG, "Moebius map");
 }
 
-static void pushc(lua_State *L, pc_cnum w) {
-    cnum *z = lua_newuserdatauv(L, sizeof *z, 0);
-    z->self = PCL_SELF_TAG(z, &COMPLEX_TAG);
-    z->z = w;
-    luaL_setmetatable(L, COMPLEX_MT);
-}
+/* a new complex number on the stack top: its value unset (newc), or w */
+static cnum *newc(lua_State *L) { return pcl_tagged_new(L, sizeof(cnum), &COMPLEX_TAG, COMPLEX_MT); }
+static void pushc(lua_State *L, pc_cnum w) { newc(L)->z = w; }
 
 /* a complex operand: a complex or a real number (not checked for finiteness) */
 static int toc(lua_State *L, int idx, pc_cnum *z) {
@@ -56,31 +54,21 @@ static int read_c(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *o
 #define A_COMPLEX(nm) A_ANY(nm, read_c, "a finite complex number or number")
 static pc_cnum cval(const pcl_val *v) { return (pc_cnum){v->v[0], v->v[1]}; }
 
-/* ---- the operators: metamethods, declared for their messages ("complex +: argument #2 ...") */
-
-static int arith(lua_State *L, char op) {
-    pcl_val a[2] = {0};
-    PCL_READ(L, a);
-    pc_cnum r;
-    int st = pc_cnum_arith(op, cval(&a[0]), cval(&a[1]), &r);
+/* ---- the operators: metamethods, declared for their messages ("complex +: argument #2 ...");
+ * one body, the operator the last character of the declared name, the unary minus its key's
+ * (Lua calls __unm with (z, z)) */
+PCL_BODY(c_arith, a) {
+    const pcl_fn *d = pcl_running(L)->d;
+    char op = strcmp(d->key, "__unm") ? d->name[strlen(d->name) - 1] : 'u';
+    int st = pc_cnum_arith(op, cval(&a[0]), cval(&a[1]), &newc(L)->z);
     if (st == PC_EPOLE)
         return pcl_fail(L, "division by zero%s", op == '^' ? " (zero to a power whose real part is not positive)" : "");
-    if (st != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
-    pushc(L, r);
-    return 1;
+    return st == PC_OK ? 1 : pcl_fail(L, "the result overflows (not finite)");
 }
-
-static int c_add(lua_State *L) { return arith(L, '+'); }
-static int c_sub(lua_State *L) { return arith(L, '-'); }
-static int c_mul(lua_State *L) { return arith(L, '*'); }
-static int c_div(lua_State *L) { return arith(L, '/'); }
-static int c_pow(lua_State *L) { return arith(L, '^'); }
-static int c_unm(lua_State *L) { return arith(L, 'u'); }    /* Lua calls it with (z, z) */
 
 static int c_eq(lua_State *L) {
     pc_cnum a = {0, 0}, b = {0, 0};
-    lua_pushboolean(L, toc(L, 1, &a) && toc(L, 2, &b) && a.re == b.re && a.im == b.im);
-    return 1;
+    return pcl_push_results(L, 0, "b", toc(L, 1, &a) && toc(L, 2, &b) && a.re == b.re && a.im == b.im);
 }
 
 static int c_tostring(lua_State *L) {
@@ -91,33 +79,29 @@ static int c_tostring(lua_State *L) {
     return 1;
 }
 
-/* ---- complex.f(z) and z:f(): one body, the value an argument or the receiver ------------- */
-
-static int zfn(lua_State *L, char op) {
-    pcl_val a[1] = {0};
-    cnum *z = PCL_READ(L, a);
+/* ---- complex.f(z) and z:f(): one body, the value an argument or the receiver, the function
+ * the last part of the declared name (conj, abs, arg, exp: pc_cnum_fn's c, a, g, e; point) */
+PCL_METHOD(c_fn, cnum *z, a) {
+    const char *name = pcl_running(L)->d->name, *f = name + strcspn(name, ".:") + 1;
+    char op = strcmp(f, "arg") ? f[0] : 'g';
     pc_cnum w, in = z ? z->z : cval(&a[0]);
-    if (op == 'p') w = in;
-    else if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
-    if (op == 'a' || op == 'g') lua_pushnumber(L, w.re);
-    else if (op == 'p') pcl_pushpoint(L, 2, (double[]){w.re, w.im});
-    else pushc(L, w);
+    if (op == 'p') return pcl_push_results(L, 2, "p", (double[]){in.re, in.im});
+    if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
+    if (op == 'a' || op == 'g') return pcl_push_results(L, 0, "n", w.re);
+    pushc(L, w);
     return 1;
 }
 
-static int c_conj(lua_State *L) { return zfn(L, 'c'); }
-static int c_abs(lua_State *L) { return zfn(L, 'a'); }
-static int c_arg(lua_State *L) { return zfn(L, 'g'); }
-static int c_exp(lua_State *L) { return zfn(L, 'e'); }
-static int c_point(lua_State *L) { return zfn(L, 'p'); }
-
-static int c_index(lua_State *L) {
+/* __index of both types: z.re, z.im, M.z0, M.phi, then the type's methods (upvalue 1) */
+static int l_index(lua_State *L) {
     cnum *z = tocnum(L, 1);
+    mobius *m = z ? NULL : tomobius(L, 1);
     const char *k = lua_tostring(L, 2);
-    if (!z || !k) return 0;
-    if (!strcmp(k, "re")) lua_pushnumber(L, z->z.re);
-    else if (!strcmp(k, "im")) lua_pushnumber(L, z->z.im);
-    else lua_getfield(L, lua_upvalueindex(1), k);          /* the methods */
+    if (!(z || m) || !k) return 0;
+    if (z && (!strcmp(k, "re") || !strcmp(k, "im"))) lua_pushnumber(L, k[0] == 'r' ? z->z.re : z->z.im);
+    else if (m && !strcmp(k, "z0")) pushc(L, m->z0);
+    else if (m && !strcmp(k, "phi")) lua_pushnumber(L, m->phi);
+    else lua_getfield(L, lua_upvalueindex(1), k);
     return 1;
 }
 
@@ -145,17 +129,6 @@ PCL_BODY(c_polar, a) {
 
 /* ---- Moebius ------------------------------------------------------------------------------- */
 
-static pc_cnum apply(lua_State *L, const mobius *m, double re, double im) {
-    pc_cnum w;
-    int st = pc_mobius(m->z0.re, m->z0.im, m->phi, re, im, &w.re, &w.im);
-    if (st == PC_EPOLE) {
-        const char *tre = pcl_pushnum(L, re), *tim = pcl_pushnum(L, im);
-        pcl_fail(L, "z = complex(%s, %s) is the pole 1/conj(z0) of the map", tre, tim);
-    }
-    if (st != PC_OK) pcl_fail(L, "%s", pc_strerror(st));
-    return w;
-}
-
 /* M(z), M(x, y), M(P): the form follows the arguments */
 static const pcl_arg m_args[] = {A_ANY("z", read_c, "a complex number, a 2-D point or x, y"), PCL_END};
 static const pcl_arg coord_x = A_NUM("x"), coord_y = A_NUM("y");
@@ -167,37 +140,25 @@ static int m_call(lua_State *L) {
     if (!m || !(xy || point)) m = PCL_READ(L, a);
     if (xy || point) pcl_readone(L, 2, 1, 0, xy ? &coord_x : &point_arg, 0, &a[0]);
     if (xy) pcl_readone(L, 3, 2, 0, &coord_y, 0, &a[1]);
-    pc_cnum w = apply(L, m, xy ? a[0].x : a[0].v[0], xy ? a[1].x : a[0].v[1]);
+    double re = xy ? a[0].x : a[0].v[0], im = xy ? a[1].x : a[0].v[1];
+    pc_cnum w;
+    int st = pc_mobius(m->z0.re, m->z0.im, m->phi, re, im, &w.re, &w.im);
+    if (st == PC_EPOLE)
+        return pcl_fail(L, "z = complex(%s, %s) is the pole 1/conj(z0) of the map", pcl_pushnum(L, re),
+                        pcl_pushnum(L, im));
+    if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
     if (xy) return pcl_push_results(L, 0, "n n", w.re, w.im);
     if (point) pcl_pushpoint(L, 2, (double[]){w.re, w.im});
     else pushc(L, w);
     return 1;
 }
 
-static void pushm(lua_State *L, pc_cnum z0, double phi) {
-    mobius *m = lua_newuserdatauv(L, sizeof *m, 0);
-    m->self = PCL_SELF_TAG(m, &MOBIUS_TAG);
-    m->z0 = z0;
-    m->phi = phi;
-    luaL_setmetatable(L, MOBIUS_MT);
-}
+/* a new Moebius map on the stack top, its fields unset */
+static mobius *newm(lua_State *L) { return pcl_tagged_new(L, sizeof(mobius), &MOBIUS_TAG, MOBIUS_MT); }
 
 static int m_inverse(lua_State *L) {
-    mobius *m = pcl_read(L, NULL, 0);
-    pc_cnum z0;
-    double phi;
-    pc_mobius_inverse(m->z0.re, m->z0.im, m->phi, &z0.re, &z0.im, &phi);
-    pushm(L, z0, phi);
-    return 1;
-}
-
-static int m_index(lua_State *L) {
-    mobius *m = tomobius(L, 1);
-    const char *k = lua_tostring(L, 2);
-    if (!m || !k) return 0;
-    if (!strcmp(k, "z0")) pushc(L, m->z0);
-    else if (!strcmp(k, "phi")) lua_pushnumber(L, m->phi);
-    else lua_getfield(L, lua_upvalueindex(1), k);          /* inverse */
+    mobius *m = pcl_read(L, NULL, 0), *r = newm(L);
+    pc_mobius_inverse(m->z0.re, m->z0.im, m->phi, &r->z0.re, &r->z0.im, &r->phi);
     return 1;
 }
 
@@ -213,27 +174,28 @@ static const pcl_arg mobius_args[] = {A_COMPLEX("z0"), A_NUMOPT("phi", 0, NULL),
 PCL_BODY(l_mobius, a) {
     if (hypot(a[0].v[0], a[0].v[1]) >= 1)
         return pcl_argfail(L, 1, "must be a point inside the unit disc (|z0| < 1), got %s", luaL_tolstring(L, 1, NULL));
-    pushm(L, cval(&a[0]), a[1].x);
+    mobius *m = newm(L);
+    m->z0 = cval(&a[0]);
+    m->phi = a[1].x;
     return 1;
 }
 
 static const pcl_arg z_arg[] = {A_COMPLEX("z"), PCL_END};
-#define ZMETHOD(nm, f, res, text) {.name = nm, .fn = f, .result = res, .help = text, .self = tocnum, .selftype = "complex number"}
+#define ZMETHOD(nm, res, text) {.name = nm, .fn = c_fn, .result = res, .help = text, .self = tocnum, .selftype = "complex number"}
 static const pcl_fn zmethods[] = {
-    ZMETHOD("z:conj", c_conj, "z", "The complex conjugate re - i im."), ZMETHOD("z:abs", c_abs, "number", "The modulus |z|."),
-    ZMETHOD("z:arg", c_arg, "number", "The argument of z: atan2(im, re), in radians."), ZMETHOD("z:exp", c_exp, "z", "The complex exponential e^z."),
-    ZMETHOD("z:point", c_point, "P", "The 2-D point (re, im) of the complex plane."), PCL_END};
+    ZMETHOD("z:conj", "z", "The complex conjugate re - i im."), ZMETHOD("z:abs", "number", "The modulus |z|."),
+    ZMETHOD("z:arg", "number", "The argument of z: atan2(im, re), in radians."), ZMETHOD("z:exp", "z", "The complex exponential e^z."),
+    ZMETHOD("z:point", "P", "The 2-D point (re, im) of the complex plane."), PCL_END};
 #define A_OPERAND(nm) A_ANY(nm, read_c, "a complex number or a number")
 static const pcl_arg operands[] = {A_OPERAND("left"), A_OPERAND("right"), PCL_END};
-#define OPERATOR(op, f, mm) {.name = "complex " op, .fn = f, .args = operands, .key = mm}
-static const pcl_fn operators[] = {OPERATOR("+", c_add, "__add"), OPERATOR("-", c_sub, "__sub"),
-                                   OPERATOR("*", c_mul, "__mul"), OPERATOR("/", c_div, "__div"),
-                                   OPERATOR("^", c_pow, "__pow"), OPERATOR("-", c_unm, "__unm"), PCL_END};
+#define OPERATOR(op, mm) {.name = "complex " op, .fn = c_arith, .args = operands, .key = mm}
+static const pcl_fn operators[] = {OPERATOR("+", "__add"), OPERATOR("-", "__sub"), OPERATOR("*", "__mul"),
+                                   OPERATOR("/", "__div"), OPERATOR("^", "__pow"), OPERATOR("-", "__unm"), PCL_END};
 static const pcl_fn cfns[] = {
     PCL_FN("complex.polar", c_polar, polar_args, "z", "The complex number r e^(iu)."),
-    PCL_FN("complex.exp", c_exp, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_abs, z_arg, "number", "The modulus |z|."),
-    PCL_FN("complex.arg", c_arg, z_arg, "number", "The argument of z: atan2(im, re), in radians."),
-    PCL_FN("complex.conj", c_conj, z_arg, "z", "The complex conjugate."), PCL_END};
+    PCL_FN("complex.exp", c_fn, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_fn, z_arg, "number", "The modulus |z|."),
+    PCL_FN("complex.arg", c_fn, z_arg, "number", "The argument of z: atan2(im, re), in radians."),
+    PCL_FN("complex.conj", c_fn, z_arg, "z", "The complex conjugate."), PCL_END};
 static const pcl_fn cnew[] = {{.name = "complex", .fn = c_new, .args = new_args, .self = self_table, .selftype = "table", .key = "__call",
                                .sig = "complex(re [, im]) | complex(P) -> z", .help = "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point()."}, PCL_END};
 static const pcl_fn mfns[] = {PCL_FN("mobius", l_mobius, mobius_args, "M", "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse()."), PCL_END};
@@ -246,18 +208,13 @@ void pcl_open_complex(lua_State *L) {
     int module = lua_gettop(L);
     static const luaL_Reg cmeta[] = {{"__eq", c_eq}, {"__tostring", c_tostring}, {NULL, NULL}};
     static const luaL_Reg mmeta[] = {{"__tostring", m_tostring}, {NULL, NULL}};
-    pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, c_index);
+    pcl_open_type(L, COMPLEX_MT, cmeta, NULL, zmethods, l_index);
     pcl_register_private(L, -1, operators);
-    pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, m_index);
-    lua_settop(L, module);
-
-    lua_newtable(L);   /* complex: a table of functions, callable as the constructor */
-    pcl_register(L, -1, cfns, 0);
+    pcl_open_type(L, MOBIUS_MT, mmeta, mcall, mmethods, l_index);
+    pcl_new_table(L, module, "complex", cfns, cnew);   /* a table of functions, callable as the constructor */
+    lua_getfield(L, module, "complex");
     pushc(L, (pc_cnum){0, 1});
     lua_setfield(L, -2, "i");
-    lua_newtable(L);
-    pcl_register(L, -1, cnew, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, module, "complex");
     pcl_register(L, module, mfns, 0);
+    lua_settop(L, module);
 }

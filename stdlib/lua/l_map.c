@@ -24,11 +24,8 @@ pc_map *pcl_newmap(lua_State *L) {
     return f;
 }
 
-/* the new map on the stack top (1), or its status explained by the why-table */
-static int made(lua_State *L, int st) {
-    pcl_check(L, st, pc_map_why);
-    return 1;
-}
+/* the new map on the stack top (1: pcl_check returns PC_OK), or its status explained by the why-table */
+static int made(lua_State *L, int st) { return pcl_check(L, st, pc_map_why) == PC_OK; }
 
 /* A map of pc_map_make, of the kind the function is named by (map.isometric): the declared
  * numbers in order (an enum: the index of its choice). */
@@ -55,7 +52,6 @@ static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
     for (int i = 1; i <= m; i++) {
         pcl_val v;
         lua_geti(L, idx, i);
-        if (!pcl_tovalue(L, -1)) pcl_argfail(L, k, "[%d] must be a point, got %s", i, pcl_shown(L, lua_gettop(L)));
         pcl_readone(L, lua_gettop(L), k, i, &pt, i > 1 ? *dim : 0, &v);
         if (i == 1) *dim = v.n;
         memcpy(out + (i - 1) * v.n, v.v, sizeof(double) * (size_t)v.n);
@@ -79,18 +75,16 @@ PCL_BODY(l_affine, a) {
 static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), A_SAMELOC("X", 0), A_SAMELOC("Y", PCL_OPT),
                                      A_SAMELOC("Z", PCL_OPT), PCL_END};
 static int l_frame(lua_State *L) {
-    int m = lua_gettop(L);
+    int m = lua_gettop(L), k = 0;
     if (m - 1 > PC_MAXDIM) return pcl_fail(L, "%d axes; the largest dimension is %d", m - 1, PC_MAXDIM);
-    pcl_val a[4] = {0};
+    pcl_val a[4] = {0}, extra;
     PCL_READ(L, a);
     int n = a[0].n;
     double axes[PC_MAXDIM * PC_MAXDIM];
     static const pcl_arg more = A_SAMELOC(NULL, 0);
-    int k = 0;
-    for (int j = 2; j <= m; j++, k++) {
-        pcl_val extra, *v = j <= 4 ? &a[j - 1] : &extra;
+    for (int j = 2; j <= m && (j > 4 || a[j - 1].present); j++, k++) {   /* the axes up to the first absent */
+        const pcl_val *v = j <= 4 ? &a[j - 1] : &extra;
         if (j > 4) pcl_readone(L, j, j, 0, &more, n, &extra);
-        if (!v->present) break;
         for (int i = 0; i < n; i++)   /* a unit point: X - O */
             axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);
     }
@@ -124,29 +118,21 @@ PCL_BODY(l_translate, a) {
 static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = FACTORS},
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_scale, a) {
-    pcl_val c = {0};
-    double k[PC_MAXDIM];
-    int n = 0;
+    static const pcl_arg k0 = A_NUM("k"), dim = A_INT("n", 1, PC_MAXDIM);
     static const pcl_arg factors = {.name = "k", .kind = PCL_NUMBERS, .lo = 1, .hi = PC_MAXDIM};
     static const pcl_arg centre = {.name = "centre", .kind = PCL_POINT, .flags = PCL_SAMEDIM};
-    if (lua_type(L, 1) == LUA_TNUMBER) {
-        static const pcl_arg k0 = A_NUM("k"), dim = A_INT("n", 1, PC_MAXDIM);
-        pcl_val v;
-        pcl_readone(L, 1, 1, 0, &k0, 0, &v);
-        if (lua_type(L, 2) == LUA_TNUMBER) pcl_readone(L, 2, 2, 0, &dim, 0, &c), n = (int)c.x, c.present = 0;
-        else if (pcl_tovalue(L, 2)) pcl_readone(L, 2, 2, 0, &centre, 0, &c), n = c.n;
-        else return pcl_argfail(L, 2, "must be a point or a dimension (a single factor k needs one), got %s",
-                                pcl_shown(L, 2));
-        for (int i = 0; i < n; i++) k[i] = v.x;
-    } else if (lua_istable(L, 1)) {
-        pcl_val v = {.list = k, .cap = PC_MAXDIM};
-        pcl_readone(L, 1, 1, 0, &factors, 0, &v);
-        n = v.n;
-        if (a[1].present) pcl_readone(L, 2, 2, 0, &centre, n, &c);
-    } else {
-        return pcl_argfail(L, 1, "must be " FACTORS ", got %s", pcl_shown(L, 1));
-    }
-    pc_map_scale(pcl_newmap(L), n, k, c.present ? c.v : NULL);
+    double k[PC_MAXDIM];
+    pcl_val v = {.list = k, .cap = PC_MAXDIM}, c = {0};
+    int single = lua_type(L, 1) == LUA_TNUMBER, ndim = single && lua_type(L, 2) == LUA_TNUMBER;
+    if (!single && !lua_istable(L, 1)) return pcl_argfail(L, 1, "must be " FACTORS ", got %s", pcl_shown(L, 1));
+    pcl_readone(L, 1, 1, 0, single ? &k0 : &factors, 0, &v);
+    if (single && !ndim && !pcl_tovalue(L, 2))
+        return pcl_argfail(L, 2, "must be a point or a dimension (a single factor k needs one), got %s",
+                           pcl_shown(L, 2));
+    if (a[1].present) pcl_readone(L, 2, 2, 0, ndim ? &dim : &centre, single ? 0 : v.n, &c);
+    int n = ndim ? (int)c.x : single ? c.n : v.n;
+    for (int i = 0; single && i < n; i++) k[i] = v.x;       /* one factor for every axis */
+    pc_map_scale(pcl_newmap(L), n, k, c.present && !ndim ? c.v : NULL);
     return 1;
 }
 
@@ -199,10 +185,7 @@ static const pcl_arg shear_args[] = {A_INT("n", 2, PC_MAXDIM), {.name = "i", .ki
                                      {.name = "j", .kind = PCL_ANY}, A_NUM("k"), PCL_END};
 PCL_BODY(l_shear, a) {
     int n = (int)a[0].x, i = axis_of(L, 2, n), j = axis_of(L, 3, n);
-    if (i == j)
-        return pcl_fail(L, "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
-    pc_map_shear(pcl_newmap(L), n, i, j, a[3].x);
-    return 1;
+    return made(L, pc_map_shear(pcl_newmap(L), n, i, j, a[3].x));   /* the axes in range: i == j fails */
 }
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
@@ -240,42 +223,13 @@ PCL_BODY(l_axial_affinity, a) {
 
 /* ---- applying a map ------------------------------------------------------------------------- */
 
-/* The value to map from the stack indices first..last (a point or vector, or nin numbers) into
- * in, its weight by the one rule; the first is argument #1.  Returns 1 if they were numbers. */
-static int read_input(lua_State *L, const pc_map *f, int first, int last, double *in) {
-    int m = last - first + 1, nin = f->nin;
-    pcl_value *p = m >= 1 ? pcl_tovalue(L, first) : NULL;
-    if (p) {
-        if (m != 1) return pcl_fail(L, "takes one point or vector, got %d arguments", m);
-        if (p->n != nin)
-            return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
-        memcpy(in, p->h, sizeof(double) * (size_t)(nin + 1));
-        pcl_snap_weight(nin, in);
-        return 0;
-    }
-    const char *got = !m ? "nothing" : lua_istable(L, first) ? "a table (map a list with a loop, or a curve with f(c))"
-                                                              : luaL_typename(L, first);
-    if (m != nin || lua_type(L, first) != LUA_TNUMBER)
-        return pcl_fail(L, "takes a %d-D point or vector, or %d coordinates; got %s", nin, nin, got);
-    static const pcl_arg x = {.kind = PCL_NUMBER};
-    for (int i = 0; i < nin; i++) {
-        pcl_val v;
-        pcl_readone(L, first + i, i + 1, 0, &x, 0, &v);
-        in[i] = v.x;
-    }
-    in[nin] = 1.0;
-    return 1;
-}
-
-static int pole_error(lua_State *L) {
-    return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
-}
-
 /* f(p) or f(x, y, ...): the image, its weight snapped by the one rule (a weight of 1e-17 from
- * a projective matrix is a direction, not a point at 1e17) */
+ * a projective matrix is a direction, not a point at 1e17); f:xy(...), the same body: the
+ * coordinates of the image of a point as numbers.  The value is argument #1, or nin numbers. */
 static int l_apply(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
-    if (pcl_tocurve(L, 2) || pcl_tosurface(L, 2)) {   /* f(c) is c:map(f) */
+    int xy = !strcmp(pcl_running(L)->d->name, "f:xy"), m = lua_gettop(L) - 1, nin = f->nin, n = f->nout;
+    if (!xy && (pcl_tocurve(L, 2) || pcl_tosurface(L, 2))) {   /* f(c) is c:map(f) */
         lua_settop(L, 2);
         lua_getfield(L, 2, "map");
         lua_pushvalue(L, 2);
@@ -283,23 +237,34 @@ static int l_apply(lua_State *L) {
         lua_call(L, 2, 1);
         return 1;
     }
-    double in[PC_MAXDIM + 1];
-    read_input(L, f, 2, lua_gettop(L), in);
-    pcl_value *r = pcl_newvalue(L, f->nout);
-    if (pc_map_image_rule(f, in, r->h) == PC_EPOLE) return pole_error(L);
-    return 1;
-}
-
-static int l_xy(lua_State *L) {
-    pc_map *f = pcl_read(L, NULL, 0);
     double in[PC_MAXDIM + 1], out[PC_MAXDIM + 1];
-    if (!read_input(L, f, 2, lua_gettop(L), in) && in[f->nin] != 1)
-        return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[f->nin]));
+    pcl_value *p = pcl_tovalue(L, 2);
+    if (p) {
+        if (m != 1) return pcl_fail(L, "takes one point or vector, got %d arguments", m);
+        if (p->n != nin)
+            return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
+        memcpy(in, p->h, sizeof(double) * (size_t)(nin + 1));
+        pcl_snap_weight(nin, in);
+        if (xy && in[nin] != 1)
+            return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[nin]));
+    } else {
+        const char *got = !m ? "nothing" : lua_istable(L, 2) ? "a table (map a list with a loop, or a curve with f(c))"
+                                                             : luaL_typename(L, 2);
+        if (m != nin || lua_type(L, 2) != LUA_TNUMBER)
+            return pcl_fail(L, "takes a %d-D point or vector, or %d coordinates; got %s", nin, nin, got);
+        static const pcl_arg x = {.kind = PCL_NUMBER};
+        for (int i = 0; i < nin; i++) {
+            pcl_val v;
+            pcl_readone(L, i + 2, i + 1, 0, &x, 0, &v);
+            in[i] = v.x;
+        }
+        in[nin] = 1.0;
+    }
     int st = pc_map_image_rule(f, in, out);
-    if (st == PC_EPOLE) return pole_error(L);
-    if (st == PC_IMPROPER || out[f->nout] == 0)
+    if (st == PC_EPOLE) return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
+    if (!xy) return pcl_push_packed(L, n, "w", out);
+    if (st == PC_IMPROPER || out[n] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
-    int n = f->nout;
     luaL_checkstack(L, n, NULL);
     for (int i = 0; i < n; i++) lua_pushnumber(L, out[i] / out[n]);
     return n;
@@ -342,9 +307,7 @@ PCL_METHOD(l_matrix, pc_map *f, a) {
     return 1;
 }
 
-static int l_is_affine(lua_State *L) {
-    return pcl_push_results(L, 0, "b", pc_map_is_affine(pcl_read(L, NULL, 0)));
-}
+static int l_is_affine(lua_State *L) { return pcl_push_results(L, 0, "b", pc_map_is_affine(pcl_read(L, NULL, 0))); }
 
 static int l_vanishing(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
@@ -353,10 +316,9 @@ static int l_vanishing(lua_State *L) {
     if (pc_map_vanishing_points(f, out, finite) != PC_OK)
         return pcl_fail(L, "the map goes from %d-D to %d-D; vanishing points are the images of the axis "
                         "directions of a map from 3-D to 2-D or 3-D", f->nin, f->nout);
-    for (int i = 0; i < 3; i++) {
-        if (finite[i]) memcpy(pcl_newvalue(L, f->nout)->h, out[i], sizeof(double) * (size_t)(f->nout + 1));
+    for (int i = 0; i < 3; i++)
+        if (finite[i]) pcl_push_packed(L, f->nout, "w", out[i]);
         else lua_pushnil(L);                   /* the direction stays at infinity */
-    }
     return 3;
 }
 
@@ -379,8 +341,7 @@ static int l_tostring(lua_State *L) {
     if (!f) return pcl_error(L, "tostring: not a map");
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 24 + 64];
     pc_map_text(f, text, sizeof text);
-    lua_pushstring(L, text);
-    return 1;
+    return pcl_push_results(L, 0, "s", text);
 }
 
 /* __index: the methods, then f.nin, f.nout and f.C0, f.C1, ... (the images of the origin and
@@ -403,7 +364,7 @@ static int l_index(lua_State *L) {
 #define METHODSIG(nm, f, forms, text) {.name = nm, .fn = f, .sig = forms, .help = text, .self = self_map, .selftype = "map"}
 static const pcl_fn methods[] = {
     {.name = "f:compose", .fn = l_compose, .args = g_arg, .sig = "f:compose(g) | f * g -> map", .self = self_map, .selftype = "map", .help = "The map applying g first, then f."}, METHOD("f:inverse", l_inverse, NULL, "map", "The inverse map; a singular or non-square map is an error."),
-    METHODSIG("f:xy", l_xy, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
+    METHODSIG("f:xy", l_apply, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
     METHOD("f:is_affine", l_is_affine, NULL, "boolean", "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors."), METHOD("f:vanishing_points", l_vanishing, NULL, "Vx, Vy, Vz", "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity."),
     METHOD("f:show", l_show, conv_arg, NULL, "Print the matrix with its convention named and the columns aligned."), PCL_END};
 static const pcl_fn apply[] = {
@@ -442,15 +403,7 @@ void pcl_open_map(lua_State *L) {
     lua_pushliteral(L, "map");
     lua_setfield(L, -2, "__name");
 
-    lua_newtable(L);                                     /* the affine table */
-    pcl_register(L, -1, affine_fns, 0);
-    lua_newtable(L);                                     /* its metatable: affine(src, dst) */
-    pcl_register(L, -1, affine_call, 0);
-    lua_setmetatable(L, -2);
-    lua_setfield(L, module, "affine");
-
-    lua_newtable(L);                                     /* the map table */
-    pcl_register(L, -1, ctors, 0);
-    lua_setfield(L, module, "map");
+    pcl_new_table(L, module, "affine", affine_fns, affine_call);   /* affine(src, dst) its __call */
+    pcl_new_table(L, module, "map", ctors, NULL);
     lua_settop(L, module);
 }

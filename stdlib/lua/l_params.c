@@ -49,7 +49,6 @@ PCL_BODY(l_slider, a) {
     if (lua_istable(L, 5)) pcl_read_options(L, 5, 5, &slider_opts, k);
     const char *name = a[0].s;
     double lo = a[1].x, hi = a[2].x, dflt = a[3].x, step = lua_istable(L, 5) ? k[0].x : a[4].x;
-    int animate = (int)k[1].x;
     if (!(lo < hi)) return pcl_argfail(L, 3, "must be greater than min");
     if (dflt < lo || dflt > hi) return pcl_argfail(L, 4, "must be between min and max");
     if (step < 0 || step > hi - lo) return pcl_argfail(L, 5, "must be between 0 and max - min");
@@ -60,7 +59,7 @@ PCL_BODY(l_slider, a) {
         lua_pushboolean(L, 1);
         lua_setfield(L, -3, name);
         registry_table(L, DECLARED_KEY);
-        pcl_push_results(L, 0, "name=s min=n max=n default=n step=n animate=b", name, lo, hi, dflt, step, animate);
+        pcl_push_results(L, 0, "name=s min=n max=n default=n step=n animate=b", name, lo, hi, dflt, step, (int)k[1].x);
         lua_rawseti(L, -2, luaL_len(L, -2) + 1);
     }
 
@@ -70,8 +69,7 @@ PCL_BODY(l_slider, a) {
     if (v < lo || v > hi)
         return pcl_fail(L, "the value %s set for %s is outside its range [%s, %s]", pcl_pushnum(L, v), name,
                         pcl_pushnum(L, lo), pcl_pushnum(L, hi));
-    lua_pushnumber(L, v);
-    return 1;
+    return pcl_push_results(L, 0, "n", v);
 }
 
 /* _tk.param_set(name, value): what the host does, for tests and Lua-side tools */

@@ -8,7 +8,7 @@
  * the arguments again only to word an error. */
 #include "pcl_args.h"
 #include "pcl_point.h"
-#include "pcl_curve.h"
+#include "pcl_core.h"
 #include "pcl_expr.h"   /* equations take over when an operand is one (l_expr.c) */
 #include "point_fn.h"
 
@@ -41,24 +41,20 @@ static inline pcl_value *alloc(lua_State *L, int n, int mt) {
 }
 #define newpt(L, n) alloc((L), (n), MT)
 
-void pcl_push_point_mt(lua_State *L) { lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY); }
-
 pcl_value *pcl_tovalue(lua_State *L, int idx) {
     idx = lua_absindex(L, idx);
-    pcl_push_point_mt(L);
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
     pcl_value *p = pcl_testudata(L, idx, lua_gettop(L));
     lua_pop(L, 1);
     return genuine(L, idx, p);
 }
 
 pcl_value *pcl_newvalue(lua_State *L, int n) {
-    pcl_push_point_mt(L);
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &POINT_MT_KEY);
     pcl_value *p = alloc(L, n, lua_gettop(L));
     lua_remove(L, -2);
     return p;
 }
-
-/* ---- text ---------------------------------------------------------------------------------- */
 
 /* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
 static const char *argctx(lua_State *L, int arg) {
@@ -74,8 +70,6 @@ static void fill(pcl_value *r, int n, const double *x, double w) {
 }
 void pcl_pushpoint(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 1.0); }
 void pcl_pushvector(lua_State *L, int n, const double *x) { fill(pcl_newvalue(L, n), n, x, 0.0); }
-/* the n + 1 homogeneous h */
-static void push_h(lua_State *L, int n, const double *h) { fill(newpt(L, n), n, h, h[n]); }
 
 static int push_num(lua_State *L, double x) {
     lua_pushnumber(L, x);
@@ -97,7 +91,9 @@ static double coordinate(lua_State *L, int idx, int i, int table) {
     return v.x;
 }
 
-static int make(lua_State *L, double weight) {
+/* P(...) and V(...): the weight is the op of the registration table (upvalue 2) */
+static int l_make(lua_State *L) {
+    double weight = (double)lua_tointeger(L, PCL_UPVALUE(2));
     int n = lua_gettop(L), table = n == 1 && lua_type(L, 1) == LUA_TTABLE;   /* P{1, 2} */
     if (table) n = (int)lua_rawlen(L, 1);
     for (int i = 0; !table && i < n; i++)       /* an equation among the coordinates: P of it */
@@ -113,9 +109,6 @@ static int make(lua_State *L, double weight) {
     p->h[n] = weight;
     return 1;
 }
-
-static int l_P(lua_State *L) { return make(L, 1.0); }
-static int l_V(lua_State *L) { return make(L, 0.0); }
 
 /* An operand as the operators' messages show it: a value, a number, or another thing by its type */
 static pc_operand operand(lua_State *L, int idx) {
@@ -159,15 +152,13 @@ static int l_eq(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
     int eq = a && b && a->n == b->n;
     for (int i = 0; eq && i <= a->n; i++) eq = a->h[i] == b->h[i];
-    lua_pushboolean(L, eq);
-    return 1;
+    return pcl_push_results(L, 0, "b", eq);
 }
 
 static int l_len(lua_State *L) {
     pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));    /* only the VM calls it */
     if (!p) return pcl_error(L, "#: not a point");
-    lua_pushinteger(L, p->n);
-    return 1;
+    return pcl_push_results(L, 0, "i", p->n);
 }
 
 static int l_tostring(lua_State *L) {
@@ -175,8 +166,7 @@ static int l_tostring(lua_State *L) {
     if (!p) return pcl_error(L, "tostring: not a point");
     char s[PC_MAXDIM * 24 + 32];
     pc_value_text(p->n, p->h, s, sizeof s);
-    lua_pushstring(L, s);
-    return 1;
+    return pcl_push_results(L, 0, "s", s);
 }
 
 static int l_concat(lua_State *L) {
@@ -249,10 +239,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
         return k ? pcl_argfail(L, k, "%s", msg) : pcl_fail(L, "%s", msg);
     }
     if (!value) return push_num(L, out[0]);
-    push_h(L, n, out);
-    if (op != PC_FN_MEET) return 1;
-    lua_pushnumber(L, out[n + 1]);                      /* lambda, mu */
-    return 2 + push_num(L, out[n + 2]);
+    return pcl_push_packed(L, n, op == PC_FN_MEET ? "w n n" : "w", out);   /* meet: K, lambda, mu */
 }
 
 /* The core's function op of the declared arguments, after the equations' hook (NOHOOK: none)
@@ -294,19 +281,14 @@ static int l_lerp(lua_State *L) {
         pcl_val v[3] = {0};
         if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
             pcl_readone(L, 3, 3, 0, &lerp_args[2], 0, &v[2]);
-            double x = lua_tonumber(L, 1), y = lua_tonumber(L, 2), r = x * (1 - v[2].x) + y * v[2].x;
-            if (!isfinite(r)) return out_of_range(L, v[2].x);
-            return push_num(L, r);
+            double x[2] = {lua_tonumber(L, 1), 1}, y[2] = {lua_tonumber(L, 2), 1}, r[2];
+            return pc_lerp(1, x, y, v[2].x, r) == PC_OK ? push_num(L, r[0]) : out_of_range(L, v[2].x);
         }
         PCL_READ(L, v);                                  /* the message, or two values and t */
         a = topt(L, 1), b = topt(L, 2), t = v[2].x;
     }
-    int n = a->n;
-    pcl_value *r = newpt(L, n);
-    pc_lerp(n, a->h, b->h, t, r->h);     /* equal weights kept exactly (t = 1e16) */
-    for (int i = 0; i <= n; i++)
-        if (!isfinite(r->h[i])) return out_of_range(L, t);
-    return 1;
+    pcl_value *r = newpt(L, a->n);
+    return pc_lerp(a->n, a->h, b->h, t, r->h) == PC_OK ? 1 : out_of_range(L, t);   /* equal weights kept exactly */
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
@@ -331,8 +313,7 @@ PCL_BODY(l_mid, a) {
     for (int i = 0; i <= n; i++)
         if (!isfinite(s[i]))
             return pcl_error(L, "%s: the result is out of range (not finite: a coordinate overflowed)", pcl_name(L));
-    push_h(L, n, s);
-    return 1;
+    return pcl_push_packed(L, n, "w", s);
 }
 
 /* The hot path of dist and dot: two values of one dimension whose weights are exactly w (1:
@@ -424,8 +405,7 @@ PCL_BODY(l_near, a) {
         pcl_readone(L, 1, 1, 0, &near_value, 0, &p);
         pcl_readone(L, 2, 2, 0, &near_value, p.n, &q);
     }
-    lua_pushboolean(L, pc_near(p.n, p.v, q.v, a[2].x));
-    return 1;
+    return pcl_push_results(L, 0, "b", pc_near(p.n, p.v, q.v, a[2].x));
 }
 
 /* ---- the drawing layer's hook --------------------------------------------------------------- */
@@ -453,8 +433,8 @@ static const struct {
     pcl_fn fn[2];
     int op, hook, method;
 } fns[] = {
-    {{{.name = "P", .fn = l_P, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."}}, .method = 0},
-    {{{.name = "V", .fn = l_V, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."}}, .method = 0},
+    {{{.name = "P", .fn = l_make, .sig = "P(x, y [, z, ...]) -> point", .help = "A point (weight 1) of any dimension from 1 up: P(1, 2), P(0, 0, 1)."}}, .op = 1},
+    {{{.name = "V", .fn = l_make, .sig = "V(x, y [, z, ...]) -> vector", .help = "A vector (weight 0), as the difference of two points is: V(0, 1)."}}, .method = 0},
     {{PCL_FN("lerp", l_lerp, lerp_args, "value", "(B - A)t + A, the point of line AB with parameter t (t = 0 gives A, t = 1 gives B); also for vectors and numbers.")}, .method = 1},
     {{PCL_FN("bar", l_bar, t_arg, "number", "The complement 1 - t (the book's t with a bar), as in A*bar(t) + B*t.")}, .method = 0},
     {{{.name = "mid", .fn = l_mid, .args = mid_args, .sig = "mid(A, B, ...) -> value", .help = "The midpoint of two values, or the centroid of several."}}, .method = 1},
@@ -488,11 +468,10 @@ static const luaL_Reg point_meta[] = {
 
 void pcl_open_point(lua_State *L) {
     int module = lua_gettop(L);
+    int methods = module + 1, mt = module + 2;
     lua_newtable(L);                                   /* methods for p:name(...), filled below */
-    int methods = lua_gettop(L);
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
     luaL_newmetatable(L, "point");                     /* __name "point" */
-    int mt = lua_gettop(L);
     lua_pushliteral(L, "point");                       /* getmetatable(p) == "point" */
     lua_setfield(L, mt, "__metatable");
     lua_pushvalue(L, mt);

@@ -37,42 +37,30 @@ PCL_BODY(l_simplex, a) {
     return 1;
 }
 
-/* Numbers #1..#m at the stack indices 2..m + 1 (after the simplex) into x. */
-static void numbers(lua_State *L, int m, const char *label, double *x) {
-    for (int i = 0; i < m; i++) {
-        x[i] = lua_tonumber(L, i + 2);
-        if (lua_type(L, i + 2) == LUA_TNUMBER && isfinite(x[i])) continue;
-        char what[24];                              /* the label only on the error path */
-        snprintf(what, sizeof what, "%s %d", label ? label : "", i + 1);
-        pcl_arg num = {.kind = PCL_NUMBER, .name = label ? what : NULL};
-        pcl_val v;
-        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);   /* the message */
-    }
-}
-
 /* S(p, q, ...): the point by its natural parameters.  One more number may follow and is
  * ignored, so that S(S:params(M)) works (params returns the residual last); with
  * coefficients summing to 1 it is also the initial point's barycentric coefficient, which
- * the natural parameters already imply. */
+ * the natural parameters already imply.  S:bary(p, q, ..., r), the same body: coefficients
+ * of vertices 2..k+1, then of the initial point. */
 PCL_METHOD(l_call, pc_simplex *s, a) {
-    int m = lua_gettop(L) - 1, k = s->k;
-    if (m != k && m != k + 1)
+    int m = lua_gettop(L) - 1, k = s->k, bary = !strcmp(pcl_running(L)->d->name, "S:bary");
+    if (bary && m != k + 1) return pcl_fail(L, "a %d-simplex takes %d barycentric parameters, got %d", k, k + 1, m);
+    if (!bary && m != k && m != k + 1)
         return pcl_fail(L, "a %d-simplex takes %d natural parameters, got %d (for barycentric parameters use S:bary)", k, k, m);
     double p[PC_MAXDIM + 1];
-    numbers(L, m, "parameter", p);
+    for (int i = 0; i < m; i++) {
+        p[i] = lua_tonumber(L, i + 2);
+        if (lua_type(L, i + 2) == LUA_TNUMBER && isfinite(p[i])) continue;
+        char what[24];                              /* the label only on the error path */
+        snprintf(what, sizeof what, "parameter %d", i + 1);
+        pcl_arg num = {.kind = PCL_NUMBER, .name = bary ? NULL : what};
+        pcl_val v;
+        pcl_readone(L, i + 2, i + 1, 0, &num, 0, &v);   /* the message */
+    }
     pcl_value *r = pcl_newvalue(L, s->n);
-    pc_simplex_eval(s, p, r->h);
-    r->h[s->n] = 1.0;
-    return 1;
-}
-
-/* S:bary(p, q, ..., r): coefficients of vertices 2..k+1, then of the initial point. */
-PCL_METHOD(l_bary, pc_simplex *s, a) {
-    int k = s->k, m = lua_gettop(L) - 1;
-    if (m != k + 1) return pcl_fail(L, "a %d-simplex takes %d barycentric parameters, got %d", k, k + 1, m);
-    double c[PC_MAXDIM + 1];
-    numbers(L, m, NULL, c);
-    pc_simplex_bary(s, c, pcl_newvalue(L, s->n)->h);
+    r->h[s->n] = 1.0;                               /* S(p, q): a point; bary writes its weight */
+    if (bary) pc_simplex_bary(s, p, r->h);
+    else pc_simplex_eval(s, p, r->h);
     return 1;
 }
 
@@ -89,8 +77,7 @@ PCL_METHOD(l_params, pc_simplex *s, a) {
 }
 
 PCL_METHOD(l_measure, pc_simplex *s, a) {
-    lua_pushnumber(L, pc_simplex_measure(s));
-    return 1;
+    return pcl_push_results(L, 0, "n", pc_simplex_measure(s));
 }
 
 PCL_METHOD(l_ratio, pc_simplex *s, a) {
@@ -122,8 +109,7 @@ static int l_index(lua_State *L) {
 static int l_len(lua_State *L) {
     pc_simplex *s = tosimplex(L, 1);
     if (!s) return pcl_error(L, "#: not a simplex");
-    lua_pushinteger(L, s->k + 1);
-    return 1;
+    return pcl_push_results(L, 0, "i", s->k + 1);
 }
 
 static int l_tostring(lua_State *L) {
@@ -131,14 +117,13 @@ static int l_tostring(lua_State *L) {
     if (!s) return pcl_error(L, "tostring: not a simplex");
     char buf[(PC_MAXDIM + 1) * (PC_MAXDIM * 24 + 40)];
     pc_simplex_text(s, buf, sizeof buf);
-    lua_pushstring(L, buf);
-    return 1;
+    return pcl_push_results(L, 0, "s", buf);
 }
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, \
                                       .self = tosimplex, .selftype = "simplex"}
 static const pcl_fn methods[] = {
-    METHOD("S:bary", l_bary, NULL, "S:bary(p, q, ..., r) -> value", "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1)."),
+    METHOD("S:bary", l_call, NULL, "S:bary(p, q, ..., r) -> value", "Ap + Bq + ... + Cr: barycentric coefficients, the initial point's last (weighted when they do not sum to 1)."),
     METHOD("S:params", l_params, params_args, "S:params(M) -> p, q, ..., residual", "The natural parameters of M (least squares off the simplex's flat) and M's distance from that flat."),
     METHOD("S:measure", l_measure, NULL, "S:measure() -> number", "Length, area, volume...: signed when the simplex is full-dimensional."),
     METHOD("S:ratio", l_ratio, NULL, "S:ratio(P1, P2, ...) -> ratio, residual", "The S-/V-theorem: the signed ratio of the measure of P1P2... to the simplex's own."),

@@ -12,7 +12,6 @@ typedef struct {
     double h[];     /* h[0..n-1] weighted coordinates, h[n] the weight */
 } pcl_value;
 
-void pcl_push_point_mt(lua_State *L);
 /* The value at idx, or NULL if it is not a point/vector. */
 pcl_value *pcl_tovalue(lua_State *L, int idx);
 /* Push a new value of dimension n (its doubles uninitialised). */

@@ -25,6 +25,15 @@ static void test_lerp_keeps_equal_weights(void **state) {
     const double w[3] = {2, 2, 2};            /* weights 1 and 2: t̄ + 2t */
     pc_lerp(2, a, w, 0.5, out);
     assert_true(out[2] == 1.5);
+    /* the status: an overflow or a t that is not finite is PC_ENONFINITE */
+    assert_int_equal(pc_lerp(2, a, b, 0.25, out), PC_OK);
+    const double big[3] = {1e308, 0, 1}, far[3] = {-1e308, 0, 1};
+    assert_int_equal(pc_lerp(2, big, far, 3, out), PC_ENONFINITE);
+    assert_int_equal(pc_lerp(2, a, b, INFINITY, out), PC_ENONFINITE);
+    assert_int_equal(pc_lerp(2, a, b, NAN, out), PC_ENONFINITE);
+    const double x[2] = {2, 1}, y[2] = {4, 1};            /* two numbers: 2 t̄ + 4 t */
+    assert_int_equal(pc_lerp(1, x, y, 0.75, out), PC_OK);
+    assert_true(out[0] == 3.5 && out[1] == 1);
 }
 
 static void test_divide_huge_lambda(void **state) {

@@ -75,6 +75,10 @@ static void statuses_explained(void **state) {
     pc_map_perspective_pqr(&f, 0, 0, 1);
     st = pc_map_foreshortening(&f, d);
     assert_non_null(pc_why_find(pc_map_why, "map.foreshortening", st));
+    st = pc_map_shear(&f, 3, 1, 1, 2.0);                    /* one axis twice */
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_string_equal(pc_why_find(pc_map_why, "map.shear", st)->text,
+                        "arguments #2 and #3 (i, j) name the same axis; a shear adds k times axis j to axis i");
 }
 
 static void translate_finite(void **state) {
