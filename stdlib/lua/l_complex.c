@@ -106,7 +106,6 @@ static int l_index(lua_State *L) {
 }
 
 /* complex(re [, im]), complex(P) or complex(z): the __call of the table complex */
-static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 static const pcl_arg new_args[] = {{.name = "re", .kind = PCL_NUMBER, .expect = "a finite number or a 2-D point"},
                                    A_NUMOPT("im", 0, NULL), PCL_END};
 static const pcl_arg point_arg = A_POINT("P", 2);
@@ -196,7 +195,7 @@ static const pcl_fn cfns[] = {
     PCL_FN("complex.exp", c_fn, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_fn, z_arg, "number", "The modulus |z|."),
     PCL_FN("complex.arg", c_fn, z_arg, "number", "The argument of z: atan2(im, re), in radians."),
     PCL_FN("complex.conj", c_fn, z_arg, "z", "The complex conjugate."), PCL_END};
-static const pcl_fn cnew[] = {{.name = "complex", .fn = c_new, .args = new_args, .self = self_table, .selftype = "table", .key = "__call",
+static const pcl_fn cnew[] = {{.name = "complex", .fn = c_new, .args = new_args, .self = pcl_self_table, .selftype = "table", .key = "__call",
                                .sig = "complex(re [, im]) | complex(P) -> z", .help = "A complex number (from a 2-D point, x + iy); + - * / ^ mix with numbers; z.re, z.im, z:conj(), z:abs(), z:arg(), z:exp(), z:point()."}, PCL_END};
 static const pcl_fn mfns[] = {PCL_FN("mobius", l_mobius, mobius_args, "M", "The Moebius automorphism w = e^(i phi)(z - z0)/(1 - conj(z0) z) of the unit disc (examples 15, 16): M(z), M(x, y), M(P), M:inverse()."), PCL_END};
 static const pcl_fn mcall[] = {{.name = "M", .fn = m_call, .args = m_args, .self = tomobius, .selftype = "Moebius map", .key = "__call", .topic = "M(z)",

@@ -60,7 +60,6 @@ static int read_points(lua_State *L, int k, int idx, double *out, int *dim) {
     return m;
 }
 
-static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 #define POINTSET "a table of points or a simplex"
 static const pcl_arg affine_args[] = {{.name = "source points", .kind = PCL_ANY, .expect = POINTSET},
                                       {.name = "image points", .kind = PCL_ANY, .expect = POINTSET}, PCL_END};
@@ -371,7 +370,7 @@ static const pcl_fn apply[] = {
     {.name = "f", .fn = l_apply, .self = self_map, .selftype = "map", .key = "__call", .topic = "f(p)", .callname = 1, .sig = "f(p) | f(x, y, ...) -> value", .help = "Apply a map: vectors ignore a translation; a point a projective map sends to infinity comes back as its direction, a vector."},
     PCL_END};
 static const pcl_fn affine_call[] = {
-    {.name = "affine", .fn = l_affine, .args = affine_args, .result = "f", .self = self_table, .selftype = "table", .key = "__call", .sig = "affine({A, B, C}, {A2, B2, C2}) -> f", .help = "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension)."},
+    {.name = "affine", .fn = l_affine, .args = affine_args, .result = "f", .self = pcl_self_table, .selftype = "table", .key = "__call", .sig = "affine({A, B, C}, {A2, B2, C2}) -> f", .help = "The affine map sending A to A2, B to B2, C to C2 (3 pairs in the plane, 4 in space; images may have another dimension)."},
     PCL_END};
 static const pcl_fn affine_fns[] = {
     {.name = "affine.frame", .fn = l_frame, .args = frame_args, .sig = "affine.frame(O, X, Y [, Z]) -> f", .help = "The map (x, y, z) -> O + x(X - O) + y(Y - O) + z(Z - O); the axes may also be vectors."},

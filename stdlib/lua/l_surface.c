@@ -352,7 +352,6 @@ static int s_tostring(lua_State *L) {
     return 1;
 }
 
-static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
 #define METHOD(nm, f, decl, res, text) {.name = nm, .fn = f, .args = decl, .result = res, .help = text, .self = self_surf, .selftype = "surface"}
 #define METHOD_SIG(nm, f, decl, forms, text) {.name = nm, .fn = f, .args = decl, .sig = forms, .help = text, .self = self_surf, .selftype = "surface"}
 static const pcl_fn methods[] = {
@@ -365,7 +364,7 @@ static const pcl_fn methods[] = {
     METHOD_SIG("s:shade", s_shade, shade_args, "s:shade{nu = 40, nv = 40, color = c, light = V(...), ambient = 0, mesh = c, map = m} -> quads", "Draw the 3-D surface through map or the camera as nu x nv quads, each filled with its flat (Lambert) shade of color by the angle between its normal and the light (default: from the viewer), farthest first (the painter's order); with mesh, each quad's outline too, so only the visible mesh shows."),
     PCL_END};
 static const pcl_fn call[] = {{.name = "s", .fn = s_call, .args = uv_args, .self = self_surf, .selftype = "surface", .key = "__call", .topic = "s(u, v)", .callname = 1, .sig = "s(u, v) -> point", .help = "The point of a surface at (u, v); s:partials and s:normal give its derivatives and normal."}, PCL_END};
-static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = self_table, .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
+static const pcl_fn func_call[] = {{.name = "surface", .fn = l_func, .args = func_args, .result = "s", .self = pcl_self_table, .selftype = "table", .key = "__call", .help = "A Lua function (u, v) -> point as a surface."}, PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("surface.bilinear", l_bilinear, bilinear_args, "s", "The bilinear patch with these corners at (u, v) = (0,0), (1,0), (0,1), (1,1)."),
     PCL_FN("surface.bezier", l_bezier, bezier_args, "s", "The tensor-product Bezier patch of a net (a list of rows along u of points; weighted points make it rational)."),

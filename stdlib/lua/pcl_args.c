@@ -155,6 +155,8 @@ int pcl_callable(lua_State *L, int idx) {
     return 1;
 }
 
+void *pcl_self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
+
 /* ---- reading one value ------------------------------------------------------------------- */
 
 /* Where a value sits, for its messages: argument #shown (name), or option 'key'; item > 0: an

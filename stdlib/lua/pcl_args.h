@@ -184,6 +184,8 @@ const char *pcl_nearest_key(lua_State *L, const char *name, int idx);
 
 /* 1 if the value at idx can be called: a function, or a value whose metatable has __call. */
 int pcl_callable(lua_State *L, int idx);
+/* The receiver's recogniser (pcl_fn.self) of a callable table's __call: any table. */
+void *pcl_self_table(lua_State *L, int idx);
 /* Push a list {x[0], ..., x[n-1]}. */
 void pcl_push_numbers(lua_State *L, int n, const double *x);
 /* Push a list of n points from rows of dim, or (homogeneous) of values from rows of dim + 1. */
