@@ -97,8 +97,7 @@ int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 /* The colour of this file's statements, which hold the canvas as their upvalue: read on it
  * without the registry look-up of pcl_read_color, and the canvas left in out->obj, so that
  * pset finds its canvas once per call (stmt_canvas). */
-static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int stmt_color(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pc_canvas *c = canvas(L);
     out->obj = c;
     return read_color_on(L, idx, c, 0, out);
@@ -111,8 +110,7 @@ static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
 
 /* PALETTE's colour: QBasic's 65536*blue + 256*green + red with 6-bit components, a "#rrggbb"
  * string, or a table {r, g, b} of 0..255; into out->v[0..2]. */
-static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_rgb(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_istable(L, idx)) {
         for (int i = 0; i < 3; i++) {
             int isnum = lua_geti(L, idx, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
@@ -134,16 +132,14 @@ static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 
 /* "screen" or a boolean as the last argument of WINDOW/VIEW: QBasic's SCREEN form. */
-static int read_screen_flag(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_screen_flag(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_isboolean(L, idx)) return (out->x = lua_toboolean(L, idx)), 1;
     return lua_type(L, idx) == LUA_TSTRING && !strcmp(lua_tostring(L, idx), "screen") && (out->x = 1);
 }
 
 /* A text: a string (or a number, shown as Lua shows it), without NUL bytes, which would cut
  * the label short in every writer. */
-static int read_text(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_text(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_type(L, idx) != LUA_TSTRING && lua_type(L, idx) != LUA_TNUMBER) return 0;
     size_t len;
     out->s = lua_tolstring(L, idx, &len);
@@ -229,18 +225,13 @@ static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
 /* ---- 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write -- */
+/* A stroke added to the scene: !pcl_check(L, st, NULL) is 1, a failed status raised. */
 
 /* A 3-D point at stack index idx, or 0. */
 static int point3(lua_State *L, int idx, double x[3]) {
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p || p->n != 3 || fabs(p->h[3] - 1) > PC_WEIGHT_TOL) return 0;
     for (int k = 0; k < 3; k++) x[k] = p->h[k] / p->h[3];
-    return 1;
-}
-
-/* A statement's 3-D stroke added to the scene with status st: 1 (done), or its error raised. */
-static int scene_added(lua_State *L, int st) {
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
     return 1;
 }
 
@@ -256,7 +247,7 @@ static int scene_pset(lua_State *L) {
     double x[3];
     pc_scene *sc;
     if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
-    return scene_added(L, pc_scene_add_dot(sc, x, scene_color(L, 2, &dot_args[2])));
+    return !pcl_check(L, pc_scene_add_dot(sc, x, scene_color(L, 2, &dot_args[2])), NULL);
 }
 
 /* line(A, B [, colour]) with 3-D points and a scene: the segment added, 1; else 0. */
@@ -265,7 +256,7 @@ static int scene_line(lua_State *L) {
     pc_scene *sc;
     if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
     int color = scene_color(L, 3, &line_args[4]);
-    return scene_added(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen));
+    return !pcl_check(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen), NULL);
 }
 
 /* path(points, {closed =, color =, arrow =}) with 3-D points (read already) and a scene: the
@@ -285,7 +276,7 @@ static int scene_path(lua_State *L, int closed, int color, int heads) {
         lua_pop(L, 1);
         if (!ok) return 0;   /* not all 3-D points: drawn as usual */
     }
-    return scene_added(L, pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen));
+    return !pcl_check(L, pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen), NULL);
 }
 
 /* label(text, P, ...) with a 3-D point and a scene, its arguments a read by label's
@@ -300,7 +291,7 @@ static int scene_label(lua_State *L, const pcl_val *a) {
     int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
     if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
         st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
-    return scene_added(L, st);
+    return !pcl_check(L, st, NULL);
 }
 
 static int l_pset(lua_State *L) { return scene_pset(L) ? 0 : dot(L, pc_pset); }
@@ -468,8 +459,7 @@ static int subpath(lua_State *L, int idx, lua_Integer k, int nested) {
 /* The points of path and fill: a list of 2-D points (one subpath) or a list of such lists
  * (one subpath each).  The coordinates (out->list) and the verbs (out->obj: a move at the start
  * of each subpath, lines after) go to scratch userdata above the arguments; out->n points. */
-static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_subpaths(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
     lua_Integer m = luaL_len(L, idx);
     if (m < 1) return pcl_readfail(L, idx, "a list of at least one point");

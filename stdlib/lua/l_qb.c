@@ -6,8 +6,7 @@
 
 /* Any number, inf and NaN included (SINGLE overflows to inf; translated QBasic reports it),
  * as Lua converts it (a numeric string too, as before). */
-static int read_qbnum(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_qbnum(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     int isnum;
     out->x = lua_tonumberx(L, idx, &isnum);
     return isnum;
