@@ -390,28 +390,28 @@ static int l_pen(lua_State *L) {
     return pcl_check_canvas(L, c, pc_pen_options(c, &o));
 }
 
-/* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at
- * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
-static void list_point(lua_State *L, int idx, const char *where, double *xy) {
+/* The point at the stack top, element [j] (k > 0: [k][j]) of the points argument at idx: a
+ * 2-D point, or an n-D one with a camera for n-D points set. */
+static void list_point(lua_State *L, int idx, int k, int j, double *xy) {
     pcl_value *p = pcl_tovalue(L, -1);
     char why[200];
-    if (p && pc_place_why(pcl_camera(L), p->n, p->h, xy, why, sizeof why) != PC_OK)
-        pcl_fail(L, "argument #%d (points) %s%s", idx, where, lua_pushfstring(L, why, luaL_tolstring(L, -1, NULL)));
-    if (!pcl_topoint2(L, -1, xy, xy + 1))
-        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
+    int value = lua_gettop(L), placed = !p || pc_place_why(pcl_camera(L), p->n, p->h, xy, why, sizeof why) == PC_OK;
+    if (placed && pcl_topoint2(L, value, xy, xy + 1)) return;
+    const char *where = k ? lua_pushfstring(L, "[%d][%d]", k, j) : lua_pushfstring(L, "[%d]", j);
+    if (!placed)
+        pcl_fail(L, "argument #%d (points) %s%s", idx, where, lua_pushfstring(L, why, luaL_tolstring(L, value, NULL)));
+    pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, value));
 }
 
 /* Subpath k of the points at idx pushed (nested: a list of lists), or the list itself: its
  * stack index. */
 static int subpath(lua_State *L, int idx, lua_Integer k, int nested) {
     static const char nested_text[] = "a list of 2-D points or a list of such lists";
-    if (!nested) {
+    if (!nested)
         lua_pushvalue(L, idx);
-        return lua_gettop(L);
-    }
-    if (lua_geti(L, idx, k) != LUA_TTABLE)
+    else if (lua_geti(L, idx, k) != LUA_TTABLE)
         pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
-    if (luaL_len(L, -1) < 1)
+    else if (luaL_len(L, -1) < 1)
         pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
     return lua_gettop(L);
 }
@@ -439,11 +439,8 @@ static int read_subpaths(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl
     for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
         int list = subpath(L, idx, k, nested);
         for (lua_Integer j = 1, len = luaL_len(L, list); j <= len; j++, i++) {
-            char where[48];
-            if (nested) snprintf(where, sizeof where, "[%d][%d]", (int)k, (int)j);
-            else snprintf(where, sizeof where, "[%d]", (int)j);
             lua_geti(L, list, j);
-            list_point(L, idx, where, &xy[2 * i]);
+            list_point(L, idx, nested ? (int)k : 0, (int)j, &xy[2 * i]);
             all3 = all3 && point3(L, -1, &xy[2 * n + 3 * i]);
             verbs[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
             lua_pop(L, 1);
