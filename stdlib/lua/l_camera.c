@@ -19,8 +19,11 @@ pc_map *pcl_camera(lua_State *L) {
 }
 
 /* camera(f [, {hidden =}]), camera(nil), camera() */
-PCL_BODY(l_camera, a) {   /* projection, opts, hidden (no list: no buffer above the arguments) */
-    if (lua_isnone(L, 1)) {
+static int l_camera(lua_State *L) {
+    int given = !lua_isnone(L, 1);   /* asked before reading, which may fill the stack */
+    pcl_val a[3] = {{0}};   /* projection, opts, hidden */
+    PCL_READ(L, a);
+    if (!given) {
         lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
         return 1;
     }

@@ -474,9 +474,9 @@ PCL_BODY(l_path, a) {   /* points, options; closed, color, fill, rule, arrow */
 
 static const pcl_arg fill_args[] = {POINTS, COLOR("colour"), RULE("rule"), PCL_END};
 PCL_BODY(l_fill, a) {
-    pc_canvas *c = canvas(L);
     size_t n = (size_t)a[0].n;
-    return pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
+    int rule = a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
+    return pcl_drawn(L, pc_fill_path(canvas(L), n, a[0].list, a[0].obj, n, rule, (int)a[1].x));
 }
 
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
