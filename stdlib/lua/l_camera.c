@@ -1,6 +1,7 @@
-/* Binding of 3-D drawing: camera(f), the current projection, and the drawing of curves as one
- * path (c:draw; _tk.draw_curve for plot and the lines of curvilinear.lua), the C path from the
- * object through the camera (or a map), WINDOW and VIEW to the canvas (curve_path.h). */
+/* Binding of 3-D drawing: camera(f), the current projection and its scene of hidden lines
+ * (pcl_scene.h), and the drawing of curves as one path (c:draw; _tk.draw_curve for plot and the
+ * lines of curvilinear.lua), the C path from the object through the camera (or a map), WINDOW
+ * and VIEW to the canvas (curve_path.h). */
 #include "pcl_args.h"
 #include "pcl_curve.h"
 #include "pcl_scene.h"
@@ -8,6 +9,7 @@
 #include "curve_path.h"
 
 #define CAMERA_KEY "pointcalc.camera"
+#define HIDDEN_KEY "pointcalc.hidden"   /* the camera's hidden-line mode: -1 none, else a pc_hidden_mode */
 
 pc_map *pcl_camera(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
@@ -18,7 +20,7 @@ pc_map *pcl_camera(lua_State *L) {
 
 /* camera(f [, {hidden =}]), camera(nil), camera() */
 static int l_camera(lua_State *L) {
-    int given = !lua_isnone(L, 1);
+    int given = !lua_isnone(L, 1);   /* asked before reading, which may fill the stack */
     pcl_val a[3] = {{0}};   /* projection, opts, hidden */
     PCL_READ(L, a);
     if (!given) {
@@ -28,10 +30,23 @@ static int l_camera(lua_State *L) {
     pc_map *f = a[0].obj;
     if (f && f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
     /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
-    pcl_set_hidden_mode(L, a[2].present ? a[2].n : -1);
+    lua_pushinteger(L, a[2].present ? a[2].n : -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
     lua_settop(L, 1);
     lua_setfield(L, LUA_REGISTRYINDEX, CAMERA_KEY);
     return 0;
+}
+
+pc_scene *pcl_scene(lua_State *L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
+    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1, st;
+    lua_pop(L, 1);
+    pc_map *f = pcl_camera(L), scr;
+    if (mode < 0 || !f || f->nin != 3) return NULL;
+    pcl_screen_map(L, f, &scr);
+    pc_scene *sc = pc_canvas_scene(pcl_active_canvas(L), &scr, mode, &st);
+    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
+    return sc;
 }
 
 int pcl_project(lua_State *L, int n, const double *h, double *x, double *y) {

@@ -97,8 +97,7 @@ int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 /* The colour of this file's statements, which hold the canvas as their upvalue: read on it
  * without the registry look-up of pcl_read_color, and the canvas left in out->obj, so that
  * pset finds its canvas once per call (stmt_canvas). */
-static int stmt_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int stmt_color(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pc_canvas *c = canvas(L);
     out->obj = c;
     return read_color_on(L, idx, c, 0, out);
@@ -111,8 +110,7 @@ static pc_canvas *stmt_canvas(lua_State *L, const pcl_val *color) {
 
 /* PALETTE's colour: QBasic's 65536*blue + 256*green + red with 6-bit components, a "#rrggbb"
  * string, or a table {r, g, b} of 0..255; into out->v[0..2]. */
-static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_rgb(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_istable(L, idx)) {
         for (int i = 0; i < 3; i++) {
             int isnum = lua_geti(L, idx, i + 1) == LUA_TNUMBER, isint;   /* no "10" */
@@ -134,16 +132,14 @@ static int read_rgb(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 
 /* "screen" or a boolean as the last argument of WINDOW/VIEW: QBasic's SCREEN form. */
-static int read_screen_flag(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_screen_flag(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_isboolean(L, idx)) return (out->x = lua_toboolean(L, idx)), 1;
     return lua_type(L, idx) == LUA_TSTRING && !strcmp(lua_tostring(L, idx), "screen") && (out->x = 1);
 }
 
 /* A text: a string (or a number, shown as Lua shows it), without NUL bytes, which would cut
  * the label short in every writer. */
-static int read_text(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_text(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_type(L, idx) != LUA_TSTRING && lua_type(L, idx) != LUA_TNUMBER) return 0;
     size_t len;
     out->s = lua_tolstring(L, idx, &len);
@@ -238,12 +234,6 @@ static int point3(lua_State *L, int idx, double x[3]) {
     return 1;
 }
 
-/* A statement's 3-D stroke added to the scene with status st: 1 (done), or its error raised. */
-static int scene_added(lua_State *L, int st) {
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return 1;
-}
-
 /* The colour argument #k of a statement with 3-D points, read as its declaration a says. */
 static int scene_color(lua_State *L, int k, const pcl_arg *a) {
     pcl_val v = {0};
@@ -251,59 +241,14 @@ static int scene_color(lua_State *L, int k, const pcl_arg *a) {
     return (int)v.x;
 }
 
-/* pset(P [, colour]) with a 3-D point and a scene: the dot added, 1; else 0 (drawn as usual). */
-static int scene_pset(lua_State *L) {
+/* pset(P [, colour]) with a 3-D point and a scene: the dot joins the scene. */
+static int l_pset(lua_State *L) {
     double x[3];
-    pc_scene *sc;
-    if (lua_type(L, 1) == LUA_TNUMBER || !point3(L, 1, x) || !(sc = pcl_scene(L))) return 0;
-    return scene_added(L, pc_scene_add_dot(sc, x, scene_color(L, 2, &dot_args[2])));
+    pc_scene *sc = lua_type(L, 1) != LUA_TNUMBER && point3(L, 1, x) ? pcl_scene(L) : NULL;
+    if (sc) return pcl_check(L, pc_scene_add_dot(sc, x, scene_color(L, 2, &dot_args[2])), NULL);
+    return dot(L, pc_pset);
 }
 
-/* line(A, B [, colour]) with 3-D points and a scene: the segment added, 1; else 0. */
-static int scene_line(lua_State *L) {
-    double ab[6];
-    pc_scene *sc;
-    if (!point3(L, 1, ab) || !point3(L, 2, ab + 3) || !(sc = pcl_scene(L))) return 0;
-    int color = scene_color(L, 3, &line_args[4]);
-    return scene_added(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen));
-}
-
-/* path(points, {closed =, color =, arrow =}) with 3-D points (read already) and a scene: the
- * polyline and its heads (PC_ARROW_* bits) added, 1; else 0. */
-static int scene_path(lua_State *L, int closed, int color, int heads) {
-    pc_scene *sc;
-    double x[3];
-    if (!lua_istable(L, 1) || lua_rawgeti(L, 1, 1) == LUA_TNIL) return lua_pop(L, 1), 0;
-    int is3 = point3(L, -1, x);
-    lua_pop(L, 1);
-    if (!is3 || !(sc = pcl_scene(L))) return 0;
-    size_t n = lua_rawlen(L, 1);   /* n points of one path */
-    double *xyz = lua_newuserdatauv(L, sizeof(double) * 3 * n, 0);
-    for (size_t k = 0; k < n; k++) {
-        lua_rawgeti(L, 1, (lua_Integer)k + 1);
-        int ok = point3(L, -1, xyz + 3 * k);
-        lua_pop(L, 1);
-        if (!ok) return 0;   /* not all 3-D points: drawn as usual */
-    }
-    return scene_added(L, pc_scene_add_path(sc, n, xyz, closed, heads, color, pcl_active_canvas(L)->pen));
-}
-
-/* label(text, P, ...) with a 3-D point and a scene, its arguments a read by label's
- * declaration: the markup checked now, as a 2-D label's is, and the label shown only where its
- * point is seen; 1, else 0. */
-static int scene_label(lua_State *L, const pcl_val *a) {
-    double x[3];
-    pc_scene *sc;
-    if (!point3(L, 2, x) || !(sc = pcl_scene(L))) return 0;
-    char err[200];
-    if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
-    int st = pc_scene_add_label(sc, x, a[0].s, a[3].present ? a[3].n : PC_ANCHOR_AUTO, (int)a[5].x, (int)a[4].x);
-    if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
-        st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
-    return scene_added(L, st);
-}
-
-static int l_pset(lua_State *L) { return scene_pset(L) ? 0 : dot(L, pc_pset); }
 static int l_preset(lua_State *L) { return dot(L, pc_preset); }
 
 static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl_val *a) {
@@ -312,8 +257,14 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
     return pcl_check_canvas(L, c, pc_line_stmt(c, x1, y1, a[0].x, a[1].x, (int)a[2].x, box, pattern));
 }
 
+/* line(A, B [, colour]) with 3-D points and a scene: the segment joins the scene. */
 static int l_line(lua_State *L) {
-    if (scene_line(L)) return 0;
+    double ab[6];
+    pc_scene *sc = point3(L, 1, ab) && point3(L, 2, ab + 3) ? pcl_scene(L) : NULL;
+    if (sc) {
+        int color = scene_color(L, 3, &line_args[4]);
+        return pcl_check(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen), NULL);
+    }
     pcl_val a[7];
     PCL_READ_PAIRS(L, a);
     return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
@@ -439,37 +390,37 @@ static int l_pen(lua_State *L) {
     return pcl_check_canvas(L, c, pc_pen_options(c, &o));
 }
 
-/* The point at the stack top, element `where` ("[3]", "[2][3]") of the points argument at
- * idx: a 2-D point, or an n-D one with a camera for n-D points set. */
-static void list_point(lua_State *L, int idx, const char *where, double *xy) {
+/* The point at the stack top, element [j] (k > 0: [k][j]) of the points argument at idx: a
+ * 2-D point, or an n-D one with a camera for n-D points set. */
+static void list_point(lua_State *L, int idx, int k, int j, double *xy) {
     pcl_value *p = pcl_tovalue(L, -1);
     char why[200];
-    if (p && pc_place_why(pcl_camera(L), p->n, p->h, xy, why, sizeof why) != PC_OK)
-        pcl_fail(L, "argument #%d (points) %s%s", idx, where, lua_pushfstring(L, why, luaL_tolstring(L, -1, NULL)));
-    if (!pcl_topoint2(L, -1, xy, xy + 1))
-        pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, -1));
+    int value = lua_gettop(L), placed = !p || pc_place_why(pcl_camera(L), p->n, p->h, xy, why, sizeof why) == PC_OK;
+    if (placed && pcl_topoint2(L, value, xy, xy + 1)) return;
+    const char *where = k ? lua_pushfstring(L, "[%d][%d]", k, j) : lua_pushfstring(L, "[%d]", j);
+    if (!placed)
+        pcl_fail(L, "argument #%d (points) %s%s", idx, where, lua_pushfstring(L, why, luaL_tolstring(L, value, NULL)));
+    pcl_fail(L, "argument #%d (points) %s must be a 2-D point, got %s", idx, where, pcl_shown(L, value));
 }
 
 /* Subpath k of the points at idx pushed (nested: a list of lists), or the list itself: its
  * stack index. */
 static int subpath(lua_State *L, int idx, lua_Integer k, int nested) {
     static const char nested_text[] = "a list of 2-D points or a list of such lists";
-    if (!nested) {
+    if (!nested)
         lua_pushvalue(L, idx);
-        return lua_gettop(L);
-    }
-    if (lua_geti(L, idx, k) != LUA_TTABLE)
+    else if (lua_geti(L, idx, k) != LUA_TTABLE)
         pcl_fail(L, "argument #%d (points) [%d] must be %s, got %s", idx, (int)k, nested_text, pcl_shown(L, -1));
-    if (luaL_len(L, -1) < 1)
+    else if (luaL_len(L, -1) < 1)
         pcl_fail(L, "argument #%d (points) [%d] must be %s, got an empty list", idx, (int)k, nested_text);
     return lua_gettop(L);
 }
 
 /* The points of path and fill: a list of 2-D points (one subpath) or a list of such lists
  * (one subpath each).  The coordinates (out->list) and the verbs (out->obj: a move at the start
- * of each subpath, lines after) go to scratch userdata above the arguments; out->n points. */
-static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+ * of each subpath, lines after) go to scratch userdata above the arguments; out->n points.  One
+ * path of 3-D points (out->dim 1) has their xyz after the places, for the scene (l_path). */
+static int read_subpaths(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
     lua_Integer m = luaL_len(L, idx);
     if (m < 1) return pcl_readfail(L, idx, "a list of at least one point");
@@ -481,23 +432,22 @@ static int read_subpaths(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) 
         lua_pop(L, 1);
     }
     if (n > 100000000) pcl_fail(L, "argument #%d (points) holds too many points", idx);
-    double *xy = lua_newuserdatauv(L, n * 2 * sizeof *xy, 0);   /* freed by the GC */
+    double *xy = lua_newuserdatauv(L, n * 5 * sizeof *xy, 0);   /* freed by the GC */
     uint8_t *verbs = lua_newuserdatauv(L, n, 0);
     size_t i = 0;
+    int all3 = !nested;   /* one path of 3-D points: also their xyz after the places (scenes) */
     for (lua_Integer k = 1; k <= (nested ? m : 1); k++) {
         int list = subpath(L, idx, k, nested);
         for (lua_Integer j = 1, len = luaL_len(L, list); j <= len; j++, i++) {
-            char where[48];
-            if (nested) snprintf(where, sizeof where, "[%d][%d]", (int)k, (int)j);
-            else snprintf(where, sizeof where, "[%d]", (int)j);
             lua_geti(L, list, j);
-            list_point(L, idx, where, &xy[2 * i]);
+            list_point(L, idx, nested ? (int)k : 0, (int)j, &xy[2 * i]);
+            all3 = all3 && point3(L, -1, &xy[2 * n + 3 * i]);
             verbs[i] = j == 1 ? PC_PATH_MOVE : PC_PATH_LINE;
             lua_pop(L, 1);
         }
         lua_pop(L, 1);
     }
-    out->list = xy, out->obj = verbs, out->n = (int)n;
+    out->list = xy, out->obj = verbs, out->n = (int)n, out->dim = all3;
     return 1;
 }
 
@@ -509,20 +459,24 @@ static const pcl_arg path_keys[] = {{.name = "closed", .kind = PCL_BOOLEAN}, COL
                                     RULE("rule"), {.name = "arrow", .kind = PCL_ENUM, .choices = HEADS}, PCL_END};
 static const pcl_arg path_args[] = {POINTS, A_OPTIONS("options", path_keys), PCL_END};
 
+/* path(points, ...): with 3-D points of one path, no fill and a scene, the polyline and its
+ * heads (PC_ARROW_* bits) join the scene. */
 PCL_BODY(l_path, a) {   /* points, options; closed, color, fill, rule, arrow */
     int closed = (int)a[2].x, color = (int)a[3].x, heads = a[6].n;
-    if (!a[4].present && scene_path(L, closed, color, heads)) return 0;
+    size_t n = (size_t)a[0].n;
+    pc_scene *sc = a[0].dim && !a[4].present ? pcl_scene(L) : NULL;
     pc_canvas *c = canvas(L);
+    if (sc) return pcl_check(L, pc_scene_add_path(sc, n, a[0].list + 2 * n, closed, heads, color, c->pen), NULL);
     int rule = a[5].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
-    return pcl_check_canvas(L, c, pc_path_stmt(c, (size_t)a[0].n, a[0].list, a[0].obj, closed, color, heads,
+    return pcl_check_canvas(L, c, pc_path_stmt(c, n, a[0].list, a[0].obj, closed, color, heads,
                                                a[4].present, (int)a[4].x, rule));
 }
 
 static const pcl_arg fill_args[] = {POINTS, COLOR("colour"), RULE("rule"), PCL_END};
 PCL_BODY(l_fill, a) {
-    pc_canvas *c = canvas(L);
     size_t n = (size_t)a[0].n;
-    return pcl_check_canvas(L, c, pc_fill_path(c, n, a[0].list, a[0].obj, n, a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD, (int)a[1].x));
+    int rule = a[2].n ? PC_FILL_NONZERO : PC_FILL_EVENODD;
+    return pcl_drawn(L, pc_fill_path(canvas(L), n, a[0].list, a[0].obj, n, rule, (int)a[1].x));
 }
 
 static const char *const DIRECTIONS[] = {"c", "n", "ne", "e", "se", "s", "sw", "w", "nw", NULL};
@@ -530,10 +484,21 @@ static const pcl_arg label_args[] = {TEXT, A_X("x"), A_NUM("y"),
     {.name = "direction", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = DIRECTIONS, .dflt = PC_ANCHOR_NE,
      .expect = "one of \"n\" \"ne\" \"e\" \"se\" \"s\" \"sw\" \"w\" \"nw\" \"c\""},
     COLOR("colour"), SCALE, A_OPTIONS("options", pcl_label_keys), PCL_END};
+/* label(text, P, ...) with a 3-D point and a scene: the label joins the scene, its markup
+ * checked now, as a 2-D label's is, and shown only where its point is seen. */
 PCL_PAIRS_BODY(l_label, a) {   /* text, x, y, direction, colour, scale, options; font, size, halo */
-    if (scene_label(L, a)) return 0;
-    pc_canvas *c = canvas(L);
     int anchor = a[3].present ? a[3].n : PC_ANCHOR_AUTO;
+    double x[3];
+    pc_scene *sc = point3(L, 2, x) ? pcl_scene(L) : NULL;
+    if (sc) {
+        char err[200];
+        if (pc_math_check(a[0].s, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
+        int st = pc_scene_add_label(sc, x, a[0].s, anchor, (int)a[5].x, (int)a[4].x);
+        if (st == PC_OK && a[6].present)   /* {font, size, halo}: kept with the label till it is drawn */
+            st = pc_scene_style_label(sc, a[7].s, a[8].x, a[9].present ? (int)a[9].x : -1);
+        return pcl_check(L, st, NULL);
+    }
+    pc_canvas *c = canvas(L);
     pcl_check_canvas(L, c, pc_text(c, a[1].x, a[2].x, a[0].s, anchor, 3, (int)a[5].x, (int)a[4].x));
     if (a[6].present) pcl_label_style(L, c, a + 7);
     return 0;

@@ -41,8 +41,7 @@ PCL_BODY(l_figure, a) {   /* options, width, height, dpi, font, size */
 }
 
 /* A font the print look can set: a name fontconfig knows. */
-static int read_font(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_font(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_type(L, idx) != LUA_TSTRING || lua_rawlen(L, idx) >= 64) return 0;
     out->s = lua_tostring(L, idx);
     const char *family;

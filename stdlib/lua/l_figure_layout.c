@@ -1,8 +1,7 @@
 /* Binding of the figure layout and its furniture (stdlib/draw/layout.h, furniture.h, axes.h),
  * on the declared argument layer (pcl_args.h, docs/bindings.md): placed_labels, mark, arrow,
  * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
- * and map.view.  Points are 2-D, or n-D through the camera; sizes are screen pixels.  And the
- * 3-D scene (pcl_scene.h) a camera with hidden lines keeps, resolved when a picture is written. */
+ * and map.view.  Points are 2-D, or n-D through the camera; sizes are screen pixels. */
 #include "pcl_draw.h"
 #include "pcl_core.h"
 #include "pcl_scene.h"
@@ -16,8 +15,7 @@
 /* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
 /* v[0], v[1]: the 2-D place; a 3-D point also keeps its coordinates in v[2..4] (n = 3). */
-static int read_xy(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_xy(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *p = pcl_tovalue(L, idx);
     if (!p || fabs(p->h[p->n] - 1) > PC_WEIGHT_TOL) return 0;
     out->n = p->n;
@@ -49,27 +47,6 @@ static int l_placed_labels(lua_State *L) {
     }
     free(p);
     return 1;
-}
-
-/* ---- the 3-D scene ----------------------------------------------------------------------- */
-
-#define HIDDEN_KEY "pointcalc.hidden"
-
-void pcl_set_hidden_mode(lua_State *L, int mode) {
-    lua_pushinteger(L, mode);
-    lua_setfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
-}
-
-pc_scene *pcl_scene(lua_State *L) {
-    lua_getfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
-    int mode = lua_isinteger(L, -1) ? (int)lua_tointeger(L, -1) : -1, st;
-    lua_pop(L, 1);
-    pc_map *f = pcl_camera(L), scr;
-    if (mode < 0 || !f || f->nin != 3) return NULL;
-    pcl_screen_map(L, f, &scr);
-    pc_scene *sc = pc_canvas_scene(pcl_active_canvas(L), &scr, mode, &st);
-    if (st != PC_OK) pcl_raise_status(L, pcl_fname(L), st);
-    return sc;
 }
 
 /* ---- markers, arrows, furniture -------------------------------------------------------------- */
@@ -266,8 +243,6 @@ static const pcl_fn view_fn[] = {{.name = "map.view", .fn = l_view, .args = view
                                   .help = "The view with z up (docs/maps.md): from a point towards another, the picture's x to the right as seen and y along up (default the z axis), origin at to; parallel unless perspective."}, PCL_END};
 
 void pcl_open_figure_layout(lua_State *L) {
-    int module = lua_gettop(L);
-    pcl_register(L, module, fns, 0);
-    if (lua_getfield(L, module, "map") == LUA_TTABLE) pcl_register(L, lua_gettop(L), view_fn, 0);
-    lua_settop(L, module);
+    pcl_register(L, -1, fns, 0);
+    pcl_register_into(L, -1, "map", view_fn);
 }

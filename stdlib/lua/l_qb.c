@@ -6,8 +6,7 @@
 
 /* Any number, inf and NaN included (SINGLE overflows to inf; translated QBasic reports it),
  * as Lua converts it (a numeric string too, as before). */
-static int read_qbnum(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_qbnum(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     int isnum;
     out->x = lua_tonumberx(L, idx, &isnum);
     return isnum;
@@ -97,10 +96,9 @@ static const pcl_fn rnd_fns[] = {   /* sharing the generator's state */
     PCL_END};
 
 void pcl_open_qb(lua_State *L) {
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    qb_rnd_state *s = lua_newuserdatauv(L, sizeof *s, 0);
-    qb_rnd_init(s);
+    pcl_new_table(L, -1, "qb", fns, NULL);
+    lua_getfield(L, -1, "qb");
+    qb_rnd_init(lua_newuserdatauv(L, sizeof(qb_rnd_state), 0));
     pcl_register(L, -2, rnd_fns, 1);   /* pops the state, shared as upvalue */
-    lua_setfield(L, -2, "qb");
+    lua_pop(L, 1);
 }

@@ -3,6 +3,7 @@
  * QBasic runtime and for scripts. */
 #include "pcl_draw.h"
 #include "pcl_core.h"
+#include "pcl_tagged.h"
 
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
@@ -88,17 +89,15 @@ static const pcl_arg get_block_args[] = {A_X("first corner x"), A_NUM("first cor
                                          A_X("second corner x"), A_NUM("second corner y"), PCL_END};
 PCL_PAIRS_BODY(l_get_block, a) {
     pc_canvas *c = pcl_active_canvas(L);
-    block_box *bb = lua_newuserdatauv(L, sizeof *bb, 0);
-    *bb = (block_box){PCL_SELF_TAG(bb, &BLOCK_TAG), NULL, 0};
-    luaL_setmetatable(L, BLOCK_MT);
+    block_box *bb = pcl_tagged_new(L, sizeof *bb, &BLOCK_TAG, BLOCK_MT);
+    bb->b = NULL;
     pcl_check_canvas(L, c, pc_get_block(c, a[0].x, a[1].x, a[2].x, a[3].x, &bb->b));
     bb->bytes = pc_block_bytes(c, bb->b->w, bb->b->h);
     return 1;
 }
 
 /* A block from get_block into out->obj. */
-static int read_block(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_block(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     block_box *bb = toblock(L, idx);
     return bb && bb->b && (out->obj = bb->b);
 }

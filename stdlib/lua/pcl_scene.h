@@ -1,4 +1,4 @@
-/* The 3-D scene of the bindings (l_figure_layout.c, stdlib/draw/scene.h): with a camera set
+/* The 3-D scene of the bindings (l_camera.c, stdlib/draw/scene.h): with a camera set
  * by camera(f, {hidden = "dashed"|"hide"|"show"}), 3-D strokes go into a scene attached to the
  * canvas instead of being drawn, and the writers resolve it whatever the drawing order. */
 #ifndef PCL_SCENE_H
@@ -7,8 +7,6 @@
 #include "pcl.h"
 #include "scene.h"
 
-/* The camera's hidden-line mode: -1 none, else a pc_hidden_mode (l_camera.c sets it). */
-void pcl_set_hidden_mode(lua_State *L, int mode);
 /* The scene 3-D strokes go into now, or NULL when the camera has no hidden mode (or is not
  * 3-D). */
 pc_scene *pcl_scene(lua_State *L);
