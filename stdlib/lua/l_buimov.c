@@ -354,11 +354,6 @@ static const pcl_fn book[] = {
     PCL_END};
 
 void pcl_open_buimov(lua_State *L) {
-    int module = lua_gettop(L);
-    lua_newtable(L);
-    pcl_register(L, -1, plane, 0);
-    lua_setfield(L, module, "plane");
-    lua_newtable(L);
-    pcl_register(L, -1, book, 0);
-    lua_setfield(L, module, "buimov");
+    pcl_new_table(L, -1, "plane", plane, NULL);
+    pcl_new_table(L, -1, "buimov", book, NULL);
 }

@@ -24,19 +24,16 @@ PCL_BODY(l_squash, a) {
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
 static const pcl_arg oblique_args[] = {A_POINT("C0", 2), A_NUM("r"), A_NUM("k"), A_NUM("u"), PCL_END};
-PCL_BODY(l_oblique, a) {
-    double c[8];
-    pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
-    pc_map_project4(pcl_newmap(L), c);
-    return 1;
-}
-
 static const pcl_arg projection_args[] = {A_SAMEPOINT("C0"), A_SAMEPOINT("C1"), A_SAMEPOINT("C2"),
                                           A_SAMEPOINT("C3"), PCL_END};
+
+/* oblique and projection, one body told apart by the declared name: the map by the screen
+ * points C0..C3 of its origin and axes (oblique's made from r, k and u) */
 PCL_BODY(l_projection, a) {
-    if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
-    pcl_point_rows(a, 4, 2, c);
+    if (!strcmp(pcl_name(L), "oblique")) pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
+    else if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
+    else pcl_point_rows(a, 4, 2, c);
     pc_map_project4(pcl_newmap(L), c);
     return 1;
 }
@@ -195,7 +192,7 @@ PCL_BODY(l_frame, a) {
 static const pcl_fn fns[] = {
     PCL_FN("squash", l_squash, squash_args, "numbers", "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28)."),
     PCL_FN("squash01", l_squash, squash_args, "numbers", "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument."),
-    PCL_FN("oblique", l_oblique, oblique_args, "map", "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up."),
+    PCL_FN("oblique", l_projection, oblique_args, "map", "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up."),
     PCL_FN("projection", l_projection, projection_args, "map", "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0."),
     {.name = "oresme", .fn = l_oresme, .args = oresme_args, .result = "o", .sig = "oresme(lambda [, m [, y0, y1]]) -> o", .help = "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o."},
     PCL_FN("bisect", l_bisect, bisect_args, "x, iterations", "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default)."),

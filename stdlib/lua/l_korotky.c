@@ -58,12 +58,6 @@ static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, i
     }
 }
 
-/* A solver's failure at knot bad (0-based). */
-static int knot_error(lua_State *L, int st, int bad) {
-    if (bad >= 0) return pcl_fail(L, "%s at knot #%d", pc_ferguson_why(st), bad + 1);
-    return pcl_statuserror(L, pcl_name(L), st, NULL);
-}
-
 /* ---- polynomial spline -------------------------------------------------------------------- */
 
 static const char *const ENDS[] = {"natural", "clamped", NULL};
@@ -77,9 +71,8 @@ PCL_BODY(l_poly_spline, a) {
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
     pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
     pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
-    if (st == PC_EDOMAIN)
-        return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
-    if (!c) return knot_error(L, st, bad);
+    pc_why_call why;
+    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
     pcl_pushcurve(L, c, "korotky.poly_spline");
     pcl_push_rows(L, n - 1, 4, coef);
     return 2;
@@ -112,9 +105,8 @@ PCL_BODY(l_ferguson_lambda, a) {
     if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
     need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
     pc_curve *c = pc_ferguson_lambda_curve(n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, a[6].list, &bad, &st);
-    if (!c && st == PC_EZERO) return pcl_fail(L, "the end tangents must not be zero vectors");
-    if (!c && st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
-    if (!c) return knot_error(L, st, bad);
+    pc_why_call why;
+    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
     return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
 }
 
@@ -122,35 +114,33 @@ static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1
                                         PCL_END};
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
-PCL_BODY(l_ferguson_tangents, a) {
-    double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS];
-    int n = a[0].n;
-    tangents(L, 2, &a[1], n, T);
-    need_count(L, &a[5], "start", 0, 2 * n - 4);
-    mags[0] = a[3].x;
-    mags[2 * n - 3] = a[4].x;
-    if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
-    int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
-    if (st != PC_OK) return knot_error(L, st, bad);
-    pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
-    return 1 + pcl_push_results(L, 0, "N", 2 * n - 2, mags);
-}
-
 static const char *const ROOTS[] = {"min", "max", NULL};
 static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"), A_POSNUM("z1"),
                                      {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS}, PCL_END};
-PCL_BODY(l_ferguson_substitution, a) {
+
+/* korotky.ferguson_tangents and korotky.ferguson_substitution, one body told apart by the
+ * declared name: the moduli for the given tangents (the substitution's quadratics), the spline */
+PCL_BODY(l_ferguson_moduli, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
-    int n = a[0].n;
+    int n = a[0].n, subst = !strcmp(pcl_name(L), "korotky.ferguson_substitution"), bad = -1, st;
     tangents(L, 2, &a[1], n, T);
-    mags[0] = a[2].x;
-    mags[1] = a[3].x;
-    int bad = -1, st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
-    if (st != PC_OK) return knot_error(L, st, bad);
+    if (subst) {
+        mags[0] = a[2].x;
+        mags[1] = a[3].x;
+        st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
+    } else {
+        need_count(L, &a[5], "start", 0, 2 * n - 4);
+        mags[0] = a[3].x;
+        mags[2 * n - 3] = a[4].x;
+        if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
+        st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
+    }
+    pc_why_call why;
+    pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
-    pcl_push_rows(L, n - 2, 3, quad);
-    return 3;
+    if (subst) pcl_push_rows(L, n - 2, 3, quad);
+    return 2 + subst;
 }
 
 /* ---- the elastic reference and the measures ------------------------------------------------ */
@@ -418,8 +408,8 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef", "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
     PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve", "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
     PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve", "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
-    PCL_FN("korotky.ferguson_tangents", l_ferguson_tangents, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
-    PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
+    PCL_FN("korotky.ferguson_tangents", l_ferguson_moduli, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
+    PCL_FN("korotky.ferguson_substitution", l_ferguson_moduli, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
     PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
@@ -436,8 +426,4 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K", "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
     PCL_END};
 
-void pcl_open_korotky(lua_State *L) {
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    lua_setfield(L, -2, "korotky");
-}
+void pcl_open_korotky(lua_State *L) { pcl_new_table(L, -1, "korotky", fns, NULL); }

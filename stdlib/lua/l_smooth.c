@@ -148,8 +148,6 @@ void pcl_open_smooth(lua_State *L) {
     int module = lua_gettop(L);
     static const luaL_Reg meta[] = {{"__tostring", hs_tostring}, {NULL, NULL}};
     pcl_open_type(L, HSPLINE_MT, meta, call, methods, hs_index);
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    lua_setfield(L, module, "smooth");
+    pcl_new_table(L, module, "smooth", fns, NULL);
     lua_settop(L, module);
 }

@@ -66,6 +66,17 @@ const char *pc_ferguson_why(int st) {
                                   : pc_strerror(st);
 }
 
+int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w) {
+    int poly = !strcmp(op, "korotky.poly_spline"), lambda = !strcmp(op, "korotky.ferguson_lambda");
+    if (poly && st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 1, NULL, "[%d] must lie right of the point before (x must increase)", bad + 1);
+    if (lambda && st == PC_EZERO) return pc_why_call_set(w, op, st, 0, NULL, "the end tangents must not be zero vectors");
+    if (lambda && st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 0, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
+    if (bad >= 0) return pc_why_call_set(w, op, st, 0, NULL, "%s at knot #%d", pc_ferguson_why(st), bad + 1);
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+}
+
 const char *pc_conic_arc_why(int st) {
     return st == PC_ESKEW        ? "the tangents must lie in the plane of U, V and T"
            : st == PC_EDOMAIN     ? "T must lie between the tangent lines, on an arc from U to V that stays finite"

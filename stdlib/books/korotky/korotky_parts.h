@@ -35,6 +35,11 @@ const char *pc_ferguson_why(int st);
 const char *pc_conic_arc_why(int st);
 const char *pc_conic_revolve_why(int st);
 const char *pc_meet_planes4_why(int st, int pencil);
+/* The failure st of the polynomial spline or a Ferguson solver at knot bad (0-based; -1: at no
+ * knot) explained in w for the construction op (korotky.poly_spline: the x must increase;
+ * korotky.ferguson_lambda: the end tangents and the ratios lambda; the others: the knot); an
+ * empty table for a failure at no knot.  Returns st. */
+int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
 
 /* The elements of a 2-D conic arc c: one rational quadratic piece (pc_conic_info_rquad and its
  * statuses), or the two pieces of korotky.conic_arc with T = W: PC_ESAME_LINE when they are the
