@@ -118,12 +118,10 @@ PCL_BODY(l_elements, a) {
     } else if (pcl_tovalue(L, 1)) {
         /* five points, each read by the one point rule */
         static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};
+        pcl_val v[5] = {0};
         double pts[10];
-        for (int i = 0; i < 5; i++) {
-            pcl_val v = {0};
-            pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v);
-            memcpy(pts + 2 * i, v.v, sizeof(double) * 2);
-        }
+        for (int i = 0; i < 5; i++) pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v[i]);
+        pcl_point_rows(v, 5, 2, pts);
         st = pc_conic_info_five(pts, &o);
     } else {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",

@@ -2,6 +2,7 @@
  * numeric.h), and the numeric helpers of stdlib/lua/curvilinear.lua in _tk. */
 #include "pcl_args.h"
 #include "pcl_core.h"
+#include "pcl_tagged.h"
 #include "curvilinear.h"
 #include "numeric.h"
 
@@ -69,8 +70,7 @@ static oresme *checkoresme(lua_State *L, const char *fn) {
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 PCL_METHOD(oresme_call, oresme *o, a) {
-    lua_pushnumber(L, pc_oresme_at(o->y, o->m, a[0].x));
-    return 1;
+    return pcl_push_results(L, 0, "n", pc_oresme_at(o->y, o->m, a[0].x));
 }
 
 static int oresme_index(lua_State *L) {
@@ -91,9 +91,7 @@ static int oresme_index(lua_State *L) {
 }
 
 static int oresme_len(lua_State *L) {
-    oresme *o = checkoresme(L, "#");
-    lua_pushinteger(L, 1L << o->m);
-    return 1;
+    return pcl_push_results(L, 0, "i", 1 << checkoresme(L, "#")->m);
 }
 
 static int oresme_tostring(lua_State *L) {
@@ -109,11 +107,9 @@ static const pcl_arg oresme_args[] = {
 PCL_BODY(l_oresme, a) {
     int m = (int)a[1].x;
     long n = 1L << m;
-    oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
-    o->self = PCL_SELF_TAG(o, &ORESME_TAG);
+    oresme *o = pcl_tagged_new(L, sizeof *o + sizeof(double) * (size_t)(n + 1), &ORESME_TAG, ORESME_MT);
     o->lambda = a[0].x;
     o->m = m;
-    luaL_setmetatable(L, ORESME_MT);
     int st = pc_oresme_fill(a[0].x, m, a[2].x, a[3].x, o->y);
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
     return 1;

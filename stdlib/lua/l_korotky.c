@@ -20,17 +20,15 @@
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
-    pcl_value *v = pcl_tovalue(L, idx);
     if (lua_type(L, idx) == LUA_TNUMBER && isfinite(lua_tonumber(L, idx))) {
         double d = atan(lua_tonumber(L, idx));
         t[0] = cos(d), t[1] = sin(d);
         return 1;
     }
-    if (!v || v->n != 2 || pc_kind_of(v->h[2]) != PC_KIND_VECTOR || !isfinite(v->h[0]) ||
-        !isfinite(v->h[1]))
-        return 0;
-    t[0] = v->h[0], t[1] = v->h[1];
-    return 1;
+    pcl_value *v = pcl_tovalue(L, idx);
+    int ok = v && v->n == 2 && pc_kind_of(v->h[2]) == PC_KIND_VECTOR && isfinite(v->h[0]) && isfinite(v->h[1]);
+    if (ok) t[0] = v->h[0], t[1] = v->h[1];
+    return ok;
 }
 static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     return tangent_at(L, idx, out->v);
