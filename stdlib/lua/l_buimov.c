@@ -31,20 +31,19 @@ static void push_circle(lua_State *L, const pc_circle_eq *c) {
     lua_setfield(L, -2, "curve");
 }
 
+/* plane.circle3 and plane.arc3, one body told apart by the declared name: the arc through A,
+ * B and C, alone or as the field arc of their circle */
 static const pcl_arg abc_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), PCL_END};
 PCL_BODY(l_circle3, a) {
     pc_circle_eq c;
-    pcl_check(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c), WHY);
-    push_circle(L, &c);
-    int st;
+    int st, circle = !strcmp(pcl_name(L), "plane.circle3");
+    if (circle) {
+        pcl_check(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c), WHY);
+        push_circle(L, &c);
+    }
     made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
-    lua_setfield(L, -2, "arc");
+    if (circle) lua_setfield(L, -2, "arc");
     return 1;
-}
-
-PCL_BODY(l_arc3, a) {
-    int st;
-    return made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
 }
 
 static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
@@ -191,18 +190,16 @@ PCL_BODY(l_blend, a) {
 
 static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
                                        A_POSOPT("t", 1), PCL_END};
+/* buimov.hermite and buimov.hermite_coeffs, one body told apart by the declared name: the
+ * segment, or its coefficients */
 PCL_BODY(l_hermite, a) {
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x};
+    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x}, B[4 * PC_MAXDIM];
     int d = a[0].n, st;
     pcl_point_rows(a, 2, d, p);
     pcl_point_rows(a + 2, 2, d, dv);
-    return made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
-}
-
-PCL_BODY(l_hermite_coeffs, a) {
-    double *p = a[0].v, *dv = a[2].v, B[4 * PC_MAXDIM];
-    int d = a[0].n;
-    pcl_check(L, pc_hermite_coeffs(d, p, a[1].v, dv, a[3].v, a[4].x, B), WHY);
+    if (!strcmp(pcl_name(L), "buimov.hermite"))
+        return made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
+    pcl_check(L, pc_hermite_coeffs(d, p, p + d, dv, dv + d, a[4].x, B), WHY);
     return pcl_push_results(L, d, "p v v v", B, B + d, B + 2 * d, B + 3 * d);
 }
 
@@ -323,7 +320,7 @@ static const pcl_fn plane[] = {
     PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),
     PCL_FN("plane.circle2r", l_circle2r, circle2r_args, "circle1, circle2", "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left."),
     PCL_FN("plane.circle_slopes", l_circle_slopes, slopes_args, "circle [, circle2]", "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it)."),
-    PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside)."),
+    PCL_FN("plane.arc3", l_circle3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside)."),
     PCL_FN("plane.classify", l_classify, classify_args, "\"ellipse\"|\"parabola\"|\"hyperbola\", discriminant", "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1)."),
     {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args, .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
     PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
@@ -341,7 +338,7 @@ static const pcl_fn book[] = {
     PCL_FN("buimov.bernstein", l_bernstein, bernstein_args, "number", "The Bernstein polynomial J_n,i(t) = C(n, i) t^i (1 - t)^(n - i) (§4.3)."),
     PCL_FN("buimov.blend", l_blend, t_arg, "F1, F2, F3, F4", "The Hermite blending functions of a normalised segment (§5.5)."),
     PCL_FN("buimov.hermite", l_hermite, hermite_args, "curve", "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default)."),
-    PCL_FN("buimov.hermite_coeffs", l_hermite_coeffs, hermite_args, "B1, B2, B3, B4", "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected)."),
+    PCL_FN("buimov.hermite_coeffs", l_hermite, hermite_args, "B1, B2, B3, B4", "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected)."),
     PCL_FN("buimov.spline", l_spline, spline_args, "curve, tangents", "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given; the segments' parameter lengths uniform, by chords, or the user's lengths."),
     PCL_FN("buimov.helix", l_helix, helix_args, "curve", "The helix (a cos t, a sin t, b t) (§4.1)."),
     {.name = "buimov.sphere", .fn = l_sphere, .args = sphere_args, .sig = "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s", .help = "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default."},
