@@ -87,8 +87,7 @@ PCL_BODY(l_ferguson, a) {
     need_count(L, &a[2], NULL, 3, 2 * n - 2);
     pc_curve *c = pc_ferguson_curve(n, a[0].list, T, a[2].list, &st);
     if (!c) return pcl_statuserror(L, pcl_name(L), st, "argument #2 (tangents)");
-    pcl_pushcurve(L, c, "korotky.ferguson");
-    return 1;
+    return pcl_pushcurve(L, c, "korotky.ferguson");
 }
 
 #define END_TANGENT(nm, at) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_tangent, \
@@ -234,14 +233,6 @@ static const pcl_arg sweep_keys[] = {REQ3("U", PCL_CURVE), REQ3("V", PCL_CURVE),
                                      REQ3("P", PCL_CURVE), REQ3("Q", PCL_CURVE), PCL_END};
 #define CALLTABLE(nm, k) {.name = nm, .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = k}   /* korotky.x{...} */
 static const pcl_arg sweep_args[] = {CALLTABLE("guides", sweep_keys), PCL_END};
-PCL_BODY(l_conic_sweep, a) {
-    int st;
-    double u = 0;
-    pc_why_call why;
-    pc_surface *s = pc_surface_conic_sweep(a[1].obj, a[2].obj, a[3].obj, a[4].obj, a[5].obj, &u, &st);
-    if (!s) pcl_check(L, pc_sweep_explain(0, st, u, &why), why.row);
-    return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
-}
 
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"), A_POINTOPT("origin", 3), PCL_END};
 PCL_BODY(l_dome_rect, a) {
@@ -280,12 +271,12 @@ PCL_BODY(l_dome_tri, a) {
 /* ---- the shells of 2015 -------------------------------------------------------------------- */
 
 /* A guide of dimension a->dim: a curve (out->obj), or a fixed point or vector (out->v, the
- * weight snapped by the one rule) when a->lo is 1. */
+ * weight snapped by the one rule). */
 static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
     if (c) return c->dim == a->dim;
-    pcl_value *v = a->lo ? pcl_tovalue(L, idx) : NULL;
+    pcl_value *v = pcl_tovalue(L, idx);
     if (!v || v->n != a->dim) return 0;
     memcpy(out->v, v->h, sizeof(double) * (size_t)(a->dim + 1));
     return pcl_snap_weight(a->dim, out->v) != PC_KIND_WEIGHTED;
@@ -297,7 +288,7 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
     pc_pencil_point *g = (pc_pencil_point *)out->list;
-    static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4, .lo = 1};
+    static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4};
     for (int i = 0; i < 3; i++) {
         pcl_val v = {0};
         lua_geti(L, idx, i + 1);
@@ -322,8 +313,7 @@ static int l_two_pencils(lua_State *L) {
     pc_surface *s = pc_surface_two_pencils_checked(om, de, &st, &meet);
     if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.two_pencils");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.two_pencils");
 }
 
 /* ---- the rotational sweep and the ridge shell ---------------------------------------------- */
@@ -336,27 +326,30 @@ PCL_BODY(l_conic_revolve, a) {
     pc_why_call why;
     pc_surface *s = pc_conic_revolve_explained(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &st, &why);
     if (!s) pcl_check(L, st, why.row);
-    pcl_pushsurface(L, s, "korotky.conic_revolve");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.conic_revolve");
 }
 
-#define GUIDE(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_guide, .dim = 3, .lo = 1, \
+#define GUIDE(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_guide, .dim = 3, \
                    .expect = "a 3-D curve, point or vector"}
 static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
                                      GUIDE("H"), GUIDE("Q"), PCL_END};
 static const pcl_arg ridge_args[] = {CALLTABLE("guides", ridge_keys), PCL_END};
-PCL_BODY(l_ridge_shell, a) {
+
+/* korotky.conic_sweep and korotky.ridge_shell, one body told apart by the declared name: the
+ * surface of the conics the guides span (the sweep's five curves, the ridge shell's eight) */
+PCL_BODY(l_sweep, a) {
+    int ridge = !strcmp(pcl_name(L), "korotky.ridge_shell"), st;
     pc_pencil_point g[8];
-    for (int i = 0; i < 8; i++) {
+    for (int i = 0; i < (ridge ? 8 : 5); i++) {
         g[i].c = a[i + 1].obj;
         memcpy(g[i].h, a[i + 1].v, sizeof(double) * 4);
     }
-    int st;
     double u = 0;
     pc_why_call why;
-    pc_surface *s = pc_surface_ridge_shell_of(g, &u, &st);
-    if (!s) pcl_check(L, pc_sweep_explain(1, st, u, &why), why.row);
-    return pcl_push_made_surface(L, s, &st, "korotky.ridge_shell");
+    pc_surface *s = ridge ? pc_surface_ridge_shell_of(g, &u, &st)
+                          : pc_surface_conic_sweep(g[0].c, g[1].c, g[2].c, g[3].c, g[4].c, &u, &st);
+    if (!s) pcl_check(L, pc_sweep_explain(ridge, st, u, &why), why.row);
+    return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 
 /* ---- the conic's centre, axes and asymptotes ---------------------------------------------- */
@@ -414,13 +407,13 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.joint_jumps", l_joint_jumps, curve_arg, "dkappa, dangle, knot", "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump."),
     PCL_FN("korotky.energy", l_energy, curve_arg, "number", "The bending energy, the integral of kappa^2 ds over the curve."),
     PCL_FN("korotky.conic_arc", l_conic_arc, arc_args, "curve, w, kind", "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\"."),
-    PCL_FN("korotky.conic_sweep", l_conic_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
+    PCL_FN("korotky.conic_sweep", l_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
     PCL_FN("korotky.dome_rect", l_dome_rect, rect_args, "s", "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses."),
     PCL_FN("korotky.dome_tri", l_dome_tri, tri_args, "s", "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D) over (u, v) in [0, 1]^2 with the plan point A + (B - A) u(1 - v) + (C - A) uv: u-isolines are the ellipses parallel to BC."),
     PCL_FN("korotky.conic_elements", l_conic_elements, elements_args, "{kind, coef, center, axes, semi, foci, e, p, asymptotes, ...}", "The conic of a 2-D conic arc with any weights (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): the table of c:conic(): kind, coefficients, centre (a parabola's vertex), unit principal axes (major or transverse first), semi-axes, foci, e, p, a hyperbola's unit asymptote directions, and for an arc mu, w and the engineering discriminant k."),
     PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
     PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
-    PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
+    PCL_FN("korotky.ridge_shell", l_sweep, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
     PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K", "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
     PCL_END};
 
