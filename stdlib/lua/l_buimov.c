@@ -12,7 +12,6 @@
 #include "pcl_books.h"
 #include "buimov_why.h"
 
-#define PI 3.14159265358979323846
 #define WHY pc_buimov_why
 
 /* the curve a construction made (kind: its name), or its status explained by the why-table */
@@ -27,7 +26,7 @@ static int made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
 static void push_circle(lua_State *L, const pc_circle_eq *c) {
     int st;
     pcl_push_results(L, 2, "centre=p r=n d=n e=n f=n", c->c, c->r, c->d, c->e, c->f);
-    made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), &st, "circle");
+    made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * M_PI, &st), &st, "circle");
     lua_setfield(L, -2, "curve");
 }
 
@@ -107,7 +106,7 @@ PCL_BODY(l_conic_coef, a) {
 static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"), A_NUMOPT("th0", 0, "0"),
                                        A_NUMOPT("th1", 0, NULL), PCL_END};
 PCL_BODY(l_ellipse, a) {
-    double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
+    double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * M_PI;
     int st;
     return made(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), &st, "ellipse");
 }
@@ -231,8 +230,8 @@ PCL_BODY(l_helix, a) {
     return made(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "helix");
 }
 
-static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
-                                      A_NUMOPT("ph1", PI, "pi"), A_POINTOPT("C", 3), A_POSOPT("r", 1), PCL_END};
+static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * M_PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
+                                      A_NUMOPT("ph1", M_PI, "pi"), A_POINTOPT("C", 3), A_POSOPT("r", 1), PCL_END};
 PCL_BODY(l_sphere, a) {
     int st;   /* C absent: its cleared value, the origin */
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);

@@ -1,5 +1,6 @@
 /* Conics that know what they are (geom/quadratic.h) in Lua: c:conic(), conic.elements and
- * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements. */
+ * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements, pcl_push_rows
+ * with the books and the maps (pcl_books.h). */
 #include "pcl_args.h"
 #include "pcl_books.h"
 #include "pcl_core.h"
@@ -25,6 +26,14 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     if (o->nasym) {
         pcl_push_results(L, 2, "V", 2, &o->asym[0][0]);
         lua_setfield(L, -2, "asymptotes");
+    }
+}
+
+void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
+    lua_createtable(L, nr, 0);
+    for (int i = 0; i < nr; i++) {
+        pcl_push_numbers(L, nc, m + (size_t)i * nc);
+        lua_rawseti(L, -2, i + 1);
     }
 }
 

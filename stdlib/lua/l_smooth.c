@@ -2,6 +2,7 @@
  * of smooth.power(n) and smooth.half(n, m, t0) without t.  The curve builders accept these
  * objects, smooth.sine and smooth.cubic as smoothsteps they evaluate natively (pcl_tk.h). */
 #include "pcl_args.h"
+#include "pcl_core.h"
 #include "pcl_tk.h"
 #include "pcl_expr.h"   /* g(t) of an equation t builds an equation (l_expr.c) */
 
@@ -11,8 +12,7 @@
  * (smooth.cubic(1e308)) overflows, and no NaN or infinity is returned silently. */
 static int push_value(lua_State *L, double t, double g) {
     if (!isfinite(g)) return pcl_fail(L, "the value at t = %s is out of range (not finite)", pcl_pushnum(L, t));
-    lua_pushnumber(L, g);
-    return 1;
+    return pcl_push_results(L, 0, "n", g);
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
@@ -26,9 +26,8 @@ static int numeric(lua_State *L, int kind) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     if (kind < LOCUS) return push_value(L, a[0].x, pc_gfun_eval(&g, a[0].x));
-    if (kind == LOCUS) lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
-    else lua_pushnumber(L, kind == CLAMP ? pc_smooth_clamp(a[0].x) : pc_smooth_clamp_qb(a[0].x, a[1].x));
-    return 1;
+    if (kind == LOCUS) return pcl_push_results(L, 0, "n", pc_hspline_locus(a[0].x, a[1].x, a[2].x));
+    return pcl_push_results(L, 0, "n", kind == CLAMP ? pc_smooth_clamp(a[0].x) : pc_smooth_clamp_qb(a[0].x, a[1].x));
 }
 static int l_sine(lua_State *L) { return numeric(L, PC_G_SINE); }
 static int l_cubic(lua_State *L) { return numeric(L, PC_G_CUBIC); }
@@ -105,8 +104,7 @@ static int hs_at(lua_State *L, int deriv) {
     double d = pc_hspline_deriv(h, a[0].x);
     /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
     if (!isfinite(d)) return pcl_fail(L, "the slope at t = %s is infinite (a degree below 1)", pcl_pushnum(L, a[0].x));
-    lua_pushnumber(L, d);
-    return 1;
+    return pcl_push_results(L, 0, "n", d);
 }
 static int hs_call(lua_State *L) { return hs_at(L, 0); }
 static int hs_deriv(lua_State *L) { return hs_at(L, 1); }
