@@ -287,28 +287,23 @@ PCL_BODY(l_calibrate, a) {
 }
 
 /* §4.3 the G1 joint of Bezier curves */
-#define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
 static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
                                   {.name = "g", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1, .shown = "1",
                                    .expect = "a positive number (the tangents keep their direction)"}, PCL_END};
 PCL_BODY(l_g1_next, a) {
     const pc_curve *c = a[0].obj;
-    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q0[PC_MAXDIM], q1[PC_MAXDIM];
-    int n = pc_bezier_points(c, p);
-    if (n < 0) return pcl_argfail(L, 1, NOT_POLY);
-    pcl_check(L, pc_bezier_g1_next(c->dim, n, p, (int)a[1].x, a[2].x, q0, q1), WHY);
+    double q0[PC_MAXDIM], q1[PC_MAXDIM];
+    pc_why_call why;
+    pcl_check(L, pc_bezier_g1_next_of(c, (int)a[1].x, a[2].x, q0, q1, &why), why.row);
     return pcl_push_results(L, c->dim, "p p", q0, q1);
 }
 
 static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
 PCL_BODY(l_joint, a) {
-    const pc_curve *P = a[0].obj, *Q = a[1].obj;
-    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], g;
-    int n = pc_bezier_points(P, p), m = pc_bezier_points(Q, q), kind;
-    if (n < 0 || m < 0) return pcl_argfail(L, n < 0 ? 1 : 2, NOT_POLY);
-    if (P->dim != Q->dim)
-        return pcl_fail(L, "argument #2 (Q) is %d-D, but argument #1 (P) is %d-D (mixed dimensions)", Q->dim, P->dim);
-    pcl_check(L, pc_bezier_joint(P->dim, n, p, m, q, &kind, &g), WHY);
+    double g;
+    int kind;
+    pc_why_call why;
+    pcl_check(L, pc_bezier_joint_of(a[0].obj, a[1].obj, &kind, &g, &why), why.row);
     lua_pushstring(L, pc_bezier_joint_name(kind));
     if (isnan(g)) lua_pushnil(L);
     else lua_pushnumber(L, g);

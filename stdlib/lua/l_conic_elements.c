@@ -114,8 +114,7 @@ PCL_BODY(l_elements, a) {
     pc_curve *c = pcl_tocurve(L, 1);
     if (c) return conic_of_curve(L, c);
     pc_conic_info o;
-    int st, has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
-    if (lua_istable(L, 1)) lua_pop(L, 1);
+    int st, has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;   /* left on the stack */
     if (has_points) {
         st = conditions(L, &o);
     } else if (lua_istable(L, 1)) {

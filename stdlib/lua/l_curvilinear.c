@@ -75,17 +75,12 @@ PCL_METHOD(oresme_call, oresme *o, a) {
 
 static int oresme_index(lua_State *L) {
     oresme *o = checkoresme(L, "o[j]");
-    if (lua_isinteger(L, 2)) {
-        lua_Integer j = lua_tointeger(L, 2);
-        if (j < 0 || j > (1L << o->m)) return 0;
-        lua_pushnumber(L, o->y[j]);
-        return 1;
-    }
-    const char *k = lua_tostring(L, 2);
-    if (!k) return 0;
-    if (!strcmp(k, "lambda")) lua_pushnumber(L, o->lambda);
-    else if (!strcmp(k, "m")) lua_pushinteger(L, o->m);
-    else if (!strcmp(k, "n")) lua_pushinteger(L, 1L << o->m);
+    int isint = lua_isinteger(L, 2);
+    lua_Integer j = isint ? lua_tointeger(L, 2) : -1;
+    const char *k = isint ? "" : lua_tostring(L, 2);
+    if (j >= 0 && j <= (1L << o->m)) lua_pushnumber(L, o->y[j]);
+    else if (k && !strcmp(k, "lambda")) lua_pushnumber(L, o->lambda);
+    else if (k && (!strcmp(k, "m") || !strcmp(k, "n"))) lua_pushinteger(L, *k == 'm' ? o->m : 1L << o->m);
     else return 0;
     return 1;
 }

@@ -177,13 +177,9 @@ static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference
                                          {.name = "samples", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE,
                                           .lo = 8, .hi = 4096, .dflt = 64}, PCL_END};
 PCL_BODY(l_deviation, a) {
-    pc_curve *m = a[0].obj, *r = a[1].obj;
-    if (m->dim != r->dim)
-        return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)",
-                        r->dim, m->dim);
     double d;
-    int st = pc_curve_hausdorff(m, r, (int)a[2].x, &d);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pc_why_call why;
+    pcl_check(L, pc_curve_hausdorff_checked(a[0].obj, a[1].obj, (int)a[2].x, &d, &why), why.row);
     return pcl_push_results(L, 0, "n", d);
 }
 

@@ -55,6 +55,10 @@ int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
  * 3..n, the x increasing, x within the samples. */
 int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);
 
+/* pc_curve_hausdorff of the model and the reference, their mixed dimensions explained in w
+ * (korotky.deviation; another status with an empty table). */
+int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int samples, double *d, pc_why_call *w);
+
 /* The failure st at u of a sweep's conic explained in w (ridge: korotky.ridge_shell's profile
  * arcs, else korotky.conic_sweep's conics; korotky.conic_revolve's are pc_conic_revolve_why's). */
 int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w);
