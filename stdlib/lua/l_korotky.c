@@ -78,18 +78,6 @@ PCL_BODY(l_poly_spline, a) {
 
 /* ---- Ferguson splines --------------------------------------------------------------------- */
 
-static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
-                                        A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
-PCL_BODY(l_ferguson, a) {
-    double T[2 * MAXPTS];
-    int n = a[0].n, st;
-    tangents(L, 2, &a[1], n, T);
-    need_count(L, &a[2], NULL, 3, 2 * n - 2);
-    pc_curve *c = pc_ferguson_curve(n, a[0].list, T, a[2].list, &st);
-    if (!c) return pcl_statuserror(L, pcl_name(L), st, "argument #2 (tangents)");
-    return pcl_pushcurve(L, c, "korotky.ferguson");
-}
-
 #define END_TANGENT(nm, at) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_tangent, \
                            .expect = TANGENT " (the tangent at the " at " point)"}
 #define A_LIST(nm, n) {.name = nm, .kind = PCL_NUMBERS, .hi = n, .shown = "{...}"}   /* an optional key */
@@ -107,6 +95,8 @@ PCL_BODY(l_ferguson_lambda, a) {
     return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
 }
 
+static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
+                                        A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
 static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"), A_LIST("start", 2 * MAXPTS),
                                         PCL_END};
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
@@ -115,12 +105,20 @@ static const char *const ROOTS[] = {"min", "max", NULL};
 static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"), A_POSNUM("z1"),
                                      {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS}, PCL_END};
 
-/* korotky.ferguson_tangents and korotky.ferguson_substitution, one body told apart by the
- * declared name: the moduli for the given tangents (the substitution's quadratics), the spline */
-PCL_BODY(l_ferguson_moduli, a) {
+/* korotky.ferguson, korotky.ferguson_tangents and korotky.ferguson_substitution, one body told
+ * apart by the declared name: the spline with a given tangent at every point, its moduli given
+ * or solved for (then pushed, with the substitution's quadratics) */
+PCL_BODY(l_ferguson, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
-    int n = a[0].n, subst = !strcmp(pcl_name(L), "korotky.ferguson_substitution"), bad = -1, st;
+    const char *name = pcl_name(L);
+    int n = a[0].n, subst = !strcmp(name, "korotky.ferguson_substitution"), bad = -1, st;
     tangents(L, 2, &a[1], n, T);
+    if (!strcmp(name, "korotky.ferguson")) {
+        need_count(L, &a[2], NULL, 3, 2 * n - 2);
+        pc_curve *c = pc_ferguson_curve(n, p, T, a[2].list, &st);
+        if (!c) return pcl_statuserror(L, name, st, "argument #2 (tangents)");
+        return pcl_pushcurve(L, c, "korotky.ferguson");
+    }
     if (subst) {
         mags[0] = a[2].x;
         mags[1] = a[3].x;
@@ -133,7 +131,7 @@ PCL_BODY(l_ferguson_moduli, a) {
         st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     }
     pc_why_call why;
-    pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
+    pcl_check(L, pc_ferguson_explain(name, st, bad, &why), why.row);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
     if (subst) pcl_push_rows(L, n - 2, 3, quad);
@@ -395,8 +393,8 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef", "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
     PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve", "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
     PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve", "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
-    PCL_FN("korotky.ferguson_tangents", l_ferguson_moduli, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
-    PCL_FN("korotky.ferguson_substitution", l_ferguson_moduli, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
+    PCL_FN("korotky.ferguson_tangents", l_ferguson, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
+    PCL_FN("korotky.ferguson_substitution", l_ferguson, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
     PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
