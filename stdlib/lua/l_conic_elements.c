@@ -56,8 +56,7 @@ static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)
 
 /* A tangent condition {P, V}: a 2-D point and a 2-D vector (the one weight rule) into
  * out->v[0..3]. */
-static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
     int ok = 1;
     for (int i = 0; i < 2; i++) {

@@ -181,19 +181,16 @@ PCL_BODY(l_deviation, a) {
     return pcl_push_results(L, 0, "n", d);
 }
 
+/* korotky.joint_jumps and korotky.energy, one body told apart by the declared name: the jumps
+ * at the joints (dk, da, the knot), or the bending energy (dk) */
 static const pcl_arg curve_arg[] = {A_CURVE("curve", 0), PCL_END};
-PCL_BODY(l_joint_jumps, a) {
+PCL_BODY(l_joints, a) {
     double dk, da;
-    int at, st = pc_curve_joint_jumps(a[0].obj, &dk, &da, &at);
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
-    return pcl_push_results(L, 0, "n n i", dk, da, at + 1);
-}
-
-PCL_BODY(l_energy, a) {
-    double E;
-    int st = pc_curve_bending_energy(a[0].obj, &E);
+    int at, jumps = !strcmp(pcl_name(L), "korotky.joint_jumps");
+    int st = jumps ? pc_curve_joint_jumps(a[0].obj, &dk, &da, &at) : pc_curve_bending_energy(a[0].obj, &dk);
+    if (st != PC_OK && jumps) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    return pcl_push_results(L, 0, "n", E);
+    return jumps ? pcl_push_results(L, 0, "n n i", dk, da, at + 1) : pcl_push_results(L, 0, "n", dk);
 }
 
 /* Graphical differentiation: the slope at x of a curve known by samples (2-D points, x
@@ -398,8 +395,8 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
-    PCL_FN("korotky.joint_jumps", l_joint_jumps, curve_arg, "dkappa, dangle, knot", "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump."),
-    PCL_FN("korotky.energy", l_energy, curve_arg, "number", "The bending energy, the integral of kappa^2 ds over the curve."),
+    PCL_FN("korotky.joint_jumps", l_joints, curve_arg, "dkappa, dangle, knot", "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump."),
+    PCL_FN("korotky.energy", l_joints, curve_arg, "number", "The bending energy, the integral of kappa^2 ds over the curve."),
     PCL_FN("korotky.conic_arc", l_conic_arc, arc_args, "curve, w, kind", "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\"."),
     PCL_FN("korotky.conic_sweep", l_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
     PCL_FN("korotky.dome_rect", l_dome_rect, rect_args, "s", "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses."),
