@@ -141,16 +141,14 @@ PCL_BODY(l_points, a) {
 
 /* ==== buimov.* =============================================================================== */
 
-/* The order k of a B-spline of m vertices: 2 .. min(m, the largest degree + 1). */
-static int order(lua_State *L, int m, double k) {
-    int hi = m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1;
-    if (k > hi) pcl_argfail(L, 2, "must be an integer from 2 to %d (at most the number of points), got %d", hi, (int)k);
-    return (int)k;
-}
-
+/* buimov.knots and buimov.bspline, one body told apart by the declared name: the book's knots
+ * of order k for m vertices, or the B-spline on them; k is 2 .. min(m, the largest degree + 1) */
 static const pcl_arg knots_args[] = {A_POINTS("points", 0, 2, 0), A_INT("k", 2, PC_CURVE_MAXDEG + 1), PCL_END};
 PCL_BODY(l_knots, a) {
-    int m = a[0].n, k = order(L, m, a[1].x);
+    int m = a[0].n, k = (int)a[1].x, hi = m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1, st;
+    if (k > hi) pcl_argfail(L, 2, "must be an integer from 2 to %d (at most the number of points), got %d", hi, k);
+    if (!strcmp(pcl_name(L), "buimov.bspline"))
+        return made(L, pc_curve_book_bspline(a[0].dim, m, a[0].list, k, &st), &st, "bspline");
     double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + k), 0);
     pc_book_knots(a[0].dim, m, a[0].list, k, q);
     lua_createtable(L, m + k, 0);
@@ -168,11 +166,6 @@ PCL_BODY(l_basis, a) {
     pc_why_call why;
     pcl_check(L, pc_book_basis_checked(a[3].list, a[3].n, (int)a[0].x, (int)a[1].x, a[2].x, &N, &why), why.row);
     return pcl_push_results(L, 0, "n", N);
-}
-
-PCL_BODY(l_bspline, a) {
-    int st, m = a[0].n;
-    return made(L, pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st), &st, "bspline");
 }
 
 static const pcl_arg bernstein_args[] = {A_INT("n", 0, 1000), A_INT("i", 0, 1000), A_NUM("t"), PCL_END};
@@ -328,7 +321,7 @@ static const pcl_fn plane[] = {
 static const pcl_fn book[] = {
     PCL_FN("buimov.knots", l_knots, knots_args, "knots", "The book's integer knot vector of order k (§4.4): n + k + 1 knots, a repeated knot for each multiple vertex."),
     PCL_FN("buimov.basis", l_basis, basis_args, "number", "The B-spline basis N_i,k(t) by the Cox-de Boor recursion (0/0 = 0, closed at t_max; i from 0 as in the book)."),
-    PCL_FN("buimov.bspline", l_bspline, knots_args, "curve", "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it."),
+    PCL_FN("buimov.bspline", l_knots, knots_args, "curve", "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it."),
     PCL_FN("buimov.bernstein", l_bernstein, bernstein_args, "number", "The Bernstein polynomial J_n,i(t) = C(n, i) t^i (1 - t)^(n - i) (§4.3)."),
     PCL_FN("buimov.blend", l_blend, t_arg, "F1, F2, F3, F4", "The Hermite blending functions of a normalised segment (§5.5)."),
     PCL_FN("buimov.hermite", l_hermite, hermite_args, "curve", "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default)."),

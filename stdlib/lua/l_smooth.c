@@ -64,29 +64,24 @@ static int eval_at(lua_State *L, const pc_hspline *h, double t, int k) {
     return push_value(L, t, pc_hspline_eval(h, t));
 }
 
-/* The half-spline (n, m, t0), then g(t) at argument #k when it is given, else g itself.
- * Degrees in the hundreds make t0^(n-1) underflow: the coefficients would be inf and NaN. */
-static int make(lua_State *L, double n, double m, double t0, const pcl_val *t, int k) {
+/* smooth.power and smooth.half, one body told apart by the declared name: the half-spline
+ * (n, m, t0) (power's (n, n, 1/2)), then g(t) when t is given, else g itself.  Degrees in the
+ * hundreds make t0^(n-1) underflow: the coefficients would be inf and NaN. */
+static const pcl_arg power_args[] = {A_POSNUM("n"), A_NUMOPT("t", 0, NULL), PCL_END};
+static const pcl_arg half_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_ANY("t0", open_unit, "a number in (0, 1)"),
+                                    A_NUMOPT("t", 0, NULL), PCL_END};
+PCL_BODY(l_half, a) {
+    int half = !strcmp(pcl_name(L), "smooth.half"), k = half ? 4 : 2;   /* t: argument #k */
+    double n = a[0].x, m = half ? a[1].x : n, t0 = half ? a[2].x : 0.5;
     pc_hspline h;
     char msg[200];
     if (pc_hspline_init(&h, n, m, t0) != PC_OK && pc_hspline_init_text(n, m, t0, msg, sizeof msg))
         return pcl_fail(L, "%s", msg);
-    if (t->present) return eval_at(L, &h, t->x, k);
+    if (a[k - 1].present) return eval_at(L, &h, a[k - 1].x, k);
     pc_hspline *g = lua_newuserdatauv(L, sizeof *g, 0);
     *g = h;
     luaL_setmetatable(L, HSPLINE_MT);
     return 1;
-}
-
-static const pcl_arg power_args[] = {A_POSNUM("n"), A_NUMOPT("t", 0, NULL), PCL_END};
-PCL_BODY(l_power, a) {
-    return make(L, a[0].x, a[0].x, 0.5, &a[1], 2);
-}
-
-static const pcl_arg half_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_ANY("t0", open_unit, "a number in (0, 1)"),
-                                    A_NUMOPT("t", 0, NULL), PCL_END};
-PCL_BODY(l_half, a) {
-    return make(L, a[0].x, a[1].x, a[2].x, &a[3], 4);
 }
 
 /* ---- the half-spline object ------------------------------------------------------------- */
@@ -131,7 +126,7 @@ static int hs_tostring(lua_State *L) {
 static const pcl_fn fns[] = {
     PCL_FN("smooth.sine", l_sine, t_arg, "number", "(1 - cos(pi t))/2, the smoothstep of examples 3 and 4."),
     PCL_FN("smooth.cubic", l_cubic, t_arg, "number", "3t^2 - 2t^3, the smoothstep of examples 5, 6 and 9."),
-    PCL_FN("smooth.power", l_power, power_args, "number | g", "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g."),
+    PCL_FN("smooth.power", l_half, power_args, "number | g", "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g."),
     PCL_FN("smooth.half", l_half, half_args, "number | g", "The asymmetric half-spline of example 8: c1 t^n before t0, 1 - c2 (1 - t)^m after, slope continuous; without t the object g (g(t), g:deriv(t), g.c1, g.c2, g.v)."),
     PCL_FN("smooth.locus", l_locus, locus_args, "number", "The junction ordinate v(t0) = m t0/(n - n t0 + m t0) of the half-spline (n, m, t0): the locus of example 8."),
     PCL_FN("smooth.clamp", l_clamp, t_arg, "number", "The clamped smoothstep of examples 20-22: 0 before 0, 2t^2 to 1/2, 1 - 2(1 - t)^2 to 1, then 1."),
