@@ -105,23 +105,21 @@ PCL_BODY(l_conic_coef, a) {
 
 static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"), A_NUMOPT("th0", 0, "0"),
                                        A_NUMOPT("th1", 0, NULL), PCL_END};
-PCL_BODY(l_ellipse, a) {
-    double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * M_PI;
-    int st;
-    return made(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), &st, "ellipse");
-}
-
 static const pcl_arg parabola_args[] = {A_POSNUM("p"), A_NUM("th0"), A_NUM("th1"), PCL_END};
-PCL_BODY(l_parabola, a) {
-    int st;
-    return made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
-}
-
 static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300),
                                          A_NUMIN("t1", -300, 300), PCL_END};
-PCL_BODY(l_hyperbola, a) {
+
+/* plane.ellipse, plane.parabola and plane.hyperbola, one body told apart by the declared name,
+ * whose last part is the curve's kind (the ellipse whole unless th1 is given) */
+PCL_BODY(l_conic_curve, a) {
+    const char *kind = pcl_name(L) + strlen("plane.");
     int st;
-    return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
+    pc_curve *c;
+    if (!strcmp(kind, "ellipse"))
+        c = pc_curve_ellipse(a[0].v, a[1].x, a[2].x, a[3].x, a[4].present ? a[4].x : a[3].x + 2 * M_PI, &st);
+    else if (!strcmp(kind, "parabola")) c = pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st);
+    else c = pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st);
+    return made(L, c, &st, kind);
 }
 
 static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, A_POSNUM("B"),
@@ -312,9 +310,9 @@ static const pcl_fn plane[] = {
     {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args, .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
     PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
     {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).", .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
-    PCL_FN("plane.ellipse", l_ellipse, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle."),
-    PCL_FN("plane.parabola", l_parabola, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
-    PCL_FN("plane.hyperbola", l_hyperbola, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside)."),
+    PCL_FN("plane.ellipse", l_conic_curve, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle."),
+    PCL_FN("plane.parabola", l_conic_curve, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
+    PCL_FN("plane.hyperbola", l_conic_curve, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside)."),
     PCL_FN("plane.points", l_points, points_args, "points", "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected)."),
     PCL_END};
 
