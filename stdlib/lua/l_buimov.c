@@ -132,8 +132,7 @@ PCL_BODY(l_points, a) {
     int n = (int)a[5].x;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
     pc_why_call why;
-    int st = pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why);
-    pcl_check(L, st, why.row);
+    pcl_check(L, pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why), why.row);
     return pcl_push_results(L, 2, "P", n + 1, xy);
 }
 

@@ -48,25 +48,19 @@ typedef struct {
     double y[];
 } oresme;
 
-/* The Oresme sequence of a method call (o(t), o[j], #o, tostring(o)); its block is exactly
- * the header and 2^m + 1 values, so one given the metatable by the debug library is refused. */
-static oresme *tooresme(lua_State *L, int idx) {
+/* The Oresme sequence at idx, or NULL (for a metamethod fn, o[j], #o, tostring(o), which Lua
+ * calls only on one: an error); its block is exactly the header and 2^m + 1 values, so one
+ * given the metatable by the debug library is refused. */
+static oresme *tooresme(lua_State *L, int idx, const char *fn) {
     oresme *o = luaL_testudata(L, idx, ORESME_MT);
-    if (!o) return NULL;
-    size_t len = lua_rawlen(L, idx);
+    size_t len = o ? lua_rawlen(L, idx) : 0;
     int ok = len >= sizeof *o && o->self == PCL_SELF_TAG(o, &ORESME_TAG) && o->m >= 0 &&
-             o->m <= PC_ORESME_MAXLEVEL &&
-             len == sizeof *o + sizeof(double) * (size_t)((1L << o->m) + 1);
-    return pcl_genuine(L, idx, o, ok, "Oresme sequence");
-}
-static void *self_oresme(lua_State *L, int idx) { return tooresme(L, idx); }
-
-/* The sequence of a metamethod (o[j], #o, tostring(o)), which Lua calls only on one. */
-static oresme *checkoresme(lua_State *L, const char *fn) {
-    oresme *o = tooresme(L, 1);
-    if (!o) pcl_error(L, "%s: not an Oresme sequence (oresme(lambda, m))", fn);
+             o->m <= PC_ORESME_MAXLEVEL && len == sizeof *o + sizeof(double) * (size_t)((1L << o->m) + 1);
+    o = pcl_genuine(L, idx, o, ok, "Oresme sequence");
+    if (!o && fn) pcl_error(L, "%s: not an Oresme sequence (oresme(lambda, m))", fn);
     return o;
 }
+static void *self_oresme(lua_State *L, int idx) { return tooresme(L, idx, NULL); }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 PCL_METHOD(oresme_call, oresme *o, a) {
@@ -74,7 +68,7 @@ PCL_METHOD(oresme_call, oresme *o, a) {
 }
 
 static int oresme_index(lua_State *L) {
-    oresme *o = checkoresme(L, "o[j]");
+    oresme *o = tooresme(L, 1, "o[j]");
     int isint = lua_isinteger(L, 2);
     lua_Integer j = isint ? lua_tointeger(L, 2) : -1;
     const char *k = isint ? "" : lua_tostring(L, 2);
@@ -86,11 +80,11 @@ static int oresme_index(lua_State *L) {
 }
 
 static int oresme_len(lua_State *L) {
-    return pcl_push_results(L, 0, "i", 1 << checkoresme(L, "#")->m);
+    return pcl_push_results(L, 0, "i", 1 << tooresme(L, 1, "#")->m);
 }
 
 static int oresme_tostring(lua_State *L) {
-    oresme *o = checkoresme(L, "tostring");
+    oresme *o = tooresme(L, 1, "tostring");
     lua_pushfstring(L, "oresme(%s, %d)", pcl_pushnum(L, o->lambda), o->m);
     return 1;
 }

@@ -162,8 +162,8 @@ static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN)
                                        PCL_END};
 PCL_BODY(l_elastic, a) {
     double E;
-    int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
-    double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
+    int n = a[0].n, pieces = (int)a[3].x, st;   /* absent: 0, as many as the points allow */
+    double len = a[4].x;                         /* absent: 0, the length is free */
     pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
     pc_why_call why;
     if (!c) pcl_check(L, pc_elastic_explain(st, n, pieces, len, &why), why.row);
