@@ -12,7 +12,6 @@
 #include "pcl_books.h"
 #include "buimov_why.h"
 
-#define PI 3.14159265358979323846
 #define WHY pc_buimov_why
 
 /* the curve a construction made (kind: its name), or its status explained by the why-table */
@@ -27,24 +26,23 @@ static int made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
 static void push_circle(lua_State *L, const pc_circle_eq *c) {
     int st;
     pcl_push_results(L, 2, "centre=p r=n d=n e=n f=n", c->c, c->r, c->d, c->e, c->f);
-    made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * PI, &st), &st, "circle");
+    made(L, pc_curve_ellipse(c->c, c->r, c->r, 0, 2 * M_PI, &st), &st, "circle");
     lua_setfield(L, -2, "curve");
 }
 
+/* plane.circle3 and plane.arc3, one body told apart by the declared name: the arc through A,
+ * B and C, alone or as the field arc of their circle */
 static const pcl_arg abc_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), PCL_END};
 PCL_BODY(l_circle3, a) {
     pc_circle_eq c;
-    pcl_check(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c), WHY);
-    push_circle(L, &c);
-    int st;
+    int st, circle = !strcmp(pcl_name(L), "plane.circle3");
+    if (circle) {
+        pcl_check(L, pc_circle3(a[0].v, a[1].v, a[2].v, &c), WHY);
+        push_circle(L, &c);
+    }
     made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
-    lua_setfield(L, -2, "arc");
+    if (circle) lua_setfield(L, -2, "arc");
     return 1;
-}
-
-PCL_BODY(l_arc3, a) {
-    int st;
-    return made(L, pc_curve_arc3(a[0].v, a[1].v, a[2].v, &st), &st, "arc");
 }
 
 static const pcl_arg circle2r_args[] = {A_POINT("A", 2), A_POINT("B", 2), A_POSNUM("r"), PCL_END};
@@ -107,23 +105,21 @@ PCL_BODY(l_conic_coef, a) {
 
 static const pcl_arg ellipse_args[] = {A_POINT("centre", 2), A_POSNUM("A"), A_POSNUM("B"), A_NUMOPT("th0", 0, "0"),
                                        A_NUMOPT("th1", 0, NULL), PCL_END};
-PCL_BODY(l_ellipse, a) {
-    double t0 = a[3].x, t1 = a[4].present ? a[4].x : t0 + 2 * PI;
-    int st;
-    return made(L, pc_curve_ellipse(a[0].v, a[1].x, a[2].x, t0, t1, &st), &st, "ellipse");
-}
-
 static const pcl_arg parabola_args[] = {A_POSNUM("p"), A_NUM("th0"), A_NUM("th1"), PCL_END};
-PCL_BODY(l_parabola, a) {
-    int st;
-    return made(L, pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st), &st, "parabola");
-}
-
 static const pcl_arg hyperbola_args[] = {A_POSNUM("A"), A_POSNUM("B"), A_NUMIN("t0", -300, 300),
                                          A_NUMIN("t1", -300, 300), PCL_END};
-PCL_BODY(l_hyperbola, a) {
+
+/* plane.ellipse, plane.parabola and plane.hyperbola, one body told apart by the declared name,
+ * whose last part is the curve's kind (the ellipse whole unless th1 is given) */
+PCL_BODY(l_conic_curve, a) {
+    const char *kind = pcl_name(L) + strlen("plane.");
     int st;
-    return made(L, pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "hyperbola");
+    pc_curve *c;
+    if (!strcmp(kind, "ellipse"))
+        c = pc_curve_ellipse(a[0].v, a[1].x, a[2].x, a[3].x, a[4].present ? a[4].x : a[3].x + 2 * M_PI, &st);
+    else if (!strcmp(kind, "parabola")) c = pc_curve_parabola(a[0].x, a[1].x, a[2].x, &st);
+    else c = pc_curve_hyperbola(a[0].x, a[1].x, a[2].x, a[3].x, &st);
+    return made(L, c, &st, kind);
 }
 
 static const pcl_arg points_keys[] = {{.name = "A", .kind = PCL_NUMBER, .flags = PCL_REQ | PCL_POS}, A_POSNUM("B"),
@@ -136,23 +132,20 @@ PCL_BODY(l_points, a) {
     int n = (int)a[5].x;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)(n + 1), 0);
     pc_why_call why;
-    int st = pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why);
-    pcl_check(L, st, why.row);
+    pcl_check(L, pc_conic_points_checked(a[0].n, a[6].n, a[2].x, a[3].present, a[3].x, a[4].x, n, xy, &why), why.row);
     return pcl_push_results(L, 2, "P", n + 1, xy);
 }
 
 /* ==== buimov.* =============================================================================== */
 
-/* The order k of a B-spline of m vertices: 2 .. min(m, the largest degree + 1). */
-static int order(lua_State *L, int m, double k) {
-    int hi = m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1;
-    if (k > hi) pcl_argfail(L, 2, "must be an integer from 2 to %d (at most the number of points), got %d", hi, (int)k);
-    return (int)k;
-}
-
+/* buimov.knots and buimov.bspline, one body told apart by the declared name: the book's knots
+ * of order k for m vertices, or the B-spline on them; k is 2 .. min(m, the largest degree + 1) */
 static const pcl_arg knots_args[] = {A_POINTS("points", 0, 2, 0), A_INT("k", 2, PC_CURVE_MAXDEG + 1), PCL_END};
 PCL_BODY(l_knots, a) {
-    int m = a[0].n, k = order(L, m, a[1].x);
+    int m = a[0].n, k = (int)a[1].x, hi = m < PC_CURVE_MAXDEG + 1 ? m : PC_CURVE_MAXDEG + 1, st;
+    if (k > hi) pcl_argfail(L, 2, "must be an integer from 2 to %d (at most the number of points), got %d", hi, k);
+    if (!strcmp(pcl_name(L), "buimov.bspline"))
+        return made(L, pc_curve_book_bspline(a[0].dim, m, a[0].list, k, &st), &st, "bspline");
     double *q = lua_newuserdatauv(L, sizeof(double) * (size_t)(m + k), 0);
     pc_book_knots(a[0].dim, m, a[0].list, k, q);
     lua_createtable(L, m + k, 0);
@@ -172,11 +165,6 @@ PCL_BODY(l_basis, a) {
     return pcl_push_results(L, 0, "n", N);
 }
 
-PCL_BODY(l_bspline, a) {
-    int st, m = a[0].n;
-    return made(L, pc_curve_book_bspline(a[0].dim, m, a[0].list, order(L, m, a[1].x), &st), &st, "bspline");
-}
-
 static const pcl_arg bernstein_args[] = {A_INT("n", 0, 1000), A_INT("i", 0, 1000), A_NUM("t"), PCL_END};
 PCL_BODY(l_bernstein, a) {
     return pcl_push_results(L, 0, "n", pc_bernstein((int)a[0].x, (int)a[1].x, a[2].x));
@@ -191,18 +179,16 @@ PCL_BODY(l_blend, a) {
 
 static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_SAMEVECTOR("D1"), A_SAMEVECTOR("D2"),
                                        A_POSOPT("t", 1), PCL_END};
+/* buimov.hermite and buimov.hermite_coeffs, one body told apart by the declared name: the
+ * segment, or its coefficients */
 PCL_BODY(l_hermite, a) {
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x};
+    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x}, B[4 * PC_MAXDIM];
     int d = a[0].n, st;
     pcl_point_rows(a, 2, d, p);
     pcl_point_rows(a + 2, 2, d, dv);
-    return made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
-}
-
-PCL_BODY(l_hermite_coeffs, a) {
-    double *p = a[0].v, *dv = a[2].v, B[4 * PC_MAXDIM];
-    int d = a[0].n;
-    pcl_check(L, pc_hermite_coeffs(d, p, a[1].v, dv, a[3].v, a[4].x, B), WHY);
+    if (!strcmp(pcl_name(L), "buimov.hermite"))
+        return made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
+    pcl_check(L, pc_hermite_coeffs(d, p, p + d, dv, dv + d, a[4].x, B), WHY);
     return pcl_push_results(L, d, "p v v v", B, B + d, B + 2 * d, B + 3 * d);
 }
 
@@ -234,8 +220,8 @@ PCL_BODY(l_helix, a) {
     return made(L, pc_curve_helix(a[0].x, a[1].x, a[2].x, a[3].x, &st), &st, "helix");
 }
 
-static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
-                                      A_NUMOPT("ph1", PI, "pi"), A_POINTOPT("C", 3), A_POSOPT("r", 1), PCL_END};
+static const pcl_arg sphere_args[] = {A_NUMOPT("th0", 0, "0"), A_NUMOPT("th1", 2 * M_PI, "2pi"), A_NUMOPT("ph0", 0, "0"),
+                                      A_NUMOPT("ph1", M_PI, "pi"), A_POINTOPT("C", 3), A_POSOPT("r", 1), PCL_END};
 PCL_BODY(l_sphere, a) {
     int st;   /* C absent: its cleared value, the origin */
     pc_surface *s = pc_surface_sphere(a[4].v, a[5].x, a[0].x, a[1].x, a[2].x, a[3].x, &st);
@@ -291,28 +277,23 @@ PCL_BODY(l_calibrate, a) {
 }
 
 /* §4.3 the G1 joint of Bezier curves */
-#define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
 static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG),
                                   {.name = "g", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1, .shown = "1",
                                    .expect = "a positive number (the tangents keep their direction)"}, PCL_END};
 PCL_BODY(l_g1_next, a) {
     const pc_curve *c = a[0].obj;
-    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q0[PC_MAXDIM], q1[PC_MAXDIM];
-    int n = pc_bezier_points(c, p);
-    if (n < 0) return pcl_argfail(L, 1, NOT_POLY);
-    pcl_check(L, pc_bezier_g1_next(c->dim, n, p, (int)a[1].x, a[2].x, q0, q1), WHY);
+    double q0[PC_MAXDIM], q1[PC_MAXDIM];
+    pc_why_call why;
+    pcl_check(L, pc_bezier_g1_next_of(c, (int)a[1].x, a[2].x, q0, q1, &why), why.row);
     return pcl_push_results(L, c->dim, "p p", q0, q1);
 }
 
 static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};
 PCL_BODY(l_joint, a) {
-    const pc_curve *P = a[0].obj, *Q = a[1].obj;
-    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], g;
-    int n = pc_bezier_points(P, p), m = pc_bezier_points(Q, q), kind;
-    if (n < 0 || m < 0) return pcl_argfail(L, n < 0 ? 1 : 2, NOT_POLY);
-    if (P->dim != Q->dim)
-        return pcl_fail(L, "argument #2 (Q) is %d-D, but argument #1 (P) is %d-D (mixed dimensions)", Q->dim, P->dim);
-    pcl_check(L, pc_bezier_joint(P->dim, n, p, m, q, &kind, &g), WHY);
+    double g;
+    int kind;
+    pc_why_call why;
+    pcl_check(L, pc_bezier_joint_of(a[0].obj, a[1].obj, &kind, &g, &why), why.row);
     lua_pushstring(L, pc_bezier_joint_name(kind));
     if (isnan(g)) lua_pushnil(L);
     else lua_pushnumber(L, g);
@@ -323,25 +304,25 @@ static const pcl_fn plane[] = {
     PCL_FN("plane.circle3", l_circle3, abc_args, "circle", "The circle through three points (§3.2): a table {centre =, r =, d =, e =, f =, curve =, arc =} with x^2 + y^2 + d x + e y + f = 0, the whole circle and the arc through the points."),
     PCL_FN("plane.circle2r", l_circle2r, circle2r_args, "circle1, circle2", "The two circles of radius r through A and B (§3.2): first the centre on the right of A -> B (the book's), then the left."),
     PCL_FN("plane.circle_slopes", l_circle_slopes, slopes_args, "circle [, circle2]", "The circle through A with slope m1 there and slope m2 at x = x_end (§3.2, Fig 3.1); each with finish (its end point) and arc (from A to it)."),
-    PCL_FN("plane.arc3", l_arc3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside)."),
+    PCL_FN("plane.arc3", l_circle3, abc_args, "curve", "The arc of the circle through A, B, C that passes through B, counter-clockwise; the parameter is the angle at the centre from +x (rational quadratic pieces inside)."),
     PCL_FN("plane.classify", l_classify, classify_args, "\"ellipse\"|\"parabola\"|\"hyperbola\", discriminant", "The kind of the conic a x^2 + b xy + c y^2 + d x + e y + f = 0 by b^2 - 4ac (§3.1)."),
     {.name = "plane.rotate_conic", .fn = l_rotate_conic, .args = rotate_args, .sig = "plane.rotate_conic({a, b, c, d, e, f}, alpha) -> coef", .help = "The coefficients after x' = x cos alpha - y sin alpha, y' = x sin alpha + y cos alpha (§3.3, b corrected to 2(c' - a') cos sin)."},
     PCL_FN("plane.conic_value", l_conic_value, value_args, "number", "The left-hand side a x^2 + b xy + c y^2 + d x + e y + f at the point X."),
     {.name = "plane.conic_coef", .fn = l_conic_coef, .args = coef_args, .help = "The general-form coefficients of an axis-parallel ellipse, hyperbola, or parabola (x - m)^2 = 4p(y - n) (§3.3-§3.5; f = m^2 + 4pn corrected).", .sig = "plane.conic_coef(\"ellipse\"|\"hyperbola\", centre, A, B) | plane.conic_coef(\"parabola\", vertex, p) -> coef"},
-    PCL_FN("plane.ellipse", l_ellipse, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle."),
-    PCL_FN("plane.parabola", l_parabola, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
-    PCL_FN("plane.hyperbola", l_hyperbola, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside)."),
+    PCL_FN("plane.ellipse", l_conic_curve, ellipse_args, "curve", "The ellipse centre + (A cos th, B sin th), the parameter th the book's angle exactly (rational quadratic pieces of at most 90 degrees inside, each evaluated at the piece parameter of th); A = B is a circle."),
+    PCL_FN("plane.parabola", l_conic_curve, parabola_args, "curve", "The parabola y^2 = 4px as (p th^2, 2p th) (§3.4; the book writes 2px), the book's parameter exactly."),
+    PCL_FN("plane.hyperbola", l_conic_curve, hyperbola_args, "curve", "The hyperbola branch (A ch t, B sh t) (§3.5), the parameter t the book's exactly (rational quadratic pieces inside)."),
     PCL_FN("plane.points", l_points, points_args, "points", "n + 1 points of a \"circle\", \"ellipse\", \"parabola\", \"hyperbola\" (sec/tan) or \"hyperbola_ch\" by the book's forms and incremental recurrences (§3.2-§3.5, corrected)."),
     PCL_END};
 
 static const pcl_fn book[] = {
     PCL_FN("buimov.knots", l_knots, knots_args, "knots", "The book's integer knot vector of order k (§4.4): n + k + 1 knots, a repeated knot for each multiple vertex."),
     PCL_FN("buimov.basis", l_basis, basis_args, "number", "The B-spline basis N_i,k(t) by the Cox-de Boor recursion (0/0 = 0, closed at t_max; i from 0 as in the book)."),
-    PCL_FN("buimov.bspline", l_bspline, knots_args, "curve", "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it."),
+    PCL_FN("buimov.bspline", l_knots, knots_args, "curve", "The B-spline of order k (degree k - 1) on the book's knots, over [0, t_max]; a repeated vertex pulls the curve to it."),
     PCL_FN("buimov.bernstein", l_bernstein, bernstein_args, "number", "The Bernstein polynomial J_n,i(t) = C(n, i) t^i (1 - t)^(n - i) (§4.3)."),
     PCL_FN("buimov.blend", l_blend, t_arg, "F1, F2, F3, F4", "The Hermite blending functions of a normalised segment (§5.5)."),
     PCL_FN("buimov.hermite", l_hermite, hermite_args, "curve", "The cubic segment from P1 to P2 with the derivatives D1, D2 over the book's parameter [0, t] (§4.2; t = 1 by default)."),
-    PCL_FN("buimov.hermite_coeffs", l_hermite_coeffs, hermite_args, "B1, B2, B3, B4", "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected)."),
+    PCL_FN("buimov.hermite_coeffs", l_hermite, hermite_args, "B1, B2, B3, B4", "The coefficients of P(t) = B1 + B2 t + B3 t^2 + B4 t^3 of that segment (§4.2, B4 corrected)."),
     PCL_FN("buimov.spline", l_spline, spline_args, "curve, tangents", "The C2 cubic spline by the book's tridiagonal system of the joints (§4.2); natural ends by default, clamped when d0 and d1 are given; the segments' parameter lengths uniform, by chords, or the user's lengths."),
     PCL_FN("buimov.helix", l_helix, helix_args, "curve", "The helix (a cos t, a sin t, b t) (§4.1)."),
     {.name = "buimov.sphere", .fn = l_sphere, .args = sphere_args, .sig = "buimov.sphere([th0, th1, ph0, ph1 [, C, r]]) -> s", .help = "The sphere patch C + r (cos th sin ph, sin th sin ph, cos ph) (§5.1, y corrected); u = th, v = ph; the whole unit sphere by default."},
@@ -354,11 +335,6 @@ static const pcl_fn book[] = {
     PCL_END};
 
 void pcl_open_buimov(lua_State *L) {
-    int module = lua_gettop(L);
-    lua_newtable(L);
-    pcl_register(L, -1, plane, 0);
-    lua_setfield(L, module, "plane");
-    lua_newtable(L);
-    pcl_register(L, -1, book, 0);
-    lua_setfield(L, module, "buimov");
+    pcl_new_table(L, -1, "plane", plane, NULL);
+    pcl_new_table(L, -1, "buimov", book, NULL);
 }

@@ -1,5 +1,6 @@
 /* Conics that know what they are (geom/quadratic.h) in Lua: c:conic(), conic.elements and
- * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements. */
+ * plane.conic_slope.  pcl_push_conic_info is shared with korotky.conic_elements, pcl_push_rows
+ * with the books and the maps (pcl_books.h). */
 #include "pcl_args.h"
 #include "pcl_books.h"
 #include "pcl_core.h"
@@ -28,6 +29,14 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     }
 }
 
+void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
+    lua_createtable(L, nr, 0);
+    for (int i = 0; i < nr; i++) {
+        pcl_push_numbers(L, nc, m + (size_t)i * nc);
+        lua_rawseti(L, -2, i + 1);
+    }
+}
+
 /* The elements o, or the message for the status st of pc_curve_conic / pc_conic_info_*. */
 static int push_elements(lua_State *L, int st, int dim, const pc_conic_info *o) {
     if (st == PC_EDIM)
@@ -47,8 +56,7 @@ static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)
 
 /* A tangent condition {P, V}: a 2-D point and a 2-D vector (the one weight rule) into
  * out->v[0..3]. */
-static int read_tangent(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx)) return 0;
     int ok = 1;
     for (int i = 0; i < 2; i++) {
@@ -105,8 +113,7 @@ PCL_BODY(l_elements, a) {
     pc_curve *c = pcl_tocurve(L, 1);
     if (c) return conic_of_curve(L, c);
     pc_conic_info o;
-    int st, has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;
-    if (lua_istable(L, 1)) lua_pop(L, 1);
+    int st, has_points = lua_istable(L, 1) && lua_getfield(L, 1, "points") != LUA_TNIL;   /* left on the stack */
     if (has_points) {
         st = conditions(L, &o);
     } else if (lua_istable(L, 1)) {
@@ -118,12 +125,10 @@ PCL_BODY(l_elements, a) {
     } else if (pcl_tovalue(L, 1)) {
         /* five points, each read by the one point rule */
         static const pcl_arg pts_arg[5] = {A_POINT("A", 2), A_POINT("B", 2), A_POINT("C", 2), A_POINT("D", 2), A_POINT("E", 2)};
+        pcl_val v[5] = {0};
         double pts[10];
-        for (int i = 0; i < 5; i++) {
-            pcl_val v = {0};
-            pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v);
-            memcpy(pts + 2 * i, v.v, sizeof(double) * 2);
-        }
+        for (int i = 0; i < 5; i++) pcl_readone(L, i + 1, i + 1, 0, &pts_arg[i], 2, &v[i]);
+        pcl_point_rows(v, 5, 2, pts);
         st = pc_conic_info_five(pts, &o);
     } else {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",

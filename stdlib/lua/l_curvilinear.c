@@ -2,6 +2,7 @@
  * numeric.h), and the numeric helpers of stdlib/lua/curvilinear.lua in _tk. */
 #include "pcl_args.h"
 #include "pcl_core.h"
+#include "pcl_tagged.h"
 #include "curvilinear.h"
 #include "numeric.h"
 
@@ -24,19 +25,16 @@ PCL_BODY(l_squash, a) {
 /* ---- projections: maps of the one map type (l_map.c) ------------------------------------------ */
 
 static const pcl_arg oblique_args[] = {A_POINT("C0", 2), A_NUM("r"), A_NUM("k"), A_NUM("u"), PCL_END};
-PCL_BODY(l_oblique, a) {
-    double c[8];
-    pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
-    pc_map_project4(pcl_newmap(L), c);
-    return 1;
-}
-
 static const pcl_arg projection_args[] = {A_SAMEPOINT("C0"), A_SAMEPOINT("C1"), A_SAMEPOINT("C2"),
                                           A_SAMEPOINT("C3"), PCL_END};
+
+/* oblique and projection, one body told apart by the declared name: the map by the screen
+ * points C0..C3 of its origin and axes (oblique's made from r, k and u) */
 PCL_BODY(l_projection, a) {
-    if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
     double c[8];
-    pcl_point_rows(a, 4, 2, c);
+    if (!strcmp(pcl_name(L), "oblique")) pc_oblique_axes(a[0].v, a[1].x, a[2].x, a[3].x, c);
+    else if (a[0].n != 2) return pcl_argfail(L, 1, "must be a 2-D point, got a %d-D one", a[0].n);
+    else pcl_point_rows(a, 4, 2, c);
     pc_map_project4(pcl_newmap(L), c);
     return 1;
 }
@@ -50,57 +48,43 @@ typedef struct {
     double y[];
 } oresme;
 
-/* The Oresme sequence of a method call (o(t), o[j], #o, tostring(o)); its block is exactly
- * the header and 2^m + 1 values, so one given the metatable by the debug library is refused. */
-static oresme *tooresme(lua_State *L, int idx) {
+/* The Oresme sequence at idx, or NULL (for a metamethod fn, o[j], #o, tostring(o), which Lua
+ * calls only on one: an error); its block is exactly the header and 2^m + 1 values, so one
+ * given the metatable by the debug library is refused. */
+static oresme *tooresme(lua_State *L, int idx, const char *fn) {
     oresme *o = luaL_testudata(L, idx, ORESME_MT);
-    if (!o) return NULL;
-    size_t len = lua_rawlen(L, idx);
+    size_t len = o ? lua_rawlen(L, idx) : 0;
     int ok = len >= sizeof *o && o->self == PCL_SELF_TAG(o, &ORESME_TAG) && o->m >= 0 &&
-             o->m <= PC_ORESME_MAXLEVEL &&
-             len == sizeof *o + sizeof(double) * (size_t)((1L << o->m) + 1);
-    return pcl_genuine(L, idx, o, ok, "Oresme sequence");
-}
-static void *self_oresme(lua_State *L, int idx) { return tooresme(L, idx); }
-
-/* The sequence of a metamethod (o[j], #o, tostring(o)), which Lua calls only on one. */
-static oresme *checkoresme(lua_State *L, const char *fn) {
-    oresme *o = tooresme(L, 1);
-    if (!o) pcl_error(L, "%s: not an Oresme sequence (oresme(lambda, m))", fn);
+             o->m <= PC_ORESME_MAXLEVEL && len == sizeof *o + sizeof(double) * (size_t)((1L << o->m) + 1);
+    o = pcl_genuine(L, idx, o, ok, "Oresme sequence");
+    if (!o && fn) pcl_error(L, "%s: not an Oresme sequence (oresme(lambda, m))", fn);
     return o;
 }
+static void *self_oresme(lua_State *L, int idx) { return tooresme(L, idx, NULL); }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 PCL_METHOD(oresme_call, oresme *o, a) {
-    lua_pushnumber(L, pc_oresme_at(o->y, o->m, a[0].x));
-    return 1;
+    return pcl_push_results(L, 0, "n", pc_oresme_at(o->y, o->m, a[0].x));
 }
 
 static int oresme_index(lua_State *L) {
-    oresme *o = checkoresme(L, "o[j]");
-    if (lua_isinteger(L, 2)) {
-        lua_Integer j = lua_tointeger(L, 2);
-        if (j < 0 || j > (1L << o->m)) return 0;
-        lua_pushnumber(L, o->y[j]);
-        return 1;
-    }
-    const char *k = lua_tostring(L, 2);
-    if (!k) return 0;
-    if (!strcmp(k, "lambda")) lua_pushnumber(L, o->lambda);
-    else if (!strcmp(k, "m")) lua_pushinteger(L, o->m);
-    else if (!strcmp(k, "n")) lua_pushinteger(L, 1L << o->m);
+    oresme *o = tooresme(L, 1, "o[j]");
+    int isint = lua_isinteger(L, 2);
+    lua_Integer j = isint ? lua_tointeger(L, 2) : -1;
+    const char *k = isint ? "" : lua_tostring(L, 2);
+    if (j >= 0 && j <= (1L << o->m)) lua_pushnumber(L, o->y[j]);
+    else if (k && !strcmp(k, "lambda")) lua_pushnumber(L, o->lambda);
+    else if (k && (!strcmp(k, "m") || !strcmp(k, "n"))) lua_pushinteger(L, *k == 'm' ? o->m : 1L << o->m);
     else return 0;
     return 1;
 }
 
 static int oresme_len(lua_State *L) {
-    oresme *o = checkoresme(L, "#");
-    lua_pushinteger(L, 1L << o->m);
-    return 1;
+    return pcl_push_results(L, 0, "i", 1 << tooresme(L, 1, "#")->m);
 }
 
 static int oresme_tostring(lua_State *L) {
-    oresme *o = checkoresme(L, "tostring");
+    oresme *o = tooresme(L, 1, "tostring");
     lua_pushfstring(L, "oresme(%s, %d)", pcl_pushnum(L, o->lambda), o->m);
     return 1;
 }
@@ -112,11 +96,9 @@ static const pcl_arg oresme_args[] = {
 PCL_BODY(l_oresme, a) {
     int m = (int)a[1].x;
     long n = 1L << m;
-    oresme *o = lua_newuserdatauv(L, sizeof *o + sizeof(double) * (size_t)(n + 1), 0);
-    o->self = PCL_SELF_TAG(o, &ORESME_TAG);
+    oresme *o = pcl_tagged_new(L, sizeof *o + sizeof(double) * (size_t)(n + 1), &ORESME_TAG, ORESME_MT);
     o->lambda = a[0].x;
     o->m = m;
-    luaL_setmetatable(L, ORESME_MT);
     int st = pc_oresme_fill(a[0].x, m, a[2].x, a[3].x, o->y);
     if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
     return 1;
@@ -195,7 +177,7 @@ PCL_BODY(l_frame, a) {
 static const pcl_fn fns[] = {
     PCL_FN("squash", l_squash, squash_args, "numbers", "The plane onto the open square: p/sqrt(p^2 + 1) in (-1, 1), for each argument (examples 26-28)."),
     PCL_FN("squash01", l_squash, squash_args, "numbers", "The plane onto the open unit square: .5 p/sqrt(p^2 + 1) + .5 in (0, 1), for each argument."),
-    PCL_FN("oblique", l_oblique, oblique_args, "map", "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up."),
+    PCL_FN("oblique", l_projection, oblique_args, "map", "The oblique projection of examples 32-34 (a 3-D -> 2-D map): the x and y axes of length r at angles u and u + 90 degrees on an ellipse squeezed by k, the z axis straight up."),
     PCL_FN("projection", l_projection, projection_args, "map", "The projection (x, y, z) -> C0 + x(C1 - C0) + y(C2 - C0) + z(C3 - C0) by four screen points, a 3-D -> 2-D map; pr(P), pr:xy(x, y, z), pr.C0."),
     {.name = "oresme", .fn = l_oresme, .args = oresme_args, .result = "o", .sig = "oresme(lambda [, m [, y0, y1]]) -> o", .help = "Oresme's lambda-function on 2^m cells (m = 12 by default) from y0 to y1 (example 31): o(t), o[j], #o."},
     PCL_FN("bisect", l_bisect, bisect_args, "x, iterations", "A root of f in [a, b] by bisection, as example 30 does it (tol 1e-10 by default)."),

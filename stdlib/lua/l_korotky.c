@@ -20,17 +20,15 @@
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
-    pcl_value *v = pcl_tovalue(L, idx);
     if (lua_type(L, idx) == LUA_TNUMBER && isfinite(lua_tonumber(L, idx))) {
         double d = atan(lua_tonumber(L, idx));
         t[0] = cos(d), t[1] = sin(d);
         return 1;
     }
-    if (!v || v->n != 2 || pc_kind_of(v->h[2]) != PC_KIND_VECTOR || !isfinite(v->h[0]) ||
-        !isfinite(v->h[1]))
-        return 0;
-    t[0] = v->h[0], t[1] = v->h[1];
-    return 1;
+    pcl_value *v = pcl_tovalue(L, idx);
+    int ok = v && v->n == 2 && pc_kind_of(v->h[2]) == PC_KIND_VECTOR && isfinite(v->h[0]) && isfinite(v->h[1]);
+    if (ok) t[0] = v->h[0], t[1] = v->h[1];
+    return ok;
 }
 static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     return tangent_at(L, idx, out->v);
@@ -58,12 +56,6 @@ static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, i
     }
 }
 
-/* A solver's failure at knot bad (0-based). */
-static int knot_error(lua_State *L, int st, int bad) {
-    if (bad >= 0) return pcl_fail(L, "%s at knot #%d", pc_ferguson_why(st), bad + 1);
-    return pcl_statuserror(L, pcl_name(L), st, NULL);
-}
-
 /* ---- polynomial spline -------------------------------------------------------------------- */
 
 static const char *const ENDS[] = {"natural", "clamped", NULL};
@@ -77,28 +69,14 @@ PCL_BODY(l_poly_spline, a) {
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
     pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
     pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
-    if (st == PC_EDOMAIN)
-        return pcl_argfail(L, 1, "[%d] must lie right of the point before (x must increase)", bad + 1);
-    if (!c) return knot_error(L, st, bad);
+    pc_why_call why;
+    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
     pcl_pushcurve(L, c, "korotky.poly_spline");
     pcl_push_rows(L, n - 1, 4, coef);
     return 2;
 }
 
 /* ---- Ferguson splines --------------------------------------------------------------------- */
-
-static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
-                                        A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
-PCL_BODY(l_ferguson, a) {
-    double T[2 * MAXPTS];
-    int n = a[0].n, st;
-    tangents(L, 2, &a[1], n, T);
-    need_count(L, &a[2], NULL, 3, 2 * n - 2);
-    pc_curve *c = pc_ferguson_curve(n, a[0].list, T, a[2].list, &st);
-    if (!c) return pcl_statuserror(L, pcl_name(L), st, "argument #2 (tangents)");
-    pcl_pushcurve(L, c, "korotky.ferguson");
-    return 1;
-}
 
 #define END_TANGENT(nm, at) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_tangent, \
                            .expect = TANGENT " (the tangent at the " at " point)"}
@@ -112,45 +90,52 @@ PCL_BODY(l_ferguson_lambda, a) {
     if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
     need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
     pc_curve *c = pc_ferguson_lambda_curve(n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, a[6].list, &bad, &st);
-    if (!c && st == PC_EZERO) return pcl_fail(L, "the end tangents must not be zero vectors");
-    if (!c && st == PC_EDOMAIN) return pcl_keyfail(L, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
-    if (!c) return knot_error(L, st, bad);
+    pc_why_call why;
+    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
     return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
 }
 
+static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
+                                        A_NUMBERS("moduli", 2, 2 * MAXPTS - 2), PCL_END};
 static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1, "1"), A_LIST("start", 2 * MAXPTS),
                                         PCL_END};
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
-PCL_BODY(l_ferguson_tangents, a) {
-    double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS];
-    int n = a[0].n;
-    tangents(L, 2, &a[1], n, T);
-    need_count(L, &a[5], "start", 0, 2 * n - 4);
-    mags[0] = a[3].x;
-    mags[2 * n - 3] = a[4].x;
-    if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
-    int bad = -1, st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
-    if (st != PC_OK) return knot_error(L, st, bad);
-    pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
-    return 1 + pcl_push_results(L, 0, "N", 2 * n - 2, mags);
-}
-
 static const char *const ROOTS[] = {"min", "max", NULL};
 static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"), A_POSNUM("z1"),
                                      {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS}, PCL_END};
-PCL_BODY(l_ferguson_substitution, a) {
+
+/* korotky.ferguson, korotky.ferguson_tangents and korotky.ferguson_substitution, one body told
+ * apart by the declared name: the spline with a given tangent at every point, its moduli given
+ * or solved for (then pushed, with the substitution's quadratics) */
+PCL_BODY(l_ferguson, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
-    int n = a[0].n;
+    const char *name = pcl_name(L);
+    int n = a[0].n, subst = !strcmp(name, "korotky.ferguson_substitution"), bad = -1, st;
     tangents(L, 2, &a[1], n, T);
-    mags[0] = a[2].x;
-    mags[1] = a[3].x;
-    int bad = -1, st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
-    if (st != PC_OK) return knot_error(L, st, bad);
+    if (!strcmp(name, "korotky.ferguson")) {
+        need_count(L, &a[2], NULL, 3, 2 * n - 2);
+        pc_curve *c = pc_ferguson_curve(n, p, T, a[2].list, &st);
+        if (!c) return pcl_statuserror(L, name, st, "argument #2 (tangents)");
+        return pcl_pushcurve(L, c, "korotky.ferguson");
+    }
+    if (subst) {
+        mags[0] = a[2].x;
+        mags[1] = a[3].x;
+        st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
+    } else {
+        need_count(L, &a[5], "start", 0, 2 * n - 4);
+        mags[0] = a[3].x;
+        mags[2 * n - 3] = a[4].x;
+        if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
+        st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
+    }
+    pc_why_call why;
+    pcl_check(L, pc_ferguson_explain(name, st, bad, &why), why.row);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
-    pcl_push_rows(L, n - 2, 3, quad);
-    return 3;
+    if (subst) pcl_push_rows(L, n - 2, 3, quad);
+    return 2 + subst;
 }
 
 /* ---- the elastic reference and the measures ------------------------------------------------ */
@@ -177,8 +162,8 @@ static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN)
                                        PCL_END};
 PCL_BODY(l_elastic, a) {
     double E;
-    int n = a[0].n, pieces = a[3].present ? (int)a[3].x : 0, st;   /* 0: as many as the points allow */
-    double len = a[4].present ? a[4].x : 0;                         /* 0: the length is free */
+    int n = a[0].n, pieces = (int)a[3].x, st;   /* absent: 0, as many as the points allow */
+    double len = a[4].x;                         /* absent: 0, the length is free */
     pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
     pc_why_call why;
     if (!c) pcl_check(L, pc_elastic_explain(st, n, pieces, len, &why), why.row);
@@ -190,29 +175,22 @@ static const pcl_arg deviation_args[] = {A_CURVE("model", 0), A_CURVE("reference
                                          {.name = "samples", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE,
                                           .lo = 8, .hi = 4096, .dflt = 64}, PCL_END};
 PCL_BODY(l_deviation, a) {
-    pc_curve *m = a[0].obj, *r = a[1].obj;
-    if (m->dim != r->dim)
-        return pcl_fail(L, "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)",
-                        r->dim, m->dim);
     double d;
-    int st = pc_curve_hausdorff(m, r, (int)a[2].x, &d);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pc_why_call why;
+    pcl_check(L, pc_curve_hausdorff_checked(a[0].obj, a[1].obj, (int)a[2].x, &d, &why), why.row);
     return pcl_push_results(L, 0, "n", d);
 }
 
+/* korotky.joint_jumps and korotky.energy, one body told apart by the declared name: the jumps
+ * at the joints (dk, da, the knot), or the bending energy (dk) */
 static const pcl_arg curve_arg[] = {A_CURVE("curve", 0), PCL_END};
-PCL_BODY(l_joint_jumps, a) {
+PCL_BODY(l_joints, a) {
     double dk, da;
-    int at, st = pc_curve_joint_jumps(a[0].obj, &dk, &da, &at);
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
-    return pcl_push_results(L, 0, "n n i", dk, da, at + 1);
-}
-
-PCL_BODY(l_energy, a) {
-    double E;
-    int st = pc_curve_bending_energy(a[0].obj, &E);
+    int at, jumps = !strcmp(pcl_name(L), "korotky.joint_jumps");
+    int st = jumps ? pc_curve_joint_jumps(a[0].obj, &dk, &da, &at) : pc_curve_bending_energy(a[0].obj, &dk);
+    if (st != PC_OK && jumps) return pcl_statuserror(L, pcl_name(L), st, "at a joint");
     if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
-    return pcl_push_results(L, 0, "n", E);
+    return jumps ? pcl_push_results(L, 0, "n n i", dk, da, at + 1) : pcl_push_results(L, 0, "n", dk);
 }
 
 /* Graphical differentiation: the slope at x of a curve known by samples (2-D points, x
@@ -246,14 +224,6 @@ static const pcl_arg sweep_keys[] = {REQ3("U", PCL_CURVE), REQ3("V", PCL_CURVE),
                                      REQ3("P", PCL_CURVE), REQ3("Q", PCL_CURVE), PCL_END};
 #define CALLTABLE(nm, k) {.name = nm, .kind = PCL_OPTIONS, .flags = PCL_CALLTABLE, .keys = k}   /* korotky.x{...} */
 static const pcl_arg sweep_args[] = {CALLTABLE("guides", sweep_keys), PCL_END};
-PCL_BODY(l_conic_sweep, a) {
-    int st;
-    double u = 0;
-    pc_why_call why;
-    pc_surface *s = pc_surface_conic_sweep(a[1].obj, a[2].obj, a[3].obj, a[4].obj, a[5].obj, &u, &st);
-    if (!s) pcl_check(L, pc_sweep_explain(0, st, u, &why), why.row);
-    return pcl_push_made_surface(L, s, &st, "korotky.conic_sweep");
-}
 
 static const pcl_arg rect_args[] = {A_POSNUM("a0"), A_POSNUM("b0"), A_POSNUM("c0"), A_POINTOPT("origin", 3), PCL_END};
 PCL_BODY(l_dome_rect, a) {
@@ -292,12 +262,12 @@ PCL_BODY(l_dome_tri, a) {
 /* ---- the shells of 2015 -------------------------------------------------------------------- */
 
 /* A guide of dimension a->dim: a curve (out->obj), or a fixed point or vector (out->v, the
- * weight snapped by the one rule) when a->lo is 1. */
+ * weight snapped by the one rule). */
 static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
     if (c) return c->dim == a->dim;
-    pcl_value *v = a->lo ? pcl_tovalue(L, idx) : NULL;
+    pcl_value *v = pcl_tovalue(L, idx);
     if (!v || v->n != a->dim) return 0;
     memcpy(out->v, v->h, sizeof(double) * (size_t)(a->dim + 1));
     return pcl_snap_weight(a->dim, out->v) != PC_KIND_WEIGHTED;
@@ -309,7 +279,7 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
     pc_pencil_point *g = (pc_pencil_point *)out->list;
-    static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4, .lo = 1};
+    static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4};
     for (int i = 0; i < 3; i++) {
         pcl_val v = {0};
         lua_geti(L, idx, i + 1);
@@ -334,8 +304,7 @@ static int l_two_pencils(lua_State *L) {
     pc_surface *s = pc_surface_two_pencils_checked(om, de, &st, &meet);
     if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
-    pcl_pushsurface(L, s, "korotky.two_pencils");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.two_pencils");
 }
 
 /* ---- the rotational sweep and the ridge shell ---------------------------------------------- */
@@ -348,27 +317,30 @@ PCL_BODY(l_conic_revolve, a) {
     pc_why_call why;
     pc_surface *s = pc_conic_revolve_explained(a[1].v, a[2].v, a[3].v, a[4].v, a[5].obj, &st, &why);
     if (!s) pcl_check(L, st, why.row);
-    pcl_pushsurface(L, s, "korotky.conic_revolve");
-    return 1;
+    return pcl_push_made_surface(L, s, &st, "korotky.conic_revolve");
 }
 
-#define GUIDE(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_guide, .dim = 3, .lo = 1, \
+#define GUIDE(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_REQ, .read = read_guide, .dim = 3, \
                    .expect = "a 3-D curve, point or vector"}
 static const pcl_arg ridge_keys[] = {GUIDE("U"), GUIDE("R"), GUIDE("V"), GUIDE("T1"), GUIDE("T2"), GUIDE("P"),
                                      GUIDE("H"), GUIDE("Q"), PCL_END};
 static const pcl_arg ridge_args[] = {CALLTABLE("guides", ridge_keys), PCL_END};
-PCL_BODY(l_ridge_shell, a) {
+
+/* korotky.conic_sweep and korotky.ridge_shell, one body told apart by the declared name: the
+ * surface of the conics the guides span (the sweep's five curves, the ridge shell's eight) */
+PCL_BODY(l_sweep, a) {
+    int ridge = !strcmp(pcl_name(L), "korotky.ridge_shell"), st;
     pc_pencil_point g[8];
-    for (int i = 0; i < 8; i++) {
+    for (int i = 0; i < (ridge ? 8 : 5); i++) {
         g[i].c = a[i + 1].obj;
         memcpy(g[i].h, a[i + 1].v, sizeof(double) * 4);
     }
-    int st;
     double u = 0;
     pc_why_call why;
-    pc_surface *s = pc_surface_ridge_shell_of(g, &u, &st);
-    if (!s) pcl_check(L, pc_sweep_explain(1, st, u, &why), why.row);
-    return pcl_push_made_surface(L, s, &st, "korotky.ridge_shell");
+    pc_surface *s = ridge ? pc_surface_ridge_shell_of(g, &u, &st)
+                          : pc_surface_conic_sweep(g[0].c, g[1].c, g[2].c, g[3].c, g[4].c, &u, &st);
+    if (!s) pcl_check(L, pc_sweep_explain(ridge, st, u, &why), why.row);
+    return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 
 /* ---- the conic's centre, axes and asymptotes ---------------------------------------------- */
@@ -418,26 +390,22 @@ static const pcl_fn fns[] = {
     PCL_FN("korotky.poly_spline", l_poly_spline, poly_args, "curve, coef", "The cubic spline y = S(x) through points with increasing x (eqs (1)-(9)); coef[i] = {a, b, c, d} of segment i, local origin x_i; the curve's parameter is x."),
     PCL_FN("korotky.ferguson", l_ferguson, ferguson_args, "curve", "The Ferguson spline (eq. (10) per segment, t in [0, 1]) with derivative moduli {w_A, z1, ..., w_E}, two per segment."),
     PCL_FN("korotky.ferguson_lambda", l_ferguson_lambda, lambda_args, "curve", "Ferguson spline with fixed ratios lambda at the interior knots (system (22), tridiagonal): curvature continuous at the joints."),
-    PCL_FN("korotky.ferguson_tangents", l_ferguson_tangents, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
-    PCL_FN("korotky.ferguson_substitution", l_ferguson_substitution, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
+    PCL_FN("korotky.ferguson_tangents", l_ferguson, tangents_args, "curve, moduli", "Ferguson spline with a given tangent at every knot: Newton's method on system (23) from the chord lengths (Example 3 gives (28))."),
+    PCL_FN("korotky.ferguson_substitution", l_ferguson, subst_args, "curve, moduli, quadratics", "The authors' sequential substitution (24)-(26) in closed form: one quadratic per knot; w_E is an output (Example 4 gives (29))."),
     PCL_FN("korotky.elastic", l_elastic, elastic_args, "curve, energy", "The elastic reference: the curve of least bending energy (integral of kappa^2 ds) through the points, free length unless length is given (a clamped ruler keeps its length), as a C2 cubic spline with pieces - 1 free nodes per span (curvature continuous at the pins, kappa = 0 at free ends); free ends unless ends are given."),
     PCL_FN("korotky.graphical_slope", l_graphical_slope, slope_args, "slope, degrees", "Graphical differentiation: the slope tg(delta) at x of a curve known by samples (2-D points, x increasing) from the parabola through the window (7) nearest samples, one-sided at the ends; and delta in degrees."),
     PCL_FN("korotky.deviation", l_deviation, deviation_args, "number", "The largest distance between two curves (two-sided Hausdorff distance)."),
-    PCL_FN("korotky.joint_jumps", l_joint_jumps, curve_arg, "dkappa, dangle, knot", "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump."),
-    PCL_FN("korotky.energy", l_energy, curve_arg, "number", "The bending energy, the integral of kappa^2 ds over the curve."),
+    PCL_FN("korotky.joint_jumps", l_joints, curve_arg, "dkappa, dangle, knot", "The largest curvature jump and tangent angle jump (radians) at the joints of a piecewise curve, and the knot of the largest curvature jump."),
+    PCL_FN("korotky.energy", l_joints, curve_arg, "number", "The bending energy, the integral of kappa^2 ds over the curve."),
     PCL_FN("korotky.conic_arc", l_conic_arc, arc_args, "curve, w, kind", "The conic arc from U to V through T tangent to tU at U and tV at V, as a rational quadratic Bezier curve; w its weight, kind \"ellipse\", \"parabola\", \"hyperbola\" or \"segment\"."),
-    PCL_FN("korotky.conic_sweep", l_conic_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
+    PCL_FN("korotky.conic_sweep", l_sweep, sweep_args, "s", "The surface swept by the conics through U(u), V(u), T(u) tangent to the lines U(u)P(u) and V(u)Q(u) (3-D curves, u in [0, 1])."),
     PCL_FN("korotky.dome_rect", l_dome_rect, rect_args, "s", "The elliptic dome over the rectangle 2 a0 x 2 b0 with height c0: an exact rational biquadratic patch whose iso-lines are semi-ellipses."),
     PCL_FN("korotky.dome_tri", l_dome_tri, tri_args, "s", "The triangular elliptic dome z^2 = 27 h^2 l1 l2 l3 over triangle ABC (height h over the centroid, or through the apex D) over (u, v) in [0, 1]^2 with the plan point A + (B - A) u(1 - v) + (C - A) uv: u-isolines are the ellipses parallel to BC."),
     PCL_FN("korotky.conic_elements", l_conic_elements, elements_args, "{kind, coef, center, axes, semi, foci, e, p, asymptotes, ...}", "The conic of a 2-D conic arc with any weights (or of a x^2 + b xy + c y^2 + d x + e y + f = 0): the table of c:conic(): kind, coefficients, centre (a parabola's vertex), unit principal axes (major or transverse first), semi-axes, foci, e, p, a hyperbola's unit asymptote directions, and for an arc mu, w and the engineering discriminant k."),
     PCL_FN("korotky.two_pencils", l_two_pencils, pencils_args, "s", "The 4-D key construction: S(u, v) is the meet of the 2-plane through omega's three points at u and delta's at v (each a 4-D curve or a fixed 4-D point; a vector is a point at infinity). Draw it through a 4-D -> 2-D map (map.matrix of 3 x 5)."),
     PCL_FN("korotky.conic_revolve", l_conic_revolve, revolve_args, "s", "A conic turned about AB: for each point T of the ridge (a 3-D curve) the arc from A to B through T tangent to the planes with normals nA at A and nB at B."),
-    PCL_FN("korotky.ridge_shell", l_ridge_shell, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
+    PCL_FN("korotky.ridge_shell", l_sweep, ridge_args, "s", "A shell whose profiles are two conic arcs, U to R through T1 and R to V through T2, tangent towards P at U, along H at the ridge R and towards Q at V (3-D curves, points or vectors): G1 along the ridge; v in [0, 2]."),
     PCL_FN("korotky.plane_meet", l_plane_meet, meet_args, "K", "The meet of the 2-plane through P1, P2, P3 and the one through Q1, Q2, Q3 in 4-space (B.4, the step of the key construction): one point in general, a vector when it is at infinity; a vector among the six is a point at infinity."),
     PCL_END};
 
-void pcl_open_korotky(lua_State *L) {
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    lua_setfield(L, -2, "korotky");
-}
+void pcl_open_korotky(lua_State *L) { pcl_new_table(L, -1, "korotky", fns, NULL); }

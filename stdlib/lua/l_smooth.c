@@ -2,6 +2,7 @@
  * of smooth.power(n) and smooth.half(n, m, t0) without t.  The curve builders accept these
  * objects, smooth.sine and smooth.cubic as smoothsteps they evaluate natively (pcl_tk.h). */
 #include "pcl_args.h"
+#include "pcl_core.h"
 #include "pcl_tk.h"
 #include "pcl_expr.h"   /* g(t) of an equation t builds an equation (l_expr.c) */
 
@@ -11,8 +12,7 @@
  * (smooth.cubic(1e308)) overflows, and no NaN or infinity is returned silently. */
 static int push_value(lua_State *L, double t, double g) {
     if (!isfinite(g)) return pcl_fail(L, "the value at t = %s is out of range (not finite)", pcl_pushnum(L, t));
-    lua_pushnumber(L, g);
-    return 1;
+    return pcl_push_results(L, 0, "n", g);
 }
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
@@ -26,9 +26,8 @@ static int numeric(lua_State *L, int kind) {
     pcl_val a[3] = {0};
     PCL_READ(L, a);
     if (kind < LOCUS) return push_value(L, a[0].x, pc_gfun_eval(&g, a[0].x));
-    if (kind == LOCUS) lua_pushnumber(L, pc_hspline_locus(a[0].x, a[1].x, a[2].x));
-    else lua_pushnumber(L, kind == CLAMP ? pc_smooth_clamp(a[0].x) : pc_smooth_clamp_qb(a[0].x, a[1].x));
-    return 1;
+    if (kind == LOCUS) return pcl_push_results(L, 0, "n", pc_hspline_locus(a[0].x, a[1].x, a[2].x));
+    return pcl_push_results(L, 0, "n", kind == CLAMP ? pc_smooth_clamp(a[0].x) : pc_smooth_clamp_qb(a[0].x, a[1].x));
 }
 static int l_sine(lua_State *L) { return numeric(L, PC_G_SINE); }
 static int l_cubic(lua_State *L) { return numeric(L, PC_G_CUBIC); }
@@ -65,29 +64,24 @@ static int eval_at(lua_State *L, const pc_hspline *h, double t, int k) {
     return push_value(L, t, pc_hspline_eval(h, t));
 }
 
-/* The half-spline (n, m, t0), then g(t) at argument #k when it is given, else g itself.
- * Degrees in the hundreds make t0^(n-1) underflow: the coefficients would be inf and NaN. */
-static int make(lua_State *L, double n, double m, double t0, const pcl_val *t, int k) {
+/* smooth.power and smooth.half, one body told apart by the declared name: the half-spline
+ * (n, m, t0) (power's (n, n, 1/2)), then g(t) when t is given, else g itself.  Degrees in the
+ * hundreds make t0^(n-1) underflow: the coefficients would be inf and NaN. */
+static const pcl_arg power_args[] = {A_POSNUM("n"), A_NUMOPT("t", 0, NULL), PCL_END};
+static const pcl_arg half_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_ANY("t0", open_unit, "a number in (0, 1)"),
+                                    A_NUMOPT("t", 0, NULL), PCL_END};
+PCL_BODY(l_half, a) {
+    int half = !strcmp(pcl_name(L), "smooth.half"), k = half ? 4 : 2;   /* t: argument #k */
+    double n = a[0].x, m = half ? a[1].x : n, t0 = half ? a[2].x : 0.5;
     pc_hspline h;
     char msg[200];
     if (pc_hspline_init(&h, n, m, t0) != PC_OK && pc_hspline_init_text(n, m, t0, msg, sizeof msg))
         return pcl_fail(L, "%s", msg);
-    if (t->present) return eval_at(L, &h, t->x, k);
+    if (a[k - 1].present) return eval_at(L, &h, a[k - 1].x, k);
     pc_hspline *g = lua_newuserdatauv(L, sizeof *g, 0);
     *g = h;
     luaL_setmetatable(L, HSPLINE_MT);
     return 1;
-}
-
-static const pcl_arg power_args[] = {A_POSNUM("n"), A_NUMOPT("t", 0, NULL), PCL_END};
-PCL_BODY(l_power, a) {
-    return make(L, a[0].x, a[0].x, 0.5, &a[1], 2);
-}
-
-static const pcl_arg half_args[] = {A_POSNUM("n"), A_POSNUM("m"), A_ANY("t0", open_unit, "a number in (0, 1)"),
-                                    A_NUMOPT("t", 0, NULL), PCL_END};
-PCL_BODY(l_half, a) {
-    return make(L, a[0].x, a[1].x, a[2].x, &a[3], 4);
 }
 
 /* ---- the half-spline object ------------------------------------------------------------- */
@@ -105,8 +99,7 @@ static int hs_at(lua_State *L, int deriv) {
     double d = pc_hspline_deriv(h, a[0].x);
     /* a degree below 1 has a vertical tangent at its end: t^n with n < 1 at t = 0 */
     if (!isfinite(d)) return pcl_fail(L, "the slope at t = %s is infinite (a degree below 1)", pcl_pushnum(L, a[0].x));
-    lua_pushnumber(L, d);
-    return 1;
+    return pcl_push_results(L, 0, "n", d);
 }
 static int hs_call(lua_State *L) { return hs_at(L, 0); }
 static int hs_deriv(lua_State *L) { return hs_at(L, 1); }
@@ -133,7 +126,7 @@ static int hs_tostring(lua_State *L) {
 static const pcl_fn fns[] = {
     PCL_FN("smooth.sine", l_sine, t_arg, "number", "(1 - cos(pi t))/2, the smoothstep of examples 3 and 4."),
     PCL_FN("smooth.cubic", l_cubic, t_arg, "number", "3t^2 - 2t^3, the smoothstep of examples 5, 6 and 9."),
-    PCL_FN("smooth.power", l_power, power_args, "number | g", "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g."),
+    PCL_FN("smooth.power", l_half, power_args, "number | g", "The symmetric power half-spline of degree n (example 7): 2^(n-1) t^n below 1/2, mirrored above; without t the half-spline g."),
     PCL_FN("smooth.half", l_half, half_args, "number | g", "The asymmetric half-spline of example 8: c1 t^n before t0, 1 - c2 (1 - t)^m after, slope continuous; without t the object g (g(t), g:deriv(t), g.c1, g.c2, g.v)."),
     PCL_FN("smooth.locus", l_locus, locus_args, "number", "The junction ordinate v(t0) = m t0/(n - n t0 + m t0) of the half-spline (n, m, t0): the locus of example 8."),
     PCL_FN("smooth.clamp", l_clamp, t_arg, "number", "The clamped smoothstep of examples 20-22: 0 before 0, 2t^2 to 1/2, 1 - 2(1 - t)^2 to 1, then 1."),
@@ -148,8 +141,6 @@ void pcl_open_smooth(lua_State *L) {
     int module = lua_gettop(L);
     static const luaL_Reg meta[] = {{"__tostring", hs_tostring}, {NULL, NULL}};
     pcl_open_type(L, HSPLINE_MT, meta, call, methods, hs_index);
-    lua_newtable(L);
-    pcl_register(L, -1, fns, 0);
-    lua_setfield(L, module, "smooth");
+    pcl_new_table(L, module, "smooth", fns, NULL);
     lua_settop(L, module);
 }

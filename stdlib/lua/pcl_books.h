@@ -8,7 +8,7 @@
  * center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva. */
 struct pc_conic_info;
 void pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
-/* Push a table of nr rows, each a list of nc numbers, from m row by row (pcl_books.c). */
+/* Push a table of nr rows, each a list of nc numbers, from m row by row (l_conic_elements.c). */
 void pcl_push_rows(lua_State *L, int nr, int nc, const double *m);
 
 /* Declarations they share: an optional number > 0 (default d); an optional point of dimension

@@ -17,6 +17,26 @@ const char *pc_bezier_joint_name(int kind) {
     return kind >= 0 && kind < 4 ? names[kind] : "none";
 }
 
+#define NOT_POLY "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or piecewise one"
+
+int pc_bezier_g1_next_of(const pc_curve *P, int m, double g, double *q0, double *q1, pc_why_call *w) {
+    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
+    int n = pc_bezier_points(P, p);
+    if (n < 0) return pc_why_call_set(w, "buimov.g1_next", PC_EARG, 1, NULL, NOT_POLY);
+    return pc_why_call_set(w, NULL, pc_bezier_g1_next(P->dim, n, p, m, g, q0, q1), 0, NULL, "");
+}
+
+int pc_bezier_joint_of(const pc_curve *P, const pc_curve *Q, int *kind, double *g, pc_why_call *w) {
+    const char *op = "buimov.joint";
+    double p[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM], q[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
+    int n = pc_bezier_points(P, p), m = pc_bezier_points(Q, q);
+    if (n < 0 || m < 0) return pc_why_call_set(w, op, PC_EARG, n < 0 ? 1 : 2, NULL, NOT_POLY);
+    if (P->dim != Q->dim)
+        return pc_why_call_set(w, op, PC_EDIM, 0, NULL,
+                               "argument #2 (Q) is %d-D, but argument #1 (P) is %d-D (mixed dimensions)", Q->dim, P->dim);
+    return pc_why_call_set(w, NULL, pc_bezier_joint(P->dim, n, p, m, q, kind, g), 0, NULL, "");
+}
+
 int pc_book_spline_check(int n, pc_book_ends *ends, int ends_given, int nd, int param_given, int nlen,
                          const double *len, pc_why_call *w) {
     const char *op = "buimov.spline";

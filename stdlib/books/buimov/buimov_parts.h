@@ -13,6 +13,11 @@
 int pc_bezier_points(const pc_curve *c, double *out);
 /* The name of a kind of joint of pc_bezier_joint: "none", "C0", "G1", "C1". */
 const char *pc_bezier_joint_name(int kind);
+/* pc_bezier_g1_next and pc_bezier_joint of the curves P (and Q), with their conditions
+ * explained in w (buimov.g1_next, buimov.joint): polynomial Bezier curves (pc_bezier_points)
+ * of one dimension; another status of the construction with an empty table. */
+int pc_bezier_g1_next_of(const pc_curve *P, int m, double g, double *q0, double *q1, pc_why_call *w);
+int pc_bezier_joint_of(const pc_curve *P, const pc_curve *Q, int *kind, double *g, pc_why_call *w);
 
 /* The names of the point generators' kinds and methods (pc_gen_kind, pc_gen_method) and of
  * pc_conic_coef's kinds, in order, NULL-ended: the choices of plane.points and plane.conic_coef. */

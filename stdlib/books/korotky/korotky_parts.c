@@ -3,6 +3,7 @@
 #include <string.h>
 #include "korotky_parts.h"
 #include "graphdiff.h"
+#include "elastic.h"
 #include "conic_surface.h"
 #include "names.h"
 
@@ -64,6 +65,17 @@ const char *pc_ferguson_why(int st) {
            : st == PC_EZERO       ? "the tangent is the zero vector"
            : st == PC_ECOINCIDENT ? "the point repeats the one before"
                                   : pc_strerror(st);
+}
+
+int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w) {
+    int poly = !strcmp(op, "korotky.poly_spline"), lambda = !strcmp(op, "korotky.ferguson_lambda");
+    if (poly && st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 1, NULL, "[%d] must lie right of the point before (x must increase)", bad + 1);
+    if (lambda && st == PC_EZERO) return pc_why_call_set(w, op, st, 0, NULL, "the end tangents must not be zero vectors");
+    if (lambda && st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 0, "lambda", "[%d] (at knot #%d) must be positive", bad, bad + 1);
+    if (bad >= 0) return pc_why_call_set(w, op, st, 0, NULL, "%s at knot #%d", pc_ferguson_why(st), bad + 1);
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
 }
 
 const char *pc_conic_arc_why(int st) {
@@ -142,6 +154,14 @@ int pc_graphical_slope_checked(int n, const double *xy, double x, int window, do
                                pc_num_text(xy[0], lo, sizeof lo), pc_num_text(xy[2 * n - 2], hi, sizeof hi),
                                pc_num_text(x, at, sizeof at));
     return pc_why_call_set(w, op, st, 1, NULL, "(%s)", pc_strerror(st));
+}
+
+int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int samples, double *d, pc_why_call *w) {
+    if (model->dim != ref->dim)
+        return pc_why_call_set(w, "korotky.deviation", PC_EDIM, 0, NULL,
+                               "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)",
+                               ref->dim, model->dim);
+    return pc_why_call_set(w, NULL, pc_curve_hausdorff(model, ref, samples, d), 0, NULL, "");
 }
 
 int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w) {

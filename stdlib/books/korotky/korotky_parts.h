@@ -35,6 +35,11 @@ const char *pc_ferguson_why(int st);
 const char *pc_conic_arc_why(int st);
 const char *pc_conic_revolve_why(int st);
 const char *pc_meet_planes4_why(int st, int pencil);
+/* The failure st of the polynomial spline or a Ferguson solver at knot bad (0-based; -1: at no
+ * knot) explained in w for the construction op (korotky.poly_spline: the x must increase;
+ * korotky.ferguson_lambda: the end tangents and the ratios lambda; the others: the knot); an
+ * empty table for a failure at no knot.  Returns st. */
+int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
 
 /* The elements of a 2-D conic arc c: one rational quadratic piece (pc_conic_info_rquad and its
  * statuses), or the two pieces of korotky.conic_arc with T = W: PC_ESAME_LINE when they are the
@@ -49,6 +54,10 @@ int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
 /* pc_graphical_slope with its conditions explained in w (korotky.graphical_slope): the window
  * 3..n, the x increasing, x within the samples. */
 int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);
+
+/* pc_curve_hausdorff of the model and the reference, their mixed dimensions explained in w
+ * (korotky.deviation; another status with an empty table). */
+int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int samples, double *d, pc_why_call *w);
 
 /* The failure st at u of a sweep's conic explained in w (ridge: korotky.ridge_shell's profile
  * arcs, else korotky.conic_sweep's conics; korotky.conic_revolve's are pc_conic_revolve_why's). */

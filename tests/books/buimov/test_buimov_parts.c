@@ -37,7 +37,40 @@ static void test_joint_name(void **state) {
     assert_string_equal(pc_bezier_joint_name(2), "G1");
 }
 
+/* the G1 joint of curves: polynomial Bezier curves of one dimension, else the condition explained */
+static void test_joint_of(void **state) {
+    (void)state;
+    const double pc[9] = {0, 0, 1, 1, 0, 1, 2, 0, 1}, qc[9] = {2, 0, 1, 3, 0, 1, 4, 0, 1};
+    const double rc[9] = {0, 0, 1, 2, 0, 2, 2, 0, 1}, sc[8] = {2, 0, 0, 1, 3, 0, 0, 1};
+    int st, kind;
+    pc_curve *P = pc_curve_bezier(2, 3, pc, &st), *Q = pc_curve_bezier(2, 3, qc, &st);
+    pc_curve *R = pc_curve_bezier(2, 3, rc, &st), *S = pc_curve_bezier(3, 2, sc, &st);
+    double g, q0[2], q1[2];
+    pc_why_call w;
+    /* Q0 = P2, 2 (P2 - P1) = g m (Q1 - Q0) with g = 1, m = 2: Q1 = P2 + (P2 - P1) */
+    assert_int_equal(pc_bezier_g1_next_of(P, 2, 1, q0, q1, &w), PC_OK);
+    assert_true(q0[0] == 2 && q0[1] == 0 && q1[0] == 3 && q1[1] == 0);
+    assert_null(pc_why_find(w.row, "buimov.g1_next", PC_OK));
+    assert_int_equal(pc_bezier_g1_next_of(R, 2, 1, q0, q1, &w), PC_EARG);
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "must be a polynomial Bezier curve (bezier{P0, ..., Pn}), not a rational or "
+                                       "piecewise one");
+    assert_int_equal(pc_bezier_joint_of(P, Q, &kind, &g, &w), PC_OK);
+    assert_string_equal(pc_bezier_joint_name(kind), "C1");
+    assert_true(fabs(g - 1) < 1e-12);
+    assert_int_equal(pc_bezier_joint_of(P, R, &kind, &g, &w), PC_EARG);
+    assert_int_equal(w.row[0].arg, 2);
+    assert_int_equal(pc_bezier_joint_of(P, S, &kind, &g, &w), PC_EDIM);
+    assert_string_equal(w.row[0].op, "buimov.joint");
+    assert_string_equal(w.row[0].text, "argument #2 (Q) is 3-D, but argument #1 (P) is 2-D (mixed dimensions)");
+    pc_curve_release(P);
+    pc_curve_release(Q);
+    pc_curve_release(R);
+    pc_curve_release(S);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_bezier_points), cmocka_unit_test(test_joint_name)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_bezier_points), cmocka_unit_test(test_joint_name),
+                                       cmocka_unit_test(test_joint_of)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

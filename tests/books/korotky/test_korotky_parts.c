@@ -167,12 +167,54 @@ static void test_explained(void **state) {
     assert_non_null(strstr(w.row[0].text, "[3] must lie right of the sample before"));
 }
 
+/* the splines' failures at a knot, as each construction words them */
+static void test_ferguson_explain(void **state) {
+    (void)state;
+    pc_why_call w;
+    assert_int_equal(pc_ferguson_explain("korotky.poly_spline", PC_EDOMAIN, 2, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "[3] must lie right of the point before (x must increase)");
+    pc_ferguson_explain("korotky.ferguson_lambda", PC_EZERO, -1, &w);
+    assert_int_equal(w.row[0].arg, 0);
+    assert_string_equal(w.row[0].text, "the end tangents must not be zero vectors");
+    pc_ferguson_explain("korotky.ferguson_lambda", PC_EDOMAIN, 1, &w);
+    assert_string_equal(w.row[0].key, "lambda");
+    assert_string_equal(w.row[0].text, "[1] (at knot #2) must be positive");
+    pc_ferguson_explain("korotky.ferguson_tangents", PC_EDOMAIN, 3, &w);
+    assert_string_equal(w.row[0].op, "korotky.ferguson_tangents");
+    assert_string_equal(w.row[0].text, "no positive derivative moduli at knot #4");
+    pc_ferguson_explain("korotky.ferguson_substitution", PC_ENOCONVERGE, 0, &w);
+    assert_string_equal(w.row[0].text, "Newton's method does not converge at knot #1");
+    assert_int_equal(pc_ferguson_explain("korotky.ferguson_tangents", PC_ESINGULAR, -1, &w), PC_ESINGULAR);
+    assert_null(pc_why_find(w.row, "korotky.ferguson_tangents", PC_ESINGULAR));
+}
+
+/* the deviation of two curves: two parallel segments 1 apart; mixed dimensions explained */
+static void test_hausdorff_checked(void **state) {
+    (void)state;
+    const double a[6] = {0, 0, 1, 4, 0, 1}, b[6] = {0, 1, 1, 4, 1, 1}, c[8] = {0, 0, 0, 1, 4, 0, 0, 1};
+    int st;
+    pc_curve *A = pc_curve_bezier(2, 2, a, &st), *B = pc_curve_bezier(2, 2, b, &st), *C = pc_curve_bezier(3, 2, c, &st);
+    double d = 0;
+    pc_why_call w;
+    assert_int_equal(pc_curve_hausdorff_checked(A, B, 16, &d, &w), PC_OK);
+    NEAR(d, 1, 1e-9);
+    assert_int_equal(pc_curve_hausdorff_checked(A, C, 16, &d, &w), PC_EDIM);
+    assert_string_equal(w.row[0].op, "korotky.deviation");
+    assert_string_equal(w.row[0].text,
+                        "argument #2 (reference) is 3-D, but argument #1 (model) is 2-D (mixed dimensions)");
+    pc_curve_release(A);
+    pc_curve_release(B);
+    pc_curve_release(C);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_poly_spline_points), cmocka_unit_test(test_ridge_shell_of),
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
         cmocka_unit_test(test_conic_info_arc), cmocka_unit_test(test_ferguson_lambda_curve),
-        cmocka_unit_test(test_explained),
+        cmocka_unit_test(test_explained), cmocka_unit_test(test_ferguson_explain),
+        cmocka_unit_test(test_hausdorff_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
