@@ -667,12 +667,6 @@ static const pcl_arg scheme_args[] = SPEC(scheme_keys);
 
 /* ==== konopatsky: chapter 1 (konop_ch1.h) ================================================== */
 
-PCL_BODY(k_area_k, a) {
-    double k;
-    CHECK(pc_k_area_k(a[0].x, a[1].x, a[2].x, &k));
-    return pcl_push_results(L, 0, "n", k);
-}
-
 PCL_BODY(k_area_theorem, a) {
     int n = a[0].n;
     double p[6 * PC_MAXDIM];
@@ -713,13 +707,6 @@ PCL_BODY(k_meet_line_plane, a) {
         return pcl_push_results(L, n, "v n", k, lam);
     CHECK(st);
     return pcl_push_results(L, n, "p n n n", k, lam, pq[0], pq[1]);
-}
-
-PCL_BODY(k_polar, a) {   /* also konopatsky.rotate(C, A, B, phi), declared without rho: rho = |CA| */
-    int n = a[0].n, rotate = pcl_nvalues(L) == 4;
-    double m[PC_MAXDIM], rho = rotate ? pc_dist(n, a[0].v, a[1].v) : a[3].x;
-    CHECK(pc_k_polar(n, a[0].v, a[1].v, a[2].v, rho, a[rotate ? 3 : 4].x, m));
-    return pcl_push_results(L, n, "p", m);
 }
 
 PCL_BODY(k_moving_simplex, a) {
@@ -827,30 +814,24 @@ static const pcl_fn approx_fns[] = {
     PCL_END};
 
 static const pcl_fn ch1_fns[] = {
-    PCL_FN("konopatsky.area_k", k_area_k, lambdas, "k", "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
+    PCL_FN("konopatsky.area_k", made, lambdas, "k", "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
     PCL_FN("konopatsky.area_theorem", k_area_theorem, six, "{k, lambda, a, b, c, collinear}", "(1.2) for B1 on A1A2, B2 on A2A3, B3 on A3A1, any dimension: the signed area ratio k, lambda_i = (AiA(i+1)Bi), the proof's a = (B1A1A2) = -1/(1 + l1), b, c; collinear is corollary 1 (k = 0, Menelaus l1 l2 l3 = -1). B3 = A3 gives k = ab (corollary 2), B1 = A1 and B3 = A3 give k = -b (corollary 3)."),
     PCL_FN("konopatsky.o_theorem", k_o_theorem, o_args, "product, ratios, B", "(1.4) The O-theorem: Bi = AiA(i+1) x D1D2 (B at infinity for a side parallel to d), ratios (AiA(i+1)Bi) and their product, (-1)^m with the closing factor (A_m A_1 B_m) the print omits."),
     {.name = "konopatsky.simplex_ratio", .fn = k_simplex_ratio, .args = rows_args, .result = "ratio", .sig = "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio", .help = "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected)."},
     PCL_FN("konopatsky.meet_line_plane", k_meet_line_plane, lp_args, "K, lambda, p, q", "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet."),
-    PCL_FN("konopatsky.polar", k_polar, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
-    PCL_FN("konopatsky.rotate", k_polar, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
+    PCL_FN("konopatsky.polar", scheme, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
+    PCL_FN("konopatsky.rotate", scheme, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
     PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface", "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
     PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...", "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
     PCL_END};
 
-/* The tables conic, oneratio, interp, approx and konopatsky, in the order :help lists them. */
+/* The tables conic, oneratio, interp, approx and konopatsky, in the order :help lists them;
+ * oneratio(A, B, C) is oneratio.simplex. */
 void pcl_open_konopatsky(lua_State *L) {
-    static const char *const names[] = {"conic", "oneratio", "interp", "approx", "konopatsky"};
-    const pcl_fn *const fns[] = {conic_fns, oneratio_fns, interp_fns, approx_fns, ch1_fns};
     int module = lua_gettop(L);
-    for (int i = 0; i < 5; i++) {
-        lua_newtable(L);
-        pcl_register(L, -1, fns[i], 0);
-        if (fns[i] == oneratio_fns) {   /* oneratio(A, B, C) is oneratio.simplex */
-            lua_newtable(L);
-            pcl_register(L, -1, oneratio_call, 0);
-            lua_setmetatable(L, -2);
-        }
-        lua_setfield(L, module, names[i]);
-    }
+    pcl_new_table(L, module, "conic", conic_fns, NULL);
+    pcl_new_table(L, module, "oneratio", oneratio_fns, oneratio_call);
+    pcl_new_table(L, module, "interp", interp_fns, NULL);
+    pcl_new_table(L, module, "approx", approx_fns, NULL);
+    pcl_new_table(L, module, "konopatsky", ch1_fns, NULL);
 }
