@@ -18,7 +18,6 @@
 #include "konop_triples.h"
 #include "konop_ch1.h"
 #include "konop_print.h"
-#include "pcl_curve.h"
 
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
@@ -61,15 +60,19 @@ static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_
     {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1,
      .expect = "1 or 2"}, PCL_END};
 
-/* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
- * declared points, then the numbers (from a[0] when there are no points). */
+/* A construction of pc_konop_make, pc_konop_number or pc_konop_list, the kind by the name it is
+ * called: the declared points, then the numbers (from a[0] when there are no points). */
 PCL_BODY(made, a) {
     pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
-    int np = pc_konop_npoints(kind), d = a[0].n, st;
-    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k;
+    int np = pc_konop_npoints(kind), d = a[0].n, st, n;
+    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k, u[64];
     for (int i = 0; i < 3 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].x;
     pcl_point_rows(a, np, d, p);
     if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
+    if (kind >= PC_KM_CONES_EXCLUDED) {
+        CHECK(pc_konop_list(kind, x, u, &n));
+        return pcl_push_results(L, 0, "N", n, u);
+    }
     CHECK(pc_konop_number(kind, d, p, x, &k));
     return pcl_push_results(L, 0, "n", k);
 }
@@ -162,9 +165,8 @@ PCL_BODY(c_redundant, a) {
 static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
 static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
 static const pcl_arg reparam_args[] = SPEC(reparam_keys);
-PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch */
-    if (a[5].n == 0) return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE, NULL, 0, NULL);
-    return kcurve_from(L, a, PC_KC_PARABOLA_SIGMA, &a[6].x, 1, NULL);
+PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch (the angle form has no branch: unread) */
+    return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE + a[5].n, &a[6].x, 1, NULL);
 }
 
 /* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
@@ -511,11 +513,6 @@ PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
 }
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
-PCL_BODY(a_chebyshev, a) {
-    double x[64];
-    CHECK(pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x));
-    return pcl_push_results(L, 0, "N", (int)a[0].x, x);
-}
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
     {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101,
@@ -564,13 +561,6 @@ PCL_BODY(l_smooth_scheme, a) {
     double *m = q + n * d;
     CHECK(pc_oneratio_smooth_chain(d, a[0].v, a[1].v, a[2].v, n, a[4].x, p, q, m));
     return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
-}
-
-PCL_BODY(l_cones_excluded, a) {
-    double u[5];
-    int n;
-    CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
-    return pcl_push_results(L, 0, "N", n, u);
 }
 
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
@@ -772,7 +762,7 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
     PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
     PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
-    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_FN("conic.cones_excluded", made, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
     PCL_END};
 
@@ -808,7 +798,7 @@ static const pcl_fn approx_fns[] = {
     PCL_FN("approx.curve", a_curve, curve_args, "curve", "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t."),
     SIG("approx.mse", a_mse, mse_args, "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge)."),
     SIG("approx.optimal_nodes", a_optimal_nodes, optimal_args, "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
-    PCL_FN("approx.chebyshev", a_chebyshev, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
+    PCL_FN("approx.chebyshev", made, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
     PCL_FN("approx.lagrange_mse", a_lagrange_mse, lmse_args, "mse", "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x."),
     PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
     PCL_END};

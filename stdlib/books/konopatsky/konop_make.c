@@ -8,6 +8,7 @@
 #include "konop_schemes.h"
 #include "konop_curves.h"
 #include "konop_ch1.h"
+#include "approx.h"
 #include "point.h"
 
 int pc_konop_npoints(pc_konop_kind kind) {
@@ -21,7 +22,9 @@ int pc_konop_npoints(pc_konop_kind kind) {
     case PC_KM_CEVA_K: return 4;
     case PC_KM_CEVA_TO_ED:
     case PC_KM_ED_TO_CEVA:
-    case PC_KM_AREA_K: return 0;
+    case PC_KM_AREA_K:
+    case PC_KM_CONES_EXCLUDED:
+    case PC_KM_CHEBYSHEV: return 0;
     default: return 3;
     }
 }
@@ -32,7 +35,8 @@ static const struct { const char *name; pc_konop_kind kind; } names[] = {
     {"oneratio.tetra", PC_KM_TETRA}, {"oneratio.bezier3", PC_KM_BEZIER3}, {"oneratio.smooth", PC_KM_SMOOTH},
     {"oneratio.desargues", PC_KM_DESARGUES}, {"conic.cones", PC_KM_CONES}, {"conic.triples", PC_KM_TRIPLES},
     {"oneratio.closed", PC_KM_CLOSED}, {"interp.conic", PC_KM_ED3}, {"conic.ceva_to_ed", PC_KM_CEVA_TO_ED},
-    {"conic.ed_to_ceva", PC_KM_ED_TO_CEVA}, {"konopatsky.area_k", PC_KM_AREA_K}};
+    {"conic.ed_to_ceva", PC_KM_ED_TO_CEVA}, {"konopatsky.area_k", PC_KM_AREA_K},
+    {"conic.cones_excluded", PC_KM_CONES_EXCLUDED}, {"approx.chebyshev", PC_KM_CHEBYSHEV}};
 
 int pc_konop_kind_of(const char *name) {
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
@@ -71,6 +75,16 @@ int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, const double
     case PC_KM_CEVA_TO_ED: return pc_ceva_to_ed(x[0], out);
     case PC_KM_ED_TO_CEVA: return pc_ed_to_ceva(x[0], out);
     case PC_KM_AREA_K: return pc_k_area_k(x[0], x[1], x[2], out);
+    default: return PC_EDOMAIN;
+    }
+}
+
+int pc_konop_list(pc_konop_kind kind, const double *x, double *out, int *n) {
+    switch (kind) {
+    case PC_KM_CONES_EXCLUDED: return pc_cones_excluded(x[0], x[1], out, n);
+    case PC_KM_CHEBYSHEV:
+        *n = (int)x[0];
+        return *n <= 64 ? pc_chebyshev_nodes(*n, x[1], x[2], out) : PC_EDOMAIN;
     default: return PC_EDOMAIN;
     }
 }

@@ -23,7 +23,9 @@ typedef enum {
     PC_KM_CEVA_K,      /* A1, A2, A3, K: Ceva's k (2.100) */
     PC_KM_CEVA_TO_ED,  /* no points; k: the engineering discriminant of Ceva's k (pc_ceva_to_ed) */
     PC_KM_ED_TO_CEVA,  /* no points; k: Ceva's k of the engineering discriminant (pc_ed_to_ceva) */
-    PC_KM_AREA_K       /* no points; l1, l2, l3: the area ratio k of (1.2) (pc_k_area_k) */
+    PC_KM_AREA_K,      /* no points; l1, l2, l3: the area ratio k of (1.2) (pc_k_area_k) */
+    PC_KM_CONES_EXCLUDED,   /* no points; fP, fQ: the u the cubic of two cones avoids (pc_cones_excluded) */
+    PC_KM_CHEBYSHEV    /* no points; N, a, b: the N Chebyshev nodes on [a, b] (pc_chebyshev_nodes) */
 } pc_konop_kind;
 
 /* How many points the construction takes. */
@@ -37,6 +39,9 @@ pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const do
 /* The number of a construction PC_KM_ED_K .. PC_KM_AREA_K of the points and the numbers x
  * into *out: the status of its own function (PC_EDOMAIN for another kind). */
 int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, const double *x, double *out);
+/* The list of a construction PC_KM_CONES_EXCLUDED .. PC_KM_CHEBYSHEV of the numbers x into out
+ * (at most 64), their count in *n: the status of its own function (PC_EDOMAIN for another kind). */
+int pc_konop_list(pc_konop_kind kind, const double *x, double *out, int *n);
 
 /* The schemes whose points figures label, by kind: pc_konop_scheme fills out with the points
  * in order, then the numbers (rows of dim + 1 homogeneous where a point may be at infinity,

@@ -10,6 +10,7 @@
 #include "oneratio.h"
 #include "konop_schemes.h"
 #include "konop_curves.h"
+#include "approx.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -102,6 +103,22 @@ static void test_numbers(void **state) {
     NEAR(k, 0.25, 1e-15);
     assert_int_equal(pc_konop_number(PC_KM_AREA_K, 0, NULL, (double[]){-1, 1, 1}, &k), PC_EPOLE);
     assert_int_equal(pc_konop_npoints(PC_KM_AREA_K), 0);
+    /* the lists: fP = fQ = 1/4 avoids (1 +- sqrt 2)/2 of (2.151); 3 Chebyshev nodes on [-1, 1] */
+    double u[64], uref[64];
+    int n, nref;
+    assert_int_equal(pc_konop_list(PC_KM_CONES_EXCLUDED, (double[]){0.25, 0.25}, u, &n), PC_OK);
+    assert_int_equal(pc_cones_excluded(0.25, 0.25, uref, &nref), PC_OK);
+    assert_int_equal(n, nref);
+    for (int i = 0; i < n; i++) NEAR(u[i], uref[i], 0);
+    NEAR(u[0], (1 - sqrt(2)) / 2, 1e-15);
+    assert_int_equal(pc_konop_list(PC_KM_CHEBYSHEV, (double[]){3, -1, 1}, u, &n), PC_OK);
+    assert_int_equal(n, 3);
+    NEAR(u[0], -sqrt(3) / 2, 1e-15);
+    NEAR(u[1], 0, 1e-15);
+    NEAR(u[2], sqrt(3) / 2, 1e-15);
+    assert_int_equal(pc_konop_list(PC_KM_CHEBYSHEV, (double[]){3, 1, 1}, u, &n), PC_EDOMAIN);
+    assert_int_equal(pc_konop_list(PC_KM_AREA_K, (double[]){1, 1, 1}, u, &n), PC_EDOMAIN);
+    assert_int_equal(pc_konop_kind_of("approx.chebyshev"), PC_KM_CHEBYSHEV);
 }
 
 /* the schemes by kind: their own functions' points, packed in order */
