@@ -578,14 +578,14 @@ static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("
 
 /* ==== the symbolic method of §2.2 (konop_triples.h): conic.scheme{...} ====================== */
 
-/* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
+/* the three point names of the list at the stack top (popped) into idx, added to t; 0 if it is
  * no such list */
-static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
-    int t = lua_gettop(L), ok = lua_istable(L, t) && lua_rawlen(L, t) == 3;
+static int names3(lua_State *L, pc_triples_table *t, int *idx) {
+    int top = lua_gettop(L), ok = lua_istable(L, top) && lua_rawlen(L, top) == 3;
     for (int k = 0; ok && k < 3; k++) {
-        ok = lua_geti(L, t, k + 1) == LUA_TSTRING;
-        idx[k] = ok ? pc_triples_name(nm, lua_tostring(L, -1)) : 0;   /* the name stays alive in the table */
-        if (idx[k] < 0) pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        ok = lua_geti(L, top, k + 1) == LUA_TSTRING;   /* the name stays alive in the table */
+        if (ok && pc_triples_index(t, lua_tostring(L, -1), &idx[k]) != PC_OK)
+            pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
         lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -593,10 +593,7 @@ static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
 }
 
 PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, range */
-    pc_triples_names nm = {0};
-    int tri[PC_TRIPLES_MAXTRI][3], cur[3], dim = 0;
-    unsigned char known[PC_TRIPLES_MAXPTS] = {0};
-    double pts[PC_TRIPLES_MAXPTS * PC_MAXDIM];
+    pc_triples_table t = {0};
     /* the known points first: their names are the keys of points */
     lua_getfield(L, 1, "points");
     int ip = lua_gettop(L);
@@ -605,42 +602,35 @@ PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, r
         if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
         const char *s = lua_tostring(L, -2);
         pcl_value *v = pcl_tovalue(L, -1);
-        double h[PC_MAXDIM + 1];
-        if (v) memcpy(h, v->h, sizeof(double) * (size_t)(v->n + 1));
-        /* the one weight rule: within 1e-9 of 1 is a point (pcl_snap_weight) */
-        if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
+        int st = pc_triples_give(&t, s, v ? v->n : 0, v ? v->h : NULL);
+        if (st == PC_EDIM)   /* the one weight rule: within 1e-9 of 1 is a point (pc_snap_weight) */
             return pcl_fail(L, "points.%s must be a %s point", s,
-                            dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
-        dim = v->n;
-        int i = pc_triples_name(&nm, s);
-        if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
-        known[i] = 1;
-        memcpy(pts + i * dim, h, sizeof(double) * (size_t)dim);
+                            t.dim ? (t.dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
+        if (st != PC_OK) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
         lua_pop(L, 1);
     }
-    if (!dim) return pcl_fail(L, "field points is empty");
+    if (!t.dim) return pcl_fail(L, "field points is empty");
     lua_getfield(L, 1, "triples");
     int it = lua_gettop(L), ntri = (int)lua_rawlen(L, it);
     if (ntri < 1 || ntri > PC_TRIPLES_MAXTRI) return pcl_fail(L, "1 to %d triples, got %d", PC_TRIPLES_MAXTRI, ntri);
     for (int j = 0; j < ntri; j++) {
         lua_geti(L, it, j + 1);
-        if (!names3(L, &nm, tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
+        if (!names3(L, &t, t.tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
     }
     lua_getfield(L, 1, "current");
-    if (!names3(L, &nm, cur))
+    if (!names3(L, &t, t.cur))
         return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
-    int res = pc_triples_name(&nm, a[4].s);
     pc_triples_plan plan;
-    int st = pc_triples_plan_make(nm.n, ntri, (const int (*)[3])tri, known, cur[0], cur[1], cur[2], res, &plan);
+    int st = pc_triples_table_plan(&t, ntri, a[4].s, &plan);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
     CHECK(st);
     double t0 = a[5].present ? a[5].list[0] : 0, t1 = a[5].present ? a[5].list[1] : 1;
-    pcl_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, pc_konop_why);
+    pcl_made(L, pc_triples_curve(&plan, t.dim, t.pts, t0, t1, &st), &st, pc_konop_why);
     lua_createtable(L, plan.nsteps, 0);
     for (int s = 0; s < plan.nsteps; s++) {
         char text[4 * 64];
-        pc_triples_step_text(&plan, s, &nm, text, sizeof text);
+        pc_triples_step_text(&plan, s, &t.nm, text, sizeof text);
         lua_pushstring(L, text);
         lua_rawseti(L, -2, s + 1);
     }
