@@ -361,14 +361,10 @@ PCL_BODY(i_arc, a) {
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
                                         {.name = "axis", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1}, PCL_END};
 PCL_BODY(i_adaptive, a) {
-    int n = a[0].n, d = a[0].dim, axis = (int)a[1].x;
-    if (axis < 1 || axis > d) return pcl_argfail(L, 2, "must be an axis number 1..%d, got %d", d, axis);
     double v[MAXNODES];
-    char why[200];
-    int st = pc_interp_adaptive_params(d, n, a[0].list, axis - 1, v);
-    if (pc_interp_adaptive_why(st, axis - 1, why, sizeof why)) return pcl_fail(L, "%s", why);
-    CHECK(st);
-    return pcl_push_results(L, 0, "N", n, v);
+    pc_why_call why;
+    pcl_check(L, pc_interp_adaptive(a[0].dim, a[0].n, a[0].list, (int)a[1].x, v, &why), why.row);
+    return pcl_push_results(L, 0, "N", a[0].n, v);
 }
 
 static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};   /* pc_proto_kind */
