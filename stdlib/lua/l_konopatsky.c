@@ -95,6 +95,45 @@ static int kcurve_from(lua_State *L, const pcl_val *a, int form, const double *p
     return pcl_made(L, c, &st, why.row);
 }
 
+static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
+static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
+static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
+static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
+static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
+static const pcl_arg reparam_args[] = SPEC(reparam_keys);
+
+/* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
+static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
+    if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
+    out->v[0] = g;
+    for (int i = 1; i <= g; i++) {
+        int t = list ? lua_geti(L, idx, i) : lua_type(L, idx);
+        out->v[i] = t == LUA_TNUMBER ? lua_tonumber(L, list ? -1 : idx) : NAN;
+        lua_pop(L, list);   /* the element, when k is a list */
+        if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
+    }
+    return 1;
+}
+static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ,
+    .read = read_waves, .shown = "{m, n, ...}",
+    .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
+static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
+static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"},
+                                       PCL_END};
+static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
+
+/* conic.hyperbola, .reparam, .sinusoid and .cycloid: the table's first form (pc_konop_form_base)
+ * offset by 'by' (a[5], where the table has it), the parameter its last key (branch, k, concave;
+ * reparam's angle form leaves the branch unread) */
+PCL_BODY(c_form, a) {   /* spec; C, A, B, range, [by,] branch | k | concave */
+    int form = pc_konop_form_base(pcl_name(L)), last = pcl_nvalues(L) - 1;
+    const pcl_val *p = &a[last];
+    if (form == PC_KC_SINUSOID) return kcurve_from(L, a, form, p->v, (int)p->v[0] + 1, NULL);
+    return kcurve_from(L, a, form + (last == 6 ? a[5].n : 0), &p->x, 1, NULL);
+}
+
 /* by: the forms PC_KC_ELLIPSE_ANGLE .. PC_KC_ELLIPSE_ALGEBRAIC in order, then two of conic.h */
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
@@ -107,13 +146,6 @@ PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     double lambda = a[8].present ? a[8].x : NAN;
     return kcurve_from(L, a, by < 5 ? PC_KC_ELLIPSE_ANGLE + by : PC_KF_CONJUGATE + by - 5, by == 6 ? &lambda : &a[6].x,
                        1, &a[7]);
-}
-
-static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
-static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
-static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
-PCL_BODY(c_hyperbola, a) {   /* spec; C, A, B, range, by, branch */
-    return kcurve_from(L, a, PC_KC_HYPERBOLA_ANGLE + a[5].n, &a[6].x, 1, NULL);
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
@@ -160,42 +192,6 @@ PCL_BODY(c_redundant, a) {
     double K[PC_MAXDIM];
     CHECK(pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K));
     return pcl_push_results(L, d, "p", K);
-}
-
-static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
-static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
-static const pcl_arg reparam_args[] = SPEC(reparam_keys);
-PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch (the angle form has no branch: unread) */
-    return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE + a[5].n, &a[6].x, 1, NULL);
-}
-
-/* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
-static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
-    if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
-    out->v[0] = g;
-    for (int i = 1; i <= g; i++) {
-        int t = list ? lua_geti(L, idx, i) : lua_type(L, idx);
-        out->v[i] = t == LUA_TNUMBER ? lua_tonumber(L, list ? -1 : idx) : NAN;
-        lua_pop(L, list);   /* the element, when k is a list */
-        if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
-    }
-    return 1;
-}
-static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ,
-    .read = read_waves, .shown = "{m, n, ...}",
-    .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
-static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
-PCL_BODY(c_sinusoid, a) {   /* spec; C, A, B, range, k */
-    return kcurve_from(L, a, PC_KC_SINUSOID, a[5].v, (int)a[5].v[0] + 1, NULL);
-}
-
-static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"},
-                                       PCL_END};
-static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
-PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
-    return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1, NULL);
 }
 
 #define OF_T "a function of t"
@@ -731,16 +727,16 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ed_to_ceva", made, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
     SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
     SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
-    SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
+    SIG("conic.hyperbola", c_form, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
     SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
     PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
     PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
     SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
     PCL_FN("conic.triples", made, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
     SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
-    SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
-    SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
-    SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
+    SIG("conic.reparam", c_form, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
+    SIG("conic.sinusoid", c_form, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
+    SIG("conic.cycloid", c_form, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
     PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
     SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
     PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
