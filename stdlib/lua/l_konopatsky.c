@@ -659,14 +659,11 @@ PCL_BODY(k_o_theorem, a) {
 }
 
 PCL_BODY(k_simplex_ratio, a) {
-    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
+    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)], r;
     int d, cols;
+    pc_why_call why;
     pcl_read_rows(L, 1, 0, m, &d, &cols);
-    if (d != cols || d < 2 || d > 9)
-        return pcl_argfail(L, 1, "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", d,
-                           cols);
-    double r;
-    CHECK(pc_k_simplex_ratio(d - 1, m, &r));
+    pcl_check(L, pc_k_simplex_ratio_rows(d, cols, m, &r, &why), why.row);
     return pcl_push_results(L, 0, "n", r);
 }
 
