@@ -125,13 +125,13 @@ static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .ki
 static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
 
 /* conic.hyperbola, .reparam, .sinusoid and .cycloid: the table's first form (pc_konop_form_base)
- * offset by 'by' (a[5], where the table has it), the parameter its last key (branch, k, concave;
- * reparam's angle form leaves the branch unread) */
+ * offset by 'by' (a[5], an enum where the table has it), the parameter its last key (branch, k,
+ * concave; reparam's angle form leaves the branch unread) */
 PCL_BODY(c_form, a) {   /* spec; C, A, B, range, [by,] branch | k | concave */
     int form = pc_konop_form_base(pcl_name(L)), last = pcl_nvalues(L) - 1;
     const pcl_val *p = &a[last];
     if (form == PC_KC_SINUSOID) return kcurve_from(L, a, form, p->v, (int)p->v[0] + 1, NULL);
-    return kcurve_from(L, a, form + (last == 6 ? a[5].n : 0), &p->x, 1, NULL);
+    return kcurve_from(L, a, form + (a[5].s ? a[5].n : 0), &p->x, 1, NULL);
 }
 
 /* by: the forms PC_KC_ELLIPSE_ANGLE .. PC_KC_ELLIPSE_ALGEBRAIC in order, then two of conic.h */
