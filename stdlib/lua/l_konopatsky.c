@@ -18,7 +18,6 @@
 #include "konop_triples.h"
 #include "konop_ch1.h"
 #include "konop_print.h"
-#include "pcl_curve.h"
 
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
@@ -61,15 +60,19 @@ static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_
     {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1,
      .expect = "1 or 2"}, PCL_END};
 
-/* A construction of pc_konop_make or pc_konop_number, the kind by the name it is called: the
- * declared points, then the numbers (from a[0] when there are no points). */
+/* A construction of pc_konop_make, pc_konop_number or pc_konop_list, the kind by the name it is
+ * called: the declared points, then the numbers (from a[0] when there are no points). */
 PCL_BODY(made, a) {
     pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
-    int np = pc_konop_npoints(kind), d = a[0].n, st;
-    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k;
+    int np = pc_konop_npoints(kind), d = a[0].n, st, n;
+    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k, u[64];
     for (int i = 0; i < 3 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].x;
     pcl_point_rows(a, np, d, p);
     if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
+    if (kind >= PC_KM_CONES_EXCLUDED) {
+        CHECK(pc_konop_list(kind, x, u, &n));
+        return pcl_push_results(L, 0, "N", n, u);
+    }
     CHECK(pc_konop_number(kind, d, p, x, &k));
     return pcl_push_results(L, 0, "n", k);
 }
@@ -92,6 +95,45 @@ static int kcurve_from(lua_State *L, const pcl_val *a, int form, const double *p
     return pcl_made(L, c, &st, why.row);
 }
 
+static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
+static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
+static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
+static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
+static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
+static const pcl_arg reparam_args[] = SPEC(reparam_keys);
+
+/* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
+static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+    (void)a;
+    int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
+    if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
+    out->v[0] = g;
+    for (int i = 1; i <= g; i++) {
+        int t = list ? lua_geti(L, idx, i) : lua_type(L, idx);
+        out->v[i] = t == LUA_TNUMBER ? lua_tonumber(L, list ? -1 : idx) : NAN;
+        lua_pop(L, list);   /* the element, when k is a list */
+        if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
+    }
+    return 1;
+}
+static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ,
+    .read = read_waves, .shown = "{m, n, ...}",
+    .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
+static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
+static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"},
+                                       PCL_END};
+static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
+
+/* conic.hyperbola, .reparam, .sinusoid and .cycloid: the table's first form (pc_konop_form_base)
+ * offset by 'by' (a[5], an enum where the table has it), the parameter its last key (branch, k,
+ * concave; reparam's angle form leaves the branch unread) */
+PCL_BODY(c_form, a) {   /* spec; C, A, B, range, [by,] branch | k | concave */
+    int form = pc_konop_form_base(pcl_name(L)), last = pcl_nvalues(L) - 1;
+    const pcl_val *p = &a[last];
+    if (form == PC_KC_SINUSOID) return kcurve_from(L, a, form, p->v, (int)p->v[0] + 1, NULL);
+    return kcurve_from(L, a, form + (a[5].s ? a[5].n : 0), &p->x, 1, NULL);
+}
+
 /* by: the forms PC_KC_ELLIPSE_ANGLE .. PC_KC_ELLIPSE_ALGEBRAIC in order, then two of conic.h */
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
@@ -104,13 +146,6 @@ PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     double lambda = a[8].present ? a[8].x : NAN;
     return kcurve_from(L, a, by < 5 ? PC_KC_ELLIPSE_ANGLE + by : PC_KF_CONJUGATE + by - 5, by == 6 ? &lambda : &a[6].x,
                        1, &a[7]);
-}
-
-static const char *const HYPERBOLA_BY[] = {"angle", "radius", "focal", NULL};   /* PC_KC_HYPERBOLA_* in order */
-static const pcl_arg hyperbola_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", HYPERBOLA_BY), BRANCH, PCL_END};
-static const pcl_arg hyperbola_args[] = SPEC(hyperbola_keys);
-PCL_BODY(c_hyperbola, a) {   /* spec; C, A, B, range, by, branch */
-    return kcurve_from(L, a, PC_KC_HYPERBOLA_ANGLE + a[5].n, &a[6].x, 1, NULL);
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
@@ -157,43 +192,6 @@ PCL_BODY(c_redundant, a) {
     double K[PC_MAXDIM];
     CHECK(pc_redundant_point(d, a[0].v, a[1].v, a[2].v, a[3].x, a[4].x, K));
     return pcl_push_results(L, d, "p", K);
-}
-
-static const char *const REPARAM_BY[] = {"angle", "sigma", NULL};
-static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY), BRANCH, PCL_END};
-static const pcl_arg reparam_args[] = SPEC(reparam_keys);
-PCL_BODY(c_reparam, a) {   /* spec; C, A, B, range, by, branch */
-    if (a[5].n == 0) return kcurve_from(L, a, PC_KC_PARABOLA_ANGLE, NULL, 0, NULL);
-    return kcurve_from(L, a, PC_KC_PARABOLA_SIGMA, &a[6].x, 1, NULL);
-}
-
-/* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
-static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
-    if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
-    out->v[0] = g;
-    for (int i = 1; i <= g; i++) {
-        int t = list ? lua_geti(L, idx, i) : lua_type(L, idx);
-        out->v[i] = t == LUA_TNUMBER ? lua_tonumber(L, list ? -1 : idx) : NAN;
-        lua_pop(L, list);   /* the element, when k is a list */
-        if (!(out->v[i] > 0) || !isfinite(out->v[i])) return 0;
-    }
-    return 1;
-}
-static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = PCL_ANY, .flags = PCL_REQ,
-    .read = read_waves, .shown = "{m, n, ...}",
-    .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
-static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
-PCL_BODY(c_sinusoid, a) {   /* spec; C, A, B, range, k */
-    return kcurve_from(L, a, PC_KC_SINUSOID, a[5].v, (int)a[5].v[0] + 1, NULL);
-}
-
-static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"},
-                                       PCL_END};
-static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
-PCL_BODY(c_cycloid, a) {   /* spec; C, A, B, range, concave */
-    return kcurve_from(L, a, PC_KC_CYCLOID, &a[5].x, 1, NULL);
 }
 
 #define OF_T "a function of t"
@@ -359,14 +357,10 @@ PCL_BODY(i_arc, a) {
 static const pcl_arg adaptive_args[] = {A_POINTS("points", 0, 2, MAXNODES),
                                         {.name = "axis", .kind = PCL_INTEGER, .flags = PCL_OPT, .dflt = 1}, PCL_END};
 PCL_BODY(i_adaptive, a) {
-    int n = a[0].n, d = a[0].dim, axis = (int)a[1].x;
-    if (axis < 1 || axis > d) return pcl_argfail(L, 2, "must be an axis number 1..%d, got %d", d, axis);
     double v[MAXNODES];
-    char why[200];
-    int st = pc_interp_adaptive_params(d, n, a[0].list, axis - 1, v);
-    if (pc_interp_adaptive_why(st, axis - 1, why, sizeof why)) return pcl_fail(L, "%s", why);
-    CHECK(st);
-    return pcl_push_results(L, 0, "N", n, v);
+    pc_why_call why;
+    pcl_check(L, pc_interp_adaptive(a[0].dim, a[0].n, a[0].list, (int)a[1].x, v, &why), why.row);
+    return pcl_push_results(L, 0, "N", a[0].n, v);
 }
 
 static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "trig", NULL};   /* pc_proto_kind */
@@ -511,11 +505,6 @@ PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
 }
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
-PCL_BODY(a_chebyshev, a) {
-    double x[64];
-    CHECK(pc_chebyshev_nodes((int)a[0].x, a[1].x, a[2].x, x));
-    return pcl_push_results(L, 0, "N", (int)a[0].x, x);
-}
 
 static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
     {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101,
@@ -566,13 +555,6 @@ PCL_BODY(l_smooth_scheme, a) {
     return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
 
-PCL_BODY(l_cones_excluded, a) {
-    double u[5];
-    int n;
-    CHECK(pc_cones_excluded(a[0].x, a[1].x, u, &n));
-    return pcl_push_results(L, 0, "N", n, u);
-}
-
 static const char *const KINDS[] = {"ellipse", "hyperbola", NULL};
 
 static const pcl_arg ed_scheme_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("k"), A_NUM("u"), PCL_END};
@@ -588,14 +570,14 @@ static const pcl_arg abcdt_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("
 
 /* ==== the symbolic method of §2.2 (konop_triples.h): conic.scheme{...} ====================== */
 
-/* the three point names of the list at the stack top (popped) into idx, added to nm; 0 if it is
+/* the three point names of the list at the stack top (popped) into idx, added to t; 0 if it is
  * no such list */
-static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
-    int t = lua_gettop(L), ok = lua_istable(L, t) && lua_rawlen(L, t) == 3;
+static int names3(lua_State *L, pc_triples_table *t, int *idx) {
+    int top = lua_gettop(L), ok = lua_istable(L, top) && lua_rawlen(L, top) == 3;
     for (int k = 0; ok && k < 3; k++) {
-        ok = lua_geti(L, t, k + 1) == LUA_TSTRING;
-        idx[k] = ok ? pc_triples_name(nm, lua_tostring(L, -1)) : 0;   /* the name stays alive in the table */
-        if (idx[k] < 0) pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
+        ok = lua_geti(L, top, k + 1) == LUA_TSTRING;   /* the name stays alive in the table */
+        if (ok && pc_triples_index(t, lua_tostring(L, -1), &idx[k]) != PC_OK)
+            pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
         lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -603,10 +585,7 @@ static int names3(lua_State *L, pc_triples_names *nm, int *idx) {
 }
 
 PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, range */
-    pc_triples_names nm = {0};
-    int tri[PC_TRIPLES_MAXTRI][3], cur[3], dim = 0;
-    unsigned char known[PC_TRIPLES_MAXPTS] = {0};
-    double pts[PC_TRIPLES_MAXPTS * PC_MAXDIM];
+    pc_triples_table t = {0};
     /* the known points first: their names are the keys of points */
     lua_getfield(L, 1, "points");
     int ip = lua_gettop(L);
@@ -615,42 +594,35 @@ PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, r
         if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
         const char *s = lua_tostring(L, -2);
         pcl_value *v = pcl_tovalue(L, -1);
-        double h[PC_MAXDIM + 1];
-        if (v) memcpy(h, v->h, sizeof(double) * (size_t)(v->n + 1));
-        /* the one weight rule: within 1e-9 of 1 is a point (pcl_snap_weight) */
-        if (!v || v->n < 2 || (dim && v->n != dim) || pcl_snap_weight(v->n, h) != PC_KIND_POINT)
+        int st = pc_triples_give(&t, s, v ? v->n : 0, v ? v->h : NULL);
+        if (st == PC_EDIM)   /* the one weight rule: within 1e-9 of 1 is a point (pc_snap_weight) */
             return pcl_fail(L, "points.%s must be a %s point", s,
-                            dim ? (dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
-        dim = v->n;
-        int i = pc_triples_name(&nm, s);
-        if (i < 0) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
-        known[i] = 1;
-        memcpy(pts + i * dim, h, sizeof(double) * (size_t)dim);
+                            t.dim ? (t.dim == 2 ? "2-D" : "3-D or more") : "2-D or more");
+        if (st != PC_OK) return pcl_fail(L, "at most %d points", PC_TRIPLES_MAXPTS);
         lua_pop(L, 1);
     }
-    if (!dim) return pcl_fail(L, "field points is empty");
+    if (!t.dim) return pcl_fail(L, "field points is empty");
     lua_getfield(L, 1, "triples");
     int it = lua_gettop(L), ntri = (int)lua_rawlen(L, it);
     if (ntri < 1 || ntri > PC_TRIPLES_MAXTRI) return pcl_fail(L, "1 to %d triples, got %d", PC_TRIPLES_MAXTRI, ntri);
     for (int j = 0; j < ntri; j++) {
         lua_geti(L, it, j + 1);
-        if (!names3(L, &nm, tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
+        if (!names3(L, &t, t.tri[j])) return pcl_fail(L, "triples[%d] must be three point names", j + 1);
     }
     lua_getfield(L, 1, "current");
-    if (!names3(L, &nm, cur))
+    if (!names3(L, &t, t.cur))
         return pcl_fail(L, "field current must be three point names {\"C\", \"P\", \"Q\"}: C runs as P t' + Q t");
-    int res = pc_triples_name(&nm, a[4].s);
     pc_triples_plan plan;
-    int st = pc_triples_plan_make(nm.n, ntri, (const int (*)[3])tri, known, cur[0], cur[1], cur[2], res, &plan);
+    int st = pc_triples_table_plan(&t, ntri, a[4].s, &plan);
     if (st == PC_EDOMAIN)
         return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
     CHECK(st);
     double t0 = a[5].present ? a[5].list[0] : 0, t1 = a[5].present ? a[5].list[1] : 1;
-    pcl_made(L, pc_triples_curve(&plan, dim, pts, t0, t1, &st), &st, pc_konop_why);
+    pcl_made(L, pc_triples_curve(&plan, t.dim, t.pts, t0, t1, &st), &st, pc_konop_why);
     lua_createtable(L, plan.nsteps, 0);
     for (int s = 0; s < plan.nsteps; s++) {
         char text[4 * 64];
-        pc_triples_step_text(&plan, s, &nm, text, sizeof text);
+        pc_triples_step_text(&plan, s, &t.nm, text, sizeof text);
         lua_pushstring(L, text);
         lua_rawseti(L, -2, s + 1);
     }
@@ -666,12 +638,6 @@ static const pcl_arg scheme_keys[] = {
 static const pcl_arg scheme_args[] = SPEC(scheme_keys);
 
 /* ==== konopatsky: chapter 1 (konop_ch1.h) ================================================== */
-
-PCL_BODY(k_area_k, a) {
-    double k;
-    CHECK(pc_k_area_k(a[0].x, a[1].x, a[2].x, &k));
-    return pcl_push_results(L, 0, "n", k);
-}
 
 PCL_BODY(k_area_theorem, a) {
     int n = a[0].n;
@@ -693,14 +659,11 @@ PCL_BODY(k_o_theorem, a) {
 }
 
 PCL_BODY(k_simplex_ratio, a) {
-    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)];
+    double m[(PC_MAXDIM + 1) * (PC_MAXDIM + 1)], r;
     int d, cols;
+    pc_why_call why;
     pcl_read_rows(L, 1, 0, m, &d, &cols);
-    if (d != cols || d < 2 || d > 9)
-        return pcl_argfail(L, 1, "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", d,
-                           cols);
-    double r;
-    CHECK(pc_k_simplex_ratio(d - 1, m, &r));
+    pcl_check(L, pc_k_simplex_ratio_rows(d, cols, m, &r, &why), why.row);
     return pcl_push_results(L, 0, "n", r);
 }
 
@@ -713,13 +676,6 @@ PCL_BODY(k_meet_line_plane, a) {
         return pcl_push_results(L, n, "v n", k, lam);
     CHECK(st);
     return pcl_push_results(L, n, "p n n n", k, lam, pq[0], pq[1]);
-}
-
-PCL_BODY(k_polar, a) {   /* also konopatsky.rotate(C, A, B, phi), declared without rho: rho = |CA| */
-    int n = a[0].n, rotate = pcl_nvalues(L) == 4;
-    double m[PC_MAXDIM], rho = rotate ? pc_dist(n, a[0].v, a[1].v) : a[3].x;
-    CHECK(pc_k_polar(n, a[0].v, a[1].v, a[2].v, rho, a[rotate ? 3 : 4].x, m));
-    return pcl_push_results(L, n, "p", m);
 }
 
 PCL_BODY(k_moving_simplex, a) {
@@ -768,16 +724,16 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ed_to_ceva", made, k_args, "k", "The Ceva k of the engineering discriminant k in (0, 1): (k/(2(1 - k)))^2."),
     SIG("conic.parabola", made, parabola_args, "conic.parabola(A1, A3, A2) -> curve\nconic.parabola(A, C, B, tC) -> curve", "(2.58) The parabola of one ratio with tangents meeting at A3; or (2.62) the parabola through A, C (at t = tC), B."),
     SIG("conic.ellipse", c_ellipse, ellipse_args, "conic.ellipse{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\"|\"compression\"|\"algebraic\"|\"conjugate\", quadrant = 1, range = {t0, t1}]} -> curve\nconic.ellipse{by = \"diameter\", K =, A =, B =, lambda =} -> curve", "The ellipse of centre C with semi-axes CA, CB in the book's forms (2.11), (2.15), (2.18), (2.24), sqrt, (2.32); by = \"diameter\" with K, A, B, lambda: §2.1.1.6."),
-    SIG("conic.hyperbola", c_hyperbola, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
+    SIG("conic.hyperbola", c_form, hyperbola_args, "conic.hyperbola{C =, A =, B = [, by = \"angle\"|\"radius\"|\"focal\", branch = 1|2, range = {t0, t1}]} -> curve", "The hyperbola of centre C, vertex A, imaginary semi-axis CB: (2.49), (2.53) with rho >= a, (2.56) with the branch through A by default (corrected ranges)."),
     SIG("conic.circle", c_circle, circle_args, "conic.circle{A =, B =, C = [, delta = | R =]} -> curve", "Circles: the arc AB with tangents through C (§2.1.8.1); delta: the locus angle AMC = delta (2.115); R: centre C, radius R (2.118)."),
     PCL_FN("conic.tilted", c_tilted, tilted_args, "curve, P, Q, K, Arot, tau", "§2.1.1.1 The ellipse of centre C, semi-axes m, n, its major axis at angle theta to AB; P, Q end the semi-axes, K = CP x AB (a vector at theta = 0), Arot is A rotated about C by 3 pi/2 - alpha - theta towards B (Q = (Arot - C) n/b + C), tau = angle ACK = pi - alpha - theta (Fig. 2.5)."),
     PCL_FN("conic.five_points", c_five_points, five_args, "curve, u", "§2.1.4 The conic through five points by Pascal's hexagon with the corrected S = BE x AD; u.A ... u.E are the parameters of the points."),
     SIG("conic.five_points2", c_five_points2, five2_args, "conic.five_points2{C =, A =, B =, p1 =, p2 =, q2 =, q3 =} -> curve", "§2.1.5 The conic A -> B through A1, A2, A3 given by their ratios in simplex CAB (corrected 2.93); p1 = q3 = 1 gives tangents CA, CB."),
     PCL_FN("conic.triples", made, triples_args, "curve", "§2.2 (b) The system of triples without a Pascal line; corrected, its locus is the conic through A1, A3, A4."),
     SIG("conic.redundant", c_redundant, redundant_args, "conic.redundant(C, A, B, u, v) -> point\nconic.redundant(C, A, B) -> curve", "(2.120) The redundant parametrisation of the plane K = AQ x BP; without u, v the curve (2.121) u = v = t."),
-    SIG("conic.reparam", c_reparam, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
-    SIG("conic.sinusoid", c_sinusoid, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
-    SIG("conic.cycloid", c_cycloid, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
+    SIG("conic.reparam", c_form, reparam_args, "conic.reparam{C =, A =, B = [, by = \"angle\"|\"sigma\", branch = 1|2, range = {t0, t1}]} -> curve", "§2.4 The one-ratio parabola by the angle MCA, or by sigma = CK + KM (the print's radius |CM| is not what its formula measures)."),
+    SIG("conic.sinusoid", c_form, sinusoid_args, "conic.sinusoid{C =, A =, B =, k = {m, n, ...} [, range = {t0, t1}]} -> curve", "(2.145) The sinusoid whose axis is the circle of centre C through A, one wave number per generation."),
+    SIG("conic.cycloid", c_form, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
     PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
     SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
     PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
@@ -785,7 +741,7 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
     PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
     PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
-    PCL_FN("conic.cones_excluded", l_cones_excluded, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
+    PCL_FN("conic.cones_excluded", made, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
     PCL_END};
 
@@ -821,36 +777,30 @@ static const pcl_fn approx_fns[] = {
     PCL_FN("approx.curve", a_curve, curve_args, "curve", "§5.1 The approximation curve through (x_j, f(x_j)) at uniform t."),
     SIG("approx.mse", a_mse, mse_args, "approx.mse(f, nodes [, m] [, {m =, divisor = \"m+1\"|\"m\"|\"m-1\"}]) -> mse", "§5.1 The book's mean-square error: samples t = i/m (m = 100), residual f(x(t)) - y(t), the SSE divided by m + 1 (the book's; divisor = \"m\" or \"m-1\" for comparison: SSE/m gives 0.0000287 for Runge)."),
     SIG("approx.optimal_nodes", a_optimal_nodes, optimal_args, "approx.optimal_nodes(f, a, b, N [, m] [, {m =, divisor =}]) -> nodes, mse, evals", "§5.1 The optimal nodes of the N-node curve on [a, b]: deterministic multi-start Nelder-Mead over ordered nodes."),
-    PCL_FN("approx.chebyshev", a_chebyshev, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
+    PCL_FN("approx.chebyshev", made, chebyshev_args, "nodes", "The N Chebyshev nodes (roots) on [a, b], increasing."),
     PCL_FN("approx.lagrange_mse", a_lagrange_mse, lmse_args, "mse", "§5.2 The MSE of Lagrange's polynomial on the nodes against f over M = 101 uniform x."),
     PCL_FN("approx.nelder_mead", a_nelder_mead, nm_args, "x, fx, iterations", "Deterministic Nelder-Mead minimisation of f(x1, ..., xn) from the list x0."),
     PCL_END};
 
 static const pcl_fn ch1_fns[] = {
-    PCL_FN("konopatsky.area_k", k_area_k, lambdas, "k", "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
+    PCL_FN("konopatsky.area_k", made, lambdas, "k", "(1.2) The theorem on triangle areas: k = (1 + l1 l2 l3)/((1 + l1)(1 + l2)(1 + l3)) = S_B1B2B3/S_A1A2A3."),
     PCL_FN("konopatsky.area_theorem", k_area_theorem, six, "{k, lambda, a, b, c, collinear}", "(1.2) for B1 on A1A2, B2 on A2A3, B3 on A3A1, any dimension: the signed area ratio k, lambda_i = (AiA(i+1)Bi), the proof's a = (B1A1A2) = -1/(1 + l1), b, c; collinear is corollary 1 (k = 0, Menelaus l1 l2 l3 = -1). B3 = A3 gives k = ab (corollary 2), B1 = A1 and B3 = A3 give k = -b (corollary 3)."),
     PCL_FN("konopatsky.o_theorem", k_o_theorem, o_args, "product, ratios, B", "(1.4) The O-theorem: Bi = AiA(i+1) x D1D2 (B at infinity for a side parallel to d), ratios (AiA(i+1)Bi) and their product, (-1)^m with the closing factor (A_m A_1 B_m) the print omits."),
     {.name = "konopatsky.simplex_ratio", .fn = k_simplex_ratio, .args = rows_args, .result = "ratio", .sig = "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio", .help = "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected)."},
     PCL_FN("konopatsky.meet_line_plane", k_meet_line_plane, lp_args, "K, lambda, p, q", "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet."),
-    PCL_FN("konopatsky.polar", k_polar, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
-    PCL_FN("konopatsky.rotate", k_polar, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
+    PCL_FN("konopatsky.polar", scheme, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
+    PCL_FN("konopatsky.rotate", scheme, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
     PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface", "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
     PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...", "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
     PCL_END};
 
-/* The tables conic, oneratio, interp, approx and konopatsky, in the order :help lists them. */
+/* The tables conic, oneratio, interp, approx and konopatsky, in the order :help lists them;
+ * oneratio(A, B, C) is oneratio.simplex. */
 void pcl_open_konopatsky(lua_State *L) {
-    static const char *const names[] = {"conic", "oneratio", "interp", "approx", "konopatsky"};
-    const pcl_fn *const fns[] = {conic_fns, oneratio_fns, interp_fns, approx_fns, ch1_fns};
     int module = lua_gettop(L);
-    for (int i = 0; i < 5; i++) {
-        lua_newtable(L);
-        pcl_register(L, -1, fns[i], 0);
-        if (fns[i] == oneratio_fns) {   /* oneratio(A, B, C) is oneratio.simplex */
-            lua_newtable(L);
-            pcl_register(L, -1, oneratio_call, 0);
-            lua_setmetatable(L, -2);
-        }
-        lua_setfield(L, module, names[i]);
-    }
+    pcl_new_table(L, module, "conic", conic_fns, NULL);
+    pcl_new_table(L, module, "oneratio", oneratio_fns, oneratio_call);
+    pcl_new_table(L, module, "interp", interp_fns, NULL);
+    pcl_new_table(L, module, "approx", approx_fns, NULL);
+    pcl_new_table(L, module, "konopatsky", ch1_fns, NULL);
 }

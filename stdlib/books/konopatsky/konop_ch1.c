@@ -7,6 +7,7 @@
 #include "linalg.h"
 #include "point.h"
 #include "names.h"
+#include "konop_why.h"
 
 static int finite_rows(int n, int rows, const double *x) {
     for (int i = 0; i < n * rows; i++)
@@ -98,6 +99,16 @@ int pc_k_simplex_ratio(int k, const double *rows, double *ratio) {
     }
     *ratio = pc_det(d, rows);
     return PC_OK;
+}
+
+int pc_k_simplex_ratio_rows(int nr, int nc, const double *rows, double *ratio, pc_why_call *w) {
+    const char *op = "konopatsky.simplex_ratio";
+    if (nr != nc || nr < 2 || nr > 9)
+        return pc_why_call_set(w, op, PC_EDIM, 1, NULL,
+                               "must hold 2 to 9 rows of as many numbers (a square matrix), got %d rows of %d", nr, nc);
+    int st = pc_k_simplex_ratio(nr - 1, rows, ratio);
+    const pc_why *row = pc_why_find(pc_konop_why, op, st);
+    return pc_why_call_set(w, row ? op : NULL, st, row ? row->arg : 0, row ? row->key : NULL, "%s", row ? row->text : "");
 }
 
 int pc_k_meet_line_plane(int n, const double *a1, const double *a2, const double *p1,

@@ -8,6 +8,7 @@
 #define PC_KONOP_CH1_H
 
 #include "surface.h"
+#include "why_call.h"
 
 /* (1.2) k = (1 + l1 l2 l3) / ((1 + l1)(1 + l2)(1 + l3)).  PC_EPOLE when some li = -1 (Bi at
  * infinity), PC_ENONFINITE. */
@@ -42,6 +43,9 @@ int pc_k_o_theorem(int n, int m, const double *poly, const double *d1, const dou
  * det(rows) (S: k = 2, V: k = 3; the printed V-theorem is det/det of one matrix, = 1).
  * 1 <= k <= 8.  PC_EDOMAIN when a row does not sum to 1 within 1e-12. */
 int pc_k_simplex_ratio(int k, const double *rows, double *ratio);
+/* konopatsky.simplex_ratio: the same for nr rows of nc numbers, each failure explained by w
+ * (why_call.h): no square matrix of 2 to 9 rows (argument 1), then pc_konop_why's row. */
+int pc_k_simplex_ratio_rows(int nr, int nc, const double *rows, double *ratio, pc_why_call *w);
 
 /* The meet K of the line A1A2 and the plane P1P2P3 (§1.3.5 with the V-theorem: the volume of
  * the tetrahedron M P1 P2 P3, M = (A2 - A1) lambda + A1, vanishes), in any dimension n >= 3

@@ -5,6 +5,7 @@
 #include "conic.h"
 #include "konop_why.h"
 #include "names.h"
+#include <string.h>
 
 static pc_curve *fail(pc_why_call *w, const char *op, int st, const char *key, const char *text, double x,
                       int *status) {
@@ -12,6 +13,16 @@ static pc_curve *fail(pc_why_call *w, const char *op, int st, const char *key, c
     *status = st;
     pc_why_call_set(w, op, st, 0, key, text, isnan(x) ? "nil" : pc_num_text(x, num, sizeof num));
     return NULL;
+}
+
+int pc_konop_form_base(const char *op) {
+    static const struct { const char *op; int form; } base[] = {
+        {"conic.ellipse", PC_KC_ELLIPSE_ANGLE}, {"conic.hyperbola", PC_KC_HYPERBOLA_ANGLE},
+        {"conic.circle", PC_KC_CIRCLE_ANGLE}, {"conic.reparam", PC_KC_PARABOLA_ANGLE},
+        {"conic.sinusoid", PC_KC_SINUSOID}, {"conic.cycloid", PC_KC_CYCLOID}};
+    for (size_t i = 0; i < sizeof base / sizeof base[0]; i++)
+        if (strcmp(base[i].op, op) == 0) return base[i].form;
+    return -1;
 }
 
 pc_curve *pc_konop_form(const char *op, int form, int dim, const double *c, const double *a,

@@ -11,6 +11,10 @@
  * KA with B and lambda = par[0]; §2.1.8.1 the circular arc AB with tangents meeting at C. */
 enum { PC_KF_CONJUGATE = PC_KC_NKINDS, PC_KF_DIAMETER, PC_KF_CIRCLE_ARC };
 
+/* The first form of the spec table op ("conic.hyperbola": PC_KC_HYPERBOLA_ANGLE; its 'by'
+ * choices are the forms from it in order), or -1 for another name. */
+int pc_konop_form_base(const char *op);
+
 /* The curve of form (a pc_kcurve_kind or a PC_KF_*) of the operation op in the simplex C A B
  * (c or k NULL: not given), its parameters par[0..npar-1] (NaN: not given), over [t0, t1] (NaN:
  * the book's range); NULL with *status and w the row that explains it: a missing point, delta

@@ -135,6 +135,16 @@ int pc_interp_adaptive_why(int st, int axis, char *buf, size_t n) {
     return st == PC_ECOINCIDENT || st == PC_EDOMAIN;
 }
 
+int pc_interp_adaptive(int dim, int n, const double *pts, int axis, double *v, pc_why_call *w) {
+    const char *op = "interp.adaptive";
+    if (axis < 1 || axis > dim)
+        return pc_why_call_set(w, op, PC_EDIM, 2, NULL, "must be an axis number 1..%d, got %d", dim, axis);
+    int st = pc_interp_adaptive_params(dim, n, pts, axis - 1, v);
+    char why[200] = "";
+    if (!pc_interp_adaptive_why(st, axis - 1, why, sizeof why)) op = NULL;   /* unexplained: the status */
+    return pc_why_call_set(w, op, st, 0, NULL, "%s", why);
+}
+
 /* ---- the basis engine ------------------------------------------------------------------------- */
 
 typedef struct {

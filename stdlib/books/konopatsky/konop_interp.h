@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "curve.h"
+#include "why_call.h"
 
 /* The weights phi_j(t) of the interpolation curve through n nodes at the distinct params
  * (NULL: uniform j/(n-1)), i.e. M(t) = sum M_j phi_j(t); they sum to 1 (§4.2-4.7: the book's
@@ -37,6 +38,9 @@ int pc_interp_adaptive_params(int dim, int n, const double *pts, int axis, doubl
 /* What failed in pc_interp_adaptive_params with status st on that axis, as text into buf (n
  * bytes); 0 (nothing written) for a status it does not explain. */
 int pc_interp_adaptive_why(int st, int axis, char *buf, size_t n);
+/* interp.adaptive: pc_interp_adaptive_params on axis 1..dim (counted from 1), each failure
+ * explained by w: an axis outside 1..dim (argument 2), then pc_interp_adaptive_why's. */
+int pc_interp_adaptive(int dim, int n, const double *pts, int axis, double *v, pc_why_call *w);
 
 /* §4.11 The simplex-replacement engine on any prototype: basis functions g_1..g_n (g(ud, t, n,
  * out) fills n values, non-zero status fails), nodes M_j at params t_j; the collocation matrix

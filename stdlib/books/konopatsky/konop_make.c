@@ -7,6 +7,9 @@
 #include "oneratio.h"
 #include "konop_schemes.h"
 #include "konop_curves.h"
+#include "konop_ch1.h"
+#include "approx.h"
+#include "point.h"
 
 int pc_konop_npoints(pc_konop_kind kind) {
     switch (kind) {
@@ -18,7 +21,10 @@ int pc_konop_npoints(pc_konop_kind kind) {
     case PC_KM_ED_K:
     case PC_KM_CEVA_K: return 4;
     case PC_KM_CEVA_TO_ED:
-    case PC_KM_ED_TO_CEVA: return 0;
+    case PC_KM_ED_TO_CEVA:
+    case PC_KM_AREA_K:
+    case PC_KM_CONES_EXCLUDED:
+    case PC_KM_CHEBYSHEV: return 0;
     default: return 3;
     }
 }
@@ -29,7 +35,8 @@ static const struct { const char *name; pc_konop_kind kind; } names[] = {
     {"oneratio.tetra", PC_KM_TETRA}, {"oneratio.bezier3", PC_KM_BEZIER3}, {"oneratio.smooth", PC_KM_SMOOTH},
     {"oneratio.desargues", PC_KM_DESARGUES}, {"conic.cones", PC_KM_CONES}, {"conic.triples", PC_KM_TRIPLES},
     {"oneratio.closed", PC_KM_CLOSED}, {"interp.conic", PC_KM_ED3}, {"conic.ceva_to_ed", PC_KM_CEVA_TO_ED},
-    {"conic.ed_to_ceva", PC_KM_ED_TO_CEVA}};
+    {"conic.ed_to_ceva", PC_KM_ED_TO_CEVA}, {"konopatsky.area_k", PC_KM_AREA_K},
+    {"conic.cones_excluded", PC_KM_CONES_EXCLUDED}, {"approx.chebyshev", PC_KM_CHEBYSHEV}};
 
 int pc_konop_kind_of(const char *name) {
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
@@ -67,6 +74,17 @@ int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, const double
     case PC_KM_CEVA_K: return pc_conic_ceva_k(dim, a, b, c, d, out);
     case PC_KM_CEVA_TO_ED: return pc_ceva_to_ed(x[0], out);
     case PC_KM_ED_TO_CEVA: return pc_ed_to_ceva(x[0], out);
+    case PC_KM_AREA_K: return pc_k_area_k(x[0], x[1], x[2], out);
+    default: return PC_EDOMAIN;
+    }
+}
+
+int pc_konop_list(pc_konop_kind kind, const double *x, double *out, int *n) {
+    switch (kind) {
+    case PC_KM_CONES_EXCLUDED: return pc_cones_excluded(x[0], x[1], out, n);
+    case PC_KM_CHEBYSHEV:
+        *n = (int)x[0];
+        return *n <= 64 ? pc_chebyshev_nodes(*n, x[1], x[2], out) : PC_EDOMAIN;
     default: return PC_EDOMAIN;
     }
 }
@@ -82,7 +100,8 @@ static const struct { const char *name; pc_konop_scheme_kind kind; const char *f
     {"oneratio.simplex_scheme", PC_KS_SIMPLEX, "N=p M=p"},
     {"conic.foci", PC_KS_FOCI, "p p n n"},
     {"oneratio.desargues_scheme", PC_KS_DESARGUES, "T=h S=h R=h N=h J=h Q=h M=h pJ=n qJ=n"},
-    {"conic.focal_point", PC_KS_FOCAL, "p p n n"}};
+    {"conic.focal_point", PC_KS_FOCAL, "p p n n"}, {"konopatsky.polar", PC_KS_POLAR, "p"},
+    {"konopatsky.rotate", PC_KS_ROTATE, "p"}};
 
 int pc_konop_scheme_of(const char *name, const char **fields) {
     for (size_t i = 0; i < sizeof schemes / sizeof schemes[0]; i++) {
@@ -106,6 +125,8 @@ int pc_konop_scheme(pc_konop_scheme_kind kind, int dim, const double *pts, const
     case PC_KS_DESARGUES: return pc_desargues_scheme(dim, a, b, c, d, x[0], out, out + 7 * (dim + 1));
     case PC_KS_FOCI: return pc_conic_foci(dim, a, b, c, x[0] == 1, out, out + dim, out + 2 * dim, out + 2 * dim + 1);
     case PC_KS_FOCAL: return pc_conic_focal_point(dim, a, b, c, x[1] == 1, x[0], out, out + 2 * dim);
+    case PC_KS_POLAR: return pc_k_polar(dim, a, b, c, x[0], x[1], out);
+    case PC_KS_ROTATE: return pc_k_polar(dim, a, b, c, pc_dist(dim, a, b), x[0], out);
     }
     return PC_EDOMAIN;
 }

@@ -22,7 +22,10 @@ typedef enum {
     PC_KM_CIRCLE_K,    /* A, B, C: k of the circular arc (2.107) */
     PC_KM_CEVA_K,      /* A1, A2, A3, K: Ceva's k (2.100) */
     PC_KM_CEVA_TO_ED,  /* no points; k: the engineering discriminant of Ceva's k (pc_ceva_to_ed) */
-    PC_KM_ED_TO_CEVA   /* no points; k: Ceva's k of the engineering discriminant (pc_ed_to_ceva) */
+    PC_KM_ED_TO_CEVA,  /* no points; k: Ceva's k of the engineering discriminant (pc_ed_to_ceva) */
+    PC_KM_AREA_K,      /* no points; l1, l2, l3: the area ratio k of (1.2) (pc_k_area_k) */
+    PC_KM_CONES_EXCLUDED,   /* no points; fP, fQ: the u the cubic of two cones avoids (pc_cones_excluded) */
+    PC_KM_CHEBYSHEV    /* no points; N, a, b: the N Chebyshev nodes on [a, b] (pc_chebyshev_nodes) */
 } pc_konop_kind;
 
 /* How many points the construction takes. */
@@ -33,9 +36,12 @@ int pc_konop_kind_of(const char *name);
  * as the kind takes), or NULL with *status set (the status of the construction's own function;
  * PC_EDOMAIN for another kind). */
 pc_curve *pc_konop_make(pc_konop_kind kind, int dim, const double *pts, const double *x, int *status);
-/* The number of a construction PC_KM_ED_K .. PC_KM_ED_TO_CEVA of the points and the numbers x
+/* The number of a construction PC_KM_ED_K .. PC_KM_AREA_K of the points and the numbers x
  * into *out: the status of its own function (PC_EDOMAIN for another kind). */
 int pc_konop_number(pc_konop_kind kind, int dim, const double *pts, const double *x, double *out);
+/* The list of a construction PC_KM_CONES_EXCLUDED .. PC_KM_CHEBYSHEV of the numbers x into out
+ * (at most 64), their count in *n: the status of its own function (PC_EDOMAIN for another kind). */
+int pc_konop_list(pc_konop_kind kind, const double *x, double *out, int *n);
 
 /* The schemes whose points figures label, by kind: pc_konop_scheme fills out with the points
  * in order, then the numbers (rows of dim + 1 homogeneous where a point may be at infinity,
@@ -47,7 +53,9 @@ typedef enum {
     PC_KS_SIMPLEX,     /* A, B, C; t -> N, M (rows of dim): Fig. 3.1 */
     PC_KS_DESARGUES,   /* A, B, C, D; t -> T, S, R, N, J, Q, M (homogeneous), pJ, qJ: Fig. 3.12 */
     PC_KS_FOCI,        /* C, A, B; 0 ellipse or 1 hyperbola -> F1, F2 (rows of dim), e, p */
-    PC_KS_FOCAL        /* C, A, B; phi, 0 ellipse or 1 hyperbola -> M, F (rows of dim), pa, pb */
+    PC_KS_FOCAL,       /* C, A, B; phi, 0 ellipse or 1 hyperbola -> M, F (rows of dim), pa, pb */
+    PC_KS_POLAR,       /* C, A, B; rho, phi -> M (a row of dim): (2.117), pc_k_polar */
+    PC_KS_ROTATE       /* C, A, B; phi -> A rotated about C towards B: pc_k_polar with rho = |CA| */
 } pc_konop_scheme_kind;
 
 /* How many points the scheme takes. */

@@ -118,6 +118,29 @@ int pc_triples_name(pc_triples_names *nm, const char *s) {
     return nm->n++;
 }
 
+int pc_triples_index(pc_triples_table *t, const char *name, int *idx) {
+    *idx = pc_triples_name(&t->nm, name);
+    return *idx < 0 ? PC_EARG : PC_OK;
+}
+
+int pc_triples_give(pc_triples_table *t, const char *name, int n, const double *h) {
+    double x[PC_MAXDIM + 1];
+    if (!h || n < 2 || n > PC_MAXDIM || (t->dim && n != t->dim)) return PC_EDIM;
+    memcpy(x, h, sizeof(double) * (size_t)(n + 1));
+    if (pc_snap_weight(n, x) != PC_KIND_POINT) return PC_EDIM;
+    int i;
+    if (pc_triples_index(t, name, &i) != PC_OK) return PC_EARG;
+    t->dim = n, t->known[i] = 1;
+    memcpy(t->pts + i * n, x, sizeof(double) * (size_t)n);
+    return PC_OK;
+}
+
+int pc_triples_table_plan(pc_triples_table *t, int ntri, const char *result, pc_triples_plan *plan) {
+    int res = pc_triples_name(&t->nm, result);   /* -1 beyond the names: not determined */
+    return pc_triples_plan_make(t->nm.n, ntri, (const int (*)[3])t->tri, t->known, t->cur[0], t->cur[1],
+                                t->cur[2], res, plan);
+}
+
 void pc_triples_step_text(const pc_triples_plan *plan, int s, const pc_triples_names *nm, char *buf, size_t size) {
     const pc_triple_step *p = &plan->step[s];
     snprintf(buf, size, "%s = %s%s x %s%s", nm->name[p->x], nm->name[p->a], nm->name[p->b], nm->name[p->c],

@@ -47,6 +47,25 @@ typedef struct {
     const char *name[PC_TRIPLES_MAXPTS];
 } pc_triples_names;
 int pc_triples_name(pc_triples_names *nm, const char *s);
+/* A table as a caller reads it by names (conic.scheme): the names, the given points (rows of
+ * dim; dim 0 before the first), the triples and the current point by index. */
+typedef struct {
+    pc_triples_names nm;
+    int dim, cur[3];
+    unsigned char known[PC_TRIPLES_MAXPTS];
+    double pts[PC_TRIPLES_MAXPTS * PC_MAXDIM];
+    int tri[PC_TRIPLES_MAXTRI][3];
+} pc_triples_table;
+/* The index of name in t (added when new) into *idx: PC_EARG beyond PC_TRIPLES_MAXPTS names. */
+int pc_triples_index(pc_triples_table *t, const char *name, int *idx);
+/* Give t the point name = h (n + 1 homogeneous numbers; h NULL: no value): PC_EDIM unless it
+ * is a point (its weight snapped to 1, pc_snap_weight) of 2-D or more and of the dimension of
+ * the points before, PC_EARG beyond PC_TRIPLES_MAXPTS names. */
+int pc_triples_give(pc_triples_table *t, const char *name, int n, const double *h);
+/* The plan of result from t's first ntri triples, given points and current point:
+ * pc_triples_plan_make's status (PC_EDOMAIN for a result beyond the names). */
+int pc_triples_table_plan(pc_triples_table *t, int ntri, const char *result, pc_triples_plan *plan);
+
 /* Step s of the plan as the book writes it, "A = A3A2 x A4A5", into buf (size bytes). */
 void pc_triples_step_text(const pc_triples_plan *plan, int s, const pc_triples_names *nm, char *buf, size_t size);
 

@@ -140,6 +140,18 @@ static void test_simplex_ratio(void **state) {
     assert_true(fabs(r - 1) > 0.1);
     const double bad[9] = {0.2, 0.3, 0.4, 0.6, 0.1, 0.3, 0.1, 0.7, 0.2};
     assert_int_equal(pc_k_simplex_ratio(2, bad, &r), PC_EDOMAIN);
+    /* konopatsky.simplex_ratio's entry: a square matrix, the failures as rows */
+    pc_why_call why;
+    double ident[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    assert_int_equal(pc_k_simplex_ratio_rows(3, 3, ident, &r, &why), PC_OK);
+    assert_true(fabs(r - 1) <= 1e-15);
+    assert_null(why.row[0].op);
+    assert_int_equal(pc_k_simplex_ratio_rows(2, 3, ident, &r, &why), PC_EDIM);
+    assert_int_equal(why.row[0].arg, 1);
+    assert_string_equal(why.row[0].text, "must hold 2 to 9 rows of as many numbers (a square matrix), got 2 rows of 3");
+    double off[4] = {1, 1, 0, 1};
+    assert_int_equal(pc_k_simplex_ratio_rows(2, 2, off, &r, &why), PC_EDOMAIN);
+    assert_string_equal(why.row[0].text, "each row's parameters must sum to 1 (the membership condition)");
 }
 
 static void test_meet_line_plane(void **state) {

@@ -74,7 +74,18 @@ static void test_made(void **state) {
     pc_curve_release(c);
 }
 
+/* the first form of each spec table, its 'by' choices the forms from it */
+static void test_base(void **state) {
+    (void)state;
+    assert_int_equal(pc_konop_form_base("conic.hyperbola"), PC_KC_HYPERBOLA_ANGLE);
+    assert_int_equal(pc_konop_form_base("conic.reparam") + 1, PC_KC_PARABOLA_SIGMA);
+    assert_int_equal(pc_konop_form_base("conic.cycloid"), PC_KC_CYCLOID);
+    assert_int_equal(pc_konop_form_base("conic.sinusoid"), PC_KC_SINUSOID);
+    assert_int_equal(pc_konop_form_base("conic.ed"), -1);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_checks), cmocka_unit_test(test_made)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_checks), cmocka_unit_test(test_made),
+                                       cmocka_unit_test(test_base)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

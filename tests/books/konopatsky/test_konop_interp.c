@@ -157,6 +157,18 @@ static void test_adaptive(void **state) {
     assert_true(pc_interp_adaptive_why(PC_ECOINCIDENT, 0, why, sizeof why));
     assert_string_equal(why, "the first and last nodes have the same coordinate on axis 1");
     assert_false(pc_interp_adaptive_why(PC_OK, 0, why, sizeof why));
+    /* interp.adaptive's entry: the axis counted from 1, the failures as rows */
+    pc_why_call why_row;
+    assert_int_equal(pc_interp_adaptive(2, 3, same, 3, v, &why_row), PC_EDIM);
+    assert_int_equal(why_row.row[0].arg, 2);
+    assert_string_equal(why_row.row[0].text, "must be an axis number 1..2, got 3");
+    assert_int_equal(pc_interp_adaptive(2, 3, same, 1, v, &why_row), PC_ECOINCIDENT);
+    assert_string_equal(why_row.row[0].op, "interp.adaptive");
+    assert_string_equal(why_row.row[0].text, "the first and last nodes have the same coordinate on axis 1");
+    double ok[6] = {0, 0, 1, 5, 3, 1};
+    assert_int_equal(pc_interp_adaptive(2, 3, ok, 1, v, &why_row), PC_OK);
+    assert_null(why_row.row[0].op);
+    NEAR(v[1], 1.0 / 3, 1e-15);
 }
 
 /* §4.11 the prototypes against the book's closed forms */

@@ -10,6 +10,7 @@
 #include "oneratio.h"
 #include "konop_schemes.h"
 #include "konop_curves.h"
+#include "approx.h"
 
 #define NEAR(a, b, tol) assert_true(fabs((a) - (b)) <= (tol))
 
@@ -97,6 +98,27 @@ static void test_numbers(void **state) {
     NEAR(k, 0.25, 1e-15);
     assert_int_equal(pc_konop_number(PC_KM_ED_TO_CEVA, 0, NULL, (double[]){1}, &k), PC_EDOMAIN);
     assert_int_equal(pc_konop_npoints(PC_KM_CEVA_TO_ED), 0);
+    /* (1.2) with l1 = l2 = l3 = 1 (the midpoints): k = 2/8 */
+    assert_int_equal(pc_konop_number(PC_KM_AREA_K, 0, NULL, (double[]){1, 1, 1}, &k), PC_OK);
+    NEAR(k, 0.25, 1e-15);
+    assert_int_equal(pc_konop_number(PC_KM_AREA_K, 0, NULL, (double[]){-1, 1, 1}, &k), PC_EPOLE);
+    assert_int_equal(pc_konop_npoints(PC_KM_AREA_K), 0);
+    /* the lists: fP = fQ = 1/4 avoids (1 +- sqrt 2)/2 of (2.151); 3 Chebyshev nodes on [-1, 1] */
+    double u[64], uref[64];
+    int n, nref;
+    assert_int_equal(pc_konop_list(PC_KM_CONES_EXCLUDED, (double[]){0.25, 0.25}, u, &n), PC_OK);
+    assert_int_equal(pc_cones_excluded(0.25, 0.25, uref, &nref), PC_OK);
+    assert_int_equal(n, nref);
+    for (int i = 0; i < n; i++) NEAR(u[i], uref[i], 0);
+    NEAR(u[0], (1 - sqrt(2)) / 2, 1e-15);
+    assert_int_equal(pc_konop_list(PC_KM_CHEBYSHEV, (double[]){3, -1, 1}, u, &n), PC_OK);
+    assert_int_equal(n, 3);
+    NEAR(u[0], -sqrt(3) / 2, 1e-15);
+    NEAR(u[1], 0, 1e-15);
+    NEAR(u[2], sqrt(3) / 2, 1e-15);
+    assert_int_equal(pc_konop_list(PC_KM_CHEBYSHEV, (double[]){3, 1, 1}, u, &n), PC_EDOMAIN);
+    assert_int_equal(pc_konop_list(PC_KM_AREA_K, (double[]){1, 1, 1}, u, &n), PC_EDOMAIN);
+    assert_int_equal(pc_konop_kind_of("approx.chebyshev"), PC_KM_CHEBYSHEV);
 }
 
 /* the schemes by kind: their own functions' points, packed in order */
@@ -148,6 +170,17 @@ static void test_schemes(void **state) {
     assert_int_equal(pc_konop_scheme(PC_KS_FIVE, 2, five, x, o5), PC_OK);
     assert_int_equal(pc_conic_five_scheme(2, five, five + 2, five + 4, five + 6, five + 8, 0.3, r5), PC_OK);
     for (int i = 0; i < 8 * 3; i++) NEAR(o5[i], r5[i], 0);
+    /* C = (0, 0), A = (5, 0), B = (0, 3): rho 2 at phi = pi/2 is (0, 2); the rotation of A by
+     * pi/2 towards B is (0, 5) */
+    assert_int_equal(pc_konop_scheme(PC_KS_POLAR, 2, cab, (double[]){2, M_PI / 2}, out), PC_OK);
+    NEAR(out[0], 0, 1e-15);
+    NEAR(out[1], 2, 1e-15);
+    assert_int_equal(pc_konop_scheme(PC_KS_ROTATE, 2, cab, (double[]){M_PI / 2}, out), PC_OK);
+    NEAR(out[0], 0, 1e-15);
+    NEAR(out[1], 5, 1e-15);
+    double flat3[6] = {0, 0, 1, 0, 2, 0};
+    assert_int_equal(pc_konop_scheme(PC_KS_ROTATE, 2, flat3, (double[]){1}, out), PC_ECOLLINEAR);
+    assert_int_equal(pc_konop_scheme_npoints(PC_KS_POLAR), 3);
 }
 
 /* the kinds by the names the API gives them */
@@ -165,6 +198,9 @@ static void test_names(void **state) {
     assert_string_equal(fields, "p p n n");
     assert_int_equal(pc_konop_scheme_of("oneratio.desargues_scheme", &fields), PC_KS_DESARGUES);
     assert_int_equal(pc_konop_scheme_of("conic.ed", &fields), -1);
+    assert_int_equal(pc_konop_kind_of("konopatsky.area_k"), PC_KM_AREA_K);
+    assert_int_equal(pc_konop_scheme_of("konopatsky.rotate", &fields), PC_KS_ROTATE);
+    assert_string_equal(fields, "p");
 }
 
 int main(void) {

@@ -101,8 +101,44 @@ static void test_names(void **state) {
     assert_int_equal(pc_triples_name(&nm, "Y"), -1);         /* full */
 }
 
+/* a table given by names, as conic.scheme reads it: system (b) with its points as values */
+static void test_table(void **state) {
+    (void)state;
+    pc_triples_table t = {0};
+    const char *given[] = {"A1", "A2", "A3", "A4", "A5"};
+    for (int i = 0; i < 5; i++) {
+        const double h[3] = {PTS[2 * i], PTS[2 * i + 1], 1 + 1e-12};   /* snapped to a point */
+        assert_int_equal(pc_triples_give(&t, given[i], 2, h), PC_OK);
+    }
+    assert_int_equal(t.dim, 2);
+    NEAR(t.pts[2 * A3 + 1], PTS[2 * A3 + 1], 1e-11);   /* divided by the weight */
+    assert_int_equal(pc_triples_give(&t, "V", 2, (const double[]){1, 0, 0}), PC_EDIM);       /* a vector */
+    assert_int_equal(pc_triples_give(&t, "H", 2, (const double[]){2, 2, 2}), PC_EDIM);       /* weight 2 */
+    assert_int_equal(pc_triples_give(&t, "W", 3, (const double[]){1, 0, 0, 1}), PC_EDIM);    /* 3-D */
+    assert_int_equal(pc_triples_give(&t, "N", 2, NULL), PC_EDIM);
+    const char *tri[7][3] = {{"A1", "A", "B"}, {"A2", "B", "C"}, {"A3", "A2", "A"}, {"A4", "A5", "A"},
+                             {"A5", "A1", "C"}, {"M", "A3", "B"}, {"M", "A4", "C"}};
+    for (int j = 0; j < 7; j++)
+        for (int k = 0; k < 3; k++) assert_int_equal(pc_triples_index(&t, tri[j][k], &t.tri[j][k]), PC_OK);
+    const char *cur[3] = {"C", "A1", "A5"};
+    for (int k = 0; k < 3; k++) assert_int_equal(pc_triples_index(&t, cur[k], &t.cur[k]), PC_OK);
+    pc_triples_plan plan;
+    assert_int_equal(pc_triples_table_plan(&t, 7, "M", &plan), PC_OK);
+    assert_int_equal(plan.nsteps, 3);
+    assert_int_equal(plan.result, PM);
+    assert_int_equal(pc_triples_table_plan(&t, 7, "Z", &plan), PC_EDOMAIN);   /* on no line */
+    char name[PC_TRIPLES_MAXPTS][16];
+    int idx;
+    for (int i = t.nm.n; i < PC_TRIPLES_MAXPTS; i++) {
+        snprintf(name[i], sizeof name[i], "X%d", i);
+        assert_int_equal(pc_triples_index(&t, name[i], &idx), PC_OK);
+    }
+    assert_int_equal(pc_triples_index(&t, "Y", &idx), PC_EARG);
+    assert_int_equal(pc_triples_give(&t, "Y", 2, (const double[]){1, 1, 1}), PC_EARG);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_system_b), cmocka_unit_test(test_system_a),
-                                       cmocka_unit_test(test_names)};
+                                       cmocka_unit_test(test_names), cmocka_unit_test(test_table)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
