@@ -216,7 +216,7 @@ PCL_BODY(l_curve, a) {
     int st;
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     if (pcl_isequation(L, 1))                  /* a compiled point equation (l_expr.c) */
-        return pcl_push_made(L, pcl_eq_curve(L, a[1].x, a[2].x, &st), &st, "equation");
+        return pcl_push_made(L, pcl_eq_object(L, 1, &a[1].x, &a[2].x, &st), &st, "equation");
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -406,18 +406,15 @@ PCL_METHOD(c_monomial, lcurve *u, a) {
     return 1;
 }
 
-/* c:tangent(t) and c:normal(t), one body told apart by the declared name (pc_curve_frame) */
+/* c:tangent(t), c:normal(t) (pc_curve_frame) and c:curvature(t), one body told apart by the
+ * declared name */
 PCL_METHOD(c_frame, lcurve *u, a) {
-    int normal = !strcmp(pcl_name(L), "c:normal");
+    int normal = !strcmp(pcl_name(L), "c:normal"), curvature = !strcmp(pcl_name(L), "c:curvature");
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
-    pcl_check(L, pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL), pc_curve_why);
+    pcl_check(L, curvature ? pc_curve_curvature(u->c, a[0].x, e) : pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL),
+              pc_curve_why);
+    if (curvature) return pcl_push_results(L, 0, "n", e[0]);
     return pcl_push_results(L, u->c->dim, "v", normal ? nrm : e);
-}
-
-PCL_METHOD(c_curvature, lcurve *u, a) {
-    double k;
-    pcl_check(L, pc_curve_curvature(u->c, a[0].x, &k), pc_curve_why);
-    return pcl_push_results(L, 0, "n", k);
 }
 
 /* ---- operations --------------------------------------------------------------------------------- */
@@ -601,7 +598,7 @@ static const pcl_fn methods[] = {
     {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve", .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
     METHOD("c:tangent", c_frame, t_arg, "vector", "The unit tangent."),
     METHOD("c:normal", c_frame, t_arg, "vector", "The unit principal normal (in the plane: the tangent turned by +90 degrees)."),
-    METHOD("c:curvature", c_curvature, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
+    METHOD("c:curvature", c_frame, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
     METHOD("c:split", c_split, t_arg, "left, right", "The two parts at t (de Casteljau, knot insertion), of the same kind."),
     METHOD("c:sub", c_sub, ab_args, "curve", "The part over [a, b], of the same kind."),
     METHOD("c:insert_knot", c_insert_knot, u_arg, "curve", "The same B-spline with the knot u inserted (one more control point)."),

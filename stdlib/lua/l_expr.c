@@ -331,13 +331,6 @@ PCL_METHOD(eq_expanded, leq *e, a) {
     return axes;
 }
 
-static int eq_concat(lua_State *L) {
-    luaL_tolstring(L, 1, NULL);
-    luaL_tolstring(L, 2, NULL);
-    lua_concat(L, 2);
-    return 1;
-}
-
 /* M:sample(a, b, n [, into]): n values at t = a .. b in C, into a new samples object or into the
  * one given (of that size: a renderer resampling every frame allocates nothing) */
 static const pcl_arg sample_args[] = {A_NUM("a"), A_NUM("b"),
@@ -415,18 +408,13 @@ static int s_tostring(lua_State *L) {
     return 1;
 }
 
-/* the curve or surface of the point equation at 1 over the box lo..hi of its parameters */
-static void *eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
+void *pcl_eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
     char why[1024];
     pc_expr_prog *prog = pc_expr_compile_point(pool(L), toeq(L, 1)->id, nwant, lo, hi, why, sizeof why);
     if (!prog) pcl_error(L, "%s: %s", pcl_name(L), luaL_gsub(L, why, "@1", luaL_tolstring(L, 1, NULL)));
     if (nwant == 1) return pc_expr_curve(prog, lo[0], hi[0], status);
     return pc_expr_surface(prog, lo[0], hi[0], lo[1], hi[1], status);
 }
-
-pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) { return eq_object(L, 1, &t0, &t1, status); }
-
-pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *st) { return eq_object(L, 2, lo, hi, st); }
 
 #define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = self_eq, .selftype = "equation"}
 static const pcl_fn methods[] = {
@@ -454,7 +442,7 @@ void pcl_open_expr(lua_State *L) {
 
     static const luaL_Reg meta[] = {
         {"__add", m_add}, {"__sub", m_sub}, {"__mul", m_mul}, {"__div", m_div}, {"__unm", m_unm},
-        {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", eq_concat},
+        {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", pcl_concat},
         {"__gc", eq_gc}, {NULL, NULL}};
     pcl_open_type(L, EQ_MT, meta, call, methods, eq_index);
     static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};
