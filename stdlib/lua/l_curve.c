@@ -362,16 +362,13 @@ PCL_METHOD(c_call, lcurve *u, a) {
 }
 
 /* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
- * "left" is asked for.  The side may stand in the order's place: read_order gives it in n. */
+ * "left" is asked for.  The side may stand in the order's place: read_order reads it as the
+ * side declared next (a + 1), its choice in s and n, the order 1. */
 static int read_order(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tostring(L, idx) : NULL;
-    if (s && strcmp(s, "left") && strcmp(s, "right"))
-        return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
-    out->x = s ? 1 : lua_tonumber(L, idx);
-    out->n = s ? (s[0] == 'l' ? -1 : 1) : 0;
-    return s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 &&
-                 out->x <= PC_CURVE_MAXDEG);
+    if (lua_type(L, idx) == LUA_TSTRING) pcl_readone(L, idx, 2, 0, a + 1, 0, out);
+    out->x = out->s ? 1 : lua_tonumber(L, idx);
+    return out->s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 &&
+                      out->x <= PC_CURVE_MAXDEG);
 }
 static const char *const SIDES[] = {"left", "right", NULL};
 static const pcl_arg deriv_args[] = {A_NUM("t"),
@@ -379,7 +376,8 @@ static const pcl_arg deriv_args[] = {A_NUM("t"),
      .expect = "a whole number from 1 to 64, or \"left\" / \"right\""},
     {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
 PCL_METHOD(c_deriv, lcurve *u, a) {
-    int order = a[1].present ? (int)a[1].x : 1, side = a[2].present ? (a[2].n ? 1 : -1) : a[1].n;
+    const pcl_val *s = a[2].present ? &a[2] : &a[1];   /* the side, in its place or in the order's */
+    int order = a[1].present ? (int)a[1].x : 1, side = s->s ? (s->n ? 1 : -1) : 0;
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
     int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
     if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
