@@ -205,8 +205,7 @@ PCL_BODY(l_interpolate, a) {
     return pcl_push_made(L, c, &st, NULL);
 }
 
-static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
+static int read_curve_fn(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     return pcl_isequation(L, idx) || pcl_callable(L, idx);
 }
 static const pcl_arg curve_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_curve_fn,
@@ -247,10 +246,9 @@ static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g, int *lua) {
     else return 0;
     return 1;
 }
-static int read_g(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+static int read_g(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     pc_gfun g;
     int lua;
-    (void)a, (void)out;
     return to_g(L, idx, PC_G_CUBIC, &g, &lua);
 }
 
@@ -341,8 +339,7 @@ PCL_BODY(l_sphdir, a) {
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 /* c(t), and c(u^2) of a scalar equation: a single-piece Bezier composed with it (l_expr.c) */
-static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_t(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x)) || pcl_isequation(L, idx);
 }

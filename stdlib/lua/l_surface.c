@@ -33,10 +33,7 @@ int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const 
     return 1;
 }
 
-void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
-    int ok = PC_OK;
-    pcl_push_made_surface(L, s, &ok, kind);
-}
+void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) { pcl_push_made_surface(L, s, &(int){PC_OK}, kind); }
 
 /* The receiver of a method: a live surface (the layer arms the callbacks of a Lua surface). */
 static void *self_surf(lua_State *L, int idx) {
