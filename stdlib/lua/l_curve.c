@@ -282,9 +282,7 @@ static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
     luaL_checktype(L, arg, LUA_TTABLE);
     for (int i = 0; i < count; i++) {
         lua_geti(L, arg, i + 1);
-        int isnum;
-        buf[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum) buf[i] = NAN;
+        buf[i] = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : NAN;
         lua_pop(L, 1);
     }
     return buf;
