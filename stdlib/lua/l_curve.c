@@ -205,8 +205,7 @@ PCL_BODY(l_interpolate, a) {
     return pcl_push_made(L, c, &st, NULL);
 }
 
-static int read_curve_fn(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a, (void)out;
+static int read_curve_fn(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     return pcl_isequation(L, idx) || pcl_callable(L, idx);
 }
 static const pcl_arg curve_args[] = {{.name = "f", .kind = PCL_ANY, .read = read_curve_fn,
@@ -216,7 +215,7 @@ PCL_BODY(l_curve, a) {
     int st;
     if (!(a[2].x > a[1].x)) return pcl_argfail(L, 3, "must be greater than t0");
     if (pcl_isequation(L, 1))                  /* a compiled point equation (l_expr.c) */
-        return pcl_push_made(L, pcl_eq_curve(L, a[1].x, a[2].x, &st), &st, "equation");
+        return pcl_push_made(L, pcl_eq_object(L, 1, &a[1].x, &a[2].x, &st), &st, "equation");
     lua_settop(L, 3);
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -247,10 +246,9 @@ static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g, int *lua) {
     else return 0;
     return 1;
 }
-static int read_g(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
+static int read_g(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     pc_gfun g;
     int lua;
-    (void)a, (void)out;
     return to_g(L, idx, PC_G_CUBIC, &g, &lua);
 }
 
@@ -284,9 +282,7 @@ static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
     luaL_checktype(L, arg, LUA_TTABLE);
     for (int i = 0; i < count; i++) {
         lua_geti(L, arg, i + 1);
-        int isnum;
-        buf[i] = lua_tonumberx(L, -1, &isnum);
-        if (!isnum) buf[i] = NAN;
+        buf[i] = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : NAN;
         lua_pop(L, 1);
     }
     return buf;
@@ -341,8 +337,7 @@ PCL_BODY(l_sphdir, a) {
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 /* c(t), and c(u^2) of a scalar equation: a single-piece Bezier composed with it (l_expr.c) */
-static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_t(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x)) || pcl_isequation(L, idx);
 }
@@ -362,16 +357,13 @@ PCL_METHOD(c_call, lcurve *u, a) {
 }
 
 /* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
- * "left" is asked for.  The side may stand in the order's place: read_order gives it in n. */
+ * "left" is asked for.  The side may stand in the order's place: read_order reads it as the
+ * side declared next (a + 1), its choice in s and n, the order 1. */
 static int read_order(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
-    const char *s = lua_type(L, idx) == LUA_TSTRING ? lua_tostring(L, idx) : NULL;
-    if (s && strcmp(s, "left") && strcmp(s, "right"))
-        return pcl_fail(L, "argument #2 (side) must be \"left\" or \"right\", got \"%s\"", s);
-    out->x = s ? 1 : lua_tonumber(L, idx);
-    out->n = s ? (s[0] == 'l' ? -1 : 1) : 0;
-    return s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 &&
-                 out->x <= PC_CURVE_MAXDEG);
+    if (lua_type(L, idx) == LUA_TSTRING) pcl_readone(L, idx, 2, 0, a + 1, 0, out);
+    out->x = out->s ? 1 : lua_tonumber(L, idx);
+    return out->s || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && out->x >= 1 &&
+                      out->x <= PC_CURVE_MAXDEG);
 }
 static const char *const SIDES[] = {"left", "right", NULL};
 static const pcl_arg deriv_args[] = {A_NUM("t"),
@@ -379,7 +371,8 @@ static const pcl_arg deriv_args[] = {A_NUM("t"),
      .expect = "a whole number from 1 to 64, or \"left\" / \"right\""},
     {.name = "side", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = SIDES, .dflt = 1}, PCL_END};
 PCL_METHOD(c_deriv, lcurve *u, a) {
-    int order = a[1].present ? (int)a[1].x : 1, side = a[2].present ? (a[2].n ? 1 : -1) : a[1].n;
+    const pcl_val *s = a[2].present ? &a[2] : &a[1];   /* the side, in its place or in the order's */
+    int order = a[1].present ? (int)a[1].x : 1, side = s->s ? (s->n ? 1 : -1) : 0;
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
     int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
     if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
@@ -406,18 +399,15 @@ PCL_METHOD(c_monomial, lcurve *u, a) {
     return 1;
 }
 
-/* c:tangent(t) and c:normal(t), one body told apart by the declared name (pc_curve_frame) */
+/* c:tangent(t), c:normal(t) (pc_curve_frame) and c:curvature(t), one body told apart by the
+ * declared name */
 PCL_METHOD(c_frame, lcurve *u, a) {
-    int normal = !strcmp(pcl_name(L), "c:normal");
+    int normal = !strcmp(pcl_name(L), "c:normal"), curvature = !strcmp(pcl_name(L), "c:curvature");
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
-    pcl_check(L, pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL), pc_curve_why);
+    pcl_check(L, curvature ? pc_curve_curvature(u->c, a[0].x, e) : pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL),
+              pc_curve_why);
+    if (curvature) return pcl_push_results(L, 0, "n", e[0]);
     return pcl_push_results(L, u->c->dim, "v", normal ? nrm : e);
-}
-
-PCL_METHOD(c_curvature, lcurve *u, a) {
-    double k;
-    pcl_check(L, pc_curve_curvature(u->c, a[0].x, &k), pc_curve_why);
-    return pcl_push_results(L, 0, "n", k);
 }
 
 /* ---- operations --------------------------------------------------------------------------------- */
@@ -601,7 +591,7 @@ static const pcl_fn methods[] = {
     {.name = "c:monomial", .fn = c_monomial, .args = piece_opt, .sig = "c:monomial([piece]) -> {{a0, a1, ...}, {b0, b1, ...}, ... [, w = {...}]}", .self = self_curve, .selftype = "curve", .help = "The power-basis coefficients of a Bezier or B-spline piece (default 1) in the curve's own parameter: x(t) = a0 + a1 t + ..., one list per coordinate (ch. 4-5 print their results so); w the weight polynomial of a rational curve (the coordinates' lists are then its numerators)."},
     METHOD("c:tangent", c_frame, t_arg, "vector", "The unit tangent."),
     METHOD("c:normal", c_frame, t_arg, "vector", "The unit principal normal (in the plane: the tangent turned by +90 degrees)."),
-    METHOD("c:curvature", c_curvature, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
+    METHOD("c:curvature", c_frame, t_arg, "number", "The curvature: signed in the plane (positive turning counter-clockwise), unsigned in space."),
     METHOD("c:split", c_split, t_arg, "left, right", "The two parts at t (de Casteljau, knot insertion), of the same kind."),
     METHOD("c:sub", c_sub, ab_args, "curve", "The part over [a, b], of the same kind."),
     METHOD("c:insert_knot", c_insert_knot, u_arg, "curve", "The same B-spline with the knot u inserted (one more control point)."),

@@ -48,7 +48,7 @@ static pc_expr_pool *pool(lua_State *L) {
     return *pp;
 }
 
-static leq *toeq(lua_State *L, int idx) { return pcl_tagged_udata(L, idx, &EQ_TAG, EQ_MT, sizeof(leq), 0); }
+static void *toeq(lua_State *L, int idx) { return pcl_tagged_udata(L, idx, &EQ_TAG, EQ_MT, sizeof(leq), 0); }
 
 /* Samples: exactly the header and n values of max(dim, 1) numbers (pcl.h: forged userdata). */
 static void *tosamples(lua_State *L, int idx) {
@@ -164,7 +164,7 @@ static int math_fn(lua_State *L) {
     if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return lua_tocfunction(L, PCL_UPVALUE(1))(L);
     pc_expr_how how = {.fn = PC_EX_SIN + (pc_expr_op)lua_tointeger(L, PCL_UPVALUE(2))};   /* in the order of MATHDECL */
     pcl_val base = {0};
-    if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), toeq(L, 1)->id))   /* log(x, base) */
+    if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), node_of(L, 1)))   /* log(x, base) */
         pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
     how.base = base.x;
     return apply(L, PC_EQV_MATH, 1, 1, &how);
@@ -220,8 +220,6 @@ static pc_expr_prog *prog_of(lua_State *L, leq *e) {
     if (!e->prog) pcl_fail(L, "%s", pc_expr_why(st));
     return e->prog;
 }
-
-static void *self_eq(lua_State *L, int idx) { return toeq(L, idx); }
 
 /* The table at 2 as an option table whose keys are the parameters in[0..n-1], each declared
  * as key (keys: n + 1), into v: M{t = ..., s = ...} and M:with{s = ...} are read and worded by
@@ -331,13 +329,6 @@ PCL_METHOD(eq_expanded, leq *e, a) {
     return axes;
 }
 
-static int eq_concat(lua_State *L) {
-    luaL_tolstring(L, 1, NULL);
-    luaL_tolstring(L, 2, NULL);
-    lua_concat(L, 2);
-    return 1;
-}
-
 /* M:sample(a, b, n [, into]): n values at t = a .. b in C, into a new samples object or into the
  * one given (of that size: a renderer resampling every frame allocates nothing) */
 static const pcl_arg sample_args[] = {A_NUM("a"), A_NUM("b"),
@@ -415,27 +406,22 @@ static int s_tostring(lua_State *L) {
     return 1;
 }
 
-/* the curve or surface of the point equation at 1 over the box lo..hi of its parameters */
-static void *eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
+void *pcl_eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status) {
     char why[1024];
-    pc_expr_prog *prog = pc_expr_compile_point(pool(L), toeq(L, 1)->id, nwant, lo, hi, why, sizeof why);
+    pc_expr_prog *prog = pc_expr_compile_point(pool(L), node_of(L, 1), nwant, lo, hi, why, sizeof why);
     if (!prog) pcl_error(L, "%s: %s", pcl_name(L), luaL_gsub(L, why, "@1", luaL_tolstring(L, 1, NULL)));
     if (nwant == 1) return pc_expr_curve(prog, lo[0], hi[0], status);
     return pc_expr_surface(prog, lo[0], hi[0], lo[1], hi[1], status);
 }
 
-pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status) { return eq_object(L, 1, &t0, &t1, status); }
-
-pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *st) { return eq_object(L, 2, lo, hi, st); }
-
-#define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = self_eq, .selftype = "equation"}
+#define METHOD(nm, f, a, forms, text) {.name = nm, .fn = f, .args = a, .sig = forms, .help = text, .self = toeq, .selftype = "equation"}
 static const pcl_fn methods[] = {
     METHOD("M:with", eq_with, with_args, "M:with{s = value | equation, ...} -> equation", "The one-parameter family M(t; s) at a value of s (or with s replaced by another equation)."),
     METHOD("M:show", eq_show, show_args, "M:show{A = A, B = B, ...} -> string", "The equation in the book's notation with the points named (tostring(M) prints them as P(x, y))."),
     METHOD("M:expanded", eq_expanded, NULL, "M:expanded() -> x, y, ...", "The coordinates expanded in powers of the equation's one parameter as the book prints them: x = 3t^2 - 2t + 1, or for a rational equation x = (numerator)/(denominator) with the denominator monic; numbers in %.6g; a scalar equation gives its one expression."),
     METHOD("M:sample", eq_sample, sample_args, "M:sample(a, b [, n = 1001 [, s]]) -> samples", "n values at evenly spaced t in [a, b], computed in C (into s when given): #s, s[i] (a point), s:sum()."),
     PCL_END};
-static const pcl_fn call[] = {{.name = "M", .fn = eq_call, .self = self_eq, .selftype = "equation", .key = "__call", .topic = "M(t)", .callname = 1, .sig = "M(t [, s ...]) -> value\nM{t = ..., s = ...} -> value", .help = "The equation's value at parameter values given in the order of M.params, or by name."}, PCL_END};
+static const pcl_fn call[] = {{.name = "M", .fn = eq_call, .self = toeq, .selftype = "equation", .key = "__call", .topic = "M(t)", .callname = 1, .sig = "M(t [, s ...]) -> value\nM{t = ..., s = ...} -> value", .help = "The equation's value at parameter values given in the order of M.params, or by name."}, PCL_END};
 static const pcl_fn sample_methods[] = {{.name = "s:sum", .fn = s_sum, .result = "number", .self = tosamples, .selftype = "samples object", .help = "The sum of every coordinate of the samples of M:sample (a checksum)."}, PCL_END};
 static const pcl_fn fns[] = {
     PCL_FN("param", l_param, param_args, "equation", "A symbolic parameter: local t = param \"t\"; then A*bar(t)^2 + 2*B*t*bar(t) + C*t^2 (with + - * / ^, lerp bar dot cross unit P V, math.sin ... and the smoothsteps) is an equation, not a value."),
@@ -454,7 +440,7 @@ void pcl_open_expr(lua_State *L) {
 
     static const luaL_Reg meta[] = {
         {"__add", m_add}, {"__sub", m_sub}, {"__mul", m_mul}, {"__div", m_div}, {"__unm", m_unm},
-        {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", eq_concat},
+        {"__pow", m_pow}, {"__eq", m_eq}, {"__tostring", eq_tostring}, {"__concat", pcl_concat},
         {"__gc", eq_gc}, {NULL, NULL}};
     pcl_open_type(L, EQ_MT, meta, call, methods, eq_index);
     static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};

@@ -169,7 +169,7 @@ static int l_tostring(lua_State *L) {
     return pcl_push_results(L, 0, "s", s);
 }
 
-static int l_concat(lua_State *L) {
+int pcl_concat(lua_State *L) {
     luaL_tolstring(L, 1, NULL);
     luaL_tolstring(L, 2, NULL);
     lua_concat(L, 2);
@@ -461,7 +461,7 @@ static const struct {
 
 static const luaL_Reg point_meta[] = {
     {"__add", l_add}, {"__sub", l_sub}, {"__mul", l_mul}, {"__div", l_div}, {"__unm", l_unm},
-    {"__eq", l_eq}, {"__len", l_len}, {"__tostring", l_tostring}, {"__concat", l_concat},
+    {"__eq", l_eq}, {"__len", l_len}, {"__tostring", l_tostring}, {"__concat", pcl_concat},
     {"__newindex", l_newindex}, {"__index", l_index},
     {NULL, NULL}
 };

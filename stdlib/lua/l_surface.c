@@ -33,10 +33,7 @@ int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const 
     return 1;
 }
 
-void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) {
-    int ok = PC_OK;
-    pcl_push_made_surface(L, s, &ok, kind);
-}
+void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) { pcl_push_made_surface(L, s, &(int){PC_OK}, kind); }
 
 /* The receiver of a method: a live surface (the layer arms the callbacks of a Lua surface). */
 static void *self_surf(lua_State *L, int idx) {
@@ -204,7 +201,7 @@ PCL_BODY(l_func, a) {
     if (!(a[2].x > a[1].x) || !(a[4].x > a[3].x)) return pcl_fail(L, "need u0 < u1 and v0 < v1");
     if (pcl_isequation(L, 1)) {                 /* a compiled point equation (l_expr.c) */
         double lo[2] = {a[1].x, a[3].x}, hi[2] = {a[2].x, a[4].x};
-        return made(L, pcl_eq_surface(L, lo, hi, &st), &st);
+        return made(L, pcl_eq_object(L, 2, lo, hi, &st), &st);
     }
     lua_pushvalue(L, 1);
     lua_pushnumber(L, a[1].x);
@@ -218,11 +215,14 @@ PCL_BODY(l_func, a) {
 }
 
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
+/* s(u, v), s:eval and s:normal, one body told apart by the declared name */
 PCL_METHOD(s_call, lsurf *u, a) {
+    int normal = !strcmp(pcl_name(L), "s:normal");
     double out[PC_MAXDIM];
     pc_why_call why;
-    pcl_check(L, pc_surface_eval_checked(pcl_name(L), u->s, a[0].x, a[1].x, out, &why), why.row);
-    return pcl_push_results(L, u->s->dim, "p", out);
+    int st = (normal ? pc_surface_normal_checked : pc_surface_eval_checked)(pcl_name(L), u->s, a[0].x, a[1].x, out, &why);
+    pcl_check(L, st, why.row);
+    return pcl_push_results(L, normal ? 3 : u->s->dim, normal ? "v" : "p", out);
 }
 
 PCL_METHOD(s_partials, lsurf *u, a) {
@@ -230,13 +230,6 @@ PCL_METHOD(s_partials, lsurf *u, a) {
     int d = u->s->dim;
     pcl_check(L, pc_surface_partials(u->s, a[0].x, a[1].x, out), NULL);
     return pcl_push_results(L, d, "p v v", out, out + d, out + 2 * d);
-}
-
-PCL_METHOD(s_normal, lsurf *u, a) {
-    double n[3];
-    pc_why_call why;
-    pcl_check(L, pc_surface_normal_checked(pcl_name(L), u->s, a[0].x, a[1].x, n, &why), why.row);
-    return pcl_push_results(L, 3, "v", n);
 }
 
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
@@ -357,7 +350,7 @@ static int s_tostring(lua_State *L) {
 static const pcl_fn methods[] = {
     METHOD("s:eval", s_call, uv_args, "point", "The point of the surface at (u, v), as s(u, v)."),
     METHOD("s:partials", s_partials, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
-    METHOD("s:normal", s_normal, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
+    METHOD("s:normal", s_call, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
     METHOD_SIG("s:iso", s_iso, iso_args, "s:iso(\"u\"|\"v\", value) -> curve", "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."),
     METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),
     METHOD_SIG("s:wireframe", s_wireframe, wireframe_args, "s:wireframe{nu = 10, nv = 10, color = c, tol = px, map = m, hidden = \"hide\"|\"dashed\", mesh = 48, silhouette = false, boundary = false}", "Draw the iso-lines as paths through map or the camera (nu or nv 0: one family only; silhouette: the outline too; boundary: the four edge curves); hidden = \"hide\" leaves out what the surface itself hides, \"dashed\" dashes it; with a camera's hidden mode the surface joins its scene."),

@@ -25,9 +25,8 @@ int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g);
 /* c(eq) of a single-piece Bezier curve c at the scalar equation at idx: push the composed
  * point equation and return 1; 0 if idx is no equation (raises for other curves). */
 int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx);
-/* curve(eq, t0, t1) and surface(eq, u0, u1, v0, v1) (lo < hi checked by the caller) of the
- * equation at 1: the core object (the membership condition raised here). */
-pc_curve *pcl_eq_curve(lua_State *L, double t0, double t1, int *status);
-pc_surface *pcl_eq_surface(lua_State *L, const double *lo, const double *hi, int *status);
+/* curve(eq, t0, t1) (nwant 1) and surface(eq, u0, u1, v0, v1) (nwant 2; lo < hi checked by the
+ * caller) of the equation at 1: the core object (the membership condition raised here). */
+void *pcl_eq_object(lua_State *L, int nwant, const double *lo, const double *hi, int *status);
 
 #endif

@@ -19,5 +19,7 @@ pcl_value *pcl_newvalue(lua_State *L, int n);
 /* Push a point (weight 1) or a vector (weight 0) of dimension n. */
 void pcl_pushpoint(lua_State *L, int n, const double *x);
 void pcl_pushvector(lua_State *L, int n, const double *x);
+/* __concat of points and equations: tostring of each operand, joined. */
+int pcl_concat(lua_State *L);
 
 #endif
