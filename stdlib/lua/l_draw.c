@@ -185,8 +185,7 @@ PCL_BODY(l_color, a) {
 
 static const pcl_arg palette_args[] = {
     {.name = "attribute", .kind = PCL_ANY, .read = pcl_read_attr, .dim = 1, .expect = "an attribute of the screen"},
-    {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
-     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"}, PCL_END};
+    A_ANY("colour", read_rgb, "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"), PCL_END};
 static int l_palette(lua_State *L) {
     pc_canvas *c = canvas(L);
     if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_palette_reset(c));
