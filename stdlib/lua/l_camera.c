@@ -154,11 +154,9 @@ static const pcl_fn methods[] = {
 void pcl_open_camera(lua_State *L) {
     int module = lua_gettop(L);
     pcl_register(L, module, fns, 0);
+    static const luaL_Reg tk[] = {{"draw_curve", tk_draw_curve}, {"nearest", tk_nearest}, {NULL, NULL}};
     pcl_private(L, module);
-    lua_pushcfunction(L, tk_draw_curve);
-    lua_setfield(L, -2, "draw_curve");
-    lua_pushcfunction(L, tk_nearest);
-    lua_setfield(L, -2, "nearest");
+    luaL_setfuncs(L, tk, 0);
     lua_getfield(L, -1, "curve_methods");
     lua_pushvalue(L, -2);                      /* c:draw's upvalue: _tk, for the Lua walkers */
     pcl_register(L, -2, methods, 1);

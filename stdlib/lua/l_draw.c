@@ -137,21 +137,11 @@ static int read_screen_flag(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, 
     return lua_type(L, idx) == LUA_TSTRING && !strcmp(lua_tostring(L, idx), "screen") && (out->x = 1);
 }
 
-/* A text: a string (or a number, shown as Lua shows it), without NUL bytes, which would cut
- * the label short in every writer. */
-static int read_text(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
-    if (lua_type(L, idx) != LUA_TSTRING && lua_type(L, idx) != LUA_TNUMBER) return 0;
-    size_t len;
-    out->s = lua_tolstring(L, idx, &len);
-    if (strlen(out->s) != len) return pcl_readfail(L, idx, "a string without NUL bytes");
-    return 1;
-}
-
 #define COLOR(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT, .read = stmt_color, .dflt = -1}
 #define OPTNUM(nm, flag, l, h, exp) {.name = nm, .kind = PCL_NUMBER, .flags = PCL_OPT | (flag), .lo = l, .hi = h, .dflt = NAN, .expect = exp}
 #define SCALE {.name = "scale", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 8, .dflt = 1}
 #define SCREEN_FLAG {.name = "mode", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_screen_flag, .expect = "\"screen\", a boolean or nil"}
-#define TEXT {.name = "text", .kind = PCL_ANY, .read = read_text, .expect = "a string"}
+#define TEXT {.name = "text", .kind = PCL_ANY, .read = pcl_read_bytes, .dim = 1, .expect = "a string"}
 
 /* ---- the statements ---------------------------------------------------------------------- */
 
@@ -195,8 +185,7 @@ PCL_BODY(l_color, a) {
 
 static const pcl_arg palette_args[] = {
     {.name = "attribute", .kind = PCL_ANY, .read = pcl_read_attr, .dim = 1, .expect = "an attribute of the screen"},
-    {.name = "colour", .kind = PCL_ANY, .read = read_rgb,
-     .expect = "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"}, PCL_END};
+    A_ANY("colour", read_rgb, "65536*blue + 256*green + red (each 0..63), \"#rrggbb\" or {r, g, b}"), PCL_END};
 static int l_palette(lua_State *L) {
     pc_canvas *c = canvas(L);
     if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_palette_reset(c));
@@ -302,21 +291,16 @@ PCL_PAIRS_BODY(l_point, a) {
 
 static const pcl_arg window_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),
                                       A_NUM("second corner y"), SCREEN_FLAG, PCL_END};
-static int l_window(lua_State *L) {
-    pc_canvas *c = canvas(L);
-    if (lua_isnone(L, 1)) return pc_window_reset(c), 0;
-    pcl_val a[5] = {0};
-    PCL_READ_PAIRS(L, a);
-    return pcl_check_canvas(L, c, pc_window(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x));
-}
-
 static const pcl_arg view_args[] = {A_X("first corner x"), A_NUM("first corner y"), A_X("second corner x"),
                                     A_NUM("second corner y"), COLOR("fill"), COLOR("border"), SCREEN_FLAG, PCL_END};
-static int l_view(lua_State *L) {
+/* window and view, by the name called; no argument resets */
+static int l_window(lua_State *L) {
     pc_canvas *c = canvas(L);
-    if (lua_isnone(L, 1)) return pcl_check_canvas(L, c, pc_view_reset(c));
-    pcl_val a[7] = {0};
+    int view = pcl_name(L)[0] == 'v';
+    if (lua_isnone(L, 1)) return view ? pcl_check_canvas(L, c, pc_view_reset(c)) : (pc_window_reset(c), 0);
+    pcl_val a[7];   /* PCL_READ_PAIRS sets what it reads */
     PCL_READ_PAIRS(L, a);
+    if (!view) return pcl_check_canvas(L, c, pc_window(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x));
     return pcl_check_canvas(L, c, pc_view_at(c, a[0].x, a[1].x, a[2].x, a[3].x, (int)a[4].x, (int)a[5].x, (int)a[6].x));
 }
 
@@ -544,7 +528,7 @@ static const pcl_fn fns[] = {
     {.name = "paint", .fn = l_paint, .args = paint_args, .sig = "paint(x, y [, c [, border]]) | paint(A [, c [, border]])", .help = "Flood-fill from (x, y) up to pixels of the border colour (default: the paint colour)."},
     {.name = "point", .fn = l_point, .args = point_args, .sig = "point(x, y) -> colour | point(A) -> colour", .help = "The colour number at (x, y), or -1 outside the view."},
     {.name = "window", .fn = l_window, .args = window_args, .sig = "window(x1, y1, x2, y2 [, \"screen\"])\nwindow()", .help = "World coordinates: (x1, y1)-(x2, y2) fill the view, y up (y down with \"screen\"); no argument: pixels again."},
-    {.name = "view", .fn = l_view, .args = view_args, .sig = "view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])\nview()", .help = "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it."},
+    {.name = "view", .fn = l_window, .args = view_args, .sig = "view(x1, y1, x2, y2 [, fill [, border [, \"screen\"]]])\nview()", .help = "A viewport in pixels: drawing is clipped to it and, without \"screen\", relative to it."},
     {.name = "save", .fn = l_save, .args = save_args, .sig = "save(path [, \"paper\"|\"screen\"])", .help = "Write the canvas: PNG, SVG, PPM, PDF, EPS or PS by the extension, atomically; \"paper\" prints dark ink on white; PDF, EPS and PS (and PNG, SVG after figure{}) in the print look."},
     {.name = "size", .fn = l_size, .args = NULL, .sig = "size() -> width, height, colours", .help = "The size of the canvas and its number of colours."},
     {.name = "last_point", .fn = l_last_point, .args = NULL, .sig = "last_point() -> x, y", .help = "The graphics cursor: the last point referenced, in world coordinates."},

@@ -2,6 +2,7 @@
  * module.  The RND state belongs to the Lua state: a userdata shared as upvalue by rnd,
  * randomize and seed; it starts at QBasic's initial seed. */
 #include "pcl_args.h"
+#include "pcl_core.h"   /* pcl_push_results */
 #include "qbnum.h"
 
 /* Any number, inf and NaN included (SINGLE overflows to inf; translated QBasic reports it),
@@ -22,8 +23,7 @@ static const pcl_arg range_args[] = {A_NUM("start"), A_NUM("limit"), A_NUMOPT("s
 PCL_BODY(l_f32, a) {
     double r = qb_f32(a[0].x);
     if (!isfinite(r) && !strcmp(pcl_name(L), "qb.csng")) return luaL_error(L, "Overflow");
-    lua_pushnumber(L, r);
-    return 1;
+    return pcl_push_results(L, 0, "n", r);
 }
 
 /* qb.cint and qb.clng, by the name called */
@@ -50,8 +50,7 @@ static qb_rnd_state *rnd_state(lua_State *L) {
 }
 
 PCL_BODY(l_rnd, a) {
-    lua_pushnumber(L, qb_rnd(rnd_state(L), a[0].present ? a[0].x : 1.0));
-    return 1;
+    return pcl_push_results(L, 0, "n", qb_rnd(rnd_state(L), a[0].present ? a[0].x : 1.0));
 }
 
 PCL_BODY(l_randomize, a) {

@@ -8,16 +8,6 @@
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */
 
-/* A string of lo..hi bytes (NUL bytes cut DRAW's commands short: hi 0 refuses them). */
-static int read_bytes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    size_t n;
-    if (lua_type(L, idx) != LUA_TSTRING) return 0;
-    out->s = lua_tolstring(L, idx, &n);
-    out->n = (int)n;
-    if (a->hi == 0) return strlen(out->s) == n || pcl_readfail(L, idx, "a string without zero bytes");
-    return (n >= a->lo && n <= a->hi) || pcl_readfail(L, idx, a->expect);
-}
-
 /* The integer argument k (value v) must lie in lo..hi, a range the screen sets. */
 static int in_range(lua_State *L, int k, double v, int lo, int hi) {
     if (v < lo || v > hi) pcl_argfail(L, k, "must be an integer from %d to %d, got %s", lo, hi, pcl_pushnum(L, v));
@@ -112,7 +102,7 @@ PCL_PAIRS_BODY(l_put_block, a) {
 
 /* ---- DRAW, pages, PMAP ------------------------------------------------------------------- */
 
-static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read = read_bytes, .expect = "a string"}, PCL_END};
+static const pcl_arg draw_args[] = {{.name = "commands", .kind = PCL_ANY, .read = pcl_read_bytes, .expect = "a string"}, PCL_END};
 PCL_BODY(l_draw, a) {
     pc_pages *p = pcl_pages(L);
     return pcl_check_canvas(L, p->c, pc_pages_draw(p, a[0].s));
@@ -120,7 +110,7 @@ PCL_BODY(l_draw, a) {
 
 /* paint_tile(x, y, tile [, border]): PAINT with a tile string (qbscreen.h) */
 static const pcl_arg paint_tile_args[] = {
-    A_X("x"), A_NUM("y"), {.name = "tile", .kind = PCL_ANY, .read = read_bytes, .lo = 1, .hi = 64, .expect = "a string of 1..64 bytes"},
+    A_X("x"), A_NUM("y"), {.name = "tile", .kind = PCL_ANY, .read = pcl_read_bytes, .lo = 1, .hi = 64, .expect = "a string of 1..64 bytes"},
     ATTR("border"), PCL_END};
 PCL_PAIRS_BODY(l_paint_tile, a) {
     const unsigned char *tile = (const unsigned char *)a[2].s;

@@ -25,6 +25,9 @@ int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors);
 /* An attribute 0..ncolors-1 of the screen drawn on (no "#rrggbb": QBasic's numbers) into
  * out->x; its message names the screen's range, as an attribute (a->dim 1) or a colour number. */
 int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
+/* A string of lo..hi bytes into out->s, out->n; hi 0: any length without NUL bytes, which would
+ * cut a label or DRAW's commands short; with a->dim 1 a number too, shown as Lua shows it. */
+int pcl_read_bytes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out);
 /* The userdata at idx if its block is a genuine one of size bytes tagged by tag (PCL_SELF,
  * pcl.h), else NULL: a canvas box, a block of get_block. */
 static inline void *pcl_tagged(lua_State *L, int idx, size_t size, const void *tag) {   /* inline: pset's path */
