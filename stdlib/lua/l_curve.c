@@ -352,8 +352,7 @@ PCL_METHOD(c_call, lcurve *u, a) {
     pcl_check(L, pc_stroke_value_checked(pcl_name(L), u->c, a[0].x, h, &why), why.row);
     if (strcmp(pcl_name(L), "c:xy")) return pcl_push_packed(L, d, "w", h);   /* a point, or a vector at infinity */
     if (h[d] == 0) return pcl_check(L, PC_IMPROPER, pc_curve_why);
-    for (int k = 0; k < d; k++) lua_pushnumber(L, h[k]);
-    return d;
+    return pcl_push_packed(L, d, "x", h);
 }
 
 /* c:deriv(t [, order] [, "left"|"right"]): any order; at a joint the right-hand piece unless
@@ -497,9 +496,7 @@ PCL_METHOD(c_piece, lcurve *u, a) {
     pc_why_call why;
     int i = number_arg(L, "piece", np, &a[0]);
     pcl_check(L, pc_stroke_piece_checked(pcl_name(L), u->c, i, a[1].x, x, &why), why.row);
-    if (!strcmp(pcl_name(L), "c:piece")) return pcl_push_results(L, d, "p", x);
-    for (int k = 0; k < d; k++) lua_pushnumber(L, x[k]);
-    return d;
+    return pcl_push_results(L, d, strcmp(pcl_name(L), "c:piece") ? "x" : "p", x);   /* c:piece_xy: the numbers */
 }
 
 /* c:coef([k]) -> a, b: the Fourier coefficient lists of coordinate k (a[0] .. a[n]) */

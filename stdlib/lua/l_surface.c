@@ -154,18 +154,7 @@ PCL_BODY(l_hermite, a) {   /* spec; P, Pu, Pv, Puv */
     return made(L, pc_surface_hermite(a[1].dim, a[1].list, a[2].list, a[3].list, a[4].list, &st), &st);
 }
 
-/* A curve of argument #1's dimension (ruled, coons: plain functions, so the value at idx is
- * argument #idx, declared by a, and a[1 - idx] declares argument #1). */
-static int read_like_first(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    pc_curve *c = pcl_tocurve(L, idx), *first = pcl_tocurve(L, 1);
-    if (!c) return 0;
-    if (idx > 1 && first && c->dim != first->dim)
-        pcl_argfail(L, idx, "is %d-D, but argument #1 (%s) is %d-D (mixed dimensions)", c->dim, a[1 - idx].name,
-                    first->dim);
-    out->obj = c;
-    return 1;
-}
-#define A_CURVE_LIKE(nm) {.name = nm, .kind = PCL_ANY, .read = read_like_first, .expect = "a curve"}
+#define A_CURVE_LIKE(nm) {.name = nm, .kind = PCL_CURVE, .flags = PCL_SAMEDIM}   /* of argument #1's dimension */
 
 static const pcl_arg ruled_args[] = {A_CURVE_LIKE("c0"), A_CURVE_LIKE("c1"), PCL_END};
 static const pcl_arg coons_args[] = {A_CURVE_LIKE("cu0"), A_CURVE_LIKE("cu1"), A_CURVE_LIKE("c0v"), A_CURVE_LIKE("c1v"),

@@ -433,6 +433,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         if (!dim) mismatch(L, c, idx, expected(L, a));
         if (a->dim && dim != a->dim)
             pcl_error(L, "%s: %s must be %s, got a %d-D one", c->fname, where(L, c), expected(L, a), dim);
+        check_dim(L, c, a, idx, dim);
         out->obj = cv ? (void *)cv : (void *)sf;
         out->n = dim;
         return;

@@ -38,7 +38,7 @@ typedef enum {
 #define PCL_REQ     0x02u  /* an option key that must be given (keys are optional otherwise) */
 #define PCL_RANGE   0x04u  /* numbers, integers: lo <= x <= hi */
 #define PCL_POS     0x08u  /* numbers: x > 0 */
-#define PCL_SAMEDIM 0x10u  /* points, vectors, locations, lists: the dimension of the first one */
+#define PCL_SAMEDIM 0x10u  /* points, vectors, locations, lists, curves: the dimension of the first one */
 #define PCL_CALLTABLE 0x20u /* the only argument, an options table: shown as NAME{...} */
 #define PCL_PAIR    0x40u  /* numbers: x of a pair x, y (the next argument) that may be one point */
 #define PCL_INF     0x80u  /* numbers: +-inf accepted (NaN is not) */

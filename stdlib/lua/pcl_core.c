@@ -19,8 +19,8 @@ int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table) {
 }
 
 /* One value of kind c from x: n a number, p a point, v a vector, h a homogeneous row (the point,
- * or the direction where its weight is 0), w a value of weight as given (w*P, a vector). */
-static void push_loc(lua_State *L, int dim, char c, const double *x) {
+ * or the direction where its weight is 0), w a value of weight as given (w*P, a vector); 1. */
+static int push_loc(lua_State *L, int dim, char c, const double *x) {
     double y[PC_MAXDIM];
     int inf = c == 'h' && fabs(x[dim]) <= 1e-12;
     if (c == 'n') {
@@ -35,6 +35,7 @@ static void push_loc(lua_State *L, int dim, char c, const double *x) {
     } else {
         pcl_pushpoint(L, dim, x);
     }
+    return 1;
 }
 
 /* the numbers a value of kind c takes in packed rows */
@@ -55,8 +56,15 @@ void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homog
     push_list(L, n, dim, homogeneous ? 'w' : 'p', rows);
 }
 
-/* push one value of kind c from ap; 0 when it is left out (o of NaN) */
+/* the dim numbers of x as as many results */
+static int push_coords(lua_State *L, int dim, const double *x) {
+    for (int k = 0; k < dim; k++) lua_pushnumber(L, x[k]);
+    return dim;
+}
+
+/* push the values of kind c from ap: their count, 0 when it is left out (o of NaN) */
 static int push_one(lua_State *L, int dim, char c, va_list *ap) {
+    if (c == 'x') return push_coords(L, dim, va_arg(*ap, const double *));
     if (c == 'n' || c == 'o') {
         double x = va_arg(*ap, double);
         if (c == 'o' && isnan(x)) return 0;
@@ -108,9 +116,9 @@ int pcl_push_results(lua_State *L, int dim, const char *spec, ...) {
 int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
     int named = strchr(spec, '=') != NULL, count = 0;
     if (named) lua_newtable(L);
-    for (const char *s = spec, *tok = s; *s; tok = s, count++) {
+    for (const char *s = spec, *tok = s; *s; tok = s) {
         char c = token(&s);
-        push_loc(L, dim, c, v);
+        count += c == 'x' ? push_coords(L, dim, v) : push_loc(L, dim, c, v);
         v += width(dim, c);
         if (named) store(L, tok);
     }
