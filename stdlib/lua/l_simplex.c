@@ -96,8 +96,7 @@ PCL_METHOD(l_ratio, pc_simplex *s, a) {
 }
 
 static int l_index(lua_State *L) {
-    pc_simplex *s = tosimplex(L, 1);
-    if (!s) return pcl_error(L, "index: not a simplex");
+    pc_simplex *s = pcl_meta_self(L, tosimplex(L, 1), "index: not a simplex");
     int isint;
     lua_Integer i = lua_tointegerx(L, 2, &isint);
     if (lua_type(L, 2) != LUA_TNUMBER) lua_rawget(L, lua_upvalueindex(1));    /* a method */
@@ -107,14 +106,12 @@ static int l_index(lua_State *L) {
 }
 
 static int l_len(lua_State *L) {
-    pc_simplex *s = tosimplex(L, 1);
-    if (!s) return pcl_error(L, "#: not a simplex");
+    pc_simplex *s = pcl_meta_self(L, tosimplex(L, 1), "#: not a simplex");
     return pcl_push_results(L, 0, "i", s->k + 1);
 }
 
 static int l_tostring(lua_State *L) {
-    pc_simplex *s = tosimplex(L, 1);
-    if (!s) return pcl_error(L, "tostring: not a simplex");
+    pc_simplex *s = pcl_meta_self(L, tosimplex(L, 1), "tostring: not a simplex");
     char buf[(PC_MAXDIM + 1) * (PC_MAXDIM * 24 + 40)];
     pc_simplex_text(s, buf, sizeof buf);
     return pcl_push_results(L, 0, "s", buf);

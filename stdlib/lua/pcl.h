@@ -76,6 +76,8 @@ int pcl_arg_shown(lua_State *L, int arg);
 /* luaL_error, but located at the user's code: frames of the embedded Lua helpers are skipped
  * (pcl_verror: PREFIX then the message). */
 int pcl_error(lua_State *L, const char *fmt, ...);
+/* A metamethod's receiver p, or (p NULL: called on another value) raise msg as pcl_error. */
+void *pcl_meta_self(lua_State *L, void *p, const char *msg);
 int pcl_verror(lua_State *L, const char *prefix, const char *fmt, va_list ap);
 /* Push that location, "file:line: " (or ""), for a message kept rather than raised (a callback's). */
 void pcl_pushwhere(lua_State *L);

@@ -75,6 +75,11 @@ int pcl_error(lua_State *L, const char *fmt, ...) {
     return pcl_verror(L, "", fmt, ap);
 }
 
+void *pcl_meta_self(lua_State *L, void *p, const char *msg) {
+    if (!p) pcl_error(L, "%s", msg);
+    return p;
+}
+
 /* ---- forged userdata (pcl.h) ---------------------------------------------------------------- */
 
 void *pcl_genuine(lua_State *L, int idx, void *p, int ok, const char *type) {
