@@ -103,8 +103,7 @@ static const pcl_arg reparam_keys[] = {KC_KEYS(PCL_REQ), A_ENUM("by", REPARAM_BY
 static const pcl_arg reparam_args[] = SPEC(reparam_keys);
 
 /* k: a wave number, or a list of them (one per generation), into out->v = {g, k1, ..., kg} */
-static int read_waves(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_waves(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     int list = lua_istable(L, idx), g = list ? (int)lua_rawlen(L, idx) : 1;   /* raw: no __len inside a reader */
     if (g < 1 || g > PC_KC_MAXPAR - 1) return 0;
     out->v[0] = g;
@@ -215,8 +214,7 @@ PCL_BODY(o_simplex, a) {   /* also oneratio(A, B, C): the table is the receiver 
 }
 
 /* f: a function of v or a number */
-static int read_blend(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_blend(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->n = lua_type(L, idx) == LUA_TNUMBER;
     out->x = lua_tonumber(L, idx);
     return out->n ? isfinite(out->x) : pcl_callable(L, idx);
@@ -269,8 +267,7 @@ PCL_BODY(i_lagrange, a) {
 
 /* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
  * parameters (out->list, out->n: the count of nodes) */
-static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_nodes(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     if (lua_istable(L, idx)) {
         static const pcl_arg params = A_NUMBERS("params", 2, MAXNODES);
         pcl_readone(L, idx, 1, 0, &params, 0, out);
@@ -281,8 +278,7 @@ static int read_nodes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return order >= 1 && order <= PC_CURVE_MAXDEG;
 }
 /* t: a finite number, or an equation (out->n = 1) */
-static int read_t(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_t(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->n = pcl_isequation(L, idx);
     out->x = lua_tonumber(L, idx);
     return out->n || (lua_type(L, idx) == LUA_TNUMBER && isfinite(out->x));
@@ -398,8 +394,7 @@ static int basis_cb(void *ud, double t, int n, double *g) {
 }
 
 /* the basis: a list of 1 to 16 functions of t (out->n of them) */
-static int read_basis(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
-    (void)a;
+static int read_basis(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->n = lua_istable(L, idx) ? (int)lua_rawlen(L, idx) : 0;   /* raw: a __len cannot raise inside the reader */
     if (out->n < 1 || out->n > 16) return 0;
     for (int i = 1; i <= out->n; i++) {
@@ -453,13 +448,12 @@ PCL_BODY(a_curve, a) {
     return MADE(c);
 }
 
-/* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1;
- * a points to m's value, then the table, then its keys (m, divisor) */
+/* m and the divisor of the MSE: [, m] [, {m =, divisor =}], the table at argument k or k + 1
+ * (read_m: an integer or the table); a points to m's value, then the table, then its keys */
 static const char *const DIVISORS[] = {"m+1", "m", "m-1", NULL};   /* pc_mse_divisor */
 static const pcl_arg mse_keys[] = {{.name = "m", .kind = PCL_INTEGER}, A_ENUM("divisor", DIVISORS), PCL_END};
 static const pcl_arg mse_opts = A_OPTIONS("opts", mse_keys);
-static int read_m(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {   /* an integer or the table */
-    (void)a;
+static int read_m(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     out->x = lua_tonumber(L, idx);
     return lua_istable(L, idx) || (lua_type(L, idx) == LUA_TNUMBER && out->x == floor(out->x) && isfinite(out->x));
 }
