@@ -33,11 +33,11 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 }
 
 /* A function, or a value with __call (pcl_callable). */
-#define A_FN(nm, what) {.name = nm, .kind = PCL_CALLABLE, .expect = what}
+#define A_FN(nm, what, fl) {.name = nm, .kind = PCL_CALLABLE, .flags = fl, .expect = what}
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
-#define A_FNOPT(nm, what) {.name = nm, .kind = PCL_CALLABLE, .flags = PCL_OPT, .expect = what}
-#define A_INTOPT(nm, l, h, d) \
-    {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = l, .hi = h, .dflt = d}
+/* an optional integer lo..hi: its default, then any other fields (.expect =) */
+#define A_INTOPT(nm, l, h, ...) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, \
+    .lo = l, .hi = h, .dflt = __VA_ARGS__}
 #define A_PARAMS {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}   /* one per point */
 
 /* ==== conic ================================================================================= */
@@ -57,8 +57,7 @@ static const pcl_arg triples_args[] = {SP("A1"), SP("A2"), SP("A3"), SP("A4"), S
                                        A_NUMOPT("t1", 1, NULL), PCL_END};
 static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("fP"), A_NUM("fQ"), A_NUM("n"), PCL_END};
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
-    {.name = "scheme", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 2, .dflt = 1,
-     .expect = "1 or 2"}, PCL_END};
+                                      A_INTOPT("scheme", 1, 2, 1, .expect = "1 or 2"), PCL_END};
 
 /* A construction of pc_konop_make, pc_konop_number or pc_konop_list, the kind by the name it is
  * called: the declared points, then the numbers (from a[0] when there are no points). */
@@ -193,9 +192,9 @@ PCL_BODY(c_redundant, a) {
     return pcl_push_results(L, d, "p", K);
 }
 
-#define OF_T "a function of t"
-static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), A_FN("u", OF_T), A_FN("v", OF_T),
-                                       A_FNOPT("du", OF_T), A_FNOPT("dv", OF_T), PCL_END};
+#define T_FN(nm, fl) A_FN(nm, "a function of t", fl)
+static const pcl_arg contour_args[] = {SP("A1"), SP("A2"), SP("A3"), T_FN("u", 0), T_FN("v", 0),
+                                       T_FN("du", PCL_OPT), T_FN("dv", PCL_OPT), PCL_END};
 PCL_BODY(c_contour, a) {
     int has_d = a[5].present, st;
     if (has_d && !a[6].present) return pcl_argfail(L, 7, "must be a function of t (with du), got nil");
@@ -436,7 +435,7 @@ PCL_BODY(i_rational22, a) {
 
 /* ==== approx ================================================================================ */
 
-#define F_OF_X A_FN("f", "a function of x")
+#define F_OF_X A_FN("f", "a function of x", 0)
 
 static const pcl_arg curve_args[] = {F_OF_X, A_NUMBERS("nodes", 2, 64), PCL_END};
 PCL_BODY(a_curve, a) {
@@ -500,9 +499,8 @@ PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
 
 static const pcl_arg chebyshev_args[] = {A_INT("N", 1, 64), A_NUMOPT("a", -1, NULL), A_NUMOPT("b", 1, NULL), PCL_END};
 
-static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"), A_NUM("b"),
-    {.name = "M", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 2, .hi = 1e9, .dflt = 101,
-     .expect = "an integer >= 2"}, PCL_END};
+static const pcl_arg lmse_args[] = {F_OF_X, A_NUMBERS("nodes", 1, 64), A_NUM("a"),
+    A_NUM("b"), A_INTOPT("M", 2, 1e9, 101, .expect = "an integer >= 2"), PCL_END};
 PCL_BODY(a_lagrange_mse, a) {
     pcl_luafn f = pcl_luafn_at(L, 1);
     double mse;
@@ -511,7 +509,7 @@ PCL_BODY(a_lagrange_mse, a) {
 }
 
 /* approx.nelder_mead(f, x0 [, step]): f receives the point as numbers */
-static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers"), A_NUMBERS("x0", 1, 32),
+static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers", 0), A_NUMBERS("x0", 1, 32),
     {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
 PCL_BODY(a_nelder_mead, a) {
     double *x = a[1].list;   /* the layer's buffer, minimised in place */
@@ -739,8 +737,7 @@ static const pcl_fn conic_fns[] = {
     PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
     PCL_END};
 
-static void *self_table(lua_State *L, int idx) { return lua_istable(L, idx) ? (void *)1 : NULL; }
-static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = self_table, .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
+static const pcl_fn oneratio_call[] = {{.name = "oneratio", .fn = o_simplex, .args = abc_args, .result = "curve", .self = pcl_self_table, .selftype = "table", .key = "__call", .help = "The same as oneratio.simplex."}, PCL_END};
 static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.simplex", o_simplex, abc_args, "curve", "(3.1) The moving-simplex curve A t'^2 + B t + C t t' (corrected): tangent BC at B."),
     PCL_FN("oneratio.tetra", made, abcd_args, "curve", "(3.2) The arc of one ratio in the simplex DABC; planar, through the centroid at t = 1/2."),
