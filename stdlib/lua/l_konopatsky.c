@@ -331,19 +331,15 @@ PCL_BODY(i_controls, a) {
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2,
                                     .hi = PC_CURVE_MAXDEG - 2}, SP("C2"), A_LATER("Cn"), A_PARAMS, PCL_END};
 PCL_BODY(i_arc, a) {
-    static const pcl_arg cn_arg = {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM},
-                         u_arg = {.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES};
-    pcl_val cn = {0}, p3 = {0};
-    int n = a[0].n, d = a[0].dim, k = 4, st;
-    const pcl_val *u = &a[3];
-    if (lua_istable(L, 3)) {
-        pcl_readone(L, 3, 3, 0, &u_arg, 0, &p3);
-        u = &p3, k = 3;
-    } else if (a[2].present) {
-        pcl_readone(L, 3, 3, 0, &cn_arg, d, &cn);
-    }
+    static const pcl_arg third[] = {{.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES},
+                                    {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM}};
+    pcl_val v3 = {0};
+    int n = a[0].n, d = a[0].dim, k = lua_istable(L, 3) ? 3 : 4, st;   /* k: the params' argument */
+    if (a[2].present) pcl_readone(L, 3, 3, 0, &third[k - 3], d, &v3);
+    const pcl_val *u = k == 3 ? &v3 : &a[3];
     need_count(L, k, u, n);
-    pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn.present ? cn.v : NULL, &st);
+    const double *cn = k == 4 && v3.present ? v3.v : NULL;
+    pc_curve *c = pc_interp_arc_u(d, n, a[0].list, u->present ? u->list : NULL, a[1].v, cn, &st);
     if (!c && st == PC_EDOMAIN && u->present)
         return pcl_fail(L, "argument #%d (params) must increase (one parameter per point, in order)", k);
     return MADE(c);
