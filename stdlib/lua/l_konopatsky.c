@@ -253,15 +253,16 @@ PCL_BODY(o_levels, a) {
 
 static const pcl_arg lagrange_args[] = {A_POINTS("points", 0, 2, MAXNODES), A_PARAMS, PCL_END};
 
-/* the interpolation curve through a[0] at the parameters a[1] (uniform when absent) */
-static pc_curve *interpolate(lua_State *L, const pcl_val *a, int *st) {
-    need_count(L, 2, &a[1], a[0].n);
-    return pc_curve_interpolate(a[0].dim, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, st);
-}
-
+/* interp.lagrange: the interpolation curve through a[0] at the parameters a[1] (uniform when
+ * absent); interp.controls: its control points */
 PCL_BODY(i_lagrange, a) {
-    int st;
-    return MADE(interpolate(L, a, &st));
+    int st, d = a[0].dim;
+    need_count(L, 2, &a[1], a[0].n);
+    pc_curve *c = pc_curve_interpolate(d, a[0].n, a[0].list, a[1].present ? a[1].list : NULL, &st);
+    if (!c || !strcmp(pcl_name(L), "interp.lagrange")) return MADE(c);
+    pcl_push_values(L, c->ncp, d, c->cp, 1);   /* a polynomial curve: weights 1 */
+    pc_curve_release(c);
+    return 1;
 }
 
 /* the nodes: the book's order n (n + 1 nodes at the uniform j/n), or the list of their
@@ -316,15 +317,6 @@ PCL_BODY(i_weights, a) {
     double w[MAXNODES];
     CHECK(pc_lagrange_weights(n, a[0].list, a[1].x, w));
     return pcl_push_results(L, 0, "N", n, w);
-}
-
-PCL_BODY(i_controls, a) {
-    int st;
-    pc_curve *c = interpolate(L, a, &st);
-    if (!c) return CHECK(st);
-    pcl_push_values(L, c->ncp, a[0].dim, c->cp, 1);   /* a polynomial curve: weights 1 */
-    pc_curve_release(c);
-    return 1;
 }
 
 /* interp.arc(points, C2 [, Cn] [, params]): argument #3 is Cn (a point) or the params (a list) */
@@ -751,7 +743,7 @@ static const pcl_fn oneratio_fns[] = {
 static const pcl_fn interp_fns[] = {
     PCL_FN("interp.lagrange", i_lagrange, lagrange_args, "curve", "§4.2 The book's interpolation curve through the points (uniform t = j/n by default): Lagrange in t, a Bezier curve."),
     SIG("interp.weights", i_weights, weights_args, "interp.weights(n, t) -> {w1, ..., w(n+1)}\ninterp.weights(params, t) -> {w1, ...}", "The weights of the interpolation curve of the book's order n (n + 1 nodes at j/n: (4.10)-(4.28) for n = 2..6), or at the node parameters params; they sum to 1. With t a param the weights are equations, the polynomials the Maple program of §4.8 prints."),
-    PCL_FN("interp.controls", i_controls, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
+    PCL_FN("interp.controls", i_lagrange, lagrange_args, "{C1, ...}", "The Bezier control points of the interpolation curve ((4.9), C1... of §4.4-4.7)."),
     PCL_FN("interp.conic", made, akbk_args, "curve", "§4.1 The conic arc through A, K (u = 1/2), B with discriminant k (corrected apex C = K/k' - (A + B)k/(2k'))."),
     SIG("interp.arc", i_arc, arc_args, "interp.arc(points, C2 [, Cn] [, params]) -> curve", "§4.9 The curve through the points with the end tangent handles C2 (and Cn): M'(0) = N(C2 - M1); at uniform u, or at the increasing node parameters params (the curve then runs over [params[1], params[#params]])."),
     PCL_FN("interp.adaptive", i_adaptive, adaptive_args, "params", "§4.10 The adaptive parameters v_j = (x_1 - x_j)/(x_1 - x_n) along an axis (1 by default)."),
