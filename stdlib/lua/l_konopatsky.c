@@ -136,14 +136,11 @@ PCL_BODY(c_form, a) {   /* spec; C, A, B, range, [by,] branch | k | concave */
 static const char *const ELLIPSE_BY[] = {"angle", "radius", "focal", "compression", "algebraic",
                                          "conjugate", "diameter", NULL};
 static const pcl_arg ellipse_keys[] = {KC_KEYS(0), A_ENUM("by", ELLIPSE_BY), A_NUMOPT("quadrant", 1, "1"),
-                                       {.name = "K", .kind = PCL_POINT, .flags = PCL_SAMEDIM}, A_NUM("lambda"),
-                                       PCL_END};
+                                       SP("K"), A_NUMOPT("lambda", NAN, NULL), PCL_END};
 static const pcl_arg ellipse_args[] = SPEC(ellipse_keys);
 PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
-    int by = a[5].n;
-    double lambda = a[8].present ? a[8].x : NAN;
-    return kcurve_from(L, a, by < 5 ? PC_KC_ELLIPSE_ANGLE + by : PC_KF_CONJUGATE + by - 5, by == 6 ? &lambda : &a[6].x,
-                       1, &a[7]);
+    int by = a[5].n, form = by < 5 ? PC_KC_ELLIPSE_ANGLE + by : PC_KF_CONJUGATE + by - 5;
+    return kcurve_from(L, a, form, &a[by == 6 ? 8 : 6].x, 1, &a[7]);   /* lambda or quadrant */
 }
 
 static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
