@@ -59,14 +59,22 @@ static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
                                       A_INTOPT("scheme", 1, 2, 1, .expect = "1 or 2"), PCL_END};
 
-/* A construction of pc_konop_make, pc_konop_number or pc_konop_list, the kind by the name it is
- * called: the declared points, then the numbers (from a[0] when there are no points). */
+/* A construction of pc_konop_make, pc_konop_number or pc_konop_list, or a scheme of
+ * pc_konop_scheme (its points and numbers pushed by its fields), the kind by the name it is
+ * called: the declared points, then the numbers (an enum's choice by its index; from a[0] when
+ * there are no points). */
 PCL_BODY(made, a) {
-    pc_konop_kind kind = pc_konop_kind_of(pcl_name(L));
-    int np = pc_konop_npoints(kind), d = a[0].n, st, n;
-    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k, u[64];
-    for (int i = 0; i < 3 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].x;
+    const char *fields = NULL;
+    int kind = pc_konop_kind_of(pcl_name(L)), scheme = pc_konop_scheme_of(pcl_name(L), &fields);
+    int np = fields ? pc_konop_scheme_npoints(scheme) : pc_konop_npoints(kind), d = a[0].n, st, n;
+    double p[5 * PC_MAXDIM], x[3] = {0, 0, 0}, k, u[8 * (PC_MAXDIM + 1)];
+    for (int i = 0; i < 3 && np + i < pcl_nvalues(L); i++)
+        x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
     pcl_point_rows(a, np, d, p);
+    if (fields) {
+        CHECK(pc_konop_scheme(scheme, d, p, x, u));
+        return pcl_push_packed(L, d, fields, u);
+    }
     if (kind < PC_KM_ED_K) return MADE(pc_konop_make(kind, d, p, x, &st));
     if (kind >= PC_KM_CONES_EXCLUDED) {
         CHECK(pc_konop_list(kind, x, u, &n));
@@ -511,19 +519,6 @@ PCL_BODY(a_nelder_mead, a) {
 /* ==== the scheme points of the monograph (konop_schemes.h): each a point, or a vector where the
  * scheme's point is at infinity (N at u = 1/2 of conic.ed_scheme) ========================== */
 
-/* A scheme of pc_konop_scheme, the kind by the name it is called: the declared points, then the
- * numbers (an enum's choice by its index); its points and numbers pushed by its fields. */
-PCL_BODY(scheme, a) {
-    const char *fields;
-    pc_konop_scheme_kind kind = pc_konop_scheme_of(pcl_name(L), &fields);
-    int np = pc_konop_scheme_npoints(kind), d = a[0].n;
-    double p[5 * PC_MAXDIM], x[2] = {0, 0}, o[8 * (PC_MAXDIM + 1)];
-    for (int i = 0; i < 2 && np + i < pcl_nvalues(L); i++) x[i] = a[np + i].s ? a[np + i].n : a[np + i].x;
-    pcl_point_rows(a, np, d, p);
-    CHECK(pc_konop_scheme(kind, d, p, x, o));
-    return pcl_push_packed(L, d, fields, o);
-}
-
 PCL_BODY(l_smooth_scheme, a) {
     int d = a[0].n, n = (int)a[3].x;
     double *p = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0), *q = p + n * d;
@@ -713,11 +708,11 @@ static const pcl_fn conic_fns[] = {
     SIG("conic.cycloid", c_form, cycloid_args, "conic.cycloid{C =, A =, B = [, concave = true, range = {t0, t1}]} -> curve", "§2.8 The convex (or concave) cycloid arc from B to A in the simplex CAB; range {0, 2pi} gives the whole arch."),
     PCL_FN("conic.cones", made, cones_args, "curve", "§2.6 The space cubic DP x NQ of two quadric cones over the arcs (2.97) fP, fQ in ABC, N = (D - A)n + A."),
     SIG("conic.contour", c_contour, contour_args, "conic.contour(A1, A2, A3, u, v [, du, dv]) -> curve", "(2.161) The general contour arc A1 -> A2 with tangents through A3, driven by the functions u(t), v(t)."),
-    PCL_FN("conic.ed_scheme", scheme, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
-    PCL_FN("conic.five_scheme", scheme, five_scheme_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
-    PCL_FN("conic.ceva_scheme", scheme, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
-    PCL_FN("conic.focal_point", scheme, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
-    PCL_FN("conic.foci", scheme, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
+    PCL_FN("conic.ed_scheme", made, ed_scheme_args, "{T1, K, T, N, P, Q, M}", "§2.1.6 Fig. 2.21 The points of the engineering-discriminant scheme at u: T1 the chord's midpoint, K = (T1 - C)k + C, T = A u' + B u, N its harmonic conjugate (a vector, at infinity, at u = 1/2), P = AK x CT, Q = BK x CT, M = AQ x BP = (2.97) at u."),
+    PCL_FN("conic.five_scheme", made, five_scheme_args, "{S, U, V, M, U_B, U_D, R, U_E}", "§2.1.4 Fig. 2.15 The points of Pascal's hexagon A D M E B C at u (corrected): S = BE x AD, U = (A - C)u + C, V = SU x CB, M = UE x VD, and U_B = BE x CA, U_D = CA x ED, R = CB x ED, U_E = RS x CA, whose positions on CA give the u of B, D, E."),
+    PCL_FN("conic.ceva_scheme", made, ceva_scheme_args, "{M3, M, t3, r}", "(2.105) Ceva's arc read by the engineering discriminant: M3 = A1(1 - t3) + A2 t3 on A1A2, M = M3(1 - r) + A3 r, t3 = (1 - t)^2/(k t^2 + (1 - t)^2), r = t(1 - t)/(1 - t(1 - kt)); M is (2.104) at t."),
+    PCL_FN("conic.focal_point", made, focal_args, "M, F, pa, pb", "The focal-simplex forms (2.16)/(2.17) and, corrected, (2.54)/(2.55): the point at the focal angle phi written in the simplex A B F, M = (A - F) pa + (B - F) pb + F, F = F2 = C - (A - C)e of the ellipse (CA the major semi-axis) or F1 = C + (A - C)e of the hyperbola; the points of (2.18), (2.56)."),
+    PCL_FN("conic.foci", made, foci_args, "F1, F2, e, p", "The foci, eccentricity and focal parameter b^2/a of the ellipse of centre C and semi-axes CA, CB (the foci on the longer), or of the hyperbola of vertex A and imaginary semi-axis CB; any dimension; CA and CB must be perpendicular."),
     PCL_FN("conic.cones_excluded", made, f_args, "{u, ...}", "§2.6 The parameters u the cubic of two cones must avoid, sorted: (2.148)'s pole, (2.151) u = (1 +- 1/sqrt(1 - 2 fP))/2 (the print's sign corrected) for fP < 1/2, and the roots (2.153) of Q's denominator."),
     PCL_FN("conic.scheme", l_scheme, scheme_args, "curve, steps", "§2.2 The symbolic method: a table of collinear triples (each a line of the ruler construction) becomes its construction: the given points, the current point C = P t' + Q t (current = {\"C\", \"P\", \"Q\"}), and every other point the meet of two lines of the table whose other points are known, in the order found (steps, e.g. \"A = A3A2 x A4A5\"); the curve of the result over range (default {0, 1}). Baluba's systems (a) and (b) of Fig. 2.28 are two such tables."),
     PCL_END};
@@ -732,8 +727,8 @@ static const pcl_fn oneratio_fns[] = {
     PCL_FN("oneratio.double_contact", o_double_contact, contact_args, "curve", "§3.4 M = P(1 - f(v)) + Q f(v) of the arcs (2.97) kp and kq; f a function of v or a number (default v)."),
     PCL_FN("oneratio.closed", made, closed_args, "curve", "§3.5 The closed curve P u' + Q u through B, scheme 1 or 2 (corrected Q): wing profiles."),
     PCL_FN("oneratio.levels", o_levels, levels_args, "{{P1, ...}, {Q1, ...}, ..., {M}}", "Fig. 3.4 The de Casteljau levels at the one ratio t (for A, C1, C2, B: P1 P2 P3, Q1 Q2, M of (3.4))."),
-    PCL_FN("oneratio.simplex_scheme", scheme, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
-    PCL_FN("oneratio.desargues_scheme", scheme, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
+    PCL_FN("oneratio.simplex_scheme", made, abct_args, "{N =, M =}", "Fig. 3.1 The moving simplex at t: N = A t' + C t on AC and M = N t' + B t on NB (the point of (3.1))."),
+    PCL_FN("oneratio.desargues_scheme", made, abcdt_args, "{T =, S =, R =, N =, J =, Q =, M =, pJ =, qJ =}", "Fig. 3.12 The points of the Desargues arc's scheme at t; T, S, R are directions (vectors) at t = 1/2."),
     PCL_FN("oneratio.smooth_scheme", l_smooth_scheme, smooth_scheme_args, "{P = {P1, ..., Pn}, Q = {Q1, ..., Qn}, M}", "§3.6 Figs. 3.9, 3.10 The chain points of M_n at t: P_i = P_(i-1) + t(P_(i+1) - P_(i-1)) on A..C, Q_i likewise on C..B, M = P_n + t(Q1 - P_n) (for n = 2: AP1/AP2 = P1P2/P1C = CQ1/CQ2 = Q1Q2/Q1B = P2M/P2Q1 = t)."),
     PCL_END};
 
@@ -764,8 +759,8 @@ static const pcl_fn ch1_fns[] = {
     PCL_FN("konopatsky.o_theorem", k_o_theorem, o_args, "product, ratios, B", "(1.4) The O-theorem: Bi = AiA(i+1) x D1D2 (B at infinity for a side parallel to d), ratios (AiA(i+1)Bi) and their product, (-1)^m with the closing factor (A_m A_1 B_m) the print omits."),
     {.name = "konopatsky.simplex_ratio", .fn = k_simplex_ratio, .args = rows_args, .result = "ratio", .sig = "konopatsky.simplex_ratio({{p1, q1, r1}, {p2, q2, r2}, {p3, q3, r3}}) -> ratio", .help = "The S-theorem (and with 4 rows the V-theorem, any k + 1 rows): the measure of the simplex of the points with these barycentric parameters over the simplex's own is their determinant (the printed V-theorem's det/det is corrected)."},
     PCL_FN("konopatsky.meet_line_plane", k_meet_line_plane, lp_args, "K, lambda, p, q", "§1.3.5 The meet of line A1A2 and plane P1P2P3 by the V-theorem, in 3-D and n-D: K = (A2 - A1) lambda + A1 = (P1 - P3) p + (P2 - P3) q + P3. A point at infinity (a vector) and lambda = inf when they are parallel; an error when the line lies in the plane or (n > 3) they do not meet."),
-    PCL_FN("konopatsky.polar", scheme, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
-    PCL_FN("konopatsky.rotate", scheme, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
+    PCL_FN("konopatsky.polar", made, polar_args, "M", "(2.117)/(2.118) The point at distance rho from C at the angle phi from ray CA towards CB: M = (A - C) rho sin(gamma - phi)/(b sin gamma) + (B - C) rho sin phi/(a sin gamma) + C, any dimension."),
+    PCL_FN("konopatsky.rotate", made, rotate_args, "Q", "(2.138) A rotated about C by phi towards B in the plane CAB (polar with rho = |CA|)."),
     PCL_FN("konopatsky.moving_simplex", k_moving_simplex, ms_args, "surface", "Fig. 1.2 The moving-simplex surface M(u, v) = (NA - NC) p(v) + (NB - NC) q(v) + NC on three guide curves of one domain (the book's are lines N = (P' - P)(phi(u) - phi(0))/(phi(1) - phi(0)) + P), the generator a 2-D curve gen(v) = (p, q) in the natural parameters of the moving simplex (a conic of ch. 2 gives conic sections)."),
     PCL_FN("konopatsky.equation", k_equation, eq_args, "x, y, ...", "The coordinates of a polynomial or rational curve (its first piece) as the book prints them: x = (a_n t^n + ... + a_0)/(t^m + ... + d_0), expanded in powers of var (\"t\"), the denominator monic; a polynomial curve gives polynomials (the ch. 4-5 coefficients of c:monomial)."),
     PCL_END};
