@@ -22,9 +22,8 @@
 #define SP(nm) A_SAMEPOINT(nm)
 #define REQPT(nm) {.name = nm, .kind = PCL_POINT, .flags = PCL_SAMEDIM | PCL_REQ}   /* an option key */
 #define MAXNODES (PC_CURVE_MAXDEG + 1)
-#define WHY pc_konop_why
-#define CHECK(st) pcl_check(L, (st), WHY)
-#define MADE(c) pcl_made(L, (c), &st, WHY)
+#define CHECK(st) pcl_check(L, (st), pc_konop_why)
+#define MADE(c) pcl_made(L, (c), &st, pc_konop_why)
 
 /* the params (argument #k), if given: one per point */
 static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
@@ -59,10 +58,9 @@ static const pcl_arg cones_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), A_NUM("
 static const pcl_arg closed_args[] = {SP("A"), SP("B"), SP("C"), A_NUM("kP"), A_NUM("kQ"),
                                       A_INTOPT("scheme", 1, 2, 1, .expect = "1 or 2"), PCL_END};
 
-/* A construction of pc_konop_make, pc_konop_number or pc_konop_list, or a scheme of
- * pc_konop_scheme (its points and numbers pushed by its fields), the kind by the name it is
- * called: the declared points, then the numbers (an enum's choice by its index; from a[0] when
- * there are no points). */
+/* A construction of pc_konop_make, _number or _list, or a scheme of pc_konop_scheme (pushed by
+ * its fields), the kind by the name it is called: the declared points, then the numbers (an
+ * enum's choice by its index; from a[0] when there are no points). */
 PCL_BODY(made, a) {
     const char *fields = NULL;
     int kind = pc_konop_kind_of(pcl_name(L)), scheme = pc_konop_scheme_of(pcl_name(L), &fields);
@@ -241,11 +239,10 @@ PCL_BODY(o_double_contact, a) {   /* f: a function of v, a number, or absent: f(
 
 static const pcl_arg levels_args[] = {A_POINTS("points", 0, 2, 16), A_NUM("t"), PCL_END};
 PCL_BODY(o_levels, a) {
-    double out[120 * PC_MAXDIM];
+    double out[120 * PC_MAXDIM], *row = out;
     int n = a[0].n, d = a[0].dim;
     CHECK(pc_decasteljau_levels(d, n, a[0].list, a[1].x, out));
     lua_createtable(L, n - 1, 0);
-    const double *row = out;
     for (int level = 1; level < n; level++) {
         pcl_push_values(L, n - level, d, row, 0);
         lua_rawseti(L, -2, level);
@@ -521,8 +518,7 @@ PCL_BODY(a_nelder_mead, a) {
 
 PCL_BODY(l_smooth_scheme, a) {
     int d = a[0].n, n = (int)a[3].x;
-    double *p = lua_newuserdatauv(L, sizeof(double) * (size_t)(2 * n + 1) * (size_t)d, 0), *q = p + n * d;
-    double *m = q + n * d;
+    double p[(2 * 40 + 1) * PC_MAXDIM], *q = p + n * d, *m = q + n * d;   /* n <= 40 */
     CHECK(pc_oneratio_smooth_chain(d, a[0].v, a[1].v, a[2].v, n, a[4].x, p, q, m));
     return pcl_push_results(L, d, "P=P Q=P M=p", n, p, n, q, m);
 }
@@ -590,7 +586,7 @@ PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, r
         return pcl_fail(L, "the table does not determine %s (each new point needs two lines of known points)", a[4].s);
     CHECK(st);
     double t0 = a[5].present ? a[5].list[0] : 0, t1 = a[5].present ? a[5].list[1] : 1;
-    pcl_made(L, pc_triples_curve(&plan, t.dim, t.pts, t0, t1, &st), &st, pc_konop_why);
+    MADE(pc_triples_curve(&plan, t.dim, t.pts, t0, t1, &st));
     lua_createtable(L, plan.nsteps, 0);
     for (int s = 0; s < plan.nsteps; s++) {
         char text[4 * 64];
