@@ -352,7 +352,7 @@ static const char *const PROTOS[] = {"desargues", "rational", "exp", "exp1", "tr
 static const pcl_arg proto_args[] = {A_ENUM("kind", PROTOS), A_LATER("points"), A_LATER("k | t0"),
                                      A_LATER("t0 | t1"), A_LATER("t1"), PCL_END};
 PCL_BODY(i_prototype, a) {
-    pcl_val p = {0}, k = {0}, v = {0};
+    pcl_val p = {0}, k = {0}, t[2] = {{.x = NAN}, {.x = NAN}};   /* t0, t1 NaN when not given */
     int n, nk, st;
     pc_interp_prototype_shape((pc_proto_kind)a[0].n, &n, &nk);
     /* the count of points the prototype takes, whatever came (nil included) */
@@ -361,13 +361,11 @@ PCL_BODY(i_prototype, a) {
     pcl_arg pa = A_POINTS("points", 0, n, n), ka = A_NUMBERS("k", nk, nk), ta[2] = {A_NUM("t0"), A_NUM("t1")};
     pcl_readone(L, 2, 2, 0, &pa, 0, &p);
     if (nk) pcl_readone(L, 3, 3, 0, &ka, 0, &k);
-    double t[2] = {NAN, NAN}, none[3] = {0};
-    for (int j = 0, at = nk ? 4 : 3; j < 2 && !lua_isnoneornil(L, at); j++) {   /* t1 must follow t0 */
-        pcl_readone(L, at + j, at + j, 0, &ta[j], 0, &v);
-        t[j] = v.x;
-    }
-    if (!(t[1] > t[0]) && !isnan(t[0])) return pcl_fail(L, "argument #%d (t1) must be greater than t0", nk ? 5 : 4);
-    return MADE(pc_interp_prototype((pc_proto_kind)a[0].n, p.dim, n, p.list, nk ? k.list : none, t[0], t[1], &st));
+    for (int j = 0, at = nk ? 4 : 3; j < 2 && !lua_isnoneornil(L, at); j++)   /* t1 follows t0 */
+        pcl_readone(L, at + j, at + j, 0, &ta[j], 0, &t[j]);
+    double t0 = t[0].x, t1 = t[1].x, none[3] = {0};
+    if (!(t1 > t0) && !isnan(t0)) return pcl_fail(L, "argument #%d (t1) must be greater than t0", nk ? 5 : 4);
+    return MADE(pc_interp_prototype((pc_proto_kind)a[0].n, p.dim, n, p.list, nk ? k.list : none, t0, t1, &st));
 }
 
 /* interp.basis{g1, g2, ...}: Lua prototypes, the elements of the table (function 0) */
@@ -398,12 +396,11 @@ static const pcl_arg basis_args[] = {A_ANY("basis", read_basis, "a list of 1 to 
                                      A_POINTS("points", 0, 1, 16), A_NUMBERS("params", 1, 16),
                                      A_NUMOPT("t0", 0, NULL), A_NUMOPT("t1", 0, NULL), PCL_END};
 PCL_BODY(i_basis, a) {
-    int n = a[0].n, d = a[1].dim;
+    int n = a[0].n, d = a[1].dim, st;
     if (a[1].n != n) return pcl_argfail(L, 2, "must hold %d points (one per basis function), got %d", n, a[1].n);
     need_count(L, 3, &a[2], n);
     if (a[3].present && !a[4].present) return pcl_argfail(L, 5, "must be a finite number (with t0), got nil");
     pcl_luafn *r = pcl_luafn_new(L, 1, (int[]){1});
-    int st;
     pc_curve *c = pc_interp_basis(d, n, a[1].list, a[2].list, basis_cb, pcl_luafn_free, r, a[3].present ? a[3].x : NAN,
                                   a[3].present ? a[4].x : NAN, &st);
     if (!c) pcl_luafn_free(r);
@@ -476,12 +473,11 @@ PCL_BODY(a_mse, a) {   /* f, nodes, m, opts, m =, divisor = */
 static const pcl_arg optimal_args[] = {F_OF_X, A_NUM("a"), A_NUM("b"), A_INT("N", 3, 16), A_M,
                                        A_OPTIONS("opts", mse_keys), PCL_END};
 PCL_BODY(a_optimal_nodes, a) {   /* f, a, b, N, m, opts, m =, divisor = */
-    int N = (int)a[3].x;
+    int N = (int)a[3].x, evals;
     pc_mse_divisor dv;
     int m = samples(L, 5, &a[4], N, 100000, &dv);
     pcl_luafn f = pcl_luafn_at(L, 1);
     double x[16], mse;
-    int evals;
     CHECK(pc_approx_optimal_nodes(pcl_luafn_of, &f, a[1].x, a[2].x, N, m, x, &mse, &evals));
     pc_approx_rescale(mse, m, dv, &mse);   /* m >= N >= 3: the divisor is positive */
     return pcl_push_results(L, 0, "N n i", N, x, mse, evals);
@@ -502,11 +498,10 @@ PCL_BODY(a_lagrange_mse, a) {
 static const pcl_arg nm_args[] = {A_FN("f", "a function of n numbers", 0), A_NUMBERS("x0", 1, 32),
     {.name = "step", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 0.1}, PCL_END};
 PCL_BODY(a_nelder_mead, a) {
-    double *x = a[1].list;   /* the layer's buffer, minimised in place */
+    double *x = a[1].list, fx;   /* x: the layer's buffer, minimised in place */
     int n = a[1].n, it;
     pcl_luafn f = pcl_luafn_at(L, 1);
     f.nargs = n;
-    double fx;
     int st = pc_nelder_mead(n, pcl_luafn_point, &f, x, a[2].x, 1e-14, 1e-10, 20000, &fx, &it);
     if (f.failed) pcl_raise_status(L, pcl_name(L), PC_EARG);      /* the kept Lua error */
     if (st != PC_ENOCONVERGE) CHECK(st);
