@@ -325,8 +325,7 @@ PCL_BODY(i_weights, a) {
 static const pcl_arg arc_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2,
                                     .hi = PC_CURVE_MAXDEG - 2}, SP("C2"), A_LATER("Cn"), A_PARAMS, PCL_END};
 PCL_BODY(i_arc, a) {
-    static const pcl_arg third[] = {{.name = "params", .kind = PCL_NUMBERS, .hi = MAXNODES},
-                                    {.name = "Cn", .kind = PCL_POINT, .flags = PCL_SAMEDIM}};
+    static const pcl_arg third[] = {A_NUMBERS("params", 0, MAXNODES), SP("Cn")};
     pcl_val v3 = {0};
     int n = a[0].n, d = a[0].dim, k = lua_istable(L, 3) ? 3 : 4, st;   /* k: the params' argument */
     if (a[2].present) pcl_readone(L, 3, 3, 0, &third[k - 3], d, &v3);
@@ -551,9 +550,8 @@ PCL_BODY(l_scheme, a) {   /* the table, then triples, points, current, result, r
     pc_triples_table t = {0};
     /* the known points first: their names are the keys of points */
     lua_getfield(L, 1, "points");
-    int ip = lua_gettop(L);
     lua_pushnil(L);
-    while (lua_next(L, ip)) {
+    while (lua_next(L, -2)) {
         if (lua_type(L, -2) != LUA_TSTRING) return pcl_fail(L, "points must be named (A1 = P(...))");
         const char *s = lua_tostring(L, -2);
         pcl_value *v = pcl_tovalue(L, -1);
