@@ -33,6 +33,7 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 
 /* A function, or a value with __call (pcl_callable). */
 #define A_FN(nm, what, fl) {.name = nm, .kind = PCL_CALLABLE, .flags = fl, .expect = what}
+#define A_TRUE(nm) {.name = nm, .kind = PCL_BOOLEAN, .shown = "true"}   /* a boolean key */
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
 /* an optional integer lo..hi: its default, then any other fields (.expect =) */
 #define A_INTOPT(nm, l, h, ...) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, \
@@ -124,8 +125,7 @@ static const pcl_arg sinusoid_keys[] = {KC_KEYS(PCL_REQ), {.name = "k", .kind = 
     .read = read_waves, .shown = "{m, n, ...}",
     .expect = "a positive wave number or a list of 1 to 8 of them (one per generation)"}, PCL_END};
 static const pcl_arg sinusoid_args[] = SPEC(sinusoid_keys);
-static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), {.name = "concave", .kind = PCL_BOOLEAN, .shown = "true"},
-                                       PCL_END};
+static const pcl_arg cycloid_keys[] = {KC_KEYS(PCL_REQ), A_TRUE("concave"), PCL_END};
 static const pcl_arg cycloid_args[] = SPEC(cycloid_keys);
 
 /* conic.hyperbola, .reparam, .sinusoid and .cycloid: the table's first form (pc_konop_form_base)
@@ -149,7 +149,7 @@ PCL_BODY(c_ellipse, a) {   /* spec; C, A, B, range, by, quadrant, K, lambda */
     return kcurve_from(L, a, form, &a[by == 6 ? 8 : 6].x, 1, &a[7]);   /* lambda or quadrant */
 }
 
-static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), {.name = "delta", .kind = PCL_NUMBER}, A_POSNUM("R"), PCL_END};
+static const pcl_arg circle_keys[] = {KC_KEYS(PCL_REQ), A_NUM("delta"), A_POSNUM("R"), PCL_END};
 static const pcl_arg circle_args[] = SPEC(circle_keys);
 PCL_BODY(c_circle, a) {   /* spec; C, A, B, range, delta, R */
     int form = a[5].present ? PC_KC_CIRCLE_ANGLE : a[6].present ? PC_KC_CIRCLE_RADIUS : PC_KF_CIRCLE_ARC;
@@ -164,8 +164,7 @@ PCL_BODY(c_tilted, a) {
     return 1 + pcl_push_packed(L, d, "p p h p n", o);   /* K: a vector at theta = 0 */
 }
 
-static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), {.name = "whole", .kind = PCL_BOOLEAN, .shown = "true"},
-                                    PCL_END};
+static const pcl_arg five_keys[] = {A_NUM("u0"), A_NUM("u1"), A_TRUE("whole"), PCL_END};
 static const pcl_arg five_args[] = {SP("A"), SP("B"), SP("C"), SP("D"), SP("E"), A_OPTIONS("opts", five_keys), PCL_END};
 PCL_BODY(c_five_points, a) {   /* A..E, opts, u0, u1, whole */
     int st;
