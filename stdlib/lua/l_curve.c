@@ -421,8 +421,7 @@ static double inside(lua_State *L, lcurve *u, double t) {
 
 PCL_METHOD(c_split, lcurve *u, a) {
     pc_curve *l, *r;
-    int st = pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_check(L, pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r), NULL);
     pcl_pushcurve(L, l, u->kind);
     return pcl_pushcurve(L, r, u->kind) + 1;
 }
@@ -561,8 +560,7 @@ static int c_index(lua_State *L) {
 }
 
 static int c_tostring(lua_State *L) {
-    lcurve *u = self_curve(L, 1);
-    if (!u) return 0;
+    lcurve *u = pcl_meta_self(L, self_curve(L, 1), "tostring: not a curve");
     char text[200];
     pc_curve_text(u->c, u->kind, text, sizeof text);
     return pcl_push_results(L, 0, "s", text);
