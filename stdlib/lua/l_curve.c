@@ -98,18 +98,14 @@ int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
 }
 
 /* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
-static lcurve *tocurve(lua_State *L, int idx) {
-    return pcl_tagged_udata(L, idx, &CURVE_TAG, CURVE_MT, sizeof(lcurve), 0);
+static void *self_curve(lua_State *L, int idx) {
+    lcurve *u = pcl_tagged_udata(L, idx, &CURVE_TAG, CURVE_MT, sizeof *u, 0);
+    return u && u->c ? u : NULL;
 }
 
 pc_curve *pcl_tocurve(lua_State *L, int idx) {
-    lcurve *u = tocurve(L, idx);
+    lcurve *u = self_curve(L, idx);
     return u ? u->c : NULL;
-}
-
-static void *self_curve(lua_State *L, int idx) {
-    lcurve *u = tocurve(L, idx);
-    return u && u->c ? u : NULL;
 }
 
 static int c_gc(lua_State *L) {
