@@ -98,18 +98,14 @@ int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind) {
 }
 
 /* The curve object at idx or NULL; one given the metatable by the debug library is refused. */
-static lcurve *tocurve(lua_State *L, int idx) {
-    return pcl_tagged_udata(L, idx, &CURVE_TAG, CURVE_MT, sizeof(lcurve), 0);
+static void *self_curve(lua_State *L, int idx) {
+    lcurve *u = pcl_tagged_udata(L, idx, &CURVE_TAG, CURVE_MT, sizeof *u, 0);
+    return u && u->c ? u : NULL;
 }
 
 pc_curve *pcl_tocurve(lua_State *L, int idx) {
-    lcurve *u = tocurve(L, idx);
+    lcurve *u = self_curve(L, idx);
     return u ? u->c : NULL;
-}
-
-static void *self_curve(lua_State *L, int idx) {
-    lcurve *u = tocurve(L, idx);
-    return u && u->c ? u : NULL;
 }
 
 static int c_gc(lua_State *L) {
@@ -264,9 +260,10 @@ static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed
     return pcl_push_made(L, c, &st, kind);
 }
 
+#define G_ARG \
+    {.name = "g", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_g, .expect = "a smoothstep (a function of t)"}
 static const pcl_arg spline2_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("a"), A_SAMEPOINT("B"), A_SAMEVECTOR("b"),
-    {.name = "g", .kind = PCL_ANY, .flags = PCL_OPT, .read = read_g, .expect = "a smoothstep (a function of t)"},
-    PCL_END};
+                                       G_ARG, PCL_END};
 PCL_BODY(l_spline2, a) {
     int d = a[0].n, lua;
     pc_gfun g;
@@ -276,12 +273,11 @@ PCL_BODY(l_spline2, a) {
     return push_stroke(L, NULL, d, 1, 0, &pc, lua, 5);
 }
 
-/* the flat list of count numbers at arg (NaN for an entry that is none), or NULL for nil */
-static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
-    if (lua_isnoneornil(L, arg)) return NULL;
-    luaL_checktype(L, arg, LUA_TTABLE);
+/* the flat list of count numbers of argument a (NaN for an entry that is none), or NULL for nil */
+static double *flat_numbers(lua_State *L, const pcl_val *a, int count, double *buf) {
+    if (!a->present) return NULL;
     for (int i = 0; i < count; i++) {
-        lua_geti(L, arg, i + 1);
+        lua_geti(L, a->idx, i + 1);
         buf[i] = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : NAN;
         lua_pop(L, 1);
     }
@@ -291,21 +287,22 @@ static double *flat_numbers(lua_State *L, int arg, int count, double *buf) {
 /* _tk.stroke(d, closed, nodes, ein, eout, rin, rout, n, m, t0 [, g]) -> curve, or
  * nil, status, bad node (1-based), message.  Arrays are flat (nodes, ein, eout: k rows of d)
  * with NaN for "default"; all but nodes may be nil. */
-static int l_stroke_raw(lua_State *L) {
-    lua_settop(L, 11);
-    int d = (int)luaL_checkinteger(L, 1), closed = lua_toboolean(L, 2), lua;
-    luaL_checktype(L, 3, LUA_TTABLE);
-    int k = (int)(luaL_len(L, 3) / (d > 0 ? d : 1));
-    if (d < 1 || d > PC_CURVE_MAXDIM || k < 2) pcl_error(L, "_tk.stroke: bad dimension or count");
-    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)k * (size_t)(3 * d + 5), 0), *arr[8];
-    for (int i = 0, off = 0; i < 8; i++) {   /* nodes, ein, eout: rows of d; rin, rout, n, m, t0 */
+#define A_FLAT(nm) {.name = nm, .kind = PCL_TABLE, .flags = PCL_OPT}
+static const pcl_arg stroke_args[] = {A_INT("d", 1, PC_CURVE_MAXDIM),
+    {.name = "closed", .kind = PCL_BOOLEAN}, A_NUMBERS("nodes", 2, 0), A_FLAT("ein"), A_FLAT("eout"),
+    A_FLAT("rin"), A_FLAT("rout"), A_FLAT("n"), A_FLAT("m"), A_FLAT("t0"), G_ARG, PCL_END};
+PCL_BODY(l_stroke_raw, a) {
+    int d = (int)a[0].x, closed = (int)a[1].x, k = a[2].n / d, lua;
+    if (k < 2) return pcl_argfail(L, 3, "must hold at least 2 nodes of %d numbers", d);
+    double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)k * (size_t)(2 * d + 5), 0);
+    double *arr[8] = {a[2].list};
+    for (int i = 1, off = 0; i < 8; i++) {   /* ein, eout: rows of d; rin, rout, n, m, t0 */
         int len = i < 3 ? k * d : k;
-        arr[i] = flat_numbers(L, 3 + i, len, buf + off);
+        arr[i] = flat_numbers(L, &a[2 + i], len, buf + off);
         off += len;
     }
     pc_gfun g;
-    if (!to_g(L, 11, PC_G_HALF, &g, &lua))
-        return pcl_error(L, "stroke: option 'g' must be a smoothstep (a function of t), got %s", pcl_shown(L, 11));
+    to_g(L, 11, PC_G_HALF, &g, &lua);
     int np = pc_stroke_npieces(k, closed), bad;
     pc_stroke_spec spec = {.d = d, .nnodes = k, .closed = closed, .nodes = arr[0], .ein = arr[1], .eout = arr[2],
                            .rin = arr[3], .rout = arr[4], .n = arr[5], .m = arr[6], .t0 = arr[7]};
@@ -315,7 +312,7 @@ static int l_stroke_raw(lua_State *L) {
         lua_pushnil(L);
         return pcl_push_results(L, 0, "i i s", st, bad + 1, pc_strerror(st)) + 1;
     }
-    for (int i = 0; !lua && !lua_isnil(L, 11) && i < np; i++) pc[i].g = g;
+    for (int i = 0; !lua && a[10].present && i < np; i++) pc[i].g = g;
     return push_stroke(L, "stroke", d, np, closed, pc, lua, 11);
 }
 
@@ -420,8 +417,7 @@ static double inside(lua_State *L, lcurve *u, double t) {
 
 PCL_METHOD(c_split, lcurve *u, a) {
     pc_curve *l, *r;
-    int st = pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r);
-    if (st != PC_OK) return pcl_raise_status(L, pcl_name(L), st);
+    pcl_check(L, pc_curve_split(u->c, inside(L, u, a[0].x), &l, &r), NULL);
     pcl_pushcurve(L, l, u->kind);
     return pcl_pushcurve(L, r, u->kind) + 1;
 }
@@ -560,8 +556,7 @@ static int c_index(lua_State *L) {
 }
 
 static int c_tostring(lua_State *L) {
-    lcurve *u = self_curve(L, 1);
-    if (!u) return 0;
+    lcurve *u = pcl_meta_self(L, self_curve(L, 1), "tostring: not a curve");
     char text[200];
     pc_curve_text(u->c, u->kind, text, sizeof text);
     return pcl_push_results(L, 0, "s", text);
@@ -615,8 +610,8 @@ void pcl_open_curves(lua_State *L) {
     lua_setfield(L, tk, "curve_methods");
     lua_settop(L, tk);
 
-    lua_pushcfunction(L, l_stroke_raw);
-    lua_setfield(L, tk, "stroke");
+    static const pcl_fn priv[] = {PCL_FN("stroke", l_stroke_raw, stroke_args, NULL, NULL), PCL_END};
+    pcl_register_private(L, tk, priv);
     pcl_register(L, module, ctors, 0);
     lua_settop(L, module);
 }

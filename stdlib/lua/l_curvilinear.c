@@ -99,8 +99,7 @@ PCL_BODY(l_oresme, a) {
     oresme *o = pcl_tagged_new(L, sizeof *o + sizeof(double) * (size_t)(n + 1), &ORESME_TAG, ORESME_MT);
     o->lambda = a[0].x;
     o->m = m;
-    int st = pc_oresme_fill(a[0].x, m, a[2].x, a[3].x, o->y);
-    if (st != PC_OK) return pcl_statuserror(L, pcl_name(L), st, NULL);
+    pcl_check(L, pc_oresme_fill(a[0].x, m, a[2].x, a[3].x, o->y), NULL);
     return 1;
 }
 
@@ -140,8 +139,7 @@ PCL_BODY(bilinear_eval, a) {
     int d = (int)lua_tointeger(L, PCL_UPVALUE(2));
     double out[PC_MAXDIM];
     pc_bilinear(d, c, c + d, c + 2 * d, c + 3 * d, a[0].x, a[1].x, out);
-    for (int k = 0; k < d; k++) lua_pushnumber(L, out[k]);
-    return d;
+    return pcl_push_results(L, d, "x", out);
 }
 static const pcl_fn bilinear_fn = PCL_FN("bilinear", bilinear_eval, t12_args, "x, y, ...", NULL);
 

@@ -3,7 +3,6 @@
  * objects, smooth.sine and smooth.cubic as smoothsteps they evaluate natively (pcl_tk.h). */
 #include "pcl_args.h"
 #include "pcl_core.h"
-#include "pcl_tk.h"
 #include "pcl_expr.h"   /* g(t) of an equation t builds an equation (l_expr.c) */
 
 #define HSPLINE_MT "halfspline"
@@ -116,8 +115,7 @@ static int hs_index(lua_State *L) {
 }
 
 static int hs_tostring(lua_State *L) {
-    pc_hspline *h = pcl_tohspline(L, 1);
-    if (!h) return pcl_error(L, "tostring: not a half-spline");
+    pc_hspline *h = pcl_meta_self(L, pcl_tohspline(L, 1), "tostring: not a half-spline");
     const char *n = pcl_pushnum(L, h->n), *m = pcl_pushnum(L, h->m), *t0 = pcl_pushnum(L, h->t0);
     lua_pushfstring(L, "smooth.half(%s, %s, %s)", n, m, t0);
     return 1;

@@ -82,6 +82,14 @@ same(mid(sq(.3), sq(2.3)), P(1.5, 1.5), "symmetric about the centre")
 local cub = stroke{nodes = {P(0, 0), P(10, 0)}, ein = {V(1, 0), V(1, 0)}, rin = 3, rout = 3, g = smooth.cubic}
 local _, cy = cub:xy(.3)
 near(cy, 0, 1e-12, "cubic g on a straight quadrilateral")
+-- a Lua smoothstep reaches _tk.stroke's g (a declared toolkit function: no forged upvalue)
+local lua_g = {nodes = {P(0, 0), P(10, 0), P(10, 10)}, rin = 3, rout = 3,
+               g = function(t) return smooth.cubic(t) end}
+local sl, sc = stroke(lua_g), stroke{nodes = lua_g.nodes, rin = 3, rout = 3, g = smooth.cubic}
+for t = 0, 2, .25 do same(sl(t), sc(t), "a Lua g as smooth.cubic at t = " .. t, 1e-12) end
+lua_g.g = function() return "x" end
+err(function() stroke(lua_g)(.3) end, "curve: the smoothstep g must return a number, got string",
+    "a Lua g's error")
 
 -- 3-D: example 33's first piece (spherical angles) and example 34's explicit vectors ----------------
 local K33 = stroke{nodes = {P(1, 0, 1), P(1, 0, .1)}, uin = {0, 0}, uin2 = {-.25, -.25}, rin = .25, rout = .25}
