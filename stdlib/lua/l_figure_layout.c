@@ -3,14 +3,10 @@
  * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
  * and map.view.  Points are 2-D, or n-D through the camera; sizes are screen pixels. */
 #include "pcl_draw.h"
-#include "pcl_core.h"
-#include "pcl_scene.h"
 #include "layout.h"
-#include "print.h"
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
-#include "curve_path.h"
 
 /* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
