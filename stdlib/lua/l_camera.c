@@ -2,11 +2,7 @@
  * (pcl_scene.h), and the drawing of curves as one path (c:draw; _tk.draw_curve for plot and the
  * lines of curvilinear.lua), the C path from the object through the camera (or a map), WINDOW
  * and VIEW to the canvas (curve_path.h). */
-#include "pcl_args.h"
-#include "pcl_curve.h"
-#include "pcl_scene.h"
 #include "pcl_draw.h"
-#include "curve_path.h"
 
 #define CAMERA_KEY "pointcalc.camera"
 #define HIDDEN_KEY "pointcalc.hidden"   /* the camera's hidden-line mode: -1 none, else a pc_hidden_mode */

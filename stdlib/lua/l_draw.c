@@ -3,12 +3,9 @@
  * around QBasic's pages, so SCREEN can replace the canvas in place); the registry keeps it
  * too, for the host. */
 #include "pcl_draw.h"
-#include "pcl_core.h"   /* pcl_project (3-D points through the camera), pcl_push_results */
 #include "print.h"       /* named pens, the print pen's width */
-#include "pcl_scene.h"
 #include "furniture.h"
 #include "math_label.h"
-#include "curve_path.h"
 
 #define CANVAS_KEY "pointcalc.canvas"
 static const char CANVAS_TAG = 'd';   /* its address tags the type (PCL_SELF_TAG) */

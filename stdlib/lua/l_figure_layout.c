@@ -3,14 +3,10 @@
  * vector, dimension, angle_mark, ticks, hatch, centre_line, fit, caption, axes, graph, legend
  * and map.view.  Points are 2-D, or n-D through the camera; sizes are screen pixels. */
 #include "pcl_draw.h"
-#include "pcl_core.h"
-#include "pcl_scene.h"
 #include "layout.h"
-#include "print.h"
 #include "furniture.h"
 #include "axes.h"
 #include "view.h"
-#include "curve_path.h"
 
 /* ---- the readers: a place (a 2-D point, or n-D through the camera), a colour ------------- */
 
@@ -144,28 +140,24 @@ PCL_BODY(l_axes, a) {   /* options; x, y, origin, ticks, labels, arrows, grid, c
 
 static const pcl_arg graph_keys[] = {A_COLOR("color"), {.name = "n", .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, .lo = 1, .hi = 1e6, .dflt = 400}, PCL_END};
 static const pcl_arg graph_args[] = {A_FUNCTION("f"), A_NUM("a"), A_NUM("b"), A_OPTIONS("options", graph_keys), PCL_END};
-typedef struct {
-    lua_State *L;
-    int f, failed;
-} graph_ctx;
-
 /* f(x), run protected so that the core frees its buffers: an error stays on the stack */
 static int graph_y(void *p, double x, double *y, int *have) {
-    graph_ctx *g = p;
-    lua_pushvalue(g->L, g->f);
-    lua_pushnumber(g->L, x);
-    if ((g->failed = lua_pcall(g->L, 1, 1, 0) != LUA_OK)) return PC_EARG;
-    *y = lua_tonumberx(g->L, -1, have);
-    lua_pop(g->L, 1);
+    pcl_luafn *f = p;
+    lua_State *L = pcl_current_state();
+    lua_pushvalue(L, f->stack);
+    lua_pushnumber(L, x);
+    if ((f->failed = lua_pcall(L, 1, 1, 0) != LUA_OK)) return PC_EARG;
+    *y = lua_tonumberx(L, -1, have);
+    lua_pop(L, 1);
     return PC_OK;
 }
 
 PCL_BODY(l_graph, a) {
     pc_canvas *c = pcl_active_canvas(L);
     if (!(a[1].x < a[2].x)) return pcl_argfail(L, 3, "must be greater than a");
-    graph_ctx g = {L, a[0].idx, 0};
-    int st = pc_graph(c, a[1].x, a[2].x, (int)a[5].x, graph_y, &g, (int)a[4].x);
-    return g.failed ? lua_error(L) : pcl_check_canvas(L, c, st);
+    pcl_luafn f = pcl_luafn_at(L, a[0].idx);
+    int st = pc_graph(c, a[1].x, a[2].x, (int)a[5].x, graph_y, &f, (int)a[4].x);
+    return f.failed ? lua_error(L) : pcl_check_canvas(L, c, st);
 }
 
 static const char *const CORNERS[] = {"ne", "nw", "se", "sw", NULL};

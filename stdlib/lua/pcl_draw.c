@@ -1,8 +1,6 @@
 /* Facilities the drawing bindings share (pcl_draw.h): the attribute reader, genuine tagged
  * userdata, the reader of strings, lists of n-D points as places on the screen. */
 #include "pcl_draw.h"
-#include "pcl_curve.h"
-#include "curve_path.h"
 
 int pcl_read_attr(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     int n = pcl_active_canvas(L)->ncolors, isint;

@@ -1,11 +1,14 @@
-/* What the drawing bindings share (l_draw.c, l_qbscreen.c, l_figure_layout.c): the canvas and
- * QBasic's pages kept by l_draw.c, the house error for a core call on a canvas, and the
- * readers of the drawing kinds. */
+/* What the drawing bindings share (l_draw.c, l_qbscreen.c, l_figure_layout.c, l_camera.c): the
+ * canvas and QBasic's pages kept by l_draw.c, the house error for a core call on a canvas, and
+ * the readers of the drawing kinds; the headers they all include. */
 #ifndef PCL_DRAW_H
 #define PCL_DRAW_H
 
 #include "pcl_args.h"
+#include "pcl_core.h"     /* pcl_push_results, pcl_project (3-D points through the camera) */
+#include "pcl_scene.h"
 #include "qbscreen.h"
+#include "curve_path.h"
 
 /* The screen's pages (qbscreen.h); pcl_canvas (pcl.h) is the page shown, drawing goes to the
  * active page. */

@@ -4,7 +4,6 @@
 #define PCL_TK_H
 
 #include "pcl_point.h"
-#include "status.h"
 #include "smooth.h"
 
 /* Is f smooth.sine or smooth.cubic (*kind is then a pc_gkind)?  The half-spline object at
