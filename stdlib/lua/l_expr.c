@@ -127,13 +127,13 @@ static int m_eq(lua_State *L) {
     return pcl_push_results(L, 0, "b", a && b && a->id == b->id);   /* hash-consed: one node, one equation */
 }
 
-/* the operands each hook looks at for an equation (-1: all); the order of pcl_eq_op */
+/* the operands each hook looks at for an equation (-1: all); the order of pc_expr_verb */
 static const signed char HOOK_ARGS[] = {2, 2, 2, 2, 1, 3, 1, 2, 2, 1, -1, -1, 4};
 
-int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
+int pcl_eq_hook(lua_State *L, pc_expr_verb op) {
     int n = HOOK_ARGS[op] < 0 ? lua_gettop(L) : HOOK_ARGS[op];
     for (int i = 1; i <= n; i++)
-        if (toeq(L, i)) return apply(L, (pc_expr_verb)op, 1, n, NULL);
+        if (toeq(L, i)) return apply(L, op, 1, n, NULL);
     return 0;
 }
 
