@@ -307,8 +307,7 @@ static int push_text(lua_State *L, int id, int names) {
 }
 
 static int eq_tostring(lua_State *L) {
-    leq *e = toeq(L, 1);
-    if (!e) return pcl_error(L, "tostring: not an equation");
+    leq *e = pcl_meta_self(L, toeq(L, 1), "tostring: not an equation");
     return push_text(L, e->id, 0);
 }
 
@@ -372,8 +371,7 @@ static int eq_index(lua_State *L) {
 }
 
 static int s_len(lua_State *L) {
-    lsamples *s = tosamples(L, 1);
-    if (!s) return pcl_error(L, "#: not samples");
+    lsamples *s = pcl_meta_self(L, tosamples(L, 1), "#: not samples");
     return pcl_push_results(L, 0, "i", (int)s->n);
 }
 
@@ -386,11 +384,10 @@ PCL_METHOD(s_sum, lsamples *s, a) {
 
 /* s[i] (a number or a point; nil past the ends), s.dim, then the methods */
 static int s_index(lua_State *L) {
-    lsamples *s = tosamples(L, 1);
+    lsamples *s = pcl_meta_self(L, tosamples(L, 1), "index: not samples");
     int number = lua_type(L, 2) == LUA_TNUMBER;
     lua_Integer i = lua_tointeger(L, 2);
     const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : NULL;
-    if (!s) return pcl_error(L, "index: not samples");
     if (number && (i < 1 || i > s->n)) lua_pushnil(L);
     else if (number && !s->dim) lua_pushnumber(L, s->v[i - 1]);
     else if (number) pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
@@ -400,8 +397,7 @@ static int s_index(lua_State *L) {
 }
 
 static int s_tostring(lua_State *L) {
-    lsamples *s = tosamples(L, 1);
-    if (!s) return pcl_error(L, "tostring: not samples");
+    lsamples *s = pcl_meta_self(L, tosamples(L, 1), "tostring: not samples");
     lua_pushfstring(L, "samples(%d, %d-D)", (int)s->n, s->dim);
     return 1;
 }

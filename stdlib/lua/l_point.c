@@ -155,15 +155,13 @@ static int l_eq(lua_State *L) {
     return pcl_push_results(L, 0, "b", eq);
 }
 
-static int l_len(lua_State *L) {
-    pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));    /* only the VM calls it */
-    if (!p) return pcl_error(L, "#: not a point");
+static int l_len(lua_State *L) {   /* only the VM calls it */
+    pcl_value *p = pcl_meta_self(L, genuine(L, 1, lua_touserdata(L, 1)), "#: not a point");
     return pcl_push_results(L, 0, "i", p->n);
 }
 
 static int l_tostring(lua_State *L) {
-    pcl_value *p = topt(L, 1);
-    if (!p) return pcl_error(L, "tostring: not a point");
+    pcl_value *p = pcl_meta_self(L, topt(L, 1), "tostring: not a point");
     char s[PC_MAXDIM * 24 + 32];
     pc_value_text(p->n, p->h, s, sizeof s);
     return pcl_push_results(L, 0, "s", s);
@@ -191,8 +189,7 @@ static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key)
  * it (the metatable is protected by __metatable), always with a point as argument 1. */
 static int l_index(lua_State *L) {
     /* the VM calls it for any userdata with this metatable, a forged one too */
-    pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));
-    if (!p) return pcl_error(L, "index: not a point");
+    pcl_value *p = pcl_meta_self(L, genuine(L, 1, lua_touserdata(L, 1)), "index: not a point");
     int t = lua_type(L, 2);
     if (t == LUA_TSTRING) {
         size_t len;
