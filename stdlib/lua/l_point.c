@@ -190,19 +190,13 @@ static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key)
 static int l_index(lua_State *L) {
     /* the VM calls it for any userdata with this metatable, a forged one too */
     pcl_value *p = pcl_meta_self(L, genuine(L, 1, lua_touserdata(L, 1)), "index: not a point");
-    int t = lua_type(L, 2);
-    if (t == LUA_TSTRING) {
-        size_t len;
-        const char *k = lua_tolstring(L, 2, &len);
-        if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
-        if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);      /* the weight */
-        lua_rawget(L, METHODS);                                             /* the key k on the top */
-        return 1;
-    }
-    int isint;
-    lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (t == LUA_TNUMBER && isint && i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
-    lua_pushnil(L);
+    size_t len = 0;
+    const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tolstring(L, 2, &len) : NULL;
+    lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
+    if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
+    if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);          /* the weight */
+    if (i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
+    lua_rawget(L, METHODS);                                 /* a method, or nil: the key on the top */
     return 1;
 }
 
