@@ -375,9 +375,7 @@ PCL_BODY(l_area, a) {
 /* coords(p) -> x, y, ...: the coordinates of a point or the components of a vector. */
 static const pcl_arg one_loc[] = {{.name = "p", .kind = PCL_LOC}, PCL_END};
 PCL_BODY(l_coords, a) {
-    luaL_checkstack(L, a[0].n, "too many coordinates");
-    for (int i = 0; i < a[0].n; i++) lua_pushnumber(L, a[0].v[i]);
-    return a[0].n;
+    return pcl_push_packed(L, a[0].n, "x", a[0].v);   /* n <= LUA_MINSTACK */
 }
 
 /* near(a, b [, eps]): numbers, or values of one dimension, equal within eps (default 1e-9)

@@ -71,9 +71,7 @@ PCL_METHOD(l_params, pc_simplex *s, a) {
     if (a[0].n != s->n)
         return pcl_fail(L, "argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", a[0].n, s->n);
     pc_simplex_params(s, a[0].v, p, &p[s->k]);
-    luaL_checkstack(L, s->k + 1, NULL);
-    for (int i = 0; i <= s->k; i++) lua_pushnumber(L, p[i]);
-    return s->k + 1;
+    return pcl_push_packed(L, s->k + 1, "x", p);   /* k + 1 <= LUA_MINSTACK */
 }
 
 PCL_METHOD(l_measure, pc_simplex *s, a) {
