@@ -12,7 +12,6 @@
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "pcl_tagged.h"
-#include "expr.h"
 #include "konop_expanded.h"   /* the book's printed form of expanded coordinates */
 
 #define EQ_MT "equation"
@@ -284,8 +283,7 @@ static const char *namer(void *ud, int dim, const double *h) {
     lua_pushnil(L);
     while (lua_next(L, n->tbl)) {
         pcl_value *v = pcl_tovalue(L, -1);
-        int same = v && v->n == dim && lua_type(L, -2) == LUA_TSTRING;
-        for (int i = 0; same && i <= dim; i++) same = v->h[i] == h[i];
+        int same = v && lua_type(L, -2) == LUA_TSTRING && pc_value_same(v->n, v->h, dim, h);
         lua_pop(L, 1);
         if (same) {
             const char *name = lua_tostring(L, -1);   /* the key, which stays in the table */

@@ -150,9 +150,7 @@ static int l_unm(lua_State *L) { return arith(L, 'u', PC_EQV_NEG); }
 
 static int l_eq(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    int eq = a && b && a->n == b->n;
-    for (int i = 0; eq && i <= a->n; i++) eq = a->h[i] == b->h[i];
-    return pcl_push_results(L, 0, "b", eq);
+    return pcl_push_results(L, 0, "b", a && b && pc_value_same(a->n, a->h, b->n, b->h));
 }
 
 static int l_len(lua_State *L) {   /* only the VM calls it */
