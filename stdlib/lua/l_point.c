@@ -361,11 +361,10 @@ PCL_BODY(l_area, a) {
     if (n < 2) return pcl_fail(L, "points must be 2-D or more, got 1-D");
     if (n > 2 && m > 3) return pcl_fail(L, "a polygon area needs 2-D points; in %d-D give a triangle", n);
     if (n > 2) return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
-    double s = pc_area2(a[0].v, a[1].v, a[2].v), prev[2] = {a[2].v[0], a[2].v[1]};
-    for (int j = 4; j <= m; j++) {
+    double s = pc_area2(a[0].v, a[1].v, a[2].v);
+    for (int j = 4; j <= m; j++, a[2] = d) {              /* a[2]: the vertex before d */
         pcl_readone(L, j, j, 0, &more_pt, 2, &d);
-        s += pc_area2(a[0].v, prev, d.v);
-        prev[0] = d.v[0], prev[1] = d.v[1];
+        s += pc_area2(a[0].v, a[2].v, d.v);
     }
     return push_num(L, s);
 }
