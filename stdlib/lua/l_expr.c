@@ -383,14 +383,13 @@ PCL_METHOD(s_sum, lsamples *s, a) {
 /* s[i] (a number or a point; nil past the ends), s.dim, then the methods */
 static int s_index(lua_State *L) {
     lsamples *s = pcl_meta_self(L, tosamples(L, 1), "index: not samples");
-    int number = lua_type(L, 2) == LUA_TNUMBER;
-    lua_Integer i = lua_tointeger(L, 2);
+    lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
     const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : NULL;
-    if (number && (i < 1 || i > s->n)) lua_pushnil(L);
-    else if (number && !s->dim) lua_pushnumber(L, s->v[i - 1]);
-    else if (number) pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
+    int in = i >= 1 && i <= s->n;
+    if (in && !s->dim) lua_pushnumber(L, s->v[i - 1]);
+    else if (in) pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
     else if (k && !strcmp(k, "dim")) lua_pushinteger(L, s->dim);
-    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top: sum */
+    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top: sum, or nil */
     return 1;
 }
 

@@ -95,11 +95,9 @@ PCL_METHOD(l_ratio, pc_simplex *s, a) {
 
 static int l_index(lua_State *L) {
     pc_simplex *s = pcl_meta_self(L, tosimplex(L, 1), "index: not a simplex");
-    int isint;
-    lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (lua_type(L, 2) != LUA_TNUMBER) lua_rawget(L, lua_upvalueindex(1));    /* a method */
-    else if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
-    else lua_pushnil(L);
+    lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
+    if (i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
+    else lua_rawget(L, lua_upvalueindex(1));                /* a method, or nil: the key on the top */
     return 1;
 }
 
