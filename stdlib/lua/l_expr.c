@@ -438,7 +438,6 @@ void pcl_open_expr(lua_State *L) {
     pcl_open_type(L, EQ_MT, meta, call, methods, eq_index);
     static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};
     pcl_open_type(L, SAMPLES_MT, smeta, NULL, sample_methods, s_index);
-    lua_settop(L, module);
 
     pcl_register(L, module, fns, 0);
     wrap_math(L);

@@ -292,12 +292,11 @@ static int l_bar(lua_State *L) {
 static const pcl_arg mid_args[] = {A_VAL("A"), A_VAL("B"), PCL_END};
 PCL_BODY(l_mid, a) {
     int m = lua_gettop(L), n = a[0].n;
-    pcl_val v;
     double s[PC_MAXDIM + 1];   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
-    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m + a[1].v[i] / m;
-    for (int j = 3; j <= m; j++) {
-        pcl_readone(L, j, j, 0, &more_val, n, &v);
-        for (int i = 0; i <= n; i++) s[i] += v.v[i] / m;
+    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m;
+    for (int j = 2; j <= m; j++) {                         /* a[1]: argument #j */
+        if (j > 2) pcl_readone(L, j, j, 0, &more_val, n, &a[1]);
+        for (int i = 0; i <= n; i++) s[i] += a[1].v[i] / m;
     }
     for (int i = 0; i <= n; i++)
         if (!isfinite(s[i]))
