@@ -40,6 +40,12 @@ void pc_scale(int n, const double *a, double k, double *out) {
     for (int i = 0; i <= n; i++) out[i] = a[i] * k;
 }
 
+int pc_value_same(int n, const double *a, int m, const double *b) {
+    int same = n == m;
+    for (int i = 0; same && i <= n; i++) same = a[i] == b[i];
+    return same;
+}
+
 int pc_lerp(int n, const double *a, const double *b, double t, double *out) {
     double s = 1.0 - t;                       /* t̄, the complement of the parameter */
     for (int i = 0; i < n; i++) out[i] = a[i] * s + b[i] * t;

@@ -45,6 +45,9 @@ int pc_normalize(int n, const double *h, double *out);
 void pc_add(int n, const double *a, const double *b, double *out);
 void pc_sub(int n, const double *a, const double *b, double *out);
 void pc_scale(int n, const double *a, double k, double *out);
+/* The values a (n + 1 doubles) and b (m + 1) are the same: one dimension and every double
+ * equal (==: -0 is 0, NaN never equal), as P(1, 2) == P(1, 2) is true: 1 or 0. */
+int pc_value_same(int n, const double *a, int m, const double *b);
 /* (B - A) t + A, eq. of the segment (Fig. 1.1), computed as A(1 - t) + B t so that t = 0
  * and t = 1 give A and B exactly.  Works on values of any weight; two values of one weight give
  * that weight exactly at every t (two points a point, never a vector by rounding).  Large t

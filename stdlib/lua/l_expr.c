@@ -12,7 +12,6 @@
 #include "pcl_expr.h"
 #include "pcl_point.h"
 #include "pcl_tagged.h"
-#include "expr.h"
 #include "konop_expanded.h"   /* the book's printed form of expanded coordinates */
 
 #define EQ_MT "equation"
@@ -127,13 +126,13 @@ static int m_eq(lua_State *L) {
     return pcl_push_results(L, 0, "b", a && b && a->id == b->id);   /* hash-consed: one node, one equation */
 }
 
-/* the operands each hook looks at for an equation (-1: all); the order of pcl_eq_op */
+/* the operands each hook looks at for an equation (-1: all); the order of pc_expr_verb */
 static const signed char HOOK_ARGS[] = {2, 2, 2, 2, 1, 3, 1, 2, 2, 1, -1, -1, 4};
 
-int pcl_eq_hook(lua_State *L, pcl_eq_op op) {
+int pcl_eq_hook(lua_State *L, pc_expr_verb op) {
     int n = HOOK_ARGS[op] < 0 ? lua_gettop(L) : HOOK_ARGS[op];
     for (int i = 1; i <= n; i++)
-        if (toeq(L, i)) return apply(L, (pc_expr_verb)op, 1, n, NULL);
+        if (toeq(L, i)) return apply(L, op, 1, n, NULL);
     return 0;
 }
 
@@ -284,8 +283,7 @@ static const char *namer(void *ud, int dim, const double *h) {
     lua_pushnil(L);
     while (lua_next(L, n->tbl)) {
         pcl_value *v = pcl_tovalue(L, -1);
-        int same = v && v->n == dim && lua_type(L, -2) == LUA_TSTRING;
-        for (int i = 0; same && i <= dim; i++) same = v->h[i] == h[i];
+        int same = v && lua_type(L, -2) == LUA_TSTRING && pc_value_same(v->n, v->h, dim, h);
         lua_pop(L, 1);
         if (same) {
             const char *name = lua_tostring(L, -1);   /* the key, which stays in the table */
@@ -307,8 +305,7 @@ static int push_text(lua_State *L, int id, int names) {
 }
 
 static int eq_tostring(lua_State *L) {
-    leq *e = toeq(L, 1);
-    if (!e) return pcl_error(L, "tostring: not an equation");
+    leq *e = pcl_meta_self(L, toeq(L, 1), "tostring: not an equation");
     return push_text(L, e->id, 0);
 }
 
@@ -372,8 +369,7 @@ static int eq_index(lua_State *L) {
 }
 
 static int s_len(lua_State *L) {
-    lsamples *s = tosamples(L, 1);
-    if (!s) return pcl_error(L, "#: not samples");
+    lsamples *s = pcl_meta_self(L, tosamples(L, 1), "#: not samples");
     return pcl_push_results(L, 0, "i", (int)s->n);
 }
 
@@ -386,22 +382,19 @@ PCL_METHOD(s_sum, lsamples *s, a) {
 
 /* s[i] (a number or a point; nil past the ends), s.dim, then the methods */
 static int s_index(lua_State *L) {
-    lsamples *s = tosamples(L, 1);
-    int number = lua_type(L, 2) == LUA_TNUMBER;
-    lua_Integer i = lua_tointeger(L, 2);
+    lsamples *s = pcl_meta_self(L, tosamples(L, 1), "index: not samples");
+    lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
     const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : NULL;
-    if (!s) return pcl_error(L, "index: not samples");
-    if (number && (i < 1 || i > s->n)) lua_pushnil(L);
-    else if (number && !s->dim) lua_pushnumber(L, s->v[i - 1]);
-    else if (number) pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
+    int in = i >= 1 && i <= s->n;
+    if (in && !s->dim) lua_pushnumber(L, s->v[i - 1]);
+    else if (in) pcl_pushpoint(L, s->dim, s->v + (size_t)(i - 1) * (size_t)s->dim);
     else if (k && !strcmp(k, "dim")) lua_pushinteger(L, s->dim);
-    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top: sum */
+    else lua_rawget(L, lua_upvalueindex(1));   /* the key at 2, on the top: sum, or nil */
     return 1;
 }
 
 static int s_tostring(lua_State *L) {
-    lsamples *s = tosamples(L, 1);
-    if (!s) return pcl_error(L, "tostring: not samples");
+    lsamples *s = pcl_meta_self(L, tosamples(L, 1), "tostring: not samples");
     lua_pushfstring(L, "samples(%d, %d-D)", (int)s->n, s->dim);
     return 1;
 }
@@ -445,7 +438,6 @@ void pcl_open_expr(lua_State *L) {
     pcl_open_type(L, EQ_MT, meta, call, methods, eq_index);
     static const luaL_Reg smeta[] = {{"__len", s_len}, {"__tostring", s_tostring}, {NULL, NULL}};
     pcl_open_type(L, SAMPLES_MT, smeta, NULL, sample_methods, s_index);
-    lua_settop(L, module);
 
     pcl_register(L, module, fns, 0);
     wrap_math(L);

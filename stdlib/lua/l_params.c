@@ -12,16 +12,14 @@
 #define DECLARED_KEY "pointcalc.params.declared" /* the list of declarations, in order */
 #define NAMES_KEY "pointcalc.params.names"       /* name -> true once declared */
 
-static void registry_table(lua_State *L, const char *key) { luaL_getsubtable(L, LUA_REGISTRYINDEX, key); }
-
 void pcl_param_set(lua_State *L, const char *name, double value) {
-    registry_table(L, SET_KEY);
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, SET_KEY);
     lua_pushnumber(L, value);
     lua_setfield(L, -2, name);
     lua_pop(L, 1);
 }
 
-void pcl_push_params(lua_State *L) { registry_table(L, DECLARED_KEY); }
+void pcl_push_params(lua_State *L) { luaL_getsubtable(L, LUA_REGISTRYINDEX, DECLARED_KEY); }
 
 /* The name: one a URL and a command line can carry, letters, digits, _ (not first a digit). */
 static int read_name(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
@@ -54,17 +52,17 @@ PCL_BODY(l_slider, a) {
     if (step < 0 || step > hi - lo) return pcl_argfail(L, 5, "must be between 0 and max - min");
 
     /* the declaration, once per name (a script may ask for its slider again) */
-    registry_table(L, NAMES_KEY);
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, NAMES_KEY);
     if (lua_getfield(L, -1, name) == LUA_TNIL) {
         lua_pushboolean(L, 1);
         lua_setfield(L, -3, name);
-        registry_table(L, DECLARED_KEY);
+        luaL_getsubtable(L, LUA_REGISTRYINDEX, DECLARED_KEY);
         pcl_push_results(L, 0, "name=s min=n max=n default=n step=n animate=b", name, lo, hi, dflt, step, (int)k[1].x);
         lua_rawseti(L, -2, luaL_len(L, -2) + 1);
     }
 
     /* the value: the host's, checked against the range, else the default */
-    registry_table(L, SET_KEY);
+    luaL_getsubtable(L, LUA_REGISTRYINDEX, SET_KEY);
     double v = lua_getfield(L, -1, name) == LUA_TNUMBER ? lua_tonumber(L, -1) : dflt;
     if (v < lo || v > hi)
         return pcl_fail(L, "the value %s set for %s is outside its range [%s, %s]", pcl_pushnum(L, v), name,

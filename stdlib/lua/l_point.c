@@ -97,7 +97,7 @@ static int l_make(lua_State *L) {
     int n = lua_gettop(L), table = n == 1 && lua_type(L, 1) == LUA_TTABLE;   /* P{1, 2} */
     if (table) n = (int)lua_rawlen(L, 1);
     for (int i = 0; !table && i < n; i++)       /* an equation among the coordinates: P of it */
-        if (lua_type(L, i + 1) != LUA_TNUMBER && pcl_eq_hook(L, weight == 1.0 ? PCL_EQ_P : PCL_EQ_V)) return 1;
+        if (lua_type(L, i + 1) != LUA_TNUMBER && pcl_eq_hook(L, weight == 1.0 ? PC_EQV_P : PC_EQV_V)) return 1;
     if (n < 1) return pcl_fail(L, table ? "the table has no coordinates" : "needs at least one coordinate");
     if (n > PC_MAXDIM) return pcl_fail(L, "%d coordinates, but the largest dimension is %d", n, PC_MAXDIM);
     pcl_value *p = newpt(L, n);
@@ -121,7 +121,7 @@ static pc_operand operand(lua_State *L, int idx) {
 
 /* A + B, A - B, k*A, A*k, A/k and -A: weights add, so a point plus a vector is a point; u/v of
  * two parallel vectors is the number r with u = r v ((2.62)'s (T - A)/(T_C - A)). */
-static inline int arith(lua_State *L, int op, pcl_eq_op hook) {
+static inline int arith(lua_State *L, int op, pc_expr_verb hook) {
     pcl_value *a = topt(L, 1), *b = op == 'u' ? NULL : topt(L, 2), *p = a ? a : b;
     int fits, knum = lua_type(L, a ? 2 : 1) == LUA_TNUMBER;   /* the k of k*A, A*k, A/k */
     if (op == '+' || op == '-' || (op == '/' && b)) fits = a && b && a->n == b->n;
@@ -142,28 +142,24 @@ static inline int arith(lua_State *L, int op, pcl_eq_op hook) {
     return pcl_error(L, "%s", msg);
 }
 
-static int l_add(lua_State *L) { return arith(L, '+', PCL_EQ_ADD); }
-static int l_sub(lua_State *L) { return arith(L, '-', PCL_EQ_SUB); }
-static int l_mul(lua_State *L) { return arith(L, '*', PCL_EQ_MUL); }
-static int l_div(lua_State *L) { return arith(L, '/', PCL_EQ_DIV); }
-static int l_unm(lua_State *L) { return arith(L, 'u', PCL_EQ_UNM); }
+static int l_add(lua_State *L) { return arith(L, '+', PC_EQV_ADD); }
+static int l_sub(lua_State *L) { return arith(L, '-', PC_EQV_SUB); }
+static int l_mul(lua_State *L) { return arith(L, '*', PC_EQV_MUL); }
+static int l_div(lua_State *L) { return arith(L, '/', PC_EQV_DIV); }
+static int l_unm(lua_State *L) { return arith(L, 'u', PC_EQV_NEG); }
 
 static int l_eq(lua_State *L) {
     pcl_value *a = topt(L, 1), *b = topt(L, 2);
-    int eq = a && b && a->n == b->n;
-    for (int i = 0; eq && i <= a->n; i++) eq = a->h[i] == b->h[i];
-    return pcl_push_results(L, 0, "b", eq);
+    return pcl_push_results(L, 0, "b", a && b && pc_value_same(a->n, a->h, b->n, b->h));
 }
 
-static int l_len(lua_State *L) {
-    pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));    /* only the VM calls it */
-    if (!p) return pcl_error(L, "#: not a point");
+static int l_len(lua_State *L) {   /* only the VM calls it */
+    pcl_value *p = pcl_meta_self(L, genuine(L, 1, lua_touserdata(L, 1)), "#: not a point");
     return pcl_push_results(L, 0, "i", p->n);
 }
 
 static int l_tostring(lua_State *L) {
-    pcl_value *p = topt(L, 1);
-    if (!p) return pcl_error(L, "tostring: not a point");
+    pcl_value *p = pcl_meta_self(L, topt(L, 1), "tostring: not a point");
     char s[PC_MAXDIM * 24 + 32];
     pc_value_text(p->n, p->h, s, sizeof s);
     return pcl_push_results(L, 0, "s", s);
@@ -191,21 +187,14 @@ static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key)
  * it (the metatable is protected by __metatable), always with a point as argument 1. */
 static int l_index(lua_State *L) {
     /* the VM calls it for any userdata with this metatable, a forged one too */
-    pcl_value *p = genuine(L, 1, lua_touserdata(L, 1));
-    if (!p) return pcl_error(L, "index: not a point");
-    int t = lua_type(L, 2);
-    if (t == LUA_TSTRING) {
-        size_t len;
-        const char *k = lua_tolstring(L, 2, &len);
-        if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
-        if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);      /* the weight */
-        lua_rawget(L, METHODS);                                             /* the key k on the top */
-        return 1;
-    }
-    int isint;
-    lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (t == LUA_TNUMBER && isint && i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
-    lua_pushnil(L);
+    pcl_value *p = pcl_meta_self(L, genuine(L, 1, lua_touserdata(L, 1)), "index: not a point");
+    size_t len = 0;
+    const char *k = lua_type(L, 2) == LUA_TSTRING ? lua_tolstring(L, 2, &len) : NULL;
+    lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
+    if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
+    if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);          /* the weight */
+    if (i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
+    lua_rawget(L, METHODS);                                 /* a method, or nil: the key on the top */
     return 1;
 }
 
@@ -248,7 +237,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
 static int run(lua_State *L, int op, int hook) {
     int k = 1, m = lua_gettop(L);
     while (hook != NOHOOK && k <= m && topt(L, k)) k++;
-    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, (pcl_eq_op)hook)) return op == PC_FN_MEET ? 3 : 1;
+    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, (pc_expr_verb)hook)) return op == PC_FN_MEET ? 3 : 1;
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     return finish(L, op, a);
@@ -277,7 +266,7 @@ static int l_lerp(lua_State *L) {
     int isnum = lua_type(L, 3) == LUA_TNUMBER;          /* no string coercion, as in P() */
     double t = isnum ? lua_tonumber(L, 3) : 0;
     if (!(a && b && isnum && a->n == b->n && isfinite(t))) {     /* not the hot path */
-        if (pcl_eq_hook(L, PCL_EQ_LERP)) return 1;
+        if (pcl_eq_hook(L, PC_EQV_LERP)) return 1;
         pcl_val v[3] = {0};
         if (!a && !b && lua_type(L, 1) == LUA_TNUMBER && lua_type(L, 2) == LUA_TNUMBER) {
             pcl_readone(L, 3, 3, 0, &lerp_args[2], 0, &v[2]);
@@ -293,7 +282,7 @@ static int l_lerp(lua_State *L) {
 
 static const pcl_arg t_arg[] = {A_NUM("t"), PCL_END};
 static int l_bar(lua_State *L) {
-    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_hook(L, PCL_EQ_BAR)) return 1;
+    if (lua_type(L, 1) != LUA_TNUMBER && pcl_eq_hook(L, PC_EQV_BAR)) return 1;
     pcl_val a[1] = {0};
     PCL_READ(L, a);
     return push_num(L, 1.0 - a[0].x);
@@ -303,12 +292,11 @@ static int l_bar(lua_State *L) {
 static const pcl_arg mid_args[] = {A_VAL("A"), A_VAL("B"), PCL_END};
 PCL_BODY(l_mid, a) {
     int m = lua_gettop(L), n = a[0].n;
-    pcl_val v;
     double s[PC_MAXDIM + 1];   /* each term divided first: mid(P(1e308, 0), P(1e308, 0)) is P(1e308, 0) */
-    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m + a[1].v[i] / m;
-    for (int j = 3; j <= m; j++) {
-        pcl_readone(L, j, j, 0, &more_val, n, &v);
-        for (int i = 0; i <= n; i++) s[i] += v.v[i] / m;
+    for (int i = 0; i <= n; i++) s[i] = a[0].v[i] / m;
+    for (int j = 2; j <= m; j++) {                         /* a[1]: argument #j */
+        if (j > 2) pcl_readone(L, j, j, 0, &more_val, n, &a[1]);
+        for (int i = 0; i <= n; i++) s[i] += a[1].v[i] / m;
     }
     for (int i = 0; i <= n; i++)
         if (!isfinite(s[i]))
@@ -340,7 +328,7 @@ static const pcl_arg uv_args[] = {A_SAMEVECTOR("u"), A_SAMEVECTOR("v"), PCL_END}
 static int l_dot(lua_State *L) {
     pcl_value *u, *v;
     if (exact_pair(L, 0.0, &u, &v)) return push_num(L, pc_dot(u->n, u->h, v->h));
-    return run(L, PC_FN_DOT, PCL_EQ_DOT);
+    return run(L, PC_FN_DOT, PC_EQV_DOT);
 }
 
 /* angle(A, B, C): the angle at A of triangle ABC; angle(u, v): between two vectors.  The form
@@ -372,11 +360,10 @@ PCL_BODY(l_area, a) {
     if (n < 2) return pcl_fail(L, "points must be 2-D or more, got 1-D");
     if (n > 2 && m > 3) return pcl_fail(L, "a polygon area needs 2-D points; in %d-D give a triangle", n);
     if (n > 2) return push_num(L, pc_area(n, a[0].v, a[1].v, a[2].v));
-    double s = pc_area2(a[0].v, a[1].v, a[2].v), prev[2] = {a[2].v[0], a[2].v[1]};
-    for (int j = 4; j <= m; j++) {
+    double s = pc_area2(a[0].v, a[1].v, a[2].v);
+    for (int j = 4; j <= m; j++, a[2] = d) {              /* a[2]: the vertex before d */
         pcl_readone(L, j, j, 0, &more_pt, 2, &d);
-        s += pc_area2(a[0].v, prev, d.v);
-        prev[0] = d.v[0], prev[1] = d.v[1];
+        s += pc_area2(a[0].v, a[2].v, d.v);
     }
     return push_num(L, s);
 }
@@ -384,9 +371,7 @@ PCL_BODY(l_area, a) {
 /* coords(p) -> x, y, ...: the coordinates of a point or the components of a vector. */
 static const pcl_arg one_loc[] = {{.name = "p", .kind = PCL_LOC}, PCL_END};
 PCL_BODY(l_coords, a) {
-    luaL_checkstack(L, a[0].n, "too many coordinates");
-    for (int i = 0; i < a[0].n; i++) lua_pushnumber(L, a[0].v[i]);
-    return a[0].n;
+    return pcl_push_packed(L, a[0].n, "x", a[0].v);   /* n <= LUA_MINSTACK */
 }
 
 /* near(a, b [, eps]): numbers, or values of one dimension, equal within eps (default 1e-9)
@@ -440,8 +425,8 @@ static const struct {
     {{{.name = "mid", .fn = l_mid, .args = mid_args, .sig = "mid(A, B, ...) -> value", .help = "The midpoint of two values, or the centroid of several."}}, .method = 1},
     {{{.name = "dist", .fn = l_dist, .args = two_points, .sig = "dist(A, B) | dist(v) -> number", .help = "The distance between two points, or the length of a vector."}}, .method = 1},
     {{PCL_FN("dot", l_dot, uv_args, "number", "The scalar product of two vectors.")}, .method = 1},
-    OP("cross", uv_args, "vector | number", PC_FN_CROSS, PCL_EQ_CROSS, 1, "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D."),
-    OP("unit", one_vector, "vector", PC_FN_UNIT, PCL_EQ_UNIT, 1, "The vector v scaled to length 1; the zero vector is an error."),
+    OP("cross", uv_args, "vector | number", PC_FN_CROSS, PC_EQV_CROSS, 1, "The cross product: a vector in 3-D, the number u.x v.y - u.y v.x in 2-D."),
+    OP("unit", one_vector, "vector", PC_FN_UNIT, PC_EQV_UNIT, 1, "The vector v scaled to length 1; the zero vector is an error."),
     OP("perp", one_vector, "vector", PC_FN_PERP, NOHOOK, 1, "The 2-D vector v turned by +90 degrees: V(-v.y, v.x)."),
     {{{.name = "angle", .fn = l_angle, .args = three_points, .sig = "angle(A, B, C) | angle(u, v) -> number", .help = "The angle at A of triangle ABC, or between two vectors: unsigned, in radians, 0..pi."}}, .method = 1},
     OP("foot", foot_args, "point", PC_FN_FOOT, NOHOOK, 0, "The foot of the perpendicular from C to line AB."),
@@ -450,7 +435,7 @@ static const struct {
     OP("divide", divide_args, "point", PC_FN_DIVIDE, NOHOOK, 0, "The point Z with (XYZ) = lambda: (X + lambda Y)/(1 + lambda); lambda = -1 gives the point at infinity of XY."),
     OP("harmonic", harmonic_args, "point", PC_FN_HARMONIC, NOHOOK, 0, "The harmonic conjugate N of T with respect to A, B: (ABN) = -(ABT); the midpoint gives the point at infinity."),
     OP("cross_ratio", cross_ratio_args, "number", PC_FN_CROSS_RATIO, NOHOOK, 0, "The cross ratio (ABCD) = (ABC)/(ABD) of four collinear points (C, D may be points at infinity)."),
-    OP("meet", meet_args, "K, lambda, mu", PC_FN_MEET, PCL_EQ_MEET, 0, "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
+    OP("meet", meet_args, "K, lambda, mu", PC_FN_MEET, PC_EQV_MEET, 0, "The intersection K = A1 + (A2 - A1)lambda = B1 + (B2 - B1)mu of two lines, any dimension; an end may be a point at infinity (a vector: the line's direction); parallel lines give their direction (weight 0), skew ones nil and their distance. With point equations among the ends (param \"u\") K, lambda and mu are equations with exact derivatives, so a scheme of meets compiles with curve()."),
     {{{.name = "area", .fn = l_area, .args = three_points, .sig = "area(A, B, C) | area(A, B, C, D, ...) -> number", .help = "The area of a triangle (signed in 2-D, counter-clockwise positive) or of a 2-D polygon."}}, .method = 0},
     OP("volume", four_points, "number", PC_FN_VOLUME, NOHOOK, 0, "The volume of a tetrahedron: signed in 3-D (positive when right-handed), unsigned in 4-D and up."),
     OP("normalize", any_value, "point", PC_FN_NORMALIZE, NOHOOK, 1, "Divide a weighted value by its weight (projective normalisation); weight 0 is an error."),

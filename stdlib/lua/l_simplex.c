@@ -71,9 +71,7 @@ PCL_METHOD(l_params, pc_simplex *s, a) {
     if (a[0].n != s->n)
         return pcl_fail(L, "argument #1 (M) is %d-D, but the simplex is in %d-D: dimensions cannot be mixed", a[0].n, s->n);
     pc_simplex_params(s, a[0].v, p, &p[s->k]);
-    luaL_checkstack(L, s->k + 1, NULL);
-    for (int i = 0; i <= s->k; i++) lua_pushnumber(L, p[i]);
-    return s->k + 1;
+    return pcl_push_packed(L, s->k + 1, "x", p);   /* k + 1 <= LUA_MINSTACK */
 }
 
 PCL_METHOD(l_measure, pc_simplex *s, a) {
@@ -97,11 +95,9 @@ PCL_METHOD(l_ratio, pc_simplex *s, a) {
 
 static int l_index(lua_State *L) {
     pc_simplex *s = pcl_meta_self(L, tosimplex(L, 1), "index: not a simplex");
-    int isint;
-    lua_Integer i = lua_tointegerx(L, 2, &isint);
-    if (lua_type(L, 2) != LUA_TNUMBER) lua_rawget(L, lua_upvalueindex(1));    /* a method */
-    else if (isint && i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
-    else lua_pushnil(L);
+    lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
+    if (i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
+    else lua_rawget(L, lua_upvalueindex(1));                /* a method, or nil: the key on the top */
     return 1;
 }
 

@@ -6,20 +6,12 @@
 #define PCL_EXPR_H
 
 #include "pcl.h"
-#include "surface.h"
-#include "smooth.h"
-
-/* The operations the point binding defers, with its arguments on the stack as it got them, in
- * the order of the core's pc_expr_verb (expr.h), which checks and words them. */
-typedef enum {
-    PCL_EQ_ADD, PCL_EQ_SUB, PCL_EQ_MUL, PCL_EQ_DIV, PCL_EQ_UNM, PCL_EQ_LERP, PCL_EQ_BAR, PCL_EQ_DOT,
-    PCL_EQ_CROSS, PCL_EQ_UNIT, PCL_EQ_P, PCL_EQ_V, PCL_EQ_MEET   /* P(x, y ...), V(...), meet(A1, A2, B1, B2) */
-} pcl_eq_op;
+#include "expr.h"   /* pc_expr_verb: the operations the point binding defers (their order) */
 
 int pcl_isequation(lua_State *L, int idx);
 /* If one of the operation's arguments is an equation: push the resulting equation and return
  * 1 (or raise the operation's error); else return 0 and leave the stack as it was. */
-int pcl_eq_hook(lua_State *L, pcl_eq_op op);
+int pcl_eq_hook(lua_State *L, pc_expr_verb op);
 /* g(t) of a smoothstep for an equation at idx: push it and return 1; 0 if idx is no equation. */
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g);
 /* c(eq) of a single-piece Bezier curve c at the scalar equation at idx: push the composed

@@ -192,6 +192,17 @@ static void test_harmonic_cross(void **state) {
     assert_int_equal(pc_cross_ratio(1, A, A, Th, Ah, &cr), PC_ECOINCIDENT);
 }
 
+/* Equality of values: one dimension, every double == (the __eq of points). */
+static void test_value_same(void **state) {
+    (void)state;
+    assert_true(pc_value_same(2, (double[]){1, 2, 1}, 2, (double[]){1, 2, 1}));
+    assert_true(pc_value_same(1, (double[]){-0.0, 0}, 1, (double[]){0, 0}));          /* -0 is 0 */
+    assert_false(pc_value_same(2, (double[]){1, 2, 1}, 2, (double[]){1, 2, 0}));      /* P and V */
+    assert_false(pc_value_same(1, (double[]){1, 1}, 2, (double[]){1, 1, 1}));         /* 1-D, 2-D */
+    assert_false(pc_value_same(1, (double[]){NAN, 1}, 1, (double[]){NAN, 1}));
+    assert_false(pc_value_same(1, (double[]){1, 1}, 1, (double[]){1 + 1e-15, 1}));    /* exact */
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_weights),
@@ -199,6 +210,7 @@ int main(void) {
         cmocka_unit_test(test_vectors),
         cmocka_unit_test(test_simple_ratio),
         cmocka_unit_test(test_harmonic_cross),
+        cmocka_unit_test(test_value_same),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
