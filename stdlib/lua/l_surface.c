@@ -204,21 +204,16 @@ PCL_BODY(l_func, a) {
 }
 
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
-/* s(u, v), s:eval and s:normal, one body told apart by the declared name */
+/* s(u, v), s:eval, s:partials and s:normal, one body told apart by the declared name */
 PCL_METHOD(s_call, lsurf *u, a) {
-    int normal = !strcmp(pcl_name(L), "s:normal");
-    double out[PC_MAXDIM];
-    pc_why_call why;
-    int st = (normal ? pc_surface_normal_checked : pc_surface_eval_checked)(pcl_name(L), u->s, a[0].x, a[1].x, out, &why);
-    pcl_check(L, st, why.row);
-    return pcl_push_results(L, normal ? 3 : u->s->dim, normal ? "v" : "p", out);
-}
-
-PCL_METHOD(s_partials, lsurf *u, a) {
+    static int (*const at[])(const char *, const pc_surface *, double, double, double *, pc_why_call *) = {
+        pc_surface_eval_checked, pc_surface_partials_checked, pc_surface_normal_checked};
+    static const char *const spec[] = {"p", "p v v", "v"};
+    int i = !strcmp(pcl_name(L), "s:normal") ? 2 : !strcmp(pcl_name(L), "s:partials");
     double out[3 * PC_MAXDIM];
-    int d = u->s->dim;
-    pcl_check(L, pc_surface_partials(u->s, a[0].x, a[1].x, out), NULL);
-    return pcl_push_results(L, d, "p v v", out, out + d, out + 2 * d);
+    pc_why_call why;
+    pcl_check(L, at[i](pcl_name(L), u->s, a[0].x, a[1].x, out, &why), why.row);
+    return pcl_push_packed(L, u->s->dim, spec[i], out);   /* a normal's surface is 3-D */
 }
 
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
@@ -338,7 +333,7 @@ static int s_tostring(lua_State *L) {
 #define METHOD_SIG(nm, f, decl, forms, text) {.name = nm, .fn = f, .args = decl, .sig = forms, .help = text, .self = self_surf, .selftype = "surface"}
 static const pcl_fn methods[] = {
     METHOD("s:eval", s_call, uv_args, "point", "The point of the surface at (u, v), as s(u, v)."),
-    METHOD("s:partials", s_partials, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
+    METHOD("s:partials", s_call, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
     METHOD("s:normal", s_call, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
     METHOD_SIG("s:iso", s_iso, iso_args, "s:iso(\"u\"|\"v\", value) -> curve", "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."),
     METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),
