@@ -72,8 +72,7 @@ static int c_eq(lua_State *L) {
 }
 
 static int c_tostring(lua_State *L) {
-    cnum *z = tocnum(L, 1);
-    if (!z) return pcl_error(L, "tostring: not a complex number");
+    cnum *z = pcl_meta_self(L, tocnum(L, 1), "tostring: not a complex number");
     const char *re = pcl_pushnum(L, z->z.re), *im = pcl_pushnum(L, z->z.im);
     lua_pushfstring(L, "complex(%s, %s)", re, im);
     return 1;
@@ -162,8 +161,7 @@ static int m_inverse(lua_State *L) {
 }
 
 static int m_tostring(lua_State *L) {
-    mobius *m = tomobius(L, 1);
-    if (!m) return pcl_error(L, "tostring: not a Moebius map");
+    mobius *m = pcl_meta_self(L, tomobius(L, 1), "tostring: not a Moebius map");
     const char *re = pcl_pushnum(L, m->z0.re), *im = pcl_pushnum(L, m->z0.im), *phi = pcl_pushnum(L, m->phi);
     lua_pushfstring(L, "mobius(complex(%s, %s), %s)", re, im, phi);
     return 1;

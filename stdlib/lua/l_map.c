@@ -336,8 +336,7 @@ PCL_METHOD(l_show, pc_map *f, v) {
 }
 
 static int l_tostring(lua_State *L) {
-    pc_map *f = pcl_tomap(L, 1);
-    if (!f) return pcl_error(L, "tostring: not a map");
+    pc_map *f = pcl_meta_self(L, pcl_tomap(L, 1), "tostring: not a map");
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 24 + 64];
     pc_map_text(f, text, sizeof text);
     return pcl_push_results(L, 0, "s", text);
