@@ -211,8 +211,7 @@ PCL_BODY(l_foreshortening, a) {
     const pc_map *f = a[0].obj;
     double k[PC_MAXDIM];
     pcl_check(L, pc_map_foreshortening(f, k), pc_map_why);
-    for (int i = 0; i < f->nin; i++) lua_pushnumber(L, k[i]);
-    return f->nin;
+    return pcl_push_packed(L, f->nin, "x", k);
 }
 
 static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
@@ -264,9 +263,8 @@ static int l_apply(lua_State *L) {
     if (!xy) return pcl_push_packed(L, n, "w", out);
     if (st == PC_IMPROPER || out[n] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
-    luaL_checkstack(L, n, NULL);
-    for (int i = 0; i < n; i++) lua_pushnumber(L, out[i] / out[n]);
-    return n;
+    for (int i = 0; i < n; i++) out[i] /= out[n];
+    return pcl_push_packed(L, n, "x", out);
 }
 
 static int compose(lua_State *L, pc_map *f, pc_map *g) {
