@@ -33,8 +33,6 @@ int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const 
     return 1;
 }
 
-void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) { pcl_push_made_surface(L, s, &(int){PC_OK}, kind); }
-
 /* The receiver of a method: a live surface (the layer arms the callbacks of a Lua surface). */
 static void *self_surf(lua_State *L, int idx) {
     lsurf *u = tosurf(L, idx);
@@ -59,8 +57,7 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     int top = lua_gettop(L);
     if (!lua_checkstack(L, f->nargs + 4)) return PC_ENOMEM;
     lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[0]);
-    lua_pushnumber(L, u);
-    lua_pushnumber(L, v);
+    pcl_push_results(L, 0, "n n", u, v);
     if (lua_pcall(L, 2, 1, 0) != LUA_OK) return pcl_callback_failed(L);
     pcl_value *p = pcl_tovalue(L, -1);
     if (!p || p->n != f->nargs) {
@@ -193,8 +190,7 @@ PCL_BODY(l_func, a) {
         return made(L, pcl_eq_object(L, 2, lo, hi, &st), &st);
     }
     lua_pushvalue(L, 1);
-    lua_pushnumber(L, a[1].x);
-    lua_pushnumber(L, a[3].x);
+    pcl_push_results(L, 0, "n n", a[1].x, a[3].x);
     lua_call(L, 2, 1);
     pcl_value *p = pcl_tovalue(L, -1);
     if (!p) return pcl_fail(L, "f(u0, v0) must return a point, got %s", luaL_typename(L, -1));
