@@ -87,8 +87,7 @@ static int l_frame(lua_State *L) {
         for (int i = 0; i < n; i++)   /* a unit point: X - O */
             axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);
     }
-    pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes);
-    return 1;
+    return made(L, pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes));
 }
 
 static const pcl_arg dim_arg[] = {A_INT("n", 1, PC_MAXDIM), PCL_END};
@@ -118,8 +117,7 @@ static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = FA
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_scale, a) {
     static const pcl_arg k0 = A_NUM("k"), dim = A_INT("n", 1, PC_MAXDIM);
-    static const pcl_arg factors = {.name = "k", .kind = PCL_NUMBERS, .lo = 1, .hi = PC_MAXDIM};
-    static const pcl_arg centre = {.name = "centre", .kind = PCL_POINT, .flags = PCL_SAMEDIM};
+    static const pcl_arg factors = A_NUMBERS("k", 1, PC_MAXDIM), centre = A_SAMEPOINT("centre");
     double k[PC_MAXDIM];
     pcl_val v = {.list = k, .cap = PC_MAXDIM}, c = {0};
     int single = lua_type(L, 1) == LUA_TNUMBER, ndim = single && lua_type(L, 2) == LUA_TNUMBER;
