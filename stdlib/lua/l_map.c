@@ -226,7 +226,6 @@ static int l_apply(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
     int xy = !strcmp(pcl_running(L)->d->name, "f:xy"), m = lua_gettop(L) - 1, nin = f->nin, n = f->nout;
     if (!xy && (pcl_tocurve(L, 2) || pcl_tosurface(L, 2))) {   /* f(c) is c:map(f) */
-        lua_settop(L, 2);
         lua_getfield(L, 2, "map");
         lua_pushvalue(L, 2);
         lua_pushvalue(L, 1);
@@ -320,8 +319,7 @@ static int l_vanishing(lua_State *L) {
 PCL_METHOD(l_show, pc_map *f, v) {
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 20 + 128];
     pc_map_show(f, v[0].n == 0, text, sizeof text);
-    lua_getglobal(L, "print");
-    if (lua_isfunction(L, -1)) {
+    if (lua_getglobal(L, "print") == LUA_TFUNCTION) {
         lua_pushstring(L, text);
         lua_call(L, 1, 0);
     } else {
@@ -342,11 +340,10 @@ static int l_tostring(lua_State *L) {
  * of the unit points of the axes: a projection's screen points C0..C3). */
 static int l_index(lua_State *L) {
     if (lua_type(L, 2) != LUA_TSTRING) return 0;
-    lua_pushvalue(L, 2);
-    if (lua_rawget(L, lua_upvalueindex(1)) != LUA_TNIL) return 1;
+    const char *k = lua_tostring(L, 2);
+    if (lua_getfield(L, lua_upvalueindex(1), k) != LUA_TNIL) return 1;   /* a plain table */
     pc_map *f = pcl_tomap(L, 1);
     if (!f) return 0;
-    const char *k = lua_tostring(L, 2);
     if (!strcmp(k, "nin") || !strcmp(k, "nout")) return pcl_push_results(L, 0, "i", k[1] == 'i' ? f->nin : f->nout);
     int i = pc_map_unit_name(k);
     if (i < 0) return 0;
