@@ -145,8 +145,7 @@ static int m_call(lua_State *L) {
         return pcl_fail(L, "z = complex(%s, %s) is the pole 1/conj(z0) of the map", pcl_pushnum(L, re),
                         pcl_pushnum(L, im));
     if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    if (xy) return pcl_push_results(L, 0, "n n", w.re, w.im);
-    if (point) return pcl_push_results(L, 2, "p", (double[]){w.re, w.im});
+    if (xy || point) return pcl_push_results(L, 2, xy ? "x" : "p", (double[]){w.re, w.im});
     return pushc(L, w);
 }
 
