@@ -114,10 +114,13 @@ pc_surface *pc_surface_map(pc_surface *s, const pc_map *f, int *status);
 /* The explanations of the statuses of the surface constructors and of s:shade, by the names
  * the bindings give them (surface_why.c). */
 extern const pc_why pc_surface_why[];
-/* pc_surface_eval and pc_surface_normal for the call op, their geometric failures explained in
- * why (why_call.h): a point at infinity ("the point at (0.5, 1) is at infinity"), a surface not
- * 3-D and a singular point for the normal; another failure leaves why empty. */
+/* pc_surface_eval, pc_surface_partials and pc_surface_normal for the call op, their geometric
+ * failures explained in why (why_call.h): a point at infinity ("the point at (0.5, 1) is at
+ * infinity"), a surface not 3-D and a singular point for the normal; another failure leaves why
+ * empty. */
 int pc_surface_eval_checked(const char *op, const pc_surface *s, double u, double v, double *out, pc_why_call *why);
+int pc_surface_partials_checked(const char *op, const pc_surface *s, double u, double v, double *out,
+                                pc_why_call *why);
 int pc_surface_normal_checked(const char *op, const pc_surface *s, double u, double v, double *n, pc_why_call *why);
 
 /* --- internal to stdlib/geom/surface*.c (not an API) ------------------------------------- */

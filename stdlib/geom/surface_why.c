@@ -10,12 +10,21 @@ const pc_why pc_surface_why[] = {
     {"s:shade", PC_ESINGULAR, 0, NULL, "the projection is singular (it flattens space onto a line)"},
     {NULL, 0, 0, NULL, NULL}};
 
-int pc_surface_eval_checked(const char *op, const pc_surface *s, double u, double v, double *out, pc_why_call *why) {
+/* st of an evaluation at (u, v): a point at infinity explained, another status not */
+static int at_infinity(const char *op, int st, double u, double v, pc_why_call *why) {
     char a[40], b[40];
-    int st = pc_surface_eval(s, u, v, out);
     if (st != PC_IMPROPER) return pc_why_call_set(why, NULL, st, 0, NULL, "");
     return pc_why_call_set(why, op, st, 0, NULL, "the point at (%s, %s) is at infinity", pc_num_text(u, a, sizeof a),
                            pc_num_text(v, b, sizeof b));
+}
+
+int pc_surface_eval_checked(const char *op, const pc_surface *s, double u, double v, double *out, pc_why_call *why) {
+    return at_infinity(op, pc_surface_eval(s, u, v, out), u, v, why);
+}
+
+int pc_surface_partials_checked(const char *op, const pc_surface *s, double u, double v, double *out,
+                                pc_why_call *why) {
+    return at_infinity(op, pc_surface_partials(s, u, v, out), u, v, why);
 }
 
 int pc_surface_normal_checked(const char *op, const pc_surface *s, double u, double v, double *n, pc_why_call *why) {

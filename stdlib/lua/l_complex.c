@@ -30,9 +30,12 @@ static void *tomobius(lua_State *L, int idx) {
     return totagged(L, idx, MOBIUS_MT, sizeof(mobius), &MOBIUS_TAG, "Moebius map");
 }
 
-/* a new complex number on the stack top: its value unset (newc), or w */
+/* a new complex number on the stack top: its value unset (newc), or w (pushc: 1, the count) */
 static cnum *newc(lua_State *L) { return pcl_tagged_new(L, sizeof(cnum), &COMPLEX_TAG, COMPLEX_MT); }
-static void pushc(lua_State *L, pc_cnum w) { newc(L)->z = w; }
+static int pushc(lua_State *L, pc_cnum w) {
+    newc(L)->z = w;
+    return 1;
+}
 
 /* a complex operand: a complex or a real number (not checked for finiteness) */
 static int toc(lua_State *L, int idx, pc_cnum *z) {
@@ -72,8 +75,7 @@ static int c_eq(lua_State *L) {
 }
 
 static int c_tostring(lua_State *L) {
-    cnum *z = tocnum(L, 1);
-    if (!z) return pcl_error(L, "tostring: not a complex number");
+    cnum *z = pcl_meta_self(L, tocnum(L, 1), "tostring: not a complex number");
     const char *re = pcl_pushnum(L, z->z.re), *im = pcl_pushnum(L, z->z.im);
     lua_pushfstring(L, "complex(%s, %s)", re, im);
     return 1;
@@ -88,8 +90,7 @@ PCL_METHOD(c_fn, cnum *z, a) {
     if (op == 'p') return pcl_push_results(L, 2, "p", (double[]){in.re, in.im});
     if (pc_cnum_fn(op, in, &w) != PC_OK) return pcl_fail(L, "the result overflows (not finite)");
     if (op == 'a' || op == 'g') return pcl_push_results(L, 0, "n", w.re);
-    pushc(L, w);
-    return 1;
+    return pushc(L, w);
 }
 
 /* __index of both types: z.re, z.im, M.z0, M.phi, then the type's methods (upvalue 1) */
@@ -116,14 +117,12 @@ static int c_new(lua_State *L) {
     int point = pcl_tovalue(L, 2) != NULL;
     if (point) pcl_readone(L, 2, 1, 0, &point_arg, 0, &a[0]);
     else if (!z) PCL_READ(L, a);
-    pushc(L, z ? z->z : point ? cval(&a[0]) : (pc_cnum){a[0].x, a[1].x});
-    return 1;
+    return pushc(L, z ? z->z : point ? cval(&a[0]) : (pc_cnum){a[0].x, a[1].x});
 }
 
 static const pcl_arg polar_args[] = {A_NUM("r"), A_NUM("u"), PCL_END};
 PCL_BODY(c_polar, a) {
-    pushc(L, (pc_cnum){a[0].x * cos(a[1].x), a[0].x * sin(a[1].x)});
-    return 1;
+    return pushc(L, (pc_cnum){a[0].x * cos(a[1].x), a[0].x * sin(a[1].x)});
 }
 
 /* ---- Moebius ------------------------------------------------------------------------------- */
@@ -146,10 +145,8 @@ static int m_call(lua_State *L) {
         return pcl_fail(L, "z = complex(%s, %s) is the pole 1/conj(z0) of the map", pcl_pushnum(L, re),
                         pcl_pushnum(L, im));
     if (st != PC_OK) return pcl_fail(L, "%s", pc_strerror(st));
-    if (xy) return pcl_push_results(L, 0, "n n", w.re, w.im);
-    if (point) pcl_pushpoint(L, 2, (double[]){w.re, w.im});
-    else pushc(L, w);
-    return 1;
+    if (xy || point) return pcl_push_results(L, 2, xy ? "x" : "p", (double[]){w.re, w.im});
+    return pushc(L, w);
 }
 
 /* a new Moebius map on the stack top, its fields unset */
@@ -162,8 +159,7 @@ static int m_inverse(lua_State *L) {
 }
 
 static int m_tostring(lua_State *L) {
-    mobius *m = tomobius(L, 1);
-    if (!m) return pcl_error(L, "tostring: not a Moebius map");
+    mobius *m = pcl_meta_self(L, tomobius(L, 1), "tostring: not a Moebius map");
     const char *re = pcl_pushnum(L, m->z0.re), *im = pcl_pushnum(L, m->z0.im), *phi = pcl_pushnum(L, m->phi);
     lua_pushfstring(L, "mobius(complex(%s, %s), %s)", re, im, phi);
     return 1;
@@ -174,8 +170,7 @@ PCL_BODY(l_mobius, a) {
     if (hypot(a[0].v[0], a[0].v[1]) >= 1)
         return pcl_argfail(L, 1, "must be a point inside the unit disc (|z0| < 1), got %s", luaL_tolstring(L, 1, NULL));
     mobius *m = newm(L);
-    m->z0 = cval(&a[0]);
-    m->phi = a[1].x;
+    *m = (mobius){m->self, cval(&a[0]), a[1].x};
     return 1;
 }
 

@@ -87,8 +87,7 @@ static int l_frame(lua_State *L) {
         for (int i = 0; i < n; i++)   /* a unit point: X - O */
             axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);
     }
-    pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes);
-    return 1;
+    return made(L, pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes));
 }
 
 static const pcl_arg dim_arg[] = {A_INT("n", 1, PC_MAXDIM), PCL_END};
@@ -118,8 +117,7 @@ static const pcl_arg scale_args[] = {{.name = "k", .kind = PCL_ANY, .expect = FA
                                      {.name = "centre", .kind = PCL_ANY, .flags = PCL_OPT}, PCL_END};
 PCL_BODY(l_scale, a) {
     static const pcl_arg k0 = A_NUM("k"), dim = A_INT("n", 1, PC_MAXDIM);
-    static const pcl_arg factors = {.name = "k", .kind = PCL_NUMBERS, .lo = 1, .hi = PC_MAXDIM};
-    static const pcl_arg centre = {.name = "centre", .kind = PCL_POINT, .flags = PCL_SAMEDIM};
+    static const pcl_arg factors = A_NUMBERS("k", 1, PC_MAXDIM), centre = A_SAMEPOINT("centre");
     double k[PC_MAXDIM];
     pcl_val v = {.list = k, .cap = PC_MAXDIM}, c = {0};
     int single = lua_type(L, 1) == LUA_TNUMBER, ndim = single && lua_type(L, 2) == LUA_TNUMBER;
@@ -211,8 +209,7 @@ PCL_BODY(l_foreshortening, a) {
     const pc_map *f = a[0].obj;
     double k[PC_MAXDIM];
     pcl_check(L, pc_map_foreshortening(f, k), pc_map_why);
-    for (int i = 0; i < f->nin; i++) lua_pushnumber(L, k[i]);
-    return f->nin;
+    return pcl_push_packed(L, f->nin, "x", k);
 }
 
 static const pcl_arg affinity_args[] = {A_POINT("A", 2), A_VECTOR("d", 2), A_VECTOR("s", 2), A_NUM("k"), PCL_END};
@@ -229,7 +226,6 @@ static int l_apply(lua_State *L) {
     pc_map *f = pcl_read(L, NULL, 0);
     int xy = !strcmp(pcl_running(L)->d->name, "f:xy"), m = lua_gettop(L) - 1, nin = f->nin, n = f->nout;
     if (!xy && (pcl_tocurve(L, 2) || pcl_tosurface(L, 2))) {   /* f(c) is c:map(f) */
-        lua_settop(L, 2);
         lua_getfield(L, 2, "map");
         lua_pushvalue(L, 2);
         lua_pushvalue(L, 1);
@@ -264,9 +260,8 @@ static int l_apply(lua_State *L) {
     if (!xy) return pcl_push_packed(L, n, "w", out);
     if (st == PC_IMPROPER || out[n] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
-    luaL_checkstack(L, n, NULL);
-    for (int i = 0; i < n; i++) lua_pushnumber(L, out[i] / out[n]);
-    return n;
+    for (int i = 0; i < n; i++) out[i] /= out[n];
+    return pcl_push_packed(L, n, "x", out);
 }
 
 static int compose(lua_State *L, pc_map *f, pc_map *g) {
@@ -324,8 +319,7 @@ static int l_vanishing(lua_State *L) {
 PCL_METHOD(l_show, pc_map *f, v) {
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 20 + 128];
     pc_map_show(f, v[0].n == 0, text, sizeof text);
-    lua_getglobal(L, "print");
-    if (lua_isfunction(L, -1)) {
+    if (lua_getglobal(L, "print") == LUA_TFUNCTION) {
         lua_pushstring(L, text);
         lua_call(L, 1, 0);
     } else {
@@ -336,8 +330,7 @@ PCL_METHOD(l_show, pc_map *f, v) {
 }
 
 static int l_tostring(lua_State *L) {
-    pc_map *f = pcl_tomap(L, 1);
-    if (!f) return pcl_error(L, "tostring: not a map");
+    pc_map *f = pcl_meta_self(L, pcl_tomap(L, 1), "tostring: not a map");
     char text[(PC_MAXDIM + 1) * (PC_MAXDIM + 1) * 24 + 64];
     pc_map_text(f, text, sizeof text);
     return pcl_push_results(L, 0, "s", text);
@@ -347,11 +340,10 @@ static int l_tostring(lua_State *L) {
  * of the unit points of the axes: a projection's screen points C0..C3). */
 static int l_index(lua_State *L) {
     if (lua_type(L, 2) != LUA_TSTRING) return 0;
-    lua_pushvalue(L, 2);
-    if (lua_rawget(L, lua_upvalueindex(1)) != LUA_TNIL) return 1;
+    const char *k = lua_tostring(L, 2);
+    if (lua_getfield(L, lua_upvalueindex(1), k) != LUA_TNIL) return 1;   /* a plain table */
     pc_map *f = pcl_tomap(L, 1);
     if (!f) return 0;
-    const char *k = lua_tostring(L, 2);
     if (!strcmp(k, "nin") || !strcmp(k, "nout")) return pcl_push_results(L, 0, "i", k[1] == 'i' ? f->nin : f->nout);
     int i = pc_map_unit_name(k);
     if (i < 0) return 0;

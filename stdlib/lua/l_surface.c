@@ -33,8 +33,6 @@ int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *status, const 
     return 1;
 }
 
-void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind) { pcl_push_made_surface(L, s, &(int){PC_OK}, kind); }
-
 /* The receiver of a method: a live surface (the layer arms the callbacks of a Lua surface). */
 static void *self_surf(lua_State *L, int idx) {
     lsurf *u = tosurf(L, idx);
@@ -59,8 +57,7 @@ static int luasurf_eval(void *ud, double u, double v, int order, double *out) {
     int top = lua_gettop(L);
     if (!lua_checkstack(L, f->nargs + 4)) return PC_ENOMEM;
     lua_rawgeti(L, LUA_REGISTRYINDEX, f->ref[0]);
-    lua_pushnumber(L, u);
-    lua_pushnumber(L, v);
+    pcl_push_results(L, 0, "n n", u, v);
     if (lua_pcall(L, 2, 1, 0) != LUA_OK) return pcl_callback_failed(L);
     pcl_value *p = pcl_tovalue(L, -1);
     if (!p || p->n != f->nargs) {
@@ -193,8 +190,7 @@ PCL_BODY(l_func, a) {
         return made(L, pcl_eq_object(L, 2, lo, hi, &st), &st);
     }
     lua_pushvalue(L, 1);
-    lua_pushnumber(L, a[1].x);
-    lua_pushnumber(L, a[3].x);
+    pcl_push_results(L, 0, "n n", a[1].x, a[3].x);
     lua_call(L, 2, 1);
     pcl_value *p = pcl_tovalue(L, -1);
     if (!p) return pcl_fail(L, "f(u0, v0) must return a point, got %s", luaL_typename(L, -1));
@@ -204,21 +200,16 @@ PCL_BODY(l_func, a) {
 }
 
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
-/* s(u, v), s:eval and s:normal, one body told apart by the declared name */
+/* s(u, v), s:eval, s:partials and s:normal, one body told apart by the declared name */
 PCL_METHOD(s_call, lsurf *u, a) {
-    int normal = !strcmp(pcl_name(L), "s:normal");
-    double out[PC_MAXDIM];
-    pc_why_call why;
-    int st = (normal ? pc_surface_normal_checked : pc_surface_eval_checked)(pcl_name(L), u->s, a[0].x, a[1].x, out, &why);
-    pcl_check(L, st, why.row);
-    return pcl_push_results(L, normal ? 3 : u->s->dim, normal ? "v" : "p", out);
-}
-
-PCL_METHOD(s_partials, lsurf *u, a) {
+    static int (*const at[])(const char *, const pc_surface *, double, double, double *, pc_why_call *) = {
+        pc_surface_eval_checked, pc_surface_partials_checked, pc_surface_normal_checked};
+    static const char *const spec[] = {"p", "p v v", "v"};
+    int i = !strcmp(pcl_name(L), "s:normal") ? 2 : !strcmp(pcl_name(L), "s:partials");
     double out[3 * PC_MAXDIM];
-    int d = u->s->dim;
-    pcl_check(L, pc_surface_partials(u->s, a[0].x, a[1].x, out), NULL);
-    return pcl_push_results(L, d, "p v v", out, out + d, out + 2 * d);
+    pc_why_call why;
+    pcl_check(L, at[i](pcl_name(L), u->s, a[0].x, a[1].x, out, &why), why.row);
+    return pcl_push_packed(L, u->s->dim, spec[i], out);   /* a normal's surface is 3-D */
 }
 
 /* s:iso("u", value): the curve u = value (a curve in v); s:iso("v", value) likewise */
@@ -338,7 +329,7 @@ static int s_tostring(lua_State *L) {
 #define METHOD_SIG(nm, f, decl, forms, text) {.name = nm, .fn = f, .args = decl, .sig = forms, .help = text, .self = self_surf, .selftype = "surface"}
 static const pcl_fn methods[] = {
     METHOD("s:eval", s_call, uv_args, "point", "The point of the surface at (u, v), as s(u, v)."),
-    METHOD("s:partials", s_partials, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
+    METHOD("s:partials", s_call, uv_args, "P, Su, Sv", "The point at (u, v) and the partial derivatives there."),
     METHOD("s:normal", s_call, uv_args, "vector", "The unit normal of a 3-D surface at (u, v): Su x Sv normalized."),
     METHOD_SIG("s:iso", s_iso, iso_args, "s:iso(\"u\"|\"v\", value) -> curve", "The iso-curve u = value (a curve in v) or v = value, exact for tensor-product patches."),
     METHOD("s:map", s_map, map_args, "s", "The image of the surface under a map."),

@@ -82,12 +82,33 @@ static void test_eval_normal_checked(void **state) {
     pc_surface_release(flat);
 }
 
+/* s:partials at a point at infinity: the same row as s(u, v); elsewhere the point and the
+ * partial derivatives, the table empty */
+static void test_partials_checked(void **state) {
+    (void)state;
+    double cp[12] = {0, 0, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1}, out[6], p[6];   /* as above */
+    int st;
+    pc_why_call w;
+    pc_surface *s = pc_surface_bezier(2, 1, 1, cp, &st);
+    assert_non_null(s);
+    assert_int_equal(pc_surface_partials_checked("s:partials", s, 0, 1, out, &w), PC_IMPROPER);
+    assert_string_equal(w.row[0].op, "s:partials");
+    assert_string_equal(w.row[0].text, "the point at (0, 1) is at infinity");
+    assert_null(w.row[1].op);
+    assert_int_equal(pc_surface_partials_checked("s:partials", s, 0.5, 0, out, &w), PC_OK);
+    assert_null(w.row[0].op);
+    assert_int_equal(pc_surface_partials(s, 0.5, 0, p), PC_OK);   /* the plain call's values */
+    assert_memory_equal(out, p, sizeof p);
+    pc_surface_release(s);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_revolution_axis),
         cmocka_unit_test(test_coons_corners),
         cmocka_unit_test(test_shade_rows),
         cmocka_unit_test(test_eval_normal_checked),
+        cmocka_unit_test(test_partials_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
