@@ -11,11 +11,10 @@
 
 /* The fields of every conic, then those of a central one or of a parabola. */
 #define COMMON "kind=s circle=b discriminant=o coef=N axes=V foci=P e=o p=o mu=o w=o k=o k_ceva=o"
-#define COMMON_OF(o) kinds[(o)->kind], (o)->circle, (o)->disc, 6, coef, 2, &(o)->axis[0][0], (o)->nfoci, \
-    &(o)->focus[0][0], (o)->ecc, (o)->param, (o)->mu, (o)->w, (o)->k_ed, (o)->k_ceva
+#define COMMON_OF(o) pc_ckind_names[o->kind], o->circle, o->disc, 6, coef, 2, &o->axis[0][0], \
+    o->nfoci, &o->focus[0][0], o->ecc, o->param, o->mu, o->w, o->k_ed, o->k_ceva
 
 void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
-    static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
     double coef[6];
     for (int i = 0; i < 6; i++) coef[i] = o->coef[i] + 0.0;   /* no -0 in the listing */
     if (o->central)

@@ -7,6 +7,9 @@
 #include "conic_surface.h"
 #include "names.h"
 
+const char *const pc_poly_spline_ends[] = {"natural", "clamped", NULL};
+const char *const pc_ferguson_roots[] = {"min", "max", NULL};
+
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status) {
     double x[PC_FERGUSON_MAXN], y[PC_FERGUSON_MAXN];

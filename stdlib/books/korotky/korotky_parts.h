@@ -15,6 +15,11 @@
  * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status);
+/* The names of the polynomial spline's ends (pc_end_kind: "natural", "clamped") and of the
+ * substitution's roots (pc_ferguson_substitution's root_max 0, 1: "min", "max"), NULL-ended:
+ * the choices of korotky.poly_spline and korotky.ferguson_substitution. */
+extern const char *const pc_poly_spline_ends[];
+extern const char *const pc_ferguson_roots[];
 /* The Ferguson spline of system (22) through the n points p (rows of 2) with the unit end
  * tangents tA, tE scaled to the moduli wA, wE and the n - 2 ratios lambda: pc_ferguson_lambda's
  * Hermite segments as a curve (NULL: *status and *bad as pc_ferguson_lambda; PC_EZERO for a

@@ -84,6 +84,11 @@ static void test_why(void **state) {
     assert_non_null(strstr(pc_meet_planes4_why(PC_ESAME_LINE, 1), "a plane of one pencil"));
     assert_non_null(strstr(pc_meet_planes4_why(PC_ESKEW, 1), "span only a line"));
     assert_string_equal(pc_meet_planes4_why(PC_ENONFINITE, 0), pc_strerror(PC_ENONFINITE));
+    assert_string_equal(pc_poly_spline_ends[PC_END_NATURAL], "natural");
+    assert_string_equal(pc_poly_spline_ends[PC_END_CLAMPED], "clamped");
+    assert_null(pc_poly_spline_ends[2]);
+    assert_string_equal(pc_ferguson_roots[1], "max");   /* root_max */
+    assert_null(pc_ferguson_roots[2]);
 }
 
 /* the conic of an arc of korotky.conic_arc: (x - 1)^2 + 4 y^2 = 1 (test_korotky_shells.lua's
