@@ -16,7 +16,6 @@
 #include "pcl_books.h"
 
 #define MAXPTS PC_FERGUSON_MAXN
-#define WHY pc_korotky_why
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
@@ -253,7 +252,7 @@ PCL_BODY(l_dome_tri, a) {
     if (a[3].n == 3) pcl_check(L, pc_dome_tri_height_checked(a[0].v, a[1].v, a[2].v, a[3].v, &h, &why), why.row);
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
-    if (!s) pcl_check(L, st, WHY);
+    if (!s) pcl_check(L, st, pc_korotky_why);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 
@@ -361,14 +360,9 @@ PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
     pc_conic_info o;
-    double w[2];
-    int st = a[0].obj ? pc_conic_info_arc(a[0].obj, &o, w) : pc_conic_info_coef(a[0].v, &o);
-    if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
-        return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: "
-                        "its lines meet at W = P(%f, %f)", w[0], w[1]);
-    pcl_check(L, st, WHY);
-    pcl_push_conic_info(L, &o);
-    return 1;
+    pc_why_call why;
+    pcl_check(L, pc_conic_elements_checked(a[0].obj, a[0].v, &o, &why), why.row);
+    return pcl_push_conic_info(L, &o);
 }
 
 PCL_BODY(l_plane_meet, a) {
