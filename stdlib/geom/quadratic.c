@@ -4,6 +4,8 @@
 #include <string.h>
 #include "status.h"
 
+const char *const pc_ckind_names[] = {"ellipse", "parabola", "hyperbola", NULL};
+
 double pc_conic_eq(const double q[6], double x, double y) {
     return q[0] * x * x + q[1] * x * y + q[2] * y * y + q[3] * x + q[4] * y + q[5];
 }

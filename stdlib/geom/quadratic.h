@@ -15,6 +15,8 @@
 #include "curve.h"
 
 typedef enum { PC_CK_ELLIPSE, PC_CK_PARABOLA, PC_CK_HYPERBOLA } pc_ckind;
+/* The names of the kinds in order, NULL-ended: "ellipse", "parabola", "hyperbola". */
+extern const char *const pc_ckind_names[];
 
 typedef struct pc_conic_info {
     double coef[6];

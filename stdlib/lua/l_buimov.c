@@ -73,12 +73,11 @@ PCL_BODY(l_circle_slopes, a) {
     return n;
 }
 
-static const char *const conic_names[3] = {"ellipse", "parabola", "hyperbola"};
 static const pcl_arg classify_args[] = {A_NUM("a"), A_NUM("b"), A_NUM("c"), PCL_END};
 PCL_BODY(l_classify, a) {
     pc_conic_class k;
     pcl_check(L, pc_conic_classify(a[0].x, a[1].x, a[2].x, &k), WHY);
-    return pcl_push_results(L, 0, "s n", conic_names[k], a[1].x * a[1].x - 4 * a[0].x * a[2].x);
+    return pcl_push_results(L, 0, "s n", pc_conic_names[k], a[1].x * a[1].x - 4 * a[0].x * a[2].x);
 }
 
 #define COEF {.name = "coef", .kind = PCL_NUMBERS, .lo = 6, .hi = 6}
@@ -192,11 +191,9 @@ PCL_BODY(l_hermite, a) {
     return pcl_push_results(L, d, "p v v v", B, B + d, B + 2 * d, B + 3 * d);
 }
 
-static const char *const spline_ends[] = {"clamped", "natural", "cyclic", "anticyclic", NULL};
-static const char *const spline_params[] = {"uniform", "chord", NULL};
-static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = spline_ends,
-                                       .dflt = PC_BOOK_NATURAL}, A_SAMEVECTOR("d0"), A_SAMEVECTOR("d1"),
-                                      A_ENUM("param", spline_params),
+static const pcl_arg spline_keys[] = {{.name = "ends", .kind = PCL_ENUM, .dflt = PC_BOOK_NATURAL,
+                                       .choices = pc_book_ends_names}, A_SAMEVECTOR("d0"),
+                                      A_SAMEVECTOR("d1"), A_ENUM("param", pc_book_param_names),
                                       {.name = "lengths", .kind = PCL_NUMBERS, .lo = 1}, PCL_END};
 static const pcl_arg spline_args[] = {{.name = "points", .kind = PCL_POINTS, .flags = PCL_SAMEDIM, .lo = 2},
                                       A_OPTIONS("opts", spline_keys), PCL_END};

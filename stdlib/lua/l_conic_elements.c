@@ -11,11 +11,10 @@
 
 /* The fields of every conic, then those of a central one or of a parabola. */
 #define COMMON "kind=s circle=b discriminant=o coef=N axes=V foci=P e=o p=o mu=o w=o k=o k_ceva=o"
-#define COMMON_OF(o) kinds[(o)->kind], (o)->circle, (o)->disc, 6, coef, 2, &(o)->axis[0][0], (o)->nfoci, \
-    &(o)->focus[0][0], (o)->ecc, (o)->param, (o)->mu, (o)->w, (o)->k_ed, (o)->k_ceva
+#define COMMON_OF(o) pc_ckind_names[o->kind], o->circle, o->disc, 6, coef, 2, &o->axis[0][0], \
+    o->nfoci, &o->focus[0][0], o->ecc, o->param, o->mu, o->w, o->k_ed, o->k_ceva
 
-void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
-    static const char *kinds[3] = {"ellipse", "parabola", "hyperbola"};
+int pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
     double coef[6];
     for (int i = 0; i < 6; i++) coef[i] = o->coef[i] + 0.0;   /* no -0 in the listing */
     if (o->central)
@@ -27,6 +26,7 @@ void pcl_push_conic_info(lua_State *L, const pc_conic_info *o) {
         pcl_push_results(L, 2, "V", 2, &o->asym[0][0]);
         lua_setfield(L, -2, "asymptotes");
     }
+    return 1;
 }
 
 void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
@@ -42,8 +42,7 @@ static int push_elements(lua_State *L, int st, int dim, const pc_conic_info *o) 
     if (st == PC_EDIM)
         return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
     pcl_check(L, st, pc_konop_why);
-    pcl_push_conic_info(L, o);
-    return 1;
+    return pcl_push_conic_info(L, o);
 }
 
 static int conic_of_curve(lua_State *L, pc_curve *c) {

@@ -16,7 +16,6 @@
 #include "pcl_books.h"
 
 #define MAXPTS PC_FERGUSON_MAXN
-#define WHY pc_korotky_why
 
 /* A tangent: a slope tg(delta) (the direction (cos delta, sin delta)) or a 2-D vector. */
 static int tangent_at(lua_State *L, int idx, double *t) {
@@ -58,16 +57,14 @@ static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, i
 
 /* ---- polynomial spline -------------------------------------------------------------------- */
 
-static const char *const ENDS[] = {"natural", "clamped", NULL};
-static const pcl_arg poly_keys[] = {{.name = "ends", .kind = PCL_ENUM, .choices = ENDS},
-                                    A_NUM("s0"), A_NUM("s1"), PCL_END};
+static const pcl_arg poly_keys[] = {A_ENUM("ends", pc_poly_spline_ends), A_NUM("s0"), A_NUM("s1"),
+                                    PCL_END};
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
 PCL_BODY(l_poly_spline, a) {
     double coef[4 * MAXPTS];
-    int n = a[0].n, clamped = a[2].n == 1, bad = -1, st;
-    if (clamped && (!a[3].present || !a[4].present))
+    int n = a[0].n, ends = a[2].n, bad = -1, st;   /* ends: a pc_end_kind */
+    if (ends == PC_END_CLAMPED && (!a[3].present || !a[4].present))
         return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
-    pc_end_kind ends = clamped ? PC_END_CLAMPED : PC_END_NATURAL;
     pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
     pc_why_call why;
     if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
@@ -101,9 +98,9 @@ static const pcl_arg tangents_keys[] = {A_NUMOPT("wA", 1, "1"), A_NUMOPT("wE", 1
                                         PCL_END};
 static const pcl_arg tangents_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
                                         A_OPTIONS("opts", tangents_keys), PCL_END};
-static const char *const ROOTS[] = {"min", "max", NULL};
-static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"), A_POSNUM("z1"),
-                                     {.name = "root", .kind = PCL_ENUM, .flags = PCL_OPT, .choices = ROOTS}, PCL_END};
+static const pcl_arg subst_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS, A_NUM("wA"),
+                                     A_POSNUM("z1"), {.name = "root", .kind = PCL_ENUM,
+                                     .flags = PCL_OPT, .choices = pc_ferguson_roots}, PCL_END};
 
 /* korotky.ferguson, korotky.ferguson_tangents and korotky.ferguson_substitution, one body told
  * apart by the declared name: the spline with a given tangent at every point, its moduli given
@@ -255,7 +252,7 @@ PCL_BODY(l_dome_tri, a) {
     if (a[3].n == 3) pcl_check(L, pc_dome_tri_height_checked(a[0].v, a[1].v, a[2].v, a[3].v, &h, &why), why.row);
     int st;
     pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
-    if (!s) pcl_check(L, st, WHY);
+    if (!s) pcl_check(L, st, pc_korotky_why);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 
@@ -363,14 +360,9 @@ PCL_BODY(l_conic_elements, a) {
     /* the kernel's conic (geom/quadratic.h): an arc by its homogeneous control points, its
      * weights as they are; the same table as c:conic() */
     pc_conic_info o;
-    double w[2];
-    int st = a[0].obj ? pc_conic_info_arc(a[0].obj, &o, w) : pc_conic_info_coef(a[0].v, &o);
-    if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
-        return pcl_fail(L, "the line pair U W V (T = W, the weight infinite) is a degenerate conic: "
-                        "its lines meet at W = P(%f, %f)", w[0], w[1]);
-    pcl_check(L, st, WHY);
-    pcl_push_conic_info(L, &o);
-    return 1;
+    pc_why_call why;
+    pcl_check(L, pc_conic_elements_checked(a[0].obj, a[0].v, &o, &why), why.row);
+    return pcl_push_conic_info(L, &o);
 }
 
 PCL_BODY(l_plane_meet, a) {

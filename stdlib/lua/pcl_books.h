@@ -5,9 +5,9 @@
 #include "pcl.h"
 
 /* Push the table of a conic's elements (l_conic_elements.c): kind, circle, discriminant, coef,
- * center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva. */
+ * center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva; 1. */
 struct pc_conic_info;
-void pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
+int pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
 /* Push a table of nr rows, each a list of nc numbers, from m row by row (l_conic_elements.c). */
 void pcl_push_rows(lua_State *L, int nr, int nc, const double *m);
 

@@ -296,12 +296,21 @@ static void test_conditions(void **state) {
     assert_int_equal(pc_conic_coef_conditions(rows, q), PC_ECOLLINEAR);
 }
 
+/* the kinds' names, in the order of pc_ckind */
+static void test_kind_names(void **state) {
+    (void)state;
+    assert_string_equal(pc_ckind_names[PC_CK_ELLIPSE], "ellipse");
+    assert_string_equal(pc_ckind_names[PC_CK_PARABOLA], "parabola");
+    assert_string_equal(pc_ckind_names[PC_CK_HYPERBOLA], "hyperbola");
+    assert_null(pc_ckind_names[3]);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ed_ellipse),   cmocka_unit_test(test_ed_parabola_hyperbola),
         cmocka_unit_test(test_weight_invariance), cmocka_unit_test(test_signs_and_infinity),
         cmocka_unit_test(test_five_points),  cmocka_unit_test(test_curve_conic),
-        cmocka_unit_test(test_conditions),
+        cmocka_unit_test(test_conditions),   cmocka_unit_test(test_kind_names),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

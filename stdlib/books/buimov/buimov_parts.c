@@ -70,6 +70,9 @@ int pc_book_basis_checked(const double *q, int nq, int i, int k, double t, doubl
 const char *const pc_gen_kind_names[] = {"circle", "ellipse", "parabola", "hyperbola", "hyperbola_ch", NULL};
 const char *const pc_gen_method_names[] = {"param", "recurrence", "rational", "explicit", NULL};
 const char *const pc_conic_coef_kinds[] = {"ellipse", "hyperbola", "parabola", NULL};
+const char *const pc_conic_names[] = {"ellipse", "parabola", "hyperbola", NULL};
+const char *const pc_book_ends_names[] = {"clamped", "natural", "cyclic", "anticyclic", NULL};
+const char *const pc_book_param_names[] = {"uniform", "chord", NULL};
 
 int pc_circle2r_checked(const double p1[2], const double p2[2], double r, pc_circle_eq out[2], pc_why_call *w) {
     const char *op = "plane.circle2r";

@@ -19,11 +19,16 @@ const char *pc_bezier_joint_name(int kind);
 int pc_bezier_g1_next_of(const pc_curve *P, int m, double g, double *q0, double *q1, pc_why_call *w);
 int pc_bezier_joint_of(const pc_curve *P, const pc_curve *Q, int *kind, double *g, pc_why_call *w);
 
-/* The names of the point generators' kinds and methods (pc_gen_kind, pc_gen_method) and of
- * pc_conic_coef's kinds, in order, NULL-ended: the choices of plane.points and plane.conic_coef. */
+/* The names of the point generators' kinds and methods (pc_gen_kind, pc_gen_method), of
+ * pc_conic_coef's kinds, of the conic classes (pc_conic_class), of the spline's ends
+ * (pc_book_ends) and parameter lengths (pc_book_spline_params' chord 0, 1), in order, NULL-ended:
+ * the choices of plane.points, plane.conic_coef, buimov.spline and plane.classify's result. */
 extern const char *const pc_gen_kind_names[];
 extern const char *const pc_gen_method_names[];
 extern const char *const pc_conic_coef_kinds[];
+extern const char *const pc_conic_names[];
+extern const char *const pc_book_ends_names[];
+extern const char *const pc_book_param_names[];
 /* The book's circles with their conditions explained in w (plane.circle2r, plane.circle_slopes:
  * the values that broke them). */
 int pc_circle2r_checked(const double p1[2], const double p2[2], double r, pc_circle_eq out[2], pc_why_call *w);

@@ -1,11 +1,15 @@
 /* The parts of Korotky's constructions the bindings need (korotky_parts.h). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "korotky_parts.h"
 #include "graphdiff.h"
 #include "elastic.h"
 #include "conic_surface.h"
 #include "names.h"
+
+const char *const pc_poly_spline_ends[] = {"natural", "clamped", NULL};
+const char *const pc_ferguson_roots[] = {"min", "max", NULL};
 
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status) {
@@ -122,6 +126,28 @@ int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
     if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || (c->ncp != 3 && c->ncp != 5)) return PC_EDIM;
     if (c->ncp == 5) return pc_conic_line_pair(c->cp, w) ? PC_ESAME_LINE : PC_EDIM;
     return pc_conic_info_rquad(c->cp, out);
+}
+
+/* x as Lua's %f shows it in a message: %.14g, and ".0" after what looks like an integer */
+static const char *lua_num_text(double x, char *buf, size_t size) {
+    snprintf(buf, size, "%.14g", x);
+    if (buf[strspn(buf, "-0123456789")] == '\0') strncat(buf, ".0", size - strlen(buf) - 1);
+    return buf;
+}
+
+int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_info *out,
+                              pc_why_call *w) {
+    const char *op = "korotky.conic_elements";
+    double at[2];
+    char x[40], y[40];
+    int st = c ? pc_conic_info_arc(c, out, at) : pc_conic_info_coef(coef, out);
+    const pc_why *row = pc_why_find(pc_korotky_why, op, st);
+    if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
+        return pc_why_call_set(w, op, st, 0, NULL, "the line pair U W V (T = W, the weight infinite) is "
+                               "a degenerate conic: its lines meet at W = P(%s, %s)",
+                               lua_num_text(at[0], x, sizeof x), lua_num_text(at[1], y, sizeof y));
+    if (row) return pc_why_call_set(w, op, st, row->arg, row->key, "%s", row->text);
+    return pc_why_call_set(w, NULL, st, 0, NULL, "");
 }
 
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {

@@ -15,6 +15,11 @@
  * coefficients into coef, the curve returned (NULL: *status and *bad as pc_poly_spline). */
 pc_curve *pc_poly_spline_points(int n, const double *p, pc_end_kind ends, double s0, double s1,
                                 double *coef, int *bad, int *status);
+/* The names of the polynomial spline's ends (pc_end_kind: "natural", "clamped") and of the
+ * substitution's roots (pc_ferguson_substitution's root_max 0, 1: "min", "max"), NULL-ended:
+ * the choices of korotky.poly_spline and korotky.ferguson_substitution. */
+extern const char *const pc_poly_spline_ends[];
+extern const char *const pc_ferguson_roots[];
 /* The Ferguson spline of system (22) through the n points p (rows of 2) with the unit end
  * tangents tA, tE scaled to the moduli wA, wE and the n - 2 ratios lambda: pc_ferguson_lambda's
  * Hermite segments as a curve (NULL: *status and *bad as pc_ferguson_lambda; PC_EZERO for a
@@ -46,6 +51,12 @@ int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
  * line pair U W V (the degenerate section AOD of Fig. 3c), its lines meeting at W (into w), else
  * PC_EDIM.  PC_EDIM for any other curve. */
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]);
+/* The elements of korotky.conic_elements: of the arc c (pc_conic_info_arc) or, c NULL, of the
+ * coefficients coef (pc_conic_info_coef), a failure explained in w: the line pair U W V with the
+ * point W where its lines meet, else the rows of pc_korotky_why (another status with an empty
+ * table).  Returns the status. */
+int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_info *out,
+                              pc_why_call *w);
 
 /* The failure st of pc_elastic_length for n points, pieces per span (0: as the points allow)
  * and the length len (0: free), explained in w (korotky.elastic; an empty table for a status

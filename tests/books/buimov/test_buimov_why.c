@@ -100,6 +100,14 @@ static void conic_coef_by_kind(void **state) {
     assert_int_equal(pc_conic_points_checked(PC_GEN_CIRCLE, PC_GEN_PARAM, 2, 0, 0, 0.5, 4, xy, &w), PC_OK);
     NEAR(xy[2], 2 * cos(0.5), 1e-15); NEAR(xy[3], 2 * sin(0.5), 1e-15);
     assert_string_equal(pc_gen_kind_names[PC_GEN_HYPERBOLA_COSH], "hyperbola_ch");
+    assert_string_equal(pc_conic_names[PC_CONIC_PARABOLA], "parabola");
+    assert_string_equal(pc_conic_names[PC_CONIC_HYPERBOLA], "hyperbola");
+    assert_null(pc_conic_names[3]);
+    assert_string_equal(pc_book_ends_names[PC_BOOK_NATURAL], "natural");
+    assert_string_equal(pc_book_ends_names[PC_BOOK_ANTICYCLIC], "anticyclic");
+    assert_null(pc_book_ends_names[4]);
+    assert_string_equal(pc_book_param_names[1], "chord");   /* pc_book_spline_params' chord */
+    assert_null(pc_book_param_names[2]);
 }
 
 /* the conditions of buimov.spline's options, in the order the messages come */

@@ -84,6 +84,11 @@ static void test_why(void **state) {
     assert_non_null(strstr(pc_meet_planes4_why(PC_ESAME_LINE, 1), "a plane of one pencil"));
     assert_non_null(strstr(pc_meet_planes4_why(PC_ESKEW, 1), "span only a line"));
     assert_string_equal(pc_meet_planes4_why(PC_ENONFINITE, 0), pc_strerror(PC_ENONFINITE));
+    assert_string_equal(pc_poly_spline_ends[PC_END_NATURAL], "natural");
+    assert_string_equal(pc_poly_spline_ends[PC_END_CLAMPED], "clamped");
+    assert_null(pc_poly_spline_ends[2]);
+    assert_string_equal(pc_ferguson_roots[1], "max");   /* root_max */
+    assert_null(pc_ferguson_roots[2]);
 }
 
 /* the conic of an arc of korotky.conic_arc: (x - 1)^2 + 4 y^2 = 1 (test_korotky_shells.lua's
@@ -106,7 +111,20 @@ static void test_conic_info_arc(void **state) {
     assert_non_null(c);
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_ESAME_LINE);
     NEAR(W[0], 1, 1e-12); NEAR(W[1], 1, 1e-12);
+    pc_why_call why;   /* korotky.conic_elements words it with W as Lua shows numbers */
+    assert_int_equal(pc_conic_elements_checked(c, NULL, &o, &why), PC_ESAME_LINE);
+    assert_non_null(strstr(why.row[0].text, "its lines meet at W = P(1.0, 1.0)"));
+    assert_null(why.row[1].op);
     pc_curve_release(c);
+    const double zero[6] = {0, 0, 0, 1, 2, 3}, bad[6] = {1, 0, NAN, 0, 0, -1};
+    const double circle[6] = {1, 0, 1, 0, 0, -1.5};
+    assert_int_equal(pc_conic_elements_checked(NULL, zero, &o, &why), PC_EDOMAIN);
+    assert_string_equal(why.row[0].text, "a degenerate conic (a line pair, or no real points)");
+    assert_int_equal(pc_conic_elements_checked(NULL, bad, &o, &why), PC_ENONFINITE);
+    assert_int_equal(why.row[0].arg, 1);
+    assert_int_equal(pc_conic_elements_checked(NULL, circle, &o, &why), PC_OK);
+    assert_true(o.circle);
+    assert_null(why.row[0].op);
     const double cub[12] = {0, 0, 1, 1, 2, 1, 2, 1, 1, 3, 0, 1};   /* a cubic: no conic arc */
     c = pc_curve_bezier(2, 4, cub, &st);
     assert_non_null(c);
