@@ -279,7 +279,7 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     out->n = n;
     memcpy(out->v, p->h, sizeof(double) * (size_t)(n + 1));
     if (a->kind == PCL_VALUE) return;
-    int k = pcl_snap_weight(n, out->v);
+    int k = pc_snap_weight(n, out->v);
     const char *weight = k == PC_KIND_WEIGHTED ? lua_pushfstring(L, "its weight is %s, and a point "
         "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
         pcl_pushnum(L, p->h[n])) : NULL;

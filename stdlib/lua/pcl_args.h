@@ -199,9 +199,6 @@ void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const 
  * through a declared __call in its metatable (oneratio(A, B, C) is oneratio.simplex). */
 void pcl_new_table(lua_State *L, int module, const char *name, const pcl_fn *fns, const pcl_fn *call);
 
-/* One weight rule: PC_KIND_POINT, _VECTOR or _WEIGHTED, h[n] snapped to 1 or 0 (point.h). */
-static inline int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
-
 /* Refuse debug.setupvalue(f, 1, x) of a declared function (upvalue 1, which the layer trusts). */
 void pcl_guard_upvalues(lua_State *L);
 /* The registry's declarations, name -> {sig = TEXT | {FORMS}, desc = TEXT}: pointcalc._decl. */
