@@ -219,37 +219,32 @@ static int key_names(const pcl_arg *keys, const char **names, int max) {
     return n;
 }
 
-/* The expected text of each kind that holds no numbers: "a point", made "a 2-D point" for a
- * kind with a dimension. */
+/* The expected text of each kind; %s: "2-D " for a kind with a dimension. */
 static const char *const EXPECTED[] = {
-    [PCL_BOOLEAN] = "a boolean", [PCL_STRING] = "a string", [PCL_POINT] = "a point", [PCL_VECTOR] = "a vector",
-    [PCL_LOC] = "a point or vector", [PCL_VALUE] = "a point, vector or weighted point",
-    [PCL_NUMBERS] = "a list of numbers", [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors",
-    [PCL_CURVE] = "a curve", [PCL_SURFACE] = "a surface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
+    [PCL_NUMBER] = "a finite number", [PCL_INTEGER] = "an integer", [PCL_BOOLEAN] = "a boolean",
+    [PCL_STRING] = "a string", [PCL_POINT] = "a %spoint", [PCL_VECTOR] = "a %svector",
+    [PCL_LOC] = "a %spoint or vector", [PCL_VALUE] = "a %spoint, vector or weighted point",
+    [PCL_POINTS] = "a list of %spoints", [PCL_NUMBERS] = "a list of numbers",
+    [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors", [PCL_CURVE] = "a %scurve",
+    [PCL_SURFACE] = "a %ssurface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
     [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table", [PCL_ANY] = "a value"};
 
 /* The expected text of a kind (what the messages say after "must be"). */
 static const char *expected(lua_State *L, const pcl_arg *a) {
     const char *names[64];
     if (a->expect) return a->expect;
-    switch (a->kind) {
-    case PCL_NUMBER: case PCL_INTEGER:
-        if (a->flags & PCL_RANGE)
-            return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
-                                   pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
-        if (a->kind == PCL_INTEGER) return "an integer";
-        if (a->flags & PCL_INF) return "a number other than NaN";
-        return a->flags & PCL_POS ? "a positive number" : "a finite number";
-    case PCL_ENUM: return push_list(L, a->choices, "\"%s\"", ", ", " or ");
-    case PCL_POINTS: return a->dim ? lua_pushfstring(L, "a list of %d-D points", a->dim) : "a list of points";
-    case PCL_OPTIONS:                                   /* a table {k1 =, k2 =} */
+    if ((a->kind == PCL_NUMBER || a->kind == PCL_INTEGER) && (a->flags & PCL_RANGE))
+        return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
+                               pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
+    if (a->kind == PCL_NUMBER && (a->flags & (PCL_INF | PCL_POS)))
+        return a->flags & PCL_INF ? "a number other than NaN" : "a positive number";
+    if (a->kind == PCL_ENUM) return push_list(L, a->choices, "\"%s\"", ", ", " or ");
+    if (a->kind == PCL_OPTIONS) {                       /* a table {k1 =, k2 =} */
         key_names(a->keys, names, 64);
         return lua_pushfstring(L, "a table {%s}", push_list(L, names, "%s =", ", ", ", "));
-    case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE: case PCL_CURVE: case PCL_SURFACE:
-        if (a->dim > 0) return lua_pushfstring(L, "a %d-D %s", a->dim, EXPECTED[a->kind] + 2);
-        return EXPECTED[a->kind];
-    default: return a->kind > PCL_NONE && a->kind <= PCL_ANY ? EXPECTED[a->kind] : "a value";
     }
+    if (a->kind <= PCL_NONE || a->kind > PCL_ANY) return "a value";
+    return lua_pushfstring(L, EXPECTED[a->kind], a->dim > 0 ? lua_pushfstring(L, "%d-D ", a->dim) : "");
 }
 
 /* The dimension rule: a fixed dimension, or (PCL_SAMEDIM) the first located value's. */
@@ -279,17 +274,16 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     out->n = n;
     memcpy(out->v, p->h, sizeof(double) * (size_t)(n + 1));
     if (a->kind == PCL_VALUE) return;
+    static const char *const HINT[] = {   /* a point where a vector is wanted; the reverse */
+        [PC_KIND_POINT] = "a vector has weight 0: a difference of points is a vector, e.g. B - A",
+        [PC_KIND_VECTOR] = "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v"};
     int k = pc_snap_weight(n, out->v);
-    const char *weight = k == PC_KIND_WEIGHTED ? lua_pushfstring(L, "its weight is %s, and a point "
-        "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
-        pcl_pushnum(L, p->h[n])) : NULL;
-    if (a->kind == PCL_POINT && k != PC_KIND_POINT)
-        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_VECTOR
-                      ? "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
-    if (a->kind == PCL_VECTOR && k != PC_KIND_VECTOR)
-        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_POINT
-                      ? "a vector has weight 0: a difference of points is a vector, e.g. B - A" : weight);
-    if (a->kind == PCL_LOC && k == PC_KIND_WEIGHTED) mismatch_hint(L, c, idx, expected(L, a), weight);
+    int want = a->kind == PCL_POINT ? PC_KIND_POINT : a->kind == PCL_VECTOR ? PC_KIND_VECTOR : k;
+    if (k == PC_KIND_WEIGHTED)
+        mismatch_hint(L, c, idx, expected(L, a), lua_pushfstring(L, "its weight is %s, and a point "
+            "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
+            pcl_pushnum(L, p->h[n])));
+    if (k != want) mismatch_hint(L, c, idx, expected(L, a), HINT[k]);
     for (int i = 0; i < n; i++)
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
 }
@@ -403,11 +397,11 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     }
     switch (a->kind) {
     case PCL_NUMBER: case PCL_INTEGER:
-        if (!read_scalar(L, a, idx, out, 1)) mismatch(L, c, idx, expected(L, a));
+        if (!read_scalar(L, a, idx, out, 1)) break;
         out->idx = c->key ? 0 : idx;
         return;
-    case PCL_BOOLEAN: case PCL_STRING: case PCL_FUNCTION: case PCL_TABLE:
-        if (t != LUA_TYPE_OF[a->kind]) mismatch(L, c, idx, expected(L, a));
+    case PCL_BOOLEAN: case PCL_STRING: case PCL_FUNCTION: case PCL_TABLE: case PCL_CALLABLE:
+        if (a->kind == PCL_CALLABLE ? !pcl_callable(L, idx) : t != LUA_TYPE_OF[a->kind]) break;
         if (a->kind == PCL_BOOLEAN) out->x = lua_toboolean(L, idx);
         if (a->kind == PCL_STRING) out->s = lua_tostring(L, idx);
         return;
@@ -418,8 +412,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
                     out->n = i, out->s = a->choices[i];
                     return;
                 }
-        mismatch(L, c, idx, expected(L, a));
-        return;
+        break;
     case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE:
         read_loc(L, c, a, idx, out);
         return;
@@ -430,7 +423,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         pc_curve *cv = a->kind == PCL_CURVE ? pcl_tocurve(L, idx) : NULL;
         pc_surface *sf = a->kind == PCL_SURFACE ? pcl_tosurface(L, idx) : NULL;
         int dim = cv ? cv->dim : sf ? sf->dim : 0;
-        if (!dim) mismatch(L, c, idx, expected(L, a));
+        if (!dim) break;
         if (a->dim && dim != a->dim)
             pcl_error(L, "%s: %s must be %s, got a %d-D one", c->fname, where(L, c), expected(L, a), dim);
         check_dim(L, c, a, idx, dim);
@@ -439,22 +432,20 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         return;
     }
     case PCL_MAP:
-        if (!(out->obj = pcl_tomap(L, idx))) mismatch(L, c, idx, expected(L, a));
-        return;
-    case PCL_CALLABLE:
-        if (!pcl_callable(L, idx)) mismatch(L, c, idx, expected(L, a));
+        if (!(out->obj = pcl_tomap(L, idx))) break;
         return;
     case PCL_ANY: {
         const ctx *outer = reading;
         reading = c;                            /* for pcl_readfail */
         int ok = !a->read || a->read(L, idx, a, out);
         reading = outer;
-        if (!ok) mismatch(L, c, idx, expected(L, a));
+        if (!ok) break;
         return;
     }
     default:
         luaL_error(L, "%s: an option table inside an option table is not supported", c->fname);
     }
+    mismatch(L, c, idx, expected(L, a));   /* a case that breaks: not of its kind */
 }
 
 /* Every key of the option table at idx must be one of known (nk of them): else "unknown option". */
