@@ -25,8 +25,6 @@ static const pcl_decl *current_box(lua_State *L) {
 }
 static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
 
-int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
-
 /* debug.setupvalue(f, 1, x) of a declared function is refused, so that no call asks Lua which
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
 static lua_CFunction lua_setupvalue_fn;
@@ -62,6 +60,18 @@ const char *pcl_name(lua_State *L) {
         ar.namewhat[0] && strcmp(ar.namewhat, "method") != 0)
         return ar.name;
     return d->name;
+}
+
+/* A declared function's name is its declaration's (pcl_name: whatever the script called it
+ * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
+ * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
+const char *pcl_fname(lua_State *L) {
+    lua_Debug ar;
+    if (to_box(L, lua_upvalueindex(1))) return pcl_name(L);
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
+        return ar.name;
+    return "pointcalc";
 }
 
 int pcl_fail(lua_State *L, const char *fmt, ...) {
@@ -493,8 +503,11 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
     }
 }
 
-static void check_count(lua_State *L, const pcl_decl *b, int n) {
+/* The running declaration, whose values must fit the caller's n. */
+static const pcl_decl *counted_box(lua_State *L, int n) {
+    const pcl_decl *b = current_box(L);
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
+    return b;
 }
 
 /* The declared arguments from stack slot first on into v, argument k + 1 shown as #k + 1; with
@@ -565,11 +578,7 @@ static void *read_self(lua_State *L, const pcl_decl *b, pcl_val *v) {
     return self;
 }
 
-void *pcl_read(lua_State *L, pcl_val *v, int n) {
-    const pcl_decl *b = current_box(L);
-    check_count(L, b, n);
-    return read_self(L, b, v);
-}
+void *pcl_read(lua_State *L, pcl_val *v, int n) { return read_self(L, counted_box(L, n), v); }
 
 int pcl_nvalues(lua_State *L) {
     int n = current_box(L)->nvalues;
@@ -604,8 +613,7 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 }
 
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
-    const pcl_decl *b = current_box(L);
-    check_count(L, b, n);
+    const pcl_decl *b = counted_box(L, n);
     memset(v, 0, sizeof *v * (size_t)n);   /* the caller's array need not be zeroed (pcl_args.h) */
     read_args(L, b, v, 1, 1);
 }
@@ -614,13 +622,10 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
 
 /* The text of one argument in a signature: its name, an enum's choices, an option table's keys. */
 static void add_arg(luaL_Buffer *b, lua_State *L, const pcl_arg *a) {
-    if (a->kind == PCL_ENUM) {
-        push_list(L, a->choices, "\"%s\"", "|", "|");
-        luaL_addvalue(b);
-        return;
-    }
     if (a->kind != PCL_OPTIONS) {
-        luaL_addstring(b, a->name);
+        if (a->kind == PCL_ENUM) push_list(L, a->choices, "\"%s\"", "|", "|");
+        else lua_pushstring(L, a->name);
+        luaL_addvalue(b);
         return;
     }
     luaL_addchar(b, '{');
@@ -657,16 +662,13 @@ static void push_signature(lua_State *L, const pcl_fn *d) {
 static void record(lua_State *L, const pcl_fn *d) {
     luaL_getsubtable(L, LUA_REGISTRYINDEX, PCL_DECL_KEY);
     lua_createtable(L, 0, 3);
-    if (d->sig) {                                    /* forms, one per line */
-        lua_newtable(L);
-        for (const char *s = d->sig; *s;) {
-            size_t len = strcspn(s, "\n");
-            lua_pushlstring(L, s, len);
-            lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
-            s += len + (s[len] == '\n');
-        }
-    } else {
-        push_signature(L, d);
+    if (d->sig) lua_newtable(L);                     /* forms, one per line */
+    else push_signature(L, d);
+    for (const char *s = d->sig; s && *s;) {
+        size_t len = strcspn(s, "\n");
+        lua_pushlstring(L, s, len);
+        lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
+        s += len + (s[len] == '\n');
     }
     lua_setfield(L, -2, "sig");
     lua_pushstring(L, d->help ? d->help : "");
@@ -697,10 +699,8 @@ static void register_all(lua_State *L, int table, const pcl_fn *fns, int nup, in
     table = lua_absindex(L, table);
     int ups = lua_gettop(L) - nup + 1;
     for (const pcl_fn *d = fns; d->name; d++) {
-        const char *key = d->name;
-        for (const char *p = d->name; *p; p++)
-            if (*p == '.' || *p == ':') key = p + 1;
-        if (d->key) key = d->key;
+        const char *key = d->key ? d->key : d->name;    /* else the name's last part */
+        for (const char *p = key; !d->key && (p = strpbrk(p, ".:")); ) key = ++p;
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
         pcl_pushfn(L, d, nup);
         lua_setfield(L, table, key);
