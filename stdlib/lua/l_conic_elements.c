@@ -63,7 +63,7 @@ static int read_tangent(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_
         pcl_value *p = pcl_tovalue(L, -1);
         double h[3];
         if (p && p->n == 2) memcpy(h, p->h, sizeof h);
-        ok = ok && p && p->n == 2 && pcl_snap_weight(2, h) == (i ? PC_KIND_VECTOR : PC_KIND_POINT);
+        ok = ok && p && p->n == 2 && pc_snap_weight(2, h) == (i ? PC_KIND_VECTOR : PC_KIND_POINT);
         if (ok) out->v[2 * i] = h[0], out->v[2 * i + 1] = h[1];
         lua_pop(L, 1);
     }

@@ -267,7 +267,7 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     if (!v || v->n != a->dim) return 0;
     memcpy(out->v, v->h, sizeof(double) * (size_t)(a->dim + 1));
-    return pcl_snap_weight(a->dim, out->v) != PC_KIND_WEIGHTED;
+    return pc_snap_weight(a->dim, out->v) != PC_KIND_WEIGHTED;
 }
 
 /* ---- the key construction in 4-D --------------------------------------------------------- */
@@ -371,7 +371,7 @@ PCL_BODY(l_plane_meet, a) {
     pcl_point_rows(a + 3, 3, 5, q[0]);
     int st = pc_meet_planes4(p, q, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
-    pcl_snap_weight(4, out);
+    pc_snap_weight(4, out);
     return pcl_push_results(L, 4, "w", out);
 }
 

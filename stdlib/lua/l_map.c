@@ -239,7 +239,7 @@ static int l_apply(lua_State *L) {
         if (p->n != nin)
             return pcl_fail(L, "argument #1 is %d-D, but the map takes %d-D: dimensions cannot be mixed", p->n, nin);
         memcpy(in, p->h, sizeof(double) * (size_t)(nin + 1));
-        pcl_snap_weight(nin, in);
+        pc_snap_weight(nin, in);
         if (xy && in[nin] != 1)
             return pcl_fail(L, "argument #1 (X) must be a point (weight 1), got weight %s", pcl_pushnum(L, in[nin]));
     } else {

@@ -25,8 +25,6 @@ static const pcl_decl *current_box(lua_State *L) {
 }
 static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
 
-int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
-
 /* debug.setupvalue(f, 1, x) of a declared function is refused, so that no call asks Lua which
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
 static lua_CFunction lua_setupvalue_fn;
@@ -62,6 +60,18 @@ const char *pcl_name(lua_State *L) {
         ar.namewhat[0] && strcmp(ar.namewhat, "method") != 0)
         return ar.name;
     return d->name;
+}
+
+/* A declared function's name is its declaration's (pcl_name: whatever the script called it
+ * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
+ * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
+const char *pcl_fname(lua_State *L) {
+    lua_Debug ar;
+    if (to_box(L, lua_upvalueindex(1))) return pcl_name(L);
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
+        return ar.name;
+    return "pointcalc";
 }
 
 int pcl_fail(lua_State *L, const char *fmt, ...) {
@@ -219,37 +229,32 @@ static int key_names(const pcl_arg *keys, const char **names, int max) {
     return n;
 }
 
-/* The expected text of each kind that holds no numbers: "a point", made "a 2-D point" for a
- * kind with a dimension. */
+/* The expected text of each kind; %s: "2-D " for a kind with a dimension. */
 static const char *const EXPECTED[] = {
-    [PCL_BOOLEAN] = "a boolean", [PCL_STRING] = "a string", [PCL_POINT] = "a point", [PCL_VECTOR] = "a vector",
-    [PCL_LOC] = "a point or vector", [PCL_VALUE] = "a point, vector or weighted point",
-    [PCL_NUMBERS] = "a list of numbers", [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors",
-    [PCL_CURVE] = "a curve", [PCL_SURFACE] = "a surface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
+    [PCL_NUMBER] = "a finite number", [PCL_INTEGER] = "an integer", [PCL_BOOLEAN] = "a boolean",
+    [PCL_STRING] = "a string", [PCL_POINT] = "a %spoint", [PCL_VECTOR] = "a %svector",
+    [PCL_LOC] = "a %spoint or vector", [PCL_VALUE] = "a %spoint, vector or weighted point",
+    [PCL_POINTS] = "a list of %spoints", [PCL_NUMBERS] = "a list of numbers",
+    [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors", [PCL_CURVE] = "a %scurve",
+    [PCL_SURFACE] = "a %ssurface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
     [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table", [PCL_ANY] = "a value"};
 
 /* The expected text of a kind (what the messages say after "must be"). */
 static const char *expected(lua_State *L, const pcl_arg *a) {
     const char *names[64];
     if (a->expect) return a->expect;
-    switch (a->kind) {
-    case PCL_NUMBER: case PCL_INTEGER:
-        if (a->flags & PCL_RANGE)
-            return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
-                                   pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
-        if (a->kind == PCL_INTEGER) return "an integer";
-        if (a->flags & PCL_INF) return "a number other than NaN";
-        return a->flags & PCL_POS ? "a positive number" : "a finite number";
-    case PCL_ENUM: return push_list(L, a->choices, "\"%s\"", ", ", " or ");
-    case PCL_POINTS: return a->dim ? lua_pushfstring(L, "a list of %d-D points", a->dim) : "a list of points";
-    case PCL_OPTIONS:                                   /* a table {k1 =, k2 =} */
+    if ((a->kind == PCL_NUMBER || a->kind == PCL_INTEGER) && (a->flags & PCL_RANGE))
+        return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
+                               pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
+    if (a->kind == PCL_NUMBER && (a->flags & (PCL_INF | PCL_POS)))
+        return a->flags & PCL_INF ? "a number other than NaN" : "a positive number";
+    if (a->kind == PCL_ENUM) return push_list(L, a->choices, "\"%s\"", ", ", " or ");
+    if (a->kind == PCL_OPTIONS) {                       /* a table {k1 =, k2 =} */
         key_names(a->keys, names, 64);
         return lua_pushfstring(L, "a table {%s}", push_list(L, names, "%s =", ", ", ", "));
-    case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE: case PCL_CURVE: case PCL_SURFACE:
-        if (a->dim > 0) return lua_pushfstring(L, "a %d-D %s", a->dim, EXPECTED[a->kind] + 2);
-        return EXPECTED[a->kind];
-    default: return a->kind > PCL_NONE && a->kind <= PCL_ANY ? EXPECTED[a->kind] : "a value";
     }
+    if (a->kind <= PCL_NONE || a->kind > PCL_ANY) return "a value";
+    return lua_pushfstring(L, EXPECTED[a->kind], a->dim > 0 ? lua_pushfstring(L, "%d-D ", a->dim) : "");
 }
 
 /* The dimension rule: a fixed dimension, or (PCL_SAMEDIM) the first located value's. */
@@ -279,17 +284,16 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     out->n = n;
     memcpy(out->v, p->h, sizeof(double) * (size_t)(n + 1));
     if (a->kind == PCL_VALUE) return;
-    int k = pcl_snap_weight(n, out->v);
-    const char *weight = k == PC_KIND_WEIGHTED ? lua_pushfstring(L, "its weight is %s, and a point "
-        "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
-        pcl_pushnum(L, p->h[n])) : NULL;
-    if (a->kind == PCL_POINT && k != PC_KIND_POINT)
-        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_VECTOR
-                      ? "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v" : weight);
-    if (a->kind == PCL_VECTOR && k != PC_KIND_VECTOR)
-        mismatch_hint(L, c, idx, expected(L, a), k == PC_KIND_POINT
-                      ? "a vector has weight 0: a difference of points is a vector, e.g. B - A" : weight);
-    if (a->kind == PCL_LOC && k == PC_KIND_WEIGHTED) mismatch_hint(L, c, idx, expected(L, a), weight);
+    static const char *const HINT[] = {   /* a point where a vector is wanted; the reverse */
+        [PC_KIND_POINT] = "a vector has weight 0: a difference of points is a vector, e.g. B - A",
+        [PC_KIND_VECTOR] = "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v"};
+    int k = pc_snap_weight(n, out->v);
+    int want = a->kind == PCL_POINT ? PC_KIND_POINT : a->kind == PCL_VECTOR ? PC_KIND_VECTOR : k;
+    if (k == PC_KIND_WEIGHTED)
+        mismatch_hint(L, c, idx, expected(L, a), lua_pushfstring(L, "its weight is %s, and a point "
+            "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
+            pcl_pushnum(L, p->h[n])));
+    if (k != want) mismatch_hint(L, c, idx, expected(L, a), HINT[k]);
     for (int i = 0; i < n; i++)
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
 }
@@ -403,11 +407,11 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
     }
     switch (a->kind) {
     case PCL_NUMBER: case PCL_INTEGER:
-        if (!read_scalar(L, a, idx, out, 1)) mismatch(L, c, idx, expected(L, a));
+        if (!read_scalar(L, a, idx, out, 1)) break;
         out->idx = c->key ? 0 : idx;
         return;
-    case PCL_BOOLEAN: case PCL_STRING: case PCL_FUNCTION: case PCL_TABLE:
-        if (t != LUA_TYPE_OF[a->kind]) mismatch(L, c, idx, expected(L, a));
+    case PCL_BOOLEAN: case PCL_STRING: case PCL_FUNCTION: case PCL_TABLE: case PCL_CALLABLE:
+        if (a->kind == PCL_CALLABLE ? !pcl_callable(L, idx) : t != LUA_TYPE_OF[a->kind]) break;
         if (a->kind == PCL_BOOLEAN) out->x = lua_toboolean(L, idx);
         if (a->kind == PCL_STRING) out->s = lua_tostring(L, idx);
         return;
@@ -418,8 +422,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
                     out->n = i, out->s = a->choices[i];
                     return;
                 }
-        mismatch(L, c, idx, expected(L, a));
-        return;
+        break;
     case PCL_POINT: case PCL_VECTOR: case PCL_LOC: case PCL_VALUE:
         read_loc(L, c, a, idx, out);
         return;
@@ -430,7 +433,7 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         pc_curve *cv = a->kind == PCL_CURVE ? pcl_tocurve(L, idx) : NULL;
         pc_surface *sf = a->kind == PCL_SURFACE ? pcl_tosurface(L, idx) : NULL;
         int dim = cv ? cv->dim : sf ? sf->dim : 0;
-        if (!dim) mismatch(L, c, idx, expected(L, a));
+        if (!dim) break;
         if (a->dim && dim != a->dim)
             pcl_error(L, "%s: %s must be %s, got a %d-D one", c->fname, where(L, c), expected(L, a), dim);
         check_dim(L, c, a, idx, dim);
@@ -439,22 +442,20 @@ static void read_value(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pc
         return;
     }
     case PCL_MAP:
-        if (!(out->obj = pcl_tomap(L, idx))) mismatch(L, c, idx, expected(L, a));
-        return;
-    case PCL_CALLABLE:
-        if (!pcl_callable(L, idx)) mismatch(L, c, idx, expected(L, a));
+        if (!(out->obj = pcl_tomap(L, idx))) break;
         return;
     case PCL_ANY: {
         const ctx *outer = reading;
         reading = c;                            /* for pcl_readfail */
         int ok = !a->read || a->read(L, idx, a, out);
         reading = outer;
-        if (!ok) mismatch(L, c, idx, expected(L, a));
+        if (!ok) break;
         return;
     }
     default:
         luaL_error(L, "%s: an option table inside an option table is not supported", c->fname);
     }
+    mismatch(L, c, idx, expected(L, a));   /* a case that breaks: not of its kind */
 }
 
 /* Every key of the option table at idx must be one of known (nk of them): else "unknown option". */
@@ -502,8 +503,11 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
     }
 }
 
-static void check_count(lua_State *L, const pcl_decl *b, int n) {
+/* The running declaration, whose values must fit the caller's n. */
+static const pcl_decl *counted_box(lua_State *L, int n) {
+    const pcl_decl *b = current_box(L);
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
+    return b;
 }
 
 /* The declared arguments from stack slot first on into v, argument k + 1 shown as #k + 1; with
@@ -574,11 +578,7 @@ static void *read_self(lua_State *L, const pcl_decl *b, pcl_val *v) {
     return self;
 }
 
-void *pcl_read(lua_State *L, pcl_val *v, int n) {
-    const pcl_decl *b = current_box(L);
-    check_count(L, b, n);
-    return read_self(L, b, v);
-}
+void *pcl_read(lua_State *L, pcl_val *v, int n) { return read_self(L, counted_box(L, n), v); }
 
 int pcl_nvalues(lua_State *L) {
     int n = current_box(L)->nvalues;
@@ -613,8 +613,7 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 }
 
 void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
-    const pcl_decl *b = current_box(L);
-    check_count(L, b, n);
+    const pcl_decl *b = counted_box(L, n);
     memset(v, 0, sizeof *v * (size_t)n);   /* the caller's array need not be zeroed (pcl_args.h) */
     read_args(L, b, v, 1, 1);
 }
@@ -623,13 +622,10 @@ void pcl_read_pairs(lua_State *L, pcl_val *v, int n) {
 
 /* The text of one argument in a signature: its name, an enum's choices, an option table's keys. */
 static void add_arg(luaL_Buffer *b, lua_State *L, const pcl_arg *a) {
-    if (a->kind == PCL_ENUM) {
-        push_list(L, a->choices, "\"%s\"", "|", "|");
-        luaL_addvalue(b);
-        return;
-    }
     if (a->kind != PCL_OPTIONS) {
-        luaL_addstring(b, a->name);
+        if (a->kind == PCL_ENUM) push_list(L, a->choices, "\"%s\"", "|", "|");
+        else lua_pushstring(L, a->name);
+        luaL_addvalue(b);
         return;
     }
     luaL_addchar(b, '{');
@@ -666,16 +662,13 @@ static void push_signature(lua_State *L, const pcl_fn *d) {
 static void record(lua_State *L, const pcl_fn *d) {
     luaL_getsubtable(L, LUA_REGISTRYINDEX, PCL_DECL_KEY);
     lua_createtable(L, 0, 3);
-    if (d->sig) {                                    /* forms, one per line */
-        lua_newtable(L);
-        for (const char *s = d->sig; *s;) {
-            size_t len = strcspn(s, "\n");
-            lua_pushlstring(L, s, len);
-            lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
-            s += len + (s[len] == '\n');
-        }
-    } else {
-        push_signature(L, d);
+    if (d->sig) lua_newtable(L);                     /* forms, one per line */
+    else push_signature(L, d);
+    for (const char *s = d->sig; s && *s;) {
+        size_t len = strcspn(s, "\n");
+        lua_pushlstring(L, s, len);
+        lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
+        s += len + (s[len] == '\n');
     }
     lua_setfield(L, -2, "sig");
     lua_pushstring(L, d->help ? d->help : "");
@@ -706,10 +699,8 @@ static void register_all(lua_State *L, int table, const pcl_fn *fns, int nup, in
     table = lua_absindex(L, table);
     int ups = lua_gettop(L) - nup + 1;
     for (const pcl_fn *d = fns; d->name; d++) {
-        const char *key = d->name;
-        for (const char *p = d->name; *p; p++)
-            if (*p == '.' || *p == ':') key = p + 1;
-        if (d->key) key = d->key;
+        const char *key = d->key ? d->key : d->name;    /* else the name's last part */
+        for (const char *p = key; !d->key && (p = strpbrk(p, ".:")); ) key = ++p;
         for (int i = 0; i < nup; i++) lua_pushvalue(L, ups + i);
         pcl_pushfn(L, d, nup);
         lua_setfield(L, table, key);

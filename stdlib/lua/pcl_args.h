@@ -163,8 +163,6 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 
 /* The running function's declared name (a __call's: the variable called, when Lua knows it). */
 const char *pcl_name(lua_State *L);
-/* 1 if the running C function is a declared one (pcl_name may be asked). */
-int pcl_declared(lua_State *L);
 /* "NAME: MESSAGE" at the user's line. */
 int pcl_fail(lua_State *L, const char *fmt, ...);
 /* "NAME: argument #K (WHAT) EXPECTED_TEXT": a body's own condition on a declared argument, e.g.
@@ -198,9 +196,6 @@ void pcl_open_type(lua_State *L, const char *tname, const luaL_Reg *meta, const 
 /* module[name] = a new table of the declared functions fns; with call, the table is callable
  * through a declared __call in its metatable (oneratio(A, B, C) is oneratio.simplex). */
 void pcl_new_table(lua_State *L, int module, const char *name, const pcl_fn *fns, const pcl_fn *call);
-
-/* One weight rule: PC_KIND_POINT, _VECTOR or _WEIGHTED, h[n] snapped to 1 or 0 (point.h). */
-static inline int pcl_snap_weight(int n, double *h) { return pc_snap_weight(n, h); }
 
 /* Refuse debug.setupvalue(f, 1, x) of a declared function (upvalue 1, which the layer trusts). */
 void pcl_guard_upvalues(lua_State *L);

@@ -62,9 +62,10 @@ static int push_coords(lua_State *L, int dim, const double *x) {
     return dim;
 }
 
-/* push the values of kind c from ap: their count, 0 when it is left out (o of NaN) */
-static int push_one(lua_State *L, int dim, char c, va_list *ap) {
-    if (c == 'x') return push_coords(L, dim, va_arg(*ap, const double *));
+/* push the values of kind c from ap (NULL: from v): their count, 0 when left out (o of NaN) */
+static int push_one(lua_State *L, int dim, char c, va_list *ap, const double *v) {
+    if (c == 'x') return push_coords(L, dim, ap ? va_arg(*ap, const double *) : v);
+    if (!ap) return push_loc(L, dim, c, v);
     if (c == 'n' || c == 'o') {
         double x = va_arg(*ap, double);
         if (c == 'o' && isnan(x)) return 0;
@@ -99,30 +100,30 @@ static char token(const char **s) {
     return c;
 }
 
-int pcl_push_results(lua_State *L, int dim, const char *spec, ...) {
-    va_list ap;
-    va_start(ap, spec);
-    int named = strchr(spec, '=') != NULL, count = 0;
-    if (named) lua_newtable(L);
-    for (const char *s = spec, *tok = s; *s; tok = s) {
-        int pushed = push_one(L, dim, token(&s), &ap);
-        if (named && pushed) store(L, tok);
-        count += pushed;
-    }
-    va_end(ap);
-    return named ? 1 : count;
-}
-
-int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
+/* Both bodies: the values from ap, or (ap NULL) packed in order in v. */
+static int push_spec(lua_State *L, int dim, const char *spec, va_list *ap, const double *v) {
     int named = strchr(spec, '=') != NULL, count = 0;
     if (named) lua_newtable(L);
     for (const char *s = spec, *tok = s; *s; tok = s) {
         char c = token(&s);
-        count += c == 'x' ? push_coords(L, dim, v) : push_loc(L, dim, c, v);
-        v += width(dim, c);
-        if (named) store(L, tok);
+        int pushed = push_one(L, dim, c, ap, v);
+        if (!ap) v += width(dim, c);
+        if (named && pushed) store(L, tok);
+        count += pushed;
     }
     return named ? 1 : count;
+}
+
+int pcl_push_results(lua_State *L, int dim, const char *spec, ...) {
+    va_list ap;
+    va_start(ap, spec);
+    int count = push_spec(L, dim, spec, &ap, NULL);
+    va_end(ap);
+    return count;
+}
+
+int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v) {
+    return push_spec(L, dim, spec, NULL, v);
 }
 
 void pcl_register_into(lua_State *L, int t, const char *name, const pcl_fn *fns) {
@@ -133,11 +134,7 @@ void pcl_register_into(lua_State *L, int t, const char *name, const pcl_fn *fns)
 pcl_luafn *pcl_luafn_new(lua_State *L, int n, const int *idx) {
     pcl_luafn *f = malloc(sizeof *f);
     if (!f) pcl_fail(L, "out of memory");
-    f->n = n;
-    f->nargs = 1;
-    f->failed = 0;
-    f->stack = 0;
-    f->fname = pcl_name(L);   /* the declaration's static string */
+    *f = (pcl_luafn){.n = n, .nargs = 1, .fname = pcl_name(L)};   /* fname: a static string */
     for (int i = 0; i < n; i++) {
         lua_pushvalue(L, idx[i]);
         f->ref[i] = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -168,22 +165,19 @@ double pcl_luafn_call(pcl_luafn *f, int which, int item, const char *what, int n
         lua_remove(L, -2);
     }
     for (int i = 0; i < nargs; i++) lua_pushnumber(L, x[i]);
-    if (lua_pcall(L, nargs, 1, 0) != LUA_OK) {
-        pcl_callback_failed(L);
-        f->failed++;
-        return NAN;
-    }
-    int isnum;
-    double y = lua_tonumberx(L, -1, &isnum);
-    if (!isnum) {   /* kept as the callback's error, raised when the core gives up */
+    int isnum = 0, ok = lua_pcall(L, nargs, 1, 0) == LUA_OK;
+    double y = ok ? lua_tonumberx(L, -1, &isnum) : NAN;
+    if (ok && !isnum) {   /* kept as the callback's error, raised when the core gives up */
         const char *got = luaL_typename(L, -1);
         pcl_pushwhere(L);
         lua_pushfstring(L, "%s: %s must return a number, got %s", f->fname, what ? what : "the function", got);
         lua_concat(L, 2);
+    }
+    if (!isnum) {   /* the error kept (popped), Lua's or ours */
         pcl_callback_failed(L);
         f->failed++;
     }
-    lua_pop(L, 1);   /* the result */
+    if (ok) lua_pop(L, 1);   /* the result */
     return isnum ? y : NAN;
 }
 

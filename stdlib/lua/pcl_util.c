@@ -2,18 +2,6 @@
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
 #include "pcl_args.h"
 
-/* A declared function's name is its declaration's (pcl_name: whatever the script called it
- * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
- * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
-const char *pcl_fname(lua_State *L) {
-    lua_Debug ar;
-    if (pcl_declared(L)) return pcl_name(L);
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
-    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
-        return ar.name;
-    return "pointcalc";
-}
-
 int pcl_arg_shown(lua_State *L, int arg) {
     lua_Debug ar;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.namewhat &&
@@ -164,10 +152,9 @@ static int tk_global_hint(lua_State *L) {
 }
 
 void pcl_open_errors(lua_State *L) {
-    int module = lua_gettop(L);
-    pcl_private(L, module);
+    pcl_private(L, -1);
     static const luaL_Reg fns[] = {{"raise", tk_raise}, {"shown", tk_shown}, {"argerror", tk_argerror},
                                    {"fielderror", tk_fielderror}, {"global_hint", tk_global_hint}, {NULL, NULL}};
     luaL_setfuncs(L, fns, 0);
-    lua_settop(L, module);
+    lua_pop(L, 1);
 }
