@@ -35,7 +35,7 @@ static void need_count(lua_State *L, int k, const pcl_val *v, int n) {
 #define A_FN(nm, what, fl) {.name = nm, .kind = PCL_CALLABLE, .flags = fl, .expect = what}
 #define A_TRUE(nm) {.name = nm, .kind = PCL_BOOLEAN, .shown = "true"}   /* a boolean key */
 #define A_LATER(nm) {.name = nm, .kind = PCL_ANY, .flags = PCL_OPT}   /* read by the body */
-/* an optional integer lo..hi: its default, then any other fields (.expect =) */
+/* an optional integer: A_INTOPT(name, lo, hi, default [, .expect = "text"]) */
 #define A_INTOPT(nm, l, h, ...) {.name = nm, .kind = PCL_INTEGER, .flags = PCL_OPT | PCL_RANGE, \
     .lo = l, .hi = h, .dflt = __VA_ARGS__}
 #define A_PARAMS {.name = "params", .kind = PCL_NUMBERS, .flags = PCL_OPT, .hi = MAXNODES}   /* one per point */
