@@ -227,37 +227,32 @@ PCL_BODY(l_curve, a) {
 
 /* ---- Stepanov's curves ------------------------------------------------------------------------- */
 
-/* The smoothstep at idx: nil (the default kind dflt), smooth.sine, smooth.cubic, a half-spline
- * object, or any other callable (*lua set); 0 if it is none of these. */
-static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g, int *lua) {
-    *lua = 0;
-    memset(g, 0, sizeof *g);
-    g->kind = (pc_gkind)dflt;
+/* The smoothstep at idx: nil (the default kind dflt), smooth.sine, smooth.cubic or a half-spline
+ * object into g (1), any other callable (2: a Lua one); 0 if it is none of these. */
+static int to_g(lua_State *L, int idx, int dflt, pc_gfun *g) {
+    *g = (pc_gfun){.kind = (pc_gkind)dflt};
     if (lua_isnoneornil(L, idx)) return 1;
     int kind;
     pc_hspline *h;
     if (lua_iscfunction(L, idx) && pcl_smooth_isfunc(lua_tocfunction(L, idx), &kind)) g->kind = (pc_gkind)kind;
     else if ((h = pcl_tohspline(L, idx))) g->kind = PC_G_HALF, g->h = *h;
-    else if (pcl_callable(L, idx)) *lua = 1;
-    else return 0;
+    else return pcl_callable(L, idx) ? 2 : 0;
     return 1;
 }
 static int read_g(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED pcl_val *out) {
     pc_gfun g;
-    int lua;
-    return to_g(L, idx, PC_G_CUBIC, &g, &lua);
+    return to_g(L, idx, PC_G_CUBIC, &g) != 0;
 }
 
 /* A stroke (or spline2) of np pieces as a curve: C smoothsteps in the core, a Lua one (at
- * gidx) through the callback. */
-static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed,
-                       const pc_piece *pc, int lua, int gidx) {
+ * stack index lua_g, else 0) through the callback. */
+static int push_stroke(lua_State *L, int d, int np, int closed, const pc_piece *pc, int lua_g) {
     int st;
-    pcl_callback_state(L);
-    pcl_luafn *f = lua ? keep_fn(L, gidx, 1) : NULL;
-    pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, lua ? luag_eval : NULL, lua ? pcl_luafn_free : NULL, f, &st);
+    pcl_luafn *f = lua_g ? keep_fn(L, lua_g, 1) : NULL;
+    pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, f ? luag_eval : NULL, f ? pcl_luafn_free : NULL, f,
+                                     &st);
     if (!c && f) pcl_luafn_free(f);
-    return pcl_push_made(L, c, &st, kind);
+    return pcl_push_made(L, c, &st, NULL);
 }
 
 #define G_ARG \
@@ -265,12 +260,12 @@ static int push_stroke(lua_State *L, const char *kind, int d, int np, int closed
 static const pcl_arg spline2_args[] = {A_SAMEPOINT("A"), A_SAMEVECTOR("a"), A_SAMEPOINT("B"), A_SAMEVECTOR("b"),
                                        G_ARG, PCL_END};
 PCL_BODY(l_spline2, a) {
-    int d = a[0].n, lua;
+    int d = a[0].n;
     pc_gfun g;
     pc_piece pc;
-    to_g(L, 5, PC_G_CUBIC, &g, &lua);
+    int lua_g = to_g(L, 5, PC_G_CUBIC, &g) == 2 ? 5 : 0;
     pc_spline2_piece(d, a[0].v, a[1].v, a[2].v, a[3].v, &g, &pc);
-    return push_stroke(L, NULL, d, 1, 0, &pc, lua, 5);
+    return push_stroke(L, d, 1, 0, &pc, lua_g);
 }
 
 /* the flat list of count numbers of argument a (NaN for an entry that is none), or NULL for nil */
@@ -292,7 +287,7 @@ static const pcl_arg stroke_args[] = {A_INT("d", 1, PC_CURVE_MAXDIM),
     {.name = "closed", .kind = PCL_BOOLEAN}, A_NUMBERS("nodes", 2, 0), A_FLAT("ein"), A_FLAT("eout"),
     A_FLAT("rin"), A_FLAT("rout"), A_FLAT("n"), A_FLAT("m"), A_FLAT("t0"), G_ARG, PCL_END};
 PCL_BODY(l_stroke_raw, a) {
-    int d = (int)a[0].x, closed = (int)a[1].x, k = a[2].n / d, lua;
+    int d = (int)a[0].x, closed = (int)a[1].x, k = a[2].n / d;
     if (k < 2) return pcl_argfail(L, 3, "must hold at least 2 nodes of %d numbers", d);
     double *buf = lua_newuserdatauv(L, sizeof(double) * (size_t)k * (size_t)(2 * d + 5), 0);
     double *arr[8] = {a[2].list};
@@ -302,7 +297,7 @@ PCL_BODY(l_stroke_raw, a) {
         off += len;
     }
     pc_gfun g;
-    to_g(L, 11, PC_G_HALF, &g, &lua);
+    int lua_g = to_g(L, 11, PC_G_HALF, &g) == 2 ? 11 : 0;
     int np = pc_stroke_npieces(k, closed), bad;
     pc_stroke_spec spec = {.d = d, .nnodes = k, .closed = closed, .nodes = arr[0], .ein = arr[1], .eout = arr[2],
                            .rin = arr[3], .rout = arr[4], .n = arr[5], .m = arr[6], .t0 = arr[7]};
@@ -312,8 +307,8 @@ PCL_BODY(l_stroke_raw, a) {
         lua_pushnil(L);
         return pcl_push_results(L, 0, "i i s", st, bad + 1, pc_strerror(st)) + 1;
     }
-    for (int i = 0; !lua && a[10].present && i < np; i++) pc[i].g = g;
-    return push_stroke(L, "stroke", d, np, closed, pc, lua, 11);
+    for (int i = 0; !lua_g && a[10].present && i < np; i++) pc[i].g = g;
+    return push_stroke(L, d, np, closed, pc, lua_g);
 }
 
 static const pcl_arg fourier_args[] = {A_POINTS("points", 0, 2, 0), PCL_END};
@@ -608,7 +603,6 @@ void pcl_open_curves(lua_State *L) {
     lua_getfield(L, -1, "__index");   /* its methods, shared with the Lua helpers */
     lua_getupvalue(L, -1, 1);
     lua_setfield(L, tk, "curve_methods");
-    lua_settop(L, tk);
 
     static const pcl_fn priv[] = {PCL_FN("stroke", l_stroke_raw, stroke_args, NULL, NULL), PCL_END};
     pcl_register_private(L, tk, priv);

@@ -187,7 +187,6 @@ void pcl_open_curvilinear(lua_State *L) {
     static const luaL_Reg ometa[] = {{"__index", oresme_index}, {"__len", oresme_len},
                                      {"__tostring", oresme_tostring}, {NULL, NULL}};
     pcl_open_type(L, ORESME_MT, ometa, ocall, NULL, NULL);
-    lua_settop(L, module);
     pcl_register(L, module, fns, 0);
     pcl_private(L, module);
     static const pcl_fn priv[] = {PCL_FN("bilinear", l_bilinear, corner_args, NULL, NULL),

@@ -11,17 +11,14 @@
 /* The core object of a curve / surface userdata at idx, or NULL (maps: pcl_tomap, pcl.h). */
 pc_curve *pcl_tocurve(lua_State *L, int idx);
 pc_surface *pcl_tosurface(lua_State *L, int idx);
-/* Push a curve / surface object owning the reference c (kind: the constructor's name, static);
- * pcl_pushcurve returns 1, the count pushed. */
+/* Push a curve object owning the reference c (kind: the constructor's name, static); 1. */
 int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind);
-void pcl_pushsurface(lua_State *L, pc_surface *s, const char *kind);
-/* Push the surface a core constructor made (kind: the constructor's name, static) and return
- * 1, or, when it made none (s NULL), raise its status *st (l_surface.c): pcl_push_made's twin. */
-int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *st, const char *kind);
 /* Push the curve a core constructor made (kind NULL: the running function's name), or, when it
  * made none (c NULL), raise its status *st (a kept callback error first).  1.  st by address:
- * pcl_push_made(L, pc_x(..., &st), &st, k) reads it after pc_x has set it. */
+ * pcl_push_made(L, pc_x(..., &st), &st, k) reads it after pc_x has set it.  Its twin for
+ * surfaces (l_surface.c) raises under the name kind. */
 int pcl_push_made(lua_State *L, pc_curve *c, const int *st, const char *kind);
+int pcl_push_made_surface(lua_State *L, pc_surface *s, const int *st, const char *kind);
 
 /* The knots argument at arg of a B-spline of ncp control points: nil ("open"), "open",
  * "uniform", "periodic", or a non-decreasing list of ncp + degree + 1 numbers (then *knots
