@@ -38,6 +38,16 @@ int pc_place_why(const pc_map *f, int n, const double *h, double *xy, char *why,
     return st;
 }
 
+long pc_place_rows(const pc_map *f, size_t n, int dim, const double *rows, double *xy) {
+    for (size_t i = 0; i < n; i++) {
+        double h[PC_MAXDIM + 1];
+        memcpy(h, rows + i * (size_t)dim, sizeof(double) * (size_t)dim);
+        h[dim] = 1;
+        if (pc_place_xy(f, dim, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK) return (long)i;
+    }
+    return -1;
+}
+
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out) {
     double o[2], ex[2], ey[2];
     pc_world_to_screen(cv, 0, 0, &o[0], &o[1]);

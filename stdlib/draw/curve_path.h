@@ -22,6 +22,9 @@ int pc_place_xy(const pc_map *f, int n, const double *h, double *x, double *y);
  * that follow the element's position ("[2]"), the point's text in place of their one %s:
  * ": %s has weight 2, not 1: ...", " must be a 2-D point, got the 3-D %s (...)". */
 int pc_place_why(const pc_map *f, int n, const double *h, double *xy, char *why, size_t len);
+/* The places (pc_place_xy) of n points given as rows of dim coordinates (weight 1) into xy,
+ * 2 n numbers: -1, or the index of the first point that has none (then xy is partly set). */
+long pc_place_rows(const pc_map *f, size_t n, int dim, const double *rows, double *xy);
 /* The map to screen pixels: f (to the plane; NULL for plain 2-D points) then WINDOW and VIEW. */
 void pc_screen_map(const pc_canvas *cv, const pc_map *f, pc_map *out);
 /* Append to out c over [a, b] flattened through f (NULL: c is 2-D as it is) to within tol,

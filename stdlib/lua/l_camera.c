@@ -112,9 +112,8 @@ PCL_METHOD(c_draw, pc_curve *c, o) {
 /* _tk.draw_curve(c, colour, tol, map, pieces, fname): the C path for the Lua helpers (plot,
  * C:draw), which have checked their options; errors name fname. */
 static int tk_draw_curve(lua_State *L) {
-    pc_curve *c = pcl_tocurve(L, 1);
     const char *fname = luaL_optstring(L, 6, "c:draw");
-    if (!c) return pcl_error(L, "%s: not a curve", fname);
+    pc_curve *c = pcl_meta_self(L, pcl_tocurve(L, 1), lua_pushfstring(L, "%s: not a curve", fname));
     pc_canvas *cv = pcl_canvas(L);
     int color = lua_isnoneornil(L, 2) ? -1 : pcl_color_at(L, 2, cv, 0);
     if (color == -2)

@@ -21,15 +21,9 @@ int pcl_read_bytes(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 }
 
 double *pcl_places(lua_State *L, const pcl_val *list, const char *what) {
-    const pc_map *f = pcl_camera(L);
-    int dim = list->dim;
     double *xy = lua_newuserdatauv(L, sizeof(double) * 2 * (size_t)list->n + 1, 0);
-    for (int i = 0; i < list->n; i++) {
-        double h[PC_MAXDIM + 1];
-        memcpy(h, list->list + (size_t)i * dim, sizeof(double) * (size_t)dim);
-        h[dim] = 1;
-        if (pc_place_xy(f, dim, h, &xy[2 * i], &xy[2 * i + 1]) != PC_OK)
-            pcl_fail(L, "%s [%d] must be " PCL_PLACE_TEXT ", got a %d-D point", what, i + 1, dim);
-    }
+    long bad = pc_place_rows(pcl_camera(L), (size_t)list->n, list->dim, list->list, xy);
+    if (bad >= 0)
+        pcl_fail(L, "%s [%d] must be " PCL_PLACE_TEXT ", got a %d-D point", what, (int)bad + 1, list->dim);
     return xy;
 }

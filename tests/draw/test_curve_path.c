@@ -65,6 +65,27 @@ static void test_image_xy(void **state) {
     assert_string_equal(why, " must be a 2-D point, got the 3-D %s (3-D points need a camera)");
 }
 
+/* rows of points placed: 2-D as they are, 3-D through the camera; the first without a place */
+static void test_place_rows(void **state) {
+    (void)state;
+    pc_map f;
+    double axes[6] = {1, 0, 0, 1, 0, 0}, o[2] = {0, 0}, xy[6] = {0};
+    assert_int_equal(pc_map_frame(&f, 2, 3, o, axes), PC_OK);
+    PC_MAP_AT(&f, 2, 2) = 1;   /* w' = z + w */
+    double flat[4] = {1.5, -2, 3, 4}, space[9] = {2, 4, 1, 6, 8, 3, 2, 4, -1};
+    assert_int_equal(pc_place_rows(&f, 2, 2, flat, xy), -1);
+    assert_float_equal(xy[0], 1.5, 1e-15);
+    assert_float_equal(xy[3], 4, 1e-15);
+    assert_int_equal(pc_place_rows(&f, 2, 3, space, xy), -1);
+    assert_float_equal(xy[0], 1, 1e-15);
+    assert_float_equal(xy[1], 2, 1e-15);
+    assert_float_equal(xy[2], 1.5, 1e-15);
+    assert_float_equal(xy[3], 2, 1e-15);
+    assert_int_equal(pc_place_rows(&f, 3, 3, space, xy), 2);   /* (2, 4, -1): to infinity */
+    assert_int_equal(pc_place_rows(NULL, 1, 3, space, xy), 0);   /* 3-D without a camera */
+    assert_int_equal(pc_place_rows(NULL, 0, 3, NULL, xy), -1);
+}
+
 /* a straight segment from (0, 0) to (8, 0) flattened in 4 parts: one unbroken polyline from
  * end to end, the joins kept once */
 static void test_flatten_parts(void **state) {
@@ -198,6 +219,7 @@ int main(void) {
         cmocka_unit_test(test_screen_map),
         cmocka_unit_test(test_image_xy),
         cmocka_unit_test(test_flatten_parts),
+        cmocka_unit_test(test_place_rows),
         cmocka_unit_test(test_flatten_needs_map),
         cmocka_unit_test(test_flatten_checked),
         cmocka_unit_test(test_stroke),
