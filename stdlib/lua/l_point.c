@@ -211,7 +211,7 @@ static const pcl_arg more_val = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expec
 static const pcl_arg more_pt = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
 
 /* The core's point function op of the read arguments a (an absent one repeats the one before:
- * Sigma(A, B) is Sigma(A, B, B)): its number or value pushed, or its message raised. */
+ * Sigma(A, B) is Sigma(A, B, B)): its results (meet: K, lambda, mu) pushed, or its error. */
 static int finish(lua_State *L, int op, const pcl_val *a) {
     const double *v[4] = {a[0].v, a[1].v, a[2].v, a[3].v};
     for (int k = 1; k < 4; k++)
@@ -227,8 +227,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
         int k = pc_point_fn_text(op, st, n, v, a[2].x, msg, sizeof msg);
         return k ? pcl_argfail(L, k, "%s", msg) : pcl_fail(L, "%s", msg);
     }
-    if (!value) return push_num(L, out[0]);
-    return pcl_push_packed(L, n, op == PC_FN_MEET ? "w n n" : "w", out);   /* meet: K, lambda, mu */
+    return pcl_push_packed(L, n, !value ? "n" : op == PC_FN_MEET ? "w n n" : "w", out);
 }
 
 /* The core's function op of the declared arguments, after the equations' hook (NOHOOK: none)
@@ -452,8 +451,7 @@ static const luaL_Reg point_meta[] = {
 };
 
 void pcl_open_point(lua_State *L) {
-    int module = lua_gettop(L);
-    int methods = module + 1, mt = module + 2;
+    int module = lua_gettop(L), methods = module + 1, mt = module + 2;
     lua_newtable(L);                                   /* methods for p:name(...), filled below */
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
     luaL_newmetatable(L, "point");                     /* __name "point" */
