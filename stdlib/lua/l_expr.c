@@ -145,8 +145,7 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
-    pc_expr_how how = {.g = g};
-    return toeq(L, idx) ? apply(L, PC_EQV_SMOOTH, idx, 1, &how) : 0;
+    return toeq(L, idx) ? apply(L, PC_EQV_SMOOTH, idx, 1, &(pc_expr_how){.g = g}) : 0;
 }
 
 /* the base of math.log(x, base): a positive number other than 1 */

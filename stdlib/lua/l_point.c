@@ -59,8 +59,7 @@ pcl_value *pcl_newvalue(lua_State *L, int n) {
 /* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
 static const char *argctx(lua_State *L, int arg) {
     int shown = pcl_arg_shown(L, arg);
-    if (shown == 0) return lua_pushfstring(L, "%s: self", pcl_fname(L));
-    return lua_pushfstring(L, "%s: argument #%d", pcl_fname(L), shown);
+    return lua_pushfstring(L, shown ? "%s: argument #%d" : "%s: self", pcl_fname(L), shown);
 }
 
 /* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */
