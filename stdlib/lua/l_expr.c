@@ -314,13 +314,12 @@ PCL_METHOD(eq_show, leq *e, a) {
 }
 
 /* M:expanded(): the coordinates expanded in powers of the equation's one parameter as the
- * book prints them (konop_expanded.h) */
+ * book prints them (konop_expanded.h); at most PC_MAXDIM results: LUA_MINSTACK has room */
 PCL_METHOD(eq_expanded, leq *e, a) {
     enum { EACH = 4096 };
     char *texts = lua_newuserdatauv(L, (size_t)PC_MAXDIM * EACH, 0), why[512];
     int axes = pc_k_expanded(pool(L), e->id, texts, EACH, why, sizeof why);
     if (axes < 0) return pcl_fail(L, "%s", why);
-    luaL_checkstack(L, axes, "M:expanded");
     for (int x = 0; x < axes; x++) lua_pushstring(L, texts + (size_t)x * EACH);
     return axes;
 }
@@ -425,8 +424,7 @@ void pcl_open_expr(lua_State *L) {
     *pp = pc_expr_pool_new();
     if (!*pp) luaL_error(L, "equations: out of memory");
     lua_newtable(L);
-    lua_pushcfunction(L, pool_gc);
-    lua_setfield(L, -2, "__gc");
+    luaL_setfuncs(L, (const luaL_Reg[]){{"__gc", pool_gc}, {NULL, NULL}}, 0);
     lua_setmetatable(L, -2);
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POOL_KEY);
 
