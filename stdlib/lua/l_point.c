@@ -173,10 +173,8 @@ int pcl_concat(lua_State *L) {
 
 /* coordinate i (0-based) of p as a location or vector component; key the field (NULL: p[i]) */
 static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key) {
-    double w = p->h[p->n];
-    if (i < p->n && (w == 1.0 || w == 0.0)) return push_num(L, p->h[i]);    /* the common case */
-    int kind = pc_kind_of(w);
-    if (i < p->n && kind != PC_KIND_WEIGHTED) return push_num(L, kind == PC_KIND_POINT ? p->h[i] / w : p->h[i]);
+    double x;
+    if (pc_coord(p->n, p->h, i, &x) == PC_OK) return push_num(L, x);
     char msg[MSG_SIZE];
     pc_coord_text(p->n, p->h, i, key, msg, sizeof msg);
     return pcl_error(L, "%s", msg);
