@@ -92,5 +92,19 @@ size_t pc_drawn_text(const char *ctx, int st, int n, const double *h, char *buf,
 /* Reading coordinate i (0-based) of h as .KEY (key "x", "y", "z"), or as p[i + 1] (key NULL):
  * "... has no coordinate .z" past the dimension, else the location text of a weighted value. */
 size_t pc_coord_text(int n, const double *h, int i, const char *key, char *buf, size_t size);
+/* Coordinate i (0-based) of h as a script reads it (.x, p[1]) into *x: a point's location, a
+ * vector's component; PC_EDIM past the dimension, PC_EWEIGHT for a weighted value (both
+ * worded by pc_coord_text).  Inline: reading a coordinate is a hot path. */
+static inline int pc_coord(int n, const double *h, int i, double *x) {
+    double w = h[n];
+    if (i >= n) return PC_EDIM;
+    if (w == 1.0 || w == 0.0) {   /* the common case */
+        *x = h[i];
+        return PC_OK;
+    }
+    int kind = pc_kind_of(w);
+    *x = kind == PC_KIND_POINT ? h[i] / w : h[i];
+    return kind == PC_KIND_WEIGHTED ? PC_EWEIGHT : PC_OK;
+}
 
 #endif

@@ -145,8 +145,7 @@ int pcl_eq_curve_apply(lua_State *L, const pc_curve *c, int idx) {
 }
 
 int pcl_eq_smooth(lua_State *L, int idx, const pc_gfun *g) {
-    pc_expr_how how = {.g = g};
-    return toeq(L, idx) ? apply(L, PC_EQV_SMOOTH, idx, 1, &how) : 0;
+    return toeq(L, idx) ? apply(L, PC_EQV_SMOOTH, idx, 1, &(pc_expr_how){.g = g}) : 0;
 }
 
 /* the base of math.log(x, base): a positive number other than 1 */
@@ -161,12 +160,11 @@ static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number othe
  * what is neither a number nor an equation). */
 static int math_fn(lua_State *L) {
     if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return lua_tocfunction(L, PCL_UPVALUE(1))(L);
-    pc_expr_how how = {.fn = PC_EX_SIN + (pc_expr_op)lua_tointeger(L, PCL_UPVALUE(2))};   /* in the order of MATHDECL */
+    pc_expr_op fn = PC_EX_SIN + (pc_expr_op)lua_tointeger(L, PCL_UPVALUE(2));   /* in the order of MATHDECL */
     pcl_val base = {0};
-    if (how.fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), node_of(L, 1)))   /* log(x, base) */
+    if (fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), node_of(L, 1)))   /* log(x, base) */
         pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
-    how.base = base.x;
-    return apply(L, PC_EQV_MATH, 1, 1, &how);
+    return apply(L, PC_EQV_MATH, 1, 1, &(pc_expr_how){.fn = fn, .base = base.x});
 }
 
 static const pcl_arg x_arg[] = {A_ANY("x", NULL, "a number or a scalar equation"), PCL_END};
@@ -315,13 +313,12 @@ PCL_METHOD(eq_show, leq *e, a) {
 }
 
 /* M:expanded(): the coordinates expanded in powers of the equation's one parameter as the
- * book prints them (konop_expanded.h) */
+ * book prints them (konop_expanded.h); at most PC_MAXDIM results: LUA_MINSTACK has room */
 PCL_METHOD(eq_expanded, leq *e, a) {
     enum { EACH = 4096 };
     char *texts = lua_newuserdatauv(L, (size_t)PC_MAXDIM * EACH, 0), why[512];
     int axes = pc_k_expanded(pool(L), e->id, texts, EACH, why, sizeof why);
     if (axes < 0) return pcl_fail(L, "%s", why);
-    luaL_checkstack(L, axes, "M:expanded");
     for (int x = 0; x < axes; x++) lua_pushstring(L, texts + (size_t)x * EACH);
     return axes;
 }
@@ -426,8 +423,7 @@ void pcl_open_expr(lua_State *L) {
     *pp = pc_expr_pool_new();
     if (!*pp) luaL_error(L, "equations: out of memory");
     lua_newtable(L);
-    lua_pushcfunction(L, pool_gc);
-    lua_setfield(L, -2, "__gc");
+    luaL_setfuncs(L, (const luaL_Reg[]){{"__gc", pool_gc}, {NULL, NULL}}, 0);
     lua_setmetatable(L, -2);
     lua_rawsetp(L, LUA_REGISTRYINDEX, &POOL_KEY);
 

@@ -59,8 +59,7 @@ pcl_value *pcl_newvalue(lua_State *L, int n) {
 /* "FNAME: argument #N", or "FNAME: self" for the receiver of a method call */
 static const char *argctx(lua_State *L, int arg) {
     int shown = pcl_arg_shown(L, arg);
-    if (shown == 0) return lua_pushfstring(L, "%s: self", pcl_fname(L));
-    return lua_pushfstring(L, "%s: argument #%d", pcl_fname(L), shown);
+    return lua_pushfstring(L, shown ? "%s: argument #%d" : "%s: self", pcl_fname(L), shown);
 }
 
 /* a new value of dimension n: the n coordinates x and the weight w (r: made by the caller) */
@@ -174,10 +173,8 @@ int pcl_concat(lua_State *L) {
 
 /* coordinate i (0-based) of p as a location or vector component; key the field (NULL: p[i]) */
 static inline int push_coord(lua_State *L, pcl_value *p, int i, const char *key) {
-    double w = p->h[p->n];
-    if (i < p->n && (w == 1.0 || w == 0.0)) return push_num(L, p->h[i]);    /* the common case */
-    int kind = pc_kind_of(w);
-    if (i < p->n && kind != PC_KIND_WEIGHTED) return push_num(L, kind == PC_KIND_POINT ? p->h[i] / w : p->h[i]);
+    double x;
+    if (pc_coord(p->n, p->h, i, &x) == PC_OK) return push_num(L, x);
     char msg[MSG_SIZE];
     pc_coord_text(p->n, p->h, i, key, msg, sizeof msg);
     return pcl_error(L, "%s", msg);
@@ -211,7 +208,7 @@ static const pcl_arg more_val = {.kind = PCL_VALUE, .flags = PCL_SAMEDIM, .expec
 static const pcl_arg more_pt = {.kind = PCL_POINT, .flags = PCL_SAMEDIM};
 
 /* The core's point function op of the read arguments a (an absent one repeats the one before:
- * Sigma(A, B) is Sigma(A, B, B)): its number or value pushed, or its message raised. */
+ * Sigma(A, B) is Sigma(A, B, B)): its results (meet: K, lambda, mu) pushed, or its error. */
 static int finish(lua_State *L, int op, const pcl_val *a) {
     const double *v[4] = {a[0].v, a[1].v, a[2].v, a[3].v};
     for (int k = 1; k < 4; k++)
@@ -227,8 +224,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
         int k = pc_point_fn_text(op, st, n, v, a[2].x, msg, sizeof msg);
         return k ? pcl_argfail(L, k, "%s", msg) : pcl_fail(L, "%s", msg);
     }
-    if (!value) return push_num(L, out[0]);
-    return pcl_push_packed(L, n, op == PC_FN_MEET ? "w n n" : "w", out);   /* meet: K, lambda, mu */
+    return pcl_push_packed(L, n, !value ? "n" : op == PC_FN_MEET ? "w n n" : "w", out);
 }
 
 /* The core's function op of the declared arguments, after the equations' hook (NOHOOK: none)
@@ -452,8 +448,7 @@ static const luaL_Reg point_meta[] = {
 };
 
 void pcl_open_point(lua_State *L) {
-    int module = lua_gettop(L);
-    int methods = module + 1, mt = module + 2;
+    int module = lua_gettop(L), methods = module + 1, mt = module + 2;
     lua_newtable(L);                                   /* methods for p:name(...), filled below */
     /* the metatable, also kept in the registry for pcl_tovalue and the other bindings */
     luaL_newmetatable(L, "point");                     /* __name "point" */

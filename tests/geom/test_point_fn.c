@@ -168,6 +168,15 @@ static void test_locations(void **state) {
     xy[0] = 7;
     assert_int_equal(pc_drawn(3, (double[]){1, 2, 3, 1}, PC_OK, xy), PC_OK);   /* projected: xy kept */
     assert_true(xy[0] == 7);
+    double x = 0;
+    assert_int_equal(pc_coord(2, (double[]){1, 2, 1}, 1, &x), PC_OK);
+    assert_true(x == 2);
+    assert_int_equal(pc_coord(2, (double[]){1, 2, 0}, 0, &x), PC_OK);            /* a component */
+    assert_true(x == 1);
+    assert_int_equal(pc_coord(2, (double[]){3, 6, 1 + 1e-12}, 1, &x), PC_OK);    /* a location */
+    assert_float_equal(x, 6 / (1 + 1e-12), 1e-15);
+    assert_int_equal(pc_coord(2, (double[]){2, 4, 2}, 0, &x), PC_EWEIGHT);
+    assert_int_equal(pc_coord(2, (double[]){1, 2, 1}, 2, &x), PC_EDIM);
     pc_coord_text(2, (double[]){1, 2, 1}, 2, "z", msg, sizeof msg);
     assert_string_equal(msg, "P(1, 2) is 2-D: it has no coordinate .z");
     pc_coord_text(2, (double[]){2, 4, 2}, 0, NULL, msg, sizeof msg);
