@@ -119,8 +119,8 @@ extern const pc_why pc_surface_why[];
  * infinity"), a surface not 3-D and a singular point for the normal; another failure leaves why
  * empty. */
 int pc_surface_eval_checked(const char *op, const pc_surface *s, double u, double v, double *out, pc_why_call *why);
-int pc_surface_partials_checked(const char *op, const pc_surface *s, double u, double v, double *out,
-                                pc_why_call *why);
+int pc_surface_partials_checked(const char *op, const pc_surface *s, double u, double v,
+                                double *out, pc_why_call *why);
 int pc_surface_normal_checked(const char *op, const pc_surface *s, double u, double v, double *n, pc_why_call *why);
 
 /* --- internal to stdlib/geom/surface*.c (not an API) ------------------------------------- */

@@ -22,8 +22,8 @@ int pc_surface_eval_checked(const char *op, const pc_surface *s, double u, doubl
     return at_infinity(op, pc_surface_eval(s, u, v, out), u, v, why);
 }
 
-int pc_surface_partials_checked(const char *op, const pc_surface *s, double u, double v, double *out,
-                                pc_why_call *why) {
+int pc_surface_partials_checked(const char *op, const pc_surface *s, double u, double v,
+                                double *out, pc_why_call *why) {
     return at_infinity(op, pc_surface_partials(s, u, v, out), u, v, why);
 }
 

@@ -76,16 +76,15 @@ static const pcl_arg frame_args[] = {A_SAMEPOINT("O"), A_SAMELOC("X", 0), A_SAME
 static int l_frame(lua_State *L) {
     int m = lua_gettop(L), k = 0;
     if (m - 1 > PC_MAXDIM) return pcl_fail(L, "%d axes; the largest dimension is %d", m - 1, PC_MAXDIM);
-    pcl_val a[4] = {0}, extra;
+    pcl_val a[PC_MAXDIM + 1] = {0};   /* O, X, Y, Z declared, the axes after them read one by one */
     PCL_READ(L, a);
     int n = a[0].n;
     double axes[PC_MAXDIM * PC_MAXDIM];
     static const pcl_arg more = A_SAMELOC(NULL, 0);
     for (int j = 2; j <= m && (j > 4 || a[j - 1].present); j++, k++) {   /* the axes up to the first absent */
-        const pcl_val *v = j <= 4 ? &a[j - 1] : &extra;
-        if (j > 4) pcl_readone(L, j, j, 0, &more, n, &extra);
+        if (j > 4) pcl_readone(L, j, j, 0, &more, n, &a[j - 1]);
         for (int i = 0; i < n; i++)   /* a unit point: X - O */
-            axes[k * n + i] = v->v[i] - (v->v[n] == 1 ? a[0].v[i] : 0);
+            axes[k * n + i] = a[j - 1].v[i] - (a[j - 1].v[n] == 1 ? a[0].v[i] : 0);
     }
     return made(L, pc_map_frame(pcl_newmap(L), n, k, a[0].v, axes));
 }

@@ -202,8 +202,8 @@ PCL_BODY(l_func, a) {
 static const pcl_arg uv_args[] = {A_NUM("u"), A_NUM("v"), PCL_END};
 /* s(u, v), s:eval, s:partials and s:normal, one body told apart by the declared name */
 PCL_METHOD(s_call, lsurf *u, a) {
-    static int (*const at[])(const char *, const pc_surface *, double, double, double *, pc_why_call *) = {
-        pc_surface_eval_checked, pc_surface_partials_checked, pc_surface_normal_checked};
+    static __typeof__(pc_surface_eval_checked) *const at[] = {pc_surface_eval_checked,
+        pc_surface_partials_checked, pc_surface_normal_checked};
     static const char *const spec[] = {"p", "p v v", "v"};
     int i = !strcmp(pcl_name(L), "s:normal") ? 2 : !strcmp(pcl_name(L), "s:partials");
     double out[3 * PC_MAXDIM];

@@ -126,8 +126,9 @@ err(function() surface(5, 0, 1, 0, 1) end, "argument #1 (f)", "not a function")
 err(function() surface(function() return P(0, 0, 0) end, 1, 0, 0, 1) end, "u0 < u1", "empty domain")
 err(function() sph(0 / 0, 0) end, "finite", "NaN parameter")
 err(function() sph:iso("w", 0) end, "family", "bad iso family")
-local far = surface.bezier{{P(0, 0), V(1, 0)}, {P(0, 1), P(1, 1)}}   -- its corner (0, 1) a direction
-err(function() far:partials(0, 1) end, "s:partials: the point at (0, 1) is at infinity", "partials at infinity")
+local far = surface.bezier{{P(0, 0), V(1, 0)}, {P(0, 1), P(1, 1)}}   -- (0, 1) a direction
+err(function() far:partials(0, 1) end, "s:partials: the point at (0, 1) is at infinity",
+    "partials at infinity")
 err(function() sph:wireframe() end, "needs a projection", "3-D wireframe without a camera")
 camera(map.isometric())
 err(function() sph:wireframe{hidden = "maybe"} end, "s:wireframe: option 'hidden' must be \"show\", \"hide\" or \"dashed\", got \"maybe\"", "bad hidden mode")
