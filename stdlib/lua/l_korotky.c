@@ -207,8 +207,7 @@ PCL_BODY(l_graphical_slope, a) {
 static const pcl_arg arc_args[] = {A_SAMEPOINT("U"), A_SAMEVECTOR("tU"), A_SAMEPOINT("V"), A_SAMEVECTOR("tV"),
                                    A_SAMEPOINT("T"), PCL_END};
 PCL_BODY(l_conic_arc, a) {
-    int d = a[0].n, st;
-    if (d < 2) return pcl_fail(L, "the points must be 2-D or more");
+    int d = a[0].n, st;   /* 1-D: PC_EDIM */
     double w;
     pc_curve *c = pc_conic_arc(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, &w, &st);
     if (!c) return pcl_fail(L, "%s", pc_conic_arc_why(st));

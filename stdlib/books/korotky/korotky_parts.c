@@ -87,6 +87,7 @@ const char *pc_conic_arc_why(int st) {
            : st == PC_EDOMAIN     ? "T must lie between the tangent lines, on an arc from U to V that stays finite"
            : st == PC_ECOINCIDENT ? "U and V coincide"
            : st == PC_EZERO       ? "a tangent is the zero vector"
+           : st == PC_EDIM        ? "the points must be 2-D or more"
                                   : pc_strerror(st);
 }
 
