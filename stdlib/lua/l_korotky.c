@@ -8,10 +8,7 @@
 #include "ferguson.h"
 #include "elastic.h"
 #include "conic_surface.h"
-#include "graphdiff.h"
 #include "korotky_parts.h"
-#include "conic_props.h"
-#include "quadratic.h"
 #include "pcl_point.h"
 #include "pcl_books.h"
 
