@@ -37,18 +37,16 @@ void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
     }
 }
 
-/* The elements o, or the message for the status st of pc_curve_conic / pc_conic_info_*. */
-static int push_elements(lua_State *L, int st, int dim, const pc_conic_info *o) {
-    if (st == PC_EDIM)
-        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
-    pcl_check(L, st, pc_konop_why);
-    return pcl_push_conic_info(L, o);
-}
-
+/* The elements of the curve c, or the message for the status of pc_curve_conic. */
 static int conic_of_curve(lua_State *L, pc_curve *c) {
     pc_conic_info o;
     pcl_callback_state(L);
-    return push_elements(L, pc_curve_conic(c, &o), c->dim, &o);
+    int st = pc_curve_conic(c, &o);
+    if (st == PC_EDIM)
+        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve",
+                        c->dim);
+    pcl_check(L, st, pc_konop_why);
+    return pcl_push_conic_info(L, &o);
 }
 
 static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)); }
@@ -133,7 +131,8 @@ PCL_BODY(l_elements, a) {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
                            pcl_shown(L, 1));
     }
-    return push_elements(L, st, 2, &o);
+    pcl_check(L, st, pc_konop_why);   /* pc_conic_info_given, _coef or _five */
+    return pcl_push_conic_info(L, &o);
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }
