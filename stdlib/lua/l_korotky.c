@@ -362,10 +362,9 @@ PCL_BODY(l_conic_elements, a) {
 }
 
 PCL_BODY(l_plane_meet, a) {
-    double p[3][5], q[3][5], out[5];
-    pcl_point_rows(a, 3, 5, p[0]);
-    pcl_point_rows(a + 3, 3, 5, q[0]);
-    int st = pc_meet_planes4(p, q, out);
+    double pq[6][5], out[5];   /* P1, P2, P3, then Q1, Q2, Q3 */
+    pcl_point_rows(a, 6, 5, pq[0]);
+    int st = pc_meet_planes4(pq, pq + 3, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pcl_snap_weight(4, out);
     return pcl_push_results(L, 4, "w", out);
