@@ -231,11 +231,10 @@ static int read_corner(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_v
     out->v[2] = 0;
     return v && (v->n == 2 || v->n == 3) && pc_loc(v->n, v->h, out->v) == PC_OK;
 }
-/* The height h, or the apex D (a 3-D point) the dome passes through. */
+/* The height h, or (h 0) the apex D (a 3-D point) the dome passes through. */
 static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     out->x = lua_tonumber(L, idx);
-    out->n = v ? 3 : 0;
     if (lua_type(L, idx) == LUA_TNUMBER) return isfinite(out->x) && out->x > 0;
     return v && v->n == 3 && pc_loc(3, v->h, out->v) == PC_OK;
 }
@@ -243,12 +242,10 @@ static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_v
 static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
                                    A_ANY("h | D", read_height, "a positive number or the 3-D apex D"), PCL_END};
 PCL_BODY(l_dome_tri, a) {
-    double h = a[3].x;
-    pc_why_call why;
-    if (a[3].n == 3) pcl_check(L, pc_dome_tri_height_checked(a[0].v, a[1].v, a[2].v, a[3].v, &h, &why), why.row);
     int st;
-    pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
-    if (!s) pcl_check(L, st, pc_korotky_why);
+    pc_why_call why;
+    pc_surface *s = pc_dome_tri_explained(a[0].v, a[1].v, a[2].v, a[3].x, a[3].v, &st, &why);
+    if (!s) pcl_check(L, st, why.row);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 

@@ -226,6 +226,16 @@ int pc_dome_tri_height_checked(const double *A, const double *B, const double *C
     return pc_why_call_set(w, "korotky.dome_tri", st, 0, NULL, "the triangle (%s)", pc_strerror(st));
 }
 
+pc_surface *pc_dome_tri_explained(const double *A, const double *B, const double *C, double h,
+                                  const double *D, int *status, pc_why_call *w) {
+    if (h == 0 && (*status = pc_dome_tri_height_checked(A, B, C, D, &h, w)) != PC_OK) return NULL;
+    pc_surface *s = pc_surface_dome_tri(A, B, C, h, status);
+    const pc_why *row = s ? NULL : pc_why_find(pc_korotky_why, "korotky.dome_tri", *status);
+    if (row) pc_why_call_set(w, row->op, *status, row->arg, row->key, "%s", row->text);
+    else pc_why_call_set(w, NULL, *status, 0, NULL, "");
+    return s;
+}
+
 const pc_why pc_korotky_why[] = {
     {"korotky.dome_tri", PC_ECOLLINEAR, 0, NULL, "the triangle ABC is flat in plan"},
     {"korotky.conic_elements", PC_EDIM, 1, NULL, "must be a 2-D conic arc (one rational quadratic piece) or the "
