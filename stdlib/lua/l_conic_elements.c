@@ -94,12 +94,10 @@ static int conditions(lua_State *L, pc_conic_info *o) {
 
 static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
 PCL_BODY(l_slope, a) {
-    double sl, v;
-    int st = pc_conic_slope_on(a[0].list, a[1].v[0], a[1].v[1], &sl, &v);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
-    if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
-    return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
+    double sl;
+    pc_why_call why;
+    pcl_check(L, pc_conic_slope_checked(a[0].list, a[1].v, &sl, &why), why.row);
+    return pcl_push_results(L, 0, "n", sl);   /* math.huge: a vertical tangent */
 }
 
 static const pcl_fn plane_fns[] = {

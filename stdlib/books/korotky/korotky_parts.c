@@ -142,13 +142,11 @@ int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_
     double at[2];
     char x[40], y[40];
     int st = c ? pc_conic_info_arc(c, out, at) : pc_conic_info_coef(coef, out);
-    const pc_why *row = pc_why_find(pc_korotky_why, op, st);
     if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
         return pc_why_call_set(w, op, st, 0, NULL, "the line pair U W V (T = W, the weight infinite) is "
                                "a degenerate conic: its lines meet at W = P(%s, %s)",
                                lua_num_text(at[0], x, sizeof x), lua_num_text(at[1], y, sizeof y));
-    if (row) return pc_why_call_set(w, op, st, row->arg, row->key, "%s", row->text);
-    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+    return pc_why_call_row(w, pc_korotky_why, op, st);
 }
 
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {
@@ -230,9 +228,7 @@ pc_surface *pc_dome_tri_explained(const double *A, const double *B, const double
                                   const double *D, int *status, pc_why_call *w) {
     if (h == 0 && (*status = pc_dome_tri_height_checked(A, B, C, D, &h, w)) != PC_OK) return NULL;
     pc_surface *s = pc_surface_dome_tri(A, B, C, h, status);
-    const pc_why *row = s ? NULL : pc_why_find(pc_korotky_why, "korotky.dome_tri", *status);
-    if (row) pc_why_call_set(w, row->op, *status, row->arg, row->key, "%s", row->text);
-    else pc_why_call_set(w, NULL, *status, 0, NULL, "");
+    pc_why_call_row(w, pc_korotky_why, "korotky.dome_tri", *status);
     return s;
 }
 
