@@ -12,3 +12,9 @@ int pc_why_call_set(pc_why_call *w, const char *op, int st, int arg, const char 
     w->row[1] = (pc_why){NULL, 0, 0, NULL, NULL};
     return st;
 }
+
+int pc_why_call_row(pc_why_call *w, const pc_why *table, const char *op, int st) {
+    const pc_why *r = pc_why_find(table, op, st);
+    if (!r) return pc_why_call_set(w, NULL, st, 0, NULL, "");
+    return pc_why_call_set(w, op, st, r->arg, r->key, "%s", r->text);
+}

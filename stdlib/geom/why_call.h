@@ -16,5 +16,8 @@ typedef struct {
  * with st PC_OK or op NULL the table is empty.  The text is a row's text as any table's: a
  * "%s" in it (written "%%s" in fmt) shows the argument's value, and it holds no other '%'. */
 int pc_why_call_set(pc_why_call *w, const char *op, int st, int arg, const char *key, const char *fmt, ...);
+/* Make w the table of the one row of table for op and st (empty when it has none) and return st:
+ * a call explained partly by its values and partly by a fixed table. */
+int pc_why_call_row(pc_why_call *w, const pc_why *table, const char *op, int st);
 
 #endif

@@ -50,8 +50,7 @@ PCL_BODY(l_circle2r, a) {
     pc_circle_eq c[2];
     pc_why_call why;
     pcl_check(L, pc_circle2r_checked(a[0].v, a[1].v, a[2].x, c, &why), why.row);
-    push_circle(L, &c[0]);
-    push_circle(L, &c[1]);
+    for (int i = 0; i < 2; i++) push_circle(L, &c[i]);
     return 2;
 }
 
@@ -278,11 +277,10 @@ static const pcl_arg g1_args[] = {A_CURVE("P", 0), A_INT("m", 1, PC_CURVE_MAXDEG
                                   {.name = "g", .kind = PCL_NUMBER, .flags = PCL_OPT | PCL_POS, .dflt = 1, .shown = "1",
                                    .expect = "a positive number (the tangents keep their direction)"}, PCL_END};
 PCL_BODY(l_g1_next, a) {
-    const pc_curve *c = a[0].obj;
     double q0[PC_MAXDIM], q1[PC_MAXDIM];
     pc_why_call why;
-    pcl_check(L, pc_bezier_g1_next_of(c, (int)a[1].x, a[2].x, q0, q1, &why), why.row);
-    return pcl_push_results(L, c->dim, "p p", q0, q1);
+    pcl_check(L, pc_bezier_g1_next_of(a[0].obj, (int)a[1].x, a[2].x, q0, q1, &why), why.row);
+    return pcl_push_results(L, a[0].n, "p p", q0, q1);   /* n: the curve's dimension */
 }
 
 static const pcl_arg joint_args[] = {A_CURVE("P", 0), A_CURVE("Q", 0), PCL_END};

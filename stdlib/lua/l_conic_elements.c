@@ -37,18 +37,16 @@ void pcl_push_rows(lua_State *L, int nr, int nc, const double *m) {
     }
 }
 
-/* The elements o, or the message for the status st of pc_curve_conic / pc_conic_info_*. */
-static int push_elements(lua_State *L, int st, int dim, const pc_conic_info *o) {
-    if (st == PC_EDIM)
-        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve", dim);
-    pcl_check(L, st, pc_konop_why);
-    return pcl_push_conic_info(L, o);
-}
-
+/* The elements of the curve c, or the message for the status of pc_curve_conic. */
 static int conic_of_curve(lua_State *L, pc_curve *c) {
     pc_conic_info o;
     pcl_callback_state(L);
-    return push_elements(L, pc_curve_conic(c, &o), c->dim, &o);
+    int st = pc_curve_conic(c, &o);
+    if (st == PC_EDIM)
+        return pcl_fail(L, "the curve is %d-D; a conic's elements are those of a plane (2-D) curve",
+                        c->dim);
+    pcl_check(L, st, pc_konop_why);
+    return pcl_push_conic_info(L, &o);
 }
 
 static int c_conic(lua_State *L) { return conic_of_curve(L, pcl_read(L, NULL, 0)); }
@@ -96,12 +94,10 @@ static int conditions(lua_State *L, pc_conic_info *o) {
 
 static const pcl_arg slope_args[] = {A_NUMBERS("coef", 6, 6), A_POINT("X", 2), PCL_END};
 PCL_BODY(l_slope, a) {
-    double sl, v;
-    int st = pc_conic_slope_on(a[0].list, a[1].v[0], a[1].v[1], &sl, &v);
-    if (st == PC_EDOMAIN)
-        return pcl_fail(L, "the point X is not on the curve (the equation gives %s there)", pcl_pushnum(L, v));
-    if (st != PC_EPOLE) pcl_check(L, st, pc_konop_why);
-    return pcl_push_results(L, 0, "n", st == PC_EPOLE ? HUGE_VAL : sl);   /* math.huge: a vertical tangent */
+    double sl;
+    pc_why_call why;
+    pcl_check(L, pc_conic_slope_checked(a[0].list, a[1].v, &sl, &why), why.row);
+    return pcl_push_results(L, 0, "n", sl);   /* math.huge: a vertical tangent */
 }
 
 static const pcl_fn plane_fns[] = {
@@ -133,7 +129,8 @@ PCL_BODY(l_elements, a) {
         return pcl_argfail(L, 1, "must be a 2-D curve, five points, the coefficients {a, b, c, d, e, f} or {points =, tangents =}, got %s",
                            pcl_shown(L, 1));
     }
-    return push_elements(L, st, 2, &o);
+    pcl_check(L, st, pc_konop_why);   /* pc_conic_info_given, _coef or _five */
+    return pcl_push_conic_info(L, &o);
 }
 
 static void *self_curve(lua_State *L, int idx) { return pcl_tocurve(L, idx); }

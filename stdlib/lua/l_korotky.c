@@ -8,10 +8,7 @@
 #include "ferguson.h"
 #include "elastic.h"
 #include "conic_surface.h"
-#include "graphdiff.h"
 #include "korotky_parts.h"
-#include "conic_props.h"
-#include "quadratic.h"
 #include "pcl_point.h"
 #include "pcl_books.h"
 
@@ -207,8 +204,7 @@ PCL_BODY(l_graphical_slope, a) {
 static const pcl_arg arc_args[] = {A_SAMEPOINT("U"), A_SAMEVECTOR("tU"), A_SAMEPOINT("V"), A_SAMEVECTOR("tV"),
                                    A_SAMEPOINT("T"), PCL_END};
 PCL_BODY(l_conic_arc, a) {
-    int d = a[0].n, st;
-    if (d < 2) return pcl_fail(L, "the points must be 2-D or more");
+    int d = a[0].n, st;   /* 1-D: PC_EDIM */
     double w;
     pc_curve *c = pc_conic_arc(d, a[0].v, a[1].v, a[2].v, a[3].v, a[4].v, &w, &st);
     if (!c) return pcl_fail(L, "%s", pc_conic_arc_why(st));
@@ -235,11 +231,10 @@ static int read_corner(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_v
     out->v[2] = 0;
     return v && (v->n == 2 || v->n == 3) && pc_loc(v->n, v->h, out->v) == PC_OK;
 }
-/* The height h, or the apex D (a 3-D point) the dome passes through. */
+/* The height h, or (h 0) the apex D (a 3-D point) the dome passes through. */
 static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pcl_value *v = pcl_tovalue(L, idx);
     out->x = lua_tonumber(L, idx);
-    out->n = v ? 3 : 0;
     if (lua_type(L, idx) == LUA_TNUMBER) return isfinite(out->x) && out->x > 0;
     return v && v->n == 3 && pc_loc(3, v->h, out->v) == PC_OK;
 }
@@ -247,12 +242,10 @@ static int read_height(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_v
 static const pcl_arg tri_args[] = {CORNER("A"), CORNER("B"), CORNER("C"),
                                    A_ANY("h | D", read_height, "a positive number or the 3-D apex D"), PCL_END};
 PCL_BODY(l_dome_tri, a) {
-    double h = a[3].x;
-    pc_why_call why;
-    if (a[3].n == 3) pcl_check(L, pc_dome_tri_height_checked(a[0].v, a[1].v, a[2].v, a[3].v, &h, &why), why.row);
     int st;
-    pc_surface *s = pc_surface_dome_tri(a[0].v, a[1].v, a[2].v, h, &st);
-    if (!s) pcl_check(L, st, pc_korotky_why);
+    pc_why_call why;
+    pc_surface *s = pc_dome_tri_explained(a[0].v, a[1].v, a[2].v, a[3].x, a[3].v, &st, &why);
+    if (!s) pcl_check(L, st, why.row);
     return pcl_push_made_surface(L, s, &st, "korotky.dome_tri");
 }
 
@@ -366,10 +359,9 @@ PCL_BODY(l_conic_elements, a) {
 }
 
 PCL_BODY(l_plane_meet, a) {
-    double p[3][5], q[3][5], out[5];
-    pcl_point_rows(a, 3, 5, p[0]);
-    pcl_point_rows(a + 3, 3, 5, q[0]);
-    int st = pc_meet_planes4(p, q, out);
+    double pq[6][5], out[5];   /* P1, P2, P3, then Q1, Q2, Q3 */
+    pcl_point_rows(a, 6, 5, pq[0]);
+    int st = pc_meet_planes4(pq, pq + 3, out);
     if (st != PC_OK) return pcl_fail(L, "%s", pc_meet_planes4_why(st, 0));
     pc_snap_weight(4, out);
     return pcl_push_results(L, 4, "w", out);

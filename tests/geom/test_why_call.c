@@ -31,7 +31,24 @@ static void empty_tables(void **state) {
     assert_null(pc_why_find(w.row, "buimov.spline", PC_ESINGULAR));
 }
 
+/* a fixed table's row as the one row of a call's table */
+static void row_of_table(void **state) {
+    (void)state;
+    static const pc_why table[] = {{"korotky.dome_tri", PC_EDOMAIN, 4, NULL, "must stand above, got %s"},
+                                   {"korotky.dome_tri", PC_ECOLLINEAR, 0, NULL, "flat"}, {NULL, 0, 0, NULL, NULL}};
+    pc_why_call w;
+    assert_int_equal(pc_why_call_row(&w, table, "korotky.dome_tri", PC_EDOMAIN), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "must stand above, got %s");
+    assert_int_equal(w.row[0].arg, 4);
+    assert_null(w.row[1].op);
+    assert_int_equal(pc_why_call_row(&w, table, "korotky.dome_tri", PC_EDIM), PC_EDIM);
+    assert_null(w.row[0].op);
+    assert_int_equal(pc_why_call_row(&w, table, "korotky.dome_tri", PC_OK), PC_OK);
+    assert_null(w.row[0].op);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(one_row), cmocka_unit_test(empty_tables)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(one_row), cmocka_unit_test(empty_tables),
+                                       cmocka_unit_test(row_of_table)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -181,6 +181,7 @@ err(function() korotky.deviation(c7, sp) end,
     "korotky.deviation: argument #2 (reference) is 3-D, but argument #1 (model) is 2-D (mixed dimensions)")
 err(function() korotky.conic_arc(P(0, 0), V(1, 0), P(0, 0), V(0, 1), P(1, 1)) end,
     "korotky.conic_arc: U and V coincide")
+err(function() korotky.conic_arc(P(0), V(1), P(1), V(1), P(0.5)) end, "korotky.conic_arc: the points must be 2-D or more")
 err(function() korotky.conic_arc(P(0, 0), V(1, sqrt(3)), P(2, 0), V(-1, sqrt(3)), P(-1, 1)) end,
     "korotky.conic_arc: T must lie between the tangent lines")
 err(function() korotky.conic_arc(P(0, 3, 0), V(0, 1, 1), P(4, 3, 0), V(0, 0, 1), P(2, 3, 2)) end,

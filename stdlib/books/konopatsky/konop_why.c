@@ -1,8 +1,11 @@
 /* The explanations of the statuses of Konopatsky's constructions (konop_why.h): arg > 0 the
  * argument the condition concerns, arg < 0 the argument whose value %s shows in a message of
  * its own, key an option key. */
+#include <math.h>
 #include <stddef.h>
 #include "konop_why.h"
+#include "quadratic_on.h"
+#include "names.h"
 
 #define ANY_ARC "a function curve has no power-basis form (only Bezier and B-spline curves: build the equation " \
     "as bezier{...} or with conic.*, oneratio.*, interp.*)"
@@ -114,3 +117,15 @@ const pc_why pc_konop_why[] = {
      "the five points fix no single conic (four of them are collinear, or two coincide)"},
     {"plane.conic_slope", PC_EZERO, 0, NULL, "X is a singular point of the curve (both partial derivatives are 0)"},
     {0}};
+
+int pc_conic_slope_checked(const double coef[6], const double X[2], double *slope, pc_why_call *w) {
+    const char *op = "plane.conic_slope";
+    double v;
+    char at[40];
+    int st = pc_conic_slope_on(coef, X[0], X[1], slope, &v);
+    if (st == PC_EPOLE) *slope = HUGE_VAL, st = PC_OK;   /* a vertical tangent */
+    if (st == PC_EDOMAIN)
+        return pc_why_call_set(w, op, st, 0, NULL, "the point X is not on the curve (the equation gives %s there)",
+                               pc_num_text(v, at, sizeof at));
+    return pc_why_call_row(w, pc_konop_why, op, st);
+}

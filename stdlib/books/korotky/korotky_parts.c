@@ -87,6 +87,7 @@ const char *pc_conic_arc_why(int st) {
            : st == PC_EDOMAIN     ? "T must lie between the tangent lines, on an arc from U to V that stays finite"
            : st == PC_ECOINCIDENT ? "U and V coincide"
            : st == PC_EZERO       ? "a tangent is the zero vector"
+           : st == PC_EDIM        ? "the points must be 2-D or more"
                                   : pc_strerror(st);
 }
 
@@ -141,13 +142,11 @@ int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_
     double at[2];
     char x[40], y[40];
     int st = c ? pc_conic_info_arc(c, out, at) : pc_conic_info_coef(coef, out);
-    const pc_why *row = pc_why_find(pc_korotky_why, op, st);
     if (st == PC_ESAME_LINE)   /* the degenerate section AOD of Fig. 3c */
         return pc_why_call_set(w, op, st, 0, NULL, "the line pair U W V (T = W, the weight infinite) is "
                                "a degenerate conic: its lines meet at W = P(%s, %s)",
                                lua_num_text(at[0], x, sizeof x), lua_num_text(at[1], y, sizeof y));
-    if (row) return pc_why_call_set(w, op, st, row->arg, row->key, "%s", row->text);
-    return pc_why_call_set(w, NULL, st, 0, NULL, "");
+    return pc_why_call_row(w, pc_korotky_why, op, st);
 }
 
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {
@@ -223,6 +222,14 @@ int pc_dome_tri_height_checked(const double *A, const double *B, const double *C
     if (st == PC_EDOMAIN)
         return pc_why_call_set(w, "korotky.dome_tri", st, 4, NULL, "must stand above the inside of the triangle, got %%s");
     return pc_why_call_set(w, "korotky.dome_tri", st, 0, NULL, "the triangle (%s)", pc_strerror(st));
+}
+
+pc_surface *pc_dome_tri_explained(const double *A, const double *B, const double *C, double h,
+                                  const double *D, int *status, pc_why_call *w) {
+    if (h == 0 && (*status = pc_dome_tri_height_checked(A, B, C, D, &h, w)) != PC_OK) return NULL;
+    pc_surface *s = pc_surface_dome_tri(A, B, C, h, status);
+    pc_why_call_row(w, pc_korotky_why, "korotky.dome_tri", *status);
+    return s;
 }
 
 const pc_why pc_korotky_why[] = {

@@ -78,6 +78,11 @@ pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], con
 /* pc_dome_tri_height_through explained in w (korotky.dome_tri: the apex D is argument #4). */
 int pc_dome_tri_height_checked(const double *A, const double *B, const double *C, const double *D, double *h,
                                pc_why_call *w);
+/* korotky.dome_tri: pc_surface_dome_tri of height h > 0, or (h 0) through the apex D
+ * (pc_dome_tri_height_checked), a failure explained in w (also by the rows of pc_korotky_why;
+ * another status with an empty table). */
+pc_surface *pc_dome_tri_explained(const double *A, const double *B, const double *C, double h,
+                                  const double *D, int *status, pc_why_call *w);
 
 /* The explanations of the statuses of the constructions of the korotky table, by the name the
  * API gives each (why.h). */

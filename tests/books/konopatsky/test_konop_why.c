@@ -6,6 +6,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <string.h>
+#include <math.h>
 #include "konop_why.h"
 
 static void test_rows(void **state) {
@@ -42,10 +43,29 @@ static void test_lookups(void **state) {
     assert_non_null(strstr(w->text, "the major one"));
 }
 
+/* plane.conic_slope on the unit circle: -x/y, a vertical tangent, a point off it, the centre */
+static void test_conic_slope(void **state) {
+    (void)state;
+    const double circle[6] = {1, 0, 1, 0, 0, -1}, X[2] = {0.6, 0.8}, E[2] = {1, 0}, F[2] = {2, 0}, O[2] = {0, 0};
+    const double pair[6] = {1, 0, -1, 0, 0, 0};   /* x^2 - y^2 = 0: the origin is singular */
+    double m;
+    pc_why_call w;
+    assert_int_equal(pc_conic_slope_checked(circle, X, &m, &w), PC_OK);
+    assert_true(fabs(m + 0.75) < 1e-15);
+    assert_int_equal(pc_conic_slope_checked(circle, E, &m, &w), PC_OK);
+    assert_true(isinf(m) && m > 0);
+    assert_int_equal(pc_conic_slope_checked(circle, F, &m, &w), PC_EDOMAIN);
+    assert_string_equal(w.row[0].text, "the point X is not on the curve (the equation gives 3 there)");
+    assert_int_equal(pc_conic_slope_checked(circle, O, &m, &w), PC_EDOMAIN);
+    assert_int_equal(pc_conic_slope_checked(pair, O, &m, &w), PC_EZERO);
+    assert_non_null(strstr(w.row[0].text, "singular point"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rows),
         cmocka_unit_test(test_lookups),
+        cmocka_unit_test(test_conic_slope),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -196,7 +196,21 @@ static void test_dome_tri(void **state) {
     assert_string_equal(w.row[0].text, "must stand above the inside of the triangle, got %s");
     assert_int_equal(pc_dome_tri_height_checked(A, B, C, D, &h, &w), PC_OK);
     NEAR(h, 2, 1e-12);
+    /* korotky.dome_tri's: the height, or (h 0) the apex D, each failure explained */
+    s = pc_dome_tri_explained(A, B, C, 0, D, &st, &w);
+    assert_non_null(s);
+    assert_null(w.row[0].op);
+    pc_surface_eval(s, 2.0 / 3, .5, p);
+    NEAR(p[2], 2, 1e-12);   /* the apex over the centroid */
+    pc_surface_release(s);
+    assert_null(pc_dome_tri_explained(A, B, C, 0, Dout, &st, &w));
+    assert_int_equal(w.row[0].arg, 4);
     double F[3] = {2, 0, 0};
+    assert_null(pc_dome_tri_explained(A, B, F, 1, NULL, &st, &w));
+    assert_int_equal(st, PC_ECOLLINEAR);
+    assert_string_equal(w.row[0].text, "the triangle ABC is flat in plan");
+    assert_null(pc_dome_tri_explained(A, B, C, -1, NULL, &st, &w));
+    assert_null(w.row[0].op);   /* no row: the status as it is */
     assert_null(pc_surface_dome_tri(A, B, F, 1, &st));
     assert_int_equal(st, PC_ECOLLINEAR);
     assert_null(pc_surface_dome_tri(A, B, C, -1, &st));

@@ -78,6 +78,7 @@ static void test_why(void **state) {
     assert_string_equal(pc_ferguson_why(PC_EDIM), pc_strerror(PC_EDIM));
     assert_string_equal(pc_conic_arc_why(PC_ECOINCIDENT), "U and V coincide");
     assert_string_equal(pc_conic_arc_why(PC_ESKEW), "the tangents must lie in the plane of U, V and T");
+    assert_string_equal(pc_conic_arc_why(PC_EDIM), "the points must be 2-D or more");
     assert_string_equal(pc_conic_revolve_why(PC_ECOLLINEAR), "the ridge point lies on the axis AB");
     assert_string_equal(pc_conic_revolve_why(PC_EZERO), "a tangent plane's normal is the zero vector");
     assert_non_null(strstr(pc_meet_planes4_why(PC_ESAME_LINE, 0), "more than one common point"));
