@@ -29,8 +29,7 @@ static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
 static lua_CFunction lua_setupvalue_fn;
 static int setupvalue_guard(lua_State *L) {
-    int isint;
-    if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, &isint) == 1 && isint && lua_getupvalue(L, 1, 1)) {
+    if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, NULL) == 1 && lua_getupvalue(L, 1, 1)) {
         int declared = to_box(L, -1) != NULL;
         lua_pop(L, 1);
         if (declared)
@@ -85,10 +84,8 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
 static int colon_call(lua_State *L) { return !current(L)->self && pcl_arg_shown(L, 1) == 0; }
 
 static const char *arg_label(lua_State *L, int shown, const char *name) {
-    if (colon_call(L) && --shown == 0)
-        return name ? lua_pushfstring(L, "self (%s)", name) : "self";
-    return name ? lua_pushfstring(L, "argument #%d (%s)", shown, name)
-                : lua_pushfstring(L, "argument #%d", shown);
+    const char *arg = colon_call(L) && --shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+    return name ? lua_pushfstring(L, "%s (%s)", arg, name) : arg;
 }
 
 /* The name of declared argument #k, or NULL past the declared ones (or none declared). */

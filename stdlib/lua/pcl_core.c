@@ -23,18 +23,12 @@ int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table) {
 static int push_loc(lua_State *L, int dim, char c, const double *x) {
     double y[PC_MAXDIM];
     int inf = c == 'h' && fabs(x[dim]) <= 1e-12;
-    if (c == 'n') {
-        lua_pushnumber(L, *x);
-    } else if (c == 'w') {
-        memcpy(pcl_newvalue(L, dim)->h, x, sizeof(double) * (size_t)(dim + 1));
-    } else if (c == 'h') {
-        for (int k = 0; k < dim; k++) y[k] = inf ? x[k] : x[k] / x[dim];
-        push_loc(L, dim, inf ? 'v' : 'p', y);
-    } else if (c == 'v') {
-        pcl_pushvector(L, dim, x);
-    } else {
-        pcl_pushpoint(L, dim, x);
-    }
+    for (int k = 0; c == 'h' && k < dim; k++) y[k] = inf ? x[k] : x[k] / x[dim];
+    if (c == 'h') return push_loc(L, dim, inf ? 'v' : 'p', y);
+    if (c == 'n') lua_pushnumber(L, *x);
+    else if (c == 'w') memcpy(pcl_newvalue(L, dim)->h, x, sizeof(double) * (size_t)(dim + 1));
+    else if (c == 'v') pcl_pushvector(L, dim, x);
+    else pcl_pushpoint(L, dim, x);
     return 1;
 }
 

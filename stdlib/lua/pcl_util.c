@@ -13,10 +13,8 @@ int pcl_arg_shown(lua_State *L, int arg) {
 /* What the caller actually passed: numbers by value, userdata by type name, else the type;
  * a missing argument reads "nil", as DESIGN.md's example has it. */
 const char *pcl_shown(lua_State *L, int idx) {
-    if (lua_type(L, idx) == LUA_TNUMBER) {
-        if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
-        return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
-    }
+    if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
+    if (lua_type(L, idx) == LUA_TNUMBER) return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
     if (lua_isnone(L, idx)) return "nil";
     if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) {
         if (strcmp(lua_tostring(L, -1), "point") == 0)   /* V(1, 1), not just "point" */
