@@ -145,8 +145,7 @@ pcl_luafn pcl_luafn_at(lua_State *L, int idx) {
 void pcl_luafn_free(void *ud) {
     pcl_luafn *f = ud;
     lua_State *L = pcl_current_state();
-    if (L)
-        for (int i = 0; i < f->n; i++) luaL_unref(L, LUA_REGISTRYINDEX, f->ref[i]);
+    for (int i = 0; L && i < f->n; i++) luaL_unref(L, LUA_REGISTRYINDEX, f->ref[i]);
     free(f);
 }
 
