@@ -29,8 +29,7 @@ static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
 static lua_CFunction lua_setupvalue_fn;
 static int setupvalue_guard(lua_State *L) {
-    int isint;
-    if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, &isint) == 1 && isint && lua_getupvalue(L, 1, 1)) {
+    if (lua_iscfunction(L, 1) && lua_tointegerx(L, 2, NULL) == 1 && lua_getupvalue(L, 1, 1)) {
         int declared = to_box(L, -1) != NULL;
         lua_pop(L, 1);
         if (declared)
@@ -85,10 +84,8 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
 static int colon_call(lua_State *L) { return !current(L)->self && pcl_arg_shown(L, 1) == 0; }
 
 static const char *arg_label(lua_State *L, int shown, const char *name) {
-    if (colon_call(L) && --shown == 0)
-        return name ? lua_pushfstring(L, "self (%s)", name) : "self";
-    return name ? lua_pushfstring(L, "argument #%d (%s)", shown, name)
-                : lua_pushfstring(L, "argument #%d", shown);
+    const char *arg = colon_call(L) && --shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+    return name ? lua_pushfstring(L, "%s (%s)", arg, name) : arg;
 }
 
 /* The name of declared argument #k, or NULL past the declared ones (or none declared). */
@@ -267,11 +264,10 @@ static void check_dim(lua_State *L, const ctx *c, const pcl_arg *a, int idx, int
         c->dim->who.dim = NULL;
     } else if (n != c->dim->n) {
         const ctx *who = &c->dim->who;
-        const char *w = where(L, c);
         const char *other = who->item && who->shown == c->shown && who->key == c->key
                             ? lua_pushfstring(L, "[%d]", who->item) : where(L, who);   /* in one list */
-        pcl_error(L, "%s: %s is %d-D, but %s is %d-D (mixed dimensions)", c->fname, w, n, other,
-                  c->dim->n);
+        pcl_error(L, "%s: %s is %d-D, but %s is %d-D (mixed dimensions)", c->fname, where(L, c), n,
+                  other, c->dim->n);
     }
 }
 
@@ -510,9 +506,8 @@ static const pcl_decl *counted_box(lua_State *L, int n) {
     return b;
 }
 
-/* The declared arguments from stack slot first on into v, argument k + 1 shown as #k + 1; with
- * pairs (pcl_read_pairs) each is read at the slot it falls on and shown by that slot, a pair
- * given as one point fills x and y, and a last option table may trail. */
+/* The declared arguments from stack slot first on into v, argument k + 1 shown as #k + 1;
+ * pairs: pcl_read_pairs (pcl_args.h). */
 static inline __attribute__((always_inline))   /* one copy per reader: pairs a constant */
 void read_args(lua_State *L, const pcl_decl *b, pcl_val *v, int first, int pairs) {
     const pcl_fn *d = b->d;
@@ -738,8 +733,7 @@ void pcl_new_table(lua_State *L, int module, const char *name, const pcl_fn *fns
 
 /* ---- misspelt globals ----------------------------------------------------------------------- */
 
-/* Push "(did you mean 'label'?)" for a message about a nil global near a known name, and
- * return it; else NULL (nothing pushed).  One place for scripts, -e chunks and the REPL. */
+/* One place for scripts, -e chunks and the REPL; NULL: nothing pushed. */
 const char *pcl_global_hint(lua_State *L, const char *msg) {
     const char *p = msg ? strstr(msg, "a nil value (global '") : NULL;
     if (!p) return NULL;

@@ -23,18 +23,12 @@ int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table) {
 static int push_loc(lua_State *L, int dim, char c, const double *x) {
     double y[PC_MAXDIM];
     int inf = c == 'h' && fabs(x[dim]) <= 1e-12;
-    if (c == 'n') {
-        lua_pushnumber(L, *x);
-    } else if (c == 'w') {
-        memcpy(pcl_newvalue(L, dim)->h, x, sizeof(double) * (size_t)(dim + 1));
-    } else if (c == 'h') {
-        for (int k = 0; k < dim; k++) y[k] = inf ? x[k] : x[k] / x[dim];
-        push_loc(L, dim, inf ? 'v' : 'p', y);
-    } else if (c == 'v') {
-        pcl_pushvector(L, dim, x);
-    } else {
-        pcl_pushpoint(L, dim, x);
-    }
+    for (int k = 0; c == 'h' && k < dim; k++) y[k] = inf ? x[k] : x[k] / x[dim];
+    if (c == 'h') return push_loc(L, dim, inf ? 'v' : 'p', y);
+    if (c == 'n') lua_pushnumber(L, *x);
+    else if (c == 'w') memcpy(pcl_newvalue(L, dim)->h, x, sizeof(double) * (size_t)(dim + 1));
+    else if (c == 'v') pcl_pushvector(L, dim, x);
+    else pcl_pushpoint(L, dim, x);
     return 1;
 }
 
@@ -151,8 +145,7 @@ pcl_luafn pcl_luafn_at(lua_State *L, int idx) {
 void pcl_luafn_free(void *ud) {
     pcl_luafn *f = ud;
     lua_State *L = pcl_current_state();
-    if (L)
-        for (int i = 0; i < f->n; i++) luaL_unref(L, LUA_REGISTRYINDEX, f->ref[i]);
+    for (int i = 0; L && i < f->n; i++) luaL_unref(L, LUA_REGISTRYINDEX, f->ref[i]);
     free(f);
 }
 

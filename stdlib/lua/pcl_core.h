@@ -14,14 +14,13 @@ int pcl_check(lua_State *L, int st, const pc_why *table);
 /* pcl_push_made, with the status of a curve not made explained by the table. */
 int pcl_made(lua_State *L, pc_curve *c, const int *st, const pc_why *table);
 
-/* Push results by spec, one token each, space-separated: p a point (const double *, dim
- * coordinates), v a vector, h a homogeneous row (dim + 1: a point, or a vector where its
- * weight is 0), n a number (double), o a number left out when NaN (in a table; -0 as 0), i an
- * integer (int), b a boolean (int), s a string, N a list of numbers (int n, const double *),
- * P a list of points (int n, const double * rows of dim), V a list of vectors (the same), x the
- * dim numbers of a row as as many results (const double *; not in a table).
- * Tokens NAME=x go into one table by name (1 pushed); else each is pushed in turn.  Returns
- * the count pushed. */
+/* Push results by spec, space-separated tokens: p a point (const double *, dim coordinates),
+ * v a vector, h a homogeneous row (dim + 1: a point, or a vector where its weight is 0), n a
+ * number (double), o a number left out when NaN (in a table; -0 as 0), i an integer (int), b a
+ * boolean (int), s a string, N a list of numbers (int n, const double *), P a list of points
+ * (int n, const double * rows of dim), V a list of vectors (the same), x the dim numbers of a
+ * row as as many results (const double *; not in a table).  Tokens NAME=x go into one table
+ * by name (1 pushed); else each is pushed in turn.  Returns the count pushed. */
 int pcl_push_results(lua_State *L, int dim, const char *spec, ...);
 /* The same for values packed in order in v (p, v and x: dim numbers, h: dim + 1, n: one). */
 int pcl_push_packed(lua_State *L, int dim, const char *spec, const double *v);

@@ -10,13 +10,10 @@ int pcl_arg_shown(lua_State *L, int arg) {
     return arg;
 }
 
-/* What the caller actually passed: numbers by value, userdata by type name, else the type;
- * a missing argument reads "nil", as DESIGN.md's example has it. */
+/* What the caller passed; a missing argument reads "nil", as DESIGN.md's example has it. */
 const char *pcl_shown(lua_State *L, int idx) {
-    if (lua_type(L, idx) == LUA_TNUMBER) {
-        if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
-        return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
-    }
+    if (lua_isinteger(L, idx)) return lua_pushfstring(L, "%I", lua_tointeger(L, idx));
+    if (lua_type(L, idx) == LUA_TNUMBER) return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
     if (lua_isnone(L, idx)) return "nil";
     if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) {
         if (strcmp(lua_tostring(L, -1), "point") == 0)   /* V(1, 1), not just "point" */
@@ -34,9 +31,8 @@ int pcl_argerror_full(lua_State *L, const char *fname, int idx, int shown, const
     return pcl_error(L, "%s: %s must be %s, got %s", fname, arg, expected, pcl_shown(L, idx));
 }
 
-/* Push "file:line: " of the code the error belongs to: the innermost Lua function that is not
- * one of pointcalc's own embedded helpers, so an error raised in a toolkit function points at
- * the user's line, not inside the toolkit. */
+/* The innermost Lua function that is not one of pointcalc's embedded helpers: an error raised
+ * in a toolkit function points at the user's line, not inside the toolkit. */
 void pcl_pushwhere(lua_State *L) {
     lua_Debug ar;
     for (int level = 1; lua_getstack(L, level, &ar); level++) {
