@@ -54,7 +54,8 @@ int pc_map_image(const pc_map *f, const double *in, double *out);
 /* map_text.c: the image by the one weight rule (point.h): pc_map_image, its weight snapped
  * to 1 or 0 within PC_WEIGHT_TOL; a raw weight within it of 0 is a direction
  * (map.matrix({{1, 0, 0}, {0, 1, 0}, {0, 1e-17, 1}}) sends V(0, 1) to V(0, 1), not to
- * P(0, 1e17)): PC_IMPROPER for a point sent there, PC_EPOLE for the zero image.  And the map
+ * P(0, 1e17)): PC_IMPROPER for a point sent there, PC_EPOLE for the zero image,
+ * PC_ENONFINITE for an image that overflowed (map.scale(1e308, 2)(P(10, 10))).  And the map
  * as text: "affine map 2-D -> 2-D [1 0 | 0; 0 1 | 0]", and its matrix aligned under a header
  * naming the convention (rowvec: p' = p T); both return the length the text needs. */
 int pc_map_image_rule(const pc_map *f, const double *in, double *out);

@@ -64,7 +64,7 @@ size_t pc_map_show(const pc_map *f, int rowvec, char *buf, size_t size) {
     return len;
 }
 
-int pc_map_image_rule(const pc_map *f, const double *in, double *out) {
+static int image_rule(const pc_map *f, const double *in, double *out) {
     double h[PC_MAXDIM + 1];
     pc_map_apply(f, in, h);
     if (pc_map_is_affine(f) || pc_kind_of(h[f->nout]) != PC_KIND_VECTOR) {
@@ -77,4 +77,11 @@ int pc_map_image_rule(const pc_map *f, const double *in, double *out) {
     memcpy(out, h, sizeof(double) * (size_t)f->nout);
     out[f->nout] = 0;
     return zero ? PC_EPOLE : in[f->nin] == 0 ? PC_OK : PC_IMPROPER;
+}
+
+int pc_map_image_rule(const pc_map *f, const double *in, double *out) {
+    int st = image_rule(f, in, out);
+    for (int i = 0; st != PC_EPOLE && i <= f->nout; i++)
+        if (!isfinite(out[i])) return PC_ENONFINITE;   /* a coordinate overflowed */
+    return st;
 }

@@ -187,7 +187,8 @@ static const pcl_fn operators[] = {OPERATOR("+", "__add"), OPERATOR("-", "__sub"
                                    OPERATOR("/", "__div"), OPERATOR("^", "__pow"), OPERATOR("-", "__unm"), PCL_END};
 static const pcl_fn cfns[] = {
     PCL_FN("complex.polar", c_polar, polar_args, "z", "The complex number r e^(iu)."),
-    PCL_FN("complex.exp", c_fn, z_arg, "z", "The complex exponential."), PCL_FN("complex.abs", c_fn, z_arg, "number", "The modulus |z|."),
+    PCL_FN("complex.exp", c_fn, z_arg, "z", "The complex exponential."),
+    PCL_FN("complex.abs", c_fn, z_arg, "number", "The modulus |z|."),
     PCL_FN("complex.arg", c_fn, z_arg, "number", "The argument of z: atan2(im, re), in radians."),
     PCL_FN("complex.conj", c_fn, z_arg, "z", "The complex conjugate."), PCL_END};
 static const pcl_fn cnew[] = {{.name = "complex", .fn = c_new, .args = new_args, .self = pcl_self_table, .selftype = "table", .key = "__call",

@@ -256,6 +256,7 @@ static int l_apply(lua_State *L) {
     }
     int st = pc_map_image_rule(f, in, out);
     if (st == PC_EPOLE) return pcl_fail(L, "argument #1 is the centre of the projection, which has no image");
+    if (st == PC_ENONFINITE) return pcl_fail(L, "the image of argument #1 is out of range (not finite: a coordinate overflowed)");
     if (!xy) return pcl_push_packed(L, n, "w", out);
     if (st == PC_IMPROPER || out[n] == 0)
         return pcl_fail(L, "the image of argument #1 is at infinity (a direction); f(X) gives it as a vector");
@@ -353,8 +354,10 @@ static int l_index(lua_State *L) {
 #define METHOD(nm, f, a, res, text) {.name = nm, .fn = f, .args = a, .result = res, .help = text, .self = self_map, .selftype = "map"}
 #define METHODSIG(nm, f, forms, text) {.name = nm, .fn = f, .sig = forms, .help = text, .self = self_map, .selftype = "map"}
 static const pcl_fn methods[] = {
-    {.name = "f:compose", .fn = l_compose, .args = g_arg, .sig = "f:compose(g) | f * g -> map", .self = self_map, .selftype = "map", .help = "The map applying g first, then f."}, METHOD("f:inverse", l_inverse, NULL, "map", "The inverse map; a singular or non-square map is an error."),
-    METHODSIG("f:xy", l_apply, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."), METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
+    {.name = "f:compose", .fn = l_compose, .args = g_arg, .sig = "f:compose(g) | f * g -> map", .self = self_map, .selftype = "map", .help = "The map applying g first, then f."},
+    METHOD("f:inverse", l_inverse, NULL, "map", "The inverse map; a singular or non-square map is an error."),
+    METHODSIG("f:xy", l_apply, "f:xy(p) | f:xy(x, y, ...) -> x', y', ...", "The coordinates of the image of a point as numbers (two for a map into the plane)."),
+    METHOD("f:matrix", l_matrix, conv_arg, "rows", "The homogeneous matrix as a table of rows: column vectors (the default) or the textbook's rows, p' = p T."),
     METHOD("f:is_affine", l_is_affine, NULL, "boolean", "Whether the map is affine (its weight row is 0 ... 0 1): it keeps points points and vectors vectors."), METHOD("f:vanishing_points", l_vanishing, NULL, "Vx, Vy, Vz", "The images of the x, y and z directions of a map from 3-D: points, or nil for a direction that stays at infinity."),
     METHOD("f:show", l_show, conv_arg, NULL, "Print the matrix with its convention named and the columns aligned."), PCL_END};
 static const pcl_fn apply[] = {

@@ -62,10 +62,23 @@ static void test_weight_rule(void **state) {
     assert_int_equal(pc_map_image_rule(&f, e4, o), PC_EPOLE);
 }
 
+/* map.scale(1e308, 2)(P(10, 10)): the image overflows, an error, never P(inf, inf) */
+static void test_image_overflow(void **state) {
+    (void)state;
+    pc_map f;
+    double m[9] = {1e308, 0, 0, 0, 2, 0, 0, 0, 1}, p[3] = {10, 10, 1}, out[3];
+    assert_int_equal(pc_map_from_matrix(&f, 2, 2, m, 0), PC_OK);
+    assert_int_equal(pc_map_image_rule(&f, p, out), PC_ENONFINITE);
+    p[0] = 1;   /* 1e308 * 1 is finite */
+    assert_int_equal(pc_map_image_rule(&f, p, out), PC_OK);
+    assert_true(out[0] == 1e308 && out[1] == 20 && out[2] == 1);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_text),
         cmocka_unit_test(test_weight_rule),
+        cmocka_unit_test(test_image_overflow),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
