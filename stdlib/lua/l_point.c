@@ -191,7 +191,7 @@ static int l_index(lua_State *L) {
     if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
     if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);          /* the weight */
     if (i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
-    lua_rawget(L, METHODS);                                 /* a method, or nil: the key on the top */
+    lua_rawget(L, METHODS);                                 /* a method, or nil: key on the top */
     return 1;
 }
 
