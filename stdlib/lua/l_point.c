@@ -233,7 +233,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
 static int run(lua_State *L, int op, int hook) {
     int k = 1, m = lua_gettop(L);
     while (hook != NOHOOK && k <= m && topt(L, k)) k++;
-    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, (pc_expr_verb)hook)) return op == PC_FN_MEET ? 3 : 1;
+    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, hook)) return op == PC_FN_MEET ? 3 : 1;
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     return finish(L, op, a);
