@@ -160,10 +160,10 @@ static const pcl_arg base_arg = A_ANY("base", read_base, "a positive number othe
  * what is neither a number nor an equation). */
 static int math_fn(lua_State *L) {
     if (lua_type(L, 1) == LUA_TNUMBER || !toeq(L, 1)) return lua_tocfunction(L, PCL_UPVALUE(1))(L);
-    pc_expr_op fn = PC_EX_SIN + (pc_expr_op)lua_tointeger(L, PCL_UPVALUE(2));   /* in the order of MATHDECL */
+    pc_expr_op fn = PC_EX_SIN + (pc_expr_op)lua_tointeger(L, PCL_UPVALUE(2));   /* MATHDECL order */
     pcl_val base = {0};
-    if (fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), node_of(L, 1)))   /* log(x, base) */
-        pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);
+    if (fn == PC_EX_LOG && !lua_isnoneornil(L, 2) && !pc_expr_dim(pool(L), node_of(L, 1)))
+        pcl_readone(L, 2, 2, 0, &base_arg, 0, &base);                           /* log(x, base) */
     return apply(L, PC_EQV_MATH, 1, 1, &(pc_expr_how){.fn = fn, .base = base.x});
 }
 

@@ -191,7 +191,7 @@ static int l_index(lua_State *L) {
     if (len == 1 && k[0] >= 'x' && k[0] <= 'z') return push_coord(L, p, k[0] - 'x', k);
     if (len == 1 && k[0] == 'w') return push_num(L, p->h[p->n]);          /* the weight */
     if (i >= 1 && i <= p->n) return push_coord(L, p, (int)i - 1, NULL);
-    lua_rawget(L, METHODS);                                 /* a method, or nil: the key on the top */
+    lua_rawget(L, METHODS);                                 /* a method, or nil: key on the top */
     return 1;
 }
 
@@ -233,7 +233,7 @@ static int finish(lua_State *L, int op, const pcl_val *a) {
 static int run(lua_State *L, int op, int hook) {
     int k = 1, m = lua_gettop(L);
     while (hook != NOHOOK && k <= m && topt(L, k)) k++;
-    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, (pc_expr_verb)hook)) return op == PC_FN_MEET ? 3 : 1;
+    if (hook != NOHOOK && k <= m && pcl_eq_hook(L, hook)) return op == PC_FN_MEET ? 3 : 1;
     pcl_val a[4] = {0};
     PCL_READ(L, a);
     return finish(L, op, a);

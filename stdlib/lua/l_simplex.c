@@ -97,7 +97,7 @@ static int l_index(lua_State *L) {
     pc_simplex *s = pcl_meta_self(L, tosimplex(L, 1), "index: not a simplex");
     lua_Integer i = lua_type(L, 2) == LUA_TNUMBER ? lua_tointeger(L, 2) : 0;   /* 0: not integral */
     if (i >= 1 && i <= s->k + 1) pcl_pushpoint(L, s->n, PC_SIMPLEX_V(s) + (i - 1) * s->n);
-    else lua_rawget(L, lua_upvalueindex(1));                /* a method, or nil: the key on the top */
+    else lua_rawget(L, lua_upvalueindex(1));                /* a method, or nil: key on the top */
     return 1;
 }
 
