@@ -84,7 +84,8 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
 static int colon_call(lua_State *L) { return !current(L)->self && pcl_arg_shown(L, 1) == 0; }
 
 static const char *arg_label(lua_State *L, int shown, const char *name) {
-    const char *arg = colon_call(L) && --shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+    int self = colon_call(L) && --shown == 0;
+    const char *arg = self ? "self" : lua_pushfstring(L, "argument #%d", shown);
     return name ? lua_pushfstring(L, "%s (%s)", arg, name) : arg;
 }
 
@@ -232,18 +233,20 @@ static const char *const EXPECTED[] = {
     [PCL_STRING] = "a string", [PCL_POINT] = "a %spoint", [PCL_VECTOR] = "a %svector",
     [PCL_LOC] = "a %spoint or vector", [PCL_VALUE] = "a %spoint, vector or weighted point",
     [PCL_POINTS] = "a list of %spoints", [PCL_NUMBERS] = "a list of numbers",
-    [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors", [PCL_CURVE] = "a %scurve",
-    [PCL_SURFACE] = "a %ssurface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
-    [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table", [PCL_ANY] = "a value"};
+    [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors",
+    [PCL_CURVE] = "a %scurve", [PCL_SURFACE] = "a %ssurface", [PCL_MAP] = "a map",
+    [PCL_FUNCTION] = "a function", [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table",
+    [PCL_ANY] = "a value"};
 
 /* The expected text of a kind (what the messages say after "must be"). */
 static const char *expected(lua_State *L, const pcl_arg *a) {
     const char *names[64];
+    int number = a->kind == PCL_NUMBER;
     if (a->expect) return a->expect;
-    if ((a->kind == PCL_NUMBER || a->kind == PCL_INTEGER) && (a->flags & PCL_RANGE))
-        return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
+    if ((number || a->kind == PCL_INTEGER) && (a->flags & PCL_RANGE))
+        return lua_pushfstring(L, "%s from %s to %s", number ? "a number" : "an integer",
                                pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
-    if (a->kind == PCL_NUMBER && (a->flags & (PCL_INF | PCL_POS)))
+    if (number && (a->flags & (PCL_INF | PCL_POS)))
         return a->flags & PCL_INF ? "a number other than NaN" : "a positive number";
     if (a->kind == PCL_ENUM) return push_list(L, a->choices, "\"%s\"", ", ", " or ");
     if (a->kind == PCL_OPTIONS) {                       /* a table {k1 =, k2 =} */
@@ -251,7 +254,8 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
         return lua_pushfstring(L, "a table {%s}", push_list(L, names, "%s =", ", ", ", "));
     }
     if (a->kind <= PCL_NONE || a->kind > PCL_ANY) return "a value";
-    return lua_pushfstring(L, EXPECTED[a->kind], a->dim > 0 ? lua_pushfstring(L, "%d-D ", a->dim) : "");
+    const char *dim = a->dim > 0 ? lua_pushfstring(L, "%d-D ", a->dim) : "";
+    return lua_pushfstring(L, EXPECTED[a->kind], dim);
 }
 
 /* The dimension rule: a fixed dimension, or (PCL_SAMEDIM) the first located value's. */
@@ -280,15 +284,16 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     out->n = n;
     memcpy(out->v, p->h, sizeof(double) * (size_t)(n + 1));
     if (a->kind == PCL_VALUE) return;
-    static const char *const HINT[] = {   /* a point where a vector is wanted; the reverse */
+    static const char *const HINT[PC_KIND_WEIGHTED + 1] = {   /* given a point; given a vector */
         [PC_KIND_POINT] = "a vector has weight 0: a difference of points is a vector, e.g. B - A",
-        [PC_KIND_VECTOR] = "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v"};
+        [PC_KIND_VECTOR] = "a point has weight 1: to place a vector, add it to a point, "
+                           "e.g. P(0, 0) + v"};
     int k = pc_snap_weight(n, out->v);
     int want = a->kind == PCL_POINT ? PC_KIND_POINT : a->kind == PCL_VECTOR ? PC_KIND_VECTOR : k;
     if (k == PC_KIND_WEIGHTED)
         mismatch_hint(L, c, idx, expected(L, a), lua_pushfstring(L, "its weight is %s, and a point "
-            "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
-            pcl_pushnum(L, p->h[n])));
+        "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
+        pcl_pushnum(L, p->h[n])));
     if (k != want) mismatch_hint(L, c, idx, expected(L, a), HINT[k]);
     for (int i = 0; i < n; i++)
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");

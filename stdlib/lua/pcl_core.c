@@ -64,17 +64,15 @@ static int push_one(lua_State *L, int dim, char c, va_list *ap, const double *v)
         double x = va_arg(*ap, double);
         if (c == 'o' && isnan(x)) return 0;
         lua_pushnumber(L, c == 'o' ? x + 0.0 : x);   /* o: no -0 */
-    } else if (c == 'i') {
-        lua_pushinteger(L, va_arg(*ap, int));
-    } else if (c == 'b') {
-        lua_pushboolean(L, va_arg(*ap, int));
-    } else if (c == 's') {
-        lua_pushstring(L, va_arg(*ap, const char *));
-    } else if (c == 'N' || c == 'P' || c == 'V') {
-        int n = va_arg(*ap, int);
+        return 1;
+    }
+    if (c == 'i') lua_pushinteger(L, va_arg(*ap, int));
+    else if (c == 'b') lua_pushboolean(L, va_arg(*ap, int));
+    else if (c == 's') lua_pushstring(L, va_arg(*ap, const char *));
+    else if (c != 'N' && c != 'P' && c != 'V') push_loc(L, dim, c, va_arg(*ap, const double *));
+    else {
+        int n = va_arg(*ap, int);   /* the count first: one va_arg at a time */
         push_list(L, n, dim, c == 'N' ? 'n' : c == 'P' ? 'p' : 'v', va_arg(*ap, const double *));
-    } else {
-        push_loc(L, dim, c, va_arg(*ap, const double *));
     }
     return 1;
 }
