@@ -18,12 +18,12 @@ static const pcl_decl *to_box(lua_State *L, int idx) {
 }
 
 /* The declaration of the running C function (the guard below keeps debug.setupvalue off it). */
-static const pcl_decl *current_box(lua_State *L) {
+const pcl_decl *pcl_running(lua_State *L) {
     const pcl_decl *b = to_box(L, lua_upvalueindex(1));
     if (!b) luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
     return b;
 }
-static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
+static const pcl_fn *current(lua_State *L) { return pcl_running(L)->d; }
 
 /* debug.setupvalue(f, 1, x) of a declared function is refused, so that no call asks Lua which
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
@@ -91,7 +91,7 @@ static const char *arg_label(lua_State *L, int shown, const char *name) {
 
 /* The name of declared argument #k, or NULL past the declared ones (or none declared). */
 static const char *arg_name(lua_State *L, int k) {
-    const pcl_decl *b = current_box(L);
+    const pcl_decl *b = pcl_running(L);
     return k >= 1 && k <= b->nargs ? b->d->args[k - 1].name : NULL;
 }
 
@@ -506,7 +506,7 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
 
 /* The running declaration, whose values must fit the caller's n. */
 static const pcl_decl *counted_box(lua_State *L, int n) {
-    const pcl_decl *b = current_box(L);
+    const pcl_decl *b = pcl_running(L);
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
     return b;
 }
@@ -581,11 +581,9 @@ static void *read_self(lua_State *L, const pcl_decl *b, pcl_val *v) {
 void *pcl_read(lua_State *L, pcl_val *v, int n) { return read_self(L, counted_box(L, n), v); }
 
 int pcl_nvalues(lua_State *L) {
-    int n = current_box(L)->nvalues;
+    int n = pcl_running(L)->nvalues;
     return n > 0 ? n : 1;
 }
-
-const pcl_decl *pcl_running(lua_State *L) { return current_box(L); }
 
 void *pcl_read_decl(lua_State *L, const pcl_decl *b, pcl_val *v) {
     memset(v, 0, sizeof *v * (size_t)b->nvalues);

@@ -16,9 +16,8 @@ const char *pcl_shown(lua_State *L, int idx) {
     if (lua_type(L, idx) == LUA_TNUMBER) return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
     if (lua_isnone(L, idx)) return "nil";
     if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) {
-        if (strcmp(lua_tostring(L, -1), "point") == 0)   /* V(1, 1), not just "point" */
-            return luaL_tolstring(L, idx, NULL);
-        return lua_tostring(L, -1);
+        const char *type = lua_tostring(L, -1);   /* a point as V(1, 1), not just "point" */
+        return strcmp(type, "point") ? type : luaL_tolstring(L, idx, NULL);
     }
     return luaL_typename(L, idx);
 }
