@@ -292,8 +292,8 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     int want = a->kind == PCL_POINT ? PC_KIND_POINT : a->kind == PCL_VECTOR ? PC_KIND_VECTOR : k;
     if (k == PC_KIND_WEIGHTED)
         mismatch_hint(L, c, idx, expected(L, a), lua_pushfstring(L, "its weight is %s, and a point "
-        "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
-        pcl_pushnum(L, p->h[n])));
+                      "equation's coefficients sum to 1 for a point, 0 for a vector (the "
+                      "membership condition)", pcl_pushnum(L, p->h[n])));
     if (k != want) mismatch_hint(L, c, idx, expected(L, a), HINT[k]);
     for (int i = 0; i < n; i++)
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
