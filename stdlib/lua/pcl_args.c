@@ -25,6 +25,8 @@ const pcl_decl *pcl_running(lua_State *L) {
 }
 static const pcl_fn *current(lua_State *L) { return pcl_running(L)->d; }
 
+int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
+
 /* debug.setupvalue(f, 1, x) of a declared function is refused, so that no call asks Lua which
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
 static lua_CFunction lua_setupvalue_fn;
@@ -59,18 +61,6 @@ const char *pcl_name(lua_State *L) {
         ar.namewhat[0] && strcmp(ar.namewhat, "method") != 0)
         return ar.name;
     return d->name;
-}
-
-/* A declared function's name is its declaration's (pcl_name: whatever the script called it
- * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
- * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
-const char *pcl_fname(lua_State *L) {
-    lua_Debug ar;
-    if (to_box(L, lua_upvalueindex(1))) return pcl_name(L);
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
-    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
-        return ar.name;
-    return "pointcalc";
 }
 
 int pcl_fail(lua_State *L, const char *fmt, ...) {

@@ -2,6 +2,18 @@
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
 #include "pcl_args.h"
 
+/* A declared function's name is its declaration's (pcl_name: whatever the script called it
+ * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
+ * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
+const char *pcl_fname(lua_State *L) {
+    lua_Debug ar;
+    if (pcl_declared(L)) return pcl_name(L);
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
+        return ar.name;
+    return "pointcalc";
+}
+
 int pcl_arg_shown(lua_State *L, int arg) {
     lua_Debug ar;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.namewhat &&
