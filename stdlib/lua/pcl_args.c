@@ -18,12 +18,14 @@ static const pcl_decl *to_box(lua_State *L, int idx) {
 }
 
 /* The declaration of the running C function (the guard below keeps debug.setupvalue off it). */
-static const pcl_decl *current_box(lua_State *L) {
+const pcl_decl *pcl_running(lua_State *L) {
     const pcl_decl *b = to_box(L, lua_upvalueindex(1));
     if (!b) luaL_error(L, "pointcalc: a declared function without its declaration (forged upvalue)");
     return b;
 }
-static const pcl_fn *current(lua_State *L) { return current_box(L)->d; }
+static const pcl_fn *current(lua_State *L) { return pcl_running(L)->d; }
+
+int pcl_declared(lua_State *L) { return to_box(L, lua_upvalueindex(1)) != NULL; }
 
 /* debug.setupvalue(f, 1, x) of a declared function is refused, so that no call asks Lua which
  * function runs; Lua's own function is kept where no script reaches it (not an upvalue). */
@@ -61,18 +63,6 @@ const char *pcl_name(lua_State *L) {
     return d->name;
 }
 
-/* A declared function's name is its declaration's (pcl_name: whatever the script called it
- * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
- * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
-const char *pcl_fname(lua_State *L) {
-    lua_Debug ar;
-    if (to_box(L, lua_upvalueindex(1))) return pcl_name(L);
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
-    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
-        return ar.name;
-    return "pointcalc";
-}
-
 int pcl_fail(lua_State *L, const char *fmt, ...) {
     va_list ap;
     va_start(ap, fmt);
@@ -84,13 +74,14 @@ int pcl_fail(lua_State *L, const char *fmt, ...) {
 static int colon_call(lua_State *L) { return !current(L)->self && pcl_arg_shown(L, 1) == 0; }
 
 static const char *arg_label(lua_State *L, int shown, const char *name) {
-    const char *arg = colon_call(L) && --shown == 0 ? "self" : lua_pushfstring(L, "argument #%d", shown);
+    int self = colon_call(L) && --shown == 0;
+    const char *arg = self ? "self" : lua_pushfstring(L, "argument #%d", shown);
     return name ? lua_pushfstring(L, "%s (%s)", arg, name) : arg;
 }
 
 /* The name of declared argument #k, or NULL past the declared ones (or none declared). */
 static const char *arg_name(lua_State *L, int k) {
-    const pcl_decl *b = current_box(L);
+    const pcl_decl *b = pcl_running(L);
     return k >= 1 && k <= b->nargs ? b->d->args[k - 1].name : NULL;
 }
 
@@ -232,18 +223,20 @@ static const char *const EXPECTED[] = {
     [PCL_STRING] = "a string", [PCL_POINT] = "a %spoint", [PCL_VECTOR] = "a %svector",
     [PCL_LOC] = "a %spoint or vector", [PCL_VALUE] = "a %spoint, vector or weighted point",
     [PCL_POINTS] = "a list of %spoints", [PCL_NUMBERS] = "a list of numbers",
-    [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors", [PCL_CURVE] = "a %scurve",
-    [PCL_SURFACE] = "a %ssurface", [PCL_MAP] = "a map", [PCL_FUNCTION] = "a function",
-    [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table", [PCL_ANY] = "a value"};
+    [PCL_VALUES] = "a list of points", [PCL_VECTORS] = "a list of vectors",
+    [PCL_CURVE] = "a %scurve", [PCL_SURFACE] = "a %ssurface", [PCL_MAP] = "a map",
+    [PCL_FUNCTION] = "a function", [PCL_CALLABLE] = "a function", [PCL_TABLE] = "a table",
+    [PCL_ANY] = "a value"};
 
 /* The expected text of a kind (what the messages say after "must be"). */
 static const char *expected(lua_State *L, const pcl_arg *a) {
     const char *names[64];
+    int number = a->kind == PCL_NUMBER;
     if (a->expect) return a->expect;
-    if ((a->kind == PCL_NUMBER || a->kind == PCL_INTEGER) && (a->flags & PCL_RANGE))
-        return lua_pushfstring(L, "%s from %s to %s", a->kind == PCL_NUMBER ? "a number" : "an integer",
+    if ((number || a->kind == PCL_INTEGER) && (a->flags & PCL_RANGE))
+        return lua_pushfstring(L, "%s from %s to %s", number ? "a number" : "an integer",
                                pcl_pushnum(L, a->lo), pcl_pushnum(L, a->hi));
-    if (a->kind == PCL_NUMBER && (a->flags & (PCL_INF | PCL_POS)))
+    if (number && (a->flags & (PCL_INF | PCL_POS)))
         return a->flags & PCL_INF ? "a number other than NaN" : "a positive number";
     if (a->kind == PCL_ENUM) return push_list(L, a->choices, "\"%s\"", ", ", " or ");
     if (a->kind == PCL_OPTIONS) {                       /* a table {k1 =, k2 =} */
@@ -251,7 +244,8 @@ static const char *expected(lua_State *L, const pcl_arg *a) {
         return lua_pushfstring(L, "a table {%s}", push_list(L, names, "%s =", ", ", ", "));
     }
     if (a->kind <= PCL_NONE || a->kind > PCL_ANY) return "a value";
-    return lua_pushfstring(L, EXPECTED[a->kind], a->dim > 0 ? lua_pushfstring(L, "%d-D ", a->dim) : "");
+    const char *dim = a->dim > 0 ? lua_pushfstring(L, "%d-D ", a->dim) : "";
+    return lua_pushfstring(L, EXPECTED[a->kind], dim);
 }
 
 /* The dimension rule: a fixed dimension, or (PCL_SAMEDIM) the first located value's. */
@@ -280,15 +274,16 @@ static void read_loc(lua_State *L, const ctx *c, const pcl_arg *a, int idx, pcl_
     out->n = n;
     memcpy(out->v, p->h, sizeof(double) * (size_t)(n + 1));
     if (a->kind == PCL_VALUE) return;
-    static const char *const HINT[] = {   /* a point where a vector is wanted; the reverse */
+    static const char *const HINT[PC_KIND_WEIGHTED + 1] = {   /* given a point; given a vector */
         [PC_KIND_POINT] = "a vector has weight 0: a difference of points is a vector, e.g. B - A",
-        [PC_KIND_VECTOR] = "a point has weight 1: to place a vector, add it to a point, e.g. P(0, 0) + v"};
+        [PC_KIND_VECTOR] = "a point has weight 1: to place a vector, add it to a point, "
+                           "e.g. P(0, 0) + v"};
     int k = pc_snap_weight(n, out->v);
     int want = a->kind == PCL_POINT ? PC_KIND_POINT : a->kind == PCL_VECTOR ? PC_KIND_VECTOR : k;
     if (k == PC_KIND_WEIGHTED)
         mismatch_hint(L, c, idx, expected(L, a), lua_pushfstring(L, "its weight is %s, and a point "
-            "equation's coefficients sum to 1 for a point, 0 for a vector (the membership condition)",
-            pcl_pushnum(L, p->h[n])));
+                      "equation's coefficients sum to 1 for a point, 0 for a vector (the "
+                      "membership condition)", pcl_pushnum(L, p->h[n])));
     if (k != want) mismatch_hint(L, c, idx, expected(L, a), HINT[k]);
     for (int i = 0; i < n; i++)
         if (!isfinite(out->v[i])) mismatch(L, c, idx, "a value with finite coordinates");
@@ -501,7 +496,7 @@ static void read_options(lua_State *L, ctx *c, const pcl_arg *a, int idx, pcl_va
 
 /* The running declaration, whose values must fit the caller's n. */
 static const pcl_decl *counted_box(lua_State *L, int n) {
-    const pcl_decl *b = current_box(L);
+    const pcl_decl *b = pcl_running(L);
     if (n < b->nvalues) luaL_error(L, "%s: the binding reads %d values into %d", b->d->name, b->nvalues, n);
     return b;
 }
@@ -576,11 +571,9 @@ static void *read_self(lua_State *L, const pcl_decl *b, pcl_val *v) {
 void *pcl_read(lua_State *L, pcl_val *v, int n) { return read_self(L, counted_box(L, n), v); }
 
 int pcl_nvalues(lua_State *L) {
-    int n = current_box(L)->nvalues;
+    int n = pcl_running(L)->nvalues;
     return n > 0 ? n : 1;
 }
-
-const pcl_decl *pcl_running(lua_State *L) { return current_box(L); }
 
 void *pcl_read_decl(lua_State *L, const pcl_decl *b, pcl_val *v) {
     memset(v, 0, sizeof *v * (size_t)b->nvalues);

@@ -163,6 +163,8 @@ void pcl_read_options(lua_State *L, int idx, int shown, const pcl_arg *a, pcl_va
 
 /* The running function's declared name (a __call's: the variable called, when Lua knows it). */
 const char *pcl_name(lua_State *L);
+/* 1 if the running C function is a declared one (pcl_name may be asked). */
+int pcl_declared(lua_State *L);
 /* "NAME: MESSAGE" at the user's line. */
 int pcl_fail(lua_State *L, const char *fmt, ...);
 /* "NAME: argument #K (WHAT) EXPECTED_TEXT": a body's own condition on a declared argument, e.g.

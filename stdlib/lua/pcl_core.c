@@ -50,48 +50,29 @@ void pcl_push_values(lua_State *L, int n, int dim, const double *rows, int homog
     push_list(L, n, dim, homogeneous ? 'w' : 'p', rows);
 }
 
-/* the dim numbers of x as as many results */
-static int push_coords(lua_State *L, int dim, const double *x) {
-    for (int k = 0; k < dim; k++) lua_pushnumber(L, x[k]);
-    return dim;
-}
-
 /* push the values of kind c from ap (NULL: from v): their count, 0 when left out (o of NaN) */
 static int push_one(lua_State *L, int dim, char c, va_list *ap, const double *v) {
-    if (c == 'x') return push_coords(L, dim, ap ? va_arg(*ap, const double *) : v);
+    if (c == 'x') {                       /* the dim numbers of a row as as many results */
+        const double *x = ap ? va_arg(*ap, const double *) : v;
+        for (int k = 0; k < dim; k++) lua_pushnumber(L, x[k]);
+        return dim;
+    }
     if (!ap) return push_loc(L, dim, c, v);
     if (c == 'n' || c == 'o') {
         double x = va_arg(*ap, double);
         if (c == 'o' && isnan(x)) return 0;
         lua_pushnumber(L, c == 'o' ? x + 0.0 : x);   /* o: no -0 */
-    } else if (c == 'i') {
-        lua_pushinteger(L, va_arg(*ap, int));
-    } else if (c == 'b') {
-        lua_pushboolean(L, va_arg(*ap, int));
-    } else if (c == 's') {
-        lua_pushstring(L, va_arg(*ap, const char *));
-    } else if (c == 'N' || c == 'P' || c == 'V') {
-        int n = va_arg(*ap, int);
+        return 1;
+    }
+    if (c == 'i') lua_pushinteger(L, va_arg(*ap, int));
+    else if (c == 'b') lua_pushboolean(L, va_arg(*ap, int));
+    else if (c == 's') lua_pushstring(L, va_arg(*ap, const char *));
+    else if (c != 'N' && c != 'P' && c != 'V') push_loc(L, dim, c, va_arg(*ap, const double *));
+    else {
+        int n = va_arg(*ap, int);   /* the count first: one va_arg at a time */
         push_list(L, n, dim, c == 'N' ? 'n' : c == 'P' ? 'p' : 'v', va_arg(*ap, const double *));
-    } else {
-        push_loc(L, dim, c, va_arg(*ap, const double *));
     }
     return 1;
-}
-
-/* the value on the stack top into the table below it, by the name of the token tok (NAME=x) */
-static void store(lua_State *L, const char *tok) {
-    lua_pushlstring(L, tok, strcspn(tok, "="));
-    lua_insert(L, -2);
-    lua_rawset(L, -3);
-}
-
-/* the kind letter of the token at s, and the start of the next one */
-static char token(const char **s) {
-    size_t len = strcspn(*s, " ");
-    char c = (*s)[len - 1];
-    *s += len + ((*s)[len] == ' ');
-    return c;
 }
 
 /* Both bodies: the values from ap, or (ap NULL) packed in order in v. */
@@ -99,10 +80,16 @@ static int push_spec(lua_State *L, int dim, const char *spec, va_list *ap, const
     int named = strchr(spec, '=') != NULL, count = 0;
     if (named) lua_newtable(L);
     for (const char *s = spec, *tok = s; *s; tok = s) {
-        char c = token(&s);
+        size_t len = strcspn(s, " ");
+        char c = s[len - 1];                    /* the kind letter ends the token */
+        s += len + (s[len] == ' ');
         int pushed = push_one(L, dim, c, ap, v);
         if (!ap) v += width(dim, c);
-        if (named && pushed) store(L, tok);
+        if (named && pushed) {                  /* NAME=x: into the table by NAME */
+            lua_pushlstring(L, tok, strcspn(tok, "="));
+            lua_insert(L, -2);
+            lua_rawset(L, -3);
+        }
         count += pushed;
     }
     return named ? 1 : count;

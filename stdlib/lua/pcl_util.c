@@ -2,6 +2,18 @@
  * "NAME: argument #N (what) must be EXPECTED, got VALUE". */
 #include "pcl_args.h"
 
+/* A declared function's name is its declaration's (pcl_name: whatever the script called it
+ * through, pcall(label, 5) as well); else the name Lua knows, or the caller's when called from
+ * C (through the safe mode's wrapper of save, the name the script used is the caller's). */
+const char *pcl_fname(lua_State *L) {
+    lua_Debug ar;
+    if (pcl_declared(L)) return pcl_name(L);
+    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) return ar.name;
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "nS", &ar) && ar.name && ar.what[0] == 'C')
+        return ar.name;
+    return "pointcalc";
+}
+
 int pcl_arg_shown(lua_State *L, int arg) {
     lua_Debug ar;
     if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.namewhat &&
@@ -16,9 +28,8 @@ const char *pcl_shown(lua_State *L, int idx) {
     if (lua_type(L, idx) == LUA_TNUMBER) return lua_pushfstring(L, "%f", lua_tonumber(L, idx));
     if (lua_isnone(L, idx)) return "nil";
     if (luaL_getmetafield(L, idx, "__name") == LUA_TSTRING) {
-        if (strcmp(lua_tostring(L, -1), "point") == 0)   /* V(1, 1), not just "point" */
-            return luaL_tolstring(L, idx, NULL);
-        return lua_tostring(L, -1);
+        const char *type = lua_tostring(L, -1);   /* a point as V(1, 1), not just "point" */
+        return strcmp(type, "point") ? type : luaL_tolstring(L, idx, NULL);
     }
     return luaL_typename(L, idx);
 }
