@@ -365,10 +365,8 @@ PCL_METHOD(c_deriv, lcurve *u, a) {
     const pcl_val *s = a[2].present ? &a[2] : &a[1];   /* the side, in its place or in the order's */
     int order = a[1].present ? (int)a[1].x : 1, side = s->s ? (s->n ? 1 : -1) : 0;
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
-    int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
-    if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
-        return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
-    pcl_check(L, st, pc_curve_why);
+    pc_why_call w;
+    pcl_check(L, pc_curve_derivs_checked(pcl_name(L), u->c, a[0].x, order, side, out, &w), w.row);
     return pcl_push_results(L, u->c->dim, "v", out + (size_t)order * u->c->dim);
 }
 
