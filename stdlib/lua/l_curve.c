@@ -76,14 +76,6 @@ static int luag_eval(void *ud, double t, double *g) {
     return pcl_callback_failed(L);
 }
 
-/* A Lua function at idx for the core (fname: the name its messages start with). */
-static pcl_luafn *keep_fn(lua_State *L, int idx, int nargs) {
-    pcl_luafn *f = pcl_luafn_new(L, 1, &idx);
-    f->nargs = nargs;
-    f->fname = "curve";
-    return f;
-}
-
 /* ---- the userdata ---------------------------------------------------------------------------- */
 
 int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
@@ -219,7 +211,8 @@ PCL_BODY(l_curve, a) {
     double h[PC_MAXDIM + 1];
     int d = read_result(L, lua_gettop(L) - 3, 0, h);
     if (!d) return pcl_fail(L, "%s", lua_tostring(L, -1));
-    pcl_luafn *f = keep_fn(L, 1, d);
+    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){1});   /* its messages start "curve:" */
+    f->nargs = d;
     pc_curve *c = pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, pcl_luafn_free, f, &st);
     if (!c) pcl_luafn_free(f);
     return pcl_push_made(L, c, &st, NULL);
@@ -248,7 +241,8 @@ static int read_g(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED
  * stack index lua_g, else 0) through the callback. */
 static int push_stroke(lua_State *L, int d, int np, int closed, const pc_piece *pc, int lua_g) {
     int st;
-    pcl_luafn *f = lua_g ? keep_fn(L, lua_g, 1) : NULL;
+    pcl_luafn *f = lua_g ? pcl_luafn_new(L, 1, &lua_g) : NULL;   /* g(t): one number */
+    if (f) f->fname = "curve";   /* "curve: the smoothstep g ...", as luag_eval's */
     pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, f ? luag_eval : NULL, f ? pcl_luafn_free : NULL, f,
                                      &st);
     if (!c && f) pcl_luafn_free(f);
@@ -395,8 +389,7 @@ PCL_METHOD(c_frame, lcurve *u, a) {
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
     pcl_check(L, curvature ? pc_curve_curvature(u->c, a[0].x, e) : pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL),
               pc_curve_why);
-    if (curvature) return pcl_push_results(L, 0, "n", e[0]);
-    return pcl_push_results(L, u->c->dim, "v", normal ? nrm : e);
+    return pcl_push_packed(L, u->c->dim, curvature ? "n" : "v", normal ? nrm : e);
 }
 
 /* ---- operations --------------------------------------------------------------------------------- */
