@@ -487,13 +487,12 @@ PCL_METHOD(c_coef, lcurve *u, a) {
     int n;
     const double *coef = pc_curve_fourier_coefs(u->c, &n);
     if (!coef) return pcl_fail(L, "not a Fourier curve");
-    int k = number_arg(L, "coordinate", u->c->dim, &a[0]), m = n + 1;
+    int k = number_arg(L, "coordinate", u->c->dim, &a[0]);
     for (int ab = 0; ab < 2; ab++) {
-        lua_createtable(L, m, 0);
-        for (int j = 0; j < m; j++) {
-            lua_pushnumber(L, coef[(2 * k + ab) * m + j]);
-            lua_rawseti(L, -2, j);
-        }
+        const double *row = coef + (2 * k + ab) * (n + 1);
+        pcl_push_numbers(L, n, row + 1);   /* [1] .. [n], then [0] */
+        lua_pushnumber(L, row[0]);
+        lua_rawseti(L, -2, 0);
     }
     return 2;
 }
