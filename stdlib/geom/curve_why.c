@@ -104,3 +104,13 @@ int pc_curve_monomial_checked(const char *op, const pc_curve *c, double piece, d
                                pc_num_text(piece, got, sizeof got));
     return pc_why_call_set(why, NULL, pc_curve_monomial_rows(c, (int)piece - 1, rows, degree, rational), 0, NULL, "");
 }
+
+int pc_curve_derivs_checked(const char *op, const pc_curve *c, double t, int order, int side,
+                            double *out, pc_why_call *why) {
+    int st = pc_curve_derivs_n(c, t, order, side, out);
+    if (st == PC_EDOMAIN && c->kind == PC_CURVE_FUNC)
+        return pc_why_call_set(why, op, st, 0, NULL,
+                               "a function curve gives derivatives up to order 2, not %d", order);
+    const pc_why *w = pc_why_find(pc_curve_why, op, st);
+    return pc_why_call_set(why, w ? op : NULL, st, w ? w->arg : 0, NULL, "%s", w ? w->text : "");
+}

@@ -40,5 +40,10 @@ int pc_curve_part_why(const pc_curve *c, double a, double b, char *why, size_t s
  * 1..npieces (argument 1); another failure leaves why empty. */
 int pc_curve_monomial_checked(const char *op, const pc_curve *c, double piece, double *rows, int *degree, int *rational,
                               pc_why_call *why);
+/* pc_curve_derivs_n for the call op, its failure explained in why (why_call.h): a function
+ * curve's order beyond 2, else the row of pc_curve_why for op and the status (at infinity);
+ * another failure leaves why empty. */
+int pc_curve_derivs_checked(const char *op, const pc_curve *c, double t, int order, int side,
+                            double *out, pc_why_call *why);
 
 #endif

@@ -76,14 +76,6 @@ static int luag_eval(void *ud, double t, double *g) {
     return pcl_callback_failed(L);
 }
 
-/* A Lua function at idx for the core (fname: the name its messages start with). */
-static pcl_luafn *keep_fn(lua_State *L, int idx, int nargs) {
-    pcl_luafn *f = pcl_luafn_new(L, 1, &idx);
-    f->nargs = nargs;
-    f->fname = "curve";
-    return f;
-}
-
 /* ---- the userdata ---------------------------------------------------------------------------- */
 
 int pcl_pushcurve(lua_State *L, pc_curve *c, const char *kind) {
@@ -219,7 +211,8 @@ PCL_BODY(l_curve, a) {
     double h[PC_MAXDIM + 1];
     int d = read_result(L, lua_gettop(L) - 3, 0, h);
     if (!d) return pcl_fail(L, "%s", lua_tostring(L, -1));
-    pcl_luafn *f = keep_fn(L, 1, d);
+    pcl_luafn *f = pcl_luafn_new(L, 1, (int[]){1});   /* its messages start "curve:" */
+    f->nargs = d;
     pc_curve *c = pc_curve_func(d, a[1].x, a[2].x, 0, luafn_eval, pcl_luafn_free, f, &st);
     if (!c) pcl_luafn_free(f);
     return pcl_push_made(L, c, &st, NULL);
@@ -248,7 +241,8 @@ static int read_g(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, PCL_UNUSED
  * stack index lua_g, else 0) through the callback. */
 static int push_stroke(lua_State *L, int d, int np, int closed, const pc_piece *pc, int lua_g) {
     int st;
-    pcl_luafn *f = lua_g ? keep_fn(L, lua_g, 1) : NULL;
+    pcl_luafn *f = lua_g ? pcl_luafn_new(L, 1, &lua_g) : NULL;   /* g(t): one number */
+    if (f) f->fname = "curve";   /* "curve: the smoothstep g ...", as luag_eval's */
     pc_curve *c = pc_curve_stroke_fn(d, np, pc, closed, f ? luag_eval : NULL, f ? pcl_luafn_free : NULL, f,
                                      &st);
     if (!c && f) pcl_luafn_free(f);
@@ -365,10 +359,8 @@ PCL_METHOD(c_deriv, lcurve *u, a) {
     const pcl_val *s = a[2].present ? &a[2] : &a[1];   /* the side, in its place or in the order's */
     int order = a[1].present ? (int)a[1].x : 1, side = s->s ? (s->n ? 1 : -1) : 0;
     double out[(PC_CURVE_MAXDEG + 1) * PC_MAXDIM];
-    int st = pc_curve_derivs_n(u->c, a[0].x, order, side, out);
-    if (st == PC_EDOMAIN && u->c->kind == PC_CURVE_FUNC)
-        return pcl_fail(L, "a function curve gives derivatives up to order 2, not %d", order);
-    pcl_check(L, st, pc_curve_why);
+    pc_why_call w;
+    pcl_check(L, pc_curve_derivs_checked(pcl_name(L), u->c, a[0].x, order, side, out, &w), w.row);
     return pcl_push_results(L, u->c->dim, "v", out + (size_t)order * u->c->dim);
 }
 
@@ -397,8 +389,7 @@ PCL_METHOD(c_frame, lcurve *u, a) {
     double e[PC_MAXDIM], nrm[PC_MAXDIM];
     pcl_check(L, curvature ? pc_curve_curvature(u->c, a[0].x, e) : pc_curve_frame(u->c, a[0].x, e, normal ? nrm : NULL),
               pc_curve_why);
-    if (curvature) return pcl_push_results(L, 0, "n", e[0]);
-    return pcl_push_results(L, u->c->dim, "v", normal ? nrm : e);
+    return pcl_push_packed(L, u->c->dim, curvature ? "n" : "v", normal ? nrm : e);
 }
 
 /* ---- operations --------------------------------------------------------------------------------- */
@@ -496,13 +487,12 @@ PCL_METHOD(c_coef, lcurve *u, a) {
     int n;
     const double *coef = pc_curve_fourier_coefs(u->c, &n);
     if (!coef) return pcl_fail(L, "not a Fourier curve");
-    int k = number_arg(L, "coordinate", u->c->dim, &a[0]), m = n + 1;
+    int k = number_arg(L, "coordinate", u->c->dim, &a[0]);
     for (int ab = 0; ab < 2; ab++) {
-        lua_createtable(L, m, 0);
-        for (int j = 0; j < m; j++) {
-            lua_pushnumber(L, coef[(2 * k + ab) * m + j]);
-            lua_rawseti(L, -2, j);
-        }
+        const double *row = coef + (2 * k + ab) * (n + 1);
+        pcl_push_numbers(L, n, row + 1);   /* [1] .. [n], then [0] */
+        lua_pushnumber(L, row[0]);
+        lua_rawseti(L, -2, 0);
     }
     return 2;
 }

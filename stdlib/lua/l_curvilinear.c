@@ -135,8 +135,8 @@ PCL_BODY(l_bisect, a) {
 /* _tk.bilinear(P0, P1, P2, P3) -> function(t1, t2) -> x, y[, z ...] */
 static const pcl_arg t12_args[] = {A_NUM("t1"), A_NUM("t2"), PCL_END};
 PCL_BODY(bilinear_eval, a) {
-    const double *c = lua_touserdata(L, PCL_UPVALUE(1));
-    int d = (int)lua_tointeger(L, PCL_UPVALUE(2));
+    const double *c = lua_touserdata(L, PCL_UPVALUE(1));   /* the corners: 4 rows of d */
+    int d = (int)(lua_rawlen(L, PCL_UPVALUE(1)) / (4 * sizeof *c));
     double out[PC_MAXDIM];
     pc_bilinear(d, c, c + d, c + 2 * d, c + 3 * d, a[0].x, a[1].x, out);
     return pcl_push_results(L, d, "x", out);
@@ -148,8 +148,7 @@ PCL_BODY(l_bilinear, a) {
     int d = a[0].n;
     double *c = lua_newuserdatauv(L, sizeof(double) * 4 * (size_t)d, 0);
     pcl_point_rows(a, 4, d, c);
-    lua_pushinteger(L, d);
-    pcl_pushfn(L, &bilinear_fn, 2);
+    pcl_pushfn(L, &bilinear_fn, 1);
     return 1;
 }
 

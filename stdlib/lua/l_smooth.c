@@ -88,10 +88,8 @@ PCL_BODY(l_half, a) {
 /* g(t) (t an equation: an equation) and g:deriv(t) */
 static int hs_at(lua_State *L, int deriv) {
     pc_hspline *h = pcl_tohspline(L, 1);
-    if (!deriv && h && lua_type(L, 2) != LUA_TNUMBER) {
-        pc_gfun g = {PC_G_HALF, *h};
-        if (pcl_eq_smooth(L, 2, &g)) return 1;
-    }
+    if (!deriv && h && lua_type(L, 2) != LUA_TNUMBER &&
+        pcl_eq_smooth(L, 2, &(pc_gfun){PC_G_HALF, *h})) return 1;   /* g(t) of an equation t */
     pcl_val a[1] = {{.x = lua_tonumber(L, 2)}};
     if (!h || lua_type(L, 2) != LUA_TNUMBER || !isfinite(a[0].x)) h = PCL_READ(L, a);   /* the message */
     if (!deriv || pc_hspline_check(h, a[0].x) != PC_OK) return eval_at(L, h, a[0].x, 1);

@@ -113,6 +113,29 @@ static void test_monomial_checked(void **state) {
     pc_curve_release(f);
 }
 
+/* c:deriv's conditions: a function curve's order beyond 2, a rational curve at infinity (the
+ * table's row), a derivative that exists */
+static void test_derivs_checked(void **state) {
+    (void)state;
+    double cp[] = {0, 0, 1, 0, 1, -1, 1, 0, 1}, out[4 * 2];   /* weight (1 - 2t)^2: 0 at t = 1/2 */
+    int st;
+    pc_why_call w;
+    pc_curve *c = pc_curve_bezier(2, 3, cp, &st);
+    pc_curve *f = pc_curve_func(1, 0, 1, 0, line_x, NULL, NULL, &st);
+    assert_int_equal(pc_curve_derivs_checked("c:deriv", f, 0.5, 3, 0, out, &w), PC_EDOMAIN);
+    assert_int_equal(w.row[0].arg, 0);
+    assert_string_equal(w.row[0].text, "a function curve gives derivatives up to order 2, not 3");
+    assert_int_equal(pc_curve_derivs_checked("c:deriv", c, 0.5, 1, 0, out, &w), PC_IMPROPER);
+    assert_string_equal(w.row[0].op, "c:deriv");
+    assert_int_equal(w.row[0].arg, -2);
+    assert_string_equal(w.row[0].text, "the curve is at infinity at t = %s");
+    assert_int_equal(pc_curve_derivs_checked("c:deriv", c, 0, 1, 0, out, &w), PC_OK);
+    assert_null(w.row[0].op);
+    assert_true(fabs(out[0]) + fabs(out[1]) < 1e-12);   /* the point at t = 0: P0 */
+    pc_curve_release(c);
+    pc_curve_release(f);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_method_rows),
@@ -121,6 +144,7 @@ int main(void) {
         cmocka_unit_test(test_params),
         cmocka_unit_test(test_ranges),
         cmocka_unit_test(test_monomial_checked),
+        cmocka_unit_test(test_derivs_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
