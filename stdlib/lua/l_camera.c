@@ -130,8 +130,7 @@ static int tk_draw_curve(lua_State *L) {
  * curves.lua checks the option keys of its Lua-written calls with it */
 static int tk_nearest(lua_State *L) {
     const char *near = pcl_nearest_key(L, luaL_checkstring(L, 1), 2);
-    if (near) lua_pushstring(L, near);
-    return near != NULL;
+    return near ? pcl_push_results(L, 0, "s", near) : 0;
 }
 
 static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */
