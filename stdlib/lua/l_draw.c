@@ -545,8 +545,7 @@ void pcl_open_draw(lua_State *L) {
         b->self = PCL_SELF_TAG(b, &CANVAS_TAG);
         if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         luaL_newmetatable(L, CANVAS_MT);
-        lua_pushcfunction(L, canvas_gc);
-        lua_setfield(L, -2, "__gc");
+        luaL_setfuncs(L, (const luaL_Reg[]){{"__gc", canvas_gc}, {NULL, NULL}}, 0);
         lua_setmetatable(L, -2);
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
