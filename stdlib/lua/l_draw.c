@@ -210,7 +210,7 @@ static const char *const BOX[] = {"b", "B", "bf", "BF", "Bf", "bF", NULL};
 static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x"), A_NUM("end y"), LINE_TAIL};
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
-/* ---- 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write -- */
+/* ---- 3-D points into the camera's scene (pcl_draw.h): hidden behind its surfaces at write -- */
 
 /* A 3-D point at stack index idx, or 0. */
 static int point3(lua_State *L, int idx, double x[3]) {

@@ -6,9 +6,8 @@
 
 #include "pcl_args.h"
 #include "pcl_core.h"     /* pcl_push_results, pcl_project (3-D points through the camera) */
-#include "pcl_scene.h"
 #include "qbscreen.h"
-#include "curve_path.h"
+#include "curve_path.h"   /* places through the camera, and scene.h */
 
 /* The screen's pages (qbscreen.h); pcl_canvas (pcl.h) is the page shown, drawing goes to the
  * active page. */
@@ -19,6 +18,11 @@ pc_canvas *pcl_active_canvas(lua_State *L);
 int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc);
 /* The same for a core call on the active canvas (pcl_active_canvas). */
 int pcl_drawn(lua_State *L, int rc);
+/* The 3-D scene (l_camera.c, stdlib/draw/scene.h): with a camera set by camera(f, {hidden =
+ * "dashed"|"hide"|"show"}), 3-D strokes go into a scene attached to the canvas instead of being
+ * drawn, and the writers resolve it whatever the drawing order.  The scene 3-D strokes go into
+ * now, or NULL when the camera has no hidden mode (or is not 3-D). */
+pc_scene *pcl_scene(lua_State *L);
 
 /* The colour at idx on canvas c: an attribute 0..ncolors-1 (with truecolors, also a true
  * colour's number 256..) or "#rrggbb" (a true colour, allocated on first use); -2 if none.
