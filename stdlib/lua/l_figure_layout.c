@@ -195,17 +195,15 @@ static const pc_why view_why[] = {{"map.view", PC_ECOINCIDENT, 0, NULL, "from an
                                   {"map.view", PC_EZERO, 0, "up", "is the zero vector"},
                                   {"map.view", PC_ECOLLINEAR, 0, "up", "is along the line of sight; give another up"},
                                   {0}};
-PCL_BODY(l_view, a) {
-    static const double origin[3] = {0, 0, 0};
-    const double *to = a[2].present ? a[2].v : origin;
+PCL_BODY(l_view, a) {   /* options; from, to (absent: cleared, the origin), up, perspective, ... */
     int persp = (int)a[4].x, st;
     pc_map f;
     if (a[1].present) {
         if (!a[2].present) return pcl_keyfail(L, "to", "must be given with from (the point looked at)");
-        st = pc_map_view(&f, a[1].v, to, a[3].present ? a[3].v : NULL, persp);
+        st = pc_map_view(&f, a[1].v, a[2].v, a[3].present ? a[3].v : NULL, persp);
     } else {
         if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
-        st = pc_map_view_azel(&f, to, a[5].x, a[6].x, a[7].x, persp);
+        st = pc_map_view_azel(&f, a[2].v, a[5].x, a[6].x, a[7].x, persp);
     }
     pcl_check(L, st, view_why);
     *pcl_newmap(L) = f;
