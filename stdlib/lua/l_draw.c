@@ -247,10 +247,9 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
 static int l_line(lua_State *L) {
     double ab[6];
     pc_scene *sc = point3(L, 1, ab) && point3(L, 2, ab + 3) ? pcl_scene(L) : NULL;
-    if (sc) {
-        int color = scene_color(L, 3, &line_args[4]);
-        return pcl_check(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen), NULL);
-    }
+    if (sc)
+        return pcl_check(L, pc_scene_add_polyline(sc, 2, ab, NULL, scene_color(L, 3, &line_args[4]),
+                                                  pcl_active_canvas(L)->pen), NULL);
     pcl_val a[7];
     PCL_READ_PAIRS(L, a);
     return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
