@@ -91,9 +91,8 @@ int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return read_color_on(L, idx, pcl_active_canvas(L), a->dim == 1, out);
 }
 
-/* The colour of this file's statements, which hold the canvas as their upvalue: read on it
- * without the registry look-up of pcl_read_color, and the canvas left in out->obj, so that
- * pset finds its canvas once per call (stmt_canvas). */
+/* The colour of this file's statements, read on their upvalue's canvas (no registry look-up),
+ * that canvas left in out->obj: pset finds it once per call (stmt_canvas). */
 static int stmt_color(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pc_canvas *c = canvas(L);
     out->obj = c;
