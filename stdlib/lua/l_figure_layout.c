@@ -166,14 +166,13 @@ static const pcl_arg legend_args[] = {{.name = "entries", .kind = PCL_ANY, .expe
 PCL_BODY(l_legend, a) {
     static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
     pc_canvas *c = pcl_active_canvas(L);
-    int t = a[0].idx;
-    lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : 0;
-    if (n < 1 || n > 100) return pcl_argfail(L, 1, "must be a list of 1 to 100 {name, colour}, got %s", pcl_shown(L, t));
+    lua_Integer n = lua_istable(L, 1) ? luaL_len(L, 1) : 0;
+    if (n < 1 || n > 100) return pcl_argfail(L, 1, "must be a list of 1 to 100 {name, colour}, got %s", pcl_shown(L, 1));
     luaL_checkstack(L, 2 * (int)n + 8, "too many entries");
     const char **names = lua_newuserdatauv(L, sizeof *names * (size_t)n, 0);
     int *colors = lua_newuserdatauv(L, sizeof *colors * (size_t)n, 0);
     for (lua_Integer i = 1; i <= n; i++) {   /* each name stays on the stack while it is used */
-        if (lua_geti(L, t, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
+        if (lua_geti(L, 1, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
             return pcl_argfail(L, 1, "[%d] must be {name, colour}", (int)i);
         names[i - 1] = lua_tostring(L, -1);
         lua_geti(L, -2, 2);
