@@ -539,12 +539,11 @@ void pcl_open_draw(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
-        canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-        b->self = PCL_SELF_TAG(b, &CANVAS_TAG);
-        if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         luaL_newmetatable(L, CANVAS_MT);
         luaL_setfuncs(L, (const luaL_Reg[]){{"__gc", canvas_gc}, {NULL, NULL}}, 0);
-        lua_setmetatable(L, -2);
+        lua_pop(L, 1);
+        canvas_box *b = pcl_tagged_new(L, sizeof *b, &CANVAS_TAG, CANVAS_MT);   /* __gc-safe */
+        if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }

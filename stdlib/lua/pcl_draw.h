@@ -8,6 +8,7 @@
 #include "pcl_core.h"     /* pcl_push_results, pcl_project (3-D points through the camera) */
 #include "qbscreen.h"
 #include "curve_path.h"   /* places through the camera, and scene.h */
+#include "pcl_tagged.h"   /* pcl_tagged_new, pcl_tagged_udata beside pcl_tagged below */
 
 /* The screen's pages (qbscreen.h); pcl_canvas (pcl.h) is the page shown, drawing goes to the
  * active page. */
