@@ -1,7 +1,6 @@
 /* Binding of 3-D drawing: camera(f), the current projection and its scene of hidden lines
- * (pcl_draw.h), and the drawing of curves as one path (c:draw; _tk.draw_curve for plot and the
- * lines of curvilinear.lua), the C path from the object through the camera (or a map), WINDOW
- * and VIEW to the canvas (curve_path.h). */
+ * (pcl_draw.h), and curves drawn as one path (c:draw; _tk.draw_curve for plot and curvilinear.lua)
+ * through the camera (or a map), WINDOW and VIEW to the canvas (curve_path.h). */
 #include "pcl_draw.h"
 
 #define CAMERA_KEY "pointcalc.camera"
