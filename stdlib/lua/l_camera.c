@@ -1,7 +1,6 @@
 /* Binding of 3-D drawing: camera(f), the current projection and its scene of hidden lines
- * (pcl_scene.h), and the drawing of curves as one path (c:draw; _tk.draw_curve for plot and the
- * lines of curvilinear.lua), the C path from the object through the camera (or a map), WINDOW
- * and VIEW to the canvas (curve_path.h). */
+ * (pcl_draw.h), and curves drawn as one path (c:draw; _tk.draw_curve for plot and curvilinear.lua)
+ * through the camera (or a map), WINDOW and VIEW to the canvas (curve_path.h). */
 #include "pcl_draw.h"
 
 #define CAMERA_KEY "pointcalc.camera"
@@ -25,7 +24,7 @@ static int l_camera(lua_State *L) {
     }
     pc_map *f = a[0].obj;
     if (f && f->nout != 2) return pcl_argfail(L, 1, "must map to 2-D points, but it maps to %d-D", f->nout);
-    /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_scene.h) */
+    /* {hidden = ...}: the 3-D strokes from now on form a scene resolved at write (pcl_draw.h) */
     lua_pushinteger(L, a[2].present ? a[2].n : -1);
     lua_setfield(L, LUA_REGISTRYINDEX, HIDDEN_KEY);
     lua_settop(L, 1);
@@ -130,8 +129,7 @@ static int tk_draw_curve(lua_State *L) {
  * curves.lua checks the option keys of its Lua-written calls with it */
 static int tk_nearest(lua_State *L) {
     const char *near = pcl_nearest_key(L, luaL_checkstring(L, 1), 2);
-    if (near) lua_pushstring(L, near);
-    return near != NULL;
+    return near ? pcl_push_results(L, 0, "s", near) : 0;
 }
 
 static const char *const HIDDEN[] = {"show", "dashed", "hide", NULL};   /* a pc_hidden_mode */

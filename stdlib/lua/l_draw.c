@@ -91,9 +91,8 @@ int pcl_read_color(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     return read_color_on(L, idx, pcl_active_canvas(L), a->dim == 1, out);
 }
 
-/* The colour of this file's statements, which hold the canvas as their upvalue: read on it
- * without the registry look-up of pcl_read_color, and the canvas left in out->obj, so that
- * pset finds its canvas once per call (stmt_canvas). */
+/* The colour of this file's statements, read on their upvalue's canvas (no registry look-up),
+ * that canvas left in out->obj: pset finds it once per call (stmt_canvas). */
 static int stmt_color(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val *out) {
     pc_canvas *c = canvas(L);
     out->obj = c;
@@ -210,7 +209,7 @@ static const char *const BOX[] = {"b", "B", "bf", "BF", "Bf", "bF", NULL};
 static const pcl_arg line_args[] = {A_X("start x"), A_NUM("start y"), A_X("end x"), A_NUM("end y"), LINE_TAIL};
 static const pcl_arg line_to_args[] = {A_X("end x"), A_NUM("end y"), LINE_TAIL};
 
-/* ---- 3-D points into the camera's scene (pcl_scene.h): hidden behind its surfaces at write -- */
+/* ---- 3-D points into the camera's scene (pcl_draw.h): hidden behind its surfaces at write -- */
 
 /* A 3-D point at stack index idx, or 0. */
 static int point3(lua_State *L, int idx, double x[3]) {
@@ -247,10 +246,9 @@ static int draw_line(lua_State *L, pc_canvas *c, double x1, double y1, const pcl
 static int l_line(lua_State *L) {
     double ab[6];
     pc_scene *sc = point3(L, 1, ab) && point3(L, 2, ab + 3) ? pcl_scene(L) : NULL;
-    if (sc) {
-        int color = scene_color(L, 3, &line_args[4]);
-        return pcl_check(L, pc_scene_add_polyline(sc, 2, ab, NULL, color, pcl_active_canvas(L)->pen), NULL);
-    }
+    if (sc)
+        return pcl_check(L, pc_scene_add_polyline(sc, 2, ab, NULL, scene_color(L, 3, &line_args[4]),
+                                                  pcl_active_canvas(L)->pen), NULL);
     pcl_val a[7];
     PCL_READ_PAIRS(L, a);
     return draw_line(L, stmt_canvas(L, &a[4]), a[0].x, a[1].x, a + 2);
@@ -541,13 +539,11 @@ void pcl_open_draw(lua_State *L) {
     lua_getfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
-        canvas_box *b = lua_newuserdatauv(L, sizeof *b, 0);
-        b->self = PCL_SELF_TAG(b, &CANVAS_TAG);
-        if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         luaL_newmetatable(L, CANVAS_MT);
-        lua_pushcfunction(L, canvas_gc);
-        lua_setfield(L, -2, "__gc");
-        lua_setmetatable(L, -2);
+        luaL_setfuncs(L, (const luaL_Reg[]){{"__gc", canvas_gc}, {NULL, NULL}}, 0);
+        lua_pop(L, 1);
+        canvas_box *b = pcl_tagged_new(L, sizeof *b, &CANVAS_TAG, CANVAS_MT);   /* __gc-safe */
+        if (pc_pages_init(&b->p) != PC_OK) pcl_error(L, "pointcalc: out of memory for the canvas");
         lua_pushvalue(L, -1);
         lua_setfield(L, LUA_REGISTRYINDEX, CANVAS_KEY);
     }

@@ -8,18 +8,16 @@
 int pcl_read_length(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (lua_type(L, idx) != LUA_TSTRING) return 0;
     char err[200];
-    if (pc_parse_length(lua_tostring(L, idx), "", &out->x, err, sizeof err) != PC_OK)
-        return pcl_keyfail(L, a->name, "%s", err + 2);   /* the parser's words, after ": " */
-    return 1;
+    return pc_parse_length(lua_tostring(L, idx), "", &out->x, err, sizeof err) == PC_OK
+           || pcl_keyfail(L, a->name, "%s", err + 2);   /* the parser's words, after ": " */
 }
 
 /* A text size: pt as a number, or a length ("9pt"); 1..200 pt. */
 static int read_size(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (lua_type(L, idx) == LUA_TNUMBER) out->x = lua_tonumber(L, idx);
     else if (!pcl_read_length(L, idx, a, out)) return 0;
-    if (!(out->x >= 1 && out->x <= 200))
-        return pcl_keyfail(L, a->name, "must be 1 to 200 pt, got %s pt", pcl_pushnum(L, out->x));
-    return 1;
+    return (out->x >= 1 && out->x <= 200)
+           || pcl_keyfail(L, a->name, "must be 1 to 200 pt, got %s pt", pcl_pushnum(L, out->x));
 }
 
 #define LENGTH "a length with its unit such as \"12cm\" or \"0.5mm\""
@@ -46,8 +44,7 @@ static int read_font(lua_State *L, int idx, PCL_UNUSED const pcl_arg *a, pcl_val
     out->s = lua_tostring(L, idx);
     const char *family;
     char err[200];
-    if (pc_font_family(out->s, &family, err, sizeof err) != PC_OK) return pcl_fail(L, "%s", err);
-    return 1;
+    return pc_font_family(out->s, &family, err, sizeof err) == PC_OK || pcl_fail(L, "%s", err);
 }
 
 const pcl_arg pcl_label_keys[] = {{.name = "font", .kind = PCL_ANY, .read = read_font, .expect = "a font name"},

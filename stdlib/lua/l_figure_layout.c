@@ -166,14 +166,13 @@ static const pcl_arg legend_args[] = {{.name = "entries", .kind = PCL_ANY, .expe
 PCL_BODY(l_legend, a) {
     static const int corner_of[] = {PC_ANCHOR_NE, PC_ANCHOR_NW, PC_ANCHOR_SE, PC_ANCHOR_SW};
     pc_canvas *c = pcl_active_canvas(L);
-    int t = a[0].idx;
-    lua_Integer n = lua_istable(L, t) ? luaL_len(L, t) : 0;
-    if (n < 1 || n > 100) return pcl_argfail(L, 1, "must be a list of 1 to 100 {name, colour}, got %s", pcl_shown(L, t));
+    lua_Integer n = lua_istable(L, 1) ? luaL_len(L, 1) : 0;
+    if (n < 1 || n > 100) return pcl_argfail(L, 1, "must be a list of 1 to 100 {name, colour}, got %s", pcl_shown(L, 1));
     luaL_checkstack(L, 2 * (int)n + 8, "too many entries");
     const char **names = lua_newuserdatauv(L, sizeof *names * (size_t)n, 0);
     int *colors = lua_newuserdatauv(L, sizeof *colors * (size_t)n, 0);
     for (lua_Integer i = 1; i <= n; i++) {   /* each name stays on the stack while it is used */
-        if (lua_geti(L, t, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
+        if (lua_geti(L, 1, i) != LUA_TTABLE || lua_geti(L, -1, 1) != LUA_TSTRING)
             return pcl_argfail(L, 1, "[%d] must be {name, colour}", (int)i);
         names[i - 1] = lua_tostring(L, -1);
         lua_geti(L, -2, 2);
@@ -195,17 +194,15 @@ static const pc_why view_why[] = {{"map.view", PC_ECOINCIDENT, 0, NULL, "from an
                                   {"map.view", PC_EZERO, 0, "up", "is the zero vector"},
                                   {"map.view", PC_ECOLLINEAR, 0, "up", "is along the line of sight; give another up"},
                                   {0}};
-PCL_BODY(l_view, a) {
-    static const double origin[3] = {0, 0, 0};
-    const double *to = a[2].present ? a[2].v : origin;
+PCL_BODY(l_view, a) {   /* options; from, to (absent: cleared, the origin), up, perspective, ... */
     int persp = (int)a[4].x, st;
     pc_map f;
     if (a[1].present) {
         if (!a[2].present) return pcl_keyfail(L, "to", "must be given with from (the point looked at)");
-        st = pc_map_view(&f, a[1].v, to, a[3].present ? a[3].v : NULL, persp);
+        st = pc_map_view(&f, a[1].v, a[2].v, a[3].present ? a[3].v : NULL, persp);
     } else {
         if (!a[5].present) return pcl_fail(L, "give from and to, or azimuth and elevation");
-        st = pc_map_view_azel(&f, to, a[5].x, a[6].x, a[7].x, persp);
+        st = pc_map_view_azel(&f, a[2].v, a[5].x, a[6].x, a[7].x, persp);
     }
     pcl_check(L, st, view_why);
     *pcl_newmap(L) = f;

@@ -2,7 +2,6 @@
  * screen beyond the drawing statements (text in cells, GET/PUT, DRAW, pages, PMAP), for the
  * QBasic runtime and for scripts. */
 #include "pcl_draw.h"
-#include "pcl_tagged.h"
 
 #define BLOCK_MT "pointcalc.Block"
 static const char BLOCK_TAG = 'b';   /* its address tags the type (PCL_SELF_TAG) */

@@ -6,9 +6,9 @@
 
 #include "pcl_args.h"
 #include "pcl_core.h"     /* pcl_push_results, pcl_project (3-D points through the camera) */
-#include "pcl_scene.h"
 #include "qbscreen.h"
-#include "curve_path.h"
+#include "curve_path.h"   /* places through the camera, and scene.h */
+#include "pcl_tagged.h"   /* pcl_tagged_new, pcl_tagged_udata beside pcl_tagged below */
 
 /* The screen's pages (qbscreen.h); pcl_canvas (pcl.h) is the page shown, drawing goes to the
  * active page. */
@@ -19,11 +19,14 @@ pc_canvas *pcl_active_canvas(lua_State *L);
 int pcl_check_canvas(lua_State *L, pc_canvas *c, int rc);
 /* The same for a core call on the active canvas (pcl_active_canvas). */
 int pcl_drawn(lua_State *L, int rc);
+/* The scene 3-D strokes go into now (l_camera.c, scene.h), or NULL when the camera has no
+ * hidden mode (camera(f, {hidden = "dashed"|"hide"|"show"})) or is not 3-D: attached to the
+ * canvas, it is resolved at write whatever the drawing order. */
+pc_scene *pcl_scene(lua_State *L);
 
 /* The colour at idx on canvas c: an attribute 0..ncolors-1 (with truecolors, also a true
  * colour's number 256..) or "#rrggbb" (a true colour, allocated on first use); -2 if none.
- * pcl_read_color (pcl_args.h) reads one as a declared argument, true colours too when the
- * argument's dim is 1. */
+ * pcl_read_color (pcl_args.h) reads one as a declared argument, true colours with its dim 1. */
 int pcl_color_at(lua_State *L, int idx, pc_canvas *c, int truecolors);
 /* An attribute 0..ncolors-1 of the screen drawn on (no "#rrggbb": QBasic's numbers) into
  * out->x; its message names the screen's range, as an attribute (a->dim 1) or a colour number. */

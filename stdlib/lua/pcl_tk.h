@@ -6,8 +6,7 @@
 #include "pcl_point.h"
 #include "smooth.h"
 
-/* Is f smooth.sine or smooth.cubic (*kind is then a pc_gkind)?  The half-spline object at
- * idx, or NULL. */
+/* Is f smooth.sine or smooth.cubic (*kind then a pc_gkind)?  The half-spline at idx, or NULL. */
 int pcl_smooth_isfunc(lua_CFunction f, int *kind);
 pc_hspline *pcl_tohspline(lua_State *L, int idx);
 #endif
