@@ -1,13 +1,9 @@
 /* Binding of the one surface type (stdlib/geom/surface.h): the table `surface` of constructors,
  * callable as surface(f, u0, u1, v0, v1) for a Lua function or a point equation, and the
  * methods of a surface s (s(u, v), s:iso, s:wireframe, s:shade, ...), declared below. */
-#include "pcl_args.h"
-#include "pcl_core.h"
 #include "wireframe.h"
-#include "pcl_scene.h"
-#include "pcl_draw.h"
+#include "pcl_draw.h"   /* the layer, the core calls, tagged blocks, the camera's scene */
 #include "pcl_expr.h"
-#include "pcl_tagged.h"
 
 #define SURF_MT "surface"
 static const char SURF_TAG = 's';   /* its address tags the type (PCL_SELF_TAG) */
@@ -259,7 +255,7 @@ PCL_METHOD(s_wireframe, lsurf *u, a) {   /* opts; nu, nv, color, tol, map, hidde
     if ((o.hidden || o.silhouette) && (s->dim != 3 || !f))
         return pcl_fail(L, "%s a 3-D surface seen through a projection",
                         o.hidden ? "hidden lines need" : "a silhouette needs");
-    /* the camera's scene (pcl_scene.h): the surface hides, its lines are hidden, at write */
+    /* the camera's scene (pcl_draw.h): the surface hides, its lines are hidden, at write */
     pc_scene *sc = !o.hidden && s->dim == 3 && !a[5].present ? pcl_scene(L) : NULL;
     int drawn = PC_OK, st = sc ? pc_scene_wireframe(sc, s, &scr, &o, pcl_active_canvas(L)->pen)
                                : pc_draw_wireframe(cv, s, &scr, &o, &drawn);
@@ -288,7 +284,7 @@ PCL_METHOD(s_shade, lsurf *u, a) {   /* opts; nu, nv, color, light, ambient, mes
     if (u->s->dim != 3)
         return pcl_fail(L, "shading needs a 3-D surface seen through a projection, this one is %d-D", u->s->dim);
     drawing_map(L, &a[7], 3, &scr);
-    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_scene.h) */
+    pc_scene *sc = !a[7].present ? pcl_scene(L) : NULL;   /* the camera's (pcl_draw.h) */
     int drawn, st = pc_draw_shaded_surface(cv, sc, u->s, &scr, &o, base, (int)a[6].x, &n, &drawn);
     pcl_check_canvas(L, cv, drawn);   /* (a failing canvas and a failing geometry exclude each other) */
     pcl_check(L, st, pc_surface_why);
