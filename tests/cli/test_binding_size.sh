@@ -1,11 +1,11 @@
 #!/bin/sh
 # Issue 20: the bindings (stdlib/lua) in C lines per documented name (a row of docs/api.md that
-# starts with "| `").  The goal is 22 (PC_BINDING_GOAL); the test is a ratchet at the level
-# reached (per_name): lower it whenever the bindings get shorter, never raise it.
+# starts with "| `"): at most 22, the goal, reached.  Lower per_name when the bindings get
+# shorter still; never raise it.
 . "$(dirname "$0")/lib.sh"
 : "${PC_SOURCE_DIR:?PC_SOURCE_DIR must name the source tree}"
 
-per_name=${PC_BINDING_PER_NAME:-23}
+per_name=${PC_BINDING_PER_NAME:-22}
 goal=22
 lines=$(cat "$PC_SOURCE_DIR"/stdlib/lua/*.c "$PC_SOURCE_DIR"/stdlib/lua/*.h | wc -l)
 names=$(grep -c '^| `' "$PC_SOURCE_DIR/docs/api.md")
