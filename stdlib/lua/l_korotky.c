@@ -339,9 +339,7 @@ PCL_BODY(l_sweep, a) {
 static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
-    /* an arc, or the line pair of korotky.conic_arc with T = W (two quadratic pieces, told
-     * apart in l_conic_elements) */
-    if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
+    if (c) return pc_conic_arc_shaped(c);   /* an arc, or korotky.conic_arc's line pair (T = W) */
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
     pcl_val coef = {.list = out->v, .cap = 6};
     pcl_readone(L, idx, 1, 0, &(const pcl_arg){.name = a->name, .kind = PCL_NUMBERS, .lo = 6, .hi = 6}, 0, &coef);

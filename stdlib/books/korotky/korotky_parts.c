@@ -123,8 +123,12 @@ pc_curve *pc_ferguson_lambda_curve(int n, const double *p, const double tA[2], c
     return *status == PC_OK ? pc_curve_hermite(2, n, p, dout, din, NULL, 0, status) : NULL;
 }
 
+int pc_conic_arc_shaped(const pc_curve *c) {
+    return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
+}
+
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
-    if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || (c->ncp != 3 && c->ncp != 5)) return PC_EDIM;
+    if (!pc_conic_arc_shaped(c)) return PC_EDIM;
     if (c->ncp == 5) return pc_conic_line_pair(c->cp, w) ? PC_ESAME_LINE : PC_EDIM;
     return pc_conic_info_rquad(c->cp, out);
 }

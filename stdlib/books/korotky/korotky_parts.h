@@ -51,6 +51,9 @@ int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
  * line pair U W V (the degenerate section AOD of Fig. 3c), its lines meeting at W (into w), else
  * PC_EDIM.  PC_EDIM for any other curve. */
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]);
+/* 1 if c has the shape pc_conic_info_arc takes: a 2-D quadratic Bezier curve of one piece (3
+ * control points) or of the two pieces of korotky.conic_arc with T = W (5), else 0. */
+int pc_conic_arc_shaped(const pc_curve *c);
 /* The elements of korotky.conic_elements: of the arc c (pc_conic_info_arc) or, c NULL, of the
  * coefficients coef (pc_conic_info_coef), a failure explained in w: the line pair U W V with the
  * point W where its lines meet, else the rows of pc_korotky_why (another status with an empty

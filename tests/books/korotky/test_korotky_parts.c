@@ -103,6 +103,7 @@ static void test_conic_info_arc(void **state) {
     assert_non_null(c);
     pc_conic_info o;
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_OK);
+    assert_true(pc_conic_arc_shaped(c));
     assert_int_equal(o.kind, PC_CK_ELLIPSE);
     NEAR(o.center[0], 1, 1e-12); NEAR(o.center[1], 0, 1e-12);
     NEAR(o.semi[0], 1, 1e-12); NEAR(o.semi[1], .5, 1e-12);
@@ -111,6 +112,7 @@ static void test_conic_info_arc(void **state) {
     c = pc_conic_arc(2, U, sU, V, sV, Wp, &w, &st);
     assert_non_null(c);
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_ESAME_LINE);
+    assert_true(pc_conic_arc_shaped(c));   /* two quadratic pieces, 5 control points */
     NEAR(W[0], 1, 1e-12); NEAR(W[1], 1, 1e-12);
     pc_why_call why;   /* korotky.conic_elements words it with W as Lua shows numbers */
     assert_int_equal(pc_conic_elements_checked(c, NULL, &o, &why), PC_ESAME_LINE);
@@ -130,6 +132,7 @@ static void test_conic_info_arc(void **state) {
     c = pc_curve_bezier(2, 4, cub, &st);
     assert_non_null(c);
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_EDIM);
+    assert_false(pc_conic_arc_shaped(c));
     assert_int_equal(pc_why_find(pc_korotky_why, "korotky.conic_elements", PC_EDIM)->arg, 1);
     pc_curve_release(c);
     assert_non_null(strstr(pc_why_find(pc_korotky_why, "korotky.dome_tri", PC_ECOLLINEAR)->text, "flat"));
