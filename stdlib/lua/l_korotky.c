@@ -44,7 +44,7 @@ static void tangents(lua_State *L, int k, const pcl_val *v, int n, double *T) {
     }
 }
 
-/* The count a list must have when it depends on another argument (lambda: n - 2 numbers). */
+/* The count a list must have when it depends on another argument (moduli: 2n - 2 numbers). */
 static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, int n) {
     if (v->present && v->n != n) {
         if (key) pcl_keyfail(L, key, "must hold %d numbers, got %d", n, v->n);
@@ -59,14 +59,12 @@ static const pcl_arg poly_keys[] = {A_ENUM("ends", pc_poly_spline_ends), A_NUM("
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
 PCL_BODY(l_poly_spline, a) {
     double coef[4 * MAXPTS];
-    int n = a[0].n, ends = a[2].n, bad = -1, st;   /* ends: a pc_end_kind */
-    if (ends == PC_END_CLAMPED && (!a[3].present || !a[4].present))
-        return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
-    pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
+    int st, slopes = a[3].present && a[4].present;   /* a[2].n: the ends, a pc_end_kind */
     pc_why_call why;
-    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
-    pcl_pushcurve(L, c, "korotky.poly_spline");
-    pcl_push_rows(L, n - 1, 4, coef);
+    pc_curve *c = pc_poly_spline_checked(a[0].n, a[0].list, a[2].n, slopes, a[3].x, a[4].x, coef,
+                                         &st, &why);
+    pcl_made(L, c, &st, why.row);
+    pcl_push_rows(L, a[0].n - 1, 4, coef);
     return 2;
 }
 
@@ -80,13 +78,11 @@ static const pcl_arg lambda_keys[] = {END_TANGENT("TA", "first"), END_TANGENT("T
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
 PCL_BODY(l_ferguson_lambda, a) {
-    int n = a[0].n, bad = -1, st;
-    if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
-    need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
-    pc_curve *c = pc_ferguson_lambda_curve(n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, a[6].list, &bad, &st);
+    int st, nl = a[6].present ? a[6].n : -1;   /* the ratios lambda given */
     pc_why_call why;
-    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
-    return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
+    pc_curve *c = pc_ferguson_lambda_checked(a[0].n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, nl,
+                                             a[6].list, &st, &why);
+    return pcl_made(L, c, &st, why.row);
 }
 
 static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
@@ -156,12 +152,11 @@ static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN)
                                        PCL_END};
 PCL_BODY(l_elastic, a) {
     double E;
-    int n = a[0].n, pieces = (int)a[3].x, st;   /* absent: 0, as many as the points allow */
-    double len = a[4].x;                         /* absent: 0, the length is free */
-    pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
+    int st;   /* pieces absent: 0, as many as the points allow; length absent: 0, free */
     pc_why_call why;
-    if (!c) pcl_check(L, pc_elastic_explain(st, n, pieces, len, &why), why.row);
-    pcl_push_made(L, c, &st, "korotky.elastic");
+    pc_curve *c = pc_elastic_checked(a[0].n, a[0].list, (int)a[3].x, a[2].present ? a[2].v : NULL,
+                                     a[4].x, &E, &st, &why);
+    pcl_made(L, c, &st, why.row);
     return 1 + pcl_push_results(L, 0, "n", E);
 }
 

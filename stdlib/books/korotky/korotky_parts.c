@@ -82,6 +82,37 @@ int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w) {
     return pc_why_call_set(w, NULL, st, 0, NULL, "");
 }
 
+pc_curve *pc_poly_spline_checked(int n, const double *p, pc_end_kind ends, int slopes, double s0,
+                                 double s1, double *coef, int *status, pc_why_call *w) {
+    const char *op = "korotky.poly_spline";
+    int bad = -1;
+    if (ends == PC_END_CLAMPED && !slopes) {
+        *status = pc_why_call_set(w, op, PC_EDOMAIN, 0, NULL,
+                                  "clamped ends need the end slopes s0 and s1 (numbers)");
+        return NULL;
+    }
+    pc_curve *c = pc_poly_spline_points(n, p, ends, s0, s1, coef, &bad, status);
+    pc_ferguson_explain(op, c ? PC_OK : *status, bad, w);
+    return c;
+}
+
+pc_curve *pc_ferguson_lambda_checked(int n, const double *p, const double tA[2], const double tE[2],
+                                     double wA, double wE, int nl, const double *lambda,
+                                     int *status, pc_why_call *w) {
+    const char *op = "korotky.ferguson_lambda";
+    int bad = -1;
+    if (n > 2 && nl != n - 2) {
+        if (nl < 0)
+            *status = pc_why_call_set(w, op, PC_EDOMAIN, 0, "lambda", "must be a list of %d numbers, got nil", n - 2);
+        else
+            *status = pc_why_call_set(w, op, PC_EDOMAIN, 0, "lambda", "must hold %d numbers, got %d", n - 2, nl);
+        return NULL;
+    }
+    pc_curve *c = pc_ferguson_lambda_curve(n, p, tA, tE, wA, wE, lambda, &bad, status);
+    pc_ferguson_explain(op, c ? PC_OK : *status, bad, w);
+    return c;
+}
+
 const char *pc_conic_arc_why(int st) {
     return st == PC_ESKEW        ? "the tangents must lie in the plane of U, V and T"
            : st == PC_EDOMAIN     ? "T must lie between the tangent lines, on an arc from U to V that stays finite"
@@ -151,6 +182,13 @@ int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_
                                "a degenerate conic: its lines meet at W = P(%s, %s)",
                                lua_num_text(at[0], x, sizeof x), lua_num_text(at[1], y, sizeof y));
     return pc_why_call_row(w, pc_korotky_why, op, st);
+}
+
+pc_curve *pc_elastic_checked(int n, const double *p, int pieces, const double *end_angles,
+                             double len, double *energy, int *status, pc_why_call *w) {
+    pc_curve *c = pc_elastic_length(n, p, pieces, end_angles, len, energy, status);
+    pc_elastic_explain(c ? PC_OK : *status, n, pieces, len, w);
+    return c;
 }
 
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {

@@ -45,6 +45,15 @@ const char *pc_meet_planes4_why(int st, int pencil);
  * korotky.ferguson_lambda: the end tangents and the ratios lambda; the others: the knot); an
  * empty table for a failure at no knot.  Returns st. */
 int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
+/* korotky.poly_spline: pc_poly_spline_points, clamped ends needing both end slopes (slopes 1:
+ * s0 and s1 given), a failure explained in w (pc_ferguson_explain; the table empty on success). */
+pc_curve *pc_poly_spline_checked(int n, const double *p, pc_end_kind ends, int slopes, double s0,
+                                 double s1, double *coef, int *status, pc_why_call *w);
+/* korotky.ferguson_lambda: pc_ferguson_lambda_curve with nl ratios lambda (-1: none given; past
+ * two points n - 2 are needed), a failure explained in w as pc_poly_spline_checked's. */
+pc_curve *pc_ferguson_lambda_checked(int n, const double *p, const double tA[2], const double tE[2],
+                                     double wA, double wE, int nl, const double *lambda,
+                                     int *status, pc_why_call *w);
 
 /* The elements of a 2-D conic arc c: one rational quadratic piece (pc_conic_info_rquad and its
  * statuses), or the two pieces of korotky.conic_arc with T = W: PC_ESAME_LINE when they are the
@@ -65,6 +74,10 @@ int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_
  * and the length len (0: free), explained in w (korotky.elastic; an empty table for a status
  * it does not explain); returns st. */
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
+/* korotky.elastic: pc_elastic_length, a failure explained in w (pc_elastic_explain; the table
+ * empty on success). */
+pc_curve *pc_elastic_checked(int n, const double *p, int pieces, const double *end_angles,
+                             double len, double *energy, int *status, pc_why_call *w);
 /* pc_graphical_slope with its conditions explained in w (korotky.graphical_slope): the window
  * 3..n, the x increasing, x within the samples. */
 int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);

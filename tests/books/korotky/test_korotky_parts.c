@@ -31,6 +31,47 @@ static void test_poly_spline_points(void **state) {
     assert_int_equal(bad, 2);
 }
 
+/* korotky.poly_spline, korotky.ferguson_lambda and korotky.elastic with their conditions
+ * explained: the clamped ends' slopes, the count of the ratios lambda, a failure at a knot */
+static void test_checked(void **state) {
+    (void)state;
+    const double p[6] = {0, 0, 1, 1, 2, 4}, back[6] = {0, 0, 1, 1, 1, 4}, tA[2] = {1, 0}, tE[2] = {1, 4};
+    const double lam[2] = {1, 1};
+    double coef[8], E;
+    int st;
+    pc_why_call w;
+    assert_null(pc_poly_spline_checked(3, p, PC_END_CLAMPED, 0, 0, 0, coef, &st, &w));
+    assert_string_equal(w.row[0].text, "clamped ends need the end slopes s0 and s1 (numbers)");
+    assert_null(w.row[0].key);
+    pc_curve *c = pc_poly_spline_checked(3, p, PC_END_CLAMPED, 1, 0, 4, coef, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    NEAR(coef[2], 1, 1e-14);
+    pc_curve_release(c);
+    assert_null(pc_poly_spline_checked(3, back, PC_END_NATURAL, 0, 0, 0, coef, &st, &w));
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "[3] must lie right of the point before (x must increase)");
+    assert_null(pc_ferguson_lambda_checked(3, p, tA, tE, 1, 1, -1, NULL, &st, &w));
+    assert_string_equal(w.row[0].key, "lambda");
+    assert_string_equal(w.row[0].text, "must be a list of 1 numbers, got nil");
+    assert_null(pc_ferguson_lambda_checked(3, p, tA, tE, 1, 1, 2, lam, &st, &w));
+    assert_string_equal(w.row[0].text, "must hold 1 numbers, got 2");
+    c = pc_ferguson_lambda_checked(3, p, tA, tE, 1, 1, 1, lam, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    pc_curve_release(c);
+    c = pc_ferguson_lambda_checked(2, p, tA, tE, 1, 1, 2, lam, &st, &w);   /* two points: lambda unused */
+    assert_non_null(c);
+    pc_curve_release(c);
+    c = pc_elastic_checked(3, p, 0, NULL, 0, &E, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    pc_curve_release(c);
+    assert_null(pc_elastic_checked(3, p, 0, NULL, 1, &E, &st, &w));   /* shorter than the polyline */
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_non_null(strstr(w.row[0].text, "is not longer than the polyline"));
+}
+
 static pc_curve *segment(double x0, double y0, double z0, double x1, double y1, double z1) {
     double cp[8] = {x0, y0, z0, 1, x1, y1, z1, 1};
     int st;
@@ -236,7 +277,7 @@ int main(void) {
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
         cmocka_unit_test(test_conic_info_arc), cmocka_unit_test(test_ferguson_lambda_curve),
         cmocka_unit_test(test_explained), cmocka_unit_test(test_ferguson_explain),
-        cmocka_unit_test(test_hausdorff_checked),
+        cmocka_unit_test(test_hausdorff_checked), cmocka_unit_test(test_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
