@@ -44,14 +44,6 @@ static void tangents(lua_State *L, int k, const pcl_val *v, int n, double *T) {
     }
 }
 
-/* The count a list must have when it depends on another argument (moduli: 2n - 2 numbers). */
-static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, int n) {
-    if (v->present && v->n != n) {
-        if (key) pcl_keyfail(L, key, "must hold %d numbers, got %d", n, v->n);
-        pcl_argfail(L, k, "must hold %d numbers, got %d", n, v->n);
-    }
-}
-
 /* ---- polynomial spline -------------------------------------------------------------------- */
 
 static const pcl_arg poly_keys[] = {A_ENUM("ends", pc_poly_spline_ends), A_NUM("s0"), A_NUM("s1"),
@@ -102,25 +94,22 @@ PCL_BODY(l_ferguson, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     const char *name = pcl_name(L);
     int n = a[0].n, subst = !strcmp(name, "korotky.ferguson_substitution"), bad = -1, st;
+    pc_why_call why;
     tangents(L, 2, &a[1], n, T);
-    if (!strcmp(name, "korotky.ferguson")) {
-        need_count(L, &a[2], NULL, 3, 2 * n - 2);
-        pc_curve *c = pc_ferguson_curve(n, p, T, a[2].list, &st);
-        if (!c) return pcl_statuserror(L, name, st, "argument #2 (tangents)");
-        return pcl_pushcurve(L, c, "korotky.ferguson");
-    }
+    if (!strcmp(name, "korotky.ferguson"))
+        return pcl_made(L, pc_ferguson_checked(n, p, T, a[2].n, a[2].list, &st, &why), &st, why.row);
     if (subst) {
         mags[0] = a[2].x;
         mags[1] = a[3].x;
         st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
     } else {
-        need_count(L, &a[5], "start", 0, 2 * n - 4);
+        if (a[5].present && a[5].n != 2 * n - 4)   /* the unknown moduli's start */
+            pcl_keyfail(L, "start", "must hold %d numbers, got %d", 2 * n - 4, a[5].n);
         mags[0] = a[3].x;
         mags[2 * n - 3] = a[4].x;
         if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
         st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     }
-    pc_why_call why;
     pcl_check(L, pc_ferguson_explain(name, st, bad, &why), why.row);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);

@@ -82,6 +82,19 @@ int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w) {
     return pc_why_call_set(w, NULL, st, 0, NULL, "");
 }
 
+pc_curve *pc_ferguson_checked(int n, const double *p, const double *T, int nm, const double *mags, int *status,
+                              pc_why_call *w) {
+    const char *op = "korotky.ferguson";
+    pc_curve *c = NULL;
+    if (nm != 2 * n - 2)
+        *status = pc_why_call_set(w, op, PC_EDIM, 3, NULL, "must hold %d numbers, got %d", 2 * n - 2, nm);
+    else if (!(c = pc_ferguson_curve(n, p, T, mags, status)))
+        pc_why_call_set(w, op, *status, 0, NULL, "argument #2 (tangents) (%s)", pc_strerror(*status));
+    else
+        pc_why_call_set(w, NULL, PC_OK, 0, NULL, "");
+    return c;
+}
+
 pc_curve *pc_poly_spline_checked(int n, const double *p, pc_end_kind ends, int slopes, double s0,
                                  double s1, double *coef, int *status, pc_why_call *w) {
     const char *op = "korotky.poly_spline";

@@ -45,6 +45,10 @@ const char *pc_meet_planes4_why(int st, int pencil);
  * korotky.ferguson_lambda: the end tangents and the ratios lambda; the others: the knot); an
  * empty table for a failure at no knot.  Returns st. */
 int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
+/* korotky.ferguson: pc_ferguson_curve with nm moduli (2n - 2 needed: argument #3), a failure
+ * explained in w (the count; the curve's status, on the tangents); the table empty on success. */
+pc_curve *pc_ferguson_checked(int n, const double *p, const double *T, int nm, const double *mags, int *status,
+                              pc_why_call *w);
 /* korotky.poly_spline: pc_poly_spline_points, clamped ends needing both end slopes (slopes 1:
  * s0 and s1 given), a failure explained in w (pc_ferguson_explain; the table empty on success). */
 pc_curve *pc_poly_spline_checked(int n, const double *p, pc_end_kind ends, int slopes, double s0,

@@ -63,6 +63,17 @@ static void test_checked(void **state) {
     c = pc_ferguson_lambda_checked(2, p, tA, tE, 1, 1, 2, lam, &st, &w);   /* two points: lambda unused */
     assert_non_null(c);
     pc_curve_release(c);
+    const double T[6] = {1, 0, 1, 1, 1, 0}, mags[4] = {1, 1, 1, 1}, Z[6] = {1, 0, 0, 0, 1, 0};
+    assert_null(pc_ferguson_checked(3, p, T, 2, mags, &st, &w));
+    assert_int_equal(w.row[0].arg, 3);
+    assert_string_equal(w.row[0].text, "must hold 4 numbers, got 2");
+    c = pc_ferguson_checked(3, p, T, 4, mags, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    pc_curve_release(c);
+    assert_null(pc_ferguson_checked(3, p, Z, 4, mags, &st, &w));   /* a zero tangent */
+    assert_non_null(strstr(w.row[0].text, "argument #2 (tangents) ("));
+    assert_int_equal(w.row[0].arg, 0);
     c = pc_elastic_checked(3, p, 0, NULL, 0, &E, &st, &w);
     assert_non_null(c);
     assert_null(w.row[0].op);
