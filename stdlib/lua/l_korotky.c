@@ -94,10 +94,10 @@ PCL_BODY(l_ferguson, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     const char *name = pcl_name(L);
     int n = a[0].n, subst = !strcmp(name, "korotky.ferguson_substitution"), bad = -1, st;
-    pc_why_call why;
+    pc_why_call w;   /* the failure explained */
     tangents(L, 2, &a[1], n, T);
     if (!strcmp(name, "korotky.ferguson"))
-        return pcl_made(L, pc_ferguson_checked(n, p, T, a[2].n, a[2].list, &st, &why), &st, why.row);
+        return pcl_made(L, pc_ferguson_checked(n, p, T, a[2].n, a[2].list, &st, &w), &st, w.row);
     if (subst) {
         mags[0] = a[2].x;
         mags[1] = a[3].x;
@@ -110,7 +110,7 @@ PCL_BODY(l_ferguson, a) {
         if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
         st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     }
-    pcl_check(L, pc_ferguson_explain(name, st, bad, &why), why.row);
+    pcl_check(L, pc_ferguson_explain(name, st, bad, &w), w.row);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
     if (subst) pcl_push_rows(L, n - 2, 3, quad);
