@@ -309,11 +309,9 @@ PCL_BODY(l_sweep, a) {
         g[i].c = a[i + 1].obj;
         memcpy(g[i].h, a[i + 1].v, sizeof(double) * 4);
     }
-    double u = 0;
     pc_why_call why;
-    pc_surface *s = ridge ? pc_surface_ridge_shell_of(g, &u, &st)
-                          : pc_surface_conic_sweep(g[0].c, g[1].c, g[2].c, g[3].c, g[4].c, &u, &st);
-    if (!s) pcl_check(L, pc_sweep_explain(ridge, st, u, &why), why.row);
+    pc_surface *s = pc_sweep_checked(ridge, g, &st, &why);
+    if (!s) pcl_check(L, st, why.row);
     return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 

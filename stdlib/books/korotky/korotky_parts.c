@@ -244,6 +244,14 @@ int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int s
     return pc_why_call_set(w, NULL, pc_curve_hausdorff(model, ref, samples, d), 0, NULL, "");
 }
 
+pc_surface *pc_sweep_checked(int ridge, const pc_pencil_point g[8], int *status, pc_why_call *w) {
+    double u = 0;
+    pc_surface *s = ridge ? pc_surface_ridge_shell_of(g, &u, status)
+                          : pc_surface_conic_sweep(g[0].c, g[1].c, g[2].c, g[3].c, g[4].c, &u, status);
+    pc_sweep_explain(ridge, s ? PC_OK : *status, u, w);
+    return s;
+}
+
 int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w) {
     char at[40];
     if (st != PC_EDOMAIN && st != PC_ESKEW && st != PC_ECOINCIDENT && st != PC_EZERO)

@@ -93,6 +93,10 @@ int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int s
 /* The failure st at u of a sweep's conic explained in w (ridge: korotky.ridge_shell's profile
  * arcs, else korotky.conic_sweep's conics; korotky.conic_revolve's are pc_conic_revolve_why's). */
 int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w);
+/* korotky.ridge_shell (ridge: pc_surface_ridge_shell_of of the eight guides g) or
+ * korotky.conic_sweep (pc_surface_conic_sweep of the curves of g[0..4]), a failure explained in
+ * w (pc_sweep_explain; the table empty on success). */
+pc_surface *pc_sweep_checked(int ridge, const pc_pencil_point g[8], int *status, pc_why_call *w);
 pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], const double nA[3], const double nB[3],
                                        pc_curve *ridge, int *status, pc_why_call *w);
 /* pc_dome_tri_height_through explained in w (korotky.dome_tri: the apex D is argument #4). */

@@ -109,6 +109,16 @@ static void test_ridge_shell_of(void **state) {
         NEAR(S[1] * S[1] / 4 + S[2] * S[2] / 2.25, 1, 1e-12);
     }
     pc_surface_release(s);
+    pc_why_call w;   /* korotky.ridge_shell's, its failure explained */
+    s = pc_sweep_checked(1, g, &st, &w);
+    assert_non_null(s);
+    assert_null(w.row[0].op);
+    pc_surface_release(s);
+    pc_curve_release(g[3].c);
+    g[3].c = segment(0, 5, 5, 4, 5, 5);   /* T1 off the profile's tangent lines */
+    assert_null(pc_sweep_checked(1, g, &st, &w));
+    assert_string_equal(w.row[0].op, "korotky.ridge_shell");
+    assert_non_null(strstr(w.row[0].text, "no conic arc of the profile at u = 0 ("));
     for (int i = 0; i < 5; i++) pc_curve_release(g[i].c);
 }
 
