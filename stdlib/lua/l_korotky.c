@@ -249,10 +249,11 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 
 /* ---- the key construction in 4-D --------------------------------------------------------- */
 
-/* a pencil: three 4-D points, vectors or curves (the table in the argument keeps them alive) */
+/* a pencil: three 4-D points, vectors or curves into a new buffer (the table keeps them alive) */
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
-    pc_pencil_point *g = (pc_pencil_point *)out->list;
+    pc_pencil_point *g = lua_newuserdatauv(L, 3 * sizeof *g, 0);
+    out->list = (double *)g;
     static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4};
     for (int i = 0; i < 3; i++) {
         pcl_val v = {0};
@@ -270,12 +271,9 @@ static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
                     .expect = "a list of three 4-D points, vectors or curves"}
 static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
 static const pcl_arg pencils_args[] = {CALLTABLE("pencils", pencil_keys), PCL_END};
-static int l_two_pencils(lua_State *L) {
-    pc_pencil_point om[3], de[3];
-    pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
-    PCL_READ(L, a);
+PCL_BODY(l_two_pencils, a) {
     int st, meet;
-    pc_surface *s = pc_surface_two_pencils_checked(om, de, &st, &meet);
+    pc_surface *s = pc_surface_two_pencils_checked((void *)a[1].list, (void *)a[2].list, &st, &meet);
     if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
     return pcl_push_made_surface(L, s, &st, "korotky.two_pencils");
