@@ -263,11 +263,10 @@ PCL_BODY(l_reconstruct, a) {
 
 static const pcl_arg calibrate_args[] = {A_POINTS("points", 3, 6, 0), A_POINTS("images", 2, 6, 0), PCL_END};
 PCL_BODY(l_calibrate, a) {
-    int n = a[0].n;
-    if (a[1].n != n) return pcl_fail(L, "%d points but %d images", n, a[1].n);
     pc_map *cam = pcl_newmap(L);
     double rms;
-    pcl_check(L, pc_calibrate_camera(n, a[0].list, a[1].list, cam, &rms), WHY);
+    pc_why_call w;
+    pcl_check(L, pc_calibrate_checked(a[0].n, a[0].list, a[1].n, a[1].list, cam, &rms, &w), w.row);
     return 1 + pcl_push_results(L, 0, "n", rms);
 }
 
