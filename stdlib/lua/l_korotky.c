@@ -249,11 +249,12 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 
 /* ---- the key construction in 4-D --------------------------------------------------------- */
 
-/* a pencil: three 4-D points, vectors or curves into a new buffer (the table keeps them alive) */
+/* a pencil: three 4-D points, vectors or curves into a new buffer, out->obj (the table in the
+ * argument keeps them alive) */
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
     pc_pencil_point *g = lua_newuserdatauv(L, 3 * sizeof *g, 0);
-    out->list = (double *)g;
+    out->obj = g;
     static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4};
     for (int i = 0; i < 3; i++) {
         pcl_val v = {0};
@@ -273,7 +274,7 @@ static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END}
 static const pcl_arg pencils_args[] = {CALLTABLE("pencils", pencil_keys), PCL_END};
 PCL_BODY(l_two_pencils, a) {
     int st, meet;
-    pc_surface *s = pc_surface_two_pencils_checked((void *)a[1].list, (void *)a[2].list, &st, &meet);
+    pc_surface *s = pc_surface_two_pencils_checked(a[1].obj, a[2].obj, &st, &meet);
     if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
     return pcl_push_made_surface(L, s, &st, "korotky.two_pencils");
