@@ -180,13 +180,12 @@ static const pcl_arg hermite_args[] = {A_SAMEPOINT("P1"), A_SAMEPOINT("P2"), A_S
 /* buimov.hermite and buimov.hermite_coeffs, one body told apart by the declared name: the
  * segment, or its coefficients */
 PCL_BODY(l_hermite, a) {
-    double p[2 * PC_MAXDIM], dv[2 * PC_MAXDIM], u[2] = {0, a[4].x}, B[4 * PC_MAXDIM];
+    double p[4 * PC_MAXDIM], u[2] = {0, a[4].x}, B[4 * PC_MAXDIM];
     int d = a[0].n, st;
-    pcl_point_rows(a, 2, d, p);
-    pcl_point_rows(a + 2, 2, d, dv);
+    pcl_point_rows(a, 4, d, p);   /* the rows P1, P2, D1, D2 */
     if (!strcmp(pcl_name(L), "buimov.hermite"))
-        return made(L, pc_curve_hermite(d, 2, p, dv, NULL, u, 0, &st), &st, "hermite");
-    pcl_check(L, pc_hermite_coeffs(d, p, p + d, dv, dv + d, a[4].x, B), WHY);
+        return made(L, pc_curve_hermite(d, 2, p, p + 2 * d, NULL, u, 0, &st), &st, "hermite");
+    pcl_check(L, pc_hermite_coeffs(d, p, p + d, p + 2 * d, p + 3 * d, a[4].x, B), WHY);
     return pcl_push_results(L, d, "p v v v", B, B + d, B + 2 * d, B + 3 * d);
 }
 
@@ -264,11 +263,10 @@ PCL_BODY(l_reconstruct, a) {
 
 static const pcl_arg calibrate_args[] = {A_POINTS("points", 3, 6, 0), A_POINTS("images", 2, 6, 0), PCL_END};
 PCL_BODY(l_calibrate, a) {
-    int n = a[0].n;
-    if (a[1].n != n) return pcl_fail(L, "%d points but %d images", n, a[1].n);
     pc_map *cam = pcl_newmap(L);
     double rms;
-    pcl_check(L, pc_calibrate_camera(n, a[0].list, a[1].list, cam, &rms), WHY);
+    pc_why_call w;
+    pcl_check(L, pc_calibrate_checked(a[0].n, a[0].list, a[1].n, a[1].list, cam, &rms, &w), w.row);
     return 1 + pcl_push_results(L, 0, "n", rms);
 }
 

@@ -44,14 +44,6 @@ static void tangents(lua_State *L, int k, const pcl_val *v, int n, double *T) {
     }
 }
 
-/* The count a list must have when it depends on another argument (lambda: n - 2 numbers). */
-static void need_count(lua_State *L, const pcl_val *v, const char *key, int k, int n) {
-    if (v->present && v->n != n) {
-        if (key) pcl_keyfail(L, key, "must hold %d numbers, got %d", n, v->n);
-        pcl_argfail(L, k, "must hold %d numbers, got %d", n, v->n);
-    }
-}
-
 /* ---- polynomial spline -------------------------------------------------------------------- */
 
 static const pcl_arg poly_keys[] = {A_ENUM("ends", pc_poly_spline_ends), A_NUM("s0"), A_NUM("s1"),
@@ -59,14 +51,12 @@ static const pcl_arg poly_keys[] = {A_ENUM("ends", pc_poly_spline_ends), A_NUM("
 static const pcl_arg poly_args[] = {A_POINTS("points", 2, 2, MAXPTS), A_OPTIONS("opts", poly_keys), PCL_END};
 PCL_BODY(l_poly_spline, a) {
     double coef[4 * MAXPTS];
-    int n = a[0].n, ends = a[2].n, bad = -1, st;   /* ends: a pc_end_kind */
-    if (ends == PC_END_CLAMPED && (!a[3].present || !a[4].present))
-        return pcl_fail(L, "clamped ends need the end slopes s0 and s1 (numbers)");
-    pc_curve *c = pc_poly_spline_points(n, a[0].list, ends, a[3].x, a[4].x, coef, &bad, &st);
+    int st, slopes = a[3].present && a[4].present;   /* a[2].n: the ends, a pc_end_kind */
     pc_why_call why;
-    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
-    pcl_pushcurve(L, c, "korotky.poly_spline");
-    pcl_push_rows(L, n - 1, 4, coef);
+    pc_curve *c = pc_poly_spline_checked(a[0].n, a[0].list, a[2].n, slopes, a[3].x, a[4].x, coef,
+                                         &st, &why);
+    pcl_made(L, c, &st, why.row);
+    pcl_push_rows(L, a[0].n - 1, 4, coef);
     return 2;
 }
 
@@ -80,13 +70,11 @@ static const pcl_arg lambda_keys[] = {END_TANGENT("TA", "first"), END_TANGENT("T
 static const pcl_arg lambda_args[] = {A_POINTS("points", 2, 2, MAXPTS),
                                       {.name = "opts", .kind = PCL_OPTIONS, .keys = lambda_keys}, PCL_END};
 PCL_BODY(l_ferguson_lambda, a) {
-    int n = a[0].n, bad = -1, st;
-    if (n > 2 && !a[6].present) return pcl_keyfail(L, "lambda", "must be a list of %d numbers, got nil", n - 2);
-    need_count(L, &a[6], "lambda", 0, n > 2 ? n - 2 : a[6].n);
-    pc_curve *c = pc_ferguson_lambda_curve(n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, a[6].list, &bad, &st);
+    int st, nl = a[6].present ? a[6].n : -1;   /* the ratios lambda given */
     pc_why_call why;
-    if (!c) pcl_check(L, pc_ferguson_explain(pcl_name(L), st, bad, &why), why.row);
-    return pcl_push_made(L, c, &st, "korotky.ferguson_lambda");
+    pc_curve *c = pc_ferguson_lambda_checked(a[0].n, a[0].list, a[2].v, a[3].v, a[4].x, a[5].x, nl,
+                                             a[6].list, &st, &why);
+    return pcl_made(L, c, &st, why.row);
 }
 
 static const pcl_arg ferguson_args[] = {A_POINTS("points", 2, 2, MAXPTS), TANGENTS,
@@ -106,26 +94,23 @@ PCL_BODY(l_ferguson, a) {
     double *p = a[0].list, T[2 * MAXPTS], mags[2 * MAXPTS], quad[3 * MAXPTS];
     const char *name = pcl_name(L);
     int n = a[0].n, subst = !strcmp(name, "korotky.ferguson_substitution"), bad = -1, st;
+    pc_why_call w;   /* the failure explained */
     tangents(L, 2, &a[1], n, T);
-    if (!strcmp(name, "korotky.ferguson")) {
-        need_count(L, &a[2], NULL, 3, 2 * n - 2);
-        pc_curve *c = pc_ferguson_curve(n, p, T, a[2].list, &st);
-        if (!c) return pcl_statuserror(L, name, st, "argument #2 (tangents)");
-        return pcl_pushcurve(L, c, "korotky.ferguson");
-    }
+    if (!strcmp(name, "korotky.ferguson"))
+        return pcl_made(L, pc_ferguson_checked(n, p, T, a[2].n, a[2].list, &st, &w), &st, w.row);
     if (subst) {
         mags[0] = a[2].x;
         mags[1] = a[3].x;
         st = pc_ferguson_substitution(n, p, T, mags, a[4].n, quad, &bad);
     } else {
-        need_count(L, &a[5], "start", 0, 2 * n - 4);
+        if (a[5].present && a[5].n != 2 * n - 4)   /* the unknown moduli's start */
+            pcl_keyfail(L, "start", "must hold %d numbers, got %d", 2 * n - 4, a[5].n);
         mags[0] = a[3].x;
         mags[2 * n - 3] = a[4].x;
         if (a[5].present) memcpy(mags + 1, a[5].list, sizeof(double) * (size_t)(2 * n - 4));
         st = pc_ferguson_tangents(n, p, T, mags, a[5].present, &bad);
     }
-    pc_why_call why;
-    pcl_check(L, pc_ferguson_explain(name, st, bad, &why), why.row);
+    pcl_check(L, pc_ferguson_explain(name, st, bad, &w), w.row);
     pcl_push_made(L, pc_ferguson_curve(n, p, T, mags, &st), &st, "korotky.ferguson");
     pcl_push_numbers(L, 2 * n - 2, mags);
     if (subst) pcl_push_rows(L, n - 2, 3, quad);
@@ -156,12 +141,11 @@ static const pcl_arg elastic_args[] = {A_POINTS("points", 2, 2, PC_ELASTIC_MAXN)
                                        PCL_END};
 PCL_BODY(l_elastic, a) {
     double E;
-    int n = a[0].n, pieces = (int)a[3].x, st;   /* absent: 0, as many as the points allow */
-    double len = a[4].x;                         /* absent: 0, the length is free */
-    pc_curve *c = pc_elastic_length(n, a[0].list, pieces, a[2].present ? a[2].v : NULL, len, &E, &st);
+    int st;   /* pieces absent: 0, as many as the points allow; length absent: 0, free */
     pc_why_call why;
-    if (!c) pcl_check(L, pc_elastic_explain(st, n, pieces, len, &why), why.row);
-    pcl_push_made(L, c, &st, "korotky.elastic");
+    pc_curve *c = pc_elastic_checked(a[0].n, a[0].list, (int)a[3].x, a[2].present ? a[2].v : NULL,
+                                     a[4].x, &E, &st, &why);
+    pcl_made(L, c, &st, why.row);
     return 1 + pcl_push_results(L, 0, "n", E);
 }
 
@@ -265,10 +249,12 @@ static int read_guide(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
 
 /* ---- the key construction in 4-D --------------------------------------------------------- */
 
-/* a pencil: three 4-D points, vectors or curves (the table in the argument keeps them alive) */
+/* a pencil: three 4-D points, vectors or curves into a new buffer, out->obj (the table in the
+ * argument keeps them alive) */
 static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 3) return 0;
-    pc_pencil_point *g = (pc_pencil_point *)out->list;
+    pc_pencil_point *g = lua_newuserdatauv(L, 3 * sizeof *g, 0);
+    out->obj = g;
     static const pcl_arg g4 = {.kind = PCL_ANY, .dim = 4};
     for (int i = 0; i < 3; i++) {
         pcl_val v = {0};
@@ -286,12 +272,9 @@ static int read_pencil(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
                     .expect = "a list of three 4-D points, vectors or curves"}
 static const pcl_arg pencil_keys[] = {PENCIL("omega"), PENCIL("delta"), PCL_END};
 static const pcl_arg pencils_args[] = {CALLTABLE("pencils", pencil_keys), PCL_END};
-static int l_two_pencils(lua_State *L) {
-    pc_pencil_point om[3], de[3];
-    pcl_val a[3] = {{0}, {.list = (double *)om}, {.list = (double *)de}};
-    PCL_READ(L, a);
+PCL_BODY(l_two_pencils, a) {
     int st, meet;
-    pc_surface *s = pc_surface_two_pencils_checked(om, de, &st, &meet);
+    pc_surface *s = pc_surface_two_pencils_checked(a[1].obj, a[2].obj, &st, &meet);
     if (meet != PC_OK) return pcl_fail(L, "no single meet at u = v = 0.5: %s", pc_meet_planes4_why(meet, 1));
     if (!s) return pcl_statuserror(L, pcl_name(L), st, NULL);
     return pcl_push_made_surface(L, s, &st, "korotky.two_pencils");
@@ -325,11 +308,9 @@ PCL_BODY(l_sweep, a) {
         g[i].c = a[i + 1].obj;
         memcpy(g[i].h, a[i + 1].v, sizeof(double) * 4);
     }
-    double u = 0;
     pc_why_call why;
-    pc_surface *s = ridge ? pc_surface_ridge_shell_of(g, &u, &st)
-                          : pc_surface_conic_sweep(g[0].c, g[1].c, g[2].c, g[3].c, g[4].c, &u, &st);
-    if (!s) pcl_check(L, pc_sweep_explain(ridge, st, u, &why), why.row);
+    pc_surface *s = pc_sweep_checked(ridge, g, &st, &why);
+    if (!s) pcl_check(L, st, why.row);
     return pcl_push_made_surface(L, s, &st, pcl_name(L));
 }
 
@@ -339,9 +320,7 @@ PCL_BODY(l_sweep, a) {
 static int read_conic(lua_State *L, int idx, const pcl_arg *a, pcl_val *out) {
     pc_curve *c = pcl_tocurve(L, idx);
     out->obj = c;
-    /* an arc, or the line pair of korotky.conic_arc with T = W (two quadratic pieces, told
-     * apart in l_conic_elements) */
-    if (c) return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
+    if (c) return pc_conic_arc_shaped(c);   /* an arc, or korotky.conic_arc's line pair (T = W) */
     if (!lua_istable(L, idx) || luaL_len(L, idx) != 6) return 0;
     pcl_val coef = {.list = out->v, .cap = 6};
     pcl_readone(L, idx, 1, 0, &(const pcl_arg){.name = a->name, .kind = PCL_NUMBERS, .lo = 6, .hi = 6}, 0, &coef);

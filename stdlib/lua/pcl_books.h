@@ -1,11 +1,9 @@
-/* Shared by the bindings of the books and the maps (l_buimov.c, l_korotky.c, l_map.c,
- * l_conic_elements.c). */
+/* Shared by the bindings of the books and the maps. */
 #ifndef PCL_BOOKS_H
 #define PCL_BOOKS_H
 #include "pcl.h"
 
-/* Push the table of a conic's elements (l_conic_elements.c): kind, circle, discriminant, coef,
- * center | vertex, axes, semi, a, b, foci, e, p, asymptotes, mu, w, k, k_ceva; 1. */
+/* Push the table of a conic's elements, c:conic()'s (l_conic_elements.c); 1. */
 struct pc_conic_info;
 int pcl_push_conic_info(lua_State *L, const struct pc_conic_info *o);
 /* Push a table of nr rows, each a list of nc numbers, from m row by row (l_conic_elements.c). */

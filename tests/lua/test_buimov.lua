@@ -409,6 +409,8 @@ local flat = {P(0, 0, 0), P(1, 0, 0), P(0, 1, 0), P(1, 1, 0), P(2, 1, 0), P(1, 3
 local fimg = {}
 for i, X in ipairs(flat) do fimg[i] = camx(X) end
 err(function() buimov.calibrate(flat, fimg) end, "buimov.calibrate: the points do not fix a camera", "coplanar")
+fimg[7] = P(0, 0)
+err(function() buimov.calibrate(flat, fimg) end, "buimov.calibrate: 6 points but 7 images", "a point per image")
 err(function() buimov.det({{1, 2}, {3}}) end, "buimov.det: argument #1 (rows) row [2] must be a list of 2 numbers", "det ragged")
 err(function() buimov.det({{1, 2}, {3, 0 / 0}}) end, "buimov.det: argument #1 (rows) entry [2][2] must be a finite number", "det NaN")
 err(function() buimov.det({}) end, "buimov.det: argument #1 (rows) must hold 1 to 17 rows, got 0", "det empty")

@@ -163,6 +163,8 @@ err(function() korotky.ferguson_lambda(pts, {TA = 1, TE = 1, lambda = {1, 0, 1}}
     "korotky.ferguson_lambda: option 'lambda' [2] (at knot #3) must be positive")
 err(function() korotky.ferguson_lambda(pts, {TA = 1, TE = 1, lambda = {1, 1}}) end,
     "korotky.ferguson_lambda: option 'lambda' must hold 3 numbers, got 2")
+err(function() korotky.ferguson_lambda(pts, {TA = 1, TE = 1}) end,
+    "korotky.ferguson_lambda: option 'lambda' must be a list of 3 numbers, got nil")
 err(function() korotky.ferguson_substitution(pts, tg3, 1, 0) end,
     "korotky.ferguson_substitution: argument #4 (z1) must be a positive number, got 0")
 err(function() korotky.ferguson_substitution(pts, tg3, 1, 2, "mid") end,

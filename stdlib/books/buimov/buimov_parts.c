@@ -2,6 +2,8 @@
 #include "buimov_parts.h"
 #include <math.h>
 #include "names.h"
+#include "reconstruct.h"
+#include "buimov_why.h"
 
 int pc_bezier_points(const pc_curve *c, double *out) {
     int ok = c->kind == PC_CURVE_BEZIER && c->nknots == 2;
@@ -115,4 +117,10 @@ int pc_conic_points_checked(pc_gen_kind kind, pc_gen_method method, double A, in
     int st = pc_conic_points(kind, method, A, B, step, n, xy);
     return pc_why_call_set(w, st == PC_EDOMAIN ? op : NULL, st, 0, NULL,
                            "the steps leave the curve's domain (the explicit circle beyond x = -A, the sec form at 90 degrees)");
+}
+
+int pc_calibrate_checked(int n, const double *xyz, int m, const double *xy, pc_map *cam, double *rms,
+                         pc_why_call *w) {
+    if (m != n) return pc_why_call_set(w, "buimov.calibrate", PC_EDIM, 0, NULL, "%d points but %d images", n, m);
+    return pc_why_call_row(w, pc_buimov_why, "buimov.calibrate", pc_calibrate_camera(n, xyz, xy, cam, rms));
 }

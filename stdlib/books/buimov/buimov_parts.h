@@ -5,6 +5,7 @@
 #include "curve.h"
 #include "buimov.h"
 #include "plane_curves.h"
+#include "map.h"
 #include "why_call.h"
 
 /* The Cartesian control points of a polynomial single-piece Bezier curve (every weight 1)
@@ -47,6 +48,10 @@ int pc_conic_points_checked(pc_gen_kind kind, pc_gen_method method, double A, in
  * PC_OK, or PC_EDOMAIN with the broken condition explained in w. */
 int pc_book_spline_check(int n, pc_book_ends *ends, int ends_given, int nd, int param_given, int nlen,
                          const double *len, pc_why_call *w);
+/* pc_calibrate_camera of the n points xyz and their m images xy (as many as the points), its
+ * failure explained in w (buimov.calibrate: the counts, the rows of pc_buimov_why). */
+int pc_calibrate_checked(int n, const double *xyz, int m, const double *xy, pc_map *cam, double *rms,
+                         pc_why_call *w);
 /* pc_book_basis with its conditions explained in w (buimov.basis): the knots must not
  * decrease, and N(i, k) needs the knots q[i] .. q[i + k]. */
 int pc_book_basis_checked(const double *q, int nq, int i, int k, double t, double *out, pc_why_call *w);

@@ -82,6 +82,50 @@ int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w) {
     return pc_why_call_set(w, NULL, st, 0, NULL, "");
 }
 
+pc_curve *pc_ferguson_checked(int n, const double *p, const double *T, int nm, const double *mags, int *status,
+                              pc_why_call *w) {
+    const char *op = "korotky.ferguson";
+    pc_curve *c = NULL;
+    if (nm != 2 * n - 2)
+        *status = pc_why_call_set(w, op, PC_EDIM, 3, NULL, "must hold %d numbers, got %d", 2 * n - 2, nm);
+    else if (!(c = pc_ferguson_curve(n, p, T, mags, status)))
+        pc_why_call_set(w, op, *status, 0, NULL, "argument #2 (tangents) (%s)", pc_strerror(*status));
+    else
+        pc_why_call_set(w, NULL, PC_OK, 0, NULL, "");
+    return c;
+}
+
+pc_curve *pc_poly_spline_checked(int n, const double *p, pc_end_kind ends, int slopes, double s0,
+                                 double s1, double *coef, int *status, pc_why_call *w) {
+    const char *op = "korotky.poly_spline";
+    int bad = -1;
+    if (ends == PC_END_CLAMPED && !slopes) {
+        *status = pc_why_call_set(w, op, PC_EDOMAIN, 0, NULL,
+                                  "clamped ends need the end slopes s0 and s1 (numbers)");
+        return NULL;
+    }
+    pc_curve *c = pc_poly_spline_points(n, p, ends, s0, s1, coef, &bad, status);
+    pc_ferguson_explain(op, c ? PC_OK : *status, bad, w);
+    return c;
+}
+
+pc_curve *pc_ferguson_lambda_checked(int n, const double *p, const double tA[2], const double tE[2],
+                                     double wA, double wE, int nl, const double *lambda,
+                                     int *status, pc_why_call *w) {
+    const char *op = "korotky.ferguson_lambda";
+    int bad = -1;
+    if (n > 2 && nl != n - 2) {
+        if (nl < 0)
+            *status = pc_why_call_set(w, op, PC_EDOMAIN, 0, "lambda", "must be a list of %d numbers, got nil", n - 2);
+        else
+            *status = pc_why_call_set(w, op, PC_EDOMAIN, 0, "lambda", "must hold %d numbers, got %d", n - 2, nl);
+        return NULL;
+    }
+    pc_curve *c = pc_ferguson_lambda_curve(n, p, tA, tE, wA, wE, lambda, &bad, status);
+    pc_ferguson_explain(op, c ? PC_OK : *status, bad, w);
+    return c;
+}
+
 const char *pc_conic_arc_why(int st) {
     return st == PC_ESKEW        ? "the tangents must lie in the plane of U, V and T"
            : st == PC_EDOMAIN     ? "T must lie between the tangent lines, on an arc from U to V that stays finite"
@@ -123,8 +167,12 @@ pc_curve *pc_ferguson_lambda_curve(int n, const double *p, const double tA[2], c
     return *status == PC_OK ? pc_curve_hermite(2, n, p, dout, din, NULL, 0, status) : NULL;
 }
 
+int pc_conic_arc_shaped(const pc_curve *c) {
+    return c->dim == 2 && c->kind == PC_CURVE_BEZIER && c->degree == 2 && (c->ncp == 3 || c->ncp == 5);
+}
+
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]) {
-    if (c->dim != 2 || c->kind != PC_CURVE_BEZIER || c->degree != 2 || (c->ncp != 3 && c->ncp != 5)) return PC_EDIM;
+    if (!pc_conic_arc_shaped(c)) return PC_EDIM;
     if (c->ncp == 5) return pc_conic_line_pair(c->cp, w) ? PC_ESAME_LINE : PC_EDIM;
     return pc_conic_info_rquad(c->cp, out);
 }
@@ -147,6 +195,13 @@ int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_
                                "a degenerate conic: its lines meet at W = P(%s, %s)",
                                lua_num_text(at[0], x, sizeof x), lua_num_text(at[1], y, sizeof y));
     return pc_why_call_row(w, pc_korotky_why, op, st);
+}
+
+pc_curve *pc_elastic_checked(int n, const double *p, int pieces, const double *end_angles,
+                             double len, double *energy, int *status, pc_why_call *w) {
+    pc_curve *c = pc_elastic_length(n, p, pieces, end_angles, len, energy, status);
+    pc_elastic_explain(c ? PC_OK : *status, n, pieces, len, w);
+    return c;
 }
 
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w) {
@@ -187,6 +242,14 @@ int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int s
                                "argument #2 (reference) is %d-D, but argument #1 (model) is %d-D (mixed dimensions)",
                                ref->dim, model->dim);
     return pc_why_call_set(w, NULL, pc_curve_hausdorff(model, ref, samples, d), 0, NULL, "");
+}
+
+pc_surface *pc_sweep_checked(int ridge, const pc_pencil_point g[8], int *status, pc_why_call *w) {
+    double u = 0;
+    pc_surface *s = ridge ? pc_surface_ridge_shell_of(g, &u, status)
+                          : pc_surface_conic_sweep(g[0].c, g[1].c, g[2].c, g[3].c, g[4].c, &u, status);
+    pc_sweep_explain(ridge, s ? PC_OK : *status, u, w);
+    return s;
 }
 
 int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w) {

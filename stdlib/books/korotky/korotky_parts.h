@@ -45,12 +45,28 @@ const char *pc_meet_planes4_why(int st, int pencil);
  * korotky.ferguson_lambda: the end tangents and the ratios lambda; the others: the knot); an
  * empty table for a failure at no knot.  Returns st. */
 int pc_ferguson_explain(const char *op, int st, int bad, pc_why_call *w);
+/* korotky.ferguson: pc_ferguson_curve with nm moduli (2n - 2 needed: argument #3), a failure
+ * explained in w (the count; the curve's status, on the tangents); the table empty on success. */
+pc_curve *pc_ferguson_checked(int n, const double *p, const double *T, int nm, const double *mags, int *status,
+                              pc_why_call *w);
+/* korotky.poly_spline: pc_poly_spline_points, clamped ends needing both end slopes (slopes 1:
+ * s0 and s1 given), a failure explained in w (pc_ferguson_explain; the table empty on success). */
+pc_curve *pc_poly_spline_checked(int n, const double *p, pc_end_kind ends, int slopes, double s0,
+                                 double s1, double *coef, int *status, pc_why_call *w);
+/* korotky.ferguson_lambda: pc_ferguson_lambda_curve with nl ratios lambda (-1: none given; past
+ * two points n - 2 are needed), a failure explained in w as pc_poly_spline_checked's. */
+pc_curve *pc_ferguson_lambda_checked(int n, const double *p, const double tA[2], const double tE[2],
+                                     double wA, double wE, int nl, const double *lambda,
+                                     int *status, pc_why_call *w);
 
 /* The elements of a 2-D conic arc c: one rational quadratic piece (pc_conic_info_rquad and its
  * statuses), or the two pieces of korotky.conic_arc with T = W: PC_ESAME_LINE when they are the
  * line pair U W V (the degenerate section AOD of Fig. 3c), its lines meeting at W (into w), else
  * PC_EDIM.  PC_EDIM for any other curve. */
 int pc_conic_info_arc(const pc_curve *c, pc_conic_info *out, double w[2]);
+/* 1 if c has the shape pc_conic_info_arc takes: a 2-D quadratic Bezier curve of one piece (3
+ * control points) or of the two pieces of korotky.conic_arc with T = W (5), else 0. */
+int pc_conic_arc_shaped(const pc_curve *c);
 /* The elements of korotky.conic_elements: of the arc c (pc_conic_info_arc) or, c NULL, of the
  * coefficients coef (pc_conic_info_coef), a failure explained in w: the line pair U W V with the
  * point W where its lines meet, else the rows of pc_korotky_why (another status with an empty
@@ -62,6 +78,10 @@ int pc_conic_elements_checked(const pc_curve *c, const double coef[6], pc_conic_
  * and the length len (0: free), explained in w (korotky.elastic; an empty table for a status
  * it does not explain); returns st. */
 int pc_elastic_explain(int st, int n, int pieces, double len, pc_why_call *w);
+/* korotky.elastic: pc_elastic_length, a failure explained in w (pc_elastic_explain; the table
+ * empty on success). */
+pc_curve *pc_elastic_checked(int n, const double *p, int pieces, const double *end_angles,
+                             double len, double *energy, int *status, pc_why_call *w);
 /* pc_graphical_slope with its conditions explained in w (korotky.graphical_slope): the window
  * 3..n, the x increasing, x within the samples. */
 int pc_graphical_slope_checked(int n, const double *xy, double x, int window, double *slope, pc_why_call *w);
@@ -73,6 +93,10 @@ int pc_curve_hausdorff_checked(const pc_curve *model, const pc_curve *ref, int s
 /* The failure st at u of a sweep's conic explained in w (ridge: korotky.ridge_shell's profile
  * arcs, else korotky.conic_sweep's conics; korotky.conic_revolve's are pc_conic_revolve_why's). */
 int pc_sweep_explain(int ridge, int st, double u, pc_why_call *w);
+/* korotky.ridge_shell (ridge: pc_surface_ridge_shell_of of the eight guides g) or
+ * korotky.conic_sweep (pc_surface_conic_sweep of the curves of g[0..4]), a failure explained in
+ * w (pc_sweep_explain; the table empty on success). */
+pc_surface *pc_sweep_checked(int ridge, const pc_pencil_point g[8], int *status, pc_why_call *w);
 pc_surface *pc_conic_revolve_explained(const double A[3], const double B[3], const double nA[3], const double nB[3],
                                        pc_curve *ridge, int *status, pc_why_call *w);
 /* pc_dome_tri_height_through explained in w (korotky.dome_tri: the apex D is argument #4). */

@@ -100,6 +100,13 @@ static void conic_coef_by_kind(void **state) {
     assert_int_equal(pc_conic_points_checked(PC_GEN_CIRCLE, PC_GEN_PARAM, 2, 0, 0, 0.5, 4, xy, &w), PC_OK);
     NEAR(xy[2], 2 * cos(0.5), 1e-15); NEAR(xy[3], 2 * sin(0.5), 1e-15);
     assert_string_equal(pc_gen_kind_names[PC_GEN_HYPERBOLA_COSH], "hyperbola_ch");
+    pc_map cam;   /* buimov.calibrate: points and images pair up; six coplanar points fix no camera */
+    double rms, flat[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 1, 3, 0}, img[14] = {0};
+    assert_int_equal(pc_calibrate_checked(6, flat, 7, img, &cam, &rms, &w), PC_EDIM);
+    assert_string_equal(w.row[0].text, "6 points but 7 images");
+    assert_int_equal(pc_calibrate_checked(6, flat, 6, img, &cam, &rms, &w), PC_ESINGULAR);
+    assert_string_equal(w.row[0].op, "buimov.calibrate");
+    assert_string_equal(w.row[0].text, pc_why_find(pc_buimov_why, "buimov.calibrate", PC_ESINGULAR)->text);
     assert_string_equal(pc_conic_names[PC_CONIC_PARABOLA], "parabola");
     assert_string_equal(pc_conic_names[PC_CONIC_HYPERBOLA], "hyperbola");
     assert_null(pc_conic_names[3]);

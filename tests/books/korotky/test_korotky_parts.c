@@ -31,6 +31,58 @@ static void test_poly_spline_points(void **state) {
     assert_int_equal(bad, 2);
 }
 
+/* korotky.poly_spline, korotky.ferguson_lambda and korotky.elastic with their conditions
+ * explained: the clamped ends' slopes, the count of the ratios lambda, a failure at a knot */
+static void test_checked(void **state) {
+    (void)state;
+    const double p[6] = {0, 0, 1, 1, 2, 4}, back[6] = {0, 0, 1, 1, 1, 4}, tA[2] = {1, 0}, tE[2] = {1, 4};
+    const double lam[2] = {1, 1};
+    double coef[8], E;
+    int st;
+    pc_why_call w;
+    assert_null(pc_poly_spline_checked(3, p, PC_END_CLAMPED, 0, 0, 0, coef, &st, &w));
+    assert_string_equal(w.row[0].text, "clamped ends need the end slopes s0 and s1 (numbers)");
+    assert_null(w.row[0].key);
+    pc_curve *c = pc_poly_spline_checked(3, p, PC_END_CLAMPED, 1, 0, 4, coef, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    NEAR(coef[2], 1, 1e-14);
+    pc_curve_release(c);
+    assert_null(pc_poly_spline_checked(3, back, PC_END_NATURAL, 0, 0, 0, coef, &st, &w));
+    assert_int_equal(w.row[0].arg, 1);
+    assert_string_equal(w.row[0].text, "[3] must lie right of the point before (x must increase)");
+    assert_null(pc_ferguson_lambda_checked(3, p, tA, tE, 1, 1, -1, NULL, &st, &w));
+    assert_string_equal(w.row[0].key, "lambda");
+    assert_string_equal(w.row[0].text, "must be a list of 1 numbers, got nil");
+    assert_null(pc_ferguson_lambda_checked(3, p, tA, tE, 1, 1, 2, lam, &st, &w));
+    assert_string_equal(w.row[0].text, "must hold 1 numbers, got 2");
+    c = pc_ferguson_lambda_checked(3, p, tA, tE, 1, 1, 1, lam, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    pc_curve_release(c);
+    c = pc_ferguson_lambda_checked(2, p, tA, tE, 1, 1, 2, lam, &st, &w);   /* two points: lambda unused */
+    assert_non_null(c);
+    pc_curve_release(c);
+    const double T[6] = {1, 0, 1, 1, 1, 0}, mags[4] = {1, 1, 1, 1}, Z[6] = {1, 0, 0, 0, 1, 0};
+    assert_null(pc_ferguson_checked(3, p, T, 2, mags, &st, &w));
+    assert_int_equal(w.row[0].arg, 3);
+    assert_string_equal(w.row[0].text, "must hold 4 numbers, got 2");
+    c = pc_ferguson_checked(3, p, T, 4, mags, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    pc_curve_release(c);
+    assert_null(pc_ferguson_checked(3, p, Z, 4, mags, &st, &w));   /* a zero tangent */
+    assert_non_null(strstr(w.row[0].text, "argument #2 (tangents) ("));
+    assert_int_equal(w.row[0].arg, 0);
+    c = pc_elastic_checked(3, p, 0, NULL, 0, &E, &st, &w);
+    assert_non_null(c);
+    assert_null(w.row[0].op);
+    pc_curve_release(c);
+    assert_null(pc_elastic_checked(3, p, 0, NULL, 1, &E, &st, &w));   /* shorter than the polyline */
+    assert_int_equal(st, PC_EDOMAIN);
+    assert_non_null(strstr(w.row[0].text, "is not longer than the polyline"));
+}
+
 static pc_curve *segment(double x0, double y0, double z0, double x1, double y1, double z1) {
     double cp[8] = {x0, y0, z0, 1, x1, y1, z1, 1};
     int st;
@@ -57,6 +109,16 @@ static void test_ridge_shell_of(void **state) {
         NEAR(S[1] * S[1] / 4 + S[2] * S[2] / 2.25, 1, 1e-12);
     }
     pc_surface_release(s);
+    pc_why_call w;   /* korotky.ridge_shell's, its failure explained */
+    s = pc_sweep_checked(1, g, &st, &w);
+    assert_non_null(s);
+    assert_null(w.row[0].op);
+    pc_surface_release(s);
+    pc_curve_release(g[3].c);
+    g[3].c = segment(0, 5, 5, 4, 5, 5);   /* T1 off the profile's tangent lines */
+    assert_null(pc_sweep_checked(1, g, &st, &w));
+    assert_string_equal(w.row[0].op, "korotky.ridge_shell");
+    assert_non_null(strstr(w.row[0].text, "no conic arc of the profile at u = 0 ("));
     for (int i = 0; i < 5; i++) pc_curve_release(g[i].c);
 }
 
@@ -103,6 +165,7 @@ static void test_conic_info_arc(void **state) {
     assert_non_null(c);
     pc_conic_info o;
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_OK);
+    assert_true(pc_conic_arc_shaped(c));
     assert_int_equal(o.kind, PC_CK_ELLIPSE);
     NEAR(o.center[0], 1, 1e-12); NEAR(o.center[1], 0, 1e-12);
     NEAR(o.semi[0], 1, 1e-12); NEAR(o.semi[1], .5, 1e-12);
@@ -111,6 +174,7 @@ static void test_conic_info_arc(void **state) {
     c = pc_conic_arc(2, U, sU, V, sV, Wp, &w, &st);
     assert_non_null(c);
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_ESAME_LINE);
+    assert_true(pc_conic_arc_shaped(c));   /* two quadratic pieces, 5 control points */
     NEAR(W[0], 1, 1e-12); NEAR(W[1], 1, 1e-12);
     pc_why_call why;   /* korotky.conic_elements words it with W as Lua shows numbers */
     assert_int_equal(pc_conic_elements_checked(c, NULL, &o, &why), PC_ESAME_LINE);
@@ -130,6 +194,7 @@ static void test_conic_info_arc(void **state) {
     c = pc_curve_bezier(2, 4, cub, &st);
     assert_non_null(c);
     assert_int_equal(pc_conic_info_arc(c, &o, W), PC_EDIM);
+    assert_false(pc_conic_arc_shaped(c));
     assert_int_equal(pc_why_find(pc_korotky_why, "korotky.conic_elements", PC_EDIM)->arg, 1);
     pc_curve_release(c);
     assert_non_null(strstr(pc_why_find(pc_korotky_why, "korotky.dome_tri", PC_ECOLLINEAR)->text, "flat"));
@@ -233,7 +298,7 @@ int main(void) {
         cmocka_unit_test(test_line_pair), cmocka_unit_test(test_why),
         cmocka_unit_test(test_conic_info_arc), cmocka_unit_test(test_ferguson_lambda_curve),
         cmocka_unit_test(test_explained), cmocka_unit_test(test_ferguson_explain),
-        cmocka_unit_test(test_hausdorff_checked),
+        cmocka_unit_test(test_hausdorff_checked), cmocka_unit_test(test_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
