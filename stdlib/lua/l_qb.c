@@ -30,10 +30,8 @@ PCL_BODY(l_f32, a) {
 PCL_BODY(l_round, a) {
     int ok;
     double r = (strcmp(pcl_name(L), "qb.cint") ? qb_clng : qb_cint)(a[0].x, &ok);
-    if (ok) lua_pushinteger(L, (lua_Integer)r);
-    else lua_pushnumber(L, r);
-    lua_pushboolean(L, ok);
-    return 2;
+    if (ok) return pcl_push_results(L, 0, "i b", (int)r, ok);   /* ok: an INTEGER or a LONG */
+    return pcl_push_results(L, 0, "n b", r, ok);
 }
 
 /* The state in the shared upvalue: the debug library can replace it (debug.setupvalue), so
@@ -68,9 +66,7 @@ PCL_BODY(l_seed, a) {
 static int range_iter(lua_State *L) {
     qb_range *r = upvalue_state(L, lua_upvalueindex(1), sizeof(qb_range), "range");
     double v;
-    if (!qb_range_next(r, &v)) return 0;
-    lua_pushnumber(L, v);
-    return 1;
+    return qb_range_next(r, &v) ? pcl_push_results(L, 0, "n", v) : 0;
 }
 
 PCL_BODY(l_range, a) {
