@@ -1,7 +1,9 @@
 /* The built-in bitmap font: VGA 8x16 character cells, so raster output needs no font files.
  * The glyphs and the Unicode table are generated at build time (tools/psf2c.c) from the
- * console font Uni2-VGA16 of the Debian package console-setup-linux (Latin, Greek, Cyrillic,
- * box drawing); nothing of the font is kept in the repository.  The 8x8 and 8x14 cells of
+ * console font Uni2-VGA16 of the Debian package console-setup-linux (Latin, Greek, Cyrillic),
+ * its box drawings and block elements from FullGreek-VGA16 (Uni2 draws code page 437's double
+ * lines as single ones and lacks the half blocks); nothing of the font is kept in the
+ * repository.  The 8x8 and 8x14 cells of
  * QBasic's other screen modes (13, 1, 2, 7: 8x8; 9: 8x14) come the same way from Uni2-VGA8
  * and Uni2-VGA14, and the code page 437 table of QBasic's strings from iconv (tools/cp437.c).
  *

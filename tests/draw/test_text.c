@@ -18,7 +18,7 @@ static const uint8_t vga_A[16] = {0x00, 0x00, 0x10, 0x38, 0x6c, 0xc6, 0xc6, 0xfe
 
 static void test_font_has_vga_glyphs(void **state) {
     (void)state;
-    assert_int_equal(pc_font_nglyphs, 512);
+    assert_int_equal(pc_font_nglyphs, 512 + 48);   /* Uni2-VGA16, then FullGreek's boxes */
     assert_memory_equal(pc_font_bits[pc_font_glyph('A')], vga_A, 16);
     /* Latin, Greek and Cyrillic are in the font; a character it lacks gets the replacement */
     int repl = pc_font_replacement;
@@ -42,6 +42,47 @@ static void assert_glyph_at(const pc_canvas *c, int x0, int y0, int g, int s, in
             if (got != (ink ? col : 0))
                 fail_msg("glyph %d at scale %d: pixel (%d, %d) is %d", g, s, x, y, got);
         }
+}
+
+/* Code page 437's box drawings and blocks, in each cell size: the double lines are double (two
+ * full rows for CHR$(205), two columns for CHR$(186)), not the single CHR$(196), CHR$(179);
+ * the half blocks CHR$(220), CHR$(223), CHR$(221), CHR$(222) are halves, not the replacement. */
+static const uint8_t *rows_of(const pc_font *f, uint32_t cp) {
+    return f->bits + (size_t)pc_font_glyph_in(f, cp) * (size_t)f->h;
+}
+
+static void test_font_box_drawings(void **state) {
+    (void)state;
+    const int heights[3] = {8, 14, 16};
+    for (int k = 0; k < 3; k++) {
+        const pc_font *f = pc_font_of_height(heights[k]);
+        assert_non_null(f);
+        int full = 0, empty = 0, dbl = 0, single = 0;
+        const uint8_t *h2 = rows_of(f, pc_cp437[205]), *h1 = rows_of(f, pc_cp437[196]);
+        const uint8_t *v2 = rows_of(f, pc_cp437[186]), *v1 = rows_of(f, pc_cp437[179]);
+        for (int r = 0; r < f->h; r++) {
+            full += h2[r] == 0xff;
+            empty += h2[r] == 0;
+            single += h1[r] == 0xff;
+            dbl += __builtin_popcount(v2[r]) == 4 && v2[r] != v1[r];
+        }
+        assert_int_equal(full, 2);
+        assert_int_equal(empty, f->h - 2);
+        assert_int_equal(single, 1);
+        assert_int_equal(dbl, f->h);   /* two 2-pixel columns on every row */
+        const uint8_t *lower = rows_of(f, pc_cp437[220]), *upper = rows_of(f, pc_cp437[223]);
+        const uint8_t *left = rows_of(f, pc_cp437[221]), *right = rows_of(f, pc_cp437[222]);
+        assert_int_not_equal(pc_font_glyph_in(f, pc_cp437[220]), f->replacement);
+        assert_int_equal(lower[0], 0);
+        assert_int_equal(lower[f->h - 1], 0xff);
+        assert_int_equal(upper[0], 0xff);
+        assert_int_equal(upper[f->h - 1], 0);
+        for (int r = 0; r < f->h; r++) {
+            assert_int_equal(left[r], 0xf0);
+            assert_int_equal(right[r], 0x0f);
+            assert_false(lower[r] && upper[r]);   /* the halves do not overlap */
+        }
+    }
 }
 
 static void test_text_pixels(void **state) {
@@ -132,6 +173,7 @@ static void test_anchors(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_font_has_vga_glyphs),
+        cmocka_unit_test(test_font_box_drawings),
         cmocka_unit_test(test_text_pixels),
         cmocka_unit_test(test_text_is_transparent_and_utf8),
         cmocka_unit_test(test_anchors),

@@ -3,15 +3,24 @@
  * sorted by code point, and the replacement glyph (U+FFFD if the font has it, else '?').  Run
  * at build time on the console fonts of the Debian package console-setup-linux, so no font
  * data lives in the repository.
- *   psf2c FONT.psf OUT.c [HEIGHT PREFIX]
+ *   psf2c FONT.psf OUT.c [HEIGHT PREFIX [BOXES.psf]]
  * HEIGHT (default 16) is the glyph height the font must have (8, 14 and 16: QBasic's cells);
- * PREFIX (default pc_font) names the generated arrays PREFIX_bits, PREFIX_map, ... */
+ * PREFIX (default pc_font) names the generated arrays PREFIX_bits, PREFIX_map, ...
+ * BOXES, a second font of the same cells, gives the box drawings and block elements
+ * (U+2500..U+259F, code page 437's 176..223) as one set: Uni2-VGA16 draws the double lines
+ * (CHR$(201), CHR$(205), ...) as single ones and lacks the half blocks (CHR$(220), CHR$(223),
+ * ...), which FullGreek-VGA16 has. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 typedef struct { uint32_t cp; uint32_t glyph; } entry;
+
+#define BOX_FIRST 0x2500u     /* the code points the BOXES font gives */
+#define BOX_LAST 0x259fu
+#define FROM_BOXES 0x80000000u   /* an entry's glyph is the BOXES font's */
+static int in_boxes(uint32_t cp) { return cp >= BOX_FIRST && cp <= BOX_LAST; }
 
 static entry *map;
 static size_t nmap, capmap;
@@ -95,13 +104,17 @@ static uint8_t *read_all(const char *path, size_t *n) {
     return buf;
 }
 
-int main(int argc, char **argv) {
-    if (argc != 3 && argc != 5) die("usage: psf2c FONT.psf OUT.c [HEIGHT PREFIX]", NULL);
-    uint32_t want_h = argc == 5 ? (uint32_t)atoi(argv[3]) : 16;
-    const char *prefix = argc == 5 ? argv[4] : "pc_font";
-    if (want_h < 1 || want_h > 32) die("bad HEIGHT", argv[3]);
+typedef struct {
+    uint8_t *data;
+    const uint8_t *glyphs;
+    uint32_t nglyphs, charsize;
+} font;
+
+/* Read the PSF font at path (cells 8 wide, want_h high); its Unicode table into map, each
+ * glyph or-ed with tag. */
+static font load(const char *path, uint32_t want_h, uint32_t tag) {
     size_t n;
-    uint8_t *d = read_all(argv[1], &n);
+    uint8_t *d = read_all(path, &n);
     const uint8_t *glyphs, *end = d + n;
     uint32_t nglyphs, height, width = 8, charsize;
     int v2 = n >= 32 && le32(d) == 0x864ab572;
@@ -111,21 +124,63 @@ int main(int argc, char **argv) {
         charsize = le32(d + 20);
         height = le32(d + 24);
         width = le32(d + 28);
-        if (!(flags & 1)) die("the font has no Unicode table", argv[1]);
+        if (!(flags & 1)) die("the font has no Unicode table", path);
         glyphs = d + hdr;
     } else if (n >= 4 && d[0] == 0x36 && d[1] == 0x04) {
-        if (!(d[2] & 0x02)) die("the font has no Unicode table", argv[1]);
+        if (!(d[2] & 0x02)) die("the font has no Unicode table", path);
         nglyphs = d[2] & 0x01 ? 512 : 256;
         charsize = height = d[3];
         glyphs = d + 4;
     } else {
-        die("not a PSF font", argv[1]);
+        die("not a PSF font", path);
     }
     if (width != 8 || height != want_h || charsize != want_h)
-        die("the font does not have the asked 8-pixel-wide cells of HEIGHT rows", argv[1]);
-    if (glyphs + (size_t)nglyphs * charsize > end) die("the font is truncated", argv[1]);
+        die("the font does not have the asked 8-pixel-wide cells of HEIGHT rows", path);
+    if (glyphs + (size_t)nglyphs * charsize > end) die("the font is truncated", path);
+    size_t first = nmap;
     if (v2) psf2_table(glyphs + nglyphs * charsize, end, nglyphs);
     else psf1_table(glyphs + nglyphs * charsize, end, nglyphs);
+    for (size_t i = first; i < nmap; i++) map[i].glyph |= tag;
+    return (font){d, glyphs, nglyphs, charsize};
+}
+
+/* The rows of output glyph g: FONT's own, then the BOXES glyphs extra[] in order. */
+static const uint8_t *glyph_bits(const font *f, const font *boxes, const uint32_t *extra, uint32_t g) {
+    if (g < f->nglyphs) return f->glyphs + (size_t)g * f->charsize;
+    return boxes->glyphs + (size_t)extra[g - f->nglyphs] * boxes->charsize;
+}
+
+int main(int argc, char **argv) {
+    if (argc != 3 && argc != 5 && argc != 6)
+        die("usage: psf2c FONT.psf OUT.c [HEIGHT PREFIX [BOXES.psf]]", NULL);
+    uint32_t want_h = argc >= 5 ? (uint32_t)atoi(argv[3]) : 16;
+    const char *prefix = argc >= 5 ? argv[4] : "pc_font";
+    if (want_h < 1 || want_h > 32) die("bad HEIGHT", argv[3]);
+    font f = load(argv[1], want_h, 0), boxes = {0};
+    if (argc == 6) {
+        boxes = load(argv[5], want_h, FROM_BOXES);
+        /* in the box range BOXES wins where it has the code point; elsewhere FONT */
+        uint8_t boxed[BOX_LAST - BOX_FIRST + 1] = {0};
+        for (size_t i = 0; i < nmap; i++)
+            if (map[i].glyph & FROM_BOXES && in_boxes(map[i].cp)) boxed[map[i].cp - BOX_FIRST] = 1;
+        size_t k = 0;
+        for (size_t i = 0; i < nmap; i++) {
+            int boxes_has = in_boxes(map[i].cp) && boxed[map[i].cp - BOX_FIRST];
+            if (boxes_has == !!(map[i].glyph & FROM_BOXES)) map[k++] = map[i];
+        }
+        nmap = k;
+    }
+    uint32_t charsize = f.charsize, nglyphs = f.nglyphs;
+    /* the BOXES glyphs used, appended after FONT's */
+    uint32_t *extra = calloc(boxes.nglyphs + 1, sizeof *extra), nextra = 0;
+    if (!extra) die("out of memory", NULL);
+    for (size_t i = 0; i < nmap; i++) {
+        if (!(map[i].glyph & FROM_BOXES)) continue;
+        uint32_t g = map[i].glyph & ~FROM_BOXES, j = 0;
+        while (j < nextra && extra[j] != g) j++;
+        if (j == nextra) extra[nextra++] = g;
+        map[i].glyph = nglyphs + j;
+    }
 
     /* sorted, one glyph per code point (the first the table names) */
     qsort(map, nmap, sizeof *map, by_cp);
@@ -143,14 +198,16 @@ int main(int argc, char **argv) {
 
     FILE *out = fopen(argv[2], "w");
     if (!out) die("cannot write", argv[2]);
-    fprintf(out, "/* Generated by psf2c from a PSF console font at build time: do not edit. */\n"
+    fprintf(out, "/* Generated by psf2c from PSF console fonts at build time: do not edit. */\n"
                  "#include \"font.h\"\n\n"
                  "const size_t %s_nglyphs = %u;\n"
-                 "const uint8_t %s_bits[%u][%u] = {\n", prefix, nglyphs, prefix, nglyphs, charsize);
-    for (uint32_t g = 0; g < nglyphs; g++) {
+                 "const uint8_t %s_bits[%u][%u] = {\n", prefix, nglyphs + nextra, prefix,
+            nglyphs + nextra, charsize);
+    for (uint32_t g = 0; g < nglyphs + nextra; g++) {
+        const uint8_t *bits = glyph_bits(&f, &boxes, extra, g);
         fputs("    {", out);
         for (uint32_t r = 0; r < charsize; r++)
-            fprintf(out, "0x%02x%s", glyphs[g * charsize + r], r + 1 < charsize ? ", " : "");
+            fprintf(out, "0x%02x%s", bits[r], r + 1 < charsize ? ", " : "");
         fputs("},\n", out);
     }
     fprintf(out, "};\n\nconst size_t %s_nmap = %zu;\n"
@@ -162,12 +219,14 @@ int main(int argc, char **argv) {
     uint32_t base = charsize;
     for (size_t i = 0; i < nmap; i++)
         if (map[i].cp == 'H')
-            for (base = charsize; base > 0 && !glyphs[map[i].glyph * charsize + base - 1];) base--;
+            for (base = charsize; base > 0 && !f.glyphs[map[i].glyph * charsize + base - 1];) base--;
     fprintf(out, "const pc_font %s_desc = {%u, %u, &%s_bits[0][0], %s_map, %zu, %ld};\n", prefix,
             charsize, base, prefix, prefix, nmap, replacement);
     int bad = ferror(out);
     if (fclose(out) != 0 || bad) die("cannot write", argv[2]);
     free(map);
-    free(d);
+    free(extra);
+    free(f.data);
+    free(boxes.data);
     return 0;
 }
