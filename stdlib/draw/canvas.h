@@ -55,8 +55,11 @@ enum { PC_PATH_CLOSED = 1 };
  * an angle mark, equal-length ticks): x1, y1 hold the anchor, and framing (pc_fit) moves the
  * anchor and keeps the shape's size, mirroring it with the figure. */
 enum { PC_OP_RIGID = 0x80 };
-/* The fill rules of a filled path (as SVG's fill-rule), in the low bit of its flags. */
-enum { PC_FILL_NONZERO = 0, PC_FILL_EVENODD = 1 };
+/* The fill rules of a filled path (as SVG's fill-rule), in the low bit of its flags; or-ed
+ * with PC_FILL_TILE, the path is a tile of a tiling (a shaded surface's quads): the print look
+ * strokes its outline in its own colour, a screen pixel wide, so that antialiased
+ * neighbours show no seam of the paper between them (the pixels of the VGA look are exact). */
+enum { PC_FILL_NONZERO = 0, PC_FILL_EVENODD = 1, PC_FILL_TILE = 2 };
 
 /* Where text goes relative to its point: the side of the point (NE: above right). */
 enum { PC_ANCHOR_C, PC_ANCHOR_N, PC_ANCHOR_NE, PC_ANCHOR_E, PC_ANCHOR_SE, PC_ANCHOR_S,
@@ -298,7 +301,8 @@ int pc_path_screen(pc_canvas *c, size_t n, const double *sxy, const uint8_t *ver
  * within 0.1 px on the screen), every subpath closed, filled with `color` by `rule`
  * (PC_FILL_EVENODD: inside where a ray crosses the outline an odd number of times, so a
  * subpath inside another makes a hole; PC_FILL_NONZERO: where the outline winds round a
- * non-zero number of times).  No outline is drawn and the pen does not apply.
+ * non-zero number of times), or-ed with PC_FILL_TILE for a tile.  No outline is drawn and
+ * the pen does not apply.
  * Pixels: pixel (i, j) is filled when its centre, the screen point (i, j), is inside; a centre
  * exactly on the outline counts as inside on a left or top edge and outside on a right or
  * bottom edge (each scanline's run is the half-open x0 <= i < x1, each edge the half-open

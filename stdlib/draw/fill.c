@@ -132,6 +132,8 @@ int pc_fill_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs,
                  int rule, int color) {
     uint32_t first = 0;
     int ok = pc_check_color(c, &color, c->fg);
+    int tile = rule >= 0 && rule & PC_FILL_TILE;
+    if (tile) rule &= ~PC_FILL_TILE;
     if (ok == PC_OK && rule != PC_FILL_EVENODD && rule != PC_FILL_NONZERO)
         ok = pc_fail(c, "fill: the fill rule must be even-odd (%d) or nonzero (%d), got %d",
                      PC_FILL_EVENODD, PC_FILL_NONZERO, rule);
@@ -156,7 +158,7 @@ int pc_fill_path(pc_canvas *c, size_t n, const double *xy, const uint8_t *verbs,
     }
     pc_op *op = pc_push_op(c, PC_OP_FILLPATH, color);
     if (!op) return PC_ENOMEM;
-    op->flags = tmp.flags;
+    op->flags = (uint8_t)(tmp.flags | (tile ? PC_FILL_TILE : 0));
     op->first = first;
     op->count = tmp.count;
     c->last_x = xy[2 * n - 2];

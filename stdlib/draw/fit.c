@@ -237,7 +237,7 @@ static int replay_op(pc_canvas *c, const old_list *o, const pc_op *op, const fra
             verbs[nv++] = o->tags[op->first + k];   /* a cubic's three points are one verb */
         int st = op->kind == PC_OP_PATH
             ? pc_path(c, op->count, xy, verbs, nv, op->flags & PC_PATH_CLOSED, op->color)
-            : pc_fill_path(c, op->count, xy, verbs, nv, op->flags & 1, op->color);
+            : pc_fill_path(c, op->count, xy, verbs, nv, op->flags & (1 | PC_FILL_TILE), op->color);
         free(xy);
         free(verbs);
         if (st == PC_OK && rigid) {   /* still rigid for a later framing */

@@ -440,6 +440,11 @@ int pc_print_walk(const pc_canvas *c, const pc_page *pg, pc_pr_backend *b, char 
         case PC_OP_FILLPATH:
             path_of(&w, op, 1);
             b->fill(b->self, rgb(&w, op->color), (op->flags & 1) == PC_FILL_EVENODD);
+            if (op->flags & PC_FILL_TILE) {   /* its outline over the seams (canvas.h) */
+                pc_pr_pen seam = {.width = pg->s, .round = 1};
+                path_of(&w, op, 1);
+                b->stroke(b->self, rgb(&w, op->color), &seam);
+            }
             break;
         case PC_OP_TEXT: draw_text(&w, op); break;
         }

@@ -11,7 +11,7 @@ int pc_draw_shaded(pc_canvas *c, const pc_shade_quad *q, size_t n, pc_rgb base, 
         double xy[8];
         for (int v = 0; v < 4; v++)
             pc_screen_to_world(c, q[k].xy[2 * v], q[k].xy[2 * v + 1], &xy[2 * v], &xy[2 * v + 1]);
-        int rc = pc_fill_path(c, 4, xy, NULL, 0, PC_FILL_NONZERO, color);
+        int rc = pc_fill_path(c, 4, xy, NULL, 0, PC_FILL_NONZERO | PC_FILL_TILE, color);
         if (rc == PC_OK && mesh >= 0) rc = pc_path(c, 4, xy, NULL, 0, 1, mesh);
         if (rc != PC_OK) return rc;
     }

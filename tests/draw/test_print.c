@@ -286,6 +286,40 @@ static void test_halo_and_colours(void **state) {
     pc_canvas_free(d);
 }
 
+/* The lightest pixel along the diagonal of a square filled as two triangles in ink (black). */
+static int diagonal_seam(int rule) {
+    pc_canvas *c = pc_canvas_new(100, 100, 16);
+    pc_figure f = {0};
+    f.dpi = 96;
+    assert_int_equal(pc_figure_set(c, &f), PC_OK);
+    const double upper[6] = {10, 10, 90, 10, 90, 90}, lower[6] = {10, 10, 90, 90, 10, 90};
+    assert_int_equal(pc_fill_path(c, 3, upper, NULL, 0, rule, 15), PC_OK);
+    assert_int_equal(pc_fill_path(c, 3, lower, NULL, 0, rule, 15), PC_OK);
+    cairo_surface_t *img = png_of(c);
+    const unsigned char *px = cairo_image_surface_get_data(img);
+    int stride = cairo_image_surface_get_stride(img), lightest = 0;
+    for (int x = 20; x < 80; x++) {
+        int g = px[x * stride + 4 * x + 1];
+        if (g > lightest) lightest = g;
+    }
+    cairo_surface_destroy(img);
+    pc_canvas_free(c);
+    return lightest;
+}
+
+/* Adjacent antialiased fills let the paper through along their shared edge; tiles
+ * (PC_FILL_TILE, a shaded surface's quads) have their outline stroked over it. */
+static void test_tiles_without_seams(void **state) {
+    (void)state;
+    assert_true(diagonal_seam(PC_FILL_NONZERO) > 40);
+    assert_true(diagonal_seam(PC_FILL_NONZERO | PC_FILL_TILE) < 8);
+    pc_canvas *c = pc_canvas_new(10, 10, 16);
+    const double tri[6] = {1, 1, 8, 1, 8, 8};
+    assert_int_equal(pc_fill_path(c, 3, tri, NULL, 0, 4 | PC_FILL_TILE, 15), PC_EARG);
+    assert_non_null(strstr(c->error, "the fill rule must be even-odd (1) or nonzero (0), got 4"));
+    pc_canvas_free(c);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lengths),
@@ -294,6 +328,7 @@ int main(void) {
         cmocka_unit_test(test_outputs),
         cmocka_unit_test(test_pango_layout),
         cmocka_unit_test(test_halo_and_colours),
+        cmocka_unit_test(test_tiles_without_seams),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
