@@ -1,7 +1,7 @@
 -- LuaRocks: `luarocks --lua-version 5.4 make` in the source tree (or in the unpacked tarball of
 -- `./build.sh dist`) builds the C module with CMake
--- (Lua and libpng found through pkg-config; the VGA font from Debian's console-setup-linux) and
--- installs it, so that `lua5.4 -e 'require "pointcalc"'` works. Only the module is built: the
+-- (Lua and libpng found through pkg-config; the VGA fonts from Debian's console-setup-linux and
+-- vgabios) and installs it, so that `lua5.4 -e 'require "pointcalc"'` works. Only the module is built: the
 -- pointcalc program, its man page and the examples come with `./build.sh install` or the .deb.
 rockspec_format = "3.0"
 package = "pointcalc"

@@ -2,7 +2,7 @@
 # Install the Debian packages pointcalc needs to build and test.
 # As root the missing ones are installed with apt-get; otherwise the exact command is printed.
 set -e
-PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux libmicrohttpd-dev libcairo2-dev libpango1.0-dev libfontconfig-dev fonts-cmu fonts-dejavu-core"
+PKGS="build-essential cmake pkg-config liblua5.4-dev lua5.4 libcmocka-dev libpng-dev libedit-dev libxml2-utils python3 console-setup-linux vgabios libmicrohttpd-dev libcairo2-dev libpango1.0-dev libfontconfig-dev fonts-cmu fonts-dejavu-core"
 # what the install, notebook and gallery-page tests use (man -l, luarocks make, cpack's
 # dpkg-shlibdeps, completion in bash and zsh, Jupyter's client and kernel libraries, a
 # headless browser; the print-look tests: poppler-utils, ghostscript, librsvg2-bin): installed

@@ -18,7 +18,7 @@ static const uint8_t vga_A[16] = {0x00, 0x00, 0x10, 0x38, 0x6c, 0xc6, 0xc6, 0xfe
 
 static void test_font_has_vga_glyphs(void **state) {
     (void)state;
-    assert_int_equal(pc_font_nglyphs, 512 + 48);   /* Uni2-VGA16, then FullGreek's boxes */
+    assert_int_equal(pc_font_nglyphs, 512 + 48);   /* Uni2-VGA16, then the BIOS's boxes */
     assert_memory_equal(pc_font_bits[pc_font_glyph('A')], vga_A, 16);
     /* Latin, Greek and Cyrillic are in the font; a character it lacks gets the replacement */
     int repl = pc_font_replacement;
@@ -44,9 +44,11 @@ static void assert_glyph_at(const pc_canvas *c, int x0, int y0, int g, int s, in
         }
 }
 
-/* Code page 437's box drawings and blocks, in each cell size: the double lines are double (two
- * full rows for CHR$(205), two columns for CHR$(186)), not the single CHR$(196), CHR$(179);
- * the half blocks CHR$(220), CHR$(223), CHR$(221), CHR$(222) are halves, not the replacement. */
+/* Code page 437's box drawings and blocks in each cell size, from the VGA BIOS (CMakeLists.txt):
+ * the double lines are double (two full rows for CHR$(205), two columns for CHR$(186)), the
+ * lower of them on the row of the single CHR$(196), so that the pieces join; the half blocks
+ * CHR$(220), CHR$(223), CHR$(221), CHR$(222) are halves, not the replacement.  And the BIOS's
+ * 8x8 and 8x14 letters, not the console font's: IBM's 8x8 'A' is 30 78 CC CC FC CC CC 00. */
 static const uint8_t *rows_of(const pc_font *f, uint32_t cp) {
     return f->bits + (size_t)pc_font_glyph_in(f, cp) * (size_t)f->h;
 }
@@ -69,6 +71,12 @@ static void test_font_box_drawings(void **state) {
         assert_int_equal(full, 2);
         assert_int_equal(empty, f->h - 2);
         assert_int_equal(single, 1);
+        int lower_line = 0, single_row = 0;
+        for (int r = 0; r < f->h; r++) {
+            if (h2[r] == 0xff) lower_line = r;
+            if (h1[r] == 0xff) single_row = r;
+        }
+        assert_int_equal(lower_line, single_row);
         assert_int_equal(dbl, f->h);   /* two 2-pixel columns on every row */
         const uint8_t *lower = rows_of(f, pc_cp437[220]), *upper = rows_of(f, pc_cp437[223]);
         const uint8_t *left = rows_of(f, pc_cp437[221]), *right = rows_of(f, pc_cp437[222]);
@@ -83,6 +91,11 @@ static void test_font_box_drawings(void **state) {
             assert_false(lower[r] && upper[r]);   /* the halves do not overlap */
         }
     }
+    static const uint8_t ibm_a8[8] = {0x30, 0x78, 0xcc, 0xcc, 0xfc, 0xcc, 0xcc, 0x00};
+    static const uint8_t ibm_a14[14] = {0x00, 0x00, 0x10, 0x38, 0x6c, 0xc6, 0xc6,
+                                        0xfe, 0xc6, 0xc6, 0xc6, 0x00, 0x00, 0x00};
+    assert_memory_equal(rows_of(pc_font_of_height(8), 'A'), ibm_a8, 8);
+    assert_memory_equal(rows_of(pc_font_of_height(14), 'A'), ibm_a14, 14);
 }
 
 static void test_text_pixels(void **state) {

@@ -36,17 +36,18 @@ expect_eq "$(ppm_pixel text0.ppm 0 152)" "0000aa" "row 10 blank, as CLS left it"
 check
 cmp -s want.txt out.txt || fail "the transcript on standard output: $(od -An -c out.txt | head -3)"
 
-# code page 437's double lines and half blocks: CHR$(205) has ink on rows 6 and 8 of its cell,
-# not the single line of CHR$(196) on row 7; CHR$(220) is the lower half (rows 8..15), CHR$(222)
-# the right half (columns 4..7), not the replacement glyph
+# code page 437's double lines and half blocks in the VGA BIOS's 8x16 font: CHR$(205) has ink
+# on rows 5 and 7 of its cell, the lower on the row of CHR$(196)'s single line (so they join);
+# CHR$(220) is the lower half (rows 7..15), CHR$(222) the right half (columns 4..7), not the
+# replacement glyph
 printf 'PRINT CHR$(205); CHR$(220); CHR$(222); CHR$(196)\n' > boxes.bas
 run "$POINTCALC" boxes.bas -o boxes.ppm
 expect_rc 0 "box drawings"
-expect_eq "$(ppm_pixel boxes.ppm 3 6)$(ppm_pixel boxes.ppm 3 7)$(ppm_pixel boxes.ppm 3 8)" \
-    "aaaaaa000000aaaaaa" "CHR\$(205) is a double line (rows 6 and 8)"
+expect_eq "$(ppm_pixel boxes.ppm 3 5)$(ppm_pixel boxes.ppm 3 6)$(ppm_pixel boxes.ppm 3 7)" \
+    "aaaaaa000000aaaaaa" "CHR\$(205) is a double line (rows 5 and 7)"
 expect_eq "$(ppm_pixel boxes.ppm 27 6)$(ppm_pixel boxes.ppm 27 7)" "000000aaaaaa" "CHR\$(196) a single one (row 7)"
-expect_eq "$(ppm_pixel boxes.ppm 8 15)$(ppm_pixel boxes.ppm 15 8)$(ppm_pixel boxes.ppm 8 7)" \
-    "aaaaaaaaaaaa000000" "CHR\$(220) is the lower half of its cell"
+expect_eq "$(ppm_pixel boxes.ppm 8 15)$(ppm_pixel boxes.ppm 15 7)$(ppm_pixel boxes.ppm 8 6)" \
+    "aaaaaaaaaaaa000000" "CHR\$(220) is the lower half of its cell (rows 7..15)"
 expect_eq "$(ppm_pixel boxes.ppm 16 0)$(ppm_pixel boxes.ppm 20 0)$(ppm_pixel boxes.ppm 23 15)" \
     "000000aaaaaaaaaaaa" "CHR\$(222) is the right half of its cell"
 

@@ -1,26 +1,24 @@
 /* psf2c: convert a PC Screen Font (PSF1 or PSF2, 8 pixels wide, with a Unicode table) into C
  * source for a built-in VGA font (font.h): the glyph bitmaps, a table from code point to glyph
  * sorted by code point, and the replacement glyph (U+FFFD if the font has it, else '?').  Run
- * at build time on the console fonts of the Debian package console-setup-linux, so no font
- * data lives in the repository.
- *   psf2c FONT.psf OUT.c [HEIGHT PREFIX [BOXES.psf]]
+ * at build time on the console fonts of the Debian package console-setup-linux and the VGA
+ * BIOS image of the package vgabios, so no font data lives in the repository.
+ *   psf2c FONT.psf OUT.c [HEIGHT PREFIX [ROM LO HI]]
  * HEIGHT (default 16) is the glyph height the font must have (8, 14 and 16: QBasic's cells);
  * PREFIX (default pc_font) names the generated arrays PREFIX_bits, PREFIX_map, ...
- * BOXES, a second font of the same cells, gives the box drawings and block elements
- * (U+2500..U+259F, code page 437's 176..223) as one set: Uni2-VGA16 draws the double lines
- * (CHR$(201), CHR$(205), ...) as single ones and lacks the half blocks (CHR$(220), CHR$(223),
- * ...), which FullGreek-VGA16 has. */
+ * ROM, a VGA BIOS image (Debian's vgabios), gives code page 437's bytes LO..HI as the BIOS
+ * draws them: QBasic's screen uses the BIOS font, and the console fonts differ from it (the
+ * 8x8 and 8x14 Uni2 cells are other designs; Uni2-VGA16 draws the double lines of the box
+ * drawings as single ones and lacks the half blocks).  The BIOS's table of HEIGHT-row glyphs
+ * is found by the shapes of its blocks (CHR$(219) full, 221 and 222 the left and right
+ * halves, 220 and 223 the lower and upper), and must be found once. */
+#include <iconv.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 typedef struct { uint32_t cp; uint32_t glyph; } entry;
-
-#define BOX_FIRST 0x2500u     /* the code points the BOXES font gives */
-#define BOX_LAST 0x259fu
-#define FROM_BOXES 0x80000000u   /* an entry's glyph is the BOXES font's */
-static int in_boxes(uint32_t cp) { return cp >= BOX_FIRST && cp <= BOX_LAST; }
 
 static entry *map;
 static size_t nmap, capmap;
@@ -110,9 +108,8 @@ typedef struct {
     uint32_t nglyphs, charsize;
 } font;
 
-/* Read the PSF font at path (cells 8 wide, want_h high); its Unicode table into map, each
- * glyph or-ed with tag. */
-static font load(const char *path, uint32_t want_h, uint32_t tag) {
+/* Read the PSF font at path (cells 8 wide, want_h high), its Unicode table into map. */
+static font load(const char *path, uint32_t want_h) {
     size_t n;
     uint8_t *d = read_all(path, &n);
     const uint8_t *glyphs, *end = d + n;
@@ -137,56 +134,88 @@ static font load(const char *path, uint32_t want_h, uint32_t tag) {
     if (width != 8 || height != want_h || charsize != want_h)
         die("the font does not have the asked 8-pixel-wide cells of HEIGHT rows", path);
     if (glyphs + (size_t)nglyphs * charsize > end) die("the font is truncated", path);
-    size_t first = nmap;
     if (v2) psf2_table(glyphs + nglyphs * charsize, end, nglyphs);
     else psf1_table(glyphs + nglyphs * charsize, end, nglyphs);
-    for (size_t i = first; i < nmap; i++) map[i].glyph |= tag;
     return (font){d, glyphs, nglyphs, charsize};
 }
 
-/* The rows of output glyph g: FONT's own, then the BOXES glyphs extra[] in order. */
-static const uint8_t *glyph_bits(const font *f, const font *boxes, const uint32_t *extra, uint32_t g) {
-    if (g < f->nglyphs) return f->glyphs + (size_t)g * f->charsize;
-    return boxes->glyphs + (size_t)extra[g - f->nglyphs] * boxes->charsize;
+/* The rows of output glyph g: FONT's own, then the ROM's extra[] in order. */
+static const uint8_t *font_glyphs, *extra[256];
+static uint32_t font_nglyphs, font_h;
+static const uint8_t *bits_of(uint32_t g) {
+    return g < font_nglyphs ? font_glyphs + (size_t)g * font_h : extra[g - font_nglyphs];
+}
+
+static int all(const uint8_t *rows, uint32_t n, uint8_t v) {
+    for (uint32_t r = 0; r < n; r++)
+        if (rows[r] != v) return 0;
+    return 1;
+}
+
+/* The offset of the BIOS's font of h-row glyphs in rom (n bytes): the one place where the
+ * blocks have their shapes and NUL and the space are blank. */
+static size_t find_rom_font(const uint8_t *rom, size_t n, uint32_t h, const char *path) {
+    size_t found = 0, count = 0;
+    for (size_t o = 0; o + 256 * (size_t)h <= n; o++) {
+        const uint8_t *g = rom + o;
+        if (all(g, h, 0) && all(g + 32 * h, h, 0) && all(g + 219 * h, h, 0xff) &&
+            all(g + 221 * h, h, 0xf0) && all(g + 222 * h, h, 0x0f) && g[220 * h] == 0 &&
+            g[221 * h - 1] == 0xff && g[223 * h] == 0xff && g[224 * h - 1] == 0) {
+            found = o;
+            count++;
+        }
+    }
+    if (count != 1) die("no single font of HEIGHT rows in the VGA BIOS image", path);
+    return found;
+}
+
+/* The code point of code page 437's byte b (iconv), or 0 for a control character. */
+static uint32_t cp437(iconv_t cd, int b) {
+    char in = (char)b, out[8];
+    char *ip = &in, *op = out;
+    size_t il = 1, ol = sizeof out;
+    if (iconv(cd, &ip, &il, &op, &ol) == (size_t)-1 || ol != 4) die("iconv: no CP437", NULL);
+    const uint8_t *u = (const uint8_t *)out;
+    uint32_t cp = u[0] | (uint32_t)u[1] << 8 | (uint32_t)u[2] << 16 | (uint32_t)u[3] << 24;
+    return cp < 0x20 || cp == 0x7f ? 0 : cp;
 }
 
 int main(int argc, char **argv) {
-    if (argc != 3 && argc != 5 && argc != 6)
-        die("usage: psf2c FONT.psf OUT.c [HEIGHT PREFIX [BOXES.psf]]", NULL);
+    if (argc != 3 && argc != 5 && argc != 8)
+        die("usage: psf2c FONT.psf OUT.c [HEIGHT PREFIX [ROM LO HI]]", NULL);
     uint32_t want_h = argc >= 5 ? (uint32_t)atoi(argv[3]) : 16;
     const char *prefix = argc >= 5 ? argv[4] : "pc_font";
     if (want_h < 1 || want_h > 32) die("bad HEIGHT", argv[3]);
-    font f = load(argv[1], want_h, 0), boxes = {0};
-    if (argc == 6) {
-        boxes = load(argv[5], want_h, FROM_BOXES);
-        /* in the box range BOXES wins where it has the code point; elsewhere FONT */
-        uint8_t boxed[BOX_LAST - BOX_FIRST + 1] = {0};
-        for (size_t i = 0; i < nmap; i++)
-            if (map[i].glyph & FROM_BOXES && in_boxes(map[i].cp)) boxed[map[i].cp - BOX_FIRST] = 1;
-        size_t k = 0;
-        for (size_t i = 0; i < nmap; i++) {
-            int boxes_has = in_boxes(map[i].cp) && boxed[map[i].cp - BOX_FIRST];
-            if (boxes_has == !!(map[i].glyph & FROM_BOXES)) map[k++] = map[i];
+    font f = load(argv[1], want_h);
+    uint32_t charsize = f.charsize, nglyphs = f.nglyphs, nextra = 0;
+    font_glyphs = f.glyphs;
+    font_nglyphs = nglyphs;
+    font_h = charsize;
+    uint8_t *rom = NULL;
+    if (argc == 8) {
+        size_t n;
+        rom = read_all(argv[5], &n);
+        int lo = atoi(argv[6]), hi = atoi(argv[7]);
+        if (lo < 0 || hi > 255 || lo > hi) die("bad LO HI", argv[6]);
+        const uint8_t *table = rom + find_rom_font(rom, n, want_h, argv[5]);
+        iconv_t cd = iconv_open("UTF-32LE", "CP437");
+        if (cd == (iconv_t)-1) die("iconv has no CP437", NULL);
+        for (int b = lo; b <= hi; b++) {
+            uint32_t cp = cp437(cd, b);
+            if (!cp) continue;
+            for (size_t i = 0; i < nmap; i++)   /* the ROM's glyph replaces FONT's */
+                if (map[i].cp == cp) map[i].cp = UINT32_MAX;
+            extra[nextra] = table + (size_t)b * want_h;
+            add(cp, nglyphs + nextra++);
         }
-        nmap = k;
-    }
-    uint32_t charsize = f.charsize, nglyphs = f.nglyphs;
-    /* the BOXES glyphs used, appended after FONT's */
-    uint32_t *extra = calloc(boxes.nglyphs + 1, sizeof *extra), nextra = 0;
-    if (!extra) die("out of memory", NULL);
-    for (size_t i = 0; i < nmap; i++) {
-        if (!(map[i].glyph & FROM_BOXES)) continue;
-        uint32_t g = map[i].glyph & ~FROM_BOXES, j = 0;
-        while (j < nextra && extra[j] != g) j++;
-        if (j == nextra) extra[nextra++] = g;
-        map[i].glyph = nglyphs + j;
+        iconv_close(cd);
     }
 
     /* sorted, one glyph per code point (the first the table names) */
     qsort(map, nmap, sizeof *map, by_cp);
     size_t k = 0;
     for (size_t i = 0; i < nmap; i++)
-        if (k == 0 || map[k - 1].cp != map[i].cp) map[k++] = map[i];
+        if (map[i].cp != UINT32_MAX && (k == 0 || map[k - 1].cp != map[i].cp)) map[k++] = map[i];
     nmap = k;
     long replacement = -1, question = -1;
     for (size_t i = 0; i < nmap; i++) {
@@ -198,13 +227,13 @@ int main(int argc, char **argv) {
 
     FILE *out = fopen(argv[2], "w");
     if (!out) die("cannot write", argv[2]);
-    fprintf(out, "/* Generated by psf2c from PSF console fonts at build time: do not edit. */\n"
+    fprintf(out, "/* Generated by psf2c from a PSF console font (and a VGA BIOS) at build time: do not edit. */\n"
                  "#include \"font.h\"\n\n"
                  "const size_t %s_nglyphs = %u;\n"
                  "const uint8_t %s_bits[%u][%u] = {\n", prefix, nglyphs + nextra, prefix,
             nglyphs + nextra, charsize);
     for (uint32_t g = 0; g < nglyphs + nextra; g++) {
-        const uint8_t *bits = glyph_bits(&f, &boxes, extra, g);
+        const uint8_t *bits = bits_of(g);
         fputs("    {", out);
         for (uint32_t r = 0; r < charsize; r++)
             fprintf(out, "0x%02x%s", bits[r], r + 1 < charsize ? ", " : "");
@@ -219,14 +248,13 @@ int main(int argc, char **argv) {
     uint32_t base = charsize;
     for (size_t i = 0; i < nmap; i++)
         if (map[i].cp == 'H')
-            for (base = charsize; base > 0 && !f.glyphs[map[i].glyph * charsize + base - 1];) base--;
+            for (base = charsize; base > 0 && !bits_of(map[i].glyph)[base - 1];) base--;
     fprintf(out, "const pc_font %s_desc = {%u, %u, &%s_bits[0][0], %s_map, %zu, %ld};\n", prefix,
             charsize, base, prefix, prefix, nmap, replacement);
     int bad = ferror(out);
     if (fclose(out) != 0 || bad) die("cannot write", argv[2]);
     free(map);
-    free(extra);
     free(f.data);
-    free(boxes.data);
+    free(rom);
     return 0;
 }
