@@ -1,9 +1,9 @@
 /* The built-in bitmap font: VGA 8x16 character cells, so raster output needs no font files.
  * The glyphs and the Unicode table are generated at build time (tools/psf2c.c) from the
  * console font Uni2-VGA16 of the Debian package console-setup-linux (Latin, Greek, Cyrillic),
- * code page 437's box drawings and blocks from the VGA BIOS image of the Debian package vgabios
- * (the font QBasic's screen shows; Uni2 draws the double lines as single ones and lacks the
- * half blocks); nothing of the font is kept in the repository.  The 8x8 and 8x14 cells of
+ * code page 437's accented letters, box drawings and blocks (128..223) from the VGA BIOS image
+ * of the Debian package vgabios (the font QBasic's screen shows; Uni2 draws the double lines as
+ * single ones, lacks the half blocks and places the accents otherwise); nothing of the font is kept in the repository.  The 8x8 and 8x14 cells of
  * QBasic's other screen modes (13, 1, 2, 7: 8x8; 9: 8x14) take all of code page 437 from the
  * BIOS (IBM's 8x8 and 8x14 designs; Uni2-VGA8 and Uni2-VGA14, other designs, give the rest),
  * and the code page 437 table of QBasic's strings comes from iconv (tools/cp437.c).
