@@ -158,7 +158,8 @@ int pc_text_cells(pc_canvas *c, int row, int col, const char *bytes, size_t n, i
     size_t u = 0;
     for (size_t k = 0; ok == PC_OK && k < n; k++) {
         uint32_t cp = pc_cp437[(unsigned char)bytes[k]];
-        if (cp < 0x20 || cp == 0x7f) cp = 0xfffd;   /* a control: the replacement glyph */
+        if (cp == 0) cp = ' ';   /* CHR$(0): a blank cell, as on QBasic's screen */
+        else if (cp < 0x20) cp = 0xfffd;   /* a control PRINT acts on in QBasic: the replacement */
         const uint8_t *rows = f->bits + (size_t)pc_font_glyph_in(f, cp) * f->h;
         for (int r = 0; r < f->h; r++)
             for (int b = 0; b < 8; b++)

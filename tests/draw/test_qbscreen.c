@@ -120,6 +120,16 @@ static void test_text_cells(void **state) {
     /* code page 437: byte 219 is the full block */
     assert_int_equal(pc_text_cells(c, 5, 1, "\xdb", 1, 8, 2, 0), PC_OK);
     assert_int_equal(pc_cp437[219], 0x2588);
+    /* the control bytes PRINT shows are their pictures (CHR$(1) a face, 3 a heart, 127 a house);
+     * those it acts on (7 the bell, 13 the carriage return) stay controls */
+    assert_int_equal(pc_cp437[1], 0x263a);
+    assert_int_equal(pc_cp437[3], 0x2665);
+    assert_int_equal(pc_cp437[27], 0x2190);
+    assert_int_equal(pc_cp437[127], 0x2302);
+    assert_int_equal(pc_cp437[7], 7);
+    assert_int_equal(pc_cp437[13], 13);
+    assert_int_not_equal(pc_font_glyph_in(pc_font_of_height(8), pc_cp437[3]),
+                         pc_font_of_height(8)->replacement);
     assert_int_equal(count(c, 0, 32, 7, 39, 2), 64);
     /* VIEW does not clip text */
     assert_int_equal(pc_view(c, 100, 100, 200, 150, -1, -1, 0), PC_OK);

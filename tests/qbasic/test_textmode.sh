@@ -48,6 +48,14 @@ expect_eq "$(ppm_pixel boxes.ppm 3 5)$(ppm_pixel boxes.ppm 3 6)$(ppm_pixel boxes
 expect_eq "$(ppm_pixel boxes.ppm 27 6)$(ppm_pixel boxes.ppm 27 7)" "000000aaaaaa" "CHR\$(196) a single one (row 7)"
 expect_eq "$(ppm_pixel boxes.ppm 8 15)$(ppm_pixel boxes.ppm 15 7)$(ppm_pixel boxes.ppm 8 6)" \
     "aaaaaaaaaaaa000000" "CHR\$(220) is the lower half of its cell (rows 7..15)"
+# the control bytes PRINT shows are the BIOS's pictures: CHR$(3) the heart (its row 4 .##.##..,
+# row 5 #######.), CHR$(0) a blank cell; the transcript keeps the bytes
+printf 'PRINT CHR$(0); CHR$(3)\n' > heart.bas
+run "$POINTCALC" heart.bas -o heart.ppm
+expect_rc 0 "a heart"
+expect_eq "$(ppm_pixel heart.ppm 8 4)$(ppm_pixel heart.ppm 9 4)$(ppm_pixel heart.ppm 8 5)$(ppm_pixel heart.ppm 15 5)" \
+    "000000aaaaaaaaaaaa000000" "CHR\$(3) is the BIOS's heart"
+expect_eq "$(ppm_pixel heart.ppm 3 5)$(ppm_pixel heart.ppm 4 8)" "000000000000" "CHR\$(0) is a blank cell"
 expect_eq "$(ppm_pixel boxes.ppm 16 0)$(ppm_pixel boxes.ppm 20 0)$(ppm_pixel boxes.ppm 23 15)" \
     "000000aaaaaaaaaaaa" "CHR\$(222) is the right half of its cell"
 

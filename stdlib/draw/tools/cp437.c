@@ -1,12 +1,14 @@
 /* cp437: write the code page 437 -> Unicode table (the character set of QBasic's screen) as C
  * source, taken from the C library's iconv at build time, so no table is typed by hand.
- * Bytes the converter maps to control characters (0x00-0x1F, 0x7F) stay themselves: QBasic's
- * PRINT treats most of them as controls, and the fonts draw them as the replacement glyph.
+ * Bytes the converter maps to control characters (0x00-0x1F, 0x7F) are the pictures QBasic's
+ * screen shows for them (cp437_pictures.h: CHR$(1) a face), except those PRINT acts on (the
+ * bell, tab, new lines, cursor moves), which stay themselves.
  *   cp437 OUT.c */
 #include <iconv.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+#include "cp437_pictures.h"
 
 int main(int argc, char **argv) {
     if (argc != 2) { fprintf(stderr, "usage: cp437 OUT.c\n"); return 1; }
@@ -22,7 +24,8 @@ int main(int argc, char **argv) {
             return 1;
         }
         const unsigned char *u = (const unsigned char *)outbuf;
-        table[b] = u[0] | (uint32_t)u[1] << 8 | (uint32_t)u[2] << 16 | (uint32_t)u[3] << 24;
+        uint32_t cp = u[0] | (uint32_t)u[1] << 8 | (uint32_t)u[2] << 16 | (uint32_t)u[3] << 24;
+        table[b] = cp437_picture(b, cp);
     }
     iconv_close(cd);
     FILE *out = fopen(argv[1], "w");
