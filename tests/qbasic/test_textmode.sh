@@ -56,6 +56,19 @@ expect_rc 0 "a heart"
 expect_eq "$(ppm_pixel heart.ppm 8 4)$(ppm_pixel heart.ppm 9 4)$(ppm_pixel heart.ppm 8 5)$(ppm_pixel heart.ppm 15 5)" \
     "000000aaaaaaaaaaaa000000" "CHR\$(3) is the BIOS's heart"
 expect_eq "$(ppm_pixel heart.ppm 3 5)$(ppm_pixel heart.ppm 4 8)" "000000000000" "CHR\$(0) is a blank cell"
+# CHR$(7), the bell, takes no cell: the two blocks around it are side by side, on a text screen
+# and on a graphics one; the transcript keeps the byte
+printf 'PRINT CHR$(219); CHR$(7); CHR$(219)\n' > bell.bas
+run "$POINTCALC" bell.bas -o bell.ppm
+expect_rc 0 "the bell"
+expect_eq "$(ppm_pixel bell.ppm 8 15)$(ppm_pixel bell.ppm 15 0)$(ppm_pixel bell.ppm 20 8)" \
+    "aaaaaaaaaaaa000000" "CHR\$(7) takes no cell on a text screen"
+expect_eq "$(od -An -c out.txt | tr -d ' \n')" "333\a333\n" "the transcript keeps the bell"
+printf 'SCREEN 12\nPRINT CHR$(219); CHR$(7); CHR$(219)\n' > bell12.bas
+run "$POINTCALC" bell12.bas -o bell12.ppm
+expect_rc 0 "the bell on a graphics screen"
+expect_eq "$(ppm_pixel bell12.ppm 8 15)$(ppm_pixel bell12.ppm 20 8)" "ffffff000000" \
+    "CHR\$(7) takes no cell on a graphics screen"
 expect_eq "$(ppm_pixel boxes.ppm 16 0)$(ppm_pixel boxes.ppm 20 0)$(ppm_pixel boxes.ppm 23 15)" \
     "000000aaaaaaaaaaaa" "CHR\$(222) is the right half of its cell"
 
