@@ -117,7 +117,8 @@ local function install_text(E, rt, S)
   -- a graphics screen.  Returns the 0-based column after it, for zones and TAB.
   function rt.text_out(s)
     out:write(s)
-    s = s:gsub("\7", "")   -- CHR$(7), the bell: QBasic beeps and the screen keeps no cell of it
+    -- CHR$(7), the bell: QBasic beeps and the screen keeps no cell of it
+    if s:find("\7", 1, true) then s = s:gsub("\7", "") end
     if graphics(rt) then
       screen_text(s)
     else   -- text mode: standard output is the transcript; no wrapping (docs/qbasic.md)

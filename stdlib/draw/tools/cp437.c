@@ -1,14 +1,12 @@
 /* cp437: write the code page 437 -> Unicode table (the character set of QBasic's screen) as C
- * source, taken from the C library's iconv at build time, so no table is typed by hand.
+ * source, taken from the C library's iconv at build time (with cp437_code.h's pictures for
+ * the control bytes), so no code page is typed by hand.
  * Bytes the converter maps to control characters (0x00-0x1F, 0x7F) are the pictures QBasic's
- * screen shows for them (cp437_pictures.h: CHR$(1) a face), except those PRINT acts on (the
+ * screen shows for them (cp437_code.h: CHR$(1) a face), except those PRINT acts on (the
  * bell, tab, new lines, cursor moves), which stay themselves.
  *   cp437 OUT.c */
-#include <iconv.h>
-#include <stdint.h>
 #include <stdio.h>
-#include <string.h>
-#include "cp437_pictures.h"
+#include "cp437_code.h"
 
 int main(int argc, char **argv) {
     if (argc != 2) { fprintf(stderr, "usage: cp437 OUT.c\n"); return 1; }
@@ -16,16 +14,10 @@ int main(int argc, char **argv) {
     if (cd == (iconv_t)-1) { perror("cp437: iconv_open(CP437)"); return 1; }
     uint32_t table[256];
     for (int b = 0; b < 256; b++) {
-        char in = (char)b, outbuf[8];
-        char *ip = &in, *op = outbuf;
-        size_t il = 1, ol = sizeof outbuf;
-        if (iconv(cd, &ip, &il, &op, &ol) == (size_t)-1 || ol != 4) {
+        if (!cp437_code_point(cd, b, &table[b])) {
             fprintf(stderr, "cp437: byte 0x%02x has no single Unicode character\n", b);
             return 1;
         }
-        const unsigned char *u = (const unsigned char *)outbuf;
-        uint32_t cp = u[0] | (uint32_t)u[1] << 8 | (uint32_t)u[2] << 16 | (uint32_t)u[3] << 24;
-        table[b] = cp437_picture(b, cp);
     }
     iconv_close(cd);
     FILE *out = fopen(argv[1], "w");

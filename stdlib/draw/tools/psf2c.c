@@ -13,13 +13,12 @@
  * is found by the shapes of its blocks (CHR$(219) full, 221 and 222 the left and right
  * halves, 220 and 223 the lower and upper), and must be found once.  The control bytes that
  * PRINT shows (CHR$(1) a face, CHR$(3) a heart) get the BIOS's pictures under the code points
- * the code page table gives them (cp437_pictures.h). */
-#include <iconv.h>
+ * the code page table gives them (cp437_code.h). */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cp437_pictures.h"
+#include "cp437_code.h"
 
 typedef struct { uint32_t cp; uint32_t glyph; } entry;
 
@@ -142,11 +141,10 @@ static font load(const char *path, uint32_t want_h) {
     return (font){d, glyphs, nglyphs, charsize};
 }
 
-/* The rows of output glyph g: FONT's own, then the ROM's extra[] in order. */
-static const uint8_t *font_glyphs, *extra[256];
-static uint32_t font_nglyphs, font_h;
-static const uint8_t *bits_of(uint32_t g) {
-    return g < font_nglyphs ? font_glyphs + (size_t)g * font_h : extra[g - font_nglyphs];
+/* The rows of output glyph g: f's own, then the ROM's extra[] in order. */
+static const uint8_t *extra[256];
+static const uint8_t *bits_of(const font *f, uint32_t g) {
+    return g < f->nglyphs ? f->glyphs + (size_t)g * f->charsize : extra[g - f->nglyphs];
 }
 
 static int all(const uint8_t *rows, uint32_t n, uint8_t v) {
@@ -172,19 +170,6 @@ static size_t find_rom_font(const uint8_t *rom, size_t n, uint32_t h, const char
     return found;
 }
 
-/* The code point of code page 437's byte b (iconv; a control byte's picture, as cp437.c has
- * it), or 0 for a control PRINT acts on. */
-static uint32_t cp437(iconv_t cd, int b) {
-    char in = (char)b, out[8];
-    char *ip = &in, *op = out;
-    size_t il = 1, ol = sizeof out;
-    if (iconv(cd, &ip, &il, &op, &ol) == (size_t)-1 || ol != 4) die("iconv: no CP437", NULL);
-    const uint8_t *u = (const uint8_t *)out;
-    uint32_t cp = u[0] | (uint32_t)u[1] << 8 | (uint32_t)u[2] << 16 | (uint32_t)u[3] << 24;
-    cp = cp437_picture(b, cp);
-    return cp < 0x20 || cp == 0x7f ? 0 : cp;
-}
-
 int main(int argc, char **argv) {
     if (argc != 3 && argc != 5 && argc != 7)
         die("usage: psf2c FONT.psf OUT.c [HEIGHT PREFIX [ROM BYTES]]", NULL);
@@ -193,9 +178,6 @@ int main(int argc, char **argv) {
     if (want_h < 1 || want_h > 32) die("bad HEIGHT", argv[3]);
     font f = load(argv[1], want_h);
     uint32_t charsize = f.charsize, nglyphs = f.nglyphs, nextra = 0;
-    font_glyphs = f.glyphs;
-    font_nglyphs = nglyphs;
-    font_h = charsize;
     uint8_t *rom = NULL;
     if (argc == 7) {
         size_t n;
@@ -214,8 +196,9 @@ int main(int argc, char **argv) {
         if (cd == (iconv_t)-1) die("iconv has no CP437", NULL);
         for (int b = 1; b < 256; b++) {
             if (!take[b]) continue;
-            uint32_t cp = cp437(cd, b);
-            if (!cp) continue;
+            uint32_t cp;
+            if (!cp437_code_point(cd, b, &cp)) die("iconv: no CP437", NULL);
+            if (cp < 0x20 || cp == 0x7f) continue;   /* a control PRINT acts on */
             for (size_t i = 0; i < nmap; i++)   /* the ROM's glyph replaces FONT's */
                 if (map[i].cp == cp) map[i].cp = UINT32_MAX;
             extra[nextra] = table + (size_t)b * want_h;
@@ -247,7 +230,7 @@ int main(int argc, char **argv) {
                  "const uint8_t %s_bits[%u][%u] = {\n", prefix, nglyphs + nextra, prefix,
             nglyphs + nextra, charsize);
     for (uint32_t g = 0; g < nglyphs + nextra; g++) {
-        const uint8_t *bits = bits_of(g);
+        const uint8_t *bits = bits_of(&f, g);
         fputs("    {", out);
         for (uint32_t r = 0; r < charsize; r++)
             fprintf(out, "0x%02x%s", bits[r], r + 1 < charsize ? ", " : "");
@@ -262,7 +245,7 @@ int main(int argc, char **argv) {
     uint32_t base = charsize;
     for (size_t i = 0; i < nmap; i++)
         if (map[i].cp == 'H')
-            for (base = charsize; base > 0 && !bits_of(map[i].glyph)[base - 1];) base--;
+            for (base = charsize; base > 0 && !bits_of(&f, map[i].glyph)[base - 1];) base--;
     fprintf(out, "const pc_font %s_desc = {%u, %u, &%s_bits[0][0], %s_map, %zu, %ld};\n", prefix,
             charsize, base, prefix, prefix, nmap, replacement);
     int bad = ferror(out);
