@@ -89,4 +89,25 @@ printf '<?xml version="1.0"?>\n<fontconfig></fontconfig>\n' > empty.conf
 FONTCONFIG_FILE="$PWD/empty.conf" run "$POINTCALC" fig.lua -o nofont.pdf; expect_rc 1 "no fonts installed"
 expect_in err.txt "cannot write 'nofont.pdf': font 'serif' (CMU Serif) is not installed: install the Debian package fonts-cmu" "names fonts-cmu"
 expect_no_file nofont.pdf "no PDF without its font"
+# a shaded surface in a PDF: its quads are tiles, so no seam of paper shows between them, where
+# two fills of one colour side by side (fill) show one along their shared diagonal
+shades() {  # shades PGM X0 X1 Y0 Y1: the grey levels in the box, "level count" each
+    od -An -v -tu1 -j 15 "$1" | tr -s ' \n' '\n' | grep . |
+        awk -v x0=$2 -v x1=$3 -v y0=$4 -v y1=$5 '{ i = NR - 1; x = i % 640; y = int(i / 640)
+            if (x >= x0 && x <= x1 && y >= y0 && y <= y1) n[$0]++ } END { for (k in n) print k, n[k] }'
+}
+cat > tiles.lua <<'EOF'
+camera(map.matrix({{71, -71, 0, 320}, {-71, -71, 0, 240}, {0, 0, 0, 1}}))
+surface.bilinear(P(-1, -1, 0), P(1, -1, 0), P(-1, 1, 0), P(1, 1, 0)):shade{nu = 5, nv = 5, color = "#404040"}
+EOF
+cat > fills.lua <<'EOF'
+fill({P(260, 180), P(380, 180), P(380, 300)}, "#404040")
+fill({P(260, 180), P(380, 300), P(260, 300)}, "#404040")
+EOF
+run "$POINTCALC" tiles.lua -o tiles.pdf; expect_rc 0 "a shaded surface to PDF"
+run "$POINTCALC" fills.lua -o fills.pdf; expect_rc 0 "two fills to PDF"
+pdftoppm -r 96 -gray -singlefile tiles.pdf tiles && pdftoppm -r 96 -gray -singlefile fills.pdf fills
+expect_eq "$(shades tiles.pgm 300 340 200 280)" "64 3321" "the shaded quads are one grey, no seams"
+expect_eq "$(shades fills.pgm 270 370 190 290 | wc -l | tr -d ' ')" "2" "two plain fills show their seam"
+
 finish
